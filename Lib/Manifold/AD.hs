@@ -1,0 +1,131 @@
+-- | Forward-mode automatic differentiation over R³ (paper §3.2).
+--
+-- A dual number carries a value and its gradient with respect to the three
+-- coordinates of the point. Nesting duals (@D (D a)@) gives second
+-- derivatives, hence the Hessian and the curvatures of a surface @f = 0@.
+module Manifold.AD
+  ( D (..)
+  , valueD
+  , gradientD
+  , variables
+  , grad
+  , valueAndGrad
+  , hessian
+  , gaussianCurvature
+  , meanCurvature
+  , secondOrder
+  , adjugate
+  ) where
+
+import Linear.Matrix (M33, (!*))
+import Linear.V3 (V3 (..), cross)
+import Linear.Metric (dot, quadrance)
+import Linear.Vector ((*^), (^+^), (^-^), zero)
+
+import Manifold.Field
+
+-- | A value and its gradient.
+data D a = D !a !(V3 a)
+  deriving (Show, Eq)
+
+valueD :: D a -> a
+valueD (D x _) = x
+
+gradientD :: D a -> V3 a
+gradientD (D _ g) = g
+
+lift :: Num a => a -> D a
+lift x = D x zero
+
+-- | Apply a function with known derivative: the chain rule.
+chain :: Num a => (a -> a) -> (a -> a) -> D a -> D a
+chain f f' (D x dx) = D (f x) (f' x *^ dx)
+
+instance Field a => Num (D a) where
+  D x dx + D y dy = D (x + y) (dx ^+^ dy)
+  D x dx - D y dy = D (x - y) (dx ^-^ dy)
+  D x dx * D y dy = D (x * y) (y *^ dx ^+^ x *^ dy)
+  negate (D x dx) = D (negate x) (fmap negate dx)
+  -- signum 0 = 0, so |x| has derivative 0 at 0 (the paper's choice).
+  abs (D x dx) = D (abs x) (signum x *^ dx)
+  signum (D x _) = lift (signum x)
+  fromInteger = lift . fromInteger
+
+instance Field a => Fractional (D a) where
+  D x dx / D y dy = D (x / y) ((recip y) *^ dx ^-^ (x / (y * y)) *^ dy)
+  recip = chain recip (\x -> negate (recip (x * x)))
+  fromRational = lift . fromRational
+
+instance Field a => Floating (D a) where
+  pi = lift pi
+  exp = chain exp exp
+  log = chain log recip
+  sqrt (D x dx) = let s = sqrt x in D s ((recip (2 * s)) *^ dx)
+  sin = chain sin cos
+  cos = chain cos (negate . sin)
+  tan = chain tan (\x -> let c = cos x in recip (c * c))
+  asin = chain asin (\x -> recip (sqrt (1 - x * x)))
+  acos = chain acos (\x -> negate (recip (sqrt (1 - x * x))))
+  atan = chain atan (\x -> recip (1 + x * x))
+  sinh = chain sinh cosh
+  cosh = chain cosh sinh
+  tanh = chain tanh (\x -> let t = tanh x in 1 - t * t)
+  asinh = chain asinh (\x -> recip (sqrt (x * x + 1)))
+  acosh = chain acosh (\x -> recip (sqrt (x * x - 1)))
+  atanh = chain atanh (\x -> recip (1 - x * x))
+  D x dx ** D y dy =
+    let p = x ** y
+    in D p ((y * x ** (y - 1)) *^ dx ^+^ (p * log x) *^ dy)
+  logBase b x = log x / log b
+
+instance Field a => Field (D a) where
+  constant = lift . constant
+  select (D c _) (D t dt) (D e de) = D (select c t e) (select c <$> dt <*> de)
+  floorF (D x _) = lift (floorF x)
+
+-- | The coordinates of a point as independent variables.
+variables :: Num a => V3 a -> V3 (D a)
+variables (V3 x y z) = V3 (D x (V3 1 0 0)) (D y (V3 0 1 0)) (D z (V3 0 0 1))
+
+-- | The gradient of a scalar function of a point.
+grad :: Field a => (V3 (D a) -> D a) -> V3 a -> V3 a
+grad f = gradientD . f . variables
+
+valueAndGrad :: Field a => (V3 (D a) -> D a) -> V3 a -> (a, V3 a)
+valueAndGrad f p = let D v g = f (variables p) in (v, g)
+
+-- | Second derivatives by nesting: the Jacobian of the gradient.
+hessian :: Field a => (V3 (D (D a)) -> D (D a)) -> V3 a -> M33 a
+hessian f p = fmap gradientD (gradientD (f (variables (variables p))))
+
+-- | Value, gradient and Hessian at once (one nested evaluation).
+secondOrder :: Field a => ScalarFn -> V3 a -> (V3 a, M33 a)
+secondOrder (ScalarFn f) p =
+  let D (D _ g) rows = f (variables (variables p))
+  in (g, fmap gradientD rows)
+
+-- | Gaussian curvature of the level set through @p@ of a scalar field:
+-- @K = ∇f · adj(H) ∇f / |∇f|⁴@ (Goldman, "Curvature formulas for implicit
+-- curves and surfaces", 2005).
+gaussianCurvature :: Field a => ScalarFn -> V3 a -> a
+gaussianCurvature f p =
+  let (g, h) = secondOrder f p
+      q = quadrance g
+  in g `dot` (adjugate h !* g) / (q * q)
+
+-- | Mean curvature, @(|∇f|² tr H − ∇f·H∇f) / (2|∇f|³)@: positive on a sphere
+-- whose field grows outwards.
+meanCurvature :: Field a => ScalarFn -> V3 a -> a
+meanCurvature f p =
+  let (g, h) = secondOrder f p
+      q = quadrance g
+      V3 (V3 hxx _ _) (V3 _ hyy _) (V3 _ _ hzz) = h
+  in (q * (hxx + hyy + hzz) - g `dot` (h !* g)) / (2 * q * sqrt q)
+
+-- | The adjugate (transposed cofactor matrix) of a 3×3 matrix.
+adjugate :: Num a => M33 a -> M33 a
+adjugate (V3 r0 r1 r2) =
+  let V3 c0x c0y c0z = r1 `cross` r2
+      V3 c1x c1y c1z = r2 `cross` r0
+      V3 c2x c2y c2z = r0 `cross` r1
+  in V3 (V3 c0x c1x c2x) (V3 c0y c1y c2y) (V3 c0z c1z c2z)

@@ -1,0 +1,187 @@
+-- | Bodies' shapes (paper §2.3), their mass and moment of inertia (§2.4) and
+-- their polygons (§3.4).
+--
+-- A shape is a polar outline @r = s(θ)@ around the body's centre: the boundary
+-- point in direction θ (measured from the body's axis) is reached by walking a
+-- geodesic of length @s(θ)@. Diameters are kept as a body moves; area is not.
+module Manifold.Body
+  ( Outline (..)
+  , Shape (..)
+  , circle
+  , square
+  , regularPolygon
+  , customShape
+  , shapeFromKind
+  , outlineAt
+    -- * Mass
+  , MassProperties (..)
+  , massProperties
+  , areaOf
+  , centroidOffset
+  , paperMomentIntegral
+    -- * Polygons
+  , PolygonParams (..)
+  , defaultPolygonParams
+  , Polygon (..)
+  , polygonise
+  , vertexCount
+  , triangleCount
+  , directionAngle
+  ) where
+
+import Linear.V2 (V2 (..))
+import Linear.V3 (V3 (..))
+import Linear.Vector ((*^), (^+^))
+
+import Manifold.Field
+import Manifold.Space (ShapeKind (..))
+import Manifold.Surface
+
+-- | A polar outline for a body of size 1; the body's size scales it.
+newtype Outline = Outline (forall a. Field a => a -> a)
+
+data Shape = Shape
+  { shapeName :: String
+  , shapeKind :: Maybe ShapeKind -- ^ 'Nothing' for user outlines
+  , shapeOutline :: Outline
+  }
+
+outlineAt :: Field a => Shape -> a -> a -> a
+outlineAt s size theta = let Outline f = shapeOutline s in size * f theta
+
+circle :: Shape
+circle = Shape "circle" (Just CircleShape) (Outline (const 1))
+
+-- | A regular polygon of circumradius 1 with a side (not a corner) facing the
+-- axis direction θ = 0.
+regularPolygon :: Int -> Shape
+regularPolygon n
+  | n < 3 = error ("regularPolygon: a polygon needs at least 3 sides, got " ++ show n)
+  | otherwise = Shape (show n ++ "-gon") (Just (PolygonShape n)) (Outline outline)
+  where
+    outline :: Field a => a -> a
+    outline theta =
+      let sector = constant (2 * pi / fromIntegral n)
+          half = constant (pi / fromIntegral n)
+          shifted = theta + half
+          within = shifted - sector * floorF (shifted / sector)
+      in constant (cos (pi / fromIntegral n)) / cos (within - half)
+
+square :: Shape
+square = (regularPolygon 4) { shapeName = "square", shapeKind = Just SquareShape }
+
+customShape :: String -> (forall a. Field a => a -> a) -> Shape
+customShape name f = Shape name Nothing (Outline f)
+
+shapeFromKind :: ShapeKind -> Shape
+shapeFromKind CircleShape = circle
+shapeFromKind SquareShape = square
+shapeFromKind (PolygonShape n) = regularPolygon n
+
+-- Mass -------------------------------------------------------------------
+
+data MassProperties = MassProperties
+  { mass :: Double
+  , inertia :: Double -- ^ about the centre, in the body's plane
+  } deriving (Show, Eq)
+
+-- | Midpoint-rule samples of the outline over one turn.
+samples :: Int
+samples = 4096
+
+integrateTurn :: (Double -> Double) -> Double
+integrateTurn g =
+  let h = 2 * pi / fromIntegral samples
+  in h * sum [g ((fromIntegral k + 0.5) * h) | k <- [0 .. samples - 1]]
+
+-- | @½ ∫ s(θ)² dθ@: the area of the flat shape.
+areaOf :: Shape -> Double -> Double
+areaOf s size = 0.5 * integrateTurn (\t -> outlineAt s size t ^ (2 :: Int))
+
+-- | Mass @ρ · ½∫s²dθ@ and moment of inertia @ρ · ¼∫s⁴dθ@ (the polar
+-- integral of r² over the shape), measured in the flat tangent plane as in
+-- the paper.
+massProperties :: Shape -> Double -> Double -> MassProperties
+massProperties s size density = MassProperties
+  { mass = density * areaOf s size
+  , inertia = density * 0.25 * integrateTurn (\t -> outlineAt s size t ^ (4 :: Int))
+  }
+
+-- | The centroid of the flat shape relative to its centre,
+-- @(⅔ ∫ s³ e^{iθ} dθ) / ∫ s² dθ@. The centre acts as the centre of mass when
+-- this vanishes.
+centroidOffset :: Shape -> Double -> V2 Double
+centroidOffset s size =
+  let m3 = V2 (integrateTurn (\t -> outlineAt s size t ^ (3 :: Int) * cos t))
+              (integrateTurn (\t -> outlineAt s size t ^ (3 :: Int) * sin t))
+      a2 = integrateTurn (\t -> outlineAt s size t ^ (2 :: Int))
+  in (2 / 3 / a2) *^ m3
+
+-- | The paper's centre-of-mass condition @∫ s(θ)² e^{iθ} dθ = 0@ (it vanishes
+-- together with 'centroidOffset' for every shape with a symmetry of order 2
+-- or more, which all the built-in shapes have).
+paperMomentIntegral :: Shape -> Double -> V2 Double
+paperMomentIntegral s size =
+  V2 (integrateTurn (\t -> outlineAt s size t ^ (2 :: Int) * cos t))
+     (integrateTurn (\t -> outlineAt s size t ^ (2 :: Int) * sin t))
+
+-- Polygons ---------------------------------------------------------------
+
+data PolygonParams = PolygonParams
+  { polyDirections :: Int -- ^ geodesics walked from the centre (paper: 24)
+  , polySteps :: Int -- ^ geodesic steps along each (paper: 4)
+  } deriving (Show, Eq)
+
+defaultPolygonParams :: PolygonParams
+defaultPolygonParams = PolygonParams 24 4
+
+-- | A body's geodesic polygon in world coordinates. Vertex 0 is the centre;
+-- vertex @1 + d·steps + (j−1)@ is step @j@ along direction @d@.
+data Polygon a = Polygon
+  { polyVertices :: [V3 a]
+  , polyLocal :: [(a, a)] -- ^ each vertex's local polar coordinates (r, θ)
+  , polyTriangles :: [(Int, Int, Int)] -- ^ the centre fan, then quads as two triangles
+  , polyOutline :: [V3 a] -- ^ the outermost ring, in direction order
+  }
+
+vertexCount :: PolygonParams -> Int
+vertexCount (PolygonParams d s) = 1 + d * s
+
+triangleCount :: PolygonParams -> Int
+triangleCount (PolygonParams d s) = d + 2 * d * (s - 1)
+
+-- | The body-local angle of direction @d@.
+directionAngle :: Field a => PolygonParams -> Int -> a
+directionAngle pp d = constant (2 * pi * fromIntegral d / fromIntegral (polyDirections pp))
+
+-- | Walk the outline: from the centre @p@ with unit tangent axis @axis@ and
+-- angle @angle@, along a geodesic in each direction, in equal steps of
+-- @s(θ)/steps@, re-projecting every step.
+polygonise :: Field a => ScalarFn -> PolygonParams -> Shape -> a -> V3 a -> V3 a -> a -> Polygon a
+polygonise f pp shape size p axis angle =
+  let n = unitNormal f p
+      (u, w) = tangentFrame n axis
+      nd = polyDirections pp
+      ns = polySteps pp
+      walk d =
+        let theta = directionAngle pp d
+            phi = angle + theta
+            dir = cos phi *^ u ^+^ sin phi *^ w
+            r = outlineAt shape size theta
+            h = r / fromIntegral ns
+            ring = take ns (tail (iterate (geodesicStep f h) (p, dir)))
+        in ( map fst ring
+           , [(r * fromIntegral j / fromIntegral ns, theta) | j <- [1 .. ns]] )
+      walks = map walk [0 .. nd - 1]
+      vertexIndex d j = 1 + (d `mod` nd) * ns + (j - 1)
+      fan = [(0, vertexIndex d 1, vertexIndex (d + 1) 1) | d <- [0 .. nd - 1]]
+      quads = concat
+        [ [ (vertexIndex d j, vertexIndex d (j + 1), vertexIndex (d + 1) (j + 1))
+          , (vertexIndex d j, vertexIndex (d + 1) (j + 1), vertexIndex (d + 1) j) ]
+        | d <- [0 .. nd - 1], j <- [1 .. ns - 1] ]
+  in Polygon
+      { polyVertices = p : concatMap fst walks
+      , polyLocal = (0, 0) : concatMap snd walks
+      , polyTriangles = fan ++ quads
+      , polyOutline = map (last . fst) walks
+      }

@@ -1,0 +1,168 @@
+-- | The catalogue of spaces. Adding a space is adding one value here (or in a
+-- module of your own) and listing it in 'catalogue'.
+module Manifold.Spaces
+  ( catalogue
+  , lookupSpace
+  , spaceNames
+  , plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
+  , projectivePlane, kleinBottle, moebius, funnel
+  , torusMajor, torusMinor
+  ) where
+
+import Data.List (find)
+import Linear.Metric (norm)
+import Linear.V2 (V2 (..))
+import Linear.V3 (V3 (..))
+
+import Manifold.Field
+import Manifold.Space
+
+catalogue :: [Space]
+catalogue =
+  [ plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
+  , projectivePlane, kleinBottle, moebius, funnel ]
+
+spaceNames :: [String]
+spaceNames = map spaceName catalogue
+
+lookupSpace :: String -> Maybe Space
+lookupSpace n = find ((== n) . spaceName) catalogue
+
+-- Fields -----------------------------------------------------------------
+
+planeField :: Field a => V3 a -> a
+planeField (V3 _ y _) = y
+
+unitSphereField :: Field a => V3 a -> a
+unitSphereField p = norm p - 1
+
+-- | Distance from the y axis.
+radial :: Field a => V3 a -> a
+radial (V3 x _ z) = sqrt (x * x + z * z)
+
+torusMajor, torusMinor :: Double
+torusMajor = 0.8
+torusMinor = 0.5
+
+torusField :: Field a => V3 a -> a
+torusField p@(V3 _ y _) = norm (V2 (radial p - constant torusMajor) y) - constant torusMinor
+
+-- Scenes -----------------------------------------------------------------
+
+ring :: Int -> Double -> Double -> ShapeKind -> Double -> [Placement]
+ring n r y shape size =
+  [ Placement (V3 (r * cos t) y (r * sin t)) (if even k then shape else CircleShape) size
+  | k <- [0 .. n - 1], let t = 2 * pi * fromIntegral k / fromIntegral n ]
+
+grid :: [Double] -> [Double] -> ShapeKind -> Double -> [Placement]
+grid xs zs shape size =
+  [ Placement (V3 x 0 z) (if even (i + j) then shape else CircleShape) size
+  | (i, x) <- zip [0 :: Int ..] xs, (j, z) <- zip [0 :: Int ..] zs ]
+
+look :: V3 Double -> Camera
+look eye = Camera eye (V3 0 0 0) (V3 0 1 0) 45
+
+-- The catalogue ------------------------------------------------------------
+
+plane :: Space
+plane = (space "plane" "the flat plane y = 0; gravity along -z" (ScalarFn planeField))
+  { spaceGravity = uniformGravity (V3 0 0 (-4))
+  , spaceCamera = look (V3 0 3 3)
+  , spaceScene = grid [-0.6, 0, 0.6] [-0.3, 0.3] SquareShape 0.2
+  }
+
+sphere :: Space
+sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (ScalarFn unitSphereField))
+  { spaceGravity = uniformGravity (V3 0 (-4) 0)
+  , spaceCamera = look (V3 0 1.2 3)
+  , spaceScene = ring 6 0.6 0.8 SquareShape 0.2
+  }
+
+torus :: Space
+torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 0 outside, < 0 inside)" (ScalarFn torusField))
+  { spaceGravity = uniformGravity (V3 0 0 (-4))
+  , spaceCamera = look (V3 0 2.2 2.8)
+  , spaceScene = ring 6 1.3 0 SquareShape 0.18
+  }
+
+trumpet :: Space
+trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narrowing downwards; bodies jam in the neck" (ScalarFn trumpetField))
+  { spaceGravity = uniformGravity (V3 0 (-0.6) 0)
+  , spaceCamera = Camera (V3 0 1.5 4.5) (V3 0 (-0.5) 0) (V3 0 1 0) 45
+  , spaceScene = ring 4 (exp 0.3) 0.3 SquareShape 0.3
+  , spaceBounds = 4
+  }
+  where trumpetField p@(V3 _ y _) = radial p - exp y
+
+cube :: Space
+cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (ScalarFn roundedCube))
+  { spaceGravity = uniformGravity (V3 0 (-4) 0)
+  , spaceCamera = look (V3 1.8 1.8 2.6)
+  , spaceScene = [Placement (V3 x 0.9 z) SquareShape 0.2 | (x, z) <- [(-0.4, -0.4), (0.4, -0.4), (0, 0.4)]]
+  }
+  where
+    roundedCube (V3 x y z) =
+      let q = V3 (abs x - 0.6) (abs y - 0.6) (abs z - 0.6)
+          V3 qx qy qz = q
+          outside = norm (fmap (maxF 0) q)
+          inside = minF 0 (maxF qx (maxF qy qz))
+      in outside + inside - 0.3
+
+hemisphere :: Space
+hemisphere = (space "hemisphere" "the lower half of the unit sphere (y <= 0), a bowl with a rim" (ScalarFn unitSphereField))
+  { spaceBoundary = Just (ScalarFn (\(V3 _ y _) -> negate y))
+  , spaceGravity = uniformGravity (V3 0 (-4) 0)
+  , spaceCamera = look (V3 0 2.2 2.2)
+  , spaceScene = ring 5 0.5 (-0.8) SquareShape 0.18
+  }
+
+disc :: Space
+disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (ScalarFn planeField))
+  { spaceBoundary = Just (ScalarFn (\p -> 1 - radial p))
+  , spaceGravity = uniformGravity (V3 0 0 (-4))
+  , spaceCamera = look (V3 0 2.2 1.6)
+  , spaceScene = grid [-0.4, 0, 0.4] [-0.2, 0.3] SquareShape 0.15
+  }
+
+rectangle :: Space
+rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane y = 0, a box with walls" (ScalarFn planeField))
+  { spaceBoundary = Just (ScalarFn (\(V3 x _ z) -> minF (1.5 - abs x) (1 - abs z)))
+  , spaceGravity = uniformGravity (V3 0 0 (-4))
+  , spaceCamera = look (V3 0 2.8 2.0)
+  , spaceScene = grid [-0.8, -0.3, 0.3, 0.8] [-0.3, 0.3] SquareShape 0.18
+  }
+
+-- | Gravity for quotient spaces must be odd (@g(−p) = −g(p)@) so that a
+-- body and its image feel the same force.
+projectivePlane :: Space
+projectivePlane = (space "projective-plane" "the real projective plane: the unit sphere with p ~ -p; gravity pulls to the pole (0,±1,0), one point" (ScalarFn unitSphereField))
+  { spaceQuotient = Antipodal
+  , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (4 * y) 0)
+  , spaceCamera = look (V3 0 1.2 3)
+  , spaceScene = ring 3 0.8 0.5 SquareShape 0.2
+  }
+
+kleinBottle :: Space
+kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Klein bottle (the paper's projective torus); gravity pulls to the axis" (ScalarFn torusField))
+  { spaceQuotient = Antipodal
+  , spaceGravity = VectorFn (\(V3 x _ z) -> V3 (-3 * x) 0 (-3 * z))
+  , spaceCamera = look (V3 0 2.2 2.8)
+  , spaceScene = ring 3 1.3 0 SquareShape 0.18
+  }
+
+moebius :: Space
+moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a Moebius strip; gravity pulls to the centre line" (ScalarFn (\p -> radial p - 1)))
+  { spaceQuotient = Antipodal
+  , spaceBoundary = Just (ScalarFn (\(V3 _ y _) -> 0.4 - abs y))
+  , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (-4 * y) 0)
+  , spaceCamera = look (V3 0 2.2 2.8)
+  , spaceScene = ring 3 1 0.1 SquareShape 0.15
+  }
+
+funnel :: Space
+funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x| <= exp(0.9z - 0.7), |z| <= 1; gravity pushes into the neck" (ScalarFn planeField))
+  { spaceBoundary = Just (ScalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
+  , spaceGravity = uniformGravity (V3 0 0 (-4))
+  , spaceCamera = look (V3 0 2.6 1.2)
+  , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]
+  }

@@ -1,0 +1,115 @@
+-- | Geometry of a surface @f = 0@ embedded in R³ (paper §2.2, §2.4).
+--
+-- Everything here is polymorphic in the scalar class, so it runs natively,
+-- under AD, and staged as JavaScript. Branching uses 'select', and iterations
+-- have fixed counts (a converged iteration leaves the point where it is), so
+-- that the staged code has no data-dependent control flow.
+module Manifold.Surface
+  ( fieldGradient
+  , unitNormal
+  , distanceEstimate
+  , projectToSurface
+  , projectToSurfaceWith
+  , defaultProjectionIterations
+  , projectionTolerance
+  , tangentProjection
+  , transport
+  , geodesicStep
+  , expMap
+  , geodesicPath
+  , tangentFrame
+  , safeNormalize
+  ) where
+
+import Linear.Metric (dot, norm, quadrance)
+import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((*^), (^-^), (^+^))
+
+import Manifold.AD (grad)
+import Manifold.Field
+
+-- | The gradient of a field, by forward AD.
+fieldGradient :: Field a => ScalarFn -> V3 a -> V3 a
+fieldGradient (ScalarFn f) = grad f
+
+-- | @v/|v|@, or the zero vector where @|v| = 0@ (never NaN).
+safeNormalize :: Field a => V3 a -> V3 a
+safeNormalize v =
+  let l = norm v
+      inv = select l (recip (maxF l tiny)) 0
+  in inv *^ v
+  where tiny = constant 1e-300
+
+-- | The unit normal @∇f/|∇f|@.
+unitNormal :: Field a => ScalarFn -> V3 a -> V3 a
+unitNormal f = safeNormalize . fieldGradient f
+
+-- | The first-order distance to the surface, @f/|∇f|@.
+distanceEstimate :: Field a => ScalarFn -> V3 a -> a
+distanceEstimate sf@(ScalarFn f) p = f p / norm (fieldGradient sf p)
+
+projectionTolerance :: Double
+projectionTolerance = 1e-10
+
+-- | Enough Newton steps for points within a body's size of the surface: the
+-- iteration converges quadratically, and converged steps are no-ops.
+defaultProjectionIterations :: Int
+defaultProjectionIterations = 8
+
+-- | Pull a point back onto the surface along the normal (Newton's method on
+-- @f@ along @∇f@: @p ← p − f ∇f/|∇f|²@), until @|f| < 1e-10@ or the count
+-- runs out. A point where the gradient vanishes stays where it is.
+projectToSurface :: Field a => ScalarFn -> V3 a -> V3 a
+projectToSurface = projectToSurfaceWith defaultProjectionIterations
+
+projectToSurfaceWith :: Field a => Int -> ScalarFn -> V3 a -> V3 a
+projectToSurfaceWith n sf@(ScalarFn f) = go n
+  where
+    go 0 p = p
+    go k p =
+      let v = f p
+          g = fieldGradient sf p
+          q = quadrance g
+          moving = select (abs v - constant projectionTolerance) (select q 1 0) 0
+          s = select q (v / maxF q (constant 1e-300)) 0
+          p' = p ^-^ (s * moving) *^ g
+      in go (k - 1) p'
+
+-- | The orthogonal projection of an ambient vector onto the tangent plane with
+-- unit normal @n@.
+tangentProjection :: Field a => V3 a -> V3 a -> V3 a
+tangentProjection n v = v ^-^ (n `dot` v) *^ n
+
+-- | Carry a tangent vector to the tangent plane at another (nearby) point:
+-- project (the Levi-Civita connection of an embedded surface is the projected
+-- ambient derivative), then restore the old length.
+transport :: Field a => ScalarFn -> V3 a -> V3 a -> V3 a
+transport sf p' v =
+  let n = unitNormal sf p'
+      w = tangentProjection n v
+  in norm v *^ safeNormalize w
+
+-- | One step of a geodesic: move along the velocity for time @h@, pull back
+-- onto the surface, carry the velocity along.
+geodesicStep :: Field a => ScalarFn -> a -> (V3 a, V3 a) -> (V3 a, V3 a)
+geodesicStep sf h (p, v) =
+  let p' = projectToSurface sf (p ^+^ h *^ v)
+  in (p', transport sf p' v)
+
+-- | The exponential map: walk a geodesic of the given length from a point in
+-- a tangent direction (normalised here), in @n@ equal steps. Returns the end
+-- point and the unit direction there.
+expMap :: Field a => ScalarFn -> Int -> V3 a -> V3 a -> a -> (V3 a, V3 a)
+expMap sf n p dir len = last (geodesicPath sf n p dir len)
+
+-- | The points of 'expMap''s walk, the start included.
+geodesicPath :: Field a => ScalarFn -> Int -> V3 a -> V3 a -> a -> [(V3 a, V3 a)]
+geodesicPath sf n p dir len =
+  let h = len / fromIntegral (max 1 n)
+      d0 = safeNormalize (tangentProjection (unitNormal sf p) dir)
+  in take (max 1 n + 1) (iterate (geodesicStep sf h) (p, d0))
+
+-- | A tangent frame @(u, n × u)@ at a point with unit normal @n@, from a
+-- tangent axis @u@.
+tangentFrame :: Field a => V3 a -> V3 a -> (V3 a, V3 a)
+tangentFrame n u = (u, n `cross` u)

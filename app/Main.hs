@@ -1,0 +1,120 @@
+{-# LANGUAGE OverloadedStrings #-}
+-- | The @manifold@ command.
+module Main (main) where
+
+import Control.Monad (when)
+import qualified Data.Aeson as A
+import qualified Data.ByteString.Lazy.Char8 as BL
+import Data.List (intercalate)
+import Linear.Metric (norm)
+import Linear.V3 (V3 (..))
+import Options.Applicative
+import System.Exit (exitWith, ExitCode (..))
+import System.IO (hPutStrLn, stderr)
+import Text.Read (readMaybe)
+
+import Manifold
+
+data Command
+  = Spaces Bool
+  | Geodesic GeodesicArgs
+
+data GeodesicArgs = GeodesicArgs
+  { gSpace :: String
+  , gFrom :: String
+  , gDir :: String
+  , gLength :: String
+  , gStep :: String
+  , gJson :: Bool
+  }
+
+commandParser :: Parser Command
+commandParser = hsubparser
+  ( command "spaces" (info (Spaces <$> jsonFlag) (progDesc "List the spaces of the catalogue"))
+ <> command "geodesic" (info (Geodesic <$> geodesicArgs) (progDesc "Walk a geodesic and print its polyline"))
+  )
+  where
+    jsonFlag = switch (long "json" <> help "Print JSON")
+    geodesicArgs = GeodesicArgs
+      <$> strOption (long "space" <> metavar "NAME" <> help ("One of: " ++ intercalate ", " spaceNames))
+      <*> strOption (long "from" <> metavar "X,Y,Z" <> help "Start point (projected onto the surface)")
+      <*> strOption (long "dir" <> metavar "DX,DY,DZ" <> help "Start direction (projected onto the tangent plane)")
+      <*> strOption (long "length" <> metavar "L" <> help "Length of the geodesic")
+      <*> strOption (long "step" <> metavar "H" <> value "0.01" <> help "Step length (default 0.01)")
+      <*> jsonFlag
+
+main :: IO ()
+main = do
+  cmd <- customExecParser (prefs showHelpOnEmpty)
+           (info (commandParser <**> helper)
+              (fullDesc <> progDesc "Rigid-body physics on curved surfaces" <> failureCode 2))
+  case cmd of
+    Spaces json -> listSpaces json
+    Geodesic a -> either usageError id (geodesic a)
+
+-- | A one-line error and exit code 2.
+usageError :: String -> IO a
+usageError msg = hPutStrLn stderr ("manifold: " ++ msg) >> exitWith (ExitFailure 2)
+
+listSpaces :: Bool -> IO ()
+listSpaces True = BL.putStrLn $ A.encode
+  [ A.object [ "name" A..= spaceName s, "description" A..= spaceDescription s
+             , "quotient" A..= quotientName (spaceQuotient s), "hasBoundary" A..= hasBoundary s ]
+  | s <- catalogue ]
+listSpaces False = mapM_ (\s -> putStrLn (pad (spaceName s) ++ "  " ++ spaceDescription s)) catalogue
+  where
+    width = maximum (map (length . spaceName) catalogue)
+    pad n = n ++ replicate (width - length n) ' '
+
+findSpace :: String -> Either String Space
+findSpace n = maybe (Left ("unknown space " ++ show n ++ "; valid spaces: " ++ intercalate ", " spaceNames)) Right (lookupSpace n)
+
+parseNumber :: String -> String -> Either String Double
+parseNumber what s = case readMaybe (dropPlus s) of
+  Just x | not (isNaN x || isInfinite x) -> Right x
+  _ -> Left (what ++ ": " ++ show s ++ " is not a finite number")
+  where dropPlus ('+' : r) = r
+        dropPlus r = r
+
+parseVector :: String -> String -> Either String (V3 Double)
+parseVector what s = case splitOn ',' s of
+  [a, b, c] -> V3 <$> parseNumber what a <*> parseNumber what b <*> parseNumber what c
+  _ -> Left (what ++ ": " ++ show s ++ " is not three comma-separated numbers X,Y,Z")
+
+splitOn :: Char -> String -> [String]
+splitOn c s = case break (== c) s of
+  (a, []) -> [a]
+  (a, _ : rest) -> a : splitOn c rest
+
+geodesic :: GeodesicArgs -> Either String (IO ())
+geodesic a = do
+  sp <- findSpace (gSpace a)
+  from <- parseVector "--from" (gFrom a)
+  dir <- parseVector "--dir" (gDir a)
+  len <- parseNumber "--length" (gLength a)
+  h <- parseNumber "--step" (gStep a)
+  when (len < 0) (Left "--length: must not be negative")
+  when (h <= 0) (Left "--step: must be positive")
+  let f = spaceField sp
+      degenerate q = let g = norm (fieldGradient f q) in isNaN g || g < 1e-12
+  when (degenerate from) (Left ("--from: the gradient of " ++ spaceName sp ++ " vanishes at the start point, so it has no surface normal there; choose another point"))
+  let start = projectToSurface f from
+  when (degenerate start || any isNaN start) (Left "--from: the start point does not project onto the surface (the gradient vanishes on the way); choose a point nearer the surface")
+  let n = unitNormal f start
+      tangentDir = tangentProjection n dir
+  when (norm dir < 1e-12) (Left "--dir: the direction is zero")
+  when (norm tangentDir < 1e-9 * norm dir) (Left "--dir: the direction is normal to the surface at the start point, so it has no tangent part")
+  let steps = max 1 (ceiling (len / h)) :: Int
+      path = geodesicPath f steps start tangentDir len
+      points = map fst path
+      (end, endDir) = last path
+  pure $ if gJson a
+    then BL.putStrLn (A.encode (A.object
+           [ "points" A..= map v3List points, "end" A..= v3List end, "endDir" A..= v3List endDir ]))
+    else do
+      mapM_ (putStrLn . unwords . map show . v3List) points
+      putStrLn ("end: " ++ unwords (map show (v3List end)))
+      putStrLn ("endDir: " ++ unwords (map show (v3List endDir)))
+
+v3List :: V3 Double -> [Double]
+v3List (V3 x y z) = [x, y, z]
