@@ -1,0 +1,163 @@
+-- | Printing staged expressions as JavaScript and GLSL.
+--
+-- A set of root expressions is lowered to a block of bindings followed by the
+-- roots: every node used more than once (within the block) is printed once as
+-- a local binding, nodes already bound in an enclosing scope are referred to
+-- by name, and every node used once is inlined where it is used. Names are
+-- given in the order bindings are printed, so the same input prints the same
+-- bytes whatever else the global node table holds.
+module Manifold.Stage.Print
+  ( Target (..)
+  , Scope
+  , emptyScope
+  , Lowered (..)
+  , lower
+  , renderLiteral
+  , FnType (..)
+  , printFunction
+  , indent
+  ) where
+
+import qualified Data.IntMap.Strict as IM
+import Data.List (foldl', intercalate)
+import GHC.Float (castWord64ToDouble)
+
+import Manifold.Stage.Expr
+
+data Target = JavaScript | GLSL
+  deriving (Show, Eq)
+
+-- | Nodes already bound to names where the code being printed sits.
+type Scope = IM.IntMap String
+
+emptyScope :: Scope
+emptyScope = IM.empty
+
+data Lowered = Lowered
+  { loweredBindings :: [(String, String)] -- ^ name and right-hand side, in order
+  , loweredRoots :: [String] -- ^ each root as an expression over the bindings
+  , loweredScope :: Scope -- ^ the scope extended by the new bindings
+  , loweredNext :: Int -- ^ the next fresh name's number
+  }
+
+-- | Lower roots in a scope, naming new bindings @prefix ++ show k@ from @next@.
+lower :: Target -> String -> Int -> Scope -> [E] -> Lowered
+lower target prefix next scope roots =
+  let rootIds = map nodeId roots
+      (order, counts) = foldl' visit ([], IM.empty) rootIds
+      visit (ord, cnt) i
+        | IM.member i scope = (ord, cnt)
+        | IM.member i cnt = (ord, IM.adjust (+ 1) i cnt)
+        | otherwise =
+            let (ord', cnt') = foldl' visit (ord, IM.insert i (1 :: Int) cnt) (children (nodeById i))
+            in (i : ord', cnt')
+      shouldBind i = compound (nodeById i) && IM.findWithDefault 0 i counts > 1
+      bind (bs, sc, k) i
+        | shouldBind i =
+            let name = prefix ++ show k
+            in ((name, render target sc i) : bs, IM.insert i name sc, k + 1)
+        | otherwise = (bs, sc, k)
+      -- 'order' lists every node after its operands' visits: reversed, it is
+      -- a post-order (operands first).
+      (revBindings, scope', next') = foldl' bind ([], scope, next) (reverse order)
+  in Lowered (reverse revBindings) (map (render target scope') rootIds) scope' next'
+
+compound :: Node -> Bool
+compound = \case
+  Lit _ -> False
+  Sym _ -> False
+  _ -> True
+
+-- | A node as an expression, its unbound operands inlined.
+render :: Target -> Scope -> Int -> String
+render target scope i = case IM.lookup i scope of
+  Just name -> name
+  Nothing -> case nodeById i of
+    Lit w -> renderLiteral target (castWord64ToDouble w)
+    Sym s -> s
+    Un op a -> unary target op (go a)
+    Bin op a b -> binary target op (go a) (go b)
+    Sel c t e -> case target of
+      JavaScript -> "(" ++ go c ++ " > 0 ? " ++ go t ++ " : " ++ go e ++ ")"
+      GLSL -> "(" ++ go c ++ " > 0.0 ? " ++ go t ++ " : " ++ go e ++ ")"
+  where go = render target scope
+
+unary :: Target -> Op1 -> String -> String
+unary target op a = case (op, target) of
+  (Neg, _) -> "(-" ++ a ++ ")"
+  (Recip, JavaScript) -> "(1 / " ++ a ++ ")"
+  (Recip, GLSL) -> "(1.0 / " ++ a ++ ")"
+  (_, JavaScript) -> "Math." ++ fname ++ "(" ++ a ++ ")"
+  (_, GLSL) -> fname ++ "(" ++ a ++ ")"
+  where
+    fname = case op of
+      Abs -> "abs"; Sign -> "sign"; Sqrt -> "sqrt"; Exp -> "exp"; Log -> "log"
+      Sin -> "sin"; Cos -> "cos"; Tan -> "tan"; Asin -> "asin"; Acos -> "acos"
+      Atan -> "atan"; Sinh -> "sinh"; Cosh -> "cosh"; Tanh -> "tanh"
+      Asinh -> "asinh"; Acosh -> "acosh"; Atanh -> "atanh"; Floor -> "floor"
+      Neg -> "-"; Recip -> "1/"
+
+binary :: Target -> Op2 -> String -> String -> String
+binary target op a b = case op of
+  Add -> infx "+"
+  Sub -> infx "-"
+  Mul -> infx "*"
+  Div -> infx "/"
+  Pow -> case target of
+    JavaScript -> "Math.pow(" ++ a ++ ", " ++ b ++ ")"
+    GLSL -> "pow(" ++ a ++ ", " ++ b ++ ")"
+  where infx o = "(" ++ a ++ " " ++ o ++ " " ++ b ++ ")"
+
+-- | A 'Double' literal that the target reads back as the same number (JS) or
+-- the nearest float (GLSL, which has no literals for NaN and infinities).
+renderLiteral :: Target -> Double -> String
+renderLiteral JavaScript x
+  | isNaN x = "NaN"
+  | isInfinite x = if x > 0 then "Infinity" else "(-Infinity)"
+  | isNegativeZero x = "(-0)"
+  | x < 0 = "(" ++ show x ++ ")"
+  | otherwise = show x
+renderLiteral GLSL x
+  | isNaN x = "uintBitsToFloat(0x7fc00000u)"
+  | isInfinite x || abs x > 3.4e38 = if x > 0 then "uintBitsToFloat(0x7f800000u)" else "(-uintBitsToFloat(0x7f800000u))"
+  | abs x < 1e-37 = "0.0"
+  | x < 0 = "(" ++ show x ++ ")"
+  | otherwise = show x
+
+indent :: String -> String
+indent = ("  " ++)
+
+-- | The type of a printed pure function: how many results, and for GLSL
+-- whether the three coordinates come in as a @vec3 p@.
+data FnType = FnType
+  { fnParams :: [String] -- ^ scalar parameters (the 'sym's the roots use)
+  , fnGlslVec3 :: Bool -- ^ GLSL: take @vec3 p@ and name its components @x, y, z@
+  }
+
+-- | A whole function returning the roots: one number, or an array (JS) /
+-- vector (GLSL) of them.
+printFunction :: Target -> String -> FnType -> [E] -> String
+printFunction target name ty roots =
+  let Lowered bs rs _ _ = lower target "t" 0 emptyScope roots
+      result = case rs of
+        [r] -> r
+        _ -> case target of
+          JavaScript -> "[" ++ intercalate ", " rs ++ "]"
+          GLSL -> "vec" ++ show (length rs) ++ "(" ++ intercalate ", " rs ++ ")"
+  in case target of
+    JavaScript -> unlines $
+      ("function " ++ name ++ "(" ++ intercalate ", " (fnParams ty) ++ ") {")
+      : map (\(n, e) -> indent ("const " ++ n ++ " = " ++ e ++ ";")) bs
+      ++ [indent ("return " ++ result ++ ";"), "}"]
+    GLSL ->
+      let rty = case rs of
+            [_] -> "float"
+            _ -> "vec" ++ show (length rs)
+          (params, prologue)
+            | fnGlslVec3 ty = ("vec3 p", [indent ("float " ++ v ++ " = p." ++ v ++ ";") | v <- fnParams ty])
+            | otherwise = (intercalate ", " ["float " ++ v | v <- fnParams ty], [])
+      in unlines $
+        (rty ++ " " ++ name ++ "(" ++ params ++ ") {")
+        : prologue
+        ++ map (\(n, e) -> indent ("float " ++ n ++ " = " ++ e ++ ";")) bs
+        ++ [indent ("return " ++ result ++ ";"), "}"]
