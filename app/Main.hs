@@ -2,6 +2,7 @@
 -- | The @manifold@ command.
 module Main (main) where
 
+import Control.Exception (try)
 import Control.Monad (when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
@@ -14,10 +15,12 @@ import System.IO (hPutStrLn, stderr)
 import Text.Read (readMaybe)
 
 import Manifold
+import Manifold.Build
 
 data Command
   = Spaces Bool
   | Geodesic GeodesicArgs
+  | Build FilePath
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -32,8 +35,10 @@ commandParser :: Parser Command
 commandParser = hsubparser
   ( command "spaces" (info (Spaces <$> jsonFlag) (progDesc "List the spaces of the catalogue"))
  <> command "geodesic" (info (Geodesic <$> geodesicArgs) (progDesc "Walk a geodesic and print its polyline"))
+ <> command "build" (info (Build <$> outDir) (progDesc "Emit the page's generated scripts (spaces, GLSL) into web/gen"))
   )
   where
+    outDir = strOption (long "out" <> metavar "DIR" <> value "web/gen" <> help "Output directory (default web/gen)")
     jsonFlag = switch (long "json" <> help "Print JSON")
     geodesicArgs = GeodesicArgs
       <$> strOption (long "space" <> metavar "NAME" <> help ("One of: " ++ intercalate ", " spaceNames))
@@ -51,6 +56,12 @@ main = do
   case cmd of
     Spaces json -> listSpaces json
     Geodesic a -> either usageError id (geodesic a)
+    Build dir -> do
+      let files = generatedFiles catalogue
+      r <- try (writeGenerated dir files)
+      case r of
+        Left (BuildError msg) -> usageError msg
+        Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a

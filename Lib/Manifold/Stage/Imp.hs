@@ -1,0 +1,244 @@
+{-# LANGUAGE TypeFamilies, TypeFamilyDependencies, FlexibleContexts, UndecidableSuperClasses #-}
+{-# LANGUAGE GeneralizedNewtypeDeriving #-}
+-- | The imperative layer the engine is written in: bounded loops, a
+-- conditional, array reads and writes, explicit sharing and mutable locals —
+-- the size the physics step needs, no more.
+--
+-- It is a tagless-final class (after ivory and raw-feldspar's imperative
+-- EDSLs) with two interpretations:
+--
+-- * 'Native': GHC runs the program directly in 'IO' over unboxed mutable
+--   vectors of 'Double', so the native engine is ordinary compiled Haskell;
+-- * 'Staged': the program prints itself as a JavaScript function over
+--   @Float64Array@s; its scalars are staged expressions ('E'), so the geometry
+--   the program calls (fields, AD gradients, projections) is printed inline,
+--   with shared subexpressions bound once.
+module Manifold.Stage.Imp
+  ( Imp (..)
+  , whenPositive
+  , forEach
+  , modifyRef
+    -- * Native
+  , Native
+  , runNative
+  , NativeArray
+    -- * Staged
+  , Staged
+  , StagedArray
+  , IxE
+  , JsProcedure (..)
+  , stageProcedure
+  ) where
+
+import Control.Monad.State.Strict
+import Data.IORef
+import qualified Data.IntMap.Strict as IM
+import Data.List (intercalate)
+import qualified Data.Vector.Unboxed.Mutable as MV
+
+import Manifold.Field
+import Manifold.Stage.Expr
+import Manifold.Stage.Print
+
+class (Monad m, Field (Scalar m), Num (Index m)) => Imp m where
+  type Scalar m = s | s -> m
+  type Index m = i | i -> m
+  type Array m
+  type Ref m
+  -- | @forLoop lo hi body@ runs @body i@ for @lo <= i < hi@.
+  forLoop :: Index m -> Index m -> (Index m -> m ()) -> m ()
+  -- | @ifPositive c t e@ runs @t@ where @c > 0@, else @e@ (NaN runs @e@).
+  ifPositive :: Scalar m -> m () -> m () -> m ()
+  readArray :: Array m -> Index m -> m (Scalar m)
+  writeArray :: Array m -> Index m -> Scalar m -> m ()
+  -- | Compute a value once here and refer to it by name afterwards.
+  share :: Scalar m -> m (Scalar m)
+  newRef :: Scalar m -> m (Ref m)
+  readRef :: Ref m -> m (Scalar m)
+  writeRef :: Ref m -> Scalar m -> m ()
+  toScalar :: Index m -> Scalar m
+  -- | A scalar holding a whole number (a stored count or index) as an index.
+  toIndex :: Scalar m -> Index m
+
+whenPositive :: Imp m => Scalar m -> m () -> m ()
+whenPositive c t = ifPositive c t (pure ())
+
+forEach :: Imp m => Index m -> (Index m -> m ()) -> m ()
+forEach = forLoop 0
+
+modifyRef :: Imp m => Ref m -> (Scalar m -> Scalar m) -> m ()
+modifyRef r f = readRef r >>= writeRef r . f
+
+-- Native -------------------------------------------------------------------
+
+newtype Native a = Native (IO a)
+  deriving (Functor, Applicative, Monad, MonadIO)
+
+runNative :: Native a -> IO a
+runNative (Native io) = io
+
+type NativeArray = MV.IOVector Double
+
+instance Imp Native where
+  type Scalar Native = Double
+  type Index Native = Int
+  type Array Native = NativeArray
+  type Ref Native = IORef Double
+  forLoop lo hi body = go lo
+    where go !i | i < hi = body i >> go (i + 1)
+                | otherwise = pure ()
+  {-# INLINE forLoop #-}
+  ifPositive c t e = if c > 0 then t else e
+  {-# INLINE ifPositive #-}
+  readArray a i = Native (MV.read a i)
+  {-# INLINE readArray #-}
+  writeArray a i x = Native (MV.write a i x)
+  {-# INLINE writeArray #-}
+  share = pure
+  newRef = Native . newIORef
+  readRef = Native . readIORef
+  writeRef r !x = Native (writeIORef r x)
+  toScalar = fromIntegral
+  toIndex = truncate
+
+-- Staged -------------------------------------------------------------------
+
+-- | A staged index: a JavaScript number holding a whole number.
+newtype IxE = IxE E
+
+instance Num IxE where
+  IxE a + IxE b = IxE (a + b)
+  IxE a - IxE b = IxE (a - b)
+  IxE a * IxE b = IxE (a * b)
+  negate (IxE a) = IxE (negate a)
+  abs (IxE a) = IxE (abs a)
+  signum (IxE a) = IxE (signum a)
+  fromInteger = IxE . fromInteger
+
+newtype StagedArray = StagedArray String
+newtype StagedRef = StagedRef String
+
+data StageState = StageState
+  { ssNext :: !Int -- ^ next fresh name
+  , ssScope :: !Scope -- ^ nodes bound where the next statement goes
+  , ssLines :: [String] -- ^ the current block, reversed
+  , ssDepth :: !Int
+  }
+
+newtype Staged a = Staged (State StageState a)
+  deriving (Functor, Applicative, Monad)
+
+emitLine :: String -> Staged ()
+emitLine l = Staged $ modify' $ \s -> s { ssLines = (replicate (2 * ssDepth s) ' ' ++ l) : ssLines s }
+
+-- | Print the bindings an expression needs and return it as a JS expression.
+expression :: E -> Staged String
+expression e = do
+  s <- Staged get
+  let Lowered bs [r] scope' next' = lower JavaScript "t" (ssNext s) (ssScope s) [e]
+  Staged (put s { ssNext = next', ssScope = scope' })
+  mapM_ (\(n, rhs) -> emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")) bs
+  pure r
+
+fresh :: String -> Staged String
+fresh prefix = Staged $ state $ \s -> (prefix ++ show (ssNext s), s { ssNext = ssNext s + 1 })
+
+-- | Bind an expression to a new name, remembered for this scope.
+bindAs :: String -> E -> Staged E
+bindAs prefix e = do
+  rhs <- expression e
+  case nodeOf e of
+    Lit _ -> pure e
+    Sym _ -> pure e
+    _ -> do
+      n <- fresh prefix
+      emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")
+      Staged (modify' (\s -> s { ssScope = IM.insert (nodeId e) n (ssScope s) }))
+      pure (sym n)
+
+-- | A nested block: its bindings do not outlive it.
+block :: Staged () -> Staged ()
+block body = do
+  outer <- Staged get
+  Staged (put outer { ssDepth = ssDepth outer + 1 })
+  body
+  Staged (modify' (\s -> s { ssScope = ssScope outer, ssDepth = ssDepth outer }))
+
+instance Imp Staged where
+  type Scalar Staged = E
+  type Index Staged = IxE
+  type Array Staged = StagedArray
+  type Ref Staged = StagedRef
+  forLoop (IxE lo) (IxE hi) body = do
+    lo' <- expression lo
+    hi' <- bindAs "n" hi >>= expression
+    i <- fresh "i"
+    emitLine ("for (let " ++ i ++ " = " ++ lo' ++ "; " ++ i ++ " < " ++ hi' ++ "; " ++ i ++ "++) {")
+    block (body (IxE (sym i)))
+    emitLine "}"
+  ifPositive c t e = do
+    c' <- expression c
+    emitLine ("if (" ++ c' ++ " > 0) {")
+    block t
+    (_, elseLines) <- captureLines (block e)
+    if null elseLines
+      then emitLine "}"
+      else do
+        emitLine "} else {"
+        Staged (modify' (\s -> s { ssLines = elseLines ++ ssLines s }))
+        emitLine "}"
+  readArray (StagedArray a) (IxE i) = do
+    i' <- expression i
+    t <- fresh "t"
+    emitLine ("const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
+    pure (sym t)
+  writeArray (StagedArray a) (IxE i) x = do
+    i' <- expression i
+    x' <- expression x
+    emitLine (a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
+  share = bindAs "s"
+  newRef x = do
+    x' <- expression x
+    v <- fresh "v"
+    emitLine ("let " ++ v ++ " = " ++ x' ++ ";")
+    pure (StagedRef v)
+  readRef (StagedRef v) = do
+    t <- fresh "t"
+    emitLine ("const " ++ t ++ " = " ++ v ++ ";")
+    pure (sym t)
+  writeRef (StagedRef v) x = do
+    x' <- expression x
+    emitLine (v ++ " = " ++ x' ++ ";")
+  toScalar (IxE e) = e
+  toIndex = IxE
+
+-- | Run a block on the side and return the lines it printed (in order of
+-- emission, reversed as the state keeps them), leaving the state's lines as
+-- they were.
+captureLines :: Staged a -> Staged (a, [String])
+captureLines m = do
+  saved <- Staged (gets ssLines)
+  Staged (modify' (\s -> s { ssLines = [] }))
+  a <- m
+  ls <- Staged (gets ssLines)
+  Staged (modify' (\s -> s { ssLines = saved }))
+  pure (a, ls)
+
+-- | A procedure to print: its name, its array and scalar parameters.
+data JsProcedure = JsProcedure
+  { procName :: String
+  , procArrays :: [String]
+  , procScalars :: [String]
+  }
+
+-- | Print a procedure as a JavaScript function (returning nothing; results go
+-- into its arrays).
+stageProcedure :: JsProcedure -> ([StagedArray] -> [E] -> Staged ()) -> String
+stageProcedure p body =
+  let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
+      s0 = StageState 0 emptyScope [] 1
+      s1 = execState m s0
+  in unlines $
+       ("function " ++ procName p ++ "(" ++ intercalate ", " (procArrays p ++ procScalars p) ++ ") {")
+       : reverse (ssLines s1)
+       ++ ["}"]

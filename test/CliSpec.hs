@@ -1,0 +1,169 @@
+{-# LANGUAGE OverloadedStrings #-}
+-- | The @manifold@ command, run as a process.
+module CliSpec (spec) where
+
+import Control.Monad (forM_)
+import Data.Aeson ((.:))
+import qualified Data.Aeson as A
+import qualified Data.ByteString.Lazy.Char8 as BL
+import Data.List (isInfixOf, isPrefixOf, sort)
+import Linear.Metric (dot, norm)
+import Linear.V3 (V3 (..), cross)
+import System.Exit (ExitCode (..))
+import System.Process (readProcessWithExitCode)
+import Test.Hspec
+
+import Manifold
+import TestUtil
+
+data SpaceInfo = SpaceInfo
+  { siName :: String
+  , siDescription :: String
+  , siQuotient :: String
+  , siHasBoundary :: Bool
+  } deriving (Show, Eq)
+
+instance A.FromJSON SpaceInfo where
+  parseJSON = A.withObject "space" $ \o ->
+    SpaceInfo <$> o .: "name" <*> o .: "description" <*> o .: "quotient" <*> o .: "hasBoundary"
+
+data GeodesicOut = GeodesicOut
+  { goPoints :: [[Double]]
+  , goEnd :: [Double]
+  , goEndDir :: [Double]
+  } deriving (Show, Eq)
+
+instance A.FromJSON GeodesicOut where
+  parseJSON = A.withObject "geodesic" $ \o ->
+    GeodesicOut <$> o .: "points" <*> o .: "end" <*> o .: "endDir"
+
+expectedNames :: [String]
+expectedNames =
+  [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
+  , "projective-plane", "klein-bottle", "moebius", "funnel" ]
+
+toV3 :: [Double] -> Maybe (V3 Double)
+toV3 [x, y, z] = Just (V3 x y z)
+toV3 _ = Nothing
+
+csv :: V3 Double -> String
+csv (V3 x y z) = show x ++ "," ++ show y ++ "," ++ show z
+
+-- | The direction given to every geodesic (projected by the command).
+cliDir :: V3 Double
+cliDir = V3 1 0.2 0.7
+
+cliLength, cliStep :: Double
+cliLength = 1
+cliStep = 0.01
+
+spec :: Spec
+spec = do
+  exe <- runIO findManifoldExe
+  let run args = readProcessWithExitCode exe args ""
+
+  describe "manifold spaces" $ do
+    it "--json lists exactly the spaces of the catalogue, with name, description, quotient and hasBoundary" $ do
+      (code, out, err) <- run ["spaces", "--json"]
+      code `shouldBe` ExitSuccess
+      err `shouldBe` ""
+      case A.eitherDecode (BL.pack out) :: Either String [SpaceInfo] of
+        Left e -> expectationFailure ("spaces --json does not parse: " ++ e ++ "\n" ++ out)
+        Right infos -> do
+          map siName infos `shouldBe` expectedNames
+          forM_ infos $ \i -> do
+            siDescription i `shouldSatisfy` (not . null)
+            siQuotient i `shouldSatisfy` (`elem` ["none", "antipodal"])
+          -- Against what is known of the spaces (independently of the library).
+          [siName i | i <- infos, siQuotient i == "antipodal"]
+            `shouldBe` ["projective-plane", "klein-bottle", "moebius"]
+          sort [siName i | i <- infos, siHasBoundary i]
+            `shouldBe` sort ["hemisphere", "disc", "rectangle", "moebius", "funnel"]
+    it "the library's catalogue has the same names" $
+      spaceNames `shouldBe` expectedNames
+    it "without --json prints one line per space, starting with its name" $ do
+      (code, out, _) <- run ["spaces"]
+      code `shouldBe` ExitSuccess
+      length (lines out) `shouldBe` length expectedNames
+      and (zipWith isPrefixOf expectedNames (lines out)) `shouldBe` True
+
+  describe "manifold geodesic --json" $
+    forM_ catalogue $ \s -> do
+      let from = firstPlacement s
+      it (spaceName s ++ ": from the first body of the scene " ++ showV3 from ++ " along " ++ showV3 cliDir) $ do
+        let args = [ "geodesic", "--space", spaceName s, "--from", csv from, "--dir", csv cliDir
+                   , "--length", show cliLength, "--step", show cliStep, "--json" ]
+        (code, out, err) <- run args
+        (unwords args, code, err) `shouldSatisfy` (\(_, c, _) -> c == ExitSuccess)
+        case A.eitherDecode (BL.pack out) of
+          Left e -> expectationFailure ("geodesic --json does not parse: " ++ e ++ "\n" ++ take 300 out)
+          Right g -> do
+            let Just pts = mapM toV3 (goPoints g)
+                Just end = toV3 (goEnd g)
+                Just endDir = toV3 (goEndDir g)
+                f = spaceField s
+                start = projectToSurface f from
+            length pts `shouldSatisfy` (>= 2)
+            -- End is the last point, exactly.
+            goEnd g `shouldBe` last (goPoints g)
+            -- Every point is on the surface.
+            maximum (map (abs . evalField s) pts) `shouldSatisfy` (< 1e-9)
+            -- It starts at the projected start point.
+            vecDist (head pts) start `shouldSatisfy` (< 1e-9)
+            -- It is a polyline of the requested length (to 1 %).
+            let len = sum (zipWith vecDist pts (tail pts))
+            (len, relErr cliLength len) `shouldSatisfy` ((< 0.01) . snd)
+            -- The end direction is a unit tangent vector.
+            norm endDir `shouldSatisfy` closeAbs 1e-9 1
+            abs (unitNormal f end `dot` endDir) `shouldSatisfy` (< 1e-9)
+
+  it "geodesic on the sphere stays on the great circle of its start and direction" $ do
+    (code, out, _) <- run [ "geodesic", "--space", "sphere", "--from", "0,0,2", "--dir", "1,1,0"
+                          , "--length", "3", "--step", "0.01", "--json" ]
+    code `shouldBe` ExitSuccess
+    case A.eitherDecode (BL.pack out) of
+      Left e -> expectationFailure e
+      Right g -> do
+        let Just pts = mapM toV3 (goPoints g)
+            nrm = V3 0 0 1 `cross` V3 1 1 0
+        maximum [abs (p `dot` nrm) | p <- pts] `shouldSatisfy` (< 1e-9)
+        -- length 3 along the great circle from the north pole (0,0,1)
+        vecDist (last pts) (V3 (sin 3 / sqrt 2) (sin 3 / sqrt 2) (cos 3)) `shouldSatisfy` (< 1e-3)
+
+  describe "manifold geodesic errors: exit code 2 and a one-line message on stderr" $ do
+    let failsWith args check = do
+          (code, out, err) <- run args
+          code `shouldBe` ExitFailure 2
+          out `shouldBe` ""
+          (err, length (lines err)) `shouldSatisfy` ((== 1) . snd)
+          err `shouldSatisfy` check
+    it "unknown space (the message lists the valid names)" $
+      failsWith ["geodesic", "--space", "nowhere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1"] $ \err ->
+        "nowhere" `isInfixOf` err && all (`isInfixOf` err) expectedNames
+    it "malformed number in --from" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,abc,0", "--dir", "1,0,0", "--length", "1"]
+        ("abc" `isInfixOf`)
+    it "malformed --from (two components)" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1", "--dir", "1,0,0", "--length", "1"]
+        (const True)
+    it "malformed number in --length" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1.2.3"]
+        ("1.2.3" `isInfixOf`)
+    it "malformed number in --step" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1", "--step", "x"]
+        (const True)
+    it "non-finite number (NaN)" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "NaN,0,0", "--length", "1"]
+        (const True)
+    it "zero direction" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "0,0,0", "--length", "1"]
+        ("--dir" `isInfixOf`)
+    it "direction normal to the surface" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "0,3,0", "--length", "1"]
+        ("--dir" `isInfixOf`)
+    it "start where the gradient vanishes (the sphere's centre)" $
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,0,0", "--dir", "1,0,0", "--length", "1"]
+        ("--from" `isInfixOf`)
+    it "negative length and non-positive step" $ do
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length=-1"] (const True)
+      failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1", "--step", "0"] (const True)
