@@ -2,7 +2,13 @@
 -- | The @manifold@ command.
 module Main (main) where
 
-import Control.Exception (try)
+import Control.Exception (IOException, try)
+import Data.List (isInfixOf)
+import qualified Network.Wai.Handler.Warp as Warp
+import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
+import System.Directory (doesFileExist)
+import System.FilePath ((</>))
+import System.IO.Error (isAlreadyInUseError)
 import Control.Monad (when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
@@ -11,7 +17,7 @@ import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
 import Options.Applicative
 import System.Exit (exitWith, ExitCode (..))
-import System.IO (hPutStrLn, stderr)
+import System.IO (hFlush, hPutStrLn, stderr, stdout)
 import Text.Read (readMaybe)
 
 import Manifold
@@ -21,6 +27,7 @@ data Command
   = Spaces Bool
   | Geodesic GeodesicArgs
   | Build FilePath
+  | Serve Int FilePath
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -36,9 +43,12 @@ commandParser = hsubparser
   ( command "spaces" (info (Spaces <$> jsonFlag) (progDesc "List the spaces of the catalogue"))
  <> command "geodesic" (info (Geodesic <$> geodesicArgs) (progDesc "Walk a geodesic and print its polyline"))
  <> command "build" (info (Build <$> outDir) (progDesc "Emit the page's generated scripts (spaces, GLSL) into web/gen"))
+ <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
   )
   where
     outDir = strOption (long "out" <> metavar "DIR" <> value "web/gen" <> help "Output directory (default web/gen)")
+    port = option auto (long "port" <> metavar "P" <> value 8000 <> help "Port (default 8000)")
+    webDir = strOption (long "dir" <> metavar "DIR" <> value "web" <> help "Directory to serve (default web)")
     jsonFlag = switch (long "json" <> help "Print JSON")
     geodesicArgs = GeodesicArgs
       <$> strOption (long "space" <> metavar "NAME" <> help ("One of: " ++ intercalate ", " spaceNames))
@@ -62,6 +72,7 @@ main = do
       case r of
         Left (BuildError msg) -> usageError msg
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
+    Serve p dir -> serve p dir
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -126,6 +137,25 @@ geodesic a = do
       mapM_ (putStrLn . unwords . map show . v3List) points
       putStrLn ("end: " ++ unwords (map show (v3List end)))
       putStrLn ("endDir: " ++ unwords (map show (v3List endDir)))
+
+-- | Serve a directory on the loopback interface only.
+serve :: Int -> FilePath -> IO ()
+serve p dir = do
+  when (p < 1 || p > 65535) (usageError ("--port: " ++ show p ++ " is not a port number (1-65535)"))
+  ok <- doesFileExist (dir </> "index.html")
+  when (not ok) (usageError (dir </> "index.html" ++ " does not exist; run manifold serve from the repository root"))
+  gen <- doesFileExist (dir </> "gen" </> "spaces.js")
+  when (not gen) (hPutStrLn stderr ("manifold: warning: " ++ dir </> "gen" ++ " is not built; run manifold build first"))
+  let settings = Warp.setHost "127.0.0.1" $ Warp.setPort p
+               $ Warp.setBeforeMainLoop (putStrLn ("serving " ++ dir ++ " at http://127.0.0.1:" ++ show p ++ "/") >> hFlush stdout)
+               Warp.defaultSettings
+  r <- try (Warp.runSettings settings (staticApp (defaultFileServerSettings dir)))
+  case r of
+    Left (e :: IOException)
+      | isAlreadyInUseError e || "resource busy" `isInfixOf` show e || "in use" `isInfixOf` show e ->
+          usageError ("port " ++ show p ++ " is already in use; choose another with --port")
+      | otherwise -> usageError ("cannot serve on port " ++ show p ++ ": " ++ show e)
+    Right () -> pure ()
 
 v3List :: V3 Double -> [Double]
 v3List (V3 x y z) = [x, y, z]

@@ -46,7 +46,7 @@ projectionSpec = describe "projectToSurface" $ do
                                  ++ ", f = " ++ show fv) $
                    abs fv < 1e-9 .&&. vecDist p1 q <= 0.2
   it "sanity: the samplers give points on the surface of every space" $
-    property $ withMaxSuccess 200 $ forAll (elements catalogue) $ \s ->
+    property $ withMaxSuccess 200 $ forAllShow (elements catalogue) spaceName $ \s ->
       forAll (genSurfacePoint s) $ \p ->
         counterexample (spaceName s ++ " " ++ showV3 p) (abs (fieldAt s p) < 1e-12)
   it "sphere: a point off the sphere goes to p / |p| (one Newton step is exact)" $
@@ -55,7 +55,7 @@ projectionSpec = describe "projectToSurface" $ do
   it "leaves a point whose gradient vanishes where it is (the sphere's centre)" $
     projectToSurface (spaceField sphere) (V3 0 0 0) `shouldBe` (V3 0 0 0 :: V3 Double)
   it "leaves points on the surface where they are" $
-    property $ withMaxSuccess 200 $ forAll (elements catalogue) $ \s ->
+    property $ withMaxSuccess 200 $ forAllShow (elements catalogue) spaceName $ \s ->
       forAll (genSurfacePoint s) $ \p ->
         vecDist p (projectToSurface (spaceField s) p) <= 1e-12
 
@@ -88,7 +88,7 @@ genSphereStart = do
   pure (p, d)
 
 greatCircleSteps :: Int
-greatCircleSteps = round (2 * pi / 0.01) -- 628, step ≈ 0.01
+greatCircleSteps = round (2 * pi / 0.01 :: Double) -- 628, step ≈ 0.01
 
 -- | Walk a full great circle; returns (closure error |end − start|, error of
 -- the half-way point against the antipode, largest distance from the plane
