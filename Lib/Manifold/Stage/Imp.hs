@@ -24,7 +24,7 @@ module Manifold.Stage.Imp
   , NativeArray
     -- * Staged
   , Staged
-  , StagedArray
+  , StagedArray (..)
   , IxE
   , JsProcedure (..)
   , stageProcedure
@@ -53,6 +53,9 @@ class (Monad m, Field (Scalar m), Num (Index m)) => Imp m where
   writeArray :: Array m -> Index m -> Scalar m -> m ()
   -- | Compute a value once here and refer to it by name afterwards.
   share :: Scalar m -> m (Scalar m)
+  -- | 'share' several values at once, so what they have in common is
+  -- computed once too.
+  shareAll :: Traversable t => t (Scalar m) -> m (t (Scalar m))
   newRef :: Scalar m -> m (Ref m)
   readRef :: Ref m -> m (Scalar m)
   writeRef :: Ref m -> Scalar m -> m ()
@@ -95,6 +98,7 @@ instance Imp Native where
   writeArray a i x = Native (MV.write a i x)
   {-# INLINE writeArray #-}
   share = pure
+  shareAll = pure
   newRef = Native . newIORef
   readRef = Native . readIORef
   writeRef r !x = Native (writeIORef r x)
@@ -139,6 +143,16 @@ expression e = do
   Staged (put s { ssNext = next', ssScope = scope' })
   mapM_ (\(n, rhs) -> emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")) bs
   pure r
+
+-- | Print the bindings several expressions need together (what they share is
+-- bound once).
+expressions :: [E] -> Staged [String]
+expressions es = do
+  s <- Staged get
+  let Lowered bs rs scope' next' = lower JavaScript "t" (ssNext s) (ssScope s) es
+  Staged (put s { ssNext = next', ssScope = scope' })
+  mapM_ (\(n, rhs) -> emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")) bs
+  pure rs
 
 fresh :: String -> Staged String
 fresh prefix = Staged $ state $ \s -> (prefix ++ show (ssNext s), s { ssNext = ssNext s + 1 })
@@ -197,6 +211,9 @@ instance Imp Staged where
     x' <- expression x
     emitLine (a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
   share = bindAs "s"
+  shareAll xs = do
+    _ <- expressions (foldr (:) [] xs)
+    traverse (bindAs "s") xs
   newRef x = do
     x' <- expression x
     v <- fresh "v"

@@ -22,7 +22,14 @@ import Manifold.AD (gaussianCurvature)
 import Manifold.Space
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
+import Manifold.Body (PolygonParams (..))
+import Manifold.Engine (engineProcedures)
 import Manifold.Surface (fieldGradient)
+import Manifold.World (Layout (..), layout, scalarSlots)
+
+-- | The polygon parameters of the page's engine (capacity is the page's).
+engineLayout :: Layout
+engineLayout = layout 0
 
 -- | The first line of every generated file: 'Manifold.Build' refuses to
 -- overwrite a file that does not start with it.
@@ -56,7 +63,7 @@ spaceScriptFile s = "space-" ++ spaceName s ++ ".js"
 
 -- | A classic script registering the space on @Manifold.spaces[NAME]@.
 spaceScript :: Space -> String
-spaceScript s = unlines
+spaceScript s = let pp = polygon engineLayout in unlines
   [ generatedMarker ++ " from Lib/Manifold/Spaces.hs (space " ++ show (spaceName s) ++ "). Do not edit."
   , "(function (Manifold) {"
   , "\"use strict\";"
@@ -67,6 +74,7 @@ spaceScript s = unlines
       Just _ -> printFunction JavaScript "boundary" xyz [evalBoundary s pointSyms]
   , printFunction JavaScript "gravity" xyz (v3 (evalGravity s pointSyms))
   , printFunction JavaScript "curvature" xyz [gaussianCurvature (spaceField s) pointSyms]
+  , unlines (engineProcedures s engineLayout)
   , "Manifold.spaces[" ++ jsString (spaceName s) ++ "] = {"
   , "  name: " ++ jsString (spaceName s) ++ ","
   , "  description: " ++ jsString (spaceDescription s) ++ ","
@@ -79,6 +87,8 @@ spaceScript s = unlines
   , "  bounds: " ++ num (spaceBounds s) ++ ","
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
+  , "  engine: { directions: " ++ show (polyDirections pp) ++ ", steps: " ++ show (polySteps pp)
+    ++ ", scalarSlots: " ++ show scalarSlots ++ ", stepFree: stepFree, polygonise: polygonise },"
   , "  glsl: " ++ jsString (spaceGlsl s)
   , "};"
   , "})(globalThis.Manifold = globalThis.Manifold || { spaces: {} });"
