@@ -10,6 +10,7 @@ module Manifold.Surface
   , distanceEstimate
   , projectToSurface
   , projectToSurfaceWith
+  , projectAlong
   , defaultProjectionIterations
   , projectionTolerance
   , tangentProjection
@@ -89,12 +90,36 @@ transport sf p' v =
       w = tangentProjection n v
   in norm v *^ safeNormalize w
 
--- | One step of a geodesic: move along the velocity for time @h@, pull back
--- onto the surface, carry the velocity along.
+-- | Pull a point back onto the surface along a fixed direction @n@ (Newton
+-- on @λ ↦ f(q + λn)@). Moving along the normal of the point a step started
+-- from is what makes 'geodesicStep' the RATTLE scheme for a particle held on
+-- @f = 0@: second order, and it conserves the angular momentum that a
+-- symmetry of the surface gives (Clairaut's relation on a surface of
+-- revolution). Where @∇f · n@ vanishes the point is left where it is.
+projectAlong :: forall a. Field a => ScalarFn -> V3 a -> V3 a -> V3 a
+projectAlong sf@(ScalarFn f) n = go defaultProjectionIterations
+  where
+    go :: Int -> V3 a -> V3 a
+    go 0 q = q
+    go k q =
+      let v = f q
+          slope = fieldGradient sf q `dot` n
+          moving = select (abs v - constant projectionTolerance) (select (abs slope) 1 0) 0
+          lambda = select (abs slope) (v / slope) 0
+      in go (k - 1) (q ^-^ (lambda * moving) *^ n)
+
+-- | One step of a geodesic (RATTLE): move along the velocity for time @h@,
+-- pull back onto the surface along the normal where the step began, take
+-- the step's mean velocity, project it onto the new tangent plane and give it
+-- back the speed it had. A step of length 0 changes nothing.
 geodesicStep :: Field a => ScalarFn -> a -> (V3 a, V3 a) -> (V3 a, V3 a)
 geodesicStep sf h (p, v) =
-  let p' = projectToSurface sf (p ^+^ h *^ v)
-  in (p', transport sf p' v)
+  let n = unitNormal sf p
+      p' = projectAlong sf n (p ^+^ h *^ v)
+      mean = select (abs h) (recip h) 0 *^ (p' ^-^ p)
+      n' = unitNormal sf p'
+      v' = norm v *^ safeNormalize (tangentProjection n' mean)
+  in (select (abs h) 1 0 *^ p' ^+^ select (abs h) 0 1 *^ p, select (abs h) 1 0 *^ v' ^+^ select (abs h) 0 1 *^ v)
 
 -- | The exponential map: walk a geodesic of the given length from a point in
 -- a tangent direction (normalised here), in @n@ equal steps. Returns the end

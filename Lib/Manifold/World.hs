@@ -23,10 +23,8 @@ module Manifold.World
   , stepFree
   , polygoniseAll
   , outlineRadiiInto
-  , polygonProjectionIterations
   ) where
 
-import Linear.Metric (dot)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^+^))
 
@@ -101,11 +99,6 @@ writeSlot w i s = writeArray (wScalars w) (slot w i s)
 finiteness :: Field a => [a] -> a
 finiteness xs = 1 - abs (sum [x - x | x <- xs])
 
--- | Newton steps per projection while walking a polygon: each step starts on
--- the surface and moves a fraction of the body's size, so few are needed.
-polygonProjectionIterations :: Int
-polygonProjectionIterations = 3
-
 -- | Free motion for one time step, for every body.
 stepFree :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> Scalar m -> m ()
 stepFree sp w dt gravityOn = do
@@ -123,14 +116,12 @@ stepFree sp w dt gravityOn = do
         movable = select invMass 1 0
         v1 = v ^+^ (dt * gravityOn * movable) *^ gravity
     v1' <- share3 v1
-    p' <- share3 (projectToSurface f (p ^+^ dt *^ v1'))
+    let (p1, v2) = geodesicStep f dt (p, v1')
+    p' <- share3 p1
     n' <- share3 (unitNormal f p')
-    let speed2 = v1' `dot` v1'
-        v' = transport' n' v1' speed2
-        axis' = safeNormalize (tangentProjection n' axis)
-        angle' = angle + dt * omega
-    v'' <- share3 v'
-    axis'' <- share3 axis'
+    v'' <- share3 v2
+    axis'' <- share3 (safeNormalize (tangentProjection n' axis))
+    let angle' = angle + dt * omega
     let ok = finiteness (concatMap toList3 [p', v'', axis'', n'] ++ [angle'])
     ifPositive ok
       (do write3 (wPos w) i p'
@@ -141,9 +132,6 @@ stepFree sp w dt gravityOn = do
       (do warnings <- readArray (wMeta w) 1
           writeArray (wMeta w) 1 (warnings + 1))
   where
-    transport' n vec speed2 =
-      let t = tangentProjection n vec
-      in sqrt speed2 *^ safeNormalize t
     toList3 (V3 a b c) = [a, b, c]
 
 -- | The outline radius of a shape in each polygon direction, scaled by size,
@@ -179,8 +167,9 @@ polygoniseAll sp l w = do
       h <- share (r / fromIntegral ns)
       let walk 0 _ _ = pure ()
           walk k q dir = do
-            q' <- share3 (projectToSurfaceWith polygonProjectionIterations f (q ^+^ h *^ dir))
-            dir' <- share3 (safeNormalize (tangentProjection (unitNormal f q') dir))
+            let (q1, dir1) = geodesicStep f h (q, dir)
+            q' <- share3 q1
+            dir' <- share3 dir1
             write3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + fromIntegral (ns - k)) q'
             walk (k - 1 :: Int) q' dir'
       walk ns p (c *^ u ^+^ s *^ v)

@@ -1,0 +1,119 @@
+{-# LANGUAGE OverloadedStrings #-}
+-- | The engine's free motion: physical oracles natively, and the emitted
+-- JavaScript against the native run.
+module EngineSpec (spec) where
+
+import Control.Monad (forM, forM_, replicateM_)
+import qualified Data.Aeson as A
+import qualified Data.ByteString.Lazy.Char8 as BL
+import qualified Data.Vector.Unboxed as V
+import Linear.Metric (quadrance)
+import Linear.V3 (V3 (..))
+import System.Directory (getTemporaryDirectory, removeFile)
+import System.IO (hClose, hPutStr, openTempFile)
+import System.Process (readProcess)
+import Test.Hspec
+
+import Manifold
+import Manifold.Engine
+import Manifold.Stage.Kernels (spaceScript)
+import Manifold.World
+import Manifold.Stage.Imp (NativeArray)
+
+-- | A few bodies from the space's default scene, moving.
+sceneWorld :: Space -> IO NativeWorld
+sceneWorld sp = do
+  w <- newWorld sp (layout 32)
+  forM_ (zip [0 :: Int ..] (spaceScene sp)) $ \(k, pl) -> do
+    let v = V3 (0.7 * sin (fromIntegral k)) 0.4 (0.7 * cos (fromIntegral k))
+    r <- addBody w (BodyInit (shapeFromKind (placeShape pl)) (placeSize pl) 1 False (placeAt pl) v 0.3 (0.5 - fromIntegral k * 0.2))
+    either (expectationFailure . (("addBody in " ++ spaceName sp ++ ": ") ++)) (const (pure ())) r
+  pure w
+
+freeze :: NativeArray -> IO [Double]
+freeze a = V.toList <$> V.freeze a
+
+arraysJson :: NativeWorld -> IO A.Value
+arraysJson w = do
+  let a = nwArrays w
+      n = arrayNames
+  fields <- forM [(wMeta n, wMeta a), (wPos n, wPos a), (wVel n, wVel a), (wAxis n, wAxis a), (wNormal n, wNormal a)
+                 , (wScalars n, wScalars a), (wRadii n, wRadii a), (wVerts n, wVerts a)] $ \(name, arr) -> do
+    xs <- freeze arr
+    pure (name, xs)
+  pure (A.toJSON (map snd fields))
+
+-- | Run the space's emitted engine in node from the given arrays.
+runInNode :: Space -> A.Value -> Int -> Double -> Bool -> IO [[Double]]
+runInNode sp initial steps dt gravity = do
+  tmp <- getTemporaryDirectory
+  (path, h) <- openTempFile tmp "engine.js"
+  hPutStr h $ unlines
+    [ spaceScript sp
+    , "const e = Manifold.spaces[" ++ show (spaceName sp) ++ "].engine;"
+    , "const a = " ++ BL.unpack (A.encode initial) ++ ".map(xs => Float64Array.from(xs));"
+    , "for (let k = 0; k < " ++ show steps ++ "; k++) {"
+    , "  e.stepFree(...a, " ++ show dt ++ ", " ++ (if gravity then "1" else "0") ++ ");"
+    , "  e.polygonise(...a);"
+    , "}"
+    , "process.stdout.write(JSON.stringify(a.map(x => Array.from(x))));"
+    ]
+  hClose h
+  out <- readProcess "node" [path] ""
+  removeFile path
+  maybe (fail ("node printed no JSON: " ++ take 300 out)) pure (A.decode (BL.pack out))
+
+maxDiff :: [Double] -> [Double] -> Double
+maxDiff xs ys = maximum (0 : zipWith (\x y -> abs (x - y)) xs ys)
+
+spec :: Spec
+spec = describe "Engine: free motion" $ do
+  it "keeps a free body's kinetic energy on the torus (no gravity) within 0.1 % over 10 000 steps" $ do
+    w <- newWorld torus (layout 4)
+    Right i <- addBody w (BodyInit square 0.2 1 False (V3 1.3 0 0) (V3 0 1 1) 0 0.5)
+    b0 <- readBody w i
+    replicateM_ 10000 (stepNative w 0.01 False)
+    b1 <- readBody w i
+    let drift = abs (quadrance (bsVel b1) / quadrance (bsVel b0) - 1)
+    putStrLn ("    kinetic energy drift over 10000 steps: " ++ show drift)
+    drift `shouldSatisfy` (< 1e-3)
+    abs (evalField torus (bsPos b1)) `shouldSatisfy` (< 1e-9)
+
+  it "keeps every body on the surface (|f| < 1e-6) for 1000 steps with gravity, on every space" $
+    forM_ catalogue $ \sp -> do
+      w <- sceneWorld sp
+      replicateM_ 1000 (stepNative w 0.01 True)
+      n <- bodyCount w
+      fs <- forM [0 .. n - 1] $ \i -> abs . evalField sp . bsPos <$> readBody w i
+      (spaceName sp, maximum (0 : fs) < 1e-6) `shouldBe` (spaceName sp, True)
+
+  it "leaves a body whose step would be non-finite where it was, and counts a warning" $ do
+    w <- newWorld sphere (layout 4)
+    Right i <- addBody w (BodyInit circle 0.1 1 False (V3 0 0 1) (V3 1e300 1e300 0) 0 0)
+    before <- readBody w i
+    stepNative w 0.01 False
+    after <- readBody w i
+    bsPos after `shouldBe` bsPos before
+    warningCount w `shouldReturn` 1
+
+  it "caches polygons that match Manifold.Body.polygonise (1e-8) and lie on the surface" $ do
+    w <- sceneWorld sphere
+    b <- readBody w 0
+    verts <- freeze (wVerts (nwArrays w))
+    let l = layout 32
+        poly = polygonise (spaceField sphere) (polygon l) square 0.2 (bsPos b) (bsAxis b) (bsAngle b)
+        expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
+    maxDiff (take (length expected) verts) expected `shouldSatisfy` (< 1e-8)
+
+  it "runs the same as the emitted JavaScript under node: 200 steps, every space, positions within 1e-9" $
+    forM_ catalogue $ \sp -> do
+      w <- sceneWorld sp
+      initial <- arraysJson w
+      replicateM_ 200 (stepNative w 0.01 True)
+      js <- runInNode sp initial 200 0.01 True
+      let a = nwArrays w
+      pos <- freeze (wPos a)
+      vel <- freeze (wVel a)
+      verts <- freeze (wVerts a)
+      let d = maximum [maxDiff pos (js !! 1), maxDiff vel (js !! 2), maxDiff verts (js !! 7)]
+      (spaceName sp, d < 1e-9) `shouldBe` (spaceName sp, True)
