@@ -4,6 +4,7 @@
 module EngineSpec (spec) where
 
 import Control.Monad (forM, forM_, replicateM_)
+import Data.Foldable (toList)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
 import qualified Data.Vector.Unboxed as V
@@ -36,16 +37,12 @@ freeze a = V.toList <$> V.freeze a
 arraysJson :: NativeWorld -> IO A.Value
 arraysJson w = do
   let a = nwArrays w
-      n = arrayNames
-  fields <- forM [(wMeta n, wMeta a), (wPos n, wPos a), (wVel n, wVel a), (wAxis n, wAxis a), (wNormal n, wNormal a)
-                 , (wScalars n, wScalars a), (wRadii n, wRadii a), (wVerts n, wVerts a)] $ \(name, arr) -> do
-    xs <- freeze arr
-    pure (name, xs)
-  pure (A.toJSON (map snd fields))
+  fields <- mapM freeze (toList a)
+  pure (A.toJSON fields)
 
 -- | Run the space's emitted engine in node from the given arrays.
-runInNode :: Space -> A.Value -> Int -> Double -> Bool -> IO [[Double]]
-runInNode sp initial steps dt gravity = do
+runInNode :: Space -> A.Value -> Int -> IO [[Double]]
+runInNode sp initial steps = do
   tmp <- getTemporaryDirectory
   (path, h) <- openTempFile tmp "engine.js"
   hPutStr h $ unlines
@@ -53,8 +50,7 @@ runInNode sp initial steps dt gravity = do
     , "const e = Manifold.spaces[" ++ show (spaceName sp) ++ "].engine;"
     , "const a = " ++ BL.unpack (A.encode initial) ++ ".map(xs => Float64Array.from(xs));"
     , "for (let k = 0; k < " ++ show steps ++ "; k++) {"
-    , "  e.stepFree(...a, " ++ show dt ++ ", " ++ (if gravity then "1" else "0") ++ ");"
-    , "  e.polygonise(...a);"
+    , "  e.step(...a);"
     , "}"
     , "process.stdout.write(JSON.stringify(a.map(x => Array.from(x))));"
     ]
@@ -70,9 +66,10 @@ spec :: Spec
 spec = describe "Engine: free motion" $ do
   it "keeps a free body's kinetic energy on the torus (no gravity) within 0.1 % over 10 000 steps" $ do
     w <- newWorld torus (layout 4)
+    setParams w defaultParams { pGravity = False }
     Right i <- addBody w (BodyInit square 0.2 1 False (V3 1.3 0 0) (V3 0 1 1) 0 0.5)
     b0 <- readBody w i
-    replicateM_ 10000 (stepNative w 0.01 False)
+    replicateM_ 10000 (stepNative w)
     b1 <- readBody w i
     let drift = abs (quadrance (bsVel b1) / quadrance (bsVel b0) - 1)
     putStrLn ("    kinetic energy drift over 10000 steps: " ++ show drift)
@@ -82,16 +79,17 @@ spec = describe "Engine: free motion" $ do
   it "keeps every body on the surface (|f| < 1e-6) for 1000 steps with gravity, on every space" $
     forM_ catalogue $ \sp -> do
       w <- sceneWorld sp
-      replicateM_ 1000 (stepNative w 0.01 True)
+      replicateM_ 1000 (stepNative w)
       n <- bodyCount w
       fs <- forM [0 .. n - 1] $ \i -> abs . evalField sp . bsPos <$> readBody w i
       (spaceName sp, maximum (0 : fs) < 1e-6) `shouldBe` (spaceName sp, True)
 
   it "leaves a body whose step would be non-finite where it was, and counts a warning" $ do
     w <- newWorld sphere (layout 4)
+    setParams w defaultParams { pGravity = False }
     Right i <- addBody w (BodyInit circle 0.1 1 False (V3 0 0 1) (V3 1e300 1e300 0) 0 0)
     before <- readBody w i
-    stepNative w 0.01 False
+    stepNative w
     after <- readBody w i
     bsPos after `shouldBe` bsPos before
     warningCount w `shouldReturn` 1
@@ -109,11 +107,11 @@ spec = describe "Engine: free motion" $ do
     forM_ catalogue $ \sp -> do
       w <- sceneWorld sp
       initial <- arraysJson w
-      replicateM_ 200 (stepNative w 0.01 True)
-      js <- runInNode sp initial 200 0.01 True
+      replicateM_ 200 (stepNative w)
+      js <- runInNode sp initial 200
       let a = nwArrays w
       pos <- freeze (wPos a)
       vel <- freeze (wVel a)
       verts <- freeze (wVerts a)
-      let d = maximum [maxDiff pos (js !! 1), maxDiff vel (js !! 2), maxDiff verts (js !! 7)]
+      let d = maximum [maxDiff pos (js !! 2), maxDiff vel (js !! 3), maxDiff verts (js !! 8)]
       (spaceName sp, d < 1e-9) `shouldBe` (spaceName sp, True)

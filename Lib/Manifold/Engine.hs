@@ -6,6 +6,10 @@ module Manifold.Engine
   , newWorld
   , addBody
   , stepNative
+  , Params (..)
+  , defaultParams
+  , setParams
+  , contactCount
   , bodyCount
   , warningCount
   , readBody
@@ -23,7 +27,9 @@ import Manifold.Body
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface
+import Manifold.Step (step)
 import Manifold.World
+import Data.Foldable (toList)
 
 data NativeWorld = NativeWorld
   { nwSpace :: Space
@@ -35,9 +41,41 @@ newWorld :: Space -> Layout -> IO NativeWorld
 newWorld sp l = do
   let s = arraySizes l
       alloc n = MV.replicate n 0
-  arrays <- WorldArrays <$> alloc (wMeta s) <*> alloc (wPos s) <*> alloc (wVel s) <*> alloc (wAxis s)
-                        <*> alloc (wNormal s) <*> alloc (wScalars s) <*> alloc (wRadii s) <*> alloc (wVerts s)
-  pure (NativeWorld sp l arrays)
+  arrays <- traverse alloc s
+  let w = NativeWorld sp l arrays
+  setParams w defaultParams
+  pure w
+
+-- | The engine's parameters.
+data Params = Params
+  { pDt :: Double
+  , pGravity :: Bool
+  , pIterations :: Int
+  , pFriction :: Double
+  , pRestitution :: Double
+  , pBaumgarte :: Double -- ^ fraction of the depth removed per step (paper: 0.1)
+  , pSlop :: Double -- ^ depth allowed without correction
+  , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
+  } deriving (Show, Eq)
+
+defaultParams :: Params
+defaultParams = Params
+  { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
+  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5 }
+
+setParams :: NativeWorld -> Params -> IO ()
+setParams w p = do
+  let a = wParams (nwArrays w)
+      set :: Param -> Double -> IO ()
+      set k = MV.write a (fromEnum k)
+  set Dt (pDt p)
+  set GravityOn (if pGravity p then 1 else 0)
+  set Iterations (fromIntegral (pIterations p))
+  set Friction (pFriction p)
+  set Restitution (pRestitution p)
+  set Baumgarte (pBaumgarte p)
+  set Slop (pSlop p)
+  set BounceThreshold (pBounceThreshold p)
 
 -- | A body as a scene describes it.
 data BodyInit = BodyInit
@@ -51,11 +89,13 @@ data BodyInit = BodyInit
   , biOmega :: Double
   }
 
-bodyCount :: NativeWorld -> IO Int
-bodyCount w = truncate <$> MV.read (wMeta (nwArrays w)) 0
+metaValue :: Meta -> NativeWorld -> IO Int
+metaValue k w = truncate <$> MV.read (wMeta (nwArrays w)) (fromEnum k)
 
-warningCount :: NativeWorld -> IO Int
-warningCount w = truncate <$> MV.read (wMeta (nwArrays w)) 1
+bodyCount, warningCount, contactCount :: NativeWorld -> IO Int
+bodyCount = metaValue BodyCount
+warningCount = metaValue Warnings
+contactCount = metaValue ContactCount
 
 -- | Add a body: its centre is projected onto the surface, its velocity onto
 -- the tangent plane; its axis is the tangent direction nearest to x (or z).
@@ -93,15 +133,18 @@ addBody w b = do
     setSlot BoundRadius (biSize b)
     let Outline outline = shapeOutline (biShape b)
     runNative (outlineRadiiInto (nwLayout w) outline a i (biSize b))
-    MV.write (wMeta a) 0 (fromIntegral (i + 1))
+    MV.write (wMeta a) (fromEnum BodyCount) (fromIntegral (i + 1))
+    MV.write (wBodyPrev a) (2 * i + 1) 0
     runNative (polygoniseAll sp (nwLayout w) a)
     pure (Right i)
 
--- | One step of time @dt@.
-stepNative :: NativeWorld -> Double -> Bool -> IO ()
-stepNative w dt gravityOn = runNative $ do
-  stepFree (nwSpace w) (nwArrays w) dt (if gravityOn then 1 else 0)
-  polygoniseAll (nwSpace w) (nwLayout w) (nwArrays w)
+-- | One step of the world.
+stepNative :: NativeWorld -> IO ()
+stepNative w = runNative (stepN (nwSpace w) (nwLayout w) (nwArrays w))
+
+stepN :: Space -> Layout -> WorldArrays NativeArray -> Native ()
+stepN = step
+{-# NOINLINE stepN #-}
 
 data BodyState = BodyState
   { bsPos :: V3 Double
@@ -118,20 +161,17 @@ readBody w i = do
   BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> MV.read (wScalars a) (scalarSlots * i) <*> MV.read (wScalars a) (scalarSlots * i + 1) <*> r3 (wAxis a)
 
 stagedArrays :: WorldArrays StagedArray
-stagedArrays = let n = arrayNames in
-  WorldArrays (StagedArray (wMeta n)) (StagedArray (wPos n)) (StagedArray (wVel n)) (StagedArray (wAxis n))
-              (StagedArray (wNormal n)) (StagedArray (wScalars n)) (StagedArray (wRadii n)) (StagedArray (wVerts n))
+stagedArrays = fmap StagedArray arrayNames
 
 worldParams :: [String]
-worldParams = let n = arrayNames in [wMeta n, wPos n, wVel n, wAxis n, wNormal n, wScalars n, wRadii n, wVerts n]
+worldParams = toList arrayNames
 
--- | The engine's procedures for one space, as JavaScript functions.
+-- | The engine's procedures for one space, as JavaScript functions over the
+-- world's arrays.
 engineProcedures :: Space -> Layout -> [String]
 engineProcedures sp l =
-  [ stageProcedure (JsProcedure "stepFree" worldParams ["dt", "gravityOn"])
-      (\_ [dt, g] -> stepFree sp stagedArrays dt g)
-  , stageProcedure (JsProcedure "polygonise" worldParams [])
-      (\_ _ -> polygoniseAll sp l stagedArrays)
+  [ stageProcedure (JsProcedure "step" worldParams []) (\_ _ -> step sp l stagedArrays)
+  , stageProcedure (JsProcedure "polygonise" worldParams []) (\_ _ -> polygoniseAll sp l stagedArrays)
   ]
 
 engineScript :: Space -> Layout -> String

@@ -10,6 +10,7 @@
 module Manifold.Field
   ( Field (..)
   , clampF
+  , atan2F
   , smoothMinF
   , ScalarFn (..)
   , VectorFn (..)
@@ -49,6 +50,14 @@ instance Field Double where
 -- | @clampF lo hi x@.
 clampF :: Field a => a -> a -> a -> a
 clampF lo hi = maxF lo . minF hi
+
+-- | The angle of the point @(x, y)@, in @(−π, π]@, by half-angle formulas
+-- (so that it needs no comparison outside 'select'); 0 at the origin.
+atan2F :: Field a => a -> a -> a
+atan2F y x =
+  let r = sqrt (x * x + y * y)
+  in select x (2 * atan (y / (r + x)))
+       (select (abs y) (2 * atan ((r - x) / y)) (select (negate x) pi 0))
 
 -- | Polynomial smooth minimum with blend width @k@ (Quilez), used to round
 -- shapes such as the cube.

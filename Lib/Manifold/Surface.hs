@@ -90,6 +90,13 @@ transport sf p' v =
       w = tangentProjection n v
   in norm v *^ safeNormalize w
 
+-- | Newton steps when pulling back after a geodesic step: the point starts
+-- @O(h²)@ off the surface and Newton converges quadratically, so three reach
+-- rounding error for any step shorter than the surface's radius of
+-- curvature.
+stepProjectionIterations :: Int
+stepProjectionIterations = 3
+
 -- | Pull a point back onto the surface along a fixed direction @n@ (Newton
 -- on @λ ↦ f(q + λn)@). Moving along the normal of the point a step started
 -- from is what makes 'geodesicStep' the RATTLE scheme for a particle held on
@@ -97,7 +104,7 @@ transport sf p' v =
 -- symmetry of the surface gives (Clairaut's relation on a surface of
 -- revolution). Where @∇f · n@ vanishes the point is left where it is.
 projectAlong :: forall a. Field a => ScalarFn -> V3 a -> V3 a -> V3 a
-projectAlong sf@(ScalarFn f) n = go defaultProjectionIterations
+projectAlong sf@(ScalarFn f) n = go stepProjectionIterations
   where
     go :: Int -> V3 a -> V3 a
     go 0 q = q

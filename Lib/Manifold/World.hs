@@ -1,4 +1,4 @@
-{-# LANGUAGE FlexibleContexts #-}
+{-# LANGUAGE FlexibleContexts, DeriveTraversable #-}
 -- | The world and its step, written once against the imperative layer: GHC
 -- runs it natively over unboxed vectors, and the staging layer prints it as
 -- the page's JavaScript.
@@ -18,14 +18,45 @@ module Manifold.World
   , arraySizes
   , arrayNames
   , Slot (..)
+  , Meta (..)
+  , Param (..)
+  , ContactField (..)
+  , MouseField (..)
   , scalarSlots
+  , contactStride
+  , prevStride
+  , contactsPerBody
+  , maxContacts
+  , maxGridDim
   , verticesPerBody
-  , stepFree
+    -- * Access
+  , read3
+  , write3
+  , share3
+  , readSlot
+  , writeSlot
+  , readMeta
+  , writeMeta
+  , readParam
+  , readContact
+  , writeContact
+  , readContact3
+  , writeContact3
+  , readMouse
+  , writeMouse
+  , outlineVertex
+  , bodyFrame
+  , BodyFrame (..)
+  , finiteness
+  , countWarning
+    -- * Motion
+  , applyGravity
+  , integrate
   , polygoniseAll
   , outlineRadiiInto
   ) where
 
-import Linear.V3 (V3 (..))
+import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^))
 
 import Manifold.Body (PolygonParams (..))
@@ -36,15 +67,23 @@ import Manifold.Surface
 
 -- | The world's arrays, one record for every interpretation.
 data WorldArrays a = WorldArrays
-  { wMeta :: a -- ^ [body count, warnings]
+  { wMeta :: a -- ^ see 'Meta'
+  , wParams :: a -- ^ see 'Param'
   , wPos :: a -- ^ 3 per body
   , wVel :: a -- ^ 3 per body
   , wAxis :: a -- ^ 3 per body, a unit tangent vector
   , wNormal :: a -- ^ 3 per body, the unit surface normal at the centre
-  , wScalars :: a -- ^ 'scalarSlots' per body: angle, ω, 1/m, 1/I, size, bounding radius
+  , wScalars :: a -- ^ 'scalarSlots' per body, see 'Slot'
   , wRadii :: a -- ^ directions per body: the outline's radius in each polygon direction
   , wVerts :: a -- ^ 3 × vertices per body: the cached polygon
-  }
+  , wGrid :: a -- ^ broad phase: per cell a count, then per cell a start
+  , wCellOf :: a -- ^ broad phase: each body's cell
+  , wItems :: a -- ^ broad phase: bodies sorted by cell
+  , wContacts :: a -- ^ 'contactStride' per contact, see 'ContactField'
+  , wPrev :: a -- ^ the last step's contacts for warm starting: owner, key, normal and friction impulse
+  , wBodyPrev :: a -- ^ per body: where its contacts start in 'wPrev', and how many
+  , wMouse :: a -- ^ see 'MouseField'
+  } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
 data Layout = Layout
@@ -55,26 +94,75 @@ data Layout = Layout
 layout :: Int -> Layout
 layout cap = Layout cap (PolygonParams 24 4)
 
+-- | Per body.
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
   deriving (Show, Eq, Enum, Bounded)
 
-scalarSlots :: Int
-scalarSlots = fromEnum (maxBound :: Slot) + 1
+-- | The world's counters.
+data Meta = BodyCount | Warnings | ContactCount | PrevContactCount | GridDim | CellSize | DroppedContacts
+  deriving (Show, Eq, Enum, Bounded)
+
+-- | The engine's parameters, set by the scene (and the page's controls).
+data Param = Dt | GravityOn | Iterations | Friction | Restitution | Baumgarte | Slop | BounceThreshold
+  deriving (Show, Eq, Enum, Bounded)
+
+-- | One contact row pair (normal and friction) of the solver. The first body
+-- (@a@) is pushed along the direction, the second (@b@, or none) against it.
+data ContactField
+  = CA | CB | COwner | CKey
+  | JaX | JaY | JaZ | JaW | JbX | JbY | JbZ | JbW
+  | TaX | TaY | TaZ | TaW | TbX | TbY | TbZ | TbW
+  | CDepth | NormalMass | TangentMass | CBias | ImpulseN | ImpulseT | CSelfScale
+  | PointX | PointY | PointZ
+  deriving (Show, Eq, Enum, Bounded)
+
+-- | The mouse joint.
+data MouseField = MActive | MBody | MLocalR | MLocalTheta | MTargetX | MTargetY | MTargetZ
+  | MFrequency | MDamping | MMaxForce | MImpulseU | MImpulseW
+  deriving (Show, Eq, Enum, Bounded)
+
+count' :: forall e. (Enum e, Bounded e) => e -> Int
+count' _ = fromEnum (maxBound :: e) + 1
+
+scalarSlots, contactStride, prevStride :: Int
+scalarSlots = count' Angle
+contactStride = count' CA
+prevStride = 4
+
+-- | Contacts a body may own (pairs it leads, its boundary contacts).
+contactsPerBody :: Int
+contactsPerBody = 8
+
+-- | The broad phase's grid has at most this many cells along each axis.
+maxGridDim :: Int
+maxGridDim = 32
 
 verticesPerBody :: Layout -> Int
 verticesPerBody l = 1 + polyDirections (polygon l) * polySteps (polygon l)
 
+maxContacts :: Layout -> Int
+maxContacts l = contactsPerBody * max 1 (capacity l)
+
 arraySizes :: Layout -> WorldArrays Int
-arraySizes l = let c = capacity l in WorldArrays
-  { wMeta = 2
+arraySizes l = let c = max 1 (capacity l) in WorldArrays
+  { wMeta = count' BodyCount
+  , wParams = count' Dt
   , wPos = 3 * c, wVel = 3 * c, wAxis = 3 * c, wNormal = 3 * c
   , wScalars = scalarSlots * c
   , wRadii = polyDirections (polygon l) * c
   , wVerts = 3 * verticesPerBody l * c
+  , wGrid = 2 * maxGridDim ^ (3 :: Int)
+  , wCellOf = c
+  , wItems = c
+  , wContacts = contactStride * maxContacts l
+  , wPrev = prevStride * maxContacts l
+  , wBodyPrev = 2 * c
+  , wMouse = count' MActive
   }
 
 arrayNames :: WorldArrays String
-arrayNames = WorldArrays "meta" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
+arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
+  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 read3 a i = V3 <$> readArray a (3 * i) <*> readArray a (3 * i + 1) <*> readArray a (3 * i + 2)
@@ -85,24 +173,106 @@ write3 a i (V3 x y z) = writeArray a (3 * i) x >> writeArray a (3 * i + 1) y >> 
 share3 :: Imp m => V3 (Scalar m) -> m (V3 (Scalar m))
 share3 = shareAll
 
-slot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> Index m
-slot _ i s = fromIntegral scalarSlots * i + fromIntegral (fromEnum s)
+ix :: (Imp m, Enum e) => e -> Index m
+ix = fromIntegral . fromEnum
 
 readSlot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> m (Scalar m)
-readSlot w i s = readArray (wScalars w) (slot w i s)
+readSlot w i s = readArray (wScalars w) (fromIntegral scalarSlots * i + ix s)
 
 writeSlot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> Scalar m -> m ()
-writeSlot w i s = writeArray (wScalars w) (slot w i s)
+writeSlot w i s = writeArray (wScalars w) (fromIntegral scalarSlots * i + ix s)
+
+readMeta :: Imp m => WorldArrays (Array m) -> Meta -> m (Scalar m)
+readMeta w k = readArray (wMeta w) (ix k)
+
+writeMeta :: Imp m => WorldArrays (Array m) -> Meta -> Scalar m -> m ()
+writeMeta w k = writeArray (wMeta w) (ix k)
+
+readParam :: Imp m => WorldArrays (Array m) -> Param -> m (Scalar m)
+readParam w k = readArray (wParams w) (ix k)
+
+readContact :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (Scalar m)
+readContact w c k = readArray (wContacts w) (fromIntegral contactStride * c + ix k)
+
+writeContact :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> Scalar m -> m ()
+writeContact w c k = writeArray (wContacts w) (fromIntegral contactStride * c + ix k)
+
+-- | Three consecutive fields starting at the given one.
+readContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (V3 (Scalar m))
+readContact3 w c k = let o = fromIntegral contactStride * c + ix k in
+  V3 <$> readArray (wContacts w) o <*> readArray (wContacts w) (o + 1) <*> readArray (wContacts w) (o + 2)
+
+writeContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> V3 (Scalar m) -> m ()
+writeContact3 w c k (V3 x y z) = do
+  let o = fromIntegral contactStride * c + ix k
+  writeArray (wContacts w) o x >> writeArray (wContacts w) (o + 1) y >> writeArray (wContacts w) (o + 2) z
+
+readMouse :: Imp m => WorldArrays (Array m) -> MouseField -> m (Scalar m)
+readMouse w k = readArray (wMouse w) (ix k)
+
+writeMouse :: Imp m => WorldArrays (Array m) -> MouseField -> Scalar m -> m ()
+writeMouse w k = writeArray (wMouse w) (ix k)
+
+-- | Outline vertex @d@ (the last step along direction @d@) of body @i@.
+outlineVertex :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m -> m (V3 (Scalar m))
+outlineVertex l w i d =
+  let ns = fromIntegral (polySteps (polygon l))
+  in read3 (wVerts w) (fromIntegral (verticesPerBody l) * i + 1 + d * ns + (ns - 1))
+
+-- | What the narrow phase needs of a body.
+data BodyFrame s = BodyFrame
+  { bfCentre :: V3 s
+  , bfNormal :: V3 s
+  , bfU :: V3 s -- ^ the axis
+  , bfW :: V3 s -- ^ normal × axis
+  , bfAngle :: s
+  , bfSize :: s
+  , bfInvMass :: s
+  , bfInvInertia :: s
+  }
+
+bodyFrame :: Imp m => WorldArrays (Array m) -> Index m -> m (BodyFrame (Scalar m))
+bodyFrame w i = do
+  c <- read3 (wPos w) i
+  n <- read3 (wNormal w) i
+  u <- read3 (wAxis w) i
+  wv <- share3 (n `cross` u)
+  BodyFrame c n u wv <$> readSlot w i Angle <*> readSlot w i BoundRadius
+    <*> readSlot w i InvMass <*> readSlot w i InvInertia
 
 -- | 1 where every value is finite, otherwise a non-positive number or NaN:
 -- @x − x@ is 0 exactly when @x@ is finite.
 finiteness :: Field a => [a] -> a
 finiteness xs = 1 - abs (sum [x - x | x <- xs])
 
--- | Free motion for one time step, for every body.
-stepFree :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> Scalar m -> m ()
-stepFree sp w dt gravityOn = do
-  count <- readArray (wMeta w) 0
+countWarning :: Imp m => WorldArrays (Array m) -> m ()
+countWarning w = readMeta w Warnings >>= writeMeta w Warnings . (+ 1)
+
+-- | Gravity, projected to the tangent plane, for every movable body.
+applyGravity :: Imp m => Space -> WorldArrays (Array m) -> m ()
+applyGravity sp w = do
+  count <- readMeta w BodyCount
+  dt <- readParam w Dt
+  on <- readParam w GravityOn
+  forEach (toIndex count) $ \i -> do
+    invMass <- readSlot w i InvMass
+    whenPositive (invMass * on) $ do
+      p <- read3 (wPos w) i
+      v <- read3 (wVel w) i
+      n <- read3 (wNormal w) i
+      let g = tangentProjection n (evalGravity sp p)
+          v' = v ^+^ dt *^ g
+      ifPositive (finiteness (toList3 v')) (write3 (wVel w) i v') (countWarning w)
+
+-- | Move every body along its velocity for one step (paper §2.4, §4.1:
+-- @coord += veloc * dt@ for position and angle together): a geodesic step
+-- of the centre, the velocity and axis carried to the new tangent plane. A
+-- step that would produce a non-finite value leaves the body as it was and
+-- counts a warning.
+integrate :: Imp m => Space -> WorldArrays (Array m) -> m ()
+integrate sp w = do
+  count <- readMeta w BodyCount
+  dt <- readParam w Dt
   let f = spaceField sp
   forEach (toIndex count) $ \i -> do
     p <- read3 (wPos w) i
@@ -110,29 +280,23 @@ stepFree sp w dt gravityOn = do
     axis <- read3 (wAxis w) i
     angle <- readSlot w i Angle
     omega <- readSlot w i Omega
-    invMass <- readSlot w i InvMass
-    n <- share3 (unitNormal f p)
-    let gravity = tangentProjection n (evalGravity sp p)
-        movable = select invMass 1 0
-        v1 = v ^+^ (dt * gravityOn * movable) *^ gravity
-    v1' <- share3 v1
-    let (p1, v2) = geodesicStep f dt (p, v1')
+    let (p1, v1) = geodesicStep f dt (p, v)
     p' <- share3 p1
     n' <- share3 (unitNormal f p')
-    v'' <- share3 v2
-    axis'' <- share3 (safeNormalize (tangentProjection n' axis))
+    v' <- share3 v1
+    axis' <- share3 (safeNormalize (tangentProjection n' axis))
     let angle' = angle + dt * omega
-    let ok = finiteness (concatMap toList3 [p', v'', axis'', n'] ++ [angle'])
+        ok = finiteness (concatMap toList3 [p', v', axis', n'] ++ [angle'])
     ifPositive ok
       (do write3 (wPos w) i p'
-          write3 (wVel w) i v''
-          write3 (wAxis w) i axis''
+          write3 (wVel w) i v'
+          write3 (wAxis w) i axis'
           write3 (wNormal w) i n'
           writeSlot w i Angle angle')
-      (do warnings <- readArray (wMeta w) 1
-          writeArray (wMeta w) 1 (warnings + 1))
-  where
-    toList3 (V3 a b c) = [a, b, c]
+      (countWarning w)
+
+toList3 :: V3 a -> [a]
+toList3 (V3 a b c) = [a, b, c]
 
 -- | The outline radius of a shape in each polygon direction, scaled by size,
 -- for body @i@ (the page calls this when it adds a body).
@@ -143,10 +307,10 @@ outlineRadiiInto l outline w i size = do
     let theta = toScalar d * constant (2 * pi / fromIntegral nd)
     writeArray (wRadii w) (fromIntegral nd * i + d) (size * outline theta)
 
--- | Walk every body's geodesic polygon into the vertex cache.
+-- | Walk every body's geodesic polygon into the vertex cache (paper §3.4).
 polygoniseAll :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 polygoniseAll sp l w = do
-  count <- readArray (wMeta w) 0
+  count <- readMeta w BodyCount
   let f = spaceField sp
       pp = polygon l
       nd = polyDirections pp
@@ -158,7 +322,8 @@ polygoniseAll sp l w = do
     n <- read3 (wNormal w) i
     angle <- readSlot w i Angle
     write3 (wVerts w) (vpb * i) p
-    (u, v) <- (\(a, b) -> (,) <$> share3 a <*> share3 b) (tangentFrame n axis)
+    u <- share3 axis
+    v <- share3 (n `cross` axis)
     forEach (fromIntegral nd) $ \d -> do
       r <- readArray (wRadii w) (fromIntegral nd * i + d)
       let phi = angle + toScalar d * constant (2 * pi / fromIntegral nd)

@@ -88,7 +88,7 @@ spaceScript s = let pp = polygon engineLayout in unlines
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
   , "  engine: { directions: " ++ show (polyDirections pp) ++ ", steps: " ++ show (polySteps pp)
-    ++ ", scalarSlots: " ++ show scalarSlots ++ ", stepFree: stepFree, polygonise: polygonise },"
+    ++ ", scalarSlots: " ++ show scalarSlots ++ ", step: step, polygonise: polygonise },"
   , "  glsl: " ++ jsString (spaceGlsl s)
   , "};"
   , "})(globalThis.Manifold = globalThis.Manifold || { spaces: {} });"

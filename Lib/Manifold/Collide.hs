@@ -1,0 +1,298 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | Finding contacts (paper §2.5, §2.6, §3.4, §4.3): a uniform grid over R³
+-- for the broad phase, the geodesic polygons for the narrow phase, boundary
+-- contacts where an outline leaves @b(p) >= 0@, and, on quotient spaces,
+-- contacts with the other bodies' images and a body's own image.
+--
+-- A body's outline vertex @q@ is inside another body @Y@ when, in Y's tangent
+-- frame, it lies inside the star-shaped outline that Y's polygon makes there;
+-- the depth is its distance to the outline edge its direction crosses, and
+-- the direction that resolves the overlap over the shortest distance is that
+-- edge's outward normal. Of the vertices of one body inside another, the
+-- deepest gives the direction and the two extreme ones along the contact
+-- line become the contact points, so that a box resting on a box has two.
+module Manifold.Collide
+  ( collide
+  , buildGrid
+  , pointInBody
+  ) where
+
+import Linear.Metric (dot, norm)
+import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((*^), (^-^), (^+^), negated)
+
+import Manifold.AD (grad)
+import Manifold.Body (PolygonParams (..))
+import Manifold.Field
+import Manifold.Space
+import Manifold.Stage.Imp
+import Manifold.Surface (tangentProjection, safeNormalize)
+import Manifold.World
+
+-- | Sort the bodies into grid cells (a counting sort: no allocation).
+buildGrid :: Imp m => Space -> WorldArrays (Array m) -> m ()
+buildGrid sp w = do
+  count <- readMeta w BodyCount
+  let n = toIndex count
+      bound = constant (spaceBounds sp)
+  maxR <- newRef 0
+  forEach n $ \i -> do
+    r <- readSlot w i BoundRadius
+    modifyRef maxR (maxF r)
+  rmax <- readRef maxR
+  cell <- share (maxF (2 * rmax) (2 * bound / fromIntegral maxGridDim))
+  dim <- share (minF (fromIntegral maxGridDim) (floorF (2 * bound / cell) + 1))
+  writeMeta w GridDim dim
+  writeMeta w CellSize cell
+  let cells = toIndex (dim * dim * dim)
+      starts c = toIndex (dim * dim * dim) + c
+  forEach cells $ \c -> writeArray (wGrid w) c 0
+  forEach n $ \i -> do
+    p <- read3 (wPos w) i
+    c <- share (cellIndex bound cell dim p)
+    writeArray (wCellOf w) i c
+    k <- readArray (wGrid w) (toIndex c)
+    writeArray (wGrid w) (toIndex c) (k + 1)
+  running <- newRef 0
+  forEach cells $ \c -> do
+    k <- readArray (wGrid w) c
+    s <- readRef running
+    writeArray (wGrid w) (starts c) s
+    writeArray (wGrid w) c s -- the fill cursor; it ends at the cell's end
+    writeRef running (s + k)
+  forEach n $ \i -> do
+    c <- readArray (wCellOf w) i
+    k <- readArray (wGrid w) (toIndex c)
+    writeArray (wItems w) (toIndex k) (toScalar i)
+    writeArray (wGrid w) (toIndex c) (k + 1)
+
+cellCoord :: Field a => a -> a -> a -> a -> a
+cellCoord bound cell dim x = clampF 0 (dim - 1) (floorF ((x + bound) / cell))
+
+cellIndex :: Field a => a -> a -> a -> V3 a -> a
+cellIndex bound cell dim (V3 x y z) =
+  (cellCoord bound cell dim x * dim + cellCoord bound cell dim y) * dim + cellCoord bound cell dim z
+
+-- | Run @visit j@ for every body @j@ in the 27 cells around point @p@.
+neighbours :: Imp m => Space -> WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
+neighbours sp w p visit = do
+  let bound = constant (spaceBounds sp)
+  dim <- readMeta w GridDim
+  cell <- readMeta w CellSize
+  let V3 x y z = p
+  cx <- share (cellCoord bound cell dim x)
+  cy <- share (cellCoord bound cell dim y)
+  cz <- share (cellCoord bound cell dim z)
+  forEach 27 $ \k -> do
+    let kf = toScalar k
+        dx = floorF (kf / 9) - 1
+        dy = floorF (kf / 3) - 3 * floorF (kf / 9) - 1
+        dz = kf - 3 * floorF (kf / 3) - 1
+    nx <- share (cx + dx)
+    ny <- share (cy + dy)
+    nz <- share (cz + dz)
+    -- inside the grid: every coordinate in [0, dim)
+    let inside = minF (minF (minF nx ny) nz + 0.5) (dim - 0.5 - maxF (maxF nx ny) nz)
+    whenPositive inside $ do
+      c <- share ((nx * dim + ny) * dim + nz)
+      end <- readArray (wGrid w) (toIndex c)
+      start <- readArray (wGrid w) (toIndex (dim * dim * dim + c))
+      forLoop (toIndex start) (toIndex end) $ \s -> do
+        j <- readArray (wItems w) s
+        visit (toIndex j)
+
+-- | Whether a point (near the surface) is inside body @Y@'s polygon: the
+-- depth (positive inside) and the outward direction of the edge it is
+-- nearest along its direction from Y's centre. Points far off Y's tangent
+-- plane (on another sheet of the surface) are never inside.
+pointInBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m))
+pointInBody l w j y q = do
+  let nd = polyDirections (polygon l)
+      sector = constant (2 * pi / fromIntegral nd)
+      c = bfCentre y
+      d = q ^-^ c
+  qx <- share (d `dot` bfU y)
+  qy <- share (d `dot` bfW y)
+  h <- share (d `dot` bfNormal y)
+  let beta = atan2F qy qx - bfAngle y
+      turn = constant (2 * pi)
+      beta' = beta - turn * floorF (beta / turn)
+  k <- share (minF (fromIntegral (nd - 1)) (floorF (beta' / sector)))
+  let k1 = select (k - fromIntegral nd + 1.5) 0 (k + 1)
+  o0 <- outlineVertex l w j (toIndex k)
+  o1 <- outlineVertex l w j (toIndex k1)
+  let local o = let e = o ^-^ c in (e `dot` bfU y, e `dot` bfW y)
+      (ax, ay) = local o0
+      (bx, by) = local o1
+  ex <- share (bx - ax)
+  ey <- share (by - ay)
+  len <- share (sqrt (ex * ex + ey * ey))
+  let crossE = ex * (qy - ay) - ey * (qx - ax)
+      depth = select len (crossE / len) (-1)
+      -- off the tangent plane by more than the body's size: another sheet
+      onSheet = bfSize y - abs h
+      depth' = select onSheet depth (-1)
+      normal2 = select len (recip len) 0
+      m = (ey * normal2) *^ bfU y ^+^ (negate ex * normal2) *^ bfW y
+  depthS <- share depth'
+  m' <- share3 m
+  pure (depthS, m')
+
+-- | A contact row pair into the contact array: body @a@ at point @ra@ is
+-- pushed along @dirA@, body @b@ (if @b >= 0@) at @rb@ against @dirB@.
+emitContact :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
+            -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> m ()
+emitContact l w owner key a b ra dirA rb dirB depth selfScale = do
+  count <- readMeta w ContactCount
+  ifPositive (fromIntegral (maxContacts l) - count - 0.5)
+    (do let c = toIndex count
+        writeMeta w ContactCount (count + 1)
+        fa <- bodyFrame w a
+        let ta = bfNormal fa `cross` dirA
+            rA = ra ^-^ bfCentre fa
+        writeContact w c CA (toScalar a)
+        writeContact w c CB b
+        writeContact w c COwner (toScalar owner)
+        writeContact w c CKey key
+        writeContact3 w c JaX (tangentProjection (bfNormal fa) dirA)
+        writeContact w c JaW ((rA `cross` dirA) `dot` bfNormal fa)
+        writeContact3 w c TaX (tangentProjection (bfNormal fa) ta)
+        writeContact w c TaW ((rA `cross` ta) `dot` bfNormal fa)
+        writeContact w c CDepth depth
+        writeContact w c CSelfScale selfScale
+        writeContact3 w c PointX ra
+        ifPositive (b + 0.5)
+          (do fb <- bodyFrame w (toIndex b)
+              let tb = select (dirA `dot` dirB) 1 (-1) *^ ta
+                  rB = rb ^-^ bfCentre fb
+              writeContact3 w c JbX (tangentProjection (bfNormal fb) dirB)
+              writeContact w c JbW ((rB `cross` dirB) `dot` bfNormal fb)
+              writeContact3 w c TbX (tangentProjection (bfNormal fb) tb)
+              writeContact w c TbW ((rB `cross` tb) `dot` bfNormal fb))
+          (do writeContact3 w c JbX (V3 0 0 0)
+              writeContact w c JbW 0
+              writeContact3 w c TbX (V3 0 0 0)
+              writeContact w c TbW 0))
+    (readMeta w DroppedContacts >>= writeMeta w DroppedContacts . (+ 1))
+
+-- | The outline vertices of body @x@, mapped by @sgn@ (−1: the antipodal
+-- image), tested against body @y@; up to two contacts.
+vertexContacts :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
+               -> Index m -> Index m -> Scalar m -> Scalar m -> m ()
+vertexContacts l w owner keyBase x y sgn selfScale = do
+  let nd = fromIntegral (polyDirections (polygon l))
+  fy <- bodyFrame w y
+  deepest <- newRef 0
+  mx <- newRef 0
+  my <- newRef 0
+  mz <- newRef 0
+  forEach nd $ \d -> do
+    q <- outlineVertex l w x d
+    (depth, m) <- pointInBody l w y fy (sgn *^ q)
+    best <- readRef deepest
+    whenPositive (depth - best) $ do
+      writeRef deepest depth
+      let V3 a b c = m in writeRef mx a >> writeRef my b >> writeRef mz c
+  best <- readRef deepest
+  whenPositive best $ do
+    m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
+    t <- share3 (bfNormal fy `cross` m0)
+    lo <- newRef 1e300
+    hi <- newRef (-1e300)
+    loD <- newRef (-1)
+    hiD <- newRef (-1)
+    forEach nd $ \d -> do
+      q <- outlineVertex l w x d
+      (depth, _) <- pointInBody l w y fy (sgn *^ q)
+      whenPositive depth $ do
+        s <- share (((sgn *^ q) ^-^ bfCentre fy) `dot` t)
+        l0 <- readRef lo
+        whenPositive (l0 - s) (writeRef lo s >> writeRef loD (toScalar d))
+        h0 <- readRef hi
+        whenPositive (s - h0) (writeRef hi s >> writeRef hiD (toScalar d))
+    dLo <- readRef loD
+    dHi <- readRef hiD
+    let emitAt slot dv = do
+          q <- outlineVertex l w x (toIndex dv)
+          query <- share3 (sgn *^ q)
+          (depth, m) <- pointInBody l w y fy query
+          emitContact l w owner (keyBase + slot) x (toScalar y) q (sgn *^ m) query m depth selfScale
+    emitAt 0 dLo
+    whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
+
+-- | Where the outline of body @i@ leaves the allowed region @b >= 0@.
+boundaryContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+boundaryContacts sp l w i = case spaceBoundary sp of
+  Nothing -> pure ()
+  Just (ScalarFn b) -> do
+    let nd = fromIntegral (polyDirections (polygon l))
+        key = 8
+    n <- read3 (wNormal w) i
+    deepest <- newRef 0
+    dDeep <- newRef (-1)
+    forEach nd $ \d -> do
+      q <- outlineVertex l w i d
+      bv <- share (b q)
+      best <- readRef deepest
+      whenPositive (negate bv - best) (writeRef deepest (negate bv) >> writeRef dDeep (toScalar d))
+    best <- readRef deepest
+    whenPositive best $ do
+      dd <- readRef dDeep
+      q0 <- outlineVertex l w i (toIndex dd)
+      dir0 <- share3 (safeNormalize (grad b q0))
+      t <- share3 (n `cross` dir0)
+      lo <- newRef 1e300
+      hi <- newRef (-1e300)
+      loD <- newRef (-1)
+      hiD <- newRef (-1)
+      forEach nd $ \d -> do
+        q <- outlineVertex l w i d
+        bv <- share (b q)
+        whenPositive (negate bv) $ do
+          s <- share (q `dot` t)
+          l0 <- readRef lo
+          whenPositive (l0 - s) (writeRef lo s >> writeRef loD (toScalar d))
+          h0 <- readRef hi
+          whenPositive (s - h0) (writeRef hi s >> writeRef hiD (toScalar d))
+      dLo <- readRef loD
+      dHi <- readRef hiD
+      let emitAt slot dv = do
+            q <- outlineVertex l w i (toIndex dv)
+            g <- share3 (grad b q)
+            gl <- share (norm g)
+            bv <- share (b q)
+            let dir = safeNormalize g
+                depth = select gl (negate bv / maxF gl 1e-300) 0
+            emitContact l w i (key + slot) i (-1) q dir q dir depth 1
+      emitAt 0 dLo
+      whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
+
+-- | Every contact of this step, owned by the lower-numbered body of each
+-- pair, in body order (warm starting relies on the order).
+collide :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+collide sp l w = do
+  writeMeta w ContactCount 0
+  buildGrid sp w
+  count <- readMeta w BodyCount
+  let antipodal = spaceQuotient sp == Antipodal
+  forEach (toIndex count) $ \i -> do
+    p <- read3 (wPos w) i
+    ri <- readSlot w i BoundRadius
+    invMi <- readSlot w i InvMass
+    let pairs sgn imageSlots = neighbours sp w (sgn *^ p) $ \j -> do
+          -- each unordered pair once: j > i (j >= i for images, which
+          -- includes the body's own image)
+          let order = toScalar j - toScalar i + (if imageSlots then 0.5 else 0)
+          whenPositive order $ do
+            pj <- read3 (wPos w) j
+            rj <- readSlot w j BoundRadius
+            invMj <- readSlot w j InvMass
+            let gap = ri + rj - norm ((sgn *^ p) ^-^ pj)
+            whenPositive (minF gap (invMi + invMj)) $ do
+              let base = (toScalar j + 1) * 16 + (if imageSlots then 4 else 0)
+              vertexContacts l w i base i j sgn 1
+              vertexContacts l w i (base + 2) j i sgn 1
+    pairs 1 False
+    if antipodal then pairs (-1) True else pure ()
+    boundaryContacts sp l w i
+  where _ = (negated :: V3 Double -> V3 Double)

@@ -1,0 +1,228 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | Sequential impulses (paper §2.5; Catto's Box2D solver): every contact is
+-- a normal row (relative normal velocity ≥ 0, Baumgarte bias @β·depth/dt@,
+-- restitution, non-negative clamp) and a Coulomb friction row (clamped by
+-- @μ·λn@), warm started from the last step's impulses of the same contact.
+-- A body's velocity lives in its tangent plane and its angular velocity is
+-- about the surface normal, so a row's Jacobian for a body is the contact
+-- direction projected to the body's tangent plane and @(r × n)·normal@.
+-- The mouse joint is a soft constraint (stiffness and damping as a spring's
+-- frequency and damping ratio, a force limit) pulling a point of a body
+-- towards a target.
+module Manifold.Solver
+  ( solve
+  , grabPoint
+  ) where
+
+import Linear.Metric (dot, quadrance)
+import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((*^), (^+^), (^-^))
+
+import Manifold.Field
+import Manifold.Space
+import Manifold.Stage.Imp
+import Manifold.Surface (geodesicStep)
+import Manifold.World
+
+-- | A body's velocity state.
+data Vel s = Vel (V3 s) s
+
+readVel :: Imp m => WorldArrays (Array m) -> Index m -> m (Vel (Scalar m))
+readVel w i = Vel <$> read3 (wVel w) i <*> readSlot w i Omega
+
+-- | Push body @i@ with impulse @lambda@ along a Jacobian (linear part,
+-- angular part).
+push :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m) -> Scalar m -> m ()
+push w i lambda j jw = do
+  im <- readSlot w i InvMass
+  ii <- readSlot w i InvInertia
+  Vel v om <- readVel w i
+  write3 (wVel w) i (v ^+^ (im * lambda) *^ j)
+  writeSlot w i Omega (om + ii * lambda * jw)
+
+-- | The two sides of a row of contact @c@ starting at field @lin@ (Ja or Ta)
+-- and @linB@ (Jb or Tb).
+data Row s = Row { rowA :: V3 s, rowAW :: s, rowB :: V3 s, rowBW :: s }
+
+readRow :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> ContactField -> m (Row (Scalar m))
+readRow w c linA linB = do
+  a <- readContact3 w c linA
+  aw <- readContact w c (succ (succ (succ linA)))
+  b <- readContact3 w c linB
+  bw <- readContact w c (succ (succ (succ linB)))
+  pure (Row a aw b bw)
+
+-- | The relative velocity along a row: body a's minus body b's.
+rowVelocity :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
+rowVelocity w a b r = do
+  Vel va oa <- readVel w a
+  vb <- newRef 0
+  whenPositive (b + 0.5) $ do
+    Vel v o <- readVel w (toIndex b)
+    writeRef vb ((rowB r `dot` v) + rowBW r * o)
+  vB <- readRef vb
+  share ((rowA r `dot` va) + rowAW r * oa - vB)
+
+applyRow :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> Scalar m -> m ()
+applyRow w a b r lambda = do
+  push w a lambda (rowA r) (rowAW r)
+  whenPositive (b + 0.5) $ push w (toIndex b) (negate lambda) (rowB r) (rowBW r)
+
+-- | The effective mass of a row: @1 / (J M⁻¹ Jᵀ)@.
+effectiveMass :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
+effectiveMass w a b r = do
+  ima <- readSlot w a InvMass
+  iia <- readSlot w a InvInertia
+  kb <- newRef 0
+  whenPositive (b + 0.5) $ do
+    imb <- readSlot w (toIndex b) InvMass
+    iib <- readSlot w (toIndex b) InvInertia
+    writeRef kb (imb * quadrance (rowB r) + iib * rowBW r * rowBW r)
+  kB <- readRef kb
+  k <- share (ima * quadrance (rowA r) + iia * rowAW r * rowAW r + kB)
+  share (select k (recip k) 0)
+
+-- | Where a grabbed body's grabbed point is now: the geodesic from its
+-- centre in the grabbed direction, as long as the grabbed distance.
+grabPoint :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m (V3 (Scalar m))
+grabPoint sp w g = do
+  f <- bodyFrame w g
+  r <- readMouse w MLocalR
+  theta <- readMouse w MLocalTheta
+  let phi = bfAngle f + theta
+      dir = cos phi *^ bfU f ^+^ sin phi *^ bfW f
+      steps = 4 :: Int
+      h = r / fromIntegral steps
+      go 0 s = pure s
+      go k (q, d) = do
+        let (q1, d1) = geodesicStep (spaceField sp) h (q, d)
+        q' <- share3 q1
+        d' <- share3 d1
+        go (k - 1 :: Int) (q', d')
+  fst <$> go steps (bfCentre f, dir)
+
+-- | The mouse joint's rows along the body's frame vectors.
+mouseRows :: Imp m => Space -> WorldArrays (Array m) -> Bool -> m ()
+mouseRows sp w warm = do
+  active <- readMouse w MActive
+  whenPositive active $ do
+    gS <- readMouse w MBody
+    let g = toIndex gS
+    im <- readSlot w g InvMass
+    whenPositive im $ do
+      ii <- readSlot w g InvInertia
+      dt <- readParam w Dt
+      f <- bodyFrame w g
+      grab <- grabPoint sp w g
+      target <- V3 <$> readMouse w MTargetX <*> readMouse w MTargetY <*> readMouse w MTargetZ
+      hz <- readMouse w MFrequency
+      zeta <- readMouse w MDamping
+      maxForce <- readMouse w MMaxForce
+      let mass = recip im
+          omega0 = 2 * pi * hz
+          k = mass * omega0 * omega0
+          d = 2 * mass * zeta * omega0
+      gamma <- share (recip (dt * (d + dt * k)))
+      beta <- share (dt * k * gamma)
+      rw <- share3 (grab ^-^ bfCentre f)
+      err <- share3 (grab ^-^ target)
+      let row e field = do
+            let jw = (rw `cross` e) `dot` bfNormal f
+            acc <- readMouse w field
+            if warm
+              then push w g acc e jw
+              else do
+                Vel v o <- readVel w g
+                let cdot = (e `dot` v) + jw * o
+                    kk = im * quadrance e + ii * jw * jw + gamma
+                    lambda = negate (cdot + beta * (err `dot` e) + gamma * acc) / kk
+                    limit = maxForce * dt
+                    acc' = clampF (negate limit) limit (acc + lambda)
+                accS <- share acc'
+                writeMouse w field accS
+                push w g (accS - acc) e jw
+      row (bfU f) MImpulseU
+      row (bfW f) MImpulseW
+
+-- | Solve this step's contacts and the mouse joint, and keep the impulses
+-- for the next step.
+solve :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+solve sp _ w = do
+  dt <- readParam w Dt
+  iterations <- readParam w Iterations
+  mu <- readParam w Friction
+  restitution <- readParam w Restitution
+  beta <- readParam w Baumgarte
+  slop <- readParam w Slop
+  bounceThreshold <- readParam w BounceThreshold
+  nc <- readMeta w ContactCount
+  -- prepare, and warm start from the last step
+  forEach (toIndex nc) $ \c -> do
+    a <- toIndex <$> readContact w c CA
+    b <- readContact w c CB
+    owner <- readContact w c COwner
+    key <- readContact w c CKey
+    normal <- readRow w c JaX JbX
+    tangent <- readRow w c TaX TbX
+    kn <- effectiveMass w a b normal
+    kt <- effectiveMass w a b tangent
+    writeContact w c NormalMass kn
+    writeContact w c TangentMass kt
+    depth <- readContact w c CDepth
+    scale <- readContact w c CSelfScale
+    vn <- rowVelocity w a b normal
+    let push' = scale * beta / dt * maxF 0 (depth - slop)
+        bounce = select (negate vn - bounceThreshold) (negate restitution * vn) 0
+    writeContact w c CBias (maxF push' bounce)
+    ln <- newRef 0
+    lt <- newRef 0
+    start <- readArray (wBodyPrev w) (2 * toIndex owner)
+    count <- readArray (wBodyPrev w) (2 * toIndex owner + 1)
+    forLoop (toIndex start) (toIndex (start + count)) $ \k -> do
+      pk <- readArray (wPrev w) (fromIntegral prevStride * k + 1)
+      whenPositive (0.5 - abs (pk - key)) $ do
+        readArray (wPrev w) (fromIntegral prevStride * k + 2) >>= writeRef ln
+        readArray (wPrev w) (fromIntegral prevStride * k + 3) >>= writeRef lt
+    lnv <- readRef ln
+    ltv <- readRef lt
+    writeContact w c ImpulseN lnv
+    writeContact w c ImpulseT ltv
+    applyRow w a b normal lnv
+    applyRow w a b tangent ltv
+  mouseRows sp w True
+  -- iterate
+  forEach (toIndex iterations) $ \_ -> do
+    forEach (toIndex nc) $ \c -> do
+      a <- toIndex <$> readContact w c CA
+      b <- readContact w c CB
+      tangent <- readRow w c TaX TbX
+      normal <- readRow w c JaX JbX
+      scale <- readContact w c CSelfScale
+      ln <- readContact w c ImpulseN
+      lt <- readContact w c ImpulseT
+      kt <- readContact w c TangentMass
+      vt <- rowVelocity w a b tangent
+      let limit = mu * ln
+      lt' <- share (clampF (negate limit) limit (lt - scale * vt * kt))
+      writeContact w c ImpulseT lt'
+      applyRow w a b tangent (lt' - lt)
+      kn <- readContact w c NormalMass
+      bias <- readContact w c CBias
+      vn <- rowVelocity w a b normal
+      ln' <- share (maxF 0 (ln + scale * (bias - vn) * kn))
+      writeContact w c ImpulseN ln'
+      applyRow w a b normal (ln' - ln)
+    mouseRows sp w False
+  -- remember the impulses, grouped by owner, for the next step
+  bodies <- readMeta w BodyCount
+  forEach (toIndex bodies) $ \i -> writeArray (wBodyPrev w) (2 * i + 1) 0
+  forEach (toIndex nc) $ \c -> do
+    owner <- toIndex <$> readContact w c COwner
+    let o = fromIntegral prevStride * c
+    writeArray (wPrev w) o (toScalar owner)
+    readContact w c CKey >>= writeArray (wPrev w) (o + 1)
+    readContact w c ImpulseN >>= writeArray (wPrev w) (o + 2)
+    readContact w c ImpulseT >>= writeArray (wPrev w) (o + 3)
+    n <- readArray (wBodyPrev w) (2 * owner + 1)
+    whenPositive (0.5 - n) $ writeArray (wBodyPrev w) (2 * owner) (toScalar c)
+    writeArray (wBodyPrev w) (2 * owner + 1) (n + 1)

@@ -1,0 +1,20 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | One step of the world (paper §2.4–2.6): gravity, contacts, impulses,
+-- motion, polygons. Written once; run natively and printed as JavaScript.
+module Manifold.Step
+  ( step
+  ) where
+
+import Manifold.Collide
+import Manifold.Solver
+import Manifold.Space
+import Manifold.Stage.Imp
+import Manifold.World
+
+step :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+step sp l w = do
+  applyGravity sp w
+  collide sp l w
+  solve sp l w
+  integrate sp w
+  polygoniseAll sp l w
