@@ -10,6 +10,9 @@ module Manifold.Body
   , circle
   , square
   , regularPolygon
+  , polygonOutline
+  , shapeCode
+  , codeOutline
   , customShape
   , shapeFromKind
   , outlineAt
@@ -57,15 +60,28 @@ circle = Shape "circle" (Just CircleShape) (Outline (const 1))
 regularPolygon :: Int -> Shape
 regularPolygon n
   | n < 3 = error ("regularPolygon: a polygon needs at least 3 sides, got " ++ show n)
-  | otherwise = Shape (show n ++ "-gon") (Just (PolygonShape n)) (Outline outline)
-  where
-    outline :: Field a => a -> a
-    outline theta =
-      let sector = constant (2 * pi / fromIntegral n)
-          half = constant (pi / fromIntegral n)
-          shifted = theta + half
-          within = shifted - sector * floorF (shifted / sector)
-      in constant (cos (pi / fromIntegral n)) / cos (within - half)
+  | otherwise = Shape (show n ++ "-gon") (Just (PolygonShape n)) (Outline (polygonOutline (fromIntegral n)))
+
+-- | The outline of a regular polygon with @n@ sides (a scalar, so that the
+-- page's engine can choose it at run time).
+polygonOutline :: Field a => a -> a -> a
+polygonOutline n theta =
+  let sector = 2 * pi / n
+      half = pi / n
+      shifted = theta + half
+      within = shifted - sector * floorF (shifted / sector)
+  in cos half / cos (within - half)
+
+-- | The code of a built-in shape, as the engine's arrays and the page use
+-- it: 0 for a circle, @n >= 3@ for a regular @n@-gon (4, the square).
+shapeCode :: ShapeKind -> Int
+shapeCode CircleShape = 0
+shapeCode SquareShape = 4
+shapeCode (PolygonShape n) = n
+
+-- | The outline of the built-in shape with the given code.
+codeOutline :: Field a => a -> a -> a
+codeOutline code theta = select (code - 0.5) (polygonOutline code theta) 1
 
 square :: Shape
 square = (regularPolygon 4) { shapeName = "square", shapeKind = Just SquareShape }

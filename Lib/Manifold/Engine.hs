@@ -6,6 +6,7 @@ module Manifold.Engine
   , newWorld
   , addBody
   , stepNative
+  , removeBodyAt
   , Params (..)
   , defaultParams
   , setParams
@@ -16,6 +17,7 @@ module Manifold.Engine
   , BodyState (..)
   , engineScript
   , engineProcedures
+  , engineObject
   ) where
 
 import Control.Monad (forM_)
@@ -27,9 +29,12 @@ import Manifold.Body
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface
+import Manifold.Population
 import Manifold.Step (step)
 import Manifold.World
+import Data.Char (toLower)
 import Data.Foldable (toList)
+import Data.List (intercalate)
 
 data NativeWorld = NativeWorld
   { nwSpace :: Space
@@ -43,6 +48,7 @@ newWorld sp l = do
       alloc n = MV.replicate n 0
   arrays <- traverse alloc s
   let w = NativeWorld sp l arrays
+  MV.write (wMeta arrays) (fromEnum Capacity) (fromIntegral (capacity l))
   setParams w defaultParams
   pure w
 
@@ -99,44 +105,21 @@ contactCount = metaValue ContactCount
 
 -- | Add a body: its centre is projected onto the surface, its velocity onto
 -- the tangent plane; its axis is the tangent direction nearest to x (or z).
--- Returns the body's index, or an error.
+-- Returns the body's index, or why it could not be added.
 addBody :: NativeWorld -> BodyInit -> IO (Either String Int)
 addBody w b = do
-  let sp = nwSpace w
-      f = spaceField sp
-      a = nwArrays w
-      p = projectToSurface f (biPos b)
-      n = unitNormal f p
-  i <- bodyCount w
-  if i >= capacity (nwLayout w) then pure (Left ("the world is full (capacity " ++ show (capacity (nwLayout w)) ++ ")"))
-  else if any isNaN p || norm n < 0.5 then pure (Left "the body's position does not project onto the surface")
-  else do
-    let v = tangentProjection n (biVel b)
-        ax1 = tangentProjection n (V3 1 0 0)
-        ax2 = tangentProjection n (V3 0 0 1)
-        axis = safeNormalize (if norm ax1 > 0.5 then ax1 else ax2)
-        MassProperties m inertia' = massProperties (biShape b) (biSize b) (biDensity b)
-        inv x = if biStatic b || x <= 0 then 0 else 1 / x
-        write3 :: NativeArray -> V3 Double -> IO ()
-        write3 arr (V3 x y z) = forM_ (zip [0 ..] [x, y, z]) $ \(k, c) -> MV.write arr (3 * i + k) c
-        setSlot :: Slot -> Double -> IO ()
-        setSlot s x = MV.write (wScalars a) (scalarSlots * i + fromEnum s) x
-    write3 (wPos a) p
-    write3 (wVel a) (if biStatic b then V3 0 0 0 else v)
-    write3 (wAxis a) axis
-    write3 (wNormal a) n
-    setSlot Angle (biAngle b)
-    setSlot Omega (if biStatic b then 0 else biOmega b)
-    setSlot InvMass (inv m)
-    setSlot InvInertia (inv inertia')
-    setSlot Size (biSize b)
-    setSlot BoundRadius (biSize b)
-    let Outline outline = shapeOutline (biShape b)
-    runNative (outlineRadiiInto (nwLayout w) outline a i (biSize b))
-    MV.write (wMeta a) (fromEnum BodyCount) (fromIntegral (i + 1))
-    MV.write (wBodyPrev a) (2 * i + 1) 0
-    runNative (polygoniseAll sp (nwLayout w) a)
-    pure (Right i)
+  let Outline outline = shapeOutline (biShape b)
+      args = BodyArgs (biSize b) (biDensity b) (if biStatic b then 1 else 0)
+                      (biPos b) (biVel b) (biAngle b) (biOmega b)
+  runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) outline args)
+  i <- metaValue LastAdded w
+  n <- bodyCount w
+  pure $ if i >= 0 then Right i
+    else if n >= capacity (nwLayout w) then Left ("the world is full (capacity " ++ show (capacity (nwLayout w)) ++ ")")
+    else Left "the position does not project onto the surface (the field's gradient vanishes there)"
+
+removeBodyAt :: NativeWorld -> Int -> IO ()
+removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
 
 -- | One step of the world.
 stepNative :: NativeWorld -> IO ()
@@ -172,7 +155,47 @@ engineProcedures :: Space -> Layout -> [String]
 engineProcedures sp l =
   [ stageProcedure (JsProcedure "step" worldParams []) (\_ _ -> step sp l stagedArrays)
   , stageProcedure (JsProcedure "polygonise" worldParams []) (\_ _ -> polygoniseAll sp l stagedArrays)
+  , stageProcedure (JsProcedure "addBody" worldParams
+      ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"])
+      (\_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega] ->
+         addBodyWith sp l stagedArrays (codeOutline code)
+           (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega))
+  , stageProcedure (JsProcedure "removeBody" worldParams ["index"])
+      (\_ [i] -> removeBody l stagedArrays (toIndex i))
   ]
 
 engineScript :: Space -> Layout -> String
 engineScript sp l = unlines (engineProcedures sp l)
+
+-- | The engine's description for the page, as a JavaScript object literal:
+-- how to allocate a world (sizes are linear in the capacity), what each
+-- index of the meta, parameter, per-body, contact and mouse arrays means,
+-- the default parameters, and the procedures.
+engineObject :: Layout -> String
+engineObject l =
+  let at c = arraySizes l { capacity = c }
+      one = at 1
+      two = at 2
+      size name a b = name ++ ": [" ++ show (a - (b - a)) ++ ", " ++ show (b - a) ++ "]"
+      enumObj :: forall e. (Show e, Enum e, Bounded e) => e -> String
+      enumObj _ = "{ " ++ intercalate ", " [show' k ++ ": " ++ show (fromEnum k) | k <- [minBound .. maxBound :: e]] ++ " }"
+      show' k = let (c : cs) = show k in toLower c : cs
+      p = defaultParams
+      params = [ ("dt", pDt p), ("gravityOn", if pGravity p then 1 else 0), ("iterations", fromIntegral (pIterations p))
+               , ("friction", pFriction p), ("restitution", pRestitution p), ("baumgarte", pBaumgarte p)
+               , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p) ]
+  in unlines
+    [ "{"
+    , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"
+    , "  sizes: { " ++ intercalate ", " (zipWith3 size (toList arrayNames) (toList one) (toList two)) ++ " },"
+    , "  directions: " ++ show (polyDirections (polygon l)) ++ ", steps: " ++ show (polySteps (polygon l)) ++ ","
+    , "  verticesPerBody: " ++ show (verticesPerBody l) ++ ", contactStride: " ++ show contactStride ++ ","
+    , "  meta: " ++ enumObj BodyCount ++ ","
+    , "  params: " ++ enumObj Dt ++ ","
+    , "  slots: " ++ enumObj Angle ++ ","
+    , "  contact: " ++ enumObj CA ++ ","
+    , "  mouse: " ++ enumObj MActive ++ ","
+    , "  defaults: { " ++ intercalate ", " [k ++ ": " ++ show v | (k, v) <- params] ++ " },"
+    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody"
+    , "}"
+    ]

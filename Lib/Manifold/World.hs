@@ -53,6 +53,8 @@ module Manifold.World
   , applyGravity
   , integrate
   , polygoniseAll
+  , polygoniseBody
+  , toList3
   , outlineRadiiInto
   ) where
 
@@ -99,7 +101,7 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters.
-data Meta = BodyCount | Warnings | ContactCount | PrevContactCount | GridDim | CellSize | DroppedContacts
+data Meta = BodyCount | Warnings | ContactCount | Capacity | GridDim | CellSize | DroppedContacts | LastAdded
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
@@ -311,30 +313,35 @@ outlineRadiiInto l outline w i size = do
 polygoniseAll :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 polygoniseAll sp l w = do
   count <- readMeta w BodyCount
+  forEach (toIndex count) (polygoniseBody sp l w)
+
+-- | Walk one body's polygon: from the centre, a geodesic in each direction,
+-- in equal steps of the outline radius over the step count.
+polygoniseBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+polygoniseBody sp l w i = do
   let f = spaceField sp
       pp = polygon l
       nd = polyDirections pp
       ns = polySteps pp
       vpb = fromIntegral (verticesPerBody l)
-  forEach (toIndex count) $ \i -> do
-    p <- read3 (wPos w) i
-    axis <- read3 (wAxis w) i
-    n <- read3 (wNormal w) i
-    angle <- readSlot w i Angle
-    write3 (wVerts w) (vpb * i) p
-    u <- share3 axis
-    v <- share3 (n `cross` axis)
-    forEach (fromIntegral nd) $ \d -> do
-      r <- readArray (wRadii w) (fromIntegral nd * i + d)
-      let phi = angle + toScalar d * constant (2 * pi / fromIntegral nd)
-      c <- share (cos phi)
-      s <- share (sin phi)
-      h <- share (r / fromIntegral ns)
-      let walk 0 _ _ = pure ()
-          walk k q dir = do
-            let (q1, dir1) = geodesicStep f h (q, dir)
-            q' <- share3 q1
-            dir' <- share3 dir1
-            write3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + fromIntegral (ns - k)) q'
-            walk (k - 1 :: Int) q' dir'
-      walk ns p (c *^ u ^+^ s *^ v)
+  p <- read3 (wPos w) i
+  axis <- read3 (wAxis w) i
+  n <- read3 (wNormal w) i
+  angle <- readSlot w i Angle
+  write3 (wVerts w) (vpb * i) p
+  u <- share3 axis
+  v <- share3 (n `cross` axis)
+  forEach (fromIntegral nd) $ \d -> do
+    r <- readArray (wRadii w) (fromIntegral nd * i + d)
+    let phi = angle + toScalar d * constant (2 * pi / fromIntegral nd)
+    c <- share (cos phi)
+    s <- share (sin phi)
+    h <- share (r / fromIntegral ns)
+    let walk 0 _ _ = pure ()
+        walk k q dir = do
+          let (q1, dir1) = geodesicStep f h (q, dir)
+          q' <- share3 q1
+          dir' <- share3 dir1
+          write3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + fromIntegral (ns - k)) q'
+          walk (k - 1 :: Int) q' dir'
+    walk ns p (c *^ u ^+^ s *^ v)

@@ -22,10 +22,9 @@ import Manifold.AD (gaussianCurvature)
 import Manifold.Space
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
-import Manifold.Body (PolygonParams (..))
-import Manifold.Engine (engineProcedures)
+import Manifold.Engine (engineObject, engineProcedures)
 import Manifold.Surface (fieldGradient)
-import Manifold.World (Layout (..), layout, scalarSlots)
+import Manifold.World (Layout, layout)
 
 -- | The polygon parameters of the page's engine (capacity is the page's).
 engineLayout :: Layout
@@ -63,7 +62,7 @@ spaceScriptFile s = "space-" ++ spaceName s ++ ".js"
 
 -- | A classic script registering the space on @Manifold.spaces[NAME]@.
 spaceScript :: Space -> String
-spaceScript s = let pp = polygon engineLayout in unlines
+spaceScript s = unlines
   [ generatedMarker ++ " from Lib/Manifold/Spaces.hs (space " ++ show (spaceName s) ++ "). Do not edit."
   , "(function (Manifold) {"
   , "\"use strict\";"
@@ -87,8 +86,7 @@ spaceScript s = let pp = polygon engineLayout in unlines
   , "  bounds: " ++ num (spaceBounds s) ++ ","
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
-  , "  engine: { directions: " ++ show (polyDirections pp) ++ ", steps: " ++ show (polySteps pp)
-    ++ ", scalarSlots: " ++ show scalarSlots ++ ", step: step, polygonise: polygonise },"
+  , "  engine: " ++ engineObject engineLayout ++ ","
   , "  glsl: " ++ jsString (spaceGlsl s)
   , "};"
   , "})(globalThis.Manifold = globalThis.Manifold || { spaces: {} });"

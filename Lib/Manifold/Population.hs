@@ -1,0 +1,115 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | Adding and removing bodies at run time, written once: the native engine
+-- and the page's JavaScript add a body the same way (projected onto the
+-- surface, velocity onto the tangent plane, mass and moment of inertia
+-- integrated from the outline as in paper §2.4).
+module Manifold.Population
+  ( BodyArgs (..)
+  , addBodyWith
+  , removeBody
+  , massSamples
+  ) where
+
+import Linear.Metric (norm)
+import Linear.V3 (V3 (..))
+import Linear.Vector ((*^), (^+^))
+
+import Manifold.Body (PolygonParams (..))
+import Manifold.Field
+import Manifold.Space
+import Manifold.Stage.Imp
+import Manifold.Surface
+import Manifold.World
+
+-- | A new body's description, in the interpretation's scalars.
+data BodyArgs s = BodyArgs
+  { baSize :: s
+  , baDensity :: s
+  , baStatic :: s -- ^ 1 for a static body, 0 otherwise
+  , baPos :: V3 s
+  , baVel :: V3 s
+  , baAngle :: s
+  , baOmega :: s
+  }
+
+-- | Midpoint-rule samples of the outline for the mass integrals.
+massSamples :: Int
+massSamples = 1024
+
+-- | Add a body with the given outline (for size 1). Sets 'LastAdded' to its
+-- index, or to −1 when the world is full or the position does not project
+-- onto the surface.
+addBodyWith :: Imp m => Space -> Layout -> WorldArrays (Array m) -> (Scalar m -> Scalar m) -> BodyArgs (Scalar m) -> m ()
+addBodyWith sp l w outline b = do
+  count <- readMeta w BodyCount
+  cap <- readMeta w Capacity
+  let f = spaceField sp
+  p <- share3 (projectToSurface f (baPos b))
+  n <- share3 (unitNormal f p)
+  let usable = minF (cap - count - 0.5) (minF (norm n - 0.5) (finiteness (toList3 p)))
+  ifPositive usable
+    (do let i = toIndex count
+            movable = 1 - baStatic b
+            v = movable *^ tangentProjection n (baVel b)
+            ax1 = tangentProjection n (V3 1 0 0)
+            ax2 = tangentProjection n (V3 0 0 1)
+            axis = safeNormalize (select (norm ax1 - 0.5) 1 0 *^ ax1 ^+^ select (norm ax1 - 0.5) 0 1 *^ ax2)
+        write3 (wPos w) i p
+        write3 (wVel w) i v
+        axis' <- share3 axis
+        write3 (wAxis w) i axis'
+        write3 (wNormal w) i n
+        -- mass ρ·½∫s²dθ and moment of inertia ρ·¼∫s⁴dθ
+        area <- newRef 0
+        quartic <- newRef 0
+        let h = constant (2 * pi / fromIntegral massSamples)
+        forEach (fromIntegral massSamples) $ \k -> do
+          s <- share (baSize b * outline ((toScalar k + 0.5) * h))
+          s2 <- share (s * s)
+          modifyRef area (+ s2)
+          modifyRef quartic (+ s2 * s2)
+        a2 <- readRef area
+        a4 <- readRef quartic
+        m <- share (baDensity b * 0.5 * h * a2)
+        inertia <- share (baDensity b * 0.25 * h * a4)
+        writeSlot w i Angle (baAngle b)
+        writeSlot w i Omega (movable * baOmega b)
+        writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
+        writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
+        writeSlot w i Size (baSize b)
+        outlineRadiiInto l outline w i (baSize b)
+        let nd = polyDirections (polygon l)
+        reach <- newRef 0
+        forEach (fromIntegral nd) $ \d -> do
+          r <- readArray (wRadii w) (fromIntegral nd * i + d)
+          modifyRef reach (maxF r)
+        readRef reach >>= writeSlot w i BoundRadius
+        writeArray (wBodyPrev w) (2 * i + 1) 0
+        writeMeta w BodyCount (count + 1)
+        writeMeta w LastAdded count
+        polygoniseBody sp l w i)
+    (writeMeta w LastAdded (-1))
+
+-- | Remove body @i@: the last body takes its place (so indices above @i@
+-- are stable but the last one's becomes @i@). Warm starting is forgotten
+-- for one step; a mouse joint on the removed body is released.
+removeBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> m ()
+removeBody l w i = do
+  count <- readMeta w BodyCount
+  whenPositive (minF (toScalar i + 0.5) (count - toScalar i - 0.5)) $ do
+    let lastI = toIndex (count - 1)
+        move arr k = forEach (fromIntegral k) $ \o ->
+          readArray arr (fromIntegral k * lastI + o) >>= writeArray arr (fromIntegral k * i + o)
+    move (wPos w) 3
+    move (wVel w) 3
+    move (wAxis w) 3
+    move (wNormal w) 3
+    move (wScalars w) scalarSlots
+    move (wRadii w) (polyDirections (polygon l))
+    move (wVerts w) (3 * verticesPerBody l)
+    writeMeta w BodyCount (count - 1)
+    forEach (toIndex count) $ \k -> writeArray (wBodyPrev w) (2 * k + 1) 0
+    grabbed <- readMouse w MBody
+    active <- readMouse w MActive
+    whenPositive (minF active (0.5 - abs (grabbed - toScalar i))) (writeMouse w MActive 0)
+    whenPositive (minF active (0.5 - abs (grabbed - (count - 1)))) (writeMouse w MBody (toScalar i))
