@@ -22,12 +22,15 @@ import Text.Read (readMaybe)
 
 import Manifold
 import Manifold.Build
+import Manifold.Engine
+import Manifold.Scene
 
 data Command
   = Spaces Bool
   | Geodesic GeodesicArgs
   | Build FilePath
   | Serve Int FilePath
+  | Sim FilePath Int Int
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -43,6 +46,10 @@ commandParser = hsubparser
   ( command "spaces" (info (Spaces <$> jsonFlag) (progDesc "List the spaces of the catalogue"))
  <> command "geodesic" (info (Geodesic <$> geodesicArgs) (progDesc "Walk a geodesic and print its polyline"))
  <> command "build" (info (Build <$> outDir) (progDesc "Emit the page's generated scripts (spaces, GLSL) into web/gen"))
+ <> command "sim" (info (Sim <$> strArgument (metavar "SCENE" <> help "Scene JSON file (- for standard input)")
+                                 <*> option auto (long "steps" <> metavar "K" <> help "Steps to simulate")
+                                 <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)"))
+                       (progDesc "Simulate a scene headless and print the bodies' states as JSON"))
  <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
   )
   where
@@ -73,6 +80,7 @@ main = do
         Left (BuildError msg) -> usageError msg
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
     Serve p dir -> serve p dir
+    Sim path steps every -> simulate path steps every
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -137,6 +145,36 @@ geodesic a = do
       mapM_ (putStrLn . unwords . map show . v3List) points
       putStrLn ("end: " ++ unwords (map show (v3List end)))
       putStrLn ("endDir: " ++ unwords (map show (v3List endDir)))
+
+-- | Run a scene and print frames; on any problem, a message and exit code 2,
+-- and nothing on standard output.
+simulate :: FilePath -> Int -> Int -> IO ()
+simulate path steps every = do
+  when (steps < 0) (usageError "--steps: must not be negative")
+  when (every < 1) (usageError "--every: must be at least 1")
+  text <- if path == "-" then BL.getContents else do
+    exists <- doesFileExist path
+    if exists then BL.readFile path else usageError (path ++ ": no such scene file")
+  scene <- either (usageError . ((path ++ ": ") ++)) pure (parseScene text)
+  loaded <- loadScene 0 scene
+  w <- either (usageError . ((path ++ ": ") ++)) pure loaded
+  n <- bodyCount w
+  let frame k = do
+        bodies <- mapM (readBody w) [0 .. n - 1]
+        pure (A.object [ "step" A..= k, "bodies" A..= map bodyJson bodies ])
+      bodyJson b = A.object [ "p" A..= v3List (bsPos b), "v" A..= v3List (bsVel b)
+                            , "angle" A..= bsAngle b, "omega" A..= bsOmega b ]
+      run k acc
+        | k > steps = pure (reverse acc)
+        | otherwise = do
+            f <- if k `mod` every == 0 || k == steps then (: []) <$> frame k else pure []
+            when (k < steps) (stepNative w)
+            run (k + 1) (f ++ acc)
+  frames <- run 0 []
+  warnings <- warningCount w
+  BL.putStrLn (A.encode (A.object
+    [ "space" A..= spaceName (sceneSpace scene), "dt" A..= sceneDt scene
+    , "warnings" A..= warnings, "frames" A..= frames ]))
 
 -- | Serve a directory on the loopback interface only.
 serve :: Int -> FilePath -> IO ()

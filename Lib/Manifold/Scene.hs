@@ -1,0 +1,165 @@
+{-# LANGUAGE OverloadedStrings #-}
+-- | Scenes: the JSON that @manifold sim@ and the page share — a space, the
+-- engine's parameters and the bodies. Parsing names the JSON path of the
+-- first problem it finds; unknown keys are problems too, so that a typo is
+-- not silently ignored.
+module Manifold.Scene
+  ( Scene (..)
+  , BodySpec (..)
+  , parseScene
+  , sceneParams
+  , loadScene
+  , bodyInit
+  ) where
+
+import Control.Monad (forM, unless, when)
+import qualified Data.Aeson as A
+import qualified Data.Aeson.Key as K
+import qualified Data.Aeson.KeyMap as KM
+import qualified Data.ByteString.Lazy as BL
+import Data.List (intercalate)
+import Data.Scientific (toRealFloat)
+import qualified Data.Text as T
+import qualified Data.Vector as V
+import Linear.V3 (V3 (..))
+
+import Manifold.Body
+import Manifold.Engine
+import Manifold.Space
+import Manifold.Spaces
+import Manifold.World (layout)
+
+data BodySpec = BodySpec
+  { bsShape :: ShapeKind
+  , bsSize :: Double
+  , bsDensity :: Double
+  , bsStatic :: Bool
+  , bsP :: V3 Double
+  , bsV :: V3 Double
+  , bsAngle0 :: Double
+  , bsOmega0 :: Double
+  } deriving (Show, Eq)
+
+data Scene = Scene
+  { sceneSpace :: Space
+  , sceneDt :: Double
+  , sceneGravity :: Bool
+  , sceneIterations :: Int
+  , sceneFriction :: Double
+  , sceneRestitution :: Double
+  , sceneBodies :: [BodySpec]
+  }
+
+type Path = String
+
+type P a = Either String a
+
+problem :: Path -> String -> P a
+problem path msg = Left (path ++ ": " ++ msg)
+
+object :: Path -> [String] -> A.Value -> P (KM.KeyMap A.Value)
+object path allowed v = case v of
+  A.Object o -> do
+    let unknown = [K.toString k | k <- KM.keys o, K.toString k `notElem` allowed]
+    unless (null unknown) $
+      problem (path ++ "." ++ head unknown) ("unknown key; the keys are " ++ intercalate ", " allowed)
+    pure o
+  _ -> problem path "must be an object"
+
+member :: KM.KeyMap A.Value -> String -> Maybe A.Value
+member o k = KM.lookup (K.fromString k) o
+
+required :: Path -> KM.KeyMap A.Value -> String -> (Path -> A.Value -> P a) -> P a
+required path o k parse = maybe (problem (path ++ "." ++ k) "is missing") (parse (path ++ "." ++ k)) (member o k)
+
+optional :: Path -> KM.KeyMap A.Value -> String -> a -> (Path -> A.Value -> P a) -> P a
+optional path o k def parse = maybe (pure def) (parse (path ++ "." ++ k)) (member o k)
+
+number :: Path -> A.Value -> P Double
+number path = \case
+  A.Number s -> let x = toRealFloat s in
+    if isNaN x || isInfinite x then problem path "must be a finite number" else pure x
+  _ -> problem path "must be a number"
+
+nonNegative, positive :: Path -> A.Value -> P Double
+nonNegative path v = number path v >>= \x -> if x < 0 then problem path "must not be negative" else pure x
+positive path v = number path v >>= \x -> if x <= 0 then problem path "must be positive" else pure x
+
+boolean :: Path -> A.Value -> P Bool
+boolean _ (A.Bool b) = pure b
+boolean path _ = problem path "must be true or false"
+
+vec3 :: Path -> A.Value -> P (V3 Double)
+vec3 path = \case
+  A.Array a | V.length a == 3 -> do
+    let component k = number (path ++ "[" ++ show k ++ "]") (a V.! k)
+    V3 <$> component 0 <*> component 1 <*> component 2
+  _ -> problem path "must be an array of three numbers [x, y, z]"
+
+shape :: Path -> A.Value -> P ShapeKind
+shape path = \case
+  A.String "circle" -> pure CircleShape
+  A.String "square" -> pure SquareShape
+  A.String s -> problem path ("unknown shape " ++ show (T.unpack s) ++ "; the shapes are \"circle\", \"square\" and {\"polygon\": N}")
+  v@(A.Object _) -> do
+    o <- object path ["polygon"] v
+    n <- required path o "polygon" number
+    when (n /= fromIntegral (round n :: Int) || n < 3 || n > 64) $
+      problem (path ++ ".polygon") "must be a whole number of sides from 3 to 64"
+    pure (PolygonShape (round n))
+  _ -> problem path "must be \"circle\", \"square\" or {\"polygon\": N}"
+
+body :: Path -> A.Value -> P BodySpec
+body path v = do
+  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega"] v
+  BodySpec
+    <$> required path o "shape" shape
+    <*> required path o "size" positive
+    <*> optional path o "density" 1 positive
+    <*> optional path o "static" False boolean
+    <*> required path o "p" vec3
+    <*> optional path o "v" (V3 0 0 0) vec3
+    <*> optional path o "angle" 0 number
+    <*> optional path o "omega" 0 number
+
+-- | A scene from its JSON text.
+parseScene :: BL.ByteString -> P Scene
+parseScene text = do
+  v <- either (\e -> Left ("not JSON: " ++ e)) pure (A.eitherDecode text)
+  o <- object "$" ["space", "dt", "gravity", "iterations", "friction", "restitution", "bodies"] v
+  sp <- required "$" o "space" $ \path -> \case
+    A.String s -> maybe (problem path ("unknown space " ++ show (T.unpack s) ++ "; the spaces are " ++ intercalate ", " spaceNames))
+                        pure (lookupSpace (T.unpack s))
+    _ -> problem path "must be a space name"
+  dt <- optional "$" o "dt" 0.01 positive
+  gravity <- optional "$" o "gravity" True boolean
+  iterations <- optional "$" o "iterations" 8 $ \path x -> do
+    n <- positive path x
+    when (n /= fromIntegral (round n :: Int) || n > 1000) (problem path "must be a whole number from 1 to 1000")
+    pure (round n)
+  friction <- optional "$" o "friction" 0.4 nonNegative
+  restitution <- optional "$" o "restitution" 0 $ \path x -> do
+    e <- nonNegative path x
+    when (e > 1) (problem path "must be between 0 and 1")
+    pure e
+  bodies <- optional "$" o "bodies" [] $ \path -> \case
+    A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
+    _ -> problem path "must be an array of bodies"
+  pure (Scene sp dt gravity iterations friction restitution bodies)
+
+sceneParams :: Scene -> Params
+sceneParams s = defaultParams
+  { pDt = sceneDt s, pGravity = sceneGravity s, pIterations = sceneIterations s
+  , pFriction = sceneFriction s, pRestitution = sceneRestitution s }
+
+bodyInit :: BodySpec -> BodyInit
+bodyInit b = BodyInit (shapeFromKind (bsShape b)) (bsSize b) (bsDensity b) (bsStatic b) (bsP b) (bsV b) (bsAngle0 b) (bsOmega0 b)
+
+-- | A world holding the scene (with room for @extra@ more bodies).
+loadScene :: Int -> Scene -> IO (P NativeWorld)
+loadScene extra s = do
+  w <- newWorld (sceneSpace s) (layout (length (sceneBodies s) + extra))
+  setParams w (sceneParams s)
+  added <- forM (zip [0 :: Int ..] (sceneBodies s)) $ \(k, b) ->
+    either (Left . (("$.bodies[" ++ show k ++ "].p: ") ++)) Right <$> addBody w (bodyInit b)
+  pure (w <$ sequence added)
