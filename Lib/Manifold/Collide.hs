@@ -19,7 +19,7 @@ module Manifold.Collide
 
 import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..), cross)
-import Linear.Vector ((*^), (^-^), (^+^), negated)
+import Linear.Vector ((*^), (^-^), (^+^))
 
 import Manifold.AD (grad)
 import Manifold.Body (PolygonParams (..))
@@ -267,6 +267,96 @@ boundaryContacts sp l w i = case spaceBoundary sp of
       emitAt 0 dLo
       whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
+-- | The closest points of two segments in R³: their parameters along each
+-- (in [0, 1]) and their distance (branches by 'select', so it stages).
+segmentClosest :: Field a => V3 a -> V3 a -> V3 a -> V3 a -> (a, a, a)
+segmentClosest p0 p1 q0 q1 =
+  let d1 = p1 ^-^ p0
+      d2 = q1 ^-^ q0
+      r = p0 ^-^ q0
+      a = d1 `dot` d1
+      e = d2 `dot` d2
+      f = d2 `dot` r
+      c = d1 `dot` r
+      b = d1 `dot` d2
+      denom = a * e - b * b
+      clamp01 = clampF 0 1
+      safeDiv x y = select (abs y - 1e-300) (x / y) 0
+      s0 = select (denom - 1e-12 * a * e) (clamp01 (safeDiv (b * f - c * e) denom)) 0
+      t0 = safeDiv (b * s0 + f) e
+      s1 = select (negate t0) (clamp01 (safeDiv (negate c) a)) (select (t0 - 1) (clamp01 (safeDiv (b - c) a)) s0)
+      t1 = clamp01 t0
+      gap = norm ((p0 ^+^ s1 *^ d1) ^-^ (q0 ^+^ t1 *^ d2))
+  in (s1, t1, gap)
+
+-- | The paper's self-contact (§4.2): a body as large as the space around it
+-- (wrapped round the neck of the trumpet) overlaps itself where two of its
+-- rays cross. The ordinary contact direction there is along the rays and
+-- useless (it acts on both ends of one body), so the row is turned
+-- perpendicular to it — along the sum of the two rays' directions, which
+-- points to where the space widens, since geodesics leaving a narrow place
+-- bend towards the wide side — and scaled by 0.6 as in the paper. The depth
+-- is half the length by which the two rays overrun their crossing.
+--
+-- Only a body whose rays turn (the chord from the centre to some outline
+-- vertex is under 0.8 of the ray's length) is tested, which flat and gently
+-- curved places never trigger.
+selfContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+selfContacts sp l w i = do
+  let nd = polyDirections (polygon l)
+      ns = polySteps (polygon l)
+      vpb = fromIntegral (verticesPerBody l)
+      vertex d k = read3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + k) -- step k+1 along d
+      centreIx = vpb * i
+  c <- read3 (wVerts w) centreIx
+  turn <- newRef 1
+  forEach (fromIntegral nd) $ \d -> do
+    o <- vertex d (fromIntegral ns - 1)
+    r <- readArray (wRadii w) (fromIntegral nd * i + d)
+    modifyRef turn (minF (select r (norm (o ^-^ c) / r) 1))
+  straightness <- readRef turn
+  whenPositive (0.8 - straightness) $ do
+    deepest <- newRef 0
+    px <- newRef 0
+    py <- newRef 0
+    pz <- newRef 0
+    mx <- newRef 0
+    my <- newRef 0
+    mz <- newRef 0
+    forEach (fromIntegral nd) $ \d -> do
+      rd <- readArray (wRadii w) (fromIntegral nd * i + d)
+      forLoop (fromIntegral (nd `div` 4)) (fromIntegral (nd `div` 2 + 1)) $ \off -> do
+        let d' = toIndex (let x = toScalar d + toScalar off in x - fromIntegral nd * floorF (x / fromIntegral nd))
+        rd' <- readArray (wRadii w) (fromIntegral nd * i + d')
+        forLoop 1 (fromIntegral ns) $ \k -> do
+          a0 <- vertex d (k - 1)
+          a1 <- vertex d k
+          forLoop 1 (fromIntegral ns) $ \k' -> do
+            b0 <- vertex d' (k' - 1)
+            b1 <- vertex d' k'
+            let (s, t, gap) = segmentClosest a0 a1 b0 b1
+                h = minF rd rd' / fromIntegral ns
+                arc = rd * (toScalar k + s) / fromIntegral ns
+                arc' = rd' * (toScalar k' + t) / fromIntegral ns
+                depth = 0.5 * ((rd - arc) + (rd' - arc'))
+            best <- readRef deepest
+            whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
+              writeRef deepest depth
+              let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
+                  V3 u v q = safeNormalize (a1 ^-^ a0) ^+^ safeNormalize (b1 ^-^ b0)
+              writeRef px x >> writeRef py y >> writeRef pz z
+              writeRef mx u >> writeRef my v >> writeRef mz q
+    best <- readRef deepest
+    whenPositive best $ do
+      point <- V3 <$> readRef px <*> readRef py <*> readRef pz
+      m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
+      n <- share3 (unitNormalAt point)
+      dir <- share3 (safeNormalize (tangentProjection n m0))
+      emitContact l w i (selfKey) i (-1) point dir point dir best 0.6
+  where
+    unitNormalAt = safeNormalize . grad (let ScalarFn f = spaceField sp in f)
+    selfKey = 12
+
 -- | Every contact of this step, owned by the lower-numbered body of each
 -- pair, in body order (warm starting relies on the order).
 collide :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
@@ -295,4 +385,4 @@ collide sp l w = do
     pairs 1 False
     if antipodal then pairs (-1) True else pure ()
     boundaryContacts sp l w i
-  where _ = (negated :: V3 Double -> V3 Double)
+    selfContacts sp l w i

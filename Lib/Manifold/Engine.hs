@@ -62,12 +62,13 @@ data Params = Params
   , pBaumgarte :: Double -- ^ fraction of the depth removed per step (paper: 0.1)
   , pSlop :: Double -- ^ depth allowed without correction
   , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
+  , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
   } deriving (Show, Eq)
 
 defaultParams :: Params
 defaultParams = Params
   { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
-  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5 }
+  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True }
 
 setParams :: NativeWorld -> Params -> IO ()
 setParams w p = do
@@ -82,6 +83,7 @@ setParams w p = do
   set Baumgarte (pBaumgarte p)
   set Slop (pSlop p)
   set BounceThreshold (pBounceThreshold p)
+  set WarmStart (if pWarmStart p then 1 else 0)
 
 -- | A body as a scene describes it.
 data BodyInit = BodyInit
@@ -183,7 +185,8 @@ engineObject l =
       p = defaultParams
       params = [ ("dt", pDt p), ("gravityOn", if pGravity p then 1 else 0), ("iterations", fromIntegral (pIterations p))
                , ("friction", pFriction p), ("restitution", pRestitution p), ("baumgarte", pBaumgarte p)
-               , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p) ]
+               , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p)
+               , ("warmStart", if pWarmStart p then 1 else 0) ]
   in unlines
     [ "{"
     , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"

@@ -155,6 +155,7 @@ solve sp _ w = do
   beta <- readParam w Baumgarte
   slop <- readParam w Slop
   bounceThreshold <- readParam w BounceThreshold
+  warmStart <- readParam w WarmStart
   nc <- readMeta w ContactCount
   -- prepare, and warm start from the last step
   forEach (toIndex nc) $ \c -> do
@@ -183,8 +184,8 @@ solve sp _ w = do
       whenPositive (0.5 - abs (pk - key)) $ do
         readArray (wPrev w) (fromIntegral prevStride * k + 2) >>= writeRef ln
         readArray (wPrev w) (fromIntegral prevStride * k + 3) >>= writeRef lt
-    lnv <- readRef ln
-    ltv <- readRef lt
+    lnv <- (warmStart *) <$> readRef ln
+    ltv <- (warmStart *) <$> readRef lt
     writeContact w c ImpulseN lnv
     writeContact w c ImpulseT ltv
     applyRow w a b normal lnv
