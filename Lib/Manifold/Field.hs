@@ -44,7 +44,7 @@ instance Field Double where
   select c t e = if c > 0 then t else e
   {-# INLINE select #-}
   floorF x
-    | isNaN x || isInfinite x = x
+    | isNaN x || isInfinite x || x == 0 = x -- keeps −0, as Math.floor does
     | otherwise = fromIntegral (floor x :: Integer)
 
 -- | @clampF lo hi x@.

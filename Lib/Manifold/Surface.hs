@@ -71,10 +71,12 @@ projectToSurfaceWith n sf@(ScalarFn f) = go n
       let v = f p
           g = fieldGradient sf p
           q = quadrance g
+          -- move only while off the surface and where the gradient is
+          -- usable; otherwise keep the point (component by component, so a
+          -- NaN gradient cannot leak in)
           moving = select (abs v - constant projectionTolerance) (select q 1 0) 0
-          s = select q (v / maxF q (constant 1e-300)) 0
-          p' = p ^-^ (s * moving) *^ g
-      in go (k - 1) p'
+          s = v / q
+      in go (k - 1) (select moving <$> (p ^-^ s *^ g) <*> p)
 
 -- | The orthogonal projection of an ambient vector onto the tangent plane with
 -- unit normal @n@.
@@ -112,8 +114,7 @@ projectAlong sf@(ScalarFn f) n = go stepProjectionIterations
       let v = f q
           slope = fieldGradient sf q `dot` n
           moving = select (abs v - constant projectionTolerance) (select (abs slope) 1 0) 0
-          lambda = select (abs slope) (v / slope) 0
-      in go (k - 1) (q ^-^ (lambda * moving) *^ n)
+      in go (k - 1) (select moving <$> (q ^-^ (v / slope) *^ n) <*> q)
 
 -- | One step of a geodesic (RATTLE): move along the velocity for time @h@,
 -- pull back onto the surface along the normal where the step began, take
