@@ -3,7 +3,8 @@
 module ADSpec (spec) where
 
 import Linear.Matrix (M33, (!*))
-import Linear.Metric (dot, norm)
+import Control.Monad (forM_)
+import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^))
 import Test.Hspec
@@ -128,7 +129,7 @@ elementarySpec = describe "grad and hessian of elementary functions (against han
       let f :: Field b => V3 b -> b
           f (V3 x y z) = sin (x * y) + exp z * cos x - x * y * z
           (v, g) = valueAndGrad f p
-          (g2, h2) = secondOrder (ScalarFn f) p
+          (g2, h2) = secondOrder (scalarFn f) p
       in v == f p && g == grad f p && g2 == g && h2 == hessian f p
   where
     unaryCase u = it ("d/dx " ++ uName u) $
@@ -190,7 +191,7 @@ spaceGradientSpec = describe "grad of the fields of the catalogue" $ do
     mapM_ (\(s, formula, ok, g) -> it (spaceName s ++ ": ∇f = " ++ formula) $
       property $ withMaxSuccess 200 $ forAll (genV3In 2) $ \p ->
         ok p ==>
-          let ad = gradFn s p
+          let ad = gradAt s p
           in counterexample ("AD " ++ showV3 ad ++ " analytic " ++ showV3 (g p)) (vecClose 1e-12 (g p) ad))
       analyticGradients
   describe "against central finite differences within 0.2 of the surface" $
@@ -199,7 +200,7 @@ spaceGradientSpec = describe "grad of the fields of the catalogue" $ do
         let f = fieldAt s
             fd1 = fdGrad fdH1 f p
             fd2 = fdGrad fdH2 f p
-            ad = gradFn s p
+            ad = gradAt s p
             stable = and (fdStable 1e-6 <$> fd1 <*> fd2)
         in (stable && norm fd2 > 1e-3) ==>
              counterexample ("p = " ++ showV3 p ++ ": AD " ++ showV3 ad ++ ", FD " ++ showV3 fd2) $
@@ -214,8 +215,8 @@ hessianSpec = describe "hessian" $ do
     mapM_ (\s -> it (spaceName s) $
       property $ withMaxSuccess 200 $ forAll (genNearSurfacePoint 0.2 s) $ \p ->
         let h = hessian (fieldFn s) p
-            fd1 = fdHessianOfGrad fdH1 (gradFn s) p
-            fd2 = fdHessianOfGrad fdH2 (gradFn s) p
+            fd1 = fdHessianOfGrad fdH1 (gradAt s) p
+            fd2 = fdHessianOfGrad fdH2 (gradAt s) p
             scale = max 1 (maximum (fmap maxAbsV fd2))
             stable = matDist fd1 fd2 <= 1e-6 * scale
         in stable ==>
@@ -225,7 +226,7 @@ hessianSpec = describe "hessian" $ do
   it "of an elementary mixture, against finite differences of grad" $
     property $ withMaxSuccess 200 $ forAll (genV3In 1.5) $ \p ->
       let f :: Field b => V3 b -> b
-          f (V3 x y z) = sin (x * y) * exp (0.5 * z) + sqrt (1 + x * x + y * y) / (2 + cos z) + atan (x - z) ** 2
+          f (V3 x y z) = sin (x * y) * exp (0.5 * z) + sqrt (1 + x * x + y * y) / (2 + cos z) + atan (x - z) ^ (2 :: Int)
           h = hessian f p
           fd = fdHessianOfGrad fdH2 (grad f) p
       in counterexample ("AD " ++ show h ++ "\nFD " ++ show fd) (matDist h fd <= 1e-6)
@@ -280,6 +281,27 @@ curvatureSpec = describe "curvature from the Hessian" $ do
   it "torus: K is positive outside (φ = 0) and negative inside (φ = π)" $ do
     gaussianCurvature tf (torusPoint 0 0.3) `shouldSatisfy` (> 0)
     gaussianCurvature tf (torusPoint pi 0.3) `shouldSatisfy` (< 0)
+  it "the torus is R = 0.8, r = 0.5 about the y axis (the constants the formulas above use)" $ do
+    (torusMajor, torusMinor) `shouldBe` (0.8, 0.5)
+    forM_ [(0, 0), (1, 2), (2.5, 4), (4, 1)] $ \(phi, psi) ->
+      let rho = 0.8 + 0.5 * cos phi
+      in abs (evalField torus (V3 (rho * cos psi) (0.5 * sin phi) (rho * sin psi))) `shouldSatisfy` (< 1e-12)
+  it "a field without unit gradient, |p|² − 1: K = 1 and H = 1 on the unit sphere" $
+    property $ withMaxSuccess 200 $ forAll genUnitV3 $ \p ->
+      let f = scalarFn (\q -> 3 * (quadrance q - 1))
+      in closeAbs 1e-9 1 (gaussianCurvature f p) .&&. closeAbs 1e-9 1 (meanCurvature f p)
+  it "trumpet ρ = e^y: K = −1/(1 + e^{2y})², H = ½(1/(e^y √(1+e^{2y})) − e^y/(1+e^{2y})^{3/2})" $
+    property $ withMaxSuccess 200 $ forAll (choose (-1.5, 1.5)) $ \y -> forAll (choose (0, 2 * pi)) $ \t ->
+      let r0 = exp y
+          p = V3 (r0 * cos t) y (r0 * sin t)
+          e2 = exp (2 * y)
+          kExp = -1 / (1 + e2) ^ (2 :: Int)
+          hExp = 0.5 * (1 / (r0 * sqrt (1 + e2)) - r0 / (1 + e2) ** 1.5)
+          k = gaussianCurvature (spaceField trumpet) p
+          h = meanCurvature (spaceField trumpet) p
+      in counterexample ("y = " ++ show y ++ ": K = " ++ show k ++ " (expected " ++ show kExp ++ "), H = "
+                         ++ show h ++ " (expected " ++ show hExp ++ ")") $
+           closeAbs 1e-9 kExp k .&&. closeAbs 1e-9 hExp h
   it "plane: K = 0 and H = 0" $
     property $ withMaxSuccess 200 $ forAll (genV3In 3) $ \p ->
       gaussianCurvature pf p == 0 .&&. meanCurvature pf p == 0

@@ -82,10 +82,16 @@ v2Norm (V2 x y) = sqrt (x * x + y * y)
 
 centroidSpec :: Spec
 centroidSpec = describe "centroidOffset and paperMomentIntegral" $ do
-  forM_ [("square", square), ("circle", circle), ("hexagon", regularPolygon 6), ("triangle", regularPolygon 3)] $ \(name, s) ->
+  forM_ [("square", square), ("circle", circle), ("hexagon", regularPolygon 6)] $ \(name, s) ->
     it ("vanish (1e-9) for the " ++ name) $ do
       v2Norm (centroidOffset s 0.7) `shouldSatisfy` (< 1e-9)
       v2Norm (paperMomentIntegral s 0.7) `shouldSatisfy` (< 1e-9)
+  -- The triangle has no central symmetry and 4096 midpoint samples do not
+  -- divide into 3 sectors, so its integrals vanish only to quadrature
+  -- accuracy (≈ 2e-7), not to rounding.
+  it "vanish to quadrature accuracy (1e-6) for the triangle" $ do
+    v2Norm (centroidOffset (regularPolygon 3) 0.7) `shouldSatisfy` (< 1e-6)
+    v2Norm (paperMomentIntegral (regularPolygon 3) 0.7) `shouldSatisfy` (< 1e-6)
   it "are non-zero for the off-centre outline s(θ) = 1 + 0.5 cos θ: centroid (17/36)·size, moment π·size²" $
     forM_ [1, 0.5] $ \size -> do
       let V2 cx cy = centroidOffset offCentre size

@@ -26,15 +26,19 @@ module TestUtil
   , fdStable
     -- * Misc
   , fieldFn
-  , gradFn
   , fieldAt
   , gradAt
   , firstPlacement
   , findManifoldExe
+  , runBytes
   , showV3
   ) where
 
-import Control.Exception (SomeException, try)
+import Control.Concurrent (forkIO)
+import Control.Concurrent.MVar (newEmptyMVar, putMVar, takeMVar)
+import Control.Exception (SomeException, evaluate, try)
+import qualified Data.ByteString as BS
+import qualified Data.ByteString.Lazy as BL
 import Data.Char (isSpace)
 import Linear.Matrix (M33)
 import Linear.Metric (dot, norm)
@@ -42,7 +46,8 @@ import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^+^), (^-^))
 import System.Directory (doesFileExist, findExecutable)
 import System.Environment (lookupEnv)
-import System.Process (readProcessWithExitCode)
+import System.IO (hClose, hSetBinaryMode)
+import System.Process
 import System.Exit (ExitCode (..))
 import Test.QuickCheck
 import Text.Printf (printf)
@@ -184,17 +189,14 @@ fdStable tol a b = abs (a - b) <= tol * max 1 (max (abs a) (abs b))
 -- Misc -----------------------------------------------------------------------------
 
 fieldFn :: Space -> (forall a. Field a => V3 a -> a)
-fieldFn s = let ScalarFn f = spaceField s in f
+fieldFn s = evalPoly (spaceField s)
 
 fieldAt :: Space -> V3 Double -> Double
 fieldAt = evalField
 
 -- | The AD gradient of a space's field.
-gradFn :: Space -> V3 Double -> V3 Double
-gradFn s = fieldGradient (spaceField s)
-
 gradAt :: Space -> V3 Double -> V3 Double
-gradAt = gradFn
+gradAt s = fieldGradient (spaceField s)
 
 -- | The first placement of a space's default scene.
 firstPlacement :: Space -> V3 Double
@@ -221,3 +223,19 @@ findManifoldExe = do
           if ok then pure p else fail ("cabal list-bin gave " ++ show p ++ ", which does not exist")
         _ -> fail "cannot find the manifold executable: not on PATH, MANIFOLD_EXE unset, cabal list-bin failed"
   where trim = reverse . dropWhile isSpace . reverse . dropWhile isSpace
+
+-- | Run a program with arguments and no input; its stdout as raw bytes (the
+-- JSON is UTF-8 whatever the locale) and its stderr as raw bytes too.
+runBytes :: FilePath -> [String] -> IO (ExitCode, BL.ByteString, BS.ByteString)
+runBytes exe args = do
+  (Just hin, Just hout, Just herr, ph) <-
+    createProcess (proc exe args) { std_in = CreatePipe, std_out = CreatePipe, std_err = CreatePipe }
+  hClose hin
+  hSetBinaryMode hout True
+  hSetBinaryMode herr True
+  errVar <- newEmptyMVar
+  _ <- forkIO (BS.hGetContents herr >>= evaluate >>= putMVar errVar)
+  out <- BS.hGetContents hout
+  err <- takeMVar errVar
+  code <- waitForProcess ph
+  pure (code, BL.fromStrict out, err)

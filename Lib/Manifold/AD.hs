@@ -9,6 +9,7 @@ module Manifold.AD
   , gradientD
   , variables
   , grad
+  , scalarFn
   , valueAndGrad
   , hessian
   , gaussianCurvature
@@ -87,6 +88,13 @@ instance Field a => Field (D a) where
 variables :: Num a => V3 a -> V3 (D a)
 variables (V3 x y z) = V3 (D x (V3 1 0 0)) (D y (V3 0 1 0)) (D z (V3 0 0 1))
 
+-- | A scalar function of a point, with its gradient by AD, and both also
+-- compiled for 'Double' (see 'ScalarFn'). Inlined where it is used so that
+-- GHC specialises the function there.
+scalarFn :: (forall a. Field a => V3 a -> a) -> ScalarFn
+scalarFn f = ScalarFnOf f (grad f) f (grad f)
+{-# INLINE scalarFn #-}
+
 -- | The gradient of a scalar function of a point.
 grad :: Field a => (V3 (D a) -> D a) -> V3 a -> V3 a
 grad f = gradientD . f . variables
@@ -100,8 +108,8 @@ hessian f p = fmap gradientD (gradientD (f (variables (variables p))))
 
 -- | Value, gradient and Hessian at once (one nested evaluation).
 secondOrder :: Field a => ScalarFn -> V3 a -> (V3 a, M33 a)
-secondOrder (ScalarFn f) p =
-  let D (D _ g) rows = f (variables (variables p))
+secondOrder sf p =
+  let D (D _ g) rows = evalPoly sf (variables (variables p))
   in (g, fmap gradientD rows)
 
 -- | Gaussian curvature of the level set through @p@ of a scalar field:

@@ -21,7 +21,6 @@ import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^))
 
-import Manifold.AD (grad)
 import Manifold.Body (PolygonParams (..))
 import Manifold.Field
 import Manifold.Space
@@ -224,7 +223,8 @@ vertexContacts l w owner keyBase x y sgn selfScale = do
 boundaryContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 boundaryContacts sp l w i = case spaceBoundary sp of
   Nothing -> pure ()
-  Just (ScalarFn b) -> do
+  Just bf -> do
+    let b = evalFn bf
     let nd = fromIntegral (polyDirections (polygon l))
         key = 8
     n <- read3 (wNormal w) i
@@ -239,7 +239,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
     whenPositive best $ do
       dd <- readRef dDeep
       q0 <- outlineVertex l w i (toIndex dd)
-      dir0 <- share3 (safeNormalize (grad b q0))
+      dir0 <- share3 (safeNormalize (gradFn bf q0))
       t <- share3 (n `cross` dir0)
       lo <- newRef 1e300
       hi <- newRef (-1e300)
@@ -258,7 +258,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
       dHi <- readRef hiD
       let emitAt slot dv = do
             q <- outlineVertex l w i (toIndex dv)
-            g <- share3 (grad b q)
+            g <- share3 (gradFn bf q)
             gl <- share (norm g)
             bv <- share (b q)
             let dir = safeNormalize g
@@ -354,7 +354,7 @@ selfContacts sp l w i = do
       dir <- share3 (safeNormalize (tangentProjection n m0))
       emitContact l w i (selfKey) i (-1) point dir point dir best 0.6
   where
-    unitNormalAt = safeNormalize . grad (let ScalarFn f = spaceField sp in f)
+    unitNormalAt = safeNormalize . gradFn (spaceField sp)
     selfKey = 12
 
 -- | Every contact of this step, owned by the lower-numbered body of each

@@ -39,6 +39,12 @@ class Floating a => Field a where
   -- | The largest integer not above the argument (derivative 0).
   floorF :: a -> a
 
+  -- | A scalar function's value, and its gradient, at this scalar.
+  evalFn :: ScalarFn -> V3 a -> a
+  evalFn f = evalPoly f
+  gradFn :: ScalarFn -> V3 a -> V3 a
+  gradFn f = gradPoly f
+
 instance Field Double where
   constant = id
   select c t e = if c > 0 then t else e
@@ -46,6 +52,8 @@ instance Field Double where
   floorF x
     | isNaN x || isInfinite x || x == 0 = x -- keeps −0, as Math.floor does
     | otherwise = fromIntegral (floor x :: Integer)
+  evalFn = evalDouble
+  gradFn = gradDouble
 
 -- | @clampF lo hi x@.
 clampF :: Field a => a -> a -> a -> a
@@ -67,8 +75,16 @@ smoothMinF k a b =
   in b * (1 - h) + a * h - k * h * (1 - h)
 
 -- | A scalar function of a point, polymorphic in the scalar: a distance field,
--- a boundary @b(p) >= 0@, a curvature.
-newtype ScalarFn = ScalarFn (forall a. Field a => V3 a -> a)
+-- a boundary @b(p) >= 0@. Built by 'Manifold.AD.scalarFn', which also keeps
+-- the function and its gradient compiled for 'Double': a function stored in a
+-- record cannot be specialised where it is used, so the native engine would
+-- otherwise run every field through dictionaries.
+data ScalarFn = ScalarFnOf
+  { evalPoly :: forall a. Field a => V3 a -> a
+  , gradPoly :: forall a. Field a => V3 a -> V3 a -- ^ by forward AD
+  , evalDouble :: V3 Double -> Double
+  , gradDouble :: V3 Double -> V3 Double
+  }
 
 -- | A vector field of R³, polymorphic in the scalar (e.g. gravity).
 newtype VectorFn = VectorFn (forall a. Field a => V3 a -> V3 a)

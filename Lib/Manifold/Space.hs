@@ -83,7 +83,7 @@ hasBoundary = maybe False (const True) . spaceBoundary
 
 -- | The field of a space, at any scalar.
 field :: Field a => Space -> V3 a -> a
-field s = let ScalarFn f = spaceField s in f
+field s = evalFn (spaceField s)
 
 evalField :: Space -> V3 Double -> Double
 evalField = field
@@ -93,7 +93,7 @@ evalField = field
 evalBoundary :: Field a => Space -> V3 a -> a
 evalBoundary s p = case spaceBoundary s of
   Nothing -> 1
-  Just (ScalarFn b) -> b p
+  Just b -> evalFn b p
 
 evalGravity :: Field a => Space -> V3 a -> V3 a
 evalGravity s = let VectorFn g = spaceGravity s in g

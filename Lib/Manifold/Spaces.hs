@@ -14,6 +14,7 @@ import Linear.Metric (norm)
 import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..))
 
+import Manifold.AD (scalarFn)
 import Manifold.Field
 import Manifold.Space
 
@@ -65,28 +66,28 @@ look eye = Camera eye (V3 0 0 0) (V3 0 1 0) 45
 -- The catalogue ------------------------------------------------------------
 
 plane :: Space
-plane = (space "plane" "the flat plane y = 0; gravity along -z" (ScalarFn planeField))
+plane = (space "plane" "the flat plane y = 0; gravity along -z" (scalarFn planeField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 3 3)
   , spaceScene = grid [-0.6, 0, 0.6] [-0.3, 0.3] SquareShape 0.2
   }
 
 sphere :: Space
-sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (ScalarFn unitSphereField))
+sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (scalarFn unitSphereField))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
   , spaceCamera = look (V3 0 1.2 3)
   , spaceScene = ring 6 0.6 0.8 SquareShape 0.2
   }
 
 torus :: Space
-torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 0 outside, < 0 inside)" (ScalarFn torusField))
+torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 0 outside, < 0 inside)" (scalarFn torusField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.2 2.8)
   , spaceScene = ring 6 1.3 0 SquareShape 0.18
   }
 
 trumpet :: Space
-trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narrowing downwards; bodies jam in the neck" (ScalarFn trumpetField))
+trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narrowing downwards; bodies jam in the neck" (scalarFn trumpetField))
   { spaceGravity = uniformGravity (V3 0 (-0.6) 0)
   , spaceCamera = Camera (V3 0 1.5 4.5) (V3 0 (-0.5) 0) (V3 0 1 0) 45
   , spaceScene = ring 4 (exp 0.3) 0.3 SquareShape 0.3
@@ -95,7 +96,7 @@ trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narr
   where trumpetField p@(V3 _ y _) = radial p - exp y
 
 cube :: Space
-cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (ScalarFn roundedCube))
+cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (scalarFn roundedCube))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
   , spaceCamera = look (V3 1.8 1.8 2.6)
   , spaceScene = [Placement (V3 x 0.9 z) SquareShape 0.2 | (x, z) <- [(-0.4, -0.4), (0.4, -0.4), (0, 0.4)]]
@@ -109,24 +110,24 @@ cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (
       in outside + inside - 0.3
 
 hemisphere :: Space
-hemisphere = (space "hemisphere" "the lower half of the unit sphere (y <= 0), a bowl with a rim" (ScalarFn unitSphereField))
-  { spaceBoundary = Just (ScalarFn (\(V3 _ y _) -> negate y))
+hemisphere = (space "hemisphere" "the lower half of the unit sphere (y <= 0), a bowl with a rim" (scalarFn unitSphereField))
+  { spaceBoundary = Just (scalarFn (\(V3 _ y _) -> negate y))
   , spaceGravity = uniformGravity (V3 0 (-4) 0)
   , spaceCamera = look (V3 0 2.2 2.2)
   , spaceScene = ring 5 0.5 (-0.8) SquareShape 0.18
   }
 
 disc :: Space
-disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (ScalarFn planeField))
-  { spaceBoundary = Just (ScalarFn (\p -> 1 - radial p))
+disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (scalarFn planeField))
+  { spaceBoundary = Just (scalarFn (\p -> 1 - radial p))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.2 1.6)
   , spaceScene = grid [-0.4, 0, 0.4] [-0.2, 0.3] SquareShape 0.15
   }
 
 rectangle :: Space
-rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane y = 0, a box with walls" (ScalarFn planeField))
-  { spaceBoundary = Just (ScalarFn (\(V3 x _ z) -> minF (1.5 - abs x) (1 - abs z)))
+rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane y = 0, a box with walls" (scalarFn planeField))
+  { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (1.5 - abs x) (1 - abs z)))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.8 2.0)
   , spaceScene = grid [-0.8, -0.3, 0.3, 0.8] [-0.3, 0.3] SquareShape 0.18
@@ -135,7 +136,7 @@ rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane 
 -- | Gravity for quotient spaces must be odd (@g(−p) = −g(p)@) so that a
 -- body and its image feel the same force.
 projectivePlane :: Space
-projectivePlane = (space "projective-plane" "the real projective plane: the unit sphere with p ~ -p; gravity pulls to the pole (0,±1,0), one point" (ScalarFn unitSphereField))
+projectivePlane = (space "projective-plane" "the real projective plane: the unit sphere with p ~ -p; gravity pulls to the pole (0,±1,0), one point" (scalarFn unitSphereField))
   { spaceQuotient = Antipodal
   , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (4 * y) 0)
   , spaceCamera = look (V3 0 1.2 3)
@@ -143,7 +144,7 @@ projectivePlane = (space "projective-plane" "the real projective plane: the unit
   }
 
 kleinBottle :: Space
-kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Klein bottle (the paper's projective torus); gravity pulls to the axis" (ScalarFn torusField))
+kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Klein bottle (the paper's projective torus); gravity pulls to the axis" (scalarFn torusField))
   { spaceQuotient = Antipodal
   , spaceGravity = VectorFn (\(V3 x _ z) -> V3 (-3 * x) 0 (-3 * z))
   , spaceCamera = look (V3 0 2.2 2.8)
@@ -151,17 +152,17 @@ kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Kle
   }
 
 moebius :: Space
-moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a Moebius strip; gravity pulls to the centre line" (ScalarFn (\p -> radial p - 1)))
+moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a Moebius strip; gravity pulls to the centre line" (scalarFn (\p -> radial p - 1)))
   { spaceQuotient = Antipodal
-  , spaceBoundary = Just (ScalarFn (\(V3 _ y _) -> 0.4 - abs y))
+  , spaceBoundary = Just (scalarFn (\(V3 _ y _) -> 0.4 - abs y))
   , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (-4 * y) 0)
   , spaceCamera = look (V3 0 2.2 2.8)
   , spaceScene = ring 3 1 0.1 SquareShape 0.15
   }
 
 funnel :: Space
-funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x| <= exp(0.9z - 0.7), |z| <= 1; gravity pushes into the neck" (ScalarFn planeField))
-  { spaceBoundary = Just (ScalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
+funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x| <= exp(0.9z - 0.7), |z| <= 1; gravity pushes into the neck" (scalarFn planeField))
+  { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.6 1.2)
   , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]

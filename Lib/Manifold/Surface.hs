@@ -26,12 +26,11 @@ import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^))
 
-import Manifold.AD (grad)
 import Manifold.Field
 
 -- | The gradient of a field, by forward AD.
 fieldGradient :: Field a => ScalarFn -> V3 a -> V3 a
-fieldGradient (ScalarFn f) = grad f
+fieldGradient = gradFn
 
 -- | @v/|v|@, or the zero vector where @|v| = 0@ (never NaN).
 safeNormalize :: Field a => V3 a -> V3 a
@@ -47,7 +46,7 @@ unitNormal f = safeNormalize . fieldGradient f
 
 -- | The first-order distance to the surface, @f/|∇f|@.
 distanceEstimate :: Field a => ScalarFn -> V3 a -> a
-distanceEstimate sf@(ScalarFn f) p = f p / norm (fieldGradient sf p)
+distanceEstimate sf p = evalFn sf p / norm (fieldGradient sf p)
 
 projectionTolerance :: Double
 projectionTolerance = 1e-10
@@ -64,11 +63,11 @@ projectToSurface :: Field a => ScalarFn -> V3 a -> V3 a
 projectToSurface = projectToSurfaceWith defaultProjectionIterations
 
 projectToSurfaceWith :: Field a => Int -> ScalarFn -> V3 a -> V3 a
-projectToSurfaceWith n sf@(ScalarFn f) = go n
+projectToSurfaceWith n sf = go n
   where
     go 0 p = p
     go k p =
-      let v = f p
+      let v = evalFn sf p
           g = fieldGradient sf p
           q = quadrance g
           -- move only while off the surface and where the gradient is
@@ -106,12 +105,12 @@ stepProjectionIterations = 3
 -- symmetry of the surface gives (Clairaut's relation on a surface of
 -- revolution). Where @∇f · n@ vanishes the point is left where it is.
 projectAlong :: forall a. Field a => ScalarFn -> V3 a -> V3 a -> V3 a
-projectAlong sf@(ScalarFn f) n = go stepProjectionIterations
+projectAlong sf n = go stepProjectionIterations
   where
     go :: Int -> V3 a -> V3 a
     go 0 q = q
     go k q =
-      let v = f q
+      let v = evalFn sf q
           slope = fieldGradient sf q `dot` n
           moving = select (abs v - constant projectionTolerance) (select (abs slope) 1 0) 0
       in go (k - 1) (select moving <$> (q ^-^ (v / slope) *^ n) <*> q)
