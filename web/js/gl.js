@@ -1,0 +1,191 @@
+// WebGL2 plumbing: the context, shader compilation with readable errors, and
+// render targets (the float framebuffer the tracer writes, colour buffers for
+// antialiasing). Nothing here knows about spaces or physics.
+(function (W) {
+  "use strict";
+
+  // An error the page shows in words. `kind` says what failed ("webgl2",
+  // "float-framebuffer", "shader", "load", "context-lost"); `log` holds a
+  // compiler log or other detail, `source` the shader text it refers to.
+  class PageError extends Error {
+    constructor(kind, message, log, source) {
+      super(message);
+      this.name = "PageError";
+      this.kind = kind;
+      this.log = log || "";
+      this.source = source || "";
+    }
+    // The whole text: message, then the log.
+    text() {
+      return this.log ? this.message + "\n" + this.log : this.message;
+    }
+  }
+
+  const CONTEXT_ATTRIBUTES = {
+    alpha: false,
+    antialias: false, // the tracer antialiases itself (FXAA or supersampling)
+    depth: false,
+    stencil: false,
+    premultipliedAlpha: false,
+    preserveDrawingBuffer: false,
+    powerPreference: "high-performance",
+  };
+
+  // A WebGL2 context with float colour buffers, or a PageError saying which is missing.
+  function createContext(canvas) {
+    const gl = canvas.getContext("webgl2", CONTEXT_ATTRIBUTES);
+    if (!gl) {
+      throw new PageError("webgl2",
+        "This browser (or its graphics driver) does not offer WebGL2, which the sphere tracer needs. " +
+        "Try a current Chrome, Firefox or Safari, or enable hardware acceleration.");
+    }
+    if (!gl.getExtension("EXT_color_buffer_float")) {
+      throw new PageError("float-framebuffer",
+        "This browser's WebGL2 cannot render into floating-point framebuffers " +
+        "(EXT_color_buffer_float is missing); the traced surface positions used for shading and picking " +
+        "need them.");
+    }
+    return gl;
+  }
+
+  function compileShader(gl, type, source, label) {
+    const shader = gl.createShader(type);
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
+      const log = (gl.getShaderInfoLog(shader) || "(the driver gave no log)").trim();
+      gl.deleteShader(shader);
+      const stage = type === gl.VERTEX_SHADER ? "vertex" : "fragment";
+      throw new PageError("shader", "The " + stage + " shader of the " + label + " failed to compile.", log, source);
+    }
+    return shader;
+  }
+
+  // Compiles and links a program; returns { program, uniform(name) → location }.
+  function createProgram(gl, vertexSource, fragmentSource, label) {
+    const vs = compileShader(gl, gl.VERTEX_SHADER, vertexSource, label);
+    let fs;
+    try {
+      fs = compileShader(gl, gl.FRAGMENT_SHADER, fragmentSource, label);
+    } catch (e) {
+      gl.deleteShader(vs);
+      throw e;
+    }
+    const program = gl.createProgram();
+    gl.attachShader(program, vs);
+    gl.attachShader(program, fs);
+    gl.linkProgram(program);
+    gl.deleteShader(vs);
+    gl.deleteShader(fs);
+    if (!gl.getProgramParameter(program, gl.LINK_STATUS) && !gl.isContextLost()) {
+      const log = (gl.getProgramInfoLog(program) || "(the driver gave no log)").trim();
+      gl.deleteProgram(program);
+      throw new PageError("shader", "The shader program of the " + label + " failed to link.", log, fragmentSource);
+    }
+    const locations = new Map();
+    return {
+      program: program,
+      uniform: function (name) {
+        if (!locations.has(name)) locations.set(name, gl.getUniformLocation(program, name));
+        return locations.get(name);
+      },
+    };
+  }
+
+  // The vertex shader of every pass: one triangle covering the viewport,
+  // generated from gl_VertexID (no vertex buffers).
+  const FULLSCREEN_VERTEX = [
+    "#version 300 es",
+    "void main() {",
+    "  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));",
+    "  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);",
+    "}",
+  ].join("\n");
+
+  function drawFullscreen(gl, vao) {
+    gl.bindVertexArray(vao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.bindVertexArray(null);
+  }
+
+  function makeTexture(gl, width, height, internalFormat, format, type, filter) {
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, internalFormat, width, height);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    return tex;
+  }
+
+  function checkComplete(gl, what) {
+    const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+    if (status !== gl.FRAMEBUFFER_COMPLETE) {
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      throw new PageError("float-framebuffer",
+        "The " + what + " framebuffer is incomplete (status 0x" + status.toString(16) + "); " +
+        "this browser cannot render into it.");
+    }
+  }
+
+  // A framebuffer with `count` RGBA32F colour attachments (nearest filtering).
+  function createFloatTarget(gl, width, height, count) {
+    const fb = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+    const textures = [];
+    const buffers = [];
+    for (let i = 0; i < count; i++) {
+      const tex = makeTexture(gl, width, height, gl.RGBA32F, gl.RGBA, gl.FLOAT, gl.NEAREST);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i, gl.TEXTURE_2D, tex, 0);
+      textures.push(tex);
+      buffers.push(gl.COLOR_ATTACHMENT0 + i);
+    }
+    gl.drawBuffers(buffers);
+    checkComplete(gl, "float (RGBA32F)");
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return { fb: fb, textures: textures, buffers: buffers, width: width, height: height };
+  }
+
+  // A framebuffer with one RGBA8 colour attachment (linear filtering).
+  function createColorTarget(gl, width, height) {
+    const fb = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+    const tex = makeTexture(gl, width, height, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, gl.LINEAR);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+    checkComplete(gl, "colour (RGBA8)");
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return { fb: fb, textures: [tex], buffers: [gl.COLOR_ATTACHMENT0], width: width, height: height };
+  }
+
+  function deleteTarget(gl, target) {
+    if (!target) return;
+    gl.deleteFramebuffer(target.fb);
+    target.textures.forEach(function (t) { gl.deleteTexture(t); });
+  }
+
+  // Reads one RGBA32F texel of attachment `index` of a float target;
+  // (x, y) in GL convention (origin bottom-left).
+  function readFloatPixel(gl, target, index, x, y) {
+    const out = new Float32Array(4);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, target.fb);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0 + index);
+    gl.readPixels(x, y, 1, 1, gl.RGBA, gl.FLOAT, out);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    return out;
+  }
+
+  W.ManifoldWeb = W.ManifoldWeb || {};
+  W.ManifoldWeb.gl = {
+    PageError: PageError,
+    createContext: createContext,
+    createProgram: createProgram,
+    FULLSCREEN_VERTEX: FULLSCREEN_VERTEX,
+    drawFullscreen: drawFullscreen,
+    createFloatTarget: createFloatTarget,
+    createColorTarget: createColorTarget,
+    deleteTarget: deleteTarget,
+    readFloatPixel: readFloatPixel,
+  };
+})(globalThis);

@@ -1,0 +1,481 @@
+// The sphere tracer's host code and shaders. The space-specific GLSL
+// (field, gradient, boundary, curvature) comes only from web/gen; this file
+// supplies the marching loop that uses it, the shading, and the
+// antialiasing passes.
+//
+// Passes per frame:
+//   1. trace  → float framebuffer (RGBA32F × 2) at scale s (s = 2 for 2× supersampling,
+//               0.5 for a preview frame while the view moves on a slow GPU, else 1):
+//        attachment 0 = (x, y, z, distance from the eye) of the surface point; w = -1 on background
+//        attachment 1 = (unit normal from the generated gradient, Gaussian curvature, or 0
+//                        when curvature colouring is off)
+//   2. shade  → colour (lighting, background gradient, optional curvature colouring);
+//        into an RGBA8 buffer when antialiasing or s ≠ 1, else straight to the canvas
+//   (hook) the page's overlay (the engine's body polygons, later) draws into the same colour buffer
+//   3. post   → canvas: FXAA, or resampling (the 2×2 box filter of the supersampled buffer,
+//               the bilinear upscaling of a preview)
+(function (W) {
+  "use strict";
+  const G = W.ManifoldWeb.gl;
+
+  const MAX_STEPS = 192;
+
+  // Appended to the generated GLSL. Uses only field, gradient, boundary and curvature.
+  const TRACE_MAIN = `
+uniform vec3 uEye;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalf;
+uniform float uAspect;
+uniform vec2 uResolution;
+uniform float uBounds;
+uniform float uPixelAngle;
+uniform bool uCurvature;
+
+layout(location = 0) out vec4 outPosition;
+layout(location = 1) out vec4 outNormal;
+
+const int MAX_STEPS = ${MAX_STEPS};
+const float RELAX = 0.9;
+
+// |f| / |grad f|: the distance estimate; falls back to |f| where the
+// gradient is zero, infinite or NaN (e.g. on an axis of symmetry).
+float distanceEstimate(vec3 p, float f) {
+  float g = length(gradient(p));
+  return (g > 1e-12 && g < 1e20) ? abs(f) / g : abs(f);
+}
+
+// Newton's method on f along the ray, staying within maxDelta of t; returns
+// the sample with the smallest |f| (t itself when the ray only grazes the surface).
+float refineAlongRay(vec3 ro, vec3 rd, float t, float maxDelta) {
+  float t0 = t;
+  float best = t;
+  float bestF = 1e30;
+  for (int k = 0; k < 4; k++) {
+    vec3 p = ro + rd * t;
+    float f = field(p);
+    if (abs(f) < bestF) { bestF = abs(f); best = t; }
+    vec3 g = gradient(p);
+    float den = dot(g, rd);
+    if (!(abs(den) > 1e-4 * length(g))) break;
+    float tn = clamp(t - f / den, t0 - maxDelta, t0 + maxDelta);
+    if (abs(tn - t) < 1e-6 * t) break; // converged to float precision
+    t = tn;
+  }
+  return best;
+}
+
+// Newton steps on f along the gradient: put a point that is within a pixel
+// of the surface (a silhouette) onto it. No-op for points already on it.
+vec3 projectToSurface(vec3 p) {
+  for (int k = 0; k < 2; k++) {
+    float f = field(p);
+    vec3 g = gradient(p);
+    float gg = dot(g, g);
+    if (!(gg > 1e-24 && gg < 1e30)) break;
+    vec3 step = g * (f / gg);
+    p -= step;
+    if (dot(step, step) < 1e-14 * (1.0 + dot(p, p))) break;
+  }
+  return p;
+}
+
+// The sign change of f along the ray in [a, b] (fa = f(a), fb = f(b) of
+// opposite signs): regula falsi with the Illinois rule, then bisection's guarantee.
+float bracketRoot(vec3 ro, vec3 rd, float a, float b, float fa, float fb) {
+  int side = 0;
+  for (int k = 0; k < 12; k++) {
+    float m = (a * fb - b * fa) / (fb - fa);
+    if (!(m > a && m < b)) m = 0.5 * (a + b);
+    float fm = field(ro + rd * m);
+    if ((fm < 0.0) == (fa < 0.0)) {
+      a = m; fa = fm;
+      if (side == -1) fb *= 0.5;
+      side = -1;
+    } else {
+      b = m; fb = fm;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    }
+    if (b - a < 1e-6 * b) break;
+  }
+  return abs(fa) < abs(fb) ? a : b;
+}
+
+void main() {
+  vec2 s = gl_FragCoord.xy / uResolution * 2.0 - 1.0;
+  vec3 rd = normalize(uForward + (s.x * uTanHalf * uAspect) * uRight + (s.y * uTanHalf) * uUp);
+  vec3 ro = uEye;
+  outPosition = vec4(0.0, 0.0, 0.0, -1.0);
+  outNormal = vec4(0.0);
+
+  // march only inside the ball of radius uBounds about the origin
+  float b = dot(ro, rd);
+  float disc = b * b - (dot(ro, ro) - uBounds * uBounds);
+  if (disc <= 0.0) return;
+  float sq = sqrt(disc);
+  float tFar = -b + sq;
+  if (tFar <= 0.0) return;
+  float t = max(-b - sq, 0.0);
+
+  float tPrev = t;
+  float fPrev = 0.0;
+  bool checkSign = false;
+  bool found = false;
+  vec3 hit = vec3(0.0);
+  float lastD = 1e30;
+  float lastEps = 0.0;
+
+  for (int i = 0; i < MAX_STEPS; i++) {
+    vec3 p = ro + rd * t;
+    float f = field(p);
+    float eps = 0.5 * uPixelAngle * t + 1e-5; // half a pixel's footprint at t
+    if (checkSign && ((f < 0.0) != (fPrev < 0.0))) {
+      // the step from tPrev crossed the surface
+      vec3 q = projectToSurface(ro + rd * bracketRoot(ro, rd, tPrev, t, fPrev, f));
+      if (boundary(q) >= 0.0) { found = true; hit = q; break; }
+      // outside the allowed region: go on from t, already past it
+    }
+    float d = distanceEstimate(p, f);
+    lastD = d;
+    lastEps = eps;
+    if (d < eps) {
+      float tr = refineAlongRay(ro, rd, t, 4.0 * eps);
+      vec3 q = projectToSurface(ro + rd * tr);
+      if (boundary(q) >= 0.0) { found = true; hit = q; break; }
+      // outside the allowed region: step through the surface and march on
+      tPrev = t;
+      t = max(t, tr) + 2.0 * eps;
+      checkSign = false;
+      if (t >= tFar) break;
+      continue;
+    }
+    if (t >= tFar) break;
+    tPrev = t;
+    fPrev = f;
+    checkSign = true;
+    t = min(t + d * RELAX, tFar);
+  }
+  if (!found && lastD < 2.0 * lastEps) {
+    // out of steps right next to the surface (grazing rays): take it
+    vec3 q = projectToSurface(ro + rd * t);
+    if (boundary(q) >= 0.0) { found = true; hit = q; }
+  }
+  if (!found) return;
+
+  vec3 g = gradient(hit);
+  float gLen = length(g);
+  vec3 n = (gLen > 1e-20 && gLen < 1e30) ? g / gLen : -rd;
+  float k = uCurvature ? curvature(hit) : 0.0;
+  outPosition = vec4(hit, length(hit - ro));
+  outNormal = vec4(n, (abs(k) < 1e20) ? k : 0.0);
+}
+`;
+
+  const SHADE_FRAGMENT = `#version 300 es
+precision highp float;
+precision highp int;
+uniform highp sampler2D uPosition;
+uniform highp sampler2D uNormal;
+uniform vec3 uEye;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform vec2 uResolution;
+uniform vec3 uBackgroundTop;
+uniform vec3 uBackgroundBottom;
+uniform bool uCurvature;
+uniform float uCurvatureScale;
+uniform bool uGrid;
+uniform float uGridSpacing;
+uniform float uLineWidth; // grid line width in pixels of this buffer
+out vec4 outColor;
+
+vec3 toLinear(vec3 c) { return pow(c, vec3(2.2)); }
+vec3 toDisplay(vec3 c) { return pow(clamp(c, 0.0, 1.0), vec3(1.0 / 2.2)); }
+
+void main() {
+  ivec2 ij = ivec2(gl_FragCoord.xy);
+  vec4 P = texelFetch(uPosition, ij, 0);
+  // grid coordinates and their change per pixel (derivatives before any branch)
+  vec3 q = P.xyz / uGridSpacing;
+  vec3 qw = fwidth(q);
+  vec3 background = mix(uBackgroundBottom, uBackgroundTop, gl_FragCoord.y / uResolution.y);
+  if (!(P.w > 0.0)) { outColor = vec4(background, 1.0); return; }
+
+  vec4 N = texelFetch(uNormal, ij, 0);
+  vec3 n = normalize(N.xyz);
+  vec3 view = normalize(uEye - P.xyz);
+  float facing = dot(n, view);
+  if (facing < 0.0) { n = -n; facing = -facing; } // two-sided: light the side we see
+
+  vec3 albedo = vec3(0.86, 0.80, 0.70);
+  if (uCurvature) {
+    // white at K = 0, red for K > 0, blue for K < 0
+    float c = tanh(N.w * uCurvatureScale);
+    albedo = c >= 0.0 ? mix(vec3(0.93), vec3(0.86, 0.12, 0.10), c)
+                      : mix(vec3(0.93), vec3(0.12, 0.30, 0.90), -c);
+  }
+  if (uGrid) {
+    // contour lines of x, y and z on the surface, one pixel wide; each family fades
+    // where the surface is nearly parallel to its planes or the lines get too dense
+    vec3 lineDist = abs(fract(q - 0.5) - 0.5) / max(qw, vec3(1e-6));
+    vec3 line = 1.0 - clamp(lineDist - 0.5 * uLineWidth, 0.0, 1.0);
+    vec3 across = sqrt(max(1.0 - n * n, 0.0));
+    vec3 sparse = 1.0 - smoothstep(vec3(0.12), vec3(0.35), qw * uLineWidth);
+    vec3 g = line * smoothstep(vec3(0.15), vec3(0.5), across) * sparse;
+    albedo *= 1.0 - 0.2 * max(g.x, max(g.y, g.z));
+  }
+  vec3 base = toLinear(albedo);
+
+  // lights fixed to the camera: a warm key from the upper left, a cool fill from the right
+  vec3 key = normalize(-0.45 * uRight + 0.75 * uUp - 0.5 * uForward);
+  vec3 fill = normalize(0.8 * uRight - 0.1 * uUp - 0.6 * uForward);
+  float dKey = max(dot(n, key), 0.0);
+  float dFill = max(dot(n, fill), 0.0);
+  vec3 h = normalize(key + view);
+  float spec = dKey > 0.0 ? pow(max(dot(n, h), 0.0), 60.0) : 0.0;
+  float sky = 0.5 + 0.5 * dot(n, uUp);
+  vec3 ambient = mix(vec3(0.05, 0.045, 0.04), vec3(0.14, 0.15, 0.18), sky);
+  float rim = pow(1.0 - facing, 4.0);
+
+  vec3 c = base * (ambient + 1.0 * dKey * vec3(1.0, 0.96, 0.9) + 0.3 * dFill * vec3(0.75, 0.85, 1.0))
+         + 0.28 * spec * vec3(1.0, 0.98, 0.95)
+         + 0.06 * rim * vec3(0.7, 0.8, 1.0);
+  outColor = vec4(toDisplay(c), 1.0);
+}
+`;
+
+  // FXAA (after Timothy Lottes' FXAA, the compact PC variant).
+  const FXAA_FRAGMENT = `#version 300 es
+precision highp float;
+uniform sampler2D uColor;
+uniform vec2 uInvResolution;
+out vec4 outColor;
+float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
+void main() {
+  vec2 uv = gl_FragCoord.xy * uInvResolution;
+  vec3 cNW = texture(uColor, uv + vec2(-1.0, -1.0) * uInvResolution).rgb;
+  vec3 cNE = texture(uColor, uv + vec2( 1.0, -1.0) * uInvResolution).rgb;
+  vec3 cSW = texture(uColor, uv + vec2(-1.0,  1.0) * uInvResolution).rgb;
+  vec3 cSE = texture(uColor, uv + vec2( 1.0,  1.0) * uInvResolution).rgb;
+  vec3 cM = texture(uColor, uv).rgb;
+  float lNW = luma(cNW), lNE = luma(cNE), lSW = luma(cSW), lSE = luma(cSE), lM = luma(cM);
+  float lMin = min(lM, min(min(lNW, lNE), min(lSW, lSE)));
+  float lMax = max(lM, max(max(lNW, lNE), max(lSW, lSE)));
+  if (lMax - lMin < max(0.0312, lMax * 0.125)) { outColor = vec4(cM, 1.0); return; }
+  vec2 dir = vec2(-((lNW + lNE) - (lSW + lSE)), (lNW + lSW) - (lNE + lSE));
+  float reduce = max((lNW + lNE + lSW + lSE) * (0.25 / 8.0), 1.0 / 128.0);
+  float rcpMin = 1.0 / (min(abs(dir.x), abs(dir.y)) + reduce);
+  dir = clamp(dir * rcpMin, vec2(-8.0), vec2(8.0)) * uInvResolution;
+  vec3 a = 0.5 * (texture(uColor, uv + dir * (1.0 / 3.0 - 0.5)).rgb +
+                  texture(uColor, uv + dir * (2.0 / 3.0 - 0.5)).rgb);
+  vec3 b = a * 0.5 + 0.25 * (texture(uColor, uv - dir * 0.5).rgb +
+                             texture(uColor, uv + dir * 0.5).rgb);
+  float lB = luma(b);
+  outColor = vec4((lB < lMin || lB > lMax) ? a : b, 1.0);
+}
+`;
+
+  // Resampling to the canvas with one bilinear tap: the 2×2 box filter of a
+  // supersampled buffer, or the upscaling of a half-resolution preview.
+  const RESAMPLE_FRAGMENT = `#version 300 es
+precision highp float;
+uniform sampler2D uColor;
+uniform vec2 uInvResolution;
+out vec4 outColor;
+void main() {
+  outColor = vec4(texture(uColor, gl_FragCoord.xy * uInvResolution).rgb, 1.0);
+}
+`;
+
+  const ANTIALIAS_MODES = ["fxaa", "ssaa", "off"];
+
+  // The full fragment shader of the trace pass for a space's GLSL. `#line`
+  // numbers the generated part as source 1 and the tracer as source 2, so a
+  // compiler log line "ERROR: 1:12" points at line 12 of the space's glsl.
+  function traceSource(spaceGlsl) {
+    return "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
+      "#line 1 1\n" + spaceGlsl + "\n#line 1 2\n" + TRACE_MAIN;
+  }
+
+  class Tracer {
+    constructor(gl) {
+      this.gl = gl;
+      this.vao = gl.createVertexArray();
+      this.traceProgram = null;
+      this.shadeProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, SHADE_FRAGMENT, "shading pass");
+      this.fxaaProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, FXAA_FRAGMENT, "FXAA pass");
+      this.resampleProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, RESAMPLE_FRAGMENT, "resampling pass");
+      this.buffers = new Map(); // "W×H" → { float (RGBA32F × 2), color (RGBA8) or null }
+      this.current = null;      // the buffers of the configured frame
+      this.width = 0;           // canvas backing store
+      this.height = 0;
+      this.scale = 1;           // trace buffer pixels per canvas pixel (2: supersampling, 0.5: preview)
+      this.antialias = "fxaa";
+      this.hasFrame = false;    // the current float buffer holds a traced frame
+    }
+
+    // Compiles the trace pass for a space's GLSL; throws a PageError with the
+    // compiler log when it fails (the previous program is dropped either way).
+    setSpaceGlsl(glsl, label) {
+      this.dropSpace();
+      this.traceProgram = G.createProgram(this.gl, G.FULLSCREEN_VERTEX, traceSource(glsl), label);
+    }
+
+    dropSpace() {
+      if (this.traceProgram) this.gl.deleteProgram(this.traceProgram.program);
+      this.traceProgram = null;
+      this.hasFrame = false;
+    }
+
+    // Sizes the buffers for a width × height canvas and an antialiasing mode.
+    // preview: trace at half resolution, no antialiasing (for slow GPUs while the view moves).
+    configure(width, height, antialias, preview) {
+      const gl = this.gl;
+      if (ANTIALIAS_MODES.indexOf(antialias) < 0) throw new TypeError("antialias must be one of " + ANTIALIAS_MODES.join(", "));
+      const scale = preview ? 0.5 : antialias === "ssaa" ? 2 : 1;
+      const tw = Math.max(1, Math.round(width * scale)), th = Math.max(1, Math.round(height * scale));
+      const key = tw + "x" + th;
+      if (width !== this.width || height !== this.height) {
+        // a new canvas size: the buffers of the old one go
+        const self = this;
+        this.buffers.forEach(function (b) { G.deleteTarget(gl, b.float); G.deleteTarget(gl, b.color); });
+        this.buffers.clear();
+        self.current = null;
+      }
+      let b = this.buffers.get(key);
+      if (!b) {
+        b = { float: G.createFloatTarget(gl, tw, th, 2), color: null };
+        this.buffers.set(key, b);
+      }
+      // shading goes through a colour buffer unless it can go straight to the canvas
+      const needColor = scale !== 1 || antialias === "fxaa";
+      if (needColor && !b.color) b.color = G.createColorTarget(gl, tw, th);
+      if (b !== this.current) this.hasFrame = false;
+      this.current = b;
+      this.useColor = needColor;
+      this.width = width;
+      this.height = height;
+      this.scale = tw / width;
+      this.antialias = antialias;
+      this.preview = !!preview;
+    }
+
+    // Draws one frame. view = { camera (a Camera), bounds, curvature (bool),
+    // curvatureScale, grid (bool), gridSpacing, background: {top, bottom} (0..1 RGB) }.
+    // overlay(frame) is called after shading with the colour buffer bound.
+    render(view, overlay) {
+      const gl = this.gl;
+      if (!this.current) throw new Error("Tracer.render before configure");
+      const floatTarget = this.current.float;
+      const tw = floatTarget.width, th = floatTarget.height;
+      const basis = view.camera.basis();
+      gl.disable(gl.BLEND);
+      gl.disable(gl.DEPTH_TEST);
+      gl.disable(gl.CULL_FACE);
+
+      // 1. trace
+      gl.bindFramebuffer(gl.FRAMEBUFFER, floatTarget.fb);
+      gl.viewport(0, 0, tw, th);
+      gl.clearBufferfv(gl.COLOR, 0, [0, 0, 0, -1]);
+      gl.clearBufferfv(gl.COLOR, 1, [0, 0, 0, 0]);
+      if (this.traceProgram) {
+        const p = this.traceProgram;
+        gl.useProgram(p.program);
+        gl.uniform3fv(p.uniform("uEye"), view.camera.eye);
+        gl.uniform3fv(p.uniform("uForward"), basis.forward);
+        gl.uniform3fv(p.uniform("uRight"), basis.right);
+        gl.uniform3fv(p.uniform("uUp"), basis.up);
+        gl.uniform1f(p.uniform("uTanHalf"), basis.tanHalf);
+        gl.uniform1f(p.uniform("uAspect"), tw / th);
+        gl.uniform2f(p.uniform("uResolution"), tw, th);
+        gl.uniform1f(p.uniform("uBounds"), view.bounds);
+        gl.uniform1f(p.uniform("uPixelAngle"), 2 * basis.tanHalf / th);
+        gl.uniform1i(p.uniform("uCurvature"), view.curvature ? 1 : 0);
+        G.drawFullscreen(gl, this.vao);
+        this.hasFrame = true;
+      }
+
+      // 2. shade
+      const target = this.useColor ? this.current.color : null;
+      gl.bindFramebuffer(gl.FRAMEBUFFER, target ? target.fb : null);
+      gl.viewport(0, 0, target ? tw : this.width, target ? th : this.height);
+      const s = this.shadeProgram;
+      gl.useProgram(s.program);
+      gl.activeTexture(gl.TEXTURE0);
+      gl.bindTexture(gl.TEXTURE_2D, floatTarget.textures[0]);
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, floatTarget.textures[1]);
+      gl.uniform1i(s.uniform("uPosition"), 0);
+      gl.uniform1i(s.uniform("uNormal"), 1);
+      gl.uniform3fv(s.uniform("uEye"), view.camera.eye);
+      gl.uniform3fv(s.uniform("uForward"), basis.forward);
+      gl.uniform3fv(s.uniform("uRight"), basis.right);
+      gl.uniform3fv(s.uniform("uUp"), basis.up);
+      gl.uniform2f(s.uniform("uResolution"), tw, th);
+      gl.uniform3fv(s.uniform("uBackgroundTop"), view.background.top);
+      gl.uniform3fv(s.uniform("uBackgroundBottom"), view.background.bottom);
+      gl.uniform1i(s.uniform("uCurvature"), view.curvature ? 1 : 0);
+      gl.uniform1f(s.uniform("uCurvatureScale"), view.curvatureScale);
+      gl.uniform1i(s.uniform("uGrid"), view.grid ? 1 : 0);
+      gl.uniform1f(s.uniform("uGridSpacing"), view.gridSpacing);
+      gl.uniform1f(s.uniform("uLineWidth"), Math.max(1, this.scale));
+      G.drawFullscreen(gl, this.vao);
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.activeTexture(gl.TEXTURE0);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+
+      if (overlay) {
+        overlay({
+          gl: gl,
+          framebuffer: target ? target.fb : null,
+          width: target ? tw : this.width,
+          height: target ? th : this.height,
+          scale: this.scale,
+          positionTexture: floatTarget.textures[0],
+          normalTexture: floatTarget.textures[1],
+        });
+      }
+
+      // 3. post: FXAA at full resolution, else resample (2×2 box filter for
+      // supersampling, bilinear upscaling for a preview)
+      if (target) {
+        const post = this.scale === 1 ? this.fxaaProgram : this.resampleProgram;
+        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+        gl.viewport(0, 0, this.width, this.height);
+        gl.useProgram(post.program);
+        gl.activeTexture(gl.TEXTURE0);
+        gl.bindTexture(gl.TEXTURE_2D, target.textures[0]);
+        gl.uniform1i(post.uniform("uColor"), 0);
+        gl.uniform2f(post.uniform("uInvResolution"), 1 / this.width, 1 / this.height);
+        G.drawFullscreen(gl, this.vao);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+      }
+      gl.useProgram(null);
+    }
+
+    // The traced texel under canvas backing-store pixel (x, y), origin
+    // top-left: Float32Array [x, y, z, distance] (distance -1 on background).
+    readTexel(x, y) {
+      const t = this.current.float;
+      const bx = Math.min(t.width - 1, Math.floor(x * this.scale));
+      const by = Math.min(t.height - 1, Math.floor(y * this.scale));
+      return G.readFloatPixel(this.gl, t, 0, bx, t.height - 1 - by);
+    }
+
+    dispose() {
+      const gl = this.gl;
+      this.dropSpace();
+      [this.shadeProgram, this.fxaaProgram, this.resampleProgram].forEach(function (p) { gl.deleteProgram(p.program); });
+      this.buffers.forEach(function (b) { G.deleteTarget(gl, b.float); G.deleteTarget(gl, b.color); });
+      this.buffers.clear();
+      this.current = null;
+      gl.deleteVertexArray(this.vao);
+    }
+  }
+
+  W.ManifoldWeb.tracer = { Tracer: Tracer, traceSource: traceSource, ANTIALIAS_MODES: ANTIALIAS_MODES, MAX_STEPS: MAX_STEPS };
+})(globalThis);
