@@ -7,6 +7,10 @@ module Manifold.Engine
   , addBody
   , stepNative
   , removeBodyAt
+  , pickAt
+  , grabAt
+  , dragAt
+  , releaseMouse
   , Params (..)
   , defaultParams
   , setParams
@@ -29,6 +33,7 @@ import Manifold.Body
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface
+import Manifold.Grab
 import Manifold.Population
 import Manifold.Step (step)
 import Manifold.World
@@ -120,6 +125,25 @@ addBody w b = do
     else if n >= capacity (nwLayout w) then Left ("the world is full (capacity " ++ show (capacity (nwLayout w)) ++ ")")
     else Left "the position does not project onto the surface (the field's gradient vanishes there)"
 
+-- | The body under a surface point, and whether through its image (−1).
+pickAt :: NativeWorld -> V3 Double -> IO (Maybe (Int, Double))
+pickAt w q = do
+  runNative (pickBody (nwSpace w) (nwLayout w) (nwArrays w) q)
+  i <- metaValue Picked w
+  sgn <- MV.read (wMeta (nwArrays w)) (fromEnum PickedSign)
+  pure (if i >= 0 then Just (i, sgn) else Nothing)
+
+-- | Hold a body at a surface point with a mouse joint of the given
+-- frequency (Hz), damping ratio and force limit.
+grabAt :: NativeWorld -> Int -> Double -> V3 Double -> Double -> Double -> Double -> IO ()
+grabAt w i sgn q hz zeta fmax = runNative (grab (nwArrays w) i sgn q hz zeta fmax)
+
+dragAt :: NativeWorld -> V3 Double -> IO ()
+dragAt w q = runNative (dragTo (nwArrays w) q)
+
+releaseMouse :: NativeWorld -> IO ()
+releaseMouse w = runNative (release (nwArrays w))
+
 removeBodyAt :: NativeWorld -> Int -> IO ()
 removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
 
@@ -164,6 +188,13 @@ engineProcedures sp l =
            (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega))
   , stageProcedure (JsProcedure "removeBody" worldParams ["index"])
       (\_ [i] -> removeBody l stagedArrays (toIndex i))
+  , stageProcedure (JsProcedure "pickBody" worldParams ["qx", "qy", "qz"])
+      (\_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
+  , stageProcedure (JsProcedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"])
+      (\_ [i, sgn, x, y, z, hz, zeta, fmax] -> grab stagedArrays (toIndex i) sgn (V3 x y z) hz zeta fmax)
+  , stageProcedure (JsProcedure "drag" worldParams ["qx", "qy", "qz"])
+      (\_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
+  , stageProcedure (JsProcedure "release" worldParams []) (\_ _ -> release stagedArrays)
   ]
 
 engineScript :: Space -> Layout -> String
@@ -199,6 +230,7 @@ engineObject l =
     , "  contact: " ++ enumObj CA ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","
     , "  defaults: { " ++ intercalate ", " [k ++ ": " ++ show v | (k, v) <- params] ++ " },"
-    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody"
+    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody,"
+    , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
     , "}"
     ]

@@ -101,7 +101,7 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters.
-data Meta = BodyCount | Warnings | ContactCount | Capacity | GridDim | CellSize | DroppedContacts | LastAdded
+data Meta = BodyCount | Warnings | ContactCount | Capacity | GridDim | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
@@ -120,7 +120,7 @@ data ContactField
 
 -- | The mouse joint.
 data MouseField = MActive | MBody | MLocalR | MLocalTheta | MTargetX | MTargetY | MTargetZ
-  | MFrequency | MDamping | MMaxForce | MImpulseU | MImpulseW
+  | MFrequency | MDamping | MMaxForce | MImpulseU | MImpulseW | MSign
   deriving (Show, Eq, Enum, Bounded)
 
 count' :: forall e. (Enum e, Bounded e) => e -> Int

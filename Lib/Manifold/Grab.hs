@@ -1,0 +1,80 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | Picking a body under a surface point and holding it with the mouse joint
+-- (paper §3.3: the grabbed body is pulled towards the mouse's surface point
+-- by a constraint). On a quotient space a body may be picked through its
+-- image; the joint then works on the image's side, so targets are mapped
+-- back.
+module Manifold.Grab
+  ( pickBody
+  , grab
+  , dragTo
+  , release
+  ) where
+
+import Linear.Metric (dot, norm)
+import Linear.V3 (V3 (..))
+import Linear.Vector ((*^), (^-^))
+
+import Manifold.Collide (pointInBody)
+import Manifold.Field
+import Manifold.Space
+import Manifold.Stage.Imp
+import Manifold.World
+
+-- | The body whose polygon holds the point (the deepest, if several), into
+-- 'Picked' (−1 for none) and whether it was found through its antipodal
+-- image into 'PickedSign' (1 or −1).
+pickBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> V3 (Scalar m) -> m ()
+pickBody sp l w q = do
+  writeMeta w Picked (-1)
+  writeMeta w PickedSign 1
+  count <- readMeta w BodyCount
+  best <- newRef 0
+  let signs = if spaceQuotient sp == Antipodal then [1, -1] else [1]
+  forEach (toIndex count) $ \i -> do
+    f <- bodyFrame w i
+    mapM_ (\sgn -> do
+      let q' = sgn *^ q
+      whenPositive (bfSize f - norm (q' ^-^ bfCentre f)) $ do
+        (depth, _) <- pointInBody l w i f q'
+        -- the centre itself counts as inside (its depth is its distance to
+        -- the outline, which pointInBody measures too)
+        b <- readRef best
+        whenPositive (depth - b) $ do
+          writeRef best depth
+          writeMeta w Picked (toScalar i)
+          writeMeta w PickedSign sgn) signs
+
+-- | Hold body @i@ at the surface point @q@ (on the side given by @sgn@): the
+-- point's polar coordinates in the body are kept, so the body is held where
+-- it was grabbed, not at its centre.
+grab :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m)
+     -> Scalar m -> Scalar m -> Scalar m -> m ()
+grab w i sgn q frequency damping maxForce = do
+  f <- bodyFrame w i
+  let d = sgn *^ q ^-^ bfCentre f
+      x = d `dot` bfU f
+      y = d `dot` bfW f
+  writeMouse w MActive 1
+  writeMouse w MBody (toScalar i)
+  writeMouse w MSign sgn
+  writeMouse w MLocalR (sqrt (x * x + y * y))
+  writeMouse w MLocalTheta (atan2F y x - bfAngle f)
+  writeMouse w MFrequency frequency
+  writeMouse w MDamping damping
+  writeMouse w MMaxForce maxForce
+  writeMouse w MImpulseU 0
+  writeMouse w MImpulseW 0
+  dragTo w q
+
+-- | Move the mouse joint's target to surface point @q@.
+dragTo :: Imp m => WorldArrays (Array m) -> V3 (Scalar m) -> m ()
+dragTo w q = do
+  sgn <- readMouse w MSign
+  let V3 x y z = sgn *^ q
+  writeMouse w MTargetX x
+  writeMouse w MTargetY y
+  writeMouse w MTargetZ z
+
+release :: Imp m => WorldArrays (Array m) -> m ()
+release w = writeMouse w MActive 0
