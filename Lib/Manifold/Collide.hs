@@ -139,11 +139,12 @@ pointInBody l w j y q = do
 
 -- | A contact row pair into the contact array: body @a@ at point @ra@ is
 -- pushed along @dirA@, body @b@ (if @b >= 0@) at @rb@ against @dirB@.
-emitContact :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
+emitContact :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
             -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> m ()
-emitContact l w owner key a b ra dirA rb dirB depth selfScale = do
+emitContact w owner key a b ra dirA rb dirB depth selfScale = do
   count <- readMeta w ContactCount
-  ifPositive (fromIntegral (maxContacts l) - count - 0.5)
+  cap <- readMeta w Capacity -- the arrays' capacity is the caller's, not the layout's
+  ifPositive (fromIntegral contactsPerBody * maxF 1 cap - count - 0.5)
     (do let c = toIndex count
         writeMeta w ContactCount (count + 1)
         fa <- bodyFrame w a
@@ -196,28 +197,36 @@ vertexContacts l w owner keyBase x y sgn selfScale = do
   whenPositive best $ do
     m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
     t <- share3 (bfNormal fy `cross` m0)
-    lo <- newRef 1e300
-    hi <- newRef (-1e300)
-    loD <- newRef (-1)
-    hiD <- newRef (-1)
-    forEach nd $ \d -> do
+    (dLo, dHi) <- extremesAlong nd $ \d -> do
       q <- outlineVertex l w x d
       (depth, _) <- pointInBody l w y fy (sgn *^ q)
-      whenPositive depth $ do
-        s <- share (((sgn *^ q) ^-^ bfCentre fy) `dot` t)
-        l0 <- readRef lo
-        whenPositive (l0 - s) (writeRef lo s >> writeRef loD (toScalar d))
-        h0 <- readRef hi
-        whenPositive (s - h0) (writeRef hi s >> writeRef hiD (toScalar d))
-    dLo <- readRef loD
-    dHi <- readRef hiD
+      pure (depth, ((sgn *^ q) ^-^ bfCentre fy) `dot` t)
     let emitAt slot dv = do
           q <- outlineVertex l w x (toIndex dv)
           query <- share3 (sgn *^ q)
           (depth, m) <- pointInBody l w y fy query
-          emitContact l w owner (keyBase + slot) x (toScalar y) q (sgn *^ m) query m depth selfScale
+          emitContact w owner (keyBase + slot) x (toScalar y) q (sgn *^ m) query m depth selfScale
     emitAt 0 dLo
     whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
+
+-- | Of the outline vertices @d@ whose probe gives a positive depth, the two
+-- with the least and the greatest position along the contact line (−1 when
+-- none): a contact manifold's two points.
+extremesAlong :: Imp m => Index m -> (Index m -> m (Scalar m, Scalar m)) -> m (Scalar m, Scalar m)
+extremesAlong nd probe = do
+  lo <- newRef 1e300
+  hi <- newRef (-1e300)
+  loD <- newRef (-1)
+  hiD <- newRef (-1)
+  forEach nd $ \d -> do
+    (depth, position) <- probe d
+    whenPositive depth $ do
+      s <- share position
+      l0 <- readRef lo
+      whenPositive (l0 - s) (writeRef lo s >> writeRef loD (toScalar d))
+      h0 <- readRef hi
+      whenPositive (s - h0) (writeRef hi s >> writeRef hiD (toScalar d))
+  (,) <$> readRef loD <*> readRef hiD
 
 -- | Where the outline of body @i@ leaves the allowed region @b >= 0@.
 boundaryContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
@@ -241,21 +250,9 @@ boundaryContacts sp l w i = case spaceBoundary sp of
       q0 <- outlineVertex l w i (toIndex dd)
       dir0 <- share3 (safeNormalize (gradFn bf q0))
       t <- share3 (n `cross` dir0)
-      lo <- newRef 1e300
-      hi <- newRef (-1e300)
-      loD <- newRef (-1)
-      hiD <- newRef (-1)
-      forEach nd $ \d -> do
+      (dLo, dHi) <- extremesAlong nd $ \d -> do
         q <- outlineVertex l w i d
-        bv <- share (b q)
-        whenPositive (negate bv) $ do
-          s <- share (q `dot` t)
-          l0 <- readRef lo
-          whenPositive (l0 - s) (writeRef lo s >> writeRef loD (toScalar d))
-          h0 <- readRef hi
-          whenPositive (s - h0) (writeRef hi s >> writeRef hiD (toScalar d))
-      dLo <- readRef loD
-      dHi <- readRef hiD
+        pure (negate (b q), q `dot` t)
       let emitAt slot dv = do
             q <- outlineVertex l w i (toIndex dv)
             g <- share3 (gradFn bf q)
@@ -263,7 +260,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
             bv <- share (b q)
             let dir = safeNormalize g
                 depth = select gl (negate bv / maxF gl 1e-300) 0
-            emitContact l w i (key + slot) i (-1) q dir q dir depth 1
+            emitContact w i (key + slot) i (-1) q dir q dir depth 1
       emitAt 0 dLo
       whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
@@ -352,7 +349,7 @@ selfContacts sp l w i = do
       m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
       n <- share3 (unitNormalAt point)
       dir <- share3 (safeNormalize (tangentProjection n m0))
-      emitContact l w i (selfKey) i (-1) point dir point dir best 0.6
+      emitContact w i (selfKey) i (-1) point dir point dir best 0.6
   where
     unitNormalAt = safeNormalize . gradFn (spaceField sp)
     selfKey = 12

@@ -24,15 +24,12 @@ module Manifold.Engine
   , engineObject
   ) where
 
-import Control.Monad (forM_)
 import qualified Data.Vector.Unboxed.Mutable as MV
-import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
 
 import Manifold.Body
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.Surface
 import Manifold.Grab
 import Manifold.Population
 import Manifold.Step (step)

@@ -98,7 +98,7 @@ removeBody l w i = do
   count <- readMeta w BodyCount
   whenPositive (minF (toScalar i + 0.5) (count - toScalar i - 0.5)) $ do
     let lastI = toIndex (count - 1)
-        move arr k = forEach (fromIntegral k) $ \o ->
+        move arr (k :: Int) = forEach (fromIntegral k) $ \o ->
           readArray arr (fromIntegral k * lastI + o) >>= writeArray arr (fromIntegral k * i + o)
     move (wPos w) 3
     move (wVel w) 3
