@@ -7,6 +7,9 @@ import Test.Hspec
 import qualified ADSpec
 import qualified BodySpec
 import qualified CliSpec
+import qualified EngineSpec
+import qualified ImpSpec
+import qualified StageSpec
 import qualified SurfaceSpec
 
 main :: IO ()
@@ -17,3 +20,6 @@ main = do
     describe "Manifold.Surface" SurfaceSpec.spec
     describe "Manifold.Body" BodySpec.spec
     describe "manifold (command line)" CliSpec.spec
+    describe "Manifold.World" EngineSpec.spec
+    describe "Manifold.Stage" StageSpec.spec
+    describe "Manifold.Stage.Imp" ImpSpec.spec

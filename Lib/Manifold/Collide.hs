@@ -357,6 +357,7 @@ selfContacts sp l w i = do
 -- | Every contact of this step, owned by the lower-numbered body of each
 -- pair, in body order (warm starting relies on the order).
 collide :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE collide :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 collide sp l w = do
   writeMeta w ContactCount 0
   buildGrid sp w

@@ -147,6 +147,7 @@ mouseRows sp w warm = do
 -- | Solve this step's contacts and the mouse joint, and keep the impulses
 -- for the next step.
 solve :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE solve :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 solve sp _ w = do
   dt <- readParam w Dt
   iterations <- readParam w Iterations

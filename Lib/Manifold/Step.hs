@@ -12,6 +12,7 @@ import Manifold.Stage.Imp
 import Manifold.World
 
 step :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE step :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 step sp l w = do
   applyGravity sp w
   collide sp l w

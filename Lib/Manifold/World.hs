@@ -252,6 +252,7 @@ countWarning w = readMeta w Warnings >>= writeMeta w Warnings . (+ 1)
 
 -- | Gravity, projected to the tangent plane, for every movable body.
 applyGravity :: Imp m => Space -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE applyGravity :: Space -> WorldArrays NativeArray -> Native () #-}
 applyGravity sp w = do
   count <- readMeta w BodyCount
   dt <- readParam w Dt
@@ -272,6 +273,7 @@ applyGravity sp w = do
 -- step that would produce a non-finite value leaves the body as it was and
 -- counts a warning.
 integrate :: Imp m => Space -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE integrate :: Space -> WorldArrays NativeArray -> Native () #-}
 integrate sp w = do
   count <- readMeta w BodyCount
   dt <- readParam w Dt
@@ -311,6 +313,7 @@ outlineRadiiInto l outline w i size = do
 
 -- | Walk every body's geodesic polygon into the vertex cache (paper §3.4).
 polygoniseAll :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE polygoniseAll :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 polygoniseAll sp l w = do
   count <- readMeta w BodyCount
   forEach (toIndex count) (polygoniseBody sp l w)

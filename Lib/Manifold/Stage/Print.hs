@@ -19,6 +19,7 @@ module Manifold.Stage.Print
   ) where
 
 import qualified Data.IntMap.Strict as IM
+import qualified Data.IntSet as IS
 import Data.List (foldl', intercalate)
 import GHC.Float (castWord64ToDouble)
 
@@ -51,7 +52,10 @@ lower target prefix next scope roots =
         | otherwise =
             let (ord', cnt') = foldl' visit (ord, IM.insert i (1 :: Int) cnt) (children (nodeById i))
             in (i : ord', cnt')
-      shouldBind i = compound (nodeById i) && IM.findWithDefault 0 i counts > 1
+      -- JavaScript's pow names its operands twice (see 'binary')
+      powOperands = IS.fromList
+        [ o | target == JavaScript, i <- IM.keys counts, Bin Pow a b <- [nodeById i], o <- [a, b] ]
+      shouldBind i = compound (nodeById i) && (IM.findWithDefault 0 i counts > 1 || IS.member i powOperands)
       bind (bs, sc, k) i
         | shouldBind i =
             let name = prefix ++ show k
@@ -104,7 +108,9 @@ binary target op a b = case op of
   Mul -> infx "*"
   Div -> infx "/"
   Pow -> case target of
-    JavaScript -> "Math.pow(" ++ a ++ ", " ++ b ++ ")"
+    -- Math.pow(1, NaN) and Math.pow(-1, ±Infinity) are NaN; C's pow, and so
+    -- Haskell's (**), gives 1. The operands are names or literals here.
+    JavaScript -> "((" ++ a ++ " === 1 || (" ++ a ++ " === -1 && (" ++ b ++ " === Infinity || " ++ b ++ " === -Infinity))) ? 1 : Math.pow(" ++ a ++ ", " ++ b ++ "))"
     GLSL -> "pow(" ++ a ++ ", " ++ b ++ ")"
   where infx o = "(" ++ a ++ " " ++ o ++ " " ++ b ++ ")"
 

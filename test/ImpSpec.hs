@@ -1,0 +1,228 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | The imperative layer: programs written once against 'Imp', run natively
+-- ('runNative', unboxed mutable vectors) and staged ('stageProcedure', run
+-- under node on @Float64Array@s). Both interpretations perform the same
+-- floating-point operations in the same order, so the arrays they leave
+-- must be bit-for-bit identical.
+module ImpSpec (spec) where
+
+import Control.Monad (forM_, unless, when)
+import Data.List (intercalate, isInfixOf)
+import qualified Data.Vector.Unboxed as V
+import GHC.Float (castDoubleToWord64)
+import Test.Hspec
+import Test.QuickCheck
+import Test.QuickCheck.Gen (unGen)
+import Test.QuickCheck.Random (mkQCGen)
+import Text.Printf (printf)
+
+import Manifold.Field
+import Manifold.Stage.Imp
+
+import NodeJS
+
+-- The programs --------------------------------------------------------------------
+
+-- | @out[i] = inp[0] + … + inp[i]@ for @i < meta[0]@ (a running sum in a
+-- mutable ref, each partial sum shared).
+prefixSum :: Imp m => Array m -> Array m -> Array m -> m ()
+prefixSum meta inp out = do
+  n <- toIndex <$> readArray meta 0
+  acc <- newRef 0
+  forEach n $ \i -> do
+    v <- readArray inp i
+    a <- readRef acc
+    s <- share (a + v)
+    writeArray out i s
+    writeRef acc s
+
+-- | Segments with bounds read from an array: for each @k < meta[0]@,
+-- @out[k] = fold (\a v -> a/2 + v·w) 0 inp[off[k] .. off[k+1]-1]@ with a
+-- weight depending on the position (a nested loop whose bounds are data).
+segmented :: Imp m => Array m -> Array m -> Array m -> Array m -> m ()
+segmented meta off inp out = do
+  nseg <- toIndex <$> readArray meta 0
+  forEach nseg $ \k -> do
+    lo <- toIndex <$> readArray off k
+    hi <- toIndex <$> readArray off (k + 1)
+    acc <- newRef 0
+    forLoop lo hi $ \j -> do
+      v <- readArray inp j
+      w <- share (1 + toScalar (j - lo) / 8)
+      modifyRef acc (\a -> a / 2 + v * w)
+    readRef acc >>= writeArray out k
+
+-- | Projected Gauss–Seidel for the 1D obstacle problem
+-- @−x'' = b, x >= obs@ on @meta[0]@ nodes (fixed end values), @meta[1]@
+-- sweeps, @meta[2] = h²@:
+-- @x[i] ← max(obs[i], (h²·b[i] + x[i−1] + x[i+1]) / 2)@, the max taken with
+-- an if/else (contact: clamp and count; else: the Gauss–Seidel value).
+-- @stats[0]@ = contacts counted over all sweeps, @stats[1]@ = free updates,
+-- @stats[2 + s]@ = the largest change in sweep @s@.
+gaussSeidel :: Imp m => Array m -> Array m -> Array m -> Array m -> Array m -> m ()
+gaussSeidel meta x b obs stats = do
+  n <- toIndex <$> readArray meta 0
+  sweeps <- toIndex <$> readArray meta 1
+  h2 <- readArray meta 2
+  contacts <- newRef 0
+  free <- newRef 0
+  change <- newRef 0
+  forEach sweeps $ \s -> do
+    writeRef change 0
+    forLoop 1 (n - 1) $ \i -> do
+      xl <- readArray x (i - 1)
+      xr <- readArray x (i + 1)
+      bi <- readArray b i
+      o <- readArray obs i
+      old <- readArray x i
+      gs <- share ((h2 * bi + xl + xr) / 2)
+      ifPositive (o - gs)
+        (writeArray x i o >> modifyRef contacts (+ 1))
+        (writeArray x i gs >> modifyRef free (+ 1))
+      new <- readArray x i
+      modifyRef change (\c -> maxF c (abs (new - old)))
+    readRef change >>= writeArray stats (2 + s)
+  readRef contacts >>= writeArray stats 0
+  readRef free >>= writeArray stats 1
+
+-- | Conditionals at their edges: for @i < meta[0]@, with @v = inp[i]@,
+-- @out[i] = 2v@ where @v > 0@, else @3@ where @−v > 0@, else @7@ (so 0, −0
+-- and NaN give 7), and @out2[i] = v·v + 1@. The value @v·v + 1@ is also
+-- shared inside the first branch: after the conditional it must be
+-- computed afresh, not referred to by a name bound in the branch's block.
+signs :: Imp m => Array m -> Array m -> Array m -> Array m -> m ()
+signs meta inp out out2 = do
+  n <- toIndex <$> readArray meta 0
+  forEach n $ \i -> do
+    v <- readArray inp i
+    ifPositive v
+      (do _ <- share (v * v + 1)
+          writeArray out i (2 * v))
+      (ifPositive (negate v) (writeArray out i 3) (writeArray out i 7))
+    writeArray out2 i (v * v + 1)
+
+-- Instances ------------------------------------------------------------------------
+
+-- | A procedure's array arguments.
+type Instance = [[Double]]
+
+genPrefix :: Gen Instance
+genPrefix = do
+  n <- choose (0, 60)
+  inp <- vectorOf n (oneof [choose (-1, 1), (* 1e8) <$> choose (-1, 1), (* 1e-8) <$> choose (-1, 1)])
+  pure [[fromIntegral n], inp, replicate n 0]
+
+genSigns :: Gen Instance
+genSigns = do
+  n <- choose (0, 20)
+  inp <- vectorOf n (frequency [ (3, choose (-2, 2))
+                               , (2, elements [0, -0, 0 / 0, 5e-324, -5e-324, 1 / 0, -1 / 0]) ])
+  pure [[fromIntegral n], inp, replicate n 0, replicate n 0]
+
+genSegmented :: Gen Instance
+genSegmented = do
+  nseg <- choose (0, 8)
+  lens <- vectorOf nseg (choose (0, 7))
+  let offs = scanl (+) 0 lens
+  inp <- vectorOf (last offs) (choose (-10, 10))
+  pure [[fromIntegral nseg], map fromIntegral offs, inp, replicate nseg (-1)]
+
+genGaussSeidel :: Gen Instance
+genGaussSeidel = do
+  n <- choose (3, 30)
+  sweeps <- choose (1, 6)
+  let h = 1 / fromIntegral (n - 1)
+  load <- choose (-40, -5) -- pushes x down onto the obstacle
+  b <- vectorOf n ((+ load) <$> choose (-5, 5))
+  -- An uneven obstacle: above the iterate at some nodes (contact), below
+  -- at others (free), so both branches run in most instances.
+  level <- choose (-0.1, 0.1)
+  obs <- vectorOf n ((+ level) <$> choose (-0.25, 0.25))
+  x0 <- vectorOf n (choose (0, 0.3))
+  pure [[fromIntegral n, fromIntegral sweeps, h * h], x0, b, obs, replicate (2 + sweeps) 0]
+
+-- Running ---------------------------------------------------------------------------
+
+runNativeOn :: ([NativeArray] -> Native ()) -> Instance -> IO Instance
+runNativeOn prog inst = do
+  arrs <- mapM (V.thaw . V.fromList) inst
+  runNative (prog arrs)
+  mapM (fmap V.toList . V.freeze) arrs
+
+-- | A staged procedure over named arrays.
+staged :: String -> [String] -> ([StagedArray] -> Staged ()) -> String
+staged name arrays prog = stageProcedure (JsProcedure name arrays []) (\as _ -> prog as)
+
+bitsEq :: [[Double]] -> [[Double]] -> Bool
+bitsEq a b = map (map castDoubleToWord64) a == map (map castDoubleToWord64) b
+
+spec :: Spec
+spec = do
+  let prefixJs = staged "prefixSum" ["meta", "inp", "out"] (\as -> case as of
+        [m, i, o] -> prefixSum m i o
+        _ -> error "arity")
+      segJs = staged "segmented" ["meta", "off", "inp", "out"] (\as -> case as of
+        [m, f, i, o] -> segmented m f i o
+        _ -> error "arity")
+      gsJs = staged "gaussSeidel" ["meta", "x", "b", "obs", "stats"] (\as -> case as of
+        [m, x, b, o, s] -> gaussSeidel m x b o s
+        _ -> error "arity")
+      signsJs = staged "signs" ["meta", "inp", "out", "out2"] (\as -> case as of
+        [m, i, o, o2] -> signs m i o o2
+        _ -> error "arity")
+      nativeSigns = \as -> case as of [m, i, o, o2] -> signs m i o o2; _ -> error "arity"
+      nativePrefix = \as -> case as of [m, i, o] -> prefixSum m i o; _ -> error "arity"
+      nativeSeg = \as -> case as of [m, f, i, o] -> segmented m f i o; _ -> error "arity"
+      nativeGs = \as -> case as of [m, x, b, o, s] -> gaussSeidel m x b o s; _ -> error "arity"
+
+  it "prints the conditional with both branches and the loops nested" $ do
+    gsJs `shouldSatisfy` ("} else {" `isInfixOf`)
+    length (filter ("for (let" `isInfixOf`) (lines gsJs)) `shouldBe` 2
+    length (filter ("for (let" `isInfixOf`) (lines segJs)) `shouldBe` 2
+
+  it "prefix sums, segmented sums and projected Gauss-Seidel: native and node arrays are identical" $ do
+    let gen = (,,,) <$> vectorOf 40 genPrefix <*> vectorOf 40 genSegmented <*> vectorOf 60 genGaussSeidel
+                        <*> vectorOf 30 genSigns
+        (prefixes, segs, gss, sgs) = unGen gen (mkQCGen 777) 30
+        jsArr xs = "[" ++ intercalate ",\n" xs ++ "]"
+        -- Each instance: its arrays as Float64Arrays, the procedure called
+        -- on them, the arrays returned.
+        callAll fn insts = jsArr [ "(() => { const a = " ++ jsArr (map jsDoubles inst)
+                                     ++ ".map(v => Float64Array.from(v)); " ++ fn ++ "(...a); return a; })()"
+                                 | inst <- insts ]
+        script = prefixJs ++ segJs ++ gsJs ++ signsJs
+          ++ "__emit([" ++ intercalate ",\n" [ callAll "prefixSum" prefixes, callAll "segmented" segs
+                                               , callAll "gaussSeidel" gss, callAll "signs" sgs ] ++ "]);\n"
+    [jsP, jsS, jsG, jsC] <- runNodeJSON script :: IO [[[[Bits]]]]
+    natP <- mapM (runNativeOn nativePrefix) prefixes
+    natS <- mapM (runNativeOn nativeSeg) segs
+    natG <- mapM (runNativeOn nativeGs) gss
+    natC <- mapM (runNativeOn nativeSigns) sgs
+    let compareAll what nats jss insts = do
+          length jss `shouldBe` length nats
+          forM_ (zip3 insts nats jss) $ \(inst, nat, js) ->
+            unless (bitsEq nat (map (map unBits) js)) $ expectationFailure $
+              what ++ " differs on input " ++ show inst ++ "\nnative: " ++ show nat ++ "\nnode:   " ++ show js
+    compareAll "prefixSum" natP jsP prefixes
+    compareAll "segmented" natS jsS segs
+    compareAll "gaussSeidel" natG jsG gss
+    compareAll "signs" natC jsC sgs
+    -- The native results are right (so the comparison is not between two
+    -- equally broken programs).
+    forM_ (zip prefixes natP) $ \(inst, res) -> res !! 2 `shouldBe` tail (scanl (+) 0 (inst !! 1))
+    forM_ (zip sgs natC) $ \(inst, res) ->
+      res !! 2 `shouldBe` [ if v > 0 then 2 * v else if negate v > 0 then 3 else 7 | v <- inst !! 1 ]
+    -- Both branches of the conditional were taken, in most instances both
+    -- within the same run.
+    let counts = [ (s !! 0, s !! 1) | [_, _, _, _, s] <- natG ]
+        both = length [ () | (c, f) <- counts, c > 0, f > 0 ]
+    printf "gauss-seidel: %d instances, %d take both branches; contacts %.0f, free updates %.0f\n"
+      (length counts) both (sum (map fst counts)) (sum (map snd counts))
+    sum (map fst counts) `shouldSatisfy` (> 0)
+    sum (map snd counts) `shouldSatisfy` (> 0)
+    both `shouldSatisfy` (>= length counts `div` 2)
+    -- Gauss–Seidel did its work: x >= obs everywhere after the sweeps.
+    forM_ (zip gss natG) $ \(inst, res) ->
+      let x = res !! 1; obs = inst !! 3
+      in when (or (zipWith (<) (init (tail x)) (init (tail obs)))) $
+           expectationFailure ("x below the obstacle: " ++ show inst)
