@@ -137,7 +137,7 @@ mouseRows sp w warm = do
                     kk = im * quadrance e + ii * jw * jw + gamma
                     lambda = negate (cdot + beta * (err `dot` e) + gamma * acc) / kk
                     limit = maxForce * dt
-                    acc' = clampF (negate limit) limit (acc + lambda)
+                    acc' = finiteOr0 (clampF (negate limit) limit (acc + lambda))
                 accS <- share acc'
                 writeMouse w field accS
                 push w g (accS - acc) e jw
@@ -205,13 +205,13 @@ solve sp _ w = do
       kt <- readContact w c TangentMass
       vt <- rowVelocity w a b tangent
       let limit = mu * ln
-      lt' <- share (clampF (negate limit) limit (lt - scale * vt * kt))
+      lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
       writeContact w c ImpulseT lt'
       applyRow w a b tangent (lt' - lt)
       kn <- readContact w c NormalMass
       bias <- readContact w c CBias
       vn <- rowVelocity w a b normal
-      ln' <- share (maxF 0 (ln + scale * (bias - vn) * kn))
+      ln' <- share (finiteOr0 (maxF 0 (ln + scale * (bias - vn) * kn)))
       writeContact w c ImpulseN ln'
       applyRow w a b normal (ln' - ln)
     mouseRows sp w False

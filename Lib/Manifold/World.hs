@@ -49,6 +49,7 @@ module Manifold.World
   , BodyFrame (..)
   , finiteness
   , countWarning
+  , finiteOr0
     -- * Motion
   , applyGravity
   , integrate
@@ -247,6 +248,10 @@ bodyFrame w i = do
 finiteness :: Field a => [a] -> a
 finiteness xs = 1 - abs (sum [x - x | x <- xs])
 
+-- | The value where it is finite, 0 where it is not.
+finiteOr0 :: Field a => a -> a
+finiteOr0 x = select (finiteness [x]) x 0
+
 countWarning :: Imp m => WorldArrays (Array m) -> m ()
 countWarning w = readMeta w Warnings >>= writeMeta w Warnings . (+ 1)
 
@@ -297,7 +302,11 @@ integrate sp w = do
           write3 (wAxis w) i axis'
           write3 (wNormal w) i n'
           writeSlot w i Angle angle')
-      (countWarning w)
+      -- keep the last good position, axis and angle; the motion that led
+      -- out of the surface's good region is dropped
+      (do write3 (wVel w) i (V3 0 0 0)
+          writeSlot w i Omega 0
+          countWarning w)
 
 toList3 :: V3 a -> [a]
 toList3 (V3 a b c) = [a, b, c]
