@@ -175,6 +175,11 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale = do
               writeContact w c TbW 0))
     (readMeta w DroppedContacts >>= writeMeta w DroppedContacts . (+ 1))
 
+-- | Run the test only for a point within body @y@'s bounding radius of its
+-- centre (no point farther out can be inside it).
+whenNear :: Imp m => BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
+whenNear fy q = whenPositive (bfSize fy - norm (q ^-^ bfCentre fy))
+
 -- | The outline vertices of body @x@, mapped by @sgn@ (−1: the antipodal
 -- image), tested against body @y@; up to two contacts.
 vertexContacts :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
@@ -188,19 +193,21 @@ vertexContacts l w owner keyBase x y sgn selfScale = do
   mz <- newRef 0
   forEach nd $ \d -> do
     q <- outlineVertex l w x d
-    (depth, m) <- pointInBody l w y fy (sgn *^ q)
-    best <- readRef deepest
-    whenPositive (depth - best) $ do
-      writeRef deepest depth
-      let V3 a b c = m in writeRef mx a >> writeRef my b >> writeRef mz c
+    whenNear fy (sgn *^ q) $ do
+      (depth, m) <- pointInBody l w y fy (sgn *^ q)
+      best <- readRef deepest
+      whenPositive (depth - best) $ do
+        writeRef deepest depth
+        let V3 a b c = m in writeRef mx a >> writeRef my b >> writeRef mz c
   best <- readRef deepest
   whenPositive best $ do
     m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
     t <- share3 (bfNormal fy `cross` m0)
     (dLo, dHi) <- extremesAlong nd $ \d -> do
       q <- outlineVertex l w x d
-      (depth, _) <- pointInBody l w y fy (sgn *^ q)
-      pure (depth, ((sgn *^ q) ^-^ bfCentre fy) `dot` t)
+      depth <- newRef (-1)
+      whenNear fy (sgn *^ q) (pointInBody l w y fy (sgn *^ q) >>= writeRef depth . fst)
+      (, ((sgn *^ q) ^-^ bfCentre fy) `dot` t) <$> readRef depth
     let emitAt slot dv = do
           q <- outlineVertex l w x (toIndex dv)
           query <- share3 (sgn *^ q)
