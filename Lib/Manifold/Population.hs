@@ -46,7 +46,8 @@ addBodyWith sp l w outline b = do
   let f = spaceField sp
   p <- share3 (projectToSurface f (baPos b))
   n <- share3 (unitNormal f p)
-  let usable = minF (cap - count - 0.5) (minF (norm n - 0.5) (finiteness (toList3 p)))
+  -- every condition must hold; a NaN (a vanished gradient) fails it
+  let usable = allPositive [cap - count - 0.5, norm n - 0.5, finiteness (toList3 p ++ toList3 n)]
   ifPositive usable
     (do let i = toIndex count
             movable = 1 - baStatic b
@@ -89,6 +90,10 @@ addBodyWith sp l w outline b = do
         writeMeta w LastAdded count
         polygoniseBody sp l w i)
     (writeMeta w LastAdded (-1))
+
+-- | 1 when every condition is positive, else 0 (NaN counts as not positive).
+allPositive :: Field a => [a] -> a
+allPositive = foldr (\c rest -> select c rest 0) 1
 
 -- | Remove body @i@: the last body takes its place (so indices above @i@
 -- are stable but the last one's becomes @i@). Warm starting is forgotten

@@ -49,6 +49,7 @@ data Placement = Placement
   { placeAt :: V3 Double
   , placeShape :: ShapeKind
   , placeSize :: Double
+  , placeStatic :: Bool -- ^ a fixed body (a floor, a wall)
   } deriving (Show, Eq)
 
 data Space = Space

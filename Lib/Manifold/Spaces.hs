@@ -52,12 +52,12 @@ torusField p@(V3 _ y _) = norm (V2 (radial p - constant torusMajor) y) - constan
 
 ring :: Int -> Double -> Double -> ShapeKind -> Double -> [Placement]
 ring n r y shape size =
-  [ Placement (V3 (r * cos t) y (r * sin t)) (if even k then shape else CircleShape) size
+  [ Placement (V3 (r * cos t) y (r * sin t)) (if even k then shape else CircleShape) size False
   | k <- [0 .. n - 1], let t = 2 * pi * fromIntegral k / fromIntegral n ]
 
 grid :: [Double] -> [Double] -> ShapeKind -> Double -> [Placement]
 grid xs zs shape size =
-  [ Placement (V3 x 0 z) (if even (i + j) then shape else CircleShape) size
+  [ Placement (V3 x 0 z) (if even (i + j) then shape else CircleShape) size False
   | (i, x) <- zip [0 :: Int ..] xs, (j, z) <- zip [0 :: Int ..] zs ]
 
 look :: V3 Double -> Camera
@@ -68,21 +68,22 @@ look eye = Camera eye (V3 0 0 0) (V3 0 1 0) 45
 plane :: Space
 plane = (space "plane" "the flat plane y = 0; gravity along -z" (scalarFn planeField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
-  , spaceCamera = look (V3 0 3 3)
+  , spaceCamera = Camera (V3 0 3.2 1.6) (V3 0 0 (-0.4)) (V3 0 1 0) 45
   , spaceScene = grid [-0.6, 0, 0.6] [-0.3, 0.3] SquareShape 0.2
+      ++ [Placement (V3 x 0 (-1.2)) SquareShape 0.3 True | x <- [-1.2, -0.8 .. 1.2]]
   }
 
 sphere :: Space
 sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (scalarFn unitSphereField))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
-  , spaceCamera = look (V3 0 1.2 3)
-  , spaceScene = ring 6 0.6 0.8 SquareShape 0.2
+  , spaceCamera = look (V3 0 (-1.8) 2.6)
+  , spaceScene = ring 6 0.6 (-0.8) SquareShape 0.2
   }
 
 torus :: Space
 torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 0 outside, < 0 inside)" (scalarFn torusField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
-  , spaceCamera = look (V3 0 2.2 2.8)
+  , spaceCamera = look (V3 0 2.2 (-2.8))
   , spaceScene = ring 6 1.3 0 SquareShape 0.18
   }
 
@@ -99,7 +100,7 @@ cube :: Space
 cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (scalarFn roundedCube))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
   , spaceCamera = look (V3 1.8 1.8 2.6)
-  , spaceScene = [Placement (V3 x 0.9 z) SquareShape 0.2 | (x, z) <- [(-0.4, -0.4), (0.4, -0.4), (0, 0.4)]]
+  , spaceScene = [Placement (V3 x 0.9 z) SquareShape 0.2 False | (x, z) <- [(-0.4, -0.4), (0.4, -0.4), (0, 0.4)]]
   }
   where
     roundedCube (V3 x y z) =
@@ -165,5 +166,5 @@ funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x
   { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.6 1.2)
-  , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]
+  , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 False | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]
   }

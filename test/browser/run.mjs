@@ -10,6 +10,7 @@ import url from "node:url";
 import {
   WEB, OUT, launchBrowser, serve, canvasShot, createChecks,
 } from "./lib.mjs";
+import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
 const PICKS = 20;           // surface pixels picked per space
@@ -18,7 +19,7 @@ const PIXEL_TOL = 1.5;      // project(pick(x, y)) vs the pixel's centre
 const BG_TOL = 4;           // per channel, background pixel vs the expected gradient
 
 // For working on one thing: --spaces a,b runs only those spaces' tests, --parts
-// p,q only those other parts (interaction, errors, file, hidpi); either alone skips the rest.
+// p,q only those other parts (interaction, bodies, errors, file, hidpi); either alone skips the rest.
 function listArg(name) {
   const i = process.argv.indexOf(name);
   return i >= 0 ? (process.argv[i + 1] || "").split(",").filter(Boolean) : null;
@@ -129,6 +130,7 @@ async function testSpace(context, base, name) {
   const W = info.stats.width, H = info.stats.height;
   if (!check(name + ": screenshot is the canvas's backing store", shot.width === W && shot.height === H,
     "screenshot " + shot.width + "×" + shot.height + ", canvas " + W + "×" + H)) { await page.close(); return null; }
+  await checkVisibleBodies(check, page, name);
 
   // a surface pixel: the centre if the camera looks at the surface, else a scene point's pixel
   const spot = await page.evaluate(function (scene) {
@@ -214,8 +216,8 @@ async function testInteraction(context, base) {
   check("hash change #space=disc switches space and selector", viaHash.space === "disc" && viaHash.select === "disc" && viaHash.error === null,
     JSON.stringify(viaHash));
 
-  // orbit with a mouse drag, zoom with the wheel
-  await page.evaluate(function () { return window.manifold.setSpace("torus"); });
+  // orbit with a mouse drag, zoom with the wheel (no bodies under the pointer: a press on one grabs it)
+  await page.evaluate(function () { return window.manifold.setSpace("torus").then(function () { window.manifold.clear(); }); });
   const box = await page.locator("#view").boundingBox();
   const before = await page.evaluate(function () { return window.manifold.camera(); });
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
@@ -287,14 +289,14 @@ async function testInteraction(context, base) {
   });
   check("camera.viewProjection maps points where project() does", vp < 1e-3, "max " + vp.toExponential(2) + " px");
 
-  // curvature colouring agrees with the generated curvature: red where K > 0, blue where K < 0
-  await page.evaluate(function () { return window.manifold.setSpace("torus"); });
+  // curvature colouring agrees with the generated curvature: red where K > 0, blue where K < 0 (no bodies in the way)
+  await page.evaluate(function () { return window.manifold.setSpace("torus").then(function () { window.manifold.clear(); }); });
   await page.click("#curvature");
   const curv = await page.evaluate(function () {
     return { hash: location.hash, on: window.manifold.options().curvature, legend: !document.getElementById("curvature-legend").hidden };
   });
   check("curvature toggle turns colouring on, shows the legend, hash has curvature=1",
-    curv.on && curv.legend && curv.hash === "#space=torus&curvature=1", JSON.stringify(curv));
+    curv.on && curv.legend && curv.hash === "#space=torus&bodies=0&curvature=1", JSON.stringify(curv));
   await page.evaluate(function () { window.manifold.setOptions({ grid: false }); window.manifold.render(); });
   const shot = await canvasShot(page, path.join(OUT, "torus-curvature.png"));
   const cpicks = await pickSurface(page, "torus", 200, 4242);
@@ -334,10 +336,12 @@ async function testInteraction(context, base) {
   check("setSpace of an unknown name rejects, listing the spaces", typeof unknown === "string" && /torus/.test(unknown), unknown);
 
   // stats
+  await page.evaluate(function () { return window.manifold.setSpace("torus"); });
+  await page.waitForTimeout(400); // a stats line after the switch
   const st = await page.evaluate(function () { return window.manifold.stats(); });
   const line = await page.textContent("#stats");
-  check("stats() and the stats line report size, fps and bodies 0",
-    st.bodies === 0 && st.width > 0 && typeof st.fps === "number" && /bodies 0/.test(line) && /(fps|idle)/.test(line), line);
+  check("stats() and the stats line report size, fps and the default scene's bodies",
+    st.bodies === 6 && st.width > 0 && typeof st.fps === "number" && /bodies 6/.test(line) && /(fps|idle)/.test(line), line);
 
   // the canvas follows its container
   await page.setViewportSize({ width: 520, height: 420 });
@@ -371,6 +375,30 @@ async function testHiDPI(browser, base) {
   const touch = function (type, points) {
     return cdp.send("Input.dispatchTouchEvent", { type: type, touchPoints: points.map(function (p, i) { return { x: p[0], y: p[1], id: i }; }) });
   };
+
+  // a finger on a body grabs and drags it (backing-store pixels are twice the CSS ones)
+  const start = await page.evaluate(function () {
+    const m = window.manifold, st = m.stats();
+    const p = m.pick(st.width / 2, st.height / 2);
+    return m.loadScene({ space: "sphere", gravity: false, bodies: [{ shape: "circle", size: 0.25, p: p }] }).then(function () {
+      return m.project(m.bodies()[0].p);
+    });
+  });
+  const tx = box.x + start[0] / 2, ty = box.y + start[1] / 2;
+  await touch("touchStart", [[tx, ty]]);
+  const held = await page.evaluate(function () { return window.manifold.grabbed(); });
+  for (let i = 1; i <= 4; i++) await touch("touchMove", [[tx - 10 * i, ty]]);
+  await page.waitForFunction(function (x0) {
+    const m = window.manifold;
+    return m.project(m.bodies()[0].p)[0] < x0 - 40;
+  }, start[0], { timeout: 8000 }).catch(function () {});
+  const dragged = await page.evaluate(function () { const m = window.manifold; return m.project(m.bodies()[0].p); });
+  await touch("touchEnd", []);
+  const let_go = await page.evaluate(function () { return window.manifold.grabbed(); });
+  check("touch: a finger on a body grabs it and drags it (80 backing-store px to the left)",
+    held === 0 && let_go === -1 && start[0] - dragged[0] > 40 && Math.abs(dragged[1] - start[1]) < 20,
+    "held " + held + ", centre x " + start[0].toFixed(1) + " → " + dragged[0].toFixed(1) + ", after lifting " + let_go);
+  await page.evaluate(function () { window.manifold.clear(); }); // one finger on a body would grab it
   const cam = function () { return page.evaluate(function () { return window.manifold.camera(); }); };
   const dist = function (c) { return Math.hypot(c.eye[0] - c.target[0], c.eye[1] - c.target[1], c.eye[2] - c.target[2]); };
   const c0 = await cam();
@@ -430,8 +458,8 @@ async function testErrors(context, base) {
       s.visible && /failed to compile/.test(s.text) && /ERROR/.test(s.log) && /debugBrokenShader/.test(s.log + s.text) &&
         !s.canvasVisible && typeof s.error === "string",
       JSON.stringify({ visible: s.visible, text: s.text, log: s.log.slice(0, 200) }));
-    const c = shot.at(Math.floor(shot.width / 2), Math.floor(shot.height / 2));
-    check("#debugBrokenShader=1: the message panel, not a blank canvas, is on screen", c[0] > c[2] + 5 || c[0] > 20, "centre pixel " + c.join(","));
+    const c = shot.at(8, 8); // the panel's padding
+    check("#debugBrokenShader=1: the message panel, not a blank canvas, is on screen", c[0] > c[2] + 5 || c[0] > 20, "pixel 8,8: " + c.join(","));
     await page.close();
   }
   // broken GLSL through the API, then restored
@@ -527,6 +555,7 @@ async function main() {
       if (r) stats[name] = { maxField: r.maxField, maxErr: r.maxErr, ms: Date.now() - t };
     }
     if (partWanted("interaction")) await testInteraction(context, server.url);
+    if (partWanted("bodies")) await testBodies(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);

@@ -1,11 +1,12 @@
-// Saves the README's picture of the page: docs/screenshot.png (the torus).
-//   node test/browser/screenshot.mjs [space] [out.png]
+// Saves the README's picture of the page: docs/screenshot.png (bodies on the torus).
+//   node test/browser/screenshot.mjs [space] [out.png] [added bodies]   (default: torus docs/screenshot.png 14)
 import fs from "node:fs";
 import path from "node:path";
 import { ROOT, launchBrowser, serve } from "./lib.mjs";
 
 const space = process.argv[2] || "torus";
 const out = path.resolve(ROOT, process.argv[3] || "docs/screenshot.png");
+const extra = Number(process.argv[4] || 14);
 const server = await serve();
 const browser = await launchBrowser();
 try {
@@ -13,6 +14,16 @@ try {
   await page.goto(server.url + "#space=" + space);
   await page.waitForFunction(function () { return !!window.manifold; });
   await page.evaluate(function () { return window.manifold.ready(); });
+  // the default scene and more bodies added with the page's buttons (at free
+  // points of the view), without gravity (which soon gathers the torus's bodies
+  // on the side this camera does not see)
+  await page.evaluate(function () {
+    const m = window.manifold;
+    m.resetScene();
+    m.setSimulation({ gravity: false });
+  });
+  const buttons = ["#add-circle", "#add-square", "#add-polygon"];
+  for (let k = 0; k < extra; k++) await page.click(buttons[k % 3]);
   await page.waitForTimeout(1500); // let the stats line settle
   fs.mkdirSync(path.dirname(out), { recursive: true });
   await page.screenshot({ path: out });

@@ -46,26 +46,24 @@
     queue: Promise.resolve(),
     current: null,          // the promise of the latest space switch
     statsShownAt: 0,
+    surfaceGen: 0,          // bumped whenever the traced picture must be redrawn (with the camera's version)
+    world: null,            // the bodies (web/js/world.js) of the current space
+    clock: new MW.world.Clock(),
+    bodyRenderer: null,
+    drawnWorldVersion: -1,  // world.version of the last frame drawn
+    drawnWorld: null,
+    grabPointer: null,      // the pointer holding a body, or null
   };
 
-  // ---- bodies: the engine's hook -------------------------------------------------
-  // The physics engine is emitted from the Haskell World step into each space script
-  // (Manifold.spaces[NAME].engine); the page does not run it yet, so there are no
-  // bodies and this hook draws nothing. When it does: keep the world here in
-  // `engine`, step it in `frame` while it runs (and keep the loop drawing while it
-  // does), count its bodies in bodyCount(), and draw its body polygons in drawBodies.
-  // `frame` is called after the surface is shaded, with the colour buffer bound:
-  //   frame.gl, frame.framebuffer, frame.width, frame.height (pixels of that buffer),
-  //   frame.scale (buffer pixels per canvas pixel),
-  //   frame.positionTexture (RGBA32F: traced x, y, z and distance from the eye, -1 on
-  //     background) to hide polygon fragments behind the surface (distance test with a
-  //     small offset, as in the paper), frame.viewProjection (column-major 4×4 of the
-  //     same camera), frame.eye.
-  const engine = null;
+  // ---- bodies ------------------------------------------------------------------------
+  // The world (web/js/world.js) runs the engine generated into each space script
+  // (Manifold.spaces[NAME].engine); web/js/bodies.js draws its polygons over the
+  // traced surface. drawBodies is the tracer's overlay hook, called after the
+  // surface is shaded with the colour buffer bound (frame: gl, width, height,
+  // scale, positionTexture, normalTexture, viewProjection, eye).
   function drawBodies(frame) {
-    if (!engine) return;
+    if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame);
   }
-  function bodyCount() { return 0; }
 
   // ---- rendering ------------------------------------------------------------------
   // A frame whose GPU time exceeds this makes the view draw half-resolution previews
@@ -78,11 +76,16 @@
   }
 
   // Draws a frame now; preview = half resolution (while the view moves on a slow GPU).
-  function renderNow(preview) {
+  // The traced surface is reused when neither the camera nor the scenery changed
+  // (moving bodies are drawn over it), unless retrace is true.
+  function renderNow(preview, retrace) {
     if (!canRender()) return false;
     const gl = state.gl;
+    if (state.dirty) state.surfaceGen++;
     state.tracer.configure(state.width, state.height, state.options.antialias, !!preview);
     const camera = state.camera;
+    const key = retrace ? null : camera.version + ":" + state.surfaceGen;
+    const traced = retrace || state.tracer.current.surfaceKey !== key;
     state.tracer.render({
       camera: camera,
       bounds: state.space ? state.space.bounds : 1,
@@ -95,10 +98,10 @@
       frame.viewProjection = camera.viewProjection(state.width / state.height, 0.01, 100);
       frame.eye = camera.eye.slice();
       drawBodies(frame);
-    });
+    }, key);
     const now = performance.now();
-    // time the GPU work of full frames with a fence, polled by the frame loop
-    if (!preview && !state.fence) {
+    // time the GPU work of full traced frames with a fence, polled by the frame loop
+    if (!preview && traced && !state.fence) {
       state.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
       state.fenceAt = now;
       gl.flush();
@@ -106,6 +109,8 @@
     state.dirty = false;
     state.preview = !!preview;
     state.cameraVersion = camera.version;
+    state.drawnWorld = state.world;
+    state.drawnWorldVersion = state.world ? state.world.version : -1;
     state.frameCount++;
     state.frameTimes.push(now);
     return true;
@@ -125,7 +130,7 @@
   function measureFrame() {
     if (!canRender() || state.error) return null;
     const t0 = performance.now();
-    renderNow(false);
+    renderNow(false, true);
     if (state.tracer.hasFrame) state.tracer.readTexel(0, 0);
     state.gpuFrameMs = performance.now() - t0;
     if (state.fence) {
@@ -135,8 +140,16 @@
     return state.gpuFrameMs;
   }
 
-  function needsFrame() {
+  // the traced surface is out of date
+  function surfaceStale() {
     return state.dirty || state.cameraVersion !== state.camera.version;
+  }
+  // the bodies moved, came or went since the last frame
+  function bodiesChanged() {
+    return state.drawnWorld !== state.world || (state.world !== null && state.world.version !== state.drawnWorldVersion);
+  }
+  function needsFrame() {
+    return surfaceStale() || bodiesChanged();
   }
 
   function fps(now) {
@@ -147,12 +160,21 @@
   }
 
   function statsObject() {
+    const w = state.world;
+    const counters = w ? w.counters() : { bodies: 0, contacts: 0, warnings: 0, droppedContacts: 0 };
     return {
       fps: Math.round(fps(performance.now()) * 10) / 10,
       frameMs: state.gpuFrameMs === null ? null : Math.round(state.gpuFrameMs * 10) / 10,
       frames: state.frameCount,
       preview: state.preview,
-      bodies: bodyCount(),
+      bodies: counters.bodies,
+      contacts: counters.contacts,
+      warnings: counters.warnings,
+      droppedContacts: counters.droppedContacts,
+      physicsMsPerStep: w && w.stepMs !== null ? Math.round(w.stepMs * 1000) / 1000 : null,
+      steps: w ? w.steps : 0,
+      paused: state.clock.paused,
+      timeScale: state.clock.timeScale,
       width: state.width,
       height: state.height,
       space: state.spaceName,
@@ -168,8 +190,11 @@
     const s = statsObject();
     const rate = s.fps > 0 ? s.fps.toFixed(1) + " fps" : "idle";
     const cost = s.frameMs === null ? "" : " · frame " + Math.round(s.frameMs) + " ms";
+    const physics = s.physicsMsPerStep === null ? "" : " · physics " + s.physicsMsPerStep.toFixed(2) + " ms/step";
+    const trouble = " · warnings " + s.warnings + (s.droppedContacts ? " · dropped contacts " + s.droppedContacts : "");
     state.ui.setStats(rate + cost + (s.preview ? " (preview)" : "") + " · " + s.width + "×" + s.height +
-      " px · bodies " + s.bodies);
+      " px · bodies " + s.bodies + " · contacts " + s.contacts + physics + trouble + (s.paused ? " · paused" : ""));
+    state.ui.setPaused(s.paused);
   }
 
   // Marks the view as moving (input changed the camera).
@@ -180,11 +205,17 @@
   function frame(now) {
     W.requestAnimationFrame(frame);
     pollFence(now);
+    const w = state.world;
+    if (w && !state.error) {
+      const n = state.clock.due(now, w.param("dt"), w.stepMs);
+      if (n > 0 && w.count() > 0) w.step(n);
+    }
     if (!state.error) {
       const moving = now < state.interactUntil;
       const slow = state.gpuFrameMs !== null && state.gpuFrameMs > SLOW_FRAME_MS;
-      if (needsFrame()) renderNow(moving && slow);
+      if (surfaceStale()) renderNow(moving && slow);
       else if (state.preview && !moving) renderNow(false); // the sharp frame once the view stops
+      else if (bodiesChanged()) renderNow(state.preview);
     }
     showStats(now);
   }
@@ -237,7 +268,46 @@
     W.addEventListener("resize", measure);
   }
 
-  // ---- input: orbit, zoom, pan (pointer events: mouse, pen and touch alike) ---------
+  // ---- grabbing bodies ------------------------------------------------------------------
+  // Mouse joint settings: a 5 Hz spring, 0.7 of critical damping, and a force
+  // limit of 1000 × the body's mass (world.grab).
+  const GRAB = { frequency: 5, damping: 0.7 };
+
+  // The surface point under backing-store pixel (x, y) of the frame on screen, or null.
+  function surfacePoint(x, y) {
+    if (state.error || !state.tracer) return null;
+    if (surfaceStale()) renderNow(false);
+    return MW.picking.pick(state.tracer, x, y);
+  }
+
+  // Grabs the body under pixel (x, y), if any; returns whether one was grabbed.
+  function grabAt(x, y) {
+    const w = state.world;
+    if (!w) return false;
+    const q = surfacePoint(x, y);
+    if (!q) return false;
+    const hit = w.pick(q);
+    if (!hit) return false;
+    w.grab(hit.index, hit.sign, q, GRAB);
+    return true;
+  }
+
+  // Moves the grabbed body's target to the surface under pixel (x, y); false
+  // (and the target stays) off the surface or when nothing is held.
+  function dragTo(x, y) {
+    const w = state.world;
+    if (!w || w.grabbed < 0) return false;
+    const q = surfacePoint(x, y);
+    if (!q) return false;
+    w.drag(q);
+    return true;
+  }
+
+  function releaseGrab() {
+    if (state.world && state.world.grabbed >= 0) state.world.release();
+  }
+
+  // ---- input: grab bodies, orbit, zoom, pan (pointer events: mouse, pen and touch alike) ---
   function watchInput(canvas) {
     const pointers = new Map(); // pointerId → {x, y} (CSS pixels)
     let pinch = 0;              // distance between two touches
@@ -249,13 +319,30 @@
       return Math.hypot(p[0].x - p[1].x, p[0].y - p[1].y);
     }
 
-    canvas.addEventListener("pointerdown", function (e) {
-      if (!state.space) return;
+    function capture(e) {
       try {
         canvas.setPointerCapture(e.pointerId);
       } catch (err) {
         // synthetic or already-released pointers cannot be captured; dragging still works inside the canvas
       }
+    }
+    function pixelOf(e) { return MW.picking.clientToPixel(canvas, e.clientX, e.clientY); }
+
+    canvas.addEventListener("pointerdown", function (e) {
+      if (!state.space) return;
+      if (state.grabPointer !== null) { e.preventDefault(); return; } // one body at a time; other fingers wait
+      // a first primary press on a body grabs it; anywhere else the view orbits
+      if (pointers.size === 0 && e.button === 0 && !e.shiftKey) {
+        const px = pixelOf(e);
+        if (grabAt(px[0], px[1])) {
+          capture(e);
+          state.grabPointer = e.pointerId;
+          canvas.classList.add("holding");
+          e.preventDefault();
+          return;
+        }
+      }
+      capture(e);
       pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
       panning = e.button === 1 || e.button === 2 || e.shiftKey;
       if (pointers.size === 2) pinch = spread();
@@ -263,6 +350,11 @@
       e.preventDefault();
     });
     canvas.addEventListener("pointermove", function (e) {
+      if (e.pointerId === state.grabPointer) {
+        const px = pixelOf(e);
+        dragTo(px[0], px[1]);
+        return;
+      }
       const p = pointers.get(e.pointerId);
       if (!p) return;
       const dx = e.clientX - p.x, dy = e.clientY - p.y;
@@ -279,6 +371,12 @@
       interacted();
     });
     function end(e) {
+      if (e.pointerId === state.grabPointer) {
+        state.grabPointer = null;
+        canvas.classList.remove("holding");
+        releaseGrab();
+        return;
+      }
       if (!pointers.delete(e.pointerId)) return;
       if (pointers.size < 2) pinch = 0;
       if (pointers.size === 0) canvas.classList.remove("dragging");
@@ -353,8 +451,11 @@
     return new Error(e.text());
   }
 
+  // The hash says how many bodies there are when that is not the default scene's count.
   function updateHash() {
     const params = { space: state.spaceName };
+    const w = state.world;
+    if (w && w.count() !== defaultBodyCount()) params.bodies = w.count();
     if (state.options.curvature) params.curvature = 1;
     if (!state.options.grid) params.grid = 0;
     if (state.options.antialias !== DEFAULT_OPTIONS.antialias) params.aa = state.options.antialias;
@@ -368,9 +469,34 @@
     }
   }
 
+  function defaultBodyCount() {
+    return state.space && Array.isArray(state.space.scene) ? state.space.scene.length : 0;
+  }
+
+  // A new world for the current space holding `scene` (parsed), or the default
+  // scene cut or filled to `bodies` bodies (null: as it is). A space script
+  // without an engine (an old web/gen) gets no world and a notice.
+  function newWorld(scene, bodies) {
+    releaseGrab();
+    state.world = null;
+    state.clock.reset();
+    if (!state.space.engine) {
+      state.ui.showNotice("gen/" + entryOf(state.spaceName).script + " has no engine: rebuild web/gen with `manifold build` to get bodies.");
+      return;
+    }
+    const w = new MW.world.World(state.spaceName, state.space);
+    if (scene) w.load(scene);
+    else w.loadDefault(bodies === null || bodies === undefined ? undefined : bodies);
+    state.world = w;
+    state.ui.setSimulation(simulationSettings());
+  }
+
   // Switches to a space: loads its script, resets the camera, compiles its
-  // trace shader and draws a frame. Returns the space's name.
-  async function applySpace(name) {
+  // trace shader, loads the space's default scene (or `how.scene`, or the
+  // default cut or filled to `how.bodies` bodies; `how.keep`: keeps the world
+  // and the camera when the space is the current one) and draws a frame. Returns the space's name.
+  async function applySpace(name, how) {
+    how = how || {};
     const entry = entryOf(name);
     if (!entry) {
       throw new Error("unknown space " + JSON.stringify(name) + "; the spaces are: " +
@@ -388,11 +514,20 @@
         new PageError("load", "gen/" + entry.script + " did not register the space " + JSON.stringify(name) +
           "; rebuild web/gen with `manifold build`."));
     }
+    const keep = how.keep && state.world && state.world.name === name && state.space === space;
     state.spaceName = name;
     state.space = space;
     state.ui.setSpace(entry);
-    state.camera.set(space.camera);
-    state.camera.maxDistance = 8 * space.bounds;
+    if (!keep) {
+      state.camera.set(space.camera);
+      state.camera.maxDistance = 8 * space.bounds;
+      try {
+        newWorld(how.scene || null, how.bodies);
+      } catch (err) {
+        state.world = null;
+        state.ui.showNotice("The scene could not be loaded: " + err.message);
+      }
+    }
     updateHash();
     try {
       state.tracer.setSpaceGlsl(glslFor(name), "sphere tracer for space \"" + name + "\"");
@@ -410,8 +545,8 @@
   }
 
   // Space switches run one after another; each call's promise settles with its own outcome.
-  function setSpace(name) {
-    const job = state.queue.then(function () { return applySpace(name); });
+  function setSpace(name, how) {
+    const job = state.queue.then(function () { return applySpace(name, how); });
     state.queue = job.catch(function () {});
     state.current = job;
     return job;
@@ -451,14 +586,34 @@
     return state.index[0].name;
   }
 
+  // bodies=N from the hash: a whole number from 0 to 1000, else null (the default scene)
+  function bodiesFromHash(params) {
+    if (params.bodies === undefined) return null;
+    const n = Number(params.bodies);
+    if (params.bodies === "" || !Number.isInteger(n) || n < 0 || n > 1000) {
+      state.ui.showNotice("bodies=" + params.bodies + " in the link is not a whole number from 0 to 1000; showing the default scene.");
+      return null;
+    }
+    return n;
+  }
+
   function onHashChange() {
     const params = MW.ui.parseHash(W.location.hash);
     const broken = params.debugBrokenShader === "1";
     setOptions(optionsFromHash(params));
     const name = spaceFromHash(params);
+    const bodies = bodiesFromHash(params);
     if (name !== state.spaceName || broken !== state.debugBrokenShader) {
       state.debugBrokenShader = broken;
-      setSpace(name).catch(function () {});
+      setSpace(name, { bodies: bodies }).catch(function () {});
+    } else if (state.world && (bodies === null ? defaultBodyCount() : bodies) !== state.world.count()) {
+      try {
+        releaseGrab();
+        state.world.loadDefault(bodies === null ? undefined : bodies);
+      } catch (err) {
+        state.ui.showNotice("The scene could not be loaded: " + err.message);
+      }
+      updateHash();
     }
   }
 
@@ -475,13 +630,192 @@
       state.contextLost = false;
       try {
         state.tracer = new MW.tracer.Tracer(state.gl);
+        state.bodyRenderer = new MW.bodies.BodyRenderer(state.gl);
       } catch (err) {
         state.tracer = null;
         fail("The surface cannot be drawn", err);
         return;
       }
-      if (state.spaceName) setSpace(state.spaceName).catch(function () {});
+      if (state.spaceName) setSpace(state.spaceName, { keep: true }).catch(function () {});
     });
+  }
+
+  // ---- the simulation: scenes, bodies, settings ------------------------------------------
+  function requireWorld() {
+    if (!state.world) {
+      throw new Error(state.space ? "the space " + state.spaceName + " has no engine (rebuild web/gen with `manifold build`)"
+        : "no space is loaded yet");
+    }
+    return state.world;
+  }
+
+  function simulationSettings() {
+    const w = state.world;
+    return {
+      paused: state.clock.paused,
+      timeScale: state.clock.timeScale,
+      gravity: w ? w.param("gravityOn") > 0 : true,
+      friction: w ? w.param("friction") : null,
+      restitution: w ? w.param("restitution") : null,
+    };
+  }
+
+  // {paused, timeScale, gravity, friction, restitution}: any subset; throws on bad values.
+  function setSimulation(o) {
+    if (!o || typeof o !== "object") throw new TypeError("setSimulation expects {paused, timeScale, gravity, friction, restitution}");
+    const num = function (k, lo, hi) {
+      const x = o[k];
+      if (typeof x !== "number" || !isFinite(x) || x < lo || x > hi) throw new RangeError(k + " must be a number from " + lo + " to " + hi);
+      return x;
+    };
+    const p = {};
+    if (o.timeScale !== undefined) num("timeScale", 0, 10);
+    if (o.friction !== undefined) p.friction = num("friction", 0, 10);
+    if (o.restitution !== undefined) p.restitution = num("restitution", 0, 1);
+    if (o.gravity !== undefined) p.gravityOn = o.gravity ? 1 : 0;
+    if (Object.keys(p).length) requireWorld().setParams(p);
+    if (o.timeScale !== undefined) state.clock.timeScale = o.timeScale;
+    if (o.paused !== undefined) {
+      state.clock.paused = !!o.paused;
+      state.clock.reset();
+    }
+    const out = simulationSettings();
+    state.ui.setSimulation(out);
+    return out;
+  }
+
+  function bodiesChangedCount() {
+    updateHash();
+  }
+
+  // Adds a body from a scene body (JSON value); returns its index or throws.
+  function addBody(spec) {
+    const i = requireWorld().add(spec);
+    bodiesChangedCount();
+    return i;
+  }
+
+  // A body of the given shape at a free visible surface point: the view's
+  // centre if free, else random pixels of the view's middle; else a seeded
+  // random point of the space.
+  function addAtView(shape) {
+    const w = requireWorld();
+    const scene = state.space.scene || [];
+    const size = scene.length ? scene[0].size : 0.15;
+    const W0 = state.width, H0 = state.height;
+    for (let k = 0; k < 60; k++) {
+      const x = k === 0 ? W0 / 2 : W0 * (0.2 + 0.6 * Math.random());
+      const y = k === 0 ? H0 / 2 : H0 * (0.2 + 0.6 * Math.random());
+      const q = surfacePoint(x, y);
+      if (!q || w.pick(q)) continue;
+      const boundary = state.space.boundary;
+      if (boundary && boundary(q[0], q[1], q[2]) < size) continue;
+      const i = w.addFree({ shape: shape, size: size, p: q, angle: 2 * Math.PI * Math.random() });
+      if (i < 0) continue;
+      bodiesChangedCount();
+      return i;
+    }
+    const before = w.count();
+    w.fill(before + 1, [{ shape: shape, size: size }]);
+    bodiesChangedCount();
+    if (w.count() === before) throw new Error("no free place for another body was found");
+    return before;
+  }
+
+  // The space's default scene again, cut or filled to n bodies (default: as it is).
+  function resetScene(n) {
+    if (n !== undefined && n !== null && !(Number.isInteger(n) && n >= 0 && n <= 1000)) {
+      throw new RangeError("resetScene(n) expects a whole number of bodies from 0 to 1000");
+    }
+    const w = requireWorld();
+    releaseGrab();
+    w.loadDefault(n === null ? undefined : n);
+    state.clock.reset();
+    state.ui.setSimulation(simulationSettings());
+    bodiesChangedCount();
+    return w.count();
+  }
+
+  function clearBodies() {
+    requireWorld().clear();
+    bodiesChangedCount();
+  }
+
+  // Loads a scene (JSON text or value); a scene of another space switches to it.
+  // Resolves with the number of bodies; rejects (and shows why on the page) on bad input.
+  function loadScene(json) {
+    let scene;
+    try {
+      scene = MW.world.parseScene(json, state.index.map(function (e) { return e.name; }));
+    } catch (err) {
+      const e = new Error("The scene could not be loaded: " + err.message);
+      state.ui.showNotice(e.message);
+      return Promise.reject(e);
+    }
+    const done = function () {
+      state.ui.setSimulation(simulationSettings());
+      updateHash();
+      return state.world ? state.world.count() : 0;
+    };
+    if (scene.space !== state.spaceName) {
+      return setSpace(scene.space, { scene: scene }).then(function () {
+        if (!state.world || state.world.count() !== scene.bodies.length) {
+          throw new Error("The scene could not be loaded into " + scene.space + (state.ui ? "; see the notice on the page" : ""));
+        }
+        return done();
+      });
+    }
+    try {
+      requireWorld();
+      // all or nothing: the world is only replaced when every body fits
+      const w = new MW.world.World(state.spaceName, state.space);
+      w.load(scene);
+      releaseGrab();
+      state.world = w;
+      state.clock.reset();
+    } catch (err) {
+      const e = new Error("The scene could not be loaded: " + err.message);
+      state.ui.showNotice(e.message);
+      return Promise.reject(e);
+    }
+    state.ui.hideNotice();
+    return Promise.resolve(done());
+  }
+
+  function currentScene() {
+    return requireWorld().scene();
+  }
+
+  // The current scene as a download (manifold-SPACE.json).
+  function saveSceneFile() {
+    const text = JSON.stringify(currentScene(), null, 2) + "\n";
+    const blob = new Blob([text], { type: "application/json" });
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(blob);
+    a.download = "manifold-" + state.spaceName + ".json";
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(function () { URL.revokeObjectURL(a.href); }, 1000);
+  }
+
+  function loadSceneFile(file) {
+    const reader = new FileReader();
+    reader.onload = function () { loadScene(String(reader.result)).catch(function () {}); };
+    reader.onerror = function () { state.ui.showNotice("The file " + file.name + " could not be read."); };
+    reader.readAsText(file);
+  }
+
+  // Reports an error of a control as a notice (the controls never throw into the page).
+  function guarded(f) {
+    return function () {
+      try {
+        return f.apply(null, arguments);
+      } catch (err) {
+        state.ui.showNotice(err.message || String(err));
+        return undefined;
+      }
+    };
   }
 
   // ---- the scripting API ----------------------------------------------------------------
@@ -498,7 +832,7 @@
       ready: function () { return state.current || Promise.reject(new Error(state.error ? state.error.text() : "not started")); },
       // surface point [x, y, z] under backing-store pixel (x, y), origin top-left, or null
       pick: function (x, y) {
-        if ((needsFrame() || state.preview) && !state.error) renderNow(false);
+        if ((surfaceStale() || state.preview) && !state.error) renderNow(false);
         return MW.picking.pick(state.error ? null : state.tracer, x, y);
       },
       // draw one full-resolution frame now (synchronously)
@@ -531,12 +865,52 @@
       setOptions: setOptions,
       // Replace a space's GLSL (null restores the generated one); rebuilds the
       // shader when it is the current space. For experiments and the error-path test.
+      // ---- bodies (the engine of the current space) ----
+      // add a body from a scene body {shape, size, density, static, p, v, angle, omega}; returns its index or throws
+      addBody: addBody,
+      // remove every body
+      clear: clearBodies,
+      // the space's default scene again (default parameters), cut or filled to n bodies; returns the count
+      resetScene: resetScene,
+      // n physics steps now, synchronously (the polygons are then current); returns the body count
+      step: function (n) {
+        n = n === undefined ? 1 : n;
+        if (!Number.isInteger(n) || n < 0 || n > 1e6) throw new RangeError("step(n) expects a whole number of steps from 0 to 1000000");
+        const w = requireWorld();
+        w.step(n);
+        return w.count();
+      },
+      // the bodies in the scene format
+      bodies: function () { return state.world ? state.world.bodies() : []; },
+      pause: function () { setSimulation({ paused: true }); },
+      resume: function () { setSimulation({ paused: false }); },
+      // {paused, timeScale, gravity, friction, restitution}
+      simulation: simulationSettings,
+      setSimulation: setSimulation,
+      // grab the body under backing-store pixel (x, y) with the mouse joint; true if one was grabbed
+      grab: function (x, y) {
+        if (typeof x !== "number" || typeof y !== "number") throw new TypeError("grab(x, y) expects canvas backing-store pixels");
+        releaseGrab();
+        return grabAt(x, y);
+      },
+      // move the grabbed body's target to the surface under (x, y); false off the surface or when nothing is held
+      drag: function (x, y) {
+        if (typeof x !== "number" || typeof y !== "number") throw new TypeError("drag(x, y) expects canvas backing-store pixels");
+        return dragTo(x, y);
+      },
+      release: releaseGrab,
+      // the index of the grabbed body, or -1
+      grabbed: function () { return state.world ? state.world.grabbed : -1; },
+      // load a scene (JSON text or value); a Promise of the body count, rejected with the problem
+      loadScene: loadScene,
+      // the current scene as a JSON value (what saveScene downloads)
+      scene: currentScene,
       setSpaceGlsl: function (name, text) {
         if (!entryOf(name)) return Promise.reject(new Error("unknown space " + JSON.stringify(name)));
         if (text === null || text === undefined) delete state.glslOverrides[name];
         else if (typeof text !== "string") return Promise.reject(new TypeError("setSpaceGlsl expects GLSL text or null"));
         else state.glslOverrides[name] = text;
-        return name === state.spaceName ? setSpace(name) : Promise.resolve(name);
+        return name === state.spaceName ? setSpace(name, { keep: true }) : Promise.resolve(name);
       },
     };
   }
@@ -549,6 +923,17 @@
       onGrid: function (on) { setOptions({ grid: on }); },
       onAntialias: function (mode) { setOptions({ antialias: mode }); },
       onResetView: function () { if (state.space) state.camera.set(state.space.camera); },
+      onAdd: guarded(function (shape) { addAtView(shape); }),
+      onClear: guarded(clearBodies),
+      onReset: guarded(function () { resetScene(); }),
+      onPause: guarded(function () { setSimulation({ paused: !state.clock.paused }); }),
+      onStep: guarded(function () { setSimulation({ paused: true }); requireWorld().step(1); }),
+      onTimeScale: guarded(function (x) { setSimulation({ timeScale: x }); }),
+      onGravity: guarded(function (on) { setSimulation({ gravity: on }); }),
+      onFriction: guarded(function (x) { setSimulation({ friction: x }); }),
+      onRestitution: guarded(function (x) { setSimulation({ restitution: x }); }),
+      onSave: guarded(saveSceneFile),
+      onLoad: guarded(loadSceneFile),
     });
     W.manifold = api();
     const canvas = state.ui.canvas;
@@ -568,10 +953,12 @@
     state.debugBrokenShader = params.debugBrokenShader === "1";
     setOptions(optionsFromHash(params));
     const first = spaceFromHash(params);
+    const firstBodies = bodiesFromHash(params);
 
     try {
       state.gl = MW.gl.createContext(canvas);
       state.tracer = new MW.tracer.Tracer(state.gl);
+      state.bodyRenderer = new MW.bodies.BodyRenderer(state.gl);
     } catch (err) {
       state.tracer = null;
       state.current = Promise.reject(fail(err.kind === "shader" ? "The surface cannot be drawn" : "WebGL2 is not available", err));
@@ -582,7 +969,7 @@
     watchSize(canvas);
     watchInput(canvas);
     W.addEventListener("hashchange", onHashChange);
-    setSpace(first).catch(function () {});
+    setSpace(first, { bodies: firstBodies }).catch(function () {});
     W.requestAnimationFrame(frame);
   }
 

@@ -9,11 +9,15 @@
 //        attachment 0 = (x, y, z, distance from the eye) of the surface point; w = -1 on background
 //        attachment 1 = (unit normal from the generated gradient, Gaussian curvature, or 0
 //                        when curvature colouring is off)
-//   2. shade  → colour (lighting, background gradient, optional curvature colouring);
-//        into an RGBA8 buffer when antialiasing or s ≠ 1, else straight to the canvas
-//   (hook) the page's overlay (the engine's body polygons, later) draws into the same colour buffer
+//   2. shade  → the surface buffer (RGBA8): lighting, background gradient, optional
+//               curvature colouring
+//   (copy)      surface buffer → colour buffer (RGBA8), then the page's overlay (the
+//               engine's body polygons) draws into the colour buffer
 //   3. post   → canvas: FXAA, or resampling (the 2×2 box filter of the supersampled buffer,
-//               the bilinear upscaling of a preview)
+//               the bilinear upscaling of a preview, a plain copy without antialiasing)
+// Passes 1 and 2 depend only on the camera, the space and the options: render()
+// skips them when the caller's surface key matches the one the buffers were
+// shaded with, so moving bodies cost only the copy, the overlay and the post pass.
 (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
@@ -308,7 +312,7 @@ void main() {
       this.shadeProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, SHADE_FRAGMENT, "shading pass");
       this.fxaaProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, FXAA_FRAGMENT, "FXAA pass");
       this.resampleProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, RESAMPLE_FRAGMENT, "resampling pass");
-      this.buffers = new Map(); // "W×H" → { float (RGBA32F × 2), color (RGBA8) or null }
+      this.buffers = new Map(); // "W×H" → { float (RGBA32F × 2), surface, color (RGBA8), surfaceKey }
       this.current = null;      // the buffers of the configured frame
       this.width = 0;           // canvas backing store
       this.height = 0;
@@ -328,6 +332,7 @@ void main() {
       if (this.traceProgram) this.gl.deleteProgram(this.traceProgram.program);
       this.traceProgram = null;
       this.hasFrame = false;
+      this.buffers.forEach(function (b) { b.traced = false; b.surfaceKey = null; });
     }
 
     // Sizes the buffers for a width × height canvas and an antialiasing mode.
@@ -341,21 +346,18 @@ void main() {
       if (width !== this.width || height !== this.height) {
         // a new canvas size: the buffers of the old one go
         const self = this;
-        this.buffers.forEach(function (b) { G.deleteTarget(gl, b.float); G.deleteTarget(gl, b.color); });
+        this.buffers.forEach(function (b) { G.deleteTarget(gl, b.float); G.deleteTarget(gl, b.surface); G.deleteTarget(gl, b.color); });
         this.buffers.clear();
         self.current = null;
       }
       let b = this.buffers.get(key);
       if (!b) {
-        b = { float: G.createFloatTarget(gl, tw, th, 2), color: null };
+        b = { float: G.createFloatTarget(gl, tw, th, 2), surface: G.createColorTarget(gl, tw, th),
+          color: G.createColorTarget(gl, tw, th), surfaceKey: null, traced: false };
         this.buffers.set(key, b);
       }
-      // shading goes through a colour buffer unless it can go straight to the canvas
-      const needColor = scale !== 1 || antialias === "fxaa";
-      if (needColor && !b.color) b.color = G.createColorTarget(gl, tw, th);
-      if (b !== this.current) this.hasFrame = false;
       this.current = b;
-      this.useColor = needColor;
+      this.hasFrame = b.traced;
       this.width = width;
       this.height = height;
       this.scale = tw / width;
@@ -366,74 +368,91 @@ void main() {
     // Draws one frame. view = { camera (a Camera), bounds, curvature (bool),
     // curvatureScale, grid (bool), gridSpacing, background: {top, bottom} (0..1 RGB) }.
     // overlay(frame) is called after shading with the colour buffer bound.
-    render(view, overlay) {
+    // surfaceKey: anything that changes whenever the traced picture would
+    // (camera, space, options); when it equals the key of the buffers' last
+    // shading, the trace and shading are reused. null: always trace.
+    render(view, overlay, surfaceKey) {
       const gl = this.gl;
       if (!this.current) throw new Error("Tracer.render before configure");
-      const floatTarget = this.current.float;
+      const buffers = this.current;
+      const floatTarget = buffers.float;
+      const reuse = surfaceKey !== undefined && surfaceKey !== null && buffers.traced && buffers.surfaceKey === surfaceKey;
       const tw = floatTarget.width, th = floatTarget.height;
       const basis = view.camera.basis();
       gl.disable(gl.BLEND);
       gl.disable(gl.DEPTH_TEST);
       gl.disable(gl.CULL_FACE);
 
-      // 1. trace
-      gl.bindFramebuffer(gl.FRAMEBUFFER, floatTarget.fb);
-      gl.viewport(0, 0, tw, th);
-      gl.clearBufferfv(gl.COLOR, 0, [0, 0, 0, -1]);
-      gl.clearBufferfv(gl.COLOR, 1, [0, 0, 0, 0]);
-      if (this.traceProgram) {
-        const p = this.traceProgram;
-        gl.useProgram(p.program);
-        gl.uniform3fv(p.uniform("uEye"), view.camera.eye);
-        gl.uniform3fv(p.uniform("uForward"), basis.forward);
-        gl.uniform3fv(p.uniform("uRight"), basis.right);
-        gl.uniform3fv(p.uniform("uUp"), basis.up);
-        gl.uniform1f(p.uniform("uTanHalf"), basis.tanHalf);
-        gl.uniform1f(p.uniform("uAspect"), tw / th);
-        gl.uniform2f(p.uniform("uResolution"), tw, th);
-        gl.uniform1f(p.uniform("uBounds"), view.bounds);
-        gl.uniform1f(p.uniform("uPixelAngle"), 2 * basis.tanHalf / th);
-        gl.uniform1i(p.uniform("uCurvature"), view.curvature ? 1 : 0);
+      if (!reuse) {
+        // 1. trace
+        gl.bindFramebuffer(gl.FRAMEBUFFER, floatTarget.fb);
+        gl.viewport(0, 0, tw, th);
+        gl.clearBufferfv(gl.COLOR, 0, [0, 0, 0, -1]);
+        gl.clearBufferfv(gl.COLOR, 1, [0, 0, 0, 0]);
+        if (this.traceProgram) {
+          const p = this.traceProgram;
+          gl.useProgram(p.program);
+          gl.uniform3fv(p.uniform("uEye"), view.camera.eye);
+          gl.uniform3fv(p.uniform("uForward"), basis.forward);
+          gl.uniform3fv(p.uniform("uRight"), basis.right);
+          gl.uniform3fv(p.uniform("uUp"), basis.up);
+          gl.uniform1f(p.uniform("uTanHalf"), basis.tanHalf);
+          gl.uniform1f(p.uniform("uAspect"), tw / th);
+          gl.uniform2f(p.uniform("uResolution"), tw, th);
+          gl.uniform1f(p.uniform("uBounds"), view.bounds);
+          gl.uniform1f(p.uniform("uPixelAngle"), 2 * basis.tanHalf / th);
+          gl.uniform1i(p.uniform("uCurvature"), view.curvature ? 1 : 0);
+          G.drawFullscreen(gl, this.vao);
+          this.hasFrame = true;
+        }
+        buffers.traced = this.hasFrame;
+        buffers.surfaceKey = this.hasFrame ? surfaceKey : null;
+
+        // 2. shade
+        gl.bindFramebuffer(gl.FRAMEBUFFER, buffers.surface.fb);
+        gl.viewport(0, 0, tw, th);
+        const s = this.shadeProgram;
+        gl.useProgram(s.program);
+        gl.activeTexture(gl.TEXTURE0);
+        gl.bindTexture(gl.TEXTURE_2D, floatTarget.textures[0]);
+        gl.activeTexture(gl.TEXTURE1);
+        gl.bindTexture(gl.TEXTURE_2D, floatTarget.textures[1]);
+        gl.uniform1i(s.uniform("uPosition"), 0);
+        gl.uniform1i(s.uniform("uNormal"), 1);
+        gl.uniform3fv(s.uniform("uEye"), view.camera.eye);
+        gl.uniform3fv(s.uniform("uForward"), basis.forward);
+        gl.uniform3fv(s.uniform("uRight"), basis.right);
+        gl.uniform3fv(s.uniform("uUp"), basis.up);
+        gl.uniform2f(s.uniform("uResolution"), tw, th);
+        gl.uniform3fv(s.uniform("uBackgroundTop"), view.background.top);
+        gl.uniform3fv(s.uniform("uBackgroundBottom"), view.background.bottom);
+        gl.uniform1i(s.uniform("uCurvature"), view.curvature ? 1 : 0);
+        gl.uniform1f(s.uniform("uCurvatureScale"), view.curvatureScale);
+        gl.uniform1i(s.uniform("uGrid"), view.grid ? 1 : 0);
+        gl.uniform1f(s.uniform("uGridSpacing"), view.gridSpacing);
+        gl.uniform1f(s.uniform("uLineWidth"), Math.max(1, this.scale));
         G.drawFullscreen(gl, this.vao);
-        this.hasFrame = true;
+        gl.activeTexture(gl.TEXTURE1);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+        gl.activeTexture(gl.TEXTURE0);
+        gl.bindTexture(gl.TEXTURE_2D, null);
       }
 
-      // 2. shade
-      const target = this.useColor ? this.current.color : null;
-      gl.bindFramebuffer(gl.FRAMEBUFFER, target ? target.fb : null);
-      gl.viewport(0, 0, target ? tw : this.width, target ? th : this.height);
-      const s = this.shadeProgram;
-      gl.useProgram(s.program);
-      gl.activeTexture(gl.TEXTURE0);
-      gl.bindTexture(gl.TEXTURE_2D, floatTarget.textures[0]);
-      gl.activeTexture(gl.TEXTURE1);
-      gl.bindTexture(gl.TEXTURE_2D, floatTarget.textures[1]);
-      gl.uniform1i(s.uniform("uPosition"), 0);
-      gl.uniform1i(s.uniform("uNormal"), 1);
-      gl.uniform3fv(s.uniform("uEye"), view.camera.eye);
-      gl.uniform3fv(s.uniform("uForward"), basis.forward);
-      gl.uniform3fv(s.uniform("uRight"), basis.right);
-      gl.uniform3fv(s.uniform("uUp"), basis.up);
-      gl.uniform2f(s.uniform("uResolution"), tw, th);
-      gl.uniform3fv(s.uniform("uBackgroundTop"), view.background.top);
-      gl.uniform3fv(s.uniform("uBackgroundBottom"), view.background.bottom);
-      gl.uniform1i(s.uniform("uCurvature"), view.curvature ? 1 : 0);
-      gl.uniform1f(s.uniform("uCurvatureScale"), view.curvatureScale);
-      gl.uniform1i(s.uniform("uGrid"), view.grid ? 1 : 0);
-      gl.uniform1f(s.uniform("uGridSpacing"), view.gridSpacing);
-      gl.uniform1f(s.uniform("uLineWidth"), Math.max(1, this.scale));
-      G.drawFullscreen(gl, this.vao);
-      gl.activeTexture(gl.TEXTURE1);
-      gl.bindTexture(gl.TEXTURE_2D, null);
-      gl.activeTexture(gl.TEXTURE0);
-      gl.bindTexture(gl.TEXTURE_2D, null);
+      // the shaded surface → the colour buffer, where the overlay draws
+      const target = buffers.color;
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, buffers.surface.fb);
+      gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, target.fb);
+      gl.blitFramebuffer(0, 0, tw, th, 0, 0, tw, th, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, target.fb);
+      gl.viewport(0, 0, tw, th);
 
       if (overlay) {
         overlay({
           gl: gl,
-          framebuffer: target ? target.fb : null,
-          width: target ? tw : this.width,
-          height: target ? th : this.height,
+          framebuffer: target.fb,
+          width: tw,
+          height: th,
           scale: this.scale,
           positionTexture: floatTarget.textures[0],
           normalTexture: floatTarget.textures[1],
@@ -441,9 +460,9 @@ void main() {
       }
 
       // 3. post: FXAA at full resolution, else resample (2×2 box filter for
-      // supersampling, bilinear upscaling for a preview)
-      if (target) {
-        const post = this.scale === 1 ? this.fxaaProgram : this.resampleProgram;
+      // supersampling, bilinear upscaling for a preview, a copy without antialiasing)
+      {
+        const post = this.scale === 1 && this.antialias === "fxaa" ? this.fxaaProgram : this.resampleProgram;
         gl.bindFramebuffer(gl.FRAMEBUFFER, null);
         gl.viewport(0, 0, this.width, this.height);
         gl.useProgram(post.program);
@@ -470,7 +489,7 @@ void main() {
       const gl = this.gl;
       this.dropSpace();
       [this.shadeProgram, this.fxaaProgram, this.resampleProgram].forEach(function (p) { gl.deleteProgram(p.program); });
-      this.buffers.forEach(function (b) { G.deleteTarget(gl, b.float); G.deleteTarget(gl, b.color); });
+      this.buffers.forEach(function (b) { G.deleteTarget(gl, b.float); G.deleteTarget(gl, b.surface); G.deleteTarget(gl, b.color); });
       this.buffers.clear();
       this.current = null;
       gl.deleteVertexArray(this.vao);

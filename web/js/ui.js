@@ -77,6 +77,57 @@
     resetButton.addEventListener("click", function () { handlers.onResetView(); });
     $("notice-close").addEventListener("click", function () { notice.hidden = true; });
 
+    // bodies and simulation
+    const sides = $("polygon-sides");
+    const pause = $("pause");
+    const timeScale = $("time-scale");
+    const gravity = $("gravity");
+    const friction = $("friction"), frictionValue = $("friction-value");
+    const restitution = $("restitution"), restitutionValue = $("restitution-value");
+    const sceneFile = $("scene-file");
+    $("add-circle").addEventListener("click", function () { handlers.onAdd("circle"); });
+    $("add-square").addEventListener("click", function () { handlers.onAdd("square"); });
+    $("add-polygon").addEventListener("click", function () {
+      const n = Math.round(Number(sides.value));
+      if (!(n >= 3 && n <= 64)) {
+        showNotice("A polygon has 3 to 64 sides.");
+        return;
+      }
+      sides.value = n;
+      handlers.onAdd({ polygon: n });
+    });
+    $("clear").addEventListener("click", function () { handlers.onClear(); });
+    $("reset-scene").addEventListener("click", function () { handlers.onReset(); });
+    pause.addEventListener("click", function () { handlers.onPause(); });
+    $("step").addEventListener("click", function () { handlers.onStep(); });
+    timeScale.addEventListener("change", function () { handlers.onTimeScale(Number(timeScale.value)); });
+    gravity.addEventListener("change", function () { handlers.onGravity(gravity.checked); });
+    friction.addEventListener("input", function () {
+      frictionValue.textContent = Number(friction.value).toFixed(2);
+      handlers.onFriction(Number(friction.value));
+    });
+    restitution.addEventListener("input", function () {
+      restitutionValue.textContent = Number(restitution.value).toFixed(2);
+      handlers.onRestitution(Number(restitution.value));
+    });
+    $("save-scene").addEventListener("click", function () { handlers.onSave(); });
+    $("load-scene").addEventListener("click", function () { sceneFile.click(); });
+    sceneFile.addEventListener("change", function () {
+      const f = sceneFile.files && sceneFile.files[0];
+      sceneFile.value = "";
+      if (f) handlers.onLoad(f);
+    });
+
+    function showNotice(text) {
+      noticeText.textContent = text;
+      notice.hidden = false;
+    }
+    function setPaused(on) {
+      if (pause.getAttribute("aria-pressed") === String(on)) return;
+      pause.textContent = on ? "Resume" : "Pause";
+      pause.setAttribute("aria-pressed", String(on));
+    }
+
     return {
       canvas: canvas,
       setSpaces: function (index) {
@@ -121,9 +172,28 @@
         messageSource.textContent = "";
         canvas.classList.remove("failed");
       },
-      showNotice: function (text) {
-        noticeText.textContent = text;
-        notice.hidden = false;
+      showNotice: showNotice,
+      setPaused: setPaused,
+      // {paused, timeScale, gravity, friction, restitution} → the controls
+      setSimulation: function (o) {
+        setPaused(!!o.paused);
+        const ts = String(o.timeScale);
+        if (!Array.from(timeScale.options).some(function (opt) { return opt.value === ts; })) {
+          const opt = document.createElement("option");
+          opt.value = ts;
+          opt.textContent = ts + "×";
+          timeScale.appendChild(opt);
+        }
+        timeScale.value = ts;
+        gravity.checked = !!o.gravity;
+        if (typeof o.friction === "number") {
+          friction.value = o.friction;
+          frictionValue.textContent = o.friction.toFixed(2);
+        }
+        if (typeof o.restitution === "number") {
+          restitution.value = o.restitution;
+          restitutionValue.textContent = o.restitution.toFixed(2);
+        }
       },
       hideNotice: function () { notice.hidden = true; },
     };

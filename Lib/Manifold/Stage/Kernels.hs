@@ -118,7 +118,7 @@ cameraJs c = "{ eye: " ++ vecJs (cameraEye c) ++ ", target: " ++ vecJs (cameraTa
 
 placementJs :: Placement -> String
 placementJs p = "{ shape: " ++ shapeJs (placeShape p) ++ ", size: " ++ num (placeSize p)
-  ++ ", p: " ++ vecJs (placeAt p) ++ " }"
+  ++ ", p: " ++ vecJs (placeAt p) ++ (if placeStatic p then ", static: true" else "") ++ " }"
   where
     shapeJs CircleShape = jsString "circle"
     shapeJs SquareShape = jsString "square"

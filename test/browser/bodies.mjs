@@ -1,0 +1,341 @@
+// Browser tests of the bodies: drawn from the engine's polygons, hidden behind
+// the surface, grabbed and dragged with real mouse events, stepped
+// deterministically, saved and loaded as scenes. Run by run.mjs (part "bodies";
+// the per-space visibility check runs with each space).
+import fs from "node:fs";
+import path from "node:path";
+import { OUT, canvasShot } from "./lib.mjs";
+
+// A pixel is "body-coloured" when it is strongly saturated: the page's body
+// palette is, the beige surface, its grid and the background are not.
+const SATURATED = 80;
+const FIELD_ON_SURFACE = 1e-6;
+
+function saturation(c) { return Math.max(c[0], c[1], c[2]) - Math.min(c[0], c[1], c[2]); }
+
+// The fraction of body-coloured pixels in the (2r+1)² square about (x, y).
+export function bodyFraction(shot, x, y, r) {
+  r = r === undefined ? 4 : r;
+  let n = 0, hit = 0;
+  for (let dy = -r; dy <= r; dy++) {
+    for (let dx = -r; dx <= r; dx++) {
+      const px = Math.floor(x) + dx, py = Math.floor(y) + dy;
+      if (px < 0 || py < 0 || px >= shot.width || py >= shot.height) continue;
+      n++;
+      if (saturation(shot.at(px, py)) > SATURATED) hit++;
+    }
+  }
+  return n ? hit / n : 0;
+}
+
+// The bodies (and, on antipodal quotients, their images) whose centre is the
+// surface point seen at its projected pixel: [{ index, image, p, pixel }].
+async function visibleCentres(page) {
+  return page.evaluate(function () {
+    const m = window.manifold, st = m.stats();
+    const space = window.Manifold.spaces[m.space()];
+    const out = [];
+    m.bodies().forEach(function (b, i) {
+      const images = space.quotient === "antipodal" ? [1, -1] : [1];
+      images.forEach(function (s) {
+        const p = b.p.map(function (x) { return s * x; });
+        const q = m.project(p);
+        if (!q || q[0] < 6 || q[1] < 6 || q[0] > st.width - 6 || q[1] > st.height - 6) return;
+        const seen = m.pick(q[0], q[1]);
+        if (seen && Math.hypot(seen[0] - p[0], seen[1] - p[1], seen[2] - p[2]) < 0.01 * b.size + 0.01) {
+          out.push({ index: i, image: s < 0, p: p, pixel: q });
+        }
+      });
+    });
+    return out;
+  });
+}
+
+// Per space, on the page just loaded: the default scene's bodies are drawn —
+// at a visible body's projected centre the screenshot is body-coloured. The
+// scene is reloaded as it starts (the page has run it for a moment, and gravity
+// carries some spaces' bodies to the side the camera does not see), then paused.
+export async function checkVisibleBodies(check, page, name) {
+  const n = await page.evaluate(function () {
+    const m = window.manifold;
+    m.pause();
+    return m.loadScene({ space: m.space(), bodies: window.Manifold.spaces[m.space()].scene }).then(function (count) {
+      m.render();
+      return count;
+    });
+  });
+  const shot = await canvasShot(page, path.join(OUT, name + "-bodies.png"));
+  const seen = await visibleCentres(page);
+  const shown = seen.map(function (v) { return Object.assign({ fraction: bodyFraction(shot, v.pixel[0], v.pixel[1]) }, v); });
+  const drawn = shown.filter(function (v) { return v.fraction >= 0.4; });
+  check(name + ": the default scene's bodies are drawn (body colour at a visible body's projected centre)",
+    n > 0 && seen.length > 0 && drawn.length > 0,
+    n + " bodies, " + seen.length + " centres on the visible side, " + drawn.length + " body-coloured" +
+    (shown.length ? " (" + shown.map(function (v) { return v.index + (v.image ? "'" : "") + ":" + v.fraction.toFixed(2); }).join(" ") + ")" : ""));
+}
+
+async function openSpace(context, base, hash, errors) {
+  const page = await context.newPage();
+  page.on("console", function (m) { if (m.type() === "error") errors.push("console: " + m.text()); });
+  page.on("pageerror", function (e) { errors.push("pageerror: " + e.message); });
+  await page.goto(base + hash);
+  await page.waitForFunction(function () { return !!window.manifold; });
+  await page.evaluate(function () { return window.manifold.ready(); });
+  return page;
+}
+
+// One body of `size` at surface point p of the current space, nothing moving, no gravity.
+async function single(page, p, size, paused) {
+  return page.evaluate(function (a) {
+    const m = window.manifold;
+    return m.loadScene({ space: m.space(), gravity: false, bodies: [{ shape: "circle", size: a.size, p: a.p }] }).then(function () {
+      if (a.paused) m.pause(); else m.resume();
+      m.render();
+      return m.bodies()[0].p;
+    });
+  }, { p: p, size: size, paused: paused });
+}
+
+// ---- hidden bodies are hidden: on the sphere a body at −(camera direction)
+// is not drawn at its pixel; at +(camera direction) it is. On the projective
+// plane the far body is seen through its antipodal image. ----
+async function testHidden(check, context, base) {
+  const errors = [];
+  for (const name of ["sphere", "projective-plane"]) {
+    const page = await openSpace(context, base, "#space=" + name, errors);
+    const dir = await page.evaluate(function () {
+      const c = window.manifold.camera();
+      const d = [c.eye[0] - c.target[0], c.eye[1] - c.target[1], c.eye[2] - c.target[2]];
+      const l = Math.hypot(d[0], d[1], d[2]);
+      return d.map(function (x) { return x / l; });
+    });
+    const far = dir.map(function (x) { return -x; });
+    const results = {};
+    for (const [label, p] of [["far", far], ["near", dir]]) {
+      const placed = await single(page, p, 0.3, true);
+      const px = await page.evaluate(function (q) { return window.manifold.project(q); }, placed);
+      const shot = await canvasShot(page, path.join(OUT, name + "-" + label + "-body.png"));
+      results[label] = { fraction: bodyFraction(shot, px[0], px[1], 6), pixel: px };
+    }
+    const detail = "far side " + results.far.fraction.toFixed(2) + ", near side " + results.near.fraction.toFixed(2) +
+      " of the pixels about " + results.near.pixel.map(Math.round).join(",") + " body-coloured";
+    if (name === "sphere") {
+      check("sphere: a body on the far side (p = −camera direction) is hidden, one on the near side is drawn",
+        results.far.fraction < 0.02 && results.near.fraction > 0.6, detail);
+    } else {
+      check("projective-plane: a body on the far side is drawn through its antipodal image (and on the near side too)",
+        results.far.fraction > 0.6 && results.near.fraction > 0.6, detail);
+    }
+    await page.close();
+  }
+  check("hidden-body pages: no console errors", errors.length === 0, errors.join("; "));
+}
+
+// ---- dragging with real mouse events moves the body along the surface ----
+async function testDrag(check, context, base, name, start, drag) {
+  const errors = [];
+  const page = await openSpace(context, base, "#space=" + name, errors);
+  const st = await page.evaluate(function () { return window.manifold.stats(); });
+  const pixel = [Math.round(st.width * start[0]), Math.round(st.height * start[1])];
+  const p = await page.evaluate(function (px) { return window.manifold.pick(px[0], px[1]); }, pixel);
+  if (!check(name + ": a surface point to start the drag at " + pixel.join(","), p !== null)) { await page.close(); return; }
+  const placed = await single(page, p, 0.2, false);
+  const c0 = await page.evaluate(function (q) { return window.manifold.project(q); }, placed);
+  const box = await page.locator("#view").boundingBox();
+  await page.mouse.move(box.x + c0[0], box.y + c0[1]);
+  await page.mouse.down();
+  const grabbed = await page.evaluate(function () { return window.manifold.grabbed(); });
+  await page.mouse.move(box.x + c0[0] + drag[0], box.y + c0[1] + drag[1], { steps: 5 });
+  const len = Math.hypot(drag[0], drag[1]);
+  let moved = null;
+  const t0 = Date.now();
+  while (Date.now() - t0 < 12000) {
+    moved = await page.evaluate(function () {
+      const m = window.manifold, b = m.bodies()[0];
+      const s = window.Manifold.spaces[m.space()];
+      return { p: b.p, pixel: m.project(b.p), field: s.field(b.p[0], b.p[1], b.p[2]), steps: m.stats().steps };
+    });
+    const d = [moved.pixel[0] - c0[0], moved.pixel[1] - c0[1]];
+    moved.along = (d[0] * drag[0] + d[1] * drag[1]) / len;
+    moved.distance = Math.hypot(d[0], d[1]);
+    if (moved.along > 0.8 * len) break;
+    await page.waitForTimeout(200);
+  }
+  await page.mouse.up();
+  const after = await page.evaluate(function () { return window.manifold.grabbed(); });
+  check(name + ": pressing the mouse on a body grabs it, releasing lets go", grabbed === 0 && after === -1,
+    "grabbed " + grabbed + ", after release " + after);
+  check(name + ": dragging the mouse " + len + " px moves the body's projected centre along the drag, on the surface",
+    moved.along > 0.5 * len && moved.along > 0.7 * moved.distance && Math.abs(moved.field) < FIELD_ON_SURFACE,
+    "moved " + moved.distance.toFixed(1) + " px, " + moved.along.toFixed(1) + " px along the drag, |field| " +
+    Math.abs(moved.field).toExponential(2) + " after " + ((Date.now() - t0) / 1000).toFixed(1) + " s");
+  await canvasShot(page, path.join(OUT, name + "-drag.png"));
+  check(name + " drag page: no console errors", errors.length === 0, errors.join("; "));
+  await page.close();
+}
+
+// ---- the API, determinism, scenes, the URL, the controls ----
+async function testApi(check, context, base) {
+  const errors = [];
+  const page = await openSpace(context, base, "#space=torus&bodies=12", errors);
+  const first = await page.evaluate(function () {
+    return { n: window.manifold.bodies().length, hash: location.hash, stats: window.manifold.stats() };
+  });
+  check("#space=torus&bodies=12 loads twelve bodies (the default six and six more)",
+    first.n === 12 && first.hash === "#space=torus&bodies=12", JSON.stringify({ n: first.n, hash: first.hash }));
+  const st = first.stats;
+  check("stats() reports bodies, contacts, physics ms per step and warnings",
+    st.bodies === 12 && typeof st.contacts === "number" && typeof st.warnings === "number" &&
+      (st.physicsMsPerStep === null || st.physicsMsPerStep > 0), JSON.stringify(st));
+
+  // step(n) is deterministic: the same scene twice gives the same bodies
+  const det = await page.evaluate(function () {
+    const m = window.manifold;
+    m.pause();
+    const scene = m.scene();
+    const run = function () {
+      return m.loadScene(scene).then(function () {
+        m.step(150);
+        return JSON.stringify(m.bodies());
+      });
+    };
+    return run().then(function (a) {
+      return run().then(function (b) { return { same: a === b, moved: a !== JSON.stringify(scene.bodies), n: JSON.parse(a).length }; });
+    });
+  });
+  check("step(150) twice from the same scene gives the same bodies (and they moved)", det.same && det.moved && det.n === 12,
+    JSON.stringify(det));
+
+  // addBody, clear, errors in words
+  const api = await page.evaluate(function () {
+    const m = window.manifold;
+    const out = {};
+    m.clear();
+    out.cleared = m.bodies().length;
+    out.hashAfterClear = location.hash;
+    out.index = m.addBody({ shape: { polygon: 5 }, size: 0.2, p: [1.3, 0.2, 0.1], v: [0, 0, 1], omega: 2 });
+    const b = m.bodies()[0];
+    const s = window.Manifold.spaces.torus;
+    out.field = s.field(b.p[0], b.p[1], b.p[2]);
+    out.shape = b.shape;
+    out.density = b.density;
+    out.omega = b.omega;
+    const err = function (f) { try { f(); return null; } catch (e) { return e.message; } };
+    out.badShape = err(function () { m.addBody({ shape: "blob", size: 0.2, p: [1, 0, 0] }); });
+    out.badSize = err(function () { m.addBody({ shape: "circle", size: -1, p: [1, 0, 0] }); });
+    out.badKey = err(function () { m.addBody({ shape: "circle", size: 0.1, p: [1, 0, 0], colour: 1 }); });
+    // on the torus's axis the gradient is undefined
+    out.offSurface = err(function () { m.addBody({ shape: "circle", size: 0.1, p: [0, 0.3, 0] }); });
+    out.count = m.bodies().length;
+    out.hash = location.hash;
+    return out;
+  });
+  check("clear() removes every body and the hash says bodies=0", api.cleared === 0 && api.hashAfterClear === "#space=torus&bodies=0",
+    JSON.stringify({ n: api.cleared, hash: api.hashAfterClear }));
+  check("addBody(spec) returns its index and puts the body on the surface with its shape, density and spin",
+    api.index === 0 && Math.abs(api.field) < FIELD_ON_SURFACE && JSON.stringify(api.shape) === '{"polygon":5}' &&
+      api.density === 1 && api.omega === 2 && api.hash === "#space=torus&bodies=1", JSON.stringify(api));
+  check("addBody refuses bad bodies in words (shape, size, unknown key, a point off the surface)",
+    /unknown shape "blob"/.test(api.badShape) && /body\.size: must be positive/.test(api.badSize) &&
+      /body\.colour: unknown key/.test(api.badKey) && /does not project onto the surface/.test(api.offSurface) && api.count === 1,
+    [api.badShape, api.badSize, api.badKey, api.offSurface].join(" | "));
+
+  // save and load: the scene JSON round-trips, through the API and through the page's buttons
+  const round = await page.evaluate(function () {
+    const m = window.manifold;
+    m.clear();
+    m.addBody({ shape: "square", size: 0.18, density: 2, p: [1.3, 0, 0], v: [0, 0.5, 0.2], angle: 0.4, omega: -1 });
+    m.addBody({ shape: "circle", size: 0.15, static: true, p: [-1.3, 0, 0] });
+    m.addBody({ shape: { polygon: 7 }, size: 0.12, p: [0, 0.4, 1.0] });
+    m.setSimulation({ friction: 0.7, restitution: 0.3, gravity: false });
+    m.step(20);
+    const saved = JSON.stringify(m.scene());
+    m.clear();
+    return m.loadScene(saved).then(function (n) {
+      return { n: n, saved: saved, again: JSON.stringify(m.scene()), sim: m.simulation() };
+    });
+  });
+  check("scene() → loadScene() round-trips the scene (bodies, shapes, static, friction, restitution, gravity)",
+    round.n === 3 && round.saved === round.again && round.sim.friction === 0.7 && round.sim.restitution === 0.3 && !round.sim.gravity,
+    round.saved === round.again ? round.n + " bodies" : round.saved.slice(0, 200) + " vs " + round.again.slice(0, 200));
+
+  const downloadP = page.waitForEvent("download");
+  await page.click("#save-scene");
+  const download = await downloadP;
+  const file = path.join(OUT, "saved-scene.json");
+  await download.saveAs(file);
+  const text = fs.readFileSync(file, "utf8");
+  check("the Save scene button downloads the scene JSON", JSON.stringify(JSON.parse(text)) === round.saved &&
+    download.suggestedFilename() === "manifold-torus.json", download.suggestedFilename() + ", " + text.length + " bytes");
+
+  // loading a file through the page's control, into another space
+  const other = JSON.parse(text);
+  other.space = "sphere";
+  other.bodies.forEach(function (b) { b.v = [0, 0, 0]; });
+  await page.setInputFiles("#scene-file", { name: "scene.json", mimeType: "application/json", buffer: Buffer.from(JSON.stringify(other)) });
+  const loaded = await page.waitForFunction(function () {
+    const m = window.manifold;
+    return m.space() === "sphere" && m.bodies().length === 3 ? { hash: location.hash, sizes: m.bodies().map(function (b) { return b.size; }) } : null;
+  }, null, { timeout: 10000 }).then(function (h) { return h.jsonValue(); }, function () { return null; });
+  check("Load scene… reads a file; a scene of another space switches to it", loaded !== null && loaded.hash === "#space=sphere&bodies=3",
+    JSON.stringify(loaded));
+
+  // a bad scene: a clear message on the page, the world unchanged
+  const bad = await page.evaluate(function () {
+    const m = window.manifold;
+    return m.loadScene('{"space": "sphere", "bodies": [{"shape": "circle", "size": 0.1, "p": [1, 0]}]}').then(function () { return null; },
+      function (e) { return { message: e.message, notice: document.getElementById("notice").hidden ? "" : document.getElementById("notice-text").textContent, n: m.bodies().length }; });
+  });
+  check("a bad scene is refused with its JSON path, shown on the page, and the world is kept",
+    bad !== null && /\$\.bodies\[0\]\.p: must be an array of three numbers/.test(bad.message) && bad.notice === bad.message && bad.n === 3,
+    JSON.stringify(bad));
+  const notJson = await page.evaluate(function () {
+    return window.manifold.loadScene("{oops").then(function () { return null; }, function (e) { return e.message; });
+  });
+  check("a scene that is not JSON is refused in words", /not JSON/.test(notJson || ""), notJson);
+
+  // the controls
+  await page.evaluate(function () { window.manifold.clear(); window.manifold.resume(); });
+  await page.click("#add-circle");
+  await page.click("#add-square");
+  await page.fill("#polygon-sides", "6");
+  await page.click("#add-polygon");
+  const added = await page.evaluate(function () { return window.manifold.bodies().map(function (b) { return b.shape; }); });
+  check("the Add circle / square / polygon buttons add bodies of those shapes",
+    JSON.stringify(added) === '["circle","square",{"polygon":6}]', JSON.stringify(added));
+  await page.click("#pause");
+  const paused = await page.evaluate(function () { return { p: window.manifold.simulation().paused, label: document.getElementById("pause").textContent }; });
+  await page.click("#step");
+  const stepped = await page.evaluate(function () { return window.manifold.stats().steps; });
+  await page.click("#step");
+  const stepped2 = await page.evaluate(function () { return window.manifold.stats().steps; });
+  const gravityBefore = await page.evaluate(function () { return window.manifold.simulation().gravity; });
+  await page.click("#gravity");
+  await page.selectOption("#time-scale", "0.5");
+  await page.evaluate(function () {
+    [["friction", "0.25"], ["restitution", "0.5"]].forEach(function (kv) {
+      const el = document.getElementById(kv[0]);
+      el.value = kv[1];
+      el.dispatchEvent(new Event("input", { bubbles: true }));
+    });
+  });
+  const sim = await page.evaluate(function () { return window.manifold.simulation(); });
+  check("Pause, Step, Speed, Gravity, Friction and Restitution control the simulation",
+    paused.p && paused.label === "Resume" && stepped2 === stepped + 1 && sim.gravity === !gravityBefore && sim.timeScale === 0.5 &&
+      sim.friction === 0.25 && sim.restitution === 0.5, JSON.stringify({ paused: paused, steps: [stepped, stepped2], sim: sim }));
+  await page.click("#clear");
+  await page.waitForFunction(function () { return /bodies 0/.test(document.getElementById("stats").textContent); }, null, { timeout: 3000 })
+    .catch(function () {});
+  const line = await page.textContent("#stats");
+  check("Clear empties the world; the stats line shows bodies, contacts and physics time",
+    /bodies 0/.test(line) && /contacts \d+/.test(line) && /physics [\d.]+ ms\/step/.test(line) && /paused/.test(line), line);
+  check("API and scene page: no console errors", errors.length === 0, errors.join("; "));
+  await page.close();
+}
+
+export async function testBodies(check, context, base) {
+  await testHidden(check, context, base);
+  await testDrag(check, context, base, "sphere", [0.5, 0.5], [-100, 0]);
+  await testDrag(check, context, base, "torus", [0.5, 0.8], [100, -10]);
+  await testApi(check, context, base);
+}

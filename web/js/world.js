@@ -1,0 +1,492 @@
+// The world of bodies: the generated engine's arrays (Manifold.spaces[NAME].engine),
+// scenes as JSON (the format `manifold sim` reads), and the stepping loop at a
+// fixed dt. Every body is added, stepped, picked, grabbed, dragged and removed
+// through the generated procedures; this file only allocates, copies, counts,
+// validates and converts.
+(function (W) {
+  "use strict";
+
+  const FIRST_CAPACITY = 64;
+  const MAX_CAPACITY = 4096;
+  // |field| at a new body's centre above this: the engine's projection failed
+  const ON_SURFACE = 1e-6;
+  // colours by the order bodies are added (display RGB 0..1): saturated, far from the surface's beige
+  const PALETTE = [
+    [0.90, 0.22, 0.20], [0.16, 0.47, 0.90], [0.18, 0.70, 0.32], [0.95, 0.62, 0.08],
+    [0.60, 0.28, 0.85], [0.05, 0.68, 0.72], [0.88, 0.25, 0.62], [0.50, 0.75, 0.10],
+  ];
+  const STATIC_COLOUR = [0.42, 0.45, 0.50];
+
+  // ---- scenes: validation naming the JSON path of the first problem (as Manifold.Scene does) ----
+  const SCENE_KEYS = ["space", "dt", "gravity", "iterations", "friction", "restitution", "bodies"];
+  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega"];
+
+  class SceneError extends Error {
+    constructor(message) {
+      super(message);
+      this.name = "SceneError";
+    }
+  }
+
+  function problem(path, msg) { throw new SceneError(path + ": " + msg); }
+
+  function isObject(v) { return v !== null && typeof v === "object" && !Array.isArray(v); }
+
+  function object(path, allowed, v) {
+    if (!isObject(v)) problem(path, "must be an object");
+    const unknown = Object.keys(v).filter(function (k) { return allowed.indexOf(k) < 0; });
+    if (unknown.length) problem(path + "." + unknown[0], "unknown key; the keys are " + allowed.join(", "));
+    return v;
+  }
+
+  function number(path, v) {
+    if (typeof v !== "number") problem(path, "must be a number");
+    if (!isFinite(v)) problem(path, "must be a finite number");
+    return v;
+  }
+  function positive(path, v) {
+    if (number(path, v) <= 0) problem(path, "must be positive");
+    return v;
+  }
+  function nonNegative(path, v) {
+    if (number(path, v) < 0) problem(path, "must not be negative");
+    return v;
+  }
+  function boolean(path, v) {
+    if (typeof v !== "boolean") problem(path, "must be true or false");
+    return v;
+  }
+  function vec3(path, v) {
+    if (!Array.isArray(v) || v.length !== 3) problem(path, "must be an array of three numbers [x, y, z]");
+    return v.map(function (x, k) { return number(path + "[" + k + "]", x); });
+  }
+  function shape(path, v) {
+    if (v === "circle" || v === "square") return v;
+    if (typeof v === "string") {
+      problem(path, "unknown shape " + JSON.stringify(v) + "; the shapes are \"circle\", \"square\" and {\"polygon\": N}");
+    }
+    if (isObject(v)) {
+      object(path, ["polygon"], v);
+      if (!("polygon" in v)) problem(path + ".polygon", "is missing");
+      const n = number(path + ".polygon", v.polygon);
+      if (n !== Math.round(n) || n < 3 || n > 64) problem(path + ".polygon", "must be a whole number of sides from 3 to 64");
+      return { polygon: n };
+    }
+    return problem(path, "must be \"circle\", \"square\" or {\"polygon\": N}");
+  }
+  function required(path, o, k, parse) {
+    if (!(k in o)) problem(path + "." + k, "is missing");
+    return parse(path + "." + k, o[k]);
+  }
+  function optional(path, o, k, dflt, parse) {
+    return k in o ? parse(path + "." + k, o[k]) : dflt;
+  }
+
+  // A scene body (JSON value) → a complete body spec; throws a SceneError naming `path`.
+  function parseBody(v, path) {
+    path = path || "body";
+    const o = object(path, BODY_KEYS, v);
+    return {
+      shape: required(path, o, "shape", shape),
+      size: required(path, o, "size", positive),
+      density: optional(path, o, "density", 1, positive),
+      static: optional(path, o, "static", false, boolean),
+      p: required(path, o, "p", vec3),
+      v: optional(path, o, "v", [0, 0, 0], vec3),
+      angle: optional(path, o, "angle", 0, number),
+      omega: optional(path, o, "omega", 0, number),
+    };
+  }
+
+  // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
+  function parseScene(json, spaceNames) {
+    let v = json;
+    if (typeof json === "string") {
+      try {
+        v = JSON.parse(json);
+      } catch (e) {
+        throw new SceneError("not JSON: " + e.message);
+      }
+    }
+    const o = object("$", SCENE_KEYS, v);
+    const space = required("$", o, "space", function (path, s) {
+      if (typeof s !== "string") problem(path, "must be a space name");
+      if (spaceNames.indexOf(s) < 0) problem(path, "unknown space " + JSON.stringify(s) + "; the spaces are " + spaceNames.join(", "));
+      return s;
+    });
+    const scene = {
+      space: space,
+      dt: optional("$", o, "dt", 0.01, positive),
+      gravity: optional("$", o, "gravity", true, boolean),
+      iterations: optional("$", o, "iterations", 8, function (path, x) {
+        positive(path, x);
+        if (x !== Math.round(x) || x > 1000) problem(path, "must be a whole number from 1 to 1000");
+        return x;
+      }),
+      friction: optional("$", o, "friction", 0.4, nonNegative),
+      restitution: optional("$", o, "restitution", 0, function (path, x) {
+        nonNegative(path, x);
+        if (x > 1) problem(path, "must be between 0 and 1");
+        return x;
+      }),
+      bodies: optional("$", o, "bodies", [], function (path, a) {
+        if (!Array.isArray(a)) problem(path, "must be an array of bodies");
+        return a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
+      }),
+    };
+    return scene;
+  }
+
+  function shapeCode(s) {
+    return s === "circle" ? 0 : s === "square" ? 4 : s.polygon;
+  }
+  function copyShape(s) { return typeof s === "string" ? s : { polygon: s.polygon }; }
+
+  // Deterministic pseudo-random numbers in [0, 1) (for scene filling).
+  function random(seed) {
+    let s = seed >>> 0;
+    return function () {
+      s = (Math.imul(s, 1664525) + 1013904223) >>> 0;
+      return s / 4294967296;
+    };
+  }
+
+  // ---- the world ----------------------------------------------------------------
+  class World {
+    // space: Manifold.spaces[NAME] (with .engine)
+    constructor(name, space) {
+      if (!space || !space.engine) throw new Error("the space " + JSON.stringify(name) + " has no engine; rebuild web/gen with `manifold build`");
+      this.name = name;
+      this.space = space;
+      this.engine = space.engine;
+      this.antipodal = space.quotient === "antipodal";
+      this.info = [];          // per body: { shape, density, static, colour }
+      this.added = 0;          // bodies ever added (picks the next colour)
+      this.version = 0;        // bumped whenever bodies move, appear or go
+      this.grabbed = -1;       // the body held by the mouse joint, or -1
+      this.target = null;      // the joint's target surface point (as picked)
+      this.steps = 0;
+      this.stepMs = null;      // moving average of the physics time per step
+      this.allocate(FIRST_CAPACITY);
+      this.setParams(this.engine.defaults);
+    }
+
+    allocate(capacity, keep) {
+      const E = this.engine;
+      const old = this.a;
+      this.capacity = capacity;
+      this.arrays = E.arrays.map(function (n) {
+        const s = E.sizes[n];
+        const arr = new Float64Array(s[0] + s[1] * capacity);
+        // the arrays are indexed from 0 with per-body strides: the old contents keep their places
+        if (keep && old) arr.set(old[n]);
+        return arr;
+      });
+      this.a = {};
+      const self = this;
+      E.arrays.forEach(function (n, i) { self.a[n] = self.arrays[i]; });
+      this.a.meta[E.meta.capacity] = capacity;
+    }
+
+    meta(k) { return this.a.meta[this.engine.meta[k]]; }
+    count() { return this.a.meta[this.engine.meta.bodyCount]; }
+    param(k) { return this.a.params[this.engine.params[k]]; }
+
+    // Sets engine parameters by name ({dt, gravityOn, iterations, friction, restitution, ...}).
+    setParams(p) {
+      const E = this.engine;
+      Object.keys(p).forEach(function (k) {
+        if (!(k in E.params)) throw new Error("unknown engine parameter " + JSON.stringify(k));
+        const x = Number(p[k]);
+        if (!isFinite(x)) throw new Error("engine parameter " + k + " must be a finite number");
+        this.a.params[E.params[k]] = x;
+      }, this);
+    }
+
+    // Adds a body from a scene body (JSON value); returns its index or throws.
+    add(v) {
+      const b = parseBody(v, "body");
+      const E = this.engine;
+      if (this.count() >= this.capacity) {
+        if (this.capacity >= MAX_CAPACITY) throw new Error("the world is full (" + MAX_CAPACITY + " bodies)");
+        this.allocate(Math.min(MAX_CAPACITY, this.capacity * 2), true);
+      }
+      E.addBody.apply(null, this.arrays.concat([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
+        b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega]));
+      const i = this.meta("lastAdded");
+      const a = this.a;
+      // the engine refuses a point it cannot project; it lets through a few
+      // where the gradient is NaN (on an axis, at a centre): a body whose
+      // normal is not finite, or whose centre is not on the surface, is taken back
+      const onSurface = i >= 0 && [0, 1, 2].every(function (k) { return isFinite(a.normal[3 * i + k]); }) &&
+        Math.abs(this.space.field(a.pos[3 * i], a.pos[3 * i + 1], a.pos[3 * i + 2])) <= ON_SURFACE;
+      if (i >= 0 && !onSurface) E.removeBody.apply(null, this.arrays.concat([i]));
+      if (!onSurface) {
+        throw new Error("the body at p = " + JSON.stringify(b.p) + " does not project onto the surface of " + this.name +
+          " (the field's gradient vanishes or is undefined there)");
+      }
+      const colour = b.static ? STATIC_COLOUR : PALETTE[this.added % PALETTE.length];
+      this.added++;
+      this.info[i] = { shape: copyShape(b.shape), density: b.density, static: b.static, colour: colour };
+      this.version++;
+      return i;
+    }
+
+    // Removes body i (the last body takes its index, as the engine does).
+    remove(i) {
+      const n = this.count();
+      if (!(Number.isInteger(i) && i >= 0 && i < n)) throw new RangeError("no body " + i + " (there are " + n + ")");
+      this.engine.removeBody.apply(null, this.arrays.concat([i]));
+      this.info[i] = this.info[n - 1];
+      this.info.length = n - 1;
+      if (this.grabbed === i) this.release();
+      else if (this.grabbed === n - 1) this.grabbed = i;
+      this.version++;
+    }
+
+    // Removes every body (a fresh world with the same parameters).
+    clear() {
+      const params = Float64Array.from(this.a.params);
+      this.allocate(this.capacity, false);
+      this.a.params.set(params);
+      this.info = [];
+      this.added = 0;
+      this.grabbed = -1;
+      this.target = null;
+      this.version++;
+    }
+
+    // n physics steps; returns the time they took in ms.
+    step(n) {
+      if (n <= 0) return 0;
+      const E = this.engine, args = this.arrays;
+      const t0 = performance.now();
+      for (let k = 0; k < n; k++) E.step.apply(null, args);
+      const ms = performance.now() - t0;
+      const per = ms / n;
+      this.stepMs = this.stepMs === null ? per : this.stepMs + (per - this.stepMs) * Math.min(1, n / 20);
+      this.steps += n;
+      this.version++;
+      return ms;
+    }
+
+    // The body whose polygon holds surface point q: { index, sign } or null.
+    pick(q) {
+      this.engine.pickBody.apply(null, this.arrays.concat([q[0], q[1], q[2]]));
+      const i = this.meta("picked");
+      return i >= 0 ? { index: i, sign: this.meta("pickedSign") } : null;
+    }
+
+    // Holds body i at surface point q (picked through its image when sign = -1).
+    grab(i, sign, q, options) {
+      const o = options || {};
+      const invMass = this.a.scalars[i * this.stride() + this.engine.slots.invMass];
+      const maxForce = o.maxForce !== undefined ? o.maxForce : invMass > 0 ? 1000 / invMass : 1000;
+      this.engine.grab.apply(null, this.arrays.concat([i, sign, q[0], q[1], q[2],
+        o.frequency || 5, o.damping !== undefined ? o.damping : 0.7, maxForce]));
+      this.grabbed = i;
+      this.target = q.slice();
+      this.version++;
+    }
+
+    drag(q) {
+      if (this.grabbed < 0) return;
+      this.engine.drag.apply(null, this.arrays.concat([q[0], q[1], q[2]]));
+      this.target = q.slice();
+      this.version++;
+    }
+
+    release() {
+      this.engine.release.apply(null, this.arrays);
+      this.grabbed = -1;
+      this.target = null;
+      this.version++;
+    }
+
+    stride() { return Object.keys(this.engine.slots).length; }
+
+    // The bodies in the scene format.
+    bodies() {
+      const a = this.a, S = this.engine.slots, k = this.stride(), out = [];
+      const v3 = function (arr, i) { return [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]]; };
+      for (let i = 0; i < this.count(); i++) {
+        const info = this.info[i];
+        out.push({
+          shape: copyShape(info.shape),
+          size: a.scalars[i * k + S.size],
+          density: info.density,
+          static: info.static,
+          p: v3(a.pos, i),
+          v: v3(a.vel, i),
+          angle: a.scalars[i * k + S.angle],
+          omega: a.scalars[i * k + S.omega],
+        });
+      }
+      return out;
+    }
+
+    // The world as a scene (JSON value).
+    scene() {
+      return {
+        space: this.name,
+        dt: this.param("dt"),
+        gravity: this.param("gravityOn") > 0,
+        iterations: this.param("iterations"),
+        friction: this.param("friction"),
+        restitution: this.param("restitution"),
+        bodies: this.bodies(),
+      };
+    }
+
+    // Replaces the world's bodies and parameters by a parsed scene (see parseScene).
+    // All or nothing: a body that cannot be added leaves the world as it was and throws.
+    load(scene) {
+      const saved = { arrays: this.arrays.map(function (x) { return x; }), capacity: this.capacity,
+        info: this.info, added: this.added };
+      this.clear();
+      this.setParams({ dt: scene.dt, gravityOn: scene.gravity ? 1 : 0, iterations: scene.iterations,
+        friction: scene.friction, restitution: scene.restitution });
+      try {
+        scene.bodies.forEach(function (b, k) {
+          try {
+            this.add(b);
+          } catch (e) {
+            throw new SceneError("$.bodies[" + k + "].p: " + e.message);
+          }
+        }, this);
+      } catch (e) {
+        this.arrays = saved.arrays;
+        this.capacity = saved.capacity;
+        this.a = {};
+        this.engine.arrays.forEach(function (n, i) { this.a[n] = this.arrays[i]; }, this);
+        this.info = saved.info;
+        this.added = saved.added;
+        this.version++;
+        throw e;
+      }
+    }
+
+    // The space's default scene (Manifold.spaces[NAME].scene) with the engine's
+    // default parameters, cut or filled up to n bodies (seeded random points,
+    // projected onto the surface by the engine, inside the boundary).
+    loadDefault(n) {
+      const E = this.engine;
+      const base = (this.space.scene || []).map(function (b) {
+        return { shape: copyShape(b.shape), size: b.size, p: b.p.slice() };
+      });
+      const want = n === undefined || n === null ? base.length : n;
+      const bodies = base.slice(0, want);
+      this.load({ space: this.name, dt: E.defaults.dt, gravity: E.defaults.gravityOn > 0, iterations: E.defaults.iterations,
+        friction: E.defaults.friction, restitution: E.defaults.restitution, bodies: bodies });
+      if (bodies.length < want) this.fill(want, base);
+    }
+
+    // Adds bodies until there are n: shapes and sizes cycle through `base`
+    // (the default scene), positions are seeded random points of the bounding
+    // ball, projected by the engine; a body outside the boundary or on
+    // another body is taken back.
+    fill(n, base) {
+      const rnd = random(20170 + this.count());
+      const bounds = this.space.bounds || 1;
+      const boundary = this.space.boundary;
+      const shapes = base.length ? base : [{ shape: "circle", size: 0.15 }, { shape: "square", size: 0.15 }];
+      let tries = 0;
+      while (this.count() < n && tries < 50 * n) {
+        tries++;
+        const tmpl = shapes[this.count() % shapes.length];
+        const p = [0, 1, 2].map(function () { return (2 * rnd() - 1) * bounds * 0.9; });
+        let i;
+        try {
+          i = this.add({ shape: tmpl.shape, size: tmpl.size, p: p, angle: 2 * Math.PI * rnd() });
+        } catch (e) {
+          if (this.count() >= MAX_CAPACITY) break;
+          continue;
+        }
+        const q = [this.a.pos[3 * i], this.a.pos[3 * i + 1], this.a.pos[3 * i + 2]];
+        const free = (!boundary || boundary(q[0], q[1], q[2]) > tmpl.size) && !this.overlaps(i);
+        if (!free) {
+          this.added--;
+          this.remove(i);
+        }
+      }
+    }
+
+    // Whether body i's centre or an outline vertex lies in another body (by
+    // the engine's pickBody).
+    overlaps(i) {
+      const E = this.engine, vpb = E.verticesPerBody, steps = E.steps;
+      for (let d = -1; d < E.directions; d++) {
+        const o = 3 * (vpb * i + (d < 0 ? 0 : 1 + d * steps + steps - 1));
+        const hit = this.pick([this.a.verts[o], this.a.verts[o + 1], this.a.verts[o + 2]]);
+        if (hit && hit.index !== i) return true;
+      }
+      return false;
+    }
+
+    // Adds a body unless it would overlap another one; returns its index or -1.
+    addFree(v) {
+      const i = this.add(v);
+      if (!this.overlaps(i)) return i;
+      this.added--;
+      this.remove(i);
+      return -1;
+    }
+
+    // Contacts, warnings, dropped contacts: the engine's counters.
+    counters() {
+      return {
+        bodies: this.count(),
+        contacts: this.meta("contactCount"),
+        warnings: this.meta("warnings"),
+        droppedContacts: this.meta("droppedContacts"),
+      };
+    }
+  }
+
+  // ---- the stepping loop: fixed dt, scaled real time, a bounded amount of physics per frame ----
+  class Clock {
+    constructor() {
+      this.paused = false;
+      this.timeScale = 1;
+      this.maxStepsPerFrame = 10;  // at most this many steps per frame …
+      this.maxMsPerFrame = 30;     // … and about this much physics time; beyond, the simulation runs slower than real time
+      this.accumulator = 0;
+      this.last = null;
+    }
+
+    // The steps due at time `now` (ms) for a world with step dt (s) whose
+    // steps take about stepMs (ms; null: not known yet).
+    due(now, dt, stepMs) {
+      const last = this.last;
+      this.last = now;
+      if (this.paused || last === null || !(dt > 0)) return 0;
+      this.accumulator += Math.min(0.25, (now - last) / 1000) * this.timeScale;
+      const cap = Math.max(1, Math.min(this.maxStepsPerFrame,
+        stepMs > 0 ? Math.floor(this.maxMsPerFrame / stepMs) : this.maxStepsPerFrame));
+      let n = Math.floor(this.accumulator / dt + 1e-9);
+      if (n > cap) {
+        n = cap;
+        this.accumulator = 0;
+      } else {
+        this.accumulator -= n * dt;
+      }
+      return n;
+    }
+
+    reset() {
+      this.accumulator = 0;
+      this.last = null;
+    }
+  }
+
+  W.ManifoldWeb = W.ManifoldWeb || {};
+  W.ManifoldWeb.world = {
+    World: World,
+    Clock: Clock,
+    SceneError: SceneError,
+    parseScene: parseScene,
+    parseBody: parseBody,
+    PALETTE: PALETTE,
+    STATIC_COLOUR: STATIC_COLOUR,
+  };
+})(globalThis);
