@@ -9,6 +9,7 @@ import qualified BodySpec
 import qualified CliSpec
 import qualified EngineSpec
 import qualified ImpSpec
+import qualified PhysicsSpec
 import qualified StageSpec
 import qualified SurfaceSpec
 
@@ -23,3 +24,4 @@ main = do
     describe "Manifold.World" EngineSpec.spec
     describe "Manifold.Stage" StageSpec.spec
     describe "Manifold.Stage.Imp" ImpSpec.spec
+    describe "Physics" PhysicsSpec.spec
