@@ -19,7 +19,7 @@ module Manifold.Collide
 
 import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..), cross)
-import Linear.Vector ((*^), (^-^), (^+^))
+import Linear.Vector ((*^), (^-^), (^+^), negated)
 
 import Manifold.Body (PolygonParams (..))
 import Manifold.Field
@@ -139,9 +139,10 @@ pointInBody l w j y q = do
 
 -- | A contact row pair into the contact array: body @a@ at point @ra@ is
 -- pushed along @dirA@, body @b@ (if @b >= 0@) at @rb@ against @dirB@.
+-- @coupling@ 0 keeps only body a's linear normal row (no friction, no turn).
 emitContact :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
-            -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> m ()
-emitContact w owner key a b ra dirA rb dirB depth selfScale = do
+            -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> Scalar m -> m ()
+emitContact w owner key a b ra dirA rb dirB depth selfScale coupling = do
   count <- readMeta w ContactCount
   cap <- readMeta w Capacity -- the arrays' capacity is the caller's, not the layout's
   ifPositive (fromIntegral contactsPerBody * maxF 1 cap - count - 0.5)
@@ -155,9 +156,9 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale = do
         writeContact w c COwner (toScalar owner)
         writeContact w c CKey key
         writeContact3 w c JaX (tangentProjection (bfNormal fa) dirA)
-        writeContact w c JaW ((rA `cross` dirA) `dot` bfNormal fa)
-        writeContact3 w c TaX (tangentProjection (bfNormal fa) ta)
-        writeContact w c TaW ((rA `cross` ta) `dot` bfNormal fa)
+        writeContact w c JaW (coupling * ((rA `cross` dirA) `dot` bfNormal fa))
+        writeContact3 w c TaX (coupling *^ tangentProjection (bfNormal fa) ta)
+        writeContact w c TaW (coupling * ((rA `cross` ta) `dot` bfNormal fa))
         writeContact w c CDepth depth
         writeContact w c CSelfScale selfScale
         writeContact3 w c PointX ra
@@ -212,7 +213,7 @@ vertexContacts l w owner keyBase x y sgn selfScale = do
           q <- outlineVertex l w x (toIndex dv)
           query <- share3 (sgn *^ q)
           (depth, m) <- pointInBody l w y fy query
-          emitContact w owner (keyBase + slot) x (toScalar y) q (sgn *^ m) query m depth selfScale
+          emitContact w owner (keyBase + slot) x (toScalar y) q (sgn *^ m) query m depth selfScale 1
     emitAt 0 dLo
     whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
@@ -267,7 +268,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
             bv <- share (b q)
             let dir = safeNormalize g
                 depth = select gl (negate bv / maxF gl 1e-300) 0
-            emitContact w i (key + slot) i (-1) q dir q dir depth 1
+            emitContact w i (key + slot) i (-1) q dir q dir depth 1 1
       emitAt 0 dLo
       whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
@@ -297,10 +298,15 @@ segmentClosest p0 p1 q0 q1 =
 -- (wrapped round the neck of the trumpet) overlaps itself where two of its
 -- rays cross. The ordinary contact direction there is along the rays and
 -- useless (it acts on both ends of one body), so the row is turned
--- perpendicular to it — along the sum of the two rays' directions, which
--- points to where the space widens, since geodesics leaving a narrow place
--- bend towards the wide side — and scaled by 0.6 as in the paper. The depth
--- is half the length by which the two rays overrun their crossing.
+-- perpendicular to it: the body is pushed against the mean of the two rays'
+-- starting directions. Rays that head into the narrow part are the ones that
+-- wrap round and cross, so that mean points into the narrowing and the push
+-- goes back to where the body just covers the space. (Rays exactly opposite
+-- have no mean and are not paired.) Scaled by 0.6 as in the paper; the depth
+-- is half the length by which the two rays overrun their crossing. The row
+-- acts on the body's position only: a body rubbing on itself has no
+-- friction, and turning it does not undo the wrap (with the angular part,
+-- the jam slowly spun itself loose).
 --
 -- Only a body whose rays turn (the chord from the centre to some outline
 -- vertex is under 0.8 of the ray's length) is tested, which flat and gently
@@ -329,7 +335,7 @@ selfContacts sp l w i = do
     mz <- newRef 0
     forEach (fromIntegral nd) $ \d -> do
       rd <- readArray (wRadii w) (fromIntegral nd * i + d)
-      forLoop (fromIntegral (nd `div` 4)) (fromIntegral (nd `div` 2 + 1)) $ \off -> do
+      forLoop (fromIntegral (nd `div` 4)) (fromIntegral (nd `div` 2)) $ \off -> do
         let d' = toIndex (let x = toScalar d + toScalar off in x - fromIntegral nd * floorF (x / fromIntegral nd))
         rd' <- readArray (wRadii w) (fromIntegral nd * i + d')
         forLoop 1 (fromIntegral ns) $ \k -> do
@@ -346,8 +352,10 @@ selfContacts sp l w i = do
             best <- readRef deepest
             whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
               writeRef deepest depth
+              first <- vertex d 0
+              first' <- vertex d' 0
               let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
-                  V3 u v q = safeNormalize (a1 ^-^ a0) ^+^ safeNormalize (b1 ^-^ b0)
+                  V3 u v q = negated (safeNormalize (first ^-^ c) ^+^ safeNormalize (first' ^-^ c))
               writeRef px x >> writeRef py y >> writeRef pz z
               writeRef mx u >> writeRef my v >> writeRef mz q
     best <- readRef deepest
@@ -356,7 +364,7 @@ selfContacts sp l w i = do
       m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
       n <- share3 (unitNormalAt point)
       dir <- share3 (safeNormalize (tangentProjection n m0))
-      emitContact w i (selfKey) i (-1) point dir point dir best 0.6
+      emitContact w i selfKey i (-1) point dir point dir best 0.6 0
   where
     unitNormalAt = safeNormalize . gradFn (spaceField sp)
     selfKey = 12

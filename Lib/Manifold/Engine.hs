@@ -65,12 +65,14 @@ data Params = Params
   , pSlop :: Double -- ^ depth allowed without correction
   , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
   , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
+  , pMaxCorrection :: Double -- ^ the fastest a contact pushes bodies out of an overlap
   } deriving (Show, Eq)
 
 defaultParams :: Params
 defaultParams = Params
   { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
-  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True }
+  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True
+  , pMaxCorrection = 0.5 }
 
 setParams :: NativeWorld -> Params -> IO ()
 setParams w p = do
@@ -86,6 +88,7 @@ setParams w p = do
   set Slop (pSlop p)
   set BounceThreshold (pBounceThreshold p)
   set WarmStart (if pWarmStart p then 1 else 0)
+  set MaxCorrection (pMaxCorrection p)
 
 -- | A body as a scene describes it.
 data BodyInit = BodyInit
@@ -214,7 +217,7 @@ engineObject l =
       params = [ ("dt", pDt p), ("gravityOn", if pGravity p then 1 else 0), ("iterations", fromIntegral (pIterations p))
                , ("friction", pFriction p), ("restitution", pRestitution p), ("baumgarte", pBaumgarte p)
                , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p)
-               , ("warmStart", if pWarmStart p then 1 else 0) ]
+               , ("warmStart", if pWarmStart p then 1 else 0), ("maxCorrection", pMaxCorrection p) ]
   in unlines
     [ "{"
     , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"

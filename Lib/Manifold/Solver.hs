@@ -157,6 +157,7 @@ solve sp _ w = do
   slop <- readParam w Slop
   bounceThreshold <- readParam w BounceThreshold
   warmStart <- readParam w WarmStart
+  maxCorrection <- readParam w MaxCorrection
   nc <- readMeta w ContactCount
   -- prepare, and warm start from the last step
   forEach (toIndex nc) $ \c -> do
@@ -173,7 +174,9 @@ solve sp _ w = do
     depth <- readContact w c CDepth
     scale <- readContact w c CSelfScale
     vn <- rowVelocity w a b normal
-    let push' = scale * beta / dt * maxF 0 (depth - slop)
+    -- the push out of an overlap is capped, so that a deep overlap found
+    -- late does not throw bodies apart (Box2D caps its correction likewise)
+    let push' = minF maxCorrection (scale * beta / dt * maxF 0 (depth - slop))
         bounce = select (negate vn - bounceThreshold) (negate restitution * vn) 0
     writeContact w c CBias (maxF push' bounce)
     ln <- newRef 0

@@ -106,7 +106,7 @@ data Meta = BodyCount | Warnings | ContactCount | Capacity | GridDim | CellSize 
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
-data Param = Dt | GravityOn | Iterations | Friction | Restitution | Baumgarte | Slop | BounceThreshold | WarmStart
+data Param = Dt | GravityOn | Iterations | Friction | Restitution | Baumgarte | Slop | BounceThreshold | WarmStart | MaxCorrection
   deriving (Show, Eq, Enum, Bounded)
 
 -- | One contact row pair (normal and friction) of the solver. The first body
