@@ -8,6 +8,7 @@ module Manifold.Surface
   ( fieldGradient
   , unitNormal
   , distanceEstimate
+  , traceDistance
   , projectToSurface
   , projectToSurfaceWith
   , projectAlong
@@ -47,6 +48,16 @@ unitNormal f = safeNormalize . fieldGradient f
 -- | The first-order distance to the surface, @f/|∇f|@.
 distanceEstimate :: Field a => ScalarFn -> V3 a -> a
 distanceEstimate sf p = evalFn sf p / norm (fieldGradient sf p)
+
+-- | The sphere tracer's step: @|f|/|∇f|@, or @|f|@ where the gradient is
+-- zero, infinite or NaN (on an axis of symmetry, at a centre), so a ray
+-- never stalls or jumps there.
+traceDistance :: Field a => ScalarFn -> V3 a -> a
+traceDistance sf p =
+  let f = abs (evalFn sf p)
+      g = norm (fieldGradient sf p)
+      usable = select (g - constant 1e-12) (select (constant 1e20 - g) 1 0) 0
+  in select usable (f / g) f
 
 projectionTolerance :: Double
 projectionTolerance = 1e-10

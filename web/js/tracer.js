@@ -43,12 +43,9 @@ layout(location = 1) out vec4 outNormal;
 const int MAX_STEPS = ${MAX_STEPS};
 const float RELAX = 0.9;
 
-// |f| / |grad f|: the distance estimate; falls back to |f| where the
-// gradient is zero, infinite or NaN (e.g. on an axis of symmetry).
-float distanceEstimate(vec3 p, float f) {
-  float g = length(gradient(p));
-  return (g > 1e-12 && g < 1e20) ? abs(f) / g : abs(f);
-}
+// distanceEstimate(p) (|f|/|grad f|, or |f| where the gradient is unusable)
+// and projectToSurface(p) (Newton along the gradient) come with the space's
+// generated GLSL, from Manifold.Surface.
 
 // Newton's method on f along the ray, staying within maxDelta of t; returns
 // the sample with the smallest |f| (t itself when the ray only grazes the surface).
@@ -68,21 +65,6 @@ float refineAlongRay(vec3 ro, vec3 rd, float t, float maxDelta) {
     t = tn;
   }
   return best;
-}
-
-// Newton steps on f along the gradient: put a point that is within a pixel
-// of the surface (a silhouette) onto it. No-op for points already on it.
-vec3 projectToSurface(vec3 p) {
-  for (int k = 0; k < 2; k++) {
-    float f = field(p);
-    vec3 g = gradient(p);
-    float gg = dot(g, g);
-    if (!(gg > 1e-24 && gg < 1e30)) break;
-    vec3 step = g * (f / gg);
-    p -= step;
-    if (dot(step, step) < 1e-14 * (1.0 + dot(p, p))) break;
-  }
-  return p;
 }
 
 // The sign change of f along the ray in [a, b] (fa = f(a), fb = f(b) of
@@ -141,7 +123,7 @@ void main() {
       if (boundary(q) >= 0.0) { found = true; hit = q; break; }
       // outside the allowed region: go on from t, already past it
     }
-    float d = distanceEstimate(p, f);
+    float d = distanceEstimate(p);
     lastD = d;
     lastEps = eps;
     if (d < eps) {

@@ -23,7 +23,7 @@ import Manifold.Space
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
 import Manifold.Engine (engineObject, engineProcedures)
-import Manifold.Surface (fieldGradient)
+import Manifold.Surface (fieldGradient, projectToSurfaceWith, traceDistance)
 import Manifold.World (Layout, layout)
 
 -- | The polygon parameters of the page's engine (capacity is the page's).
@@ -47,7 +47,8 @@ stagedGradient s = fieldGradient (spaceField s) pointSyms
 v3 :: V3 a -> [a]
 v3 (V3 a b c) = [a, b, c]
 
--- | GLSL ES 3.00 defining @field@, @gradient@, @boundary@ and @curvature@.
+-- | GLSL ES 3.00 defining @field@, @gradient@, @boundary@ and @curvature@,
+-- and for the tracer @distanceEstimate@ and @projectToSurface@.
 spaceGlsl :: Space -> String
 spaceGlsl s = concat
   [ "// space \"" ++ spaceName s ++ "\", generated from Lib/Manifold/Spaces.hs\n"
@@ -55,7 +56,14 @@ spaceGlsl s = concat
   , printFunction GLSL "gradient" xyz (v3 (stagedGradient s))
   , printFunction GLSL "boundary" xyz [evalBoundary s pointSyms]
   , printFunction GLSL "curvature" xyz [gaussianCurvature (spaceField s) pointSyms]
+  , printFunction GLSL "distanceEstimate" xyz [traceDistance (spaceField s) pointSyms]
+  , printFunction GLSL "projectToSurface" xyz (v3 (projectToSurfaceWith tracerProjectionSteps (spaceField s) pointSyms))
   ]
+
+-- | Newton steps the tracer takes to put a silhouette hit on the surface
+-- (it starts within a pixel of it; float precision is reached in two).
+tracerProjectionSteps :: Int
+tracerProjectionSteps = 2
 
 spaceScriptFile :: Space -> FilePath
 spaceScriptFile s = "space-" ++ spaceName s ++ ".js"
