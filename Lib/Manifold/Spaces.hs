@@ -60,6 +60,8 @@ grid xs zs shape size =
   [ Placement (V3 x 0 z) (if even (i + j) then shape else CircleShape) size False
   | (i, x) <- zip [0 :: Int ..] xs, (j, z) <- zip [0 :: Int ..] zs ]
 
+-- | A camera on the origin. Spaces whose gravity is −z in the plane y = 0
+-- are looked at from the −z side, so that "down" is down on the screen.
 look :: V3 Double -> Camera
 look eye = Camera eye (V3 0 0 0) (V3 0 1 0) 45
 
@@ -68,7 +70,7 @@ look eye = Camera eye (V3 0 0 0) (V3 0 1 0) 45
 plane :: Space
 plane = (space "plane" "the flat plane y = 0; gravity along -z" (scalarFn planeField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
-  , spaceCamera = Camera (V3 0 3.2 1.6) (V3 0 0 (-0.4)) (V3 0 1 0) 45
+  , spaceCamera = Camera (V3 0 3.2 (-3.2)) (V3 0 0 (-0.5)) (V3 0 1 0) 45
   , spaceScene = grid [-0.6, 0, 0.6] [-0.3, 0.3] SquareShape 0.2
       ++ [Placement (V3 x 0 (-1.2)) SquareShape 0.3 True | x <- [-1.2, -0.8 .. 1.2]]
   }
@@ -122,7 +124,7 @@ disc :: Space
 disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (scalarFn planeField))
   { spaceBoundary = Just (scalarFn (\p -> 1 - radial p))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
-  , spaceCamera = look (V3 0 2.2 1.6)
+  , spaceCamera = look (V3 0 2.2 (-1.6))
   , spaceScene = grid [-0.4, 0, 0.4] [-0.2, 0.3] SquareShape 0.15
   }
 
@@ -130,7 +132,7 @@ rectangle :: Space
 rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane y = 0, a box with walls" (scalarFn planeField))
   { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (1.5 - abs x) (1 - abs z)))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
-  , spaceCamera = look (V3 0 2.8 2.0)
+  , spaceCamera = look (V3 0 2.8 (-2.0))
   , spaceScene = grid [-0.8, -0.3, 0.3, 0.8] [-0.3, 0.3] SquareShape 0.18
   }
 
@@ -165,6 +167,6 @@ funnel :: Space
 funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x| <= exp(0.9z - 0.7), |z| <= 1; gravity pushes into the neck" (scalarFn planeField))
   { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
-  , spaceCamera = look (V3 0 2.6 1.2)
+  , spaceCamera = look (V3 0 2.6 (-1.2))
   , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 False | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]
   }
