@@ -17,6 +17,7 @@ module Manifold.Surface
   , tangentProjection
   , transport
   , geodesicStep
+  , geodesicStepFrom
   , expMap
   , geodesicPath
   , tangentFrame
@@ -132,12 +133,21 @@ projectAlong sf n = go stepProjectionIterations
 -- back the speed it had. A step of length 0 changes nothing.
 geodesicStep :: Field a => ScalarFn -> a -> (V3 a, V3 a) -> (V3 a, V3 a)
 geodesicStep sf h (p, v) =
-  let n = unitNormal sf p
-      p' = projectAlong sf n (p ^+^ h *^ v)
+  let (p', v', _) = geodesicStepFrom sf h (unitNormal sf p) (p, v)
+  in (p', v')
+
+-- | 'geodesicStep' from a point whose unit normal is known, returning the
+-- normal at the new point too: a walk of many steps evaluates the gradient
+-- once per step fewer.
+geodesicStepFrom :: Field a => ScalarFn -> a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
+geodesicStepFrom sf h n (p, v) =
+  let p' = projectAlong sf n (p ^+^ h *^ v)
       mean = select (abs h) (recip h) 0 *^ (p' ^-^ p)
       n' = unitNormal sf p'
       v' = norm v *^ safeNormalize (tangentProjection n' mean)
-  in (select (abs h) 1 0 *^ p' ^+^ select (abs h) 0 1 *^ p, select (abs h) 1 0 *^ v' ^+^ select (abs h) 0 1 *^ v)
+      moved = select (abs h) 1 0
+      kept = 1 - moved
+  in (moved *^ p' ^+^ kept *^ p, moved *^ v' ^+^ kept *^ v, moved *^ n' ^+^ kept *^ n)
 
 -- | The exponential map: walk a geodesic of the given length from a point in
 -- a tangent direction (normalised here), in @n@ equal steps. Returns the end

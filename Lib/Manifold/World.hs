@@ -289,9 +289,10 @@ integrate sp w = do
     axis <- read3 (wAxis w) i
     angle <- readSlot w i Angle
     omega <- readSlot w i Omega
-    let (p1, v1) = geodesicStep f dt (p, v)
+    n <- read3 (wNormal w) i
+    let (p1, v1, n1) = geodesicStepFrom f dt n (p, v)
     p' <- share3 p1
-    n' <- share3 (unitNormal f p')
+    n' <- share3 n1
     v' <- share3 v1
     axis' <- share3 (safeNormalize (tangentProjection n' axis))
     let angle' = angle + dt * omega
@@ -349,11 +350,12 @@ polygoniseBody sp l w i = do
     c <- share (cos phi)
     s <- share (sin phi)
     h <- share (r / fromIntegral ns)
-    let walk 0 _ _ = pure ()
-        walk k q dir = do
-          let (q1, dir1) = geodesicStep f h (q, dir)
+    let walk 0 _ _ _ = pure ()
+        walk k q dir nq = do
+          let (q1, dir1, n1) = geodesicStepFrom f h nq (q, dir)
           q' <- share3 q1
           dir' <- share3 dir1
+          n' <- share3 n1
           write3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + fromIntegral (ns - k)) q'
-          walk (k - 1 :: Int) q' dir'
-    walk ns p (c *^ u ^+^ s *^ v)
+          walk (k - 1 :: Int) q' dir' n'
+    walk ns p (c *^ u ^+^ s *^ v) n
