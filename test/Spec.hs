@@ -10,6 +10,7 @@ import qualified CliSpec
 import qualified EngineSpec
 import qualified ImpSpec
 import qualified PhysicsSpec
+import qualified ReadmeExampleSpec
 import qualified StageSpec
 import qualified SurfaceSpec
 
@@ -25,3 +26,4 @@ main = do
     describe "Manifold.Stage" StageSpec.spec
     describe "Manifold.Stage.Imp" ImpSpec.spec
     describe "Physics" PhysicsSpec.spec
+    ReadmeExampleSpec.spec
