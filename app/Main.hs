@@ -21,6 +21,7 @@ import System.IO (hFlush, hPutStrLn, stderr, stdout)
 import Text.Read (readMaybe)
 
 import Manifold
+import Manifold.Bench
 import Manifold.Build
 import Manifold.Engine
 import Manifold.Scene
@@ -31,6 +32,7 @@ data Command
   | Build FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
+  | Bench String String Int Int Bool
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -50,6 +52,12 @@ commandParser = hsubparser
                                  <*> option auto (long "steps" <> metavar "K" <> help "Steps to simulate")
                                  <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)"))
                        (progDesc "Simulate a scene headless and print the bodies' states as JSON"))
+ <> command "bench" (info (Bench <$> strOption (long "spaces" <> metavar "A,B" <> value (intercalate "," (map spaceName benchSpaces)) <> help "Spaces (default: plane, sphere, torus, trumpet, projective-plane, rectangle)")
+                                   <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
+                                   <*> option auto (long "warmup" <> metavar "W" <> value 100 <> help "Steps to settle before timing (default 100)")
+                                   <*> option auto (long "steps" <> metavar "S" <> value 50 <> help "Steps timed (default 50)")
+                                   <*> switch (long "json" <> help "Print JSON"))
+                       (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
   )
   where
@@ -81,6 +89,7 @@ main = do
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
+    Bench spaces sizes warmup steps json -> bench spaces sizes warmup steps json
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -175,6 +184,31 @@ simulate path steps every = do
   BL.putStrLn (A.encode (A.object
     [ "space" A..= spaceName (sceneSpace scene), "dt" A..= sceneDt scene
     , "warnings" A..= warnings, "frames" A..= frames ]))
+
+-- | The native benchmark: progress on standard error, a table or JSON on
+-- standard output.
+bench :: String -> String -> Int -> Int -> Bool -> IO ()
+bench spacesArg sizesArg warmup steps json = do
+  spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
+  sizes <- either usageError pure $ mapM (\s -> case readMaybe s of
+              Just n | n > 0 -> Right (n :: Int)
+              _ -> Left ("--sizes: " ++ show s ++ " is not a positive whole number")) (splitOn ',' sizesArg)
+  when (warmup < 0) (usageError "--warmup: must not be negative")
+  when (steps < 1) (usageError "--steps: must be at least 1")
+  let progress msg = hPutStrLn stderr ("bench: " ++ msg)
+  results <- mapM (runBench progress warmup steps) [BenchCase sp n | sp <- spaces, n <- sizes]
+  if json
+    then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
+                                          , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
+                                          , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r ]
+                               | r <- results ])
+    else do
+      putStrLn (row ["space", "bodies", "size", "contacts", "median ms", "p10 ms", "p90 ms"])
+      mapM_ (\r -> putStrLn (row [brSpace r, show (brBodies r), fixed 4 (brSize r), show (brContacts r)
+                                  , fixed 3 (brMedianMs r), fixed 3 (brP10Ms r), fixed 3 (brP90Ms r)])) results
+  where
+    row cols = intercalate " | " [c ++ replicate (w - length c) ' ' | (c, w) <- zip cols [16, 7, 7, 9, 10, 10, 10]]
+    fixed k x = let s = show (fromIntegral (round (x * 10 ^ (k :: Int)) :: Integer) / 10 ^ k :: Double) in s
 
 -- | Serve a directory on the loopback interface only.
 serve :: Int -> FilePath -> IO ()
