@@ -23,7 +23,6 @@ import Data.Bits (popCount, xor)
 import qualified Data.ByteString as BS
 import qualified Data.ByteString.Char8 as BC
 import qualified Data.ByteString.Lazy.Char8 as BL
-import Data.Char (isSpace)
 import Data.List (isInfixOf, isPrefixOf, sort)
 import qualified Data.Map.Strict as M
 import Data.Maybe (isJust)
@@ -34,13 +33,14 @@ import GHC.TypeLits (KnownNat, Nat, natVal)
 import Linear.Metric (quadrance)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^))
-import System.Directory (doesFileExist, findExecutable, listDirectory, createDirectoryIfMissing)
+import System.Directory (createDirectoryIfMissing, findExecutable, listDirectory)
 import System.Environment (lookupEnv)
 import System.Exit (ExitCode (..))
 import System.FilePath ((</>))
 import System.IO.Temp (withSystemTempDirectory)
 import System.Process (readProcessWithExitCode)
 import Test.Hspec
+import TestUtil (findManifoldExe)
 import Test.QuickCheck (Gen, arbitrary, choose, elements, frequency, oneof, suchThat, vectorOf)
 import Test.QuickCheck.Gen (unGen)
 import Test.QuickCheck.Random (mkQCGen)
@@ -588,21 +588,6 @@ sharingSpec = do
 
 -- Byte stability and manifold build ------------------------------------------------
 
-findManifold :: IO FilePath
-findManifold = do
-  onPath <- findExecutable "manifold"
-  env <- lookupEnv "MANIFOLD_EXE"
-  case (env, onPath) of
-    (Just p, _) -> pure p
-    (_, Just p) -> pure p
-    _ -> do
-      (code, out, _) <- readProcessWithExitCode "cabal" ["list-bin", "-v0", "exe:manifold"] ""
-      let p = trim out
-      ok <- doesFileExist p
-      if code == ExitSuccess && ok then pure p
-        else fail "cannot find the manifold executable (not on PATH, MANIFOLD_EXE unset, cabal list-bin failed)"
-  where trim = reverse . dropWhile isSpace . reverse . dropWhile isSpace
-
 readDir :: FilePath -> IO (M.Map FilePath BS.ByteString)
 readDir dir = do
   names <- listDirectory dir
@@ -610,7 +595,7 @@ readDir dir = do
 
 buildInto :: FilePath -> IO (ExitCode, String, String)
 buildInto dir = do
-  exe <- findManifold
+  exe <- findManifoldExe
   readProcessWithExitCode exe ["build", "--out", dir] ""
 
 -- | Build many unrelated nodes (so that the table's ids move), and intern

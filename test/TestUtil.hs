@@ -204,13 +204,14 @@ firstPlacement s = case spaceScene s of
   (pl : _) -> placeAt pl
   [] -> error ("space " ++ spaceName s ++ " has an empty scene")
 
--- | The @manifold@ executable: on PATH (cabal puts build-tool-depends there
--- during @cabal test@), else @$MANIFOLD_EXE@, else @cabal list-bin@.
+-- | The @manifold@ executable: @$MANIFOLD_EXE@ when set (an explicit
+-- choice wins), else on PATH (cabal puts build-tool-depends there during
+-- @cabal test@), else @cabal list-bin@.
 findManifoldExe :: IO FilePath
 findManifoldExe = do
   env <- lookupEnv "MANIFOLD_EXE"
   onPath <- findExecutable "manifold"
-  case (onPath, env) of
+  case (env, onPath) of
     (Just p, _) -> pure p
     (Nothing, Just p) -> pure p
     (Nothing, Nothing) -> do
