@@ -6,13 +6,14 @@ import Control.Exception (IOException, try)
 import Data.List (isInfixOf)
 import qualified Network.Wai.Handler.Warp as Warp
 import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
-import System.Directory (doesFileExist)
+import System.Directory (createDirectoryIfMissing, doesFileExist)
 import System.FilePath ((</>))
 import System.IO.Error (isAlreadyInUseError)
-import Control.Monad (when)
+import Control.Monad (forM_, when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
 import Data.List (intercalate)
+import Data.String (fromString)
 import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
 import Options.Applicative
@@ -32,7 +33,7 @@ data Command
   | Build FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
-  | Bench String String Int Int Bool
+  | Bench String String Int Int Bool (Maybe FilePath)
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -56,7 +57,8 @@ commandParser = hsubparser
                                    <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
                                    <*> option auto (long "warmup" <> metavar "W" <> value 100 <> help "Steps to settle before timing (default 100)")
                                    <*> option auto (long "steps" <> metavar "S" <> value 50 <> help "Steps timed (default 50)")
-                                   <*> switch (long "json" <> help "Print JSON"))
+                                   <*> switch (long "json" <> help "Print JSON")
+                                   <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing")))
                        (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
   )
@@ -89,7 +91,7 @@ main = do
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
-    Bench spaces sizes warmup steps json -> bench spaces sizes warmup steps json
+    Bench spaces sizes warmup steps json scenes -> bench spaces sizes warmup steps json scenes
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -187,12 +189,18 @@ simulate path steps every = do
 
 -- | The native benchmark: progress on standard error, a table or JSON on
 -- standard output.
-bench :: String -> String -> Int -> Int -> Bool -> IO ()
-bench spacesArg sizesArg warmup steps json = do
+bench :: String -> String -> Int -> Int -> Bool -> Maybe FilePath -> IO ()
+bench spacesArg sizesArg _ _ _ (Just dir) = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
-  sizes <- either usageError pure $ mapM (\s -> case readMaybe s of
-              Just n | n > 0 -> Right (n :: Int)
-              _ -> Left ("--sizes: " ++ show s ++ " is not a positive whole number")) (splitOn ',' sizesArg)
+  sizes <- either usageError pure (parseSizes sizesArg)
+  createDirectoryIfMissing True dir
+  forM_ [(sp, n) | sp <- spaces, n <- sizes] $ \(sp, n) -> do
+    let file = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
+    BL.writeFile file (A.encode (sceneJSON (benchScene sp n)))
+    putStrLn file
+bench spacesArg sizesArg warmup steps json Nothing = do
+  spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
+  sizes <- either usageError pure (parseSizes sizesArg)
   when (warmup < 0) (usageError "--warmup: must not be negative")
   when (steps < 1) (usageError "--steps: must be at least 1")
   let progress msg = hPutStrLn stderr ("bench: " ++ msg)
@@ -200,15 +208,26 @@ bench spacesArg sizesArg warmup steps json = do
   if json
     then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
                                           , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
-                                          , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r ]
+                                          , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
+                                          , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]
                                | r <- results ])
     else do
-      putStrLn (row ["space", "bodies", "size", "contacts", "median ms", "p10 ms", "p90 ms"])
-      mapM_ (\r -> putStrLn (row [brSpace r, show (brBodies r), fixed 4 (brSize r), show (brContacts r)
-                                  , fixed 3 (brMedianMs r), fixed 3 (brP10Ms r), fixed 3 (brP90Ms r)])) results
+      let phaseNames = case results of
+            r : _ -> map fst (brPhases r)
+            [] -> []
+      putStrLn (row (["space", "bodies", "size", "contacts", "median ms", "p10 ms", "p90 ms"] ++ phaseNames))
+      mapM_ (\r -> putStrLn (row ([brSpace r, show (brBodies r), fixed 4 (brSize r), show (brContacts r)
+                                  , fixed 3 (brMedianMs r), fixed 3 (brP10Ms r), fixed 3 (brP90Ms r)]
+                                  ++ map (fixed 3 . snd) (brPhases r)))) results
+      putStrLn "(phase columns: median ms of each phase of the step)"
   where
-    row cols = intercalate " | " [c ++ replicate (w - length c) ' ' | (c, w) <- zip cols [16, 7, 7, 9, 10, 10, 10]]
+    row cols = intercalate " | " [c ++ replicate (w - length c) ' ' | (c, w) <- zip cols ([16, 7, 7, 9, 10, 10, 10] ++ repeat 10)]
     fixed k x = let s = show (fromIntegral (round (x * 10 ^ (k :: Int)) :: Integer) / 10 ^ k :: Double) in s
+
+parseSizes :: String -> Either String [Int]
+parseSizes arg = mapM (\s -> case readMaybe s of
+  Just n | n > 0 -> Right (n :: Int)
+  _ -> Left ("--sizes: " ++ show s ++ " is not a positive whole number")) (splitOn ',' arg)
 
 -- | Serve a directory on the loopback interface only.
 serve :: Int -> FilePath -> IO ()

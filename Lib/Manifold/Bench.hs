@@ -11,19 +11,19 @@ module Manifold.Bench
   ) where
 
 import Control.Monad (forM, replicateM_)
-import Data.List (sort)
+import Data.List (sort, transpose)
+import Data.Maybe (listToMaybe)
 import qualified Data.Map.Strict as M
 import GHC.Clock (getMonotonicTime)
 import Linear.Metric (distance, norm)
 import Linear.V3 (V3 (..))
 import System.Random (mkStdGen, randomRs)
 
-import Manifold.Body
 import Manifold.Engine
 import Manifold.Space
 import Manifold.Spaces
 import Manifold.Surface
-import Manifold.World (layout)
+import Manifold.Scene
 
 data BenchCase = BenchCase
   { bcSpace :: Space
@@ -39,6 +39,7 @@ data BenchResult = BenchResult
   , brP10Ms :: Double
   , brP90Ms :: Double
   , brSteps :: Int
+  , brPhases :: [(String, Double)] -- ^ median ms of each phase of the step
   } deriving Show
 
 -- | Plane, sphere, torus, trumpet, projective plane and a boundary space.
@@ -67,7 +68,7 @@ region sp = case spaceName sp of
 -- of the region, placed by dart throwing on the surface (seeded). Near that
 -- density random throwing jams, so fewer bodies may be placed than asked;
 -- the result says how many were.
-benchScene :: Space -> Int -> (Double, [BodyInit])
+benchScene :: Space -> Int -> Scene
 benchScene sp n =
   let (area, inside) = region sp
       size = sqrt (area / (3 * fromIntegral n * ((pi + 2) / 2)))
@@ -88,30 +89,34 @@ benchScene sp n =
         | usable p && far grid p = place (M.insertWith (++) (key p) [p] grid) (p : acc) (k - 1) ps
         | otherwise = place grid acc k ps
       points = place M.empty [] n (take (2000 * n + 20000) candidates)
-      shapeOf i = if even i then circle else square
-  in (size, [BodyInit (shapeOf i) size 1 False p (V3 0 0 0) 0 0 | (i, p) <- zip [0 :: Int ..] points])
+      shapeOf i = if even i then CircleShape else SquareShape
+  in Scene sp 0.01 True 8 0.4 0 [BodySpec (shapeOf i) size 1 False p (V3 0 0 0) 0 0 | (i, p) <- zip [0 :: Int ..] points]
   where
     triples (x : y : z : rest) = (x, y, z) : triples rest
     triples _ = []
 
--- | Settle for @warmup@ steps, then time @steps@ steps one by one.
+-- | Settle for @warmup@ steps, then time @steps@ steps one by one, each
+-- phase of each step on its own (the step's time is their sum).
 runBench :: (String -> IO ()) -> Int -> Int -> BenchCase -> IO BenchResult
 runBench progress warmup steps (BenchCase sp n) = do
-  let (size, bodies) = benchScene sp n
-  w <- newWorld sp (layout (length bodies))
-  mapM_ (addBody w) bodies
+  let scene = benchScene sp n
+      size = maybe 0 bsSize (listToMaybe (sceneBodies scene))
+  w <- loadScene 0 scene >>= either (\e -> ioError (userError ("bench scene " ++ spaceName sp ++ " " ++ show n ++ ": " ++ e))) pure
   placed <- bodyCount w
   progress (spaceName sp ++ ": " ++ show placed ++ " bodies of size " ++ show (roundTo 4 size) ++ ", settling")
   replicateM_ warmup (stepNative w)
   progress (spaceName sp ++ ": " ++ show placed ++ " bodies, timing " ++ show steps ++ " steps")
-  times <- forM [1 .. steps] $ \_ -> do
+  let phases = stepPhasesNative w
+  phaseTimes <- forM [1 .. steps] $ \_ -> forM phases $ \(_, run) -> do
     t0 <- getMonotonicTime
-    stepNative w
+    run
     t1 <- getMonotonicTime
     pure ((t1 - t0) * 1000)
   contacts <- contactCount w
-  let sorted = sort times
-      q :: Double -> Double
-      q x = sorted !! min (length sorted - 1) (floor (x * fromIntegral (length sorted)))
-  pure (BenchResult (spaceName sp) placed size contacts (q 0.5) (q 0.1) (q 0.9) steps)
+  let times = map sum phaseTimes
+      quantile :: [Double] -> Double -> Double
+      quantile xs x = let sorted = sort xs in sorted !! min (length sorted - 1) (floor (x * fromIntegral (length sorted)))
+      q = quantile times
+      phaseMedians = zip (map fst phases) [quantile ts 0.5 | ts <- transpose phaseTimes]
+  pure (BenchResult (spaceName sp) placed size contacts (q 0.5) (q 0.1) (q 0.9) steps phaseMedians)
   where roundTo k x = fromIntegral (round (x * 10 ^ (k :: Int)) :: Integer) / 10 ^ k :: Double

@@ -6,6 +6,7 @@ module Manifold.Engine
   , newWorld
   , addBody
   , stepNative
+  , stepPhasesNative
   , removeBodyAt
   , pickAt
   , grabAt
@@ -32,7 +33,7 @@ import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Grab
 import Manifold.Population
-import Manifold.Step (step)
+import Manifold.Step (step, stepPhases)
 import Manifold.World
 import Data.Char (toLower)
 import Data.Foldable (toList)
@@ -154,6 +155,15 @@ stepNative w = runNative (stepN (nwSpace w) (nwLayout w) (nwArrays w))
 stepN :: Space -> Layout -> WorldArrays NativeArray -> Native ()
 stepN = step
 {-# NOINLINE stepN #-}
+
+-- | The phases of 'stepNative', named, each runnable alone (in this order
+-- they make one step): for benchmarks that say where the time goes.
+stepPhasesNative :: NativeWorld -> [(String, IO ())]
+stepPhasesNative w = [(name, runNative (phase (nwSpace w) (nwLayout w) (nwArrays w))) | (name, phase) <- nativePhases]
+
+nativePhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())]
+nativePhases = stepPhases
+{-# NOINLINE nativePhases #-}
 
 data BodyState = BodyState
   { bsPos :: V3 Double

@@ -7,6 +7,7 @@ module Manifold.Scene
   ( Scene (..)
   , BodySpec (..)
   , parseScene
+  , sceneJSON
   , sceneParams
   , loadScene
   , bodyInit
@@ -146,6 +147,24 @@ parseScene text = do
     A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
     _ -> problem path "must be an array of bodies"
   pure (Scene sp dt gravity iterations friction restitution bodies)
+
+-- | A scene as the JSON 'parseScene' reads (numbers are printed so that
+-- they read back exactly).
+sceneJSON :: Scene -> A.Value
+sceneJSON s = A.object
+  [ "space" A..= spaceName (sceneSpace s), "dt" A..= sceneDt s, "gravity" A..= sceneGravity s
+  , "iterations" A..= sceneIterations s, "friction" A..= sceneFriction s
+  , "restitution" A..= sceneRestitution s, "bodies" A..= map bodyJSON (sceneBodies s) ]
+  where
+    bodyJSON b = A.object
+      [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b
+      , "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
+      , "angle" A..= bsAngle0 b, "omega" A..= bsOmega0 b ]
+    shapeJSON = \case
+      CircleShape -> A.String "circle"
+      SquareShape -> A.String "square"
+      PolygonShape n -> A.object ["polygon" A..= n]
+    v3 (V3 x y z) = [x, y, z]
 
 sceneParams :: Scene -> Params
 sceneParams s = defaultParams

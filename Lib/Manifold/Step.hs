@@ -3,6 +3,7 @@
 -- motion, polygons. Written once; run natively and printed as JavaScript.
 module Manifold.Step
   ( step
+  , stepPhases
   ) where
 
 import Manifold.Collide
@@ -19,3 +20,15 @@ step sp l w = do
   solve sp l w
   integrate sp w
   polygoniseAll sp l w
+
+-- | 'step''s phases in order, named, so that a benchmark can time each
+-- (a test checks that running them in turn is 'step').
+stepPhases :: Imp m => [(String, Space -> Layout -> WorldArrays (Array m) -> m ())]
+{-# SPECIALIZE stepPhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())] #-}
+stepPhases =
+  [ ("gravity", \sp _ w -> applyGravity sp w)
+  , ("collide", collide)
+  , ("solve", solve)
+  , ("integrate", \sp _ w -> integrate sp w)
+  , ("polygonise", polygoniseAll)
+  ]
