@@ -26,12 +26,26 @@ for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
   const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
   world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
   world.step(warmup);
-  const times = [];
-  for (let k = 0; k < steps; k++) times.push(world.step(1));
-  times.sort((a, b) => a - b);
-  const q = (x) => times[Math.min(times.length - 1, Math.floor(x * times.length))];
-  const r = { space: scene.space, bodies: world.count(), medianMs: q(0.5), p10Ms: q(0.1), p90Ms: q(0.9), steps };
+  // each phase timed on its own, as `manifold bench` does; the step is their sum
+  const phases = world.engine.phases, arrays = world.arrays;
+  const times = [], phaseTimes = phases.map(() => []);
+  for (let k = 0; k < steps; k++) {
+    let total = 0;
+    phases.forEach(([, run], j) => {
+      const t0 = performance.now();
+      run.apply(null, arrays);
+      const ms = performance.now() - t0;
+      phaseTimes[j].push(ms);
+      total += ms;
+    });
+    times.push(total);
+  }
+  const quantile = (xs, x) => { const s = xs.slice().sort((a, b) => a - b); return s[Math.min(s.length - 1, Math.floor(x * s.length))]; };
+  const q = (x) => quantile(times, x);
+  const phaseMedianMs = Object.fromEntries(phases.map(([name], j) => [name, quantile(phaseTimes[j], 0.5)]));
+  const r = { space: scene.space, bodies: world.count(), medianMs: q(0.5), p10Ms: q(0.1), p90Ms: q(0.9), steps, phaseMedianMs };
   results.push(r);
-  console.error(`${r.space} ${r.bodies}: median ${r.medianMs.toFixed(3)} ms (p10 ${r.p10Ms.toFixed(3)}, p90 ${r.p90Ms.toFixed(3)})`);
+  console.error(`${r.space} ${r.bodies}: median ${r.medianMs.toFixed(3)} ms (p10 ${r.p10Ms.toFixed(3)}, p90 ${r.p90Ms.toFixed(3)}) ` +
+    Object.entries(phaseMedianMs).map(([k, v]) => `${k} ${v.toFixed(3)}`).join(", "));
 }
 console.log(JSON.stringify(results));
