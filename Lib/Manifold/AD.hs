@@ -1,3 +1,4 @@
+{-# LANGUAGE MagicHash, UnboxedTuples #-}
 -- | Forward-mode automatic differentiation over R³ (paper §3.2).
 --
 -- A dual number carries a value and its gradient with respect to the three
@@ -18,6 +19,7 @@ module Manifold.AD
   , adjugate
   ) where
 
+import GHC.Exts (Double (..))
 import Linear.Matrix (M33, (!*))
 import Linear.V3 (V3 (..), cross)
 import Linear.Metric (dot, quadrance)
@@ -37,10 +39,12 @@ gradientD (D _ g) = g
 
 lift :: Num a => a -> D a
 lift x = D x zero
+{-# INLINE lift #-}
 
 -- | Apply a function with known derivative: the chain rule.
 chain :: Num a => (a -> a) -> (a -> a) -> D a -> D a
 chain f f' (D x dx) = D (f x) (f' x *^ dx)
+{-# INLINE chain #-}
 
 instance Field a => Num (D a) where
   D x dx + D y dy = D (x + y) (dx ^+^ dy)
@@ -51,11 +55,21 @@ instance Field a => Num (D a) where
   abs (D x dx) = D (abs x) (signum x *^ dx)
   signum (D x _) = lift (signum x)
   fromInteger = lift . fromInteger
+  {-# INLINE (+) #-}
+  {-# INLINE (-) #-}
+  {-# INLINE (*) #-}
+  {-# INLINE negate #-}
+  {-# INLINE abs #-}
+  {-# INLINE signum #-}
+  {-# INLINE fromInteger #-}
 
 instance Field a => Fractional (D a) where
   D x dx / D y dy = D (x / y) ((recip y) *^ dx ^-^ (x / (y * y)) *^ dy)
   recip = chain recip (\x -> negate (recip (x * x)))
   fromRational = lift . fromRational
+  {-# INLINE (/) #-}
+  {-# INLINE recip #-}
+  {-# INLINE fromRational #-}
 
 instance Field a => Floating (D a) where
   pi = lift pi
@@ -78,21 +92,47 @@ instance Field a => Floating (D a) where
     let p = x ** y
     in D p ((y * x ** (y - 1)) *^ dx ^+^ (p * log x) *^ dy)
   logBase b x = log x / log b
+  {-# INLINE pi #-}
+  {-# INLINE exp #-}
+  {-# INLINE log #-}
+  {-# INLINE sqrt #-}
+  {-# INLINE sin #-}
+  {-# INLINE cos #-}
+  {-# INLINE tan #-}
+  {-# INLINE asin #-}
+  {-# INLINE acos #-}
+  {-# INLINE atan #-}
+  {-# INLINE sinh #-}
+  {-# INLINE cosh #-}
+  {-# INLINE tanh #-}
+  {-# INLINE asinh #-}
+  {-# INLINE acosh #-}
+  {-# INLINE atanh #-}
+  {-# INLINE (**) #-}
+  {-# INLINE logBase #-}
 
 instance Field a => Field (D a) where
   constant = lift . constant
   select (D c _) (D t dt) (D e de) = D (select c t e) (select c <$> dt <*> de)
   floorF (D x _) = lift (floorF x)
+  {-# INLINE constant #-}
+  {-# INLINE select #-}
+  {-# INLINE floorF #-}
 
 -- | The coordinates of a point as independent variables.
 variables :: Num a => V3 a -> V3 (D a)
 variables (V3 x y z) = V3 (D x (V3 1 0 0)) (D y (V3 0 1 0)) (D z (V3 0 0 1))
+{-# INLINE variables #-}
 
 -- | A scalar function of a point, with its gradient by AD, and both also
 -- compiled for 'Double' (see 'ScalarFn'). Inlined where it is used so that
 -- GHC specialises the function there.
 scalarFn :: (forall a. Field a => V3 a -> a) -> ScalarFn
-scalarFn f = ScalarFnOf f (grad f) f (grad f)
+scalarFn f = ScalarFnOf f (grad f) evalD valueGradD
+  where
+    evalD x y z = case f (V3 (D# x) (D# y) (D# z)) :: Double of D# v -> v
+    valueGradD x y z = case f (variables (V3 (D# x) (D# y) (D# z))) :: D Double of
+      D (D# v) (V3 (D# gx) (D# gy) (D# gz)) -> (# v, gx, gy, gz #)
 {-# INLINE scalarFn #-}
 
 -- | The gradient of a scalar function of a point.

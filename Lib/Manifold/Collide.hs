@@ -28,7 +28,13 @@ import Manifold.Stage.Imp
 import Manifold.Surface (tangentProjection, safeNormalize)
 import Manifold.World
 
--- | Sort the bodies into grid cells (a counting sort: no allocation).
+-- | Sort the bodies into the buckets of a spatial hash of grid cells (a
+-- counting sort: no allocation). Cells are at least as wide as the largest
+-- body, so a body's contacts are all in the 27 cells around its own; the
+-- cells are hashed into about two buckets per body, so clearing and
+-- scanning the table costs as much as the bodies do, whatever the space's
+-- size. Each body remembers its exact cell, so bodies of a different cell
+-- that share the bucket are skipped.
 buildGrid :: Imp m => Space -> WorldArrays (Array m) -> m ()
 buildGrid sp w = do
   count <- readMeta w BodyCount
@@ -39,66 +45,70 @@ buildGrid sp w = do
     r <- readSlot w i BoundRadius
     modifyRef maxR (maxF r)
   rmax <- readRef maxR
-  cell <- share (maxF (2 * rmax) (2 * bound / fromIntegral maxGridDim))
-  dim <- share (minF (fromIntegral maxGridDim) (floorF (2 * bound / cell) + 1))
-  writeMeta w GridDim dim
+  -- at most 2^16 cells across the bounds, so that a cell's key is exact
+  cell <- share (maxF (2 * rmax) (2 * bound / cellsAcross))
+  buckets <- share (clampF 1 (fromIntegral maxBuckets) (2 * count))
+  writeMeta w GridBuckets buckets
   writeMeta w CellSize cell
-  let cells = toIndex (dim * dim * dim)
-      starts c = toIndex (dim * dim * dim) + c
-  forEach cells $ \c -> writeArray (wGrid w) c 0
+  let starts b = toIndex buckets + b
+  forEach (toIndex buckets) $ \b -> writeArray (wGrid w) b 0
   forEach n $ \i -> do
     p <- read3 (wPos w) i
-    c <- share (cellIndex bound cell dim p)
-    writeArray (wCellOf w) i c
-    k <- readArray (wGrid w) (toIndex c)
-    writeArray (wGrid w) (toIndex c) (k + 1)
+    let V3 cx cy cz = fmap (cellCoord cell) p
+    writeArray (wCellOf w) i (cellKey cx cy cz)
+    b <- share (bucketOf buckets cx cy cz)
+    k <- readArray (wGrid w) (toIndex b)
+    writeArray (wGrid w) (toIndex b) (k + 1)
   running <- newRef 0
-  forEach cells $ \c -> do
-    k <- readArray (wGrid w) c
+  forEach (toIndex buckets) $ \b -> do
+    k <- readArray (wGrid w) b
     s <- readRef running
-    writeArray (wGrid w) (starts c) s
-    writeArray (wGrid w) c s -- the fill cursor; it ends at the cell's end
+    writeArray (wGrid w) (starts b) s
+    writeArray (wGrid w) b s -- the fill cursor; it ends at the bucket's end
     writeRef running (s + k)
   forEach n $ \i -> do
-    c <- readArray (wCellOf w) i
-    k <- readArray (wGrid w) (toIndex c)
+    p <- read3 (wPos w) i
+    let V3 cx cy cz = fmap (cellCoord cell) p
+    b <- share (bucketOf buckets cx cy cz)
+    k <- readArray (wGrid w) (toIndex b)
     writeArray (wItems w) (toIndex k) (toScalar i)
-    writeArray (wGrid w) (toIndex c) (k + 1)
+    writeArray (wGrid w) (toIndex b) (k + 1)
 
-cellCoord :: Field a => a -> a -> a -> a -> a
-cellCoord bound cell dim x = clampF 0 (dim - 1) (floorF ((x + bound) / cell))
+cellsAcross :: Field a => a
+cellsAcross = 65536
 
-cellIndex :: Field a => a -> a -> a -> V3 a -> a
-cellIndex bound cell dim (V3 x y z) =
-  (cellCoord bound cell dim x * dim + cellCoord bound cell dim y) * dim + cellCoord bound cell dim z
+cellCoord :: Field a => a -> a -> a
+cellCoord cell x = floorF (x / cell)
+
+-- | A cell's identity as one exact number (coordinates within ±2^16).
+cellKey :: Field a => a -> a -> a -> a
+cellKey cx cy cz = ((cx + 131072) * 262144 + (cy + 131072)) * 262144 + (cz + 131072)
+
+-- | The bucket of a cell: a hash of its coordinates modulo the table size
+-- (every product stays far below 2^53, so it is exact).
+bucketOf :: Field a => a -> a -> a -> a -> a
+bucketOf buckets cx cy cz =
+  let h = cx * 73856093 + cy * 19349663 + cz * 83492791
+  in h - buckets * floorF (h / buckets)
 
 -- | Run @visit j@ for every body @j@ in the 27 cells around point @p@.
-neighbours :: Imp m => Space -> WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
-neighbours sp w p visit = do
-  let bound = constant (spaceBounds sp)
-  dim <- readMeta w GridDim
+neighbours :: Imp m => WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
+neighbours w p visit = do
+  buckets <- readMeta w GridBuckets
   cell <- readMeta w CellSize
-  let V3 x y z = p
-  cx <- share (cellCoord bound cell dim x)
-  cy <- share (cellCoord bound cell dim y)
-  cz <- share (cellCoord bound cell dim z)
-  forEach 27 $ \k -> do
-    let kf = toScalar k
-        dx = floorF (kf / 9) - 1
-        dy = floorF (kf / 3) - 3 * floorF (kf / 9) - 1
-        dz = kf - 3 * floorF (kf / 3) - 1
-    nx <- share (cx + dx)
-    ny <- share (cy + dy)
-    nz <- share (cz + dz)
-    -- inside the grid: every coordinate in [0, dim)
-    let inside = minF (minF (minF nx ny) nz + 0.5) (dim - 0.5 - maxF (maxF nx ny) nz)
-    whenPositive inside $ do
-      c <- share ((nx * dim + ny) * dim + nz)
-      end <- readArray (wGrid w) (toIndex c)
-      start <- readArray (wGrid w) (toIndex (dim * dim * dim + c))
-      forLoop (toIndex start) (toIndex end) $ \s -> do
-        j <- readArray (wItems w) s
-        visit (toIndex j)
+  V3 cx cy cz <- share3 (fmap (cellCoord cell) p)
+  forEach 3 $ \dx -> forEach 3 $ \dy -> forEach 3 $ \dz -> do
+    nx <- share (cx + toScalar dx - 1)
+    ny <- share (cy + toScalar dy - 1)
+    nz <- share (cz + toScalar dz - 1)
+    key <- share (cellKey nx ny nz)
+    b <- share (bucketOf buckets nx ny nz)
+    end <- readArray (wGrid w) (toIndex b)
+    start <- readArray (wGrid w) (toIndex buckets + toIndex b)
+    forLoop (toIndex start) (toIndex end) $ \s -> do
+      j <- readArray (wItems w) s
+      cj <- readArray (wCellOf w) (toIndex j)
+      whenPositive (0.5 - abs (cj - key)) (visit (toIndex j))
 
 -- | Whether a point (near the surface) is inside body @Y@'s polygon: the
 -- depth (positive inside) and the outward direction of the edge it is
@@ -382,7 +392,7 @@ collide sp l w = do
     p <- read3 (wPos w) i
     ri <- readSlot w i BoundRadius
     invMi <- readSlot w i InvMass
-    let pairs sgn imageSlots = neighbours sp w (sgn *^ p) $ \j -> do
+    let pairs sgn imageSlots = neighbours w (sgn *^ p) $ \j -> do
           -- each unordered pair once: j > i (j >= i for images, which
           -- includes the body's own image)
           let order = toScalar j - toScalar i + (if imageSlots then 0.5 else 0)

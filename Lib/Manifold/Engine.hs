@@ -67,13 +67,14 @@ data Params = Params
   , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
   , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
   , pMaxCorrection :: Double -- ^ the fastest a contact pushes bodies out of an overlap
+  , pPolygonStep :: Double -- ^ bodies up to this size walk their outline in one geodesic step (0: never)
   } deriving (Show, Eq)
 
 defaultParams :: Params
 defaultParams = Params
   { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
   , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True
-  , pMaxCorrection = 0.5 }
+  , pMaxCorrection = 0.5, pPolygonStep = 0.05 }
 
 setParams :: NativeWorld -> Params -> IO ()
 setParams w p = do
@@ -90,6 +91,7 @@ setParams w p = do
   set BounceThreshold (pBounceThreshold p)
   set WarmStart (if pWarmStart p then 1 else 0)
   set MaxCorrection (pMaxCorrection p)
+  set PolygonStep (pPolygonStep p)
 
 -- | A body as a scene describes it.
 data BodyInit = BodyInit
@@ -242,7 +244,8 @@ engineObject l =
       params = [ ("dt", pDt p), ("gravityOn", if pGravity p then 1 else 0), ("iterations", fromIntegral (pIterations p))
                , ("friction", pFriction p), ("restitution", pRestitution p), ("baumgarte", pBaumgarte p)
                , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p)
-               , ("warmStart", if pWarmStart p then 1 else 0), ("maxCorrection", pMaxCorrection p) ]
+               , ("warmStart", if pWarmStart p then 1 else 0), ("maxCorrection", pMaxCorrection p)
+               , ("polygonStep", pPolygonStep p) ]
       phaseNames = stepPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
   in unlines
     [ "{"

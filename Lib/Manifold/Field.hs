@@ -7,6 +7,7 @@
 -- same source then runs natively at 'Double', is differentiated at the dual
 -- numbers of "Manifold.AD", and is printed as JavaScript and GLSL by the
 -- staging layer.
+{-# LANGUAGE MagicHash, UnboxedTuples #-}
 module Manifold.Field
   ( Field (..)
   , clampF
@@ -16,7 +17,8 @@ module Manifold.Field
   , VectorFn (..)
   ) where
 
-import Linear.V3 (V3)
+import GHC.Exts (Double (..), Double#)
+import Linear.V3 (V3 (..))
 
 -- | Scalars of the physics.
 --
@@ -44,16 +46,26 @@ class Floating a => Field a where
   evalFn f = evalPoly f
   gradFn :: ScalarFn -> V3 a -> V3 a
   gradFn f = gradPoly f
+  -- | Both at once (one evaluation natively; staged code shares them anyway).
+  valueGradFn :: ScalarFn -> V3 a -> (a, V3 a)
+  valueGradFn f p = (evalFn f p, gradFn f p)
 
 instance Field Double where
   constant = id
   select c t e = if c > 0 then t else e
   {-# INLINE select #-}
-  floorF x
-    | isNaN x || isInfinite x || x == 0 = x -- keeps −0, as Math.floor does
-    | otherwise = fromIntegral (floor x :: Integer)
-  evalFn = evalDouble
-  gradFn = gradDouble
+  floorF = c_floor -- C's floor keeps −0, NaN and the infinities, as Math.floor does
+  {-# INLINE floorF #-}
+  evalFn f (V3 (D# x) (D# y) (D# z)) = D# (evalRaw f x y z)
+  {-# INLINE evalFn #-}
+  gradFn f (V3 (D# x) (D# y) (D# z)) = case valueGradRaw f x y z of
+    (# _, gx, gy, gz #) -> V3 (D# gx) (D# gy) (D# gz)
+  {-# INLINE gradFn #-}
+  valueGradFn f (V3 (D# x) (D# y) (D# z)) = case valueGradRaw f x y z of
+    (# v, gx, gy, gz #) -> (D# v, V3 (D# gx) (D# gy) (D# gz))
+  {-# INLINE valueGradFn #-}
+
+foreign import ccall unsafe "math.h floor" c_floor :: Double -> Double
 
 -- | @clampF lo hi x@.
 clampF :: Field a => a -> a -> a -> a
@@ -78,12 +90,15 @@ smoothMinF k a b =
 -- a boundary @b(p) >= 0@. Built by 'Manifold.AD.scalarFn', which also keeps
 -- the function and its gradient compiled for 'Double': a function stored in a
 -- record cannot be specialised where it is used, so the native engine would
--- otherwise run every field through dictionaries.
+-- otherwise run every field through dictionaries. The 'Double' versions take
+-- and return unboxed numbers: a call through a record field is an unknown
+-- call, and boxed arguments and results would allocate at every one of the
+-- engine's hundreds of thousands of field evaluations per step.
 data ScalarFn = ScalarFnOf
   { evalPoly :: forall a. Field a => V3 a -> a
   , gradPoly :: forall a. Field a => V3 a -> V3 a -- ^ by forward AD
-  , evalDouble :: V3 Double -> Double
-  , gradDouble :: V3 Double -> V3 Double
+  , evalRaw :: Double# -> Double# -> Double# -> Double#
+  , valueGradRaw :: Double# -> Double# -> Double# -> (# Double#, Double#, Double#, Double# #)
   }
 
 -- | A vector field of R³, polymorphic in the scalar (e.g. gravity).

@@ -4,6 +4,7 @@
 -- under AD, and staged as JavaScript. Branching uses 'select', and iterations
 -- have fixed counts (a converged iteration leaves the point where it is), so
 -- that the staged code has no data-dependent control flow.
+{-# LANGUAGE ScopedTypeVariables #-}
 module Manifold.Surface
   ( fieldGradient
   , unitNormal
@@ -32,10 +33,12 @@ import Manifold.Field
 
 -- | The gradient of a field, by forward AD.
 fieldGradient :: Field a => ScalarFn -> V3 a -> V3 a
+{-# INLINE fieldGradient #-}
 fieldGradient = gradFn
 
 -- | @v/|v|@, or the zero vector where @|v| = 0@ (never NaN).
 safeNormalize :: Field a => V3 a -> V3 a
+{-# INLINE safeNormalize #-}
 safeNormalize v =
   let l = norm v
       inv = select l (recip (maxF l tiny)) 0
@@ -44,6 +47,7 @@ safeNormalize v =
 
 -- | The unit normal @∇f/|∇f|@.
 unitNormal :: Field a => ScalarFn -> V3 a -> V3 a
+{-# INLINE unitNormal #-}
 unitNormal f = safeNormalize . fieldGradient f
 
 -- | The first-order distance to the surface, @f/|∇f|@.
@@ -92,12 +96,14 @@ projectToSurfaceWith n sf = go n
 -- | The orthogonal projection of an ambient vector onto the tangent plane with
 -- unit normal @n@.
 tangentProjection :: Field a => V3 a -> V3 a -> V3 a
+{-# INLINE tangentProjection #-}
 tangentProjection n v = v ^-^ (n `dot` v) *^ n
 
 -- | Carry a tangent vector to the tangent plane at another (nearby) point:
 -- project (the Levi-Civita connection of an embedded surface is the projected
 -- ambient derivative), then restore the old length.
 transport :: Field a => ScalarFn -> V3 a -> V3 a -> V3 a
+{-# INLINE transport #-}
 transport sf p' v =
   let n = unitNormal sf p'
       w = tangentProjection n v
@@ -116,16 +122,27 @@ stepProjectionIterations = 3
 -- @f = 0@: second order, and it conserves the angular momentum that a
 -- symmetry of the surface gives (Clairaut's relation on a surface of
 -- revolution). Where @∇f · n@ vanishes the point is left where it is.
-projectAlong :: forall a. Field a => ScalarFn -> V3 a -> V3 a -> V3 a
-projectAlong sf n = go stepProjectionIterations
+projectAlong :: Field a => ScalarFn -> V3 a -> V3 a -> V3 a
+{-# INLINE projectAlong #-}
+projectAlong sf n q = fst (projectAlongWithGradient sf n q)
+
+-- | 'projectAlong', and the gradient of the field at the last Newton iterate
+-- (the point the final Newton step starts from): each iteration evaluates
+-- the value and the gradient together, and the last gradient serves as the
+-- new point's normal. The final step moves the point by @|f|/|∇f·n|@, at
+-- rounding error once converged, so the normal it leaves behind is the one
+-- at the returned point to that order.
+projectAlongWithGradient :: forall a. Field a => ScalarFn -> V3 a -> V3 a -> (V3 a, V3 a)
+{-# INLINE projectAlongWithGradient #-}
+projectAlongWithGradient sf n = go stepProjectionIterations
   where
-    go :: Int -> V3 a -> V3 a
-    go 0 q = q
+    go :: Int -> V3 a -> (V3 a, V3 a)
     go k q =
-      let v = evalFn sf q
-          slope = fieldGradient sf q `dot` n
+      let (v, g) = valueGradFn sf q
+          slope = g `dot` n
           moving = select (abs v - constant projectionTolerance) (select (abs slope) 1 0) 0
-      in go (k - 1) (select moving <$> (q ^-^ (v / slope) *^ n) <*> q)
+          q' = select moving <$> (q ^-^ (v / slope) *^ n) <*> q
+      in if k <= 1 then (q', g) else go (k - 1) q'
 
 -- | One step of a geodesic (RATTLE): move along the velocity for time @h@,
 -- pull back onto the surface along the normal where the step began, take
@@ -140,10 +157,11 @@ geodesicStep sf h (p, v) =
 -- normal at the new point too: a walk of many steps evaluates the gradient
 -- once per step fewer.
 geodesicStepFrom :: Field a => ScalarFn -> a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
+{-# INLINE geodesicStepFrom #-}
 geodesicStepFrom sf h n (p, v) =
-  let p' = projectAlong sf n (p ^+^ h *^ v)
+  let (p', g') = projectAlongWithGradient sf n (p ^+^ h *^ v)
       mean = select (abs h) (recip h) 0 *^ (p' ^-^ p)
-      n' = unitNormal sf p'
+      n' = safeNormalize g'
       v' = norm v *^ safeNormalize (tangentProjection n' mean)
       moved = select (abs h) 1 0
       kept = 1 - moved
@@ -165,4 +183,5 @@ geodesicPath sf n p dir len =
 -- | A tangent frame @(u, n × u)@ at a point with unit normal @n@, from a
 -- tangent axis @u@.
 tangentFrame :: Field a => V3 a -> V3 a -> (V3 a, V3 a)
+{-# INLINE tangentFrame #-}
 tangentFrame n u = (u, n `cross` u)

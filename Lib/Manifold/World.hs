@@ -27,7 +27,7 @@ module Manifold.World
   , prevStride
   , contactsPerBody
   , maxContacts
-  , maxGridDim
+  , maxBuckets
   , verticesPerBody
     -- * Access
   , read3
@@ -60,7 +60,8 @@ module Manifold.World
   ) where
 
 import Linear.V3 (V3 (..), cross)
-import Linear.Vector ((*^), (^+^))
+import Control.Monad (forM_)
+import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Body (PolygonParams (..))
 import Manifold.Field
@@ -79,9 +80,9 @@ data WorldArrays a = WorldArrays
   , wScalars :: a -- ^ 'scalarSlots' per body, see 'Slot'
   , wRadii :: a -- ^ directions per body: the outline's radius in each polygon direction
   , wVerts :: a -- ^ 3 × vertices per body: the cached polygon
-  , wGrid :: a -- ^ broad phase: per cell a count, then per cell a start
-  , wCellOf :: a -- ^ broad phase: each body's cell
-  , wItems :: a -- ^ broad phase: bodies sorted by cell
+  , wGrid :: a -- ^ broad phase: per hash bucket a count, then per bucket a start
+  , wCellOf :: a -- ^ broad phase: each body's cell (its key)
+  , wItems :: a -- ^ broad phase: bodies sorted by bucket
   , wContacts :: a -- ^ 'contactStride' per contact, see 'ContactField'
   , wPrev :: a -- ^ the last step's contacts for warm starting: owner, key, normal and friction impulse
   , wBodyPrev :: a -- ^ per body: where its contacts start in 'wPrev', and how many
@@ -102,11 +103,12 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters.
-data Meta = BodyCount | Warnings | ContactCount | Capacity | GridDim | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
+data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
 data Param = Dt | GravityOn | Iterations | Friction | Restitution | Baumgarte | Slop | BounceThreshold | WarmStart | MaxCorrection
+  | PolygonStep
   deriving (Show, Eq, Enum, Bounded)
 
 -- | One contact row pair (normal and friction) of the solver. The first body
@@ -136,9 +138,9 @@ prevStride = 4
 contactsPerBody :: Int
 contactsPerBody = 8
 
--- | The broad phase's grid has at most this many cells along each axis.
-maxGridDim :: Int
-maxGridDim = 32
+-- | The broad phase's hash table has at most this many buckets.
+maxBuckets :: Int
+maxBuckets = 32768
 
 verticesPerBody :: Layout -> Int
 verticesPerBody l = 1 + polyDirections (polygon l) * polySteps (polygon l)
@@ -154,7 +156,7 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wScalars = scalarSlots * c
   , wRadii = polyDirections (polygon l) * c
   , wVerts = 3 * verticesPerBody l * c
-  , wGrid = 2 * maxGridDim ^ (3 :: Int)
+  , wGrid = 2 * maxBuckets
   , wCellOf = c
   , wItems = c
   , wContacts = contactStride * maxContacts l
@@ -329,7 +331,15 @@ polygoniseAll sp l w = do
   forEach (toIndex count) (polygoniseBody sp l w)
 
 -- | Walk one body's polygon: from the centre, a geodesic in each direction,
--- in equal steps of the outline radius over the step count.
+-- in equal steps of the outline radius over the step count (paper §3.4).
+--
+-- A body no larger than the 'PolygonStep' parameter walks each direction in
+-- one step instead: one RATTLE step of length @h@ lands within about
+-- @h³/(6R²)@ of the geodesic's end on a surface of curvature radius @R@
+-- (for the default step 0.05 and @R@ = 0.3, 0.5 % of @h@), and the polygon
+-- walk is most of the engine's work. Its inner vertices, which only the
+-- page draws, are then put on the chords from the centre (they sink below
+-- the surface by about @h²/(8R)@, inside the page's depth tolerance).
 polygoniseBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 polygoniseBody sp l w i = do
   let f = spaceField sp
@@ -337,25 +347,38 @@ polygoniseBody sp l w i = do
       nd = polyDirections pp
       ns = polySteps pp
       vpb = fromIntegral (verticesPerBody l)
+      vertexIx d k = vpb * i + 1 + d * fromIntegral ns + fromIntegral (k - 1) -- step k (1..ns) along d
   p <- read3 (wPos w) i
   axis <- read3 (wAxis w) i
   n <- read3 (wNormal w) i
   angle <- readSlot w i Angle
+  hmax <- readParam w PolygonStep
+  rmax <- readSlot w i BoundRadius
   write3 (wVerts w) (vpb * i) p
   u <- share3 axis
   v <- share3 (n `cross` axis)
+  -- positive: walk in 'ns' steps; otherwise one (a step of 0 or less means always 'ns')
+  fine <- share (select hmax (rmax - hmax) 1)
   forEach (fromIntegral nd) $ \d -> do
     r <- readArray (wRadii w) (fromIntegral nd * i + d)
     let phi = angle + toScalar d * constant (2 * pi / fromIntegral nd)
     c <- share (cos phi)
     s <- share (sin phi)
-    h <- share (r / fromIntegral ns)
-    let walk 0 _ _ _ = pure ()
-        walk k q dir nq = do
-          let (q1, dir1, n1) = geodesicStepFrom f h nq (q, dir)
-          q' <- share3 q1
-          dir' <- share3 dir1
-          n' <- share3 n1
-          write3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + fromIntegral (ns - k)) q'
-          walk (k - 1 :: Int) q' dir' n'
-    walk ns p (c *^ u ^+^ s *^ v) n
+    dir0 <- share3 (c *^ u ^+^ s *^ v)
+    ifPositive fine
+      (do h <- share (r / fromIntegral ns)
+          let walk k q dir nq
+                | k > ns = pure ()
+                | otherwise = do
+                    let (q1, dir1, n1) = geodesicStepFrom f h nq (q, dir)
+                    q' <- share3 q1
+                    dir' <- share3 dir1
+                    n' <- share3 n1
+                    write3 (wVerts w) (vertexIx d k) q'
+                    walk (k + 1 :: Int) q' dir' n'
+          walk 1 p dir0 n)
+      (do let (o, _, _) = geodesicStepFrom f r n (p, dir0)
+          o' <- share3 o
+          write3 (wVerts w) (vertexIx d ns) o'
+          forM_ [1 .. ns - 1] $ \k ->
+            write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o' ^-^ p)))

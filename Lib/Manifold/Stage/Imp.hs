@@ -82,11 +82,14 @@ runNative (Native io) = io
 
 type NativeArray = MV.IOVector Double
 
+-- | A mutable unboxed number (an 'IORef' would box every write).
+newtype NativeRef = NativeRef (MV.IOVector Double)
+
 instance Imp Native where
   type Scalar Native = Double
   type Index Native = Int
   type Array Native = NativeArray
-  type Ref Native = IORef Double
+  type Ref Native = NativeRef
   forLoop lo hi body = go lo
     where go !i | i < hi = body i >> go (i + 1)
                 | otherwise = pure ()
@@ -97,11 +100,18 @@ instance Imp Native where
   {-# INLINE readArray #-}
   writeArray a i x = Native (MV.write a i x)
   {-# INLINE writeArray #-}
-  share = pure
-  shareAll = pure
-  newRef = Native . newIORef
-  readRef = Native . readIORef
-  writeRef r !x = Native (writeIORef r x)
+  -- strict, as the printed @const@ is: a shared value is computed where it
+  -- is shared, not left as a thunk
+  share !x = pure x
+  {-# INLINE share #-}
+  shareAll xs = foldr seq (pure xs) xs
+  {-# INLINE shareAll #-}
+  newRef !x = Native (NativeRef <$> MV.replicate 1 x)
+  {-# INLINE newRef #-}
+  readRef (NativeRef r) = Native (MV.unsafeRead r 0)
+  {-# INLINE readRef #-}
+  writeRef (NativeRef r) !x = Native (MV.unsafeWrite r 0 x)
+  {-# INLINE writeRef #-}
   toScalar = fromIntegral
   toIndex = truncate
 
