@@ -15,9 +15,11 @@ import Data.List (sort, transpose)
 import Data.Maybe (listToMaybe)
 import qualified Data.Map.Strict as M
 import GHC.Clock (getMonotonicTime)
-import Linear.Metric (distance, norm)
+import Linear.Metric (distance, dot, norm, normalize)
+import Linear.V3 (cross)
+import Linear.Vector ((*^), (^+^), (^-^))
 import Linear.V3 (V3 (..))
-import System.Random (mkStdGen, randomRs)
+import System.Random (mkStdGen, randomR)
 
 import Manifold.Engine
 import Manifold.Space
@@ -65,35 +67,67 @@ region sp = case spaceName sp of
     h = 2 / 1000
 
 -- | N bodies (circles and squares in turn) of the size that covers a third
--- of the region, placed by dart throwing on the surface (seeded). Near that
--- density random throwing jams, so fewer bodies may be placed than asked;
--- the result says how many were.
+-- of the region, at least two sizes (circumradii) apart, placed on the
+-- surface by Poisson-disc sampling (Bridson's algorithm on the surface,
+-- seeded): from a random placed body, up to 30 candidates at a random
+-- distance of 1 to 1.6 times the spacing in a random tangent direction,
+-- projected onto the surface; a body with no room around it leaves the
+-- active list, and when the list runs dry a new random seed is thrown (up to
+-- a thousand times), so every component of the region gets bodies. Should
+-- the region still fill up, the scene holds fewer bodies than asked; the
+-- result says how many it holds.
 benchScene :: Space -> Int -> Scene
 benchScene sp n =
   let (area, inside) = region sp
       size = sqrt (area / (3 * fromIntegral n * ((pi + 2) / 2)))
       b = spaceBounds sp
       f = spaceField sp
-      coords = randomRs (-b, b) (mkStdGen (7 + n))
-      candidates = [projectToSurface f (V3 x y z) | (x, y, z) <- triples coords]
+      spacing = 2 * size
       usable p = not (any isNaN p) && abs (evalField sp p) < 1e-9 && inside p
                  && evalBoundary sp p > size && norm (unitNormal f p) > 0.5
-      cell = 2 * size
-      key (V3 x y z) = (floor (x / cell), floor (y / cell), floor (z / cell)) :: (Int, Int, Int)
-      far grid p = and [ distance p q >= 2 * size && distance (negate p) q >= 2 * size
-                       | (i, j, k) <- [key p, key (negate p)], di <- [-1, 0, 1], dj <- [-1, 0, 1], dk <- [-1, 0, 1]
+      key (V3 x y z) = (floor (x / spacing), floor (y / spacing), floor (z / spacing)) :: (Int, Int, Int)
+      -- on a quotient by p ~ −p a body is also at −p
+      images p = if spaceQuotient sp == Antipodal then [p, negate p] else [p]
+      far grid p = and [ distance p' q >= spacing
+                       | p' <- images p, let (i, j, k) = key p', di <- [-1, 0, 1], dj <- [-1, 0, 1], dk <- [-1, 0, 1]
                        , q <- M.findWithDefault [] (i + di, j + dj, k + dk) grid ]
-      place _ acc 0 _ = reverse acc
-      place _ acc _ [] = reverse acc
-      place grid acc k (p : ps)
-        | usable p && far grid p = place (M.insertWith (++) (key p) [p] grid) (p : acc) (k - 1) ps
-        | otherwise = place grid acc k ps
-      points = place M.empty [] n (take (2000 * n + 20000) candidates)
+      insert p = M.insertWith (++) (key p) [p]
+      -- a random point of the surface: a random point of the bounds, projected
+      seed g tries grid
+        | tries <= (0 :: Int) = Nothing
+        | otherwise =
+            let (x, g1) = randomR (-b, b) g
+                (y, g2) = randomR (-b, b) g1
+                (z, g3) = randomR (-b, b) g2
+                p = projectToSurface f (V3 x y z)
+            in if usable p && far grid p then Just (p, g3) else seed g3 (tries - 1) grid
+      around g p grid = go g (30 :: Int)
+        where
+          nrm = unitNormal f p
+          V3 nx _ _ = nrm
+          a = if abs nx < 0.9 then V3 1 0 0 else V3 0 1 0
+          u = normalize (a ^-^ (a `dot` nrm) *^ nrm)
+          v = nrm `cross` u
+          go g0 0 = (Nothing, g0)
+          go g0 k =
+            let (theta, g1) = randomR (0, 2 * pi) g0
+                (r, g2) = randomR (spacing, 1.6 * spacing) g1
+                q = projectToSurface f (p ^+^ r *^ (cos theta *^ u ^+^ sin theta *^ v))
+            in if usable q && far grid q then (Just q, g2) else go g2 (k - 1)
+      place g grid active placed count
+        | count >= n = reverse placed
+        | null active = case seed g 1000 grid of
+            Nothing -> reverse placed
+            Just (p, g') -> place g' (insert p grid) [p] (p : placed) (count + 1)
+        | otherwise =
+            let (k, g1) = randomR (0, length active - 1) g
+                p = active !! k
+            in case around g1 p grid of
+                 (Just q, g2) -> place g2 (insert q grid) (q : active) (q : placed) (count + 1)
+                 (Nothing, g2) -> place g2 grid (take k active ++ drop (k + 1) active) placed count
+      points = place (mkStdGen (7 + n)) M.empty [] [] 0
       shapeOf i = if even i then CircleShape else SquareShape
   in Scene sp 0.01 True 8 0.4 0 [BodySpec (shapeOf i) size 1 False p (V3 0 0 0) 0 0 | (i, p) <- zip [0 :: Int ..] points]
-  where
-    triples (x : y : z : rest) = (x, y, z) : triples rest
-    triples _ = []
 
 -- | Settle for @warmup@ steps, then time @steps@ steps one by one, each
 -- phase of each step on its own (the step's time is their sum).

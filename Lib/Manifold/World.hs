@@ -170,44 +170,57 @@ arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "
   "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
+{-# INLINE read3 #-}
 read3 a i = V3 <$> readArray a (3 * i) <*> readArray a (3 * i + 1) <*> readArray a (3 * i + 2)
 
 write3 :: Imp m => Array m -> Index m -> V3 (Scalar m) -> m ()
+{-# INLINE write3 #-}
 write3 a i (V3 x y z) = writeArray a (3 * i) x >> writeArray a (3 * i + 1) y >> writeArray a (3 * i + 2) z
 
 share3 :: Imp m => V3 (Scalar m) -> m (V3 (Scalar m))
+{-# INLINE share3 #-}
 share3 = shareAll
 
 ix :: (Imp m, Enum e) => e -> Index m
+{-# INLINE ix #-}
 ix = fromIntegral . fromEnum
 
 readSlot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> m (Scalar m)
+{-# INLINE readSlot #-}
 readSlot w i s = readArray (wScalars w) (fromIntegral scalarSlots * i + ix s)
 
 writeSlot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> Scalar m -> m ()
+{-# INLINE writeSlot #-}
 writeSlot w i s = writeArray (wScalars w) (fromIntegral scalarSlots * i + ix s)
 
 readMeta :: Imp m => WorldArrays (Array m) -> Meta -> m (Scalar m)
+{-# INLINE readMeta #-}
 readMeta w k = readArray (wMeta w) (ix k)
 
 writeMeta :: Imp m => WorldArrays (Array m) -> Meta -> Scalar m -> m ()
+{-# INLINE writeMeta #-}
 writeMeta w k = writeArray (wMeta w) (ix k)
 
 readParam :: Imp m => WorldArrays (Array m) -> Param -> m (Scalar m)
+{-# INLINE readParam #-}
 readParam w k = readArray (wParams w) (ix k)
 
 readContact :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (Scalar m)
+{-# INLINE readContact #-}
 readContact w c k = readArray (wContacts w) (fromIntegral contactStride * c + ix k)
 
 writeContact :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> Scalar m -> m ()
+{-# INLINE writeContact #-}
 writeContact w c k = writeArray (wContacts w) (fromIntegral contactStride * c + ix k)
 
 -- | Three consecutive fields starting at the given one.
 readContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (V3 (Scalar m))
+{-# INLINE readContact3 #-}
 readContact3 w c k = let o = fromIntegral contactStride * c + ix k in
   V3 <$> readArray (wContacts w) o <*> readArray (wContacts w) (o + 1) <*> readArray (wContacts w) (o + 2)
 
 writeContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> V3 (Scalar m) -> m ()
+{-# INLINE writeContact3 #-}
 writeContact3 w c k (V3 x y z) = do
   let o = fromIntegral contactStride * c + ix k
   writeArray (wContacts w) o x >> writeArray (wContacts w) (o + 1) y >> writeArray (wContacts w) (o + 2) z
@@ -220,23 +233,25 @@ writeMouse w k = writeArray (wMouse w) (ix k)
 
 -- | Outline vertex @d@ (the last step along direction @d@) of body @i@.
 outlineVertex :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m -> m (V3 (Scalar m))
+{-# INLINE outlineVertex #-}
 outlineVertex l w i d =
   let ns = fromIntegral (polySteps (polygon l))
   in read3 (wVerts w) (fromIntegral (verticesPerBody l) * i + 1 + d * ns + (ns - 1))
 
 -- | What the narrow phase needs of a body.
 data BodyFrame s = BodyFrame
-  { bfCentre :: V3 s
-  , bfNormal :: V3 s
-  , bfU :: V3 s -- ^ the axis
-  , bfW :: V3 s -- ^ normal × axis
-  , bfAngle :: s
-  , bfSize :: s
-  , bfInvMass :: s
-  , bfInvInertia :: s
+  { bfCentre :: !(V3 s)
+  , bfNormal :: !(V3 s)
+  , bfU :: !(V3 s) -- ^ the axis
+  , bfW :: !(V3 s) -- ^ normal × axis
+  , bfAngle :: !s
+  , bfSize :: !s
+  , bfInvMass :: !s
+  , bfInvInertia :: !s
   }
 
 bodyFrame :: Imp m => WorldArrays (Array m) -> Index m -> m (BodyFrame (Scalar m))
+{-# INLINE bodyFrame #-}
 bodyFrame w i = do
   c <- read3 (wPos w) i
   n <- read3 (wNormal w) i
@@ -248,13 +263,16 @@ bodyFrame w i = do
 -- | 1 where every value is finite, otherwise a non-positive number or NaN:
 -- @x − x@ is 0 exactly when @x@ is finite.
 finiteness :: Field a => [a] -> a
+{-# INLINE finiteness #-}
 finiteness xs = 1 - abs (sum [x - x | x <- xs])
 
 -- | The value where it is finite, 0 where it is not.
 finiteOr0 :: Field a => a -> a
+{-# INLINE finiteOr0 #-}
 finiteOr0 x = select (finiteness [x]) x 0
 
 countWarning :: Imp m => WorldArrays (Array m) -> m ()
+{-# INLINE countWarning #-}
 countWarning w = readMeta w Warnings >>= writeMeta w Warnings . (+ 1)
 
 -- | Gravity, projected to the tangent plane, for every movable body.

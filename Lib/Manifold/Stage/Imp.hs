@@ -31,7 +31,6 @@ module Manifold.Stage.Imp
   ) where
 
 import Control.Monad.State.Strict
-import Data.IORef
 import qualified Data.IntMap.Strict as IM
 import Data.List (intercalate)
 import qualified Data.Vector.Unboxed.Mutable as MV
@@ -64,12 +63,15 @@ class (Monad m, Field (Scalar m), Num (Index m)) => Imp m where
   toIndex :: Scalar m -> Index m
 
 whenPositive :: Imp m => Scalar m -> m () -> m ()
+{-# INLINE whenPositive #-}
 whenPositive c t = ifPositive c t (pure ())
 
 forEach :: Imp m => Index m -> (Index m -> m ()) -> m ()
+{-# INLINE forEach #-}
 forEach = forLoop 0
 
 modifyRef :: Imp m => Ref m -> (Scalar m -> Scalar m) -> m ()
+{-# INLINE modifyRef #-}
 modifyRef r f = readRef r >>= writeRef r . f
 
 -- Native -------------------------------------------------------------------
