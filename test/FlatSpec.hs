@@ -12,6 +12,7 @@ import Linear.V3 (V3 (..))
 import Test.Hspec
 
 import Manifold
+import Manifold.Chart
 import Manifold.Engine
 import PhysicsUtil
 
@@ -39,6 +40,21 @@ seamScene =
 
 spec :: Spec
 spec = do
+  describe "Flat chart (the torus's angle coordinates)" $
+    it "maps the square onto the embedded torus and back (1e-12), and carries velocities by its derivative (finite differences, 1e-7)" $ do
+      let pts = [V3 x 0 z | x <- [-0.95, -0.5 .. 0.95], z <- [-0.95, -0.4 .. 0.95]]
+          roundTrip = maximum [norm (torusToSquare (squareToTorus p) - p) | p <- pts]
+          onSurface = maximum [abs (evalField torus (squareToTorus p)) | p <- pts]
+          v = V3 0.3 0 (-0.7)
+          h = 1e-6
+          fd p = fmap (/ (2 * h)) (squareToTorus (p + fmap (* h) v) - squareToTorus (p - fmap (* h) v))
+          velocityErr = maximum [norm (fd p - squareVelocityOnTorus p v) | p <- pts]
+      labelled "chart: max round-trip error, max |f| of the mapped points, max velocity error vs finite differences"
+        (fmt roundTrip ++ ", " ++ fmt onSurface ++ ", " ++ fmt velocityErr)
+      roundTrip `shouldSatisfy` (< 1e-12)
+      onSurface `shouldSatisfy` (< 1e-12)
+      velocityErr `shouldSatisfy` (< 1e-7)
+
   describe "Flat free motion" $ do
     it "moves a free body on the flat torus in a straight line at exactly constant speed, back at its start after whole periods (1e-9)" $ do
       let p0 = V3 0.3 0 (-0.2)
