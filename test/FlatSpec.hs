@@ -55,6 +55,32 @@ spec = do
       onSurface `shouldSatisfy` (< 1e-12)
       velocityErr `shouldSatisfy` (< 1e-7)
 
+  describe "Flat side by side (the comparison scene's first two launches, alone, 12 s)" $
+    it "on the flat torus both launches go straight; on the embedded torus the outer-equator one weaves about its equator and the inner-equator one leaves its equator" $ do
+      let run sp (p, v, size) = do
+            w <- mkWorld sp noGravity' [dyn circle size p v 0 0]
+            forM [1 .. 1200 :: Int] $ \_ -> stepNative w >> (bsPos <$> readBody w 0)
+          zOf (V3 _ _ z) = z
+          chartZ = zOf . torusToSquare
+          -- distance in the square's z from the equator a launch started on
+          fromEquator z0 z = abs (z - z0 - 2 * fromIntegral (round ((z - z0) / 2) :: Int))
+          [outer, inner] = take 2 comparisonLaunches
+      flatOuter <- map zOf <$> run flatTorus (launchOnSquare outer)
+      flatInner <- map zOf <$> run flatTorus (launchOnSquare inner)
+      embOuter <- map chartZ <$> run torus (launchOnTorus outer)
+      embInner <- map chartZ <$> run torus (launchOnTorus inner)
+      let maxFrom z0 = maximum . map (fromEquator z0)
+          V3 _ _ vz = launchVelocity outer
+      labelled "after 12 s: max |z - z0| in the square, flat outer / embedded outer / flat inner / embedded inner (flat: vz t = 0.24)"
+        (unwords (map fmt [maxFrom 0 flatOuter, maxFrom 0 embOuter, maxFrom (-1) flatInner, maxFrom (-1) embInner]))
+      -- flat: straight lines, z = z0 + vz t
+      abs (maxFrom 0 flatOuter - 12 * vz) `shouldSatisfy` (< 1e-9)
+      abs (maxFrom (-1) flatInner - 12 * vz) `shouldSatisfy` (< 1e-9)
+      -- embedded: positive curvature outside keeps the launch near its equator,
+      -- negative curvature inside drives it away
+      maxFrom 0 embOuter `shouldSatisfy` (< 0.5 * 12 * vz)
+      maxFrom (-1) embInner `shouldSatisfy` (> 2 * 12 * vz)
+
   describe "Flat free motion" $ do
     it "moves a free body on the flat torus in a straight line at exactly constant speed, back at its start after whole periods (1e-9)" $ do
       let p0 = V3 0.3 0 (-0.2)

@@ -78,14 +78,15 @@ embeddedSizeScale = 2
 
 -- | The side-by-side scene (no gravity): a square launched along the outer
 -- equator with a small tilt, a circle the same way along the inner equator,
--- a pentagon round the tube, and two circles that meet head on.
+-- a pentagon round the tube, and two circles on top of the tube that meet
+-- head on (all but the second in view of the torus's default camera).
 comparisonLaunches :: [Launch]
 comparisonLaunches =
   [ Launch SquareShape 0.1 (V3 (-0.6) 0 0) (V3 0.12 0 0.02) 0
   , Launch CircleShape 0.1 (V3 (-0.6) 0 (-1)) (V3 0.12 0 0.02) 0
-  , Launch (PolygonShape 5) 0.1 (V3 0.5 0 0.5) (V3 0 0 0.1) 0.5
-  , Launch CircleShape 0.1 (V3 (-0.3) 0 (-0.5)) (V3 0.1 0 0) 0
-  , Launch CircleShape 0.1 (V3 0.3 0 (-0.5)) (V3 (-0.1) 0 0) 0
+  , Launch (PolygonShape 5) 0.1 (V3 0.5 0 (-0.25)) (V3 0 0 0.1) 0.5
+  , Launch CircleShape 0.1 (V3 (-0.55) 0 0.4) (V3 0.1 0 0) 0
+  , Launch CircleShape 0.1 (V3 (-0.05) 0 0.4) (V3 (-0.1) 0 0) 0
   ]
 
 -- | A launch as a body on the embedded torus: position, velocity, size.

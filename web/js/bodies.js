@@ -6,7 +6,10 @@
 // in the fragment shader a fixed number of pixels wide. A fragment behind the
 // traced surface (further from the eye than the traced distance at its pixel
 // plus a small tolerance, the paper's trick) is discarded, so bodies on the far
-// side are hidden. On antipodal quotients every body is drawn twice (p and −p).
+// side are hidden. On quotient spaces every body is also drawn at each of the
+// space's images (space.images, generated: −p on antipodal quotients, the
+// neighbouring translates on the flat torus and Klein bottle, so bodies show
+// on both sides of a seam).
 (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
@@ -14,7 +17,8 @@
   const VERTEX = `#version 300 es
 precision highp float;
 uniform mat4 uViewProjection;
-uniform float uSign;
+uniform vec3 uImageScale;  // the image p -> scale * p + shift (the identity: 1, 0)
+uniform vec3 uImageShift;
 in vec3 aPosition;
 in vec3 aColour;
 in vec3 aMark;   // ring (0 at the centre … 1 on the outline), then the vertex's place in a unit disc (x along the axis)
@@ -22,7 +26,7 @@ out vec3 vWorld;
 out vec3 vColour;
 out vec3 vMark;
 void main() {
-  vec3 p = uSign * aPosition;
+  vec3 p = uImageScale * aPosition + uImageShift;
   vWorld = p;
   vColour = aColour;
   vMark = aMark;
@@ -229,9 +233,10 @@ void main() {
         gl.uniform1f(p.uniform("uTolerance"), 0.01);
         gl.uniform1f(p.uniform("uLineWidth"), 1.6 * Math.max(1, frame.scale));
         gl.bindVertexArray(this.vao);
-        const signs = world.antipodal ? [1, -1] : [1];
-        for (const s of signs) {
-          gl.uniform1f(p.uniform("uSign"), s);
+        const images = [[1, 1, 1, 0, 0, 0]].concat(world.images || []);
+        for (const g of images) {
+          gl.uniform3f(p.uniform("uImageScale"), g[0], g[1], g[2]);
+          gl.uniform3f(p.uniform("uImageShift"), g[3], g[4], g[5]);
           gl.drawElements(gl.TRIANGLES, this.indicesPerBody * n, gl.UNSIGNED_INT, 0);
         }
         gl.bindVertexArray(null);
