@@ -184,6 +184,21 @@ spec = do
       abs (px1 - px0) `shouldSatisfy` (< 1e-9 * abs px0)
       let V3 bvx _ _ = bsVel bEnd in bvx `shouldSatisfy` (> 0.05)
 
+    it "finds a body's contact with its own image when it is larger than half the period; the pushes cancel (the spin is the 24-gon's, as for two such circles on the plane)" $ do
+      -- a circle of radius 1.05 on the period-2 torus overlaps its translates by ±2
+      w <- mkWorld flatTorus noGravity' [dyn circle 1.05 (V3 0.2 0 (-0.1)) 0 0 0]
+      steps w 50
+      cs <- contacts w
+      [b] <- bodyStates w
+      labelled "own image: contacts (all with itself), speed after 50 steps, omega"
+        (show (length cs) ++ " " ++ show (all (\c -> cA c == 0 && cB c == 0) cs) ++ ", " ++ fmt (speed b) ++ ", " ++ fmt (bsOmega b))
+      length cs `shouldSatisfy` (> 0)
+      all (\c -> cA c == 0 && cB c == 0) cs `shouldBe` True
+      speed b `shouldSatisfy` (< 1e-9)
+      -- the inscribed 24-gons' contacts are not exactly radial: two separate
+      -- circles of this size 2 apart on the plane spin up to 0.023 in 50 steps
+      abs (bsOmega b) `shouldSatisfy` (< 0.05)
+
   describe "Flat native vs emitted JavaScript (seam-crossing scenes, 200 steps, 1e-9)" $ do
     forM_ [flatTorus, flatKlein] $ \sp ->
       it (spaceName sp) $ do
