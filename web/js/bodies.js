@@ -13,6 +13,9 @@
 (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
+  // how far beyond the flat spaces' square bodies are drawn (world units): 0, the
+  // fundamental square alone, where a body across an edge shows in two (or four) parts
+  const IMAGE_BAND = 0;
 
   const VERTEX = `#version 300 es
 precision highp float;
@@ -41,6 +44,7 @@ uniform highp sampler2D uNormal;
 uniform vec3 uEye;
 uniform float uTolerance;   // relative depth tolerance
 uniform float uLineWidth;   // outline width in pixels of this buffer
+uniform float uClip;        // > 0: nothing beyond |x| or |z| = uClip (the flat spaces' square)
 in vec3 vWorld;
 in vec3 vColour;
 in vec3 vMark;
@@ -60,6 +64,7 @@ void main() {
   float d = length(vWorld - uEye);
   // hidden behind the traced surface (background pixels hide nothing)
   if (P.w > 0.0 && d > P.w * (1.0 + uTolerance) + 1e-3) discard;
+  if (uClip > 0.0 && max(abs(vWorld.x), abs(vWorld.z)) > uClip) discard;
 
   vec3 view = normalize(uEye - vWorld);
   vec3 n = texelFetch(uNormal, ij, 0).xyz;
@@ -234,6 +239,11 @@ void main() {
         gl.uniform1f(p.uniform("uLineWidth"), 1.6 * Math.max(1, frame.scale));
         gl.bindVertexArray(this.vao);
         const images = [[1, 1, 1, 0, 0, 0]].concat(world.images || []);
+        // translation images (the flat spaces): only the fundamental square is drawn,
+        // so a body across an edge shows on both sides of it, and nothing is drawn twice
+        let half = 0;
+        for (const g of images) half = Math.max(half, Math.abs(g[3]) / 2, Math.abs(g[5]) / 2);
+        gl.uniform1f(p.uniform("uClip"), half > 0 ? half + IMAGE_BAND : 0);
         for (const g of images) {
           gl.uniform3f(p.uniform("uImageScale"), g[0], g[1], g[2]);
           gl.uniform3f(p.uniform("uImageShift"), g[3], g[4], g[5]);
