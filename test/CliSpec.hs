@@ -40,7 +40,7 @@ instance A.FromJSON GeodesicOut where
 expectedNames :: [String]
 expectedNames =
   [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
-  , "projective-plane", "klein-bottle", "moebius", "funnel" ]
+  , "projective-plane", "klein-bottle", "moebius", "funnel", "flat-torus", "flat-klein" ]
 
 toV3 :: [Double] -> Maybe (V3 Double)
 toV3 [x, y, z] = Just (V3 x y z)
@@ -78,10 +78,12 @@ spec = do
           map siName infos `shouldBe` expectedNames
           forM_ infos $ \i -> do
             siDescription i `shouldSatisfy` (not . null)
-            siQuotient i `shouldSatisfy` (`elem` ["none", "antipodal"])
+            siQuotient i `shouldSatisfy` (`elem` ["none", "antipodal", "translations", "glide"])
           -- Against what is known of the spaces (independently of the library).
           [siName i | i <- infos, siQuotient i == "antipodal"]
             `shouldBe` ["projective-plane", "klein-bottle", "moebius"]
+          [(siName i, siQuotient i) | i <- infos, siQuotient i `elem` ["translations", "glide"]]
+            `shouldBe` [("flat-torus", "translations"), ("flat-klein", "glide")]
           sort [siName i | i <- infos, siHasBoundary i]
             `shouldBe` sort ["hemisphere", "disc", "rectangle", "moebius", "funnel"]
     it "the library's catalogue has the same names" $

@@ -8,6 +8,7 @@ import qualified ADSpec
 import qualified BodySpec
 import qualified CliSpec
 import qualified EngineSpec
+import qualified FlatSpec
 import qualified ImpSpec
 import qualified PhysicsSpec
 import qualified ReadmeExampleSpec
@@ -26,4 +27,5 @@ main = do
     describe "Manifold.Stage" StageSpec.spec
     describe "Manifold.Stage.Imp" ImpSpec.spec
     describe "Physics" PhysicsSpec.spec
+    FlatSpec.spec
     ReadmeExampleSpec.spec

@@ -650,7 +650,7 @@ buildSpec = do
       forM_ (buildRuns bs) $ \(code, _, err) -> (code `shouldBe` ExitSuccess) >> (err `shouldBe` "")
       fa <- readDir (buildA bs)
       fb <- readDir (buildB bs)
-      M.keys fa `shouldBe` sort ("spaces.js" : map spaceScriptFile catalogue)
+      M.keys fa `shouldBe` sort ("spaces.js" : comparisonScriptFile : map spaceScriptFile catalogue)
       M.keys fb `shouldBe` M.keys fa -- no temporary files left behind either
       forM_ (M.toList fa) $ \(f, bytes) ->
         unless (M.lookup f fb == Just bytes) $ expectationFailure (f ++ ": the two builds differ")
@@ -658,6 +658,7 @@ buildSpec = do
       -- bytes are the same.
       scripts <- printedScripts
       let expected = ("spaces.js", spaceIndexScript catalogue)
+                     : (comparisonScriptFile, comparisonScript)
                      : [ (spaceScriptFile s, str) | (s, str) <- zip catalogue scripts ]
       forM_ expected $ \(f, str) -> do
         all (< '\x80') str `shouldBe` True

@@ -129,7 +129,7 @@ torusPoint phi psi =
 -- centre of the inner box of the rounded cube.
 surfaceSampler :: Space -> SurfaceSampler
 surfaceSampler s = case spaceName s of
-  n | n `elem` ["plane", "disc", "rectangle", "funnel"] ->
+  n | n `elem` ["plane", "disc", "rectangle", "funnel", "flat-torus", "flat-klein"] ->
         SurfaceSampler "y = 0, |x| <= 1.5, |z| <= 1.5"
           ((\x z -> V3 x 0 z) <$> choose (-1.5, 1.5) <*> choose (-1.5, 1.5))
   n | n `elem` ["sphere", "hemisphere", "projective-plane"] ->

@@ -31,6 +31,7 @@ instance Exception BuildError
 generatedFiles :: [Space] -> [GeneratedFile]
 generatedFiles spaces =
   GeneratedFile "spaces.js" (spaceIndexScript spaces)
+    : GeneratedFile comparisonScriptFile comparisonScript
     : [GeneratedFile (spaceScriptFile s) (spaceScript s) | s <- spaces]
 
 -- | Write all files into a directory. Every target is checked before any is

@@ -150,9 +150,13 @@ pointInBody l w j y q = do
 -- | A contact row pair into the contact array: body @a@ at point @ra@ is
 -- pushed along @dirA@, body @b@ (if @b >= 0@) at @rb@ against @dirB@.
 -- @coupling@ 0 keeps only body a's linear normal row (no friction, no turn).
+-- @carry@ takes a direction at body a to body b's side (the linear part of
+-- the image's isometry when b meets a's image; the identity otherwise), so
+-- that both friction rows act along the same direction.
 emitContact :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
-            -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> Scalar m -> m ()
-emitContact w owner key a b ra dirA rb dirB depth selfScale coupling = do
+            -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> Scalar m
+            -> (V3 (Scalar m) -> V3 (Scalar m)) -> m ()
+emitContact w owner key a b ra dirA rb dirB depth selfScale coupling carry = do
   count <- readMeta w ContactCount
   cap <- readMeta w Capacity -- the arrays' capacity is the caller's, not the layout's
   ifPositive (fromIntegral contactsPerBody * maxF 1 cap - count - 0.5)
@@ -174,7 +178,7 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale coupling = do
         writeContact3 w c PointX ra
         ifPositive (b + 0.5)
           (do fb <- bodyFrame w (toIndex b)
-              let tb = select (dirA `dot` dirB) 1 (-1) *^ ta
+              let tb = carry ta
                   rB = rb ^-^ bfCentre fb
               writeContact3 w c JbX (tangentProjection (bfNormal fb) dirB)
               writeContact w c JbW ((rB `cross` dirB) `dot` bfNormal fb)
@@ -191,12 +195,15 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale coupling = do
 whenNear :: Imp m => BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
 whenNear fy q = whenPositive (bfSize fy - norm (q ^-^ bfCentre fy))
 
--- | The outline vertices of body @x@, mapped by @sgn@ (−1: the antipodal
--- image), tested against body @y@; up to two contacts.
+-- | The outline vertices of body @x@, mapped by the isometry @g@ (the
+-- identity, or the image of @x@ that @y@ meets), tested against body @y@; up
+-- to two contacts. The contact direction found at @y@ is carried back to
+-- @x@ by the inverse of g's linear part (which is its own inverse).
 vertexContacts :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
-               -> Index m -> Index m -> Scalar m -> Scalar m -> m ()
-vertexContacts l w owner keyBase x y sgn selfScale = do
+               -> Index m -> Index m -> Isometry -> Scalar m -> m ()
+vertexContacts l w owner keyBase x y g selfScale = do
   let nd = fromIntegral (polyDirections (polygon l))
+      image = applyIso g
   fy <- bodyFrame w y
   deepest <- newRef 0
   mx <- newRef 0
@@ -204,8 +211,8 @@ vertexContacts l w owner keyBase x y sgn selfScale = do
   mz <- newRef 0
   forEach nd $ \d -> do
     q <- outlineVertex l w x d
-    whenNear fy (sgn *^ q) $ do
-      (depth, m) <- pointInBody l w y fy (sgn *^ q)
+    whenNear fy (image q) $ do
+      (depth, m) <- pointInBody l w y fy (image q)
       best <- readRef deepest
       whenPositive (depth - best) $ do
         writeRef deepest depth
@@ -217,13 +224,13 @@ vertexContacts l w owner keyBase x y sgn selfScale = do
     (dLo, dHi) <- extremesAlong nd $ \d -> do
       q <- outlineVertex l w x d
       depth <- newRef (-1)
-      whenNear fy (sgn *^ q) (pointInBody l w y fy (sgn *^ q) >>= writeRef depth . fst)
-      (, ((sgn *^ q) ^-^ bfCentre fy) `dot` t) <$> readRef depth
+      whenNear fy (image q) (pointInBody l w y fy (image q) >>= writeRef depth . fst)
+      (, ((image q) ^-^ bfCentre fy) `dot` t) <$> readRef depth
     let emitAt slot dv = do
           q <- outlineVertex l w x (toIndex dv)
-          query <- share3 (sgn *^ q)
+          query <- share3 (image q)
           (depth, m) <- pointInBody l w y fy query
-          emitContact w owner (keyBase + slot) x (toScalar y) q (sgn *^ m) query m depth selfScale 1
+          emitContact w owner (keyBase + slot) x (toScalar y) q (applyLinear g m) query m depth selfScale 1 (applyLinear g)
     emitAt 0 dLo
     whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
@@ -278,7 +285,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
             bv <- share (b q)
             let dir = safeNormalize g
                 depth = select gl (negate bv / maxF gl 1e-300) 0
-            emitContact w i (key + slot) i (-1) q dir q dir depth 1 1
+            emitContact w i (key + slot) i (-1) q dir q dir depth 1 1 id
       emitAt 0 dLo
       whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
@@ -374,7 +381,7 @@ selfContacts sp l w i = do
       m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
       n <- share3 (unitNormalAt point)
       dir <- share3 (safeNormalize (tangentProjection n m0))
-      emitContact w i selfKey i (-1) point dir point dir best 0.6 0
+      emitContact w i selfKey i (-1) point dir point dir best 0.6 0 id
   where
     unitNormalAt = safeNormalize . gradFn (spaceField sp)
     selfKey = 12
@@ -387,25 +394,32 @@ collide sp l w = do
   writeMeta w ContactCount 0
   buildGrid sp w
   count <- readMeta w BodyCount
-  let antipodal = spaceQuotient sp == Antipodal
+  let images = quotientImages (spaceQuotient sp)
+      -- on a lattice, only images that come within reach of the square
+      nearDomain = case spaceQuotient sp of
+        Lattice period _ -> \q reach -> whenPositive (reach - distanceToDomain period q)
+        _ -> \_ _ act -> act
   forEach (toIndex count) $ \i -> do
     p <- read3 (wPos w) i
     ri <- readSlot w i BoundRadius
     invMi <- readSlot w i InvMass
-    let pairs sgn imageSlots = neighbours w (sgn *^ p) $ \j -> do
-          -- each unordered pair once: j > i (j >= i for images, which
-          -- includes the body's own image)
-          let order = toScalar j - toScalar i + (if imageSlots then 0.5 else 0)
-          whenPositive order $ do
-            pj <- read3 (wPos w) j
-            rj <- readSlot w j BoundRadius
-            invMj <- readSlot w j InvMass
-            let gap = ri + rj - norm ((sgn *^ p) ^-^ pj)
-            whenPositive (minF gap (invMi + invMj)) $ do
-              let base = (toScalar j + 1) * 16 + (if imageSlots then 4 else 0)
-              vertexContacts l w i base i j sgn 1
-              vertexContacts l w i (base + 2) j i sgn 1
-    pairs 1 False
-    if antipodal then pairs (-1) True else pure ()
+    cell <- readMeta w CellSize -- at least twice the largest bounding radius
+    let pairs g keyOffset self = do
+          gp <- share3 (applyIso g p)
+          nearDomain gp (ri + cell) $ neighbours w gp $ \j -> do
+            -- each unordered pair once: j > i (j >= i for an image the body
+            -- may meet itself through: its own image)
+            let order = toScalar j - toScalar i + (if self then 0.5 else 0)
+            whenPositive order $ do
+              pj <- read3 (wPos w) j
+              rj <- readSlot w j BoundRadius
+              invMj <- readSlot w j InvMass
+              let gap = ri + rj - norm (gp ^-^ pj)
+              whenPositive (minF gap (invMi + invMj)) $ do
+                let base = (toScalar j + 1) * 64 + keyOffset
+                vertexContacts l w i base i j g 1
+                vertexContacts l w i (base + 2) j i (inverseIso g) 1
+    pairs identityIso 0 False
+    mapM_ (\(k, g) -> pairs g (16 + 4 * fromIntegral k) (selfImage g)) (zip [0 :: Int ..] images)
     boundaryContacts sp l w i
     selfContacts sp l w i

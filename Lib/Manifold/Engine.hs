@@ -139,7 +139,7 @@ pickAt w q = do
 -- | Hold a body at a surface point with a mouse joint of the given
 -- frequency (Hz), damping ratio and force limit.
 grabAt :: NativeWorld -> Int -> Double -> V3 Double -> Double -> Double -> Double -> IO ()
-grabAt w i sgn q hz zeta fmax = runNative (grab (nwArrays w) i sgn q hz zeta fmax)
+grabAt w i sgn q hz zeta fmax = runNative (grab (nwSpace w) (nwArrays w) i sgn q hz zeta fmax)
 
 dragAt :: NativeWorld -> V3 Double -> IO ()
 dragAt w q = runNative (dragTo (nwArrays w) q)
@@ -206,7 +206,7 @@ engineProcedures sp l =
   , stageProcedure (JsProcedure "pickBody" worldParams ["qx", "qy", "qz"])
       (\_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
   , stageProcedure (JsProcedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"])
-      (\_ [i, sgn, x, y, z, hz, zeta, fmax] -> grab stagedArrays (toIndex i) sgn (V3 x y z) hz zeta fmax)
+      (\_ [i, sgn, x, y, z, hz, zeta, fmax] -> grab sp stagedArrays (toIndex i) sgn (V3 x y z) hz zeta fmax)
   , stageProcedure (JsProcedure "drag" worldParams ["qx", "qy", "qz"])
       (\_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
   , stageProcedure (JsProcedure "release" worldParams []) (\_ _ -> release stagedArrays)

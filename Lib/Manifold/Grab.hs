@@ -34,7 +34,8 @@ pickBody sp l w q = do
   forEach (toIndex count) $ \i -> do
     f <- bodyFrame w i
     mapM_ (\sgn -> do
-      let q' = sgn *^ q
+      -- on a lattice, the image of the point nearest the body
+      q' <- share3 (nearestImage (spaceQuotient sp) (bfCentre f) (sgn *^ q))
       whenPositive (bfSize f - norm (q' ^-^ bfCentre f)) $ do
         (depth, _) <- pointInBody l w i f q'
         -- the centre itself counts as inside (its depth is its distance to
@@ -47,12 +48,13 @@ pickBody sp l w q = do
 
 -- | Hold body @i@ at the surface point @q@ (on the side given by @sgn@): the
 -- point's polar coordinates in the body are kept, so the body is held where
--- it was grabbed, not at its centre.
-grab :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m)
+-- it was grabbed, not at its centre. On a lattice the target may be any
+-- image of the point: the solver pulls towards the one nearest the body.
+grab :: Imp m => Space -> WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m)
      -> Scalar m -> Scalar m -> Scalar m -> m ()
-grab w i sgn q frequency damping maxForce = do
+grab sp w i sgn q frequency damping maxForce = do
   f <- bodyFrame w i
-  let d = sgn *^ q ^-^ bfCentre f
+  let d = nearestImage (spaceQuotient sp) (bfCentre f) (sgn *^ q) ^-^ bfCentre f
       x = d `dot` bfU f
       y = d `dot` bfW f
   writeMouse w MActive 1

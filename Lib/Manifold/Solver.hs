@@ -114,7 +114,9 @@ mouseRows sp w warm = do
       dt <- readParam w Dt
       f <- bodyFrame w g
       grab <- grabPoint sp w g
-      target <- V3 <$> readMouse w MTargetX <*> readMouse w MTargetY <*> readMouse w MTargetZ
+      target0 <- V3 <$> readMouse w MTargetX <*> readMouse w MTargetY <*> readMouse w MTargetZ
+      -- on a lattice, towards the target's image nearest the grabbed point
+      target <- share3 (nearestImage (spaceQuotient sp) grab target0)
       hz <- readMouse w MFrequency
       zeta <- readMouse w MDamping
       maxForce <- readMouse w MMaxForce

@@ -9,6 +9,16 @@ module Manifold.Space
   , ShapeKind (..)
   , space
   , quotientName
+  , Isometry (..)
+  , identityIso
+  , applyIso
+  , applyLinear
+  , inverseIso
+  , quotientImages
+  , selfImage
+  , wrapLattice
+  , nearestImage
+  , distanceToDomain
   , hasBoundary
   , field
   , evalField
@@ -18,7 +28,9 @@ module Manifold.Space
   , noGravity
   ) where
 
+import Linear.Metric (quadrance)
 import Linear.V3 (V3 (..))
+import Linear.Vector ((^-^))
 
 import Manifold.Field
 
@@ -26,11 +38,95 @@ import Manifold.Field
 data Quotient
   = NoQuotient
   | Antipodal -- ^ @p ~ −p@: the space must be symmetric about the origin.
+  | Lattice
+      { latticePeriod :: Double
+      , latticeFlip :: Bool
+      }
+    -- ^ The plane @y = 0@ modulo translations by the period along x and
+    -- along z (the flat torus); with the flip, a translation along x also
+    -- mirrors z, @(x, z) ~ (x + L, −z)@ (the flat Klein bottle). The
+    -- fundamental domain is the square @[−L/2, L/2]²@; bodies are kept in it.
   deriving (Show, Eq)
 
 quotientName :: Quotient -> String
 quotientName NoQuotient = "none"
 quotientName Antipodal = "antipodal"
+quotientName (Lattice _ False) = "translations"
+quotientName (Lattice _ True) = "glide"
+
+-- | An isometry of R³ that is diagonal in the axes: @p ↦ signs·p + shift@
+-- (componentwise). Enough for every quotient here: @p ↦ −p@, translations,
+-- and translations composed with a mirror.
+data Isometry = Isometry
+  { isoSigns :: V3 Double
+  , isoShift :: V3 Double
+  } deriving (Show, Eq)
+
+identityIso :: Isometry
+identityIso = Isometry (V3 1 1 1) (V3 0 0 0)
+
+applyIso :: Field a => Isometry -> V3 a -> V3 a
+applyIso (Isometry s t) p = (fmap constant s * p) + fmap constant t
+
+-- | The isometry's linear part (how it maps directions).
+applyLinear :: Field a => Isometry -> V3 a -> V3 a
+applyLinear (Isometry s _) v = fmap constant s * v
+
+inverseIso :: Isometry -> Isometry
+inverseIso (Isometry s t) = Isometry s (negate (s * t))
+
+-- | The images a body meets: the non-trivial elements of the quotient's
+-- group that move the fundamental domain next to itself (for a lattice, the
+-- 8 neighbouring squares; bodies must be smaller than half the period).
+-- The list is closed under inverses.
+quotientImages :: Quotient -> [Isometry]
+quotientImages NoQuotient = []
+quotientImages Antipodal = [Isometry (V3 (-1) (-1) (-1)) (V3 0 0 0)]
+quotientImages (Lattice period flipped) =
+  [ Isometry (V3 1 1 (mirror i)) (V3 (period * fromIntegral i) 0 (period * fromIntegral k))
+  | i <- [-1, 0, 1 :: Int], k <- [-1, 0, 1 :: Int], (i, k) /= (0, 0) ]
+  where
+    mirror i = if flipped && odd i then -1 else 1
+
+-- | Whether a body meets its own image under this isometry in the contact
+-- search: of an isometry and its inverse (both in 'quotientImages'), one
+-- is chosen, so that the body's contact with its own image is found once.
+selfImage :: Isometry -> Bool
+selfImage g = let g' = inverseIso g in g == g' || toList (isoShift g) > toList (isoShift g')
+  where toList (V3 a b c) = [a, b, c]
+
+-- | A point of the plane moved into the fundamental square @[−L/2, L/2)²@ by
+-- the lattice's group, and the sign its z axis (and so orientation) took:
+-- −1 when the flip was used an odd number of times.
+wrapLattice :: Field a => Double -> Bool -> V3 a -> (V3 a, a)
+wrapLattice period flipped (V3 x y z) =
+  let l = constant period
+      kx = floorF ((x + 0.5 * l) / l)
+      kz = floorF ((z + 0.5 * l) / l)
+      parity = kx - 2 * floorF (0.5 * kx)
+      s = if flipped then 1 - 2 * parity else 1
+  in (V3 (x - kx * l) y (s * (z - kz * l)), s)
+
+-- | How far a point of the plane is outside the fundamental square (0 inside).
+distanceToDomain :: Field a => Double -> V3 a -> a
+distanceToDomain period (V3 x _ z) =
+  let h = constant (0.5 * period)
+      dx = maxF 0 (abs x - h)
+      dz = maxF 0 (abs z - h)
+  in sqrt (dx * dx + dz * dz)
+
+-- | Of the images of point @q@ (itself included), the one nearest @ref@;
+-- with no quotient (or the antipodal one, whose images are far apart), @q@.
+nearestImage :: Field a => Quotient -> V3 a -> V3 a -> V3 a
+nearestImage (Lattice period flipped) ref q =
+  let (q0, _) = wrapLattice period flipped q
+      candidates = q0 : [applyIso g q0 | g <- quotientImages (Lattice period flipped)]
+      pick (best, bd) c =
+        let d = quadrance (c ^-^ ref)
+            closer = bd - d -- positive: c is nearer than the best so far
+        in (select closer <$> c <*> best, minF d bd)
+  in fst (foldl pick (q0, quadrance (q0 ^-^ ref)) (drop 1 candidates))
+nearestImage _ _ q = q
 
 -- | A pinhole camera looking at @cameraTarget@ from @cameraEye@.
 data Camera = Camera

@@ -6,6 +6,7 @@ module Manifold.Spaces
   , spaceNames
   , plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
   , projectivePlane, kleinBottle, moebius, funnel
+  , flatTorus, flatKlein, flatPeriod
   , torusMajor, torusMinor
   ) where
 
@@ -21,7 +22,7 @@ import Manifold.Space
 catalogue :: [Space]
 catalogue =
   [ plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
-  , projectivePlane, kleinBottle, moebius, funnel ]
+  , projectivePlane, kleinBottle, moebius, funnel, flatTorus, flatKlein ]
 
 spaceNames :: [String]
 spaceNames = map spaceName catalogue
@@ -169,4 +170,29 @@ funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.6 (-1.2))
   , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 False | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]
+  }
+
+-- | The period of the flat spaces: the fundamental square is [−1, 1]² in x
+-- and z (paper §4.4).
+flatPeriod :: Double
+flatPeriod = 2
+
+-- | A camera above the square, looking down at it.
+overSquare :: Camera
+overSquare = Camera (V3 0 3.4 (-1.4)) (V3 0 0 0) (V3 0 1 0) 45
+
+flatTorus :: Space
+flatTorus = (space "flat-torus" "the flat torus: the square [-1,1]^2 of the plane y = 0 with opposite edges glued (period 2 in x and z); curvature 0 everywhere, no gravity" (scalarFn planeField))
+  { spaceQuotient = Lattice flatPeriod False
+  , spaceCamera = overSquare
+  , spaceScene = grid [-0.5, 0.5] [-0.5, 0.5] SquareShape 0.18
+  , spaceBounds = 2
+  }
+
+flatKlein :: Space
+flatKlein = (space "flat-klein" "the flat Klein bottle: the square [-1,1]^2 of the plane y = 0, z edges glued straight, x edges glued with a flip (x, z) ~ (x + 2, -z); no gravity" (scalarFn planeField))
+  { spaceQuotient = Lattice flatPeriod True
+  , spaceCamera = overSquare
+  , spaceScene = grid [-0.5, 0.5] [-0.5, 0.5] SquareShape 0.18
+  , spaceBounds = 2
   }

@@ -318,7 +318,27 @@ integrate sp w = do
     let angle' = angle + dt * omega
         ok = finiteness (concatMap toList3 [p', v', axis', n'] ++ [angle'])
     ifPositive ok
-      (do write3 (wPos w) i p'
+      (case spaceQuotient sp of
+        Lattice period flipped -> do
+          -- back into the fundamental square; through a flipping edge the
+          -- body comes out mirrored (z of every vector, and its angle and
+          -- angular velocity, change sign: orientation reverses)
+          let (p'', s) = wrapLattice period flipped p'
+              mirror (V3 x y z) = V3 x y (s * z)
+          sS <- share s
+          write3 (wPos w) i p''
+          write3 (wVel w) i (mirror v')
+          write3 (wAxis w) i (mirror axis')
+          write3 (wNormal w) i (mirror n')
+          writeSlot w i Angle (sS * angle')
+          writeSlot w i Omega (sS * omega)
+          -- a held body keeps the grabbed point's polar angle, mirrored too
+          active <- readMouse w MActive
+          held <- readMouse w MBody
+          whenPositive (active * (0.5 - abs (held - toScalar i))) $
+            readMouse w MLocalTheta >>= writeMouse w MLocalTheta . (sS *)
+        _ -> do
+          write3 (wPos w) i p'
           write3 (wVel w) i v'
           write3 (wAxis w) i axis'
           write3 (wNormal w) i n'

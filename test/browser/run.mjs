@@ -11,6 +11,7 @@ import {
   WEB, OUT, launchBrowser, serve, canvasShot, createChecks,
 } from "./lib.mjs";
 import { checkVisibleBodies, testBodies } from "./bodies.mjs";
+import { testCompare } from "./compare.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
 const PICKS = 20;           // surface pixels picked per space
@@ -19,7 +20,7 @@ const PIXEL_TOL = 1.5;      // project(pick(x, y)) vs the pixel's centre
 const BG_TOL = 4;           // per channel, background pixel vs the expected gradient
 
 // For working on one thing: --spaces a,b runs only those spaces' tests, --parts
-// p,q only those other parts (interaction, bodies, errors, file, hidpi); either alone skips the rest.
+// p,q only those other parts (interaction, bodies, errors, file, hidpi, compare); either alone skips the rest.
 function listArg(name) {
   const i = process.argv.indexOf(name);
   return i >= 0 ? (process.argv[i + 1] || "").split(",").filter(Boolean) : null;
@@ -543,8 +544,8 @@ async function main() {
       const n = await page.evaluate(function () { return window.manifold.spaces(); });
       const idx = await page.evaluate(function () { return window.Manifold.spaceIndex.map(function (s) { return s.name; }); });
       const opts = await page.evaluate(function () { return Array.from(document.querySelectorAll("#space option")).map(function (o) { return o.value; }); });
-      check("spaces() and the selector list every space of Manifold.spaceIndex",
-        n.length > 0 && JSON.stringify(n) === JSON.stringify(idx) && JSON.stringify(opts) === JSON.stringify(idx), n.join(" "));
+      check("spaces() and the selector list every space of Manifold.spaceIndex (the selector then the comparison view)",
+        n.length > 0 && JSON.stringify(n) === JSON.stringify(idx) && JSON.stringify(opts) === JSON.stringify(idx.concat(["compare-torus"])), n.join(" "));
       await page.close();
       return n;
     })();
@@ -559,6 +560,7 @@ async function main() {
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);
+    if (partWanted("compare")) await testCompare(check, browser, server.url);
     await context.close();
   } catch (e) {
     check("browser tests ran to the end", false, e && e.stack || String(e));

@@ -1,5 +1,7 @@
 // Saves the README's picture of the page: docs/screenshot.png (bodies on the torus).
 //   node test/browser/screenshot.mjs [space] [out.png] [added bodies]   (default: torus docs/screenshot.png 14)
+// The comparison view's picture (docs/torus-comparison.png: curvature on, 12 s of motion):
+//   node test/browser/screenshot.mjs compare-torus docs/torus-comparison.png
 import fs from "node:fs";
 import path from "node:path";
 import { ROOT, launchBrowser, serve } from "./lib.mjs";
@@ -10,20 +12,33 @@ const extra = Number(process.argv[4] || 14);
 const server = await serve();
 const browser = await launchBrowser();
 try {
-  const page = await browser.newPage({ viewport: { width: 960, height: 640 }, deviceScaleFactor: 1 });
+  const viewport = space === "compare-torus" ? { width: 1200, height: 960 } : { width: 960, height: 640 };
+  const page = await browser.newPage({ viewport: viewport, deviceScaleFactor: 1 });
   await page.goto(server.url + "#space=" + space);
   await page.waitForFunction(function () { return !!window.manifold; });
   await page.evaluate(function () { return window.manifold.ready(); });
   // the default scene and more bodies added with the page's buttons (at free
   // points of the view), without gravity (which soon gathers the torus's bodies
   // on the side this camera does not see)
-  await page.evaluate(function () {
-    const m = window.manifold;
-    m.resetScene();
-    m.setSimulation({ gravity: false });
-  });
-  const buttons = ["#add-circle", "#add-square", "#add-polygon"];
-  for (let k = 0; k < extra; k++) await page.click(buttons[k % 3]);
+  if (space === "compare-torus") {
+    // both simulations from the shared scene, 12 s on, the curvature coloured
+    await page.evaluate(function () {
+      const m = window.manifold;
+      m.resetScene();
+      m.pause();
+      m.setOptions({ curvature: true });
+      m.step(1200);
+      m.render();
+    });
+  } else {
+    await page.evaluate(function () {
+      const m = window.manifold;
+      m.resetScene();
+      m.setSimulation({ gravity: false });
+    });
+    const buttons = ["#add-circle", "#add-square", "#add-polygon"];
+    for (let k = 0; k < extra; k++) await page.click(buttons[k % 3]);
+  }
   await page.waitForTimeout(1500); // let the stats line settle
   fs.mkdirSync(path.dirname(out), { recursive: true });
   await page.screenshot({ path: out });

@@ -53,7 +53,11 @@
     drawnWorldVersion: -1,  // world.version of the last frame drawn
     drawnWorld: null,
     grabPointer: null,      // the pointer holding a body, or null
+    compare: null,          // the comparison view (web/js/compare.js) when it is shown, or null
   };
+
+  // The comparison view's name in the space list and the URL (#space=compare-torus).
+  const COMPARE = "compare-torus";
 
   // ---- bodies ------------------------------------------------------------------------
   // The world (web/js/world.js) runs the engine generated into each space script
@@ -209,6 +213,7 @@
     if (w && !state.error) {
       const n = state.clock.due(now, w.param("dt"), w.stepMs);
       if (n > 0 && w.count() > 0) w.step(n);
+      if (n > 0 && state.compare && state.compare.flat.count() > 0) state.compare.flat.step(n);
     }
     if (!state.error) {
       const moving = now < state.interactUntil;
@@ -216,6 +221,7 @@
       if (surfaceStale()) renderNow(moving && slow);
       else if (state.preview && !moving) renderNow(false); // the sharp frame once the view stops
       else if (bodiesChanged()) renderNow(state.preview);
+      if (state.compare) state.compare.render(false);
     }
     showStats(now);
   }
@@ -453,9 +459,9 @@
 
   // The hash says how many bodies there are when that is not the default scene's count.
   function updateHash() {
-    const params = { space: state.spaceName };
+    const params = { space: currentName() };
     const w = state.world;
-    if (w && w.count() !== defaultBodyCount()) params.bodies = w.count();
+    if (w && !state.compare && w.count() !== defaultBodyCount()) params.bodies = w.count();
     if (state.options.curvature) params.curvature = 1;
     if (!state.options.grid) params.grid = 0;
     if (state.options.antialias !== DEFAULT_OPTIONS.antialias) params.aa = state.options.antialias;
@@ -544,9 +550,90 @@
     return name;
   }
 
+  // ---- the comparison view "Torus: embedded vs flat" (web/js/compare.js) ----
+  function currentName() { return state.compare ? COMPARE : state.spaceName; }
+
+  function comparisonPanes(show) {
+    ["view-flat", "square-embedded", "square-flat", "compare-captions"].forEach(function (id) {
+      document.getElementById(id).hidden = !show;
+    });
+    document.getElementById("stage").classList.toggle("compare", show);
+  }
+
+  function leaveComparison() {
+    if (!state.compare) return;
+    state.compare.dispose();
+    state.compare = null;
+    comparisonPanes(false);
+  }
+
+  // The line under the panes: the curvature of each, from the generated curvature functions.
+  function comparisonNote(def) {
+    const K = Manifold.spaces[def.embedded].curvature, K0 = Manifold.spaces[def.flat].curvature;
+    const at = function (z) { const p = def.fromSquare(0, 0, z); return K(p[0], p[1], p[2]); };
+    const f = function (x) { return (x >= 0 ? "+" : "\u2212") + Math.abs(x).toFixed(2); };
+    return "Curvature: the embedded torus has K = " + f(at(0)) + " on its outer equator and " + f(at(def.half)) +
+      " on its inner one (Curvature colours it); the flat torus has K = " + f(K0(0, 0, 0)).replace("+", "") +
+      " everywhere. One scene in the torus's angles on both: the difference in motion is the difference in metric.";
+  }
+
+  async function applyComparison() {
+    if (!state.tracer) throw new Error(state.error ? state.error.text() : "the page has no WebGL2 renderer");
+    try {
+      await loadScript("gen/compare-torus.js");
+    } catch (err) {
+      throw fail("The comparison could not be loaded", err);
+    }
+    const def = Manifold.comparisons && Manifold.comparisons.torus;
+    if (!def || !entryOf(def.embedded) || !entryOf(def.flat)) {
+      throw fail("The comparison could not be loaded", new PageError("load",
+        "gen/compare-torus.js did not register the comparison, or its spaces are missing; rebuild web/gen with `manifold build`."));
+    }
+    try {
+      await loadScript("gen/" + entryOf(def.flat).script);
+    } catch (err) {
+      throw fail("The comparison could not be loaded", err);
+    }
+    const names = state.index.map(function (e) { return e.name; });
+    await applySpace(def.embedded, { scene: MW.world.parseScene(def.scenes.embedded, names) });
+    const flat = new MW.world.World(def.flat, Manifold.spaces[def.flat]);
+    flat.load(MW.world.parseScene(def.scenes.flat, names));
+    comparisonPanes(true);
+    try {
+      state.compare = new MW.compare.Comparison(def, state.world, flat, state.camera, {
+        mainCanvas: state.ui.canvas,
+        flatCanvas: document.getElementById("view-flat"),
+        squareEmbedded: document.getElementById("square-embedded"),
+        squareFlat: document.getElementById("square-flat"),
+      }, {
+        options: function () {
+          return Object.assign({}, state.options, { curvatureScale: CURVATURE_SCALE, gridSpacing: GRID_SPACING, background: BACKGROUND });
+        },
+        bounds: function () { return state.space ? state.space.bounds : 1; },
+        curvatureOf: function (p) { return Manifold.spaces[def.embedded].curvature(p[0], p[1], p[2]); },
+        grab: GRAB,
+        interacted: interacted,
+      });
+    } catch (err) {
+      comparisonPanes(false);
+      throw fail("The comparison cannot be drawn", err);
+    }
+    document.getElementById("compare-note").textContent = comparisonNote(def);
+    state.ui.setSpace({ name: COMPARE, description: def.title + ": " + def.embedded + " and " + def.flat + " side by side (paper Fig. 17)" });
+    state.clock.reset();
+    updateHash();
+    state.dirty = true;
+    renderNow();
+    state.compare.render(true);
+    return COMPARE;
+  }
+
   // Space switches run one after another; each call's promise settles with its own outcome.
   function setSpace(name, how) {
-    const job = state.queue.then(function () { return applySpace(name, how); });
+    const job = state.queue.then(function () {
+      leaveComparison();
+      return name === COMPARE ? applyComparison() : applySpace(name, how);
+    });
     state.queue = job.catch(function () {});
     state.current = job;
     return job;
@@ -578,6 +665,7 @@
 
   // The space a hash asks for, or the first one (with a notice for an unknown name).
   function spaceFromHash(params) {
+    if (params.space === COMPARE) return COMPARE;
     if (params.space && entryOf(params.space)) return params.space;
     if (params.space) {
       state.ui.showNotice("There is no space " + JSON.stringify(params.space) + "; showing " +
@@ -603,10 +691,10 @@
     setOptions(optionsFromHash(params));
     const name = spaceFromHash(params);
     const bodies = bodiesFromHash(params);
-    if (name !== state.spaceName || broken !== state.debugBrokenShader) {
+    if (name !== currentName() || broken !== state.debugBrokenShader) {
       state.debugBrokenShader = broken;
       setSpace(name, { bodies: bodies }).catch(function () {});
-    } else if (state.world && (bodies === null ? defaultBodyCount() : bodies) !== state.world.count()) {
+    } else if (state.world && !state.compare && (bodies === null ? defaultBodyCount() : bodies) !== state.world.count()) {
       try {
         releaseGrab();
         state.world.loadDefault(bodies === null ? undefined : bodies);
@@ -729,6 +817,16 @@
     }
     const w = requireWorld();
     releaseGrab();
+    if (state.compare) {
+      // the comparison's own scene on both
+      const def = state.compare.def, names = state.index.map(function (e) { return e.name; });
+      if (state.compare.held) state.compare.held.world.release();
+      w.load(MW.world.parseScene(def.scenes.embedded, names));
+      state.compare.flat.load(MW.world.parseScene(def.scenes.flat, names));
+      state.clock.reset();
+      state.ui.setSimulation(simulationSettings());
+      return w.count();
+    }
     w.loadDefault(n === null ? undefined : n);
     state.clock.reset();
     state.ui.setSimulation(simulationSettings());
@@ -738,12 +836,18 @@
 
   function clearBodies() {
     requireWorld().clear();
+    if (state.compare) state.compare.flat.clear();
     bodiesChangedCount();
   }
 
   // Loads a scene (JSON text or value); a scene of another space switches to it.
   // Resolves with the number of bodies; rejects (and shows why on the page) on bad input.
   function loadScene(json) {
+    if (state.compare) {
+      // a scene is one space's: show that space alone
+      const parsed = (function () { try { return MW.world.parseScene(json, state.index.map(function (e) { return e.name; })); } catch (err) { return null; } })();
+      if (parsed) return setSpace(parsed.space, { scene: parsed }).then(function () { return state.world ? state.world.count() : 0; });
+    }
     let scene;
     try {
       scene = MW.world.parseScene(json, state.index.map(function (e) { return e.name; }));
@@ -823,8 +927,8 @@
     return {
       // names of every space, in catalogue order
       spaces: function () { return state.index.map(function (s) { return s.name; }); },
-      // the current space's name
-      space: function () { return state.spaceName; },
+      // the current space's name ("compare-torus" in the comparison view)
+      space: currentName,
       // switch space; resolves with its name when its shader is compiled and drawn,
       // rejects with an Error whose message is the error text
       setSpace: setSpace,
@@ -878,10 +982,34 @@
         if (!Number.isInteger(n) || n < 0 || n > 1e6) throw new RangeError("step(n) expects a whole number of steps from 0 to 1000000");
         const w = requireWorld();
         w.step(n);
+        if (state.compare) state.compare.flat.step(n);
         return w.count();
       },
       // the bodies in the scene format
       bodies: function () { return state.world ? state.world.bodies() : []; },
+      // the comparison view (setSpace("compare-torus")), or null: both worlds' bodies,
+      // the held pane, frames drawn, the curvature note
+      comparison: function () {
+        const c = state.compare;
+        if (!c) return null;
+        return {
+          name: COMPARE,
+          panes: ["torus-embedded", "torus-flat", "square-embedded", "square-flat"],
+          embedded: c.embedded.bodies(),
+          flat: c.flat.bodies(),
+          grabbed: { embedded: c.embedded.grabbed, flat: c.flat.grabbed },
+          frames: c.frames,
+          note: document.getElementById("compare-note").textContent,
+        };
+      },
+      // where body i of a comparison pane's world is drawn, as client (CSS) pixels [x, y], or null
+      comparisonPoint: function (pane, i) {
+        if (!state.compare) throw new Error("the comparison view is not shown");
+        if (["torus-embedded", "torus-flat", "square-embedded", "square-flat"].indexOf(pane) < 0) throw new RangeError("unknown pane " + JSON.stringify(pane));
+        if (pane === "torus-embedded" && surfaceStale()) renderNow(false);
+        state.compare.render(true);
+        return state.compare.clientPoint(pane, i);
+      },
       pause: function () { setSimulation({ paused: true }); },
       resume: function () { setSimulation({ paused: false }); },
       // {paused, timeScale, gravity, friction, restitution}
@@ -947,7 +1075,7 @@
       return;
     }
     state.index = index.slice();
-    state.ui.setSpaces(state.index);
+    state.ui.setSpaces(state.index.concat([{ name: COMPARE, label: "Torus: embedded vs flat", description: "the embedded and the flat torus side by side" }]));
 
     const params = MW.ui.parseHash(W.location.hash);
     state.debugBrokenShader = params.debugBrokenShader === "1";

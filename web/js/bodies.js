@@ -6,15 +6,22 @@
 // in the fragment shader a fixed number of pixels wide. A fragment behind the
 // traced surface (further from the eye than the traced distance at its pixel
 // plus a small tolerance, the paper's trick) is discarded, so bodies on the far
-// side are hidden. On antipodal quotients every body is drawn twice (p and −p).
+// side are hidden. On quotient spaces every body is also drawn at each of the
+// space's images (space.images, generated: −p on antipodal quotients, the
+// neighbouring translates on the flat torus and Klein bottle, so bodies show
+// on both sides of a seam).
 (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
+  // how far beyond the flat spaces' square bodies are drawn (world units): 0, the
+  // fundamental square alone, where a body across an edge shows in two (or four) parts
+  const IMAGE_BAND = 0;
 
   const VERTEX = `#version 300 es
 precision highp float;
 uniform mat4 uViewProjection;
-uniform float uSign;
+uniform vec3 uImageScale;  // the image p -> scale * p + shift (the identity: 1, 0)
+uniform vec3 uImageShift;
 in vec3 aPosition;
 in vec3 aColour;
 in vec3 aMark;   // ring (0 at the centre … 1 on the outline), then the vertex's place in a unit disc (x along the axis)
@@ -22,7 +29,7 @@ out vec3 vWorld;
 out vec3 vColour;
 out vec3 vMark;
 void main() {
-  vec3 p = uSign * aPosition;
+  vec3 p = uImageScale * aPosition + uImageShift;
   vWorld = p;
   vColour = aColour;
   vMark = aMark;
@@ -37,6 +44,7 @@ uniform highp sampler2D uNormal;
 uniform vec3 uEye;
 uniform float uTolerance;   // relative depth tolerance
 uniform float uLineWidth;   // outline width in pixels of this buffer
+uniform float uClip;        // > 0: nothing beyond |x| or |z| = uClip (the flat spaces' square)
 in vec3 vWorld;
 in vec3 vColour;
 in vec3 vMark;
@@ -56,6 +64,7 @@ void main() {
   float d = length(vWorld - uEye);
   // hidden behind the traced surface (background pixels hide nothing)
   if (P.w > 0.0 && d > P.w * (1.0 + uTolerance) + 1e-3) discard;
+  if (uClip > 0.0 && max(abs(vWorld.x), abs(vWorld.z)) > uClip) discard;
 
   vec3 view = normalize(uEye - vWorld);
   vec3 n = texelFetch(uNormal, ij, 0).xyz;
@@ -229,9 +238,15 @@ void main() {
         gl.uniform1f(p.uniform("uTolerance"), 0.01);
         gl.uniform1f(p.uniform("uLineWidth"), 1.6 * Math.max(1, frame.scale));
         gl.bindVertexArray(this.vao);
-        const signs = world.antipodal ? [1, -1] : [1];
-        for (const s of signs) {
-          gl.uniform1f(p.uniform("uSign"), s);
+        const images = [[1, 1, 1, 0, 0, 0]].concat(world.images || []);
+        // translation images (the flat spaces): only the fundamental square is drawn,
+        // so a body across an edge shows on both sides of it, and nothing is drawn twice
+        let half = 0;
+        for (const g of images) half = Math.max(half, Math.abs(g[3]) / 2, Math.abs(g[5]) / 2);
+        gl.uniform1f(p.uniform("uClip"), half > 0 ? half + IMAGE_BAND : 0);
+        for (const g of images) {
+          gl.uniform3f(p.uniform("uImageScale"), g[0], g[1], g[2]);
+          gl.uniform3f(p.uniform("uImageShift"), g[3], g[4], g[5]);
           gl.drawElements(gl.TRIANGLES, this.indicesPerBody * n, gl.UNSIGNED_INT, 0);
         }
         gl.bindVertexArray(null);

@@ -135,7 +135,7 @@
         index.forEach(function (s) {
           const opt = document.createElement("option");
           opt.value = s.name;
-          opt.textContent = s.name;
+          opt.textContent = s.label || s.name;
           opt.title = s.description;
           spaceSelect.appendChild(opt);
         });

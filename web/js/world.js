@@ -160,6 +160,7 @@
       this.space = space;
       this.engine = space.engine;
       this.antipodal = space.quotient === "antipodal";
+      this.images = space.images || [];
       this.info = [];          // per body: { shape, density, static, colour }
       this.added = 0;          // bodies ever added (picks the next colour)
       this.version = 0;        // bumped whenever bodies move, appear or go

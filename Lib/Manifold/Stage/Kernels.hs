@@ -6,6 +6,8 @@ module Manifold.Stage.Kernels
   ( spaceScript
   , spaceGlsl
   , spaceIndexScript
+  , comparisonScript
+  , comparisonScriptFile
   , spaceScriptFile
   , generatedMarker
   , jsString
@@ -19,7 +21,9 @@ import Linear.V3 (V3 (..))
 import Numeric (showHex)
 
 import Manifold.AD (gaussianCurvature)
+import Manifold.Chart
 import Manifold.Space
+import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
 import Manifold.Engine (engineObject, engineProcedures)
@@ -50,12 +54,16 @@ v3 (V3 a b c) = [a, b, c]
 -- | GLSL ES 3.00 defining @field@, @gradient@, @boundary@ and @curvature@,
 -- and for the tracer @distanceEstimate@ and @projectToSurface@.
 spaceGlsl :: Space -> String
-spaceGlsl s = concat
+spaceGlsl s = spaceGlslWith s (gaussianCurvature (spaceField s) pointSyms)
+
+-- | The space's GLSL with the given @curvature@ (a function of x, y, z).
+spaceGlslWith :: Space -> E -> String
+spaceGlslWith s curvatureE = concat
   [ "// space \"" ++ spaceName s ++ "\", generated from Lib/Manifold/Spaces.hs\n"
   , printFunction GLSL "field" xyz [field s pointSyms]
   , printFunction GLSL "gradient" xyz (v3 (stagedGradient s))
   , printFunction GLSL "boundary" xyz [evalBoundary s pointSyms]
-  , printFunction GLSL "curvature" xyz [gaussianCurvature (spaceField s) pointSyms]
+  , printFunction GLSL "curvature" xyz [curvatureE]
   , printFunction GLSL "distanceEstimate" xyz [traceDistance (spaceField s) pointSyms]
   , printFunction GLSL "projectToSurface" xyz (v3 (projectToSurfaceWith tracerProjectionSteps (spaceField s) pointSyms))
   ]
@@ -91,6 +99,8 @@ spaceScript s = unlines
   , "  gravity: gravity,"
   , "  curvature: curvature,"
   , "  quotient: " ++ jsString (quotientName (spaceQuotient s)) ++ ","
+  , "  // the quotient's images: [sx, sy, sz, tx, ty, tz] for p -> s*p + t (componentwise)"
+  , "  images: [" ++ intercalate ", " [vecJs' (isoSigns g) (isoShift g) | g <- quotientImages (spaceQuotient s)] ++ "],"
   , "  bounds: " ++ num (spaceBounds s) ++ ","
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
@@ -117,6 +127,56 @@ spaceIndexScript spaces = unlines $
 num :: Double -> String
 num = renderLiteral JavaScript
 
+vecJs' :: V3 Double -> V3 Double -> String
+vecJs' (V3 a b c) (V3 d e f) = "[" ++ intercalate ", " (map num [a, b, c, d, e, f]) ++ "]"
+
+comparisonScriptFile :: FilePath
+comparisonScriptFile = "compare-torus.js"
+
+-- | The comparison of the embedded and the flat torus (paper Fig. 17), for
+-- the page: the chart between them (the torus's angle coordinates) as
+-- JavaScript, the torus's GLSL with the flat torus's curvature (0) pulled
+-- back through the chart (the flat simulation drawn on the torus), and one
+-- scene as a body list on each.
+comparisonScript :: String
+comparisonScript = unlines
+  [ generatedMarker ++ " from Lib/Manifold/Chart.hs (the torus comparison). Do not edit."
+  , "(function (Manifold) {"
+  , "\"use strict\";"
+  , "// a point of the embedded torus -> (x, 0, z) in the flat torus's square"
+  , printFunction JavaScript "toSquare" xyz (v3 (torusToSquare pointSyms))
+  , "// (x, _, z) in the square -> the point of the embedded torus at those angles"
+  , printFunction JavaScript "fromSquare" xyz (v3 (squareToTorus pointSyms))
+  , "Manifold.comparisons = Manifold.comparisons || {};"
+  , "Manifold.comparisons[\"torus\"] = {"
+  , "  name: \"compare-torus\","
+  , "  title: \"Torus: embedded vs flat\","
+  , "  embedded: " ++ jsString (spaceName torus) ++ ","
+  , "  flat: " ++ jsString (spaceName flatTorus) ++ ","
+  , "  toSquare: toSquare,"
+  , "  fromSquare: fromSquare,"
+  , "  half: " ++ num (0.5 * latticePeriod (spaceQuotient flatTorus)) ++ ","
+  , "  // the torus drawn with the flat torus's Gaussian curvature (through the chart)"
+  , "  flatGlsl: " ++ jsString (spaceGlslWith torus (gaussianCurvature (spaceField flatTorus) (torusToSquare pointSyms))) ++ ","
+  , "  scenes: {"
+  , "    embedded: " ++ sceneJs torus (map launchOnTorus comparisonLaunches) ++ ","
+  , "    flat: " ++ sceneJs flatTorus (map launchOnSquare comparisonLaunches)
+  , "  }"
+  , "};"
+  , "})(globalThis.Manifold = globalThis.Manifold || { spaces: {} });"
+  ]
+  where
+    sceneJs sp bodies = "{ space: " ++ jsString (spaceName sp) ++ ", gravity: false, bodies: ["
+      ++ intercalate ", " [ "{ shape: " ++ shapeJs (launchShape l) ++ ", size: " ++ num size ++ ", p: " ++ vecJs p
+                            ++ ", v: " ++ vecJs v ++ ", omega: " ++ num (launchOmega l) ++ " }"
+                          | (l, (p, v, size)) <- zip comparisonLaunches bodies ]
+      ++ "] }"
+
+shapeJs :: ShapeKind -> String
+shapeJs CircleShape = jsString "circle"
+shapeJs SquareShape = jsString "square"
+shapeJs (PolygonShape n) = "{ polygon: " ++ show n ++ " }"
+
 vecJs :: V3 Double -> String
 vecJs (V3 a b c) = "[" ++ intercalate ", " (map num [a, b, c]) ++ "]"
 
@@ -127,10 +187,6 @@ cameraJs c = "{ eye: " ++ vecJs (cameraEye c) ++ ", target: " ++ vecJs (cameraTa
 placementJs :: Placement -> String
 placementJs p = "{ shape: " ++ shapeJs (placeShape p) ++ ", size: " ++ num (placeSize p)
   ++ ", p: " ++ vecJs (placeAt p) ++ (if placeStatic p then ", static: true" else "") ++ " }"
-  where
-    shapeJs CircleShape = jsString "circle"
-    shapeJs SquareShape = jsString "square"
-    shapeJs (PolygonShape n) = "{ polygon: " ++ show n ++ " }"
 
 -- | A JavaScript string literal, ASCII only (so the script's bytes do not
 -- depend on how the page declares its encoding).
