@@ -8,7 +8,8 @@ import Data.Foldable (toList)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
 import qualified Data.Vector.Unboxed as V
-import Linear.Metric (quadrance)
+import GHC.Float (castDoubleToWord64)
+import Linear.Metric (distance, quadrance)
 import Linear.V3 (V3 (..))
 import System.Directory (getTemporaryDirectory, removeFile)
 import System.IO (hClose, hPutStr, openTempFile)
@@ -16,7 +17,9 @@ import System.Process (readProcess)
 import Test.Hspec
 
 import Manifold
+import Manifold.Bench (benchScene, benchSpaces)
 import Manifold.Engine
+import Manifold.Scene
 import Manifold.Stage.Kernels (spaceScript)
 import Manifold.World
 import Manifold.Stage.Imp (NativeArray)
@@ -63,7 +66,10 @@ maxDiff :: [Double] -> [Double] -> Double
 maxDiff xs ys = maximum (0 : zipWith (\x y -> abs (x - y)) xs ys)
 
 spec :: Spec
-spec = describe "Engine: free motion" $ do
+spec = freeMotionSpec >> benchSpec
+
+freeMotionSpec :: Spec
+freeMotionSpec = describe "Engine: free motion" $ do
   it "keeps a free body's kinetic energy on the torus (no gravity) within 0.1 % over 10 000 steps" $ do
     w <- newWorld torus (layout 4)
     setParams w defaultParams { pGravity = False }
@@ -115,3 +121,42 @@ spec = describe "Engine: free motion" $ do
       verts <- freeze (wVerts a)
       let d = maximum [maxDiff pos (js !! 2), maxDiff vel (js !! 3), maxDiff verts (js !! 8)]
       (spaceName sp, d < 1e-9) `shouldBe` (spaceName sp, True)
+
+-- | The step's phases, run one after another, are the step (bit for bit);
+-- the benchmark scenes hold the bodies asked for, on the surface and apart;
+-- a scene printed as JSON reads back as itself.
+benchSpec :: Spec
+benchSpec = describe "Engine: phases and benchmark scenes" $ do
+  it "runs the named phases in turn exactly as one step" $
+    forM_ [sphere, torus, projectivePlane, hemisphere] $ \sp -> do
+      whole <- sceneWorld sp
+      phased <- sceneWorld sp
+      forM_ [1 .. 30 :: Int] $ \_ -> do
+        stepNative whole
+        mapM_ snd (stepPhasesNative phased)
+      a <- mapM freeze (toList (nwArrays whole))
+      b <- mapM freeze (toList (nwArrays phased))
+      map (map castDoubleToWord64) a `shouldBe` map (map castDoubleToWord64) b
+      map fst (stepPhasesNative phased) `shouldBe` ["gravity", "collide", "solve", "integrate", "polygonise"]
+
+  it "places every body asked for, on the surface, two sizes apart (and apart from antipodes on the projective plane)" $
+    forM_ [(sp, n) | sp <- benchSpaces, n <- [10, 300]] $ \(sp, n) -> do
+      let scene = benchScene sp n
+          bodies = sceneBodies scene
+          ps = map bsP bodies
+          size = bsSize (head bodies)
+          images p = if spaceQuotient sp == Antipodal then [p, negate p] else [p]
+          closest = minimum (1 / 0 : [ distance p' q | (k, p) <- zip [0 :: Int ..] ps, (k', q) <- zip [0 ..] ps, k < k', p' <- images p ])
+      length bodies `shouldSatisfy` (>= (if spaceName sp == "rectangle" && n == 10 then 9 else n))
+      maximum [abs (evalField sp p) | p <- ps] `shouldSatisfy` (< 1e-9)
+      (spaceName sp, closest >= 2 * size) `shouldBe` (spaceName sp, True)
+
+  it "reads a scene it printed back as the same scene" $ do
+    let scene = benchScene torus 30
+    case parseScene (A.encode (sceneJSON scene)) of
+      Left e -> expectationFailure e
+      Right s' -> do
+        sceneBodies s' `shouldBe` sceneBodies scene
+        spaceName (sceneSpace s') `shouldBe` "torus"
+        (sceneDt s', sceneGravity s', sceneIterations s', sceneFriction s', sceneRestitution s')
+          `shouldBe` (sceneDt scene, sceneGravity scene, sceneIterations scene, sceneFriction scene, sceneRestitution scene)

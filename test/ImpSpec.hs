@@ -6,6 +6,7 @@
 -- must be bit-for-bit identical.
 module ImpSpec (spec) where
 
+import Control.Exception (evaluate)
 import Control.Monad (forM_, unless, when)
 import Data.List (intercalate, isInfixOf)
 import qualified Data.Vector.Unboxed as V
@@ -101,6 +102,28 @@ signs meta inp out out2 = do
       (ifPositive (negate v) (writeArray out i 3) (writeArray out i 7))
     writeArray out2 i (v * v + 1)
 
+-- | Rows scaled by a subroutine: @out[r·m + c] = mat[r·m + c] · (r + 1) + k@
+-- for every row, with @k@ read from meta; then row 0 once more through the
+-- same subroutine from another call site (so it adds k twice there).
+-- Staged, "scaleRow" must be printed once and called from both places.
+scaleRows :: Imp m => Array m -> Array m -> Array m -> m ()
+scaleRows meta mat out = do
+  n <- readArray meta 0
+  m <- readArray meta 1
+  let row r cols = subroutine "scaleRow" [r, cols] $ \args -> case args of
+        [r', m'] -> do
+          k <- readArray meta 2
+          forEach (toIndex m') $ \c -> do
+            let ix = toIndex (r' * m') + c
+            x <- readArray mat ix
+            writeArray out ix (x * (r' + 1) + k)
+        _ -> error "arity"
+  forEach (toIndex n) $ \r -> row (toScalar r) m
+  whenPositive n $ do
+    k <- readArray meta 2
+    row 0 m
+    forEach (toIndex m) $ \c -> readArray out c >>= \x -> writeArray out c (x + k)
+
 -- Instances ------------------------------------------------------------------------
 
 -- | A procedure's array arguments.
@@ -118,6 +141,14 @@ genSigns = do
   inp <- vectorOf n (frequency [ (3, choose (-2, 2))
                                , (2, elements [0, -0, 0 / 0, 5e-324, -5e-324, 1 / 0, -1 / 0]) ])
   pure [[fromIntegral n], inp, replicate n 0, replicate n 0]
+
+genRows :: Gen Instance
+genRows = do
+  n <- choose (0, 6)
+  m <- choose (1, 5)
+  k <- choose (-1, 1)
+  mat <- vectorOf (n * m) (choose (-10, 10))
+  pure [[fromIntegral n, fromIntegral m, k], mat, replicate (n * m) 0]
 
 genSegmented :: Gen Instance
 genSegmented = do
@@ -174,6 +205,33 @@ spec = do
       nativePrefix = \as -> case as of [m, i, o] -> prefixSum m i o; _ -> error "arity"
       nativeSeg = \as -> case as of [m, f, i, o] -> segmented m f i o; _ -> error "arity"
       nativeGs = \as -> case as of [m, x, b, o, s] -> gaussSeidel m x b o s; _ -> error "arity"
+
+  it "prints a subroutine once, calls it from each place, and runs it as natively" $ do
+    let rowsJs = staged "scaleRows" ["meta", "mat", "out"] (\as -> case as of
+          [m, a, o] -> scaleRows m a o
+          _ -> error "arity")
+        insts = unGen (vectorOf 30 genRows) (mkQCGen 99) 30
+        calls = "[" ++ intercalate ",\n" [ "(() => { const a = [" ++ intercalate "," (map jsDoubles inst)
+                                            ++ "].map(v => Float64Array.from(v)); scaleRows(...a); return a; })()" | inst <- insts ] ++ "]"
+    length (filter ("function scaleRow(" `isInfixOf`) (lines rowsJs)) `shouldBe` 1
+    length (filter (\ln -> "scaleRow(meta, mat, out, " `isInfixOf` ln && not ("function" `isInfixOf` ln)) (lines rowsJs)) `shouldBe` 2
+    js <- runNodeJSON (rowsJs ++ "__emit(" ++ calls ++ ");\n") :: IO [[[Bits]]]
+    nat <- mapM (runNativeOn (\as -> case as of [m, a, o] -> scaleRows m a o; _ -> error "arity")) insts
+    forM_ (zip3 insts nat js) $ \(inst, n, j) -> do
+      unless (bitsEq n (map (map unBits) j)) $ expectationFailure ("scaleRows differs on " ++ show inst)
+      let [[rows, cols, k], mat, _] = inst
+          expected = [ x * (fromIntegral r + 1) + k + (if r == 0 then k else 0)
+                     | (idx, x) <- zip [0 :: Int ..] mat, let r = idx `div` round cols ]
+      unless (rows == 0 || and (zipWith (\a b -> abs (a - b) < 1e-12) (n !! 2) expected)) $
+        expectationFailure ("scaleRows is wrong on " ++ show inst ++ ": " ++ show (n !! 2))
+
+  it "refuses two different bodies under one subroutine name" $ do
+    let clash = staged "clash" ["a"] (\as -> case as of
+          [a] -> do
+            subroutine "body" [] (\_ -> writeArray a 0 1)
+            subroutine "body" [] (\_ -> writeArray a 0 2)
+          _ -> error "arity")
+    evaluate (length clash) `shouldThrow` errorCall "subroutine body: two different bodies under one name"
 
   it "prints the conditional with both branches and the loops nested" $ do
     gsJs `shouldSatisfy` ("} else {" `isInfixOf`)

@@ -17,7 +17,7 @@ module Manifold.Collide
   , pointInBody
   ) where
 
-import Linear.Metric (dot, norm)
+import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
@@ -193,17 +193,34 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale coupling carry = do
 -- | Run the test only for a point within body @y@'s bounding radius of its
 -- centre (no point farther out can be inside it).
 whenNear :: Imp m => BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
-whenNear fy q = whenPositive (bfSize fy - norm (q ^-^ bfCentre fy))
+whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre fy))
 
 -- | The outline vertices of body @x@, mapped by the isometry @g@ (the
 -- identity, or the image of @x@ that @y@ meets), tested against body @y@; up
 -- to two contacts. The contact direction found at @y@ is carried back to
 -- @x@ by the inverse of g's linear part (which is its own inverse).
+--
+-- Printed as one JavaScript subroutine for every pair and image (the
+-- isometry is passed as numbers): inlined at each of its call sites, the
+-- collision phase outgrew what V8 optimises on the quotient spaces.
 vertexContacts :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
                -> Index m -> Index m -> Isometry -> Scalar m -> m ()
-vertexContacts l w owner keyBase x y g selfScale = do
+vertexContacts l w owner keyBase x y g selfScale =
+  subroutine "vertexContacts"
+    ([toScalar owner, keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g) ++ [selfScale])
+    (\args -> case args of
+        [owner', keyBase', x', y', sx, sy, sz, tx, ty, tz, selfScale'] ->
+          vertexContactsVia l w (toIndex owner') keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz) selfScale'
+        _ -> error "vertexContacts: eleven arguments")
+  where coefficients (V3 a b c) = map constant [a, b, c]
+
+-- | 'vertexContacts' with the isometry @p ↦ signs·p + shift@ as scalars.
+vertexContactsVia :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
+                  -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
+vertexContactsVia l w owner keyBase x y signs shift selfScale = do
   let nd = fromIntegral (polyDirections (polygon l))
-      image = applyIso g
+      image q = signs * q + shift
+      linear v = signs * v
   fy <- bodyFrame w y
   deepest <- newRef 0
   mx <- newRef 0
@@ -230,7 +247,7 @@ vertexContacts l w owner keyBase x y g selfScale = do
           q <- outlineVertex l w x (toIndex dv)
           query <- share3 (image q)
           (depth, m) <- pointInBody l w y fy query
-          emitContact w owner (keyBase + slot) x (toScalar y) q (applyLinear g m) query m depth selfScale 1 (applyLinear g)
+          emitContact w owner (keyBase + slot) x (toScalar y) q (linear m) query m depth selfScale 1 linear
     emitAt 0 dLo
     whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 

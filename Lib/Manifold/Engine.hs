@@ -191,35 +191,35 @@ worldParams = toList arrayNames
 -- world's arrays.
 engineProcedures :: Space -> Layout -> [String]
 engineProcedures sp l =
-  [ phaseProcedure name phase | (name, phase) <- stepPhases ] ++
-  [ unlines (("function step(" ++ intercalate ", " worldParams ++ ") {")
-             : ["  " ++ phaseFunction name ++ "(" ++ intercalate ", " worldParams ++ ");" | (name, _) <- stagedPhases]
-             ++ ["}"])
-  , stageProcedure (JsProcedure "polygonise" worldParams []) (\_ _ -> polygoniseAll sp l stagedArrays)
-  , stageProcedure (JsProcedure "addBody" worldParams
-      ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"])
-      (\_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega] ->
+  unlines (("function step(" ++ intercalate ", " worldParams ++ ") {")
+           : ["  " ++ phaseFunction name ++ "(" ++ intercalate ", " worldParams ++ ");" | (name, _) <- stagedPhases]
+           ++ ["}"])
+  : stageProcedures (
+  [ (JsProcedure (phaseFunction name) worldParams [], \_ _ -> phase sp l stagedArrays) | (name, phase) <- stagedPhases ] ++
+  [ (JsProcedure "polygonise" worldParams [], \_ _ -> polygoniseAll sp l stagedArrays)
+  , (JsProcedure "addBody" worldParams
+      ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"],
+      \_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega] ->
          addBodyWith sp l stagedArrays (codeOutline code)
            (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega))
-  , stageProcedure (JsProcedure "removeBody" worldParams ["index"])
-      (\_ [i] -> removeBody l stagedArrays (toIndex i))
-  , stageProcedure (JsProcedure "pickBody" worldParams ["qx", "qy", "qz"])
-      (\_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
-  , stageProcedure (JsProcedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"])
-      (\_ [i, sgn, x, y, z, hz, zeta, fmax] -> grab sp stagedArrays (toIndex i) sgn (V3 x y z) hz zeta fmax)
-  , stageProcedure (JsProcedure "drag" worldParams ["qx", "qy", "qz"])
-      (\_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
-  , stageProcedure (JsProcedure "release" worldParams []) (\_ _ -> release stagedArrays)
-  ]
-
+  , (JsProcedure "removeBody" worldParams ["index"],
+      \_ [i] -> removeBody l stagedArrays (toIndex i))
+  , (JsProcedure "pickBody" worldParams ["qx", "qy", "qz"],
+      \_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
+  , (JsProcedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"],
+      \_ [i, sgn, x, y, z, hz, zeta, fmax] -> grab sp stagedArrays (toIndex i) sgn (V3 x y z) hz zeta fmax)
+  , (JsProcedure "drag" worldParams ["qx", "qy", "qz"],
+      \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
+  , (JsProcedure "release" worldParams [], \_ _ -> release stagedArrays)
+  ])
   where
     stagedPhases = stepPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
-    phaseProcedure name phase = stageProcedure (JsProcedure (phaseFunction name) worldParams []) (\_ _ -> phase sp l stagedArrays)
 
 -- | The JavaScript function of one phase of the step. The step is printed as
--- one function per phase because V8 does not optimise a function whose
--- bytecode is larger than 60 KB, and the whole step is larger: unoptimised,
--- it ran 17 times slower (torus, 655 bodies, bench/node.mjs).
+-- one function per phase (and the phases' large parts as subroutines, see
+-- 'subroutine') because V8 does not optimise a function whose bytecode is
+-- larger than 60 KB, and the whole step is larger: unoptimised, it ran 17
+-- times slower (torus, 655 bodies, bench/node.mjs).
 phaseFunction :: String -> String
 phaseFunction (c : cs) = "step" ++ toUpper c : cs
 phaseFunction [] = "step"

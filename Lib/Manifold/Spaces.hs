@@ -182,16 +182,16 @@ overSquare :: Camera
 overSquare = Camera (V3 0 3.4 (-1.4)) (V3 0 0 0) (V3 0 1 0) 45
 
 flatTorus :: Space
-flatTorus = (space "flat-torus" "the flat torus: the square [-1,1]^2 of the plane y = 0 with opposite edges glued (period 2 in x and z); curvature 0 everywhere, no gravity" (scalarFn planeField))
-  { spaceQuotient = Lattice flatPeriod False
-  , spaceCamera = overSquare
-  , spaceScene = grid [-0.5, 0.5] [-0.5, 0.5] SquareShape 0.18
-  , spaceBounds = 2
-  }
+flatTorus = flatSpace "flat-torus" "the flat torus: the square [-1,1]^2 of the plane y = 0 with opposite edges glued (period 2 in x and z); curvature 0 everywhere, no gravity" False
 
 flatKlein :: Space
-flatKlein = (space "flat-klein" "the flat Klein bottle: the square [-1,1]^2 of the plane y = 0, z edges glued straight, x edges glued with a flip (x, z) ~ (x + 2, -z); no gravity" (scalarFn planeField))
-  { spaceQuotient = Lattice flatPeriod True
+flatKlein = flatSpace "flat-klein" "the flat Klein bottle: the square [-1,1]^2 of the plane y = 0, z edges glued straight, x edges glued with a flip (x, z) ~ (x + 2, -z); no gravity" True
+
+-- | The plane y = 0 modulo the square lattice of period 2, its x edges
+-- glued with a flip or not.
+flatSpace :: String -> String -> Bool -> Space
+flatSpace name description flipped = (space name description (scalarFn planeField))
+  { spaceQuotient = Lattice flatPeriod flipped
   , spaceCamera = overSquare
   , spaceScene = grid [-0.5, 0.5] [-0.5, 0.5] SquareShape 0.18
   , spaceBounds = 2

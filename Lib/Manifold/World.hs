@@ -315,8 +315,13 @@ integrate sp w = do
     n' <- share3 n1
     v' <- share3 v1
     axis' <- share3 (safeNormalize (tangentProjection n' axis))
+    -- a step is good when everything is finite and the point is on the
+    -- surface: where a step is longer than the surface is wide (down the
+    -- trumpet's neck) the pull-back can converge to nowhere near it
+    residual <- share (evalFn f p')
     let angle' = angle + dt * omega
-        ok = finiteness (concatMap toList3 [p', v', axis', n'] ++ [angle'])
+        ok = minF (finiteness (concatMap toList3 [p', v', axis', n'] ++ [angle', residual]))
+                  (constant onSurfaceTolerance - abs residual)
     ifPositive ok
       (case spaceQuotient sp of
         Lattice period flipped -> do
@@ -348,6 +353,11 @@ integrate sp w = do
       (do write3 (wVel w) i (V3 0 0 0)
           writeSlot w i Omega 0
           countWarning w)
+
+-- | How far off the surface (in field value) a step may end and still count
+-- as good.
+onSurfaceTolerance :: Double
+onSurfaceTolerance = 1e-7
 
 toList3 :: V3 a -> [a]
 toList3 (V3 a b c) = [a, b, c]
@@ -397,11 +407,18 @@ polygoniseBody sp l w i = do
   v <- share3 (n `cross` axis)
   -- positive: walk in 'ns' steps; otherwise one (a step of 0 or less means always 'ns')
   fine <- share (select hmax (rmax - hmax) 1)
+  -- the direction's cosine and sine, turned by 2π/nd from one direction to
+  -- the next (two transcendental calls a body instead of two a direction)
+  cosRef <- newRef (cos angle)
+  sinRef <- newRef (sin angle)
+  let turnC = constant (cos (2 * pi / fromIntegral nd))
+      turnS = constant (sin (2 * pi / fromIntegral nd))
   forEach (fromIntegral nd) $ \d -> do
     r <- readArray (wRadii w) (fromIntegral nd * i + d)
-    let phi = angle + toScalar d * constant (2 * pi / fromIntegral nd)
-    c <- share (cos phi)
-    s <- share (sin phi)
+    c <- readRef cosRef
+    s <- readRef sinRef
+    writeRef cosRef (c * turnC - s * turnS)
+    writeRef sinRef (s * turnC + c * turnS)
     dir0 <- share3 (c *^ u ^+^ s *^ v)
     ifPositive fine
       (do h <- share (r / fromIntegral ns)
@@ -412,11 +429,13 @@ polygoniseBody sp l w i = do
                     q' <- share3 q1
                     dir' <- share3 dir1
                     n' <- share3 n1
-                    write3 (wVerts w) (vertexIx d k) q'
+                    -- a walk that fails (a singular point) leaves the
+                    -- vertex at the centre rather than poison the polygon
+                    write3 (wVerts w) (vertexIx d k) (select (finiteness (toList3 q')) <$> q' <*> p)
                     walk (k + 1 :: Int) q' dir' n'
           walk 1 p dir0 n)
       (do let (o, _, _) = geodesicStepFrom f r n (p, dir0)
-          o' <- share3 o
+          o' <- share3 (select (finiteness (toList3 o)) <$> o <*> p)
           write3 (wVerts w) (vertexIx d ns) o'
           forM_ [1 .. ns - 1] $ \k ->
             write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o' ^-^ p)))

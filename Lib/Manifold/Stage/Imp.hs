@@ -28,10 +28,12 @@ module Manifold.Stage.Imp
   , IxE
   , JsProcedure (..)
   , stageProcedure
+  , stageProcedures
   ) where
 
 import Control.Monad.State.Strict
 import qualified Data.IntMap.Strict as IM
+import qualified Data.Map.Strict as M
 import Data.List (intercalate)
 import qualified Data.Vector.Unboxed.Mutable as MV
 
@@ -61,6 +63,14 @@ class (Monad m, Field (Scalar m), Num (Index m)) => Imp m where
   toScalar :: Index m -> Scalar m
   -- | A scalar holding a whole number (a stored count or index) as an index.
   toIndex :: Scalar m -> Index m
+  -- | @subroutine name args body@ runs @body args@ here. Staged, the body is
+  -- printed once as a JavaScript function of its own (over the procedure's
+  -- arrays and the arguments) and called: V8 does not optimise a function
+  -- of more than 60 KB of bytecode, so the step's large parts are
+  -- subroutines. The body may use only its arguments, the arrays and
+  -- constants: a value staged outside it is out of scope there. One name,
+  -- one body: printing two different bodies under a name is an error.
+  subroutine :: String -> [Scalar m] -> ([Scalar m] -> m ()) -> m ()
 
 whenPositive :: Imp m => Scalar m -> m () -> m ()
 {-# INLINE whenPositive #-}
@@ -116,6 +126,8 @@ instance Imp Native where
   {-# INLINE writeRef #-}
   toScalar = fromIntegral
   toIndex = truncate
+  subroutine _ args body = body args
+  {-# INLINE subroutine #-}
 
 -- Staged -------------------------------------------------------------------
 
@@ -139,6 +151,9 @@ data StageState = StageState
   , ssScope :: !Scope -- ^ nodes bound where the next statement goes
   , ssLines :: [String] -- ^ the current block, reversed
   , ssDepth :: !Int
+  , ssArrays :: [String] -- ^ the procedure's array parameters
+  , ssSubroutines :: M.Map String String -- ^ subroutines printed so far, by name
+  , ssOrder :: [String] -- ^ their names, latest first
   }
 
 newtype Staged a = Staged (State StageState a)
@@ -240,6 +255,22 @@ instance Imp Staged where
     emitLine (v ++ " = " ++ x' ++ ";")
   toScalar (IxE e) = e
   toIndex = IxE
+  subroutine name args body = do
+    args' <- mapM expression args
+    st <- Staged get
+    let params = ["a" ++ show k | k <- [0 .. length args - 1]]
+        Staged m = body (map sym params)
+        inner = execState m st { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1 }
+        text = unlines $
+          ("function " ++ name ++ "(" ++ intercalate ", " (ssArrays st ++ params) ++ ") {")
+          : reverse (ssLines inner) ++ ["}"]
+    case M.lookup name (ssSubroutines inner) of
+      Just old | old /= text -> error ("subroutine " ++ name ++ ": two different bodies under one name")
+      _ -> pure ()
+    Staged $ put st
+      { ssSubroutines = M.insert name text (ssSubroutines inner)
+      , ssOrder = if M.member name (ssSubroutines inner) then ssOrder inner else name : ssOrder inner }
+    emitLine (name ++ "(" ++ intercalate ", " (ssArrays st ++ args') ++ ");")
 
 -- | Run a block on the side and return the lines it printed (in order of
 -- emission, reversed as the state keeps them), leaving the state's lines as
@@ -261,13 +292,27 @@ data JsProcedure = JsProcedure
   }
 
 -- | Print a procedure as a JavaScript function (returning nothing; results go
--- into its arrays).
+-- into its arrays), followed by the subroutines it calls.
 stageProcedure :: JsProcedure -> ([StagedArray] -> [E] -> Staged ()) -> String
-stageProcedure p body =
-  let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
-      s0 = StageState 0 emptyScope [] 1
-      s1 = execState m s0
-  in unlines $
-       ("function " ++ procName p ++ "(" ++ intercalate ", " (procArrays p ++ procScalars p) ++ ") {")
-       : reverse (ssLines s1)
-       ++ ["}"]
+stageProcedure p body = concat (stageProcedures [(p, body)])
+
+-- | Print procedures, each subroutine they call once (after the first
+-- procedure that calls it); a name that two of them print differently is
+-- an error.
+stageProcedures :: [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
+stageProcedures = go M.empty
+  where
+    go _ [] = []
+    go seen ((p, body) : rest) =
+      let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
+          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty []
+          s1 = execState m s0
+          main = unlines $
+            ("function " ++ procName p ++ "(" ++ intercalate ", " (procArrays p ++ procScalars p) ++ ") {")
+            : reverse (ssLines s1) ++ ["}"]
+          fresh = [ (n, t) | n <- reverse (ssOrder s1), let t = ssSubroutines s1 M.! n
+                           , case M.lookup n seen of
+                               Nothing -> True
+                               Just t' | t' == t -> False
+                                       | otherwise -> error ("subroutine " ++ n ++ ": two different bodies under one name") ]
+      in main : map snd fresh ++ go (M.union seen (M.fromList fresh)) rest
