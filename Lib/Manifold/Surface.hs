@@ -13,6 +13,7 @@ module Manifold.Surface
   , projectToSurface
   , projectToSurfaceWith
   , projectAlong
+  , projectAlongWithGradient
   , defaultProjectionIterations
   , projectionTolerance
   , tangentProjection

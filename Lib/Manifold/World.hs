@@ -61,6 +61,7 @@ module Manifold.World
 
 import Linear.V3 (V3 (..), cross)
 import Control.Monad (forM_)
+import Linear.Metric (norm, quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Body (PolygonParams (..))
@@ -310,10 +311,17 @@ integrate sp w = do
     angle <- readSlot w i Angle
     omega <- readSlot w i Omega
     n <- read3 (wNormal w) i
-    let (p1, v1, n1) = geodesicStepFrom f dt n (p, v)
-    p' <- share3 p1
-    n' <- share3 n1
-    v' <- share3 v1
+    let (p0, v0, n0) = geodesicStepFrom f dt n (p, v)
+    p1 <- share3 p0
+    -- a fast body over a tight bend (a rounded cube edge) can end its three
+    -- Newton steps short of the surface: three more, which leave a settled
+    -- point exactly where it is (and then nothing else changes either)
+    let (p2, g2) = projectAlongWithGradient f n p1
+        moved = select (quadrance (p2 ^-^ p1)) 1 0
+    movedS <- share moved
+    p' <- share3 p2
+    n' <- share3 (select movedS <$> safeNormalize g2 <*> n0)
+    v' <- share3 (select movedS <$> (norm v0 *^ safeNormalize (tangentProjection n' v0)) <*> v0)
     axis' <- share3 (safeNormalize (tangentProjection n' axis))
     -- a step is good when everything is finite and the point is on the
     -- surface: where a step is longer than the surface is wide (down the
