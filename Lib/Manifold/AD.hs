@@ -19,7 +19,7 @@ module Manifold.AD
   , adjugate
   ) where
 
-import GHC.Exts (Double (..))
+import GHC.Exts (Double (..), inline)
 import Linear.Matrix (M33, (!*))
 import Linear.V3 (V3 (..), cross)
 import Linear.Metric (dot, quadrance)
@@ -130,8 +130,10 @@ variables (V3 x y z) = V3 (D x (V3 1 0 0)) (D y (V3 0 1 0)) (D z (V3 0 0 1))
 scalarFn :: (forall a. Field a => V3 a -> a) -> ScalarFn
 scalarFn f = ScalarFnOf f (grad f) evalD valueGradD
   where
-    evalD x y z = case f (V3 (D# x) (D# y) (D# z)) :: Double of D# v -> v
-    valueGradD x y z = case f (variables (V3 (D# x) (D# y) (D# z))) :: D Double of
+    -- 'inline': the field's body is compiled into these two, at Double and
+    -- at dual numbers of Double, rather than called with boxed arguments
+    evalD x y z = case inline f (V3 (D# x) (D# y) (D# z)) :: Double of D# v -> v
+    valueGradD x y z = case inline f (variables (V3 (D# x) (D# y) (D# z))) :: D Double of
       D (D# v) (V3 (D# gx) (D# gy) (D# gz)) -> (# v, gx, gy, gz #)
 {-# INLINE scalarFn #-}
 

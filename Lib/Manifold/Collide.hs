@@ -78,21 +78,25 @@ cellsAcross :: Field a => a
 cellsAcross = 65536
 
 cellCoord :: Field a => a -> a -> a
+{-# INLINE cellCoord #-}
 cellCoord cell x = floorF (x / cell)
 
 -- | A cell's identity as one exact number (coordinates within ±2^16).
 cellKey :: Field a => a -> a -> a -> a
+{-# INLINE cellKey #-}
 cellKey cx cy cz = ((cx + 131072) * 262144 + (cy + 131072)) * 262144 + (cz + 131072)
 
 -- | The bucket of a cell: a hash of its coordinates modulo the table size
 -- (every product stays far below 2^53, so it is exact).
 bucketOf :: Field a => a -> a -> a -> a -> a
+{-# INLINE bucketOf #-}
 bucketOf buckets cx cy cz =
   let h = cx * 73856093 + cy * 19349663 + cz * 83492791
   in h - buckets * floorF (h / buckets)
 
 -- | Run @visit j@ for every body @j@ in the 27 cells around point @p@.
 neighbours :: Imp m => WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
+{-# INLINE neighbours #-}
 neighbours w p visit = do
   buckets <- readMeta w GridBuckets
   cell <- readMeta w CellSize
@@ -115,6 +119,7 @@ neighbours w p visit = do
 -- nearest along its direction from Y's centre. Points far off Y's tangent
 -- plane (on another sheet of the surface) are never inside.
 pointInBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m))
+{-# INLINE pointInBody #-}
 pointInBody l w j y q = do
   let nd = polyDirections (polygon l)
       sector = constant (2 * pi / fromIntegral nd)
@@ -193,6 +198,7 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale coupling carry = do
 -- | Run the test only for a point within body @y@'s bounding radius of its
 -- centre (no point farther out can be inside it).
 whenNear :: Imp m => BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
+{-# INLINE whenNear #-}
 whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre fy))
 
 -- | The outline vertices of body @x@, mapped by the isometry @g@ (the
@@ -217,6 +223,7 @@ vertexContacts l w owner keyBase x y g selfScale =
 -- | 'vertexContacts' with the isometry @p ↦ signs·p + shift@ as scalars.
 vertexContactsVia :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
                   -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
+{-# INLINE vertexContactsVia #-}
 vertexContactsVia l w owner keyBase x y signs shift selfScale = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
@@ -255,6 +262,7 @@ vertexContactsVia l w owner keyBase x y signs shift selfScale = do
 -- with the least and the greatest position along the contact line (−1 when
 -- none): a contact manifold's two points.
 extremesAlong :: Imp m => Index m -> (Index m -> m (Scalar m, Scalar m)) -> m (Scalar m, Scalar m)
+{-# INLINE extremesAlong #-}
 extremesAlong nd probe = do
   lo <- newRef 1e300
   hi <- newRef (-1e300)

@@ -25,14 +25,16 @@ import Manifold.Surface (geodesicStep)
 import Manifold.World
 
 -- | A body's velocity state.
-data Vel s = Vel (V3 s) s
+data Vel s = Vel !(V3 s) !s
 
 readVel :: Imp m => WorldArrays (Array m) -> Index m -> m (Vel (Scalar m))
+{-# INLINE readVel #-}
 readVel w i = Vel <$> read3 (wVel w) i <*> readSlot w i Omega
 
 -- | Push body @i@ with impulse @lambda@ along a Jacobian (linear part,
 -- angular part).
 push :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m) -> Scalar m -> m ()
+{-# INLINE push #-}
 push w i lambda j jw = do
   im <- readSlot w i InvMass
   ii <- readSlot w i InvInertia
@@ -42,9 +44,10 @@ push w i lambda j jw = do
 
 -- | The two sides of a row of contact @c@ starting at field @lin@ (Ja or Ta)
 -- and @linB@ (Jb or Tb).
-data Row s = Row { rowA :: V3 s, rowAW :: s, rowB :: V3 s, rowBW :: s }
+data Row s = Row { rowA :: !(V3 s), rowAW :: !s, rowB :: !(V3 s), rowBW :: !s }
 
 readRow :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> ContactField -> m (Row (Scalar m))
+{-# INLINE readRow #-}
 readRow w c linA linB = do
   a <- readContact3 w c linA
   aw <- readContact w c (succ (succ (succ linA)))
@@ -54,6 +57,7 @@ readRow w c linA linB = do
 
 -- | The relative velocity along a row: body a's minus body b's.
 rowVelocity :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
+{-# INLINE rowVelocity #-}
 rowVelocity w a b r = do
   Vel va oa <- readVel w a
   vb <- newRef 0
@@ -64,6 +68,7 @@ rowVelocity w a b r = do
   share ((rowA r `dot` va) + rowAW r * oa - vB)
 
 applyRow :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> Scalar m -> m ()
+{-# INLINE applyRow #-}
 applyRow w a b r lambda = do
   push w a lambda (rowA r) (rowAW r)
   whenPositive (b + 0.5) $ push w (toIndex b) (negate lambda) (rowB r) (rowBW r)
