@@ -145,7 +145,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           bodies = sceneBodies scene
           ps = map bsP bodies
           size = bsSize (head bodies)
-          images p = if spaceQuotient sp == Antipodal then [p, negate p] else [p]
+          images p = p : [applyIso g p | g <- quotientImages (spaceQuotient sp)]
           closest = minimum (1 / 0 : [ distance p' q | (k, p) <- zip [0 :: Int ..] ps, (k', q) <- zip [0 ..] ps, k < k', p' <- images p ])
       length bodies `shouldSatisfy` (>= (if spaceName sp == "rectangle" && n == 10 then 9 else n))
       maximum [abs (evalField sp p) | p <- ps] `shouldSatisfy` (< 1e-9)

@@ -86,8 +86,8 @@ benchScene sp n =
       usable p = not (any isNaN p) && abs (evalField sp p) < 1e-9 && inside p
                  && evalBoundary sp p > size && norm (unitNormal f p) > 0.5
       key (V3 x y z) = (floor (x / spacing), floor (y / spacing), floor (z / spacing)) :: (Int, Int, Int)
-      -- on a quotient by p ~ −p a body is also at −p
-      images p = if spaceQuotient sp == Antipodal then [p, negate p] else [p]
+      -- on a quotient space a body is also at its images
+      images p = p : [applyIso g p | g <- quotientImages (spaceQuotient sp)]
       far grid p = and [ distance p' q >= spacing
                        | p' <- images p, let (i, j, k) = key p', di <- [-1, 0, 1], dj <- [-1, 0, 1], dk <- [-1, 0, 1]
                        , q <- M.findWithDefault [] (i + di, j + dj, k + dk) grid ]

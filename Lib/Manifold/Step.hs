@@ -14,15 +14,9 @@ import Manifold.World
 
 step :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE step :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
-step sp l w = do
-  applyGravity sp w
-  collide sp l w
-  solve sp l w
-  integrate sp w
-  polygoniseAll sp l w
+step sp l w = mapM_ (\(_, phase) -> phase sp l w) stepPhases
 
--- | 'step''s phases in order, named, so that a benchmark can time each
--- (a test checks that running them in turn is 'step').
+-- | The step's phases in order, named, so that a benchmark can time each.
 stepPhases :: Imp m => [(String, Space -> Layout -> WorldArrays (Array m) -> m ())]
 {-# SPECIALIZE stepPhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())] #-}
 stepPhases =
