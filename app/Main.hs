@@ -7,7 +7,7 @@ import Data.List (isInfixOf)
 import qualified Network.Wai.Handler.Warp as Warp
 import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
 import System.Directory (createDirectoryIfMissing, doesFileExist)
-import System.FilePath ((</>))
+import System.FilePath ((</>), takeDirectory)
 import System.IO.Error (isAlreadyInUseError)
 import Control.Monad (forM_, when)
 import qualified Data.Aeson as A
@@ -24,6 +24,7 @@ import Text.Read (readMaybe)
 import Manifold
 import Manifold.Bench
 import Manifold.Build
+import Manifold.Compile (compiledFiles)
 import Manifold.Engine
 import Manifold.Scene
 
@@ -31,6 +32,7 @@ data Command
   = Spaces Bool
   | Geodesic GeodesicArgs
   | Build FilePath
+  | Compile FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
   | Bench String String Int Int Bool (Maybe FilePath)
@@ -60,6 +62,8 @@ commandParser = hsubparser
                                    <*> switch (long "json" <> help "Print JSON")
                                    <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing")))
                        (progDesc "Time the native engine's step on scenes of growing size"))
+ <> command "compile" (info (Compile <$> strOption (long "out" <> metavar "DIR" <> value "Lib" <> help "The library's source directory (default: Lib)"))
+        (progDesc "Print every catalogue space's step as Haskell (the compiled native step) into DIR/Manifold/Compiled"))
  <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
   )
   where
@@ -89,6 +93,11 @@ main = do
       case r of
         Left (BuildError msg) -> usageError msg
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
+    Compile dir -> do
+      forM_ compiledFiles $ \(rel, text) -> do
+        createDirectoryIfMissing True (takeDirectory (dir </> rel))
+        writeFile (dir </> rel) text
+      putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
     Bench spaces sizes warmup steps json scenes -> bench spaces sizes warmup steps json scenes

@@ -7,6 +7,8 @@ module Manifold.Engine
   , addBody
   , stepNative
   , stepPhasesNative
+  , genericStep
+  , usesCompiledStep
   , removeBodyAt
   , pickAt
   , grabAt
@@ -23,13 +25,19 @@ module Manifold.Engine
   , engineScript
   , engineProcedures
   , engineObject
+  , stepProcedures
+  , phaseFunction
+  , worldParams
   ) where
 
 import qualified Data.Vector.Unboxed.Mutable as MV
 import Linear.V3 (V3 (..))
 
 import Manifold.Body
+import Manifold.Compiled (compiledSteps)
+import Manifold.Compiled.Runtime (CompiledStep (..), spaceFingerprint)
 import Manifold.Space
+import Manifold.Stage.Expr (E)
 import Manifold.Stage.Imp
 import Manifold.Grab
 import Manifold.Population
@@ -43,6 +51,7 @@ data NativeWorld = NativeWorld
   { nwSpace :: Space
   , nwLayout :: Layout
   , nwArrays :: WorldArrays NativeArray
+  , nwCompiled :: Maybe CompiledStep -- ^ the space's compiled step, if it has one
   }
 
 newWorld :: Space -> Layout -> IO NativeWorld
@@ -50,7 +59,7 @@ newWorld sp l = do
   let s = arraySizes l
       alloc n = MV.replicate n 0
   arrays <- traverse alloc s
-  let w = NativeWorld sp l arrays
+  let w = NativeWorld sp l arrays (compiledFor sp l)
   MV.write (wMeta arrays) (fromEnum Capacity) (fromIntegral (capacity l))
   setParams w defaultParams
   pure w
@@ -150,9 +159,27 @@ releaseMouse w = runNative (release (nwArrays w))
 removeBodyAt :: NativeWorld -> Int -> IO ()
 removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
 
+-- | The compiled step ("Manifold.Compiled.Runtime") of a catalogue space,
+-- when the space and polygon are the ones it was printed for.
+compiledFor :: Space -> Layout -> Maybe CompiledStep
+compiledFor sp l = case [c | c <- compiledSteps, compiledSpace c == spaceName sp] of
+  c : _ | compiledFingerprint c == spaceFingerprint sp l -> Just c
+  _ -> Nothing
+
+-- | The world run by the generic (polymorphic) step even if its space has a
+-- compiled one: the reference the compiled step is tested against.
+genericStep :: NativeWorld -> NativeWorld
+genericStep w = w { nwCompiled = Nothing }
+
+-- | Whether the world runs a compiled step.
+usesCompiledStep :: NativeWorld -> Bool
+usesCompiledStep = maybe False (const True) . nwCompiled
+
 -- | One step of the world.
 stepNative :: NativeWorld -> IO ()
-stepNative w = runNative (stepN (nwSpace w) (nwLayout w) (nwArrays w))
+stepNative w = case nwCompiled w of
+  Just c -> mapM_ (\(_, run) -> run (nwArrays w)) (compiledPhases c)
+  Nothing -> runNative (stepN (nwSpace w) (nwLayout w) (nwArrays w))
 
 stepN :: Space -> Layout -> WorldArrays NativeArray -> Native ()
 stepN = step
@@ -161,7 +188,9 @@ stepN = step
 -- | The phases of 'stepNative', named, each runnable alone (in this order
 -- they make one step): for benchmarks that say where the time goes.
 stepPhasesNative :: NativeWorld -> [(String, IO ())]
-stepPhasesNative w = [(name, runNative (phase (nwSpace w) (nwLayout w) (nwArrays w))) | (name, phase) <- nativePhases]
+stepPhasesNative w = case nwCompiled w of
+  Just c -> [(name, run (nwArrays w)) | (name, run) <- compiledPhases c]
+  Nothing -> [(name, runNative (phase (nwSpace w) (nwLayout w) (nwArrays w))) | (name, phase) <- nativePhases]
 
 nativePhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())]
 nativePhases = stepPhases
@@ -194,8 +223,7 @@ engineProcedures sp l =
   unlines (("function step(" ++ intercalate ", " worldParams ++ ") {")
            : ["  " ++ phaseFunction name ++ "(" ++ intercalate ", " worldParams ++ ");" | (name, _) <- stagedPhases]
            ++ ["}"])
-  : stageProcedures (
-  [ (JsProcedure (phaseFunction name) worldParams [], \_ _ -> phase sp l stagedArrays) | (name, phase) <- stagedPhases ] ++
+  : stageProcedures (stepProcedures sp l ++
   [ (JsProcedure "polygonise" worldParams [], \_ _ -> polygoniseAll sp l stagedArrays)
   , (JsProcedure "addBody" worldParams
       ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"],
@@ -212,8 +240,13 @@ engineProcedures sp l =
       \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
   , (JsProcedure "release" worldParams [], \_ _ -> release stagedArrays)
   ])
-  where
-    stagedPhases = stepPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
+
+-- | The step's phases as procedures to print, one for each phase.
+stepProcedures :: Space -> Layout -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())]
+stepProcedures sp l = [ (JsProcedure (phaseFunction name) worldParams [], \_ _ -> phase sp l stagedArrays) | (name, phase) <- stagedPhases ]
+
+stagedPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
+stagedPhases = stepPhases
 
 -- | The JavaScript function of one phase of the step. The step is printed as
 -- one function per phase (and the phases' large parts as subroutines, see

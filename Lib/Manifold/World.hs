@@ -430,18 +430,24 @@ polygoniseBody sp l w i = do
     dir0 <- share3 (c *^ u ^+^ s *^ v)
     ifPositive fine
       (do h <- share (r / fromIntegral ns)
-          let walk k q dir nq
+          -- the walk's state as nine strict scalars, not three vectors: a
+          -- native walk then keeps them unboxed instead of allocating
+          -- vectors at every step
+          let walk !k !qx !qy !qz !ux !uy !uz !nx !ny !nz
                 | k > ns = pure ()
                 | otherwise = do
-                    let (q1, dir1, n1) = geodesicStepFrom f h nq (q, dir)
-                    q' <- share3 q1
-                    dir' <- share3 dir1
-                    n' <- share3 n1
+                    let (q1, dir1, n1) = geodesicStepFrom f h (V3 nx ny nz) (V3 qx qy qz, V3 ux uy uz)
+                    q'@(V3 qx' qy' qz') <- share3 q1
+                    V3 ux' uy' uz' <- share3 dir1
+                    V3 nx' ny' nz' <- share3 n1
                     -- a walk that fails (a singular point) leaves the
                     -- vertex at the centre rather than poison the polygon
                     write3 (wVerts w) (vertexIx d k) (select (finiteness (toList3 q')) <$> q' <*> p)
-                    walk (k + 1 :: Int) q' dir' n'
-          walk 1 p dir0 n)
+                    walk (k + 1 :: Int) qx' qy' qz' ux' uy' uz' nx' ny' nz'
+              V3 px py pz = p
+              V3 dx0 dy0 dz0 = dir0
+              V3 nx0 ny0 nz0 = n
+          walk 1 px py pz dx0 dy0 dz0 nx0 ny0 nz0)
       (do let (o, _, _) = geodesicStepFrom f r n (p, dir0)
           o' <- share3 (select (finiteness (toList3 o)) <$> o <*> p)
           write3 (wVerts w) (vertexIx d ns) o'

@@ -12,7 +12,9 @@
 -- * 'Staged': the program prints itself as a JavaScript function over
 --   @Float64Array@s; its scalars are staged expressions ('E'), so the geometry
 --   the program calls (fields, AD gradients, projections) is printed inline,
---   with shared subexpressions bound once.
+--   with shared subexpressions bound once. The same program also prints as
+--   Haskell ('stageProceduresFor'): the compiled native step of
+--   "Manifold.Compiled.Runtime".
 module Manifold.Stage.Imp
   ( Imp (..)
   , whenPositive
@@ -29,6 +31,7 @@ module Manifold.Stage.Imp
   , JsProcedure (..)
   , stageProcedure
   , stageProcedures
+  , stageProceduresFor
   ) where
 
 import Control.Monad.State.Strict
@@ -154,21 +157,34 @@ data StageState = StageState
   , ssArrays :: [String] -- ^ the procedure's array parameters
   , ssSubroutines :: M.Map String String -- ^ subroutines printed so far, by name
   , ssOrder :: [String] -- ^ their names, latest first
+  , ssTarget :: !Target -- ^ JavaScript, or Haskell for the compiled native step
   }
 
 newtype Staged a = Staged (State StageState a)
   deriving (Functor, Applicative, Monad)
 
+unStaged :: Staged a -> State StageState a
+unStaged (Staged m) = m
+
 emitLine :: String -> Staged ()
 emitLine l = Staged $ modify' $ \s -> s { ssLines = (replicate (2 * ssDepth s) ' ' ++ l) : ssLines s }
 
--- | Print the bindings an expression needs and return it as a JS expression.
+isHaskell :: Staged Bool
+isHaskell = Staged (gets ((== Haskell) . ssTarget))
+
+-- | A constant binding: @const n = e;@, or @let !n = e@ in a Haskell do block.
+bindLine :: String -> String -> Staged ()
+bindLine n rhs = do
+  hs <- isHaskell
+  emitLine (if hs then "let !" ++ n ++ " = " ++ rhs else "const " ++ n ++ " = " ++ rhs ++ ";")
+
+-- | Print the bindings an expression needs and return it as an expression.
 expression :: E -> Staged String
 expression e = do
   s <- Staged get
-  let Lowered bs [r] scope' next' = lower JavaScript "t" (ssNext s) (ssScope s) [e]
+  let Lowered bs [r] scope' next' = lower (ssTarget s) "t" (ssNext s) (ssScope s) [e]
   Staged (put s { ssNext = next', ssScope = scope' })
-  mapM_ (\(n, rhs) -> emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")) bs
+  mapM_ (uncurry bindLine) bs
   pure r
 
 -- | Print the bindings several expressions need together (what they share is
@@ -176,9 +192,9 @@ expression e = do
 expressions :: [E] -> Staged [String]
 expressions es = do
   s <- Staged get
-  let Lowered bs rs scope' next' = lower JavaScript "t" (ssNext s) (ssScope s) es
+  let Lowered bs rs scope' next' = lower (ssTarget s) "t" (ssNext s) (ssScope s) es
   Staged (put s { ssNext = next', ssScope = scope' })
-  mapM_ (\(n, rhs) -> emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")) bs
+  mapM_ (uncurry bindLine) bs
   pure rs
 
 fresh :: String -> Staged String
@@ -193,16 +209,19 @@ bindAs prefix e = do
     Sym _ -> pure e
     _ -> do
       n <- fresh prefix
-      emitLine ("const " ++ n ++ " = " ++ rhs ++ ";")
+      bindLine n rhs
       Staged (modify' (\s -> s { ssScope = IM.insert (nodeId e) n (ssScope s) }))
       pure (sym n)
 
--- | A nested block: its bindings do not outlive it.
+-- | A nested block: its bindings do not outlive it. (A Haskell block is a
+-- do block: it ends with @pure ()@, so that it never ends with a @let@.)
 block :: Staged () -> Staged ()
 block body = do
   outer <- Staged get
   Staged (put outer { ssDepth = ssDepth outer + 1 })
   body
+  hs <- isHaskell
+  when hs (emitLine "pure ()")
   Staged (modify' (\s -> s { ssScope = ssScope outer, ssDepth = ssDepth outer }))
 
 instance Imp Staged where
@@ -214,29 +233,46 @@ instance Imp Staged where
     lo' <- expression lo
     hi' <- bindAs "n" hi >>= expression
     i <- fresh "i"
-    emitLine ("for (let " ++ i ++ " = " ++ lo' ++ "; " ++ i ++ " < " ++ hi' ++ "; " ++ i ++ "++) {")
-    block (body (IxE (sym i)))
-    emitLine "}"
+    hs <- isHaskell
+    if hs
+      then do
+        emitLine ("loop " ++ lo' ++ " " ++ hi' ++ " $ \\" ++ i ++ " -> do")
+        block (body (IxE (sym i)))
+      else do
+        emitLine ("for (let " ++ i ++ " = " ++ lo' ++ "; " ++ i ++ " < " ++ hi' ++ "; " ++ i ++ "++) {")
+        block (body (IxE (sym i)))
+        emitLine "}"
   ifPositive c t e = do
     c' <- expression c
-    emitLine ("if (" ++ c' ++ " > 0) {")
-    block t
-    (_, elseLines) <- captureLines (block e)
-    if null elseLines
-      then emitLine "}"
-      else do
-        emitLine "} else {"
-        Staged (modify' (\s -> s { ssLines = elseLines ++ ssLines s }))
-        emitLine "}"
+    hs <- isHaskell
+    if hs then ifHaskell c' else ifJavaScript c'
+    where
+     ifHaskell c' = do
+      emitLine ("if " ++ c' ++ " > 0 then do")
+      block t
+      emitLine "else do"
+      block e
+     ifJavaScript c' = do
+      emitLine ("if (" ++ c' ++ " > 0) {")
+      block t
+      (_, elseLines) <- captureLines (block e)
+      if null elseLines
+        then emitLine "}"
+        else do
+          emitLine "} else {"
+          Staged (modify' (\s -> s { ssLines = elseLines ++ ssLines s }))
+          emitLine "}"
   readArray (StagedArray a) (IxE i) = do
     i' <- expression i
     t <- fresh "t"
-    emitLine ("const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
+    hs <- isHaskell
+    emitLine (if hs then t ++ " <- rd " ++ a ++ " " ++ i' else "const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
     pure (sym t)
   writeArray (StagedArray a) (IxE i) x = do
     i' <- expression i
     x' <- expression x
-    emitLine (a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
+    hs <- isHaskell
+    emitLine (if hs then "wr " ++ a ++ " " ++ i' ++ " " ++ x' else a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
   share = bindAs "s"
   shareAll xs = do
     _ <- expressions (foldr (:) [] xs)
@@ -244,15 +280,18 @@ instance Imp Staged where
   newRef x = do
     x' <- expression x
     v <- fresh "v"
-    emitLine ("let " ++ v ++ " = " ++ x' ++ ";")
+    hs <- isHaskell
+    emitLine (if hs then v ++ " <- newR " ++ x' else "let " ++ v ++ " = " ++ x' ++ ";")
     pure (StagedRef v)
   readRef (StagedRef v) = do
     t <- fresh "t"
-    emitLine ("const " ++ t ++ " = " ++ v ++ ";")
+    hs <- isHaskell
+    emitLine (if hs then t ++ " <- getR " ++ v else "const " ++ t ++ " = " ++ v ++ ";")
     pure (sym t)
   writeRef (StagedRef v) x = do
     x' <- expression x
-    emitLine (v ++ " = " ++ x' ++ ";")
+    hs <- isHaskell
+    emitLine (if hs then "setR " ++ v ++ " " ++ x' else v ++ " = " ++ x' ++ ";")
   toScalar (IxE e) = e
   toIndex = IxE
   subroutine name args body = do
@@ -260,17 +299,17 @@ instance Imp Staged where
     st <- Staged get
     let params = ["a" ++ show k | k <- [0 .. length args - 1]]
         Staged m = body (map sym params)
-        inner = execState m st { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1 }
-        text = unlines $
-          ("function " ++ name ++ "(" ++ intercalate ", " (ssArrays st ++ params) ++ ") {")
-          : reverse (ssLines inner) ++ ["}"]
+        inner = execState (m >> unStaged closeFunction) st { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1 }
+        text = unlines (functionHead (ssTarget st) name (ssArrays st) params : reverse (ssLines inner) ++ functionEnd (ssTarget st))
     case M.lookup name (ssSubroutines inner) of
       Just old | old /= text -> error ("subroutine " ++ name ++ ": two different bodies under one name")
       _ -> pure ()
     Staged $ put st
       { ssSubroutines = M.insert name text (ssSubroutines inner)
       , ssOrder = if M.member name (ssSubroutines inner) then ssOrder inner else name : ssOrder inner }
-    emitLine (name ++ "(" ++ intercalate ", " (ssArrays st ++ args') ++ ");")
+    emitLine $ case ssTarget st of
+      Haskell -> unwords (name : ssArrays st ++ args')
+      _ -> name ++ "(" ++ intercalate ", " (ssArrays st ++ args') ++ ");"
 
 -- | Run a block on the side and return the lines it printed (in order of
 -- emission, reversed as the state keeps them), leaving the state's lines as
@@ -296,23 +335,46 @@ data JsProcedure = JsProcedure
 stageProcedure :: JsProcedure -> ([StagedArray] -> [E] -> Staged ()) -> String
 stageProcedure p body = concat (stageProcedures [(p, body)])
 
--- | Print procedures, each subroutine they call once (after the first
--- procedure that calls it); a name that two of them print differently is
--- an error.
+-- | Print procedures as JavaScript functions, each subroutine they call once
+-- (after the first procedure that calls it); a name that two of them print
+-- differently is an error.
 stageProcedures :: [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
-stageProcedures = go M.empty
+stageProcedures = stageProceduresFor JavaScript
+
+-- | 'stageProcedures' in a target language: JavaScript functions, or
+-- Haskell functions in 'IO' over the arrays (the definitions
+-- "Manifold.Compiled.Runtime" provides: @loop@, @rd@, @wr@, @newR@, @getR@,
+-- @setR@, @floorF@, and the array type @Arr@).
+stageProceduresFor :: Target -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
+stageProceduresFor target = go M.empty
   where
     go _ [] = []
     go seen ((p, body) : rest) =
       let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
-          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty []
-          s1 = execState m s0
-          main = unlines $
-            ("function " ++ procName p ++ "(" ++ intercalate ", " (procArrays p ++ procScalars p) ++ ") {")
-            : reverse (ssLines s1) ++ ["}"]
+          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty [] target
+          s1 = execState (m >> unStaged closeFunction) s0
+          main = unlines (functionHead target (procName p) (procArrays p) (procScalars p) : reverse (ssLines s1) ++ functionEnd target)
           fresh = [ (n, t) | n <- reverse (ssOrder s1), let t = ssSubroutines s1 M.! n
                            , case M.lookup n seen of
                                Nothing -> True
                                Just t' | t' == t -> False
                                        | otherwise -> error ("subroutine " ++ n ++ ": two different bodies under one name") ]
       in main : map snd fresh ++ go (M.union seen (M.fromList fresh)) rest
+
+-- | The first line(s) of a printed function over arrays and scalars.
+functionHead :: Target -> String -> [String] -> [String] -> String
+functionHead target name arrays scalars = case target of
+  Haskell ->
+    name ++ " :: " ++ concatMap (const "Arr -> ") arrays ++ concatMap (const "Double -> ") scalars ++ "IO ()\n"
+    ++ unwords (name : arrays ++ scalars) ++ " = do"
+  _ -> "function " ++ name ++ "(" ++ intercalate ", " (arrays ++ scalars) ++ ") {"
+
+functionEnd :: Target -> [String]
+functionEnd Haskell = []
+functionEnd _ = ["}"]
+
+-- | A Haskell function body is a do block: end it with @pure ()@.
+closeFunction :: Staged ()
+closeFunction = do
+  hs <- isHaskell
+  when hs (emitLine "pure ()")

@@ -1,4 +1,4 @@
--- | Printing staged expressions as JavaScript and GLSL.
+-- | Printing staged expressions as JavaScript, GLSL and Haskell.
 --
 -- A set of root expressions is lowered to a block of bindings followed by the
 -- roots: every node used more than once (within the block) is printed once as
@@ -25,7 +25,9 @@ import GHC.Float (castWord64ToDouble)
 
 import Manifold.Stage.Expr
 
-data Target = JavaScript | GLSL
+-- | Haskell is the native engine's compiled step ("Manifold.Compiled"):
+-- expressions over 'Double' that GHC compiles to unboxed arithmetic.
+data Target = JavaScript | GLSL | Haskell
   deriving (Show, Eq)
 
 -- | Nodes already bound to names where the code being printed sits.
@@ -84,15 +86,22 @@ render target scope i = case IM.lookup i scope of
     Sel c t e -> case target of
       JavaScript -> "(" ++ go c ++ " > 0 ? " ++ go t ++ " : " ++ go e ++ ")"
       GLSL -> "(" ++ go c ++ " > 0.0 ? " ++ go t ++ " : " ++ go e ++ ")"
+      Haskell -> "(if " ++ go c ++ " > 0 then " ++ go t ++ " else " ++ go e ++ ")"
   where go = render target scope
 
 unary :: Target -> Op1 -> String -> String
 unary target op a = case (op, target) of
+  (Neg, Haskell) -> "(negate " ++ a ++ ")"
   (Neg, _) -> "(-" ++ a ++ ")"
   (Recip, JavaScript) -> "(1 / " ++ a ++ ")"
   (Recip, GLSL) -> "(1.0 / " ++ a ++ ")"
+  (Recip, Haskell) -> "(recip " ++ a ++ ")"
   (_, JavaScript) -> "Math." ++ fname ++ "(" ++ a ++ ")"
   (_, GLSL) -> fname ++ "(" ++ a ++ ")"
+  -- the functions 'Manifold.Stage.Expr.evalOp1' folds constants with
+  (Sign, Haskell) -> "(signum " ++ a ++ ")"
+  (Floor, Haskell) -> "(floorF " ++ a ++ ")"
+  (_, Haskell) -> "(" ++ fname ++ " " ++ a ++ ")"
   where
     fname = case op of
       Abs -> "abs"; Sign -> "sign"; Sqrt -> "sqrt"; Exp -> "exp"; Log -> "log"
@@ -112,6 +121,7 @@ binary target op a b = case op of
     -- Haskell's (**), gives 1. The operands are names or literals here.
     JavaScript -> "((" ++ a ++ " === 1 || (" ++ a ++ " === -1 && (" ++ b ++ " === Infinity || " ++ b ++ " === -Infinity))) ? 1 : Math.pow(" ++ a ++ ", " ++ b ++ "))"
     GLSL -> "pow(" ++ a ++ ", " ++ b ++ ")"
+    Haskell -> "(" ++ a ++ " ** " ++ b ++ ")"
   where infx o = "(" ++ a ++ " " ++ o ++ " " ++ b ++ ")"
 
 -- | A 'Double' literal that the target reads back as the same number (JS) or
@@ -121,6 +131,12 @@ renderLiteral JavaScript x
   | isNaN x = "NaN"
   | isInfinite x = if x > 0 then "Infinity" else "(-Infinity)"
   | isNegativeZero x = "(-0)"
+  | x < 0 = "(" ++ show x ++ ")"
+  | otherwise = show x
+renderLiteral Haskell x
+  | isNaN x = "(0 / 0)"
+  | isInfinite x = if x > 0 then "(1 / 0)" else "(-1 / 0)"
+  | isNegativeZero x = "(-0.0)"
   | x < 0 = "(" ++ show x ++ ")"
   | otherwise = show x
 renderLiteral GLSL x
@@ -151,6 +167,12 @@ printFunction target name ty roots =
           JavaScript -> "[" ++ intercalate ", " rs ++ "]"
           GLSL -> "vec" ++ show (length rs) ++ "(" ++ intercalate ", " rs ++ ")"
   in case target of
+    Haskell -> unlines $
+      (name ++ " :: " ++ concatMap (const "Double -> ") (fnParams ty)
+         ++ (case rs of [_] -> "Double"; _ -> "(" ++ intercalate ", " (map (const "Double") rs) ++ ")"))
+      : (name ++ concatMap (" " ++) (fnParams ty) ++ " =")
+      : map (\(n, e) -> indent ("let !" ++ n ++ " = " ++ e ++ " in")) bs
+      ++ [indent (case rs of [r] -> r; _ -> "(" ++ intercalate ", " rs ++ ")")]
     JavaScript -> unlines $
       ("function " ++ name ++ "(" ++ intercalate ", " (fnParams ty) ++ ") {")
       : map (\(n, e) -> indent ("const " ++ n ++ " = " ++ e ++ ";")) bs
