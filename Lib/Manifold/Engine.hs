@@ -26,6 +26,7 @@ module Manifold.Engine
   , engineProcedures
   , engineObject
   , stepProcedures
+  , stagedPhases
   , phaseFunction
   , worldParams
   ) where
@@ -46,6 +47,7 @@ import Manifold.World
 import Data.Char (toLower, toUpper)
 import Data.Foldable (toList)
 import Data.List (intercalate)
+import Data.Maybe (isJust)
 
 data NativeWorld = NativeWorld
   { nwSpace :: Space
@@ -173,7 +175,7 @@ genericStep w = w { nwCompiled = Nothing }
 
 -- | Whether the world runs a compiled step.
 usesCompiledStep :: NativeWorld -> Bool
-usesCompiledStep = maybe False (const True) . nwCompiled
+usesCompiledStep = isJust . nwCompiled
 
 -- | One step of the world.
 stepNative :: NativeWorld -> IO ()
@@ -245,6 +247,7 @@ engineProcedures sp l =
 stepProcedures :: Space -> Layout -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())]
 stepProcedures sp l = [ (JsProcedure (phaseFunction name) worldParams [], \_ _ -> phase sp l stagedArrays) | (name, phase) <- stagedPhases ]
 
+-- | The step's phases, staged (to print them).
 stagedPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
 stagedPhases = stepPhases
 
@@ -279,7 +282,7 @@ engineObject l =
                , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p)
                , ("warmStart", if pWarmStart p then 1 else 0), ("maxCorrection", pMaxCorrection p)
                , ("polygonStep", pPolygonStep p) ]
-      phaseNames = stepPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
+      phaseNames = stagedPhases
   in unlines
     [ "{"
     , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"
