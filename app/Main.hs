@@ -35,7 +35,7 @@ data Command
   | Compile FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
-  | Bench String String Int Int Bool (Maybe FilePath)
+  | Bench String String Int Int Bool (Maybe FilePath) Bool
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -60,7 +60,8 @@ commandParser = hsubparser
                                    <*> option auto (long "warmup" <> metavar "W" <> value 100 <> help "Steps to settle before timing (default 100)")
                                    <*> option auto (long "steps" <> metavar "S" <> value 50 <> help "Steps timed (default 50)")
                                    <*> switch (long "json" <> help "Print JSON")
-                                   <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing")))
+                                   <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
+                                   <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one"))
                        (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "compile" (info (Compile <$> strOption (long "out" <> metavar "DIR" <> value "Lib" <> help "The library's source directory (default: Lib)"))
         (progDesc "Print every catalogue space's step as Haskell (the compiled native step) into DIR/Manifold/Compiled"))
@@ -100,7 +101,7 @@ main = do
       putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
-    Bench spaces sizes warmup steps json scenes -> bench spaces sizes warmup steps json scenes
+    Bench spaces sizes warmup steps json scenes generic -> bench spaces sizes warmup steps json scenes generic
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -198,8 +199,8 @@ simulate path steps every = do
 
 -- | The native benchmark: progress on standard error, a table or JSON on
 -- standard output.
-bench :: String -> String -> Int -> Int -> Bool -> Maybe FilePath -> IO ()
-bench spacesArg sizesArg _ _ _ (Just dir) = do
+bench :: String -> String -> Int -> Int -> Bool -> Maybe FilePath -> Bool -> IO ()
+bench spacesArg sizesArg _ _ _ (Just dir) _ = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   createDirectoryIfMissing True dir
@@ -207,13 +208,13 @@ bench spacesArg sizesArg _ _ _ (Just dir) = do
     let file = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
     BL.writeFile file (A.encode (sceneJSON (benchScene sp n)))
     putStrLn file
-bench spacesArg sizesArg warmup steps json Nothing = do
+bench spacesArg sizesArg warmup steps json Nothing generic = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   when (warmup < 0) (usageError "--warmup: must not be negative")
   when (steps < 1) (usageError "--steps: must be at least 1")
   let progress msg = hPutStrLn stderr ("bench: " ++ msg)
-  results <- mapM (runBench progress warmup steps) [BenchCase sp n | sp <- spaces, n <- sizes]
+  results <- mapM (runBench progress generic warmup steps) [BenchCase sp n | sp <- spaces, n <- sizes]
   if json
     then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
                                           , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r

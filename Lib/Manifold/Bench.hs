@@ -130,12 +130,15 @@ benchScene sp n =
   in Scene sp 0.01 True 8 0.4 0 [BodySpec (shapeOf i) size 1 False p (V3 0 0 0) 0 0 | (i, p) <- zip [0 :: Int ..] points]
 
 -- | Settle for @warmup@ steps, then time @steps@ steps one by one, each
--- phase of each step on its own (the step's time is their sum).
-runBench :: (String -> IO ()) -> Int -> Int -> BenchCase -> IO BenchResult
-runBench progress warmup steps (BenchCase sp n) = do
+-- phase of each step on its own (the step's time is their sum). With
+-- @generic@, the world runs the generic step even where its space has a
+-- compiled one (to see what the compiled step gains).
+runBench :: (String -> IO ()) -> Bool -> Int -> Int -> BenchCase -> IO BenchResult
+runBench progress generic warmup steps (BenchCase sp n) = do
   let scene = benchScene sp n
       size = maybe 0 bsSize (listToMaybe (sceneBodies scene))
-  w <- loadScene 0 scene >>= either (\e -> ioError (userError ("bench scene " ++ spaceName sp ++ " " ++ show n ++ ": " ++ e))) pure
+  w <- (if generic then genericStep else id) <$>
+         (loadScene 0 scene >>= either (\e -> ioError (userError ("bench scene " ++ spaceName sp ++ " " ++ show n ++ ": " ++ e))) pure)
   placed <- bodyCount w
   progress (spaceName sp ++ ": " ++ show placed ++ " bodies of size " ++ show (roundTo 4 size) ++ ", settling")
   replicateM_ warmup (stepNative w)
