@@ -11,6 +11,8 @@ import Data.List (isInfixOf, isPrefixOf, sort)
 import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..), cross)
 import System.Exit (ExitCode (..))
+import System.FilePath ((</>))
+import System.IO.Temp (withSystemTempDirectory)
 import Test.Hspec
 
 import Manifold
@@ -175,3 +177,20 @@ spec = do
     it "negative length and non-positive step" $ do
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length=-1"] (const True)
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1", "--step", "0"] (const True)
+
+  describe "manifold compile and manifold bench" $ do
+    it "compile --out DIR writes the checked-in compiled step (Lib/Manifold/Compiled)" $
+      withSystemTempDirectory "manifold-compile" $ \dir -> do
+        (code, _, err) <- run ["compile", "--out", dir]
+        (code, err) `shouldBe` (ExitSuccess, "")
+        forM_ ["Compiled.hs", "Compiled/Shared.hs", "Compiled/Torus.hs", "Compiled/FlatKlein.hs"] $ \rel -> do
+          written <- readFile (dir </> "Manifold" </> rel)
+          checkedIn <- readFile ("Lib" </> "Manifold" </> rel)
+          (rel, written == checkedIn) `shouldBe` (rel, True)
+    it "bench --json times a scene with the compiled step and with --generic" $
+      forM_ [[], ["--generic"]] $ \extra -> do
+        (code, out, _) <- run (["bench", "--spaces", "torus", "--sizes", "10", "--warmup", "0", "--steps", "2", "--json"] ++ extra)
+        code `shouldBe` ExitSuccess
+        case A.eitherDecode out :: Either String [A.Value] of
+          Right [_] -> pure ()
+          other -> expectationFailure ("bench " ++ unwords extra ++ ": expected one result, got " ++ show other)
