@@ -28,33 +28,34 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (t12 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-4.0) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wr vel (3.0 * i3) t15
-        wr vel ((3.0 * i3) + 1.0) t16
-        wr vel ((3.0 * i3) + 2.0) t17
+        wrI vel (3 * i3) t15
+        wrI vel ((3 * i3) + 1) t16
+        wrI vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rd meta 1.0
-        wr meta 1.0 (t18 + 1.0)
+        t18 <- rdI meta 1
+        wrI meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -64,11 +65,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -78,81 +80,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -166,15 +177,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rd verts (3.0 * (97.0 * i31))
-    t68 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t69 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t67 <- rdI verts (3 * (97 * i31))
+    t68 <- rdI verts ((3 * (97 * i31)) + 1)
+    t69 <- rdI verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
-    loop 0.0 24.0 $ \i71 -> do
-      t72 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0))
-      t73 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 1.0)
-      t74 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 2.0)
-      t75 <- rd radii ((24.0 * i31) + i71)
+    loopI 0.0 24.0 $ \i71 -> do
+      let !d71 = fromIntegral i71 :: Double
+      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      t75 <- rdI radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -191,25 +203,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v86 <- newR 0.0
       v87 <- newR 0.0
       v88 <- newR 0.0
-      loop 0.0 24.0 $ \i89 -> do
-        t90 <- rd radii ((24.0 * i31) + i89)
-        loop 6.0 12.0 $ \i91 -> do
-          let !t92 = (i89 + i91)
-          t93 <- rd radii ((24.0 * i31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))
-          loop 1.0 4.0 $ \i94 -> do
-            t95 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0)))
-            t96 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 1.0)
-            t97 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 2.0)
-            t98 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94))
-            t99 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 1.0)
-            t100 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 2.0)
-            loop 1.0 4.0 $ \i101 -> do
-              t102 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0)))
-              t103 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 1.0)
-              t104 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 2.0)
-              t105 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101))
-              t106 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 1.0)
-              t107 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 2.0)
+      loopI 0.0 24.0 $ \i89 -> do
+        let !d89 = fromIntegral i89 :: Double
+        t90 <- rdI radii ((24 * i31) + i89)
+        loopI 6.0 12.0 $ \i91 -> do
+          let !d91 = fromIntegral i91 :: Double
+          let !t92 = (d89 + d91)
+          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          loopI 1.0 4.0 $ \i94 -> do
+            let !d94 = fromIntegral i94 :: Double
+            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            loopI 1.0 4.0 $ \i101 -> do
+              let !d101 = fromIntegral i101 :: Double
+              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -242,19 +258,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t137 = (if (negate t130) > 0 then (if (negate t133) > 0 then 0.0 else t133) else (if t134 > 0 then (if (negate t136) > 0 then 0.0 else t136) else t129))
               let !t138 = (if t134 > 0 then 1.0 else t130)
               let !t139 = (if (negate t138) > 0 then 0.0 else t138)
-              let !t140 = ((0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0)))) - t108)
+              let !t140 = ((0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0)))) - t108)
               let !t141 = ((t95 + (t137 * t116)) + (negate (t102 + (t139 * t110))))
               let !t142 = ((t96 + (t137 * t117)) + (negate (t103 + (t139 * t112))))
               let !t143 = ((t97 + (t137 * t118)) + (negate (t104 + (t139 * t114))))
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
-                setR v82 (0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0))))
-                t145 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0)))
-                t146 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 1.0)
-                t147 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 2.0)
-                t148 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))
-                t149 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)
-                t150 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)
+                setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
+                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -324,89 +340,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s203 = (t202 * t198)
         let !s204 = (t202 * t199)
         let !s205 = (t202 * t200)
-        t206 <- rd meta 2.0
-        t207 <- rd meta 3.0
+        t206 <- rdI meta 2
+        t207 <- rdI meta 3
         if (((8.0 * (if (1.0 - t207) > 0 then 1.0 else t207)) - t206) - 0.5) > 0 then do
-          wr meta 2.0 (t206 + 1.0)
-          t208 <- rd pos (3.0 * i31)
-          t209 <- rd pos ((3.0 * i31) + 1.0)
-          t210 <- rd pos ((3.0 * i31) + 2.0)
-          t211 <- rd normal (3.0 * i31)
-          t212 <- rd normal ((3.0 * i31) + 1.0)
-          t213 <- rd normal ((3.0 * i31) + 2.0)
-          t214 <- rd axis (3.0 * i31)
-          t215 <- rd axis ((3.0 * i31) + 1.0)
-          t216 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t206 + 1.0)
+          t208 <- rdI pos (3 * i31)
+          t209 <- rdI pos ((3 * i31) + 1)
+          t210 <- rdI pos ((3 * i31) + 2)
+          t211 <- rdI normal (3 * i31)
+          t212 <- rdI normal ((3 * i31) + 1)
+          t213 <- rdI normal ((3 * i31) + 2)
+          t214 <- rdI axis (3 * i31)
+          t215 <- rdI axis ((3 * i31) + 1)
+          t216 <- rdI axis ((3 * i31) + 2)
           let !s217 = ((t212 * t216) - (t213 * t215))
           let !s218 = ((t213 * t214) - (t211 * t216))
           let !s219 = ((t211 * t215) - (t212 * t214))
-          t220 <- rd scalars (6.0 * i31)
-          t221 <- rd scalars ((6.0 * i31) + 5.0)
-          t222 <- rd scalars ((6.0 * i31) + 2.0)
-          t223 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t206) i31
-          wr contacts ((30.0 * t206) + 1.0) (-1.0)
-          wr contacts ((30.0 * t206) + 2.0) i31
-          wr contacts ((30.0 * t206) + 3.0) 12.0
-          wr contacts ((30.0 * t206) + 4.0) (s203 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t211)))
-          wr contacts (((30.0 * t206) + 4.0) + 1.0) (s204 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t212)))
-          wr contacts (((30.0 * t206) + 4.0) + 2.0) (s205 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t213)))
-          wr contacts ((30.0 * t206) + 7.0) 0.0
-          wr contacts ((30.0 * t206) + 12.0) 0.0
-          wr contacts (((30.0 * t206) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t206) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t206) + 15.0) 0.0
-          wr contacts ((30.0 * t206) + 20.0) t162
-          wr contacts ((30.0 * t206) + 26.0) 0.6
-          wr contacts ((30.0 * t206) + 27.0) t163
-          wr contacts (((30.0 * t206) + 27.0) + 1.0) t164
-          wr contacts (((30.0 * t206) + 27.0) + 2.0) t165
+          t220 <- rdI scalars (6 * i31)
+          t221 <- rdI scalars ((6 * i31) + 5)
+          t222 <- rdI scalars ((6 * i31) + 2)
+          t223 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t206)) d31
+          wrI contacts ((30 * (truncate t206)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t206)) + 2) d31
+          wrI contacts ((30 * (truncate t206)) + 3) 12.0
+          wrI contacts ((30 * (truncate t206)) + 4) (s203 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t211)))
+          wrI contacts (((30 * (truncate t206)) + 4) + 1) (s204 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t212)))
+          wrI contacts (((30 * (truncate t206)) + 4) + 2) (s205 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t213)))
+          wrI contacts ((30 * (truncate t206)) + 7) 0.0
+          wrI contacts ((30 * (truncate t206)) + 12) 0.0
+          wrI contacts (((30 * (truncate t206)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t206)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t206)) + 15) 0.0
+          wrI contacts ((30 * (truncate t206)) + 20) t162
+          wrI contacts ((30 * (truncate t206)) + 26) 0.6
+          wrI contacts ((30 * (truncate t206)) + 27) t163
+          wrI contacts (((30 * (truncate t206)) + 27) + 1) t164
+          wrI contacts (((30 * (truncate t206)) + 27) + 2) t165
           if (-0.5) > 0 then do
-            t224 <- rd pos (-3.0)
-            t225 <- rd pos (-2.0)
-            t226 <- rd pos (-1.0)
-            t227 <- rd normal (-3.0)
-            t228 <- rd normal (-2.0)
-            t229 <- rd normal (-1.0)
-            t230 <- rd axis (-3.0)
-            t231 <- rd axis (-2.0)
-            t232 <- rd axis (-1.0)
+            t224 <- rdI pos (-3)
+            t225 <- rdI pos (-2)
+            t226 <- rdI pos (-1)
+            t227 <- rdI normal (-3)
+            t228 <- rdI normal (-2)
+            t229 <- rdI normal (-1)
+            t230 <- rdI axis (-3)
+            t231 <- rdI axis (-2)
+            t232 <- rdI axis (-1)
             let !s233 = ((t228 * t232) - (t229 * t231))
             let !s234 = ((t229 * t230) - (t227 * t232))
             let !s235 = ((t227 * t231) - (t228 * t230))
-            t236 <- rd scalars (-6.0)
-            t237 <- rd scalars (-1.0)
-            t238 <- rd scalars (-4.0)
-            t239 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t206) + 8.0) (s203 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t227)))
-            wr contacts (((30.0 * t206) + 8.0) + 1.0) (s204 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t228)))
-            wr contacts (((30.0 * t206) + 8.0) + 2.0) (s205 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t229)))
+            t236 <- rdI scalars (-6)
+            t237 <- rdI scalars (-1)
+            t238 <- rdI scalars (-4)
+            t239 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t206)) + 8) (s203 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t227)))
+            wrI contacts (((30 * (truncate t206)) + 8) + 1) (s204 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t228)))
+            wrI contacts (((30 * (truncate t206)) + 8) + 2) (s205 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t229)))
             let !t240 = (t164 + (negate t225))
             let !t241 = (t165 + (negate t226))
             let !t242 = (t163 + (negate t224))
-            wr contacts ((30.0 * t206) + 11.0) (((((t240 * s205) - (t241 * s204)) * t227) + (((t241 * s203) - (t242 * s205)) * t228)) + (((t242 * s204) - (t240 * s203)) * t229))
+            wrI contacts ((30 * (truncate t206)) + 11) (((((t240 * s205) - (t241 * s204)) * t227) + (((t241 * s203) - (t242 * s205)) * t228)) + (((t242 * s204) - (t240 * s203)) * t229))
             let !t243 = ((t212 * s205) - (t213 * s204))
-            wr contacts ((30.0 * t206) + 16.0) (t243 + (negate ((((t227 * t243) + (t228 * ((t213 * s203) - (t211 * s205)))) + (t229 * ((t211 * s204) - (t212 * s203)))) * t227)))
+            wrI contacts ((30 * (truncate t206)) + 16) (t243 + (negate ((((t227 * t243) + (t228 * ((t213 * s203) - (t211 * s205)))) + (t229 * ((t211 * s204) - (t212 * s203)))) * t227)))
             let !t244 = ((t213 * s203) - (t211 * s205))
-            wr contacts (((30.0 * t206) + 16.0) + 1.0) (t244 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * ((t211 * s204) - (t212 * s203)))) * t228)))
+            wrI contacts (((30 * (truncate t206)) + 16) + 1) (t244 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * ((t211 * s204) - (t212 * s203)))) * t228)))
             let !t245 = ((t211 * s204) - (t212 * s203))
-            wr contacts (((30.0 * t206) + 16.0) + 2.0) (t245 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * t245)) * t229)))
-            wr contacts ((30.0 * t206) + 19.0) (((((t240 * t245) - (t241 * t244)) * t227) + (((t241 * t243) - (t242 * t245)) * t228)) + (((t242 * t244) - (t240 * t243)) * t229))
+            wrI contacts (((30 * (truncate t206)) + 16) + 2) (t245 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * t245)) * t229)))
+            wrI contacts ((30 * (truncate t206)) + 19) (((((t240 * t245) - (t241 * t244)) * t227) + (((t241 * t243) - (t242 * t245)) * t228)) + (((t242 * t244) - (t240 * t243)) * t229))
             pure ()
           else do
-            wr contacts ((30.0 * t206) + 8.0) 0.0
-            wr contacts (((30.0 * t206) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t206) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t206) + 11.0) 0.0
-            wr contacts ((30.0 * t206) + 16.0) 0.0
-            wr contacts (((30.0 * t206) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t206) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t206) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t206)) + 8) 0.0
+            wrI contacts (((30 * (truncate t206)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t206)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t206)) + 11) 0.0
+            wrI contacts ((30 * (truncate t206)) + 16) 0.0
+            wrI contacts (((30 * (truncate t206)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t206)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t206)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t246 <- rd meta 6.0
-          wr meta 6.0 (t246 + 1.0)
+          t246 <- rdI meta 6
+          wrI meta 6 (t246 + 1.0)
           pure ()
         pure ()
       else do
@@ -419,43 +435,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -463,12 +480,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -476,20 +493,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -500,18 +517,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -519,98 +537,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1165,12 +1183,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s689 = ((t139 * (t671 * (t688 * t684))) + (t255 * s553))
       let !s690 = ((t139 * (t671 * (t688 * t685))) + (t255 * s554))
       let !s691 = ((t139 * (t671 * (t688 * t686))) + (t255 * s555))
-      t692 <- rd mouse 4.0
-      t693 <- rd mouse 5.0
-      t694 <- rd mouse 6.0
-      t695 <- rd mouse 7.0
-      t696 <- rd mouse 8.0
-      t697 <- rd mouse 9.0
+      t692 <- rdI mouse 4
+      t693 <- rdI mouse 5
+      t694 <- rdI mouse 6
+      t695 <- rdI mouse 7
+      t696 <- rdI mouse 8
+      t697 <- rdI mouse 9
       let !t698 = (recip t101)
       let !t699 = (6.283185307179586 * t695)
       let !s700 = (recip (t103 * ((((2.0 * t698) * t696) * t699) + (t103 * ((t698 * t699) * t699)))))
@@ -1181,68 +1199,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s705 = (s668 + (negate t692))
       let !s706 = (s669 + (negate t693))
       let !s707 = (s670 + (negate t694))
-      t708 <- rd mouse 10.0
-      t709 <- rd scalars ((6.0 * t100) + 2.0)
-      t710 <- rd scalars ((6.0 * t100) + 3.0)
-      t711 <- rd vel (3.0 * t100)
-      t712 <- rd vel ((3.0 * t100) + 1.0)
-      t713 <- rd vel ((3.0 * t100) + 2.0)
-      t714 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t711 + ((t709 * t708) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t712 + ((t709 * t708) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t713 + ((t709 * t708) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t714 + ((t710 * t708) * (((((s703 * t112) - (s704 * t111)) * t107) + (((s704 * t110) - (s702 * t112)) * t108)) + (((s702 * t111) - (s703 * t110)) * t109))))
-      t715 <- rd mouse 11.0
-      t716 <- rd scalars ((6.0 * t100) + 2.0)
-      t717 <- rd scalars ((6.0 * t100) + 3.0)
-      t718 <- rd vel (3.0 * t100)
-      t719 <- rd vel ((3.0 * t100) + 1.0)
-      t720 <- rd vel ((3.0 * t100) + 2.0)
-      t721 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t718 + ((t716 * t715) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t719 + ((t716 * t715) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t720 + ((t716 * t715) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t721 + ((t717 * t715) * (((((s703 * s115) - (s704 * s114)) * t107) + (((s704 * s113) - (s702 * s115)) * t108)) + (((s702 * s114) - (s703 * s113)) * t109))))
+      t708 <- rdI mouse 10
+      t709 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t710 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t711 <- rdI vel (3 * (truncate t100))
+      t712 <- rdI vel ((3 * (truncate t100)) + 1)
+      t713 <- rdI vel ((3 * (truncate t100)) + 2)
+      t714 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t711 + ((t709 * t708) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t712 + ((t709 * t708) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t713 + ((t709 * t708) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t714 + ((t710 * t708) * (((((s703 * t112) - (s704 * t111)) * t107) + (((s704 * t110) - (s702 * t112)) * t108)) + (((s702 * t111) - (s703 * t110)) * t109))))
+      t715 <- rdI mouse 11
+      t716 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t717 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t718 <- rdI vel (3 * (truncate t100))
+      t719 <- rdI vel ((3 * (truncate t100)) + 1)
+      t720 <- rdI vel ((3 * (truncate t100)) + 2)
+      t721 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t718 + ((t716 * t715) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t719 + ((t716 * t715) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t720 + ((t716 * t715) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t721 + ((t717 * t715) * (((((s703 * s115) - (s704 * s114)) * t107) + (((s704 * s113) - (s702 * s115)) * t108)) + (((s702 * s114) - (s703 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i722 -> do
-    loop 0.0 t9 $ \i723 -> do
-      t724 <- rd contacts (30.0 * i723)
-      t725 <- rd contacts ((30.0 * i723) + 1.0)
-      t726 <- rd contacts ((30.0 * i723) + 12.0)
-      t727 <- rd contacts (((30.0 * i723) + 12.0) + 1.0)
-      t728 <- rd contacts (((30.0 * i723) + 12.0) + 2.0)
-      t729 <- rd contacts ((30.0 * i723) + 15.0)
-      t730 <- rd contacts ((30.0 * i723) + 16.0)
-      t731 <- rd contacts (((30.0 * i723) + 16.0) + 1.0)
-      t732 <- rd contacts (((30.0 * i723) + 16.0) + 2.0)
-      t733 <- rd contacts ((30.0 * i723) + 19.0)
-      t734 <- rd contacts ((30.0 * i723) + 4.0)
-      t735 <- rd contacts (((30.0 * i723) + 4.0) + 1.0)
-      t736 <- rd contacts (((30.0 * i723) + 4.0) + 2.0)
-      t737 <- rd contacts ((30.0 * i723) + 7.0)
-      t738 <- rd contacts ((30.0 * i723) + 8.0)
-      t739 <- rd contacts (((30.0 * i723) + 8.0) + 1.0)
-      t740 <- rd contacts (((30.0 * i723) + 8.0) + 2.0)
-      t741 <- rd contacts ((30.0 * i723) + 11.0)
-      t742 <- rd contacts ((30.0 * i723) + 26.0)
-      t743 <- rd contacts ((30.0 * i723) + 24.0)
-      t744 <- rd contacts ((30.0 * i723) + 25.0)
-      t745 <- rd contacts ((30.0 * i723) + 22.0)
-      t746 <- rd vel (3.0 * t724)
-      t747 <- rd vel ((3.0 * t724) + 1.0)
-      t748 <- rd vel ((3.0 * t724) + 2.0)
-      t749 <- rd scalars ((6.0 * t724) + 1.0)
+  loopI 0.0 t1 $ \i722 -> do
+    let !d722 = fromIntegral i722 :: Double
+    loopI 0.0 t9 $ \i723 -> do
+      let !d723 = fromIntegral i723 :: Double
+      t724 <- rdI contacts (30 * i723)
+      t725 <- rdI contacts ((30 * i723) + 1)
+      t726 <- rdI contacts ((30 * i723) + 12)
+      t727 <- rdI contacts (((30 * i723) + 12) + 1)
+      t728 <- rdI contacts (((30 * i723) + 12) + 2)
+      t729 <- rdI contacts ((30 * i723) + 15)
+      t730 <- rdI contacts ((30 * i723) + 16)
+      t731 <- rdI contacts (((30 * i723) + 16) + 1)
+      t732 <- rdI contacts (((30 * i723) + 16) + 2)
+      t733 <- rdI contacts ((30 * i723) + 19)
+      t734 <- rdI contacts ((30 * i723) + 4)
+      t735 <- rdI contacts (((30 * i723) + 4) + 1)
+      t736 <- rdI contacts (((30 * i723) + 4) + 2)
+      t737 <- rdI contacts ((30 * i723) + 7)
+      t738 <- rdI contacts ((30 * i723) + 8)
+      t739 <- rdI contacts (((30 * i723) + 8) + 1)
+      t740 <- rdI contacts (((30 * i723) + 8) + 2)
+      t741 <- rdI contacts ((30 * i723) + 11)
+      t742 <- rdI contacts ((30 * i723) + 26)
+      t743 <- rdI contacts ((30 * i723) + 24)
+      t744 <- rdI contacts ((30 * i723) + 25)
+      t745 <- rdI contacts ((30 * i723) + 22)
+      t746 <- rdI vel (3 * (truncate t724))
+      t747 <- rdI vel ((3 * (truncate t724)) + 1)
+      t748 <- rdI vel ((3 * (truncate t724)) + 2)
+      t749 <- rdI scalars ((6 * (truncate t724)) + 1)
       v750 <- newR 0.0
       if (t725 + 0.5) > 0 then do
-        t751 <- rd vel (3.0 * t725)
-        t752 <- rd vel ((3.0 * t725) + 1.0)
-        t753 <- rd vel ((3.0 * t725) + 2.0)
-        t754 <- rd scalars ((6.0 * t725) + 1.0)
+        t751 <- rdI vel (3 * (truncate t725))
+        t752 <- rdI vel ((3 * (truncate t725)) + 1)
+        t753 <- rdI vel ((3 * (truncate t725)) + 2)
+        t754 <- rdI scalars ((6 * (truncate t725)) + 1)
         setR v750 ((((t730 * t751) + (t731 * t752)) + (t732 * t753)) + (t733 * t754))
         pure ()
       else do
@@ -1255,43 +1275,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t760 = (if (t759 - t757) > 0 then t757 else t759)
       let !t761 = (if (t758 - t760) > 0 then t758 else t760)
       let !s762 = (if (1.0 - (abs (t761 - t761))) > 0 then t761 else 0.0)
-      wr contacts ((30.0 * i723) + 25.0) s762
-      t763 <- rd scalars ((6.0 * t724) + 2.0)
-      t764 <- rd scalars ((6.0 * t724) + 3.0)
-      t765 <- rd vel (3.0 * t724)
-      t766 <- rd vel ((3.0 * t724) + 1.0)
-      t767 <- rd vel ((3.0 * t724) + 2.0)
-      t768 <- rd scalars ((6.0 * t724) + 1.0)
-      wr vel (3.0 * t724) (t765 + ((t763 * (s762 - t744)) * t726))
-      wr vel ((3.0 * t724) + 1.0) (t766 + ((t763 * (s762 - t744)) * t727))
-      wr vel ((3.0 * t724) + 2.0) (t767 + ((t763 * (s762 - t744)) * t728))
-      wr scalars ((6.0 * t724) + 1.0) (t768 + ((t764 * (s762 - t744)) * t729))
+      wrI contacts ((30 * i723) + 25) s762
+      t763 <- rdI scalars ((6 * (truncate t724)) + 2)
+      t764 <- rdI scalars ((6 * (truncate t724)) + 3)
+      t765 <- rdI vel (3 * (truncate t724))
+      t766 <- rdI vel ((3 * (truncate t724)) + 1)
+      t767 <- rdI vel ((3 * (truncate t724)) + 2)
+      t768 <- rdI scalars ((6 * (truncate t724)) + 1)
+      wrI vel (3 * (truncate t724)) (t765 + ((t763 * (s762 - t744)) * t726))
+      wrI vel ((3 * (truncate t724)) + 1) (t766 + ((t763 * (s762 - t744)) * t727))
+      wrI vel ((3 * (truncate t724)) + 2) (t767 + ((t763 * (s762 - t744)) * t728))
+      wrI scalars ((6 * (truncate t724)) + 1) (t768 + ((t764 * (s762 - t744)) * t729))
       if (t725 + 0.5) > 0 then do
-        t769 <- rd scalars ((6.0 * t725) + 2.0)
-        t770 <- rd scalars ((6.0 * t725) + 3.0)
-        t771 <- rd vel (3.0 * t725)
-        t772 <- rd vel ((3.0 * t725) + 1.0)
-        t773 <- rd vel ((3.0 * t725) + 2.0)
-        t774 <- rd scalars ((6.0 * t725) + 1.0)
-        wr vel (3.0 * t725) (t771 + ((t769 * (negate (s762 - t744))) * t730))
-        wr vel ((3.0 * t725) + 1.0) (t772 + ((t769 * (negate (s762 - t744))) * t731))
-        wr vel ((3.0 * t725) + 2.0) (t773 + ((t769 * (negate (s762 - t744))) * t732))
-        wr scalars ((6.0 * t725) + 1.0) (t774 + ((t770 * (negate (s762 - t744))) * t733))
+        t769 <- rdI scalars ((6 * (truncate t725)) + 2)
+        t770 <- rdI scalars ((6 * (truncate t725)) + 3)
+        t771 <- rdI vel (3 * (truncate t725))
+        t772 <- rdI vel ((3 * (truncate t725)) + 1)
+        t773 <- rdI vel ((3 * (truncate t725)) + 2)
+        t774 <- rdI scalars ((6 * (truncate t725)) + 1)
+        wrI vel (3 * (truncate t725)) (t771 + ((t769 * (negate (s762 - t744))) * t730))
+        wrI vel ((3 * (truncate t725)) + 1) (t772 + ((t769 * (negate (s762 - t744))) * t731))
+        wrI vel ((3 * (truncate t725)) + 2) (t773 + ((t769 * (negate (s762 - t744))) * t732))
+        wrI scalars ((6 * (truncate t725)) + 1) (t774 + ((t770 * (negate (s762 - t744))) * t733))
         pure ()
       else do
         pure ()
-      t775 <- rd contacts ((30.0 * i723) + 21.0)
-      t776 <- rd contacts ((30.0 * i723) + 23.0)
-      t777 <- rd vel (3.0 * t724)
-      t778 <- rd vel ((3.0 * t724) + 1.0)
-      t779 <- rd vel ((3.0 * t724) + 2.0)
-      t780 <- rd scalars ((6.0 * t724) + 1.0)
+      t775 <- rdI contacts ((30 * i723) + 21)
+      t776 <- rdI contacts ((30 * i723) + 23)
+      t777 <- rdI vel (3 * (truncate t724))
+      t778 <- rdI vel ((3 * (truncate t724)) + 1)
+      t779 <- rdI vel ((3 * (truncate t724)) + 2)
+      t780 <- rdI scalars ((6 * (truncate t724)) + 1)
       v781 <- newR 0.0
       if (t725 + 0.5) > 0 then do
-        t782 <- rd vel (3.0 * t725)
-        t783 <- rd vel ((3.0 * t725) + 1.0)
-        t784 <- rd vel ((3.0 * t725) + 2.0)
-        t785 <- rd scalars ((6.0 * t725) + 1.0)
+        t782 <- rdI vel (3 * (truncate t725))
+        t783 <- rdI vel ((3 * (truncate t725)) + 1)
+        t784 <- rdI vel ((3 * (truncate t725)) + 2)
+        t785 <- rdI scalars ((6 * (truncate t725)) + 1)
         setR v781 ((((t738 * t782) + (t739 * t783)) + (t740 * t784)) + (t741 * t785))
         pure ()
       else do
@@ -1301,73 +1321,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t788 = (t743 + ((t742 * (t776 - s787)) * t775))
       let !t789 = (if (negate t788) > 0 then 0.0 else t788)
       let !s790 = (if (1.0 - (abs (t789 - t789))) > 0 then t789 else 0.0)
-      wr contacts ((30.0 * i723) + 24.0) s790
-      t791 <- rd scalars ((6.0 * t724) + 2.0)
-      t792 <- rd scalars ((6.0 * t724) + 3.0)
-      t793 <- rd vel (3.0 * t724)
-      t794 <- rd vel ((3.0 * t724) + 1.0)
-      t795 <- rd vel ((3.0 * t724) + 2.0)
-      t796 <- rd scalars ((6.0 * t724) + 1.0)
-      wr vel (3.0 * t724) (t793 + ((t791 * (s790 - t743)) * t734))
-      wr vel ((3.0 * t724) + 1.0) (t794 + ((t791 * (s790 - t743)) * t735))
-      wr vel ((3.0 * t724) + 2.0) (t795 + ((t791 * (s790 - t743)) * t736))
-      wr scalars ((6.0 * t724) + 1.0) (t796 + ((t792 * (s790 - t743)) * t737))
+      wrI contacts ((30 * i723) + 24) s790
+      t791 <- rdI scalars ((6 * (truncate t724)) + 2)
+      t792 <- rdI scalars ((6 * (truncate t724)) + 3)
+      t793 <- rdI vel (3 * (truncate t724))
+      t794 <- rdI vel ((3 * (truncate t724)) + 1)
+      t795 <- rdI vel ((3 * (truncate t724)) + 2)
+      t796 <- rdI scalars ((6 * (truncate t724)) + 1)
+      wrI vel (3 * (truncate t724)) (t793 + ((t791 * (s790 - t743)) * t734))
+      wrI vel ((3 * (truncate t724)) + 1) (t794 + ((t791 * (s790 - t743)) * t735))
+      wrI vel ((3 * (truncate t724)) + 2) (t795 + ((t791 * (s790 - t743)) * t736))
+      wrI scalars ((6 * (truncate t724)) + 1) (t796 + ((t792 * (s790 - t743)) * t737))
       if (t725 + 0.5) > 0 then do
-        t797 <- rd scalars ((6.0 * t725) + 2.0)
-        t798 <- rd scalars ((6.0 * t725) + 3.0)
-        t799 <- rd vel (3.0 * t725)
-        t800 <- rd vel ((3.0 * t725) + 1.0)
-        t801 <- rd vel ((3.0 * t725) + 2.0)
-        t802 <- rd scalars ((6.0 * t725) + 1.0)
-        wr vel (3.0 * t725) (t799 + ((t797 * (negate (s790 - t743))) * t738))
-        wr vel ((3.0 * t725) + 1.0) (t800 + ((t797 * (negate (s790 - t743))) * t739))
-        wr vel ((3.0 * t725) + 2.0) (t801 + ((t797 * (negate (s790 - t743))) * t740))
-        wr scalars ((6.0 * t725) + 1.0) (t802 + ((t798 * (negate (s790 - t743))) * t741))
+        t797 <- rdI scalars ((6 * (truncate t725)) + 2)
+        t798 <- rdI scalars ((6 * (truncate t725)) + 3)
+        t799 <- rdI vel (3 * (truncate t725))
+        t800 <- rdI vel ((3 * (truncate t725)) + 1)
+        t801 <- rdI vel ((3 * (truncate t725)) + 2)
+        t802 <- rdI scalars ((6 * (truncate t725)) + 1)
+        wrI vel (3 * (truncate t725)) (t799 + ((t797 * (negate (s790 - t743))) * t738))
+        wrI vel ((3 * (truncate t725)) + 1) (t800 + ((t797 * (negate (s790 - t743))) * t739))
+        wrI vel ((3 * (truncate t725)) + 2) (t801 + ((t797 * (negate (s790 - t743))) * t740))
+        wrI scalars ((6 * (truncate t725)) + 1) (t802 + ((t798 * (negate (s790 - t743))) * t741))
         pure ()
       else do
         pure ()
       pure ()
-    t803 <- rd mouse 0.0
+    t803 <- rdI mouse 0
     if t803 > 0 then do
-      t804 <- rd mouse 1.0
-      t805 <- rd scalars ((6.0 * t804) + 2.0)
+      t804 <- rdI mouse 1
+      t805 <- rdI scalars ((6 * (truncate t804)) + 2)
       if t805 > 0 then do
-        t806 <- rd scalars ((6.0 * t804) + 3.0)
-        t807 <- rd params 0.0
-        t808 <- rd pos (3.0 * t804)
-        t809 <- rd pos ((3.0 * t804) + 1.0)
-        t810 <- rd pos ((3.0 * t804) + 2.0)
-        t811 <- rd normal (3.0 * t804)
-        t812 <- rd normal ((3.0 * t804) + 1.0)
-        t813 <- rd normal ((3.0 * t804) + 2.0)
-        t814 <- rd axis (3.0 * t804)
-        t815 <- rd axis ((3.0 * t804) + 1.0)
-        t816 <- rd axis ((3.0 * t804) + 2.0)
+        t806 <- rdI scalars ((6 * (truncate t804)) + 3)
+        t807 <- rdI params 0
+        t808 <- rdI pos (3 * (truncate t804))
+        t809 <- rdI pos ((3 * (truncate t804)) + 1)
+        t810 <- rdI pos ((3 * (truncate t804)) + 2)
+        t811 <- rdI normal (3 * (truncate t804))
+        t812 <- rdI normal ((3 * (truncate t804)) + 1)
+        t813 <- rdI normal ((3 * (truncate t804)) + 2)
+        t814 <- rdI axis (3 * (truncate t804))
+        t815 <- rdI axis ((3 * (truncate t804)) + 1)
+        t816 <- rdI axis ((3 * (truncate t804)) + 2)
         let !s817 = ((t812 * t816) - (t813 * t815))
         let !s818 = ((t813 * t814) - (t811 * t816))
         let !s819 = ((t811 * t815) - (t812 * t814))
-        t820 <- rd scalars (6.0 * t804)
-        t821 <- rd scalars ((6.0 * t804) + 5.0)
-        t822 <- rd scalars ((6.0 * t804) + 2.0)
-        t823 <- rd scalars ((6.0 * t804) + 3.0)
-        t824 <- rd pos (3.0 * t804)
-        t825 <- rd pos ((3.0 * t804) + 1.0)
-        t826 <- rd pos ((3.0 * t804) + 2.0)
-        t827 <- rd normal (3.0 * t804)
-        t828 <- rd normal ((3.0 * t804) + 1.0)
-        t829 <- rd normal ((3.0 * t804) + 2.0)
-        t830 <- rd axis (3.0 * t804)
-        t831 <- rd axis ((3.0 * t804) + 1.0)
-        t832 <- rd axis ((3.0 * t804) + 2.0)
+        t820 <- rdI scalars (6 * (truncate t804))
+        t821 <- rdI scalars ((6 * (truncate t804)) + 5)
+        t822 <- rdI scalars ((6 * (truncate t804)) + 2)
+        t823 <- rdI scalars ((6 * (truncate t804)) + 3)
+        t824 <- rdI pos (3 * (truncate t804))
+        t825 <- rdI pos ((3 * (truncate t804)) + 1)
+        t826 <- rdI pos ((3 * (truncate t804)) + 2)
+        t827 <- rdI normal (3 * (truncate t804))
+        t828 <- rdI normal ((3 * (truncate t804)) + 1)
+        t829 <- rdI normal ((3 * (truncate t804)) + 2)
+        t830 <- rdI axis (3 * (truncate t804))
+        t831 <- rdI axis ((3 * (truncate t804)) + 1)
+        t832 <- rdI axis ((3 * (truncate t804)) + 2)
         let !s833 = ((t828 * t832) - (t829 * t831))
         let !s834 = ((t829 * t830) - (t827 * t832))
         let !s835 = ((t827 * t831) - (t828 * t830))
-        t836 <- rd scalars (6.0 * t804)
-        t837 <- rd scalars ((6.0 * t804) + 5.0)
-        t838 <- rd scalars ((6.0 * t804) + 2.0)
-        t839 <- rd scalars ((6.0 * t804) + 3.0)
-        t840 <- rd mouse 2.0
-        t841 <- rd mouse 3.0
+        t836 <- rdI scalars (6 * (truncate t804))
+        t837 <- rdI scalars ((6 * (truncate t804)) + 5)
+        t838 <- rdI scalars ((6 * (truncate t804)) + 2)
+        t839 <- rdI scalars ((6 * (truncate t804)) + 3)
+        t840 <- rdI mouse 2
+        t841 <- rdI mouse 3
         let !t842 = (t840 / 4.0)
         let !t843 = (if (abs t842) > 0 then 1.0 else 0.0)
         let !t844 = (t836 + t841)
@@ -1922,12 +1942,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s1393 = ((t843 * (t1375 * (t1392 * t1388))) + (t959 * s1257))
         let !s1394 = ((t843 * (t1375 * (t1392 * t1389))) + (t959 * s1258))
         let !s1395 = ((t843 * (t1375 * (t1392 * t1390))) + (t959 * s1259))
-        t1396 <- rd mouse 4.0
-        t1397 <- rd mouse 5.0
-        t1398 <- rd mouse 6.0
-        t1399 <- rd mouse 7.0
-        t1400 <- rd mouse 8.0
-        t1401 <- rd mouse 9.0
+        t1396 <- rdI mouse 4
+        t1397 <- rdI mouse 5
+        t1398 <- rdI mouse 6
+        t1399 <- rdI mouse 7
+        t1400 <- rdI mouse 8
+        t1401 <- rdI mouse 9
         let !t1402 = (recip t805)
         let !t1403 = (6.283185307179586 * t1399)
         let !s1404 = (recip (t807 * ((((2.0 * t1402) * t1400) * t1403) + (t807 * ((t1402 * t1403) * t1403)))))
@@ -1938,11 +1958,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s1409 = (s1372 + (negate t1396))
         let !s1410 = (s1373 + (negate t1397))
         let !s1411 = (s1374 + (negate t1398))
-        t1412 <- rd mouse 10.0
-        t1413 <- rd vel (3.0 * t804)
-        t1414 <- rd vel ((3.0 * t804) + 1.0)
-        t1415 <- rd vel ((3.0 * t804) + 2.0)
-        t1416 <- rd scalars ((6.0 * t804) + 1.0)
+        t1412 <- rdI mouse 10
+        t1413 <- rdI vel (3 * (truncate t804))
+        t1414 <- rdI vel ((3 * (truncate t804)) + 1)
+        t1415 <- rdI vel ((3 * (truncate t804)) + 2)
+        t1416 <- rdI scalars ((6 * (truncate t804)) + 1)
         let !t1417 = (t1401 * t807)
         let !t1418 = (negate t1417)
         let !t1419 = (((((s1407 * t816) - (s1408 * t815)) * t811) + (((s1408 * t814) - (s1406 * t816)) * t812)) + (((s1406 * t815) - (s1407 * t814)) * t813))
@@ -1950,38 +1970,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t1421 = (if (t1420 - t1417) > 0 then t1417 else t1420)
         let !t1422 = (if (t1418 - t1421) > 0 then t1418 else t1421)
         let !s1423 = (if (1.0 - (abs (t1422 - t1422))) > 0 then t1422 else 0.0)
-        wr mouse 10.0 s1423
-        t1424 <- rd scalars ((6.0 * t804) + 2.0)
-        t1425 <- rd scalars ((6.0 * t804) + 3.0)
-        t1426 <- rd vel (3.0 * t804)
-        t1427 <- rd vel ((3.0 * t804) + 1.0)
-        t1428 <- rd vel ((3.0 * t804) + 2.0)
-        t1429 <- rd scalars ((6.0 * t804) + 1.0)
-        wr vel (3.0 * t804) (t1426 + ((t1424 * (s1423 - t1412)) * t814))
-        wr vel ((3.0 * t804) + 1.0) (t1427 + ((t1424 * (s1423 - t1412)) * t815))
-        wr vel ((3.0 * t804) + 2.0) (t1428 + ((t1424 * (s1423 - t1412)) * t816))
-        wr scalars ((6.0 * t804) + 1.0) (t1429 + ((t1425 * (s1423 - t1412)) * t1419))
-        t1430 <- rd mouse 11.0
-        t1431 <- rd vel (3.0 * t804)
-        t1432 <- rd vel ((3.0 * t804) + 1.0)
-        t1433 <- rd vel ((3.0 * t804) + 2.0)
-        t1434 <- rd scalars ((6.0 * t804) + 1.0)
+        wrI mouse 10 s1423
+        t1424 <- rdI scalars ((6 * (truncate t804)) + 2)
+        t1425 <- rdI scalars ((6 * (truncate t804)) + 3)
+        t1426 <- rdI vel (3 * (truncate t804))
+        t1427 <- rdI vel ((3 * (truncate t804)) + 1)
+        t1428 <- rdI vel ((3 * (truncate t804)) + 2)
+        t1429 <- rdI scalars ((6 * (truncate t804)) + 1)
+        wrI vel (3 * (truncate t804)) (t1426 + ((t1424 * (s1423 - t1412)) * t814))
+        wrI vel ((3 * (truncate t804)) + 1) (t1427 + ((t1424 * (s1423 - t1412)) * t815))
+        wrI vel ((3 * (truncate t804)) + 2) (t1428 + ((t1424 * (s1423 - t1412)) * t816))
+        wrI scalars ((6 * (truncate t804)) + 1) (t1429 + ((t1425 * (s1423 - t1412)) * t1419))
+        t1430 <- rdI mouse 11
+        t1431 <- rdI vel (3 * (truncate t804))
+        t1432 <- rdI vel ((3 * (truncate t804)) + 1)
+        t1433 <- rdI vel ((3 * (truncate t804)) + 2)
+        t1434 <- rdI scalars ((6 * (truncate t804)) + 1)
         let !t1435 = (((((s1407 * s819) - (s1408 * s818)) * t811) + (((s1408 * s817) - (s1406 * s819)) * t812)) + (((s1406 * s818) - (s1407 * s817)) * t813))
         let !t1436 = (t1430 + ((negate ((((((s817 * t1431) + (s818 * t1432)) + (s819 * t1433)) + (t1435 * t1434)) + (s1405 * (((s1409 * s817) + (s1410 * s818)) + (s1411 * s819)))) + (s1404 * t1430))) / (((t805 * (((s817 * s817) + (s818 * s818)) + (s819 * s819))) + ((t806 * t1435) * t1435)) + s1404)))
         let !t1437 = (if (t1436 - t1417) > 0 then t1417 else t1436)
         let !t1438 = (if (t1418 - t1437) > 0 then t1418 else t1437)
         let !s1439 = (if (1.0 - (abs (t1438 - t1438))) > 0 then t1438 else 0.0)
-        wr mouse 11.0 s1439
-        t1440 <- rd scalars ((6.0 * t804) + 2.0)
-        t1441 <- rd scalars ((6.0 * t804) + 3.0)
-        t1442 <- rd vel (3.0 * t804)
-        t1443 <- rd vel ((3.0 * t804) + 1.0)
-        t1444 <- rd vel ((3.0 * t804) + 2.0)
-        t1445 <- rd scalars ((6.0 * t804) + 1.0)
-        wr vel (3.0 * t804) (t1442 + ((t1440 * (s1439 - t1430)) * s817))
-        wr vel ((3.0 * t804) + 1.0) (t1443 + ((t1440 * (s1439 - t1430)) * s818))
-        wr vel ((3.0 * t804) + 2.0) (t1444 + ((t1440 * (s1439 - t1430)) * s819))
-        wr scalars ((6.0 * t804) + 1.0) (t1445 + ((t1441 * (s1439 - t1430)) * t1435))
+        wrI mouse 11 s1439
+        t1440 <- rdI scalars ((6 * (truncate t804)) + 2)
+        t1441 <- rdI scalars ((6 * (truncate t804)) + 3)
+        t1442 <- rdI vel (3 * (truncate t804))
+        t1443 <- rdI vel ((3 * (truncate t804)) + 1)
+        t1444 <- rdI vel ((3 * (truncate t804)) + 2)
+        t1445 <- rdI scalars ((6 * (truncate t804)) + 1)
+        wrI vel (3 * (truncate t804)) (t1442 + ((t1440 * (s1439 - t1430)) * s817))
+        wrI vel ((3 * (truncate t804)) + 1) (t1443 + ((t1440 * (s1439 - t1430)) * s818))
+        wrI vel ((3 * (truncate t804)) + 2) (t1444 + ((t1440 * (s1439 - t1430)) * s819))
+        wrI scalars ((6 * (truncate t804)) + 1) (t1445 + ((t1441 * (s1439 - t1430)) * t1435))
         pure ()
       else do
         pure ()
@@ -1989,48 +2009,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t1446 <- rd meta 0.0
-  loop 0.0 t1446 $ \i1447 -> do
-    wr bodyPrev ((2.0 * i1447) + 1.0) 0.0
+  t1446 <- rdI meta 0
+  loopI 0.0 t1446 $ \i1447 -> do
+    let !d1447 = fromIntegral i1447 :: Double
+    wrI bodyPrev ((2 * i1447) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i1448 -> do
-    t1449 <- rd contacts ((30.0 * i1448) + 2.0)
-    wr prev (4.0 * i1448) t1449
-    t1450 <- rd contacts ((30.0 * i1448) + 3.0)
-    wr prev ((4.0 * i1448) + 1.0) t1450
-    t1451 <- rd contacts ((30.0 * i1448) + 24.0)
-    wr prev ((4.0 * i1448) + 2.0) t1451
-    t1452 <- rd contacts ((30.0 * i1448) + 25.0)
-    wr prev ((4.0 * i1448) + 3.0) t1452
-    t1453 <- rd bodyPrev ((2.0 * t1449) + 1.0)
+  loopI 0.0 t9 $ \i1448 -> do
+    let !d1448 = fromIntegral i1448 :: Double
+    t1449 <- rdI contacts ((30 * i1448) + 2)
+    wrI prev (4 * i1448) t1449
+    t1450 <- rdI contacts ((30 * i1448) + 3)
+    wrI prev ((4 * i1448) + 1) t1450
+    t1451 <- rdI contacts ((30 * i1448) + 24)
+    wrI prev ((4 * i1448) + 2) t1451
+    t1452 <- rdI contacts ((30 * i1448) + 25)
+    wrI prev ((4 * i1448) + 3) t1452
+    t1453 <- rdI bodyPrev ((2 * (truncate t1449)) + 1)
     if (0.5 - t1453) > 0 then do
-      wr bodyPrev (2.0 * t1449) i1448
+      wrI bodyPrev (2 * (truncate t1449)) d1448
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t1449) + 1.0) (t1453 + 1.0)
+    wrI bodyPrev ((2 * (truncate t1449)) + 1) (t1453 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = ((abs t18) - 0.6)
@@ -2270,58 +2293,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t253 = (t12 + (t1 * t13))
     let !t254 = (1.0 - (abs ((((((((((((((s191 - s191) + (s192 - s192)) + (s193 - s193)) + (s231 - s231)) + (s232 - s232)) + (s233 - s233)) + (s240 - s240)) + (s241 - s241)) + (s242 - s242)) + (s204 - s204)) + (s205 - s205)) + (s206 - s206)) + (t253 - t253)) + (s251 - s251))))
     if (if (t252 - t254) > 0 then t254 else t252) > 0 then do
-      wr pos (3.0 * i2) s191
-      wr pos ((3.0 * i2) + 1.0) s192
-      wr pos ((3.0 * i2) + 2.0) s193
-      wr vel (3.0 * i2) s231
-      wr vel ((3.0 * i2) + 1.0) s232
-      wr vel ((3.0 * i2) + 2.0) s233
-      wr axis (3.0 * i2) s240
-      wr axis ((3.0 * i2) + 1.0) s241
-      wr axis ((3.0 * i2) + 2.0) s242
-      wr normal (3.0 * i2) s204
-      wr normal ((3.0 * i2) + 1.0) s205
-      wr normal ((3.0 * i2) + 2.0) s206
-      wr scalars (6.0 * i2) t253
+      wrI pos (3 * i2) s191
+      wrI pos ((3 * i2) + 1) s192
+      wrI pos ((3 * i2) + 2) s193
+      wrI vel (3 * i2) s231
+      wrI vel ((3 * i2) + 1) s232
+      wrI vel ((3 * i2) + 2) s233
+      wrI axis (3 * i2) s240
+      wrI axis ((3 * i2) + 1) s241
+      wrI axis ((3 * i2) + 2) s242
+      wrI normal (3 * i2) s204
+      wrI normal ((3 * i2) + 1) s205
+      wrI normal ((3 * i2) + 2) s206
+      wrI scalars (6 * i2) t253
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t255 <- rd meta 1.0
-      wr meta 1.0 (t255 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t255 <- rdI meta 1
+      wrI meta 1 (t255 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -2445,9 +2470,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s139 = ((t28 * t125) + (t113 * t8))
         let !s140 = ((t28 * t126) + (t113 * t9))
         let !s141 = ((t28 * t128) + (t113 * t10))
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s114 - s114) + (s115 - s115)) + (s116 - s116)))) > 0 then s114 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s114 - s114) + (s115 - s115)) + (s116 - s116)))) > 0 then s115 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s114 - s114) + (s115 - s115)) + (s116 - s116)))) > 0 then s116 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s114 - s114) + (s115 - s115)) + (s116 - s116)))) > 0 then s114 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s114 - s114) + (s115 - s115)) + (s116 - s116)))) > 0 then s115 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s114 - s114) + (s115 - s115)) + (s116 - s116)))) > 0 then s116 else t4)
         let !t142 = (s114 + (s27 * s136))
         let !t143 = ((abs t142) - 0.6)
         let !t144 = (negate t143)
@@ -2559,9 +2584,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s250 = ((t28 * t236) + (t113 * s139))
         let !s251 = ((t28 * t237) + (t113 * s140))
         let !s252 = ((t28 * t239) + (t113 * s141))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s226 - s226) + (s227 - s227)) + (s228 - s228)))) > 0 then s226 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s226 - s226) + (s227 - s227)) + (s228 - s228)))) > 0 then s227 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s226 - s226) + (s227 - s227)) + (s228 - s228)))) > 0 then s228 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s226 - s226) + (s227 - s227)) + (s228 - s228)))) > 0 then s226 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s226 - s226) + (s227 - s227)) + (s228 - s228)))) > 0 then s227 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s226 - s226) + (s227 - s227)) + (s228 - s228)))) > 0 then s228 else t4)
         let !t253 = (s226 + (s27 * s247))
         let !t254 = ((abs t253) - 0.6)
         let !t255 = (negate t254)
@@ -2673,9 +2698,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s361 = ((t28 * t347) + (t113 * s250))
         let !s362 = ((t28 * t348) + (t113 * s251))
         let !s363 = ((t28 * t350) + (t113 * s252))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s337 - s337) + (s338 - s338)) + (s339 - s339)))) > 0 then s337 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s337 - s337) + (s338 - s338)) + (s339 - s339)))) > 0 then s338 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s337 - s337) + (s338 - s338)) + (s339 - s339)))) > 0 then s339 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s337 - s337) + (s338 - s338)) + (s339 - s339)))) > 0 then s337 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s337 - s337) + (s338 - s338)) + (s339 - s339)))) > 0 then s338 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s337 - s337) + (s338 - s338)) + (s339 - s339)))) > 0 then s339 else t4)
         let !t364 = (s337 + (s27 * s358))
         let !t365 = ((abs t364) - 0.6)
         let !t366 = (negate t365)
@@ -2787,9 +2812,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s472 = ((t28 * t458) + (t113 * s361))
         let !s473 = ((t28 * t459) + (t113 * s362))
         let !s474 = ((t28 * t461) + (t113 * s363))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s448 - s448) + (s449 - s449)) + (s450 - s450)))) > 0 then s448 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s448 - s448) + (s449 - s449)) + (s450 - s450)))) > 0 then s449 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s448 - s448) + (s449 - s449)) + (s450 - s450)))) > 0 then s450 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s448 - s448) + (s449 - s449)) + (s450 - s450)))) > 0 then s448 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s448 - s448) + (s449 - s449)) + (s450 - s450)))) > 0 then s449 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s448 - s448) + (s449 - s449)) + (s450 - s450)))) > 0 then s450 else t4)
         pure ()
       else do
         let !t475 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2885,18 +2910,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s565 = (if t564 > 0 then t561 else t2)
         let !s566 = (if t564 > 0 then t562 else t3)
         let !s567 = (if t564 > 0 then t563 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s565
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s566
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s567
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s565 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s566 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s567 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s565 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s566 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s567 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s565 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s566 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s567 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s565
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s566
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s567
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s565 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s566 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s567 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s565 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s566 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s567 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s565 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s566 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s567 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,33 +28,34 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (t13 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * (negate (t14 * t12))))
       let !t17 = (t10 + (t1 * ((-4.0) + (negate (t14 * t13)))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wr vel (3.0 * i3) t15
-        wr vel ((3.0 * i3) + 1.0) t16
-        wr vel ((3.0 * i3) + 2.0) t17
+        wrI vel (3 * i3) t15
+        wrI vel ((3 * i3) + 1) t16
+        wrI vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rd meta 1.0
-        wr meta 1.0 (t18 + 1.0)
+        t18 <- rdI meta 1
+        wrI meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -64,11 +65,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -78,81 +80,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -166,20 +177,21 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rd normal (3.0 * i31)
-    t68 <- rd normal ((3.0 * i31) + 1.0)
-    t69 <- rd normal ((3.0 * i31) + 2.0)
+    t67 <- rdI normal (3 * i31)
+    t68 <- rdI normal ((3 * i31) + 1)
+    t69 <- rdI normal ((3 * i31) + 2)
     v70 <- newR 0.0
     v71 <- newR (-1.0)
-    loop 0.0 24.0 $ \i72 -> do
-      t73 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i72 * 4.0)) + 3.0))
-      t74 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i72 * 4.0)) + 3.0)) + 1.0)
-      t75 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i72 * 4.0)) + 3.0)) + 2.0)
+    loopI 0.0 24.0 $ \i72 -> do
+      let !d72 = fromIntegral i72 :: Double
+      t73 <- rdI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
+      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
+      t75 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
       let !s76 = (1.0 - (sqrt ((t73 * t73) + (t75 * t75))))
       t77 <- getR v70
       if ((negate s76) - t77) > 0 then do
         setR v70 (negate s76)
-        setR v71 i72
+        setR v71 d72
         pure ()
       else do
         pure ()
@@ -187,9 +199,9 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t78 <- getR v70
     if t78 > 0 then do
       t79 <- getR v71
-      t80 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t79 * 4.0)) + 3.0))
-      t81 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t79 * 4.0)) + 3.0)) + 1.0)
-      t82 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t79 * 4.0)) + 3.0)) + 2.0)
+      t80 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3))
+      t81 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 1)
+      t82 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 2)
       let !t83 = (recip (2.0 * (sqrt ((t80 * t80) + (t82 * t82)))))
       let !t84 = (negate (t83 * (t80 + t80)))
       let !t85 = (negate (t83 * (t82 + t82)))
@@ -204,23 +216,24 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v94 <- newR (-1.0e300)
       v95 <- newR (-1.0)
       v96 <- newR (-1.0)
-      loop 0.0 24.0 $ \i97 -> do
-        t98 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i97 * 4.0)) + 3.0))
-        t99 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i97 * 4.0)) + 3.0)) + 1.0)
-        t100 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i97 * 4.0)) + 3.0)) + 2.0)
+      loopI 0.0 24.0 $ \i97 -> do
+        let !d97 = fromIntegral i97 :: Double
+        t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i97 * 4)) + 3))
+        t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i97 * 4)) + 3)) + 1)
+        t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i97 * 4)) + 3)) + 2)
         if (negate (1.0 - (sqrt ((t98 * t98) + (t100 * t100))))) > 0 then do
           let !s101 = (((t98 * s90) + (t99 * s91)) + (t100 * s92))
           t102 <- getR v93
           if (t102 - s101) > 0 then do
             setR v93 s101
-            setR v95 i97
+            setR v95 d97
             pure ()
           else do
             pure ()
           t103 <- getR v94
           if (s101 - t103) > 0 then do
             setR v94 s101
-            setR v96 i97
+            setR v96 d97
             pure ()
           else do
             pure ()
@@ -230,202 +243,202 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t104 <- getR v95
       t105 <- getR v96
-      t106 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t104 * 4.0)) + 3.0))
-      t107 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t104 * 4.0)) + 3.0)) + 1.0)
-      t108 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t104 * 4.0)) + 3.0)) + 2.0)
+      t106 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3))
+      t107 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3)) + 1)
+      t108 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3)) + 2)
       let !t109 = (recip (2.0 * (sqrt ((t106 * t106) + (t108 * t108)))))
       let !s110 = (negate (t109 * (t106 + t106)))
       let !s111 = (negate (t109 * (t108 + t108)))
       let !s112 = (sqrt ((s110 * s110) + (s111 * s111)))
       let !s113 = (1.0 - (sqrt ((t106 * t106) + (t108 * t108))))
-      t114 <- rd meta 2.0
-      t115 <- rd meta 3.0
+      t114 <- rdI meta 2
+      t115 <- rdI meta 3
       if (((8.0 * (if (1.0 - t115) > 0 then 1.0 else t115)) - t114) - 0.5) > 0 then do
-        wr meta 2.0 (t114 + 1.0)
-        t116 <- rd pos (3.0 * i31)
-        t117 <- rd pos ((3.0 * i31) + 1.0)
-        t118 <- rd pos ((3.0 * i31) + 2.0)
-        t119 <- rd normal (3.0 * i31)
-        t120 <- rd normal ((3.0 * i31) + 1.0)
-        t121 <- rd normal ((3.0 * i31) + 2.0)
-        t122 <- rd axis (3.0 * i31)
-        t123 <- rd axis ((3.0 * i31) + 1.0)
-        t124 <- rd axis ((3.0 * i31) + 2.0)
+        wrI meta 2 (t114 + 1.0)
+        t116 <- rdI pos (3 * i31)
+        t117 <- rdI pos ((3 * i31) + 1)
+        t118 <- rdI pos ((3 * i31) + 2)
+        t119 <- rdI normal (3 * i31)
+        t120 <- rdI normal ((3 * i31) + 1)
+        t121 <- rdI normal ((3 * i31) + 2)
+        t122 <- rdI axis (3 * i31)
+        t123 <- rdI axis ((3 * i31) + 1)
+        t124 <- rdI axis ((3 * i31) + 2)
         let !s125 = ((t120 * t124) - (t121 * t123))
         let !s126 = ((t121 * t122) - (t119 * t124))
         let !s127 = ((t119 * t123) - (t120 * t122))
-        t128 <- rd scalars (6.0 * i31)
-        t129 <- rd scalars ((6.0 * i31) + 5.0)
-        t130 <- rd scalars ((6.0 * i31) + 2.0)
-        t131 <- rd scalars ((6.0 * i31) + 3.0)
-        wr contacts (30.0 * t114) i31
-        wr contacts ((30.0 * t114) + 1.0) (-1.0)
-        wr contacts ((30.0 * t114) + 2.0) i31
-        wr contacts ((30.0 * t114) + 3.0) 8.0
+        t128 <- rdI scalars (6 * i31)
+        t129 <- rdI scalars ((6 * i31) + 5)
+        t130 <- rdI scalars ((6 * i31) + 2)
+        t131 <- rdI scalars ((6 * i31) + 3)
+        wrI contacts (30 * (truncate t114)) d31
+        wrI contacts ((30 * (truncate t114)) + 1) (-1.0)
+        wrI contacts ((30 * (truncate t114)) + 2) d31
+        wrI contacts ((30 * (truncate t114)) + 3) 8.0
         let !t132 = (if s112 > 0 then (recip (if (s112 - 1.0e-300) > 0 then s112 else 1.0e-300)) else 0.0)
         let !t133 = (t132 * s110)
-        wr contacts ((30.0 * t114) + 4.0) (t133 + (negate (((t119 * t133) + (t121 * (t132 * s111))) * t119)))
-        wr contacts (((30.0 * t114) + 4.0) + 1.0) (negate (((t119 * t133) + (t121 * (t132 * s111))) * t120))
+        wrI contacts ((30 * (truncate t114)) + 4) (t133 + (negate (((t119 * t133) + (t121 * (t132 * s111))) * t119)))
+        wrI contacts (((30 * (truncate t114)) + 4) + 1) (negate (((t119 * t133) + (t121 * (t132 * s111))) * t120))
         let !t134 = (t132 * s111)
-        wr contacts (((30.0 * t114) + 4.0) + 2.0) (t134 + (negate (((t119 * t133) + (t121 * t134)) * t121)))
+        wrI contacts (((30 * (truncate t114)) + 4) + 2) (t134 + (negate (((t119 * t133) + (t121 * t134)) * t121)))
         let !t135 = (t107 + (negate t117))
-        wr contacts ((30.0 * t114) + 7.0) ((((t135 * t134) * t119) + ((((t108 + (negate t118)) * t133) - ((t106 + (negate t116)) * t134)) * t120)) + ((negate (t135 * t133)) * t121))
+        wrI contacts ((30 * (truncate t114)) + 7) ((((t135 * t134) * t119) + ((((t108 + (negate t118)) * t133) - ((t106 + (negate t116)) * t134)) * t120)) + ((negate (t135 * t133)) * t121))
         let !t136 = (t120 * t134)
-        wr contacts ((30.0 * t114) + 12.0) (t136 + (negate ((((t119 * t136) + (t120 * ((t121 * t133) - (t119 * t134)))) + (t121 * (negate (t120 * t133)))) * t119)))
+        wrI contacts ((30 * (truncate t114)) + 12) (t136 + (negate ((((t119 * t136) + (t120 * ((t121 * t133) - (t119 * t134)))) + (t121 * (negate (t120 * t133)))) * t119)))
         let !t137 = ((t121 * t133) - (t119 * t134))
-        wr contacts (((30.0 * t114) + 12.0) + 1.0) (t137 + (negate ((((t119 * t136) + (t120 * t137)) + (t121 * (negate (t120 * t133)))) * t120)))
+        wrI contacts (((30 * (truncate t114)) + 12) + 1) (t137 + (negate ((((t119 * t136) + (t120 * t137)) + (t121 * (negate (t120 * t133)))) * t120)))
         let !t138 = (negate (t120 * t133))
-        wr contacts (((30.0 * t114) + 12.0) + 2.0) (t138 + (negate ((((t119 * t136) + (t120 * t137)) + (t121 * t138)) * t121)))
+        wrI contacts (((30 * (truncate t114)) + 12) + 2) (t138 + (negate ((((t119 * t136) + (t120 * t137)) + (t121 * t138)) * t121)))
         let !t139 = (t108 + (negate t118))
         let !t140 = (t106 + (negate t116))
-        wr contacts ((30.0 * t114) + 15.0) (((((t135 * t138) - (t139 * t137)) * t119) + (((t139 * t136) - (t140 * t138)) * t120)) + (((t140 * t137) - (t135 * t136)) * t121))
-        wr contacts ((30.0 * t114) + 20.0) (if s112 > 0 then ((negate s113) / (if (s112 - 1.0e-300) > 0 then s112 else 1.0e-300)) else 0.0)
-        wr contacts ((30.0 * t114) + 26.0) 1.0
-        wr contacts ((30.0 * t114) + 27.0) t106
-        wr contacts (((30.0 * t114) + 27.0) + 1.0) t107
-        wr contacts (((30.0 * t114) + 27.0) + 2.0) t108
+        wrI contacts ((30 * (truncate t114)) + 15) (((((t135 * t138) - (t139 * t137)) * t119) + (((t139 * t136) - (t140 * t138)) * t120)) + (((t140 * t137) - (t135 * t136)) * t121))
+        wrI contacts ((30 * (truncate t114)) + 20) (if s112 > 0 then ((negate s113) / (if (s112 - 1.0e-300) > 0 then s112 else 1.0e-300)) else 0.0)
+        wrI contacts ((30 * (truncate t114)) + 26) 1.0
+        wrI contacts ((30 * (truncate t114)) + 27) t106
+        wrI contacts (((30 * (truncate t114)) + 27) + 1) t107
+        wrI contacts (((30 * (truncate t114)) + 27) + 2) t108
         if (-0.5) > 0 then do
-          t141 <- rd pos (-3.0)
-          t142 <- rd pos (-2.0)
-          t143 <- rd pos (-1.0)
-          t144 <- rd normal (-3.0)
-          t145 <- rd normal (-2.0)
-          t146 <- rd normal (-1.0)
-          t147 <- rd axis (-3.0)
-          t148 <- rd axis (-2.0)
-          t149 <- rd axis (-1.0)
+          t141 <- rdI pos (-3)
+          t142 <- rdI pos (-2)
+          t143 <- rdI pos (-1)
+          t144 <- rdI normal (-3)
+          t145 <- rdI normal (-2)
+          t146 <- rdI normal (-1)
+          t147 <- rdI axis (-3)
+          t148 <- rdI axis (-2)
+          t149 <- rdI axis (-1)
           let !s150 = ((t145 * t149) - (t146 * t148))
           let !s151 = ((t146 * t147) - (t144 * t149))
           let !s152 = ((t144 * t148) - (t145 * t147))
-          t153 <- rd scalars (-6.0)
-          t154 <- rd scalars (-1.0)
-          t155 <- rd scalars (-4.0)
-          t156 <- rd scalars (-3.0)
-          wr contacts ((30.0 * t114) + 8.0) (t133 + (negate (((t144 * t133) + (t146 * t134)) * t144)))
-          wr contacts (((30.0 * t114) + 8.0) + 1.0) (negate (((t144 * t133) + (t146 * t134)) * t145))
-          wr contacts (((30.0 * t114) + 8.0) + 2.0) (t134 + (negate (((t144 * t133) + (t146 * t134)) * t146)))
+          t153 <- rdI scalars (-6)
+          t154 <- rdI scalars (-1)
+          t155 <- rdI scalars (-4)
+          t156 <- rdI scalars (-3)
+          wrI contacts ((30 * (truncate t114)) + 8) (t133 + (negate (((t144 * t133) + (t146 * t134)) * t144)))
+          wrI contacts (((30 * (truncate t114)) + 8) + 1) (negate (((t144 * t133) + (t146 * t134)) * t145))
+          wrI contacts (((30 * (truncate t114)) + 8) + 2) (t134 + (negate (((t144 * t133) + (t146 * t134)) * t146)))
           let !t157 = (t107 + (negate t142))
-          wr contacts ((30.0 * t114) + 11.0) ((((t157 * t134) * t144) + ((((t108 + (negate t143)) * t133) - ((t106 + (negate t141)) * t134)) * t145)) + ((negate (t157 * t133)) * t146))
-          wr contacts ((30.0 * t114) + 16.0) (t136 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t144)))
-          wr contacts (((30.0 * t114) + 16.0) + 1.0) (t137 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t145)))
-          wr contacts (((30.0 * t114) + 16.0) + 2.0) (t138 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t146)))
+          wrI contacts ((30 * (truncate t114)) + 11) ((((t157 * t134) * t144) + ((((t108 + (negate t143)) * t133) - ((t106 + (negate t141)) * t134)) * t145)) + ((negate (t157 * t133)) * t146))
+          wrI contacts ((30 * (truncate t114)) + 16) (t136 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t144)))
+          wrI contacts (((30 * (truncate t114)) + 16) + 1) (t137 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t145)))
+          wrI contacts (((30 * (truncate t114)) + 16) + 2) (t138 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t146)))
           let !t158 = (t108 + (negate t143))
           let !t159 = (t106 + (negate t141))
-          wr contacts ((30.0 * t114) + 19.0) (((((t157 * t138) - (t158 * t137)) * t144) + (((t158 * t136) - (t159 * t138)) * t145)) + (((t159 * t137) - (t157 * t136)) * t146))
+          wrI contacts ((30 * (truncate t114)) + 19) (((((t157 * t138) - (t158 * t137)) * t144) + (((t158 * t136) - (t159 * t138)) * t145)) + (((t159 * t137) - (t157 * t136)) * t146))
           pure ()
         else do
-          wr contacts ((30.0 * t114) + 8.0) 0.0
-          wr contacts (((30.0 * t114) + 8.0) + 1.0) 0.0
-          wr contacts (((30.0 * t114) + 8.0) + 2.0) 0.0
-          wr contacts ((30.0 * t114) + 11.0) 0.0
-          wr contacts ((30.0 * t114) + 16.0) 0.0
-          wr contacts (((30.0 * t114) + 16.0) + 1.0) 0.0
-          wr contacts (((30.0 * t114) + 16.0) + 2.0) 0.0
-          wr contacts ((30.0 * t114) + 19.0) 0.0
+          wrI contacts ((30 * (truncate t114)) + 8) 0.0
+          wrI contacts (((30 * (truncate t114)) + 8) + 1) 0.0
+          wrI contacts (((30 * (truncate t114)) + 8) + 2) 0.0
+          wrI contacts ((30 * (truncate t114)) + 11) 0.0
+          wrI contacts ((30 * (truncate t114)) + 16) 0.0
+          wrI contacts (((30 * (truncate t114)) + 16) + 1) 0.0
+          wrI contacts (((30 * (truncate t114)) + 16) + 2) 0.0
+          wrI contacts ((30 * (truncate t114)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t160 <- rd meta 6.0
-        wr meta 6.0 (t160 + 1.0)
+        t160 <- rdI meta 6
+        wrI meta 6 (t160 + 1.0)
         pure ()
       if (abs (t105 - t104)) > 0 then do
-        t161 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t105 * 4.0)) + 3.0))
-        t162 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t105 * 4.0)) + 3.0)) + 1.0)
-        t163 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t105 * 4.0)) + 3.0)) + 2.0)
+        t161 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3))
+        t162 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3)) + 1)
+        t163 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3)) + 2)
         let !t164 = (recip (2.0 * (sqrt ((t161 * t161) + (t163 * t163)))))
         let !s165 = (negate (t164 * (t161 + t161)))
         let !s166 = (negate (t164 * (t163 + t163)))
         let !s167 = (sqrt ((s165 * s165) + (s166 * s166)))
         let !s168 = (1.0 - (sqrt ((t161 * t161) + (t163 * t163))))
-        t169 <- rd meta 2.0
-        t170 <- rd meta 3.0
+        t169 <- rdI meta 2
+        t170 <- rdI meta 3
         if (((8.0 * (if (1.0 - t170) > 0 then 1.0 else t170)) - t169) - 0.5) > 0 then do
-          wr meta 2.0 (t169 + 1.0)
-          t171 <- rd pos (3.0 * i31)
-          t172 <- rd pos ((3.0 * i31) + 1.0)
-          t173 <- rd pos ((3.0 * i31) + 2.0)
-          t174 <- rd normal (3.0 * i31)
-          t175 <- rd normal ((3.0 * i31) + 1.0)
-          t176 <- rd normal ((3.0 * i31) + 2.0)
-          t177 <- rd axis (3.0 * i31)
-          t178 <- rd axis ((3.0 * i31) + 1.0)
-          t179 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t169 + 1.0)
+          t171 <- rdI pos (3 * i31)
+          t172 <- rdI pos ((3 * i31) + 1)
+          t173 <- rdI pos ((3 * i31) + 2)
+          t174 <- rdI normal (3 * i31)
+          t175 <- rdI normal ((3 * i31) + 1)
+          t176 <- rdI normal ((3 * i31) + 2)
+          t177 <- rdI axis (3 * i31)
+          t178 <- rdI axis ((3 * i31) + 1)
+          t179 <- rdI axis ((3 * i31) + 2)
           let !s180 = ((t175 * t179) - (t176 * t178))
           let !s181 = ((t176 * t177) - (t174 * t179))
           let !s182 = ((t174 * t178) - (t175 * t177))
-          t183 <- rd scalars (6.0 * i31)
-          t184 <- rd scalars ((6.0 * i31) + 5.0)
-          t185 <- rd scalars ((6.0 * i31) + 2.0)
-          t186 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t169) i31
-          wr contacts ((30.0 * t169) + 1.0) (-1.0)
-          wr contacts ((30.0 * t169) + 2.0) i31
-          wr contacts ((30.0 * t169) + 3.0) 9.0
+          t183 <- rdI scalars (6 * i31)
+          t184 <- rdI scalars ((6 * i31) + 5)
+          t185 <- rdI scalars ((6 * i31) + 2)
+          t186 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t169)) d31
+          wrI contacts ((30 * (truncate t169)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t169)) + 2) d31
+          wrI contacts ((30 * (truncate t169)) + 3) 9.0
           let !t187 = (if s167 > 0 then (recip (if (s167 - 1.0e-300) > 0 then s167 else 1.0e-300)) else 0.0)
           let !t188 = (t187 * s165)
-          wr contacts ((30.0 * t169) + 4.0) (t188 + (negate (((t174 * t188) + (t176 * (t187 * s166))) * t174)))
-          wr contacts (((30.0 * t169) + 4.0) + 1.0) (negate (((t174 * t188) + (t176 * (t187 * s166))) * t175))
+          wrI contacts ((30 * (truncate t169)) + 4) (t188 + (negate (((t174 * t188) + (t176 * (t187 * s166))) * t174)))
+          wrI contacts (((30 * (truncate t169)) + 4) + 1) (negate (((t174 * t188) + (t176 * (t187 * s166))) * t175))
           let !t189 = (t187 * s166)
-          wr contacts (((30.0 * t169) + 4.0) + 2.0) (t189 + (negate (((t174 * t188) + (t176 * t189)) * t176)))
+          wrI contacts (((30 * (truncate t169)) + 4) + 2) (t189 + (negate (((t174 * t188) + (t176 * t189)) * t176)))
           let !t190 = (t162 + (negate t172))
-          wr contacts ((30.0 * t169) + 7.0) ((((t190 * t189) * t174) + ((((t163 + (negate t173)) * t188) - ((t161 + (negate t171)) * t189)) * t175)) + ((negate (t190 * t188)) * t176))
+          wrI contacts ((30 * (truncate t169)) + 7) ((((t190 * t189) * t174) + ((((t163 + (negate t173)) * t188) - ((t161 + (negate t171)) * t189)) * t175)) + ((negate (t190 * t188)) * t176))
           let !t191 = (t175 * t189)
-          wr contacts ((30.0 * t169) + 12.0) (t191 + (negate ((((t174 * t191) + (t175 * ((t176 * t188) - (t174 * t189)))) + (t176 * (negate (t175 * t188)))) * t174)))
+          wrI contacts ((30 * (truncate t169)) + 12) (t191 + (negate ((((t174 * t191) + (t175 * ((t176 * t188) - (t174 * t189)))) + (t176 * (negate (t175 * t188)))) * t174)))
           let !t192 = ((t176 * t188) - (t174 * t189))
-          wr contacts (((30.0 * t169) + 12.0) + 1.0) (t192 + (negate ((((t174 * t191) + (t175 * t192)) + (t176 * (negate (t175 * t188)))) * t175)))
+          wrI contacts (((30 * (truncate t169)) + 12) + 1) (t192 + (negate ((((t174 * t191) + (t175 * t192)) + (t176 * (negate (t175 * t188)))) * t175)))
           let !t193 = (negate (t175 * t188))
-          wr contacts (((30.0 * t169) + 12.0) + 2.0) (t193 + (negate ((((t174 * t191) + (t175 * t192)) + (t176 * t193)) * t176)))
+          wrI contacts (((30 * (truncate t169)) + 12) + 2) (t193 + (negate ((((t174 * t191) + (t175 * t192)) + (t176 * t193)) * t176)))
           let !t194 = (t163 + (negate t173))
           let !t195 = (t161 + (negate t171))
-          wr contacts ((30.0 * t169) + 15.0) (((((t190 * t193) - (t194 * t192)) * t174) + (((t194 * t191) - (t195 * t193)) * t175)) + (((t195 * t192) - (t190 * t191)) * t176))
-          wr contacts ((30.0 * t169) + 20.0) (if s167 > 0 then ((negate s168) / (if (s167 - 1.0e-300) > 0 then s167 else 1.0e-300)) else 0.0)
-          wr contacts ((30.0 * t169) + 26.0) 1.0
-          wr contacts ((30.0 * t169) + 27.0) t161
-          wr contacts (((30.0 * t169) + 27.0) + 1.0) t162
-          wr contacts (((30.0 * t169) + 27.0) + 2.0) t163
+          wrI contacts ((30 * (truncate t169)) + 15) (((((t190 * t193) - (t194 * t192)) * t174) + (((t194 * t191) - (t195 * t193)) * t175)) + (((t195 * t192) - (t190 * t191)) * t176))
+          wrI contacts ((30 * (truncate t169)) + 20) (if s167 > 0 then ((negate s168) / (if (s167 - 1.0e-300) > 0 then s167 else 1.0e-300)) else 0.0)
+          wrI contacts ((30 * (truncate t169)) + 26) 1.0
+          wrI contacts ((30 * (truncate t169)) + 27) t161
+          wrI contacts (((30 * (truncate t169)) + 27) + 1) t162
+          wrI contacts (((30 * (truncate t169)) + 27) + 2) t163
           if (-0.5) > 0 then do
-            t196 <- rd pos (-3.0)
-            t197 <- rd pos (-2.0)
-            t198 <- rd pos (-1.0)
-            t199 <- rd normal (-3.0)
-            t200 <- rd normal (-2.0)
-            t201 <- rd normal (-1.0)
-            t202 <- rd axis (-3.0)
-            t203 <- rd axis (-2.0)
-            t204 <- rd axis (-1.0)
+            t196 <- rdI pos (-3)
+            t197 <- rdI pos (-2)
+            t198 <- rdI pos (-1)
+            t199 <- rdI normal (-3)
+            t200 <- rdI normal (-2)
+            t201 <- rdI normal (-1)
+            t202 <- rdI axis (-3)
+            t203 <- rdI axis (-2)
+            t204 <- rdI axis (-1)
             let !s205 = ((t200 * t204) - (t201 * t203))
             let !s206 = ((t201 * t202) - (t199 * t204))
             let !s207 = ((t199 * t203) - (t200 * t202))
-            t208 <- rd scalars (-6.0)
-            t209 <- rd scalars (-1.0)
-            t210 <- rd scalars (-4.0)
-            t211 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t169) + 8.0) (t188 + (negate (((t199 * t188) + (t201 * t189)) * t199)))
-            wr contacts (((30.0 * t169) + 8.0) + 1.0) (negate (((t199 * t188) + (t201 * t189)) * t200))
-            wr contacts (((30.0 * t169) + 8.0) + 2.0) (t189 + (negate (((t199 * t188) + (t201 * t189)) * t201)))
+            t208 <- rdI scalars (-6)
+            t209 <- rdI scalars (-1)
+            t210 <- rdI scalars (-4)
+            t211 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t169)) + 8) (t188 + (negate (((t199 * t188) + (t201 * t189)) * t199)))
+            wrI contacts (((30 * (truncate t169)) + 8) + 1) (negate (((t199 * t188) + (t201 * t189)) * t200))
+            wrI contacts (((30 * (truncate t169)) + 8) + 2) (t189 + (negate (((t199 * t188) + (t201 * t189)) * t201)))
             let !t212 = (t162 + (negate t197))
-            wr contacts ((30.0 * t169) + 11.0) ((((t212 * t189) * t199) + ((((t163 + (negate t198)) * t188) - ((t161 + (negate t196)) * t189)) * t200)) + ((negate (t212 * t188)) * t201))
-            wr contacts ((30.0 * t169) + 16.0) (t191 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t199)))
-            wr contacts (((30.0 * t169) + 16.0) + 1.0) (t192 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t200)))
-            wr contacts (((30.0 * t169) + 16.0) + 2.0) (t193 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t201)))
+            wrI contacts ((30 * (truncate t169)) + 11) ((((t212 * t189) * t199) + ((((t163 + (negate t198)) * t188) - ((t161 + (negate t196)) * t189)) * t200)) + ((negate (t212 * t188)) * t201))
+            wrI contacts ((30 * (truncate t169)) + 16) (t191 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t199)))
+            wrI contacts (((30 * (truncate t169)) + 16) + 1) (t192 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t200)))
+            wrI contacts (((30 * (truncate t169)) + 16) + 2) (t193 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t201)))
             let !t213 = (t163 + (negate t198))
             let !t214 = (t161 + (negate t196))
-            wr contacts ((30.0 * t169) + 19.0) (((((t212 * t193) - (t213 * t192)) * t199) + (((t213 * t191) - (t214 * t193)) * t200)) + (((t214 * t192) - (t212 * t191)) * t201))
+            wrI contacts ((30 * (truncate t169)) + 19) (((((t212 * t193) - (t213 * t192)) * t199) + (((t213 * t191) - (t214 * t193)) * t200)) + (((t214 * t192) - (t212 * t191)) * t201))
             pure ()
           else do
-            wr contacts ((30.0 * t169) + 8.0) 0.0
-            wr contacts (((30.0 * t169) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t169) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t169) + 11.0) 0.0
-            wr contacts ((30.0 * t169) + 16.0) 0.0
-            wr contacts (((30.0 * t169) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t169) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t169) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t169)) + 8) 0.0
+            wrI contacts (((30 * (truncate t169)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t169)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t169)) + 11) 0.0
+            wrI contacts ((30 * (truncate t169)) + 16) 0.0
+            wrI contacts (((30 * (truncate t169)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t169)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t169)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t215 <- rd meta 6.0
-          wr meta 6.0 (t215 + 1.0)
+          t215 <- rdI meta 6
+          wrI meta 6 (t215 + 1.0)
           pure ()
         pure ()
       else do
@@ -433,15 +446,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t216 <- rd verts (3.0 * (97.0 * i31))
-    t217 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t218 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t216 <- rdI verts (3 * (97 * i31))
+    t217 <- rdI verts ((3 * (97 * i31)) + 1)
+    t218 <- rdI verts ((3 * (97 * i31)) + 2)
     v219 <- newR 1.0
-    loop 0.0 24.0 $ \i220 -> do
-      t221 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i220 * 4.0)) + 3.0))
-      t222 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i220 * 4.0)) + 3.0)) + 1.0)
-      t223 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i220 * 4.0)) + 3.0)) + 2.0)
-      t224 <- rd radii ((24.0 * i31) + i220)
+    loopI 0.0 24.0 $ \i220 -> do
+      let !d220 = fromIntegral i220 :: Double
+      t221 <- rdI verts (3 * ((((97 * i31) + 1) + (i220 * 4)) + 3))
+      t222 <- rdI verts ((3 * ((((97 * i31) + 1) + (i220 * 4)) + 3)) + 1)
+      t223 <- rdI verts ((3 * ((((97 * i31) + 1) + (i220 * 4)) + 3)) + 2)
+      t224 <- rdI radii ((24 * i31) + i220)
       t225 <- getR v219
       let !t226 = (t221 + (negate t216))
       let !t227 = (t222 + (negate t217))
@@ -458,25 +472,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v235 <- newR 0.0
       v236 <- newR 0.0
       v237 <- newR 0.0
-      loop 0.0 24.0 $ \i238 -> do
-        t239 <- rd radii ((24.0 * i31) + i238)
-        loop 6.0 12.0 $ \i240 -> do
-          let !t241 = (i238 + i240)
-          t242 <- rd radii ((24.0 * i31) + (t241 - (24.0 * (floorF (t241 / 24.0)))))
-          loop 1.0 4.0 $ \i243 -> do
-            t244 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i238 * 4.0)) + (i243 - 1.0)))
-            t245 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i238 * 4.0)) + (i243 - 1.0))) + 1.0)
-            t246 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i238 * 4.0)) + (i243 - 1.0))) + 2.0)
-            t247 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i238 * 4.0)) + i243))
-            t248 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i238 * 4.0)) + i243)) + 1.0)
-            t249 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i238 * 4.0)) + i243)) + 2.0)
-            loop 1.0 4.0 $ \i250 -> do
-              t251 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (i250 - 1.0)))
-              t252 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (i250 - 1.0))) + 1.0)
-              t253 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (i250 - 1.0))) + 2.0)
-              t254 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + i250))
-              t255 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + i250)) + 1.0)
-              t256 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + i250)) + 2.0)
+      loopI 0.0 24.0 $ \i238 -> do
+        let !d238 = fromIntegral i238 :: Double
+        t239 <- rdI radii ((24 * i31) + i238)
+        loopI 6.0 12.0 $ \i240 -> do
+          let !d240 = fromIntegral i240 :: Double
+          let !t241 = (d238 + d240)
+          t242 <- rdI radii (truncate ((24.0 * d31) + (t241 - (24.0 * (floorF (t241 / 24.0))))))
+          loopI 1.0 4.0 $ \i243 -> do
+            let !d243 = fromIntegral i243 :: Double
+            t244 <- rdI verts (3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1)))
+            t245 <- rdI verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1))) + 1)
+            t246 <- rdI verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1))) + 2)
+            t247 <- rdI verts (3 * ((((97 * i31) + 1) + (i238 * 4)) + i243))
+            t248 <- rdI verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + i243)) + 1)
+            t249 <- rdI verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + i243)) + 2)
+            loopI 1.0 4.0 $ \i250 -> do
+              let !d250 = fromIntegral i250 :: Double
+              t251 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))))
+              t252 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))) + 1.0))
+              t253 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))) + 2.0))
+              t254 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)))
+              t255 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)) + 1.0))
+              t256 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)) + 2.0))
               t257 <- getR v231
               let !t258 = (negate t251)
               let !t259 = (t254 + t258)
@@ -509,19 +527,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t286 = (if (negate t279) > 0 then (if (negate t282) > 0 then 0.0 else t282) else (if t283 > 0 then (if (negate t285) > 0 then 0.0 else t285) else t278))
               let !t287 = (if t283 > 0 then 1.0 else t279)
               let !t288 = (if (negate t287) > 0 then 0.0 else t287)
-              let !t289 = ((0.5 * ((t239 - ((t239 * (i243 + t286)) / 4.0)) + (t242 - ((t242 * (i250 + t288)) / 4.0)))) - t257)
+              let !t289 = ((0.5 * ((t239 - ((t239 * (d243 + t286)) / 4.0)) + (t242 - ((t242 * (d250 + t288)) / 4.0)))) - t257)
               let !t290 = ((t244 + (t286 * t265)) + (negate (t251 + (t288 * t259))))
               let !t291 = ((t245 + (t286 * t266)) + (negate (t252 + (t288 * t261))))
               let !t292 = ((t246 + (t286 * t267)) + (negate (t253 + (t288 * t263))))
               let !t293 = ((0.3 * ((if (t242 - t239) > 0 then t239 else t242) / 4.0)) - (sqrt (((t290 * t290) + (t291 * t291)) + (t292 * t292))))
               if (if (t289 - t293) > 0 then t293 else t289) > 0 then do
-                setR v231 (0.5 * ((t239 - ((t239 * (i243 + t286)) / 4.0)) + (t242 - ((t242 * (i250 + t288)) / 4.0))))
-                t294 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i238 * 4.0)))
-                t295 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i238 * 4.0))) + 1.0)
-                t296 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i238 * 4.0))) + 2.0)
-                t297 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)))
-                t298 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 1.0)
-                t299 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 2.0)
+                setR v231 (0.5 * ((t239 - ((t239 * (d243 + t286)) / 4.0)) + (t242 - ((t242 * (d250 + t288)) / 4.0))))
+                t294 <- rdI verts (3 * (((97 * i31) + 1) + (i238 * 4)))
+                t295 <- rdI verts ((3 * (((97 * i31) + 1) + (i238 * 4))) + 1)
+                t296 <- rdI verts ((3 * (((97 * i31) + 1) + (i238 * 4))) + 2)
+                t297 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))))
+                t298 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 1.0))
+                t299 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 2.0))
                 setR v232 (t244 + (t286 * t265))
                 setR v233 (t245 + (t286 * t266))
                 setR v234 (t246 + (t286 * t267))
@@ -560,89 +578,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s321 = (t320 * t315)
         let !s322 = (t320 * t318)
         let !s323 = (t320 * t317)
-        t324 <- rd meta 2.0
-        t325 <- rd meta 3.0
+        t324 <- rdI meta 2
+        t325 <- rdI meta 3
         if (((8.0 * (if (1.0 - t325) > 0 then 1.0 else t325)) - t324) - 0.5) > 0 then do
-          wr meta 2.0 (t324 + 1.0)
-          t326 <- rd pos (3.0 * i31)
-          t327 <- rd pos ((3.0 * i31) + 1.0)
-          t328 <- rd pos ((3.0 * i31) + 2.0)
-          t329 <- rd normal (3.0 * i31)
-          t330 <- rd normal ((3.0 * i31) + 1.0)
-          t331 <- rd normal ((3.0 * i31) + 2.0)
-          t332 <- rd axis (3.0 * i31)
-          t333 <- rd axis ((3.0 * i31) + 1.0)
-          t334 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t324 + 1.0)
+          t326 <- rdI pos (3 * i31)
+          t327 <- rdI pos ((3 * i31) + 1)
+          t328 <- rdI pos ((3 * i31) + 2)
+          t329 <- rdI normal (3 * i31)
+          t330 <- rdI normal ((3 * i31) + 1)
+          t331 <- rdI normal ((3 * i31) + 2)
+          t332 <- rdI axis (3 * i31)
+          t333 <- rdI axis ((3 * i31) + 1)
+          t334 <- rdI axis ((3 * i31) + 2)
           let !s335 = ((t330 * t334) - (t331 * t333))
           let !s336 = ((t331 * t332) - (t329 * t334))
           let !s337 = ((t329 * t333) - (t330 * t332))
-          t338 <- rd scalars (6.0 * i31)
-          t339 <- rd scalars ((6.0 * i31) + 5.0)
-          t340 <- rd scalars ((6.0 * i31) + 2.0)
-          t341 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t324) i31
-          wr contacts ((30.0 * t324) + 1.0) (-1.0)
-          wr contacts ((30.0 * t324) + 2.0) i31
-          wr contacts ((30.0 * t324) + 3.0) 12.0
-          wr contacts ((30.0 * t324) + 4.0) (s321 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t329)))
-          wr contacts (((30.0 * t324) + 4.0) + 1.0) (s322 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t330)))
-          wr contacts (((30.0 * t324) + 4.0) + 2.0) (s323 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t331)))
-          wr contacts ((30.0 * t324) + 7.0) 0.0
-          wr contacts ((30.0 * t324) + 12.0) 0.0
-          wr contacts (((30.0 * t324) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t324) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t324) + 15.0) 0.0
-          wr contacts ((30.0 * t324) + 20.0) t311
-          wr contacts ((30.0 * t324) + 26.0) 0.6
-          wr contacts ((30.0 * t324) + 27.0) t312
-          wr contacts (((30.0 * t324) + 27.0) + 1.0) t313
-          wr contacts (((30.0 * t324) + 27.0) + 2.0) t314
+          t338 <- rdI scalars (6 * i31)
+          t339 <- rdI scalars ((6 * i31) + 5)
+          t340 <- rdI scalars ((6 * i31) + 2)
+          t341 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t324)) d31
+          wrI contacts ((30 * (truncate t324)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t324)) + 2) d31
+          wrI contacts ((30 * (truncate t324)) + 3) 12.0
+          wrI contacts ((30 * (truncate t324)) + 4) (s321 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t329)))
+          wrI contacts (((30 * (truncate t324)) + 4) + 1) (s322 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t330)))
+          wrI contacts (((30 * (truncate t324)) + 4) + 2) (s323 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t331)))
+          wrI contacts ((30 * (truncate t324)) + 7) 0.0
+          wrI contacts ((30 * (truncate t324)) + 12) 0.0
+          wrI contacts (((30 * (truncate t324)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t324)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t324)) + 15) 0.0
+          wrI contacts ((30 * (truncate t324)) + 20) t311
+          wrI contacts ((30 * (truncate t324)) + 26) 0.6
+          wrI contacts ((30 * (truncate t324)) + 27) t312
+          wrI contacts (((30 * (truncate t324)) + 27) + 1) t313
+          wrI contacts (((30 * (truncate t324)) + 27) + 2) t314
           if (-0.5) > 0 then do
-            t342 <- rd pos (-3.0)
-            t343 <- rd pos (-2.0)
-            t344 <- rd pos (-1.0)
-            t345 <- rd normal (-3.0)
-            t346 <- rd normal (-2.0)
-            t347 <- rd normal (-1.0)
-            t348 <- rd axis (-3.0)
-            t349 <- rd axis (-2.0)
-            t350 <- rd axis (-1.0)
+            t342 <- rdI pos (-3)
+            t343 <- rdI pos (-2)
+            t344 <- rdI pos (-1)
+            t345 <- rdI normal (-3)
+            t346 <- rdI normal (-2)
+            t347 <- rdI normal (-1)
+            t348 <- rdI axis (-3)
+            t349 <- rdI axis (-2)
+            t350 <- rdI axis (-1)
             let !s351 = ((t346 * t350) - (t347 * t349))
             let !s352 = ((t347 * t348) - (t345 * t350))
             let !s353 = ((t345 * t349) - (t346 * t348))
-            t354 <- rd scalars (-6.0)
-            t355 <- rd scalars (-1.0)
-            t356 <- rd scalars (-4.0)
-            t357 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t324) + 8.0) (s321 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t345)))
-            wr contacts (((30.0 * t324) + 8.0) + 1.0) (s322 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t346)))
-            wr contacts (((30.0 * t324) + 8.0) + 2.0) (s323 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t347)))
+            t354 <- rdI scalars (-6)
+            t355 <- rdI scalars (-1)
+            t356 <- rdI scalars (-4)
+            t357 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t324)) + 8) (s321 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t345)))
+            wrI contacts (((30 * (truncate t324)) + 8) + 1) (s322 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t346)))
+            wrI contacts (((30 * (truncate t324)) + 8) + 2) (s323 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t347)))
             let !t358 = (t313 + (negate t343))
             let !t359 = (t314 + (negate t344))
             let !t360 = (t312 + (negate t342))
-            wr contacts ((30.0 * t324) + 11.0) (((((t358 * s323) - (t359 * s322)) * t345) + (((t359 * s321) - (t360 * s323)) * t346)) + (((t360 * s322) - (t358 * s321)) * t347))
+            wrI contacts ((30 * (truncate t324)) + 11) (((((t358 * s323) - (t359 * s322)) * t345) + (((t359 * s321) - (t360 * s323)) * t346)) + (((t360 * s322) - (t358 * s321)) * t347))
             let !t361 = ((t330 * s323) - (t331 * s322))
-            wr contacts ((30.0 * t324) + 16.0) (t361 + (negate ((((t345 * t361) + (t346 * ((t331 * s321) - (t329 * s323)))) + (t347 * ((t329 * s322) - (t330 * s321)))) * t345)))
+            wrI contacts ((30 * (truncate t324)) + 16) (t361 + (negate ((((t345 * t361) + (t346 * ((t331 * s321) - (t329 * s323)))) + (t347 * ((t329 * s322) - (t330 * s321)))) * t345)))
             let !t362 = ((t331 * s321) - (t329 * s323))
-            wr contacts (((30.0 * t324) + 16.0) + 1.0) (t362 + (negate ((((t345 * t361) + (t346 * t362)) + (t347 * ((t329 * s322) - (t330 * s321)))) * t346)))
+            wrI contacts (((30 * (truncate t324)) + 16) + 1) (t362 + (negate ((((t345 * t361) + (t346 * t362)) + (t347 * ((t329 * s322) - (t330 * s321)))) * t346)))
             let !t363 = ((t329 * s322) - (t330 * s321))
-            wr contacts (((30.0 * t324) + 16.0) + 2.0) (t363 + (negate ((((t345 * t361) + (t346 * t362)) + (t347 * t363)) * t347)))
-            wr contacts ((30.0 * t324) + 19.0) (((((t358 * t363) - (t359 * t362)) * t345) + (((t359 * t361) - (t360 * t363)) * t346)) + (((t360 * t362) - (t358 * t361)) * t347))
+            wrI contacts (((30 * (truncate t324)) + 16) + 2) (t363 + (negate ((((t345 * t361) + (t346 * t362)) + (t347 * t363)) * t347)))
+            wrI contacts ((30 * (truncate t324)) + 19) (((((t358 * t363) - (t359 * t362)) * t345) + (((t359 * t361) - (t360 * t363)) * t346)) + (((t360 * t362) - (t358 * t361)) * t347))
             pure ()
           else do
-            wr contacts ((30.0 * t324) + 8.0) 0.0
-            wr contacts (((30.0 * t324) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t324) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t324) + 11.0) 0.0
-            wr contacts ((30.0 * t324) + 16.0) 0.0
-            wr contacts (((30.0 * t324) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t324) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t324) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t324)) + 8) 0.0
+            wrI contacts (((30 * (truncate t324)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t324)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t324)) + 11) 0.0
+            wrI contacts ((30 * (truncate t324)) + 16) 0.0
+            wrI contacts (((30 * (truncate t324)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t324)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t324)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t364 <- rd meta 6.0
-          wr meta 6.0 (t364 + 1.0)
+          t364 <- rdI meta 6
+          wrI meta 6 (t364 + 1.0)
           pure ()
         pure ()
       else do
@@ -655,43 +673,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -699,12 +718,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -712,20 +731,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -736,18 +755,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -755,98 +775,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -921,12 +941,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rd mouse 4.0
-      t213 <- rd mouse 5.0
-      t214 <- rd mouse 6.0
-      t215 <- rd mouse 7.0
-      t216 <- rd mouse 8.0
-      t217 <- rd mouse 9.0
+      t212 <- rdI mouse 4
+      t213 <- rdI mouse 5
+      t214 <- rdI mouse 6
+      t215 <- rdI mouse 7
+      t216 <- rdI mouse 8
+      t217 <- rdI mouse 9
       let !t218 = (recip t101)
       let !t219 = (6.283185307179586 * t215)
       let !s220 = (recip (t103 * ((((2.0 * t218) * t216) * t219) + (t103 * ((t218 * t219) * t219)))))
@@ -937,68 +957,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s225 = (s199 + (negate t212))
       let !s226 = (s200 + (negate t213))
       let !s227 = (s201 + (negate t214))
-      t228 <- rd mouse 10.0
-      t229 <- rd scalars ((6.0 * t100) + 2.0)
-      t230 <- rd scalars ((6.0 * t100) + 3.0)
-      t231 <- rd vel (3.0 * t100)
-      t232 <- rd vel ((3.0 * t100) + 1.0)
-      t233 <- rd vel ((3.0 * t100) + 2.0)
-      t234 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t231 + ((t229 * t228) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t232 + ((t229 * t228) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t233 + ((t229 * t228) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
-      t235 <- rd mouse 11.0
-      t236 <- rd scalars ((6.0 * t100) + 2.0)
-      t237 <- rd scalars ((6.0 * t100) + 3.0)
-      t238 <- rd vel (3.0 * t100)
-      t239 <- rd vel ((3.0 * t100) + 1.0)
-      t240 <- rd vel ((3.0 * t100) + 2.0)
-      t241 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t238 + ((t236 * t235) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t239 + ((t236 * t235) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t240 + ((t236 * t235) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
+      t228 <- rdI mouse 10
+      t229 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t230 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t231 <- rdI vel (3 * (truncate t100))
+      t232 <- rdI vel ((3 * (truncate t100)) + 1)
+      t233 <- rdI vel ((3 * (truncate t100)) + 2)
+      t234 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
+      t235 <- rdI mouse 11
+      t236 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t237 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t238 <- rdI vel (3 * (truncate t100))
+      t239 <- rdI vel ((3 * (truncate t100)) + 1)
+      t240 <- rdI vel ((3 * (truncate t100)) + 2)
+      t241 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i242 -> do
-    loop 0.0 t9 $ \i243 -> do
-      t244 <- rd contacts (30.0 * i243)
-      t245 <- rd contacts ((30.0 * i243) + 1.0)
-      t246 <- rd contacts ((30.0 * i243) + 12.0)
-      t247 <- rd contacts (((30.0 * i243) + 12.0) + 1.0)
-      t248 <- rd contacts (((30.0 * i243) + 12.0) + 2.0)
-      t249 <- rd contacts ((30.0 * i243) + 15.0)
-      t250 <- rd contacts ((30.0 * i243) + 16.0)
-      t251 <- rd contacts (((30.0 * i243) + 16.0) + 1.0)
-      t252 <- rd contacts (((30.0 * i243) + 16.0) + 2.0)
-      t253 <- rd contacts ((30.0 * i243) + 19.0)
-      t254 <- rd contacts ((30.0 * i243) + 4.0)
-      t255 <- rd contacts (((30.0 * i243) + 4.0) + 1.0)
-      t256 <- rd contacts (((30.0 * i243) + 4.0) + 2.0)
-      t257 <- rd contacts ((30.0 * i243) + 7.0)
-      t258 <- rd contacts ((30.0 * i243) + 8.0)
-      t259 <- rd contacts (((30.0 * i243) + 8.0) + 1.0)
-      t260 <- rd contacts (((30.0 * i243) + 8.0) + 2.0)
-      t261 <- rd contacts ((30.0 * i243) + 11.0)
-      t262 <- rd contacts ((30.0 * i243) + 26.0)
-      t263 <- rd contacts ((30.0 * i243) + 24.0)
-      t264 <- rd contacts ((30.0 * i243) + 25.0)
-      t265 <- rd contacts ((30.0 * i243) + 22.0)
-      t266 <- rd vel (3.0 * t244)
-      t267 <- rd vel ((3.0 * t244) + 1.0)
-      t268 <- rd vel ((3.0 * t244) + 2.0)
-      t269 <- rd scalars ((6.0 * t244) + 1.0)
+  loopI 0.0 t1 $ \i242 -> do
+    let !d242 = fromIntegral i242 :: Double
+    loopI 0.0 t9 $ \i243 -> do
+      let !d243 = fromIntegral i243 :: Double
+      t244 <- rdI contacts (30 * i243)
+      t245 <- rdI contacts ((30 * i243) + 1)
+      t246 <- rdI contacts ((30 * i243) + 12)
+      t247 <- rdI contacts (((30 * i243) + 12) + 1)
+      t248 <- rdI contacts (((30 * i243) + 12) + 2)
+      t249 <- rdI contacts ((30 * i243) + 15)
+      t250 <- rdI contacts ((30 * i243) + 16)
+      t251 <- rdI contacts (((30 * i243) + 16) + 1)
+      t252 <- rdI contacts (((30 * i243) + 16) + 2)
+      t253 <- rdI contacts ((30 * i243) + 19)
+      t254 <- rdI contacts ((30 * i243) + 4)
+      t255 <- rdI contacts (((30 * i243) + 4) + 1)
+      t256 <- rdI contacts (((30 * i243) + 4) + 2)
+      t257 <- rdI contacts ((30 * i243) + 7)
+      t258 <- rdI contacts ((30 * i243) + 8)
+      t259 <- rdI contacts (((30 * i243) + 8) + 1)
+      t260 <- rdI contacts (((30 * i243) + 8) + 2)
+      t261 <- rdI contacts ((30 * i243) + 11)
+      t262 <- rdI contacts ((30 * i243) + 26)
+      t263 <- rdI contacts ((30 * i243) + 24)
+      t264 <- rdI contacts ((30 * i243) + 25)
+      t265 <- rdI contacts ((30 * i243) + 22)
+      t266 <- rdI vel (3 * (truncate t244))
+      t267 <- rdI vel ((3 * (truncate t244)) + 1)
+      t268 <- rdI vel ((3 * (truncate t244)) + 2)
+      t269 <- rdI scalars ((6 * (truncate t244)) + 1)
       v270 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t271 <- rd vel (3.0 * t245)
-        t272 <- rd vel ((3.0 * t245) + 1.0)
-        t273 <- rd vel ((3.0 * t245) + 2.0)
-        t274 <- rd scalars ((6.0 * t245) + 1.0)
+        t271 <- rdI vel (3 * (truncate t245))
+        t272 <- rdI vel ((3 * (truncate t245)) + 1)
+        t273 <- rdI vel ((3 * (truncate t245)) + 2)
+        t274 <- rdI scalars ((6 * (truncate t245)) + 1)
         setR v270 ((((t250 * t271) + (t251 * t272)) + (t252 * t273)) + (t253 * t274))
         pure ()
       else do
@@ -1011,43 +1033,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t280 = (if (t279 - t277) > 0 then t277 else t279)
       let !t281 = (if (t278 - t280) > 0 then t278 else t280)
       let !s282 = (if (1.0 - (abs (t281 - t281))) > 0 then t281 else 0.0)
-      wr contacts ((30.0 * i243) + 25.0) s282
-      t283 <- rd scalars ((6.0 * t244) + 2.0)
-      t284 <- rd scalars ((6.0 * t244) + 3.0)
-      t285 <- rd vel (3.0 * t244)
-      t286 <- rd vel ((3.0 * t244) + 1.0)
-      t287 <- rd vel ((3.0 * t244) + 2.0)
-      t288 <- rd scalars ((6.0 * t244) + 1.0)
-      wr vel (3.0 * t244) (t285 + ((t283 * (s282 - t264)) * t246))
-      wr vel ((3.0 * t244) + 1.0) (t286 + ((t283 * (s282 - t264)) * t247))
-      wr vel ((3.0 * t244) + 2.0) (t287 + ((t283 * (s282 - t264)) * t248))
-      wr scalars ((6.0 * t244) + 1.0) (t288 + ((t284 * (s282 - t264)) * t249))
+      wrI contacts ((30 * i243) + 25) s282
+      t283 <- rdI scalars ((6 * (truncate t244)) + 2)
+      t284 <- rdI scalars ((6 * (truncate t244)) + 3)
+      t285 <- rdI vel (3 * (truncate t244))
+      t286 <- rdI vel ((3 * (truncate t244)) + 1)
+      t287 <- rdI vel ((3 * (truncate t244)) + 2)
+      t288 <- rdI scalars ((6 * (truncate t244)) + 1)
+      wrI vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
+      wrI vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
+      wrI vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
+      wrI scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
       if (t245 + 0.5) > 0 then do
-        t289 <- rd scalars ((6.0 * t245) + 2.0)
-        t290 <- rd scalars ((6.0 * t245) + 3.0)
-        t291 <- rd vel (3.0 * t245)
-        t292 <- rd vel ((3.0 * t245) + 1.0)
-        t293 <- rd vel ((3.0 * t245) + 2.0)
-        t294 <- rd scalars ((6.0 * t245) + 1.0)
-        wr vel (3.0 * t245) (t291 + ((t289 * (negate (s282 - t264))) * t250))
-        wr vel ((3.0 * t245) + 1.0) (t292 + ((t289 * (negate (s282 - t264))) * t251))
-        wr vel ((3.0 * t245) + 2.0) (t293 + ((t289 * (negate (s282 - t264))) * t252))
-        wr scalars ((6.0 * t245) + 1.0) (t294 + ((t290 * (negate (s282 - t264))) * t253))
+        t289 <- rdI scalars ((6 * (truncate t245)) + 2)
+        t290 <- rdI scalars ((6 * (truncate t245)) + 3)
+        t291 <- rdI vel (3 * (truncate t245))
+        t292 <- rdI vel ((3 * (truncate t245)) + 1)
+        t293 <- rdI vel ((3 * (truncate t245)) + 2)
+        t294 <- rdI scalars ((6 * (truncate t245)) + 1)
+        wrI vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
+        wrI vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
+        wrI vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
+        wrI scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
         pure ()
       else do
         pure ()
-      t295 <- rd contacts ((30.0 * i243) + 21.0)
-      t296 <- rd contacts ((30.0 * i243) + 23.0)
-      t297 <- rd vel (3.0 * t244)
-      t298 <- rd vel ((3.0 * t244) + 1.0)
-      t299 <- rd vel ((3.0 * t244) + 2.0)
-      t300 <- rd scalars ((6.0 * t244) + 1.0)
+      t295 <- rdI contacts ((30 * i243) + 21)
+      t296 <- rdI contacts ((30 * i243) + 23)
+      t297 <- rdI vel (3 * (truncate t244))
+      t298 <- rdI vel ((3 * (truncate t244)) + 1)
+      t299 <- rdI vel ((3 * (truncate t244)) + 2)
+      t300 <- rdI scalars ((6 * (truncate t244)) + 1)
       v301 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t302 <- rd vel (3.0 * t245)
-        t303 <- rd vel ((3.0 * t245) + 1.0)
-        t304 <- rd vel ((3.0 * t245) + 2.0)
-        t305 <- rd scalars ((6.0 * t245) + 1.0)
+        t302 <- rdI vel (3 * (truncate t245))
+        t303 <- rdI vel ((3 * (truncate t245)) + 1)
+        t304 <- rdI vel ((3 * (truncate t245)) + 2)
+        t305 <- rdI scalars ((6 * (truncate t245)) + 1)
         setR v301 ((((t258 * t302) + (t259 * t303)) + (t260 * t304)) + (t261 * t305))
         pure ()
       else do
@@ -1057,73 +1079,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t308 = (t263 + ((t262 * (t296 - s307)) * t295))
       let !t309 = (if (negate t308) > 0 then 0.0 else t308)
       let !s310 = (if (1.0 - (abs (t309 - t309))) > 0 then t309 else 0.0)
-      wr contacts ((30.0 * i243) + 24.0) s310
-      t311 <- rd scalars ((6.0 * t244) + 2.0)
-      t312 <- rd scalars ((6.0 * t244) + 3.0)
-      t313 <- rd vel (3.0 * t244)
-      t314 <- rd vel ((3.0 * t244) + 1.0)
-      t315 <- rd vel ((3.0 * t244) + 2.0)
-      t316 <- rd scalars ((6.0 * t244) + 1.0)
-      wr vel (3.0 * t244) (t313 + ((t311 * (s310 - t263)) * t254))
-      wr vel ((3.0 * t244) + 1.0) (t314 + ((t311 * (s310 - t263)) * t255))
-      wr vel ((3.0 * t244) + 2.0) (t315 + ((t311 * (s310 - t263)) * t256))
-      wr scalars ((6.0 * t244) + 1.0) (t316 + ((t312 * (s310 - t263)) * t257))
+      wrI contacts ((30 * i243) + 24) s310
+      t311 <- rdI scalars ((6 * (truncate t244)) + 2)
+      t312 <- rdI scalars ((6 * (truncate t244)) + 3)
+      t313 <- rdI vel (3 * (truncate t244))
+      t314 <- rdI vel ((3 * (truncate t244)) + 1)
+      t315 <- rdI vel ((3 * (truncate t244)) + 2)
+      t316 <- rdI scalars ((6 * (truncate t244)) + 1)
+      wrI vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
+      wrI vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
+      wrI vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
+      wrI scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
       if (t245 + 0.5) > 0 then do
-        t317 <- rd scalars ((6.0 * t245) + 2.0)
-        t318 <- rd scalars ((6.0 * t245) + 3.0)
-        t319 <- rd vel (3.0 * t245)
-        t320 <- rd vel ((3.0 * t245) + 1.0)
-        t321 <- rd vel ((3.0 * t245) + 2.0)
-        t322 <- rd scalars ((6.0 * t245) + 1.0)
-        wr vel (3.0 * t245) (t319 + ((t317 * (negate (s310 - t263))) * t258))
-        wr vel ((3.0 * t245) + 1.0) (t320 + ((t317 * (negate (s310 - t263))) * t259))
-        wr vel ((3.0 * t245) + 2.0) (t321 + ((t317 * (negate (s310 - t263))) * t260))
-        wr scalars ((6.0 * t245) + 1.0) (t322 + ((t318 * (negate (s310 - t263))) * t261))
+        t317 <- rdI scalars ((6 * (truncate t245)) + 2)
+        t318 <- rdI scalars ((6 * (truncate t245)) + 3)
+        t319 <- rdI vel (3 * (truncate t245))
+        t320 <- rdI vel ((3 * (truncate t245)) + 1)
+        t321 <- rdI vel ((3 * (truncate t245)) + 2)
+        t322 <- rdI scalars ((6 * (truncate t245)) + 1)
+        wrI vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
+        wrI vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
+        wrI vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
+        wrI scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
         pure ()
       else do
         pure ()
       pure ()
-    t323 <- rd mouse 0.0
+    t323 <- rdI mouse 0
     if t323 > 0 then do
-      t324 <- rd mouse 1.0
-      t325 <- rd scalars ((6.0 * t324) + 2.0)
+      t324 <- rdI mouse 1
+      t325 <- rdI scalars ((6 * (truncate t324)) + 2)
       if t325 > 0 then do
-        t326 <- rd scalars ((6.0 * t324) + 3.0)
-        t327 <- rd params 0.0
-        t328 <- rd pos (3.0 * t324)
-        t329 <- rd pos ((3.0 * t324) + 1.0)
-        t330 <- rd pos ((3.0 * t324) + 2.0)
-        t331 <- rd normal (3.0 * t324)
-        t332 <- rd normal ((3.0 * t324) + 1.0)
-        t333 <- rd normal ((3.0 * t324) + 2.0)
-        t334 <- rd axis (3.0 * t324)
-        t335 <- rd axis ((3.0 * t324) + 1.0)
-        t336 <- rd axis ((3.0 * t324) + 2.0)
+        t326 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t327 <- rdI params 0
+        t328 <- rdI pos (3 * (truncate t324))
+        t329 <- rdI pos ((3 * (truncate t324)) + 1)
+        t330 <- rdI pos ((3 * (truncate t324)) + 2)
+        t331 <- rdI normal (3 * (truncate t324))
+        t332 <- rdI normal ((3 * (truncate t324)) + 1)
+        t333 <- rdI normal ((3 * (truncate t324)) + 2)
+        t334 <- rdI axis (3 * (truncate t324))
+        t335 <- rdI axis ((3 * (truncate t324)) + 1)
+        t336 <- rdI axis ((3 * (truncate t324)) + 2)
         let !s337 = ((t332 * t336) - (t333 * t335))
         let !s338 = ((t333 * t334) - (t331 * t336))
         let !s339 = ((t331 * t335) - (t332 * t334))
-        t340 <- rd scalars (6.0 * t324)
-        t341 <- rd scalars ((6.0 * t324) + 5.0)
-        t342 <- rd scalars ((6.0 * t324) + 2.0)
-        t343 <- rd scalars ((6.0 * t324) + 3.0)
-        t344 <- rd pos (3.0 * t324)
-        t345 <- rd pos ((3.0 * t324) + 1.0)
-        t346 <- rd pos ((3.0 * t324) + 2.0)
-        t347 <- rd normal (3.0 * t324)
-        t348 <- rd normal ((3.0 * t324) + 1.0)
-        t349 <- rd normal ((3.0 * t324) + 2.0)
-        t350 <- rd axis (3.0 * t324)
-        t351 <- rd axis ((3.0 * t324) + 1.0)
-        t352 <- rd axis ((3.0 * t324) + 2.0)
+        t340 <- rdI scalars (6 * (truncate t324))
+        t341 <- rdI scalars ((6 * (truncate t324)) + 5)
+        t342 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t343 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t344 <- rdI pos (3 * (truncate t324))
+        t345 <- rdI pos ((3 * (truncate t324)) + 1)
+        t346 <- rdI pos ((3 * (truncate t324)) + 2)
+        t347 <- rdI normal (3 * (truncate t324))
+        t348 <- rdI normal ((3 * (truncate t324)) + 1)
+        t349 <- rdI normal ((3 * (truncate t324)) + 2)
+        t350 <- rdI axis (3 * (truncate t324))
+        t351 <- rdI axis ((3 * (truncate t324)) + 1)
+        t352 <- rdI axis ((3 * (truncate t324)) + 2)
         let !s353 = ((t348 * t352) - (t349 * t351))
         let !s354 = ((t349 * t350) - (t347 * t352))
         let !s355 = ((t347 * t351) - (t348 * t350))
-        t356 <- rd scalars (6.0 * t324)
-        t357 <- rd scalars ((6.0 * t324) + 5.0)
-        t358 <- rd scalars ((6.0 * t324) + 2.0)
-        t359 <- rd scalars ((6.0 * t324) + 3.0)
-        t360 <- rd mouse 2.0
-        t361 <- rd mouse 3.0
+        t356 <- rdI scalars (6 * (truncate t324))
+        t357 <- rdI scalars ((6 * (truncate t324)) + 5)
+        t358 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t359 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t360 <- rdI mouse 2
+        t361 <- rdI mouse 3
         let !t362 = (t360 / 4.0)
         let !t363 = (if (abs t362) > 0 then 1.0 else 0.0)
         let !t364 = (t356 + t361)
@@ -1198,12 +1220,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s433 = ((t363 * (t426 * (t432 * t427))) + (t367 * s417))
         let !s434 = ((t363 * (t426 * (t432 * t429))) + (t367 * s418))
         let !s435 = ((t363 * (t426 * (t432 * t430))) + (t367 * s419))
-        t436 <- rd mouse 4.0
-        t437 <- rd mouse 5.0
-        t438 <- rd mouse 6.0
-        t439 <- rd mouse 7.0
-        t440 <- rd mouse 8.0
-        t441 <- rd mouse 9.0
+        t436 <- rdI mouse 4
+        t437 <- rdI mouse 5
+        t438 <- rdI mouse 6
+        t439 <- rdI mouse 7
+        t440 <- rdI mouse 8
+        t441 <- rdI mouse 9
         let !t442 = (recip t325)
         let !t443 = (6.283185307179586 * t439)
         let !s444 = (recip (t327 * ((((2.0 * t442) * t440) * t443) + (t327 * ((t442 * t443) * t443)))))
@@ -1214,11 +1236,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s449 = (s423 + (negate t436))
         let !s450 = (s424 + (negate t437))
         let !s451 = (s425 + (negate t438))
-        t452 <- rd mouse 10.0
-        t453 <- rd vel (3.0 * t324)
-        t454 <- rd vel ((3.0 * t324) + 1.0)
-        t455 <- rd vel ((3.0 * t324) + 2.0)
-        t456 <- rd scalars ((6.0 * t324) + 1.0)
+        t452 <- rdI mouse 10
+        t453 <- rdI vel (3 * (truncate t324))
+        t454 <- rdI vel ((3 * (truncate t324)) + 1)
+        t455 <- rdI vel ((3 * (truncate t324)) + 2)
+        t456 <- rdI scalars ((6 * (truncate t324)) + 1)
         let !t457 = (t441 * t327)
         let !t458 = (negate t457)
         let !t459 = (((((s447 * t336) - (s448 * t335)) * t331) + (((s448 * t334) - (s446 * t336)) * t332)) + (((s446 * t335) - (s447 * t334)) * t333))
@@ -1226,38 +1248,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t461 = (if (t460 - t457) > 0 then t457 else t460)
         let !t462 = (if (t458 - t461) > 0 then t458 else t461)
         let !s463 = (if (1.0 - (abs (t462 - t462))) > 0 then t462 else 0.0)
-        wr mouse 10.0 s463
-        t464 <- rd scalars ((6.0 * t324) + 2.0)
-        t465 <- rd scalars ((6.0 * t324) + 3.0)
-        t466 <- rd vel (3.0 * t324)
-        t467 <- rd vel ((3.0 * t324) + 1.0)
-        t468 <- rd vel ((3.0 * t324) + 2.0)
-        t469 <- rd scalars ((6.0 * t324) + 1.0)
-        wr vel (3.0 * t324) (t466 + ((t464 * (s463 - t452)) * t334))
-        wr vel ((3.0 * t324) + 1.0) (t467 + ((t464 * (s463 - t452)) * t335))
-        wr vel ((3.0 * t324) + 2.0) (t468 + ((t464 * (s463 - t452)) * t336))
-        wr scalars ((6.0 * t324) + 1.0) (t469 + ((t465 * (s463 - t452)) * t459))
-        t470 <- rd mouse 11.0
-        t471 <- rd vel (3.0 * t324)
-        t472 <- rd vel ((3.0 * t324) + 1.0)
-        t473 <- rd vel ((3.0 * t324) + 2.0)
-        t474 <- rd scalars ((6.0 * t324) + 1.0)
+        wrI mouse 10 s463
+        t464 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t465 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t466 <- rdI vel (3 * (truncate t324))
+        t467 <- rdI vel ((3 * (truncate t324)) + 1)
+        t468 <- rdI vel ((3 * (truncate t324)) + 2)
+        t469 <- rdI scalars ((6 * (truncate t324)) + 1)
+        wrI vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
+        wrI vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
+        wrI vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
+        wrI scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
+        t470 <- rdI mouse 11
+        t471 <- rdI vel (3 * (truncate t324))
+        t472 <- rdI vel ((3 * (truncate t324)) + 1)
+        t473 <- rdI vel ((3 * (truncate t324)) + 2)
+        t474 <- rdI scalars ((6 * (truncate t324)) + 1)
         let !t475 = (((((s447 * s339) - (s448 * s338)) * t331) + (((s448 * s337) - (s446 * s339)) * t332)) + (((s446 * s338) - (s447 * s337)) * t333))
         let !t476 = (t470 + ((negate ((((((s337 * t471) + (s338 * t472)) + (s339 * t473)) + (t475 * t474)) + (s445 * (((s449 * s337) + (s450 * s338)) + (s451 * s339)))) + (s444 * t470))) / (((t325 * (((s337 * s337) + (s338 * s338)) + (s339 * s339))) + ((t326 * t475) * t475)) + s444)))
         let !t477 = (if (t476 - t457) > 0 then t457 else t476)
         let !t478 = (if (t458 - t477) > 0 then t458 else t477)
         let !s479 = (if (1.0 - (abs (t478 - t478))) > 0 then t478 else 0.0)
-        wr mouse 11.0 s479
-        t480 <- rd scalars ((6.0 * t324) + 2.0)
-        t481 <- rd scalars ((6.0 * t324) + 3.0)
-        t482 <- rd vel (3.0 * t324)
-        t483 <- rd vel ((3.0 * t324) + 1.0)
-        t484 <- rd vel ((3.0 * t324) + 2.0)
-        t485 <- rd scalars ((6.0 * t324) + 1.0)
-        wr vel (3.0 * t324) (t482 + ((t480 * (s479 - t470)) * s337))
-        wr vel ((3.0 * t324) + 1.0) (t483 + ((t480 * (s479 - t470)) * s338))
-        wr vel ((3.0 * t324) + 2.0) (t484 + ((t480 * (s479 - t470)) * s339))
-        wr scalars ((6.0 * t324) + 1.0) (t485 + ((t481 * (s479 - t470)) * t475))
+        wrI mouse 11 s479
+        t480 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t481 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t482 <- rdI vel (3 * (truncate t324))
+        t483 <- rdI vel ((3 * (truncate t324)) + 1)
+        t484 <- rdI vel ((3 * (truncate t324)) + 2)
+        t485 <- rdI scalars ((6 * (truncate t324)) + 1)
+        wrI vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
+        wrI vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
+        wrI vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
+        wrI scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
         pure ()
       else do
         pure ()
@@ -1265,48 +1287,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t486 <- rd meta 0.0
-  loop 0.0 t486 $ \i487 -> do
-    wr bodyPrev ((2.0 * i487) + 1.0) 0.0
+  t486 <- rdI meta 0
+  loopI 0.0 t486 $ \i487 -> do
+    let !d487 = fromIntegral i487 :: Double
+    wrI bodyPrev ((2 * i487) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i488 -> do
-    t489 <- rd contacts ((30.0 * i488) + 2.0)
-    wr prev (4.0 * i488) t489
-    t490 <- rd contacts ((30.0 * i488) + 3.0)
-    wr prev ((4.0 * i488) + 1.0) t490
-    t491 <- rd contacts ((30.0 * i488) + 24.0)
-    wr prev ((4.0 * i488) + 2.0) t491
-    t492 <- rd contacts ((30.0 * i488) + 25.0)
-    wr prev ((4.0 * i488) + 3.0) t492
-    t493 <- rd bodyPrev ((2.0 * t489) + 1.0)
+  loopI 0.0 t9 $ \i488 -> do
+    let !d488 = fromIntegral i488 :: Double
+    t489 <- rdI contacts ((30 * i488) + 2)
+    wrI prev (4 * i488) t489
+    t490 <- rdI contacts ((30 * i488) + 3)
+    wrI prev ((4 * i488) + 1) t490
+    t491 <- rdI contacts ((30 * i488) + 24)
+    wrI prev ((4 * i488) + 2) t491
+    t492 <- rdI contacts ((30 * i488) + 25)
+    wrI prev ((4 * i488) + 3) t492
+    t493 <- rdI bodyPrev ((2 * (truncate t489)) + 1)
     if (0.5 - t493) > 0 then do
-      wr bodyPrev (2.0 * t489) i488
+      wrI bodyPrev (2 * (truncate t489)) d488
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t489) + 1.0) (t493 + 1.0)
+    wrI bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1385,58 +1410,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t92 = (t12 + (t1 * t13))
     let !t93 = (1.0 - (abs ((((((((((((((s54 - s54) + t91) + (s56 - s56)) + (s78 - s78)) + (s79 - s79)) + (s80 - s80)) + (s87 - s87)) + (s88 - s88)) + (s89 - s89)) + (s57 - s57)) + (s58 - s58)) + (s59 - s59)) + (t92 - t92)) + t91)))
     if (if (t90 - t93) > 0 then t93 else t90) > 0 then do
-      wr pos (3.0 * i2) s54
-      wr pos ((3.0 * i2) + 1.0) s55
-      wr pos ((3.0 * i2) + 2.0) s56
-      wr vel (3.0 * i2) s78
-      wr vel ((3.0 * i2) + 1.0) s79
-      wr vel ((3.0 * i2) + 2.0) s80
-      wr axis (3.0 * i2) s87
-      wr axis ((3.0 * i2) + 1.0) s88
-      wr axis ((3.0 * i2) + 2.0) s89
-      wr normal (3.0 * i2) s57
-      wr normal ((3.0 * i2) + 1.0) s58
-      wr normal ((3.0 * i2) + 2.0) s59
-      wr scalars (6.0 * i2) t92
+      wrI pos (3 * i2) s54
+      wrI pos ((3 * i2) + 1) s55
+      wrI pos ((3 * i2) + 2) s56
+      wrI vel (3 * i2) s78
+      wrI vel ((3 * i2) + 1) s79
+      wrI vel ((3 * i2) + 2) s80
+      wrI axis (3 * i2) s87
+      wrI axis ((3 * i2) + 1) s88
+      wrI axis ((3 * i2) + 2) s89
+      wrI normal (3 * i2) s57
+      wrI normal ((3 * i2) + 1) s58
+      wrI normal ((3 * i2) + 2) s59
+      wrI scalars (6 * i2) t92
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t94 <- rd meta 1.0
-      wr meta 1.0 (t94 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t94 <- rdI meta 1
+      wrI meta 1 (t94 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1481,9 +1508,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s60 = (t42 * t8)
         let !s61 = (t28 + (t42 * t9))
         let !s62 = (t42 * t10)
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
         let !t63 = (s47 + (s27 * s58))
         let !t64 = (if (abs s61) > 0 then 1.0 else 0.0)
         let !t65 = (if ((abs t63) - 1.0e-10) > 0 then t64 else 0.0)
@@ -1516,9 +1543,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s92 = (t42 * s60)
         let !s93 = (t28 + (t42 * s61))
         let !s94 = (t42 * s62)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
         let !t95 = (s80 + (s27 * s90))
         let !t96 = (if (abs s93) > 0 then 1.0 else 0.0)
         let !t97 = (if ((abs t95) - 1.0e-10) > 0 then t96 else 0.0)
@@ -1551,9 +1578,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s124 = (t42 * s92)
         let !s125 = (t28 + (t42 * s93))
         let !s126 = (t42 * s94)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
         let !t127 = (s112 + (s27 * s122))
         let !t128 = (if (abs s125) > 0 then 1.0 else 0.0)
         let !t129 = (if ((abs t127) - 1.0e-10) > 0 then t128 else 0.0)
@@ -1586,9 +1613,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s156 = (t42 * s124)
         let !s157 = (t28 + (t42 * s125))
         let !s158 = (t42 * s126)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
         pure ()
       else do
         let !t159 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1616,18 +1643,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = (if t180 > 0 then t174 else t2)
         let !s182 = (if t180 > 0 then t175 else t3)
         let !s183 = (if t180 > 0 then t179 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s181
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s182
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s183
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s181 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s182 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s181
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s182
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s183
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s181 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s182 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s183 + (negate t4))))
         pure ()
       pure ()
     pure ()

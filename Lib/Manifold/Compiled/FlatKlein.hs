@@ -28,29 +28,30 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       if (1.0 - (abs (((t8 - t8) + (t9 - t9)) + (t10 - t10)))) > 0 then do
-        wr vel (3.0 * i3) t8
-        wr vel ((3.0 * i3) + 1.0) t9
-        wr vel ((3.0 * i3) + 2.0) t10
+        wrI vel (3 * i3) t8
+        wrI vel ((3 * i3) + 1) t9
+        wrI vel ((3 * i3) + 2) t10
         pure ()
       else do
-        t14 <- rd meta 1.0
-        wr meta 1.0 (t14 + 1.0)
+        t14 <- rdI meta 1
+        wrI meta 1 (t14 + 1.0)
         pure ()
       pure ()
     else do
@@ -60,11 +61,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -74,86 +76,95 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
     let !t38 = ((abs t32) - 1.0)
     let !t39 = (if (negate t38) > 0 then 0.0 else t38)
     let !t40 = ((abs t34) - 1.0)
     let !t41 = (if (negate t40) > 0 then 0.0 else t40)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t41 * t41)))) > 0 then do
-      t42 <- rd meta 4.0
-      t43 <- rd meta 5.0
+      t42 <- rdI meta 4
+      t43 <- rdI meta 5
       let !s44 = (floorF (t32 / t43))
       let !s45 = (floorF (t33 / t43))
       let !s46 = (floorF (t34 / t43))
-      loop 0.0 3.0 $ \i47 -> do
-        loop 0.0 3.0 $ \i48 -> do
-          loop 0.0 3.0 $ \i49 -> do
-            let !s50 = ((s44 + i47) - 1.0)
-            let !s51 = ((s45 + i48) - 1.0)
-            let !s52 = ((s46 + i49) - 1.0)
+      loopI 0.0 3.0 $ \i47 -> do
+        let !d47 = fromIntegral i47 :: Double
+        loopI 0.0 3.0 $ \i48 -> do
+          let !d48 = fromIntegral i48 :: Double
+          loopI 0.0 3.0 $ \i49 -> do
+            let !d49 = fromIntegral i49 :: Double
+            let !s50 = ((s44 + d47) - 1.0)
+            let !s51 = ((s45 + d48) - 1.0)
+            let !s52 = ((s46 + d49) - 1.0)
             let !s53 = (((((s50 + 131072.0) * 262144.0) + (s51 + 131072.0)) * 262144.0) + (s52 + 131072.0))
             let !t54 = (((s50 * 7.3856093e7) + (s51 * 1.9349663e7)) + (s52 * 8.3492791e7))
             let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
-            t56 <- rd grid s55
-            t57 <- rd grid (t42 + s55)
-            loop t57 t56 $ \i58 -> do
-              t59 <- rd items i58
-              t60 <- rd cellOf t59
+            t56 <- rdI grid (truncate s55)
+            t57 <- rdI grid ((truncate t42) + (truncate s55))
+            loopI t57 t56 $ \i58 -> do
+              let !d58 = fromIntegral i58 :: Double
+              t59 <- rdI items i58
+              t60 <- rdI cellOf (truncate t59)
               if (0.5 - (abs (t60 - s53))) > 0 then do
-                if (t59 - i31) > 0 then do
-                  t61 <- rd pos (3.0 * t59)
-                  t62 <- rd pos ((3.0 * t59) + 1.0)
-                  t63 <- rd pos ((3.0 * t59) + 2.0)
-                  t64 <- rd scalars ((6.0 * t59) + 5.0)
-                  t65 <- rd scalars ((6.0 * t59) + 2.0)
+                if (t59 - d31) > 0 then do
+                  t61 <- rdI pos (3 * (truncate t59))
+                  t62 <- rdI pos ((3 * (truncate t59)) + 1)
+                  t63 <- rdI pos ((3 * (truncate t59)) + 2)
+                  t64 <- rdI scalars ((6 * (truncate t59)) + 5)
+                  t65 <- rdI scalars ((6 * (truncate t59)) + 2)
                   let !t66 = (t36 + t65)
                   let !t67 = (t32 + (negate t61))
                   let !t68 = (t33 + (negate t62))
                   let !t69 = (t34 + (negate t63))
                   let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
                   if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t59 + 1.0) * 64.0) i31 t59 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t59 + 1.0) * 64.0) + 2.0) t59 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t59 + 1.0) * 64.0) + 2.0) t59 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -177,40 +188,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t75 = ((abs s72) - 1.0)
     let !t76 = (if (negate t75) > 0 then 0.0 else t75)
     if ((t35 + t37) - (sqrt ((t74 * t74) + (t76 * t76)))) > 0 then do
-      t77 <- rd meta 4.0
-      t78 <- rd meta 5.0
+      t77 <- rdI meta 4
+      t78 <- rdI meta 5
       let !s79 = (floorF (s71 / t78))
       let !s80 = (floorF (t33 / t78))
       let !s81 = (floorF (s72 / t78))
-      loop 0.0 3.0 $ \i82 -> do
-        loop 0.0 3.0 $ \i83 -> do
-          loop 0.0 3.0 $ \i84 -> do
-            let !s85 = ((s79 + i82) - 1.0)
-            let !s86 = ((s80 + i83) - 1.0)
-            let !s87 = ((s81 + i84) - 1.0)
+      loopI 0.0 3.0 $ \i82 -> do
+        let !d82 = fromIntegral i82 :: Double
+        loopI 0.0 3.0 $ \i83 -> do
+          let !d83 = fromIntegral i83 :: Double
+          loopI 0.0 3.0 $ \i84 -> do
+            let !d84 = fromIntegral i84 :: Double
+            let !s85 = ((s79 + d82) - 1.0)
+            let !s86 = ((s80 + d83) - 1.0)
+            let !s87 = ((s81 + d84) - 1.0)
             let !s88 = (((((s85 + 131072.0) * 262144.0) + (s86 + 131072.0)) * 262144.0) + (s87 + 131072.0))
             let !t89 = (((s85 * 7.3856093e7) + (s86 * 1.9349663e7)) + (s87 * 8.3492791e7))
             let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
-            t91 <- rd grid s90
-            t92 <- rd grid (t77 + s90)
-            loop t92 t91 $ \i93 -> do
-              t94 <- rd items i93
-              t95 <- rd cellOf t94
+            t91 <- rdI grid (truncate s90)
+            t92 <- rdI grid ((truncate t77) + (truncate s90))
+            loopI t92 t91 $ \i93 -> do
+              let !d93 = fromIntegral i93 :: Double
+              t94 <- rdI items i93
+              t95 <- rdI cellOf (truncate t94)
               if (0.5 - (abs (t95 - s88))) > 0 then do
-                if (t94 - i31) > 0 then do
-                  t96 <- rd pos (3.0 * t94)
-                  t97 <- rd pos ((3.0 * t94) + 1.0)
-                  t98 <- rd pos ((3.0 * t94) + 2.0)
-                  t99 <- rd scalars ((6.0 * t94) + 5.0)
-                  t100 <- rd scalars ((6.0 * t94) + 2.0)
+                if (t94 - d31) > 0 then do
+                  t96 <- rdI pos (3 * (truncate t94))
+                  t97 <- rdI pos ((3 * (truncate t94)) + 1)
+                  t98 <- rdI pos ((3 * (truncate t94)) + 2)
+                  t99 <- rdI scalars ((6 * (truncate t94)) + 5)
+                  t100 <- rdI scalars ((6 * (truncate t94)) + 2)
                   let !t101 = (t36 + t100)
                   let !t102 = (s71 + (negate t96))
                   let !t103 = (t33 + (negate t97))
                   let !t104 = (s72 + (negate t98))
                   let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
                   if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t94 + 1.0) * 64.0) + 16.0) i31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t94 + 1.0) * 64.0) + 16.0) + 2.0) t94 i31 1.0 1.0 (-1.0) 2.0 (-0.0) (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t94 + 1.0) * 64.0) + 16.0) + 2.0) t94 d31 1.0 1.0 (-1.0) 2.0 (-0.0) (-2.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -234,40 +249,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t110 = ((abs s107) - 1.0)
     let !t111 = (if (negate t110) > 0 then 0.0 else t110)
     if ((t35 + t37) - (sqrt ((t109 * t109) + (t111 * t111)))) > 0 then do
-      t112 <- rd meta 4.0
-      t113 <- rd meta 5.0
+      t112 <- rdI meta 4
+      t113 <- rdI meta 5
       let !s114 = (floorF (s106 / t113))
       let !s115 = (floorF (t33 / t113))
       let !s116 = (floorF (s107 / t113))
-      loop 0.0 3.0 $ \i117 -> do
-        loop 0.0 3.0 $ \i118 -> do
-          loop 0.0 3.0 $ \i119 -> do
-            let !s120 = ((s114 + i117) - 1.0)
-            let !s121 = ((s115 + i118) - 1.0)
-            let !s122 = ((s116 + i119) - 1.0)
+      loopI 0.0 3.0 $ \i117 -> do
+        let !d117 = fromIntegral i117 :: Double
+        loopI 0.0 3.0 $ \i118 -> do
+          let !d118 = fromIntegral i118 :: Double
+          loopI 0.0 3.0 $ \i119 -> do
+            let !d119 = fromIntegral i119 :: Double
+            let !s120 = ((s114 + d117) - 1.0)
+            let !s121 = ((s115 + d118) - 1.0)
+            let !s122 = ((s116 + d119) - 1.0)
             let !s123 = (((((s120 + 131072.0) * 262144.0) + (s121 + 131072.0)) * 262144.0) + (s122 + 131072.0))
             let !t124 = (((s120 * 7.3856093e7) + (s121 * 1.9349663e7)) + (s122 * 8.3492791e7))
             let !s125 = (t124 - (t112 * (floorF (t124 / t112))))
-            t126 <- rd grid s125
-            t127 <- rd grid (t112 + s125)
-            loop t127 t126 $ \i128 -> do
-              t129 <- rd items i128
-              t130 <- rd cellOf t129
+            t126 <- rdI grid (truncate s125)
+            t127 <- rdI grid ((truncate t112) + (truncate s125))
+            loopI t127 t126 $ \i128 -> do
+              let !d128 = fromIntegral i128 :: Double
+              t129 <- rdI items i128
+              t130 <- rdI cellOf (truncate t129)
               if (0.5 - (abs (t130 - s123))) > 0 then do
-                if (t129 - i31) > 0 then do
-                  t131 <- rd pos (3.0 * t129)
-                  t132 <- rd pos ((3.0 * t129) + 1.0)
-                  t133 <- rd pos ((3.0 * t129) + 2.0)
-                  t134 <- rd scalars ((6.0 * t129) + 5.0)
-                  t135 <- rd scalars ((6.0 * t129) + 2.0)
+                if (t129 - d31) > 0 then do
+                  t131 <- rdI pos (3 * (truncate t129))
+                  t132 <- rdI pos ((3 * (truncate t129)) + 1)
+                  t133 <- rdI pos ((3 * (truncate t129)) + 2)
+                  t134 <- rdI scalars ((6 * (truncate t129)) + 5)
+                  t135 <- rdI scalars ((6 * (truncate t129)) + 2)
                   let !t136 = (t36 + t135)
                   let !t137 = (s106 + (negate t131))
                   let !t138 = (t33 + (negate t132))
                   let !t139 = (s107 + (negate t133))
                   let !t140 = ((t35 + t134) - (sqrt (((t137 * t137) + (t138 * t138)) + (t139 * t139))))
                   if (if (t136 - t140) > 0 then t140 else t136) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t129 + 1.0) * 64.0) + 20.0) i31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t129 + 1.0) * 64.0) + 20.0) + 2.0) t129 i31 1.0 1.0 (-1.0) 2.0 (-0.0) 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t129 + 1.0) * 64.0) + 20.0) d31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t129 + 1.0) * 64.0) + 20.0) + 2.0) t129 d31 1.0 1.0 (-1.0) 2.0 (-0.0) 0.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -291,40 +310,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t145 = ((abs s142) - 1.0)
     let !t146 = (if (negate t145) > 0 then 0.0 else t145)
     if ((t35 + t37) - (sqrt ((t144 * t144) + (t146 * t146)))) > 0 then do
-      t147 <- rd meta 4.0
-      t148 <- rd meta 5.0
+      t147 <- rdI meta 4
+      t148 <- rdI meta 5
       let !s149 = (floorF (s141 / t148))
       let !s150 = (floorF (t33 / t148))
       let !s151 = (floorF (s142 / t148))
-      loop 0.0 3.0 $ \i152 -> do
-        loop 0.0 3.0 $ \i153 -> do
-          loop 0.0 3.0 $ \i154 -> do
-            let !s155 = ((s149 + i152) - 1.0)
-            let !s156 = ((s150 + i153) - 1.0)
-            let !s157 = ((s151 + i154) - 1.0)
+      loopI 0.0 3.0 $ \i152 -> do
+        let !d152 = fromIntegral i152 :: Double
+        loopI 0.0 3.0 $ \i153 -> do
+          let !d153 = fromIntegral i153 :: Double
+          loopI 0.0 3.0 $ \i154 -> do
+            let !d154 = fromIntegral i154 :: Double
+            let !s155 = ((s149 + d152) - 1.0)
+            let !s156 = ((s150 + d153) - 1.0)
+            let !s157 = ((s151 + d154) - 1.0)
             let !s158 = (((((s155 + 131072.0) * 262144.0) + (s156 + 131072.0)) * 262144.0) + (s157 + 131072.0))
             let !t159 = (((s155 * 7.3856093e7) + (s156 * 1.9349663e7)) + (s157 * 8.3492791e7))
             let !s160 = (t159 - (t147 * (floorF (t159 / t147))))
-            t161 <- rd grid s160
-            t162 <- rd grid (t147 + s160)
-            loop t162 t161 $ \i163 -> do
-              t164 <- rd items i163
-              t165 <- rd cellOf t164
+            t161 <- rdI grid (truncate s160)
+            t162 <- rdI grid ((truncate t147) + (truncate s160))
+            loopI t162 t161 $ \i163 -> do
+              let !d163 = fromIntegral i163 :: Double
+              t164 <- rdI items i163
+              t165 <- rdI cellOf (truncate t164)
               if (0.5 - (abs (t165 - s158))) > 0 then do
-                if (t164 - i31) > 0 then do
-                  t166 <- rd pos (3.0 * t164)
-                  t167 <- rd pos ((3.0 * t164) + 1.0)
-                  t168 <- rd pos ((3.0 * t164) + 2.0)
-                  t169 <- rd scalars ((6.0 * t164) + 5.0)
-                  t170 <- rd scalars ((6.0 * t164) + 2.0)
+                if (t164 - d31) > 0 then do
+                  t166 <- rdI pos (3 * (truncate t164))
+                  t167 <- rdI pos ((3 * (truncate t164)) + 1)
+                  t168 <- rdI pos ((3 * (truncate t164)) + 2)
+                  t169 <- rdI scalars ((6 * (truncate t164)) + 5)
+                  t170 <- rdI scalars ((6 * (truncate t164)) + 2)
                   let !t171 = (t36 + t170)
                   let !t172 = (s141 + (negate t166))
                   let !t173 = (t33 + (negate t167))
                   let !t174 = (s142 + (negate t168))
                   let !t175 = ((t35 + t169) - (sqrt (((t172 * t172) + (t173 * t173)) + (t174 * t174))))
                   if (if (t171 - t175) > 0 then t175 else t171) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t164 + 1.0) * 64.0) + 24.0) i31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t164 + 1.0) * 64.0) + 24.0) + 2.0) t164 i31 1.0 1.0 (-1.0) 2.0 (-0.0) 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t164 + 1.0) * 64.0) + 24.0) d31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t164 + 1.0) * 64.0) + 24.0) + 2.0) t164 d31 1.0 1.0 (-1.0) 2.0 (-0.0) 2.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -345,40 +368,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t177 = ((abs s176) - 1.0)
     let !t178 = (if (negate t177) > 0 then 0.0 else t177)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t178 * t178)))) > 0 then do
-      t179 <- rd meta 4.0
-      t180 <- rd meta 5.0
+      t179 <- rdI meta 4
+      t180 <- rdI meta 5
       let !s181 = (floorF (t32 / t180))
       let !s182 = (floorF (t33 / t180))
       let !s183 = (floorF (s176 / t180))
-      loop 0.0 3.0 $ \i184 -> do
-        loop 0.0 3.0 $ \i185 -> do
-          loop 0.0 3.0 $ \i186 -> do
-            let !s187 = ((s181 + i184) - 1.0)
-            let !s188 = ((s182 + i185) - 1.0)
-            let !s189 = ((s183 + i186) - 1.0)
+      loopI 0.0 3.0 $ \i184 -> do
+        let !d184 = fromIntegral i184 :: Double
+        loopI 0.0 3.0 $ \i185 -> do
+          let !d185 = fromIntegral i185 :: Double
+          loopI 0.0 3.0 $ \i186 -> do
+            let !d186 = fromIntegral i186 :: Double
+            let !s187 = ((s181 + d184) - 1.0)
+            let !s188 = ((s182 + d185) - 1.0)
+            let !s189 = ((s183 + d186) - 1.0)
             let !s190 = (((((s187 + 131072.0) * 262144.0) + (s188 + 131072.0)) * 262144.0) + (s189 + 131072.0))
             let !t191 = (((s187 * 7.3856093e7) + (s188 * 1.9349663e7)) + (s189 * 8.3492791e7))
             let !s192 = (t191 - (t179 * (floorF (t191 / t179))))
-            t193 <- rd grid s192
-            t194 <- rd grid (t179 + s192)
-            loop t194 t193 $ \i195 -> do
-              t196 <- rd items i195
-              t197 <- rd cellOf t196
+            t193 <- rdI grid (truncate s192)
+            t194 <- rdI grid ((truncate t179) + (truncate s192))
+            loopI t194 t193 $ \i195 -> do
+              let !d195 = fromIntegral i195 :: Double
+              t196 <- rdI items i195
+              t197 <- rdI cellOf (truncate t196)
               if (0.5 - (abs (t197 - s190))) > 0 then do
-                if (t196 - i31) > 0 then do
-                  t198 <- rd pos (3.0 * t196)
-                  t199 <- rd pos ((3.0 * t196) + 1.0)
-                  t200 <- rd pos ((3.0 * t196) + 2.0)
-                  t201 <- rd scalars ((6.0 * t196) + 5.0)
-                  t202 <- rd scalars ((6.0 * t196) + 2.0)
+                if (t196 - d31) > 0 then do
+                  t198 <- rdI pos (3 * (truncate t196))
+                  t199 <- rdI pos ((3 * (truncate t196)) + 1)
+                  t200 <- rdI pos ((3 * (truncate t196)) + 2)
+                  t201 <- rdI scalars ((6 * (truncate t196)) + 5)
+                  t202 <- rdI scalars ((6 * (truncate t196)) + 2)
                   let !t203 = (t36 + t202)
                   let !t204 = (t32 + (negate t198))
                   let !t205 = (t33 + (negate t199))
                   let !t206 = (s176 + (negate t200))
                   let !t207 = ((t35 + t201) - (sqrt (((t204 * t204) + (t205 * t205)) + (t206 * t206))))
                   if (if (t203 - t207) > 0 then t207 else t203) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t196 + 1.0) * 64.0) + 28.0) i31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t196 + 1.0) * 64.0) + 28.0) + 2.0) t196 i31 1.0 1.0 1.0 (-0.0) (-0.0) 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t196 + 1.0) * 64.0) + 28.0) d31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t196 + 1.0) * 64.0) + 28.0) + 2.0) t196 d31 1.0 1.0 1.0 (-0.0) (-0.0) 2.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -399,40 +426,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t209 = ((abs s208) - 1.0)
     let !t210 = (if (negate t209) > 0 then 0.0 else t209)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t210 * t210)))) > 0 then do
-      t211 <- rd meta 4.0
-      t212 <- rd meta 5.0
+      t211 <- rdI meta 4
+      t212 <- rdI meta 5
       let !s213 = (floorF (t32 / t212))
       let !s214 = (floorF (t33 / t212))
       let !s215 = (floorF (s208 / t212))
-      loop 0.0 3.0 $ \i216 -> do
-        loop 0.0 3.0 $ \i217 -> do
-          loop 0.0 3.0 $ \i218 -> do
-            let !s219 = ((s213 + i216) - 1.0)
-            let !s220 = ((s214 + i217) - 1.0)
-            let !s221 = ((s215 + i218) - 1.0)
+      loopI 0.0 3.0 $ \i216 -> do
+        let !d216 = fromIntegral i216 :: Double
+        loopI 0.0 3.0 $ \i217 -> do
+          let !d217 = fromIntegral i217 :: Double
+          loopI 0.0 3.0 $ \i218 -> do
+            let !d218 = fromIntegral i218 :: Double
+            let !s219 = ((s213 + d216) - 1.0)
+            let !s220 = ((s214 + d217) - 1.0)
+            let !s221 = ((s215 + d218) - 1.0)
             let !s222 = (((((s219 + 131072.0) * 262144.0) + (s220 + 131072.0)) * 262144.0) + (s221 + 131072.0))
             let !t223 = (((s219 * 7.3856093e7) + (s220 * 1.9349663e7)) + (s221 * 8.3492791e7))
             let !s224 = (t223 - (t211 * (floorF (t223 / t211))))
-            t225 <- rd grid s224
-            t226 <- rd grid (t211 + s224)
-            loop t226 t225 $ \i227 -> do
-              t228 <- rd items i227
-              t229 <- rd cellOf t228
+            t225 <- rdI grid (truncate s224)
+            t226 <- rdI grid ((truncate t211) + (truncate s224))
+            loopI t226 t225 $ \i227 -> do
+              let !d227 = fromIntegral i227 :: Double
+              t228 <- rdI items i227
+              t229 <- rdI cellOf (truncate t228)
               if (0.5 - (abs (t229 - s222))) > 0 then do
-                if ((t228 - i31) + 0.5) > 0 then do
-                  t230 <- rd pos (3.0 * t228)
-                  t231 <- rd pos ((3.0 * t228) + 1.0)
-                  t232 <- rd pos ((3.0 * t228) + 2.0)
-                  t233 <- rd scalars ((6.0 * t228) + 5.0)
-                  t234 <- rd scalars ((6.0 * t228) + 2.0)
+                if ((t228 - d31) + 0.5) > 0 then do
+                  t230 <- rdI pos (3 * (truncate t228))
+                  t231 <- rdI pos ((3 * (truncate t228)) + 1)
+                  t232 <- rdI pos ((3 * (truncate t228)) + 2)
+                  t233 <- rdI scalars ((6 * (truncate t228)) + 5)
+                  t234 <- rdI scalars ((6 * (truncate t228)) + 2)
                   let !t235 = (t36 + t234)
                   let !t236 = (t32 + (negate t230))
                   let !t237 = (t33 + (negate t231))
                   let !t238 = (s208 + (negate t232))
                   let !t239 = ((t35 + t233) - (sqrt (((t236 * t236) + (t237 * t237)) + (t238 * t238))))
                   if (if (t235 - t239) > 0 then t239 else t235) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t228 + 1.0) * 64.0) + 32.0) i31 t228 1.0 1.0 1.0 0.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t228 + 1.0) * 64.0) + 32.0) + 2.0) t228 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t228 + 1.0) * 64.0) + 32.0) d31 t228 1.0 1.0 1.0 0.0 0.0 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t228 + 1.0) * 64.0) + 32.0) + 2.0) t228 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-2.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -456,40 +487,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t244 = ((abs s241) - 1.0)
     let !t245 = (if (negate t244) > 0 then 0.0 else t244)
     if ((t35 + t37) - (sqrt ((t243 * t243) + (t245 * t245)))) > 0 then do
-      t246 <- rd meta 4.0
-      t247 <- rd meta 5.0
+      t246 <- rdI meta 4
+      t247 <- rdI meta 5
       let !s248 = (floorF (s240 / t247))
       let !s249 = (floorF (t33 / t247))
       let !s250 = (floorF (s241 / t247))
-      loop 0.0 3.0 $ \i251 -> do
-        loop 0.0 3.0 $ \i252 -> do
-          loop 0.0 3.0 $ \i253 -> do
-            let !s254 = ((s248 + i251) - 1.0)
-            let !s255 = ((s249 + i252) - 1.0)
-            let !s256 = ((s250 + i253) - 1.0)
+      loopI 0.0 3.0 $ \i251 -> do
+        let !d251 = fromIntegral i251 :: Double
+        loopI 0.0 3.0 $ \i252 -> do
+          let !d252 = fromIntegral i252 :: Double
+          loopI 0.0 3.0 $ \i253 -> do
+            let !d253 = fromIntegral i253 :: Double
+            let !s254 = ((s248 + d251) - 1.0)
+            let !s255 = ((s249 + d252) - 1.0)
+            let !s256 = ((s250 + d253) - 1.0)
             let !s257 = (((((s254 + 131072.0) * 262144.0) + (s255 + 131072.0)) * 262144.0) + (s256 + 131072.0))
             let !t258 = (((s254 * 7.3856093e7) + (s255 * 1.9349663e7)) + (s256 * 8.3492791e7))
             let !s259 = (t258 - (t246 * (floorF (t258 / t246))))
-            t260 <- rd grid s259
-            t261 <- rd grid (t246 + s259)
-            loop t261 t260 $ \i262 -> do
-              t263 <- rd items i262
-              t264 <- rd cellOf t263
+            t260 <- rdI grid (truncate s259)
+            t261 <- rdI grid ((truncate t246) + (truncate s259))
+            loopI t261 t260 $ \i262 -> do
+              let !d262 = fromIntegral i262 :: Double
+              t263 <- rdI items i262
+              t264 <- rdI cellOf (truncate t263)
               if (0.5 - (abs (t264 - s257))) > 0 then do
-                if ((t263 - i31) + 0.5) > 0 then do
-                  t265 <- rd pos (3.0 * t263)
-                  t266 <- rd pos ((3.0 * t263) + 1.0)
-                  t267 <- rd pos ((3.0 * t263) + 2.0)
-                  t268 <- rd scalars ((6.0 * t263) + 5.0)
-                  t269 <- rd scalars ((6.0 * t263) + 2.0)
+                if ((t263 - d31) + 0.5) > 0 then do
+                  t265 <- rdI pos (3 * (truncate t263))
+                  t266 <- rdI pos ((3 * (truncate t263)) + 1)
+                  t267 <- rdI pos ((3 * (truncate t263)) + 2)
+                  t268 <- rdI scalars ((6 * (truncate t263)) + 5)
+                  t269 <- rdI scalars ((6 * (truncate t263)) + 2)
                   let !t270 = (t36 + t269)
                   let !t271 = (s240 + (negate t265))
                   let !t272 = (t33 + (negate t266))
                   let !t273 = (s241 + (negate t267))
                   let !t274 = ((t35 + t268) - (sqrt (((t271 * t271) + (t272 * t272)) + (t273 * t273))))
                   if (if (t270 - t274) > 0 then t274 else t270) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t263 + 1.0) * 64.0) + 36.0) i31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t263 + 1.0) * 64.0) + 36.0) + 2.0) t263 i31 1.0 1.0 (-1.0) (-2.0) (-0.0) (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t263 + 1.0) * 64.0) + 36.0) d31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t263 + 1.0) * 64.0) + 36.0) + 2.0) t263 d31 1.0 1.0 (-1.0) (-2.0) (-0.0) (-2.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -513,40 +548,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t279 = ((abs s276) - 1.0)
     let !t280 = (if (negate t279) > 0 then 0.0 else t279)
     if ((t35 + t37) - (sqrt ((t278 * t278) + (t280 * t280)))) > 0 then do
-      t281 <- rd meta 4.0
-      t282 <- rd meta 5.0
+      t281 <- rdI meta 4
+      t282 <- rdI meta 5
       let !s283 = (floorF (s275 / t282))
       let !s284 = (floorF (t33 / t282))
       let !s285 = (floorF (s276 / t282))
-      loop 0.0 3.0 $ \i286 -> do
-        loop 0.0 3.0 $ \i287 -> do
-          loop 0.0 3.0 $ \i288 -> do
-            let !s289 = ((s283 + i286) - 1.0)
-            let !s290 = ((s284 + i287) - 1.0)
-            let !s291 = ((s285 + i288) - 1.0)
+      loopI 0.0 3.0 $ \i286 -> do
+        let !d286 = fromIntegral i286 :: Double
+        loopI 0.0 3.0 $ \i287 -> do
+          let !d287 = fromIntegral i287 :: Double
+          loopI 0.0 3.0 $ \i288 -> do
+            let !d288 = fromIntegral i288 :: Double
+            let !s289 = ((s283 + d286) - 1.0)
+            let !s290 = ((s284 + d287) - 1.0)
+            let !s291 = ((s285 + d288) - 1.0)
             let !s292 = (((((s289 + 131072.0) * 262144.0) + (s290 + 131072.0)) * 262144.0) + (s291 + 131072.0))
             let !t293 = (((s289 * 7.3856093e7) + (s290 * 1.9349663e7)) + (s291 * 8.3492791e7))
             let !s294 = (t293 - (t281 * (floorF (t293 / t281))))
-            t295 <- rd grid s294
-            t296 <- rd grid (t281 + s294)
-            loop t296 t295 $ \i297 -> do
-              t298 <- rd items i297
-              t299 <- rd cellOf t298
+            t295 <- rdI grid (truncate s294)
+            t296 <- rdI grid ((truncate t281) + (truncate s294))
+            loopI t296 t295 $ \i297 -> do
+              let !d297 = fromIntegral i297 :: Double
+              t298 <- rdI items i297
+              t299 <- rdI cellOf (truncate t298)
               if (0.5 - (abs (t299 - s292))) > 0 then do
-                if ((t298 - i31) + 0.5) > 0 then do
-                  t300 <- rd pos (3.0 * t298)
-                  t301 <- rd pos ((3.0 * t298) + 1.0)
-                  t302 <- rd pos ((3.0 * t298) + 2.0)
-                  t303 <- rd scalars ((6.0 * t298) + 5.0)
-                  t304 <- rd scalars ((6.0 * t298) + 2.0)
+                if ((t298 - d31) + 0.5) > 0 then do
+                  t300 <- rdI pos (3 * (truncate t298))
+                  t301 <- rdI pos ((3 * (truncate t298)) + 1)
+                  t302 <- rdI pos ((3 * (truncate t298)) + 2)
+                  t303 <- rdI scalars ((6 * (truncate t298)) + 5)
+                  t304 <- rdI scalars ((6 * (truncate t298)) + 2)
                   let !t305 = (t36 + t304)
                   let !t306 = (s275 + (negate t300))
                   let !t307 = (t33 + (negate t301))
                   let !t308 = (s276 + (negate t302))
                   let !t309 = ((t35 + t303) - (sqrt (((t306 * t306) + (t307 * t307)) + (t308 * t308))))
                   if (if (t305 - t309) > 0 then t309 else t305) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t298 + 1.0) * 64.0) + 40.0) i31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t298 + 1.0) * 64.0) + 40.0) + 2.0) t298 i31 1.0 1.0 (-1.0) (-2.0) (-0.0) 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t298 + 1.0) * 64.0) + 40.0) d31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t298 + 1.0) * 64.0) + 40.0) + 2.0) t298 d31 1.0 1.0 (-1.0) (-2.0) (-0.0) 0.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -570,40 +609,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t314 = ((abs s311) - 1.0)
     let !t315 = (if (negate t314) > 0 then 0.0 else t314)
     if ((t35 + t37) - (sqrt ((t313 * t313) + (t315 * t315)))) > 0 then do
-      t316 <- rd meta 4.0
-      t317 <- rd meta 5.0
+      t316 <- rdI meta 4
+      t317 <- rdI meta 5
       let !s318 = (floorF (s310 / t317))
       let !s319 = (floorF (t33 / t317))
       let !s320 = (floorF (s311 / t317))
-      loop 0.0 3.0 $ \i321 -> do
-        loop 0.0 3.0 $ \i322 -> do
-          loop 0.0 3.0 $ \i323 -> do
-            let !s324 = ((s318 + i321) - 1.0)
-            let !s325 = ((s319 + i322) - 1.0)
-            let !s326 = ((s320 + i323) - 1.0)
+      loopI 0.0 3.0 $ \i321 -> do
+        let !d321 = fromIntegral i321 :: Double
+        loopI 0.0 3.0 $ \i322 -> do
+          let !d322 = fromIntegral i322 :: Double
+          loopI 0.0 3.0 $ \i323 -> do
+            let !d323 = fromIntegral i323 :: Double
+            let !s324 = ((s318 + d321) - 1.0)
+            let !s325 = ((s319 + d322) - 1.0)
+            let !s326 = ((s320 + d323) - 1.0)
             let !s327 = (((((s324 + 131072.0) * 262144.0) + (s325 + 131072.0)) * 262144.0) + (s326 + 131072.0))
             let !t328 = (((s324 * 7.3856093e7) + (s325 * 1.9349663e7)) + (s326 * 8.3492791e7))
             let !s329 = (t328 - (t316 * (floorF (t328 / t316))))
-            t330 <- rd grid s329
-            t331 <- rd grid (t316 + s329)
-            loop t331 t330 $ \i332 -> do
-              t333 <- rd items i332
-              t334 <- rd cellOf t333
+            t330 <- rdI grid (truncate s329)
+            t331 <- rdI grid ((truncate t316) + (truncate s329))
+            loopI t331 t330 $ \i332 -> do
+              let !d332 = fromIntegral i332 :: Double
+              t333 <- rdI items i332
+              t334 <- rdI cellOf (truncate t333)
               if (0.5 - (abs (t334 - s327))) > 0 then do
-                if ((t333 - i31) + 0.5) > 0 then do
-                  t335 <- rd pos (3.0 * t333)
-                  t336 <- rd pos ((3.0 * t333) + 1.0)
-                  t337 <- rd pos ((3.0 * t333) + 2.0)
-                  t338 <- rd scalars ((6.0 * t333) + 5.0)
-                  t339 <- rd scalars ((6.0 * t333) + 2.0)
+                if ((t333 - d31) + 0.5) > 0 then do
+                  t335 <- rdI pos (3 * (truncate t333))
+                  t336 <- rdI pos ((3 * (truncate t333)) + 1)
+                  t337 <- rdI pos ((3 * (truncate t333)) + 2)
+                  t338 <- rdI scalars ((6 * (truncate t333)) + 5)
+                  t339 <- rdI scalars ((6 * (truncate t333)) + 2)
                   let !t340 = (t36 + t339)
                   let !t341 = (s310 + (negate t335))
                   let !t342 = (t33 + (negate t336))
                   let !t343 = (s311 + (negate t337))
                   let !t344 = ((t35 + t338) - (sqrt (((t341 * t341) + (t342 * t342)) + (t343 * t343))))
                   if (if (t340 - t344) > 0 then t344 else t340) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t333 + 1.0) * 64.0) + 44.0) i31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t333 + 1.0) * 64.0) + 44.0) + 2.0) t333 i31 1.0 1.0 (-1.0) (-2.0) (-0.0) 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t333 + 1.0) * 64.0) + 44.0) d31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t333 + 1.0) * 64.0) + 44.0) + 2.0) t333 d31 1.0 1.0 (-1.0) (-2.0) (-0.0) 2.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -620,15 +663,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t345 <- rd verts (3.0 * (97.0 * i31))
-    t346 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t347 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t345 <- rdI verts (3 * (97 * i31))
+    t346 <- rdI verts ((3 * (97 * i31)) + 1)
+    t347 <- rdI verts ((3 * (97 * i31)) + 2)
     v348 <- newR 1.0
-    loop 0.0 24.0 $ \i349 -> do
-      t350 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i349 * 4.0)) + 3.0))
-      t351 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i349 * 4.0)) + 3.0)) + 1.0)
-      t352 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i349 * 4.0)) + 3.0)) + 2.0)
-      t353 <- rd radii ((24.0 * i31) + i349)
+    loopI 0.0 24.0 $ \i349 -> do
+      let !d349 = fromIntegral i349 :: Double
+      t350 <- rdI verts (3 * ((((97 * i31) + 1) + (i349 * 4)) + 3))
+      t351 <- rdI verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 1)
+      t352 <- rdI verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 2)
+      t353 <- rdI radii ((24 * i31) + i349)
       t354 <- getR v348
       let !t355 = (t350 + (negate t345))
       let !t356 = (t351 + (negate t346))
@@ -645,25 +689,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v364 <- newR 0.0
       v365 <- newR 0.0
       v366 <- newR 0.0
-      loop 0.0 24.0 $ \i367 -> do
-        t368 <- rd radii ((24.0 * i31) + i367)
-        loop 6.0 12.0 $ \i369 -> do
-          let !t370 = (i367 + i369)
-          t371 <- rd radii ((24.0 * i31) + (t370 - (24.0 * (floorF (t370 / 24.0)))))
-          loop 1.0 4.0 $ \i372 -> do
-            t373 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i367 * 4.0)) + (i372 - 1.0)))
-            t374 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i367 * 4.0)) + (i372 - 1.0))) + 1.0)
-            t375 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i367 * 4.0)) + (i372 - 1.0))) + 2.0)
-            t376 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i367 * 4.0)) + i372))
-            t377 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i367 * 4.0)) + i372)) + 1.0)
-            t378 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i367 * 4.0)) + i372)) + 2.0)
-            loop 1.0 4.0 $ \i379 -> do
-              t380 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (i379 - 1.0)))
-              t381 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (i379 - 1.0))) + 1.0)
-              t382 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (i379 - 1.0))) + 2.0)
-              t383 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + i379))
-              t384 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + i379)) + 1.0)
-              t385 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + i379)) + 2.0)
+      loopI 0.0 24.0 $ \i367 -> do
+        let !d367 = fromIntegral i367 :: Double
+        t368 <- rdI radii ((24 * i31) + i367)
+        loopI 6.0 12.0 $ \i369 -> do
+          let !d369 = fromIntegral i369 :: Double
+          let !t370 = (d367 + d369)
+          t371 <- rdI radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0))))))
+          loopI 1.0 4.0 $ \i372 -> do
+            let !d372 = fromIntegral i372 :: Double
+            t373 <- rdI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1)))
+            t374 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 1)
+            t375 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 2)
+            t376 <- rdI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + i372))
+            t377 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 1)
+            t378 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 2)
+            loopI 1.0 4.0 $ \i379 -> do
+              let !d379 = fromIntegral i379 :: Double
+              t380 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))))
+              t381 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 1.0))
+              t382 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 2.0))
+              t383 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)))
+              t384 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 1.0))
+              t385 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 2.0))
               t386 <- getR v360
               let !t387 = (negate t380)
               let !t388 = (t383 + t387)
@@ -696,19 +744,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t415 = (if (negate t408) > 0 then (if (negate t411) > 0 then 0.0 else t411) else (if t412 > 0 then (if (negate t414) > 0 then 0.0 else t414) else t407))
               let !t416 = (if t412 > 0 then 1.0 else t408)
               let !t417 = (if (negate t416) > 0 then 0.0 else t416)
-              let !t418 = ((0.5 * ((t368 - ((t368 * (i372 + t415)) / 4.0)) + (t371 - ((t371 * (i379 + t417)) / 4.0)))) - t386)
+              let !t418 = ((0.5 * ((t368 - ((t368 * (d372 + t415)) / 4.0)) + (t371 - ((t371 * (d379 + t417)) / 4.0)))) - t386)
               let !t419 = ((t373 + (t415 * t394)) + (negate (t380 + (t417 * t388))))
               let !t420 = ((t374 + (t415 * t395)) + (negate (t381 + (t417 * t390))))
               let !t421 = ((t375 + (t415 * t396)) + (negate (t382 + (t417 * t392))))
               let !t422 = ((0.3 * ((if (t371 - t368) > 0 then t368 else t371) / 4.0)) - (sqrt (((t419 * t419) + (t420 * t420)) + (t421 * t421))))
               if (if (t418 - t422) > 0 then t422 else t418) > 0 then do
-                setR v360 (0.5 * ((t368 - ((t368 * (i372 + t415)) / 4.0)) + (t371 - ((t371 * (i379 + t417)) / 4.0))))
-                t423 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i367 * 4.0)))
-                t424 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i367 * 4.0))) + 1.0)
-                t425 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i367 * 4.0))) + 2.0)
-                t426 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)))
-                t427 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0)
-                t428 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0)
+                setR v360 (0.5 * ((t368 - ((t368 * (d372 + t415)) / 4.0)) + (t371 - ((t371 * (d379 + t417)) / 4.0))))
+                t423 <- rdI verts (3 * (((97 * i31) + 1) + (i367 * 4)))
+                t424 <- rdI verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 1)
+                t425 <- rdI verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 2)
+                t426 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))))
+                t427 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0))
+                t428 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0))
                 setR v361 (t373 + (t415 * t394))
                 setR v362 (t374 + (t415 * t395))
                 setR v363 (t375 + (t415 * t396))
@@ -747,89 +795,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s450 = (t449 * t444)
         let !s451 = (t449 * t447)
         let !s452 = (t449 * t446)
-        t453 <- rd meta 2.0
-        t454 <- rd meta 3.0
+        t453 <- rdI meta 2
+        t454 <- rdI meta 3
         if (((8.0 * (if (1.0 - t454) > 0 then 1.0 else t454)) - t453) - 0.5) > 0 then do
-          wr meta 2.0 (t453 + 1.0)
-          t455 <- rd pos (3.0 * i31)
-          t456 <- rd pos ((3.0 * i31) + 1.0)
-          t457 <- rd pos ((3.0 * i31) + 2.0)
-          t458 <- rd normal (3.0 * i31)
-          t459 <- rd normal ((3.0 * i31) + 1.0)
-          t460 <- rd normal ((3.0 * i31) + 2.0)
-          t461 <- rd axis (3.0 * i31)
-          t462 <- rd axis ((3.0 * i31) + 1.0)
-          t463 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t453 + 1.0)
+          t455 <- rdI pos (3 * i31)
+          t456 <- rdI pos ((3 * i31) + 1)
+          t457 <- rdI pos ((3 * i31) + 2)
+          t458 <- rdI normal (3 * i31)
+          t459 <- rdI normal ((3 * i31) + 1)
+          t460 <- rdI normal ((3 * i31) + 2)
+          t461 <- rdI axis (3 * i31)
+          t462 <- rdI axis ((3 * i31) + 1)
+          t463 <- rdI axis ((3 * i31) + 2)
           let !s464 = ((t459 * t463) - (t460 * t462))
           let !s465 = ((t460 * t461) - (t458 * t463))
           let !s466 = ((t458 * t462) - (t459 * t461))
-          t467 <- rd scalars (6.0 * i31)
-          t468 <- rd scalars ((6.0 * i31) + 5.0)
-          t469 <- rd scalars ((6.0 * i31) + 2.0)
-          t470 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t453) i31
-          wr contacts ((30.0 * t453) + 1.0) (-1.0)
-          wr contacts ((30.0 * t453) + 2.0) i31
-          wr contacts ((30.0 * t453) + 3.0) 12.0
-          wr contacts ((30.0 * t453) + 4.0) (s450 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t458)))
-          wr contacts (((30.0 * t453) + 4.0) + 1.0) (s451 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t459)))
-          wr contacts (((30.0 * t453) + 4.0) + 2.0) (s452 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t460)))
-          wr contacts ((30.0 * t453) + 7.0) 0.0
-          wr contacts ((30.0 * t453) + 12.0) 0.0
-          wr contacts (((30.0 * t453) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t453) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t453) + 15.0) 0.0
-          wr contacts ((30.0 * t453) + 20.0) t440
-          wr contacts ((30.0 * t453) + 26.0) 0.6
-          wr contacts ((30.0 * t453) + 27.0) t441
-          wr contacts (((30.0 * t453) + 27.0) + 1.0) t442
-          wr contacts (((30.0 * t453) + 27.0) + 2.0) t443
+          t467 <- rdI scalars (6 * i31)
+          t468 <- rdI scalars ((6 * i31) + 5)
+          t469 <- rdI scalars ((6 * i31) + 2)
+          t470 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t453)) d31
+          wrI contacts ((30 * (truncate t453)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t453)) + 2) d31
+          wrI contacts ((30 * (truncate t453)) + 3) 12.0
+          wrI contacts ((30 * (truncate t453)) + 4) (s450 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t458)))
+          wrI contacts (((30 * (truncate t453)) + 4) + 1) (s451 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t459)))
+          wrI contacts (((30 * (truncate t453)) + 4) + 2) (s452 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t460)))
+          wrI contacts ((30 * (truncate t453)) + 7) 0.0
+          wrI contacts ((30 * (truncate t453)) + 12) 0.0
+          wrI contacts (((30 * (truncate t453)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t453)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t453)) + 15) 0.0
+          wrI contacts ((30 * (truncate t453)) + 20) t440
+          wrI contacts ((30 * (truncate t453)) + 26) 0.6
+          wrI contacts ((30 * (truncate t453)) + 27) t441
+          wrI contacts (((30 * (truncate t453)) + 27) + 1) t442
+          wrI contacts (((30 * (truncate t453)) + 27) + 2) t443
           if (-0.5) > 0 then do
-            t471 <- rd pos (-3.0)
-            t472 <- rd pos (-2.0)
-            t473 <- rd pos (-1.0)
-            t474 <- rd normal (-3.0)
-            t475 <- rd normal (-2.0)
-            t476 <- rd normal (-1.0)
-            t477 <- rd axis (-3.0)
-            t478 <- rd axis (-2.0)
-            t479 <- rd axis (-1.0)
+            t471 <- rdI pos (-3)
+            t472 <- rdI pos (-2)
+            t473 <- rdI pos (-1)
+            t474 <- rdI normal (-3)
+            t475 <- rdI normal (-2)
+            t476 <- rdI normal (-1)
+            t477 <- rdI axis (-3)
+            t478 <- rdI axis (-2)
+            t479 <- rdI axis (-1)
             let !s480 = ((t475 * t479) - (t476 * t478))
             let !s481 = ((t476 * t477) - (t474 * t479))
             let !s482 = ((t474 * t478) - (t475 * t477))
-            t483 <- rd scalars (-6.0)
-            t484 <- rd scalars (-1.0)
-            t485 <- rd scalars (-4.0)
-            t486 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t453) + 8.0) (s450 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t474)))
-            wr contacts (((30.0 * t453) + 8.0) + 1.0) (s451 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t475)))
-            wr contacts (((30.0 * t453) + 8.0) + 2.0) (s452 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t476)))
+            t483 <- rdI scalars (-6)
+            t484 <- rdI scalars (-1)
+            t485 <- rdI scalars (-4)
+            t486 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t453)) + 8) (s450 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t474)))
+            wrI contacts (((30 * (truncate t453)) + 8) + 1) (s451 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t475)))
+            wrI contacts (((30 * (truncate t453)) + 8) + 2) (s452 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t476)))
             let !t487 = (t442 + (negate t472))
             let !t488 = (t443 + (negate t473))
             let !t489 = (t441 + (negate t471))
-            wr contacts ((30.0 * t453) + 11.0) (((((t487 * s452) - (t488 * s451)) * t474) + (((t488 * s450) - (t489 * s452)) * t475)) + (((t489 * s451) - (t487 * s450)) * t476))
+            wrI contacts ((30 * (truncate t453)) + 11) (((((t487 * s452) - (t488 * s451)) * t474) + (((t488 * s450) - (t489 * s452)) * t475)) + (((t489 * s451) - (t487 * s450)) * t476))
             let !t490 = ((t459 * s452) - (t460 * s451))
-            wr contacts ((30.0 * t453) + 16.0) (t490 + (negate ((((t474 * t490) + (t475 * ((t460 * s450) - (t458 * s452)))) + (t476 * ((t458 * s451) - (t459 * s450)))) * t474)))
+            wrI contacts ((30 * (truncate t453)) + 16) (t490 + (negate ((((t474 * t490) + (t475 * ((t460 * s450) - (t458 * s452)))) + (t476 * ((t458 * s451) - (t459 * s450)))) * t474)))
             let !t491 = ((t460 * s450) - (t458 * s452))
-            wr contacts (((30.0 * t453) + 16.0) + 1.0) (t491 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * ((t458 * s451) - (t459 * s450)))) * t475)))
+            wrI contacts (((30 * (truncate t453)) + 16) + 1) (t491 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * ((t458 * s451) - (t459 * s450)))) * t475)))
             let !t492 = ((t458 * s451) - (t459 * s450))
-            wr contacts (((30.0 * t453) + 16.0) + 2.0) (t492 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * t492)) * t476)))
-            wr contacts ((30.0 * t453) + 19.0) (((((t487 * t492) - (t488 * t491)) * t474) + (((t488 * t490) - (t489 * t492)) * t475)) + (((t489 * t491) - (t487 * t490)) * t476))
+            wrI contacts (((30 * (truncate t453)) + 16) + 2) (t492 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * t492)) * t476)))
+            wrI contacts ((30 * (truncate t453)) + 19) (((((t487 * t492) - (t488 * t491)) * t474) + (((t488 * t490) - (t489 * t492)) * t475)) + (((t489 * t491) - (t487 * t490)) * t476))
             pure ()
           else do
-            wr contacts ((30.0 * t453) + 8.0) 0.0
-            wr contacts (((30.0 * t453) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t453) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t453) + 11.0) 0.0
-            wr contacts ((30.0 * t453) + 16.0) 0.0
-            wr contacts (((30.0 * t453) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t453) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t453) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t453)) + 8) 0.0
+            wrI contacts (((30 * (truncate t453)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t453)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t453)) + 11) 0.0
+            wrI contacts ((30 * (truncate t453)) + 16) 0.0
+            wrI contacts (((30 * (truncate t453)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t453)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t453)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t493 <- rd meta 6.0
-          wr meta 6.0 (t493 + 1.0)
+          t493 <- rdI meta 6
+          wrI meta 6 (t493 + 1.0)
           pure ()
         pure ()
       else do
@@ -842,43 +890,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -886,12 +935,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -899,20 +948,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -923,18 +972,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -942,98 +992,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1108,9 +1158,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rd mouse 4.0
-      t213 <- rd mouse 5.0
-      t214 <- rd mouse 6.0
+      t212 <- rdI mouse 4
+      t213 <- rdI mouse 5
+      t214 <- rdI mouse 6
       let !t215 = (floorF ((t212 + 1.0) / 2.0))
       let !t216 = (t212 - (t215 * 2.0))
       let !t217 = (negate s199)
@@ -1164,9 +1214,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t265 = ((if t264 > 0 then t263 else t262) - (t259 + t243))
       let !s266 = (if t265 > 0 then t257 else (if t264 > 0 then t257 else (if t261 > 0 then t257 else (if t255 > 0 then t216 else (if t250 > 0 then t216 else (if t245 > 0 then t226 else (if t239 > 0 then t226 else (if t234 > 0 then t226 else t216))))))))
       let !s267 = (if t265 > 0 then t241 else (if t264 > 0 then t229 else (if t261 > 0 then t230 else (if t255 > 0 then t252 else (if t250 > 0 then t247 else (if t245 > 0 then t241 else (if t239 > 0 then t229 else (if t234 > 0 then t230 else t222))))))))
-      t268 <- rd mouse 7.0
-      t269 <- rd mouse 8.0
-      t270 <- rd mouse 9.0
+      t268 <- rdI mouse 7
+      t269 <- rdI mouse 8
+      t270 <- rdI mouse 9
       let !t271 = (recip t101)
       let !t272 = (6.283185307179586 * t268)
       let !s273 = (recip (t103 * ((((2.0 * t271) * t269) * t272) + (t103 * ((t271 * t272) * t272)))))
@@ -1177,68 +1227,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s278 = (s199 + (negate s266))
       let !s279 = (s200 + (negate t213))
       let !s280 = (s201 + (negate s267))
-      t281 <- rd mouse 10.0
-      t282 <- rd scalars ((6.0 * t100) + 2.0)
-      t283 <- rd scalars ((6.0 * t100) + 3.0)
-      t284 <- rd vel (3.0 * t100)
-      t285 <- rd vel ((3.0 * t100) + 1.0)
-      t286 <- rd vel ((3.0 * t100) + 2.0)
-      t287 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t284 + ((t282 * t281) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t285 + ((t282 * t281) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t286 + ((t282 * t281) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t287 + ((t283 * t281) * (((((s276 * t112) - (s277 * t111)) * t107) + (((s277 * t110) - (s275 * t112)) * t108)) + (((s275 * t111) - (s276 * t110)) * t109))))
-      t288 <- rd mouse 11.0
-      t289 <- rd scalars ((6.0 * t100) + 2.0)
-      t290 <- rd scalars ((6.0 * t100) + 3.0)
-      t291 <- rd vel (3.0 * t100)
-      t292 <- rd vel ((3.0 * t100) + 1.0)
-      t293 <- rd vel ((3.0 * t100) + 2.0)
-      t294 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t291 + ((t289 * t288) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t292 + ((t289 * t288) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t293 + ((t289 * t288) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t294 + ((t290 * t288) * (((((s276 * s115) - (s277 * s114)) * t107) + (((s277 * s113) - (s275 * s115)) * t108)) + (((s275 * s114) - (s276 * s113)) * t109))))
+      t281 <- rdI mouse 10
+      t282 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t283 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t284 <- rdI vel (3 * (truncate t100))
+      t285 <- rdI vel ((3 * (truncate t100)) + 1)
+      t286 <- rdI vel ((3 * (truncate t100)) + 2)
+      t287 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t284 + ((t282 * t281) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s276 * t112) - (s277 * t111)) * t107) + (((s277 * t110) - (s275 * t112)) * t108)) + (((s275 * t111) - (s276 * t110)) * t109))))
+      t288 <- rdI mouse 11
+      t289 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t290 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t291 <- rdI vel (3 * (truncate t100))
+      t292 <- rdI vel ((3 * (truncate t100)) + 1)
+      t293 <- rdI vel ((3 * (truncate t100)) + 2)
+      t294 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t291 + ((t289 * t288) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t292 + ((t289 * t288) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t293 + ((t289 * t288) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t294 + ((t290 * t288) * (((((s276 * s115) - (s277 * s114)) * t107) + (((s277 * s113) - (s275 * s115)) * t108)) + (((s275 * s114) - (s276 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i295 -> do
-    loop 0.0 t9 $ \i296 -> do
-      t297 <- rd contacts (30.0 * i296)
-      t298 <- rd contacts ((30.0 * i296) + 1.0)
-      t299 <- rd contacts ((30.0 * i296) + 12.0)
-      t300 <- rd contacts (((30.0 * i296) + 12.0) + 1.0)
-      t301 <- rd contacts (((30.0 * i296) + 12.0) + 2.0)
-      t302 <- rd contacts ((30.0 * i296) + 15.0)
-      t303 <- rd contacts ((30.0 * i296) + 16.0)
-      t304 <- rd contacts (((30.0 * i296) + 16.0) + 1.0)
-      t305 <- rd contacts (((30.0 * i296) + 16.0) + 2.0)
-      t306 <- rd contacts ((30.0 * i296) + 19.0)
-      t307 <- rd contacts ((30.0 * i296) + 4.0)
-      t308 <- rd contacts (((30.0 * i296) + 4.0) + 1.0)
-      t309 <- rd contacts (((30.0 * i296) + 4.0) + 2.0)
-      t310 <- rd contacts ((30.0 * i296) + 7.0)
-      t311 <- rd contacts ((30.0 * i296) + 8.0)
-      t312 <- rd contacts (((30.0 * i296) + 8.0) + 1.0)
-      t313 <- rd contacts (((30.0 * i296) + 8.0) + 2.0)
-      t314 <- rd contacts ((30.0 * i296) + 11.0)
-      t315 <- rd contacts ((30.0 * i296) + 26.0)
-      t316 <- rd contacts ((30.0 * i296) + 24.0)
-      t317 <- rd contacts ((30.0 * i296) + 25.0)
-      t318 <- rd contacts ((30.0 * i296) + 22.0)
-      t319 <- rd vel (3.0 * t297)
-      t320 <- rd vel ((3.0 * t297) + 1.0)
-      t321 <- rd vel ((3.0 * t297) + 2.0)
-      t322 <- rd scalars ((6.0 * t297) + 1.0)
+  loopI 0.0 t1 $ \i295 -> do
+    let !d295 = fromIntegral i295 :: Double
+    loopI 0.0 t9 $ \i296 -> do
+      let !d296 = fromIntegral i296 :: Double
+      t297 <- rdI contacts (30 * i296)
+      t298 <- rdI contacts ((30 * i296) + 1)
+      t299 <- rdI contacts ((30 * i296) + 12)
+      t300 <- rdI contacts (((30 * i296) + 12) + 1)
+      t301 <- rdI contacts (((30 * i296) + 12) + 2)
+      t302 <- rdI contacts ((30 * i296) + 15)
+      t303 <- rdI contacts ((30 * i296) + 16)
+      t304 <- rdI contacts (((30 * i296) + 16) + 1)
+      t305 <- rdI contacts (((30 * i296) + 16) + 2)
+      t306 <- rdI contacts ((30 * i296) + 19)
+      t307 <- rdI contacts ((30 * i296) + 4)
+      t308 <- rdI contacts (((30 * i296) + 4) + 1)
+      t309 <- rdI contacts (((30 * i296) + 4) + 2)
+      t310 <- rdI contacts ((30 * i296) + 7)
+      t311 <- rdI contacts ((30 * i296) + 8)
+      t312 <- rdI contacts (((30 * i296) + 8) + 1)
+      t313 <- rdI contacts (((30 * i296) + 8) + 2)
+      t314 <- rdI contacts ((30 * i296) + 11)
+      t315 <- rdI contacts ((30 * i296) + 26)
+      t316 <- rdI contacts ((30 * i296) + 24)
+      t317 <- rdI contacts ((30 * i296) + 25)
+      t318 <- rdI contacts ((30 * i296) + 22)
+      t319 <- rdI vel (3 * (truncate t297))
+      t320 <- rdI vel ((3 * (truncate t297)) + 1)
+      t321 <- rdI vel ((3 * (truncate t297)) + 2)
+      t322 <- rdI scalars ((6 * (truncate t297)) + 1)
       v323 <- newR 0.0
       if (t298 + 0.5) > 0 then do
-        t324 <- rd vel (3.0 * t298)
-        t325 <- rd vel ((3.0 * t298) + 1.0)
-        t326 <- rd vel ((3.0 * t298) + 2.0)
-        t327 <- rd scalars ((6.0 * t298) + 1.0)
+        t324 <- rdI vel (3 * (truncate t298))
+        t325 <- rdI vel ((3 * (truncate t298)) + 1)
+        t326 <- rdI vel ((3 * (truncate t298)) + 2)
+        t327 <- rdI scalars ((6 * (truncate t298)) + 1)
         setR v323 ((((t303 * t324) + (t304 * t325)) + (t305 * t326)) + (t306 * t327))
         pure ()
       else do
@@ -1251,43 +1303,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t333 = (if (t332 - t330) > 0 then t330 else t332)
       let !t334 = (if (t331 - t333) > 0 then t331 else t333)
       let !s335 = (if (1.0 - (abs (t334 - t334))) > 0 then t334 else 0.0)
-      wr contacts ((30.0 * i296) + 25.0) s335
-      t336 <- rd scalars ((6.0 * t297) + 2.0)
-      t337 <- rd scalars ((6.0 * t297) + 3.0)
-      t338 <- rd vel (3.0 * t297)
-      t339 <- rd vel ((3.0 * t297) + 1.0)
-      t340 <- rd vel ((3.0 * t297) + 2.0)
-      t341 <- rd scalars ((6.0 * t297) + 1.0)
-      wr vel (3.0 * t297) (t338 + ((t336 * (s335 - t317)) * t299))
-      wr vel ((3.0 * t297) + 1.0) (t339 + ((t336 * (s335 - t317)) * t300))
-      wr vel ((3.0 * t297) + 2.0) (t340 + ((t336 * (s335 - t317)) * t301))
-      wr scalars ((6.0 * t297) + 1.0) (t341 + ((t337 * (s335 - t317)) * t302))
+      wrI contacts ((30 * i296) + 25) s335
+      t336 <- rdI scalars ((6 * (truncate t297)) + 2)
+      t337 <- rdI scalars ((6 * (truncate t297)) + 3)
+      t338 <- rdI vel (3 * (truncate t297))
+      t339 <- rdI vel ((3 * (truncate t297)) + 1)
+      t340 <- rdI vel ((3 * (truncate t297)) + 2)
+      t341 <- rdI scalars ((6 * (truncate t297)) + 1)
+      wrI vel (3 * (truncate t297)) (t338 + ((t336 * (s335 - t317)) * t299))
+      wrI vel ((3 * (truncate t297)) + 1) (t339 + ((t336 * (s335 - t317)) * t300))
+      wrI vel ((3 * (truncate t297)) + 2) (t340 + ((t336 * (s335 - t317)) * t301))
+      wrI scalars ((6 * (truncate t297)) + 1) (t341 + ((t337 * (s335 - t317)) * t302))
       if (t298 + 0.5) > 0 then do
-        t342 <- rd scalars ((6.0 * t298) + 2.0)
-        t343 <- rd scalars ((6.0 * t298) + 3.0)
-        t344 <- rd vel (3.0 * t298)
-        t345 <- rd vel ((3.0 * t298) + 1.0)
-        t346 <- rd vel ((3.0 * t298) + 2.0)
-        t347 <- rd scalars ((6.0 * t298) + 1.0)
-        wr vel (3.0 * t298) (t344 + ((t342 * (negate (s335 - t317))) * t303))
-        wr vel ((3.0 * t298) + 1.0) (t345 + ((t342 * (negate (s335 - t317))) * t304))
-        wr vel ((3.0 * t298) + 2.0) (t346 + ((t342 * (negate (s335 - t317))) * t305))
-        wr scalars ((6.0 * t298) + 1.0) (t347 + ((t343 * (negate (s335 - t317))) * t306))
+        t342 <- rdI scalars ((6 * (truncate t298)) + 2)
+        t343 <- rdI scalars ((6 * (truncate t298)) + 3)
+        t344 <- rdI vel (3 * (truncate t298))
+        t345 <- rdI vel ((3 * (truncate t298)) + 1)
+        t346 <- rdI vel ((3 * (truncate t298)) + 2)
+        t347 <- rdI scalars ((6 * (truncate t298)) + 1)
+        wrI vel (3 * (truncate t298)) (t344 + ((t342 * (negate (s335 - t317))) * t303))
+        wrI vel ((3 * (truncate t298)) + 1) (t345 + ((t342 * (negate (s335 - t317))) * t304))
+        wrI vel ((3 * (truncate t298)) + 2) (t346 + ((t342 * (negate (s335 - t317))) * t305))
+        wrI scalars ((6 * (truncate t298)) + 1) (t347 + ((t343 * (negate (s335 - t317))) * t306))
         pure ()
       else do
         pure ()
-      t348 <- rd contacts ((30.0 * i296) + 21.0)
-      t349 <- rd contacts ((30.0 * i296) + 23.0)
-      t350 <- rd vel (3.0 * t297)
-      t351 <- rd vel ((3.0 * t297) + 1.0)
-      t352 <- rd vel ((3.0 * t297) + 2.0)
-      t353 <- rd scalars ((6.0 * t297) + 1.0)
+      t348 <- rdI contacts ((30 * i296) + 21)
+      t349 <- rdI contacts ((30 * i296) + 23)
+      t350 <- rdI vel (3 * (truncate t297))
+      t351 <- rdI vel ((3 * (truncate t297)) + 1)
+      t352 <- rdI vel ((3 * (truncate t297)) + 2)
+      t353 <- rdI scalars ((6 * (truncate t297)) + 1)
       v354 <- newR 0.0
       if (t298 + 0.5) > 0 then do
-        t355 <- rd vel (3.0 * t298)
-        t356 <- rd vel ((3.0 * t298) + 1.0)
-        t357 <- rd vel ((3.0 * t298) + 2.0)
-        t358 <- rd scalars ((6.0 * t298) + 1.0)
+        t355 <- rdI vel (3 * (truncate t298))
+        t356 <- rdI vel ((3 * (truncate t298)) + 1)
+        t357 <- rdI vel ((3 * (truncate t298)) + 2)
+        t358 <- rdI scalars ((6 * (truncate t298)) + 1)
         setR v354 ((((t311 * t355) + (t312 * t356)) + (t313 * t357)) + (t314 * t358))
         pure ()
       else do
@@ -1297,73 +1349,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t361 = (t316 + ((t315 * (t349 - s360)) * t348))
       let !t362 = (if (negate t361) > 0 then 0.0 else t361)
       let !s363 = (if (1.0 - (abs (t362 - t362))) > 0 then t362 else 0.0)
-      wr contacts ((30.0 * i296) + 24.0) s363
-      t364 <- rd scalars ((6.0 * t297) + 2.0)
-      t365 <- rd scalars ((6.0 * t297) + 3.0)
-      t366 <- rd vel (3.0 * t297)
-      t367 <- rd vel ((3.0 * t297) + 1.0)
-      t368 <- rd vel ((3.0 * t297) + 2.0)
-      t369 <- rd scalars ((6.0 * t297) + 1.0)
-      wr vel (3.0 * t297) (t366 + ((t364 * (s363 - t316)) * t307))
-      wr vel ((3.0 * t297) + 1.0) (t367 + ((t364 * (s363 - t316)) * t308))
-      wr vel ((3.0 * t297) + 2.0) (t368 + ((t364 * (s363 - t316)) * t309))
-      wr scalars ((6.0 * t297) + 1.0) (t369 + ((t365 * (s363 - t316)) * t310))
+      wrI contacts ((30 * i296) + 24) s363
+      t364 <- rdI scalars ((6 * (truncate t297)) + 2)
+      t365 <- rdI scalars ((6 * (truncate t297)) + 3)
+      t366 <- rdI vel (3 * (truncate t297))
+      t367 <- rdI vel ((3 * (truncate t297)) + 1)
+      t368 <- rdI vel ((3 * (truncate t297)) + 2)
+      t369 <- rdI scalars ((6 * (truncate t297)) + 1)
+      wrI vel (3 * (truncate t297)) (t366 + ((t364 * (s363 - t316)) * t307))
+      wrI vel ((3 * (truncate t297)) + 1) (t367 + ((t364 * (s363 - t316)) * t308))
+      wrI vel ((3 * (truncate t297)) + 2) (t368 + ((t364 * (s363 - t316)) * t309))
+      wrI scalars ((6 * (truncate t297)) + 1) (t369 + ((t365 * (s363 - t316)) * t310))
       if (t298 + 0.5) > 0 then do
-        t370 <- rd scalars ((6.0 * t298) + 2.0)
-        t371 <- rd scalars ((6.0 * t298) + 3.0)
-        t372 <- rd vel (3.0 * t298)
-        t373 <- rd vel ((3.0 * t298) + 1.0)
-        t374 <- rd vel ((3.0 * t298) + 2.0)
-        t375 <- rd scalars ((6.0 * t298) + 1.0)
-        wr vel (3.0 * t298) (t372 + ((t370 * (negate (s363 - t316))) * t311))
-        wr vel ((3.0 * t298) + 1.0) (t373 + ((t370 * (negate (s363 - t316))) * t312))
-        wr vel ((3.0 * t298) + 2.0) (t374 + ((t370 * (negate (s363 - t316))) * t313))
-        wr scalars ((6.0 * t298) + 1.0) (t375 + ((t371 * (negate (s363 - t316))) * t314))
+        t370 <- rdI scalars ((6 * (truncate t298)) + 2)
+        t371 <- rdI scalars ((6 * (truncate t298)) + 3)
+        t372 <- rdI vel (3 * (truncate t298))
+        t373 <- rdI vel ((3 * (truncate t298)) + 1)
+        t374 <- rdI vel ((3 * (truncate t298)) + 2)
+        t375 <- rdI scalars ((6 * (truncate t298)) + 1)
+        wrI vel (3 * (truncate t298)) (t372 + ((t370 * (negate (s363 - t316))) * t311))
+        wrI vel ((3 * (truncate t298)) + 1) (t373 + ((t370 * (negate (s363 - t316))) * t312))
+        wrI vel ((3 * (truncate t298)) + 2) (t374 + ((t370 * (negate (s363 - t316))) * t313))
+        wrI scalars ((6 * (truncate t298)) + 1) (t375 + ((t371 * (negate (s363 - t316))) * t314))
         pure ()
       else do
         pure ()
       pure ()
-    t376 <- rd mouse 0.0
+    t376 <- rdI mouse 0
     if t376 > 0 then do
-      t377 <- rd mouse 1.0
-      t378 <- rd scalars ((6.0 * t377) + 2.0)
+      t377 <- rdI mouse 1
+      t378 <- rdI scalars ((6 * (truncate t377)) + 2)
       if t378 > 0 then do
-        t379 <- rd scalars ((6.0 * t377) + 3.0)
-        t380 <- rd params 0.0
-        t381 <- rd pos (3.0 * t377)
-        t382 <- rd pos ((3.0 * t377) + 1.0)
-        t383 <- rd pos ((3.0 * t377) + 2.0)
-        t384 <- rd normal (3.0 * t377)
-        t385 <- rd normal ((3.0 * t377) + 1.0)
-        t386 <- rd normal ((3.0 * t377) + 2.0)
-        t387 <- rd axis (3.0 * t377)
-        t388 <- rd axis ((3.0 * t377) + 1.0)
-        t389 <- rd axis ((3.0 * t377) + 2.0)
+        t379 <- rdI scalars ((6 * (truncate t377)) + 3)
+        t380 <- rdI params 0
+        t381 <- rdI pos (3 * (truncate t377))
+        t382 <- rdI pos ((3 * (truncate t377)) + 1)
+        t383 <- rdI pos ((3 * (truncate t377)) + 2)
+        t384 <- rdI normal (3 * (truncate t377))
+        t385 <- rdI normal ((3 * (truncate t377)) + 1)
+        t386 <- rdI normal ((3 * (truncate t377)) + 2)
+        t387 <- rdI axis (3 * (truncate t377))
+        t388 <- rdI axis ((3 * (truncate t377)) + 1)
+        t389 <- rdI axis ((3 * (truncate t377)) + 2)
         let !s390 = ((t385 * t389) - (t386 * t388))
         let !s391 = ((t386 * t387) - (t384 * t389))
         let !s392 = ((t384 * t388) - (t385 * t387))
-        t393 <- rd scalars (6.0 * t377)
-        t394 <- rd scalars ((6.0 * t377) + 5.0)
-        t395 <- rd scalars ((6.0 * t377) + 2.0)
-        t396 <- rd scalars ((6.0 * t377) + 3.0)
-        t397 <- rd pos (3.0 * t377)
-        t398 <- rd pos ((3.0 * t377) + 1.0)
-        t399 <- rd pos ((3.0 * t377) + 2.0)
-        t400 <- rd normal (3.0 * t377)
-        t401 <- rd normal ((3.0 * t377) + 1.0)
-        t402 <- rd normal ((3.0 * t377) + 2.0)
-        t403 <- rd axis (3.0 * t377)
-        t404 <- rd axis ((3.0 * t377) + 1.0)
-        t405 <- rd axis ((3.0 * t377) + 2.0)
+        t393 <- rdI scalars (6 * (truncate t377))
+        t394 <- rdI scalars ((6 * (truncate t377)) + 5)
+        t395 <- rdI scalars ((6 * (truncate t377)) + 2)
+        t396 <- rdI scalars ((6 * (truncate t377)) + 3)
+        t397 <- rdI pos (3 * (truncate t377))
+        t398 <- rdI pos ((3 * (truncate t377)) + 1)
+        t399 <- rdI pos ((3 * (truncate t377)) + 2)
+        t400 <- rdI normal (3 * (truncate t377))
+        t401 <- rdI normal ((3 * (truncate t377)) + 1)
+        t402 <- rdI normal ((3 * (truncate t377)) + 2)
+        t403 <- rdI axis (3 * (truncate t377))
+        t404 <- rdI axis ((3 * (truncate t377)) + 1)
+        t405 <- rdI axis ((3 * (truncate t377)) + 2)
         let !s406 = ((t401 * t405) - (t402 * t404))
         let !s407 = ((t402 * t403) - (t400 * t405))
         let !s408 = ((t400 * t404) - (t401 * t403))
-        t409 <- rd scalars (6.0 * t377)
-        t410 <- rd scalars ((6.0 * t377) + 5.0)
-        t411 <- rd scalars ((6.0 * t377) + 2.0)
-        t412 <- rd scalars ((6.0 * t377) + 3.0)
-        t413 <- rd mouse 2.0
-        t414 <- rd mouse 3.0
+        t409 <- rdI scalars (6 * (truncate t377))
+        t410 <- rdI scalars ((6 * (truncate t377)) + 5)
+        t411 <- rdI scalars ((6 * (truncate t377)) + 2)
+        t412 <- rdI scalars ((6 * (truncate t377)) + 3)
+        t413 <- rdI mouse 2
+        t414 <- rdI mouse 3
         let !t415 = (t413 / 4.0)
         let !t416 = (if (abs t415) > 0 then 1.0 else 0.0)
         let !t417 = (t409 + t414)
@@ -1438,9 +1490,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s486 = ((t416 * (t479 * (t485 * t480))) + (t420 * s470))
         let !s487 = ((t416 * (t479 * (t485 * t482))) + (t420 * s471))
         let !s488 = ((t416 * (t479 * (t485 * t483))) + (t420 * s472))
-        t489 <- rd mouse 4.0
-        t490 <- rd mouse 5.0
-        t491 <- rd mouse 6.0
+        t489 <- rdI mouse 4
+        t490 <- rdI mouse 5
+        t491 <- rdI mouse 6
         let !t492 = (floorF ((t489 + 1.0) / 2.0))
         let !t493 = (t489 - (t492 * 2.0))
         let !t494 = (negate s476)
@@ -1494,9 +1546,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t542 = ((if t541 > 0 then t540 else t539) - (t536 + t520))
         let !s543 = (if t542 > 0 then t534 else (if t541 > 0 then t534 else (if t538 > 0 then t534 else (if t532 > 0 then t493 else (if t527 > 0 then t493 else (if t522 > 0 then t503 else (if t516 > 0 then t503 else (if t511 > 0 then t503 else t493))))))))
         let !s544 = (if t542 > 0 then t518 else (if t541 > 0 then t506 else (if t538 > 0 then t507 else (if t532 > 0 then t529 else (if t527 > 0 then t524 else (if t522 > 0 then t518 else (if t516 > 0 then t506 else (if t511 > 0 then t507 else t499))))))))
-        t545 <- rd mouse 7.0
-        t546 <- rd mouse 8.0
-        t547 <- rd mouse 9.0
+        t545 <- rdI mouse 7
+        t546 <- rdI mouse 8
+        t547 <- rdI mouse 9
         let !t548 = (recip t378)
         let !t549 = (6.283185307179586 * t545)
         let !s550 = (recip (t380 * ((((2.0 * t548) * t546) * t549) + (t380 * ((t548 * t549) * t549)))))
@@ -1507,11 +1559,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s555 = (s476 + (negate s543))
         let !s556 = (s477 + (negate t490))
         let !s557 = (s478 + (negate s544))
-        t558 <- rd mouse 10.0
-        t559 <- rd vel (3.0 * t377)
-        t560 <- rd vel ((3.0 * t377) + 1.0)
-        t561 <- rd vel ((3.0 * t377) + 2.0)
-        t562 <- rd scalars ((6.0 * t377) + 1.0)
+        t558 <- rdI mouse 10
+        t559 <- rdI vel (3 * (truncate t377))
+        t560 <- rdI vel ((3 * (truncate t377)) + 1)
+        t561 <- rdI vel ((3 * (truncate t377)) + 2)
+        t562 <- rdI scalars ((6 * (truncate t377)) + 1)
         let !t563 = (t547 * t380)
         let !t564 = (negate t563)
         let !t565 = (((((s553 * t389) - (s554 * t388)) * t384) + (((s554 * t387) - (s552 * t389)) * t385)) + (((s552 * t388) - (s553 * t387)) * t386))
@@ -1519,38 +1571,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t567 = (if (t566 - t563) > 0 then t563 else t566)
         let !t568 = (if (t564 - t567) > 0 then t564 else t567)
         let !s569 = (if (1.0 - (abs (t568 - t568))) > 0 then t568 else 0.0)
-        wr mouse 10.0 s569
-        t570 <- rd scalars ((6.0 * t377) + 2.0)
-        t571 <- rd scalars ((6.0 * t377) + 3.0)
-        t572 <- rd vel (3.0 * t377)
-        t573 <- rd vel ((3.0 * t377) + 1.0)
-        t574 <- rd vel ((3.0 * t377) + 2.0)
-        t575 <- rd scalars ((6.0 * t377) + 1.0)
-        wr vel (3.0 * t377) (t572 + ((t570 * (s569 - t558)) * t387))
-        wr vel ((3.0 * t377) + 1.0) (t573 + ((t570 * (s569 - t558)) * t388))
-        wr vel ((3.0 * t377) + 2.0) (t574 + ((t570 * (s569 - t558)) * t389))
-        wr scalars ((6.0 * t377) + 1.0) (t575 + ((t571 * (s569 - t558)) * t565))
-        t576 <- rd mouse 11.0
-        t577 <- rd vel (3.0 * t377)
-        t578 <- rd vel ((3.0 * t377) + 1.0)
-        t579 <- rd vel ((3.0 * t377) + 2.0)
-        t580 <- rd scalars ((6.0 * t377) + 1.0)
+        wrI mouse 10 s569
+        t570 <- rdI scalars ((6 * (truncate t377)) + 2)
+        t571 <- rdI scalars ((6 * (truncate t377)) + 3)
+        t572 <- rdI vel (3 * (truncate t377))
+        t573 <- rdI vel ((3 * (truncate t377)) + 1)
+        t574 <- rdI vel ((3 * (truncate t377)) + 2)
+        t575 <- rdI scalars ((6 * (truncate t377)) + 1)
+        wrI vel (3 * (truncate t377)) (t572 + ((t570 * (s569 - t558)) * t387))
+        wrI vel ((3 * (truncate t377)) + 1) (t573 + ((t570 * (s569 - t558)) * t388))
+        wrI vel ((3 * (truncate t377)) + 2) (t574 + ((t570 * (s569 - t558)) * t389))
+        wrI scalars ((6 * (truncate t377)) + 1) (t575 + ((t571 * (s569 - t558)) * t565))
+        t576 <- rdI mouse 11
+        t577 <- rdI vel (3 * (truncate t377))
+        t578 <- rdI vel ((3 * (truncate t377)) + 1)
+        t579 <- rdI vel ((3 * (truncate t377)) + 2)
+        t580 <- rdI scalars ((6 * (truncate t377)) + 1)
         let !t581 = (((((s553 * s392) - (s554 * s391)) * t384) + (((s554 * s390) - (s552 * s392)) * t385)) + (((s552 * s391) - (s553 * s390)) * t386))
         let !t582 = (t576 + ((negate ((((((s390 * t577) + (s391 * t578)) + (s392 * t579)) + (t581 * t580)) + (s551 * (((s555 * s390) + (s556 * s391)) + (s557 * s392)))) + (s550 * t576))) / (((t378 * (((s390 * s390) + (s391 * s391)) + (s392 * s392))) + ((t379 * t581) * t581)) + s550)))
         let !t583 = (if (t582 - t563) > 0 then t563 else t582)
         let !t584 = (if (t564 - t583) > 0 then t564 else t583)
         let !s585 = (if (1.0 - (abs (t584 - t584))) > 0 then t584 else 0.0)
-        wr mouse 11.0 s585
-        t586 <- rd scalars ((6.0 * t377) + 2.0)
-        t587 <- rd scalars ((6.0 * t377) + 3.0)
-        t588 <- rd vel (3.0 * t377)
-        t589 <- rd vel ((3.0 * t377) + 1.0)
-        t590 <- rd vel ((3.0 * t377) + 2.0)
-        t591 <- rd scalars ((6.0 * t377) + 1.0)
-        wr vel (3.0 * t377) (t588 + ((t586 * (s585 - t576)) * s390))
-        wr vel ((3.0 * t377) + 1.0) (t589 + ((t586 * (s585 - t576)) * s391))
-        wr vel ((3.0 * t377) + 2.0) (t590 + ((t586 * (s585 - t576)) * s392))
-        wr scalars ((6.0 * t377) + 1.0) (t591 + ((t587 * (s585 - t576)) * t581))
+        wrI mouse 11 s585
+        t586 <- rdI scalars ((6 * (truncate t377)) + 2)
+        t587 <- rdI scalars ((6 * (truncate t377)) + 3)
+        t588 <- rdI vel (3 * (truncate t377))
+        t589 <- rdI vel ((3 * (truncate t377)) + 1)
+        t590 <- rdI vel ((3 * (truncate t377)) + 2)
+        t591 <- rdI scalars ((6 * (truncate t377)) + 1)
+        wrI vel (3 * (truncate t377)) (t588 + ((t586 * (s585 - t576)) * s390))
+        wrI vel ((3 * (truncate t377)) + 1) (t589 + ((t586 * (s585 - t576)) * s391))
+        wrI vel ((3 * (truncate t377)) + 2) (t590 + ((t586 * (s585 - t576)) * s392))
+        wrI scalars ((6 * (truncate t377)) + 1) (t591 + ((t587 * (s585 - t576)) * t581))
         pure ()
       else do
         pure ()
@@ -1558,48 +1610,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t592 <- rd meta 0.0
-  loop 0.0 t592 $ \i593 -> do
-    wr bodyPrev ((2.0 * i593) + 1.0) 0.0
+  t592 <- rdI meta 0
+  loopI 0.0 t592 $ \i593 -> do
+    let !d593 = fromIntegral i593 :: Double
+    wrI bodyPrev ((2 * i593) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i594 -> do
-    t595 <- rd contacts ((30.0 * i594) + 2.0)
-    wr prev (4.0 * i594) t595
-    t596 <- rd contacts ((30.0 * i594) + 3.0)
-    wr prev ((4.0 * i594) + 1.0) t596
-    t597 <- rd contacts ((30.0 * i594) + 24.0)
-    wr prev ((4.0 * i594) + 2.0) t597
-    t598 <- rd contacts ((30.0 * i594) + 25.0)
-    wr prev ((4.0 * i594) + 3.0) t598
-    t599 <- rd bodyPrev ((2.0 * t595) + 1.0)
+  loopI 0.0 t9 $ \i594 -> do
+    let !d594 = fromIntegral i594 :: Double
+    t595 <- rdI contacts ((30 * i594) + 2)
+    wrI prev (4 * i594) t595
+    t596 <- rdI contacts ((30 * i594) + 3)
+    wrI prev ((4 * i594) + 1) t596
+    t597 <- rdI contacts ((30 * i594) + 24)
+    wrI prev ((4 * i594) + 2) t597
+    t598 <- rdI contacts ((30 * i594) + 25)
+    wrI prev ((4 * i594) + 3) t598
+    t599 <- rdI bodyPrev ((2 * (truncate t595)) + 1)
     if (0.5 - t599) > 0 then do
-      wr bodyPrev (2.0 * t595) i594
+      wrI bodyPrev (2 * (truncate t595)) d594
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t595) + 1.0) (t599 + 1.0)
+    wrI bodyPrev ((2 * (truncate t595)) + 1) (t599 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1680,67 +1735,69 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     if (if (t90 - t93) > 0 then t93 else t90) > 0 then do
       let !t94 = (floorF ((s54 + 1.0) / 2.0))
       let !s95 = (1.0 - (2.0 * (t94 - (2.0 * (floorF (0.5 * t94))))))
-      wr pos (3.0 * i2) (s54 - (t94 * 2.0))
-      wr pos ((3.0 * i2) + 1.0) s55
-      wr pos ((3.0 * i2) + 2.0) (s95 * (s56 - ((floorF ((s56 + 1.0) / 2.0)) * 2.0)))
-      wr vel (3.0 * i2) s78
-      wr vel ((3.0 * i2) + 1.0) s79
-      wr vel ((3.0 * i2) + 2.0) (s95 * s80)
-      wr axis (3.0 * i2) s87
-      wr axis ((3.0 * i2) + 1.0) s88
-      wr axis ((3.0 * i2) + 2.0) (s95 * s89)
-      wr normal (3.0 * i2) s57
-      wr normal ((3.0 * i2) + 1.0) s58
-      wr normal ((3.0 * i2) + 2.0) (s95 * s59)
-      wr scalars (6.0 * i2) (s95 * t92)
-      wr scalars ((6.0 * i2) + 1.0) (s95 * t13)
-      t96 <- rd mouse 0.0
-      t97 <- rd mouse 1.0
-      if (t96 * (0.5 - (abs (t97 - i2)))) > 0 then do
-        t98 <- rd mouse 3.0
-        wr mouse 3.0 (s95 * t98)
+      wrI pos (3 * i2) (s54 - (t94 * 2.0))
+      wrI pos ((3 * i2) + 1) s55
+      wrI pos ((3 * i2) + 2) (s95 * (s56 - ((floorF ((s56 + 1.0) / 2.0)) * 2.0)))
+      wrI vel (3 * i2) s78
+      wrI vel ((3 * i2) + 1) s79
+      wrI vel ((3 * i2) + 2) (s95 * s80)
+      wrI axis (3 * i2) s87
+      wrI axis ((3 * i2) + 1) s88
+      wrI axis ((3 * i2) + 2) (s95 * s89)
+      wrI normal (3 * i2) s57
+      wrI normal ((3 * i2) + 1) s58
+      wrI normal ((3 * i2) + 2) (s95 * s59)
+      wrI scalars (6 * i2) (s95 * t92)
+      wrI scalars ((6 * i2) + 1) (s95 * t13)
+      t96 <- rdI mouse 0
+      t97 <- rdI mouse 1
+      if (t96 * (0.5 - (abs (t97 - d2)))) > 0 then do
+        t98 <- rdI mouse 3
+        wrI mouse 3 (s95 * t98)
         pure ()
       else do
         pure ()
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t99 <- rd meta 1.0
-      wr meta 1.0 (t99 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t99 <- rdI meta 1
+      wrI meta 1 (t99 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1785,9 +1842,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s60 = (t42 * t8)
         let !s61 = (t28 + (t42 * t9))
         let !s62 = (t42 * t10)
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
         let !t63 = (s47 + (s27 * s58))
         let !t64 = (if (abs s61) > 0 then 1.0 else 0.0)
         let !t65 = (if ((abs t63) - 1.0e-10) > 0 then t64 else 0.0)
@@ -1820,9 +1877,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s92 = (t42 * s60)
         let !s93 = (t28 + (t42 * s61))
         let !s94 = (t42 * s62)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
         let !t95 = (s80 + (s27 * s90))
         let !t96 = (if (abs s93) > 0 then 1.0 else 0.0)
         let !t97 = (if ((abs t95) - 1.0e-10) > 0 then t96 else 0.0)
@@ -1855,9 +1912,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s124 = (t42 * s92)
         let !s125 = (t28 + (t42 * s93))
         let !s126 = (t42 * s94)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
         let !t127 = (s112 + (s27 * s122))
         let !t128 = (if (abs s125) > 0 then 1.0 else 0.0)
         let !t129 = (if ((abs t127) - 1.0e-10) > 0 then t128 else 0.0)
@@ -1890,9 +1947,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s156 = (t42 * s124)
         let !s157 = (t28 + (t42 * s125))
         let !s158 = (t42 * s126)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
         pure ()
       else do
         let !t159 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1920,18 +1977,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = (if t180 > 0 then t174 else t2)
         let !s182 = (if t180 > 0 then t175 else t3)
         let !s183 = (if t180 > 0 then t179 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s181
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s182
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s183
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s181 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s182 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s181
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s182
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s183
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s181 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s182 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s183 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,29 +28,30 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       if (1.0 - (abs (((t8 - t8) + (t9 - t9)) + (t10 - t10)))) > 0 then do
-        wr vel (3.0 * i3) t8
-        wr vel ((3.0 * i3) + 1.0) t9
-        wr vel ((3.0 * i3) + 2.0) t10
+        wrI vel (3 * i3) t8
+        wrI vel ((3 * i3) + 1) t9
+        wrI vel ((3 * i3) + 2) t10
         pure ()
       else do
-        t14 <- rd meta 1.0
-        wr meta 1.0 (t14 + 1.0)
+        t14 <- rdI meta 1
+        wrI meta 1 (t14 + 1.0)
         pure ()
       pure ()
     else do
@@ -60,11 +61,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -74,86 +76,95 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
     let !t38 = ((abs t32) - 1.0)
     let !t39 = (if (negate t38) > 0 then 0.0 else t38)
     let !t40 = ((abs t34) - 1.0)
     let !t41 = (if (negate t40) > 0 then 0.0 else t40)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t41 * t41)))) > 0 then do
-      t42 <- rd meta 4.0
-      t43 <- rd meta 5.0
+      t42 <- rdI meta 4
+      t43 <- rdI meta 5
       let !s44 = (floorF (t32 / t43))
       let !s45 = (floorF (t33 / t43))
       let !s46 = (floorF (t34 / t43))
-      loop 0.0 3.0 $ \i47 -> do
-        loop 0.0 3.0 $ \i48 -> do
-          loop 0.0 3.0 $ \i49 -> do
-            let !s50 = ((s44 + i47) - 1.0)
-            let !s51 = ((s45 + i48) - 1.0)
-            let !s52 = ((s46 + i49) - 1.0)
+      loopI 0.0 3.0 $ \i47 -> do
+        let !d47 = fromIntegral i47 :: Double
+        loopI 0.0 3.0 $ \i48 -> do
+          let !d48 = fromIntegral i48 :: Double
+          loopI 0.0 3.0 $ \i49 -> do
+            let !d49 = fromIntegral i49 :: Double
+            let !s50 = ((s44 + d47) - 1.0)
+            let !s51 = ((s45 + d48) - 1.0)
+            let !s52 = ((s46 + d49) - 1.0)
             let !s53 = (((((s50 + 131072.0) * 262144.0) + (s51 + 131072.0)) * 262144.0) + (s52 + 131072.0))
             let !t54 = (((s50 * 7.3856093e7) + (s51 * 1.9349663e7)) + (s52 * 8.3492791e7))
             let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
-            t56 <- rd grid s55
-            t57 <- rd grid (t42 + s55)
-            loop t57 t56 $ \i58 -> do
-              t59 <- rd items i58
-              t60 <- rd cellOf t59
+            t56 <- rdI grid (truncate s55)
+            t57 <- rdI grid ((truncate t42) + (truncate s55))
+            loopI t57 t56 $ \i58 -> do
+              let !d58 = fromIntegral i58 :: Double
+              t59 <- rdI items i58
+              t60 <- rdI cellOf (truncate t59)
               if (0.5 - (abs (t60 - s53))) > 0 then do
-                if (t59 - i31) > 0 then do
-                  t61 <- rd pos (3.0 * t59)
-                  t62 <- rd pos ((3.0 * t59) + 1.0)
-                  t63 <- rd pos ((3.0 * t59) + 2.0)
-                  t64 <- rd scalars ((6.0 * t59) + 5.0)
-                  t65 <- rd scalars ((6.0 * t59) + 2.0)
+                if (t59 - d31) > 0 then do
+                  t61 <- rdI pos (3 * (truncate t59))
+                  t62 <- rdI pos ((3 * (truncate t59)) + 1)
+                  t63 <- rdI pos ((3 * (truncate t59)) + 2)
+                  t64 <- rdI scalars ((6 * (truncate t59)) + 5)
+                  t65 <- rdI scalars ((6 * (truncate t59)) + 2)
                   let !t66 = (t36 + t65)
                   let !t67 = (t32 + (negate t61))
                   let !t68 = (t33 + (negate t62))
                   let !t69 = (t34 + (negate t63))
                   let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
                   if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t59 + 1.0) * 64.0) i31 t59 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t59 + 1.0) * 64.0) + 2.0) t59 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t59 + 1.0) * 64.0) + 2.0) t59 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -177,40 +188,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t75 = ((abs s72) - 1.0)
     let !t76 = (if (negate t75) > 0 then 0.0 else t75)
     if ((t35 + t37) - (sqrt ((t74 * t74) + (t76 * t76)))) > 0 then do
-      t77 <- rd meta 4.0
-      t78 <- rd meta 5.0
+      t77 <- rdI meta 4
+      t78 <- rdI meta 5
       let !s79 = (floorF (s71 / t78))
       let !s80 = (floorF (t33 / t78))
       let !s81 = (floorF (s72 / t78))
-      loop 0.0 3.0 $ \i82 -> do
-        loop 0.0 3.0 $ \i83 -> do
-          loop 0.0 3.0 $ \i84 -> do
-            let !s85 = ((s79 + i82) - 1.0)
-            let !s86 = ((s80 + i83) - 1.0)
-            let !s87 = ((s81 + i84) - 1.0)
+      loopI 0.0 3.0 $ \i82 -> do
+        let !d82 = fromIntegral i82 :: Double
+        loopI 0.0 3.0 $ \i83 -> do
+          let !d83 = fromIntegral i83 :: Double
+          loopI 0.0 3.0 $ \i84 -> do
+            let !d84 = fromIntegral i84 :: Double
+            let !s85 = ((s79 + d82) - 1.0)
+            let !s86 = ((s80 + d83) - 1.0)
+            let !s87 = ((s81 + d84) - 1.0)
             let !s88 = (((((s85 + 131072.0) * 262144.0) + (s86 + 131072.0)) * 262144.0) + (s87 + 131072.0))
             let !t89 = (((s85 * 7.3856093e7) + (s86 * 1.9349663e7)) + (s87 * 8.3492791e7))
             let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
-            t91 <- rd grid s90
-            t92 <- rd grid (t77 + s90)
-            loop t92 t91 $ \i93 -> do
-              t94 <- rd items i93
-              t95 <- rd cellOf t94
+            t91 <- rdI grid (truncate s90)
+            t92 <- rdI grid ((truncate t77) + (truncate s90))
+            loopI t92 t91 $ \i93 -> do
+              let !d93 = fromIntegral i93 :: Double
+              t94 <- rdI items i93
+              t95 <- rdI cellOf (truncate t94)
               if (0.5 - (abs (t95 - s88))) > 0 then do
-                if (t94 - i31) > 0 then do
-                  t96 <- rd pos (3.0 * t94)
-                  t97 <- rd pos ((3.0 * t94) + 1.0)
-                  t98 <- rd pos ((3.0 * t94) + 2.0)
-                  t99 <- rd scalars ((6.0 * t94) + 5.0)
-                  t100 <- rd scalars ((6.0 * t94) + 2.0)
+                if (t94 - d31) > 0 then do
+                  t96 <- rdI pos (3 * (truncate t94))
+                  t97 <- rdI pos ((3 * (truncate t94)) + 1)
+                  t98 <- rdI pos ((3 * (truncate t94)) + 2)
+                  t99 <- rdI scalars ((6 * (truncate t94)) + 5)
+                  t100 <- rdI scalars ((6 * (truncate t94)) + 2)
                   let !t101 = (t36 + t100)
                   let !t102 = (s71 + (negate t96))
                   let !t103 = (t33 + (negate t97))
                   let !t104 = (s72 + (negate t98))
                   let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
                   if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t94 + 1.0) * 64.0) + 16.0) i31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t94 + 1.0) * 64.0) + 16.0) + 2.0) t94 i31 1.0 1.0 1.0 2.0 (-0.0) 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t94 + 1.0) * 64.0) + 16.0) + 2.0) t94 d31 1.0 1.0 1.0 2.0 (-0.0) 2.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -231,40 +246,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t107 = ((abs s106) - 1.0)
     let !t108 = (if (negate t107) > 0 then 0.0 else t107)
     if ((t35 + t37) - (sqrt ((t108 * t108) + (t41 * t41)))) > 0 then do
-      t109 <- rd meta 4.0
-      t110 <- rd meta 5.0
+      t109 <- rdI meta 4
+      t110 <- rdI meta 5
       let !s111 = (floorF (s106 / t110))
       let !s112 = (floorF (t33 / t110))
       let !s113 = (floorF (t34 / t110))
-      loop 0.0 3.0 $ \i114 -> do
-        loop 0.0 3.0 $ \i115 -> do
-          loop 0.0 3.0 $ \i116 -> do
-            let !s117 = ((s111 + i114) - 1.0)
-            let !s118 = ((s112 + i115) - 1.0)
-            let !s119 = ((s113 + i116) - 1.0)
+      loopI 0.0 3.0 $ \i114 -> do
+        let !d114 = fromIntegral i114 :: Double
+        loopI 0.0 3.0 $ \i115 -> do
+          let !d115 = fromIntegral i115 :: Double
+          loopI 0.0 3.0 $ \i116 -> do
+            let !d116 = fromIntegral i116 :: Double
+            let !s117 = ((s111 + d114) - 1.0)
+            let !s118 = ((s112 + d115) - 1.0)
+            let !s119 = ((s113 + d116) - 1.0)
             let !s120 = (((((s117 + 131072.0) * 262144.0) + (s118 + 131072.0)) * 262144.0) + (s119 + 131072.0))
             let !t121 = (((s117 * 7.3856093e7) + (s118 * 1.9349663e7)) + (s119 * 8.3492791e7))
             let !s122 = (t121 - (t109 * (floorF (t121 / t109))))
-            t123 <- rd grid s122
-            t124 <- rd grid (t109 + s122)
-            loop t124 t123 $ \i125 -> do
-              t126 <- rd items i125
-              t127 <- rd cellOf t126
+            t123 <- rdI grid (truncate s122)
+            t124 <- rdI grid ((truncate t109) + (truncate s122))
+            loopI t124 t123 $ \i125 -> do
+              let !d125 = fromIntegral i125 :: Double
+              t126 <- rdI items i125
+              t127 <- rdI cellOf (truncate t126)
               if (0.5 - (abs (t127 - s120))) > 0 then do
-                if (t126 - i31) > 0 then do
-                  t128 <- rd pos (3.0 * t126)
-                  t129 <- rd pos ((3.0 * t126) + 1.0)
-                  t130 <- rd pos ((3.0 * t126) + 2.0)
-                  t131 <- rd scalars ((6.0 * t126) + 5.0)
-                  t132 <- rd scalars ((6.0 * t126) + 2.0)
+                if (t126 - d31) > 0 then do
+                  t128 <- rdI pos (3 * (truncate t126))
+                  t129 <- rdI pos ((3 * (truncate t126)) + 1)
+                  t130 <- rdI pos ((3 * (truncate t126)) + 2)
+                  t131 <- rdI scalars ((6 * (truncate t126)) + 5)
+                  t132 <- rdI scalars ((6 * (truncate t126)) + 2)
                   let !t133 = (t36 + t132)
                   let !t134 = (s106 + (negate t128))
                   let !t135 = (t33 + (negate t129))
                   let !t136 = (t34 + (negate t130))
                   let !t137 = ((t35 + t131) - (sqrt (((t134 * t134) + (t135 * t135)) + (t136 * t136))))
                   if (if (t133 - t137) > 0 then t137 else t133) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t126 + 1.0) * 64.0) + 20.0) i31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t126 + 1.0) * 64.0) + 20.0) + 2.0) t126 i31 1.0 1.0 1.0 2.0 (-0.0) (-0.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t126 + 1.0) * 64.0) + 20.0) d31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t126 + 1.0) * 64.0) + 20.0) + 2.0) t126 d31 1.0 1.0 1.0 2.0 (-0.0) (-0.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -288,40 +307,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t142 = ((abs s139) - 1.0)
     let !t143 = (if (negate t142) > 0 then 0.0 else t142)
     if ((t35 + t37) - (sqrt ((t141 * t141) + (t143 * t143)))) > 0 then do
-      t144 <- rd meta 4.0
-      t145 <- rd meta 5.0
+      t144 <- rdI meta 4
+      t145 <- rdI meta 5
       let !s146 = (floorF (s138 / t145))
       let !s147 = (floorF (t33 / t145))
       let !s148 = (floorF (s139 / t145))
-      loop 0.0 3.0 $ \i149 -> do
-        loop 0.0 3.0 $ \i150 -> do
-          loop 0.0 3.0 $ \i151 -> do
-            let !s152 = ((s146 + i149) - 1.0)
-            let !s153 = ((s147 + i150) - 1.0)
-            let !s154 = ((s148 + i151) - 1.0)
+      loopI 0.0 3.0 $ \i149 -> do
+        let !d149 = fromIntegral i149 :: Double
+        loopI 0.0 3.0 $ \i150 -> do
+          let !d150 = fromIntegral i150 :: Double
+          loopI 0.0 3.0 $ \i151 -> do
+            let !d151 = fromIntegral i151 :: Double
+            let !s152 = ((s146 + d149) - 1.0)
+            let !s153 = ((s147 + d150) - 1.0)
+            let !s154 = ((s148 + d151) - 1.0)
             let !s155 = (((((s152 + 131072.0) * 262144.0) + (s153 + 131072.0)) * 262144.0) + (s154 + 131072.0))
             let !t156 = (((s152 * 7.3856093e7) + (s153 * 1.9349663e7)) + (s154 * 8.3492791e7))
             let !s157 = (t156 - (t144 * (floorF (t156 / t144))))
-            t158 <- rd grid s157
-            t159 <- rd grid (t144 + s157)
-            loop t159 t158 $ \i160 -> do
-              t161 <- rd items i160
-              t162 <- rd cellOf t161
+            t158 <- rdI grid (truncate s157)
+            t159 <- rdI grid ((truncate t144) + (truncate s157))
+            loopI t159 t158 $ \i160 -> do
+              let !d160 = fromIntegral i160 :: Double
+              t161 <- rdI items i160
+              t162 <- rdI cellOf (truncate t161)
               if (0.5 - (abs (t162 - s155))) > 0 then do
-                if (t161 - i31) > 0 then do
-                  t163 <- rd pos (3.0 * t161)
-                  t164 <- rd pos ((3.0 * t161) + 1.0)
-                  t165 <- rd pos ((3.0 * t161) + 2.0)
-                  t166 <- rd scalars ((6.0 * t161) + 5.0)
-                  t167 <- rd scalars ((6.0 * t161) + 2.0)
+                if (t161 - d31) > 0 then do
+                  t163 <- rdI pos (3 * (truncate t161))
+                  t164 <- rdI pos ((3 * (truncate t161)) + 1)
+                  t165 <- rdI pos ((3 * (truncate t161)) + 2)
+                  t166 <- rdI scalars ((6 * (truncate t161)) + 5)
+                  t167 <- rdI scalars ((6 * (truncate t161)) + 2)
                   let !t168 = (t36 + t167)
                   let !t169 = (s138 + (negate t163))
                   let !t170 = (t33 + (negate t164))
                   let !t171 = (s139 + (negate t165))
                   let !t172 = ((t35 + t166) - (sqrt (((t169 * t169) + (t170 * t170)) + (t171 * t171))))
                   if (if (t168 - t172) > 0 then t172 else t168) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t161 + 1.0) * 64.0) + 24.0) i31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t161 + 1.0) * 64.0) + 24.0) + 2.0) t161 i31 1.0 1.0 1.0 2.0 (-0.0) (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t161 + 1.0) * 64.0) + 24.0) d31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t161 + 1.0) * 64.0) + 24.0) + 2.0) t161 d31 1.0 1.0 1.0 2.0 (-0.0) (-2.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -342,40 +365,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t174 = ((abs s173) - 1.0)
     let !t175 = (if (negate t174) > 0 then 0.0 else t174)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t175 * t175)))) > 0 then do
-      t176 <- rd meta 4.0
-      t177 <- rd meta 5.0
+      t176 <- rdI meta 4
+      t177 <- rdI meta 5
       let !s178 = (floorF (t32 / t177))
       let !s179 = (floorF (t33 / t177))
       let !s180 = (floorF (s173 / t177))
-      loop 0.0 3.0 $ \i181 -> do
-        loop 0.0 3.0 $ \i182 -> do
-          loop 0.0 3.0 $ \i183 -> do
-            let !s184 = ((s178 + i181) - 1.0)
-            let !s185 = ((s179 + i182) - 1.0)
-            let !s186 = ((s180 + i183) - 1.0)
+      loopI 0.0 3.0 $ \i181 -> do
+        let !d181 = fromIntegral i181 :: Double
+        loopI 0.0 3.0 $ \i182 -> do
+          let !d182 = fromIntegral i182 :: Double
+          loopI 0.0 3.0 $ \i183 -> do
+            let !d183 = fromIntegral i183 :: Double
+            let !s184 = ((s178 + d181) - 1.0)
+            let !s185 = ((s179 + d182) - 1.0)
+            let !s186 = ((s180 + d183) - 1.0)
             let !s187 = (((((s184 + 131072.0) * 262144.0) + (s185 + 131072.0)) * 262144.0) + (s186 + 131072.0))
             let !t188 = (((s184 * 7.3856093e7) + (s185 * 1.9349663e7)) + (s186 * 8.3492791e7))
             let !s189 = (t188 - (t176 * (floorF (t188 / t176))))
-            t190 <- rd grid s189
-            t191 <- rd grid (t176 + s189)
-            loop t191 t190 $ \i192 -> do
-              t193 <- rd items i192
-              t194 <- rd cellOf t193
+            t190 <- rdI grid (truncate s189)
+            t191 <- rdI grid ((truncate t176) + (truncate s189))
+            loopI t191 t190 $ \i192 -> do
+              let !d192 = fromIntegral i192 :: Double
+              t193 <- rdI items i192
+              t194 <- rdI cellOf (truncate t193)
               if (0.5 - (abs (t194 - s187))) > 0 then do
-                if (t193 - i31) > 0 then do
-                  t195 <- rd pos (3.0 * t193)
-                  t196 <- rd pos ((3.0 * t193) + 1.0)
-                  t197 <- rd pos ((3.0 * t193) + 2.0)
-                  t198 <- rd scalars ((6.0 * t193) + 5.0)
-                  t199 <- rd scalars ((6.0 * t193) + 2.0)
+                if (t193 - d31) > 0 then do
+                  t195 <- rdI pos (3 * (truncate t193))
+                  t196 <- rdI pos ((3 * (truncate t193)) + 1)
+                  t197 <- rdI pos ((3 * (truncate t193)) + 2)
+                  t198 <- rdI scalars ((6 * (truncate t193)) + 5)
+                  t199 <- rdI scalars ((6 * (truncate t193)) + 2)
                   let !t200 = (t36 + t199)
                   let !t201 = (t32 + (negate t195))
                   let !t202 = (t33 + (negate t196))
                   let !t203 = (s173 + (negate t197))
                   let !t204 = ((t35 + t198) - (sqrt (((t201 * t201) + (t202 * t202)) + (t203 * t203))))
                   if (if (t200 - t204) > 0 then t204 else t200) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t193 + 1.0) * 64.0) + 28.0) i31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t193 + 1.0) * 64.0) + 28.0) + 2.0) t193 i31 1.0 1.0 1.0 (-0.0) (-0.0) 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t193 + 1.0) * 64.0) + 28.0) d31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t193 + 1.0) * 64.0) + 28.0) + 2.0) t193 d31 1.0 1.0 1.0 (-0.0) (-0.0) 2.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -396,40 +423,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t206 = ((abs s205) - 1.0)
     let !t207 = (if (negate t206) > 0 then 0.0 else t206)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t207 * t207)))) > 0 then do
-      t208 <- rd meta 4.0
-      t209 <- rd meta 5.0
+      t208 <- rdI meta 4
+      t209 <- rdI meta 5
       let !s210 = (floorF (t32 / t209))
       let !s211 = (floorF (t33 / t209))
       let !s212 = (floorF (s205 / t209))
-      loop 0.0 3.0 $ \i213 -> do
-        loop 0.0 3.0 $ \i214 -> do
-          loop 0.0 3.0 $ \i215 -> do
-            let !s216 = ((s210 + i213) - 1.0)
-            let !s217 = ((s211 + i214) - 1.0)
-            let !s218 = ((s212 + i215) - 1.0)
+      loopI 0.0 3.0 $ \i213 -> do
+        let !d213 = fromIntegral i213 :: Double
+        loopI 0.0 3.0 $ \i214 -> do
+          let !d214 = fromIntegral i214 :: Double
+          loopI 0.0 3.0 $ \i215 -> do
+            let !d215 = fromIntegral i215 :: Double
+            let !s216 = ((s210 + d213) - 1.0)
+            let !s217 = ((s211 + d214) - 1.0)
+            let !s218 = ((s212 + d215) - 1.0)
             let !s219 = (((((s216 + 131072.0) * 262144.0) + (s217 + 131072.0)) * 262144.0) + (s218 + 131072.0))
             let !t220 = (((s216 * 7.3856093e7) + (s217 * 1.9349663e7)) + (s218 * 8.3492791e7))
             let !s221 = (t220 - (t208 * (floorF (t220 / t208))))
-            t222 <- rd grid s221
-            t223 <- rd grid (t208 + s221)
-            loop t223 t222 $ \i224 -> do
-              t225 <- rd items i224
-              t226 <- rd cellOf t225
+            t222 <- rdI grid (truncate s221)
+            t223 <- rdI grid ((truncate t208) + (truncate s221))
+            loopI t223 t222 $ \i224 -> do
+              let !d224 = fromIntegral i224 :: Double
+              t225 <- rdI items i224
+              t226 <- rdI cellOf (truncate t225)
               if (0.5 - (abs (t226 - s219))) > 0 then do
-                if ((t225 - i31) + 0.5) > 0 then do
-                  t227 <- rd pos (3.0 * t225)
-                  t228 <- rd pos ((3.0 * t225) + 1.0)
-                  t229 <- rd pos ((3.0 * t225) + 2.0)
-                  t230 <- rd scalars ((6.0 * t225) + 5.0)
-                  t231 <- rd scalars ((6.0 * t225) + 2.0)
+                if ((t225 - d31) + 0.5) > 0 then do
+                  t227 <- rdI pos (3 * (truncate t225))
+                  t228 <- rdI pos ((3 * (truncate t225)) + 1)
+                  t229 <- rdI pos ((3 * (truncate t225)) + 2)
+                  t230 <- rdI scalars ((6 * (truncate t225)) + 5)
+                  t231 <- rdI scalars ((6 * (truncate t225)) + 2)
                   let !t232 = (t36 + t231)
                   let !t233 = (t32 + (negate t227))
                   let !t234 = (t33 + (negate t228))
                   let !t235 = (s205 + (negate t229))
                   let !t236 = ((t35 + t230) - (sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235))))
                   if (if (t232 - t236) > 0 then t236 else t232) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t225 + 1.0) * 64.0) + 32.0) i31 t225 1.0 1.0 1.0 0.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t225 + 1.0) * 64.0) + 32.0) + 2.0) t225 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t225 + 1.0) * 64.0) + 32.0) d31 t225 1.0 1.0 1.0 0.0 0.0 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t225 + 1.0) * 64.0) + 32.0) + 2.0) t225 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-2.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -453,40 +484,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t241 = ((abs s238) - 1.0)
     let !t242 = (if (negate t241) > 0 then 0.0 else t241)
     if ((t35 + t37) - (sqrt ((t240 * t240) + (t242 * t242)))) > 0 then do
-      t243 <- rd meta 4.0
-      t244 <- rd meta 5.0
+      t243 <- rdI meta 4
+      t244 <- rdI meta 5
       let !s245 = (floorF (s237 / t244))
       let !s246 = (floorF (t33 / t244))
       let !s247 = (floorF (s238 / t244))
-      loop 0.0 3.0 $ \i248 -> do
-        loop 0.0 3.0 $ \i249 -> do
-          loop 0.0 3.0 $ \i250 -> do
-            let !s251 = ((s245 + i248) - 1.0)
-            let !s252 = ((s246 + i249) - 1.0)
-            let !s253 = ((s247 + i250) - 1.0)
+      loopI 0.0 3.0 $ \i248 -> do
+        let !d248 = fromIntegral i248 :: Double
+        loopI 0.0 3.0 $ \i249 -> do
+          let !d249 = fromIntegral i249 :: Double
+          loopI 0.0 3.0 $ \i250 -> do
+            let !d250 = fromIntegral i250 :: Double
+            let !s251 = ((s245 + d248) - 1.0)
+            let !s252 = ((s246 + d249) - 1.0)
+            let !s253 = ((s247 + d250) - 1.0)
             let !s254 = (((((s251 + 131072.0) * 262144.0) + (s252 + 131072.0)) * 262144.0) + (s253 + 131072.0))
             let !t255 = (((s251 * 7.3856093e7) + (s252 * 1.9349663e7)) + (s253 * 8.3492791e7))
             let !s256 = (t255 - (t243 * (floorF (t255 / t243))))
-            t257 <- rd grid s256
-            t258 <- rd grid (t243 + s256)
-            loop t258 t257 $ \i259 -> do
-              t260 <- rd items i259
-              t261 <- rd cellOf t260
+            t257 <- rdI grid (truncate s256)
+            t258 <- rdI grid ((truncate t243) + (truncate s256))
+            loopI t258 t257 $ \i259 -> do
+              let !d259 = fromIntegral i259 :: Double
+              t260 <- rdI items i259
+              t261 <- rdI cellOf (truncate t260)
               if (0.5 - (abs (t261 - s254))) > 0 then do
-                if ((t260 - i31) + 0.5) > 0 then do
-                  t262 <- rd pos (3.0 * t260)
-                  t263 <- rd pos ((3.0 * t260) + 1.0)
-                  t264 <- rd pos ((3.0 * t260) + 2.0)
-                  t265 <- rd scalars ((6.0 * t260) + 5.0)
-                  t266 <- rd scalars ((6.0 * t260) + 2.0)
+                if ((t260 - d31) + 0.5) > 0 then do
+                  t262 <- rdI pos (3 * (truncate t260))
+                  t263 <- rdI pos ((3 * (truncate t260)) + 1)
+                  t264 <- rdI pos ((3 * (truncate t260)) + 2)
+                  t265 <- rdI scalars ((6 * (truncate t260)) + 5)
+                  t266 <- rdI scalars ((6 * (truncate t260)) + 2)
                   let !t267 = (t36 + t266)
                   let !t268 = (s237 + (negate t262))
                   let !t269 = (t33 + (negate t263))
                   let !t270 = (s238 + (negate t264))
                   let !t271 = ((t35 + t265) - (sqrt (((t268 * t268) + (t269 * t269)) + (t270 * t270))))
                   if (if (t267 - t271) > 0 then t271 else t267) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t260 + 1.0) * 64.0) + 36.0) i31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t260 + 1.0) * 64.0) + 36.0) + 2.0) t260 i31 1.0 1.0 1.0 (-2.0) (-0.0) 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t260 + 1.0) * 64.0) + 36.0) d31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t260 + 1.0) * 64.0) + 36.0) + 2.0) t260 d31 1.0 1.0 1.0 (-2.0) (-0.0) 2.0 1.0
                     pure ()
                   else do
                     pure ()
@@ -507,40 +542,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t273 = ((abs s272) - 1.0)
     let !t274 = (if (negate t273) > 0 then 0.0 else t273)
     if ((t35 + t37) - (sqrt ((t274 * t274) + (t41 * t41)))) > 0 then do
-      t275 <- rd meta 4.0
-      t276 <- rd meta 5.0
+      t275 <- rdI meta 4
+      t276 <- rdI meta 5
       let !s277 = (floorF (s272 / t276))
       let !s278 = (floorF (t33 / t276))
       let !s279 = (floorF (t34 / t276))
-      loop 0.0 3.0 $ \i280 -> do
-        loop 0.0 3.0 $ \i281 -> do
-          loop 0.0 3.0 $ \i282 -> do
-            let !s283 = ((s277 + i280) - 1.0)
-            let !s284 = ((s278 + i281) - 1.0)
-            let !s285 = ((s279 + i282) - 1.0)
+      loopI 0.0 3.0 $ \i280 -> do
+        let !d280 = fromIntegral i280 :: Double
+        loopI 0.0 3.0 $ \i281 -> do
+          let !d281 = fromIntegral i281 :: Double
+          loopI 0.0 3.0 $ \i282 -> do
+            let !d282 = fromIntegral i282 :: Double
+            let !s283 = ((s277 + d280) - 1.0)
+            let !s284 = ((s278 + d281) - 1.0)
+            let !s285 = ((s279 + d282) - 1.0)
             let !s286 = (((((s283 + 131072.0) * 262144.0) + (s284 + 131072.0)) * 262144.0) + (s285 + 131072.0))
             let !t287 = (((s283 * 7.3856093e7) + (s284 * 1.9349663e7)) + (s285 * 8.3492791e7))
             let !s288 = (t287 - (t275 * (floorF (t287 / t275))))
-            t289 <- rd grid s288
-            t290 <- rd grid (t275 + s288)
-            loop t290 t289 $ \i291 -> do
-              t292 <- rd items i291
-              t293 <- rd cellOf t292
+            t289 <- rdI grid (truncate s288)
+            t290 <- rdI grid ((truncate t275) + (truncate s288))
+            loopI t290 t289 $ \i291 -> do
+              let !d291 = fromIntegral i291 :: Double
+              t292 <- rdI items i291
+              t293 <- rdI cellOf (truncate t292)
               if (0.5 - (abs (t293 - s286))) > 0 then do
-                if ((t292 - i31) + 0.5) > 0 then do
-                  t294 <- rd pos (3.0 * t292)
-                  t295 <- rd pos ((3.0 * t292) + 1.0)
-                  t296 <- rd pos ((3.0 * t292) + 2.0)
-                  t297 <- rd scalars ((6.0 * t292) + 5.0)
-                  t298 <- rd scalars ((6.0 * t292) + 2.0)
+                if ((t292 - d31) + 0.5) > 0 then do
+                  t294 <- rdI pos (3 * (truncate t292))
+                  t295 <- rdI pos ((3 * (truncate t292)) + 1)
+                  t296 <- rdI pos ((3 * (truncate t292)) + 2)
+                  t297 <- rdI scalars ((6 * (truncate t292)) + 5)
+                  t298 <- rdI scalars ((6 * (truncate t292)) + 2)
                   let !t299 = (t36 + t298)
                   let !t300 = (s272 + (negate t294))
                   let !t301 = (t33 + (negate t295))
                   let !t302 = (t34 + (negate t296))
                   let !t303 = ((t35 + t297) - (sqrt (((t300 * t300) + (t301 * t301)) + (t302 * t302))))
                   if (if (t299 - t303) > 0 then t303 else t299) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t292 + 1.0) * 64.0) + 40.0) i31 t292 1.0 1.0 1.0 2.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t292 + 1.0) * 64.0) + 40.0) + 2.0) t292 i31 1.0 1.0 1.0 (-2.0) (-0.0) (-0.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t292 + 1.0) * 64.0) + 40.0) d31 t292 1.0 1.0 1.0 2.0 0.0 0.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t292 + 1.0) * 64.0) + 40.0) + 2.0) t292 d31 1.0 1.0 1.0 (-2.0) (-0.0) (-0.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -564,40 +603,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t308 = ((abs s305) - 1.0)
     let !t309 = (if (negate t308) > 0 then 0.0 else t308)
     if ((t35 + t37) - (sqrt ((t307 * t307) + (t309 * t309)))) > 0 then do
-      t310 <- rd meta 4.0
-      t311 <- rd meta 5.0
+      t310 <- rdI meta 4
+      t311 <- rdI meta 5
       let !s312 = (floorF (s304 / t311))
       let !s313 = (floorF (t33 / t311))
       let !s314 = (floorF (s305 / t311))
-      loop 0.0 3.0 $ \i315 -> do
-        loop 0.0 3.0 $ \i316 -> do
-          loop 0.0 3.0 $ \i317 -> do
-            let !s318 = ((s312 + i315) - 1.0)
-            let !s319 = ((s313 + i316) - 1.0)
-            let !s320 = ((s314 + i317) - 1.0)
+      loopI 0.0 3.0 $ \i315 -> do
+        let !d315 = fromIntegral i315 :: Double
+        loopI 0.0 3.0 $ \i316 -> do
+          let !d316 = fromIntegral i316 :: Double
+          loopI 0.0 3.0 $ \i317 -> do
+            let !d317 = fromIntegral i317 :: Double
+            let !s318 = ((s312 + d315) - 1.0)
+            let !s319 = ((s313 + d316) - 1.0)
+            let !s320 = ((s314 + d317) - 1.0)
             let !s321 = (((((s318 + 131072.0) * 262144.0) + (s319 + 131072.0)) * 262144.0) + (s320 + 131072.0))
             let !t322 = (((s318 * 7.3856093e7) + (s319 * 1.9349663e7)) + (s320 * 8.3492791e7))
             let !s323 = (t322 - (t310 * (floorF (t322 / t310))))
-            t324 <- rd grid s323
-            t325 <- rd grid (t310 + s323)
-            loop t325 t324 $ \i326 -> do
-              t327 <- rd items i326
-              t328 <- rd cellOf t327
+            t324 <- rdI grid (truncate s323)
+            t325 <- rdI grid ((truncate t310) + (truncate s323))
+            loopI t325 t324 $ \i326 -> do
+              let !d326 = fromIntegral i326 :: Double
+              t327 <- rdI items i326
+              t328 <- rdI cellOf (truncate t327)
               if (0.5 - (abs (t328 - s321))) > 0 then do
-                if ((t327 - i31) + 0.5) > 0 then do
-                  t329 <- rd pos (3.0 * t327)
-                  t330 <- rd pos ((3.0 * t327) + 1.0)
-                  t331 <- rd pos ((3.0 * t327) + 2.0)
-                  t332 <- rd scalars ((6.0 * t327) + 5.0)
-                  t333 <- rd scalars ((6.0 * t327) + 2.0)
+                if ((t327 - d31) + 0.5) > 0 then do
+                  t329 <- rdI pos (3 * (truncate t327))
+                  t330 <- rdI pos ((3 * (truncate t327)) + 1)
+                  t331 <- rdI pos ((3 * (truncate t327)) + 2)
+                  t332 <- rdI scalars ((6 * (truncate t327)) + 5)
+                  t333 <- rdI scalars ((6 * (truncate t327)) + 2)
                   let !t334 = (t36 + t333)
                   let !t335 = (s304 + (negate t329))
                   let !t336 = (t33 + (negate t330))
                   let !t337 = (s305 + (negate t331))
                   let !t338 = ((t35 + t332) - (sqrt (((t335 * t335) + (t336 * t336)) + (t337 * t337))))
                   if (if (t334 - t338) > 0 then t338 else t334) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t327 + 1.0) * 64.0) + 44.0) i31 t327 1.0 1.0 1.0 2.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t327 + 1.0) * 64.0) + 44.0) + 2.0) t327 i31 1.0 1.0 1.0 (-2.0) (-0.0) (-2.0) 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t327 + 1.0) * 64.0) + 44.0) d31 t327 1.0 1.0 1.0 2.0 0.0 2.0 1.0
+                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t327 + 1.0) * 64.0) + 44.0) + 2.0) t327 d31 1.0 1.0 1.0 (-2.0) (-0.0) (-2.0) 1.0
                     pure ()
                   else do
                     pure ()
@@ -614,15 +657,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t339 <- rd verts (3.0 * (97.0 * i31))
-    t340 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t341 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t339 <- rdI verts (3 * (97 * i31))
+    t340 <- rdI verts ((3 * (97 * i31)) + 1)
+    t341 <- rdI verts ((3 * (97 * i31)) + 2)
     v342 <- newR 1.0
-    loop 0.0 24.0 $ \i343 -> do
-      t344 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i343 * 4.0)) + 3.0))
-      t345 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i343 * 4.0)) + 3.0)) + 1.0)
-      t346 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i343 * 4.0)) + 3.0)) + 2.0)
-      t347 <- rd radii ((24.0 * i31) + i343)
+    loopI 0.0 24.0 $ \i343 -> do
+      let !d343 = fromIntegral i343 :: Double
+      t344 <- rdI verts (3 * ((((97 * i31) + 1) + (i343 * 4)) + 3))
+      t345 <- rdI verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 1)
+      t346 <- rdI verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 2)
+      t347 <- rdI radii ((24 * i31) + i343)
       t348 <- getR v342
       let !t349 = (t344 + (negate t339))
       let !t350 = (t345 + (negate t340))
@@ -639,25 +683,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v358 <- newR 0.0
       v359 <- newR 0.0
       v360 <- newR 0.0
-      loop 0.0 24.0 $ \i361 -> do
-        t362 <- rd radii ((24.0 * i31) + i361)
-        loop 6.0 12.0 $ \i363 -> do
-          let !t364 = (i361 + i363)
-          t365 <- rd radii ((24.0 * i31) + (t364 - (24.0 * (floorF (t364 / 24.0)))))
-          loop 1.0 4.0 $ \i366 -> do
-            t367 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i361 * 4.0)) + (i366 - 1.0)))
-            t368 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i361 * 4.0)) + (i366 - 1.0))) + 1.0)
-            t369 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i361 * 4.0)) + (i366 - 1.0))) + 2.0)
-            t370 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i361 * 4.0)) + i366))
-            t371 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i361 * 4.0)) + i366)) + 1.0)
-            t372 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i361 * 4.0)) + i366)) + 2.0)
-            loop 1.0 4.0 $ \i373 -> do
-              t374 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (i373 - 1.0)))
-              t375 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (i373 - 1.0))) + 1.0)
-              t376 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (i373 - 1.0))) + 2.0)
-              t377 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + i373))
-              t378 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + i373)) + 1.0)
-              t379 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + i373)) + 2.0)
+      loopI 0.0 24.0 $ \i361 -> do
+        let !d361 = fromIntegral i361 :: Double
+        t362 <- rdI radii ((24 * i31) + i361)
+        loopI 6.0 12.0 $ \i363 -> do
+          let !d363 = fromIntegral i363 :: Double
+          let !t364 = (d361 + d363)
+          t365 <- rdI radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0))))))
+          loopI 1.0 4.0 $ \i366 -> do
+            let !d366 = fromIntegral i366 :: Double
+            t367 <- rdI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1)))
+            t368 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 1)
+            t369 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 2)
+            t370 <- rdI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + i366))
+            t371 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 1)
+            t372 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 2)
+            loopI 1.0 4.0 $ \i373 -> do
+              let !d373 = fromIntegral i373 :: Double
+              t374 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))))
+              t375 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 1.0))
+              t376 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 2.0))
+              t377 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)))
+              t378 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 1.0))
+              t379 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 2.0))
               t380 <- getR v354
               let !t381 = (negate t374)
               let !t382 = (t377 + t381)
@@ -690,19 +738,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t409 = (if (negate t402) > 0 then (if (negate t405) > 0 then 0.0 else t405) else (if t406 > 0 then (if (negate t408) > 0 then 0.0 else t408) else t401))
               let !t410 = (if t406 > 0 then 1.0 else t402)
               let !t411 = (if (negate t410) > 0 then 0.0 else t410)
-              let !t412 = ((0.5 * ((t362 - ((t362 * (i366 + t409)) / 4.0)) + (t365 - ((t365 * (i373 + t411)) / 4.0)))) - t380)
+              let !t412 = ((0.5 * ((t362 - ((t362 * (d366 + t409)) / 4.0)) + (t365 - ((t365 * (d373 + t411)) / 4.0)))) - t380)
               let !t413 = ((t367 + (t409 * t388)) + (negate (t374 + (t411 * t382))))
               let !t414 = ((t368 + (t409 * t389)) + (negate (t375 + (t411 * t384))))
               let !t415 = ((t369 + (t409 * t390)) + (negate (t376 + (t411 * t386))))
               let !t416 = ((0.3 * ((if (t365 - t362) > 0 then t362 else t365) / 4.0)) - (sqrt (((t413 * t413) + (t414 * t414)) + (t415 * t415))))
               if (if (t412 - t416) > 0 then t416 else t412) > 0 then do
-                setR v354 (0.5 * ((t362 - ((t362 * (i366 + t409)) / 4.0)) + (t365 - ((t365 * (i373 + t411)) / 4.0))))
-                t417 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i361 * 4.0)))
-                t418 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i361 * 4.0))) + 1.0)
-                t419 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i361 * 4.0))) + 2.0)
-                t420 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)))
-                t421 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0)
-                t422 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0)
+                setR v354 (0.5 * ((t362 - ((t362 * (d366 + t409)) / 4.0)) + (t365 - ((t365 * (d373 + t411)) / 4.0))))
+                t417 <- rdI verts (3 * (((97 * i31) + 1) + (i361 * 4)))
+                t418 <- rdI verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 1)
+                t419 <- rdI verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 2)
+                t420 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))))
+                t421 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0))
+                t422 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0))
                 setR v355 (t367 + (t409 * t388))
                 setR v356 (t368 + (t409 * t389))
                 setR v357 (t369 + (t409 * t390))
@@ -741,89 +789,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s444 = (t443 * t438)
         let !s445 = (t443 * t441)
         let !s446 = (t443 * t440)
-        t447 <- rd meta 2.0
-        t448 <- rd meta 3.0
+        t447 <- rdI meta 2
+        t448 <- rdI meta 3
         if (((8.0 * (if (1.0 - t448) > 0 then 1.0 else t448)) - t447) - 0.5) > 0 then do
-          wr meta 2.0 (t447 + 1.0)
-          t449 <- rd pos (3.0 * i31)
-          t450 <- rd pos ((3.0 * i31) + 1.0)
-          t451 <- rd pos ((3.0 * i31) + 2.0)
-          t452 <- rd normal (3.0 * i31)
-          t453 <- rd normal ((3.0 * i31) + 1.0)
-          t454 <- rd normal ((3.0 * i31) + 2.0)
-          t455 <- rd axis (3.0 * i31)
-          t456 <- rd axis ((3.0 * i31) + 1.0)
-          t457 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t447 + 1.0)
+          t449 <- rdI pos (3 * i31)
+          t450 <- rdI pos ((3 * i31) + 1)
+          t451 <- rdI pos ((3 * i31) + 2)
+          t452 <- rdI normal (3 * i31)
+          t453 <- rdI normal ((3 * i31) + 1)
+          t454 <- rdI normal ((3 * i31) + 2)
+          t455 <- rdI axis (3 * i31)
+          t456 <- rdI axis ((3 * i31) + 1)
+          t457 <- rdI axis ((3 * i31) + 2)
           let !s458 = ((t453 * t457) - (t454 * t456))
           let !s459 = ((t454 * t455) - (t452 * t457))
           let !s460 = ((t452 * t456) - (t453 * t455))
-          t461 <- rd scalars (6.0 * i31)
-          t462 <- rd scalars ((6.0 * i31) + 5.0)
-          t463 <- rd scalars ((6.0 * i31) + 2.0)
-          t464 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t447) i31
-          wr contacts ((30.0 * t447) + 1.0) (-1.0)
-          wr contacts ((30.0 * t447) + 2.0) i31
-          wr contacts ((30.0 * t447) + 3.0) 12.0
-          wr contacts ((30.0 * t447) + 4.0) (s444 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t452)))
-          wr contacts (((30.0 * t447) + 4.0) + 1.0) (s445 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t453)))
-          wr contacts (((30.0 * t447) + 4.0) + 2.0) (s446 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t454)))
-          wr contacts ((30.0 * t447) + 7.0) 0.0
-          wr contacts ((30.0 * t447) + 12.0) 0.0
-          wr contacts (((30.0 * t447) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t447) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t447) + 15.0) 0.0
-          wr contacts ((30.0 * t447) + 20.0) t434
-          wr contacts ((30.0 * t447) + 26.0) 0.6
-          wr contacts ((30.0 * t447) + 27.0) t435
-          wr contacts (((30.0 * t447) + 27.0) + 1.0) t436
-          wr contacts (((30.0 * t447) + 27.0) + 2.0) t437
+          t461 <- rdI scalars (6 * i31)
+          t462 <- rdI scalars ((6 * i31) + 5)
+          t463 <- rdI scalars ((6 * i31) + 2)
+          t464 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t447)) d31
+          wrI contacts ((30 * (truncate t447)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t447)) + 2) d31
+          wrI contacts ((30 * (truncate t447)) + 3) 12.0
+          wrI contacts ((30 * (truncate t447)) + 4) (s444 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t452)))
+          wrI contacts (((30 * (truncate t447)) + 4) + 1) (s445 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t453)))
+          wrI contacts (((30 * (truncate t447)) + 4) + 2) (s446 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t454)))
+          wrI contacts ((30 * (truncate t447)) + 7) 0.0
+          wrI contacts ((30 * (truncate t447)) + 12) 0.0
+          wrI contacts (((30 * (truncate t447)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t447)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t447)) + 15) 0.0
+          wrI contacts ((30 * (truncate t447)) + 20) t434
+          wrI contacts ((30 * (truncate t447)) + 26) 0.6
+          wrI contacts ((30 * (truncate t447)) + 27) t435
+          wrI contacts (((30 * (truncate t447)) + 27) + 1) t436
+          wrI contacts (((30 * (truncate t447)) + 27) + 2) t437
           if (-0.5) > 0 then do
-            t465 <- rd pos (-3.0)
-            t466 <- rd pos (-2.0)
-            t467 <- rd pos (-1.0)
-            t468 <- rd normal (-3.0)
-            t469 <- rd normal (-2.0)
-            t470 <- rd normal (-1.0)
-            t471 <- rd axis (-3.0)
-            t472 <- rd axis (-2.0)
-            t473 <- rd axis (-1.0)
+            t465 <- rdI pos (-3)
+            t466 <- rdI pos (-2)
+            t467 <- rdI pos (-1)
+            t468 <- rdI normal (-3)
+            t469 <- rdI normal (-2)
+            t470 <- rdI normal (-1)
+            t471 <- rdI axis (-3)
+            t472 <- rdI axis (-2)
+            t473 <- rdI axis (-1)
             let !s474 = ((t469 * t473) - (t470 * t472))
             let !s475 = ((t470 * t471) - (t468 * t473))
             let !s476 = ((t468 * t472) - (t469 * t471))
-            t477 <- rd scalars (-6.0)
-            t478 <- rd scalars (-1.0)
-            t479 <- rd scalars (-4.0)
-            t480 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t447) + 8.0) (s444 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t468)))
-            wr contacts (((30.0 * t447) + 8.0) + 1.0) (s445 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t469)))
-            wr contacts (((30.0 * t447) + 8.0) + 2.0) (s446 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t470)))
+            t477 <- rdI scalars (-6)
+            t478 <- rdI scalars (-1)
+            t479 <- rdI scalars (-4)
+            t480 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t447)) + 8) (s444 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t468)))
+            wrI contacts (((30 * (truncate t447)) + 8) + 1) (s445 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t469)))
+            wrI contacts (((30 * (truncate t447)) + 8) + 2) (s446 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t470)))
             let !t481 = (t436 + (negate t466))
             let !t482 = (t437 + (negate t467))
             let !t483 = (t435 + (negate t465))
-            wr contacts ((30.0 * t447) + 11.0) (((((t481 * s446) - (t482 * s445)) * t468) + (((t482 * s444) - (t483 * s446)) * t469)) + (((t483 * s445) - (t481 * s444)) * t470))
+            wrI contacts ((30 * (truncate t447)) + 11) (((((t481 * s446) - (t482 * s445)) * t468) + (((t482 * s444) - (t483 * s446)) * t469)) + (((t483 * s445) - (t481 * s444)) * t470))
             let !t484 = ((t453 * s446) - (t454 * s445))
-            wr contacts ((30.0 * t447) + 16.0) (t484 + (negate ((((t468 * t484) + (t469 * ((t454 * s444) - (t452 * s446)))) + (t470 * ((t452 * s445) - (t453 * s444)))) * t468)))
+            wrI contacts ((30 * (truncate t447)) + 16) (t484 + (negate ((((t468 * t484) + (t469 * ((t454 * s444) - (t452 * s446)))) + (t470 * ((t452 * s445) - (t453 * s444)))) * t468)))
             let !t485 = ((t454 * s444) - (t452 * s446))
-            wr contacts (((30.0 * t447) + 16.0) + 1.0) (t485 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * ((t452 * s445) - (t453 * s444)))) * t469)))
+            wrI contacts (((30 * (truncate t447)) + 16) + 1) (t485 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * ((t452 * s445) - (t453 * s444)))) * t469)))
             let !t486 = ((t452 * s445) - (t453 * s444))
-            wr contacts (((30.0 * t447) + 16.0) + 2.0) (t486 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * t486)) * t470)))
-            wr contacts ((30.0 * t447) + 19.0) (((((t481 * t486) - (t482 * t485)) * t468) + (((t482 * t484) - (t483 * t486)) * t469)) + (((t483 * t485) - (t481 * t484)) * t470))
+            wrI contacts (((30 * (truncate t447)) + 16) + 2) (t486 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * t486)) * t470)))
+            wrI contacts ((30 * (truncate t447)) + 19) (((((t481 * t486) - (t482 * t485)) * t468) + (((t482 * t484) - (t483 * t486)) * t469)) + (((t483 * t485) - (t481 * t484)) * t470))
             pure ()
           else do
-            wr contacts ((30.0 * t447) + 8.0) 0.0
-            wr contacts (((30.0 * t447) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t447) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t447) + 11.0) 0.0
-            wr contacts ((30.0 * t447) + 16.0) 0.0
-            wr contacts (((30.0 * t447) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t447) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t447) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t447)) + 8) 0.0
+            wrI contacts (((30 * (truncate t447)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t447)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t447)) + 11) 0.0
+            wrI contacts ((30 * (truncate t447)) + 16) 0.0
+            wrI contacts (((30 * (truncate t447)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t447)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t447)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t487 <- rd meta 6.0
-          wr meta 6.0 (t487 + 1.0)
+          t487 <- rdI meta 6
+          wrI meta 6 (t487 + 1.0)
           pure ()
         pure ()
       else do
@@ -836,43 +884,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -880,12 +929,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -893,20 +942,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -917,18 +966,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -936,98 +986,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1102,9 +1152,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rd mouse 4.0
-      t213 <- rd mouse 5.0
-      t214 <- rd mouse 6.0
+      t212 <- rdI mouse 4
+      t213 <- rdI mouse 5
+      t214 <- rdI mouse 6
       let !t215 = (t212 - ((floorF ((t212 + 1.0) / 2.0)) * 2.0))
       let !t216 = (negate s199)
       let !t217 = (t215 + t216)
@@ -1151,9 +1201,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t258 = ((if t257 > 0 then t256 else t255) - (t252 + t240))
       let !s259 = (if t258 > 0 then t250 else (if t257 > 0 then t250 else (if t254 > 0 then t250 else (if t248 > 0 then t215 else (if t245 > 0 then t215 else (if t242 > 0 then t226 else (if t236 > 0 then t226 else (if t233 > 0 then t226 else t215))))))))
       let !s260 = (if t258 > 0 then t238 else (if t257 > 0 then t221 else (if t254 > 0 then t229 else (if t248 > 0 then t238 else (if t245 > 0 then t229 else (if t242 > 0 then t238 else (if t236 > 0 then t221 else (if t233 > 0 then t229 else t221))))))))
-      t261 <- rd mouse 7.0
-      t262 <- rd mouse 8.0
-      t263 <- rd mouse 9.0
+      t261 <- rdI mouse 7
+      t262 <- rdI mouse 8
+      t263 <- rdI mouse 9
       let !t264 = (recip t101)
       let !t265 = (6.283185307179586 * t261)
       let !s266 = (recip (t103 * ((((2.0 * t264) * t262) * t265) + (t103 * ((t264 * t265) * t265)))))
@@ -1164,68 +1214,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s271 = (s199 + (negate s259))
       let !s272 = (s200 + (negate t213))
       let !s273 = (s201 + (negate s260))
-      t274 <- rd mouse 10.0
-      t275 <- rd scalars ((6.0 * t100) + 2.0)
-      t276 <- rd scalars ((6.0 * t100) + 3.0)
-      t277 <- rd vel (3.0 * t100)
-      t278 <- rd vel ((3.0 * t100) + 1.0)
-      t279 <- rd vel ((3.0 * t100) + 2.0)
-      t280 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t277 + ((t275 * t274) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t278 + ((t275 * t274) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t279 + ((t275 * t274) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t280 + ((t276 * t274) * (((((s269 * t112) - (s270 * t111)) * t107) + (((s270 * t110) - (s268 * t112)) * t108)) + (((s268 * t111) - (s269 * t110)) * t109))))
-      t281 <- rd mouse 11.0
-      t282 <- rd scalars ((6.0 * t100) + 2.0)
-      t283 <- rd scalars ((6.0 * t100) + 3.0)
-      t284 <- rd vel (3.0 * t100)
-      t285 <- rd vel ((3.0 * t100) + 1.0)
-      t286 <- rd vel ((3.0 * t100) + 2.0)
-      t287 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t284 + ((t282 * t281) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t285 + ((t282 * t281) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t286 + ((t282 * t281) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t287 + ((t283 * t281) * (((((s269 * s115) - (s270 * s114)) * t107) + (((s270 * s113) - (s268 * s115)) * t108)) + (((s268 * s114) - (s269 * s113)) * t109))))
+      t274 <- rdI mouse 10
+      t275 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t276 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t277 <- rdI vel (3 * (truncate t100))
+      t278 <- rdI vel ((3 * (truncate t100)) + 1)
+      t279 <- rdI vel ((3 * (truncate t100)) + 2)
+      t280 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t277 + ((t275 * t274) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t278 + ((t275 * t274) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t279 + ((t275 * t274) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t280 + ((t276 * t274) * (((((s269 * t112) - (s270 * t111)) * t107) + (((s270 * t110) - (s268 * t112)) * t108)) + (((s268 * t111) - (s269 * t110)) * t109))))
+      t281 <- rdI mouse 11
+      t282 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t283 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t284 <- rdI vel (3 * (truncate t100))
+      t285 <- rdI vel ((3 * (truncate t100)) + 1)
+      t286 <- rdI vel ((3 * (truncate t100)) + 2)
+      t287 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t284 + ((t282 * t281) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s269 * s115) - (s270 * s114)) * t107) + (((s270 * s113) - (s268 * s115)) * t108)) + (((s268 * s114) - (s269 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i288 -> do
-    loop 0.0 t9 $ \i289 -> do
-      t290 <- rd contacts (30.0 * i289)
-      t291 <- rd contacts ((30.0 * i289) + 1.0)
-      t292 <- rd contacts ((30.0 * i289) + 12.0)
-      t293 <- rd contacts (((30.0 * i289) + 12.0) + 1.0)
-      t294 <- rd contacts (((30.0 * i289) + 12.0) + 2.0)
-      t295 <- rd contacts ((30.0 * i289) + 15.0)
-      t296 <- rd contacts ((30.0 * i289) + 16.0)
-      t297 <- rd contacts (((30.0 * i289) + 16.0) + 1.0)
-      t298 <- rd contacts (((30.0 * i289) + 16.0) + 2.0)
-      t299 <- rd contacts ((30.0 * i289) + 19.0)
-      t300 <- rd contacts ((30.0 * i289) + 4.0)
-      t301 <- rd contacts (((30.0 * i289) + 4.0) + 1.0)
-      t302 <- rd contacts (((30.0 * i289) + 4.0) + 2.0)
-      t303 <- rd contacts ((30.0 * i289) + 7.0)
-      t304 <- rd contacts ((30.0 * i289) + 8.0)
-      t305 <- rd contacts (((30.0 * i289) + 8.0) + 1.0)
-      t306 <- rd contacts (((30.0 * i289) + 8.0) + 2.0)
-      t307 <- rd contacts ((30.0 * i289) + 11.0)
-      t308 <- rd contacts ((30.0 * i289) + 26.0)
-      t309 <- rd contacts ((30.0 * i289) + 24.0)
-      t310 <- rd contacts ((30.0 * i289) + 25.0)
-      t311 <- rd contacts ((30.0 * i289) + 22.0)
-      t312 <- rd vel (3.0 * t290)
-      t313 <- rd vel ((3.0 * t290) + 1.0)
-      t314 <- rd vel ((3.0 * t290) + 2.0)
-      t315 <- rd scalars ((6.0 * t290) + 1.0)
+  loopI 0.0 t1 $ \i288 -> do
+    let !d288 = fromIntegral i288 :: Double
+    loopI 0.0 t9 $ \i289 -> do
+      let !d289 = fromIntegral i289 :: Double
+      t290 <- rdI contacts (30 * i289)
+      t291 <- rdI contacts ((30 * i289) + 1)
+      t292 <- rdI contacts ((30 * i289) + 12)
+      t293 <- rdI contacts (((30 * i289) + 12) + 1)
+      t294 <- rdI contacts (((30 * i289) + 12) + 2)
+      t295 <- rdI contacts ((30 * i289) + 15)
+      t296 <- rdI contacts ((30 * i289) + 16)
+      t297 <- rdI contacts (((30 * i289) + 16) + 1)
+      t298 <- rdI contacts (((30 * i289) + 16) + 2)
+      t299 <- rdI contacts ((30 * i289) + 19)
+      t300 <- rdI contacts ((30 * i289) + 4)
+      t301 <- rdI contacts (((30 * i289) + 4) + 1)
+      t302 <- rdI contacts (((30 * i289) + 4) + 2)
+      t303 <- rdI contacts ((30 * i289) + 7)
+      t304 <- rdI contacts ((30 * i289) + 8)
+      t305 <- rdI contacts (((30 * i289) + 8) + 1)
+      t306 <- rdI contacts (((30 * i289) + 8) + 2)
+      t307 <- rdI contacts ((30 * i289) + 11)
+      t308 <- rdI contacts ((30 * i289) + 26)
+      t309 <- rdI contacts ((30 * i289) + 24)
+      t310 <- rdI contacts ((30 * i289) + 25)
+      t311 <- rdI contacts ((30 * i289) + 22)
+      t312 <- rdI vel (3 * (truncate t290))
+      t313 <- rdI vel ((3 * (truncate t290)) + 1)
+      t314 <- rdI vel ((3 * (truncate t290)) + 2)
+      t315 <- rdI scalars ((6 * (truncate t290)) + 1)
       v316 <- newR 0.0
       if (t291 + 0.5) > 0 then do
-        t317 <- rd vel (3.0 * t291)
-        t318 <- rd vel ((3.0 * t291) + 1.0)
-        t319 <- rd vel ((3.0 * t291) + 2.0)
-        t320 <- rd scalars ((6.0 * t291) + 1.0)
+        t317 <- rdI vel (3 * (truncate t291))
+        t318 <- rdI vel ((3 * (truncate t291)) + 1)
+        t319 <- rdI vel ((3 * (truncate t291)) + 2)
+        t320 <- rdI scalars ((6 * (truncate t291)) + 1)
         setR v316 ((((t296 * t317) + (t297 * t318)) + (t298 * t319)) + (t299 * t320))
         pure ()
       else do
@@ -1238,43 +1290,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t326 = (if (t325 - t323) > 0 then t323 else t325)
       let !t327 = (if (t324 - t326) > 0 then t324 else t326)
       let !s328 = (if (1.0 - (abs (t327 - t327))) > 0 then t327 else 0.0)
-      wr contacts ((30.0 * i289) + 25.0) s328
-      t329 <- rd scalars ((6.0 * t290) + 2.0)
-      t330 <- rd scalars ((6.0 * t290) + 3.0)
-      t331 <- rd vel (3.0 * t290)
-      t332 <- rd vel ((3.0 * t290) + 1.0)
-      t333 <- rd vel ((3.0 * t290) + 2.0)
-      t334 <- rd scalars ((6.0 * t290) + 1.0)
-      wr vel (3.0 * t290) (t331 + ((t329 * (s328 - t310)) * t292))
-      wr vel ((3.0 * t290) + 1.0) (t332 + ((t329 * (s328 - t310)) * t293))
-      wr vel ((3.0 * t290) + 2.0) (t333 + ((t329 * (s328 - t310)) * t294))
-      wr scalars ((6.0 * t290) + 1.0) (t334 + ((t330 * (s328 - t310)) * t295))
+      wrI contacts ((30 * i289) + 25) s328
+      t329 <- rdI scalars ((6 * (truncate t290)) + 2)
+      t330 <- rdI scalars ((6 * (truncate t290)) + 3)
+      t331 <- rdI vel (3 * (truncate t290))
+      t332 <- rdI vel ((3 * (truncate t290)) + 1)
+      t333 <- rdI vel ((3 * (truncate t290)) + 2)
+      t334 <- rdI scalars ((6 * (truncate t290)) + 1)
+      wrI vel (3 * (truncate t290)) (t331 + ((t329 * (s328 - t310)) * t292))
+      wrI vel ((3 * (truncate t290)) + 1) (t332 + ((t329 * (s328 - t310)) * t293))
+      wrI vel ((3 * (truncate t290)) + 2) (t333 + ((t329 * (s328 - t310)) * t294))
+      wrI scalars ((6 * (truncate t290)) + 1) (t334 + ((t330 * (s328 - t310)) * t295))
       if (t291 + 0.5) > 0 then do
-        t335 <- rd scalars ((6.0 * t291) + 2.0)
-        t336 <- rd scalars ((6.0 * t291) + 3.0)
-        t337 <- rd vel (3.0 * t291)
-        t338 <- rd vel ((3.0 * t291) + 1.0)
-        t339 <- rd vel ((3.0 * t291) + 2.0)
-        t340 <- rd scalars ((6.0 * t291) + 1.0)
-        wr vel (3.0 * t291) (t337 + ((t335 * (negate (s328 - t310))) * t296))
-        wr vel ((3.0 * t291) + 1.0) (t338 + ((t335 * (negate (s328 - t310))) * t297))
-        wr vel ((3.0 * t291) + 2.0) (t339 + ((t335 * (negate (s328 - t310))) * t298))
-        wr scalars ((6.0 * t291) + 1.0) (t340 + ((t336 * (negate (s328 - t310))) * t299))
+        t335 <- rdI scalars ((6 * (truncate t291)) + 2)
+        t336 <- rdI scalars ((6 * (truncate t291)) + 3)
+        t337 <- rdI vel (3 * (truncate t291))
+        t338 <- rdI vel ((3 * (truncate t291)) + 1)
+        t339 <- rdI vel ((3 * (truncate t291)) + 2)
+        t340 <- rdI scalars ((6 * (truncate t291)) + 1)
+        wrI vel (3 * (truncate t291)) (t337 + ((t335 * (negate (s328 - t310))) * t296))
+        wrI vel ((3 * (truncate t291)) + 1) (t338 + ((t335 * (negate (s328 - t310))) * t297))
+        wrI vel ((3 * (truncate t291)) + 2) (t339 + ((t335 * (negate (s328 - t310))) * t298))
+        wrI scalars ((6 * (truncate t291)) + 1) (t340 + ((t336 * (negate (s328 - t310))) * t299))
         pure ()
       else do
         pure ()
-      t341 <- rd contacts ((30.0 * i289) + 21.0)
-      t342 <- rd contacts ((30.0 * i289) + 23.0)
-      t343 <- rd vel (3.0 * t290)
-      t344 <- rd vel ((3.0 * t290) + 1.0)
-      t345 <- rd vel ((3.0 * t290) + 2.0)
-      t346 <- rd scalars ((6.0 * t290) + 1.0)
+      t341 <- rdI contacts ((30 * i289) + 21)
+      t342 <- rdI contacts ((30 * i289) + 23)
+      t343 <- rdI vel (3 * (truncate t290))
+      t344 <- rdI vel ((3 * (truncate t290)) + 1)
+      t345 <- rdI vel ((3 * (truncate t290)) + 2)
+      t346 <- rdI scalars ((6 * (truncate t290)) + 1)
       v347 <- newR 0.0
       if (t291 + 0.5) > 0 then do
-        t348 <- rd vel (3.0 * t291)
-        t349 <- rd vel ((3.0 * t291) + 1.0)
-        t350 <- rd vel ((3.0 * t291) + 2.0)
-        t351 <- rd scalars ((6.0 * t291) + 1.0)
+        t348 <- rdI vel (3 * (truncate t291))
+        t349 <- rdI vel ((3 * (truncate t291)) + 1)
+        t350 <- rdI vel ((3 * (truncate t291)) + 2)
+        t351 <- rdI scalars ((6 * (truncate t291)) + 1)
         setR v347 ((((t304 * t348) + (t305 * t349)) + (t306 * t350)) + (t307 * t351))
         pure ()
       else do
@@ -1284,73 +1336,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t354 = (t309 + ((t308 * (t342 - s353)) * t341))
       let !t355 = (if (negate t354) > 0 then 0.0 else t354)
       let !s356 = (if (1.0 - (abs (t355 - t355))) > 0 then t355 else 0.0)
-      wr contacts ((30.0 * i289) + 24.0) s356
-      t357 <- rd scalars ((6.0 * t290) + 2.0)
-      t358 <- rd scalars ((6.0 * t290) + 3.0)
-      t359 <- rd vel (3.0 * t290)
-      t360 <- rd vel ((3.0 * t290) + 1.0)
-      t361 <- rd vel ((3.0 * t290) + 2.0)
-      t362 <- rd scalars ((6.0 * t290) + 1.0)
-      wr vel (3.0 * t290) (t359 + ((t357 * (s356 - t309)) * t300))
-      wr vel ((3.0 * t290) + 1.0) (t360 + ((t357 * (s356 - t309)) * t301))
-      wr vel ((3.0 * t290) + 2.0) (t361 + ((t357 * (s356 - t309)) * t302))
-      wr scalars ((6.0 * t290) + 1.0) (t362 + ((t358 * (s356 - t309)) * t303))
+      wrI contacts ((30 * i289) + 24) s356
+      t357 <- rdI scalars ((6 * (truncate t290)) + 2)
+      t358 <- rdI scalars ((6 * (truncate t290)) + 3)
+      t359 <- rdI vel (3 * (truncate t290))
+      t360 <- rdI vel ((3 * (truncate t290)) + 1)
+      t361 <- rdI vel ((3 * (truncate t290)) + 2)
+      t362 <- rdI scalars ((6 * (truncate t290)) + 1)
+      wrI vel (3 * (truncate t290)) (t359 + ((t357 * (s356 - t309)) * t300))
+      wrI vel ((3 * (truncate t290)) + 1) (t360 + ((t357 * (s356 - t309)) * t301))
+      wrI vel ((3 * (truncate t290)) + 2) (t361 + ((t357 * (s356 - t309)) * t302))
+      wrI scalars ((6 * (truncate t290)) + 1) (t362 + ((t358 * (s356 - t309)) * t303))
       if (t291 + 0.5) > 0 then do
-        t363 <- rd scalars ((6.0 * t291) + 2.0)
-        t364 <- rd scalars ((6.0 * t291) + 3.0)
-        t365 <- rd vel (3.0 * t291)
-        t366 <- rd vel ((3.0 * t291) + 1.0)
-        t367 <- rd vel ((3.0 * t291) + 2.0)
-        t368 <- rd scalars ((6.0 * t291) + 1.0)
-        wr vel (3.0 * t291) (t365 + ((t363 * (negate (s356 - t309))) * t304))
-        wr vel ((3.0 * t291) + 1.0) (t366 + ((t363 * (negate (s356 - t309))) * t305))
-        wr vel ((3.0 * t291) + 2.0) (t367 + ((t363 * (negate (s356 - t309))) * t306))
-        wr scalars ((6.0 * t291) + 1.0) (t368 + ((t364 * (negate (s356 - t309))) * t307))
+        t363 <- rdI scalars ((6 * (truncate t291)) + 2)
+        t364 <- rdI scalars ((6 * (truncate t291)) + 3)
+        t365 <- rdI vel (3 * (truncate t291))
+        t366 <- rdI vel ((3 * (truncate t291)) + 1)
+        t367 <- rdI vel ((3 * (truncate t291)) + 2)
+        t368 <- rdI scalars ((6 * (truncate t291)) + 1)
+        wrI vel (3 * (truncate t291)) (t365 + ((t363 * (negate (s356 - t309))) * t304))
+        wrI vel ((3 * (truncate t291)) + 1) (t366 + ((t363 * (negate (s356 - t309))) * t305))
+        wrI vel ((3 * (truncate t291)) + 2) (t367 + ((t363 * (negate (s356 - t309))) * t306))
+        wrI scalars ((6 * (truncate t291)) + 1) (t368 + ((t364 * (negate (s356 - t309))) * t307))
         pure ()
       else do
         pure ()
       pure ()
-    t369 <- rd mouse 0.0
+    t369 <- rdI mouse 0
     if t369 > 0 then do
-      t370 <- rd mouse 1.0
-      t371 <- rd scalars ((6.0 * t370) + 2.0)
+      t370 <- rdI mouse 1
+      t371 <- rdI scalars ((6 * (truncate t370)) + 2)
       if t371 > 0 then do
-        t372 <- rd scalars ((6.0 * t370) + 3.0)
-        t373 <- rd params 0.0
-        t374 <- rd pos (3.0 * t370)
-        t375 <- rd pos ((3.0 * t370) + 1.0)
-        t376 <- rd pos ((3.0 * t370) + 2.0)
-        t377 <- rd normal (3.0 * t370)
-        t378 <- rd normal ((3.0 * t370) + 1.0)
-        t379 <- rd normal ((3.0 * t370) + 2.0)
-        t380 <- rd axis (3.0 * t370)
-        t381 <- rd axis ((3.0 * t370) + 1.0)
-        t382 <- rd axis ((3.0 * t370) + 2.0)
+        t372 <- rdI scalars ((6 * (truncate t370)) + 3)
+        t373 <- rdI params 0
+        t374 <- rdI pos (3 * (truncate t370))
+        t375 <- rdI pos ((3 * (truncate t370)) + 1)
+        t376 <- rdI pos ((3 * (truncate t370)) + 2)
+        t377 <- rdI normal (3 * (truncate t370))
+        t378 <- rdI normal ((3 * (truncate t370)) + 1)
+        t379 <- rdI normal ((3 * (truncate t370)) + 2)
+        t380 <- rdI axis (3 * (truncate t370))
+        t381 <- rdI axis ((3 * (truncate t370)) + 1)
+        t382 <- rdI axis ((3 * (truncate t370)) + 2)
         let !s383 = ((t378 * t382) - (t379 * t381))
         let !s384 = ((t379 * t380) - (t377 * t382))
         let !s385 = ((t377 * t381) - (t378 * t380))
-        t386 <- rd scalars (6.0 * t370)
-        t387 <- rd scalars ((6.0 * t370) + 5.0)
-        t388 <- rd scalars ((6.0 * t370) + 2.0)
-        t389 <- rd scalars ((6.0 * t370) + 3.0)
-        t390 <- rd pos (3.0 * t370)
-        t391 <- rd pos ((3.0 * t370) + 1.0)
-        t392 <- rd pos ((3.0 * t370) + 2.0)
-        t393 <- rd normal (3.0 * t370)
-        t394 <- rd normal ((3.0 * t370) + 1.0)
-        t395 <- rd normal ((3.0 * t370) + 2.0)
-        t396 <- rd axis (3.0 * t370)
-        t397 <- rd axis ((3.0 * t370) + 1.0)
-        t398 <- rd axis ((3.0 * t370) + 2.0)
+        t386 <- rdI scalars (6 * (truncate t370))
+        t387 <- rdI scalars ((6 * (truncate t370)) + 5)
+        t388 <- rdI scalars ((6 * (truncate t370)) + 2)
+        t389 <- rdI scalars ((6 * (truncate t370)) + 3)
+        t390 <- rdI pos (3 * (truncate t370))
+        t391 <- rdI pos ((3 * (truncate t370)) + 1)
+        t392 <- rdI pos ((3 * (truncate t370)) + 2)
+        t393 <- rdI normal (3 * (truncate t370))
+        t394 <- rdI normal ((3 * (truncate t370)) + 1)
+        t395 <- rdI normal ((3 * (truncate t370)) + 2)
+        t396 <- rdI axis (3 * (truncate t370))
+        t397 <- rdI axis ((3 * (truncate t370)) + 1)
+        t398 <- rdI axis ((3 * (truncate t370)) + 2)
         let !s399 = ((t394 * t398) - (t395 * t397))
         let !s400 = ((t395 * t396) - (t393 * t398))
         let !s401 = ((t393 * t397) - (t394 * t396))
-        t402 <- rd scalars (6.0 * t370)
-        t403 <- rd scalars ((6.0 * t370) + 5.0)
-        t404 <- rd scalars ((6.0 * t370) + 2.0)
-        t405 <- rd scalars ((6.0 * t370) + 3.0)
-        t406 <- rd mouse 2.0
-        t407 <- rd mouse 3.0
+        t402 <- rdI scalars (6 * (truncate t370))
+        t403 <- rdI scalars ((6 * (truncate t370)) + 5)
+        t404 <- rdI scalars ((6 * (truncate t370)) + 2)
+        t405 <- rdI scalars ((6 * (truncate t370)) + 3)
+        t406 <- rdI mouse 2
+        t407 <- rdI mouse 3
         let !t408 = (t406 / 4.0)
         let !t409 = (if (abs t408) > 0 then 1.0 else 0.0)
         let !t410 = (t402 + t407)
@@ -1425,9 +1477,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s479 = ((t409 * (t472 * (t478 * t473))) + (t413 * s463))
         let !s480 = ((t409 * (t472 * (t478 * t475))) + (t413 * s464))
         let !s481 = ((t409 * (t472 * (t478 * t476))) + (t413 * s465))
-        t482 <- rd mouse 4.0
-        t483 <- rd mouse 5.0
-        t484 <- rd mouse 6.0
+        t482 <- rdI mouse 4
+        t483 <- rdI mouse 5
+        t484 <- rdI mouse 6
         let !t485 = (t482 - ((floorF ((t482 + 1.0) / 2.0)) * 2.0))
         let !t486 = (negate s469)
         let !t487 = (t485 + t486)
@@ -1474,9 +1526,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t528 = ((if t527 > 0 then t526 else t525) - (t522 + t510))
         let !s529 = (if t528 > 0 then t520 else (if t527 > 0 then t520 else (if t524 > 0 then t520 else (if t518 > 0 then t485 else (if t515 > 0 then t485 else (if t512 > 0 then t496 else (if t506 > 0 then t496 else (if t503 > 0 then t496 else t485))))))))
         let !s530 = (if t528 > 0 then t508 else (if t527 > 0 then t491 else (if t524 > 0 then t499 else (if t518 > 0 then t508 else (if t515 > 0 then t499 else (if t512 > 0 then t508 else (if t506 > 0 then t491 else (if t503 > 0 then t499 else t491))))))))
-        t531 <- rd mouse 7.0
-        t532 <- rd mouse 8.0
-        t533 <- rd mouse 9.0
+        t531 <- rdI mouse 7
+        t532 <- rdI mouse 8
+        t533 <- rdI mouse 9
         let !t534 = (recip t371)
         let !t535 = (6.283185307179586 * t531)
         let !s536 = (recip (t373 * ((((2.0 * t534) * t532) * t535) + (t373 * ((t534 * t535) * t535)))))
@@ -1487,11 +1539,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s541 = (s469 + (negate s529))
         let !s542 = (s470 + (negate t483))
         let !s543 = (s471 + (negate s530))
-        t544 <- rd mouse 10.0
-        t545 <- rd vel (3.0 * t370)
-        t546 <- rd vel ((3.0 * t370) + 1.0)
-        t547 <- rd vel ((3.0 * t370) + 2.0)
-        t548 <- rd scalars ((6.0 * t370) + 1.0)
+        t544 <- rdI mouse 10
+        t545 <- rdI vel (3 * (truncate t370))
+        t546 <- rdI vel ((3 * (truncate t370)) + 1)
+        t547 <- rdI vel ((3 * (truncate t370)) + 2)
+        t548 <- rdI scalars ((6 * (truncate t370)) + 1)
         let !t549 = (t533 * t373)
         let !t550 = (negate t549)
         let !t551 = (((((s539 * t382) - (s540 * t381)) * t377) + (((s540 * t380) - (s538 * t382)) * t378)) + (((s538 * t381) - (s539 * t380)) * t379))
@@ -1499,38 +1551,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t553 = (if (t552 - t549) > 0 then t549 else t552)
         let !t554 = (if (t550 - t553) > 0 then t550 else t553)
         let !s555 = (if (1.0 - (abs (t554 - t554))) > 0 then t554 else 0.0)
-        wr mouse 10.0 s555
-        t556 <- rd scalars ((6.0 * t370) + 2.0)
-        t557 <- rd scalars ((6.0 * t370) + 3.0)
-        t558 <- rd vel (3.0 * t370)
-        t559 <- rd vel ((3.0 * t370) + 1.0)
-        t560 <- rd vel ((3.0 * t370) + 2.0)
-        t561 <- rd scalars ((6.0 * t370) + 1.0)
-        wr vel (3.0 * t370) (t558 + ((t556 * (s555 - t544)) * t380))
-        wr vel ((3.0 * t370) + 1.0) (t559 + ((t556 * (s555 - t544)) * t381))
-        wr vel ((3.0 * t370) + 2.0) (t560 + ((t556 * (s555 - t544)) * t382))
-        wr scalars ((6.0 * t370) + 1.0) (t561 + ((t557 * (s555 - t544)) * t551))
-        t562 <- rd mouse 11.0
-        t563 <- rd vel (3.0 * t370)
-        t564 <- rd vel ((3.0 * t370) + 1.0)
-        t565 <- rd vel ((3.0 * t370) + 2.0)
-        t566 <- rd scalars ((6.0 * t370) + 1.0)
+        wrI mouse 10 s555
+        t556 <- rdI scalars ((6 * (truncate t370)) + 2)
+        t557 <- rdI scalars ((6 * (truncate t370)) + 3)
+        t558 <- rdI vel (3 * (truncate t370))
+        t559 <- rdI vel ((3 * (truncate t370)) + 1)
+        t560 <- rdI vel ((3 * (truncate t370)) + 2)
+        t561 <- rdI scalars ((6 * (truncate t370)) + 1)
+        wrI vel (3 * (truncate t370)) (t558 + ((t556 * (s555 - t544)) * t380))
+        wrI vel ((3 * (truncate t370)) + 1) (t559 + ((t556 * (s555 - t544)) * t381))
+        wrI vel ((3 * (truncate t370)) + 2) (t560 + ((t556 * (s555 - t544)) * t382))
+        wrI scalars ((6 * (truncate t370)) + 1) (t561 + ((t557 * (s555 - t544)) * t551))
+        t562 <- rdI mouse 11
+        t563 <- rdI vel (3 * (truncate t370))
+        t564 <- rdI vel ((3 * (truncate t370)) + 1)
+        t565 <- rdI vel ((3 * (truncate t370)) + 2)
+        t566 <- rdI scalars ((6 * (truncate t370)) + 1)
         let !t567 = (((((s539 * s385) - (s540 * s384)) * t377) + (((s540 * s383) - (s538 * s385)) * t378)) + (((s538 * s384) - (s539 * s383)) * t379))
         let !t568 = (t562 + ((negate ((((((s383 * t563) + (s384 * t564)) + (s385 * t565)) + (t567 * t566)) + (s537 * (((s541 * s383) + (s542 * s384)) + (s543 * s385)))) + (s536 * t562))) / (((t371 * (((s383 * s383) + (s384 * s384)) + (s385 * s385))) + ((t372 * t567) * t567)) + s536)))
         let !t569 = (if (t568 - t549) > 0 then t549 else t568)
         let !t570 = (if (t550 - t569) > 0 then t550 else t569)
         let !s571 = (if (1.0 - (abs (t570 - t570))) > 0 then t570 else 0.0)
-        wr mouse 11.0 s571
-        t572 <- rd scalars ((6.0 * t370) + 2.0)
-        t573 <- rd scalars ((6.0 * t370) + 3.0)
-        t574 <- rd vel (3.0 * t370)
-        t575 <- rd vel ((3.0 * t370) + 1.0)
-        t576 <- rd vel ((3.0 * t370) + 2.0)
-        t577 <- rd scalars ((6.0 * t370) + 1.0)
-        wr vel (3.0 * t370) (t574 + ((t572 * (s571 - t562)) * s383))
-        wr vel ((3.0 * t370) + 1.0) (t575 + ((t572 * (s571 - t562)) * s384))
-        wr vel ((3.0 * t370) + 2.0) (t576 + ((t572 * (s571 - t562)) * s385))
-        wr scalars ((6.0 * t370) + 1.0) (t577 + ((t573 * (s571 - t562)) * t567))
+        wrI mouse 11 s571
+        t572 <- rdI scalars ((6 * (truncate t370)) + 2)
+        t573 <- rdI scalars ((6 * (truncate t370)) + 3)
+        t574 <- rdI vel (3 * (truncate t370))
+        t575 <- rdI vel ((3 * (truncate t370)) + 1)
+        t576 <- rdI vel ((3 * (truncate t370)) + 2)
+        t577 <- rdI scalars ((6 * (truncate t370)) + 1)
+        wrI vel (3 * (truncate t370)) (t574 + ((t572 * (s571 - t562)) * s383))
+        wrI vel ((3 * (truncate t370)) + 1) (t575 + ((t572 * (s571 - t562)) * s384))
+        wrI vel ((3 * (truncate t370)) + 2) (t576 + ((t572 * (s571 - t562)) * s385))
+        wrI scalars ((6 * (truncate t370)) + 1) (t577 + ((t573 * (s571 - t562)) * t567))
         pure ()
       else do
         pure ()
@@ -1538,48 +1590,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t578 <- rd meta 0.0
-  loop 0.0 t578 $ \i579 -> do
-    wr bodyPrev ((2.0 * i579) + 1.0) 0.0
+  t578 <- rdI meta 0
+  loopI 0.0 t578 $ \i579 -> do
+    let !d579 = fromIntegral i579 :: Double
+    wrI bodyPrev ((2 * i579) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i580 -> do
-    t581 <- rd contacts ((30.0 * i580) + 2.0)
-    wr prev (4.0 * i580) t581
-    t582 <- rd contacts ((30.0 * i580) + 3.0)
-    wr prev ((4.0 * i580) + 1.0) t582
-    t583 <- rd contacts ((30.0 * i580) + 24.0)
-    wr prev ((4.0 * i580) + 2.0) t583
-    t584 <- rd contacts ((30.0 * i580) + 25.0)
-    wr prev ((4.0 * i580) + 3.0) t584
-    t585 <- rd bodyPrev ((2.0 * t581) + 1.0)
+  loopI 0.0 t9 $ \i580 -> do
+    let !d580 = fromIntegral i580 :: Double
+    t581 <- rdI contacts ((30 * i580) + 2)
+    wrI prev (4 * i580) t581
+    t582 <- rdI contacts ((30 * i580) + 3)
+    wrI prev ((4 * i580) + 1) t582
+    t583 <- rdI contacts ((30 * i580) + 24)
+    wrI prev ((4 * i580) + 2) t583
+    t584 <- rdI contacts ((30 * i580) + 25)
+    wrI prev ((4 * i580) + 3) t584
+    t585 <- rdI bodyPrev ((2 * (truncate t581)) + 1)
     if (0.5 - t585) > 0 then do
-      wr bodyPrev (2.0 * t581) i580
+      wrI bodyPrev (2 * (truncate t581)) d580
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t581) + 1.0) (t585 + 1.0)
+    wrI bodyPrev ((2 * (truncate t581)) + 1) (t585 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1658,67 +1713,69 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t92 = (t12 + (t1 * t13))
     let !t93 = (1.0 - (abs ((((((((((((((s54 - s54) + t91) + (s56 - s56)) + (s78 - s78)) + (s79 - s79)) + (s80 - s80)) + (s87 - s87)) + (s88 - s88)) + (s89 - s89)) + (s57 - s57)) + (s58 - s58)) + (s59 - s59)) + (t92 - t92)) + t91)))
     if (if (t90 - t93) > 0 then t93 else t90) > 0 then do
-      wr pos (3.0 * i2) (s54 - ((floorF ((s54 + 1.0) / 2.0)) * 2.0))
-      wr pos ((3.0 * i2) + 1.0) s55
-      wr pos ((3.0 * i2) + 2.0) (s56 - ((floorF ((s56 + 1.0) / 2.0)) * 2.0))
-      wr vel (3.0 * i2) s78
-      wr vel ((3.0 * i2) + 1.0) s79
-      wr vel ((3.0 * i2) + 2.0) s80
-      wr axis (3.0 * i2) s87
-      wr axis ((3.0 * i2) + 1.0) s88
-      wr axis ((3.0 * i2) + 2.0) s89
-      wr normal (3.0 * i2) s57
-      wr normal ((3.0 * i2) + 1.0) s58
-      wr normal ((3.0 * i2) + 2.0) s59
-      wr scalars (6.0 * i2) t92
-      wr scalars ((6.0 * i2) + 1.0) t13
-      t94 <- rd mouse 0.0
-      t95 <- rd mouse 1.0
-      if (t94 * (0.5 - (abs (t95 - i2)))) > 0 then do
-        t96 <- rd mouse 3.0
-        wr mouse 3.0 t96
+      wrI pos (3 * i2) (s54 - ((floorF ((s54 + 1.0) / 2.0)) * 2.0))
+      wrI pos ((3 * i2) + 1) s55
+      wrI pos ((3 * i2) + 2) (s56 - ((floorF ((s56 + 1.0) / 2.0)) * 2.0))
+      wrI vel (3 * i2) s78
+      wrI vel ((3 * i2) + 1) s79
+      wrI vel ((3 * i2) + 2) s80
+      wrI axis (3 * i2) s87
+      wrI axis ((3 * i2) + 1) s88
+      wrI axis ((3 * i2) + 2) s89
+      wrI normal (3 * i2) s57
+      wrI normal ((3 * i2) + 1) s58
+      wrI normal ((3 * i2) + 2) s59
+      wrI scalars (6 * i2) t92
+      wrI scalars ((6 * i2) + 1) t13
+      t94 <- rdI mouse 0
+      t95 <- rdI mouse 1
+      if (t94 * (0.5 - (abs (t95 - d2)))) > 0 then do
+        t96 <- rdI mouse 3
+        wrI mouse 3 t96
         pure ()
       else do
         pure ()
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t97 <- rd meta 1.0
-      wr meta 1.0 (t97 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t97 <- rdI meta 1
+      wrI meta 1 (t97 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1763,9 +1820,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s60 = (t42 * t8)
         let !s61 = (t28 + (t42 * t9))
         let !s62 = (t42 * t10)
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
         let !t63 = (s47 + (s27 * s58))
         let !t64 = (if (abs s61) > 0 then 1.0 else 0.0)
         let !t65 = (if ((abs t63) - 1.0e-10) > 0 then t64 else 0.0)
@@ -1798,9 +1855,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s92 = (t42 * s60)
         let !s93 = (t28 + (t42 * s61))
         let !s94 = (t42 * s62)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
         let !t95 = (s80 + (s27 * s90))
         let !t96 = (if (abs s93) > 0 then 1.0 else 0.0)
         let !t97 = (if ((abs t95) - 1.0e-10) > 0 then t96 else 0.0)
@@ -1833,9 +1890,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s124 = (t42 * s92)
         let !s125 = (t28 + (t42 * s93))
         let !s126 = (t42 * s94)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
         let !t127 = (s112 + (s27 * s122))
         let !t128 = (if (abs s125) > 0 then 1.0 else 0.0)
         let !t129 = (if ((abs t127) - 1.0e-10) > 0 then t128 else 0.0)
@@ -1868,9 +1925,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s156 = (t42 * s124)
         let !s157 = (t28 + (t42 * s125))
         let !s158 = (t42 * s126)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
         pure ()
       else do
         let !t159 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1898,18 +1955,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = (if t180 > 0 then t174 else t2)
         let !s182 = (if t180 > 0 then t175 else t3)
         let !s183 = (if t180 > 0 then t179 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s181
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s182
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s183
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s181 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s182 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s181
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s182
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s183
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s181 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s182 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s183 + (negate t4))))
         pure ()
       pure ()
     pure ()

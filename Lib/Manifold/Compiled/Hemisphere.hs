@@ -28,33 +28,34 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (t12 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-4.0) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wr vel (3.0 * i3) t15
-        wr vel ((3.0 * i3) + 1.0) t16
-        wr vel ((3.0 * i3) + 2.0) t17
+        wrI vel (3 * i3) t15
+        wrI vel ((3 * i3) + 1) t16
+        wrI vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rd meta 1.0
-        wr meta 1.0 (t18 + 1.0)
+        t18 <- rdI meta 1
+        wrI meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -64,11 +65,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -78,81 +80,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -166,20 +177,21 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rd normal (3.0 * i31)
-    t68 <- rd normal ((3.0 * i31) + 1.0)
-    t69 <- rd normal ((3.0 * i31) + 2.0)
+    t67 <- rdI normal (3 * i31)
+    t68 <- rdI normal ((3 * i31) + 1)
+    t69 <- rdI normal ((3 * i31) + 2)
     v70 <- newR 0.0
     v71 <- newR (-1.0)
-    loop 0.0 24.0 $ \i72 -> do
-      t73 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i72 * 4.0)) + 3.0))
-      t74 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i72 * 4.0)) + 3.0)) + 1.0)
-      t75 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i72 * 4.0)) + 3.0)) + 2.0)
+    loopI 0.0 24.0 $ \i72 -> do
+      let !d72 = fromIntegral i72 :: Double
+      t73 <- rdI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
+      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
+      t75 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
       let !s76 = (negate t74)
       t77 <- getR v70
       if ((negate s76) - t77) > 0 then do
         setR v70 (negate s76)
-        setR v71 i72
+        setR v71 d72
         pure ()
       else do
         pure ()
@@ -187,31 +199,32 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t78 <- getR v70
     if t78 > 0 then do
       t79 <- getR v71
-      t80 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t79 * 4.0)) + 3.0))
-      t81 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t79 * 4.0)) + 3.0)) + 1.0)
-      t82 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t79 * 4.0)) + 3.0)) + 2.0)
+      t80 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3))
+      t81 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 1)
+      t82 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 2)
       let !s83 = (negate t67)
       v84 <- newR 1.0e300
       v85 <- newR (-1.0e300)
       v86 <- newR (-1.0)
       v87 <- newR (-1.0)
-      loop 0.0 24.0 $ \i88 -> do
-        t89 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i88 * 4.0)) + 3.0))
-        t90 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i88 * 4.0)) + 3.0)) + 1.0)
-        t91 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i88 * 4.0)) + 3.0)) + 2.0)
+      loopI 0.0 24.0 $ \i88 -> do
+        let !d88 = fromIntegral i88 :: Double
+        t89 <- rdI verts (3 * ((((97 * i31) + 1) + (i88 * 4)) + 3))
+        t90 <- rdI verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 1)
+        t91 <- rdI verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 2)
         if t90 > 0 then do
           let !s92 = ((t89 * t69) + (t91 * s83))
           t93 <- getR v84
           if (t93 - s92) > 0 then do
             setR v84 s92
-            setR v86 i88
+            setR v86 d88
             pure ()
           else do
             pure ()
           t94 <- getR v85
           if (s92 - t94) > 0 then do
             setR v85 s92
-            setR v87 i88
+            setR v87 d88
             pure ()
           else do
             pure ()
@@ -221,176 +234,176 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t95 <- getR v86
       t96 <- getR v87
-      t97 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t95 * 4.0)) + 3.0))
-      t98 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t95 * 4.0)) + 3.0)) + 1.0)
-      t99 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t95 * 4.0)) + 3.0)) + 2.0)
+      t97 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3))
+      t98 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 1)
+      t99 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 2)
       let !s100 = (negate t98)
-      t101 <- rd meta 2.0
-      t102 <- rd meta 3.0
+      t101 <- rdI meta 2
+      t102 <- rdI meta 3
       if (((8.0 * (if (1.0 - t102) > 0 then 1.0 else t102)) - t101) - 0.5) > 0 then do
-        wr meta 2.0 (t101 + 1.0)
-        t103 <- rd pos (3.0 * i31)
-        t104 <- rd pos ((3.0 * i31) + 1.0)
-        t105 <- rd pos ((3.0 * i31) + 2.0)
-        t106 <- rd normal (3.0 * i31)
-        t107 <- rd normal ((3.0 * i31) + 1.0)
-        t108 <- rd normal ((3.0 * i31) + 2.0)
-        t109 <- rd axis (3.0 * i31)
-        t110 <- rd axis ((3.0 * i31) + 1.0)
-        t111 <- rd axis ((3.0 * i31) + 2.0)
+        wrI meta 2 (t101 + 1.0)
+        t103 <- rdI pos (3 * i31)
+        t104 <- rdI pos ((3 * i31) + 1)
+        t105 <- rdI pos ((3 * i31) + 2)
+        t106 <- rdI normal (3 * i31)
+        t107 <- rdI normal ((3 * i31) + 1)
+        t108 <- rdI normal ((3 * i31) + 2)
+        t109 <- rdI axis (3 * i31)
+        t110 <- rdI axis ((3 * i31) + 1)
+        t111 <- rdI axis ((3 * i31) + 2)
         let !s112 = ((t107 * t111) - (t108 * t110))
         let !s113 = ((t108 * t109) - (t106 * t111))
         let !s114 = ((t106 * t110) - (t107 * t109))
-        t115 <- rd scalars (6.0 * i31)
-        t116 <- rd scalars ((6.0 * i31) + 5.0)
-        t117 <- rd scalars ((6.0 * i31) + 2.0)
-        t118 <- rd scalars ((6.0 * i31) + 3.0)
-        wr contacts (30.0 * t101) i31
-        wr contacts ((30.0 * t101) + 1.0) (-1.0)
-        wr contacts ((30.0 * t101) + 2.0) i31
-        wr contacts ((30.0 * t101) + 3.0) 8.0
-        wr contacts ((30.0 * t101) + 4.0) (negate ((negate t107) * t106))
-        wr contacts (((30.0 * t101) + 4.0) + 1.0) ((-1.0) + (negate ((negate t107) * t107)))
-        wr contacts (((30.0 * t101) + 4.0) + 2.0) (negate ((negate t107) * t108))
-        wr contacts ((30.0 * t101) + 7.0) (((t99 + (negate t105)) * t106) + ((negate (t97 + (negate t103))) * t108))
-        wr contacts ((30.0 * t101) + 12.0) (t108 + (negate (((t106 * t108) + (t108 * (negate t106))) * t106)))
-        wr contacts (((30.0 * t101) + 12.0) + 1.0) (negate (((t106 * t108) + (t108 * (negate t106))) * t107))
+        t115 <- rdI scalars (6 * i31)
+        t116 <- rdI scalars ((6 * i31) + 5)
+        t117 <- rdI scalars ((6 * i31) + 2)
+        t118 <- rdI scalars ((6 * i31) + 3)
+        wrI contacts (30 * (truncate t101)) d31
+        wrI contacts ((30 * (truncate t101)) + 1) (-1.0)
+        wrI contacts ((30 * (truncate t101)) + 2) d31
+        wrI contacts ((30 * (truncate t101)) + 3) 8.0
+        wrI contacts ((30 * (truncate t101)) + 4) (negate ((negate t107) * t106))
+        wrI contacts (((30 * (truncate t101)) + 4) + 1) ((-1.0) + (negate ((negate t107) * t107)))
+        wrI contacts (((30 * (truncate t101)) + 4) + 2) (negate ((negate t107) * t108))
+        wrI contacts ((30 * (truncate t101)) + 7) (((t99 + (negate t105)) * t106) + ((negate (t97 + (negate t103))) * t108))
+        wrI contacts ((30 * (truncate t101)) + 12) (t108 + (negate (((t106 * t108) + (t108 * (negate t106))) * t106)))
+        wrI contacts (((30 * (truncate t101)) + 12) + 1) (negate (((t106 * t108) + (t108 * (negate t106))) * t107))
         let !t119 = (negate t106)
-        wr contacts (((30.0 * t101) + 12.0) + 2.0) (t119 + (negate (((t106 * t108) + (t108 * t119)) * t108)))
+        wrI contacts (((30 * (truncate t101)) + 12) + 2) (t119 + (negate (((t106 * t108) + (t108 * t119)) * t108)))
         let !t120 = (t98 + (negate t104))
-        wr contacts ((30.0 * t101) + 15.0) ((((t120 * t119) * t106) + ((((t99 + (negate t105)) * t108) - ((t97 + (negate t103)) * t119)) * t107)) + ((negate (t120 * t108)) * t108))
-        wr contacts ((30.0 * t101) + 20.0) (negate s100)
-        wr contacts ((30.0 * t101) + 26.0) 1.0
-        wr contacts ((30.0 * t101) + 27.0) t97
-        wr contacts (((30.0 * t101) + 27.0) + 1.0) t98
-        wr contacts (((30.0 * t101) + 27.0) + 2.0) t99
+        wrI contacts ((30 * (truncate t101)) + 15) ((((t120 * t119) * t106) + ((((t99 + (negate t105)) * t108) - ((t97 + (negate t103)) * t119)) * t107)) + ((negate (t120 * t108)) * t108))
+        wrI contacts ((30 * (truncate t101)) + 20) (negate s100)
+        wrI contacts ((30 * (truncate t101)) + 26) 1.0
+        wrI contacts ((30 * (truncate t101)) + 27) t97
+        wrI contacts (((30 * (truncate t101)) + 27) + 1) t98
+        wrI contacts (((30 * (truncate t101)) + 27) + 2) t99
         if (-0.5) > 0 then do
-          t121 <- rd pos (-3.0)
-          t122 <- rd pos (-2.0)
-          t123 <- rd pos (-1.0)
-          t124 <- rd normal (-3.0)
-          t125 <- rd normal (-2.0)
-          t126 <- rd normal (-1.0)
-          t127 <- rd axis (-3.0)
-          t128 <- rd axis (-2.0)
-          t129 <- rd axis (-1.0)
+          t121 <- rdI pos (-3)
+          t122 <- rdI pos (-2)
+          t123 <- rdI pos (-1)
+          t124 <- rdI normal (-3)
+          t125 <- rdI normal (-2)
+          t126 <- rdI normal (-1)
+          t127 <- rdI axis (-3)
+          t128 <- rdI axis (-2)
+          t129 <- rdI axis (-1)
           let !s130 = ((t125 * t129) - (t126 * t128))
           let !s131 = ((t126 * t127) - (t124 * t129))
           let !s132 = ((t124 * t128) - (t125 * t127))
-          t133 <- rd scalars (-6.0)
-          t134 <- rd scalars (-1.0)
-          t135 <- rd scalars (-4.0)
-          t136 <- rd scalars (-3.0)
-          wr contacts ((30.0 * t101) + 8.0) (negate ((negate t125) * t124))
-          wr contacts (((30.0 * t101) + 8.0) + 1.0) ((-1.0) + (negate ((negate t125) * t125)))
-          wr contacts (((30.0 * t101) + 8.0) + 2.0) (negate ((negate t125) * t126))
-          wr contacts ((30.0 * t101) + 11.0) (((t99 + (negate t123)) * t124) + ((negate (t97 + (negate t121))) * t126))
-          wr contacts ((30.0 * t101) + 16.0) (t108 + (negate (((t124 * t108) + (t126 * t119)) * t124)))
-          wr contacts (((30.0 * t101) + 16.0) + 1.0) (negate (((t124 * t108) + (t126 * t119)) * t125))
-          wr contacts (((30.0 * t101) + 16.0) + 2.0) (t119 + (negate (((t124 * t108) + (t126 * t119)) * t126)))
+          t133 <- rdI scalars (-6)
+          t134 <- rdI scalars (-1)
+          t135 <- rdI scalars (-4)
+          t136 <- rdI scalars (-3)
+          wrI contacts ((30 * (truncate t101)) + 8) (negate ((negate t125) * t124))
+          wrI contacts (((30 * (truncate t101)) + 8) + 1) ((-1.0) + (negate ((negate t125) * t125)))
+          wrI contacts (((30 * (truncate t101)) + 8) + 2) (negate ((negate t125) * t126))
+          wrI contacts ((30 * (truncate t101)) + 11) (((t99 + (negate t123)) * t124) + ((negate (t97 + (negate t121))) * t126))
+          wrI contacts ((30 * (truncate t101)) + 16) (t108 + (negate (((t124 * t108) + (t126 * t119)) * t124)))
+          wrI contacts (((30 * (truncate t101)) + 16) + 1) (negate (((t124 * t108) + (t126 * t119)) * t125))
+          wrI contacts (((30 * (truncate t101)) + 16) + 2) (t119 + (negate (((t124 * t108) + (t126 * t119)) * t126)))
           let !t137 = (t98 + (negate t122))
-          wr contacts ((30.0 * t101) + 19.0) ((((t137 * t119) * t124) + ((((t99 + (negate t123)) * t108) - ((t97 + (negate t121)) * t119)) * t125)) + ((negate (t137 * t108)) * t126))
+          wrI contacts ((30 * (truncate t101)) + 19) ((((t137 * t119) * t124) + ((((t99 + (negate t123)) * t108) - ((t97 + (negate t121)) * t119)) * t125)) + ((negate (t137 * t108)) * t126))
           pure ()
         else do
-          wr contacts ((30.0 * t101) + 8.0) 0.0
-          wr contacts (((30.0 * t101) + 8.0) + 1.0) 0.0
-          wr contacts (((30.0 * t101) + 8.0) + 2.0) 0.0
-          wr contacts ((30.0 * t101) + 11.0) 0.0
-          wr contacts ((30.0 * t101) + 16.0) 0.0
-          wr contacts (((30.0 * t101) + 16.0) + 1.0) 0.0
-          wr contacts (((30.0 * t101) + 16.0) + 2.0) 0.0
-          wr contacts ((30.0 * t101) + 19.0) 0.0
+          wrI contacts ((30 * (truncate t101)) + 8) 0.0
+          wrI contacts (((30 * (truncate t101)) + 8) + 1) 0.0
+          wrI contacts (((30 * (truncate t101)) + 8) + 2) 0.0
+          wrI contacts ((30 * (truncate t101)) + 11) 0.0
+          wrI contacts ((30 * (truncate t101)) + 16) 0.0
+          wrI contacts (((30 * (truncate t101)) + 16) + 1) 0.0
+          wrI contacts (((30 * (truncate t101)) + 16) + 2) 0.0
+          wrI contacts ((30 * (truncate t101)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t138 <- rd meta 6.0
-        wr meta 6.0 (t138 + 1.0)
+        t138 <- rdI meta 6
+        wrI meta 6 (t138 + 1.0)
         pure ()
       if (abs (t96 - t95)) > 0 then do
-        t139 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t96 * 4.0)) + 3.0))
-        t140 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t96 * 4.0)) + 3.0)) + 1.0)
-        t141 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t96 * 4.0)) + 3.0)) + 2.0)
+        t139 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3))
+        t140 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 1)
+        t141 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 2)
         let !s142 = (negate t140)
-        t143 <- rd meta 2.0
-        t144 <- rd meta 3.0
+        t143 <- rdI meta 2
+        t144 <- rdI meta 3
         if (((8.0 * (if (1.0 - t144) > 0 then 1.0 else t144)) - t143) - 0.5) > 0 then do
-          wr meta 2.0 (t143 + 1.0)
-          t145 <- rd pos (3.0 * i31)
-          t146 <- rd pos ((3.0 * i31) + 1.0)
-          t147 <- rd pos ((3.0 * i31) + 2.0)
-          t148 <- rd normal (3.0 * i31)
-          t149 <- rd normal ((3.0 * i31) + 1.0)
-          t150 <- rd normal ((3.0 * i31) + 2.0)
-          t151 <- rd axis (3.0 * i31)
-          t152 <- rd axis ((3.0 * i31) + 1.0)
-          t153 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t143 + 1.0)
+          t145 <- rdI pos (3 * i31)
+          t146 <- rdI pos ((3 * i31) + 1)
+          t147 <- rdI pos ((3 * i31) + 2)
+          t148 <- rdI normal (3 * i31)
+          t149 <- rdI normal ((3 * i31) + 1)
+          t150 <- rdI normal ((3 * i31) + 2)
+          t151 <- rdI axis (3 * i31)
+          t152 <- rdI axis ((3 * i31) + 1)
+          t153 <- rdI axis ((3 * i31) + 2)
           let !s154 = ((t149 * t153) - (t150 * t152))
           let !s155 = ((t150 * t151) - (t148 * t153))
           let !s156 = ((t148 * t152) - (t149 * t151))
-          t157 <- rd scalars (6.0 * i31)
-          t158 <- rd scalars ((6.0 * i31) + 5.0)
-          t159 <- rd scalars ((6.0 * i31) + 2.0)
-          t160 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t143) i31
-          wr contacts ((30.0 * t143) + 1.0) (-1.0)
-          wr contacts ((30.0 * t143) + 2.0) i31
-          wr contacts ((30.0 * t143) + 3.0) 9.0
-          wr contacts ((30.0 * t143) + 4.0) (negate ((negate t149) * t148))
-          wr contacts (((30.0 * t143) + 4.0) + 1.0) ((-1.0) + (negate ((negate t149) * t149)))
-          wr contacts (((30.0 * t143) + 4.0) + 2.0) (negate ((negate t149) * t150))
-          wr contacts ((30.0 * t143) + 7.0) (((t141 + (negate t147)) * t148) + ((negate (t139 + (negate t145))) * t150))
-          wr contacts ((30.0 * t143) + 12.0) (t150 + (negate (((t148 * t150) + (t150 * (negate t148))) * t148)))
-          wr contacts (((30.0 * t143) + 12.0) + 1.0) (negate (((t148 * t150) + (t150 * (negate t148))) * t149))
+          t157 <- rdI scalars (6 * i31)
+          t158 <- rdI scalars ((6 * i31) + 5)
+          t159 <- rdI scalars ((6 * i31) + 2)
+          t160 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t143)) d31
+          wrI contacts ((30 * (truncate t143)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t143)) + 2) d31
+          wrI contacts ((30 * (truncate t143)) + 3) 9.0
+          wrI contacts ((30 * (truncate t143)) + 4) (negate ((negate t149) * t148))
+          wrI contacts (((30 * (truncate t143)) + 4) + 1) ((-1.0) + (negate ((negate t149) * t149)))
+          wrI contacts (((30 * (truncate t143)) + 4) + 2) (negate ((negate t149) * t150))
+          wrI contacts ((30 * (truncate t143)) + 7) (((t141 + (negate t147)) * t148) + ((negate (t139 + (negate t145))) * t150))
+          wrI contacts ((30 * (truncate t143)) + 12) (t150 + (negate (((t148 * t150) + (t150 * (negate t148))) * t148)))
+          wrI contacts (((30 * (truncate t143)) + 12) + 1) (negate (((t148 * t150) + (t150 * (negate t148))) * t149))
           let !t161 = (negate t148)
-          wr contacts (((30.0 * t143) + 12.0) + 2.0) (t161 + (negate (((t148 * t150) + (t150 * t161)) * t150)))
+          wrI contacts (((30 * (truncate t143)) + 12) + 2) (t161 + (negate (((t148 * t150) + (t150 * t161)) * t150)))
           let !t162 = (t140 + (negate t146))
-          wr contacts ((30.0 * t143) + 15.0) ((((t162 * t161) * t148) + ((((t141 + (negate t147)) * t150) - ((t139 + (negate t145)) * t161)) * t149)) + ((negate (t162 * t150)) * t150))
-          wr contacts ((30.0 * t143) + 20.0) (negate s142)
-          wr contacts ((30.0 * t143) + 26.0) 1.0
-          wr contacts ((30.0 * t143) + 27.0) t139
-          wr contacts (((30.0 * t143) + 27.0) + 1.0) t140
-          wr contacts (((30.0 * t143) + 27.0) + 2.0) t141
+          wrI contacts ((30 * (truncate t143)) + 15) ((((t162 * t161) * t148) + ((((t141 + (negate t147)) * t150) - ((t139 + (negate t145)) * t161)) * t149)) + ((negate (t162 * t150)) * t150))
+          wrI contacts ((30 * (truncate t143)) + 20) (negate s142)
+          wrI contacts ((30 * (truncate t143)) + 26) 1.0
+          wrI contacts ((30 * (truncate t143)) + 27) t139
+          wrI contacts (((30 * (truncate t143)) + 27) + 1) t140
+          wrI contacts (((30 * (truncate t143)) + 27) + 2) t141
           if (-0.5) > 0 then do
-            t163 <- rd pos (-3.0)
-            t164 <- rd pos (-2.0)
-            t165 <- rd pos (-1.0)
-            t166 <- rd normal (-3.0)
-            t167 <- rd normal (-2.0)
-            t168 <- rd normal (-1.0)
-            t169 <- rd axis (-3.0)
-            t170 <- rd axis (-2.0)
-            t171 <- rd axis (-1.0)
+            t163 <- rdI pos (-3)
+            t164 <- rdI pos (-2)
+            t165 <- rdI pos (-1)
+            t166 <- rdI normal (-3)
+            t167 <- rdI normal (-2)
+            t168 <- rdI normal (-1)
+            t169 <- rdI axis (-3)
+            t170 <- rdI axis (-2)
+            t171 <- rdI axis (-1)
             let !s172 = ((t167 * t171) - (t168 * t170))
             let !s173 = ((t168 * t169) - (t166 * t171))
             let !s174 = ((t166 * t170) - (t167 * t169))
-            t175 <- rd scalars (-6.0)
-            t176 <- rd scalars (-1.0)
-            t177 <- rd scalars (-4.0)
-            t178 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t143) + 8.0) (negate ((negate t167) * t166))
-            wr contacts (((30.0 * t143) + 8.0) + 1.0) ((-1.0) + (negate ((negate t167) * t167)))
-            wr contacts (((30.0 * t143) + 8.0) + 2.0) (negate ((negate t167) * t168))
-            wr contacts ((30.0 * t143) + 11.0) (((t141 + (negate t165)) * t166) + ((negate (t139 + (negate t163))) * t168))
-            wr contacts ((30.0 * t143) + 16.0) (t150 + (negate (((t166 * t150) + (t168 * t161)) * t166)))
-            wr contacts (((30.0 * t143) + 16.0) + 1.0) (negate (((t166 * t150) + (t168 * t161)) * t167))
-            wr contacts (((30.0 * t143) + 16.0) + 2.0) (t161 + (negate (((t166 * t150) + (t168 * t161)) * t168)))
+            t175 <- rdI scalars (-6)
+            t176 <- rdI scalars (-1)
+            t177 <- rdI scalars (-4)
+            t178 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t143)) + 8) (negate ((negate t167) * t166))
+            wrI contacts (((30 * (truncate t143)) + 8) + 1) ((-1.0) + (negate ((negate t167) * t167)))
+            wrI contacts (((30 * (truncate t143)) + 8) + 2) (negate ((negate t167) * t168))
+            wrI contacts ((30 * (truncate t143)) + 11) (((t141 + (negate t165)) * t166) + ((negate (t139 + (negate t163))) * t168))
+            wrI contacts ((30 * (truncate t143)) + 16) (t150 + (negate (((t166 * t150) + (t168 * t161)) * t166)))
+            wrI contacts (((30 * (truncate t143)) + 16) + 1) (negate (((t166 * t150) + (t168 * t161)) * t167))
+            wrI contacts (((30 * (truncate t143)) + 16) + 2) (t161 + (negate (((t166 * t150) + (t168 * t161)) * t168)))
             let !t179 = (t140 + (negate t164))
-            wr contacts ((30.0 * t143) + 19.0) ((((t179 * t161) * t166) + ((((t141 + (negate t165)) * t150) - ((t139 + (negate t163)) * t161)) * t167)) + ((negate (t179 * t150)) * t168))
+            wrI contacts ((30 * (truncate t143)) + 19) ((((t179 * t161) * t166) + ((((t141 + (negate t165)) * t150) - ((t139 + (negate t163)) * t161)) * t167)) + ((negate (t179 * t150)) * t168))
             pure ()
           else do
-            wr contacts ((30.0 * t143) + 8.0) 0.0
-            wr contacts (((30.0 * t143) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t143) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t143) + 11.0) 0.0
-            wr contacts ((30.0 * t143) + 16.0) 0.0
-            wr contacts (((30.0 * t143) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t143) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t143) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t143)) + 8) 0.0
+            wrI contacts (((30 * (truncate t143)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t143)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t143)) + 11) 0.0
+            wrI contacts ((30 * (truncate t143)) + 16) 0.0
+            wrI contacts (((30 * (truncate t143)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t143)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t143)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t180 <- rd meta 6.0
-          wr meta 6.0 (t180 + 1.0)
+          t180 <- rdI meta 6
+          wrI meta 6 (t180 + 1.0)
           pure ()
         pure ()
       else do
@@ -398,15 +411,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t181 <- rd verts (3.0 * (97.0 * i31))
-    t182 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t183 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t181 <- rdI verts (3 * (97 * i31))
+    t182 <- rdI verts ((3 * (97 * i31)) + 1)
+    t183 <- rdI verts ((3 * (97 * i31)) + 2)
     v184 <- newR 1.0
-    loop 0.0 24.0 $ \i185 -> do
-      t186 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i185 * 4.0)) + 3.0))
-      t187 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i185 * 4.0)) + 3.0)) + 1.0)
-      t188 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i185 * 4.0)) + 3.0)) + 2.0)
-      t189 <- rd radii ((24.0 * i31) + i185)
+    loopI 0.0 24.0 $ \i185 -> do
+      let !d185 = fromIntegral i185 :: Double
+      t186 <- rdI verts (3 * ((((97 * i31) + 1) + (i185 * 4)) + 3))
+      t187 <- rdI verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 1)
+      t188 <- rdI verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 2)
+      t189 <- rdI radii ((24 * i31) + i185)
       t190 <- getR v184
       let !t191 = (t186 + (negate t181))
       let !t192 = (t187 + (negate t182))
@@ -423,25 +437,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v200 <- newR 0.0
       v201 <- newR 0.0
       v202 <- newR 0.0
-      loop 0.0 24.0 $ \i203 -> do
-        t204 <- rd radii ((24.0 * i31) + i203)
-        loop 6.0 12.0 $ \i205 -> do
-          let !t206 = (i203 + i205)
-          t207 <- rd radii ((24.0 * i31) + (t206 - (24.0 * (floorF (t206 / 24.0)))))
-          loop 1.0 4.0 $ \i208 -> do
-            t209 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i203 * 4.0)) + (i208 - 1.0)))
-            t210 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i203 * 4.0)) + (i208 - 1.0))) + 1.0)
-            t211 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i203 * 4.0)) + (i208 - 1.0))) + 2.0)
-            t212 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i203 * 4.0)) + i208))
-            t213 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i203 * 4.0)) + i208)) + 1.0)
-            t214 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i203 * 4.0)) + i208)) + 2.0)
-            loop 1.0 4.0 $ \i215 -> do
-              t216 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (i215 - 1.0)))
-              t217 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (i215 - 1.0))) + 1.0)
-              t218 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (i215 - 1.0))) + 2.0)
-              t219 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + i215))
-              t220 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + i215)) + 1.0)
-              t221 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + i215)) + 2.0)
+      loopI 0.0 24.0 $ \i203 -> do
+        let !d203 = fromIntegral i203 :: Double
+        t204 <- rdI radii ((24 * i31) + i203)
+        loopI 6.0 12.0 $ \i205 -> do
+          let !d205 = fromIntegral i205 :: Double
+          let !t206 = (d203 + d205)
+          t207 <- rdI radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0))))))
+          loopI 1.0 4.0 $ \i208 -> do
+            let !d208 = fromIntegral i208 :: Double
+            t209 <- rdI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1)))
+            t210 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 1)
+            t211 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 2)
+            t212 <- rdI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + i208))
+            t213 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 1)
+            t214 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 2)
+            loopI 1.0 4.0 $ \i215 -> do
+              let !d215 = fromIntegral i215 :: Double
+              t216 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))))
+              t217 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 1.0))
+              t218 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 2.0))
+              t219 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)))
+              t220 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 1.0))
+              t221 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 2.0))
               t222 <- getR v196
               let !t223 = (negate t216)
               let !t224 = (t219 + t223)
@@ -474,19 +492,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t251 = (if (negate t244) > 0 then (if (negate t247) > 0 then 0.0 else t247) else (if t248 > 0 then (if (negate t250) > 0 then 0.0 else t250) else t243))
               let !t252 = (if t248 > 0 then 1.0 else t244)
               let !t253 = (if (negate t252) > 0 then 0.0 else t252)
-              let !t254 = ((0.5 * ((t204 - ((t204 * (i208 + t251)) / 4.0)) + (t207 - ((t207 * (i215 + t253)) / 4.0)))) - t222)
+              let !t254 = ((0.5 * ((t204 - ((t204 * (d208 + t251)) / 4.0)) + (t207 - ((t207 * (d215 + t253)) / 4.0)))) - t222)
               let !t255 = ((t209 + (t251 * t230)) + (negate (t216 + (t253 * t224))))
               let !t256 = ((t210 + (t251 * t231)) + (negate (t217 + (t253 * t226))))
               let !t257 = ((t211 + (t251 * t232)) + (negate (t218 + (t253 * t228))))
               let !t258 = ((0.3 * ((if (t207 - t204) > 0 then t204 else t207) / 4.0)) - (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257))))
               if (if (t254 - t258) > 0 then t258 else t254) > 0 then do
-                setR v196 (0.5 * ((t204 - ((t204 * (i208 + t251)) / 4.0)) + (t207 - ((t207 * (i215 + t253)) / 4.0))))
-                t259 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i203 * 4.0)))
-                t260 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i203 * 4.0))) + 1.0)
-                t261 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i203 * 4.0))) + 2.0)
-                t262 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)))
-                t263 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0)
-                t264 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0)
+                setR v196 (0.5 * ((t204 - ((t204 * (d208 + t251)) / 4.0)) + (t207 - ((t207 * (d215 + t253)) / 4.0))))
+                t259 <- rdI verts (3 * (((97 * i31) + 1) + (i203 * 4)))
+                t260 <- rdI verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 1)
+                t261 <- rdI verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 2)
+                t262 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))))
+                t263 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0))
+                t264 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0))
                 setR v197 (t209 + (t251 * t230))
                 setR v198 (t210 + (t251 * t231))
                 setR v199 (t211 + (t251 * t232))
@@ -537,89 +555,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s298 = (t297 * t293)
         let !s299 = (t297 * t294)
         let !s300 = (t297 * t295)
-        t301 <- rd meta 2.0
-        t302 <- rd meta 3.0
+        t301 <- rdI meta 2
+        t302 <- rdI meta 3
         if (((8.0 * (if (1.0 - t302) > 0 then 1.0 else t302)) - t301) - 0.5) > 0 then do
-          wr meta 2.0 (t301 + 1.0)
-          t303 <- rd pos (3.0 * i31)
-          t304 <- rd pos ((3.0 * i31) + 1.0)
-          t305 <- rd pos ((3.0 * i31) + 2.0)
-          t306 <- rd normal (3.0 * i31)
-          t307 <- rd normal ((3.0 * i31) + 1.0)
-          t308 <- rd normal ((3.0 * i31) + 2.0)
-          t309 <- rd axis (3.0 * i31)
-          t310 <- rd axis ((3.0 * i31) + 1.0)
-          t311 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t301 + 1.0)
+          t303 <- rdI pos (3 * i31)
+          t304 <- rdI pos ((3 * i31) + 1)
+          t305 <- rdI pos ((3 * i31) + 2)
+          t306 <- rdI normal (3 * i31)
+          t307 <- rdI normal ((3 * i31) + 1)
+          t308 <- rdI normal ((3 * i31) + 2)
+          t309 <- rdI axis (3 * i31)
+          t310 <- rdI axis ((3 * i31) + 1)
+          t311 <- rdI axis ((3 * i31) + 2)
           let !s312 = ((t307 * t311) - (t308 * t310))
           let !s313 = ((t308 * t309) - (t306 * t311))
           let !s314 = ((t306 * t310) - (t307 * t309))
-          t315 <- rd scalars (6.0 * i31)
-          t316 <- rd scalars ((6.0 * i31) + 5.0)
-          t317 <- rd scalars ((6.0 * i31) + 2.0)
-          t318 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t301) i31
-          wr contacts ((30.0 * t301) + 1.0) (-1.0)
-          wr contacts ((30.0 * t301) + 2.0) i31
-          wr contacts ((30.0 * t301) + 3.0) 12.0
-          wr contacts ((30.0 * t301) + 4.0) (s298 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t306)))
-          wr contacts (((30.0 * t301) + 4.0) + 1.0) (s299 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t307)))
-          wr contacts (((30.0 * t301) + 4.0) + 2.0) (s300 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t308)))
-          wr contacts ((30.0 * t301) + 7.0) 0.0
-          wr contacts ((30.0 * t301) + 12.0) 0.0
-          wr contacts (((30.0 * t301) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t301) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t301) + 15.0) 0.0
-          wr contacts ((30.0 * t301) + 20.0) t276
-          wr contacts ((30.0 * t301) + 26.0) 0.6
-          wr contacts ((30.0 * t301) + 27.0) t277
-          wr contacts (((30.0 * t301) + 27.0) + 1.0) t278
-          wr contacts (((30.0 * t301) + 27.0) + 2.0) t279
+          t315 <- rdI scalars (6 * i31)
+          t316 <- rdI scalars ((6 * i31) + 5)
+          t317 <- rdI scalars ((6 * i31) + 2)
+          t318 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t301)) d31
+          wrI contacts ((30 * (truncate t301)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t301)) + 2) d31
+          wrI contacts ((30 * (truncate t301)) + 3) 12.0
+          wrI contacts ((30 * (truncate t301)) + 4) (s298 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t306)))
+          wrI contacts (((30 * (truncate t301)) + 4) + 1) (s299 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t307)))
+          wrI contacts (((30 * (truncate t301)) + 4) + 2) (s300 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t308)))
+          wrI contacts ((30 * (truncate t301)) + 7) 0.0
+          wrI contacts ((30 * (truncate t301)) + 12) 0.0
+          wrI contacts (((30 * (truncate t301)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t301)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t301)) + 15) 0.0
+          wrI contacts ((30 * (truncate t301)) + 20) t276
+          wrI contacts ((30 * (truncate t301)) + 26) 0.6
+          wrI contacts ((30 * (truncate t301)) + 27) t277
+          wrI contacts (((30 * (truncate t301)) + 27) + 1) t278
+          wrI contacts (((30 * (truncate t301)) + 27) + 2) t279
           if (-0.5) > 0 then do
-            t319 <- rd pos (-3.0)
-            t320 <- rd pos (-2.0)
-            t321 <- rd pos (-1.0)
-            t322 <- rd normal (-3.0)
-            t323 <- rd normal (-2.0)
-            t324 <- rd normal (-1.0)
-            t325 <- rd axis (-3.0)
-            t326 <- rd axis (-2.0)
-            t327 <- rd axis (-1.0)
+            t319 <- rdI pos (-3)
+            t320 <- rdI pos (-2)
+            t321 <- rdI pos (-1)
+            t322 <- rdI normal (-3)
+            t323 <- rdI normal (-2)
+            t324 <- rdI normal (-1)
+            t325 <- rdI axis (-3)
+            t326 <- rdI axis (-2)
+            t327 <- rdI axis (-1)
             let !s328 = ((t323 * t327) - (t324 * t326))
             let !s329 = ((t324 * t325) - (t322 * t327))
             let !s330 = ((t322 * t326) - (t323 * t325))
-            t331 <- rd scalars (-6.0)
-            t332 <- rd scalars (-1.0)
-            t333 <- rd scalars (-4.0)
-            t334 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t301) + 8.0) (s298 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t322)))
-            wr contacts (((30.0 * t301) + 8.0) + 1.0) (s299 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t323)))
-            wr contacts (((30.0 * t301) + 8.0) + 2.0) (s300 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t324)))
+            t331 <- rdI scalars (-6)
+            t332 <- rdI scalars (-1)
+            t333 <- rdI scalars (-4)
+            t334 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t301)) + 8) (s298 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t322)))
+            wrI contacts (((30 * (truncate t301)) + 8) + 1) (s299 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t323)))
+            wrI contacts (((30 * (truncate t301)) + 8) + 2) (s300 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t324)))
             let !t335 = (t278 + (negate t320))
             let !t336 = (t279 + (negate t321))
             let !t337 = (t277 + (negate t319))
-            wr contacts ((30.0 * t301) + 11.0) (((((t335 * s300) - (t336 * s299)) * t322) + (((t336 * s298) - (t337 * s300)) * t323)) + (((t337 * s299) - (t335 * s298)) * t324))
+            wrI contacts ((30 * (truncate t301)) + 11) (((((t335 * s300) - (t336 * s299)) * t322) + (((t336 * s298) - (t337 * s300)) * t323)) + (((t337 * s299) - (t335 * s298)) * t324))
             let !t338 = ((t307 * s300) - (t308 * s299))
-            wr contacts ((30.0 * t301) + 16.0) (t338 + (negate ((((t322 * t338) + (t323 * ((t308 * s298) - (t306 * s300)))) + (t324 * ((t306 * s299) - (t307 * s298)))) * t322)))
+            wrI contacts ((30 * (truncate t301)) + 16) (t338 + (negate ((((t322 * t338) + (t323 * ((t308 * s298) - (t306 * s300)))) + (t324 * ((t306 * s299) - (t307 * s298)))) * t322)))
             let !t339 = ((t308 * s298) - (t306 * s300))
-            wr contacts (((30.0 * t301) + 16.0) + 1.0) (t339 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * ((t306 * s299) - (t307 * s298)))) * t323)))
+            wrI contacts (((30 * (truncate t301)) + 16) + 1) (t339 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * ((t306 * s299) - (t307 * s298)))) * t323)))
             let !t340 = ((t306 * s299) - (t307 * s298))
-            wr contacts (((30.0 * t301) + 16.0) + 2.0) (t340 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * t340)) * t324)))
-            wr contacts ((30.0 * t301) + 19.0) (((((t335 * t340) - (t336 * t339)) * t322) + (((t336 * t338) - (t337 * t340)) * t323)) + (((t337 * t339) - (t335 * t338)) * t324))
+            wrI contacts (((30 * (truncate t301)) + 16) + 2) (t340 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * t340)) * t324)))
+            wrI contacts ((30 * (truncate t301)) + 19) (((((t335 * t340) - (t336 * t339)) * t322) + (((t336 * t338) - (t337 * t340)) * t323)) + (((t337 * t339) - (t335 * t338)) * t324))
             pure ()
           else do
-            wr contacts ((30.0 * t301) + 8.0) 0.0
-            wr contacts (((30.0 * t301) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t301) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t301) + 11.0) 0.0
-            wr contacts ((30.0 * t301) + 16.0) 0.0
-            wr contacts (((30.0 * t301) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t301) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t301) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t301)) + 8) 0.0
+            wrI contacts (((30 * (truncate t301)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t301)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t301)) + 11) 0.0
+            wrI contacts ((30 * (truncate t301)) + 16) 0.0
+            wrI contacts (((30 * (truncate t301)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t301)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t301)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t341 <- rd meta 6.0
-          wr meta 6.0 (t341 + 1.0)
+          t341 <- rdI meta 6
+          wrI meta 6 (t341 + 1.0)
           pure ()
         pure ()
       else do
@@ -632,43 +650,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -676,12 +695,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -689,20 +708,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -713,18 +732,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -732,98 +752,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1074,12 +1094,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s385 = ((t139 * (t367 * (t384 * t380))) + (t179 * s325))
       let !s386 = ((t139 * (t367 * (t384 * t381))) + (t179 * s326))
       let !s387 = ((t139 * (t367 * (t384 * t382))) + (t179 * s327))
-      t388 <- rd mouse 4.0
-      t389 <- rd mouse 5.0
-      t390 <- rd mouse 6.0
-      t391 <- rd mouse 7.0
-      t392 <- rd mouse 8.0
-      t393 <- rd mouse 9.0
+      t388 <- rdI mouse 4
+      t389 <- rdI mouse 5
+      t390 <- rdI mouse 6
+      t391 <- rdI mouse 7
+      t392 <- rdI mouse 8
+      t393 <- rdI mouse 9
       let !t394 = (recip t101)
       let !t395 = (6.283185307179586 * t391)
       let !s396 = (recip (t103 * ((((2.0 * t394) * t392) * t395) + (t103 * ((t394 * t395) * t395)))))
@@ -1090,68 +1110,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s401 = (s364 + (negate t388))
       let !s402 = (s365 + (negate t389))
       let !s403 = (s366 + (negate t390))
-      t404 <- rd mouse 10.0
-      t405 <- rd scalars ((6.0 * t100) + 2.0)
-      t406 <- rd scalars ((6.0 * t100) + 3.0)
-      t407 <- rd vel (3.0 * t100)
-      t408 <- rd vel ((3.0 * t100) + 1.0)
-      t409 <- rd vel ((3.0 * t100) + 2.0)
-      t410 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t407 + ((t405 * t404) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t408 + ((t405 * t404) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t409 + ((t405 * t404) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
-      t411 <- rd mouse 11.0
-      t412 <- rd scalars ((6.0 * t100) + 2.0)
-      t413 <- rd scalars ((6.0 * t100) + 3.0)
-      t414 <- rd vel (3.0 * t100)
-      t415 <- rd vel ((3.0 * t100) + 1.0)
-      t416 <- rd vel ((3.0 * t100) + 2.0)
-      t417 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t414 + ((t412 * t411) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t415 + ((t412 * t411) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t416 + ((t412 * t411) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
+      t404 <- rdI mouse 10
+      t405 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t406 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t407 <- rdI vel (3 * (truncate t100))
+      t408 <- rdI vel ((3 * (truncate t100)) + 1)
+      t409 <- rdI vel ((3 * (truncate t100)) + 2)
+      t410 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t407 + ((t405 * t404) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t408 + ((t405 * t404) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t409 + ((t405 * t404) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
+      t411 <- rdI mouse 11
+      t412 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t413 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t414 <- rdI vel (3 * (truncate t100))
+      t415 <- rdI vel ((3 * (truncate t100)) + 1)
+      t416 <- rdI vel ((3 * (truncate t100)) + 2)
+      t417 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t414 + ((t412 * t411) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t415 + ((t412 * t411) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t416 + ((t412 * t411) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i418 -> do
-    loop 0.0 t9 $ \i419 -> do
-      t420 <- rd contacts (30.0 * i419)
-      t421 <- rd contacts ((30.0 * i419) + 1.0)
-      t422 <- rd contacts ((30.0 * i419) + 12.0)
-      t423 <- rd contacts (((30.0 * i419) + 12.0) + 1.0)
-      t424 <- rd contacts (((30.0 * i419) + 12.0) + 2.0)
-      t425 <- rd contacts ((30.0 * i419) + 15.0)
-      t426 <- rd contacts ((30.0 * i419) + 16.0)
-      t427 <- rd contacts (((30.0 * i419) + 16.0) + 1.0)
-      t428 <- rd contacts (((30.0 * i419) + 16.0) + 2.0)
-      t429 <- rd contacts ((30.0 * i419) + 19.0)
-      t430 <- rd contacts ((30.0 * i419) + 4.0)
-      t431 <- rd contacts (((30.0 * i419) + 4.0) + 1.0)
-      t432 <- rd contacts (((30.0 * i419) + 4.0) + 2.0)
-      t433 <- rd contacts ((30.0 * i419) + 7.0)
-      t434 <- rd contacts ((30.0 * i419) + 8.0)
-      t435 <- rd contacts (((30.0 * i419) + 8.0) + 1.0)
-      t436 <- rd contacts (((30.0 * i419) + 8.0) + 2.0)
-      t437 <- rd contacts ((30.0 * i419) + 11.0)
-      t438 <- rd contacts ((30.0 * i419) + 26.0)
-      t439 <- rd contacts ((30.0 * i419) + 24.0)
-      t440 <- rd contacts ((30.0 * i419) + 25.0)
-      t441 <- rd contacts ((30.0 * i419) + 22.0)
-      t442 <- rd vel (3.0 * t420)
-      t443 <- rd vel ((3.0 * t420) + 1.0)
-      t444 <- rd vel ((3.0 * t420) + 2.0)
-      t445 <- rd scalars ((6.0 * t420) + 1.0)
+  loopI 0.0 t1 $ \i418 -> do
+    let !d418 = fromIntegral i418 :: Double
+    loopI 0.0 t9 $ \i419 -> do
+      let !d419 = fromIntegral i419 :: Double
+      t420 <- rdI contacts (30 * i419)
+      t421 <- rdI contacts ((30 * i419) + 1)
+      t422 <- rdI contacts ((30 * i419) + 12)
+      t423 <- rdI contacts (((30 * i419) + 12) + 1)
+      t424 <- rdI contacts (((30 * i419) + 12) + 2)
+      t425 <- rdI contacts ((30 * i419) + 15)
+      t426 <- rdI contacts ((30 * i419) + 16)
+      t427 <- rdI contacts (((30 * i419) + 16) + 1)
+      t428 <- rdI contacts (((30 * i419) + 16) + 2)
+      t429 <- rdI contacts ((30 * i419) + 19)
+      t430 <- rdI contacts ((30 * i419) + 4)
+      t431 <- rdI contacts (((30 * i419) + 4) + 1)
+      t432 <- rdI contacts (((30 * i419) + 4) + 2)
+      t433 <- rdI contacts ((30 * i419) + 7)
+      t434 <- rdI contacts ((30 * i419) + 8)
+      t435 <- rdI contacts (((30 * i419) + 8) + 1)
+      t436 <- rdI contacts (((30 * i419) + 8) + 2)
+      t437 <- rdI contacts ((30 * i419) + 11)
+      t438 <- rdI contacts ((30 * i419) + 26)
+      t439 <- rdI contacts ((30 * i419) + 24)
+      t440 <- rdI contacts ((30 * i419) + 25)
+      t441 <- rdI contacts ((30 * i419) + 22)
+      t442 <- rdI vel (3 * (truncate t420))
+      t443 <- rdI vel ((3 * (truncate t420)) + 1)
+      t444 <- rdI vel ((3 * (truncate t420)) + 2)
+      t445 <- rdI scalars ((6 * (truncate t420)) + 1)
       v446 <- newR 0.0
       if (t421 + 0.5) > 0 then do
-        t447 <- rd vel (3.0 * t421)
-        t448 <- rd vel ((3.0 * t421) + 1.0)
-        t449 <- rd vel ((3.0 * t421) + 2.0)
-        t450 <- rd scalars ((6.0 * t421) + 1.0)
+        t447 <- rdI vel (3 * (truncate t421))
+        t448 <- rdI vel ((3 * (truncate t421)) + 1)
+        t449 <- rdI vel ((3 * (truncate t421)) + 2)
+        t450 <- rdI scalars ((6 * (truncate t421)) + 1)
         setR v446 ((((t426 * t447) + (t427 * t448)) + (t428 * t449)) + (t429 * t450))
         pure ()
       else do
@@ -1164,43 +1186,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t456 = (if (t455 - t453) > 0 then t453 else t455)
       let !t457 = (if (t454 - t456) > 0 then t454 else t456)
       let !s458 = (if (1.0 - (abs (t457 - t457))) > 0 then t457 else 0.0)
-      wr contacts ((30.0 * i419) + 25.0) s458
-      t459 <- rd scalars ((6.0 * t420) + 2.0)
-      t460 <- rd scalars ((6.0 * t420) + 3.0)
-      t461 <- rd vel (3.0 * t420)
-      t462 <- rd vel ((3.0 * t420) + 1.0)
-      t463 <- rd vel ((3.0 * t420) + 2.0)
-      t464 <- rd scalars ((6.0 * t420) + 1.0)
-      wr vel (3.0 * t420) (t461 + ((t459 * (s458 - t440)) * t422))
-      wr vel ((3.0 * t420) + 1.0) (t462 + ((t459 * (s458 - t440)) * t423))
-      wr vel ((3.0 * t420) + 2.0) (t463 + ((t459 * (s458 - t440)) * t424))
-      wr scalars ((6.0 * t420) + 1.0) (t464 + ((t460 * (s458 - t440)) * t425))
+      wrI contacts ((30 * i419) + 25) s458
+      t459 <- rdI scalars ((6 * (truncate t420)) + 2)
+      t460 <- rdI scalars ((6 * (truncate t420)) + 3)
+      t461 <- rdI vel (3 * (truncate t420))
+      t462 <- rdI vel ((3 * (truncate t420)) + 1)
+      t463 <- rdI vel ((3 * (truncate t420)) + 2)
+      t464 <- rdI scalars ((6 * (truncate t420)) + 1)
+      wrI vel (3 * (truncate t420)) (t461 + ((t459 * (s458 - t440)) * t422))
+      wrI vel ((3 * (truncate t420)) + 1) (t462 + ((t459 * (s458 - t440)) * t423))
+      wrI vel ((3 * (truncate t420)) + 2) (t463 + ((t459 * (s458 - t440)) * t424))
+      wrI scalars ((6 * (truncate t420)) + 1) (t464 + ((t460 * (s458 - t440)) * t425))
       if (t421 + 0.5) > 0 then do
-        t465 <- rd scalars ((6.0 * t421) + 2.0)
-        t466 <- rd scalars ((6.0 * t421) + 3.0)
-        t467 <- rd vel (3.0 * t421)
-        t468 <- rd vel ((3.0 * t421) + 1.0)
-        t469 <- rd vel ((3.0 * t421) + 2.0)
-        t470 <- rd scalars ((6.0 * t421) + 1.0)
-        wr vel (3.0 * t421) (t467 + ((t465 * (negate (s458 - t440))) * t426))
-        wr vel ((3.0 * t421) + 1.0) (t468 + ((t465 * (negate (s458 - t440))) * t427))
-        wr vel ((3.0 * t421) + 2.0) (t469 + ((t465 * (negate (s458 - t440))) * t428))
-        wr scalars ((6.0 * t421) + 1.0) (t470 + ((t466 * (negate (s458 - t440))) * t429))
+        t465 <- rdI scalars ((6 * (truncate t421)) + 2)
+        t466 <- rdI scalars ((6 * (truncate t421)) + 3)
+        t467 <- rdI vel (3 * (truncate t421))
+        t468 <- rdI vel ((3 * (truncate t421)) + 1)
+        t469 <- rdI vel ((3 * (truncate t421)) + 2)
+        t470 <- rdI scalars ((6 * (truncate t421)) + 1)
+        wrI vel (3 * (truncate t421)) (t467 + ((t465 * (negate (s458 - t440))) * t426))
+        wrI vel ((3 * (truncate t421)) + 1) (t468 + ((t465 * (negate (s458 - t440))) * t427))
+        wrI vel ((3 * (truncate t421)) + 2) (t469 + ((t465 * (negate (s458 - t440))) * t428))
+        wrI scalars ((6 * (truncate t421)) + 1) (t470 + ((t466 * (negate (s458 - t440))) * t429))
         pure ()
       else do
         pure ()
-      t471 <- rd contacts ((30.0 * i419) + 21.0)
-      t472 <- rd contacts ((30.0 * i419) + 23.0)
-      t473 <- rd vel (3.0 * t420)
-      t474 <- rd vel ((3.0 * t420) + 1.0)
-      t475 <- rd vel ((3.0 * t420) + 2.0)
-      t476 <- rd scalars ((6.0 * t420) + 1.0)
+      t471 <- rdI contacts ((30 * i419) + 21)
+      t472 <- rdI contacts ((30 * i419) + 23)
+      t473 <- rdI vel (3 * (truncate t420))
+      t474 <- rdI vel ((3 * (truncate t420)) + 1)
+      t475 <- rdI vel ((3 * (truncate t420)) + 2)
+      t476 <- rdI scalars ((6 * (truncate t420)) + 1)
       v477 <- newR 0.0
       if (t421 + 0.5) > 0 then do
-        t478 <- rd vel (3.0 * t421)
-        t479 <- rd vel ((3.0 * t421) + 1.0)
-        t480 <- rd vel ((3.0 * t421) + 2.0)
-        t481 <- rd scalars ((6.0 * t421) + 1.0)
+        t478 <- rdI vel (3 * (truncate t421))
+        t479 <- rdI vel ((3 * (truncate t421)) + 1)
+        t480 <- rdI vel ((3 * (truncate t421)) + 2)
+        t481 <- rdI scalars ((6 * (truncate t421)) + 1)
         setR v477 ((((t434 * t478) + (t435 * t479)) + (t436 * t480)) + (t437 * t481))
         pure ()
       else do
@@ -1210,73 +1232,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t484 = (t439 + ((t438 * (t472 - s483)) * t471))
       let !t485 = (if (negate t484) > 0 then 0.0 else t484)
       let !s486 = (if (1.0 - (abs (t485 - t485))) > 0 then t485 else 0.0)
-      wr contacts ((30.0 * i419) + 24.0) s486
-      t487 <- rd scalars ((6.0 * t420) + 2.0)
-      t488 <- rd scalars ((6.0 * t420) + 3.0)
-      t489 <- rd vel (3.0 * t420)
-      t490 <- rd vel ((3.0 * t420) + 1.0)
-      t491 <- rd vel ((3.0 * t420) + 2.0)
-      t492 <- rd scalars ((6.0 * t420) + 1.0)
-      wr vel (3.0 * t420) (t489 + ((t487 * (s486 - t439)) * t430))
-      wr vel ((3.0 * t420) + 1.0) (t490 + ((t487 * (s486 - t439)) * t431))
-      wr vel ((3.0 * t420) + 2.0) (t491 + ((t487 * (s486 - t439)) * t432))
-      wr scalars ((6.0 * t420) + 1.0) (t492 + ((t488 * (s486 - t439)) * t433))
+      wrI contacts ((30 * i419) + 24) s486
+      t487 <- rdI scalars ((6 * (truncate t420)) + 2)
+      t488 <- rdI scalars ((6 * (truncate t420)) + 3)
+      t489 <- rdI vel (3 * (truncate t420))
+      t490 <- rdI vel ((3 * (truncate t420)) + 1)
+      t491 <- rdI vel ((3 * (truncate t420)) + 2)
+      t492 <- rdI scalars ((6 * (truncate t420)) + 1)
+      wrI vel (3 * (truncate t420)) (t489 + ((t487 * (s486 - t439)) * t430))
+      wrI vel ((3 * (truncate t420)) + 1) (t490 + ((t487 * (s486 - t439)) * t431))
+      wrI vel ((3 * (truncate t420)) + 2) (t491 + ((t487 * (s486 - t439)) * t432))
+      wrI scalars ((6 * (truncate t420)) + 1) (t492 + ((t488 * (s486 - t439)) * t433))
       if (t421 + 0.5) > 0 then do
-        t493 <- rd scalars ((6.0 * t421) + 2.0)
-        t494 <- rd scalars ((6.0 * t421) + 3.0)
-        t495 <- rd vel (3.0 * t421)
-        t496 <- rd vel ((3.0 * t421) + 1.0)
-        t497 <- rd vel ((3.0 * t421) + 2.0)
-        t498 <- rd scalars ((6.0 * t421) + 1.0)
-        wr vel (3.0 * t421) (t495 + ((t493 * (negate (s486 - t439))) * t434))
-        wr vel ((3.0 * t421) + 1.0) (t496 + ((t493 * (negate (s486 - t439))) * t435))
-        wr vel ((3.0 * t421) + 2.0) (t497 + ((t493 * (negate (s486 - t439))) * t436))
-        wr scalars ((6.0 * t421) + 1.0) (t498 + ((t494 * (negate (s486 - t439))) * t437))
+        t493 <- rdI scalars ((6 * (truncate t421)) + 2)
+        t494 <- rdI scalars ((6 * (truncate t421)) + 3)
+        t495 <- rdI vel (3 * (truncate t421))
+        t496 <- rdI vel ((3 * (truncate t421)) + 1)
+        t497 <- rdI vel ((3 * (truncate t421)) + 2)
+        t498 <- rdI scalars ((6 * (truncate t421)) + 1)
+        wrI vel (3 * (truncate t421)) (t495 + ((t493 * (negate (s486 - t439))) * t434))
+        wrI vel ((3 * (truncate t421)) + 1) (t496 + ((t493 * (negate (s486 - t439))) * t435))
+        wrI vel ((3 * (truncate t421)) + 2) (t497 + ((t493 * (negate (s486 - t439))) * t436))
+        wrI scalars ((6 * (truncate t421)) + 1) (t498 + ((t494 * (negate (s486 - t439))) * t437))
         pure ()
       else do
         pure ()
       pure ()
-    t499 <- rd mouse 0.0
+    t499 <- rdI mouse 0
     if t499 > 0 then do
-      t500 <- rd mouse 1.0
-      t501 <- rd scalars ((6.0 * t500) + 2.0)
+      t500 <- rdI mouse 1
+      t501 <- rdI scalars ((6 * (truncate t500)) + 2)
       if t501 > 0 then do
-        t502 <- rd scalars ((6.0 * t500) + 3.0)
-        t503 <- rd params 0.0
-        t504 <- rd pos (3.0 * t500)
-        t505 <- rd pos ((3.0 * t500) + 1.0)
-        t506 <- rd pos ((3.0 * t500) + 2.0)
-        t507 <- rd normal (3.0 * t500)
-        t508 <- rd normal ((3.0 * t500) + 1.0)
-        t509 <- rd normal ((3.0 * t500) + 2.0)
-        t510 <- rd axis (3.0 * t500)
-        t511 <- rd axis ((3.0 * t500) + 1.0)
-        t512 <- rd axis ((3.0 * t500) + 2.0)
+        t502 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t503 <- rdI params 0
+        t504 <- rdI pos (3 * (truncate t500))
+        t505 <- rdI pos ((3 * (truncate t500)) + 1)
+        t506 <- rdI pos ((3 * (truncate t500)) + 2)
+        t507 <- rdI normal (3 * (truncate t500))
+        t508 <- rdI normal ((3 * (truncate t500)) + 1)
+        t509 <- rdI normal ((3 * (truncate t500)) + 2)
+        t510 <- rdI axis (3 * (truncate t500))
+        t511 <- rdI axis ((3 * (truncate t500)) + 1)
+        t512 <- rdI axis ((3 * (truncate t500)) + 2)
         let !s513 = ((t508 * t512) - (t509 * t511))
         let !s514 = ((t509 * t510) - (t507 * t512))
         let !s515 = ((t507 * t511) - (t508 * t510))
-        t516 <- rd scalars (6.0 * t500)
-        t517 <- rd scalars ((6.0 * t500) + 5.0)
-        t518 <- rd scalars ((6.0 * t500) + 2.0)
-        t519 <- rd scalars ((6.0 * t500) + 3.0)
-        t520 <- rd pos (3.0 * t500)
-        t521 <- rd pos ((3.0 * t500) + 1.0)
-        t522 <- rd pos ((3.0 * t500) + 2.0)
-        t523 <- rd normal (3.0 * t500)
-        t524 <- rd normal ((3.0 * t500) + 1.0)
-        t525 <- rd normal ((3.0 * t500) + 2.0)
-        t526 <- rd axis (3.0 * t500)
-        t527 <- rd axis ((3.0 * t500) + 1.0)
-        t528 <- rd axis ((3.0 * t500) + 2.0)
+        t516 <- rdI scalars (6 * (truncate t500))
+        t517 <- rdI scalars ((6 * (truncate t500)) + 5)
+        t518 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t519 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t520 <- rdI pos (3 * (truncate t500))
+        t521 <- rdI pos ((3 * (truncate t500)) + 1)
+        t522 <- rdI pos ((3 * (truncate t500)) + 2)
+        t523 <- rdI normal (3 * (truncate t500))
+        t524 <- rdI normal ((3 * (truncate t500)) + 1)
+        t525 <- rdI normal ((3 * (truncate t500)) + 2)
+        t526 <- rdI axis (3 * (truncate t500))
+        t527 <- rdI axis ((3 * (truncate t500)) + 1)
+        t528 <- rdI axis ((3 * (truncate t500)) + 2)
         let !s529 = ((t524 * t528) - (t525 * t527))
         let !s530 = ((t525 * t526) - (t523 * t528))
         let !s531 = ((t523 * t527) - (t524 * t526))
-        t532 <- rd scalars (6.0 * t500)
-        t533 <- rd scalars ((6.0 * t500) + 5.0)
-        t534 <- rd scalars ((6.0 * t500) + 2.0)
-        t535 <- rd scalars ((6.0 * t500) + 3.0)
-        t536 <- rd mouse 2.0
-        t537 <- rd mouse 3.0
+        t532 <- rdI scalars (6 * (truncate t500))
+        t533 <- rdI scalars ((6 * (truncate t500)) + 5)
+        t534 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t535 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t536 <- rdI mouse 2
+        t537 <- rdI mouse 3
         let !t538 = (t536 / 4.0)
         let !t539 = (if (abs t538) > 0 then 1.0 else 0.0)
         let !t540 = (t532 + t537)
@@ -1527,12 +1549,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s785 = ((t539 * (t767 * (t784 * t780))) + (t579 * s725))
         let !s786 = ((t539 * (t767 * (t784 * t781))) + (t579 * s726))
         let !s787 = ((t539 * (t767 * (t784 * t782))) + (t579 * s727))
-        t788 <- rd mouse 4.0
-        t789 <- rd mouse 5.0
-        t790 <- rd mouse 6.0
-        t791 <- rd mouse 7.0
-        t792 <- rd mouse 8.0
-        t793 <- rd mouse 9.0
+        t788 <- rdI mouse 4
+        t789 <- rdI mouse 5
+        t790 <- rdI mouse 6
+        t791 <- rdI mouse 7
+        t792 <- rdI mouse 8
+        t793 <- rdI mouse 9
         let !t794 = (recip t501)
         let !t795 = (6.283185307179586 * t791)
         let !s796 = (recip (t503 * ((((2.0 * t794) * t792) * t795) + (t503 * ((t794 * t795) * t795)))))
@@ -1543,11 +1565,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s801 = (s764 + (negate t788))
         let !s802 = (s765 + (negate t789))
         let !s803 = (s766 + (negate t790))
-        t804 <- rd mouse 10.0
-        t805 <- rd vel (3.0 * t500)
-        t806 <- rd vel ((3.0 * t500) + 1.0)
-        t807 <- rd vel ((3.0 * t500) + 2.0)
-        t808 <- rd scalars ((6.0 * t500) + 1.0)
+        t804 <- rdI mouse 10
+        t805 <- rdI vel (3 * (truncate t500))
+        t806 <- rdI vel ((3 * (truncate t500)) + 1)
+        t807 <- rdI vel ((3 * (truncate t500)) + 2)
+        t808 <- rdI scalars ((6 * (truncate t500)) + 1)
         let !t809 = (t793 * t503)
         let !t810 = (negate t809)
         let !t811 = (((((s799 * t512) - (s800 * t511)) * t507) + (((s800 * t510) - (s798 * t512)) * t508)) + (((s798 * t511) - (s799 * t510)) * t509))
@@ -1555,38 +1577,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t813 = (if (t812 - t809) > 0 then t809 else t812)
         let !t814 = (if (t810 - t813) > 0 then t810 else t813)
         let !s815 = (if (1.0 - (abs (t814 - t814))) > 0 then t814 else 0.0)
-        wr mouse 10.0 s815
-        t816 <- rd scalars ((6.0 * t500) + 2.0)
-        t817 <- rd scalars ((6.0 * t500) + 3.0)
-        t818 <- rd vel (3.0 * t500)
-        t819 <- rd vel ((3.0 * t500) + 1.0)
-        t820 <- rd vel ((3.0 * t500) + 2.0)
-        t821 <- rd scalars ((6.0 * t500) + 1.0)
-        wr vel (3.0 * t500) (t818 + ((t816 * (s815 - t804)) * t510))
-        wr vel ((3.0 * t500) + 1.0) (t819 + ((t816 * (s815 - t804)) * t511))
-        wr vel ((3.0 * t500) + 2.0) (t820 + ((t816 * (s815 - t804)) * t512))
-        wr scalars ((6.0 * t500) + 1.0) (t821 + ((t817 * (s815 - t804)) * t811))
-        t822 <- rd mouse 11.0
-        t823 <- rd vel (3.0 * t500)
-        t824 <- rd vel ((3.0 * t500) + 1.0)
-        t825 <- rd vel ((3.0 * t500) + 2.0)
-        t826 <- rd scalars ((6.0 * t500) + 1.0)
+        wrI mouse 10 s815
+        t816 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t817 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t818 <- rdI vel (3 * (truncate t500))
+        t819 <- rdI vel ((3 * (truncate t500)) + 1)
+        t820 <- rdI vel ((3 * (truncate t500)) + 2)
+        t821 <- rdI scalars ((6 * (truncate t500)) + 1)
+        wrI vel (3 * (truncate t500)) (t818 + ((t816 * (s815 - t804)) * t510))
+        wrI vel ((3 * (truncate t500)) + 1) (t819 + ((t816 * (s815 - t804)) * t511))
+        wrI vel ((3 * (truncate t500)) + 2) (t820 + ((t816 * (s815 - t804)) * t512))
+        wrI scalars ((6 * (truncate t500)) + 1) (t821 + ((t817 * (s815 - t804)) * t811))
+        t822 <- rdI mouse 11
+        t823 <- rdI vel (3 * (truncate t500))
+        t824 <- rdI vel ((3 * (truncate t500)) + 1)
+        t825 <- rdI vel ((3 * (truncate t500)) + 2)
+        t826 <- rdI scalars ((6 * (truncate t500)) + 1)
         let !t827 = (((((s799 * s515) - (s800 * s514)) * t507) + (((s800 * s513) - (s798 * s515)) * t508)) + (((s798 * s514) - (s799 * s513)) * t509))
         let !t828 = (t822 + ((negate ((((((s513 * t823) + (s514 * t824)) + (s515 * t825)) + (t827 * t826)) + (s797 * (((s801 * s513) + (s802 * s514)) + (s803 * s515)))) + (s796 * t822))) / (((t501 * (((s513 * s513) + (s514 * s514)) + (s515 * s515))) + ((t502 * t827) * t827)) + s796)))
         let !t829 = (if (t828 - t809) > 0 then t809 else t828)
         let !t830 = (if (t810 - t829) > 0 then t810 else t829)
         let !s831 = (if (1.0 - (abs (t830 - t830))) > 0 then t830 else 0.0)
-        wr mouse 11.0 s831
-        t832 <- rd scalars ((6.0 * t500) + 2.0)
-        t833 <- rd scalars ((6.0 * t500) + 3.0)
-        t834 <- rd vel (3.0 * t500)
-        t835 <- rd vel ((3.0 * t500) + 1.0)
-        t836 <- rd vel ((3.0 * t500) + 2.0)
-        t837 <- rd scalars ((6.0 * t500) + 1.0)
-        wr vel (3.0 * t500) (t834 + ((t832 * (s831 - t822)) * s513))
-        wr vel ((3.0 * t500) + 1.0) (t835 + ((t832 * (s831 - t822)) * s514))
-        wr vel ((3.0 * t500) + 2.0) (t836 + ((t832 * (s831 - t822)) * s515))
-        wr scalars ((6.0 * t500) + 1.0) (t837 + ((t833 * (s831 - t822)) * t827))
+        wrI mouse 11 s831
+        t832 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t833 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t834 <- rdI vel (3 * (truncate t500))
+        t835 <- rdI vel ((3 * (truncate t500)) + 1)
+        t836 <- rdI vel ((3 * (truncate t500)) + 2)
+        t837 <- rdI scalars ((6 * (truncate t500)) + 1)
+        wrI vel (3 * (truncate t500)) (t834 + ((t832 * (s831 - t822)) * s513))
+        wrI vel ((3 * (truncate t500)) + 1) (t835 + ((t832 * (s831 - t822)) * s514))
+        wrI vel ((3 * (truncate t500)) + 2) (t836 + ((t832 * (s831 - t822)) * s515))
+        wrI scalars ((6 * (truncate t500)) + 1) (t837 + ((t833 * (s831 - t822)) * t827))
         pure ()
       else do
         pure ()
@@ -1594,48 +1616,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t838 <- rd meta 0.0
-  loop 0.0 t838 $ \i839 -> do
-    wr bodyPrev ((2.0 * i839) + 1.0) 0.0
+  t838 <- rdI meta 0
+  loopI 0.0 t838 $ \i839 -> do
+    let !d839 = fromIntegral i839 :: Double
+    wrI bodyPrev ((2 * i839) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i840 -> do
-    t841 <- rd contacts ((30.0 * i840) + 2.0)
-    wr prev (4.0 * i840) t841
-    t842 <- rd contacts ((30.0 * i840) + 3.0)
-    wr prev ((4.0 * i840) + 1.0) t842
-    t843 <- rd contacts ((30.0 * i840) + 24.0)
-    wr prev ((4.0 * i840) + 2.0) t843
-    t844 <- rd contacts ((30.0 * i840) + 25.0)
-    wr prev ((4.0 * i840) + 3.0) t844
-    t845 <- rd bodyPrev ((2.0 * t841) + 1.0)
+  loopI 0.0 t9 $ \i840 -> do
+    let !d840 = fromIntegral i840 :: Double
+    t841 <- rdI contacts ((30 * i840) + 2)
+    wrI prev (4 * i840) t841
+    t842 <- rdI contacts ((30 * i840) + 3)
+    wrI prev ((4 * i840) + 1) t842
+    t843 <- rdI contacts ((30 * i840) + 24)
+    wrI prev ((4 * i840) + 2) t843
+    t844 <- rdI contacts ((30 * i840) + 25)
+    wrI prev ((4 * i840) + 3) t844
+    t845 <- rdI bodyPrev ((2 * (truncate t841)) + 1)
     if (0.5 - t845) > 0 then do
-      wr bodyPrev (2.0 * t841) i840
+      wrI bodyPrev (2 * (truncate t841)) d840
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t841) + 1.0) (t845 + 1.0)
+    wrI bodyPrev ((2 * (truncate t841)) + 1) (t845 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t4 + (t1 * t7))
@@ -1753,58 +1778,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t131 = (t12 + (t1 * t13))
     let !t132 = (1.0 - (abs ((((((((((((((s77 - s77) + (s78 - s78)) + (s79 - s79)) + (s117 - s117)) + (s118 - s118)) + (s119 - s119)) + (s126 - s126)) + (s127 - s127)) + (s128 - s128)) + (s90 - s90)) + (s91 - s91)) + (s92 - s92)) + (t131 - t131)) + (s129 - s129))))
     if (if (t130 - t132) > 0 then t132 else t130) > 0 then do
-      wr pos (3.0 * i2) s77
-      wr pos ((3.0 * i2) + 1.0) s78
-      wr pos ((3.0 * i2) + 2.0) s79
-      wr vel (3.0 * i2) s117
-      wr vel ((3.0 * i2) + 1.0) s118
-      wr vel ((3.0 * i2) + 2.0) s119
-      wr axis (3.0 * i2) s126
-      wr axis ((3.0 * i2) + 1.0) s127
-      wr axis ((3.0 * i2) + 2.0) s128
-      wr normal (3.0 * i2) s90
-      wr normal ((3.0 * i2) + 1.0) s91
-      wr normal ((3.0 * i2) + 2.0) s92
-      wr scalars (6.0 * i2) t131
+      wrI pos (3 * i2) s77
+      wrI pos ((3 * i2) + 1) s78
+      wrI pos ((3 * i2) + 2) s79
+      wrI vel (3 * i2) s117
+      wrI vel ((3 * i2) + 1) s118
+      wrI vel ((3 * i2) + 2) s119
+      wrI axis (3 * i2) s126
+      wrI axis ((3 * i2) + 1) s127
+      wrI axis ((3 * i2) + 2) s128
+      wrI normal (3 * i2) s90
+      wrI normal ((3 * i2) + 1) s91
+      wrI normal ((3 * i2) + 2) s92
+      wrI scalars (6 * i2) t131
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t133 <- rd meta 1.0
-      wr meta 1.0 (t133 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t133 <- rdI meta 1
+      wrI meta 1 (t133 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1871,9 +1898,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s82 = ((t28 * t68) + (t56 * t8))
         let !s83 = ((t28 * t69) + (t56 * t9))
         let !s84 = ((t28 * t71) + (t56 * t10))
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
         let !t85 = (s57 + (s27 * s79))
         let !t86 = (s58 + (s27 * s80))
         let !t87 = (s59 + (s27 * s81))
@@ -1928,9 +1955,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s136 = ((t28 * t122) + (t56 * s82))
         let !s137 = ((t28 * t123) + (t56 * s83))
         let !s138 = ((t28 * t125) + (t56 * s84))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
         let !t139 = (s112 + (s27 * s133))
         let !t140 = (s113 + (s27 * s134))
         let !t141 = (s114 + (s27 * s135))
@@ -1985,9 +2012,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s190 = ((t28 * t176) + (t56 * s136))
         let !s191 = ((t28 * t177) + (t56 * s137))
         let !s192 = ((t28 * t179) + (t56 * s138))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
         let !t193 = (s166 + (s27 * s187))
         let !t194 = (s167 + (s27 * s188))
         let !t195 = (s168 + (s27 * s189))
@@ -2042,9 +2069,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s244 = ((t28 * t230) + (t56 * s190))
         let !s245 = ((t28 * t231) + (t56 * s191))
         let !s246 = ((t28 * t233) + (t56 * s192))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
         pure ()
       else do
         let !t247 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2083,18 +2110,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s280 = (if t279 > 0 then t276 else t2)
         let !s281 = (if t279 > 0 then t277 else t3)
         let !s282 = (if t279 > 0 then t278 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s280
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s281
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s282
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s280 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s281 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s282 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s280 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s281 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s282 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s280 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s281 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s282 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s280
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s281
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s282
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s280 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s281 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s282 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s280 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s281 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s282 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s280 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s281 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s282 + (negate t4))))
         pure ()
       pure ()
     pure ()

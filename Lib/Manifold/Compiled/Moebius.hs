@@ -28,34 +28,35 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (negate (4.0 * t6))
       let !t15 = (t12 * t14)
       let !t16 = (t8 + (t1 * (negate (t15 * t11))))
       let !t17 = (t9 + (t1 * (t14 + (negate (t15 * t12)))))
       let !t18 = (t10 + (t1 * (negate (t15 * t13))))
       if (1.0 - (abs (((t16 - t16) + (t17 - t17)) + (t18 - t18)))) > 0 then do
-        wr vel (3.0 * i3) t16
-        wr vel ((3.0 * i3) + 1.0) t17
-        wr vel ((3.0 * i3) + 2.0) t18
+        wrI vel (3 * i3) t16
+        wrI vel ((3 * i3) + 1) t17
+        wrI vel ((3 * i3) + 2) t18
         pure ()
       else do
-        t19 <- rd meta 1.0
-        wr meta 1.0 (t19 + 1.0)
+        t19 <- rdI meta 1
+        wrI meta 1 (t19 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,11 +66,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -79,81 +81,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -170,40 +181,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !s67 = (negate t32)
     let !s68 = (negate t33)
     let !s69 = (negate t34)
-    t70 <- rd meta 4.0
-    t71 <- rd meta 5.0
+    t70 <- rdI meta 4
+    t71 <- rdI meta 5
     let !s72 = (floorF (s67 / t71))
     let !s73 = (floorF (s68 / t71))
     let !s74 = (floorF (s69 / t71))
-    loop 0.0 3.0 $ \i75 -> do
-      loop 0.0 3.0 $ \i76 -> do
-        loop 0.0 3.0 $ \i77 -> do
-          let !s78 = ((s72 + i75) - 1.0)
-          let !s79 = ((s73 + i76) - 1.0)
-          let !s80 = ((s74 + i77) - 1.0)
+    loopI 0.0 3.0 $ \i75 -> do
+      let !d75 = fromIntegral i75 :: Double
+      loopI 0.0 3.0 $ \i76 -> do
+        let !d76 = fromIntegral i76 :: Double
+        loopI 0.0 3.0 $ \i77 -> do
+          let !d77 = fromIntegral i77 :: Double
+          let !s78 = ((s72 + d75) - 1.0)
+          let !s79 = ((s73 + d76) - 1.0)
+          let !s80 = ((s74 + d77) - 1.0)
           let !s81 = (((((s78 + 131072.0) * 262144.0) + (s79 + 131072.0)) * 262144.0) + (s80 + 131072.0))
           let !t82 = (((s78 * 7.3856093e7) + (s79 * 1.9349663e7)) + (s80 * 8.3492791e7))
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
-          t84 <- rd grid s83
-          t85 <- rd grid (t70 + s83)
-          loop t85 t84 $ \i86 -> do
-            t87 <- rd items i86
-            t88 <- rd cellOf t87
+          t84 <- rdI grid (truncate s83)
+          t85 <- rdI grid ((truncate t70) + (truncate s83))
+          loopI t85 t84 $ \i86 -> do
+            let !d86 = fromIntegral i86 :: Double
+            t87 <- rdI items i86
+            t88 <- rdI cellOf (truncate t87)
             if (0.5 - (abs (t88 - s81))) > 0 then do
-              if ((t87 - i31) + 0.5) > 0 then do
-                t89 <- rd pos (3.0 * t87)
-                t90 <- rd pos ((3.0 * t87) + 1.0)
-                t91 <- rd pos ((3.0 * t87) + 2.0)
-                t92 <- rd scalars ((6.0 * t87) + 5.0)
-                t93 <- rd scalars ((6.0 * t87) + 2.0)
+              if ((t87 - d31) + 0.5) > 0 then do
+                t89 <- rdI pos (3 * (truncate t87))
+                t90 <- rdI pos ((3 * (truncate t87)) + 1)
+                t91 <- rdI pos ((3 * (truncate t87)) + 2)
+                t92 <- rdI scalars ((6 * (truncate t87)) + 5)
+                t93 <- rdI scalars ((6 * (truncate t87)) + 2)
                 let !t94 = (t36 + t93)
                 let !t95 = (s67 + (negate t89))
                 let !t96 = (s68 + (negate t90))
                 let !t97 = (s69 + (negate t91))
                 let !t98 = ((t35 + t92) - (sqrt (((t95 * t95) + (t96 * t96)) + (t97 * t97))))
                 if (if (t94 - t98) > 0 then t98 else t94) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t87 + 1.0) * 64.0) + 16.0) i31 t87 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t87 + 1.0) * 64.0) + 16.0) + 2.0) t87 i31 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t87 + 1.0) * 64.0) + 16.0) d31 t87 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t87 + 1.0) * 64.0) + 16.0) + 2.0) t87 d31 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
                   pure ()
                 else do
                   pure ()
@@ -217,20 +232,21 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t99 <- rd normal (3.0 * i31)
-    t100 <- rd normal ((3.0 * i31) + 1.0)
-    t101 <- rd normal ((3.0 * i31) + 2.0)
+    t99 <- rdI normal (3 * i31)
+    t100 <- rdI normal ((3 * i31) + 1)
+    t101 <- rdI normal ((3 * i31) + 2)
     v102 <- newR 0.0
     v103 <- newR (-1.0)
-    loop 0.0 24.0 $ \i104 -> do
-      t105 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i104 * 4.0)) + 3.0))
-      t106 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i104 * 4.0)) + 3.0)) + 1.0)
-      t107 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i104 * 4.0)) + 3.0)) + 2.0)
+    loopI 0.0 24.0 $ \i104 -> do
+      let !d104 = fromIntegral i104 :: Double
+      t105 <- rdI verts (3 * ((((97 * i31) + 1) + (i104 * 4)) + 3))
+      t106 <- rdI verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 1)
+      t107 <- rdI verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 2)
       let !s108 = (0.4 - (abs t106))
       t109 <- getR v102
       if ((negate s108) - t109) > 0 then do
         setR v102 (negate s108)
-        setR v103 i104
+        setR v103 d104
         pure ()
       else do
         pure ()
@@ -238,9 +254,9 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t110 <- getR v102
     if t110 > 0 then do
       t111 <- getR v103
-      t112 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t111 * 4.0)) + 3.0))
-      t113 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t111 * 4.0)) + 3.0)) + 1.0)
-      t114 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t111 * 4.0)) + 3.0)) + 2.0)
+      t112 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3))
+      t113 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 1)
+      t114 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 2)
       let !t115 = (negate (signum t113))
       let !t116 = (sqrt (t115 * t115))
       let !s117 = ((if t116 > 0 then (recip (if (t116 - 1.0e-300) > 0 then t116 else 1.0e-300)) else 0.0) * t115)
@@ -250,23 +266,24 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v121 <- newR (-1.0e300)
       v122 <- newR (-1.0)
       v123 <- newR (-1.0)
-      loop 0.0 24.0 $ \i124 -> do
-        t125 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i124 * 4.0)) + 3.0))
-        t126 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i124 * 4.0)) + 3.0)) + 1.0)
-        t127 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i124 * 4.0)) + 3.0)) + 2.0)
+      loopI 0.0 24.0 $ \i124 -> do
+        let !d124 = fromIntegral i124 :: Double
+        t125 <- rdI verts (3 * ((((97 * i31) + 1) + (i124 * 4)) + 3))
+        t126 <- rdI verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 1)
+        t127 <- rdI verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 2)
         if (negate (0.4 - (abs t126))) > 0 then do
           let !s128 = ((t125 * s118) + (t127 * s119))
           t129 <- getR v120
           if (t129 - s128) > 0 then do
             setR v120 s128
-            setR v122 i124
+            setR v122 d124
             pure ()
           else do
             pure ()
           t130 <- getR v121
           if (s128 - t130) > 0 then do
             setR v121 s128
-            setR v123 i124
+            setR v123 d124
             pure ()
           else do
             pure ()
@@ -276,184 +293,184 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t131 <- getR v122
       t132 <- getR v123
-      t133 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t131 * 4.0)) + 3.0))
-      t134 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t131 * 4.0)) + 3.0)) + 1.0)
-      t135 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t131 * 4.0)) + 3.0)) + 2.0)
+      t133 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3))
+      t134 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 1)
+      t135 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 2)
       let !s136 = (negate (signum t134))
       let !s137 = (sqrt (s136 * s136))
       let !s138 = (0.4 - (abs t134))
-      t139 <- rd meta 2.0
-      t140 <- rd meta 3.0
+      t139 <- rdI meta 2
+      t140 <- rdI meta 3
       if (((8.0 * (if (1.0 - t140) > 0 then 1.0 else t140)) - t139) - 0.5) > 0 then do
-        wr meta 2.0 (t139 + 1.0)
-        t141 <- rd pos (3.0 * i31)
-        t142 <- rd pos ((3.0 * i31) + 1.0)
-        t143 <- rd pos ((3.0 * i31) + 2.0)
-        t144 <- rd normal (3.0 * i31)
-        t145 <- rd normal ((3.0 * i31) + 1.0)
-        t146 <- rd normal ((3.0 * i31) + 2.0)
-        t147 <- rd axis (3.0 * i31)
-        t148 <- rd axis ((3.0 * i31) + 1.0)
-        t149 <- rd axis ((3.0 * i31) + 2.0)
+        wrI meta 2 (t139 + 1.0)
+        t141 <- rdI pos (3 * i31)
+        t142 <- rdI pos ((3 * i31) + 1)
+        t143 <- rdI pos ((3 * i31) + 2)
+        t144 <- rdI normal (3 * i31)
+        t145 <- rdI normal ((3 * i31) + 1)
+        t146 <- rdI normal ((3 * i31) + 2)
+        t147 <- rdI axis (3 * i31)
+        t148 <- rdI axis ((3 * i31) + 1)
+        t149 <- rdI axis ((3 * i31) + 2)
         let !s150 = ((t145 * t149) - (t146 * t148))
         let !s151 = ((t146 * t147) - (t144 * t149))
         let !s152 = ((t144 * t148) - (t145 * t147))
-        t153 <- rd scalars (6.0 * i31)
-        t154 <- rd scalars ((6.0 * i31) + 5.0)
-        t155 <- rd scalars ((6.0 * i31) + 2.0)
-        t156 <- rd scalars ((6.0 * i31) + 3.0)
-        wr contacts (30.0 * t139) i31
-        wr contacts ((30.0 * t139) + 1.0) (-1.0)
-        wr contacts ((30.0 * t139) + 2.0) i31
-        wr contacts ((30.0 * t139) + 3.0) 8.0
-        wr contacts ((30.0 * t139) + 4.0) (negate ((t145 * ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)) * t144))
+        t153 <- rdI scalars (6 * i31)
+        t154 <- rdI scalars ((6 * i31) + 5)
+        t155 <- rdI scalars ((6 * i31) + 2)
+        t156 <- rdI scalars ((6 * i31) + 3)
+        wrI contacts (30 * (truncate t139)) d31
+        wrI contacts ((30 * (truncate t139)) + 1) (-1.0)
+        wrI contacts ((30 * (truncate t139)) + 2) d31
+        wrI contacts ((30 * (truncate t139)) + 3) 8.0
+        wrI contacts ((30 * (truncate t139)) + 4) (negate ((t145 * ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)) * t144))
         let !t157 = ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)
-        wr contacts (((30.0 * t139) + 4.0) + 1.0) (t157 + (negate ((t145 * t157) * t145)))
-        wr contacts (((30.0 * t139) + 4.0) + 2.0) (negate ((t145 * t157) * t146))
-        wr contacts ((30.0 * t139) + 7.0) (((negate ((t135 + (negate t143)) * t157)) * t144) + (((t133 + (negate t141)) * t157) * t146))
+        wrI contacts (((30 * (truncate t139)) + 4) + 1) (t157 + (negate ((t145 * t157) * t145)))
+        wrI contacts (((30 * (truncate t139)) + 4) + 2) (negate ((t145 * t157) * t146))
+        wrI contacts ((30 * (truncate t139)) + 7) (((negate ((t135 + (negate t143)) * t157)) * t144) + (((t133 + (negate t141)) * t157) * t146))
         let !t158 = (negate (t146 * t157))
-        wr contacts ((30.0 * t139) + 12.0) (t158 + (negate (((t144 * t158) + (t146 * (t144 * t157))) * t144)))
-        wr contacts (((30.0 * t139) + 12.0) + 1.0) (negate (((t144 * t158) + (t146 * (t144 * t157))) * t145))
+        wrI contacts ((30 * (truncate t139)) + 12) (t158 + (negate (((t144 * t158) + (t146 * (t144 * t157))) * t144)))
+        wrI contacts (((30 * (truncate t139)) + 12) + 1) (negate (((t144 * t158) + (t146 * (t144 * t157))) * t145))
         let !t159 = (t144 * t157)
-        wr contacts (((30.0 * t139) + 12.0) + 2.0) (t159 + (negate (((t144 * t158) + (t146 * t159)) * t146)))
+        wrI contacts (((30 * (truncate t139)) + 12) + 2) (t159 + (negate (((t144 * t158) + (t146 * t159)) * t146)))
         let !t160 = (t134 + (negate t142))
-        wr contacts ((30.0 * t139) + 15.0) ((((t160 * t159) * t144) + ((((t135 + (negate t143)) * t158) - ((t133 + (negate t141)) * t159)) * t145)) + ((negate (t160 * t158)) * t146))
-        wr contacts ((30.0 * t139) + 20.0) (if s137 > 0 then ((negate s138) / (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0)
-        wr contacts ((30.0 * t139) + 26.0) 1.0
-        wr contacts ((30.0 * t139) + 27.0) t133
-        wr contacts (((30.0 * t139) + 27.0) + 1.0) t134
-        wr contacts (((30.0 * t139) + 27.0) + 2.0) t135
+        wrI contacts ((30 * (truncate t139)) + 15) ((((t160 * t159) * t144) + ((((t135 + (negate t143)) * t158) - ((t133 + (negate t141)) * t159)) * t145)) + ((negate (t160 * t158)) * t146))
+        wrI contacts ((30 * (truncate t139)) + 20) (if s137 > 0 then ((negate s138) / (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0)
+        wrI contacts ((30 * (truncate t139)) + 26) 1.0
+        wrI contacts ((30 * (truncate t139)) + 27) t133
+        wrI contacts (((30 * (truncate t139)) + 27) + 1) t134
+        wrI contacts (((30 * (truncate t139)) + 27) + 2) t135
         if (-0.5) > 0 then do
-          t161 <- rd pos (-3.0)
-          t162 <- rd pos (-2.0)
-          t163 <- rd pos (-1.0)
-          t164 <- rd normal (-3.0)
-          t165 <- rd normal (-2.0)
-          t166 <- rd normal (-1.0)
-          t167 <- rd axis (-3.0)
-          t168 <- rd axis (-2.0)
-          t169 <- rd axis (-1.0)
+          t161 <- rdI pos (-3)
+          t162 <- rdI pos (-2)
+          t163 <- rdI pos (-1)
+          t164 <- rdI normal (-3)
+          t165 <- rdI normal (-2)
+          t166 <- rdI normal (-1)
+          t167 <- rdI axis (-3)
+          t168 <- rdI axis (-2)
+          t169 <- rdI axis (-1)
           let !s170 = ((t165 * t169) - (t166 * t168))
           let !s171 = ((t166 * t167) - (t164 * t169))
           let !s172 = ((t164 * t168) - (t165 * t167))
-          t173 <- rd scalars (-6.0)
-          t174 <- rd scalars (-1.0)
-          t175 <- rd scalars (-4.0)
-          t176 <- rd scalars (-3.0)
-          wr contacts ((30.0 * t139) + 8.0) (negate ((t165 * t157) * t164))
-          wr contacts (((30.0 * t139) + 8.0) + 1.0) (t157 + (negate ((t165 * t157) * t165)))
-          wr contacts (((30.0 * t139) + 8.0) + 2.0) (negate ((t165 * t157) * t166))
-          wr contacts ((30.0 * t139) + 11.0) (((negate ((t135 + (negate t163)) * t157)) * t164) + (((t133 + (negate t161)) * t157) * t166))
-          wr contacts ((30.0 * t139) + 16.0) (t158 + (negate (((t164 * t158) + (t166 * t159)) * t164)))
-          wr contacts (((30.0 * t139) + 16.0) + 1.0) (negate (((t164 * t158) + (t166 * t159)) * t165))
-          wr contacts (((30.0 * t139) + 16.0) + 2.0) (t159 + (negate (((t164 * t158) + (t166 * t159)) * t166)))
+          t173 <- rdI scalars (-6)
+          t174 <- rdI scalars (-1)
+          t175 <- rdI scalars (-4)
+          t176 <- rdI scalars (-3)
+          wrI contacts ((30 * (truncate t139)) + 8) (negate ((t165 * t157) * t164))
+          wrI contacts (((30 * (truncate t139)) + 8) + 1) (t157 + (negate ((t165 * t157) * t165)))
+          wrI contacts (((30 * (truncate t139)) + 8) + 2) (negate ((t165 * t157) * t166))
+          wrI contacts ((30 * (truncate t139)) + 11) (((negate ((t135 + (negate t163)) * t157)) * t164) + (((t133 + (negate t161)) * t157) * t166))
+          wrI contacts ((30 * (truncate t139)) + 16) (t158 + (negate (((t164 * t158) + (t166 * t159)) * t164)))
+          wrI contacts (((30 * (truncate t139)) + 16) + 1) (negate (((t164 * t158) + (t166 * t159)) * t165))
+          wrI contacts (((30 * (truncate t139)) + 16) + 2) (t159 + (negate (((t164 * t158) + (t166 * t159)) * t166)))
           let !t177 = (t134 + (negate t162))
-          wr contacts ((30.0 * t139) + 19.0) ((((t177 * t159) * t164) + ((((t135 + (negate t163)) * t158) - ((t133 + (negate t161)) * t159)) * t165)) + ((negate (t177 * t158)) * t166))
+          wrI contacts ((30 * (truncate t139)) + 19) ((((t177 * t159) * t164) + ((((t135 + (negate t163)) * t158) - ((t133 + (negate t161)) * t159)) * t165)) + ((negate (t177 * t158)) * t166))
           pure ()
         else do
-          wr contacts ((30.0 * t139) + 8.0) 0.0
-          wr contacts (((30.0 * t139) + 8.0) + 1.0) 0.0
-          wr contacts (((30.0 * t139) + 8.0) + 2.0) 0.0
-          wr contacts ((30.0 * t139) + 11.0) 0.0
-          wr contacts ((30.0 * t139) + 16.0) 0.0
-          wr contacts (((30.0 * t139) + 16.0) + 1.0) 0.0
-          wr contacts (((30.0 * t139) + 16.0) + 2.0) 0.0
-          wr contacts ((30.0 * t139) + 19.0) 0.0
+          wrI contacts ((30 * (truncate t139)) + 8) 0.0
+          wrI contacts (((30 * (truncate t139)) + 8) + 1) 0.0
+          wrI contacts (((30 * (truncate t139)) + 8) + 2) 0.0
+          wrI contacts ((30 * (truncate t139)) + 11) 0.0
+          wrI contacts ((30 * (truncate t139)) + 16) 0.0
+          wrI contacts (((30 * (truncate t139)) + 16) + 1) 0.0
+          wrI contacts (((30 * (truncate t139)) + 16) + 2) 0.0
+          wrI contacts ((30 * (truncate t139)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t178 <- rd meta 6.0
-        wr meta 6.0 (t178 + 1.0)
+        t178 <- rdI meta 6
+        wrI meta 6 (t178 + 1.0)
         pure ()
       if (abs (t132 - t131)) > 0 then do
-        t179 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (t132 * 4.0)) + 3.0))
-        t180 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t132 * 4.0)) + 3.0)) + 1.0)
-        t181 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (t132 * 4.0)) + 3.0)) + 2.0)
+        t179 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3))
+        t180 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 1)
+        t181 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 2)
         let !s182 = (negate (signum t180))
         let !s183 = (sqrt (s182 * s182))
         let !s184 = (0.4 - (abs t180))
-        t185 <- rd meta 2.0
-        t186 <- rd meta 3.0
+        t185 <- rdI meta 2
+        t186 <- rdI meta 3
         if (((8.0 * (if (1.0 - t186) > 0 then 1.0 else t186)) - t185) - 0.5) > 0 then do
-          wr meta 2.0 (t185 + 1.0)
-          t187 <- rd pos (3.0 * i31)
-          t188 <- rd pos ((3.0 * i31) + 1.0)
-          t189 <- rd pos ((3.0 * i31) + 2.0)
-          t190 <- rd normal (3.0 * i31)
-          t191 <- rd normal ((3.0 * i31) + 1.0)
-          t192 <- rd normal ((3.0 * i31) + 2.0)
-          t193 <- rd axis (3.0 * i31)
-          t194 <- rd axis ((3.0 * i31) + 1.0)
-          t195 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t185 + 1.0)
+          t187 <- rdI pos (3 * i31)
+          t188 <- rdI pos ((3 * i31) + 1)
+          t189 <- rdI pos ((3 * i31) + 2)
+          t190 <- rdI normal (3 * i31)
+          t191 <- rdI normal ((3 * i31) + 1)
+          t192 <- rdI normal ((3 * i31) + 2)
+          t193 <- rdI axis (3 * i31)
+          t194 <- rdI axis ((3 * i31) + 1)
+          t195 <- rdI axis ((3 * i31) + 2)
           let !s196 = ((t191 * t195) - (t192 * t194))
           let !s197 = ((t192 * t193) - (t190 * t195))
           let !s198 = ((t190 * t194) - (t191 * t193))
-          t199 <- rd scalars (6.0 * i31)
-          t200 <- rd scalars ((6.0 * i31) + 5.0)
-          t201 <- rd scalars ((6.0 * i31) + 2.0)
-          t202 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t185) i31
-          wr contacts ((30.0 * t185) + 1.0) (-1.0)
-          wr contacts ((30.0 * t185) + 2.0) i31
-          wr contacts ((30.0 * t185) + 3.0) 9.0
-          wr contacts ((30.0 * t185) + 4.0) (negate ((t191 * ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)) * t190))
+          t199 <- rdI scalars (6 * i31)
+          t200 <- rdI scalars ((6 * i31) + 5)
+          t201 <- rdI scalars ((6 * i31) + 2)
+          t202 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t185)) d31
+          wrI contacts ((30 * (truncate t185)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t185)) + 2) d31
+          wrI contacts ((30 * (truncate t185)) + 3) 9.0
+          wrI contacts ((30 * (truncate t185)) + 4) (negate ((t191 * ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)) * t190))
           let !t203 = ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)
-          wr contacts (((30.0 * t185) + 4.0) + 1.0) (t203 + (negate ((t191 * t203) * t191)))
-          wr contacts (((30.0 * t185) + 4.0) + 2.0) (negate ((t191 * t203) * t192))
-          wr contacts ((30.0 * t185) + 7.0) (((negate ((t181 + (negate t189)) * t203)) * t190) + (((t179 + (negate t187)) * t203) * t192))
+          wrI contacts (((30 * (truncate t185)) + 4) + 1) (t203 + (negate ((t191 * t203) * t191)))
+          wrI contacts (((30 * (truncate t185)) + 4) + 2) (negate ((t191 * t203) * t192))
+          wrI contacts ((30 * (truncate t185)) + 7) (((negate ((t181 + (negate t189)) * t203)) * t190) + (((t179 + (negate t187)) * t203) * t192))
           let !t204 = (negate (t192 * t203))
-          wr contacts ((30.0 * t185) + 12.0) (t204 + (negate (((t190 * t204) + (t192 * (t190 * t203))) * t190)))
-          wr contacts (((30.0 * t185) + 12.0) + 1.0) (negate (((t190 * t204) + (t192 * (t190 * t203))) * t191))
+          wrI contacts ((30 * (truncate t185)) + 12) (t204 + (negate (((t190 * t204) + (t192 * (t190 * t203))) * t190)))
+          wrI contacts (((30 * (truncate t185)) + 12) + 1) (negate (((t190 * t204) + (t192 * (t190 * t203))) * t191))
           let !t205 = (t190 * t203)
-          wr contacts (((30.0 * t185) + 12.0) + 2.0) (t205 + (negate (((t190 * t204) + (t192 * t205)) * t192)))
+          wrI contacts (((30 * (truncate t185)) + 12) + 2) (t205 + (negate (((t190 * t204) + (t192 * t205)) * t192)))
           let !t206 = (t180 + (negate t188))
-          wr contacts ((30.0 * t185) + 15.0) ((((t206 * t205) * t190) + ((((t181 + (negate t189)) * t204) - ((t179 + (negate t187)) * t205)) * t191)) + ((negate (t206 * t204)) * t192))
-          wr contacts ((30.0 * t185) + 20.0) (if s183 > 0 then ((negate s184) / (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0)
-          wr contacts ((30.0 * t185) + 26.0) 1.0
-          wr contacts ((30.0 * t185) + 27.0) t179
-          wr contacts (((30.0 * t185) + 27.0) + 1.0) t180
-          wr contacts (((30.0 * t185) + 27.0) + 2.0) t181
+          wrI contacts ((30 * (truncate t185)) + 15) ((((t206 * t205) * t190) + ((((t181 + (negate t189)) * t204) - ((t179 + (negate t187)) * t205)) * t191)) + ((negate (t206 * t204)) * t192))
+          wrI contacts ((30 * (truncate t185)) + 20) (if s183 > 0 then ((negate s184) / (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0)
+          wrI contacts ((30 * (truncate t185)) + 26) 1.0
+          wrI contacts ((30 * (truncate t185)) + 27) t179
+          wrI contacts (((30 * (truncate t185)) + 27) + 1) t180
+          wrI contacts (((30 * (truncate t185)) + 27) + 2) t181
           if (-0.5) > 0 then do
-            t207 <- rd pos (-3.0)
-            t208 <- rd pos (-2.0)
-            t209 <- rd pos (-1.0)
-            t210 <- rd normal (-3.0)
-            t211 <- rd normal (-2.0)
-            t212 <- rd normal (-1.0)
-            t213 <- rd axis (-3.0)
-            t214 <- rd axis (-2.0)
-            t215 <- rd axis (-1.0)
+            t207 <- rdI pos (-3)
+            t208 <- rdI pos (-2)
+            t209 <- rdI pos (-1)
+            t210 <- rdI normal (-3)
+            t211 <- rdI normal (-2)
+            t212 <- rdI normal (-1)
+            t213 <- rdI axis (-3)
+            t214 <- rdI axis (-2)
+            t215 <- rdI axis (-1)
             let !s216 = ((t211 * t215) - (t212 * t214))
             let !s217 = ((t212 * t213) - (t210 * t215))
             let !s218 = ((t210 * t214) - (t211 * t213))
-            t219 <- rd scalars (-6.0)
-            t220 <- rd scalars (-1.0)
-            t221 <- rd scalars (-4.0)
-            t222 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t185) + 8.0) (negate ((t211 * t203) * t210))
-            wr contacts (((30.0 * t185) + 8.0) + 1.0) (t203 + (negate ((t211 * t203) * t211)))
-            wr contacts (((30.0 * t185) + 8.0) + 2.0) (negate ((t211 * t203) * t212))
-            wr contacts ((30.0 * t185) + 11.0) (((negate ((t181 + (negate t209)) * t203)) * t210) + (((t179 + (negate t207)) * t203) * t212))
-            wr contacts ((30.0 * t185) + 16.0) (t204 + (negate (((t210 * t204) + (t212 * t205)) * t210)))
-            wr contacts (((30.0 * t185) + 16.0) + 1.0) (negate (((t210 * t204) + (t212 * t205)) * t211))
-            wr contacts (((30.0 * t185) + 16.0) + 2.0) (t205 + (negate (((t210 * t204) + (t212 * t205)) * t212)))
+            t219 <- rdI scalars (-6)
+            t220 <- rdI scalars (-1)
+            t221 <- rdI scalars (-4)
+            t222 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t185)) + 8) (negate ((t211 * t203) * t210))
+            wrI contacts (((30 * (truncate t185)) + 8) + 1) (t203 + (negate ((t211 * t203) * t211)))
+            wrI contacts (((30 * (truncate t185)) + 8) + 2) (negate ((t211 * t203) * t212))
+            wrI contacts ((30 * (truncate t185)) + 11) (((negate ((t181 + (negate t209)) * t203)) * t210) + (((t179 + (negate t207)) * t203) * t212))
+            wrI contacts ((30 * (truncate t185)) + 16) (t204 + (negate (((t210 * t204) + (t212 * t205)) * t210)))
+            wrI contacts (((30 * (truncate t185)) + 16) + 1) (negate (((t210 * t204) + (t212 * t205)) * t211))
+            wrI contacts (((30 * (truncate t185)) + 16) + 2) (t205 + (negate (((t210 * t204) + (t212 * t205)) * t212)))
             let !t223 = (t180 + (negate t208))
-            wr contacts ((30.0 * t185) + 19.0) ((((t223 * t205) * t210) + ((((t181 + (negate t209)) * t204) - ((t179 + (negate t207)) * t205)) * t211)) + ((negate (t223 * t204)) * t212))
+            wrI contacts ((30 * (truncate t185)) + 19) ((((t223 * t205) * t210) + ((((t181 + (negate t209)) * t204) - ((t179 + (negate t207)) * t205)) * t211)) + ((negate (t223 * t204)) * t212))
             pure ()
           else do
-            wr contacts ((30.0 * t185) + 8.0) 0.0
-            wr contacts (((30.0 * t185) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t185) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t185) + 11.0) 0.0
-            wr contacts ((30.0 * t185) + 16.0) 0.0
-            wr contacts (((30.0 * t185) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t185) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t185) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t185)) + 8) 0.0
+            wrI contacts (((30 * (truncate t185)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t185)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t185)) + 11) 0.0
+            wrI contacts ((30 * (truncate t185)) + 16) 0.0
+            wrI contacts (((30 * (truncate t185)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t185)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t185)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t224 <- rd meta 6.0
-          wr meta 6.0 (t224 + 1.0)
+          t224 <- rdI meta 6
+          wrI meta 6 (t224 + 1.0)
           pure ()
         pure ()
       else do
@@ -461,15 +478,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t225 <- rd verts (3.0 * (97.0 * i31))
-    t226 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t227 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t225 <- rdI verts (3 * (97 * i31))
+    t226 <- rdI verts ((3 * (97 * i31)) + 1)
+    t227 <- rdI verts ((3 * (97 * i31)) + 2)
     v228 <- newR 1.0
-    loop 0.0 24.0 $ \i229 -> do
-      t230 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i229 * 4.0)) + 3.0))
-      t231 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i229 * 4.0)) + 3.0)) + 1.0)
-      t232 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i229 * 4.0)) + 3.0)) + 2.0)
-      t233 <- rd radii ((24.0 * i31) + i229)
+    loopI 0.0 24.0 $ \i229 -> do
+      let !d229 = fromIntegral i229 :: Double
+      t230 <- rdI verts (3 * ((((97 * i31) + 1) + (i229 * 4)) + 3))
+      t231 <- rdI verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 1)
+      t232 <- rdI verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 2)
+      t233 <- rdI radii ((24 * i31) + i229)
       t234 <- getR v228
       let !t235 = (t230 + (negate t225))
       let !t236 = (t231 + (negate t226))
@@ -486,25 +504,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v244 <- newR 0.0
       v245 <- newR 0.0
       v246 <- newR 0.0
-      loop 0.0 24.0 $ \i247 -> do
-        t248 <- rd radii ((24.0 * i31) + i247)
-        loop 6.0 12.0 $ \i249 -> do
-          let !t250 = (i247 + i249)
-          t251 <- rd radii ((24.0 * i31) + (t250 - (24.0 * (floorF (t250 / 24.0)))))
-          loop 1.0 4.0 $ \i252 -> do
-            t253 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i247 * 4.0)) + (i252 - 1.0)))
-            t254 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i247 * 4.0)) + (i252 - 1.0))) + 1.0)
-            t255 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i247 * 4.0)) + (i252 - 1.0))) + 2.0)
-            t256 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i247 * 4.0)) + i252))
-            t257 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i247 * 4.0)) + i252)) + 1.0)
-            t258 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i247 * 4.0)) + i252)) + 2.0)
-            loop 1.0 4.0 $ \i259 -> do
-              t260 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (i259 - 1.0)))
-              t261 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (i259 - 1.0))) + 1.0)
-              t262 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (i259 - 1.0))) + 2.0)
-              t263 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + i259))
-              t264 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + i259)) + 1.0)
-              t265 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + i259)) + 2.0)
+      loopI 0.0 24.0 $ \i247 -> do
+        let !d247 = fromIntegral i247 :: Double
+        t248 <- rdI radii ((24 * i31) + i247)
+        loopI 6.0 12.0 $ \i249 -> do
+          let !d249 = fromIntegral i249 :: Double
+          let !t250 = (d247 + d249)
+          t251 <- rdI radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0))))))
+          loopI 1.0 4.0 $ \i252 -> do
+            let !d252 = fromIntegral i252 :: Double
+            t253 <- rdI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1)))
+            t254 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 1)
+            t255 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 2)
+            t256 <- rdI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + i252))
+            t257 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 1)
+            t258 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 2)
+            loopI 1.0 4.0 $ \i259 -> do
+              let !d259 = fromIntegral i259 :: Double
+              t260 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))))
+              t261 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0))
+              t262 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0))
+              t263 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)))
+              t264 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0))
+              t265 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0))
               t266 <- getR v240
               let !t267 = (negate t260)
               let !t268 = (t263 + t267)
@@ -537,19 +559,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t295 = (if (negate t288) > 0 then (if (negate t291) > 0 then 0.0 else t291) else (if t292 > 0 then (if (negate t294) > 0 then 0.0 else t294) else t287))
               let !t296 = (if t292 > 0 then 1.0 else t288)
               let !t297 = (if (negate t296) > 0 then 0.0 else t296)
-              let !t298 = ((0.5 * ((t248 - ((t248 * (i252 + t295)) / 4.0)) + (t251 - ((t251 * (i259 + t297)) / 4.0)))) - t266)
+              let !t298 = ((0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0)))) - t266)
               let !t299 = ((t253 + (t295 * t274)) + (negate (t260 + (t297 * t268))))
               let !t300 = ((t254 + (t295 * t275)) + (negate (t261 + (t297 * t270))))
               let !t301 = ((t255 + (t295 * t276)) + (negate (t262 + (t297 * t272))))
               let !t302 = ((0.3 * ((if (t251 - t248) > 0 then t248 else t251) / 4.0)) - (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301))))
               if (if (t298 - t302) > 0 then t302 else t298) > 0 then do
-                setR v240 (0.5 * ((t248 - ((t248 * (i252 + t295)) / 4.0)) + (t251 - ((t251 * (i259 + t297)) / 4.0))))
-                t303 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i247 * 4.0)))
-                t304 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i247 * 4.0))) + 1.0)
-                t305 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i247 * 4.0))) + 2.0)
-                t306 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)))
-                t307 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0)
-                t308 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0)
+                setR v240 (0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0))))
+                t303 <- rdI verts (3 * (((97 * i31) + 1) + (i247 * 4)))
+                t304 <- rdI verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 1)
+                t305 <- rdI verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 2)
+                t306 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))))
+                t307 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0))
+                t308 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0))
                 setR v241 (t253 + (t295 * t274))
                 setR v242 (t254 + (t295 * t275))
                 setR v243 (t255 + (t295 * t276))
@@ -597,89 +619,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s339 = (t338 * t335)
         let !s340 = (t338 * t325)
         let !s341 = (t338 * t336)
-        t342 <- rd meta 2.0
-        t343 <- rd meta 3.0
+        t342 <- rdI meta 2
+        t343 <- rdI meta 3
         if (((8.0 * (if (1.0 - t343) > 0 then 1.0 else t343)) - t342) - 0.5) > 0 then do
-          wr meta 2.0 (t342 + 1.0)
-          t344 <- rd pos (3.0 * i31)
-          t345 <- rd pos ((3.0 * i31) + 1.0)
-          t346 <- rd pos ((3.0 * i31) + 2.0)
-          t347 <- rd normal (3.0 * i31)
-          t348 <- rd normal ((3.0 * i31) + 1.0)
-          t349 <- rd normal ((3.0 * i31) + 2.0)
-          t350 <- rd axis (3.0 * i31)
-          t351 <- rd axis ((3.0 * i31) + 1.0)
-          t352 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t342 + 1.0)
+          t344 <- rdI pos (3 * i31)
+          t345 <- rdI pos ((3 * i31) + 1)
+          t346 <- rdI pos ((3 * i31) + 2)
+          t347 <- rdI normal (3 * i31)
+          t348 <- rdI normal ((3 * i31) + 1)
+          t349 <- rdI normal ((3 * i31) + 2)
+          t350 <- rdI axis (3 * i31)
+          t351 <- rdI axis ((3 * i31) + 1)
+          t352 <- rdI axis ((3 * i31) + 2)
           let !s353 = ((t348 * t352) - (t349 * t351))
           let !s354 = ((t349 * t350) - (t347 * t352))
           let !s355 = ((t347 * t351) - (t348 * t350))
-          t356 <- rd scalars (6.0 * i31)
-          t357 <- rd scalars ((6.0 * i31) + 5.0)
-          t358 <- rd scalars ((6.0 * i31) + 2.0)
-          t359 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t342) i31
-          wr contacts ((30.0 * t342) + 1.0) (-1.0)
-          wr contacts ((30.0 * t342) + 2.0) i31
-          wr contacts ((30.0 * t342) + 3.0) 12.0
-          wr contacts ((30.0 * t342) + 4.0) (s339 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t347)))
-          wr contacts (((30.0 * t342) + 4.0) + 1.0) (s340 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t348)))
-          wr contacts (((30.0 * t342) + 4.0) + 2.0) (s341 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t349)))
-          wr contacts ((30.0 * t342) + 7.0) 0.0
-          wr contacts ((30.0 * t342) + 12.0) 0.0
-          wr contacts (((30.0 * t342) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t342) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t342) + 15.0) 0.0
-          wr contacts ((30.0 * t342) + 20.0) t320
-          wr contacts ((30.0 * t342) + 26.0) 0.6
-          wr contacts ((30.0 * t342) + 27.0) t321
-          wr contacts (((30.0 * t342) + 27.0) + 1.0) t322
-          wr contacts (((30.0 * t342) + 27.0) + 2.0) t323
+          t356 <- rdI scalars (6 * i31)
+          t357 <- rdI scalars ((6 * i31) + 5)
+          t358 <- rdI scalars ((6 * i31) + 2)
+          t359 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t342)) d31
+          wrI contacts ((30 * (truncate t342)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t342)) + 2) d31
+          wrI contacts ((30 * (truncate t342)) + 3) 12.0
+          wrI contacts ((30 * (truncate t342)) + 4) (s339 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t347)))
+          wrI contacts (((30 * (truncate t342)) + 4) + 1) (s340 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t348)))
+          wrI contacts (((30 * (truncate t342)) + 4) + 2) (s341 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t349)))
+          wrI contacts ((30 * (truncate t342)) + 7) 0.0
+          wrI contacts ((30 * (truncate t342)) + 12) 0.0
+          wrI contacts (((30 * (truncate t342)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t342)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t342)) + 15) 0.0
+          wrI contacts ((30 * (truncate t342)) + 20) t320
+          wrI contacts ((30 * (truncate t342)) + 26) 0.6
+          wrI contacts ((30 * (truncate t342)) + 27) t321
+          wrI contacts (((30 * (truncate t342)) + 27) + 1) t322
+          wrI contacts (((30 * (truncate t342)) + 27) + 2) t323
           if (-0.5) > 0 then do
-            t360 <- rd pos (-3.0)
-            t361 <- rd pos (-2.0)
-            t362 <- rd pos (-1.0)
-            t363 <- rd normal (-3.0)
-            t364 <- rd normal (-2.0)
-            t365 <- rd normal (-1.0)
-            t366 <- rd axis (-3.0)
-            t367 <- rd axis (-2.0)
-            t368 <- rd axis (-1.0)
+            t360 <- rdI pos (-3)
+            t361 <- rdI pos (-2)
+            t362 <- rdI pos (-1)
+            t363 <- rdI normal (-3)
+            t364 <- rdI normal (-2)
+            t365 <- rdI normal (-1)
+            t366 <- rdI axis (-3)
+            t367 <- rdI axis (-2)
+            t368 <- rdI axis (-1)
             let !s369 = ((t364 * t368) - (t365 * t367))
             let !s370 = ((t365 * t366) - (t363 * t368))
             let !s371 = ((t363 * t367) - (t364 * t366))
-            t372 <- rd scalars (-6.0)
-            t373 <- rd scalars (-1.0)
-            t374 <- rd scalars (-4.0)
-            t375 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t342) + 8.0) (s339 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t363)))
-            wr contacts (((30.0 * t342) + 8.0) + 1.0) (s340 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t364)))
-            wr contacts (((30.0 * t342) + 8.0) + 2.0) (s341 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t365)))
+            t372 <- rdI scalars (-6)
+            t373 <- rdI scalars (-1)
+            t374 <- rdI scalars (-4)
+            t375 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t342)) + 8) (s339 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t363)))
+            wrI contacts (((30 * (truncate t342)) + 8) + 1) (s340 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t364)))
+            wrI contacts (((30 * (truncate t342)) + 8) + 2) (s341 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t365)))
             let !t376 = (t322 + (negate t361))
             let !t377 = (t323 + (negate t362))
             let !t378 = (t321 + (negate t360))
-            wr contacts ((30.0 * t342) + 11.0) (((((t376 * s341) - (t377 * s340)) * t363) + (((t377 * s339) - (t378 * s341)) * t364)) + (((t378 * s340) - (t376 * s339)) * t365))
+            wrI contacts ((30 * (truncate t342)) + 11) (((((t376 * s341) - (t377 * s340)) * t363) + (((t377 * s339) - (t378 * s341)) * t364)) + (((t378 * s340) - (t376 * s339)) * t365))
             let !t379 = ((t348 * s341) - (t349 * s340))
-            wr contacts ((30.0 * t342) + 16.0) (t379 + (negate ((((t363 * t379) + (t364 * ((t349 * s339) - (t347 * s341)))) + (t365 * ((t347 * s340) - (t348 * s339)))) * t363)))
+            wrI contacts ((30 * (truncate t342)) + 16) (t379 + (negate ((((t363 * t379) + (t364 * ((t349 * s339) - (t347 * s341)))) + (t365 * ((t347 * s340) - (t348 * s339)))) * t363)))
             let !t380 = ((t349 * s339) - (t347 * s341))
-            wr contacts (((30.0 * t342) + 16.0) + 1.0) (t380 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * ((t347 * s340) - (t348 * s339)))) * t364)))
+            wrI contacts (((30 * (truncate t342)) + 16) + 1) (t380 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * ((t347 * s340) - (t348 * s339)))) * t364)))
             let !t381 = ((t347 * s340) - (t348 * s339))
-            wr contacts (((30.0 * t342) + 16.0) + 2.0) (t381 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * t381)) * t365)))
-            wr contacts ((30.0 * t342) + 19.0) (((((t376 * t381) - (t377 * t380)) * t363) + (((t377 * t379) - (t378 * t381)) * t364)) + (((t378 * t380) - (t376 * t379)) * t365))
+            wrI contacts (((30 * (truncate t342)) + 16) + 2) (t381 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * t381)) * t365)))
+            wrI contacts ((30 * (truncate t342)) + 19) (((((t376 * t381) - (t377 * t380)) * t363) + (((t377 * t379) - (t378 * t381)) * t364)) + (((t378 * t380) - (t376 * t379)) * t365))
             pure ()
           else do
-            wr contacts ((30.0 * t342) + 8.0) 0.0
-            wr contacts (((30.0 * t342) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t342) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t342) + 11.0) 0.0
-            wr contacts ((30.0 * t342) + 16.0) 0.0
-            wr contacts (((30.0 * t342) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t342) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t342) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t342)) + 8) 0.0
+            wrI contacts (((30 * (truncate t342)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t342)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t342)) + 11) 0.0
+            wrI contacts ((30 * (truncate t342)) + 16) 0.0
+            wrI contacts (((30 * (truncate t342)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t342)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t342)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t382 <- rd meta 6.0
-          wr meta 6.0 (t382 + 1.0)
+          t382 <- rdI meta 6
+          wrI meta 6 (t382 + 1.0)
           pure ()
         pure ()
       else do
@@ -692,43 +714,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -736,12 +759,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -749,20 +772,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -773,18 +796,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -792,98 +816,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1102,12 +1126,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s353 = ((t139 * (t338 * (t352 * t348))) + (t174 * s301))
       let !s354 = ((t139 * (t338 * (t352 * t349))) + (t174 * s302))
       let !s355 = ((t139 * (t338 * (t352 * t350))) + (t174 * s303))
-      t356 <- rd mouse 4.0
-      t357 <- rd mouse 5.0
-      t358 <- rd mouse 6.0
-      t359 <- rd mouse 7.0
-      t360 <- rd mouse 8.0
-      t361 <- rd mouse 9.0
+      t356 <- rdI mouse 4
+      t357 <- rdI mouse 5
+      t358 <- rdI mouse 6
+      t359 <- rdI mouse 7
+      t360 <- rdI mouse 8
+      t361 <- rdI mouse 9
       let !t362 = (recip t101)
       let !t363 = (6.283185307179586 * t359)
       let !s364 = (recip (t103 * ((((2.0 * t362) * t360) * t363) + (t103 * ((t362 * t363) * t363)))))
@@ -1118,68 +1142,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s369 = (s335 + (negate t356))
       let !s370 = (s336 + (negate t357))
       let !s371 = (s337 + (negate t358))
-      t372 <- rd mouse 10.0
-      t373 <- rd scalars ((6.0 * t100) + 2.0)
-      t374 <- rd scalars ((6.0 * t100) + 3.0)
-      t375 <- rd vel (3.0 * t100)
-      t376 <- rd vel ((3.0 * t100) + 1.0)
-      t377 <- rd vel ((3.0 * t100) + 2.0)
-      t378 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t375 + ((t373 * t372) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t376 + ((t373 * t372) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t377 + ((t373 * t372) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t378 + ((t374 * t372) * (((((s367 * t112) - (s368 * t111)) * t107) + (((s368 * t110) - (s366 * t112)) * t108)) + (((s366 * t111) - (s367 * t110)) * t109))))
-      t379 <- rd mouse 11.0
-      t380 <- rd scalars ((6.0 * t100) + 2.0)
-      t381 <- rd scalars ((6.0 * t100) + 3.0)
-      t382 <- rd vel (3.0 * t100)
-      t383 <- rd vel ((3.0 * t100) + 1.0)
-      t384 <- rd vel ((3.0 * t100) + 2.0)
-      t385 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t382 + ((t380 * t379) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t383 + ((t380 * t379) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t384 + ((t380 * t379) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t385 + ((t381 * t379) * (((((s367 * s115) - (s368 * s114)) * t107) + (((s368 * s113) - (s366 * s115)) * t108)) + (((s366 * s114) - (s367 * s113)) * t109))))
+      t372 <- rdI mouse 10
+      t373 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t374 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t375 <- rdI vel (3 * (truncate t100))
+      t376 <- rdI vel ((3 * (truncate t100)) + 1)
+      t377 <- rdI vel ((3 * (truncate t100)) + 2)
+      t378 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t375 + ((t373 * t372) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t376 + ((t373 * t372) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t377 + ((t373 * t372) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t378 + ((t374 * t372) * (((((s367 * t112) - (s368 * t111)) * t107) + (((s368 * t110) - (s366 * t112)) * t108)) + (((s366 * t111) - (s367 * t110)) * t109))))
+      t379 <- rdI mouse 11
+      t380 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t381 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t382 <- rdI vel (3 * (truncate t100))
+      t383 <- rdI vel ((3 * (truncate t100)) + 1)
+      t384 <- rdI vel ((3 * (truncate t100)) + 2)
+      t385 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t382 + ((t380 * t379) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t383 + ((t380 * t379) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t384 + ((t380 * t379) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t385 + ((t381 * t379) * (((((s367 * s115) - (s368 * s114)) * t107) + (((s368 * s113) - (s366 * s115)) * t108)) + (((s366 * s114) - (s367 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i386 -> do
-    loop 0.0 t9 $ \i387 -> do
-      t388 <- rd contacts (30.0 * i387)
-      t389 <- rd contacts ((30.0 * i387) + 1.0)
-      t390 <- rd contacts ((30.0 * i387) + 12.0)
-      t391 <- rd contacts (((30.0 * i387) + 12.0) + 1.0)
-      t392 <- rd contacts (((30.0 * i387) + 12.0) + 2.0)
-      t393 <- rd contacts ((30.0 * i387) + 15.0)
-      t394 <- rd contacts ((30.0 * i387) + 16.0)
-      t395 <- rd contacts (((30.0 * i387) + 16.0) + 1.0)
-      t396 <- rd contacts (((30.0 * i387) + 16.0) + 2.0)
-      t397 <- rd contacts ((30.0 * i387) + 19.0)
-      t398 <- rd contacts ((30.0 * i387) + 4.0)
-      t399 <- rd contacts (((30.0 * i387) + 4.0) + 1.0)
-      t400 <- rd contacts (((30.0 * i387) + 4.0) + 2.0)
-      t401 <- rd contacts ((30.0 * i387) + 7.0)
-      t402 <- rd contacts ((30.0 * i387) + 8.0)
-      t403 <- rd contacts (((30.0 * i387) + 8.0) + 1.0)
-      t404 <- rd contacts (((30.0 * i387) + 8.0) + 2.0)
-      t405 <- rd contacts ((30.0 * i387) + 11.0)
-      t406 <- rd contacts ((30.0 * i387) + 26.0)
-      t407 <- rd contacts ((30.0 * i387) + 24.0)
-      t408 <- rd contacts ((30.0 * i387) + 25.0)
-      t409 <- rd contacts ((30.0 * i387) + 22.0)
-      t410 <- rd vel (3.0 * t388)
-      t411 <- rd vel ((3.0 * t388) + 1.0)
-      t412 <- rd vel ((3.0 * t388) + 2.0)
-      t413 <- rd scalars ((6.0 * t388) + 1.0)
+  loopI 0.0 t1 $ \i386 -> do
+    let !d386 = fromIntegral i386 :: Double
+    loopI 0.0 t9 $ \i387 -> do
+      let !d387 = fromIntegral i387 :: Double
+      t388 <- rdI contacts (30 * i387)
+      t389 <- rdI contacts ((30 * i387) + 1)
+      t390 <- rdI contacts ((30 * i387) + 12)
+      t391 <- rdI contacts (((30 * i387) + 12) + 1)
+      t392 <- rdI contacts (((30 * i387) + 12) + 2)
+      t393 <- rdI contacts ((30 * i387) + 15)
+      t394 <- rdI contacts ((30 * i387) + 16)
+      t395 <- rdI contacts (((30 * i387) + 16) + 1)
+      t396 <- rdI contacts (((30 * i387) + 16) + 2)
+      t397 <- rdI contacts ((30 * i387) + 19)
+      t398 <- rdI contacts ((30 * i387) + 4)
+      t399 <- rdI contacts (((30 * i387) + 4) + 1)
+      t400 <- rdI contacts (((30 * i387) + 4) + 2)
+      t401 <- rdI contacts ((30 * i387) + 7)
+      t402 <- rdI contacts ((30 * i387) + 8)
+      t403 <- rdI contacts (((30 * i387) + 8) + 1)
+      t404 <- rdI contacts (((30 * i387) + 8) + 2)
+      t405 <- rdI contacts ((30 * i387) + 11)
+      t406 <- rdI contacts ((30 * i387) + 26)
+      t407 <- rdI contacts ((30 * i387) + 24)
+      t408 <- rdI contacts ((30 * i387) + 25)
+      t409 <- rdI contacts ((30 * i387) + 22)
+      t410 <- rdI vel (3 * (truncate t388))
+      t411 <- rdI vel ((3 * (truncate t388)) + 1)
+      t412 <- rdI vel ((3 * (truncate t388)) + 2)
+      t413 <- rdI scalars ((6 * (truncate t388)) + 1)
       v414 <- newR 0.0
       if (t389 + 0.5) > 0 then do
-        t415 <- rd vel (3.0 * t389)
-        t416 <- rd vel ((3.0 * t389) + 1.0)
-        t417 <- rd vel ((3.0 * t389) + 2.0)
-        t418 <- rd scalars ((6.0 * t389) + 1.0)
+        t415 <- rdI vel (3 * (truncate t389))
+        t416 <- rdI vel ((3 * (truncate t389)) + 1)
+        t417 <- rdI vel ((3 * (truncate t389)) + 2)
+        t418 <- rdI scalars ((6 * (truncate t389)) + 1)
         setR v414 ((((t394 * t415) + (t395 * t416)) + (t396 * t417)) + (t397 * t418))
         pure ()
       else do
@@ -1192,43 +1218,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t424 = (if (t423 - t421) > 0 then t421 else t423)
       let !t425 = (if (t422 - t424) > 0 then t422 else t424)
       let !s426 = (if (1.0 - (abs (t425 - t425))) > 0 then t425 else 0.0)
-      wr contacts ((30.0 * i387) + 25.0) s426
-      t427 <- rd scalars ((6.0 * t388) + 2.0)
-      t428 <- rd scalars ((6.0 * t388) + 3.0)
-      t429 <- rd vel (3.0 * t388)
-      t430 <- rd vel ((3.0 * t388) + 1.0)
-      t431 <- rd vel ((3.0 * t388) + 2.0)
-      t432 <- rd scalars ((6.0 * t388) + 1.0)
-      wr vel (3.0 * t388) (t429 + ((t427 * (s426 - t408)) * t390))
-      wr vel ((3.0 * t388) + 1.0) (t430 + ((t427 * (s426 - t408)) * t391))
-      wr vel ((3.0 * t388) + 2.0) (t431 + ((t427 * (s426 - t408)) * t392))
-      wr scalars ((6.0 * t388) + 1.0) (t432 + ((t428 * (s426 - t408)) * t393))
+      wrI contacts ((30 * i387) + 25) s426
+      t427 <- rdI scalars ((6 * (truncate t388)) + 2)
+      t428 <- rdI scalars ((6 * (truncate t388)) + 3)
+      t429 <- rdI vel (3 * (truncate t388))
+      t430 <- rdI vel ((3 * (truncate t388)) + 1)
+      t431 <- rdI vel ((3 * (truncate t388)) + 2)
+      t432 <- rdI scalars ((6 * (truncate t388)) + 1)
+      wrI vel (3 * (truncate t388)) (t429 + ((t427 * (s426 - t408)) * t390))
+      wrI vel ((3 * (truncate t388)) + 1) (t430 + ((t427 * (s426 - t408)) * t391))
+      wrI vel ((3 * (truncate t388)) + 2) (t431 + ((t427 * (s426 - t408)) * t392))
+      wrI scalars ((6 * (truncate t388)) + 1) (t432 + ((t428 * (s426 - t408)) * t393))
       if (t389 + 0.5) > 0 then do
-        t433 <- rd scalars ((6.0 * t389) + 2.0)
-        t434 <- rd scalars ((6.0 * t389) + 3.0)
-        t435 <- rd vel (3.0 * t389)
-        t436 <- rd vel ((3.0 * t389) + 1.0)
-        t437 <- rd vel ((3.0 * t389) + 2.0)
-        t438 <- rd scalars ((6.0 * t389) + 1.0)
-        wr vel (3.0 * t389) (t435 + ((t433 * (negate (s426 - t408))) * t394))
-        wr vel ((3.0 * t389) + 1.0) (t436 + ((t433 * (negate (s426 - t408))) * t395))
-        wr vel ((3.0 * t389) + 2.0) (t437 + ((t433 * (negate (s426 - t408))) * t396))
-        wr scalars ((6.0 * t389) + 1.0) (t438 + ((t434 * (negate (s426 - t408))) * t397))
+        t433 <- rdI scalars ((6 * (truncate t389)) + 2)
+        t434 <- rdI scalars ((6 * (truncate t389)) + 3)
+        t435 <- rdI vel (3 * (truncate t389))
+        t436 <- rdI vel ((3 * (truncate t389)) + 1)
+        t437 <- rdI vel ((3 * (truncate t389)) + 2)
+        t438 <- rdI scalars ((6 * (truncate t389)) + 1)
+        wrI vel (3 * (truncate t389)) (t435 + ((t433 * (negate (s426 - t408))) * t394))
+        wrI vel ((3 * (truncate t389)) + 1) (t436 + ((t433 * (negate (s426 - t408))) * t395))
+        wrI vel ((3 * (truncate t389)) + 2) (t437 + ((t433 * (negate (s426 - t408))) * t396))
+        wrI scalars ((6 * (truncate t389)) + 1) (t438 + ((t434 * (negate (s426 - t408))) * t397))
         pure ()
       else do
         pure ()
-      t439 <- rd contacts ((30.0 * i387) + 21.0)
-      t440 <- rd contacts ((30.0 * i387) + 23.0)
-      t441 <- rd vel (3.0 * t388)
-      t442 <- rd vel ((3.0 * t388) + 1.0)
-      t443 <- rd vel ((3.0 * t388) + 2.0)
-      t444 <- rd scalars ((6.0 * t388) + 1.0)
+      t439 <- rdI contacts ((30 * i387) + 21)
+      t440 <- rdI contacts ((30 * i387) + 23)
+      t441 <- rdI vel (3 * (truncate t388))
+      t442 <- rdI vel ((3 * (truncate t388)) + 1)
+      t443 <- rdI vel ((3 * (truncate t388)) + 2)
+      t444 <- rdI scalars ((6 * (truncate t388)) + 1)
       v445 <- newR 0.0
       if (t389 + 0.5) > 0 then do
-        t446 <- rd vel (3.0 * t389)
-        t447 <- rd vel ((3.0 * t389) + 1.0)
-        t448 <- rd vel ((3.0 * t389) + 2.0)
-        t449 <- rd scalars ((6.0 * t389) + 1.0)
+        t446 <- rdI vel (3 * (truncate t389))
+        t447 <- rdI vel ((3 * (truncate t389)) + 1)
+        t448 <- rdI vel ((3 * (truncate t389)) + 2)
+        t449 <- rdI scalars ((6 * (truncate t389)) + 1)
         setR v445 ((((t402 * t446) + (t403 * t447)) + (t404 * t448)) + (t405 * t449))
         pure ()
       else do
@@ -1238,73 +1264,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t452 = (t407 + ((t406 * (t440 - s451)) * t439))
       let !t453 = (if (negate t452) > 0 then 0.0 else t452)
       let !s454 = (if (1.0 - (abs (t453 - t453))) > 0 then t453 else 0.0)
-      wr contacts ((30.0 * i387) + 24.0) s454
-      t455 <- rd scalars ((6.0 * t388) + 2.0)
-      t456 <- rd scalars ((6.0 * t388) + 3.0)
-      t457 <- rd vel (3.0 * t388)
-      t458 <- rd vel ((3.0 * t388) + 1.0)
-      t459 <- rd vel ((3.0 * t388) + 2.0)
-      t460 <- rd scalars ((6.0 * t388) + 1.0)
-      wr vel (3.0 * t388) (t457 + ((t455 * (s454 - t407)) * t398))
-      wr vel ((3.0 * t388) + 1.0) (t458 + ((t455 * (s454 - t407)) * t399))
-      wr vel ((3.0 * t388) + 2.0) (t459 + ((t455 * (s454 - t407)) * t400))
-      wr scalars ((6.0 * t388) + 1.0) (t460 + ((t456 * (s454 - t407)) * t401))
+      wrI contacts ((30 * i387) + 24) s454
+      t455 <- rdI scalars ((6 * (truncate t388)) + 2)
+      t456 <- rdI scalars ((6 * (truncate t388)) + 3)
+      t457 <- rdI vel (3 * (truncate t388))
+      t458 <- rdI vel ((3 * (truncate t388)) + 1)
+      t459 <- rdI vel ((3 * (truncate t388)) + 2)
+      t460 <- rdI scalars ((6 * (truncate t388)) + 1)
+      wrI vel (3 * (truncate t388)) (t457 + ((t455 * (s454 - t407)) * t398))
+      wrI vel ((3 * (truncate t388)) + 1) (t458 + ((t455 * (s454 - t407)) * t399))
+      wrI vel ((3 * (truncate t388)) + 2) (t459 + ((t455 * (s454 - t407)) * t400))
+      wrI scalars ((6 * (truncate t388)) + 1) (t460 + ((t456 * (s454 - t407)) * t401))
       if (t389 + 0.5) > 0 then do
-        t461 <- rd scalars ((6.0 * t389) + 2.0)
-        t462 <- rd scalars ((6.0 * t389) + 3.0)
-        t463 <- rd vel (3.0 * t389)
-        t464 <- rd vel ((3.0 * t389) + 1.0)
-        t465 <- rd vel ((3.0 * t389) + 2.0)
-        t466 <- rd scalars ((6.0 * t389) + 1.0)
-        wr vel (3.0 * t389) (t463 + ((t461 * (negate (s454 - t407))) * t402))
-        wr vel ((3.0 * t389) + 1.0) (t464 + ((t461 * (negate (s454 - t407))) * t403))
-        wr vel ((3.0 * t389) + 2.0) (t465 + ((t461 * (negate (s454 - t407))) * t404))
-        wr scalars ((6.0 * t389) + 1.0) (t466 + ((t462 * (negate (s454 - t407))) * t405))
+        t461 <- rdI scalars ((6 * (truncate t389)) + 2)
+        t462 <- rdI scalars ((6 * (truncate t389)) + 3)
+        t463 <- rdI vel (3 * (truncate t389))
+        t464 <- rdI vel ((3 * (truncate t389)) + 1)
+        t465 <- rdI vel ((3 * (truncate t389)) + 2)
+        t466 <- rdI scalars ((6 * (truncate t389)) + 1)
+        wrI vel (3 * (truncate t389)) (t463 + ((t461 * (negate (s454 - t407))) * t402))
+        wrI vel ((3 * (truncate t389)) + 1) (t464 + ((t461 * (negate (s454 - t407))) * t403))
+        wrI vel ((3 * (truncate t389)) + 2) (t465 + ((t461 * (negate (s454 - t407))) * t404))
+        wrI scalars ((6 * (truncate t389)) + 1) (t466 + ((t462 * (negate (s454 - t407))) * t405))
         pure ()
       else do
         pure ()
       pure ()
-    t467 <- rd mouse 0.0
+    t467 <- rdI mouse 0
     if t467 > 0 then do
-      t468 <- rd mouse 1.0
-      t469 <- rd scalars ((6.0 * t468) + 2.0)
+      t468 <- rdI mouse 1
+      t469 <- rdI scalars ((6 * (truncate t468)) + 2)
       if t469 > 0 then do
-        t470 <- rd scalars ((6.0 * t468) + 3.0)
-        t471 <- rd params 0.0
-        t472 <- rd pos (3.0 * t468)
-        t473 <- rd pos ((3.0 * t468) + 1.0)
-        t474 <- rd pos ((3.0 * t468) + 2.0)
-        t475 <- rd normal (3.0 * t468)
-        t476 <- rd normal ((3.0 * t468) + 1.0)
-        t477 <- rd normal ((3.0 * t468) + 2.0)
-        t478 <- rd axis (3.0 * t468)
-        t479 <- rd axis ((3.0 * t468) + 1.0)
-        t480 <- rd axis ((3.0 * t468) + 2.0)
+        t470 <- rdI scalars ((6 * (truncate t468)) + 3)
+        t471 <- rdI params 0
+        t472 <- rdI pos (3 * (truncate t468))
+        t473 <- rdI pos ((3 * (truncate t468)) + 1)
+        t474 <- rdI pos ((3 * (truncate t468)) + 2)
+        t475 <- rdI normal (3 * (truncate t468))
+        t476 <- rdI normal ((3 * (truncate t468)) + 1)
+        t477 <- rdI normal ((3 * (truncate t468)) + 2)
+        t478 <- rdI axis (3 * (truncate t468))
+        t479 <- rdI axis ((3 * (truncate t468)) + 1)
+        t480 <- rdI axis ((3 * (truncate t468)) + 2)
         let !s481 = ((t476 * t480) - (t477 * t479))
         let !s482 = ((t477 * t478) - (t475 * t480))
         let !s483 = ((t475 * t479) - (t476 * t478))
-        t484 <- rd scalars (6.0 * t468)
-        t485 <- rd scalars ((6.0 * t468) + 5.0)
-        t486 <- rd scalars ((6.0 * t468) + 2.0)
-        t487 <- rd scalars ((6.0 * t468) + 3.0)
-        t488 <- rd pos (3.0 * t468)
-        t489 <- rd pos ((3.0 * t468) + 1.0)
-        t490 <- rd pos ((3.0 * t468) + 2.0)
-        t491 <- rd normal (3.0 * t468)
-        t492 <- rd normal ((3.0 * t468) + 1.0)
-        t493 <- rd normal ((3.0 * t468) + 2.0)
-        t494 <- rd axis (3.0 * t468)
-        t495 <- rd axis ((3.0 * t468) + 1.0)
-        t496 <- rd axis ((3.0 * t468) + 2.0)
+        t484 <- rdI scalars (6 * (truncate t468))
+        t485 <- rdI scalars ((6 * (truncate t468)) + 5)
+        t486 <- rdI scalars ((6 * (truncate t468)) + 2)
+        t487 <- rdI scalars ((6 * (truncate t468)) + 3)
+        t488 <- rdI pos (3 * (truncate t468))
+        t489 <- rdI pos ((3 * (truncate t468)) + 1)
+        t490 <- rdI pos ((3 * (truncate t468)) + 2)
+        t491 <- rdI normal (3 * (truncate t468))
+        t492 <- rdI normal ((3 * (truncate t468)) + 1)
+        t493 <- rdI normal ((3 * (truncate t468)) + 2)
+        t494 <- rdI axis (3 * (truncate t468))
+        t495 <- rdI axis ((3 * (truncate t468)) + 1)
+        t496 <- rdI axis ((3 * (truncate t468)) + 2)
         let !s497 = ((t492 * t496) - (t493 * t495))
         let !s498 = ((t493 * t494) - (t491 * t496))
         let !s499 = ((t491 * t495) - (t492 * t494))
-        t500 <- rd scalars (6.0 * t468)
-        t501 <- rd scalars ((6.0 * t468) + 5.0)
-        t502 <- rd scalars ((6.0 * t468) + 2.0)
-        t503 <- rd scalars ((6.0 * t468) + 3.0)
-        t504 <- rd mouse 2.0
-        t505 <- rd mouse 3.0
+        t500 <- rdI scalars (6 * (truncate t468))
+        t501 <- rdI scalars ((6 * (truncate t468)) + 5)
+        t502 <- rdI scalars ((6 * (truncate t468)) + 2)
+        t503 <- rdI scalars ((6 * (truncate t468)) + 3)
+        t504 <- rdI mouse 2
+        t505 <- rdI mouse 3
         let !t506 = (t504 / 4.0)
         let !t507 = (if (abs t506) > 0 then 1.0 else 0.0)
         let !t508 = (t500 + t505)
@@ -1523,12 +1549,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s721 = ((t507 * (t706 * (t720 * t716))) + (t542 * s669))
         let !s722 = ((t507 * (t706 * (t720 * t717))) + (t542 * s670))
         let !s723 = ((t507 * (t706 * (t720 * t718))) + (t542 * s671))
-        t724 <- rd mouse 4.0
-        t725 <- rd mouse 5.0
-        t726 <- rd mouse 6.0
-        t727 <- rd mouse 7.0
-        t728 <- rd mouse 8.0
-        t729 <- rd mouse 9.0
+        t724 <- rdI mouse 4
+        t725 <- rdI mouse 5
+        t726 <- rdI mouse 6
+        t727 <- rdI mouse 7
+        t728 <- rdI mouse 8
+        t729 <- rdI mouse 9
         let !t730 = (recip t469)
         let !t731 = (6.283185307179586 * t727)
         let !s732 = (recip (t471 * ((((2.0 * t730) * t728) * t731) + (t471 * ((t730 * t731) * t731)))))
@@ -1539,11 +1565,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s737 = (s703 + (negate t724))
         let !s738 = (s704 + (negate t725))
         let !s739 = (s705 + (negate t726))
-        t740 <- rd mouse 10.0
-        t741 <- rd vel (3.0 * t468)
-        t742 <- rd vel ((3.0 * t468) + 1.0)
-        t743 <- rd vel ((3.0 * t468) + 2.0)
-        t744 <- rd scalars ((6.0 * t468) + 1.0)
+        t740 <- rdI mouse 10
+        t741 <- rdI vel (3 * (truncate t468))
+        t742 <- rdI vel ((3 * (truncate t468)) + 1)
+        t743 <- rdI vel ((3 * (truncate t468)) + 2)
+        t744 <- rdI scalars ((6 * (truncate t468)) + 1)
         let !t745 = (t729 * t471)
         let !t746 = (negate t745)
         let !t747 = (((((s735 * t480) - (s736 * t479)) * t475) + (((s736 * t478) - (s734 * t480)) * t476)) + (((s734 * t479) - (s735 * t478)) * t477))
@@ -1551,38 +1577,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t749 = (if (t748 - t745) > 0 then t745 else t748)
         let !t750 = (if (t746 - t749) > 0 then t746 else t749)
         let !s751 = (if (1.0 - (abs (t750 - t750))) > 0 then t750 else 0.0)
-        wr mouse 10.0 s751
-        t752 <- rd scalars ((6.0 * t468) + 2.0)
-        t753 <- rd scalars ((6.0 * t468) + 3.0)
-        t754 <- rd vel (3.0 * t468)
-        t755 <- rd vel ((3.0 * t468) + 1.0)
-        t756 <- rd vel ((3.0 * t468) + 2.0)
-        t757 <- rd scalars ((6.0 * t468) + 1.0)
-        wr vel (3.0 * t468) (t754 + ((t752 * (s751 - t740)) * t478))
-        wr vel ((3.0 * t468) + 1.0) (t755 + ((t752 * (s751 - t740)) * t479))
-        wr vel ((3.0 * t468) + 2.0) (t756 + ((t752 * (s751 - t740)) * t480))
-        wr scalars ((6.0 * t468) + 1.0) (t757 + ((t753 * (s751 - t740)) * t747))
-        t758 <- rd mouse 11.0
-        t759 <- rd vel (3.0 * t468)
-        t760 <- rd vel ((3.0 * t468) + 1.0)
-        t761 <- rd vel ((3.0 * t468) + 2.0)
-        t762 <- rd scalars ((6.0 * t468) + 1.0)
+        wrI mouse 10 s751
+        t752 <- rdI scalars ((6 * (truncate t468)) + 2)
+        t753 <- rdI scalars ((6 * (truncate t468)) + 3)
+        t754 <- rdI vel (3 * (truncate t468))
+        t755 <- rdI vel ((3 * (truncate t468)) + 1)
+        t756 <- rdI vel ((3 * (truncate t468)) + 2)
+        t757 <- rdI scalars ((6 * (truncate t468)) + 1)
+        wrI vel (3 * (truncate t468)) (t754 + ((t752 * (s751 - t740)) * t478))
+        wrI vel ((3 * (truncate t468)) + 1) (t755 + ((t752 * (s751 - t740)) * t479))
+        wrI vel ((3 * (truncate t468)) + 2) (t756 + ((t752 * (s751 - t740)) * t480))
+        wrI scalars ((6 * (truncate t468)) + 1) (t757 + ((t753 * (s751 - t740)) * t747))
+        t758 <- rdI mouse 11
+        t759 <- rdI vel (3 * (truncate t468))
+        t760 <- rdI vel ((3 * (truncate t468)) + 1)
+        t761 <- rdI vel ((3 * (truncate t468)) + 2)
+        t762 <- rdI scalars ((6 * (truncate t468)) + 1)
         let !t763 = (((((s735 * s483) - (s736 * s482)) * t475) + (((s736 * s481) - (s734 * s483)) * t476)) + (((s734 * s482) - (s735 * s481)) * t477))
         let !t764 = (t758 + ((negate ((((((s481 * t759) + (s482 * t760)) + (s483 * t761)) + (t763 * t762)) + (s733 * (((s737 * s481) + (s738 * s482)) + (s739 * s483)))) + (s732 * t758))) / (((t469 * (((s481 * s481) + (s482 * s482)) + (s483 * s483))) + ((t470 * t763) * t763)) + s732)))
         let !t765 = (if (t764 - t745) > 0 then t745 else t764)
         let !t766 = (if (t746 - t765) > 0 then t746 else t765)
         let !s767 = (if (1.0 - (abs (t766 - t766))) > 0 then t766 else 0.0)
-        wr mouse 11.0 s767
-        t768 <- rd scalars ((6.0 * t468) + 2.0)
-        t769 <- rd scalars ((6.0 * t468) + 3.0)
-        t770 <- rd vel (3.0 * t468)
-        t771 <- rd vel ((3.0 * t468) + 1.0)
-        t772 <- rd vel ((3.0 * t468) + 2.0)
-        t773 <- rd scalars ((6.0 * t468) + 1.0)
-        wr vel (3.0 * t468) (t770 + ((t768 * (s767 - t758)) * s481))
-        wr vel ((3.0 * t468) + 1.0) (t771 + ((t768 * (s767 - t758)) * s482))
-        wr vel ((3.0 * t468) + 2.0) (t772 + ((t768 * (s767 - t758)) * s483))
-        wr scalars ((6.0 * t468) + 1.0) (t773 + ((t769 * (s767 - t758)) * t763))
+        wrI mouse 11 s767
+        t768 <- rdI scalars ((6 * (truncate t468)) + 2)
+        t769 <- rdI scalars ((6 * (truncate t468)) + 3)
+        t770 <- rdI vel (3 * (truncate t468))
+        t771 <- rdI vel ((3 * (truncate t468)) + 1)
+        t772 <- rdI vel ((3 * (truncate t468)) + 2)
+        t773 <- rdI scalars ((6 * (truncate t468)) + 1)
+        wrI vel (3 * (truncate t468)) (t770 + ((t768 * (s767 - t758)) * s481))
+        wrI vel ((3 * (truncate t468)) + 1) (t771 + ((t768 * (s767 - t758)) * s482))
+        wrI vel ((3 * (truncate t468)) + 2) (t772 + ((t768 * (s767 - t758)) * s483))
+        wrI scalars ((6 * (truncate t468)) + 1) (t773 + ((t769 * (s767 - t758)) * t763))
         pure ()
       else do
         pure ()
@@ -1590,48 +1616,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t774 <- rd meta 0.0
-  loop 0.0 t774 $ \i775 -> do
-    wr bodyPrev ((2.0 * i775) + 1.0) 0.0
+  t774 <- rdI meta 0
+  loopI 0.0 t774 $ \i775 -> do
+    let !d775 = fromIntegral i775 :: Double
+    wrI bodyPrev ((2 * i775) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i776 -> do
-    t777 <- rd contacts ((30.0 * i776) + 2.0)
-    wr prev (4.0 * i776) t777
-    t778 <- rd contacts ((30.0 * i776) + 3.0)
-    wr prev ((4.0 * i776) + 1.0) t778
-    t779 <- rd contacts ((30.0 * i776) + 24.0)
-    wr prev ((4.0 * i776) + 2.0) t779
-    t780 <- rd contacts ((30.0 * i776) + 25.0)
-    wr prev ((4.0 * i776) + 3.0) t780
-    t781 <- rd bodyPrev ((2.0 * t777) + 1.0)
+  loopI 0.0 t9 $ \i776 -> do
+    let !d776 = fromIntegral i776 :: Double
+    t777 <- rdI contacts ((30 * i776) + 2)
+    wrI prev (4 * i776) t777
+    t778 <- rdI contacts ((30 * i776) + 3)
+    wrI prev ((4 * i776) + 1) t778
+    t779 <- rdI contacts ((30 * i776) + 24)
+    wrI prev ((4 * i776) + 2) t779
+    t780 <- rdI contacts ((30 * i776) + 25)
+    wrI prev ((4 * i776) + 3) t780
+    t781 <- rdI bodyPrev ((2 * (truncate t777)) + 1)
     if (0.5 - t781) > 0 then do
-      wr bodyPrev (2.0 * t777) i776
+      wrI bodyPrev (2 * (truncate t777)) d776
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t777) + 1.0) (t781 + 1.0)
+    wrI bodyPrev ((2 * (truncate t777)) + 1) (t781 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t5 + (t1 * t8))
@@ -1745,58 +1774,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t127 = (t12 + (t1 * t13))
     let !t128 = (1.0 - (abs ((((((((((((((s77 - s77) + (s78 - s78)) + (s79 - s79)) + (s113 - s113)) + (s114 - s114)) + (s115 - s115)) + (s122 - s122)) + (s123 - s123)) + (s124 - s124)) + (s88 - s88)) + (s89 - s89)) + (s90 - s90)) + (t127 - t127)) + (s125 - s125))))
     if (if (t126 - t128) > 0 then t128 else t126) > 0 then do
-      wr pos (3.0 * i2) s77
-      wr pos ((3.0 * i2) + 1.0) s78
-      wr pos ((3.0 * i2) + 2.0) s79
-      wr vel (3.0 * i2) s113
-      wr vel ((3.0 * i2) + 1.0) s114
-      wr vel ((3.0 * i2) + 2.0) s115
-      wr axis (3.0 * i2) s122
-      wr axis ((3.0 * i2) + 1.0) s123
-      wr axis ((3.0 * i2) + 2.0) s124
-      wr normal (3.0 * i2) s88
-      wr normal ((3.0 * i2) + 1.0) s89
-      wr normal ((3.0 * i2) + 2.0) s90
-      wr scalars (6.0 * i2) t127
+      wrI pos (3 * i2) s77
+      wrI pos ((3 * i2) + 1) s78
+      wrI pos ((3 * i2) + 2) s79
+      wrI vel (3 * i2) s113
+      wrI vel ((3 * i2) + 1) s114
+      wrI vel ((3 * i2) + 2) s115
+      wrI axis (3 * i2) s122
+      wrI axis ((3 * i2) + 1) s123
+      wrI axis ((3 * i2) + 2) s124
+      wrI normal (3 * i2) s88
+      wrI normal ((3 * i2) + 1) s89
+      wrI normal ((3 * i2) + 2) s90
+      wrI scalars (6 * i2) t127
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t129 <- rd meta 1.0
-      wr meta 1.0 (t129 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t129 <- rdI meta 1
+      wrI meta 1 (t129 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1860,9 +1891,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s79 = ((t28 * t67) + (t53 * t8))
         let !s80 = (t53 * t9)
         let !s81 = ((t28 * t68) + (t53 * t10))
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
         let !t82 = (s57 + (s27 * s76))
         let !t83 = (s59 + (s27 * s78))
         let !t84 = (sqrt ((t82 * t82) + (t83 * t83)))
@@ -1914,9 +1945,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s130 = ((t28 * t118) + (t53 * s79))
         let !s131 = (t53 * s80)
         let !s132 = ((t28 * t119) + (t53 * s81))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s109 - s109) + (s110 - s110)) + (s111 - s111)))) > 0 then s109 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s109 - s109) + (s110 - s110)) + (s111 - s111)))) > 0 then s110 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s109 - s109) + (s110 - s110)) + (s111 - s111)))) > 0 then s111 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s109 - s109) + (s110 - s110)) + (s111 - s111)))) > 0 then s109 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s109 - s109) + (s110 - s110)) + (s111 - s111)))) > 0 then s110 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s109 - s109) + (s110 - s110)) + (s111 - s111)))) > 0 then s111 else t4)
         let !t133 = (s109 + (s27 * s127))
         let !t134 = (s111 + (s27 * s129))
         let !t135 = (sqrt ((t133 * t133) + (t134 * t134)))
@@ -1968,9 +1999,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = ((t28 * t169) + (t53 * s130))
         let !s182 = (t53 * s131)
         let !s183 = ((t28 * t170) + (t53 * s132))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162)))) > 0 then s160 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162)))) > 0 then s161 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162)))) > 0 then s162 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162)))) > 0 then s160 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162)))) > 0 then s161 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162)))) > 0 then s162 else t4)
         let !t184 = (s160 + (s27 * s178))
         let !t185 = (s162 + (s27 * s180))
         let !t186 = (sqrt ((t184 * t184) + (t185 * t185)))
@@ -2022,9 +2053,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s232 = ((t28 * t220) + (t53 * s181))
         let !s233 = (t53 * s182)
         let !s234 = ((t28 * t221) + (t53 * s183))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s211 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s212 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s213 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s211 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s212 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s213 else t4)
         pure ()
       else do
         let !t235 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2063,18 +2094,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s268 = (if t267 > 0 then t261 else t2)
         let !s269 = (if t267 > 0 then t265 else t3)
         let !s270 = (if t267 > 0 then t266 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s268
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s269
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s270
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s268 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s269 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s270 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s268 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s269 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s270 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s268 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s269 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s270 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s268
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s269
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s270
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s268 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s269 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s270 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s268 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s269 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s270 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s268 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s269 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s270 + (negate t4))))
         pure ()
       pure ()
     pure ()

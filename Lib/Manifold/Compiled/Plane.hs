@@ -28,33 +28,34 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (t13 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * (negate (t14 * t12))))
       let !t17 = (t10 + (t1 * ((-4.0) + (negate (t14 * t13)))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wr vel (3.0 * i3) t15
-        wr vel ((3.0 * i3) + 1.0) t16
-        wr vel ((3.0 * i3) + 2.0) t17
+        wrI vel (3 * i3) t15
+        wrI vel ((3 * i3) + 1) t16
+        wrI vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rd meta 1.0
-        wr meta 1.0 (t18 + 1.0)
+        t18 <- rdI meta 1
+        wrI meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -64,11 +65,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -78,81 +80,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -166,15 +177,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rd verts (3.0 * (97.0 * i31))
-    t68 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t69 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t67 <- rdI verts (3 * (97 * i31))
+    t68 <- rdI verts ((3 * (97 * i31)) + 1)
+    t69 <- rdI verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
-    loop 0.0 24.0 $ \i71 -> do
-      t72 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0))
-      t73 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 1.0)
-      t74 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 2.0)
-      t75 <- rd radii ((24.0 * i31) + i71)
+    loopI 0.0 24.0 $ \i71 -> do
+      let !d71 = fromIntegral i71 :: Double
+      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      t75 <- rdI radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -191,25 +203,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v86 <- newR 0.0
       v87 <- newR 0.0
       v88 <- newR 0.0
-      loop 0.0 24.0 $ \i89 -> do
-        t90 <- rd radii ((24.0 * i31) + i89)
-        loop 6.0 12.0 $ \i91 -> do
-          let !t92 = (i89 + i91)
-          t93 <- rd radii ((24.0 * i31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))
-          loop 1.0 4.0 $ \i94 -> do
-            t95 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0)))
-            t96 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 1.0)
-            t97 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 2.0)
-            t98 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94))
-            t99 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 1.0)
-            t100 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 2.0)
-            loop 1.0 4.0 $ \i101 -> do
-              t102 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0)))
-              t103 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 1.0)
-              t104 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 2.0)
-              t105 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101))
-              t106 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 1.0)
-              t107 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 2.0)
+      loopI 0.0 24.0 $ \i89 -> do
+        let !d89 = fromIntegral i89 :: Double
+        t90 <- rdI radii ((24 * i31) + i89)
+        loopI 6.0 12.0 $ \i91 -> do
+          let !d91 = fromIntegral i91 :: Double
+          let !t92 = (d89 + d91)
+          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          loopI 1.0 4.0 $ \i94 -> do
+            let !d94 = fromIntegral i94 :: Double
+            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            loopI 1.0 4.0 $ \i101 -> do
+              let !d101 = fromIntegral i101 :: Double
+              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -242,19 +258,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t137 = (if (negate t130) > 0 then (if (negate t133) > 0 then 0.0 else t133) else (if t134 > 0 then (if (negate t136) > 0 then 0.0 else t136) else t129))
               let !t138 = (if t134 > 0 then 1.0 else t130)
               let !t139 = (if (negate t138) > 0 then 0.0 else t138)
-              let !t140 = ((0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0)))) - t108)
+              let !t140 = ((0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0)))) - t108)
               let !t141 = ((t95 + (t137 * t116)) + (negate (t102 + (t139 * t110))))
               let !t142 = ((t96 + (t137 * t117)) + (negate (t103 + (t139 * t112))))
               let !t143 = ((t97 + (t137 * t118)) + (negate (t104 + (t139 * t114))))
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
-                setR v82 (0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0))))
-                t145 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0)))
-                t146 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 1.0)
-                t147 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 2.0)
-                t148 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))
-                t149 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)
-                t150 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)
+                setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
+                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -293,89 +309,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s172 = (t171 * t166)
         let !s173 = (t171 * t169)
         let !s174 = (t171 * t168)
-        t175 <- rd meta 2.0
-        t176 <- rd meta 3.0
+        t175 <- rdI meta 2
+        t176 <- rdI meta 3
         if (((8.0 * (if (1.0 - t176) > 0 then 1.0 else t176)) - t175) - 0.5) > 0 then do
-          wr meta 2.0 (t175 + 1.0)
-          t177 <- rd pos (3.0 * i31)
-          t178 <- rd pos ((3.0 * i31) + 1.0)
-          t179 <- rd pos ((3.0 * i31) + 2.0)
-          t180 <- rd normal (3.0 * i31)
-          t181 <- rd normal ((3.0 * i31) + 1.0)
-          t182 <- rd normal ((3.0 * i31) + 2.0)
-          t183 <- rd axis (3.0 * i31)
-          t184 <- rd axis ((3.0 * i31) + 1.0)
-          t185 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t175 + 1.0)
+          t177 <- rdI pos (3 * i31)
+          t178 <- rdI pos ((3 * i31) + 1)
+          t179 <- rdI pos ((3 * i31) + 2)
+          t180 <- rdI normal (3 * i31)
+          t181 <- rdI normal ((3 * i31) + 1)
+          t182 <- rdI normal ((3 * i31) + 2)
+          t183 <- rdI axis (3 * i31)
+          t184 <- rdI axis ((3 * i31) + 1)
+          t185 <- rdI axis ((3 * i31) + 2)
           let !s186 = ((t181 * t185) - (t182 * t184))
           let !s187 = ((t182 * t183) - (t180 * t185))
           let !s188 = ((t180 * t184) - (t181 * t183))
-          t189 <- rd scalars (6.0 * i31)
-          t190 <- rd scalars ((6.0 * i31) + 5.0)
-          t191 <- rd scalars ((6.0 * i31) + 2.0)
-          t192 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t175) i31
-          wr contacts ((30.0 * t175) + 1.0) (-1.0)
-          wr contacts ((30.0 * t175) + 2.0) i31
-          wr contacts ((30.0 * t175) + 3.0) 12.0
-          wr contacts ((30.0 * t175) + 4.0) (s172 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t180)))
-          wr contacts (((30.0 * t175) + 4.0) + 1.0) (s173 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t181)))
-          wr contacts (((30.0 * t175) + 4.0) + 2.0) (s174 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t182)))
-          wr contacts ((30.0 * t175) + 7.0) 0.0
-          wr contacts ((30.0 * t175) + 12.0) 0.0
-          wr contacts (((30.0 * t175) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t175) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t175) + 15.0) 0.0
-          wr contacts ((30.0 * t175) + 20.0) t162
-          wr contacts ((30.0 * t175) + 26.0) 0.6
-          wr contacts ((30.0 * t175) + 27.0) t163
-          wr contacts (((30.0 * t175) + 27.0) + 1.0) t164
-          wr contacts (((30.0 * t175) + 27.0) + 2.0) t165
+          t189 <- rdI scalars (6 * i31)
+          t190 <- rdI scalars ((6 * i31) + 5)
+          t191 <- rdI scalars ((6 * i31) + 2)
+          t192 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t175)) d31
+          wrI contacts ((30 * (truncate t175)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t175)) + 2) d31
+          wrI contacts ((30 * (truncate t175)) + 3) 12.0
+          wrI contacts ((30 * (truncate t175)) + 4) (s172 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t180)))
+          wrI contacts (((30 * (truncate t175)) + 4) + 1) (s173 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t181)))
+          wrI contacts (((30 * (truncate t175)) + 4) + 2) (s174 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t182)))
+          wrI contacts ((30 * (truncate t175)) + 7) 0.0
+          wrI contacts ((30 * (truncate t175)) + 12) 0.0
+          wrI contacts (((30 * (truncate t175)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t175)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t175)) + 15) 0.0
+          wrI contacts ((30 * (truncate t175)) + 20) t162
+          wrI contacts ((30 * (truncate t175)) + 26) 0.6
+          wrI contacts ((30 * (truncate t175)) + 27) t163
+          wrI contacts (((30 * (truncate t175)) + 27) + 1) t164
+          wrI contacts (((30 * (truncate t175)) + 27) + 2) t165
           if (-0.5) > 0 then do
-            t193 <- rd pos (-3.0)
-            t194 <- rd pos (-2.0)
-            t195 <- rd pos (-1.0)
-            t196 <- rd normal (-3.0)
-            t197 <- rd normal (-2.0)
-            t198 <- rd normal (-1.0)
-            t199 <- rd axis (-3.0)
-            t200 <- rd axis (-2.0)
-            t201 <- rd axis (-1.0)
+            t193 <- rdI pos (-3)
+            t194 <- rdI pos (-2)
+            t195 <- rdI pos (-1)
+            t196 <- rdI normal (-3)
+            t197 <- rdI normal (-2)
+            t198 <- rdI normal (-1)
+            t199 <- rdI axis (-3)
+            t200 <- rdI axis (-2)
+            t201 <- rdI axis (-1)
             let !s202 = ((t197 * t201) - (t198 * t200))
             let !s203 = ((t198 * t199) - (t196 * t201))
             let !s204 = ((t196 * t200) - (t197 * t199))
-            t205 <- rd scalars (-6.0)
-            t206 <- rd scalars (-1.0)
-            t207 <- rd scalars (-4.0)
-            t208 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t175) + 8.0) (s172 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t196)))
-            wr contacts (((30.0 * t175) + 8.0) + 1.0) (s173 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t197)))
-            wr contacts (((30.0 * t175) + 8.0) + 2.0) (s174 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t198)))
+            t205 <- rdI scalars (-6)
+            t206 <- rdI scalars (-1)
+            t207 <- rdI scalars (-4)
+            t208 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t175)) + 8) (s172 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t196)))
+            wrI contacts (((30 * (truncate t175)) + 8) + 1) (s173 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t197)))
+            wrI contacts (((30 * (truncate t175)) + 8) + 2) (s174 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t198)))
             let !t209 = (t164 + (negate t194))
             let !t210 = (t165 + (negate t195))
             let !t211 = (t163 + (negate t193))
-            wr contacts ((30.0 * t175) + 11.0) (((((t209 * s174) - (t210 * s173)) * t196) + (((t210 * s172) - (t211 * s174)) * t197)) + (((t211 * s173) - (t209 * s172)) * t198))
+            wrI contacts ((30 * (truncate t175)) + 11) (((((t209 * s174) - (t210 * s173)) * t196) + (((t210 * s172) - (t211 * s174)) * t197)) + (((t211 * s173) - (t209 * s172)) * t198))
             let !t212 = ((t181 * s174) - (t182 * s173))
-            wr contacts ((30.0 * t175) + 16.0) (t212 + (negate ((((t196 * t212) + (t197 * ((t182 * s172) - (t180 * s174)))) + (t198 * ((t180 * s173) - (t181 * s172)))) * t196)))
+            wrI contacts ((30 * (truncate t175)) + 16) (t212 + (negate ((((t196 * t212) + (t197 * ((t182 * s172) - (t180 * s174)))) + (t198 * ((t180 * s173) - (t181 * s172)))) * t196)))
             let !t213 = ((t182 * s172) - (t180 * s174))
-            wr contacts (((30.0 * t175) + 16.0) + 1.0) (t213 + (negate ((((t196 * t212) + (t197 * t213)) + (t198 * ((t180 * s173) - (t181 * s172)))) * t197)))
+            wrI contacts (((30 * (truncate t175)) + 16) + 1) (t213 + (negate ((((t196 * t212) + (t197 * t213)) + (t198 * ((t180 * s173) - (t181 * s172)))) * t197)))
             let !t214 = ((t180 * s173) - (t181 * s172))
-            wr contacts (((30.0 * t175) + 16.0) + 2.0) (t214 + (negate ((((t196 * t212) + (t197 * t213)) + (t198 * t214)) * t198)))
-            wr contacts ((30.0 * t175) + 19.0) (((((t209 * t214) - (t210 * t213)) * t196) + (((t210 * t212) - (t211 * t214)) * t197)) + (((t211 * t213) - (t209 * t212)) * t198))
+            wrI contacts (((30 * (truncate t175)) + 16) + 2) (t214 + (negate ((((t196 * t212) + (t197 * t213)) + (t198 * t214)) * t198)))
+            wrI contacts ((30 * (truncate t175)) + 19) (((((t209 * t214) - (t210 * t213)) * t196) + (((t210 * t212) - (t211 * t214)) * t197)) + (((t211 * t213) - (t209 * t212)) * t198))
             pure ()
           else do
-            wr contacts ((30.0 * t175) + 8.0) 0.0
-            wr contacts (((30.0 * t175) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t175) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t175) + 11.0) 0.0
-            wr contacts ((30.0 * t175) + 16.0) 0.0
-            wr contacts (((30.0 * t175) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t175) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t175) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t175)) + 8) 0.0
+            wrI contacts (((30 * (truncate t175)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t175)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t175)) + 11) 0.0
+            wrI contacts ((30 * (truncate t175)) + 16) 0.0
+            wrI contacts (((30 * (truncate t175)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t175)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t175)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t215 <- rd meta 6.0
-          wr meta 6.0 (t215 + 1.0)
+          t215 <- rdI meta 6
+          wrI meta 6 (t215 + 1.0)
           pure ()
         pure ()
       else do
@@ -388,43 +404,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -432,12 +449,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -445,20 +462,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -469,18 +486,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -488,98 +506,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -654,12 +672,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rd mouse 4.0
-      t213 <- rd mouse 5.0
-      t214 <- rd mouse 6.0
-      t215 <- rd mouse 7.0
-      t216 <- rd mouse 8.0
-      t217 <- rd mouse 9.0
+      t212 <- rdI mouse 4
+      t213 <- rdI mouse 5
+      t214 <- rdI mouse 6
+      t215 <- rdI mouse 7
+      t216 <- rdI mouse 8
+      t217 <- rdI mouse 9
       let !t218 = (recip t101)
       let !t219 = (6.283185307179586 * t215)
       let !s220 = (recip (t103 * ((((2.0 * t218) * t216) * t219) + (t103 * ((t218 * t219) * t219)))))
@@ -670,68 +688,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s225 = (s199 + (negate t212))
       let !s226 = (s200 + (negate t213))
       let !s227 = (s201 + (negate t214))
-      t228 <- rd mouse 10.0
-      t229 <- rd scalars ((6.0 * t100) + 2.0)
-      t230 <- rd scalars ((6.0 * t100) + 3.0)
-      t231 <- rd vel (3.0 * t100)
-      t232 <- rd vel ((3.0 * t100) + 1.0)
-      t233 <- rd vel ((3.0 * t100) + 2.0)
-      t234 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t231 + ((t229 * t228) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t232 + ((t229 * t228) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t233 + ((t229 * t228) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
-      t235 <- rd mouse 11.0
-      t236 <- rd scalars ((6.0 * t100) + 2.0)
-      t237 <- rd scalars ((6.0 * t100) + 3.0)
-      t238 <- rd vel (3.0 * t100)
-      t239 <- rd vel ((3.0 * t100) + 1.0)
-      t240 <- rd vel ((3.0 * t100) + 2.0)
-      t241 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t238 + ((t236 * t235) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t239 + ((t236 * t235) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t240 + ((t236 * t235) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
+      t228 <- rdI mouse 10
+      t229 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t230 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t231 <- rdI vel (3 * (truncate t100))
+      t232 <- rdI vel ((3 * (truncate t100)) + 1)
+      t233 <- rdI vel ((3 * (truncate t100)) + 2)
+      t234 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
+      t235 <- rdI mouse 11
+      t236 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t237 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t238 <- rdI vel (3 * (truncate t100))
+      t239 <- rdI vel ((3 * (truncate t100)) + 1)
+      t240 <- rdI vel ((3 * (truncate t100)) + 2)
+      t241 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i242 -> do
-    loop 0.0 t9 $ \i243 -> do
-      t244 <- rd contacts (30.0 * i243)
-      t245 <- rd contacts ((30.0 * i243) + 1.0)
-      t246 <- rd contacts ((30.0 * i243) + 12.0)
-      t247 <- rd contacts (((30.0 * i243) + 12.0) + 1.0)
-      t248 <- rd contacts (((30.0 * i243) + 12.0) + 2.0)
-      t249 <- rd contacts ((30.0 * i243) + 15.0)
-      t250 <- rd contacts ((30.0 * i243) + 16.0)
-      t251 <- rd contacts (((30.0 * i243) + 16.0) + 1.0)
-      t252 <- rd contacts (((30.0 * i243) + 16.0) + 2.0)
-      t253 <- rd contacts ((30.0 * i243) + 19.0)
-      t254 <- rd contacts ((30.0 * i243) + 4.0)
-      t255 <- rd contacts (((30.0 * i243) + 4.0) + 1.0)
-      t256 <- rd contacts (((30.0 * i243) + 4.0) + 2.0)
-      t257 <- rd contacts ((30.0 * i243) + 7.0)
-      t258 <- rd contacts ((30.0 * i243) + 8.0)
-      t259 <- rd contacts (((30.0 * i243) + 8.0) + 1.0)
-      t260 <- rd contacts (((30.0 * i243) + 8.0) + 2.0)
-      t261 <- rd contacts ((30.0 * i243) + 11.0)
-      t262 <- rd contacts ((30.0 * i243) + 26.0)
-      t263 <- rd contacts ((30.0 * i243) + 24.0)
-      t264 <- rd contacts ((30.0 * i243) + 25.0)
-      t265 <- rd contacts ((30.0 * i243) + 22.0)
-      t266 <- rd vel (3.0 * t244)
-      t267 <- rd vel ((3.0 * t244) + 1.0)
-      t268 <- rd vel ((3.0 * t244) + 2.0)
-      t269 <- rd scalars ((6.0 * t244) + 1.0)
+  loopI 0.0 t1 $ \i242 -> do
+    let !d242 = fromIntegral i242 :: Double
+    loopI 0.0 t9 $ \i243 -> do
+      let !d243 = fromIntegral i243 :: Double
+      t244 <- rdI contacts (30 * i243)
+      t245 <- rdI contacts ((30 * i243) + 1)
+      t246 <- rdI contacts ((30 * i243) + 12)
+      t247 <- rdI contacts (((30 * i243) + 12) + 1)
+      t248 <- rdI contacts (((30 * i243) + 12) + 2)
+      t249 <- rdI contacts ((30 * i243) + 15)
+      t250 <- rdI contacts ((30 * i243) + 16)
+      t251 <- rdI contacts (((30 * i243) + 16) + 1)
+      t252 <- rdI contacts (((30 * i243) + 16) + 2)
+      t253 <- rdI contacts ((30 * i243) + 19)
+      t254 <- rdI contacts ((30 * i243) + 4)
+      t255 <- rdI contacts (((30 * i243) + 4) + 1)
+      t256 <- rdI contacts (((30 * i243) + 4) + 2)
+      t257 <- rdI contacts ((30 * i243) + 7)
+      t258 <- rdI contacts ((30 * i243) + 8)
+      t259 <- rdI contacts (((30 * i243) + 8) + 1)
+      t260 <- rdI contacts (((30 * i243) + 8) + 2)
+      t261 <- rdI contacts ((30 * i243) + 11)
+      t262 <- rdI contacts ((30 * i243) + 26)
+      t263 <- rdI contacts ((30 * i243) + 24)
+      t264 <- rdI contacts ((30 * i243) + 25)
+      t265 <- rdI contacts ((30 * i243) + 22)
+      t266 <- rdI vel (3 * (truncate t244))
+      t267 <- rdI vel ((3 * (truncate t244)) + 1)
+      t268 <- rdI vel ((3 * (truncate t244)) + 2)
+      t269 <- rdI scalars ((6 * (truncate t244)) + 1)
       v270 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t271 <- rd vel (3.0 * t245)
-        t272 <- rd vel ((3.0 * t245) + 1.0)
-        t273 <- rd vel ((3.0 * t245) + 2.0)
-        t274 <- rd scalars ((6.0 * t245) + 1.0)
+        t271 <- rdI vel (3 * (truncate t245))
+        t272 <- rdI vel ((3 * (truncate t245)) + 1)
+        t273 <- rdI vel ((3 * (truncate t245)) + 2)
+        t274 <- rdI scalars ((6 * (truncate t245)) + 1)
         setR v270 ((((t250 * t271) + (t251 * t272)) + (t252 * t273)) + (t253 * t274))
         pure ()
       else do
@@ -744,43 +764,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t280 = (if (t279 - t277) > 0 then t277 else t279)
       let !t281 = (if (t278 - t280) > 0 then t278 else t280)
       let !s282 = (if (1.0 - (abs (t281 - t281))) > 0 then t281 else 0.0)
-      wr contacts ((30.0 * i243) + 25.0) s282
-      t283 <- rd scalars ((6.0 * t244) + 2.0)
-      t284 <- rd scalars ((6.0 * t244) + 3.0)
-      t285 <- rd vel (3.0 * t244)
-      t286 <- rd vel ((3.0 * t244) + 1.0)
-      t287 <- rd vel ((3.0 * t244) + 2.0)
-      t288 <- rd scalars ((6.0 * t244) + 1.0)
-      wr vel (3.0 * t244) (t285 + ((t283 * (s282 - t264)) * t246))
-      wr vel ((3.0 * t244) + 1.0) (t286 + ((t283 * (s282 - t264)) * t247))
-      wr vel ((3.0 * t244) + 2.0) (t287 + ((t283 * (s282 - t264)) * t248))
-      wr scalars ((6.0 * t244) + 1.0) (t288 + ((t284 * (s282 - t264)) * t249))
+      wrI contacts ((30 * i243) + 25) s282
+      t283 <- rdI scalars ((6 * (truncate t244)) + 2)
+      t284 <- rdI scalars ((6 * (truncate t244)) + 3)
+      t285 <- rdI vel (3 * (truncate t244))
+      t286 <- rdI vel ((3 * (truncate t244)) + 1)
+      t287 <- rdI vel ((3 * (truncate t244)) + 2)
+      t288 <- rdI scalars ((6 * (truncate t244)) + 1)
+      wrI vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
+      wrI vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
+      wrI vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
+      wrI scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
       if (t245 + 0.5) > 0 then do
-        t289 <- rd scalars ((6.0 * t245) + 2.0)
-        t290 <- rd scalars ((6.0 * t245) + 3.0)
-        t291 <- rd vel (3.0 * t245)
-        t292 <- rd vel ((3.0 * t245) + 1.0)
-        t293 <- rd vel ((3.0 * t245) + 2.0)
-        t294 <- rd scalars ((6.0 * t245) + 1.0)
-        wr vel (3.0 * t245) (t291 + ((t289 * (negate (s282 - t264))) * t250))
-        wr vel ((3.0 * t245) + 1.0) (t292 + ((t289 * (negate (s282 - t264))) * t251))
-        wr vel ((3.0 * t245) + 2.0) (t293 + ((t289 * (negate (s282 - t264))) * t252))
-        wr scalars ((6.0 * t245) + 1.0) (t294 + ((t290 * (negate (s282 - t264))) * t253))
+        t289 <- rdI scalars ((6 * (truncate t245)) + 2)
+        t290 <- rdI scalars ((6 * (truncate t245)) + 3)
+        t291 <- rdI vel (3 * (truncate t245))
+        t292 <- rdI vel ((3 * (truncate t245)) + 1)
+        t293 <- rdI vel ((3 * (truncate t245)) + 2)
+        t294 <- rdI scalars ((6 * (truncate t245)) + 1)
+        wrI vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
+        wrI vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
+        wrI vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
+        wrI scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
         pure ()
       else do
         pure ()
-      t295 <- rd contacts ((30.0 * i243) + 21.0)
-      t296 <- rd contacts ((30.0 * i243) + 23.0)
-      t297 <- rd vel (3.0 * t244)
-      t298 <- rd vel ((3.0 * t244) + 1.0)
-      t299 <- rd vel ((3.0 * t244) + 2.0)
-      t300 <- rd scalars ((6.0 * t244) + 1.0)
+      t295 <- rdI contacts ((30 * i243) + 21)
+      t296 <- rdI contacts ((30 * i243) + 23)
+      t297 <- rdI vel (3 * (truncate t244))
+      t298 <- rdI vel ((3 * (truncate t244)) + 1)
+      t299 <- rdI vel ((3 * (truncate t244)) + 2)
+      t300 <- rdI scalars ((6 * (truncate t244)) + 1)
       v301 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t302 <- rd vel (3.0 * t245)
-        t303 <- rd vel ((3.0 * t245) + 1.0)
-        t304 <- rd vel ((3.0 * t245) + 2.0)
-        t305 <- rd scalars ((6.0 * t245) + 1.0)
+        t302 <- rdI vel (3 * (truncate t245))
+        t303 <- rdI vel ((3 * (truncate t245)) + 1)
+        t304 <- rdI vel ((3 * (truncate t245)) + 2)
+        t305 <- rdI scalars ((6 * (truncate t245)) + 1)
         setR v301 ((((t258 * t302) + (t259 * t303)) + (t260 * t304)) + (t261 * t305))
         pure ()
       else do
@@ -790,73 +810,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t308 = (t263 + ((t262 * (t296 - s307)) * t295))
       let !t309 = (if (negate t308) > 0 then 0.0 else t308)
       let !s310 = (if (1.0 - (abs (t309 - t309))) > 0 then t309 else 0.0)
-      wr contacts ((30.0 * i243) + 24.0) s310
-      t311 <- rd scalars ((6.0 * t244) + 2.0)
-      t312 <- rd scalars ((6.0 * t244) + 3.0)
-      t313 <- rd vel (3.0 * t244)
-      t314 <- rd vel ((3.0 * t244) + 1.0)
-      t315 <- rd vel ((3.0 * t244) + 2.0)
-      t316 <- rd scalars ((6.0 * t244) + 1.0)
-      wr vel (3.0 * t244) (t313 + ((t311 * (s310 - t263)) * t254))
-      wr vel ((3.0 * t244) + 1.0) (t314 + ((t311 * (s310 - t263)) * t255))
-      wr vel ((3.0 * t244) + 2.0) (t315 + ((t311 * (s310 - t263)) * t256))
-      wr scalars ((6.0 * t244) + 1.0) (t316 + ((t312 * (s310 - t263)) * t257))
+      wrI contacts ((30 * i243) + 24) s310
+      t311 <- rdI scalars ((6 * (truncate t244)) + 2)
+      t312 <- rdI scalars ((6 * (truncate t244)) + 3)
+      t313 <- rdI vel (3 * (truncate t244))
+      t314 <- rdI vel ((3 * (truncate t244)) + 1)
+      t315 <- rdI vel ((3 * (truncate t244)) + 2)
+      t316 <- rdI scalars ((6 * (truncate t244)) + 1)
+      wrI vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
+      wrI vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
+      wrI vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
+      wrI scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
       if (t245 + 0.5) > 0 then do
-        t317 <- rd scalars ((6.0 * t245) + 2.0)
-        t318 <- rd scalars ((6.0 * t245) + 3.0)
-        t319 <- rd vel (3.0 * t245)
-        t320 <- rd vel ((3.0 * t245) + 1.0)
-        t321 <- rd vel ((3.0 * t245) + 2.0)
-        t322 <- rd scalars ((6.0 * t245) + 1.0)
-        wr vel (3.0 * t245) (t319 + ((t317 * (negate (s310 - t263))) * t258))
-        wr vel ((3.0 * t245) + 1.0) (t320 + ((t317 * (negate (s310 - t263))) * t259))
-        wr vel ((3.0 * t245) + 2.0) (t321 + ((t317 * (negate (s310 - t263))) * t260))
-        wr scalars ((6.0 * t245) + 1.0) (t322 + ((t318 * (negate (s310 - t263))) * t261))
+        t317 <- rdI scalars ((6 * (truncate t245)) + 2)
+        t318 <- rdI scalars ((6 * (truncate t245)) + 3)
+        t319 <- rdI vel (3 * (truncate t245))
+        t320 <- rdI vel ((3 * (truncate t245)) + 1)
+        t321 <- rdI vel ((3 * (truncate t245)) + 2)
+        t322 <- rdI scalars ((6 * (truncate t245)) + 1)
+        wrI vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
+        wrI vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
+        wrI vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
+        wrI scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
         pure ()
       else do
         pure ()
       pure ()
-    t323 <- rd mouse 0.0
+    t323 <- rdI mouse 0
     if t323 > 0 then do
-      t324 <- rd mouse 1.0
-      t325 <- rd scalars ((6.0 * t324) + 2.0)
+      t324 <- rdI mouse 1
+      t325 <- rdI scalars ((6 * (truncate t324)) + 2)
       if t325 > 0 then do
-        t326 <- rd scalars ((6.0 * t324) + 3.0)
-        t327 <- rd params 0.0
-        t328 <- rd pos (3.0 * t324)
-        t329 <- rd pos ((3.0 * t324) + 1.0)
-        t330 <- rd pos ((3.0 * t324) + 2.0)
-        t331 <- rd normal (3.0 * t324)
-        t332 <- rd normal ((3.0 * t324) + 1.0)
-        t333 <- rd normal ((3.0 * t324) + 2.0)
-        t334 <- rd axis (3.0 * t324)
-        t335 <- rd axis ((3.0 * t324) + 1.0)
-        t336 <- rd axis ((3.0 * t324) + 2.0)
+        t326 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t327 <- rdI params 0
+        t328 <- rdI pos (3 * (truncate t324))
+        t329 <- rdI pos ((3 * (truncate t324)) + 1)
+        t330 <- rdI pos ((3 * (truncate t324)) + 2)
+        t331 <- rdI normal (3 * (truncate t324))
+        t332 <- rdI normal ((3 * (truncate t324)) + 1)
+        t333 <- rdI normal ((3 * (truncate t324)) + 2)
+        t334 <- rdI axis (3 * (truncate t324))
+        t335 <- rdI axis ((3 * (truncate t324)) + 1)
+        t336 <- rdI axis ((3 * (truncate t324)) + 2)
         let !s337 = ((t332 * t336) - (t333 * t335))
         let !s338 = ((t333 * t334) - (t331 * t336))
         let !s339 = ((t331 * t335) - (t332 * t334))
-        t340 <- rd scalars (6.0 * t324)
-        t341 <- rd scalars ((6.0 * t324) + 5.0)
-        t342 <- rd scalars ((6.0 * t324) + 2.0)
-        t343 <- rd scalars ((6.0 * t324) + 3.0)
-        t344 <- rd pos (3.0 * t324)
-        t345 <- rd pos ((3.0 * t324) + 1.0)
-        t346 <- rd pos ((3.0 * t324) + 2.0)
-        t347 <- rd normal (3.0 * t324)
-        t348 <- rd normal ((3.0 * t324) + 1.0)
-        t349 <- rd normal ((3.0 * t324) + 2.0)
-        t350 <- rd axis (3.0 * t324)
-        t351 <- rd axis ((3.0 * t324) + 1.0)
-        t352 <- rd axis ((3.0 * t324) + 2.0)
+        t340 <- rdI scalars (6 * (truncate t324))
+        t341 <- rdI scalars ((6 * (truncate t324)) + 5)
+        t342 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t343 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t344 <- rdI pos (3 * (truncate t324))
+        t345 <- rdI pos ((3 * (truncate t324)) + 1)
+        t346 <- rdI pos ((3 * (truncate t324)) + 2)
+        t347 <- rdI normal (3 * (truncate t324))
+        t348 <- rdI normal ((3 * (truncate t324)) + 1)
+        t349 <- rdI normal ((3 * (truncate t324)) + 2)
+        t350 <- rdI axis (3 * (truncate t324))
+        t351 <- rdI axis ((3 * (truncate t324)) + 1)
+        t352 <- rdI axis ((3 * (truncate t324)) + 2)
         let !s353 = ((t348 * t352) - (t349 * t351))
         let !s354 = ((t349 * t350) - (t347 * t352))
         let !s355 = ((t347 * t351) - (t348 * t350))
-        t356 <- rd scalars (6.0 * t324)
-        t357 <- rd scalars ((6.0 * t324) + 5.0)
-        t358 <- rd scalars ((6.0 * t324) + 2.0)
-        t359 <- rd scalars ((6.0 * t324) + 3.0)
-        t360 <- rd mouse 2.0
-        t361 <- rd mouse 3.0
+        t356 <- rdI scalars (6 * (truncate t324))
+        t357 <- rdI scalars ((6 * (truncate t324)) + 5)
+        t358 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t359 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t360 <- rdI mouse 2
+        t361 <- rdI mouse 3
         let !t362 = (t360 / 4.0)
         let !t363 = (if (abs t362) > 0 then 1.0 else 0.0)
         let !t364 = (t356 + t361)
@@ -931,12 +951,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s433 = ((t363 * (t426 * (t432 * t427))) + (t367 * s417))
         let !s434 = ((t363 * (t426 * (t432 * t429))) + (t367 * s418))
         let !s435 = ((t363 * (t426 * (t432 * t430))) + (t367 * s419))
-        t436 <- rd mouse 4.0
-        t437 <- rd mouse 5.0
-        t438 <- rd mouse 6.0
-        t439 <- rd mouse 7.0
-        t440 <- rd mouse 8.0
-        t441 <- rd mouse 9.0
+        t436 <- rdI mouse 4
+        t437 <- rdI mouse 5
+        t438 <- rdI mouse 6
+        t439 <- rdI mouse 7
+        t440 <- rdI mouse 8
+        t441 <- rdI mouse 9
         let !t442 = (recip t325)
         let !t443 = (6.283185307179586 * t439)
         let !s444 = (recip (t327 * ((((2.0 * t442) * t440) * t443) + (t327 * ((t442 * t443) * t443)))))
@@ -947,11 +967,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s449 = (s423 + (negate t436))
         let !s450 = (s424 + (negate t437))
         let !s451 = (s425 + (negate t438))
-        t452 <- rd mouse 10.0
-        t453 <- rd vel (3.0 * t324)
-        t454 <- rd vel ((3.0 * t324) + 1.0)
-        t455 <- rd vel ((3.0 * t324) + 2.0)
-        t456 <- rd scalars ((6.0 * t324) + 1.0)
+        t452 <- rdI mouse 10
+        t453 <- rdI vel (3 * (truncate t324))
+        t454 <- rdI vel ((3 * (truncate t324)) + 1)
+        t455 <- rdI vel ((3 * (truncate t324)) + 2)
+        t456 <- rdI scalars ((6 * (truncate t324)) + 1)
         let !t457 = (t441 * t327)
         let !t458 = (negate t457)
         let !t459 = (((((s447 * t336) - (s448 * t335)) * t331) + (((s448 * t334) - (s446 * t336)) * t332)) + (((s446 * t335) - (s447 * t334)) * t333))
@@ -959,38 +979,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t461 = (if (t460 - t457) > 0 then t457 else t460)
         let !t462 = (if (t458 - t461) > 0 then t458 else t461)
         let !s463 = (if (1.0 - (abs (t462 - t462))) > 0 then t462 else 0.0)
-        wr mouse 10.0 s463
-        t464 <- rd scalars ((6.0 * t324) + 2.0)
-        t465 <- rd scalars ((6.0 * t324) + 3.0)
-        t466 <- rd vel (3.0 * t324)
-        t467 <- rd vel ((3.0 * t324) + 1.0)
-        t468 <- rd vel ((3.0 * t324) + 2.0)
-        t469 <- rd scalars ((6.0 * t324) + 1.0)
-        wr vel (3.0 * t324) (t466 + ((t464 * (s463 - t452)) * t334))
-        wr vel ((3.0 * t324) + 1.0) (t467 + ((t464 * (s463 - t452)) * t335))
-        wr vel ((3.0 * t324) + 2.0) (t468 + ((t464 * (s463 - t452)) * t336))
-        wr scalars ((6.0 * t324) + 1.0) (t469 + ((t465 * (s463 - t452)) * t459))
-        t470 <- rd mouse 11.0
-        t471 <- rd vel (3.0 * t324)
-        t472 <- rd vel ((3.0 * t324) + 1.0)
-        t473 <- rd vel ((3.0 * t324) + 2.0)
-        t474 <- rd scalars ((6.0 * t324) + 1.0)
+        wrI mouse 10 s463
+        t464 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t465 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t466 <- rdI vel (3 * (truncate t324))
+        t467 <- rdI vel ((3 * (truncate t324)) + 1)
+        t468 <- rdI vel ((3 * (truncate t324)) + 2)
+        t469 <- rdI scalars ((6 * (truncate t324)) + 1)
+        wrI vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
+        wrI vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
+        wrI vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
+        wrI scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
+        t470 <- rdI mouse 11
+        t471 <- rdI vel (3 * (truncate t324))
+        t472 <- rdI vel ((3 * (truncate t324)) + 1)
+        t473 <- rdI vel ((3 * (truncate t324)) + 2)
+        t474 <- rdI scalars ((6 * (truncate t324)) + 1)
         let !t475 = (((((s447 * s339) - (s448 * s338)) * t331) + (((s448 * s337) - (s446 * s339)) * t332)) + (((s446 * s338) - (s447 * s337)) * t333))
         let !t476 = (t470 + ((negate ((((((s337 * t471) + (s338 * t472)) + (s339 * t473)) + (t475 * t474)) + (s445 * (((s449 * s337) + (s450 * s338)) + (s451 * s339)))) + (s444 * t470))) / (((t325 * (((s337 * s337) + (s338 * s338)) + (s339 * s339))) + ((t326 * t475) * t475)) + s444)))
         let !t477 = (if (t476 - t457) > 0 then t457 else t476)
         let !t478 = (if (t458 - t477) > 0 then t458 else t477)
         let !s479 = (if (1.0 - (abs (t478 - t478))) > 0 then t478 else 0.0)
-        wr mouse 11.0 s479
-        t480 <- rd scalars ((6.0 * t324) + 2.0)
-        t481 <- rd scalars ((6.0 * t324) + 3.0)
-        t482 <- rd vel (3.0 * t324)
-        t483 <- rd vel ((3.0 * t324) + 1.0)
-        t484 <- rd vel ((3.0 * t324) + 2.0)
-        t485 <- rd scalars ((6.0 * t324) + 1.0)
-        wr vel (3.0 * t324) (t482 + ((t480 * (s479 - t470)) * s337))
-        wr vel ((3.0 * t324) + 1.0) (t483 + ((t480 * (s479 - t470)) * s338))
-        wr vel ((3.0 * t324) + 2.0) (t484 + ((t480 * (s479 - t470)) * s339))
-        wr scalars ((6.0 * t324) + 1.0) (t485 + ((t481 * (s479 - t470)) * t475))
+        wrI mouse 11 s479
+        t480 <- rdI scalars ((6 * (truncate t324)) + 2)
+        t481 <- rdI scalars ((6 * (truncate t324)) + 3)
+        t482 <- rdI vel (3 * (truncate t324))
+        t483 <- rdI vel ((3 * (truncate t324)) + 1)
+        t484 <- rdI vel ((3 * (truncate t324)) + 2)
+        t485 <- rdI scalars ((6 * (truncate t324)) + 1)
+        wrI vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
+        wrI vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
+        wrI vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
+        wrI scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
         pure ()
       else do
         pure ()
@@ -998,48 +1018,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t486 <- rd meta 0.0
-  loop 0.0 t486 $ \i487 -> do
-    wr bodyPrev ((2.0 * i487) + 1.0) 0.0
+  t486 <- rdI meta 0
+  loopI 0.0 t486 $ \i487 -> do
+    let !d487 = fromIntegral i487 :: Double
+    wrI bodyPrev ((2 * i487) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i488 -> do
-    t489 <- rd contacts ((30.0 * i488) + 2.0)
-    wr prev (4.0 * i488) t489
-    t490 <- rd contacts ((30.0 * i488) + 3.0)
-    wr prev ((4.0 * i488) + 1.0) t490
-    t491 <- rd contacts ((30.0 * i488) + 24.0)
-    wr prev ((4.0 * i488) + 2.0) t491
-    t492 <- rd contacts ((30.0 * i488) + 25.0)
-    wr prev ((4.0 * i488) + 3.0) t492
-    t493 <- rd bodyPrev ((2.0 * t489) + 1.0)
+  loopI 0.0 t9 $ \i488 -> do
+    let !d488 = fromIntegral i488 :: Double
+    t489 <- rdI contacts ((30 * i488) + 2)
+    wrI prev (4 * i488) t489
+    t490 <- rdI contacts ((30 * i488) + 3)
+    wrI prev ((4 * i488) + 1) t490
+    t491 <- rdI contacts ((30 * i488) + 24)
+    wrI prev ((4 * i488) + 2) t491
+    t492 <- rdI contacts ((30 * i488) + 25)
+    wrI prev ((4 * i488) + 3) t492
+    t493 <- rdI bodyPrev ((2 * (truncate t489)) + 1)
     if (0.5 - t493) > 0 then do
-      wr bodyPrev (2.0 * t489) i488
+      wrI bodyPrev (2 * (truncate t489)) d488
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t489) + 1.0) (t493 + 1.0)
+    wrI bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1118,58 +1141,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t92 = (t12 + (t1 * t13))
     let !t93 = (1.0 - (abs ((((((((((((((s54 - s54) + t91) + (s56 - s56)) + (s78 - s78)) + (s79 - s79)) + (s80 - s80)) + (s87 - s87)) + (s88 - s88)) + (s89 - s89)) + (s57 - s57)) + (s58 - s58)) + (s59 - s59)) + (t92 - t92)) + t91)))
     if (if (t90 - t93) > 0 then t93 else t90) > 0 then do
-      wr pos (3.0 * i2) s54
-      wr pos ((3.0 * i2) + 1.0) s55
-      wr pos ((3.0 * i2) + 2.0) s56
-      wr vel (3.0 * i2) s78
-      wr vel ((3.0 * i2) + 1.0) s79
-      wr vel ((3.0 * i2) + 2.0) s80
-      wr axis (3.0 * i2) s87
-      wr axis ((3.0 * i2) + 1.0) s88
-      wr axis ((3.0 * i2) + 2.0) s89
-      wr normal (3.0 * i2) s57
-      wr normal ((3.0 * i2) + 1.0) s58
-      wr normal ((3.0 * i2) + 2.0) s59
-      wr scalars (6.0 * i2) t92
+      wrI pos (3 * i2) s54
+      wrI pos ((3 * i2) + 1) s55
+      wrI pos ((3 * i2) + 2) s56
+      wrI vel (3 * i2) s78
+      wrI vel ((3 * i2) + 1) s79
+      wrI vel ((3 * i2) + 2) s80
+      wrI axis (3 * i2) s87
+      wrI axis ((3 * i2) + 1) s88
+      wrI axis ((3 * i2) + 2) s89
+      wrI normal (3 * i2) s57
+      wrI normal ((3 * i2) + 1) s58
+      wrI normal ((3 * i2) + 2) s59
+      wrI scalars (6 * i2) t92
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t94 <- rd meta 1.0
-      wr meta 1.0 (t94 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t94 <- rdI meta 1
+      wrI meta 1 (t94 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1214,9 +1239,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s60 = (t42 * t8)
         let !s61 = (t28 + (t42 * t9))
         let !s62 = (t42 * t10)
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s46 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s47 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s46 - s46) + (s47 - s47)) + (s48 - s48)))) > 0 then s48 else t4)
         let !t63 = (s47 + (s27 * s58))
         let !t64 = (if (abs s61) > 0 then 1.0 else 0.0)
         let !t65 = (if ((abs t63) - 1.0e-10) > 0 then t64 else 0.0)
@@ -1249,9 +1274,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s92 = (t42 * s60)
         let !s93 = (t28 + (t42 * s61))
         let !s94 = (t42 * s62)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s79 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s80 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s79 - s79) + (s80 - s80)) + (s81 - s81)))) > 0 then s81 else t4)
         let !t95 = (s80 + (s27 * s90))
         let !t96 = (if (abs s93) > 0 then 1.0 else 0.0)
         let !t97 = (if ((abs t95) - 1.0e-10) > 0 then t96 else 0.0)
@@ -1284,9 +1309,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s124 = (t42 * s92)
         let !s125 = (t28 + (t42 * s93))
         let !s126 = (t42 * s94)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
         let !t127 = (s112 + (s27 * s122))
         let !t128 = (if (abs s125) > 0 then 1.0 else 0.0)
         let !t129 = (if ((abs t127) - 1.0e-10) > 0 then t128 else 0.0)
@@ -1319,9 +1344,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s156 = (t42 * s124)
         let !s157 = (t28 + (t42 * s125))
         let !s158 = (t42 * s126)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s143 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s144 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145)))) > 0 then s145 else t4)
         pure ()
       else do
         let !t159 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1349,18 +1374,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = (if t180 > 0 then t174 else t2)
         let !s182 = (if t180 > 0 then t175 else t3)
         let !s183 = (if t180 > 0 then t179 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s181
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s182
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s183
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s181 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s182 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s183 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s181 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s182 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s181
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s182
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s183
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s181 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s182 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s183 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s181 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s182 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s183 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,34 +28,35 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (4.0 * t6)
       let !t15 = (t12 * t14)
       let !t16 = (t8 + (t1 * (negate (t15 * t11))))
       let !t17 = (t9 + (t1 * (t14 + (negate (t15 * t12)))))
       let !t18 = (t10 + (t1 * (negate (t15 * t13))))
       if (1.0 - (abs (((t16 - t16) + (t17 - t17)) + (t18 - t18)))) > 0 then do
-        wr vel (3.0 * i3) t16
-        wr vel ((3.0 * i3) + 1.0) t17
-        wr vel ((3.0 * i3) + 2.0) t18
+        wrI vel (3 * i3) t16
+        wrI vel ((3 * i3) + 1) t17
+        wrI vel ((3 * i3) + 2) t18
         pure ()
       else do
-        t19 <- rd meta 1.0
-        wr meta 1.0 (t19 + 1.0)
+        t19 <- rdI meta 1
+        wrI meta 1 (t19 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,11 +66,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -79,81 +81,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -170,40 +181,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !s67 = (negate t32)
     let !s68 = (negate t33)
     let !s69 = (negate t34)
-    t70 <- rd meta 4.0
-    t71 <- rd meta 5.0
+    t70 <- rdI meta 4
+    t71 <- rdI meta 5
     let !s72 = (floorF (s67 / t71))
     let !s73 = (floorF (s68 / t71))
     let !s74 = (floorF (s69 / t71))
-    loop 0.0 3.0 $ \i75 -> do
-      loop 0.0 3.0 $ \i76 -> do
-        loop 0.0 3.0 $ \i77 -> do
-          let !s78 = ((s72 + i75) - 1.0)
-          let !s79 = ((s73 + i76) - 1.0)
-          let !s80 = ((s74 + i77) - 1.0)
+    loopI 0.0 3.0 $ \i75 -> do
+      let !d75 = fromIntegral i75 :: Double
+      loopI 0.0 3.0 $ \i76 -> do
+        let !d76 = fromIntegral i76 :: Double
+        loopI 0.0 3.0 $ \i77 -> do
+          let !d77 = fromIntegral i77 :: Double
+          let !s78 = ((s72 + d75) - 1.0)
+          let !s79 = ((s73 + d76) - 1.0)
+          let !s80 = ((s74 + d77) - 1.0)
           let !s81 = (((((s78 + 131072.0) * 262144.0) + (s79 + 131072.0)) * 262144.0) + (s80 + 131072.0))
           let !t82 = (((s78 * 7.3856093e7) + (s79 * 1.9349663e7)) + (s80 * 8.3492791e7))
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
-          t84 <- rd grid s83
-          t85 <- rd grid (t70 + s83)
-          loop t85 t84 $ \i86 -> do
-            t87 <- rd items i86
-            t88 <- rd cellOf t87
+          t84 <- rdI grid (truncate s83)
+          t85 <- rdI grid ((truncate t70) + (truncate s83))
+          loopI t85 t84 $ \i86 -> do
+            let !d86 = fromIntegral i86 :: Double
+            t87 <- rdI items i86
+            t88 <- rdI cellOf (truncate t87)
             if (0.5 - (abs (t88 - s81))) > 0 then do
-              if ((t87 - i31) + 0.5) > 0 then do
-                t89 <- rd pos (3.0 * t87)
-                t90 <- rd pos ((3.0 * t87) + 1.0)
-                t91 <- rd pos ((3.0 * t87) + 2.0)
-                t92 <- rd scalars ((6.0 * t87) + 5.0)
-                t93 <- rd scalars ((6.0 * t87) + 2.0)
+              if ((t87 - d31) + 0.5) > 0 then do
+                t89 <- rdI pos (3 * (truncate t87))
+                t90 <- rdI pos ((3 * (truncate t87)) + 1)
+                t91 <- rdI pos ((3 * (truncate t87)) + 2)
+                t92 <- rdI scalars ((6 * (truncate t87)) + 5)
+                t93 <- rdI scalars ((6 * (truncate t87)) + 2)
                 let !t94 = (t36 + t93)
                 let !t95 = (s67 + (negate t89))
                 let !t96 = (s68 + (negate t90))
                 let !t97 = (s69 + (negate t91))
                 let !t98 = ((t35 + t92) - (sqrt (((t95 * t95) + (t96 * t96)) + (t97 * t97))))
                 if (if (t94 - t98) > 0 then t98 else t94) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t87 + 1.0) * 64.0) + 16.0) i31 t87 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((((t87 + 1.0) * 64.0) + 16.0) + 2.0) t87 i31 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t87 + 1.0) * 64.0) + 16.0) d31 t87 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t87 + 1.0) * 64.0) + 16.0) + 2.0) t87 d31 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0 1.0
                   pure ()
                 else do
                   pure ()
@@ -217,15 +232,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t99 <- rd verts (3.0 * (97.0 * i31))
-    t100 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t101 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t99 <- rdI verts (3 * (97 * i31))
+    t100 <- rdI verts ((3 * (97 * i31)) + 1)
+    t101 <- rdI verts ((3 * (97 * i31)) + 2)
     v102 <- newR 1.0
-    loop 0.0 24.0 $ \i103 -> do
-      t104 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i103 * 4.0)) + 3.0))
-      t105 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i103 * 4.0)) + 3.0)) + 1.0)
-      t106 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i103 * 4.0)) + 3.0)) + 2.0)
-      t107 <- rd radii ((24.0 * i31) + i103)
+    loopI 0.0 24.0 $ \i103 -> do
+      let !d103 = fromIntegral i103 :: Double
+      t104 <- rdI verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3))
+      t105 <- rdI verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 1)
+      t106 <- rdI verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 2)
+      t107 <- rdI radii ((24 * i31) + i103)
       t108 <- getR v102
       let !t109 = (t104 + (negate t99))
       let !t110 = (t105 + (negate t100))
@@ -242,25 +258,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v118 <- newR 0.0
       v119 <- newR 0.0
       v120 <- newR 0.0
-      loop 0.0 24.0 $ \i121 -> do
-        t122 <- rd radii ((24.0 * i31) + i121)
-        loop 6.0 12.0 $ \i123 -> do
-          let !t124 = (i121 + i123)
-          t125 <- rd radii ((24.0 * i31) + (t124 - (24.0 * (floorF (t124 / 24.0)))))
-          loop 1.0 4.0 $ \i126 -> do
-            t127 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i121 * 4.0)) + (i126 - 1.0)))
-            t128 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i121 * 4.0)) + (i126 - 1.0))) + 1.0)
-            t129 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i121 * 4.0)) + (i126 - 1.0))) + 2.0)
-            t130 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i121 * 4.0)) + i126))
-            t131 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i121 * 4.0)) + i126)) + 1.0)
-            t132 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i121 * 4.0)) + i126)) + 2.0)
-            loop 1.0 4.0 $ \i133 -> do
-              t134 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (i133 - 1.0)))
-              t135 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (i133 - 1.0))) + 1.0)
-              t136 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (i133 - 1.0))) + 2.0)
-              t137 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + i133))
-              t138 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + i133)) + 1.0)
-              t139 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + i133)) + 2.0)
+      loopI 0.0 24.0 $ \i121 -> do
+        let !d121 = fromIntegral i121 :: Double
+        t122 <- rdI radii ((24 * i31) + i121)
+        loopI 6.0 12.0 $ \i123 -> do
+          let !d123 = fromIntegral i123 :: Double
+          let !t124 = (d121 + d123)
+          t125 <- rdI radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0))))))
+          loopI 1.0 4.0 $ \i126 -> do
+            let !d126 = fromIntegral i126 :: Double
+            t127 <- rdI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1)))
+            t128 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 1)
+            t129 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 2)
+            t130 <- rdI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126))
+            t131 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 1)
+            t132 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 2)
+            loopI 1.0 4.0 $ \i133 -> do
+              let !d133 = fromIntegral i133 :: Double
+              t134 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))))
+              t135 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 1.0))
+              t136 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 2.0))
+              t137 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)))
+              t138 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 1.0))
+              t139 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 2.0))
               t140 <- getR v114
               let !t141 = (negate t134)
               let !t142 = (t137 + t141)
@@ -293,19 +313,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t169 = (if (negate t162) > 0 then (if (negate t165) > 0 then 0.0 else t165) else (if t166 > 0 then (if (negate t168) > 0 then 0.0 else t168) else t161))
               let !t170 = (if t166 > 0 then 1.0 else t162)
               let !t171 = (if (negate t170) > 0 then 0.0 else t170)
-              let !t172 = ((0.5 * ((t122 - ((t122 * (i126 + t169)) / 4.0)) + (t125 - ((t125 * (i133 + t171)) / 4.0)))) - t140)
+              let !t172 = ((0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0)))) - t140)
               let !t173 = ((t127 + (t169 * t148)) + (negate (t134 + (t171 * t142))))
               let !t174 = ((t128 + (t169 * t149)) + (negate (t135 + (t171 * t144))))
               let !t175 = ((t129 + (t169 * t150)) + (negate (t136 + (t171 * t146))))
               let !t176 = ((0.3 * ((if (t125 - t122) > 0 then t122 else t125) / 4.0)) - (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175))))
               if (if (t172 - t176) > 0 then t176 else t172) > 0 then do
-                setR v114 (0.5 * ((t122 - ((t122 * (i126 + t169)) / 4.0)) + (t125 - ((t125 * (i133 + t171)) / 4.0))))
-                t177 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i121 * 4.0)))
-                t178 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i121 * 4.0))) + 1.0)
-                t179 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i121 * 4.0))) + 2.0)
-                t180 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)))
-                t181 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0)
-                t182 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0)
+                setR v114 (0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0))))
+                t177 <- rdI verts (3 * (((97 * i31) + 1) + (i121 * 4)))
+                t178 <- rdI verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 1)
+                t179 <- rdI verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 2)
+                t180 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))))
+                t181 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0))
+                t182 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0))
                 setR v115 (t127 + (t169 * t148))
                 setR v116 (t128 + (t169 * t149))
                 setR v117 (t129 + (t169 * t150))
@@ -356,89 +376,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s216 = (t215 * t211)
         let !s217 = (t215 * t212)
         let !s218 = (t215 * t213)
-        t219 <- rd meta 2.0
-        t220 <- rd meta 3.0
+        t219 <- rdI meta 2
+        t220 <- rdI meta 3
         if (((8.0 * (if (1.0 - t220) > 0 then 1.0 else t220)) - t219) - 0.5) > 0 then do
-          wr meta 2.0 (t219 + 1.0)
-          t221 <- rd pos (3.0 * i31)
-          t222 <- rd pos ((3.0 * i31) + 1.0)
-          t223 <- rd pos ((3.0 * i31) + 2.0)
-          t224 <- rd normal (3.0 * i31)
-          t225 <- rd normal ((3.0 * i31) + 1.0)
-          t226 <- rd normal ((3.0 * i31) + 2.0)
-          t227 <- rd axis (3.0 * i31)
-          t228 <- rd axis ((3.0 * i31) + 1.0)
-          t229 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t219 + 1.0)
+          t221 <- rdI pos (3 * i31)
+          t222 <- rdI pos ((3 * i31) + 1)
+          t223 <- rdI pos ((3 * i31) + 2)
+          t224 <- rdI normal (3 * i31)
+          t225 <- rdI normal ((3 * i31) + 1)
+          t226 <- rdI normal ((3 * i31) + 2)
+          t227 <- rdI axis (3 * i31)
+          t228 <- rdI axis ((3 * i31) + 1)
+          t229 <- rdI axis ((3 * i31) + 2)
           let !s230 = ((t225 * t229) - (t226 * t228))
           let !s231 = ((t226 * t227) - (t224 * t229))
           let !s232 = ((t224 * t228) - (t225 * t227))
-          t233 <- rd scalars (6.0 * i31)
-          t234 <- rd scalars ((6.0 * i31) + 5.0)
-          t235 <- rd scalars ((6.0 * i31) + 2.0)
-          t236 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t219) i31
-          wr contacts ((30.0 * t219) + 1.0) (-1.0)
-          wr contacts ((30.0 * t219) + 2.0) i31
-          wr contacts ((30.0 * t219) + 3.0) 12.0
-          wr contacts ((30.0 * t219) + 4.0) (s216 + (negate ((((t224 * s216) + (t225 * s217)) + (t226 * s218)) * t224)))
-          wr contacts (((30.0 * t219) + 4.0) + 1.0) (s217 + (negate ((((t224 * s216) + (t225 * s217)) + (t226 * s218)) * t225)))
-          wr contacts (((30.0 * t219) + 4.0) + 2.0) (s218 + (negate ((((t224 * s216) + (t225 * s217)) + (t226 * s218)) * t226)))
-          wr contacts ((30.0 * t219) + 7.0) 0.0
-          wr contacts ((30.0 * t219) + 12.0) 0.0
-          wr contacts (((30.0 * t219) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t219) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t219) + 15.0) 0.0
-          wr contacts ((30.0 * t219) + 20.0) t194
-          wr contacts ((30.0 * t219) + 26.0) 0.6
-          wr contacts ((30.0 * t219) + 27.0) t195
-          wr contacts (((30.0 * t219) + 27.0) + 1.0) t196
-          wr contacts (((30.0 * t219) + 27.0) + 2.0) t197
+          t233 <- rdI scalars (6 * i31)
+          t234 <- rdI scalars ((6 * i31) + 5)
+          t235 <- rdI scalars ((6 * i31) + 2)
+          t236 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t219)) d31
+          wrI contacts ((30 * (truncate t219)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t219)) + 2) d31
+          wrI contacts ((30 * (truncate t219)) + 3) 12.0
+          wrI contacts ((30 * (truncate t219)) + 4) (s216 + (negate ((((t224 * s216) + (t225 * s217)) + (t226 * s218)) * t224)))
+          wrI contacts (((30 * (truncate t219)) + 4) + 1) (s217 + (negate ((((t224 * s216) + (t225 * s217)) + (t226 * s218)) * t225)))
+          wrI contacts (((30 * (truncate t219)) + 4) + 2) (s218 + (negate ((((t224 * s216) + (t225 * s217)) + (t226 * s218)) * t226)))
+          wrI contacts ((30 * (truncate t219)) + 7) 0.0
+          wrI contacts ((30 * (truncate t219)) + 12) 0.0
+          wrI contacts (((30 * (truncate t219)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t219)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t219)) + 15) 0.0
+          wrI contacts ((30 * (truncate t219)) + 20) t194
+          wrI contacts ((30 * (truncate t219)) + 26) 0.6
+          wrI contacts ((30 * (truncate t219)) + 27) t195
+          wrI contacts (((30 * (truncate t219)) + 27) + 1) t196
+          wrI contacts (((30 * (truncate t219)) + 27) + 2) t197
           if (-0.5) > 0 then do
-            t237 <- rd pos (-3.0)
-            t238 <- rd pos (-2.0)
-            t239 <- rd pos (-1.0)
-            t240 <- rd normal (-3.0)
-            t241 <- rd normal (-2.0)
-            t242 <- rd normal (-1.0)
-            t243 <- rd axis (-3.0)
-            t244 <- rd axis (-2.0)
-            t245 <- rd axis (-1.0)
+            t237 <- rdI pos (-3)
+            t238 <- rdI pos (-2)
+            t239 <- rdI pos (-1)
+            t240 <- rdI normal (-3)
+            t241 <- rdI normal (-2)
+            t242 <- rdI normal (-1)
+            t243 <- rdI axis (-3)
+            t244 <- rdI axis (-2)
+            t245 <- rdI axis (-1)
             let !s246 = ((t241 * t245) - (t242 * t244))
             let !s247 = ((t242 * t243) - (t240 * t245))
             let !s248 = ((t240 * t244) - (t241 * t243))
-            t249 <- rd scalars (-6.0)
-            t250 <- rd scalars (-1.0)
-            t251 <- rd scalars (-4.0)
-            t252 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t219) + 8.0) (s216 + (negate ((((t240 * s216) + (t241 * s217)) + (t242 * s218)) * t240)))
-            wr contacts (((30.0 * t219) + 8.0) + 1.0) (s217 + (negate ((((t240 * s216) + (t241 * s217)) + (t242 * s218)) * t241)))
-            wr contacts (((30.0 * t219) + 8.0) + 2.0) (s218 + (negate ((((t240 * s216) + (t241 * s217)) + (t242 * s218)) * t242)))
+            t249 <- rdI scalars (-6)
+            t250 <- rdI scalars (-1)
+            t251 <- rdI scalars (-4)
+            t252 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t219)) + 8) (s216 + (negate ((((t240 * s216) + (t241 * s217)) + (t242 * s218)) * t240)))
+            wrI contacts (((30 * (truncate t219)) + 8) + 1) (s217 + (negate ((((t240 * s216) + (t241 * s217)) + (t242 * s218)) * t241)))
+            wrI contacts (((30 * (truncate t219)) + 8) + 2) (s218 + (negate ((((t240 * s216) + (t241 * s217)) + (t242 * s218)) * t242)))
             let !t253 = (t196 + (negate t238))
             let !t254 = (t197 + (negate t239))
             let !t255 = (t195 + (negate t237))
-            wr contacts ((30.0 * t219) + 11.0) (((((t253 * s218) - (t254 * s217)) * t240) + (((t254 * s216) - (t255 * s218)) * t241)) + (((t255 * s217) - (t253 * s216)) * t242))
+            wrI contacts ((30 * (truncate t219)) + 11) (((((t253 * s218) - (t254 * s217)) * t240) + (((t254 * s216) - (t255 * s218)) * t241)) + (((t255 * s217) - (t253 * s216)) * t242))
             let !t256 = ((t225 * s218) - (t226 * s217))
-            wr contacts ((30.0 * t219) + 16.0) (t256 + (negate ((((t240 * t256) + (t241 * ((t226 * s216) - (t224 * s218)))) + (t242 * ((t224 * s217) - (t225 * s216)))) * t240)))
+            wrI contacts ((30 * (truncate t219)) + 16) (t256 + (negate ((((t240 * t256) + (t241 * ((t226 * s216) - (t224 * s218)))) + (t242 * ((t224 * s217) - (t225 * s216)))) * t240)))
             let !t257 = ((t226 * s216) - (t224 * s218))
-            wr contacts (((30.0 * t219) + 16.0) + 1.0) (t257 + (negate ((((t240 * t256) + (t241 * t257)) + (t242 * ((t224 * s217) - (t225 * s216)))) * t241)))
+            wrI contacts (((30 * (truncate t219)) + 16) + 1) (t257 + (negate ((((t240 * t256) + (t241 * t257)) + (t242 * ((t224 * s217) - (t225 * s216)))) * t241)))
             let !t258 = ((t224 * s217) - (t225 * s216))
-            wr contacts (((30.0 * t219) + 16.0) + 2.0) (t258 + (negate ((((t240 * t256) + (t241 * t257)) + (t242 * t258)) * t242)))
-            wr contacts ((30.0 * t219) + 19.0) (((((t253 * t258) - (t254 * t257)) * t240) + (((t254 * t256) - (t255 * t258)) * t241)) + (((t255 * t257) - (t253 * t256)) * t242))
+            wrI contacts (((30 * (truncate t219)) + 16) + 2) (t258 + (negate ((((t240 * t256) + (t241 * t257)) + (t242 * t258)) * t242)))
+            wrI contacts ((30 * (truncate t219)) + 19) (((((t253 * t258) - (t254 * t257)) * t240) + (((t254 * t256) - (t255 * t258)) * t241)) + (((t255 * t257) - (t253 * t256)) * t242))
             pure ()
           else do
-            wr contacts ((30.0 * t219) + 8.0) 0.0
-            wr contacts (((30.0 * t219) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t219) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t219) + 11.0) 0.0
-            wr contacts ((30.0 * t219) + 16.0) 0.0
-            wr contacts (((30.0 * t219) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t219) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t219) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t219)) + 8) 0.0
+            wrI contacts (((30 * (truncate t219)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t219)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t219)) + 11) 0.0
+            wrI contacts ((30 * (truncate t219)) + 16) 0.0
+            wrI contacts (((30 * (truncate t219)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t219)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t219)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t259 <- rd meta 6.0
-          wr meta 6.0 (t259 + 1.0)
+          t259 <- rdI meta 6
+          wrI meta 6 (t259 + 1.0)
           pure ()
         pure ()
       else do
@@ -451,43 +471,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -495,12 +516,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -508,20 +529,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -532,18 +553,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -551,98 +573,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -893,12 +915,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s385 = ((t139 * (t367 * (t384 * t380))) + (t179 * s325))
       let !s386 = ((t139 * (t367 * (t384 * t381))) + (t179 * s326))
       let !s387 = ((t139 * (t367 * (t384 * t382))) + (t179 * s327))
-      t388 <- rd mouse 4.0
-      t389 <- rd mouse 5.0
-      t390 <- rd mouse 6.0
-      t391 <- rd mouse 7.0
-      t392 <- rd mouse 8.0
-      t393 <- rd mouse 9.0
+      t388 <- rdI mouse 4
+      t389 <- rdI mouse 5
+      t390 <- rdI mouse 6
+      t391 <- rdI mouse 7
+      t392 <- rdI mouse 8
+      t393 <- rdI mouse 9
       let !t394 = (recip t101)
       let !t395 = (6.283185307179586 * t391)
       let !s396 = (recip (t103 * ((((2.0 * t394) * t392) * t395) + (t103 * ((t394 * t395) * t395)))))
@@ -909,68 +931,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s401 = (s364 + (negate t388))
       let !s402 = (s365 + (negate t389))
       let !s403 = (s366 + (negate t390))
-      t404 <- rd mouse 10.0
-      t405 <- rd scalars ((6.0 * t100) + 2.0)
-      t406 <- rd scalars ((6.0 * t100) + 3.0)
-      t407 <- rd vel (3.0 * t100)
-      t408 <- rd vel ((3.0 * t100) + 1.0)
-      t409 <- rd vel ((3.0 * t100) + 2.0)
-      t410 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t407 + ((t405 * t404) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t408 + ((t405 * t404) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t409 + ((t405 * t404) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
-      t411 <- rd mouse 11.0
-      t412 <- rd scalars ((6.0 * t100) + 2.0)
-      t413 <- rd scalars ((6.0 * t100) + 3.0)
-      t414 <- rd vel (3.0 * t100)
-      t415 <- rd vel ((3.0 * t100) + 1.0)
-      t416 <- rd vel ((3.0 * t100) + 2.0)
-      t417 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t414 + ((t412 * t411) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t415 + ((t412 * t411) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t416 + ((t412 * t411) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
+      t404 <- rdI mouse 10
+      t405 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t406 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t407 <- rdI vel (3 * (truncate t100))
+      t408 <- rdI vel ((3 * (truncate t100)) + 1)
+      t409 <- rdI vel ((3 * (truncate t100)) + 2)
+      t410 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t407 + ((t405 * t404) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t408 + ((t405 * t404) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t409 + ((t405 * t404) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
+      t411 <- rdI mouse 11
+      t412 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t413 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t414 <- rdI vel (3 * (truncate t100))
+      t415 <- rdI vel ((3 * (truncate t100)) + 1)
+      t416 <- rdI vel ((3 * (truncate t100)) + 2)
+      t417 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t414 + ((t412 * t411) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t415 + ((t412 * t411) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t416 + ((t412 * t411) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i418 -> do
-    loop 0.0 t9 $ \i419 -> do
-      t420 <- rd contacts (30.0 * i419)
-      t421 <- rd contacts ((30.0 * i419) + 1.0)
-      t422 <- rd contacts ((30.0 * i419) + 12.0)
-      t423 <- rd contacts (((30.0 * i419) + 12.0) + 1.0)
-      t424 <- rd contacts (((30.0 * i419) + 12.0) + 2.0)
-      t425 <- rd contacts ((30.0 * i419) + 15.0)
-      t426 <- rd contacts ((30.0 * i419) + 16.0)
-      t427 <- rd contacts (((30.0 * i419) + 16.0) + 1.0)
-      t428 <- rd contacts (((30.0 * i419) + 16.0) + 2.0)
-      t429 <- rd contacts ((30.0 * i419) + 19.0)
-      t430 <- rd contacts ((30.0 * i419) + 4.0)
-      t431 <- rd contacts (((30.0 * i419) + 4.0) + 1.0)
-      t432 <- rd contacts (((30.0 * i419) + 4.0) + 2.0)
-      t433 <- rd contacts ((30.0 * i419) + 7.0)
-      t434 <- rd contacts ((30.0 * i419) + 8.0)
-      t435 <- rd contacts (((30.0 * i419) + 8.0) + 1.0)
-      t436 <- rd contacts (((30.0 * i419) + 8.0) + 2.0)
-      t437 <- rd contacts ((30.0 * i419) + 11.0)
-      t438 <- rd contacts ((30.0 * i419) + 26.0)
-      t439 <- rd contacts ((30.0 * i419) + 24.0)
-      t440 <- rd contacts ((30.0 * i419) + 25.0)
-      t441 <- rd contacts ((30.0 * i419) + 22.0)
-      t442 <- rd vel (3.0 * t420)
-      t443 <- rd vel ((3.0 * t420) + 1.0)
-      t444 <- rd vel ((3.0 * t420) + 2.0)
-      t445 <- rd scalars ((6.0 * t420) + 1.0)
+  loopI 0.0 t1 $ \i418 -> do
+    let !d418 = fromIntegral i418 :: Double
+    loopI 0.0 t9 $ \i419 -> do
+      let !d419 = fromIntegral i419 :: Double
+      t420 <- rdI contacts (30 * i419)
+      t421 <- rdI contacts ((30 * i419) + 1)
+      t422 <- rdI contacts ((30 * i419) + 12)
+      t423 <- rdI contacts (((30 * i419) + 12) + 1)
+      t424 <- rdI contacts (((30 * i419) + 12) + 2)
+      t425 <- rdI contacts ((30 * i419) + 15)
+      t426 <- rdI contacts ((30 * i419) + 16)
+      t427 <- rdI contacts (((30 * i419) + 16) + 1)
+      t428 <- rdI contacts (((30 * i419) + 16) + 2)
+      t429 <- rdI contacts ((30 * i419) + 19)
+      t430 <- rdI contacts ((30 * i419) + 4)
+      t431 <- rdI contacts (((30 * i419) + 4) + 1)
+      t432 <- rdI contacts (((30 * i419) + 4) + 2)
+      t433 <- rdI contacts ((30 * i419) + 7)
+      t434 <- rdI contacts ((30 * i419) + 8)
+      t435 <- rdI contacts (((30 * i419) + 8) + 1)
+      t436 <- rdI contacts (((30 * i419) + 8) + 2)
+      t437 <- rdI contacts ((30 * i419) + 11)
+      t438 <- rdI contacts ((30 * i419) + 26)
+      t439 <- rdI contacts ((30 * i419) + 24)
+      t440 <- rdI contacts ((30 * i419) + 25)
+      t441 <- rdI contacts ((30 * i419) + 22)
+      t442 <- rdI vel (3 * (truncate t420))
+      t443 <- rdI vel ((3 * (truncate t420)) + 1)
+      t444 <- rdI vel ((3 * (truncate t420)) + 2)
+      t445 <- rdI scalars ((6 * (truncate t420)) + 1)
       v446 <- newR 0.0
       if (t421 + 0.5) > 0 then do
-        t447 <- rd vel (3.0 * t421)
-        t448 <- rd vel ((3.0 * t421) + 1.0)
-        t449 <- rd vel ((3.0 * t421) + 2.0)
-        t450 <- rd scalars ((6.0 * t421) + 1.0)
+        t447 <- rdI vel (3 * (truncate t421))
+        t448 <- rdI vel ((3 * (truncate t421)) + 1)
+        t449 <- rdI vel ((3 * (truncate t421)) + 2)
+        t450 <- rdI scalars ((6 * (truncate t421)) + 1)
         setR v446 ((((t426 * t447) + (t427 * t448)) + (t428 * t449)) + (t429 * t450))
         pure ()
       else do
@@ -983,43 +1007,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t456 = (if (t455 - t453) > 0 then t453 else t455)
       let !t457 = (if (t454 - t456) > 0 then t454 else t456)
       let !s458 = (if (1.0 - (abs (t457 - t457))) > 0 then t457 else 0.0)
-      wr contacts ((30.0 * i419) + 25.0) s458
-      t459 <- rd scalars ((6.0 * t420) + 2.0)
-      t460 <- rd scalars ((6.0 * t420) + 3.0)
-      t461 <- rd vel (3.0 * t420)
-      t462 <- rd vel ((3.0 * t420) + 1.0)
-      t463 <- rd vel ((3.0 * t420) + 2.0)
-      t464 <- rd scalars ((6.0 * t420) + 1.0)
-      wr vel (3.0 * t420) (t461 + ((t459 * (s458 - t440)) * t422))
-      wr vel ((3.0 * t420) + 1.0) (t462 + ((t459 * (s458 - t440)) * t423))
-      wr vel ((3.0 * t420) + 2.0) (t463 + ((t459 * (s458 - t440)) * t424))
-      wr scalars ((6.0 * t420) + 1.0) (t464 + ((t460 * (s458 - t440)) * t425))
+      wrI contacts ((30 * i419) + 25) s458
+      t459 <- rdI scalars ((6 * (truncate t420)) + 2)
+      t460 <- rdI scalars ((6 * (truncate t420)) + 3)
+      t461 <- rdI vel (3 * (truncate t420))
+      t462 <- rdI vel ((3 * (truncate t420)) + 1)
+      t463 <- rdI vel ((3 * (truncate t420)) + 2)
+      t464 <- rdI scalars ((6 * (truncate t420)) + 1)
+      wrI vel (3 * (truncate t420)) (t461 + ((t459 * (s458 - t440)) * t422))
+      wrI vel ((3 * (truncate t420)) + 1) (t462 + ((t459 * (s458 - t440)) * t423))
+      wrI vel ((3 * (truncate t420)) + 2) (t463 + ((t459 * (s458 - t440)) * t424))
+      wrI scalars ((6 * (truncate t420)) + 1) (t464 + ((t460 * (s458 - t440)) * t425))
       if (t421 + 0.5) > 0 then do
-        t465 <- rd scalars ((6.0 * t421) + 2.0)
-        t466 <- rd scalars ((6.0 * t421) + 3.0)
-        t467 <- rd vel (3.0 * t421)
-        t468 <- rd vel ((3.0 * t421) + 1.0)
-        t469 <- rd vel ((3.0 * t421) + 2.0)
-        t470 <- rd scalars ((6.0 * t421) + 1.0)
-        wr vel (3.0 * t421) (t467 + ((t465 * (negate (s458 - t440))) * t426))
-        wr vel ((3.0 * t421) + 1.0) (t468 + ((t465 * (negate (s458 - t440))) * t427))
-        wr vel ((3.0 * t421) + 2.0) (t469 + ((t465 * (negate (s458 - t440))) * t428))
-        wr scalars ((6.0 * t421) + 1.0) (t470 + ((t466 * (negate (s458 - t440))) * t429))
+        t465 <- rdI scalars ((6 * (truncate t421)) + 2)
+        t466 <- rdI scalars ((6 * (truncate t421)) + 3)
+        t467 <- rdI vel (3 * (truncate t421))
+        t468 <- rdI vel ((3 * (truncate t421)) + 1)
+        t469 <- rdI vel ((3 * (truncate t421)) + 2)
+        t470 <- rdI scalars ((6 * (truncate t421)) + 1)
+        wrI vel (3 * (truncate t421)) (t467 + ((t465 * (negate (s458 - t440))) * t426))
+        wrI vel ((3 * (truncate t421)) + 1) (t468 + ((t465 * (negate (s458 - t440))) * t427))
+        wrI vel ((3 * (truncate t421)) + 2) (t469 + ((t465 * (negate (s458 - t440))) * t428))
+        wrI scalars ((6 * (truncate t421)) + 1) (t470 + ((t466 * (negate (s458 - t440))) * t429))
         pure ()
       else do
         pure ()
-      t471 <- rd contacts ((30.0 * i419) + 21.0)
-      t472 <- rd contacts ((30.0 * i419) + 23.0)
-      t473 <- rd vel (3.0 * t420)
-      t474 <- rd vel ((3.0 * t420) + 1.0)
-      t475 <- rd vel ((3.0 * t420) + 2.0)
-      t476 <- rd scalars ((6.0 * t420) + 1.0)
+      t471 <- rdI contacts ((30 * i419) + 21)
+      t472 <- rdI contacts ((30 * i419) + 23)
+      t473 <- rdI vel (3 * (truncate t420))
+      t474 <- rdI vel ((3 * (truncate t420)) + 1)
+      t475 <- rdI vel ((3 * (truncate t420)) + 2)
+      t476 <- rdI scalars ((6 * (truncate t420)) + 1)
       v477 <- newR 0.0
       if (t421 + 0.5) > 0 then do
-        t478 <- rd vel (3.0 * t421)
-        t479 <- rd vel ((3.0 * t421) + 1.0)
-        t480 <- rd vel ((3.0 * t421) + 2.0)
-        t481 <- rd scalars ((6.0 * t421) + 1.0)
+        t478 <- rdI vel (3 * (truncate t421))
+        t479 <- rdI vel ((3 * (truncate t421)) + 1)
+        t480 <- rdI vel ((3 * (truncate t421)) + 2)
+        t481 <- rdI scalars ((6 * (truncate t421)) + 1)
         setR v477 ((((t434 * t478) + (t435 * t479)) + (t436 * t480)) + (t437 * t481))
         pure ()
       else do
@@ -1029,73 +1053,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t484 = (t439 + ((t438 * (t472 - s483)) * t471))
       let !t485 = (if (negate t484) > 0 then 0.0 else t484)
       let !s486 = (if (1.0 - (abs (t485 - t485))) > 0 then t485 else 0.0)
-      wr contacts ((30.0 * i419) + 24.0) s486
-      t487 <- rd scalars ((6.0 * t420) + 2.0)
-      t488 <- rd scalars ((6.0 * t420) + 3.0)
-      t489 <- rd vel (3.0 * t420)
-      t490 <- rd vel ((3.0 * t420) + 1.0)
-      t491 <- rd vel ((3.0 * t420) + 2.0)
-      t492 <- rd scalars ((6.0 * t420) + 1.0)
-      wr vel (3.0 * t420) (t489 + ((t487 * (s486 - t439)) * t430))
-      wr vel ((3.0 * t420) + 1.0) (t490 + ((t487 * (s486 - t439)) * t431))
-      wr vel ((3.0 * t420) + 2.0) (t491 + ((t487 * (s486 - t439)) * t432))
-      wr scalars ((6.0 * t420) + 1.0) (t492 + ((t488 * (s486 - t439)) * t433))
+      wrI contacts ((30 * i419) + 24) s486
+      t487 <- rdI scalars ((6 * (truncate t420)) + 2)
+      t488 <- rdI scalars ((6 * (truncate t420)) + 3)
+      t489 <- rdI vel (3 * (truncate t420))
+      t490 <- rdI vel ((3 * (truncate t420)) + 1)
+      t491 <- rdI vel ((3 * (truncate t420)) + 2)
+      t492 <- rdI scalars ((6 * (truncate t420)) + 1)
+      wrI vel (3 * (truncate t420)) (t489 + ((t487 * (s486 - t439)) * t430))
+      wrI vel ((3 * (truncate t420)) + 1) (t490 + ((t487 * (s486 - t439)) * t431))
+      wrI vel ((3 * (truncate t420)) + 2) (t491 + ((t487 * (s486 - t439)) * t432))
+      wrI scalars ((6 * (truncate t420)) + 1) (t492 + ((t488 * (s486 - t439)) * t433))
       if (t421 + 0.5) > 0 then do
-        t493 <- rd scalars ((6.0 * t421) + 2.0)
-        t494 <- rd scalars ((6.0 * t421) + 3.0)
-        t495 <- rd vel (3.0 * t421)
-        t496 <- rd vel ((3.0 * t421) + 1.0)
-        t497 <- rd vel ((3.0 * t421) + 2.0)
-        t498 <- rd scalars ((6.0 * t421) + 1.0)
-        wr vel (3.0 * t421) (t495 + ((t493 * (negate (s486 - t439))) * t434))
-        wr vel ((3.0 * t421) + 1.0) (t496 + ((t493 * (negate (s486 - t439))) * t435))
-        wr vel ((3.0 * t421) + 2.0) (t497 + ((t493 * (negate (s486 - t439))) * t436))
-        wr scalars ((6.0 * t421) + 1.0) (t498 + ((t494 * (negate (s486 - t439))) * t437))
+        t493 <- rdI scalars ((6 * (truncate t421)) + 2)
+        t494 <- rdI scalars ((6 * (truncate t421)) + 3)
+        t495 <- rdI vel (3 * (truncate t421))
+        t496 <- rdI vel ((3 * (truncate t421)) + 1)
+        t497 <- rdI vel ((3 * (truncate t421)) + 2)
+        t498 <- rdI scalars ((6 * (truncate t421)) + 1)
+        wrI vel (3 * (truncate t421)) (t495 + ((t493 * (negate (s486 - t439))) * t434))
+        wrI vel ((3 * (truncate t421)) + 1) (t496 + ((t493 * (negate (s486 - t439))) * t435))
+        wrI vel ((3 * (truncate t421)) + 2) (t497 + ((t493 * (negate (s486 - t439))) * t436))
+        wrI scalars ((6 * (truncate t421)) + 1) (t498 + ((t494 * (negate (s486 - t439))) * t437))
         pure ()
       else do
         pure ()
       pure ()
-    t499 <- rd mouse 0.0
+    t499 <- rdI mouse 0
     if t499 > 0 then do
-      t500 <- rd mouse 1.0
-      t501 <- rd scalars ((6.0 * t500) + 2.0)
+      t500 <- rdI mouse 1
+      t501 <- rdI scalars ((6 * (truncate t500)) + 2)
       if t501 > 0 then do
-        t502 <- rd scalars ((6.0 * t500) + 3.0)
-        t503 <- rd params 0.0
-        t504 <- rd pos (3.0 * t500)
-        t505 <- rd pos ((3.0 * t500) + 1.0)
-        t506 <- rd pos ((3.0 * t500) + 2.0)
-        t507 <- rd normal (3.0 * t500)
-        t508 <- rd normal ((3.0 * t500) + 1.0)
-        t509 <- rd normal ((3.0 * t500) + 2.0)
-        t510 <- rd axis (3.0 * t500)
-        t511 <- rd axis ((3.0 * t500) + 1.0)
-        t512 <- rd axis ((3.0 * t500) + 2.0)
+        t502 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t503 <- rdI params 0
+        t504 <- rdI pos (3 * (truncate t500))
+        t505 <- rdI pos ((3 * (truncate t500)) + 1)
+        t506 <- rdI pos ((3 * (truncate t500)) + 2)
+        t507 <- rdI normal (3 * (truncate t500))
+        t508 <- rdI normal ((3 * (truncate t500)) + 1)
+        t509 <- rdI normal ((3 * (truncate t500)) + 2)
+        t510 <- rdI axis (3 * (truncate t500))
+        t511 <- rdI axis ((3 * (truncate t500)) + 1)
+        t512 <- rdI axis ((3 * (truncate t500)) + 2)
         let !s513 = ((t508 * t512) - (t509 * t511))
         let !s514 = ((t509 * t510) - (t507 * t512))
         let !s515 = ((t507 * t511) - (t508 * t510))
-        t516 <- rd scalars (6.0 * t500)
-        t517 <- rd scalars ((6.0 * t500) + 5.0)
-        t518 <- rd scalars ((6.0 * t500) + 2.0)
-        t519 <- rd scalars ((6.0 * t500) + 3.0)
-        t520 <- rd pos (3.0 * t500)
-        t521 <- rd pos ((3.0 * t500) + 1.0)
-        t522 <- rd pos ((3.0 * t500) + 2.0)
-        t523 <- rd normal (3.0 * t500)
-        t524 <- rd normal ((3.0 * t500) + 1.0)
-        t525 <- rd normal ((3.0 * t500) + 2.0)
-        t526 <- rd axis (3.0 * t500)
-        t527 <- rd axis ((3.0 * t500) + 1.0)
-        t528 <- rd axis ((3.0 * t500) + 2.0)
+        t516 <- rdI scalars (6 * (truncate t500))
+        t517 <- rdI scalars ((6 * (truncate t500)) + 5)
+        t518 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t519 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t520 <- rdI pos (3 * (truncate t500))
+        t521 <- rdI pos ((3 * (truncate t500)) + 1)
+        t522 <- rdI pos ((3 * (truncate t500)) + 2)
+        t523 <- rdI normal (3 * (truncate t500))
+        t524 <- rdI normal ((3 * (truncate t500)) + 1)
+        t525 <- rdI normal ((3 * (truncate t500)) + 2)
+        t526 <- rdI axis (3 * (truncate t500))
+        t527 <- rdI axis ((3 * (truncate t500)) + 1)
+        t528 <- rdI axis ((3 * (truncate t500)) + 2)
         let !s529 = ((t524 * t528) - (t525 * t527))
         let !s530 = ((t525 * t526) - (t523 * t528))
         let !s531 = ((t523 * t527) - (t524 * t526))
-        t532 <- rd scalars (6.0 * t500)
-        t533 <- rd scalars ((6.0 * t500) + 5.0)
-        t534 <- rd scalars ((6.0 * t500) + 2.0)
-        t535 <- rd scalars ((6.0 * t500) + 3.0)
-        t536 <- rd mouse 2.0
-        t537 <- rd mouse 3.0
+        t532 <- rdI scalars (6 * (truncate t500))
+        t533 <- rdI scalars ((6 * (truncate t500)) + 5)
+        t534 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t535 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t536 <- rdI mouse 2
+        t537 <- rdI mouse 3
         let !t538 = (t536 / 4.0)
         let !t539 = (if (abs t538) > 0 then 1.0 else 0.0)
         let !t540 = (t532 + t537)
@@ -1346,12 +1370,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s785 = ((t539 * (t767 * (t784 * t780))) + (t579 * s725))
         let !s786 = ((t539 * (t767 * (t784 * t781))) + (t579 * s726))
         let !s787 = ((t539 * (t767 * (t784 * t782))) + (t579 * s727))
-        t788 <- rd mouse 4.0
-        t789 <- rd mouse 5.0
-        t790 <- rd mouse 6.0
-        t791 <- rd mouse 7.0
-        t792 <- rd mouse 8.0
-        t793 <- rd mouse 9.0
+        t788 <- rdI mouse 4
+        t789 <- rdI mouse 5
+        t790 <- rdI mouse 6
+        t791 <- rdI mouse 7
+        t792 <- rdI mouse 8
+        t793 <- rdI mouse 9
         let !t794 = (recip t501)
         let !t795 = (6.283185307179586 * t791)
         let !s796 = (recip (t503 * ((((2.0 * t794) * t792) * t795) + (t503 * ((t794 * t795) * t795)))))
@@ -1362,11 +1386,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s801 = (s764 + (negate t788))
         let !s802 = (s765 + (negate t789))
         let !s803 = (s766 + (negate t790))
-        t804 <- rd mouse 10.0
-        t805 <- rd vel (3.0 * t500)
-        t806 <- rd vel ((3.0 * t500) + 1.0)
-        t807 <- rd vel ((3.0 * t500) + 2.0)
-        t808 <- rd scalars ((6.0 * t500) + 1.0)
+        t804 <- rdI mouse 10
+        t805 <- rdI vel (3 * (truncate t500))
+        t806 <- rdI vel ((3 * (truncate t500)) + 1)
+        t807 <- rdI vel ((3 * (truncate t500)) + 2)
+        t808 <- rdI scalars ((6 * (truncate t500)) + 1)
         let !t809 = (t793 * t503)
         let !t810 = (negate t809)
         let !t811 = (((((s799 * t512) - (s800 * t511)) * t507) + (((s800 * t510) - (s798 * t512)) * t508)) + (((s798 * t511) - (s799 * t510)) * t509))
@@ -1374,38 +1398,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t813 = (if (t812 - t809) > 0 then t809 else t812)
         let !t814 = (if (t810 - t813) > 0 then t810 else t813)
         let !s815 = (if (1.0 - (abs (t814 - t814))) > 0 then t814 else 0.0)
-        wr mouse 10.0 s815
-        t816 <- rd scalars ((6.0 * t500) + 2.0)
-        t817 <- rd scalars ((6.0 * t500) + 3.0)
-        t818 <- rd vel (3.0 * t500)
-        t819 <- rd vel ((3.0 * t500) + 1.0)
-        t820 <- rd vel ((3.0 * t500) + 2.0)
-        t821 <- rd scalars ((6.0 * t500) + 1.0)
-        wr vel (3.0 * t500) (t818 + ((t816 * (s815 - t804)) * t510))
-        wr vel ((3.0 * t500) + 1.0) (t819 + ((t816 * (s815 - t804)) * t511))
-        wr vel ((3.0 * t500) + 2.0) (t820 + ((t816 * (s815 - t804)) * t512))
-        wr scalars ((6.0 * t500) + 1.0) (t821 + ((t817 * (s815 - t804)) * t811))
-        t822 <- rd mouse 11.0
-        t823 <- rd vel (3.0 * t500)
-        t824 <- rd vel ((3.0 * t500) + 1.0)
-        t825 <- rd vel ((3.0 * t500) + 2.0)
-        t826 <- rd scalars ((6.0 * t500) + 1.0)
+        wrI mouse 10 s815
+        t816 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t817 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t818 <- rdI vel (3 * (truncate t500))
+        t819 <- rdI vel ((3 * (truncate t500)) + 1)
+        t820 <- rdI vel ((3 * (truncate t500)) + 2)
+        t821 <- rdI scalars ((6 * (truncate t500)) + 1)
+        wrI vel (3 * (truncate t500)) (t818 + ((t816 * (s815 - t804)) * t510))
+        wrI vel ((3 * (truncate t500)) + 1) (t819 + ((t816 * (s815 - t804)) * t511))
+        wrI vel ((3 * (truncate t500)) + 2) (t820 + ((t816 * (s815 - t804)) * t512))
+        wrI scalars ((6 * (truncate t500)) + 1) (t821 + ((t817 * (s815 - t804)) * t811))
+        t822 <- rdI mouse 11
+        t823 <- rdI vel (3 * (truncate t500))
+        t824 <- rdI vel ((3 * (truncate t500)) + 1)
+        t825 <- rdI vel ((3 * (truncate t500)) + 2)
+        t826 <- rdI scalars ((6 * (truncate t500)) + 1)
         let !t827 = (((((s799 * s515) - (s800 * s514)) * t507) + (((s800 * s513) - (s798 * s515)) * t508)) + (((s798 * s514) - (s799 * s513)) * t509))
         let !t828 = (t822 + ((negate ((((((s513 * t823) + (s514 * t824)) + (s515 * t825)) + (t827 * t826)) + (s797 * (((s801 * s513) + (s802 * s514)) + (s803 * s515)))) + (s796 * t822))) / (((t501 * (((s513 * s513) + (s514 * s514)) + (s515 * s515))) + ((t502 * t827) * t827)) + s796)))
         let !t829 = (if (t828 - t809) > 0 then t809 else t828)
         let !t830 = (if (t810 - t829) > 0 then t810 else t829)
         let !s831 = (if (1.0 - (abs (t830 - t830))) > 0 then t830 else 0.0)
-        wr mouse 11.0 s831
-        t832 <- rd scalars ((6.0 * t500) + 2.0)
-        t833 <- rd scalars ((6.0 * t500) + 3.0)
-        t834 <- rd vel (3.0 * t500)
-        t835 <- rd vel ((3.0 * t500) + 1.0)
-        t836 <- rd vel ((3.0 * t500) + 2.0)
-        t837 <- rd scalars ((6.0 * t500) + 1.0)
-        wr vel (3.0 * t500) (t834 + ((t832 * (s831 - t822)) * s513))
-        wr vel ((3.0 * t500) + 1.0) (t835 + ((t832 * (s831 - t822)) * s514))
-        wr vel ((3.0 * t500) + 2.0) (t836 + ((t832 * (s831 - t822)) * s515))
-        wr scalars ((6.0 * t500) + 1.0) (t837 + ((t833 * (s831 - t822)) * t827))
+        wrI mouse 11 s831
+        t832 <- rdI scalars ((6 * (truncate t500)) + 2)
+        t833 <- rdI scalars ((6 * (truncate t500)) + 3)
+        t834 <- rdI vel (3 * (truncate t500))
+        t835 <- rdI vel ((3 * (truncate t500)) + 1)
+        t836 <- rdI vel ((3 * (truncate t500)) + 2)
+        t837 <- rdI scalars ((6 * (truncate t500)) + 1)
+        wrI vel (3 * (truncate t500)) (t834 + ((t832 * (s831 - t822)) * s513))
+        wrI vel ((3 * (truncate t500)) + 1) (t835 + ((t832 * (s831 - t822)) * s514))
+        wrI vel ((3 * (truncate t500)) + 2) (t836 + ((t832 * (s831 - t822)) * s515))
+        wrI scalars ((6 * (truncate t500)) + 1) (t837 + ((t833 * (s831 - t822)) * t827))
         pure ()
       else do
         pure ()
@@ -1413,48 +1437,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t838 <- rd meta 0.0
-  loop 0.0 t838 $ \i839 -> do
-    wr bodyPrev ((2.0 * i839) + 1.0) 0.0
+  t838 <- rdI meta 0
+  loopI 0.0 t838 $ \i839 -> do
+    let !d839 = fromIntegral i839 :: Double
+    wrI bodyPrev ((2 * i839) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i840 -> do
-    t841 <- rd contacts ((30.0 * i840) + 2.0)
-    wr prev (4.0 * i840) t841
-    t842 <- rd contacts ((30.0 * i840) + 3.0)
-    wr prev ((4.0 * i840) + 1.0) t842
-    t843 <- rd contacts ((30.0 * i840) + 24.0)
-    wr prev ((4.0 * i840) + 2.0) t843
-    t844 <- rd contacts ((30.0 * i840) + 25.0)
-    wr prev ((4.0 * i840) + 3.0) t844
-    t845 <- rd bodyPrev ((2.0 * t841) + 1.0)
+  loopI 0.0 t9 $ \i840 -> do
+    let !d840 = fromIntegral i840 :: Double
+    t841 <- rdI contacts ((30 * i840) + 2)
+    wrI prev (4 * i840) t841
+    t842 <- rdI contacts ((30 * i840) + 3)
+    wrI prev ((4 * i840) + 1) t842
+    t843 <- rdI contacts ((30 * i840) + 24)
+    wrI prev ((4 * i840) + 2) t843
+    t844 <- rdI contacts ((30 * i840) + 25)
+    wrI prev ((4 * i840) + 3) t844
+    t845 <- rdI bodyPrev ((2 * (truncate t841)) + 1)
     if (0.5 - t845) > 0 then do
-      wr bodyPrev (2.0 * t841) i840
+      wrI bodyPrev (2 * (truncate t841)) d840
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t841) + 1.0) (t845 + 1.0)
+    wrI bodyPrev ((2 * (truncate t841)) + 1) (t845 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t4 + (t1 * t7))
@@ -1572,58 +1599,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t131 = (t12 + (t1 * t13))
     let !t132 = (1.0 - (abs ((((((((((((((s77 - s77) + (s78 - s78)) + (s79 - s79)) + (s117 - s117)) + (s118 - s118)) + (s119 - s119)) + (s126 - s126)) + (s127 - s127)) + (s128 - s128)) + (s90 - s90)) + (s91 - s91)) + (s92 - s92)) + (t131 - t131)) + (s129 - s129))))
     if (if (t130 - t132) > 0 then t132 else t130) > 0 then do
-      wr pos (3.0 * i2) s77
-      wr pos ((3.0 * i2) + 1.0) s78
-      wr pos ((3.0 * i2) + 2.0) s79
-      wr vel (3.0 * i2) s117
-      wr vel ((3.0 * i2) + 1.0) s118
-      wr vel ((3.0 * i2) + 2.0) s119
-      wr axis (3.0 * i2) s126
-      wr axis ((3.0 * i2) + 1.0) s127
-      wr axis ((3.0 * i2) + 2.0) s128
-      wr normal (3.0 * i2) s90
-      wr normal ((3.0 * i2) + 1.0) s91
-      wr normal ((3.0 * i2) + 2.0) s92
-      wr scalars (6.0 * i2) t131
+      wrI pos (3 * i2) s77
+      wrI pos ((3 * i2) + 1) s78
+      wrI pos ((3 * i2) + 2) s79
+      wrI vel (3 * i2) s117
+      wrI vel ((3 * i2) + 1) s118
+      wrI vel ((3 * i2) + 2) s119
+      wrI axis (3 * i2) s126
+      wrI axis ((3 * i2) + 1) s127
+      wrI axis ((3 * i2) + 2) s128
+      wrI normal (3 * i2) s90
+      wrI normal ((3 * i2) + 1) s91
+      wrI normal ((3 * i2) + 2) s92
+      wrI scalars (6 * i2) t131
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t133 <- rd meta 1.0
-      wr meta 1.0 (t133 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t133 <- rdI meta 1
+      wrI meta 1 (t133 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1690,9 +1719,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s82 = ((t28 * t68) + (t56 * t8))
         let !s83 = ((t28 * t69) + (t56 * t9))
         let !s84 = ((t28 * t71) + (t56 * t10))
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
         let !t85 = (s57 + (s27 * s79))
         let !t86 = (s58 + (s27 * s80))
         let !t87 = (s59 + (s27 * s81))
@@ -1747,9 +1776,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s136 = ((t28 * t122) + (t56 * s82))
         let !s137 = ((t28 * t123) + (t56 * s83))
         let !s138 = ((t28 * t125) + (t56 * s84))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
         let !t139 = (s112 + (s27 * s133))
         let !t140 = (s113 + (s27 * s134))
         let !t141 = (s114 + (s27 * s135))
@@ -1804,9 +1833,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s190 = ((t28 * t176) + (t56 * s136))
         let !s191 = ((t28 * t177) + (t56 * s137))
         let !s192 = ((t28 * t179) + (t56 * s138))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
         let !t193 = (s166 + (s27 * s187))
         let !t194 = (s167 + (s27 * s188))
         let !t195 = (s168 + (s27 * s189))
@@ -1861,9 +1890,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s244 = ((t28 * t230) + (t56 * s190))
         let !s245 = ((t28 * t231) + (t56 * s191))
         let !s246 = ((t28 * t233) + (t56 * s192))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
         pure ()
       else do
         let !t247 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1902,18 +1931,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s280 = (if t279 > 0 then t276 else t2)
         let !s281 = (if t279 > 0 then t277 else t3)
         let !s282 = (if t279 > 0 then t278 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s280
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s281
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s282
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s280 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s281 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s282 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s280 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s281 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s282 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s280 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s281 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s282 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s280
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s281
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s282
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s280 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s281 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s282 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s280 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s281 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s282 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s280 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s281 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s282 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -11,9 +11,9 @@
 -- native engine gets the simplifications V8 gets.
 module Manifold.Compiled.Runtime
   ( Arr
-  , loop
-  , rd
-  , wr
+  , loopI
+  , rdI
+  , wrI
   , NumRef
   , newR
   , getR
@@ -34,21 +34,22 @@ import Manifold.World (Layout (..), WorldArrays)
 
 type Arr = MV.IOVector Double
 
--- | @loop lo hi body@: the printed @for@ loop (indices are numbers, as in
--- the staged program).
-loop :: Double -> Double -> (Double -> IO ()) -> IO ()
-loop lo hi body = go lo
-  where go !i | i < hi = body i >> go (i + 1)
+-- | @loopI lo hi body@: the printed @for@ loop. The counter is an 'Int'
+-- from @lo@ (a whole number) while it is below @hi@ (compared as numbers,
+-- so a NaN bound runs nothing, as in JavaScript).
+loopI :: Double -> Double -> (Int -> IO ()) -> IO ()
+loopI lo hi body = go (truncate lo)
+  where go !i | fromIntegral i < hi = body i >> go (i + 1)
               | otherwise = pure ()
-{-# INLINE loop #-}
+{-# INLINE loopI #-}
 
-rd :: Arr -> Double -> IO Double
-rd a i = MV.read a (truncate i)
-{-# INLINE rd #-}
+rdI :: Arr -> Int -> IO Double
+rdI = MV.read
+{-# INLINE rdI #-}
 
-wr :: Arr -> Double -> Double -> IO ()
-wr a i !x = MV.write a (truncate i) x
-{-# INLINE wr #-}
+wrI :: Arr -> Int -> Double -> IO ()
+wrI a i !x = MV.write a i x
+{-# INLINE wrI #-}
 
 -- | A mutable local (the printed @let@): one unboxed number.
 newtype NumRef = NumRef (MV.IOVector Double)

@@ -8,30 +8,31 @@ import Manifold.Compiled.Runtime
 
 vertexContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
 vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse a0 a1 a2 a3 a4 a5 a6 a7 a8 a9 a10 = do
-  t0 <- rd pos (3.0 * a3)
-  t1 <- rd pos ((3.0 * a3) + 1.0)
-  t2 <- rd pos ((3.0 * a3) + 2.0)
-  t3 <- rd normal (3.0 * a3)
-  t4 <- rd normal ((3.0 * a3) + 1.0)
-  t5 <- rd normal ((3.0 * a3) + 2.0)
-  t6 <- rd axis (3.0 * a3)
-  t7 <- rd axis ((3.0 * a3) + 1.0)
-  t8 <- rd axis ((3.0 * a3) + 2.0)
+  t0 <- rdI pos (3 * (truncate a3))
+  t1 <- rdI pos ((3 * (truncate a3)) + 1)
+  t2 <- rdI pos ((3 * (truncate a3)) + 2)
+  t3 <- rdI normal (3 * (truncate a3))
+  t4 <- rdI normal ((3 * (truncate a3)) + 1)
+  t5 <- rdI normal ((3 * (truncate a3)) + 2)
+  t6 <- rdI axis (3 * (truncate a3))
+  t7 <- rdI axis ((3 * (truncate a3)) + 1)
+  t8 <- rdI axis ((3 * (truncate a3)) + 2)
   let !s9 = ((t4 * t8) - (t5 * t7))
   let !s10 = ((t5 * t6) - (t3 * t8))
   let !s11 = ((t3 * t7) - (t4 * t6))
-  t12 <- rd scalars (6.0 * a3)
-  t13 <- rd scalars ((6.0 * a3) + 5.0)
-  t14 <- rd scalars ((6.0 * a3) + 2.0)
-  t15 <- rd scalars ((6.0 * a3) + 3.0)
+  t12 <- rdI scalars (6 * (truncate a3))
+  t13 <- rdI scalars ((6 * (truncate a3)) + 5)
+  t14 <- rdI scalars ((6 * (truncate a3)) + 2)
+  t15 <- rdI scalars ((6 * (truncate a3)) + 3)
   v16 <- newR 0.0
   v17 <- newR 0.0
   v18 <- newR 0.0
   v19 <- newR 0.0
-  loop 0.0 24.0 $ \i20 -> do
-    t21 <- rd verts (3.0 * ((((97.0 * a2) + 1.0) + (i20 * 4.0)) + 3.0))
-    t22 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0)
-    t23 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0)
+  loopI 0.0 24.0 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + (i20 * 4)) + 3))
+    t22 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i20 * 4)) + 3)) + 1)
+    t23 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i20 * 4)) + 3)) + 2)
     let !t24 = (((a4 * t21) + a7) + (negate t0))
     let !t25 = (((a5 * t22) + a8) + (negate t1))
     let !t26 = (((a6 * t23) + a9) + (negate t2))
@@ -43,12 +44,12 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
       let !t31 = ((if s27 > 0 then (2.0 * (atan (s28 / (t30 + s27)))) else (if (abs s28) > 0 then (2.0 * (atan ((t30 - s27) / s28))) else (if (negate s27) > 0 then 3.141592653589793 else 0.0))) - t12)
       let !t32 = (floorF ((t31 - (6.283185307179586 * (floorF (t31 / 6.283185307179586)))) / 0.2617993877991494))
       let !s33 = (if (t32 - 23.0) > 0 then 23.0 else t32)
-      t34 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + (s33 * 4.0)) + 3.0))
-      t35 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s33 * 4.0)) + 3.0)) + 1.0)
-      t36 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s33 * 4.0)) + 3.0)) + 2.0)
-      t37 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s33 - 24.0) + 1.5) > 0 then 0.0 else (s33 + 1.0)) * 4.0)) + 3.0))
-      t38 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s33 - 24.0) + 1.5) > 0 then 0.0 else (s33 + 1.0)) * 4.0)) + 3.0)) + 1.0)
-      t39 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s33 - 24.0) + 1.5) > 0 then 0.0 else (s33 + 1.0)) * 4.0)) + 3.0)) + 2.0)
+      t34 <- rdI verts (3 * ((((97 * (truncate a3)) + 1) + ((truncate s33) * 4)) + 3))
+      t35 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s33) * 4)) + 3)) + 1)
+      t36 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s33) * 4)) + 3)) + 2)
+      t37 <- rdI verts (truncate (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s33 - 24.0) + 1.5) > 0 then 0.0 else (s33 + 1.0)) * 4.0)) + 3.0)))
+      t38 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s33 - 24.0) + 1.5) > 0 then 0.0 else (s33 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      t39 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s33 - 24.0) + 1.5) > 0 then 0.0 else (s33 + 1.0)) * 4.0)) + 3.0)) + 2.0))
       let !t40 = (negate t0)
       let !t41 = (negate t1)
       let !t42 = (negate t2)
@@ -90,10 +91,11 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
     v65 <- newR (-1.0e300)
     v66 <- newR (-1.0)
     v67 <- newR (-1.0)
-    loop 0.0 24.0 $ \i68 -> do
-      t69 <- rd verts (3.0 * ((((97.0 * a2) + 1.0) + (i68 * 4.0)) + 3.0))
-      t70 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (i68 * 4.0)) + 3.0)) + 1.0)
-      t71 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (i68 * 4.0)) + 3.0)) + 2.0)
+    loopI 0.0 24.0 $ \i68 -> do
+      let !d68 = fromIntegral i68 :: Double
+      t69 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + (i68 * 4)) + 3))
+      t70 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i68 * 4)) + 3)) + 1)
+      t71 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i68 * 4)) + 3)) + 2)
       v72 <- newR (-1.0)
       let !t73 = (((a4 * t69) + a7) + (negate t0))
       let !t74 = (((a5 * t70) + a8) + (negate t1))
@@ -106,12 +108,12 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
         let !t80 = ((if s76 > 0 then (2.0 * (atan (s77 / (t79 + s76)))) else (if (abs s77) > 0 then (2.0 * (atan ((t79 - s76) / s77))) else (if (negate s76) > 0 then 3.141592653589793 else 0.0))) - t12)
         let !t81 = (floorF ((t80 - (6.283185307179586 * (floorF (t80 / 6.283185307179586)))) / 0.2617993877991494))
         let !s82 = (if (t81 - 23.0) > 0 then 23.0 else t81)
-        t83 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + (s82 * 4.0)) + 3.0))
-        t84 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s82 * 4.0)) + 3.0)) + 1.0)
-        t85 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s82 * 4.0)) + 3.0)) + 2.0)
-        t86 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s82 - 24.0) + 1.5) > 0 then 0.0 else (s82 + 1.0)) * 4.0)) + 3.0))
-        t87 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s82 - 24.0) + 1.5) > 0 then 0.0 else (s82 + 1.0)) * 4.0)) + 3.0)) + 1.0)
-        t88 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s82 - 24.0) + 1.5) > 0 then 0.0 else (s82 + 1.0)) * 4.0)) + 3.0)) + 2.0)
+        t83 <- rdI verts (3 * ((((97 * (truncate a3)) + 1) + ((truncate s82) * 4)) + 3))
+        t84 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s82) * 4)) + 3)) + 1)
+        t85 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s82) * 4)) + 3)) + 2)
+        t86 <- rdI verts (truncate (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s82 - 24.0) + 1.5) > 0 then 0.0 else (s82 + 1.0)) * 4.0)) + 3.0)))
+        t87 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s82 - 24.0) + 1.5) > 0 then 0.0 else (s82 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+        t88 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s82 - 24.0) + 1.5) > 0 then 0.0 else (s82 + 1.0)) * 4.0)) + 3.0)) + 2.0))
         let !t89 = (negate t0)
         let !t90 = (negate t1)
         let !t91 = (negate t2)
@@ -138,14 +140,14 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
         t107 <- getR v64
         if (t107 - s106) > 0 then do
           setR v64 s106
-          setR v66 i68
+          setR v66 d68
           pure ()
         else do
           pure ()
         t108 <- getR v65
         if (s106 - t108) > 0 then do
           setR v65 s106
-          setR v67 i68
+          setR v67 d68
           pure ()
         else do
           pure ()
@@ -155,9 +157,9 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
       pure ()
     t109 <- getR v66
     t110 <- getR v67
-    t111 <- rd verts (3.0 * ((((97.0 * a2) + 1.0) + (t109 * 4.0)) + 3.0))
-    t112 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (t109 * 4.0)) + 3.0)) + 1.0)
-    t113 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (t109 * 4.0)) + 3.0)) + 2.0)
+    t111 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate t109) * 4)) + 3))
+    t112 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate t109) * 4)) + 3)) + 1)
+    t113 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate t109) * 4)) + 3)) + 2)
     let !s114 = ((a4 * t111) + a7)
     let !s115 = ((a5 * t112) + a8)
     let !s116 = ((a6 * t113) + a9)
@@ -168,12 +170,12 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
     let !t121 = ((if s117 > 0 then (2.0 * (atan (s118 / (t120 + s117)))) else (if (abs s118) > 0 then (2.0 * (atan ((t120 - s117) / s118))) else (if (negate s117) > 0 then 3.141592653589793 else 0.0))) - t12)
     let !t122 = (floorF ((t121 - (6.283185307179586 * (floorF (t121 / 6.283185307179586)))) / 0.2617993877991494))
     let !s123 = (if (t122 - 23.0) > 0 then 23.0 else t122)
-    t124 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + (s123 * 4.0)) + 3.0))
-    t125 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s123 * 4.0)) + 3.0)) + 1.0)
-    t126 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s123 * 4.0)) + 3.0)) + 2.0)
-    t127 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s123 - 24.0) + 1.5) > 0 then 0.0 else (s123 + 1.0)) * 4.0)) + 3.0))
-    t128 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s123 - 24.0) + 1.5) > 0 then 0.0 else (s123 + 1.0)) * 4.0)) + 3.0)) + 1.0)
-    t129 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s123 - 24.0) + 1.5) > 0 then 0.0 else (s123 + 1.0)) * 4.0)) + 3.0)) + 2.0)
+    t124 <- rdI verts (3 * ((((97 * (truncate a3)) + 1) + ((truncate s123) * 4)) + 3))
+    t125 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s123) * 4)) + 3)) + 1)
+    t126 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s123) * 4)) + 3)) + 2)
+    t127 <- rdI verts (truncate (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s123 - 24.0) + 1.5) > 0 then 0.0 else (s123 + 1.0)) * 4.0)) + 3.0)))
+    t128 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s123 - 24.0) + 1.5) > 0 then 0.0 else (s123 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+    t129 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s123 - 24.0) + 1.5) > 0 then 0.0 else (s123 + 1.0)) * 4.0)) + 3.0)) + 2.0))
     let !t130 = (negate t0)
     let !t131 = (negate t1)
     let !t132 = (negate t2)
@@ -190,103 +192,103 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
     let !s143 = ((t141 * t6) + (t142 * s9))
     let !s144 = ((t141 * t7) + (t142 * s10))
     let !s145 = ((t141 * t8) + (t142 * s11))
-    t146 <- rd meta 2.0
-    t147 <- rd meta 3.0
+    t146 <- rdI meta 2
+    t147 <- rdI meta 3
     if (((8.0 * (if (1.0 - t147) > 0 then 1.0 else t147)) - t146) - 0.5) > 0 then do
-      wr meta 2.0 (t146 + 1.0)
-      t148 <- rd pos (3.0 * a2)
-      t149 <- rd pos ((3.0 * a2) + 1.0)
-      t150 <- rd pos ((3.0 * a2) + 2.0)
-      t151 <- rd normal (3.0 * a2)
-      t152 <- rd normal ((3.0 * a2) + 1.0)
-      t153 <- rd normal ((3.0 * a2) + 2.0)
-      t154 <- rd axis (3.0 * a2)
-      t155 <- rd axis ((3.0 * a2) + 1.0)
-      t156 <- rd axis ((3.0 * a2) + 2.0)
+      wrI meta 2 (t146 + 1.0)
+      t148 <- rdI pos (3 * (truncate a2))
+      t149 <- rdI pos ((3 * (truncate a2)) + 1)
+      t150 <- rdI pos ((3 * (truncate a2)) + 2)
+      t151 <- rdI normal (3 * (truncate a2))
+      t152 <- rdI normal ((3 * (truncate a2)) + 1)
+      t153 <- rdI normal ((3 * (truncate a2)) + 2)
+      t154 <- rdI axis (3 * (truncate a2))
+      t155 <- rdI axis ((3 * (truncate a2)) + 1)
+      t156 <- rdI axis ((3 * (truncate a2)) + 2)
       let !s157 = ((t152 * t156) - (t153 * t155))
       let !s158 = ((t153 * t154) - (t151 * t156))
       let !s159 = ((t151 * t155) - (t152 * t154))
-      t160 <- rd scalars (6.0 * a2)
-      t161 <- rd scalars ((6.0 * a2) + 5.0)
-      t162 <- rd scalars ((6.0 * a2) + 2.0)
-      t163 <- rd scalars ((6.0 * a2) + 3.0)
-      wr contacts (30.0 * t146) a2
-      wr contacts ((30.0 * t146) + 1.0) a3
-      wr contacts ((30.0 * t146) + 2.0) a0
-      wr contacts ((30.0 * t146) + 3.0) a1
+      t160 <- rdI scalars (6 * (truncate a2))
+      t161 <- rdI scalars ((6 * (truncate a2)) + 5)
+      t162 <- rdI scalars ((6 * (truncate a2)) + 2)
+      t163 <- rdI scalars ((6 * (truncate a2)) + 3)
+      wrI contacts (30 * (truncate t146)) a2
+      wrI contacts ((30 * (truncate t146)) + 1) a3
+      wrI contacts ((30 * (truncate t146)) + 2) a0
+      wrI contacts ((30 * (truncate t146)) + 3) a1
       let !t164 = (a4 * s143)
-      wr contacts ((30.0 * t146) + 4.0) (t164 + (negate ((((t151 * t164) + (t152 * (a5 * s144))) + (t153 * (a6 * s145))) * t151)))
+      wrI contacts ((30 * (truncate t146)) + 4) (t164 + (negate ((((t151 * t164) + (t152 * (a5 * s144))) + (t153 * (a6 * s145))) * t151)))
       let !t165 = (a5 * s144)
-      wr contacts (((30.0 * t146) + 4.0) + 1.0) (t165 + (negate ((((t151 * t164) + (t152 * t165)) + (t153 * (a6 * s145))) * t152)))
+      wrI contacts (((30 * (truncate t146)) + 4) + 1) (t165 + (negate ((((t151 * t164) + (t152 * t165)) + (t153 * (a6 * s145))) * t152)))
       let !t166 = (a6 * s145)
-      wr contacts (((30.0 * t146) + 4.0) + 2.0) (t166 + (negate ((((t151 * t164) + (t152 * t165)) + (t153 * t166)) * t153)))
+      wrI contacts (((30 * (truncate t146)) + 4) + 2) (t166 + (negate ((((t151 * t164) + (t152 * t165)) + (t153 * t166)) * t153)))
       let !t167 = (t112 + (negate t149))
       let !t168 = (t113 + (negate t150))
       let !t169 = (t111 + (negate t148))
-      wr contacts ((30.0 * t146) + 7.0) (((((t167 * t166) - (t168 * t165)) * t151) + (((t168 * t164) - (t169 * t166)) * t152)) + (((t169 * t165) - (t167 * t164)) * t153))
+      wrI contacts ((30 * (truncate t146)) + 7) (((((t167 * t166) - (t168 * t165)) * t151) + (((t168 * t164) - (t169 * t166)) * t152)) + (((t169 * t165) - (t167 * t164)) * t153))
       let !t170 = ((t152 * t166) - (t153 * t165))
-      wr contacts ((30.0 * t146) + 12.0) (t170 + (negate ((((t151 * t170) + (t152 * ((t153 * t164) - (t151 * t166)))) + (t153 * ((t151 * t165) - (t152 * t164)))) * t151)))
+      wrI contacts ((30 * (truncate t146)) + 12) (t170 + (negate ((((t151 * t170) + (t152 * ((t153 * t164) - (t151 * t166)))) + (t153 * ((t151 * t165) - (t152 * t164)))) * t151)))
       let !t171 = ((t153 * t164) - (t151 * t166))
-      wr contacts (((30.0 * t146) + 12.0) + 1.0) (t171 + (negate ((((t151 * t170) + (t152 * t171)) + (t153 * ((t151 * t165) - (t152 * t164)))) * t152)))
+      wrI contacts (((30 * (truncate t146)) + 12) + 1) (t171 + (negate ((((t151 * t170) + (t152 * t171)) + (t153 * ((t151 * t165) - (t152 * t164)))) * t152)))
       let !t172 = ((t151 * t165) - (t152 * t164))
-      wr contacts (((30.0 * t146) + 12.0) + 2.0) (t172 + (negate ((((t151 * t170) + (t152 * t171)) + (t153 * t172)) * t153)))
-      wr contacts ((30.0 * t146) + 15.0) (((((t167 * t172) - (t168 * t171)) * t151) + (((t168 * t170) - (t169 * t172)) * t152)) + (((t169 * t171) - (t167 * t170)) * t153))
-      wr contacts ((30.0 * t146) + 20.0) s139
-      wr contacts ((30.0 * t146) + 26.0) a10
-      wr contacts ((30.0 * t146) + 27.0) t111
-      wr contacts (((30.0 * t146) + 27.0) + 1.0) t112
-      wr contacts (((30.0 * t146) + 27.0) + 2.0) t113
+      wrI contacts (((30 * (truncate t146)) + 12) + 2) (t172 + (negate ((((t151 * t170) + (t152 * t171)) + (t153 * t172)) * t153)))
+      wrI contacts ((30 * (truncate t146)) + 15) (((((t167 * t172) - (t168 * t171)) * t151) + (((t168 * t170) - (t169 * t172)) * t152)) + (((t169 * t171) - (t167 * t170)) * t153))
+      wrI contacts ((30 * (truncate t146)) + 20) s139
+      wrI contacts ((30 * (truncate t146)) + 26) a10
+      wrI contacts ((30 * (truncate t146)) + 27) t111
+      wrI contacts (((30 * (truncate t146)) + 27) + 1) t112
+      wrI contacts (((30 * (truncate t146)) + 27) + 2) t113
       if (a3 + 0.5) > 0 then do
-        t173 <- rd pos (3.0 * a3)
-        t174 <- rd pos ((3.0 * a3) + 1.0)
-        t175 <- rd pos ((3.0 * a3) + 2.0)
-        t176 <- rd normal (3.0 * a3)
-        t177 <- rd normal ((3.0 * a3) + 1.0)
-        t178 <- rd normal ((3.0 * a3) + 2.0)
-        t179 <- rd axis (3.0 * a3)
-        t180 <- rd axis ((3.0 * a3) + 1.0)
-        t181 <- rd axis ((3.0 * a3) + 2.0)
+        t173 <- rdI pos (3 * (truncate a3))
+        t174 <- rdI pos ((3 * (truncate a3)) + 1)
+        t175 <- rdI pos ((3 * (truncate a3)) + 2)
+        t176 <- rdI normal (3 * (truncate a3))
+        t177 <- rdI normal ((3 * (truncate a3)) + 1)
+        t178 <- rdI normal ((3 * (truncate a3)) + 2)
+        t179 <- rdI axis (3 * (truncate a3))
+        t180 <- rdI axis ((3 * (truncate a3)) + 1)
+        t181 <- rdI axis ((3 * (truncate a3)) + 2)
         let !s182 = ((t177 * t181) - (t178 * t180))
         let !s183 = ((t178 * t179) - (t176 * t181))
         let !s184 = ((t176 * t180) - (t177 * t179))
-        t185 <- rd scalars (6.0 * a3)
-        t186 <- rd scalars ((6.0 * a3) + 5.0)
-        t187 <- rd scalars ((6.0 * a3) + 2.0)
-        t188 <- rd scalars ((6.0 * a3) + 3.0)
-        wr contacts ((30.0 * t146) + 8.0) (s143 + (negate ((((t176 * s143) + (t177 * s144)) + (t178 * s145)) * t176)))
-        wr contacts (((30.0 * t146) + 8.0) + 1.0) (s144 + (negate ((((t176 * s143) + (t177 * s144)) + (t178 * s145)) * t177)))
-        wr contacts (((30.0 * t146) + 8.0) + 2.0) (s145 + (negate ((((t176 * s143) + (t177 * s144)) + (t178 * s145)) * t178)))
+        t185 <- rdI scalars (6 * (truncate a3))
+        t186 <- rdI scalars ((6 * (truncate a3)) + 5)
+        t187 <- rdI scalars ((6 * (truncate a3)) + 2)
+        t188 <- rdI scalars ((6 * (truncate a3)) + 3)
+        wrI contacts ((30 * (truncate t146)) + 8) (s143 + (negate ((((t176 * s143) + (t177 * s144)) + (t178 * s145)) * t176)))
+        wrI contacts (((30 * (truncate t146)) + 8) + 1) (s144 + (negate ((((t176 * s143) + (t177 * s144)) + (t178 * s145)) * t177)))
+        wrI contacts (((30 * (truncate t146)) + 8) + 2) (s145 + (negate ((((t176 * s143) + (t177 * s144)) + (t178 * s145)) * t178)))
         let !t189 = (s115 + (negate t174))
         let !t190 = (s116 + (negate t175))
         let !t191 = (s114 + (negate t173))
-        wr contacts ((30.0 * t146) + 11.0) (((((t189 * s145) - (t190 * s144)) * t176) + (((t190 * s143) - (t191 * s145)) * t177)) + (((t191 * s144) - (t189 * s143)) * t178))
+        wrI contacts ((30 * (truncate t146)) + 11) (((((t189 * s145) - (t190 * s144)) * t176) + (((t190 * s143) - (t191 * s145)) * t177)) + (((t191 * s144) - (t189 * s143)) * t178))
         let !t192 = (a4 * t170)
-        wr contacts ((30.0 * t146) + 16.0) (t192 + (negate ((((t176 * t192) + (t177 * (a5 * t171))) + (t178 * (a6 * t172))) * t176)))
+        wrI contacts ((30 * (truncate t146)) + 16) (t192 + (negate ((((t176 * t192) + (t177 * (a5 * t171))) + (t178 * (a6 * t172))) * t176)))
         let !t193 = (a5 * t171)
-        wr contacts (((30.0 * t146) + 16.0) + 1.0) (t193 + (negate ((((t176 * t192) + (t177 * t193)) + (t178 * (a6 * t172))) * t177)))
+        wrI contacts (((30 * (truncate t146)) + 16) + 1) (t193 + (negate ((((t176 * t192) + (t177 * t193)) + (t178 * (a6 * t172))) * t177)))
         let !t194 = (a6 * t172)
-        wr contacts (((30.0 * t146) + 16.0) + 2.0) (t194 + (negate ((((t176 * t192) + (t177 * t193)) + (t178 * t194)) * t178)))
-        wr contacts ((30.0 * t146) + 19.0) (((((t189 * t194) - (t190 * t193)) * t176) + (((t190 * t192) - (t191 * t194)) * t177)) + (((t191 * t193) - (t189 * t192)) * t178))
+        wrI contacts (((30 * (truncate t146)) + 16) + 2) (t194 + (negate ((((t176 * t192) + (t177 * t193)) + (t178 * t194)) * t178)))
+        wrI contacts ((30 * (truncate t146)) + 19) (((((t189 * t194) - (t190 * t193)) * t176) + (((t190 * t192) - (t191 * t194)) * t177)) + (((t191 * t193) - (t189 * t192)) * t178))
         pure ()
       else do
-        wr contacts ((30.0 * t146) + 8.0) 0.0
-        wr contacts (((30.0 * t146) + 8.0) + 1.0) 0.0
-        wr contacts (((30.0 * t146) + 8.0) + 2.0) 0.0
-        wr contacts ((30.0 * t146) + 11.0) 0.0
-        wr contacts ((30.0 * t146) + 16.0) 0.0
-        wr contacts (((30.0 * t146) + 16.0) + 1.0) 0.0
-        wr contacts (((30.0 * t146) + 16.0) + 2.0) 0.0
-        wr contacts ((30.0 * t146) + 19.0) 0.0
+        wrI contacts ((30 * (truncate t146)) + 8) 0.0
+        wrI contacts (((30 * (truncate t146)) + 8) + 1) 0.0
+        wrI contacts (((30 * (truncate t146)) + 8) + 2) 0.0
+        wrI contacts ((30 * (truncate t146)) + 11) 0.0
+        wrI contacts ((30 * (truncate t146)) + 16) 0.0
+        wrI contacts (((30 * (truncate t146)) + 16) + 1) 0.0
+        wrI contacts (((30 * (truncate t146)) + 16) + 2) 0.0
+        wrI contacts ((30 * (truncate t146)) + 19) 0.0
         pure ()
       pure ()
     else do
-      t195 <- rd meta 6.0
-      wr meta 6.0 (t195 + 1.0)
+      t195 <- rdI meta 6
+      wrI meta 6 (t195 + 1.0)
       pure ()
     if (abs (t110 - t109)) > 0 then do
-      t196 <- rd verts (3.0 * ((((97.0 * a2) + 1.0) + (t110 * 4.0)) + 3.0))
-      t197 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (t110 * 4.0)) + 3.0)) + 1.0)
-      t198 <- rd verts ((3.0 * ((((97.0 * a2) + 1.0) + (t110 * 4.0)) + 3.0)) + 2.0)
+      t196 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate t110) * 4)) + 3))
+      t197 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate t110) * 4)) + 3)) + 1)
+      t198 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate t110) * 4)) + 3)) + 2)
       let !s199 = ((a4 * t196) + a7)
       let !s200 = ((a5 * t197) + a8)
       let !s201 = ((a6 * t198) + a9)
@@ -297,12 +299,12 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
       let !t206 = ((if s202 > 0 then (2.0 * (atan (s203 / (t205 + s202)))) else (if (abs s203) > 0 then (2.0 * (atan ((t205 - s202) / s203))) else (if (negate s202) > 0 then 3.141592653589793 else 0.0))) - t12)
       let !t207 = (floorF ((t206 - (6.283185307179586 * (floorF (t206 / 6.283185307179586)))) / 0.2617993877991494))
       let !s208 = (if (t207 - 23.0) > 0 then 23.0 else t207)
-      t209 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + (s208 * 4.0)) + 3.0))
-      t210 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s208 * 4.0)) + 3.0)) + 1.0)
-      t211 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + (s208 * 4.0)) + 3.0)) + 2.0)
-      t212 <- rd verts (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s208 - 24.0) + 1.5) > 0 then 0.0 else (s208 + 1.0)) * 4.0)) + 3.0))
-      t213 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s208 - 24.0) + 1.5) > 0 then 0.0 else (s208 + 1.0)) * 4.0)) + 3.0)) + 1.0)
-      t214 <- rd verts ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s208 - 24.0) + 1.5) > 0 then 0.0 else (s208 + 1.0)) * 4.0)) + 3.0)) + 2.0)
+      t209 <- rdI verts (3 * ((((97 * (truncate a3)) + 1) + ((truncate s208) * 4)) + 3))
+      t210 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s208) * 4)) + 3)) + 1)
+      t211 <- rdI verts ((3 * ((((97 * (truncate a3)) + 1) + ((truncate s208) * 4)) + 3)) + 2)
+      t212 <- rdI verts (truncate (3.0 * ((((97.0 * a3) + 1.0) + ((if ((s208 - 24.0) + 1.5) > 0 then 0.0 else (s208 + 1.0)) * 4.0)) + 3.0)))
+      t213 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s208 - 24.0) + 1.5) > 0 then 0.0 else (s208 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      t214 <- rdI verts (truncate ((3.0 * ((((97.0 * a3) + 1.0) + ((if ((s208 - 24.0) + 1.5) > 0 then 0.0 else (s208 + 1.0)) * 4.0)) + 3.0)) + 2.0))
       let !s215 = (((((t212 + t130) * t6) + ((t213 + t131) * t7)) + ((t214 + t132) * t8)) - ((((t209 + t130) * t6) + ((t210 + t131) * t7)) + ((t211 + t132) * t8)))
       let !s216 = (((((t212 + t130) * s9) + ((t213 + t131) * s10)) + ((t214 + t132) * s11)) - ((((t209 + t130) * s9) + ((t210 + t131) * s10)) + ((t211 + t132) * s11)))
       let !s217 = (sqrt ((s215 * s215) + (s216 * s216)))
@@ -316,98 +318,98 @@ vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf i
       let !s225 = ((t223 * t6) + (t224 * s9))
       let !s226 = ((t223 * t7) + (t224 * s10))
       let !s227 = ((t223 * t8) + (t224 * s11))
-      t228 <- rd meta 2.0
-      t229 <- rd meta 3.0
+      t228 <- rdI meta 2
+      t229 <- rdI meta 3
       if (((8.0 * (if (1.0 - t229) > 0 then 1.0 else t229)) - t228) - 0.5) > 0 then do
-        wr meta 2.0 (t228 + 1.0)
-        t230 <- rd pos (3.0 * a2)
-        t231 <- rd pos ((3.0 * a2) + 1.0)
-        t232 <- rd pos ((3.0 * a2) + 2.0)
-        t233 <- rd normal (3.0 * a2)
-        t234 <- rd normal ((3.0 * a2) + 1.0)
-        t235 <- rd normal ((3.0 * a2) + 2.0)
-        t236 <- rd axis (3.0 * a2)
-        t237 <- rd axis ((3.0 * a2) + 1.0)
-        t238 <- rd axis ((3.0 * a2) + 2.0)
+        wrI meta 2 (t228 + 1.0)
+        t230 <- rdI pos (3 * (truncate a2))
+        t231 <- rdI pos ((3 * (truncate a2)) + 1)
+        t232 <- rdI pos ((3 * (truncate a2)) + 2)
+        t233 <- rdI normal (3 * (truncate a2))
+        t234 <- rdI normal ((3 * (truncate a2)) + 1)
+        t235 <- rdI normal ((3 * (truncate a2)) + 2)
+        t236 <- rdI axis (3 * (truncate a2))
+        t237 <- rdI axis ((3 * (truncate a2)) + 1)
+        t238 <- rdI axis ((3 * (truncate a2)) + 2)
         let !s239 = ((t234 * t238) - (t235 * t237))
         let !s240 = ((t235 * t236) - (t233 * t238))
         let !s241 = ((t233 * t237) - (t234 * t236))
-        t242 <- rd scalars (6.0 * a2)
-        t243 <- rd scalars ((6.0 * a2) + 5.0)
-        t244 <- rd scalars ((6.0 * a2) + 2.0)
-        t245 <- rd scalars ((6.0 * a2) + 3.0)
-        wr contacts (30.0 * t228) a2
-        wr contacts ((30.0 * t228) + 1.0) a3
-        wr contacts ((30.0 * t228) + 2.0) a0
-        wr contacts ((30.0 * t228) + 3.0) (a1 + 1.0)
+        t242 <- rdI scalars (6 * (truncate a2))
+        t243 <- rdI scalars ((6 * (truncate a2)) + 5)
+        t244 <- rdI scalars ((6 * (truncate a2)) + 2)
+        t245 <- rdI scalars ((6 * (truncate a2)) + 3)
+        wrI contacts (30 * (truncate t228)) a2
+        wrI contacts ((30 * (truncate t228)) + 1) a3
+        wrI contacts ((30 * (truncate t228)) + 2) a0
+        wrI contacts ((30 * (truncate t228)) + 3) (a1 + 1.0)
         let !t246 = (a4 * s225)
-        wr contacts ((30.0 * t228) + 4.0) (t246 + (negate ((((t233 * t246) + (t234 * (a5 * s226))) + (t235 * (a6 * s227))) * t233)))
+        wrI contacts ((30 * (truncate t228)) + 4) (t246 + (negate ((((t233 * t246) + (t234 * (a5 * s226))) + (t235 * (a6 * s227))) * t233)))
         let !t247 = (a5 * s226)
-        wr contacts (((30.0 * t228) + 4.0) + 1.0) (t247 + (negate ((((t233 * t246) + (t234 * t247)) + (t235 * (a6 * s227))) * t234)))
+        wrI contacts (((30 * (truncate t228)) + 4) + 1) (t247 + (negate ((((t233 * t246) + (t234 * t247)) + (t235 * (a6 * s227))) * t234)))
         let !t248 = (a6 * s227)
-        wr contacts (((30.0 * t228) + 4.0) + 2.0) (t248 + (negate ((((t233 * t246) + (t234 * t247)) + (t235 * t248)) * t235)))
+        wrI contacts (((30 * (truncate t228)) + 4) + 2) (t248 + (negate ((((t233 * t246) + (t234 * t247)) + (t235 * t248)) * t235)))
         let !t249 = (t197 + (negate t231))
         let !t250 = (t198 + (negate t232))
         let !t251 = (t196 + (negate t230))
-        wr contacts ((30.0 * t228) + 7.0) (((((t249 * t248) - (t250 * t247)) * t233) + (((t250 * t246) - (t251 * t248)) * t234)) + (((t251 * t247) - (t249 * t246)) * t235))
+        wrI contacts ((30 * (truncate t228)) + 7) (((((t249 * t248) - (t250 * t247)) * t233) + (((t250 * t246) - (t251 * t248)) * t234)) + (((t251 * t247) - (t249 * t246)) * t235))
         let !t252 = ((t234 * t248) - (t235 * t247))
-        wr contacts ((30.0 * t228) + 12.0) (t252 + (negate ((((t233 * t252) + (t234 * ((t235 * t246) - (t233 * t248)))) + (t235 * ((t233 * t247) - (t234 * t246)))) * t233)))
+        wrI contacts ((30 * (truncate t228)) + 12) (t252 + (negate ((((t233 * t252) + (t234 * ((t235 * t246) - (t233 * t248)))) + (t235 * ((t233 * t247) - (t234 * t246)))) * t233)))
         let !t253 = ((t235 * t246) - (t233 * t248))
-        wr contacts (((30.0 * t228) + 12.0) + 1.0) (t253 + (negate ((((t233 * t252) + (t234 * t253)) + (t235 * ((t233 * t247) - (t234 * t246)))) * t234)))
+        wrI contacts (((30 * (truncate t228)) + 12) + 1) (t253 + (negate ((((t233 * t252) + (t234 * t253)) + (t235 * ((t233 * t247) - (t234 * t246)))) * t234)))
         let !t254 = ((t233 * t247) - (t234 * t246))
-        wr contacts (((30.0 * t228) + 12.0) + 2.0) (t254 + (negate ((((t233 * t252) + (t234 * t253)) + (t235 * t254)) * t235)))
-        wr contacts ((30.0 * t228) + 15.0) (((((t249 * t254) - (t250 * t253)) * t233) + (((t250 * t252) - (t251 * t254)) * t234)) + (((t251 * t253) - (t249 * t252)) * t235))
-        wr contacts ((30.0 * t228) + 20.0) s221
-        wr contacts ((30.0 * t228) + 26.0) a10
-        wr contacts ((30.0 * t228) + 27.0) t196
-        wr contacts (((30.0 * t228) + 27.0) + 1.0) t197
-        wr contacts (((30.0 * t228) + 27.0) + 2.0) t198
+        wrI contacts (((30 * (truncate t228)) + 12) + 2) (t254 + (negate ((((t233 * t252) + (t234 * t253)) + (t235 * t254)) * t235)))
+        wrI contacts ((30 * (truncate t228)) + 15) (((((t249 * t254) - (t250 * t253)) * t233) + (((t250 * t252) - (t251 * t254)) * t234)) + (((t251 * t253) - (t249 * t252)) * t235))
+        wrI contacts ((30 * (truncate t228)) + 20) s221
+        wrI contacts ((30 * (truncate t228)) + 26) a10
+        wrI contacts ((30 * (truncate t228)) + 27) t196
+        wrI contacts (((30 * (truncate t228)) + 27) + 1) t197
+        wrI contacts (((30 * (truncate t228)) + 27) + 2) t198
         if (a3 + 0.5) > 0 then do
-          t255 <- rd pos (3.0 * a3)
-          t256 <- rd pos ((3.0 * a3) + 1.0)
-          t257 <- rd pos ((3.0 * a3) + 2.0)
-          t258 <- rd normal (3.0 * a3)
-          t259 <- rd normal ((3.0 * a3) + 1.0)
-          t260 <- rd normal ((3.0 * a3) + 2.0)
-          t261 <- rd axis (3.0 * a3)
-          t262 <- rd axis ((3.0 * a3) + 1.0)
-          t263 <- rd axis ((3.0 * a3) + 2.0)
+          t255 <- rdI pos (3 * (truncate a3))
+          t256 <- rdI pos ((3 * (truncate a3)) + 1)
+          t257 <- rdI pos ((3 * (truncate a3)) + 2)
+          t258 <- rdI normal (3 * (truncate a3))
+          t259 <- rdI normal ((3 * (truncate a3)) + 1)
+          t260 <- rdI normal ((3 * (truncate a3)) + 2)
+          t261 <- rdI axis (3 * (truncate a3))
+          t262 <- rdI axis ((3 * (truncate a3)) + 1)
+          t263 <- rdI axis ((3 * (truncate a3)) + 2)
           let !s264 = ((t259 * t263) - (t260 * t262))
           let !s265 = ((t260 * t261) - (t258 * t263))
           let !s266 = ((t258 * t262) - (t259 * t261))
-          t267 <- rd scalars (6.0 * a3)
-          t268 <- rd scalars ((6.0 * a3) + 5.0)
-          t269 <- rd scalars ((6.0 * a3) + 2.0)
-          t270 <- rd scalars ((6.0 * a3) + 3.0)
-          wr contacts ((30.0 * t228) + 8.0) (s225 + (negate ((((t258 * s225) + (t259 * s226)) + (t260 * s227)) * t258)))
-          wr contacts (((30.0 * t228) + 8.0) + 1.0) (s226 + (negate ((((t258 * s225) + (t259 * s226)) + (t260 * s227)) * t259)))
-          wr contacts (((30.0 * t228) + 8.0) + 2.0) (s227 + (negate ((((t258 * s225) + (t259 * s226)) + (t260 * s227)) * t260)))
+          t267 <- rdI scalars (6 * (truncate a3))
+          t268 <- rdI scalars ((6 * (truncate a3)) + 5)
+          t269 <- rdI scalars ((6 * (truncate a3)) + 2)
+          t270 <- rdI scalars ((6 * (truncate a3)) + 3)
+          wrI contacts ((30 * (truncate t228)) + 8) (s225 + (negate ((((t258 * s225) + (t259 * s226)) + (t260 * s227)) * t258)))
+          wrI contacts (((30 * (truncate t228)) + 8) + 1) (s226 + (negate ((((t258 * s225) + (t259 * s226)) + (t260 * s227)) * t259)))
+          wrI contacts (((30 * (truncate t228)) + 8) + 2) (s227 + (negate ((((t258 * s225) + (t259 * s226)) + (t260 * s227)) * t260)))
           let !t271 = (s200 + (negate t256))
           let !t272 = (s201 + (negate t257))
           let !t273 = (s199 + (negate t255))
-          wr contacts ((30.0 * t228) + 11.0) (((((t271 * s227) - (t272 * s226)) * t258) + (((t272 * s225) - (t273 * s227)) * t259)) + (((t273 * s226) - (t271 * s225)) * t260))
+          wrI contacts ((30 * (truncate t228)) + 11) (((((t271 * s227) - (t272 * s226)) * t258) + (((t272 * s225) - (t273 * s227)) * t259)) + (((t273 * s226) - (t271 * s225)) * t260))
           let !t274 = (a4 * t252)
-          wr contacts ((30.0 * t228) + 16.0) (t274 + (negate ((((t258 * t274) + (t259 * (a5 * t253))) + (t260 * (a6 * t254))) * t258)))
+          wrI contacts ((30 * (truncate t228)) + 16) (t274 + (negate ((((t258 * t274) + (t259 * (a5 * t253))) + (t260 * (a6 * t254))) * t258)))
           let !t275 = (a5 * t253)
-          wr contacts (((30.0 * t228) + 16.0) + 1.0) (t275 + (negate ((((t258 * t274) + (t259 * t275)) + (t260 * (a6 * t254))) * t259)))
+          wrI contacts (((30 * (truncate t228)) + 16) + 1) (t275 + (negate ((((t258 * t274) + (t259 * t275)) + (t260 * (a6 * t254))) * t259)))
           let !t276 = (a6 * t254)
-          wr contacts (((30.0 * t228) + 16.0) + 2.0) (t276 + (negate ((((t258 * t274) + (t259 * t275)) + (t260 * t276)) * t260)))
-          wr contacts ((30.0 * t228) + 19.0) (((((t271 * t276) - (t272 * t275)) * t258) + (((t272 * t274) - (t273 * t276)) * t259)) + (((t273 * t275) - (t271 * t274)) * t260))
+          wrI contacts (((30 * (truncate t228)) + 16) + 2) (t276 + (negate ((((t258 * t274) + (t259 * t275)) + (t260 * t276)) * t260)))
+          wrI contacts ((30 * (truncate t228)) + 19) (((((t271 * t276) - (t272 * t275)) * t258) + (((t272 * t274) - (t273 * t276)) * t259)) + (((t273 * t275) - (t271 * t274)) * t260))
           pure ()
         else do
-          wr contacts ((30.0 * t228) + 8.0) 0.0
-          wr contacts (((30.0 * t228) + 8.0) + 1.0) 0.0
-          wr contacts (((30.0 * t228) + 8.0) + 2.0) 0.0
-          wr contacts ((30.0 * t228) + 11.0) 0.0
-          wr contacts ((30.0 * t228) + 16.0) 0.0
-          wr contacts (((30.0 * t228) + 16.0) + 1.0) 0.0
-          wr contacts (((30.0 * t228) + 16.0) + 2.0) 0.0
-          wr contacts ((30.0 * t228) + 19.0) 0.0
+          wrI contacts ((30 * (truncate t228)) + 8) 0.0
+          wrI contacts (((30 * (truncate t228)) + 8) + 1) 0.0
+          wrI contacts (((30 * (truncate t228)) + 8) + 2) 0.0
+          wrI contacts ((30 * (truncate t228)) + 11) 0.0
+          wrI contacts ((30 * (truncate t228)) + 16) 0.0
+          wrI contacts (((30 * (truncate t228)) + 16) + 1) 0.0
+          wrI contacts (((30 * (truncate t228)) + 16) + 2) 0.0
+          wrI contacts ((30 * (truncate t228)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t277 <- rd meta 6.0
-        wr meta 6.0 (t277 + 1.0)
+        t277 <- rdI meta 6
+        wrI meta 6 (t277 + 1.0)
         pure ()
       pure ()
     else do

@@ -28,33 +28,34 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (t13 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * (negate (t14 * t12))))
       let !t17 = (t10 + (t1 * ((-4.0) + (negate (t14 * t13)))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wr vel (3.0 * i3) t15
-        wr vel ((3.0 * i3) + 1.0) t16
-        wr vel ((3.0 * i3) + 2.0) t17
+        wrI vel (3 * i3) t15
+        wrI vel ((3 * i3) + 1) t16
+        wrI vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rd meta 1.0
-        wr meta 1.0 (t18 + 1.0)
+        t18 <- rdI meta 1
+        wrI meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -64,11 +65,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -78,81 +80,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -166,15 +177,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rd verts (3.0 * (97.0 * i31))
-    t68 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t69 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t67 <- rdI verts (3 * (97 * i31))
+    t68 <- rdI verts ((3 * (97 * i31)) + 1)
+    t69 <- rdI verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
-    loop 0.0 24.0 $ \i71 -> do
-      t72 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0))
-      t73 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 1.0)
-      t74 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 2.0)
-      t75 <- rd radii ((24.0 * i31) + i71)
+    loopI 0.0 24.0 $ \i71 -> do
+      let !d71 = fromIntegral i71 :: Double
+      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      t75 <- rdI radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -191,25 +203,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v86 <- newR 0.0
       v87 <- newR 0.0
       v88 <- newR 0.0
-      loop 0.0 24.0 $ \i89 -> do
-        t90 <- rd radii ((24.0 * i31) + i89)
-        loop 6.0 12.0 $ \i91 -> do
-          let !t92 = (i89 + i91)
-          t93 <- rd radii ((24.0 * i31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))
-          loop 1.0 4.0 $ \i94 -> do
-            t95 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0)))
-            t96 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 1.0)
-            t97 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 2.0)
-            t98 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94))
-            t99 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 1.0)
-            t100 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 2.0)
-            loop 1.0 4.0 $ \i101 -> do
-              t102 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0)))
-              t103 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 1.0)
-              t104 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 2.0)
-              t105 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101))
-              t106 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 1.0)
-              t107 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 2.0)
+      loopI 0.0 24.0 $ \i89 -> do
+        let !d89 = fromIntegral i89 :: Double
+        t90 <- rdI radii ((24 * i31) + i89)
+        loopI 6.0 12.0 $ \i91 -> do
+          let !d91 = fromIntegral i91 :: Double
+          let !t92 = (d89 + d91)
+          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          loopI 1.0 4.0 $ \i94 -> do
+            let !d94 = fromIntegral i94 :: Double
+            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            loopI 1.0 4.0 $ \i101 -> do
+              let !d101 = fromIntegral i101 :: Double
+              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -242,19 +258,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t137 = (if (negate t130) > 0 then (if (negate t133) > 0 then 0.0 else t133) else (if t134 > 0 then (if (negate t136) > 0 then 0.0 else t136) else t129))
               let !t138 = (if t134 > 0 then 1.0 else t130)
               let !t139 = (if (negate t138) > 0 then 0.0 else t138)
-              let !t140 = ((0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0)))) - t108)
+              let !t140 = ((0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0)))) - t108)
               let !t141 = ((t95 + (t137 * t116)) + (negate (t102 + (t139 * t110))))
               let !t142 = ((t96 + (t137 * t117)) + (negate (t103 + (t139 * t112))))
               let !t143 = ((t97 + (t137 * t118)) + (negate (t104 + (t139 * t114))))
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
-                setR v82 (0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0))))
-                t145 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0)))
-                t146 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 1.0)
-                t147 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 2.0)
-                t148 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))
-                t149 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)
-                t150 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)
+                setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
+                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -310,89 +326,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s189 = (t188 * t184)
         let !s190 = (t188 * t185)
         let !s191 = (t188 * t186)
-        t192 <- rd meta 2.0
-        t193 <- rd meta 3.0
+        t192 <- rdI meta 2
+        t193 <- rdI meta 3
         if (((8.0 * (if (1.0 - t193) > 0 then 1.0 else t193)) - t192) - 0.5) > 0 then do
-          wr meta 2.0 (t192 + 1.0)
-          t194 <- rd pos (3.0 * i31)
-          t195 <- rd pos ((3.0 * i31) + 1.0)
-          t196 <- rd pos ((3.0 * i31) + 2.0)
-          t197 <- rd normal (3.0 * i31)
-          t198 <- rd normal ((3.0 * i31) + 1.0)
-          t199 <- rd normal ((3.0 * i31) + 2.0)
-          t200 <- rd axis (3.0 * i31)
-          t201 <- rd axis ((3.0 * i31) + 1.0)
-          t202 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t192 + 1.0)
+          t194 <- rdI pos (3 * i31)
+          t195 <- rdI pos ((3 * i31) + 1)
+          t196 <- rdI pos ((3 * i31) + 2)
+          t197 <- rdI normal (3 * i31)
+          t198 <- rdI normal ((3 * i31) + 1)
+          t199 <- rdI normal ((3 * i31) + 2)
+          t200 <- rdI axis (3 * i31)
+          t201 <- rdI axis ((3 * i31) + 1)
+          t202 <- rdI axis ((3 * i31) + 2)
           let !s203 = ((t198 * t202) - (t199 * t201))
           let !s204 = ((t199 * t200) - (t197 * t202))
           let !s205 = ((t197 * t201) - (t198 * t200))
-          t206 <- rd scalars (6.0 * i31)
-          t207 <- rd scalars ((6.0 * i31) + 5.0)
-          t208 <- rd scalars ((6.0 * i31) + 2.0)
-          t209 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t192) i31
-          wr contacts ((30.0 * t192) + 1.0) (-1.0)
-          wr contacts ((30.0 * t192) + 2.0) i31
-          wr contacts ((30.0 * t192) + 3.0) 12.0
-          wr contacts ((30.0 * t192) + 4.0) (s189 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t197)))
-          wr contacts (((30.0 * t192) + 4.0) + 1.0) (s190 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t198)))
-          wr contacts (((30.0 * t192) + 4.0) + 2.0) (s191 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t199)))
-          wr contacts ((30.0 * t192) + 7.0) 0.0
-          wr contacts ((30.0 * t192) + 12.0) 0.0
-          wr contacts (((30.0 * t192) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t192) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t192) + 15.0) 0.0
-          wr contacts ((30.0 * t192) + 20.0) t162
-          wr contacts ((30.0 * t192) + 26.0) 0.6
-          wr contacts ((30.0 * t192) + 27.0) t163
-          wr contacts (((30.0 * t192) + 27.0) + 1.0) t164
-          wr contacts (((30.0 * t192) + 27.0) + 2.0) t165
+          t206 <- rdI scalars (6 * i31)
+          t207 <- rdI scalars ((6 * i31) + 5)
+          t208 <- rdI scalars ((6 * i31) + 2)
+          t209 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t192)) d31
+          wrI contacts ((30 * (truncate t192)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t192)) + 2) d31
+          wrI contacts ((30 * (truncate t192)) + 3) 12.0
+          wrI contacts ((30 * (truncate t192)) + 4) (s189 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t197)))
+          wrI contacts (((30 * (truncate t192)) + 4) + 1) (s190 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t198)))
+          wrI contacts (((30 * (truncate t192)) + 4) + 2) (s191 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t199)))
+          wrI contacts ((30 * (truncate t192)) + 7) 0.0
+          wrI contacts ((30 * (truncate t192)) + 12) 0.0
+          wrI contacts (((30 * (truncate t192)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t192)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t192)) + 15) 0.0
+          wrI contacts ((30 * (truncate t192)) + 20) t162
+          wrI contacts ((30 * (truncate t192)) + 26) 0.6
+          wrI contacts ((30 * (truncate t192)) + 27) t163
+          wrI contacts (((30 * (truncate t192)) + 27) + 1) t164
+          wrI contacts (((30 * (truncate t192)) + 27) + 2) t165
           if (-0.5) > 0 then do
-            t210 <- rd pos (-3.0)
-            t211 <- rd pos (-2.0)
-            t212 <- rd pos (-1.0)
-            t213 <- rd normal (-3.0)
-            t214 <- rd normal (-2.0)
-            t215 <- rd normal (-1.0)
-            t216 <- rd axis (-3.0)
-            t217 <- rd axis (-2.0)
-            t218 <- rd axis (-1.0)
+            t210 <- rdI pos (-3)
+            t211 <- rdI pos (-2)
+            t212 <- rdI pos (-1)
+            t213 <- rdI normal (-3)
+            t214 <- rdI normal (-2)
+            t215 <- rdI normal (-1)
+            t216 <- rdI axis (-3)
+            t217 <- rdI axis (-2)
+            t218 <- rdI axis (-1)
             let !s219 = ((t214 * t218) - (t215 * t217))
             let !s220 = ((t215 * t216) - (t213 * t218))
             let !s221 = ((t213 * t217) - (t214 * t216))
-            t222 <- rd scalars (-6.0)
-            t223 <- rd scalars (-1.0)
-            t224 <- rd scalars (-4.0)
-            t225 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t192) + 8.0) (s189 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t213)))
-            wr contacts (((30.0 * t192) + 8.0) + 1.0) (s190 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t214)))
-            wr contacts (((30.0 * t192) + 8.0) + 2.0) (s191 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t215)))
+            t222 <- rdI scalars (-6)
+            t223 <- rdI scalars (-1)
+            t224 <- rdI scalars (-4)
+            t225 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t192)) + 8) (s189 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t213)))
+            wrI contacts (((30 * (truncate t192)) + 8) + 1) (s190 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t214)))
+            wrI contacts (((30 * (truncate t192)) + 8) + 2) (s191 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t215)))
             let !t226 = (t164 + (negate t211))
             let !t227 = (t165 + (negate t212))
             let !t228 = (t163 + (negate t210))
-            wr contacts ((30.0 * t192) + 11.0) (((((t226 * s191) - (t227 * s190)) * t213) + (((t227 * s189) - (t228 * s191)) * t214)) + (((t228 * s190) - (t226 * s189)) * t215))
+            wrI contacts ((30 * (truncate t192)) + 11) (((((t226 * s191) - (t227 * s190)) * t213) + (((t227 * s189) - (t228 * s191)) * t214)) + (((t228 * s190) - (t226 * s189)) * t215))
             let !t229 = ((t198 * s191) - (t199 * s190))
-            wr contacts ((30.0 * t192) + 16.0) (t229 + (negate ((((t213 * t229) + (t214 * ((t199 * s189) - (t197 * s191)))) + (t215 * ((t197 * s190) - (t198 * s189)))) * t213)))
+            wrI contacts ((30 * (truncate t192)) + 16) (t229 + (negate ((((t213 * t229) + (t214 * ((t199 * s189) - (t197 * s191)))) + (t215 * ((t197 * s190) - (t198 * s189)))) * t213)))
             let !t230 = ((t199 * s189) - (t197 * s191))
-            wr contacts (((30.0 * t192) + 16.0) + 1.0) (t230 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * ((t197 * s190) - (t198 * s189)))) * t214)))
+            wrI contacts (((30 * (truncate t192)) + 16) + 1) (t230 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * ((t197 * s190) - (t198 * s189)))) * t214)))
             let !t231 = ((t197 * s190) - (t198 * s189))
-            wr contacts (((30.0 * t192) + 16.0) + 2.0) (t231 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * t231)) * t215)))
-            wr contacts ((30.0 * t192) + 19.0) (((((t226 * t231) - (t227 * t230)) * t213) + (((t227 * t229) - (t228 * t231)) * t214)) + (((t228 * t230) - (t226 * t229)) * t215))
+            wrI contacts (((30 * (truncate t192)) + 16) + 2) (t231 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * t231)) * t215)))
+            wrI contacts ((30 * (truncate t192)) + 19) (((((t226 * t231) - (t227 * t230)) * t213) + (((t227 * t229) - (t228 * t231)) * t214)) + (((t228 * t230) - (t226 * t229)) * t215))
             pure ()
           else do
-            wr contacts ((30.0 * t192) + 8.0) 0.0
-            wr contacts (((30.0 * t192) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t192) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t192) + 11.0) 0.0
-            wr contacts ((30.0 * t192) + 16.0) 0.0
-            wr contacts (((30.0 * t192) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t192) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t192) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t192)) + 8) 0.0
+            wrI contacts (((30 * (truncate t192)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t192)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t192)) + 11) 0.0
+            wrI contacts ((30 * (truncate t192)) + 16) 0.0
+            wrI contacts (((30 * (truncate t192)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t192)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t192)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t232 <- rd meta 6.0
-          wr meta 6.0 (t232 + 1.0)
+          t232 <- rdI meta 6
+          wrI meta 6 (t232 + 1.0)
           pure ()
         pure ()
       else do
@@ -405,43 +421,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -449,12 +466,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -462,20 +479,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -486,18 +503,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -505,98 +523,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -927,12 +945,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s465 = ((t139 * (t447 * (t464 * t460))) + (t199 * s385))
       let !s466 = ((t139 * (t447 * (t464 * t461))) + (t199 * s386))
       let !s467 = ((t139 * (t447 * (t464 * t462))) + (t199 * s387))
-      t468 <- rd mouse 4.0
-      t469 <- rd mouse 5.0
-      t470 <- rd mouse 6.0
-      t471 <- rd mouse 7.0
-      t472 <- rd mouse 8.0
-      t473 <- rd mouse 9.0
+      t468 <- rdI mouse 4
+      t469 <- rdI mouse 5
+      t470 <- rdI mouse 6
+      t471 <- rdI mouse 7
+      t472 <- rdI mouse 8
+      t473 <- rdI mouse 9
       let !t474 = (recip t101)
       let !t475 = (6.283185307179586 * t471)
       let !s476 = (recip (t103 * ((((2.0 * t474) * t472) * t475) + (t103 * ((t474 * t475) * t475)))))
@@ -943,68 +961,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s481 = (s444 + (negate t468))
       let !s482 = (s445 + (negate t469))
       let !s483 = (s446 + (negate t470))
-      t484 <- rd mouse 10.0
-      t485 <- rd scalars ((6.0 * t100) + 2.0)
-      t486 <- rd scalars ((6.0 * t100) + 3.0)
-      t487 <- rd vel (3.0 * t100)
-      t488 <- rd vel ((3.0 * t100) + 1.0)
-      t489 <- rd vel ((3.0 * t100) + 2.0)
-      t490 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t487 + ((t485 * t484) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t488 + ((t485 * t484) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t489 + ((t485 * t484) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t490 + ((t486 * t484) * (((((s479 * t112) - (s480 * t111)) * t107) + (((s480 * t110) - (s478 * t112)) * t108)) + (((s478 * t111) - (s479 * t110)) * t109))))
-      t491 <- rd mouse 11.0
-      t492 <- rd scalars ((6.0 * t100) + 2.0)
-      t493 <- rd scalars ((6.0 * t100) + 3.0)
-      t494 <- rd vel (3.0 * t100)
-      t495 <- rd vel ((3.0 * t100) + 1.0)
-      t496 <- rd vel ((3.0 * t100) + 2.0)
-      t497 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t494 + ((t492 * t491) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t495 + ((t492 * t491) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t496 + ((t492 * t491) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t497 + ((t493 * t491) * (((((s479 * s115) - (s480 * s114)) * t107) + (((s480 * s113) - (s478 * s115)) * t108)) + (((s478 * s114) - (s479 * s113)) * t109))))
+      t484 <- rdI mouse 10
+      t485 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t486 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t487 <- rdI vel (3 * (truncate t100))
+      t488 <- rdI vel ((3 * (truncate t100)) + 1)
+      t489 <- rdI vel ((3 * (truncate t100)) + 2)
+      t490 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t487 + ((t485 * t484) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t488 + ((t485 * t484) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t489 + ((t485 * t484) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t490 + ((t486 * t484) * (((((s479 * t112) - (s480 * t111)) * t107) + (((s480 * t110) - (s478 * t112)) * t108)) + (((s478 * t111) - (s479 * t110)) * t109))))
+      t491 <- rdI mouse 11
+      t492 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t493 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t494 <- rdI vel (3 * (truncate t100))
+      t495 <- rdI vel ((3 * (truncate t100)) + 1)
+      t496 <- rdI vel ((3 * (truncate t100)) + 2)
+      t497 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t494 + ((t492 * t491) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t495 + ((t492 * t491) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t496 + ((t492 * t491) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t497 + ((t493 * t491) * (((((s479 * s115) - (s480 * s114)) * t107) + (((s480 * s113) - (s478 * s115)) * t108)) + (((s478 * s114) - (s479 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i498 -> do
-    loop 0.0 t9 $ \i499 -> do
-      t500 <- rd contacts (30.0 * i499)
-      t501 <- rd contacts ((30.0 * i499) + 1.0)
-      t502 <- rd contacts ((30.0 * i499) + 12.0)
-      t503 <- rd contacts (((30.0 * i499) + 12.0) + 1.0)
-      t504 <- rd contacts (((30.0 * i499) + 12.0) + 2.0)
-      t505 <- rd contacts ((30.0 * i499) + 15.0)
-      t506 <- rd contacts ((30.0 * i499) + 16.0)
-      t507 <- rd contacts (((30.0 * i499) + 16.0) + 1.0)
-      t508 <- rd contacts (((30.0 * i499) + 16.0) + 2.0)
-      t509 <- rd contacts ((30.0 * i499) + 19.0)
-      t510 <- rd contacts ((30.0 * i499) + 4.0)
-      t511 <- rd contacts (((30.0 * i499) + 4.0) + 1.0)
-      t512 <- rd contacts (((30.0 * i499) + 4.0) + 2.0)
-      t513 <- rd contacts ((30.0 * i499) + 7.0)
-      t514 <- rd contacts ((30.0 * i499) + 8.0)
-      t515 <- rd contacts (((30.0 * i499) + 8.0) + 1.0)
-      t516 <- rd contacts (((30.0 * i499) + 8.0) + 2.0)
-      t517 <- rd contacts ((30.0 * i499) + 11.0)
-      t518 <- rd contacts ((30.0 * i499) + 26.0)
-      t519 <- rd contacts ((30.0 * i499) + 24.0)
-      t520 <- rd contacts ((30.0 * i499) + 25.0)
-      t521 <- rd contacts ((30.0 * i499) + 22.0)
-      t522 <- rd vel (3.0 * t500)
-      t523 <- rd vel ((3.0 * t500) + 1.0)
-      t524 <- rd vel ((3.0 * t500) + 2.0)
-      t525 <- rd scalars ((6.0 * t500) + 1.0)
+  loopI 0.0 t1 $ \i498 -> do
+    let !d498 = fromIntegral i498 :: Double
+    loopI 0.0 t9 $ \i499 -> do
+      let !d499 = fromIntegral i499 :: Double
+      t500 <- rdI contacts (30 * i499)
+      t501 <- rdI contacts ((30 * i499) + 1)
+      t502 <- rdI contacts ((30 * i499) + 12)
+      t503 <- rdI contacts (((30 * i499) + 12) + 1)
+      t504 <- rdI contacts (((30 * i499) + 12) + 2)
+      t505 <- rdI contacts ((30 * i499) + 15)
+      t506 <- rdI contacts ((30 * i499) + 16)
+      t507 <- rdI contacts (((30 * i499) + 16) + 1)
+      t508 <- rdI contacts (((30 * i499) + 16) + 2)
+      t509 <- rdI contacts ((30 * i499) + 19)
+      t510 <- rdI contacts ((30 * i499) + 4)
+      t511 <- rdI contacts (((30 * i499) + 4) + 1)
+      t512 <- rdI contacts (((30 * i499) + 4) + 2)
+      t513 <- rdI contacts ((30 * i499) + 7)
+      t514 <- rdI contacts ((30 * i499) + 8)
+      t515 <- rdI contacts (((30 * i499) + 8) + 1)
+      t516 <- rdI contacts (((30 * i499) + 8) + 2)
+      t517 <- rdI contacts ((30 * i499) + 11)
+      t518 <- rdI contacts ((30 * i499) + 26)
+      t519 <- rdI contacts ((30 * i499) + 24)
+      t520 <- rdI contacts ((30 * i499) + 25)
+      t521 <- rdI contacts ((30 * i499) + 22)
+      t522 <- rdI vel (3 * (truncate t500))
+      t523 <- rdI vel ((3 * (truncate t500)) + 1)
+      t524 <- rdI vel ((3 * (truncate t500)) + 2)
+      t525 <- rdI scalars ((6 * (truncate t500)) + 1)
       v526 <- newR 0.0
       if (t501 + 0.5) > 0 then do
-        t527 <- rd vel (3.0 * t501)
-        t528 <- rd vel ((3.0 * t501) + 1.0)
-        t529 <- rd vel ((3.0 * t501) + 2.0)
-        t530 <- rd scalars ((6.0 * t501) + 1.0)
+        t527 <- rdI vel (3 * (truncate t501))
+        t528 <- rdI vel ((3 * (truncate t501)) + 1)
+        t529 <- rdI vel ((3 * (truncate t501)) + 2)
+        t530 <- rdI scalars ((6 * (truncate t501)) + 1)
         setR v526 ((((t506 * t527) + (t507 * t528)) + (t508 * t529)) + (t509 * t530))
         pure ()
       else do
@@ -1017,43 +1037,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t536 = (if (t535 - t533) > 0 then t533 else t535)
       let !t537 = (if (t534 - t536) > 0 then t534 else t536)
       let !s538 = (if (1.0 - (abs (t537 - t537))) > 0 then t537 else 0.0)
-      wr contacts ((30.0 * i499) + 25.0) s538
-      t539 <- rd scalars ((6.0 * t500) + 2.0)
-      t540 <- rd scalars ((6.0 * t500) + 3.0)
-      t541 <- rd vel (3.0 * t500)
-      t542 <- rd vel ((3.0 * t500) + 1.0)
-      t543 <- rd vel ((3.0 * t500) + 2.0)
-      t544 <- rd scalars ((6.0 * t500) + 1.0)
-      wr vel (3.0 * t500) (t541 + ((t539 * (s538 - t520)) * t502))
-      wr vel ((3.0 * t500) + 1.0) (t542 + ((t539 * (s538 - t520)) * t503))
-      wr vel ((3.0 * t500) + 2.0) (t543 + ((t539 * (s538 - t520)) * t504))
-      wr scalars ((6.0 * t500) + 1.0) (t544 + ((t540 * (s538 - t520)) * t505))
+      wrI contacts ((30 * i499) + 25) s538
+      t539 <- rdI scalars ((6 * (truncate t500)) + 2)
+      t540 <- rdI scalars ((6 * (truncate t500)) + 3)
+      t541 <- rdI vel (3 * (truncate t500))
+      t542 <- rdI vel ((3 * (truncate t500)) + 1)
+      t543 <- rdI vel ((3 * (truncate t500)) + 2)
+      t544 <- rdI scalars ((6 * (truncate t500)) + 1)
+      wrI vel (3 * (truncate t500)) (t541 + ((t539 * (s538 - t520)) * t502))
+      wrI vel ((3 * (truncate t500)) + 1) (t542 + ((t539 * (s538 - t520)) * t503))
+      wrI vel ((3 * (truncate t500)) + 2) (t543 + ((t539 * (s538 - t520)) * t504))
+      wrI scalars ((6 * (truncate t500)) + 1) (t544 + ((t540 * (s538 - t520)) * t505))
       if (t501 + 0.5) > 0 then do
-        t545 <- rd scalars ((6.0 * t501) + 2.0)
-        t546 <- rd scalars ((6.0 * t501) + 3.0)
-        t547 <- rd vel (3.0 * t501)
-        t548 <- rd vel ((3.0 * t501) + 1.0)
-        t549 <- rd vel ((3.0 * t501) + 2.0)
-        t550 <- rd scalars ((6.0 * t501) + 1.0)
-        wr vel (3.0 * t501) (t547 + ((t545 * (negate (s538 - t520))) * t506))
-        wr vel ((3.0 * t501) + 1.0) (t548 + ((t545 * (negate (s538 - t520))) * t507))
-        wr vel ((3.0 * t501) + 2.0) (t549 + ((t545 * (negate (s538 - t520))) * t508))
-        wr scalars ((6.0 * t501) + 1.0) (t550 + ((t546 * (negate (s538 - t520))) * t509))
+        t545 <- rdI scalars ((6 * (truncate t501)) + 2)
+        t546 <- rdI scalars ((6 * (truncate t501)) + 3)
+        t547 <- rdI vel (3 * (truncate t501))
+        t548 <- rdI vel ((3 * (truncate t501)) + 1)
+        t549 <- rdI vel ((3 * (truncate t501)) + 2)
+        t550 <- rdI scalars ((6 * (truncate t501)) + 1)
+        wrI vel (3 * (truncate t501)) (t547 + ((t545 * (negate (s538 - t520))) * t506))
+        wrI vel ((3 * (truncate t501)) + 1) (t548 + ((t545 * (negate (s538 - t520))) * t507))
+        wrI vel ((3 * (truncate t501)) + 2) (t549 + ((t545 * (negate (s538 - t520))) * t508))
+        wrI scalars ((6 * (truncate t501)) + 1) (t550 + ((t546 * (negate (s538 - t520))) * t509))
         pure ()
       else do
         pure ()
-      t551 <- rd contacts ((30.0 * i499) + 21.0)
-      t552 <- rd contacts ((30.0 * i499) + 23.0)
-      t553 <- rd vel (3.0 * t500)
-      t554 <- rd vel ((3.0 * t500) + 1.0)
-      t555 <- rd vel ((3.0 * t500) + 2.0)
-      t556 <- rd scalars ((6.0 * t500) + 1.0)
+      t551 <- rdI contacts ((30 * i499) + 21)
+      t552 <- rdI contacts ((30 * i499) + 23)
+      t553 <- rdI vel (3 * (truncate t500))
+      t554 <- rdI vel ((3 * (truncate t500)) + 1)
+      t555 <- rdI vel ((3 * (truncate t500)) + 2)
+      t556 <- rdI scalars ((6 * (truncate t500)) + 1)
       v557 <- newR 0.0
       if (t501 + 0.5) > 0 then do
-        t558 <- rd vel (3.0 * t501)
-        t559 <- rd vel ((3.0 * t501) + 1.0)
-        t560 <- rd vel ((3.0 * t501) + 2.0)
-        t561 <- rd scalars ((6.0 * t501) + 1.0)
+        t558 <- rdI vel (3 * (truncate t501))
+        t559 <- rdI vel ((3 * (truncate t501)) + 1)
+        t560 <- rdI vel ((3 * (truncate t501)) + 2)
+        t561 <- rdI scalars ((6 * (truncate t501)) + 1)
         setR v557 ((((t514 * t558) + (t515 * t559)) + (t516 * t560)) + (t517 * t561))
         pure ()
       else do
@@ -1063,73 +1083,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t564 = (t519 + ((t518 * (t552 - s563)) * t551))
       let !t565 = (if (negate t564) > 0 then 0.0 else t564)
       let !s566 = (if (1.0 - (abs (t565 - t565))) > 0 then t565 else 0.0)
-      wr contacts ((30.0 * i499) + 24.0) s566
-      t567 <- rd scalars ((6.0 * t500) + 2.0)
-      t568 <- rd scalars ((6.0 * t500) + 3.0)
-      t569 <- rd vel (3.0 * t500)
-      t570 <- rd vel ((3.0 * t500) + 1.0)
-      t571 <- rd vel ((3.0 * t500) + 2.0)
-      t572 <- rd scalars ((6.0 * t500) + 1.0)
-      wr vel (3.0 * t500) (t569 + ((t567 * (s566 - t519)) * t510))
-      wr vel ((3.0 * t500) + 1.0) (t570 + ((t567 * (s566 - t519)) * t511))
-      wr vel ((3.0 * t500) + 2.0) (t571 + ((t567 * (s566 - t519)) * t512))
-      wr scalars ((6.0 * t500) + 1.0) (t572 + ((t568 * (s566 - t519)) * t513))
+      wrI contacts ((30 * i499) + 24) s566
+      t567 <- rdI scalars ((6 * (truncate t500)) + 2)
+      t568 <- rdI scalars ((6 * (truncate t500)) + 3)
+      t569 <- rdI vel (3 * (truncate t500))
+      t570 <- rdI vel ((3 * (truncate t500)) + 1)
+      t571 <- rdI vel ((3 * (truncate t500)) + 2)
+      t572 <- rdI scalars ((6 * (truncate t500)) + 1)
+      wrI vel (3 * (truncate t500)) (t569 + ((t567 * (s566 - t519)) * t510))
+      wrI vel ((3 * (truncate t500)) + 1) (t570 + ((t567 * (s566 - t519)) * t511))
+      wrI vel ((3 * (truncate t500)) + 2) (t571 + ((t567 * (s566 - t519)) * t512))
+      wrI scalars ((6 * (truncate t500)) + 1) (t572 + ((t568 * (s566 - t519)) * t513))
       if (t501 + 0.5) > 0 then do
-        t573 <- rd scalars ((6.0 * t501) + 2.0)
-        t574 <- rd scalars ((6.0 * t501) + 3.0)
-        t575 <- rd vel (3.0 * t501)
-        t576 <- rd vel ((3.0 * t501) + 1.0)
-        t577 <- rd vel ((3.0 * t501) + 2.0)
-        t578 <- rd scalars ((6.0 * t501) + 1.0)
-        wr vel (3.0 * t501) (t575 + ((t573 * (negate (s566 - t519))) * t514))
-        wr vel ((3.0 * t501) + 1.0) (t576 + ((t573 * (negate (s566 - t519))) * t515))
-        wr vel ((3.0 * t501) + 2.0) (t577 + ((t573 * (negate (s566 - t519))) * t516))
-        wr scalars ((6.0 * t501) + 1.0) (t578 + ((t574 * (negate (s566 - t519))) * t517))
+        t573 <- rdI scalars ((6 * (truncate t501)) + 2)
+        t574 <- rdI scalars ((6 * (truncate t501)) + 3)
+        t575 <- rdI vel (3 * (truncate t501))
+        t576 <- rdI vel ((3 * (truncate t501)) + 1)
+        t577 <- rdI vel ((3 * (truncate t501)) + 2)
+        t578 <- rdI scalars ((6 * (truncate t501)) + 1)
+        wrI vel (3 * (truncate t501)) (t575 + ((t573 * (negate (s566 - t519))) * t514))
+        wrI vel ((3 * (truncate t501)) + 1) (t576 + ((t573 * (negate (s566 - t519))) * t515))
+        wrI vel ((3 * (truncate t501)) + 2) (t577 + ((t573 * (negate (s566 - t519))) * t516))
+        wrI scalars ((6 * (truncate t501)) + 1) (t578 + ((t574 * (negate (s566 - t519))) * t517))
         pure ()
       else do
         pure ()
       pure ()
-    t579 <- rd mouse 0.0
+    t579 <- rdI mouse 0
     if t579 > 0 then do
-      t580 <- rd mouse 1.0
-      t581 <- rd scalars ((6.0 * t580) + 2.0)
+      t580 <- rdI mouse 1
+      t581 <- rdI scalars ((6 * (truncate t580)) + 2)
       if t581 > 0 then do
-        t582 <- rd scalars ((6.0 * t580) + 3.0)
-        t583 <- rd params 0.0
-        t584 <- rd pos (3.0 * t580)
-        t585 <- rd pos ((3.0 * t580) + 1.0)
-        t586 <- rd pos ((3.0 * t580) + 2.0)
-        t587 <- rd normal (3.0 * t580)
-        t588 <- rd normal ((3.0 * t580) + 1.0)
-        t589 <- rd normal ((3.0 * t580) + 2.0)
-        t590 <- rd axis (3.0 * t580)
-        t591 <- rd axis ((3.0 * t580) + 1.0)
-        t592 <- rd axis ((3.0 * t580) + 2.0)
+        t582 <- rdI scalars ((6 * (truncate t580)) + 3)
+        t583 <- rdI params 0
+        t584 <- rdI pos (3 * (truncate t580))
+        t585 <- rdI pos ((3 * (truncate t580)) + 1)
+        t586 <- rdI pos ((3 * (truncate t580)) + 2)
+        t587 <- rdI normal (3 * (truncate t580))
+        t588 <- rdI normal ((3 * (truncate t580)) + 1)
+        t589 <- rdI normal ((3 * (truncate t580)) + 2)
+        t590 <- rdI axis (3 * (truncate t580))
+        t591 <- rdI axis ((3 * (truncate t580)) + 1)
+        t592 <- rdI axis ((3 * (truncate t580)) + 2)
         let !s593 = ((t588 * t592) - (t589 * t591))
         let !s594 = ((t589 * t590) - (t587 * t592))
         let !s595 = ((t587 * t591) - (t588 * t590))
-        t596 <- rd scalars (6.0 * t580)
-        t597 <- rd scalars ((6.0 * t580) + 5.0)
-        t598 <- rd scalars ((6.0 * t580) + 2.0)
-        t599 <- rd scalars ((6.0 * t580) + 3.0)
-        t600 <- rd pos (3.0 * t580)
-        t601 <- rd pos ((3.0 * t580) + 1.0)
-        t602 <- rd pos ((3.0 * t580) + 2.0)
-        t603 <- rd normal (3.0 * t580)
-        t604 <- rd normal ((3.0 * t580) + 1.0)
-        t605 <- rd normal ((3.0 * t580) + 2.0)
-        t606 <- rd axis (3.0 * t580)
-        t607 <- rd axis ((3.0 * t580) + 1.0)
-        t608 <- rd axis ((3.0 * t580) + 2.0)
+        t596 <- rdI scalars (6 * (truncate t580))
+        t597 <- rdI scalars ((6 * (truncate t580)) + 5)
+        t598 <- rdI scalars ((6 * (truncate t580)) + 2)
+        t599 <- rdI scalars ((6 * (truncate t580)) + 3)
+        t600 <- rdI pos (3 * (truncate t580))
+        t601 <- rdI pos ((3 * (truncate t580)) + 1)
+        t602 <- rdI pos ((3 * (truncate t580)) + 2)
+        t603 <- rdI normal (3 * (truncate t580))
+        t604 <- rdI normal ((3 * (truncate t580)) + 1)
+        t605 <- rdI normal ((3 * (truncate t580)) + 2)
+        t606 <- rdI axis (3 * (truncate t580))
+        t607 <- rdI axis ((3 * (truncate t580)) + 1)
+        t608 <- rdI axis ((3 * (truncate t580)) + 2)
         let !s609 = ((t604 * t608) - (t605 * t607))
         let !s610 = ((t605 * t606) - (t603 * t608))
         let !s611 = ((t603 * t607) - (t604 * t606))
-        t612 <- rd scalars (6.0 * t580)
-        t613 <- rd scalars ((6.0 * t580) + 5.0)
-        t614 <- rd scalars ((6.0 * t580) + 2.0)
-        t615 <- rd scalars ((6.0 * t580) + 3.0)
-        t616 <- rd mouse 2.0
-        t617 <- rd mouse 3.0
+        t612 <- rdI scalars (6 * (truncate t580))
+        t613 <- rdI scalars ((6 * (truncate t580)) + 5)
+        t614 <- rdI scalars ((6 * (truncate t580)) + 2)
+        t615 <- rdI scalars ((6 * (truncate t580)) + 3)
+        t616 <- rdI mouse 2
+        t617 <- rdI mouse 3
         let !t618 = (t616 / 4.0)
         let !t619 = (if (abs t618) > 0 then 1.0 else 0.0)
         let !t620 = (t612 + t617)
@@ -1460,12 +1480,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s945 = ((t619 * (t927 * (t944 * t940))) + (t679 * s865))
         let !s946 = ((t619 * (t927 * (t944 * t941))) + (t679 * s866))
         let !s947 = ((t619 * (t927 * (t944 * t942))) + (t679 * s867))
-        t948 <- rd mouse 4.0
-        t949 <- rd mouse 5.0
-        t950 <- rd mouse 6.0
-        t951 <- rd mouse 7.0
-        t952 <- rd mouse 8.0
-        t953 <- rd mouse 9.0
+        t948 <- rdI mouse 4
+        t949 <- rdI mouse 5
+        t950 <- rdI mouse 6
+        t951 <- rdI mouse 7
+        t952 <- rdI mouse 8
+        t953 <- rdI mouse 9
         let !t954 = (recip t581)
         let !t955 = (6.283185307179586 * t951)
         let !s956 = (recip (t583 * ((((2.0 * t954) * t952) * t955) + (t583 * ((t954 * t955) * t955)))))
@@ -1476,11 +1496,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s961 = (s924 + (negate t948))
         let !s962 = (s925 + (negate t949))
         let !s963 = (s926 + (negate t950))
-        t964 <- rd mouse 10.0
-        t965 <- rd vel (3.0 * t580)
-        t966 <- rd vel ((3.0 * t580) + 1.0)
-        t967 <- rd vel ((3.0 * t580) + 2.0)
-        t968 <- rd scalars ((6.0 * t580) + 1.0)
+        t964 <- rdI mouse 10
+        t965 <- rdI vel (3 * (truncate t580))
+        t966 <- rdI vel ((3 * (truncate t580)) + 1)
+        t967 <- rdI vel ((3 * (truncate t580)) + 2)
+        t968 <- rdI scalars ((6 * (truncate t580)) + 1)
         let !t969 = (t953 * t583)
         let !t970 = (negate t969)
         let !t971 = (((((s959 * t592) - (s960 * t591)) * t587) + (((s960 * t590) - (s958 * t592)) * t588)) + (((s958 * t591) - (s959 * t590)) * t589))
@@ -1488,38 +1508,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t973 = (if (t972 - t969) > 0 then t969 else t972)
         let !t974 = (if (t970 - t973) > 0 then t970 else t973)
         let !s975 = (if (1.0 - (abs (t974 - t974))) > 0 then t974 else 0.0)
-        wr mouse 10.0 s975
-        t976 <- rd scalars ((6.0 * t580) + 2.0)
-        t977 <- rd scalars ((6.0 * t580) + 3.0)
-        t978 <- rd vel (3.0 * t580)
-        t979 <- rd vel ((3.0 * t580) + 1.0)
-        t980 <- rd vel ((3.0 * t580) + 2.0)
-        t981 <- rd scalars ((6.0 * t580) + 1.0)
-        wr vel (3.0 * t580) (t978 + ((t976 * (s975 - t964)) * t590))
-        wr vel ((3.0 * t580) + 1.0) (t979 + ((t976 * (s975 - t964)) * t591))
-        wr vel ((3.0 * t580) + 2.0) (t980 + ((t976 * (s975 - t964)) * t592))
-        wr scalars ((6.0 * t580) + 1.0) (t981 + ((t977 * (s975 - t964)) * t971))
-        t982 <- rd mouse 11.0
-        t983 <- rd vel (3.0 * t580)
-        t984 <- rd vel ((3.0 * t580) + 1.0)
-        t985 <- rd vel ((3.0 * t580) + 2.0)
-        t986 <- rd scalars ((6.0 * t580) + 1.0)
+        wrI mouse 10 s975
+        t976 <- rdI scalars ((6 * (truncate t580)) + 2)
+        t977 <- rdI scalars ((6 * (truncate t580)) + 3)
+        t978 <- rdI vel (3 * (truncate t580))
+        t979 <- rdI vel ((3 * (truncate t580)) + 1)
+        t980 <- rdI vel ((3 * (truncate t580)) + 2)
+        t981 <- rdI scalars ((6 * (truncate t580)) + 1)
+        wrI vel (3 * (truncate t580)) (t978 + ((t976 * (s975 - t964)) * t590))
+        wrI vel ((3 * (truncate t580)) + 1) (t979 + ((t976 * (s975 - t964)) * t591))
+        wrI vel ((3 * (truncate t580)) + 2) (t980 + ((t976 * (s975 - t964)) * t592))
+        wrI scalars ((6 * (truncate t580)) + 1) (t981 + ((t977 * (s975 - t964)) * t971))
+        t982 <- rdI mouse 11
+        t983 <- rdI vel (3 * (truncate t580))
+        t984 <- rdI vel ((3 * (truncate t580)) + 1)
+        t985 <- rdI vel ((3 * (truncate t580)) + 2)
+        t986 <- rdI scalars ((6 * (truncate t580)) + 1)
         let !t987 = (((((s959 * s595) - (s960 * s594)) * t587) + (((s960 * s593) - (s958 * s595)) * t588)) + (((s958 * s594) - (s959 * s593)) * t589))
         let !t988 = (t982 + ((negate ((((((s593 * t983) + (s594 * t984)) + (s595 * t985)) + (t987 * t986)) + (s957 * (((s961 * s593) + (s962 * s594)) + (s963 * s595)))) + (s956 * t982))) / (((t581 * (((s593 * s593) + (s594 * s594)) + (s595 * s595))) + ((t582 * t987) * t987)) + s956)))
         let !t989 = (if (t988 - t969) > 0 then t969 else t988)
         let !t990 = (if (t970 - t989) > 0 then t970 else t989)
         let !s991 = (if (1.0 - (abs (t990 - t990))) > 0 then t990 else 0.0)
-        wr mouse 11.0 s991
-        t992 <- rd scalars ((6.0 * t580) + 2.0)
-        t993 <- rd scalars ((6.0 * t580) + 3.0)
-        t994 <- rd vel (3.0 * t580)
-        t995 <- rd vel ((3.0 * t580) + 1.0)
-        t996 <- rd vel ((3.0 * t580) + 2.0)
-        t997 <- rd scalars ((6.0 * t580) + 1.0)
-        wr vel (3.0 * t580) (t994 + ((t992 * (s991 - t982)) * s593))
-        wr vel ((3.0 * t580) + 1.0) (t995 + ((t992 * (s991 - t982)) * s594))
-        wr vel ((3.0 * t580) + 2.0) (t996 + ((t992 * (s991 - t982)) * s595))
-        wr scalars ((6.0 * t580) + 1.0) (t997 + ((t993 * (s991 - t982)) * t987))
+        wrI mouse 11 s991
+        t992 <- rdI scalars ((6 * (truncate t580)) + 2)
+        t993 <- rdI scalars ((6 * (truncate t580)) + 3)
+        t994 <- rdI vel (3 * (truncate t580))
+        t995 <- rdI vel ((3 * (truncate t580)) + 1)
+        t996 <- rdI vel ((3 * (truncate t580)) + 2)
+        t997 <- rdI scalars ((6 * (truncate t580)) + 1)
+        wrI vel (3 * (truncate t580)) (t994 + ((t992 * (s991 - t982)) * s593))
+        wrI vel ((3 * (truncate t580)) + 1) (t995 + ((t992 * (s991 - t982)) * s594))
+        wrI vel ((3 * (truncate t580)) + 2) (t996 + ((t992 * (s991 - t982)) * s595))
+        wrI scalars ((6 * (truncate t580)) + 1) (t997 + ((t993 * (s991 - t982)) * t987))
         pure ()
       else do
         pure ()
@@ -1527,48 +1547,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t998 <- rd meta 0.0
-  loop 0.0 t998 $ \i999 -> do
-    wr bodyPrev ((2.0 * i999) + 1.0) 0.0
+  t998 <- rdI meta 0
+  loopI 0.0 t998 $ \i999 -> do
+    let !d999 = fromIntegral i999 :: Double
+    wrI bodyPrev ((2 * i999) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i1000 -> do
-    t1001 <- rd contacts ((30.0 * i1000) + 2.0)
-    wr prev (4.0 * i1000) t1001
-    t1002 <- rd contacts ((30.0 * i1000) + 3.0)
-    wr prev ((4.0 * i1000) + 1.0) t1002
-    t1003 <- rd contacts ((30.0 * i1000) + 24.0)
-    wr prev ((4.0 * i1000) + 2.0) t1003
-    t1004 <- rd contacts ((30.0 * i1000) + 25.0)
-    wr prev ((4.0 * i1000) + 3.0) t1004
-    t1005 <- rd bodyPrev ((2.0 * t1001) + 1.0)
+  loopI 0.0 t9 $ \i1000 -> do
+    let !d1000 = fromIntegral i1000 :: Double
+    t1001 <- rdI contacts ((30 * i1000) + 2)
+    wrI prev (4 * i1000) t1001
+    t1002 <- rdI contacts ((30 * i1000) + 3)
+    wrI prev ((4 * i1000) + 1) t1002
+    t1003 <- rdI contacts ((30 * i1000) + 24)
+    wrI prev ((4 * i1000) + 2) t1003
+    t1004 <- rdI contacts ((30 * i1000) + 25)
+    wrI prev ((4 * i1000) + 3) t1004
+    t1005 <- rdI bodyPrev ((2 * (truncate t1001)) + 1)
     if (0.5 - t1005) > 0 then do
-      wr bodyPrev (2.0 * t1001) i1000
+      wrI bodyPrev (2 * (truncate t1001)) d1000
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t1001) + 1.0) (t1005 + 1.0)
+    wrI bodyPrev ((2 * (truncate t1001)) + 1) (t1005 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t5 + (t1 * t8))
@@ -1717,58 +1740,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t162 = (t12 + (t1 * t13))
     let !t163 = (1.0 - (abs ((((((((((((((s107 - s107) + (s108 - s108)) + (s109 - s109)) + (s147 - s147)) + (s148 - s148)) + (s149 - s149)) + (s156 - s156)) + (s157 - s157)) + (s158 - s158)) + (s120 - s120)) + (s121 - s121)) + (s122 - s122)) + (t162 - t162)) + (s160 - s160))))
     if (if (t161 - t163) > 0 then t163 else t161) > 0 then do
-      wr pos (3.0 * i2) s107
-      wr pos ((3.0 * i2) + 1.0) s108
-      wr pos ((3.0 * i2) + 2.0) s109
-      wr vel (3.0 * i2) s147
-      wr vel ((3.0 * i2) + 1.0) s148
-      wr vel ((3.0 * i2) + 2.0) s149
-      wr axis (3.0 * i2) s156
-      wr axis ((3.0 * i2) + 1.0) s157
-      wr axis ((3.0 * i2) + 2.0) s158
-      wr normal (3.0 * i2) s120
-      wr normal ((3.0 * i2) + 1.0) s121
-      wr normal ((3.0 * i2) + 2.0) s122
-      wr scalars (6.0 * i2) t162
+      wrI pos (3 * i2) s107
+      wrI pos ((3 * i2) + 1) s108
+      wrI pos ((3 * i2) + 2) s109
+      wrI vel (3 * i2) s147
+      wrI vel ((3 * i2) + 1) s148
+      wrI vel ((3 * i2) + 2) s149
+      wrI axis (3 * i2) s156
+      wrI axis ((3 * i2) + 1) s157
+      wrI axis ((3 * i2) + 2) s158
+      wrI normal (3 * i2) s120
+      wrI normal ((3 * i2) + 1) s121
+      wrI normal ((3 * i2) + 2) s122
+      wrI scalars (6 * i2) t162
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t164 <- rd meta 1.0
-      wr meta 1.0 (t164 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t164 <- rdI meta 1
+      wrI meta 1 (t164 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1850,9 +1875,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s97 = ((t28 * t83) + (t71 * t8))
         let !s98 = ((t28 * t84) + (t71 * t9))
         let !s99 = ((t28 * t86) + (t71 * t10))
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s72 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s73 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s74 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s72 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s73 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s74 else t4)
         let !t100 = (s72 + (s27 * s94))
         let !t101 = (s74 + (s27 * s96))
         let !t102 = (sqrt ((t100 * t100) + (t101 * t101)))
@@ -1922,9 +1947,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = ((t28 * t152) + (t71 * s97))
         let !s167 = ((t28 * t153) + (t71 * s98))
         let !s168 = ((t28 * t155) + (t71 * s99))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s142 - s142) + (s143 - s143)) + (s144 - s144)))) > 0 then s142 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s142 - s142) + (s143 - s143)) + (s144 - s144)))) > 0 then s143 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s142 - s142) + (s143 - s143)) + (s144 - s144)))) > 0 then s144 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s142 - s142) + (s143 - s143)) + (s144 - s144)))) > 0 then s142 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s142 - s142) + (s143 - s143)) + (s144 - s144)))) > 0 then s143 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s142 - s142) + (s143 - s143)) + (s144 - s144)))) > 0 then s144 else t4)
         let !t169 = (s142 + (s27 * s163))
         let !t170 = (s144 + (s27 * s165))
         let !t171 = (sqrt ((t169 * t169) + (t170 * t170)))
@@ -1994,9 +2019,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s235 = ((t28 * t221) + (t71 * s166))
         let !s236 = ((t28 * t222) + (t71 * s167))
         let !s237 = ((t28 * t224) + (t71 * s168))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s211 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s212 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s213 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s211 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s212 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s211 - s211) + (s212 - s212)) + (s213 - s213)))) > 0 then s213 else t4)
         let !t238 = (s211 + (s27 * s232))
         let !t239 = (s213 + (s27 * s234))
         let !t240 = (sqrt ((t238 * t238) + (t239 * t239)))
@@ -2066,9 +2091,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s304 = ((t28 * t290) + (t71 * s235))
         let !s305 = ((t28 * t291) + (t71 * s236))
         let !s306 = ((t28 * t293) + (t71 * s237))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s280 - s280) + (s281 - s281)) + (s282 - s282)))) > 0 then s280 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s280 - s280) + (s281 - s281)) + (s282 - s282)))) > 0 then s281 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s280 - s280) + (s281 - s281)) + (s282 - s282)))) > 0 then s282 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s280 - s280) + (s281 - s281)) + (s282 - s282)))) > 0 then s280 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s280 - s280) + (s281 - s281)) + (s282 - s282)))) > 0 then s281 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s280 - s280) + (s281 - s281)) + (s282 - s282)))) > 0 then s282 else t4)
         pure ()
       else do
         let !t307 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2122,18 +2147,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s355 = (if t354 > 0 then t351 else t2)
         let !s356 = (if t354 > 0 then t352 else t3)
         let !s357 = (if t354 > 0 then t353 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s355
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s356
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s357
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s355 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s356 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s357 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s355 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s356 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s357 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s355 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s356 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s357 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s355
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s356
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s357
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s355 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s356 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s357 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s355 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s356 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s357 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s355 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s356 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s357 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,33 +28,34 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  t2 <- rd params 1.0
-  loop 0.0 t0 $ \i3 -> do
-    t4 <- rd scalars ((6.0 * i3) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  t2 <- rdI params 1
+  loopI 0.0 t0 $ \i3 -> do
+    let !d3 = fromIntegral i3 :: Double
+    t4 <- rdI scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rd pos (3.0 * i3)
-      t6 <- rd pos ((3.0 * i3) + 1.0)
-      t7 <- rd pos ((3.0 * i3) + 2.0)
-      t8 <- rd vel (3.0 * i3)
-      t9 <- rd vel ((3.0 * i3) + 1.0)
-      t10 <- rd vel ((3.0 * i3) + 2.0)
-      t11 <- rd normal (3.0 * i3)
-      t12 <- rd normal ((3.0 * i3) + 1.0)
-      t13 <- rd normal ((3.0 * i3) + 2.0)
+      t5 <- rdI pos (3 * i3)
+      t6 <- rdI pos ((3 * i3) + 1)
+      t7 <- rdI pos ((3 * i3) + 2)
+      t8 <- rdI vel (3 * i3)
+      t9 <- rdI vel ((3 * i3) + 1)
+      t10 <- rdI vel ((3 * i3) + 2)
+      t11 <- rdI normal (3 * i3)
+      t12 <- rdI normal ((3 * i3) + 1)
+      t13 <- rdI normal ((3 * i3) + 2)
       let !t14 = (t12 * (-0.6))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-0.6) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wr vel (3.0 * i3) t15
-        wr vel ((3.0 * i3) + 1.0) t16
-        wr vel ((3.0 * i3) + 2.0) t17
+        wrI vel (3 * i3) t15
+        wrI vel ((3 * i3) + 1) t16
+        wrI vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rd meta 1.0
-        wr meta 1.0 (t18 + 1.0)
+        t18 <- rdI meta 1
+        wrI meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -64,11 +65,12 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wr meta 2.0 0.0
-  t0 <- rd meta 0.0
+  wrI meta 2 0.0
+  t0 <- rdI meta 0
   v1 <- newR 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd scalars ((6.0 * i2) + 5.0)
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -78,81 +80,90 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wr meta 4.0 s10
-  wr meta 5.0 s7
-  loop 0.0 s10 $ \i11 -> do
-    wr grid i11 0.0
+  wrI meta 4 s10
+  wrI meta 5 s7
+  loopI 0.0 s10 $ \i11 -> do
+    let !d11 = fromIntegral i11 :: Double
+    wrI grid i11 0.0
     pure ()
-  loop 0.0 t0 $ \i12 -> do
-    t13 <- rd pos (3.0 * i12)
-    t14 <- rd pos ((3.0 * i12) + 1.0)
-    t15 <- rd pos ((3.0 * i12) + 2.0)
-    wr cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+  loopI 0.0 t0 $ \i12 -> do
+    let !d12 = fromIntegral i12 :: Double
+    t13 <- rdI pos (3 * i12)
+    t14 <- rdI pos ((3 * i12) + 1)
+    t15 <- rdI pos ((3 * i12) + 2)
+    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rd grid s17
-    wr grid s17 (t18 + 1.0)
+    t18 <- rdI grid (truncate s17)
+    wrI grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
-  loop 0.0 s10 $ \i20 -> do
-    t21 <- rd grid i20
+  loopI 0.0 s10 $ \i20 -> do
+    let !d20 = fromIntegral i20 :: Double
+    t21 <- rdI grid i20
     t22 <- getR v19
-    wr grid (s10 + i20) t22
-    wr grid i20 t22
+    wrI grid ((truncate s10) + i20) t22
+    wrI grid i20 t22
     setR v19 (t22 + t21)
     pure ()
-  loop 0.0 t0 $ \i23 -> do
-    t24 <- rd pos (3.0 * i23)
-    t25 <- rd pos ((3.0 * i23) + 1.0)
-    t26 <- rd pos ((3.0 * i23) + 2.0)
+  loopI 0.0 t0 $ \i23 -> do
+    let !d23 = fromIntegral i23 :: Double
+    t24 <- rdI pos (3 * i23)
+    t25 <- rdI pos ((3 * i23) + 1)
+    t26 <- rdI pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rd grid s28
-    wr items t29 i23
-    wr grid s28 (t29 + 1.0)
+    t29 <- rdI grid (truncate s28)
+    wrI items (truncate t29) d23
+    wrI grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rd meta 0.0
-  loop 0.0 t30 $ \i31 -> do
-    t32 <- rd pos (3.0 * i31)
-    t33 <- rd pos ((3.0 * i31) + 1.0)
-    t34 <- rd pos ((3.0 * i31) + 2.0)
-    t35 <- rd scalars ((6.0 * i31) + 5.0)
-    t36 <- rd scalars ((6.0 * i31) + 2.0)
-    t37 <- rd meta 5.0
-    t38 <- rd meta 4.0
-    t39 <- rd meta 5.0
+  t30 <- rdI meta 0
+  loopI 0.0 t30 $ \i31 -> do
+    let !d31 = fromIntegral i31 :: Double
+    t32 <- rdI pos (3 * i31)
+    t33 <- rdI pos ((3 * i31) + 1)
+    t34 <- rdI pos ((3 * i31) + 2)
+    t35 <- rdI scalars ((6 * i31) + 5)
+    t36 <- rdI scalars ((6 * i31) + 2)
+    t37 <- rdI meta 5
+    t38 <- rdI meta 4
+    t39 <- rdI meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
-    loop 0.0 3.0 $ \i43 -> do
-      loop 0.0 3.0 $ \i44 -> do
-        loop 0.0 3.0 $ \i45 -> do
-          let !s46 = ((s40 + i43) - 1.0)
-          let !s47 = ((s41 + i44) - 1.0)
-          let !s48 = ((s42 + i45) - 1.0)
+    loopI 0.0 3.0 $ \i43 -> do
+      let !d43 = fromIntegral i43 :: Double
+      loopI 0.0 3.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        loopI 0.0 3.0 $ \i45 -> do
+          let !d45 = fromIntegral i45 :: Double
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = ((s41 + d44) - 1.0)
+          let !s48 = ((s42 + d45) - 1.0)
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rd grid s51
-          t53 <- rd grid (t38 + s51)
-          loop t53 t52 $ \i54 -> do
-            t55 <- rd items i54
-            t56 <- rd cellOf t55
+          t52 <- rdI grid (truncate s51)
+          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          loopI t53 t52 $ \i54 -> do
+            let !d54 = fromIntegral i54 :: Double
+            t55 <- rdI items i54
+            t56 <- rdI cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - i31) > 0 then do
-                t57 <- rd pos (3.0 * t55)
-                t58 <- rd pos ((3.0 * t55) + 1.0)
-                t59 <- rd pos ((3.0 * t55) + 2.0)
-                t60 <- rd scalars ((6.0 * t55) + 5.0)
-                t61 <- rd scalars ((6.0 * t55) + 2.0)
+              if (t55 - d31) > 0 then do
+                t57 <- rdI pos (3 * (truncate t55))
+                t58 <- rdI pos ((3 * (truncate t55)) + 1)
+                t59 <- rdI pos ((3 * (truncate t55)) + 2)
+                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 ((t55 + 1.0) * 64.0) i31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse i31 (((t55 + 1.0) * 64.0) + 2.0) t55 i31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
+                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
                   pure ()
                 else do
                   pure ()
@@ -166,15 +177,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rd verts (3.0 * (97.0 * i31))
-    t68 <- rd verts ((3.0 * (97.0 * i31)) + 1.0)
-    t69 <- rd verts ((3.0 * (97.0 * i31)) + 2.0)
+    t67 <- rdI verts (3 * (97 * i31))
+    t68 <- rdI verts ((3 * (97 * i31)) + 1)
+    t69 <- rdI verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
-    loop 0.0 24.0 $ \i71 -> do
-      t72 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0))
-      t73 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 1.0)
-      t74 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i71 * 4.0)) + 3.0)) + 2.0)
-      t75 <- rd radii ((24.0 * i31) + i71)
+    loopI 0.0 24.0 $ \i71 -> do
+      let !d71 = fromIntegral i71 :: Double
+      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      t75 <- rdI radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -191,25 +203,29 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v86 <- newR 0.0
       v87 <- newR 0.0
       v88 <- newR 0.0
-      loop 0.0 24.0 $ \i89 -> do
-        t90 <- rd radii ((24.0 * i31) + i89)
-        loop 6.0 12.0 $ \i91 -> do
-          let !t92 = (i89 + i91)
-          t93 <- rd radii ((24.0 * i31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))
-          loop 1.0 4.0 $ \i94 -> do
-            t95 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0)))
-            t96 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 1.0)
-            t97 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + (i94 - 1.0))) + 2.0)
-            t98 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94))
-            t99 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 1.0)
-            t100 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + (i89 * 4.0)) + i94)) + 2.0)
-            loop 1.0 4.0 $ \i101 -> do
-              t102 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0)))
-              t103 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 1.0)
-              t104 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (i101 - 1.0))) + 2.0)
-              t105 <- rd verts (3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101))
-              t106 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 1.0)
-              t107 <- rd verts ((3.0 * ((((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + i101)) + 2.0)
+      loopI 0.0 24.0 $ \i89 -> do
+        let !d89 = fromIntegral i89 :: Double
+        t90 <- rdI radii ((24 * i31) + i89)
+        loopI 6.0 12.0 $ \i91 -> do
+          let !d91 = fromIntegral i91 :: Double
+          let !t92 = (d89 + d91)
+          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          loopI 1.0 4.0 $ \i94 -> do
+            let !d94 = fromIntegral i94 :: Double
+            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            loopI 1.0 4.0 $ \i101 -> do
+              let !d101 = fromIntegral i101 :: Double
+              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -242,19 +258,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t137 = (if (negate t130) > 0 then (if (negate t133) > 0 then 0.0 else t133) else (if t134 > 0 then (if (negate t136) > 0 then 0.0 else t136) else t129))
               let !t138 = (if t134 > 0 then 1.0 else t130)
               let !t139 = (if (negate t138) > 0 then 0.0 else t138)
-              let !t140 = ((0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0)))) - t108)
+              let !t140 = ((0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0)))) - t108)
               let !t141 = ((t95 + (t137 * t116)) + (negate (t102 + (t139 * t110))))
               let !t142 = ((t96 + (t137 * t117)) + (negate (t103 + (t139 * t112))))
               let !t143 = ((t97 + (t137 * t118)) + (negate (t104 + (t139 * t114))))
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
-                setR v82 (0.5 * ((t90 - ((t90 * (i94 + t137)) / 4.0)) + (t93 - ((t93 * (i101 + t139)) / 4.0))))
-                t145 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0)))
-                t146 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 1.0)
-                t147 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + (i89 * 4.0))) + 2.0)
-                t148 <- rd verts (3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))
-                t149 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)
-                t150 <- rd verts ((3.0 * (((97.0 * i31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)
+                setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
+                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -305,89 +321,89 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s184 = (t183 * t179)
         let !s185 = (t183 * t180)
         let !s186 = (t183 * t181)
-        t187 <- rd meta 2.0
-        t188 <- rd meta 3.0
+        t187 <- rdI meta 2
+        t188 <- rdI meta 3
         if (((8.0 * (if (1.0 - t188) > 0 then 1.0 else t188)) - t187) - 0.5) > 0 then do
-          wr meta 2.0 (t187 + 1.0)
-          t189 <- rd pos (3.0 * i31)
-          t190 <- rd pos ((3.0 * i31) + 1.0)
-          t191 <- rd pos ((3.0 * i31) + 2.0)
-          t192 <- rd normal (3.0 * i31)
-          t193 <- rd normal ((3.0 * i31) + 1.0)
-          t194 <- rd normal ((3.0 * i31) + 2.0)
-          t195 <- rd axis (3.0 * i31)
-          t196 <- rd axis ((3.0 * i31) + 1.0)
-          t197 <- rd axis ((3.0 * i31) + 2.0)
+          wrI meta 2 (t187 + 1.0)
+          t189 <- rdI pos (3 * i31)
+          t190 <- rdI pos ((3 * i31) + 1)
+          t191 <- rdI pos ((3 * i31) + 2)
+          t192 <- rdI normal (3 * i31)
+          t193 <- rdI normal ((3 * i31) + 1)
+          t194 <- rdI normal ((3 * i31) + 2)
+          t195 <- rdI axis (3 * i31)
+          t196 <- rdI axis ((3 * i31) + 1)
+          t197 <- rdI axis ((3 * i31) + 2)
           let !s198 = ((t193 * t197) - (t194 * t196))
           let !s199 = ((t194 * t195) - (t192 * t197))
           let !s200 = ((t192 * t196) - (t193 * t195))
-          t201 <- rd scalars (6.0 * i31)
-          t202 <- rd scalars ((6.0 * i31) + 5.0)
-          t203 <- rd scalars ((6.0 * i31) + 2.0)
-          t204 <- rd scalars ((6.0 * i31) + 3.0)
-          wr contacts (30.0 * t187) i31
-          wr contacts ((30.0 * t187) + 1.0) (-1.0)
-          wr contacts ((30.0 * t187) + 2.0) i31
-          wr contacts ((30.0 * t187) + 3.0) 12.0
-          wr contacts ((30.0 * t187) + 4.0) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
-          wr contacts (((30.0 * t187) + 4.0) + 1.0) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
-          wr contacts (((30.0 * t187) + 4.0) + 2.0) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
-          wr contacts ((30.0 * t187) + 7.0) 0.0
-          wr contacts ((30.0 * t187) + 12.0) 0.0
-          wr contacts (((30.0 * t187) + 12.0) + 1.0) 0.0
-          wr contacts (((30.0 * t187) + 12.0) + 2.0) 0.0
-          wr contacts ((30.0 * t187) + 15.0) 0.0
-          wr contacts ((30.0 * t187) + 20.0) t162
-          wr contacts ((30.0 * t187) + 26.0) 0.6
-          wr contacts ((30.0 * t187) + 27.0) t163
-          wr contacts (((30.0 * t187) + 27.0) + 1.0) t164
-          wr contacts (((30.0 * t187) + 27.0) + 2.0) t165
+          t201 <- rdI scalars (6 * i31)
+          t202 <- rdI scalars ((6 * i31) + 5)
+          t203 <- rdI scalars ((6 * i31) + 2)
+          t204 <- rdI scalars ((6 * i31) + 3)
+          wrI contacts (30 * (truncate t187)) d31
+          wrI contacts ((30 * (truncate t187)) + 1) (-1.0)
+          wrI contacts ((30 * (truncate t187)) + 2) d31
+          wrI contacts ((30 * (truncate t187)) + 3) 12.0
+          wrI contacts ((30 * (truncate t187)) + 4) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
+          wrI contacts (((30 * (truncate t187)) + 4) + 1) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
+          wrI contacts (((30 * (truncate t187)) + 4) + 2) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
+          wrI contacts ((30 * (truncate t187)) + 7) 0.0
+          wrI contacts ((30 * (truncate t187)) + 12) 0.0
+          wrI contacts (((30 * (truncate t187)) + 12) + 1) 0.0
+          wrI contacts (((30 * (truncate t187)) + 12) + 2) 0.0
+          wrI contacts ((30 * (truncate t187)) + 15) 0.0
+          wrI contacts ((30 * (truncate t187)) + 20) t162
+          wrI contacts ((30 * (truncate t187)) + 26) 0.6
+          wrI contacts ((30 * (truncate t187)) + 27) t163
+          wrI contacts (((30 * (truncate t187)) + 27) + 1) t164
+          wrI contacts (((30 * (truncate t187)) + 27) + 2) t165
           if (-0.5) > 0 then do
-            t205 <- rd pos (-3.0)
-            t206 <- rd pos (-2.0)
-            t207 <- rd pos (-1.0)
-            t208 <- rd normal (-3.0)
-            t209 <- rd normal (-2.0)
-            t210 <- rd normal (-1.0)
-            t211 <- rd axis (-3.0)
-            t212 <- rd axis (-2.0)
-            t213 <- rd axis (-1.0)
+            t205 <- rdI pos (-3)
+            t206 <- rdI pos (-2)
+            t207 <- rdI pos (-1)
+            t208 <- rdI normal (-3)
+            t209 <- rdI normal (-2)
+            t210 <- rdI normal (-1)
+            t211 <- rdI axis (-3)
+            t212 <- rdI axis (-2)
+            t213 <- rdI axis (-1)
             let !s214 = ((t209 * t213) - (t210 * t212))
             let !s215 = ((t210 * t211) - (t208 * t213))
             let !s216 = ((t208 * t212) - (t209 * t211))
-            t217 <- rd scalars (-6.0)
-            t218 <- rd scalars (-1.0)
-            t219 <- rd scalars (-4.0)
-            t220 <- rd scalars (-3.0)
-            wr contacts ((30.0 * t187) + 8.0) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
-            wr contacts (((30.0 * t187) + 8.0) + 1.0) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
-            wr contacts (((30.0 * t187) + 8.0) + 2.0) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
+            t217 <- rdI scalars (-6)
+            t218 <- rdI scalars (-1)
+            t219 <- rdI scalars (-4)
+            t220 <- rdI scalars (-3)
+            wrI contacts ((30 * (truncate t187)) + 8) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
+            wrI contacts (((30 * (truncate t187)) + 8) + 1) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
+            wrI contacts (((30 * (truncate t187)) + 8) + 2) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
             let !t221 = (t164 + (negate t206))
             let !t222 = (t165 + (negate t207))
             let !t223 = (t163 + (negate t205))
-            wr contacts ((30.0 * t187) + 11.0) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
+            wrI contacts ((30 * (truncate t187)) + 11) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
             let !t224 = ((t193 * s186) - (t194 * s185))
-            wr contacts ((30.0 * t187) + 16.0) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
+            wrI contacts ((30 * (truncate t187)) + 16) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
             let !t225 = ((t194 * s184) - (t192 * s186))
-            wr contacts (((30.0 * t187) + 16.0) + 1.0) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
+            wrI contacts (((30 * (truncate t187)) + 16) + 1) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
             let !t226 = ((t192 * s185) - (t193 * s184))
-            wr contacts (((30.0 * t187) + 16.0) + 2.0) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
-            wr contacts ((30.0 * t187) + 19.0) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
+            wrI contacts (((30 * (truncate t187)) + 16) + 2) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
+            wrI contacts ((30 * (truncate t187)) + 19) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
             pure ()
           else do
-            wr contacts ((30.0 * t187) + 8.0) 0.0
-            wr contacts (((30.0 * t187) + 8.0) + 1.0) 0.0
-            wr contacts (((30.0 * t187) + 8.0) + 2.0) 0.0
-            wr contacts ((30.0 * t187) + 11.0) 0.0
-            wr contacts ((30.0 * t187) + 16.0) 0.0
-            wr contacts (((30.0 * t187) + 16.0) + 1.0) 0.0
-            wr contacts (((30.0 * t187) + 16.0) + 2.0) 0.0
-            wr contacts ((30.0 * t187) + 19.0) 0.0
+            wrI contacts ((30 * (truncate t187)) + 8) 0.0
+            wrI contacts (((30 * (truncate t187)) + 8) + 1) 0.0
+            wrI contacts (((30 * (truncate t187)) + 8) + 2) 0.0
+            wrI contacts ((30 * (truncate t187)) + 11) 0.0
+            wrI contacts ((30 * (truncate t187)) + 16) 0.0
+            wrI contacts (((30 * (truncate t187)) + 16) + 1) 0.0
+            wrI contacts (((30 * (truncate t187)) + 16) + 2) 0.0
+            wrI contacts ((30 * (truncate t187)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t227 <- rd meta 6.0
-          wr meta 6.0 (t227 + 1.0)
+          t227 <- rdI meta 6
+          wrI meta 6 (t227 + 1.0)
           pure ()
         pure ()
       else do
@@ -400,43 +416,44 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd params 0.0
-  t1 <- rd params 2.0
-  t2 <- rd params 3.0
-  t3 <- rd params 4.0
-  t4 <- rd params 5.0
-  t5 <- rd params 6.0
-  t6 <- rd params 7.0
-  t7 <- rd params 8.0
-  t8 <- rd params 9.0
-  t9 <- rd meta 2.0
-  loop 0.0 t9 $ \i10 -> do
-    t11 <- rd contacts (30.0 * i10)
-    t12 <- rd contacts ((30.0 * i10) + 1.0)
-    t13 <- rd contacts ((30.0 * i10) + 2.0)
-    t14 <- rd contacts ((30.0 * i10) + 3.0)
-    t15 <- rd contacts ((30.0 * i10) + 4.0)
-    t16 <- rd contacts (((30.0 * i10) + 4.0) + 1.0)
-    t17 <- rd contacts (((30.0 * i10) + 4.0) + 2.0)
-    t18 <- rd contacts ((30.0 * i10) + 7.0)
-    t19 <- rd contacts ((30.0 * i10) + 8.0)
-    t20 <- rd contacts (((30.0 * i10) + 8.0) + 1.0)
-    t21 <- rd contacts (((30.0 * i10) + 8.0) + 2.0)
-    t22 <- rd contacts ((30.0 * i10) + 11.0)
-    t23 <- rd contacts ((30.0 * i10) + 12.0)
-    t24 <- rd contacts (((30.0 * i10) + 12.0) + 1.0)
-    t25 <- rd contacts (((30.0 * i10) + 12.0) + 2.0)
-    t26 <- rd contacts ((30.0 * i10) + 15.0)
-    t27 <- rd contacts ((30.0 * i10) + 16.0)
-    t28 <- rd contacts (((30.0 * i10) + 16.0) + 1.0)
-    t29 <- rd contacts (((30.0 * i10) + 16.0) + 2.0)
-    t30 <- rd contacts ((30.0 * i10) + 19.0)
-    t31 <- rd scalars ((6.0 * t11) + 2.0)
-    t32 <- rd scalars ((6.0 * t11) + 3.0)
+  t0 <- rdI params 0
+  t1 <- rdI params 2
+  t2 <- rdI params 3
+  t3 <- rdI params 4
+  t4 <- rdI params 5
+  t5 <- rdI params 6
+  t6 <- rdI params 7
+  t7 <- rdI params 8
+  t8 <- rdI params 9
+  t9 <- rdI meta 2
+  loopI 0.0 t9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    t11 <- rdI contacts (30 * i10)
+    t12 <- rdI contacts ((30 * i10) + 1)
+    t13 <- rdI contacts ((30 * i10) + 2)
+    t14 <- rdI contacts ((30 * i10) + 3)
+    t15 <- rdI contacts ((30 * i10) + 4)
+    t16 <- rdI contacts (((30 * i10) + 4) + 1)
+    t17 <- rdI contacts (((30 * i10) + 4) + 2)
+    t18 <- rdI contacts ((30 * i10) + 7)
+    t19 <- rdI contacts ((30 * i10) + 8)
+    t20 <- rdI contacts (((30 * i10) + 8) + 1)
+    t21 <- rdI contacts (((30 * i10) + 8) + 2)
+    t22 <- rdI contacts ((30 * i10) + 11)
+    t23 <- rdI contacts ((30 * i10) + 12)
+    t24 <- rdI contacts (((30 * i10) + 12) + 1)
+    t25 <- rdI contacts (((30 * i10) + 12) + 2)
+    t26 <- rdI contacts ((30 * i10) + 15)
+    t27 <- rdI contacts ((30 * i10) + 16)
+    t28 <- rdI contacts (((30 * i10) + 16) + 1)
+    t29 <- rdI contacts (((30 * i10) + 16) + 2)
+    t30 <- rdI contacts ((30 * i10) + 19)
+    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rd scalars ((6.0 * t12) + 2.0)
-      t35 <- rd scalars ((6.0 * t12) + 3.0)
+      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -444,12 +461,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rd scalars ((6.0 * t11) + 2.0)
-    t40 <- rd scalars ((6.0 * t11) + 3.0)
+    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rd scalars ((6.0 * t12) + 2.0)
-      t43 <- rd scalars ((6.0 * t12) + 3.0)
+      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -457,20 +474,20 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wr contacts ((30.0 * i10) + 21.0) s38
-    wr contacts ((30.0 * i10) + 22.0) s46
-    t47 <- rd contacts ((30.0 * i10) + 20.0)
-    t48 <- rd contacts ((30.0 * i10) + 26.0)
-    t49 <- rd vel (3.0 * t11)
-    t50 <- rd vel ((3.0 * t11) + 1.0)
-    t51 <- rd vel ((3.0 * t11) + 2.0)
-    t52 <- rd scalars ((6.0 * t11) + 1.0)
+    wrI contacts ((30 * i10) + 21) s38
+    wrI contacts ((30 * i10) + 22) s46
+    t47 <- rdI contacts ((30 * i10) + 20)
+    t48 <- rdI contacts ((30 * i10) + 26)
+    t49 <- rdI vel (3 * (truncate t11))
+    t50 <- rdI vel ((3 * (truncate t11)) + 1)
+    t51 <- rdI vel ((3 * (truncate t11)) + 2)
+    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rd vel (3.0 * t12)
-      t55 <- rd vel ((3.0 * t12) + 1.0)
-      t56 <- rd vel ((3.0 * t12) + 2.0)
-      t57 <- rd scalars ((6.0 * t12) + 1.0)
+      t54 <- rdI vel (3 * (truncate t12))
+      t55 <- rdI vel ((3 * (truncate t12)) + 1)
+      t56 <- rdI vel ((3 * (truncate t12)) + 2)
+      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -481,18 +498,19 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wr contacts ((30.0 * i10) + 23.0) (if (t62 - t63) > 0 then t62 else t63)
+    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rd bodyPrev (2.0 * t13)
-    t67 <- rd bodyPrev ((2.0 * t13) + 1.0)
+    t66 <- rdI bodyPrev (2 * (truncate t13))
+    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
-    loop t66 n68 $ \i69 -> do
-      t70 <- rd prev ((4.0 * i69) + 1.0)
+    loopI t66 n68 $ \i69 -> do
+      let !d69 = fromIntegral i69 :: Double
+      t70 <- rdI prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rd prev ((4.0 * i69) + 2.0)
+        t71 <- rdI prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rd prev ((4.0 * i69) + 3.0)
+        t72 <- rdI prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -500,98 +518,98 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wr contacts ((30.0 * i10) + 24.0) (t7 * t73)
-    wr contacts ((30.0 * i10) + 25.0) (t7 * t74)
-    t75 <- rd scalars ((6.0 * t11) + 2.0)
-    t76 <- rd scalars ((6.0 * t11) + 3.0)
-    t77 <- rd vel (3.0 * t11)
-    t78 <- rd vel ((3.0 * t11) + 1.0)
-    t79 <- rd vel ((3.0 * t11) + 2.0)
-    t80 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t77 + ((t75 * (t7 * t73)) * t15))
-    wr vel ((3.0 * t11) + 1.0) (t78 + ((t75 * (t7 * t73)) * t16))
-    wr vel ((3.0 * t11) + 2.0) (t79 + ((t75 * (t7 * t73)) * t17))
-    wr scalars ((6.0 * t11) + 1.0) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrI contacts ((30 * i10) + 24) (t7 * t73)
+    wrI contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdI vel (3 * (truncate t11))
+    t78 <- rdI vel ((3 * (truncate t11)) + 1)
+    t79 <- rdI vel ((3 * (truncate t11)) + 2)
+    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rd scalars ((6.0 * t12) + 2.0)
-      t82 <- rd scalars ((6.0 * t12) + 3.0)
-      t83 <- rd vel (3.0 * t12)
-      t84 <- rd vel ((3.0 * t12) + 1.0)
-      t85 <- rd vel ((3.0 * t12) + 2.0)
-      t86 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wr vel ((3.0 * t12) + 1.0) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wr vel ((3.0 * t12) + 2.0) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wr scalars ((6.0 * t12) + 1.0) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t83 <- rdI vel (3 * (truncate t12))
+      t84 <- rdI vel ((3 * (truncate t12)) + 1)
+      t85 <- rdI vel ((3 * (truncate t12)) + 2)
+      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rd scalars ((6.0 * t11) + 2.0)
-    t88 <- rd scalars ((6.0 * t11) + 3.0)
-    t89 <- rd vel (3.0 * t11)
-    t90 <- rd vel ((3.0 * t11) + 1.0)
-    t91 <- rd vel ((3.0 * t11) + 2.0)
-    t92 <- rd scalars ((6.0 * t11) + 1.0)
-    wr vel (3.0 * t11) (t89 + ((t87 * (t7 * t74)) * t23))
-    wr vel ((3.0 * t11) + 1.0) (t90 + ((t87 * (t7 * t74)) * t24))
-    wr vel ((3.0 * t11) + 2.0) (t91 + ((t87 * (t7 * t74)) * t25))
-    wr scalars ((6.0 * t11) + 1.0) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdI vel (3 * (truncate t11))
+    t90 <- rdI vel ((3 * (truncate t11)) + 1)
+    t91 <- rdI vel ((3 * (truncate t11)) + 2)
+    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rd scalars ((6.0 * t12) + 2.0)
-      t94 <- rd scalars ((6.0 * t12) + 3.0)
-      t95 <- rd vel (3.0 * t12)
-      t96 <- rd vel ((3.0 * t12) + 1.0)
-      t97 <- rd vel ((3.0 * t12) + 2.0)
-      t98 <- rd scalars ((6.0 * t12) + 1.0)
-      wr vel (3.0 * t12) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wr vel ((3.0 * t12) + 1.0) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wr vel ((3.0 * t12) + 2.0) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wr scalars ((6.0 * t12) + 1.0) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
+      t95 <- rdI vel (3 * (truncate t12))
+      t96 <- rdI vel ((3 * (truncate t12)) + 1)
+      t97 <- rdI vel ((3 * (truncate t12)) + 2)
+      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
+      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rd mouse 0.0
+  t99 <- rdI mouse 0
   if t99 > 0 then do
-    t100 <- rd mouse 1.0
-    t101 <- rd scalars ((6.0 * t100) + 2.0)
+    t100 <- rdI mouse 1
+    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rd scalars ((6.0 * t100) + 3.0)
-      t103 <- rd params 0.0
-      t104 <- rd pos (3.0 * t100)
-      t105 <- rd pos ((3.0 * t100) + 1.0)
-      t106 <- rd pos ((3.0 * t100) + 2.0)
-      t107 <- rd normal (3.0 * t100)
-      t108 <- rd normal ((3.0 * t100) + 1.0)
-      t109 <- rd normal ((3.0 * t100) + 2.0)
-      t110 <- rd axis (3.0 * t100)
-      t111 <- rd axis ((3.0 * t100) + 1.0)
-      t112 <- rd axis ((3.0 * t100) + 2.0)
+      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdI params 0
+      t104 <- rdI pos (3 * (truncate t100))
+      t105 <- rdI pos ((3 * (truncate t100)) + 1)
+      t106 <- rdI pos ((3 * (truncate t100)) + 2)
+      t107 <- rdI normal (3 * (truncate t100))
+      t108 <- rdI normal ((3 * (truncate t100)) + 1)
+      t109 <- rdI normal ((3 * (truncate t100)) + 2)
+      t110 <- rdI axis (3 * (truncate t100))
+      t111 <- rdI axis ((3 * (truncate t100)) + 1)
+      t112 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rd scalars (6.0 * t100)
-      t117 <- rd scalars ((6.0 * t100) + 5.0)
-      t118 <- rd scalars ((6.0 * t100) + 2.0)
-      t119 <- rd scalars ((6.0 * t100) + 3.0)
-      t120 <- rd pos (3.0 * t100)
-      t121 <- rd pos ((3.0 * t100) + 1.0)
-      t122 <- rd pos ((3.0 * t100) + 2.0)
-      t123 <- rd normal (3.0 * t100)
-      t124 <- rd normal ((3.0 * t100) + 1.0)
-      t125 <- rd normal ((3.0 * t100) + 2.0)
-      t126 <- rd axis (3.0 * t100)
-      t127 <- rd axis ((3.0 * t100) + 1.0)
-      t128 <- rd axis ((3.0 * t100) + 2.0)
+      t116 <- rdI scalars (6 * (truncate t100))
+      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdI pos (3 * (truncate t100))
+      t121 <- rdI pos ((3 * (truncate t100)) + 1)
+      t122 <- rdI pos ((3 * (truncate t100)) + 2)
+      t123 <- rdI normal (3 * (truncate t100))
+      t124 <- rdI normal ((3 * (truncate t100)) + 1)
+      t125 <- rdI normal ((3 * (truncate t100)) + 2)
+      t126 <- rdI axis (3 * (truncate t100))
+      t127 <- rdI axis ((3 * (truncate t100)) + 1)
+      t128 <- rdI axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rd scalars (6.0 * t100)
-      t133 <- rd scalars ((6.0 * t100) + 5.0)
-      t134 <- rd scalars ((6.0 * t100) + 2.0)
-      t135 <- rd scalars ((6.0 * t100) + 3.0)
-      t136 <- rd mouse 2.0
-      t137 <- rd mouse 3.0
+      t132 <- rdI scalars (6 * (truncate t100))
+      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t136 <- rdI mouse 2
+      t137 <- rdI mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -854,12 +872,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s397 = ((t139 * (t379 * (t396 * t392))) + (t182 * s334))
       let !s398 = ((t139 * (t379 * (t396 * t393))) + (t182 * s335))
       let !s399 = ((t139 * (t379 * (t396 * t394))) + (t182 * s336))
-      t400 <- rd mouse 4.0
-      t401 <- rd mouse 5.0
-      t402 <- rd mouse 6.0
-      t403 <- rd mouse 7.0
-      t404 <- rd mouse 8.0
-      t405 <- rd mouse 9.0
+      t400 <- rdI mouse 4
+      t401 <- rdI mouse 5
+      t402 <- rdI mouse 6
+      t403 <- rdI mouse 7
+      t404 <- rdI mouse 8
+      t405 <- rdI mouse 9
       let !t406 = (recip t101)
       let !t407 = (6.283185307179586 * t403)
       let !s408 = (recip (t103 * ((((2.0 * t406) * t404) * t407) + (t103 * ((t406 * t407) * t407)))))
@@ -870,68 +888,70 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s413 = (s376 + (negate t400))
       let !s414 = (s377 + (negate t401))
       let !s415 = (s378 + (negate t402))
-      t416 <- rd mouse 10.0
-      t417 <- rd scalars ((6.0 * t100) + 2.0)
-      t418 <- rd scalars ((6.0 * t100) + 3.0)
-      t419 <- rd vel (3.0 * t100)
-      t420 <- rd vel ((3.0 * t100) + 1.0)
-      t421 <- rd vel ((3.0 * t100) + 2.0)
-      t422 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t419 + ((t417 * t416) * t110))
-      wr vel ((3.0 * t100) + 1.0) (t420 + ((t417 * t416) * t111))
-      wr vel ((3.0 * t100) + 2.0) (t421 + ((t417 * t416) * t112))
-      wr scalars ((6.0 * t100) + 1.0) (t422 + ((t418 * t416) * (((((s411 * t112) - (s412 * t111)) * t107) + (((s412 * t110) - (s410 * t112)) * t108)) + (((s410 * t111) - (s411 * t110)) * t109))))
-      t423 <- rd mouse 11.0
-      t424 <- rd scalars ((6.0 * t100) + 2.0)
-      t425 <- rd scalars ((6.0 * t100) + 3.0)
-      t426 <- rd vel (3.0 * t100)
-      t427 <- rd vel ((3.0 * t100) + 1.0)
-      t428 <- rd vel ((3.0 * t100) + 2.0)
-      t429 <- rd scalars ((6.0 * t100) + 1.0)
-      wr vel (3.0 * t100) (t426 + ((t424 * t423) * s113))
-      wr vel ((3.0 * t100) + 1.0) (t427 + ((t424 * t423) * s114))
-      wr vel ((3.0 * t100) + 2.0) (t428 + ((t424 * t423) * s115))
-      wr scalars ((6.0 * t100) + 1.0) (t429 + ((t425 * t423) * (((((s411 * s115) - (s412 * s114)) * t107) + (((s412 * s113) - (s410 * s115)) * t108)) + (((s410 * s114) - (s411 * s113)) * t109))))
+      t416 <- rdI mouse 10
+      t417 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t418 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t419 <- rdI vel (3 * (truncate t100))
+      t420 <- rdI vel ((3 * (truncate t100)) + 1)
+      t421 <- rdI vel ((3 * (truncate t100)) + 2)
+      t422 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t419 + ((t417 * t416) * t110))
+      wrI vel ((3 * (truncate t100)) + 1) (t420 + ((t417 * t416) * t111))
+      wrI vel ((3 * (truncate t100)) + 2) (t421 + ((t417 * t416) * t112))
+      wrI scalars ((6 * (truncate t100)) + 1) (t422 + ((t418 * t416) * (((((s411 * t112) - (s412 * t111)) * t107) + (((s412 * t110) - (s410 * t112)) * t108)) + (((s410 * t111) - (s411 * t110)) * t109))))
+      t423 <- rdI mouse 11
+      t424 <- rdI scalars ((6 * (truncate t100)) + 2)
+      t425 <- rdI scalars ((6 * (truncate t100)) + 3)
+      t426 <- rdI vel (3 * (truncate t100))
+      t427 <- rdI vel ((3 * (truncate t100)) + 1)
+      t428 <- rdI vel ((3 * (truncate t100)) + 2)
+      t429 <- rdI scalars ((6 * (truncate t100)) + 1)
+      wrI vel (3 * (truncate t100)) (t426 + ((t424 * t423) * s113))
+      wrI vel ((3 * (truncate t100)) + 1) (t427 + ((t424 * t423) * s114))
+      wrI vel ((3 * (truncate t100)) + 2) (t428 + ((t424 * t423) * s115))
+      wrI scalars ((6 * (truncate t100)) + 1) (t429 + ((t425 * t423) * (((((s411 * s115) - (s412 * s114)) * t107) + (((s412 * s113) - (s410 * s115)) * t108)) + (((s410 * s114) - (s411 * s113)) * t109))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loop 0.0 t1 $ \i430 -> do
-    loop 0.0 t9 $ \i431 -> do
-      t432 <- rd contacts (30.0 * i431)
-      t433 <- rd contacts ((30.0 * i431) + 1.0)
-      t434 <- rd contacts ((30.0 * i431) + 12.0)
-      t435 <- rd contacts (((30.0 * i431) + 12.0) + 1.0)
-      t436 <- rd contacts (((30.0 * i431) + 12.0) + 2.0)
-      t437 <- rd contacts ((30.0 * i431) + 15.0)
-      t438 <- rd contacts ((30.0 * i431) + 16.0)
-      t439 <- rd contacts (((30.0 * i431) + 16.0) + 1.0)
-      t440 <- rd contacts (((30.0 * i431) + 16.0) + 2.0)
-      t441 <- rd contacts ((30.0 * i431) + 19.0)
-      t442 <- rd contacts ((30.0 * i431) + 4.0)
-      t443 <- rd contacts (((30.0 * i431) + 4.0) + 1.0)
-      t444 <- rd contacts (((30.0 * i431) + 4.0) + 2.0)
-      t445 <- rd contacts ((30.0 * i431) + 7.0)
-      t446 <- rd contacts ((30.0 * i431) + 8.0)
-      t447 <- rd contacts (((30.0 * i431) + 8.0) + 1.0)
-      t448 <- rd contacts (((30.0 * i431) + 8.0) + 2.0)
-      t449 <- rd contacts ((30.0 * i431) + 11.0)
-      t450 <- rd contacts ((30.0 * i431) + 26.0)
-      t451 <- rd contacts ((30.0 * i431) + 24.0)
-      t452 <- rd contacts ((30.0 * i431) + 25.0)
-      t453 <- rd contacts ((30.0 * i431) + 22.0)
-      t454 <- rd vel (3.0 * t432)
-      t455 <- rd vel ((3.0 * t432) + 1.0)
-      t456 <- rd vel ((3.0 * t432) + 2.0)
-      t457 <- rd scalars ((6.0 * t432) + 1.0)
+  loopI 0.0 t1 $ \i430 -> do
+    let !d430 = fromIntegral i430 :: Double
+    loopI 0.0 t9 $ \i431 -> do
+      let !d431 = fromIntegral i431 :: Double
+      t432 <- rdI contacts (30 * i431)
+      t433 <- rdI contacts ((30 * i431) + 1)
+      t434 <- rdI contacts ((30 * i431) + 12)
+      t435 <- rdI contacts (((30 * i431) + 12) + 1)
+      t436 <- rdI contacts (((30 * i431) + 12) + 2)
+      t437 <- rdI contacts ((30 * i431) + 15)
+      t438 <- rdI contacts ((30 * i431) + 16)
+      t439 <- rdI contacts (((30 * i431) + 16) + 1)
+      t440 <- rdI contacts (((30 * i431) + 16) + 2)
+      t441 <- rdI contacts ((30 * i431) + 19)
+      t442 <- rdI contacts ((30 * i431) + 4)
+      t443 <- rdI contacts (((30 * i431) + 4) + 1)
+      t444 <- rdI contacts (((30 * i431) + 4) + 2)
+      t445 <- rdI contacts ((30 * i431) + 7)
+      t446 <- rdI contacts ((30 * i431) + 8)
+      t447 <- rdI contacts (((30 * i431) + 8) + 1)
+      t448 <- rdI contacts (((30 * i431) + 8) + 2)
+      t449 <- rdI contacts ((30 * i431) + 11)
+      t450 <- rdI contacts ((30 * i431) + 26)
+      t451 <- rdI contacts ((30 * i431) + 24)
+      t452 <- rdI contacts ((30 * i431) + 25)
+      t453 <- rdI contacts ((30 * i431) + 22)
+      t454 <- rdI vel (3 * (truncate t432))
+      t455 <- rdI vel ((3 * (truncate t432)) + 1)
+      t456 <- rdI vel ((3 * (truncate t432)) + 2)
+      t457 <- rdI scalars ((6 * (truncate t432)) + 1)
       v458 <- newR 0.0
       if (t433 + 0.5) > 0 then do
-        t459 <- rd vel (3.0 * t433)
-        t460 <- rd vel ((3.0 * t433) + 1.0)
-        t461 <- rd vel ((3.0 * t433) + 2.0)
-        t462 <- rd scalars ((6.0 * t433) + 1.0)
+        t459 <- rdI vel (3 * (truncate t433))
+        t460 <- rdI vel ((3 * (truncate t433)) + 1)
+        t461 <- rdI vel ((3 * (truncate t433)) + 2)
+        t462 <- rdI scalars ((6 * (truncate t433)) + 1)
         setR v458 ((((t438 * t459) + (t439 * t460)) + (t440 * t461)) + (t441 * t462))
         pure ()
       else do
@@ -944,43 +964,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t468 = (if (t467 - t465) > 0 then t465 else t467)
       let !t469 = (if (t466 - t468) > 0 then t466 else t468)
       let !s470 = (if (1.0 - (abs (t469 - t469))) > 0 then t469 else 0.0)
-      wr contacts ((30.0 * i431) + 25.0) s470
-      t471 <- rd scalars ((6.0 * t432) + 2.0)
-      t472 <- rd scalars ((6.0 * t432) + 3.0)
-      t473 <- rd vel (3.0 * t432)
-      t474 <- rd vel ((3.0 * t432) + 1.0)
-      t475 <- rd vel ((3.0 * t432) + 2.0)
-      t476 <- rd scalars ((6.0 * t432) + 1.0)
-      wr vel (3.0 * t432) (t473 + ((t471 * (s470 - t452)) * t434))
-      wr vel ((3.0 * t432) + 1.0) (t474 + ((t471 * (s470 - t452)) * t435))
-      wr vel ((3.0 * t432) + 2.0) (t475 + ((t471 * (s470 - t452)) * t436))
-      wr scalars ((6.0 * t432) + 1.0) (t476 + ((t472 * (s470 - t452)) * t437))
+      wrI contacts ((30 * i431) + 25) s470
+      t471 <- rdI scalars ((6 * (truncate t432)) + 2)
+      t472 <- rdI scalars ((6 * (truncate t432)) + 3)
+      t473 <- rdI vel (3 * (truncate t432))
+      t474 <- rdI vel ((3 * (truncate t432)) + 1)
+      t475 <- rdI vel ((3 * (truncate t432)) + 2)
+      t476 <- rdI scalars ((6 * (truncate t432)) + 1)
+      wrI vel (3 * (truncate t432)) (t473 + ((t471 * (s470 - t452)) * t434))
+      wrI vel ((3 * (truncate t432)) + 1) (t474 + ((t471 * (s470 - t452)) * t435))
+      wrI vel ((3 * (truncate t432)) + 2) (t475 + ((t471 * (s470 - t452)) * t436))
+      wrI scalars ((6 * (truncate t432)) + 1) (t476 + ((t472 * (s470 - t452)) * t437))
       if (t433 + 0.5) > 0 then do
-        t477 <- rd scalars ((6.0 * t433) + 2.0)
-        t478 <- rd scalars ((6.0 * t433) + 3.0)
-        t479 <- rd vel (3.0 * t433)
-        t480 <- rd vel ((3.0 * t433) + 1.0)
-        t481 <- rd vel ((3.0 * t433) + 2.0)
-        t482 <- rd scalars ((6.0 * t433) + 1.0)
-        wr vel (3.0 * t433) (t479 + ((t477 * (negate (s470 - t452))) * t438))
-        wr vel ((3.0 * t433) + 1.0) (t480 + ((t477 * (negate (s470 - t452))) * t439))
-        wr vel ((3.0 * t433) + 2.0) (t481 + ((t477 * (negate (s470 - t452))) * t440))
-        wr scalars ((6.0 * t433) + 1.0) (t482 + ((t478 * (negate (s470 - t452))) * t441))
+        t477 <- rdI scalars ((6 * (truncate t433)) + 2)
+        t478 <- rdI scalars ((6 * (truncate t433)) + 3)
+        t479 <- rdI vel (3 * (truncate t433))
+        t480 <- rdI vel ((3 * (truncate t433)) + 1)
+        t481 <- rdI vel ((3 * (truncate t433)) + 2)
+        t482 <- rdI scalars ((6 * (truncate t433)) + 1)
+        wrI vel (3 * (truncate t433)) (t479 + ((t477 * (negate (s470 - t452))) * t438))
+        wrI vel ((3 * (truncate t433)) + 1) (t480 + ((t477 * (negate (s470 - t452))) * t439))
+        wrI vel ((3 * (truncate t433)) + 2) (t481 + ((t477 * (negate (s470 - t452))) * t440))
+        wrI scalars ((6 * (truncate t433)) + 1) (t482 + ((t478 * (negate (s470 - t452))) * t441))
         pure ()
       else do
         pure ()
-      t483 <- rd contacts ((30.0 * i431) + 21.0)
-      t484 <- rd contacts ((30.0 * i431) + 23.0)
-      t485 <- rd vel (3.0 * t432)
-      t486 <- rd vel ((3.0 * t432) + 1.0)
-      t487 <- rd vel ((3.0 * t432) + 2.0)
-      t488 <- rd scalars ((6.0 * t432) + 1.0)
+      t483 <- rdI contacts ((30 * i431) + 21)
+      t484 <- rdI contacts ((30 * i431) + 23)
+      t485 <- rdI vel (3 * (truncate t432))
+      t486 <- rdI vel ((3 * (truncate t432)) + 1)
+      t487 <- rdI vel ((3 * (truncate t432)) + 2)
+      t488 <- rdI scalars ((6 * (truncate t432)) + 1)
       v489 <- newR 0.0
       if (t433 + 0.5) > 0 then do
-        t490 <- rd vel (3.0 * t433)
-        t491 <- rd vel ((3.0 * t433) + 1.0)
-        t492 <- rd vel ((3.0 * t433) + 2.0)
-        t493 <- rd scalars ((6.0 * t433) + 1.0)
+        t490 <- rdI vel (3 * (truncate t433))
+        t491 <- rdI vel ((3 * (truncate t433)) + 1)
+        t492 <- rdI vel ((3 * (truncate t433)) + 2)
+        t493 <- rdI scalars ((6 * (truncate t433)) + 1)
         setR v489 ((((t446 * t490) + (t447 * t491)) + (t448 * t492)) + (t449 * t493))
         pure ()
       else do
@@ -990,73 +1010,73 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t496 = (t451 + ((t450 * (t484 - s495)) * t483))
       let !t497 = (if (negate t496) > 0 then 0.0 else t496)
       let !s498 = (if (1.0 - (abs (t497 - t497))) > 0 then t497 else 0.0)
-      wr contacts ((30.0 * i431) + 24.0) s498
-      t499 <- rd scalars ((6.0 * t432) + 2.0)
-      t500 <- rd scalars ((6.0 * t432) + 3.0)
-      t501 <- rd vel (3.0 * t432)
-      t502 <- rd vel ((3.0 * t432) + 1.0)
-      t503 <- rd vel ((3.0 * t432) + 2.0)
-      t504 <- rd scalars ((6.0 * t432) + 1.0)
-      wr vel (3.0 * t432) (t501 + ((t499 * (s498 - t451)) * t442))
-      wr vel ((3.0 * t432) + 1.0) (t502 + ((t499 * (s498 - t451)) * t443))
-      wr vel ((3.0 * t432) + 2.0) (t503 + ((t499 * (s498 - t451)) * t444))
-      wr scalars ((6.0 * t432) + 1.0) (t504 + ((t500 * (s498 - t451)) * t445))
+      wrI contacts ((30 * i431) + 24) s498
+      t499 <- rdI scalars ((6 * (truncate t432)) + 2)
+      t500 <- rdI scalars ((6 * (truncate t432)) + 3)
+      t501 <- rdI vel (3 * (truncate t432))
+      t502 <- rdI vel ((3 * (truncate t432)) + 1)
+      t503 <- rdI vel ((3 * (truncate t432)) + 2)
+      t504 <- rdI scalars ((6 * (truncate t432)) + 1)
+      wrI vel (3 * (truncate t432)) (t501 + ((t499 * (s498 - t451)) * t442))
+      wrI vel ((3 * (truncate t432)) + 1) (t502 + ((t499 * (s498 - t451)) * t443))
+      wrI vel ((3 * (truncate t432)) + 2) (t503 + ((t499 * (s498 - t451)) * t444))
+      wrI scalars ((6 * (truncate t432)) + 1) (t504 + ((t500 * (s498 - t451)) * t445))
       if (t433 + 0.5) > 0 then do
-        t505 <- rd scalars ((6.0 * t433) + 2.0)
-        t506 <- rd scalars ((6.0 * t433) + 3.0)
-        t507 <- rd vel (3.0 * t433)
-        t508 <- rd vel ((3.0 * t433) + 1.0)
-        t509 <- rd vel ((3.0 * t433) + 2.0)
-        t510 <- rd scalars ((6.0 * t433) + 1.0)
-        wr vel (3.0 * t433) (t507 + ((t505 * (negate (s498 - t451))) * t446))
-        wr vel ((3.0 * t433) + 1.0) (t508 + ((t505 * (negate (s498 - t451))) * t447))
-        wr vel ((3.0 * t433) + 2.0) (t509 + ((t505 * (negate (s498 - t451))) * t448))
-        wr scalars ((6.0 * t433) + 1.0) (t510 + ((t506 * (negate (s498 - t451))) * t449))
+        t505 <- rdI scalars ((6 * (truncate t433)) + 2)
+        t506 <- rdI scalars ((6 * (truncate t433)) + 3)
+        t507 <- rdI vel (3 * (truncate t433))
+        t508 <- rdI vel ((3 * (truncate t433)) + 1)
+        t509 <- rdI vel ((3 * (truncate t433)) + 2)
+        t510 <- rdI scalars ((6 * (truncate t433)) + 1)
+        wrI vel (3 * (truncate t433)) (t507 + ((t505 * (negate (s498 - t451))) * t446))
+        wrI vel ((3 * (truncate t433)) + 1) (t508 + ((t505 * (negate (s498 - t451))) * t447))
+        wrI vel ((3 * (truncate t433)) + 2) (t509 + ((t505 * (negate (s498 - t451))) * t448))
+        wrI scalars ((6 * (truncate t433)) + 1) (t510 + ((t506 * (negate (s498 - t451))) * t449))
         pure ()
       else do
         pure ()
       pure ()
-    t511 <- rd mouse 0.0
+    t511 <- rdI mouse 0
     if t511 > 0 then do
-      t512 <- rd mouse 1.0
-      t513 <- rd scalars ((6.0 * t512) + 2.0)
+      t512 <- rdI mouse 1
+      t513 <- rdI scalars ((6 * (truncate t512)) + 2)
       if t513 > 0 then do
-        t514 <- rd scalars ((6.0 * t512) + 3.0)
-        t515 <- rd params 0.0
-        t516 <- rd pos (3.0 * t512)
-        t517 <- rd pos ((3.0 * t512) + 1.0)
-        t518 <- rd pos ((3.0 * t512) + 2.0)
-        t519 <- rd normal (3.0 * t512)
-        t520 <- rd normal ((3.0 * t512) + 1.0)
-        t521 <- rd normal ((3.0 * t512) + 2.0)
-        t522 <- rd axis (3.0 * t512)
-        t523 <- rd axis ((3.0 * t512) + 1.0)
-        t524 <- rd axis ((3.0 * t512) + 2.0)
+        t514 <- rdI scalars ((6 * (truncate t512)) + 3)
+        t515 <- rdI params 0
+        t516 <- rdI pos (3 * (truncate t512))
+        t517 <- rdI pos ((3 * (truncate t512)) + 1)
+        t518 <- rdI pos ((3 * (truncate t512)) + 2)
+        t519 <- rdI normal (3 * (truncate t512))
+        t520 <- rdI normal ((3 * (truncate t512)) + 1)
+        t521 <- rdI normal ((3 * (truncate t512)) + 2)
+        t522 <- rdI axis (3 * (truncate t512))
+        t523 <- rdI axis ((3 * (truncate t512)) + 1)
+        t524 <- rdI axis ((3 * (truncate t512)) + 2)
         let !s525 = ((t520 * t524) - (t521 * t523))
         let !s526 = ((t521 * t522) - (t519 * t524))
         let !s527 = ((t519 * t523) - (t520 * t522))
-        t528 <- rd scalars (6.0 * t512)
-        t529 <- rd scalars ((6.0 * t512) + 5.0)
-        t530 <- rd scalars ((6.0 * t512) + 2.0)
-        t531 <- rd scalars ((6.0 * t512) + 3.0)
-        t532 <- rd pos (3.0 * t512)
-        t533 <- rd pos ((3.0 * t512) + 1.0)
-        t534 <- rd pos ((3.0 * t512) + 2.0)
-        t535 <- rd normal (3.0 * t512)
-        t536 <- rd normal ((3.0 * t512) + 1.0)
-        t537 <- rd normal ((3.0 * t512) + 2.0)
-        t538 <- rd axis (3.0 * t512)
-        t539 <- rd axis ((3.0 * t512) + 1.0)
-        t540 <- rd axis ((3.0 * t512) + 2.0)
+        t528 <- rdI scalars (6 * (truncate t512))
+        t529 <- rdI scalars ((6 * (truncate t512)) + 5)
+        t530 <- rdI scalars ((6 * (truncate t512)) + 2)
+        t531 <- rdI scalars ((6 * (truncate t512)) + 3)
+        t532 <- rdI pos (3 * (truncate t512))
+        t533 <- rdI pos ((3 * (truncate t512)) + 1)
+        t534 <- rdI pos ((3 * (truncate t512)) + 2)
+        t535 <- rdI normal (3 * (truncate t512))
+        t536 <- rdI normal ((3 * (truncate t512)) + 1)
+        t537 <- rdI normal ((3 * (truncate t512)) + 2)
+        t538 <- rdI axis (3 * (truncate t512))
+        t539 <- rdI axis ((3 * (truncate t512)) + 1)
+        t540 <- rdI axis ((3 * (truncate t512)) + 2)
         let !s541 = ((t536 * t540) - (t537 * t539))
         let !s542 = ((t537 * t538) - (t535 * t540))
         let !s543 = ((t535 * t539) - (t536 * t538))
-        t544 <- rd scalars (6.0 * t512)
-        t545 <- rd scalars ((6.0 * t512) + 5.0)
-        t546 <- rd scalars ((6.0 * t512) + 2.0)
-        t547 <- rd scalars ((6.0 * t512) + 3.0)
-        t548 <- rd mouse 2.0
-        t549 <- rd mouse 3.0
+        t544 <- rdI scalars (6 * (truncate t512))
+        t545 <- rdI scalars ((6 * (truncate t512)) + 5)
+        t546 <- rdI scalars ((6 * (truncate t512)) + 2)
+        t547 <- rdI scalars ((6 * (truncate t512)) + 3)
+        t548 <- rdI mouse 2
+        t549 <- rdI mouse 3
         let !t550 = (t548 / 4.0)
         let !t551 = (if (abs t550) > 0 then 1.0 else 0.0)
         let !t552 = (t544 + t549)
@@ -1319,12 +1339,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s809 = ((t551 * (t791 * (t808 * t804))) + (t594 * s746))
         let !s810 = ((t551 * (t791 * (t808 * t805))) + (t594 * s747))
         let !s811 = ((t551 * (t791 * (t808 * t806))) + (t594 * s748))
-        t812 <- rd mouse 4.0
-        t813 <- rd mouse 5.0
-        t814 <- rd mouse 6.0
-        t815 <- rd mouse 7.0
-        t816 <- rd mouse 8.0
-        t817 <- rd mouse 9.0
+        t812 <- rdI mouse 4
+        t813 <- rdI mouse 5
+        t814 <- rdI mouse 6
+        t815 <- rdI mouse 7
+        t816 <- rdI mouse 8
+        t817 <- rdI mouse 9
         let !t818 = (recip t513)
         let !t819 = (6.283185307179586 * t815)
         let !s820 = (recip (t515 * ((((2.0 * t818) * t816) * t819) + (t515 * ((t818 * t819) * t819)))))
@@ -1335,11 +1355,11 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s825 = (s788 + (negate t812))
         let !s826 = (s789 + (negate t813))
         let !s827 = (s790 + (negate t814))
-        t828 <- rd mouse 10.0
-        t829 <- rd vel (3.0 * t512)
-        t830 <- rd vel ((3.0 * t512) + 1.0)
-        t831 <- rd vel ((3.0 * t512) + 2.0)
-        t832 <- rd scalars ((6.0 * t512) + 1.0)
+        t828 <- rdI mouse 10
+        t829 <- rdI vel (3 * (truncate t512))
+        t830 <- rdI vel ((3 * (truncate t512)) + 1)
+        t831 <- rdI vel ((3 * (truncate t512)) + 2)
+        t832 <- rdI scalars ((6 * (truncate t512)) + 1)
         let !t833 = (t817 * t515)
         let !t834 = (negate t833)
         let !t835 = (((((s823 * t524) - (s824 * t523)) * t519) + (((s824 * t522) - (s822 * t524)) * t520)) + (((s822 * t523) - (s823 * t522)) * t521))
@@ -1347,38 +1367,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t837 = (if (t836 - t833) > 0 then t833 else t836)
         let !t838 = (if (t834 - t837) > 0 then t834 else t837)
         let !s839 = (if (1.0 - (abs (t838 - t838))) > 0 then t838 else 0.0)
-        wr mouse 10.0 s839
-        t840 <- rd scalars ((6.0 * t512) + 2.0)
-        t841 <- rd scalars ((6.0 * t512) + 3.0)
-        t842 <- rd vel (3.0 * t512)
-        t843 <- rd vel ((3.0 * t512) + 1.0)
-        t844 <- rd vel ((3.0 * t512) + 2.0)
-        t845 <- rd scalars ((6.0 * t512) + 1.0)
-        wr vel (3.0 * t512) (t842 + ((t840 * (s839 - t828)) * t522))
-        wr vel ((3.0 * t512) + 1.0) (t843 + ((t840 * (s839 - t828)) * t523))
-        wr vel ((3.0 * t512) + 2.0) (t844 + ((t840 * (s839 - t828)) * t524))
-        wr scalars ((6.0 * t512) + 1.0) (t845 + ((t841 * (s839 - t828)) * t835))
-        t846 <- rd mouse 11.0
-        t847 <- rd vel (3.0 * t512)
-        t848 <- rd vel ((3.0 * t512) + 1.0)
-        t849 <- rd vel ((3.0 * t512) + 2.0)
-        t850 <- rd scalars ((6.0 * t512) + 1.0)
+        wrI mouse 10 s839
+        t840 <- rdI scalars ((6 * (truncate t512)) + 2)
+        t841 <- rdI scalars ((6 * (truncate t512)) + 3)
+        t842 <- rdI vel (3 * (truncate t512))
+        t843 <- rdI vel ((3 * (truncate t512)) + 1)
+        t844 <- rdI vel ((3 * (truncate t512)) + 2)
+        t845 <- rdI scalars ((6 * (truncate t512)) + 1)
+        wrI vel (3 * (truncate t512)) (t842 + ((t840 * (s839 - t828)) * t522))
+        wrI vel ((3 * (truncate t512)) + 1) (t843 + ((t840 * (s839 - t828)) * t523))
+        wrI vel ((3 * (truncate t512)) + 2) (t844 + ((t840 * (s839 - t828)) * t524))
+        wrI scalars ((6 * (truncate t512)) + 1) (t845 + ((t841 * (s839 - t828)) * t835))
+        t846 <- rdI mouse 11
+        t847 <- rdI vel (3 * (truncate t512))
+        t848 <- rdI vel ((3 * (truncate t512)) + 1)
+        t849 <- rdI vel ((3 * (truncate t512)) + 2)
+        t850 <- rdI scalars ((6 * (truncate t512)) + 1)
         let !t851 = (((((s823 * s527) - (s824 * s526)) * t519) + (((s824 * s525) - (s822 * s527)) * t520)) + (((s822 * s526) - (s823 * s525)) * t521))
         let !t852 = (t846 + ((negate ((((((s525 * t847) + (s526 * t848)) + (s527 * t849)) + (t851 * t850)) + (s821 * (((s825 * s525) + (s826 * s526)) + (s827 * s527)))) + (s820 * t846))) / (((t513 * (((s525 * s525) + (s526 * s526)) + (s527 * s527))) + ((t514 * t851) * t851)) + s820)))
         let !t853 = (if (t852 - t833) > 0 then t833 else t852)
         let !t854 = (if (t834 - t853) > 0 then t834 else t853)
         let !s855 = (if (1.0 - (abs (t854 - t854))) > 0 then t854 else 0.0)
-        wr mouse 11.0 s855
-        t856 <- rd scalars ((6.0 * t512) + 2.0)
-        t857 <- rd scalars ((6.0 * t512) + 3.0)
-        t858 <- rd vel (3.0 * t512)
-        t859 <- rd vel ((3.0 * t512) + 1.0)
-        t860 <- rd vel ((3.0 * t512) + 2.0)
-        t861 <- rd scalars ((6.0 * t512) + 1.0)
-        wr vel (3.0 * t512) (t858 + ((t856 * (s855 - t846)) * s525))
-        wr vel ((3.0 * t512) + 1.0) (t859 + ((t856 * (s855 - t846)) * s526))
-        wr vel ((3.0 * t512) + 2.0) (t860 + ((t856 * (s855 - t846)) * s527))
-        wr scalars ((6.0 * t512) + 1.0) (t861 + ((t857 * (s855 - t846)) * t851))
+        wrI mouse 11 s855
+        t856 <- rdI scalars ((6 * (truncate t512)) + 2)
+        t857 <- rdI scalars ((6 * (truncate t512)) + 3)
+        t858 <- rdI vel (3 * (truncate t512))
+        t859 <- rdI vel ((3 * (truncate t512)) + 1)
+        t860 <- rdI vel ((3 * (truncate t512)) + 2)
+        t861 <- rdI scalars ((6 * (truncate t512)) + 1)
+        wrI vel (3 * (truncate t512)) (t858 + ((t856 * (s855 - t846)) * s525))
+        wrI vel ((3 * (truncate t512)) + 1) (t859 + ((t856 * (s855 - t846)) * s526))
+        wrI vel ((3 * (truncate t512)) + 2) (t860 + ((t856 * (s855 - t846)) * s527))
+        wrI scalars ((6 * (truncate t512)) + 1) (t861 + ((t857 * (s855 - t846)) * t851))
         pure ()
       else do
         pure ()
@@ -1386,48 +1406,51 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t862 <- rd meta 0.0
-  loop 0.0 t862 $ \i863 -> do
-    wr bodyPrev ((2.0 * i863) + 1.0) 0.0
+  t862 <- rdI meta 0
+  loopI 0.0 t862 $ \i863 -> do
+    let !d863 = fromIntegral i863 :: Double
+    wrI bodyPrev ((2 * i863) + 1) 0.0
     pure ()
-  loop 0.0 t9 $ \i864 -> do
-    t865 <- rd contacts ((30.0 * i864) + 2.0)
-    wr prev (4.0 * i864) t865
-    t866 <- rd contacts ((30.0 * i864) + 3.0)
-    wr prev ((4.0 * i864) + 1.0) t866
-    t867 <- rd contacts ((30.0 * i864) + 24.0)
-    wr prev ((4.0 * i864) + 2.0) t867
-    t868 <- rd contacts ((30.0 * i864) + 25.0)
-    wr prev ((4.0 * i864) + 3.0) t868
-    t869 <- rd bodyPrev ((2.0 * t865) + 1.0)
+  loopI 0.0 t9 $ \i864 -> do
+    let !d864 = fromIntegral i864 :: Double
+    t865 <- rdI contacts ((30 * i864) + 2)
+    wrI prev (4 * i864) t865
+    t866 <- rdI contacts ((30 * i864) + 3)
+    wrI prev ((4 * i864) + 1) t866
+    t867 <- rdI contacts ((30 * i864) + 24)
+    wrI prev ((4 * i864) + 2) t867
+    t868 <- rdI contacts ((30 * i864) + 25)
+    wrI prev ((4 * i864) + 3) t868
+    t869 <- rdI bodyPrev ((2 * (truncate t865)) + 1)
     if (0.5 - t869) > 0 then do
-      wr bodyPrev (2.0 * t865) i864
+      wrI bodyPrev (2 * (truncate t865)) d864
       pure ()
     else do
       pure ()
-    wr bodyPrev ((2.0 * t865) + 1.0) (t869 + 1.0)
+    wrI bodyPrev ((2 * (truncate t865)) + 1) (t869 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  t1 <- rd params 0.0
-  loop 0.0 t0 $ \i2 -> do
-    t3 <- rd pos (3.0 * i2)
-    t4 <- rd pos ((3.0 * i2) + 1.0)
-    t5 <- rd pos ((3.0 * i2) + 2.0)
-    t6 <- rd vel (3.0 * i2)
-    t7 <- rd vel ((3.0 * i2) + 1.0)
-    t8 <- rd vel ((3.0 * i2) + 2.0)
-    t9 <- rd axis (3.0 * i2)
-    t10 <- rd axis ((3.0 * i2) + 1.0)
-    t11 <- rd axis ((3.0 * i2) + 2.0)
-    t12 <- rd scalars (6.0 * i2)
-    t13 <- rd scalars ((6.0 * i2) + 1.0)
-    t14 <- rd normal (3.0 * i2)
-    t15 <- rd normal ((3.0 * i2) + 1.0)
-    t16 <- rd normal ((3.0 * i2) + 2.0)
+  t0 <- rdI meta 0
+  t1 <- rdI params 0
+  loopI 0.0 t0 $ \i2 -> do
+    let !d2 = fromIntegral i2 :: Double
+    t3 <- rdI pos (3 * i2)
+    t4 <- rdI pos ((3 * i2) + 1)
+    t5 <- rdI pos ((3 * i2) + 2)
+    t6 <- rdI vel (3 * i2)
+    t7 <- rdI vel ((3 * i2) + 1)
+    t8 <- rdI vel ((3 * i2) + 2)
+    t9 <- rdI axis (3 * i2)
+    t10 <- rdI axis ((3 * i2) + 1)
+    t11 <- rdI axis ((3 * i2) + 2)
+    t12 <- rdI scalars (6 * i2)
+    t13 <- rdI scalars ((6 * i2) + 1)
+    t14 <- rdI normal (3 * i2)
+    t15 <- rdI normal ((3 * i2) + 1)
+    t16 <- rdI normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t5 + (t1 * t8))
@@ -1551,58 +1574,60 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t137 = (t12 + (t1 * t13))
     let !t138 = (1.0 - (abs ((((((((((((((s83 - s83) + (s84 - s84)) + (s85 - s85)) + (s123 - s123)) + (s124 - s124)) + (s125 - s125)) + (s132 - s132)) + (s133 - s133)) + (s134 - s134)) + (s96 - s96)) + (s97 - s97)) + (s98 - s98)) + (t137 - t137)) + (s135 - s135))))
     if (if (t136 - t138) > 0 then t138 else t136) > 0 then do
-      wr pos (3.0 * i2) s83
-      wr pos ((3.0 * i2) + 1.0) s84
-      wr pos ((3.0 * i2) + 2.0) s85
-      wr vel (3.0 * i2) s123
-      wr vel ((3.0 * i2) + 1.0) s124
-      wr vel ((3.0 * i2) + 2.0) s125
-      wr axis (3.0 * i2) s132
-      wr axis ((3.0 * i2) + 1.0) s133
-      wr axis ((3.0 * i2) + 2.0) s134
-      wr normal (3.0 * i2) s96
-      wr normal ((3.0 * i2) + 1.0) s97
-      wr normal ((3.0 * i2) + 2.0) s98
-      wr scalars (6.0 * i2) t137
+      wrI pos (3 * i2) s83
+      wrI pos ((3 * i2) + 1) s84
+      wrI pos ((3 * i2) + 2) s85
+      wrI vel (3 * i2) s123
+      wrI vel ((3 * i2) + 1) s124
+      wrI vel ((3 * i2) + 2) s125
+      wrI axis (3 * i2) s132
+      wrI axis ((3 * i2) + 1) s133
+      wrI axis ((3 * i2) + 2) s134
+      wrI normal (3 * i2) s96
+      wrI normal ((3 * i2) + 1) s97
+      wrI normal ((3 * i2) + 2) s98
+      wrI scalars (6 * i2) t137
       pure ()
     else do
-      wr vel (3.0 * i2) 0.0
-      wr vel ((3.0 * i2) + 1.0) 0.0
-      wr vel ((3.0 * i2) + 2.0) 0.0
-      wr scalars ((6.0 * i2) + 1.0) 0.0
-      t139 <- rd meta 1.0
-      wr meta 1.0 (t139 + 1.0)
+      wrI vel (3 * i2) 0.0
+      wrI vel ((3 * i2) + 1) 0.0
+      wrI vel ((3 * i2) + 2) 0.0
+      wrI scalars ((6 * i2) + 1) 0.0
+      t139 <- rdI meta 1
+      wrI meta 1 (t139 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rd meta 0.0
-  loop 0.0 t0 $ \i1 -> do
-    t2 <- rd pos (3.0 * i1)
-    t3 <- rd pos ((3.0 * i1) + 1.0)
-    t4 <- rd pos ((3.0 * i1) + 2.0)
-    t5 <- rd axis (3.0 * i1)
-    t6 <- rd axis ((3.0 * i1) + 1.0)
-    t7 <- rd axis ((3.0 * i1) + 2.0)
-    t8 <- rd normal (3.0 * i1)
-    t9 <- rd normal ((3.0 * i1) + 1.0)
-    t10 <- rd normal ((3.0 * i1) + 2.0)
-    t11 <- rd scalars (6.0 * i1)
-    t12 <- rd params 10.0
-    t13 <- rd scalars ((6.0 * i1) + 5.0)
-    wr verts (3.0 * (97.0 * i1)) t2
-    wr verts ((3.0 * (97.0 * i1)) + 1.0) t3
-    wr verts ((3.0 * (97.0 * i1)) + 2.0) t4
+  t0 <- rdI meta 0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    t2 <- rdI pos (3 * i1)
+    t3 <- rdI pos ((3 * i1) + 1)
+    t4 <- rdI pos ((3 * i1) + 2)
+    t5 <- rdI axis (3 * i1)
+    t6 <- rdI axis ((3 * i1) + 1)
+    t7 <- rdI axis ((3 * i1) + 2)
+    t8 <- rdI normal (3 * i1)
+    t9 <- rdI normal ((3 * i1) + 1)
+    t10 <- rdI normal ((3 * i1) + 2)
+    t11 <- rdI scalars (6 * i1)
+    t12 <- rdI params 10
+    t13 <- rdI scalars ((6 * i1) + 5)
+    wrI verts (3 * (97 * i1)) t2
+    wrI verts ((3 * (97 * i1)) + 1) t3
+    wrI verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loop 0.0 24.0 $ \i20 -> do
-      t21 <- rd radii ((24.0 * i1) + i20)
+    loopI 0.0 24.0 $ \i20 -> do
+      let !d20 = fromIntegral i20 :: Double
+      t21 <- rdI radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1672,9 +1697,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s85 = ((t28 * t71) + (t59 * t8))
         let !s86 = ((t28 * t72) + (t59 * t9))
         let !s87 = ((t28 * t74) + (t59 * t10))
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (if (1.0 - (abs (((s60 - s60) + (s61 - s61)) + (s62 - s62)))) > 0 then s60 else t2)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (if (1.0 - (abs (((s60 - s60) + (s61 - s61)) + (s62 - s62)))) > 0 then s61 else t3)
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (if (1.0 - (abs (((s60 - s60) + (s61 - s61)) + (s62 - s62)))) > 0 then s62 else t4)
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s60 - s60) + (s61 - s61)) + (s62 - s62)))) > 0 then s60 else t2)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s60 - s60) + (s61 - s61)) + (s62 - s62)))) > 0 then s61 else t3)
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s60 - s60) + (s61 - s61)) + (s62 - s62)))) > 0 then s62 else t4)
         let !t88 = (s60 + (s27 * s82))
         let !t89 = (s62 + (s27 * s84))
         let !t90 = (sqrt ((t88 * t88) + (t89 * t89)))
@@ -1732,9 +1757,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s142 = ((t28 * t128) + (t59 * s85))
         let !s143 = ((t28 * t129) + (t59 * s86))
         let !s144 = ((t28 * t131) + (t59 * s87))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (if (1.0 - (abs (((s118 - s118) + (s119 - s119)) + (s120 - s120)))) > 0 then s118 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (if (1.0 - (abs (((s118 - s118) + (s119 - s119)) + (s120 - s120)))) > 0 then s119 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (if (1.0 - (abs (((s118 - s118) + (s119 - s119)) + (s120 - s120)))) > 0 then s120 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s118 - s118) + (s119 - s119)) + (s120 - s120)))) > 0 then s118 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s118 - s118) + (s119 - s119)) + (s120 - s120)))) > 0 then s119 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s118 - s118) + (s119 - s119)) + (s120 - s120)))) > 0 then s120 else t4)
         let !t145 = (s118 + (s27 * s139))
         let !t146 = (s120 + (s27 * s141))
         let !t147 = (sqrt ((t145 * t145) + (t146 * t146)))
@@ -1792,9 +1817,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s199 = ((t28 * t185) + (t59 * s142))
         let !s200 = ((t28 * t186) + (t59 * s143))
         let !s201 = ((t28 * t188) + (t59 * s144))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (if (1.0 - (abs (((s175 - s175) + (s176 - s176)) + (s177 - s177)))) > 0 then s175 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (if (1.0 - (abs (((s175 - s175) + (s176 - s176)) + (s177 - s177)))) > 0 then s176 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (if (1.0 - (abs (((s175 - s175) + (s176 - s176)) + (s177 - s177)))) > 0 then s177 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s175 - s175) + (s176 - s176)) + (s177 - s177)))) > 0 then s175 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s175 - s175) + (s176 - s176)) + (s177 - s177)))) > 0 then s176 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s175 - s175) + (s176 - s176)) + (s177 - s177)))) > 0 then s177 else t4)
         let !t202 = (s175 + (s27 * s196))
         let !t203 = (s177 + (s27 * s198))
         let !t204 = (sqrt ((t202 * t202) + (t203 * t203)))
@@ -1852,9 +1877,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s256 = ((t28 * t242) + (t59 * s199))
         let !s257 = ((t28 * t243) + (t59 * s200))
         let !s258 = ((t28 * t245) + (t59 * s201))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) (if (1.0 - (abs (((s232 - s232) + (s233 - s233)) + (s234 - s234)))) > 0 then s232 else t2)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) (if (1.0 - (abs (((s232 - s232) + (s233 - s233)) + (s234 - s234)))) > 0 then s233 else t3)
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) (if (1.0 - (abs (((s232 - s232) + (s233 - s233)) + (s234 - s234)))) > 0 then s234 else t4)
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s232 - s232) + (s233 - s233)) + (s234 - s234)))) > 0 then s232 else t2)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s232 - s232) + (s233 - s233)) + (s234 - s234)))) > 0 then s233 else t3)
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s232 - s232) + (s233 - s233)) + (s234 - s234)))) > 0 then s234 else t4)
         pure ()
       else do
         let !t259 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1896,18 +1921,18 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s295 = (if t294 > 0 then t291 else t2)
         let !s296 = (if t294 > 0 then t292 else t3)
         let !s297 = (if t294 > 0 then t293 else t4)
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) s295
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 1.0) s296
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 3.0)) + 2.0) s297
-        wr verts (3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) (t2 + (0.25 * (s295 + (negate t2))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 1.0) (t3 + (0.25 * (s296 + (negate t3))))
-        wr verts ((3.0 * (((97.0 * i1) + 1.0) + (i20 * 4.0))) + 2.0) (t4 + (0.25 * (s297 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) (t2 + (0.5 * (s295 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 1.0) (t3 + (0.5 * (s296 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 1.0)) + 2.0) (t4 + (0.5 * (s297 + (negate t4))))
-        wr verts (3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) (t2 + (0.75 * (s295 + (negate t2))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 1.0) (t3 + (0.75 * (s296 + (negate t3))))
-        wr verts ((3.0 * ((((97.0 * i1) + 1.0) + (i20 * 4.0)) + 2.0)) + 2.0) (t4 + (0.75 * (s297 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s295
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s296
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s297
+        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s295 + (negate t2))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s296 + (negate t3))))
+        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s297 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s295 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s296 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s297 + (negate t4))))
+        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s295 + (negate t2))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s296 + (negate t3))))
+        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s297 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -39,6 +39,7 @@ import qualified Data.IntMap.Strict as IM
 import qualified Data.Map.Strict as M
 import Data.List (intercalate)
 import qualified Data.Vector.Unboxed.Mutable as MV
+import GHC.Float (castWord64ToDouble)
 
 import Manifold.Field
 import Manifold.Stage.Expr
@@ -158,6 +159,7 @@ data StageState = StageState
   , ssSubroutines :: M.Map String String -- ^ subroutines printed so far, by name
   , ssOrder :: [String] -- ^ their names, latest first
   , ssTarget :: !Target -- ^ JavaScript, or Haskell for the compiled native step
+  , ssIntVars :: M.Map String String -- ^ Haskell: a loop's number and its 'Int' counter
   }
 
 newtype Staged a = Staged (State StageState a)
@@ -236,8 +238,13 @@ instance Imp Staged where
     hs <- isHaskell
     if hs
       then do
-        emitLine ("loop " ++ lo' ++ " " ++ hi' ++ " $ \\" ++ i ++ " -> do")
-        block (body (IxE (sym i)))
+        -- the counter is an Int (array indices are computed from it in Int
+        -- arithmetic, see 'indexExpression'); the loop body sees it as a
+        -- number, as the staged program does
+        let d = 'd' : drop 1 i
+        Staged (modify' (\s -> s { ssIntVars = M.insert d i (ssIntVars s) }))
+        emitLine ("loopI " ++ lo' ++ " " ++ hi' ++ " $ \\" ++ i ++ " -> do")
+        block (emitLine ("let !" ++ d ++ " = fromIntegral " ++ i ++ " :: Double") >> body (IxE (sym d)))
       else do
         emitLine ("for (let " ++ i ++ " = " ++ lo' ++ "; " ++ i ++ " < " ++ hi' ++ "; " ++ i ++ "++) {")
         block (body (IxE (sym i)))
@@ -263,16 +270,16 @@ instance Imp Staged where
           Staged (modify' (\s -> s { ssLines = elseLines ++ ssLines s }))
           emitLine "}"
   readArray (StagedArray a) (IxE i) = do
-    i' <- expression i
+    i' <- indexExpression i
     t <- fresh "t"
     hs <- isHaskell
-    emitLine (if hs then t ++ " <- rd " ++ a ++ " " ++ i' else "const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
+    emitLine (if hs then t ++ " <- rdI " ++ a ++ " " ++ i' else "const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
     pure (sym t)
   writeArray (StagedArray a) (IxE i) x = do
-    i' <- expression i
+    i' <- indexExpression i
     x' <- expression x
     hs <- isHaskell
-    emitLine (if hs then "wr " ++ a ++ " " ++ i' ++ " " ++ x' else a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
+    emitLine (if hs then "wrI " ++ a ++ " " ++ i' ++ " " ++ x' else a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
   share = bindAs "s"
   shareAll xs = do
     _ <- expressions (foldr (:) [] xs)
@@ -310,6 +317,42 @@ instance Imp Staged where
     emitLine $ case ssTarget st of
       Haskell -> unwords (name : ssArrays st ++ args')
       _ -> name ++ "(" ++ intercalate ", " (ssArrays st ++ args') ++ ");"
+
+-- | An array index. In JavaScript, the index expression as it is. In
+-- Haskell, as 'Int' arithmetic where it is sums and products of whole
+-- numbers, loop counters and stored whole numbers (exact, as the staged
+-- 'Double' arithmetic on them is below 2^53, and without a conversion at
+-- every access); anything else is computed as a number and truncated.
+indexExpression :: E -> Staged String
+indexExpression e = do
+  s <- Staged get
+  if ssTarget s == Haskell && wholeArithmetic (nodeId e)
+    then pure (intExpression (ssIntVars s) (nodeId e))
+    else do
+      d <- expression e
+      pure (if ssTarget s == Haskell then "(truncate " ++ d ++ ")" else d)
+  where
+    wholeArithmetic i = case nodeById i of
+      Lit w -> isWhole (castWord64ToDouble w)
+      Sym _ -> True
+      Bin op a b -> op `elem` [Add, Sub, Mul] && wholeArithmetic a && wholeArithmetic b
+      Un Neg a -> wholeArithmetic a
+      _ -> False
+    isWhole v = v == fromIntegral (truncate v :: Int) && abs v < 2 ^ (52 :: Int)
+
+-- | A whole-number expression (a node) as 'Int' arithmetic: loop numbers by
+-- their counters, other names (stored whole numbers) truncated.
+intExpression :: M.Map String String -> Int -> String
+intExpression counters = go
+  where
+    go i = case nodeById i of
+      Lit w -> let v = truncate (castWord64ToDouble w) :: Int in if v < 0 then "(" ++ show v ++ ")" else show v
+      Sym n -> maybe ("(truncate " ++ n ++ ")") id (M.lookup n counters)
+      Bin Add a b -> "(" ++ go a ++ " + " ++ go b ++ ")"
+      Bin Sub a b -> "(" ++ go a ++ " - " ++ go b ++ ")"
+      Bin Mul a b -> "(" ++ go a ++ " * " ++ go b ++ ")"
+      Un Neg a -> "(negate " ++ go a ++ ")"
+      n -> error ("intExpression: not whole-number arithmetic: " ++ show n)
 
 -- | Run a block on the side and return the lines it printed (in order of
 -- emission, reversed as the state keeps them), leaving the state's lines as
@@ -351,7 +394,7 @@ stageProceduresFor target = go M.empty
     go _ [] = []
     go seen ((p, body) : rest) =
       let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
-          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty [] target
+          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty [] target M.empty
           s1 = execState (m >> unStaged closeFunction) s0
           main = unlines (functionHead target (procName p) (procArrays p) (procScalars p) : reverse (ssLines s1) ++ functionEnd target)
           fresh = [ (n, t) | n <- reverse (ssOrder s1), let t = ssSubroutines s1 M.! n
