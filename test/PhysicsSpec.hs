@@ -543,7 +543,9 @@ spec = do
       head pc `shouldSatisfy` (> 0)
       imageGap `shouldSatisfy` (> 0.4 - 0.02 * 0.2)
       lastDepth `shouldSatisfy` (< 0.02)
-      directGap `shouldSatisfy` (> 2) -- far apart in R³
+      -- far apart in R³ (they start 2.78 apart; touching directly would
+      -- take under 0.4), so what pushed them was the image's contact
+      directGap `shouldSatisfy` (> 1)
       speed a `shouldSatisfy` (> 0.01)
       speed b `shouldSatisfy` (> 0.01)
       sum sc `shouldBe` 0
@@ -675,8 +677,8 @@ spec = do
       let drift = maximum (map (abs . xOf) bs)
           tilt = maximum (map (abs . bsAngle) bs)
       labelled "frictionless two-box stack after 1000 steps: max drift / size, max tilt (rad)" (fmt (drift / boxSize) ++ ", " ++ fmt tilt)
-      unless (drift < 0.1 * boxSize && tilt < 0.01) $
-        pendingWith ("ENGINE DEFECT: a frictionless stack slides apart: drift " ++ fmt (drift / boxSize) ++ " of a box, tilt "
-          ++ fmt tilt ++ " rad. The two contact sets of a pair ('A's vertices in B' along B's edge normal, 'B's vertices "
-          ++ "in A' along A's) disagree once the boxes are slightly tilted, and without friction the difference "
-          ++ "is an unbalanced sideways impulse")
+      -- (it slid apart while each pair had two contact sets, one per body,
+      -- which disagreed once the boxes tilted: without friction the
+      -- difference was an unbalanced sideways impulse)
+      drift `shouldSatisfy` (< 0.1 * boxSize)
+      tilt `shouldSatisfy` (< 0.01)

@@ -8,9 +8,11 @@
 -- frame, it lies inside the star-shaped outline that Y's polygon makes there;
 -- the depth is its distance to the outline edge its direction crosses, and
 -- the direction that resolves the overlap over the shortest distance is that
--- edge's outward normal. Of the vertices of one body inside another, the
--- deepest gives the direction and the two extreme ones along the contact
--- line become the contact points, so that a box resting on a box has two.
+-- edge's outward normal. Of a touching pair, the body whose vertex goes
+-- deepest into the other is the one pushed out: that vertex's edge is the
+-- reference edge, and the two extreme vertices inside, along the edge,
+-- become the pair's two contact points, so that a box resting on a box has
+-- two.
 module Manifold.Collide
   ( collide
   , buildGrid
@@ -121,6 +123,20 @@ neighbours w p visit = do
 pointInBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m))
 {-# INLINE pointInBody #-}
 pointInBody l w j y q = do
+  e <- edgeFacing l w j y q
+  pure (efDepth e, efNormal e)
+
+-- | The outline edge of body Y that the direction from Y's centre to a
+-- point crosses, seen from the point.
+data EdgeFacing s = EdgeFacing
+  { efDepth :: s -- ^ how far the point is inside, across this edge (negative outside or off the sheet)
+  , efNormal :: V3 s -- ^ the edge's outward normal, in Y's tangent plane
+  , efVertex :: V3 s -- ^ one end of the edge
+  }
+
+edgeFacing :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (EdgeFacing (Scalar m))
+{-# INLINE edgeFacing #-}
+edgeFacing l w j y q = do
   let nd = polyDirections (polygon l)
       sector = constant (2 * pi / fromIntegral nd)
       c = bfCentre y
@@ -150,7 +166,7 @@ pointInBody l w j y q = do
       m = (ey * normal2) *^ bfU y ^+^ (negate ex * normal2) *^ bfW y
   depthS <- share depth'
   m' <- share3 m
-  pure (depthS, m')
+  pure (EdgeFacing depthS m' o0)
 
 -- | A contact row pair into the contact array: body @a@ at point @ra@ is
 -- pushed along @dirA@, body @b@ (if @b >= 0@) at @rb@ against @dirB@.
@@ -201,62 +217,105 @@ whenNear :: Imp m => BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
 {-# INLINE whenNear #-}
 whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre fy))
 
--- | The outline vertices of body @x@, mapped by the isometry @g@ (the
--- identity, or the image of @x@ that @y@ meets), tested against body @y@; up
--- to two contacts. The contact direction found at @y@ is carried back to
--- @x@ by the inverse of g's linear part (which is its own inverse).
+-- | The contacts of a touching pair: body @x@, mapped by the isometry @g@
+-- (the identity, or the image of @x@ that @y@ meets), and body @y@; up to
+-- two rows in all.
+--
+-- Both ways round are probed (x's outline vertices inside y, and y's inside
+-- x); the way whose deepest vertex goes deeper (by a tenth, so that the
+-- choice does not flicker between nearly equal ways; x's vertices in y when
+-- equal) gives the contact: the edge its deepest vertex crosses is the
+-- reference edge, whose outward normal pushes both contact points, and of
+-- the vertices inside, the two extremes along that edge are the points,
+-- each as deep as it lies behind the edge's line. One normal for both
+-- points keeps a box on a box level: a vertex near a corner, measured
+-- across the side edge it happens to face, would push the box sideways.
+-- Both ways' rows (four for a box on a box, which mostly say the same
+-- thing twice) made the solver's work grow faster than the bodies.
 --
 -- Printed as one JavaScript subroutine for every pair and image (the
 -- isometry is passed as numbers): inlined at each of its call sites, the
 -- collision phase outgrew what V8 optimises on the quotient spaces.
-vertexContacts :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
-               -> Index m -> Index m -> Isometry -> Scalar m -> m ()
-vertexContacts l w owner keyBase x y g selfScale =
-  subroutine "vertexContacts"
-    ([toScalar owner, keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g) ++ [selfScale])
+pairContacts :: Imp m => Layout -> WorldArrays (Array m) -> Scalar m
+             -> Index m -> Index m -> Isometry -> m ()
+pairContacts l w keyBase x y g =
+  subroutine "pairContacts"
+    ([keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g))
     (\args -> case args of
-        [owner', keyBase', x', y', sx, sy, sz, tx, ty, tz, selfScale'] ->
-          vertexContactsVia l w (toIndex owner') keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz) selfScale'
-        _ -> error "vertexContacts: eleven arguments")
+        [keyBase', x', y', sx, sy, sz, tx, ty, tz] ->
+          pairContactsVia l w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
+        _ -> error "pairContacts: nine arguments")
   where coefficients (V3 a b c) = map constant [a, b, c]
 
--- | 'vertexContacts' with the isometry @p ↦ signs·p + shift@ as scalars.
-vertexContactsVia :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m
-                  -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
-{-# INLINE vertexContactsVia #-}
-vertexContactsVia l w owner keyBase x y signs shift selfScale = do
+-- | 'pairContacts' with the isometry @p ↦ signs·p + shift@ as scalars (its
+-- inverse is @p ↦ signs·p − signs·shift@: the signs are ±1, so the linear
+-- part is its own inverse).
+pairContactsVia :: Imp m => Layout -> WorldArrays (Array m) -> Scalar m
+                -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> m ()
+{-# INLINE pairContactsVia #-}
+pairContactsVia l w keyBase x y signs shift = do
+  let nd = fromIntegral (polyDirections (polygon l))
+  backShift <- share3 (negated (signs * shift))
+  (deepXY, normalXY, edgeXY) <- deepestInside l w x y signs shift
+  (deepYX, normalYX, edgeYX) <- deepestInside l w y x signs backShift
+  yInX <- share (deepYX - 1.1 * deepXY)
+  let pick a b = select yInX b a
+      pick3 (V3 a b c) (V3 u v s) = V3 (pick a u) (pick b v) (pick c s)
+  best <- share (maxF deepXY deepYX)
+  whenPositive best $ do
+    -- the mover's vertices are inside the reference body
+    mover <- share (pick (toScalar x) (toScalar y))
+    reference <- share (pick (toScalar y) (toScalar x))
+    moverShift <- share3 (pick3 shift backShift)
+    m0 <- share3 (pick3 normalXY normalYX)
+    o0 <- share3 (pick3 edgeXY edgeYX)
+    let image q = signs * q + moverShift
+        linear v = signs * v
+        mv = toIndex mover
+        rf = toIndex reference
+    fr <- bodyFrame w rf
+    t <- share3 (bfNormal fr `cross` m0)
+    (dLo, dHi) <- extremesAlong nd $ \d -> do
+      q <- outlineVertex l w mv d
+      depth <- newRef (-1)
+      whenNear fr (image q) (pointInBody l w rf fr (image q) >>= writeRef depth . fst)
+      (, ((image q) ^-^ bfCentre fr) `dot` t) <$> readRef depth
+    let emitAt slot dv = do
+          q <- outlineVertex l w mv (toIndex dv)
+          query <- share3 (image q)
+          emitContact w x (keyBase + slot) mv reference q (linear m0) query m0 ((o0 ^-^ query) `dot` m0) 1 1 linear
+    emitAt 0 dLo
+    whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
+
+-- | Of body @x@'s outline vertices, mapped by @p ↦ signs·p + shift@, the
+-- one deepest inside body @y@: its depth (0 when none is inside), and the
+-- outward normal and a vertex of the edge of y it lies behind.
+deepestInside :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m
+              -> V3 (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
+{-# INLINE deepestInside #-}
+deepestInside l w x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
-      linear v = signs * v
   fy <- bodyFrame w y
   deepest <- newRef 0
   mx <- newRef 0
   my <- newRef 0
   mz <- newRef 0
+  ox <- newRef 0
+  oy <- newRef 0
+  oz <- newRef 0
   forEach nd $ \d -> do
     q <- outlineVertex l w x d
     whenNear fy (image q) $ do
-      (depth, m) <- pointInBody l w y fy (image q)
+      e <- edgeFacing l w y fy (image q)
       best <- readRef deepest
-      whenPositive (depth - best) $ do
-        writeRef deepest depth
-        let V3 a b c = m in writeRef mx a >> writeRef my b >> writeRef mz c
-  best <- readRef deepest
-  whenPositive best $ do
-    m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
-    t <- share3 (bfNormal fy `cross` m0)
-    (dLo, dHi) <- extremesAlong nd $ \d -> do
-      q <- outlineVertex l w x d
-      depth <- newRef (-1)
-      whenNear fy (image q) (pointInBody l w y fy (image q) >>= writeRef depth . fst)
-      (, ((image q) ^-^ bfCentre fy) `dot` t) <$> readRef depth
-    let emitAt slot dv = do
-          q <- outlineVertex l w x (toIndex dv)
-          query <- share3 (image q)
-          (depth, m) <- pointInBody l w y fy query
-          emitContact w owner (keyBase + slot) x (toScalar y) q (linear m) query m depth selfScale 1 linear
-    emitAt 0 dLo
-    whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
+      whenPositive (efDepth e - best) $ do
+        writeRef deepest (efDepth e)
+        let V3 a b c = efNormal e in writeRef mx a >> writeRef my b >> writeRef mz c
+        let V3 u v s = efVertex e in writeRef ox u >> writeRef oy v >> writeRef oz s
+  (,,) <$> readRef deepest
+       <*> (V3 <$> readRef mx <*> readRef my <*> readRef mz)
+       <*> (V3 <$> readRef ox <*> readRef oy <*> readRef oz)
 
 -- | Of the outline vertices @d@ whose probe gives a positive depth, the two
 -- with the least and the greatest position along the contact line (−1 when
@@ -441,9 +500,7 @@ collide sp l w = do
               invMj <- readSlot w j InvMass
               let gap = ri + rj - norm (gp ^-^ pj)
               whenPositive (minF gap (invMi + invMj)) $ do
-                let base = (toScalar j + 1) * 64 + keyOffset
-                vertexContacts l w i base i j g 1
-                vertexContacts l w i (base + 2) j i (inverseIso g) 1
+                pairContacts l w ((toScalar j + 1) * 64 + keyOffset) i j g
     pairs identityIso 0 False
     mapM_ (\(k, g) -> pairs g (16 + 4 * fromIntegral k) (selfImage g)) (zip [0 :: Int ..] images)
     boundaryContacts sp l w i

@@ -162,8 +162,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                 let !t65 = (t34 + (negate t59))
                 let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
                 if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                  vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t55 + 1.0) * 64.0) + 2.0) t55 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
                   pure ()
                 else do
                   pure ()

@@ -163,8 +163,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t69 = (t34 + (negate t63))
                   let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
                   if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t59 + 1.0) * 64.0) + 2.0) t59 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -224,8 +223,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t104 = (s72 + (negate t98))
                   let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
                   if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t94 + 1.0) * 64.0) + 16.0) + 2.0) t94 d31 1.0 1.0 (-1.0) 2.0 (-0.0) (-2.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -285,8 +283,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t139 = (s107 + (negate t133))
                   let !t140 = ((t35 + t134) - (sqrt (((t137 * t137) + (t138 * t138)) + (t139 * t139))))
                   if (if (t136 - t140) > 0 then t140 else t136) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t129 + 1.0) * 64.0) + 20.0) d31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t129 + 1.0) * 64.0) + 20.0) + 2.0) t129 d31 1.0 1.0 (-1.0) 2.0 (-0.0) 0.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t129 + 1.0) * 64.0) + 20.0) d31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -346,8 +343,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t174 = (s142 + (negate t168))
                   let !t175 = ((t35 + t169) - (sqrt (((t172 * t172) + (t173 * t173)) + (t174 * t174))))
                   if (if (t171 - t175) > 0 then t175 else t171) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t164 + 1.0) * 64.0) + 24.0) d31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t164 + 1.0) * 64.0) + 24.0) + 2.0) t164 d31 1.0 1.0 (-1.0) 2.0 (-0.0) 2.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t164 + 1.0) * 64.0) + 24.0) d31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -404,8 +400,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t206 = (s176 + (negate t200))
                   let !t207 = ((t35 + t201) - (sqrt (((t204 * t204) + (t205 * t205)) + (t206 * t206))))
                   if (if (t203 - t207) > 0 then t207 else t203) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t196 + 1.0) * 64.0) + 28.0) d31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t196 + 1.0) * 64.0) + 28.0) + 2.0) t196 d31 1.0 1.0 1.0 (-0.0) (-0.0) 2.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t196 + 1.0) * 64.0) + 28.0) d31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -462,8 +457,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t238 = (s208 + (negate t232))
                   let !t239 = ((t35 + t233) - (sqrt (((t236 * t236) + (t237 * t237)) + (t238 * t238))))
                   if (if (t235 - t239) > 0 then t239 else t235) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t228 + 1.0) * 64.0) + 32.0) d31 t228 1.0 1.0 1.0 0.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t228 + 1.0) * 64.0) + 32.0) + 2.0) t228 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-2.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t228 + 1.0) * 64.0) + 32.0) d31 t228 1.0 1.0 1.0 0.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -523,8 +517,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t273 = (s241 + (negate t267))
                   let !t274 = ((t35 + t268) - (sqrt (((t271 * t271) + (t272 * t272)) + (t273 * t273))))
                   if (if (t270 - t274) > 0 then t274 else t270) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t263 + 1.0) * 64.0) + 36.0) d31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t263 + 1.0) * 64.0) + 36.0) + 2.0) t263 d31 1.0 1.0 (-1.0) (-2.0) (-0.0) (-2.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t263 + 1.0) * 64.0) + 36.0) d31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -584,8 +577,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t308 = (s276 + (negate t302))
                   let !t309 = ((t35 + t303) - (sqrt (((t306 * t306) + (t307 * t307)) + (t308 * t308))))
                   if (if (t305 - t309) > 0 then t309 else t305) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t298 + 1.0) * 64.0) + 40.0) d31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t298 + 1.0) * 64.0) + 40.0) + 2.0) t298 d31 1.0 1.0 (-1.0) (-2.0) (-0.0) 0.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t298 + 1.0) * 64.0) + 40.0) d31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -645,8 +637,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t343 = (s311 + (negate t337))
                   let !t344 = ((t35 + t338) - (sqrt (((t341 * t341) + (t342 * t342)) + (t343 * t343))))
                   if (if (t340 - t344) > 0 then t344 else t340) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t333 + 1.0) * 64.0) + 44.0) d31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t333 + 1.0) * 64.0) + 44.0) + 2.0) t333 d31 1.0 1.0 (-1.0) (-2.0) (-0.0) 2.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t333 + 1.0) * 64.0) + 44.0) d31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0
                     pure ()
                   else do
                     pure ()

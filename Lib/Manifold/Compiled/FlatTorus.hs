@@ -163,8 +163,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t69 = (t34 + (negate t63))
                   let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
                   if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t59 + 1.0) * 64.0) + 2.0) t59 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-0.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -224,8 +223,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t104 = (s72 + (negate t98))
                   let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
                   if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t94 + 1.0) * 64.0) + 16.0) + 2.0) t94 d31 1.0 1.0 1.0 2.0 (-0.0) 2.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -282,8 +280,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t136 = (t34 + (negate t130))
                   let !t137 = ((t35 + t131) - (sqrt (((t134 * t134) + (t135 * t135)) + (t136 * t136))))
                   if (if (t133 - t137) > 0 then t137 else t133) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t126 + 1.0) * 64.0) + 20.0) d31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t126 + 1.0) * 64.0) + 20.0) + 2.0) t126 d31 1.0 1.0 1.0 2.0 (-0.0) (-0.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t126 + 1.0) * 64.0) + 20.0) d31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -343,8 +340,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t171 = (s139 + (negate t165))
                   let !t172 = ((t35 + t166) - (sqrt (((t169 * t169) + (t170 * t170)) + (t171 * t171))))
                   if (if (t168 - t172) > 0 then t172 else t168) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t161 + 1.0) * 64.0) + 24.0) d31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t161 + 1.0) * 64.0) + 24.0) + 2.0) t161 d31 1.0 1.0 1.0 2.0 (-0.0) (-2.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t161 + 1.0) * 64.0) + 24.0) d31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -401,8 +397,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t203 = (s173 + (negate t197))
                   let !t204 = ((t35 + t198) - (sqrt (((t201 * t201) + (t202 * t202)) + (t203 * t203))))
                   if (if (t200 - t204) > 0 then t204 else t200) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t193 + 1.0) * 64.0) + 28.0) d31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t193 + 1.0) * 64.0) + 28.0) + 2.0) t193 d31 1.0 1.0 1.0 (-0.0) (-0.0) 2.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t193 + 1.0) * 64.0) + 28.0) d31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -459,8 +454,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t235 = (s205 + (negate t229))
                   let !t236 = ((t35 + t230) - (sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235))))
                   if (if (t232 - t236) > 0 then t236 else t232) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t225 + 1.0) * 64.0) + 32.0) d31 t225 1.0 1.0 1.0 0.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t225 + 1.0) * 64.0) + 32.0) + 2.0) t225 d31 1.0 1.0 1.0 (-0.0) (-0.0) (-2.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t225 + 1.0) * 64.0) + 32.0) d31 t225 1.0 1.0 1.0 0.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -520,8 +514,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t270 = (s238 + (negate t264))
                   let !t271 = ((t35 + t265) - (sqrt (((t268 * t268) + (t269 * t269)) + (t270 * t270))))
                   if (if (t267 - t271) > 0 then t271 else t267) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t260 + 1.0) * 64.0) + 36.0) d31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0) 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t260 + 1.0) * 64.0) + 36.0) + 2.0) t260 d31 1.0 1.0 1.0 (-2.0) (-0.0) 2.0 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t260 + 1.0) * 64.0) + 36.0) d31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -578,8 +571,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t302 = (t34 + (negate t296))
                   let !t303 = ((t35 + t297) - (sqrt (((t300 * t300) + (t301 * t301)) + (t302 * t302))))
                   if (if (t299 - t303) > 0 then t303 else t299) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t292 + 1.0) * 64.0) + 40.0) d31 t292 1.0 1.0 1.0 2.0 0.0 0.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t292 + 1.0) * 64.0) + 40.0) + 2.0) t292 d31 1.0 1.0 1.0 (-2.0) (-0.0) (-0.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t292 + 1.0) * 64.0) + 40.0) d31 t292 1.0 1.0 1.0 2.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -639,8 +631,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
                   let !t337 = (s305 + (negate t331))
                   let !t338 = ((t35 + t332) - (sqrt (((t335 * t335) + (t336 * t336)) + (t337 * t337))))
                   if (if (t334 - t338) > 0 then t338 else t334) > 0 then do
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 (((t327 + 1.0) * 64.0) + 44.0) d31 t327 1.0 1.0 1.0 2.0 0.0 2.0 1.0
-                    vertexContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse d31 ((((t327 + 1.0) * 64.0) + 44.0) + 2.0) t327 d31 1.0 1.0 1.0 (-2.0) (-0.0) (-2.0) 1.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t327 + 1.0) * 64.0) + 44.0) d31 t327 1.0 1.0 1.0 2.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
