@@ -15,6 +15,7 @@ import Control.Monad (forM, forM_, replicateM, unless, when, zipWithM_)
 import Data.List (sortOn)
 import Data.Foldable (toList)
 import Data.IORef
+import qualified Data.Map.Strict as M
 import qualified Data.Vector.Unboxed.Mutable as MV
 import Linear.Metric (dot, norm, normalize, quadrance)
 import Linear.V3 (V3 (..), cross)
@@ -27,7 +28,9 @@ import Test.QuickCheck.Random (mkQCGen)
 import Text.Printf (printf)
 
 import Manifold
+import Manifold.Bench (benchScene)
 import Manifold.Engine
+import Manifold.Scene (loadScene)
 import Manifold.World
 import PhysicsUtil
 
@@ -668,6 +671,32 @@ spec = do
       forM_ summary $ \(name, bad, onSurface) -> do
         (name, bad) `shouldBe` (name, [])
         (name, onSurface) `shouldBe` (name, True)
+
+  describe "contact pairs" $
+    it "gives a touching pair at most two contact rows, both pushing along one direction (settled piles of 300 bodies)" $
+      forM_ [sphere, torus, projectivePlane, rectangle] $ \sp -> do
+        w <- loadScene 0 (benchScene sp 300) >>= either (fail . ((spaceName sp ++ ": ") ++)) pure
+        steps w 100
+        n <- contactCount w
+        let arr = wContacts (nwArrays w)
+            field :: Int -> ContactField -> IO Double
+            field c k = MV.read arr (contactStride * c + fromEnum k)
+        rows <- forM [0 .. n - 1] $ \c -> do
+          owner <- round <$> field c COwner
+          key <- round <$> field c CKey
+          dir <- V3 <$> field c JaX <*> field c JaY <*> field c JaZ
+          pure ((owner, key `div` 4 :: Int), dir)
+        -- under its owner, a pair (through one image) has the keys 4k to
+        -- 4k + 3 (it used up all four, two for each body's vertices in the
+        -- other); a body's boundary rows are 8 and 9, its self-contact 12
+        let groups = M.elems (M.fromListWith (++) [(k, [d]) | (k, d) <- rows])
+            largest = maximum (0 : map length groups)
+            spread = maximum (0 : [norm (d - d') | d : ds <- groups, d' <- ds])
+        labelled ("contact pairs " ++ spaceName sp ++ ": rows, pairs, largest pair, direction spread")
+          (show n ++ ", " ++ show (length groups) ++ ", " ++ show largest ++ ", " ++ fmt spread)
+        (spaceName sp, n > 100) `shouldBe` (spaceName sp, True) -- a pile, not a scattering
+        (spaceName sp, largest) `shouldSatisfy` ((<= 2) . snd)
+        (spaceName sp, spread) `shouldSatisfy` ((< 1e-12) . snd)
 
   describe "frictionless stacking" $
     it "a frictionless stack of two boxes stands for 1000 steps" $ do
