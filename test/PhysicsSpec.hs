@@ -698,6 +698,17 @@ spec = do
         (spaceName sp, largest) `shouldSatisfy` ((<= 2) . snd)
         (spaceName sp, spread) `shouldSatisfy` ((< 1e-12) . snd)
 
+  describe "deep overlaps" $
+    it "separates two circles whose centres start 0.4 radii apart (a vertex past the other's centre faces its far edge), without passing them through each other" $ do
+      w <- mkWorld plane defaultParams { pGravity = False }
+             [dyn circle 0.2 (V3 (-0.04) 0 0) 0 0 0, dyn circle 0.2 (V3 0.04 0 0) 0 0 0]
+      steps w 200
+      [a, b] <- bodyStates w
+      let apart = norm (bsPos a - bsPos b)
+      labelled "deep overlap: centre distance after 200 steps (touching at 0.4), x of each" (fmt apart ++ ", " ++ fmt (xOf a) ++ ", " ++ fmt (xOf b))
+      apart `shouldSatisfy` (> 0.4)
+      xOf a `shouldSatisfy` (< xOf b)
+
   describe "frictionless stacking" $
     it "a frictionless stack of two boxes stands for 1000 steps" $ do
       w <- mkWorld plane defaultParams { pFriction = 0 } (take 3 (scBodies (stackScenario defaultParams)))

@@ -267,13 +267,19 @@ pairContactsVia l w keyBase x y signs shift = do
     mover <- share (pick (toScalar x) (toScalar y))
     reference <- share (pick (toScalar y) (toScalar x))
     moverShift <- share3 (pick3 shift backShift)
-    m0 <- share3 (pick3 normalXY normalYX)
+    edgeNormal <- share3 (pick3 normalXY normalYX)
     o0 <- share3 (pick3 edgeXY edgeYX)
     let image q = signs * q + moverShift
         linear v = signs * v
         mv = toIndex mover
         rf = toIndex reference
     fr <- bodyFrame w rf
+    -- a vertex pushed past the reference body's centre faces its far edge,
+    -- whose normal would push the mover further in: then the push is
+    -- turned round, and its depth is the deepest vertex's
+    moverCentre <- read3 (wPos w) mv
+    facing <- share ((image moverCentre ^-^ bfCentre fr) `dot` edgeNormal)
+    m0 <- share3 (fmap (\v -> select facing v (negate v)) edgeNormal)
     t <- share3 (bfNormal fr `cross` m0)
     (dLo, dHi) <- extremesAlong nd $ \d -> do
       q <- outlineVertex l w mv d
@@ -283,7 +289,7 @@ pairContactsVia l w keyBase x y signs shift = do
     let emitAt slot dv = do
           q <- outlineVertex l w mv (toIndex dv)
           query <- share3 (image q)
-          emitContact w x (keyBase + slot) mv reference q (linear m0) query m0 ((o0 ^-^ query) `dot` m0) 1 1 linear
+          emitContact w x (keyBase + slot) mv reference q (linear m0) query m0 (select facing ((o0 ^-^ query) `dot` m0) best) 1 1 linear
     emitAt 0 dLo
     whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 

@@ -209,70 +209,77 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
     t163 <- rdI scalars ((6 * (truncate s140)) + 5)
     t164 <- rdI scalars ((6 * (truncate s140)) + 2)
     t165 <- rdI scalars ((6 * (truncate s140)) + 3)
-    let !s166 = ((t154 * s146) - (t155 * s145))
-    let !s167 = ((t155 * s144) - (t153 * s146))
-    let !s168 = ((t153 * s145) - (t154 * s144))
-    v169 <- newR 1.0e300
-    v170 <- newR (-1.0e300)
-    v171 <- newR (-1.0)
-    v172 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i173 -> do
-      let !d173 = fromIntegral i173 :: Double
-      t174 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + (i173 * 4)) + 3))
-      t175 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + (i173 * 4)) + 3)) + 1)
-      t176 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + (i173 * 4)) + 3)) + 2)
-      v177 <- newR (-1.0)
-      let !t178 = (((a3 * t174) + s141) + (negate t150))
-      let !t179 = (((a4 * t175) + s142) + (negate t151))
-      let !t180 = (((a5 * t176) + s143) + (negate t152))
-      if ((t163 * t163) - (((t178 * t178) + (t179 * t179)) + (t180 * t180))) > 0 then do
-        let !s181 = (((t178 * t156) + (t179 * t157)) + (t180 * t158))
-        let !s182 = (((t178 * s159) + (t179 * s160)) + (t180 * s161))
-        let !s183 = (((t178 * t153) + (t179 * t154)) + (t180 * t155))
-        let !t184 = (sqrt ((s181 * s181) + (s182 * s182)))
-        let !t185 = ((if s181 > 0 then (2.0 * (atan (s182 / (t184 + s181)))) else (if (abs s182) > 0 then (2.0 * (atan ((t184 - s181) / s182))) else (if (negate s181) > 0 then 3.141592653589793 else 0.0))) - t162)
-        let !t186 = (floorF ((t185 - (6.283185307179586 * (floorF (t185 / 6.283185307179586)))) / 0.2617993877991494))
-        let !s187 = (if (t186 - 23.0) > 0 then 23.0 else t186)
-        t188 <- rdI verts (3 * ((((97 * (truncate s140)) + 1) + ((truncate s187) * 4)) + 3))
-        t189 <- rdI verts ((3 * ((((97 * (truncate s140)) + 1) + ((truncate s187) * 4)) + 3)) + 1)
-        t190 <- rdI verts ((3 * ((((97 * (truncate s140)) + 1) + ((truncate s187) * 4)) + 3)) + 2)
-        t191 <- rdI verts (truncate (3.0 * ((((97.0 * s140) + 1.0) + ((if ((s187 - 24.0) + 1.5) > 0 then 0.0 else (s187 + 1.0)) * 4.0)) + 3.0)))
-        t192 <- rdI verts (truncate ((3.0 * ((((97.0 * s140) + 1.0) + ((if ((s187 - 24.0) + 1.5) > 0 then 0.0 else (s187 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-        t193 <- rdI verts (truncate ((3.0 * ((((97.0 * s140) + 1.0) + ((if ((s187 - 24.0) + 1.5) > 0 then 0.0 else (s187 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-        let !t194 = (negate t150)
-        let !t195 = (negate t151)
-        let !t196 = (negate t152)
-        let !s197 = (((((t191 + t194) * t156) + ((t192 + t195) * t157)) + ((t193 + t196) * t158)) - ((((t188 + t194) * t156) + ((t189 + t195) * t157)) + ((t190 + t196) * t158)))
-        let !s198 = (((((t191 + t194) * s159) + ((t192 + t195) * s160)) + ((t193 + t196) * s161)) - ((((t188 + t194) * s159) + ((t189 + t195) * s160)) + ((t190 + t196) * s161)))
-        let !s199 = (sqrt ((s197 * s197) + (s198 * s198)))
-        let !t200 = (t188 + t194)
-        let !t201 = (t189 + t195)
-        let !t202 = (t190 + t196)
-        let !s203 = (if (t163 - (abs s183)) > 0 then (if s199 > 0 then (((s197 * (s182 - (((t200 * s159) + (t201 * s160)) + (t202 * s161)))) - (s198 * (s181 - (((t200 * t156) + (t201 * t157)) + (t202 * t158))))) / s199) else (-1.0)) else (-1.0))
-        let !t204 = (if s199 > 0 then (recip s199) else 0.0)
-        let !t205 = (s198 * t204)
-        let !t206 = ((negate s197) * t204)
-        let !s207 = ((t205 * t156) + (t206 * s159))
-        let !s208 = ((t205 * t157) + (t206 * s160))
-        let !s209 = ((t205 * t158) + (t206 * s161))
-        setR v177 s203
+    t166 <- rdI pos (3 * (truncate s139))
+    t167 <- rdI pos ((3 * (truncate s139)) + 1)
+    t168 <- rdI pos ((3 * (truncate s139)) + 2)
+    let !s169 = ((((((a3 * t166) + s141) + (negate t150)) * s144) + ((((a4 * t167) + s142) + (negate t151)) * s145)) + ((((a5 * t168) + s143) + (negate t152)) * s146))
+    let !s170 = (if s169 > 0 then s144 else (negate s144))
+    let !s171 = (if s169 > 0 then s145 else (negate s145))
+    let !s172 = (if s169 > 0 then s146 else (negate s146))
+    let !s173 = ((t154 * s172) - (t155 * s171))
+    let !s174 = ((t155 * s170) - (t153 * s172))
+    let !s175 = ((t153 * s171) - (t154 * s170))
+    v176 <- newR 1.0e300
+    v177 <- newR (-1.0e300)
+    v178 <- newR (-1.0)
+    v179 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i180 -> do
+      let !d180 = fromIntegral i180 :: Double
+      t181 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + (i180 * 4)) + 3))
+      t182 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + (i180 * 4)) + 3)) + 1)
+      t183 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + (i180 * 4)) + 3)) + 2)
+      v184 <- newR (-1.0)
+      let !t185 = (((a3 * t181) + s141) + (negate t150))
+      let !t186 = (((a4 * t182) + s142) + (negate t151))
+      let !t187 = (((a5 * t183) + s143) + (negate t152))
+      if ((t163 * t163) - (((t185 * t185) + (t186 * t186)) + (t187 * t187))) > 0 then do
+        let !s188 = (((t185 * t156) + (t186 * t157)) + (t187 * t158))
+        let !s189 = (((t185 * s159) + (t186 * s160)) + (t187 * s161))
+        let !s190 = (((t185 * t153) + (t186 * t154)) + (t187 * t155))
+        let !t191 = (sqrt ((s188 * s188) + (s189 * s189)))
+        let !t192 = ((if s188 > 0 then (2.0 * (atan (s189 / (t191 + s188)))) else (if (abs s189) > 0 then (2.0 * (atan ((t191 - s188) / s189))) else (if (negate s188) > 0 then 3.141592653589793 else 0.0))) - t162)
+        let !t193 = (floorF ((t192 - (6.283185307179586 * (floorF (t192 / 6.283185307179586)))) / 0.2617993877991494))
+        let !s194 = (if (t193 - 23.0) > 0 then 23.0 else t193)
+        t195 <- rdI verts (3 * ((((97 * (truncate s140)) + 1) + ((truncate s194) * 4)) + 3))
+        t196 <- rdI verts ((3 * ((((97 * (truncate s140)) + 1) + ((truncate s194) * 4)) + 3)) + 1)
+        t197 <- rdI verts ((3 * ((((97 * (truncate s140)) + 1) + ((truncate s194) * 4)) + 3)) + 2)
+        t198 <- rdI verts (truncate (3.0 * ((((97.0 * s140) + 1.0) + ((if ((s194 - 24.0) + 1.5) > 0 then 0.0 else (s194 + 1.0)) * 4.0)) + 3.0)))
+        t199 <- rdI verts (truncate ((3.0 * ((((97.0 * s140) + 1.0) + ((if ((s194 - 24.0) + 1.5) > 0 then 0.0 else (s194 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+        t200 <- rdI verts (truncate ((3.0 * ((((97.0 * s140) + 1.0) + ((if ((s194 - 24.0) + 1.5) > 0 then 0.0 else (s194 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+        let !t201 = (negate t150)
+        let !t202 = (negate t151)
+        let !t203 = (negate t152)
+        let !s204 = (((((t198 + t201) * t156) + ((t199 + t202) * t157)) + ((t200 + t203) * t158)) - ((((t195 + t201) * t156) + ((t196 + t202) * t157)) + ((t197 + t203) * t158)))
+        let !s205 = (((((t198 + t201) * s159) + ((t199 + t202) * s160)) + ((t200 + t203) * s161)) - ((((t195 + t201) * s159) + ((t196 + t202) * s160)) + ((t197 + t203) * s161)))
+        let !s206 = (sqrt ((s204 * s204) + (s205 * s205)))
+        let !t207 = (t195 + t201)
+        let !t208 = (t196 + t202)
+        let !t209 = (t197 + t203)
+        let !s210 = (if (t163 - (abs s190)) > 0 then (if s206 > 0 then (((s204 * (s189 - (((t207 * s159) + (t208 * s160)) + (t209 * s161)))) - (s205 * (s188 - (((t207 * t156) + (t208 * t157)) + (t209 * t158))))) / s206) else (-1.0)) else (-1.0))
+        let !t211 = (if s206 > 0 then (recip s206) else 0.0)
+        let !t212 = (s205 * t211)
+        let !t213 = ((negate s204) * t211)
+        let !s214 = ((t212 * t156) + (t213 * s159))
+        let !s215 = ((t212 * t157) + (t213 * s160))
+        let !s216 = ((t212 * t158) + (t213 * s161))
+        setR v184 s210
         pure ()
       else do
         pure ()
-      t210 <- getR v177
-      if t210 > 0 then do
-        let !s211 = (((t178 * s166) + (t179 * s167)) + (t180 * s168))
-        t212 <- getR v169
-        if (t212 - s211) > 0 then do
-          setR v169 s211
-          setR v171 d173
+      t217 <- getR v184
+      if t217 > 0 then do
+        let !s218 = (((t185 * s173) + (t186 * s174)) + (t187 * s175))
+        t219 <- getR v176
+        if (t219 - s218) > 0 then do
+          setR v176 s218
+          setR v178 d180
           pure ()
         else do
           pure ()
-        t213 <- getR v170
-        if (s211 - t213) > 0 then do
-          setR v170 s211
-          setR v172 d173
+        t220 <- getR v177
+        if (s218 - t220) > 0 then do
+          setR v177 s218
+          setR v179 d180
           pure ()
         else do
           pure ()
@@ -280,206 +287,206 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       else do
         pure ()
       pure ()
-    t214 <- getR v171
-    t215 <- getR v172
-    t216 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + ((truncate t214) * 4)) + 3))
-    t217 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t214) * 4)) + 3)) + 1)
-    t218 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t214) * 4)) + 3)) + 2)
-    let !s219 = ((a3 * t216) + s141)
-    let !s220 = ((a4 * t217) + s142)
-    let !s221 = ((a5 * t218) + s143)
-    t222 <- rdI meta 2
-    t223 <- rdI meta 3
-    if (((8.0 * (if (1.0 - t223) > 0 then 1.0 else t223)) - t222) - 0.5) > 0 then do
-      wrI meta 2 (t222 + 1.0)
-      t224 <- rdI pos (3 * (truncate s139))
-      t225 <- rdI pos ((3 * (truncate s139)) + 1)
-      t226 <- rdI pos ((3 * (truncate s139)) + 2)
-      t227 <- rdI normal (3 * (truncate s139))
-      t228 <- rdI normal ((3 * (truncate s139)) + 1)
-      t229 <- rdI normal ((3 * (truncate s139)) + 2)
-      t230 <- rdI axis (3 * (truncate s139))
-      t231 <- rdI axis ((3 * (truncate s139)) + 1)
-      t232 <- rdI axis ((3 * (truncate s139)) + 2)
-      let !s233 = ((t228 * t232) - (t229 * t231))
-      let !s234 = ((t229 * t230) - (t227 * t232))
-      let !s235 = ((t227 * t231) - (t228 * t230))
-      t236 <- rdI scalars (6 * (truncate s139))
-      t237 <- rdI scalars ((6 * (truncate s139)) + 5)
-      t238 <- rdI scalars ((6 * (truncate s139)) + 2)
-      t239 <- rdI scalars ((6 * (truncate s139)) + 3)
-      wrI contacts (30 * (truncate t222)) s139
-      wrI contacts ((30 * (truncate t222)) + 1) s140
-      wrI contacts ((30 * (truncate t222)) + 2) a1
-      wrI contacts ((30 * (truncate t222)) + 3) a0
-      let !t240 = (a3 * s144)
-      wrI contacts ((30 * (truncate t222)) + 4) (t240 + (negate ((((t227 * t240) + (t228 * (a4 * s145))) + (t229 * (a5 * s146))) * t227)))
-      let !t241 = (a4 * s145)
-      wrI contacts (((30 * (truncate t222)) + 4) + 1) (t241 + (negate ((((t227 * t240) + (t228 * t241)) + (t229 * (a5 * s146))) * t228)))
-      let !t242 = (a5 * s146)
-      wrI contacts (((30 * (truncate t222)) + 4) + 2) (t242 + (negate ((((t227 * t240) + (t228 * t241)) + (t229 * t242)) * t229)))
-      let !t243 = (t217 + (negate t225))
-      let !t244 = (t218 + (negate t226))
-      let !t245 = (t216 + (negate t224))
-      wrI contacts ((30 * (truncate t222)) + 7) (((((t243 * t242) - (t244 * t241)) * t227) + (((t244 * t240) - (t245 * t242)) * t228)) + (((t245 * t241) - (t243 * t240)) * t229))
-      let !t246 = ((t228 * t242) - (t229 * t241))
-      wrI contacts ((30 * (truncate t222)) + 12) (t246 + (negate ((((t227 * t246) + (t228 * ((t229 * t240) - (t227 * t242)))) + (t229 * ((t227 * t241) - (t228 * t240)))) * t227)))
-      let !t247 = ((t229 * t240) - (t227 * t242))
-      wrI contacts (((30 * (truncate t222)) + 12) + 1) (t247 + (negate ((((t227 * t246) + (t228 * t247)) + (t229 * ((t227 * t241) - (t228 * t240)))) * t228)))
-      let !t248 = ((t227 * t241) - (t228 * t240))
-      wrI contacts (((30 * (truncate t222)) + 12) + 2) (t248 + (negate ((((t227 * t246) + (t228 * t247)) + (t229 * t248)) * t229)))
-      wrI contacts ((30 * (truncate t222)) + 15) (((((t243 * t248) - (t244 * t247)) * t227) + (((t244 * t246) - (t245 * t248)) * t228)) + (((t245 * t247) - (t243 * t246)) * t229))
-      wrI contacts ((30 * (truncate t222)) + 20) ((((s147 + (negate s219)) * s144) + ((s148 + (negate s220)) * s145)) + ((s149 + (negate s221)) * s146))
-      wrI contacts ((30 * (truncate t222)) + 26) 1.0
-      wrI contacts ((30 * (truncate t222)) + 27) t216
-      wrI contacts (((30 * (truncate t222)) + 27) + 1) t217
-      wrI contacts (((30 * (truncate t222)) + 27) + 2) t218
+    t221 <- getR v178
+    t222 <- getR v179
+    t223 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + ((truncate t221) * 4)) + 3))
+    t224 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t221) * 4)) + 3)) + 1)
+    t225 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t221) * 4)) + 3)) + 2)
+    let !s226 = ((a3 * t223) + s141)
+    let !s227 = ((a4 * t224) + s142)
+    let !s228 = ((a5 * t225) + s143)
+    t229 <- rdI meta 2
+    t230 <- rdI meta 3
+    if (((8.0 * (if (1.0 - t230) > 0 then 1.0 else t230)) - t229) - 0.5) > 0 then do
+      wrI meta 2 (t229 + 1.0)
+      t231 <- rdI pos (3 * (truncate s139))
+      t232 <- rdI pos ((3 * (truncate s139)) + 1)
+      t233 <- rdI pos ((3 * (truncate s139)) + 2)
+      t234 <- rdI normal (3 * (truncate s139))
+      t235 <- rdI normal ((3 * (truncate s139)) + 1)
+      t236 <- rdI normal ((3 * (truncate s139)) + 2)
+      t237 <- rdI axis (3 * (truncate s139))
+      t238 <- rdI axis ((3 * (truncate s139)) + 1)
+      t239 <- rdI axis ((3 * (truncate s139)) + 2)
+      let !s240 = ((t235 * t239) - (t236 * t238))
+      let !s241 = ((t236 * t237) - (t234 * t239))
+      let !s242 = ((t234 * t238) - (t235 * t237))
+      t243 <- rdI scalars (6 * (truncate s139))
+      t244 <- rdI scalars ((6 * (truncate s139)) + 5)
+      t245 <- rdI scalars ((6 * (truncate s139)) + 2)
+      t246 <- rdI scalars ((6 * (truncate s139)) + 3)
+      wrI contacts (30 * (truncate t229)) s139
+      wrI contacts ((30 * (truncate t229)) + 1) s140
+      wrI contacts ((30 * (truncate t229)) + 2) a1
+      wrI contacts ((30 * (truncate t229)) + 3) a0
+      let !t247 = (a3 * s170)
+      wrI contacts ((30 * (truncate t229)) + 4) (t247 + (negate ((((t234 * t247) + (t235 * (a4 * s171))) + (t236 * (a5 * s172))) * t234)))
+      let !t248 = (a4 * s171)
+      wrI contacts (((30 * (truncate t229)) + 4) + 1) (t248 + (negate ((((t234 * t247) + (t235 * t248)) + (t236 * (a5 * s172))) * t235)))
+      let !t249 = (a5 * s172)
+      wrI contacts (((30 * (truncate t229)) + 4) + 2) (t249 + (negate ((((t234 * t247) + (t235 * t248)) + (t236 * t249)) * t236)))
+      let !t250 = (t224 + (negate t232))
+      let !t251 = (t225 + (negate t233))
+      let !t252 = (t223 + (negate t231))
+      wrI contacts ((30 * (truncate t229)) + 7) (((((t250 * t249) - (t251 * t248)) * t234) + (((t251 * t247) - (t252 * t249)) * t235)) + (((t252 * t248) - (t250 * t247)) * t236))
+      let !t253 = ((t235 * t249) - (t236 * t248))
+      wrI contacts ((30 * (truncate t229)) + 12) (t253 + (negate ((((t234 * t253) + (t235 * ((t236 * t247) - (t234 * t249)))) + (t236 * ((t234 * t248) - (t235 * t247)))) * t234)))
+      let !t254 = ((t236 * t247) - (t234 * t249))
+      wrI contacts (((30 * (truncate t229)) + 12) + 1) (t254 + (negate ((((t234 * t253) + (t235 * t254)) + (t236 * ((t234 * t248) - (t235 * t247)))) * t235)))
+      let !t255 = ((t234 * t248) - (t235 * t247))
+      wrI contacts (((30 * (truncate t229)) + 12) + 2) (t255 + (negate ((((t234 * t253) + (t235 * t254)) + (t236 * t255)) * t236)))
+      wrI contacts ((30 * (truncate t229)) + 15) (((((t250 * t255) - (t251 * t254)) * t234) + (((t251 * t253) - (t252 * t255)) * t235)) + (((t252 * t254) - (t250 * t253)) * t236))
+      wrI contacts ((30 * (truncate t229)) + 20) (if s169 > 0 then ((((s147 + (negate s226)) * s170) + ((s148 + (negate s227)) * s171)) + ((s149 + (negate s228)) * s172)) else s138)
+      wrI contacts ((30 * (truncate t229)) + 26) 1.0
+      wrI contacts ((30 * (truncate t229)) + 27) t223
+      wrI contacts (((30 * (truncate t229)) + 27) + 1) t224
+      wrI contacts (((30 * (truncate t229)) + 27) + 2) t225
       if (s140 + 0.5) > 0 then do
-        t249 <- rdI pos (3 * (truncate s140))
-        t250 <- rdI pos ((3 * (truncate s140)) + 1)
-        t251 <- rdI pos ((3 * (truncate s140)) + 2)
-        t252 <- rdI normal (3 * (truncate s140))
-        t253 <- rdI normal ((3 * (truncate s140)) + 1)
-        t254 <- rdI normal ((3 * (truncate s140)) + 2)
-        t255 <- rdI axis (3 * (truncate s140))
-        t256 <- rdI axis ((3 * (truncate s140)) + 1)
-        t257 <- rdI axis ((3 * (truncate s140)) + 2)
-        let !s258 = ((t253 * t257) - (t254 * t256))
-        let !s259 = ((t254 * t255) - (t252 * t257))
-        let !s260 = ((t252 * t256) - (t253 * t255))
-        t261 <- rdI scalars (6 * (truncate s140))
-        t262 <- rdI scalars ((6 * (truncate s140)) + 5)
-        t263 <- rdI scalars ((6 * (truncate s140)) + 2)
-        t264 <- rdI scalars ((6 * (truncate s140)) + 3)
-        wrI contacts ((30 * (truncate t222)) + 8) (s144 + (negate ((((t252 * s144) + (t253 * s145)) + (t254 * s146)) * t252)))
-        wrI contacts (((30 * (truncate t222)) + 8) + 1) (s145 + (negate ((((t252 * s144) + (t253 * s145)) + (t254 * s146)) * t253)))
-        wrI contacts (((30 * (truncate t222)) + 8) + 2) (s146 + (negate ((((t252 * s144) + (t253 * s145)) + (t254 * s146)) * t254)))
-        let !t265 = (s220 + (negate t250))
-        let !t266 = (s221 + (negate t251))
-        let !t267 = (s219 + (negate t249))
-        wrI contacts ((30 * (truncate t222)) + 11) (((((t265 * s146) - (t266 * s145)) * t252) + (((t266 * s144) - (t267 * s146)) * t253)) + (((t267 * s145) - (t265 * s144)) * t254))
-        let !t268 = (a3 * t246)
-        wrI contacts ((30 * (truncate t222)) + 16) (t268 + (negate ((((t252 * t268) + (t253 * (a4 * t247))) + (t254 * (a5 * t248))) * t252)))
-        let !t269 = (a4 * t247)
-        wrI contacts (((30 * (truncate t222)) + 16) + 1) (t269 + (negate ((((t252 * t268) + (t253 * t269)) + (t254 * (a5 * t248))) * t253)))
-        let !t270 = (a5 * t248)
-        wrI contacts (((30 * (truncate t222)) + 16) + 2) (t270 + (negate ((((t252 * t268) + (t253 * t269)) + (t254 * t270)) * t254)))
-        wrI contacts ((30 * (truncate t222)) + 19) (((((t265 * t270) - (t266 * t269)) * t252) + (((t266 * t268) - (t267 * t270)) * t253)) + (((t267 * t269) - (t265 * t268)) * t254))
+        t256 <- rdI pos (3 * (truncate s140))
+        t257 <- rdI pos ((3 * (truncate s140)) + 1)
+        t258 <- rdI pos ((3 * (truncate s140)) + 2)
+        t259 <- rdI normal (3 * (truncate s140))
+        t260 <- rdI normal ((3 * (truncate s140)) + 1)
+        t261 <- rdI normal ((3 * (truncate s140)) + 2)
+        t262 <- rdI axis (3 * (truncate s140))
+        t263 <- rdI axis ((3 * (truncate s140)) + 1)
+        t264 <- rdI axis ((3 * (truncate s140)) + 2)
+        let !s265 = ((t260 * t264) - (t261 * t263))
+        let !s266 = ((t261 * t262) - (t259 * t264))
+        let !s267 = ((t259 * t263) - (t260 * t262))
+        t268 <- rdI scalars (6 * (truncate s140))
+        t269 <- rdI scalars ((6 * (truncate s140)) + 5)
+        t270 <- rdI scalars ((6 * (truncate s140)) + 2)
+        t271 <- rdI scalars ((6 * (truncate s140)) + 3)
+        wrI contacts ((30 * (truncate t229)) + 8) (s170 + (negate ((((t259 * s170) + (t260 * s171)) + (t261 * s172)) * t259)))
+        wrI contacts (((30 * (truncate t229)) + 8) + 1) (s171 + (negate ((((t259 * s170) + (t260 * s171)) + (t261 * s172)) * t260)))
+        wrI contacts (((30 * (truncate t229)) + 8) + 2) (s172 + (negate ((((t259 * s170) + (t260 * s171)) + (t261 * s172)) * t261)))
+        let !t272 = (s227 + (negate t257))
+        let !t273 = (s228 + (negate t258))
+        let !t274 = (s226 + (negate t256))
+        wrI contacts ((30 * (truncate t229)) + 11) (((((t272 * s172) - (t273 * s171)) * t259) + (((t273 * s170) - (t274 * s172)) * t260)) + (((t274 * s171) - (t272 * s170)) * t261))
+        let !t275 = (a3 * t253)
+        wrI contacts ((30 * (truncate t229)) + 16) (t275 + (negate ((((t259 * t275) + (t260 * (a4 * t254))) + (t261 * (a5 * t255))) * t259)))
+        let !t276 = (a4 * t254)
+        wrI contacts (((30 * (truncate t229)) + 16) + 1) (t276 + (negate ((((t259 * t275) + (t260 * t276)) + (t261 * (a5 * t255))) * t260)))
+        let !t277 = (a5 * t255)
+        wrI contacts (((30 * (truncate t229)) + 16) + 2) (t277 + (negate ((((t259 * t275) + (t260 * t276)) + (t261 * t277)) * t261)))
+        wrI contacts ((30 * (truncate t229)) + 19) (((((t272 * t277) - (t273 * t276)) * t259) + (((t273 * t275) - (t274 * t277)) * t260)) + (((t274 * t276) - (t272 * t275)) * t261))
         pure ()
       else do
-        wrI contacts ((30 * (truncate t222)) + 8) 0.0
-        wrI contacts (((30 * (truncate t222)) + 8) + 1) 0.0
-        wrI contacts (((30 * (truncate t222)) + 8) + 2) 0.0
-        wrI contacts ((30 * (truncate t222)) + 11) 0.0
-        wrI contacts ((30 * (truncate t222)) + 16) 0.0
-        wrI contacts (((30 * (truncate t222)) + 16) + 1) 0.0
-        wrI contacts (((30 * (truncate t222)) + 16) + 2) 0.0
-        wrI contacts ((30 * (truncate t222)) + 19) 0.0
+        wrI contacts ((30 * (truncate t229)) + 8) 0.0
+        wrI contacts (((30 * (truncate t229)) + 8) + 1) 0.0
+        wrI contacts (((30 * (truncate t229)) + 8) + 2) 0.0
+        wrI contacts ((30 * (truncate t229)) + 11) 0.0
+        wrI contacts ((30 * (truncate t229)) + 16) 0.0
+        wrI contacts (((30 * (truncate t229)) + 16) + 1) 0.0
+        wrI contacts (((30 * (truncate t229)) + 16) + 2) 0.0
+        wrI contacts ((30 * (truncate t229)) + 19) 0.0
         pure ()
       pure ()
     else do
-      t271 <- rdI meta 6
-      wrI meta 6 (t271 + 1.0)
+      t278 <- rdI meta 6
+      wrI meta 6 (t278 + 1.0)
       pure ()
-    if (abs (t215 - t214)) > 0 then do
-      t272 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + ((truncate t215) * 4)) + 3))
-      t273 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t215) * 4)) + 3)) + 1)
-      t274 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t215) * 4)) + 3)) + 2)
-      let !s275 = ((a3 * t272) + s141)
-      let !s276 = ((a4 * t273) + s142)
-      let !s277 = ((a5 * t274) + s143)
-      t278 <- rdI meta 2
-      t279 <- rdI meta 3
-      if (((8.0 * (if (1.0 - t279) > 0 then 1.0 else t279)) - t278) - 0.5) > 0 then do
-        wrI meta 2 (t278 + 1.0)
-        t280 <- rdI pos (3 * (truncate s139))
-        t281 <- rdI pos ((3 * (truncate s139)) + 1)
-        t282 <- rdI pos ((3 * (truncate s139)) + 2)
-        t283 <- rdI normal (3 * (truncate s139))
-        t284 <- rdI normal ((3 * (truncate s139)) + 1)
-        t285 <- rdI normal ((3 * (truncate s139)) + 2)
-        t286 <- rdI axis (3 * (truncate s139))
-        t287 <- rdI axis ((3 * (truncate s139)) + 1)
-        t288 <- rdI axis ((3 * (truncate s139)) + 2)
-        let !s289 = ((t284 * t288) - (t285 * t287))
-        let !s290 = ((t285 * t286) - (t283 * t288))
-        let !s291 = ((t283 * t287) - (t284 * t286))
-        t292 <- rdI scalars (6 * (truncate s139))
-        t293 <- rdI scalars ((6 * (truncate s139)) + 5)
-        t294 <- rdI scalars ((6 * (truncate s139)) + 2)
-        t295 <- rdI scalars ((6 * (truncate s139)) + 3)
-        wrI contacts (30 * (truncate t278)) s139
-        wrI contacts ((30 * (truncate t278)) + 1) s140
-        wrI contacts ((30 * (truncate t278)) + 2) a1
-        wrI contacts ((30 * (truncate t278)) + 3) (a0 + 1.0)
-        let !t296 = (a3 * s144)
-        wrI contacts ((30 * (truncate t278)) + 4) (t296 + (negate ((((t283 * t296) + (t284 * (a4 * s145))) + (t285 * (a5 * s146))) * t283)))
-        let !t297 = (a4 * s145)
-        wrI contacts (((30 * (truncate t278)) + 4) + 1) (t297 + (negate ((((t283 * t296) + (t284 * t297)) + (t285 * (a5 * s146))) * t284)))
-        let !t298 = (a5 * s146)
-        wrI contacts (((30 * (truncate t278)) + 4) + 2) (t298 + (negate ((((t283 * t296) + (t284 * t297)) + (t285 * t298)) * t285)))
-        let !t299 = (t273 + (negate t281))
-        let !t300 = (t274 + (negate t282))
-        let !t301 = (t272 + (negate t280))
-        wrI contacts ((30 * (truncate t278)) + 7) (((((t299 * t298) - (t300 * t297)) * t283) + (((t300 * t296) - (t301 * t298)) * t284)) + (((t301 * t297) - (t299 * t296)) * t285))
-        let !t302 = ((t284 * t298) - (t285 * t297))
-        wrI contacts ((30 * (truncate t278)) + 12) (t302 + (negate ((((t283 * t302) + (t284 * ((t285 * t296) - (t283 * t298)))) + (t285 * ((t283 * t297) - (t284 * t296)))) * t283)))
-        let !t303 = ((t285 * t296) - (t283 * t298))
-        wrI contacts (((30 * (truncate t278)) + 12) + 1) (t303 + (negate ((((t283 * t302) + (t284 * t303)) + (t285 * ((t283 * t297) - (t284 * t296)))) * t284)))
-        let !t304 = ((t283 * t297) - (t284 * t296))
-        wrI contacts (((30 * (truncate t278)) + 12) + 2) (t304 + (negate ((((t283 * t302) + (t284 * t303)) + (t285 * t304)) * t285)))
-        wrI contacts ((30 * (truncate t278)) + 15) (((((t299 * t304) - (t300 * t303)) * t283) + (((t300 * t302) - (t301 * t304)) * t284)) + (((t301 * t303) - (t299 * t302)) * t285))
-        wrI contacts ((30 * (truncate t278)) + 20) ((((s147 + (negate s275)) * s144) + ((s148 + (negate s276)) * s145)) + ((s149 + (negate s277)) * s146))
-        wrI contacts ((30 * (truncate t278)) + 26) 1.0
-        wrI contacts ((30 * (truncate t278)) + 27) t272
-        wrI contacts (((30 * (truncate t278)) + 27) + 1) t273
-        wrI contacts (((30 * (truncate t278)) + 27) + 2) t274
+    if (abs (t222 - t221)) > 0 then do
+      t279 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + ((truncate t222) * 4)) + 3))
+      t280 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t222) * 4)) + 3)) + 1)
+      t281 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t222) * 4)) + 3)) + 2)
+      let !s282 = ((a3 * t279) + s141)
+      let !s283 = ((a4 * t280) + s142)
+      let !s284 = ((a5 * t281) + s143)
+      t285 <- rdI meta 2
+      t286 <- rdI meta 3
+      if (((8.0 * (if (1.0 - t286) > 0 then 1.0 else t286)) - t285) - 0.5) > 0 then do
+        wrI meta 2 (t285 + 1.0)
+        t287 <- rdI pos (3 * (truncate s139))
+        t288 <- rdI pos ((3 * (truncate s139)) + 1)
+        t289 <- rdI pos ((3 * (truncate s139)) + 2)
+        t290 <- rdI normal (3 * (truncate s139))
+        t291 <- rdI normal ((3 * (truncate s139)) + 1)
+        t292 <- rdI normal ((3 * (truncate s139)) + 2)
+        t293 <- rdI axis (3 * (truncate s139))
+        t294 <- rdI axis ((3 * (truncate s139)) + 1)
+        t295 <- rdI axis ((3 * (truncate s139)) + 2)
+        let !s296 = ((t291 * t295) - (t292 * t294))
+        let !s297 = ((t292 * t293) - (t290 * t295))
+        let !s298 = ((t290 * t294) - (t291 * t293))
+        t299 <- rdI scalars (6 * (truncate s139))
+        t300 <- rdI scalars ((6 * (truncate s139)) + 5)
+        t301 <- rdI scalars ((6 * (truncate s139)) + 2)
+        t302 <- rdI scalars ((6 * (truncate s139)) + 3)
+        wrI contacts (30 * (truncate t285)) s139
+        wrI contacts ((30 * (truncate t285)) + 1) s140
+        wrI contacts ((30 * (truncate t285)) + 2) a1
+        wrI contacts ((30 * (truncate t285)) + 3) (a0 + 1.0)
+        let !t303 = (a3 * s170)
+        wrI contacts ((30 * (truncate t285)) + 4) (t303 + (negate ((((t290 * t303) + (t291 * (a4 * s171))) + (t292 * (a5 * s172))) * t290)))
+        let !t304 = (a4 * s171)
+        wrI contacts (((30 * (truncate t285)) + 4) + 1) (t304 + (negate ((((t290 * t303) + (t291 * t304)) + (t292 * (a5 * s172))) * t291)))
+        let !t305 = (a5 * s172)
+        wrI contacts (((30 * (truncate t285)) + 4) + 2) (t305 + (negate ((((t290 * t303) + (t291 * t304)) + (t292 * t305)) * t292)))
+        let !t306 = (t280 + (negate t288))
+        let !t307 = (t281 + (negate t289))
+        let !t308 = (t279 + (negate t287))
+        wrI contacts ((30 * (truncate t285)) + 7) (((((t306 * t305) - (t307 * t304)) * t290) + (((t307 * t303) - (t308 * t305)) * t291)) + (((t308 * t304) - (t306 * t303)) * t292))
+        let !t309 = ((t291 * t305) - (t292 * t304))
+        wrI contacts ((30 * (truncate t285)) + 12) (t309 + (negate ((((t290 * t309) + (t291 * ((t292 * t303) - (t290 * t305)))) + (t292 * ((t290 * t304) - (t291 * t303)))) * t290)))
+        let !t310 = ((t292 * t303) - (t290 * t305))
+        wrI contacts (((30 * (truncate t285)) + 12) + 1) (t310 + (negate ((((t290 * t309) + (t291 * t310)) + (t292 * ((t290 * t304) - (t291 * t303)))) * t291)))
+        let !t311 = ((t290 * t304) - (t291 * t303))
+        wrI contacts (((30 * (truncate t285)) + 12) + 2) (t311 + (negate ((((t290 * t309) + (t291 * t310)) + (t292 * t311)) * t292)))
+        wrI contacts ((30 * (truncate t285)) + 15) (((((t306 * t311) - (t307 * t310)) * t290) + (((t307 * t309) - (t308 * t311)) * t291)) + (((t308 * t310) - (t306 * t309)) * t292))
+        wrI contacts ((30 * (truncate t285)) + 20) (if s169 > 0 then ((((s147 + (negate s282)) * s170) + ((s148 + (negate s283)) * s171)) + ((s149 + (negate s284)) * s172)) else s138)
+        wrI contacts ((30 * (truncate t285)) + 26) 1.0
+        wrI contacts ((30 * (truncate t285)) + 27) t279
+        wrI contacts (((30 * (truncate t285)) + 27) + 1) t280
+        wrI contacts (((30 * (truncate t285)) + 27) + 2) t281
         if (s140 + 0.5) > 0 then do
-          t305 <- rdI pos (3 * (truncate s140))
-          t306 <- rdI pos ((3 * (truncate s140)) + 1)
-          t307 <- rdI pos ((3 * (truncate s140)) + 2)
-          t308 <- rdI normal (3 * (truncate s140))
-          t309 <- rdI normal ((3 * (truncate s140)) + 1)
-          t310 <- rdI normal ((3 * (truncate s140)) + 2)
-          t311 <- rdI axis (3 * (truncate s140))
-          t312 <- rdI axis ((3 * (truncate s140)) + 1)
-          t313 <- rdI axis ((3 * (truncate s140)) + 2)
-          let !s314 = ((t309 * t313) - (t310 * t312))
-          let !s315 = ((t310 * t311) - (t308 * t313))
-          let !s316 = ((t308 * t312) - (t309 * t311))
-          t317 <- rdI scalars (6 * (truncate s140))
-          t318 <- rdI scalars ((6 * (truncate s140)) + 5)
-          t319 <- rdI scalars ((6 * (truncate s140)) + 2)
-          t320 <- rdI scalars ((6 * (truncate s140)) + 3)
-          wrI contacts ((30 * (truncate t278)) + 8) (s144 + (negate ((((t308 * s144) + (t309 * s145)) + (t310 * s146)) * t308)))
-          wrI contacts (((30 * (truncate t278)) + 8) + 1) (s145 + (negate ((((t308 * s144) + (t309 * s145)) + (t310 * s146)) * t309)))
-          wrI contacts (((30 * (truncate t278)) + 8) + 2) (s146 + (negate ((((t308 * s144) + (t309 * s145)) + (t310 * s146)) * t310)))
-          let !t321 = (s276 + (negate t306))
-          let !t322 = (s277 + (negate t307))
-          let !t323 = (s275 + (negate t305))
-          wrI contacts ((30 * (truncate t278)) + 11) (((((t321 * s146) - (t322 * s145)) * t308) + (((t322 * s144) - (t323 * s146)) * t309)) + (((t323 * s145) - (t321 * s144)) * t310))
-          let !t324 = (a3 * t302)
-          wrI contacts ((30 * (truncate t278)) + 16) (t324 + (negate ((((t308 * t324) + (t309 * (a4 * t303))) + (t310 * (a5 * t304))) * t308)))
-          let !t325 = (a4 * t303)
-          wrI contacts (((30 * (truncate t278)) + 16) + 1) (t325 + (negate ((((t308 * t324) + (t309 * t325)) + (t310 * (a5 * t304))) * t309)))
-          let !t326 = (a5 * t304)
-          wrI contacts (((30 * (truncate t278)) + 16) + 2) (t326 + (negate ((((t308 * t324) + (t309 * t325)) + (t310 * t326)) * t310)))
-          wrI contacts ((30 * (truncate t278)) + 19) (((((t321 * t326) - (t322 * t325)) * t308) + (((t322 * t324) - (t323 * t326)) * t309)) + (((t323 * t325) - (t321 * t324)) * t310))
+          t312 <- rdI pos (3 * (truncate s140))
+          t313 <- rdI pos ((3 * (truncate s140)) + 1)
+          t314 <- rdI pos ((3 * (truncate s140)) + 2)
+          t315 <- rdI normal (3 * (truncate s140))
+          t316 <- rdI normal ((3 * (truncate s140)) + 1)
+          t317 <- rdI normal ((3 * (truncate s140)) + 2)
+          t318 <- rdI axis (3 * (truncate s140))
+          t319 <- rdI axis ((3 * (truncate s140)) + 1)
+          t320 <- rdI axis ((3 * (truncate s140)) + 2)
+          let !s321 = ((t316 * t320) - (t317 * t319))
+          let !s322 = ((t317 * t318) - (t315 * t320))
+          let !s323 = ((t315 * t319) - (t316 * t318))
+          t324 <- rdI scalars (6 * (truncate s140))
+          t325 <- rdI scalars ((6 * (truncate s140)) + 5)
+          t326 <- rdI scalars ((6 * (truncate s140)) + 2)
+          t327 <- rdI scalars ((6 * (truncate s140)) + 3)
+          wrI contacts ((30 * (truncate t285)) + 8) (s170 + (negate ((((t315 * s170) + (t316 * s171)) + (t317 * s172)) * t315)))
+          wrI contacts (((30 * (truncate t285)) + 8) + 1) (s171 + (negate ((((t315 * s170) + (t316 * s171)) + (t317 * s172)) * t316)))
+          wrI contacts (((30 * (truncate t285)) + 8) + 2) (s172 + (negate ((((t315 * s170) + (t316 * s171)) + (t317 * s172)) * t317)))
+          let !t328 = (s283 + (negate t313))
+          let !t329 = (s284 + (negate t314))
+          let !t330 = (s282 + (negate t312))
+          wrI contacts ((30 * (truncate t285)) + 11) (((((t328 * s172) - (t329 * s171)) * t315) + (((t329 * s170) - (t330 * s172)) * t316)) + (((t330 * s171) - (t328 * s170)) * t317))
+          let !t331 = (a3 * t309)
+          wrI contacts ((30 * (truncate t285)) + 16) (t331 + (negate ((((t315 * t331) + (t316 * (a4 * t310))) + (t317 * (a5 * t311))) * t315)))
+          let !t332 = (a4 * t310)
+          wrI contacts (((30 * (truncate t285)) + 16) + 1) (t332 + (negate ((((t315 * t331) + (t316 * t332)) + (t317 * (a5 * t311))) * t316)))
+          let !t333 = (a5 * t311)
+          wrI contacts (((30 * (truncate t285)) + 16) + 2) (t333 + (negate ((((t315 * t331) + (t316 * t332)) + (t317 * t333)) * t317)))
+          wrI contacts ((30 * (truncate t285)) + 19) (((((t328 * t333) - (t329 * t332)) * t315) + (((t329 * t331) - (t330 * t333)) * t316)) + (((t330 * t332) - (t328 * t331)) * t317))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t278)) + 8) 0.0
-          wrI contacts (((30 * (truncate t278)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t278)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t278)) + 11) 0.0
-          wrI contacts ((30 * (truncate t278)) + 16) 0.0
-          wrI contacts (((30 * (truncate t278)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t278)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t278)) + 19) 0.0
+          wrI contacts ((30 * (truncate t285)) + 8) 0.0
+          wrI contacts (((30 * (truncate t285)) + 8) + 1) 0.0
+          wrI contacts (((30 * (truncate t285)) + 8) + 2) 0.0
+          wrI contacts ((30 * (truncate t285)) + 11) 0.0
+          wrI contacts ((30 * (truncate t285)) + 16) 0.0
+          wrI contacts (((30 * (truncate t285)) + 16) + 1) 0.0
+          wrI contacts (((30 * (truncate t285)) + 16) + 2) 0.0
+          wrI contacts ((30 * (truncate t285)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t327 <- rdI meta 6
-        wrI meta 6 (t327 + 1.0)
+        t334 <- rdI meta 6
+        wrI meta 6 (t334 + 1.0)
         pure ()
       pure ()
     else do

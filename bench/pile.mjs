@@ -1,0 +1,80 @@
+// How well the generated engine holds a pile: on scenes written by
+// `manifold bench --scenes DIR`, run under node, after W steps: contact rows
+// per body and per touching pair, how far circles overlap one another (a
+// measure independent of how contacts are made: two circles overlap by
+// r1 + r2 − |p1 − p2|), and how many rows find last step's row of the same
+// key for warm starting over the next 20 steps.
+// Usage: node bench/pile.mjs DIR [--steps W]   (JSON lines on stdout)
+import fs from "node:fs";
+import path from "node:path";
+import vm from "node:vm";
+import { fileURLToPath } from "node:url";
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "..");
+const args = process.argv.slice(2);
+const dir = args[0];
+if (!dir) { console.error("usage: node bench/pile.mjs DIR [--steps W]"); process.exit(2); }
+const k = args.indexOf("--steps");
+const settle = k >= 0 ? Number(args[k + 1]) : 400;
+
+function load(file) { vm.runInThisContext(fs.readFileSync(file, "utf8"), { filename: file }); }
+load(path.join(root, "web/js/world.js"));
+
+for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
+  const scene = JSON.parse(fs.readFileSync(path.join(dir, f), "utf8"));
+  if (!globalThis.Manifold || !globalThis.Manifold.spaces[scene.space]) load(path.join(root, "web/gen", "space-" + scene.space + ".js"));
+  const W = globalThis.ManifoldWeb.world;
+  const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
+  world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
+  world.step(settle);
+  const E = world.engine, C = E.contact, stride = E.contactStride, slots = world.stride();
+  const a = world.a, n = world.count();
+
+  const rows = () => {
+    const out = [];
+    for (let c = 0; c < world.meta("contactCount"); c++) {
+      const at = (field) => a.contacts[c * stride + C[field]];
+      out.push({ owner: at("cOwner"), key: at("cKey"), b: at("cB") });
+    }
+    return out;
+  };
+  // a pair (through one image) has the keys 4k .. 4k + 3 under its owner
+  const now = rows(), perPair = new Map();
+  for (const r of now) if (r.b >= 0) { const p = r.owner + ":" + Math.floor(r.key / 4); perPair.set(p, (perPair.get(p) || 0) + 1); }
+  const histogram = {};
+  for (const m of perPair.values()) histogram[m] = (histogram[m] || 0) + 1;
+
+  // circles are the even-numbered bodies of a bench scene
+  const radius = (i) => a.scalars[i * slots + E.slots.boundRadius];
+  const p3 = (i) => [a.pos[3 * i], a.pos[3 * i + 1], a.pos[3 * i + 2]];
+  const cell = 4 * Math.max(...Array.from({ length: n }, (_, i) => radius(i))), grid = new Map();
+  const key = (p) => p.map((x) => Math.floor(x / cell)).join(",");
+  for (let i = 0; i < n; i += 2) { const kk = key(p3(i)); if (!grid.has(kk)) grid.set(kk, []); grid.get(kk).push(i); }
+  let sum = 0, count = 0, worst = 0;
+  for (let i = 0; i < n; i += 2) {
+    const c = p3(i).map((x) => Math.floor(x / cell));
+    for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) for (let dz = -1; dz <= 1; dz++)
+      for (const j of grid.get([c[0] + dx, c[1] + dy, c[2] + dz].join(",")) || []) {
+        if (j <= i) continue;
+        const pi = p3(i), pj = p3(j);
+        const overlap = (radius(i) + radius(j) - Math.hypot(pi[0] - pj[0], pi[1] - pj[1], pi[2] - pj[2])) / radius(i);
+        if (overlap > 0) { sum += overlap; count++; worst = Math.max(worst, overlap); }
+      }
+  }
+
+  let hits = 0, total = 0, last = new Set(now.map((r) => r.owner + ":" + r.key));
+  for (let s = 0; s < 20; s++) {
+    world.step(1);
+    const next = rows();
+    for (const r of next) { total++; if (last.has(r.owner + ":" + r.key)) hits++; }
+    last = new Set(next.map((r) => r.owner + ":" + r.key));
+  }
+
+  const result = {
+    space: scene.space, bodies: n, steps: settle,
+    rowsPerBody: now.length / n, rowsPerPair: histogram,
+    circleOverlapMean: count ? sum / count : 0, circleOverlapMax: worst, touchingCirclePairs: count,
+    warmStartHits: total ? hits / total : 1,
+  };
+  console.log(JSON.stringify(result));
+}
