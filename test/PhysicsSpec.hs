@@ -677,15 +677,9 @@ spec = do
       forM_ [sphere, torus, projectivePlane, rectangle] $ \sp -> do
         w <- loadScene 0 (benchScene sp 300) >>= either (fail . ((spaceName sp ++ ": ") ++)) pure
         steps w 100
-        n <- contactCount w
-        let arr = wContacts (nwArrays w)
-            field :: Int -> ContactField -> IO Double
-            field c k = MV.read arr (contactStride * c + fromEnum k)
-        rows <- forM [0 .. n - 1] $ \c -> do
-          owner <- round <$> field c COwner
-          key <- round <$> field c CKey
-          dir <- V3 <$> field c JaX <*> field c JaY <*> field c JaZ
-          pure ((owner, key `div` 4 :: Int), dir)
+        cs <- contacts w
+        let n = length cs
+            rows = [((cOwner c, cKey c `div` 4), cDirection c) | c <- cs]
         -- under its owner, a pair (through one image) has the keys 4k to
         -- 4k + 3 (it used up all four, two for each body's vertices in the
         -- other); a body's boundary rows are 8 and 9, its self-contact 12

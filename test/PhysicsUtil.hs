@@ -108,6 +108,9 @@ meta w k = MV.read (wMeta (nwArrays w)) (fromEnum k)
 data Contact = Contact
   { cA :: Int
   , cB :: Int
+  , cOwner :: Int
+  , cKey :: Int -- ^ the row's identity under its owner (warm starting)
+  , cDirection :: V3 Double -- ^ the push on body a
   , cDepth :: Double
   , cPoint :: V3 Double
   } deriving Show
@@ -119,7 +122,9 @@ contacts w = do
       field :: Int -> ContactField -> IO Double
       field c k = MV.read arr (contactStride * c + fromEnum k)
   forM [0 .. n - 1] $ \c ->
-    Contact <$> (round <$> field c CA) <*> (round <$> field c CB) <*> field c CDepth
+    Contact <$> (round <$> field c CA) <*> (round <$> field c CB)
+            <*> (round <$> field c COwner) <*> (round <$> field c CKey)
+            <*> (V3 <$> field c JaX <*> field c JaY <*> field c JaZ) <*> field c CDepth
             <*> (V3 <$> field c PointX <*> field c PointY <*> field c PointZ)
 
 maxDepthOf :: [Contact] -> Double
