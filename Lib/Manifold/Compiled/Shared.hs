@@ -46,41 +46,40 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       let !s33 = (((t30 * t9) + (t31 * t10)) + (t32 * t11))
       let !s34 = (((t30 * s12) + (t31 * s13)) + (t32 * s14))
       let !s35 = (((t30 * t6) + (t31 * t7)) + (t32 * t8))
-      let !t36 = (sqrt ((s33 * s33) + (s34 * s34)))
-      let !t37 = ((if s33 > 0 then (2.0 * (atan (s34 / (t36 + s33)))) else (if (abs s34) > 0 then (2.0 * (atan ((t36 - s33) / s34))) else (if (negate s33) > 0 then 3.141592653589793 else 0.0))) - t15)
-      let !t38 = (floorF ((t37 - (6.283185307179586 * (floorF (t37 / 6.283185307179586)))) / 0.2617993877991494))
-      let !s39 = (if (t38 - 23.0) > 0 then 23.0 else t38)
-      t40 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s39) * 4)) + 3))
-      t41 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s39) * 4)) + 3)) + 1)
-      t42 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s39) * 4)) + 3)) + 2)
-      t43 <- rdI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s39 - 24.0) + 1.5) > 0 then 0.0 else (s39 + 1.0)) * 4.0)) + 3.0)))
-      t44 <- rdI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s39 - 24.0) + 1.5) > 0 then 0.0 else (s39 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      t45 <- rdI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s39 - 24.0) + 1.5) > 0 then 0.0 else (s39 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-      let !t46 = (negate t3)
-      let !t47 = (negate t4)
-      let !t48 = (negate t5)
-      let !s49 = (((((t43 + t46) * t9) + ((t44 + t47) * t10)) + ((t45 + t48) * t11)) - ((((t40 + t46) * t9) + ((t41 + t47) * t10)) + ((t42 + t48) * t11)))
-      let !s50 = (((((t43 + t46) * s12) + ((t44 + t47) * s13)) + ((t45 + t48) * s14)) - ((((t40 + t46) * s12) + ((t41 + t47) * s13)) + ((t42 + t48) * s14)))
-      let !s51 = (sqrt ((s49 * s49) + (s50 * s50)))
+      let !t36 = ((if s33 > 0 then (2.0 * (atan (s34 / ((sqrt ((s33 * s33) + (s34 * s34))) + s33)))) else (if (abs s34) > 0 then (2.0 * (atan (((sqrt ((s33 * s33) + (s34 * s34))) - s33) / s34))) else (if (negate s33) > 0 then 3.141592653589793 else 0.0))) - t15)
+      let !t37 = (floorF ((t36 - (6.283185307179586 * (floorF (t36 / 6.283185307179586)))) / 0.2617993877991494))
+      let !s38 = (if (t37 - 23.0) > 0 then 23.0 else t37)
+      t39 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3))
+      t40 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 1)
+      t41 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 2)
+      t42 <- rdI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)))
+      t43 <- rdI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      t44 <- rdI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      let !t45 = (negate t3)
+      let !t46 = (negate t4)
+      let !t47 = (negate t5)
+      let !s48 = (((((t42 + t45) * t9) + ((t43 + t46) * t10)) + ((t44 + t47) * t11)) - ((((t39 + t45) * t9) + ((t40 + t46) * t10)) + ((t41 + t47) * t11)))
+      let !s49 = (((((t42 + t45) * s12) + ((t43 + t46) * s13)) + ((t44 + t47) * s14)) - ((((t39 + t45) * s12) + ((t40 + t46) * s13)) + ((t41 + t47) * s14)))
+      let !s50 = (sqrt ((s48 * s48) + (s49 * s49)))
+      let !t51 = (t39 + t45)
       let !t52 = (t40 + t46)
       let !t53 = (t41 + t47)
-      let !t54 = (t42 + t48)
-      let !s55 = (if (t16 - (abs s35)) > 0 then (if s51 > 0 then (((s49 * (s34 - (((t52 * s12) + (t53 * s13)) + (t54 * s14)))) - (s50 * (s33 - (((t52 * t9) + (t53 * t10)) + (t54 * t11))))) / s51) else (-1.0)) else (-1.0))
-      let !t56 = (if s51 > 0 then (recip s51) else 0.0)
-      let !t57 = (s50 * t56)
-      let !t58 = ((negate s49) * t56)
-      let !s59 = ((t57 * t9) + (t58 * s12))
-      let !s60 = ((t57 * t10) + (t58 * s13))
-      let !s61 = ((t57 * t11) + (t58 * s14))
-      t62 <- getR v19
-      if (s55 - t62) > 0 then do
-        setR v19 s55
-        setR v20 s59
-        setR v21 s60
-        setR v22 s61
-        setR v23 t40
-        setR v24 t41
-        setR v25 t42
+      let !s54 = (if (t16 - (abs s35)) > 0 then (if s50 > 0 then (((s48 * (s34 - (((t51 * s12) + (t52 * s13)) + (t53 * s14)))) - (s49 * (s33 - (((t51 * t9) + (t52 * t10)) + (t53 * t11))))) / s50) else (-1.0)) else (-1.0))
+      let !t55 = (if s50 > 0 then (recip s50) else 0.0)
+      let !t56 = (s49 * t55)
+      let !t57 = ((negate s48) * t55)
+      let !s58 = ((t56 * t9) + (t57 * s12))
+      let !s59 = ((t56 * t10) + (t57 * s13))
+      let !s60 = ((t56 * t11) + (t57 * s14))
+      t61 <- getR v19
+      if (s54 - t61) > 0 then do
+        setR v19 s54
+        setR v20 s58
+        setR v21 s59
+        setR v22 s60
+        setR v23 t39
+        setR v24 t40
+        setR v25 t41
         pure ()
       else do
         pure ()
@@ -88,83 +87,82 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
     else do
       pure ()
     pure ()
-  t63 <- getR v19
-  t64 <- getR v20
-  t65 <- getR v21
-  t66 <- getR v22
-  t67 <- getR v23
-  t68 <- getR v24
-  t69 <- getR v25
-  t70 <- rdI pos (3 * (truncate a1))
-  t71 <- rdI pos ((3 * (truncate a1)) + 1)
-  t72 <- rdI pos ((3 * (truncate a1)) + 2)
-  t73 <- rdI normal (3 * (truncate a1))
-  t74 <- rdI normal ((3 * (truncate a1)) + 1)
-  t75 <- rdI normal ((3 * (truncate a1)) + 2)
-  t76 <- rdI axis (3 * (truncate a1))
-  t77 <- rdI axis ((3 * (truncate a1)) + 1)
-  t78 <- rdI axis ((3 * (truncate a1)) + 2)
-  let !s79 = ((t74 * t78) - (t75 * t77))
-  let !s80 = ((t75 * t76) - (t73 * t78))
-  let !s81 = ((t73 * t77) - (t74 * t76))
-  t82 <- rdI scalars (6 * (truncate a1))
-  t83 <- rdI scalars ((6 * (truncate a1)) + 5)
-  t84 <- rdI scalars ((6 * (truncate a1)) + 2)
-  t85 <- rdI scalars ((6 * (truncate a1)) + 3)
+  t62 <- getR v19
+  t63 <- getR v20
+  t64 <- getR v21
+  t65 <- getR v22
+  t66 <- getR v23
+  t67 <- getR v24
+  t68 <- getR v25
+  t69 <- rdI pos (3 * (truncate a1))
+  t70 <- rdI pos ((3 * (truncate a1)) + 1)
+  t71 <- rdI pos ((3 * (truncate a1)) + 2)
+  t72 <- rdI normal (3 * (truncate a1))
+  t73 <- rdI normal ((3 * (truncate a1)) + 1)
+  t74 <- rdI normal ((3 * (truncate a1)) + 2)
+  t75 <- rdI axis (3 * (truncate a1))
+  t76 <- rdI axis ((3 * (truncate a1)) + 1)
+  t77 <- rdI axis ((3 * (truncate a1)) + 2)
+  let !s78 = ((t73 * t77) - (t74 * t76))
+  let !s79 = ((t74 * t75) - (t72 * t77))
+  let !s80 = ((t72 * t76) - (t73 * t75))
+  t81 <- rdI scalars (6 * (truncate a1))
+  t82 <- rdI scalars ((6 * (truncate a1)) + 5)
+  t83 <- rdI scalars ((6 * (truncate a1)) + 2)
+  t84 <- rdI scalars ((6 * (truncate a1)) + 3)
+  v85 <- newR 0.0
   v86 <- newR 0.0
   v87 <- newR 0.0
   v88 <- newR 0.0
   v89 <- newR 0.0
   v90 <- newR 0.0
   v91 <- newR 0.0
-  v92 <- newR 0.0
-  loopI 0.0 24.0 $ \i93 -> do
-    let !d93 = fromIntegral i93 :: Double
-    t94 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + (i93 * 4)) + 3))
-    t95 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i93 * 4)) + 3)) + 1)
-    t96 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i93 * 4)) + 3)) + 2)
-    let !t97 = (((a3 * t94) + s0) + (negate t70))
-    let !t98 = (((a4 * t95) + s1) + (negate t71))
-    let !t99 = (((a5 * t96) + s2) + (negate t72))
-    if ((t83 * t83) - (((t97 * t97) + (t98 * t98)) + (t99 * t99))) > 0 then do
-      let !s100 = (((t97 * t76) + (t98 * t77)) + (t99 * t78))
-      let !s101 = (((t97 * s79) + (t98 * s80)) + (t99 * s81))
-      let !s102 = (((t97 * t73) + (t98 * t74)) + (t99 * t75))
-      let !t103 = (sqrt ((s100 * s100) + (s101 * s101)))
-      let !t104 = ((if s100 > 0 then (2.0 * (atan (s101 / (t103 + s100)))) else (if (abs s101) > 0 then (2.0 * (atan ((t103 - s100) / s101))) else (if (negate s100) > 0 then 3.141592653589793 else 0.0))) - t82)
-      let !t105 = (floorF ((t104 - (6.283185307179586 * (floorF (t104 / 6.283185307179586)))) / 0.2617993877991494))
-      let !s106 = (if (t105 - 23.0) > 0 then 23.0 else t105)
-      t107 <- rdI verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s106) * 4)) + 3))
-      t108 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s106) * 4)) + 3)) + 1)
-      t109 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s106) * 4)) + 3)) + 2)
-      t110 <- rdI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s106 - 24.0) + 1.5) > 0 then 0.0 else (s106 + 1.0)) * 4.0)) + 3.0)))
-      t111 <- rdI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s106 - 24.0) + 1.5) > 0 then 0.0 else (s106 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      t112 <- rdI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s106 - 24.0) + 1.5) > 0 then 0.0 else (s106 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-      let !t113 = (negate t70)
-      let !t114 = (negate t71)
-      let !t115 = (negate t72)
-      let !s116 = (((((t110 + t113) * t76) + ((t111 + t114) * t77)) + ((t112 + t115) * t78)) - ((((t107 + t113) * t76) + ((t108 + t114) * t77)) + ((t109 + t115) * t78)))
-      let !s117 = (((((t110 + t113) * s79) + ((t111 + t114) * s80)) + ((t112 + t115) * s81)) - ((((t107 + t113) * s79) + ((t108 + t114) * s80)) + ((t109 + t115) * s81)))
-      let !s118 = (sqrt ((s116 * s116) + (s117 * s117)))
+  loopI 0.0 24.0 $ \i92 -> do
+    let !d92 = fromIntegral i92 :: Double
+    t93 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3))
+    t94 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 1)
+    t95 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 2)
+    let !t96 = (((a3 * t93) + s0) + (negate t69))
+    let !t97 = (((a4 * t94) + s1) + (negate t70))
+    let !t98 = (((a5 * t95) + s2) + (negate t71))
+    if ((t82 * t82) - (((t96 * t96) + (t97 * t97)) + (t98 * t98))) > 0 then do
+      let !s99 = (((t96 * t75) + (t97 * t76)) + (t98 * t77))
+      let !s100 = (((t96 * s78) + (t97 * s79)) + (t98 * s80))
+      let !s101 = (((t96 * t72) + (t97 * t73)) + (t98 * t74))
+      let !t102 = ((if s99 > 0 then (2.0 * (atan (s100 / ((sqrt ((s99 * s99) + (s100 * s100))) + s99)))) else (if (abs s100) > 0 then (2.0 * (atan (((sqrt ((s99 * s99) + (s100 * s100))) - s99) / s100))) else (if (negate s99) > 0 then 3.141592653589793 else 0.0))) - t81)
+      let !t103 = (floorF ((t102 - (6.283185307179586 * (floorF (t102 / 6.283185307179586)))) / 0.2617993877991494))
+      let !s104 = (if (t103 - 23.0) > 0 then 23.0 else t103)
+      t105 <- rdI verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3))
+      t106 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 1)
+      t107 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 2)
+      t108 <- rdI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)))
+      t109 <- rdI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      t110 <- rdI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      let !t111 = (negate t69)
+      let !t112 = (negate t70)
+      let !t113 = (negate t71)
+      let !s114 = (((((t108 + t111) * t75) + ((t109 + t112) * t76)) + ((t110 + t113) * t77)) - ((((t105 + t111) * t75) + ((t106 + t112) * t76)) + ((t107 + t113) * t77)))
+      let !s115 = (((((t108 + t111) * s78) + ((t109 + t112) * s79)) + ((t110 + t113) * s80)) - ((((t105 + t111) * s78) + ((t106 + t112) * s79)) + ((t107 + t113) * s80)))
+      let !s116 = (sqrt ((s114 * s114) + (s115 * s115)))
+      let !t117 = (t105 + t111)
+      let !t118 = (t106 + t112)
       let !t119 = (t107 + t113)
-      let !t120 = (t108 + t114)
-      let !t121 = (t109 + t115)
-      let !s122 = (if (t83 - (abs s102)) > 0 then (if s118 > 0 then (((s116 * (s101 - (((t119 * s79) + (t120 * s80)) + (t121 * s81)))) - (s117 * (s100 - (((t119 * t76) + (t120 * t77)) + (t121 * t78))))) / s118) else (-1.0)) else (-1.0))
-      let !t123 = (if s118 > 0 then (recip s118) else 0.0)
-      let !t124 = (s117 * t123)
-      let !t125 = ((negate s116) * t123)
-      let !s126 = ((t124 * t76) + (t125 * s79))
-      let !s127 = ((t124 * t77) + (t125 * s80))
-      let !s128 = ((t124 * t78) + (t125 * s81))
-      t129 <- getR v86
-      if (s122 - t129) > 0 then do
-        setR v86 s122
-        setR v87 s126
-        setR v88 s127
-        setR v89 s128
-        setR v90 t107
-        setR v91 t108
-        setR v92 t109
+      let !s120 = (if (t82 - (abs s101)) > 0 then (if s116 > 0 then (((s114 * (s100 - (((t117 * s78) + (t118 * s79)) + (t119 * s80)))) - (s115 * (s99 - (((t117 * t75) + (t118 * t76)) + (t119 * t77))))) / s116) else (-1.0)) else (-1.0))
+      let !t121 = (if s116 > 0 then (recip s116) else 0.0)
+      let !t122 = (s115 * t121)
+      let !t123 = ((negate s114) * t121)
+      let !s124 = ((t122 * t75) + (t123 * s78))
+      let !s125 = ((t122 * t76) + (t123 * s79))
+      let !s126 = ((t122 * t77) + (t123 * s80))
+      t127 <- getR v85
+      if (s120 - t127) > 0 then do
+        setR v85 s120
+        setR v86 s124
+        setR v87 s125
+        setR v88 s126
+        setR v89 t105
+        setR v90 t106
+        setR v91 t107
         pure ()
       else do
         pure ()
@@ -172,114 +170,113 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
     else do
       pure ()
     pure ()
-  t130 <- getR v86
-  t131 <- getR v87
-  t132 <- getR v88
-  t133 <- getR v89
-  t134 <- getR v90
-  t135 <- getR v91
-  t136 <- getR v92
-  let !s137 = (t130 - (1.1 * t63))
-  let !s138 = (if (t63 - t130) > 0 then t63 else t130)
-  if s138 > 0 then do
-    let !s139 = (if s137 > 0 then a2 else a1)
-    let !s140 = (if s137 > 0 then a1 else a2)
-    let !s141 = (if s137 > 0 then s0 else a6)
-    let !s142 = (if s137 > 0 then s1 else a7)
-    let !s143 = (if s137 > 0 then s2 else a8)
-    let !s144 = (if s137 > 0 then t131 else t64)
-    let !s145 = (if s137 > 0 then t132 else t65)
-    let !s146 = (if s137 > 0 then t133 else t66)
-    let !s147 = (if s137 > 0 then t134 else t67)
-    let !s148 = (if s137 > 0 then t135 else t68)
-    let !s149 = (if s137 > 0 then t136 else t69)
-    t150 <- rdI pos (3 * (truncate s140))
-    t151 <- rdI pos ((3 * (truncate s140)) + 1)
-    t152 <- rdI pos ((3 * (truncate s140)) + 2)
-    t153 <- rdI normal (3 * (truncate s140))
-    t154 <- rdI normal ((3 * (truncate s140)) + 1)
-    t155 <- rdI normal ((3 * (truncate s140)) + 2)
-    t156 <- rdI axis (3 * (truncate s140))
-    t157 <- rdI axis ((3 * (truncate s140)) + 1)
-    t158 <- rdI axis ((3 * (truncate s140)) + 2)
-    let !s159 = ((t154 * t158) - (t155 * t157))
-    let !s160 = ((t155 * t156) - (t153 * t158))
-    let !s161 = ((t153 * t157) - (t154 * t156))
-    t162 <- rdI scalars (6 * (truncate s140))
-    t163 <- rdI scalars ((6 * (truncate s140)) + 5)
-    t164 <- rdI scalars ((6 * (truncate s140)) + 2)
-    t165 <- rdI scalars ((6 * (truncate s140)) + 3)
-    t166 <- rdI pos (3 * (truncate s139))
-    t167 <- rdI pos ((3 * (truncate s139)) + 1)
-    t168 <- rdI pos ((3 * (truncate s139)) + 2)
-    let !s169 = ((((((a3 * t166) + s141) + (negate t150)) * s144) + ((((a4 * t167) + s142) + (negate t151)) * s145)) + ((((a5 * t168) + s143) + (negate t152)) * s146))
-    let !s170 = (if s169 > 0 then s144 else (negate s144))
-    let !s171 = (if s169 > 0 then s145 else (negate s145))
-    let !s172 = (if s169 > 0 then s146 else (negate s146))
-    let !s173 = ((t154 * s172) - (t155 * s171))
-    let !s174 = ((t155 * s170) - (t153 * s172))
-    let !s175 = ((t153 * s171) - (t154 * s170))
-    v176 <- newR 1.0e300
-    v177 <- newR (-1.0e300)
-    v178 <- newR (-1.0)
-    v179 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i180 -> do
-      let !d180 = fromIntegral i180 :: Double
-      t181 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + (i180 * 4)) + 3))
-      t182 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + (i180 * 4)) + 3)) + 1)
-      t183 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + (i180 * 4)) + 3)) + 2)
-      v184 <- newR (-1.0)
-      let !t185 = (((a3 * t181) + s141) + (negate t150))
-      let !t186 = (((a4 * t182) + s142) + (negate t151))
-      let !t187 = (((a5 * t183) + s143) + (negate t152))
-      if ((t163 * t163) - (((t185 * t185) + (t186 * t186)) + (t187 * t187))) > 0 then do
-        let !s188 = (((t185 * t156) + (t186 * t157)) + (t187 * t158))
-        let !s189 = (((t185 * s159) + (t186 * s160)) + (t187 * s161))
-        let !s190 = (((t185 * t153) + (t186 * t154)) + (t187 * t155))
-        let !t191 = (sqrt ((s188 * s188) + (s189 * s189)))
-        let !t192 = ((if s188 > 0 then (2.0 * (atan (s189 / (t191 + s188)))) else (if (abs s189) > 0 then (2.0 * (atan ((t191 - s188) / s189))) else (if (negate s188) > 0 then 3.141592653589793 else 0.0))) - t162)
-        let !t193 = (floorF ((t192 - (6.283185307179586 * (floorF (t192 / 6.283185307179586)))) / 0.2617993877991494))
-        let !s194 = (if (t193 - 23.0) > 0 then 23.0 else t193)
-        t195 <- rdI verts (3 * ((((97 * (truncate s140)) + 1) + ((truncate s194) * 4)) + 3))
-        t196 <- rdI verts ((3 * ((((97 * (truncate s140)) + 1) + ((truncate s194) * 4)) + 3)) + 1)
-        t197 <- rdI verts ((3 * ((((97 * (truncate s140)) + 1) + ((truncate s194) * 4)) + 3)) + 2)
-        t198 <- rdI verts (truncate (3.0 * ((((97.0 * s140) + 1.0) + ((if ((s194 - 24.0) + 1.5) > 0 then 0.0 else (s194 + 1.0)) * 4.0)) + 3.0)))
-        t199 <- rdI verts (truncate ((3.0 * ((((97.0 * s140) + 1.0) + ((if ((s194 - 24.0) + 1.5) > 0 then 0.0 else (s194 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-        t200 <- rdI verts (truncate ((3.0 * ((((97.0 * s140) + 1.0) + ((if ((s194 - 24.0) + 1.5) > 0 then 0.0 else (s194 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-        let !t201 = (negate t150)
-        let !t202 = (negate t151)
-        let !t203 = (negate t152)
-        let !s204 = (((((t198 + t201) * t156) + ((t199 + t202) * t157)) + ((t200 + t203) * t158)) - ((((t195 + t201) * t156) + ((t196 + t202) * t157)) + ((t197 + t203) * t158)))
-        let !s205 = (((((t198 + t201) * s159) + ((t199 + t202) * s160)) + ((t200 + t203) * s161)) - ((((t195 + t201) * s159) + ((t196 + t202) * s160)) + ((t197 + t203) * s161)))
-        let !s206 = (sqrt ((s204 * s204) + (s205 * s205)))
-        let !t207 = (t195 + t201)
-        let !t208 = (t196 + t202)
-        let !t209 = (t197 + t203)
-        let !s210 = (if (t163 - (abs s190)) > 0 then (if s206 > 0 then (((s204 * (s189 - (((t207 * s159) + (t208 * s160)) + (t209 * s161)))) - (s205 * (s188 - (((t207 * t156) + (t208 * t157)) + (t209 * t158))))) / s206) else (-1.0)) else (-1.0))
-        let !t211 = (if s206 > 0 then (recip s206) else 0.0)
-        let !t212 = (s205 * t211)
-        let !t213 = ((negate s204) * t211)
-        let !s214 = ((t212 * t156) + (t213 * s159))
-        let !s215 = ((t212 * t157) + (t213 * s160))
-        let !s216 = ((t212 * t158) + (t213 * s161))
-        setR v184 s210
+  t128 <- getR v85
+  t129 <- getR v86
+  t130 <- getR v87
+  t131 <- getR v88
+  t132 <- getR v89
+  t133 <- getR v90
+  t134 <- getR v91
+  let !s135 = (t128 - (1.1 * t62))
+  let !s136 = (if (t62 - t128) > 0 then t62 else t128)
+  if s136 > 0 then do
+    let !s137 = (if s135 > 0 then a2 else a1)
+    let !s138 = (if s135 > 0 then a1 else a2)
+    let !s139 = (if s135 > 0 then s0 else a6)
+    let !s140 = (if s135 > 0 then s1 else a7)
+    let !s141 = (if s135 > 0 then s2 else a8)
+    let !s142 = (if s135 > 0 then t129 else t63)
+    let !s143 = (if s135 > 0 then t130 else t64)
+    let !s144 = (if s135 > 0 then t131 else t65)
+    let !s145 = (if s135 > 0 then t132 else t66)
+    let !s146 = (if s135 > 0 then t133 else t67)
+    let !s147 = (if s135 > 0 then t134 else t68)
+    t148 <- rdI pos (3 * (truncate s138))
+    t149 <- rdI pos ((3 * (truncate s138)) + 1)
+    t150 <- rdI pos ((3 * (truncate s138)) + 2)
+    t151 <- rdI normal (3 * (truncate s138))
+    t152 <- rdI normal ((3 * (truncate s138)) + 1)
+    t153 <- rdI normal ((3 * (truncate s138)) + 2)
+    t154 <- rdI axis (3 * (truncate s138))
+    t155 <- rdI axis ((3 * (truncate s138)) + 1)
+    t156 <- rdI axis ((3 * (truncate s138)) + 2)
+    let !s157 = ((t152 * t156) - (t153 * t155))
+    let !s158 = ((t153 * t154) - (t151 * t156))
+    let !s159 = ((t151 * t155) - (t152 * t154))
+    t160 <- rdI scalars (6 * (truncate s138))
+    t161 <- rdI scalars ((6 * (truncate s138)) + 5)
+    t162 <- rdI scalars ((6 * (truncate s138)) + 2)
+    t163 <- rdI scalars ((6 * (truncate s138)) + 3)
+    t164 <- rdI pos (3 * (truncate s137))
+    t165 <- rdI pos ((3 * (truncate s137)) + 1)
+    t166 <- rdI pos ((3 * (truncate s137)) + 2)
+    let !s167 = ((((((a3 * t164) + s139) + (negate t148)) * s142) + ((((a4 * t165) + s140) + (negate t149)) * s143)) + ((((a5 * t166) + s141) + (negate t150)) * s144))
+    let !s168 = (if s167 > 0 then s142 else (negate s142))
+    let !s169 = (if s167 > 0 then s143 else (negate s143))
+    let !s170 = (if s167 > 0 then s144 else (negate s144))
+    let !s171 = ((t152 * s170) - (t153 * s169))
+    let !s172 = ((t153 * s168) - (t151 * s170))
+    let !s173 = ((t151 * s169) - (t152 * s168))
+    v174 <- newR 1.0e300
+    v175 <- newR (-1.0e300)
+    v176 <- newR (-1.0)
+    v177 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i178 -> do
+      let !d178 = fromIntegral i178 :: Double
+      t179 <- rdI verts (3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3))
+      t180 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 1)
+      t181 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 2)
+      v182 <- newR (-1.0)
+      let !t183 = (((a3 * t179) + s139) + (negate t148))
+      let !t184 = (((a4 * t180) + s140) + (negate t149))
+      let !t185 = (((a5 * t181) + s141) + (negate t150))
+      if ((t161 * t161) - (((t183 * t183) + (t184 * t184)) + (t185 * t185))) > 0 then do
+        let !s186 = (((t183 * t154) + (t184 * t155)) + (t185 * t156))
+        let !s187 = (((t183 * s157) + (t184 * s158)) + (t185 * s159))
+        let !s188 = (((t183 * t151) + (t184 * t152)) + (t185 * t153))
+        let !t189 = ((if s186 > 0 then (2.0 * (atan (s187 / ((sqrt ((s186 * s186) + (s187 * s187))) + s186)))) else (if (abs s187) > 0 then (2.0 * (atan (((sqrt ((s186 * s186) + (s187 * s187))) - s186) / s187))) else (if (negate s186) > 0 then 3.141592653589793 else 0.0))) - t160)
+        let !t190 = (floorF ((t189 - (6.283185307179586 * (floorF (t189 / 6.283185307179586)))) / 0.2617993877991494))
+        let !s191 = (if (t190 - 23.0) > 0 then 23.0 else t190)
+        t192 <- rdI verts (3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3))
+        t193 <- rdI verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 1)
+        t194 <- rdI verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 2)
+        t195 <- rdI verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)))
+        t196 <- rdI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+        t197 <- rdI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+        let !t198 = (negate t148)
+        let !t199 = (negate t149)
+        let !t200 = (negate t150)
+        let !s201 = (((((t195 + t198) * t154) + ((t196 + t199) * t155)) + ((t197 + t200) * t156)) - ((((t192 + t198) * t154) + ((t193 + t199) * t155)) + ((t194 + t200) * t156)))
+        let !s202 = (((((t195 + t198) * s157) + ((t196 + t199) * s158)) + ((t197 + t200) * s159)) - ((((t192 + t198) * s157) + ((t193 + t199) * s158)) + ((t194 + t200) * s159)))
+        let !s203 = (sqrt ((s201 * s201) + (s202 * s202)))
+        let !t204 = (t192 + t198)
+        let !t205 = (t193 + t199)
+        let !t206 = (t194 + t200)
+        let !s207 = (if (t161 - (abs s188)) > 0 then (if s203 > 0 then (((s201 * (s187 - (((t204 * s157) + (t205 * s158)) + (t206 * s159)))) - (s202 * (s186 - (((t204 * t154) + (t205 * t155)) + (t206 * t156))))) / s203) else (-1.0)) else (-1.0))
+        let !t208 = (if s203 > 0 then (recip s203) else 0.0)
+        let !t209 = (s202 * t208)
+        let !t210 = ((negate s201) * t208)
+        let !s211 = ((t209 * t154) + (t210 * s157))
+        let !s212 = ((t209 * t155) + (t210 * s158))
+        let !s213 = ((t209 * t156) + (t210 * s159))
+        setR v182 s207
         pure ()
       else do
         pure ()
-      t217 <- getR v184
-      if t217 > 0 then do
-        let !s218 = (((t185 * s173) + (t186 * s174)) + (t187 * s175))
-        t219 <- getR v176
-        if (t219 - s218) > 0 then do
-          setR v176 s218
-          setR v178 d180
+      t214 <- getR v182
+      if t214 > 0 then do
+        let !s215 = (((t183 * s171) + (t184 * s172)) + (t185 * s173))
+        t216 <- getR v174
+        if (t216 - s215) > 0 then do
+          setR v174 s215
+          setR v176 d178
           pure ()
         else do
           pure ()
-        t220 <- getR v177
-        if (s218 - t220) > 0 then do
-          setR v177 s218
-          setR v179 d180
+        t217 <- getR v175
+        if (s215 - t217) > 0 then do
+          setR v175 s215
+          setR v177 d178
           pure ()
         else do
           pure ()
@@ -287,206 +284,206 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       else do
         pure ()
       pure ()
-    t221 <- getR v178
-    t222 <- getR v179
-    t223 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + ((truncate t221) * 4)) + 3))
-    t224 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t221) * 4)) + 3)) + 1)
-    t225 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t221) * 4)) + 3)) + 2)
-    let !s226 = ((a3 * t223) + s141)
-    let !s227 = ((a4 * t224) + s142)
-    let !s228 = ((a5 * t225) + s143)
-    t229 <- rdI meta 2
-    t230 <- rdI meta 3
-    if (((8.0 * (if (1.0 - t230) > 0 then 1.0 else t230)) - t229) - 0.5) > 0 then do
-      wrI meta 2 (t229 + 1.0)
-      t231 <- rdI pos (3 * (truncate s139))
-      t232 <- rdI pos ((3 * (truncate s139)) + 1)
-      t233 <- rdI pos ((3 * (truncate s139)) + 2)
-      t234 <- rdI normal (3 * (truncate s139))
-      t235 <- rdI normal ((3 * (truncate s139)) + 1)
-      t236 <- rdI normal ((3 * (truncate s139)) + 2)
-      t237 <- rdI axis (3 * (truncate s139))
-      t238 <- rdI axis ((3 * (truncate s139)) + 1)
-      t239 <- rdI axis ((3 * (truncate s139)) + 2)
-      let !s240 = ((t235 * t239) - (t236 * t238))
-      let !s241 = ((t236 * t237) - (t234 * t239))
-      let !s242 = ((t234 * t238) - (t235 * t237))
-      t243 <- rdI scalars (6 * (truncate s139))
-      t244 <- rdI scalars ((6 * (truncate s139)) + 5)
-      t245 <- rdI scalars ((6 * (truncate s139)) + 2)
-      t246 <- rdI scalars ((6 * (truncate s139)) + 3)
-      wrI contacts (30 * (truncate t229)) s139
-      wrI contacts ((30 * (truncate t229)) + 1) s140
-      wrI contacts ((30 * (truncate t229)) + 2) a1
-      wrI contacts ((30 * (truncate t229)) + 3) a0
-      let !t247 = (a3 * s170)
-      wrI contacts ((30 * (truncate t229)) + 4) (t247 + (negate ((((t234 * t247) + (t235 * (a4 * s171))) + (t236 * (a5 * s172))) * t234)))
-      let !t248 = (a4 * s171)
-      wrI contacts (((30 * (truncate t229)) + 4) + 1) (t248 + (negate ((((t234 * t247) + (t235 * t248)) + (t236 * (a5 * s172))) * t235)))
-      let !t249 = (a5 * s172)
-      wrI contacts (((30 * (truncate t229)) + 4) + 2) (t249 + (negate ((((t234 * t247) + (t235 * t248)) + (t236 * t249)) * t236)))
-      let !t250 = (t224 + (negate t232))
-      let !t251 = (t225 + (negate t233))
-      let !t252 = (t223 + (negate t231))
-      wrI contacts ((30 * (truncate t229)) + 7) (((((t250 * t249) - (t251 * t248)) * t234) + (((t251 * t247) - (t252 * t249)) * t235)) + (((t252 * t248) - (t250 * t247)) * t236))
-      let !t253 = ((t235 * t249) - (t236 * t248))
-      wrI contacts ((30 * (truncate t229)) + 12) (t253 + (negate ((((t234 * t253) + (t235 * ((t236 * t247) - (t234 * t249)))) + (t236 * ((t234 * t248) - (t235 * t247)))) * t234)))
-      let !t254 = ((t236 * t247) - (t234 * t249))
-      wrI contacts (((30 * (truncate t229)) + 12) + 1) (t254 + (negate ((((t234 * t253) + (t235 * t254)) + (t236 * ((t234 * t248) - (t235 * t247)))) * t235)))
-      let !t255 = ((t234 * t248) - (t235 * t247))
-      wrI contacts (((30 * (truncate t229)) + 12) + 2) (t255 + (negate ((((t234 * t253) + (t235 * t254)) + (t236 * t255)) * t236)))
-      wrI contacts ((30 * (truncate t229)) + 15) (((((t250 * t255) - (t251 * t254)) * t234) + (((t251 * t253) - (t252 * t255)) * t235)) + (((t252 * t254) - (t250 * t253)) * t236))
-      wrI contacts ((30 * (truncate t229)) + 20) (if s169 > 0 then ((((s147 + (negate s226)) * s170) + ((s148 + (negate s227)) * s171)) + ((s149 + (negate s228)) * s172)) else s138)
-      wrI contacts ((30 * (truncate t229)) + 26) 1.0
-      wrI contacts ((30 * (truncate t229)) + 27) t223
-      wrI contacts (((30 * (truncate t229)) + 27) + 1) t224
-      wrI contacts (((30 * (truncate t229)) + 27) + 2) t225
-      if (s140 + 0.5) > 0 then do
-        t256 <- rdI pos (3 * (truncate s140))
-        t257 <- rdI pos ((3 * (truncate s140)) + 1)
-        t258 <- rdI pos ((3 * (truncate s140)) + 2)
-        t259 <- rdI normal (3 * (truncate s140))
-        t260 <- rdI normal ((3 * (truncate s140)) + 1)
-        t261 <- rdI normal ((3 * (truncate s140)) + 2)
-        t262 <- rdI axis (3 * (truncate s140))
-        t263 <- rdI axis ((3 * (truncate s140)) + 1)
-        t264 <- rdI axis ((3 * (truncate s140)) + 2)
-        let !s265 = ((t260 * t264) - (t261 * t263))
-        let !s266 = ((t261 * t262) - (t259 * t264))
-        let !s267 = ((t259 * t263) - (t260 * t262))
-        t268 <- rdI scalars (6 * (truncate s140))
-        t269 <- rdI scalars ((6 * (truncate s140)) + 5)
-        t270 <- rdI scalars ((6 * (truncate s140)) + 2)
-        t271 <- rdI scalars ((6 * (truncate s140)) + 3)
-        wrI contacts ((30 * (truncate t229)) + 8) (s170 + (negate ((((t259 * s170) + (t260 * s171)) + (t261 * s172)) * t259)))
-        wrI contacts (((30 * (truncate t229)) + 8) + 1) (s171 + (negate ((((t259 * s170) + (t260 * s171)) + (t261 * s172)) * t260)))
-        wrI contacts (((30 * (truncate t229)) + 8) + 2) (s172 + (negate ((((t259 * s170) + (t260 * s171)) + (t261 * s172)) * t261)))
-        let !t272 = (s227 + (negate t257))
-        let !t273 = (s228 + (negate t258))
-        let !t274 = (s226 + (negate t256))
-        wrI contacts ((30 * (truncate t229)) + 11) (((((t272 * s172) - (t273 * s171)) * t259) + (((t273 * s170) - (t274 * s172)) * t260)) + (((t274 * s171) - (t272 * s170)) * t261))
-        let !t275 = (a3 * t253)
-        wrI contacts ((30 * (truncate t229)) + 16) (t275 + (negate ((((t259 * t275) + (t260 * (a4 * t254))) + (t261 * (a5 * t255))) * t259)))
-        let !t276 = (a4 * t254)
-        wrI contacts (((30 * (truncate t229)) + 16) + 1) (t276 + (negate ((((t259 * t275) + (t260 * t276)) + (t261 * (a5 * t255))) * t260)))
-        let !t277 = (a5 * t255)
-        wrI contacts (((30 * (truncate t229)) + 16) + 2) (t277 + (negate ((((t259 * t275) + (t260 * t276)) + (t261 * t277)) * t261)))
-        wrI contacts ((30 * (truncate t229)) + 19) (((((t272 * t277) - (t273 * t276)) * t259) + (((t273 * t275) - (t274 * t277)) * t260)) + (((t274 * t276) - (t272 * t275)) * t261))
+    t218 <- getR v176
+    t219 <- getR v177
+    t220 <- rdI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3))
+    t221 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 1)
+    t222 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 2)
+    let !s223 = ((a3 * t220) + s139)
+    let !s224 = ((a4 * t221) + s140)
+    let !s225 = ((a5 * t222) + s141)
+    t226 <- rdI meta 2
+    t227 <- rdI meta 3
+    if (((8.0 * (if (1.0 - t227) > 0 then 1.0 else t227)) - t226) - 0.5) > 0 then do
+      wrI meta 2 (t226 + 1.0)
+      t228 <- rdI pos (3 * (truncate s137))
+      t229 <- rdI pos ((3 * (truncate s137)) + 1)
+      t230 <- rdI pos ((3 * (truncate s137)) + 2)
+      t231 <- rdI normal (3 * (truncate s137))
+      t232 <- rdI normal ((3 * (truncate s137)) + 1)
+      t233 <- rdI normal ((3 * (truncate s137)) + 2)
+      t234 <- rdI axis (3 * (truncate s137))
+      t235 <- rdI axis ((3 * (truncate s137)) + 1)
+      t236 <- rdI axis ((3 * (truncate s137)) + 2)
+      let !s237 = ((t232 * t236) - (t233 * t235))
+      let !s238 = ((t233 * t234) - (t231 * t236))
+      let !s239 = ((t231 * t235) - (t232 * t234))
+      t240 <- rdI scalars (6 * (truncate s137))
+      t241 <- rdI scalars ((6 * (truncate s137)) + 5)
+      t242 <- rdI scalars ((6 * (truncate s137)) + 2)
+      t243 <- rdI scalars ((6 * (truncate s137)) + 3)
+      wrI contacts (30 * (truncate t226)) s137
+      wrI contacts ((30 * (truncate t226)) + 1) s138
+      wrI contacts ((30 * (truncate t226)) + 2) a1
+      wrI contacts ((30 * (truncate t226)) + 3) a0
+      let !t244 = (a3 * s168)
+      wrI contacts ((30 * (truncate t226)) + 4) (t244 + (negate ((((t231 * t244) + (t232 * (a4 * s169))) + (t233 * (a5 * s170))) * t231)))
+      let !t245 = (a4 * s169)
+      wrI contacts (((30 * (truncate t226)) + 4) + 1) (t245 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * (a5 * s170))) * t232)))
+      let !t246 = (a5 * s170)
+      wrI contacts (((30 * (truncate t226)) + 4) + 2) (t246 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * t246)) * t233)))
+      let !t247 = (t221 + (negate t229))
+      let !t248 = (t222 + (negate t230))
+      let !t249 = (t220 + (negate t228))
+      wrI contacts ((30 * (truncate t226)) + 7) (((((t247 * t246) - (t248 * t245)) * t231) + (((t248 * t244) - (t249 * t246)) * t232)) + (((t249 * t245) - (t247 * t244)) * t233))
+      let !t250 = ((t232 * t246) - (t233 * t245))
+      wrI contacts ((30 * (truncate t226)) + 12) (t250 + (negate ((((t231 * t250) + (t232 * ((t233 * t244) - (t231 * t246)))) + (t233 * ((t231 * t245) - (t232 * t244)))) * t231)))
+      let !t251 = ((t233 * t244) - (t231 * t246))
+      wrI contacts (((30 * (truncate t226)) + 12) + 1) (t251 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * ((t231 * t245) - (t232 * t244)))) * t232)))
+      let !t252 = ((t231 * t245) - (t232 * t244))
+      wrI contacts (((30 * (truncate t226)) + 12) + 2) (t252 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * t252)) * t233)))
+      wrI contacts ((30 * (truncate t226)) + 15) (((((t247 * t252) - (t248 * t251)) * t231) + (((t248 * t250) - (t249 * t252)) * t232)) + (((t249 * t251) - (t247 * t250)) * t233))
+      wrI contacts ((30 * (truncate t226)) + 20) (if s167 > 0 then ((((s145 + (negate s223)) * s168) + ((s146 + (negate s224)) * s169)) + ((s147 + (negate s225)) * s170)) else s136)
+      wrI contacts ((30 * (truncate t226)) + 26) 1.0
+      wrI contacts ((30 * (truncate t226)) + 27) t220
+      wrI contacts (((30 * (truncate t226)) + 27) + 1) t221
+      wrI contacts (((30 * (truncate t226)) + 27) + 2) t222
+      if (s138 + 0.5) > 0 then do
+        t253 <- rdI pos (3 * (truncate s138))
+        t254 <- rdI pos ((3 * (truncate s138)) + 1)
+        t255 <- rdI pos ((3 * (truncate s138)) + 2)
+        t256 <- rdI normal (3 * (truncate s138))
+        t257 <- rdI normal ((3 * (truncate s138)) + 1)
+        t258 <- rdI normal ((3 * (truncate s138)) + 2)
+        t259 <- rdI axis (3 * (truncate s138))
+        t260 <- rdI axis ((3 * (truncate s138)) + 1)
+        t261 <- rdI axis ((3 * (truncate s138)) + 2)
+        let !s262 = ((t257 * t261) - (t258 * t260))
+        let !s263 = ((t258 * t259) - (t256 * t261))
+        let !s264 = ((t256 * t260) - (t257 * t259))
+        t265 <- rdI scalars (6 * (truncate s138))
+        t266 <- rdI scalars ((6 * (truncate s138)) + 5)
+        t267 <- rdI scalars ((6 * (truncate s138)) + 2)
+        t268 <- rdI scalars ((6 * (truncate s138)) + 3)
+        wrI contacts ((30 * (truncate t226)) + 8) (s168 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t256)))
+        wrI contacts (((30 * (truncate t226)) + 8) + 1) (s169 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t257)))
+        wrI contacts (((30 * (truncate t226)) + 8) + 2) (s170 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t258)))
+        let !t269 = (s224 + (negate t254))
+        let !t270 = (s225 + (negate t255))
+        let !t271 = (s223 + (negate t253))
+        wrI contacts ((30 * (truncate t226)) + 11) (((((t269 * s170) - (t270 * s169)) * t256) + (((t270 * s168) - (t271 * s170)) * t257)) + (((t271 * s169) - (t269 * s168)) * t258))
+        let !t272 = (a3 * t250)
+        wrI contacts ((30 * (truncate t226)) + 16) (t272 + (negate ((((t256 * t272) + (t257 * (a4 * t251))) + (t258 * (a5 * t252))) * t256)))
+        let !t273 = (a4 * t251)
+        wrI contacts (((30 * (truncate t226)) + 16) + 1) (t273 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * (a5 * t252))) * t257)))
+        let !t274 = (a5 * t252)
+        wrI contacts (((30 * (truncate t226)) + 16) + 2) (t274 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * t274)) * t258)))
+        wrI contacts ((30 * (truncate t226)) + 19) (((((t269 * t274) - (t270 * t273)) * t256) + (((t270 * t272) - (t271 * t274)) * t257)) + (((t271 * t273) - (t269 * t272)) * t258))
         pure ()
       else do
-        wrI contacts ((30 * (truncate t229)) + 8) 0.0
-        wrI contacts (((30 * (truncate t229)) + 8) + 1) 0.0
-        wrI contacts (((30 * (truncate t229)) + 8) + 2) 0.0
-        wrI contacts ((30 * (truncate t229)) + 11) 0.0
-        wrI contacts ((30 * (truncate t229)) + 16) 0.0
-        wrI contacts (((30 * (truncate t229)) + 16) + 1) 0.0
-        wrI contacts (((30 * (truncate t229)) + 16) + 2) 0.0
-        wrI contacts ((30 * (truncate t229)) + 19) 0.0
+        wrI contacts ((30 * (truncate t226)) + 8) 0.0
+        wrI contacts (((30 * (truncate t226)) + 8) + 1) 0.0
+        wrI contacts (((30 * (truncate t226)) + 8) + 2) 0.0
+        wrI contacts ((30 * (truncate t226)) + 11) 0.0
+        wrI contacts ((30 * (truncate t226)) + 16) 0.0
+        wrI contacts (((30 * (truncate t226)) + 16) + 1) 0.0
+        wrI contacts (((30 * (truncate t226)) + 16) + 2) 0.0
+        wrI contacts ((30 * (truncate t226)) + 19) 0.0
         pure ()
       pure ()
     else do
-      t278 <- rdI meta 6
-      wrI meta 6 (t278 + 1.0)
+      t275 <- rdI meta 6
+      wrI meta 6 (t275 + 1.0)
       pure ()
-    if (abs (t222 - t221)) > 0 then do
-      t279 <- rdI verts (3 * ((((97 * (truncate s139)) + 1) + ((truncate t222) * 4)) + 3))
-      t280 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t222) * 4)) + 3)) + 1)
-      t281 <- rdI verts ((3 * ((((97 * (truncate s139)) + 1) + ((truncate t222) * 4)) + 3)) + 2)
-      let !s282 = ((a3 * t279) + s141)
-      let !s283 = ((a4 * t280) + s142)
-      let !s284 = ((a5 * t281) + s143)
-      t285 <- rdI meta 2
-      t286 <- rdI meta 3
-      if (((8.0 * (if (1.0 - t286) > 0 then 1.0 else t286)) - t285) - 0.5) > 0 then do
-        wrI meta 2 (t285 + 1.0)
-        t287 <- rdI pos (3 * (truncate s139))
-        t288 <- rdI pos ((3 * (truncate s139)) + 1)
-        t289 <- rdI pos ((3 * (truncate s139)) + 2)
-        t290 <- rdI normal (3 * (truncate s139))
-        t291 <- rdI normal ((3 * (truncate s139)) + 1)
-        t292 <- rdI normal ((3 * (truncate s139)) + 2)
-        t293 <- rdI axis (3 * (truncate s139))
-        t294 <- rdI axis ((3 * (truncate s139)) + 1)
-        t295 <- rdI axis ((3 * (truncate s139)) + 2)
-        let !s296 = ((t291 * t295) - (t292 * t294))
-        let !s297 = ((t292 * t293) - (t290 * t295))
-        let !s298 = ((t290 * t294) - (t291 * t293))
-        t299 <- rdI scalars (6 * (truncate s139))
-        t300 <- rdI scalars ((6 * (truncate s139)) + 5)
-        t301 <- rdI scalars ((6 * (truncate s139)) + 2)
-        t302 <- rdI scalars ((6 * (truncate s139)) + 3)
-        wrI contacts (30 * (truncate t285)) s139
-        wrI contacts ((30 * (truncate t285)) + 1) s140
-        wrI contacts ((30 * (truncate t285)) + 2) a1
-        wrI contacts ((30 * (truncate t285)) + 3) (a0 + 1.0)
-        let !t303 = (a3 * s170)
-        wrI contacts ((30 * (truncate t285)) + 4) (t303 + (negate ((((t290 * t303) + (t291 * (a4 * s171))) + (t292 * (a5 * s172))) * t290)))
-        let !t304 = (a4 * s171)
-        wrI contacts (((30 * (truncate t285)) + 4) + 1) (t304 + (negate ((((t290 * t303) + (t291 * t304)) + (t292 * (a5 * s172))) * t291)))
-        let !t305 = (a5 * s172)
-        wrI contacts (((30 * (truncate t285)) + 4) + 2) (t305 + (negate ((((t290 * t303) + (t291 * t304)) + (t292 * t305)) * t292)))
-        let !t306 = (t280 + (negate t288))
-        let !t307 = (t281 + (negate t289))
-        let !t308 = (t279 + (negate t287))
-        wrI contacts ((30 * (truncate t285)) + 7) (((((t306 * t305) - (t307 * t304)) * t290) + (((t307 * t303) - (t308 * t305)) * t291)) + (((t308 * t304) - (t306 * t303)) * t292))
-        let !t309 = ((t291 * t305) - (t292 * t304))
-        wrI contacts ((30 * (truncate t285)) + 12) (t309 + (negate ((((t290 * t309) + (t291 * ((t292 * t303) - (t290 * t305)))) + (t292 * ((t290 * t304) - (t291 * t303)))) * t290)))
-        let !t310 = ((t292 * t303) - (t290 * t305))
-        wrI contacts (((30 * (truncate t285)) + 12) + 1) (t310 + (negate ((((t290 * t309) + (t291 * t310)) + (t292 * ((t290 * t304) - (t291 * t303)))) * t291)))
-        let !t311 = ((t290 * t304) - (t291 * t303))
-        wrI contacts (((30 * (truncate t285)) + 12) + 2) (t311 + (negate ((((t290 * t309) + (t291 * t310)) + (t292 * t311)) * t292)))
-        wrI contacts ((30 * (truncate t285)) + 15) (((((t306 * t311) - (t307 * t310)) * t290) + (((t307 * t309) - (t308 * t311)) * t291)) + (((t308 * t310) - (t306 * t309)) * t292))
-        wrI contacts ((30 * (truncate t285)) + 20) (if s169 > 0 then ((((s147 + (negate s282)) * s170) + ((s148 + (negate s283)) * s171)) + ((s149 + (negate s284)) * s172)) else s138)
-        wrI contacts ((30 * (truncate t285)) + 26) 1.0
-        wrI contacts ((30 * (truncate t285)) + 27) t279
-        wrI contacts (((30 * (truncate t285)) + 27) + 1) t280
-        wrI contacts (((30 * (truncate t285)) + 27) + 2) t281
-        if (s140 + 0.5) > 0 then do
-          t312 <- rdI pos (3 * (truncate s140))
-          t313 <- rdI pos ((3 * (truncate s140)) + 1)
-          t314 <- rdI pos ((3 * (truncate s140)) + 2)
-          t315 <- rdI normal (3 * (truncate s140))
-          t316 <- rdI normal ((3 * (truncate s140)) + 1)
-          t317 <- rdI normal ((3 * (truncate s140)) + 2)
-          t318 <- rdI axis (3 * (truncate s140))
-          t319 <- rdI axis ((3 * (truncate s140)) + 1)
-          t320 <- rdI axis ((3 * (truncate s140)) + 2)
-          let !s321 = ((t316 * t320) - (t317 * t319))
-          let !s322 = ((t317 * t318) - (t315 * t320))
-          let !s323 = ((t315 * t319) - (t316 * t318))
-          t324 <- rdI scalars (6 * (truncate s140))
-          t325 <- rdI scalars ((6 * (truncate s140)) + 5)
-          t326 <- rdI scalars ((6 * (truncate s140)) + 2)
-          t327 <- rdI scalars ((6 * (truncate s140)) + 3)
-          wrI contacts ((30 * (truncate t285)) + 8) (s170 + (negate ((((t315 * s170) + (t316 * s171)) + (t317 * s172)) * t315)))
-          wrI contacts (((30 * (truncate t285)) + 8) + 1) (s171 + (negate ((((t315 * s170) + (t316 * s171)) + (t317 * s172)) * t316)))
-          wrI contacts (((30 * (truncate t285)) + 8) + 2) (s172 + (negate ((((t315 * s170) + (t316 * s171)) + (t317 * s172)) * t317)))
-          let !t328 = (s283 + (negate t313))
-          let !t329 = (s284 + (negate t314))
-          let !t330 = (s282 + (negate t312))
-          wrI contacts ((30 * (truncate t285)) + 11) (((((t328 * s172) - (t329 * s171)) * t315) + (((t329 * s170) - (t330 * s172)) * t316)) + (((t330 * s171) - (t328 * s170)) * t317))
-          let !t331 = (a3 * t309)
-          wrI contacts ((30 * (truncate t285)) + 16) (t331 + (negate ((((t315 * t331) + (t316 * (a4 * t310))) + (t317 * (a5 * t311))) * t315)))
-          let !t332 = (a4 * t310)
-          wrI contacts (((30 * (truncate t285)) + 16) + 1) (t332 + (negate ((((t315 * t331) + (t316 * t332)) + (t317 * (a5 * t311))) * t316)))
-          let !t333 = (a5 * t311)
-          wrI contacts (((30 * (truncate t285)) + 16) + 2) (t333 + (negate ((((t315 * t331) + (t316 * t332)) + (t317 * t333)) * t317)))
-          wrI contacts ((30 * (truncate t285)) + 19) (((((t328 * t333) - (t329 * t332)) * t315) + (((t329 * t331) - (t330 * t333)) * t316)) + (((t330 * t332) - (t328 * t331)) * t317))
+    if (abs (t219 - t218)) > 0 then do
+      t276 <- rdI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3))
+      t277 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 1)
+      t278 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 2)
+      let !s279 = ((a3 * t276) + s139)
+      let !s280 = ((a4 * t277) + s140)
+      let !s281 = ((a5 * t278) + s141)
+      t282 <- rdI meta 2
+      t283 <- rdI meta 3
+      if (((8.0 * (if (1.0 - t283) > 0 then 1.0 else t283)) - t282) - 0.5) > 0 then do
+        wrI meta 2 (t282 + 1.0)
+        t284 <- rdI pos (3 * (truncate s137))
+        t285 <- rdI pos ((3 * (truncate s137)) + 1)
+        t286 <- rdI pos ((3 * (truncate s137)) + 2)
+        t287 <- rdI normal (3 * (truncate s137))
+        t288 <- rdI normal ((3 * (truncate s137)) + 1)
+        t289 <- rdI normal ((3 * (truncate s137)) + 2)
+        t290 <- rdI axis (3 * (truncate s137))
+        t291 <- rdI axis ((3 * (truncate s137)) + 1)
+        t292 <- rdI axis ((3 * (truncate s137)) + 2)
+        let !s293 = ((t288 * t292) - (t289 * t291))
+        let !s294 = ((t289 * t290) - (t287 * t292))
+        let !s295 = ((t287 * t291) - (t288 * t290))
+        t296 <- rdI scalars (6 * (truncate s137))
+        t297 <- rdI scalars ((6 * (truncate s137)) + 5)
+        t298 <- rdI scalars ((6 * (truncate s137)) + 2)
+        t299 <- rdI scalars ((6 * (truncate s137)) + 3)
+        wrI contacts (30 * (truncate t282)) s137
+        wrI contacts ((30 * (truncate t282)) + 1) s138
+        wrI contacts ((30 * (truncate t282)) + 2) a1
+        wrI contacts ((30 * (truncate t282)) + 3) (a0 + 1.0)
+        let !t300 = (a3 * s168)
+        wrI contacts ((30 * (truncate t282)) + 4) (t300 + (negate ((((t287 * t300) + (t288 * (a4 * s169))) + (t289 * (a5 * s170))) * t287)))
+        let !t301 = (a4 * s169)
+        wrI contacts (((30 * (truncate t282)) + 4) + 1) (t301 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * (a5 * s170))) * t288)))
+        let !t302 = (a5 * s170)
+        wrI contacts (((30 * (truncate t282)) + 4) + 2) (t302 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * t302)) * t289)))
+        let !t303 = (t277 + (negate t285))
+        let !t304 = (t278 + (negate t286))
+        let !t305 = (t276 + (negate t284))
+        wrI contacts ((30 * (truncate t282)) + 7) (((((t303 * t302) - (t304 * t301)) * t287) + (((t304 * t300) - (t305 * t302)) * t288)) + (((t305 * t301) - (t303 * t300)) * t289))
+        let !t306 = ((t288 * t302) - (t289 * t301))
+        wrI contacts ((30 * (truncate t282)) + 12) (t306 + (negate ((((t287 * t306) + (t288 * ((t289 * t300) - (t287 * t302)))) + (t289 * ((t287 * t301) - (t288 * t300)))) * t287)))
+        let !t307 = ((t289 * t300) - (t287 * t302))
+        wrI contacts (((30 * (truncate t282)) + 12) + 1) (t307 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * ((t287 * t301) - (t288 * t300)))) * t288)))
+        let !t308 = ((t287 * t301) - (t288 * t300))
+        wrI contacts (((30 * (truncate t282)) + 12) + 2) (t308 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * t308)) * t289)))
+        wrI contacts ((30 * (truncate t282)) + 15) (((((t303 * t308) - (t304 * t307)) * t287) + (((t304 * t306) - (t305 * t308)) * t288)) + (((t305 * t307) - (t303 * t306)) * t289))
+        wrI contacts ((30 * (truncate t282)) + 20) (if s167 > 0 then ((((s145 + (negate s279)) * s168) + ((s146 + (negate s280)) * s169)) + ((s147 + (negate s281)) * s170)) else s136)
+        wrI contacts ((30 * (truncate t282)) + 26) 1.0
+        wrI contacts ((30 * (truncate t282)) + 27) t276
+        wrI contacts (((30 * (truncate t282)) + 27) + 1) t277
+        wrI contacts (((30 * (truncate t282)) + 27) + 2) t278
+        if (s138 + 0.5) > 0 then do
+          t309 <- rdI pos (3 * (truncate s138))
+          t310 <- rdI pos ((3 * (truncate s138)) + 1)
+          t311 <- rdI pos ((3 * (truncate s138)) + 2)
+          t312 <- rdI normal (3 * (truncate s138))
+          t313 <- rdI normal ((3 * (truncate s138)) + 1)
+          t314 <- rdI normal ((3 * (truncate s138)) + 2)
+          t315 <- rdI axis (3 * (truncate s138))
+          t316 <- rdI axis ((3 * (truncate s138)) + 1)
+          t317 <- rdI axis ((3 * (truncate s138)) + 2)
+          let !s318 = ((t313 * t317) - (t314 * t316))
+          let !s319 = ((t314 * t315) - (t312 * t317))
+          let !s320 = ((t312 * t316) - (t313 * t315))
+          t321 <- rdI scalars (6 * (truncate s138))
+          t322 <- rdI scalars ((6 * (truncate s138)) + 5)
+          t323 <- rdI scalars ((6 * (truncate s138)) + 2)
+          t324 <- rdI scalars ((6 * (truncate s138)) + 3)
+          wrI contacts ((30 * (truncate t282)) + 8) (s168 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t312)))
+          wrI contacts (((30 * (truncate t282)) + 8) + 1) (s169 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t313)))
+          wrI contacts (((30 * (truncate t282)) + 8) + 2) (s170 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t314)))
+          let !t325 = (s280 + (negate t310))
+          let !t326 = (s281 + (negate t311))
+          let !t327 = (s279 + (negate t309))
+          wrI contacts ((30 * (truncate t282)) + 11) (((((t325 * s170) - (t326 * s169)) * t312) + (((t326 * s168) - (t327 * s170)) * t313)) + (((t327 * s169) - (t325 * s168)) * t314))
+          let !t328 = (a3 * t306)
+          wrI contacts ((30 * (truncate t282)) + 16) (t328 + (negate ((((t312 * t328) + (t313 * (a4 * t307))) + (t314 * (a5 * t308))) * t312)))
+          let !t329 = (a4 * t307)
+          wrI contacts (((30 * (truncate t282)) + 16) + 1) (t329 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * (a5 * t308))) * t313)))
+          let !t330 = (a5 * t308)
+          wrI contacts (((30 * (truncate t282)) + 16) + 2) (t330 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * t330)) * t314)))
+          wrI contacts ((30 * (truncate t282)) + 19) (((((t325 * t330) - (t326 * t329)) * t312) + (((t326 * t328) - (t327 * t330)) * t313)) + (((t327 * t329) - (t325 * t328)) * t314))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t285)) + 8) 0.0
-          wrI contacts (((30 * (truncate t285)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t285)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t285)) + 11) 0.0
-          wrI contacts ((30 * (truncate t285)) + 16) 0.0
-          wrI contacts (((30 * (truncate t285)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t285)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t285)) + 19) 0.0
+          wrI contacts ((30 * (truncate t282)) + 8) 0.0
+          wrI contacts (((30 * (truncate t282)) + 8) + 1) 0.0
+          wrI contacts (((30 * (truncate t282)) + 8) + 2) 0.0
+          wrI contacts ((30 * (truncate t282)) + 11) 0.0
+          wrI contacts ((30 * (truncate t282)) + 16) 0.0
+          wrI contacts (((30 * (truncate t282)) + 16) + 1) 0.0
+          wrI contacts (((30 * (truncate t282)) + 16) + 2) 0.0
+          wrI contacts ((30 * (truncate t282)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t334 <- rdI meta 6
-        wrI meta 6 (t334 + 1.0)
+        t331 <- rdI meta 6
+        wrI meta 6 (t331 + 1.0)
         pure ()
       pure ()
     else do

@@ -57,9 +57,12 @@ lower target prefix next scope roots =
       -- JavaScript's pow names its operands twice (see 'binary')
       powOperands = IS.fromList
         [ o | target == JavaScript, i <- IM.keys counts, Bin Pow a b <- [nodeById i], o <- [a, b] ]
-      shouldBind i = compound (nodeById i) && (IM.findWithDefault 0 i counts > 1 || IS.member i powOperands)
+      shared i = compound (nodeById i) && (IM.findWithDefault 0 i counts > 1 || IS.member i powOperands)
+      bound = case target of
+        Haskell -> IS.fromList (filter shared order) `IS.difference` onlyUnderConditions target order rootIds
+        _ -> IS.fromList (filter shared order)
       bind (bs, sc, k) i
-        | shouldBind i =
+        | IS.member i bound =
             let name = prefix ++ show k
             in ((name, render target sc i) : bs, IM.insert i name sc, k + 1)
         | otherwise = (bs, sc, k)
@@ -67,6 +70,51 @@ lower target prefix next scope roots =
       -- a post-order (operands first).
       (revBindings, scope', next') = foldl' bind ([], scope, next) (reverse order)
   in Lowered (reverse revBindings) (map (render target scope') rootIds) scope' next'
+
+-- | The shared nodes of a Haskell block that are expensive (a division, a
+-- root, a transcendental) and used only inside the arms of conditionals:
+-- they are printed where they are used, not bound at the top of the block.
+--
+-- LLVM turns a printed conditional whose arms are cheap into a branch-free
+-- select, which waits for both arms; a division bound at the top then sits
+-- on the path of every conditional that uses it, taken or not (each
+-- iteration of a Newton projection that has already converged, say). V8
+-- branches instead and skips the untaken arm. Inside the arm, the division
+-- makes the arm expensive, LLVM keeps the branch, and the division is done
+-- only where the arm is taken. The values are the same operations on the
+-- same operands, so the results are too.
+onlyUnderConditions :: Target -> [Int] -> [Int] -> IS.IntSet
+onlyUnderConditions _ order rootIds = IS.fromList [ i | i <- order, IM.member i guardedAll ]
+  where
+    -- every reference to each node: its parent and whether it is an arm
+    refs :: IM.IntMap [(Int, Bool)]
+    refs = IM.fromListWith (++)
+      [ (c, [(p, isArm)])
+      | p <- order
+      , (c, isArm) <- case nodeById p of
+          Sel c t e -> [(c, False), (t, True), (e, True)]
+          n -> map (, False) (children n)
+      ]
+    roots = IS.fromList rootIds
+    counts i = length (IM.findWithDefault [] i refs) + (if IS.member i roots then 1 else 0)
+    -- parents come before their operands in 'order', so one pass decides,
+    -- for each node, whether it is printed as its own binding and, if
+    -- not, whether every place it is printed lies inside a conditional's arm
+    (guardedAll, _) = foldl decide (IM.empty, IS.empty) order
+    decide (guarded, boundSet) i
+      | IS.member i roots = (guarded, IS.insert i boundSet)
+      | otherwise =
+          let rs = IM.findWithDefault [] i refs
+              underArm (p, isArm) = isArm || (not (IS.member p boundSet) && IM.member p guarded)
+              allGuarded = not (null rs) && all underArm rs
+              ownBinding = compound (nodeById i) && counts i > 1 && not (allGuarded && expensive (nodeById i))
+          in if ownBinding then (guarded, IS.insert i boundSet)
+             else if allGuarded then (IM.insert i () guarded, boundSet)
+             else (guarded, boundSet)
+    expensive = \case
+      Bin op _ _ -> op == Div || op == Pow
+      Un op _ -> op `notElem` [Neg, Abs, Sign, Floor]
+      _ -> False
 
 compound :: Node -> Bool
 compound = \case
