@@ -127,22 +127,39 @@ async function testSpace(context, base, name) {
     failure || info.error || errors.join("; ") || (info.space + " " + info.hash));
   if (failure !== null) { await page.close(); return null; }
 
+  // paused, so that the spot below is looked for among the bodies the screenshot shows
+  await page.evaluate(function () { window.manifold.pause(); window.manifold.render(); });
   const shot = await canvasShot(page, path.join(OUT, name + ".png"));
   const W = info.stats.width, H = info.stats.height;
   if (!check(name + ": screenshot is the canvas's backing store", shot.width === W && shot.height === H,
     "screenshot " + shot.width + "×" + shot.height + ", canvas " + W + "×" + H)) { await page.close(); return null; }
   await checkVisibleBodies(check, page, name);
 
-  // a surface pixel: the centre if the camera looks at the surface, else a scene point's pixel
+  // a surface pixel with no body on it: the centre if the camera looks at the
+  // surface, else a scene point's pixel, else a pixel of a coarse grid
   const spot = await page.evaluate(function (scene) {
-    const m = window.manifold, st = m.stats();
+    const m = window.manifold, st = m.stats(), bodies = m.bodies();
     const tries = [[Math.floor(st.width / 2), Math.floor(st.height / 2)]];
     scene.forEach(function (p) { const q = m.project(p); if (q) tries.push([Math.floor(q[0]), Math.floor(q[1])]); });
+    for (let y = 20; y < st.height; y += 40) for (let x = 20; x < st.width; x += 40) tries.push([x, y]);
+    // a body (or its image through the origin, in a quotient space) covers
+    // less than twice its size around its centre
+    const bare = function (q) {
+      return bodies.every(function (b) {
+        return [1, -1].every(function (s) {
+          const d = Math.hypot(q[0] - s * b.p[0], q[1] - s * b.p[1], q[2] - s * b.p[2]);
+          return d > 2 * b.size;
+        });
+      });
+    };
     for (const [x, y] of tries) {
       if (x < 2 || y < 2 || x >= st.width - 2 || y >= st.height - 2) continue;
-      // away from silhouettes: the 5×5 neighbourhood is surface too
+      // away from silhouettes and bodies: the 5×5 neighbourhood is bare surface too
       let all = true;
-      for (let dy = -2; dy <= 2 && all; dy++) for (let dx = -2; dx <= 2 && all; dx++) all = !!m.pick(x + dx, y + dy);
+      for (let dy = -2; dy <= 2 && all; dy++) for (let dx = -2; dx <= 2 && all; dx++) {
+        const q = m.pick(x + dx, y + dy);
+        all = !!q && bare(q);
+      }
       if (all) return [x, y];
     }
     return null;
