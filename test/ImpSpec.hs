@@ -6,10 +6,11 @@
 -- must be bit-for-bit identical.
 module ImpSpec (spec) where
 
-import Control.Exception (evaluate)
+import Control.Exception (evaluate, try, IOException)
 import Control.Monad (forM_, unless, when)
 import Data.List (intercalate, isInfixOf)
 import qualified Data.Vector.Unboxed as V
+import qualified Data.Vector.Unboxed.Mutable as MV
 import GHC.Float (castDoubleToWord64)
 import Test.Hspec
 import Test.QuickCheck
@@ -17,8 +18,10 @@ import Test.QuickCheck.Gen (unGen)
 import Test.QuickCheck.Random (mkQCGen)
 import Text.Printf (printf)
 
+import Manifold.Compiled.Runtime (chkI)
 import Manifold.Field
 import Manifold.Stage.Imp
+import Manifold.Stage.Print (Target (..))
 
 import NodeJS
 
@@ -184,6 +187,20 @@ runNativeOn prog inst = do
 staged :: String -> [String] -> ([StagedArray] -> Staged ()) -> String
 staged name arrays prog = stageProcedure (JsProcedure name arrays []) (\as _ -> prog as)
 
+-- | Rows of three: reads two of a row, then under a condition one of them
+-- again and one beyond the row, and writes the third.
+rowsOfThree :: Imp m => Array m -> Array m -> m ()
+rowsOfThree meta a = do
+  n <- toIndex <$> readArray meta 0
+  forEach n $ \i -> do
+    x <- readArray a (3 * i)
+    y <- readArray a (3 * i + 1)
+    whenPositive x $ do
+      y' <- readArray a (3 * i + 1)
+      z <- readArray a (3 * i + 5)
+      writeArray a (3 * i + 1) (y' + z)
+    writeArray a (3 * i + 2) (x + y)
+
 bitsEq :: [[Double]] -> [[Double]] -> Bool
 bitsEq a b = map (map castDoubleToWord64) a == map (map castDoubleToWord64) b
 
@@ -224,6 +241,26 @@ spec = do
                      | (idx, x) <- zip [0 :: Int ..] mat, let r = idx `div` round cols ]
       unless (rows == 0 || and (zipWith (\a b -> abs (a - b) < 1e-12) (n !! 2) expected)) $
         expectationFailure ("scaleRows is wrong on " ++ show inst ++ ": " ++ show (n !! 2))
+
+  it "checks a Haskell row's indices once per block: what the block reads anyway covers its conditions" $ do
+    let printed = lines (concat (stageProceduresFor Haskell
+          [(JsProcedure "rows" ["meta", "a"] [], \as _ -> case as of
+              [m, a] -> rowsOfThree m a
+              _ -> error "arity")]))
+        checks = [ words ln | ln <- printed, "chkI" `elem` words ln ]
+    -- the row's check covers offsets 0 to 2 (the write at +2 comes after
+    -- the condition); the condition's +1 needs none, its +5 its own
+    checks `shouldBe` [["chkI", "meta", "0", "0", "0"], ["chkI", "a", "(3", "*", "i1)", "0", "2"], ["chkI", "a", "(3", "*", "i1)", "5", "5"]]
+    filter (\ln -> "rdI" `isInfixOf` ln || "wrI" `isInfixOf` ln) printed `shouldBe` []
+
+  it "a failed index check is an error naming the indices, before any access" $ do
+    arr <- MV.replicate 4 (0 :: Double)
+    chkI arr 1 0 2
+    chkI arr 0 0 3
+    outside <- try (chkI arr 2 0 2) :: IO (Either IOException ())
+    either show (const "passed") outside `shouldSatisfy` ("indices 2 to 4 outside an array of 4" `isInfixOf`)
+    below <- try (chkI arr 1 (-2) 0) :: IO (Either IOException ())
+    either show (const "passed") below `shouldSatisfy` ("indices -1 to 1 outside an array of 4" `isInfixOf`)
 
   it "refuses two different bodies under one subroutine name" $ do
     let clash = staged "clash" ["a"] (\as -> case as of

@@ -28,34 +28,41 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (t12 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-4.0) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wrI vel (3 * i3) t15
-        wrI vel ((3 * i3) + 1) t16
-        wrI vel ((3 * i3) + 2) t17
+        wrU vel (3 * i3) t15
+        wrU vel ((3 * i3) + 1) t16
+        wrU vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rdI meta 1
-        wrI meta 1 (t18 + 1.0)
+        chkI meta 0 1 1
+        t18 <- rdU meta 1
+        wrU meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,12 +72,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -80,54 +89,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -143,19 +163,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -176,16 +202,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rdI verts (3 * (97 * i31))
-    t68 <- rdI verts ((3 * (97 * i31)) + 1)
-    t69 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t67 <- rdU verts (3 * (97 * i31))
+    t68 <- rdU verts ((3 * (97 * i31)) + 1)
+    t69 <- rdU verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
-      t75 <- rdI radii ((24 * i31) + i71)
+      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
+      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i71) 0 0
+      t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -204,27 +233,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v88 <- newR 0.0
       loopI 0.0 24.0 $ \i89 -> do
         let !d89 = fromIntegral i89 :: Double
-        t90 <- rdI radii ((24 * i31) + i89)
+        chkI radii ((24 * i31) + i89) 0 0
+        t90 <- rdU radii ((24 * i31) + i89)
         loopI 6.0 12.0 $ \i91 -> do
           let !d91 = fromIntegral i91 :: Double
           let !t92 = (d89 + d91)
-          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))) 0 0
+          t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
+            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
+            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
-              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
-              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
-              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
-              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
-              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
-              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
+              t102 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0)) 0 0
+              t103 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0)) 0 0
+              t104 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101))) 0 0
+              t105 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0)) 0 0
+              t106 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0)) 0 0
+              t107 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -264,12 +303,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
-                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
-                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
-                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
+                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
+                t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t149 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t150 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -339,89 +382,98 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s203 = (t202 * t198)
         let !s204 = (t202 * t199)
         let !s205 = (t202 * t200)
-        t206 <- rdI meta 2
-        t207 <- rdI meta 3
+        t206 <- rdU meta 2
+        t207 <- rdU meta 3
         if (((8.0 * (if (1.0 - t207) > 0 then 1.0 else t207)) - t206) - 0.5) > 0 then do
-          wrI meta 2 (t206 + 1.0)
-          t208 <- rdI pos (3 * i31)
-          t209 <- rdI pos ((3 * i31) + 1)
-          t210 <- rdI pos ((3 * i31) + 2)
-          t211 <- rdI normal (3 * i31)
-          t212 <- rdI normal ((3 * i31) + 1)
-          t213 <- rdI normal ((3 * i31) + 2)
-          t214 <- rdI axis (3 * i31)
-          t215 <- rdI axis ((3 * i31) + 1)
-          t216 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t206 + 1.0)
+          t208 <- rdU pos (3 * i31)
+          t209 <- rdU pos ((3 * i31) + 1)
+          t210 <- rdU pos ((3 * i31) + 2)
+          chkI normal (3 * i31) 0 2
+          t211 <- rdU normal (3 * i31)
+          t212 <- rdU normal ((3 * i31) + 1)
+          t213 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t214 <- rdU axis (3 * i31)
+          t215 <- rdU axis ((3 * i31) + 1)
+          t216 <- rdU axis ((3 * i31) + 2)
           let !s217 = ((t212 * t216) - (t213 * t215))
           let !s218 = ((t213 * t214) - (t211 * t216))
           let !s219 = ((t211 * t215) - (t212 * t214))
-          t220 <- rdI scalars (6 * i31)
-          t221 <- rdI scalars ((6 * i31) + 5)
-          t222 <- rdI scalars ((6 * i31) + 2)
-          t223 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t206)) d31
-          wrI contacts ((30 * (truncate t206)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t206)) + 2) d31
-          wrI contacts ((30 * (truncate t206)) + 3) 12.0
-          wrI contacts ((30 * (truncate t206)) + 4) (s203 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t211)))
-          wrI contacts (((30 * (truncate t206)) + 4) + 1) (s204 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t212)))
-          wrI contacts (((30 * (truncate t206)) + 4) + 2) (s205 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t213)))
-          wrI contacts ((30 * (truncate t206)) + 7) 0.0
-          wrI contacts ((30 * (truncate t206)) + 12) 0.0
-          wrI contacts (((30 * (truncate t206)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t206)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t206)) + 15) 0.0
-          wrI contacts ((30 * (truncate t206)) + 20) t162
-          wrI contacts ((30 * (truncate t206)) + 26) 0.6
-          wrI contacts ((30 * (truncate t206)) + 27) t163
-          wrI contacts (((30 * (truncate t206)) + 27) + 1) t164
-          wrI contacts (((30 * (truncate t206)) + 27) + 2) t165
+          chkI scalars (6 * i31) 0 0
+          t220 <- rdU scalars (6 * i31)
+          t221 <- rdU scalars ((6 * i31) + 5)
+          t222 <- rdU scalars ((6 * i31) + 2)
+          t223 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t206)) 0 29
+          wrU contacts (30 * (truncate t206)) d31
+          wrU contacts ((30 * (truncate t206)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t206)) + 2) d31
+          wrU contacts ((30 * (truncate t206)) + 3) 12.0
+          wrU contacts ((30 * (truncate t206)) + 4) (s203 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t211)))
+          wrU contacts ((30 * (truncate t206)) + 5) (s204 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t212)))
+          wrU contacts ((30 * (truncate t206)) + 6) (s205 + (negate ((((t211 * s203) + (t212 * s204)) + (t213 * s205)) * t213)))
+          wrU contacts ((30 * (truncate t206)) + 7) 0.0
+          wrU contacts ((30 * (truncate t206)) + 12) 0.0
+          wrU contacts ((30 * (truncate t206)) + 13) 0.0
+          wrU contacts ((30 * (truncate t206)) + 14) 0.0
+          wrU contacts ((30 * (truncate t206)) + 15) 0.0
+          wrU contacts ((30 * (truncate t206)) + 20) t162
+          wrU contacts ((30 * (truncate t206)) + 26) 0.6
+          wrU contacts ((30 * (truncate t206)) + 27) t163
+          wrU contacts ((30 * (truncate t206)) + 28) t164
+          wrU contacts ((30 * (truncate t206)) + 29) t165
           if (-0.5) > 0 then do
-            t224 <- rdI pos (-3)
-            t225 <- rdI pos (-2)
-            t226 <- rdI pos (-1)
-            t227 <- rdI normal (-3)
-            t228 <- rdI normal (-2)
-            t229 <- rdI normal (-1)
-            t230 <- rdI axis (-3)
-            t231 <- rdI axis (-2)
-            t232 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t224 <- rdU pos (-3)
+            t225 <- rdU pos (-2)
+            t226 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t227 <- rdU normal (-3)
+            t228 <- rdU normal (-2)
+            t229 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t230 <- rdU axis (-3)
+            t231 <- rdU axis (-2)
+            t232 <- rdU axis (-1)
             let !s233 = ((t228 * t232) - (t229 * t231))
             let !s234 = ((t229 * t230) - (t227 * t232))
             let !s235 = ((t227 * t231) - (t228 * t230))
-            t236 <- rdI scalars (-6)
-            t237 <- rdI scalars (-1)
-            t238 <- rdI scalars (-4)
-            t239 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t206)) + 8) (s203 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t227)))
-            wrI contacts (((30 * (truncate t206)) + 8) + 1) (s204 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t228)))
-            wrI contacts (((30 * (truncate t206)) + 8) + 2) (s205 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t229)))
+            chkI scalars 0 (-6) (-1)
+            t236 <- rdU scalars (-6)
+            t237 <- rdU scalars (-1)
+            t238 <- rdU scalars (-4)
+            t239 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t206)) + 8) (s203 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t227)))
+            wrU contacts ((30 * (truncate t206)) + 9) (s204 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t228)))
+            wrU contacts ((30 * (truncate t206)) + 10) (s205 + (negate ((((t227 * s203) + (t228 * s204)) + (t229 * s205)) * t229)))
             let !t240 = (t164 + (negate t225))
             let !t241 = (t165 + (negate t226))
             let !t242 = (t163 + (negate t224))
-            wrI contacts ((30 * (truncate t206)) + 11) (((((t240 * s205) - (t241 * s204)) * t227) + (((t241 * s203) - (t242 * s205)) * t228)) + (((t242 * s204) - (t240 * s203)) * t229))
+            wrU contacts ((30 * (truncate t206)) + 11) (((((t240 * s205) - (t241 * s204)) * t227) + (((t241 * s203) - (t242 * s205)) * t228)) + (((t242 * s204) - (t240 * s203)) * t229))
             let !t243 = ((t212 * s205) - (t213 * s204))
-            wrI contacts ((30 * (truncate t206)) + 16) (t243 + (negate ((((t227 * t243) + (t228 * ((t213 * s203) - (t211 * s205)))) + (t229 * ((t211 * s204) - (t212 * s203)))) * t227)))
+            wrU contacts ((30 * (truncate t206)) + 16) (t243 + (negate ((((t227 * t243) + (t228 * ((t213 * s203) - (t211 * s205)))) + (t229 * ((t211 * s204) - (t212 * s203)))) * t227)))
             let !t244 = ((t213 * s203) - (t211 * s205))
-            wrI contacts (((30 * (truncate t206)) + 16) + 1) (t244 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * ((t211 * s204) - (t212 * s203)))) * t228)))
+            wrU contacts ((30 * (truncate t206)) + 17) (t244 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * ((t211 * s204) - (t212 * s203)))) * t228)))
             let !t245 = ((t211 * s204) - (t212 * s203))
-            wrI contacts (((30 * (truncate t206)) + 16) + 2) (t245 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * t245)) * t229)))
-            wrI contacts ((30 * (truncate t206)) + 19) (((((t240 * t245) - (t241 * t244)) * t227) + (((t241 * t243) - (t242 * t245)) * t228)) + (((t242 * t244) - (t240 * t243)) * t229))
+            wrU contacts ((30 * (truncate t206)) + 18) (t245 + (negate ((((t227 * t243) + (t228 * t244)) + (t229 * t245)) * t229)))
+            wrU contacts ((30 * (truncate t206)) + 19) (((((t240 * t245) - (t241 * t244)) * t227) + (((t241 * t243) - (t242 * t245)) * t228)) + (((t242 * t244) - (t240 * t243)) * t229))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t206)) + 8) 0.0
-            wrI contacts (((30 * (truncate t206)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t206)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t206)) + 11) 0.0
-            wrI contacts ((30 * (truncate t206)) + 16) 0.0
-            wrI contacts (((30 * (truncate t206)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t206)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t206)) + 19) 0.0
+            wrU contacts ((30 * (truncate t206)) + 8) 0.0
+            wrU contacts ((30 * (truncate t206)) + 9) 0.0
+            wrU contacts ((30 * (truncate t206)) + 10) 0.0
+            wrU contacts ((30 * (truncate t206)) + 11) 0.0
+            wrU contacts ((30 * (truncate t206)) + 16) 0.0
+            wrU contacts ((30 * (truncate t206)) + 17) 0.0
+            wrU contacts ((30 * (truncate t206)) + 18) 0.0
+            wrU contacts ((30 * (truncate t206)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t246 <- rdI meta 6
-          wrI meta 6 (t246 + 1.0)
+          chkI meta 0 6 6
+          t246 <- rdU meta 6
+          wrU meta 6 (t246 + 1.0)
           pure ()
         pure ()
       else do
@@ -434,44 +486,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -479,12 +536,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -492,20 +550,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -516,19 +577,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -536,98 +600,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1170,12 +1246,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s677 = ((t139 * (t659 * (t676 * t672))) + (t252 * s544))
       let !s678 = ((t139 * (t659 * (t676 * t673))) + (t252 * s545))
       let !s679 = ((t139 * (t659 * (t676 * t674))) + (t252 * s546))
-      t680 <- rdI mouse 4
-      t681 <- rdI mouse 5
-      t682 <- rdI mouse 6
-      t683 <- rdI mouse 7
-      t684 <- rdI mouse 8
-      t685 <- rdI mouse 9
+      t680 <- rdU mouse 4
+      t681 <- rdU mouse 5
+      t682 <- rdU mouse 6
+      t683 <- rdU mouse 7
+      t684 <- rdU mouse 8
+      t685 <- rdU mouse 9
       let !t686 = (recip t101)
       let !t687 = (6.283185307179586 * t683)
       let !s688 = (recip (t103 * ((((2.0 * t686) * t684) * t687) + (t103 * ((t686 * t687) * t687)))))
@@ -1186,28 +1262,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s693 = (s656 + (negate t680))
       let !s694 = (s657 + (negate t681))
       let !s695 = (s658 + (negate t682))
-      t696 <- rdI mouse 10
-      t697 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t698 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t699 <- rdI vel (3 * (truncate t100))
-      t700 <- rdI vel ((3 * (truncate t100)) + 1)
-      t701 <- rdI vel ((3 * (truncate t100)) + 2)
-      t702 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t699 + ((t697 * t696) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t700 + ((t697 * t696) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t701 + ((t697 * t696) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t702 + ((t698 * t696) * (((((s691 * t112) - (s692 * t111)) * t107) + (((s692 * t110) - (s690 * t112)) * t108)) + (((s690 * t111) - (s691 * t110)) * t109))))
-      t703 <- rdI mouse 11
-      t704 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t705 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t706 <- rdI vel (3 * (truncate t100))
-      t707 <- rdI vel ((3 * (truncate t100)) + 1)
-      t708 <- rdI vel ((3 * (truncate t100)) + 2)
-      t709 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t706 + ((t704 * t703) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t707 + ((t704 * t703) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t708 + ((t704 * t703) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t709 + ((t705 * t703) * (((((s691 * s115) - (s692 * s114)) * t107) + (((s692 * s113) - (s690 * s115)) * t108)) + (((s690 * s114) - (s691 * s113)) * t109))))
+      t696 <- rdU mouse 10
+      t697 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t698 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t699 <- rdU vel (3 * (truncate t100))
+      t700 <- rdU vel ((3 * (truncate t100)) + 1)
+      t701 <- rdU vel ((3 * (truncate t100)) + 2)
+      t702 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t699 + ((t697 * t696) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t700 + ((t697 * t696) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t701 + ((t697 * t696) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t702 + ((t698 * t696) * (((((s691 * t112) - (s692 * t111)) * t107) + (((s692 * t110) - (s690 * t112)) * t108)) + (((s690 * t111) - (s691 * t110)) * t109))))
+      t703 <- rdU mouse 11
+      t704 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t705 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t706 <- rdU vel (3 * (truncate t100))
+      t707 <- rdU vel ((3 * (truncate t100)) + 1)
+      t708 <- rdU vel ((3 * (truncate t100)) + 2)
+      t709 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t706 + ((t704 * t703) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t707 + ((t704 * t703) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t708 + ((t704 * t703) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t709 + ((t705 * t703) * (((((s691 * s115) - (s692 * s114)) * t107) + (((s692 * s113) - (s690 * s115)) * t108)) + (((s690 * s114) - (s691 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -1218,38 +1295,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d710 = fromIntegral i710 :: Double
     loopI 0.0 t9 $ \i711 -> do
       let !d711 = fromIntegral i711 :: Double
-      t712 <- rdI contacts (30 * i711)
-      t713 <- rdI contacts ((30 * i711) + 1)
-      t714 <- rdI contacts ((30 * i711) + 12)
-      t715 <- rdI contacts (((30 * i711) + 12) + 1)
-      t716 <- rdI contacts (((30 * i711) + 12) + 2)
-      t717 <- rdI contacts ((30 * i711) + 15)
-      t718 <- rdI contacts ((30 * i711) + 16)
-      t719 <- rdI contacts (((30 * i711) + 16) + 1)
-      t720 <- rdI contacts (((30 * i711) + 16) + 2)
-      t721 <- rdI contacts ((30 * i711) + 19)
-      t722 <- rdI contacts ((30 * i711) + 4)
-      t723 <- rdI contacts (((30 * i711) + 4) + 1)
-      t724 <- rdI contacts (((30 * i711) + 4) + 2)
-      t725 <- rdI contacts ((30 * i711) + 7)
-      t726 <- rdI contacts ((30 * i711) + 8)
-      t727 <- rdI contacts (((30 * i711) + 8) + 1)
-      t728 <- rdI contacts (((30 * i711) + 8) + 2)
-      t729 <- rdI contacts ((30 * i711) + 11)
-      t730 <- rdI contacts ((30 * i711) + 26)
-      t731 <- rdI contacts ((30 * i711) + 24)
-      t732 <- rdI contacts ((30 * i711) + 25)
-      t733 <- rdI contacts ((30 * i711) + 22)
-      t734 <- rdI vel (3 * (truncate t712))
-      t735 <- rdI vel ((3 * (truncate t712)) + 1)
-      t736 <- rdI vel ((3 * (truncate t712)) + 2)
-      t737 <- rdI scalars ((6 * (truncate t712)) + 1)
+      chkI contacts (30 * i711) 0 26
+      t712 <- rdU contacts (30 * i711)
+      t713 <- rdU contacts ((30 * i711) + 1)
+      t714 <- rdU contacts ((30 * i711) + 12)
+      t715 <- rdU contacts ((30 * i711) + 13)
+      t716 <- rdU contacts ((30 * i711) + 14)
+      t717 <- rdU contacts ((30 * i711) + 15)
+      t718 <- rdU contacts ((30 * i711) + 16)
+      t719 <- rdU contacts ((30 * i711) + 17)
+      t720 <- rdU contacts ((30 * i711) + 18)
+      t721 <- rdU contacts ((30 * i711) + 19)
+      t722 <- rdU contacts ((30 * i711) + 4)
+      t723 <- rdU contacts ((30 * i711) + 5)
+      t724 <- rdU contacts ((30 * i711) + 6)
+      t725 <- rdU contacts ((30 * i711) + 7)
+      t726 <- rdU contacts ((30 * i711) + 8)
+      t727 <- rdU contacts ((30 * i711) + 9)
+      t728 <- rdU contacts ((30 * i711) + 10)
+      t729 <- rdU contacts ((30 * i711) + 11)
+      t730 <- rdU contacts ((30 * i711) + 26)
+      t731 <- rdU contacts ((30 * i711) + 24)
+      t732 <- rdU contacts ((30 * i711) + 25)
+      t733 <- rdU contacts ((30 * i711) + 22)
+      chkI vel (3 * (truncate t712)) 0 2
+      t734 <- rdU vel (3 * (truncate t712))
+      t735 <- rdU vel ((3 * (truncate t712)) + 1)
+      t736 <- rdU vel ((3 * (truncate t712)) + 2)
+      chkI scalars (6 * (truncate t712)) 1 3
+      t737 <- rdU scalars ((6 * (truncate t712)) + 1)
       v738 <- newR 0.0
       if (t713 + 0.5) > 0 then do
-        t739 <- rdI vel (3 * (truncate t713))
-        t740 <- rdI vel ((3 * (truncate t713)) + 1)
-        t741 <- rdI vel ((3 * (truncate t713)) + 2)
-        t742 <- rdI scalars ((6 * (truncate t713)) + 1)
+        chkI vel (3 * (truncate t713)) 0 2
+        t739 <- rdU vel (3 * (truncate t713))
+        t740 <- rdU vel ((3 * (truncate t713)) + 1)
+        t741 <- rdU vel ((3 * (truncate t713)) + 2)
+        chkI scalars (6 * (truncate t713)) 1 1
+        t742 <- rdU scalars ((6 * (truncate t713)) + 1)
         setR v738 ((((t718 * t739) + (t719 * t740)) + (t720 * t741)) + (t721 * t742))
         pure ()
       else do
@@ -1262,43 +1344,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t748 = (if (t747 - t745) > 0 then t745 else t747)
       let !t749 = (if (t746 - t748) > 0 then t746 else t748)
       let !s750 = (if (1.0 - (abs (t749 - t749))) > 0 then t749 else 0.0)
-      wrI contacts ((30 * i711) + 25) s750
-      t751 <- rdI scalars ((6 * (truncate t712)) + 2)
-      t752 <- rdI scalars ((6 * (truncate t712)) + 3)
-      t753 <- rdI vel (3 * (truncate t712))
-      t754 <- rdI vel ((3 * (truncate t712)) + 1)
-      t755 <- rdI vel ((3 * (truncate t712)) + 2)
-      t756 <- rdI scalars ((6 * (truncate t712)) + 1)
-      wrI vel (3 * (truncate t712)) (t753 + ((t751 * (s750 - t732)) * t714))
-      wrI vel ((3 * (truncate t712)) + 1) (t754 + ((t751 * (s750 - t732)) * t715))
-      wrI vel ((3 * (truncate t712)) + 2) (t755 + ((t751 * (s750 - t732)) * t716))
-      wrI scalars ((6 * (truncate t712)) + 1) (t756 + ((t752 * (s750 - t732)) * t717))
+      wrU contacts ((30 * i711) + 25) s750
+      t751 <- rdU scalars ((6 * (truncate t712)) + 2)
+      t752 <- rdU scalars ((6 * (truncate t712)) + 3)
+      t753 <- rdU vel (3 * (truncate t712))
+      t754 <- rdU vel ((3 * (truncate t712)) + 1)
+      t755 <- rdU vel ((3 * (truncate t712)) + 2)
+      t756 <- rdU scalars ((6 * (truncate t712)) + 1)
+      wrU vel (3 * (truncate t712)) (t753 + ((t751 * (s750 - t732)) * t714))
+      wrU vel ((3 * (truncate t712)) + 1) (t754 + ((t751 * (s750 - t732)) * t715))
+      wrU vel ((3 * (truncate t712)) + 2) (t755 + ((t751 * (s750 - t732)) * t716))
+      wrU scalars ((6 * (truncate t712)) + 1) (t756 + ((t752 * (s750 - t732)) * t717))
       if (t713 + 0.5) > 0 then do
-        t757 <- rdI scalars ((6 * (truncate t713)) + 2)
-        t758 <- rdI scalars ((6 * (truncate t713)) + 3)
-        t759 <- rdI vel (3 * (truncate t713))
-        t760 <- rdI vel ((3 * (truncate t713)) + 1)
-        t761 <- rdI vel ((3 * (truncate t713)) + 2)
-        t762 <- rdI scalars ((6 * (truncate t713)) + 1)
-        wrI vel (3 * (truncate t713)) (t759 + ((t757 * (negate (s750 - t732))) * t718))
-        wrI vel ((3 * (truncate t713)) + 1) (t760 + ((t757 * (negate (s750 - t732))) * t719))
-        wrI vel ((3 * (truncate t713)) + 2) (t761 + ((t757 * (negate (s750 - t732))) * t720))
-        wrI scalars ((6 * (truncate t713)) + 1) (t762 + ((t758 * (negate (s750 - t732))) * t721))
+        chkI scalars (6 * (truncate t713)) 1 3
+        t757 <- rdU scalars ((6 * (truncate t713)) + 2)
+        t758 <- rdU scalars ((6 * (truncate t713)) + 3)
+        chkI vel (3 * (truncate t713)) 0 2
+        t759 <- rdU vel (3 * (truncate t713))
+        t760 <- rdU vel ((3 * (truncate t713)) + 1)
+        t761 <- rdU vel ((3 * (truncate t713)) + 2)
+        t762 <- rdU scalars ((6 * (truncate t713)) + 1)
+        wrU vel (3 * (truncate t713)) (t759 + ((t757 * (negate (s750 - t732))) * t718))
+        wrU vel ((3 * (truncate t713)) + 1) (t760 + ((t757 * (negate (s750 - t732))) * t719))
+        wrU vel ((3 * (truncate t713)) + 2) (t761 + ((t757 * (negate (s750 - t732))) * t720))
+        wrU scalars ((6 * (truncate t713)) + 1) (t762 + ((t758 * (negate (s750 - t732))) * t721))
         pure ()
       else do
         pure ()
-      t763 <- rdI contacts ((30 * i711) + 21)
-      t764 <- rdI contacts ((30 * i711) + 23)
-      t765 <- rdI vel (3 * (truncate t712))
-      t766 <- rdI vel ((3 * (truncate t712)) + 1)
-      t767 <- rdI vel ((3 * (truncate t712)) + 2)
-      t768 <- rdI scalars ((6 * (truncate t712)) + 1)
+      t763 <- rdU contacts ((30 * i711) + 21)
+      t764 <- rdU contacts ((30 * i711) + 23)
+      t765 <- rdU vel (3 * (truncate t712))
+      t766 <- rdU vel ((3 * (truncate t712)) + 1)
+      t767 <- rdU vel ((3 * (truncate t712)) + 2)
+      t768 <- rdU scalars ((6 * (truncate t712)) + 1)
       v769 <- newR 0.0
       if (t713 + 0.5) > 0 then do
-        t770 <- rdI vel (3 * (truncate t713))
-        t771 <- rdI vel ((3 * (truncate t713)) + 1)
-        t772 <- rdI vel ((3 * (truncate t713)) + 2)
-        t773 <- rdI scalars ((6 * (truncate t713)) + 1)
+        chkI vel (3 * (truncate t713)) 0 2
+        t770 <- rdU vel (3 * (truncate t713))
+        t771 <- rdU vel ((3 * (truncate t713)) + 1)
+        t772 <- rdU vel ((3 * (truncate t713)) + 2)
+        chkI scalars (6 * (truncate t713)) 1 1
+        t773 <- rdU scalars ((6 * (truncate t713)) + 1)
         setR v769 ((((t726 * t770) + (t727 * t771)) + (t728 * t772)) + (t729 * t773))
         pure ()
       else do
@@ -1308,73 +1394,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t776 = (t731 + ((t730 * (t764 - s775)) * t763))
       let !t777 = (if (negate t776) > 0 then 0.0 else t776)
       let !s778 = (if (1.0 - (abs (t777 - t777))) > 0 then t777 else 0.0)
-      wrI contacts ((30 * i711) + 24) s778
-      t779 <- rdI scalars ((6 * (truncate t712)) + 2)
-      t780 <- rdI scalars ((6 * (truncate t712)) + 3)
-      t781 <- rdI vel (3 * (truncate t712))
-      t782 <- rdI vel ((3 * (truncate t712)) + 1)
-      t783 <- rdI vel ((3 * (truncate t712)) + 2)
-      t784 <- rdI scalars ((6 * (truncate t712)) + 1)
-      wrI vel (3 * (truncate t712)) (t781 + ((t779 * (s778 - t731)) * t722))
-      wrI vel ((3 * (truncate t712)) + 1) (t782 + ((t779 * (s778 - t731)) * t723))
-      wrI vel ((3 * (truncate t712)) + 2) (t783 + ((t779 * (s778 - t731)) * t724))
-      wrI scalars ((6 * (truncate t712)) + 1) (t784 + ((t780 * (s778 - t731)) * t725))
+      wrU contacts ((30 * i711) + 24) s778
+      t779 <- rdU scalars ((6 * (truncate t712)) + 2)
+      t780 <- rdU scalars ((6 * (truncate t712)) + 3)
+      t781 <- rdU vel (3 * (truncate t712))
+      t782 <- rdU vel ((3 * (truncate t712)) + 1)
+      t783 <- rdU vel ((3 * (truncate t712)) + 2)
+      t784 <- rdU scalars ((6 * (truncate t712)) + 1)
+      wrU vel (3 * (truncate t712)) (t781 + ((t779 * (s778 - t731)) * t722))
+      wrU vel ((3 * (truncate t712)) + 1) (t782 + ((t779 * (s778 - t731)) * t723))
+      wrU vel ((3 * (truncate t712)) + 2) (t783 + ((t779 * (s778 - t731)) * t724))
+      wrU scalars ((6 * (truncate t712)) + 1) (t784 + ((t780 * (s778 - t731)) * t725))
       if (t713 + 0.5) > 0 then do
-        t785 <- rdI scalars ((6 * (truncate t713)) + 2)
-        t786 <- rdI scalars ((6 * (truncate t713)) + 3)
-        t787 <- rdI vel (3 * (truncate t713))
-        t788 <- rdI vel ((3 * (truncate t713)) + 1)
-        t789 <- rdI vel ((3 * (truncate t713)) + 2)
-        t790 <- rdI scalars ((6 * (truncate t713)) + 1)
-        wrI vel (3 * (truncate t713)) (t787 + ((t785 * (negate (s778 - t731))) * t726))
-        wrI vel ((3 * (truncate t713)) + 1) (t788 + ((t785 * (negate (s778 - t731))) * t727))
-        wrI vel ((3 * (truncate t713)) + 2) (t789 + ((t785 * (negate (s778 - t731))) * t728))
-        wrI scalars ((6 * (truncate t713)) + 1) (t790 + ((t786 * (negate (s778 - t731))) * t729))
+        chkI scalars (6 * (truncate t713)) 1 3
+        t785 <- rdU scalars ((6 * (truncate t713)) + 2)
+        t786 <- rdU scalars ((6 * (truncate t713)) + 3)
+        chkI vel (3 * (truncate t713)) 0 2
+        t787 <- rdU vel (3 * (truncate t713))
+        t788 <- rdU vel ((3 * (truncate t713)) + 1)
+        t789 <- rdU vel ((3 * (truncate t713)) + 2)
+        t790 <- rdU scalars ((6 * (truncate t713)) + 1)
+        wrU vel (3 * (truncate t713)) (t787 + ((t785 * (negate (s778 - t731))) * t726))
+        wrU vel ((3 * (truncate t713)) + 1) (t788 + ((t785 * (negate (s778 - t731))) * t727))
+        wrU vel ((3 * (truncate t713)) + 2) (t789 + ((t785 * (negate (s778 - t731))) * t728))
+        wrU scalars ((6 * (truncate t713)) + 1) (t790 + ((t786 * (negate (s778 - t731))) * t729))
         pure ()
       else do
         pure ()
       pure ()
-    t791 <- rdI mouse 0
+    t791 <- rdU mouse 0
     if t791 > 0 then do
-      t792 <- rdI mouse 1
-      t793 <- rdI scalars ((6 * (truncate t792)) + 2)
+      chkI mouse 0 1 1
+      t792 <- rdU mouse 1
+      chkI scalars (6 * (truncate t792)) 2 2
+      t793 <- rdU scalars ((6 * (truncate t792)) + 2)
       if t793 > 0 then do
-        t794 <- rdI scalars ((6 * (truncate t792)) + 3)
-        t795 <- rdI params 0
-        t796 <- rdI pos (3 * (truncate t792))
-        t797 <- rdI pos ((3 * (truncate t792)) + 1)
-        t798 <- rdI pos ((3 * (truncate t792)) + 2)
-        t799 <- rdI normal (3 * (truncate t792))
-        t800 <- rdI normal ((3 * (truncate t792)) + 1)
-        t801 <- rdI normal ((3 * (truncate t792)) + 2)
-        t802 <- rdI axis (3 * (truncate t792))
-        t803 <- rdI axis ((3 * (truncate t792)) + 1)
-        t804 <- rdI axis ((3 * (truncate t792)) + 2)
+        chkI scalars (6 * (truncate t792)) 0 5
+        t794 <- rdU scalars ((6 * (truncate t792)) + 3)
+        t795 <- rdU params 0
+        chkI pos (3 * (truncate t792)) 0 2
+        t796 <- rdU pos (3 * (truncate t792))
+        t797 <- rdU pos ((3 * (truncate t792)) + 1)
+        t798 <- rdU pos ((3 * (truncate t792)) + 2)
+        chkI normal (3 * (truncate t792)) 0 2
+        t799 <- rdU normal (3 * (truncate t792))
+        t800 <- rdU normal ((3 * (truncate t792)) + 1)
+        t801 <- rdU normal ((3 * (truncate t792)) + 2)
+        chkI axis (3 * (truncate t792)) 0 2
+        t802 <- rdU axis (3 * (truncate t792))
+        t803 <- rdU axis ((3 * (truncate t792)) + 1)
+        t804 <- rdU axis ((3 * (truncate t792)) + 2)
         let !s805 = ((t800 * t804) - (t801 * t803))
         let !s806 = ((t801 * t802) - (t799 * t804))
         let !s807 = ((t799 * t803) - (t800 * t802))
-        t808 <- rdI scalars (6 * (truncate t792))
-        t809 <- rdI scalars ((6 * (truncate t792)) + 5)
-        t810 <- rdI scalars ((6 * (truncate t792)) + 2)
-        t811 <- rdI scalars ((6 * (truncate t792)) + 3)
-        t812 <- rdI pos (3 * (truncate t792))
-        t813 <- rdI pos ((3 * (truncate t792)) + 1)
-        t814 <- rdI pos ((3 * (truncate t792)) + 2)
-        t815 <- rdI normal (3 * (truncate t792))
-        t816 <- rdI normal ((3 * (truncate t792)) + 1)
-        t817 <- rdI normal ((3 * (truncate t792)) + 2)
-        t818 <- rdI axis (3 * (truncate t792))
-        t819 <- rdI axis ((3 * (truncate t792)) + 1)
-        t820 <- rdI axis ((3 * (truncate t792)) + 2)
+        t808 <- rdU scalars (6 * (truncate t792))
+        t809 <- rdU scalars ((6 * (truncate t792)) + 5)
+        t810 <- rdU scalars ((6 * (truncate t792)) + 2)
+        t811 <- rdU scalars ((6 * (truncate t792)) + 3)
+        t812 <- rdU pos (3 * (truncate t792))
+        t813 <- rdU pos ((3 * (truncate t792)) + 1)
+        t814 <- rdU pos ((3 * (truncate t792)) + 2)
+        t815 <- rdU normal (3 * (truncate t792))
+        t816 <- rdU normal ((3 * (truncate t792)) + 1)
+        t817 <- rdU normal ((3 * (truncate t792)) + 2)
+        t818 <- rdU axis (3 * (truncate t792))
+        t819 <- rdU axis ((3 * (truncate t792)) + 1)
+        t820 <- rdU axis ((3 * (truncate t792)) + 2)
         let !s821 = ((t816 * t820) - (t817 * t819))
         let !s822 = ((t817 * t818) - (t815 * t820))
         let !s823 = ((t815 * t819) - (t816 * t818))
-        t824 <- rdI scalars (6 * (truncate t792))
-        t825 <- rdI scalars ((6 * (truncate t792)) + 5)
-        t826 <- rdI scalars ((6 * (truncate t792)) + 2)
-        t827 <- rdI scalars ((6 * (truncate t792)) + 3)
-        t828 <- rdI mouse 2
-        t829 <- rdI mouse 3
+        t824 <- rdU scalars (6 * (truncate t792))
+        t825 <- rdU scalars ((6 * (truncate t792)) + 5)
+        t826 <- rdU scalars ((6 * (truncate t792)) + 2)
+        t827 <- rdU scalars ((6 * (truncate t792)) + 3)
+        chkI mouse 0 2 11
+        t828 <- rdU mouse 2
+        t829 <- rdU mouse 3
         let !t830 = (t828 / 4.0)
         let !t831 = (if (abs t830) > 0 then 1.0 else 0.0)
         let !t832 = (t824 + t829)
@@ -1917,12 +2012,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s1369 = ((t831 * (t1351 * (t1368 * t1364))) + (t944 * s1236))
         let !s1370 = ((t831 * (t1351 * (t1368 * t1365))) + (t944 * s1237))
         let !s1371 = ((t831 * (t1351 * (t1368 * t1366))) + (t944 * s1238))
-        t1372 <- rdI mouse 4
-        t1373 <- rdI mouse 5
-        t1374 <- rdI mouse 6
-        t1375 <- rdI mouse 7
-        t1376 <- rdI mouse 8
-        t1377 <- rdI mouse 9
+        t1372 <- rdU mouse 4
+        t1373 <- rdU mouse 5
+        t1374 <- rdU mouse 6
+        t1375 <- rdU mouse 7
+        t1376 <- rdU mouse 8
+        t1377 <- rdU mouse 9
         let !t1378 = (recip t793)
         let !t1379 = (6.283185307179586 * t1375)
         let !s1380 = (recip (t795 * ((((2.0 * t1378) * t1376) * t1379) + (t795 * ((t1378 * t1379) * t1379)))))
@@ -1933,11 +2028,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s1385 = (s1348 + (negate t1372))
         let !s1386 = (s1349 + (negate t1373))
         let !s1387 = (s1350 + (negate t1374))
-        t1388 <- rdI mouse 10
-        t1389 <- rdI vel (3 * (truncate t792))
-        t1390 <- rdI vel ((3 * (truncate t792)) + 1)
-        t1391 <- rdI vel ((3 * (truncate t792)) + 2)
-        t1392 <- rdI scalars ((6 * (truncate t792)) + 1)
+        t1388 <- rdU mouse 10
+        chkI vel (3 * (truncate t792)) 0 2
+        t1389 <- rdU vel (3 * (truncate t792))
+        t1390 <- rdU vel ((3 * (truncate t792)) + 1)
+        t1391 <- rdU vel ((3 * (truncate t792)) + 2)
+        t1392 <- rdU scalars ((6 * (truncate t792)) + 1)
         let !t1393 = (t1377 * t795)
         let !t1394 = (negate t1393)
         let !t1395 = (((((s1383 * t804) - (s1384 * t803)) * t799) + (((s1384 * t802) - (s1382 * t804)) * t800)) + (((s1382 * t803) - (s1383 * t802)) * t801))
@@ -1945,38 +2041,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t1397 = (if (t1396 - t1393) > 0 then t1393 else t1396)
         let !t1398 = (if (t1394 - t1397) > 0 then t1394 else t1397)
         let !s1399 = (if (1.0 - (abs (t1398 - t1398))) > 0 then t1398 else 0.0)
-        wrI mouse 10 s1399
-        t1400 <- rdI scalars ((6 * (truncate t792)) + 2)
-        t1401 <- rdI scalars ((6 * (truncate t792)) + 3)
-        t1402 <- rdI vel (3 * (truncate t792))
-        t1403 <- rdI vel ((3 * (truncate t792)) + 1)
-        t1404 <- rdI vel ((3 * (truncate t792)) + 2)
-        t1405 <- rdI scalars ((6 * (truncate t792)) + 1)
-        wrI vel (3 * (truncate t792)) (t1402 + ((t1400 * (s1399 - t1388)) * t802))
-        wrI vel ((3 * (truncate t792)) + 1) (t1403 + ((t1400 * (s1399 - t1388)) * t803))
-        wrI vel ((3 * (truncate t792)) + 2) (t1404 + ((t1400 * (s1399 - t1388)) * t804))
-        wrI scalars ((6 * (truncate t792)) + 1) (t1405 + ((t1401 * (s1399 - t1388)) * t1395))
-        t1406 <- rdI mouse 11
-        t1407 <- rdI vel (3 * (truncate t792))
-        t1408 <- rdI vel ((3 * (truncate t792)) + 1)
-        t1409 <- rdI vel ((3 * (truncate t792)) + 2)
-        t1410 <- rdI scalars ((6 * (truncate t792)) + 1)
+        wrU mouse 10 s1399
+        t1400 <- rdU scalars ((6 * (truncate t792)) + 2)
+        t1401 <- rdU scalars ((6 * (truncate t792)) + 3)
+        t1402 <- rdU vel (3 * (truncate t792))
+        t1403 <- rdU vel ((3 * (truncate t792)) + 1)
+        t1404 <- rdU vel ((3 * (truncate t792)) + 2)
+        t1405 <- rdU scalars ((6 * (truncate t792)) + 1)
+        wrU vel (3 * (truncate t792)) (t1402 + ((t1400 * (s1399 - t1388)) * t802))
+        wrU vel ((3 * (truncate t792)) + 1) (t1403 + ((t1400 * (s1399 - t1388)) * t803))
+        wrU vel ((3 * (truncate t792)) + 2) (t1404 + ((t1400 * (s1399 - t1388)) * t804))
+        wrU scalars ((6 * (truncate t792)) + 1) (t1405 + ((t1401 * (s1399 - t1388)) * t1395))
+        t1406 <- rdU mouse 11
+        t1407 <- rdU vel (3 * (truncate t792))
+        t1408 <- rdU vel ((3 * (truncate t792)) + 1)
+        t1409 <- rdU vel ((3 * (truncate t792)) + 2)
+        t1410 <- rdU scalars ((6 * (truncate t792)) + 1)
         let !t1411 = (((((s1383 * s807) - (s1384 * s806)) * t799) + (((s1384 * s805) - (s1382 * s807)) * t800)) + (((s1382 * s806) - (s1383 * s805)) * t801))
         let !t1412 = (t1406 + ((negate ((((((s805 * t1407) + (s806 * t1408)) + (s807 * t1409)) + (t1411 * t1410)) + (s1381 * (((s1385 * s805) + (s1386 * s806)) + (s1387 * s807)))) + (s1380 * t1406))) / (((t793 * (((s805 * s805) + (s806 * s806)) + (s807 * s807))) + ((t794 * t1411) * t1411)) + s1380)))
         let !t1413 = (if (t1412 - t1393) > 0 then t1393 else t1412)
         let !t1414 = (if (t1394 - t1413) > 0 then t1394 else t1413)
         let !s1415 = (if (1.0 - (abs (t1414 - t1414))) > 0 then t1414 else 0.0)
-        wrI mouse 11 s1415
-        t1416 <- rdI scalars ((6 * (truncate t792)) + 2)
-        t1417 <- rdI scalars ((6 * (truncate t792)) + 3)
-        t1418 <- rdI vel (3 * (truncate t792))
-        t1419 <- rdI vel ((3 * (truncate t792)) + 1)
-        t1420 <- rdI vel ((3 * (truncate t792)) + 2)
-        t1421 <- rdI scalars ((6 * (truncate t792)) + 1)
-        wrI vel (3 * (truncate t792)) (t1418 + ((t1416 * (s1415 - t1406)) * s805))
-        wrI vel ((3 * (truncate t792)) + 1) (t1419 + ((t1416 * (s1415 - t1406)) * s806))
-        wrI vel ((3 * (truncate t792)) + 2) (t1420 + ((t1416 * (s1415 - t1406)) * s807))
-        wrI scalars ((6 * (truncate t792)) + 1) (t1421 + ((t1417 * (s1415 - t1406)) * t1411))
+        wrU mouse 11 s1415
+        t1416 <- rdU scalars ((6 * (truncate t792)) + 2)
+        t1417 <- rdU scalars ((6 * (truncate t792)) + 3)
+        t1418 <- rdU vel (3 * (truncate t792))
+        t1419 <- rdU vel ((3 * (truncate t792)) + 1)
+        t1420 <- rdU vel ((3 * (truncate t792)) + 2)
+        t1421 <- rdU scalars ((6 * (truncate t792)) + 1)
+        wrU vel (3 * (truncate t792)) (t1418 + ((t1416 * (s1415 - t1406)) * s805))
+        wrU vel ((3 * (truncate t792)) + 1) (t1419 + ((t1416 * (s1415 - t1406)) * s806))
+        wrU vel ((3 * (truncate t792)) + 2) (t1420 + ((t1416 * (s1415 - t1406)) * s807))
+        wrU scalars ((6 * (truncate t792)) + 1) (t1421 + ((t1417 * (s1415 - t1406)) * t1411))
         pure ()
       else do
         pure ()
@@ -1984,51 +2080,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t1422 <- rdI meta 0
+  t1422 <- rdU meta 0
   loopI 0.0 t1422 $ \i1423 -> do
     let !d1423 = fromIntegral i1423 :: Double
-    wrI bodyPrev ((2 * i1423) + 1) 0.0
+    chkI bodyPrev (2 * i1423) 1 1
+    wrU bodyPrev ((2 * i1423) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i1424 -> do
     let !d1424 = fromIntegral i1424 :: Double
-    t1425 <- rdI contacts ((30 * i1424) + 2)
-    wrI prev (4 * i1424) t1425
-    t1426 <- rdI contacts ((30 * i1424) + 3)
-    wrI prev ((4 * i1424) + 1) t1426
-    t1427 <- rdI contacts ((30 * i1424) + 24)
-    wrI prev ((4 * i1424) + 2) t1427
-    t1428 <- rdI contacts ((30 * i1424) + 25)
-    wrI prev ((4 * i1424) + 3) t1428
-    t1429 <- rdI bodyPrev ((2 * (truncate t1425)) + 1)
+    chkI contacts (30 * i1424) 2 25
+    t1425 <- rdU contacts ((30 * i1424) + 2)
+    chkI prev (4 * i1424) 0 3
+    wrU prev (4 * i1424) t1425
+    t1426 <- rdU contacts ((30 * i1424) + 3)
+    wrU prev ((4 * i1424) + 1) t1426
+    t1427 <- rdU contacts ((30 * i1424) + 24)
+    wrU prev ((4 * i1424) + 2) t1427
+    t1428 <- rdU contacts ((30 * i1424) + 25)
+    wrU prev ((4 * i1424) + 3) t1428
+    chkI bodyPrev (2 * (truncate t1425)) 1 1
+    t1429 <- rdU bodyPrev ((2 * (truncate t1425)) + 1)
     if (0.5 - t1429) > 0 then do
-      wrI bodyPrev (2 * (truncate t1425)) d1424
+      chkI bodyPrev (2 * (truncate t1425)) 0 0
+      wrU bodyPrev (2 * (truncate t1425)) d1424
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t1425)) + 1) (t1429 + 1.0)
+    wrU bodyPrev ((2 * (truncate t1425)) + 1) (t1429 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = ((abs t18) - 0.6)
@@ -2261,51 +2369,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t246 = (t12 + (t1 * t13))
     let !t247 = (1.0 - (abs ((((((((((((((s185 - s185) + (s186 - s186)) + (s187 - s187)) + (s224 - s224)) + (s225 - s225)) + (s226 - s226)) + (s233 - s233)) + (s234 - s234)) + (s235 - s235)) + (s198 - s198)) + (s199 - s199)) + (s200 - s200)) + (t246 - t246)) + (s244 - s244))))
     if (if (t245 - t247) > 0 then t247 else t245) > 0 then do
-      wrI pos (3 * i2) s185
-      wrI pos ((3 * i2) + 1) s186
-      wrI pos ((3 * i2) + 2) s187
-      wrI vel (3 * i2) s224
-      wrI vel ((3 * i2) + 1) s225
-      wrI vel ((3 * i2) + 2) s226
-      wrI axis (3 * i2) s233
-      wrI axis ((3 * i2) + 1) s234
-      wrI axis ((3 * i2) + 2) s235
-      wrI normal (3 * i2) s198
-      wrI normal ((3 * i2) + 1) s199
-      wrI normal ((3 * i2) + 2) s200
-      wrI scalars (6 * i2) t246
+      wrU pos (3 * i2) s185
+      wrU pos ((3 * i2) + 1) s186
+      wrU pos ((3 * i2) + 2) s187
+      wrU vel (3 * i2) s224
+      wrU vel ((3 * i2) + 1) s225
+      wrU vel ((3 * i2) + 2) s226
+      wrU axis (3 * i2) s233
+      wrU axis ((3 * i2) + 1) s234
+      wrU axis ((3 * i2) + 2) s235
+      wrU normal (3 * i2) s198
+      wrU normal ((3 * i2) + 1) s199
+      wrU normal ((3 * i2) + 2) s200
+      wrU scalars (6 * i2) t246
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t248 <- rdI meta 1
-      wrI meta 1 (t248 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t248 <- rdU meta 1
+      wrU meta 1 (t248 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -2314,7 +2430,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -2435,9 +2552,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s136 = ((t28 * t122) + (t110 * t8))
         let !s137 = ((t28 * t123) + (t110 * t9))
         let !s138 = ((t28 * t125) + (t110 * t10))
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
         let !t139 = (s111 + (s27 * s133))
         let !t140 = ((abs t139) - 0.6)
         let !t141 = (negate t140)
@@ -2546,9 +2664,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s244 = ((t28 * t230) + (t110 * s136))
         let !s245 = ((t28 * t231) + (t110 * s137))
         let !s246 = ((t28 * t233) + (t110 * s138))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
         let !t247 = (s220 + (s27 * s241))
         let !t248 = ((abs t247) - 0.6)
         let !t249 = (negate t248)
@@ -2657,9 +2776,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s352 = ((t28 * t338) + (t110 * s244))
         let !s353 = ((t28 * t339) + (t110 * s245))
         let !s354 = ((t28 * t341) + (t110 * s246))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s328 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s329 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s330 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s328 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s329 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s330 else t4)
         let !t355 = (s328 + (s27 * s349))
         let !t356 = ((abs t355) - 0.6)
         let !t357 = (negate t356)
@@ -2768,9 +2888,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s460 = ((t28 * t446) + (t110 * s352))
         let !s461 = ((t28 * t447) + (t110 * s353))
         let !s462 = ((t28 * t449) + (t110 * s354))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s436 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s437 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s438 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s436 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s437 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s438 else t4)
         pure ()
       else do
         let !t463 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2863,18 +2984,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s550 = (if t549 > 0 then t546 else t2)
         let !s551 = (if t549 > 0 then t547 else t3)
         let !s552 = (if t549 > 0 then t548 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s550
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s551
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s552
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s550 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s551 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s552 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s550 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s551 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s552 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s550 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s551 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s552 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s550
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s551
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s552
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s550 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s551 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s552 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s550 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s551 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s552 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s550 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s551 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s552 + (negate t4))))
         pure ()
       pure ()
     pure ()

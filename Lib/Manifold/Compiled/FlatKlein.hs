@@ -28,30 +28,37 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       if (1.0 - (abs (((t8 - t8) + (t9 - t9)) + (t10 - t10)))) > 0 then do
-        wrI vel (3 * i3) t8
-        wrI vel ((3 * i3) + 1) t9
-        wrI vel ((3 * i3) + 2) t10
+        wrU vel (3 * i3) t8
+        wrU vel ((3 * i3) + 1) t9
+        wrU vel ((3 * i3) + 2) t10
         pure ()
       else do
-        t14 <- rdI meta 1
-        wrI meta 1 (t14 + 1.0)
+        chkI meta 0 1 1
+        t14 <- rdU meta 1
+        wrU meta 1 (t14 + 1.0)
         pure ()
       pure ()
     else do
@@ -61,12 +68,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -76,59 +85,70 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
     let !t38 = ((abs t32) - 1.0)
     let !t39 = (if (negate t38) > 0 then 0.0 else t38)
     let !t40 = ((abs t34) - 1.0)
     let !t41 = (if (negate t40) > 0 then 0.0 else t40)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t41 * t41)))) > 0 then do
-      t42 <- rdI meta 4
-      t43 <- rdI meta 5
+      t42 <- rdU meta 4
+      t43 <- rdU meta 5
       let !s44 = (floorF (t32 / t43))
       let !s45 = (floorF (t33 / t43))
       let !s46 = (floorF (t34 / t43))
@@ -144,19 +164,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s53 = (((((s50 + 131072.0) * 262144.0) + (s51 + 131072.0)) * 262144.0) + (s52 + 131072.0))
             let !t54 = (((s50 * 7.3856093e7) + (s51 * 1.9349663e7)) + (s52 * 8.3492791e7))
             let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
-            t56 <- rdI grid (truncate s55)
-            t57 <- rdI grid ((truncate t42) + (truncate s55))
+            chkI grid (truncate s55) 0 0
+            t56 <- rdU grid (truncate s55)
+            chkI grid ((truncate t42) + (truncate s55)) 0 0
+            t57 <- rdU grid ((truncate t42) + (truncate s55))
             loopI t57 t56 $ \i58 -> do
               let !d58 = fromIntegral i58 :: Double
-              t59 <- rdI items i58
-              t60 <- rdI cellOf (truncate t59)
+              chkI items i58 0 0
+              t59 <- rdU items i58
+              chkI cellOf (truncate t59) 0 0
+              t60 <- rdU cellOf (truncate t59)
               if (0.5 - (abs (t60 - s53))) > 0 then do
                 if (t59 - d31) > 0 then do
-                  t61 <- rdI pos (3 * (truncate t59))
-                  t62 <- rdI pos ((3 * (truncate t59)) + 1)
-                  t63 <- rdI pos ((3 * (truncate t59)) + 2)
-                  t64 <- rdI scalars ((6 * (truncate t59)) + 5)
-                  t65 <- rdI scalars ((6 * (truncate t59)) + 2)
+                  chkI pos (3 * (truncate t59)) 0 2
+                  t61 <- rdU pos (3 * (truncate t59))
+                  t62 <- rdU pos ((3 * (truncate t59)) + 1)
+                  t63 <- rdU pos ((3 * (truncate t59)) + 2)
+                  chkI scalars (6 * (truncate t59)) 2 5
+                  t64 <- rdU scalars ((6 * (truncate t59)) + 5)
+                  t65 <- rdU scalars ((6 * (truncate t59)) + 2)
                   let !t66 = (t36 + t65)
                   let !t67 = (t32 + (negate t61))
                   let !t68 = (t33 + (negate t62))
@@ -187,8 +213,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t75 = ((abs s72) - 1.0)
     let !t76 = (if (negate t75) > 0 then 0.0 else t75)
     if ((t35 + t37) - (sqrt ((t74 * t74) + (t76 * t76)))) > 0 then do
-      t77 <- rdI meta 4
-      t78 <- rdI meta 5
+      t77 <- rdU meta 4
+      t78 <- rdU meta 5
       let !s79 = (floorF (s71 / t78))
       let !s80 = (floorF (t33 / t78))
       let !s81 = (floorF (s72 / t78))
@@ -204,19 +230,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s88 = (((((s85 + 131072.0) * 262144.0) + (s86 + 131072.0)) * 262144.0) + (s87 + 131072.0))
             let !t89 = (((s85 * 7.3856093e7) + (s86 * 1.9349663e7)) + (s87 * 8.3492791e7))
             let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
-            t91 <- rdI grid (truncate s90)
-            t92 <- rdI grid ((truncate t77) + (truncate s90))
+            chkI grid (truncate s90) 0 0
+            t91 <- rdU grid (truncate s90)
+            chkI grid ((truncate t77) + (truncate s90)) 0 0
+            t92 <- rdU grid ((truncate t77) + (truncate s90))
             loopI t92 t91 $ \i93 -> do
               let !d93 = fromIntegral i93 :: Double
-              t94 <- rdI items i93
-              t95 <- rdI cellOf (truncate t94)
+              chkI items i93 0 0
+              t94 <- rdU items i93
+              chkI cellOf (truncate t94) 0 0
+              t95 <- rdU cellOf (truncate t94)
               if (0.5 - (abs (t95 - s88))) > 0 then do
                 if (t94 - d31) > 0 then do
-                  t96 <- rdI pos (3 * (truncate t94))
-                  t97 <- rdI pos ((3 * (truncate t94)) + 1)
-                  t98 <- rdI pos ((3 * (truncate t94)) + 2)
-                  t99 <- rdI scalars ((6 * (truncate t94)) + 5)
-                  t100 <- rdI scalars ((6 * (truncate t94)) + 2)
+                  chkI pos (3 * (truncate t94)) 0 2
+                  t96 <- rdU pos (3 * (truncate t94))
+                  t97 <- rdU pos ((3 * (truncate t94)) + 1)
+                  t98 <- rdU pos ((3 * (truncate t94)) + 2)
+                  chkI scalars (6 * (truncate t94)) 2 5
+                  t99 <- rdU scalars ((6 * (truncate t94)) + 5)
+                  t100 <- rdU scalars ((6 * (truncate t94)) + 2)
                   let !t101 = (t36 + t100)
                   let !t102 = (s71 + (negate t96))
                   let !t103 = (t33 + (negate t97))
@@ -247,8 +279,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t110 = ((abs s107) - 1.0)
     let !t111 = (if (negate t110) > 0 then 0.0 else t110)
     if ((t35 + t37) - (sqrt ((t109 * t109) + (t111 * t111)))) > 0 then do
-      t112 <- rdI meta 4
-      t113 <- rdI meta 5
+      t112 <- rdU meta 4
+      t113 <- rdU meta 5
       let !s114 = (floorF (s106 / t113))
       let !s115 = (floorF (t33 / t113))
       let !s116 = (floorF (s107 / t113))
@@ -264,19 +296,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s123 = (((((s120 + 131072.0) * 262144.0) + (s121 + 131072.0)) * 262144.0) + (s122 + 131072.0))
             let !t124 = (((s120 * 7.3856093e7) + (s121 * 1.9349663e7)) + (s122 * 8.3492791e7))
             let !s125 = (t124 - (t112 * (floorF (t124 / t112))))
-            t126 <- rdI grid (truncate s125)
-            t127 <- rdI grid ((truncate t112) + (truncate s125))
+            chkI grid (truncate s125) 0 0
+            t126 <- rdU grid (truncate s125)
+            chkI grid ((truncate t112) + (truncate s125)) 0 0
+            t127 <- rdU grid ((truncate t112) + (truncate s125))
             loopI t127 t126 $ \i128 -> do
               let !d128 = fromIntegral i128 :: Double
-              t129 <- rdI items i128
-              t130 <- rdI cellOf (truncate t129)
+              chkI items i128 0 0
+              t129 <- rdU items i128
+              chkI cellOf (truncate t129) 0 0
+              t130 <- rdU cellOf (truncate t129)
               if (0.5 - (abs (t130 - s123))) > 0 then do
                 if (t129 - d31) > 0 then do
-                  t131 <- rdI pos (3 * (truncate t129))
-                  t132 <- rdI pos ((3 * (truncate t129)) + 1)
-                  t133 <- rdI pos ((3 * (truncate t129)) + 2)
-                  t134 <- rdI scalars ((6 * (truncate t129)) + 5)
-                  t135 <- rdI scalars ((6 * (truncate t129)) + 2)
+                  chkI pos (3 * (truncate t129)) 0 2
+                  t131 <- rdU pos (3 * (truncate t129))
+                  t132 <- rdU pos ((3 * (truncate t129)) + 1)
+                  t133 <- rdU pos ((3 * (truncate t129)) + 2)
+                  chkI scalars (6 * (truncate t129)) 2 5
+                  t134 <- rdU scalars ((6 * (truncate t129)) + 5)
+                  t135 <- rdU scalars ((6 * (truncate t129)) + 2)
                   let !t136 = (t36 + t135)
                   let !t137 = (s106 + (negate t131))
                   let !t138 = (t33 + (negate t132))
@@ -307,8 +345,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t145 = ((abs s142) - 1.0)
     let !t146 = (if (negate t145) > 0 then 0.0 else t145)
     if ((t35 + t37) - (sqrt ((t144 * t144) + (t146 * t146)))) > 0 then do
-      t147 <- rdI meta 4
-      t148 <- rdI meta 5
+      t147 <- rdU meta 4
+      t148 <- rdU meta 5
       let !s149 = (floorF (s141 / t148))
       let !s150 = (floorF (t33 / t148))
       let !s151 = (floorF (s142 / t148))
@@ -324,19 +362,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s158 = (((((s155 + 131072.0) * 262144.0) + (s156 + 131072.0)) * 262144.0) + (s157 + 131072.0))
             let !t159 = (((s155 * 7.3856093e7) + (s156 * 1.9349663e7)) + (s157 * 8.3492791e7))
             let !s160 = (t159 - (t147 * (floorF (t159 / t147))))
-            t161 <- rdI grid (truncate s160)
-            t162 <- rdI grid ((truncate t147) + (truncate s160))
+            chkI grid (truncate s160) 0 0
+            t161 <- rdU grid (truncate s160)
+            chkI grid ((truncate t147) + (truncate s160)) 0 0
+            t162 <- rdU grid ((truncate t147) + (truncate s160))
             loopI t162 t161 $ \i163 -> do
               let !d163 = fromIntegral i163 :: Double
-              t164 <- rdI items i163
-              t165 <- rdI cellOf (truncate t164)
+              chkI items i163 0 0
+              t164 <- rdU items i163
+              chkI cellOf (truncate t164) 0 0
+              t165 <- rdU cellOf (truncate t164)
               if (0.5 - (abs (t165 - s158))) > 0 then do
                 if (t164 - d31) > 0 then do
-                  t166 <- rdI pos (3 * (truncate t164))
-                  t167 <- rdI pos ((3 * (truncate t164)) + 1)
-                  t168 <- rdI pos ((3 * (truncate t164)) + 2)
-                  t169 <- rdI scalars ((6 * (truncate t164)) + 5)
-                  t170 <- rdI scalars ((6 * (truncate t164)) + 2)
+                  chkI pos (3 * (truncate t164)) 0 2
+                  t166 <- rdU pos (3 * (truncate t164))
+                  t167 <- rdU pos ((3 * (truncate t164)) + 1)
+                  t168 <- rdU pos ((3 * (truncate t164)) + 2)
+                  chkI scalars (6 * (truncate t164)) 2 5
+                  t169 <- rdU scalars ((6 * (truncate t164)) + 5)
+                  t170 <- rdU scalars ((6 * (truncate t164)) + 2)
                   let !t171 = (t36 + t170)
                   let !t172 = (s141 + (negate t166))
                   let !t173 = (t33 + (negate t167))
@@ -364,8 +408,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t177 = ((abs s176) - 1.0)
     let !t178 = (if (negate t177) > 0 then 0.0 else t177)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t178 * t178)))) > 0 then do
-      t179 <- rdI meta 4
-      t180 <- rdI meta 5
+      t179 <- rdU meta 4
+      t180 <- rdU meta 5
       let !s181 = (floorF (t32 / t180))
       let !s182 = (floorF (t33 / t180))
       let !s183 = (floorF (s176 / t180))
@@ -381,19 +425,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s190 = (((((s187 + 131072.0) * 262144.0) + (s188 + 131072.0)) * 262144.0) + (s189 + 131072.0))
             let !t191 = (((s187 * 7.3856093e7) + (s188 * 1.9349663e7)) + (s189 * 8.3492791e7))
             let !s192 = (t191 - (t179 * (floorF (t191 / t179))))
-            t193 <- rdI grid (truncate s192)
-            t194 <- rdI grid ((truncate t179) + (truncate s192))
+            chkI grid (truncate s192) 0 0
+            t193 <- rdU grid (truncate s192)
+            chkI grid ((truncate t179) + (truncate s192)) 0 0
+            t194 <- rdU grid ((truncate t179) + (truncate s192))
             loopI t194 t193 $ \i195 -> do
               let !d195 = fromIntegral i195 :: Double
-              t196 <- rdI items i195
-              t197 <- rdI cellOf (truncate t196)
+              chkI items i195 0 0
+              t196 <- rdU items i195
+              chkI cellOf (truncate t196) 0 0
+              t197 <- rdU cellOf (truncate t196)
               if (0.5 - (abs (t197 - s190))) > 0 then do
                 if (t196 - d31) > 0 then do
-                  t198 <- rdI pos (3 * (truncate t196))
-                  t199 <- rdI pos ((3 * (truncate t196)) + 1)
-                  t200 <- rdI pos ((3 * (truncate t196)) + 2)
-                  t201 <- rdI scalars ((6 * (truncate t196)) + 5)
-                  t202 <- rdI scalars ((6 * (truncate t196)) + 2)
+                  chkI pos (3 * (truncate t196)) 0 2
+                  t198 <- rdU pos (3 * (truncate t196))
+                  t199 <- rdU pos ((3 * (truncate t196)) + 1)
+                  t200 <- rdU pos ((3 * (truncate t196)) + 2)
+                  chkI scalars (6 * (truncate t196)) 2 5
+                  t201 <- rdU scalars ((6 * (truncate t196)) + 5)
+                  t202 <- rdU scalars ((6 * (truncate t196)) + 2)
                   let !t203 = (t36 + t202)
                   let !t204 = (t32 + (negate t198))
                   let !t205 = (t33 + (negate t199))
@@ -421,8 +471,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t209 = ((abs s208) - 1.0)
     let !t210 = (if (negate t209) > 0 then 0.0 else t209)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t210 * t210)))) > 0 then do
-      t211 <- rdI meta 4
-      t212 <- rdI meta 5
+      t211 <- rdU meta 4
+      t212 <- rdU meta 5
       let !s213 = (floorF (t32 / t212))
       let !s214 = (floorF (t33 / t212))
       let !s215 = (floorF (s208 / t212))
@@ -438,19 +488,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s222 = (((((s219 + 131072.0) * 262144.0) + (s220 + 131072.0)) * 262144.0) + (s221 + 131072.0))
             let !t223 = (((s219 * 7.3856093e7) + (s220 * 1.9349663e7)) + (s221 * 8.3492791e7))
             let !s224 = (t223 - (t211 * (floorF (t223 / t211))))
-            t225 <- rdI grid (truncate s224)
-            t226 <- rdI grid ((truncate t211) + (truncate s224))
+            chkI grid (truncate s224) 0 0
+            t225 <- rdU grid (truncate s224)
+            chkI grid ((truncate t211) + (truncate s224)) 0 0
+            t226 <- rdU grid ((truncate t211) + (truncate s224))
             loopI t226 t225 $ \i227 -> do
               let !d227 = fromIntegral i227 :: Double
-              t228 <- rdI items i227
-              t229 <- rdI cellOf (truncate t228)
+              chkI items i227 0 0
+              t228 <- rdU items i227
+              chkI cellOf (truncate t228) 0 0
+              t229 <- rdU cellOf (truncate t228)
               if (0.5 - (abs (t229 - s222))) > 0 then do
                 if ((t228 - d31) + 0.5) > 0 then do
-                  t230 <- rdI pos (3 * (truncate t228))
-                  t231 <- rdI pos ((3 * (truncate t228)) + 1)
-                  t232 <- rdI pos ((3 * (truncate t228)) + 2)
-                  t233 <- rdI scalars ((6 * (truncate t228)) + 5)
-                  t234 <- rdI scalars ((6 * (truncate t228)) + 2)
+                  chkI pos (3 * (truncate t228)) 0 2
+                  t230 <- rdU pos (3 * (truncate t228))
+                  t231 <- rdU pos ((3 * (truncate t228)) + 1)
+                  t232 <- rdU pos ((3 * (truncate t228)) + 2)
+                  chkI scalars (6 * (truncate t228)) 2 5
+                  t233 <- rdU scalars ((6 * (truncate t228)) + 5)
+                  t234 <- rdU scalars ((6 * (truncate t228)) + 2)
                   let !t235 = (t36 + t234)
                   let !t236 = (t32 + (negate t230))
                   let !t237 = (t33 + (negate t231))
@@ -481,8 +537,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t244 = ((abs s241) - 1.0)
     let !t245 = (if (negate t244) > 0 then 0.0 else t244)
     if ((t35 + t37) - (sqrt ((t243 * t243) + (t245 * t245)))) > 0 then do
-      t246 <- rdI meta 4
-      t247 <- rdI meta 5
+      t246 <- rdU meta 4
+      t247 <- rdU meta 5
       let !s248 = (floorF (s240 / t247))
       let !s249 = (floorF (t33 / t247))
       let !s250 = (floorF (s241 / t247))
@@ -498,19 +554,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s257 = (((((s254 + 131072.0) * 262144.0) + (s255 + 131072.0)) * 262144.0) + (s256 + 131072.0))
             let !t258 = (((s254 * 7.3856093e7) + (s255 * 1.9349663e7)) + (s256 * 8.3492791e7))
             let !s259 = (t258 - (t246 * (floorF (t258 / t246))))
-            t260 <- rdI grid (truncate s259)
-            t261 <- rdI grid ((truncate t246) + (truncate s259))
+            chkI grid (truncate s259) 0 0
+            t260 <- rdU grid (truncate s259)
+            chkI grid ((truncate t246) + (truncate s259)) 0 0
+            t261 <- rdU grid ((truncate t246) + (truncate s259))
             loopI t261 t260 $ \i262 -> do
               let !d262 = fromIntegral i262 :: Double
-              t263 <- rdI items i262
-              t264 <- rdI cellOf (truncate t263)
+              chkI items i262 0 0
+              t263 <- rdU items i262
+              chkI cellOf (truncate t263) 0 0
+              t264 <- rdU cellOf (truncate t263)
               if (0.5 - (abs (t264 - s257))) > 0 then do
                 if ((t263 - d31) + 0.5) > 0 then do
-                  t265 <- rdI pos (3 * (truncate t263))
-                  t266 <- rdI pos ((3 * (truncate t263)) + 1)
-                  t267 <- rdI pos ((3 * (truncate t263)) + 2)
-                  t268 <- rdI scalars ((6 * (truncate t263)) + 5)
-                  t269 <- rdI scalars ((6 * (truncate t263)) + 2)
+                  chkI pos (3 * (truncate t263)) 0 2
+                  t265 <- rdU pos (3 * (truncate t263))
+                  t266 <- rdU pos ((3 * (truncate t263)) + 1)
+                  t267 <- rdU pos ((3 * (truncate t263)) + 2)
+                  chkI scalars (6 * (truncate t263)) 2 5
+                  t268 <- rdU scalars ((6 * (truncate t263)) + 5)
+                  t269 <- rdU scalars ((6 * (truncate t263)) + 2)
                   let !t270 = (t36 + t269)
                   let !t271 = (s240 + (negate t265))
                   let !t272 = (t33 + (negate t266))
@@ -541,8 +603,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t279 = ((abs s276) - 1.0)
     let !t280 = (if (negate t279) > 0 then 0.0 else t279)
     if ((t35 + t37) - (sqrt ((t278 * t278) + (t280 * t280)))) > 0 then do
-      t281 <- rdI meta 4
-      t282 <- rdI meta 5
+      t281 <- rdU meta 4
+      t282 <- rdU meta 5
       let !s283 = (floorF (s275 / t282))
       let !s284 = (floorF (t33 / t282))
       let !s285 = (floorF (s276 / t282))
@@ -558,19 +620,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s292 = (((((s289 + 131072.0) * 262144.0) + (s290 + 131072.0)) * 262144.0) + (s291 + 131072.0))
             let !t293 = (((s289 * 7.3856093e7) + (s290 * 1.9349663e7)) + (s291 * 8.3492791e7))
             let !s294 = (t293 - (t281 * (floorF (t293 / t281))))
-            t295 <- rdI grid (truncate s294)
-            t296 <- rdI grid ((truncate t281) + (truncate s294))
+            chkI grid (truncate s294) 0 0
+            t295 <- rdU grid (truncate s294)
+            chkI grid ((truncate t281) + (truncate s294)) 0 0
+            t296 <- rdU grid ((truncate t281) + (truncate s294))
             loopI t296 t295 $ \i297 -> do
               let !d297 = fromIntegral i297 :: Double
-              t298 <- rdI items i297
-              t299 <- rdI cellOf (truncate t298)
+              chkI items i297 0 0
+              t298 <- rdU items i297
+              chkI cellOf (truncate t298) 0 0
+              t299 <- rdU cellOf (truncate t298)
               if (0.5 - (abs (t299 - s292))) > 0 then do
                 if ((t298 - d31) + 0.5) > 0 then do
-                  t300 <- rdI pos (3 * (truncate t298))
-                  t301 <- rdI pos ((3 * (truncate t298)) + 1)
-                  t302 <- rdI pos ((3 * (truncate t298)) + 2)
-                  t303 <- rdI scalars ((6 * (truncate t298)) + 5)
-                  t304 <- rdI scalars ((6 * (truncate t298)) + 2)
+                  chkI pos (3 * (truncate t298)) 0 2
+                  t300 <- rdU pos (3 * (truncate t298))
+                  t301 <- rdU pos ((3 * (truncate t298)) + 1)
+                  t302 <- rdU pos ((3 * (truncate t298)) + 2)
+                  chkI scalars (6 * (truncate t298)) 2 5
+                  t303 <- rdU scalars ((6 * (truncate t298)) + 5)
+                  t304 <- rdU scalars ((6 * (truncate t298)) + 2)
                   let !t305 = (t36 + t304)
                   let !t306 = (s275 + (negate t300))
                   let !t307 = (t33 + (negate t301))
@@ -601,8 +669,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t314 = ((abs s311) - 1.0)
     let !t315 = (if (negate t314) > 0 then 0.0 else t314)
     if ((t35 + t37) - (sqrt ((t313 * t313) + (t315 * t315)))) > 0 then do
-      t316 <- rdI meta 4
-      t317 <- rdI meta 5
+      t316 <- rdU meta 4
+      t317 <- rdU meta 5
       let !s318 = (floorF (s310 / t317))
       let !s319 = (floorF (t33 / t317))
       let !s320 = (floorF (s311 / t317))
@@ -618,19 +686,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s327 = (((((s324 + 131072.0) * 262144.0) + (s325 + 131072.0)) * 262144.0) + (s326 + 131072.0))
             let !t328 = (((s324 * 7.3856093e7) + (s325 * 1.9349663e7)) + (s326 * 8.3492791e7))
             let !s329 = (t328 - (t316 * (floorF (t328 / t316))))
-            t330 <- rdI grid (truncate s329)
-            t331 <- rdI grid ((truncate t316) + (truncate s329))
+            chkI grid (truncate s329) 0 0
+            t330 <- rdU grid (truncate s329)
+            chkI grid ((truncate t316) + (truncate s329)) 0 0
+            t331 <- rdU grid ((truncate t316) + (truncate s329))
             loopI t331 t330 $ \i332 -> do
               let !d332 = fromIntegral i332 :: Double
-              t333 <- rdI items i332
-              t334 <- rdI cellOf (truncate t333)
+              chkI items i332 0 0
+              t333 <- rdU items i332
+              chkI cellOf (truncate t333) 0 0
+              t334 <- rdU cellOf (truncate t333)
               if (0.5 - (abs (t334 - s327))) > 0 then do
                 if ((t333 - d31) + 0.5) > 0 then do
-                  t335 <- rdI pos (3 * (truncate t333))
-                  t336 <- rdI pos ((3 * (truncate t333)) + 1)
-                  t337 <- rdI pos ((3 * (truncate t333)) + 2)
-                  t338 <- rdI scalars ((6 * (truncate t333)) + 5)
-                  t339 <- rdI scalars ((6 * (truncate t333)) + 2)
+                  chkI pos (3 * (truncate t333)) 0 2
+                  t335 <- rdU pos (3 * (truncate t333))
+                  t336 <- rdU pos ((3 * (truncate t333)) + 1)
+                  t337 <- rdU pos ((3 * (truncate t333)) + 2)
+                  chkI scalars (6 * (truncate t333)) 2 5
+                  t338 <- rdU scalars ((6 * (truncate t333)) + 5)
+                  t339 <- rdU scalars ((6 * (truncate t333)) + 2)
                   let !t340 = (t36 + t339)
                   let !t341 = (s310 + (negate t335))
                   let !t342 = (t33 + (negate t336))
@@ -654,16 +728,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t345 <- rdI verts (3 * (97 * i31))
-    t346 <- rdI verts ((3 * (97 * i31)) + 1)
-    t347 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t345 <- rdU verts (3 * (97 * i31))
+    t346 <- rdU verts ((3 * (97 * i31)) + 1)
+    t347 <- rdU verts ((3 * (97 * i31)) + 2)
     v348 <- newR 1.0
     loopI 0.0 24.0 $ \i349 -> do
       let !d349 = fromIntegral i349 :: Double
-      t350 <- rdI verts (3 * ((((97 * i31) + 1) + (i349 * 4)) + 3))
-      t351 <- rdI verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 1)
-      t352 <- rdI verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 2)
-      t353 <- rdI radii ((24 * i31) + i349)
+      chkI verts (3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) 0 2
+      t350 <- rdU verts (3 * ((((97 * i31) + 1) + (i349 * 4)) + 3))
+      t351 <- rdU verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 1)
+      t352 <- rdU verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i349) 0 0
+      t353 <- rdU radii ((24 * i31) + i349)
       t354 <- getR v348
       let !t355 = (t350 + (negate t345))
       let !t356 = (t351 + (negate t346))
@@ -682,27 +759,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v366 <- newR 0.0
       loopI 0.0 24.0 $ \i367 -> do
         let !d367 = fromIntegral i367 :: Double
-        t368 <- rdI radii ((24 * i31) + i367)
+        chkI radii ((24 * i31) + i367) 0 0
+        t368 <- rdU radii ((24 * i31) + i367)
         loopI 6.0 12.0 $ \i369 -> do
           let !d369 = fromIntegral i369 :: Double
           let !t370 = (d367 + d369)
-          t371 <- rdI radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0)))))) 0 0
+          t371 <- rdU radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0))))))
           loopI 1.0 4.0 $ \i372 -> do
             let !d372 = fromIntegral i372 :: Double
-            t373 <- rdI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1)))
-            t374 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 1)
-            t375 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 2)
-            t376 <- rdI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + i372))
-            t377 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 1)
-            t378 <- rdI verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) 0 2
+            t373 <- rdU verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1)))
+            t374 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 1)
+            t375 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) 0 2
+            t376 <- rdU verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + i372))
+            t377 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 1)
+            t378 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 2)
             loopI 1.0 4.0 $ \i379 -> do
               let !d379 = fromIntegral i379 :: Double
-              t380 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))))
-              t381 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 1.0))
-              t382 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 2.0))
-              t383 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)))
-              t384 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 1.0))
-              t385 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0)))) 0 0
+              t380 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 1.0)) 0 0
+              t381 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 2.0)) 0 0
+              t382 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379))) 0 0
+              t383 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 1.0)) 0 0
+              t384 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 2.0)) 0 0
+              t385 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 2.0))
               t386 <- getR v360
               let !t387 = (negate t380)
               let !t388 = (t383 + t387)
@@ -742,12 +829,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t422 = ((0.3 * ((if (t371 - t368) > 0 then t368 else t371) / 4.0)) - (sqrt (((t419 * t419) + (t420 * t420)) + (t421 * t421))))
               if (if (t418 - t422) > 0 then t422 else t418) > 0 then do
                 setR v360 (0.5 * ((t368 - ((t368 * (d372 + t415)) / 4.0)) + (t371 - ((t371 * (d379 + t417)) / 4.0))))
-                t423 <- rdI verts (3 * (((97 * i31) + 1) + (i367 * 4)))
-                t424 <- rdI verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 1)
-                t425 <- rdI verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 2)
-                t426 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))))
-                t427 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0))
-                t428 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i367 * 4))) 0 2
+                t423 <- rdU verts (3 * (((97 * i31) + 1) + (i367 * 4)))
+                t424 <- rdU verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 1)
+                t425 <- rdU verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)))) 0 0
+                t426 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t427 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t428 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0))
                 setR v361 (t373 + (t415 * t394))
                 setR v362 (t374 + (t415 * t395))
                 setR v363 (t375 + (t415 * t396))
@@ -786,89 +877,98 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s450 = (t449 * t444)
         let !s451 = (t449 * t447)
         let !s452 = (t449 * t446)
-        t453 <- rdI meta 2
-        t454 <- rdI meta 3
+        t453 <- rdU meta 2
+        t454 <- rdU meta 3
         if (((8.0 * (if (1.0 - t454) > 0 then 1.0 else t454)) - t453) - 0.5) > 0 then do
-          wrI meta 2 (t453 + 1.0)
-          t455 <- rdI pos (3 * i31)
-          t456 <- rdI pos ((3 * i31) + 1)
-          t457 <- rdI pos ((3 * i31) + 2)
-          t458 <- rdI normal (3 * i31)
-          t459 <- rdI normal ((3 * i31) + 1)
-          t460 <- rdI normal ((3 * i31) + 2)
-          t461 <- rdI axis (3 * i31)
-          t462 <- rdI axis ((3 * i31) + 1)
-          t463 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t453 + 1.0)
+          t455 <- rdU pos (3 * i31)
+          t456 <- rdU pos ((3 * i31) + 1)
+          t457 <- rdU pos ((3 * i31) + 2)
+          chkI normal (3 * i31) 0 2
+          t458 <- rdU normal (3 * i31)
+          t459 <- rdU normal ((3 * i31) + 1)
+          t460 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t461 <- rdU axis (3 * i31)
+          t462 <- rdU axis ((3 * i31) + 1)
+          t463 <- rdU axis ((3 * i31) + 2)
           let !s464 = ((t459 * t463) - (t460 * t462))
           let !s465 = ((t460 * t461) - (t458 * t463))
           let !s466 = ((t458 * t462) - (t459 * t461))
-          t467 <- rdI scalars (6 * i31)
-          t468 <- rdI scalars ((6 * i31) + 5)
-          t469 <- rdI scalars ((6 * i31) + 2)
-          t470 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t453)) d31
-          wrI contacts ((30 * (truncate t453)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t453)) + 2) d31
-          wrI contacts ((30 * (truncate t453)) + 3) 12.0
-          wrI contacts ((30 * (truncate t453)) + 4) (s450 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t458)))
-          wrI contacts (((30 * (truncate t453)) + 4) + 1) (s451 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t459)))
-          wrI contacts (((30 * (truncate t453)) + 4) + 2) (s452 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t460)))
-          wrI contacts ((30 * (truncate t453)) + 7) 0.0
-          wrI contacts ((30 * (truncate t453)) + 12) 0.0
-          wrI contacts (((30 * (truncate t453)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t453)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t453)) + 15) 0.0
-          wrI contacts ((30 * (truncate t453)) + 20) t440
-          wrI contacts ((30 * (truncate t453)) + 26) 0.6
-          wrI contacts ((30 * (truncate t453)) + 27) t441
-          wrI contacts (((30 * (truncate t453)) + 27) + 1) t442
-          wrI contacts (((30 * (truncate t453)) + 27) + 2) t443
+          chkI scalars (6 * i31) 0 0
+          t467 <- rdU scalars (6 * i31)
+          t468 <- rdU scalars ((6 * i31) + 5)
+          t469 <- rdU scalars ((6 * i31) + 2)
+          t470 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t453)) 0 29
+          wrU contacts (30 * (truncate t453)) d31
+          wrU contacts ((30 * (truncate t453)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t453)) + 2) d31
+          wrU contacts ((30 * (truncate t453)) + 3) 12.0
+          wrU contacts ((30 * (truncate t453)) + 4) (s450 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t458)))
+          wrU contacts ((30 * (truncate t453)) + 5) (s451 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t459)))
+          wrU contacts ((30 * (truncate t453)) + 6) (s452 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t460)))
+          wrU contacts ((30 * (truncate t453)) + 7) 0.0
+          wrU contacts ((30 * (truncate t453)) + 12) 0.0
+          wrU contacts ((30 * (truncate t453)) + 13) 0.0
+          wrU contacts ((30 * (truncate t453)) + 14) 0.0
+          wrU contacts ((30 * (truncate t453)) + 15) 0.0
+          wrU contacts ((30 * (truncate t453)) + 20) t440
+          wrU contacts ((30 * (truncate t453)) + 26) 0.6
+          wrU contacts ((30 * (truncate t453)) + 27) t441
+          wrU contacts ((30 * (truncate t453)) + 28) t442
+          wrU contacts ((30 * (truncate t453)) + 29) t443
           if (-0.5) > 0 then do
-            t471 <- rdI pos (-3)
-            t472 <- rdI pos (-2)
-            t473 <- rdI pos (-1)
-            t474 <- rdI normal (-3)
-            t475 <- rdI normal (-2)
-            t476 <- rdI normal (-1)
-            t477 <- rdI axis (-3)
-            t478 <- rdI axis (-2)
-            t479 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t471 <- rdU pos (-3)
+            t472 <- rdU pos (-2)
+            t473 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t474 <- rdU normal (-3)
+            t475 <- rdU normal (-2)
+            t476 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t477 <- rdU axis (-3)
+            t478 <- rdU axis (-2)
+            t479 <- rdU axis (-1)
             let !s480 = ((t475 * t479) - (t476 * t478))
             let !s481 = ((t476 * t477) - (t474 * t479))
             let !s482 = ((t474 * t478) - (t475 * t477))
-            t483 <- rdI scalars (-6)
-            t484 <- rdI scalars (-1)
-            t485 <- rdI scalars (-4)
-            t486 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t453)) + 8) (s450 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t474)))
-            wrI contacts (((30 * (truncate t453)) + 8) + 1) (s451 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t475)))
-            wrI contacts (((30 * (truncate t453)) + 8) + 2) (s452 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t476)))
+            chkI scalars 0 (-6) (-1)
+            t483 <- rdU scalars (-6)
+            t484 <- rdU scalars (-1)
+            t485 <- rdU scalars (-4)
+            t486 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t453)) + 8) (s450 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t474)))
+            wrU contacts ((30 * (truncate t453)) + 9) (s451 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t475)))
+            wrU contacts ((30 * (truncate t453)) + 10) (s452 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t476)))
             let !t487 = (t442 + (negate t472))
             let !t488 = (t443 + (negate t473))
             let !t489 = (t441 + (negate t471))
-            wrI contacts ((30 * (truncate t453)) + 11) (((((t487 * s452) - (t488 * s451)) * t474) + (((t488 * s450) - (t489 * s452)) * t475)) + (((t489 * s451) - (t487 * s450)) * t476))
+            wrU contacts ((30 * (truncate t453)) + 11) (((((t487 * s452) - (t488 * s451)) * t474) + (((t488 * s450) - (t489 * s452)) * t475)) + (((t489 * s451) - (t487 * s450)) * t476))
             let !t490 = ((t459 * s452) - (t460 * s451))
-            wrI contacts ((30 * (truncate t453)) + 16) (t490 + (negate ((((t474 * t490) + (t475 * ((t460 * s450) - (t458 * s452)))) + (t476 * ((t458 * s451) - (t459 * s450)))) * t474)))
+            wrU contacts ((30 * (truncate t453)) + 16) (t490 + (negate ((((t474 * t490) + (t475 * ((t460 * s450) - (t458 * s452)))) + (t476 * ((t458 * s451) - (t459 * s450)))) * t474)))
             let !t491 = ((t460 * s450) - (t458 * s452))
-            wrI contacts (((30 * (truncate t453)) + 16) + 1) (t491 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * ((t458 * s451) - (t459 * s450)))) * t475)))
+            wrU contacts ((30 * (truncate t453)) + 17) (t491 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * ((t458 * s451) - (t459 * s450)))) * t475)))
             let !t492 = ((t458 * s451) - (t459 * s450))
-            wrI contacts (((30 * (truncate t453)) + 16) + 2) (t492 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * t492)) * t476)))
-            wrI contacts ((30 * (truncate t453)) + 19) (((((t487 * t492) - (t488 * t491)) * t474) + (((t488 * t490) - (t489 * t492)) * t475)) + (((t489 * t491) - (t487 * t490)) * t476))
+            wrU contacts ((30 * (truncate t453)) + 18) (t492 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * t492)) * t476)))
+            wrU contacts ((30 * (truncate t453)) + 19) (((((t487 * t492) - (t488 * t491)) * t474) + (((t488 * t490) - (t489 * t492)) * t475)) + (((t489 * t491) - (t487 * t490)) * t476))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t453)) + 8) 0.0
-            wrI contacts (((30 * (truncate t453)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t453)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t453)) + 11) 0.0
-            wrI contacts ((30 * (truncate t453)) + 16) 0.0
-            wrI contacts (((30 * (truncate t453)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t453)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t453)) + 19) 0.0
+            wrU contacts ((30 * (truncate t453)) + 8) 0.0
+            wrU contacts ((30 * (truncate t453)) + 9) 0.0
+            wrU contacts ((30 * (truncate t453)) + 10) 0.0
+            wrU contacts ((30 * (truncate t453)) + 11) 0.0
+            wrU contacts ((30 * (truncate t453)) + 16) 0.0
+            wrU contacts ((30 * (truncate t453)) + 17) 0.0
+            wrU contacts ((30 * (truncate t453)) + 18) 0.0
+            wrU contacts ((30 * (truncate t453)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t493 <- rdI meta 6
-          wrI meta 6 (t493 + 1.0)
+          chkI meta 0 6 6
+          t493 <- rdU meta 6
+          wrU meta 6 (t493 + 1.0)
           pure ()
         pure ()
       else do
@@ -881,44 +981,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -926,12 +1031,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -939,20 +1045,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -963,19 +1072,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -983,98 +1095,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1149,9 +1273,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdI mouse 4
-      t213 <- rdI mouse 5
-      t214 <- rdI mouse 6
+      t212 <- rdU mouse 4
+      t213 <- rdU mouse 5
+      t214 <- rdU mouse 6
       let !t215 = (floorF ((t212 + 1.0) / 2.0))
       let !t216 = (t212 - (t215 * 2.0))
       let !t217 = (negate s199)
@@ -1205,9 +1329,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t265 = ((if t264 > 0 then t263 else t262) - (t259 + t243))
       let !s266 = (if t265 > 0 then t257 else (if t264 > 0 then t257 else (if t261 > 0 then t257 else (if t255 > 0 then t216 else (if t250 > 0 then t216 else (if t245 > 0 then t226 else (if t239 > 0 then t226 else (if t234 > 0 then t226 else t216))))))))
       let !s267 = (if t265 > 0 then t241 else (if t264 > 0 then t229 else (if t261 > 0 then t230 else (if t255 > 0 then t252 else (if t250 > 0 then t247 else (if t245 > 0 then t241 else (if t239 > 0 then t229 else (if t234 > 0 then t230 else t222))))))))
-      t268 <- rdI mouse 7
-      t269 <- rdI mouse 8
-      t270 <- rdI mouse 9
+      t268 <- rdU mouse 7
+      t269 <- rdU mouse 8
+      t270 <- rdU mouse 9
       let !t271 = (recip t101)
       let !t272 = (6.283185307179586 * t268)
       let !s273 = (recip (t103 * ((((2.0 * t271) * t269) * t272) + (t103 * ((t271 * t272) * t272)))))
@@ -1218,28 +1342,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s278 = (s199 + (negate s266))
       let !s279 = (s200 + (negate t213))
       let !s280 = (s201 + (negate s267))
-      t281 <- rdI mouse 10
-      t282 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t283 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t284 <- rdI vel (3 * (truncate t100))
-      t285 <- rdI vel ((3 * (truncate t100)) + 1)
-      t286 <- rdI vel ((3 * (truncate t100)) + 2)
-      t287 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t284 + ((t282 * t281) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s276 * t112) - (s277 * t111)) * t107) + (((s277 * t110) - (s275 * t112)) * t108)) + (((s275 * t111) - (s276 * t110)) * t109))))
-      t288 <- rdI mouse 11
-      t289 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t290 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t291 <- rdI vel (3 * (truncate t100))
-      t292 <- rdI vel ((3 * (truncate t100)) + 1)
-      t293 <- rdI vel ((3 * (truncate t100)) + 2)
-      t294 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t291 + ((t289 * t288) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t292 + ((t289 * t288) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t293 + ((t289 * t288) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t294 + ((t290 * t288) * (((((s276 * s115) - (s277 * s114)) * t107) + (((s277 * s113) - (s275 * s115)) * t108)) + (((s275 * s114) - (s276 * s113)) * t109))))
+      t281 <- rdU mouse 10
+      t282 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t283 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t284 <- rdU vel (3 * (truncate t100))
+      t285 <- rdU vel ((3 * (truncate t100)) + 1)
+      t286 <- rdU vel ((3 * (truncate t100)) + 2)
+      t287 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t284 + ((t282 * t281) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s276 * t112) - (s277 * t111)) * t107) + (((s277 * t110) - (s275 * t112)) * t108)) + (((s275 * t111) - (s276 * t110)) * t109))))
+      t288 <- rdU mouse 11
+      t289 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t290 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t291 <- rdU vel (3 * (truncate t100))
+      t292 <- rdU vel ((3 * (truncate t100)) + 1)
+      t293 <- rdU vel ((3 * (truncate t100)) + 2)
+      t294 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t291 + ((t289 * t288) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t292 + ((t289 * t288) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t293 + ((t289 * t288) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t294 + ((t290 * t288) * (((((s276 * s115) - (s277 * s114)) * t107) + (((s277 * s113) - (s275 * s115)) * t108)) + (((s275 * s114) - (s276 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -1250,38 +1375,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d295 = fromIntegral i295 :: Double
     loopI 0.0 t9 $ \i296 -> do
       let !d296 = fromIntegral i296 :: Double
-      t297 <- rdI contacts (30 * i296)
-      t298 <- rdI contacts ((30 * i296) + 1)
-      t299 <- rdI contacts ((30 * i296) + 12)
-      t300 <- rdI contacts (((30 * i296) + 12) + 1)
-      t301 <- rdI contacts (((30 * i296) + 12) + 2)
-      t302 <- rdI contacts ((30 * i296) + 15)
-      t303 <- rdI contacts ((30 * i296) + 16)
-      t304 <- rdI contacts (((30 * i296) + 16) + 1)
-      t305 <- rdI contacts (((30 * i296) + 16) + 2)
-      t306 <- rdI contacts ((30 * i296) + 19)
-      t307 <- rdI contacts ((30 * i296) + 4)
-      t308 <- rdI contacts (((30 * i296) + 4) + 1)
-      t309 <- rdI contacts (((30 * i296) + 4) + 2)
-      t310 <- rdI contacts ((30 * i296) + 7)
-      t311 <- rdI contacts ((30 * i296) + 8)
-      t312 <- rdI contacts (((30 * i296) + 8) + 1)
-      t313 <- rdI contacts (((30 * i296) + 8) + 2)
-      t314 <- rdI contacts ((30 * i296) + 11)
-      t315 <- rdI contacts ((30 * i296) + 26)
-      t316 <- rdI contacts ((30 * i296) + 24)
-      t317 <- rdI contacts ((30 * i296) + 25)
-      t318 <- rdI contacts ((30 * i296) + 22)
-      t319 <- rdI vel (3 * (truncate t297))
-      t320 <- rdI vel ((3 * (truncate t297)) + 1)
-      t321 <- rdI vel ((3 * (truncate t297)) + 2)
-      t322 <- rdI scalars ((6 * (truncate t297)) + 1)
+      chkI contacts (30 * i296) 0 26
+      t297 <- rdU contacts (30 * i296)
+      t298 <- rdU contacts ((30 * i296) + 1)
+      t299 <- rdU contacts ((30 * i296) + 12)
+      t300 <- rdU contacts ((30 * i296) + 13)
+      t301 <- rdU contacts ((30 * i296) + 14)
+      t302 <- rdU contacts ((30 * i296) + 15)
+      t303 <- rdU contacts ((30 * i296) + 16)
+      t304 <- rdU contacts ((30 * i296) + 17)
+      t305 <- rdU contacts ((30 * i296) + 18)
+      t306 <- rdU contacts ((30 * i296) + 19)
+      t307 <- rdU contacts ((30 * i296) + 4)
+      t308 <- rdU contacts ((30 * i296) + 5)
+      t309 <- rdU contacts ((30 * i296) + 6)
+      t310 <- rdU contacts ((30 * i296) + 7)
+      t311 <- rdU contacts ((30 * i296) + 8)
+      t312 <- rdU contacts ((30 * i296) + 9)
+      t313 <- rdU contacts ((30 * i296) + 10)
+      t314 <- rdU contacts ((30 * i296) + 11)
+      t315 <- rdU contacts ((30 * i296) + 26)
+      t316 <- rdU contacts ((30 * i296) + 24)
+      t317 <- rdU contacts ((30 * i296) + 25)
+      t318 <- rdU contacts ((30 * i296) + 22)
+      chkI vel (3 * (truncate t297)) 0 2
+      t319 <- rdU vel (3 * (truncate t297))
+      t320 <- rdU vel ((3 * (truncate t297)) + 1)
+      t321 <- rdU vel ((3 * (truncate t297)) + 2)
+      chkI scalars (6 * (truncate t297)) 1 3
+      t322 <- rdU scalars ((6 * (truncate t297)) + 1)
       v323 <- newR 0.0
       if (t298 + 0.5) > 0 then do
-        t324 <- rdI vel (3 * (truncate t298))
-        t325 <- rdI vel ((3 * (truncate t298)) + 1)
-        t326 <- rdI vel ((3 * (truncate t298)) + 2)
-        t327 <- rdI scalars ((6 * (truncate t298)) + 1)
+        chkI vel (3 * (truncate t298)) 0 2
+        t324 <- rdU vel (3 * (truncate t298))
+        t325 <- rdU vel ((3 * (truncate t298)) + 1)
+        t326 <- rdU vel ((3 * (truncate t298)) + 2)
+        chkI scalars (6 * (truncate t298)) 1 1
+        t327 <- rdU scalars ((6 * (truncate t298)) + 1)
         setR v323 ((((t303 * t324) + (t304 * t325)) + (t305 * t326)) + (t306 * t327))
         pure ()
       else do
@@ -1294,43 +1424,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t333 = (if (t332 - t330) > 0 then t330 else t332)
       let !t334 = (if (t331 - t333) > 0 then t331 else t333)
       let !s335 = (if (1.0 - (abs (t334 - t334))) > 0 then t334 else 0.0)
-      wrI contacts ((30 * i296) + 25) s335
-      t336 <- rdI scalars ((6 * (truncate t297)) + 2)
-      t337 <- rdI scalars ((6 * (truncate t297)) + 3)
-      t338 <- rdI vel (3 * (truncate t297))
-      t339 <- rdI vel ((3 * (truncate t297)) + 1)
-      t340 <- rdI vel ((3 * (truncate t297)) + 2)
-      t341 <- rdI scalars ((6 * (truncate t297)) + 1)
-      wrI vel (3 * (truncate t297)) (t338 + ((t336 * (s335 - t317)) * t299))
-      wrI vel ((3 * (truncate t297)) + 1) (t339 + ((t336 * (s335 - t317)) * t300))
-      wrI vel ((3 * (truncate t297)) + 2) (t340 + ((t336 * (s335 - t317)) * t301))
-      wrI scalars ((6 * (truncate t297)) + 1) (t341 + ((t337 * (s335 - t317)) * t302))
+      wrU contacts ((30 * i296) + 25) s335
+      t336 <- rdU scalars ((6 * (truncate t297)) + 2)
+      t337 <- rdU scalars ((6 * (truncate t297)) + 3)
+      t338 <- rdU vel (3 * (truncate t297))
+      t339 <- rdU vel ((3 * (truncate t297)) + 1)
+      t340 <- rdU vel ((3 * (truncate t297)) + 2)
+      t341 <- rdU scalars ((6 * (truncate t297)) + 1)
+      wrU vel (3 * (truncate t297)) (t338 + ((t336 * (s335 - t317)) * t299))
+      wrU vel ((3 * (truncate t297)) + 1) (t339 + ((t336 * (s335 - t317)) * t300))
+      wrU vel ((3 * (truncate t297)) + 2) (t340 + ((t336 * (s335 - t317)) * t301))
+      wrU scalars ((6 * (truncate t297)) + 1) (t341 + ((t337 * (s335 - t317)) * t302))
       if (t298 + 0.5) > 0 then do
-        t342 <- rdI scalars ((6 * (truncate t298)) + 2)
-        t343 <- rdI scalars ((6 * (truncate t298)) + 3)
-        t344 <- rdI vel (3 * (truncate t298))
-        t345 <- rdI vel ((3 * (truncate t298)) + 1)
-        t346 <- rdI vel ((3 * (truncate t298)) + 2)
-        t347 <- rdI scalars ((6 * (truncate t298)) + 1)
-        wrI vel (3 * (truncate t298)) (t344 + ((t342 * (negate (s335 - t317))) * t303))
-        wrI vel ((3 * (truncate t298)) + 1) (t345 + ((t342 * (negate (s335 - t317))) * t304))
-        wrI vel ((3 * (truncate t298)) + 2) (t346 + ((t342 * (negate (s335 - t317))) * t305))
-        wrI scalars ((6 * (truncate t298)) + 1) (t347 + ((t343 * (negate (s335 - t317))) * t306))
+        chkI scalars (6 * (truncate t298)) 1 3
+        t342 <- rdU scalars ((6 * (truncate t298)) + 2)
+        t343 <- rdU scalars ((6 * (truncate t298)) + 3)
+        chkI vel (3 * (truncate t298)) 0 2
+        t344 <- rdU vel (3 * (truncate t298))
+        t345 <- rdU vel ((3 * (truncate t298)) + 1)
+        t346 <- rdU vel ((3 * (truncate t298)) + 2)
+        t347 <- rdU scalars ((6 * (truncate t298)) + 1)
+        wrU vel (3 * (truncate t298)) (t344 + ((t342 * (negate (s335 - t317))) * t303))
+        wrU vel ((3 * (truncate t298)) + 1) (t345 + ((t342 * (negate (s335 - t317))) * t304))
+        wrU vel ((3 * (truncate t298)) + 2) (t346 + ((t342 * (negate (s335 - t317))) * t305))
+        wrU scalars ((6 * (truncate t298)) + 1) (t347 + ((t343 * (negate (s335 - t317))) * t306))
         pure ()
       else do
         pure ()
-      t348 <- rdI contacts ((30 * i296) + 21)
-      t349 <- rdI contacts ((30 * i296) + 23)
-      t350 <- rdI vel (3 * (truncate t297))
-      t351 <- rdI vel ((3 * (truncate t297)) + 1)
-      t352 <- rdI vel ((3 * (truncate t297)) + 2)
-      t353 <- rdI scalars ((6 * (truncate t297)) + 1)
+      t348 <- rdU contacts ((30 * i296) + 21)
+      t349 <- rdU contacts ((30 * i296) + 23)
+      t350 <- rdU vel (3 * (truncate t297))
+      t351 <- rdU vel ((3 * (truncate t297)) + 1)
+      t352 <- rdU vel ((3 * (truncate t297)) + 2)
+      t353 <- rdU scalars ((6 * (truncate t297)) + 1)
       v354 <- newR 0.0
       if (t298 + 0.5) > 0 then do
-        t355 <- rdI vel (3 * (truncate t298))
-        t356 <- rdI vel ((3 * (truncate t298)) + 1)
-        t357 <- rdI vel ((3 * (truncate t298)) + 2)
-        t358 <- rdI scalars ((6 * (truncate t298)) + 1)
+        chkI vel (3 * (truncate t298)) 0 2
+        t355 <- rdU vel (3 * (truncate t298))
+        t356 <- rdU vel ((3 * (truncate t298)) + 1)
+        t357 <- rdU vel ((3 * (truncate t298)) + 2)
+        chkI scalars (6 * (truncate t298)) 1 1
+        t358 <- rdU scalars ((6 * (truncate t298)) + 1)
         setR v354 ((((t311 * t355) + (t312 * t356)) + (t313 * t357)) + (t314 * t358))
         pure ()
       else do
@@ -1340,73 +1474,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t361 = (t316 + ((t315 * (t349 - s360)) * t348))
       let !t362 = (if (negate t361) > 0 then 0.0 else t361)
       let !s363 = (if (1.0 - (abs (t362 - t362))) > 0 then t362 else 0.0)
-      wrI contacts ((30 * i296) + 24) s363
-      t364 <- rdI scalars ((6 * (truncate t297)) + 2)
-      t365 <- rdI scalars ((6 * (truncate t297)) + 3)
-      t366 <- rdI vel (3 * (truncate t297))
-      t367 <- rdI vel ((3 * (truncate t297)) + 1)
-      t368 <- rdI vel ((3 * (truncate t297)) + 2)
-      t369 <- rdI scalars ((6 * (truncate t297)) + 1)
-      wrI vel (3 * (truncate t297)) (t366 + ((t364 * (s363 - t316)) * t307))
-      wrI vel ((3 * (truncate t297)) + 1) (t367 + ((t364 * (s363 - t316)) * t308))
-      wrI vel ((3 * (truncate t297)) + 2) (t368 + ((t364 * (s363 - t316)) * t309))
-      wrI scalars ((6 * (truncate t297)) + 1) (t369 + ((t365 * (s363 - t316)) * t310))
+      wrU contacts ((30 * i296) + 24) s363
+      t364 <- rdU scalars ((6 * (truncate t297)) + 2)
+      t365 <- rdU scalars ((6 * (truncate t297)) + 3)
+      t366 <- rdU vel (3 * (truncate t297))
+      t367 <- rdU vel ((3 * (truncate t297)) + 1)
+      t368 <- rdU vel ((3 * (truncate t297)) + 2)
+      t369 <- rdU scalars ((6 * (truncate t297)) + 1)
+      wrU vel (3 * (truncate t297)) (t366 + ((t364 * (s363 - t316)) * t307))
+      wrU vel ((3 * (truncate t297)) + 1) (t367 + ((t364 * (s363 - t316)) * t308))
+      wrU vel ((3 * (truncate t297)) + 2) (t368 + ((t364 * (s363 - t316)) * t309))
+      wrU scalars ((6 * (truncate t297)) + 1) (t369 + ((t365 * (s363 - t316)) * t310))
       if (t298 + 0.5) > 0 then do
-        t370 <- rdI scalars ((6 * (truncate t298)) + 2)
-        t371 <- rdI scalars ((6 * (truncate t298)) + 3)
-        t372 <- rdI vel (3 * (truncate t298))
-        t373 <- rdI vel ((3 * (truncate t298)) + 1)
-        t374 <- rdI vel ((3 * (truncate t298)) + 2)
-        t375 <- rdI scalars ((6 * (truncate t298)) + 1)
-        wrI vel (3 * (truncate t298)) (t372 + ((t370 * (negate (s363 - t316))) * t311))
-        wrI vel ((3 * (truncate t298)) + 1) (t373 + ((t370 * (negate (s363 - t316))) * t312))
-        wrI vel ((3 * (truncate t298)) + 2) (t374 + ((t370 * (negate (s363 - t316))) * t313))
-        wrI scalars ((6 * (truncate t298)) + 1) (t375 + ((t371 * (negate (s363 - t316))) * t314))
+        chkI scalars (6 * (truncate t298)) 1 3
+        t370 <- rdU scalars ((6 * (truncate t298)) + 2)
+        t371 <- rdU scalars ((6 * (truncate t298)) + 3)
+        chkI vel (3 * (truncate t298)) 0 2
+        t372 <- rdU vel (3 * (truncate t298))
+        t373 <- rdU vel ((3 * (truncate t298)) + 1)
+        t374 <- rdU vel ((3 * (truncate t298)) + 2)
+        t375 <- rdU scalars ((6 * (truncate t298)) + 1)
+        wrU vel (3 * (truncate t298)) (t372 + ((t370 * (negate (s363 - t316))) * t311))
+        wrU vel ((3 * (truncate t298)) + 1) (t373 + ((t370 * (negate (s363 - t316))) * t312))
+        wrU vel ((3 * (truncate t298)) + 2) (t374 + ((t370 * (negate (s363 - t316))) * t313))
+        wrU scalars ((6 * (truncate t298)) + 1) (t375 + ((t371 * (negate (s363 - t316))) * t314))
         pure ()
       else do
         pure ()
       pure ()
-    t376 <- rdI mouse 0
+    t376 <- rdU mouse 0
     if t376 > 0 then do
-      t377 <- rdI mouse 1
-      t378 <- rdI scalars ((6 * (truncate t377)) + 2)
+      chkI mouse 0 1 1
+      t377 <- rdU mouse 1
+      chkI scalars (6 * (truncate t377)) 2 2
+      t378 <- rdU scalars ((6 * (truncate t377)) + 2)
       if t378 > 0 then do
-        t379 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t380 <- rdI params 0
-        t381 <- rdI pos (3 * (truncate t377))
-        t382 <- rdI pos ((3 * (truncate t377)) + 1)
-        t383 <- rdI pos ((3 * (truncate t377)) + 2)
-        t384 <- rdI normal (3 * (truncate t377))
-        t385 <- rdI normal ((3 * (truncate t377)) + 1)
-        t386 <- rdI normal ((3 * (truncate t377)) + 2)
-        t387 <- rdI axis (3 * (truncate t377))
-        t388 <- rdI axis ((3 * (truncate t377)) + 1)
-        t389 <- rdI axis ((3 * (truncate t377)) + 2)
+        chkI scalars (6 * (truncate t377)) 0 5
+        t379 <- rdU scalars ((6 * (truncate t377)) + 3)
+        t380 <- rdU params 0
+        chkI pos (3 * (truncate t377)) 0 2
+        t381 <- rdU pos (3 * (truncate t377))
+        t382 <- rdU pos ((3 * (truncate t377)) + 1)
+        t383 <- rdU pos ((3 * (truncate t377)) + 2)
+        chkI normal (3 * (truncate t377)) 0 2
+        t384 <- rdU normal (3 * (truncate t377))
+        t385 <- rdU normal ((3 * (truncate t377)) + 1)
+        t386 <- rdU normal ((3 * (truncate t377)) + 2)
+        chkI axis (3 * (truncate t377)) 0 2
+        t387 <- rdU axis (3 * (truncate t377))
+        t388 <- rdU axis ((3 * (truncate t377)) + 1)
+        t389 <- rdU axis ((3 * (truncate t377)) + 2)
         let !s390 = ((t385 * t389) - (t386 * t388))
         let !s391 = ((t386 * t387) - (t384 * t389))
         let !s392 = ((t384 * t388) - (t385 * t387))
-        t393 <- rdI scalars (6 * (truncate t377))
-        t394 <- rdI scalars ((6 * (truncate t377)) + 5)
-        t395 <- rdI scalars ((6 * (truncate t377)) + 2)
-        t396 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t397 <- rdI pos (3 * (truncate t377))
-        t398 <- rdI pos ((3 * (truncate t377)) + 1)
-        t399 <- rdI pos ((3 * (truncate t377)) + 2)
-        t400 <- rdI normal (3 * (truncate t377))
-        t401 <- rdI normal ((3 * (truncate t377)) + 1)
-        t402 <- rdI normal ((3 * (truncate t377)) + 2)
-        t403 <- rdI axis (3 * (truncate t377))
-        t404 <- rdI axis ((3 * (truncate t377)) + 1)
-        t405 <- rdI axis ((3 * (truncate t377)) + 2)
+        t393 <- rdU scalars (6 * (truncate t377))
+        t394 <- rdU scalars ((6 * (truncate t377)) + 5)
+        t395 <- rdU scalars ((6 * (truncate t377)) + 2)
+        t396 <- rdU scalars ((6 * (truncate t377)) + 3)
+        t397 <- rdU pos (3 * (truncate t377))
+        t398 <- rdU pos ((3 * (truncate t377)) + 1)
+        t399 <- rdU pos ((3 * (truncate t377)) + 2)
+        t400 <- rdU normal (3 * (truncate t377))
+        t401 <- rdU normal ((3 * (truncate t377)) + 1)
+        t402 <- rdU normal ((3 * (truncate t377)) + 2)
+        t403 <- rdU axis (3 * (truncate t377))
+        t404 <- rdU axis ((3 * (truncate t377)) + 1)
+        t405 <- rdU axis ((3 * (truncate t377)) + 2)
         let !s406 = ((t401 * t405) - (t402 * t404))
         let !s407 = ((t402 * t403) - (t400 * t405))
         let !s408 = ((t400 * t404) - (t401 * t403))
-        t409 <- rdI scalars (6 * (truncate t377))
-        t410 <- rdI scalars ((6 * (truncate t377)) + 5)
-        t411 <- rdI scalars ((6 * (truncate t377)) + 2)
-        t412 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t413 <- rdI mouse 2
-        t414 <- rdI mouse 3
+        t409 <- rdU scalars (6 * (truncate t377))
+        t410 <- rdU scalars ((6 * (truncate t377)) + 5)
+        t411 <- rdU scalars ((6 * (truncate t377)) + 2)
+        t412 <- rdU scalars ((6 * (truncate t377)) + 3)
+        chkI mouse 0 2 11
+        t413 <- rdU mouse 2
+        t414 <- rdU mouse 3
         let !t415 = (t413 / 4.0)
         let !t416 = (if (abs t415) > 0 then 1.0 else 0.0)
         let !t417 = (t409 + t414)
@@ -1481,9 +1624,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s486 = ((t416 * (t479 * (t485 * t480))) + (t420 * s470))
         let !s487 = ((t416 * (t479 * (t485 * t482))) + (t420 * s471))
         let !s488 = ((t416 * (t479 * (t485 * t483))) + (t420 * s472))
-        t489 <- rdI mouse 4
-        t490 <- rdI mouse 5
-        t491 <- rdI mouse 6
+        t489 <- rdU mouse 4
+        t490 <- rdU mouse 5
+        t491 <- rdU mouse 6
         let !t492 = (floorF ((t489 + 1.0) / 2.0))
         let !t493 = (t489 - (t492 * 2.0))
         let !t494 = (negate s476)
@@ -1537,9 +1680,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t542 = ((if t541 > 0 then t540 else t539) - (t536 + t520))
         let !s543 = (if t542 > 0 then t534 else (if t541 > 0 then t534 else (if t538 > 0 then t534 else (if t532 > 0 then t493 else (if t527 > 0 then t493 else (if t522 > 0 then t503 else (if t516 > 0 then t503 else (if t511 > 0 then t503 else t493))))))))
         let !s544 = (if t542 > 0 then t518 else (if t541 > 0 then t506 else (if t538 > 0 then t507 else (if t532 > 0 then t529 else (if t527 > 0 then t524 else (if t522 > 0 then t518 else (if t516 > 0 then t506 else (if t511 > 0 then t507 else t499))))))))
-        t545 <- rdI mouse 7
-        t546 <- rdI mouse 8
-        t547 <- rdI mouse 9
+        t545 <- rdU mouse 7
+        t546 <- rdU mouse 8
+        t547 <- rdU mouse 9
         let !t548 = (recip t378)
         let !t549 = (6.283185307179586 * t545)
         let !s550 = (recip (t380 * ((((2.0 * t548) * t546) * t549) + (t380 * ((t548 * t549) * t549)))))
@@ -1550,11 +1693,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s555 = (s476 + (negate s543))
         let !s556 = (s477 + (negate t490))
         let !s557 = (s478 + (negate s544))
-        t558 <- rdI mouse 10
-        t559 <- rdI vel (3 * (truncate t377))
-        t560 <- rdI vel ((3 * (truncate t377)) + 1)
-        t561 <- rdI vel ((3 * (truncate t377)) + 2)
-        t562 <- rdI scalars ((6 * (truncate t377)) + 1)
+        t558 <- rdU mouse 10
+        chkI vel (3 * (truncate t377)) 0 2
+        t559 <- rdU vel (3 * (truncate t377))
+        t560 <- rdU vel ((3 * (truncate t377)) + 1)
+        t561 <- rdU vel ((3 * (truncate t377)) + 2)
+        t562 <- rdU scalars ((6 * (truncate t377)) + 1)
         let !t563 = (t547 * t380)
         let !t564 = (negate t563)
         let !t565 = (((((s553 * t389) - (s554 * t388)) * t384) + (((s554 * t387) - (s552 * t389)) * t385)) + (((s552 * t388) - (s553 * t387)) * t386))
@@ -1562,38 +1706,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t567 = (if (t566 - t563) > 0 then t563 else t566)
         let !t568 = (if (t564 - t567) > 0 then t564 else t567)
         let !s569 = (if (1.0 - (abs (t568 - t568))) > 0 then t568 else 0.0)
-        wrI mouse 10 s569
-        t570 <- rdI scalars ((6 * (truncate t377)) + 2)
-        t571 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t572 <- rdI vel (3 * (truncate t377))
-        t573 <- rdI vel ((3 * (truncate t377)) + 1)
-        t574 <- rdI vel ((3 * (truncate t377)) + 2)
-        t575 <- rdI scalars ((6 * (truncate t377)) + 1)
-        wrI vel (3 * (truncate t377)) (t572 + ((t570 * (s569 - t558)) * t387))
-        wrI vel ((3 * (truncate t377)) + 1) (t573 + ((t570 * (s569 - t558)) * t388))
-        wrI vel ((3 * (truncate t377)) + 2) (t574 + ((t570 * (s569 - t558)) * t389))
-        wrI scalars ((6 * (truncate t377)) + 1) (t575 + ((t571 * (s569 - t558)) * t565))
-        t576 <- rdI mouse 11
-        t577 <- rdI vel (3 * (truncate t377))
-        t578 <- rdI vel ((3 * (truncate t377)) + 1)
-        t579 <- rdI vel ((3 * (truncate t377)) + 2)
-        t580 <- rdI scalars ((6 * (truncate t377)) + 1)
+        wrU mouse 10 s569
+        t570 <- rdU scalars ((6 * (truncate t377)) + 2)
+        t571 <- rdU scalars ((6 * (truncate t377)) + 3)
+        t572 <- rdU vel (3 * (truncate t377))
+        t573 <- rdU vel ((3 * (truncate t377)) + 1)
+        t574 <- rdU vel ((3 * (truncate t377)) + 2)
+        t575 <- rdU scalars ((6 * (truncate t377)) + 1)
+        wrU vel (3 * (truncate t377)) (t572 + ((t570 * (s569 - t558)) * t387))
+        wrU vel ((3 * (truncate t377)) + 1) (t573 + ((t570 * (s569 - t558)) * t388))
+        wrU vel ((3 * (truncate t377)) + 2) (t574 + ((t570 * (s569 - t558)) * t389))
+        wrU scalars ((6 * (truncate t377)) + 1) (t575 + ((t571 * (s569 - t558)) * t565))
+        t576 <- rdU mouse 11
+        t577 <- rdU vel (3 * (truncate t377))
+        t578 <- rdU vel ((3 * (truncate t377)) + 1)
+        t579 <- rdU vel ((3 * (truncate t377)) + 2)
+        t580 <- rdU scalars ((6 * (truncate t377)) + 1)
         let !t581 = (((((s553 * s392) - (s554 * s391)) * t384) + (((s554 * s390) - (s552 * s392)) * t385)) + (((s552 * s391) - (s553 * s390)) * t386))
         let !t582 = (t576 + ((negate ((((((s390 * t577) + (s391 * t578)) + (s392 * t579)) + (t581 * t580)) + (s551 * (((s555 * s390) + (s556 * s391)) + (s557 * s392)))) + (s550 * t576))) / (((t378 * (((s390 * s390) + (s391 * s391)) + (s392 * s392))) + ((t379 * t581) * t581)) + s550)))
         let !t583 = (if (t582 - t563) > 0 then t563 else t582)
         let !t584 = (if (t564 - t583) > 0 then t564 else t583)
         let !s585 = (if (1.0 - (abs (t584 - t584))) > 0 then t584 else 0.0)
-        wrI mouse 11 s585
-        t586 <- rdI scalars ((6 * (truncate t377)) + 2)
-        t587 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t588 <- rdI vel (3 * (truncate t377))
-        t589 <- rdI vel ((3 * (truncate t377)) + 1)
-        t590 <- rdI vel ((3 * (truncate t377)) + 2)
-        t591 <- rdI scalars ((6 * (truncate t377)) + 1)
-        wrI vel (3 * (truncate t377)) (t588 + ((t586 * (s585 - t576)) * s390))
-        wrI vel ((3 * (truncate t377)) + 1) (t589 + ((t586 * (s585 - t576)) * s391))
-        wrI vel ((3 * (truncate t377)) + 2) (t590 + ((t586 * (s585 - t576)) * s392))
-        wrI scalars ((6 * (truncate t377)) + 1) (t591 + ((t587 * (s585 - t576)) * t581))
+        wrU mouse 11 s585
+        t586 <- rdU scalars ((6 * (truncate t377)) + 2)
+        t587 <- rdU scalars ((6 * (truncate t377)) + 3)
+        t588 <- rdU vel (3 * (truncate t377))
+        t589 <- rdU vel ((3 * (truncate t377)) + 1)
+        t590 <- rdU vel ((3 * (truncate t377)) + 2)
+        t591 <- rdU scalars ((6 * (truncate t377)) + 1)
+        wrU vel (3 * (truncate t377)) (t588 + ((t586 * (s585 - t576)) * s390))
+        wrU vel ((3 * (truncate t377)) + 1) (t589 + ((t586 * (s585 - t576)) * s391))
+        wrU vel ((3 * (truncate t377)) + 2) (t590 + ((t586 * (s585 - t576)) * s392))
+        wrU scalars ((6 * (truncate t377)) + 1) (t591 + ((t587 * (s585 - t576)) * t581))
         pure ()
       else do
         pure ()
@@ -1601,51 +1745,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t592 <- rdI meta 0
+  t592 <- rdU meta 0
   loopI 0.0 t592 $ \i593 -> do
     let !d593 = fromIntegral i593 :: Double
-    wrI bodyPrev ((2 * i593) + 1) 0.0
+    chkI bodyPrev (2 * i593) 1 1
+    wrU bodyPrev ((2 * i593) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i594 -> do
     let !d594 = fromIntegral i594 :: Double
-    t595 <- rdI contacts ((30 * i594) + 2)
-    wrI prev (4 * i594) t595
-    t596 <- rdI contacts ((30 * i594) + 3)
-    wrI prev ((4 * i594) + 1) t596
-    t597 <- rdI contacts ((30 * i594) + 24)
-    wrI prev ((4 * i594) + 2) t597
-    t598 <- rdI contacts ((30 * i594) + 25)
-    wrI prev ((4 * i594) + 3) t598
-    t599 <- rdI bodyPrev ((2 * (truncate t595)) + 1)
+    chkI contacts (30 * i594) 2 25
+    t595 <- rdU contacts ((30 * i594) + 2)
+    chkI prev (4 * i594) 0 3
+    wrU prev (4 * i594) t595
+    t596 <- rdU contacts ((30 * i594) + 3)
+    wrU prev ((4 * i594) + 1) t596
+    t597 <- rdU contacts ((30 * i594) + 24)
+    wrU prev ((4 * i594) + 2) t597
+    t598 <- rdU contacts ((30 * i594) + 25)
+    wrU prev ((4 * i594) + 3) t598
+    chkI bodyPrev (2 * (truncate t595)) 1 1
+    t599 <- rdU bodyPrev ((2 * (truncate t595)) + 1)
     if (0.5 - t599) > 0 then do
-      wrI bodyPrev (2 * (truncate t595)) d594
+      chkI bodyPrev (2 * (truncate t595)) 0 0
+      wrU bodyPrev (2 * (truncate t595)) d594
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t595)) + 1) (t599 + 1.0)
+    wrU bodyPrev ((2 * (truncate t595)) + 1) (t599 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1719,60 +1875,70 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     if (if (t83 - t86) > 0 then t86 else t83) > 0 then do
       let !t87 = (floorF ((s48 + 1.0) / 2.0))
       let !s88 = (1.0 - (2.0 * (t87 - (2.0 * (floorF (0.5 * t87))))))
-      wrI pos (3 * i2) (s48 - (t87 * 2.0))
-      wrI pos ((3 * i2) + 1) s49
-      wrI pos ((3 * i2) + 2) (s88 * (s50 - ((floorF ((s50 + 1.0) / 2.0)) * 2.0)))
-      wrI vel (3 * i2) s71
-      wrI vel ((3 * i2) + 1) s72
-      wrI vel ((3 * i2) + 2) (s88 * s73)
-      wrI axis (3 * i2) s80
-      wrI axis ((3 * i2) + 1) s81
-      wrI axis ((3 * i2) + 2) (s88 * s82)
-      wrI normal (3 * i2) s51
-      wrI normal ((3 * i2) + 1) s52
-      wrI normal ((3 * i2) + 2) (s88 * s53)
-      wrI scalars (6 * i2) (s88 * t85)
-      wrI scalars ((6 * i2) + 1) (s88 * t13)
-      t89 <- rdI mouse 0
-      t90 <- rdI mouse 1
+      wrU pos (3 * i2) (s48 - (t87 * 2.0))
+      wrU pos ((3 * i2) + 1) s49
+      wrU pos ((3 * i2) + 2) (s88 * (s50 - ((floorF ((s50 + 1.0) / 2.0)) * 2.0)))
+      wrU vel (3 * i2) s71
+      wrU vel ((3 * i2) + 1) s72
+      wrU vel ((3 * i2) + 2) (s88 * s73)
+      wrU axis (3 * i2) s80
+      wrU axis ((3 * i2) + 1) s81
+      wrU axis ((3 * i2) + 2) (s88 * s82)
+      wrU normal (3 * i2) s51
+      wrU normal ((3 * i2) + 1) s52
+      wrU normal ((3 * i2) + 2) (s88 * s53)
+      wrU scalars (6 * i2) (s88 * t85)
+      wrU scalars ((6 * i2) + 1) (s88 * t13)
+      chkI mouse 0 0 1
+      t89 <- rdU mouse 0
+      t90 <- rdU mouse 1
       if (t89 * (0.5 - (abs (t90 - d2)))) > 0 then do
-        t91 <- rdI mouse 3
-        wrI mouse 3 (s88 * t91)
+        chkI mouse 0 3 3
+        t91 <- rdU mouse 3
+        wrU mouse 3 (s88 * t91)
         pure ()
       else do
         pure ()
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t92 <- rdI meta 1
-      wrI meta 1 (t92 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t92 <- rdU meta 1
+      wrU meta 1 (t92 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1781,7 +1947,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1823,9 +1990,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1855,9 +2023,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1887,9 +2056,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1919,9 +2089,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1946,18 +2117,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,30 +28,37 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       if (1.0 - (abs (((t8 - t8) + (t9 - t9)) + (t10 - t10)))) > 0 then do
-        wrI vel (3 * i3) t8
-        wrI vel ((3 * i3) + 1) t9
-        wrI vel ((3 * i3) + 2) t10
+        wrU vel (3 * i3) t8
+        wrU vel ((3 * i3) + 1) t9
+        wrU vel ((3 * i3) + 2) t10
         pure ()
       else do
-        t14 <- rdI meta 1
-        wrI meta 1 (t14 + 1.0)
+        chkI meta 0 1 1
+        t14 <- rdU meta 1
+        wrU meta 1 (t14 + 1.0)
         pure ()
       pure ()
     else do
@@ -61,12 +68,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -76,59 +85,70 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
     let !t38 = ((abs t32) - 1.0)
     let !t39 = (if (negate t38) > 0 then 0.0 else t38)
     let !t40 = ((abs t34) - 1.0)
     let !t41 = (if (negate t40) > 0 then 0.0 else t40)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t41 * t41)))) > 0 then do
-      t42 <- rdI meta 4
-      t43 <- rdI meta 5
+      t42 <- rdU meta 4
+      t43 <- rdU meta 5
       let !s44 = (floorF (t32 / t43))
       let !s45 = (floorF (t33 / t43))
       let !s46 = (floorF (t34 / t43))
@@ -144,19 +164,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s53 = (((((s50 + 131072.0) * 262144.0) + (s51 + 131072.0)) * 262144.0) + (s52 + 131072.0))
             let !t54 = (((s50 * 7.3856093e7) + (s51 * 1.9349663e7)) + (s52 * 8.3492791e7))
             let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
-            t56 <- rdI grid (truncate s55)
-            t57 <- rdI grid ((truncate t42) + (truncate s55))
+            chkI grid (truncate s55) 0 0
+            t56 <- rdU grid (truncate s55)
+            chkI grid ((truncate t42) + (truncate s55)) 0 0
+            t57 <- rdU grid ((truncate t42) + (truncate s55))
             loopI t57 t56 $ \i58 -> do
               let !d58 = fromIntegral i58 :: Double
-              t59 <- rdI items i58
-              t60 <- rdI cellOf (truncate t59)
+              chkI items i58 0 0
+              t59 <- rdU items i58
+              chkI cellOf (truncate t59) 0 0
+              t60 <- rdU cellOf (truncate t59)
               if (0.5 - (abs (t60 - s53))) > 0 then do
                 if (t59 - d31) > 0 then do
-                  t61 <- rdI pos (3 * (truncate t59))
-                  t62 <- rdI pos ((3 * (truncate t59)) + 1)
-                  t63 <- rdI pos ((3 * (truncate t59)) + 2)
-                  t64 <- rdI scalars ((6 * (truncate t59)) + 5)
-                  t65 <- rdI scalars ((6 * (truncate t59)) + 2)
+                  chkI pos (3 * (truncate t59)) 0 2
+                  t61 <- rdU pos (3 * (truncate t59))
+                  t62 <- rdU pos ((3 * (truncate t59)) + 1)
+                  t63 <- rdU pos ((3 * (truncate t59)) + 2)
+                  chkI scalars (6 * (truncate t59)) 2 5
+                  t64 <- rdU scalars ((6 * (truncate t59)) + 5)
+                  t65 <- rdU scalars ((6 * (truncate t59)) + 2)
                   let !t66 = (t36 + t65)
                   let !t67 = (t32 + (negate t61))
                   let !t68 = (t33 + (negate t62))
@@ -187,8 +213,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t75 = ((abs s72) - 1.0)
     let !t76 = (if (negate t75) > 0 then 0.0 else t75)
     if ((t35 + t37) - (sqrt ((t74 * t74) + (t76 * t76)))) > 0 then do
-      t77 <- rdI meta 4
-      t78 <- rdI meta 5
+      t77 <- rdU meta 4
+      t78 <- rdU meta 5
       let !s79 = (floorF (s71 / t78))
       let !s80 = (floorF (t33 / t78))
       let !s81 = (floorF (s72 / t78))
@@ -204,19 +230,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s88 = (((((s85 + 131072.0) * 262144.0) + (s86 + 131072.0)) * 262144.0) + (s87 + 131072.0))
             let !t89 = (((s85 * 7.3856093e7) + (s86 * 1.9349663e7)) + (s87 * 8.3492791e7))
             let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
-            t91 <- rdI grid (truncate s90)
-            t92 <- rdI grid ((truncate t77) + (truncate s90))
+            chkI grid (truncate s90) 0 0
+            t91 <- rdU grid (truncate s90)
+            chkI grid ((truncate t77) + (truncate s90)) 0 0
+            t92 <- rdU grid ((truncate t77) + (truncate s90))
             loopI t92 t91 $ \i93 -> do
               let !d93 = fromIntegral i93 :: Double
-              t94 <- rdI items i93
-              t95 <- rdI cellOf (truncate t94)
+              chkI items i93 0 0
+              t94 <- rdU items i93
+              chkI cellOf (truncate t94) 0 0
+              t95 <- rdU cellOf (truncate t94)
               if (0.5 - (abs (t95 - s88))) > 0 then do
                 if (t94 - d31) > 0 then do
-                  t96 <- rdI pos (3 * (truncate t94))
-                  t97 <- rdI pos ((3 * (truncate t94)) + 1)
-                  t98 <- rdI pos ((3 * (truncate t94)) + 2)
-                  t99 <- rdI scalars ((6 * (truncate t94)) + 5)
-                  t100 <- rdI scalars ((6 * (truncate t94)) + 2)
+                  chkI pos (3 * (truncate t94)) 0 2
+                  t96 <- rdU pos (3 * (truncate t94))
+                  t97 <- rdU pos ((3 * (truncate t94)) + 1)
+                  t98 <- rdU pos ((3 * (truncate t94)) + 2)
+                  chkI scalars (6 * (truncate t94)) 2 5
+                  t99 <- rdU scalars ((6 * (truncate t94)) + 5)
+                  t100 <- rdU scalars ((6 * (truncate t94)) + 2)
                   let !t101 = (t36 + t100)
                   let !t102 = (s71 + (negate t96))
                   let !t103 = (t33 + (negate t97))
@@ -244,8 +276,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t107 = ((abs s106) - 1.0)
     let !t108 = (if (negate t107) > 0 then 0.0 else t107)
     if ((t35 + t37) - (sqrt ((t108 * t108) + (t41 * t41)))) > 0 then do
-      t109 <- rdI meta 4
-      t110 <- rdI meta 5
+      t109 <- rdU meta 4
+      t110 <- rdU meta 5
       let !s111 = (floorF (s106 / t110))
       let !s112 = (floorF (t33 / t110))
       let !s113 = (floorF (t34 / t110))
@@ -261,19 +293,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s120 = (((((s117 + 131072.0) * 262144.0) + (s118 + 131072.0)) * 262144.0) + (s119 + 131072.0))
             let !t121 = (((s117 * 7.3856093e7) + (s118 * 1.9349663e7)) + (s119 * 8.3492791e7))
             let !s122 = (t121 - (t109 * (floorF (t121 / t109))))
-            t123 <- rdI grid (truncate s122)
-            t124 <- rdI grid ((truncate t109) + (truncate s122))
+            chkI grid (truncate s122) 0 0
+            t123 <- rdU grid (truncate s122)
+            chkI grid ((truncate t109) + (truncate s122)) 0 0
+            t124 <- rdU grid ((truncate t109) + (truncate s122))
             loopI t124 t123 $ \i125 -> do
               let !d125 = fromIntegral i125 :: Double
-              t126 <- rdI items i125
-              t127 <- rdI cellOf (truncate t126)
+              chkI items i125 0 0
+              t126 <- rdU items i125
+              chkI cellOf (truncate t126) 0 0
+              t127 <- rdU cellOf (truncate t126)
               if (0.5 - (abs (t127 - s120))) > 0 then do
                 if (t126 - d31) > 0 then do
-                  t128 <- rdI pos (3 * (truncate t126))
-                  t129 <- rdI pos ((3 * (truncate t126)) + 1)
-                  t130 <- rdI pos ((3 * (truncate t126)) + 2)
-                  t131 <- rdI scalars ((6 * (truncate t126)) + 5)
-                  t132 <- rdI scalars ((6 * (truncate t126)) + 2)
+                  chkI pos (3 * (truncate t126)) 0 2
+                  t128 <- rdU pos (3 * (truncate t126))
+                  t129 <- rdU pos ((3 * (truncate t126)) + 1)
+                  t130 <- rdU pos ((3 * (truncate t126)) + 2)
+                  chkI scalars (6 * (truncate t126)) 2 5
+                  t131 <- rdU scalars ((6 * (truncate t126)) + 5)
+                  t132 <- rdU scalars ((6 * (truncate t126)) + 2)
                   let !t133 = (t36 + t132)
                   let !t134 = (s106 + (negate t128))
                   let !t135 = (t33 + (negate t129))
@@ -304,8 +342,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t142 = ((abs s139) - 1.0)
     let !t143 = (if (negate t142) > 0 then 0.0 else t142)
     if ((t35 + t37) - (sqrt ((t141 * t141) + (t143 * t143)))) > 0 then do
-      t144 <- rdI meta 4
-      t145 <- rdI meta 5
+      t144 <- rdU meta 4
+      t145 <- rdU meta 5
       let !s146 = (floorF (s138 / t145))
       let !s147 = (floorF (t33 / t145))
       let !s148 = (floorF (s139 / t145))
@@ -321,19 +359,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s155 = (((((s152 + 131072.0) * 262144.0) + (s153 + 131072.0)) * 262144.0) + (s154 + 131072.0))
             let !t156 = (((s152 * 7.3856093e7) + (s153 * 1.9349663e7)) + (s154 * 8.3492791e7))
             let !s157 = (t156 - (t144 * (floorF (t156 / t144))))
-            t158 <- rdI grid (truncate s157)
-            t159 <- rdI grid ((truncate t144) + (truncate s157))
+            chkI grid (truncate s157) 0 0
+            t158 <- rdU grid (truncate s157)
+            chkI grid ((truncate t144) + (truncate s157)) 0 0
+            t159 <- rdU grid ((truncate t144) + (truncate s157))
             loopI t159 t158 $ \i160 -> do
               let !d160 = fromIntegral i160 :: Double
-              t161 <- rdI items i160
-              t162 <- rdI cellOf (truncate t161)
+              chkI items i160 0 0
+              t161 <- rdU items i160
+              chkI cellOf (truncate t161) 0 0
+              t162 <- rdU cellOf (truncate t161)
               if (0.5 - (abs (t162 - s155))) > 0 then do
                 if (t161 - d31) > 0 then do
-                  t163 <- rdI pos (3 * (truncate t161))
-                  t164 <- rdI pos ((3 * (truncate t161)) + 1)
-                  t165 <- rdI pos ((3 * (truncate t161)) + 2)
-                  t166 <- rdI scalars ((6 * (truncate t161)) + 5)
-                  t167 <- rdI scalars ((6 * (truncate t161)) + 2)
+                  chkI pos (3 * (truncate t161)) 0 2
+                  t163 <- rdU pos (3 * (truncate t161))
+                  t164 <- rdU pos ((3 * (truncate t161)) + 1)
+                  t165 <- rdU pos ((3 * (truncate t161)) + 2)
+                  chkI scalars (6 * (truncate t161)) 2 5
+                  t166 <- rdU scalars ((6 * (truncate t161)) + 5)
+                  t167 <- rdU scalars ((6 * (truncate t161)) + 2)
                   let !t168 = (t36 + t167)
                   let !t169 = (s138 + (negate t163))
                   let !t170 = (t33 + (negate t164))
@@ -361,8 +405,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t174 = ((abs s173) - 1.0)
     let !t175 = (if (negate t174) > 0 then 0.0 else t174)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t175 * t175)))) > 0 then do
-      t176 <- rdI meta 4
-      t177 <- rdI meta 5
+      t176 <- rdU meta 4
+      t177 <- rdU meta 5
       let !s178 = (floorF (t32 / t177))
       let !s179 = (floorF (t33 / t177))
       let !s180 = (floorF (s173 / t177))
@@ -378,19 +422,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s187 = (((((s184 + 131072.0) * 262144.0) + (s185 + 131072.0)) * 262144.0) + (s186 + 131072.0))
             let !t188 = (((s184 * 7.3856093e7) + (s185 * 1.9349663e7)) + (s186 * 8.3492791e7))
             let !s189 = (t188 - (t176 * (floorF (t188 / t176))))
-            t190 <- rdI grid (truncate s189)
-            t191 <- rdI grid ((truncate t176) + (truncate s189))
+            chkI grid (truncate s189) 0 0
+            t190 <- rdU grid (truncate s189)
+            chkI grid ((truncate t176) + (truncate s189)) 0 0
+            t191 <- rdU grid ((truncate t176) + (truncate s189))
             loopI t191 t190 $ \i192 -> do
               let !d192 = fromIntegral i192 :: Double
-              t193 <- rdI items i192
-              t194 <- rdI cellOf (truncate t193)
+              chkI items i192 0 0
+              t193 <- rdU items i192
+              chkI cellOf (truncate t193) 0 0
+              t194 <- rdU cellOf (truncate t193)
               if (0.5 - (abs (t194 - s187))) > 0 then do
                 if (t193 - d31) > 0 then do
-                  t195 <- rdI pos (3 * (truncate t193))
-                  t196 <- rdI pos ((3 * (truncate t193)) + 1)
-                  t197 <- rdI pos ((3 * (truncate t193)) + 2)
-                  t198 <- rdI scalars ((6 * (truncate t193)) + 5)
-                  t199 <- rdI scalars ((6 * (truncate t193)) + 2)
+                  chkI pos (3 * (truncate t193)) 0 2
+                  t195 <- rdU pos (3 * (truncate t193))
+                  t196 <- rdU pos ((3 * (truncate t193)) + 1)
+                  t197 <- rdU pos ((3 * (truncate t193)) + 2)
+                  chkI scalars (6 * (truncate t193)) 2 5
+                  t198 <- rdU scalars ((6 * (truncate t193)) + 5)
+                  t199 <- rdU scalars ((6 * (truncate t193)) + 2)
                   let !t200 = (t36 + t199)
                   let !t201 = (t32 + (negate t195))
                   let !t202 = (t33 + (negate t196))
@@ -418,8 +468,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t206 = ((abs s205) - 1.0)
     let !t207 = (if (negate t206) > 0 then 0.0 else t206)
     if ((t35 + t37) - (sqrt ((t39 * t39) + (t207 * t207)))) > 0 then do
-      t208 <- rdI meta 4
-      t209 <- rdI meta 5
+      t208 <- rdU meta 4
+      t209 <- rdU meta 5
       let !s210 = (floorF (t32 / t209))
       let !s211 = (floorF (t33 / t209))
       let !s212 = (floorF (s205 / t209))
@@ -435,19 +485,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s219 = (((((s216 + 131072.0) * 262144.0) + (s217 + 131072.0)) * 262144.0) + (s218 + 131072.0))
             let !t220 = (((s216 * 7.3856093e7) + (s217 * 1.9349663e7)) + (s218 * 8.3492791e7))
             let !s221 = (t220 - (t208 * (floorF (t220 / t208))))
-            t222 <- rdI grid (truncate s221)
-            t223 <- rdI grid ((truncate t208) + (truncate s221))
+            chkI grid (truncate s221) 0 0
+            t222 <- rdU grid (truncate s221)
+            chkI grid ((truncate t208) + (truncate s221)) 0 0
+            t223 <- rdU grid ((truncate t208) + (truncate s221))
             loopI t223 t222 $ \i224 -> do
               let !d224 = fromIntegral i224 :: Double
-              t225 <- rdI items i224
-              t226 <- rdI cellOf (truncate t225)
+              chkI items i224 0 0
+              t225 <- rdU items i224
+              chkI cellOf (truncate t225) 0 0
+              t226 <- rdU cellOf (truncate t225)
               if (0.5 - (abs (t226 - s219))) > 0 then do
                 if ((t225 - d31) + 0.5) > 0 then do
-                  t227 <- rdI pos (3 * (truncate t225))
-                  t228 <- rdI pos ((3 * (truncate t225)) + 1)
-                  t229 <- rdI pos ((3 * (truncate t225)) + 2)
-                  t230 <- rdI scalars ((6 * (truncate t225)) + 5)
-                  t231 <- rdI scalars ((6 * (truncate t225)) + 2)
+                  chkI pos (3 * (truncate t225)) 0 2
+                  t227 <- rdU pos (3 * (truncate t225))
+                  t228 <- rdU pos ((3 * (truncate t225)) + 1)
+                  t229 <- rdU pos ((3 * (truncate t225)) + 2)
+                  chkI scalars (6 * (truncate t225)) 2 5
+                  t230 <- rdU scalars ((6 * (truncate t225)) + 5)
+                  t231 <- rdU scalars ((6 * (truncate t225)) + 2)
                   let !t232 = (t36 + t231)
                   let !t233 = (t32 + (negate t227))
                   let !t234 = (t33 + (negate t228))
@@ -478,8 +534,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t241 = ((abs s238) - 1.0)
     let !t242 = (if (negate t241) > 0 then 0.0 else t241)
     if ((t35 + t37) - (sqrt ((t240 * t240) + (t242 * t242)))) > 0 then do
-      t243 <- rdI meta 4
-      t244 <- rdI meta 5
+      t243 <- rdU meta 4
+      t244 <- rdU meta 5
       let !s245 = (floorF (s237 / t244))
       let !s246 = (floorF (t33 / t244))
       let !s247 = (floorF (s238 / t244))
@@ -495,19 +551,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s254 = (((((s251 + 131072.0) * 262144.0) + (s252 + 131072.0)) * 262144.0) + (s253 + 131072.0))
             let !t255 = (((s251 * 7.3856093e7) + (s252 * 1.9349663e7)) + (s253 * 8.3492791e7))
             let !s256 = (t255 - (t243 * (floorF (t255 / t243))))
-            t257 <- rdI grid (truncate s256)
-            t258 <- rdI grid ((truncate t243) + (truncate s256))
+            chkI grid (truncate s256) 0 0
+            t257 <- rdU grid (truncate s256)
+            chkI grid ((truncate t243) + (truncate s256)) 0 0
+            t258 <- rdU grid ((truncate t243) + (truncate s256))
             loopI t258 t257 $ \i259 -> do
               let !d259 = fromIntegral i259 :: Double
-              t260 <- rdI items i259
-              t261 <- rdI cellOf (truncate t260)
+              chkI items i259 0 0
+              t260 <- rdU items i259
+              chkI cellOf (truncate t260) 0 0
+              t261 <- rdU cellOf (truncate t260)
               if (0.5 - (abs (t261 - s254))) > 0 then do
                 if ((t260 - d31) + 0.5) > 0 then do
-                  t262 <- rdI pos (3 * (truncate t260))
-                  t263 <- rdI pos ((3 * (truncate t260)) + 1)
-                  t264 <- rdI pos ((3 * (truncate t260)) + 2)
-                  t265 <- rdI scalars ((6 * (truncate t260)) + 5)
-                  t266 <- rdI scalars ((6 * (truncate t260)) + 2)
+                  chkI pos (3 * (truncate t260)) 0 2
+                  t262 <- rdU pos (3 * (truncate t260))
+                  t263 <- rdU pos ((3 * (truncate t260)) + 1)
+                  t264 <- rdU pos ((3 * (truncate t260)) + 2)
+                  chkI scalars (6 * (truncate t260)) 2 5
+                  t265 <- rdU scalars ((6 * (truncate t260)) + 5)
+                  t266 <- rdU scalars ((6 * (truncate t260)) + 2)
                   let !t267 = (t36 + t266)
                   let !t268 = (s237 + (negate t262))
                   let !t269 = (t33 + (negate t263))
@@ -535,8 +597,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t273 = ((abs s272) - 1.0)
     let !t274 = (if (negate t273) > 0 then 0.0 else t273)
     if ((t35 + t37) - (sqrt ((t274 * t274) + (t41 * t41)))) > 0 then do
-      t275 <- rdI meta 4
-      t276 <- rdI meta 5
+      t275 <- rdU meta 4
+      t276 <- rdU meta 5
       let !s277 = (floorF (s272 / t276))
       let !s278 = (floorF (t33 / t276))
       let !s279 = (floorF (t34 / t276))
@@ -552,19 +614,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s286 = (((((s283 + 131072.0) * 262144.0) + (s284 + 131072.0)) * 262144.0) + (s285 + 131072.0))
             let !t287 = (((s283 * 7.3856093e7) + (s284 * 1.9349663e7)) + (s285 * 8.3492791e7))
             let !s288 = (t287 - (t275 * (floorF (t287 / t275))))
-            t289 <- rdI grid (truncate s288)
-            t290 <- rdI grid ((truncate t275) + (truncate s288))
+            chkI grid (truncate s288) 0 0
+            t289 <- rdU grid (truncate s288)
+            chkI grid ((truncate t275) + (truncate s288)) 0 0
+            t290 <- rdU grid ((truncate t275) + (truncate s288))
             loopI t290 t289 $ \i291 -> do
               let !d291 = fromIntegral i291 :: Double
-              t292 <- rdI items i291
-              t293 <- rdI cellOf (truncate t292)
+              chkI items i291 0 0
+              t292 <- rdU items i291
+              chkI cellOf (truncate t292) 0 0
+              t293 <- rdU cellOf (truncate t292)
               if (0.5 - (abs (t293 - s286))) > 0 then do
                 if ((t292 - d31) + 0.5) > 0 then do
-                  t294 <- rdI pos (3 * (truncate t292))
-                  t295 <- rdI pos ((3 * (truncate t292)) + 1)
-                  t296 <- rdI pos ((3 * (truncate t292)) + 2)
-                  t297 <- rdI scalars ((6 * (truncate t292)) + 5)
-                  t298 <- rdI scalars ((6 * (truncate t292)) + 2)
+                  chkI pos (3 * (truncate t292)) 0 2
+                  t294 <- rdU pos (3 * (truncate t292))
+                  t295 <- rdU pos ((3 * (truncate t292)) + 1)
+                  t296 <- rdU pos ((3 * (truncate t292)) + 2)
+                  chkI scalars (6 * (truncate t292)) 2 5
+                  t297 <- rdU scalars ((6 * (truncate t292)) + 5)
+                  t298 <- rdU scalars ((6 * (truncate t292)) + 2)
                   let !t299 = (t36 + t298)
                   let !t300 = (s272 + (negate t294))
                   let !t301 = (t33 + (negate t295))
@@ -595,8 +663,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !t308 = ((abs s305) - 1.0)
     let !t309 = (if (negate t308) > 0 then 0.0 else t308)
     if ((t35 + t37) - (sqrt ((t307 * t307) + (t309 * t309)))) > 0 then do
-      t310 <- rdI meta 4
-      t311 <- rdI meta 5
+      t310 <- rdU meta 4
+      t311 <- rdU meta 5
       let !s312 = (floorF (s304 / t311))
       let !s313 = (floorF (t33 / t311))
       let !s314 = (floorF (s305 / t311))
@@ -612,19 +680,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s321 = (((((s318 + 131072.0) * 262144.0) + (s319 + 131072.0)) * 262144.0) + (s320 + 131072.0))
             let !t322 = (((s318 * 7.3856093e7) + (s319 * 1.9349663e7)) + (s320 * 8.3492791e7))
             let !s323 = (t322 - (t310 * (floorF (t322 / t310))))
-            t324 <- rdI grid (truncate s323)
-            t325 <- rdI grid ((truncate t310) + (truncate s323))
+            chkI grid (truncate s323) 0 0
+            t324 <- rdU grid (truncate s323)
+            chkI grid ((truncate t310) + (truncate s323)) 0 0
+            t325 <- rdU grid ((truncate t310) + (truncate s323))
             loopI t325 t324 $ \i326 -> do
               let !d326 = fromIntegral i326 :: Double
-              t327 <- rdI items i326
-              t328 <- rdI cellOf (truncate t327)
+              chkI items i326 0 0
+              t327 <- rdU items i326
+              chkI cellOf (truncate t327) 0 0
+              t328 <- rdU cellOf (truncate t327)
               if (0.5 - (abs (t328 - s321))) > 0 then do
                 if ((t327 - d31) + 0.5) > 0 then do
-                  t329 <- rdI pos (3 * (truncate t327))
-                  t330 <- rdI pos ((3 * (truncate t327)) + 1)
-                  t331 <- rdI pos ((3 * (truncate t327)) + 2)
-                  t332 <- rdI scalars ((6 * (truncate t327)) + 5)
-                  t333 <- rdI scalars ((6 * (truncate t327)) + 2)
+                  chkI pos (3 * (truncate t327)) 0 2
+                  t329 <- rdU pos (3 * (truncate t327))
+                  t330 <- rdU pos ((3 * (truncate t327)) + 1)
+                  t331 <- rdU pos ((3 * (truncate t327)) + 2)
+                  chkI scalars (6 * (truncate t327)) 2 5
+                  t332 <- rdU scalars ((6 * (truncate t327)) + 5)
+                  t333 <- rdU scalars ((6 * (truncate t327)) + 2)
                   let !t334 = (t36 + t333)
                   let !t335 = (s304 + (negate t329))
                   let !t336 = (t33 + (negate t330))
@@ -648,16 +722,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t339 <- rdI verts (3 * (97 * i31))
-    t340 <- rdI verts ((3 * (97 * i31)) + 1)
-    t341 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t339 <- rdU verts (3 * (97 * i31))
+    t340 <- rdU verts ((3 * (97 * i31)) + 1)
+    t341 <- rdU verts ((3 * (97 * i31)) + 2)
     v342 <- newR 1.0
     loopI 0.0 24.0 $ \i343 -> do
       let !d343 = fromIntegral i343 :: Double
-      t344 <- rdI verts (3 * ((((97 * i31) + 1) + (i343 * 4)) + 3))
-      t345 <- rdI verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 1)
-      t346 <- rdI verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 2)
-      t347 <- rdI radii ((24 * i31) + i343)
+      chkI verts (3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) 0 2
+      t344 <- rdU verts (3 * ((((97 * i31) + 1) + (i343 * 4)) + 3))
+      t345 <- rdU verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 1)
+      t346 <- rdU verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i343) 0 0
+      t347 <- rdU radii ((24 * i31) + i343)
       t348 <- getR v342
       let !t349 = (t344 + (negate t339))
       let !t350 = (t345 + (negate t340))
@@ -676,27 +753,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v360 <- newR 0.0
       loopI 0.0 24.0 $ \i361 -> do
         let !d361 = fromIntegral i361 :: Double
-        t362 <- rdI radii ((24 * i31) + i361)
+        chkI radii ((24 * i31) + i361) 0 0
+        t362 <- rdU radii ((24 * i31) + i361)
         loopI 6.0 12.0 $ \i363 -> do
           let !d363 = fromIntegral i363 :: Double
           let !t364 = (d361 + d363)
-          t365 <- rdI radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0)))))) 0 0
+          t365 <- rdU radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0))))))
           loopI 1.0 4.0 $ \i366 -> do
             let !d366 = fromIntegral i366 :: Double
-            t367 <- rdI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1)))
-            t368 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 1)
-            t369 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 2)
-            t370 <- rdI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + i366))
-            t371 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 1)
-            t372 <- rdI verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) 0 2
+            t367 <- rdU verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1)))
+            t368 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 1)
+            t369 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) 0 2
+            t370 <- rdU verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + i366))
+            t371 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 1)
+            t372 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 2)
             loopI 1.0 4.0 $ \i373 -> do
               let !d373 = fromIntegral i373 :: Double
-              t374 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))))
-              t375 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 1.0))
-              t376 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 2.0))
-              t377 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)))
-              t378 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 1.0))
-              t379 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0)))) 0 0
+              t374 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 1.0)) 0 0
+              t375 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 2.0)) 0 0
+              t376 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373))) 0 0
+              t377 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 1.0)) 0 0
+              t378 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 2.0)) 0 0
+              t379 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 2.0))
               t380 <- getR v354
               let !t381 = (negate t374)
               let !t382 = (t377 + t381)
@@ -736,12 +823,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t416 = ((0.3 * ((if (t365 - t362) > 0 then t362 else t365) / 4.0)) - (sqrt (((t413 * t413) + (t414 * t414)) + (t415 * t415))))
               if (if (t412 - t416) > 0 then t416 else t412) > 0 then do
                 setR v354 (0.5 * ((t362 - ((t362 * (d366 + t409)) / 4.0)) + (t365 - ((t365 * (d373 + t411)) / 4.0))))
-                t417 <- rdI verts (3 * (((97 * i31) + 1) + (i361 * 4)))
-                t418 <- rdI verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 1)
-                t419 <- rdI verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 2)
-                t420 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))))
-                t421 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0))
-                t422 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i361 * 4))) 0 2
+                t417 <- rdU verts (3 * (((97 * i31) + 1) + (i361 * 4)))
+                t418 <- rdU verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 1)
+                t419 <- rdU verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)))) 0 0
+                t420 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t421 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t422 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0))
                 setR v355 (t367 + (t409 * t388))
                 setR v356 (t368 + (t409 * t389))
                 setR v357 (t369 + (t409 * t390))
@@ -780,89 +871,98 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s444 = (t443 * t438)
         let !s445 = (t443 * t441)
         let !s446 = (t443 * t440)
-        t447 <- rdI meta 2
-        t448 <- rdI meta 3
+        t447 <- rdU meta 2
+        t448 <- rdU meta 3
         if (((8.0 * (if (1.0 - t448) > 0 then 1.0 else t448)) - t447) - 0.5) > 0 then do
-          wrI meta 2 (t447 + 1.0)
-          t449 <- rdI pos (3 * i31)
-          t450 <- rdI pos ((3 * i31) + 1)
-          t451 <- rdI pos ((3 * i31) + 2)
-          t452 <- rdI normal (3 * i31)
-          t453 <- rdI normal ((3 * i31) + 1)
-          t454 <- rdI normal ((3 * i31) + 2)
-          t455 <- rdI axis (3 * i31)
-          t456 <- rdI axis ((3 * i31) + 1)
-          t457 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t447 + 1.0)
+          t449 <- rdU pos (3 * i31)
+          t450 <- rdU pos ((3 * i31) + 1)
+          t451 <- rdU pos ((3 * i31) + 2)
+          chkI normal (3 * i31) 0 2
+          t452 <- rdU normal (3 * i31)
+          t453 <- rdU normal ((3 * i31) + 1)
+          t454 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t455 <- rdU axis (3 * i31)
+          t456 <- rdU axis ((3 * i31) + 1)
+          t457 <- rdU axis ((3 * i31) + 2)
           let !s458 = ((t453 * t457) - (t454 * t456))
           let !s459 = ((t454 * t455) - (t452 * t457))
           let !s460 = ((t452 * t456) - (t453 * t455))
-          t461 <- rdI scalars (6 * i31)
-          t462 <- rdI scalars ((6 * i31) + 5)
-          t463 <- rdI scalars ((6 * i31) + 2)
-          t464 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t447)) d31
-          wrI contacts ((30 * (truncate t447)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t447)) + 2) d31
-          wrI contacts ((30 * (truncate t447)) + 3) 12.0
-          wrI contacts ((30 * (truncate t447)) + 4) (s444 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t452)))
-          wrI contacts (((30 * (truncate t447)) + 4) + 1) (s445 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t453)))
-          wrI contacts (((30 * (truncate t447)) + 4) + 2) (s446 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t454)))
-          wrI contacts ((30 * (truncate t447)) + 7) 0.0
-          wrI contacts ((30 * (truncate t447)) + 12) 0.0
-          wrI contacts (((30 * (truncate t447)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t447)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t447)) + 15) 0.0
-          wrI contacts ((30 * (truncate t447)) + 20) t434
-          wrI contacts ((30 * (truncate t447)) + 26) 0.6
-          wrI contacts ((30 * (truncate t447)) + 27) t435
-          wrI contacts (((30 * (truncate t447)) + 27) + 1) t436
-          wrI contacts (((30 * (truncate t447)) + 27) + 2) t437
+          chkI scalars (6 * i31) 0 0
+          t461 <- rdU scalars (6 * i31)
+          t462 <- rdU scalars ((6 * i31) + 5)
+          t463 <- rdU scalars ((6 * i31) + 2)
+          t464 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t447)) 0 29
+          wrU contacts (30 * (truncate t447)) d31
+          wrU contacts ((30 * (truncate t447)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t447)) + 2) d31
+          wrU contacts ((30 * (truncate t447)) + 3) 12.0
+          wrU contacts ((30 * (truncate t447)) + 4) (s444 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t452)))
+          wrU contacts ((30 * (truncate t447)) + 5) (s445 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t453)))
+          wrU contacts ((30 * (truncate t447)) + 6) (s446 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t454)))
+          wrU contacts ((30 * (truncate t447)) + 7) 0.0
+          wrU contacts ((30 * (truncate t447)) + 12) 0.0
+          wrU contacts ((30 * (truncate t447)) + 13) 0.0
+          wrU contacts ((30 * (truncate t447)) + 14) 0.0
+          wrU contacts ((30 * (truncate t447)) + 15) 0.0
+          wrU contacts ((30 * (truncate t447)) + 20) t434
+          wrU contacts ((30 * (truncate t447)) + 26) 0.6
+          wrU contacts ((30 * (truncate t447)) + 27) t435
+          wrU contacts ((30 * (truncate t447)) + 28) t436
+          wrU contacts ((30 * (truncate t447)) + 29) t437
           if (-0.5) > 0 then do
-            t465 <- rdI pos (-3)
-            t466 <- rdI pos (-2)
-            t467 <- rdI pos (-1)
-            t468 <- rdI normal (-3)
-            t469 <- rdI normal (-2)
-            t470 <- rdI normal (-1)
-            t471 <- rdI axis (-3)
-            t472 <- rdI axis (-2)
-            t473 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t465 <- rdU pos (-3)
+            t466 <- rdU pos (-2)
+            t467 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t468 <- rdU normal (-3)
+            t469 <- rdU normal (-2)
+            t470 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t471 <- rdU axis (-3)
+            t472 <- rdU axis (-2)
+            t473 <- rdU axis (-1)
             let !s474 = ((t469 * t473) - (t470 * t472))
             let !s475 = ((t470 * t471) - (t468 * t473))
             let !s476 = ((t468 * t472) - (t469 * t471))
-            t477 <- rdI scalars (-6)
-            t478 <- rdI scalars (-1)
-            t479 <- rdI scalars (-4)
-            t480 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t447)) + 8) (s444 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t468)))
-            wrI contacts (((30 * (truncate t447)) + 8) + 1) (s445 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t469)))
-            wrI contacts (((30 * (truncate t447)) + 8) + 2) (s446 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t470)))
+            chkI scalars 0 (-6) (-1)
+            t477 <- rdU scalars (-6)
+            t478 <- rdU scalars (-1)
+            t479 <- rdU scalars (-4)
+            t480 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t447)) + 8) (s444 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t468)))
+            wrU contacts ((30 * (truncate t447)) + 9) (s445 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t469)))
+            wrU contacts ((30 * (truncate t447)) + 10) (s446 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t470)))
             let !t481 = (t436 + (negate t466))
             let !t482 = (t437 + (negate t467))
             let !t483 = (t435 + (negate t465))
-            wrI contacts ((30 * (truncate t447)) + 11) (((((t481 * s446) - (t482 * s445)) * t468) + (((t482 * s444) - (t483 * s446)) * t469)) + (((t483 * s445) - (t481 * s444)) * t470))
+            wrU contacts ((30 * (truncate t447)) + 11) (((((t481 * s446) - (t482 * s445)) * t468) + (((t482 * s444) - (t483 * s446)) * t469)) + (((t483 * s445) - (t481 * s444)) * t470))
             let !t484 = ((t453 * s446) - (t454 * s445))
-            wrI contacts ((30 * (truncate t447)) + 16) (t484 + (negate ((((t468 * t484) + (t469 * ((t454 * s444) - (t452 * s446)))) + (t470 * ((t452 * s445) - (t453 * s444)))) * t468)))
+            wrU contacts ((30 * (truncate t447)) + 16) (t484 + (negate ((((t468 * t484) + (t469 * ((t454 * s444) - (t452 * s446)))) + (t470 * ((t452 * s445) - (t453 * s444)))) * t468)))
             let !t485 = ((t454 * s444) - (t452 * s446))
-            wrI contacts (((30 * (truncate t447)) + 16) + 1) (t485 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * ((t452 * s445) - (t453 * s444)))) * t469)))
+            wrU contacts ((30 * (truncate t447)) + 17) (t485 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * ((t452 * s445) - (t453 * s444)))) * t469)))
             let !t486 = ((t452 * s445) - (t453 * s444))
-            wrI contacts (((30 * (truncate t447)) + 16) + 2) (t486 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * t486)) * t470)))
-            wrI contacts ((30 * (truncate t447)) + 19) (((((t481 * t486) - (t482 * t485)) * t468) + (((t482 * t484) - (t483 * t486)) * t469)) + (((t483 * t485) - (t481 * t484)) * t470))
+            wrU contacts ((30 * (truncate t447)) + 18) (t486 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * t486)) * t470)))
+            wrU contacts ((30 * (truncate t447)) + 19) (((((t481 * t486) - (t482 * t485)) * t468) + (((t482 * t484) - (t483 * t486)) * t469)) + (((t483 * t485) - (t481 * t484)) * t470))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t447)) + 8) 0.0
-            wrI contacts (((30 * (truncate t447)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t447)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t447)) + 11) 0.0
-            wrI contacts ((30 * (truncate t447)) + 16) 0.0
-            wrI contacts (((30 * (truncate t447)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t447)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t447)) + 19) 0.0
+            wrU contacts ((30 * (truncate t447)) + 8) 0.0
+            wrU contacts ((30 * (truncate t447)) + 9) 0.0
+            wrU contacts ((30 * (truncate t447)) + 10) 0.0
+            wrU contacts ((30 * (truncate t447)) + 11) 0.0
+            wrU contacts ((30 * (truncate t447)) + 16) 0.0
+            wrU contacts ((30 * (truncate t447)) + 17) 0.0
+            wrU contacts ((30 * (truncate t447)) + 18) 0.0
+            wrU contacts ((30 * (truncate t447)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t487 <- rdI meta 6
-          wrI meta 6 (t487 + 1.0)
+          chkI meta 0 6 6
+          t487 <- rdU meta 6
+          wrU meta 6 (t487 + 1.0)
           pure ()
         pure ()
       else do
@@ -875,44 +975,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -920,12 +1025,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -933,20 +1039,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -957,19 +1066,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -977,98 +1089,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1143,9 +1267,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdI mouse 4
-      t213 <- rdI mouse 5
-      t214 <- rdI mouse 6
+      t212 <- rdU mouse 4
+      t213 <- rdU mouse 5
+      t214 <- rdU mouse 6
       let !t215 = (t212 - ((floorF ((t212 + 1.0) / 2.0)) * 2.0))
       let !t216 = (negate s199)
       let !t217 = (t215 + t216)
@@ -1192,9 +1316,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t258 = ((if t257 > 0 then t256 else t255) - (t252 + t240))
       let !s259 = (if t258 > 0 then t250 else (if t257 > 0 then t250 else (if t254 > 0 then t250 else (if t248 > 0 then t215 else (if t245 > 0 then t215 else (if t242 > 0 then t226 else (if t236 > 0 then t226 else (if t233 > 0 then t226 else t215))))))))
       let !s260 = (if t258 > 0 then t238 else (if t257 > 0 then t221 else (if t254 > 0 then t229 else (if t248 > 0 then t238 else (if t245 > 0 then t229 else (if t242 > 0 then t238 else (if t236 > 0 then t221 else (if t233 > 0 then t229 else t221))))))))
-      t261 <- rdI mouse 7
-      t262 <- rdI mouse 8
-      t263 <- rdI mouse 9
+      t261 <- rdU mouse 7
+      t262 <- rdU mouse 8
+      t263 <- rdU mouse 9
       let !t264 = (recip t101)
       let !t265 = (6.283185307179586 * t261)
       let !s266 = (recip (t103 * ((((2.0 * t264) * t262) * t265) + (t103 * ((t264 * t265) * t265)))))
@@ -1205,28 +1329,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s271 = (s199 + (negate s259))
       let !s272 = (s200 + (negate t213))
       let !s273 = (s201 + (negate s260))
-      t274 <- rdI mouse 10
-      t275 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t276 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t277 <- rdI vel (3 * (truncate t100))
-      t278 <- rdI vel ((3 * (truncate t100)) + 1)
-      t279 <- rdI vel ((3 * (truncate t100)) + 2)
-      t280 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t277 + ((t275 * t274) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t278 + ((t275 * t274) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t279 + ((t275 * t274) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t280 + ((t276 * t274) * (((((s269 * t112) - (s270 * t111)) * t107) + (((s270 * t110) - (s268 * t112)) * t108)) + (((s268 * t111) - (s269 * t110)) * t109))))
-      t281 <- rdI mouse 11
-      t282 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t283 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t284 <- rdI vel (3 * (truncate t100))
-      t285 <- rdI vel ((3 * (truncate t100)) + 1)
-      t286 <- rdI vel ((3 * (truncate t100)) + 2)
-      t287 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t284 + ((t282 * t281) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s269 * s115) - (s270 * s114)) * t107) + (((s270 * s113) - (s268 * s115)) * t108)) + (((s268 * s114) - (s269 * s113)) * t109))))
+      t274 <- rdU mouse 10
+      t275 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t276 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t277 <- rdU vel (3 * (truncate t100))
+      t278 <- rdU vel ((3 * (truncate t100)) + 1)
+      t279 <- rdU vel ((3 * (truncate t100)) + 2)
+      t280 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t277 + ((t275 * t274) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t278 + ((t275 * t274) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t279 + ((t275 * t274) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t280 + ((t276 * t274) * (((((s269 * t112) - (s270 * t111)) * t107) + (((s270 * t110) - (s268 * t112)) * t108)) + (((s268 * t111) - (s269 * t110)) * t109))))
+      t281 <- rdU mouse 11
+      t282 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t283 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t284 <- rdU vel (3 * (truncate t100))
+      t285 <- rdU vel ((3 * (truncate t100)) + 1)
+      t286 <- rdU vel ((3 * (truncate t100)) + 2)
+      t287 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t284 + ((t282 * t281) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s269 * s115) - (s270 * s114)) * t107) + (((s270 * s113) - (s268 * s115)) * t108)) + (((s268 * s114) - (s269 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -1237,38 +1362,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d288 = fromIntegral i288 :: Double
     loopI 0.0 t9 $ \i289 -> do
       let !d289 = fromIntegral i289 :: Double
-      t290 <- rdI contacts (30 * i289)
-      t291 <- rdI contacts ((30 * i289) + 1)
-      t292 <- rdI contacts ((30 * i289) + 12)
-      t293 <- rdI contacts (((30 * i289) + 12) + 1)
-      t294 <- rdI contacts (((30 * i289) + 12) + 2)
-      t295 <- rdI contacts ((30 * i289) + 15)
-      t296 <- rdI contacts ((30 * i289) + 16)
-      t297 <- rdI contacts (((30 * i289) + 16) + 1)
-      t298 <- rdI contacts (((30 * i289) + 16) + 2)
-      t299 <- rdI contacts ((30 * i289) + 19)
-      t300 <- rdI contacts ((30 * i289) + 4)
-      t301 <- rdI contacts (((30 * i289) + 4) + 1)
-      t302 <- rdI contacts (((30 * i289) + 4) + 2)
-      t303 <- rdI contacts ((30 * i289) + 7)
-      t304 <- rdI contacts ((30 * i289) + 8)
-      t305 <- rdI contacts (((30 * i289) + 8) + 1)
-      t306 <- rdI contacts (((30 * i289) + 8) + 2)
-      t307 <- rdI contacts ((30 * i289) + 11)
-      t308 <- rdI contacts ((30 * i289) + 26)
-      t309 <- rdI contacts ((30 * i289) + 24)
-      t310 <- rdI contacts ((30 * i289) + 25)
-      t311 <- rdI contacts ((30 * i289) + 22)
-      t312 <- rdI vel (3 * (truncate t290))
-      t313 <- rdI vel ((3 * (truncate t290)) + 1)
-      t314 <- rdI vel ((3 * (truncate t290)) + 2)
-      t315 <- rdI scalars ((6 * (truncate t290)) + 1)
+      chkI contacts (30 * i289) 0 26
+      t290 <- rdU contacts (30 * i289)
+      t291 <- rdU contacts ((30 * i289) + 1)
+      t292 <- rdU contacts ((30 * i289) + 12)
+      t293 <- rdU contacts ((30 * i289) + 13)
+      t294 <- rdU contacts ((30 * i289) + 14)
+      t295 <- rdU contacts ((30 * i289) + 15)
+      t296 <- rdU contacts ((30 * i289) + 16)
+      t297 <- rdU contacts ((30 * i289) + 17)
+      t298 <- rdU contacts ((30 * i289) + 18)
+      t299 <- rdU contacts ((30 * i289) + 19)
+      t300 <- rdU contacts ((30 * i289) + 4)
+      t301 <- rdU contacts ((30 * i289) + 5)
+      t302 <- rdU contacts ((30 * i289) + 6)
+      t303 <- rdU contacts ((30 * i289) + 7)
+      t304 <- rdU contacts ((30 * i289) + 8)
+      t305 <- rdU contacts ((30 * i289) + 9)
+      t306 <- rdU contacts ((30 * i289) + 10)
+      t307 <- rdU contacts ((30 * i289) + 11)
+      t308 <- rdU contacts ((30 * i289) + 26)
+      t309 <- rdU contacts ((30 * i289) + 24)
+      t310 <- rdU contacts ((30 * i289) + 25)
+      t311 <- rdU contacts ((30 * i289) + 22)
+      chkI vel (3 * (truncate t290)) 0 2
+      t312 <- rdU vel (3 * (truncate t290))
+      t313 <- rdU vel ((3 * (truncate t290)) + 1)
+      t314 <- rdU vel ((3 * (truncate t290)) + 2)
+      chkI scalars (6 * (truncate t290)) 1 3
+      t315 <- rdU scalars ((6 * (truncate t290)) + 1)
       v316 <- newR 0.0
       if (t291 + 0.5) > 0 then do
-        t317 <- rdI vel (3 * (truncate t291))
-        t318 <- rdI vel ((3 * (truncate t291)) + 1)
-        t319 <- rdI vel ((3 * (truncate t291)) + 2)
-        t320 <- rdI scalars ((6 * (truncate t291)) + 1)
+        chkI vel (3 * (truncate t291)) 0 2
+        t317 <- rdU vel (3 * (truncate t291))
+        t318 <- rdU vel ((3 * (truncate t291)) + 1)
+        t319 <- rdU vel ((3 * (truncate t291)) + 2)
+        chkI scalars (6 * (truncate t291)) 1 1
+        t320 <- rdU scalars ((6 * (truncate t291)) + 1)
         setR v316 ((((t296 * t317) + (t297 * t318)) + (t298 * t319)) + (t299 * t320))
         pure ()
       else do
@@ -1281,43 +1411,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t326 = (if (t325 - t323) > 0 then t323 else t325)
       let !t327 = (if (t324 - t326) > 0 then t324 else t326)
       let !s328 = (if (1.0 - (abs (t327 - t327))) > 0 then t327 else 0.0)
-      wrI contacts ((30 * i289) + 25) s328
-      t329 <- rdI scalars ((6 * (truncate t290)) + 2)
-      t330 <- rdI scalars ((6 * (truncate t290)) + 3)
-      t331 <- rdI vel (3 * (truncate t290))
-      t332 <- rdI vel ((3 * (truncate t290)) + 1)
-      t333 <- rdI vel ((3 * (truncate t290)) + 2)
-      t334 <- rdI scalars ((6 * (truncate t290)) + 1)
-      wrI vel (3 * (truncate t290)) (t331 + ((t329 * (s328 - t310)) * t292))
-      wrI vel ((3 * (truncate t290)) + 1) (t332 + ((t329 * (s328 - t310)) * t293))
-      wrI vel ((3 * (truncate t290)) + 2) (t333 + ((t329 * (s328 - t310)) * t294))
-      wrI scalars ((6 * (truncate t290)) + 1) (t334 + ((t330 * (s328 - t310)) * t295))
+      wrU contacts ((30 * i289) + 25) s328
+      t329 <- rdU scalars ((6 * (truncate t290)) + 2)
+      t330 <- rdU scalars ((6 * (truncate t290)) + 3)
+      t331 <- rdU vel (3 * (truncate t290))
+      t332 <- rdU vel ((3 * (truncate t290)) + 1)
+      t333 <- rdU vel ((3 * (truncate t290)) + 2)
+      t334 <- rdU scalars ((6 * (truncate t290)) + 1)
+      wrU vel (3 * (truncate t290)) (t331 + ((t329 * (s328 - t310)) * t292))
+      wrU vel ((3 * (truncate t290)) + 1) (t332 + ((t329 * (s328 - t310)) * t293))
+      wrU vel ((3 * (truncate t290)) + 2) (t333 + ((t329 * (s328 - t310)) * t294))
+      wrU scalars ((6 * (truncate t290)) + 1) (t334 + ((t330 * (s328 - t310)) * t295))
       if (t291 + 0.5) > 0 then do
-        t335 <- rdI scalars ((6 * (truncate t291)) + 2)
-        t336 <- rdI scalars ((6 * (truncate t291)) + 3)
-        t337 <- rdI vel (3 * (truncate t291))
-        t338 <- rdI vel ((3 * (truncate t291)) + 1)
-        t339 <- rdI vel ((3 * (truncate t291)) + 2)
-        t340 <- rdI scalars ((6 * (truncate t291)) + 1)
-        wrI vel (3 * (truncate t291)) (t337 + ((t335 * (negate (s328 - t310))) * t296))
-        wrI vel ((3 * (truncate t291)) + 1) (t338 + ((t335 * (negate (s328 - t310))) * t297))
-        wrI vel ((3 * (truncate t291)) + 2) (t339 + ((t335 * (negate (s328 - t310))) * t298))
-        wrI scalars ((6 * (truncate t291)) + 1) (t340 + ((t336 * (negate (s328 - t310))) * t299))
+        chkI scalars (6 * (truncate t291)) 1 3
+        t335 <- rdU scalars ((6 * (truncate t291)) + 2)
+        t336 <- rdU scalars ((6 * (truncate t291)) + 3)
+        chkI vel (3 * (truncate t291)) 0 2
+        t337 <- rdU vel (3 * (truncate t291))
+        t338 <- rdU vel ((3 * (truncate t291)) + 1)
+        t339 <- rdU vel ((3 * (truncate t291)) + 2)
+        t340 <- rdU scalars ((6 * (truncate t291)) + 1)
+        wrU vel (3 * (truncate t291)) (t337 + ((t335 * (negate (s328 - t310))) * t296))
+        wrU vel ((3 * (truncate t291)) + 1) (t338 + ((t335 * (negate (s328 - t310))) * t297))
+        wrU vel ((3 * (truncate t291)) + 2) (t339 + ((t335 * (negate (s328 - t310))) * t298))
+        wrU scalars ((6 * (truncate t291)) + 1) (t340 + ((t336 * (negate (s328 - t310))) * t299))
         pure ()
       else do
         pure ()
-      t341 <- rdI contacts ((30 * i289) + 21)
-      t342 <- rdI contacts ((30 * i289) + 23)
-      t343 <- rdI vel (3 * (truncate t290))
-      t344 <- rdI vel ((3 * (truncate t290)) + 1)
-      t345 <- rdI vel ((3 * (truncate t290)) + 2)
-      t346 <- rdI scalars ((6 * (truncate t290)) + 1)
+      t341 <- rdU contacts ((30 * i289) + 21)
+      t342 <- rdU contacts ((30 * i289) + 23)
+      t343 <- rdU vel (3 * (truncate t290))
+      t344 <- rdU vel ((3 * (truncate t290)) + 1)
+      t345 <- rdU vel ((3 * (truncate t290)) + 2)
+      t346 <- rdU scalars ((6 * (truncate t290)) + 1)
       v347 <- newR 0.0
       if (t291 + 0.5) > 0 then do
-        t348 <- rdI vel (3 * (truncate t291))
-        t349 <- rdI vel ((3 * (truncate t291)) + 1)
-        t350 <- rdI vel ((3 * (truncate t291)) + 2)
-        t351 <- rdI scalars ((6 * (truncate t291)) + 1)
+        chkI vel (3 * (truncate t291)) 0 2
+        t348 <- rdU vel (3 * (truncate t291))
+        t349 <- rdU vel ((3 * (truncate t291)) + 1)
+        t350 <- rdU vel ((3 * (truncate t291)) + 2)
+        chkI scalars (6 * (truncate t291)) 1 1
+        t351 <- rdU scalars ((6 * (truncate t291)) + 1)
         setR v347 ((((t304 * t348) + (t305 * t349)) + (t306 * t350)) + (t307 * t351))
         pure ()
       else do
@@ -1327,73 +1461,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t354 = (t309 + ((t308 * (t342 - s353)) * t341))
       let !t355 = (if (negate t354) > 0 then 0.0 else t354)
       let !s356 = (if (1.0 - (abs (t355 - t355))) > 0 then t355 else 0.0)
-      wrI contacts ((30 * i289) + 24) s356
-      t357 <- rdI scalars ((6 * (truncate t290)) + 2)
-      t358 <- rdI scalars ((6 * (truncate t290)) + 3)
-      t359 <- rdI vel (3 * (truncate t290))
-      t360 <- rdI vel ((3 * (truncate t290)) + 1)
-      t361 <- rdI vel ((3 * (truncate t290)) + 2)
-      t362 <- rdI scalars ((6 * (truncate t290)) + 1)
-      wrI vel (3 * (truncate t290)) (t359 + ((t357 * (s356 - t309)) * t300))
-      wrI vel ((3 * (truncate t290)) + 1) (t360 + ((t357 * (s356 - t309)) * t301))
-      wrI vel ((3 * (truncate t290)) + 2) (t361 + ((t357 * (s356 - t309)) * t302))
-      wrI scalars ((6 * (truncate t290)) + 1) (t362 + ((t358 * (s356 - t309)) * t303))
+      wrU contacts ((30 * i289) + 24) s356
+      t357 <- rdU scalars ((6 * (truncate t290)) + 2)
+      t358 <- rdU scalars ((6 * (truncate t290)) + 3)
+      t359 <- rdU vel (3 * (truncate t290))
+      t360 <- rdU vel ((3 * (truncate t290)) + 1)
+      t361 <- rdU vel ((3 * (truncate t290)) + 2)
+      t362 <- rdU scalars ((6 * (truncate t290)) + 1)
+      wrU vel (3 * (truncate t290)) (t359 + ((t357 * (s356 - t309)) * t300))
+      wrU vel ((3 * (truncate t290)) + 1) (t360 + ((t357 * (s356 - t309)) * t301))
+      wrU vel ((3 * (truncate t290)) + 2) (t361 + ((t357 * (s356 - t309)) * t302))
+      wrU scalars ((6 * (truncate t290)) + 1) (t362 + ((t358 * (s356 - t309)) * t303))
       if (t291 + 0.5) > 0 then do
-        t363 <- rdI scalars ((6 * (truncate t291)) + 2)
-        t364 <- rdI scalars ((6 * (truncate t291)) + 3)
-        t365 <- rdI vel (3 * (truncate t291))
-        t366 <- rdI vel ((3 * (truncate t291)) + 1)
-        t367 <- rdI vel ((3 * (truncate t291)) + 2)
-        t368 <- rdI scalars ((6 * (truncate t291)) + 1)
-        wrI vel (3 * (truncate t291)) (t365 + ((t363 * (negate (s356 - t309))) * t304))
-        wrI vel ((3 * (truncate t291)) + 1) (t366 + ((t363 * (negate (s356 - t309))) * t305))
-        wrI vel ((3 * (truncate t291)) + 2) (t367 + ((t363 * (negate (s356 - t309))) * t306))
-        wrI scalars ((6 * (truncate t291)) + 1) (t368 + ((t364 * (negate (s356 - t309))) * t307))
+        chkI scalars (6 * (truncate t291)) 1 3
+        t363 <- rdU scalars ((6 * (truncate t291)) + 2)
+        t364 <- rdU scalars ((6 * (truncate t291)) + 3)
+        chkI vel (3 * (truncate t291)) 0 2
+        t365 <- rdU vel (3 * (truncate t291))
+        t366 <- rdU vel ((3 * (truncate t291)) + 1)
+        t367 <- rdU vel ((3 * (truncate t291)) + 2)
+        t368 <- rdU scalars ((6 * (truncate t291)) + 1)
+        wrU vel (3 * (truncate t291)) (t365 + ((t363 * (negate (s356 - t309))) * t304))
+        wrU vel ((3 * (truncate t291)) + 1) (t366 + ((t363 * (negate (s356 - t309))) * t305))
+        wrU vel ((3 * (truncate t291)) + 2) (t367 + ((t363 * (negate (s356 - t309))) * t306))
+        wrU scalars ((6 * (truncate t291)) + 1) (t368 + ((t364 * (negate (s356 - t309))) * t307))
         pure ()
       else do
         pure ()
       pure ()
-    t369 <- rdI mouse 0
+    t369 <- rdU mouse 0
     if t369 > 0 then do
-      t370 <- rdI mouse 1
-      t371 <- rdI scalars ((6 * (truncate t370)) + 2)
+      chkI mouse 0 1 1
+      t370 <- rdU mouse 1
+      chkI scalars (6 * (truncate t370)) 2 2
+      t371 <- rdU scalars ((6 * (truncate t370)) + 2)
       if t371 > 0 then do
-        t372 <- rdI scalars ((6 * (truncate t370)) + 3)
-        t373 <- rdI params 0
-        t374 <- rdI pos (3 * (truncate t370))
-        t375 <- rdI pos ((3 * (truncate t370)) + 1)
-        t376 <- rdI pos ((3 * (truncate t370)) + 2)
-        t377 <- rdI normal (3 * (truncate t370))
-        t378 <- rdI normal ((3 * (truncate t370)) + 1)
-        t379 <- rdI normal ((3 * (truncate t370)) + 2)
-        t380 <- rdI axis (3 * (truncate t370))
-        t381 <- rdI axis ((3 * (truncate t370)) + 1)
-        t382 <- rdI axis ((3 * (truncate t370)) + 2)
+        chkI scalars (6 * (truncate t370)) 0 5
+        t372 <- rdU scalars ((6 * (truncate t370)) + 3)
+        t373 <- rdU params 0
+        chkI pos (3 * (truncate t370)) 0 2
+        t374 <- rdU pos (3 * (truncate t370))
+        t375 <- rdU pos ((3 * (truncate t370)) + 1)
+        t376 <- rdU pos ((3 * (truncate t370)) + 2)
+        chkI normal (3 * (truncate t370)) 0 2
+        t377 <- rdU normal (3 * (truncate t370))
+        t378 <- rdU normal ((3 * (truncate t370)) + 1)
+        t379 <- rdU normal ((3 * (truncate t370)) + 2)
+        chkI axis (3 * (truncate t370)) 0 2
+        t380 <- rdU axis (3 * (truncate t370))
+        t381 <- rdU axis ((3 * (truncate t370)) + 1)
+        t382 <- rdU axis ((3 * (truncate t370)) + 2)
         let !s383 = ((t378 * t382) - (t379 * t381))
         let !s384 = ((t379 * t380) - (t377 * t382))
         let !s385 = ((t377 * t381) - (t378 * t380))
-        t386 <- rdI scalars (6 * (truncate t370))
-        t387 <- rdI scalars ((6 * (truncate t370)) + 5)
-        t388 <- rdI scalars ((6 * (truncate t370)) + 2)
-        t389 <- rdI scalars ((6 * (truncate t370)) + 3)
-        t390 <- rdI pos (3 * (truncate t370))
-        t391 <- rdI pos ((3 * (truncate t370)) + 1)
-        t392 <- rdI pos ((3 * (truncate t370)) + 2)
-        t393 <- rdI normal (3 * (truncate t370))
-        t394 <- rdI normal ((3 * (truncate t370)) + 1)
-        t395 <- rdI normal ((3 * (truncate t370)) + 2)
-        t396 <- rdI axis (3 * (truncate t370))
-        t397 <- rdI axis ((3 * (truncate t370)) + 1)
-        t398 <- rdI axis ((3 * (truncate t370)) + 2)
+        t386 <- rdU scalars (6 * (truncate t370))
+        t387 <- rdU scalars ((6 * (truncate t370)) + 5)
+        t388 <- rdU scalars ((6 * (truncate t370)) + 2)
+        t389 <- rdU scalars ((6 * (truncate t370)) + 3)
+        t390 <- rdU pos (3 * (truncate t370))
+        t391 <- rdU pos ((3 * (truncate t370)) + 1)
+        t392 <- rdU pos ((3 * (truncate t370)) + 2)
+        t393 <- rdU normal (3 * (truncate t370))
+        t394 <- rdU normal ((3 * (truncate t370)) + 1)
+        t395 <- rdU normal ((3 * (truncate t370)) + 2)
+        t396 <- rdU axis (3 * (truncate t370))
+        t397 <- rdU axis ((3 * (truncate t370)) + 1)
+        t398 <- rdU axis ((3 * (truncate t370)) + 2)
         let !s399 = ((t394 * t398) - (t395 * t397))
         let !s400 = ((t395 * t396) - (t393 * t398))
         let !s401 = ((t393 * t397) - (t394 * t396))
-        t402 <- rdI scalars (6 * (truncate t370))
-        t403 <- rdI scalars ((6 * (truncate t370)) + 5)
-        t404 <- rdI scalars ((6 * (truncate t370)) + 2)
-        t405 <- rdI scalars ((6 * (truncate t370)) + 3)
-        t406 <- rdI mouse 2
-        t407 <- rdI mouse 3
+        t402 <- rdU scalars (6 * (truncate t370))
+        t403 <- rdU scalars ((6 * (truncate t370)) + 5)
+        t404 <- rdU scalars ((6 * (truncate t370)) + 2)
+        t405 <- rdU scalars ((6 * (truncate t370)) + 3)
+        chkI mouse 0 2 11
+        t406 <- rdU mouse 2
+        t407 <- rdU mouse 3
         let !t408 = (t406 / 4.0)
         let !t409 = (if (abs t408) > 0 then 1.0 else 0.0)
         let !t410 = (t402 + t407)
@@ -1468,9 +1611,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s479 = ((t409 * (t472 * (t478 * t473))) + (t413 * s463))
         let !s480 = ((t409 * (t472 * (t478 * t475))) + (t413 * s464))
         let !s481 = ((t409 * (t472 * (t478 * t476))) + (t413 * s465))
-        t482 <- rdI mouse 4
-        t483 <- rdI mouse 5
-        t484 <- rdI mouse 6
+        t482 <- rdU mouse 4
+        t483 <- rdU mouse 5
+        t484 <- rdU mouse 6
         let !t485 = (t482 - ((floorF ((t482 + 1.0) / 2.0)) * 2.0))
         let !t486 = (negate s469)
         let !t487 = (t485 + t486)
@@ -1517,9 +1660,9 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t528 = ((if t527 > 0 then t526 else t525) - (t522 + t510))
         let !s529 = (if t528 > 0 then t520 else (if t527 > 0 then t520 else (if t524 > 0 then t520 else (if t518 > 0 then t485 else (if t515 > 0 then t485 else (if t512 > 0 then t496 else (if t506 > 0 then t496 else (if t503 > 0 then t496 else t485))))))))
         let !s530 = (if t528 > 0 then t508 else (if t527 > 0 then t491 else (if t524 > 0 then t499 else (if t518 > 0 then t508 else (if t515 > 0 then t499 else (if t512 > 0 then t508 else (if t506 > 0 then t491 else (if t503 > 0 then t499 else t491))))))))
-        t531 <- rdI mouse 7
-        t532 <- rdI mouse 8
-        t533 <- rdI mouse 9
+        t531 <- rdU mouse 7
+        t532 <- rdU mouse 8
+        t533 <- rdU mouse 9
         let !t534 = (recip t371)
         let !t535 = (6.283185307179586 * t531)
         let !s536 = (recip (t373 * ((((2.0 * t534) * t532) * t535) + (t373 * ((t534 * t535) * t535)))))
@@ -1530,11 +1673,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s541 = (s469 + (negate s529))
         let !s542 = (s470 + (negate t483))
         let !s543 = (s471 + (negate s530))
-        t544 <- rdI mouse 10
-        t545 <- rdI vel (3 * (truncate t370))
-        t546 <- rdI vel ((3 * (truncate t370)) + 1)
-        t547 <- rdI vel ((3 * (truncate t370)) + 2)
-        t548 <- rdI scalars ((6 * (truncate t370)) + 1)
+        t544 <- rdU mouse 10
+        chkI vel (3 * (truncate t370)) 0 2
+        t545 <- rdU vel (3 * (truncate t370))
+        t546 <- rdU vel ((3 * (truncate t370)) + 1)
+        t547 <- rdU vel ((3 * (truncate t370)) + 2)
+        t548 <- rdU scalars ((6 * (truncate t370)) + 1)
         let !t549 = (t533 * t373)
         let !t550 = (negate t549)
         let !t551 = (((((s539 * t382) - (s540 * t381)) * t377) + (((s540 * t380) - (s538 * t382)) * t378)) + (((s538 * t381) - (s539 * t380)) * t379))
@@ -1542,38 +1686,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t553 = (if (t552 - t549) > 0 then t549 else t552)
         let !t554 = (if (t550 - t553) > 0 then t550 else t553)
         let !s555 = (if (1.0 - (abs (t554 - t554))) > 0 then t554 else 0.0)
-        wrI mouse 10 s555
-        t556 <- rdI scalars ((6 * (truncate t370)) + 2)
-        t557 <- rdI scalars ((6 * (truncate t370)) + 3)
-        t558 <- rdI vel (3 * (truncate t370))
-        t559 <- rdI vel ((3 * (truncate t370)) + 1)
-        t560 <- rdI vel ((3 * (truncate t370)) + 2)
-        t561 <- rdI scalars ((6 * (truncate t370)) + 1)
-        wrI vel (3 * (truncate t370)) (t558 + ((t556 * (s555 - t544)) * t380))
-        wrI vel ((3 * (truncate t370)) + 1) (t559 + ((t556 * (s555 - t544)) * t381))
-        wrI vel ((3 * (truncate t370)) + 2) (t560 + ((t556 * (s555 - t544)) * t382))
-        wrI scalars ((6 * (truncate t370)) + 1) (t561 + ((t557 * (s555 - t544)) * t551))
-        t562 <- rdI mouse 11
-        t563 <- rdI vel (3 * (truncate t370))
-        t564 <- rdI vel ((3 * (truncate t370)) + 1)
-        t565 <- rdI vel ((3 * (truncate t370)) + 2)
-        t566 <- rdI scalars ((6 * (truncate t370)) + 1)
+        wrU mouse 10 s555
+        t556 <- rdU scalars ((6 * (truncate t370)) + 2)
+        t557 <- rdU scalars ((6 * (truncate t370)) + 3)
+        t558 <- rdU vel (3 * (truncate t370))
+        t559 <- rdU vel ((3 * (truncate t370)) + 1)
+        t560 <- rdU vel ((3 * (truncate t370)) + 2)
+        t561 <- rdU scalars ((6 * (truncate t370)) + 1)
+        wrU vel (3 * (truncate t370)) (t558 + ((t556 * (s555 - t544)) * t380))
+        wrU vel ((3 * (truncate t370)) + 1) (t559 + ((t556 * (s555 - t544)) * t381))
+        wrU vel ((3 * (truncate t370)) + 2) (t560 + ((t556 * (s555 - t544)) * t382))
+        wrU scalars ((6 * (truncate t370)) + 1) (t561 + ((t557 * (s555 - t544)) * t551))
+        t562 <- rdU mouse 11
+        t563 <- rdU vel (3 * (truncate t370))
+        t564 <- rdU vel ((3 * (truncate t370)) + 1)
+        t565 <- rdU vel ((3 * (truncate t370)) + 2)
+        t566 <- rdU scalars ((6 * (truncate t370)) + 1)
         let !t567 = (((((s539 * s385) - (s540 * s384)) * t377) + (((s540 * s383) - (s538 * s385)) * t378)) + (((s538 * s384) - (s539 * s383)) * t379))
         let !t568 = (t562 + ((negate ((((((s383 * t563) + (s384 * t564)) + (s385 * t565)) + (t567 * t566)) + (s537 * (((s541 * s383) + (s542 * s384)) + (s543 * s385)))) + (s536 * t562))) / (((t371 * (((s383 * s383) + (s384 * s384)) + (s385 * s385))) + ((t372 * t567) * t567)) + s536)))
         let !t569 = (if (t568 - t549) > 0 then t549 else t568)
         let !t570 = (if (t550 - t569) > 0 then t550 else t569)
         let !s571 = (if (1.0 - (abs (t570 - t570))) > 0 then t570 else 0.0)
-        wrI mouse 11 s571
-        t572 <- rdI scalars ((6 * (truncate t370)) + 2)
-        t573 <- rdI scalars ((6 * (truncate t370)) + 3)
-        t574 <- rdI vel (3 * (truncate t370))
-        t575 <- rdI vel ((3 * (truncate t370)) + 1)
-        t576 <- rdI vel ((3 * (truncate t370)) + 2)
-        t577 <- rdI scalars ((6 * (truncate t370)) + 1)
-        wrI vel (3 * (truncate t370)) (t574 + ((t572 * (s571 - t562)) * s383))
-        wrI vel ((3 * (truncate t370)) + 1) (t575 + ((t572 * (s571 - t562)) * s384))
-        wrI vel ((3 * (truncate t370)) + 2) (t576 + ((t572 * (s571 - t562)) * s385))
-        wrI scalars ((6 * (truncate t370)) + 1) (t577 + ((t573 * (s571 - t562)) * t567))
+        wrU mouse 11 s571
+        t572 <- rdU scalars ((6 * (truncate t370)) + 2)
+        t573 <- rdU scalars ((6 * (truncate t370)) + 3)
+        t574 <- rdU vel (3 * (truncate t370))
+        t575 <- rdU vel ((3 * (truncate t370)) + 1)
+        t576 <- rdU vel ((3 * (truncate t370)) + 2)
+        t577 <- rdU scalars ((6 * (truncate t370)) + 1)
+        wrU vel (3 * (truncate t370)) (t574 + ((t572 * (s571 - t562)) * s383))
+        wrU vel ((3 * (truncate t370)) + 1) (t575 + ((t572 * (s571 - t562)) * s384))
+        wrU vel ((3 * (truncate t370)) + 2) (t576 + ((t572 * (s571 - t562)) * s385))
+        wrU scalars ((6 * (truncate t370)) + 1) (t577 + ((t573 * (s571 - t562)) * t567))
         pure ()
       else do
         pure ()
@@ -1581,51 +1725,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t578 <- rdI meta 0
+  t578 <- rdU meta 0
   loopI 0.0 t578 $ \i579 -> do
     let !d579 = fromIntegral i579 :: Double
-    wrI bodyPrev ((2 * i579) + 1) 0.0
+    chkI bodyPrev (2 * i579) 1 1
+    wrU bodyPrev ((2 * i579) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i580 -> do
     let !d580 = fromIntegral i580 :: Double
-    t581 <- rdI contacts ((30 * i580) + 2)
-    wrI prev (4 * i580) t581
-    t582 <- rdI contacts ((30 * i580) + 3)
-    wrI prev ((4 * i580) + 1) t582
-    t583 <- rdI contacts ((30 * i580) + 24)
-    wrI prev ((4 * i580) + 2) t583
-    t584 <- rdI contacts ((30 * i580) + 25)
-    wrI prev ((4 * i580) + 3) t584
-    t585 <- rdI bodyPrev ((2 * (truncate t581)) + 1)
+    chkI contacts (30 * i580) 2 25
+    t581 <- rdU contacts ((30 * i580) + 2)
+    chkI prev (4 * i580) 0 3
+    wrU prev (4 * i580) t581
+    t582 <- rdU contacts ((30 * i580) + 3)
+    wrU prev ((4 * i580) + 1) t582
+    t583 <- rdU contacts ((30 * i580) + 24)
+    wrU prev ((4 * i580) + 2) t583
+    t584 <- rdU contacts ((30 * i580) + 25)
+    wrU prev ((4 * i580) + 3) t584
+    chkI bodyPrev (2 * (truncate t581)) 1 1
+    t585 <- rdU bodyPrev ((2 * (truncate t581)) + 1)
     if (0.5 - t585) > 0 then do
-      wrI bodyPrev (2 * (truncate t581)) d580
+      chkI bodyPrev (2 * (truncate t581)) 0 0
+      wrU bodyPrev (2 * (truncate t581)) d580
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t581)) + 1) (t585 + 1.0)
+    wrU bodyPrev ((2 * (truncate t581)) + 1) (t585 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1697,60 +1853,70 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t85 = (t12 + (t1 * t13))
     let !t86 = (1.0 - (abs ((((((((((((((s48 - s48) + t84) + (s50 - s50)) + (s71 - s71)) + (s72 - s72)) + (s73 - s73)) + (s80 - s80)) + (s81 - s81)) + (s82 - s82)) + (s51 - s51)) + (s52 - s52)) + (s53 - s53)) + (t85 - t85)) + t84)))
     if (if (t83 - t86) > 0 then t86 else t83) > 0 then do
-      wrI pos (3 * i2) (s48 - ((floorF ((s48 + 1.0) / 2.0)) * 2.0))
-      wrI pos ((3 * i2) + 1) s49
-      wrI pos ((3 * i2) + 2) (s50 - ((floorF ((s50 + 1.0) / 2.0)) * 2.0))
-      wrI vel (3 * i2) s71
-      wrI vel ((3 * i2) + 1) s72
-      wrI vel ((3 * i2) + 2) s73
-      wrI axis (3 * i2) s80
-      wrI axis ((3 * i2) + 1) s81
-      wrI axis ((3 * i2) + 2) s82
-      wrI normal (3 * i2) s51
-      wrI normal ((3 * i2) + 1) s52
-      wrI normal ((3 * i2) + 2) s53
-      wrI scalars (6 * i2) t85
-      wrI scalars ((6 * i2) + 1) t13
-      t87 <- rdI mouse 0
-      t88 <- rdI mouse 1
+      wrU pos (3 * i2) (s48 - ((floorF ((s48 + 1.0) / 2.0)) * 2.0))
+      wrU pos ((3 * i2) + 1) s49
+      wrU pos ((3 * i2) + 2) (s50 - ((floorF ((s50 + 1.0) / 2.0)) * 2.0))
+      wrU vel (3 * i2) s71
+      wrU vel ((3 * i2) + 1) s72
+      wrU vel ((3 * i2) + 2) s73
+      wrU axis (3 * i2) s80
+      wrU axis ((3 * i2) + 1) s81
+      wrU axis ((3 * i2) + 2) s82
+      wrU normal (3 * i2) s51
+      wrU normal ((3 * i2) + 1) s52
+      wrU normal ((3 * i2) + 2) s53
+      wrU scalars (6 * i2) t85
+      wrU scalars ((6 * i2) + 1) t13
+      chkI mouse 0 0 1
+      t87 <- rdU mouse 0
+      t88 <- rdU mouse 1
       if (t87 * (0.5 - (abs (t88 - d2)))) > 0 then do
-        t89 <- rdI mouse 3
-        wrI mouse 3 t89
+        chkI mouse 0 3 3
+        t89 <- rdU mouse 3
+        wrU mouse 3 t89
         pure ()
       else do
         pure ()
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t90 <- rdI meta 1
-      wrI meta 1 (t90 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t90 <- rdU meta 1
+      wrU meta 1 (t90 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1759,7 +1925,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1801,9 +1968,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1833,9 +2001,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1865,9 +2034,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1897,9 +2067,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1924,18 +2095,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

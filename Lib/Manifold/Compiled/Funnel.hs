@@ -28,34 +28,41 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (t13 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * (negate (t14 * t12))))
       let !t17 = (t10 + (t1 * ((-4.0) + (negate (t14 * t13)))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wrI vel (3 * i3) t15
-        wrI vel ((3 * i3) + 1) t16
-        wrI vel ((3 * i3) + 2) t17
+        wrU vel (3 * i3) t15
+        wrU vel ((3 * i3) + 1) t16
+        wrU vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rdI meta 1
-        wrI meta 1 (t18 + 1.0)
+        chkI meta 0 1 1
+        t18 <- rdU meta 1
+        wrU meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,12 +72,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -80,54 +89,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -143,19 +163,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -176,16 +202,18 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rdI normal (3 * i31)
-    t68 <- rdI normal ((3 * i31) + 1)
-    t69 <- rdI normal ((3 * i31) + 2)
+    chkI normal (3 * i31) 0 2
+    t67 <- rdU normal (3 * i31)
+    t68 <- rdU normal ((3 * i31) + 1)
+    t69 <- rdU normal ((3 * i31) + 2)
     v70 <- newR 0.0
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      t73 <- rdI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
+      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
+      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
+      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
       let !t76 = (1.0 - (abs t75))
       let !t77 = ((exp ((0.9 * t75) - 0.7)) - (abs t73))
       let !s78 = (if (t76 - t77) > 0 then t77 else t76)
@@ -200,9 +228,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t80 <- getR v70
     if t80 > 0 then do
       t81 <- getR v71
-      t82 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3))
-      t83 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 1)
-      t84 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) 0 2
+      t82 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3))
+      t83 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 1)
+      t84 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 2)
       let !t85 = (exp ((0.9 * t84) - 0.7))
       let !t86 = ((1.0 - (abs t84)) - (t85 - (abs t82)))
       let !t87 = (if t86 > 0 then (negate (signum t82)) else 0.0)
@@ -220,9 +249,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v99 <- newR (-1.0)
       loopI 0.0 24.0 $ \i100 -> do
         let !d100 = fromIntegral i100 :: Double
-        t101 <- rdI verts (3 * ((((97 * i31) + 1) + (i100 * 4)) + 3))
-        t102 <- rdI verts ((3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) + 1)
-        t103 <- rdI verts ((3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) 0 2
+        t101 <- rdU verts (3 * ((((97 * i31) + 1) + (i100 * 4)) + 3))
+        t102 <- rdU verts ((3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) + 1)
+        t103 <- rdU verts ((3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) + 2)
         let !t104 = (1.0 - (abs t103))
         let !t105 = ((exp ((0.9 * t103) - 0.7)) - (abs t101))
         if (negate (if (t104 - t105) > 0 then t105 else t104)) > 0 then do
@@ -247,204 +277,222 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t109 <- getR v98
       t110 <- getR v99
-      t111 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3))
-      t112 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 1)
-      t113 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) 0 2
+      t111 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3))
+      t112 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 1)
+      t113 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 2)
       let !t114 = (exp ((0.9 * t113) - 0.7))
       let !t115 = ((1.0 - (abs t113)) - (t114 - (abs t111)))
       let !s116 = (if t115 > 0 then (negate (signum t111)) else 0.0)
       let !s117 = (if t115 > 0 then (t114 * 0.9) else (negate (signum t113)))
       let !s118 = (sqrt ((s116 * s116) + (s117 * s117)))
       let !s119 = (if t115 > 0 then (t114 - (abs t111)) else (1.0 - (abs t113)))
-      t120 <- rdI meta 2
-      t121 <- rdI meta 3
+      t120 <- rdU meta 2
+      t121 <- rdU meta 3
       if (((8.0 * (if (1.0 - t121) > 0 then 1.0 else t121)) - t120) - 0.5) > 0 then do
-        wrI meta 2 (t120 + 1.0)
-        t122 <- rdI pos (3 * i31)
-        t123 <- rdI pos ((3 * i31) + 1)
-        t124 <- rdI pos ((3 * i31) + 2)
-        t125 <- rdI normal (3 * i31)
-        t126 <- rdI normal ((3 * i31) + 1)
-        t127 <- rdI normal ((3 * i31) + 2)
-        t128 <- rdI axis (3 * i31)
-        t129 <- rdI axis ((3 * i31) + 1)
-        t130 <- rdI axis ((3 * i31) + 2)
+        wrU meta 2 (t120 + 1.0)
+        t122 <- rdU pos (3 * i31)
+        t123 <- rdU pos ((3 * i31) + 1)
+        t124 <- rdU pos ((3 * i31) + 2)
+        t125 <- rdU normal (3 * i31)
+        t126 <- rdU normal ((3 * i31) + 1)
+        t127 <- rdU normal ((3 * i31) + 2)
+        chkI axis (3 * i31) 0 2
+        t128 <- rdU axis (3 * i31)
+        t129 <- rdU axis ((3 * i31) + 1)
+        t130 <- rdU axis ((3 * i31) + 2)
         let !s131 = ((t126 * t130) - (t127 * t129))
         let !s132 = ((t127 * t128) - (t125 * t130))
         let !s133 = ((t125 * t129) - (t126 * t128))
-        t134 <- rdI scalars (6 * i31)
-        t135 <- rdI scalars ((6 * i31) + 5)
-        t136 <- rdI scalars ((6 * i31) + 2)
-        t137 <- rdI scalars ((6 * i31) + 3)
-        wrI contacts (30 * (truncate t120)) d31
-        wrI contacts ((30 * (truncate t120)) + 1) (-1.0)
-        wrI contacts ((30 * (truncate t120)) + 2) d31
-        wrI contacts ((30 * (truncate t120)) + 3) 8.0
+        chkI scalars (6 * i31) 0 0
+        t134 <- rdU scalars (6 * i31)
+        t135 <- rdU scalars ((6 * i31) + 5)
+        t136 <- rdU scalars ((6 * i31) + 2)
+        t137 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t120)) 0 29
+        wrU contacts (30 * (truncate t120)) d31
+        wrU contacts ((30 * (truncate t120)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t120)) + 2) d31
+        wrU contacts ((30 * (truncate t120)) + 3) 8.0
         let !t138 = (if s118 > 0 then (recip (if (s118 - 1.0e-300) > 0 then s118 else 1.0e-300)) else 0.0)
         let !t139 = (t138 * s116)
-        wrI contacts ((30 * (truncate t120)) + 4) (t139 + (negate (((t125 * t139) + (t127 * (t138 * s117))) * t125)))
-        wrI contacts (((30 * (truncate t120)) + 4) + 1) (negate (((t125 * t139) + (t127 * (t138 * s117))) * t126))
+        wrU contacts ((30 * (truncate t120)) + 4) (t139 + (negate (((t125 * t139) + (t127 * (t138 * s117))) * t125)))
+        wrU contacts ((30 * (truncate t120)) + 5) (negate (((t125 * t139) + (t127 * (t138 * s117))) * t126))
         let !t140 = (t138 * s117)
-        wrI contacts (((30 * (truncate t120)) + 4) + 2) (t140 + (negate (((t125 * t139) + (t127 * t140)) * t127)))
+        wrU contacts ((30 * (truncate t120)) + 6) (t140 + (negate (((t125 * t139) + (t127 * t140)) * t127)))
         let !t141 = (t112 + (negate t123))
-        wrI contacts ((30 * (truncate t120)) + 7) ((((t141 * t140) * t125) + ((((t113 + (negate t124)) * t139) - ((t111 + (negate t122)) * t140)) * t126)) + ((negate (t141 * t139)) * t127))
+        wrU contacts ((30 * (truncate t120)) + 7) ((((t141 * t140) * t125) + ((((t113 + (negate t124)) * t139) - ((t111 + (negate t122)) * t140)) * t126)) + ((negate (t141 * t139)) * t127))
         let !t142 = (t126 * t140)
-        wrI contacts ((30 * (truncate t120)) + 12) (t142 + (negate ((((t125 * t142) + (t126 * ((t127 * t139) - (t125 * t140)))) + (t127 * (negate (t126 * t139)))) * t125)))
+        wrU contacts ((30 * (truncate t120)) + 12) (t142 + (negate ((((t125 * t142) + (t126 * ((t127 * t139) - (t125 * t140)))) + (t127 * (negate (t126 * t139)))) * t125)))
         let !t143 = ((t127 * t139) - (t125 * t140))
-        wrI contacts (((30 * (truncate t120)) + 12) + 1) (t143 + (negate ((((t125 * t142) + (t126 * t143)) + (t127 * (negate (t126 * t139)))) * t126)))
+        wrU contacts ((30 * (truncate t120)) + 13) (t143 + (negate ((((t125 * t142) + (t126 * t143)) + (t127 * (negate (t126 * t139)))) * t126)))
         let !t144 = (negate (t126 * t139))
-        wrI contacts (((30 * (truncate t120)) + 12) + 2) (t144 + (negate ((((t125 * t142) + (t126 * t143)) + (t127 * t144)) * t127)))
+        wrU contacts ((30 * (truncate t120)) + 14) (t144 + (negate ((((t125 * t142) + (t126 * t143)) + (t127 * t144)) * t127)))
         let !t145 = (t113 + (negate t124))
         let !t146 = (t111 + (negate t122))
-        wrI contacts ((30 * (truncate t120)) + 15) (((((t141 * t144) - (t145 * t143)) * t125) + (((t145 * t142) - (t146 * t144)) * t126)) + (((t146 * t143) - (t141 * t142)) * t127))
-        wrI contacts ((30 * (truncate t120)) + 20) (if s118 > 0 then ((negate s119) / (if (s118 - 1.0e-300) > 0 then s118 else 1.0e-300)) else 0.0)
-        wrI contacts ((30 * (truncate t120)) + 26) 1.0
-        wrI contacts ((30 * (truncate t120)) + 27) t111
-        wrI contacts (((30 * (truncate t120)) + 27) + 1) t112
-        wrI contacts (((30 * (truncate t120)) + 27) + 2) t113
+        wrU contacts ((30 * (truncate t120)) + 15) (((((t141 * t144) - (t145 * t143)) * t125) + (((t145 * t142) - (t146 * t144)) * t126)) + (((t146 * t143) - (t141 * t142)) * t127))
+        wrU contacts ((30 * (truncate t120)) + 20) (if s118 > 0 then ((negate s119) / (if (s118 - 1.0e-300) > 0 then s118 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t120)) + 26) 1.0
+        wrU contacts ((30 * (truncate t120)) + 27) t111
+        wrU contacts ((30 * (truncate t120)) + 28) t112
+        wrU contacts ((30 * (truncate t120)) + 29) t113
         if (-0.5) > 0 then do
-          t147 <- rdI pos (-3)
-          t148 <- rdI pos (-2)
-          t149 <- rdI pos (-1)
-          t150 <- rdI normal (-3)
-          t151 <- rdI normal (-2)
-          t152 <- rdI normal (-1)
-          t153 <- rdI axis (-3)
-          t154 <- rdI axis (-2)
-          t155 <- rdI axis (-1)
+          chkI pos 0 (-3) (-1)
+          t147 <- rdU pos (-3)
+          t148 <- rdU pos (-2)
+          t149 <- rdU pos (-1)
+          chkI normal 0 (-3) (-1)
+          t150 <- rdU normal (-3)
+          t151 <- rdU normal (-2)
+          t152 <- rdU normal (-1)
+          chkI axis 0 (-3) (-1)
+          t153 <- rdU axis (-3)
+          t154 <- rdU axis (-2)
+          t155 <- rdU axis (-1)
           let !s156 = ((t151 * t155) - (t152 * t154))
           let !s157 = ((t152 * t153) - (t150 * t155))
           let !s158 = ((t150 * t154) - (t151 * t153))
-          t159 <- rdI scalars (-6)
-          t160 <- rdI scalars (-1)
-          t161 <- rdI scalars (-4)
-          t162 <- rdI scalars (-3)
-          wrI contacts ((30 * (truncate t120)) + 8) (t139 + (negate (((t150 * t139) + (t152 * t140)) * t150)))
-          wrI contacts (((30 * (truncate t120)) + 8) + 1) (negate (((t150 * t139) + (t152 * t140)) * t151))
-          wrI contacts (((30 * (truncate t120)) + 8) + 2) (t140 + (negate (((t150 * t139) + (t152 * t140)) * t152)))
+          chkI scalars 0 (-6) (-1)
+          t159 <- rdU scalars (-6)
+          t160 <- rdU scalars (-1)
+          t161 <- rdU scalars (-4)
+          t162 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t120)) + 8) (t139 + (negate (((t150 * t139) + (t152 * t140)) * t150)))
+          wrU contacts ((30 * (truncate t120)) + 9) (negate (((t150 * t139) + (t152 * t140)) * t151))
+          wrU contacts ((30 * (truncate t120)) + 10) (t140 + (negate (((t150 * t139) + (t152 * t140)) * t152)))
           let !t163 = (t112 + (negate t148))
-          wrI contacts ((30 * (truncate t120)) + 11) ((((t163 * t140) * t150) + ((((t113 + (negate t149)) * t139) - ((t111 + (negate t147)) * t140)) * t151)) + ((negate (t163 * t139)) * t152))
-          wrI contacts ((30 * (truncate t120)) + 16) (t142 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t150)))
-          wrI contacts (((30 * (truncate t120)) + 16) + 1) (t143 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t151)))
-          wrI contacts (((30 * (truncate t120)) + 16) + 2) (t144 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t152)))
+          wrU contacts ((30 * (truncate t120)) + 11) ((((t163 * t140) * t150) + ((((t113 + (negate t149)) * t139) - ((t111 + (negate t147)) * t140)) * t151)) + ((negate (t163 * t139)) * t152))
+          wrU contacts ((30 * (truncate t120)) + 16) (t142 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t150)))
+          wrU contacts ((30 * (truncate t120)) + 17) (t143 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t151)))
+          wrU contacts ((30 * (truncate t120)) + 18) (t144 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t152)))
           let !t164 = (t113 + (negate t149))
           let !t165 = (t111 + (negate t147))
-          wrI contacts ((30 * (truncate t120)) + 19) (((((t163 * t144) - (t164 * t143)) * t150) + (((t164 * t142) - (t165 * t144)) * t151)) + (((t165 * t143) - (t163 * t142)) * t152))
+          wrU contacts ((30 * (truncate t120)) + 19) (((((t163 * t144) - (t164 * t143)) * t150) + (((t164 * t142) - (t165 * t144)) * t151)) + (((t165 * t143) - (t163 * t142)) * t152))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t120)) + 8) 0.0
-          wrI contacts (((30 * (truncate t120)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t120)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t120)) + 11) 0.0
-          wrI contacts ((30 * (truncate t120)) + 16) 0.0
-          wrI contacts (((30 * (truncate t120)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t120)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t120)) + 19) 0.0
+          wrU contacts ((30 * (truncate t120)) + 8) 0.0
+          wrU contacts ((30 * (truncate t120)) + 9) 0.0
+          wrU contacts ((30 * (truncate t120)) + 10) 0.0
+          wrU contacts ((30 * (truncate t120)) + 11) 0.0
+          wrU contacts ((30 * (truncate t120)) + 16) 0.0
+          wrU contacts ((30 * (truncate t120)) + 17) 0.0
+          wrU contacts ((30 * (truncate t120)) + 18) 0.0
+          wrU contacts ((30 * (truncate t120)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t166 <- rdI meta 6
-        wrI meta 6 (t166 + 1.0)
+        chkI meta 0 6 6
+        t166 <- rdU meta 6
+        wrU meta 6 (t166 + 1.0)
         pure ()
       if (abs (t110 - t109)) > 0 then do
-        t167 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3))
-        t168 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) + 1)
-        t169 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) 0 2
+        t167 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3))
+        t168 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) + 1)
+        t169 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) + 2)
         let !t170 = (exp ((0.9 * t169) - 0.7))
         let !t171 = ((1.0 - (abs t169)) - (t170 - (abs t167)))
         let !s172 = (if t171 > 0 then (negate (signum t167)) else 0.0)
         let !s173 = (if t171 > 0 then (t170 * 0.9) else (negate (signum t169)))
         let !s174 = (sqrt ((s172 * s172) + (s173 * s173)))
         let !s175 = (if t171 > 0 then (t170 - (abs t167)) else (1.0 - (abs t169)))
-        t176 <- rdI meta 2
-        t177 <- rdI meta 3
+        t176 <- rdU meta 2
+        t177 <- rdU meta 3
         if (((8.0 * (if (1.0 - t177) > 0 then 1.0 else t177)) - t176) - 0.5) > 0 then do
-          wrI meta 2 (t176 + 1.0)
-          t178 <- rdI pos (3 * i31)
-          t179 <- rdI pos ((3 * i31) + 1)
-          t180 <- rdI pos ((3 * i31) + 2)
-          t181 <- rdI normal (3 * i31)
-          t182 <- rdI normal ((3 * i31) + 1)
-          t183 <- rdI normal ((3 * i31) + 2)
-          t184 <- rdI axis (3 * i31)
-          t185 <- rdI axis ((3 * i31) + 1)
-          t186 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t176 + 1.0)
+          t178 <- rdU pos (3 * i31)
+          t179 <- rdU pos ((3 * i31) + 1)
+          t180 <- rdU pos ((3 * i31) + 2)
+          t181 <- rdU normal (3 * i31)
+          t182 <- rdU normal ((3 * i31) + 1)
+          t183 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t184 <- rdU axis (3 * i31)
+          t185 <- rdU axis ((3 * i31) + 1)
+          t186 <- rdU axis ((3 * i31) + 2)
           let !s187 = ((t182 * t186) - (t183 * t185))
           let !s188 = ((t183 * t184) - (t181 * t186))
           let !s189 = ((t181 * t185) - (t182 * t184))
-          t190 <- rdI scalars (6 * i31)
-          t191 <- rdI scalars ((6 * i31) + 5)
-          t192 <- rdI scalars ((6 * i31) + 2)
-          t193 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t176)) d31
-          wrI contacts ((30 * (truncate t176)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t176)) + 2) d31
-          wrI contacts ((30 * (truncate t176)) + 3) 9.0
+          chkI scalars (6 * i31) 0 0
+          t190 <- rdU scalars (6 * i31)
+          t191 <- rdU scalars ((6 * i31) + 5)
+          t192 <- rdU scalars ((6 * i31) + 2)
+          t193 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t176)) 0 29
+          wrU contacts (30 * (truncate t176)) d31
+          wrU contacts ((30 * (truncate t176)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t176)) + 2) d31
+          wrU contacts ((30 * (truncate t176)) + 3) 9.0
           let !t194 = (if s174 > 0 then (recip (if (s174 - 1.0e-300) > 0 then s174 else 1.0e-300)) else 0.0)
           let !t195 = (t194 * s172)
-          wrI contacts ((30 * (truncate t176)) + 4) (t195 + (negate (((t181 * t195) + (t183 * (t194 * s173))) * t181)))
-          wrI contacts (((30 * (truncate t176)) + 4) + 1) (negate (((t181 * t195) + (t183 * (t194 * s173))) * t182))
+          wrU contacts ((30 * (truncate t176)) + 4) (t195 + (negate (((t181 * t195) + (t183 * (t194 * s173))) * t181)))
+          wrU contacts ((30 * (truncate t176)) + 5) (negate (((t181 * t195) + (t183 * (t194 * s173))) * t182))
           let !t196 = (t194 * s173)
-          wrI contacts (((30 * (truncate t176)) + 4) + 2) (t196 + (negate (((t181 * t195) + (t183 * t196)) * t183)))
+          wrU contacts ((30 * (truncate t176)) + 6) (t196 + (negate (((t181 * t195) + (t183 * t196)) * t183)))
           let !t197 = (t168 + (negate t179))
-          wrI contacts ((30 * (truncate t176)) + 7) ((((t197 * t196) * t181) + ((((t169 + (negate t180)) * t195) - ((t167 + (negate t178)) * t196)) * t182)) + ((negate (t197 * t195)) * t183))
+          wrU contacts ((30 * (truncate t176)) + 7) ((((t197 * t196) * t181) + ((((t169 + (negate t180)) * t195) - ((t167 + (negate t178)) * t196)) * t182)) + ((negate (t197 * t195)) * t183))
           let !t198 = (t182 * t196)
-          wrI contacts ((30 * (truncate t176)) + 12) (t198 + (negate ((((t181 * t198) + (t182 * ((t183 * t195) - (t181 * t196)))) + (t183 * (negate (t182 * t195)))) * t181)))
+          wrU contacts ((30 * (truncate t176)) + 12) (t198 + (negate ((((t181 * t198) + (t182 * ((t183 * t195) - (t181 * t196)))) + (t183 * (negate (t182 * t195)))) * t181)))
           let !t199 = ((t183 * t195) - (t181 * t196))
-          wrI contacts (((30 * (truncate t176)) + 12) + 1) (t199 + (negate ((((t181 * t198) + (t182 * t199)) + (t183 * (negate (t182 * t195)))) * t182)))
+          wrU contacts ((30 * (truncate t176)) + 13) (t199 + (negate ((((t181 * t198) + (t182 * t199)) + (t183 * (negate (t182 * t195)))) * t182)))
           let !t200 = (negate (t182 * t195))
-          wrI contacts (((30 * (truncate t176)) + 12) + 2) (t200 + (negate ((((t181 * t198) + (t182 * t199)) + (t183 * t200)) * t183)))
+          wrU contacts ((30 * (truncate t176)) + 14) (t200 + (negate ((((t181 * t198) + (t182 * t199)) + (t183 * t200)) * t183)))
           let !t201 = (t169 + (negate t180))
           let !t202 = (t167 + (negate t178))
-          wrI contacts ((30 * (truncate t176)) + 15) (((((t197 * t200) - (t201 * t199)) * t181) + (((t201 * t198) - (t202 * t200)) * t182)) + (((t202 * t199) - (t197 * t198)) * t183))
-          wrI contacts ((30 * (truncate t176)) + 20) (if s174 > 0 then ((negate s175) / (if (s174 - 1.0e-300) > 0 then s174 else 1.0e-300)) else 0.0)
-          wrI contacts ((30 * (truncate t176)) + 26) 1.0
-          wrI contacts ((30 * (truncate t176)) + 27) t167
-          wrI contacts (((30 * (truncate t176)) + 27) + 1) t168
-          wrI contacts (((30 * (truncate t176)) + 27) + 2) t169
+          wrU contacts ((30 * (truncate t176)) + 15) (((((t197 * t200) - (t201 * t199)) * t181) + (((t201 * t198) - (t202 * t200)) * t182)) + (((t202 * t199) - (t197 * t198)) * t183))
+          wrU contacts ((30 * (truncate t176)) + 20) (if s174 > 0 then ((negate s175) / (if (s174 - 1.0e-300) > 0 then s174 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t176)) + 26) 1.0
+          wrU contacts ((30 * (truncate t176)) + 27) t167
+          wrU contacts ((30 * (truncate t176)) + 28) t168
+          wrU contacts ((30 * (truncate t176)) + 29) t169
           if (-0.5) > 0 then do
-            t203 <- rdI pos (-3)
-            t204 <- rdI pos (-2)
-            t205 <- rdI pos (-1)
-            t206 <- rdI normal (-3)
-            t207 <- rdI normal (-2)
-            t208 <- rdI normal (-1)
-            t209 <- rdI axis (-3)
-            t210 <- rdI axis (-2)
-            t211 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t203 <- rdU pos (-3)
+            t204 <- rdU pos (-2)
+            t205 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t206 <- rdU normal (-3)
+            t207 <- rdU normal (-2)
+            t208 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t209 <- rdU axis (-3)
+            t210 <- rdU axis (-2)
+            t211 <- rdU axis (-1)
             let !s212 = ((t207 * t211) - (t208 * t210))
             let !s213 = ((t208 * t209) - (t206 * t211))
             let !s214 = ((t206 * t210) - (t207 * t209))
-            t215 <- rdI scalars (-6)
-            t216 <- rdI scalars (-1)
-            t217 <- rdI scalars (-4)
-            t218 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t176)) + 8) (t195 + (negate (((t206 * t195) + (t208 * t196)) * t206)))
-            wrI contacts (((30 * (truncate t176)) + 8) + 1) (negate (((t206 * t195) + (t208 * t196)) * t207))
-            wrI contacts (((30 * (truncate t176)) + 8) + 2) (t196 + (negate (((t206 * t195) + (t208 * t196)) * t208)))
+            chkI scalars 0 (-6) (-1)
+            t215 <- rdU scalars (-6)
+            t216 <- rdU scalars (-1)
+            t217 <- rdU scalars (-4)
+            t218 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t176)) + 8) (t195 + (negate (((t206 * t195) + (t208 * t196)) * t206)))
+            wrU contacts ((30 * (truncate t176)) + 9) (negate (((t206 * t195) + (t208 * t196)) * t207))
+            wrU contacts ((30 * (truncate t176)) + 10) (t196 + (negate (((t206 * t195) + (t208 * t196)) * t208)))
             let !t219 = (t168 + (negate t204))
-            wrI contacts ((30 * (truncate t176)) + 11) ((((t219 * t196) * t206) + ((((t169 + (negate t205)) * t195) - ((t167 + (negate t203)) * t196)) * t207)) + ((negate (t219 * t195)) * t208))
-            wrI contacts ((30 * (truncate t176)) + 16) (t198 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t206)))
-            wrI contacts (((30 * (truncate t176)) + 16) + 1) (t199 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t207)))
-            wrI contacts (((30 * (truncate t176)) + 16) + 2) (t200 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t208)))
+            wrU contacts ((30 * (truncate t176)) + 11) ((((t219 * t196) * t206) + ((((t169 + (negate t205)) * t195) - ((t167 + (negate t203)) * t196)) * t207)) + ((negate (t219 * t195)) * t208))
+            wrU contacts ((30 * (truncate t176)) + 16) (t198 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t206)))
+            wrU contacts ((30 * (truncate t176)) + 17) (t199 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t207)))
+            wrU contacts ((30 * (truncate t176)) + 18) (t200 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t208)))
             let !t220 = (t169 + (negate t205))
             let !t221 = (t167 + (negate t203))
-            wrI contacts ((30 * (truncate t176)) + 19) (((((t219 * t200) - (t220 * t199)) * t206) + (((t220 * t198) - (t221 * t200)) * t207)) + (((t221 * t199) - (t219 * t198)) * t208))
+            wrU contacts ((30 * (truncate t176)) + 19) (((((t219 * t200) - (t220 * t199)) * t206) + (((t220 * t198) - (t221 * t200)) * t207)) + (((t221 * t199) - (t219 * t198)) * t208))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t176)) + 8) 0.0
-            wrI contacts (((30 * (truncate t176)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t176)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t176)) + 11) 0.0
-            wrI contacts ((30 * (truncate t176)) + 16) 0.0
-            wrI contacts (((30 * (truncate t176)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t176)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t176)) + 19) 0.0
+            wrU contacts ((30 * (truncate t176)) + 8) 0.0
+            wrU contacts ((30 * (truncate t176)) + 9) 0.0
+            wrU contacts ((30 * (truncate t176)) + 10) 0.0
+            wrU contacts ((30 * (truncate t176)) + 11) 0.0
+            wrU contacts ((30 * (truncate t176)) + 16) 0.0
+            wrU contacts ((30 * (truncate t176)) + 17) 0.0
+            wrU contacts ((30 * (truncate t176)) + 18) 0.0
+            wrU contacts ((30 * (truncate t176)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t222 <- rdI meta 6
-          wrI meta 6 (t222 + 1.0)
+          chkI meta 0 6 6
+          t222 <- rdU meta 6
+          wrU meta 6 (t222 + 1.0)
           pure ()
         pure ()
       else do
@@ -452,16 +500,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t223 <- rdI verts (3 * (97 * i31))
-    t224 <- rdI verts ((3 * (97 * i31)) + 1)
-    t225 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t223 <- rdU verts (3 * (97 * i31))
+    t224 <- rdU verts ((3 * (97 * i31)) + 1)
+    t225 <- rdU verts ((3 * (97 * i31)) + 2)
     v226 <- newR 1.0
     loopI 0.0 24.0 $ \i227 -> do
       let !d227 = fromIntegral i227 :: Double
-      t228 <- rdI verts (3 * ((((97 * i31) + 1) + (i227 * 4)) + 3))
-      t229 <- rdI verts ((3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) + 1)
-      t230 <- rdI verts ((3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) + 2)
-      t231 <- rdI radii ((24 * i31) + i227)
+      chkI verts (3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) 0 2
+      t228 <- rdU verts (3 * ((((97 * i31) + 1) + (i227 * 4)) + 3))
+      t229 <- rdU verts ((3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) + 1)
+      t230 <- rdU verts ((3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i227) 0 0
+      t231 <- rdU radii ((24 * i31) + i227)
       t232 <- getR v226
       let !t233 = (t228 + (negate t223))
       let !t234 = (t229 + (negate t224))
@@ -480,27 +531,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v244 <- newR 0.0
       loopI 0.0 24.0 $ \i245 -> do
         let !d245 = fromIntegral i245 :: Double
-        t246 <- rdI radii ((24 * i31) + i245)
+        chkI radii ((24 * i31) + i245) 0 0
+        t246 <- rdU radii ((24 * i31) + i245)
         loopI 6.0 12.0 $ \i247 -> do
           let !d247 = fromIntegral i247 :: Double
           let !t248 = (d245 + d247)
-          t249 <- rdI radii (truncate ((24.0 * d31) + (t248 - (24.0 * (floorF (t248 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t248 - (24.0 * (floorF (t248 / 24.0)))))) 0 0
+          t249 <- rdU radii (truncate ((24.0 * d31) + (t248 - (24.0 * (floorF (t248 / 24.0))))))
           loopI 1.0 4.0 $ \i250 -> do
             let !d250 = fromIntegral i250 :: Double
-            t251 <- rdI verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1)))
-            t252 <- rdI verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) + 1)
-            t253 <- rdI verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) + 2)
-            t254 <- rdI verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + i250))
-            t255 <- rdI verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) + 1)
-            t256 <- rdI verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) 0 2
+            t251 <- rdU verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1)))
+            t252 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) + 1)
+            t253 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) 0 2
+            t254 <- rdU verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + i250))
+            t255 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) + 1)
+            t256 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) + 2)
             loopI 1.0 4.0 $ \i257 -> do
               let !d257 = fromIntegral i257 :: Double
-              t258 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))))
-              t259 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 1.0))
-              t260 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 2.0))
-              t261 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)))
-              t262 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 1.0))
-              t263 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0)))) 0 0
+              t258 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 1.0)) 0 0
+              t259 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 2.0)) 0 0
+              t260 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257))) 0 0
+              t261 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 1.0)) 0 0
+              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 2.0)) 0 0
+              t263 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 2.0))
               t264 <- getR v238
               let !t265 = (negate t258)
               let !t266 = (t261 + t265)
@@ -540,12 +601,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t300 = ((0.3 * ((if (t249 - t246) > 0 then t246 else t249) / 4.0)) - (sqrt (((t297 * t297) + (t298 * t298)) + (t299 * t299))))
               if (if (t296 - t300) > 0 then t300 else t296) > 0 then do
                 setR v238 (0.5 * ((t246 - ((t246 * (d250 + t293)) / 4.0)) + (t249 - ((t249 * (d257 + t295)) / 4.0))))
-                t301 <- rdI verts (3 * (((97 * i31) + 1) + (i245 * 4)))
-                t302 <- rdI verts ((3 * (((97 * i31) + 1) + (i245 * 4))) + 1)
-                t303 <- rdI verts ((3 * (((97 * i31) + 1) + (i245 * 4))) + 2)
-                t304 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))))
-                t305 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0))
-                t306 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i245 * 4))) 0 2
+                t301 <- rdU verts (3 * (((97 * i31) + 1) + (i245 * 4)))
+                t302 <- rdU verts ((3 * (((97 * i31) + 1) + (i245 * 4))) + 1)
+                t303 <- rdU verts ((3 * (((97 * i31) + 1) + (i245 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)))) 0 0
+                t304 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t305 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t306 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0))
                 setR v239 (t251 + (t293 * t272))
                 setR v240 (t252 + (t293 * t273))
                 setR v241 (t253 + (t293 * t274))
@@ -584,89 +649,97 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s328 = (t327 * t322)
         let !s329 = (t327 * t325)
         let !s330 = (t327 * t324)
-        t331 <- rdI meta 2
-        t332 <- rdI meta 3
+        t331 <- rdU meta 2
+        t332 <- rdU meta 3
         if (((8.0 * (if (1.0 - t332) > 0 then 1.0 else t332)) - t331) - 0.5) > 0 then do
-          wrI meta 2 (t331 + 1.0)
-          t333 <- rdI pos (3 * i31)
-          t334 <- rdI pos ((3 * i31) + 1)
-          t335 <- rdI pos ((3 * i31) + 2)
-          t336 <- rdI normal (3 * i31)
-          t337 <- rdI normal ((3 * i31) + 1)
-          t338 <- rdI normal ((3 * i31) + 2)
-          t339 <- rdI axis (3 * i31)
-          t340 <- rdI axis ((3 * i31) + 1)
-          t341 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t331 + 1.0)
+          t333 <- rdU pos (3 * i31)
+          t334 <- rdU pos ((3 * i31) + 1)
+          t335 <- rdU pos ((3 * i31) + 2)
+          t336 <- rdU normal (3 * i31)
+          t337 <- rdU normal ((3 * i31) + 1)
+          t338 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t339 <- rdU axis (3 * i31)
+          t340 <- rdU axis ((3 * i31) + 1)
+          t341 <- rdU axis ((3 * i31) + 2)
           let !s342 = ((t337 * t341) - (t338 * t340))
           let !s343 = ((t338 * t339) - (t336 * t341))
           let !s344 = ((t336 * t340) - (t337 * t339))
-          t345 <- rdI scalars (6 * i31)
-          t346 <- rdI scalars ((6 * i31) + 5)
-          t347 <- rdI scalars ((6 * i31) + 2)
-          t348 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t331)) d31
-          wrI contacts ((30 * (truncate t331)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t331)) + 2) d31
-          wrI contacts ((30 * (truncate t331)) + 3) 12.0
-          wrI contacts ((30 * (truncate t331)) + 4) (s328 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t336)))
-          wrI contacts (((30 * (truncate t331)) + 4) + 1) (s329 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t337)))
-          wrI contacts (((30 * (truncate t331)) + 4) + 2) (s330 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t338)))
-          wrI contacts ((30 * (truncate t331)) + 7) 0.0
-          wrI contacts ((30 * (truncate t331)) + 12) 0.0
-          wrI contacts (((30 * (truncate t331)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t331)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t331)) + 15) 0.0
-          wrI contacts ((30 * (truncate t331)) + 20) t318
-          wrI contacts ((30 * (truncate t331)) + 26) 0.6
-          wrI contacts ((30 * (truncate t331)) + 27) t319
-          wrI contacts (((30 * (truncate t331)) + 27) + 1) t320
-          wrI contacts (((30 * (truncate t331)) + 27) + 2) t321
+          chkI scalars (6 * i31) 0 0
+          t345 <- rdU scalars (6 * i31)
+          t346 <- rdU scalars ((6 * i31) + 5)
+          t347 <- rdU scalars ((6 * i31) + 2)
+          t348 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t331)) 0 29
+          wrU contacts (30 * (truncate t331)) d31
+          wrU contacts ((30 * (truncate t331)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t331)) + 2) d31
+          wrU contacts ((30 * (truncate t331)) + 3) 12.0
+          wrU contacts ((30 * (truncate t331)) + 4) (s328 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t336)))
+          wrU contacts ((30 * (truncate t331)) + 5) (s329 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t337)))
+          wrU contacts ((30 * (truncate t331)) + 6) (s330 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t338)))
+          wrU contacts ((30 * (truncate t331)) + 7) 0.0
+          wrU contacts ((30 * (truncate t331)) + 12) 0.0
+          wrU contacts ((30 * (truncate t331)) + 13) 0.0
+          wrU contacts ((30 * (truncate t331)) + 14) 0.0
+          wrU contacts ((30 * (truncate t331)) + 15) 0.0
+          wrU contacts ((30 * (truncate t331)) + 20) t318
+          wrU contacts ((30 * (truncate t331)) + 26) 0.6
+          wrU contacts ((30 * (truncate t331)) + 27) t319
+          wrU contacts ((30 * (truncate t331)) + 28) t320
+          wrU contacts ((30 * (truncate t331)) + 29) t321
           if (-0.5) > 0 then do
-            t349 <- rdI pos (-3)
-            t350 <- rdI pos (-2)
-            t351 <- rdI pos (-1)
-            t352 <- rdI normal (-3)
-            t353 <- rdI normal (-2)
-            t354 <- rdI normal (-1)
-            t355 <- rdI axis (-3)
-            t356 <- rdI axis (-2)
-            t357 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t349 <- rdU pos (-3)
+            t350 <- rdU pos (-2)
+            t351 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t352 <- rdU normal (-3)
+            t353 <- rdU normal (-2)
+            t354 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t355 <- rdU axis (-3)
+            t356 <- rdU axis (-2)
+            t357 <- rdU axis (-1)
             let !s358 = ((t353 * t357) - (t354 * t356))
             let !s359 = ((t354 * t355) - (t352 * t357))
             let !s360 = ((t352 * t356) - (t353 * t355))
-            t361 <- rdI scalars (-6)
-            t362 <- rdI scalars (-1)
-            t363 <- rdI scalars (-4)
-            t364 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t331)) + 8) (s328 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t352)))
-            wrI contacts (((30 * (truncate t331)) + 8) + 1) (s329 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t353)))
-            wrI contacts (((30 * (truncate t331)) + 8) + 2) (s330 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t354)))
+            chkI scalars 0 (-6) (-1)
+            t361 <- rdU scalars (-6)
+            t362 <- rdU scalars (-1)
+            t363 <- rdU scalars (-4)
+            t364 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t331)) + 8) (s328 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t352)))
+            wrU contacts ((30 * (truncate t331)) + 9) (s329 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t353)))
+            wrU contacts ((30 * (truncate t331)) + 10) (s330 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t354)))
             let !t365 = (t320 + (negate t350))
             let !t366 = (t321 + (negate t351))
             let !t367 = (t319 + (negate t349))
-            wrI contacts ((30 * (truncate t331)) + 11) (((((t365 * s330) - (t366 * s329)) * t352) + (((t366 * s328) - (t367 * s330)) * t353)) + (((t367 * s329) - (t365 * s328)) * t354))
+            wrU contacts ((30 * (truncate t331)) + 11) (((((t365 * s330) - (t366 * s329)) * t352) + (((t366 * s328) - (t367 * s330)) * t353)) + (((t367 * s329) - (t365 * s328)) * t354))
             let !t368 = ((t337 * s330) - (t338 * s329))
-            wrI contacts ((30 * (truncate t331)) + 16) (t368 + (negate ((((t352 * t368) + (t353 * ((t338 * s328) - (t336 * s330)))) + (t354 * ((t336 * s329) - (t337 * s328)))) * t352)))
+            wrU contacts ((30 * (truncate t331)) + 16) (t368 + (negate ((((t352 * t368) + (t353 * ((t338 * s328) - (t336 * s330)))) + (t354 * ((t336 * s329) - (t337 * s328)))) * t352)))
             let !t369 = ((t338 * s328) - (t336 * s330))
-            wrI contacts (((30 * (truncate t331)) + 16) + 1) (t369 + (negate ((((t352 * t368) + (t353 * t369)) + (t354 * ((t336 * s329) - (t337 * s328)))) * t353)))
+            wrU contacts ((30 * (truncate t331)) + 17) (t369 + (negate ((((t352 * t368) + (t353 * t369)) + (t354 * ((t336 * s329) - (t337 * s328)))) * t353)))
             let !t370 = ((t336 * s329) - (t337 * s328))
-            wrI contacts (((30 * (truncate t331)) + 16) + 2) (t370 + (negate ((((t352 * t368) + (t353 * t369)) + (t354 * t370)) * t354)))
-            wrI contacts ((30 * (truncate t331)) + 19) (((((t365 * t370) - (t366 * t369)) * t352) + (((t366 * t368) - (t367 * t370)) * t353)) + (((t367 * t369) - (t365 * t368)) * t354))
+            wrU contacts ((30 * (truncate t331)) + 18) (t370 + (negate ((((t352 * t368) + (t353 * t369)) + (t354 * t370)) * t354)))
+            wrU contacts ((30 * (truncate t331)) + 19) (((((t365 * t370) - (t366 * t369)) * t352) + (((t366 * t368) - (t367 * t370)) * t353)) + (((t367 * t369) - (t365 * t368)) * t354))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t331)) + 8) 0.0
-            wrI contacts (((30 * (truncate t331)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t331)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t331)) + 11) 0.0
-            wrI contacts ((30 * (truncate t331)) + 16) 0.0
-            wrI contacts (((30 * (truncate t331)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t331)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t331)) + 19) 0.0
+            wrU contacts ((30 * (truncate t331)) + 8) 0.0
+            wrU contacts ((30 * (truncate t331)) + 9) 0.0
+            wrU contacts ((30 * (truncate t331)) + 10) 0.0
+            wrU contacts ((30 * (truncate t331)) + 11) 0.0
+            wrU contacts ((30 * (truncate t331)) + 16) 0.0
+            wrU contacts ((30 * (truncate t331)) + 17) 0.0
+            wrU contacts ((30 * (truncate t331)) + 18) 0.0
+            wrU contacts ((30 * (truncate t331)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t371 <- rdI meta 6
-          wrI meta 6 (t371 + 1.0)
+          chkI meta 0 6 6
+          t371 <- rdU meta 6
+          wrU meta 6 (t371 + 1.0)
           pure ()
         pure ()
       else do
@@ -679,44 +752,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -724,12 +802,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -737,20 +816,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -761,19 +843,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -781,98 +866,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -947,12 +1044,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdI mouse 4
-      t213 <- rdI mouse 5
-      t214 <- rdI mouse 6
-      t215 <- rdI mouse 7
-      t216 <- rdI mouse 8
-      t217 <- rdI mouse 9
+      t212 <- rdU mouse 4
+      t213 <- rdU mouse 5
+      t214 <- rdU mouse 6
+      t215 <- rdU mouse 7
+      t216 <- rdU mouse 8
+      t217 <- rdU mouse 9
       let !t218 = (recip t101)
       let !t219 = (6.283185307179586 * t215)
       let !s220 = (recip (t103 * ((((2.0 * t218) * t216) * t219) + (t103 * ((t218 * t219) * t219)))))
@@ -963,28 +1060,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s225 = (s199 + (negate t212))
       let !s226 = (s200 + (negate t213))
       let !s227 = (s201 + (negate t214))
-      t228 <- rdI mouse 10
-      t229 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t230 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t231 <- rdI vel (3 * (truncate t100))
-      t232 <- rdI vel ((3 * (truncate t100)) + 1)
-      t233 <- rdI vel ((3 * (truncate t100)) + 2)
-      t234 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
-      t235 <- rdI mouse 11
-      t236 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t237 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t238 <- rdI vel (3 * (truncate t100))
-      t239 <- rdI vel ((3 * (truncate t100)) + 1)
-      t240 <- rdI vel ((3 * (truncate t100)) + 2)
-      t241 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
+      t228 <- rdU mouse 10
+      t229 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t230 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t231 <- rdU vel (3 * (truncate t100))
+      t232 <- rdU vel ((3 * (truncate t100)) + 1)
+      t233 <- rdU vel ((3 * (truncate t100)) + 2)
+      t234 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
+      t235 <- rdU mouse 11
+      t236 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t237 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t238 <- rdU vel (3 * (truncate t100))
+      t239 <- rdU vel ((3 * (truncate t100)) + 1)
+      t240 <- rdU vel ((3 * (truncate t100)) + 2)
+      t241 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -995,38 +1093,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d242 = fromIntegral i242 :: Double
     loopI 0.0 t9 $ \i243 -> do
       let !d243 = fromIntegral i243 :: Double
-      t244 <- rdI contacts (30 * i243)
-      t245 <- rdI contacts ((30 * i243) + 1)
-      t246 <- rdI contacts ((30 * i243) + 12)
-      t247 <- rdI contacts (((30 * i243) + 12) + 1)
-      t248 <- rdI contacts (((30 * i243) + 12) + 2)
-      t249 <- rdI contacts ((30 * i243) + 15)
-      t250 <- rdI contacts ((30 * i243) + 16)
-      t251 <- rdI contacts (((30 * i243) + 16) + 1)
-      t252 <- rdI contacts (((30 * i243) + 16) + 2)
-      t253 <- rdI contacts ((30 * i243) + 19)
-      t254 <- rdI contacts ((30 * i243) + 4)
-      t255 <- rdI contacts (((30 * i243) + 4) + 1)
-      t256 <- rdI contacts (((30 * i243) + 4) + 2)
-      t257 <- rdI contacts ((30 * i243) + 7)
-      t258 <- rdI contacts ((30 * i243) + 8)
-      t259 <- rdI contacts (((30 * i243) + 8) + 1)
-      t260 <- rdI contacts (((30 * i243) + 8) + 2)
-      t261 <- rdI contacts ((30 * i243) + 11)
-      t262 <- rdI contacts ((30 * i243) + 26)
-      t263 <- rdI contacts ((30 * i243) + 24)
-      t264 <- rdI contacts ((30 * i243) + 25)
-      t265 <- rdI contacts ((30 * i243) + 22)
-      t266 <- rdI vel (3 * (truncate t244))
-      t267 <- rdI vel ((3 * (truncate t244)) + 1)
-      t268 <- rdI vel ((3 * (truncate t244)) + 2)
-      t269 <- rdI scalars ((6 * (truncate t244)) + 1)
+      chkI contacts (30 * i243) 0 26
+      t244 <- rdU contacts (30 * i243)
+      t245 <- rdU contacts ((30 * i243) + 1)
+      t246 <- rdU contacts ((30 * i243) + 12)
+      t247 <- rdU contacts ((30 * i243) + 13)
+      t248 <- rdU contacts ((30 * i243) + 14)
+      t249 <- rdU contacts ((30 * i243) + 15)
+      t250 <- rdU contacts ((30 * i243) + 16)
+      t251 <- rdU contacts ((30 * i243) + 17)
+      t252 <- rdU contacts ((30 * i243) + 18)
+      t253 <- rdU contacts ((30 * i243) + 19)
+      t254 <- rdU contacts ((30 * i243) + 4)
+      t255 <- rdU contacts ((30 * i243) + 5)
+      t256 <- rdU contacts ((30 * i243) + 6)
+      t257 <- rdU contacts ((30 * i243) + 7)
+      t258 <- rdU contacts ((30 * i243) + 8)
+      t259 <- rdU contacts ((30 * i243) + 9)
+      t260 <- rdU contacts ((30 * i243) + 10)
+      t261 <- rdU contacts ((30 * i243) + 11)
+      t262 <- rdU contacts ((30 * i243) + 26)
+      t263 <- rdU contacts ((30 * i243) + 24)
+      t264 <- rdU contacts ((30 * i243) + 25)
+      t265 <- rdU contacts ((30 * i243) + 22)
+      chkI vel (3 * (truncate t244)) 0 2
+      t266 <- rdU vel (3 * (truncate t244))
+      t267 <- rdU vel ((3 * (truncate t244)) + 1)
+      t268 <- rdU vel ((3 * (truncate t244)) + 2)
+      chkI scalars (6 * (truncate t244)) 1 3
+      t269 <- rdU scalars ((6 * (truncate t244)) + 1)
       v270 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t271 <- rdI vel (3 * (truncate t245))
-        t272 <- rdI vel ((3 * (truncate t245)) + 1)
-        t273 <- rdI vel ((3 * (truncate t245)) + 2)
-        t274 <- rdI scalars ((6 * (truncate t245)) + 1)
+        chkI vel (3 * (truncate t245)) 0 2
+        t271 <- rdU vel (3 * (truncate t245))
+        t272 <- rdU vel ((3 * (truncate t245)) + 1)
+        t273 <- rdU vel ((3 * (truncate t245)) + 2)
+        chkI scalars (6 * (truncate t245)) 1 1
+        t274 <- rdU scalars ((6 * (truncate t245)) + 1)
         setR v270 ((((t250 * t271) + (t251 * t272)) + (t252 * t273)) + (t253 * t274))
         pure ()
       else do
@@ -1039,43 +1142,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t280 = (if (t279 - t277) > 0 then t277 else t279)
       let !t281 = (if (t278 - t280) > 0 then t278 else t280)
       let !s282 = (if (1.0 - (abs (t281 - t281))) > 0 then t281 else 0.0)
-      wrI contacts ((30 * i243) + 25) s282
-      t283 <- rdI scalars ((6 * (truncate t244)) + 2)
-      t284 <- rdI scalars ((6 * (truncate t244)) + 3)
-      t285 <- rdI vel (3 * (truncate t244))
-      t286 <- rdI vel ((3 * (truncate t244)) + 1)
-      t287 <- rdI vel ((3 * (truncate t244)) + 2)
-      t288 <- rdI scalars ((6 * (truncate t244)) + 1)
-      wrI vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
-      wrI vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
-      wrI vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
-      wrI scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
+      wrU contacts ((30 * i243) + 25) s282
+      t283 <- rdU scalars ((6 * (truncate t244)) + 2)
+      t284 <- rdU scalars ((6 * (truncate t244)) + 3)
+      t285 <- rdU vel (3 * (truncate t244))
+      t286 <- rdU vel ((3 * (truncate t244)) + 1)
+      t287 <- rdU vel ((3 * (truncate t244)) + 2)
+      t288 <- rdU scalars ((6 * (truncate t244)) + 1)
+      wrU vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
+      wrU vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
+      wrU vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
+      wrU scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
       if (t245 + 0.5) > 0 then do
-        t289 <- rdI scalars ((6 * (truncate t245)) + 2)
-        t290 <- rdI scalars ((6 * (truncate t245)) + 3)
-        t291 <- rdI vel (3 * (truncate t245))
-        t292 <- rdI vel ((3 * (truncate t245)) + 1)
-        t293 <- rdI vel ((3 * (truncate t245)) + 2)
-        t294 <- rdI scalars ((6 * (truncate t245)) + 1)
-        wrI vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
-        wrI vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
-        wrI vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
-        wrI scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
+        chkI scalars (6 * (truncate t245)) 1 3
+        t289 <- rdU scalars ((6 * (truncate t245)) + 2)
+        t290 <- rdU scalars ((6 * (truncate t245)) + 3)
+        chkI vel (3 * (truncate t245)) 0 2
+        t291 <- rdU vel (3 * (truncate t245))
+        t292 <- rdU vel ((3 * (truncate t245)) + 1)
+        t293 <- rdU vel ((3 * (truncate t245)) + 2)
+        t294 <- rdU scalars ((6 * (truncate t245)) + 1)
+        wrU vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
+        wrU vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
+        wrU vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
+        wrU scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
         pure ()
       else do
         pure ()
-      t295 <- rdI contacts ((30 * i243) + 21)
-      t296 <- rdI contacts ((30 * i243) + 23)
-      t297 <- rdI vel (3 * (truncate t244))
-      t298 <- rdI vel ((3 * (truncate t244)) + 1)
-      t299 <- rdI vel ((3 * (truncate t244)) + 2)
-      t300 <- rdI scalars ((6 * (truncate t244)) + 1)
+      t295 <- rdU contacts ((30 * i243) + 21)
+      t296 <- rdU contacts ((30 * i243) + 23)
+      t297 <- rdU vel (3 * (truncate t244))
+      t298 <- rdU vel ((3 * (truncate t244)) + 1)
+      t299 <- rdU vel ((3 * (truncate t244)) + 2)
+      t300 <- rdU scalars ((6 * (truncate t244)) + 1)
       v301 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t302 <- rdI vel (3 * (truncate t245))
-        t303 <- rdI vel ((3 * (truncate t245)) + 1)
-        t304 <- rdI vel ((3 * (truncate t245)) + 2)
-        t305 <- rdI scalars ((6 * (truncate t245)) + 1)
+        chkI vel (3 * (truncate t245)) 0 2
+        t302 <- rdU vel (3 * (truncate t245))
+        t303 <- rdU vel ((3 * (truncate t245)) + 1)
+        t304 <- rdU vel ((3 * (truncate t245)) + 2)
+        chkI scalars (6 * (truncate t245)) 1 1
+        t305 <- rdU scalars ((6 * (truncate t245)) + 1)
         setR v301 ((((t258 * t302) + (t259 * t303)) + (t260 * t304)) + (t261 * t305))
         pure ()
       else do
@@ -1085,73 +1192,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t308 = (t263 + ((t262 * (t296 - s307)) * t295))
       let !t309 = (if (negate t308) > 0 then 0.0 else t308)
       let !s310 = (if (1.0 - (abs (t309 - t309))) > 0 then t309 else 0.0)
-      wrI contacts ((30 * i243) + 24) s310
-      t311 <- rdI scalars ((6 * (truncate t244)) + 2)
-      t312 <- rdI scalars ((6 * (truncate t244)) + 3)
-      t313 <- rdI vel (3 * (truncate t244))
-      t314 <- rdI vel ((3 * (truncate t244)) + 1)
-      t315 <- rdI vel ((3 * (truncate t244)) + 2)
-      t316 <- rdI scalars ((6 * (truncate t244)) + 1)
-      wrI vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
-      wrI vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
-      wrI vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
-      wrI scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
+      wrU contacts ((30 * i243) + 24) s310
+      t311 <- rdU scalars ((6 * (truncate t244)) + 2)
+      t312 <- rdU scalars ((6 * (truncate t244)) + 3)
+      t313 <- rdU vel (3 * (truncate t244))
+      t314 <- rdU vel ((3 * (truncate t244)) + 1)
+      t315 <- rdU vel ((3 * (truncate t244)) + 2)
+      t316 <- rdU scalars ((6 * (truncate t244)) + 1)
+      wrU vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
+      wrU vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
+      wrU vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
+      wrU scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
       if (t245 + 0.5) > 0 then do
-        t317 <- rdI scalars ((6 * (truncate t245)) + 2)
-        t318 <- rdI scalars ((6 * (truncate t245)) + 3)
-        t319 <- rdI vel (3 * (truncate t245))
-        t320 <- rdI vel ((3 * (truncate t245)) + 1)
-        t321 <- rdI vel ((3 * (truncate t245)) + 2)
-        t322 <- rdI scalars ((6 * (truncate t245)) + 1)
-        wrI vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
-        wrI vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
-        wrI vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
-        wrI scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
+        chkI scalars (6 * (truncate t245)) 1 3
+        t317 <- rdU scalars ((6 * (truncate t245)) + 2)
+        t318 <- rdU scalars ((6 * (truncate t245)) + 3)
+        chkI vel (3 * (truncate t245)) 0 2
+        t319 <- rdU vel (3 * (truncate t245))
+        t320 <- rdU vel ((3 * (truncate t245)) + 1)
+        t321 <- rdU vel ((3 * (truncate t245)) + 2)
+        t322 <- rdU scalars ((6 * (truncate t245)) + 1)
+        wrU vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
+        wrU vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
+        wrU vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
+        wrU scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
         pure ()
       else do
         pure ()
       pure ()
-    t323 <- rdI mouse 0
+    t323 <- rdU mouse 0
     if t323 > 0 then do
-      t324 <- rdI mouse 1
-      t325 <- rdI scalars ((6 * (truncate t324)) + 2)
+      chkI mouse 0 1 1
+      t324 <- rdU mouse 1
+      chkI scalars (6 * (truncate t324)) 2 2
+      t325 <- rdU scalars ((6 * (truncate t324)) + 2)
       if t325 > 0 then do
-        t326 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t327 <- rdI params 0
-        t328 <- rdI pos (3 * (truncate t324))
-        t329 <- rdI pos ((3 * (truncate t324)) + 1)
-        t330 <- rdI pos ((3 * (truncate t324)) + 2)
-        t331 <- rdI normal (3 * (truncate t324))
-        t332 <- rdI normal ((3 * (truncate t324)) + 1)
-        t333 <- rdI normal ((3 * (truncate t324)) + 2)
-        t334 <- rdI axis (3 * (truncate t324))
-        t335 <- rdI axis ((3 * (truncate t324)) + 1)
-        t336 <- rdI axis ((3 * (truncate t324)) + 2)
+        chkI scalars (6 * (truncate t324)) 0 5
+        t326 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t327 <- rdU params 0
+        chkI pos (3 * (truncate t324)) 0 2
+        t328 <- rdU pos (3 * (truncate t324))
+        t329 <- rdU pos ((3 * (truncate t324)) + 1)
+        t330 <- rdU pos ((3 * (truncate t324)) + 2)
+        chkI normal (3 * (truncate t324)) 0 2
+        t331 <- rdU normal (3 * (truncate t324))
+        t332 <- rdU normal ((3 * (truncate t324)) + 1)
+        t333 <- rdU normal ((3 * (truncate t324)) + 2)
+        chkI axis (3 * (truncate t324)) 0 2
+        t334 <- rdU axis (3 * (truncate t324))
+        t335 <- rdU axis ((3 * (truncate t324)) + 1)
+        t336 <- rdU axis ((3 * (truncate t324)) + 2)
         let !s337 = ((t332 * t336) - (t333 * t335))
         let !s338 = ((t333 * t334) - (t331 * t336))
         let !s339 = ((t331 * t335) - (t332 * t334))
-        t340 <- rdI scalars (6 * (truncate t324))
-        t341 <- rdI scalars ((6 * (truncate t324)) + 5)
-        t342 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t343 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t344 <- rdI pos (3 * (truncate t324))
-        t345 <- rdI pos ((3 * (truncate t324)) + 1)
-        t346 <- rdI pos ((3 * (truncate t324)) + 2)
-        t347 <- rdI normal (3 * (truncate t324))
-        t348 <- rdI normal ((3 * (truncate t324)) + 1)
-        t349 <- rdI normal ((3 * (truncate t324)) + 2)
-        t350 <- rdI axis (3 * (truncate t324))
-        t351 <- rdI axis ((3 * (truncate t324)) + 1)
-        t352 <- rdI axis ((3 * (truncate t324)) + 2)
+        t340 <- rdU scalars (6 * (truncate t324))
+        t341 <- rdU scalars ((6 * (truncate t324)) + 5)
+        t342 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t343 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t344 <- rdU pos (3 * (truncate t324))
+        t345 <- rdU pos ((3 * (truncate t324)) + 1)
+        t346 <- rdU pos ((3 * (truncate t324)) + 2)
+        t347 <- rdU normal (3 * (truncate t324))
+        t348 <- rdU normal ((3 * (truncate t324)) + 1)
+        t349 <- rdU normal ((3 * (truncate t324)) + 2)
+        t350 <- rdU axis (3 * (truncate t324))
+        t351 <- rdU axis ((3 * (truncate t324)) + 1)
+        t352 <- rdU axis ((3 * (truncate t324)) + 2)
         let !s353 = ((t348 * t352) - (t349 * t351))
         let !s354 = ((t349 * t350) - (t347 * t352))
         let !s355 = ((t347 * t351) - (t348 * t350))
-        t356 <- rdI scalars (6 * (truncate t324))
-        t357 <- rdI scalars ((6 * (truncate t324)) + 5)
-        t358 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t359 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t360 <- rdI mouse 2
-        t361 <- rdI mouse 3
+        t356 <- rdU scalars (6 * (truncate t324))
+        t357 <- rdU scalars ((6 * (truncate t324)) + 5)
+        t358 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t359 <- rdU scalars ((6 * (truncate t324)) + 3)
+        chkI mouse 0 2 11
+        t360 <- rdU mouse 2
+        t361 <- rdU mouse 3
         let !t362 = (t360 / 4.0)
         let !t363 = (if (abs t362) > 0 then 1.0 else 0.0)
         let !t364 = (t356 + t361)
@@ -1226,12 +1342,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s433 = ((t363 * (t426 * (t432 * t427))) + (t367 * s417))
         let !s434 = ((t363 * (t426 * (t432 * t429))) + (t367 * s418))
         let !s435 = ((t363 * (t426 * (t432 * t430))) + (t367 * s419))
-        t436 <- rdI mouse 4
-        t437 <- rdI mouse 5
-        t438 <- rdI mouse 6
-        t439 <- rdI mouse 7
-        t440 <- rdI mouse 8
-        t441 <- rdI mouse 9
+        t436 <- rdU mouse 4
+        t437 <- rdU mouse 5
+        t438 <- rdU mouse 6
+        t439 <- rdU mouse 7
+        t440 <- rdU mouse 8
+        t441 <- rdU mouse 9
         let !t442 = (recip t325)
         let !t443 = (6.283185307179586 * t439)
         let !s444 = (recip (t327 * ((((2.0 * t442) * t440) * t443) + (t327 * ((t442 * t443) * t443)))))
@@ -1242,11 +1358,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s449 = (s423 + (negate t436))
         let !s450 = (s424 + (negate t437))
         let !s451 = (s425 + (negate t438))
-        t452 <- rdI mouse 10
-        t453 <- rdI vel (3 * (truncate t324))
-        t454 <- rdI vel ((3 * (truncate t324)) + 1)
-        t455 <- rdI vel ((3 * (truncate t324)) + 2)
-        t456 <- rdI scalars ((6 * (truncate t324)) + 1)
+        t452 <- rdU mouse 10
+        chkI vel (3 * (truncate t324)) 0 2
+        t453 <- rdU vel (3 * (truncate t324))
+        t454 <- rdU vel ((3 * (truncate t324)) + 1)
+        t455 <- rdU vel ((3 * (truncate t324)) + 2)
+        t456 <- rdU scalars ((6 * (truncate t324)) + 1)
         let !t457 = (t441 * t327)
         let !t458 = (negate t457)
         let !t459 = (((((s447 * t336) - (s448 * t335)) * t331) + (((s448 * t334) - (s446 * t336)) * t332)) + (((s446 * t335) - (s447 * t334)) * t333))
@@ -1254,38 +1371,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t461 = (if (t460 - t457) > 0 then t457 else t460)
         let !t462 = (if (t458 - t461) > 0 then t458 else t461)
         let !s463 = (if (1.0 - (abs (t462 - t462))) > 0 then t462 else 0.0)
-        wrI mouse 10 s463
-        t464 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t465 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t466 <- rdI vel (3 * (truncate t324))
-        t467 <- rdI vel ((3 * (truncate t324)) + 1)
-        t468 <- rdI vel ((3 * (truncate t324)) + 2)
-        t469 <- rdI scalars ((6 * (truncate t324)) + 1)
-        wrI vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
-        wrI vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
-        wrI vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
-        wrI scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
-        t470 <- rdI mouse 11
-        t471 <- rdI vel (3 * (truncate t324))
-        t472 <- rdI vel ((3 * (truncate t324)) + 1)
-        t473 <- rdI vel ((3 * (truncate t324)) + 2)
-        t474 <- rdI scalars ((6 * (truncate t324)) + 1)
+        wrU mouse 10 s463
+        t464 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t465 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t466 <- rdU vel (3 * (truncate t324))
+        t467 <- rdU vel ((3 * (truncate t324)) + 1)
+        t468 <- rdU vel ((3 * (truncate t324)) + 2)
+        t469 <- rdU scalars ((6 * (truncate t324)) + 1)
+        wrU vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
+        wrU vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
+        wrU vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
+        wrU scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
+        t470 <- rdU mouse 11
+        t471 <- rdU vel (3 * (truncate t324))
+        t472 <- rdU vel ((3 * (truncate t324)) + 1)
+        t473 <- rdU vel ((3 * (truncate t324)) + 2)
+        t474 <- rdU scalars ((6 * (truncate t324)) + 1)
         let !t475 = (((((s447 * s339) - (s448 * s338)) * t331) + (((s448 * s337) - (s446 * s339)) * t332)) + (((s446 * s338) - (s447 * s337)) * t333))
         let !t476 = (t470 + ((negate ((((((s337 * t471) + (s338 * t472)) + (s339 * t473)) + (t475 * t474)) + (s445 * (((s449 * s337) + (s450 * s338)) + (s451 * s339)))) + (s444 * t470))) / (((t325 * (((s337 * s337) + (s338 * s338)) + (s339 * s339))) + ((t326 * t475) * t475)) + s444)))
         let !t477 = (if (t476 - t457) > 0 then t457 else t476)
         let !t478 = (if (t458 - t477) > 0 then t458 else t477)
         let !s479 = (if (1.0 - (abs (t478 - t478))) > 0 then t478 else 0.0)
-        wrI mouse 11 s479
-        t480 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t481 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t482 <- rdI vel (3 * (truncate t324))
-        t483 <- rdI vel ((3 * (truncate t324)) + 1)
-        t484 <- rdI vel ((3 * (truncate t324)) + 2)
-        t485 <- rdI scalars ((6 * (truncate t324)) + 1)
-        wrI vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
-        wrI vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
-        wrI vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
-        wrI scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
+        wrU mouse 11 s479
+        t480 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t481 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t482 <- rdU vel (3 * (truncate t324))
+        t483 <- rdU vel ((3 * (truncate t324)) + 1)
+        t484 <- rdU vel ((3 * (truncate t324)) + 2)
+        t485 <- rdU scalars ((6 * (truncate t324)) + 1)
+        wrU vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
+        wrU vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
+        wrU vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
+        wrU scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
         pure ()
       else do
         pure ()
@@ -1293,51 +1410,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t486 <- rdI meta 0
+  t486 <- rdU meta 0
   loopI 0.0 t486 $ \i487 -> do
     let !d487 = fromIntegral i487 :: Double
-    wrI bodyPrev ((2 * i487) + 1) 0.0
+    chkI bodyPrev (2 * i487) 1 1
+    wrU bodyPrev ((2 * i487) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i488 -> do
     let !d488 = fromIntegral i488 :: Double
-    t489 <- rdI contacts ((30 * i488) + 2)
-    wrI prev (4 * i488) t489
-    t490 <- rdI contacts ((30 * i488) + 3)
-    wrI prev ((4 * i488) + 1) t490
-    t491 <- rdI contacts ((30 * i488) + 24)
-    wrI prev ((4 * i488) + 2) t491
-    t492 <- rdI contacts ((30 * i488) + 25)
-    wrI prev ((4 * i488) + 3) t492
-    t493 <- rdI bodyPrev ((2 * (truncate t489)) + 1)
+    chkI contacts (30 * i488) 2 25
+    t489 <- rdU contacts ((30 * i488) + 2)
+    chkI prev (4 * i488) 0 3
+    wrU prev (4 * i488) t489
+    t490 <- rdU contacts ((30 * i488) + 3)
+    wrU prev ((4 * i488) + 1) t490
+    t491 <- rdU contacts ((30 * i488) + 24)
+    wrU prev ((4 * i488) + 2) t491
+    t492 <- rdU contacts ((30 * i488) + 25)
+    wrU prev ((4 * i488) + 3) t492
+    chkI bodyPrev (2 * (truncate t489)) 1 1
+    t493 <- rdU bodyPrev ((2 * (truncate t489)) + 1)
     if (0.5 - t493) > 0 then do
-      wrI bodyPrev (2 * (truncate t489)) d488
+      chkI bodyPrev (2 * (truncate t489)) 0 0
+      wrU bodyPrev (2 * (truncate t489)) d488
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
+    wrU bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1409,51 +1538,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t85 = (t12 + (t1 * t13))
     let !t86 = (1.0 - (abs ((((((((((((((s48 - s48) + t84) + (s50 - s50)) + (s71 - s71)) + (s72 - s72)) + (s73 - s73)) + (s80 - s80)) + (s81 - s81)) + (s82 - s82)) + (s51 - s51)) + (s52 - s52)) + (s53 - s53)) + (t85 - t85)) + t84)))
     if (if (t83 - t86) > 0 then t86 else t83) > 0 then do
-      wrI pos (3 * i2) s48
-      wrI pos ((3 * i2) + 1) s49
-      wrI pos ((3 * i2) + 2) s50
-      wrI vel (3 * i2) s71
-      wrI vel ((3 * i2) + 1) s72
-      wrI vel ((3 * i2) + 2) s73
-      wrI axis (3 * i2) s80
-      wrI axis ((3 * i2) + 1) s81
-      wrI axis ((3 * i2) + 2) s82
-      wrI normal (3 * i2) s51
-      wrI normal ((3 * i2) + 1) s52
-      wrI normal ((3 * i2) + 2) s53
-      wrI scalars (6 * i2) t85
+      wrU pos (3 * i2) s48
+      wrU pos ((3 * i2) + 1) s49
+      wrU pos ((3 * i2) + 2) s50
+      wrU vel (3 * i2) s71
+      wrU vel ((3 * i2) + 1) s72
+      wrU vel ((3 * i2) + 2) s73
+      wrU axis (3 * i2) s80
+      wrU axis ((3 * i2) + 1) s81
+      wrU axis ((3 * i2) + 2) s82
+      wrU normal (3 * i2) s51
+      wrU normal ((3 * i2) + 1) s52
+      wrU normal ((3 * i2) + 2) s53
+      wrU scalars (6 * i2) t85
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t87 <- rdI meta 1
-      wrI meta 1 (t87 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t87 <- rdU meta 1
+      wrU meta 1 (t87 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1462,7 +1599,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1504,9 +1642,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1536,9 +1675,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1568,9 +1708,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1600,9 +1741,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1627,18 +1769,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,34 +28,41 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (t12 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-4.0) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wrI vel (3 * i3) t15
-        wrI vel ((3 * i3) + 1) t16
-        wrI vel ((3 * i3) + 2) t17
+        wrU vel (3 * i3) t15
+        wrU vel ((3 * i3) + 1) t16
+        wrU vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rdI meta 1
-        wrI meta 1 (t18 + 1.0)
+        chkI meta 0 1 1
+        t18 <- rdU meta 1
+        wrU meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,12 +72,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -80,54 +89,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -143,19 +163,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -176,16 +202,18 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rdI normal (3 * i31)
-    t68 <- rdI normal ((3 * i31) + 1)
-    t69 <- rdI normal ((3 * i31) + 2)
+    chkI normal (3 * i31) 0 2
+    t67 <- rdU normal (3 * i31)
+    t68 <- rdU normal ((3 * i31) + 1)
+    t69 <- rdU normal ((3 * i31) + 2)
     v70 <- newR 0.0
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      t73 <- rdI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
+      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
+      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
+      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
       let !s76 = (negate t74)
       t77 <- getR v70
       if ((negate s76) - t77) > 0 then do
@@ -198,9 +226,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t78 <- getR v70
     if t78 > 0 then do
       t79 <- getR v71
-      t80 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3))
-      t81 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 1)
-      t82 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) 0 2
+      t80 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3))
+      t81 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 1)
+      t82 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 2)
       let !s83 = (negate t67)
       v84 <- newR 1.0e300
       v85 <- newR (-1.0e300)
@@ -208,9 +237,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v87 <- newR (-1.0)
       loopI 0.0 24.0 $ \i88 -> do
         let !d88 = fromIntegral i88 :: Double
-        t89 <- rdI verts (3 * ((((97 * i31) + 1) + (i88 * 4)) + 3))
-        t90 <- rdI verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 1)
-        t91 <- rdI verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) 0 2
+        t89 <- rdU verts (3 * ((((97 * i31) + 1) + (i88 * 4)) + 3))
+        t90 <- rdU verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 1)
+        t91 <- rdU verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 2)
         if t90 > 0 then do
           let !s92 = ((t89 * t69) + (t91 * s83))
           t93 <- getR v84
@@ -233,176 +263,194 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t95 <- getR v86
       t96 <- getR v87
-      t97 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3))
-      t98 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 1)
-      t99 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) 0 2
+      t97 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3))
+      t98 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 1)
+      t99 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 2)
       let !s100 = (negate t98)
-      t101 <- rdI meta 2
-      t102 <- rdI meta 3
+      t101 <- rdU meta 2
+      t102 <- rdU meta 3
       if (((8.0 * (if (1.0 - t102) > 0 then 1.0 else t102)) - t101) - 0.5) > 0 then do
-        wrI meta 2 (t101 + 1.0)
-        t103 <- rdI pos (3 * i31)
-        t104 <- rdI pos ((3 * i31) + 1)
-        t105 <- rdI pos ((3 * i31) + 2)
-        t106 <- rdI normal (3 * i31)
-        t107 <- rdI normal ((3 * i31) + 1)
-        t108 <- rdI normal ((3 * i31) + 2)
-        t109 <- rdI axis (3 * i31)
-        t110 <- rdI axis ((3 * i31) + 1)
-        t111 <- rdI axis ((3 * i31) + 2)
+        wrU meta 2 (t101 + 1.0)
+        t103 <- rdU pos (3 * i31)
+        t104 <- rdU pos ((3 * i31) + 1)
+        t105 <- rdU pos ((3 * i31) + 2)
+        t106 <- rdU normal (3 * i31)
+        t107 <- rdU normal ((3 * i31) + 1)
+        t108 <- rdU normal ((3 * i31) + 2)
+        chkI axis (3 * i31) 0 2
+        t109 <- rdU axis (3 * i31)
+        t110 <- rdU axis ((3 * i31) + 1)
+        t111 <- rdU axis ((3 * i31) + 2)
         let !s112 = ((t107 * t111) - (t108 * t110))
         let !s113 = ((t108 * t109) - (t106 * t111))
         let !s114 = ((t106 * t110) - (t107 * t109))
-        t115 <- rdI scalars (6 * i31)
-        t116 <- rdI scalars ((6 * i31) + 5)
-        t117 <- rdI scalars ((6 * i31) + 2)
-        t118 <- rdI scalars ((6 * i31) + 3)
-        wrI contacts (30 * (truncate t101)) d31
-        wrI contacts ((30 * (truncate t101)) + 1) (-1.0)
-        wrI contacts ((30 * (truncate t101)) + 2) d31
-        wrI contacts ((30 * (truncate t101)) + 3) 8.0
-        wrI contacts ((30 * (truncate t101)) + 4) (negate ((negate t107) * t106))
-        wrI contacts (((30 * (truncate t101)) + 4) + 1) ((-1.0) + (negate ((negate t107) * t107)))
-        wrI contacts (((30 * (truncate t101)) + 4) + 2) (negate ((negate t107) * t108))
-        wrI contacts ((30 * (truncate t101)) + 7) (((t99 + (negate t105)) * t106) + ((negate (t97 + (negate t103))) * t108))
-        wrI contacts ((30 * (truncate t101)) + 12) (t108 + (negate (((t106 * t108) + (t108 * (negate t106))) * t106)))
-        wrI contacts (((30 * (truncate t101)) + 12) + 1) (negate (((t106 * t108) + (t108 * (negate t106))) * t107))
+        chkI scalars (6 * i31) 0 0
+        t115 <- rdU scalars (6 * i31)
+        t116 <- rdU scalars ((6 * i31) + 5)
+        t117 <- rdU scalars ((6 * i31) + 2)
+        t118 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t101)) 0 29
+        wrU contacts (30 * (truncate t101)) d31
+        wrU contacts ((30 * (truncate t101)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t101)) + 2) d31
+        wrU contacts ((30 * (truncate t101)) + 3) 8.0
+        wrU contacts ((30 * (truncate t101)) + 4) (negate ((negate t107) * t106))
+        wrU contacts ((30 * (truncate t101)) + 5) ((-1.0) + (negate ((negate t107) * t107)))
+        wrU contacts ((30 * (truncate t101)) + 6) (negate ((negate t107) * t108))
+        wrU contacts ((30 * (truncate t101)) + 7) (((t99 + (negate t105)) * t106) + ((negate (t97 + (negate t103))) * t108))
+        wrU contacts ((30 * (truncate t101)) + 12) (t108 + (negate (((t106 * t108) + (t108 * (negate t106))) * t106)))
+        wrU contacts ((30 * (truncate t101)) + 13) (negate (((t106 * t108) + (t108 * (negate t106))) * t107))
         let !t119 = (negate t106)
-        wrI contacts (((30 * (truncate t101)) + 12) + 2) (t119 + (negate (((t106 * t108) + (t108 * t119)) * t108)))
+        wrU contacts ((30 * (truncate t101)) + 14) (t119 + (negate (((t106 * t108) + (t108 * t119)) * t108)))
         let !t120 = (t98 + (negate t104))
-        wrI contacts ((30 * (truncate t101)) + 15) ((((t120 * t119) * t106) + ((((t99 + (negate t105)) * t108) - ((t97 + (negate t103)) * t119)) * t107)) + ((negate (t120 * t108)) * t108))
-        wrI contacts ((30 * (truncate t101)) + 20) (negate s100)
-        wrI contacts ((30 * (truncate t101)) + 26) 1.0
-        wrI contacts ((30 * (truncate t101)) + 27) t97
-        wrI contacts (((30 * (truncate t101)) + 27) + 1) t98
-        wrI contacts (((30 * (truncate t101)) + 27) + 2) t99
+        wrU contacts ((30 * (truncate t101)) + 15) ((((t120 * t119) * t106) + ((((t99 + (negate t105)) * t108) - ((t97 + (negate t103)) * t119)) * t107)) + ((negate (t120 * t108)) * t108))
+        wrU contacts ((30 * (truncate t101)) + 20) (negate s100)
+        wrU contacts ((30 * (truncate t101)) + 26) 1.0
+        wrU contacts ((30 * (truncate t101)) + 27) t97
+        wrU contacts ((30 * (truncate t101)) + 28) t98
+        wrU contacts ((30 * (truncate t101)) + 29) t99
         if (-0.5) > 0 then do
-          t121 <- rdI pos (-3)
-          t122 <- rdI pos (-2)
-          t123 <- rdI pos (-1)
-          t124 <- rdI normal (-3)
-          t125 <- rdI normal (-2)
-          t126 <- rdI normal (-1)
-          t127 <- rdI axis (-3)
-          t128 <- rdI axis (-2)
-          t129 <- rdI axis (-1)
+          chkI pos 0 (-3) (-1)
+          t121 <- rdU pos (-3)
+          t122 <- rdU pos (-2)
+          t123 <- rdU pos (-1)
+          chkI normal 0 (-3) (-1)
+          t124 <- rdU normal (-3)
+          t125 <- rdU normal (-2)
+          t126 <- rdU normal (-1)
+          chkI axis 0 (-3) (-1)
+          t127 <- rdU axis (-3)
+          t128 <- rdU axis (-2)
+          t129 <- rdU axis (-1)
           let !s130 = ((t125 * t129) - (t126 * t128))
           let !s131 = ((t126 * t127) - (t124 * t129))
           let !s132 = ((t124 * t128) - (t125 * t127))
-          t133 <- rdI scalars (-6)
-          t134 <- rdI scalars (-1)
-          t135 <- rdI scalars (-4)
-          t136 <- rdI scalars (-3)
-          wrI contacts ((30 * (truncate t101)) + 8) (negate ((negate t125) * t124))
-          wrI contacts (((30 * (truncate t101)) + 8) + 1) ((-1.0) + (negate ((negate t125) * t125)))
-          wrI contacts (((30 * (truncate t101)) + 8) + 2) (negate ((negate t125) * t126))
-          wrI contacts ((30 * (truncate t101)) + 11) (((t99 + (negate t123)) * t124) + ((negate (t97 + (negate t121))) * t126))
-          wrI contacts ((30 * (truncate t101)) + 16) (t108 + (negate (((t124 * t108) + (t126 * t119)) * t124)))
-          wrI contacts (((30 * (truncate t101)) + 16) + 1) (negate (((t124 * t108) + (t126 * t119)) * t125))
-          wrI contacts (((30 * (truncate t101)) + 16) + 2) (t119 + (negate (((t124 * t108) + (t126 * t119)) * t126)))
+          chkI scalars 0 (-6) (-1)
+          t133 <- rdU scalars (-6)
+          t134 <- rdU scalars (-1)
+          t135 <- rdU scalars (-4)
+          t136 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t101)) + 8) (negate ((negate t125) * t124))
+          wrU contacts ((30 * (truncate t101)) + 9) ((-1.0) + (negate ((negate t125) * t125)))
+          wrU contacts ((30 * (truncate t101)) + 10) (negate ((negate t125) * t126))
+          wrU contacts ((30 * (truncate t101)) + 11) (((t99 + (negate t123)) * t124) + ((negate (t97 + (negate t121))) * t126))
+          wrU contacts ((30 * (truncate t101)) + 16) (t108 + (negate (((t124 * t108) + (t126 * t119)) * t124)))
+          wrU contacts ((30 * (truncate t101)) + 17) (negate (((t124 * t108) + (t126 * t119)) * t125))
+          wrU contacts ((30 * (truncate t101)) + 18) (t119 + (negate (((t124 * t108) + (t126 * t119)) * t126)))
           let !t137 = (t98 + (negate t122))
-          wrI contacts ((30 * (truncate t101)) + 19) ((((t137 * t119) * t124) + ((((t99 + (negate t123)) * t108) - ((t97 + (negate t121)) * t119)) * t125)) + ((negate (t137 * t108)) * t126))
+          wrU contacts ((30 * (truncate t101)) + 19) ((((t137 * t119) * t124) + ((((t99 + (negate t123)) * t108) - ((t97 + (negate t121)) * t119)) * t125)) + ((negate (t137 * t108)) * t126))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t101)) + 8) 0.0
-          wrI contacts (((30 * (truncate t101)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t101)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t101)) + 11) 0.0
-          wrI contacts ((30 * (truncate t101)) + 16) 0.0
-          wrI contacts (((30 * (truncate t101)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t101)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t101)) + 19) 0.0
+          wrU contacts ((30 * (truncate t101)) + 8) 0.0
+          wrU contacts ((30 * (truncate t101)) + 9) 0.0
+          wrU contacts ((30 * (truncate t101)) + 10) 0.0
+          wrU contacts ((30 * (truncate t101)) + 11) 0.0
+          wrU contacts ((30 * (truncate t101)) + 16) 0.0
+          wrU contacts ((30 * (truncate t101)) + 17) 0.0
+          wrU contacts ((30 * (truncate t101)) + 18) 0.0
+          wrU contacts ((30 * (truncate t101)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t138 <- rdI meta 6
-        wrI meta 6 (t138 + 1.0)
+        chkI meta 0 6 6
+        t138 <- rdU meta 6
+        wrU meta 6 (t138 + 1.0)
         pure ()
       if (abs (t96 - t95)) > 0 then do
-        t139 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3))
-        t140 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 1)
-        t141 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) 0 2
+        t139 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3))
+        t140 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 1)
+        t141 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 2)
         let !s142 = (negate t140)
-        t143 <- rdI meta 2
-        t144 <- rdI meta 3
+        t143 <- rdU meta 2
+        t144 <- rdU meta 3
         if (((8.0 * (if (1.0 - t144) > 0 then 1.0 else t144)) - t143) - 0.5) > 0 then do
-          wrI meta 2 (t143 + 1.0)
-          t145 <- rdI pos (3 * i31)
-          t146 <- rdI pos ((3 * i31) + 1)
-          t147 <- rdI pos ((3 * i31) + 2)
-          t148 <- rdI normal (3 * i31)
-          t149 <- rdI normal ((3 * i31) + 1)
-          t150 <- rdI normal ((3 * i31) + 2)
-          t151 <- rdI axis (3 * i31)
-          t152 <- rdI axis ((3 * i31) + 1)
-          t153 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t143 + 1.0)
+          t145 <- rdU pos (3 * i31)
+          t146 <- rdU pos ((3 * i31) + 1)
+          t147 <- rdU pos ((3 * i31) + 2)
+          t148 <- rdU normal (3 * i31)
+          t149 <- rdU normal ((3 * i31) + 1)
+          t150 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t151 <- rdU axis (3 * i31)
+          t152 <- rdU axis ((3 * i31) + 1)
+          t153 <- rdU axis ((3 * i31) + 2)
           let !s154 = ((t149 * t153) - (t150 * t152))
           let !s155 = ((t150 * t151) - (t148 * t153))
           let !s156 = ((t148 * t152) - (t149 * t151))
-          t157 <- rdI scalars (6 * i31)
-          t158 <- rdI scalars ((6 * i31) + 5)
-          t159 <- rdI scalars ((6 * i31) + 2)
-          t160 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t143)) d31
-          wrI contacts ((30 * (truncate t143)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t143)) + 2) d31
-          wrI contacts ((30 * (truncate t143)) + 3) 9.0
-          wrI contacts ((30 * (truncate t143)) + 4) (negate ((negate t149) * t148))
-          wrI contacts (((30 * (truncate t143)) + 4) + 1) ((-1.0) + (negate ((negate t149) * t149)))
-          wrI contacts (((30 * (truncate t143)) + 4) + 2) (negate ((negate t149) * t150))
-          wrI contacts ((30 * (truncate t143)) + 7) (((t141 + (negate t147)) * t148) + ((negate (t139 + (negate t145))) * t150))
-          wrI contacts ((30 * (truncate t143)) + 12) (t150 + (negate (((t148 * t150) + (t150 * (negate t148))) * t148)))
-          wrI contacts (((30 * (truncate t143)) + 12) + 1) (negate (((t148 * t150) + (t150 * (negate t148))) * t149))
+          chkI scalars (6 * i31) 0 0
+          t157 <- rdU scalars (6 * i31)
+          t158 <- rdU scalars ((6 * i31) + 5)
+          t159 <- rdU scalars ((6 * i31) + 2)
+          t160 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t143)) 0 29
+          wrU contacts (30 * (truncate t143)) d31
+          wrU contacts ((30 * (truncate t143)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t143)) + 2) d31
+          wrU contacts ((30 * (truncate t143)) + 3) 9.0
+          wrU contacts ((30 * (truncate t143)) + 4) (negate ((negate t149) * t148))
+          wrU contacts ((30 * (truncate t143)) + 5) ((-1.0) + (negate ((negate t149) * t149)))
+          wrU contacts ((30 * (truncate t143)) + 6) (negate ((negate t149) * t150))
+          wrU contacts ((30 * (truncate t143)) + 7) (((t141 + (negate t147)) * t148) + ((negate (t139 + (negate t145))) * t150))
+          wrU contacts ((30 * (truncate t143)) + 12) (t150 + (negate (((t148 * t150) + (t150 * (negate t148))) * t148)))
+          wrU contacts ((30 * (truncate t143)) + 13) (negate (((t148 * t150) + (t150 * (negate t148))) * t149))
           let !t161 = (negate t148)
-          wrI contacts (((30 * (truncate t143)) + 12) + 2) (t161 + (negate (((t148 * t150) + (t150 * t161)) * t150)))
+          wrU contacts ((30 * (truncate t143)) + 14) (t161 + (negate (((t148 * t150) + (t150 * t161)) * t150)))
           let !t162 = (t140 + (negate t146))
-          wrI contacts ((30 * (truncate t143)) + 15) ((((t162 * t161) * t148) + ((((t141 + (negate t147)) * t150) - ((t139 + (negate t145)) * t161)) * t149)) + ((negate (t162 * t150)) * t150))
-          wrI contacts ((30 * (truncate t143)) + 20) (negate s142)
-          wrI contacts ((30 * (truncate t143)) + 26) 1.0
-          wrI contacts ((30 * (truncate t143)) + 27) t139
-          wrI contacts (((30 * (truncate t143)) + 27) + 1) t140
-          wrI contacts (((30 * (truncate t143)) + 27) + 2) t141
+          wrU contacts ((30 * (truncate t143)) + 15) ((((t162 * t161) * t148) + ((((t141 + (negate t147)) * t150) - ((t139 + (negate t145)) * t161)) * t149)) + ((negate (t162 * t150)) * t150))
+          wrU contacts ((30 * (truncate t143)) + 20) (negate s142)
+          wrU contacts ((30 * (truncate t143)) + 26) 1.0
+          wrU contacts ((30 * (truncate t143)) + 27) t139
+          wrU contacts ((30 * (truncate t143)) + 28) t140
+          wrU contacts ((30 * (truncate t143)) + 29) t141
           if (-0.5) > 0 then do
-            t163 <- rdI pos (-3)
-            t164 <- rdI pos (-2)
-            t165 <- rdI pos (-1)
-            t166 <- rdI normal (-3)
-            t167 <- rdI normal (-2)
-            t168 <- rdI normal (-1)
-            t169 <- rdI axis (-3)
-            t170 <- rdI axis (-2)
-            t171 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t163 <- rdU pos (-3)
+            t164 <- rdU pos (-2)
+            t165 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t166 <- rdU normal (-3)
+            t167 <- rdU normal (-2)
+            t168 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t169 <- rdU axis (-3)
+            t170 <- rdU axis (-2)
+            t171 <- rdU axis (-1)
             let !s172 = ((t167 * t171) - (t168 * t170))
             let !s173 = ((t168 * t169) - (t166 * t171))
             let !s174 = ((t166 * t170) - (t167 * t169))
-            t175 <- rdI scalars (-6)
-            t176 <- rdI scalars (-1)
-            t177 <- rdI scalars (-4)
-            t178 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t143)) + 8) (negate ((negate t167) * t166))
-            wrI contacts (((30 * (truncate t143)) + 8) + 1) ((-1.0) + (negate ((negate t167) * t167)))
-            wrI contacts (((30 * (truncate t143)) + 8) + 2) (negate ((negate t167) * t168))
-            wrI contacts ((30 * (truncate t143)) + 11) (((t141 + (negate t165)) * t166) + ((negate (t139 + (negate t163))) * t168))
-            wrI contacts ((30 * (truncate t143)) + 16) (t150 + (negate (((t166 * t150) + (t168 * t161)) * t166)))
-            wrI contacts (((30 * (truncate t143)) + 16) + 1) (negate (((t166 * t150) + (t168 * t161)) * t167))
-            wrI contacts (((30 * (truncate t143)) + 16) + 2) (t161 + (negate (((t166 * t150) + (t168 * t161)) * t168)))
+            chkI scalars 0 (-6) (-1)
+            t175 <- rdU scalars (-6)
+            t176 <- rdU scalars (-1)
+            t177 <- rdU scalars (-4)
+            t178 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t143)) + 8) (negate ((negate t167) * t166))
+            wrU contacts ((30 * (truncate t143)) + 9) ((-1.0) + (negate ((negate t167) * t167)))
+            wrU contacts ((30 * (truncate t143)) + 10) (negate ((negate t167) * t168))
+            wrU contacts ((30 * (truncate t143)) + 11) (((t141 + (negate t165)) * t166) + ((negate (t139 + (negate t163))) * t168))
+            wrU contacts ((30 * (truncate t143)) + 16) (t150 + (negate (((t166 * t150) + (t168 * t161)) * t166)))
+            wrU contacts ((30 * (truncate t143)) + 17) (negate (((t166 * t150) + (t168 * t161)) * t167))
+            wrU contacts ((30 * (truncate t143)) + 18) (t161 + (negate (((t166 * t150) + (t168 * t161)) * t168)))
             let !t179 = (t140 + (negate t164))
-            wrI contacts ((30 * (truncate t143)) + 19) ((((t179 * t161) * t166) + ((((t141 + (negate t165)) * t150) - ((t139 + (negate t163)) * t161)) * t167)) + ((negate (t179 * t150)) * t168))
+            wrU contacts ((30 * (truncate t143)) + 19) ((((t179 * t161) * t166) + ((((t141 + (negate t165)) * t150) - ((t139 + (negate t163)) * t161)) * t167)) + ((negate (t179 * t150)) * t168))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t143)) + 8) 0.0
-            wrI contacts (((30 * (truncate t143)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t143)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t143)) + 11) 0.0
-            wrI contacts ((30 * (truncate t143)) + 16) 0.0
-            wrI contacts (((30 * (truncate t143)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t143)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t143)) + 19) 0.0
+            wrU contacts ((30 * (truncate t143)) + 8) 0.0
+            wrU contacts ((30 * (truncate t143)) + 9) 0.0
+            wrU contacts ((30 * (truncate t143)) + 10) 0.0
+            wrU contacts ((30 * (truncate t143)) + 11) 0.0
+            wrU contacts ((30 * (truncate t143)) + 16) 0.0
+            wrU contacts ((30 * (truncate t143)) + 17) 0.0
+            wrU contacts ((30 * (truncate t143)) + 18) 0.0
+            wrU contacts ((30 * (truncate t143)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t180 <- rdI meta 6
-          wrI meta 6 (t180 + 1.0)
+          chkI meta 0 6 6
+          t180 <- rdU meta 6
+          wrU meta 6 (t180 + 1.0)
           pure ()
         pure ()
       else do
@@ -410,16 +458,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t181 <- rdI verts (3 * (97 * i31))
-    t182 <- rdI verts ((3 * (97 * i31)) + 1)
-    t183 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t181 <- rdU verts (3 * (97 * i31))
+    t182 <- rdU verts ((3 * (97 * i31)) + 1)
+    t183 <- rdU verts ((3 * (97 * i31)) + 2)
     v184 <- newR 1.0
     loopI 0.0 24.0 $ \i185 -> do
       let !d185 = fromIntegral i185 :: Double
-      t186 <- rdI verts (3 * ((((97 * i31) + 1) + (i185 * 4)) + 3))
-      t187 <- rdI verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 1)
-      t188 <- rdI verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 2)
-      t189 <- rdI radii ((24 * i31) + i185)
+      chkI verts (3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) 0 2
+      t186 <- rdU verts (3 * ((((97 * i31) + 1) + (i185 * 4)) + 3))
+      t187 <- rdU verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 1)
+      t188 <- rdU verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i185) 0 0
+      t189 <- rdU radii ((24 * i31) + i185)
       t190 <- getR v184
       let !t191 = (t186 + (negate t181))
       let !t192 = (t187 + (negate t182))
@@ -438,27 +489,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v202 <- newR 0.0
       loopI 0.0 24.0 $ \i203 -> do
         let !d203 = fromIntegral i203 :: Double
-        t204 <- rdI radii ((24 * i31) + i203)
+        chkI radii ((24 * i31) + i203) 0 0
+        t204 <- rdU radii ((24 * i31) + i203)
         loopI 6.0 12.0 $ \i205 -> do
           let !d205 = fromIntegral i205 :: Double
           let !t206 = (d203 + d205)
-          t207 <- rdI radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0)))))) 0 0
+          t207 <- rdU radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0))))))
           loopI 1.0 4.0 $ \i208 -> do
             let !d208 = fromIntegral i208 :: Double
-            t209 <- rdI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1)))
-            t210 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 1)
-            t211 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 2)
-            t212 <- rdI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + i208))
-            t213 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 1)
-            t214 <- rdI verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) 0 2
+            t209 <- rdU verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1)))
+            t210 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 1)
+            t211 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) 0 2
+            t212 <- rdU verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + i208))
+            t213 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 1)
+            t214 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 2)
             loopI 1.0 4.0 $ \i215 -> do
               let !d215 = fromIntegral i215 :: Double
-              t216 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))))
-              t217 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 1.0))
-              t218 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 2.0))
-              t219 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)))
-              t220 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 1.0))
-              t221 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0)))) 0 0
+              t216 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 1.0)) 0 0
+              t217 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 2.0)) 0 0
+              t218 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215))) 0 0
+              t219 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 1.0)) 0 0
+              t220 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 2.0)) 0 0
+              t221 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 2.0))
               t222 <- getR v196
               let !t223 = (negate t216)
               let !t224 = (t219 + t223)
@@ -498,12 +559,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t258 = ((0.3 * ((if (t207 - t204) > 0 then t204 else t207) / 4.0)) - (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257))))
               if (if (t254 - t258) > 0 then t258 else t254) > 0 then do
                 setR v196 (0.5 * ((t204 - ((t204 * (d208 + t251)) / 4.0)) + (t207 - ((t207 * (d215 + t253)) / 4.0))))
-                t259 <- rdI verts (3 * (((97 * i31) + 1) + (i203 * 4)))
-                t260 <- rdI verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 1)
-                t261 <- rdI verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 2)
-                t262 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))))
-                t263 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0))
-                t264 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i203 * 4))) 0 2
+                t259 <- rdU verts (3 * (((97 * i31) + 1) + (i203 * 4)))
+                t260 <- rdU verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 1)
+                t261 <- rdU verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)))) 0 0
+                t262 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t263 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t264 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0))
                 setR v197 (t209 + (t251 * t230))
                 setR v198 (t210 + (t251 * t231))
                 setR v199 (t211 + (t251 * t232))
@@ -554,89 +619,97 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s298 = (t297 * t293)
         let !s299 = (t297 * t294)
         let !s300 = (t297 * t295)
-        t301 <- rdI meta 2
-        t302 <- rdI meta 3
+        t301 <- rdU meta 2
+        t302 <- rdU meta 3
         if (((8.0 * (if (1.0 - t302) > 0 then 1.0 else t302)) - t301) - 0.5) > 0 then do
-          wrI meta 2 (t301 + 1.0)
-          t303 <- rdI pos (3 * i31)
-          t304 <- rdI pos ((3 * i31) + 1)
-          t305 <- rdI pos ((3 * i31) + 2)
-          t306 <- rdI normal (3 * i31)
-          t307 <- rdI normal ((3 * i31) + 1)
-          t308 <- rdI normal ((3 * i31) + 2)
-          t309 <- rdI axis (3 * i31)
-          t310 <- rdI axis ((3 * i31) + 1)
-          t311 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t301 + 1.0)
+          t303 <- rdU pos (3 * i31)
+          t304 <- rdU pos ((3 * i31) + 1)
+          t305 <- rdU pos ((3 * i31) + 2)
+          t306 <- rdU normal (3 * i31)
+          t307 <- rdU normal ((3 * i31) + 1)
+          t308 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t309 <- rdU axis (3 * i31)
+          t310 <- rdU axis ((3 * i31) + 1)
+          t311 <- rdU axis ((3 * i31) + 2)
           let !s312 = ((t307 * t311) - (t308 * t310))
           let !s313 = ((t308 * t309) - (t306 * t311))
           let !s314 = ((t306 * t310) - (t307 * t309))
-          t315 <- rdI scalars (6 * i31)
-          t316 <- rdI scalars ((6 * i31) + 5)
-          t317 <- rdI scalars ((6 * i31) + 2)
-          t318 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t301)) d31
-          wrI contacts ((30 * (truncate t301)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t301)) + 2) d31
-          wrI contacts ((30 * (truncate t301)) + 3) 12.0
-          wrI contacts ((30 * (truncate t301)) + 4) (s298 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t306)))
-          wrI contacts (((30 * (truncate t301)) + 4) + 1) (s299 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t307)))
-          wrI contacts (((30 * (truncate t301)) + 4) + 2) (s300 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t308)))
-          wrI contacts ((30 * (truncate t301)) + 7) 0.0
-          wrI contacts ((30 * (truncate t301)) + 12) 0.0
-          wrI contacts (((30 * (truncate t301)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t301)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t301)) + 15) 0.0
-          wrI contacts ((30 * (truncate t301)) + 20) t276
-          wrI contacts ((30 * (truncate t301)) + 26) 0.6
-          wrI contacts ((30 * (truncate t301)) + 27) t277
-          wrI contacts (((30 * (truncate t301)) + 27) + 1) t278
-          wrI contacts (((30 * (truncate t301)) + 27) + 2) t279
+          chkI scalars (6 * i31) 0 0
+          t315 <- rdU scalars (6 * i31)
+          t316 <- rdU scalars ((6 * i31) + 5)
+          t317 <- rdU scalars ((6 * i31) + 2)
+          t318 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t301)) 0 29
+          wrU contacts (30 * (truncate t301)) d31
+          wrU contacts ((30 * (truncate t301)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t301)) + 2) d31
+          wrU contacts ((30 * (truncate t301)) + 3) 12.0
+          wrU contacts ((30 * (truncate t301)) + 4) (s298 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t306)))
+          wrU contacts ((30 * (truncate t301)) + 5) (s299 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t307)))
+          wrU contacts ((30 * (truncate t301)) + 6) (s300 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t308)))
+          wrU contacts ((30 * (truncate t301)) + 7) 0.0
+          wrU contacts ((30 * (truncate t301)) + 12) 0.0
+          wrU contacts ((30 * (truncate t301)) + 13) 0.0
+          wrU contacts ((30 * (truncate t301)) + 14) 0.0
+          wrU contacts ((30 * (truncate t301)) + 15) 0.0
+          wrU contacts ((30 * (truncate t301)) + 20) t276
+          wrU contacts ((30 * (truncate t301)) + 26) 0.6
+          wrU contacts ((30 * (truncate t301)) + 27) t277
+          wrU contacts ((30 * (truncate t301)) + 28) t278
+          wrU contacts ((30 * (truncate t301)) + 29) t279
           if (-0.5) > 0 then do
-            t319 <- rdI pos (-3)
-            t320 <- rdI pos (-2)
-            t321 <- rdI pos (-1)
-            t322 <- rdI normal (-3)
-            t323 <- rdI normal (-2)
-            t324 <- rdI normal (-1)
-            t325 <- rdI axis (-3)
-            t326 <- rdI axis (-2)
-            t327 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t319 <- rdU pos (-3)
+            t320 <- rdU pos (-2)
+            t321 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t322 <- rdU normal (-3)
+            t323 <- rdU normal (-2)
+            t324 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t325 <- rdU axis (-3)
+            t326 <- rdU axis (-2)
+            t327 <- rdU axis (-1)
             let !s328 = ((t323 * t327) - (t324 * t326))
             let !s329 = ((t324 * t325) - (t322 * t327))
             let !s330 = ((t322 * t326) - (t323 * t325))
-            t331 <- rdI scalars (-6)
-            t332 <- rdI scalars (-1)
-            t333 <- rdI scalars (-4)
-            t334 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t301)) + 8) (s298 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t322)))
-            wrI contacts (((30 * (truncate t301)) + 8) + 1) (s299 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t323)))
-            wrI contacts (((30 * (truncate t301)) + 8) + 2) (s300 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t324)))
+            chkI scalars 0 (-6) (-1)
+            t331 <- rdU scalars (-6)
+            t332 <- rdU scalars (-1)
+            t333 <- rdU scalars (-4)
+            t334 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t301)) + 8) (s298 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t322)))
+            wrU contacts ((30 * (truncate t301)) + 9) (s299 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t323)))
+            wrU contacts ((30 * (truncate t301)) + 10) (s300 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t324)))
             let !t335 = (t278 + (negate t320))
             let !t336 = (t279 + (negate t321))
             let !t337 = (t277 + (negate t319))
-            wrI contacts ((30 * (truncate t301)) + 11) (((((t335 * s300) - (t336 * s299)) * t322) + (((t336 * s298) - (t337 * s300)) * t323)) + (((t337 * s299) - (t335 * s298)) * t324))
+            wrU contacts ((30 * (truncate t301)) + 11) (((((t335 * s300) - (t336 * s299)) * t322) + (((t336 * s298) - (t337 * s300)) * t323)) + (((t337 * s299) - (t335 * s298)) * t324))
             let !t338 = ((t307 * s300) - (t308 * s299))
-            wrI contacts ((30 * (truncate t301)) + 16) (t338 + (negate ((((t322 * t338) + (t323 * ((t308 * s298) - (t306 * s300)))) + (t324 * ((t306 * s299) - (t307 * s298)))) * t322)))
+            wrU contacts ((30 * (truncate t301)) + 16) (t338 + (negate ((((t322 * t338) + (t323 * ((t308 * s298) - (t306 * s300)))) + (t324 * ((t306 * s299) - (t307 * s298)))) * t322)))
             let !t339 = ((t308 * s298) - (t306 * s300))
-            wrI contacts (((30 * (truncate t301)) + 16) + 1) (t339 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * ((t306 * s299) - (t307 * s298)))) * t323)))
+            wrU contacts ((30 * (truncate t301)) + 17) (t339 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * ((t306 * s299) - (t307 * s298)))) * t323)))
             let !t340 = ((t306 * s299) - (t307 * s298))
-            wrI contacts (((30 * (truncate t301)) + 16) + 2) (t340 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * t340)) * t324)))
-            wrI contacts ((30 * (truncate t301)) + 19) (((((t335 * t340) - (t336 * t339)) * t322) + (((t336 * t338) - (t337 * t340)) * t323)) + (((t337 * t339) - (t335 * t338)) * t324))
+            wrU contacts ((30 * (truncate t301)) + 18) (t340 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * t340)) * t324)))
+            wrU contacts ((30 * (truncate t301)) + 19) (((((t335 * t340) - (t336 * t339)) * t322) + (((t336 * t338) - (t337 * t340)) * t323)) + (((t337 * t339) - (t335 * t338)) * t324))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t301)) + 8) 0.0
-            wrI contacts (((30 * (truncate t301)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t301)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t301)) + 11) 0.0
-            wrI contacts ((30 * (truncate t301)) + 16) 0.0
-            wrI contacts (((30 * (truncate t301)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t301)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t301)) + 19) 0.0
+            wrU contacts ((30 * (truncate t301)) + 8) 0.0
+            wrU contacts ((30 * (truncate t301)) + 9) 0.0
+            wrU contacts ((30 * (truncate t301)) + 10) 0.0
+            wrU contacts ((30 * (truncate t301)) + 11) 0.0
+            wrU contacts ((30 * (truncate t301)) + 16) 0.0
+            wrU contacts ((30 * (truncate t301)) + 17) 0.0
+            wrU contacts ((30 * (truncate t301)) + 18) 0.0
+            wrU contacts ((30 * (truncate t301)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t341 <- rdI meta 6
-          wrI meta 6 (t341 + 1.0)
+          chkI meta 0 6 6
+          t341 <- rdU meta 6
+          wrU meta 6 (t341 + 1.0)
           pure ()
         pure ()
       else do
@@ -649,44 +722,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -694,12 +772,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -707,20 +786,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -731,19 +813,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -751,98 +836,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1081,12 +1178,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s373 = ((t139 * (t355 * (t372 * t368))) + (t176 * s316))
       let !s374 = ((t139 * (t355 * (t372 * t369))) + (t176 * s317))
       let !s375 = ((t139 * (t355 * (t372 * t370))) + (t176 * s318))
-      t376 <- rdI mouse 4
-      t377 <- rdI mouse 5
-      t378 <- rdI mouse 6
-      t379 <- rdI mouse 7
-      t380 <- rdI mouse 8
-      t381 <- rdI mouse 9
+      t376 <- rdU mouse 4
+      t377 <- rdU mouse 5
+      t378 <- rdU mouse 6
+      t379 <- rdU mouse 7
+      t380 <- rdU mouse 8
+      t381 <- rdU mouse 9
       let !t382 = (recip t101)
       let !t383 = (6.283185307179586 * t379)
       let !s384 = (recip (t103 * ((((2.0 * t382) * t380) * t383) + (t103 * ((t382 * t383) * t383)))))
@@ -1097,28 +1194,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s389 = (s352 + (negate t376))
       let !s390 = (s353 + (negate t377))
       let !s391 = (s354 + (negate t378))
-      t392 <- rdI mouse 10
-      t393 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t394 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t395 <- rdI vel (3 * (truncate t100))
-      t396 <- rdI vel ((3 * (truncate t100)) + 1)
-      t397 <- rdI vel ((3 * (truncate t100)) + 2)
-      t398 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t395 + ((t393 * t392) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t396 + ((t393 * t392) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t397 + ((t393 * t392) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t398 + ((t394 * t392) * (((((s387 * t112) - (s388 * t111)) * t107) + (((s388 * t110) - (s386 * t112)) * t108)) + (((s386 * t111) - (s387 * t110)) * t109))))
-      t399 <- rdI mouse 11
-      t400 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t401 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t402 <- rdI vel (3 * (truncate t100))
-      t403 <- rdI vel ((3 * (truncate t100)) + 1)
-      t404 <- rdI vel ((3 * (truncate t100)) + 2)
-      t405 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t402 + ((t400 * t399) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t403 + ((t400 * t399) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t404 + ((t400 * t399) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t405 + ((t401 * t399) * (((((s387 * s115) - (s388 * s114)) * t107) + (((s388 * s113) - (s386 * s115)) * t108)) + (((s386 * s114) - (s387 * s113)) * t109))))
+      t392 <- rdU mouse 10
+      t393 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t394 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t395 <- rdU vel (3 * (truncate t100))
+      t396 <- rdU vel ((3 * (truncate t100)) + 1)
+      t397 <- rdU vel ((3 * (truncate t100)) + 2)
+      t398 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t395 + ((t393 * t392) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t396 + ((t393 * t392) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t397 + ((t393 * t392) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t398 + ((t394 * t392) * (((((s387 * t112) - (s388 * t111)) * t107) + (((s388 * t110) - (s386 * t112)) * t108)) + (((s386 * t111) - (s387 * t110)) * t109))))
+      t399 <- rdU mouse 11
+      t400 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t401 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t402 <- rdU vel (3 * (truncate t100))
+      t403 <- rdU vel ((3 * (truncate t100)) + 1)
+      t404 <- rdU vel ((3 * (truncate t100)) + 2)
+      t405 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t402 + ((t400 * t399) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t403 + ((t400 * t399) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t404 + ((t400 * t399) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t405 + ((t401 * t399) * (((((s387 * s115) - (s388 * s114)) * t107) + (((s388 * s113) - (s386 * s115)) * t108)) + (((s386 * s114) - (s387 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -1129,38 +1227,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d406 = fromIntegral i406 :: Double
     loopI 0.0 t9 $ \i407 -> do
       let !d407 = fromIntegral i407 :: Double
-      t408 <- rdI contacts (30 * i407)
-      t409 <- rdI contacts ((30 * i407) + 1)
-      t410 <- rdI contacts ((30 * i407) + 12)
-      t411 <- rdI contacts (((30 * i407) + 12) + 1)
-      t412 <- rdI contacts (((30 * i407) + 12) + 2)
-      t413 <- rdI contacts ((30 * i407) + 15)
-      t414 <- rdI contacts ((30 * i407) + 16)
-      t415 <- rdI contacts (((30 * i407) + 16) + 1)
-      t416 <- rdI contacts (((30 * i407) + 16) + 2)
-      t417 <- rdI contacts ((30 * i407) + 19)
-      t418 <- rdI contacts ((30 * i407) + 4)
-      t419 <- rdI contacts (((30 * i407) + 4) + 1)
-      t420 <- rdI contacts (((30 * i407) + 4) + 2)
-      t421 <- rdI contacts ((30 * i407) + 7)
-      t422 <- rdI contacts ((30 * i407) + 8)
-      t423 <- rdI contacts (((30 * i407) + 8) + 1)
-      t424 <- rdI contacts (((30 * i407) + 8) + 2)
-      t425 <- rdI contacts ((30 * i407) + 11)
-      t426 <- rdI contacts ((30 * i407) + 26)
-      t427 <- rdI contacts ((30 * i407) + 24)
-      t428 <- rdI contacts ((30 * i407) + 25)
-      t429 <- rdI contacts ((30 * i407) + 22)
-      t430 <- rdI vel (3 * (truncate t408))
-      t431 <- rdI vel ((3 * (truncate t408)) + 1)
-      t432 <- rdI vel ((3 * (truncate t408)) + 2)
-      t433 <- rdI scalars ((6 * (truncate t408)) + 1)
+      chkI contacts (30 * i407) 0 26
+      t408 <- rdU contacts (30 * i407)
+      t409 <- rdU contacts ((30 * i407) + 1)
+      t410 <- rdU contacts ((30 * i407) + 12)
+      t411 <- rdU contacts ((30 * i407) + 13)
+      t412 <- rdU contacts ((30 * i407) + 14)
+      t413 <- rdU contacts ((30 * i407) + 15)
+      t414 <- rdU contacts ((30 * i407) + 16)
+      t415 <- rdU contacts ((30 * i407) + 17)
+      t416 <- rdU contacts ((30 * i407) + 18)
+      t417 <- rdU contacts ((30 * i407) + 19)
+      t418 <- rdU contacts ((30 * i407) + 4)
+      t419 <- rdU contacts ((30 * i407) + 5)
+      t420 <- rdU contacts ((30 * i407) + 6)
+      t421 <- rdU contacts ((30 * i407) + 7)
+      t422 <- rdU contacts ((30 * i407) + 8)
+      t423 <- rdU contacts ((30 * i407) + 9)
+      t424 <- rdU contacts ((30 * i407) + 10)
+      t425 <- rdU contacts ((30 * i407) + 11)
+      t426 <- rdU contacts ((30 * i407) + 26)
+      t427 <- rdU contacts ((30 * i407) + 24)
+      t428 <- rdU contacts ((30 * i407) + 25)
+      t429 <- rdU contacts ((30 * i407) + 22)
+      chkI vel (3 * (truncate t408)) 0 2
+      t430 <- rdU vel (3 * (truncate t408))
+      t431 <- rdU vel ((3 * (truncate t408)) + 1)
+      t432 <- rdU vel ((3 * (truncate t408)) + 2)
+      chkI scalars (6 * (truncate t408)) 1 3
+      t433 <- rdU scalars ((6 * (truncate t408)) + 1)
       v434 <- newR 0.0
       if (t409 + 0.5) > 0 then do
-        t435 <- rdI vel (3 * (truncate t409))
-        t436 <- rdI vel ((3 * (truncate t409)) + 1)
-        t437 <- rdI vel ((3 * (truncate t409)) + 2)
-        t438 <- rdI scalars ((6 * (truncate t409)) + 1)
+        chkI vel (3 * (truncate t409)) 0 2
+        t435 <- rdU vel (3 * (truncate t409))
+        t436 <- rdU vel ((3 * (truncate t409)) + 1)
+        t437 <- rdU vel ((3 * (truncate t409)) + 2)
+        chkI scalars (6 * (truncate t409)) 1 1
+        t438 <- rdU scalars ((6 * (truncate t409)) + 1)
         setR v434 ((((t414 * t435) + (t415 * t436)) + (t416 * t437)) + (t417 * t438))
         pure ()
       else do
@@ -1173,43 +1276,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t444 = (if (t443 - t441) > 0 then t441 else t443)
       let !t445 = (if (t442 - t444) > 0 then t442 else t444)
       let !s446 = (if (1.0 - (abs (t445 - t445))) > 0 then t445 else 0.0)
-      wrI contacts ((30 * i407) + 25) s446
-      t447 <- rdI scalars ((6 * (truncate t408)) + 2)
-      t448 <- rdI scalars ((6 * (truncate t408)) + 3)
-      t449 <- rdI vel (3 * (truncate t408))
-      t450 <- rdI vel ((3 * (truncate t408)) + 1)
-      t451 <- rdI vel ((3 * (truncate t408)) + 2)
-      t452 <- rdI scalars ((6 * (truncate t408)) + 1)
-      wrI vel (3 * (truncate t408)) (t449 + ((t447 * (s446 - t428)) * t410))
-      wrI vel ((3 * (truncate t408)) + 1) (t450 + ((t447 * (s446 - t428)) * t411))
-      wrI vel ((3 * (truncate t408)) + 2) (t451 + ((t447 * (s446 - t428)) * t412))
-      wrI scalars ((6 * (truncate t408)) + 1) (t452 + ((t448 * (s446 - t428)) * t413))
+      wrU contacts ((30 * i407) + 25) s446
+      t447 <- rdU scalars ((6 * (truncate t408)) + 2)
+      t448 <- rdU scalars ((6 * (truncate t408)) + 3)
+      t449 <- rdU vel (3 * (truncate t408))
+      t450 <- rdU vel ((3 * (truncate t408)) + 1)
+      t451 <- rdU vel ((3 * (truncate t408)) + 2)
+      t452 <- rdU scalars ((6 * (truncate t408)) + 1)
+      wrU vel (3 * (truncate t408)) (t449 + ((t447 * (s446 - t428)) * t410))
+      wrU vel ((3 * (truncate t408)) + 1) (t450 + ((t447 * (s446 - t428)) * t411))
+      wrU vel ((3 * (truncate t408)) + 2) (t451 + ((t447 * (s446 - t428)) * t412))
+      wrU scalars ((6 * (truncate t408)) + 1) (t452 + ((t448 * (s446 - t428)) * t413))
       if (t409 + 0.5) > 0 then do
-        t453 <- rdI scalars ((6 * (truncate t409)) + 2)
-        t454 <- rdI scalars ((6 * (truncate t409)) + 3)
-        t455 <- rdI vel (3 * (truncate t409))
-        t456 <- rdI vel ((3 * (truncate t409)) + 1)
-        t457 <- rdI vel ((3 * (truncate t409)) + 2)
-        t458 <- rdI scalars ((6 * (truncate t409)) + 1)
-        wrI vel (3 * (truncate t409)) (t455 + ((t453 * (negate (s446 - t428))) * t414))
-        wrI vel ((3 * (truncate t409)) + 1) (t456 + ((t453 * (negate (s446 - t428))) * t415))
-        wrI vel ((3 * (truncate t409)) + 2) (t457 + ((t453 * (negate (s446 - t428))) * t416))
-        wrI scalars ((6 * (truncate t409)) + 1) (t458 + ((t454 * (negate (s446 - t428))) * t417))
+        chkI scalars (6 * (truncate t409)) 1 3
+        t453 <- rdU scalars ((6 * (truncate t409)) + 2)
+        t454 <- rdU scalars ((6 * (truncate t409)) + 3)
+        chkI vel (3 * (truncate t409)) 0 2
+        t455 <- rdU vel (3 * (truncate t409))
+        t456 <- rdU vel ((3 * (truncate t409)) + 1)
+        t457 <- rdU vel ((3 * (truncate t409)) + 2)
+        t458 <- rdU scalars ((6 * (truncate t409)) + 1)
+        wrU vel (3 * (truncate t409)) (t455 + ((t453 * (negate (s446 - t428))) * t414))
+        wrU vel ((3 * (truncate t409)) + 1) (t456 + ((t453 * (negate (s446 - t428))) * t415))
+        wrU vel ((3 * (truncate t409)) + 2) (t457 + ((t453 * (negate (s446 - t428))) * t416))
+        wrU scalars ((6 * (truncate t409)) + 1) (t458 + ((t454 * (negate (s446 - t428))) * t417))
         pure ()
       else do
         pure ()
-      t459 <- rdI contacts ((30 * i407) + 21)
-      t460 <- rdI contacts ((30 * i407) + 23)
-      t461 <- rdI vel (3 * (truncate t408))
-      t462 <- rdI vel ((3 * (truncate t408)) + 1)
-      t463 <- rdI vel ((3 * (truncate t408)) + 2)
-      t464 <- rdI scalars ((6 * (truncate t408)) + 1)
+      t459 <- rdU contacts ((30 * i407) + 21)
+      t460 <- rdU contacts ((30 * i407) + 23)
+      t461 <- rdU vel (3 * (truncate t408))
+      t462 <- rdU vel ((3 * (truncate t408)) + 1)
+      t463 <- rdU vel ((3 * (truncate t408)) + 2)
+      t464 <- rdU scalars ((6 * (truncate t408)) + 1)
       v465 <- newR 0.0
       if (t409 + 0.5) > 0 then do
-        t466 <- rdI vel (3 * (truncate t409))
-        t467 <- rdI vel ((3 * (truncate t409)) + 1)
-        t468 <- rdI vel ((3 * (truncate t409)) + 2)
-        t469 <- rdI scalars ((6 * (truncate t409)) + 1)
+        chkI vel (3 * (truncate t409)) 0 2
+        t466 <- rdU vel (3 * (truncate t409))
+        t467 <- rdU vel ((3 * (truncate t409)) + 1)
+        t468 <- rdU vel ((3 * (truncate t409)) + 2)
+        chkI scalars (6 * (truncate t409)) 1 1
+        t469 <- rdU scalars ((6 * (truncate t409)) + 1)
         setR v465 ((((t422 * t466) + (t423 * t467)) + (t424 * t468)) + (t425 * t469))
         pure ()
       else do
@@ -1219,73 +1326,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t472 = (t427 + ((t426 * (t460 - s471)) * t459))
       let !t473 = (if (negate t472) > 0 then 0.0 else t472)
       let !s474 = (if (1.0 - (abs (t473 - t473))) > 0 then t473 else 0.0)
-      wrI contacts ((30 * i407) + 24) s474
-      t475 <- rdI scalars ((6 * (truncate t408)) + 2)
-      t476 <- rdI scalars ((6 * (truncate t408)) + 3)
-      t477 <- rdI vel (3 * (truncate t408))
-      t478 <- rdI vel ((3 * (truncate t408)) + 1)
-      t479 <- rdI vel ((3 * (truncate t408)) + 2)
-      t480 <- rdI scalars ((6 * (truncate t408)) + 1)
-      wrI vel (3 * (truncate t408)) (t477 + ((t475 * (s474 - t427)) * t418))
-      wrI vel ((3 * (truncate t408)) + 1) (t478 + ((t475 * (s474 - t427)) * t419))
-      wrI vel ((3 * (truncate t408)) + 2) (t479 + ((t475 * (s474 - t427)) * t420))
-      wrI scalars ((6 * (truncate t408)) + 1) (t480 + ((t476 * (s474 - t427)) * t421))
+      wrU contacts ((30 * i407) + 24) s474
+      t475 <- rdU scalars ((6 * (truncate t408)) + 2)
+      t476 <- rdU scalars ((6 * (truncate t408)) + 3)
+      t477 <- rdU vel (3 * (truncate t408))
+      t478 <- rdU vel ((3 * (truncate t408)) + 1)
+      t479 <- rdU vel ((3 * (truncate t408)) + 2)
+      t480 <- rdU scalars ((6 * (truncate t408)) + 1)
+      wrU vel (3 * (truncate t408)) (t477 + ((t475 * (s474 - t427)) * t418))
+      wrU vel ((3 * (truncate t408)) + 1) (t478 + ((t475 * (s474 - t427)) * t419))
+      wrU vel ((3 * (truncate t408)) + 2) (t479 + ((t475 * (s474 - t427)) * t420))
+      wrU scalars ((6 * (truncate t408)) + 1) (t480 + ((t476 * (s474 - t427)) * t421))
       if (t409 + 0.5) > 0 then do
-        t481 <- rdI scalars ((6 * (truncate t409)) + 2)
-        t482 <- rdI scalars ((6 * (truncate t409)) + 3)
-        t483 <- rdI vel (3 * (truncate t409))
-        t484 <- rdI vel ((3 * (truncate t409)) + 1)
-        t485 <- rdI vel ((3 * (truncate t409)) + 2)
-        t486 <- rdI scalars ((6 * (truncate t409)) + 1)
-        wrI vel (3 * (truncate t409)) (t483 + ((t481 * (negate (s474 - t427))) * t422))
-        wrI vel ((3 * (truncate t409)) + 1) (t484 + ((t481 * (negate (s474 - t427))) * t423))
-        wrI vel ((3 * (truncate t409)) + 2) (t485 + ((t481 * (negate (s474 - t427))) * t424))
-        wrI scalars ((6 * (truncate t409)) + 1) (t486 + ((t482 * (negate (s474 - t427))) * t425))
+        chkI scalars (6 * (truncate t409)) 1 3
+        t481 <- rdU scalars ((6 * (truncate t409)) + 2)
+        t482 <- rdU scalars ((6 * (truncate t409)) + 3)
+        chkI vel (3 * (truncate t409)) 0 2
+        t483 <- rdU vel (3 * (truncate t409))
+        t484 <- rdU vel ((3 * (truncate t409)) + 1)
+        t485 <- rdU vel ((3 * (truncate t409)) + 2)
+        t486 <- rdU scalars ((6 * (truncate t409)) + 1)
+        wrU vel (3 * (truncate t409)) (t483 + ((t481 * (negate (s474 - t427))) * t422))
+        wrU vel ((3 * (truncate t409)) + 1) (t484 + ((t481 * (negate (s474 - t427))) * t423))
+        wrU vel ((3 * (truncate t409)) + 2) (t485 + ((t481 * (negate (s474 - t427))) * t424))
+        wrU scalars ((6 * (truncate t409)) + 1) (t486 + ((t482 * (negate (s474 - t427))) * t425))
         pure ()
       else do
         pure ()
       pure ()
-    t487 <- rdI mouse 0
+    t487 <- rdU mouse 0
     if t487 > 0 then do
-      t488 <- rdI mouse 1
-      t489 <- rdI scalars ((6 * (truncate t488)) + 2)
+      chkI mouse 0 1 1
+      t488 <- rdU mouse 1
+      chkI scalars (6 * (truncate t488)) 2 2
+      t489 <- rdU scalars ((6 * (truncate t488)) + 2)
       if t489 > 0 then do
-        t490 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t491 <- rdI params 0
-        t492 <- rdI pos (3 * (truncate t488))
-        t493 <- rdI pos ((3 * (truncate t488)) + 1)
-        t494 <- rdI pos ((3 * (truncate t488)) + 2)
-        t495 <- rdI normal (3 * (truncate t488))
-        t496 <- rdI normal ((3 * (truncate t488)) + 1)
-        t497 <- rdI normal ((3 * (truncate t488)) + 2)
-        t498 <- rdI axis (3 * (truncate t488))
-        t499 <- rdI axis ((3 * (truncate t488)) + 1)
-        t500 <- rdI axis ((3 * (truncate t488)) + 2)
+        chkI scalars (6 * (truncate t488)) 0 5
+        t490 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t491 <- rdU params 0
+        chkI pos (3 * (truncate t488)) 0 2
+        t492 <- rdU pos (3 * (truncate t488))
+        t493 <- rdU pos ((3 * (truncate t488)) + 1)
+        t494 <- rdU pos ((3 * (truncate t488)) + 2)
+        chkI normal (3 * (truncate t488)) 0 2
+        t495 <- rdU normal (3 * (truncate t488))
+        t496 <- rdU normal ((3 * (truncate t488)) + 1)
+        t497 <- rdU normal ((3 * (truncate t488)) + 2)
+        chkI axis (3 * (truncate t488)) 0 2
+        t498 <- rdU axis (3 * (truncate t488))
+        t499 <- rdU axis ((3 * (truncate t488)) + 1)
+        t500 <- rdU axis ((3 * (truncate t488)) + 2)
         let !s501 = ((t496 * t500) - (t497 * t499))
         let !s502 = ((t497 * t498) - (t495 * t500))
         let !s503 = ((t495 * t499) - (t496 * t498))
-        t504 <- rdI scalars (6 * (truncate t488))
-        t505 <- rdI scalars ((6 * (truncate t488)) + 5)
-        t506 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t507 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t508 <- rdI pos (3 * (truncate t488))
-        t509 <- rdI pos ((3 * (truncate t488)) + 1)
-        t510 <- rdI pos ((3 * (truncate t488)) + 2)
-        t511 <- rdI normal (3 * (truncate t488))
-        t512 <- rdI normal ((3 * (truncate t488)) + 1)
-        t513 <- rdI normal ((3 * (truncate t488)) + 2)
-        t514 <- rdI axis (3 * (truncate t488))
-        t515 <- rdI axis ((3 * (truncate t488)) + 1)
-        t516 <- rdI axis ((3 * (truncate t488)) + 2)
+        t504 <- rdU scalars (6 * (truncate t488))
+        t505 <- rdU scalars ((6 * (truncate t488)) + 5)
+        t506 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t507 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t508 <- rdU pos (3 * (truncate t488))
+        t509 <- rdU pos ((3 * (truncate t488)) + 1)
+        t510 <- rdU pos ((3 * (truncate t488)) + 2)
+        t511 <- rdU normal (3 * (truncate t488))
+        t512 <- rdU normal ((3 * (truncate t488)) + 1)
+        t513 <- rdU normal ((3 * (truncate t488)) + 2)
+        t514 <- rdU axis (3 * (truncate t488))
+        t515 <- rdU axis ((3 * (truncate t488)) + 1)
+        t516 <- rdU axis ((3 * (truncate t488)) + 2)
         let !s517 = ((t512 * t516) - (t513 * t515))
         let !s518 = ((t513 * t514) - (t511 * t516))
         let !s519 = ((t511 * t515) - (t512 * t514))
-        t520 <- rdI scalars (6 * (truncate t488))
-        t521 <- rdI scalars ((6 * (truncate t488)) + 5)
-        t522 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t523 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t524 <- rdI mouse 2
-        t525 <- rdI mouse 3
+        t520 <- rdU scalars (6 * (truncate t488))
+        t521 <- rdU scalars ((6 * (truncate t488)) + 5)
+        t522 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t523 <- rdU scalars ((6 * (truncate t488)) + 3)
+        chkI mouse 0 2 11
+        t524 <- rdU mouse 2
+        t525 <- rdU mouse 3
         let !t526 = (t524 / 4.0)
         let !t527 = (if (abs t526) > 0 then 1.0 else 0.0)
         let !t528 = (t520 + t525)
@@ -1524,12 +1640,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s761 = ((t527 * (t743 * (t760 * t756))) + (t564 * s704))
         let !s762 = ((t527 * (t743 * (t760 * t757))) + (t564 * s705))
         let !s763 = ((t527 * (t743 * (t760 * t758))) + (t564 * s706))
-        t764 <- rdI mouse 4
-        t765 <- rdI mouse 5
-        t766 <- rdI mouse 6
-        t767 <- rdI mouse 7
-        t768 <- rdI mouse 8
-        t769 <- rdI mouse 9
+        t764 <- rdU mouse 4
+        t765 <- rdU mouse 5
+        t766 <- rdU mouse 6
+        t767 <- rdU mouse 7
+        t768 <- rdU mouse 8
+        t769 <- rdU mouse 9
         let !t770 = (recip t489)
         let !t771 = (6.283185307179586 * t767)
         let !s772 = (recip (t491 * ((((2.0 * t770) * t768) * t771) + (t491 * ((t770 * t771) * t771)))))
@@ -1540,11 +1656,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s777 = (s740 + (negate t764))
         let !s778 = (s741 + (negate t765))
         let !s779 = (s742 + (negate t766))
-        t780 <- rdI mouse 10
-        t781 <- rdI vel (3 * (truncate t488))
-        t782 <- rdI vel ((3 * (truncate t488)) + 1)
-        t783 <- rdI vel ((3 * (truncate t488)) + 2)
-        t784 <- rdI scalars ((6 * (truncate t488)) + 1)
+        t780 <- rdU mouse 10
+        chkI vel (3 * (truncate t488)) 0 2
+        t781 <- rdU vel (3 * (truncate t488))
+        t782 <- rdU vel ((3 * (truncate t488)) + 1)
+        t783 <- rdU vel ((3 * (truncate t488)) + 2)
+        t784 <- rdU scalars ((6 * (truncate t488)) + 1)
         let !t785 = (t769 * t491)
         let !t786 = (negate t785)
         let !t787 = (((((s775 * t500) - (s776 * t499)) * t495) + (((s776 * t498) - (s774 * t500)) * t496)) + (((s774 * t499) - (s775 * t498)) * t497))
@@ -1552,38 +1669,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t789 = (if (t788 - t785) > 0 then t785 else t788)
         let !t790 = (if (t786 - t789) > 0 then t786 else t789)
         let !s791 = (if (1.0 - (abs (t790 - t790))) > 0 then t790 else 0.0)
-        wrI mouse 10 s791
-        t792 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t793 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t794 <- rdI vel (3 * (truncate t488))
-        t795 <- rdI vel ((3 * (truncate t488)) + 1)
-        t796 <- rdI vel ((3 * (truncate t488)) + 2)
-        t797 <- rdI scalars ((6 * (truncate t488)) + 1)
-        wrI vel (3 * (truncate t488)) (t794 + ((t792 * (s791 - t780)) * t498))
-        wrI vel ((3 * (truncate t488)) + 1) (t795 + ((t792 * (s791 - t780)) * t499))
-        wrI vel ((3 * (truncate t488)) + 2) (t796 + ((t792 * (s791 - t780)) * t500))
-        wrI scalars ((6 * (truncate t488)) + 1) (t797 + ((t793 * (s791 - t780)) * t787))
-        t798 <- rdI mouse 11
-        t799 <- rdI vel (3 * (truncate t488))
-        t800 <- rdI vel ((3 * (truncate t488)) + 1)
-        t801 <- rdI vel ((3 * (truncate t488)) + 2)
-        t802 <- rdI scalars ((6 * (truncate t488)) + 1)
+        wrU mouse 10 s791
+        t792 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t793 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t794 <- rdU vel (3 * (truncate t488))
+        t795 <- rdU vel ((3 * (truncate t488)) + 1)
+        t796 <- rdU vel ((3 * (truncate t488)) + 2)
+        t797 <- rdU scalars ((6 * (truncate t488)) + 1)
+        wrU vel (3 * (truncate t488)) (t794 + ((t792 * (s791 - t780)) * t498))
+        wrU vel ((3 * (truncate t488)) + 1) (t795 + ((t792 * (s791 - t780)) * t499))
+        wrU vel ((3 * (truncate t488)) + 2) (t796 + ((t792 * (s791 - t780)) * t500))
+        wrU scalars ((6 * (truncate t488)) + 1) (t797 + ((t793 * (s791 - t780)) * t787))
+        t798 <- rdU mouse 11
+        t799 <- rdU vel (3 * (truncate t488))
+        t800 <- rdU vel ((3 * (truncate t488)) + 1)
+        t801 <- rdU vel ((3 * (truncate t488)) + 2)
+        t802 <- rdU scalars ((6 * (truncate t488)) + 1)
         let !t803 = (((((s775 * s503) - (s776 * s502)) * t495) + (((s776 * s501) - (s774 * s503)) * t496)) + (((s774 * s502) - (s775 * s501)) * t497))
         let !t804 = (t798 + ((negate ((((((s501 * t799) + (s502 * t800)) + (s503 * t801)) + (t803 * t802)) + (s773 * (((s777 * s501) + (s778 * s502)) + (s779 * s503)))) + (s772 * t798))) / (((t489 * (((s501 * s501) + (s502 * s502)) + (s503 * s503))) + ((t490 * t803) * t803)) + s772)))
         let !t805 = (if (t804 - t785) > 0 then t785 else t804)
         let !t806 = (if (t786 - t805) > 0 then t786 else t805)
         let !s807 = (if (1.0 - (abs (t806 - t806))) > 0 then t806 else 0.0)
-        wrI mouse 11 s807
-        t808 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t809 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t810 <- rdI vel (3 * (truncate t488))
-        t811 <- rdI vel ((3 * (truncate t488)) + 1)
-        t812 <- rdI vel ((3 * (truncate t488)) + 2)
-        t813 <- rdI scalars ((6 * (truncate t488)) + 1)
-        wrI vel (3 * (truncate t488)) (t810 + ((t808 * (s807 - t798)) * s501))
-        wrI vel ((3 * (truncate t488)) + 1) (t811 + ((t808 * (s807 - t798)) * s502))
-        wrI vel ((3 * (truncate t488)) + 2) (t812 + ((t808 * (s807 - t798)) * s503))
-        wrI scalars ((6 * (truncate t488)) + 1) (t813 + ((t809 * (s807 - t798)) * t803))
+        wrU mouse 11 s807
+        t808 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t809 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t810 <- rdU vel (3 * (truncate t488))
+        t811 <- rdU vel ((3 * (truncate t488)) + 1)
+        t812 <- rdU vel ((3 * (truncate t488)) + 2)
+        t813 <- rdU scalars ((6 * (truncate t488)) + 1)
+        wrU vel (3 * (truncate t488)) (t810 + ((t808 * (s807 - t798)) * s501))
+        wrU vel ((3 * (truncate t488)) + 1) (t811 + ((t808 * (s807 - t798)) * s502))
+        wrU vel ((3 * (truncate t488)) + 2) (t812 + ((t808 * (s807 - t798)) * s503))
+        wrU scalars ((6 * (truncate t488)) + 1) (t813 + ((t809 * (s807 - t798)) * t803))
         pure ()
       else do
         pure ()
@@ -1591,51 +1708,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t814 <- rdI meta 0
+  t814 <- rdU meta 0
   loopI 0.0 t814 $ \i815 -> do
     let !d815 = fromIntegral i815 :: Double
-    wrI bodyPrev ((2 * i815) + 1) 0.0
+    chkI bodyPrev (2 * i815) 1 1
+    wrU bodyPrev ((2 * i815) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i816 -> do
     let !d816 = fromIntegral i816 :: Double
-    t817 <- rdI contacts ((30 * i816) + 2)
-    wrI prev (4 * i816) t817
-    t818 <- rdI contacts ((30 * i816) + 3)
-    wrI prev ((4 * i816) + 1) t818
-    t819 <- rdI contacts ((30 * i816) + 24)
-    wrI prev ((4 * i816) + 2) t819
-    t820 <- rdI contacts ((30 * i816) + 25)
-    wrI prev ((4 * i816) + 3) t820
-    t821 <- rdI bodyPrev ((2 * (truncate t817)) + 1)
+    chkI contacts (30 * i816) 2 25
+    t817 <- rdU contacts ((30 * i816) + 2)
+    chkI prev (4 * i816) 0 3
+    wrU prev (4 * i816) t817
+    t818 <- rdU contacts ((30 * i816) + 3)
+    wrU prev ((4 * i816) + 1) t818
+    t819 <- rdU contacts ((30 * i816) + 24)
+    wrU prev ((4 * i816) + 2) t819
+    t820 <- rdU contacts ((30 * i816) + 25)
+    wrU prev ((4 * i816) + 3) t820
+    chkI bodyPrev (2 * (truncate t817)) 1 1
+    t821 <- rdU bodyPrev ((2 * (truncate t817)) + 1)
     if (0.5 - t821) > 0 then do
-      wrI bodyPrev (2 * (truncate t817)) d816
+      chkI bodyPrev (2 * (truncate t817)) 0 0
+      wrU bodyPrev (2 * (truncate t817)) d816
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t817)) + 1) (t821 + 1.0)
+    wrU bodyPrev ((2 * (truncate t817)) + 1) (t821 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t4 + (t1 * t7))
@@ -1746,51 +1875,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t124 = (t12 + (t1 * t13))
     let !t125 = (1.0 - (abs ((((((((((((((s71 - s71) + (s72 - s72)) + (s73 - s73)) + (s110 - s110)) + (s111 - s111)) + (s112 - s112)) + (s119 - s119)) + (s120 - s120)) + (s121 - s121)) + (s84 - s84)) + (s85 - s85)) + (s86 - s86)) + (t124 - t124)) + (s122 - s122))))
     if (if (t123 - t125) > 0 then t125 else t123) > 0 then do
-      wrI pos (3 * i2) s71
-      wrI pos ((3 * i2) + 1) s72
-      wrI pos ((3 * i2) + 2) s73
-      wrI vel (3 * i2) s110
-      wrI vel ((3 * i2) + 1) s111
-      wrI vel ((3 * i2) + 2) s112
-      wrI axis (3 * i2) s119
-      wrI axis ((3 * i2) + 1) s120
-      wrI axis ((3 * i2) + 2) s121
-      wrI normal (3 * i2) s84
-      wrI normal ((3 * i2) + 1) s85
-      wrI normal ((3 * i2) + 2) s86
-      wrI scalars (6 * i2) t124
+      wrU pos (3 * i2) s71
+      wrU pos ((3 * i2) + 1) s72
+      wrU pos ((3 * i2) + 2) s73
+      wrU vel (3 * i2) s110
+      wrU vel ((3 * i2) + 1) s111
+      wrU vel ((3 * i2) + 2) s112
+      wrU axis (3 * i2) s119
+      wrU axis ((3 * i2) + 1) s120
+      wrU axis ((3 * i2) + 2) s121
+      wrU normal (3 * i2) s84
+      wrU normal ((3 * i2) + 1) s85
+      wrU normal ((3 * i2) + 2) s86
+      wrU scalars (6 * i2) t124
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t126 <- rdI meta 1
-      wrI meta 1 (t126 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t126 <- rdU meta 1
+      wrU meta 1 (t126 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1799,7 +1936,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1863,9 +2001,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s79 = ((t28 * t65) + (t53 * t8))
         let !s80 = ((t28 * t66) + (t53 * t9))
         let !s81 = ((t28 * t68) + (t53 * t10))
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t82 = (s54 + (s27 * s76))
         let !t83 = (s55 + (s27 * s77))
         let !t84 = (s56 + (s27 * s78))
@@ -1917,9 +2056,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s130 = ((t28 * t116) + (t53 * s79))
         let !s131 = ((t28 * t117) + (t53 * s80))
         let !s132 = ((t28 * t119) + (t53 * s81))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
         let !t133 = (s106 + (s27 * s127))
         let !t134 = (s107 + (s27 * s128))
         let !t135 = (s108 + (s27 * s129))
@@ -1971,9 +2111,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = ((t28 * t167) + (t53 * s130))
         let !s182 = ((t28 * t168) + (t53 * s131))
         let !s183 = ((t28 * t170) + (t53 * s132))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
         let !t184 = (s157 + (s27 * s178))
         let !t185 = (s158 + (s27 * s179))
         let !t186 = (s159 + (s27 * s180))
@@ -2025,9 +2166,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s232 = ((t28 * t218) + (t53 * s181))
         let !s233 = ((t28 * t219) + (t53 * s182))
         let !s234 = ((t28 * t221) + (t53 * s183))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
         pure ()
       else do
         let !t235 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2063,18 +2205,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s265 = (if t264 > 0 then t261 else t2)
         let !s266 = (if t264 > 0 then t262 else t3)
         let !s267 = (if t264 > 0 then t263 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -28,22 +28,28 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (negate (3.0 * t5))
       let !t15 = (negate (3.0 * t7))
       let !t16 = ((t11 * t14) + (t13 * t15))
@@ -51,13 +57,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
       let !t18 = (t9 + (t1 * (negate (t16 * t12))))
       let !t19 = (t10 + (t1 * (t15 + (negate (t16 * t13)))))
       if (1.0 - (abs (((t17 - t17) + (t18 - t18)) + (t19 - t19)))) > 0 then do
-        wrI vel (3 * i3) t17
-        wrI vel ((3 * i3) + 1) t18
-        wrI vel ((3 * i3) + 2) t19
+        wrU vel (3 * i3) t17
+        wrU vel ((3 * i3) + 1) t18
+        wrU vel ((3 * i3) + 2) t19
         pure ()
       else do
-        t20 <- rdI meta 1
-        wrI meta 1 (t20 + 1.0)
+        chkI meta 0 1 1
+        t20 <- rdU meta 1
+        wrU meta 1 (t20 + 1.0)
         pure ()
       pure ()
     else do
@@ -67,12 +74,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -82,54 +91,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -145,19 +165,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -181,8 +207,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !s67 = (negate t32)
     let !s68 = (negate t33)
     let !s69 = (negate t34)
-    t70 <- rdI meta 4
-    t71 <- rdI meta 5
+    t70 <- rdU meta 4
+    t71 <- rdU meta 5
     let !s72 = (floorF (s67 / t71))
     let !s73 = (floorF (s68 / t71))
     let !s74 = (floorF (s69 / t71))
@@ -198,19 +224,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s81 = (((((s78 + 131072.0) * 262144.0) + (s79 + 131072.0)) * 262144.0) + (s80 + 131072.0))
           let !t82 = (((s78 * 7.3856093e7) + (s79 * 1.9349663e7)) + (s80 * 8.3492791e7))
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
-          t84 <- rdI grid (truncate s83)
-          t85 <- rdI grid ((truncate t70) + (truncate s83))
+          chkI grid (truncate s83) 0 0
+          t84 <- rdU grid (truncate s83)
+          chkI grid ((truncate t70) + (truncate s83)) 0 0
+          t85 <- rdU grid ((truncate t70) + (truncate s83))
           loopI t85 t84 $ \i86 -> do
             let !d86 = fromIntegral i86 :: Double
-            t87 <- rdI items i86
-            t88 <- rdI cellOf (truncate t87)
+            chkI items i86 0 0
+            t87 <- rdU items i86
+            chkI cellOf (truncate t87) 0 0
+            t88 <- rdU cellOf (truncate t87)
             if (0.5 - (abs (t88 - s81))) > 0 then do
               if ((t87 - d31) + 0.5) > 0 then do
-                t89 <- rdI pos (3 * (truncate t87))
-                t90 <- rdI pos ((3 * (truncate t87)) + 1)
-                t91 <- rdI pos ((3 * (truncate t87)) + 2)
-                t92 <- rdI scalars ((6 * (truncate t87)) + 5)
-                t93 <- rdI scalars ((6 * (truncate t87)) + 2)
+                chkI pos (3 * (truncate t87)) 0 2
+                t89 <- rdU pos (3 * (truncate t87))
+                t90 <- rdU pos ((3 * (truncate t87)) + 1)
+                t91 <- rdU pos ((3 * (truncate t87)) + 2)
+                chkI scalars (6 * (truncate t87)) 2 5
+                t92 <- rdU scalars ((6 * (truncate t87)) + 5)
+                t93 <- rdU scalars ((6 * (truncate t87)) + 2)
                 let !t94 = (t36 + t93)
                 let !t95 = (s67 + (negate t89))
                 let !t96 = (s68 + (negate t90))
@@ -231,16 +263,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t99 <- rdI verts (3 * (97 * i31))
-    t100 <- rdI verts ((3 * (97 * i31)) + 1)
-    t101 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t99 <- rdU verts (3 * (97 * i31))
+    t100 <- rdU verts ((3 * (97 * i31)) + 1)
+    t101 <- rdU verts ((3 * (97 * i31)) + 2)
     v102 <- newR 1.0
     loopI 0.0 24.0 $ \i103 -> do
       let !d103 = fromIntegral i103 :: Double
-      t104 <- rdI verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3))
-      t105 <- rdI verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 1)
-      t106 <- rdI verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 2)
-      t107 <- rdI radii ((24 * i31) + i103)
+      chkI verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) 0 2
+      t104 <- rdU verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3))
+      t105 <- rdU verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 1)
+      t106 <- rdU verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i103) 0 0
+      t107 <- rdU radii ((24 * i31) + i103)
       t108 <- getR v102
       let !t109 = (t104 + (negate t99))
       let !t110 = (t105 + (negate t100))
@@ -259,27 +294,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v120 <- newR 0.0
       loopI 0.0 24.0 $ \i121 -> do
         let !d121 = fromIntegral i121 :: Double
-        t122 <- rdI radii ((24 * i31) + i121)
+        chkI radii ((24 * i31) + i121) 0 0
+        t122 <- rdU radii ((24 * i31) + i121)
         loopI 6.0 12.0 $ \i123 -> do
           let !d123 = fromIntegral i123 :: Double
           let !t124 = (d121 + d123)
-          t125 <- rdI radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0)))))) 0 0
+          t125 <- rdU radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0))))))
           loopI 1.0 4.0 $ \i126 -> do
             let !d126 = fromIntegral i126 :: Double
-            t127 <- rdI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1)))
-            t128 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 1)
-            t129 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 2)
-            t130 <- rdI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126))
-            t131 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 1)
-            t132 <- rdI verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) 0 2
+            t127 <- rdU verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1)))
+            t128 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 1)
+            t129 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) 0 2
+            t130 <- rdU verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126))
+            t131 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 1)
+            t132 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 2)
             loopI 1.0 4.0 $ \i133 -> do
               let !d133 = fromIntegral i133 :: Double
-              t134 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))))
-              t135 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 1.0))
-              t136 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 2.0))
-              t137 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)))
-              t138 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 1.0))
-              t139 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0)))) 0 0
+              t134 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 1.0)) 0 0
+              t135 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 2.0)) 0 0
+              t136 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133))) 0 0
+              t137 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 1.0)) 0 0
+              t138 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 2.0)) 0 0
+              t139 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 2.0))
               t140 <- getR v114
               let !t141 = (negate t134)
               let !t142 = (t137 + t141)
@@ -319,12 +364,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t176 = ((0.3 * ((if (t125 - t122) > 0 then t122 else t125) / 4.0)) - (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175))))
               if (if (t172 - t176) > 0 then t176 else t172) > 0 then do
                 setR v114 (0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0))))
-                t177 <- rdI verts (3 * (((97 * i31) + 1) + (i121 * 4)))
-                t178 <- rdI verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 1)
-                t179 <- rdI verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 2)
-                t180 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))))
-                t181 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0))
-                t182 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i121 * 4))) 0 2
+                t177 <- rdU verts (3 * (((97 * i31) + 1) + (i121 * 4)))
+                t178 <- rdU verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 1)
+                t179 <- rdU verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)))) 0 0
+                t180 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t181 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t182 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0))
                 setR v115 (t127 + (t169 * t148))
                 setR v116 (t128 + (t169 * t149))
                 setR v117 (t129 + (t169 * t150))
@@ -380,89 +429,98 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s221 = (t220 * t216)
         let !s222 = (t220 * t217)
         let !s223 = (t220 * t218)
-        t224 <- rdI meta 2
-        t225 <- rdI meta 3
+        t224 <- rdU meta 2
+        t225 <- rdU meta 3
         if (((8.0 * (if (1.0 - t225) > 0 then 1.0 else t225)) - t224) - 0.5) > 0 then do
-          wrI meta 2 (t224 + 1.0)
-          t226 <- rdI pos (3 * i31)
-          t227 <- rdI pos ((3 * i31) + 1)
-          t228 <- rdI pos ((3 * i31) + 2)
-          t229 <- rdI normal (3 * i31)
-          t230 <- rdI normal ((3 * i31) + 1)
-          t231 <- rdI normal ((3 * i31) + 2)
-          t232 <- rdI axis (3 * i31)
-          t233 <- rdI axis ((3 * i31) + 1)
-          t234 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t224 + 1.0)
+          t226 <- rdU pos (3 * i31)
+          t227 <- rdU pos ((3 * i31) + 1)
+          t228 <- rdU pos ((3 * i31) + 2)
+          chkI normal (3 * i31) 0 2
+          t229 <- rdU normal (3 * i31)
+          t230 <- rdU normal ((3 * i31) + 1)
+          t231 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t232 <- rdU axis (3 * i31)
+          t233 <- rdU axis ((3 * i31) + 1)
+          t234 <- rdU axis ((3 * i31) + 2)
           let !s235 = ((t230 * t234) - (t231 * t233))
           let !s236 = ((t231 * t232) - (t229 * t234))
           let !s237 = ((t229 * t233) - (t230 * t232))
-          t238 <- rdI scalars (6 * i31)
-          t239 <- rdI scalars ((6 * i31) + 5)
-          t240 <- rdI scalars ((6 * i31) + 2)
-          t241 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t224)) d31
-          wrI contacts ((30 * (truncate t224)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t224)) + 2) d31
-          wrI contacts ((30 * (truncate t224)) + 3) 12.0
-          wrI contacts ((30 * (truncate t224)) + 4) (s221 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t229)))
-          wrI contacts (((30 * (truncate t224)) + 4) + 1) (s222 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t230)))
-          wrI contacts (((30 * (truncate t224)) + 4) + 2) (s223 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t231)))
-          wrI contacts ((30 * (truncate t224)) + 7) 0.0
-          wrI contacts ((30 * (truncate t224)) + 12) 0.0
-          wrI contacts (((30 * (truncate t224)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t224)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t224)) + 15) 0.0
-          wrI contacts ((30 * (truncate t224)) + 20) t194
-          wrI contacts ((30 * (truncate t224)) + 26) 0.6
-          wrI contacts ((30 * (truncate t224)) + 27) t195
-          wrI contacts (((30 * (truncate t224)) + 27) + 1) t196
-          wrI contacts (((30 * (truncate t224)) + 27) + 2) t197
+          chkI scalars (6 * i31) 0 0
+          t238 <- rdU scalars (6 * i31)
+          t239 <- rdU scalars ((6 * i31) + 5)
+          t240 <- rdU scalars ((6 * i31) + 2)
+          t241 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t224)) 0 29
+          wrU contacts (30 * (truncate t224)) d31
+          wrU contacts ((30 * (truncate t224)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t224)) + 2) d31
+          wrU contacts ((30 * (truncate t224)) + 3) 12.0
+          wrU contacts ((30 * (truncate t224)) + 4) (s221 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t229)))
+          wrU contacts ((30 * (truncate t224)) + 5) (s222 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t230)))
+          wrU contacts ((30 * (truncate t224)) + 6) (s223 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t231)))
+          wrU contacts ((30 * (truncate t224)) + 7) 0.0
+          wrU contacts ((30 * (truncate t224)) + 12) 0.0
+          wrU contacts ((30 * (truncate t224)) + 13) 0.0
+          wrU contacts ((30 * (truncate t224)) + 14) 0.0
+          wrU contacts ((30 * (truncate t224)) + 15) 0.0
+          wrU contacts ((30 * (truncate t224)) + 20) t194
+          wrU contacts ((30 * (truncate t224)) + 26) 0.6
+          wrU contacts ((30 * (truncate t224)) + 27) t195
+          wrU contacts ((30 * (truncate t224)) + 28) t196
+          wrU contacts ((30 * (truncate t224)) + 29) t197
           if (-0.5) > 0 then do
-            t242 <- rdI pos (-3)
-            t243 <- rdI pos (-2)
-            t244 <- rdI pos (-1)
-            t245 <- rdI normal (-3)
-            t246 <- rdI normal (-2)
-            t247 <- rdI normal (-1)
-            t248 <- rdI axis (-3)
-            t249 <- rdI axis (-2)
-            t250 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t242 <- rdU pos (-3)
+            t243 <- rdU pos (-2)
+            t244 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t245 <- rdU normal (-3)
+            t246 <- rdU normal (-2)
+            t247 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t248 <- rdU axis (-3)
+            t249 <- rdU axis (-2)
+            t250 <- rdU axis (-1)
             let !s251 = ((t246 * t250) - (t247 * t249))
             let !s252 = ((t247 * t248) - (t245 * t250))
             let !s253 = ((t245 * t249) - (t246 * t248))
-            t254 <- rdI scalars (-6)
-            t255 <- rdI scalars (-1)
-            t256 <- rdI scalars (-4)
-            t257 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t224)) + 8) (s221 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t245)))
-            wrI contacts (((30 * (truncate t224)) + 8) + 1) (s222 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t246)))
-            wrI contacts (((30 * (truncate t224)) + 8) + 2) (s223 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t247)))
+            chkI scalars 0 (-6) (-1)
+            t254 <- rdU scalars (-6)
+            t255 <- rdU scalars (-1)
+            t256 <- rdU scalars (-4)
+            t257 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t224)) + 8) (s221 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t245)))
+            wrU contacts ((30 * (truncate t224)) + 9) (s222 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t246)))
+            wrU contacts ((30 * (truncate t224)) + 10) (s223 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t247)))
             let !t258 = (t196 + (negate t243))
             let !t259 = (t197 + (negate t244))
             let !t260 = (t195 + (negate t242))
-            wrI contacts ((30 * (truncate t224)) + 11) (((((t258 * s223) - (t259 * s222)) * t245) + (((t259 * s221) - (t260 * s223)) * t246)) + (((t260 * s222) - (t258 * s221)) * t247))
+            wrU contacts ((30 * (truncate t224)) + 11) (((((t258 * s223) - (t259 * s222)) * t245) + (((t259 * s221) - (t260 * s223)) * t246)) + (((t260 * s222) - (t258 * s221)) * t247))
             let !t261 = ((t230 * s223) - (t231 * s222))
-            wrI contacts ((30 * (truncate t224)) + 16) (t261 + (negate ((((t245 * t261) + (t246 * ((t231 * s221) - (t229 * s223)))) + (t247 * ((t229 * s222) - (t230 * s221)))) * t245)))
+            wrU contacts ((30 * (truncate t224)) + 16) (t261 + (negate ((((t245 * t261) + (t246 * ((t231 * s221) - (t229 * s223)))) + (t247 * ((t229 * s222) - (t230 * s221)))) * t245)))
             let !t262 = ((t231 * s221) - (t229 * s223))
-            wrI contacts (((30 * (truncate t224)) + 16) + 1) (t262 + (negate ((((t245 * t261) + (t246 * t262)) + (t247 * ((t229 * s222) - (t230 * s221)))) * t246)))
+            wrU contacts ((30 * (truncate t224)) + 17) (t262 + (negate ((((t245 * t261) + (t246 * t262)) + (t247 * ((t229 * s222) - (t230 * s221)))) * t246)))
             let !t263 = ((t229 * s222) - (t230 * s221))
-            wrI contacts (((30 * (truncate t224)) + 16) + 2) (t263 + (negate ((((t245 * t261) + (t246 * t262)) + (t247 * t263)) * t247)))
-            wrI contacts ((30 * (truncate t224)) + 19) (((((t258 * t263) - (t259 * t262)) * t245) + (((t259 * t261) - (t260 * t263)) * t246)) + (((t260 * t262) - (t258 * t261)) * t247))
+            wrU contacts ((30 * (truncate t224)) + 18) (t263 + (negate ((((t245 * t261) + (t246 * t262)) + (t247 * t263)) * t247)))
+            wrU contacts ((30 * (truncate t224)) + 19) (((((t258 * t263) - (t259 * t262)) * t245) + (((t259 * t261) - (t260 * t263)) * t246)) + (((t260 * t262) - (t258 * t261)) * t247))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t224)) + 8) 0.0
-            wrI contacts (((30 * (truncate t224)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t224)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t224)) + 11) 0.0
-            wrI contacts ((30 * (truncate t224)) + 16) 0.0
-            wrI contacts (((30 * (truncate t224)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t224)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t224)) + 19) 0.0
+            wrU contacts ((30 * (truncate t224)) + 8) 0.0
+            wrU contacts ((30 * (truncate t224)) + 9) 0.0
+            wrU contacts ((30 * (truncate t224)) + 10) 0.0
+            wrU contacts ((30 * (truncate t224)) + 11) 0.0
+            wrU contacts ((30 * (truncate t224)) + 16) 0.0
+            wrU contacts ((30 * (truncate t224)) + 17) 0.0
+            wrU contacts ((30 * (truncate t224)) + 18) 0.0
+            wrU contacts ((30 * (truncate t224)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t264 <- rdI meta 6
-          wrI meta 6 (t264 + 1.0)
+          chkI meta 0 6 6
+          t264 <- rdU meta 6
+          wrU meta 6 (t264 + 1.0)
           pure ()
         pure ()
       else do
@@ -475,44 +533,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -520,12 +583,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -533,20 +597,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -557,19 +624,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -577,98 +647,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -987,12 +1069,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s453 = ((t139 * (t435 * (t452 * t448))) + (t196 * s376))
       let !s454 = ((t139 * (t435 * (t452 * t449))) + (t196 * s377))
       let !s455 = ((t139 * (t435 * (t452 * t450))) + (t196 * s378))
-      t456 <- rdI mouse 4
-      t457 <- rdI mouse 5
-      t458 <- rdI mouse 6
-      t459 <- rdI mouse 7
-      t460 <- rdI mouse 8
-      t461 <- rdI mouse 9
+      t456 <- rdU mouse 4
+      t457 <- rdU mouse 5
+      t458 <- rdU mouse 6
+      t459 <- rdU mouse 7
+      t460 <- rdU mouse 8
+      t461 <- rdU mouse 9
       let !t462 = (recip t101)
       let !t463 = (6.283185307179586 * t459)
       let !s464 = (recip (t103 * ((((2.0 * t462) * t460) * t463) + (t103 * ((t462 * t463) * t463)))))
@@ -1003,28 +1085,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s469 = (s432 + (negate t456))
       let !s470 = (s433 + (negate t457))
       let !s471 = (s434 + (negate t458))
-      t472 <- rdI mouse 10
-      t473 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t474 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t475 <- rdI vel (3 * (truncate t100))
-      t476 <- rdI vel ((3 * (truncate t100)) + 1)
-      t477 <- rdI vel ((3 * (truncate t100)) + 2)
-      t478 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t475 + ((t473 * t472) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t476 + ((t473 * t472) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t477 + ((t473 * t472) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t478 + ((t474 * t472) * (((((s467 * t112) - (s468 * t111)) * t107) + (((s468 * t110) - (s466 * t112)) * t108)) + (((s466 * t111) - (s467 * t110)) * t109))))
-      t479 <- rdI mouse 11
-      t480 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t481 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t482 <- rdI vel (3 * (truncate t100))
-      t483 <- rdI vel ((3 * (truncate t100)) + 1)
-      t484 <- rdI vel ((3 * (truncate t100)) + 2)
-      t485 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t482 + ((t480 * t479) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t483 + ((t480 * t479) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t484 + ((t480 * t479) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t485 + ((t481 * t479) * (((((s467 * s115) - (s468 * s114)) * t107) + (((s468 * s113) - (s466 * s115)) * t108)) + (((s466 * s114) - (s467 * s113)) * t109))))
+      t472 <- rdU mouse 10
+      t473 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t474 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t475 <- rdU vel (3 * (truncate t100))
+      t476 <- rdU vel ((3 * (truncate t100)) + 1)
+      t477 <- rdU vel ((3 * (truncate t100)) + 2)
+      t478 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t475 + ((t473 * t472) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t476 + ((t473 * t472) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t477 + ((t473 * t472) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t478 + ((t474 * t472) * (((((s467 * t112) - (s468 * t111)) * t107) + (((s468 * t110) - (s466 * t112)) * t108)) + (((s466 * t111) - (s467 * t110)) * t109))))
+      t479 <- rdU mouse 11
+      t480 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t481 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t482 <- rdU vel (3 * (truncate t100))
+      t483 <- rdU vel ((3 * (truncate t100)) + 1)
+      t484 <- rdU vel ((3 * (truncate t100)) + 2)
+      t485 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t482 + ((t480 * t479) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t483 + ((t480 * t479) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t484 + ((t480 * t479) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t485 + ((t481 * t479) * (((((s467 * s115) - (s468 * s114)) * t107) + (((s468 * s113) - (s466 * s115)) * t108)) + (((s466 * s114) - (s467 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -1035,38 +1118,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d486 = fromIntegral i486 :: Double
     loopI 0.0 t9 $ \i487 -> do
       let !d487 = fromIntegral i487 :: Double
-      t488 <- rdI contacts (30 * i487)
-      t489 <- rdI contacts ((30 * i487) + 1)
-      t490 <- rdI contacts ((30 * i487) + 12)
-      t491 <- rdI contacts (((30 * i487) + 12) + 1)
-      t492 <- rdI contacts (((30 * i487) + 12) + 2)
-      t493 <- rdI contacts ((30 * i487) + 15)
-      t494 <- rdI contacts ((30 * i487) + 16)
-      t495 <- rdI contacts (((30 * i487) + 16) + 1)
-      t496 <- rdI contacts (((30 * i487) + 16) + 2)
-      t497 <- rdI contacts ((30 * i487) + 19)
-      t498 <- rdI contacts ((30 * i487) + 4)
-      t499 <- rdI contacts (((30 * i487) + 4) + 1)
-      t500 <- rdI contacts (((30 * i487) + 4) + 2)
-      t501 <- rdI contacts ((30 * i487) + 7)
-      t502 <- rdI contacts ((30 * i487) + 8)
-      t503 <- rdI contacts (((30 * i487) + 8) + 1)
-      t504 <- rdI contacts (((30 * i487) + 8) + 2)
-      t505 <- rdI contacts ((30 * i487) + 11)
-      t506 <- rdI contacts ((30 * i487) + 26)
-      t507 <- rdI contacts ((30 * i487) + 24)
-      t508 <- rdI contacts ((30 * i487) + 25)
-      t509 <- rdI contacts ((30 * i487) + 22)
-      t510 <- rdI vel (3 * (truncate t488))
-      t511 <- rdI vel ((3 * (truncate t488)) + 1)
-      t512 <- rdI vel ((3 * (truncate t488)) + 2)
-      t513 <- rdI scalars ((6 * (truncate t488)) + 1)
+      chkI contacts (30 * i487) 0 26
+      t488 <- rdU contacts (30 * i487)
+      t489 <- rdU contacts ((30 * i487) + 1)
+      t490 <- rdU contacts ((30 * i487) + 12)
+      t491 <- rdU contacts ((30 * i487) + 13)
+      t492 <- rdU contacts ((30 * i487) + 14)
+      t493 <- rdU contacts ((30 * i487) + 15)
+      t494 <- rdU contacts ((30 * i487) + 16)
+      t495 <- rdU contacts ((30 * i487) + 17)
+      t496 <- rdU contacts ((30 * i487) + 18)
+      t497 <- rdU contacts ((30 * i487) + 19)
+      t498 <- rdU contacts ((30 * i487) + 4)
+      t499 <- rdU contacts ((30 * i487) + 5)
+      t500 <- rdU contacts ((30 * i487) + 6)
+      t501 <- rdU contacts ((30 * i487) + 7)
+      t502 <- rdU contacts ((30 * i487) + 8)
+      t503 <- rdU contacts ((30 * i487) + 9)
+      t504 <- rdU contacts ((30 * i487) + 10)
+      t505 <- rdU contacts ((30 * i487) + 11)
+      t506 <- rdU contacts ((30 * i487) + 26)
+      t507 <- rdU contacts ((30 * i487) + 24)
+      t508 <- rdU contacts ((30 * i487) + 25)
+      t509 <- rdU contacts ((30 * i487) + 22)
+      chkI vel (3 * (truncate t488)) 0 2
+      t510 <- rdU vel (3 * (truncate t488))
+      t511 <- rdU vel ((3 * (truncate t488)) + 1)
+      t512 <- rdU vel ((3 * (truncate t488)) + 2)
+      chkI scalars (6 * (truncate t488)) 1 3
+      t513 <- rdU scalars ((6 * (truncate t488)) + 1)
       v514 <- newR 0.0
       if (t489 + 0.5) > 0 then do
-        t515 <- rdI vel (3 * (truncate t489))
-        t516 <- rdI vel ((3 * (truncate t489)) + 1)
-        t517 <- rdI vel ((3 * (truncate t489)) + 2)
-        t518 <- rdI scalars ((6 * (truncate t489)) + 1)
+        chkI vel (3 * (truncate t489)) 0 2
+        t515 <- rdU vel (3 * (truncate t489))
+        t516 <- rdU vel ((3 * (truncate t489)) + 1)
+        t517 <- rdU vel ((3 * (truncate t489)) + 2)
+        chkI scalars (6 * (truncate t489)) 1 1
+        t518 <- rdU scalars ((6 * (truncate t489)) + 1)
         setR v514 ((((t494 * t515) + (t495 * t516)) + (t496 * t517)) + (t497 * t518))
         pure ()
       else do
@@ -1079,43 +1167,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t524 = (if (t523 - t521) > 0 then t521 else t523)
       let !t525 = (if (t522 - t524) > 0 then t522 else t524)
       let !s526 = (if (1.0 - (abs (t525 - t525))) > 0 then t525 else 0.0)
-      wrI contacts ((30 * i487) + 25) s526
-      t527 <- rdI scalars ((6 * (truncate t488)) + 2)
-      t528 <- rdI scalars ((6 * (truncate t488)) + 3)
-      t529 <- rdI vel (3 * (truncate t488))
-      t530 <- rdI vel ((3 * (truncate t488)) + 1)
-      t531 <- rdI vel ((3 * (truncate t488)) + 2)
-      t532 <- rdI scalars ((6 * (truncate t488)) + 1)
-      wrI vel (3 * (truncate t488)) (t529 + ((t527 * (s526 - t508)) * t490))
-      wrI vel ((3 * (truncate t488)) + 1) (t530 + ((t527 * (s526 - t508)) * t491))
-      wrI vel ((3 * (truncate t488)) + 2) (t531 + ((t527 * (s526 - t508)) * t492))
-      wrI scalars ((6 * (truncate t488)) + 1) (t532 + ((t528 * (s526 - t508)) * t493))
+      wrU contacts ((30 * i487) + 25) s526
+      t527 <- rdU scalars ((6 * (truncate t488)) + 2)
+      t528 <- rdU scalars ((6 * (truncate t488)) + 3)
+      t529 <- rdU vel (3 * (truncate t488))
+      t530 <- rdU vel ((3 * (truncate t488)) + 1)
+      t531 <- rdU vel ((3 * (truncate t488)) + 2)
+      t532 <- rdU scalars ((6 * (truncate t488)) + 1)
+      wrU vel (3 * (truncate t488)) (t529 + ((t527 * (s526 - t508)) * t490))
+      wrU vel ((3 * (truncate t488)) + 1) (t530 + ((t527 * (s526 - t508)) * t491))
+      wrU vel ((3 * (truncate t488)) + 2) (t531 + ((t527 * (s526 - t508)) * t492))
+      wrU scalars ((6 * (truncate t488)) + 1) (t532 + ((t528 * (s526 - t508)) * t493))
       if (t489 + 0.5) > 0 then do
-        t533 <- rdI scalars ((6 * (truncate t489)) + 2)
-        t534 <- rdI scalars ((6 * (truncate t489)) + 3)
-        t535 <- rdI vel (3 * (truncate t489))
-        t536 <- rdI vel ((3 * (truncate t489)) + 1)
-        t537 <- rdI vel ((3 * (truncate t489)) + 2)
-        t538 <- rdI scalars ((6 * (truncate t489)) + 1)
-        wrI vel (3 * (truncate t489)) (t535 + ((t533 * (negate (s526 - t508))) * t494))
-        wrI vel ((3 * (truncate t489)) + 1) (t536 + ((t533 * (negate (s526 - t508))) * t495))
-        wrI vel ((3 * (truncate t489)) + 2) (t537 + ((t533 * (negate (s526 - t508))) * t496))
-        wrI scalars ((6 * (truncate t489)) + 1) (t538 + ((t534 * (negate (s526 - t508))) * t497))
+        chkI scalars (6 * (truncate t489)) 1 3
+        t533 <- rdU scalars ((6 * (truncate t489)) + 2)
+        t534 <- rdU scalars ((6 * (truncate t489)) + 3)
+        chkI vel (3 * (truncate t489)) 0 2
+        t535 <- rdU vel (3 * (truncate t489))
+        t536 <- rdU vel ((3 * (truncate t489)) + 1)
+        t537 <- rdU vel ((3 * (truncate t489)) + 2)
+        t538 <- rdU scalars ((6 * (truncate t489)) + 1)
+        wrU vel (3 * (truncate t489)) (t535 + ((t533 * (negate (s526 - t508))) * t494))
+        wrU vel ((3 * (truncate t489)) + 1) (t536 + ((t533 * (negate (s526 - t508))) * t495))
+        wrU vel ((3 * (truncate t489)) + 2) (t537 + ((t533 * (negate (s526 - t508))) * t496))
+        wrU scalars ((6 * (truncate t489)) + 1) (t538 + ((t534 * (negate (s526 - t508))) * t497))
         pure ()
       else do
         pure ()
-      t539 <- rdI contacts ((30 * i487) + 21)
-      t540 <- rdI contacts ((30 * i487) + 23)
-      t541 <- rdI vel (3 * (truncate t488))
-      t542 <- rdI vel ((3 * (truncate t488)) + 1)
-      t543 <- rdI vel ((3 * (truncate t488)) + 2)
-      t544 <- rdI scalars ((6 * (truncate t488)) + 1)
+      t539 <- rdU contacts ((30 * i487) + 21)
+      t540 <- rdU contacts ((30 * i487) + 23)
+      t541 <- rdU vel (3 * (truncate t488))
+      t542 <- rdU vel ((3 * (truncate t488)) + 1)
+      t543 <- rdU vel ((3 * (truncate t488)) + 2)
+      t544 <- rdU scalars ((6 * (truncate t488)) + 1)
       v545 <- newR 0.0
       if (t489 + 0.5) > 0 then do
-        t546 <- rdI vel (3 * (truncate t489))
-        t547 <- rdI vel ((3 * (truncate t489)) + 1)
-        t548 <- rdI vel ((3 * (truncate t489)) + 2)
-        t549 <- rdI scalars ((6 * (truncate t489)) + 1)
+        chkI vel (3 * (truncate t489)) 0 2
+        t546 <- rdU vel (3 * (truncate t489))
+        t547 <- rdU vel ((3 * (truncate t489)) + 1)
+        t548 <- rdU vel ((3 * (truncate t489)) + 2)
+        chkI scalars (6 * (truncate t489)) 1 1
+        t549 <- rdU scalars ((6 * (truncate t489)) + 1)
         setR v545 ((((t502 * t546) + (t503 * t547)) + (t504 * t548)) + (t505 * t549))
         pure ()
       else do
@@ -1125,73 +1217,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t552 = (t507 + ((t506 * (t540 - s551)) * t539))
       let !t553 = (if (negate t552) > 0 then 0.0 else t552)
       let !s554 = (if (1.0 - (abs (t553 - t553))) > 0 then t553 else 0.0)
-      wrI contacts ((30 * i487) + 24) s554
-      t555 <- rdI scalars ((6 * (truncate t488)) + 2)
-      t556 <- rdI scalars ((6 * (truncate t488)) + 3)
-      t557 <- rdI vel (3 * (truncate t488))
-      t558 <- rdI vel ((3 * (truncate t488)) + 1)
-      t559 <- rdI vel ((3 * (truncate t488)) + 2)
-      t560 <- rdI scalars ((6 * (truncate t488)) + 1)
-      wrI vel (3 * (truncate t488)) (t557 + ((t555 * (s554 - t507)) * t498))
-      wrI vel ((3 * (truncate t488)) + 1) (t558 + ((t555 * (s554 - t507)) * t499))
-      wrI vel ((3 * (truncate t488)) + 2) (t559 + ((t555 * (s554 - t507)) * t500))
-      wrI scalars ((6 * (truncate t488)) + 1) (t560 + ((t556 * (s554 - t507)) * t501))
+      wrU contacts ((30 * i487) + 24) s554
+      t555 <- rdU scalars ((6 * (truncate t488)) + 2)
+      t556 <- rdU scalars ((6 * (truncate t488)) + 3)
+      t557 <- rdU vel (3 * (truncate t488))
+      t558 <- rdU vel ((3 * (truncate t488)) + 1)
+      t559 <- rdU vel ((3 * (truncate t488)) + 2)
+      t560 <- rdU scalars ((6 * (truncate t488)) + 1)
+      wrU vel (3 * (truncate t488)) (t557 + ((t555 * (s554 - t507)) * t498))
+      wrU vel ((3 * (truncate t488)) + 1) (t558 + ((t555 * (s554 - t507)) * t499))
+      wrU vel ((3 * (truncate t488)) + 2) (t559 + ((t555 * (s554 - t507)) * t500))
+      wrU scalars ((6 * (truncate t488)) + 1) (t560 + ((t556 * (s554 - t507)) * t501))
       if (t489 + 0.5) > 0 then do
-        t561 <- rdI scalars ((6 * (truncate t489)) + 2)
-        t562 <- rdI scalars ((6 * (truncate t489)) + 3)
-        t563 <- rdI vel (3 * (truncate t489))
-        t564 <- rdI vel ((3 * (truncate t489)) + 1)
-        t565 <- rdI vel ((3 * (truncate t489)) + 2)
-        t566 <- rdI scalars ((6 * (truncate t489)) + 1)
-        wrI vel (3 * (truncate t489)) (t563 + ((t561 * (negate (s554 - t507))) * t502))
-        wrI vel ((3 * (truncate t489)) + 1) (t564 + ((t561 * (negate (s554 - t507))) * t503))
-        wrI vel ((3 * (truncate t489)) + 2) (t565 + ((t561 * (negate (s554 - t507))) * t504))
-        wrI scalars ((6 * (truncate t489)) + 1) (t566 + ((t562 * (negate (s554 - t507))) * t505))
+        chkI scalars (6 * (truncate t489)) 1 3
+        t561 <- rdU scalars ((6 * (truncate t489)) + 2)
+        t562 <- rdU scalars ((6 * (truncate t489)) + 3)
+        chkI vel (3 * (truncate t489)) 0 2
+        t563 <- rdU vel (3 * (truncate t489))
+        t564 <- rdU vel ((3 * (truncate t489)) + 1)
+        t565 <- rdU vel ((3 * (truncate t489)) + 2)
+        t566 <- rdU scalars ((6 * (truncate t489)) + 1)
+        wrU vel (3 * (truncate t489)) (t563 + ((t561 * (negate (s554 - t507))) * t502))
+        wrU vel ((3 * (truncate t489)) + 1) (t564 + ((t561 * (negate (s554 - t507))) * t503))
+        wrU vel ((3 * (truncate t489)) + 2) (t565 + ((t561 * (negate (s554 - t507))) * t504))
+        wrU scalars ((6 * (truncate t489)) + 1) (t566 + ((t562 * (negate (s554 - t507))) * t505))
         pure ()
       else do
         pure ()
       pure ()
-    t567 <- rdI mouse 0
+    t567 <- rdU mouse 0
     if t567 > 0 then do
-      t568 <- rdI mouse 1
-      t569 <- rdI scalars ((6 * (truncate t568)) + 2)
+      chkI mouse 0 1 1
+      t568 <- rdU mouse 1
+      chkI scalars (6 * (truncate t568)) 2 2
+      t569 <- rdU scalars ((6 * (truncate t568)) + 2)
       if t569 > 0 then do
-        t570 <- rdI scalars ((6 * (truncate t568)) + 3)
-        t571 <- rdI params 0
-        t572 <- rdI pos (3 * (truncate t568))
-        t573 <- rdI pos ((3 * (truncate t568)) + 1)
-        t574 <- rdI pos ((3 * (truncate t568)) + 2)
-        t575 <- rdI normal (3 * (truncate t568))
-        t576 <- rdI normal ((3 * (truncate t568)) + 1)
-        t577 <- rdI normal ((3 * (truncate t568)) + 2)
-        t578 <- rdI axis (3 * (truncate t568))
-        t579 <- rdI axis ((3 * (truncate t568)) + 1)
-        t580 <- rdI axis ((3 * (truncate t568)) + 2)
+        chkI scalars (6 * (truncate t568)) 0 5
+        t570 <- rdU scalars ((6 * (truncate t568)) + 3)
+        t571 <- rdU params 0
+        chkI pos (3 * (truncate t568)) 0 2
+        t572 <- rdU pos (3 * (truncate t568))
+        t573 <- rdU pos ((3 * (truncate t568)) + 1)
+        t574 <- rdU pos ((3 * (truncate t568)) + 2)
+        chkI normal (3 * (truncate t568)) 0 2
+        t575 <- rdU normal (3 * (truncate t568))
+        t576 <- rdU normal ((3 * (truncate t568)) + 1)
+        t577 <- rdU normal ((3 * (truncate t568)) + 2)
+        chkI axis (3 * (truncate t568)) 0 2
+        t578 <- rdU axis (3 * (truncate t568))
+        t579 <- rdU axis ((3 * (truncate t568)) + 1)
+        t580 <- rdU axis ((3 * (truncate t568)) + 2)
         let !s581 = ((t576 * t580) - (t577 * t579))
         let !s582 = ((t577 * t578) - (t575 * t580))
         let !s583 = ((t575 * t579) - (t576 * t578))
-        t584 <- rdI scalars (6 * (truncate t568))
-        t585 <- rdI scalars ((6 * (truncate t568)) + 5)
-        t586 <- rdI scalars ((6 * (truncate t568)) + 2)
-        t587 <- rdI scalars ((6 * (truncate t568)) + 3)
-        t588 <- rdI pos (3 * (truncate t568))
-        t589 <- rdI pos ((3 * (truncate t568)) + 1)
-        t590 <- rdI pos ((3 * (truncate t568)) + 2)
-        t591 <- rdI normal (3 * (truncate t568))
-        t592 <- rdI normal ((3 * (truncate t568)) + 1)
-        t593 <- rdI normal ((3 * (truncate t568)) + 2)
-        t594 <- rdI axis (3 * (truncate t568))
-        t595 <- rdI axis ((3 * (truncate t568)) + 1)
-        t596 <- rdI axis ((3 * (truncate t568)) + 2)
+        t584 <- rdU scalars (6 * (truncate t568))
+        t585 <- rdU scalars ((6 * (truncate t568)) + 5)
+        t586 <- rdU scalars ((6 * (truncate t568)) + 2)
+        t587 <- rdU scalars ((6 * (truncate t568)) + 3)
+        t588 <- rdU pos (3 * (truncate t568))
+        t589 <- rdU pos ((3 * (truncate t568)) + 1)
+        t590 <- rdU pos ((3 * (truncate t568)) + 2)
+        t591 <- rdU normal (3 * (truncate t568))
+        t592 <- rdU normal ((3 * (truncate t568)) + 1)
+        t593 <- rdU normal ((3 * (truncate t568)) + 2)
+        t594 <- rdU axis (3 * (truncate t568))
+        t595 <- rdU axis ((3 * (truncate t568)) + 1)
+        t596 <- rdU axis ((3 * (truncate t568)) + 2)
         let !s597 = ((t592 * t596) - (t593 * t595))
         let !s598 = ((t593 * t594) - (t591 * t596))
         let !s599 = ((t591 * t595) - (t592 * t594))
-        t600 <- rdI scalars (6 * (truncate t568))
-        t601 <- rdI scalars ((6 * (truncate t568)) + 5)
-        t602 <- rdI scalars ((6 * (truncate t568)) + 2)
-        t603 <- rdI scalars ((6 * (truncate t568)) + 3)
-        t604 <- rdI mouse 2
-        t605 <- rdI mouse 3
+        t600 <- rdU scalars (6 * (truncate t568))
+        t601 <- rdU scalars ((6 * (truncate t568)) + 5)
+        t602 <- rdU scalars ((6 * (truncate t568)) + 2)
+        t603 <- rdU scalars ((6 * (truncate t568)) + 3)
+        chkI mouse 0 2 11
+        t604 <- rdU mouse 2
+        t605 <- rdU mouse 3
         let !t606 = (t604 / 4.0)
         let !t607 = (if (abs t606) > 0 then 1.0 else 0.0)
         let !t608 = (t600 + t605)
@@ -1510,12 +1611,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s921 = ((t607 * (t903 * (t920 * t916))) + (t664 * s844))
         let !s922 = ((t607 * (t903 * (t920 * t917))) + (t664 * s845))
         let !s923 = ((t607 * (t903 * (t920 * t918))) + (t664 * s846))
-        t924 <- rdI mouse 4
-        t925 <- rdI mouse 5
-        t926 <- rdI mouse 6
-        t927 <- rdI mouse 7
-        t928 <- rdI mouse 8
-        t929 <- rdI mouse 9
+        t924 <- rdU mouse 4
+        t925 <- rdU mouse 5
+        t926 <- rdU mouse 6
+        t927 <- rdU mouse 7
+        t928 <- rdU mouse 8
+        t929 <- rdU mouse 9
         let !t930 = (recip t569)
         let !t931 = (6.283185307179586 * t927)
         let !s932 = (recip (t571 * ((((2.0 * t930) * t928) * t931) + (t571 * ((t930 * t931) * t931)))))
@@ -1526,11 +1627,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s937 = (s900 + (negate t924))
         let !s938 = (s901 + (negate t925))
         let !s939 = (s902 + (negate t926))
-        t940 <- rdI mouse 10
-        t941 <- rdI vel (3 * (truncate t568))
-        t942 <- rdI vel ((3 * (truncate t568)) + 1)
-        t943 <- rdI vel ((3 * (truncate t568)) + 2)
-        t944 <- rdI scalars ((6 * (truncate t568)) + 1)
+        t940 <- rdU mouse 10
+        chkI vel (3 * (truncate t568)) 0 2
+        t941 <- rdU vel (3 * (truncate t568))
+        t942 <- rdU vel ((3 * (truncate t568)) + 1)
+        t943 <- rdU vel ((3 * (truncate t568)) + 2)
+        t944 <- rdU scalars ((6 * (truncate t568)) + 1)
         let !t945 = (t929 * t571)
         let !t946 = (negate t945)
         let !t947 = (((((s935 * t580) - (s936 * t579)) * t575) + (((s936 * t578) - (s934 * t580)) * t576)) + (((s934 * t579) - (s935 * t578)) * t577))
@@ -1538,38 +1640,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t949 = (if (t948 - t945) > 0 then t945 else t948)
         let !t950 = (if (t946 - t949) > 0 then t946 else t949)
         let !s951 = (if (1.0 - (abs (t950 - t950))) > 0 then t950 else 0.0)
-        wrI mouse 10 s951
-        t952 <- rdI scalars ((6 * (truncate t568)) + 2)
-        t953 <- rdI scalars ((6 * (truncate t568)) + 3)
-        t954 <- rdI vel (3 * (truncate t568))
-        t955 <- rdI vel ((3 * (truncate t568)) + 1)
-        t956 <- rdI vel ((3 * (truncate t568)) + 2)
-        t957 <- rdI scalars ((6 * (truncate t568)) + 1)
-        wrI vel (3 * (truncate t568)) (t954 + ((t952 * (s951 - t940)) * t578))
-        wrI vel ((3 * (truncate t568)) + 1) (t955 + ((t952 * (s951 - t940)) * t579))
-        wrI vel ((3 * (truncate t568)) + 2) (t956 + ((t952 * (s951 - t940)) * t580))
-        wrI scalars ((6 * (truncate t568)) + 1) (t957 + ((t953 * (s951 - t940)) * t947))
-        t958 <- rdI mouse 11
-        t959 <- rdI vel (3 * (truncate t568))
-        t960 <- rdI vel ((3 * (truncate t568)) + 1)
-        t961 <- rdI vel ((3 * (truncate t568)) + 2)
-        t962 <- rdI scalars ((6 * (truncate t568)) + 1)
+        wrU mouse 10 s951
+        t952 <- rdU scalars ((6 * (truncate t568)) + 2)
+        t953 <- rdU scalars ((6 * (truncate t568)) + 3)
+        t954 <- rdU vel (3 * (truncate t568))
+        t955 <- rdU vel ((3 * (truncate t568)) + 1)
+        t956 <- rdU vel ((3 * (truncate t568)) + 2)
+        t957 <- rdU scalars ((6 * (truncate t568)) + 1)
+        wrU vel (3 * (truncate t568)) (t954 + ((t952 * (s951 - t940)) * t578))
+        wrU vel ((3 * (truncate t568)) + 1) (t955 + ((t952 * (s951 - t940)) * t579))
+        wrU vel ((3 * (truncate t568)) + 2) (t956 + ((t952 * (s951 - t940)) * t580))
+        wrU scalars ((6 * (truncate t568)) + 1) (t957 + ((t953 * (s951 - t940)) * t947))
+        t958 <- rdU mouse 11
+        t959 <- rdU vel (3 * (truncate t568))
+        t960 <- rdU vel ((3 * (truncate t568)) + 1)
+        t961 <- rdU vel ((3 * (truncate t568)) + 2)
+        t962 <- rdU scalars ((6 * (truncate t568)) + 1)
         let !t963 = (((((s935 * s583) - (s936 * s582)) * t575) + (((s936 * s581) - (s934 * s583)) * t576)) + (((s934 * s582) - (s935 * s581)) * t577))
         let !t964 = (t958 + ((negate ((((((s581 * t959) + (s582 * t960)) + (s583 * t961)) + (t963 * t962)) + (s933 * (((s937 * s581) + (s938 * s582)) + (s939 * s583)))) + (s932 * t958))) / (((t569 * (((s581 * s581) + (s582 * s582)) + (s583 * s583))) + ((t570 * t963) * t963)) + s932)))
         let !t965 = (if (t964 - t945) > 0 then t945 else t964)
         let !t966 = (if (t946 - t965) > 0 then t946 else t965)
         let !s967 = (if (1.0 - (abs (t966 - t966))) > 0 then t966 else 0.0)
-        wrI mouse 11 s967
-        t968 <- rdI scalars ((6 * (truncate t568)) + 2)
-        t969 <- rdI scalars ((6 * (truncate t568)) + 3)
-        t970 <- rdI vel (3 * (truncate t568))
-        t971 <- rdI vel ((3 * (truncate t568)) + 1)
-        t972 <- rdI vel ((3 * (truncate t568)) + 2)
-        t973 <- rdI scalars ((6 * (truncate t568)) + 1)
-        wrI vel (3 * (truncate t568)) (t970 + ((t968 * (s967 - t958)) * s581))
-        wrI vel ((3 * (truncate t568)) + 1) (t971 + ((t968 * (s967 - t958)) * s582))
-        wrI vel ((3 * (truncate t568)) + 2) (t972 + ((t968 * (s967 - t958)) * s583))
-        wrI scalars ((6 * (truncate t568)) + 1) (t973 + ((t969 * (s967 - t958)) * t963))
+        wrU mouse 11 s967
+        t968 <- rdU scalars ((6 * (truncate t568)) + 2)
+        t969 <- rdU scalars ((6 * (truncate t568)) + 3)
+        t970 <- rdU vel (3 * (truncate t568))
+        t971 <- rdU vel ((3 * (truncate t568)) + 1)
+        t972 <- rdU vel ((3 * (truncate t568)) + 2)
+        t973 <- rdU scalars ((6 * (truncate t568)) + 1)
+        wrU vel (3 * (truncate t568)) (t970 + ((t968 * (s967 - t958)) * s581))
+        wrU vel ((3 * (truncate t568)) + 1) (t971 + ((t968 * (s967 - t958)) * s582))
+        wrU vel ((3 * (truncate t568)) + 2) (t972 + ((t968 * (s967 - t958)) * s583))
+        wrU scalars ((6 * (truncate t568)) + 1) (t973 + ((t969 * (s967 - t958)) * t963))
         pure ()
       else do
         pure ()
@@ -1577,51 +1679,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t974 <- rdI meta 0
+  t974 <- rdU meta 0
   loopI 0.0 t974 $ \i975 -> do
     let !d975 = fromIntegral i975 :: Double
-    wrI bodyPrev ((2 * i975) + 1) 0.0
+    chkI bodyPrev (2 * i975) 1 1
+    wrU bodyPrev ((2 * i975) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i976 -> do
     let !d976 = fromIntegral i976 :: Double
-    t977 <- rdI contacts ((30 * i976) + 2)
-    wrI prev (4 * i976) t977
-    t978 <- rdI contacts ((30 * i976) + 3)
-    wrI prev ((4 * i976) + 1) t978
-    t979 <- rdI contacts ((30 * i976) + 24)
-    wrI prev ((4 * i976) + 2) t979
-    t980 <- rdI contacts ((30 * i976) + 25)
-    wrI prev ((4 * i976) + 3) t980
-    t981 <- rdI bodyPrev ((2 * (truncate t977)) + 1)
+    chkI contacts (30 * i976) 2 25
+    t977 <- rdU contacts ((30 * i976) + 2)
+    chkI prev (4 * i976) 0 3
+    wrU prev (4 * i976) t977
+    t978 <- rdU contacts ((30 * i976) + 3)
+    wrU prev ((4 * i976) + 1) t978
+    t979 <- rdU contacts ((30 * i976) + 24)
+    wrU prev ((4 * i976) + 2) t979
+    t980 <- rdU contacts ((30 * i976) + 25)
+    wrU prev ((4 * i976) + 3) t980
+    chkI bodyPrev (2 * (truncate t977)) 1 1
+    t981 <- rdU bodyPrev ((2 * (truncate t977)) + 1)
     if (0.5 - t981) > 0 then do
-      wrI bodyPrev (2 * (truncate t977)) d976
+      chkI bodyPrev (2 * (truncate t977)) 0 0
+      wrU bodyPrev (2 * (truncate t977)) d976
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t977)) + 1) (t981 + 1.0)
+    wrU bodyPrev ((2 * (truncate t977)) + 1) (t981 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t5 + (t1 * t8))
@@ -1763,51 +1877,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t155 = (t12 + (t1 * t13))
     let !t156 = (1.0 - (abs ((((((((((((((s101 - s101) + (s102 - s102)) + (s103 - s103)) + (s140 - s140)) + (s141 - s141)) + (s142 - s142)) + (s149 - s149)) + (s150 - s150)) + (s151 - s151)) + (s114 - s114)) + (s115 - s115)) + (s116 - s116)) + (t155 - t155)) + (s153 - s153))))
     if (if (t154 - t156) > 0 then t156 else t154) > 0 then do
-      wrI pos (3 * i2) s101
-      wrI pos ((3 * i2) + 1) s102
-      wrI pos ((3 * i2) + 2) s103
-      wrI vel (3 * i2) s140
-      wrI vel ((3 * i2) + 1) s141
-      wrI vel ((3 * i2) + 2) s142
-      wrI axis (3 * i2) s149
-      wrI axis ((3 * i2) + 1) s150
-      wrI axis ((3 * i2) + 2) s151
-      wrI normal (3 * i2) s114
-      wrI normal ((3 * i2) + 1) s115
-      wrI normal ((3 * i2) + 2) s116
-      wrI scalars (6 * i2) t155
+      wrU pos (3 * i2) s101
+      wrU pos ((3 * i2) + 1) s102
+      wrU pos ((3 * i2) + 2) s103
+      wrU vel (3 * i2) s140
+      wrU vel ((3 * i2) + 1) s141
+      wrU vel ((3 * i2) + 2) s142
+      wrU axis (3 * i2) s149
+      wrU axis ((3 * i2) + 1) s150
+      wrU axis ((3 * i2) + 2) s151
+      wrU normal (3 * i2) s114
+      wrU normal ((3 * i2) + 1) s115
+      wrU normal ((3 * i2) + 2) s116
+      wrU scalars (6 * i2) t155
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t157 <- rdI meta 1
-      wrI meta 1 (t157 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t157 <- rdU meta 1
+      wrU meta 1 (t157 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1816,7 +1938,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1895,9 +2018,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s94 = ((t28 * t80) + (t68 * t8))
         let !s95 = ((t28 * t81) + (t68 * t9))
         let !s96 = ((t28 * t83) + (t68 * t10))
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
         let !t97 = (s69 + (s27 * s91))
         let !t98 = (s71 + (s27 * s93))
         let !t99 = (sqrt ((t97 * t97) + (t98 * t98)))
@@ -1964,9 +2088,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s160 = ((t28 * t146) + (t68 * s94))
         let !s161 = ((t28 * t147) + (t68 * s95))
         let !s162 = ((t28 * t149) + (t68 * s96))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s136 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s137 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s138 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s136 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s137 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s138 else t4)
         let !t163 = (s136 + (s27 * s157))
         let !t164 = (s138 + (s27 * s159))
         let !t165 = (sqrt ((t163 * t163) + (t164 * t164)))
@@ -2033,9 +2158,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s226 = ((t28 * t212) + (t68 * s160))
         let !s227 = ((t28 * t213) + (t68 * s161))
         let !s228 = ((t28 * t215) + (t68 * s162))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s202 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s203 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s204 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s202 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s203 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s204 else t4)
         let !t229 = (s202 + (s27 * s223))
         let !t230 = (s204 + (s27 * s225))
         let !t231 = (sqrt ((t229 * t229) + (t230 * t230)))
@@ -2102,9 +2228,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s292 = ((t28 * t278) + (t68 * s226))
         let !s293 = ((t28 * t279) + (t68 * s227))
         let !s294 = ((t28 * t281) + (t68 * s228))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
         pure ()
       else do
         let !t295 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2155,18 +2282,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s340 = (if t339 > 0 then t336 else t2)
         let !s341 = (if t339 > 0 then t337 else t3)
         let !s342 = (if t339 > 0 then t338 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s340
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s341
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s342
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s340 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s341 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s342 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s340 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s341 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s342 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s340 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s341 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s342 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s340
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s341
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s342
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s340 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s341 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s342 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s340 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s341 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s342 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s340 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s341 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s342 + (negate t4))))
         pure ()
       pure ()
     pure ()

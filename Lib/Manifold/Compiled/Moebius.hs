@@ -28,35 +28,42 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (negate (4.0 * t6))
       let !t15 = (t12 * t14)
       let !t16 = (t8 + (t1 * (negate (t15 * t11))))
       let !t17 = (t9 + (t1 * (t14 + (negate (t15 * t12)))))
       let !t18 = (t10 + (t1 * (negate (t15 * t13))))
       if (1.0 - (abs (((t16 - t16) + (t17 - t17)) + (t18 - t18)))) > 0 then do
-        wrI vel (3 * i3) t16
-        wrI vel ((3 * i3) + 1) t17
-        wrI vel ((3 * i3) + 2) t18
+        wrU vel (3 * i3) t16
+        wrU vel ((3 * i3) + 1) t17
+        wrU vel ((3 * i3) + 2) t18
         pure ()
       else do
-        t19 <- rdI meta 1
-        wrI meta 1 (t19 + 1.0)
+        chkI meta 0 1 1
+        t19 <- rdU meta 1
+        wrU meta 1 (t19 + 1.0)
         pure ()
       pure ()
     else do
@@ -66,12 +73,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -81,54 +90,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -144,19 +164,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -180,8 +206,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     let !s67 = (negate t32)
     let !s68 = (negate t33)
     let !s69 = (negate t34)
-    t70 <- rdI meta 4
-    t71 <- rdI meta 5
+    t70 <- rdU meta 4
+    t71 <- rdU meta 5
     let !s72 = (floorF (s67 / t71))
     let !s73 = (floorF (s68 / t71))
     let !s74 = (floorF (s69 / t71))
@@ -197,19 +223,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s81 = (((((s78 + 131072.0) * 262144.0) + (s79 + 131072.0)) * 262144.0) + (s80 + 131072.0))
           let !t82 = (((s78 * 7.3856093e7) + (s79 * 1.9349663e7)) + (s80 * 8.3492791e7))
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
-          t84 <- rdI grid (truncate s83)
-          t85 <- rdI grid ((truncate t70) + (truncate s83))
+          chkI grid (truncate s83) 0 0
+          t84 <- rdU grid (truncate s83)
+          chkI grid ((truncate t70) + (truncate s83)) 0 0
+          t85 <- rdU grid ((truncate t70) + (truncate s83))
           loopI t85 t84 $ \i86 -> do
             let !d86 = fromIntegral i86 :: Double
-            t87 <- rdI items i86
-            t88 <- rdI cellOf (truncate t87)
+            chkI items i86 0 0
+            t87 <- rdU items i86
+            chkI cellOf (truncate t87) 0 0
+            t88 <- rdU cellOf (truncate t87)
             if (0.5 - (abs (t88 - s81))) > 0 then do
               if ((t87 - d31) + 0.5) > 0 then do
-                t89 <- rdI pos (3 * (truncate t87))
-                t90 <- rdI pos ((3 * (truncate t87)) + 1)
-                t91 <- rdI pos ((3 * (truncate t87)) + 2)
-                t92 <- rdI scalars ((6 * (truncate t87)) + 5)
-                t93 <- rdI scalars ((6 * (truncate t87)) + 2)
+                chkI pos (3 * (truncate t87)) 0 2
+                t89 <- rdU pos (3 * (truncate t87))
+                t90 <- rdU pos ((3 * (truncate t87)) + 1)
+                t91 <- rdU pos ((3 * (truncate t87)) + 2)
+                chkI scalars (6 * (truncate t87)) 2 5
+                t92 <- rdU scalars ((6 * (truncate t87)) + 5)
+                t93 <- rdU scalars ((6 * (truncate t87)) + 2)
                 let !t94 = (t36 + t93)
                 let !t95 = (s67 + (negate t89))
                 let !t96 = (s68 + (negate t90))
@@ -230,16 +262,18 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t99 <- rdI normal (3 * i31)
-    t100 <- rdI normal ((3 * i31) + 1)
-    t101 <- rdI normal ((3 * i31) + 2)
+    chkI normal (3 * i31) 0 2
+    t99 <- rdU normal (3 * i31)
+    t100 <- rdU normal ((3 * i31) + 1)
+    t101 <- rdU normal ((3 * i31) + 2)
     v102 <- newR 0.0
     v103 <- newR (-1.0)
     loopI 0.0 24.0 $ \i104 -> do
       let !d104 = fromIntegral i104 :: Double
-      t105 <- rdI verts (3 * ((((97 * i31) + 1) + (i104 * 4)) + 3))
-      t106 <- rdI verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 1)
-      t107 <- rdI verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) 0 2
+      t105 <- rdU verts (3 * ((((97 * i31) + 1) + (i104 * 4)) + 3))
+      t106 <- rdU verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 1)
+      t107 <- rdU verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 2)
       let !s108 = (0.4 - (abs t106))
       t109 <- getR v102
       if ((negate s108) - t109) > 0 then do
@@ -252,9 +286,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t110 <- getR v102
     if t110 > 0 then do
       t111 <- getR v103
-      t112 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3))
-      t113 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 1)
-      t114 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) 0 2
+      t112 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3))
+      t113 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 1)
+      t114 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 2)
       let !t115 = (negate (signum t113))
       let !t116 = (sqrt (t115 * t115))
       let !s117 = ((if t116 > 0 then (recip (if (t116 - 1.0e-300) > 0 then t116 else 1.0e-300)) else 0.0) * t115)
@@ -266,9 +301,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v123 <- newR (-1.0)
       loopI 0.0 24.0 $ \i124 -> do
         let !d124 = fromIntegral i124 :: Double
-        t125 <- rdI verts (3 * ((((97 * i31) + 1) + (i124 * 4)) + 3))
-        t126 <- rdI verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 1)
-        t127 <- rdI verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) 0 2
+        t125 <- rdU verts (3 * ((((97 * i31) + 1) + (i124 * 4)) + 3))
+        t126 <- rdU verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 1)
+        t127 <- rdU verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 2)
         if (negate (0.4 - (abs t126))) > 0 then do
           let !s128 = ((t125 * s118) + (t127 * s119))
           t129 <- getR v120
@@ -291,184 +327,202 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t131 <- getR v122
       t132 <- getR v123
-      t133 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3))
-      t134 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 1)
-      t135 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) 0 2
+      t133 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3))
+      t134 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 1)
+      t135 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 2)
       let !s136 = (negate (signum t134))
       let !s137 = (sqrt (s136 * s136))
       let !s138 = (0.4 - (abs t134))
-      t139 <- rdI meta 2
-      t140 <- rdI meta 3
+      t139 <- rdU meta 2
+      t140 <- rdU meta 3
       if (((8.0 * (if (1.0 - t140) > 0 then 1.0 else t140)) - t139) - 0.5) > 0 then do
-        wrI meta 2 (t139 + 1.0)
-        t141 <- rdI pos (3 * i31)
-        t142 <- rdI pos ((3 * i31) + 1)
-        t143 <- rdI pos ((3 * i31) + 2)
-        t144 <- rdI normal (3 * i31)
-        t145 <- rdI normal ((3 * i31) + 1)
-        t146 <- rdI normal ((3 * i31) + 2)
-        t147 <- rdI axis (3 * i31)
-        t148 <- rdI axis ((3 * i31) + 1)
-        t149 <- rdI axis ((3 * i31) + 2)
+        wrU meta 2 (t139 + 1.0)
+        t141 <- rdU pos (3 * i31)
+        t142 <- rdU pos ((3 * i31) + 1)
+        t143 <- rdU pos ((3 * i31) + 2)
+        t144 <- rdU normal (3 * i31)
+        t145 <- rdU normal ((3 * i31) + 1)
+        t146 <- rdU normal ((3 * i31) + 2)
+        chkI axis (3 * i31) 0 2
+        t147 <- rdU axis (3 * i31)
+        t148 <- rdU axis ((3 * i31) + 1)
+        t149 <- rdU axis ((3 * i31) + 2)
         let !s150 = ((t145 * t149) - (t146 * t148))
         let !s151 = ((t146 * t147) - (t144 * t149))
         let !s152 = ((t144 * t148) - (t145 * t147))
-        t153 <- rdI scalars (6 * i31)
-        t154 <- rdI scalars ((6 * i31) + 5)
-        t155 <- rdI scalars ((6 * i31) + 2)
-        t156 <- rdI scalars ((6 * i31) + 3)
-        wrI contacts (30 * (truncate t139)) d31
-        wrI contacts ((30 * (truncate t139)) + 1) (-1.0)
-        wrI contacts ((30 * (truncate t139)) + 2) d31
-        wrI contacts ((30 * (truncate t139)) + 3) 8.0
-        wrI contacts ((30 * (truncate t139)) + 4) (negate ((t145 * ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)) * t144))
+        chkI scalars (6 * i31) 0 0
+        t153 <- rdU scalars (6 * i31)
+        t154 <- rdU scalars ((6 * i31) + 5)
+        t155 <- rdU scalars ((6 * i31) + 2)
+        t156 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t139)) 0 29
+        wrU contacts (30 * (truncate t139)) d31
+        wrU contacts ((30 * (truncate t139)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t139)) + 2) d31
+        wrU contacts ((30 * (truncate t139)) + 3) 8.0
+        wrU contacts ((30 * (truncate t139)) + 4) (negate ((t145 * ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)) * t144))
         let !t157 = ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)
-        wrI contacts (((30 * (truncate t139)) + 4) + 1) (t157 + (negate ((t145 * t157) * t145)))
-        wrI contacts (((30 * (truncate t139)) + 4) + 2) (negate ((t145 * t157) * t146))
-        wrI contacts ((30 * (truncate t139)) + 7) (((negate ((t135 + (negate t143)) * t157)) * t144) + (((t133 + (negate t141)) * t157) * t146))
+        wrU contacts ((30 * (truncate t139)) + 5) (t157 + (negate ((t145 * t157) * t145)))
+        wrU contacts ((30 * (truncate t139)) + 6) (negate ((t145 * t157) * t146))
+        wrU contacts ((30 * (truncate t139)) + 7) (((negate ((t135 + (negate t143)) * t157)) * t144) + (((t133 + (negate t141)) * t157) * t146))
         let !t158 = (negate (t146 * t157))
-        wrI contacts ((30 * (truncate t139)) + 12) (t158 + (negate (((t144 * t158) + (t146 * (t144 * t157))) * t144)))
-        wrI contacts (((30 * (truncate t139)) + 12) + 1) (negate (((t144 * t158) + (t146 * (t144 * t157))) * t145))
+        wrU contacts ((30 * (truncate t139)) + 12) (t158 + (negate (((t144 * t158) + (t146 * (t144 * t157))) * t144)))
+        wrU contacts ((30 * (truncate t139)) + 13) (negate (((t144 * t158) + (t146 * (t144 * t157))) * t145))
         let !t159 = (t144 * t157)
-        wrI contacts (((30 * (truncate t139)) + 12) + 2) (t159 + (negate (((t144 * t158) + (t146 * t159)) * t146)))
+        wrU contacts ((30 * (truncate t139)) + 14) (t159 + (negate (((t144 * t158) + (t146 * t159)) * t146)))
         let !t160 = (t134 + (negate t142))
-        wrI contacts ((30 * (truncate t139)) + 15) ((((t160 * t159) * t144) + ((((t135 + (negate t143)) * t158) - ((t133 + (negate t141)) * t159)) * t145)) + ((negate (t160 * t158)) * t146))
-        wrI contacts ((30 * (truncate t139)) + 20) (if s137 > 0 then ((negate s138) / (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0)
-        wrI contacts ((30 * (truncate t139)) + 26) 1.0
-        wrI contacts ((30 * (truncate t139)) + 27) t133
-        wrI contacts (((30 * (truncate t139)) + 27) + 1) t134
-        wrI contacts (((30 * (truncate t139)) + 27) + 2) t135
+        wrU contacts ((30 * (truncate t139)) + 15) ((((t160 * t159) * t144) + ((((t135 + (negate t143)) * t158) - ((t133 + (negate t141)) * t159)) * t145)) + ((negate (t160 * t158)) * t146))
+        wrU contacts ((30 * (truncate t139)) + 20) (if s137 > 0 then ((negate s138) / (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t139)) + 26) 1.0
+        wrU contacts ((30 * (truncate t139)) + 27) t133
+        wrU contacts ((30 * (truncate t139)) + 28) t134
+        wrU contacts ((30 * (truncate t139)) + 29) t135
         if (-0.5) > 0 then do
-          t161 <- rdI pos (-3)
-          t162 <- rdI pos (-2)
-          t163 <- rdI pos (-1)
-          t164 <- rdI normal (-3)
-          t165 <- rdI normal (-2)
-          t166 <- rdI normal (-1)
-          t167 <- rdI axis (-3)
-          t168 <- rdI axis (-2)
-          t169 <- rdI axis (-1)
+          chkI pos 0 (-3) (-1)
+          t161 <- rdU pos (-3)
+          t162 <- rdU pos (-2)
+          t163 <- rdU pos (-1)
+          chkI normal 0 (-3) (-1)
+          t164 <- rdU normal (-3)
+          t165 <- rdU normal (-2)
+          t166 <- rdU normal (-1)
+          chkI axis 0 (-3) (-1)
+          t167 <- rdU axis (-3)
+          t168 <- rdU axis (-2)
+          t169 <- rdU axis (-1)
           let !s170 = ((t165 * t169) - (t166 * t168))
           let !s171 = ((t166 * t167) - (t164 * t169))
           let !s172 = ((t164 * t168) - (t165 * t167))
-          t173 <- rdI scalars (-6)
-          t174 <- rdI scalars (-1)
-          t175 <- rdI scalars (-4)
-          t176 <- rdI scalars (-3)
-          wrI contacts ((30 * (truncate t139)) + 8) (negate ((t165 * t157) * t164))
-          wrI contacts (((30 * (truncate t139)) + 8) + 1) (t157 + (negate ((t165 * t157) * t165)))
-          wrI contacts (((30 * (truncate t139)) + 8) + 2) (negate ((t165 * t157) * t166))
-          wrI contacts ((30 * (truncate t139)) + 11) (((negate ((t135 + (negate t163)) * t157)) * t164) + (((t133 + (negate t161)) * t157) * t166))
-          wrI contacts ((30 * (truncate t139)) + 16) (t158 + (negate (((t164 * t158) + (t166 * t159)) * t164)))
-          wrI contacts (((30 * (truncate t139)) + 16) + 1) (negate (((t164 * t158) + (t166 * t159)) * t165))
-          wrI contacts (((30 * (truncate t139)) + 16) + 2) (t159 + (negate (((t164 * t158) + (t166 * t159)) * t166)))
+          chkI scalars 0 (-6) (-1)
+          t173 <- rdU scalars (-6)
+          t174 <- rdU scalars (-1)
+          t175 <- rdU scalars (-4)
+          t176 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t139)) + 8) (negate ((t165 * t157) * t164))
+          wrU contacts ((30 * (truncate t139)) + 9) (t157 + (negate ((t165 * t157) * t165)))
+          wrU contacts ((30 * (truncate t139)) + 10) (negate ((t165 * t157) * t166))
+          wrU contacts ((30 * (truncate t139)) + 11) (((negate ((t135 + (negate t163)) * t157)) * t164) + (((t133 + (negate t161)) * t157) * t166))
+          wrU contacts ((30 * (truncate t139)) + 16) (t158 + (negate (((t164 * t158) + (t166 * t159)) * t164)))
+          wrU contacts ((30 * (truncate t139)) + 17) (negate (((t164 * t158) + (t166 * t159)) * t165))
+          wrU contacts ((30 * (truncate t139)) + 18) (t159 + (negate (((t164 * t158) + (t166 * t159)) * t166)))
           let !t177 = (t134 + (negate t162))
-          wrI contacts ((30 * (truncate t139)) + 19) ((((t177 * t159) * t164) + ((((t135 + (negate t163)) * t158) - ((t133 + (negate t161)) * t159)) * t165)) + ((negate (t177 * t158)) * t166))
+          wrU contacts ((30 * (truncate t139)) + 19) ((((t177 * t159) * t164) + ((((t135 + (negate t163)) * t158) - ((t133 + (negate t161)) * t159)) * t165)) + ((negate (t177 * t158)) * t166))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t139)) + 8) 0.0
-          wrI contacts (((30 * (truncate t139)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t139)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t139)) + 11) 0.0
-          wrI contacts ((30 * (truncate t139)) + 16) 0.0
-          wrI contacts (((30 * (truncate t139)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t139)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t139)) + 19) 0.0
+          wrU contacts ((30 * (truncate t139)) + 8) 0.0
+          wrU contacts ((30 * (truncate t139)) + 9) 0.0
+          wrU contacts ((30 * (truncate t139)) + 10) 0.0
+          wrU contacts ((30 * (truncate t139)) + 11) 0.0
+          wrU contacts ((30 * (truncate t139)) + 16) 0.0
+          wrU contacts ((30 * (truncate t139)) + 17) 0.0
+          wrU contacts ((30 * (truncate t139)) + 18) 0.0
+          wrU contacts ((30 * (truncate t139)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t178 <- rdI meta 6
-        wrI meta 6 (t178 + 1.0)
+        chkI meta 0 6 6
+        t178 <- rdU meta 6
+        wrU meta 6 (t178 + 1.0)
         pure ()
       if (abs (t132 - t131)) > 0 then do
-        t179 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3))
-        t180 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 1)
-        t181 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) 0 2
+        t179 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3))
+        t180 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 1)
+        t181 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 2)
         let !s182 = (negate (signum t180))
         let !s183 = (sqrt (s182 * s182))
         let !s184 = (0.4 - (abs t180))
-        t185 <- rdI meta 2
-        t186 <- rdI meta 3
+        t185 <- rdU meta 2
+        t186 <- rdU meta 3
         if (((8.0 * (if (1.0 - t186) > 0 then 1.0 else t186)) - t185) - 0.5) > 0 then do
-          wrI meta 2 (t185 + 1.0)
-          t187 <- rdI pos (3 * i31)
-          t188 <- rdI pos ((3 * i31) + 1)
-          t189 <- rdI pos ((3 * i31) + 2)
-          t190 <- rdI normal (3 * i31)
-          t191 <- rdI normal ((3 * i31) + 1)
-          t192 <- rdI normal ((3 * i31) + 2)
-          t193 <- rdI axis (3 * i31)
-          t194 <- rdI axis ((3 * i31) + 1)
-          t195 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t185 + 1.0)
+          t187 <- rdU pos (3 * i31)
+          t188 <- rdU pos ((3 * i31) + 1)
+          t189 <- rdU pos ((3 * i31) + 2)
+          t190 <- rdU normal (3 * i31)
+          t191 <- rdU normal ((3 * i31) + 1)
+          t192 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t193 <- rdU axis (3 * i31)
+          t194 <- rdU axis ((3 * i31) + 1)
+          t195 <- rdU axis ((3 * i31) + 2)
           let !s196 = ((t191 * t195) - (t192 * t194))
           let !s197 = ((t192 * t193) - (t190 * t195))
           let !s198 = ((t190 * t194) - (t191 * t193))
-          t199 <- rdI scalars (6 * i31)
-          t200 <- rdI scalars ((6 * i31) + 5)
-          t201 <- rdI scalars ((6 * i31) + 2)
-          t202 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t185)) d31
-          wrI contacts ((30 * (truncate t185)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t185)) + 2) d31
-          wrI contacts ((30 * (truncate t185)) + 3) 9.0
-          wrI contacts ((30 * (truncate t185)) + 4) (negate ((t191 * ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)) * t190))
+          chkI scalars (6 * i31) 0 0
+          t199 <- rdU scalars (6 * i31)
+          t200 <- rdU scalars ((6 * i31) + 5)
+          t201 <- rdU scalars ((6 * i31) + 2)
+          t202 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t185)) 0 29
+          wrU contacts (30 * (truncate t185)) d31
+          wrU contacts ((30 * (truncate t185)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t185)) + 2) d31
+          wrU contacts ((30 * (truncate t185)) + 3) 9.0
+          wrU contacts ((30 * (truncate t185)) + 4) (negate ((t191 * ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)) * t190))
           let !t203 = ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)
-          wrI contacts (((30 * (truncate t185)) + 4) + 1) (t203 + (negate ((t191 * t203) * t191)))
-          wrI contacts (((30 * (truncate t185)) + 4) + 2) (negate ((t191 * t203) * t192))
-          wrI contacts ((30 * (truncate t185)) + 7) (((negate ((t181 + (negate t189)) * t203)) * t190) + (((t179 + (negate t187)) * t203) * t192))
+          wrU contacts ((30 * (truncate t185)) + 5) (t203 + (negate ((t191 * t203) * t191)))
+          wrU contacts ((30 * (truncate t185)) + 6) (negate ((t191 * t203) * t192))
+          wrU contacts ((30 * (truncate t185)) + 7) (((negate ((t181 + (negate t189)) * t203)) * t190) + (((t179 + (negate t187)) * t203) * t192))
           let !t204 = (negate (t192 * t203))
-          wrI contacts ((30 * (truncate t185)) + 12) (t204 + (negate (((t190 * t204) + (t192 * (t190 * t203))) * t190)))
-          wrI contacts (((30 * (truncate t185)) + 12) + 1) (negate (((t190 * t204) + (t192 * (t190 * t203))) * t191))
+          wrU contacts ((30 * (truncate t185)) + 12) (t204 + (negate (((t190 * t204) + (t192 * (t190 * t203))) * t190)))
+          wrU contacts ((30 * (truncate t185)) + 13) (negate (((t190 * t204) + (t192 * (t190 * t203))) * t191))
           let !t205 = (t190 * t203)
-          wrI contacts (((30 * (truncate t185)) + 12) + 2) (t205 + (negate (((t190 * t204) + (t192 * t205)) * t192)))
+          wrU contacts ((30 * (truncate t185)) + 14) (t205 + (negate (((t190 * t204) + (t192 * t205)) * t192)))
           let !t206 = (t180 + (negate t188))
-          wrI contacts ((30 * (truncate t185)) + 15) ((((t206 * t205) * t190) + ((((t181 + (negate t189)) * t204) - ((t179 + (negate t187)) * t205)) * t191)) + ((negate (t206 * t204)) * t192))
-          wrI contacts ((30 * (truncate t185)) + 20) (if s183 > 0 then ((negate s184) / (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0)
-          wrI contacts ((30 * (truncate t185)) + 26) 1.0
-          wrI contacts ((30 * (truncate t185)) + 27) t179
-          wrI contacts (((30 * (truncate t185)) + 27) + 1) t180
-          wrI contacts (((30 * (truncate t185)) + 27) + 2) t181
+          wrU contacts ((30 * (truncate t185)) + 15) ((((t206 * t205) * t190) + ((((t181 + (negate t189)) * t204) - ((t179 + (negate t187)) * t205)) * t191)) + ((negate (t206 * t204)) * t192))
+          wrU contacts ((30 * (truncate t185)) + 20) (if s183 > 0 then ((negate s184) / (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t185)) + 26) 1.0
+          wrU contacts ((30 * (truncate t185)) + 27) t179
+          wrU contacts ((30 * (truncate t185)) + 28) t180
+          wrU contacts ((30 * (truncate t185)) + 29) t181
           if (-0.5) > 0 then do
-            t207 <- rdI pos (-3)
-            t208 <- rdI pos (-2)
-            t209 <- rdI pos (-1)
-            t210 <- rdI normal (-3)
-            t211 <- rdI normal (-2)
-            t212 <- rdI normal (-1)
-            t213 <- rdI axis (-3)
-            t214 <- rdI axis (-2)
-            t215 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t207 <- rdU pos (-3)
+            t208 <- rdU pos (-2)
+            t209 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t210 <- rdU normal (-3)
+            t211 <- rdU normal (-2)
+            t212 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t213 <- rdU axis (-3)
+            t214 <- rdU axis (-2)
+            t215 <- rdU axis (-1)
             let !s216 = ((t211 * t215) - (t212 * t214))
             let !s217 = ((t212 * t213) - (t210 * t215))
             let !s218 = ((t210 * t214) - (t211 * t213))
-            t219 <- rdI scalars (-6)
-            t220 <- rdI scalars (-1)
-            t221 <- rdI scalars (-4)
-            t222 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t185)) + 8) (negate ((t211 * t203) * t210))
-            wrI contacts (((30 * (truncate t185)) + 8) + 1) (t203 + (negate ((t211 * t203) * t211)))
-            wrI contacts (((30 * (truncate t185)) + 8) + 2) (negate ((t211 * t203) * t212))
-            wrI contacts ((30 * (truncate t185)) + 11) (((negate ((t181 + (negate t209)) * t203)) * t210) + (((t179 + (negate t207)) * t203) * t212))
-            wrI contacts ((30 * (truncate t185)) + 16) (t204 + (negate (((t210 * t204) + (t212 * t205)) * t210)))
-            wrI contacts (((30 * (truncate t185)) + 16) + 1) (negate (((t210 * t204) + (t212 * t205)) * t211))
-            wrI contacts (((30 * (truncate t185)) + 16) + 2) (t205 + (negate (((t210 * t204) + (t212 * t205)) * t212)))
+            chkI scalars 0 (-6) (-1)
+            t219 <- rdU scalars (-6)
+            t220 <- rdU scalars (-1)
+            t221 <- rdU scalars (-4)
+            t222 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t185)) + 8) (negate ((t211 * t203) * t210))
+            wrU contacts ((30 * (truncate t185)) + 9) (t203 + (negate ((t211 * t203) * t211)))
+            wrU contacts ((30 * (truncate t185)) + 10) (negate ((t211 * t203) * t212))
+            wrU contacts ((30 * (truncate t185)) + 11) (((negate ((t181 + (negate t209)) * t203)) * t210) + (((t179 + (negate t207)) * t203) * t212))
+            wrU contacts ((30 * (truncate t185)) + 16) (t204 + (negate (((t210 * t204) + (t212 * t205)) * t210)))
+            wrU contacts ((30 * (truncate t185)) + 17) (negate (((t210 * t204) + (t212 * t205)) * t211))
+            wrU contacts ((30 * (truncate t185)) + 18) (t205 + (negate (((t210 * t204) + (t212 * t205)) * t212)))
             let !t223 = (t180 + (negate t208))
-            wrI contacts ((30 * (truncate t185)) + 19) ((((t223 * t205) * t210) + ((((t181 + (negate t209)) * t204) - ((t179 + (negate t207)) * t205)) * t211)) + ((negate (t223 * t204)) * t212))
+            wrU contacts ((30 * (truncate t185)) + 19) ((((t223 * t205) * t210) + ((((t181 + (negate t209)) * t204) - ((t179 + (negate t207)) * t205)) * t211)) + ((negate (t223 * t204)) * t212))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t185)) + 8) 0.0
-            wrI contacts (((30 * (truncate t185)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t185)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t185)) + 11) 0.0
-            wrI contacts ((30 * (truncate t185)) + 16) 0.0
-            wrI contacts (((30 * (truncate t185)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t185)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t185)) + 19) 0.0
+            wrU contacts ((30 * (truncate t185)) + 8) 0.0
+            wrU contacts ((30 * (truncate t185)) + 9) 0.0
+            wrU contacts ((30 * (truncate t185)) + 10) 0.0
+            wrU contacts ((30 * (truncate t185)) + 11) 0.0
+            wrU contacts ((30 * (truncate t185)) + 16) 0.0
+            wrU contacts ((30 * (truncate t185)) + 17) 0.0
+            wrU contacts ((30 * (truncate t185)) + 18) 0.0
+            wrU contacts ((30 * (truncate t185)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t224 <- rdI meta 6
-          wrI meta 6 (t224 + 1.0)
+          chkI meta 0 6 6
+          t224 <- rdU meta 6
+          wrU meta 6 (t224 + 1.0)
           pure ()
         pure ()
       else do
@@ -476,16 +530,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t225 <- rdI verts (3 * (97 * i31))
-    t226 <- rdI verts ((3 * (97 * i31)) + 1)
-    t227 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t225 <- rdU verts (3 * (97 * i31))
+    t226 <- rdU verts ((3 * (97 * i31)) + 1)
+    t227 <- rdU verts ((3 * (97 * i31)) + 2)
     v228 <- newR 1.0
     loopI 0.0 24.0 $ \i229 -> do
       let !d229 = fromIntegral i229 :: Double
-      t230 <- rdI verts (3 * ((((97 * i31) + 1) + (i229 * 4)) + 3))
-      t231 <- rdI verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 1)
-      t232 <- rdI verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 2)
-      t233 <- rdI radii ((24 * i31) + i229)
+      chkI verts (3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) 0 2
+      t230 <- rdU verts (3 * ((((97 * i31) + 1) + (i229 * 4)) + 3))
+      t231 <- rdU verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 1)
+      t232 <- rdU verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i229) 0 0
+      t233 <- rdU radii ((24 * i31) + i229)
       t234 <- getR v228
       let !t235 = (t230 + (negate t225))
       let !t236 = (t231 + (negate t226))
@@ -504,27 +561,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v246 <- newR 0.0
       loopI 0.0 24.0 $ \i247 -> do
         let !d247 = fromIntegral i247 :: Double
-        t248 <- rdI radii ((24 * i31) + i247)
+        chkI radii ((24 * i31) + i247) 0 0
+        t248 <- rdU radii ((24 * i31) + i247)
         loopI 6.0 12.0 $ \i249 -> do
           let !d249 = fromIntegral i249 :: Double
           let !t250 = (d247 + d249)
-          t251 <- rdI radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0)))))) 0 0
+          t251 <- rdU radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0))))))
           loopI 1.0 4.0 $ \i252 -> do
             let !d252 = fromIntegral i252 :: Double
-            t253 <- rdI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1)))
-            t254 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 1)
-            t255 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 2)
-            t256 <- rdI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + i252))
-            t257 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 1)
-            t258 <- rdI verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) 0 2
+            t253 <- rdU verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1)))
+            t254 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 1)
+            t255 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) 0 2
+            t256 <- rdU verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + i252))
+            t257 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 1)
+            t258 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 2)
             loopI 1.0 4.0 $ \i259 -> do
               let !d259 = fromIntegral i259 :: Double
-              t260 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))))
-              t261 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0))
-              t262 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0))
-              t263 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)))
-              t264 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0))
-              t265 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0)))) 0 0
+              t260 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0)) 0 0
+              t261 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0)) 0 0
+              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259))) 0 0
+              t263 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0)) 0 0
+              t264 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0)) 0 0
+              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0))
               t266 <- getR v240
               let !t267 = (negate t260)
               let !t268 = (t263 + t267)
@@ -564,12 +631,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t302 = ((0.3 * ((if (t251 - t248) > 0 then t248 else t251) / 4.0)) - (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301))))
               if (if (t298 - t302) > 0 then t302 else t298) > 0 then do
                 setR v240 (0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0))))
-                t303 <- rdI verts (3 * (((97 * i31) + 1) + (i247 * 4)))
-                t304 <- rdI verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 1)
-                t305 <- rdI verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 2)
-                t306 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))))
-                t307 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0))
-                t308 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i247 * 4))) 0 2
+                t303 <- rdU verts (3 * (((97 * i31) + 1) + (i247 * 4)))
+                t304 <- rdU verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 1)
+                t305 <- rdU verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)))) 0 0
+                t306 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t307 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t308 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0))
                 setR v241 (t253 + (t295 * t274))
                 setR v242 (t254 + (t295 * t275))
                 setR v243 (t255 + (t295 * t276))
@@ -617,89 +688,97 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s339 = (t338 * t335)
         let !s340 = (t338 * t325)
         let !s341 = (t338 * t336)
-        t342 <- rdI meta 2
-        t343 <- rdI meta 3
+        t342 <- rdU meta 2
+        t343 <- rdU meta 3
         if (((8.0 * (if (1.0 - t343) > 0 then 1.0 else t343)) - t342) - 0.5) > 0 then do
-          wrI meta 2 (t342 + 1.0)
-          t344 <- rdI pos (3 * i31)
-          t345 <- rdI pos ((3 * i31) + 1)
-          t346 <- rdI pos ((3 * i31) + 2)
-          t347 <- rdI normal (3 * i31)
-          t348 <- rdI normal ((3 * i31) + 1)
-          t349 <- rdI normal ((3 * i31) + 2)
-          t350 <- rdI axis (3 * i31)
-          t351 <- rdI axis ((3 * i31) + 1)
-          t352 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t342 + 1.0)
+          t344 <- rdU pos (3 * i31)
+          t345 <- rdU pos ((3 * i31) + 1)
+          t346 <- rdU pos ((3 * i31) + 2)
+          t347 <- rdU normal (3 * i31)
+          t348 <- rdU normal ((3 * i31) + 1)
+          t349 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t350 <- rdU axis (3 * i31)
+          t351 <- rdU axis ((3 * i31) + 1)
+          t352 <- rdU axis ((3 * i31) + 2)
           let !s353 = ((t348 * t352) - (t349 * t351))
           let !s354 = ((t349 * t350) - (t347 * t352))
           let !s355 = ((t347 * t351) - (t348 * t350))
-          t356 <- rdI scalars (6 * i31)
-          t357 <- rdI scalars ((6 * i31) + 5)
-          t358 <- rdI scalars ((6 * i31) + 2)
-          t359 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t342)) d31
-          wrI contacts ((30 * (truncate t342)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t342)) + 2) d31
-          wrI contacts ((30 * (truncate t342)) + 3) 12.0
-          wrI contacts ((30 * (truncate t342)) + 4) (s339 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t347)))
-          wrI contacts (((30 * (truncate t342)) + 4) + 1) (s340 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t348)))
-          wrI contacts (((30 * (truncate t342)) + 4) + 2) (s341 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t349)))
-          wrI contacts ((30 * (truncate t342)) + 7) 0.0
-          wrI contacts ((30 * (truncate t342)) + 12) 0.0
-          wrI contacts (((30 * (truncate t342)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t342)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t342)) + 15) 0.0
-          wrI contacts ((30 * (truncate t342)) + 20) t320
-          wrI contacts ((30 * (truncate t342)) + 26) 0.6
-          wrI contacts ((30 * (truncate t342)) + 27) t321
-          wrI contacts (((30 * (truncate t342)) + 27) + 1) t322
-          wrI contacts (((30 * (truncate t342)) + 27) + 2) t323
+          chkI scalars (6 * i31) 0 0
+          t356 <- rdU scalars (6 * i31)
+          t357 <- rdU scalars ((6 * i31) + 5)
+          t358 <- rdU scalars ((6 * i31) + 2)
+          t359 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t342)) 0 29
+          wrU contacts (30 * (truncate t342)) d31
+          wrU contacts ((30 * (truncate t342)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t342)) + 2) d31
+          wrU contacts ((30 * (truncate t342)) + 3) 12.0
+          wrU contacts ((30 * (truncate t342)) + 4) (s339 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t347)))
+          wrU contacts ((30 * (truncate t342)) + 5) (s340 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t348)))
+          wrU contacts ((30 * (truncate t342)) + 6) (s341 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t349)))
+          wrU contacts ((30 * (truncate t342)) + 7) 0.0
+          wrU contacts ((30 * (truncate t342)) + 12) 0.0
+          wrU contacts ((30 * (truncate t342)) + 13) 0.0
+          wrU contacts ((30 * (truncate t342)) + 14) 0.0
+          wrU contacts ((30 * (truncate t342)) + 15) 0.0
+          wrU contacts ((30 * (truncate t342)) + 20) t320
+          wrU contacts ((30 * (truncate t342)) + 26) 0.6
+          wrU contacts ((30 * (truncate t342)) + 27) t321
+          wrU contacts ((30 * (truncate t342)) + 28) t322
+          wrU contacts ((30 * (truncate t342)) + 29) t323
           if (-0.5) > 0 then do
-            t360 <- rdI pos (-3)
-            t361 <- rdI pos (-2)
-            t362 <- rdI pos (-1)
-            t363 <- rdI normal (-3)
-            t364 <- rdI normal (-2)
-            t365 <- rdI normal (-1)
-            t366 <- rdI axis (-3)
-            t367 <- rdI axis (-2)
-            t368 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t360 <- rdU pos (-3)
+            t361 <- rdU pos (-2)
+            t362 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t363 <- rdU normal (-3)
+            t364 <- rdU normal (-2)
+            t365 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t366 <- rdU axis (-3)
+            t367 <- rdU axis (-2)
+            t368 <- rdU axis (-1)
             let !s369 = ((t364 * t368) - (t365 * t367))
             let !s370 = ((t365 * t366) - (t363 * t368))
             let !s371 = ((t363 * t367) - (t364 * t366))
-            t372 <- rdI scalars (-6)
-            t373 <- rdI scalars (-1)
-            t374 <- rdI scalars (-4)
-            t375 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t342)) + 8) (s339 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t363)))
-            wrI contacts (((30 * (truncate t342)) + 8) + 1) (s340 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t364)))
-            wrI contacts (((30 * (truncate t342)) + 8) + 2) (s341 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t365)))
+            chkI scalars 0 (-6) (-1)
+            t372 <- rdU scalars (-6)
+            t373 <- rdU scalars (-1)
+            t374 <- rdU scalars (-4)
+            t375 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t342)) + 8) (s339 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t363)))
+            wrU contacts ((30 * (truncate t342)) + 9) (s340 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t364)))
+            wrU contacts ((30 * (truncate t342)) + 10) (s341 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t365)))
             let !t376 = (t322 + (negate t361))
             let !t377 = (t323 + (negate t362))
             let !t378 = (t321 + (negate t360))
-            wrI contacts ((30 * (truncate t342)) + 11) (((((t376 * s341) - (t377 * s340)) * t363) + (((t377 * s339) - (t378 * s341)) * t364)) + (((t378 * s340) - (t376 * s339)) * t365))
+            wrU contacts ((30 * (truncate t342)) + 11) (((((t376 * s341) - (t377 * s340)) * t363) + (((t377 * s339) - (t378 * s341)) * t364)) + (((t378 * s340) - (t376 * s339)) * t365))
             let !t379 = ((t348 * s341) - (t349 * s340))
-            wrI contacts ((30 * (truncate t342)) + 16) (t379 + (negate ((((t363 * t379) + (t364 * ((t349 * s339) - (t347 * s341)))) + (t365 * ((t347 * s340) - (t348 * s339)))) * t363)))
+            wrU contacts ((30 * (truncate t342)) + 16) (t379 + (negate ((((t363 * t379) + (t364 * ((t349 * s339) - (t347 * s341)))) + (t365 * ((t347 * s340) - (t348 * s339)))) * t363)))
             let !t380 = ((t349 * s339) - (t347 * s341))
-            wrI contacts (((30 * (truncate t342)) + 16) + 1) (t380 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * ((t347 * s340) - (t348 * s339)))) * t364)))
+            wrU contacts ((30 * (truncate t342)) + 17) (t380 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * ((t347 * s340) - (t348 * s339)))) * t364)))
             let !t381 = ((t347 * s340) - (t348 * s339))
-            wrI contacts (((30 * (truncate t342)) + 16) + 2) (t381 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * t381)) * t365)))
-            wrI contacts ((30 * (truncate t342)) + 19) (((((t376 * t381) - (t377 * t380)) * t363) + (((t377 * t379) - (t378 * t381)) * t364)) + (((t378 * t380) - (t376 * t379)) * t365))
+            wrU contacts ((30 * (truncate t342)) + 18) (t381 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * t381)) * t365)))
+            wrU contacts ((30 * (truncate t342)) + 19) (((((t376 * t381) - (t377 * t380)) * t363) + (((t377 * t379) - (t378 * t381)) * t364)) + (((t378 * t380) - (t376 * t379)) * t365))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t342)) + 8) 0.0
-            wrI contacts (((30 * (truncate t342)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t342)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t342)) + 11) 0.0
-            wrI contacts ((30 * (truncate t342)) + 16) 0.0
-            wrI contacts (((30 * (truncate t342)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t342)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t342)) + 19) 0.0
+            wrU contacts ((30 * (truncate t342)) + 8) 0.0
+            wrU contacts ((30 * (truncate t342)) + 9) 0.0
+            wrU contacts ((30 * (truncate t342)) + 10) 0.0
+            wrU contacts ((30 * (truncate t342)) + 11) 0.0
+            wrU contacts ((30 * (truncate t342)) + 16) 0.0
+            wrU contacts ((30 * (truncate t342)) + 17) 0.0
+            wrU contacts ((30 * (truncate t342)) + 18) 0.0
+            wrU contacts ((30 * (truncate t342)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t382 <- rdI meta 6
-          wrI meta 6 (t382 + 1.0)
+          chkI meta 0 6 6
+          t382 <- rdU meta 6
+          wrU meta 6 (t382 + 1.0)
           pure ()
         pure ()
       else do
@@ -712,44 +791,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -757,12 +841,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -770,20 +855,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -794,19 +882,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -814,98 +905,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -1112,12 +1215,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s341 = ((t139 * (t326 * (t340 * t336))) + (t171 * s292))
       let !s342 = ((t139 * (t326 * (t340 * t337))) + (t171 * s293))
       let !s343 = ((t139 * (t326 * (t340 * t338))) + (t171 * s294))
-      t344 <- rdI mouse 4
-      t345 <- rdI mouse 5
-      t346 <- rdI mouse 6
-      t347 <- rdI mouse 7
-      t348 <- rdI mouse 8
-      t349 <- rdI mouse 9
+      t344 <- rdU mouse 4
+      t345 <- rdU mouse 5
+      t346 <- rdU mouse 6
+      t347 <- rdU mouse 7
+      t348 <- rdU mouse 8
+      t349 <- rdU mouse 9
       let !t350 = (recip t101)
       let !t351 = (6.283185307179586 * t347)
       let !s352 = (recip (t103 * ((((2.0 * t350) * t348) * t351) + (t103 * ((t350 * t351) * t351)))))
@@ -1128,28 +1231,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s357 = (s323 + (negate t344))
       let !s358 = (s324 + (negate t345))
       let !s359 = (s325 + (negate t346))
-      t360 <- rdI mouse 10
-      t361 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t362 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t363 <- rdI vel (3 * (truncate t100))
-      t364 <- rdI vel ((3 * (truncate t100)) + 1)
-      t365 <- rdI vel ((3 * (truncate t100)) + 2)
-      t366 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t363 + ((t361 * t360) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t364 + ((t361 * t360) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t365 + ((t361 * t360) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t366 + ((t362 * t360) * (((((s355 * t112) - (s356 * t111)) * t107) + (((s356 * t110) - (s354 * t112)) * t108)) + (((s354 * t111) - (s355 * t110)) * t109))))
-      t367 <- rdI mouse 11
-      t368 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t369 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t370 <- rdI vel (3 * (truncate t100))
-      t371 <- rdI vel ((3 * (truncate t100)) + 1)
-      t372 <- rdI vel ((3 * (truncate t100)) + 2)
-      t373 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t370 + ((t368 * t367) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t371 + ((t368 * t367) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t372 + ((t368 * t367) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t373 + ((t369 * t367) * (((((s355 * s115) - (s356 * s114)) * t107) + (((s356 * s113) - (s354 * s115)) * t108)) + (((s354 * s114) - (s355 * s113)) * t109))))
+      t360 <- rdU mouse 10
+      t361 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t362 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t363 <- rdU vel (3 * (truncate t100))
+      t364 <- rdU vel ((3 * (truncate t100)) + 1)
+      t365 <- rdU vel ((3 * (truncate t100)) + 2)
+      t366 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t363 + ((t361 * t360) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t364 + ((t361 * t360) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t365 + ((t361 * t360) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t366 + ((t362 * t360) * (((((s355 * t112) - (s356 * t111)) * t107) + (((s356 * t110) - (s354 * t112)) * t108)) + (((s354 * t111) - (s355 * t110)) * t109))))
+      t367 <- rdU mouse 11
+      t368 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t369 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t370 <- rdU vel (3 * (truncate t100))
+      t371 <- rdU vel ((3 * (truncate t100)) + 1)
+      t372 <- rdU vel ((3 * (truncate t100)) + 2)
+      t373 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t370 + ((t368 * t367) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t371 + ((t368 * t367) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t372 + ((t368 * t367) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t373 + ((t369 * t367) * (((((s355 * s115) - (s356 * s114)) * t107) + (((s356 * s113) - (s354 * s115)) * t108)) + (((s354 * s114) - (s355 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -1160,38 +1264,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d374 = fromIntegral i374 :: Double
     loopI 0.0 t9 $ \i375 -> do
       let !d375 = fromIntegral i375 :: Double
-      t376 <- rdI contacts (30 * i375)
-      t377 <- rdI contacts ((30 * i375) + 1)
-      t378 <- rdI contacts ((30 * i375) + 12)
-      t379 <- rdI contacts (((30 * i375) + 12) + 1)
-      t380 <- rdI contacts (((30 * i375) + 12) + 2)
-      t381 <- rdI contacts ((30 * i375) + 15)
-      t382 <- rdI contacts ((30 * i375) + 16)
-      t383 <- rdI contacts (((30 * i375) + 16) + 1)
-      t384 <- rdI contacts (((30 * i375) + 16) + 2)
-      t385 <- rdI contacts ((30 * i375) + 19)
-      t386 <- rdI contacts ((30 * i375) + 4)
-      t387 <- rdI contacts (((30 * i375) + 4) + 1)
-      t388 <- rdI contacts (((30 * i375) + 4) + 2)
-      t389 <- rdI contacts ((30 * i375) + 7)
-      t390 <- rdI contacts ((30 * i375) + 8)
-      t391 <- rdI contacts (((30 * i375) + 8) + 1)
-      t392 <- rdI contacts (((30 * i375) + 8) + 2)
-      t393 <- rdI contacts ((30 * i375) + 11)
-      t394 <- rdI contacts ((30 * i375) + 26)
-      t395 <- rdI contacts ((30 * i375) + 24)
-      t396 <- rdI contacts ((30 * i375) + 25)
-      t397 <- rdI contacts ((30 * i375) + 22)
-      t398 <- rdI vel (3 * (truncate t376))
-      t399 <- rdI vel ((3 * (truncate t376)) + 1)
-      t400 <- rdI vel ((3 * (truncate t376)) + 2)
-      t401 <- rdI scalars ((6 * (truncate t376)) + 1)
+      chkI contacts (30 * i375) 0 26
+      t376 <- rdU contacts (30 * i375)
+      t377 <- rdU contacts ((30 * i375) + 1)
+      t378 <- rdU contacts ((30 * i375) + 12)
+      t379 <- rdU contacts ((30 * i375) + 13)
+      t380 <- rdU contacts ((30 * i375) + 14)
+      t381 <- rdU contacts ((30 * i375) + 15)
+      t382 <- rdU contacts ((30 * i375) + 16)
+      t383 <- rdU contacts ((30 * i375) + 17)
+      t384 <- rdU contacts ((30 * i375) + 18)
+      t385 <- rdU contacts ((30 * i375) + 19)
+      t386 <- rdU contacts ((30 * i375) + 4)
+      t387 <- rdU contacts ((30 * i375) + 5)
+      t388 <- rdU contacts ((30 * i375) + 6)
+      t389 <- rdU contacts ((30 * i375) + 7)
+      t390 <- rdU contacts ((30 * i375) + 8)
+      t391 <- rdU contacts ((30 * i375) + 9)
+      t392 <- rdU contacts ((30 * i375) + 10)
+      t393 <- rdU contacts ((30 * i375) + 11)
+      t394 <- rdU contacts ((30 * i375) + 26)
+      t395 <- rdU contacts ((30 * i375) + 24)
+      t396 <- rdU contacts ((30 * i375) + 25)
+      t397 <- rdU contacts ((30 * i375) + 22)
+      chkI vel (3 * (truncate t376)) 0 2
+      t398 <- rdU vel (3 * (truncate t376))
+      t399 <- rdU vel ((3 * (truncate t376)) + 1)
+      t400 <- rdU vel ((3 * (truncate t376)) + 2)
+      chkI scalars (6 * (truncate t376)) 1 3
+      t401 <- rdU scalars ((6 * (truncate t376)) + 1)
       v402 <- newR 0.0
       if (t377 + 0.5) > 0 then do
-        t403 <- rdI vel (3 * (truncate t377))
-        t404 <- rdI vel ((3 * (truncate t377)) + 1)
-        t405 <- rdI vel ((3 * (truncate t377)) + 2)
-        t406 <- rdI scalars ((6 * (truncate t377)) + 1)
+        chkI vel (3 * (truncate t377)) 0 2
+        t403 <- rdU vel (3 * (truncate t377))
+        t404 <- rdU vel ((3 * (truncate t377)) + 1)
+        t405 <- rdU vel ((3 * (truncate t377)) + 2)
+        chkI scalars (6 * (truncate t377)) 1 1
+        t406 <- rdU scalars ((6 * (truncate t377)) + 1)
         setR v402 ((((t382 * t403) + (t383 * t404)) + (t384 * t405)) + (t385 * t406))
         pure ()
       else do
@@ -1204,43 +1313,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t412 = (if (t411 - t409) > 0 then t409 else t411)
       let !t413 = (if (t410 - t412) > 0 then t410 else t412)
       let !s414 = (if (1.0 - (abs (t413 - t413))) > 0 then t413 else 0.0)
-      wrI contacts ((30 * i375) + 25) s414
-      t415 <- rdI scalars ((6 * (truncate t376)) + 2)
-      t416 <- rdI scalars ((6 * (truncate t376)) + 3)
-      t417 <- rdI vel (3 * (truncate t376))
-      t418 <- rdI vel ((3 * (truncate t376)) + 1)
-      t419 <- rdI vel ((3 * (truncate t376)) + 2)
-      t420 <- rdI scalars ((6 * (truncate t376)) + 1)
-      wrI vel (3 * (truncate t376)) (t417 + ((t415 * (s414 - t396)) * t378))
-      wrI vel ((3 * (truncate t376)) + 1) (t418 + ((t415 * (s414 - t396)) * t379))
-      wrI vel ((3 * (truncate t376)) + 2) (t419 + ((t415 * (s414 - t396)) * t380))
-      wrI scalars ((6 * (truncate t376)) + 1) (t420 + ((t416 * (s414 - t396)) * t381))
+      wrU contacts ((30 * i375) + 25) s414
+      t415 <- rdU scalars ((6 * (truncate t376)) + 2)
+      t416 <- rdU scalars ((6 * (truncate t376)) + 3)
+      t417 <- rdU vel (3 * (truncate t376))
+      t418 <- rdU vel ((3 * (truncate t376)) + 1)
+      t419 <- rdU vel ((3 * (truncate t376)) + 2)
+      t420 <- rdU scalars ((6 * (truncate t376)) + 1)
+      wrU vel (3 * (truncate t376)) (t417 + ((t415 * (s414 - t396)) * t378))
+      wrU vel ((3 * (truncate t376)) + 1) (t418 + ((t415 * (s414 - t396)) * t379))
+      wrU vel ((3 * (truncate t376)) + 2) (t419 + ((t415 * (s414 - t396)) * t380))
+      wrU scalars ((6 * (truncate t376)) + 1) (t420 + ((t416 * (s414 - t396)) * t381))
       if (t377 + 0.5) > 0 then do
-        t421 <- rdI scalars ((6 * (truncate t377)) + 2)
-        t422 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t423 <- rdI vel (3 * (truncate t377))
-        t424 <- rdI vel ((3 * (truncate t377)) + 1)
-        t425 <- rdI vel ((3 * (truncate t377)) + 2)
-        t426 <- rdI scalars ((6 * (truncate t377)) + 1)
-        wrI vel (3 * (truncate t377)) (t423 + ((t421 * (negate (s414 - t396))) * t382))
-        wrI vel ((3 * (truncate t377)) + 1) (t424 + ((t421 * (negate (s414 - t396))) * t383))
-        wrI vel ((3 * (truncate t377)) + 2) (t425 + ((t421 * (negate (s414 - t396))) * t384))
-        wrI scalars ((6 * (truncate t377)) + 1) (t426 + ((t422 * (negate (s414 - t396))) * t385))
+        chkI scalars (6 * (truncate t377)) 1 3
+        t421 <- rdU scalars ((6 * (truncate t377)) + 2)
+        t422 <- rdU scalars ((6 * (truncate t377)) + 3)
+        chkI vel (3 * (truncate t377)) 0 2
+        t423 <- rdU vel (3 * (truncate t377))
+        t424 <- rdU vel ((3 * (truncate t377)) + 1)
+        t425 <- rdU vel ((3 * (truncate t377)) + 2)
+        t426 <- rdU scalars ((6 * (truncate t377)) + 1)
+        wrU vel (3 * (truncate t377)) (t423 + ((t421 * (negate (s414 - t396))) * t382))
+        wrU vel ((3 * (truncate t377)) + 1) (t424 + ((t421 * (negate (s414 - t396))) * t383))
+        wrU vel ((3 * (truncate t377)) + 2) (t425 + ((t421 * (negate (s414 - t396))) * t384))
+        wrU scalars ((6 * (truncate t377)) + 1) (t426 + ((t422 * (negate (s414 - t396))) * t385))
         pure ()
       else do
         pure ()
-      t427 <- rdI contacts ((30 * i375) + 21)
-      t428 <- rdI contacts ((30 * i375) + 23)
-      t429 <- rdI vel (3 * (truncate t376))
-      t430 <- rdI vel ((3 * (truncate t376)) + 1)
-      t431 <- rdI vel ((3 * (truncate t376)) + 2)
-      t432 <- rdI scalars ((6 * (truncate t376)) + 1)
+      t427 <- rdU contacts ((30 * i375) + 21)
+      t428 <- rdU contacts ((30 * i375) + 23)
+      t429 <- rdU vel (3 * (truncate t376))
+      t430 <- rdU vel ((3 * (truncate t376)) + 1)
+      t431 <- rdU vel ((3 * (truncate t376)) + 2)
+      t432 <- rdU scalars ((6 * (truncate t376)) + 1)
       v433 <- newR 0.0
       if (t377 + 0.5) > 0 then do
-        t434 <- rdI vel (3 * (truncate t377))
-        t435 <- rdI vel ((3 * (truncate t377)) + 1)
-        t436 <- rdI vel ((3 * (truncate t377)) + 2)
-        t437 <- rdI scalars ((6 * (truncate t377)) + 1)
+        chkI vel (3 * (truncate t377)) 0 2
+        t434 <- rdU vel (3 * (truncate t377))
+        t435 <- rdU vel ((3 * (truncate t377)) + 1)
+        t436 <- rdU vel ((3 * (truncate t377)) + 2)
+        chkI scalars (6 * (truncate t377)) 1 1
+        t437 <- rdU scalars ((6 * (truncate t377)) + 1)
         setR v433 ((((t390 * t434) + (t391 * t435)) + (t392 * t436)) + (t393 * t437))
         pure ()
       else do
@@ -1250,73 +1363,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t440 = (t395 + ((t394 * (t428 - s439)) * t427))
       let !t441 = (if (negate t440) > 0 then 0.0 else t440)
       let !s442 = (if (1.0 - (abs (t441 - t441))) > 0 then t441 else 0.0)
-      wrI contacts ((30 * i375) + 24) s442
-      t443 <- rdI scalars ((6 * (truncate t376)) + 2)
-      t444 <- rdI scalars ((6 * (truncate t376)) + 3)
-      t445 <- rdI vel (3 * (truncate t376))
-      t446 <- rdI vel ((3 * (truncate t376)) + 1)
-      t447 <- rdI vel ((3 * (truncate t376)) + 2)
-      t448 <- rdI scalars ((6 * (truncate t376)) + 1)
-      wrI vel (3 * (truncate t376)) (t445 + ((t443 * (s442 - t395)) * t386))
-      wrI vel ((3 * (truncate t376)) + 1) (t446 + ((t443 * (s442 - t395)) * t387))
-      wrI vel ((3 * (truncate t376)) + 2) (t447 + ((t443 * (s442 - t395)) * t388))
-      wrI scalars ((6 * (truncate t376)) + 1) (t448 + ((t444 * (s442 - t395)) * t389))
+      wrU contacts ((30 * i375) + 24) s442
+      t443 <- rdU scalars ((6 * (truncate t376)) + 2)
+      t444 <- rdU scalars ((6 * (truncate t376)) + 3)
+      t445 <- rdU vel (3 * (truncate t376))
+      t446 <- rdU vel ((3 * (truncate t376)) + 1)
+      t447 <- rdU vel ((3 * (truncate t376)) + 2)
+      t448 <- rdU scalars ((6 * (truncate t376)) + 1)
+      wrU vel (3 * (truncate t376)) (t445 + ((t443 * (s442 - t395)) * t386))
+      wrU vel ((3 * (truncate t376)) + 1) (t446 + ((t443 * (s442 - t395)) * t387))
+      wrU vel ((3 * (truncate t376)) + 2) (t447 + ((t443 * (s442 - t395)) * t388))
+      wrU scalars ((6 * (truncate t376)) + 1) (t448 + ((t444 * (s442 - t395)) * t389))
       if (t377 + 0.5) > 0 then do
-        t449 <- rdI scalars ((6 * (truncate t377)) + 2)
-        t450 <- rdI scalars ((6 * (truncate t377)) + 3)
-        t451 <- rdI vel (3 * (truncate t377))
-        t452 <- rdI vel ((3 * (truncate t377)) + 1)
-        t453 <- rdI vel ((3 * (truncate t377)) + 2)
-        t454 <- rdI scalars ((6 * (truncate t377)) + 1)
-        wrI vel (3 * (truncate t377)) (t451 + ((t449 * (negate (s442 - t395))) * t390))
-        wrI vel ((3 * (truncate t377)) + 1) (t452 + ((t449 * (negate (s442 - t395))) * t391))
-        wrI vel ((3 * (truncate t377)) + 2) (t453 + ((t449 * (negate (s442 - t395))) * t392))
-        wrI scalars ((6 * (truncate t377)) + 1) (t454 + ((t450 * (negate (s442 - t395))) * t393))
+        chkI scalars (6 * (truncate t377)) 1 3
+        t449 <- rdU scalars ((6 * (truncate t377)) + 2)
+        t450 <- rdU scalars ((6 * (truncate t377)) + 3)
+        chkI vel (3 * (truncate t377)) 0 2
+        t451 <- rdU vel (3 * (truncate t377))
+        t452 <- rdU vel ((3 * (truncate t377)) + 1)
+        t453 <- rdU vel ((3 * (truncate t377)) + 2)
+        t454 <- rdU scalars ((6 * (truncate t377)) + 1)
+        wrU vel (3 * (truncate t377)) (t451 + ((t449 * (negate (s442 - t395))) * t390))
+        wrU vel ((3 * (truncate t377)) + 1) (t452 + ((t449 * (negate (s442 - t395))) * t391))
+        wrU vel ((3 * (truncate t377)) + 2) (t453 + ((t449 * (negate (s442 - t395))) * t392))
+        wrU scalars ((6 * (truncate t377)) + 1) (t454 + ((t450 * (negate (s442 - t395))) * t393))
         pure ()
       else do
         pure ()
       pure ()
-    t455 <- rdI mouse 0
+    t455 <- rdU mouse 0
     if t455 > 0 then do
-      t456 <- rdI mouse 1
-      t457 <- rdI scalars ((6 * (truncate t456)) + 2)
+      chkI mouse 0 1 1
+      t456 <- rdU mouse 1
+      chkI scalars (6 * (truncate t456)) 2 2
+      t457 <- rdU scalars ((6 * (truncate t456)) + 2)
       if t457 > 0 then do
-        t458 <- rdI scalars ((6 * (truncate t456)) + 3)
-        t459 <- rdI params 0
-        t460 <- rdI pos (3 * (truncate t456))
-        t461 <- rdI pos ((3 * (truncate t456)) + 1)
-        t462 <- rdI pos ((3 * (truncate t456)) + 2)
-        t463 <- rdI normal (3 * (truncate t456))
-        t464 <- rdI normal ((3 * (truncate t456)) + 1)
-        t465 <- rdI normal ((3 * (truncate t456)) + 2)
-        t466 <- rdI axis (3 * (truncate t456))
-        t467 <- rdI axis ((3 * (truncate t456)) + 1)
-        t468 <- rdI axis ((3 * (truncate t456)) + 2)
+        chkI scalars (6 * (truncate t456)) 0 5
+        t458 <- rdU scalars ((6 * (truncate t456)) + 3)
+        t459 <- rdU params 0
+        chkI pos (3 * (truncate t456)) 0 2
+        t460 <- rdU pos (3 * (truncate t456))
+        t461 <- rdU pos ((3 * (truncate t456)) + 1)
+        t462 <- rdU pos ((3 * (truncate t456)) + 2)
+        chkI normal (3 * (truncate t456)) 0 2
+        t463 <- rdU normal (3 * (truncate t456))
+        t464 <- rdU normal ((3 * (truncate t456)) + 1)
+        t465 <- rdU normal ((3 * (truncate t456)) + 2)
+        chkI axis (3 * (truncate t456)) 0 2
+        t466 <- rdU axis (3 * (truncate t456))
+        t467 <- rdU axis ((3 * (truncate t456)) + 1)
+        t468 <- rdU axis ((3 * (truncate t456)) + 2)
         let !s469 = ((t464 * t468) - (t465 * t467))
         let !s470 = ((t465 * t466) - (t463 * t468))
         let !s471 = ((t463 * t467) - (t464 * t466))
-        t472 <- rdI scalars (6 * (truncate t456))
-        t473 <- rdI scalars ((6 * (truncate t456)) + 5)
-        t474 <- rdI scalars ((6 * (truncate t456)) + 2)
-        t475 <- rdI scalars ((6 * (truncate t456)) + 3)
-        t476 <- rdI pos (3 * (truncate t456))
-        t477 <- rdI pos ((3 * (truncate t456)) + 1)
-        t478 <- rdI pos ((3 * (truncate t456)) + 2)
-        t479 <- rdI normal (3 * (truncate t456))
-        t480 <- rdI normal ((3 * (truncate t456)) + 1)
-        t481 <- rdI normal ((3 * (truncate t456)) + 2)
-        t482 <- rdI axis (3 * (truncate t456))
-        t483 <- rdI axis ((3 * (truncate t456)) + 1)
-        t484 <- rdI axis ((3 * (truncate t456)) + 2)
+        t472 <- rdU scalars (6 * (truncate t456))
+        t473 <- rdU scalars ((6 * (truncate t456)) + 5)
+        t474 <- rdU scalars ((6 * (truncate t456)) + 2)
+        t475 <- rdU scalars ((6 * (truncate t456)) + 3)
+        t476 <- rdU pos (3 * (truncate t456))
+        t477 <- rdU pos ((3 * (truncate t456)) + 1)
+        t478 <- rdU pos ((3 * (truncate t456)) + 2)
+        t479 <- rdU normal (3 * (truncate t456))
+        t480 <- rdU normal ((3 * (truncate t456)) + 1)
+        t481 <- rdU normal ((3 * (truncate t456)) + 2)
+        t482 <- rdU axis (3 * (truncate t456))
+        t483 <- rdU axis ((3 * (truncate t456)) + 1)
+        t484 <- rdU axis ((3 * (truncate t456)) + 2)
         let !s485 = ((t480 * t484) - (t481 * t483))
         let !s486 = ((t481 * t482) - (t479 * t484))
         let !s487 = ((t479 * t483) - (t480 * t482))
-        t488 <- rdI scalars (6 * (truncate t456))
-        t489 <- rdI scalars ((6 * (truncate t456)) + 5)
-        t490 <- rdI scalars ((6 * (truncate t456)) + 2)
-        t491 <- rdI scalars ((6 * (truncate t456)) + 3)
-        t492 <- rdI mouse 2
-        t493 <- rdI mouse 3
+        t488 <- rdU scalars (6 * (truncate t456))
+        t489 <- rdU scalars ((6 * (truncate t456)) + 5)
+        t490 <- rdU scalars ((6 * (truncate t456)) + 2)
+        t491 <- rdU scalars ((6 * (truncate t456)) + 3)
+        chkI mouse 0 2 11
+        t492 <- rdU mouse 2
+        t493 <- rdU mouse 3
         let !t494 = (t492 / 4.0)
         let !t495 = (if (abs t494) > 0 then 1.0 else 0.0)
         let !t496 = (t488 + t493)
@@ -1523,12 +1645,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s697 = ((t495 * (t682 * (t696 * t692))) + (t527 * s648))
         let !s698 = ((t495 * (t682 * (t696 * t693))) + (t527 * s649))
         let !s699 = ((t495 * (t682 * (t696 * t694))) + (t527 * s650))
-        t700 <- rdI mouse 4
-        t701 <- rdI mouse 5
-        t702 <- rdI mouse 6
-        t703 <- rdI mouse 7
-        t704 <- rdI mouse 8
-        t705 <- rdI mouse 9
+        t700 <- rdU mouse 4
+        t701 <- rdU mouse 5
+        t702 <- rdU mouse 6
+        t703 <- rdU mouse 7
+        t704 <- rdU mouse 8
+        t705 <- rdU mouse 9
         let !t706 = (recip t457)
         let !t707 = (6.283185307179586 * t703)
         let !s708 = (recip (t459 * ((((2.0 * t706) * t704) * t707) + (t459 * ((t706 * t707) * t707)))))
@@ -1539,11 +1661,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s713 = (s679 + (negate t700))
         let !s714 = (s680 + (negate t701))
         let !s715 = (s681 + (negate t702))
-        t716 <- rdI mouse 10
-        t717 <- rdI vel (3 * (truncate t456))
-        t718 <- rdI vel ((3 * (truncate t456)) + 1)
-        t719 <- rdI vel ((3 * (truncate t456)) + 2)
-        t720 <- rdI scalars ((6 * (truncate t456)) + 1)
+        t716 <- rdU mouse 10
+        chkI vel (3 * (truncate t456)) 0 2
+        t717 <- rdU vel (3 * (truncate t456))
+        t718 <- rdU vel ((3 * (truncate t456)) + 1)
+        t719 <- rdU vel ((3 * (truncate t456)) + 2)
+        t720 <- rdU scalars ((6 * (truncate t456)) + 1)
         let !t721 = (t705 * t459)
         let !t722 = (negate t721)
         let !t723 = (((((s711 * t468) - (s712 * t467)) * t463) + (((s712 * t466) - (s710 * t468)) * t464)) + (((s710 * t467) - (s711 * t466)) * t465))
@@ -1551,38 +1674,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t725 = (if (t724 - t721) > 0 then t721 else t724)
         let !t726 = (if (t722 - t725) > 0 then t722 else t725)
         let !s727 = (if (1.0 - (abs (t726 - t726))) > 0 then t726 else 0.0)
-        wrI mouse 10 s727
-        t728 <- rdI scalars ((6 * (truncate t456)) + 2)
-        t729 <- rdI scalars ((6 * (truncate t456)) + 3)
-        t730 <- rdI vel (3 * (truncate t456))
-        t731 <- rdI vel ((3 * (truncate t456)) + 1)
-        t732 <- rdI vel ((3 * (truncate t456)) + 2)
-        t733 <- rdI scalars ((6 * (truncate t456)) + 1)
-        wrI vel (3 * (truncate t456)) (t730 + ((t728 * (s727 - t716)) * t466))
-        wrI vel ((3 * (truncate t456)) + 1) (t731 + ((t728 * (s727 - t716)) * t467))
-        wrI vel ((3 * (truncate t456)) + 2) (t732 + ((t728 * (s727 - t716)) * t468))
-        wrI scalars ((6 * (truncate t456)) + 1) (t733 + ((t729 * (s727 - t716)) * t723))
-        t734 <- rdI mouse 11
-        t735 <- rdI vel (3 * (truncate t456))
-        t736 <- rdI vel ((3 * (truncate t456)) + 1)
-        t737 <- rdI vel ((3 * (truncate t456)) + 2)
-        t738 <- rdI scalars ((6 * (truncate t456)) + 1)
+        wrU mouse 10 s727
+        t728 <- rdU scalars ((6 * (truncate t456)) + 2)
+        t729 <- rdU scalars ((6 * (truncate t456)) + 3)
+        t730 <- rdU vel (3 * (truncate t456))
+        t731 <- rdU vel ((3 * (truncate t456)) + 1)
+        t732 <- rdU vel ((3 * (truncate t456)) + 2)
+        t733 <- rdU scalars ((6 * (truncate t456)) + 1)
+        wrU vel (3 * (truncate t456)) (t730 + ((t728 * (s727 - t716)) * t466))
+        wrU vel ((3 * (truncate t456)) + 1) (t731 + ((t728 * (s727 - t716)) * t467))
+        wrU vel ((3 * (truncate t456)) + 2) (t732 + ((t728 * (s727 - t716)) * t468))
+        wrU scalars ((6 * (truncate t456)) + 1) (t733 + ((t729 * (s727 - t716)) * t723))
+        t734 <- rdU mouse 11
+        t735 <- rdU vel (3 * (truncate t456))
+        t736 <- rdU vel ((3 * (truncate t456)) + 1)
+        t737 <- rdU vel ((3 * (truncate t456)) + 2)
+        t738 <- rdU scalars ((6 * (truncate t456)) + 1)
         let !t739 = (((((s711 * s471) - (s712 * s470)) * t463) + (((s712 * s469) - (s710 * s471)) * t464)) + (((s710 * s470) - (s711 * s469)) * t465))
         let !t740 = (t734 + ((negate ((((((s469 * t735) + (s470 * t736)) + (s471 * t737)) + (t739 * t738)) + (s709 * (((s713 * s469) + (s714 * s470)) + (s715 * s471)))) + (s708 * t734))) / (((t457 * (((s469 * s469) + (s470 * s470)) + (s471 * s471))) + ((t458 * t739) * t739)) + s708)))
         let !t741 = (if (t740 - t721) > 0 then t721 else t740)
         let !t742 = (if (t722 - t741) > 0 then t722 else t741)
         let !s743 = (if (1.0 - (abs (t742 - t742))) > 0 then t742 else 0.0)
-        wrI mouse 11 s743
-        t744 <- rdI scalars ((6 * (truncate t456)) + 2)
-        t745 <- rdI scalars ((6 * (truncate t456)) + 3)
-        t746 <- rdI vel (3 * (truncate t456))
-        t747 <- rdI vel ((3 * (truncate t456)) + 1)
-        t748 <- rdI vel ((3 * (truncate t456)) + 2)
-        t749 <- rdI scalars ((6 * (truncate t456)) + 1)
-        wrI vel (3 * (truncate t456)) (t746 + ((t744 * (s743 - t734)) * s469))
-        wrI vel ((3 * (truncate t456)) + 1) (t747 + ((t744 * (s743 - t734)) * s470))
-        wrI vel ((3 * (truncate t456)) + 2) (t748 + ((t744 * (s743 - t734)) * s471))
-        wrI scalars ((6 * (truncate t456)) + 1) (t749 + ((t745 * (s743 - t734)) * t739))
+        wrU mouse 11 s743
+        t744 <- rdU scalars ((6 * (truncate t456)) + 2)
+        t745 <- rdU scalars ((6 * (truncate t456)) + 3)
+        t746 <- rdU vel (3 * (truncate t456))
+        t747 <- rdU vel ((3 * (truncate t456)) + 1)
+        t748 <- rdU vel ((3 * (truncate t456)) + 2)
+        t749 <- rdU scalars ((6 * (truncate t456)) + 1)
+        wrU vel (3 * (truncate t456)) (t746 + ((t744 * (s743 - t734)) * s469))
+        wrU vel ((3 * (truncate t456)) + 1) (t747 + ((t744 * (s743 - t734)) * s470))
+        wrU vel ((3 * (truncate t456)) + 2) (t748 + ((t744 * (s743 - t734)) * s471))
+        wrU scalars ((6 * (truncate t456)) + 1) (t749 + ((t745 * (s743 - t734)) * t739))
         pure ()
       else do
         pure ()
@@ -1590,51 +1713,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t750 <- rdI meta 0
+  t750 <- rdU meta 0
   loopI 0.0 t750 $ \i751 -> do
     let !d751 = fromIntegral i751 :: Double
-    wrI bodyPrev ((2 * i751) + 1) 0.0
+    chkI bodyPrev (2 * i751) 1 1
+    wrU bodyPrev ((2 * i751) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i752 -> do
     let !d752 = fromIntegral i752 :: Double
-    t753 <- rdI contacts ((30 * i752) + 2)
-    wrI prev (4 * i752) t753
-    t754 <- rdI contacts ((30 * i752) + 3)
-    wrI prev ((4 * i752) + 1) t754
-    t755 <- rdI contacts ((30 * i752) + 24)
-    wrI prev ((4 * i752) + 2) t755
-    t756 <- rdI contacts ((30 * i752) + 25)
-    wrI prev ((4 * i752) + 3) t756
-    t757 <- rdI bodyPrev ((2 * (truncate t753)) + 1)
+    chkI contacts (30 * i752) 2 25
+    t753 <- rdU contacts ((30 * i752) + 2)
+    chkI prev (4 * i752) 0 3
+    wrU prev (4 * i752) t753
+    t754 <- rdU contacts ((30 * i752) + 3)
+    wrU prev ((4 * i752) + 1) t754
+    t755 <- rdU contacts ((30 * i752) + 24)
+    wrU prev ((4 * i752) + 2) t755
+    t756 <- rdU contacts ((30 * i752) + 25)
+    wrU prev ((4 * i752) + 3) t756
+    chkI bodyPrev (2 * (truncate t753)) 1 1
+    t757 <- rdU bodyPrev ((2 * (truncate t753)) + 1)
     if (0.5 - t757) > 0 then do
-      wrI bodyPrev (2 * (truncate t753)) d752
+      chkI bodyPrev (2 * (truncate t753)) 0 0
+      wrU bodyPrev (2 * (truncate t753)) d752
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t753)) + 1) (t757 + 1.0)
+    wrU bodyPrev ((2 * (truncate t753)) + 1) (t757 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t5 + (t1 * t8))
@@ -1741,51 +1876,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t120 = (t12 + (t1 * t13))
     let !t121 = (1.0 - (abs ((((((((((((((s71 - s71) + (s72 - s72)) + (s73 - s73)) + (s106 - s106)) + (s107 - s107)) + (s108 - s108)) + (s115 - s115)) + (s116 - s116)) + (s117 - s117)) + (s82 - s82)) + (s83 - s83)) + (s84 - s84)) + (t120 - t120)) + (s118 - s118))))
     if (if (t119 - t121) > 0 then t121 else t119) > 0 then do
-      wrI pos (3 * i2) s71
-      wrI pos ((3 * i2) + 1) s72
-      wrI pos ((3 * i2) + 2) s73
-      wrI vel (3 * i2) s106
-      wrI vel ((3 * i2) + 1) s107
-      wrI vel ((3 * i2) + 2) s108
-      wrI axis (3 * i2) s115
-      wrI axis ((3 * i2) + 1) s116
-      wrI axis ((3 * i2) + 2) s117
-      wrI normal (3 * i2) s82
-      wrI normal ((3 * i2) + 1) s83
-      wrI normal ((3 * i2) + 2) s84
-      wrI scalars (6 * i2) t120
+      wrU pos (3 * i2) s71
+      wrU pos ((3 * i2) + 1) s72
+      wrU pos ((3 * i2) + 2) s73
+      wrU vel (3 * i2) s106
+      wrU vel ((3 * i2) + 1) s107
+      wrU vel ((3 * i2) + 2) s108
+      wrU axis (3 * i2) s115
+      wrU axis ((3 * i2) + 1) s116
+      wrU axis ((3 * i2) + 2) s117
+      wrU normal (3 * i2) s82
+      wrU normal ((3 * i2) + 1) s83
+      wrU normal ((3 * i2) + 2) s84
+      wrU scalars (6 * i2) t120
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t122 <- rdI meta 1
-      wrI meta 1 (t122 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t122 <- rdU meta 1
+      wrU meta 1 (t122 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1794,7 +1937,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1855,9 +1999,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s76 = ((t28 * t64) + (t50 * t8))
         let !s77 = (t50 * t9)
         let !s78 = ((t28 * t65) + (t50 * t10))
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t79 = (s54 + (s27 * s73))
         let !t80 = (s56 + (s27 * s75))
         let !t81 = (sqrt ((t79 * t79) + (t80 * t80)))
@@ -1906,9 +2051,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s124 = ((t28 * t112) + (t50 * s76))
         let !s125 = (t50 * s77)
         let !s126 = ((t28 * t113) + (t50 * s78))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s103 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s104 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s105 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s103 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s104 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s105 else t4)
         let !t127 = (s103 + (s27 * s121))
         let !t128 = (s105 + (s27 * s123))
         let !t129 = (sqrt ((t127 * t127) + (t128 * t128)))
@@ -1957,9 +2103,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s172 = ((t28 * t160) + (t50 * s124))
         let !s173 = (t50 * s125)
         let !s174 = ((t28 * t161) + (t50 * s126))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s151 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s152 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s153 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s151 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s152 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s153 else t4)
         let !t175 = (s151 + (s27 * s169))
         let !t176 = (s153 + (s27 * s171))
         let !t177 = (sqrt ((t175 * t175) + (t176 * t176)))
@@ -2008,9 +2155,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s220 = ((t28 * t208) + (t50 * s172))
         let !s221 = (t50 * s173)
         let !s222 = ((t28 * t209) + (t50 * s174))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s199 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s200 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s201 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s199 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s200 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s201 else t4)
         pure ()
       else do
         let !t223 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2046,18 +2194,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s253 = (if t252 > 0 then t246 else t2)
         let !s254 = (if t252 > 0 then t250 else t3)
         let !s255 = (if t252 > 0 then t251 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s253
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s254
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s255
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s253 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s254 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s255 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s253 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s254 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s255 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s253 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s254 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s255 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s253
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s254
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s255
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s253 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s254 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s255 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s253 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s254 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s255 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s253 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s254 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s255 + (negate t4))))
         pure ()
       pure ()
     pure ()

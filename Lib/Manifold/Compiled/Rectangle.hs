@@ -28,34 +28,41 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (t13 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * (negate (t14 * t12))))
       let !t17 = (t10 + (t1 * ((-4.0) + (negate (t14 * t13)))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wrI vel (3 * i3) t15
-        wrI vel ((3 * i3) + 1) t16
-        wrI vel ((3 * i3) + 2) t17
+        wrU vel (3 * i3) t15
+        wrU vel ((3 * i3) + 1) t16
+        wrU vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rdI meta 1
-        wrI meta 1 (t18 + 1.0)
+        chkI meta 0 1 1
+        t18 <- rdU meta 1
+        wrU meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,12 +72,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -80,54 +89,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -143,19 +163,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -176,16 +202,18 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rdI normal (3 * i31)
-    t68 <- rdI normal ((3 * i31) + 1)
-    t69 <- rdI normal ((3 * i31) + 2)
+    chkI normal (3 * i31) 0 2
+    t67 <- rdU normal (3 * i31)
+    t68 <- rdU normal ((3 * i31) + 1)
+    t69 <- rdU normal ((3 * i31) + 2)
     v70 <- newR 0.0
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      t73 <- rdI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdI verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
+      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
+      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
+      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
       let !t76 = (1.0 - (abs t75))
       let !t77 = (1.5 - (abs t73))
       let !s78 = (if (t76 - t77) > 0 then t77 else t76)
@@ -200,9 +228,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t80 <- getR v70
     if t80 > 0 then do
       t81 <- getR v71
-      t82 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3))
-      t83 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 1)
-      t84 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) 0 2
+      t82 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3))
+      t83 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 1)
+      t84 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 2)
       let !t85 = ((1.0 - (abs t84)) - (1.5 - (abs t82)))
       let !t86 = (if t85 > 0 then (negate (signum t82)) else 0.0)
       let !t87 = (if t85 > 0 then 0.0 else (negate (signum t84)))
@@ -219,9 +248,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v98 <- newR (-1.0)
       loopI 0.0 24.0 $ \i99 -> do
         let !d99 = fromIntegral i99 :: Double
-        t100 <- rdI verts (3 * ((((97 * i31) + 1) + (i99 * 4)) + 3))
-        t101 <- rdI verts ((3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) + 1)
-        t102 <- rdI verts ((3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) 0 2
+        t100 <- rdU verts (3 * ((((97 * i31) + 1) + (i99 * 4)) + 3))
+        t101 <- rdU verts ((3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) + 1)
+        t102 <- rdU verts ((3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) + 2)
         let !t103 = (1.0 - (abs t102))
         let !t104 = (1.5 - (abs t100))
         if (negate (if (t103 - t104) > 0 then t104 else t103)) > 0 then do
@@ -246,202 +276,220 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t108 <- getR v97
       t109 <- getR v98
-      t110 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3))
-      t111 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) + 1)
-      t112 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) 0 2
+      t110 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3))
+      t111 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) + 1)
+      t112 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) + 2)
       let !t113 = ((1.0 - (abs t112)) - (1.5 - (abs t110)))
       let !s114 = (if t113 > 0 then (negate (signum t110)) else 0.0)
       let !s115 = (if t113 > 0 then 0.0 else (negate (signum t112)))
       let !s116 = (sqrt ((s114 * s114) + (s115 * s115)))
       let !s117 = (if t113 > 0 then (1.5 - (abs t110)) else (1.0 - (abs t112)))
-      t118 <- rdI meta 2
-      t119 <- rdI meta 3
+      t118 <- rdU meta 2
+      t119 <- rdU meta 3
       if (((8.0 * (if (1.0 - t119) > 0 then 1.0 else t119)) - t118) - 0.5) > 0 then do
-        wrI meta 2 (t118 + 1.0)
-        t120 <- rdI pos (3 * i31)
-        t121 <- rdI pos ((3 * i31) + 1)
-        t122 <- rdI pos ((3 * i31) + 2)
-        t123 <- rdI normal (3 * i31)
-        t124 <- rdI normal ((3 * i31) + 1)
-        t125 <- rdI normal ((3 * i31) + 2)
-        t126 <- rdI axis (3 * i31)
-        t127 <- rdI axis ((3 * i31) + 1)
-        t128 <- rdI axis ((3 * i31) + 2)
+        wrU meta 2 (t118 + 1.0)
+        t120 <- rdU pos (3 * i31)
+        t121 <- rdU pos ((3 * i31) + 1)
+        t122 <- rdU pos ((3 * i31) + 2)
+        t123 <- rdU normal (3 * i31)
+        t124 <- rdU normal ((3 * i31) + 1)
+        t125 <- rdU normal ((3 * i31) + 2)
+        chkI axis (3 * i31) 0 2
+        t126 <- rdU axis (3 * i31)
+        t127 <- rdU axis ((3 * i31) + 1)
+        t128 <- rdU axis ((3 * i31) + 2)
         let !s129 = ((t124 * t128) - (t125 * t127))
         let !s130 = ((t125 * t126) - (t123 * t128))
         let !s131 = ((t123 * t127) - (t124 * t126))
-        t132 <- rdI scalars (6 * i31)
-        t133 <- rdI scalars ((6 * i31) + 5)
-        t134 <- rdI scalars ((6 * i31) + 2)
-        t135 <- rdI scalars ((6 * i31) + 3)
-        wrI contacts (30 * (truncate t118)) d31
-        wrI contacts ((30 * (truncate t118)) + 1) (-1.0)
-        wrI contacts ((30 * (truncate t118)) + 2) d31
-        wrI contacts ((30 * (truncate t118)) + 3) 8.0
+        chkI scalars (6 * i31) 0 0
+        t132 <- rdU scalars (6 * i31)
+        t133 <- rdU scalars ((6 * i31) + 5)
+        t134 <- rdU scalars ((6 * i31) + 2)
+        t135 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t118)) 0 29
+        wrU contacts (30 * (truncate t118)) d31
+        wrU contacts ((30 * (truncate t118)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t118)) + 2) d31
+        wrU contacts ((30 * (truncate t118)) + 3) 8.0
         let !t136 = (if s116 > 0 then (recip (if (s116 - 1.0e-300) > 0 then s116 else 1.0e-300)) else 0.0)
         let !t137 = (t136 * s114)
-        wrI contacts ((30 * (truncate t118)) + 4) (t137 + (negate (((t123 * t137) + (t125 * (t136 * s115))) * t123)))
-        wrI contacts (((30 * (truncate t118)) + 4) + 1) (negate (((t123 * t137) + (t125 * (t136 * s115))) * t124))
+        wrU contacts ((30 * (truncate t118)) + 4) (t137 + (negate (((t123 * t137) + (t125 * (t136 * s115))) * t123)))
+        wrU contacts ((30 * (truncate t118)) + 5) (negate (((t123 * t137) + (t125 * (t136 * s115))) * t124))
         let !t138 = (t136 * s115)
-        wrI contacts (((30 * (truncate t118)) + 4) + 2) (t138 + (negate (((t123 * t137) + (t125 * t138)) * t125)))
+        wrU contacts ((30 * (truncate t118)) + 6) (t138 + (negate (((t123 * t137) + (t125 * t138)) * t125)))
         let !t139 = (t111 + (negate t121))
-        wrI contacts ((30 * (truncate t118)) + 7) ((((t139 * t138) * t123) + ((((t112 + (negate t122)) * t137) - ((t110 + (negate t120)) * t138)) * t124)) + ((negate (t139 * t137)) * t125))
+        wrU contacts ((30 * (truncate t118)) + 7) ((((t139 * t138) * t123) + ((((t112 + (negate t122)) * t137) - ((t110 + (negate t120)) * t138)) * t124)) + ((negate (t139 * t137)) * t125))
         let !t140 = (t124 * t138)
-        wrI contacts ((30 * (truncate t118)) + 12) (t140 + (negate ((((t123 * t140) + (t124 * ((t125 * t137) - (t123 * t138)))) + (t125 * (negate (t124 * t137)))) * t123)))
+        wrU contacts ((30 * (truncate t118)) + 12) (t140 + (negate ((((t123 * t140) + (t124 * ((t125 * t137) - (t123 * t138)))) + (t125 * (negate (t124 * t137)))) * t123)))
         let !t141 = ((t125 * t137) - (t123 * t138))
-        wrI contacts (((30 * (truncate t118)) + 12) + 1) (t141 + (negate ((((t123 * t140) + (t124 * t141)) + (t125 * (negate (t124 * t137)))) * t124)))
+        wrU contacts ((30 * (truncate t118)) + 13) (t141 + (negate ((((t123 * t140) + (t124 * t141)) + (t125 * (negate (t124 * t137)))) * t124)))
         let !t142 = (negate (t124 * t137))
-        wrI contacts (((30 * (truncate t118)) + 12) + 2) (t142 + (negate ((((t123 * t140) + (t124 * t141)) + (t125 * t142)) * t125)))
+        wrU contacts ((30 * (truncate t118)) + 14) (t142 + (negate ((((t123 * t140) + (t124 * t141)) + (t125 * t142)) * t125)))
         let !t143 = (t112 + (negate t122))
         let !t144 = (t110 + (negate t120))
-        wrI contacts ((30 * (truncate t118)) + 15) (((((t139 * t142) - (t143 * t141)) * t123) + (((t143 * t140) - (t144 * t142)) * t124)) + (((t144 * t141) - (t139 * t140)) * t125))
-        wrI contacts ((30 * (truncate t118)) + 20) (if s116 > 0 then ((negate s117) / (if (s116 - 1.0e-300) > 0 then s116 else 1.0e-300)) else 0.0)
-        wrI contacts ((30 * (truncate t118)) + 26) 1.0
-        wrI contacts ((30 * (truncate t118)) + 27) t110
-        wrI contacts (((30 * (truncate t118)) + 27) + 1) t111
-        wrI contacts (((30 * (truncate t118)) + 27) + 2) t112
+        wrU contacts ((30 * (truncate t118)) + 15) (((((t139 * t142) - (t143 * t141)) * t123) + (((t143 * t140) - (t144 * t142)) * t124)) + (((t144 * t141) - (t139 * t140)) * t125))
+        wrU contacts ((30 * (truncate t118)) + 20) (if s116 > 0 then ((negate s117) / (if (s116 - 1.0e-300) > 0 then s116 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t118)) + 26) 1.0
+        wrU contacts ((30 * (truncate t118)) + 27) t110
+        wrU contacts ((30 * (truncate t118)) + 28) t111
+        wrU contacts ((30 * (truncate t118)) + 29) t112
         if (-0.5) > 0 then do
-          t145 <- rdI pos (-3)
-          t146 <- rdI pos (-2)
-          t147 <- rdI pos (-1)
-          t148 <- rdI normal (-3)
-          t149 <- rdI normal (-2)
-          t150 <- rdI normal (-1)
-          t151 <- rdI axis (-3)
-          t152 <- rdI axis (-2)
-          t153 <- rdI axis (-1)
+          chkI pos 0 (-3) (-1)
+          t145 <- rdU pos (-3)
+          t146 <- rdU pos (-2)
+          t147 <- rdU pos (-1)
+          chkI normal 0 (-3) (-1)
+          t148 <- rdU normal (-3)
+          t149 <- rdU normal (-2)
+          t150 <- rdU normal (-1)
+          chkI axis 0 (-3) (-1)
+          t151 <- rdU axis (-3)
+          t152 <- rdU axis (-2)
+          t153 <- rdU axis (-1)
           let !s154 = ((t149 * t153) - (t150 * t152))
           let !s155 = ((t150 * t151) - (t148 * t153))
           let !s156 = ((t148 * t152) - (t149 * t151))
-          t157 <- rdI scalars (-6)
-          t158 <- rdI scalars (-1)
-          t159 <- rdI scalars (-4)
-          t160 <- rdI scalars (-3)
-          wrI contacts ((30 * (truncate t118)) + 8) (t137 + (negate (((t148 * t137) + (t150 * t138)) * t148)))
-          wrI contacts (((30 * (truncate t118)) + 8) + 1) (negate (((t148 * t137) + (t150 * t138)) * t149))
-          wrI contacts (((30 * (truncate t118)) + 8) + 2) (t138 + (negate (((t148 * t137) + (t150 * t138)) * t150)))
+          chkI scalars 0 (-6) (-1)
+          t157 <- rdU scalars (-6)
+          t158 <- rdU scalars (-1)
+          t159 <- rdU scalars (-4)
+          t160 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t118)) + 8) (t137 + (negate (((t148 * t137) + (t150 * t138)) * t148)))
+          wrU contacts ((30 * (truncate t118)) + 9) (negate (((t148 * t137) + (t150 * t138)) * t149))
+          wrU contacts ((30 * (truncate t118)) + 10) (t138 + (negate (((t148 * t137) + (t150 * t138)) * t150)))
           let !t161 = (t111 + (negate t146))
-          wrI contacts ((30 * (truncate t118)) + 11) ((((t161 * t138) * t148) + ((((t112 + (negate t147)) * t137) - ((t110 + (negate t145)) * t138)) * t149)) + ((negate (t161 * t137)) * t150))
-          wrI contacts ((30 * (truncate t118)) + 16) (t140 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t148)))
-          wrI contacts (((30 * (truncate t118)) + 16) + 1) (t141 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t149)))
-          wrI contacts (((30 * (truncate t118)) + 16) + 2) (t142 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t150)))
+          wrU contacts ((30 * (truncate t118)) + 11) ((((t161 * t138) * t148) + ((((t112 + (negate t147)) * t137) - ((t110 + (negate t145)) * t138)) * t149)) + ((negate (t161 * t137)) * t150))
+          wrU contacts ((30 * (truncate t118)) + 16) (t140 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t148)))
+          wrU contacts ((30 * (truncate t118)) + 17) (t141 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t149)))
+          wrU contacts ((30 * (truncate t118)) + 18) (t142 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t150)))
           let !t162 = (t112 + (negate t147))
           let !t163 = (t110 + (negate t145))
-          wrI contacts ((30 * (truncate t118)) + 19) (((((t161 * t142) - (t162 * t141)) * t148) + (((t162 * t140) - (t163 * t142)) * t149)) + (((t163 * t141) - (t161 * t140)) * t150))
+          wrU contacts ((30 * (truncate t118)) + 19) (((((t161 * t142) - (t162 * t141)) * t148) + (((t162 * t140) - (t163 * t142)) * t149)) + (((t163 * t141) - (t161 * t140)) * t150))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t118)) + 8) 0.0
-          wrI contacts (((30 * (truncate t118)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t118)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t118)) + 11) 0.0
-          wrI contacts ((30 * (truncate t118)) + 16) 0.0
-          wrI contacts (((30 * (truncate t118)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t118)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t118)) + 19) 0.0
+          wrU contacts ((30 * (truncate t118)) + 8) 0.0
+          wrU contacts ((30 * (truncate t118)) + 9) 0.0
+          wrU contacts ((30 * (truncate t118)) + 10) 0.0
+          wrU contacts ((30 * (truncate t118)) + 11) 0.0
+          wrU contacts ((30 * (truncate t118)) + 16) 0.0
+          wrU contacts ((30 * (truncate t118)) + 17) 0.0
+          wrU contacts ((30 * (truncate t118)) + 18) 0.0
+          wrU contacts ((30 * (truncate t118)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t164 <- rdI meta 6
-        wrI meta 6 (t164 + 1.0)
+        chkI meta 0 6 6
+        t164 <- rdU meta 6
+        wrU meta 6 (t164 + 1.0)
         pure ()
       if (abs (t109 - t108)) > 0 then do
-        t165 <- rdI verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3))
-        t166 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 1)
-        t167 <- rdI verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 2)
+        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) 0 2
+        t165 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3))
+        t166 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 1)
+        t167 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 2)
         let !t168 = ((1.0 - (abs t167)) - (1.5 - (abs t165)))
         let !s169 = (if t168 > 0 then (negate (signum t165)) else 0.0)
         let !s170 = (if t168 > 0 then 0.0 else (negate (signum t167)))
         let !s171 = (sqrt ((s169 * s169) + (s170 * s170)))
         let !s172 = (if t168 > 0 then (1.5 - (abs t165)) else (1.0 - (abs t167)))
-        t173 <- rdI meta 2
-        t174 <- rdI meta 3
+        t173 <- rdU meta 2
+        t174 <- rdU meta 3
         if (((8.0 * (if (1.0 - t174) > 0 then 1.0 else t174)) - t173) - 0.5) > 0 then do
-          wrI meta 2 (t173 + 1.0)
-          t175 <- rdI pos (3 * i31)
-          t176 <- rdI pos ((3 * i31) + 1)
-          t177 <- rdI pos ((3 * i31) + 2)
-          t178 <- rdI normal (3 * i31)
-          t179 <- rdI normal ((3 * i31) + 1)
-          t180 <- rdI normal ((3 * i31) + 2)
-          t181 <- rdI axis (3 * i31)
-          t182 <- rdI axis ((3 * i31) + 1)
-          t183 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t173 + 1.0)
+          t175 <- rdU pos (3 * i31)
+          t176 <- rdU pos ((3 * i31) + 1)
+          t177 <- rdU pos ((3 * i31) + 2)
+          t178 <- rdU normal (3 * i31)
+          t179 <- rdU normal ((3 * i31) + 1)
+          t180 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t181 <- rdU axis (3 * i31)
+          t182 <- rdU axis ((3 * i31) + 1)
+          t183 <- rdU axis ((3 * i31) + 2)
           let !s184 = ((t179 * t183) - (t180 * t182))
           let !s185 = ((t180 * t181) - (t178 * t183))
           let !s186 = ((t178 * t182) - (t179 * t181))
-          t187 <- rdI scalars (6 * i31)
-          t188 <- rdI scalars ((6 * i31) + 5)
-          t189 <- rdI scalars ((6 * i31) + 2)
-          t190 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t173)) d31
-          wrI contacts ((30 * (truncate t173)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t173)) + 2) d31
-          wrI contacts ((30 * (truncate t173)) + 3) 9.0
+          chkI scalars (6 * i31) 0 0
+          t187 <- rdU scalars (6 * i31)
+          t188 <- rdU scalars ((6 * i31) + 5)
+          t189 <- rdU scalars ((6 * i31) + 2)
+          t190 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t173)) 0 29
+          wrU contacts (30 * (truncate t173)) d31
+          wrU contacts ((30 * (truncate t173)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t173)) + 2) d31
+          wrU contacts ((30 * (truncate t173)) + 3) 9.0
           let !t191 = (if s171 > 0 then (recip (if (s171 - 1.0e-300) > 0 then s171 else 1.0e-300)) else 0.0)
           let !t192 = (t191 * s169)
-          wrI contacts ((30 * (truncate t173)) + 4) (t192 + (negate (((t178 * t192) + (t180 * (t191 * s170))) * t178)))
-          wrI contacts (((30 * (truncate t173)) + 4) + 1) (negate (((t178 * t192) + (t180 * (t191 * s170))) * t179))
+          wrU contacts ((30 * (truncate t173)) + 4) (t192 + (negate (((t178 * t192) + (t180 * (t191 * s170))) * t178)))
+          wrU contacts ((30 * (truncate t173)) + 5) (negate (((t178 * t192) + (t180 * (t191 * s170))) * t179))
           let !t193 = (t191 * s170)
-          wrI contacts (((30 * (truncate t173)) + 4) + 2) (t193 + (negate (((t178 * t192) + (t180 * t193)) * t180)))
+          wrU contacts ((30 * (truncate t173)) + 6) (t193 + (negate (((t178 * t192) + (t180 * t193)) * t180)))
           let !t194 = (t166 + (negate t176))
-          wrI contacts ((30 * (truncate t173)) + 7) ((((t194 * t193) * t178) + ((((t167 + (negate t177)) * t192) - ((t165 + (negate t175)) * t193)) * t179)) + ((negate (t194 * t192)) * t180))
+          wrU contacts ((30 * (truncate t173)) + 7) ((((t194 * t193) * t178) + ((((t167 + (negate t177)) * t192) - ((t165 + (negate t175)) * t193)) * t179)) + ((negate (t194 * t192)) * t180))
           let !t195 = (t179 * t193)
-          wrI contacts ((30 * (truncate t173)) + 12) (t195 + (negate ((((t178 * t195) + (t179 * ((t180 * t192) - (t178 * t193)))) + (t180 * (negate (t179 * t192)))) * t178)))
+          wrU contacts ((30 * (truncate t173)) + 12) (t195 + (negate ((((t178 * t195) + (t179 * ((t180 * t192) - (t178 * t193)))) + (t180 * (negate (t179 * t192)))) * t178)))
           let !t196 = ((t180 * t192) - (t178 * t193))
-          wrI contacts (((30 * (truncate t173)) + 12) + 1) (t196 + (negate ((((t178 * t195) + (t179 * t196)) + (t180 * (negate (t179 * t192)))) * t179)))
+          wrU contacts ((30 * (truncate t173)) + 13) (t196 + (negate ((((t178 * t195) + (t179 * t196)) + (t180 * (negate (t179 * t192)))) * t179)))
           let !t197 = (negate (t179 * t192))
-          wrI contacts (((30 * (truncate t173)) + 12) + 2) (t197 + (negate ((((t178 * t195) + (t179 * t196)) + (t180 * t197)) * t180)))
+          wrU contacts ((30 * (truncate t173)) + 14) (t197 + (negate ((((t178 * t195) + (t179 * t196)) + (t180 * t197)) * t180)))
           let !t198 = (t167 + (negate t177))
           let !t199 = (t165 + (negate t175))
-          wrI contacts ((30 * (truncate t173)) + 15) (((((t194 * t197) - (t198 * t196)) * t178) + (((t198 * t195) - (t199 * t197)) * t179)) + (((t199 * t196) - (t194 * t195)) * t180))
-          wrI contacts ((30 * (truncate t173)) + 20) (if s171 > 0 then ((negate s172) / (if (s171 - 1.0e-300) > 0 then s171 else 1.0e-300)) else 0.0)
-          wrI contacts ((30 * (truncate t173)) + 26) 1.0
-          wrI contacts ((30 * (truncate t173)) + 27) t165
-          wrI contacts (((30 * (truncate t173)) + 27) + 1) t166
-          wrI contacts (((30 * (truncate t173)) + 27) + 2) t167
+          wrU contacts ((30 * (truncate t173)) + 15) (((((t194 * t197) - (t198 * t196)) * t178) + (((t198 * t195) - (t199 * t197)) * t179)) + (((t199 * t196) - (t194 * t195)) * t180))
+          wrU contacts ((30 * (truncate t173)) + 20) (if s171 > 0 then ((negate s172) / (if (s171 - 1.0e-300) > 0 then s171 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t173)) + 26) 1.0
+          wrU contacts ((30 * (truncate t173)) + 27) t165
+          wrU contacts ((30 * (truncate t173)) + 28) t166
+          wrU contacts ((30 * (truncate t173)) + 29) t167
           if (-0.5) > 0 then do
-            t200 <- rdI pos (-3)
-            t201 <- rdI pos (-2)
-            t202 <- rdI pos (-1)
-            t203 <- rdI normal (-3)
-            t204 <- rdI normal (-2)
-            t205 <- rdI normal (-1)
-            t206 <- rdI axis (-3)
-            t207 <- rdI axis (-2)
-            t208 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t200 <- rdU pos (-3)
+            t201 <- rdU pos (-2)
+            t202 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t203 <- rdU normal (-3)
+            t204 <- rdU normal (-2)
+            t205 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t206 <- rdU axis (-3)
+            t207 <- rdU axis (-2)
+            t208 <- rdU axis (-1)
             let !s209 = ((t204 * t208) - (t205 * t207))
             let !s210 = ((t205 * t206) - (t203 * t208))
             let !s211 = ((t203 * t207) - (t204 * t206))
-            t212 <- rdI scalars (-6)
-            t213 <- rdI scalars (-1)
-            t214 <- rdI scalars (-4)
-            t215 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t173)) + 8) (t192 + (negate (((t203 * t192) + (t205 * t193)) * t203)))
-            wrI contacts (((30 * (truncate t173)) + 8) + 1) (negate (((t203 * t192) + (t205 * t193)) * t204))
-            wrI contacts (((30 * (truncate t173)) + 8) + 2) (t193 + (negate (((t203 * t192) + (t205 * t193)) * t205)))
+            chkI scalars 0 (-6) (-1)
+            t212 <- rdU scalars (-6)
+            t213 <- rdU scalars (-1)
+            t214 <- rdU scalars (-4)
+            t215 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t173)) + 8) (t192 + (negate (((t203 * t192) + (t205 * t193)) * t203)))
+            wrU contacts ((30 * (truncate t173)) + 9) (negate (((t203 * t192) + (t205 * t193)) * t204))
+            wrU contacts ((30 * (truncate t173)) + 10) (t193 + (negate (((t203 * t192) + (t205 * t193)) * t205)))
             let !t216 = (t166 + (negate t201))
-            wrI contacts ((30 * (truncate t173)) + 11) ((((t216 * t193) * t203) + ((((t167 + (negate t202)) * t192) - ((t165 + (negate t200)) * t193)) * t204)) + ((negate (t216 * t192)) * t205))
-            wrI contacts ((30 * (truncate t173)) + 16) (t195 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t203)))
-            wrI contacts (((30 * (truncate t173)) + 16) + 1) (t196 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t204)))
-            wrI contacts (((30 * (truncate t173)) + 16) + 2) (t197 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t205)))
+            wrU contacts ((30 * (truncate t173)) + 11) ((((t216 * t193) * t203) + ((((t167 + (negate t202)) * t192) - ((t165 + (negate t200)) * t193)) * t204)) + ((negate (t216 * t192)) * t205))
+            wrU contacts ((30 * (truncate t173)) + 16) (t195 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t203)))
+            wrU contacts ((30 * (truncate t173)) + 17) (t196 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t204)))
+            wrU contacts ((30 * (truncate t173)) + 18) (t197 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t205)))
             let !t217 = (t167 + (negate t202))
             let !t218 = (t165 + (negate t200))
-            wrI contacts ((30 * (truncate t173)) + 19) (((((t216 * t197) - (t217 * t196)) * t203) + (((t217 * t195) - (t218 * t197)) * t204)) + (((t218 * t196) - (t216 * t195)) * t205))
+            wrU contacts ((30 * (truncate t173)) + 19) (((((t216 * t197) - (t217 * t196)) * t203) + (((t217 * t195) - (t218 * t197)) * t204)) + (((t218 * t196) - (t216 * t195)) * t205))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t173)) + 8) 0.0
-            wrI contacts (((30 * (truncate t173)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t173)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t173)) + 11) 0.0
-            wrI contacts ((30 * (truncate t173)) + 16) 0.0
-            wrI contacts (((30 * (truncate t173)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t173)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t173)) + 19) 0.0
+            wrU contacts ((30 * (truncate t173)) + 8) 0.0
+            wrU contacts ((30 * (truncate t173)) + 9) 0.0
+            wrU contacts ((30 * (truncate t173)) + 10) 0.0
+            wrU contacts ((30 * (truncate t173)) + 11) 0.0
+            wrU contacts ((30 * (truncate t173)) + 16) 0.0
+            wrU contacts ((30 * (truncate t173)) + 17) 0.0
+            wrU contacts ((30 * (truncate t173)) + 18) 0.0
+            wrU contacts ((30 * (truncate t173)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t219 <- rdI meta 6
-          wrI meta 6 (t219 + 1.0)
+          chkI meta 0 6 6
+          t219 <- rdU meta 6
+          wrU meta 6 (t219 + 1.0)
           pure ()
         pure ()
       else do
@@ -449,16 +497,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    t220 <- rdI verts (3 * (97 * i31))
-    t221 <- rdI verts ((3 * (97 * i31)) + 1)
-    t222 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t220 <- rdU verts (3 * (97 * i31))
+    t221 <- rdU verts ((3 * (97 * i31)) + 1)
+    t222 <- rdU verts ((3 * (97 * i31)) + 2)
     v223 <- newR 1.0
     loopI 0.0 24.0 $ \i224 -> do
       let !d224 = fromIntegral i224 :: Double
-      t225 <- rdI verts (3 * ((((97 * i31) + 1) + (i224 * 4)) + 3))
-      t226 <- rdI verts ((3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) + 1)
-      t227 <- rdI verts ((3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) + 2)
-      t228 <- rdI radii ((24 * i31) + i224)
+      chkI verts (3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) 0 2
+      t225 <- rdU verts (3 * ((((97 * i31) + 1) + (i224 * 4)) + 3))
+      t226 <- rdU verts ((3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) + 1)
+      t227 <- rdU verts ((3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i224) 0 0
+      t228 <- rdU radii ((24 * i31) + i224)
       t229 <- getR v223
       let !t230 = (t225 + (negate t220))
       let !t231 = (t226 + (negate t221))
@@ -477,27 +528,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v241 <- newR 0.0
       loopI 0.0 24.0 $ \i242 -> do
         let !d242 = fromIntegral i242 :: Double
-        t243 <- rdI radii ((24 * i31) + i242)
+        chkI radii ((24 * i31) + i242) 0 0
+        t243 <- rdU radii ((24 * i31) + i242)
         loopI 6.0 12.0 $ \i244 -> do
           let !d244 = fromIntegral i244 :: Double
           let !t245 = (d242 + d244)
-          t246 <- rdI radii (truncate ((24.0 * d31) + (t245 - (24.0 * (floorF (t245 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t245 - (24.0 * (floorF (t245 / 24.0)))))) 0 0
+          t246 <- rdU radii (truncate ((24.0 * d31) + (t245 - (24.0 * (floorF (t245 / 24.0))))))
           loopI 1.0 4.0 $ \i247 -> do
             let !d247 = fromIntegral i247 :: Double
-            t248 <- rdI verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1)))
-            t249 <- rdI verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) + 1)
-            t250 <- rdI verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) + 2)
-            t251 <- rdI verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + i247))
-            t252 <- rdI verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) + 1)
-            t253 <- rdI verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) 0 2
+            t248 <- rdU verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1)))
+            t249 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) + 1)
+            t250 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) 0 2
+            t251 <- rdU verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + i247))
+            t252 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) + 1)
+            t253 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) + 2)
             loopI 1.0 4.0 $ \i254 -> do
               let !d254 = fromIntegral i254 :: Double
-              t255 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))))
-              t256 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 1.0))
-              t257 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 2.0))
-              t258 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)))
-              t259 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 1.0))
-              t260 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0)))) 0 0
+              t255 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 1.0)) 0 0
+              t256 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 2.0)) 0 0
+              t257 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254))) 0 0
+              t258 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 1.0)) 0 0
+              t259 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 2.0)) 0 0
+              t260 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 2.0))
               t261 <- getR v235
               let !t262 = (negate t255)
               let !t263 = (t258 + t262)
@@ -537,12 +598,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t297 = ((0.3 * ((if (t246 - t243) > 0 then t243 else t246) / 4.0)) - (sqrt (((t294 * t294) + (t295 * t295)) + (t296 * t296))))
               if (if (t293 - t297) > 0 then t297 else t293) > 0 then do
                 setR v235 (0.5 * ((t243 - ((t243 * (d247 + t290)) / 4.0)) + (t246 - ((t246 * (d254 + t292)) / 4.0))))
-                t298 <- rdI verts (3 * (((97 * i31) + 1) + (i242 * 4)))
-                t299 <- rdI verts ((3 * (((97 * i31) + 1) + (i242 * 4))) + 1)
-                t300 <- rdI verts ((3 * (((97 * i31) + 1) + (i242 * 4))) + 2)
-                t301 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))))
-                t302 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 1.0))
-                t303 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i242 * 4))) 0 2
+                t298 <- rdU verts (3 * (((97 * i31) + 1) + (i242 * 4)))
+                t299 <- rdU verts ((3 * (((97 * i31) + 1) + (i242 * 4))) + 1)
+                t300 <- rdU verts ((3 * (((97 * i31) + 1) + (i242 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)))) 0 0
+                t301 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t302 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t303 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 2.0))
                 setR v236 (t248 + (t290 * t269))
                 setR v237 (t249 + (t290 * t270))
                 setR v238 (t250 + (t290 * t271))
@@ -581,89 +646,97 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s325 = (t324 * t319)
         let !s326 = (t324 * t322)
         let !s327 = (t324 * t321)
-        t328 <- rdI meta 2
-        t329 <- rdI meta 3
+        t328 <- rdU meta 2
+        t329 <- rdU meta 3
         if (((8.0 * (if (1.0 - t329) > 0 then 1.0 else t329)) - t328) - 0.5) > 0 then do
-          wrI meta 2 (t328 + 1.0)
-          t330 <- rdI pos (3 * i31)
-          t331 <- rdI pos ((3 * i31) + 1)
-          t332 <- rdI pos ((3 * i31) + 2)
-          t333 <- rdI normal (3 * i31)
-          t334 <- rdI normal ((3 * i31) + 1)
-          t335 <- rdI normal ((3 * i31) + 2)
-          t336 <- rdI axis (3 * i31)
-          t337 <- rdI axis ((3 * i31) + 1)
-          t338 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t328 + 1.0)
+          t330 <- rdU pos (3 * i31)
+          t331 <- rdU pos ((3 * i31) + 1)
+          t332 <- rdU pos ((3 * i31) + 2)
+          t333 <- rdU normal (3 * i31)
+          t334 <- rdU normal ((3 * i31) + 1)
+          t335 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t336 <- rdU axis (3 * i31)
+          t337 <- rdU axis ((3 * i31) + 1)
+          t338 <- rdU axis ((3 * i31) + 2)
           let !s339 = ((t334 * t338) - (t335 * t337))
           let !s340 = ((t335 * t336) - (t333 * t338))
           let !s341 = ((t333 * t337) - (t334 * t336))
-          t342 <- rdI scalars (6 * i31)
-          t343 <- rdI scalars ((6 * i31) + 5)
-          t344 <- rdI scalars ((6 * i31) + 2)
-          t345 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t328)) d31
-          wrI contacts ((30 * (truncate t328)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t328)) + 2) d31
-          wrI contacts ((30 * (truncate t328)) + 3) 12.0
-          wrI contacts ((30 * (truncate t328)) + 4) (s325 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t333)))
-          wrI contacts (((30 * (truncate t328)) + 4) + 1) (s326 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t334)))
-          wrI contacts (((30 * (truncate t328)) + 4) + 2) (s327 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t335)))
-          wrI contacts ((30 * (truncate t328)) + 7) 0.0
-          wrI contacts ((30 * (truncate t328)) + 12) 0.0
-          wrI contacts (((30 * (truncate t328)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t328)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t328)) + 15) 0.0
-          wrI contacts ((30 * (truncate t328)) + 20) t315
-          wrI contacts ((30 * (truncate t328)) + 26) 0.6
-          wrI contacts ((30 * (truncate t328)) + 27) t316
-          wrI contacts (((30 * (truncate t328)) + 27) + 1) t317
-          wrI contacts (((30 * (truncate t328)) + 27) + 2) t318
+          chkI scalars (6 * i31) 0 0
+          t342 <- rdU scalars (6 * i31)
+          t343 <- rdU scalars ((6 * i31) + 5)
+          t344 <- rdU scalars ((6 * i31) + 2)
+          t345 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t328)) 0 29
+          wrU contacts (30 * (truncate t328)) d31
+          wrU contacts ((30 * (truncate t328)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t328)) + 2) d31
+          wrU contacts ((30 * (truncate t328)) + 3) 12.0
+          wrU contacts ((30 * (truncate t328)) + 4) (s325 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t333)))
+          wrU contacts ((30 * (truncate t328)) + 5) (s326 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t334)))
+          wrU contacts ((30 * (truncate t328)) + 6) (s327 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t335)))
+          wrU contacts ((30 * (truncate t328)) + 7) 0.0
+          wrU contacts ((30 * (truncate t328)) + 12) 0.0
+          wrU contacts ((30 * (truncate t328)) + 13) 0.0
+          wrU contacts ((30 * (truncate t328)) + 14) 0.0
+          wrU contacts ((30 * (truncate t328)) + 15) 0.0
+          wrU contacts ((30 * (truncate t328)) + 20) t315
+          wrU contacts ((30 * (truncate t328)) + 26) 0.6
+          wrU contacts ((30 * (truncate t328)) + 27) t316
+          wrU contacts ((30 * (truncate t328)) + 28) t317
+          wrU contacts ((30 * (truncate t328)) + 29) t318
           if (-0.5) > 0 then do
-            t346 <- rdI pos (-3)
-            t347 <- rdI pos (-2)
-            t348 <- rdI pos (-1)
-            t349 <- rdI normal (-3)
-            t350 <- rdI normal (-2)
-            t351 <- rdI normal (-1)
-            t352 <- rdI axis (-3)
-            t353 <- rdI axis (-2)
-            t354 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t346 <- rdU pos (-3)
+            t347 <- rdU pos (-2)
+            t348 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t349 <- rdU normal (-3)
+            t350 <- rdU normal (-2)
+            t351 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t352 <- rdU axis (-3)
+            t353 <- rdU axis (-2)
+            t354 <- rdU axis (-1)
             let !s355 = ((t350 * t354) - (t351 * t353))
             let !s356 = ((t351 * t352) - (t349 * t354))
             let !s357 = ((t349 * t353) - (t350 * t352))
-            t358 <- rdI scalars (-6)
-            t359 <- rdI scalars (-1)
-            t360 <- rdI scalars (-4)
-            t361 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t328)) + 8) (s325 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t349)))
-            wrI contacts (((30 * (truncate t328)) + 8) + 1) (s326 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t350)))
-            wrI contacts (((30 * (truncate t328)) + 8) + 2) (s327 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t351)))
+            chkI scalars 0 (-6) (-1)
+            t358 <- rdU scalars (-6)
+            t359 <- rdU scalars (-1)
+            t360 <- rdU scalars (-4)
+            t361 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t328)) + 8) (s325 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t349)))
+            wrU contacts ((30 * (truncate t328)) + 9) (s326 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t350)))
+            wrU contacts ((30 * (truncate t328)) + 10) (s327 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t351)))
             let !t362 = (t317 + (negate t347))
             let !t363 = (t318 + (negate t348))
             let !t364 = (t316 + (negate t346))
-            wrI contacts ((30 * (truncate t328)) + 11) (((((t362 * s327) - (t363 * s326)) * t349) + (((t363 * s325) - (t364 * s327)) * t350)) + (((t364 * s326) - (t362 * s325)) * t351))
+            wrU contacts ((30 * (truncate t328)) + 11) (((((t362 * s327) - (t363 * s326)) * t349) + (((t363 * s325) - (t364 * s327)) * t350)) + (((t364 * s326) - (t362 * s325)) * t351))
             let !t365 = ((t334 * s327) - (t335 * s326))
-            wrI contacts ((30 * (truncate t328)) + 16) (t365 + (negate ((((t349 * t365) + (t350 * ((t335 * s325) - (t333 * s327)))) + (t351 * ((t333 * s326) - (t334 * s325)))) * t349)))
+            wrU contacts ((30 * (truncate t328)) + 16) (t365 + (negate ((((t349 * t365) + (t350 * ((t335 * s325) - (t333 * s327)))) + (t351 * ((t333 * s326) - (t334 * s325)))) * t349)))
             let !t366 = ((t335 * s325) - (t333 * s327))
-            wrI contacts (((30 * (truncate t328)) + 16) + 1) (t366 + (negate ((((t349 * t365) + (t350 * t366)) + (t351 * ((t333 * s326) - (t334 * s325)))) * t350)))
+            wrU contacts ((30 * (truncate t328)) + 17) (t366 + (negate ((((t349 * t365) + (t350 * t366)) + (t351 * ((t333 * s326) - (t334 * s325)))) * t350)))
             let !t367 = ((t333 * s326) - (t334 * s325))
-            wrI contacts (((30 * (truncate t328)) + 16) + 2) (t367 + (negate ((((t349 * t365) + (t350 * t366)) + (t351 * t367)) * t351)))
-            wrI contacts ((30 * (truncate t328)) + 19) (((((t362 * t367) - (t363 * t366)) * t349) + (((t363 * t365) - (t364 * t367)) * t350)) + (((t364 * t366) - (t362 * t365)) * t351))
+            wrU contacts ((30 * (truncate t328)) + 18) (t367 + (negate ((((t349 * t365) + (t350 * t366)) + (t351 * t367)) * t351)))
+            wrU contacts ((30 * (truncate t328)) + 19) (((((t362 * t367) - (t363 * t366)) * t349) + (((t363 * t365) - (t364 * t367)) * t350)) + (((t364 * t366) - (t362 * t365)) * t351))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t328)) + 8) 0.0
-            wrI contacts (((30 * (truncate t328)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t328)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t328)) + 11) 0.0
-            wrI contacts ((30 * (truncate t328)) + 16) 0.0
-            wrI contacts (((30 * (truncate t328)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t328)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t328)) + 19) 0.0
+            wrU contacts ((30 * (truncate t328)) + 8) 0.0
+            wrU contacts ((30 * (truncate t328)) + 9) 0.0
+            wrU contacts ((30 * (truncate t328)) + 10) 0.0
+            wrU contacts ((30 * (truncate t328)) + 11) 0.0
+            wrU contacts ((30 * (truncate t328)) + 16) 0.0
+            wrU contacts ((30 * (truncate t328)) + 17) 0.0
+            wrU contacts ((30 * (truncate t328)) + 18) 0.0
+            wrU contacts ((30 * (truncate t328)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t368 <- rdI meta 6
-          wrI meta 6 (t368 + 1.0)
+          chkI meta 0 6 6
+          t368 <- rdU meta 6
+          wrU meta 6 (t368 + 1.0)
           pure ()
         pure ()
       else do
@@ -676,44 +749,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -721,12 +799,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -734,20 +813,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -758,19 +840,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -778,98 +863,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -944,12 +1041,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
       let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
       let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdI mouse 4
-      t213 <- rdI mouse 5
-      t214 <- rdI mouse 6
-      t215 <- rdI mouse 7
-      t216 <- rdI mouse 8
-      t217 <- rdI mouse 9
+      t212 <- rdU mouse 4
+      t213 <- rdU mouse 5
+      t214 <- rdU mouse 6
+      t215 <- rdU mouse 7
+      t216 <- rdU mouse 8
+      t217 <- rdU mouse 9
       let !t218 = (recip t101)
       let !t219 = (6.283185307179586 * t215)
       let !s220 = (recip (t103 * ((((2.0 * t218) * t216) * t219) + (t103 * ((t218 * t219) * t219)))))
@@ -960,28 +1057,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s225 = (s199 + (negate t212))
       let !s226 = (s200 + (negate t213))
       let !s227 = (s201 + (negate t214))
-      t228 <- rdI mouse 10
-      t229 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t230 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t231 <- rdI vel (3 * (truncate t100))
-      t232 <- rdI vel ((3 * (truncate t100)) + 1)
-      t233 <- rdI vel ((3 * (truncate t100)) + 2)
-      t234 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
-      t235 <- rdI mouse 11
-      t236 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t237 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t238 <- rdI vel (3 * (truncate t100))
-      t239 <- rdI vel ((3 * (truncate t100)) + 1)
-      t240 <- rdI vel ((3 * (truncate t100)) + 2)
-      t241 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
+      t228 <- rdU mouse 10
+      t229 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t230 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t231 <- rdU vel (3 * (truncate t100))
+      t232 <- rdU vel ((3 * (truncate t100)) + 1)
+      t233 <- rdU vel ((3 * (truncate t100)) + 2)
+      t234 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
+      t235 <- rdU mouse 11
+      t236 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t237 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t238 <- rdU vel (3 * (truncate t100))
+      t239 <- rdU vel ((3 * (truncate t100)) + 1)
+      t240 <- rdU vel ((3 * (truncate t100)) + 2)
+      t241 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -992,38 +1090,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d242 = fromIntegral i242 :: Double
     loopI 0.0 t9 $ \i243 -> do
       let !d243 = fromIntegral i243 :: Double
-      t244 <- rdI contacts (30 * i243)
-      t245 <- rdI contacts ((30 * i243) + 1)
-      t246 <- rdI contacts ((30 * i243) + 12)
-      t247 <- rdI contacts (((30 * i243) + 12) + 1)
-      t248 <- rdI contacts (((30 * i243) + 12) + 2)
-      t249 <- rdI contacts ((30 * i243) + 15)
-      t250 <- rdI contacts ((30 * i243) + 16)
-      t251 <- rdI contacts (((30 * i243) + 16) + 1)
-      t252 <- rdI contacts (((30 * i243) + 16) + 2)
-      t253 <- rdI contacts ((30 * i243) + 19)
-      t254 <- rdI contacts ((30 * i243) + 4)
-      t255 <- rdI contacts (((30 * i243) + 4) + 1)
-      t256 <- rdI contacts (((30 * i243) + 4) + 2)
-      t257 <- rdI contacts ((30 * i243) + 7)
-      t258 <- rdI contacts ((30 * i243) + 8)
-      t259 <- rdI contacts (((30 * i243) + 8) + 1)
-      t260 <- rdI contacts (((30 * i243) + 8) + 2)
-      t261 <- rdI contacts ((30 * i243) + 11)
-      t262 <- rdI contacts ((30 * i243) + 26)
-      t263 <- rdI contacts ((30 * i243) + 24)
-      t264 <- rdI contacts ((30 * i243) + 25)
-      t265 <- rdI contacts ((30 * i243) + 22)
-      t266 <- rdI vel (3 * (truncate t244))
-      t267 <- rdI vel ((3 * (truncate t244)) + 1)
-      t268 <- rdI vel ((3 * (truncate t244)) + 2)
-      t269 <- rdI scalars ((6 * (truncate t244)) + 1)
+      chkI contacts (30 * i243) 0 26
+      t244 <- rdU contacts (30 * i243)
+      t245 <- rdU contacts ((30 * i243) + 1)
+      t246 <- rdU contacts ((30 * i243) + 12)
+      t247 <- rdU contacts ((30 * i243) + 13)
+      t248 <- rdU contacts ((30 * i243) + 14)
+      t249 <- rdU contacts ((30 * i243) + 15)
+      t250 <- rdU contacts ((30 * i243) + 16)
+      t251 <- rdU contacts ((30 * i243) + 17)
+      t252 <- rdU contacts ((30 * i243) + 18)
+      t253 <- rdU contacts ((30 * i243) + 19)
+      t254 <- rdU contacts ((30 * i243) + 4)
+      t255 <- rdU contacts ((30 * i243) + 5)
+      t256 <- rdU contacts ((30 * i243) + 6)
+      t257 <- rdU contacts ((30 * i243) + 7)
+      t258 <- rdU contacts ((30 * i243) + 8)
+      t259 <- rdU contacts ((30 * i243) + 9)
+      t260 <- rdU contacts ((30 * i243) + 10)
+      t261 <- rdU contacts ((30 * i243) + 11)
+      t262 <- rdU contacts ((30 * i243) + 26)
+      t263 <- rdU contacts ((30 * i243) + 24)
+      t264 <- rdU contacts ((30 * i243) + 25)
+      t265 <- rdU contacts ((30 * i243) + 22)
+      chkI vel (3 * (truncate t244)) 0 2
+      t266 <- rdU vel (3 * (truncate t244))
+      t267 <- rdU vel ((3 * (truncate t244)) + 1)
+      t268 <- rdU vel ((3 * (truncate t244)) + 2)
+      chkI scalars (6 * (truncate t244)) 1 3
+      t269 <- rdU scalars ((6 * (truncate t244)) + 1)
       v270 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t271 <- rdI vel (3 * (truncate t245))
-        t272 <- rdI vel ((3 * (truncate t245)) + 1)
-        t273 <- rdI vel ((3 * (truncate t245)) + 2)
-        t274 <- rdI scalars ((6 * (truncate t245)) + 1)
+        chkI vel (3 * (truncate t245)) 0 2
+        t271 <- rdU vel (3 * (truncate t245))
+        t272 <- rdU vel ((3 * (truncate t245)) + 1)
+        t273 <- rdU vel ((3 * (truncate t245)) + 2)
+        chkI scalars (6 * (truncate t245)) 1 1
+        t274 <- rdU scalars ((6 * (truncate t245)) + 1)
         setR v270 ((((t250 * t271) + (t251 * t272)) + (t252 * t273)) + (t253 * t274))
         pure ()
       else do
@@ -1036,43 +1139,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t280 = (if (t279 - t277) > 0 then t277 else t279)
       let !t281 = (if (t278 - t280) > 0 then t278 else t280)
       let !s282 = (if (1.0 - (abs (t281 - t281))) > 0 then t281 else 0.0)
-      wrI contacts ((30 * i243) + 25) s282
-      t283 <- rdI scalars ((6 * (truncate t244)) + 2)
-      t284 <- rdI scalars ((6 * (truncate t244)) + 3)
-      t285 <- rdI vel (3 * (truncate t244))
-      t286 <- rdI vel ((3 * (truncate t244)) + 1)
-      t287 <- rdI vel ((3 * (truncate t244)) + 2)
-      t288 <- rdI scalars ((6 * (truncate t244)) + 1)
-      wrI vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
-      wrI vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
-      wrI vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
-      wrI scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
+      wrU contacts ((30 * i243) + 25) s282
+      t283 <- rdU scalars ((6 * (truncate t244)) + 2)
+      t284 <- rdU scalars ((6 * (truncate t244)) + 3)
+      t285 <- rdU vel (3 * (truncate t244))
+      t286 <- rdU vel ((3 * (truncate t244)) + 1)
+      t287 <- rdU vel ((3 * (truncate t244)) + 2)
+      t288 <- rdU scalars ((6 * (truncate t244)) + 1)
+      wrU vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
+      wrU vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
+      wrU vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
+      wrU scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
       if (t245 + 0.5) > 0 then do
-        t289 <- rdI scalars ((6 * (truncate t245)) + 2)
-        t290 <- rdI scalars ((6 * (truncate t245)) + 3)
-        t291 <- rdI vel (3 * (truncate t245))
-        t292 <- rdI vel ((3 * (truncate t245)) + 1)
-        t293 <- rdI vel ((3 * (truncate t245)) + 2)
-        t294 <- rdI scalars ((6 * (truncate t245)) + 1)
-        wrI vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
-        wrI vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
-        wrI vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
-        wrI scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
+        chkI scalars (6 * (truncate t245)) 1 3
+        t289 <- rdU scalars ((6 * (truncate t245)) + 2)
+        t290 <- rdU scalars ((6 * (truncate t245)) + 3)
+        chkI vel (3 * (truncate t245)) 0 2
+        t291 <- rdU vel (3 * (truncate t245))
+        t292 <- rdU vel ((3 * (truncate t245)) + 1)
+        t293 <- rdU vel ((3 * (truncate t245)) + 2)
+        t294 <- rdU scalars ((6 * (truncate t245)) + 1)
+        wrU vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
+        wrU vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
+        wrU vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
+        wrU scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
         pure ()
       else do
         pure ()
-      t295 <- rdI contacts ((30 * i243) + 21)
-      t296 <- rdI contacts ((30 * i243) + 23)
-      t297 <- rdI vel (3 * (truncate t244))
-      t298 <- rdI vel ((3 * (truncate t244)) + 1)
-      t299 <- rdI vel ((3 * (truncate t244)) + 2)
-      t300 <- rdI scalars ((6 * (truncate t244)) + 1)
+      t295 <- rdU contacts ((30 * i243) + 21)
+      t296 <- rdU contacts ((30 * i243) + 23)
+      t297 <- rdU vel (3 * (truncate t244))
+      t298 <- rdU vel ((3 * (truncate t244)) + 1)
+      t299 <- rdU vel ((3 * (truncate t244)) + 2)
+      t300 <- rdU scalars ((6 * (truncate t244)) + 1)
       v301 <- newR 0.0
       if (t245 + 0.5) > 0 then do
-        t302 <- rdI vel (3 * (truncate t245))
-        t303 <- rdI vel ((3 * (truncate t245)) + 1)
-        t304 <- rdI vel ((3 * (truncate t245)) + 2)
-        t305 <- rdI scalars ((6 * (truncate t245)) + 1)
+        chkI vel (3 * (truncate t245)) 0 2
+        t302 <- rdU vel (3 * (truncate t245))
+        t303 <- rdU vel ((3 * (truncate t245)) + 1)
+        t304 <- rdU vel ((3 * (truncate t245)) + 2)
+        chkI scalars (6 * (truncate t245)) 1 1
+        t305 <- rdU scalars ((6 * (truncate t245)) + 1)
         setR v301 ((((t258 * t302) + (t259 * t303)) + (t260 * t304)) + (t261 * t305))
         pure ()
       else do
@@ -1082,73 +1189,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t308 = (t263 + ((t262 * (t296 - s307)) * t295))
       let !t309 = (if (negate t308) > 0 then 0.0 else t308)
       let !s310 = (if (1.0 - (abs (t309 - t309))) > 0 then t309 else 0.0)
-      wrI contacts ((30 * i243) + 24) s310
-      t311 <- rdI scalars ((6 * (truncate t244)) + 2)
-      t312 <- rdI scalars ((6 * (truncate t244)) + 3)
-      t313 <- rdI vel (3 * (truncate t244))
-      t314 <- rdI vel ((3 * (truncate t244)) + 1)
-      t315 <- rdI vel ((3 * (truncate t244)) + 2)
-      t316 <- rdI scalars ((6 * (truncate t244)) + 1)
-      wrI vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
-      wrI vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
-      wrI vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
-      wrI scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
+      wrU contacts ((30 * i243) + 24) s310
+      t311 <- rdU scalars ((6 * (truncate t244)) + 2)
+      t312 <- rdU scalars ((6 * (truncate t244)) + 3)
+      t313 <- rdU vel (3 * (truncate t244))
+      t314 <- rdU vel ((3 * (truncate t244)) + 1)
+      t315 <- rdU vel ((3 * (truncate t244)) + 2)
+      t316 <- rdU scalars ((6 * (truncate t244)) + 1)
+      wrU vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
+      wrU vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
+      wrU vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
+      wrU scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
       if (t245 + 0.5) > 0 then do
-        t317 <- rdI scalars ((6 * (truncate t245)) + 2)
-        t318 <- rdI scalars ((6 * (truncate t245)) + 3)
-        t319 <- rdI vel (3 * (truncate t245))
-        t320 <- rdI vel ((3 * (truncate t245)) + 1)
-        t321 <- rdI vel ((3 * (truncate t245)) + 2)
-        t322 <- rdI scalars ((6 * (truncate t245)) + 1)
-        wrI vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
-        wrI vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
-        wrI vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
-        wrI scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
+        chkI scalars (6 * (truncate t245)) 1 3
+        t317 <- rdU scalars ((6 * (truncate t245)) + 2)
+        t318 <- rdU scalars ((6 * (truncate t245)) + 3)
+        chkI vel (3 * (truncate t245)) 0 2
+        t319 <- rdU vel (3 * (truncate t245))
+        t320 <- rdU vel ((3 * (truncate t245)) + 1)
+        t321 <- rdU vel ((3 * (truncate t245)) + 2)
+        t322 <- rdU scalars ((6 * (truncate t245)) + 1)
+        wrU vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
+        wrU vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
+        wrU vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
+        wrU scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
         pure ()
       else do
         pure ()
       pure ()
-    t323 <- rdI mouse 0
+    t323 <- rdU mouse 0
     if t323 > 0 then do
-      t324 <- rdI mouse 1
-      t325 <- rdI scalars ((6 * (truncate t324)) + 2)
+      chkI mouse 0 1 1
+      t324 <- rdU mouse 1
+      chkI scalars (6 * (truncate t324)) 2 2
+      t325 <- rdU scalars ((6 * (truncate t324)) + 2)
       if t325 > 0 then do
-        t326 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t327 <- rdI params 0
-        t328 <- rdI pos (3 * (truncate t324))
-        t329 <- rdI pos ((3 * (truncate t324)) + 1)
-        t330 <- rdI pos ((3 * (truncate t324)) + 2)
-        t331 <- rdI normal (3 * (truncate t324))
-        t332 <- rdI normal ((3 * (truncate t324)) + 1)
-        t333 <- rdI normal ((3 * (truncate t324)) + 2)
-        t334 <- rdI axis (3 * (truncate t324))
-        t335 <- rdI axis ((3 * (truncate t324)) + 1)
-        t336 <- rdI axis ((3 * (truncate t324)) + 2)
+        chkI scalars (6 * (truncate t324)) 0 5
+        t326 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t327 <- rdU params 0
+        chkI pos (3 * (truncate t324)) 0 2
+        t328 <- rdU pos (3 * (truncate t324))
+        t329 <- rdU pos ((3 * (truncate t324)) + 1)
+        t330 <- rdU pos ((3 * (truncate t324)) + 2)
+        chkI normal (3 * (truncate t324)) 0 2
+        t331 <- rdU normal (3 * (truncate t324))
+        t332 <- rdU normal ((3 * (truncate t324)) + 1)
+        t333 <- rdU normal ((3 * (truncate t324)) + 2)
+        chkI axis (3 * (truncate t324)) 0 2
+        t334 <- rdU axis (3 * (truncate t324))
+        t335 <- rdU axis ((3 * (truncate t324)) + 1)
+        t336 <- rdU axis ((3 * (truncate t324)) + 2)
         let !s337 = ((t332 * t336) - (t333 * t335))
         let !s338 = ((t333 * t334) - (t331 * t336))
         let !s339 = ((t331 * t335) - (t332 * t334))
-        t340 <- rdI scalars (6 * (truncate t324))
-        t341 <- rdI scalars ((6 * (truncate t324)) + 5)
-        t342 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t343 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t344 <- rdI pos (3 * (truncate t324))
-        t345 <- rdI pos ((3 * (truncate t324)) + 1)
-        t346 <- rdI pos ((3 * (truncate t324)) + 2)
-        t347 <- rdI normal (3 * (truncate t324))
-        t348 <- rdI normal ((3 * (truncate t324)) + 1)
-        t349 <- rdI normal ((3 * (truncate t324)) + 2)
-        t350 <- rdI axis (3 * (truncate t324))
-        t351 <- rdI axis ((3 * (truncate t324)) + 1)
-        t352 <- rdI axis ((3 * (truncate t324)) + 2)
+        t340 <- rdU scalars (6 * (truncate t324))
+        t341 <- rdU scalars ((6 * (truncate t324)) + 5)
+        t342 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t343 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t344 <- rdU pos (3 * (truncate t324))
+        t345 <- rdU pos ((3 * (truncate t324)) + 1)
+        t346 <- rdU pos ((3 * (truncate t324)) + 2)
+        t347 <- rdU normal (3 * (truncate t324))
+        t348 <- rdU normal ((3 * (truncate t324)) + 1)
+        t349 <- rdU normal ((3 * (truncate t324)) + 2)
+        t350 <- rdU axis (3 * (truncate t324))
+        t351 <- rdU axis ((3 * (truncate t324)) + 1)
+        t352 <- rdU axis ((3 * (truncate t324)) + 2)
         let !s353 = ((t348 * t352) - (t349 * t351))
         let !s354 = ((t349 * t350) - (t347 * t352))
         let !s355 = ((t347 * t351) - (t348 * t350))
-        t356 <- rdI scalars (6 * (truncate t324))
-        t357 <- rdI scalars ((6 * (truncate t324)) + 5)
-        t358 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t359 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t360 <- rdI mouse 2
-        t361 <- rdI mouse 3
+        t356 <- rdU scalars (6 * (truncate t324))
+        t357 <- rdU scalars ((6 * (truncate t324)) + 5)
+        t358 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t359 <- rdU scalars ((6 * (truncate t324)) + 3)
+        chkI mouse 0 2 11
+        t360 <- rdU mouse 2
+        t361 <- rdU mouse 3
         let !t362 = (t360 / 4.0)
         let !t363 = (if (abs t362) > 0 then 1.0 else 0.0)
         let !t364 = (t356 + t361)
@@ -1223,12 +1339,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s433 = ((t363 * (t426 * (t432 * t427))) + (t367 * s417))
         let !s434 = ((t363 * (t426 * (t432 * t429))) + (t367 * s418))
         let !s435 = ((t363 * (t426 * (t432 * t430))) + (t367 * s419))
-        t436 <- rdI mouse 4
-        t437 <- rdI mouse 5
-        t438 <- rdI mouse 6
-        t439 <- rdI mouse 7
-        t440 <- rdI mouse 8
-        t441 <- rdI mouse 9
+        t436 <- rdU mouse 4
+        t437 <- rdU mouse 5
+        t438 <- rdU mouse 6
+        t439 <- rdU mouse 7
+        t440 <- rdU mouse 8
+        t441 <- rdU mouse 9
         let !t442 = (recip t325)
         let !t443 = (6.283185307179586 * t439)
         let !s444 = (recip (t327 * ((((2.0 * t442) * t440) * t443) + (t327 * ((t442 * t443) * t443)))))
@@ -1239,11 +1355,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s449 = (s423 + (negate t436))
         let !s450 = (s424 + (negate t437))
         let !s451 = (s425 + (negate t438))
-        t452 <- rdI mouse 10
-        t453 <- rdI vel (3 * (truncate t324))
-        t454 <- rdI vel ((3 * (truncate t324)) + 1)
-        t455 <- rdI vel ((3 * (truncate t324)) + 2)
-        t456 <- rdI scalars ((6 * (truncate t324)) + 1)
+        t452 <- rdU mouse 10
+        chkI vel (3 * (truncate t324)) 0 2
+        t453 <- rdU vel (3 * (truncate t324))
+        t454 <- rdU vel ((3 * (truncate t324)) + 1)
+        t455 <- rdU vel ((3 * (truncate t324)) + 2)
+        t456 <- rdU scalars ((6 * (truncate t324)) + 1)
         let !t457 = (t441 * t327)
         let !t458 = (negate t457)
         let !t459 = (((((s447 * t336) - (s448 * t335)) * t331) + (((s448 * t334) - (s446 * t336)) * t332)) + (((s446 * t335) - (s447 * t334)) * t333))
@@ -1251,38 +1368,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t461 = (if (t460 - t457) > 0 then t457 else t460)
         let !t462 = (if (t458 - t461) > 0 then t458 else t461)
         let !s463 = (if (1.0 - (abs (t462 - t462))) > 0 then t462 else 0.0)
-        wrI mouse 10 s463
-        t464 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t465 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t466 <- rdI vel (3 * (truncate t324))
-        t467 <- rdI vel ((3 * (truncate t324)) + 1)
-        t468 <- rdI vel ((3 * (truncate t324)) + 2)
-        t469 <- rdI scalars ((6 * (truncate t324)) + 1)
-        wrI vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
-        wrI vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
-        wrI vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
-        wrI scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
-        t470 <- rdI mouse 11
-        t471 <- rdI vel (3 * (truncate t324))
-        t472 <- rdI vel ((3 * (truncate t324)) + 1)
-        t473 <- rdI vel ((3 * (truncate t324)) + 2)
-        t474 <- rdI scalars ((6 * (truncate t324)) + 1)
+        wrU mouse 10 s463
+        t464 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t465 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t466 <- rdU vel (3 * (truncate t324))
+        t467 <- rdU vel ((3 * (truncate t324)) + 1)
+        t468 <- rdU vel ((3 * (truncate t324)) + 2)
+        t469 <- rdU scalars ((6 * (truncate t324)) + 1)
+        wrU vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
+        wrU vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
+        wrU vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
+        wrU scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
+        t470 <- rdU mouse 11
+        t471 <- rdU vel (3 * (truncate t324))
+        t472 <- rdU vel ((3 * (truncate t324)) + 1)
+        t473 <- rdU vel ((3 * (truncate t324)) + 2)
+        t474 <- rdU scalars ((6 * (truncate t324)) + 1)
         let !t475 = (((((s447 * s339) - (s448 * s338)) * t331) + (((s448 * s337) - (s446 * s339)) * t332)) + (((s446 * s338) - (s447 * s337)) * t333))
         let !t476 = (t470 + ((negate ((((((s337 * t471) + (s338 * t472)) + (s339 * t473)) + (t475 * t474)) + (s445 * (((s449 * s337) + (s450 * s338)) + (s451 * s339)))) + (s444 * t470))) / (((t325 * (((s337 * s337) + (s338 * s338)) + (s339 * s339))) + ((t326 * t475) * t475)) + s444)))
         let !t477 = (if (t476 - t457) > 0 then t457 else t476)
         let !t478 = (if (t458 - t477) > 0 then t458 else t477)
         let !s479 = (if (1.0 - (abs (t478 - t478))) > 0 then t478 else 0.0)
-        wrI mouse 11 s479
-        t480 <- rdI scalars ((6 * (truncate t324)) + 2)
-        t481 <- rdI scalars ((6 * (truncate t324)) + 3)
-        t482 <- rdI vel (3 * (truncate t324))
-        t483 <- rdI vel ((3 * (truncate t324)) + 1)
-        t484 <- rdI vel ((3 * (truncate t324)) + 2)
-        t485 <- rdI scalars ((6 * (truncate t324)) + 1)
-        wrI vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
-        wrI vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
-        wrI vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
-        wrI scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
+        wrU mouse 11 s479
+        t480 <- rdU scalars ((6 * (truncate t324)) + 2)
+        t481 <- rdU scalars ((6 * (truncate t324)) + 3)
+        t482 <- rdU vel (3 * (truncate t324))
+        t483 <- rdU vel ((3 * (truncate t324)) + 1)
+        t484 <- rdU vel ((3 * (truncate t324)) + 2)
+        t485 <- rdU scalars ((6 * (truncate t324)) + 1)
+        wrU vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
+        wrU vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
+        wrU vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
+        wrU scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
         pure ()
       else do
         pure ()
@@ -1290,51 +1407,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t486 <- rdI meta 0
+  t486 <- rdU meta 0
   loopI 0.0 t486 $ \i487 -> do
     let !d487 = fromIntegral i487 :: Double
-    wrI bodyPrev ((2 * i487) + 1) 0.0
+    chkI bodyPrev (2 * i487) 1 1
+    wrU bodyPrev ((2 * i487) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i488 -> do
     let !d488 = fromIntegral i488 :: Double
-    t489 <- rdI contacts ((30 * i488) + 2)
-    wrI prev (4 * i488) t489
-    t490 <- rdI contacts ((30 * i488) + 3)
-    wrI prev ((4 * i488) + 1) t490
-    t491 <- rdI contacts ((30 * i488) + 24)
-    wrI prev ((4 * i488) + 2) t491
-    t492 <- rdI contacts ((30 * i488) + 25)
-    wrI prev ((4 * i488) + 3) t492
-    t493 <- rdI bodyPrev ((2 * (truncate t489)) + 1)
+    chkI contacts (30 * i488) 2 25
+    t489 <- rdU contacts ((30 * i488) + 2)
+    chkI prev (4 * i488) 0 3
+    wrU prev (4 * i488) t489
+    t490 <- rdU contacts ((30 * i488) + 3)
+    wrU prev ((4 * i488) + 1) t490
+    t491 <- rdU contacts ((30 * i488) + 24)
+    wrU prev ((4 * i488) + 2) t491
+    t492 <- rdU contacts ((30 * i488) + 25)
+    wrU prev ((4 * i488) + 3) t492
+    chkI bodyPrev (2 * (truncate t489)) 1 1
+    t493 <- rdU bodyPrev ((2 * (truncate t489)) + 1)
     if (0.5 - t493) > 0 then do
-      wrI bodyPrev (2 * (truncate t489)) d488
+      chkI bodyPrev (2 * (truncate t489)) 0 0
+      wrU bodyPrev (2 * (truncate t489)) d488
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
+    wrU bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t4 + (t1 * t7))
     let !t19 = (if (abs t15) > 0 then 1.0 else 0.0)
@@ -1406,51 +1535,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t85 = (t12 + (t1 * t13))
     let !t86 = (1.0 - (abs ((((((((((((((s48 - s48) + t84) + (s50 - s50)) + (s71 - s71)) + (s72 - s72)) + (s73 - s73)) + (s80 - s80)) + (s81 - s81)) + (s82 - s82)) + (s51 - s51)) + (s52 - s52)) + (s53 - s53)) + (t85 - t85)) + t84)))
     if (if (t83 - t86) > 0 then t86 else t83) > 0 then do
-      wrI pos (3 * i2) s48
-      wrI pos ((3 * i2) + 1) s49
-      wrI pos ((3 * i2) + 2) s50
-      wrI vel (3 * i2) s71
-      wrI vel ((3 * i2) + 1) s72
-      wrI vel ((3 * i2) + 2) s73
-      wrI axis (3 * i2) s80
-      wrI axis ((3 * i2) + 1) s81
-      wrI axis ((3 * i2) + 2) s82
-      wrI normal (3 * i2) s51
-      wrI normal ((3 * i2) + 1) s52
-      wrI normal ((3 * i2) + 2) s53
-      wrI scalars (6 * i2) t85
+      wrU pos (3 * i2) s48
+      wrU pos ((3 * i2) + 1) s49
+      wrU pos ((3 * i2) + 2) s50
+      wrU vel (3 * i2) s71
+      wrU vel ((3 * i2) + 1) s72
+      wrU vel ((3 * i2) + 2) s73
+      wrU axis (3 * i2) s80
+      wrU axis ((3 * i2) + 1) s81
+      wrU axis ((3 * i2) + 2) s82
+      wrU normal (3 * i2) s51
+      wrU normal ((3 * i2) + 1) s52
+      wrU normal ((3 * i2) + 2) s53
+      wrU scalars (6 * i2) t85
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t87 <- rdI meta 1
-      wrI meta 1 (t87 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t87 <- rdU meta 1
+      wrU meta 1 (t87 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1459,7 +1596,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1501,9 +1639,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1533,9 +1672,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1565,9 +1705,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1597,9 +1738,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1624,18 +1766,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

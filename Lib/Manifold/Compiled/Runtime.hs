@@ -12,8 +12,9 @@
 module Manifold.Compiled.Runtime
   ( Arr
   , loopI
-  , rdI
-  , wrI
+  , chkI
+  , rdU
+  , wrU
   , NumRef
   , newR
   , getR
@@ -43,19 +44,39 @@ loopI lo hi body = go (truncate lo)
               | otherwise = pure ()
 {-# INLINE loopI #-}
 
-rdI :: Arr -> Int -> IO Double
-rdI = MV.read
-{-# INLINE rdI #-}
+-- | @chkI a base lo hi@: the printed step's check that @a@ holds indices
+-- @base + lo@ to @base + hi@, before it reads or writes them with 'rdU' and
+-- 'wrU' (see 'Manifold.Stage.Imp.arrayAccess': one check per row of an
+-- array instead of one per access).
+chkI :: Arr -> Int -> Int -> Int -> IO ()
+chkI a base lo hi
+  | base + lo >= 0 && base + hi < MV.length a = pure ()
+  | otherwise = outOfBounds a base lo hi
+{-# INLINE chkI #-}
 
-wrI :: Arr -> Int -> Double -> IO ()
-wrI a i !x = MV.write a i x
-{-# INLINE wrI #-}
+outOfBounds :: Arr -> Int -> Int -> Int -> IO ()
+outOfBounds a base lo hi = ioError $ userError $
+  "Manifold.Compiled: indices " ++ show (base + lo) ++ " to " ++ show (base + hi)
+  ++ " outside an array of " ++ show (MV.length a)
+{-# NOINLINE outOfBounds #-}
+
+rdU :: Arr -> Int -> IO Double
+rdU = MV.unsafeRead
+{-# INLINE rdU #-}
+
+wrU :: Arr -> Int -> Double -> IO ()
+wrU a i !x = MV.unsafeWrite a i x
+{-# INLINE wrU #-}
 
 -- | A mutable local (the printed @let@): one unboxed number.
 newtype NumRef = NumRef (MV.IOVector Double)
 
+-- (not 'MV.replicate': its fill loop costs more than the one write)
 newR :: Double -> IO NumRef
-newR !x = NumRef <$> MV.replicate 1 x
+newR !x = do
+  r <- MV.unsafeNew 1
+  MV.unsafeWrite r 0 x
+  pure (NumRef r)
 {-# INLINE newR #-}
 
 getR :: NumRef -> IO Double

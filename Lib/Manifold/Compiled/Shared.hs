@@ -11,22 +11,26 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
   let !s0 = (negate (a3 * a6))
   let !s1 = (negate (a4 * a7))
   let !s2 = (negate (a5 * a8))
-  t3 <- rdI pos (3 * (truncate a2))
-  t4 <- rdI pos ((3 * (truncate a2)) + 1)
-  t5 <- rdI pos ((3 * (truncate a2)) + 2)
-  t6 <- rdI normal (3 * (truncate a2))
-  t7 <- rdI normal ((3 * (truncate a2)) + 1)
-  t8 <- rdI normal ((3 * (truncate a2)) + 2)
-  t9 <- rdI axis (3 * (truncate a2))
-  t10 <- rdI axis ((3 * (truncate a2)) + 1)
-  t11 <- rdI axis ((3 * (truncate a2)) + 2)
+  chkI pos (3 * (truncate a2)) 0 2
+  t3 <- rdU pos (3 * (truncate a2))
+  t4 <- rdU pos ((3 * (truncate a2)) + 1)
+  t5 <- rdU pos ((3 * (truncate a2)) + 2)
+  chkI normal (3 * (truncate a2)) 0 2
+  t6 <- rdU normal (3 * (truncate a2))
+  t7 <- rdU normal ((3 * (truncate a2)) + 1)
+  t8 <- rdU normal ((3 * (truncate a2)) + 2)
+  chkI axis (3 * (truncate a2)) 0 2
+  t9 <- rdU axis (3 * (truncate a2))
+  t10 <- rdU axis ((3 * (truncate a2)) + 1)
+  t11 <- rdU axis ((3 * (truncate a2)) + 2)
   let !s12 = ((t7 * t11) - (t8 * t10))
   let !s13 = ((t8 * t9) - (t6 * t11))
   let !s14 = ((t6 * t10) - (t7 * t9))
-  t15 <- rdI scalars (6 * (truncate a2))
-  t16 <- rdI scalars ((6 * (truncate a2)) + 5)
-  t17 <- rdI scalars ((6 * (truncate a2)) + 2)
-  t18 <- rdI scalars ((6 * (truncate a2)) + 3)
+  chkI scalars (6 * (truncate a2)) 0 5
+  t15 <- rdU scalars (6 * (truncate a2))
+  t16 <- rdU scalars ((6 * (truncate a2)) + 5)
+  t17 <- rdU scalars ((6 * (truncate a2)) + 2)
+  t18 <- rdU scalars ((6 * (truncate a2)) + 3)
   v19 <- newR 0.0
   v20 <- newR 0.0
   v21 <- newR 0.0
@@ -36,9 +40,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
   v25 <- newR 0.0
   loopI 0.0 24.0 $ \i26 -> do
     let !d26 = fromIntegral i26 :: Double
-    t27 <- rdI verts (3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3))
-    t28 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) + 1)
-    t29 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) + 2)
+    chkI verts (3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) 0 2
+    t27 <- rdU verts (3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3))
+    t28 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) + 1)
+    t29 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) + 2)
     let !t30 = (((a3 * t27) + a6) + (negate t3))
     let !t31 = (((a4 * t28) + a7) + (negate t4))
     let !t32 = (((a5 * t29) + a8) + (negate t5))
@@ -49,12 +54,16 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       let !t36 = ((if s33 > 0 then (2.0 * (atan (s34 / ((sqrt ((s33 * s33) + (s34 * s34))) + s33)))) else (if (abs s34) > 0 then (2.0 * (atan (((sqrt ((s33 * s33) + (s34 * s34))) - s33) / s34))) else (if (negate s33) > 0 then 3.141592653589793 else 0.0))) - t15)
       let !t37 = (floorF ((t36 - (6.283185307179586 * (floorF (t36 / 6.283185307179586)))) / 0.2617993877991494))
       let !s38 = (if (t37 - 23.0) > 0 then 23.0 else t37)
-      t39 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3))
-      t40 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 1)
-      t41 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 2)
-      t42 <- rdI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)))
-      t43 <- rdI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      t44 <- rdI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      chkI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) 0 2
+      t39 <- rdU verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3))
+      t40 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 1)
+      t41 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 2)
+      chkI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0))) 0 0
+      t42 <- rdU verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)))
+      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
+      t43 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
+      t44 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 2.0))
       let !t45 = (negate t3)
       let !t46 = (negate t4)
       let !t47 = (negate t5)
@@ -94,22 +103,26 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
   t66 <- getR v23
   t67 <- getR v24
   t68 <- getR v25
-  t69 <- rdI pos (3 * (truncate a1))
-  t70 <- rdI pos ((3 * (truncate a1)) + 1)
-  t71 <- rdI pos ((3 * (truncate a1)) + 2)
-  t72 <- rdI normal (3 * (truncate a1))
-  t73 <- rdI normal ((3 * (truncate a1)) + 1)
-  t74 <- rdI normal ((3 * (truncate a1)) + 2)
-  t75 <- rdI axis (3 * (truncate a1))
-  t76 <- rdI axis ((3 * (truncate a1)) + 1)
-  t77 <- rdI axis ((3 * (truncate a1)) + 2)
+  chkI pos (3 * (truncate a1)) 0 2
+  t69 <- rdU pos (3 * (truncate a1))
+  t70 <- rdU pos ((3 * (truncate a1)) + 1)
+  t71 <- rdU pos ((3 * (truncate a1)) + 2)
+  chkI normal (3 * (truncate a1)) 0 2
+  t72 <- rdU normal (3 * (truncate a1))
+  t73 <- rdU normal ((3 * (truncate a1)) + 1)
+  t74 <- rdU normal ((3 * (truncate a1)) + 2)
+  chkI axis (3 * (truncate a1)) 0 2
+  t75 <- rdU axis (3 * (truncate a1))
+  t76 <- rdU axis ((3 * (truncate a1)) + 1)
+  t77 <- rdU axis ((3 * (truncate a1)) + 2)
   let !s78 = ((t73 * t77) - (t74 * t76))
   let !s79 = ((t74 * t75) - (t72 * t77))
   let !s80 = ((t72 * t76) - (t73 * t75))
-  t81 <- rdI scalars (6 * (truncate a1))
-  t82 <- rdI scalars ((6 * (truncate a1)) + 5)
-  t83 <- rdI scalars ((6 * (truncate a1)) + 2)
-  t84 <- rdI scalars ((6 * (truncate a1)) + 3)
+  chkI scalars (6 * (truncate a1)) 0 5
+  t81 <- rdU scalars (6 * (truncate a1))
+  t82 <- rdU scalars ((6 * (truncate a1)) + 5)
+  t83 <- rdU scalars ((6 * (truncate a1)) + 2)
+  t84 <- rdU scalars ((6 * (truncate a1)) + 3)
   v85 <- newR 0.0
   v86 <- newR 0.0
   v87 <- newR 0.0
@@ -119,9 +132,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
   v91 <- newR 0.0
   loopI 0.0 24.0 $ \i92 -> do
     let !d92 = fromIntegral i92 :: Double
-    t93 <- rdI verts (3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3))
-    t94 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 1)
-    t95 <- rdI verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 2)
+    chkI verts (3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) 0 2
+    t93 <- rdU verts (3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3))
+    t94 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 1)
+    t95 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 2)
     let !t96 = (((a3 * t93) + s0) + (negate t69))
     let !t97 = (((a4 * t94) + s1) + (negate t70))
     let !t98 = (((a5 * t95) + s2) + (negate t71))
@@ -132,12 +146,16 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       let !t102 = ((if s99 > 0 then (2.0 * (atan (s100 / ((sqrt ((s99 * s99) + (s100 * s100))) + s99)))) else (if (abs s100) > 0 then (2.0 * (atan (((sqrt ((s99 * s99) + (s100 * s100))) - s99) / s100))) else (if (negate s99) > 0 then 3.141592653589793 else 0.0))) - t81)
       let !t103 = (floorF ((t102 - (6.283185307179586 * (floorF (t102 / 6.283185307179586)))) / 0.2617993877991494))
       let !s104 = (if (t103 - 23.0) > 0 then 23.0 else t103)
-      t105 <- rdI verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3))
-      t106 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 1)
-      t107 <- rdI verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 2)
-      t108 <- rdI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)))
-      t109 <- rdI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      t110 <- rdI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      chkI verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) 0 2
+      t105 <- rdU verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3))
+      t106 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 1)
+      t107 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 2)
+      chkI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0))) 0 0
+      t108 <- rdU verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)))
+      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
+      t109 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
+      t110 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 2.0))
       let !t111 = (negate t69)
       let !t112 = (negate t70)
       let !t113 = (negate t71)
@@ -191,25 +209,30 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
     let !s145 = (if s135 > 0 then t132 else t66)
     let !s146 = (if s135 > 0 then t133 else t67)
     let !s147 = (if s135 > 0 then t134 else t68)
-    t148 <- rdI pos (3 * (truncate s138))
-    t149 <- rdI pos ((3 * (truncate s138)) + 1)
-    t150 <- rdI pos ((3 * (truncate s138)) + 2)
-    t151 <- rdI normal (3 * (truncate s138))
-    t152 <- rdI normal ((3 * (truncate s138)) + 1)
-    t153 <- rdI normal ((3 * (truncate s138)) + 2)
-    t154 <- rdI axis (3 * (truncate s138))
-    t155 <- rdI axis ((3 * (truncate s138)) + 1)
-    t156 <- rdI axis ((3 * (truncate s138)) + 2)
+    chkI pos (3 * (truncate s138)) 0 2
+    t148 <- rdU pos (3 * (truncate s138))
+    t149 <- rdU pos ((3 * (truncate s138)) + 1)
+    t150 <- rdU pos ((3 * (truncate s138)) + 2)
+    chkI normal (3 * (truncate s138)) 0 2
+    t151 <- rdU normal (3 * (truncate s138))
+    t152 <- rdU normal ((3 * (truncate s138)) + 1)
+    t153 <- rdU normal ((3 * (truncate s138)) + 2)
+    chkI axis (3 * (truncate s138)) 0 2
+    t154 <- rdU axis (3 * (truncate s138))
+    t155 <- rdU axis ((3 * (truncate s138)) + 1)
+    t156 <- rdU axis ((3 * (truncate s138)) + 2)
     let !s157 = ((t152 * t156) - (t153 * t155))
     let !s158 = ((t153 * t154) - (t151 * t156))
     let !s159 = ((t151 * t155) - (t152 * t154))
-    t160 <- rdI scalars (6 * (truncate s138))
-    t161 <- rdI scalars ((6 * (truncate s138)) + 5)
-    t162 <- rdI scalars ((6 * (truncate s138)) + 2)
-    t163 <- rdI scalars ((6 * (truncate s138)) + 3)
-    t164 <- rdI pos (3 * (truncate s137))
-    t165 <- rdI pos ((3 * (truncate s137)) + 1)
-    t166 <- rdI pos ((3 * (truncate s137)) + 2)
+    chkI scalars (6 * (truncate s138)) 0 5
+    t160 <- rdU scalars (6 * (truncate s138))
+    t161 <- rdU scalars ((6 * (truncate s138)) + 5)
+    t162 <- rdU scalars ((6 * (truncate s138)) + 2)
+    t163 <- rdU scalars ((6 * (truncate s138)) + 3)
+    chkI pos (3 * (truncate s137)) 0 2
+    t164 <- rdU pos (3 * (truncate s137))
+    t165 <- rdU pos ((3 * (truncate s137)) + 1)
+    t166 <- rdU pos ((3 * (truncate s137)) + 2)
     let !s167 = ((((((a3 * t164) + s139) + (negate t148)) * s142) + ((((a4 * t165) + s140) + (negate t149)) * s143)) + ((((a5 * t166) + s141) + (negate t150)) * s144))
     let !s168 = (if s167 > 0 then s142 else (negate s142))
     let !s169 = (if s167 > 0 then s143 else (negate s143))
@@ -223,9 +246,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
     v177 <- newR (-1.0)
     loopI 0.0 24.0 $ \i178 -> do
       let !d178 = fromIntegral i178 :: Double
-      t179 <- rdI verts (3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3))
-      t180 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 1)
-      t181 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) 0 2
+      t179 <- rdU verts (3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3))
+      t180 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 1)
+      t181 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 2)
       v182 <- newR (-1.0)
       let !t183 = (((a3 * t179) + s139) + (negate t148))
       let !t184 = (((a4 * t180) + s140) + (negate t149))
@@ -237,12 +261,16 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
         let !t189 = ((if s186 > 0 then (2.0 * (atan (s187 / ((sqrt ((s186 * s186) + (s187 * s187))) + s186)))) else (if (abs s187) > 0 then (2.0 * (atan (((sqrt ((s186 * s186) + (s187 * s187))) - s186) / s187))) else (if (negate s186) > 0 then 3.141592653589793 else 0.0))) - t160)
         let !t190 = (floorF ((t189 - (6.283185307179586 * (floorF (t189 / 6.283185307179586)))) / 0.2617993877991494))
         let !s191 = (if (t190 - 23.0) > 0 then 23.0 else t190)
-        t192 <- rdI verts (3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3))
-        t193 <- rdI verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 1)
-        t194 <- rdI verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 2)
-        t195 <- rdI verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)))
-        t196 <- rdI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-        t197 <- rdI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+        chkI verts (3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) 0 2
+        t192 <- rdU verts (3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3))
+        t193 <- rdU verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 1)
+        t194 <- rdU verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 2)
+        chkI verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0))) 0 0
+        t195 <- rdU verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)))
+        chkI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
+        t196 <- rdU verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+        chkI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
+        t197 <- rdU verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 2.0))
         let !t198 = (negate t148)
         let !t199 = (negate t149)
         let !t200 = (negate t150)
@@ -286,204 +314,217 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       pure ()
     t218 <- getR v176
     t219 <- getR v177
-    t220 <- rdI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3))
-    t221 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 1)
-    t222 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 2)
+    chkI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) 0 2
+    t220 <- rdU verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3))
+    t221 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 1)
+    t222 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 2)
     let !s223 = ((a3 * t220) + s139)
     let !s224 = ((a4 * t221) + s140)
     let !s225 = ((a5 * t222) + s141)
-    t226 <- rdI meta 2
-    t227 <- rdI meta 3
+    chkI meta 0 2 3
+    t226 <- rdU meta 2
+    t227 <- rdU meta 3
     if (((8.0 * (if (1.0 - t227) > 0 then 1.0 else t227)) - t226) - 0.5) > 0 then do
-      wrI meta 2 (t226 + 1.0)
-      t228 <- rdI pos (3 * (truncate s137))
-      t229 <- rdI pos ((3 * (truncate s137)) + 1)
-      t230 <- rdI pos ((3 * (truncate s137)) + 2)
-      t231 <- rdI normal (3 * (truncate s137))
-      t232 <- rdI normal ((3 * (truncate s137)) + 1)
-      t233 <- rdI normal ((3 * (truncate s137)) + 2)
-      t234 <- rdI axis (3 * (truncate s137))
-      t235 <- rdI axis ((3 * (truncate s137)) + 1)
-      t236 <- rdI axis ((3 * (truncate s137)) + 2)
+      wrU meta 2 (t226 + 1.0)
+      t228 <- rdU pos (3 * (truncate s137))
+      t229 <- rdU pos ((3 * (truncate s137)) + 1)
+      t230 <- rdU pos ((3 * (truncate s137)) + 2)
+      chkI normal (3 * (truncate s137)) 0 2
+      t231 <- rdU normal (3 * (truncate s137))
+      t232 <- rdU normal ((3 * (truncate s137)) + 1)
+      t233 <- rdU normal ((3 * (truncate s137)) + 2)
+      chkI axis (3 * (truncate s137)) 0 2
+      t234 <- rdU axis (3 * (truncate s137))
+      t235 <- rdU axis ((3 * (truncate s137)) + 1)
+      t236 <- rdU axis ((3 * (truncate s137)) + 2)
       let !s237 = ((t232 * t236) - (t233 * t235))
       let !s238 = ((t233 * t234) - (t231 * t236))
       let !s239 = ((t231 * t235) - (t232 * t234))
-      t240 <- rdI scalars (6 * (truncate s137))
-      t241 <- rdI scalars ((6 * (truncate s137)) + 5)
-      t242 <- rdI scalars ((6 * (truncate s137)) + 2)
-      t243 <- rdI scalars ((6 * (truncate s137)) + 3)
-      wrI contacts (30 * (truncate t226)) s137
-      wrI contacts ((30 * (truncate t226)) + 1) s138
-      wrI contacts ((30 * (truncate t226)) + 2) a1
-      wrI contacts ((30 * (truncate t226)) + 3) a0
+      chkI scalars (6 * (truncate s137)) 0 5
+      t240 <- rdU scalars (6 * (truncate s137))
+      t241 <- rdU scalars ((6 * (truncate s137)) + 5)
+      t242 <- rdU scalars ((6 * (truncate s137)) + 2)
+      t243 <- rdU scalars ((6 * (truncate s137)) + 3)
+      chkI contacts (30 * (truncate t226)) 0 29
+      wrU contacts (30 * (truncate t226)) s137
+      wrU contacts ((30 * (truncate t226)) + 1) s138
+      wrU contacts ((30 * (truncate t226)) + 2) a1
+      wrU contacts ((30 * (truncate t226)) + 3) a0
       let !t244 = (a3 * s168)
-      wrI contacts ((30 * (truncate t226)) + 4) (t244 + (negate ((((t231 * t244) + (t232 * (a4 * s169))) + (t233 * (a5 * s170))) * t231)))
+      wrU contacts ((30 * (truncate t226)) + 4) (t244 + (negate ((((t231 * t244) + (t232 * (a4 * s169))) + (t233 * (a5 * s170))) * t231)))
       let !t245 = (a4 * s169)
-      wrI contacts (((30 * (truncate t226)) + 4) + 1) (t245 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * (a5 * s170))) * t232)))
+      wrU contacts ((30 * (truncate t226)) + 5) (t245 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * (a5 * s170))) * t232)))
       let !t246 = (a5 * s170)
-      wrI contacts (((30 * (truncate t226)) + 4) + 2) (t246 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * t246)) * t233)))
+      wrU contacts ((30 * (truncate t226)) + 6) (t246 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * t246)) * t233)))
       let !t247 = (t221 + (negate t229))
       let !t248 = (t222 + (negate t230))
       let !t249 = (t220 + (negate t228))
-      wrI contacts ((30 * (truncate t226)) + 7) (((((t247 * t246) - (t248 * t245)) * t231) + (((t248 * t244) - (t249 * t246)) * t232)) + (((t249 * t245) - (t247 * t244)) * t233))
+      wrU contacts ((30 * (truncate t226)) + 7) (((((t247 * t246) - (t248 * t245)) * t231) + (((t248 * t244) - (t249 * t246)) * t232)) + (((t249 * t245) - (t247 * t244)) * t233))
       let !t250 = ((t232 * t246) - (t233 * t245))
-      wrI contacts ((30 * (truncate t226)) + 12) (t250 + (negate ((((t231 * t250) + (t232 * ((t233 * t244) - (t231 * t246)))) + (t233 * ((t231 * t245) - (t232 * t244)))) * t231)))
+      wrU contacts ((30 * (truncate t226)) + 12) (t250 + (negate ((((t231 * t250) + (t232 * ((t233 * t244) - (t231 * t246)))) + (t233 * ((t231 * t245) - (t232 * t244)))) * t231)))
       let !t251 = ((t233 * t244) - (t231 * t246))
-      wrI contacts (((30 * (truncate t226)) + 12) + 1) (t251 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * ((t231 * t245) - (t232 * t244)))) * t232)))
+      wrU contacts ((30 * (truncate t226)) + 13) (t251 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * ((t231 * t245) - (t232 * t244)))) * t232)))
       let !t252 = ((t231 * t245) - (t232 * t244))
-      wrI contacts (((30 * (truncate t226)) + 12) + 2) (t252 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * t252)) * t233)))
-      wrI contacts ((30 * (truncate t226)) + 15) (((((t247 * t252) - (t248 * t251)) * t231) + (((t248 * t250) - (t249 * t252)) * t232)) + (((t249 * t251) - (t247 * t250)) * t233))
-      wrI contacts ((30 * (truncate t226)) + 20) (if s167 > 0 then ((((s145 + (negate s223)) * s168) + ((s146 + (negate s224)) * s169)) + ((s147 + (negate s225)) * s170)) else s136)
-      wrI contacts ((30 * (truncate t226)) + 26) 1.0
-      wrI contacts ((30 * (truncate t226)) + 27) t220
-      wrI contacts (((30 * (truncate t226)) + 27) + 1) t221
-      wrI contacts (((30 * (truncate t226)) + 27) + 2) t222
+      wrU contacts ((30 * (truncate t226)) + 14) (t252 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * t252)) * t233)))
+      wrU contacts ((30 * (truncate t226)) + 15) (((((t247 * t252) - (t248 * t251)) * t231) + (((t248 * t250) - (t249 * t252)) * t232)) + (((t249 * t251) - (t247 * t250)) * t233))
+      wrU contacts ((30 * (truncate t226)) + 20) (if s167 > 0 then ((((s145 + (negate s223)) * s168) + ((s146 + (negate s224)) * s169)) + ((s147 + (negate s225)) * s170)) else s136)
+      wrU contacts ((30 * (truncate t226)) + 26) 1.0
+      wrU contacts ((30 * (truncate t226)) + 27) t220
+      wrU contacts ((30 * (truncate t226)) + 28) t221
+      wrU contacts ((30 * (truncate t226)) + 29) t222
       if (s138 + 0.5) > 0 then do
-        t253 <- rdI pos (3 * (truncate s138))
-        t254 <- rdI pos ((3 * (truncate s138)) + 1)
-        t255 <- rdI pos ((3 * (truncate s138)) + 2)
-        t256 <- rdI normal (3 * (truncate s138))
-        t257 <- rdI normal ((3 * (truncate s138)) + 1)
-        t258 <- rdI normal ((3 * (truncate s138)) + 2)
-        t259 <- rdI axis (3 * (truncate s138))
-        t260 <- rdI axis ((3 * (truncate s138)) + 1)
-        t261 <- rdI axis ((3 * (truncate s138)) + 2)
+        t253 <- rdU pos (3 * (truncate s138))
+        t254 <- rdU pos ((3 * (truncate s138)) + 1)
+        t255 <- rdU pos ((3 * (truncate s138)) + 2)
+        t256 <- rdU normal (3 * (truncate s138))
+        t257 <- rdU normal ((3 * (truncate s138)) + 1)
+        t258 <- rdU normal ((3 * (truncate s138)) + 2)
+        t259 <- rdU axis (3 * (truncate s138))
+        t260 <- rdU axis ((3 * (truncate s138)) + 1)
+        t261 <- rdU axis ((3 * (truncate s138)) + 2)
         let !s262 = ((t257 * t261) - (t258 * t260))
         let !s263 = ((t258 * t259) - (t256 * t261))
         let !s264 = ((t256 * t260) - (t257 * t259))
-        t265 <- rdI scalars (6 * (truncate s138))
-        t266 <- rdI scalars ((6 * (truncate s138)) + 5)
-        t267 <- rdI scalars ((6 * (truncate s138)) + 2)
-        t268 <- rdI scalars ((6 * (truncate s138)) + 3)
-        wrI contacts ((30 * (truncate t226)) + 8) (s168 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t256)))
-        wrI contacts (((30 * (truncate t226)) + 8) + 1) (s169 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t257)))
-        wrI contacts (((30 * (truncate t226)) + 8) + 2) (s170 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t258)))
+        t265 <- rdU scalars (6 * (truncate s138))
+        t266 <- rdU scalars ((6 * (truncate s138)) + 5)
+        t267 <- rdU scalars ((6 * (truncate s138)) + 2)
+        t268 <- rdU scalars ((6 * (truncate s138)) + 3)
+        wrU contacts ((30 * (truncate t226)) + 8) (s168 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t256)))
+        wrU contacts ((30 * (truncate t226)) + 9) (s169 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t257)))
+        wrU contacts ((30 * (truncate t226)) + 10) (s170 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t258)))
         let !t269 = (s224 + (negate t254))
         let !t270 = (s225 + (negate t255))
         let !t271 = (s223 + (negate t253))
-        wrI contacts ((30 * (truncate t226)) + 11) (((((t269 * s170) - (t270 * s169)) * t256) + (((t270 * s168) - (t271 * s170)) * t257)) + (((t271 * s169) - (t269 * s168)) * t258))
+        wrU contacts ((30 * (truncate t226)) + 11) (((((t269 * s170) - (t270 * s169)) * t256) + (((t270 * s168) - (t271 * s170)) * t257)) + (((t271 * s169) - (t269 * s168)) * t258))
         let !t272 = (a3 * t250)
-        wrI contacts ((30 * (truncate t226)) + 16) (t272 + (negate ((((t256 * t272) + (t257 * (a4 * t251))) + (t258 * (a5 * t252))) * t256)))
+        wrU contacts ((30 * (truncate t226)) + 16) (t272 + (negate ((((t256 * t272) + (t257 * (a4 * t251))) + (t258 * (a5 * t252))) * t256)))
         let !t273 = (a4 * t251)
-        wrI contacts (((30 * (truncate t226)) + 16) + 1) (t273 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * (a5 * t252))) * t257)))
+        wrU contacts ((30 * (truncate t226)) + 17) (t273 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * (a5 * t252))) * t257)))
         let !t274 = (a5 * t252)
-        wrI contacts (((30 * (truncate t226)) + 16) + 2) (t274 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * t274)) * t258)))
-        wrI contacts ((30 * (truncate t226)) + 19) (((((t269 * t274) - (t270 * t273)) * t256) + (((t270 * t272) - (t271 * t274)) * t257)) + (((t271 * t273) - (t269 * t272)) * t258))
+        wrU contacts ((30 * (truncate t226)) + 18) (t274 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * t274)) * t258)))
+        wrU contacts ((30 * (truncate t226)) + 19) (((((t269 * t274) - (t270 * t273)) * t256) + (((t270 * t272) - (t271 * t274)) * t257)) + (((t271 * t273) - (t269 * t272)) * t258))
         pure ()
       else do
-        wrI contacts ((30 * (truncate t226)) + 8) 0.0
-        wrI contacts (((30 * (truncate t226)) + 8) + 1) 0.0
-        wrI contacts (((30 * (truncate t226)) + 8) + 2) 0.0
-        wrI contacts ((30 * (truncate t226)) + 11) 0.0
-        wrI contacts ((30 * (truncate t226)) + 16) 0.0
-        wrI contacts (((30 * (truncate t226)) + 16) + 1) 0.0
-        wrI contacts (((30 * (truncate t226)) + 16) + 2) 0.0
-        wrI contacts ((30 * (truncate t226)) + 19) 0.0
+        wrU contacts ((30 * (truncate t226)) + 8) 0.0
+        wrU contacts ((30 * (truncate t226)) + 9) 0.0
+        wrU contacts ((30 * (truncate t226)) + 10) 0.0
+        wrU contacts ((30 * (truncate t226)) + 11) 0.0
+        wrU contacts ((30 * (truncate t226)) + 16) 0.0
+        wrU contacts ((30 * (truncate t226)) + 17) 0.0
+        wrU contacts ((30 * (truncate t226)) + 18) 0.0
+        wrU contacts ((30 * (truncate t226)) + 19) 0.0
         pure ()
       pure ()
     else do
-      t275 <- rdI meta 6
-      wrI meta 6 (t275 + 1.0)
+      chkI meta 0 6 6
+      t275 <- rdU meta 6
+      wrU meta 6 (t275 + 1.0)
       pure ()
     if (abs (t219 - t218)) > 0 then do
-      t276 <- rdI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3))
-      t277 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 1)
-      t278 <- rdI verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 2)
+      chkI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) 0 2
+      t276 <- rdU verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3))
+      t277 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 1)
+      t278 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 2)
       let !s279 = ((a3 * t276) + s139)
       let !s280 = ((a4 * t277) + s140)
       let !s281 = ((a5 * t278) + s141)
-      t282 <- rdI meta 2
-      t283 <- rdI meta 3
+      t282 <- rdU meta 2
+      t283 <- rdU meta 3
       if (((8.0 * (if (1.0 - t283) > 0 then 1.0 else t283)) - t282) - 0.5) > 0 then do
-        wrI meta 2 (t282 + 1.0)
-        t284 <- rdI pos (3 * (truncate s137))
-        t285 <- rdI pos ((3 * (truncate s137)) + 1)
-        t286 <- rdI pos ((3 * (truncate s137)) + 2)
-        t287 <- rdI normal (3 * (truncate s137))
-        t288 <- rdI normal ((3 * (truncate s137)) + 1)
-        t289 <- rdI normal ((3 * (truncate s137)) + 2)
-        t290 <- rdI axis (3 * (truncate s137))
-        t291 <- rdI axis ((3 * (truncate s137)) + 1)
-        t292 <- rdI axis ((3 * (truncate s137)) + 2)
+        wrU meta 2 (t282 + 1.0)
+        t284 <- rdU pos (3 * (truncate s137))
+        t285 <- rdU pos ((3 * (truncate s137)) + 1)
+        t286 <- rdU pos ((3 * (truncate s137)) + 2)
+        chkI normal (3 * (truncate s137)) 0 2
+        t287 <- rdU normal (3 * (truncate s137))
+        t288 <- rdU normal ((3 * (truncate s137)) + 1)
+        t289 <- rdU normal ((3 * (truncate s137)) + 2)
+        chkI axis (3 * (truncate s137)) 0 2
+        t290 <- rdU axis (3 * (truncate s137))
+        t291 <- rdU axis ((3 * (truncate s137)) + 1)
+        t292 <- rdU axis ((3 * (truncate s137)) + 2)
         let !s293 = ((t288 * t292) - (t289 * t291))
         let !s294 = ((t289 * t290) - (t287 * t292))
         let !s295 = ((t287 * t291) - (t288 * t290))
-        t296 <- rdI scalars (6 * (truncate s137))
-        t297 <- rdI scalars ((6 * (truncate s137)) + 5)
-        t298 <- rdI scalars ((6 * (truncate s137)) + 2)
-        t299 <- rdI scalars ((6 * (truncate s137)) + 3)
-        wrI contacts (30 * (truncate t282)) s137
-        wrI contacts ((30 * (truncate t282)) + 1) s138
-        wrI contacts ((30 * (truncate t282)) + 2) a1
-        wrI contacts ((30 * (truncate t282)) + 3) (a0 + 1.0)
+        chkI scalars (6 * (truncate s137)) 0 5
+        t296 <- rdU scalars (6 * (truncate s137))
+        t297 <- rdU scalars ((6 * (truncate s137)) + 5)
+        t298 <- rdU scalars ((6 * (truncate s137)) + 2)
+        t299 <- rdU scalars ((6 * (truncate s137)) + 3)
+        chkI contacts (30 * (truncate t282)) 0 29
+        wrU contacts (30 * (truncate t282)) s137
+        wrU contacts ((30 * (truncate t282)) + 1) s138
+        wrU contacts ((30 * (truncate t282)) + 2) a1
+        wrU contacts ((30 * (truncate t282)) + 3) (a0 + 1.0)
         let !t300 = (a3 * s168)
-        wrI contacts ((30 * (truncate t282)) + 4) (t300 + (negate ((((t287 * t300) + (t288 * (a4 * s169))) + (t289 * (a5 * s170))) * t287)))
+        wrU contacts ((30 * (truncate t282)) + 4) (t300 + (negate ((((t287 * t300) + (t288 * (a4 * s169))) + (t289 * (a5 * s170))) * t287)))
         let !t301 = (a4 * s169)
-        wrI contacts (((30 * (truncate t282)) + 4) + 1) (t301 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * (a5 * s170))) * t288)))
+        wrU contacts ((30 * (truncate t282)) + 5) (t301 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * (a5 * s170))) * t288)))
         let !t302 = (a5 * s170)
-        wrI contacts (((30 * (truncate t282)) + 4) + 2) (t302 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * t302)) * t289)))
+        wrU contacts ((30 * (truncate t282)) + 6) (t302 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * t302)) * t289)))
         let !t303 = (t277 + (negate t285))
         let !t304 = (t278 + (negate t286))
         let !t305 = (t276 + (negate t284))
-        wrI contacts ((30 * (truncate t282)) + 7) (((((t303 * t302) - (t304 * t301)) * t287) + (((t304 * t300) - (t305 * t302)) * t288)) + (((t305 * t301) - (t303 * t300)) * t289))
+        wrU contacts ((30 * (truncate t282)) + 7) (((((t303 * t302) - (t304 * t301)) * t287) + (((t304 * t300) - (t305 * t302)) * t288)) + (((t305 * t301) - (t303 * t300)) * t289))
         let !t306 = ((t288 * t302) - (t289 * t301))
-        wrI contacts ((30 * (truncate t282)) + 12) (t306 + (negate ((((t287 * t306) + (t288 * ((t289 * t300) - (t287 * t302)))) + (t289 * ((t287 * t301) - (t288 * t300)))) * t287)))
+        wrU contacts ((30 * (truncate t282)) + 12) (t306 + (negate ((((t287 * t306) + (t288 * ((t289 * t300) - (t287 * t302)))) + (t289 * ((t287 * t301) - (t288 * t300)))) * t287)))
         let !t307 = ((t289 * t300) - (t287 * t302))
-        wrI contacts (((30 * (truncate t282)) + 12) + 1) (t307 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * ((t287 * t301) - (t288 * t300)))) * t288)))
+        wrU contacts ((30 * (truncate t282)) + 13) (t307 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * ((t287 * t301) - (t288 * t300)))) * t288)))
         let !t308 = ((t287 * t301) - (t288 * t300))
-        wrI contacts (((30 * (truncate t282)) + 12) + 2) (t308 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * t308)) * t289)))
-        wrI contacts ((30 * (truncate t282)) + 15) (((((t303 * t308) - (t304 * t307)) * t287) + (((t304 * t306) - (t305 * t308)) * t288)) + (((t305 * t307) - (t303 * t306)) * t289))
-        wrI contacts ((30 * (truncate t282)) + 20) (if s167 > 0 then ((((s145 + (negate s279)) * s168) + ((s146 + (negate s280)) * s169)) + ((s147 + (negate s281)) * s170)) else s136)
-        wrI contacts ((30 * (truncate t282)) + 26) 1.0
-        wrI contacts ((30 * (truncate t282)) + 27) t276
-        wrI contacts (((30 * (truncate t282)) + 27) + 1) t277
-        wrI contacts (((30 * (truncate t282)) + 27) + 2) t278
+        wrU contacts ((30 * (truncate t282)) + 14) (t308 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * t308)) * t289)))
+        wrU contacts ((30 * (truncate t282)) + 15) (((((t303 * t308) - (t304 * t307)) * t287) + (((t304 * t306) - (t305 * t308)) * t288)) + (((t305 * t307) - (t303 * t306)) * t289))
+        wrU contacts ((30 * (truncate t282)) + 20) (if s167 > 0 then ((((s145 + (negate s279)) * s168) + ((s146 + (negate s280)) * s169)) + ((s147 + (negate s281)) * s170)) else s136)
+        wrU contacts ((30 * (truncate t282)) + 26) 1.0
+        wrU contacts ((30 * (truncate t282)) + 27) t276
+        wrU contacts ((30 * (truncate t282)) + 28) t277
+        wrU contacts ((30 * (truncate t282)) + 29) t278
         if (s138 + 0.5) > 0 then do
-          t309 <- rdI pos (3 * (truncate s138))
-          t310 <- rdI pos ((3 * (truncate s138)) + 1)
-          t311 <- rdI pos ((3 * (truncate s138)) + 2)
-          t312 <- rdI normal (3 * (truncate s138))
-          t313 <- rdI normal ((3 * (truncate s138)) + 1)
-          t314 <- rdI normal ((3 * (truncate s138)) + 2)
-          t315 <- rdI axis (3 * (truncate s138))
-          t316 <- rdI axis ((3 * (truncate s138)) + 1)
-          t317 <- rdI axis ((3 * (truncate s138)) + 2)
+          t309 <- rdU pos (3 * (truncate s138))
+          t310 <- rdU pos ((3 * (truncate s138)) + 1)
+          t311 <- rdU pos ((3 * (truncate s138)) + 2)
+          t312 <- rdU normal (3 * (truncate s138))
+          t313 <- rdU normal ((3 * (truncate s138)) + 1)
+          t314 <- rdU normal ((3 * (truncate s138)) + 2)
+          t315 <- rdU axis (3 * (truncate s138))
+          t316 <- rdU axis ((3 * (truncate s138)) + 1)
+          t317 <- rdU axis ((3 * (truncate s138)) + 2)
           let !s318 = ((t313 * t317) - (t314 * t316))
           let !s319 = ((t314 * t315) - (t312 * t317))
           let !s320 = ((t312 * t316) - (t313 * t315))
-          t321 <- rdI scalars (6 * (truncate s138))
-          t322 <- rdI scalars ((6 * (truncate s138)) + 5)
-          t323 <- rdI scalars ((6 * (truncate s138)) + 2)
-          t324 <- rdI scalars ((6 * (truncate s138)) + 3)
-          wrI contacts ((30 * (truncate t282)) + 8) (s168 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t312)))
-          wrI contacts (((30 * (truncate t282)) + 8) + 1) (s169 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t313)))
-          wrI contacts (((30 * (truncate t282)) + 8) + 2) (s170 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t314)))
+          t321 <- rdU scalars (6 * (truncate s138))
+          t322 <- rdU scalars ((6 * (truncate s138)) + 5)
+          t323 <- rdU scalars ((6 * (truncate s138)) + 2)
+          t324 <- rdU scalars ((6 * (truncate s138)) + 3)
+          wrU contacts ((30 * (truncate t282)) + 8) (s168 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t312)))
+          wrU contacts ((30 * (truncate t282)) + 9) (s169 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t313)))
+          wrU contacts ((30 * (truncate t282)) + 10) (s170 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t314)))
           let !t325 = (s280 + (negate t310))
           let !t326 = (s281 + (negate t311))
           let !t327 = (s279 + (negate t309))
-          wrI contacts ((30 * (truncate t282)) + 11) (((((t325 * s170) - (t326 * s169)) * t312) + (((t326 * s168) - (t327 * s170)) * t313)) + (((t327 * s169) - (t325 * s168)) * t314))
+          wrU contacts ((30 * (truncate t282)) + 11) (((((t325 * s170) - (t326 * s169)) * t312) + (((t326 * s168) - (t327 * s170)) * t313)) + (((t327 * s169) - (t325 * s168)) * t314))
           let !t328 = (a3 * t306)
-          wrI contacts ((30 * (truncate t282)) + 16) (t328 + (negate ((((t312 * t328) + (t313 * (a4 * t307))) + (t314 * (a5 * t308))) * t312)))
+          wrU contacts ((30 * (truncate t282)) + 16) (t328 + (negate ((((t312 * t328) + (t313 * (a4 * t307))) + (t314 * (a5 * t308))) * t312)))
           let !t329 = (a4 * t307)
-          wrI contacts (((30 * (truncate t282)) + 16) + 1) (t329 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * (a5 * t308))) * t313)))
+          wrU contacts ((30 * (truncate t282)) + 17) (t329 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * (a5 * t308))) * t313)))
           let !t330 = (a5 * t308)
-          wrI contacts (((30 * (truncate t282)) + 16) + 2) (t330 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * t330)) * t314)))
-          wrI contacts ((30 * (truncate t282)) + 19) (((((t325 * t330) - (t326 * t329)) * t312) + (((t326 * t328) - (t327 * t330)) * t313)) + (((t327 * t329) - (t325 * t328)) * t314))
+          wrU contacts ((30 * (truncate t282)) + 18) (t330 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * t330)) * t314)))
+          wrU contacts ((30 * (truncate t282)) + 19) (((((t325 * t330) - (t326 * t329)) * t312) + (((t326 * t328) - (t327 * t330)) * t313)) + (((t327 * t329) - (t325 * t328)) * t314))
           pure ()
         else do
-          wrI contacts ((30 * (truncate t282)) + 8) 0.0
-          wrI contacts (((30 * (truncate t282)) + 8) + 1) 0.0
-          wrI contacts (((30 * (truncate t282)) + 8) + 2) 0.0
-          wrI contacts ((30 * (truncate t282)) + 11) 0.0
-          wrI contacts ((30 * (truncate t282)) + 16) 0.0
-          wrI contacts (((30 * (truncate t282)) + 16) + 1) 0.0
-          wrI contacts (((30 * (truncate t282)) + 16) + 2) 0.0
-          wrI contacts ((30 * (truncate t282)) + 19) 0.0
+          wrU contacts ((30 * (truncate t282)) + 8) 0.0
+          wrU contacts ((30 * (truncate t282)) + 9) 0.0
+          wrU contacts ((30 * (truncate t282)) + 10) 0.0
+          wrU contacts ((30 * (truncate t282)) + 11) 0.0
+          wrU contacts ((30 * (truncate t282)) + 16) 0.0
+          wrU contacts ((30 * (truncate t282)) + 17) 0.0
+          wrU contacts ((30 * (truncate t282)) + 18) 0.0
+          wrU contacts ((30 * (truncate t282)) + 19) 0.0
           pure ()
         pure ()
       else do
-        t331 <- rdI meta 6
-        wrI meta 6 (t331 + 1.0)
+        chkI meta 0 6 6
+        t331 <- rdU meta 6
+        wrU meta 6 (t331 + 1.0)
         pure ()
       pure ()
     else do

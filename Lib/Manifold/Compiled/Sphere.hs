@@ -28,34 +28,41 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (t12 * (-4.0))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-4.0) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wrI vel (3 * i3) t15
-        wrI vel ((3 * i3) + 1) t16
-        wrI vel ((3 * i3) + 2) t17
+        wrU vel (3 * i3) t15
+        wrU vel ((3 * i3) + 1) t16
+        wrU vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rdI meta 1
-        wrI meta 1 (t18 + 1.0)
+        chkI meta 0 1 1
+        t18 <- rdU meta 1
+        wrU meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,12 +72,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -80,54 +89,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -143,19 +163,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -176,16 +202,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rdI verts (3 * (97 * i31))
-    t68 <- rdI verts ((3 * (97 * i31)) + 1)
-    t69 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t67 <- rdU verts (3 * (97 * i31))
+    t68 <- rdU verts ((3 * (97 * i31)) + 1)
+    t69 <- rdU verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
-      t75 <- rdI radii ((24 * i31) + i71)
+      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
+      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i71) 0 0
+      t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -204,27 +233,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v88 <- newR 0.0
       loopI 0.0 24.0 $ \i89 -> do
         let !d89 = fromIntegral i89 :: Double
-        t90 <- rdI radii ((24 * i31) + i89)
+        chkI radii ((24 * i31) + i89) 0 0
+        t90 <- rdU radii ((24 * i31) + i89)
         loopI 6.0 12.0 $ \i91 -> do
           let !d91 = fromIntegral i91 :: Double
           let !t92 = (d89 + d91)
-          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))) 0 0
+          t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
+            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
+            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
-              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
-              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
-              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
-              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
-              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
-              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
+              t102 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0)) 0 0
+              t103 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0)) 0 0
+              t104 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101))) 0 0
+              t105 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0)) 0 0
+              t106 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0)) 0 0
+              t107 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -264,12 +303,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
-                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
-                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
-                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
+                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
+                t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t149 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t150 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -320,89 +363,98 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s184 = (t183 * t179)
         let !s185 = (t183 * t180)
         let !s186 = (t183 * t181)
-        t187 <- rdI meta 2
-        t188 <- rdI meta 3
+        t187 <- rdU meta 2
+        t188 <- rdU meta 3
         if (((8.0 * (if (1.0 - t188) > 0 then 1.0 else t188)) - t187) - 0.5) > 0 then do
-          wrI meta 2 (t187 + 1.0)
-          t189 <- rdI pos (3 * i31)
-          t190 <- rdI pos ((3 * i31) + 1)
-          t191 <- rdI pos ((3 * i31) + 2)
-          t192 <- rdI normal (3 * i31)
-          t193 <- rdI normal ((3 * i31) + 1)
-          t194 <- rdI normal ((3 * i31) + 2)
-          t195 <- rdI axis (3 * i31)
-          t196 <- rdI axis ((3 * i31) + 1)
-          t197 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t187 + 1.0)
+          t189 <- rdU pos (3 * i31)
+          t190 <- rdU pos ((3 * i31) + 1)
+          t191 <- rdU pos ((3 * i31) + 2)
+          chkI normal (3 * i31) 0 2
+          t192 <- rdU normal (3 * i31)
+          t193 <- rdU normal ((3 * i31) + 1)
+          t194 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t195 <- rdU axis (3 * i31)
+          t196 <- rdU axis ((3 * i31) + 1)
+          t197 <- rdU axis ((3 * i31) + 2)
           let !s198 = ((t193 * t197) - (t194 * t196))
           let !s199 = ((t194 * t195) - (t192 * t197))
           let !s200 = ((t192 * t196) - (t193 * t195))
-          t201 <- rdI scalars (6 * i31)
-          t202 <- rdI scalars ((6 * i31) + 5)
-          t203 <- rdI scalars ((6 * i31) + 2)
-          t204 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t187)) d31
-          wrI contacts ((30 * (truncate t187)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t187)) + 2) d31
-          wrI contacts ((30 * (truncate t187)) + 3) 12.0
-          wrI contacts ((30 * (truncate t187)) + 4) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
-          wrI contacts (((30 * (truncate t187)) + 4) + 1) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
-          wrI contacts (((30 * (truncate t187)) + 4) + 2) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
-          wrI contacts ((30 * (truncate t187)) + 7) 0.0
-          wrI contacts ((30 * (truncate t187)) + 12) 0.0
-          wrI contacts (((30 * (truncate t187)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t187)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t187)) + 15) 0.0
-          wrI contacts ((30 * (truncate t187)) + 20) t162
-          wrI contacts ((30 * (truncate t187)) + 26) 0.6
-          wrI contacts ((30 * (truncate t187)) + 27) t163
-          wrI contacts (((30 * (truncate t187)) + 27) + 1) t164
-          wrI contacts (((30 * (truncate t187)) + 27) + 2) t165
+          chkI scalars (6 * i31) 0 0
+          t201 <- rdU scalars (6 * i31)
+          t202 <- rdU scalars ((6 * i31) + 5)
+          t203 <- rdU scalars ((6 * i31) + 2)
+          t204 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t187)) 0 29
+          wrU contacts (30 * (truncate t187)) d31
+          wrU contacts ((30 * (truncate t187)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t187)) + 2) d31
+          wrU contacts ((30 * (truncate t187)) + 3) 12.0
+          wrU contacts ((30 * (truncate t187)) + 4) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
+          wrU contacts ((30 * (truncate t187)) + 5) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
+          wrU contacts ((30 * (truncate t187)) + 6) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
+          wrU contacts ((30 * (truncate t187)) + 7) 0.0
+          wrU contacts ((30 * (truncate t187)) + 12) 0.0
+          wrU contacts ((30 * (truncate t187)) + 13) 0.0
+          wrU contacts ((30 * (truncate t187)) + 14) 0.0
+          wrU contacts ((30 * (truncate t187)) + 15) 0.0
+          wrU contacts ((30 * (truncate t187)) + 20) t162
+          wrU contacts ((30 * (truncate t187)) + 26) 0.6
+          wrU contacts ((30 * (truncate t187)) + 27) t163
+          wrU contacts ((30 * (truncate t187)) + 28) t164
+          wrU contacts ((30 * (truncate t187)) + 29) t165
           if (-0.5) > 0 then do
-            t205 <- rdI pos (-3)
-            t206 <- rdI pos (-2)
-            t207 <- rdI pos (-1)
-            t208 <- rdI normal (-3)
-            t209 <- rdI normal (-2)
-            t210 <- rdI normal (-1)
-            t211 <- rdI axis (-3)
-            t212 <- rdI axis (-2)
-            t213 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t205 <- rdU pos (-3)
+            t206 <- rdU pos (-2)
+            t207 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t208 <- rdU normal (-3)
+            t209 <- rdU normal (-2)
+            t210 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t211 <- rdU axis (-3)
+            t212 <- rdU axis (-2)
+            t213 <- rdU axis (-1)
             let !s214 = ((t209 * t213) - (t210 * t212))
             let !s215 = ((t210 * t211) - (t208 * t213))
             let !s216 = ((t208 * t212) - (t209 * t211))
-            t217 <- rdI scalars (-6)
-            t218 <- rdI scalars (-1)
-            t219 <- rdI scalars (-4)
-            t220 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t187)) + 8) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
-            wrI contacts (((30 * (truncate t187)) + 8) + 1) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
-            wrI contacts (((30 * (truncate t187)) + 8) + 2) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
+            chkI scalars 0 (-6) (-1)
+            t217 <- rdU scalars (-6)
+            t218 <- rdU scalars (-1)
+            t219 <- rdU scalars (-4)
+            t220 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t187)) + 8) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
+            wrU contacts ((30 * (truncate t187)) + 9) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
+            wrU contacts ((30 * (truncate t187)) + 10) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
             let !t221 = (t164 + (negate t206))
             let !t222 = (t165 + (negate t207))
             let !t223 = (t163 + (negate t205))
-            wrI contacts ((30 * (truncate t187)) + 11) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
+            wrU contacts ((30 * (truncate t187)) + 11) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
             let !t224 = ((t193 * s186) - (t194 * s185))
-            wrI contacts ((30 * (truncate t187)) + 16) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
+            wrU contacts ((30 * (truncate t187)) + 16) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
             let !t225 = ((t194 * s184) - (t192 * s186))
-            wrI contacts (((30 * (truncate t187)) + 16) + 1) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
+            wrU contacts ((30 * (truncate t187)) + 17) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
             let !t226 = ((t192 * s185) - (t193 * s184))
-            wrI contacts (((30 * (truncate t187)) + 16) + 2) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
-            wrI contacts ((30 * (truncate t187)) + 19) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
+            wrU contacts ((30 * (truncate t187)) + 18) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
+            wrU contacts ((30 * (truncate t187)) + 19) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t187)) + 8) 0.0
-            wrI contacts (((30 * (truncate t187)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t187)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t187)) + 11) 0.0
-            wrI contacts ((30 * (truncate t187)) + 16) 0.0
-            wrI contacts (((30 * (truncate t187)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t187)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t187)) + 19) 0.0
+            wrU contacts ((30 * (truncate t187)) + 8) 0.0
+            wrU contacts ((30 * (truncate t187)) + 9) 0.0
+            wrU contacts ((30 * (truncate t187)) + 10) 0.0
+            wrU contacts ((30 * (truncate t187)) + 11) 0.0
+            wrU contacts ((30 * (truncate t187)) + 16) 0.0
+            wrU contacts ((30 * (truncate t187)) + 17) 0.0
+            wrU contacts ((30 * (truncate t187)) + 18) 0.0
+            wrU contacts ((30 * (truncate t187)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t227 <- rdI meta 6
-          wrI meta 6 (t227 + 1.0)
+          chkI meta 0 6 6
+          t227 <- rdU meta 6
+          wrU meta 6 (t227 + 1.0)
           pure ()
         pure ()
       else do
@@ -415,44 +467,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -460,12 +517,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -473,20 +531,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -497,19 +558,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -517,98 +581,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -847,12 +923,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s373 = ((t139 * (t355 * (t372 * t368))) + (t176 * s316))
       let !s374 = ((t139 * (t355 * (t372 * t369))) + (t176 * s317))
       let !s375 = ((t139 * (t355 * (t372 * t370))) + (t176 * s318))
-      t376 <- rdI mouse 4
-      t377 <- rdI mouse 5
-      t378 <- rdI mouse 6
-      t379 <- rdI mouse 7
-      t380 <- rdI mouse 8
-      t381 <- rdI mouse 9
+      t376 <- rdU mouse 4
+      t377 <- rdU mouse 5
+      t378 <- rdU mouse 6
+      t379 <- rdU mouse 7
+      t380 <- rdU mouse 8
+      t381 <- rdU mouse 9
       let !t382 = (recip t101)
       let !t383 = (6.283185307179586 * t379)
       let !s384 = (recip (t103 * ((((2.0 * t382) * t380) * t383) + (t103 * ((t382 * t383) * t383)))))
@@ -863,28 +939,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s389 = (s352 + (negate t376))
       let !s390 = (s353 + (negate t377))
       let !s391 = (s354 + (negate t378))
-      t392 <- rdI mouse 10
-      t393 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t394 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t395 <- rdI vel (3 * (truncate t100))
-      t396 <- rdI vel ((3 * (truncate t100)) + 1)
-      t397 <- rdI vel ((3 * (truncate t100)) + 2)
-      t398 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t395 + ((t393 * t392) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t396 + ((t393 * t392) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t397 + ((t393 * t392) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t398 + ((t394 * t392) * (((((s387 * t112) - (s388 * t111)) * t107) + (((s388 * t110) - (s386 * t112)) * t108)) + (((s386 * t111) - (s387 * t110)) * t109))))
-      t399 <- rdI mouse 11
-      t400 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t401 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t402 <- rdI vel (3 * (truncate t100))
-      t403 <- rdI vel ((3 * (truncate t100)) + 1)
-      t404 <- rdI vel ((3 * (truncate t100)) + 2)
-      t405 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t402 + ((t400 * t399) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t403 + ((t400 * t399) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t404 + ((t400 * t399) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t405 + ((t401 * t399) * (((((s387 * s115) - (s388 * s114)) * t107) + (((s388 * s113) - (s386 * s115)) * t108)) + (((s386 * s114) - (s387 * s113)) * t109))))
+      t392 <- rdU mouse 10
+      t393 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t394 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t395 <- rdU vel (3 * (truncate t100))
+      t396 <- rdU vel ((3 * (truncate t100)) + 1)
+      t397 <- rdU vel ((3 * (truncate t100)) + 2)
+      t398 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t395 + ((t393 * t392) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t396 + ((t393 * t392) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t397 + ((t393 * t392) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t398 + ((t394 * t392) * (((((s387 * t112) - (s388 * t111)) * t107) + (((s388 * t110) - (s386 * t112)) * t108)) + (((s386 * t111) - (s387 * t110)) * t109))))
+      t399 <- rdU mouse 11
+      t400 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t401 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t402 <- rdU vel (3 * (truncate t100))
+      t403 <- rdU vel ((3 * (truncate t100)) + 1)
+      t404 <- rdU vel ((3 * (truncate t100)) + 2)
+      t405 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t402 + ((t400 * t399) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t403 + ((t400 * t399) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t404 + ((t400 * t399) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t405 + ((t401 * t399) * (((((s387 * s115) - (s388 * s114)) * t107) + (((s388 * s113) - (s386 * s115)) * t108)) + (((s386 * s114) - (s387 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -895,38 +972,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d406 = fromIntegral i406 :: Double
     loopI 0.0 t9 $ \i407 -> do
       let !d407 = fromIntegral i407 :: Double
-      t408 <- rdI contacts (30 * i407)
-      t409 <- rdI contacts ((30 * i407) + 1)
-      t410 <- rdI contacts ((30 * i407) + 12)
-      t411 <- rdI contacts (((30 * i407) + 12) + 1)
-      t412 <- rdI contacts (((30 * i407) + 12) + 2)
-      t413 <- rdI contacts ((30 * i407) + 15)
-      t414 <- rdI contacts ((30 * i407) + 16)
-      t415 <- rdI contacts (((30 * i407) + 16) + 1)
-      t416 <- rdI contacts (((30 * i407) + 16) + 2)
-      t417 <- rdI contacts ((30 * i407) + 19)
-      t418 <- rdI contacts ((30 * i407) + 4)
-      t419 <- rdI contacts (((30 * i407) + 4) + 1)
-      t420 <- rdI contacts (((30 * i407) + 4) + 2)
-      t421 <- rdI contacts ((30 * i407) + 7)
-      t422 <- rdI contacts ((30 * i407) + 8)
-      t423 <- rdI contacts (((30 * i407) + 8) + 1)
-      t424 <- rdI contacts (((30 * i407) + 8) + 2)
-      t425 <- rdI contacts ((30 * i407) + 11)
-      t426 <- rdI contacts ((30 * i407) + 26)
-      t427 <- rdI contacts ((30 * i407) + 24)
-      t428 <- rdI contacts ((30 * i407) + 25)
-      t429 <- rdI contacts ((30 * i407) + 22)
-      t430 <- rdI vel (3 * (truncate t408))
-      t431 <- rdI vel ((3 * (truncate t408)) + 1)
-      t432 <- rdI vel ((3 * (truncate t408)) + 2)
-      t433 <- rdI scalars ((6 * (truncate t408)) + 1)
+      chkI contacts (30 * i407) 0 26
+      t408 <- rdU contacts (30 * i407)
+      t409 <- rdU contacts ((30 * i407) + 1)
+      t410 <- rdU contacts ((30 * i407) + 12)
+      t411 <- rdU contacts ((30 * i407) + 13)
+      t412 <- rdU contacts ((30 * i407) + 14)
+      t413 <- rdU contacts ((30 * i407) + 15)
+      t414 <- rdU contacts ((30 * i407) + 16)
+      t415 <- rdU contacts ((30 * i407) + 17)
+      t416 <- rdU contacts ((30 * i407) + 18)
+      t417 <- rdU contacts ((30 * i407) + 19)
+      t418 <- rdU contacts ((30 * i407) + 4)
+      t419 <- rdU contacts ((30 * i407) + 5)
+      t420 <- rdU contacts ((30 * i407) + 6)
+      t421 <- rdU contacts ((30 * i407) + 7)
+      t422 <- rdU contacts ((30 * i407) + 8)
+      t423 <- rdU contacts ((30 * i407) + 9)
+      t424 <- rdU contacts ((30 * i407) + 10)
+      t425 <- rdU contacts ((30 * i407) + 11)
+      t426 <- rdU contacts ((30 * i407) + 26)
+      t427 <- rdU contacts ((30 * i407) + 24)
+      t428 <- rdU contacts ((30 * i407) + 25)
+      t429 <- rdU contacts ((30 * i407) + 22)
+      chkI vel (3 * (truncate t408)) 0 2
+      t430 <- rdU vel (3 * (truncate t408))
+      t431 <- rdU vel ((3 * (truncate t408)) + 1)
+      t432 <- rdU vel ((3 * (truncate t408)) + 2)
+      chkI scalars (6 * (truncate t408)) 1 3
+      t433 <- rdU scalars ((6 * (truncate t408)) + 1)
       v434 <- newR 0.0
       if (t409 + 0.5) > 0 then do
-        t435 <- rdI vel (3 * (truncate t409))
-        t436 <- rdI vel ((3 * (truncate t409)) + 1)
-        t437 <- rdI vel ((3 * (truncate t409)) + 2)
-        t438 <- rdI scalars ((6 * (truncate t409)) + 1)
+        chkI vel (3 * (truncate t409)) 0 2
+        t435 <- rdU vel (3 * (truncate t409))
+        t436 <- rdU vel ((3 * (truncate t409)) + 1)
+        t437 <- rdU vel ((3 * (truncate t409)) + 2)
+        chkI scalars (6 * (truncate t409)) 1 1
+        t438 <- rdU scalars ((6 * (truncate t409)) + 1)
         setR v434 ((((t414 * t435) + (t415 * t436)) + (t416 * t437)) + (t417 * t438))
         pure ()
       else do
@@ -939,43 +1021,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t444 = (if (t443 - t441) > 0 then t441 else t443)
       let !t445 = (if (t442 - t444) > 0 then t442 else t444)
       let !s446 = (if (1.0 - (abs (t445 - t445))) > 0 then t445 else 0.0)
-      wrI contacts ((30 * i407) + 25) s446
-      t447 <- rdI scalars ((6 * (truncate t408)) + 2)
-      t448 <- rdI scalars ((6 * (truncate t408)) + 3)
-      t449 <- rdI vel (3 * (truncate t408))
-      t450 <- rdI vel ((3 * (truncate t408)) + 1)
-      t451 <- rdI vel ((3 * (truncate t408)) + 2)
-      t452 <- rdI scalars ((6 * (truncate t408)) + 1)
-      wrI vel (3 * (truncate t408)) (t449 + ((t447 * (s446 - t428)) * t410))
-      wrI vel ((3 * (truncate t408)) + 1) (t450 + ((t447 * (s446 - t428)) * t411))
-      wrI vel ((3 * (truncate t408)) + 2) (t451 + ((t447 * (s446 - t428)) * t412))
-      wrI scalars ((6 * (truncate t408)) + 1) (t452 + ((t448 * (s446 - t428)) * t413))
+      wrU contacts ((30 * i407) + 25) s446
+      t447 <- rdU scalars ((6 * (truncate t408)) + 2)
+      t448 <- rdU scalars ((6 * (truncate t408)) + 3)
+      t449 <- rdU vel (3 * (truncate t408))
+      t450 <- rdU vel ((3 * (truncate t408)) + 1)
+      t451 <- rdU vel ((3 * (truncate t408)) + 2)
+      t452 <- rdU scalars ((6 * (truncate t408)) + 1)
+      wrU vel (3 * (truncate t408)) (t449 + ((t447 * (s446 - t428)) * t410))
+      wrU vel ((3 * (truncate t408)) + 1) (t450 + ((t447 * (s446 - t428)) * t411))
+      wrU vel ((3 * (truncate t408)) + 2) (t451 + ((t447 * (s446 - t428)) * t412))
+      wrU scalars ((6 * (truncate t408)) + 1) (t452 + ((t448 * (s446 - t428)) * t413))
       if (t409 + 0.5) > 0 then do
-        t453 <- rdI scalars ((6 * (truncate t409)) + 2)
-        t454 <- rdI scalars ((6 * (truncate t409)) + 3)
-        t455 <- rdI vel (3 * (truncate t409))
-        t456 <- rdI vel ((3 * (truncate t409)) + 1)
-        t457 <- rdI vel ((3 * (truncate t409)) + 2)
-        t458 <- rdI scalars ((6 * (truncate t409)) + 1)
-        wrI vel (3 * (truncate t409)) (t455 + ((t453 * (negate (s446 - t428))) * t414))
-        wrI vel ((3 * (truncate t409)) + 1) (t456 + ((t453 * (negate (s446 - t428))) * t415))
-        wrI vel ((3 * (truncate t409)) + 2) (t457 + ((t453 * (negate (s446 - t428))) * t416))
-        wrI scalars ((6 * (truncate t409)) + 1) (t458 + ((t454 * (negate (s446 - t428))) * t417))
+        chkI scalars (6 * (truncate t409)) 1 3
+        t453 <- rdU scalars ((6 * (truncate t409)) + 2)
+        t454 <- rdU scalars ((6 * (truncate t409)) + 3)
+        chkI vel (3 * (truncate t409)) 0 2
+        t455 <- rdU vel (3 * (truncate t409))
+        t456 <- rdU vel ((3 * (truncate t409)) + 1)
+        t457 <- rdU vel ((3 * (truncate t409)) + 2)
+        t458 <- rdU scalars ((6 * (truncate t409)) + 1)
+        wrU vel (3 * (truncate t409)) (t455 + ((t453 * (negate (s446 - t428))) * t414))
+        wrU vel ((3 * (truncate t409)) + 1) (t456 + ((t453 * (negate (s446 - t428))) * t415))
+        wrU vel ((3 * (truncate t409)) + 2) (t457 + ((t453 * (negate (s446 - t428))) * t416))
+        wrU scalars ((6 * (truncate t409)) + 1) (t458 + ((t454 * (negate (s446 - t428))) * t417))
         pure ()
       else do
         pure ()
-      t459 <- rdI contacts ((30 * i407) + 21)
-      t460 <- rdI contacts ((30 * i407) + 23)
-      t461 <- rdI vel (3 * (truncate t408))
-      t462 <- rdI vel ((3 * (truncate t408)) + 1)
-      t463 <- rdI vel ((3 * (truncate t408)) + 2)
-      t464 <- rdI scalars ((6 * (truncate t408)) + 1)
+      t459 <- rdU contacts ((30 * i407) + 21)
+      t460 <- rdU contacts ((30 * i407) + 23)
+      t461 <- rdU vel (3 * (truncate t408))
+      t462 <- rdU vel ((3 * (truncate t408)) + 1)
+      t463 <- rdU vel ((3 * (truncate t408)) + 2)
+      t464 <- rdU scalars ((6 * (truncate t408)) + 1)
       v465 <- newR 0.0
       if (t409 + 0.5) > 0 then do
-        t466 <- rdI vel (3 * (truncate t409))
-        t467 <- rdI vel ((3 * (truncate t409)) + 1)
-        t468 <- rdI vel ((3 * (truncate t409)) + 2)
-        t469 <- rdI scalars ((6 * (truncate t409)) + 1)
+        chkI vel (3 * (truncate t409)) 0 2
+        t466 <- rdU vel (3 * (truncate t409))
+        t467 <- rdU vel ((3 * (truncate t409)) + 1)
+        t468 <- rdU vel ((3 * (truncate t409)) + 2)
+        chkI scalars (6 * (truncate t409)) 1 1
+        t469 <- rdU scalars ((6 * (truncate t409)) + 1)
         setR v465 ((((t422 * t466) + (t423 * t467)) + (t424 * t468)) + (t425 * t469))
         pure ()
       else do
@@ -985,73 +1071,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t472 = (t427 + ((t426 * (t460 - s471)) * t459))
       let !t473 = (if (negate t472) > 0 then 0.0 else t472)
       let !s474 = (if (1.0 - (abs (t473 - t473))) > 0 then t473 else 0.0)
-      wrI contacts ((30 * i407) + 24) s474
-      t475 <- rdI scalars ((6 * (truncate t408)) + 2)
-      t476 <- rdI scalars ((6 * (truncate t408)) + 3)
-      t477 <- rdI vel (3 * (truncate t408))
-      t478 <- rdI vel ((3 * (truncate t408)) + 1)
-      t479 <- rdI vel ((3 * (truncate t408)) + 2)
-      t480 <- rdI scalars ((6 * (truncate t408)) + 1)
-      wrI vel (3 * (truncate t408)) (t477 + ((t475 * (s474 - t427)) * t418))
-      wrI vel ((3 * (truncate t408)) + 1) (t478 + ((t475 * (s474 - t427)) * t419))
-      wrI vel ((3 * (truncate t408)) + 2) (t479 + ((t475 * (s474 - t427)) * t420))
-      wrI scalars ((6 * (truncate t408)) + 1) (t480 + ((t476 * (s474 - t427)) * t421))
+      wrU contacts ((30 * i407) + 24) s474
+      t475 <- rdU scalars ((6 * (truncate t408)) + 2)
+      t476 <- rdU scalars ((6 * (truncate t408)) + 3)
+      t477 <- rdU vel (3 * (truncate t408))
+      t478 <- rdU vel ((3 * (truncate t408)) + 1)
+      t479 <- rdU vel ((3 * (truncate t408)) + 2)
+      t480 <- rdU scalars ((6 * (truncate t408)) + 1)
+      wrU vel (3 * (truncate t408)) (t477 + ((t475 * (s474 - t427)) * t418))
+      wrU vel ((3 * (truncate t408)) + 1) (t478 + ((t475 * (s474 - t427)) * t419))
+      wrU vel ((3 * (truncate t408)) + 2) (t479 + ((t475 * (s474 - t427)) * t420))
+      wrU scalars ((6 * (truncate t408)) + 1) (t480 + ((t476 * (s474 - t427)) * t421))
       if (t409 + 0.5) > 0 then do
-        t481 <- rdI scalars ((6 * (truncate t409)) + 2)
-        t482 <- rdI scalars ((6 * (truncate t409)) + 3)
-        t483 <- rdI vel (3 * (truncate t409))
-        t484 <- rdI vel ((3 * (truncate t409)) + 1)
-        t485 <- rdI vel ((3 * (truncate t409)) + 2)
-        t486 <- rdI scalars ((6 * (truncate t409)) + 1)
-        wrI vel (3 * (truncate t409)) (t483 + ((t481 * (negate (s474 - t427))) * t422))
-        wrI vel ((3 * (truncate t409)) + 1) (t484 + ((t481 * (negate (s474 - t427))) * t423))
-        wrI vel ((3 * (truncate t409)) + 2) (t485 + ((t481 * (negate (s474 - t427))) * t424))
-        wrI scalars ((6 * (truncate t409)) + 1) (t486 + ((t482 * (negate (s474 - t427))) * t425))
+        chkI scalars (6 * (truncate t409)) 1 3
+        t481 <- rdU scalars ((6 * (truncate t409)) + 2)
+        t482 <- rdU scalars ((6 * (truncate t409)) + 3)
+        chkI vel (3 * (truncate t409)) 0 2
+        t483 <- rdU vel (3 * (truncate t409))
+        t484 <- rdU vel ((3 * (truncate t409)) + 1)
+        t485 <- rdU vel ((3 * (truncate t409)) + 2)
+        t486 <- rdU scalars ((6 * (truncate t409)) + 1)
+        wrU vel (3 * (truncate t409)) (t483 + ((t481 * (negate (s474 - t427))) * t422))
+        wrU vel ((3 * (truncate t409)) + 1) (t484 + ((t481 * (negate (s474 - t427))) * t423))
+        wrU vel ((3 * (truncate t409)) + 2) (t485 + ((t481 * (negate (s474 - t427))) * t424))
+        wrU scalars ((6 * (truncate t409)) + 1) (t486 + ((t482 * (negate (s474 - t427))) * t425))
         pure ()
       else do
         pure ()
       pure ()
-    t487 <- rdI mouse 0
+    t487 <- rdU mouse 0
     if t487 > 0 then do
-      t488 <- rdI mouse 1
-      t489 <- rdI scalars ((6 * (truncate t488)) + 2)
+      chkI mouse 0 1 1
+      t488 <- rdU mouse 1
+      chkI scalars (6 * (truncate t488)) 2 2
+      t489 <- rdU scalars ((6 * (truncate t488)) + 2)
       if t489 > 0 then do
-        t490 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t491 <- rdI params 0
-        t492 <- rdI pos (3 * (truncate t488))
-        t493 <- rdI pos ((3 * (truncate t488)) + 1)
-        t494 <- rdI pos ((3 * (truncate t488)) + 2)
-        t495 <- rdI normal (3 * (truncate t488))
-        t496 <- rdI normal ((3 * (truncate t488)) + 1)
-        t497 <- rdI normal ((3 * (truncate t488)) + 2)
-        t498 <- rdI axis (3 * (truncate t488))
-        t499 <- rdI axis ((3 * (truncate t488)) + 1)
-        t500 <- rdI axis ((3 * (truncate t488)) + 2)
+        chkI scalars (6 * (truncate t488)) 0 5
+        t490 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t491 <- rdU params 0
+        chkI pos (3 * (truncate t488)) 0 2
+        t492 <- rdU pos (3 * (truncate t488))
+        t493 <- rdU pos ((3 * (truncate t488)) + 1)
+        t494 <- rdU pos ((3 * (truncate t488)) + 2)
+        chkI normal (3 * (truncate t488)) 0 2
+        t495 <- rdU normal (3 * (truncate t488))
+        t496 <- rdU normal ((3 * (truncate t488)) + 1)
+        t497 <- rdU normal ((3 * (truncate t488)) + 2)
+        chkI axis (3 * (truncate t488)) 0 2
+        t498 <- rdU axis (3 * (truncate t488))
+        t499 <- rdU axis ((3 * (truncate t488)) + 1)
+        t500 <- rdU axis ((3 * (truncate t488)) + 2)
         let !s501 = ((t496 * t500) - (t497 * t499))
         let !s502 = ((t497 * t498) - (t495 * t500))
         let !s503 = ((t495 * t499) - (t496 * t498))
-        t504 <- rdI scalars (6 * (truncate t488))
-        t505 <- rdI scalars ((6 * (truncate t488)) + 5)
-        t506 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t507 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t508 <- rdI pos (3 * (truncate t488))
-        t509 <- rdI pos ((3 * (truncate t488)) + 1)
-        t510 <- rdI pos ((3 * (truncate t488)) + 2)
-        t511 <- rdI normal (3 * (truncate t488))
-        t512 <- rdI normal ((3 * (truncate t488)) + 1)
-        t513 <- rdI normal ((3 * (truncate t488)) + 2)
-        t514 <- rdI axis (3 * (truncate t488))
-        t515 <- rdI axis ((3 * (truncate t488)) + 1)
-        t516 <- rdI axis ((3 * (truncate t488)) + 2)
+        t504 <- rdU scalars (6 * (truncate t488))
+        t505 <- rdU scalars ((6 * (truncate t488)) + 5)
+        t506 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t507 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t508 <- rdU pos (3 * (truncate t488))
+        t509 <- rdU pos ((3 * (truncate t488)) + 1)
+        t510 <- rdU pos ((3 * (truncate t488)) + 2)
+        t511 <- rdU normal (3 * (truncate t488))
+        t512 <- rdU normal ((3 * (truncate t488)) + 1)
+        t513 <- rdU normal ((3 * (truncate t488)) + 2)
+        t514 <- rdU axis (3 * (truncate t488))
+        t515 <- rdU axis ((3 * (truncate t488)) + 1)
+        t516 <- rdU axis ((3 * (truncate t488)) + 2)
         let !s517 = ((t512 * t516) - (t513 * t515))
         let !s518 = ((t513 * t514) - (t511 * t516))
         let !s519 = ((t511 * t515) - (t512 * t514))
-        t520 <- rdI scalars (6 * (truncate t488))
-        t521 <- rdI scalars ((6 * (truncate t488)) + 5)
-        t522 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t523 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t524 <- rdI mouse 2
-        t525 <- rdI mouse 3
+        t520 <- rdU scalars (6 * (truncate t488))
+        t521 <- rdU scalars ((6 * (truncate t488)) + 5)
+        t522 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t523 <- rdU scalars ((6 * (truncate t488)) + 3)
+        chkI mouse 0 2 11
+        t524 <- rdU mouse 2
+        t525 <- rdU mouse 3
         let !t526 = (t524 / 4.0)
         let !t527 = (if (abs t526) > 0 then 1.0 else 0.0)
         let !t528 = (t520 + t525)
@@ -1290,12 +1385,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s761 = ((t527 * (t743 * (t760 * t756))) + (t564 * s704))
         let !s762 = ((t527 * (t743 * (t760 * t757))) + (t564 * s705))
         let !s763 = ((t527 * (t743 * (t760 * t758))) + (t564 * s706))
-        t764 <- rdI mouse 4
-        t765 <- rdI mouse 5
-        t766 <- rdI mouse 6
-        t767 <- rdI mouse 7
-        t768 <- rdI mouse 8
-        t769 <- rdI mouse 9
+        t764 <- rdU mouse 4
+        t765 <- rdU mouse 5
+        t766 <- rdU mouse 6
+        t767 <- rdU mouse 7
+        t768 <- rdU mouse 8
+        t769 <- rdU mouse 9
         let !t770 = (recip t489)
         let !t771 = (6.283185307179586 * t767)
         let !s772 = (recip (t491 * ((((2.0 * t770) * t768) * t771) + (t491 * ((t770 * t771) * t771)))))
@@ -1306,11 +1401,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s777 = (s740 + (negate t764))
         let !s778 = (s741 + (negate t765))
         let !s779 = (s742 + (negate t766))
-        t780 <- rdI mouse 10
-        t781 <- rdI vel (3 * (truncate t488))
-        t782 <- rdI vel ((3 * (truncate t488)) + 1)
-        t783 <- rdI vel ((3 * (truncate t488)) + 2)
-        t784 <- rdI scalars ((6 * (truncate t488)) + 1)
+        t780 <- rdU mouse 10
+        chkI vel (3 * (truncate t488)) 0 2
+        t781 <- rdU vel (3 * (truncate t488))
+        t782 <- rdU vel ((3 * (truncate t488)) + 1)
+        t783 <- rdU vel ((3 * (truncate t488)) + 2)
+        t784 <- rdU scalars ((6 * (truncate t488)) + 1)
         let !t785 = (t769 * t491)
         let !t786 = (negate t785)
         let !t787 = (((((s775 * t500) - (s776 * t499)) * t495) + (((s776 * t498) - (s774 * t500)) * t496)) + (((s774 * t499) - (s775 * t498)) * t497))
@@ -1318,38 +1414,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t789 = (if (t788 - t785) > 0 then t785 else t788)
         let !t790 = (if (t786 - t789) > 0 then t786 else t789)
         let !s791 = (if (1.0 - (abs (t790 - t790))) > 0 then t790 else 0.0)
-        wrI mouse 10 s791
-        t792 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t793 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t794 <- rdI vel (3 * (truncate t488))
-        t795 <- rdI vel ((3 * (truncate t488)) + 1)
-        t796 <- rdI vel ((3 * (truncate t488)) + 2)
-        t797 <- rdI scalars ((6 * (truncate t488)) + 1)
-        wrI vel (3 * (truncate t488)) (t794 + ((t792 * (s791 - t780)) * t498))
-        wrI vel ((3 * (truncate t488)) + 1) (t795 + ((t792 * (s791 - t780)) * t499))
-        wrI vel ((3 * (truncate t488)) + 2) (t796 + ((t792 * (s791 - t780)) * t500))
-        wrI scalars ((6 * (truncate t488)) + 1) (t797 + ((t793 * (s791 - t780)) * t787))
-        t798 <- rdI mouse 11
-        t799 <- rdI vel (3 * (truncate t488))
-        t800 <- rdI vel ((3 * (truncate t488)) + 1)
-        t801 <- rdI vel ((3 * (truncate t488)) + 2)
-        t802 <- rdI scalars ((6 * (truncate t488)) + 1)
+        wrU mouse 10 s791
+        t792 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t793 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t794 <- rdU vel (3 * (truncate t488))
+        t795 <- rdU vel ((3 * (truncate t488)) + 1)
+        t796 <- rdU vel ((3 * (truncate t488)) + 2)
+        t797 <- rdU scalars ((6 * (truncate t488)) + 1)
+        wrU vel (3 * (truncate t488)) (t794 + ((t792 * (s791 - t780)) * t498))
+        wrU vel ((3 * (truncate t488)) + 1) (t795 + ((t792 * (s791 - t780)) * t499))
+        wrU vel ((3 * (truncate t488)) + 2) (t796 + ((t792 * (s791 - t780)) * t500))
+        wrU scalars ((6 * (truncate t488)) + 1) (t797 + ((t793 * (s791 - t780)) * t787))
+        t798 <- rdU mouse 11
+        t799 <- rdU vel (3 * (truncate t488))
+        t800 <- rdU vel ((3 * (truncate t488)) + 1)
+        t801 <- rdU vel ((3 * (truncate t488)) + 2)
+        t802 <- rdU scalars ((6 * (truncate t488)) + 1)
         let !t803 = (((((s775 * s503) - (s776 * s502)) * t495) + (((s776 * s501) - (s774 * s503)) * t496)) + (((s774 * s502) - (s775 * s501)) * t497))
         let !t804 = (t798 + ((negate ((((((s501 * t799) + (s502 * t800)) + (s503 * t801)) + (t803 * t802)) + (s773 * (((s777 * s501) + (s778 * s502)) + (s779 * s503)))) + (s772 * t798))) / (((t489 * (((s501 * s501) + (s502 * s502)) + (s503 * s503))) + ((t490 * t803) * t803)) + s772)))
         let !t805 = (if (t804 - t785) > 0 then t785 else t804)
         let !t806 = (if (t786 - t805) > 0 then t786 else t805)
         let !s807 = (if (1.0 - (abs (t806 - t806))) > 0 then t806 else 0.0)
-        wrI mouse 11 s807
-        t808 <- rdI scalars ((6 * (truncate t488)) + 2)
-        t809 <- rdI scalars ((6 * (truncate t488)) + 3)
-        t810 <- rdI vel (3 * (truncate t488))
-        t811 <- rdI vel ((3 * (truncate t488)) + 1)
-        t812 <- rdI vel ((3 * (truncate t488)) + 2)
-        t813 <- rdI scalars ((6 * (truncate t488)) + 1)
-        wrI vel (3 * (truncate t488)) (t810 + ((t808 * (s807 - t798)) * s501))
-        wrI vel ((3 * (truncate t488)) + 1) (t811 + ((t808 * (s807 - t798)) * s502))
-        wrI vel ((3 * (truncate t488)) + 2) (t812 + ((t808 * (s807 - t798)) * s503))
-        wrI scalars ((6 * (truncate t488)) + 1) (t813 + ((t809 * (s807 - t798)) * t803))
+        wrU mouse 11 s807
+        t808 <- rdU scalars ((6 * (truncate t488)) + 2)
+        t809 <- rdU scalars ((6 * (truncate t488)) + 3)
+        t810 <- rdU vel (3 * (truncate t488))
+        t811 <- rdU vel ((3 * (truncate t488)) + 1)
+        t812 <- rdU vel ((3 * (truncate t488)) + 2)
+        t813 <- rdU scalars ((6 * (truncate t488)) + 1)
+        wrU vel (3 * (truncate t488)) (t810 + ((t808 * (s807 - t798)) * s501))
+        wrU vel ((3 * (truncate t488)) + 1) (t811 + ((t808 * (s807 - t798)) * s502))
+        wrU vel ((3 * (truncate t488)) + 2) (t812 + ((t808 * (s807 - t798)) * s503))
+        wrU scalars ((6 * (truncate t488)) + 1) (t813 + ((t809 * (s807 - t798)) * t803))
         pure ()
       else do
         pure ()
@@ -1357,51 +1453,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t814 <- rdI meta 0
+  t814 <- rdU meta 0
   loopI 0.0 t814 $ \i815 -> do
     let !d815 = fromIntegral i815 :: Double
-    wrI bodyPrev ((2 * i815) + 1) 0.0
+    chkI bodyPrev (2 * i815) 1 1
+    wrU bodyPrev ((2 * i815) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i816 -> do
     let !d816 = fromIntegral i816 :: Double
-    t817 <- rdI contacts ((30 * i816) + 2)
-    wrI prev (4 * i816) t817
-    t818 <- rdI contacts ((30 * i816) + 3)
-    wrI prev ((4 * i816) + 1) t818
-    t819 <- rdI contacts ((30 * i816) + 24)
-    wrI prev ((4 * i816) + 2) t819
-    t820 <- rdI contacts ((30 * i816) + 25)
-    wrI prev ((4 * i816) + 3) t820
-    t821 <- rdI bodyPrev ((2 * (truncate t817)) + 1)
+    chkI contacts (30 * i816) 2 25
+    t817 <- rdU contacts ((30 * i816) + 2)
+    chkI prev (4 * i816) 0 3
+    wrU prev (4 * i816) t817
+    t818 <- rdU contacts ((30 * i816) + 3)
+    wrU prev ((4 * i816) + 1) t818
+    t819 <- rdU contacts ((30 * i816) + 24)
+    wrU prev ((4 * i816) + 2) t819
+    t820 <- rdU contacts ((30 * i816) + 25)
+    wrU prev ((4 * i816) + 3) t820
+    chkI bodyPrev (2 * (truncate t817)) 1 1
+    t821 <- rdU bodyPrev ((2 * (truncate t817)) + 1)
     if (0.5 - t821) > 0 then do
-      wrI bodyPrev (2 * (truncate t817)) d816
+      chkI bodyPrev (2 * (truncate t817)) 0 0
+      wrU bodyPrev (2 * (truncate t817)) d816
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t817)) + 1) (t821 + 1.0)
+    wrU bodyPrev ((2 * (truncate t817)) + 1) (t821 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t4 + (t1 * t7))
@@ -1512,51 +1620,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t124 = (t12 + (t1 * t13))
     let !t125 = (1.0 - (abs ((((((((((((((s71 - s71) + (s72 - s72)) + (s73 - s73)) + (s110 - s110)) + (s111 - s111)) + (s112 - s112)) + (s119 - s119)) + (s120 - s120)) + (s121 - s121)) + (s84 - s84)) + (s85 - s85)) + (s86 - s86)) + (t124 - t124)) + (s122 - s122))))
     if (if (t123 - t125) > 0 then t125 else t123) > 0 then do
-      wrI pos (3 * i2) s71
-      wrI pos ((3 * i2) + 1) s72
-      wrI pos ((3 * i2) + 2) s73
-      wrI vel (3 * i2) s110
-      wrI vel ((3 * i2) + 1) s111
-      wrI vel ((3 * i2) + 2) s112
-      wrI axis (3 * i2) s119
-      wrI axis ((3 * i2) + 1) s120
-      wrI axis ((3 * i2) + 2) s121
-      wrI normal (3 * i2) s84
-      wrI normal ((3 * i2) + 1) s85
-      wrI normal ((3 * i2) + 2) s86
-      wrI scalars (6 * i2) t124
+      wrU pos (3 * i2) s71
+      wrU pos ((3 * i2) + 1) s72
+      wrU pos ((3 * i2) + 2) s73
+      wrU vel (3 * i2) s110
+      wrU vel ((3 * i2) + 1) s111
+      wrU vel ((3 * i2) + 2) s112
+      wrU axis (3 * i2) s119
+      wrU axis ((3 * i2) + 1) s120
+      wrU axis ((3 * i2) + 2) s121
+      wrU normal (3 * i2) s84
+      wrU normal ((3 * i2) + 1) s85
+      wrU normal ((3 * i2) + 2) s86
+      wrU scalars (6 * i2) t124
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t126 <- rdI meta 1
-      wrI meta 1 (t126 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t126 <- rdU meta 1
+      wrU meta 1 (t126 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1565,7 +1681,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1629,9 +1746,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s79 = ((t28 * t65) + (t53 * t8))
         let !s80 = ((t28 * t66) + (t53 * t9))
         let !s81 = ((t28 * t68) + (t53 * t10))
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t82 = (s54 + (s27 * s76))
         let !t83 = (s55 + (s27 * s77))
         let !t84 = (s56 + (s27 * s78))
@@ -1683,9 +1801,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s130 = ((t28 * t116) + (t53 * s79))
         let !s131 = ((t28 * t117) + (t53 * s80))
         let !s132 = ((t28 * t119) + (t53 * s81))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
         let !t133 = (s106 + (s27 * s127))
         let !t134 = (s107 + (s27 * s128))
         let !t135 = (s108 + (s27 * s129))
@@ -1737,9 +1856,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = ((t28 * t167) + (t53 * s130))
         let !s182 = ((t28 * t168) + (t53 * s131))
         let !s183 = ((t28 * t170) + (t53 * s132))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
         let !t184 = (s157 + (s27 * s178))
         let !t185 = (s158 + (s27 * s179))
         let !t186 = (s159 + (s27 * s180))
@@ -1791,9 +1911,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s232 = ((t28 * t218) + (t53 * s181))
         let !s233 = ((t28 * t219) + (t53 * s182))
         let !s234 = ((t28 * t221) + (t53 * s183))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
         pure ()
       else do
         let !t235 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1829,18 +1950,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s265 = (if t264 > 0 then t261 else t2)
         let !s266 = (if t264 > 0 then t262 else t3)
         let !s267 = (if t264 > 0 then t263 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
         pure ()
       pure ()
     pure ()

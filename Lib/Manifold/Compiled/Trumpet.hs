@@ -28,34 +28,41 @@ applyTo f w = case toList w of
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
-  t2 <- rdI params 1
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 1
+  t1 <- rdU params 0
+  t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    t4 <- rdI scalars ((6 * i3) + 2)
+    chkI scalars (6 * i3) 2 2
+    t4 <- rdU scalars ((6 * i3) + 2)
     if (t4 * t2) > 0 then do
-      t5 <- rdI pos (3 * i3)
-      t6 <- rdI pos ((3 * i3) + 1)
-      t7 <- rdI pos ((3 * i3) + 2)
-      t8 <- rdI vel (3 * i3)
-      t9 <- rdI vel ((3 * i3) + 1)
-      t10 <- rdI vel ((3 * i3) + 2)
-      t11 <- rdI normal (3 * i3)
-      t12 <- rdI normal ((3 * i3) + 1)
-      t13 <- rdI normal ((3 * i3) + 2)
+      chkI pos (3 * i3) 0 2
+      t5 <- rdU pos (3 * i3)
+      t6 <- rdU pos ((3 * i3) + 1)
+      t7 <- rdU pos ((3 * i3) + 2)
+      chkI vel (3 * i3) 0 2
+      t8 <- rdU vel (3 * i3)
+      t9 <- rdU vel ((3 * i3) + 1)
+      t10 <- rdU vel ((3 * i3) + 2)
+      chkI normal (3 * i3) 0 2
+      t11 <- rdU normal (3 * i3)
+      t12 <- rdU normal ((3 * i3) + 1)
+      t13 <- rdU normal ((3 * i3) + 2)
       let !t14 = (t12 * (-0.6))
       let !t15 = (t8 + (t1 * (negate (t14 * t11))))
       let !t16 = (t9 + (t1 * ((-0.6) + (negate (t14 * t12)))))
       let !t17 = (t10 + (t1 * (negate (t14 * t13))))
       if (1.0 - (abs (((t15 - t15) + (t16 - t16)) + (t17 - t17)))) > 0 then do
-        wrI vel (3 * i3) t15
-        wrI vel ((3 * i3) + 1) t16
-        wrI vel ((3 * i3) + 2) t17
+        wrU vel (3 * i3) t15
+        wrU vel ((3 * i3) + 1) t16
+        wrU vel ((3 * i3) + 2) t17
         pure ()
       else do
-        t18 <- rdI meta 1
-        wrI meta 1 (t18 + 1.0)
+        chkI meta 0 1 1
+        t18 <- rdU meta 1
+        wrU meta 1 (t18 + 1.0)
         pure ()
       pure ()
     else do
@@ -65,12 +72,14 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  wrI meta 2 0.0
-  t0 <- rdI meta 0
+  chkI meta 0 0 5
+  wrU meta 2 0.0
+  t0 <- rdU meta 0
   v1 <- newR 0.0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI scalars ((6 * i2) + 5)
+    chkI scalars (6 * i2) 5 5
+    t3 <- rdU scalars ((6 * i2) + 5)
     t4 <- getR v1
     setR v1 (if (t3 - t4) > 0 then t3 else t4)
     pure ()
@@ -80,54 +89,65 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   let !t8 = (2.0 * t0)
   let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrI meta 4 s10
-  wrI meta 5 s7
+  wrU meta 4 s10
+  wrU meta 5 s7
   loopI 0.0 s10 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    wrI grid i11 0.0
+    chkI grid i11 0 0
+    wrU grid i11 0.0
     pure ()
   loopI 0.0 t0 $ \i12 -> do
     let !d12 = fromIntegral i12 :: Double
-    t13 <- rdI pos (3 * i12)
-    t14 <- rdI pos ((3 * i12) + 1)
-    t15 <- rdI pos ((3 * i12) + 2)
-    wrI cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
+    chkI pos (3 * i12) 0 2
+    t13 <- rdU pos (3 * i12)
+    t14 <- rdU pos ((3 * i12) + 1)
+    t15 <- rdU pos ((3 * i12) + 2)
+    chkI cellOf i12 0 0
+    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
     let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
     let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    t18 <- rdI grid (truncate s17)
-    wrI grid (truncate s17) (t18 + 1.0)
+    chkI grid (truncate s17) 0 0
+    t18 <- rdU grid (truncate s17)
+    wrU grid (truncate s17) (t18 + 1.0)
     pure ()
   v19 <- newR 0.0
   loopI 0.0 s10 $ \i20 -> do
     let !d20 = fromIntegral i20 :: Double
-    t21 <- rdI grid i20
+    chkI grid i20 0 0
+    t21 <- rdU grid i20
     t22 <- getR v19
-    wrI grid ((truncate s10) + i20) t22
-    wrI grid i20 t22
+    chkI grid ((truncate s10) + i20) 0 0
+    wrU grid ((truncate s10) + i20) t22
+    wrU grid i20 t22
     setR v19 (t22 + t21)
     pure ()
   loopI 0.0 t0 $ \i23 -> do
     let !d23 = fromIntegral i23 :: Double
-    t24 <- rdI pos (3 * i23)
-    t25 <- rdI pos ((3 * i23) + 1)
-    t26 <- rdI pos ((3 * i23) + 2)
+    chkI pos (3 * i23) 0 2
+    t24 <- rdU pos (3 * i23)
+    t25 <- rdU pos ((3 * i23) + 1)
+    t26 <- rdU pos ((3 * i23) + 2)
     let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
     let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    t29 <- rdI grid (truncate s28)
-    wrI items (truncate t29) d23
-    wrI grid (truncate s28) (t29 + 1.0)
+    chkI grid (truncate s28) 0 0
+    t29 <- rdU grid (truncate s28)
+    chkI items (truncate t29) 0 0
+    wrU items (truncate t29) d23
+    wrU grid (truncate s28) (t29 + 1.0)
     pure ()
-  t30 <- rdI meta 0
+  t30 <- rdU meta 0
   loopI 0.0 t30 $ \i31 -> do
     let !d31 = fromIntegral i31 :: Double
-    t32 <- rdI pos (3 * i31)
-    t33 <- rdI pos ((3 * i31) + 1)
-    t34 <- rdI pos ((3 * i31) + 2)
-    t35 <- rdI scalars ((6 * i31) + 5)
-    t36 <- rdI scalars ((6 * i31) + 2)
-    t37 <- rdI meta 5
-    t38 <- rdI meta 4
-    t39 <- rdI meta 5
+    chkI pos (3 * i31) 0 2
+    t32 <- rdU pos (3 * i31)
+    t33 <- rdU pos ((3 * i31) + 1)
+    t34 <- rdU pos ((3 * i31) + 2)
+    chkI scalars (6 * i31) 2 5
+    t35 <- rdU scalars ((6 * i31) + 5)
+    t36 <- rdU scalars ((6 * i31) + 2)
+    t37 <- rdU meta 5
+    t38 <- rdU meta 4
+    t39 <- rdU meta 5
     let !s40 = (floorF (t32 / t39))
     let !s41 = (floorF (t33 / t39))
     let !s42 = (floorF (t34 / t39))
@@ -143,19 +163,25 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
           let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          t52 <- rdI grid (truncate s51)
-          t53 <- rdI grid ((truncate t38) + (truncate s51))
+          chkI grid (truncate s51) 0 0
+          t52 <- rdU grid (truncate s51)
+          chkI grid ((truncate t38) + (truncate s51)) 0 0
+          t53 <- rdU grid ((truncate t38) + (truncate s51))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
-            t55 <- rdI items i54
-            t56 <- rdI cellOf (truncate t55)
+            chkI items i54 0 0
+            t55 <- rdU items i54
+            chkI cellOf (truncate t55) 0 0
+            t56 <- rdU cellOf (truncate t55)
             if (0.5 - (abs (t56 - s49))) > 0 then do
               if (t55 - d31) > 0 then do
-                t57 <- rdI pos (3 * (truncate t55))
-                t58 <- rdI pos ((3 * (truncate t55)) + 1)
-                t59 <- rdI pos ((3 * (truncate t55)) + 2)
-                t60 <- rdI scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdI scalars ((6 * (truncate t55)) + 2)
+                chkI pos (3 * (truncate t55)) 0 2
+                t57 <- rdU pos (3 * (truncate t55))
+                t58 <- rdU pos ((3 * (truncate t55)) + 1)
+                t59 <- rdU pos ((3 * (truncate t55)) + 2)
+                chkI scalars (6 * (truncate t55)) 2 5
+                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
+                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
                 let !t62 = (t36 + t61)
                 let !t63 = (t32 + (negate t57))
                 let !t64 = (t33 + (negate t58))
@@ -176,16 +202,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    t67 <- rdI verts (3 * (97 * i31))
-    t68 <- rdI verts ((3 * (97 * i31)) + 1)
-    t69 <- rdI verts ((3 * (97 * i31)) + 2)
+    chkI verts (3 * (97 * i31)) 0 2
+    t67 <- rdU verts (3 * (97 * i31))
+    t68 <- rdU verts ((3 * (97 * i31)) + 1)
+    t69 <- rdU verts ((3 * (97 * i31)) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      t72 <- rdI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdI verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
-      t75 <- rdI radii ((24 * i31) + i71)
+      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
+      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
+      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
+      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI radii ((24 * i31) + i71) 0 0
+      t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
       let !t77 = (t72 + (negate t67))
       let !t78 = (t73 + (negate t68))
@@ -204,27 +233,37 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v88 <- newR 0.0
       loopI 0.0 24.0 $ \i89 -> do
         let !d89 = fromIntegral i89 :: Double
-        t90 <- rdI radii ((24 * i31) + i89)
+        chkI radii ((24 * i31) + i89) 0 0
+        t90 <- rdU radii ((24 * i31) + i89)
         loopI 6.0 12.0 $ \i91 -> do
           let !d91 = fromIntegral i91 :: Double
           let !t92 = (d89 + d91)
-          t93 <- rdI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
+          chkI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))) 0 0
+          t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            t95 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            t98 <- rdI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdI verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
+            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
+            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
+            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
+            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
+            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
+            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
+            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
-              t102 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
-              t103 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
-              t104 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
-              t105 <- rdI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
-              t106 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
-              t107 <- rdI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
+              t102 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0)) 0 0
+              t103 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0)) 0 0
+              t104 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101))) 0 0
+              t105 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0)) 0 0
+              t106 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0)) 0 0
+              t107 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
               t108 <- getR v82
               let !t109 = (negate t102)
               let !t110 = (t105 + t109)
@@ -264,12 +303,16 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                t145 <- rdI verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdI verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
-                t148 <- rdI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
-                t149 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
-                t150 <- rdI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
+                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
+                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
+                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
+                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
+                t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t149 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t150 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
                 setR v83 (t95 + (t137 * t116))
                 setR v84 (t96 + (t137 * t117))
                 setR v85 (t97 + (t137 * t118))
@@ -320,89 +363,98 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         let !s184 = (t183 * t179)
         let !s185 = (t183 * t180)
         let !s186 = (t183 * t181)
-        t187 <- rdI meta 2
-        t188 <- rdI meta 3
+        t187 <- rdU meta 2
+        t188 <- rdU meta 3
         if (((8.0 * (if (1.0 - t188) > 0 then 1.0 else t188)) - t187) - 0.5) > 0 then do
-          wrI meta 2 (t187 + 1.0)
-          t189 <- rdI pos (3 * i31)
-          t190 <- rdI pos ((3 * i31) + 1)
-          t191 <- rdI pos ((3 * i31) + 2)
-          t192 <- rdI normal (3 * i31)
-          t193 <- rdI normal ((3 * i31) + 1)
-          t194 <- rdI normal ((3 * i31) + 2)
-          t195 <- rdI axis (3 * i31)
-          t196 <- rdI axis ((3 * i31) + 1)
-          t197 <- rdI axis ((3 * i31) + 2)
+          wrU meta 2 (t187 + 1.0)
+          t189 <- rdU pos (3 * i31)
+          t190 <- rdU pos ((3 * i31) + 1)
+          t191 <- rdU pos ((3 * i31) + 2)
+          chkI normal (3 * i31) 0 2
+          t192 <- rdU normal (3 * i31)
+          t193 <- rdU normal ((3 * i31) + 1)
+          t194 <- rdU normal ((3 * i31) + 2)
+          chkI axis (3 * i31) 0 2
+          t195 <- rdU axis (3 * i31)
+          t196 <- rdU axis ((3 * i31) + 1)
+          t197 <- rdU axis ((3 * i31) + 2)
           let !s198 = ((t193 * t197) - (t194 * t196))
           let !s199 = ((t194 * t195) - (t192 * t197))
           let !s200 = ((t192 * t196) - (t193 * t195))
-          t201 <- rdI scalars (6 * i31)
-          t202 <- rdI scalars ((6 * i31) + 5)
-          t203 <- rdI scalars ((6 * i31) + 2)
-          t204 <- rdI scalars ((6 * i31) + 3)
-          wrI contacts (30 * (truncate t187)) d31
-          wrI contacts ((30 * (truncate t187)) + 1) (-1.0)
-          wrI contacts ((30 * (truncate t187)) + 2) d31
-          wrI contacts ((30 * (truncate t187)) + 3) 12.0
-          wrI contacts ((30 * (truncate t187)) + 4) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
-          wrI contacts (((30 * (truncate t187)) + 4) + 1) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
-          wrI contacts (((30 * (truncate t187)) + 4) + 2) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
-          wrI contacts ((30 * (truncate t187)) + 7) 0.0
-          wrI contacts ((30 * (truncate t187)) + 12) 0.0
-          wrI contacts (((30 * (truncate t187)) + 12) + 1) 0.0
-          wrI contacts (((30 * (truncate t187)) + 12) + 2) 0.0
-          wrI contacts ((30 * (truncate t187)) + 15) 0.0
-          wrI contacts ((30 * (truncate t187)) + 20) t162
-          wrI contacts ((30 * (truncate t187)) + 26) 0.6
-          wrI contacts ((30 * (truncate t187)) + 27) t163
-          wrI contacts (((30 * (truncate t187)) + 27) + 1) t164
-          wrI contacts (((30 * (truncate t187)) + 27) + 2) t165
+          chkI scalars (6 * i31) 0 0
+          t201 <- rdU scalars (6 * i31)
+          t202 <- rdU scalars ((6 * i31) + 5)
+          t203 <- rdU scalars ((6 * i31) + 2)
+          t204 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t187)) 0 29
+          wrU contacts (30 * (truncate t187)) d31
+          wrU contacts ((30 * (truncate t187)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t187)) + 2) d31
+          wrU contacts ((30 * (truncate t187)) + 3) 12.0
+          wrU contacts ((30 * (truncate t187)) + 4) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
+          wrU contacts ((30 * (truncate t187)) + 5) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
+          wrU contacts ((30 * (truncate t187)) + 6) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
+          wrU contacts ((30 * (truncate t187)) + 7) 0.0
+          wrU contacts ((30 * (truncate t187)) + 12) 0.0
+          wrU contacts ((30 * (truncate t187)) + 13) 0.0
+          wrU contacts ((30 * (truncate t187)) + 14) 0.0
+          wrU contacts ((30 * (truncate t187)) + 15) 0.0
+          wrU contacts ((30 * (truncate t187)) + 20) t162
+          wrU contacts ((30 * (truncate t187)) + 26) 0.6
+          wrU contacts ((30 * (truncate t187)) + 27) t163
+          wrU contacts ((30 * (truncate t187)) + 28) t164
+          wrU contacts ((30 * (truncate t187)) + 29) t165
           if (-0.5) > 0 then do
-            t205 <- rdI pos (-3)
-            t206 <- rdI pos (-2)
-            t207 <- rdI pos (-1)
-            t208 <- rdI normal (-3)
-            t209 <- rdI normal (-2)
-            t210 <- rdI normal (-1)
-            t211 <- rdI axis (-3)
-            t212 <- rdI axis (-2)
-            t213 <- rdI axis (-1)
+            chkI pos 0 (-3) (-1)
+            t205 <- rdU pos (-3)
+            t206 <- rdU pos (-2)
+            t207 <- rdU pos (-1)
+            chkI normal 0 (-3) (-1)
+            t208 <- rdU normal (-3)
+            t209 <- rdU normal (-2)
+            t210 <- rdU normal (-1)
+            chkI axis 0 (-3) (-1)
+            t211 <- rdU axis (-3)
+            t212 <- rdU axis (-2)
+            t213 <- rdU axis (-1)
             let !s214 = ((t209 * t213) - (t210 * t212))
             let !s215 = ((t210 * t211) - (t208 * t213))
             let !s216 = ((t208 * t212) - (t209 * t211))
-            t217 <- rdI scalars (-6)
-            t218 <- rdI scalars (-1)
-            t219 <- rdI scalars (-4)
-            t220 <- rdI scalars (-3)
-            wrI contacts ((30 * (truncate t187)) + 8) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
-            wrI contacts (((30 * (truncate t187)) + 8) + 1) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
-            wrI contacts (((30 * (truncate t187)) + 8) + 2) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
+            chkI scalars 0 (-6) (-1)
+            t217 <- rdU scalars (-6)
+            t218 <- rdU scalars (-1)
+            t219 <- rdU scalars (-4)
+            t220 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t187)) + 8) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
+            wrU contacts ((30 * (truncate t187)) + 9) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
+            wrU contacts ((30 * (truncate t187)) + 10) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
             let !t221 = (t164 + (negate t206))
             let !t222 = (t165 + (negate t207))
             let !t223 = (t163 + (negate t205))
-            wrI contacts ((30 * (truncate t187)) + 11) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
+            wrU contacts ((30 * (truncate t187)) + 11) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
             let !t224 = ((t193 * s186) - (t194 * s185))
-            wrI contacts ((30 * (truncate t187)) + 16) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
+            wrU contacts ((30 * (truncate t187)) + 16) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
             let !t225 = ((t194 * s184) - (t192 * s186))
-            wrI contacts (((30 * (truncate t187)) + 16) + 1) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
+            wrU contacts ((30 * (truncate t187)) + 17) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
             let !t226 = ((t192 * s185) - (t193 * s184))
-            wrI contacts (((30 * (truncate t187)) + 16) + 2) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
-            wrI contacts ((30 * (truncate t187)) + 19) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
+            wrU contacts ((30 * (truncate t187)) + 18) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
+            wrU contacts ((30 * (truncate t187)) + 19) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
             pure ()
           else do
-            wrI contacts ((30 * (truncate t187)) + 8) 0.0
-            wrI contacts (((30 * (truncate t187)) + 8) + 1) 0.0
-            wrI contacts (((30 * (truncate t187)) + 8) + 2) 0.0
-            wrI contacts ((30 * (truncate t187)) + 11) 0.0
-            wrI contacts ((30 * (truncate t187)) + 16) 0.0
-            wrI contacts (((30 * (truncate t187)) + 16) + 1) 0.0
-            wrI contacts (((30 * (truncate t187)) + 16) + 2) 0.0
-            wrI contacts ((30 * (truncate t187)) + 19) 0.0
+            wrU contacts ((30 * (truncate t187)) + 8) 0.0
+            wrU contacts ((30 * (truncate t187)) + 9) 0.0
+            wrU contacts ((30 * (truncate t187)) + 10) 0.0
+            wrU contacts ((30 * (truncate t187)) + 11) 0.0
+            wrU contacts ((30 * (truncate t187)) + 16) 0.0
+            wrU contacts ((30 * (truncate t187)) + 17) 0.0
+            wrU contacts ((30 * (truncate t187)) + 18) 0.0
+            wrU contacts ((30 * (truncate t187)) + 19) 0.0
             pure ()
           pure ()
         else do
-          t227 <- rdI meta 6
-          wrI meta 6 (t227 + 1.0)
+          chkI meta 0 6 6
+          t227 <- rdU meta 6
+          wrU meta 6 (t227 + 1.0)
           pure ()
         pure ()
       else do
@@ -415,44 +467,49 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI params 0
-  t1 <- rdI params 2
-  t2 <- rdI params 3
-  t3 <- rdI params 4
-  t4 <- rdI params 5
-  t5 <- rdI params 6
-  t6 <- rdI params 7
-  t7 <- rdI params 8
-  t8 <- rdI params 9
-  t9 <- rdI meta 2
+  chkI params 0 0 9
+  t0 <- rdU params 0
+  t1 <- rdU params 2
+  t2 <- rdU params 3
+  t3 <- rdU params 4
+  t4 <- rdU params 5
+  t5 <- rdU params 6
+  t6 <- rdU params 7
+  t7 <- rdU params 8
+  t8 <- rdU params 9
+  chkI meta 0 0 2
+  t9 <- rdU meta 2
   loopI 0.0 t9 $ \i10 -> do
     let !d10 = fromIntegral i10 :: Double
-    t11 <- rdI contacts (30 * i10)
-    t12 <- rdI contacts ((30 * i10) + 1)
-    t13 <- rdI contacts ((30 * i10) + 2)
-    t14 <- rdI contacts ((30 * i10) + 3)
-    t15 <- rdI contacts ((30 * i10) + 4)
-    t16 <- rdI contacts (((30 * i10) + 4) + 1)
-    t17 <- rdI contacts (((30 * i10) + 4) + 2)
-    t18 <- rdI contacts ((30 * i10) + 7)
-    t19 <- rdI contacts ((30 * i10) + 8)
-    t20 <- rdI contacts (((30 * i10) + 8) + 1)
-    t21 <- rdI contacts (((30 * i10) + 8) + 2)
-    t22 <- rdI contacts ((30 * i10) + 11)
-    t23 <- rdI contacts ((30 * i10) + 12)
-    t24 <- rdI contacts (((30 * i10) + 12) + 1)
-    t25 <- rdI contacts (((30 * i10) + 12) + 2)
-    t26 <- rdI contacts ((30 * i10) + 15)
-    t27 <- rdI contacts ((30 * i10) + 16)
-    t28 <- rdI contacts (((30 * i10) + 16) + 1)
-    t29 <- rdI contacts (((30 * i10) + 16) + 2)
-    t30 <- rdI contacts ((30 * i10) + 19)
-    t31 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdI scalars ((6 * (truncate t11)) + 3)
+    chkI contacts (30 * i10) 0 26
+    t11 <- rdU contacts (30 * i10)
+    t12 <- rdU contacts ((30 * i10) + 1)
+    t13 <- rdU contacts ((30 * i10) + 2)
+    t14 <- rdU contacts ((30 * i10) + 3)
+    t15 <- rdU contacts ((30 * i10) + 4)
+    t16 <- rdU contacts ((30 * i10) + 5)
+    t17 <- rdU contacts ((30 * i10) + 6)
+    t18 <- rdU contacts ((30 * i10) + 7)
+    t19 <- rdU contacts ((30 * i10) + 8)
+    t20 <- rdU contacts ((30 * i10) + 9)
+    t21 <- rdU contacts ((30 * i10) + 10)
+    t22 <- rdU contacts ((30 * i10) + 11)
+    t23 <- rdU contacts ((30 * i10) + 12)
+    t24 <- rdU contacts ((30 * i10) + 13)
+    t25 <- rdU contacts ((30 * i10) + 14)
+    t26 <- rdU contacts ((30 * i10) + 15)
+    t27 <- rdU contacts ((30 * i10) + 16)
+    t28 <- rdU contacts ((30 * i10) + 17)
+    t29 <- rdU contacts ((30 * i10) + 18)
+    t30 <- rdU contacts ((30 * i10) + 19)
+    chkI scalars (6 * (truncate t11)) 1 3
+    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
     v33 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t34 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
       pure ()
     else do
@@ -460,12 +517,13 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t36 <- getR v33
     let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
     let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdI scalars ((6 * (truncate t11)) + 3)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
     v41 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t42 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdI scalars ((6 * (truncate t12)) + 3)
+      chkI scalars (6 * (truncate t12)) 2 3
+      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
       setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
       pure ()
     else do
@@ -473,20 +531,23 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     t44 <- getR v41
     let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
     let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrI contacts ((30 * i10) + 21) s38
-    wrI contacts ((30 * i10) + 22) s46
-    t47 <- rdI contacts ((30 * i10) + 20)
-    t48 <- rdI contacts ((30 * i10) + 26)
-    t49 <- rdI vel (3 * (truncate t11))
-    t50 <- rdI vel ((3 * (truncate t11)) + 1)
-    t51 <- rdI vel ((3 * (truncate t11)) + 2)
-    t52 <- rdI scalars ((6 * (truncate t11)) + 1)
+    wrU contacts ((30 * i10) + 21) s38
+    wrU contacts ((30 * i10) + 22) s46
+    t47 <- rdU contacts ((30 * i10) + 20)
+    t48 <- rdU contacts ((30 * i10) + 26)
+    chkI vel (3 * (truncate t11)) 0 2
+    t49 <- rdU vel (3 * (truncate t11))
+    t50 <- rdU vel ((3 * (truncate t11)) + 1)
+    t51 <- rdU vel ((3 * (truncate t11)) + 2)
+    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
     v53 <- newR 0.0
     if (t12 + 0.5) > 0 then do
-      t54 <- rdI vel (3 * (truncate t12))
-      t55 <- rdI vel ((3 * (truncate t12)) + 1)
-      t56 <- rdI vel ((3 * (truncate t12)) + 2)
-      t57 <- rdI scalars ((6 * (truncate t12)) + 1)
+      chkI vel (3 * (truncate t12)) 0 2
+      t54 <- rdU vel (3 * (truncate t12))
+      t55 <- rdU vel ((3 * (truncate t12)) + 1)
+      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      chkI scalars (6 * (truncate t12)) 1 1
+      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
       setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
       pure ()
     else do
@@ -497,19 +558,22 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
     let !t62 = (if (t61 - t8) > 0 then t8 else t61)
     let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrI contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
+    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
     v64 <- newR 0.0
     v65 <- newR 0.0
-    t66 <- rdI bodyPrev (2 * (truncate t13))
-    t67 <- rdI bodyPrev ((2 * (truncate t13)) + 1)
+    chkI bodyPrev (2 * (truncate t13)) 0 1
+    t66 <- rdU bodyPrev (2 * (truncate t13))
+    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
     let !n68 = (t66 + t67)
     loopI t66 n68 $ \i69 -> do
       let !d69 = fromIntegral i69 :: Double
-      t70 <- rdI prev ((4 * i69) + 1)
+      chkI prev (4 * i69) 1 1
+      t70 <- rdU prev ((4 * i69) + 1)
       if (0.5 - (abs (t70 - t14))) > 0 then do
-        t71 <- rdI prev ((4 * i69) + 2)
+        chkI prev (4 * i69) 2 3
+        t71 <- rdU prev ((4 * i69) + 2)
         setR v64 t71
-        t72 <- rdI prev ((4 * i69) + 3)
+        t72 <- rdU prev ((4 * i69) + 3)
         setR v65 t72
         pure ()
       else do
@@ -517,98 +581,110 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       pure ()
     t73 <- getR v64
     t74 <- getR v65
-    wrI contacts ((30 * i10) + 24) (t7 * t73)
-    wrI contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdI vel (3 * (truncate t11))
-    t78 <- rdI vel ((3 * (truncate t11)) + 1)
-    t79 <- rdI vel ((3 * (truncate t11)) + 2)
-    t80 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrI vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrI vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrI scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    wrU contacts ((30 * i10) + 24) (t7 * t73)
+    wrU contacts ((30 * i10) + 25) (t7 * t74)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t77 <- rdU vel (3 * (truncate t11))
+    t78 <- rdU vel ((3 * (truncate t11)) + 1)
+    t79 <- rdU vel ((3 * (truncate t11)) + 2)
+    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
     if (t12 + 0.5) > 0 then do
-      t81 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t83 <- rdI vel (3 * (truncate t12))
-      t84 <- rdI vel ((3 * (truncate t12)) + 1)
-      t85 <- rdI vel ((3 * (truncate t12)) + 2)
-      t86 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrI vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrI vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrI scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t83 <- rdU vel (3 * (truncate t12))
+      t84 <- rdU vel ((3 * (truncate t12)) + 1)
+      t85 <- rdU vel ((3 * (truncate t12)) + 2)
+      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdI scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdI scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdI vel (3 * (truncate t11))
-    t90 <- rdI vel ((3 * (truncate t11)) + 1)
-    t91 <- rdI vel ((3 * (truncate t11)) + 2)
-    t92 <- rdI scalars ((6 * (truncate t11)) + 1)
-    wrI vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrI vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrI vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrI scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t89 <- rdU vel (3 * (truncate t11))
+    t90 <- rdU vel ((3 * (truncate t11)) + 1)
+    t91 <- rdU vel ((3 * (truncate t11)) + 2)
+    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
     if (t12 + 0.5) > 0 then do
-      t93 <- rdI scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdI scalars ((6 * (truncate t12)) + 3)
-      t95 <- rdI vel (3 * (truncate t12))
-      t96 <- rdI vel ((3 * (truncate t12)) + 1)
-      t97 <- rdI vel ((3 * (truncate t12)) + 2)
-      t98 <- rdI scalars ((6 * (truncate t12)) + 1)
-      wrI vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrI vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrI vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrI scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      chkI scalars (6 * (truncate t12)) 1 3
+      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      chkI vel (3 * (truncate t12)) 0 2
+      t95 <- rdU vel (3 * (truncate t12))
+      t96 <- rdU vel ((3 * (truncate t12)) + 1)
+      t97 <- rdU vel ((3 * (truncate t12)) + 2)
+      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
       pure ()
     else do
       pure ()
     pure ()
-  t99 <- rdI mouse 0
+  chkI mouse 0 0 0
+  t99 <- rdU mouse 0
   if t99 > 0 then do
-    t100 <- rdI mouse 1
-    t101 <- rdI scalars ((6 * (truncate t100)) + 2)
+    chkI mouse 0 1 1
+    t100 <- rdU mouse 1
+    chkI scalars (6 * (truncate t100)) 2 2
+    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
     if t101 > 0 then do
-      t102 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdI params 0
-      t104 <- rdI pos (3 * (truncate t100))
-      t105 <- rdI pos ((3 * (truncate t100)) + 1)
-      t106 <- rdI pos ((3 * (truncate t100)) + 2)
-      t107 <- rdI normal (3 * (truncate t100))
-      t108 <- rdI normal ((3 * (truncate t100)) + 1)
-      t109 <- rdI normal ((3 * (truncate t100)) + 2)
-      t110 <- rdI axis (3 * (truncate t100))
-      t111 <- rdI axis ((3 * (truncate t100)) + 1)
-      t112 <- rdI axis ((3 * (truncate t100)) + 2)
+      chkI scalars (6 * (truncate t100)) 0 5
+      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t103 <- rdU params 0
+      chkI pos (3 * (truncate t100)) 0 2
+      t104 <- rdU pos (3 * (truncate t100))
+      t105 <- rdU pos ((3 * (truncate t100)) + 1)
+      t106 <- rdU pos ((3 * (truncate t100)) + 2)
+      chkI normal (3 * (truncate t100)) 0 2
+      t107 <- rdU normal (3 * (truncate t100))
+      t108 <- rdU normal ((3 * (truncate t100)) + 1)
+      t109 <- rdU normal ((3 * (truncate t100)) + 2)
+      chkI axis (3 * (truncate t100)) 0 2
+      t110 <- rdU axis (3 * (truncate t100))
+      t111 <- rdU axis ((3 * (truncate t100)) + 1)
+      t112 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s113 = ((t108 * t112) - (t109 * t111))
       let !s114 = ((t109 * t110) - (t107 * t112))
       let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdI scalars (6 * (truncate t100))
-      t117 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdI pos (3 * (truncate t100))
-      t121 <- rdI pos ((3 * (truncate t100)) + 1)
-      t122 <- rdI pos ((3 * (truncate t100)) + 2)
-      t123 <- rdI normal (3 * (truncate t100))
-      t124 <- rdI normal ((3 * (truncate t100)) + 1)
-      t125 <- rdI normal ((3 * (truncate t100)) + 2)
-      t126 <- rdI axis (3 * (truncate t100))
-      t127 <- rdI axis ((3 * (truncate t100)) + 1)
-      t128 <- rdI axis ((3 * (truncate t100)) + 2)
+      t116 <- rdU scalars (6 * (truncate t100))
+      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t120 <- rdU pos (3 * (truncate t100))
+      t121 <- rdU pos ((3 * (truncate t100)) + 1)
+      t122 <- rdU pos ((3 * (truncate t100)) + 2)
+      t123 <- rdU normal (3 * (truncate t100))
+      t124 <- rdU normal ((3 * (truncate t100)) + 1)
+      t125 <- rdU normal ((3 * (truncate t100)) + 2)
+      t126 <- rdU axis (3 * (truncate t100))
+      t127 <- rdU axis ((3 * (truncate t100)) + 1)
+      t128 <- rdU axis ((3 * (truncate t100)) + 2)
       let !s129 = ((t124 * t128) - (t125 * t127))
       let !s130 = ((t125 * t126) - (t123 * t128))
       let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdI scalars (6 * (truncate t100))
-      t133 <- rdI scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t136 <- rdI mouse 2
-      t137 <- rdI mouse 3
+      t132 <- rdU scalars (6 * (truncate t100))
+      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
+      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI mouse 0 2 11
+      t136 <- rdU mouse 2
+      t137 <- rdU mouse 3
       let !t138 = (t136 / 4.0)
       let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
       let !t140 = (t132 + t137)
@@ -859,12 +935,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s385 = ((t139 * (t367 * (t384 * t380))) + (t179 * s325))
       let !s386 = ((t139 * (t367 * (t384 * t381))) + (t179 * s326))
       let !s387 = ((t139 * (t367 * (t384 * t382))) + (t179 * s327))
-      t388 <- rdI mouse 4
-      t389 <- rdI mouse 5
-      t390 <- rdI mouse 6
-      t391 <- rdI mouse 7
-      t392 <- rdI mouse 8
-      t393 <- rdI mouse 9
+      t388 <- rdU mouse 4
+      t389 <- rdU mouse 5
+      t390 <- rdU mouse 6
+      t391 <- rdU mouse 7
+      t392 <- rdU mouse 8
+      t393 <- rdU mouse 9
       let !t394 = (recip t101)
       let !t395 = (6.283185307179586 * t391)
       let !s396 = (recip (t103 * ((((2.0 * t394) * t392) * t395) + (t103 * ((t394 * t395) * t395)))))
@@ -875,28 +951,29 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !s401 = (s364 + (negate t388))
       let !s402 = (s365 + (negate t389))
       let !s403 = (s366 + (negate t390))
-      t404 <- rdI mouse 10
-      t405 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t406 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t407 <- rdI vel (3 * (truncate t100))
-      t408 <- rdI vel ((3 * (truncate t100)) + 1)
-      t409 <- rdI vel ((3 * (truncate t100)) + 2)
-      t410 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t407 + ((t405 * t404) * t110))
-      wrI vel ((3 * (truncate t100)) + 1) (t408 + ((t405 * t404) * t111))
-      wrI vel ((3 * (truncate t100)) + 2) (t409 + ((t405 * t404) * t112))
-      wrI scalars ((6 * (truncate t100)) + 1) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
-      t411 <- rdI mouse 11
-      t412 <- rdI scalars ((6 * (truncate t100)) + 2)
-      t413 <- rdI scalars ((6 * (truncate t100)) + 3)
-      t414 <- rdI vel (3 * (truncate t100))
-      t415 <- rdI vel ((3 * (truncate t100)) + 1)
-      t416 <- rdI vel ((3 * (truncate t100)) + 2)
-      t417 <- rdI scalars ((6 * (truncate t100)) + 1)
-      wrI vel (3 * (truncate t100)) (t414 + ((t412 * t411) * s113))
-      wrI vel ((3 * (truncate t100)) + 1) (t415 + ((t412 * t411) * s114))
-      wrI vel ((3 * (truncate t100)) + 2) (t416 + ((t412 * t411) * s115))
-      wrI scalars ((6 * (truncate t100)) + 1) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
+      t404 <- rdU mouse 10
+      t405 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t406 <- rdU scalars ((6 * (truncate t100)) + 3)
+      chkI vel (3 * (truncate t100)) 0 2
+      t407 <- rdU vel (3 * (truncate t100))
+      t408 <- rdU vel ((3 * (truncate t100)) + 1)
+      t409 <- rdU vel ((3 * (truncate t100)) + 2)
+      t410 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t407 + ((t405 * t404) * t110))
+      wrU vel ((3 * (truncate t100)) + 1) (t408 + ((t405 * t404) * t111))
+      wrU vel ((3 * (truncate t100)) + 2) (t409 + ((t405 * t404) * t112))
+      wrU scalars ((6 * (truncate t100)) + 1) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
+      t411 <- rdU mouse 11
+      t412 <- rdU scalars ((6 * (truncate t100)) + 2)
+      t413 <- rdU scalars ((6 * (truncate t100)) + 3)
+      t414 <- rdU vel (3 * (truncate t100))
+      t415 <- rdU vel ((3 * (truncate t100)) + 1)
+      t416 <- rdU vel ((3 * (truncate t100)) + 2)
+      t417 <- rdU scalars ((6 * (truncate t100)) + 1)
+      wrU vel (3 * (truncate t100)) (t414 + ((t412 * t411) * s113))
+      wrU vel ((3 * (truncate t100)) + 1) (t415 + ((t412 * t411) * s114))
+      wrU vel ((3 * (truncate t100)) + 2) (t416 + ((t412 * t411) * s115))
+      wrU scalars ((6 * (truncate t100)) + 1) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
       pure ()
     else do
       pure ()
@@ -907,38 +984,43 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     let !d418 = fromIntegral i418 :: Double
     loopI 0.0 t9 $ \i419 -> do
       let !d419 = fromIntegral i419 :: Double
-      t420 <- rdI contacts (30 * i419)
-      t421 <- rdI contacts ((30 * i419) + 1)
-      t422 <- rdI contacts ((30 * i419) + 12)
-      t423 <- rdI contacts (((30 * i419) + 12) + 1)
-      t424 <- rdI contacts (((30 * i419) + 12) + 2)
-      t425 <- rdI contacts ((30 * i419) + 15)
-      t426 <- rdI contacts ((30 * i419) + 16)
-      t427 <- rdI contacts (((30 * i419) + 16) + 1)
-      t428 <- rdI contacts (((30 * i419) + 16) + 2)
-      t429 <- rdI contacts ((30 * i419) + 19)
-      t430 <- rdI contacts ((30 * i419) + 4)
-      t431 <- rdI contacts (((30 * i419) + 4) + 1)
-      t432 <- rdI contacts (((30 * i419) + 4) + 2)
-      t433 <- rdI contacts ((30 * i419) + 7)
-      t434 <- rdI contacts ((30 * i419) + 8)
-      t435 <- rdI contacts (((30 * i419) + 8) + 1)
-      t436 <- rdI contacts (((30 * i419) + 8) + 2)
-      t437 <- rdI contacts ((30 * i419) + 11)
-      t438 <- rdI contacts ((30 * i419) + 26)
-      t439 <- rdI contacts ((30 * i419) + 24)
-      t440 <- rdI contacts ((30 * i419) + 25)
-      t441 <- rdI contacts ((30 * i419) + 22)
-      t442 <- rdI vel (3 * (truncate t420))
-      t443 <- rdI vel ((3 * (truncate t420)) + 1)
-      t444 <- rdI vel ((3 * (truncate t420)) + 2)
-      t445 <- rdI scalars ((6 * (truncate t420)) + 1)
+      chkI contacts (30 * i419) 0 26
+      t420 <- rdU contacts (30 * i419)
+      t421 <- rdU contacts ((30 * i419) + 1)
+      t422 <- rdU contacts ((30 * i419) + 12)
+      t423 <- rdU contacts ((30 * i419) + 13)
+      t424 <- rdU contacts ((30 * i419) + 14)
+      t425 <- rdU contacts ((30 * i419) + 15)
+      t426 <- rdU contacts ((30 * i419) + 16)
+      t427 <- rdU contacts ((30 * i419) + 17)
+      t428 <- rdU contacts ((30 * i419) + 18)
+      t429 <- rdU contacts ((30 * i419) + 19)
+      t430 <- rdU contacts ((30 * i419) + 4)
+      t431 <- rdU contacts ((30 * i419) + 5)
+      t432 <- rdU contacts ((30 * i419) + 6)
+      t433 <- rdU contacts ((30 * i419) + 7)
+      t434 <- rdU contacts ((30 * i419) + 8)
+      t435 <- rdU contacts ((30 * i419) + 9)
+      t436 <- rdU contacts ((30 * i419) + 10)
+      t437 <- rdU contacts ((30 * i419) + 11)
+      t438 <- rdU contacts ((30 * i419) + 26)
+      t439 <- rdU contacts ((30 * i419) + 24)
+      t440 <- rdU contacts ((30 * i419) + 25)
+      t441 <- rdU contacts ((30 * i419) + 22)
+      chkI vel (3 * (truncate t420)) 0 2
+      t442 <- rdU vel (3 * (truncate t420))
+      t443 <- rdU vel ((3 * (truncate t420)) + 1)
+      t444 <- rdU vel ((3 * (truncate t420)) + 2)
+      chkI scalars (6 * (truncate t420)) 1 3
+      t445 <- rdU scalars ((6 * (truncate t420)) + 1)
       v446 <- newR 0.0
       if (t421 + 0.5) > 0 then do
-        t447 <- rdI vel (3 * (truncate t421))
-        t448 <- rdI vel ((3 * (truncate t421)) + 1)
-        t449 <- rdI vel ((3 * (truncate t421)) + 2)
-        t450 <- rdI scalars ((6 * (truncate t421)) + 1)
+        chkI vel (3 * (truncate t421)) 0 2
+        t447 <- rdU vel (3 * (truncate t421))
+        t448 <- rdU vel ((3 * (truncate t421)) + 1)
+        t449 <- rdU vel ((3 * (truncate t421)) + 2)
+        chkI scalars (6 * (truncate t421)) 1 1
+        t450 <- rdU scalars ((6 * (truncate t421)) + 1)
         setR v446 ((((t426 * t447) + (t427 * t448)) + (t428 * t449)) + (t429 * t450))
         pure ()
       else do
@@ -951,43 +1033,47 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t456 = (if (t455 - t453) > 0 then t453 else t455)
       let !t457 = (if (t454 - t456) > 0 then t454 else t456)
       let !s458 = (if (1.0 - (abs (t457 - t457))) > 0 then t457 else 0.0)
-      wrI contacts ((30 * i419) + 25) s458
-      t459 <- rdI scalars ((6 * (truncate t420)) + 2)
-      t460 <- rdI scalars ((6 * (truncate t420)) + 3)
-      t461 <- rdI vel (3 * (truncate t420))
-      t462 <- rdI vel ((3 * (truncate t420)) + 1)
-      t463 <- rdI vel ((3 * (truncate t420)) + 2)
-      t464 <- rdI scalars ((6 * (truncate t420)) + 1)
-      wrI vel (3 * (truncate t420)) (t461 + ((t459 * (s458 - t440)) * t422))
-      wrI vel ((3 * (truncate t420)) + 1) (t462 + ((t459 * (s458 - t440)) * t423))
-      wrI vel ((3 * (truncate t420)) + 2) (t463 + ((t459 * (s458 - t440)) * t424))
-      wrI scalars ((6 * (truncate t420)) + 1) (t464 + ((t460 * (s458 - t440)) * t425))
+      wrU contacts ((30 * i419) + 25) s458
+      t459 <- rdU scalars ((6 * (truncate t420)) + 2)
+      t460 <- rdU scalars ((6 * (truncate t420)) + 3)
+      t461 <- rdU vel (3 * (truncate t420))
+      t462 <- rdU vel ((3 * (truncate t420)) + 1)
+      t463 <- rdU vel ((3 * (truncate t420)) + 2)
+      t464 <- rdU scalars ((6 * (truncate t420)) + 1)
+      wrU vel (3 * (truncate t420)) (t461 + ((t459 * (s458 - t440)) * t422))
+      wrU vel ((3 * (truncate t420)) + 1) (t462 + ((t459 * (s458 - t440)) * t423))
+      wrU vel ((3 * (truncate t420)) + 2) (t463 + ((t459 * (s458 - t440)) * t424))
+      wrU scalars ((6 * (truncate t420)) + 1) (t464 + ((t460 * (s458 - t440)) * t425))
       if (t421 + 0.5) > 0 then do
-        t465 <- rdI scalars ((6 * (truncate t421)) + 2)
-        t466 <- rdI scalars ((6 * (truncate t421)) + 3)
-        t467 <- rdI vel (3 * (truncate t421))
-        t468 <- rdI vel ((3 * (truncate t421)) + 1)
-        t469 <- rdI vel ((3 * (truncate t421)) + 2)
-        t470 <- rdI scalars ((6 * (truncate t421)) + 1)
-        wrI vel (3 * (truncate t421)) (t467 + ((t465 * (negate (s458 - t440))) * t426))
-        wrI vel ((3 * (truncate t421)) + 1) (t468 + ((t465 * (negate (s458 - t440))) * t427))
-        wrI vel ((3 * (truncate t421)) + 2) (t469 + ((t465 * (negate (s458 - t440))) * t428))
-        wrI scalars ((6 * (truncate t421)) + 1) (t470 + ((t466 * (negate (s458 - t440))) * t429))
+        chkI scalars (6 * (truncate t421)) 1 3
+        t465 <- rdU scalars ((6 * (truncate t421)) + 2)
+        t466 <- rdU scalars ((6 * (truncate t421)) + 3)
+        chkI vel (3 * (truncate t421)) 0 2
+        t467 <- rdU vel (3 * (truncate t421))
+        t468 <- rdU vel ((3 * (truncate t421)) + 1)
+        t469 <- rdU vel ((3 * (truncate t421)) + 2)
+        t470 <- rdU scalars ((6 * (truncate t421)) + 1)
+        wrU vel (3 * (truncate t421)) (t467 + ((t465 * (negate (s458 - t440))) * t426))
+        wrU vel ((3 * (truncate t421)) + 1) (t468 + ((t465 * (negate (s458 - t440))) * t427))
+        wrU vel ((3 * (truncate t421)) + 2) (t469 + ((t465 * (negate (s458 - t440))) * t428))
+        wrU scalars ((6 * (truncate t421)) + 1) (t470 + ((t466 * (negate (s458 - t440))) * t429))
         pure ()
       else do
         pure ()
-      t471 <- rdI contacts ((30 * i419) + 21)
-      t472 <- rdI contacts ((30 * i419) + 23)
-      t473 <- rdI vel (3 * (truncate t420))
-      t474 <- rdI vel ((3 * (truncate t420)) + 1)
-      t475 <- rdI vel ((3 * (truncate t420)) + 2)
-      t476 <- rdI scalars ((6 * (truncate t420)) + 1)
+      t471 <- rdU contacts ((30 * i419) + 21)
+      t472 <- rdU contacts ((30 * i419) + 23)
+      t473 <- rdU vel (3 * (truncate t420))
+      t474 <- rdU vel ((3 * (truncate t420)) + 1)
+      t475 <- rdU vel ((3 * (truncate t420)) + 2)
+      t476 <- rdU scalars ((6 * (truncate t420)) + 1)
       v477 <- newR 0.0
       if (t421 + 0.5) > 0 then do
-        t478 <- rdI vel (3 * (truncate t421))
-        t479 <- rdI vel ((3 * (truncate t421)) + 1)
-        t480 <- rdI vel ((3 * (truncate t421)) + 2)
-        t481 <- rdI scalars ((6 * (truncate t421)) + 1)
+        chkI vel (3 * (truncate t421)) 0 2
+        t478 <- rdU vel (3 * (truncate t421))
+        t479 <- rdU vel ((3 * (truncate t421)) + 1)
+        t480 <- rdU vel ((3 * (truncate t421)) + 2)
+        chkI scalars (6 * (truncate t421)) 1 1
+        t481 <- rdU scalars ((6 * (truncate t421)) + 1)
         setR v477 ((((t434 * t478) + (t435 * t479)) + (t436 * t480)) + (t437 * t481))
         pure ()
       else do
@@ -997,73 +1083,82 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
       let !t484 = (t439 + ((t438 * (t472 - s483)) * t471))
       let !t485 = (if (negate t484) > 0 then 0.0 else t484)
       let !s486 = (if (1.0 - (abs (t485 - t485))) > 0 then t485 else 0.0)
-      wrI contacts ((30 * i419) + 24) s486
-      t487 <- rdI scalars ((6 * (truncate t420)) + 2)
-      t488 <- rdI scalars ((6 * (truncate t420)) + 3)
-      t489 <- rdI vel (3 * (truncate t420))
-      t490 <- rdI vel ((3 * (truncate t420)) + 1)
-      t491 <- rdI vel ((3 * (truncate t420)) + 2)
-      t492 <- rdI scalars ((6 * (truncate t420)) + 1)
-      wrI vel (3 * (truncate t420)) (t489 + ((t487 * (s486 - t439)) * t430))
-      wrI vel ((3 * (truncate t420)) + 1) (t490 + ((t487 * (s486 - t439)) * t431))
-      wrI vel ((3 * (truncate t420)) + 2) (t491 + ((t487 * (s486 - t439)) * t432))
-      wrI scalars ((6 * (truncate t420)) + 1) (t492 + ((t488 * (s486 - t439)) * t433))
+      wrU contacts ((30 * i419) + 24) s486
+      t487 <- rdU scalars ((6 * (truncate t420)) + 2)
+      t488 <- rdU scalars ((6 * (truncate t420)) + 3)
+      t489 <- rdU vel (3 * (truncate t420))
+      t490 <- rdU vel ((3 * (truncate t420)) + 1)
+      t491 <- rdU vel ((3 * (truncate t420)) + 2)
+      t492 <- rdU scalars ((6 * (truncate t420)) + 1)
+      wrU vel (3 * (truncate t420)) (t489 + ((t487 * (s486 - t439)) * t430))
+      wrU vel ((3 * (truncate t420)) + 1) (t490 + ((t487 * (s486 - t439)) * t431))
+      wrU vel ((3 * (truncate t420)) + 2) (t491 + ((t487 * (s486 - t439)) * t432))
+      wrU scalars ((6 * (truncate t420)) + 1) (t492 + ((t488 * (s486 - t439)) * t433))
       if (t421 + 0.5) > 0 then do
-        t493 <- rdI scalars ((6 * (truncate t421)) + 2)
-        t494 <- rdI scalars ((6 * (truncate t421)) + 3)
-        t495 <- rdI vel (3 * (truncate t421))
-        t496 <- rdI vel ((3 * (truncate t421)) + 1)
-        t497 <- rdI vel ((3 * (truncate t421)) + 2)
-        t498 <- rdI scalars ((6 * (truncate t421)) + 1)
-        wrI vel (3 * (truncate t421)) (t495 + ((t493 * (negate (s486 - t439))) * t434))
-        wrI vel ((3 * (truncate t421)) + 1) (t496 + ((t493 * (negate (s486 - t439))) * t435))
-        wrI vel ((3 * (truncate t421)) + 2) (t497 + ((t493 * (negate (s486 - t439))) * t436))
-        wrI scalars ((6 * (truncate t421)) + 1) (t498 + ((t494 * (negate (s486 - t439))) * t437))
+        chkI scalars (6 * (truncate t421)) 1 3
+        t493 <- rdU scalars ((6 * (truncate t421)) + 2)
+        t494 <- rdU scalars ((6 * (truncate t421)) + 3)
+        chkI vel (3 * (truncate t421)) 0 2
+        t495 <- rdU vel (3 * (truncate t421))
+        t496 <- rdU vel ((3 * (truncate t421)) + 1)
+        t497 <- rdU vel ((3 * (truncate t421)) + 2)
+        t498 <- rdU scalars ((6 * (truncate t421)) + 1)
+        wrU vel (3 * (truncate t421)) (t495 + ((t493 * (negate (s486 - t439))) * t434))
+        wrU vel ((3 * (truncate t421)) + 1) (t496 + ((t493 * (negate (s486 - t439))) * t435))
+        wrU vel ((3 * (truncate t421)) + 2) (t497 + ((t493 * (negate (s486 - t439))) * t436))
+        wrU scalars ((6 * (truncate t421)) + 1) (t498 + ((t494 * (negate (s486 - t439))) * t437))
         pure ()
       else do
         pure ()
       pure ()
-    t499 <- rdI mouse 0
+    t499 <- rdU mouse 0
     if t499 > 0 then do
-      t500 <- rdI mouse 1
-      t501 <- rdI scalars ((6 * (truncate t500)) + 2)
+      chkI mouse 0 1 1
+      t500 <- rdU mouse 1
+      chkI scalars (6 * (truncate t500)) 2 2
+      t501 <- rdU scalars ((6 * (truncate t500)) + 2)
       if t501 > 0 then do
-        t502 <- rdI scalars ((6 * (truncate t500)) + 3)
-        t503 <- rdI params 0
-        t504 <- rdI pos (3 * (truncate t500))
-        t505 <- rdI pos ((3 * (truncate t500)) + 1)
-        t506 <- rdI pos ((3 * (truncate t500)) + 2)
-        t507 <- rdI normal (3 * (truncate t500))
-        t508 <- rdI normal ((3 * (truncate t500)) + 1)
-        t509 <- rdI normal ((3 * (truncate t500)) + 2)
-        t510 <- rdI axis (3 * (truncate t500))
-        t511 <- rdI axis ((3 * (truncate t500)) + 1)
-        t512 <- rdI axis ((3 * (truncate t500)) + 2)
+        chkI scalars (6 * (truncate t500)) 0 5
+        t502 <- rdU scalars ((6 * (truncate t500)) + 3)
+        t503 <- rdU params 0
+        chkI pos (3 * (truncate t500)) 0 2
+        t504 <- rdU pos (3 * (truncate t500))
+        t505 <- rdU pos ((3 * (truncate t500)) + 1)
+        t506 <- rdU pos ((3 * (truncate t500)) + 2)
+        chkI normal (3 * (truncate t500)) 0 2
+        t507 <- rdU normal (3 * (truncate t500))
+        t508 <- rdU normal ((3 * (truncate t500)) + 1)
+        t509 <- rdU normal ((3 * (truncate t500)) + 2)
+        chkI axis (3 * (truncate t500)) 0 2
+        t510 <- rdU axis (3 * (truncate t500))
+        t511 <- rdU axis ((3 * (truncate t500)) + 1)
+        t512 <- rdU axis ((3 * (truncate t500)) + 2)
         let !s513 = ((t508 * t512) - (t509 * t511))
         let !s514 = ((t509 * t510) - (t507 * t512))
         let !s515 = ((t507 * t511) - (t508 * t510))
-        t516 <- rdI scalars (6 * (truncate t500))
-        t517 <- rdI scalars ((6 * (truncate t500)) + 5)
-        t518 <- rdI scalars ((6 * (truncate t500)) + 2)
-        t519 <- rdI scalars ((6 * (truncate t500)) + 3)
-        t520 <- rdI pos (3 * (truncate t500))
-        t521 <- rdI pos ((3 * (truncate t500)) + 1)
-        t522 <- rdI pos ((3 * (truncate t500)) + 2)
-        t523 <- rdI normal (3 * (truncate t500))
-        t524 <- rdI normal ((3 * (truncate t500)) + 1)
-        t525 <- rdI normal ((3 * (truncate t500)) + 2)
-        t526 <- rdI axis (3 * (truncate t500))
-        t527 <- rdI axis ((3 * (truncate t500)) + 1)
-        t528 <- rdI axis ((3 * (truncate t500)) + 2)
+        t516 <- rdU scalars (6 * (truncate t500))
+        t517 <- rdU scalars ((6 * (truncate t500)) + 5)
+        t518 <- rdU scalars ((6 * (truncate t500)) + 2)
+        t519 <- rdU scalars ((6 * (truncate t500)) + 3)
+        t520 <- rdU pos (3 * (truncate t500))
+        t521 <- rdU pos ((3 * (truncate t500)) + 1)
+        t522 <- rdU pos ((3 * (truncate t500)) + 2)
+        t523 <- rdU normal (3 * (truncate t500))
+        t524 <- rdU normal ((3 * (truncate t500)) + 1)
+        t525 <- rdU normal ((3 * (truncate t500)) + 2)
+        t526 <- rdU axis (3 * (truncate t500))
+        t527 <- rdU axis ((3 * (truncate t500)) + 1)
+        t528 <- rdU axis ((3 * (truncate t500)) + 2)
         let !s529 = ((t524 * t528) - (t525 * t527))
         let !s530 = ((t525 * t526) - (t523 * t528))
         let !s531 = ((t523 * t527) - (t524 * t526))
-        t532 <- rdI scalars (6 * (truncate t500))
-        t533 <- rdI scalars ((6 * (truncate t500)) + 5)
-        t534 <- rdI scalars ((6 * (truncate t500)) + 2)
-        t535 <- rdI scalars ((6 * (truncate t500)) + 3)
-        t536 <- rdI mouse 2
-        t537 <- rdI mouse 3
+        t532 <- rdU scalars (6 * (truncate t500))
+        t533 <- rdU scalars ((6 * (truncate t500)) + 5)
+        t534 <- rdU scalars ((6 * (truncate t500)) + 2)
+        t535 <- rdU scalars ((6 * (truncate t500)) + 3)
+        chkI mouse 0 2 11
+        t536 <- rdU mouse 2
+        t537 <- rdU mouse 3
         let !t538 = (t536 / 4.0)
         let !t539 = (if (abs t538) > 0 then 1.0 else 0.0)
         let !t540 = (t532 + t537)
@@ -1314,12 +1409,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s785 = ((t539 * (t767 * (t784 * t780))) + (t579 * s725))
         let !s786 = ((t539 * (t767 * (t784 * t781))) + (t579 * s726))
         let !s787 = ((t539 * (t767 * (t784 * t782))) + (t579 * s727))
-        t788 <- rdI mouse 4
-        t789 <- rdI mouse 5
-        t790 <- rdI mouse 6
-        t791 <- rdI mouse 7
-        t792 <- rdI mouse 8
-        t793 <- rdI mouse 9
+        t788 <- rdU mouse 4
+        t789 <- rdU mouse 5
+        t790 <- rdU mouse 6
+        t791 <- rdU mouse 7
+        t792 <- rdU mouse 8
+        t793 <- rdU mouse 9
         let !t794 = (recip t501)
         let !t795 = (6.283185307179586 * t791)
         let !s796 = (recip (t503 * ((((2.0 * t794) * t792) * t795) + (t503 * ((t794 * t795) * t795)))))
@@ -1330,11 +1425,12 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !s801 = (s764 + (negate t788))
         let !s802 = (s765 + (negate t789))
         let !s803 = (s766 + (negate t790))
-        t804 <- rdI mouse 10
-        t805 <- rdI vel (3 * (truncate t500))
-        t806 <- rdI vel ((3 * (truncate t500)) + 1)
-        t807 <- rdI vel ((3 * (truncate t500)) + 2)
-        t808 <- rdI scalars ((6 * (truncate t500)) + 1)
+        t804 <- rdU mouse 10
+        chkI vel (3 * (truncate t500)) 0 2
+        t805 <- rdU vel (3 * (truncate t500))
+        t806 <- rdU vel ((3 * (truncate t500)) + 1)
+        t807 <- rdU vel ((3 * (truncate t500)) + 2)
+        t808 <- rdU scalars ((6 * (truncate t500)) + 1)
         let !t809 = (t793 * t503)
         let !t810 = (negate t809)
         let !t811 = (((((s799 * t512) - (s800 * t511)) * t507) + (((s800 * t510) - (s798 * t512)) * t508)) + (((s798 * t511) - (s799 * t510)) * t509))
@@ -1342,38 +1438,38 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
         let !t813 = (if (t812 - t809) > 0 then t809 else t812)
         let !t814 = (if (t810 - t813) > 0 then t810 else t813)
         let !s815 = (if (1.0 - (abs (t814 - t814))) > 0 then t814 else 0.0)
-        wrI mouse 10 s815
-        t816 <- rdI scalars ((6 * (truncate t500)) + 2)
-        t817 <- rdI scalars ((6 * (truncate t500)) + 3)
-        t818 <- rdI vel (3 * (truncate t500))
-        t819 <- rdI vel ((3 * (truncate t500)) + 1)
-        t820 <- rdI vel ((3 * (truncate t500)) + 2)
-        t821 <- rdI scalars ((6 * (truncate t500)) + 1)
-        wrI vel (3 * (truncate t500)) (t818 + ((t816 * (s815 - t804)) * t510))
-        wrI vel ((3 * (truncate t500)) + 1) (t819 + ((t816 * (s815 - t804)) * t511))
-        wrI vel ((3 * (truncate t500)) + 2) (t820 + ((t816 * (s815 - t804)) * t512))
-        wrI scalars ((6 * (truncate t500)) + 1) (t821 + ((t817 * (s815 - t804)) * t811))
-        t822 <- rdI mouse 11
-        t823 <- rdI vel (3 * (truncate t500))
-        t824 <- rdI vel ((3 * (truncate t500)) + 1)
-        t825 <- rdI vel ((3 * (truncate t500)) + 2)
-        t826 <- rdI scalars ((6 * (truncate t500)) + 1)
+        wrU mouse 10 s815
+        t816 <- rdU scalars ((6 * (truncate t500)) + 2)
+        t817 <- rdU scalars ((6 * (truncate t500)) + 3)
+        t818 <- rdU vel (3 * (truncate t500))
+        t819 <- rdU vel ((3 * (truncate t500)) + 1)
+        t820 <- rdU vel ((3 * (truncate t500)) + 2)
+        t821 <- rdU scalars ((6 * (truncate t500)) + 1)
+        wrU vel (3 * (truncate t500)) (t818 + ((t816 * (s815 - t804)) * t510))
+        wrU vel ((3 * (truncate t500)) + 1) (t819 + ((t816 * (s815 - t804)) * t511))
+        wrU vel ((3 * (truncate t500)) + 2) (t820 + ((t816 * (s815 - t804)) * t512))
+        wrU scalars ((6 * (truncate t500)) + 1) (t821 + ((t817 * (s815 - t804)) * t811))
+        t822 <- rdU mouse 11
+        t823 <- rdU vel (3 * (truncate t500))
+        t824 <- rdU vel ((3 * (truncate t500)) + 1)
+        t825 <- rdU vel ((3 * (truncate t500)) + 2)
+        t826 <- rdU scalars ((6 * (truncate t500)) + 1)
         let !t827 = (((((s799 * s515) - (s800 * s514)) * t507) + (((s800 * s513) - (s798 * s515)) * t508)) + (((s798 * s514) - (s799 * s513)) * t509))
         let !t828 = (t822 + ((negate ((((((s513 * t823) + (s514 * t824)) + (s515 * t825)) + (t827 * t826)) + (s797 * (((s801 * s513) + (s802 * s514)) + (s803 * s515)))) + (s796 * t822))) / (((t501 * (((s513 * s513) + (s514 * s514)) + (s515 * s515))) + ((t502 * t827) * t827)) + s796)))
         let !t829 = (if (t828 - t809) > 0 then t809 else t828)
         let !t830 = (if (t810 - t829) > 0 then t810 else t829)
         let !s831 = (if (1.0 - (abs (t830 - t830))) > 0 then t830 else 0.0)
-        wrI mouse 11 s831
-        t832 <- rdI scalars ((6 * (truncate t500)) + 2)
-        t833 <- rdI scalars ((6 * (truncate t500)) + 3)
-        t834 <- rdI vel (3 * (truncate t500))
-        t835 <- rdI vel ((3 * (truncate t500)) + 1)
-        t836 <- rdI vel ((3 * (truncate t500)) + 2)
-        t837 <- rdI scalars ((6 * (truncate t500)) + 1)
-        wrI vel (3 * (truncate t500)) (t834 + ((t832 * (s831 - t822)) * s513))
-        wrI vel ((3 * (truncate t500)) + 1) (t835 + ((t832 * (s831 - t822)) * s514))
-        wrI vel ((3 * (truncate t500)) + 2) (t836 + ((t832 * (s831 - t822)) * s515))
-        wrI scalars ((6 * (truncate t500)) + 1) (t837 + ((t833 * (s831 - t822)) * t827))
+        wrU mouse 11 s831
+        t832 <- rdU scalars ((6 * (truncate t500)) + 2)
+        t833 <- rdU scalars ((6 * (truncate t500)) + 3)
+        t834 <- rdU vel (3 * (truncate t500))
+        t835 <- rdU vel ((3 * (truncate t500)) + 1)
+        t836 <- rdU vel ((3 * (truncate t500)) + 2)
+        t837 <- rdU scalars ((6 * (truncate t500)) + 1)
+        wrU vel (3 * (truncate t500)) (t834 + ((t832 * (s831 - t822)) * s513))
+        wrU vel ((3 * (truncate t500)) + 1) (t835 + ((t832 * (s831 - t822)) * s514))
+        wrU vel ((3 * (truncate t500)) + 2) (t836 + ((t832 * (s831 - t822)) * s515))
+        wrU scalars ((6 * (truncate t500)) + 1) (t837 + ((t833 * (s831 - t822)) * t827))
         pure ()
       else do
         pure ()
@@ -1381,51 +1477,63 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
     else do
       pure ()
     pure ()
-  t838 <- rdI meta 0
+  t838 <- rdU meta 0
   loopI 0.0 t838 $ \i839 -> do
     let !d839 = fromIntegral i839 :: Double
-    wrI bodyPrev ((2 * i839) + 1) 0.0
+    chkI bodyPrev (2 * i839) 1 1
+    wrU bodyPrev ((2 * i839) + 1) 0.0
     pure ()
   loopI 0.0 t9 $ \i840 -> do
     let !d840 = fromIntegral i840 :: Double
-    t841 <- rdI contacts ((30 * i840) + 2)
-    wrI prev (4 * i840) t841
-    t842 <- rdI contacts ((30 * i840) + 3)
-    wrI prev ((4 * i840) + 1) t842
-    t843 <- rdI contacts ((30 * i840) + 24)
-    wrI prev ((4 * i840) + 2) t843
-    t844 <- rdI contacts ((30 * i840) + 25)
-    wrI prev ((4 * i840) + 3) t844
-    t845 <- rdI bodyPrev ((2 * (truncate t841)) + 1)
+    chkI contacts (30 * i840) 2 25
+    t841 <- rdU contacts ((30 * i840) + 2)
+    chkI prev (4 * i840) 0 3
+    wrU prev (4 * i840) t841
+    t842 <- rdU contacts ((30 * i840) + 3)
+    wrU prev ((4 * i840) + 1) t842
+    t843 <- rdU contacts ((30 * i840) + 24)
+    wrU prev ((4 * i840) + 2) t843
+    t844 <- rdU contacts ((30 * i840) + 25)
+    wrU prev ((4 * i840) + 3) t844
+    chkI bodyPrev (2 * (truncate t841)) 1 1
+    t845 <- rdU bodyPrev ((2 * (truncate t841)) + 1)
     if (0.5 - t845) > 0 then do
-      wrI bodyPrev (2 * (truncate t841)) d840
+      chkI bodyPrev (2 * (truncate t841)) 0 0
+      wrU bodyPrev (2 * (truncate t841)) d840
       pure ()
     else do
       pure ()
-    wrI bodyPrev ((2 * (truncate t841)) + 1) (t845 + 1.0)
+    wrU bodyPrev ((2 * (truncate t841)) + 1) (t845 + 1.0)
     pure ()
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
-  t1 <- rdI params 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
+  chkI params 0 0 0
+  t1 <- rdU params 0
   loopI 0.0 t0 $ \i2 -> do
     let !d2 = fromIntegral i2 :: Double
-    t3 <- rdI pos (3 * i2)
-    t4 <- rdI pos ((3 * i2) + 1)
-    t5 <- rdI pos ((3 * i2) + 2)
-    t6 <- rdI vel (3 * i2)
-    t7 <- rdI vel ((3 * i2) + 1)
-    t8 <- rdI vel ((3 * i2) + 2)
-    t9 <- rdI axis (3 * i2)
-    t10 <- rdI axis ((3 * i2) + 1)
-    t11 <- rdI axis ((3 * i2) + 2)
-    t12 <- rdI scalars (6 * i2)
-    t13 <- rdI scalars ((6 * i2) + 1)
-    t14 <- rdI normal (3 * i2)
-    t15 <- rdI normal ((3 * i2) + 1)
-    t16 <- rdI normal ((3 * i2) + 2)
+    chkI pos (3 * i2) 0 2
+    t3 <- rdU pos (3 * i2)
+    t4 <- rdU pos ((3 * i2) + 1)
+    t5 <- rdU pos ((3 * i2) + 2)
+    chkI vel (3 * i2) 0 2
+    t6 <- rdU vel (3 * i2)
+    t7 <- rdU vel ((3 * i2) + 1)
+    t8 <- rdU vel ((3 * i2) + 2)
+    chkI axis (3 * i2) 0 2
+    t9 <- rdU axis (3 * i2)
+    t10 <- rdU axis ((3 * i2) + 1)
+    t11 <- rdU axis ((3 * i2) + 2)
+    chkI scalars (6 * i2) 0 1
+    t12 <- rdU scalars (6 * i2)
+    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI normal (3 * i2) 0 2
+    t14 <- rdU normal (3 * i2)
+    t15 <- rdU normal ((3 * i2) + 1)
+    t16 <- rdU normal ((3 * i2) + 2)
     let !t17 = (if (abs t1) > 0 then 1.0 else 0.0)
     let !t18 = (t3 + (t1 * t6))
     let !t19 = (t5 + (t1 * t8))
@@ -1542,51 +1650,59 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
     let !t130 = (t12 + (t1 * t13))
     let !t131 = (1.0 - (abs ((((((((((((((s77 - s77) + (s78 - s78)) + (s79 - s79)) + (s116 - s116)) + (s117 - s117)) + (s118 - s118)) + (s125 - s125)) + (s126 - s126)) + (s127 - s127)) + (s90 - s90)) + (s91 - s91)) + (s92 - s92)) + (t130 - t130)) + (s128 - s128))))
     if (if (t129 - t131) > 0 then t131 else t129) > 0 then do
-      wrI pos (3 * i2) s77
-      wrI pos ((3 * i2) + 1) s78
-      wrI pos ((3 * i2) + 2) s79
-      wrI vel (3 * i2) s116
-      wrI vel ((3 * i2) + 1) s117
-      wrI vel ((3 * i2) + 2) s118
-      wrI axis (3 * i2) s125
-      wrI axis ((3 * i2) + 1) s126
-      wrI axis ((3 * i2) + 2) s127
-      wrI normal (3 * i2) s90
-      wrI normal ((3 * i2) + 1) s91
-      wrI normal ((3 * i2) + 2) s92
-      wrI scalars (6 * i2) t130
+      wrU pos (3 * i2) s77
+      wrU pos ((3 * i2) + 1) s78
+      wrU pos ((3 * i2) + 2) s79
+      wrU vel (3 * i2) s116
+      wrU vel ((3 * i2) + 1) s117
+      wrU vel ((3 * i2) + 2) s118
+      wrU axis (3 * i2) s125
+      wrU axis ((3 * i2) + 1) s126
+      wrU axis ((3 * i2) + 2) s127
+      wrU normal (3 * i2) s90
+      wrU normal ((3 * i2) + 1) s91
+      wrU normal ((3 * i2) + 2) s92
+      wrU scalars (6 * i2) t130
       pure ()
     else do
-      wrI vel (3 * i2) 0.0
-      wrI vel ((3 * i2) + 1) 0.0
-      wrI vel ((3 * i2) + 2) 0.0
-      wrI scalars ((6 * i2) + 1) 0.0
-      t132 <- rdI meta 1
-      wrI meta 1 (t132 + 1.0)
+      wrU vel (3 * i2) 0.0
+      wrU vel ((3 * i2) + 1) 0.0
+      wrU vel ((3 * i2) + 2) 0.0
+      wrU scalars ((6 * i2) + 1) 0.0
+      chkI meta 0 1 1
+      t132 <- rdU meta 1
+      wrU meta 1 (t132 + 1.0)
       pure ()
     pure ()
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
-  t0 <- rdI meta 0
+  chkI meta 0 0 0
+  t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    t2 <- rdI pos (3 * i1)
-    t3 <- rdI pos ((3 * i1) + 1)
-    t4 <- rdI pos ((3 * i1) + 2)
-    t5 <- rdI axis (3 * i1)
-    t6 <- rdI axis ((3 * i1) + 1)
-    t7 <- rdI axis ((3 * i1) + 2)
-    t8 <- rdI normal (3 * i1)
-    t9 <- rdI normal ((3 * i1) + 1)
-    t10 <- rdI normal ((3 * i1) + 2)
-    t11 <- rdI scalars (6 * i1)
-    t12 <- rdI params 10
-    t13 <- rdI scalars ((6 * i1) + 5)
-    wrI verts (3 * (97 * i1)) t2
-    wrI verts ((3 * (97 * i1)) + 1) t3
-    wrI verts ((3 * (97 * i1)) + 2) t4
+    chkI pos (3 * i1) 0 2
+    t2 <- rdU pos (3 * i1)
+    t3 <- rdU pos ((3 * i1) + 1)
+    t4 <- rdU pos ((3 * i1) + 2)
+    chkI axis (3 * i1) 0 2
+    t5 <- rdU axis (3 * i1)
+    t6 <- rdU axis ((3 * i1) + 1)
+    t7 <- rdU axis ((3 * i1) + 2)
+    chkI normal (3 * i1) 0 2
+    t8 <- rdU normal (3 * i1)
+    t9 <- rdU normal ((3 * i1) + 1)
+    t10 <- rdU normal ((3 * i1) + 2)
+    chkI scalars (6 * i1) 0 5
+    t11 <- rdU scalars (6 * i1)
+    chkI params 0 10 10
+    t12 <- rdU params 10
+    t13 <- rdU scalars ((6 * i1) + 5)
+    chkI verts (3 * (97 * i1)) 0 2
+    wrU verts (3 * (97 * i1)) t2
+    wrU verts ((3 * (97 * i1)) + 1) t3
+    wrU verts ((3 * (97 * i1)) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1595,7 +1711,8 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     v19 <- newR (sin t11)
     loopI 0.0 24.0 $ \i20 -> do
       let !d20 = fromIntegral i20 :: Double
-      t21 <- rdI radii ((24 * i1) + i20)
+      chkI radii ((24 * i1) + i20) 0 0
+      t21 <- rdU radii ((24 * i1) + i20)
       t22 <- getR v18
       t23 <- getR v19
       setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
@@ -1662,9 +1779,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s82 = ((t28 * t68) + (t56 * t8))
         let !s83 = ((t28 * t69) + (t56 * t9))
         let !s84 = ((t28 * t71) + (t56 * t10))
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
         let !t85 = (s57 + (s27 * s79))
         let !t86 = (s59 + (s27 * s81))
         let !t87 = (sqrt ((t85 * t85) + (t86 * t86)))
@@ -1719,9 +1837,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s136 = ((t28 * t122) + (t56 * s82))
         let !s137 = ((t28 * t123) + (t56 * s83))
         let !s138 = ((t28 * t125) + (t56 * s84))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
         let !t139 = (s112 + (s27 * s133))
         let !t140 = (s114 + (s27 * s135))
         let !t141 = (sqrt ((t139 * t139) + (t140 * t140)))
@@ -1776,9 +1895,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s190 = ((t28 * t176) + (t56 * s136))
         let !s191 = ((t28 * t177) + (t56 * s137))
         let !s192 = ((t28 * t179) + (t56 * s138))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
         let !t193 = (s166 + (s27 * s187))
         let !t194 = (s168 + (s27 * s189))
         let !t195 = (sqrt ((t193 * t193) + (t194 * t194)))
@@ -1833,9 +1953,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s244 = ((t28 * t230) + (t56 * s190))
         let !s245 = ((t28 * t231) + (t56 * s191))
         let !s246 = ((t28 * t233) + (t56 * s192))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
         pure ()
       else do
         let !t247 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1874,18 +1995,22 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s280 = (if t279 > 0 then t276 else t2)
         let !s281 = (if t279 > 0 then t277 else t3)
         let !s282 = (if t279 > 0 then t278 else t4)
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s280
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s281
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s282
-        wrI verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s280 + (negate t2))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s281 + (negate t3))))
-        wrI verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s282 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s280 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s281 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s282 + (negate t4))))
-        wrI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s280 + (negate t2))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s281 + (negate t3))))
-        wrI verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s282 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s280
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s281
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s282
+        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
+        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s280 + (negate t2))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s281 + (negate t3))))
+        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s282 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s280 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s281 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s282 + (negate t4))))
+        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
+        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s280 + (negate t2))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s281 + (negate t3))))
+        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s282 + (negate t4))))
         pure ()
       pure ()
     pure ()

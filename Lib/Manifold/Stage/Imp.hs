@@ -122,7 +122,10 @@ instance Imp Native where
   {-# INLINE share #-}
   shareAll xs = foldr seq (pure xs) xs
   {-# INLINE shareAll #-}
-  newRef !x = Native (NativeRef <$> MV.replicate 1 x)
+  newRef !x = Native $ do
+    r <- MV.unsafeNew 1
+    MV.unsafeWrite r 0 x
+    pure (NativeRef r)
   {-# INLINE newRef #-}
   readRef (NativeRef r) = Native (MV.unsafeRead r 0)
   {-# INLINE readRef #-}
@@ -160,6 +163,11 @@ data StageState = StageState
   , ssOrder :: [String] -- ^ their names, latest first
   , ssTarget :: !Target -- ^ JavaScript, or Haskell for the compiled native step
   , ssIntVars :: M.Map String String -- ^ Haskell: a loop's number and its 'Int' counter
+  , ssChecks :: M.Map (String, String) [(Int, Bool)]
+    -- ^ Haskell: the index checks in force, by array and base index, and
+    -- whether the current block made them (see 'arrayAccess')
+  , ssCheckRanges :: IM.IntMap (Int, Int) -- ^ each check's offsets, lowest and highest
+  , ssNextCheck :: !Int
   }
 
 newtype Staged a = Staged (State StageState a)
@@ -221,10 +229,11 @@ block :: Staged () -> Staged ()
 block body = do
   outer <- Staged get
   Staged (put outer { ssDepth = ssDepth outer + 1 })
+  Staged (modify' (\s -> s { ssChecks = M.map (map (\(c, _) -> (c, False))) (ssChecks s) }))
   body
   hs <- isHaskell
   when hs (emitLine "pure ()")
-  Staged (modify' (\s -> s { ssScope = ssScope outer, ssDepth = ssDepth outer }))
+  Staged (modify' (\s -> s { ssScope = ssScope outer, ssDepth = ssDepth outer, ssChecks = ssChecks outer }))
 
 instance Imp Staged where
   type Scalar Staged = E
@@ -270,16 +279,29 @@ instance Imp Staged where
           Staged (modify' (\s -> s { ssLines = elseLines ++ ssLines s }))
           emitLine "}"
   readArray (StagedArray a) (IxE i) = do
-    i' <- indexExpression i
-    t <- fresh "t"
     hs <- isHaskell
-    emitLine (if hs then t ++ " <- rdI " ++ a ++ " " ++ i' else "const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
-    pure (sym t)
+    if hs
+      then do
+        i' <- arrayAccess a i
+        t <- fresh "t"
+        emitLine (t ++ " <- rdU " ++ a ++ " " ++ i')
+        pure (sym t)
+      else do
+        i' <- indexExpression i
+        t <- fresh "t"
+        emitLine ("const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
+        pure (sym t)
   writeArray (StagedArray a) (IxE i) x = do
-    i' <- indexExpression i
-    x' <- expression x
     hs <- isHaskell
-    emitLine (if hs then "wrI " ++ a ++ " " ++ i' ++ " " ++ x' else a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
+    if hs
+      then do
+        i' <- arrayAccess a i
+        x' <- expression x
+        emitLine ("wrU " ++ a ++ " " ++ i' ++ " " ++ x')
+      else do
+        i' <- indexExpression i
+        x' <- expression x
+        emitLine (a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
   share = bindAs "s"
   shareAll xs = do
     _ <- expressions (foldr (:) [] xs)
@@ -306,8 +328,8 @@ instance Imp Staged where
     st <- Staged get
     let params = ["a" ++ show k | k <- [0 .. length args - 1]]
         Staged m = body (map sym params)
-        inner = execState (m >> unStaged closeFunction) st { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1 }
-        text = unlines (functionHead (ssTarget st) name (ssArrays st) params : reverse (ssLines inner) ++ functionEnd (ssTarget st))
+        inner = execState (m >> unStaged closeFunction) st { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1, ssChecks = M.empty }
+        text = unlines (functionHead (ssTarget st) name (ssArrays st) params : map (fillChecks inner) (reverse (ssLines inner)) ++ functionEnd (ssTarget st))
     case M.lookup name (ssSubroutines inner) of
       Just old | old /= text -> error ("subroutine " ++ name ++ ": two different bodies under one name")
       _ -> pure ()
@@ -326,19 +348,89 @@ instance Imp Staged where
 indexExpression :: E -> Staged String
 indexExpression e = do
   s <- Staged get
-  if ssTarget s == Haskell && wholeArithmetic (nodeId e)
+  if ssTarget s == Haskell && wholeIndex (nodeId e)
     then pure (intExpression (ssIntVars s) (nodeId e))
     else do
       d <- expression e
       pure (if ssTarget s == Haskell then "(truncate " ++ d ++ ")" else d)
+
+-- | Sums and products of whole numbers, loop counters and stored whole
+-- numbers: an index computed exactly in 'Int' arithmetic.
+wholeIndex :: Int -> Bool
+wholeIndex i = case nodeById i of
+  Lit w -> isWhole (castWord64ToDouble w)
+  Sym _ -> True
+  Bin op a b -> op `elem` [Add, Sub, Mul] && wholeIndex a && wholeIndex b
+  Un Neg a -> wholeIndex a
+  _ -> False
+  where isWhole v = v == fromIntegral (truncate v :: Int) && abs v < 2 ^ (52 :: Int)
+
+-- | Haskell: an array index, checked. The printed step reads a row of an
+-- array (a contact's thirty numbers, a body's three coordinates) at one
+-- base index plus constant offsets; the first access to a row in a block
+-- prints one check (@chkI array base lowest highest@) that covers every
+-- offset the block later reads or writes at that base, and the accesses
+-- themselves go unchecked. A check per access (the vector library's)
+-- made the solver phase half as slow again. An access inside a nested
+-- block (under a condition, in a loop) is covered by an enclosing block's
+-- check only within the offsets that block reads anyway; beyond them it gets
+-- its own check: one made before the condition must not fail for an access
+-- the condition would skip.
+-- The base is printed from names that are bound once, so the same text is
+-- the same number throughout the block.
+arrayAccess :: String -> E -> Staged String
+arrayAccess arr e = do
+  counters <- Staged (gets ssIntVars)
+  let (baseNode, offset) = splitOffset (nodeId e)
+  base <- case baseNode of
+    Nothing -> pure "0"
+    Just b | wholeIndex b -> pure (intExpression counters b)
+           | otherwise -> (\d -> "(truncate " ++ d ++ ")") <$> expression e
+  let key = (arr, base)
+  checks <- Staged (gets ssChecks)
+  ranges <- Staged (gets ssCheckRanges)
+  let covered c = maybe False (\(lo, hi) -> lo <= offset && offset <= hi) (IM.lookup c ranges)
+      inForce = M.findWithDefault [] key checks
+  case (any (covered . fst) inForce, [ c | (c, True) <- inForce ]) of
+    (True, _) -> pure ()
+    (False, c : _) -> Staged $ modify' $ \st ->
+      st { ssCheckRanges = IM.adjust (\(lo, hi) -> (min lo offset, max hi offset)) c (ssCheckRanges st) }
+    (False, []) -> do
+      c <- Staged $ state $ \st ->
+        ( ssNextCheck st
+        , st { ssNextCheck = ssNextCheck st + 1
+             , ssChecks = M.insertWith (++) key [(ssNextCheck st, True)] (ssChecks st)
+             , ssCheckRanges = IM.insert (ssNextCheck st) (offset, offset) (ssCheckRanges st) } )
+      emitLine ("chkI " ++ arr ++ " " ++ base ++ " " ++ checkPlaceholder c)
+  pure (if offset == 0 then base else if base == "0" then intLiteral offset else "(" ++ base ++ " + " ++ intLiteral offset ++ ")")
   where
-    wholeArithmetic i = case nodeById i of
-      Lit w -> isWhole (castWord64ToDouble w)
-      Sym _ -> True
-      Bin op a b -> op `elem` [Add, Sub, Mul] && wholeArithmetic a && wholeArithmetic b
-      Un Neg a -> wholeArithmetic a
-      _ -> False
-    isWhole v = v == fromIntegral (truncate v :: Int) && abs v < 2 ^ (52 :: Int)
+    intLiteral k = if k < 0 then "(" ++ show k ++ ")" else show k
+    -- an index as a base node and a whole-number offset; splitting only
+    -- whole-number arithmetic (truncate (b + k) is not truncate b + k)
+    splitOffset :: Int -> (Maybe Int, Int)
+    splitOffset i
+      | not (wholeIndex i) = (Just i, 0)
+      | otherwise = case nodeById i of
+          Lit w -> (Nothing, truncate (castWord64ToDouble w))
+          Bin Add a b | Lit w <- nodeById b -> let (x, k) = splitOffset a in (x, k + truncate (castWord64ToDouble w))
+                      | Lit w <- nodeById a -> let (x, k) = splitOffset b in (x, k + truncate (castWord64ToDouble w))
+          Bin Sub a b | Lit w <- nodeById b -> let (x, k) = splitOffset a in (x, k - truncate (castWord64ToDouble w))
+          _ -> (Just i, 0)
+
+checkPlaceholder :: Int -> String
+checkPlaceholder c = "@check" ++ show c ++ "@"
+
+-- | Replace the check placeholders of a printed line by their offsets.
+fillChecks :: StageState -> String -> String
+fillChecks s = go
+  where
+    go ('@' : 'c' : 'h' : 'e' : 'c' : 'k' : rest)
+      | (digits, '@' : rest') <- span (`elem` ['0' .. '9']) rest
+      , Just (lo, hi) <- IM.lookup (read digits) (ssCheckRanges s)
+      = show' lo ++ " " ++ show' hi ++ go rest'
+    go (ch : rest) = ch : go rest
+    go [] = []
+    show' k = if k < 0 then "(" ++ show k ++ ")" else show k
 
 -- | A whole-number expression (a node) as 'Int' arithmetic: loop numbers by
 -- their counters, other names (stored whole numbers) truncated.
@@ -386,7 +478,7 @@ stageProcedures = stageProceduresFor JavaScript
 
 -- | 'stageProcedures' in a target language: JavaScript functions, or
 -- Haskell functions in 'IO' over the arrays (the definitions
--- "Manifold.Compiled.Runtime" provides: @loop@, @rd@, @wr@, @newR@, @getR@,
+-- "Manifold.Compiled.Runtime" provides: @loopI@, @chkI@, @rdU@, @wrU@, @newR@, @getR@,
 -- @setR@, @floorF@, and the array type @Arr@).
 stageProceduresFor :: Target -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
 stageProceduresFor target = go M.empty
@@ -394,9 +486,9 @@ stageProceduresFor target = go M.empty
     go _ [] = []
     go seen ((p, body) : rest) =
       let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
-          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty [] target M.empty
+          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty [] target M.empty M.empty IM.empty 0
           s1 = execState (m >> unStaged closeFunction) s0
-          main = unlines (functionHead target (procName p) (procArrays p) (procScalars p) : reverse (ssLines s1) ++ functionEnd target)
+          main = unlines (functionHead target (procName p) (procArrays p) (procScalars p) : map (fillChecks s1) (reverse (ssLines s1)) ++ functionEnd target)
           fresh = [ (n, t) | n <- reverse (ssOrder s1), let t = ssSubroutines s1 M.! n
                            , case M.lookup n seen of
                                Nothing -> True
