@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -202,17 +202,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t67 <- rdU verts (3 * (97 * i31))
-    t68 <- rdU verts ((3 * (97 * i31)) + 1)
-    t69 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t67 <- rdU verts (291 * i31)
+    t68 <- rdU verts ((291 * i31) + 1)
+    t69 <- rdU verts ((291 * i31) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
-      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i71)) 12 14
+      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
+      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
+      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
       chkI radii ((24 * i31) + i71) 0 0
       t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
@@ -242,14 +242,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
-            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
-            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
+            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
+            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
+            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
+            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
+            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
+            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
@@ -303,10 +302,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
-                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i89)) 3 5
+                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
+                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
+                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
                 t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -2418,10 +2417,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -2552,10 +2551,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s136 = ((t28 * t122) + (t110 * t8))
         let !s137 = ((t28 * t123) + (t110 * t9))
         let !s138 = ((t28 * t125) + (t110 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s111 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s112 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s111 - s111) + (s112 - s112)) + (s113 - s113)))) > 0 then s113 else t4)
         let !t139 = (s111 + (s27 * s133))
         let !t140 = ((abs t139) - 0.6)
         let !t141 = (negate t140)
@@ -2664,10 +2663,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s244 = ((t28 * t230) + (t110 * s136))
         let !s245 = ((t28 * t231) + (t110 * s137))
         let !s246 = ((t28 * t233) + (t110 * s138))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
         let !t247 = (s220 + (s27 * s241))
         let !t248 = ((abs t247) - 0.6)
         let !t249 = (negate t248)
@@ -2776,10 +2774,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s352 = ((t28 * t338) + (t110 * s244))
         let !s353 = ((t28 * t339) + (t110 * s245))
         let !s354 = ((t28 * t341) + (t110 * s246))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s328 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s329 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s330 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s328 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s329 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s328 - s328) + (s329 - s329)) + (s330 - s330)))) > 0 then s330 else t4)
         let !t355 = (s328 + (s27 * s349))
         let !t356 = ((abs t355) - 0.6)
         let !t357 = (negate t356)
@@ -2888,10 +2885,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s460 = ((t28 * t446) + (t110 * s352))
         let !s461 = ((t28 * t447) + (t110 * s353))
         let !s462 = ((t28 * t449) + (t110 * s354))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s436 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s437 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s438 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s436 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s437 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s436 - s436) + (s437 - s437)) + (s438 - s438)))) > 0 then s438 else t4)
         pure ()
       else do
         let !t463 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2984,22 +2980,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s550 = (if t549 > 0 then t546 else t2)
         let !s551 = (if t549 > 0 then t547 else t3)
         let !s552 = (if t549 > 0 then t548 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s550
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s551
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s552
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s550 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s551 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s552 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s550 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s551 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s552 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s550 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s551 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s552 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s550
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s551
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s552
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s550 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s551 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s552 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s550 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s551 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s552 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s550 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s551 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s552 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -210,10 +210,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
-      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
       let !s76 = (1.0 - (sqrt ((t73 * t73) + (t75 * t75))))
       t77 <- getR v70
       if ((negate s76) - t77) > 0 then do
@@ -226,10 +226,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t78 <- getR v70
     if t78 > 0 then do
       t79 <- getR v71
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) 0 2
-      t80 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3))
-      t81 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 1)
-      t82 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t79)) + (291 * i31)) 12 14
+      t80 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 12)
+      t81 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 13)
+      t82 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 14)
       let !t83 = (recip (2.0 * (sqrt ((t80 * t80) + (t82 * t82)))))
       let !t84 = (negate (t83 * (t80 + t80)))
       let !t85 = (negate (t83 * (t82 + t82)))
@@ -246,10 +246,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v96 <- newR (-1.0)
       loopI 0.0 24.0 $ \i97 -> do
         let !d97 = fromIntegral i97 :: Double
-        chkI verts (3 * ((((97 * i31) + 1) + (i97 * 4)) + 3)) 0 2
-        t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i97 * 4)) + 3))
-        t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i97 * 4)) + 3)) + 1)
-        t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i97 * 4)) + 3)) + 2)
+        chkI verts ((291 * i31) + (12 * i97)) 12 14
+        t98 <- rdU verts (((291 * i31) + (12 * i97)) + 12)
+        t99 <- rdU verts (((291 * i31) + (12 * i97)) + 13)
+        t100 <- rdU verts (((291 * i31) + (12 * i97)) + 14)
         if (negate (1.0 - (sqrt ((t98 * t98) + (t100 * t100))))) > 0 then do
           let !s101 = (((t98 * s90) + (t99 * s91)) + (t100 * s92))
           t102 <- getR v93
@@ -272,10 +272,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t104 <- getR v95
       t105 <- getR v96
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3)) 0 2
-      t106 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3))
-      t107 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3)) + 1)
-      t108 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t104) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t104)) + (291 * i31)) 12 14
+      t106 <- rdU verts (((12 * (truncate t104)) + (291 * i31)) + 12)
+      t107 <- rdU verts (((12 * (truncate t104)) + (291 * i31)) + 13)
+      t108 <- rdU verts (((12 * (truncate t104)) + (291 * i31)) + 14)
       let !t109 = (recip (2.0 * (sqrt ((t106 * t106) + (t108 * t108)))))
       let !s110 = (negate (t109 * (t106 + t106)))
       let !s111 = (negate (t109 * (t108 + t108)))
@@ -380,10 +380,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         wrU meta 6 (t160 + 1.0)
         pure ()
       if (abs (t105 - t104)) > 0 then do
-        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3)) 0 2
-        t161 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3))
-        t162 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3)) + 1)
-        t163 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t105) * 4)) + 3)) + 2)
+        chkI verts ((12 * (truncate t105)) + (291 * i31)) 12 14
+        t161 <- rdU verts (((12 * (truncate t105)) + (291 * i31)) + 12)
+        t162 <- rdU verts (((12 * (truncate t105)) + (291 * i31)) + 13)
+        t163 <- rdU verts (((12 * (truncate t105)) + (291 * i31)) + 14)
         let !t164 = (recip (2.0 * (sqrt ((t161 * t161) + (t163 * t163)))))
         let !s165 = (negate (t164 * (t161 + t161)))
         let !s166 = (negate (t164 * (t163 + t163)))
@@ -493,19 +493,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t216 <- rdU verts (3 * (97 * i31))
-    t217 <- rdU verts ((3 * (97 * i31)) + 1)
-    t218 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t216 <- rdU verts (291 * i31)
+    t217 <- rdU verts ((291 * i31) + 1)
+    t218 <- rdU verts ((291 * i31) + 2)
     v219 <- newR 1.0
     loopI 0.0 24.0 $ \i220 -> do
       let !d220 = fromIntegral i220 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i220 * 4)) + 3)) 0 2
-      t221 <- rdU verts (3 * ((((97 * i31) + 1) + (i220 * 4)) + 3))
-      t222 <- rdU verts ((3 * ((((97 * i31) + 1) + (i220 * 4)) + 3)) + 1)
-      t223 <- rdU verts ((3 * ((((97 * i31) + 1) + (i220 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i220) 0 0
-      t224 <- rdU radii ((24 * i31) + i220)
+      chkI verts ((12 * i220) + (291 * i31)) 12 14
+      t221 <- rdU verts (((12 * i220) + (291 * i31)) + 12)
+      t222 <- rdU verts (((12 * i220) + (291 * i31)) + 13)
+      t223 <- rdU verts (((12 * i220) + (291 * i31)) + 14)
+      chkI radii (i220 + (24 * i31)) 0 0
+      t224 <- rdU radii (i220 + (24 * i31))
       t225 <- getR v219
       let !t226 = (t221 + (negate t216))
       let !t227 = (t222 + (negate t217))
@@ -524,8 +524,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v237 <- newR 0.0
       loopI 0.0 24.0 $ \i238 -> do
         let !d238 = fromIntegral i238 :: Double
-        chkI radii ((24 * i31) + i238) 0 0
-        t239 <- rdU radii ((24 * i31) + i238)
+        chkI radii (i238 + (24 * i31)) 0 0
+        t239 <- rdU radii (i238 + (24 * i31))
         loopI 6.0 12.0 $ \i240 -> do
           let !d240 = fromIntegral i240 :: Double
           let !t241 = (d238 + d240)
@@ -533,14 +533,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t242 <- rdU radii (truncate ((24.0 * d31) + (t241 - (24.0 * (floorF (t241 / 24.0))))))
           loopI 1.0 4.0 $ \i243 -> do
             let !d243 = fromIntegral i243 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1))) 0 2
-            t244 <- rdU verts (3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1)))
-            t245 <- rdU verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1))) + 1)
-            t246 <- rdU verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + (i243 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i238 * 4)) + i243)) 0 2
-            t247 <- rdU verts (3 * ((((97 * i31) + 1) + (i238 * 4)) + i243))
-            t248 <- rdU verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + i243)) + 1)
-            t249 <- rdU verts ((3 * ((((97 * i31) + 1) + (i238 * 4)) + i243)) + 2)
+            chkI verts ((12 * i238) + (3 * i243) + (291 * i31)) 0 5
+            t244 <- rdU verts ((12 * i238) + (3 * i243) + (291 * i31))
+            t245 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 1)
+            t246 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 2)
+            t247 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 3)
+            t248 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 4)
+            t249 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i250 -> do
               let !d250 = fromIntegral i250 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0)))) 0 0
@@ -594,10 +593,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t293 = ((0.3 * ((if (t242 - t239) > 0 then t239 else t242) / 4.0)) - (sqrt (((t290 * t290) + (t291 * t291)) + (t292 * t292))))
               if (if (t289 - t293) > 0 then t293 else t289) > 0 then do
                 setR v231 (0.5 * ((t239 - ((t239 * (d243 + t286)) / 4.0)) + (t242 - ((t242 * (d250 + t288)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i238 * 4))) 0 2
-                t294 <- rdU verts (3 * (((97 * i31) + 1) + (i238 * 4)))
-                t295 <- rdU verts ((3 * (((97 * i31) + 1) + (i238 * 4))) + 1)
-                t296 <- rdU verts ((3 * (((97 * i31) + 1) + (i238 * 4))) + 2)
+                chkI verts ((12 * i238) + (291 * i31)) 3 5
+                t294 <- rdU verts (((12 * i238) + (291 * i31)) + 3)
+                t295 <- rdU verts (((12 * i238) + (291 * i31)) + 4)
+                t296 <- rdU verts (((12 * i238) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)))) 0 0
                 t297 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1580,10 +1579,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1635,10 +1634,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1668,10 +1667,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1701,10 +1699,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1734,10 +1731,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1762,22 +1758,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

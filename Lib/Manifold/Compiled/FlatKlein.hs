@@ -166,8 +166,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
             chkI grid (truncate s55) 0 0
             t56 <- rdU grid (truncate s55)
-            chkI grid ((truncate t42) + (truncate s55)) 0 0
-            t57 <- rdU grid ((truncate t42) + (truncate s55))
+            chkI grid ((truncate s55) + (truncate t42)) 0 0
+            t57 <- rdU grid ((truncate s55) + (truncate t42))
             loopI t57 t56 $ \i58 -> do
               let !d58 = fromIntegral i58 :: Double
               chkI items i58 0 0
@@ -232,8 +232,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
             chkI grid (truncate s90) 0 0
             t91 <- rdU grid (truncate s90)
-            chkI grid ((truncate t77) + (truncate s90)) 0 0
-            t92 <- rdU grid ((truncate t77) + (truncate s90))
+            chkI grid ((truncate s90) + (truncate t77)) 0 0
+            t92 <- rdU grid ((truncate s90) + (truncate t77))
             loopI t92 t91 $ \i93 -> do
               let !d93 = fromIntegral i93 :: Double
               chkI items i93 0 0
@@ -298,8 +298,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s125 = (t124 - (t112 * (floorF (t124 / t112))))
             chkI grid (truncate s125) 0 0
             t126 <- rdU grid (truncate s125)
-            chkI grid ((truncate t112) + (truncate s125)) 0 0
-            t127 <- rdU grid ((truncate t112) + (truncate s125))
+            chkI grid ((truncate s125) + (truncate t112)) 0 0
+            t127 <- rdU grid ((truncate s125) + (truncate t112))
             loopI t127 t126 $ \i128 -> do
               let !d128 = fromIntegral i128 :: Double
               chkI items i128 0 0
@@ -364,8 +364,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s160 = (t159 - (t147 * (floorF (t159 / t147))))
             chkI grid (truncate s160) 0 0
             t161 <- rdU grid (truncate s160)
-            chkI grid ((truncate t147) + (truncate s160)) 0 0
-            t162 <- rdU grid ((truncate t147) + (truncate s160))
+            chkI grid ((truncate s160) + (truncate t147)) 0 0
+            t162 <- rdU grid ((truncate s160) + (truncate t147))
             loopI t162 t161 $ \i163 -> do
               let !d163 = fromIntegral i163 :: Double
               chkI items i163 0 0
@@ -427,8 +427,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s192 = (t191 - (t179 * (floorF (t191 / t179))))
             chkI grid (truncate s192) 0 0
             t193 <- rdU grid (truncate s192)
-            chkI grid ((truncate t179) + (truncate s192)) 0 0
-            t194 <- rdU grid ((truncate t179) + (truncate s192))
+            chkI grid ((truncate s192) + (truncate t179)) 0 0
+            t194 <- rdU grid ((truncate s192) + (truncate t179))
             loopI t194 t193 $ \i195 -> do
               let !d195 = fromIntegral i195 :: Double
               chkI items i195 0 0
@@ -490,8 +490,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s224 = (t223 - (t211 * (floorF (t223 / t211))))
             chkI grid (truncate s224) 0 0
             t225 <- rdU grid (truncate s224)
-            chkI grid ((truncate t211) + (truncate s224)) 0 0
-            t226 <- rdU grid ((truncate t211) + (truncate s224))
+            chkI grid ((truncate s224) + (truncate t211)) 0 0
+            t226 <- rdU grid ((truncate s224) + (truncate t211))
             loopI t226 t225 $ \i227 -> do
               let !d227 = fromIntegral i227 :: Double
               chkI items i227 0 0
@@ -556,8 +556,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s259 = (t258 - (t246 * (floorF (t258 / t246))))
             chkI grid (truncate s259) 0 0
             t260 <- rdU grid (truncate s259)
-            chkI grid ((truncate t246) + (truncate s259)) 0 0
-            t261 <- rdU grid ((truncate t246) + (truncate s259))
+            chkI grid ((truncate s259) + (truncate t246)) 0 0
+            t261 <- rdU grid ((truncate s259) + (truncate t246))
             loopI t261 t260 $ \i262 -> do
               let !d262 = fromIntegral i262 :: Double
               chkI items i262 0 0
@@ -622,8 +622,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s294 = (t293 - (t281 * (floorF (t293 / t281))))
             chkI grid (truncate s294) 0 0
             t295 <- rdU grid (truncate s294)
-            chkI grid ((truncate t281) + (truncate s294)) 0 0
-            t296 <- rdU grid ((truncate t281) + (truncate s294))
+            chkI grid ((truncate s294) + (truncate t281)) 0 0
+            t296 <- rdU grid ((truncate s294) + (truncate t281))
             loopI t296 t295 $ \i297 -> do
               let !d297 = fromIntegral i297 :: Double
               chkI items i297 0 0
@@ -688,8 +688,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s329 = (t328 - (t316 * (floorF (t328 / t316))))
             chkI grid (truncate s329) 0 0
             t330 <- rdU grid (truncate s329)
-            chkI grid ((truncate t316) + (truncate s329)) 0 0
-            t331 <- rdU grid ((truncate t316) + (truncate s329))
+            chkI grid ((truncate s329) + (truncate t316)) 0 0
+            t331 <- rdU grid ((truncate s329) + (truncate t316))
             loopI t331 t330 $ \i332 -> do
               let !d332 = fromIntegral i332 :: Double
               chkI items i332 0 0
@@ -728,17 +728,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t345 <- rdU verts (3 * (97 * i31))
-    t346 <- rdU verts ((3 * (97 * i31)) + 1)
-    t347 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t345 <- rdU verts (291 * i31)
+    t346 <- rdU verts ((291 * i31) + 1)
+    t347 <- rdU verts ((291 * i31) + 2)
     v348 <- newR 1.0
     loopI 0.0 24.0 $ \i349 -> do
       let !d349 = fromIntegral i349 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) 0 2
-      t350 <- rdU verts (3 * ((((97 * i31) + 1) + (i349 * 4)) + 3))
-      t351 <- rdU verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 1)
-      t352 <- rdU verts ((3 * ((((97 * i31) + 1) + (i349 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i349)) 12 14
+      t350 <- rdU verts (((291 * i31) + (12 * i349)) + 12)
+      t351 <- rdU verts (((291 * i31) + (12 * i349)) + 13)
+      t352 <- rdU verts (((291 * i31) + (12 * i349)) + 14)
       chkI radii ((24 * i31) + i349) 0 0
       t353 <- rdU radii ((24 * i31) + i349)
       t354 <- getR v348
@@ -768,14 +768,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t371 <- rdU radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0))))))
           loopI 1.0 4.0 $ \i372 -> do
             let !d372 = fromIntegral i372 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) 0 2
-            t373 <- rdU verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1)))
-            t374 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 1)
-            t375 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + (i372 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) 0 2
-            t376 <- rdU verts (3 * ((((97 * i31) + 1) + (i367 * 4)) + i372))
-            t377 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 1)
-            t378 <- rdU verts ((3 * ((((97 * i31) + 1) + (i367 * 4)) + i372)) + 2)
+            chkI verts ((291 * i31) + (12 * i367) + (3 * i372)) 0 5
+            t373 <- rdU verts ((291 * i31) + (12 * i367) + (3 * i372))
+            t374 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 1)
+            t375 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 2)
+            t376 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 3)
+            t377 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 4)
+            t378 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 5)
             loopI 1.0 4.0 $ \i379 -> do
               let !d379 = fromIntegral i379 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0)))) 0 0
@@ -829,10 +828,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t422 = ((0.3 * ((if (t371 - t368) > 0 then t368 else t371) / 4.0)) - (sqrt (((t419 * t419) + (t420 * t420)) + (t421 * t421))))
               if (if (t418 - t422) > 0 then t422 else t418) > 0 then do
                 setR v360 (0.5 * ((t368 - ((t368 * (d372 + t415)) / 4.0)) + (t371 - ((t371 * (d379 + t417)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i367 * 4))) 0 2
-                t423 <- rdU verts (3 * (((97 * i31) + 1) + (i367 * 4)))
-                t424 <- rdU verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 1)
-                t425 <- rdU verts ((3 * (((97 * i31) + 1) + (i367 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i367)) 3 5
+                t423 <- rdU verts (((291 * i31) + (12 * i367)) + 3)
+                t424 <- rdU verts (((291 * i31) + (12 * i367)) + 4)
+                t425 <- rdU verts (((291 * i31) + (12 * i367)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)))) 0 0
                 t426 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1935,10 +1934,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1990,10 +1989,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -2023,10 +2022,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -2056,10 +2054,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -2089,10 +2086,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2117,22 +2113,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

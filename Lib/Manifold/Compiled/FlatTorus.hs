@@ -166,8 +166,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
             chkI grid (truncate s55) 0 0
             t56 <- rdU grid (truncate s55)
-            chkI grid ((truncate t42) + (truncate s55)) 0 0
-            t57 <- rdU grid ((truncate t42) + (truncate s55))
+            chkI grid ((truncate s55) + (truncate t42)) 0 0
+            t57 <- rdU grid ((truncate s55) + (truncate t42))
             loopI t57 t56 $ \i58 -> do
               let !d58 = fromIntegral i58 :: Double
               chkI items i58 0 0
@@ -232,8 +232,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
             chkI grid (truncate s90) 0 0
             t91 <- rdU grid (truncate s90)
-            chkI grid ((truncate t77) + (truncate s90)) 0 0
-            t92 <- rdU grid ((truncate t77) + (truncate s90))
+            chkI grid ((truncate s90) + (truncate t77)) 0 0
+            t92 <- rdU grid ((truncate s90) + (truncate t77))
             loopI t92 t91 $ \i93 -> do
               let !d93 = fromIntegral i93 :: Double
               chkI items i93 0 0
@@ -295,8 +295,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s122 = (t121 - (t109 * (floorF (t121 / t109))))
             chkI grid (truncate s122) 0 0
             t123 <- rdU grid (truncate s122)
-            chkI grid ((truncate t109) + (truncate s122)) 0 0
-            t124 <- rdU grid ((truncate t109) + (truncate s122))
+            chkI grid ((truncate s122) + (truncate t109)) 0 0
+            t124 <- rdU grid ((truncate s122) + (truncate t109))
             loopI t124 t123 $ \i125 -> do
               let !d125 = fromIntegral i125 :: Double
               chkI items i125 0 0
@@ -361,8 +361,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s157 = (t156 - (t144 * (floorF (t156 / t144))))
             chkI grid (truncate s157) 0 0
             t158 <- rdU grid (truncate s157)
-            chkI grid ((truncate t144) + (truncate s157)) 0 0
-            t159 <- rdU grid ((truncate t144) + (truncate s157))
+            chkI grid ((truncate s157) + (truncate t144)) 0 0
+            t159 <- rdU grid ((truncate s157) + (truncate t144))
             loopI t159 t158 $ \i160 -> do
               let !d160 = fromIntegral i160 :: Double
               chkI items i160 0 0
@@ -424,8 +424,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s189 = (t188 - (t176 * (floorF (t188 / t176))))
             chkI grid (truncate s189) 0 0
             t190 <- rdU grid (truncate s189)
-            chkI grid ((truncate t176) + (truncate s189)) 0 0
-            t191 <- rdU grid ((truncate t176) + (truncate s189))
+            chkI grid ((truncate s189) + (truncate t176)) 0 0
+            t191 <- rdU grid ((truncate s189) + (truncate t176))
             loopI t191 t190 $ \i192 -> do
               let !d192 = fromIntegral i192 :: Double
               chkI items i192 0 0
@@ -487,8 +487,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s221 = (t220 - (t208 * (floorF (t220 / t208))))
             chkI grid (truncate s221) 0 0
             t222 <- rdU grid (truncate s221)
-            chkI grid ((truncate t208) + (truncate s221)) 0 0
-            t223 <- rdU grid ((truncate t208) + (truncate s221))
+            chkI grid ((truncate s221) + (truncate t208)) 0 0
+            t223 <- rdU grid ((truncate s221) + (truncate t208))
             loopI t223 t222 $ \i224 -> do
               let !d224 = fromIntegral i224 :: Double
               chkI items i224 0 0
@@ -553,8 +553,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s256 = (t255 - (t243 * (floorF (t255 / t243))))
             chkI grid (truncate s256) 0 0
             t257 <- rdU grid (truncate s256)
-            chkI grid ((truncate t243) + (truncate s256)) 0 0
-            t258 <- rdU grid ((truncate t243) + (truncate s256))
+            chkI grid ((truncate s256) + (truncate t243)) 0 0
+            t258 <- rdU grid ((truncate s256) + (truncate t243))
             loopI t258 t257 $ \i259 -> do
               let !d259 = fromIntegral i259 :: Double
               chkI items i259 0 0
@@ -616,8 +616,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s288 = (t287 - (t275 * (floorF (t287 / t275))))
             chkI grid (truncate s288) 0 0
             t289 <- rdU grid (truncate s288)
-            chkI grid ((truncate t275) + (truncate s288)) 0 0
-            t290 <- rdU grid ((truncate t275) + (truncate s288))
+            chkI grid ((truncate s288) + (truncate t275)) 0 0
+            t290 <- rdU grid ((truncate s288) + (truncate t275))
             loopI t290 t289 $ \i291 -> do
               let !d291 = fromIntegral i291 :: Double
               chkI items i291 0 0
@@ -682,8 +682,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
             let !s323 = (t322 - (t310 * (floorF (t322 / t310))))
             chkI grid (truncate s323) 0 0
             t324 <- rdU grid (truncate s323)
-            chkI grid ((truncate t310) + (truncate s323)) 0 0
-            t325 <- rdU grid ((truncate t310) + (truncate s323))
+            chkI grid ((truncate s323) + (truncate t310)) 0 0
+            t325 <- rdU grid ((truncate s323) + (truncate t310))
             loopI t325 t324 $ \i326 -> do
               let !d326 = fromIntegral i326 :: Double
               chkI items i326 0 0
@@ -722,17 +722,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t339 <- rdU verts (3 * (97 * i31))
-    t340 <- rdU verts ((3 * (97 * i31)) + 1)
-    t341 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t339 <- rdU verts (291 * i31)
+    t340 <- rdU verts ((291 * i31) + 1)
+    t341 <- rdU verts ((291 * i31) + 2)
     v342 <- newR 1.0
     loopI 0.0 24.0 $ \i343 -> do
       let !d343 = fromIntegral i343 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) 0 2
-      t344 <- rdU verts (3 * ((((97 * i31) + 1) + (i343 * 4)) + 3))
-      t345 <- rdU verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 1)
-      t346 <- rdU verts ((3 * ((((97 * i31) + 1) + (i343 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i343)) 12 14
+      t344 <- rdU verts (((291 * i31) + (12 * i343)) + 12)
+      t345 <- rdU verts (((291 * i31) + (12 * i343)) + 13)
+      t346 <- rdU verts (((291 * i31) + (12 * i343)) + 14)
       chkI radii ((24 * i31) + i343) 0 0
       t347 <- rdU radii ((24 * i31) + i343)
       t348 <- getR v342
@@ -762,14 +762,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t365 <- rdU radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0))))))
           loopI 1.0 4.0 $ \i366 -> do
             let !d366 = fromIntegral i366 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) 0 2
-            t367 <- rdU verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1)))
-            t368 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 1)
-            t369 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + (i366 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) 0 2
-            t370 <- rdU verts (3 * ((((97 * i31) + 1) + (i361 * 4)) + i366))
-            t371 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 1)
-            t372 <- rdU verts ((3 * ((((97 * i31) + 1) + (i361 * 4)) + i366)) + 2)
+            chkI verts ((291 * i31) + (12 * i361) + (3 * i366)) 0 5
+            t367 <- rdU verts ((291 * i31) + (12 * i361) + (3 * i366))
+            t368 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 1)
+            t369 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 2)
+            t370 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 3)
+            t371 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 4)
+            t372 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 5)
             loopI 1.0 4.0 $ \i373 -> do
               let !d373 = fromIntegral i373 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0)))) 0 0
@@ -823,10 +822,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t416 = ((0.3 * ((if (t365 - t362) > 0 then t362 else t365) / 4.0)) - (sqrt (((t413 * t413) + (t414 * t414)) + (t415 * t415))))
               if (if (t412 - t416) > 0 then t416 else t412) > 0 then do
                 setR v354 (0.5 * ((t362 - ((t362 * (d366 + t409)) / 4.0)) + (t365 - ((t365 * (d373 + t411)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i361 * 4))) 0 2
-                t417 <- rdU verts (3 * (((97 * i31) + 1) + (i361 * 4)))
-                t418 <- rdU verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 1)
-                t419 <- rdU verts ((3 * (((97 * i31) + 1) + (i361 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i361)) 3 5
+                t417 <- rdU verts (((291 * i31) + (12 * i361)) + 3)
+                t418 <- rdU verts (((291 * i31) + (12 * i361)) + 4)
+                t419 <- rdU verts (((291 * i31) + (12 * i361)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)))) 0 0
                 t420 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1913,10 +1912,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1968,10 +1967,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -2001,10 +2000,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -2034,10 +2032,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -2067,10 +2064,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2095,22 +2091,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -210,10 +210,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
-      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
       let !t76 = (1.0 - (abs t75))
       let !t77 = ((exp ((0.9 * t75) - 0.7)) - (abs t73))
       let !s78 = (if (t76 - t77) > 0 then t77 else t76)
@@ -228,10 +228,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t80 <- getR v70
     if t80 > 0 then do
       t81 <- getR v71
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) 0 2
-      t82 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3))
-      t83 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 1)
-      t84 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t81)) + (291 * i31)) 12 14
+      t82 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 12)
+      t83 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 13)
+      t84 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 14)
       let !t85 = (exp ((0.9 * t84) - 0.7))
       let !t86 = ((1.0 - (abs t84)) - (t85 - (abs t82)))
       let !t87 = (if t86 > 0 then (negate (signum t82)) else 0.0)
@@ -249,10 +249,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v99 <- newR (-1.0)
       loopI 0.0 24.0 $ \i100 -> do
         let !d100 = fromIntegral i100 :: Double
-        chkI verts (3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) 0 2
-        t101 <- rdU verts (3 * ((((97 * i31) + 1) + (i100 * 4)) + 3))
-        t102 <- rdU verts ((3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) + 1)
-        t103 <- rdU verts ((3 * ((((97 * i31) + 1) + (i100 * 4)) + 3)) + 2)
+        chkI verts ((12 * i100) + (291 * i31)) 12 14
+        t101 <- rdU verts (((12 * i100) + (291 * i31)) + 12)
+        t102 <- rdU verts (((12 * i100) + (291 * i31)) + 13)
+        t103 <- rdU verts (((12 * i100) + (291 * i31)) + 14)
         let !t104 = (1.0 - (abs t103))
         let !t105 = ((exp ((0.9 * t103) - 0.7)) - (abs t101))
         if (negate (if (t104 - t105) > 0 then t105 else t104)) > 0 then do
@@ -277,10 +277,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t109 <- getR v98
       t110 <- getR v99
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) 0 2
-      t111 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3))
-      t112 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 1)
-      t113 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t109)) + (291 * i31)) 12 14
+      t111 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 12)
+      t112 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 13)
+      t113 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 14)
       let !t114 = (exp ((0.9 * t113) - 0.7))
       let !t115 = ((1.0 - (abs t113)) - (t114 - (abs t111)))
       let !s116 = (if t115 > 0 then (negate (signum t111)) else 0.0)
@@ -386,10 +386,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         wrU meta 6 (t166 + 1.0)
         pure ()
       if (abs (t110 - t109)) > 0 then do
-        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) 0 2
-        t167 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3))
-        t168 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) + 1)
-        t169 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t110) * 4)) + 3)) + 2)
+        chkI verts ((12 * (truncate t110)) + (291 * i31)) 12 14
+        t167 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 12)
+        t168 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 13)
+        t169 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 14)
         let !t170 = (exp ((0.9 * t169) - 0.7))
         let !t171 = ((1.0 - (abs t169)) - (t170 - (abs t167)))
         let !s172 = (if t171 > 0 then (negate (signum t167)) else 0.0)
@@ -500,19 +500,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t223 <- rdU verts (3 * (97 * i31))
-    t224 <- rdU verts ((3 * (97 * i31)) + 1)
-    t225 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t223 <- rdU verts (291 * i31)
+    t224 <- rdU verts ((291 * i31) + 1)
+    t225 <- rdU verts ((291 * i31) + 2)
     v226 <- newR 1.0
     loopI 0.0 24.0 $ \i227 -> do
       let !d227 = fromIntegral i227 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) 0 2
-      t228 <- rdU verts (3 * ((((97 * i31) + 1) + (i227 * 4)) + 3))
-      t229 <- rdU verts ((3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) + 1)
-      t230 <- rdU verts ((3 * ((((97 * i31) + 1) + (i227 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i227) 0 0
-      t231 <- rdU radii ((24 * i31) + i227)
+      chkI verts ((12 * i227) + (291 * i31)) 12 14
+      t228 <- rdU verts (((12 * i227) + (291 * i31)) + 12)
+      t229 <- rdU verts (((12 * i227) + (291 * i31)) + 13)
+      t230 <- rdU verts (((12 * i227) + (291 * i31)) + 14)
+      chkI radii (i227 + (24 * i31)) 0 0
+      t231 <- rdU radii (i227 + (24 * i31))
       t232 <- getR v226
       let !t233 = (t228 + (negate t223))
       let !t234 = (t229 + (negate t224))
@@ -531,8 +531,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v244 <- newR 0.0
       loopI 0.0 24.0 $ \i245 -> do
         let !d245 = fromIntegral i245 :: Double
-        chkI radii ((24 * i31) + i245) 0 0
-        t246 <- rdU radii ((24 * i31) + i245)
+        chkI radii (i245 + (24 * i31)) 0 0
+        t246 <- rdU radii (i245 + (24 * i31))
         loopI 6.0 12.0 $ \i247 -> do
           let !d247 = fromIntegral i247 :: Double
           let !t248 = (d245 + d247)
@@ -540,14 +540,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t249 <- rdU radii (truncate ((24.0 * d31) + (t248 - (24.0 * (floorF (t248 / 24.0))))))
           loopI 1.0 4.0 $ \i250 -> do
             let !d250 = fromIntegral i250 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) 0 2
-            t251 <- rdU verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1)))
-            t252 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) + 1)
-            t253 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + (i250 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) 0 2
-            t254 <- rdU verts (3 * ((((97 * i31) + 1) + (i245 * 4)) + i250))
-            t255 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) + 1)
-            t256 <- rdU verts ((3 * ((((97 * i31) + 1) + (i245 * 4)) + i250)) + 2)
+            chkI verts ((12 * i245) + (3 * i250) + (291 * i31)) 0 5
+            t251 <- rdU verts ((12 * i245) + (3 * i250) + (291 * i31))
+            t252 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 1)
+            t253 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 2)
+            t254 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 3)
+            t255 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 4)
+            t256 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i257 -> do
               let !d257 = fromIntegral i257 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0)))) 0 0
@@ -601,10 +600,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t300 = ((0.3 * ((if (t249 - t246) > 0 then t246 else t249) / 4.0)) - (sqrt (((t297 * t297) + (t298 * t298)) + (t299 * t299))))
               if (if (t296 - t300) > 0 then t300 else t296) > 0 then do
                 setR v238 (0.5 * ((t246 - ((t246 * (d250 + t293)) / 4.0)) + (t249 - ((t249 * (d257 + t295)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i245 * 4))) 0 2
-                t301 <- rdU verts (3 * (((97 * i31) + 1) + (i245 * 4)))
-                t302 <- rdU verts ((3 * (((97 * i31) + 1) + (i245 * 4))) + 1)
-                t303 <- rdU verts ((3 * (((97 * i31) + 1) + (i245 * 4))) + 2)
+                chkI verts ((12 * i245) + (291 * i31)) 3 5
+                t301 <- rdU verts (((12 * i245) + (291 * i31)) + 3)
+                t302 <- rdU verts (((12 * i245) + (291 * i31)) + 4)
+                t303 <- rdU verts (((12 * i245) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)))) 0 0
                 t304 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1587,10 +1586,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1642,10 +1641,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1675,10 +1674,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1708,10 +1706,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1741,10 +1738,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1769,22 +1765,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -210,10 +210,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
-      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
       let !s76 = (negate t74)
       t77 <- getR v70
       if ((negate s76) - t77) > 0 then do
@@ -226,10 +226,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t78 <- getR v70
     if t78 > 0 then do
       t79 <- getR v71
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) 0 2
-      t80 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3))
-      t81 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 1)
-      t82 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t79) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t79)) + (291 * i31)) 12 14
+      t80 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 12)
+      t81 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 13)
+      t82 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 14)
       let !s83 = (negate t67)
       v84 <- newR 1.0e300
       v85 <- newR (-1.0e300)
@@ -237,10 +237,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v87 <- newR (-1.0)
       loopI 0.0 24.0 $ \i88 -> do
         let !d88 = fromIntegral i88 :: Double
-        chkI verts (3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) 0 2
-        t89 <- rdU verts (3 * ((((97 * i31) + 1) + (i88 * 4)) + 3))
-        t90 <- rdU verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 1)
-        t91 <- rdU verts ((3 * ((((97 * i31) + 1) + (i88 * 4)) + 3)) + 2)
+        chkI verts ((291 * i31) + (12 * i88)) 12 14
+        t89 <- rdU verts (((291 * i31) + (12 * i88)) + 12)
+        t90 <- rdU verts (((291 * i31) + (12 * i88)) + 13)
+        t91 <- rdU verts (((291 * i31) + (12 * i88)) + 14)
         if t90 > 0 then do
           let !s92 = ((t89 * t69) + (t91 * s83))
           t93 <- getR v84
@@ -263,10 +263,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t95 <- getR v86
       t96 <- getR v87
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) 0 2
-      t97 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3))
-      t98 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 1)
-      t99 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t95) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t95)) + (291 * i31)) 12 14
+      t97 <- rdU verts (((12 * (truncate t95)) + (291 * i31)) + 12)
+      t98 <- rdU verts (((12 * (truncate t95)) + (291 * i31)) + 13)
+      t99 <- rdU verts (((12 * (truncate t95)) + (291 * i31)) + 14)
       let !s100 = (negate t98)
       t101 <- rdU meta 2
       t102 <- rdU meta 3
@@ -358,10 +358,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         wrU meta 6 (t138 + 1.0)
         pure ()
       if (abs (t96 - t95)) > 0 then do
-        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) 0 2
-        t139 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3))
-        t140 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 1)
-        t141 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t96) * 4)) + 3)) + 2)
+        chkI verts ((12 * (truncate t96)) + (291 * i31)) 12 14
+        t139 <- rdU verts (((12 * (truncate t96)) + (291 * i31)) + 12)
+        t140 <- rdU verts (((12 * (truncate t96)) + (291 * i31)) + 13)
+        t141 <- rdU verts (((12 * (truncate t96)) + (291 * i31)) + 14)
         let !s142 = (negate t140)
         t143 <- rdU meta 2
         t144 <- rdU meta 3
@@ -458,19 +458,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t181 <- rdU verts (3 * (97 * i31))
-    t182 <- rdU verts ((3 * (97 * i31)) + 1)
-    t183 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t181 <- rdU verts (291 * i31)
+    t182 <- rdU verts ((291 * i31) + 1)
+    t183 <- rdU verts ((291 * i31) + 2)
     v184 <- newR 1.0
     loopI 0.0 24.0 $ \i185 -> do
       let !d185 = fromIntegral i185 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) 0 2
-      t186 <- rdU verts (3 * ((((97 * i31) + 1) + (i185 * 4)) + 3))
-      t187 <- rdU verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 1)
-      t188 <- rdU verts ((3 * ((((97 * i31) + 1) + (i185 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i185) 0 0
-      t189 <- rdU radii ((24 * i31) + i185)
+      chkI verts ((12 * i185) + (291 * i31)) 12 14
+      t186 <- rdU verts (((12 * i185) + (291 * i31)) + 12)
+      t187 <- rdU verts (((12 * i185) + (291 * i31)) + 13)
+      t188 <- rdU verts (((12 * i185) + (291 * i31)) + 14)
+      chkI radii (i185 + (24 * i31)) 0 0
+      t189 <- rdU radii (i185 + (24 * i31))
       t190 <- getR v184
       let !t191 = (t186 + (negate t181))
       let !t192 = (t187 + (negate t182))
@@ -489,8 +489,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v202 <- newR 0.0
       loopI 0.0 24.0 $ \i203 -> do
         let !d203 = fromIntegral i203 :: Double
-        chkI radii ((24 * i31) + i203) 0 0
-        t204 <- rdU radii ((24 * i31) + i203)
+        chkI radii (i203 + (24 * i31)) 0 0
+        t204 <- rdU radii (i203 + (24 * i31))
         loopI 6.0 12.0 $ \i205 -> do
           let !d205 = fromIntegral i205 :: Double
           let !t206 = (d203 + d205)
@@ -498,14 +498,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t207 <- rdU radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0))))))
           loopI 1.0 4.0 $ \i208 -> do
             let !d208 = fromIntegral i208 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) 0 2
-            t209 <- rdU verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1)))
-            t210 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 1)
-            t211 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + (i208 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) 0 2
-            t212 <- rdU verts (3 * ((((97 * i31) + 1) + (i203 * 4)) + i208))
-            t213 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 1)
-            t214 <- rdU verts ((3 * ((((97 * i31) + 1) + (i203 * 4)) + i208)) + 2)
+            chkI verts ((12 * i203) + (3 * i208) + (291 * i31)) 0 5
+            t209 <- rdU verts ((12 * i203) + (3 * i208) + (291 * i31))
+            t210 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 1)
+            t211 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 2)
+            t212 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 3)
+            t213 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 4)
+            t214 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i215 -> do
               let !d215 = fromIntegral i215 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0)))) 0 0
@@ -559,10 +558,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t258 = ((0.3 * ((if (t207 - t204) > 0 then t204 else t207) / 4.0)) - (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257))))
               if (if (t254 - t258) > 0 then t258 else t254) > 0 then do
                 setR v196 (0.5 * ((t204 - ((t204 * (d208 + t251)) / 4.0)) + (t207 - ((t207 * (d215 + t253)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i203 * 4))) 0 2
-                t259 <- rdU verts (3 * (((97 * i31) + 1) + (i203 * 4)))
-                t260 <- rdU verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 1)
-                t261 <- rdU verts ((3 * (((97 * i31) + 1) + (i203 * 4))) + 2)
+                chkI verts ((12 * i203) + (291 * i31)) 3 5
+                t259 <- rdU verts (((12 * i203) + (291 * i31)) + 3)
+                t260 <- rdU verts (((12 * i203) + (291 * i31)) + 4)
+                t261 <- rdU verts (((12 * i203) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)))) 0 0
                 t262 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1924,10 +1923,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -2001,10 +2000,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s79 = ((t28 * t65) + (t53 * t8))
         let !s80 = ((t28 * t66) + (t53 * t9))
         let !s81 = ((t28 * t68) + (t53 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t82 = (s54 + (s27 * s76))
         let !t83 = (s55 + (s27 * s77))
         let !t84 = (s56 + (s27 * s78))
@@ -2056,10 +2055,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s130 = ((t28 * t116) + (t53 * s79))
         let !s131 = ((t28 * t117) + (t53 * s80))
         let !s132 = ((t28 * t119) + (t53 * s81))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
         let !t133 = (s106 + (s27 * s127))
         let !t134 = (s107 + (s27 * s128))
         let !t135 = (s108 + (s27 * s129))
@@ -2111,10 +2109,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = ((t28 * t167) + (t53 * s130))
         let !s182 = ((t28 * t168) + (t53 * s131))
         let !s183 = ((t28 * t170) + (t53 * s132))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
         let !t184 = (s157 + (s27 * s178))
         let !t185 = (s158 + (s27 * s179))
         let !t186 = (s159 + (s27 * s180))
@@ -2166,10 +2163,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s232 = ((t28 * t218) + (t53 * s181))
         let !s233 = ((t28 * t219) + (t53 * s182))
         let !s234 = ((t28 * t221) + (t53 * s183))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
         pure ()
       else do
         let !t235 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2205,22 +2201,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s265 = (if t264 > 0 then t261 else t2)
         let !s266 = (if t264 > 0 then t262 else t3)
         let !s267 = (if t264 > 0 then t263 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s265
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s266
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s267
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s267 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s267 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s267 + (negate t4))))
         pure ()
       pure ()
     pure ()

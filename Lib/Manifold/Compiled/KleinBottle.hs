@@ -167,8 +167,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -226,8 +226,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
           chkI grid (truncate s83) 0 0
           t84 <- rdU grid (truncate s83)
-          chkI grid ((truncate t70) + (truncate s83)) 0 0
-          t85 <- rdU grid ((truncate t70) + (truncate s83))
+          chkI grid ((truncate s83) + (truncate t70)) 0 0
+          t85 <- rdU grid ((truncate s83) + (truncate t70))
           loopI t85 t84 $ \i86 -> do
             let !d86 = fromIntegral i86 :: Double
             chkI items i86 0 0
@@ -263,19 +263,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t99 <- rdU verts (3 * (97 * i31))
-    t100 <- rdU verts ((3 * (97 * i31)) + 1)
-    t101 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t99 <- rdU verts (291 * i31)
+    t100 <- rdU verts ((291 * i31) + 1)
+    t101 <- rdU verts ((291 * i31) + 2)
     v102 <- newR 1.0
     loopI 0.0 24.0 $ \i103 -> do
       let !d103 = fromIntegral i103 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) 0 2
-      t104 <- rdU verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3))
-      t105 <- rdU verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 1)
-      t106 <- rdU verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i103) 0 0
-      t107 <- rdU radii ((24 * i31) + i103)
+      chkI verts ((12 * i103) + (291 * i31)) 12 14
+      t104 <- rdU verts (((12 * i103) + (291 * i31)) + 12)
+      t105 <- rdU verts (((12 * i103) + (291 * i31)) + 13)
+      t106 <- rdU verts (((12 * i103) + (291 * i31)) + 14)
+      chkI radii (i103 + (24 * i31)) 0 0
+      t107 <- rdU radii (i103 + (24 * i31))
       t108 <- getR v102
       let !t109 = (t104 + (negate t99))
       let !t110 = (t105 + (negate t100))
@@ -294,8 +294,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v120 <- newR 0.0
       loopI 0.0 24.0 $ \i121 -> do
         let !d121 = fromIntegral i121 :: Double
-        chkI radii ((24 * i31) + i121) 0 0
-        t122 <- rdU radii ((24 * i31) + i121)
+        chkI radii (i121 + (24 * i31)) 0 0
+        t122 <- rdU radii (i121 + (24 * i31))
         loopI 6.0 12.0 $ \i123 -> do
           let !d123 = fromIntegral i123 :: Double
           let !t124 = (d121 + d123)
@@ -303,14 +303,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t125 <- rdU radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0))))))
           loopI 1.0 4.0 $ \i126 -> do
             let !d126 = fromIntegral i126 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) 0 2
-            t127 <- rdU verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1)))
-            t128 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 1)
-            t129 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) 0 2
-            t130 <- rdU verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126))
-            t131 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 1)
-            t132 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 2)
+            chkI verts ((12 * i121) + (3 * i126) + (291 * i31)) 0 5
+            t127 <- rdU verts ((12 * i121) + (3 * i126) + (291 * i31))
+            t128 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 1)
+            t129 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 2)
+            t130 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 3)
+            t131 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 4)
+            t132 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i133 -> do
               let !d133 = fromIntegral i133 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0)))) 0 0
@@ -364,10 +363,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t176 = ((0.3 * ((if (t125 - t122) > 0 then t122 else t125) / 4.0)) - (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175))))
               if (if (t172 - t176) > 0 then t176 else t172) > 0 then do
                 setR v114 (0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i121 * 4))) 0 2
-                t177 <- rdU verts (3 * (((97 * i31) + 1) + (i121 * 4)))
-                t178 <- rdU verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 1)
-                t179 <- rdU verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 2)
+                chkI verts ((12 * i121) + (291 * i31)) 3 5
+                t177 <- rdU verts (((12 * i121) + (291 * i31)) + 3)
+                t178 <- rdU verts (((12 * i121) + (291 * i31)) + 4)
+                t179 <- rdU verts (((12 * i121) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)))) 0 0
                 t180 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1926,10 +1925,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -2018,10 +2017,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s94 = ((t28 * t80) + (t68 * t8))
         let !s95 = ((t28 * t81) + (t68 * t9))
         let !s96 = ((t28 * t83) + (t68 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
         let !t97 = (s69 + (s27 * s91))
         let !t98 = (s71 + (s27 * s93))
         let !t99 = (sqrt ((t97 * t97) + (t98 * t98)))
@@ -2088,10 +2087,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s160 = ((t28 * t146) + (t68 * s94))
         let !s161 = ((t28 * t147) + (t68 * s95))
         let !s162 = ((t28 * t149) + (t68 * s96))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s136 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s137 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s138 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s136 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s137 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s138 else t4)
         let !t163 = (s136 + (s27 * s157))
         let !t164 = (s138 + (s27 * s159))
         let !t165 = (sqrt ((t163 * t163) + (t164 * t164)))
@@ -2158,10 +2156,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s226 = ((t28 * t212) + (t68 * s160))
         let !s227 = ((t28 * t213) + (t68 * s161))
         let !s228 = ((t28 * t215) + (t68 * s162))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s202 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s203 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s204 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s202 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s203 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s204 else t4)
         let !t229 = (s202 + (s27 * s223))
         let !t230 = (s204 + (s27 * s225))
         let !t231 = (sqrt ((t229 * t229) + (t230 * t230)))
@@ -2228,10 +2225,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s292 = ((t28 * t278) + (t68 * s226))
         let !s293 = ((t28 * t279) + (t68 * s227))
         let !s294 = ((t28 * t281) + (t68 * s228))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
         pure ()
       else do
         let !t295 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2282,22 +2278,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s340 = (if t339 > 0 then t336 else t2)
         let !s341 = (if t339 > 0 then t337 else t3)
         let !s342 = (if t339 > 0 then t338 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s340
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s341
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s342
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s340 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s341 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s342 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s340 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s341 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s342 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s340 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s341 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s342 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s340
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s341
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s342
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s340 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s341 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s342 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s340 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s341 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s342 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s340 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s341 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s342 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -166,8 +166,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -225,8 +225,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
           chkI grid (truncate s83) 0 0
           t84 <- rdU grid (truncate s83)
-          chkI grid ((truncate t70) + (truncate s83)) 0 0
-          t85 <- rdU grid ((truncate t70) + (truncate s83))
+          chkI grid ((truncate s83) + (truncate t70)) 0 0
+          t85 <- rdU grid ((truncate s83) + (truncate t70))
           loopI t85 t84 $ \i86 -> do
             let !d86 = fromIntegral i86 :: Double
             chkI items i86 0 0
@@ -270,10 +270,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     v103 <- newR (-1.0)
     loopI 0.0 24.0 $ \i104 -> do
       let !d104 = fromIntegral i104 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) 0 2
-      t105 <- rdU verts (3 * ((((97 * i31) + 1) + (i104 * 4)) + 3))
-      t106 <- rdU verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 1)
-      t107 <- rdU verts ((3 * ((((97 * i31) + 1) + (i104 * 4)) + 3)) + 2)
+      chkI verts ((12 * i104) + (291 * i31)) 12 14
+      t105 <- rdU verts (((12 * i104) + (291 * i31)) + 12)
+      t106 <- rdU verts (((12 * i104) + (291 * i31)) + 13)
+      t107 <- rdU verts (((12 * i104) + (291 * i31)) + 14)
       let !s108 = (0.4 - (abs t106))
       t109 <- getR v102
       if ((negate s108) - t109) > 0 then do
@@ -286,10 +286,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t110 <- getR v102
     if t110 > 0 then do
       t111 <- getR v103
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) 0 2
-      t112 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3))
-      t113 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 1)
-      t114 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t111) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t111)) + (291 * i31)) 12 14
+      t112 <- rdU verts (((12 * (truncate t111)) + (291 * i31)) + 12)
+      t113 <- rdU verts (((12 * (truncate t111)) + (291 * i31)) + 13)
+      t114 <- rdU verts (((12 * (truncate t111)) + (291 * i31)) + 14)
       let !t115 = (negate (signum t113))
       let !t116 = (sqrt (t115 * t115))
       let !s117 = ((if t116 > 0 then (recip (if (t116 - 1.0e-300) > 0 then t116 else 1.0e-300)) else 0.0) * t115)
@@ -301,10 +301,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v123 <- newR (-1.0)
       loopI 0.0 24.0 $ \i124 -> do
         let !d124 = fromIntegral i124 :: Double
-        chkI verts (3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) 0 2
-        t125 <- rdU verts (3 * ((((97 * i31) + 1) + (i124 * 4)) + 3))
-        t126 <- rdU verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 1)
-        t127 <- rdU verts ((3 * ((((97 * i31) + 1) + (i124 * 4)) + 3)) + 2)
+        chkI verts ((12 * i124) + (291 * i31)) 12 14
+        t125 <- rdU verts (((12 * i124) + (291 * i31)) + 12)
+        t126 <- rdU verts (((12 * i124) + (291 * i31)) + 13)
+        t127 <- rdU verts (((12 * i124) + (291 * i31)) + 14)
         if (negate (0.4 - (abs t126))) > 0 then do
           let !s128 = ((t125 * s118) + (t127 * s119))
           t129 <- getR v120
@@ -327,10 +327,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t131 <- getR v122
       t132 <- getR v123
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) 0 2
-      t133 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3))
-      t134 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 1)
-      t135 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t131) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t131)) + (291 * i31)) 12 14
+      t133 <- rdU verts (((12 * (truncate t131)) + (291 * i31)) + 12)
+      t134 <- rdU verts (((12 * (truncate t131)) + (291 * i31)) + 13)
+      t135 <- rdU verts (((12 * (truncate t131)) + (291 * i31)) + 14)
       let !s136 = (negate (signum t134))
       let !s137 = (sqrt (s136 * s136))
       let !s138 = (0.4 - (abs t134))
@@ -426,10 +426,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         wrU meta 6 (t178 + 1.0)
         pure ()
       if (abs (t132 - t131)) > 0 then do
-        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) 0 2
-        t179 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3))
-        t180 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 1)
-        t181 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t132) * 4)) + 3)) + 2)
+        chkI verts ((12 * (truncate t132)) + (291 * i31)) 12 14
+        t179 <- rdU verts (((12 * (truncate t132)) + (291 * i31)) + 12)
+        t180 <- rdU verts (((12 * (truncate t132)) + (291 * i31)) + 13)
+        t181 <- rdU verts (((12 * (truncate t132)) + (291 * i31)) + 14)
         let !s182 = (negate (signum t180))
         let !s183 = (sqrt (s182 * s182))
         let !s184 = (0.4 - (abs t180))
@@ -530,19 +530,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t225 <- rdU verts (3 * (97 * i31))
-    t226 <- rdU verts ((3 * (97 * i31)) + 1)
-    t227 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t225 <- rdU verts (291 * i31)
+    t226 <- rdU verts ((291 * i31) + 1)
+    t227 <- rdU verts ((291 * i31) + 2)
     v228 <- newR 1.0
     loopI 0.0 24.0 $ \i229 -> do
       let !d229 = fromIntegral i229 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) 0 2
-      t230 <- rdU verts (3 * ((((97 * i31) + 1) + (i229 * 4)) + 3))
-      t231 <- rdU verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 1)
-      t232 <- rdU verts ((3 * ((((97 * i31) + 1) + (i229 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i229) 0 0
-      t233 <- rdU radii ((24 * i31) + i229)
+      chkI verts ((12 * i229) + (291 * i31)) 12 14
+      t230 <- rdU verts (((12 * i229) + (291 * i31)) + 12)
+      t231 <- rdU verts (((12 * i229) + (291 * i31)) + 13)
+      t232 <- rdU verts (((12 * i229) + (291 * i31)) + 14)
+      chkI radii (i229 + (24 * i31)) 0 0
+      t233 <- rdU radii (i229 + (24 * i31))
       t234 <- getR v228
       let !t235 = (t230 + (negate t225))
       let !t236 = (t231 + (negate t226))
@@ -561,8 +561,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v246 <- newR 0.0
       loopI 0.0 24.0 $ \i247 -> do
         let !d247 = fromIntegral i247 :: Double
-        chkI radii ((24 * i31) + i247) 0 0
-        t248 <- rdU radii ((24 * i31) + i247)
+        chkI radii (i247 + (24 * i31)) 0 0
+        t248 <- rdU radii (i247 + (24 * i31))
         loopI 6.0 12.0 $ \i249 -> do
           let !d249 = fromIntegral i249 :: Double
           let !t250 = (d247 + d249)
@@ -570,14 +570,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t251 <- rdU radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0))))))
           loopI 1.0 4.0 $ \i252 -> do
             let !d252 = fromIntegral i252 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) 0 2
-            t253 <- rdU verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1)))
-            t254 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 1)
-            t255 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + (i252 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) 0 2
-            t256 <- rdU verts (3 * ((((97 * i31) + 1) + (i247 * 4)) + i252))
-            t257 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 1)
-            t258 <- rdU verts ((3 * ((((97 * i31) + 1) + (i247 * 4)) + i252)) + 2)
+            chkI verts ((12 * i247) + (3 * i252) + (291 * i31)) 0 5
+            t253 <- rdU verts ((12 * i247) + (3 * i252) + (291 * i31))
+            t254 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 1)
+            t255 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 2)
+            t256 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 3)
+            t257 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 4)
+            t258 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i259 -> do
               let !d259 = fromIntegral i259 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0)))) 0 0
@@ -631,10 +630,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t302 = ((0.3 * ((if (t251 - t248) > 0 then t248 else t251) / 4.0)) - (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301))))
               if (if (t298 - t302) > 0 then t302 else t298) > 0 then do
                 setR v240 (0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i247 * 4))) 0 2
-                t303 <- rdU verts (3 * (((97 * i31) + 1) + (i247 * 4)))
-                t304 <- rdU verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 1)
-                t305 <- rdU verts ((3 * (((97 * i31) + 1) + (i247 * 4))) + 2)
+                chkI verts ((12 * i247) + (291 * i31)) 3 5
+                t303 <- rdU verts (((12 * i247) + (291 * i31)) + 3)
+                t304 <- rdU verts (((12 * i247) + (291 * i31)) + 4)
+                t305 <- rdU verts (((12 * i247) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)))) 0 0
                 t306 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1925,10 +1924,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1999,10 +1998,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s76 = ((t28 * t64) + (t50 * t8))
         let !s77 = (t50 * t9)
         let !s78 = ((t28 * t65) + (t50 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t79 = (s54 + (s27 * s73))
         let !t80 = (s56 + (s27 * s75))
         let !t81 = (sqrt ((t79 * t79) + (t80 * t80)))
@@ -2051,10 +2050,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s124 = ((t28 * t112) + (t50 * s76))
         let !s125 = (t50 * s77)
         let !s126 = ((t28 * t113) + (t50 * s78))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s103 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s104 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s105 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s103 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s104 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s103 - s103) + (s104 - s104)) + (s105 - s105)))) > 0 then s105 else t4)
         let !t127 = (s103 + (s27 * s121))
         let !t128 = (s105 + (s27 * s123))
         let !t129 = (sqrt ((t127 * t127) + (t128 * t128)))
@@ -2103,10 +2101,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s172 = ((t28 * t160) + (t50 * s124))
         let !s173 = (t50 * s125)
         let !s174 = ((t28 * t161) + (t50 * s126))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s151 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s152 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s153 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s151 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s152 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s151 - s151) + (s152 - s152)) + (s153 - s153)))) > 0 then s153 else t4)
         let !t175 = (s151 + (s27 * s169))
         let !t176 = (s153 + (s27 * s171))
         let !t177 = (sqrt ((t175 * t175) + (t176 * t176)))
@@ -2155,10 +2152,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s220 = ((t28 * t208) + (t50 * s172))
         let !s221 = (t50 * s173)
         let !s222 = ((t28 * t209) + (t50 * s174))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s199 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s200 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s201 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s199 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s200 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s201 else t4)
         pure ()
       else do
         let !t223 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2194,22 +2190,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s253 = (if t252 > 0 then t246 else t2)
         let !s254 = (if t252 > 0 then t250 else t3)
         let !s255 = (if t252 > 0 then t251 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s253
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s254
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s255
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s253 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s254 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s255 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s253 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s254 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s255 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s253 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s254 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s255 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s253
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s254
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s255
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s253 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s254 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s255 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s253 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s254 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s255 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s253 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s254 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s255 + (negate t4))))
         pure ()
       pure ()
     pure ()

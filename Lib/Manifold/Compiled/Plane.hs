@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -202,17 +202,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t67 <- rdU verts (3 * (97 * i31))
-    t68 <- rdU verts ((3 * (97 * i31)) + 1)
-    t69 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t67 <- rdU verts (291 * i31)
+    t68 <- rdU verts ((291 * i31) + 1)
+    t69 <- rdU verts ((291 * i31) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
-      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i71)) 12 14
+      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
+      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
+      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
       chkI radii ((24 * i31) + i71) 0 0
       t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
@@ -242,14 +242,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
-            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
-            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
+            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
+            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
+            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
+            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
+            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
+            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
@@ -303,10 +302,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
-                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i89)) 3 5
+                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
+                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
+                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
                 t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1290,10 +1289,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1345,10 +1344,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1378,10 +1377,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1411,10 +1409,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1444,10 +1441,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1472,22 +1468,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -166,8 +166,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -225,8 +225,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
           chkI grid (truncate s83) 0 0
           t84 <- rdU grid (truncate s83)
-          chkI grid ((truncate t70) + (truncate s83)) 0 0
-          t85 <- rdU grid ((truncate t70) + (truncate s83))
+          chkI grid ((truncate s83) + (truncate t70)) 0 0
+          t85 <- rdU grid ((truncate s83) + (truncate t70))
           loopI t85 t84 $ \i86 -> do
             let !d86 = fromIntegral i86 :: Double
             chkI items i86 0 0
@@ -262,19 +262,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t99 <- rdU verts (3 * (97 * i31))
-    t100 <- rdU verts ((3 * (97 * i31)) + 1)
-    t101 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t99 <- rdU verts (291 * i31)
+    t100 <- rdU verts ((291 * i31) + 1)
+    t101 <- rdU verts ((291 * i31) + 2)
     v102 <- newR 1.0
     loopI 0.0 24.0 $ \i103 -> do
       let !d103 = fromIntegral i103 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) 0 2
-      t104 <- rdU verts (3 * ((((97 * i31) + 1) + (i103 * 4)) + 3))
-      t105 <- rdU verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 1)
-      t106 <- rdU verts ((3 * ((((97 * i31) + 1) + (i103 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i103) 0 0
-      t107 <- rdU radii ((24 * i31) + i103)
+      chkI verts ((12 * i103) + (291 * i31)) 12 14
+      t104 <- rdU verts (((12 * i103) + (291 * i31)) + 12)
+      t105 <- rdU verts (((12 * i103) + (291 * i31)) + 13)
+      t106 <- rdU verts (((12 * i103) + (291 * i31)) + 14)
+      chkI radii (i103 + (24 * i31)) 0 0
+      t107 <- rdU radii (i103 + (24 * i31))
       t108 <- getR v102
       let !t109 = (t104 + (negate t99))
       let !t110 = (t105 + (negate t100))
@@ -293,8 +293,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v120 <- newR 0.0
       loopI 0.0 24.0 $ \i121 -> do
         let !d121 = fromIntegral i121 :: Double
-        chkI radii ((24 * i31) + i121) 0 0
-        t122 <- rdU radii ((24 * i31) + i121)
+        chkI radii (i121 + (24 * i31)) 0 0
+        t122 <- rdU radii (i121 + (24 * i31))
         loopI 6.0 12.0 $ \i123 -> do
           let !d123 = fromIntegral i123 :: Double
           let !t124 = (d121 + d123)
@@ -302,14 +302,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t125 <- rdU radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0))))))
           loopI 1.0 4.0 $ \i126 -> do
             let !d126 = fromIntegral i126 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) 0 2
-            t127 <- rdU verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1)))
-            t128 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 1)
-            t129 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + (i126 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) 0 2
-            t130 <- rdU verts (3 * ((((97 * i31) + 1) + (i121 * 4)) + i126))
-            t131 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 1)
-            t132 <- rdU verts ((3 * ((((97 * i31) + 1) + (i121 * 4)) + i126)) + 2)
+            chkI verts ((12 * i121) + (3 * i126) + (291 * i31)) 0 5
+            t127 <- rdU verts ((12 * i121) + (3 * i126) + (291 * i31))
+            t128 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 1)
+            t129 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 2)
+            t130 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 3)
+            t131 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 4)
+            t132 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i133 -> do
               let !d133 = fromIntegral i133 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0)))) 0 0
@@ -363,10 +362,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t176 = ((0.3 * ((if (t125 - t122) > 0 then t122 else t125) / 4.0)) - (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175))))
               if (if (t172 - t176) > 0 then t176 else t172) > 0 then do
                 setR v114 (0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i121 * 4))) 0 2
-                t177 <- rdU verts (3 * (((97 * i31) + 1) + (i121 * 4)))
-                t178 <- rdU verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 1)
-                t179 <- rdU verts ((3 * (((97 * i31) + 1) + (i121 * 4))) + 2)
+                chkI verts ((12 * i121) + (291 * i31)) 3 5
+                t177 <- rdU verts (((12 * i121) + (291 * i31)) + 3)
+                t178 <- rdU verts (((12 * i121) + (291 * i31)) + 4)
+                t179 <- rdU verts (((12 * i121) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)))) 0 0
                 t180 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1729,10 +1728,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1806,10 +1805,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s79 = ((t28 * t65) + (t53 * t8))
         let !s80 = ((t28 * t66) + (t53 * t9))
         let !s81 = ((t28 * t68) + (t53 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t82 = (s54 + (s27 * s76))
         let !t83 = (s55 + (s27 * s77))
         let !t84 = (s56 + (s27 * s78))
@@ -1861,10 +1860,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s130 = ((t28 * t116) + (t53 * s79))
         let !s131 = ((t28 * t117) + (t53 * s80))
         let !s132 = ((t28 * t119) + (t53 * s81))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
         let !t133 = (s106 + (s27 * s127))
         let !t134 = (s107 + (s27 * s128))
         let !t135 = (s108 + (s27 * s129))
@@ -1916,10 +1914,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = ((t28 * t167) + (t53 * s130))
         let !s182 = ((t28 * t168) + (t53 * s131))
         let !s183 = ((t28 * t170) + (t53 * s132))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
         let !t184 = (s157 + (s27 * s178))
         let !t185 = (s158 + (s27 * s179))
         let !t186 = (s159 + (s27 * s180))
@@ -1971,10 +1968,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s232 = ((t28 * t218) + (t53 * s181))
         let !s233 = ((t28 * t219) + (t53 * s182))
         let !s234 = ((t28 * t221) + (t53 * s183))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
         pure ()
       else do
         let !t235 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2010,22 +2006,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s265 = (if t264 > 0 then t261 else t2)
         let !s266 = (if t264 > 0 then t262 else t3)
         let !s267 = (if t264 > 0 then t263 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s265
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s266
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s267
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s267 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s267 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s267 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -210,10 +210,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     v71 <- newR (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) 0 2
-      t73 <- rdU verts (3 * ((((97 * i31) + 1) + (i72 * 4)) + 3))
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 1)
-      t75 <- rdU verts ((3 * ((((97 * i31) + 1) + (i72 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
       let !t76 = (1.0 - (abs t75))
       let !t77 = (1.5 - (abs t73))
       let !s78 = (if (t76 - t77) > 0 then t77 else t76)
@@ -228,10 +228,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
     t80 <- getR v70
     if t80 > 0 then do
       t81 <- getR v71
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) 0 2
-      t82 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3))
-      t83 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 1)
-      t84 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t81) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t81)) + (291 * i31)) 12 14
+      t82 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 12)
+      t83 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 13)
+      t84 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 14)
       let !t85 = ((1.0 - (abs t84)) - (1.5 - (abs t82)))
       let !t86 = (if t85 > 0 then (negate (signum t82)) else 0.0)
       let !t87 = (if t85 > 0 then 0.0 else (negate (signum t84)))
@@ -248,10 +248,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v98 <- newR (-1.0)
       loopI 0.0 24.0 $ \i99 -> do
         let !d99 = fromIntegral i99 :: Double
-        chkI verts (3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) 0 2
-        t100 <- rdU verts (3 * ((((97 * i31) + 1) + (i99 * 4)) + 3))
-        t101 <- rdU verts ((3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) + 1)
-        t102 <- rdU verts ((3 * ((((97 * i31) + 1) + (i99 * 4)) + 3)) + 2)
+        chkI verts ((291 * i31) + (12 * i99)) 12 14
+        t100 <- rdU verts (((291 * i31) + (12 * i99)) + 12)
+        t101 <- rdU verts (((291 * i31) + (12 * i99)) + 13)
+        t102 <- rdU verts (((291 * i31) + (12 * i99)) + 14)
         let !t103 = (1.0 - (abs t102))
         let !t104 = (1.5 - (abs t100))
         if (negate (if (t103 - t104) > 0 then t104 else t103)) > 0 then do
@@ -276,10 +276,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         pure ()
       t108 <- getR v97
       t109 <- getR v98
-      chkI verts (3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) 0 2
-      t110 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3))
-      t111 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) + 1)
-      t112 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t108) * 4)) + 3)) + 2)
+      chkI verts ((12 * (truncate t108)) + (291 * i31)) 12 14
+      t110 <- rdU verts (((12 * (truncate t108)) + (291 * i31)) + 12)
+      t111 <- rdU verts (((12 * (truncate t108)) + (291 * i31)) + 13)
+      t112 <- rdU verts (((12 * (truncate t108)) + (291 * i31)) + 14)
       let !t113 = ((1.0 - (abs t112)) - (1.5 - (abs t110)))
       let !s114 = (if t113 > 0 then (negate (signum t110)) else 0.0)
       let !s115 = (if t113 > 0 then 0.0 else (negate (signum t112)))
@@ -384,10 +384,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
         wrU meta 6 (t164 + 1.0)
         pure ()
       if (abs (t109 - t108)) > 0 then do
-        chkI verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) 0 2
-        t165 <- rdU verts (3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3))
-        t166 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 1)
-        t167 <- rdU verts ((3 * ((((97 * i31) + 1) + ((truncate t109) * 4)) + 3)) + 2)
+        chkI verts ((12 * (truncate t109)) + (291 * i31)) 12 14
+        t165 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 12)
+        t166 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 13)
+        t167 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 14)
         let !t168 = ((1.0 - (abs t167)) - (1.5 - (abs t165)))
         let !s169 = (if t168 > 0 then (negate (signum t165)) else 0.0)
         let !s170 = (if t168 > 0 then 0.0 else (negate (signum t167)))
@@ -497,19 +497,19 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       pure ()
     else do
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t220 <- rdU verts (3 * (97 * i31))
-    t221 <- rdU verts ((3 * (97 * i31)) + 1)
-    t222 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t220 <- rdU verts (291 * i31)
+    t221 <- rdU verts ((291 * i31) + 1)
+    t222 <- rdU verts ((291 * i31) + 2)
     v223 <- newR 1.0
     loopI 0.0 24.0 $ \i224 -> do
       let !d224 = fromIntegral i224 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) 0 2
-      t225 <- rdU verts (3 * ((((97 * i31) + 1) + (i224 * 4)) + 3))
-      t226 <- rdU verts ((3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) + 1)
-      t227 <- rdU verts ((3 * ((((97 * i31) + 1) + (i224 * 4)) + 3)) + 2)
-      chkI radii ((24 * i31) + i224) 0 0
-      t228 <- rdU radii ((24 * i31) + i224)
+      chkI verts ((12 * i224) + (291 * i31)) 12 14
+      t225 <- rdU verts (((12 * i224) + (291 * i31)) + 12)
+      t226 <- rdU verts (((12 * i224) + (291 * i31)) + 13)
+      t227 <- rdU verts (((12 * i224) + (291 * i31)) + 14)
+      chkI radii (i224 + (24 * i31)) 0 0
+      t228 <- rdU radii (i224 + (24 * i31))
       t229 <- getR v223
       let !t230 = (t225 + (negate t220))
       let !t231 = (t226 + (negate t221))
@@ -528,8 +528,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
       v241 <- newR 0.0
       loopI 0.0 24.0 $ \i242 -> do
         let !d242 = fromIntegral i242 :: Double
-        chkI radii ((24 * i31) + i242) 0 0
-        t243 <- rdU radii ((24 * i31) + i242)
+        chkI radii (i242 + (24 * i31)) 0 0
+        t243 <- rdU radii (i242 + (24 * i31))
         loopI 6.0 12.0 $ \i244 -> do
           let !d244 = fromIntegral i244 :: Double
           let !t245 = (d242 + d244)
@@ -537,14 +537,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t246 <- rdU radii (truncate ((24.0 * d31) + (t245 - (24.0 * (floorF (t245 / 24.0))))))
           loopI 1.0 4.0 $ \i247 -> do
             let !d247 = fromIntegral i247 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) 0 2
-            t248 <- rdU verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1)))
-            t249 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) + 1)
-            t250 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + (i247 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) 0 2
-            t251 <- rdU verts (3 * ((((97 * i31) + 1) + (i242 * 4)) + i247))
-            t252 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) + 1)
-            t253 <- rdU verts ((3 * ((((97 * i31) + 1) + (i242 * 4)) + i247)) + 2)
+            chkI verts ((12 * i242) + (3 * i247) + (291 * i31)) 0 5
+            t248 <- rdU verts ((12 * i242) + (3 * i247) + (291 * i31))
+            t249 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 1)
+            t250 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 2)
+            t251 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 3)
+            t252 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 4)
+            t253 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 5)
             loopI 1.0 4.0 $ \i254 -> do
               let !d254 = fromIntegral i254 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0)))) 0 0
@@ -598,10 +597,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t297 = ((0.3 * ((if (t246 - t243) > 0 then t243 else t246) / 4.0)) - (sqrt (((t294 * t294) + (t295 * t295)) + (t296 * t296))))
               if (if (t293 - t297) > 0 then t297 else t293) > 0 then do
                 setR v235 (0.5 * ((t243 - ((t243 * (d247 + t290)) / 4.0)) + (t246 - ((t246 * (d254 + t292)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i242 * 4))) 0 2
-                t298 <- rdU verts (3 * (((97 * i31) + 1) + (i242 * 4)))
-                t299 <- rdU verts ((3 * (((97 * i31) + 1) + (i242 * 4))) + 1)
-                t300 <- rdU verts ((3 * (((97 * i31) + 1) + (i242 * 4))) + 2)
+                chkI verts ((12 * i242) + (291 * i31)) 3 5
+                t298 <- rdU verts (((12 * i242) + (291 * i31)) + 3)
+                t299 <- rdU verts (((12 * i242) + (291 * i31)) + 4)
+                t300 <- rdU verts (((12 * i242) + (291 * i31)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)))) 0 0
                 t301 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1584,10 +1583,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1639,10 +1638,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s57 = (t39 * t8)
         let !s58 = (t28 + (t39 * t9))
         let !s59 = (t39 * t10)
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
         let !t60 = (s44 + (s27 * s55))
         let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
         let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
@@ -1672,10 +1671,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s86 = (t39 * s57)
         let !s87 = (t28 + (t39 * s58))
         let !s88 = (t39 * s59)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
         let !t89 = (s74 + (s27 * s84))
         let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
         let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
@@ -1705,10 +1703,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s115 = (t39 * s86)
         let !s116 = (t28 + (t39 * s87))
         let !s117 = (t39 * s88)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
         let !t118 = (s103 + (s27 * s113))
         let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
         let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
@@ -1738,10 +1735,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s144 = (t39 * s115)
         let !s145 = (t28 + (t39 * s116))
         let !s146 = (t39 * s117)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
         pure ()
       else do
         let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1766,22 +1762,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s166 = (if t165 > 0 then t159 else t2)
         let !s167 = (if t165 > 0 then t160 else t3)
         let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s166
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s167
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s168
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s168 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s168 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -40,10 +40,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
   v25 <- newR 0.0
   loopI 0.0 24.0 $ \i26 -> do
     let !d26 = fromIntegral i26 :: Double
-    chkI verts (3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) 0 2
-    t27 <- rdU verts (3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3))
-    t28 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) + 1)
-    t29 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + (i26 * 4)) + 3)) + 2)
+    chkI verts ((291 * (truncate a1)) + (12 * i26)) 12 14
+    t27 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 12)
+    t28 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 13)
+    t29 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 14)
     let !t30 = (((a3 * t27) + a6) + (negate t3))
     let !t31 = (((a4 * t28) + a7) + (negate t4))
     let !t32 = (((a5 * t29) + a8) + (negate t5))
@@ -54,10 +54,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       let !t36 = ((if s33 > 0 then (2.0 * (atan (s34 / ((sqrt ((s33 * s33) + (s34 * s34))) + s33)))) else (if (abs s34) > 0 then (2.0 * (atan (((sqrt ((s33 * s33) + (s34 * s34))) - s33) / s34))) else (if (negate s33) > 0 then 3.141592653589793 else 0.0))) - t15)
       let !t37 = (floorF ((t36 - (6.283185307179586 * (floorF (t36 / 6.283185307179586)))) / 0.2617993877991494))
       let !s38 = (if (t37 - 23.0) > 0 then 23.0 else t37)
-      chkI verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) 0 2
-      t39 <- rdU verts (3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3))
-      t40 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 1)
-      t41 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + ((truncate s38) * 4)) + 3)) + 2)
+      chkI verts ((291 * (truncate a2)) + (12 * (truncate s38))) 12 14
+      t39 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s38))) + 12)
+      t40 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s38))) + 13)
+      t41 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s38))) + 14)
       chkI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0))) 0 0
       t42 <- rdU verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)))
       chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
@@ -132,10 +132,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
   v91 <- newR 0.0
   loopI 0.0 24.0 $ \i92 -> do
     let !d92 = fromIntegral i92 :: Double
-    chkI verts (3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) 0 2
-    t93 <- rdU verts (3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3))
-    t94 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 1)
-    t95 <- rdU verts ((3 * ((((97 * (truncate a2)) + 1) + (i92 * 4)) + 3)) + 2)
+    chkI verts ((291 * (truncate a2)) + (12 * i92)) 12 14
+    t93 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 12)
+    t94 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 13)
+    t95 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 14)
     let !t96 = (((a3 * t93) + s0) + (negate t69))
     let !t97 = (((a4 * t94) + s1) + (negate t70))
     let !t98 = (((a5 * t95) + s2) + (negate t71))
@@ -146,10 +146,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       let !t102 = ((if s99 > 0 then (2.0 * (atan (s100 / ((sqrt ((s99 * s99) + (s100 * s100))) + s99)))) else (if (abs s100) > 0 then (2.0 * (atan (((sqrt ((s99 * s99) + (s100 * s100))) - s99) / s100))) else (if (negate s99) > 0 then 3.141592653589793 else 0.0))) - t81)
       let !t103 = (floorF ((t102 - (6.283185307179586 * (floorF (t102 / 6.283185307179586)))) / 0.2617993877991494))
       let !s104 = (if (t103 - 23.0) > 0 then 23.0 else t103)
-      chkI verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) 0 2
-      t105 <- rdU verts (3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3))
-      t106 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 1)
-      t107 <- rdU verts ((3 * ((((97 * (truncate a1)) + 1) + ((truncate s104) * 4)) + 3)) + 2)
+      chkI verts ((291 * (truncate a1)) + (12 * (truncate s104))) 12 14
+      t105 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s104))) + 12)
+      t106 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s104))) + 13)
+      t107 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s104))) + 14)
       chkI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0))) 0 0
       t108 <- rdU verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)))
       chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
@@ -246,10 +246,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
     v177 <- newR (-1.0)
     loopI 0.0 24.0 $ \i178 -> do
       let !d178 = fromIntegral i178 :: Double
-      chkI verts (3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) 0 2
-      t179 <- rdU verts (3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3))
-      t180 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 1)
-      t181 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + (i178 * 4)) + 3)) + 2)
+      chkI verts ((291 * (truncate s137)) + (12 * i178)) 12 14
+      t179 <- rdU verts (((291 * (truncate s137)) + (12 * i178)) + 12)
+      t180 <- rdU verts (((291 * (truncate s137)) + (12 * i178)) + 13)
+      t181 <- rdU verts (((291 * (truncate s137)) + (12 * i178)) + 14)
       v182 <- newR (-1.0)
       let !t183 = (((a3 * t179) + s139) + (negate t148))
       let !t184 = (((a4 * t180) + s140) + (negate t149))
@@ -261,10 +261,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
         let !t189 = ((if s186 > 0 then (2.0 * (atan (s187 / ((sqrt ((s186 * s186) + (s187 * s187))) + s186)))) else (if (abs s187) > 0 then (2.0 * (atan (((sqrt ((s186 * s186) + (s187 * s187))) - s186) / s187))) else (if (negate s186) > 0 then 3.141592653589793 else 0.0))) - t160)
         let !t190 = (floorF ((t189 - (6.283185307179586 * (floorF (t189 / 6.283185307179586)))) / 0.2617993877991494))
         let !s191 = (if (t190 - 23.0) > 0 then 23.0 else t190)
-        chkI verts (3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) 0 2
-        t192 <- rdU verts (3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3))
-        t193 <- rdU verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 1)
-        t194 <- rdU verts ((3 * ((((97 * (truncate s138)) + 1) + ((truncate s191) * 4)) + 3)) + 2)
+        chkI verts ((291 * (truncate s138)) + (12 * (truncate s191))) 12 14
+        t192 <- rdU verts (((291 * (truncate s138)) + (12 * (truncate s191))) + 12)
+        t193 <- rdU verts (((291 * (truncate s138)) + (12 * (truncate s191))) + 13)
+        t194 <- rdU verts (((291 * (truncate s138)) + (12 * (truncate s191))) + 14)
         chkI verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0))) 0 0
         t195 <- rdU verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)))
         chkI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
@@ -314,10 +314,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       pure ()
     t218 <- getR v176
     t219 <- getR v177
-    chkI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) 0 2
-    t220 <- rdU verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3))
-    t221 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 1)
-    t222 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t218) * 4)) + 3)) + 2)
+    chkI verts ((291 * (truncate s137)) + (12 * (truncate t218))) 12 14
+    t220 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t218))) + 12)
+    t221 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t218))) + 13)
+    t222 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t218))) + 14)
     let !s223 = ((a3 * t220) + s139)
     let !s224 = ((a4 * t221) + s140)
     let !s225 = ((a5 * t222) + s141)
@@ -421,10 +421,10 @@ pairContacts meta params pos vel axis normal scalars radii verts grid cellOf ite
       wrU meta 6 (t275 + 1.0)
       pure ()
     if (abs (t219 - t218)) > 0 then do
-      chkI verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) 0 2
-      t276 <- rdU verts (3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3))
-      t277 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 1)
-      t278 <- rdU verts ((3 * ((((97 * (truncate s137)) + 1) + ((truncate t219) * 4)) + 3)) + 2)
+      chkI verts ((291 * (truncate s137)) + (12 * (truncate t219))) 12 14
+      t276 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t219))) + 12)
+      t277 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t219))) + 13)
+      t278 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t219))) + 14)
       let !s279 = ((a3 * t276) + s139)
       let !s280 = ((a4 * t277) + s140)
       let !s281 = ((a5 * t278) + s141)

@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -202,17 +202,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t67 <- rdU verts (3 * (97 * i31))
-    t68 <- rdU verts ((3 * (97 * i31)) + 1)
-    t69 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t67 <- rdU verts (291 * i31)
+    t68 <- rdU verts ((291 * i31) + 1)
+    t69 <- rdU verts ((291 * i31) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
-      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i71)) 12 14
+      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
+      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
+      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
       chkI radii ((24 * i31) + i71) 0 0
       t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
@@ -242,14 +242,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
-            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
-            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
+            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
+            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
+            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
+            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
+            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
+            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
@@ -303,10 +302,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
-                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i89)) 3 5
+                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
+                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
+                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
                 t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1669,10 +1668,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1746,10 +1745,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s79 = ((t28 * t65) + (t53 * t8))
         let !s80 = ((t28 * t66) + (t53 * t9))
         let !s81 = ((t28 * t68) + (t53 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s54 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s55 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s54 - s54) + (s55 - s55)) + (s56 - s56)))) > 0 then s56 else t4)
         let !t82 = (s54 + (s27 * s76))
         let !t83 = (s55 + (s27 * s77))
         let !t84 = (s56 + (s27 * s78))
@@ -1801,10 +1800,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s130 = ((t28 * t116) + (t53 * s79))
         let !s131 = ((t28 * t117) + (t53 * s80))
         let !s132 = ((t28 * t119) + (t53 * s81))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s106 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s107 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s106 - s106) + (s107 - s107)) + (s108 - s108)))) > 0 then s108 else t4)
         let !t133 = (s106 + (s27 * s127))
         let !t134 = (s107 + (s27 * s128))
         let !t135 = (s108 + (s27 * s129))
@@ -1856,10 +1854,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s181 = ((t28 * t167) + (t53 * s130))
         let !s182 = ((t28 * t168) + (t53 * s131))
         let !s183 = ((t28 * t170) + (t53 * s132))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
         let !t184 = (s157 + (s27 * s178))
         let !t185 = (s158 + (s27 * s179))
         let !t186 = (s159 + (s27 * s180))
@@ -1911,10 +1908,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s232 = ((t28 * t218) + (t53 * s181))
         let !s233 = ((t28 * t219) + (t53 * s182))
         let !s234 = ((t28 * t221) + (t53 * s183))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s208 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s209 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s208 - s208) + (s209 - s209)) + (s210 - s210)))) > 0 then s210 else t4)
         pure ()
       else do
         let !t235 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1950,22 +1946,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s265 = (if t264 > 0 then t261 else t2)
         let !s266 = (if t264 > 0 then t262 else t3)
         let !s267 = (if t264 > 0 then t263 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s265
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s266
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s267
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s265 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s266 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s267 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s265 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s266 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s267 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s265 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s266 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s267 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s265
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s266
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s267
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s267 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s267 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s265 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s266 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s267 + (negate t4))))
         pure ()
       pure ()
     pure ()

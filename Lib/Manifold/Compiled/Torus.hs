@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -202,17 +202,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t67 <- rdU verts (3 * (97 * i31))
-    t68 <- rdU verts ((3 * (97 * i31)) + 1)
-    t69 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t67 <- rdU verts (291 * i31)
+    t68 <- rdU verts ((291 * i31) + 1)
+    t69 <- rdU verts ((291 * i31) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
-      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i71)) 12 14
+      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
+      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
+      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
       chkI radii ((24 * i31) + i71) 0 0
       t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
@@ -242,14 +242,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
-            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
-            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
+            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
+            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
+            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
+            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
+            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
+            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
@@ -303,10 +302,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
-                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i89)) 3 5
+                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
+                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
+                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
                 t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1865,10 +1864,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1957,10 +1956,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s94 = ((t28 * t80) + (t68 * t8))
         let !s95 = ((t28 * t81) + (t68 * t9))
         let !s96 = ((t28 * t83) + (t68 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
         let !t97 = (s69 + (s27 * s91))
         let !t98 = (s71 + (s27 * s93))
         let !t99 = (sqrt ((t97 * t97) + (t98 * t98)))
@@ -2027,10 +2026,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s160 = ((t28 * t146) + (t68 * s94))
         let !s161 = ((t28 * t147) + (t68 * s95))
         let !s162 = ((t28 * t149) + (t68 * s96))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s136 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s137 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s138 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s136 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s137 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s136 - s136) + (s137 - s137)) + (s138 - s138)))) > 0 then s138 else t4)
         let !t163 = (s136 + (s27 * s157))
         let !t164 = (s138 + (s27 * s159))
         let !t165 = (sqrt ((t163 * t163) + (t164 * t164)))
@@ -2097,10 +2095,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s226 = ((t28 * t212) + (t68 * s160))
         let !s227 = ((t28 * t213) + (t68 * s161))
         let !s228 = ((t28 * t215) + (t68 * s162))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s202 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s203 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s204 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s202 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s203 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204)))) > 0 then s204 else t4)
         let !t229 = (s202 + (s27 * s223))
         let !t230 = (s204 + (s27 * s225))
         let !t231 = (sqrt ((t229 * t229) + (t230 * t230)))
@@ -2167,10 +2164,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s292 = ((t28 * t278) + (t68 * s226))
         let !s293 = ((t28 * t279) + (t68 * s227))
         let !s294 = ((t28 * t281) + (t68 * s228))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
         pure ()
       else do
         let !t295 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -2221,22 +2217,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s340 = (if t339 > 0 then t336 else t2)
         let !s341 = (if t339 > 0 then t337 else t3)
         let !s342 = (if t339 > 0 then t338 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s340
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s341
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s342
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s340 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s341 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s342 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s340 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s341 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s342 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s340 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s341 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s342 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s340
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s341
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s342
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s340 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s341 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s342 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s340 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s341 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s342 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s340 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s341 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s342 + (negate t4))))
         pure ()
       pure ()
     pure ()

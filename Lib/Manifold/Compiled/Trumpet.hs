@@ -165,8 +165,8 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
           chkI grid (truncate s51) 0 0
           t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate t38) + (truncate s51)) 0 0
-          t53 <- rdU grid ((truncate t38) + (truncate s51))
+          chkI grid ((truncate s51) + (truncate t38)) 0 0
+          t53 <- rdU grid ((truncate s51) + (truncate t38))
           loopI t53 t52 $ \i54 -> do
             let !d54 = fromIntegral i54 :: Double
             chkI items i54 0 0
@@ -202,17 +202,17 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           pure ()
         pure ()
       pure ()
-    chkI verts (3 * (97 * i31)) 0 2
-    t67 <- rdU verts (3 * (97 * i31))
-    t68 <- rdU verts ((3 * (97 * i31)) + 1)
-    t69 <- rdU verts ((3 * (97 * i31)) + 2)
+    chkI verts (291 * i31) 0 2
+    t67 <- rdU verts (291 * i31)
+    t68 <- rdU verts ((291 * i31) + 1)
+    t69 <- rdU verts ((291 * i31) + 2)
     v70 <- newR 1.0
     loopI 0.0 24.0 $ \i71 -> do
       let !d71 = fromIntegral i71 :: Double
-      chkI verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) 0 2
-      t72 <- rdU verts (3 * ((((97 * i31) + 1) + (i71 * 4)) + 3))
-      t73 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 1)
-      t74 <- rdU verts ((3 * ((((97 * i31) + 1) + (i71 * 4)) + 3)) + 2)
+      chkI verts ((291 * i31) + (12 * i71)) 12 14
+      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
+      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
+      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
       chkI radii ((24 * i31) + i71) 0 0
       t75 <- rdU radii ((24 * i31) + i71)
       t76 <- getR v70
@@ -242,14 +242,13 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
           t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
           loopI 1.0 4.0 $ \i94 -> do
             let !d94 = fromIntegral i94 :: Double
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) 0 2
-            t95 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1)))
-            t96 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 1)
-            t97 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + (i94 - 1))) + 2)
-            chkI verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) 0 2
-            t98 <- rdU verts (3 * ((((97 * i31) + 1) + (i89 * 4)) + i94))
-            t99 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 1)
-            t100 <- rdU verts ((3 * ((((97 * i31) + 1) + (i89 * 4)) + i94)) + 2)
+            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
+            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
+            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
+            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
+            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
+            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
+            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
             loopI 1.0 4.0 $ \i101 -> do
               let !d101 = fromIntegral i101 :: Double
               chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
@@ -303,10 +302,10 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
               let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
               if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
                 setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts (3 * (((97 * i31) + 1) + (i89 * 4))) 0 2
-                t145 <- rdU verts (3 * (((97 * i31) + 1) + (i89 * 4)))
-                t146 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 1)
-                t147 <- rdU verts ((3 * (((97 * i31) + 1) + (i89 * 4))) + 2)
+                chkI verts ((291 * i31) + (12 * i89)) 3 5
+                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
+                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
+                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
                 chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
                 t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
                 chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
@@ -1699,10 +1698,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
     chkI params 0 10 10
     t12 <- rdU params 10
     t13 <- rdU scalars ((6 * i1) + 5)
-    chkI verts (3 * (97 * i1)) 0 2
-    wrU verts (3 * (97 * i1)) t2
-    wrU verts ((3 * (97 * i1)) + 1) t3
-    wrU verts ((3 * (97 * i1)) + 2) t4
+    chkI verts (291 * i1) 0 2
+    wrU verts (291 * i1) t2
+    wrU verts ((291 * i1) + 1) t3
+    wrU verts ((291 * i1) + 2) t4
     let !s14 = ((t9 * t7) - (t10 * t6))
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
@@ -1779,10 +1778,10 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s82 = ((t28 * t68) + (t56 * t8))
         let !s83 = ((t28 * t69) + (t56 * t9))
         let !s84 = ((t28 * t71) + (t56 * t10))
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s57 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s58 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s57 - s57) + (s58 - s58)) + (s59 - s59)))) > 0 then s59 else t4)
         let !t85 = (s57 + (s27 * s79))
         let !t86 = (s59 + (s27 * s81))
         let !t87 = (sqrt ((t85 * t85) + (t86 * t86)))
@@ -1837,10 +1836,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s136 = ((t28 * t122) + (t56 * s82))
         let !s137 = ((t28 * t123) + (t56 * s83))
         let !s138 = ((t28 * t125) + (t56 * s84))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s112 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s113 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s112 - s112) + (s113 - s113)) + (s114 - s114)))) > 0 then s114 else t4)
         let !t139 = (s112 + (s27 * s133))
         let !t140 = (s114 + (s27 * s135))
         let !t141 = (sqrt ((t139 * t139) + (t140 * t140)))
@@ -1895,10 +1893,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s190 = ((t28 * t176) + (t56 * s136))
         let !s191 = ((t28 * t177) + (t56 * s137))
         let !s192 = ((t28 * t179) + (t56 * s138))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s166 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s167 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s166 - s166) + (s167 - s167)) + (s168 - s168)))) > 0 then s168 else t4)
         let !t193 = (s166 + (s27 * s187))
         let !t194 = (s168 + (s27 * s189))
         let !t195 = (sqrt ((t193 * t193) + (t194 * t194)))
@@ -1953,10 +1950,9 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s244 = ((t28 * t230) + (t56 * s190))
         let !s245 = ((t28 * t231) + (t56 * s191))
         let !s246 = ((t28 * t233) + (t56 * s192))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
+        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s220 else t2)
+        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s221 else t3)
+        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222)))) > 0 then s222 else t4)
         pure ()
       else do
         let !t247 = (if (abs t21) > 0 then 1.0 else 0.0)
@@ -1995,22 +1991,19 @@ stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf i
         let !s280 = (if t279 > 0 then t276 else t2)
         let !s281 = (if t279 > 0 then t277 else t3)
         let !s282 = (if t279 > 0 then t278 else t4)
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) s280
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 1) s281
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 3)) + 2) s282
-        chkI verts (3 * (((97 * i1) + 1) + (i20 * 4))) 0 2
-        wrU verts (3 * (((97 * i1) + 1) + (i20 * 4))) (t2 + (0.25 * (s280 + (negate t2))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 1) (t3 + (0.25 * (s281 + (negate t3))))
-        wrU verts ((3 * (((97 * i1) + 1) + (i20 * 4))) + 2) (t4 + (0.25 * (s282 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) (t2 + (0.5 * (s280 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 1) (t3 + (0.5 * (s281 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 1)) + 2) (t4 + (0.5 * (s282 + (negate t4))))
-        chkI verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) 0 2
-        wrU verts (3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) (t2 + (0.75 * (s280 + (negate t2))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 1) (t3 + (0.75 * (s281 + (negate t3))))
-        wrU verts ((3 * ((((97 * i1) + 1) + (i20 * 4)) + 2)) + 2) (t4 + (0.75 * (s282 + (negate t4))))
+        chkI verts ((291 * i1) + (12 * i20)) 3 14
+        wrU verts (((291 * i1) + (12 * i20)) + 12) s280
+        wrU verts (((291 * i1) + (12 * i20)) + 13) s281
+        wrU verts (((291 * i1) + (12 * i20)) + 14) s282
+        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s280 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s281 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s282 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s280 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s281 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s282 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s280 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s281 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s282 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -37,7 +37,7 @@ module Manifold.Stage.Imp
 import Control.Monad.State.Strict
 import qualified Data.IntMap.Strict as IM
 import qualified Data.Map.Strict as M
-import Data.List (intercalate)
+import Data.List (intercalate, sortOn)
 import qualified Data.Vector.Unboxed.Mutable as MV
 import GHC.Float (castWord64ToDouble)
 
@@ -381,11 +381,10 @@ wholeIndex i = case nodeById i of
 arrayAccess :: String -> E -> Staged String
 arrayAccess arr e = do
   counters <- Staged (gets ssIntVars)
-  let (baseNode, offset) = splitOffset (nodeId e)
-  base <- case baseNode of
-    Nothing -> pure "0"
-    Just b | wholeIndex b -> pure (intExpression counters b)
-           | otherwise -> (\d -> "(truncate " ++ d ++ ")") <$> expression e
+  (base, offset) <-
+    if wholeIndex (nodeId e)
+      then let (terms, k) = linearIndex (nodeId e) in pure (printTerms counters terms, k)
+      else (\d -> ("(truncate " ++ d ++ ")", 0)) <$> expression e
   let key = (arr, base)
   checks <- Staged (gets ssChecks)
   ranges <- Staged (gets ssCheckRanges)
@@ -405,17 +404,37 @@ arrayAccess arr e = do
   pure (if offset == 0 then base else if base == "0" then intLiteral offset else "(" ++ base ++ " + " ++ intLiteral offset ++ ")")
   where
     intLiteral k = if k < 0 then "(" ++ show k ++ ")" else show k
-    -- an index as a base node and a whole-number offset; splitting only
-    -- whole-number arithmetic (truncate (b + k) is not truncate b + k)
-    splitOffset :: Int -> (Maybe Int, Int)
-    splitOffset i
-      | not (wholeIndex i) = (Just i, 0)
-      | otherwise = case nodeById i of
-          Lit w -> (Nothing, truncate (castWord64ToDouble w))
-          Bin Add a b | Lit w <- nodeById b -> let (x, k) = splitOffset a in (x, k + truncate (castWord64ToDouble w))
-                      | Lit w <- nodeById a -> let (x, k) = splitOffset b in (x, k + truncate (castWord64ToDouble w))
-          Bin Sub a b | Lit w <- nodeById b -> let (x, k) = splitOffset a in (x, k - truncate (castWord64ToDouble w))
-          _ -> (Just i, 0)
+
+-- | A whole-number index as a sum of terms (a node that is not a sum,
+-- difference or multiple, with its whole coefficient) and a constant, so
+-- that @3 * (97 * i + 4 * j + 3)@ is @291 * i + 12 * j@ plus 9 and shares a
+-- check with its neighbours at @+ 10@ and @+ 11@. Exact: the staged
+-- arithmetic on whole numbers is exact below 2^53, and so is 'Int's.
+linearIndex :: Int -> (M.Map Int Int, Int)
+linearIndex i = case nodeById i of
+  Lit w -> (M.empty, truncate (castWord64ToDouble w))
+  Bin Add a b -> plus (linearIndex a) (linearIndex b)
+  Bin Sub a b -> plus (linearIndex a) (scale (-1) (linearIndex b))
+  Un Neg a -> scale (-1) (linearIndex a)
+  Bin Mul a b
+    | (ta, ka) <- linearIndex a, M.null ta -> scale ka (linearIndex b)
+    | (tb, kb) <- linearIndex b, M.null tb -> scale kb (linearIndex a)
+  _ -> (M.singleton i 1, 0)
+  where
+    plus (ta, ka) (tb, kb) = (M.filter (/= 0) (M.unionWith (+) ta tb), ka + kb)
+    scale c (t, k) = (M.filter (/= 0) (M.map (c *) t), c * k)
+
+-- | The terms of a 'linearIndex' as 'Int' arithmetic ("0" for none), in
+-- the order of their printed text: node ids depend on what else the global
+-- table holds, and the printed step must not.
+printTerms :: M.Map String String -> M.Map Int Int -> String
+printTerms counters terms = case sortOn fst [ (intExpression counters node, c) | (node, c) <- M.toList terms ] of
+  [] -> "0"
+  [t] -> term t
+  ts -> "(" ++ intercalate " + " (map term ts) ++ ")"
+  where
+    term (atom, 1) = atom
+    term (atom, c) = "(" ++ (if c < 0 then "(" ++ show c ++ ")" else show c) ++ " * " ++ atom ++ ")"
 
 checkPlaceholder :: Int -> String
 checkPlaceholder c = "@check" ++ show c ++ "@"
