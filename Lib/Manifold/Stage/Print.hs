@@ -3,7 +3,9 @@
 -- A set of root expressions is lowered to a block of bindings followed by the
 -- roots: every node used more than once (within the block) is printed once as
 -- a local binding, nodes already bound in an enclosing scope are referred to
--- by name, and every node used once is inlined where it is used. Names are
+-- by name, and every node used once is inlined where it is used (in Haskell,
+-- so is an expensive node used only inside conditionals' arms: see
+-- 'onlyUnderConditions'). Names are
 -- given in the order bindings are printed, so the same input prints the same
 -- bytes whatever else the global node table holds.
 module Manifold.Stage.Print
@@ -59,7 +61,7 @@ lower target prefix next scope roots =
         [ o | target == JavaScript, i <- IM.keys counts, Bin Pow a b <- [nodeById i], o <- [a, b] ]
       shared i = compound (nodeById i) && (IM.findWithDefault 0 i counts > 1 || IS.member i powOperands)
       bound = case target of
-        Haskell -> IS.fromList (filter shared order) `IS.difference` onlyUnderConditions target order rootIds
+        Haskell -> IS.fromList (filter shared order) `IS.difference` onlyUnderConditions order rootIds
         _ -> IS.fromList (filter shared order)
       bind (bs, sc, k) i
         | IS.member i bound =
@@ -83,8 +85,8 @@ lower target prefix next scope roots =
 -- makes the arm expensive, LLVM keeps the branch, and the division is done
 -- only where the arm is taken. The values are the same operations on the
 -- same operands, so the results are too.
-onlyUnderConditions :: Target -> [Int] -> [Int] -> IS.IntSet
-onlyUnderConditions _ order rootIds = IS.fromList [ i | i <- order, IM.member i guardedAll ]
+onlyUnderConditions :: [Int] -> [Int] -> IS.IntSet
+onlyUnderConditions order rootIds = IS.fromList [ i | i <- order, IM.member i guardedAll ]
   where
     -- every reference to each node: its parent and whether it is an arm
     refs :: IM.IntMap [(Int, Bool)]
