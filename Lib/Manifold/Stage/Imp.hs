@@ -248,7 +248,7 @@ instance Imp Staged where
     if hs
       then do
         -- the counter is an Int (array indices are computed from it in Int
-        -- arithmetic, see 'indexExpression'); the loop body sees it as a
+        -- arithmetic, see 'arrayAccess'); the loop body sees it as a
         -- number, as the staged program does
         let d = 'd' : drop 1 i
         Staged (modify' (\s -> s { ssIntVars = M.insert d i (ssIntVars s) }))
@@ -280,28 +280,15 @@ instance Imp Staged where
           emitLine "}"
   readArray (StagedArray a) (IxE i) = do
     hs <- isHaskell
-    if hs
-      then do
-        i' <- arrayAccess a i
-        t <- fresh "t"
-        emitLine (t ++ " <- rdU " ++ a ++ " " ++ i')
-        pure (sym t)
-      else do
-        i' <- indexExpression i
-        t <- fresh "t"
-        emitLine ("const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
-        pure (sym t)
+    i' <- if hs then arrayAccess a i else expression i
+    t <- fresh "t"
+    emitLine (if hs then t ++ " <- rdU " ++ a ++ " " ++ i' else "const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
+    pure (sym t)
   writeArray (StagedArray a) (IxE i) x = do
     hs <- isHaskell
-    if hs
-      then do
-        i' <- arrayAccess a i
-        x' <- expression x
-        emitLine ("wrU " ++ a ++ " " ++ i' ++ " " ++ x')
-      else do
-        i' <- indexExpression i
-        x' <- expression x
-        emitLine (a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
+    i' <- if hs then arrayAccess a i else expression i
+    x' <- expression x
+    emitLine (if hs then "wrU " ++ a ++ " " ++ i' ++ " " ++ x' else a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
   share = bindAs "s"
   shareAll xs = do
     _ <- expressions (foldr (:) [] xs)
@@ -340,20 +327,6 @@ instance Imp Staged where
       Haskell -> unwords (name : ssArrays st ++ args')
       _ -> name ++ "(" ++ intercalate ", " (ssArrays st ++ args') ++ ");"
 
--- | An array index. In JavaScript, the index expression as it is. In
--- Haskell, as 'Int' arithmetic where it is sums and products of whole
--- numbers, loop counters and stored whole numbers (exact, as the staged
--- 'Double' arithmetic on them is below 2^53, and without a conversion at
--- every access); anything else is computed as a number and truncated.
-indexExpression :: E -> Staged String
-indexExpression e = do
-  s <- Staged get
-  if ssTarget s == Haskell && wholeIndex (nodeId e)
-    then pure (intExpression (ssIntVars s) (nodeId e))
-    else do
-      d <- expression e
-      pure (if ssTarget s == Haskell then "(truncate " ++ d ++ ")" else d)
-
 -- | Sums and products of whole numbers, loop counters and stored whole
 -- numbers: an index computed exactly in 'Int' arithmetic.
 wholeIndex :: Int -> Bool
@@ -377,7 +350,10 @@ wholeIndex i = case nodeById i of
 -- its own check: one made before the condition must not fail for an access
 -- the condition would skip.
 -- The base is printed from names that are bound once, so the same text is
--- the same number throughout the block.
+-- the same number throughout the block. An index of sums and products of
+-- whole numbers, loop counters and stored whole numbers is 'Int' arithmetic
+-- (exact, and no conversion at every access); any other is computed as a
+-- number and truncated. (JavaScript prints the index expression as it is.)
 arrayAccess :: String -> E -> Staged String
 arrayAccess arr e = do
   counters <- Staged (gets ssIntVars)
