@@ -18,7 +18,7 @@ import Test.QuickCheck.Gen (unGen)
 import Test.QuickCheck.Random (mkQCGen)
 import Text.Printf (printf)
 
-import Manifold.Compiled.Runtime (chkI)
+import Manifold.Compiled.Runtime (chkI, primitiveArray)
 import Manifold.Field
 import Manifold.Stage.Imp
 import Manifold.Stage.Print (Target (..))
@@ -254,7 +254,7 @@ spec = do
     filter (\ln -> "rdI" `isInfixOf` ln || "wrI" `isInfixOf` ln) printed `shouldBe` []
 
   it "a failed index check is an error naming the indices, before any access" $ do
-    arr <- MV.replicate 4 (0 :: Double)
+    arr <- primitiveArray <$> MV.replicate 4 (0 :: Double)
     chkI arr 1 0 2
     chkI arr 0 0 3
     outside <- try (chkI arr 2 0 2) :: IO (Either IOException ())

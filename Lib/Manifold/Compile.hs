@@ -57,6 +57,7 @@ compiledModule shared sp l functions = unlines $ generatedPragmas ["BangPatterns
   , "module Manifold.Compiled." ++ compiledModuleName sp ++ " (compiled) where"
   , ""
   , "import Data.Foldable (toList)"
+  , "import Data.Vector.Unboxed.Mutable (IOVector)"
   , "import Manifold.Compiled.Runtime"
   , "import Manifold.Compiled.Shared"
   , "import Manifold.World (WorldArrays)"
@@ -69,8 +70,8 @@ compiledModule shared sp l functions = unlines $ generatedPragmas ["BangPatterns
   , "fingerprint :: String"
   , "fingerprint = " ++ show (spaceFingerprint sp l)
   , ""
-  , "applyTo :: (" ++ concatMap (const "Arr -> ") worldParams ++ "IO ()) -> WorldArrays Arr -> IO ()"
-  , "applyTo f w = case toList w of"
+  , "applyTo :: (" ++ concatMap (const "Arr -> ") worldParams ++ "IO ()) -> WorldArrays (IOVector Double) -> IO ()"
+  , "applyTo f w = case map primitiveArray (toList w) of"
   , "  [" ++ intercalate ", " worldParams ++ "] -> f " ++ unwords worldParams
   , "  _ -> error \"Manifold.Compiled." ++ compiledModuleName sp ++ ": the world's arrays are not the ones this step was printed for\""
   , ""

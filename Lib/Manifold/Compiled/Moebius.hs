@@ -5,6 +5,7 @@
 module Manifold.Compiled.Moebius (compiled) where
 
 import Data.Foldable (toList)
+import Data.Vector.Unboxed.Mutable (IOVector)
 import Manifold.Compiled.Runtime
 import Manifold.Compiled.Shared
 import Manifold.World (WorldArrays)
@@ -21,13 +22,13 @@ compiled = CompiledStep "moebius" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - 1.0);\n}\n\nboundary function f(x, y, z) {\n  return (0.4 - Math.abs(y));\n}\n\ngravity function f(x, y, z) {\n  return [0.0, (-(4.0 * y)), 0.0];\n}\n\nquotient Antipodal\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays Arr -> IO ()
-applyTo f w = case toList w of
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo f w = case map primitiveArray (toList w) of
   [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse
   _ -> error "Manifold.Compiled.Moebius: the world's arrays are not the ones this step was printed for"
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -72,7 +73,7 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
   pure ()
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -789,7 +790,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   pure ()
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1743,7 +1744,7 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1902,7 +1903,7 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -11,6 +11,7 @@
 -- native engine gets the simplifications V8 gets.
 module Manifold.Compiled.Runtime
   ( Arr
+  , primitiveArray
   , loopI
   , chkI
   , rdU
@@ -24,7 +25,9 @@ module Manifold.Compiled.Runtime
   , spaceFingerprint
   ) where
 
+import qualified Data.Vector.Primitive.Mutable as PV
 import qualified Data.Vector.Unboxed.Mutable as MV
+import Data.Vector.Unboxed.Base (MVector (MV_Double))
 import Linear.V3 (V3 (..))
 
 import Manifold.Field
@@ -33,7 +36,18 @@ import Manifold.Stage.Expr (E, sym)
 import Manifold.Stage.Print
 import Manifold.World (Layout (..), WorldArrays)
 
-type Arr = MV.IOVector Double
+-- | The printed step's arrays are the world's, seen as primitive vectors
+-- (a plain data type). An unboxed vector of 'Double' is a data family
+-- instance, and GHC evaluates a data family value through its generic apply
+-- code, spilling every live number around it, wherever the printed step
+-- touches an array; a primitive vector is evaluated once, where the printed
+-- function's strict parameter receives it.
+type Arr = PV.IOVector Double
+
+-- | The world's array as the printed step takes it (the same memory).
+primitiveArray :: MV.IOVector Double -> Arr
+primitiveArray (MV_Double v) = v
+{-# INLINE primitiveArray #-}
 
 -- | @loopI lo hi body@: the printed @for@ loop. The counter is an 'Int'
 -- from @lo@ (a whole number) while it is below @hi@ (compared as numbers,
@@ -50,41 +64,41 @@ loopI lo hi body = go (truncate lo)
 -- array instead of one per access).
 chkI :: Arr -> Int -> Int -> Int -> IO ()
 chkI a base lo hi
-  | base + lo >= 0 && base + hi < MV.length a = pure ()
+  | base + lo >= 0 && base + hi < PV.length a = pure ()
   | otherwise = outOfBounds a base lo hi
 {-# INLINE chkI #-}
 
 outOfBounds :: Arr -> Int -> Int -> Int -> IO ()
 outOfBounds a base lo hi = ioError $ userError $
   "Manifold.Compiled: indices " ++ show (base + lo) ++ " to " ++ show (base + hi)
-  ++ " outside an array of " ++ show (MV.length a)
+  ++ " outside an array of " ++ show (PV.length a)
 {-# NOINLINE outOfBounds #-}
 
 rdU :: Arr -> Int -> IO Double
-rdU = MV.unsafeRead
+rdU = PV.unsafeRead
 {-# INLINE rdU #-}
 
 wrU :: Arr -> Int -> Double -> IO ()
-wrU a i !x = MV.unsafeWrite a i x
+wrU a i !x = PV.unsafeWrite a i x
 {-# INLINE wrU #-}
 
 -- | A mutable local (the printed @let@): one unboxed number.
-newtype NumRef = NumRef (MV.IOVector Double)
+newtype NumRef = NumRef (PV.IOVector Double)
 
 -- (not 'MV.replicate': its fill loop costs more than the one write)
 newR :: Double -> IO NumRef
 newR !x = do
-  r <- MV.unsafeNew 1
-  MV.unsafeWrite r 0 x
+  r <- PV.unsafeNew 1
+  PV.unsafeWrite r 0 x
   pure (NumRef r)
 {-# INLINE newR #-}
 
 getR :: NumRef -> IO Double
-getR (NumRef r) = MV.unsafeRead r 0
+getR (NumRef r) = PV.unsafeRead r 0
 {-# INLINE getR #-}
 
 setR :: NumRef -> Double -> IO ()
-setR (NumRef r) !x = MV.unsafeWrite r 0 x
+setR (NumRef r) !x = PV.unsafeWrite r 0 x
 {-# INLINE setR #-}
 
 -- | A space's step, compiled: the phases in the order of
@@ -93,7 +107,7 @@ setR (NumRef r) !x = MV.unsafeWrite r 0 x
 data CompiledStep = CompiledStep
   { compiledSpace :: String
   , compiledFingerprint :: String
-  , compiledPhases :: [(String, WorldArrays Arr -> IO ())]
+  , compiledPhases :: [(String, WorldArrays (MV.IOVector Double) -> IO ())]
   }
 
 -- | Everything about a space and a layout that the staged step depends on:

@@ -5,6 +5,7 @@
 module Manifold.Compiled.Trumpet (compiled) where
 
 import Data.Foldable (toList)
+import Data.Vector.Unboxed.Mutable (IOVector)
 import Manifold.Compiled.Runtime
 import Manifold.Compiled.Shared
 import Manifold.World (WorldArrays)
@@ -21,13 +22,13 @@ compiled = CompiledStep "trumpet" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - Math.exp(y));\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, (-0.6), 0.0];\n}\n\nquotient NoQuotient\nbounds 4.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays Arr -> IO ()
-applyTo f w = case toList w of
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo f w = case map primitiveArray (toList w) of
   [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse
   _ -> error "Manifold.Compiled.Trumpet: the world's arrays are not the ones this step was printed for"
 
 stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,7 +72,7 @@ stepGravity meta params pos vel axis normal scalars radii verts grid cellOf item
   pure ()
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -465,7 +466,7 @@ stepCollide meta params pos vel axis normal scalars radii verts grid cellOf item
   pure ()
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1507,7 +1508,7 @@ stepSolve meta params pos vel axis normal scalars radii verts grid cellOf items 
   pure ()
 
 stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1676,7 +1677,7 @@ stepIntegrate meta params pos vel axis normal scalars radii verts grid cellOf it
   pure ()
 
 stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse = do
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

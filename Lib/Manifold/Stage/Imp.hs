@@ -496,7 +496,9 @@ functionHead :: Target -> String -> [String] -> [String] -> String
 functionHead target name arrays scalars = case target of
   Haskell ->
     name ++ " :: " ++ concatMap (const "Arr -> ") arrays ++ concatMap (const "Double -> ") scalars ++ "IO ()\n"
-    ++ unwords (name : arrays ++ scalars) ++ " = do"
+    -- strict parameters: each array is evaluated once, here, rather than
+    -- wherever the body reads it, and the numbers arrive unboxed
+    ++ unwords (name : map ('!' :) (arrays ++ scalars)) ++ " = do"
   _ -> "function " ++ name ++ "(" ++ intercalate ", " (arrays ++ scalars) ++ ") {"
 
 functionEnd :: Target -> [String]
