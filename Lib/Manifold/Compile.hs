@@ -45,7 +45,7 @@ sharedFunctions perSpace = case perSpace of
 generatedPragmas :: [String] -> [String]
 generatedPragmas extensions =
   [ "{-# LANGUAGE " ++ intercalate ", " extensions ++ " #-}"
-  , "{-# OPTIONS_GHC -w -O1 -fllvm #-}"
+  , "{-# OPTIONS_GHC -w -O2 -fllvm #-}"
   ]
 
 -- | The module of one space's compiled step, given its printed functions
