@@ -256,8 +256,8 @@ pairContactsVia :: Imp m => Layout -> WorldArrays (Array m) -> Scalar m
 pairContactsVia l w keyBase x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
   backShift <- share3 (negated (signs * shift))
-  (deepXY, normalXY, edgeXY) <- deepestInside l w x y signs shift
-  (deepYX, normalYX, edgeYX) <- deepestInside l w y x signs backShift
+  (deepXY, normalXY, edgeXY) <- deepestInside l w 0 x y signs shift
+  (deepYX, normalYX, edgeYX) <- deepestInside l w nd y x signs backShift
   yInX <- share (deepYX - 1.1 * deepXY)
   let pick a b = select yInX b a
       pick3 (V3 a b c) (V3 u v s) = V3 (pick a u) (pick b v) (pick c s)
@@ -267,6 +267,8 @@ pairContactsVia l w keyBase x y signs shift = do
     mover <- share (pick (toScalar x) (toScalar y))
     reference <- share (pick (toScalar y) (toScalar x))
     moverShift <- share3 (pick3 shift backShift)
+    -- where deepestInside left the mover's vertices' depths
+    moverProbe <- share (pick 0 (fromIntegral (polyDirections (polygon l))))
     edgeNormal <- share3 (pick3 normalXY normalYX)
     o0 <- share3 (pick3 edgeXY edgeYX)
     let image q = signs * q + moverShift
@@ -283,9 +285,8 @@ pairContactsVia l w keyBase x y signs shift = do
     t <- share3 (bfNormal fr `cross` m0)
     (dLo, dHi) <- extremesAlong nd $ \d -> do
       q <- outlineVertex l w mv d
-      depth <- newRef (-1)
-      whenNear fr (image q) (pointInBody l w rf fr (image q) >>= writeRef depth . fst)
-      (, ((image q) ^-^ bfCentre fr) `dot` t) <$> readRef depth
+      depth <- readArray (wProbe w) (toIndex moverProbe + d)
+      pure (depth, ((image q) ^-^ bfCentre fr) `dot` t)
     let emitAt slot dv = do
           q <- outlineVertex l w mv (toIndex dv)
           query <- share3 (image q)
@@ -295,11 +296,14 @@ pairContactsVia l w keyBase x y signs shift = do
 
 -- | Of body @x@'s outline vertices, mapped by @p ↦ signs·p + shift@, the
 -- one deepest inside body @y@: its depth (0 when none is inside), and the
--- outward normal and a vertex of the edge of y it lies behind.
-deepestInside :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m
+-- outward normal and a vertex of the edge of y it lies behind. Each
+-- vertex's depth (−1 when it is not near y) is left in the probe array from
+-- @slot@ on, so that the pair's contact points are chosen without testing
+-- the vertices again.
+deepestInside :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m -> Index m
               -> V3 (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
 {-# INLINE deepestInside #-}
-deepestInside l w x y signs shift = do
+deepestInside l w slot x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
   fy <- bodyFrame w y
@@ -312,8 +316,10 @@ deepestInside l w x y signs shift = do
   oz <- newRef 0
   forEach nd $ \d -> do
     q <- outlineVertex l w x d
+    writeArray (wProbe w) (slot + d) (-1)
     whenNear fy (image q) $ do
       e <- edgeFacing l w y fy (image q)
+      writeArray (wProbe w) (slot + d) (efDepth e)
       best <- readRef deepest
       whenPositive (efDepth e - best) $ do
         writeRef deepest (efDepth e)

@@ -88,6 +88,7 @@ data WorldArrays a = WorldArrays
   , wPrev :: a -- ^ the last step's contacts for warm starting: owner, key, normal and friction impulse
   , wBodyPrev :: a -- ^ per body: where its contacts start in 'wPrev', and how many
   , wMouse :: a -- ^ see 'MouseField'
+  , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -164,11 +165,12 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wPrev = prevStride * maxContacts l
   , wBodyPrev = 2 * c
   , wMouse = count' MActive
+  , wProbe = 2 * polyDirections (polygon l)
   }
 
 arrayNames :: WorldArrays String
 arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
-  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse"
+  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 {-# INLINE read3 #-}

@@ -22,13 +22,13 @@ compiled = CompiledStep "flat-klein" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, 0.0];\n}\n\nquotient Lattice {latticePeriod = 2.0, latticeFlip = True}\nbounds 2.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
   _ -> error "Manifold.Compiled.FlatKlein: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -67,8 +67,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -190,7 +190,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t69 = (t34 + (negate t63))
                   let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
                   if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -256,7 +256,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t104 = (s72 + (negate t98))
                   let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
                   if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -322,7 +322,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t139 = (s107 + (negate t133))
                   let !t140 = ((t35 + t134) - (sqrt (((t137 * t137) + (t138 * t138)) + (t139 * t139))))
                   if (if (t136 - t140) > 0 then t140 else t136) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t129 + 1.0) * 64.0) + 20.0) d31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t129 + 1.0) * 64.0) + 20.0) d31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -388,7 +388,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t174 = (s142 + (negate t168))
                   let !t175 = ((t35 + t169) - (sqrt (((t172 * t172) + (t173 * t173)) + (t174 * t174))))
                   if (if (t171 - t175) > 0 then t175 else t171) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t164 + 1.0) * 64.0) + 24.0) d31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t164 + 1.0) * 64.0) + 24.0) d31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -451,7 +451,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t206 = (s176 + (negate t200))
                   let !t207 = ((t35 + t201) - (sqrt (((t204 * t204) + (t205 * t205)) + (t206 * t206))))
                   if (if (t203 - t207) > 0 then t207 else t203) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t196 + 1.0) * 64.0) + 28.0) d31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0)
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t196 + 1.0) * 64.0) + 28.0) d31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -514,7 +514,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t238 = (s208 + (negate t232))
                   let !t239 = ((t35 + t233) - (sqrt (((t236 * t236) + (t237 * t237)) + (t238 * t238))))
                   if (if (t235 - t239) > 0 then t239 else t235) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t228 + 1.0) * 64.0) + 32.0) d31 t228 1.0 1.0 1.0 0.0 0.0 2.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t228 + 1.0) * 64.0) + 32.0) d31 t228 1.0 1.0 1.0 0.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -580,7 +580,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t273 = (s241 + (negate t267))
                   let !t274 = ((t35 + t268) - (sqrt (((t271 * t271) + (t272 * t272)) + (t273 * t273))))
                   if (if (t270 - t274) > 0 then t274 else t270) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t263 + 1.0) * 64.0) + 36.0) d31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t263 + 1.0) * 64.0) + 36.0) d31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -646,7 +646,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t308 = (s276 + (negate t302))
                   let !t309 = ((t35 + t303) - (sqrt (((t306 * t306) + (t307 * t307)) + (t308 * t308))))
                   if (if (t305 - t309) > 0 then t309 else t305) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t298 + 1.0) * 64.0) + 40.0) d31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t298 + 1.0) * 64.0) + 40.0) d31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -712,7 +712,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t343 = (s311 + (negate t337))
                   let !t344 = ((t35 + t338) - (sqrt (((t341 * t341) + (t342 * t342)) + (t343 * t343))))
                   if (if (t340 - t344) > 0 then t344 else t340) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t333 + 1.0) * 64.0) + 44.0) d31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t333 + 1.0) * 64.0) + 44.0) d31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -979,8 +979,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1775,8 +1775,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1912,8 +1912,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

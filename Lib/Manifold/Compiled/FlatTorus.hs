@@ -22,13 +22,13 @@ compiled = CompiledStep "flat-torus" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, 0.0];\n}\n\nquotient Lattice {latticePeriod = 2.0, latticeFlip = False}\nbounds 2.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
   _ -> error "Manifold.Compiled.FlatTorus: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -67,8 +67,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -190,7 +190,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t69 = (t34 + (negate t63))
                   let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
                   if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -256,7 +256,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t104 = (s72 + (negate t98))
                   let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
                   if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -319,7 +319,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t136 = (t34 + (negate t130))
                   let !t137 = ((t35 + t131) - (sqrt (((t134 * t134) + (t135 * t135)) + (t136 * t136))))
                   if (if (t133 - t137) > 0 then t137 else t133) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t126 + 1.0) * 64.0) + 20.0) d31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t126 + 1.0) * 64.0) + 20.0) d31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -385,7 +385,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t171 = (s139 + (negate t165))
                   let !t172 = ((t35 + t166) - (sqrt (((t169 * t169) + (t170 * t170)) + (t171 * t171))))
                   if (if (t168 - t172) > 0 then t172 else t168) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t161 + 1.0) * 64.0) + 24.0) d31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t161 + 1.0) * 64.0) + 24.0) d31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -448,7 +448,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t203 = (s173 + (negate t197))
                   let !t204 = ((t35 + t198) - (sqrt (((t201 * t201) + (t202 * t202)) + (t203 * t203))))
                   if (if (t200 - t204) > 0 then t204 else t200) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t193 + 1.0) * 64.0) + 28.0) d31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0)
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t193 + 1.0) * 64.0) + 28.0) d31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -511,7 +511,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t235 = (s205 + (negate t229))
                   let !t236 = ((t35 + t230) - (sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235))))
                   if (if (t232 - t236) > 0 then t236 else t232) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t225 + 1.0) * 64.0) + 32.0) d31 t225 1.0 1.0 1.0 0.0 0.0 2.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t225 + 1.0) * 64.0) + 32.0) d31 t225 1.0 1.0 1.0 0.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -577,7 +577,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t270 = (s238 + (negate t264))
                   let !t271 = ((t35 + t265) - (sqrt (((t268 * t268) + (t269 * t269)) + (t270 * t270))))
                   if (if (t267 - t271) > 0 then t271 else t267) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t260 + 1.0) * 64.0) + 36.0) d31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0)
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t260 + 1.0) * 64.0) + 36.0) d31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0)
                     pure ()
                   else do
                     pure ()
@@ -640,7 +640,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t302 = (t34 + (negate t296))
                   let !t303 = ((t35 + t297) - (sqrt (((t300 * t300) + (t301 * t301)) + (t302 * t302))))
                   if (if (t299 - t303) > 0 then t303 else t299) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t292 + 1.0) * 64.0) + 40.0) d31 t292 1.0 1.0 1.0 2.0 0.0 0.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t292 + 1.0) * 64.0) + 40.0) d31 t292 1.0 1.0 1.0 2.0 0.0 0.0
                     pure ()
                   else do
                     pure ()
@@ -706,7 +706,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   let !t337 = (s305 + (negate t331))
                   let !t338 = ((t35 + t332) - (sqrt (((t335 * t335) + (t336 * t336)) + (t337 * t337))))
                   if (if (t334 - t338) > 0 then t338 else t334) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse (((t327 + 1.0) * 64.0) + 44.0) d31 t327 1.0 1.0 1.0 2.0 0.0 2.0
+                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t327 + 1.0) * 64.0) + 44.0) d31 t327 1.0 1.0 1.0 2.0 0.0 2.0
                     pure ()
                   else do
                     pure ()
@@ -973,8 +973,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1755,8 +1755,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1890,8 +1890,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

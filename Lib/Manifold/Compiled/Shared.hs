@@ -6,8 +6,8 @@ module Manifold.Compiled.Shared (pairContacts) where
 
 import Manifold.Compiled.Runtime
 
-pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
-pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
+pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
+pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
   let !s0 = (negate (a3 * a6))
   let !s1 = (negate (a4 * a7))
   let !s2 = (negate (a5 * a8))
@@ -44,6 +44,8 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     t27 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 12)
     t28 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 13)
     t29 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 14)
+    chkI probe i26 0 0
+    wrU probe i26 (-1.0)
     let !t30 = (((a3 * t27) + a6) + (negate t3))
     let !t31 = (((a4 * t28) + a7) + (negate t4))
     let !t32 = (((a5 * t29) + a8) + (negate t5))
@@ -80,6 +82,7 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       let !s58 = ((t56 * t9) + (t57 * s12))
       let !s59 = ((t56 * t10) + (t57 * s13))
       let !s60 = ((t56 * t11) + (t57 * s14))
+      wrU probe i26 s54
       t61 <- getR v19
       if (s54 - t61) > 0 then do
         setR v19 s54
@@ -136,6 +139,8 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     t93 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 12)
     t94 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 13)
     t95 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 14)
+    chkI probe i92 24 24
+    wrU probe (i92 + 24) (-1.0)
     let !t96 = (((a3 * t93) + s0) + (negate t69))
     let !t97 = (((a4 * t94) + s1) + (negate t70))
     let !t98 = (((a5 * t95) + s2) + (negate t71))
@@ -172,6 +177,7 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       let !s124 = ((t122 * t75) + (t123 * s78))
       let !s125 = ((t122 * t76) + (t123 * s79))
       let !s126 = ((t122 * t77) + (t123 * s80))
+      wrU probe (i92 + 24) s120
       t127 <- getR v85
       if (s120 - t127) > 0 then do
         setR v85 s120
@@ -203,108 +209,69 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     let !s139 = (if s135 > 0 then s0 else a6)
     let !s140 = (if s135 > 0 then s1 else a7)
     let !s141 = (if s135 > 0 then s2 else a8)
-    let !s142 = (if s135 > 0 then t129 else t63)
-    let !s143 = (if s135 > 0 then t130 else t64)
-    let !s144 = (if s135 > 0 then t131 else t65)
-    let !s145 = (if s135 > 0 then t132 else t66)
-    let !s146 = (if s135 > 0 then t133 else t67)
-    let !s147 = (if s135 > 0 then t134 else t68)
+    let !s142 = (if s135 > 0 then 24.0 else 0.0)
+    let !s143 = (if s135 > 0 then t129 else t63)
+    let !s144 = (if s135 > 0 then t130 else t64)
+    let !s145 = (if s135 > 0 then t131 else t65)
+    let !s146 = (if s135 > 0 then t132 else t66)
+    let !s147 = (if s135 > 0 then t133 else t67)
+    let !s148 = (if s135 > 0 then t134 else t68)
     chkI pos (3 * (truncate s138)) 0 2
-    t148 <- rdU pos (3 * (truncate s138))
-    t149 <- rdU pos ((3 * (truncate s138)) + 1)
-    t150 <- rdU pos ((3 * (truncate s138)) + 2)
+    t149 <- rdU pos (3 * (truncate s138))
+    t150 <- rdU pos ((3 * (truncate s138)) + 1)
+    t151 <- rdU pos ((3 * (truncate s138)) + 2)
     chkI normal (3 * (truncate s138)) 0 2
-    t151 <- rdU normal (3 * (truncate s138))
-    t152 <- rdU normal ((3 * (truncate s138)) + 1)
-    t153 <- rdU normal ((3 * (truncate s138)) + 2)
+    t152 <- rdU normal (3 * (truncate s138))
+    t153 <- rdU normal ((3 * (truncate s138)) + 1)
+    t154 <- rdU normal ((3 * (truncate s138)) + 2)
     chkI axis (3 * (truncate s138)) 0 2
-    t154 <- rdU axis (3 * (truncate s138))
-    t155 <- rdU axis ((3 * (truncate s138)) + 1)
-    t156 <- rdU axis ((3 * (truncate s138)) + 2)
-    let !s157 = ((t152 * t156) - (t153 * t155))
-    let !s158 = ((t153 * t154) - (t151 * t156))
-    let !s159 = ((t151 * t155) - (t152 * t154))
+    t155 <- rdU axis (3 * (truncate s138))
+    t156 <- rdU axis ((3 * (truncate s138)) + 1)
+    t157 <- rdU axis ((3 * (truncate s138)) + 2)
+    let !s158 = ((t153 * t157) - (t154 * t156))
+    let !s159 = ((t154 * t155) - (t152 * t157))
+    let !s160 = ((t152 * t156) - (t153 * t155))
     chkI scalars (6 * (truncate s138)) 0 5
-    t160 <- rdU scalars (6 * (truncate s138))
-    t161 <- rdU scalars ((6 * (truncate s138)) + 5)
-    t162 <- rdU scalars ((6 * (truncate s138)) + 2)
-    t163 <- rdU scalars ((6 * (truncate s138)) + 3)
+    t161 <- rdU scalars (6 * (truncate s138))
+    t162 <- rdU scalars ((6 * (truncate s138)) + 5)
+    t163 <- rdU scalars ((6 * (truncate s138)) + 2)
+    t164 <- rdU scalars ((6 * (truncate s138)) + 3)
     chkI pos (3 * (truncate s137)) 0 2
-    t164 <- rdU pos (3 * (truncate s137))
-    t165 <- rdU pos ((3 * (truncate s137)) + 1)
-    t166 <- rdU pos ((3 * (truncate s137)) + 2)
-    let !s167 = ((((((a3 * t164) + s139) + (negate t148)) * s142) + ((((a4 * t165) + s140) + (negate t149)) * s143)) + ((((a5 * t166) + s141) + (negate t150)) * s144))
-    let !s168 = (if s167 > 0 then s142 else (negate s142))
-    let !s169 = (if s167 > 0 then s143 else (negate s143))
-    let !s170 = (if s167 > 0 then s144 else (negate s144))
-    let !s171 = ((t152 * s170) - (t153 * s169))
-    let !s172 = ((t153 * s168) - (t151 * s170))
-    let !s173 = ((t151 * s169) - (t152 * s168))
-    v174 <- newR 1.0e300
-    v175 <- newR (-1.0e300)
-    v176 <- newR (-1.0)
+    t165 <- rdU pos (3 * (truncate s137))
+    t166 <- rdU pos ((3 * (truncate s137)) + 1)
+    t167 <- rdU pos ((3 * (truncate s137)) + 2)
+    let !s168 = ((((((a3 * t165) + s139) + (negate t149)) * s143) + ((((a4 * t166) + s140) + (negate t150)) * s144)) + ((((a5 * t167) + s141) + (negate t151)) * s145))
+    let !s169 = (if s168 > 0 then s143 else (negate s143))
+    let !s170 = (if s168 > 0 then s144 else (negate s144))
+    let !s171 = (if s168 > 0 then s145 else (negate s145))
+    let !s172 = ((t153 * s171) - (t154 * s170))
+    let !s173 = ((t154 * s169) - (t152 * s171))
+    let !s174 = ((t152 * s170) - (t153 * s169))
+    v175 <- newR 1.0e300
+    v176 <- newR (-1.0e300)
     v177 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i178 -> do
-      let !d178 = fromIntegral i178 :: Double
-      chkI verts ((291 * (truncate s137)) + (12 * i178)) 12 14
-      t179 <- rdU verts (((291 * (truncate s137)) + (12 * i178)) + 12)
-      t180 <- rdU verts (((291 * (truncate s137)) + (12 * i178)) + 13)
-      t181 <- rdU verts (((291 * (truncate s137)) + (12 * i178)) + 14)
-      v182 <- newR (-1.0)
-      let !t183 = (((a3 * t179) + s139) + (negate t148))
-      let !t184 = (((a4 * t180) + s140) + (negate t149))
-      let !t185 = (((a5 * t181) + s141) + (negate t150))
-      if ((t161 * t161) - (((t183 * t183) + (t184 * t184)) + (t185 * t185))) > 0 then do
-        let !s186 = (((t183 * t154) + (t184 * t155)) + (t185 * t156))
-        let !s187 = (((t183 * s157) + (t184 * s158)) + (t185 * s159))
-        let !s188 = (((t183 * t151) + (t184 * t152)) + (t185 * t153))
-        let !t189 = ((if s186 > 0 then (2.0 * (atan (s187 / ((sqrt ((s186 * s186) + (s187 * s187))) + s186)))) else (if (abs s187) > 0 then (2.0 * (atan (((sqrt ((s186 * s186) + (s187 * s187))) - s186) / s187))) else (if (negate s186) > 0 then 3.141592653589793 else 0.0))) - t160)
-        let !t190 = (floorF ((t189 - (6.283185307179586 * (floorF (t189 / 6.283185307179586)))) / 0.2617993877991494))
-        let !s191 = (if (t190 - 23.0) > 0 then 23.0 else t190)
-        chkI verts ((291 * (truncate s138)) + (12 * (truncate s191))) 12 14
-        t192 <- rdU verts (((291 * (truncate s138)) + (12 * (truncate s191))) + 12)
-        t193 <- rdU verts (((291 * (truncate s138)) + (12 * (truncate s191))) + 13)
-        t194 <- rdU verts (((291 * (truncate s138)) + (12 * (truncate s191))) + 14)
-        chkI verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0))) 0 0
-        t195 <- rdU verts (truncate (3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)))
-        chkI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
-        t196 <- rdU verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-        chkI verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
-        t197 <- rdU verts (truncate ((3.0 * ((((97.0 * s138) + 1.0) + ((if ((s191 - 24.0) + 1.5) > 0 then 0.0 else (s191 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-        let !t198 = (negate t148)
-        let !t199 = (negate t149)
-        let !t200 = (negate t150)
-        let !s201 = (((((t195 + t198) * t154) + ((t196 + t199) * t155)) + ((t197 + t200) * t156)) - ((((t192 + t198) * t154) + ((t193 + t199) * t155)) + ((t194 + t200) * t156)))
-        let !s202 = (((((t195 + t198) * s157) + ((t196 + t199) * s158)) + ((t197 + t200) * s159)) - ((((t192 + t198) * s157) + ((t193 + t199) * s158)) + ((t194 + t200) * s159)))
-        let !s203 = (sqrt ((s201 * s201) + (s202 * s202)))
-        let !t204 = (t192 + t198)
-        let !t205 = (t193 + t199)
-        let !t206 = (t194 + t200)
-        let !s207 = (if (t161 - (abs s188)) > 0 then (if s203 > 0 then (((s201 * (s187 - (((t204 * s157) + (t205 * s158)) + (t206 * s159)))) - (s202 * (s186 - (((t204 * t154) + (t205 * t155)) + (t206 * t156))))) / s203) else (-1.0)) else (-1.0))
-        let !t208 = (if s203 > 0 then (recip s203) else 0.0)
-        let !t209 = (s202 * t208)
-        let !t210 = ((negate s201) * t208)
-        let !s211 = ((t209 * t154) + (t210 * s157))
-        let !s212 = ((t209 * t155) + (t210 * s158))
-        let !s213 = ((t209 * t156) + (t210 * s159))
-        setR v182 s207
-        pure ()
-      else do
-        pure ()
-      t214 <- getR v182
-      if t214 > 0 then do
-        let !s215 = (((t183 * s171) + (t184 * s172)) + (t185 * s173))
-        t216 <- getR v174
-        if (t216 - s215) > 0 then do
-          setR v174 s215
-          setR v176 d178
+    v178 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i179 -> do
+      let !d179 = fromIntegral i179 :: Double
+      chkI verts ((291 * (truncate s137)) + (12 * i179)) 12 14
+      t180 <- rdU verts (((291 * (truncate s137)) + (12 * i179)) + 12)
+      t181 <- rdU verts (((291 * (truncate s137)) + (12 * i179)) + 13)
+      t182 <- rdU verts (((291 * (truncate s137)) + (12 * i179)) + 14)
+      chkI probe ((truncate s142) + i179) 0 0
+      t183 <- rdU probe ((truncate s142) + i179)
+      if t183 > 0 then do
+        let !s184 = ((((((a3 * t180) + s139) + (negate t149)) * s172) + ((((a4 * t181) + s140) + (negate t150)) * s173)) + ((((a5 * t182) + s141) + (negate t151)) * s174))
+        t185 <- getR v175
+        if (t185 - s184) > 0 then do
+          setR v175 s184
+          setR v177 d179
           pure ()
         else do
           pure ()
-        t217 <- getR v175
-        if (s215 - t217) > 0 then do
-          setR v175 s215
-          setR v177 d178
+        t186 <- getR v176
+        if (s184 - t186) > 0 then do
+          setR v176 s184
+          setR v178 d179
           pure ()
         else do
           pure ()
@@ -312,219 +279,219 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       else do
         pure ()
       pure ()
-    t218 <- getR v176
-    t219 <- getR v177
-    chkI verts ((291 * (truncate s137)) + (12 * (truncate t218))) 12 14
-    t220 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t218))) + 12)
-    t221 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t218))) + 13)
-    t222 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t218))) + 14)
-    let !s223 = ((a3 * t220) + s139)
-    let !s224 = ((a4 * t221) + s140)
-    let !s225 = ((a5 * t222) + s141)
+    t187 <- getR v177
+    t188 <- getR v178
+    chkI verts ((291 * (truncate s137)) + (12 * (truncate t187))) 12 14
+    t189 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t187))) + 12)
+    t190 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t187))) + 13)
+    t191 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t187))) + 14)
+    let !s192 = ((a3 * t189) + s139)
+    let !s193 = ((a4 * t190) + s140)
+    let !s194 = ((a5 * t191) + s141)
     chkI meta 0 2 3
-    t226 <- rdU meta 2
-    t227 <- rdU meta 3
-    if (((8.0 * (if (1.0 - t227) > 0 then 1.0 else t227)) - t226) - 0.5) > 0 then do
-      wrU meta 2 (t226 + 1.0)
-      t228 <- rdU pos (3 * (truncate s137))
-      t229 <- rdU pos ((3 * (truncate s137)) + 1)
-      t230 <- rdU pos ((3 * (truncate s137)) + 2)
+    t195 <- rdU meta 2
+    t196 <- rdU meta 3
+    if (((8.0 * (if (1.0 - t196) > 0 then 1.0 else t196)) - t195) - 0.5) > 0 then do
+      wrU meta 2 (t195 + 1.0)
+      t197 <- rdU pos (3 * (truncate s137))
+      t198 <- rdU pos ((3 * (truncate s137)) + 1)
+      t199 <- rdU pos ((3 * (truncate s137)) + 2)
       chkI normal (3 * (truncate s137)) 0 2
-      t231 <- rdU normal (3 * (truncate s137))
-      t232 <- rdU normal ((3 * (truncate s137)) + 1)
-      t233 <- rdU normal ((3 * (truncate s137)) + 2)
+      t200 <- rdU normal (3 * (truncate s137))
+      t201 <- rdU normal ((3 * (truncate s137)) + 1)
+      t202 <- rdU normal ((3 * (truncate s137)) + 2)
       chkI axis (3 * (truncate s137)) 0 2
-      t234 <- rdU axis (3 * (truncate s137))
-      t235 <- rdU axis ((3 * (truncate s137)) + 1)
-      t236 <- rdU axis ((3 * (truncate s137)) + 2)
-      let !s237 = ((t232 * t236) - (t233 * t235))
-      let !s238 = ((t233 * t234) - (t231 * t236))
-      let !s239 = ((t231 * t235) - (t232 * t234))
+      t203 <- rdU axis (3 * (truncate s137))
+      t204 <- rdU axis ((3 * (truncate s137)) + 1)
+      t205 <- rdU axis ((3 * (truncate s137)) + 2)
+      let !s206 = ((t201 * t205) - (t202 * t204))
+      let !s207 = ((t202 * t203) - (t200 * t205))
+      let !s208 = ((t200 * t204) - (t201 * t203))
       chkI scalars (6 * (truncate s137)) 0 5
-      t240 <- rdU scalars (6 * (truncate s137))
-      t241 <- rdU scalars ((6 * (truncate s137)) + 5)
-      t242 <- rdU scalars ((6 * (truncate s137)) + 2)
-      t243 <- rdU scalars ((6 * (truncate s137)) + 3)
-      chkI contacts (30 * (truncate t226)) 0 29
-      wrU contacts (30 * (truncate t226)) s137
-      wrU contacts ((30 * (truncate t226)) + 1) s138
-      wrU contacts ((30 * (truncate t226)) + 2) a1
-      wrU contacts ((30 * (truncate t226)) + 3) a0
-      let !t244 = (a3 * s168)
-      wrU contacts ((30 * (truncate t226)) + 4) (t244 + (negate ((((t231 * t244) + (t232 * (a4 * s169))) + (t233 * (a5 * s170))) * t231)))
-      let !t245 = (a4 * s169)
-      wrU contacts ((30 * (truncate t226)) + 5) (t245 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * (a5 * s170))) * t232)))
-      let !t246 = (a5 * s170)
-      wrU contacts ((30 * (truncate t226)) + 6) (t246 + (negate ((((t231 * t244) + (t232 * t245)) + (t233 * t246)) * t233)))
-      let !t247 = (t221 + (negate t229))
-      let !t248 = (t222 + (negate t230))
-      let !t249 = (t220 + (negate t228))
-      wrU contacts ((30 * (truncate t226)) + 7) (((((t247 * t246) - (t248 * t245)) * t231) + (((t248 * t244) - (t249 * t246)) * t232)) + (((t249 * t245) - (t247 * t244)) * t233))
-      let !t250 = ((t232 * t246) - (t233 * t245))
-      wrU contacts ((30 * (truncate t226)) + 12) (t250 + (negate ((((t231 * t250) + (t232 * ((t233 * t244) - (t231 * t246)))) + (t233 * ((t231 * t245) - (t232 * t244)))) * t231)))
-      let !t251 = ((t233 * t244) - (t231 * t246))
-      wrU contacts ((30 * (truncate t226)) + 13) (t251 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * ((t231 * t245) - (t232 * t244)))) * t232)))
-      let !t252 = ((t231 * t245) - (t232 * t244))
-      wrU contacts ((30 * (truncate t226)) + 14) (t252 + (negate ((((t231 * t250) + (t232 * t251)) + (t233 * t252)) * t233)))
-      wrU contacts ((30 * (truncate t226)) + 15) (((((t247 * t252) - (t248 * t251)) * t231) + (((t248 * t250) - (t249 * t252)) * t232)) + (((t249 * t251) - (t247 * t250)) * t233))
-      wrU contacts ((30 * (truncate t226)) + 20) (if s167 > 0 then ((((s145 + (negate s223)) * s168) + ((s146 + (negate s224)) * s169)) + ((s147 + (negate s225)) * s170)) else s136)
-      wrU contacts ((30 * (truncate t226)) + 26) 1.0
-      wrU contacts ((30 * (truncate t226)) + 27) t220
-      wrU contacts ((30 * (truncate t226)) + 28) t221
-      wrU contacts ((30 * (truncate t226)) + 29) t222
+      t209 <- rdU scalars (6 * (truncate s137))
+      t210 <- rdU scalars ((6 * (truncate s137)) + 5)
+      t211 <- rdU scalars ((6 * (truncate s137)) + 2)
+      t212 <- rdU scalars ((6 * (truncate s137)) + 3)
+      chkI contacts (30 * (truncate t195)) 0 29
+      wrU contacts (30 * (truncate t195)) s137
+      wrU contacts ((30 * (truncate t195)) + 1) s138
+      wrU contacts ((30 * (truncate t195)) + 2) a1
+      wrU contacts ((30 * (truncate t195)) + 3) a0
+      let !t213 = (a3 * s169)
+      wrU contacts ((30 * (truncate t195)) + 4) (t213 + (negate ((((t200 * t213) + (t201 * (a4 * s170))) + (t202 * (a5 * s171))) * t200)))
+      let !t214 = (a4 * s170)
+      wrU contacts ((30 * (truncate t195)) + 5) (t214 + (negate ((((t200 * t213) + (t201 * t214)) + (t202 * (a5 * s171))) * t201)))
+      let !t215 = (a5 * s171)
+      wrU contacts ((30 * (truncate t195)) + 6) (t215 + (negate ((((t200 * t213) + (t201 * t214)) + (t202 * t215)) * t202)))
+      let !t216 = (t190 + (negate t198))
+      let !t217 = (t191 + (negate t199))
+      let !t218 = (t189 + (negate t197))
+      wrU contacts ((30 * (truncate t195)) + 7) (((((t216 * t215) - (t217 * t214)) * t200) + (((t217 * t213) - (t218 * t215)) * t201)) + (((t218 * t214) - (t216 * t213)) * t202))
+      let !t219 = ((t201 * t215) - (t202 * t214))
+      wrU contacts ((30 * (truncate t195)) + 12) (t219 + (negate ((((t200 * t219) + (t201 * ((t202 * t213) - (t200 * t215)))) + (t202 * ((t200 * t214) - (t201 * t213)))) * t200)))
+      let !t220 = ((t202 * t213) - (t200 * t215))
+      wrU contacts ((30 * (truncate t195)) + 13) (t220 + (negate ((((t200 * t219) + (t201 * t220)) + (t202 * ((t200 * t214) - (t201 * t213)))) * t201)))
+      let !t221 = ((t200 * t214) - (t201 * t213))
+      wrU contacts ((30 * (truncate t195)) + 14) (t221 + (negate ((((t200 * t219) + (t201 * t220)) + (t202 * t221)) * t202)))
+      wrU contacts ((30 * (truncate t195)) + 15) (((((t216 * t221) - (t217 * t220)) * t200) + (((t217 * t219) - (t218 * t221)) * t201)) + (((t218 * t220) - (t216 * t219)) * t202))
+      wrU contacts ((30 * (truncate t195)) + 20) (if s168 > 0 then ((((s146 + (negate s192)) * s169) + ((s147 + (negate s193)) * s170)) + ((s148 + (negate s194)) * s171)) else s136)
+      wrU contacts ((30 * (truncate t195)) + 26) 1.0
+      wrU contacts ((30 * (truncate t195)) + 27) t189
+      wrU contacts ((30 * (truncate t195)) + 28) t190
+      wrU contacts ((30 * (truncate t195)) + 29) t191
       if (s138 + 0.5) > 0 then do
-        t253 <- rdU pos (3 * (truncate s138))
-        t254 <- rdU pos ((3 * (truncate s138)) + 1)
-        t255 <- rdU pos ((3 * (truncate s138)) + 2)
-        t256 <- rdU normal (3 * (truncate s138))
-        t257 <- rdU normal ((3 * (truncate s138)) + 1)
-        t258 <- rdU normal ((3 * (truncate s138)) + 2)
-        t259 <- rdU axis (3 * (truncate s138))
-        t260 <- rdU axis ((3 * (truncate s138)) + 1)
-        t261 <- rdU axis ((3 * (truncate s138)) + 2)
-        let !s262 = ((t257 * t261) - (t258 * t260))
-        let !s263 = ((t258 * t259) - (t256 * t261))
-        let !s264 = ((t256 * t260) - (t257 * t259))
-        t265 <- rdU scalars (6 * (truncate s138))
-        t266 <- rdU scalars ((6 * (truncate s138)) + 5)
-        t267 <- rdU scalars ((6 * (truncate s138)) + 2)
-        t268 <- rdU scalars ((6 * (truncate s138)) + 3)
-        wrU contacts ((30 * (truncate t226)) + 8) (s168 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t256)))
-        wrU contacts ((30 * (truncate t226)) + 9) (s169 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t257)))
-        wrU contacts ((30 * (truncate t226)) + 10) (s170 + (negate ((((t256 * s168) + (t257 * s169)) + (t258 * s170)) * t258)))
-        let !t269 = (s224 + (negate t254))
-        let !t270 = (s225 + (negate t255))
-        let !t271 = (s223 + (negate t253))
-        wrU contacts ((30 * (truncate t226)) + 11) (((((t269 * s170) - (t270 * s169)) * t256) + (((t270 * s168) - (t271 * s170)) * t257)) + (((t271 * s169) - (t269 * s168)) * t258))
-        let !t272 = (a3 * t250)
-        wrU contacts ((30 * (truncate t226)) + 16) (t272 + (negate ((((t256 * t272) + (t257 * (a4 * t251))) + (t258 * (a5 * t252))) * t256)))
-        let !t273 = (a4 * t251)
-        wrU contacts ((30 * (truncate t226)) + 17) (t273 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * (a5 * t252))) * t257)))
-        let !t274 = (a5 * t252)
-        wrU contacts ((30 * (truncate t226)) + 18) (t274 + (negate ((((t256 * t272) + (t257 * t273)) + (t258 * t274)) * t258)))
-        wrU contacts ((30 * (truncate t226)) + 19) (((((t269 * t274) - (t270 * t273)) * t256) + (((t270 * t272) - (t271 * t274)) * t257)) + (((t271 * t273) - (t269 * t272)) * t258))
+        t222 <- rdU pos (3 * (truncate s138))
+        t223 <- rdU pos ((3 * (truncate s138)) + 1)
+        t224 <- rdU pos ((3 * (truncate s138)) + 2)
+        t225 <- rdU normal (3 * (truncate s138))
+        t226 <- rdU normal ((3 * (truncate s138)) + 1)
+        t227 <- rdU normal ((3 * (truncate s138)) + 2)
+        t228 <- rdU axis (3 * (truncate s138))
+        t229 <- rdU axis ((3 * (truncate s138)) + 1)
+        t230 <- rdU axis ((3 * (truncate s138)) + 2)
+        let !s231 = ((t226 * t230) - (t227 * t229))
+        let !s232 = ((t227 * t228) - (t225 * t230))
+        let !s233 = ((t225 * t229) - (t226 * t228))
+        t234 <- rdU scalars (6 * (truncate s138))
+        t235 <- rdU scalars ((6 * (truncate s138)) + 5)
+        t236 <- rdU scalars ((6 * (truncate s138)) + 2)
+        t237 <- rdU scalars ((6 * (truncate s138)) + 3)
+        wrU contacts ((30 * (truncate t195)) + 8) (s169 + (negate ((((t225 * s169) + (t226 * s170)) + (t227 * s171)) * t225)))
+        wrU contacts ((30 * (truncate t195)) + 9) (s170 + (negate ((((t225 * s169) + (t226 * s170)) + (t227 * s171)) * t226)))
+        wrU contacts ((30 * (truncate t195)) + 10) (s171 + (negate ((((t225 * s169) + (t226 * s170)) + (t227 * s171)) * t227)))
+        let !t238 = (s193 + (negate t223))
+        let !t239 = (s194 + (negate t224))
+        let !t240 = (s192 + (negate t222))
+        wrU contacts ((30 * (truncate t195)) + 11) (((((t238 * s171) - (t239 * s170)) * t225) + (((t239 * s169) - (t240 * s171)) * t226)) + (((t240 * s170) - (t238 * s169)) * t227))
+        let !t241 = (a3 * t219)
+        wrU contacts ((30 * (truncate t195)) + 16) (t241 + (negate ((((t225 * t241) + (t226 * (a4 * t220))) + (t227 * (a5 * t221))) * t225)))
+        let !t242 = (a4 * t220)
+        wrU contacts ((30 * (truncate t195)) + 17) (t242 + (negate ((((t225 * t241) + (t226 * t242)) + (t227 * (a5 * t221))) * t226)))
+        let !t243 = (a5 * t221)
+        wrU contacts ((30 * (truncate t195)) + 18) (t243 + (negate ((((t225 * t241) + (t226 * t242)) + (t227 * t243)) * t227)))
+        wrU contacts ((30 * (truncate t195)) + 19) (((((t238 * t243) - (t239 * t242)) * t225) + (((t239 * t241) - (t240 * t243)) * t226)) + (((t240 * t242) - (t238 * t241)) * t227))
         pure ()
       else do
-        wrU contacts ((30 * (truncate t226)) + 8) 0.0
-        wrU contacts ((30 * (truncate t226)) + 9) 0.0
-        wrU contacts ((30 * (truncate t226)) + 10) 0.0
-        wrU contacts ((30 * (truncate t226)) + 11) 0.0
-        wrU contacts ((30 * (truncate t226)) + 16) 0.0
-        wrU contacts ((30 * (truncate t226)) + 17) 0.0
-        wrU contacts ((30 * (truncate t226)) + 18) 0.0
-        wrU contacts ((30 * (truncate t226)) + 19) 0.0
+        wrU contacts ((30 * (truncate t195)) + 8) 0.0
+        wrU contacts ((30 * (truncate t195)) + 9) 0.0
+        wrU contacts ((30 * (truncate t195)) + 10) 0.0
+        wrU contacts ((30 * (truncate t195)) + 11) 0.0
+        wrU contacts ((30 * (truncate t195)) + 16) 0.0
+        wrU contacts ((30 * (truncate t195)) + 17) 0.0
+        wrU contacts ((30 * (truncate t195)) + 18) 0.0
+        wrU contacts ((30 * (truncate t195)) + 19) 0.0
         pure ()
       pure ()
     else do
       chkI meta 0 6 6
-      t275 <- rdU meta 6
-      wrU meta 6 (t275 + 1.0)
+      t244 <- rdU meta 6
+      wrU meta 6 (t244 + 1.0)
       pure ()
-    if (abs (t219 - t218)) > 0 then do
-      chkI verts ((291 * (truncate s137)) + (12 * (truncate t219))) 12 14
-      t276 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t219))) + 12)
-      t277 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t219))) + 13)
-      t278 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t219))) + 14)
-      let !s279 = ((a3 * t276) + s139)
-      let !s280 = ((a4 * t277) + s140)
-      let !s281 = ((a5 * t278) + s141)
-      t282 <- rdU meta 2
-      t283 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t283) > 0 then 1.0 else t283)) - t282) - 0.5) > 0 then do
-        wrU meta 2 (t282 + 1.0)
-        t284 <- rdU pos (3 * (truncate s137))
-        t285 <- rdU pos ((3 * (truncate s137)) + 1)
-        t286 <- rdU pos ((3 * (truncate s137)) + 2)
+    if (abs (t188 - t187)) > 0 then do
+      chkI verts ((291 * (truncate s137)) + (12 * (truncate t188))) 12 14
+      t245 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t188))) + 12)
+      t246 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t188))) + 13)
+      t247 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t188))) + 14)
+      let !s248 = ((a3 * t245) + s139)
+      let !s249 = ((a4 * t246) + s140)
+      let !s250 = ((a5 * t247) + s141)
+      t251 <- rdU meta 2
+      t252 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t252) > 0 then 1.0 else t252)) - t251) - 0.5) > 0 then do
+        wrU meta 2 (t251 + 1.0)
+        t253 <- rdU pos (3 * (truncate s137))
+        t254 <- rdU pos ((3 * (truncate s137)) + 1)
+        t255 <- rdU pos ((3 * (truncate s137)) + 2)
         chkI normal (3 * (truncate s137)) 0 2
-        t287 <- rdU normal (3 * (truncate s137))
-        t288 <- rdU normal ((3 * (truncate s137)) + 1)
-        t289 <- rdU normal ((3 * (truncate s137)) + 2)
+        t256 <- rdU normal (3 * (truncate s137))
+        t257 <- rdU normal ((3 * (truncate s137)) + 1)
+        t258 <- rdU normal ((3 * (truncate s137)) + 2)
         chkI axis (3 * (truncate s137)) 0 2
-        t290 <- rdU axis (3 * (truncate s137))
-        t291 <- rdU axis ((3 * (truncate s137)) + 1)
-        t292 <- rdU axis ((3 * (truncate s137)) + 2)
-        let !s293 = ((t288 * t292) - (t289 * t291))
-        let !s294 = ((t289 * t290) - (t287 * t292))
-        let !s295 = ((t287 * t291) - (t288 * t290))
+        t259 <- rdU axis (3 * (truncate s137))
+        t260 <- rdU axis ((3 * (truncate s137)) + 1)
+        t261 <- rdU axis ((3 * (truncate s137)) + 2)
+        let !s262 = ((t257 * t261) - (t258 * t260))
+        let !s263 = ((t258 * t259) - (t256 * t261))
+        let !s264 = ((t256 * t260) - (t257 * t259))
         chkI scalars (6 * (truncate s137)) 0 5
-        t296 <- rdU scalars (6 * (truncate s137))
-        t297 <- rdU scalars ((6 * (truncate s137)) + 5)
-        t298 <- rdU scalars ((6 * (truncate s137)) + 2)
-        t299 <- rdU scalars ((6 * (truncate s137)) + 3)
-        chkI contacts (30 * (truncate t282)) 0 29
-        wrU contacts (30 * (truncate t282)) s137
-        wrU contacts ((30 * (truncate t282)) + 1) s138
-        wrU contacts ((30 * (truncate t282)) + 2) a1
-        wrU contacts ((30 * (truncate t282)) + 3) (a0 + 1.0)
-        let !t300 = (a3 * s168)
-        wrU contacts ((30 * (truncate t282)) + 4) (t300 + (negate ((((t287 * t300) + (t288 * (a4 * s169))) + (t289 * (a5 * s170))) * t287)))
-        let !t301 = (a4 * s169)
-        wrU contacts ((30 * (truncate t282)) + 5) (t301 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * (a5 * s170))) * t288)))
-        let !t302 = (a5 * s170)
-        wrU contacts ((30 * (truncate t282)) + 6) (t302 + (negate ((((t287 * t300) + (t288 * t301)) + (t289 * t302)) * t289)))
-        let !t303 = (t277 + (negate t285))
-        let !t304 = (t278 + (negate t286))
-        let !t305 = (t276 + (negate t284))
-        wrU contacts ((30 * (truncate t282)) + 7) (((((t303 * t302) - (t304 * t301)) * t287) + (((t304 * t300) - (t305 * t302)) * t288)) + (((t305 * t301) - (t303 * t300)) * t289))
-        let !t306 = ((t288 * t302) - (t289 * t301))
-        wrU contacts ((30 * (truncate t282)) + 12) (t306 + (negate ((((t287 * t306) + (t288 * ((t289 * t300) - (t287 * t302)))) + (t289 * ((t287 * t301) - (t288 * t300)))) * t287)))
-        let !t307 = ((t289 * t300) - (t287 * t302))
-        wrU contacts ((30 * (truncate t282)) + 13) (t307 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * ((t287 * t301) - (t288 * t300)))) * t288)))
-        let !t308 = ((t287 * t301) - (t288 * t300))
-        wrU contacts ((30 * (truncate t282)) + 14) (t308 + (negate ((((t287 * t306) + (t288 * t307)) + (t289 * t308)) * t289)))
-        wrU contacts ((30 * (truncate t282)) + 15) (((((t303 * t308) - (t304 * t307)) * t287) + (((t304 * t306) - (t305 * t308)) * t288)) + (((t305 * t307) - (t303 * t306)) * t289))
-        wrU contacts ((30 * (truncate t282)) + 20) (if s167 > 0 then ((((s145 + (negate s279)) * s168) + ((s146 + (negate s280)) * s169)) + ((s147 + (negate s281)) * s170)) else s136)
-        wrU contacts ((30 * (truncate t282)) + 26) 1.0
-        wrU contacts ((30 * (truncate t282)) + 27) t276
-        wrU contacts ((30 * (truncate t282)) + 28) t277
-        wrU contacts ((30 * (truncate t282)) + 29) t278
+        t265 <- rdU scalars (6 * (truncate s137))
+        t266 <- rdU scalars ((6 * (truncate s137)) + 5)
+        t267 <- rdU scalars ((6 * (truncate s137)) + 2)
+        t268 <- rdU scalars ((6 * (truncate s137)) + 3)
+        chkI contacts (30 * (truncate t251)) 0 29
+        wrU contacts (30 * (truncate t251)) s137
+        wrU contacts ((30 * (truncate t251)) + 1) s138
+        wrU contacts ((30 * (truncate t251)) + 2) a1
+        wrU contacts ((30 * (truncate t251)) + 3) (a0 + 1.0)
+        let !t269 = (a3 * s169)
+        wrU contacts ((30 * (truncate t251)) + 4) (t269 + (negate ((((t256 * t269) + (t257 * (a4 * s170))) + (t258 * (a5 * s171))) * t256)))
+        let !t270 = (a4 * s170)
+        wrU contacts ((30 * (truncate t251)) + 5) (t270 + (negate ((((t256 * t269) + (t257 * t270)) + (t258 * (a5 * s171))) * t257)))
+        let !t271 = (a5 * s171)
+        wrU contacts ((30 * (truncate t251)) + 6) (t271 + (negate ((((t256 * t269) + (t257 * t270)) + (t258 * t271)) * t258)))
+        let !t272 = (t246 + (negate t254))
+        let !t273 = (t247 + (negate t255))
+        let !t274 = (t245 + (negate t253))
+        wrU contacts ((30 * (truncate t251)) + 7) (((((t272 * t271) - (t273 * t270)) * t256) + (((t273 * t269) - (t274 * t271)) * t257)) + (((t274 * t270) - (t272 * t269)) * t258))
+        let !t275 = ((t257 * t271) - (t258 * t270))
+        wrU contacts ((30 * (truncate t251)) + 12) (t275 + (negate ((((t256 * t275) + (t257 * ((t258 * t269) - (t256 * t271)))) + (t258 * ((t256 * t270) - (t257 * t269)))) * t256)))
+        let !t276 = ((t258 * t269) - (t256 * t271))
+        wrU contacts ((30 * (truncate t251)) + 13) (t276 + (negate ((((t256 * t275) + (t257 * t276)) + (t258 * ((t256 * t270) - (t257 * t269)))) * t257)))
+        let !t277 = ((t256 * t270) - (t257 * t269))
+        wrU contacts ((30 * (truncate t251)) + 14) (t277 + (negate ((((t256 * t275) + (t257 * t276)) + (t258 * t277)) * t258)))
+        wrU contacts ((30 * (truncate t251)) + 15) (((((t272 * t277) - (t273 * t276)) * t256) + (((t273 * t275) - (t274 * t277)) * t257)) + (((t274 * t276) - (t272 * t275)) * t258))
+        wrU contacts ((30 * (truncate t251)) + 20) (if s168 > 0 then ((((s146 + (negate s248)) * s169) + ((s147 + (negate s249)) * s170)) + ((s148 + (negate s250)) * s171)) else s136)
+        wrU contacts ((30 * (truncate t251)) + 26) 1.0
+        wrU contacts ((30 * (truncate t251)) + 27) t245
+        wrU contacts ((30 * (truncate t251)) + 28) t246
+        wrU contacts ((30 * (truncate t251)) + 29) t247
         if (s138 + 0.5) > 0 then do
-          t309 <- rdU pos (3 * (truncate s138))
-          t310 <- rdU pos ((3 * (truncate s138)) + 1)
-          t311 <- rdU pos ((3 * (truncate s138)) + 2)
-          t312 <- rdU normal (3 * (truncate s138))
-          t313 <- rdU normal ((3 * (truncate s138)) + 1)
-          t314 <- rdU normal ((3 * (truncate s138)) + 2)
-          t315 <- rdU axis (3 * (truncate s138))
-          t316 <- rdU axis ((3 * (truncate s138)) + 1)
-          t317 <- rdU axis ((3 * (truncate s138)) + 2)
-          let !s318 = ((t313 * t317) - (t314 * t316))
-          let !s319 = ((t314 * t315) - (t312 * t317))
-          let !s320 = ((t312 * t316) - (t313 * t315))
-          t321 <- rdU scalars (6 * (truncate s138))
-          t322 <- rdU scalars ((6 * (truncate s138)) + 5)
-          t323 <- rdU scalars ((6 * (truncate s138)) + 2)
-          t324 <- rdU scalars ((6 * (truncate s138)) + 3)
-          wrU contacts ((30 * (truncate t282)) + 8) (s168 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t312)))
-          wrU contacts ((30 * (truncate t282)) + 9) (s169 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t313)))
-          wrU contacts ((30 * (truncate t282)) + 10) (s170 + (negate ((((t312 * s168) + (t313 * s169)) + (t314 * s170)) * t314)))
-          let !t325 = (s280 + (negate t310))
-          let !t326 = (s281 + (negate t311))
-          let !t327 = (s279 + (negate t309))
-          wrU contacts ((30 * (truncate t282)) + 11) (((((t325 * s170) - (t326 * s169)) * t312) + (((t326 * s168) - (t327 * s170)) * t313)) + (((t327 * s169) - (t325 * s168)) * t314))
-          let !t328 = (a3 * t306)
-          wrU contacts ((30 * (truncate t282)) + 16) (t328 + (negate ((((t312 * t328) + (t313 * (a4 * t307))) + (t314 * (a5 * t308))) * t312)))
-          let !t329 = (a4 * t307)
-          wrU contacts ((30 * (truncate t282)) + 17) (t329 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * (a5 * t308))) * t313)))
-          let !t330 = (a5 * t308)
-          wrU contacts ((30 * (truncate t282)) + 18) (t330 + (negate ((((t312 * t328) + (t313 * t329)) + (t314 * t330)) * t314)))
-          wrU contacts ((30 * (truncate t282)) + 19) (((((t325 * t330) - (t326 * t329)) * t312) + (((t326 * t328) - (t327 * t330)) * t313)) + (((t327 * t329) - (t325 * t328)) * t314))
+          t278 <- rdU pos (3 * (truncate s138))
+          t279 <- rdU pos ((3 * (truncate s138)) + 1)
+          t280 <- rdU pos ((3 * (truncate s138)) + 2)
+          t281 <- rdU normal (3 * (truncate s138))
+          t282 <- rdU normal ((3 * (truncate s138)) + 1)
+          t283 <- rdU normal ((3 * (truncate s138)) + 2)
+          t284 <- rdU axis (3 * (truncate s138))
+          t285 <- rdU axis ((3 * (truncate s138)) + 1)
+          t286 <- rdU axis ((3 * (truncate s138)) + 2)
+          let !s287 = ((t282 * t286) - (t283 * t285))
+          let !s288 = ((t283 * t284) - (t281 * t286))
+          let !s289 = ((t281 * t285) - (t282 * t284))
+          t290 <- rdU scalars (6 * (truncate s138))
+          t291 <- rdU scalars ((6 * (truncate s138)) + 5)
+          t292 <- rdU scalars ((6 * (truncate s138)) + 2)
+          t293 <- rdU scalars ((6 * (truncate s138)) + 3)
+          wrU contacts ((30 * (truncate t251)) + 8) (s169 + (negate ((((t281 * s169) + (t282 * s170)) + (t283 * s171)) * t281)))
+          wrU contacts ((30 * (truncate t251)) + 9) (s170 + (negate ((((t281 * s169) + (t282 * s170)) + (t283 * s171)) * t282)))
+          wrU contacts ((30 * (truncate t251)) + 10) (s171 + (negate ((((t281 * s169) + (t282 * s170)) + (t283 * s171)) * t283)))
+          let !t294 = (s249 + (negate t279))
+          let !t295 = (s250 + (negate t280))
+          let !t296 = (s248 + (negate t278))
+          wrU contacts ((30 * (truncate t251)) + 11) (((((t294 * s171) - (t295 * s170)) * t281) + (((t295 * s169) - (t296 * s171)) * t282)) + (((t296 * s170) - (t294 * s169)) * t283))
+          let !t297 = (a3 * t275)
+          wrU contacts ((30 * (truncate t251)) + 16) (t297 + (negate ((((t281 * t297) + (t282 * (a4 * t276))) + (t283 * (a5 * t277))) * t281)))
+          let !t298 = (a4 * t276)
+          wrU contacts ((30 * (truncate t251)) + 17) (t298 + (negate ((((t281 * t297) + (t282 * t298)) + (t283 * (a5 * t277))) * t282)))
+          let !t299 = (a5 * t277)
+          wrU contacts ((30 * (truncate t251)) + 18) (t299 + (negate ((((t281 * t297) + (t282 * t298)) + (t283 * t299)) * t283)))
+          wrU contacts ((30 * (truncate t251)) + 19) (((((t294 * t299) - (t295 * t298)) * t281) + (((t295 * t297) - (t296 * t299)) * t282)) + (((t296 * t298) - (t294 * t297)) * t283))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t282)) + 8) 0.0
-          wrU contacts ((30 * (truncate t282)) + 9) 0.0
-          wrU contacts ((30 * (truncate t282)) + 10) 0.0
-          wrU contacts ((30 * (truncate t282)) + 11) 0.0
-          wrU contacts ((30 * (truncate t282)) + 16) 0.0
-          wrU contacts ((30 * (truncate t282)) + 17) 0.0
-          wrU contacts ((30 * (truncate t282)) + 18) 0.0
-          wrU contacts ((30 * (truncate t282)) + 19) 0.0
+          wrU contacts ((30 * (truncate t251)) + 8) 0.0
+          wrU contacts ((30 * (truncate t251)) + 9) 0.0
+          wrU contacts ((30 * (truncate t251)) + 10) 0.0
+          wrU contacts ((30 * (truncate t251)) + 11) 0.0
+          wrU contacts ((30 * (truncate t251)) + 16) 0.0
+          wrU contacts ((30 * (truncate t251)) + 17) 0.0
+          wrU contacts ((30 * (truncate t251)) + 18) 0.0
+          wrU contacts ((30 * (truncate t251)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t331 <- rdU meta 6
-        wrU meta 6 (t331 + 1.0)
+        t300 <- rdU meta 6
+        wrU meta 6 (t300 + 1.0)
         pure ()
       pure ()
     else do
