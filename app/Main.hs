@@ -9,10 +9,11 @@ import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
 import System.Directory (createDirectoryIfMissing, doesFileExist)
 import System.FilePath ((</>), takeDirectory)
 import System.IO.Error (isAlreadyInUseError)
-import Control.Monad (forM_, when)
+import Control.Monad (forM, forM_, when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
-import Data.List (intercalate)
+import Data.List (intercalate, minimumBy, transpose)
+import Data.Ord (comparing)
 import Data.String (fromString)
 import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
@@ -35,7 +36,7 @@ data Command
   | Compile FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
-  | Bench String String Int Int Bool (Maybe FilePath) Bool
+  | Bench String String Int Int Int Bool (Maybe FilePath) Bool
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -59,6 +60,7 @@ commandParser = hsubparser
                                    <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
                                    <*> option auto (long "warmup" <> metavar "W" <> value 100 <> help "Steps to settle before timing (default 100)")
                                    <*> option auto (long "steps" <> metavar "S" <> value 50 <> help "Steps timed (default 50)")
+                                   <*> option auto (long "rounds" <> metavar "R" <> value 3 <> help "Time every scene R times, round after round, and keep its fastest round (default 3)")
                                    <*> switch (long "json" <> help "Print JSON")
                                    <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
                                    <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one"))
@@ -101,7 +103,7 @@ main = do
       putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
-    Bench spaces sizes warmup steps json scenes generic -> bench spaces sizes warmup steps json scenes generic
+    Bench spaces sizes warmup steps rounds json scenes generic -> bench spaces sizes warmup steps rounds json scenes generic
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -199,8 +201,14 @@ simulate path steps every = do
 
 -- | The native benchmark: progress on standard error, a table or JSON on
 -- standard output.
-bench :: String -> String -> Int -> Int -> Bool -> Maybe FilePath -> Bool -> IO ()
-bench spacesArg sizesArg _ _ _ (Just dir) _ = do
+--
+-- Every scene is timed in each of @rounds@ rounds (all scenes, then all
+-- again), each time loaded and settled afresh, and reported by its round
+-- with the lowest median: on a shared machine, what others run only ever
+-- adds time, and a slow spell of minutes would otherwise decide the scenes
+-- it happens to fall on.
+bench :: String -> String -> Int -> Int -> Int -> Bool -> Maybe FilePath -> Bool -> IO ()
+bench spacesArg sizesArg _ _ _ _ (Just dir) _ = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   createDirectoryIfMissing True dir
@@ -208,17 +216,22 @@ bench spacesArg sizesArg _ _ _ (Just dir) _ = do
     let file = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
     BL.writeFile file (A.encode (sceneJSON (benchScene sp n)))
     putStrLn file
-bench spacesArg sizesArg warmup steps json Nothing generic = do
+bench spacesArg sizesArg warmup steps rounds json Nothing generic = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   when (warmup < 0) (usageError "--warmup: must not be negative")
   when (steps < 1) (usageError "--steps: must be at least 1")
-  let progress msg = hPutStrLn stderr ("bench: " ++ msg)
-  results <- mapM (runBench progress generic warmup steps) [BenchCase sp n | sp <- spaces, n <- sizes]
+  when (rounds < 1) (usageError "--rounds: must be at least 1")
+  let cases = [BenchCase sp n | sp <- spaces, n <- sizes]
+  perRound <- forM [1 .. rounds] $ \k -> do
+    let progress msg = hPutStrLn stderr ("bench: round " ++ show k ++ " of " ++ show rounds ++ ": " ++ msg)
+    mapM (runBench progress generic warmup steps) cases
+  let results = map (minimumBy (comparing brMedianMs)) (transpose perRound)
   if json
     then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
                                           , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
                                           , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
+                                          , "rounds" A..= rounds
                                           , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]
                                | r <- results ])
     else do

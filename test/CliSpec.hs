@@ -39,6 +39,12 @@ instance A.FromJSON GeodesicOut where
   parseJSON = A.withObject "geodesic" $ \o ->
     GeodesicOut <$> o .: "points" <*> o .: "end" <*> o .: "endDir"
 
+-- | How many rounds a result of @manifold bench --json@ kept the fastest of.
+newtype BenchRounds = BenchRounds Int deriving (Show, Eq)
+
+instance A.FromJSON BenchRounds where
+  parseJSON = A.withObject "bench result" $ \o -> BenchRounds <$> o .: "rounds"
+
 expectedNames :: [String]
 expectedNames =
   [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
@@ -194,3 +200,10 @@ spec = do
         case A.eitherDecode out :: Either String [A.Value] of
           Right [_] -> pure ()
           other -> expectationFailure ("bench " ++ unwords extra ++ ": expected one result, got " ++ show other)
+    it "bench --rounds R times every scene R times and keeps its fastest round" $ do
+      (code, out, err) <- run ["bench", "--spaces", "torus,plane", "--sizes", "10", "--warmup", "0", "--steps", "2", "--rounds", "2", "--json"]
+      code `shouldBe` ExitSuccess
+      length [l | l <- lines err, "round 2 of 2: plane" `isInfixOf` l, "timing" `isInfixOf` l] `shouldBe` 1
+      A.eitherDecode out `shouldBe` Right [BenchRounds 2, BenchRounds 2]
+      (code0, _, err0) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--rounds", "0"]
+      (code0, "--rounds: must be at least 1" `isInfixOf` err0) `shouldBe` (ExitFailure 2, True)
