@@ -500,8 +500,13 @@ collide sp l w = do
     ri <- readSlot w i BoundRadius
     invMi <- readSlot w i InvMass
     cell <- readMeta w CellSize -- at least twice the largest bounding radius
+    -- the bodies near this one are listed first and their pairs made after:
+    -- compiled natively, a loop that calls out keeps its numbers on the
+    -- stack, and the cell scan is the broad phase's whole cost
+    found <- newRef 0
     let pairs g keyOffset self = do
           gp <- share3 (applyIso g p)
+          writeRef found 0
           nearDomain gp (ri + cell) $ neighbours w gp $ \j -> do
             -- each unordered pair once: j > i (j >= i for an image the body
             -- may meet itself through: its own image)
@@ -512,7 +517,14 @@ collide sp l w = do
               invMj <- readSlot w j InvMass
               let gap = ri + rj - norm (gp ^-^ pj)
               whenPositive (minF gap (invMi + invMj)) $ do
-                pairContacts l w ((toScalar j + 1) * 64 + keyOffset) i j g
+                -- a body is in one cell, so listed at most once
+                k <- readRef found
+                writeArray (wNear w) (toIndex k) (toScalar j)
+                writeRef found (k + 1)
+          nearCount <- readRef found
+          forEach (toIndex nearCount) $ \k -> do
+            j <- toIndex <$> readArray (wNear w) k
+            pairContacts l w ((toScalar j + 1) * 64 + keyOffset) i j g
     pairs identityIso 0 False
     mapM_ (\(k, g) -> pairs g (16 + 4 * fromIntegral k) (selfImage g)) (zip [0 :: Int ..] images)
     boundaryContacts sp l w i

@@ -89,6 +89,7 @@ data WorldArrays a = WorldArrays
   , wBodyPrev :: a -- ^ per body: where its contacts start in 'wPrev', and how many
   , wMouse :: a -- ^ see 'MouseField'
   , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
+  , wNear :: a -- ^ broad phase scratch: the bodies whose bounds overlap the current one's
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -166,11 +167,12 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wBodyPrev = 2 * c
   , wMouse = count' MActive
   , wProbe = 2 * polyDirections (polygon l)
+  , wNear = c
   }
 
 arrayNames :: WorldArrays String
 arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
-  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe"
+  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 {-# INLINE read3 #-}

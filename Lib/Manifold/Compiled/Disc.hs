@@ -22,13 +22,13 @@ compiled = CompiledStep "disc" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary function f(x, y, z) {\n  return (1.0 - Math.sqrt(((x * x) + (z * z))));\n}\n\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Disc: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -147,49 +147,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -203,67 +208,74 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
     chkI normal (3 * i31) 0 2
-    t67 <- rdU normal (3 * i31)
-    t68 <- rdU normal ((3 * i31) + 1)
-    t69 <- rdU normal ((3 * i31) + 2)
-    v70 <- newR 0.0
-    v71 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i72 -> do
-      let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i31) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
-      let !s76 = (1.0 - (sqrt ((t73 * t73) + (t75 * t75))))
-      t77 <- getR v70
-      if ((negate s76) - t77) > 0 then do
-        setR v70 (negate s76)
-        setR v71 d72
+    t72 <- rdU normal (3 * i31)
+    t73 <- rdU normal ((3 * i31) + 1)
+    t74 <- rdU normal ((3 * i31) + 2)
+    v75 <- newR 0.0
+    v76 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i77 -> do
+      let !d77 = fromIntegral i77 :: Double
+      chkI verts ((291 * i31) + (12 * i77)) 12 14
+      t78 <- rdU verts (((291 * i31) + (12 * i77)) + 12)
+      t79 <- rdU verts (((291 * i31) + (12 * i77)) + 13)
+      t80 <- rdU verts (((291 * i31) + (12 * i77)) + 14)
+      let !s81 = (1.0 - (sqrt ((t78 * t78) + (t80 * t80))))
+      t82 <- getR v75
+      if ((negate s81) - t82) > 0 then do
+        setR v75 (negate s81)
+        setR v76 d77
         pure ()
       else do
         pure ()
       pure ()
-    t78 <- getR v70
-    if t78 > 0 then do
-      t79 <- getR v71
-      chkI verts ((12 * (truncate t79)) + (291 * i31)) 12 14
-      t80 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 12)
-      t81 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 13)
-      t82 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 14)
-      let !t83 = (recip (2.0 * (sqrt ((t80 * t80) + (t82 * t82)))))
-      let !t84 = (negate (t83 * (t80 + t80)))
-      let !t85 = (negate (t83 * (t82 + t82)))
-      let !t86 = (sqrt ((t84 * t84) + (t85 * t85)))
-      let !t87 = (if t86 > 0 then (recip (if (t86 - 1.0e-300) > 0 then t86 else 1.0e-300)) else 0.0)
-      let !s88 = (t87 * t84)
-      let !s89 = (t87 * t85)
-      let !s90 = (t68 * s89)
-      let !s91 = ((t69 * s88) - (t67 * s89))
-      let !s92 = (negate (t68 * s88))
-      v93 <- newR 1.0e300
-      v94 <- newR (-1.0e300)
-      v95 <- newR (-1.0)
-      v96 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i97 -> do
-        let !d97 = fromIntegral i97 :: Double
-        chkI verts ((291 * i31) + (12 * i97)) 12 14
-        t98 <- rdU verts (((291 * i31) + (12 * i97)) + 12)
-        t99 <- rdU verts (((291 * i31) + (12 * i97)) + 13)
-        t100 <- rdU verts (((291 * i31) + (12 * i97)) + 14)
-        if (negate (1.0 - (sqrt ((t98 * t98) + (t100 * t100))))) > 0 then do
-          let !s101 = (((t98 * s90) + (t99 * s91)) + (t100 * s92))
-          t102 <- getR v93
-          if (t102 - s101) > 0 then do
-            setR v93 s101
-            setR v95 d97
+    t83 <- getR v75
+    if t83 > 0 then do
+      t84 <- getR v76
+      chkI verts ((12 * (truncate t84)) + (291 * i31)) 12 14
+      t85 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 12)
+      t86 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 13)
+      t87 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 14)
+      let !t88 = (recip (2.0 * (sqrt ((t85 * t85) + (t87 * t87)))))
+      let !t89 = (negate (t88 * (t85 + t85)))
+      let !t90 = (negate (t88 * (t87 + t87)))
+      let !t91 = (sqrt ((t89 * t89) + (t90 * t90)))
+      let !t92 = (if t91 > 0 then (recip (if (t91 - 1.0e-300) > 0 then t91 else 1.0e-300)) else 0.0)
+      let !s93 = (t92 * t89)
+      let !s94 = (t92 * t90)
+      let !s95 = (t73 * s94)
+      let !s96 = ((t74 * s93) - (t72 * s94))
+      let !s97 = (negate (t73 * s93))
+      v98 <- newR 1.0e300
+      v99 <- newR (-1.0e300)
+      v100 <- newR (-1.0)
+      v101 <- newR (-1.0)
+      loopI 0.0 24.0 $ \i102 -> do
+        let !d102 = fromIntegral i102 :: Double
+        chkI verts ((12 * i102) + (291 * i31)) 12 14
+        t103 <- rdU verts (((12 * i102) + (291 * i31)) + 12)
+        t104 <- rdU verts (((12 * i102) + (291 * i31)) + 13)
+        t105 <- rdU verts (((12 * i102) + (291 * i31)) + 14)
+        if (negate (1.0 - (sqrt ((t103 * t103) + (t105 * t105))))) > 0 then do
+          let !s106 = (((t103 * s95) + (t104 * s96)) + (t105 * s97))
+          t107 <- getR v98
+          if (t107 - s106) > 0 then do
+            setR v98 s106
+            setR v100 d102
             pure ()
           else do
             pure ()
-          t103 <- getR v94
-          if (s101 - t103) > 0 then do
-            setR v94 s101
-            setR v96 d97
+          t108 <- getR v99
+          if (s106 - t108) > 0 then do
+            setR v99 s106
+            setR v101 d102
             pure ()
           else do
             pure ()
@@ -271,222 +283,222 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t104 <- getR v95
-      t105 <- getR v96
-      chkI verts ((12 * (truncate t104)) + (291 * i31)) 12 14
-      t106 <- rdU verts (((12 * (truncate t104)) + (291 * i31)) + 12)
-      t107 <- rdU verts (((12 * (truncate t104)) + (291 * i31)) + 13)
-      t108 <- rdU verts (((12 * (truncate t104)) + (291 * i31)) + 14)
-      let !t109 = (recip (2.0 * (sqrt ((t106 * t106) + (t108 * t108)))))
-      let !s110 = (negate (t109 * (t106 + t106)))
-      let !s111 = (negate (t109 * (t108 + t108)))
-      let !s112 = (sqrt ((s110 * s110) + (s111 * s111)))
-      let !s113 = (1.0 - (sqrt ((t106 * t106) + (t108 * t108))))
-      t114 <- rdU meta 2
-      t115 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t115) > 0 then 1.0 else t115)) - t114) - 0.5) > 0 then do
-        wrU meta 2 (t114 + 1.0)
-        t116 <- rdU pos (3 * i31)
-        t117 <- rdU pos ((3 * i31) + 1)
-        t118 <- rdU pos ((3 * i31) + 2)
-        t119 <- rdU normal (3 * i31)
-        t120 <- rdU normal ((3 * i31) + 1)
-        t121 <- rdU normal ((3 * i31) + 2)
+      t109 <- getR v100
+      t110 <- getR v101
+      chkI verts ((12 * (truncate t109)) + (291 * i31)) 12 14
+      t111 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 12)
+      t112 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 13)
+      t113 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 14)
+      let !t114 = (recip (2.0 * (sqrt ((t111 * t111) + (t113 * t113)))))
+      let !s115 = (negate (t114 * (t111 + t111)))
+      let !s116 = (negate (t114 * (t113 + t113)))
+      let !s117 = (sqrt ((s115 * s115) + (s116 * s116)))
+      let !s118 = (1.0 - (sqrt ((t111 * t111) + (t113 * t113))))
+      t119 <- rdU meta 2
+      t120 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t120) > 0 then 1.0 else t120)) - t119) - 0.5) > 0 then do
+        wrU meta 2 (t119 + 1.0)
+        t121 <- rdU pos (3 * i31)
+        t122 <- rdU pos ((3 * i31) + 1)
+        t123 <- rdU pos ((3 * i31) + 2)
+        t124 <- rdU normal (3 * i31)
+        t125 <- rdU normal ((3 * i31) + 1)
+        t126 <- rdU normal ((3 * i31) + 2)
         chkI axis (3 * i31) 0 2
-        t122 <- rdU axis (3 * i31)
-        t123 <- rdU axis ((3 * i31) + 1)
-        t124 <- rdU axis ((3 * i31) + 2)
-        let !s125 = ((t120 * t124) - (t121 * t123))
-        let !s126 = ((t121 * t122) - (t119 * t124))
-        let !s127 = ((t119 * t123) - (t120 * t122))
+        t127 <- rdU axis (3 * i31)
+        t128 <- rdU axis ((3 * i31) + 1)
+        t129 <- rdU axis ((3 * i31) + 2)
+        let !s130 = ((t125 * t129) - (t126 * t128))
+        let !s131 = ((t126 * t127) - (t124 * t129))
+        let !s132 = ((t124 * t128) - (t125 * t127))
         chkI scalars (6 * i31) 0 0
-        t128 <- rdU scalars (6 * i31)
-        t129 <- rdU scalars ((6 * i31) + 5)
-        t130 <- rdU scalars ((6 * i31) + 2)
-        t131 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t114)) 0 29
-        wrU contacts (30 * (truncate t114)) d31
-        wrU contacts ((30 * (truncate t114)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t114)) + 2) d31
-        wrU contacts ((30 * (truncate t114)) + 3) 8.0
-        let !t132 = (if s112 > 0 then (recip (if (s112 - 1.0e-300) > 0 then s112 else 1.0e-300)) else 0.0)
-        let !t133 = (t132 * s110)
-        wrU contacts ((30 * (truncate t114)) + 4) (t133 + (negate (((t119 * t133) + (t121 * (t132 * s111))) * t119)))
-        wrU contacts ((30 * (truncate t114)) + 5) (negate (((t119 * t133) + (t121 * (t132 * s111))) * t120))
-        let !t134 = (t132 * s111)
-        wrU contacts ((30 * (truncate t114)) + 6) (t134 + (negate (((t119 * t133) + (t121 * t134)) * t121)))
-        let !t135 = (t107 + (negate t117))
-        wrU contacts ((30 * (truncate t114)) + 7) ((((t135 * t134) * t119) + ((((t108 + (negate t118)) * t133) - ((t106 + (negate t116)) * t134)) * t120)) + ((negate (t135 * t133)) * t121))
-        let !t136 = (t120 * t134)
-        wrU contacts ((30 * (truncate t114)) + 12) (t136 + (negate ((((t119 * t136) + (t120 * ((t121 * t133) - (t119 * t134)))) + (t121 * (negate (t120 * t133)))) * t119)))
-        let !t137 = ((t121 * t133) - (t119 * t134))
-        wrU contacts ((30 * (truncate t114)) + 13) (t137 + (negate ((((t119 * t136) + (t120 * t137)) + (t121 * (negate (t120 * t133)))) * t120)))
-        let !t138 = (negate (t120 * t133))
-        wrU contacts ((30 * (truncate t114)) + 14) (t138 + (negate ((((t119 * t136) + (t120 * t137)) + (t121 * t138)) * t121)))
-        let !t139 = (t108 + (negate t118))
-        let !t140 = (t106 + (negate t116))
-        wrU contacts ((30 * (truncate t114)) + 15) (((((t135 * t138) - (t139 * t137)) * t119) + (((t139 * t136) - (t140 * t138)) * t120)) + (((t140 * t137) - (t135 * t136)) * t121))
-        wrU contacts ((30 * (truncate t114)) + 20) (if s112 > 0 then ((negate s113) / (if (s112 - 1.0e-300) > 0 then s112 else 1.0e-300)) else 0.0)
-        wrU contacts ((30 * (truncate t114)) + 26) 1.0
-        wrU contacts ((30 * (truncate t114)) + 27) t106
-        wrU contacts ((30 * (truncate t114)) + 28) t107
-        wrU contacts ((30 * (truncate t114)) + 29) t108
+        t133 <- rdU scalars (6 * i31)
+        t134 <- rdU scalars ((6 * i31) + 5)
+        t135 <- rdU scalars ((6 * i31) + 2)
+        t136 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t119)) 0 29
+        wrU contacts (30 * (truncate t119)) d31
+        wrU contacts ((30 * (truncate t119)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t119)) + 2) d31
+        wrU contacts ((30 * (truncate t119)) + 3) 8.0
+        let !t137 = (if s117 > 0 then (recip (if (s117 - 1.0e-300) > 0 then s117 else 1.0e-300)) else 0.0)
+        let !t138 = (t137 * s115)
+        wrU contacts ((30 * (truncate t119)) + 4) (t138 + (negate (((t124 * t138) + (t126 * (t137 * s116))) * t124)))
+        wrU contacts ((30 * (truncate t119)) + 5) (negate (((t124 * t138) + (t126 * (t137 * s116))) * t125))
+        let !t139 = (t137 * s116)
+        wrU contacts ((30 * (truncate t119)) + 6) (t139 + (negate (((t124 * t138) + (t126 * t139)) * t126)))
+        let !t140 = (t112 + (negate t122))
+        wrU contacts ((30 * (truncate t119)) + 7) ((((t140 * t139) * t124) + ((((t113 + (negate t123)) * t138) - ((t111 + (negate t121)) * t139)) * t125)) + ((negate (t140 * t138)) * t126))
+        let !t141 = (t125 * t139)
+        wrU contacts ((30 * (truncate t119)) + 12) (t141 + (negate ((((t124 * t141) + (t125 * ((t126 * t138) - (t124 * t139)))) + (t126 * (negate (t125 * t138)))) * t124)))
+        let !t142 = ((t126 * t138) - (t124 * t139))
+        wrU contacts ((30 * (truncate t119)) + 13) (t142 + (negate ((((t124 * t141) + (t125 * t142)) + (t126 * (negate (t125 * t138)))) * t125)))
+        let !t143 = (negate (t125 * t138))
+        wrU contacts ((30 * (truncate t119)) + 14) (t143 + (negate ((((t124 * t141) + (t125 * t142)) + (t126 * t143)) * t126)))
+        let !t144 = (t113 + (negate t123))
+        let !t145 = (t111 + (negate t121))
+        wrU contacts ((30 * (truncate t119)) + 15) (((((t140 * t143) - (t144 * t142)) * t124) + (((t144 * t141) - (t145 * t143)) * t125)) + (((t145 * t142) - (t140 * t141)) * t126))
+        wrU contacts ((30 * (truncate t119)) + 20) (if s117 > 0 then ((negate s118) / (if (s117 - 1.0e-300) > 0 then s117 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t119)) + 26) 1.0
+        wrU contacts ((30 * (truncate t119)) + 27) t111
+        wrU contacts ((30 * (truncate t119)) + 28) t112
+        wrU contacts ((30 * (truncate t119)) + 29) t113
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t141 <- rdU pos (-3)
-          t142 <- rdU pos (-2)
-          t143 <- rdU pos (-1)
+          t146 <- rdU pos (-3)
+          t147 <- rdU pos (-2)
+          t148 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t144 <- rdU normal (-3)
-          t145 <- rdU normal (-2)
-          t146 <- rdU normal (-1)
+          t149 <- rdU normal (-3)
+          t150 <- rdU normal (-2)
+          t151 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t147 <- rdU axis (-3)
-          t148 <- rdU axis (-2)
-          t149 <- rdU axis (-1)
-          let !s150 = ((t145 * t149) - (t146 * t148))
-          let !s151 = ((t146 * t147) - (t144 * t149))
-          let !s152 = ((t144 * t148) - (t145 * t147))
+          t152 <- rdU axis (-3)
+          t153 <- rdU axis (-2)
+          t154 <- rdU axis (-1)
+          let !s155 = ((t150 * t154) - (t151 * t153))
+          let !s156 = ((t151 * t152) - (t149 * t154))
+          let !s157 = ((t149 * t153) - (t150 * t152))
           chkI scalars 0 (-6) (-1)
-          t153 <- rdU scalars (-6)
-          t154 <- rdU scalars (-1)
-          t155 <- rdU scalars (-4)
-          t156 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t114)) + 8) (t133 + (negate (((t144 * t133) + (t146 * t134)) * t144)))
-          wrU contacts ((30 * (truncate t114)) + 9) (negate (((t144 * t133) + (t146 * t134)) * t145))
-          wrU contacts ((30 * (truncate t114)) + 10) (t134 + (negate (((t144 * t133) + (t146 * t134)) * t146)))
-          let !t157 = (t107 + (negate t142))
-          wrU contacts ((30 * (truncate t114)) + 11) ((((t157 * t134) * t144) + ((((t108 + (negate t143)) * t133) - ((t106 + (negate t141)) * t134)) * t145)) + ((negate (t157 * t133)) * t146))
-          wrU contacts ((30 * (truncate t114)) + 16) (t136 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t144)))
-          wrU contacts ((30 * (truncate t114)) + 17) (t137 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t145)))
-          wrU contacts ((30 * (truncate t114)) + 18) (t138 + (negate ((((t144 * t136) + (t145 * t137)) + (t146 * t138)) * t146)))
-          let !t158 = (t108 + (negate t143))
-          let !t159 = (t106 + (negate t141))
-          wrU contacts ((30 * (truncate t114)) + 19) (((((t157 * t138) - (t158 * t137)) * t144) + (((t158 * t136) - (t159 * t138)) * t145)) + (((t159 * t137) - (t157 * t136)) * t146))
+          t158 <- rdU scalars (-6)
+          t159 <- rdU scalars (-1)
+          t160 <- rdU scalars (-4)
+          t161 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t119)) + 8) (t138 + (negate (((t149 * t138) + (t151 * t139)) * t149)))
+          wrU contacts ((30 * (truncate t119)) + 9) (negate (((t149 * t138) + (t151 * t139)) * t150))
+          wrU contacts ((30 * (truncate t119)) + 10) (t139 + (negate (((t149 * t138) + (t151 * t139)) * t151)))
+          let !t162 = (t112 + (negate t147))
+          wrU contacts ((30 * (truncate t119)) + 11) ((((t162 * t139) * t149) + ((((t113 + (negate t148)) * t138) - ((t111 + (negate t146)) * t139)) * t150)) + ((negate (t162 * t138)) * t151))
+          wrU contacts ((30 * (truncate t119)) + 16) (t141 + (negate ((((t149 * t141) + (t150 * t142)) + (t151 * t143)) * t149)))
+          wrU contacts ((30 * (truncate t119)) + 17) (t142 + (negate ((((t149 * t141) + (t150 * t142)) + (t151 * t143)) * t150)))
+          wrU contacts ((30 * (truncate t119)) + 18) (t143 + (negate ((((t149 * t141) + (t150 * t142)) + (t151 * t143)) * t151)))
+          let !t163 = (t113 + (negate t148))
+          let !t164 = (t111 + (negate t146))
+          wrU contacts ((30 * (truncate t119)) + 19) (((((t162 * t143) - (t163 * t142)) * t149) + (((t163 * t141) - (t164 * t143)) * t150)) + (((t164 * t142) - (t162 * t141)) * t151))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t114)) + 8) 0.0
-          wrU contacts ((30 * (truncate t114)) + 9) 0.0
-          wrU contacts ((30 * (truncate t114)) + 10) 0.0
-          wrU contacts ((30 * (truncate t114)) + 11) 0.0
-          wrU contacts ((30 * (truncate t114)) + 16) 0.0
-          wrU contacts ((30 * (truncate t114)) + 17) 0.0
-          wrU contacts ((30 * (truncate t114)) + 18) 0.0
-          wrU contacts ((30 * (truncate t114)) + 19) 0.0
+          wrU contacts ((30 * (truncate t119)) + 8) 0.0
+          wrU contacts ((30 * (truncate t119)) + 9) 0.0
+          wrU contacts ((30 * (truncate t119)) + 10) 0.0
+          wrU contacts ((30 * (truncate t119)) + 11) 0.0
+          wrU contacts ((30 * (truncate t119)) + 16) 0.0
+          wrU contacts ((30 * (truncate t119)) + 17) 0.0
+          wrU contacts ((30 * (truncate t119)) + 18) 0.0
+          wrU contacts ((30 * (truncate t119)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t160 <- rdU meta 6
-        wrU meta 6 (t160 + 1.0)
+        t165 <- rdU meta 6
+        wrU meta 6 (t165 + 1.0)
         pure ()
-      if (abs (t105 - t104)) > 0 then do
-        chkI verts ((12 * (truncate t105)) + (291 * i31)) 12 14
-        t161 <- rdU verts (((12 * (truncate t105)) + (291 * i31)) + 12)
-        t162 <- rdU verts (((12 * (truncate t105)) + (291 * i31)) + 13)
-        t163 <- rdU verts (((12 * (truncate t105)) + (291 * i31)) + 14)
-        let !t164 = (recip (2.0 * (sqrt ((t161 * t161) + (t163 * t163)))))
-        let !s165 = (negate (t164 * (t161 + t161)))
-        let !s166 = (negate (t164 * (t163 + t163)))
-        let !s167 = (sqrt ((s165 * s165) + (s166 * s166)))
-        let !s168 = (1.0 - (sqrt ((t161 * t161) + (t163 * t163))))
-        t169 <- rdU meta 2
-        t170 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t170) > 0 then 1.0 else t170)) - t169) - 0.5) > 0 then do
-          wrU meta 2 (t169 + 1.0)
-          t171 <- rdU pos (3 * i31)
-          t172 <- rdU pos ((3 * i31) + 1)
-          t173 <- rdU pos ((3 * i31) + 2)
-          t174 <- rdU normal (3 * i31)
-          t175 <- rdU normal ((3 * i31) + 1)
-          t176 <- rdU normal ((3 * i31) + 2)
+      if (abs (t110 - t109)) > 0 then do
+        chkI verts ((12 * (truncate t110)) + (291 * i31)) 12 14
+        t166 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 12)
+        t167 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 13)
+        t168 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 14)
+        let !t169 = (recip (2.0 * (sqrt ((t166 * t166) + (t168 * t168)))))
+        let !s170 = (negate (t169 * (t166 + t166)))
+        let !s171 = (negate (t169 * (t168 + t168)))
+        let !s172 = (sqrt ((s170 * s170) + (s171 * s171)))
+        let !s173 = (1.0 - (sqrt ((t166 * t166) + (t168 * t168))))
+        t174 <- rdU meta 2
+        t175 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t175) > 0 then 1.0 else t175)) - t174) - 0.5) > 0 then do
+          wrU meta 2 (t174 + 1.0)
+          t176 <- rdU pos (3 * i31)
+          t177 <- rdU pos ((3 * i31) + 1)
+          t178 <- rdU pos ((3 * i31) + 2)
+          t179 <- rdU normal (3 * i31)
+          t180 <- rdU normal ((3 * i31) + 1)
+          t181 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t177 <- rdU axis (3 * i31)
-          t178 <- rdU axis ((3 * i31) + 1)
-          t179 <- rdU axis ((3 * i31) + 2)
-          let !s180 = ((t175 * t179) - (t176 * t178))
-          let !s181 = ((t176 * t177) - (t174 * t179))
-          let !s182 = ((t174 * t178) - (t175 * t177))
+          t182 <- rdU axis (3 * i31)
+          t183 <- rdU axis ((3 * i31) + 1)
+          t184 <- rdU axis ((3 * i31) + 2)
+          let !s185 = ((t180 * t184) - (t181 * t183))
+          let !s186 = ((t181 * t182) - (t179 * t184))
+          let !s187 = ((t179 * t183) - (t180 * t182))
           chkI scalars (6 * i31) 0 0
-          t183 <- rdU scalars (6 * i31)
-          t184 <- rdU scalars ((6 * i31) + 5)
-          t185 <- rdU scalars ((6 * i31) + 2)
-          t186 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t169)) 0 29
-          wrU contacts (30 * (truncate t169)) d31
-          wrU contacts ((30 * (truncate t169)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t169)) + 2) d31
-          wrU contacts ((30 * (truncate t169)) + 3) 9.0
-          let !t187 = (if s167 > 0 then (recip (if (s167 - 1.0e-300) > 0 then s167 else 1.0e-300)) else 0.0)
-          let !t188 = (t187 * s165)
-          wrU contacts ((30 * (truncate t169)) + 4) (t188 + (negate (((t174 * t188) + (t176 * (t187 * s166))) * t174)))
-          wrU contacts ((30 * (truncate t169)) + 5) (negate (((t174 * t188) + (t176 * (t187 * s166))) * t175))
-          let !t189 = (t187 * s166)
-          wrU contacts ((30 * (truncate t169)) + 6) (t189 + (negate (((t174 * t188) + (t176 * t189)) * t176)))
-          let !t190 = (t162 + (negate t172))
-          wrU contacts ((30 * (truncate t169)) + 7) ((((t190 * t189) * t174) + ((((t163 + (negate t173)) * t188) - ((t161 + (negate t171)) * t189)) * t175)) + ((negate (t190 * t188)) * t176))
-          let !t191 = (t175 * t189)
-          wrU contacts ((30 * (truncate t169)) + 12) (t191 + (negate ((((t174 * t191) + (t175 * ((t176 * t188) - (t174 * t189)))) + (t176 * (negate (t175 * t188)))) * t174)))
-          let !t192 = ((t176 * t188) - (t174 * t189))
-          wrU contacts ((30 * (truncate t169)) + 13) (t192 + (negate ((((t174 * t191) + (t175 * t192)) + (t176 * (negate (t175 * t188)))) * t175)))
-          let !t193 = (negate (t175 * t188))
-          wrU contacts ((30 * (truncate t169)) + 14) (t193 + (negate ((((t174 * t191) + (t175 * t192)) + (t176 * t193)) * t176)))
-          let !t194 = (t163 + (negate t173))
-          let !t195 = (t161 + (negate t171))
-          wrU contacts ((30 * (truncate t169)) + 15) (((((t190 * t193) - (t194 * t192)) * t174) + (((t194 * t191) - (t195 * t193)) * t175)) + (((t195 * t192) - (t190 * t191)) * t176))
-          wrU contacts ((30 * (truncate t169)) + 20) (if s167 > 0 then ((negate s168) / (if (s167 - 1.0e-300) > 0 then s167 else 1.0e-300)) else 0.0)
-          wrU contacts ((30 * (truncate t169)) + 26) 1.0
-          wrU contacts ((30 * (truncate t169)) + 27) t161
-          wrU contacts ((30 * (truncate t169)) + 28) t162
-          wrU contacts ((30 * (truncate t169)) + 29) t163
+          t188 <- rdU scalars (6 * i31)
+          t189 <- rdU scalars ((6 * i31) + 5)
+          t190 <- rdU scalars ((6 * i31) + 2)
+          t191 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t174)) 0 29
+          wrU contacts (30 * (truncate t174)) d31
+          wrU contacts ((30 * (truncate t174)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t174)) + 2) d31
+          wrU contacts ((30 * (truncate t174)) + 3) 9.0
+          let !t192 = (if s172 > 0 then (recip (if (s172 - 1.0e-300) > 0 then s172 else 1.0e-300)) else 0.0)
+          let !t193 = (t192 * s170)
+          wrU contacts ((30 * (truncate t174)) + 4) (t193 + (negate (((t179 * t193) + (t181 * (t192 * s171))) * t179)))
+          wrU contacts ((30 * (truncate t174)) + 5) (negate (((t179 * t193) + (t181 * (t192 * s171))) * t180))
+          let !t194 = (t192 * s171)
+          wrU contacts ((30 * (truncate t174)) + 6) (t194 + (negate (((t179 * t193) + (t181 * t194)) * t181)))
+          let !t195 = (t167 + (negate t177))
+          wrU contacts ((30 * (truncate t174)) + 7) ((((t195 * t194) * t179) + ((((t168 + (negate t178)) * t193) - ((t166 + (negate t176)) * t194)) * t180)) + ((negate (t195 * t193)) * t181))
+          let !t196 = (t180 * t194)
+          wrU contacts ((30 * (truncate t174)) + 12) (t196 + (negate ((((t179 * t196) + (t180 * ((t181 * t193) - (t179 * t194)))) + (t181 * (negate (t180 * t193)))) * t179)))
+          let !t197 = ((t181 * t193) - (t179 * t194))
+          wrU contacts ((30 * (truncate t174)) + 13) (t197 + (negate ((((t179 * t196) + (t180 * t197)) + (t181 * (negate (t180 * t193)))) * t180)))
+          let !t198 = (negate (t180 * t193))
+          wrU contacts ((30 * (truncate t174)) + 14) (t198 + (negate ((((t179 * t196) + (t180 * t197)) + (t181 * t198)) * t181)))
+          let !t199 = (t168 + (negate t178))
+          let !t200 = (t166 + (negate t176))
+          wrU contacts ((30 * (truncate t174)) + 15) (((((t195 * t198) - (t199 * t197)) * t179) + (((t199 * t196) - (t200 * t198)) * t180)) + (((t200 * t197) - (t195 * t196)) * t181))
+          wrU contacts ((30 * (truncate t174)) + 20) (if s172 > 0 then ((negate s173) / (if (s172 - 1.0e-300) > 0 then s172 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t174)) + 26) 1.0
+          wrU contacts ((30 * (truncate t174)) + 27) t166
+          wrU contacts ((30 * (truncate t174)) + 28) t167
+          wrU contacts ((30 * (truncate t174)) + 29) t168
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t196 <- rdU pos (-3)
-            t197 <- rdU pos (-2)
-            t198 <- rdU pos (-1)
+            t201 <- rdU pos (-3)
+            t202 <- rdU pos (-2)
+            t203 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t199 <- rdU normal (-3)
-            t200 <- rdU normal (-2)
-            t201 <- rdU normal (-1)
+            t204 <- rdU normal (-3)
+            t205 <- rdU normal (-2)
+            t206 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t202 <- rdU axis (-3)
-            t203 <- rdU axis (-2)
-            t204 <- rdU axis (-1)
-            let !s205 = ((t200 * t204) - (t201 * t203))
-            let !s206 = ((t201 * t202) - (t199 * t204))
-            let !s207 = ((t199 * t203) - (t200 * t202))
+            t207 <- rdU axis (-3)
+            t208 <- rdU axis (-2)
+            t209 <- rdU axis (-1)
+            let !s210 = ((t205 * t209) - (t206 * t208))
+            let !s211 = ((t206 * t207) - (t204 * t209))
+            let !s212 = ((t204 * t208) - (t205 * t207))
             chkI scalars 0 (-6) (-1)
-            t208 <- rdU scalars (-6)
-            t209 <- rdU scalars (-1)
-            t210 <- rdU scalars (-4)
-            t211 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t169)) + 8) (t188 + (negate (((t199 * t188) + (t201 * t189)) * t199)))
-            wrU contacts ((30 * (truncate t169)) + 9) (negate (((t199 * t188) + (t201 * t189)) * t200))
-            wrU contacts ((30 * (truncate t169)) + 10) (t189 + (negate (((t199 * t188) + (t201 * t189)) * t201)))
-            let !t212 = (t162 + (negate t197))
-            wrU contacts ((30 * (truncate t169)) + 11) ((((t212 * t189) * t199) + ((((t163 + (negate t198)) * t188) - ((t161 + (negate t196)) * t189)) * t200)) + ((negate (t212 * t188)) * t201))
-            wrU contacts ((30 * (truncate t169)) + 16) (t191 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t199)))
-            wrU contacts ((30 * (truncate t169)) + 17) (t192 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t200)))
-            wrU contacts ((30 * (truncate t169)) + 18) (t193 + (negate ((((t199 * t191) + (t200 * t192)) + (t201 * t193)) * t201)))
-            let !t213 = (t163 + (negate t198))
-            let !t214 = (t161 + (negate t196))
-            wrU contacts ((30 * (truncate t169)) + 19) (((((t212 * t193) - (t213 * t192)) * t199) + (((t213 * t191) - (t214 * t193)) * t200)) + (((t214 * t192) - (t212 * t191)) * t201))
+            t213 <- rdU scalars (-6)
+            t214 <- rdU scalars (-1)
+            t215 <- rdU scalars (-4)
+            t216 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t174)) + 8) (t193 + (negate (((t204 * t193) + (t206 * t194)) * t204)))
+            wrU contacts ((30 * (truncate t174)) + 9) (negate (((t204 * t193) + (t206 * t194)) * t205))
+            wrU contacts ((30 * (truncate t174)) + 10) (t194 + (negate (((t204 * t193) + (t206 * t194)) * t206)))
+            let !t217 = (t167 + (negate t202))
+            wrU contacts ((30 * (truncate t174)) + 11) ((((t217 * t194) * t204) + ((((t168 + (negate t203)) * t193) - ((t166 + (negate t201)) * t194)) * t205)) + ((negate (t217 * t193)) * t206))
+            wrU contacts ((30 * (truncate t174)) + 16) (t196 + (negate ((((t204 * t196) + (t205 * t197)) + (t206 * t198)) * t204)))
+            wrU contacts ((30 * (truncate t174)) + 17) (t197 + (negate ((((t204 * t196) + (t205 * t197)) + (t206 * t198)) * t205)))
+            wrU contacts ((30 * (truncate t174)) + 18) (t198 + (negate ((((t204 * t196) + (t205 * t197)) + (t206 * t198)) * t206)))
+            let !t218 = (t168 + (negate t203))
+            let !t219 = (t166 + (negate t201))
+            wrU contacts ((30 * (truncate t174)) + 19) (((((t217 * t198) - (t218 * t197)) * t204) + (((t218 * t196) - (t219 * t198)) * t205)) + (((t219 * t197) - (t217 * t196)) * t206))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t169)) + 8) 0.0
-            wrU contacts ((30 * (truncate t169)) + 9) 0.0
-            wrU contacts ((30 * (truncate t169)) + 10) 0.0
-            wrU contacts ((30 * (truncate t169)) + 11) 0.0
-            wrU contacts ((30 * (truncate t169)) + 16) 0.0
-            wrU contacts ((30 * (truncate t169)) + 17) 0.0
-            wrU contacts ((30 * (truncate t169)) + 18) 0.0
-            wrU contacts ((30 * (truncate t169)) + 19) 0.0
+            wrU contacts ((30 * (truncate t174)) + 8) 0.0
+            wrU contacts ((30 * (truncate t174)) + 9) 0.0
+            wrU contacts ((30 * (truncate t174)) + 10) 0.0
+            wrU contacts ((30 * (truncate t174)) + 11) 0.0
+            wrU contacts ((30 * (truncate t174)) + 16) 0.0
+            wrU contacts ((30 * (truncate t174)) + 17) 0.0
+            wrU contacts ((30 * (truncate t174)) + 18) 0.0
+            wrU contacts ((30 * (truncate t174)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t215 <- rdU meta 6
-          wrU meta 6 (t215 + 1.0)
+          t220 <- rdU meta 6
+          wrU meta 6 (t220 + 1.0)
           pure ()
         pure ()
       else do
@@ -495,132 +507,132 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     else do
       pure ()
     chkI verts (291 * i31) 0 2
-    t216 <- rdU verts (291 * i31)
-    t217 <- rdU verts ((291 * i31) + 1)
-    t218 <- rdU verts ((291 * i31) + 2)
-    v219 <- newR 1.0
-    loopI 0.0 24.0 $ \i220 -> do
-      let !d220 = fromIntegral i220 :: Double
-      chkI verts ((12 * i220) + (291 * i31)) 12 14
-      t221 <- rdU verts (((12 * i220) + (291 * i31)) + 12)
-      t222 <- rdU verts (((12 * i220) + (291 * i31)) + 13)
-      t223 <- rdU verts (((12 * i220) + (291 * i31)) + 14)
-      chkI radii (i220 + (24 * i31)) 0 0
-      t224 <- rdU radii (i220 + (24 * i31))
-      t225 <- getR v219
-      let !t226 = (t221 + (negate t216))
-      let !t227 = (t222 + (negate t217))
-      let !t228 = (t223 + (negate t218))
-      let !t229 = (if t224 > 0 then ((sqrt (((t226 * t226) + (t227 * t227)) + (t228 * t228))) / t224) else 1.0)
-      setR v219 (if (t225 - t229) > 0 then t229 else t225)
+    t221 <- rdU verts (291 * i31)
+    t222 <- rdU verts ((291 * i31) + 1)
+    t223 <- rdU verts ((291 * i31) + 2)
+    v224 <- newR 1.0
+    loopI 0.0 24.0 $ \i225 -> do
+      let !d225 = fromIntegral i225 :: Double
+      chkI verts ((12 * i225) + (291 * i31)) 12 14
+      t226 <- rdU verts (((12 * i225) + (291 * i31)) + 12)
+      t227 <- rdU verts (((12 * i225) + (291 * i31)) + 13)
+      t228 <- rdU verts (((12 * i225) + (291 * i31)) + 14)
+      chkI radii (i225 + (24 * i31)) 0 0
+      t229 <- rdU radii (i225 + (24 * i31))
+      t230 <- getR v224
+      let !t231 = (t226 + (negate t221))
+      let !t232 = (t227 + (negate t222))
+      let !t233 = (t228 + (negate t223))
+      let !t234 = (if t229 > 0 then ((sqrt (((t231 * t231) + (t232 * t232)) + (t233 * t233))) / t229) else 1.0)
+      setR v224 (if (t230 - t234) > 0 then t234 else t230)
       pure ()
-    t230 <- getR v219
-    if (0.8 - t230) > 0 then do
-      v231 <- newR 0.0
-      v232 <- newR 0.0
-      v233 <- newR 0.0
-      v234 <- newR 0.0
-      v235 <- newR 0.0
+    t235 <- getR v224
+    if (0.8 - t235) > 0 then do
       v236 <- newR 0.0
       v237 <- newR 0.0
-      loopI 0.0 24.0 $ \i238 -> do
-        let !d238 = fromIntegral i238 :: Double
-        chkI radii (i238 + (24 * i31)) 0 0
-        t239 <- rdU radii (i238 + (24 * i31))
-        loopI 6.0 12.0 $ \i240 -> do
-          let !d240 = fromIntegral i240 :: Double
-          let !t241 = (d238 + d240)
-          chkI radii (truncate ((24.0 * d31) + (t241 - (24.0 * (floorF (t241 / 24.0)))))) 0 0
-          t242 <- rdU radii (truncate ((24.0 * d31) + (t241 - (24.0 * (floorF (t241 / 24.0))))))
-          loopI 1.0 4.0 $ \i243 -> do
-            let !d243 = fromIntegral i243 :: Double
-            chkI verts ((12 * i238) + (3 * i243) + (291 * i31)) 0 5
-            t244 <- rdU verts ((12 * i238) + (3 * i243) + (291 * i31))
-            t245 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 1)
-            t246 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 2)
-            t247 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 3)
-            t248 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 4)
-            t249 <- rdU verts (((12 * i238) + (3 * i243) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i250 -> do
-              let !d250 = fromIntegral i250 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0)))) 0 0
-              t251 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))) + 1.0)) 0 0
-              t252 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))) + 2.0)) 0 0
-              t253 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + (d250 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250))) 0 0
-              t254 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)) + 1.0)) 0 0
-              t255 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)) + 2.0)) 0 0
-              t256 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)) + d250)) + 2.0))
-              t257 <- getR v231
-              let !t258 = (negate t251)
-              let !t259 = (t254 + t258)
-              let !t260 = (negate t252)
-              let !t261 = (t255 + t260)
-              let !t262 = (negate t253)
-              let !t263 = (t256 + t262)
-              let !t264 = (((t259 * t259) + (t261 * t261)) + (t263 * t263))
-              let !t265 = (t247 + (negate t244))
-              let !t266 = (t248 + (negate t245))
-              let !t267 = (t249 + (negate t246))
-              let !t268 = (((t265 * t259) + (t266 * t261)) + (t267 * t263))
-              let !t269 = (((t265 * t265) + (t266 * t266)) + (t267 * t267))
-              let !t270 = ((t269 * t264) - (t268 * t268))
-              let !t271 = (t244 + t258)
-              let !t272 = (t245 + t260)
-              let !t273 = (t246 + t262)
-              let !t274 = (((t259 * t271) + (t261 * t272)) + (t263 * t273))
-              let !t275 = (((t265 * t271) + (t266 * t272)) + (t267 * t273))
-              let !t276 = (if ((abs t270) - 1.0e-300) > 0 then (((t268 * t274) - (t275 * t264)) / t270) else 0.0)
-              let !t277 = (if (t276 - 1.0) > 0 then 1.0 else t276)
-              let !t278 = (if (t270 - ((1.0e-12 * t269) * t264)) > 0 then (if (negate t277) > 0 then 0.0 else t277) else 0.0)
-              let !t279 = (if ((abs t264) - 1.0e-300) > 0 then (((t268 * t278) + t274) / t264) else 0.0)
-              let !t280 = ((abs t269) - 1.0e-300)
-              let !t281 = (if t280 > 0 then ((negate t275) / t269) else 0.0)
+      v238 <- newR 0.0
+      v239 <- newR 0.0
+      v240 <- newR 0.0
+      v241 <- newR 0.0
+      v242 <- newR 0.0
+      loopI 0.0 24.0 $ \i243 -> do
+        let !d243 = fromIntegral i243 :: Double
+        chkI radii (i243 + (24 * i31)) 0 0
+        t244 <- rdU radii (i243 + (24 * i31))
+        loopI 6.0 12.0 $ \i245 -> do
+          let !d245 = fromIntegral i245 :: Double
+          let !t246 = (d243 + d245)
+          chkI radii (truncate ((24.0 * d31) + (t246 - (24.0 * (floorF (t246 / 24.0)))))) 0 0
+          t247 <- rdU radii (truncate ((24.0 * d31) + (t246 - (24.0 * (floorF (t246 / 24.0))))))
+          loopI 1.0 4.0 $ \i248 -> do
+            let !d248 = fromIntegral i248 :: Double
+            chkI verts ((12 * i243) + (3 * i248) + (291 * i31)) 0 5
+            t249 <- rdU verts ((12 * i243) + (3 * i248) + (291 * i31))
+            t250 <- rdU verts (((12 * i243) + (3 * i248) + (291 * i31)) + 1)
+            t251 <- rdU verts (((12 * i243) + (3 * i248) + (291 * i31)) + 2)
+            t252 <- rdU verts (((12 * i243) + (3 * i248) + (291 * i31)) + 3)
+            t253 <- rdU verts (((12 * i243) + (3 * i248) + (291 * i31)) + 4)
+            t254 <- rdU verts (((12 * i243) + (3 * i248) + (291 * i31)) + 5)
+            loopI 1.0 4.0 $ \i255 -> do
+              let !d255 = fromIntegral i255 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + (d255 - 1.0)))) 0 0
+              t256 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + (d255 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + (d255 - 1.0))) + 1.0)) 0 0
+              t257 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + (d255 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + (d255 - 1.0))) + 2.0)) 0 0
+              t258 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + (d255 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + d255))) 0 0
+              t259 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + d255)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + d255)) + 1.0)) 0 0
+              t260 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + d255)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + d255)) + 2.0)) 0 0
+              t261 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)) + d255)) + 2.0))
+              t262 <- getR v236
+              let !t263 = (negate t256)
+              let !t264 = (t259 + t263)
+              let !t265 = (negate t257)
+              let !t266 = (t260 + t265)
+              let !t267 = (negate t258)
+              let !t268 = (t261 + t267)
+              let !t269 = (((t264 * t264) + (t266 * t266)) + (t268 * t268))
+              let !t270 = (t252 + (negate t249))
+              let !t271 = (t253 + (negate t250))
+              let !t272 = (t254 + (negate t251))
+              let !t273 = (((t270 * t264) + (t271 * t266)) + (t272 * t268))
+              let !t274 = (((t270 * t270) + (t271 * t271)) + (t272 * t272))
+              let !t275 = ((t274 * t269) - (t273 * t273))
+              let !t276 = (t249 + t263)
+              let !t277 = (t250 + t265)
+              let !t278 = (t251 + t267)
+              let !t279 = (((t264 * t276) + (t266 * t277)) + (t268 * t278))
+              let !t280 = (((t270 * t276) + (t271 * t277)) + (t272 * t278))
+              let !t281 = (if ((abs t275) - 1.0e-300) > 0 then (((t273 * t279) - (t280 * t269)) / t275) else 0.0)
               let !t282 = (if (t281 - 1.0) > 0 then 1.0 else t281)
-              let !t283 = (t279 - 1.0)
-              let !t284 = (if t280 > 0 then ((t268 - t275) / t269) else 0.0)
-              let !t285 = (if (t284 - 1.0) > 0 then 1.0 else t284)
-              let !t286 = (if (negate t279) > 0 then (if (negate t282) > 0 then 0.0 else t282) else (if t283 > 0 then (if (negate t285) > 0 then 0.0 else t285) else t278))
-              let !t287 = (if t283 > 0 then 1.0 else t279)
-              let !t288 = (if (negate t287) > 0 then 0.0 else t287)
-              let !t289 = ((0.5 * ((t239 - ((t239 * (d243 + t286)) / 4.0)) + (t242 - ((t242 * (d250 + t288)) / 4.0)))) - t257)
-              let !t290 = ((t244 + (t286 * t265)) + (negate (t251 + (t288 * t259))))
-              let !t291 = ((t245 + (t286 * t266)) + (negate (t252 + (t288 * t261))))
-              let !t292 = ((t246 + (t286 * t267)) + (negate (t253 + (t288 * t263))))
-              let !t293 = ((0.3 * ((if (t242 - t239) > 0 then t239 else t242) / 4.0)) - (sqrt (((t290 * t290) + (t291 * t291)) + (t292 * t292))))
-              if (if (t289 - t293) > 0 then t293 else t289) > 0 then do
-                setR v231 (0.5 * ((t239 - ((t239 * (d243 + t286)) / 4.0)) + (t242 - ((t242 * (d250 + t288)) / 4.0))))
-                chkI verts ((12 * i238) + (291 * i31)) 3 5
-                t294 <- rdU verts (((12 * i238) + (291 * i31)) + 3)
-                t295 <- rdU verts (((12 * i238) + (291 * i31)) + 4)
-                t296 <- rdU verts (((12 * i238) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0)))) 0 0
-                t297 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t298 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t299 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t241 - (24.0 * (floorF (t241 / 24.0)))) * 4.0))) + 2.0))
-                setR v232 (t244 + (t286 * t265))
-                setR v233 (t245 + (t286 * t266))
-                setR v234 (t246 + (t286 * t267))
-                let !t300 = (negate t216)
-                let !t301 = (t294 + t300)
-                let !t302 = (negate t217)
-                let !t303 = (t295 + t302)
-                let !t304 = (negate t218)
-                let !t305 = (t296 + t304)
-                let !t306 = (sqrt (((t301 * t301) + (t303 * t303)) + (t305 * t305)))
-                let !t307 = (t297 + t300)
-                let !t308 = (t298 + t302)
-                let !t309 = (t299 + t304)
-                let !t310 = (sqrt (((t307 * t307) + (t308 * t308)) + (t309 * t309)))
-                setR v235 (negate (((if t306 > 0 then (recip (if (t306 - 1.0e-300) > 0 then t306 else 1.0e-300)) else 0.0) * t301) + ((if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0) * t307)))
-                setR v236 (negate (((if t306 > 0 then (recip (if (t306 - 1.0e-300) > 0 then t306 else 1.0e-300)) else 0.0) * t303) + ((if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0) * t308)))
-                setR v237 (negate (((if t306 > 0 then (recip (if (t306 - 1.0e-300) > 0 then t306 else 1.0e-300)) else 0.0) * t305) + ((if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0) * t309)))
+              let !t283 = (if (t275 - ((1.0e-12 * t274) * t269)) > 0 then (if (negate t282) > 0 then 0.0 else t282) else 0.0)
+              let !t284 = (if ((abs t269) - 1.0e-300) > 0 then (((t273 * t283) + t279) / t269) else 0.0)
+              let !t285 = ((abs t274) - 1.0e-300)
+              let !t286 = (if t285 > 0 then ((negate t280) / t274) else 0.0)
+              let !t287 = (if (t286 - 1.0) > 0 then 1.0 else t286)
+              let !t288 = (t284 - 1.0)
+              let !t289 = (if t285 > 0 then ((t273 - t280) / t274) else 0.0)
+              let !t290 = (if (t289 - 1.0) > 0 then 1.0 else t289)
+              let !t291 = (if (negate t284) > 0 then (if (negate t287) > 0 then 0.0 else t287) else (if t288 > 0 then (if (negate t290) > 0 then 0.0 else t290) else t283))
+              let !t292 = (if t288 > 0 then 1.0 else t284)
+              let !t293 = (if (negate t292) > 0 then 0.0 else t292)
+              let !t294 = ((0.5 * ((t244 - ((t244 * (d248 + t291)) / 4.0)) + (t247 - ((t247 * (d255 + t293)) / 4.0)))) - t262)
+              let !t295 = ((t249 + (t291 * t270)) + (negate (t256 + (t293 * t264))))
+              let !t296 = ((t250 + (t291 * t271)) + (negate (t257 + (t293 * t266))))
+              let !t297 = ((t251 + (t291 * t272)) + (negate (t258 + (t293 * t268))))
+              let !t298 = ((0.3 * ((if (t247 - t244) > 0 then t244 else t247) / 4.0)) - (sqrt (((t295 * t295) + (t296 * t296)) + (t297 * t297))))
+              if (if (t294 - t298) > 0 then t298 else t294) > 0 then do
+                setR v236 (0.5 * ((t244 - ((t244 * (d248 + t291)) / 4.0)) + (t247 - ((t247 * (d255 + t293)) / 4.0))))
+                chkI verts ((12 * i243) + (291 * i31)) 3 5
+                t299 <- rdU verts (((12 * i243) + (291 * i31)) + 3)
+                t300 <- rdU verts (((12 * i243) + (291 * i31)) + 4)
+                t301 <- rdU verts (((12 * i243) + (291 * i31)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0)))) 0 0
+                t302 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t303 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t304 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t246 - (24.0 * (floorF (t246 / 24.0)))) * 4.0))) + 2.0))
+                setR v237 (t249 + (t291 * t270))
+                setR v238 (t250 + (t291 * t271))
+                setR v239 (t251 + (t291 * t272))
+                let !t305 = (negate t221)
+                let !t306 = (t299 + t305)
+                let !t307 = (negate t222)
+                let !t308 = (t300 + t307)
+                let !t309 = (negate t223)
+                let !t310 = (t301 + t309)
+                let !t311 = (sqrt (((t306 * t306) + (t308 * t308)) + (t310 * t310)))
+                let !t312 = (t302 + t305)
+                let !t313 = (t303 + t307)
+                let !t314 = (t304 + t309)
+                let !t315 = (sqrt (((t312 * t312) + (t313 * t313)) + (t314 * t314)))
+                setR v240 (negate (((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t306) + ((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t312)))
+                setR v241 (negate (((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t308) + ((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t313)))
+                setR v242 (negate (((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t310) + ((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t314)))
                 pure ()
               else do
                 pure ()
@@ -628,111 +640,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t311 <- getR v231
-      if t311 > 0 then do
-        t312 <- getR v232
-        t313 <- getR v233
-        t314 <- getR v234
-        t315 <- getR v235
-        t316 <- getR v236
+      t316 <- getR v236
+      if t316 > 0 then do
         t317 <- getR v237
-        let !t318 = (t316 + (negate t316))
-        let !t319 = (sqrt (((t315 * t315) + (t318 * t318)) + (t317 * t317)))
-        let !t320 = (if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0)
-        let !s321 = (t320 * t315)
-        let !s322 = (t320 * t318)
-        let !s323 = (t320 * t317)
-        t324 <- rdU meta 2
-        t325 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t325) > 0 then 1.0 else t325)) - t324) - 0.5) > 0 then do
-          wrU meta 2 (t324 + 1.0)
-          t326 <- rdU pos (3 * i31)
-          t327 <- rdU pos ((3 * i31) + 1)
-          t328 <- rdU pos ((3 * i31) + 2)
-          t329 <- rdU normal (3 * i31)
-          t330 <- rdU normal ((3 * i31) + 1)
-          t331 <- rdU normal ((3 * i31) + 2)
+        t318 <- getR v238
+        t319 <- getR v239
+        t320 <- getR v240
+        t321 <- getR v241
+        t322 <- getR v242
+        let !t323 = (t321 + (negate t321))
+        let !t324 = (sqrt (((t320 * t320) + (t323 * t323)) + (t322 * t322)))
+        let !t325 = (if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0)
+        let !s326 = (t325 * t320)
+        let !s327 = (t325 * t323)
+        let !s328 = (t325 * t322)
+        t329 <- rdU meta 2
+        t330 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t330) > 0 then 1.0 else t330)) - t329) - 0.5) > 0 then do
+          wrU meta 2 (t329 + 1.0)
+          t331 <- rdU pos (3 * i31)
+          t332 <- rdU pos ((3 * i31) + 1)
+          t333 <- rdU pos ((3 * i31) + 2)
+          t334 <- rdU normal (3 * i31)
+          t335 <- rdU normal ((3 * i31) + 1)
+          t336 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t332 <- rdU axis (3 * i31)
-          t333 <- rdU axis ((3 * i31) + 1)
-          t334 <- rdU axis ((3 * i31) + 2)
-          let !s335 = ((t330 * t334) - (t331 * t333))
-          let !s336 = ((t331 * t332) - (t329 * t334))
-          let !s337 = ((t329 * t333) - (t330 * t332))
+          t337 <- rdU axis (3 * i31)
+          t338 <- rdU axis ((3 * i31) + 1)
+          t339 <- rdU axis ((3 * i31) + 2)
+          let !s340 = ((t335 * t339) - (t336 * t338))
+          let !s341 = ((t336 * t337) - (t334 * t339))
+          let !s342 = ((t334 * t338) - (t335 * t337))
           chkI scalars (6 * i31) 0 0
-          t338 <- rdU scalars (6 * i31)
-          t339 <- rdU scalars ((6 * i31) + 5)
-          t340 <- rdU scalars ((6 * i31) + 2)
-          t341 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t324)) 0 29
-          wrU contacts (30 * (truncate t324)) d31
-          wrU contacts ((30 * (truncate t324)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t324)) + 2) d31
-          wrU contacts ((30 * (truncate t324)) + 3) 12.0
-          wrU contacts ((30 * (truncate t324)) + 4) (s321 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t329)))
-          wrU contacts ((30 * (truncate t324)) + 5) (s322 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t330)))
-          wrU contacts ((30 * (truncate t324)) + 6) (s323 + (negate ((((t329 * s321) + (t330 * s322)) + (t331 * s323)) * t331)))
-          wrU contacts ((30 * (truncate t324)) + 7) 0.0
-          wrU contacts ((30 * (truncate t324)) + 12) 0.0
-          wrU contacts ((30 * (truncate t324)) + 13) 0.0
-          wrU contacts ((30 * (truncate t324)) + 14) 0.0
-          wrU contacts ((30 * (truncate t324)) + 15) 0.0
-          wrU contacts ((30 * (truncate t324)) + 20) t311
-          wrU contacts ((30 * (truncate t324)) + 26) 0.6
-          wrU contacts ((30 * (truncate t324)) + 27) t312
-          wrU contacts ((30 * (truncate t324)) + 28) t313
-          wrU contacts ((30 * (truncate t324)) + 29) t314
+          t343 <- rdU scalars (6 * i31)
+          t344 <- rdU scalars ((6 * i31) + 5)
+          t345 <- rdU scalars ((6 * i31) + 2)
+          t346 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t329)) 0 29
+          wrU contacts (30 * (truncate t329)) d31
+          wrU contacts ((30 * (truncate t329)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t329)) + 2) d31
+          wrU contacts ((30 * (truncate t329)) + 3) 12.0
+          wrU contacts ((30 * (truncate t329)) + 4) (s326 + (negate ((((t334 * s326) + (t335 * s327)) + (t336 * s328)) * t334)))
+          wrU contacts ((30 * (truncate t329)) + 5) (s327 + (negate ((((t334 * s326) + (t335 * s327)) + (t336 * s328)) * t335)))
+          wrU contacts ((30 * (truncate t329)) + 6) (s328 + (negate ((((t334 * s326) + (t335 * s327)) + (t336 * s328)) * t336)))
+          wrU contacts ((30 * (truncate t329)) + 7) 0.0
+          wrU contacts ((30 * (truncate t329)) + 12) 0.0
+          wrU contacts ((30 * (truncate t329)) + 13) 0.0
+          wrU contacts ((30 * (truncate t329)) + 14) 0.0
+          wrU contacts ((30 * (truncate t329)) + 15) 0.0
+          wrU contacts ((30 * (truncate t329)) + 20) t316
+          wrU contacts ((30 * (truncate t329)) + 26) 0.6
+          wrU contacts ((30 * (truncate t329)) + 27) t317
+          wrU contacts ((30 * (truncate t329)) + 28) t318
+          wrU contacts ((30 * (truncate t329)) + 29) t319
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t342 <- rdU pos (-3)
-            t343 <- rdU pos (-2)
-            t344 <- rdU pos (-1)
+            t347 <- rdU pos (-3)
+            t348 <- rdU pos (-2)
+            t349 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t345 <- rdU normal (-3)
-            t346 <- rdU normal (-2)
-            t347 <- rdU normal (-1)
+            t350 <- rdU normal (-3)
+            t351 <- rdU normal (-2)
+            t352 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t348 <- rdU axis (-3)
-            t349 <- rdU axis (-2)
-            t350 <- rdU axis (-1)
-            let !s351 = ((t346 * t350) - (t347 * t349))
-            let !s352 = ((t347 * t348) - (t345 * t350))
-            let !s353 = ((t345 * t349) - (t346 * t348))
+            t353 <- rdU axis (-3)
+            t354 <- rdU axis (-2)
+            t355 <- rdU axis (-1)
+            let !s356 = ((t351 * t355) - (t352 * t354))
+            let !s357 = ((t352 * t353) - (t350 * t355))
+            let !s358 = ((t350 * t354) - (t351 * t353))
             chkI scalars 0 (-6) (-1)
-            t354 <- rdU scalars (-6)
-            t355 <- rdU scalars (-1)
-            t356 <- rdU scalars (-4)
-            t357 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t324)) + 8) (s321 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t345)))
-            wrU contacts ((30 * (truncate t324)) + 9) (s322 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t346)))
-            wrU contacts ((30 * (truncate t324)) + 10) (s323 + (negate ((((t345 * s321) + (t346 * s322)) + (t347 * s323)) * t347)))
-            let !t358 = (t313 + (negate t343))
-            let !t359 = (t314 + (negate t344))
-            let !t360 = (t312 + (negate t342))
-            wrU contacts ((30 * (truncate t324)) + 11) (((((t358 * s323) - (t359 * s322)) * t345) + (((t359 * s321) - (t360 * s323)) * t346)) + (((t360 * s322) - (t358 * s321)) * t347))
-            let !t361 = ((t330 * s323) - (t331 * s322))
-            wrU contacts ((30 * (truncate t324)) + 16) (t361 + (negate ((((t345 * t361) + (t346 * ((t331 * s321) - (t329 * s323)))) + (t347 * ((t329 * s322) - (t330 * s321)))) * t345)))
-            let !t362 = ((t331 * s321) - (t329 * s323))
-            wrU contacts ((30 * (truncate t324)) + 17) (t362 + (negate ((((t345 * t361) + (t346 * t362)) + (t347 * ((t329 * s322) - (t330 * s321)))) * t346)))
-            let !t363 = ((t329 * s322) - (t330 * s321))
-            wrU contacts ((30 * (truncate t324)) + 18) (t363 + (negate ((((t345 * t361) + (t346 * t362)) + (t347 * t363)) * t347)))
-            wrU contacts ((30 * (truncate t324)) + 19) (((((t358 * t363) - (t359 * t362)) * t345) + (((t359 * t361) - (t360 * t363)) * t346)) + (((t360 * t362) - (t358 * t361)) * t347))
+            t359 <- rdU scalars (-6)
+            t360 <- rdU scalars (-1)
+            t361 <- rdU scalars (-4)
+            t362 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t329)) + 8) (s326 + (negate ((((t350 * s326) + (t351 * s327)) + (t352 * s328)) * t350)))
+            wrU contacts ((30 * (truncate t329)) + 9) (s327 + (negate ((((t350 * s326) + (t351 * s327)) + (t352 * s328)) * t351)))
+            wrU contacts ((30 * (truncate t329)) + 10) (s328 + (negate ((((t350 * s326) + (t351 * s327)) + (t352 * s328)) * t352)))
+            let !t363 = (t318 + (negate t348))
+            let !t364 = (t319 + (negate t349))
+            let !t365 = (t317 + (negate t347))
+            wrU contacts ((30 * (truncate t329)) + 11) (((((t363 * s328) - (t364 * s327)) * t350) + (((t364 * s326) - (t365 * s328)) * t351)) + (((t365 * s327) - (t363 * s326)) * t352))
+            let !t366 = ((t335 * s328) - (t336 * s327))
+            wrU contacts ((30 * (truncate t329)) + 16) (t366 + (negate ((((t350 * t366) + (t351 * ((t336 * s326) - (t334 * s328)))) + (t352 * ((t334 * s327) - (t335 * s326)))) * t350)))
+            let !t367 = ((t336 * s326) - (t334 * s328))
+            wrU contacts ((30 * (truncate t329)) + 17) (t367 + (negate ((((t350 * t366) + (t351 * t367)) + (t352 * ((t334 * s327) - (t335 * s326)))) * t351)))
+            let !t368 = ((t334 * s327) - (t335 * s326))
+            wrU contacts ((30 * (truncate t329)) + 18) (t368 + (negate ((((t350 * t366) + (t351 * t367)) + (t352 * t368)) * t352)))
+            wrU contacts ((30 * (truncate t329)) + 19) (((((t363 * t368) - (t364 * t367)) * t350) + (((t364 * t366) - (t365 * t368)) * t351)) + (((t365 * t367) - (t363 * t366)) * t352))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t324)) + 8) 0.0
-            wrU contacts ((30 * (truncate t324)) + 9) 0.0
-            wrU contacts ((30 * (truncate t324)) + 10) 0.0
-            wrU contacts ((30 * (truncate t324)) + 11) 0.0
-            wrU contacts ((30 * (truncate t324)) + 16) 0.0
-            wrU contacts ((30 * (truncate t324)) + 17) 0.0
-            wrU contacts ((30 * (truncate t324)) + 18) 0.0
-            wrU contacts ((30 * (truncate t324)) + 19) 0.0
+            wrU contacts ((30 * (truncate t329)) + 8) 0.0
+            wrU contacts ((30 * (truncate t329)) + 9) 0.0
+            wrU contacts ((30 * (truncate t329)) + 10) 0.0
+            wrU contacts ((30 * (truncate t329)) + 11) 0.0
+            wrU contacts ((30 * (truncate t329)) + 16) 0.0
+            wrU contacts ((30 * (truncate t329)) + 17) 0.0
+            wrU contacts ((30 * (truncate t329)) + 18) 0.0
+            wrU contacts ((30 * (truncate t329)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t364 <- rdU meta 6
-          wrU meta 6 (t364 + 1.0)
+          t369 <- rdU meta 6
+          wrU meta 6 (t369 + 1.0)
           pure ()
         pure ()
       else do
@@ -743,8 +755,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1433,8 +1445,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1557,8 +1569,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "flat-klein" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, 0.0];\n}\n\nquotient Lattice {latticePeriod = 2.0, latticeFlip = True}\nbounds 2.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.FlatKlein: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -67,8 +67,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -143,54 +143,59 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    let !t38 = ((abs t32) - 1.0)
-    let !t39 = (if (negate t38) > 0 then 0.0 else t38)
-    let !t40 = ((abs t34) - 1.0)
-    let !t41 = (if (negate t40) > 0 then 0.0 else t40)
-    if ((t35 + t37) - (sqrt ((t39 * t39) + (t41 * t41)))) > 0 then do
-      t42 <- rdU meta 4
-      t43 <- rdU meta 5
-      let !s44 = (floorF (t32 / t43))
-      let !s45 = (floorF (t33 / t43))
-      let !s46 = (floorF (t34 / t43))
-      loopI 0.0 3.0 $ \i47 -> do
-        let !d47 = fromIntegral i47 :: Double
-        loopI 0.0 3.0 $ \i48 -> do
-          let !d48 = fromIntegral i48 :: Double
-          loopI 0.0 3.0 $ \i49 -> do
-            let !d49 = fromIntegral i49 :: Double
-            let !s50 = ((s44 + d47) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    let !t39 = ((abs t32) - 1.0)
+    let !t40 = (if (negate t39) > 0 then 0.0 else t39)
+    let !t41 = ((abs t34) - 1.0)
+    let !t42 = (if (negate t41) > 0 then 0.0 else t41)
+    if ((t35 + t37) - (sqrt ((t40 * t40) + (t42 * t42)))) > 0 then do
+      t43 <- rdU meta 4
+      t44 <- rdU meta 5
+      let !s45 = (floorF (t32 / t44))
+      let !s46 = (floorF (t33 / t44))
+      let !s47 = (floorF (t34 / t44))
+      loopI 0.0 3.0 $ \i48 -> do
+        let !d48 = fromIntegral i48 :: Double
+        loopI 0.0 3.0 $ \i49 -> do
+          let !d49 = fromIntegral i49 :: Double
+          loopI 0.0 3.0 $ \i50 -> do
+            let !d50 = fromIntegral i50 :: Double
             let !s51 = ((s45 + d48) - 1.0)
             let !s52 = ((s46 + d49) - 1.0)
-            let !s53 = (((((s50 + 131072.0) * 262144.0) + (s51 + 131072.0)) * 262144.0) + (s52 + 131072.0))
-            let !t54 = (((s50 * 7.3856093e7) + (s51 * 1.9349663e7)) + (s52 * 8.3492791e7))
-            let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
-            chkI grid (truncate s55) 0 0
-            t56 <- rdU grid (truncate s55)
-            chkI grid ((truncate s55) + (truncate t42)) 0 0
-            t57 <- rdU grid ((truncate s55) + (truncate t42))
-            loopI t57 t56 $ \i58 -> do
-              let !d58 = fromIntegral i58 :: Double
-              chkI items i58 0 0
-              t59 <- rdU items i58
-              chkI cellOf (truncate t59) 0 0
-              t60 <- rdU cellOf (truncate t59)
-              if (0.5 - (abs (t60 - s53))) > 0 then do
-                if (t59 - d31) > 0 then do
-                  chkI pos (3 * (truncate t59)) 0 2
-                  t61 <- rdU pos (3 * (truncate t59))
-                  t62 <- rdU pos ((3 * (truncate t59)) + 1)
-                  t63 <- rdU pos ((3 * (truncate t59)) + 2)
-                  chkI scalars (6 * (truncate t59)) 2 5
-                  t64 <- rdU scalars ((6 * (truncate t59)) + 5)
-                  t65 <- rdU scalars ((6 * (truncate t59)) + 2)
-                  let !t66 = (t36 + t65)
-                  let !t67 = (t32 + (negate t61))
-                  let !t68 = (t33 + (negate t62))
-                  let !t69 = (t34 + (negate t63))
-                  let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
-                  if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
+            let !s53 = ((s47 + d50) - 1.0)
+            let !s54 = (((((s51 + 131072.0) * 262144.0) + (s52 + 131072.0)) * 262144.0) + (s53 + 131072.0))
+            let !t55 = (((s51 * 7.3856093e7) + (s52 * 1.9349663e7)) + (s53 * 8.3492791e7))
+            let !s56 = (t55 - (t43 * (floorF (t55 / t43))))
+            chkI grid (truncate s56) 0 0
+            t57 <- rdU grid (truncate s56)
+            chkI grid ((truncate s56) + (truncate t43)) 0 0
+            t58 <- rdU grid ((truncate s56) + (truncate t43))
+            loopI t58 t57 $ \i59 -> do
+              let !d59 = fromIntegral i59 :: Double
+              chkI items i59 0 0
+              t60 <- rdU items i59
+              chkI cellOf (truncate t60) 0 0
+              t61 <- rdU cellOf (truncate t60)
+              if (0.5 - (abs (t61 - s54))) > 0 then do
+                if (t60 - d31) > 0 then do
+                  chkI pos (3 * (truncate t60)) 0 2
+                  t62 <- rdU pos (3 * (truncate t60))
+                  t63 <- rdU pos ((3 * (truncate t60)) + 1)
+                  t64 <- rdU pos ((3 * (truncate t60)) + 2)
+                  chkI scalars (6 * (truncate t60)) 2 5
+                  t65 <- rdU scalars ((6 * (truncate t60)) + 5)
+                  t66 <- rdU scalars ((6 * (truncate t60)) + 2)
+                  let !t67 = (t36 + t66)
+                  let !t68 = (t32 + (negate t62))
+                  let !t69 = (t33 + (negate t63))
+                  let !t70 = (t34 + (negate t64))
+                  let !t71 = ((t35 + t65) - (sqrt (((t68 * t68) + (t69 * t69)) + (t70 * t70))))
+                  if (if (t67 - t71) > 0 then t71 else t67) > 0 then do
+                    t72 <- getR v38
+                    chkI near (truncate t72) 0 0
+                    wrU near (truncate t72) t60
+                    setR v38 (t72 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -207,56 +212,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s71 = (t32 + (-2.0))
-    let !s72 = ((negate t34) + (-2.0))
-    let !t73 = ((abs s71) - 1.0)
-    let !t74 = (if (negate t73) > 0 then 0.0 else t73)
-    let !t75 = ((abs s72) - 1.0)
-    let !t76 = (if (negate t75) > 0 then 0.0 else t75)
-    if ((t35 + t37) - (sqrt ((t74 * t74) + (t76 * t76)))) > 0 then do
-      t77 <- rdU meta 4
-      t78 <- rdU meta 5
-      let !s79 = (floorF (s71 / t78))
-      let !s80 = (floorF (t33 / t78))
-      let !s81 = (floorF (s72 / t78))
-      loopI 0.0 3.0 $ \i82 -> do
-        let !d82 = fromIntegral i82 :: Double
-        loopI 0.0 3.0 $ \i83 -> do
-          let !d83 = fromIntegral i83 :: Double
-          loopI 0.0 3.0 $ \i84 -> do
-            let !d84 = fromIntegral i84 :: Double
-            let !s85 = ((s79 + d82) - 1.0)
-            let !s86 = ((s80 + d83) - 1.0)
-            let !s87 = ((s81 + d84) - 1.0)
-            let !s88 = (((((s85 + 131072.0) * 262144.0) + (s86 + 131072.0)) * 262144.0) + (s87 + 131072.0))
-            let !t89 = (((s85 * 7.3856093e7) + (s86 * 1.9349663e7)) + (s87 * 8.3492791e7))
-            let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
-            chkI grid (truncate s90) 0 0
-            t91 <- rdU grid (truncate s90)
-            chkI grid ((truncate s90) + (truncate t77)) 0 0
-            t92 <- rdU grid ((truncate s90) + (truncate t77))
-            loopI t92 t91 $ \i93 -> do
-              let !d93 = fromIntegral i93 :: Double
-              chkI items i93 0 0
-              t94 <- rdU items i93
-              chkI cellOf (truncate t94) 0 0
-              t95 <- rdU cellOf (truncate t94)
-              if (0.5 - (abs (t95 - s88))) > 0 then do
-                if (t94 - d31) > 0 then do
-                  chkI pos (3 * (truncate t94)) 0 2
-                  t96 <- rdU pos (3 * (truncate t94))
-                  t97 <- rdU pos ((3 * (truncate t94)) + 1)
-                  t98 <- rdU pos ((3 * (truncate t94)) + 2)
-                  chkI scalars (6 * (truncate t94)) 2 5
-                  t99 <- rdU scalars ((6 * (truncate t94)) + 5)
-                  t100 <- rdU scalars ((6 * (truncate t94)) + 2)
-                  let !t101 = (t36 + t100)
-                  let !t102 = (s71 + (negate t96))
-                  let !t103 = (t33 + (negate t97))
-                  let !t104 = (s72 + (negate t98))
-                  let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
-                  if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
+    t73 <- getR v38
+    loopI 0.0 t73 $ \i74 -> do
+      let !d74 = fromIntegral i74 :: Double
+      chkI near i74 0 0
+      t75 <- rdU near i74
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t75 + 1.0) * 64.0) d31 t75 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
+    let !s76 = (t32 + (-2.0))
+    let !s77 = ((negate t34) + (-2.0))
+    setR v38 0.0
+    let !t78 = ((abs s76) - 1.0)
+    let !t79 = (if (negate t78) > 0 then 0.0 else t78)
+    let !t80 = ((abs s77) - 1.0)
+    let !t81 = (if (negate t80) > 0 then 0.0 else t80)
+    if ((t35 + t37) - (sqrt ((t79 * t79) + (t81 * t81)))) > 0 then do
+      t82 <- rdU meta 4
+      t83 <- rdU meta 5
+      let !s84 = (floorF (s76 / t83))
+      let !s85 = (floorF (t33 / t83))
+      let !s86 = (floorF (s77 / t83))
+      loopI 0.0 3.0 $ \i87 -> do
+        let !d87 = fromIntegral i87 :: Double
+        loopI 0.0 3.0 $ \i88 -> do
+          let !d88 = fromIntegral i88 :: Double
+          loopI 0.0 3.0 $ \i89 -> do
+            let !d89 = fromIntegral i89 :: Double
+            let !s90 = ((s84 + d87) - 1.0)
+            let !s91 = ((s85 + d88) - 1.0)
+            let !s92 = ((s86 + d89) - 1.0)
+            let !s93 = (((((s90 + 131072.0) * 262144.0) + (s91 + 131072.0)) * 262144.0) + (s92 + 131072.0))
+            let !t94 = (((s90 * 7.3856093e7) + (s91 * 1.9349663e7)) + (s92 * 8.3492791e7))
+            let !s95 = (t94 - (t82 * (floorF (t94 / t82))))
+            chkI grid (truncate s95) 0 0
+            t96 <- rdU grid (truncate s95)
+            chkI grid ((truncate s95) + (truncate t82)) 0 0
+            t97 <- rdU grid ((truncate s95) + (truncate t82))
+            loopI t97 t96 $ \i98 -> do
+              let !d98 = fromIntegral i98 :: Double
+              chkI items i98 0 0
+              t99 <- rdU items i98
+              chkI cellOf (truncate t99) 0 0
+              t100 <- rdU cellOf (truncate t99)
+              if (0.5 - (abs (t100 - s93))) > 0 then do
+                if (t99 - d31) > 0 then do
+                  chkI pos (3 * (truncate t99)) 0 2
+                  t101 <- rdU pos (3 * (truncate t99))
+                  t102 <- rdU pos ((3 * (truncate t99)) + 1)
+                  t103 <- rdU pos ((3 * (truncate t99)) + 2)
+                  chkI scalars (6 * (truncate t99)) 2 5
+                  t104 <- rdU scalars ((6 * (truncate t99)) + 5)
+                  t105 <- rdU scalars ((6 * (truncate t99)) + 2)
+                  let !t106 = (t36 + t105)
+                  let !t107 = (s76 + (negate t101))
+                  let !t108 = (t33 + (negate t102))
+                  let !t109 = (s77 + (negate t103))
+                  let !t110 = ((t35 + t104) - (sqrt (((t107 * t107) + (t108 * t108)) + (t109 * t109))))
+                  if (if (t106 - t110) > 0 then t110 else t106) > 0 then do
+                    t111 <- getR v38
+                    chkI near (truncate t111) 0 0
+                    wrU near (truncate t111) t99
+                    setR v38 (t111 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -273,56 +289,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s106 = s71
-    let !s107 = (negate t34)
-    let !t108 = ((abs s106) - 1.0)
-    let !t109 = (if (negate t108) > 0 then 0.0 else t108)
-    let !t110 = ((abs s107) - 1.0)
-    let !t111 = (if (negate t110) > 0 then 0.0 else t110)
-    if ((t35 + t37) - (sqrt ((t109 * t109) + (t111 * t111)))) > 0 then do
-      t112 <- rdU meta 4
-      t113 <- rdU meta 5
-      let !s114 = (floorF (s106 / t113))
-      let !s115 = (floorF (t33 / t113))
-      let !s116 = (floorF (s107 / t113))
-      loopI 0.0 3.0 $ \i117 -> do
-        let !d117 = fromIntegral i117 :: Double
-        loopI 0.0 3.0 $ \i118 -> do
-          let !d118 = fromIntegral i118 :: Double
-          loopI 0.0 3.0 $ \i119 -> do
-            let !d119 = fromIntegral i119 :: Double
-            let !s120 = ((s114 + d117) - 1.0)
-            let !s121 = ((s115 + d118) - 1.0)
-            let !s122 = ((s116 + d119) - 1.0)
-            let !s123 = (((((s120 + 131072.0) * 262144.0) + (s121 + 131072.0)) * 262144.0) + (s122 + 131072.0))
-            let !t124 = (((s120 * 7.3856093e7) + (s121 * 1.9349663e7)) + (s122 * 8.3492791e7))
-            let !s125 = (t124 - (t112 * (floorF (t124 / t112))))
-            chkI grid (truncate s125) 0 0
-            t126 <- rdU grid (truncate s125)
-            chkI grid ((truncate s125) + (truncate t112)) 0 0
-            t127 <- rdU grid ((truncate s125) + (truncate t112))
-            loopI t127 t126 $ \i128 -> do
-              let !d128 = fromIntegral i128 :: Double
-              chkI items i128 0 0
-              t129 <- rdU items i128
-              chkI cellOf (truncate t129) 0 0
-              t130 <- rdU cellOf (truncate t129)
-              if (0.5 - (abs (t130 - s123))) > 0 then do
-                if (t129 - d31) > 0 then do
-                  chkI pos (3 * (truncate t129)) 0 2
-                  t131 <- rdU pos (3 * (truncate t129))
-                  t132 <- rdU pos ((3 * (truncate t129)) + 1)
-                  t133 <- rdU pos ((3 * (truncate t129)) + 2)
-                  chkI scalars (6 * (truncate t129)) 2 5
-                  t134 <- rdU scalars ((6 * (truncate t129)) + 5)
-                  t135 <- rdU scalars ((6 * (truncate t129)) + 2)
-                  let !t136 = (t36 + t135)
-                  let !t137 = (s106 + (negate t131))
-                  let !t138 = (t33 + (negate t132))
-                  let !t139 = (s107 + (negate t133))
-                  let !t140 = ((t35 + t134) - (sqrt (((t137 * t137) + (t138 * t138)) + (t139 * t139))))
-                  if (if (t136 - t140) > 0 then t140 else t136) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t129 + 1.0) * 64.0) + 20.0) d31 t129 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
+    t112 <- getR v38
+    loopI 0.0 t112 $ \i113 -> do
+      let !d113 = fromIntegral i113 :: Double
+      chkI near i113 0 0
+      t114 <- rdU near i113
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t114 + 1.0) * 64.0) + 16.0) d31 t114 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
+      pure ()
+    let !s115 = s76
+    let !s116 = (negate t34)
+    setR v38 0.0
+    let !t117 = ((abs s115) - 1.0)
+    let !t118 = (if (negate t117) > 0 then 0.0 else t117)
+    let !t119 = ((abs s116) - 1.0)
+    let !t120 = (if (negate t119) > 0 then 0.0 else t119)
+    if ((t35 + t37) - (sqrt ((t118 * t118) + (t120 * t120)))) > 0 then do
+      t121 <- rdU meta 4
+      t122 <- rdU meta 5
+      let !s123 = (floorF (s115 / t122))
+      let !s124 = (floorF (t33 / t122))
+      let !s125 = (floorF (s116 / t122))
+      loopI 0.0 3.0 $ \i126 -> do
+        let !d126 = fromIntegral i126 :: Double
+        loopI 0.0 3.0 $ \i127 -> do
+          let !d127 = fromIntegral i127 :: Double
+          loopI 0.0 3.0 $ \i128 -> do
+            let !d128 = fromIntegral i128 :: Double
+            let !s129 = ((s123 + d126) - 1.0)
+            let !s130 = ((s124 + d127) - 1.0)
+            let !s131 = ((s125 + d128) - 1.0)
+            let !s132 = (((((s129 + 131072.0) * 262144.0) + (s130 + 131072.0)) * 262144.0) + (s131 + 131072.0))
+            let !t133 = (((s129 * 7.3856093e7) + (s130 * 1.9349663e7)) + (s131 * 8.3492791e7))
+            let !s134 = (t133 - (t121 * (floorF (t133 / t121))))
+            chkI grid (truncate s134) 0 0
+            t135 <- rdU grid (truncate s134)
+            chkI grid ((truncate s134) + (truncate t121)) 0 0
+            t136 <- rdU grid ((truncate s134) + (truncate t121))
+            loopI t136 t135 $ \i137 -> do
+              let !d137 = fromIntegral i137 :: Double
+              chkI items i137 0 0
+              t138 <- rdU items i137
+              chkI cellOf (truncate t138) 0 0
+              t139 <- rdU cellOf (truncate t138)
+              if (0.5 - (abs (t139 - s132))) > 0 then do
+                if (t138 - d31) > 0 then do
+                  chkI pos (3 * (truncate t138)) 0 2
+                  t140 <- rdU pos (3 * (truncate t138))
+                  t141 <- rdU pos ((3 * (truncate t138)) + 1)
+                  t142 <- rdU pos ((3 * (truncate t138)) + 2)
+                  chkI scalars (6 * (truncate t138)) 2 5
+                  t143 <- rdU scalars ((6 * (truncate t138)) + 5)
+                  t144 <- rdU scalars ((6 * (truncate t138)) + 2)
+                  let !t145 = (t36 + t144)
+                  let !t146 = (s115 + (negate t140))
+                  let !t147 = (t33 + (negate t141))
+                  let !t148 = (s116 + (negate t142))
+                  let !t149 = ((t35 + t143) - (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148))))
+                  if (if (t145 - t149) > 0 then t149 else t145) > 0 then do
+                    t150 <- getR v38
+                    chkI near (truncate t150) 0 0
+                    wrU near (truncate t150) t138
+                    setR v38 (t150 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -339,56 +366,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s141 = s106
-    let !s142 = (s107 + 2.0)
-    let !t143 = ((abs s141) - 1.0)
-    let !t144 = (if (negate t143) > 0 then 0.0 else t143)
-    let !t145 = ((abs s142) - 1.0)
-    let !t146 = (if (negate t145) > 0 then 0.0 else t145)
-    if ((t35 + t37) - (sqrt ((t144 * t144) + (t146 * t146)))) > 0 then do
-      t147 <- rdU meta 4
-      t148 <- rdU meta 5
-      let !s149 = (floorF (s141 / t148))
-      let !s150 = (floorF (t33 / t148))
-      let !s151 = (floorF (s142 / t148))
-      loopI 0.0 3.0 $ \i152 -> do
-        let !d152 = fromIntegral i152 :: Double
-        loopI 0.0 3.0 $ \i153 -> do
-          let !d153 = fromIntegral i153 :: Double
-          loopI 0.0 3.0 $ \i154 -> do
-            let !d154 = fromIntegral i154 :: Double
-            let !s155 = ((s149 + d152) - 1.0)
-            let !s156 = ((s150 + d153) - 1.0)
-            let !s157 = ((s151 + d154) - 1.0)
-            let !s158 = (((((s155 + 131072.0) * 262144.0) + (s156 + 131072.0)) * 262144.0) + (s157 + 131072.0))
-            let !t159 = (((s155 * 7.3856093e7) + (s156 * 1.9349663e7)) + (s157 * 8.3492791e7))
-            let !s160 = (t159 - (t147 * (floorF (t159 / t147))))
-            chkI grid (truncate s160) 0 0
-            t161 <- rdU grid (truncate s160)
-            chkI grid ((truncate s160) + (truncate t147)) 0 0
-            t162 <- rdU grid ((truncate s160) + (truncate t147))
-            loopI t162 t161 $ \i163 -> do
-              let !d163 = fromIntegral i163 :: Double
-              chkI items i163 0 0
-              t164 <- rdU items i163
-              chkI cellOf (truncate t164) 0 0
-              t165 <- rdU cellOf (truncate t164)
-              if (0.5 - (abs (t165 - s158))) > 0 then do
-                if (t164 - d31) > 0 then do
-                  chkI pos (3 * (truncate t164)) 0 2
-                  t166 <- rdU pos (3 * (truncate t164))
-                  t167 <- rdU pos ((3 * (truncate t164)) + 1)
-                  t168 <- rdU pos ((3 * (truncate t164)) + 2)
-                  chkI scalars (6 * (truncate t164)) 2 5
-                  t169 <- rdU scalars ((6 * (truncate t164)) + 5)
-                  t170 <- rdU scalars ((6 * (truncate t164)) + 2)
-                  let !t171 = (t36 + t170)
-                  let !t172 = (s141 + (negate t166))
-                  let !t173 = (t33 + (negate t167))
-                  let !t174 = (s142 + (negate t168))
-                  let !t175 = ((t35 + t169) - (sqrt (((t172 * t172) + (t173 * t173)) + (t174 * t174))))
-                  if (if (t171 - t175) > 0 then t175 else t171) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t164 + 1.0) * 64.0) + 24.0) d31 t164 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
+    t151 <- getR v38
+    loopI 0.0 t151 $ \i152 -> do
+      let !d152 = fromIntegral i152 :: Double
+      chkI near i152 0 0
+      t153 <- rdU near i152
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t153 + 1.0) * 64.0) + 20.0) d31 t153 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
+      pure ()
+    let !s154 = s115
+    let !s155 = (s116 + 2.0)
+    setR v38 0.0
+    let !t156 = ((abs s154) - 1.0)
+    let !t157 = (if (negate t156) > 0 then 0.0 else t156)
+    let !t158 = ((abs s155) - 1.0)
+    let !t159 = (if (negate t158) > 0 then 0.0 else t158)
+    if ((t35 + t37) - (sqrt ((t157 * t157) + (t159 * t159)))) > 0 then do
+      t160 <- rdU meta 4
+      t161 <- rdU meta 5
+      let !s162 = (floorF (s154 / t161))
+      let !s163 = (floorF (t33 / t161))
+      let !s164 = (floorF (s155 / t161))
+      loopI 0.0 3.0 $ \i165 -> do
+        let !d165 = fromIntegral i165 :: Double
+        loopI 0.0 3.0 $ \i166 -> do
+          let !d166 = fromIntegral i166 :: Double
+          loopI 0.0 3.0 $ \i167 -> do
+            let !d167 = fromIntegral i167 :: Double
+            let !s168 = ((s162 + d165) - 1.0)
+            let !s169 = ((s163 + d166) - 1.0)
+            let !s170 = ((s164 + d167) - 1.0)
+            let !s171 = (((((s168 + 131072.0) * 262144.0) + (s169 + 131072.0)) * 262144.0) + (s170 + 131072.0))
+            let !t172 = (((s168 * 7.3856093e7) + (s169 * 1.9349663e7)) + (s170 * 8.3492791e7))
+            let !s173 = (t172 - (t160 * (floorF (t172 / t160))))
+            chkI grid (truncate s173) 0 0
+            t174 <- rdU grid (truncate s173)
+            chkI grid ((truncate s173) + (truncate t160)) 0 0
+            t175 <- rdU grid ((truncate s173) + (truncate t160))
+            loopI t175 t174 $ \i176 -> do
+              let !d176 = fromIntegral i176 :: Double
+              chkI items i176 0 0
+              t177 <- rdU items i176
+              chkI cellOf (truncate t177) 0 0
+              t178 <- rdU cellOf (truncate t177)
+              if (0.5 - (abs (t178 - s171))) > 0 then do
+                if (t177 - d31) > 0 then do
+                  chkI pos (3 * (truncate t177)) 0 2
+                  t179 <- rdU pos (3 * (truncate t177))
+                  t180 <- rdU pos ((3 * (truncate t177)) + 1)
+                  t181 <- rdU pos ((3 * (truncate t177)) + 2)
+                  chkI scalars (6 * (truncate t177)) 2 5
+                  t182 <- rdU scalars ((6 * (truncate t177)) + 5)
+                  t183 <- rdU scalars ((6 * (truncate t177)) + 2)
+                  let !t184 = (t36 + t183)
+                  let !t185 = (s154 + (negate t179))
+                  let !t186 = (t33 + (negate t180))
+                  let !t187 = (s155 + (negate t181))
+                  let !t188 = ((t35 + t182) - (sqrt (((t185 * t185) + (t186 * t186)) + (t187 * t187))))
+                  if (if (t184 - t188) > 0 then t188 else t184) > 0 then do
+                    t189 <- getR v38
+                    chkI near (truncate t189) 0 0
+                    wrU near (truncate t189) t177
+                    setR v38 (t189 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -405,53 +443,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s176 = (t34 + (-2.0))
-    let !t177 = ((abs s176) - 1.0)
-    let !t178 = (if (negate t177) > 0 then 0.0 else t177)
-    if ((t35 + t37) - (sqrt ((t39 * t39) + (t178 * t178)))) > 0 then do
-      t179 <- rdU meta 4
-      t180 <- rdU meta 5
-      let !s181 = (floorF (t32 / t180))
-      let !s182 = (floorF (t33 / t180))
-      let !s183 = (floorF (s176 / t180))
-      loopI 0.0 3.0 $ \i184 -> do
-        let !d184 = fromIntegral i184 :: Double
-        loopI 0.0 3.0 $ \i185 -> do
-          let !d185 = fromIntegral i185 :: Double
-          loopI 0.0 3.0 $ \i186 -> do
-            let !d186 = fromIntegral i186 :: Double
-            let !s187 = ((s181 + d184) - 1.0)
-            let !s188 = ((s182 + d185) - 1.0)
-            let !s189 = ((s183 + d186) - 1.0)
-            let !s190 = (((((s187 + 131072.0) * 262144.0) + (s188 + 131072.0)) * 262144.0) + (s189 + 131072.0))
-            let !t191 = (((s187 * 7.3856093e7) + (s188 * 1.9349663e7)) + (s189 * 8.3492791e7))
-            let !s192 = (t191 - (t179 * (floorF (t191 / t179))))
-            chkI grid (truncate s192) 0 0
-            t193 <- rdU grid (truncate s192)
-            chkI grid ((truncate s192) + (truncate t179)) 0 0
-            t194 <- rdU grid ((truncate s192) + (truncate t179))
-            loopI t194 t193 $ \i195 -> do
-              let !d195 = fromIntegral i195 :: Double
-              chkI items i195 0 0
-              t196 <- rdU items i195
-              chkI cellOf (truncate t196) 0 0
-              t197 <- rdU cellOf (truncate t196)
-              if (0.5 - (abs (t197 - s190))) > 0 then do
-                if (t196 - d31) > 0 then do
-                  chkI pos (3 * (truncate t196)) 0 2
-                  t198 <- rdU pos (3 * (truncate t196))
-                  t199 <- rdU pos ((3 * (truncate t196)) + 1)
-                  t200 <- rdU pos ((3 * (truncate t196)) + 2)
-                  chkI scalars (6 * (truncate t196)) 2 5
-                  t201 <- rdU scalars ((6 * (truncate t196)) + 5)
-                  t202 <- rdU scalars ((6 * (truncate t196)) + 2)
-                  let !t203 = (t36 + t202)
-                  let !t204 = (t32 + (negate t198))
-                  let !t205 = (t33 + (negate t199))
-                  let !t206 = (s176 + (negate t200))
-                  let !t207 = ((t35 + t201) - (sqrt (((t204 * t204) + (t205 * t205)) + (t206 * t206))))
-                  if (if (t203 - t207) > 0 then t207 else t203) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t196 + 1.0) * 64.0) + 28.0) d31 t196 1.0 1.0 1.0 0.0 0.0 (-2.0)
+    t190 <- getR v38
+    loopI 0.0 t190 $ \i191 -> do
+      let !d191 = fromIntegral i191 :: Double
+      chkI near i191 0 0
+      t192 <- rdU near i191
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t192 + 1.0) * 64.0) + 24.0) d31 t192 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
+      pure ()
+    let !s193 = (t34 + (-2.0))
+    setR v38 0.0
+    let !t194 = ((abs s193) - 1.0)
+    let !t195 = (if (negate t194) > 0 then 0.0 else t194)
+    if ((t35 + t37) - (sqrt ((t40 * t40) + (t195 * t195)))) > 0 then do
+      t196 <- rdU meta 4
+      t197 <- rdU meta 5
+      let !s198 = (floorF (t32 / t197))
+      let !s199 = (floorF (t33 / t197))
+      let !s200 = (floorF (s193 / t197))
+      loopI 0.0 3.0 $ \i201 -> do
+        let !d201 = fromIntegral i201 :: Double
+        loopI 0.0 3.0 $ \i202 -> do
+          let !d202 = fromIntegral i202 :: Double
+          loopI 0.0 3.0 $ \i203 -> do
+            let !d203 = fromIntegral i203 :: Double
+            let !s204 = ((s198 + d201) - 1.0)
+            let !s205 = ((s199 + d202) - 1.0)
+            let !s206 = ((s200 + d203) - 1.0)
+            let !s207 = (((((s204 + 131072.0) * 262144.0) + (s205 + 131072.0)) * 262144.0) + (s206 + 131072.0))
+            let !t208 = (((s204 * 7.3856093e7) + (s205 * 1.9349663e7)) + (s206 * 8.3492791e7))
+            let !s209 = (t208 - (t196 * (floorF (t208 / t196))))
+            chkI grid (truncate s209) 0 0
+            t210 <- rdU grid (truncate s209)
+            chkI grid ((truncate s209) + (truncate t196)) 0 0
+            t211 <- rdU grid ((truncate s209) + (truncate t196))
+            loopI t211 t210 $ \i212 -> do
+              let !d212 = fromIntegral i212 :: Double
+              chkI items i212 0 0
+              t213 <- rdU items i212
+              chkI cellOf (truncate t213) 0 0
+              t214 <- rdU cellOf (truncate t213)
+              if (0.5 - (abs (t214 - s207))) > 0 then do
+                if (t213 - d31) > 0 then do
+                  chkI pos (3 * (truncate t213)) 0 2
+                  t215 <- rdU pos (3 * (truncate t213))
+                  t216 <- rdU pos ((3 * (truncate t213)) + 1)
+                  t217 <- rdU pos ((3 * (truncate t213)) + 2)
+                  chkI scalars (6 * (truncate t213)) 2 5
+                  t218 <- rdU scalars ((6 * (truncate t213)) + 5)
+                  t219 <- rdU scalars ((6 * (truncate t213)) + 2)
+                  let !t220 = (t36 + t219)
+                  let !t221 = (t32 + (negate t215))
+                  let !t222 = (t33 + (negate t216))
+                  let !t223 = (s193 + (negate t217))
+                  let !t224 = ((t35 + t218) - (sqrt (((t221 * t221) + (t222 * t222)) + (t223 * t223))))
+                  if (if (t220 - t224) > 0 then t224 else t220) > 0 then do
+                    t225 <- getR v38
+                    chkI near (truncate t225) 0 0
+                    wrU near (truncate t225) t213
+                    setR v38 (t225 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -468,53 +517,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s208 = (t34 + 2.0)
-    let !t209 = ((abs s208) - 1.0)
-    let !t210 = (if (negate t209) > 0 then 0.0 else t209)
-    if ((t35 + t37) - (sqrt ((t39 * t39) + (t210 * t210)))) > 0 then do
-      t211 <- rdU meta 4
-      t212 <- rdU meta 5
-      let !s213 = (floorF (t32 / t212))
-      let !s214 = (floorF (t33 / t212))
-      let !s215 = (floorF (s208 / t212))
-      loopI 0.0 3.0 $ \i216 -> do
-        let !d216 = fromIntegral i216 :: Double
-        loopI 0.0 3.0 $ \i217 -> do
-          let !d217 = fromIntegral i217 :: Double
-          loopI 0.0 3.0 $ \i218 -> do
-            let !d218 = fromIntegral i218 :: Double
-            let !s219 = ((s213 + d216) - 1.0)
-            let !s220 = ((s214 + d217) - 1.0)
-            let !s221 = ((s215 + d218) - 1.0)
-            let !s222 = (((((s219 + 131072.0) * 262144.0) + (s220 + 131072.0)) * 262144.0) + (s221 + 131072.0))
-            let !t223 = (((s219 * 7.3856093e7) + (s220 * 1.9349663e7)) + (s221 * 8.3492791e7))
-            let !s224 = (t223 - (t211 * (floorF (t223 / t211))))
-            chkI grid (truncate s224) 0 0
-            t225 <- rdU grid (truncate s224)
-            chkI grid ((truncate s224) + (truncate t211)) 0 0
-            t226 <- rdU grid ((truncate s224) + (truncate t211))
-            loopI t226 t225 $ \i227 -> do
-              let !d227 = fromIntegral i227 :: Double
-              chkI items i227 0 0
-              t228 <- rdU items i227
-              chkI cellOf (truncate t228) 0 0
-              t229 <- rdU cellOf (truncate t228)
-              if (0.5 - (abs (t229 - s222))) > 0 then do
-                if ((t228 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t228)) 0 2
-                  t230 <- rdU pos (3 * (truncate t228))
-                  t231 <- rdU pos ((3 * (truncate t228)) + 1)
-                  t232 <- rdU pos ((3 * (truncate t228)) + 2)
-                  chkI scalars (6 * (truncate t228)) 2 5
-                  t233 <- rdU scalars ((6 * (truncate t228)) + 5)
-                  t234 <- rdU scalars ((6 * (truncate t228)) + 2)
-                  let !t235 = (t36 + t234)
-                  let !t236 = (t32 + (negate t230))
-                  let !t237 = (t33 + (negate t231))
-                  let !t238 = (s208 + (negate t232))
-                  let !t239 = ((t35 + t233) - (sqrt (((t236 * t236) + (t237 * t237)) + (t238 * t238))))
-                  if (if (t235 - t239) > 0 then t239 else t235) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t228 + 1.0) * 64.0) + 32.0) d31 t228 1.0 1.0 1.0 0.0 0.0 2.0
+    t226 <- getR v38
+    loopI 0.0 t226 $ \i227 -> do
+      let !d227 = fromIntegral i227 :: Double
+      chkI near i227 0 0
+      t228 <- rdU near i227
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t228 + 1.0) * 64.0) + 28.0) d31 t228 1.0 1.0 1.0 0.0 0.0 (-2.0)
+      pure ()
+    let !s229 = (t34 + 2.0)
+    setR v38 0.0
+    let !t230 = ((abs s229) - 1.0)
+    let !t231 = (if (negate t230) > 0 then 0.0 else t230)
+    if ((t35 + t37) - (sqrt ((t40 * t40) + (t231 * t231)))) > 0 then do
+      t232 <- rdU meta 4
+      t233 <- rdU meta 5
+      let !s234 = (floorF (t32 / t233))
+      let !s235 = (floorF (t33 / t233))
+      let !s236 = (floorF (s229 / t233))
+      loopI 0.0 3.0 $ \i237 -> do
+        let !d237 = fromIntegral i237 :: Double
+        loopI 0.0 3.0 $ \i238 -> do
+          let !d238 = fromIntegral i238 :: Double
+          loopI 0.0 3.0 $ \i239 -> do
+            let !d239 = fromIntegral i239 :: Double
+            let !s240 = ((s234 + d237) - 1.0)
+            let !s241 = ((s235 + d238) - 1.0)
+            let !s242 = ((s236 + d239) - 1.0)
+            let !s243 = (((((s240 + 131072.0) * 262144.0) + (s241 + 131072.0)) * 262144.0) + (s242 + 131072.0))
+            let !t244 = (((s240 * 7.3856093e7) + (s241 * 1.9349663e7)) + (s242 * 8.3492791e7))
+            let !s245 = (t244 - (t232 * (floorF (t244 / t232))))
+            chkI grid (truncate s245) 0 0
+            t246 <- rdU grid (truncate s245)
+            chkI grid ((truncate s245) + (truncate t232)) 0 0
+            t247 <- rdU grid ((truncate s245) + (truncate t232))
+            loopI t247 t246 $ \i248 -> do
+              let !d248 = fromIntegral i248 :: Double
+              chkI items i248 0 0
+              t249 <- rdU items i248
+              chkI cellOf (truncate t249) 0 0
+              t250 <- rdU cellOf (truncate t249)
+              if (0.5 - (abs (t250 - s243))) > 0 then do
+                if ((t249 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t249)) 0 2
+                  t251 <- rdU pos (3 * (truncate t249))
+                  t252 <- rdU pos ((3 * (truncate t249)) + 1)
+                  t253 <- rdU pos ((3 * (truncate t249)) + 2)
+                  chkI scalars (6 * (truncate t249)) 2 5
+                  t254 <- rdU scalars ((6 * (truncate t249)) + 5)
+                  t255 <- rdU scalars ((6 * (truncate t249)) + 2)
+                  let !t256 = (t36 + t255)
+                  let !t257 = (t32 + (negate t251))
+                  let !t258 = (t33 + (negate t252))
+                  let !t259 = (s229 + (negate t253))
+                  let !t260 = ((t35 + t254) - (sqrt (((t257 * t257) + (t258 * t258)) + (t259 * t259))))
+                  if (if (t256 - t260) > 0 then t260 else t256) > 0 then do
+                    t261 <- getR v38
+                    chkI near (truncate t261) 0 0
+                    wrU near (truncate t261) t249
+                    setR v38 (t261 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -531,56 +591,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s240 = (t32 + 2.0)
-    let !s241 = s72
-    let !t242 = ((abs s240) - 1.0)
-    let !t243 = (if (negate t242) > 0 then 0.0 else t242)
-    let !t244 = ((abs s241) - 1.0)
-    let !t245 = (if (negate t244) > 0 then 0.0 else t244)
-    if ((t35 + t37) - (sqrt ((t243 * t243) + (t245 * t245)))) > 0 then do
-      t246 <- rdU meta 4
-      t247 <- rdU meta 5
-      let !s248 = (floorF (s240 / t247))
-      let !s249 = (floorF (t33 / t247))
-      let !s250 = (floorF (s241 / t247))
-      loopI 0.0 3.0 $ \i251 -> do
-        let !d251 = fromIntegral i251 :: Double
-        loopI 0.0 3.0 $ \i252 -> do
-          let !d252 = fromIntegral i252 :: Double
-          loopI 0.0 3.0 $ \i253 -> do
-            let !d253 = fromIntegral i253 :: Double
-            let !s254 = ((s248 + d251) - 1.0)
-            let !s255 = ((s249 + d252) - 1.0)
-            let !s256 = ((s250 + d253) - 1.0)
-            let !s257 = (((((s254 + 131072.0) * 262144.0) + (s255 + 131072.0)) * 262144.0) + (s256 + 131072.0))
-            let !t258 = (((s254 * 7.3856093e7) + (s255 * 1.9349663e7)) + (s256 * 8.3492791e7))
-            let !s259 = (t258 - (t246 * (floorF (t258 / t246))))
-            chkI grid (truncate s259) 0 0
-            t260 <- rdU grid (truncate s259)
-            chkI grid ((truncate s259) + (truncate t246)) 0 0
-            t261 <- rdU grid ((truncate s259) + (truncate t246))
-            loopI t261 t260 $ \i262 -> do
-              let !d262 = fromIntegral i262 :: Double
-              chkI items i262 0 0
-              t263 <- rdU items i262
-              chkI cellOf (truncate t263) 0 0
-              t264 <- rdU cellOf (truncate t263)
-              if (0.5 - (abs (t264 - s257))) > 0 then do
-                if ((t263 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t263)) 0 2
-                  t265 <- rdU pos (3 * (truncate t263))
-                  t266 <- rdU pos ((3 * (truncate t263)) + 1)
-                  t267 <- rdU pos ((3 * (truncate t263)) + 2)
-                  chkI scalars (6 * (truncate t263)) 2 5
-                  t268 <- rdU scalars ((6 * (truncate t263)) + 5)
-                  t269 <- rdU scalars ((6 * (truncate t263)) + 2)
-                  let !t270 = (t36 + t269)
-                  let !t271 = (s240 + (negate t265))
-                  let !t272 = (t33 + (negate t266))
-                  let !t273 = (s241 + (negate t267))
-                  let !t274 = ((t35 + t268) - (sqrt (((t271 * t271) + (t272 * t272)) + (t273 * t273))))
-                  if (if (t270 - t274) > 0 then t274 else t270) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t263 + 1.0) * 64.0) + 36.0) d31 t263 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
+    t262 <- getR v38
+    loopI 0.0 t262 $ \i263 -> do
+      let !d263 = fromIntegral i263 :: Double
+      chkI near i263 0 0
+      t264 <- rdU near i263
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t264 + 1.0) * 64.0) + 32.0) d31 t264 1.0 1.0 1.0 0.0 0.0 2.0
+      pure ()
+    let !s265 = (t32 + 2.0)
+    let !s266 = s77
+    setR v38 0.0
+    let !t267 = ((abs s265) - 1.0)
+    let !t268 = (if (negate t267) > 0 then 0.0 else t267)
+    let !t269 = ((abs s266) - 1.0)
+    let !t270 = (if (negate t269) > 0 then 0.0 else t269)
+    if ((t35 + t37) - (sqrt ((t268 * t268) + (t270 * t270)))) > 0 then do
+      t271 <- rdU meta 4
+      t272 <- rdU meta 5
+      let !s273 = (floorF (s265 / t272))
+      let !s274 = (floorF (t33 / t272))
+      let !s275 = (floorF (s266 / t272))
+      loopI 0.0 3.0 $ \i276 -> do
+        let !d276 = fromIntegral i276 :: Double
+        loopI 0.0 3.0 $ \i277 -> do
+          let !d277 = fromIntegral i277 :: Double
+          loopI 0.0 3.0 $ \i278 -> do
+            let !d278 = fromIntegral i278 :: Double
+            let !s279 = ((s273 + d276) - 1.0)
+            let !s280 = ((s274 + d277) - 1.0)
+            let !s281 = ((s275 + d278) - 1.0)
+            let !s282 = (((((s279 + 131072.0) * 262144.0) + (s280 + 131072.0)) * 262144.0) + (s281 + 131072.0))
+            let !t283 = (((s279 * 7.3856093e7) + (s280 * 1.9349663e7)) + (s281 * 8.3492791e7))
+            let !s284 = (t283 - (t271 * (floorF (t283 / t271))))
+            chkI grid (truncate s284) 0 0
+            t285 <- rdU grid (truncate s284)
+            chkI grid ((truncate s284) + (truncate t271)) 0 0
+            t286 <- rdU grid ((truncate s284) + (truncate t271))
+            loopI t286 t285 $ \i287 -> do
+              let !d287 = fromIntegral i287 :: Double
+              chkI items i287 0 0
+              t288 <- rdU items i287
+              chkI cellOf (truncate t288) 0 0
+              t289 <- rdU cellOf (truncate t288)
+              if (0.5 - (abs (t289 - s282))) > 0 then do
+                if ((t288 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t288)) 0 2
+                  t290 <- rdU pos (3 * (truncate t288))
+                  t291 <- rdU pos ((3 * (truncate t288)) + 1)
+                  t292 <- rdU pos ((3 * (truncate t288)) + 2)
+                  chkI scalars (6 * (truncate t288)) 2 5
+                  t293 <- rdU scalars ((6 * (truncate t288)) + 5)
+                  t294 <- rdU scalars ((6 * (truncate t288)) + 2)
+                  let !t295 = (t36 + t294)
+                  let !t296 = (s265 + (negate t290))
+                  let !t297 = (t33 + (negate t291))
+                  let !t298 = (s266 + (negate t292))
+                  let !t299 = ((t35 + t293) - (sqrt (((t296 * t296) + (t297 * t297)) + (t298 * t298))))
+                  if (if (t295 - t299) > 0 then t299 else t295) > 0 then do
+                    t300 <- getR v38
+                    chkI near (truncate t300) 0 0
+                    wrU near (truncate t300) t288
+                    setR v38 (t300 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -597,56 +668,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s275 = s240
-    let !s276 = s107
-    let !t277 = ((abs s275) - 1.0)
-    let !t278 = (if (negate t277) > 0 then 0.0 else t277)
-    let !t279 = ((abs s276) - 1.0)
-    let !t280 = (if (negate t279) > 0 then 0.0 else t279)
-    if ((t35 + t37) - (sqrt ((t278 * t278) + (t280 * t280)))) > 0 then do
-      t281 <- rdU meta 4
-      t282 <- rdU meta 5
-      let !s283 = (floorF (s275 / t282))
-      let !s284 = (floorF (t33 / t282))
-      let !s285 = (floorF (s276 / t282))
-      loopI 0.0 3.0 $ \i286 -> do
-        let !d286 = fromIntegral i286 :: Double
-        loopI 0.0 3.0 $ \i287 -> do
-          let !d287 = fromIntegral i287 :: Double
-          loopI 0.0 3.0 $ \i288 -> do
-            let !d288 = fromIntegral i288 :: Double
-            let !s289 = ((s283 + d286) - 1.0)
-            let !s290 = ((s284 + d287) - 1.0)
-            let !s291 = ((s285 + d288) - 1.0)
-            let !s292 = (((((s289 + 131072.0) * 262144.0) + (s290 + 131072.0)) * 262144.0) + (s291 + 131072.0))
-            let !t293 = (((s289 * 7.3856093e7) + (s290 * 1.9349663e7)) + (s291 * 8.3492791e7))
-            let !s294 = (t293 - (t281 * (floorF (t293 / t281))))
-            chkI grid (truncate s294) 0 0
-            t295 <- rdU grid (truncate s294)
-            chkI grid ((truncate s294) + (truncate t281)) 0 0
-            t296 <- rdU grid ((truncate s294) + (truncate t281))
-            loopI t296 t295 $ \i297 -> do
-              let !d297 = fromIntegral i297 :: Double
-              chkI items i297 0 0
-              t298 <- rdU items i297
-              chkI cellOf (truncate t298) 0 0
-              t299 <- rdU cellOf (truncate t298)
-              if (0.5 - (abs (t299 - s292))) > 0 then do
-                if ((t298 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t298)) 0 2
-                  t300 <- rdU pos (3 * (truncate t298))
-                  t301 <- rdU pos ((3 * (truncate t298)) + 1)
-                  t302 <- rdU pos ((3 * (truncate t298)) + 2)
-                  chkI scalars (6 * (truncate t298)) 2 5
-                  t303 <- rdU scalars ((6 * (truncate t298)) + 5)
-                  t304 <- rdU scalars ((6 * (truncate t298)) + 2)
-                  let !t305 = (t36 + t304)
-                  let !t306 = (s275 + (negate t300))
-                  let !t307 = (t33 + (negate t301))
-                  let !t308 = (s276 + (negate t302))
-                  let !t309 = ((t35 + t303) - (sqrt (((t306 * t306) + (t307 * t307)) + (t308 * t308))))
-                  if (if (t305 - t309) > 0 then t309 else t305) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t298 + 1.0) * 64.0) + 40.0) d31 t298 1.0 1.0 (-1.0) 2.0 0.0 0.0
+    t301 <- getR v38
+    loopI 0.0 t301 $ \i302 -> do
+      let !d302 = fromIntegral i302 :: Double
+      chkI near i302 0 0
+      t303 <- rdU near i302
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t303 + 1.0) * 64.0) + 36.0) d31 t303 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
+      pure ()
+    let !s304 = s265
+    let !s305 = s116
+    setR v38 0.0
+    let !t306 = ((abs s304) - 1.0)
+    let !t307 = (if (negate t306) > 0 then 0.0 else t306)
+    let !t308 = ((abs s305) - 1.0)
+    let !t309 = (if (negate t308) > 0 then 0.0 else t308)
+    if ((t35 + t37) - (sqrt ((t307 * t307) + (t309 * t309)))) > 0 then do
+      t310 <- rdU meta 4
+      t311 <- rdU meta 5
+      let !s312 = (floorF (s304 / t311))
+      let !s313 = (floorF (t33 / t311))
+      let !s314 = (floorF (s305 / t311))
+      loopI 0.0 3.0 $ \i315 -> do
+        let !d315 = fromIntegral i315 :: Double
+        loopI 0.0 3.0 $ \i316 -> do
+          let !d316 = fromIntegral i316 :: Double
+          loopI 0.0 3.0 $ \i317 -> do
+            let !d317 = fromIntegral i317 :: Double
+            let !s318 = ((s312 + d315) - 1.0)
+            let !s319 = ((s313 + d316) - 1.0)
+            let !s320 = ((s314 + d317) - 1.0)
+            let !s321 = (((((s318 + 131072.0) * 262144.0) + (s319 + 131072.0)) * 262144.0) + (s320 + 131072.0))
+            let !t322 = (((s318 * 7.3856093e7) + (s319 * 1.9349663e7)) + (s320 * 8.3492791e7))
+            let !s323 = (t322 - (t310 * (floorF (t322 / t310))))
+            chkI grid (truncate s323) 0 0
+            t324 <- rdU grid (truncate s323)
+            chkI grid ((truncate s323) + (truncate t310)) 0 0
+            t325 <- rdU grid ((truncate s323) + (truncate t310))
+            loopI t325 t324 $ \i326 -> do
+              let !d326 = fromIntegral i326 :: Double
+              chkI items i326 0 0
+              t327 <- rdU items i326
+              chkI cellOf (truncate t327) 0 0
+              t328 <- rdU cellOf (truncate t327)
+              if (0.5 - (abs (t328 - s321))) > 0 then do
+                if ((t327 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t327)) 0 2
+                  t329 <- rdU pos (3 * (truncate t327))
+                  t330 <- rdU pos ((3 * (truncate t327)) + 1)
+                  t331 <- rdU pos ((3 * (truncate t327)) + 2)
+                  chkI scalars (6 * (truncate t327)) 2 5
+                  t332 <- rdU scalars ((6 * (truncate t327)) + 5)
+                  t333 <- rdU scalars ((6 * (truncate t327)) + 2)
+                  let !t334 = (t36 + t333)
+                  let !t335 = (s304 + (negate t329))
+                  let !t336 = (t33 + (negate t330))
+                  let !t337 = (s305 + (negate t331))
+                  let !t338 = ((t35 + t332) - (sqrt (((t335 * t335) + (t336 * t336)) + (t337 * t337))))
+                  if (if (t334 - t338) > 0 then t338 else t334) > 0 then do
+                    t339 <- getR v38
+                    chkI near (truncate t339) 0 0
+                    wrU near (truncate t339) t327
+                    setR v38 (t339 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -663,56 +745,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s310 = s275
-    let !s311 = s142
-    let !t312 = ((abs s310) - 1.0)
-    let !t313 = (if (negate t312) > 0 then 0.0 else t312)
-    let !t314 = ((abs s311) - 1.0)
-    let !t315 = (if (negate t314) > 0 then 0.0 else t314)
-    if ((t35 + t37) - (sqrt ((t313 * t313) + (t315 * t315)))) > 0 then do
-      t316 <- rdU meta 4
-      t317 <- rdU meta 5
-      let !s318 = (floorF (s310 / t317))
-      let !s319 = (floorF (t33 / t317))
-      let !s320 = (floorF (s311 / t317))
-      loopI 0.0 3.0 $ \i321 -> do
-        let !d321 = fromIntegral i321 :: Double
-        loopI 0.0 3.0 $ \i322 -> do
-          let !d322 = fromIntegral i322 :: Double
-          loopI 0.0 3.0 $ \i323 -> do
-            let !d323 = fromIntegral i323 :: Double
-            let !s324 = ((s318 + d321) - 1.0)
-            let !s325 = ((s319 + d322) - 1.0)
-            let !s326 = ((s320 + d323) - 1.0)
-            let !s327 = (((((s324 + 131072.0) * 262144.0) + (s325 + 131072.0)) * 262144.0) + (s326 + 131072.0))
-            let !t328 = (((s324 * 7.3856093e7) + (s325 * 1.9349663e7)) + (s326 * 8.3492791e7))
-            let !s329 = (t328 - (t316 * (floorF (t328 / t316))))
-            chkI grid (truncate s329) 0 0
-            t330 <- rdU grid (truncate s329)
-            chkI grid ((truncate s329) + (truncate t316)) 0 0
-            t331 <- rdU grid ((truncate s329) + (truncate t316))
-            loopI t331 t330 $ \i332 -> do
-              let !d332 = fromIntegral i332 :: Double
-              chkI items i332 0 0
-              t333 <- rdU items i332
-              chkI cellOf (truncate t333) 0 0
-              t334 <- rdU cellOf (truncate t333)
-              if (0.5 - (abs (t334 - s327))) > 0 then do
-                if ((t333 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t333)) 0 2
-                  t335 <- rdU pos (3 * (truncate t333))
-                  t336 <- rdU pos ((3 * (truncate t333)) + 1)
-                  t337 <- rdU pos ((3 * (truncate t333)) + 2)
-                  chkI scalars (6 * (truncate t333)) 2 5
-                  t338 <- rdU scalars ((6 * (truncate t333)) + 5)
-                  t339 <- rdU scalars ((6 * (truncate t333)) + 2)
-                  let !t340 = (t36 + t339)
-                  let !t341 = (s310 + (negate t335))
-                  let !t342 = (t33 + (negate t336))
-                  let !t343 = (s311 + (negate t337))
-                  let !t344 = ((t35 + t338) - (sqrt (((t341 * t341) + (t342 * t342)) + (t343 * t343))))
-                  if (if (t340 - t344) > 0 then t344 else t340) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t333 + 1.0) * 64.0) + 44.0) d31 t333 1.0 1.0 (-1.0) 2.0 0.0 2.0
+    t340 <- getR v38
+    loopI 0.0 t340 $ \i341 -> do
+      let !d341 = fromIntegral i341 :: Double
+      chkI near i341 0 0
+      t342 <- rdU near i341
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t342 + 1.0) * 64.0) + 40.0) d31 t342 1.0 1.0 (-1.0) 2.0 0.0 0.0
+      pure ()
+    let !s343 = s304
+    let !s344 = s155
+    setR v38 0.0
+    let !t345 = ((abs s343) - 1.0)
+    let !t346 = (if (negate t345) > 0 then 0.0 else t345)
+    let !t347 = ((abs s344) - 1.0)
+    let !t348 = (if (negate t347) > 0 then 0.0 else t347)
+    if ((t35 + t37) - (sqrt ((t346 * t346) + (t348 * t348)))) > 0 then do
+      t349 <- rdU meta 4
+      t350 <- rdU meta 5
+      let !s351 = (floorF (s343 / t350))
+      let !s352 = (floorF (t33 / t350))
+      let !s353 = (floorF (s344 / t350))
+      loopI 0.0 3.0 $ \i354 -> do
+        let !d354 = fromIntegral i354 :: Double
+        loopI 0.0 3.0 $ \i355 -> do
+          let !d355 = fromIntegral i355 :: Double
+          loopI 0.0 3.0 $ \i356 -> do
+            let !d356 = fromIntegral i356 :: Double
+            let !s357 = ((s351 + d354) - 1.0)
+            let !s358 = ((s352 + d355) - 1.0)
+            let !s359 = ((s353 + d356) - 1.0)
+            let !s360 = (((((s357 + 131072.0) * 262144.0) + (s358 + 131072.0)) * 262144.0) + (s359 + 131072.0))
+            let !t361 = (((s357 * 7.3856093e7) + (s358 * 1.9349663e7)) + (s359 * 8.3492791e7))
+            let !s362 = (t361 - (t349 * (floorF (t361 / t349))))
+            chkI grid (truncate s362) 0 0
+            t363 <- rdU grid (truncate s362)
+            chkI grid ((truncate s362) + (truncate t349)) 0 0
+            t364 <- rdU grid ((truncate s362) + (truncate t349))
+            loopI t364 t363 $ \i365 -> do
+              let !d365 = fromIntegral i365 :: Double
+              chkI items i365 0 0
+              t366 <- rdU items i365
+              chkI cellOf (truncate t366) 0 0
+              t367 <- rdU cellOf (truncate t366)
+              if (0.5 - (abs (t367 - s360))) > 0 then do
+                if ((t366 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t366)) 0 2
+                  t368 <- rdU pos (3 * (truncate t366))
+                  t369 <- rdU pos ((3 * (truncate t366)) + 1)
+                  t370 <- rdU pos ((3 * (truncate t366)) + 2)
+                  chkI scalars (6 * (truncate t366)) 2 5
+                  t371 <- rdU scalars ((6 * (truncate t366)) + 5)
+                  t372 <- rdU scalars ((6 * (truncate t366)) + 2)
+                  let !t373 = (t36 + t372)
+                  let !t374 = (s343 + (negate t368))
+                  let !t375 = (t33 + (negate t369))
+                  let !t376 = (s344 + (negate t370))
+                  let !t377 = ((t35 + t371) - (sqrt (((t374 * t374) + (t375 * t375)) + (t376 * t376))))
+                  if (if (t373 - t377) > 0 then t377 else t373) > 0 then do
+                    t378 <- getR v38
+                    chkI near (truncate t378) 0 0
+                    wrU near (truncate t378) t366
+                    setR v38 (t378 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -728,134 +821,141 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         pure ()
       pure ()
     else do
+      pure ()
+    t379 <- getR v38
+    loopI 0.0 t379 $ \i380 -> do
+      let !d380 = fromIntegral i380 :: Double
+      chkI near i380 0 0
+      t381 <- rdU near i380
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t381 + 1.0) * 64.0) + 44.0) d31 t381 1.0 1.0 (-1.0) 2.0 0.0 2.0
       pure ()
     chkI verts (291 * i31) 0 2
-    t345 <- rdU verts (291 * i31)
-    t346 <- rdU verts ((291 * i31) + 1)
-    t347 <- rdU verts ((291 * i31) + 2)
-    v348 <- newR 1.0
-    loopI 0.0 24.0 $ \i349 -> do
-      let !d349 = fromIntegral i349 :: Double
-      chkI verts ((291 * i31) + (12 * i349)) 12 14
-      t350 <- rdU verts (((291 * i31) + (12 * i349)) + 12)
-      t351 <- rdU verts (((291 * i31) + (12 * i349)) + 13)
-      t352 <- rdU verts (((291 * i31) + (12 * i349)) + 14)
-      chkI radii ((24 * i31) + i349) 0 0
-      t353 <- rdU radii ((24 * i31) + i349)
-      t354 <- getR v348
-      let !t355 = (t350 + (negate t345))
-      let !t356 = (t351 + (negate t346))
-      let !t357 = (t352 + (negate t347))
-      let !t358 = (if t353 > 0 then ((sqrt (((t355 * t355) + (t356 * t356)) + (t357 * t357))) / t353) else 1.0)
-      setR v348 (if (t354 - t358) > 0 then t358 else t354)
+    t382 <- rdU verts (291 * i31)
+    t383 <- rdU verts ((291 * i31) + 1)
+    t384 <- rdU verts ((291 * i31) + 2)
+    v385 <- newR 1.0
+    loopI 0.0 24.0 $ \i386 -> do
+      let !d386 = fromIntegral i386 :: Double
+      chkI verts ((291 * i31) + (12 * i386)) 12 14
+      t387 <- rdU verts (((291 * i31) + (12 * i386)) + 12)
+      t388 <- rdU verts (((291 * i31) + (12 * i386)) + 13)
+      t389 <- rdU verts (((291 * i31) + (12 * i386)) + 14)
+      chkI radii ((24 * i31) + i386) 0 0
+      t390 <- rdU radii ((24 * i31) + i386)
+      t391 <- getR v385
+      let !t392 = (t387 + (negate t382))
+      let !t393 = (t388 + (negate t383))
+      let !t394 = (t389 + (negate t384))
+      let !t395 = (if t390 > 0 then ((sqrt (((t392 * t392) + (t393 * t393)) + (t394 * t394))) / t390) else 1.0)
+      setR v385 (if (t391 - t395) > 0 then t395 else t391)
       pure ()
-    t359 <- getR v348
-    if (0.8 - t359) > 0 then do
-      v360 <- newR 0.0
-      v361 <- newR 0.0
-      v362 <- newR 0.0
-      v363 <- newR 0.0
-      v364 <- newR 0.0
-      v365 <- newR 0.0
-      v366 <- newR 0.0
-      loopI 0.0 24.0 $ \i367 -> do
-        let !d367 = fromIntegral i367 :: Double
-        chkI radii ((24 * i31) + i367) 0 0
-        t368 <- rdU radii ((24 * i31) + i367)
-        loopI 6.0 12.0 $ \i369 -> do
-          let !d369 = fromIntegral i369 :: Double
-          let !t370 = (d367 + d369)
-          chkI radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0)))))) 0 0
-          t371 <- rdU radii (truncate ((24.0 * d31) + (t370 - (24.0 * (floorF (t370 / 24.0))))))
-          loopI 1.0 4.0 $ \i372 -> do
-            let !d372 = fromIntegral i372 :: Double
-            chkI verts ((291 * i31) + (12 * i367) + (3 * i372)) 0 5
-            t373 <- rdU verts ((291 * i31) + (12 * i367) + (3 * i372))
-            t374 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 1)
-            t375 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 2)
-            t376 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 3)
-            t377 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 4)
-            t378 <- rdU verts (((291 * i31) + (12 * i367) + (3 * i372)) + 5)
-            loopI 1.0 4.0 $ \i379 -> do
-              let !d379 = fromIntegral i379 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0)))) 0 0
-              t380 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 1.0)) 0 0
-              t381 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 2.0)) 0 0
-              t382 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + (d379 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379))) 0 0
-              t383 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 1.0)) 0 0
-              t384 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 2.0)) 0 0
-              t385 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)) + d379)) + 2.0))
-              t386 <- getR v360
-              let !t387 = (negate t380)
-              let !t388 = (t383 + t387)
-              let !t389 = (negate t381)
-              let !t390 = (t384 + t389)
-              let !t391 = (negate t382)
-              let !t392 = (t385 + t391)
-              let !t393 = (((t388 * t388) + (t390 * t390)) + (t392 * t392))
-              let !t394 = (t376 + (negate t373))
-              let !t395 = (t377 + (negate t374))
-              let !t396 = (t378 + (negate t375))
-              let !t397 = (((t394 * t388) + (t395 * t390)) + (t396 * t392))
-              let !t398 = (((t394 * t394) + (t395 * t395)) + (t396 * t396))
-              let !t399 = ((t398 * t393) - (t397 * t397))
-              let !t400 = (t373 + t387)
-              let !t401 = (t374 + t389)
-              let !t402 = (t375 + t391)
-              let !t403 = (((t388 * t400) + (t390 * t401)) + (t392 * t402))
-              let !t404 = (((t394 * t400) + (t395 * t401)) + (t396 * t402))
-              let !t405 = (if ((abs t399) - 1.0e-300) > 0 then (((t397 * t403) - (t404 * t393)) / t399) else 0.0)
-              let !t406 = (if (t405 - 1.0) > 0 then 1.0 else t405)
-              let !t407 = (if (t399 - ((1.0e-12 * t398) * t393)) > 0 then (if (negate t406) > 0 then 0.0 else t406) else 0.0)
-              let !t408 = (if ((abs t393) - 1.0e-300) > 0 then (((t397 * t407) + t403) / t393) else 0.0)
-              let !t409 = ((abs t398) - 1.0e-300)
-              let !t410 = (if t409 > 0 then ((negate t404) / t398) else 0.0)
-              let !t411 = (if (t410 - 1.0) > 0 then 1.0 else t410)
-              let !t412 = (t408 - 1.0)
-              let !t413 = (if t409 > 0 then ((t397 - t404) / t398) else 0.0)
-              let !t414 = (if (t413 - 1.0) > 0 then 1.0 else t413)
-              let !t415 = (if (negate t408) > 0 then (if (negate t411) > 0 then 0.0 else t411) else (if t412 > 0 then (if (negate t414) > 0 then 0.0 else t414) else t407))
-              let !t416 = (if t412 > 0 then 1.0 else t408)
-              let !t417 = (if (negate t416) > 0 then 0.0 else t416)
-              let !t418 = ((0.5 * ((t368 - ((t368 * (d372 + t415)) / 4.0)) + (t371 - ((t371 * (d379 + t417)) / 4.0)))) - t386)
-              let !t419 = ((t373 + (t415 * t394)) + (negate (t380 + (t417 * t388))))
-              let !t420 = ((t374 + (t415 * t395)) + (negate (t381 + (t417 * t390))))
-              let !t421 = ((t375 + (t415 * t396)) + (negate (t382 + (t417 * t392))))
-              let !t422 = ((0.3 * ((if (t371 - t368) > 0 then t368 else t371) / 4.0)) - (sqrt (((t419 * t419) + (t420 * t420)) + (t421 * t421))))
-              if (if (t418 - t422) > 0 then t422 else t418) > 0 then do
-                setR v360 (0.5 * ((t368 - ((t368 * (d372 + t415)) / 4.0)) + (t371 - ((t371 * (d379 + t417)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i367)) 3 5
-                t423 <- rdU verts (((291 * i31) + (12 * i367)) + 3)
-                t424 <- rdU verts (((291 * i31) + (12 * i367)) + 4)
-                t425 <- rdU verts (((291 * i31) + (12 * i367)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0)))) 0 0
-                t426 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t427 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t428 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t370 - (24.0 * (floorF (t370 / 24.0)))) * 4.0))) + 2.0))
-                setR v361 (t373 + (t415 * t394))
-                setR v362 (t374 + (t415 * t395))
-                setR v363 (t375 + (t415 * t396))
-                let !t429 = (negate t345)
-                let !t430 = (t423 + t429)
-                let !t431 = (negate t346)
-                let !t432 = (t424 + t431)
-                let !t433 = (negate t347)
-                let !t434 = (t425 + t433)
-                let !t435 = (sqrt (((t430 * t430) + (t432 * t432)) + (t434 * t434)))
-                let !t436 = (t426 + t429)
-                let !t437 = (t427 + t431)
-                let !t438 = (t428 + t433)
-                let !t439 = (sqrt (((t436 * t436) + (t437 * t437)) + (t438 * t438)))
-                setR v364 (negate (((if t435 > 0 then (recip (if (t435 - 1.0e-300) > 0 then t435 else 1.0e-300)) else 0.0) * t430) + ((if t439 > 0 then (recip (if (t439 - 1.0e-300) > 0 then t439 else 1.0e-300)) else 0.0) * t436)))
-                setR v365 (negate (((if t435 > 0 then (recip (if (t435 - 1.0e-300) > 0 then t435 else 1.0e-300)) else 0.0) * t432) + ((if t439 > 0 then (recip (if (t439 - 1.0e-300) > 0 then t439 else 1.0e-300)) else 0.0) * t437)))
-                setR v366 (negate (((if t435 > 0 then (recip (if (t435 - 1.0e-300) > 0 then t435 else 1.0e-300)) else 0.0) * t434) + ((if t439 > 0 then (recip (if (t439 - 1.0e-300) > 0 then t439 else 1.0e-300)) else 0.0) * t438)))
+    t396 <- getR v385
+    if (0.8 - t396) > 0 then do
+      v397 <- newR 0.0
+      v398 <- newR 0.0
+      v399 <- newR 0.0
+      v400 <- newR 0.0
+      v401 <- newR 0.0
+      v402 <- newR 0.0
+      v403 <- newR 0.0
+      loopI 0.0 24.0 $ \i404 -> do
+        let !d404 = fromIntegral i404 :: Double
+        chkI radii ((24 * i31) + i404) 0 0
+        t405 <- rdU radii ((24 * i31) + i404)
+        loopI 6.0 12.0 $ \i406 -> do
+          let !d406 = fromIntegral i406 :: Double
+          let !t407 = (d404 + d406)
+          chkI radii (truncate ((24.0 * d31) + (t407 - (24.0 * (floorF (t407 / 24.0)))))) 0 0
+          t408 <- rdU radii (truncate ((24.0 * d31) + (t407 - (24.0 * (floorF (t407 / 24.0))))))
+          loopI 1.0 4.0 $ \i409 -> do
+            let !d409 = fromIntegral i409 :: Double
+            chkI verts ((291 * i31) + (12 * i404) + (3 * i409)) 0 5
+            t410 <- rdU verts ((291 * i31) + (12 * i404) + (3 * i409))
+            t411 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 1)
+            t412 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 2)
+            t413 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 3)
+            t414 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 4)
+            t415 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 5)
+            loopI 1.0 4.0 $ \i416 -> do
+              let !d416 = fromIntegral i416 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0)))) 0 0
+              t417 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 1.0)) 0 0
+              t418 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 2.0)) 0 0
+              t419 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416))) 0 0
+              t420 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 1.0)) 0 0
+              t421 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 2.0)) 0 0
+              t422 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 2.0))
+              t423 <- getR v397
+              let !t424 = (negate t417)
+              let !t425 = (t420 + t424)
+              let !t426 = (negate t418)
+              let !t427 = (t421 + t426)
+              let !t428 = (negate t419)
+              let !t429 = (t422 + t428)
+              let !t430 = (((t425 * t425) + (t427 * t427)) + (t429 * t429))
+              let !t431 = (t413 + (negate t410))
+              let !t432 = (t414 + (negate t411))
+              let !t433 = (t415 + (negate t412))
+              let !t434 = (((t431 * t425) + (t432 * t427)) + (t433 * t429))
+              let !t435 = (((t431 * t431) + (t432 * t432)) + (t433 * t433))
+              let !t436 = ((t435 * t430) - (t434 * t434))
+              let !t437 = (t410 + t424)
+              let !t438 = (t411 + t426)
+              let !t439 = (t412 + t428)
+              let !t440 = (((t425 * t437) + (t427 * t438)) + (t429 * t439))
+              let !t441 = (((t431 * t437) + (t432 * t438)) + (t433 * t439))
+              let !t442 = (if ((abs t436) - 1.0e-300) > 0 then (((t434 * t440) - (t441 * t430)) / t436) else 0.0)
+              let !t443 = (if (t442 - 1.0) > 0 then 1.0 else t442)
+              let !t444 = (if (t436 - ((1.0e-12 * t435) * t430)) > 0 then (if (negate t443) > 0 then 0.0 else t443) else 0.0)
+              let !t445 = (if ((abs t430) - 1.0e-300) > 0 then (((t434 * t444) + t440) / t430) else 0.0)
+              let !t446 = ((abs t435) - 1.0e-300)
+              let !t447 = (if t446 > 0 then ((negate t441) / t435) else 0.0)
+              let !t448 = (if (t447 - 1.0) > 0 then 1.0 else t447)
+              let !t449 = (t445 - 1.0)
+              let !t450 = (if t446 > 0 then ((t434 - t441) / t435) else 0.0)
+              let !t451 = (if (t450 - 1.0) > 0 then 1.0 else t450)
+              let !t452 = (if (negate t445) > 0 then (if (negate t448) > 0 then 0.0 else t448) else (if t449 > 0 then (if (negate t451) > 0 then 0.0 else t451) else t444))
+              let !t453 = (if t449 > 0 then 1.0 else t445)
+              let !t454 = (if (negate t453) > 0 then 0.0 else t453)
+              let !t455 = ((0.5 * ((t405 - ((t405 * (d409 + t452)) / 4.0)) + (t408 - ((t408 * (d416 + t454)) / 4.0)))) - t423)
+              let !t456 = ((t410 + (t452 * t431)) + (negate (t417 + (t454 * t425))))
+              let !t457 = ((t411 + (t452 * t432)) + (negate (t418 + (t454 * t427))))
+              let !t458 = ((t412 + (t452 * t433)) + (negate (t419 + (t454 * t429))))
+              let !t459 = ((0.3 * ((if (t408 - t405) > 0 then t405 else t408) / 4.0)) - (sqrt (((t456 * t456) + (t457 * t457)) + (t458 * t458))))
+              if (if (t455 - t459) > 0 then t459 else t455) > 0 then do
+                setR v397 (0.5 * ((t405 - ((t405 * (d409 + t452)) / 4.0)) + (t408 - ((t408 * (d416 + t454)) / 4.0))))
+                chkI verts ((291 * i31) + (12 * i404)) 3 5
+                t460 <- rdU verts (((291 * i31) + (12 * i404)) + 3)
+                t461 <- rdU verts (((291 * i31) + (12 * i404)) + 4)
+                t462 <- rdU verts (((291 * i31) + (12 * i404)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)))) 0 0
+                t463 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t464 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t465 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 2.0))
+                setR v398 (t410 + (t452 * t431))
+                setR v399 (t411 + (t452 * t432))
+                setR v400 (t412 + (t452 * t433))
+                let !t466 = (negate t382)
+                let !t467 = (t460 + t466)
+                let !t468 = (negate t383)
+                let !t469 = (t461 + t468)
+                let !t470 = (negate t384)
+                let !t471 = (t462 + t470)
+                let !t472 = (sqrt (((t467 * t467) + (t469 * t469)) + (t471 * t471)))
+                let !t473 = (t463 + t466)
+                let !t474 = (t464 + t468)
+                let !t475 = (t465 + t470)
+                let !t476 = (sqrt (((t473 * t473) + (t474 * t474)) + (t475 * t475)))
+                setR v401 (negate (((if t472 > 0 then (recip (if (t472 - 1.0e-300) > 0 then t472 else 1.0e-300)) else 0.0) * t467) + ((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t473)))
+                setR v402 (negate (((if t472 > 0 then (recip (if (t472 - 1.0e-300) > 0 then t472 else 1.0e-300)) else 0.0) * t469) + ((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t474)))
+                setR v403 (negate (((if t472 > 0 then (recip (if (t472 - 1.0e-300) > 0 then t472 else 1.0e-300)) else 0.0) * t471) + ((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t475)))
                 pure ()
               else do
                 pure ()
@@ -863,112 +963,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t440 <- getR v360
-      if t440 > 0 then do
-        t441 <- getR v361
-        t442 <- getR v362
-        t443 <- getR v363
-        t444 <- getR v364
-        t445 <- getR v365
-        t446 <- getR v366
-        let !t447 = (t445 + (negate t445))
-        let !t448 = (sqrt (((t444 * t444) + (t447 * t447)) + (t446 * t446)))
-        let !t449 = (if t448 > 0 then (recip (if (t448 - 1.0e-300) > 0 then t448 else 1.0e-300)) else 0.0)
-        let !s450 = (t449 * t444)
-        let !s451 = (t449 * t447)
-        let !s452 = (t449 * t446)
-        t453 <- rdU meta 2
-        t454 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t454) > 0 then 1.0 else t454)) - t453) - 0.5) > 0 then do
-          wrU meta 2 (t453 + 1.0)
-          t455 <- rdU pos (3 * i31)
-          t456 <- rdU pos ((3 * i31) + 1)
-          t457 <- rdU pos ((3 * i31) + 2)
+      t477 <- getR v397
+      if t477 > 0 then do
+        t478 <- getR v398
+        t479 <- getR v399
+        t480 <- getR v400
+        t481 <- getR v401
+        t482 <- getR v402
+        t483 <- getR v403
+        let !t484 = (t482 + (negate t482))
+        let !t485 = (sqrt (((t481 * t481) + (t484 * t484)) + (t483 * t483)))
+        let !t486 = (if t485 > 0 then (recip (if (t485 - 1.0e-300) > 0 then t485 else 1.0e-300)) else 0.0)
+        let !s487 = (t486 * t481)
+        let !s488 = (t486 * t484)
+        let !s489 = (t486 * t483)
+        t490 <- rdU meta 2
+        t491 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t491) > 0 then 1.0 else t491)) - t490) - 0.5) > 0 then do
+          wrU meta 2 (t490 + 1.0)
+          t492 <- rdU pos (3 * i31)
+          t493 <- rdU pos ((3 * i31) + 1)
+          t494 <- rdU pos ((3 * i31) + 2)
           chkI normal (3 * i31) 0 2
-          t458 <- rdU normal (3 * i31)
-          t459 <- rdU normal ((3 * i31) + 1)
-          t460 <- rdU normal ((3 * i31) + 2)
+          t495 <- rdU normal (3 * i31)
+          t496 <- rdU normal ((3 * i31) + 1)
+          t497 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t461 <- rdU axis (3 * i31)
-          t462 <- rdU axis ((3 * i31) + 1)
-          t463 <- rdU axis ((3 * i31) + 2)
-          let !s464 = ((t459 * t463) - (t460 * t462))
-          let !s465 = ((t460 * t461) - (t458 * t463))
-          let !s466 = ((t458 * t462) - (t459 * t461))
+          t498 <- rdU axis (3 * i31)
+          t499 <- rdU axis ((3 * i31) + 1)
+          t500 <- rdU axis ((3 * i31) + 2)
+          let !s501 = ((t496 * t500) - (t497 * t499))
+          let !s502 = ((t497 * t498) - (t495 * t500))
+          let !s503 = ((t495 * t499) - (t496 * t498))
           chkI scalars (6 * i31) 0 0
-          t467 <- rdU scalars (6 * i31)
-          t468 <- rdU scalars ((6 * i31) + 5)
-          t469 <- rdU scalars ((6 * i31) + 2)
-          t470 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t453)) 0 29
-          wrU contacts (30 * (truncate t453)) d31
-          wrU contacts ((30 * (truncate t453)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t453)) + 2) d31
-          wrU contacts ((30 * (truncate t453)) + 3) 12.0
-          wrU contacts ((30 * (truncate t453)) + 4) (s450 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t458)))
-          wrU contacts ((30 * (truncate t453)) + 5) (s451 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t459)))
-          wrU contacts ((30 * (truncate t453)) + 6) (s452 + (negate ((((t458 * s450) + (t459 * s451)) + (t460 * s452)) * t460)))
-          wrU contacts ((30 * (truncate t453)) + 7) 0.0
-          wrU contacts ((30 * (truncate t453)) + 12) 0.0
-          wrU contacts ((30 * (truncate t453)) + 13) 0.0
-          wrU contacts ((30 * (truncate t453)) + 14) 0.0
-          wrU contacts ((30 * (truncate t453)) + 15) 0.0
-          wrU contacts ((30 * (truncate t453)) + 20) t440
-          wrU contacts ((30 * (truncate t453)) + 26) 0.6
-          wrU contacts ((30 * (truncate t453)) + 27) t441
-          wrU contacts ((30 * (truncate t453)) + 28) t442
-          wrU contacts ((30 * (truncate t453)) + 29) t443
+          t504 <- rdU scalars (6 * i31)
+          t505 <- rdU scalars ((6 * i31) + 5)
+          t506 <- rdU scalars ((6 * i31) + 2)
+          t507 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t490)) 0 29
+          wrU contacts (30 * (truncate t490)) d31
+          wrU contacts ((30 * (truncate t490)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t490)) + 2) d31
+          wrU contacts ((30 * (truncate t490)) + 3) 12.0
+          wrU contacts ((30 * (truncate t490)) + 4) (s487 + (negate ((((t495 * s487) + (t496 * s488)) + (t497 * s489)) * t495)))
+          wrU contacts ((30 * (truncate t490)) + 5) (s488 + (negate ((((t495 * s487) + (t496 * s488)) + (t497 * s489)) * t496)))
+          wrU contacts ((30 * (truncate t490)) + 6) (s489 + (negate ((((t495 * s487) + (t496 * s488)) + (t497 * s489)) * t497)))
+          wrU contacts ((30 * (truncate t490)) + 7) 0.0
+          wrU contacts ((30 * (truncate t490)) + 12) 0.0
+          wrU contacts ((30 * (truncate t490)) + 13) 0.0
+          wrU contacts ((30 * (truncate t490)) + 14) 0.0
+          wrU contacts ((30 * (truncate t490)) + 15) 0.0
+          wrU contacts ((30 * (truncate t490)) + 20) t477
+          wrU contacts ((30 * (truncate t490)) + 26) 0.6
+          wrU contacts ((30 * (truncate t490)) + 27) t478
+          wrU contacts ((30 * (truncate t490)) + 28) t479
+          wrU contacts ((30 * (truncate t490)) + 29) t480
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t471 <- rdU pos (-3)
-            t472 <- rdU pos (-2)
-            t473 <- rdU pos (-1)
+            t508 <- rdU pos (-3)
+            t509 <- rdU pos (-2)
+            t510 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t474 <- rdU normal (-3)
-            t475 <- rdU normal (-2)
-            t476 <- rdU normal (-1)
+            t511 <- rdU normal (-3)
+            t512 <- rdU normal (-2)
+            t513 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t477 <- rdU axis (-3)
-            t478 <- rdU axis (-2)
-            t479 <- rdU axis (-1)
-            let !s480 = ((t475 * t479) - (t476 * t478))
-            let !s481 = ((t476 * t477) - (t474 * t479))
-            let !s482 = ((t474 * t478) - (t475 * t477))
+            t514 <- rdU axis (-3)
+            t515 <- rdU axis (-2)
+            t516 <- rdU axis (-1)
+            let !s517 = ((t512 * t516) - (t513 * t515))
+            let !s518 = ((t513 * t514) - (t511 * t516))
+            let !s519 = ((t511 * t515) - (t512 * t514))
             chkI scalars 0 (-6) (-1)
-            t483 <- rdU scalars (-6)
-            t484 <- rdU scalars (-1)
-            t485 <- rdU scalars (-4)
-            t486 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t453)) + 8) (s450 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t474)))
-            wrU contacts ((30 * (truncate t453)) + 9) (s451 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t475)))
-            wrU contacts ((30 * (truncate t453)) + 10) (s452 + (negate ((((t474 * s450) + (t475 * s451)) + (t476 * s452)) * t476)))
-            let !t487 = (t442 + (negate t472))
-            let !t488 = (t443 + (negate t473))
-            let !t489 = (t441 + (negate t471))
-            wrU contacts ((30 * (truncate t453)) + 11) (((((t487 * s452) - (t488 * s451)) * t474) + (((t488 * s450) - (t489 * s452)) * t475)) + (((t489 * s451) - (t487 * s450)) * t476))
-            let !t490 = ((t459 * s452) - (t460 * s451))
-            wrU contacts ((30 * (truncate t453)) + 16) (t490 + (negate ((((t474 * t490) + (t475 * ((t460 * s450) - (t458 * s452)))) + (t476 * ((t458 * s451) - (t459 * s450)))) * t474)))
-            let !t491 = ((t460 * s450) - (t458 * s452))
-            wrU contacts ((30 * (truncate t453)) + 17) (t491 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * ((t458 * s451) - (t459 * s450)))) * t475)))
-            let !t492 = ((t458 * s451) - (t459 * s450))
-            wrU contacts ((30 * (truncate t453)) + 18) (t492 + (negate ((((t474 * t490) + (t475 * t491)) + (t476 * t492)) * t476)))
-            wrU contacts ((30 * (truncate t453)) + 19) (((((t487 * t492) - (t488 * t491)) * t474) + (((t488 * t490) - (t489 * t492)) * t475)) + (((t489 * t491) - (t487 * t490)) * t476))
+            t520 <- rdU scalars (-6)
+            t521 <- rdU scalars (-1)
+            t522 <- rdU scalars (-4)
+            t523 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t490)) + 8) (s487 + (negate ((((t511 * s487) + (t512 * s488)) + (t513 * s489)) * t511)))
+            wrU contacts ((30 * (truncate t490)) + 9) (s488 + (negate ((((t511 * s487) + (t512 * s488)) + (t513 * s489)) * t512)))
+            wrU contacts ((30 * (truncate t490)) + 10) (s489 + (negate ((((t511 * s487) + (t512 * s488)) + (t513 * s489)) * t513)))
+            let !t524 = (t479 + (negate t509))
+            let !t525 = (t480 + (negate t510))
+            let !t526 = (t478 + (negate t508))
+            wrU contacts ((30 * (truncate t490)) + 11) (((((t524 * s489) - (t525 * s488)) * t511) + (((t525 * s487) - (t526 * s489)) * t512)) + (((t526 * s488) - (t524 * s487)) * t513))
+            let !t527 = ((t496 * s489) - (t497 * s488))
+            wrU contacts ((30 * (truncate t490)) + 16) (t527 + (negate ((((t511 * t527) + (t512 * ((t497 * s487) - (t495 * s489)))) + (t513 * ((t495 * s488) - (t496 * s487)))) * t511)))
+            let !t528 = ((t497 * s487) - (t495 * s489))
+            wrU contacts ((30 * (truncate t490)) + 17) (t528 + (negate ((((t511 * t527) + (t512 * t528)) + (t513 * ((t495 * s488) - (t496 * s487)))) * t512)))
+            let !t529 = ((t495 * s488) - (t496 * s487))
+            wrU contacts ((30 * (truncate t490)) + 18) (t529 + (negate ((((t511 * t527) + (t512 * t528)) + (t513 * t529)) * t513)))
+            wrU contacts ((30 * (truncate t490)) + 19) (((((t524 * t529) - (t525 * t528)) * t511) + (((t525 * t527) - (t526 * t529)) * t512)) + (((t526 * t528) - (t524 * t527)) * t513))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t453)) + 8) 0.0
-            wrU contacts ((30 * (truncate t453)) + 9) 0.0
-            wrU contacts ((30 * (truncate t453)) + 10) 0.0
-            wrU contacts ((30 * (truncate t453)) + 11) 0.0
-            wrU contacts ((30 * (truncate t453)) + 16) 0.0
-            wrU contacts ((30 * (truncate t453)) + 17) 0.0
-            wrU contacts ((30 * (truncate t453)) + 18) 0.0
-            wrU contacts ((30 * (truncate t453)) + 19) 0.0
+            wrU contacts ((30 * (truncate t490)) + 8) 0.0
+            wrU contacts ((30 * (truncate t490)) + 9) 0.0
+            wrU contacts ((30 * (truncate t490)) + 10) 0.0
+            wrU contacts ((30 * (truncate t490)) + 11) 0.0
+            wrU contacts ((30 * (truncate t490)) + 16) 0.0
+            wrU contacts ((30 * (truncate t490)) + 17) 0.0
+            wrU contacts ((30 * (truncate t490)) + 18) 0.0
+            wrU contacts ((30 * (truncate t490)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t493 <- rdU meta 6
-          wrU meta 6 (t493 + 1.0)
+          t530 <- rdU meta 6
+          wrU meta 6 (t530 + 1.0)
           pure ()
         pure ()
       else do
@@ -979,8 +1079,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1775,8 +1875,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1912,8 +2012,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "flat-torus" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, 0.0];\n}\n\nquotient Lattice {latticePeriod = 2.0, latticeFlip = False}\nbounds 2.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.FlatTorus: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -67,8 +67,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -143,54 +143,59 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    let !t38 = ((abs t32) - 1.0)
-    let !t39 = (if (negate t38) > 0 then 0.0 else t38)
-    let !t40 = ((abs t34) - 1.0)
-    let !t41 = (if (negate t40) > 0 then 0.0 else t40)
-    if ((t35 + t37) - (sqrt ((t39 * t39) + (t41 * t41)))) > 0 then do
-      t42 <- rdU meta 4
-      t43 <- rdU meta 5
-      let !s44 = (floorF (t32 / t43))
-      let !s45 = (floorF (t33 / t43))
-      let !s46 = (floorF (t34 / t43))
-      loopI 0.0 3.0 $ \i47 -> do
-        let !d47 = fromIntegral i47 :: Double
-        loopI 0.0 3.0 $ \i48 -> do
-          let !d48 = fromIntegral i48 :: Double
-          loopI 0.0 3.0 $ \i49 -> do
-            let !d49 = fromIntegral i49 :: Double
-            let !s50 = ((s44 + d47) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    let !t39 = ((abs t32) - 1.0)
+    let !t40 = (if (negate t39) > 0 then 0.0 else t39)
+    let !t41 = ((abs t34) - 1.0)
+    let !t42 = (if (negate t41) > 0 then 0.0 else t41)
+    if ((t35 + t37) - (sqrt ((t40 * t40) + (t42 * t42)))) > 0 then do
+      t43 <- rdU meta 4
+      t44 <- rdU meta 5
+      let !s45 = (floorF (t32 / t44))
+      let !s46 = (floorF (t33 / t44))
+      let !s47 = (floorF (t34 / t44))
+      loopI 0.0 3.0 $ \i48 -> do
+        let !d48 = fromIntegral i48 :: Double
+        loopI 0.0 3.0 $ \i49 -> do
+          let !d49 = fromIntegral i49 :: Double
+          loopI 0.0 3.0 $ \i50 -> do
+            let !d50 = fromIntegral i50 :: Double
             let !s51 = ((s45 + d48) - 1.0)
             let !s52 = ((s46 + d49) - 1.0)
-            let !s53 = (((((s50 + 131072.0) * 262144.0) + (s51 + 131072.0)) * 262144.0) + (s52 + 131072.0))
-            let !t54 = (((s50 * 7.3856093e7) + (s51 * 1.9349663e7)) + (s52 * 8.3492791e7))
-            let !s55 = (t54 - (t42 * (floorF (t54 / t42))))
-            chkI grid (truncate s55) 0 0
-            t56 <- rdU grid (truncate s55)
-            chkI grid ((truncate s55) + (truncate t42)) 0 0
-            t57 <- rdU grid ((truncate s55) + (truncate t42))
-            loopI t57 t56 $ \i58 -> do
-              let !d58 = fromIntegral i58 :: Double
-              chkI items i58 0 0
-              t59 <- rdU items i58
-              chkI cellOf (truncate t59) 0 0
-              t60 <- rdU cellOf (truncate t59)
-              if (0.5 - (abs (t60 - s53))) > 0 then do
-                if (t59 - d31) > 0 then do
-                  chkI pos (3 * (truncate t59)) 0 2
-                  t61 <- rdU pos (3 * (truncate t59))
-                  t62 <- rdU pos ((3 * (truncate t59)) + 1)
-                  t63 <- rdU pos ((3 * (truncate t59)) + 2)
-                  chkI scalars (6 * (truncate t59)) 2 5
-                  t64 <- rdU scalars ((6 * (truncate t59)) + 5)
-                  t65 <- rdU scalars ((6 * (truncate t59)) + 2)
-                  let !t66 = (t36 + t65)
-                  let !t67 = (t32 + (negate t61))
-                  let !t68 = (t33 + (negate t62))
-                  let !t69 = (t34 + (negate t63))
-                  let !t70 = ((t35 + t64) - (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69))))
-                  if (if (t66 - t70) > 0 then t70 else t66) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t59 + 1.0) * 64.0) d31 t59 1.0 1.0 1.0 0.0 0.0 0.0
+            let !s53 = ((s47 + d50) - 1.0)
+            let !s54 = (((((s51 + 131072.0) * 262144.0) + (s52 + 131072.0)) * 262144.0) + (s53 + 131072.0))
+            let !t55 = (((s51 * 7.3856093e7) + (s52 * 1.9349663e7)) + (s53 * 8.3492791e7))
+            let !s56 = (t55 - (t43 * (floorF (t55 / t43))))
+            chkI grid (truncate s56) 0 0
+            t57 <- rdU grid (truncate s56)
+            chkI grid ((truncate s56) + (truncate t43)) 0 0
+            t58 <- rdU grid ((truncate s56) + (truncate t43))
+            loopI t58 t57 $ \i59 -> do
+              let !d59 = fromIntegral i59 :: Double
+              chkI items i59 0 0
+              t60 <- rdU items i59
+              chkI cellOf (truncate t60) 0 0
+              t61 <- rdU cellOf (truncate t60)
+              if (0.5 - (abs (t61 - s54))) > 0 then do
+                if (t60 - d31) > 0 then do
+                  chkI pos (3 * (truncate t60)) 0 2
+                  t62 <- rdU pos (3 * (truncate t60))
+                  t63 <- rdU pos ((3 * (truncate t60)) + 1)
+                  t64 <- rdU pos ((3 * (truncate t60)) + 2)
+                  chkI scalars (6 * (truncate t60)) 2 5
+                  t65 <- rdU scalars ((6 * (truncate t60)) + 5)
+                  t66 <- rdU scalars ((6 * (truncate t60)) + 2)
+                  let !t67 = (t36 + t66)
+                  let !t68 = (t32 + (negate t62))
+                  let !t69 = (t33 + (negate t63))
+                  let !t70 = (t34 + (negate t64))
+                  let !t71 = ((t35 + t65) - (sqrt (((t68 * t68) + (t69 * t69)) + (t70 * t70))))
+                  if (if (t67 - t71) > 0 then t71 else t67) > 0 then do
+                    t72 <- getR v38
+                    chkI near (truncate t72) 0 0
+                    wrU near (truncate t72) t60
+                    setR v38 (t72 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -207,56 +212,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s71 = (t32 + (-2.0))
-    let !s72 = (t34 + (-2.0))
-    let !t73 = ((abs s71) - 1.0)
-    let !t74 = (if (negate t73) > 0 then 0.0 else t73)
-    let !t75 = ((abs s72) - 1.0)
-    let !t76 = (if (negate t75) > 0 then 0.0 else t75)
-    if ((t35 + t37) - (sqrt ((t74 * t74) + (t76 * t76)))) > 0 then do
-      t77 <- rdU meta 4
-      t78 <- rdU meta 5
-      let !s79 = (floorF (s71 / t78))
-      let !s80 = (floorF (t33 / t78))
-      let !s81 = (floorF (s72 / t78))
-      loopI 0.0 3.0 $ \i82 -> do
-        let !d82 = fromIntegral i82 :: Double
-        loopI 0.0 3.0 $ \i83 -> do
-          let !d83 = fromIntegral i83 :: Double
-          loopI 0.0 3.0 $ \i84 -> do
-            let !d84 = fromIntegral i84 :: Double
-            let !s85 = ((s79 + d82) - 1.0)
-            let !s86 = ((s80 + d83) - 1.0)
-            let !s87 = ((s81 + d84) - 1.0)
-            let !s88 = (((((s85 + 131072.0) * 262144.0) + (s86 + 131072.0)) * 262144.0) + (s87 + 131072.0))
-            let !t89 = (((s85 * 7.3856093e7) + (s86 * 1.9349663e7)) + (s87 * 8.3492791e7))
-            let !s90 = (t89 - (t77 * (floorF (t89 / t77))))
-            chkI grid (truncate s90) 0 0
-            t91 <- rdU grid (truncate s90)
-            chkI grid ((truncate s90) + (truncate t77)) 0 0
-            t92 <- rdU grid ((truncate s90) + (truncate t77))
-            loopI t92 t91 $ \i93 -> do
-              let !d93 = fromIntegral i93 :: Double
-              chkI items i93 0 0
-              t94 <- rdU items i93
-              chkI cellOf (truncate t94) 0 0
-              t95 <- rdU cellOf (truncate t94)
-              if (0.5 - (abs (t95 - s88))) > 0 then do
-                if (t94 - d31) > 0 then do
-                  chkI pos (3 * (truncate t94)) 0 2
-                  t96 <- rdU pos (3 * (truncate t94))
-                  t97 <- rdU pos ((3 * (truncate t94)) + 1)
-                  t98 <- rdU pos ((3 * (truncate t94)) + 2)
-                  chkI scalars (6 * (truncate t94)) 2 5
-                  t99 <- rdU scalars ((6 * (truncate t94)) + 5)
-                  t100 <- rdU scalars ((6 * (truncate t94)) + 2)
-                  let !t101 = (t36 + t100)
-                  let !t102 = (s71 + (negate t96))
-                  let !t103 = (t33 + (negate t97))
-                  let !t104 = (s72 + (negate t98))
-                  let !t105 = ((t35 + t99) - (sqrt (((t102 * t102) + (t103 * t103)) + (t104 * t104))))
-                  if (if (t101 - t105) > 0 then t105 else t101) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t94 + 1.0) * 64.0) + 16.0) d31 t94 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
+    t73 <- getR v38
+    loopI 0.0 t73 $ \i74 -> do
+      let !d74 = fromIntegral i74 :: Double
+      chkI near i74 0 0
+      t75 <- rdU near i74
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t75 + 1.0) * 64.0) d31 t75 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
+    let !s76 = (t32 + (-2.0))
+    let !s77 = (t34 + (-2.0))
+    setR v38 0.0
+    let !t78 = ((abs s76) - 1.0)
+    let !t79 = (if (negate t78) > 0 then 0.0 else t78)
+    let !t80 = ((abs s77) - 1.0)
+    let !t81 = (if (negate t80) > 0 then 0.0 else t80)
+    if ((t35 + t37) - (sqrt ((t79 * t79) + (t81 * t81)))) > 0 then do
+      t82 <- rdU meta 4
+      t83 <- rdU meta 5
+      let !s84 = (floorF (s76 / t83))
+      let !s85 = (floorF (t33 / t83))
+      let !s86 = (floorF (s77 / t83))
+      loopI 0.0 3.0 $ \i87 -> do
+        let !d87 = fromIntegral i87 :: Double
+        loopI 0.0 3.0 $ \i88 -> do
+          let !d88 = fromIntegral i88 :: Double
+          loopI 0.0 3.0 $ \i89 -> do
+            let !d89 = fromIntegral i89 :: Double
+            let !s90 = ((s84 + d87) - 1.0)
+            let !s91 = ((s85 + d88) - 1.0)
+            let !s92 = ((s86 + d89) - 1.0)
+            let !s93 = (((((s90 + 131072.0) * 262144.0) + (s91 + 131072.0)) * 262144.0) + (s92 + 131072.0))
+            let !t94 = (((s90 * 7.3856093e7) + (s91 * 1.9349663e7)) + (s92 * 8.3492791e7))
+            let !s95 = (t94 - (t82 * (floorF (t94 / t82))))
+            chkI grid (truncate s95) 0 0
+            t96 <- rdU grid (truncate s95)
+            chkI grid ((truncate s95) + (truncate t82)) 0 0
+            t97 <- rdU grid ((truncate s95) + (truncate t82))
+            loopI t97 t96 $ \i98 -> do
+              let !d98 = fromIntegral i98 :: Double
+              chkI items i98 0 0
+              t99 <- rdU items i98
+              chkI cellOf (truncate t99) 0 0
+              t100 <- rdU cellOf (truncate t99)
+              if (0.5 - (abs (t100 - s93))) > 0 then do
+                if (t99 - d31) > 0 then do
+                  chkI pos (3 * (truncate t99)) 0 2
+                  t101 <- rdU pos (3 * (truncate t99))
+                  t102 <- rdU pos ((3 * (truncate t99)) + 1)
+                  t103 <- rdU pos ((3 * (truncate t99)) + 2)
+                  chkI scalars (6 * (truncate t99)) 2 5
+                  t104 <- rdU scalars ((6 * (truncate t99)) + 5)
+                  t105 <- rdU scalars ((6 * (truncate t99)) + 2)
+                  let !t106 = (t36 + t105)
+                  let !t107 = (s76 + (negate t101))
+                  let !t108 = (t33 + (negate t102))
+                  let !t109 = (s77 + (negate t103))
+                  let !t110 = ((t35 + t104) - (sqrt (((t107 * t107) + (t108 * t108)) + (t109 * t109))))
+                  if (if (t106 - t110) > 0 then t110 else t106) > 0 then do
+                    t111 <- getR v38
+                    chkI near (truncate t111) 0 0
+                    wrU near (truncate t111) t99
+                    setR v38 (t111 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -273,53 +289,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s106 = s71
-    let !t107 = ((abs s106) - 1.0)
-    let !t108 = (if (negate t107) > 0 then 0.0 else t107)
-    if ((t35 + t37) - (sqrt ((t108 * t108) + (t41 * t41)))) > 0 then do
-      t109 <- rdU meta 4
-      t110 <- rdU meta 5
-      let !s111 = (floorF (s106 / t110))
-      let !s112 = (floorF (t33 / t110))
-      let !s113 = (floorF (t34 / t110))
-      loopI 0.0 3.0 $ \i114 -> do
-        let !d114 = fromIntegral i114 :: Double
-        loopI 0.0 3.0 $ \i115 -> do
-          let !d115 = fromIntegral i115 :: Double
-          loopI 0.0 3.0 $ \i116 -> do
-            let !d116 = fromIntegral i116 :: Double
-            let !s117 = ((s111 + d114) - 1.0)
-            let !s118 = ((s112 + d115) - 1.0)
-            let !s119 = ((s113 + d116) - 1.0)
-            let !s120 = (((((s117 + 131072.0) * 262144.0) + (s118 + 131072.0)) * 262144.0) + (s119 + 131072.0))
-            let !t121 = (((s117 * 7.3856093e7) + (s118 * 1.9349663e7)) + (s119 * 8.3492791e7))
-            let !s122 = (t121 - (t109 * (floorF (t121 / t109))))
-            chkI grid (truncate s122) 0 0
-            t123 <- rdU grid (truncate s122)
-            chkI grid ((truncate s122) + (truncate t109)) 0 0
-            t124 <- rdU grid ((truncate s122) + (truncate t109))
-            loopI t124 t123 $ \i125 -> do
-              let !d125 = fromIntegral i125 :: Double
-              chkI items i125 0 0
-              t126 <- rdU items i125
-              chkI cellOf (truncate t126) 0 0
-              t127 <- rdU cellOf (truncate t126)
-              if (0.5 - (abs (t127 - s120))) > 0 then do
-                if (t126 - d31) > 0 then do
-                  chkI pos (3 * (truncate t126)) 0 2
-                  t128 <- rdU pos (3 * (truncate t126))
-                  t129 <- rdU pos ((3 * (truncate t126)) + 1)
-                  t130 <- rdU pos ((3 * (truncate t126)) + 2)
-                  chkI scalars (6 * (truncate t126)) 2 5
-                  t131 <- rdU scalars ((6 * (truncate t126)) + 5)
-                  t132 <- rdU scalars ((6 * (truncate t126)) + 2)
-                  let !t133 = (t36 + t132)
-                  let !t134 = (s106 + (negate t128))
-                  let !t135 = (t33 + (negate t129))
-                  let !t136 = (t34 + (negate t130))
-                  let !t137 = ((t35 + t131) - (sqrt (((t134 * t134) + (t135 * t135)) + (t136 * t136))))
-                  if (if (t133 - t137) > 0 then t137 else t133) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t126 + 1.0) * 64.0) + 20.0) d31 t126 1.0 1.0 1.0 (-2.0) 0.0 0.0
+    t112 <- getR v38
+    loopI 0.0 t112 $ \i113 -> do
+      let !d113 = fromIntegral i113 :: Double
+      chkI near i113 0 0
+      t114 <- rdU near i113
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t114 + 1.0) * 64.0) + 16.0) d31 t114 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
+      pure ()
+    let !s115 = s76
+    setR v38 0.0
+    let !t116 = ((abs s115) - 1.0)
+    let !t117 = (if (negate t116) > 0 then 0.0 else t116)
+    if ((t35 + t37) - (sqrt ((t117 * t117) + (t42 * t42)))) > 0 then do
+      t118 <- rdU meta 4
+      t119 <- rdU meta 5
+      let !s120 = (floorF (s115 / t119))
+      let !s121 = (floorF (t33 / t119))
+      let !s122 = (floorF (t34 / t119))
+      loopI 0.0 3.0 $ \i123 -> do
+        let !d123 = fromIntegral i123 :: Double
+        loopI 0.0 3.0 $ \i124 -> do
+          let !d124 = fromIntegral i124 :: Double
+          loopI 0.0 3.0 $ \i125 -> do
+            let !d125 = fromIntegral i125 :: Double
+            let !s126 = ((s120 + d123) - 1.0)
+            let !s127 = ((s121 + d124) - 1.0)
+            let !s128 = ((s122 + d125) - 1.0)
+            let !s129 = (((((s126 + 131072.0) * 262144.0) + (s127 + 131072.0)) * 262144.0) + (s128 + 131072.0))
+            let !t130 = (((s126 * 7.3856093e7) + (s127 * 1.9349663e7)) + (s128 * 8.3492791e7))
+            let !s131 = (t130 - (t118 * (floorF (t130 / t118))))
+            chkI grid (truncate s131) 0 0
+            t132 <- rdU grid (truncate s131)
+            chkI grid ((truncate s131) + (truncate t118)) 0 0
+            t133 <- rdU grid ((truncate s131) + (truncate t118))
+            loopI t133 t132 $ \i134 -> do
+              let !d134 = fromIntegral i134 :: Double
+              chkI items i134 0 0
+              t135 <- rdU items i134
+              chkI cellOf (truncate t135) 0 0
+              t136 <- rdU cellOf (truncate t135)
+              if (0.5 - (abs (t136 - s129))) > 0 then do
+                if (t135 - d31) > 0 then do
+                  chkI pos (3 * (truncate t135)) 0 2
+                  t137 <- rdU pos (3 * (truncate t135))
+                  t138 <- rdU pos ((3 * (truncate t135)) + 1)
+                  t139 <- rdU pos ((3 * (truncate t135)) + 2)
+                  chkI scalars (6 * (truncate t135)) 2 5
+                  t140 <- rdU scalars ((6 * (truncate t135)) + 5)
+                  t141 <- rdU scalars ((6 * (truncate t135)) + 2)
+                  let !t142 = (t36 + t141)
+                  let !t143 = (s115 + (negate t137))
+                  let !t144 = (t33 + (negate t138))
+                  let !t145 = (t34 + (negate t139))
+                  let !t146 = ((t35 + t140) - (sqrt (((t143 * t143) + (t144 * t144)) + (t145 * t145))))
+                  if (if (t142 - t146) > 0 then t146 else t142) > 0 then do
+                    t147 <- getR v38
+                    chkI near (truncate t147) 0 0
+                    wrU near (truncate t147) t135
+                    setR v38 (t147 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -336,56 +363,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s138 = s106
-    let !s139 = (t34 + 2.0)
-    let !t140 = ((abs s138) - 1.0)
-    let !t141 = (if (negate t140) > 0 then 0.0 else t140)
-    let !t142 = ((abs s139) - 1.0)
-    let !t143 = (if (negate t142) > 0 then 0.0 else t142)
-    if ((t35 + t37) - (sqrt ((t141 * t141) + (t143 * t143)))) > 0 then do
-      t144 <- rdU meta 4
-      t145 <- rdU meta 5
-      let !s146 = (floorF (s138 / t145))
-      let !s147 = (floorF (t33 / t145))
-      let !s148 = (floorF (s139 / t145))
-      loopI 0.0 3.0 $ \i149 -> do
-        let !d149 = fromIntegral i149 :: Double
-        loopI 0.0 3.0 $ \i150 -> do
-          let !d150 = fromIntegral i150 :: Double
-          loopI 0.0 3.0 $ \i151 -> do
-            let !d151 = fromIntegral i151 :: Double
-            let !s152 = ((s146 + d149) - 1.0)
-            let !s153 = ((s147 + d150) - 1.0)
-            let !s154 = ((s148 + d151) - 1.0)
-            let !s155 = (((((s152 + 131072.0) * 262144.0) + (s153 + 131072.0)) * 262144.0) + (s154 + 131072.0))
-            let !t156 = (((s152 * 7.3856093e7) + (s153 * 1.9349663e7)) + (s154 * 8.3492791e7))
-            let !s157 = (t156 - (t144 * (floorF (t156 / t144))))
-            chkI grid (truncate s157) 0 0
-            t158 <- rdU grid (truncate s157)
-            chkI grid ((truncate s157) + (truncate t144)) 0 0
-            t159 <- rdU grid ((truncate s157) + (truncate t144))
-            loopI t159 t158 $ \i160 -> do
-              let !d160 = fromIntegral i160 :: Double
-              chkI items i160 0 0
-              t161 <- rdU items i160
-              chkI cellOf (truncate t161) 0 0
-              t162 <- rdU cellOf (truncate t161)
-              if (0.5 - (abs (t162 - s155))) > 0 then do
-                if (t161 - d31) > 0 then do
-                  chkI pos (3 * (truncate t161)) 0 2
-                  t163 <- rdU pos (3 * (truncate t161))
-                  t164 <- rdU pos ((3 * (truncate t161)) + 1)
-                  t165 <- rdU pos ((3 * (truncate t161)) + 2)
-                  chkI scalars (6 * (truncate t161)) 2 5
-                  t166 <- rdU scalars ((6 * (truncate t161)) + 5)
-                  t167 <- rdU scalars ((6 * (truncate t161)) + 2)
-                  let !t168 = (t36 + t167)
-                  let !t169 = (s138 + (negate t163))
-                  let !t170 = (t33 + (negate t164))
-                  let !t171 = (s139 + (negate t165))
-                  let !t172 = ((t35 + t166) - (sqrt (((t169 * t169) + (t170 * t170)) + (t171 * t171))))
-                  if (if (t168 - t172) > 0 then t172 else t168) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t161 + 1.0) * 64.0) + 24.0) d31 t161 1.0 1.0 1.0 (-2.0) 0.0 2.0
+    t148 <- getR v38
+    loopI 0.0 t148 $ \i149 -> do
+      let !d149 = fromIntegral i149 :: Double
+      chkI near i149 0 0
+      t150 <- rdU near i149
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t150 + 1.0) * 64.0) + 20.0) d31 t150 1.0 1.0 1.0 (-2.0) 0.0 0.0
+      pure ()
+    let !s151 = s115
+    let !s152 = (t34 + 2.0)
+    setR v38 0.0
+    let !t153 = ((abs s151) - 1.0)
+    let !t154 = (if (negate t153) > 0 then 0.0 else t153)
+    let !t155 = ((abs s152) - 1.0)
+    let !t156 = (if (negate t155) > 0 then 0.0 else t155)
+    if ((t35 + t37) - (sqrt ((t154 * t154) + (t156 * t156)))) > 0 then do
+      t157 <- rdU meta 4
+      t158 <- rdU meta 5
+      let !s159 = (floorF (s151 / t158))
+      let !s160 = (floorF (t33 / t158))
+      let !s161 = (floorF (s152 / t158))
+      loopI 0.0 3.0 $ \i162 -> do
+        let !d162 = fromIntegral i162 :: Double
+        loopI 0.0 3.0 $ \i163 -> do
+          let !d163 = fromIntegral i163 :: Double
+          loopI 0.0 3.0 $ \i164 -> do
+            let !d164 = fromIntegral i164 :: Double
+            let !s165 = ((s159 + d162) - 1.0)
+            let !s166 = ((s160 + d163) - 1.0)
+            let !s167 = ((s161 + d164) - 1.0)
+            let !s168 = (((((s165 + 131072.0) * 262144.0) + (s166 + 131072.0)) * 262144.0) + (s167 + 131072.0))
+            let !t169 = (((s165 * 7.3856093e7) + (s166 * 1.9349663e7)) + (s167 * 8.3492791e7))
+            let !s170 = (t169 - (t157 * (floorF (t169 / t157))))
+            chkI grid (truncate s170) 0 0
+            t171 <- rdU grid (truncate s170)
+            chkI grid ((truncate s170) + (truncate t157)) 0 0
+            t172 <- rdU grid ((truncate s170) + (truncate t157))
+            loopI t172 t171 $ \i173 -> do
+              let !d173 = fromIntegral i173 :: Double
+              chkI items i173 0 0
+              t174 <- rdU items i173
+              chkI cellOf (truncate t174) 0 0
+              t175 <- rdU cellOf (truncate t174)
+              if (0.5 - (abs (t175 - s168))) > 0 then do
+                if (t174 - d31) > 0 then do
+                  chkI pos (3 * (truncate t174)) 0 2
+                  t176 <- rdU pos (3 * (truncate t174))
+                  t177 <- rdU pos ((3 * (truncate t174)) + 1)
+                  t178 <- rdU pos ((3 * (truncate t174)) + 2)
+                  chkI scalars (6 * (truncate t174)) 2 5
+                  t179 <- rdU scalars ((6 * (truncate t174)) + 5)
+                  t180 <- rdU scalars ((6 * (truncate t174)) + 2)
+                  let !t181 = (t36 + t180)
+                  let !t182 = (s151 + (negate t176))
+                  let !t183 = (t33 + (negate t177))
+                  let !t184 = (s152 + (negate t178))
+                  let !t185 = ((t35 + t179) - (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184))))
+                  if (if (t181 - t185) > 0 then t185 else t181) > 0 then do
+                    t186 <- getR v38
+                    chkI near (truncate t186) 0 0
+                    wrU near (truncate t186) t174
+                    setR v38 (t186 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -402,53 +440,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s173 = s72
-    let !t174 = ((abs s173) - 1.0)
-    let !t175 = (if (negate t174) > 0 then 0.0 else t174)
-    if ((t35 + t37) - (sqrt ((t39 * t39) + (t175 * t175)))) > 0 then do
-      t176 <- rdU meta 4
-      t177 <- rdU meta 5
-      let !s178 = (floorF (t32 / t177))
-      let !s179 = (floorF (t33 / t177))
-      let !s180 = (floorF (s173 / t177))
-      loopI 0.0 3.0 $ \i181 -> do
-        let !d181 = fromIntegral i181 :: Double
-        loopI 0.0 3.0 $ \i182 -> do
-          let !d182 = fromIntegral i182 :: Double
-          loopI 0.0 3.0 $ \i183 -> do
-            let !d183 = fromIntegral i183 :: Double
-            let !s184 = ((s178 + d181) - 1.0)
-            let !s185 = ((s179 + d182) - 1.0)
-            let !s186 = ((s180 + d183) - 1.0)
-            let !s187 = (((((s184 + 131072.0) * 262144.0) + (s185 + 131072.0)) * 262144.0) + (s186 + 131072.0))
-            let !t188 = (((s184 * 7.3856093e7) + (s185 * 1.9349663e7)) + (s186 * 8.3492791e7))
-            let !s189 = (t188 - (t176 * (floorF (t188 / t176))))
-            chkI grid (truncate s189) 0 0
-            t190 <- rdU grid (truncate s189)
-            chkI grid ((truncate s189) + (truncate t176)) 0 0
-            t191 <- rdU grid ((truncate s189) + (truncate t176))
-            loopI t191 t190 $ \i192 -> do
-              let !d192 = fromIntegral i192 :: Double
-              chkI items i192 0 0
-              t193 <- rdU items i192
-              chkI cellOf (truncate t193) 0 0
-              t194 <- rdU cellOf (truncate t193)
-              if (0.5 - (abs (t194 - s187))) > 0 then do
-                if (t193 - d31) > 0 then do
-                  chkI pos (3 * (truncate t193)) 0 2
-                  t195 <- rdU pos (3 * (truncate t193))
-                  t196 <- rdU pos ((3 * (truncate t193)) + 1)
-                  t197 <- rdU pos ((3 * (truncate t193)) + 2)
-                  chkI scalars (6 * (truncate t193)) 2 5
-                  t198 <- rdU scalars ((6 * (truncate t193)) + 5)
-                  t199 <- rdU scalars ((6 * (truncate t193)) + 2)
-                  let !t200 = (t36 + t199)
-                  let !t201 = (t32 + (negate t195))
-                  let !t202 = (t33 + (negate t196))
-                  let !t203 = (s173 + (negate t197))
-                  let !t204 = ((t35 + t198) - (sqrt (((t201 * t201) + (t202 * t202)) + (t203 * t203))))
-                  if (if (t200 - t204) > 0 then t204 else t200) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t193 + 1.0) * 64.0) + 28.0) d31 t193 1.0 1.0 1.0 0.0 0.0 (-2.0)
+    t187 <- getR v38
+    loopI 0.0 t187 $ \i188 -> do
+      let !d188 = fromIntegral i188 :: Double
+      chkI near i188 0 0
+      t189 <- rdU near i188
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t189 + 1.0) * 64.0) + 24.0) d31 t189 1.0 1.0 1.0 (-2.0) 0.0 2.0
+      pure ()
+    let !s190 = s77
+    setR v38 0.0
+    let !t191 = ((abs s190) - 1.0)
+    let !t192 = (if (negate t191) > 0 then 0.0 else t191)
+    if ((t35 + t37) - (sqrt ((t40 * t40) + (t192 * t192)))) > 0 then do
+      t193 <- rdU meta 4
+      t194 <- rdU meta 5
+      let !s195 = (floorF (t32 / t194))
+      let !s196 = (floorF (t33 / t194))
+      let !s197 = (floorF (s190 / t194))
+      loopI 0.0 3.0 $ \i198 -> do
+        let !d198 = fromIntegral i198 :: Double
+        loopI 0.0 3.0 $ \i199 -> do
+          let !d199 = fromIntegral i199 :: Double
+          loopI 0.0 3.0 $ \i200 -> do
+            let !d200 = fromIntegral i200 :: Double
+            let !s201 = ((s195 + d198) - 1.0)
+            let !s202 = ((s196 + d199) - 1.0)
+            let !s203 = ((s197 + d200) - 1.0)
+            let !s204 = (((((s201 + 131072.0) * 262144.0) + (s202 + 131072.0)) * 262144.0) + (s203 + 131072.0))
+            let !t205 = (((s201 * 7.3856093e7) + (s202 * 1.9349663e7)) + (s203 * 8.3492791e7))
+            let !s206 = (t205 - (t193 * (floorF (t205 / t193))))
+            chkI grid (truncate s206) 0 0
+            t207 <- rdU grid (truncate s206)
+            chkI grid ((truncate s206) + (truncate t193)) 0 0
+            t208 <- rdU grid ((truncate s206) + (truncate t193))
+            loopI t208 t207 $ \i209 -> do
+              let !d209 = fromIntegral i209 :: Double
+              chkI items i209 0 0
+              t210 <- rdU items i209
+              chkI cellOf (truncate t210) 0 0
+              t211 <- rdU cellOf (truncate t210)
+              if (0.5 - (abs (t211 - s204))) > 0 then do
+                if (t210 - d31) > 0 then do
+                  chkI pos (3 * (truncate t210)) 0 2
+                  t212 <- rdU pos (3 * (truncate t210))
+                  t213 <- rdU pos ((3 * (truncate t210)) + 1)
+                  t214 <- rdU pos ((3 * (truncate t210)) + 2)
+                  chkI scalars (6 * (truncate t210)) 2 5
+                  t215 <- rdU scalars ((6 * (truncate t210)) + 5)
+                  t216 <- rdU scalars ((6 * (truncate t210)) + 2)
+                  let !t217 = (t36 + t216)
+                  let !t218 = (t32 + (negate t212))
+                  let !t219 = (t33 + (negate t213))
+                  let !t220 = (s190 + (negate t214))
+                  let !t221 = ((t35 + t215) - (sqrt (((t218 * t218) + (t219 * t219)) + (t220 * t220))))
+                  if (if (t217 - t221) > 0 then t221 else t217) > 0 then do
+                    t222 <- getR v38
+                    chkI near (truncate t222) 0 0
+                    wrU near (truncate t222) t210
+                    setR v38 (t222 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -465,53 +514,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s205 = s139
-    let !t206 = ((abs s205) - 1.0)
-    let !t207 = (if (negate t206) > 0 then 0.0 else t206)
-    if ((t35 + t37) - (sqrt ((t39 * t39) + (t207 * t207)))) > 0 then do
-      t208 <- rdU meta 4
-      t209 <- rdU meta 5
-      let !s210 = (floorF (t32 / t209))
-      let !s211 = (floorF (t33 / t209))
-      let !s212 = (floorF (s205 / t209))
-      loopI 0.0 3.0 $ \i213 -> do
-        let !d213 = fromIntegral i213 :: Double
-        loopI 0.0 3.0 $ \i214 -> do
-          let !d214 = fromIntegral i214 :: Double
-          loopI 0.0 3.0 $ \i215 -> do
-            let !d215 = fromIntegral i215 :: Double
-            let !s216 = ((s210 + d213) - 1.0)
-            let !s217 = ((s211 + d214) - 1.0)
-            let !s218 = ((s212 + d215) - 1.0)
-            let !s219 = (((((s216 + 131072.0) * 262144.0) + (s217 + 131072.0)) * 262144.0) + (s218 + 131072.0))
-            let !t220 = (((s216 * 7.3856093e7) + (s217 * 1.9349663e7)) + (s218 * 8.3492791e7))
-            let !s221 = (t220 - (t208 * (floorF (t220 / t208))))
-            chkI grid (truncate s221) 0 0
-            t222 <- rdU grid (truncate s221)
-            chkI grid ((truncate s221) + (truncate t208)) 0 0
-            t223 <- rdU grid ((truncate s221) + (truncate t208))
-            loopI t223 t222 $ \i224 -> do
-              let !d224 = fromIntegral i224 :: Double
-              chkI items i224 0 0
-              t225 <- rdU items i224
-              chkI cellOf (truncate t225) 0 0
-              t226 <- rdU cellOf (truncate t225)
-              if (0.5 - (abs (t226 - s219))) > 0 then do
-                if ((t225 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t225)) 0 2
-                  t227 <- rdU pos (3 * (truncate t225))
-                  t228 <- rdU pos ((3 * (truncate t225)) + 1)
-                  t229 <- rdU pos ((3 * (truncate t225)) + 2)
-                  chkI scalars (6 * (truncate t225)) 2 5
-                  t230 <- rdU scalars ((6 * (truncate t225)) + 5)
-                  t231 <- rdU scalars ((6 * (truncate t225)) + 2)
-                  let !t232 = (t36 + t231)
-                  let !t233 = (t32 + (negate t227))
-                  let !t234 = (t33 + (negate t228))
-                  let !t235 = (s205 + (negate t229))
-                  let !t236 = ((t35 + t230) - (sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235))))
-                  if (if (t232 - t236) > 0 then t236 else t232) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t225 + 1.0) * 64.0) + 32.0) d31 t225 1.0 1.0 1.0 0.0 0.0 2.0
+    t223 <- getR v38
+    loopI 0.0 t223 $ \i224 -> do
+      let !d224 = fromIntegral i224 :: Double
+      chkI near i224 0 0
+      t225 <- rdU near i224
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t225 + 1.0) * 64.0) + 28.0) d31 t225 1.0 1.0 1.0 0.0 0.0 (-2.0)
+      pure ()
+    let !s226 = s152
+    setR v38 0.0
+    let !t227 = ((abs s226) - 1.0)
+    let !t228 = (if (negate t227) > 0 then 0.0 else t227)
+    if ((t35 + t37) - (sqrt ((t40 * t40) + (t228 * t228)))) > 0 then do
+      t229 <- rdU meta 4
+      t230 <- rdU meta 5
+      let !s231 = (floorF (t32 / t230))
+      let !s232 = (floorF (t33 / t230))
+      let !s233 = (floorF (s226 / t230))
+      loopI 0.0 3.0 $ \i234 -> do
+        let !d234 = fromIntegral i234 :: Double
+        loopI 0.0 3.0 $ \i235 -> do
+          let !d235 = fromIntegral i235 :: Double
+          loopI 0.0 3.0 $ \i236 -> do
+            let !d236 = fromIntegral i236 :: Double
+            let !s237 = ((s231 + d234) - 1.0)
+            let !s238 = ((s232 + d235) - 1.0)
+            let !s239 = ((s233 + d236) - 1.0)
+            let !s240 = (((((s237 + 131072.0) * 262144.0) + (s238 + 131072.0)) * 262144.0) + (s239 + 131072.0))
+            let !t241 = (((s237 * 7.3856093e7) + (s238 * 1.9349663e7)) + (s239 * 8.3492791e7))
+            let !s242 = (t241 - (t229 * (floorF (t241 / t229))))
+            chkI grid (truncate s242) 0 0
+            t243 <- rdU grid (truncate s242)
+            chkI grid ((truncate s242) + (truncate t229)) 0 0
+            t244 <- rdU grid ((truncate s242) + (truncate t229))
+            loopI t244 t243 $ \i245 -> do
+              let !d245 = fromIntegral i245 :: Double
+              chkI items i245 0 0
+              t246 <- rdU items i245
+              chkI cellOf (truncate t246) 0 0
+              t247 <- rdU cellOf (truncate t246)
+              if (0.5 - (abs (t247 - s240))) > 0 then do
+                if ((t246 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t246)) 0 2
+                  t248 <- rdU pos (3 * (truncate t246))
+                  t249 <- rdU pos ((3 * (truncate t246)) + 1)
+                  t250 <- rdU pos ((3 * (truncate t246)) + 2)
+                  chkI scalars (6 * (truncate t246)) 2 5
+                  t251 <- rdU scalars ((6 * (truncate t246)) + 5)
+                  t252 <- rdU scalars ((6 * (truncate t246)) + 2)
+                  let !t253 = (t36 + t252)
+                  let !t254 = (t32 + (negate t248))
+                  let !t255 = (t33 + (negate t249))
+                  let !t256 = (s226 + (negate t250))
+                  let !t257 = ((t35 + t251) - (sqrt (((t254 * t254) + (t255 * t255)) + (t256 * t256))))
+                  if (if (t253 - t257) > 0 then t257 else t253) > 0 then do
+                    t258 <- getR v38
+                    chkI near (truncate t258) 0 0
+                    wrU near (truncate t258) t246
+                    setR v38 (t258 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -528,56 +588,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s237 = (t32 + 2.0)
-    let !s238 = s173
-    let !t239 = ((abs s237) - 1.0)
-    let !t240 = (if (negate t239) > 0 then 0.0 else t239)
-    let !t241 = ((abs s238) - 1.0)
-    let !t242 = (if (negate t241) > 0 then 0.0 else t241)
-    if ((t35 + t37) - (sqrt ((t240 * t240) + (t242 * t242)))) > 0 then do
-      t243 <- rdU meta 4
-      t244 <- rdU meta 5
-      let !s245 = (floorF (s237 / t244))
-      let !s246 = (floorF (t33 / t244))
-      let !s247 = (floorF (s238 / t244))
-      loopI 0.0 3.0 $ \i248 -> do
-        let !d248 = fromIntegral i248 :: Double
-        loopI 0.0 3.0 $ \i249 -> do
-          let !d249 = fromIntegral i249 :: Double
-          loopI 0.0 3.0 $ \i250 -> do
-            let !d250 = fromIntegral i250 :: Double
-            let !s251 = ((s245 + d248) - 1.0)
-            let !s252 = ((s246 + d249) - 1.0)
-            let !s253 = ((s247 + d250) - 1.0)
-            let !s254 = (((((s251 + 131072.0) * 262144.0) + (s252 + 131072.0)) * 262144.0) + (s253 + 131072.0))
-            let !t255 = (((s251 * 7.3856093e7) + (s252 * 1.9349663e7)) + (s253 * 8.3492791e7))
-            let !s256 = (t255 - (t243 * (floorF (t255 / t243))))
-            chkI grid (truncate s256) 0 0
-            t257 <- rdU grid (truncate s256)
-            chkI grid ((truncate s256) + (truncate t243)) 0 0
-            t258 <- rdU grid ((truncate s256) + (truncate t243))
-            loopI t258 t257 $ \i259 -> do
-              let !d259 = fromIntegral i259 :: Double
-              chkI items i259 0 0
-              t260 <- rdU items i259
-              chkI cellOf (truncate t260) 0 0
-              t261 <- rdU cellOf (truncate t260)
-              if (0.5 - (abs (t261 - s254))) > 0 then do
-                if ((t260 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t260)) 0 2
-                  t262 <- rdU pos (3 * (truncate t260))
-                  t263 <- rdU pos ((3 * (truncate t260)) + 1)
-                  t264 <- rdU pos ((3 * (truncate t260)) + 2)
-                  chkI scalars (6 * (truncate t260)) 2 5
-                  t265 <- rdU scalars ((6 * (truncate t260)) + 5)
-                  t266 <- rdU scalars ((6 * (truncate t260)) + 2)
-                  let !t267 = (t36 + t266)
-                  let !t268 = (s237 + (negate t262))
-                  let !t269 = (t33 + (negate t263))
-                  let !t270 = (s238 + (negate t264))
-                  let !t271 = ((t35 + t265) - (sqrt (((t268 * t268) + (t269 * t269)) + (t270 * t270))))
-                  if (if (t267 - t271) > 0 then t271 else t267) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t260 + 1.0) * 64.0) + 36.0) d31 t260 1.0 1.0 1.0 2.0 0.0 (-2.0)
+    t259 <- getR v38
+    loopI 0.0 t259 $ \i260 -> do
+      let !d260 = fromIntegral i260 :: Double
+      chkI near i260 0 0
+      t261 <- rdU near i260
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t261 + 1.0) * 64.0) + 32.0) d31 t261 1.0 1.0 1.0 0.0 0.0 2.0
+      pure ()
+    let !s262 = (t32 + 2.0)
+    let !s263 = s190
+    setR v38 0.0
+    let !t264 = ((abs s262) - 1.0)
+    let !t265 = (if (negate t264) > 0 then 0.0 else t264)
+    let !t266 = ((abs s263) - 1.0)
+    let !t267 = (if (negate t266) > 0 then 0.0 else t266)
+    if ((t35 + t37) - (sqrt ((t265 * t265) + (t267 * t267)))) > 0 then do
+      t268 <- rdU meta 4
+      t269 <- rdU meta 5
+      let !s270 = (floorF (s262 / t269))
+      let !s271 = (floorF (t33 / t269))
+      let !s272 = (floorF (s263 / t269))
+      loopI 0.0 3.0 $ \i273 -> do
+        let !d273 = fromIntegral i273 :: Double
+        loopI 0.0 3.0 $ \i274 -> do
+          let !d274 = fromIntegral i274 :: Double
+          loopI 0.0 3.0 $ \i275 -> do
+            let !d275 = fromIntegral i275 :: Double
+            let !s276 = ((s270 + d273) - 1.0)
+            let !s277 = ((s271 + d274) - 1.0)
+            let !s278 = ((s272 + d275) - 1.0)
+            let !s279 = (((((s276 + 131072.0) * 262144.0) + (s277 + 131072.0)) * 262144.0) + (s278 + 131072.0))
+            let !t280 = (((s276 * 7.3856093e7) + (s277 * 1.9349663e7)) + (s278 * 8.3492791e7))
+            let !s281 = (t280 - (t268 * (floorF (t280 / t268))))
+            chkI grid (truncate s281) 0 0
+            t282 <- rdU grid (truncate s281)
+            chkI grid ((truncate s281) + (truncate t268)) 0 0
+            t283 <- rdU grid ((truncate s281) + (truncate t268))
+            loopI t283 t282 $ \i284 -> do
+              let !d284 = fromIntegral i284 :: Double
+              chkI items i284 0 0
+              t285 <- rdU items i284
+              chkI cellOf (truncate t285) 0 0
+              t286 <- rdU cellOf (truncate t285)
+              if (0.5 - (abs (t286 - s279))) > 0 then do
+                if ((t285 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t285)) 0 2
+                  t287 <- rdU pos (3 * (truncate t285))
+                  t288 <- rdU pos ((3 * (truncate t285)) + 1)
+                  t289 <- rdU pos ((3 * (truncate t285)) + 2)
+                  chkI scalars (6 * (truncate t285)) 2 5
+                  t290 <- rdU scalars ((6 * (truncate t285)) + 5)
+                  t291 <- rdU scalars ((6 * (truncate t285)) + 2)
+                  let !t292 = (t36 + t291)
+                  let !t293 = (s262 + (negate t287))
+                  let !t294 = (t33 + (negate t288))
+                  let !t295 = (s263 + (negate t289))
+                  let !t296 = ((t35 + t290) - (sqrt (((t293 * t293) + (t294 * t294)) + (t295 * t295))))
+                  if (if (t292 - t296) > 0 then t296 else t292) > 0 then do
+                    t297 <- getR v38
+                    chkI near (truncate t297) 0 0
+                    wrU near (truncate t297) t285
+                    setR v38 (t297 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -594,53 +665,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s272 = s237
-    let !t273 = ((abs s272) - 1.0)
-    let !t274 = (if (negate t273) > 0 then 0.0 else t273)
-    if ((t35 + t37) - (sqrt ((t274 * t274) + (t41 * t41)))) > 0 then do
-      t275 <- rdU meta 4
-      t276 <- rdU meta 5
-      let !s277 = (floorF (s272 / t276))
-      let !s278 = (floorF (t33 / t276))
-      let !s279 = (floorF (t34 / t276))
-      loopI 0.0 3.0 $ \i280 -> do
-        let !d280 = fromIntegral i280 :: Double
-        loopI 0.0 3.0 $ \i281 -> do
-          let !d281 = fromIntegral i281 :: Double
-          loopI 0.0 3.0 $ \i282 -> do
-            let !d282 = fromIntegral i282 :: Double
-            let !s283 = ((s277 + d280) - 1.0)
-            let !s284 = ((s278 + d281) - 1.0)
-            let !s285 = ((s279 + d282) - 1.0)
-            let !s286 = (((((s283 + 131072.0) * 262144.0) + (s284 + 131072.0)) * 262144.0) + (s285 + 131072.0))
-            let !t287 = (((s283 * 7.3856093e7) + (s284 * 1.9349663e7)) + (s285 * 8.3492791e7))
-            let !s288 = (t287 - (t275 * (floorF (t287 / t275))))
-            chkI grid (truncate s288) 0 0
-            t289 <- rdU grid (truncate s288)
-            chkI grid ((truncate s288) + (truncate t275)) 0 0
-            t290 <- rdU grid ((truncate s288) + (truncate t275))
-            loopI t290 t289 $ \i291 -> do
-              let !d291 = fromIntegral i291 :: Double
-              chkI items i291 0 0
-              t292 <- rdU items i291
-              chkI cellOf (truncate t292) 0 0
-              t293 <- rdU cellOf (truncate t292)
-              if (0.5 - (abs (t293 - s286))) > 0 then do
-                if ((t292 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t292)) 0 2
-                  t294 <- rdU pos (3 * (truncate t292))
-                  t295 <- rdU pos ((3 * (truncate t292)) + 1)
-                  t296 <- rdU pos ((3 * (truncate t292)) + 2)
-                  chkI scalars (6 * (truncate t292)) 2 5
-                  t297 <- rdU scalars ((6 * (truncate t292)) + 5)
-                  t298 <- rdU scalars ((6 * (truncate t292)) + 2)
-                  let !t299 = (t36 + t298)
-                  let !t300 = (s272 + (negate t294))
-                  let !t301 = (t33 + (negate t295))
-                  let !t302 = (t34 + (negate t296))
-                  let !t303 = ((t35 + t297) - (sqrt (((t300 * t300) + (t301 * t301)) + (t302 * t302))))
-                  if (if (t299 - t303) > 0 then t303 else t299) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t292 + 1.0) * 64.0) + 40.0) d31 t292 1.0 1.0 1.0 2.0 0.0 0.0
+    t298 <- getR v38
+    loopI 0.0 t298 $ \i299 -> do
+      let !d299 = fromIntegral i299 :: Double
+      chkI near i299 0 0
+      t300 <- rdU near i299
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t300 + 1.0) * 64.0) + 36.0) d31 t300 1.0 1.0 1.0 2.0 0.0 (-2.0)
+      pure ()
+    let !s301 = s262
+    setR v38 0.0
+    let !t302 = ((abs s301) - 1.0)
+    let !t303 = (if (negate t302) > 0 then 0.0 else t302)
+    if ((t35 + t37) - (sqrt ((t303 * t303) + (t42 * t42)))) > 0 then do
+      t304 <- rdU meta 4
+      t305 <- rdU meta 5
+      let !s306 = (floorF (s301 / t305))
+      let !s307 = (floorF (t33 / t305))
+      let !s308 = (floorF (t34 / t305))
+      loopI 0.0 3.0 $ \i309 -> do
+        let !d309 = fromIntegral i309 :: Double
+        loopI 0.0 3.0 $ \i310 -> do
+          let !d310 = fromIntegral i310 :: Double
+          loopI 0.0 3.0 $ \i311 -> do
+            let !d311 = fromIntegral i311 :: Double
+            let !s312 = ((s306 + d309) - 1.0)
+            let !s313 = ((s307 + d310) - 1.0)
+            let !s314 = ((s308 + d311) - 1.0)
+            let !s315 = (((((s312 + 131072.0) * 262144.0) + (s313 + 131072.0)) * 262144.0) + (s314 + 131072.0))
+            let !t316 = (((s312 * 7.3856093e7) + (s313 * 1.9349663e7)) + (s314 * 8.3492791e7))
+            let !s317 = (t316 - (t304 * (floorF (t316 / t304))))
+            chkI grid (truncate s317) 0 0
+            t318 <- rdU grid (truncate s317)
+            chkI grid ((truncate s317) + (truncate t304)) 0 0
+            t319 <- rdU grid ((truncate s317) + (truncate t304))
+            loopI t319 t318 $ \i320 -> do
+              let !d320 = fromIntegral i320 :: Double
+              chkI items i320 0 0
+              t321 <- rdU items i320
+              chkI cellOf (truncate t321) 0 0
+              t322 <- rdU cellOf (truncate t321)
+              if (0.5 - (abs (t322 - s315))) > 0 then do
+                if ((t321 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t321)) 0 2
+                  t323 <- rdU pos (3 * (truncate t321))
+                  t324 <- rdU pos ((3 * (truncate t321)) + 1)
+                  t325 <- rdU pos ((3 * (truncate t321)) + 2)
+                  chkI scalars (6 * (truncate t321)) 2 5
+                  t326 <- rdU scalars ((6 * (truncate t321)) + 5)
+                  t327 <- rdU scalars ((6 * (truncate t321)) + 2)
+                  let !t328 = (t36 + t327)
+                  let !t329 = (s301 + (negate t323))
+                  let !t330 = (t33 + (negate t324))
+                  let !t331 = (t34 + (negate t325))
+                  let !t332 = ((t35 + t326) - (sqrt (((t329 * t329) + (t330 * t330)) + (t331 * t331))))
+                  if (if (t328 - t332) > 0 then t332 else t328) > 0 then do
+                    t333 <- getR v38
+                    chkI near (truncate t333) 0 0
+                    wrU near (truncate t333) t321
+                    setR v38 (t333 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -657,56 +739,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    let !s304 = s272
-    let !s305 = s205
-    let !t306 = ((abs s304) - 1.0)
-    let !t307 = (if (negate t306) > 0 then 0.0 else t306)
-    let !t308 = ((abs s305) - 1.0)
-    let !t309 = (if (negate t308) > 0 then 0.0 else t308)
-    if ((t35 + t37) - (sqrt ((t307 * t307) + (t309 * t309)))) > 0 then do
-      t310 <- rdU meta 4
-      t311 <- rdU meta 5
-      let !s312 = (floorF (s304 / t311))
-      let !s313 = (floorF (t33 / t311))
-      let !s314 = (floorF (s305 / t311))
-      loopI 0.0 3.0 $ \i315 -> do
-        let !d315 = fromIntegral i315 :: Double
-        loopI 0.0 3.0 $ \i316 -> do
-          let !d316 = fromIntegral i316 :: Double
-          loopI 0.0 3.0 $ \i317 -> do
-            let !d317 = fromIntegral i317 :: Double
-            let !s318 = ((s312 + d315) - 1.0)
-            let !s319 = ((s313 + d316) - 1.0)
-            let !s320 = ((s314 + d317) - 1.0)
-            let !s321 = (((((s318 + 131072.0) * 262144.0) + (s319 + 131072.0)) * 262144.0) + (s320 + 131072.0))
-            let !t322 = (((s318 * 7.3856093e7) + (s319 * 1.9349663e7)) + (s320 * 8.3492791e7))
-            let !s323 = (t322 - (t310 * (floorF (t322 / t310))))
-            chkI grid (truncate s323) 0 0
-            t324 <- rdU grid (truncate s323)
-            chkI grid ((truncate s323) + (truncate t310)) 0 0
-            t325 <- rdU grid ((truncate s323) + (truncate t310))
-            loopI t325 t324 $ \i326 -> do
-              let !d326 = fromIntegral i326 :: Double
-              chkI items i326 0 0
-              t327 <- rdU items i326
-              chkI cellOf (truncate t327) 0 0
-              t328 <- rdU cellOf (truncate t327)
-              if (0.5 - (abs (t328 - s321))) > 0 then do
-                if ((t327 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t327)) 0 2
-                  t329 <- rdU pos (3 * (truncate t327))
-                  t330 <- rdU pos ((3 * (truncate t327)) + 1)
-                  t331 <- rdU pos ((3 * (truncate t327)) + 2)
-                  chkI scalars (6 * (truncate t327)) 2 5
-                  t332 <- rdU scalars ((6 * (truncate t327)) + 5)
-                  t333 <- rdU scalars ((6 * (truncate t327)) + 2)
-                  let !t334 = (t36 + t333)
-                  let !t335 = (s304 + (negate t329))
-                  let !t336 = (t33 + (negate t330))
-                  let !t337 = (s305 + (negate t331))
-                  let !t338 = ((t35 + t332) - (sqrt (((t335 * t335) + (t336 * t336)) + (t337 * t337))))
-                  if (if (t334 - t338) > 0 then t338 else t334) > 0 then do
-                    pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t327 + 1.0) * 64.0) + 44.0) d31 t327 1.0 1.0 1.0 2.0 0.0 2.0
+    t334 <- getR v38
+    loopI 0.0 t334 $ \i335 -> do
+      let !d335 = fromIntegral i335 :: Double
+      chkI near i335 0 0
+      t336 <- rdU near i335
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t336 + 1.0) * 64.0) + 40.0) d31 t336 1.0 1.0 1.0 2.0 0.0 0.0
+      pure ()
+    let !s337 = s301
+    let !s338 = s226
+    setR v38 0.0
+    let !t339 = ((abs s337) - 1.0)
+    let !t340 = (if (negate t339) > 0 then 0.0 else t339)
+    let !t341 = ((abs s338) - 1.0)
+    let !t342 = (if (negate t341) > 0 then 0.0 else t341)
+    if ((t35 + t37) - (sqrt ((t340 * t340) + (t342 * t342)))) > 0 then do
+      t343 <- rdU meta 4
+      t344 <- rdU meta 5
+      let !s345 = (floorF (s337 / t344))
+      let !s346 = (floorF (t33 / t344))
+      let !s347 = (floorF (s338 / t344))
+      loopI 0.0 3.0 $ \i348 -> do
+        let !d348 = fromIntegral i348 :: Double
+        loopI 0.0 3.0 $ \i349 -> do
+          let !d349 = fromIntegral i349 :: Double
+          loopI 0.0 3.0 $ \i350 -> do
+            let !d350 = fromIntegral i350 :: Double
+            let !s351 = ((s345 + d348) - 1.0)
+            let !s352 = ((s346 + d349) - 1.0)
+            let !s353 = ((s347 + d350) - 1.0)
+            let !s354 = (((((s351 + 131072.0) * 262144.0) + (s352 + 131072.0)) * 262144.0) + (s353 + 131072.0))
+            let !t355 = (((s351 * 7.3856093e7) + (s352 * 1.9349663e7)) + (s353 * 8.3492791e7))
+            let !s356 = (t355 - (t343 * (floorF (t355 / t343))))
+            chkI grid (truncate s356) 0 0
+            t357 <- rdU grid (truncate s356)
+            chkI grid ((truncate s356) + (truncate t343)) 0 0
+            t358 <- rdU grid ((truncate s356) + (truncate t343))
+            loopI t358 t357 $ \i359 -> do
+              let !d359 = fromIntegral i359 :: Double
+              chkI items i359 0 0
+              t360 <- rdU items i359
+              chkI cellOf (truncate t360) 0 0
+              t361 <- rdU cellOf (truncate t360)
+              if (0.5 - (abs (t361 - s354))) > 0 then do
+                if ((t360 - d31) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t360)) 0 2
+                  t362 <- rdU pos (3 * (truncate t360))
+                  t363 <- rdU pos ((3 * (truncate t360)) + 1)
+                  t364 <- rdU pos ((3 * (truncate t360)) + 2)
+                  chkI scalars (6 * (truncate t360)) 2 5
+                  t365 <- rdU scalars ((6 * (truncate t360)) + 5)
+                  t366 <- rdU scalars ((6 * (truncate t360)) + 2)
+                  let !t367 = (t36 + t366)
+                  let !t368 = (s337 + (negate t362))
+                  let !t369 = (t33 + (negate t363))
+                  let !t370 = (s338 + (negate t364))
+                  let !t371 = ((t35 + t365) - (sqrt (((t368 * t368) + (t369 * t369)) + (t370 * t370))))
+                  if (if (t367 - t371) > 0 then t371 else t367) > 0 then do
+                    t372 <- getR v38
+                    chkI near (truncate t372) 0 0
+                    wrU near (truncate t372) t360
+                    setR v38 (t372 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -722,134 +815,141 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         pure ()
       pure ()
     else do
+      pure ()
+    t373 <- getR v38
+    loopI 0.0 t373 $ \i374 -> do
+      let !d374 = fromIntegral i374 :: Double
+      chkI near i374 0 0
+      t375 <- rdU near i374
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t375 + 1.0) * 64.0) + 44.0) d31 t375 1.0 1.0 1.0 2.0 0.0 2.0
       pure ()
     chkI verts (291 * i31) 0 2
-    t339 <- rdU verts (291 * i31)
-    t340 <- rdU verts ((291 * i31) + 1)
-    t341 <- rdU verts ((291 * i31) + 2)
-    v342 <- newR 1.0
-    loopI 0.0 24.0 $ \i343 -> do
-      let !d343 = fromIntegral i343 :: Double
-      chkI verts ((291 * i31) + (12 * i343)) 12 14
-      t344 <- rdU verts (((291 * i31) + (12 * i343)) + 12)
-      t345 <- rdU verts (((291 * i31) + (12 * i343)) + 13)
-      t346 <- rdU verts (((291 * i31) + (12 * i343)) + 14)
-      chkI radii ((24 * i31) + i343) 0 0
-      t347 <- rdU radii ((24 * i31) + i343)
-      t348 <- getR v342
-      let !t349 = (t344 + (negate t339))
-      let !t350 = (t345 + (negate t340))
-      let !t351 = (t346 + (negate t341))
-      let !t352 = (if t347 > 0 then ((sqrt (((t349 * t349) + (t350 * t350)) + (t351 * t351))) / t347) else 1.0)
-      setR v342 (if (t348 - t352) > 0 then t352 else t348)
+    t376 <- rdU verts (291 * i31)
+    t377 <- rdU verts ((291 * i31) + 1)
+    t378 <- rdU verts ((291 * i31) + 2)
+    v379 <- newR 1.0
+    loopI 0.0 24.0 $ \i380 -> do
+      let !d380 = fromIntegral i380 :: Double
+      chkI verts ((291 * i31) + (12 * i380)) 12 14
+      t381 <- rdU verts (((291 * i31) + (12 * i380)) + 12)
+      t382 <- rdU verts (((291 * i31) + (12 * i380)) + 13)
+      t383 <- rdU verts (((291 * i31) + (12 * i380)) + 14)
+      chkI radii ((24 * i31) + i380) 0 0
+      t384 <- rdU radii ((24 * i31) + i380)
+      t385 <- getR v379
+      let !t386 = (t381 + (negate t376))
+      let !t387 = (t382 + (negate t377))
+      let !t388 = (t383 + (negate t378))
+      let !t389 = (if t384 > 0 then ((sqrt (((t386 * t386) + (t387 * t387)) + (t388 * t388))) / t384) else 1.0)
+      setR v379 (if (t385 - t389) > 0 then t389 else t385)
       pure ()
-    t353 <- getR v342
-    if (0.8 - t353) > 0 then do
-      v354 <- newR 0.0
-      v355 <- newR 0.0
-      v356 <- newR 0.0
-      v357 <- newR 0.0
-      v358 <- newR 0.0
-      v359 <- newR 0.0
-      v360 <- newR 0.0
-      loopI 0.0 24.0 $ \i361 -> do
-        let !d361 = fromIntegral i361 :: Double
-        chkI radii ((24 * i31) + i361) 0 0
-        t362 <- rdU radii ((24 * i31) + i361)
-        loopI 6.0 12.0 $ \i363 -> do
-          let !d363 = fromIntegral i363 :: Double
-          let !t364 = (d361 + d363)
-          chkI radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0)))))) 0 0
-          t365 <- rdU radii (truncate ((24.0 * d31) + (t364 - (24.0 * (floorF (t364 / 24.0))))))
-          loopI 1.0 4.0 $ \i366 -> do
-            let !d366 = fromIntegral i366 :: Double
-            chkI verts ((291 * i31) + (12 * i361) + (3 * i366)) 0 5
-            t367 <- rdU verts ((291 * i31) + (12 * i361) + (3 * i366))
-            t368 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 1)
-            t369 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 2)
-            t370 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 3)
-            t371 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 4)
-            t372 <- rdU verts (((291 * i31) + (12 * i361) + (3 * i366)) + 5)
-            loopI 1.0 4.0 $ \i373 -> do
-              let !d373 = fromIntegral i373 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0)))) 0 0
-              t374 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 1.0)) 0 0
-              t375 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 2.0)) 0 0
-              t376 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + (d373 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373))) 0 0
-              t377 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 1.0)) 0 0
-              t378 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 2.0)) 0 0
-              t379 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)) + d373)) + 2.0))
-              t380 <- getR v354
-              let !t381 = (negate t374)
-              let !t382 = (t377 + t381)
-              let !t383 = (negate t375)
-              let !t384 = (t378 + t383)
-              let !t385 = (negate t376)
-              let !t386 = (t379 + t385)
-              let !t387 = (((t382 * t382) + (t384 * t384)) + (t386 * t386))
-              let !t388 = (t370 + (negate t367))
-              let !t389 = (t371 + (negate t368))
-              let !t390 = (t372 + (negate t369))
-              let !t391 = (((t388 * t382) + (t389 * t384)) + (t390 * t386))
-              let !t392 = (((t388 * t388) + (t389 * t389)) + (t390 * t390))
-              let !t393 = ((t392 * t387) - (t391 * t391))
-              let !t394 = (t367 + t381)
-              let !t395 = (t368 + t383)
-              let !t396 = (t369 + t385)
-              let !t397 = (((t382 * t394) + (t384 * t395)) + (t386 * t396))
-              let !t398 = (((t388 * t394) + (t389 * t395)) + (t390 * t396))
-              let !t399 = (if ((abs t393) - 1.0e-300) > 0 then (((t391 * t397) - (t398 * t387)) / t393) else 0.0)
-              let !t400 = (if (t399 - 1.0) > 0 then 1.0 else t399)
-              let !t401 = (if (t393 - ((1.0e-12 * t392) * t387)) > 0 then (if (negate t400) > 0 then 0.0 else t400) else 0.0)
-              let !t402 = (if ((abs t387) - 1.0e-300) > 0 then (((t391 * t401) + t397) / t387) else 0.0)
-              let !t403 = ((abs t392) - 1.0e-300)
-              let !t404 = (if t403 > 0 then ((negate t398) / t392) else 0.0)
-              let !t405 = (if (t404 - 1.0) > 0 then 1.0 else t404)
-              let !t406 = (t402 - 1.0)
-              let !t407 = (if t403 > 0 then ((t391 - t398) / t392) else 0.0)
-              let !t408 = (if (t407 - 1.0) > 0 then 1.0 else t407)
-              let !t409 = (if (negate t402) > 0 then (if (negate t405) > 0 then 0.0 else t405) else (if t406 > 0 then (if (negate t408) > 0 then 0.0 else t408) else t401))
-              let !t410 = (if t406 > 0 then 1.0 else t402)
-              let !t411 = (if (negate t410) > 0 then 0.0 else t410)
-              let !t412 = ((0.5 * ((t362 - ((t362 * (d366 + t409)) / 4.0)) + (t365 - ((t365 * (d373 + t411)) / 4.0)))) - t380)
-              let !t413 = ((t367 + (t409 * t388)) + (negate (t374 + (t411 * t382))))
-              let !t414 = ((t368 + (t409 * t389)) + (negate (t375 + (t411 * t384))))
-              let !t415 = ((t369 + (t409 * t390)) + (negate (t376 + (t411 * t386))))
-              let !t416 = ((0.3 * ((if (t365 - t362) > 0 then t362 else t365) / 4.0)) - (sqrt (((t413 * t413) + (t414 * t414)) + (t415 * t415))))
-              if (if (t412 - t416) > 0 then t416 else t412) > 0 then do
-                setR v354 (0.5 * ((t362 - ((t362 * (d366 + t409)) / 4.0)) + (t365 - ((t365 * (d373 + t411)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i361)) 3 5
-                t417 <- rdU verts (((291 * i31) + (12 * i361)) + 3)
-                t418 <- rdU verts (((291 * i31) + (12 * i361)) + 4)
-                t419 <- rdU verts (((291 * i31) + (12 * i361)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0)))) 0 0
-                t420 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t421 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t422 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t364 - (24.0 * (floorF (t364 / 24.0)))) * 4.0))) + 2.0))
-                setR v355 (t367 + (t409 * t388))
-                setR v356 (t368 + (t409 * t389))
-                setR v357 (t369 + (t409 * t390))
-                let !t423 = (negate t339)
-                let !t424 = (t417 + t423)
-                let !t425 = (negate t340)
-                let !t426 = (t418 + t425)
-                let !t427 = (negate t341)
-                let !t428 = (t419 + t427)
-                let !t429 = (sqrt (((t424 * t424) + (t426 * t426)) + (t428 * t428)))
-                let !t430 = (t420 + t423)
-                let !t431 = (t421 + t425)
-                let !t432 = (t422 + t427)
-                let !t433 = (sqrt (((t430 * t430) + (t431 * t431)) + (t432 * t432)))
-                setR v358 (negate (((if t429 > 0 then (recip (if (t429 - 1.0e-300) > 0 then t429 else 1.0e-300)) else 0.0) * t424) + ((if t433 > 0 then (recip (if (t433 - 1.0e-300) > 0 then t433 else 1.0e-300)) else 0.0) * t430)))
-                setR v359 (negate (((if t429 > 0 then (recip (if (t429 - 1.0e-300) > 0 then t429 else 1.0e-300)) else 0.0) * t426) + ((if t433 > 0 then (recip (if (t433 - 1.0e-300) > 0 then t433 else 1.0e-300)) else 0.0) * t431)))
-                setR v360 (negate (((if t429 > 0 then (recip (if (t429 - 1.0e-300) > 0 then t429 else 1.0e-300)) else 0.0) * t428) + ((if t433 > 0 then (recip (if (t433 - 1.0e-300) > 0 then t433 else 1.0e-300)) else 0.0) * t432)))
+    t390 <- getR v379
+    if (0.8 - t390) > 0 then do
+      v391 <- newR 0.0
+      v392 <- newR 0.0
+      v393 <- newR 0.0
+      v394 <- newR 0.0
+      v395 <- newR 0.0
+      v396 <- newR 0.0
+      v397 <- newR 0.0
+      loopI 0.0 24.0 $ \i398 -> do
+        let !d398 = fromIntegral i398 :: Double
+        chkI radii ((24 * i31) + i398) 0 0
+        t399 <- rdU radii ((24 * i31) + i398)
+        loopI 6.0 12.0 $ \i400 -> do
+          let !d400 = fromIntegral i400 :: Double
+          let !t401 = (d398 + d400)
+          chkI radii (truncate ((24.0 * d31) + (t401 - (24.0 * (floorF (t401 / 24.0)))))) 0 0
+          t402 <- rdU radii (truncate ((24.0 * d31) + (t401 - (24.0 * (floorF (t401 / 24.0))))))
+          loopI 1.0 4.0 $ \i403 -> do
+            let !d403 = fromIntegral i403 :: Double
+            chkI verts ((291 * i31) + (12 * i398) + (3 * i403)) 0 5
+            t404 <- rdU verts ((291 * i31) + (12 * i398) + (3 * i403))
+            t405 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 1)
+            t406 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 2)
+            t407 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 3)
+            t408 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 4)
+            t409 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 5)
+            loopI 1.0 4.0 $ \i410 -> do
+              let !d410 = fromIntegral i410 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0)))) 0 0
+              t411 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 1.0)) 0 0
+              t412 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 2.0)) 0 0
+              t413 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410))) 0 0
+              t414 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 1.0)) 0 0
+              t415 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 2.0)) 0 0
+              t416 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 2.0))
+              t417 <- getR v391
+              let !t418 = (negate t411)
+              let !t419 = (t414 + t418)
+              let !t420 = (negate t412)
+              let !t421 = (t415 + t420)
+              let !t422 = (negate t413)
+              let !t423 = (t416 + t422)
+              let !t424 = (((t419 * t419) + (t421 * t421)) + (t423 * t423))
+              let !t425 = (t407 + (negate t404))
+              let !t426 = (t408 + (negate t405))
+              let !t427 = (t409 + (negate t406))
+              let !t428 = (((t425 * t419) + (t426 * t421)) + (t427 * t423))
+              let !t429 = (((t425 * t425) + (t426 * t426)) + (t427 * t427))
+              let !t430 = ((t429 * t424) - (t428 * t428))
+              let !t431 = (t404 + t418)
+              let !t432 = (t405 + t420)
+              let !t433 = (t406 + t422)
+              let !t434 = (((t419 * t431) + (t421 * t432)) + (t423 * t433))
+              let !t435 = (((t425 * t431) + (t426 * t432)) + (t427 * t433))
+              let !t436 = (if ((abs t430) - 1.0e-300) > 0 then (((t428 * t434) - (t435 * t424)) / t430) else 0.0)
+              let !t437 = (if (t436 - 1.0) > 0 then 1.0 else t436)
+              let !t438 = (if (t430 - ((1.0e-12 * t429) * t424)) > 0 then (if (negate t437) > 0 then 0.0 else t437) else 0.0)
+              let !t439 = (if ((abs t424) - 1.0e-300) > 0 then (((t428 * t438) + t434) / t424) else 0.0)
+              let !t440 = ((abs t429) - 1.0e-300)
+              let !t441 = (if t440 > 0 then ((negate t435) / t429) else 0.0)
+              let !t442 = (if (t441 - 1.0) > 0 then 1.0 else t441)
+              let !t443 = (t439 - 1.0)
+              let !t444 = (if t440 > 0 then ((t428 - t435) / t429) else 0.0)
+              let !t445 = (if (t444 - 1.0) > 0 then 1.0 else t444)
+              let !t446 = (if (negate t439) > 0 then (if (negate t442) > 0 then 0.0 else t442) else (if t443 > 0 then (if (negate t445) > 0 then 0.0 else t445) else t438))
+              let !t447 = (if t443 > 0 then 1.0 else t439)
+              let !t448 = (if (negate t447) > 0 then 0.0 else t447)
+              let !t449 = ((0.5 * ((t399 - ((t399 * (d403 + t446)) / 4.0)) + (t402 - ((t402 * (d410 + t448)) / 4.0)))) - t417)
+              let !t450 = ((t404 + (t446 * t425)) + (negate (t411 + (t448 * t419))))
+              let !t451 = ((t405 + (t446 * t426)) + (negate (t412 + (t448 * t421))))
+              let !t452 = ((t406 + (t446 * t427)) + (negate (t413 + (t448 * t423))))
+              let !t453 = ((0.3 * ((if (t402 - t399) > 0 then t399 else t402) / 4.0)) - (sqrt (((t450 * t450) + (t451 * t451)) + (t452 * t452))))
+              if (if (t449 - t453) > 0 then t453 else t449) > 0 then do
+                setR v391 (0.5 * ((t399 - ((t399 * (d403 + t446)) / 4.0)) + (t402 - ((t402 * (d410 + t448)) / 4.0))))
+                chkI verts ((291 * i31) + (12 * i398)) 3 5
+                t454 <- rdU verts (((291 * i31) + (12 * i398)) + 3)
+                t455 <- rdU verts (((291 * i31) + (12 * i398)) + 4)
+                t456 <- rdU verts (((291 * i31) + (12 * i398)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)))) 0 0
+                t457 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t458 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t459 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 2.0))
+                setR v392 (t404 + (t446 * t425))
+                setR v393 (t405 + (t446 * t426))
+                setR v394 (t406 + (t446 * t427))
+                let !t460 = (negate t376)
+                let !t461 = (t454 + t460)
+                let !t462 = (negate t377)
+                let !t463 = (t455 + t462)
+                let !t464 = (negate t378)
+                let !t465 = (t456 + t464)
+                let !t466 = (sqrt (((t461 * t461) + (t463 * t463)) + (t465 * t465)))
+                let !t467 = (t457 + t460)
+                let !t468 = (t458 + t462)
+                let !t469 = (t459 + t464)
+                let !t470 = (sqrt (((t467 * t467) + (t468 * t468)) + (t469 * t469)))
+                setR v395 (negate (((if t466 > 0 then (recip (if (t466 - 1.0e-300) > 0 then t466 else 1.0e-300)) else 0.0) * t461) + ((if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0) * t467)))
+                setR v396 (negate (((if t466 > 0 then (recip (if (t466 - 1.0e-300) > 0 then t466 else 1.0e-300)) else 0.0) * t463) + ((if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0) * t468)))
+                setR v397 (negate (((if t466 > 0 then (recip (if (t466 - 1.0e-300) > 0 then t466 else 1.0e-300)) else 0.0) * t465) + ((if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0) * t469)))
                 pure ()
               else do
                 pure ()
@@ -857,112 +957,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t434 <- getR v354
-      if t434 > 0 then do
-        t435 <- getR v355
-        t436 <- getR v356
-        t437 <- getR v357
-        t438 <- getR v358
-        t439 <- getR v359
-        t440 <- getR v360
-        let !t441 = (t439 + (negate t439))
-        let !t442 = (sqrt (((t438 * t438) + (t441 * t441)) + (t440 * t440)))
-        let !t443 = (if t442 > 0 then (recip (if (t442 - 1.0e-300) > 0 then t442 else 1.0e-300)) else 0.0)
-        let !s444 = (t443 * t438)
-        let !s445 = (t443 * t441)
-        let !s446 = (t443 * t440)
-        t447 <- rdU meta 2
-        t448 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t448) > 0 then 1.0 else t448)) - t447) - 0.5) > 0 then do
-          wrU meta 2 (t447 + 1.0)
-          t449 <- rdU pos (3 * i31)
-          t450 <- rdU pos ((3 * i31) + 1)
-          t451 <- rdU pos ((3 * i31) + 2)
+      t471 <- getR v391
+      if t471 > 0 then do
+        t472 <- getR v392
+        t473 <- getR v393
+        t474 <- getR v394
+        t475 <- getR v395
+        t476 <- getR v396
+        t477 <- getR v397
+        let !t478 = (t476 + (negate t476))
+        let !t479 = (sqrt (((t475 * t475) + (t478 * t478)) + (t477 * t477)))
+        let !t480 = (if t479 > 0 then (recip (if (t479 - 1.0e-300) > 0 then t479 else 1.0e-300)) else 0.0)
+        let !s481 = (t480 * t475)
+        let !s482 = (t480 * t478)
+        let !s483 = (t480 * t477)
+        t484 <- rdU meta 2
+        t485 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t485) > 0 then 1.0 else t485)) - t484) - 0.5) > 0 then do
+          wrU meta 2 (t484 + 1.0)
+          t486 <- rdU pos (3 * i31)
+          t487 <- rdU pos ((3 * i31) + 1)
+          t488 <- rdU pos ((3 * i31) + 2)
           chkI normal (3 * i31) 0 2
-          t452 <- rdU normal (3 * i31)
-          t453 <- rdU normal ((3 * i31) + 1)
-          t454 <- rdU normal ((3 * i31) + 2)
+          t489 <- rdU normal (3 * i31)
+          t490 <- rdU normal ((3 * i31) + 1)
+          t491 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t455 <- rdU axis (3 * i31)
-          t456 <- rdU axis ((3 * i31) + 1)
-          t457 <- rdU axis ((3 * i31) + 2)
-          let !s458 = ((t453 * t457) - (t454 * t456))
-          let !s459 = ((t454 * t455) - (t452 * t457))
-          let !s460 = ((t452 * t456) - (t453 * t455))
+          t492 <- rdU axis (3 * i31)
+          t493 <- rdU axis ((3 * i31) + 1)
+          t494 <- rdU axis ((3 * i31) + 2)
+          let !s495 = ((t490 * t494) - (t491 * t493))
+          let !s496 = ((t491 * t492) - (t489 * t494))
+          let !s497 = ((t489 * t493) - (t490 * t492))
           chkI scalars (6 * i31) 0 0
-          t461 <- rdU scalars (6 * i31)
-          t462 <- rdU scalars ((6 * i31) + 5)
-          t463 <- rdU scalars ((6 * i31) + 2)
-          t464 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t447)) 0 29
-          wrU contacts (30 * (truncate t447)) d31
-          wrU contacts ((30 * (truncate t447)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t447)) + 2) d31
-          wrU contacts ((30 * (truncate t447)) + 3) 12.0
-          wrU contacts ((30 * (truncate t447)) + 4) (s444 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t452)))
-          wrU contacts ((30 * (truncate t447)) + 5) (s445 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t453)))
-          wrU contacts ((30 * (truncate t447)) + 6) (s446 + (negate ((((t452 * s444) + (t453 * s445)) + (t454 * s446)) * t454)))
-          wrU contacts ((30 * (truncate t447)) + 7) 0.0
-          wrU contacts ((30 * (truncate t447)) + 12) 0.0
-          wrU contacts ((30 * (truncate t447)) + 13) 0.0
-          wrU contacts ((30 * (truncate t447)) + 14) 0.0
-          wrU contacts ((30 * (truncate t447)) + 15) 0.0
-          wrU contacts ((30 * (truncate t447)) + 20) t434
-          wrU contacts ((30 * (truncate t447)) + 26) 0.6
-          wrU contacts ((30 * (truncate t447)) + 27) t435
-          wrU contacts ((30 * (truncate t447)) + 28) t436
-          wrU contacts ((30 * (truncate t447)) + 29) t437
+          t498 <- rdU scalars (6 * i31)
+          t499 <- rdU scalars ((6 * i31) + 5)
+          t500 <- rdU scalars ((6 * i31) + 2)
+          t501 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t484)) 0 29
+          wrU contacts (30 * (truncate t484)) d31
+          wrU contacts ((30 * (truncate t484)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t484)) + 2) d31
+          wrU contacts ((30 * (truncate t484)) + 3) 12.0
+          wrU contacts ((30 * (truncate t484)) + 4) (s481 + (negate ((((t489 * s481) + (t490 * s482)) + (t491 * s483)) * t489)))
+          wrU contacts ((30 * (truncate t484)) + 5) (s482 + (negate ((((t489 * s481) + (t490 * s482)) + (t491 * s483)) * t490)))
+          wrU contacts ((30 * (truncate t484)) + 6) (s483 + (negate ((((t489 * s481) + (t490 * s482)) + (t491 * s483)) * t491)))
+          wrU contacts ((30 * (truncate t484)) + 7) 0.0
+          wrU contacts ((30 * (truncate t484)) + 12) 0.0
+          wrU contacts ((30 * (truncate t484)) + 13) 0.0
+          wrU contacts ((30 * (truncate t484)) + 14) 0.0
+          wrU contacts ((30 * (truncate t484)) + 15) 0.0
+          wrU contacts ((30 * (truncate t484)) + 20) t471
+          wrU contacts ((30 * (truncate t484)) + 26) 0.6
+          wrU contacts ((30 * (truncate t484)) + 27) t472
+          wrU contacts ((30 * (truncate t484)) + 28) t473
+          wrU contacts ((30 * (truncate t484)) + 29) t474
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t465 <- rdU pos (-3)
-            t466 <- rdU pos (-2)
-            t467 <- rdU pos (-1)
+            t502 <- rdU pos (-3)
+            t503 <- rdU pos (-2)
+            t504 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t468 <- rdU normal (-3)
-            t469 <- rdU normal (-2)
-            t470 <- rdU normal (-1)
+            t505 <- rdU normal (-3)
+            t506 <- rdU normal (-2)
+            t507 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t471 <- rdU axis (-3)
-            t472 <- rdU axis (-2)
-            t473 <- rdU axis (-1)
-            let !s474 = ((t469 * t473) - (t470 * t472))
-            let !s475 = ((t470 * t471) - (t468 * t473))
-            let !s476 = ((t468 * t472) - (t469 * t471))
+            t508 <- rdU axis (-3)
+            t509 <- rdU axis (-2)
+            t510 <- rdU axis (-1)
+            let !s511 = ((t506 * t510) - (t507 * t509))
+            let !s512 = ((t507 * t508) - (t505 * t510))
+            let !s513 = ((t505 * t509) - (t506 * t508))
             chkI scalars 0 (-6) (-1)
-            t477 <- rdU scalars (-6)
-            t478 <- rdU scalars (-1)
-            t479 <- rdU scalars (-4)
-            t480 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t447)) + 8) (s444 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t468)))
-            wrU contacts ((30 * (truncate t447)) + 9) (s445 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t469)))
-            wrU contacts ((30 * (truncate t447)) + 10) (s446 + (negate ((((t468 * s444) + (t469 * s445)) + (t470 * s446)) * t470)))
-            let !t481 = (t436 + (negate t466))
-            let !t482 = (t437 + (negate t467))
-            let !t483 = (t435 + (negate t465))
-            wrU contacts ((30 * (truncate t447)) + 11) (((((t481 * s446) - (t482 * s445)) * t468) + (((t482 * s444) - (t483 * s446)) * t469)) + (((t483 * s445) - (t481 * s444)) * t470))
-            let !t484 = ((t453 * s446) - (t454 * s445))
-            wrU contacts ((30 * (truncate t447)) + 16) (t484 + (negate ((((t468 * t484) + (t469 * ((t454 * s444) - (t452 * s446)))) + (t470 * ((t452 * s445) - (t453 * s444)))) * t468)))
-            let !t485 = ((t454 * s444) - (t452 * s446))
-            wrU contacts ((30 * (truncate t447)) + 17) (t485 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * ((t452 * s445) - (t453 * s444)))) * t469)))
-            let !t486 = ((t452 * s445) - (t453 * s444))
-            wrU contacts ((30 * (truncate t447)) + 18) (t486 + (negate ((((t468 * t484) + (t469 * t485)) + (t470 * t486)) * t470)))
-            wrU contacts ((30 * (truncate t447)) + 19) (((((t481 * t486) - (t482 * t485)) * t468) + (((t482 * t484) - (t483 * t486)) * t469)) + (((t483 * t485) - (t481 * t484)) * t470))
+            t514 <- rdU scalars (-6)
+            t515 <- rdU scalars (-1)
+            t516 <- rdU scalars (-4)
+            t517 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t484)) + 8) (s481 + (negate ((((t505 * s481) + (t506 * s482)) + (t507 * s483)) * t505)))
+            wrU contacts ((30 * (truncate t484)) + 9) (s482 + (negate ((((t505 * s481) + (t506 * s482)) + (t507 * s483)) * t506)))
+            wrU contacts ((30 * (truncate t484)) + 10) (s483 + (negate ((((t505 * s481) + (t506 * s482)) + (t507 * s483)) * t507)))
+            let !t518 = (t473 + (negate t503))
+            let !t519 = (t474 + (negate t504))
+            let !t520 = (t472 + (negate t502))
+            wrU contacts ((30 * (truncate t484)) + 11) (((((t518 * s483) - (t519 * s482)) * t505) + (((t519 * s481) - (t520 * s483)) * t506)) + (((t520 * s482) - (t518 * s481)) * t507))
+            let !t521 = ((t490 * s483) - (t491 * s482))
+            wrU contacts ((30 * (truncate t484)) + 16) (t521 + (negate ((((t505 * t521) + (t506 * ((t491 * s481) - (t489 * s483)))) + (t507 * ((t489 * s482) - (t490 * s481)))) * t505)))
+            let !t522 = ((t491 * s481) - (t489 * s483))
+            wrU contacts ((30 * (truncate t484)) + 17) (t522 + (negate ((((t505 * t521) + (t506 * t522)) + (t507 * ((t489 * s482) - (t490 * s481)))) * t506)))
+            let !t523 = ((t489 * s482) - (t490 * s481))
+            wrU contacts ((30 * (truncate t484)) + 18) (t523 + (negate ((((t505 * t521) + (t506 * t522)) + (t507 * t523)) * t507)))
+            wrU contacts ((30 * (truncate t484)) + 19) (((((t518 * t523) - (t519 * t522)) * t505) + (((t519 * t521) - (t520 * t523)) * t506)) + (((t520 * t522) - (t518 * t521)) * t507))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t447)) + 8) 0.0
-            wrU contacts ((30 * (truncate t447)) + 9) 0.0
-            wrU contacts ((30 * (truncate t447)) + 10) 0.0
-            wrU contacts ((30 * (truncate t447)) + 11) 0.0
-            wrU contacts ((30 * (truncate t447)) + 16) 0.0
-            wrU contacts ((30 * (truncate t447)) + 17) 0.0
-            wrU contacts ((30 * (truncate t447)) + 18) 0.0
-            wrU contacts ((30 * (truncate t447)) + 19) 0.0
+            wrU contacts ((30 * (truncate t484)) + 8) 0.0
+            wrU contacts ((30 * (truncate t484)) + 9) 0.0
+            wrU contacts ((30 * (truncate t484)) + 10) 0.0
+            wrU contacts ((30 * (truncate t484)) + 11) 0.0
+            wrU contacts ((30 * (truncate t484)) + 16) 0.0
+            wrU contacts ((30 * (truncate t484)) + 17) 0.0
+            wrU contacts ((30 * (truncate t484)) + 18) 0.0
+            wrU contacts ((30 * (truncate t484)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t487 <- rdU meta 6
-          wrU meta 6 (t487 + 1.0)
+          t524 <- rdU meta 6
+          wrU meta 6 (t524 + 1.0)
           pure ()
         pure ()
       else do
@@ -973,8 +1073,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1755,8 +1855,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1890,8 +1990,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "funnel" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary function f(x, y, z) {\n  const t0 = (1.0 - Math.abs(z));\n  const t1 = (Math.exp(((0.9 * z) - 0.7)) - Math.abs(x));\n  return ((t0 - t1) > 0 ? t1 : t0);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Funnel: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -147,49 +147,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -203,72 +208,79 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
     chkI normal (3 * i31) 0 2
-    t67 <- rdU normal (3 * i31)
-    t68 <- rdU normal ((3 * i31) + 1)
-    t69 <- rdU normal ((3 * i31) + 2)
-    v70 <- newR 0.0
-    v71 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i72 -> do
-      let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i31) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
-      let !t76 = (1.0 - (abs t75))
-      let !t77 = ((exp ((0.9 * t75) - 0.7)) - (abs t73))
-      let !s78 = (if (t76 - t77) > 0 then t77 else t76)
-      t79 <- getR v70
-      if ((negate s78) - t79) > 0 then do
-        setR v70 (negate s78)
-        setR v71 d72
+    t72 <- rdU normal (3 * i31)
+    t73 <- rdU normal ((3 * i31) + 1)
+    t74 <- rdU normal ((3 * i31) + 2)
+    v75 <- newR 0.0
+    v76 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i77 -> do
+      let !d77 = fromIntegral i77 :: Double
+      chkI verts ((291 * i31) + (12 * i77)) 12 14
+      t78 <- rdU verts (((291 * i31) + (12 * i77)) + 12)
+      t79 <- rdU verts (((291 * i31) + (12 * i77)) + 13)
+      t80 <- rdU verts (((291 * i31) + (12 * i77)) + 14)
+      let !t81 = (1.0 - (abs t80))
+      let !t82 = ((exp ((0.9 * t80) - 0.7)) - (abs t78))
+      let !s83 = (if (t81 - t82) > 0 then t82 else t81)
+      t84 <- getR v75
+      if ((negate s83) - t84) > 0 then do
+        setR v75 (negate s83)
+        setR v76 d77
         pure ()
       else do
         pure ()
       pure ()
-    t80 <- getR v70
-    if t80 > 0 then do
-      t81 <- getR v71
-      chkI verts ((12 * (truncate t81)) + (291 * i31)) 12 14
-      t82 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 12)
-      t83 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 13)
-      t84 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 14)
-      let !t85 = (exp ((0.9 * t84) - 0.7))
-      let !t86 = ((1.0 - (abs t84)) - (t85 - (abs t82)))
-      let !t87 = (if t86 > 0 then (negate (signum t82)) else 0.0)
-      let !t88 = (if t86 > 0 then (t85 * 0.9) else (negate (signum t84)))
-      let !t89 = (sqrt ((t87 * t87) + (t88 * t88)))
-      let !t90 = (if t89 > 0 then (recip (if (t89 - 1.0e-300) > 0 then t89 else 1.0e-300)) else 0.0)
-      let !s91 = (t90 * t87)
-      let !s92 = (t90 * t88)
-      let !s93 = (t68 * s92)
-      let !s94 = ((t69 * s91) - (t67 * s92))
-      let !s95 = (negate (t68 * s91))
-      v96 <- newR 1.0e300
-      v97 <- newR (-1.0e300)
-      v98 <- newR (-1.0)
-      v99 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i100 -> do
-        let !d100 = fromIntegral i100 :: Double
-        chkI verts ((12 * i100) + (291 * i31)) 12 14
-        t101 <- rdU verts (((12 * i100) + (291 * i31)) + 12)
-        t102 <- rdU verts (((12 * i100) + (291 * i31)) + 13)
-        t103 <- rdU verts (((12 * i100) + (291 * i31)) + 14)
-        let !t104 = (1.0 - (abs t103))
-        let !t105 = ((exp ((0.9 * t103) - 0.7)) - (abs t101))
-        if (negate (if (t104 - t105) > 0 then t105 else t104)) > 0 then do
-          let !s106 = (((t101 * s93) + (t102 * s94)) + (t103 * s95))
-          t107 <- getR v96
-          if (t107 - s106) > 0 then do
-            setR v96 s106
-            setR v98 d100
+    t85 <- getR v75
+    if t85 > 0 then do
+      t86 <- getR v76
+      chkI verts ((12 * (truncate t86)) + (291 * i31)) 12 14
+      t87 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 12)
+      t88 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 13)
+      t89 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 14)
+      let !t90 = (exp ((0.9 * t89) - 0.7))
+      let !t91 = ((1.0 - (abs t89)) - (t90 - (abs t87)))
+      let !t92 = (if t91 > 0 then (negate (signum t87)) else 0.0)
+      let !t93 = (if t91 > 0 then (t90 * 0.9) else (negate (signum t89)))
+      let !t94 = (sqrt ((t92 * t92) + (t93 * t93)))
+      let !t95 = (if t94 > 0 then (recip (if (t94 - 1.0e-300) > 0 then t94 else 1.0e-300)) else 0.0)
+      let !s96 = (t95 * t92)
+      let !s97 = (t95 * t93)
+      let !s98 = (t73 * s97)
+      let !s99 = ((t74 * s96) - (t72 * s97))
+      let !s100 = (negate (t73 * s96))
+      v101 <- newR 1.0e300
+      v102 <- newR (-1.0e300)
+      v103 <- newR (-1.0)
+      v104 <- newR (-1.0)
+      loopI 0.0 24.0 $ \i105 -> do
+        let !d105 = fromIntegral i105 :: Double
+        chkI verts ((12 * i105) + (291 * i31)) 12 14
+        t106 <- rdU verts (((12 * i105) + (291 * i31)) + 12)
+        t107 <- rdU verts (((12 * i105) + (291 * i31)) + 13)
+        t108 <- rdU verts (((12 * i105) + (291 * i31)) + 14)
+        let !t109 = (1.0 - (abs t108))
+        let !t110 = ((exp ((0.9 * t108) - 0.7)) - (abs t106))
+        if (negate (if (t109 - t110) > 0 then t110 else t109)) > 0 then do
+          let !s111 = (((t106 * s98) + (t107 * s99)) + (t108 * s100))
+          t112 <- getR v101
+          if (t112 - s111) > 0 then do
+            setR v101 s111
+            setR v103 d105
             pure ()
           else do
             pure ()
-          t108 <- getR v97
-          if (s106 - t108) > 0 then do
-            setR v97 s106
-            setR v99 d100
+          t113 <- getR v102
+          if (s111 - t113) > 0 then do
+            setR v102 s111
+            setR v104 d105
             pure ()
           else do
             pure ()
@@ -276,224 +288,224 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t109 <- getR v98
-      t110 <- getR v99
-      chkI verts ((12 * (truncate t109)) + (291 * i31)) 12 14
-      t111 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 12)
-      t112 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 13)
-      t113 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 14)
-      let !t114 = (exp ((0.9 * t113) - 0.7))
-      let !t115 = ((1.0 - (abs t113)) - (t114 - (abs t111)))
-      let !s116 = (if t115 > 0 then (negate (signum t111)) else 0.0)
-      let !s117 = (if t115 > 0 then (t114 * 0.9) else (negate (signum t113)))
-      let !s118 = (sqrt ((s116 * s116) + (s117 * s117)))
-      let !s119 = (if t115 > 0 then (t114 - (abs t111)) else (1.0 - (abs t113)))
-      t120 <- rdU meta 2
-      t121 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t121) > 0 then 1.0 else t121)) - t120) - 0.5) > 0 then do
-        wrU meta 2 (t120 + 1.0)
-        t122 <- rdU pos (3 * i31)
-        t123 <- rdU pos ((3 * i31) + 1)
-        t124 <- rdU pos ((3 * i31) + 2)
-        t125 <- rdU normal (3 * i31)
-        t126 <- rdU normal ((3 * i31) + 1)
-        t127 <- rdU normal ((3 * i31) + 2)
+      t114 <- getR v103
+      t115 <- getR v104
+      chkI verts ((12 * (truncate t114)) + (291 * i31)) 12 14
+      t116 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 12)
+      t117 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 13)
+      t118 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 14)
+      let !t119 = (exp ((0.9 * t118) - 0.7))
+      let !t120 = ((1.0 - (abs t118)) - (t119 - (abs t116)))
+      let !s121 = (if t120 > 0 then (negate (signum t116)) else 0.0)
+      let !s122 = (if t120 > 0 then (t119 * 0.9) else (negate (signum t118)))
+      let !s123 = (sqrt ((s121 * s121) + (s122 * s122)))
+      let !s124 = (if t120 > 0 then (t119 - (abs t116)) else (1.0 - (abs t118)))
+      t125 <- rdU meta 2
+      t126 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t126) > 0 then 1.0 else t126)) - t125) - 0.5) > 0 then do
+        wrU meta 2 (t125 + 1.0)
+        t127 <- rdU pos (3 * i31)
+        t128 <- rdU pos ((3 * i31) + 1)
+        t129 <- rdU pos ((3 * i31) + 2)
+        t130 <- rdU normal (3 * i31)
+        t131 <- rdU normal ((3 * i31) + 1)
+        t132 <- rdU normal ((3 * i31) + 2)
         chkI axis (3 * i31) 0 2
-        t128 <- rdU axis (3 * i31)
-        t129 <- rdU axis ((3 * i31) + 1)
-        t130 <- rdU axis ((3 * i31) + 2)
-        let !s131 = ((t126 * t130) - (t127 * t129))
-        let !s132 = ((t127 * t128) - (t125 * t130))
-        let !s133 = ((t125 * t129) - (t126 * t128))
+        t133 <- rdU axis (3 * i31)
+        t134 <- rdU axis ((3 * i31) + 1)
+        t135 <- rdU axis ((3 * i31) + 2)
+        let !s136 = ((t131 * t135) - (t132 * t134))
+        let !s137 = ((t132 * t133) - (t130 * t135))
+        let !s138 = ((t130 * t134) - (t131 * t133))
         chkI scalars (6 * i31) 0 0
-        t134 <- rdU scalars (6 * i31)
-        t135 <- rdU scalars ((6 * i31) + 5)
-        t136 <- rdU scalars ((6 * i31) + 2)
-        t137 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t120)) 0 29
-        wrU contacts (30 * (truncate t120)) d31
-        wrU contacts ((30 * (truncate t120)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t120)) + 2) d31
-        wrU contacts ((30 * (truncate t120)) + 3) 8.0
-        let !t138 = (if s118 > 0 then (recip (if (s118 - 1.0e-300) > 0 then s118 else 1.0e-300)) else 0.0)
-        let !t139 = (t138 * s116)
-        wrU contacts ((30 * (truncate t120)) + 4) (t139 + (negate (((t125 * t139) + (t127 * (t138 * s117))) * t125)))
-        wrU contacts ((30 * (truncate t120)) + 5) (negate (((t125 * t139) + (t127 * (t138 * s117))) * t126))
-        let !t140 = (t138 * s117)
-        wrU contacts ((30 * (truncate t120)) + 6) (t140 + (negate (((t125 * t139) + (t127 * t140)) * t127)))
-        let !t141 = (t112 + (negate t123))
-        wrU contacts ((30 * (truncate t120)) + 7) ((((t141 * t140) * t125) + ((((t113 + (negate t124)) * t139) - ((t111 + (negate t122)) * t140)) * t126)) + ((negate (t141 * t139)) * t127))
-        let !t142 = (t126 * t140)
-        wrU contacts ((30 * (truncate t120)) + 12) (t142 + (negate ((((t125 * t142) + (t126 * ((t127 * t139) - (t125 * t140)))) + (t127 * (negate (t126 * t139)))) * t125)))
-        let !t143 = ((t127 * t139) - (t125 * t140))
-        wrU contacts ((30 * (truncate t120)) + 13) (t143 + (negate ((((t125 * t142) + (t126 * t143)) + (t127 * (negate (t126 * t139)))) * t126)))
-        let !t144 = (negate (t126 * t139))
-        wrU contacts ((30 * (truncate t120)) + 14) (t144 + (negate ((((t125 * t142) + (t126 * t143)) + (t127 * t144)) * t127)))
-        let !t145 = (t113 + (negate t124))
-        let !t146 = (t111 + (negate t122))
-        wrU contacts ((30 * (truncate t120)) + 15) (((((t141 * t144) - (t145 * t143)) * t125) + (((t145 * t142) - (t146 * t144)) * t126)) + (((t146 * t143) - (t141 * t142)) * t127))
-        wrU contacts ((30 * (truncate t120)) + 20) (if s118 > 0 then ((negate s119) / (if (s118 - 1.0e-300) > 0 then s118 else 1.0e-300)) else 0.0)
-        wrU contacts ((30 * (truncate t120)) + 26) 1.0
-        wrU contacts ((30 * (truncate t120)) + 27) t111
-        wrU contacts ((30 * (truncate t120)) + 28) t112
-        wrU contacts ((30 * (truncate t120)) + 29) t113
+        t139 <- rdU scalars (6 * i31)
+        t140 <- rdU scalars ((6 * i31) + 5)
+        t141 <- rdU scalars ((6 * i31) + 2)
+        t142 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t125)) 0 29
+        wrU contacts (30 * (truncate t125)) d31
+        wrU contacts ((30 * (truncate t125)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t125)) + 2) d31
+        wrU contacts ((30 * (truncate t125)) + 3) 8.0
+        let !t143 = (if s123 > 0 then (recip (if (s123 - 1.0e-300) > 0 then s123 else 1.0e-300)) else 0.0)
+        let !t144 = (t143 * s121)
+        wrU contacts ((30 * (truncate t125)) + 4) (t144 + (negate (((t130 * t144) + (t132 * (t143 * s122))) * t130)))
+        wrU contacts ((30 * (truncate t125)) + 5) (negate (((t130 * t144) + (t132 * (t143 * s122))) * t131))
+        let !t145 = (t143 * s122)
+        wrU contacts ((30 * (truncate t125)) + 6) (t145 + (negate (((t130 * t144) + (t132 * t145)) * t132)))
+        let !t146 = (t117 + (negate t128))
+        wrU contacts ((30 * (truncate t125)) + 7) ((((t146 * t145) * t130) + ((((t118 + (negate t129)) * t144) - ((t116 + (negate t127)) * t145)) * t131)) + ((negate (t146 * t144)) * t132))
+        let !t147 = (t131 * t145)
+        wrU contacts ((30 * (truncate t125)) + 12) (t147 + (negate ((((t130 * t147) + (t131 * ((t132 * t144) - (t130 * t145)))) + (t132 * (negate (t131 * t144)))) * t130)))
+        let !t148 = ((t132 * t144) - (t130 * t145))
+        wrU contacts ((30 * (truncate t125)) + 13) (t148 + (negate ((((t130 * t147) + (t131 * t148)) + (t132 * (negate (t131 * t144)))) * t131)))
+        let !t149 = (negate (t131 * t144))
+        wrU contacts ((30 * (truncate t125)) + 14) (t149 + (negate ((((t130 * t147) + (t131 * t148)) + (t132 * t149)) * t132)))
+        let !t150 = (t118 + (negate t129))
+        let !t151 = (t116 + (negate t127))
+        wrU contacts ((30 * (truncate t125)) + 15) (((((t146 * t149) - (t150 * t148)) * t130) + (((t150 * t147) - (t151 * t149)) * t131)) + (((t151 * t148) - (t146 * t147)) * t132))
+        wrU contacts ((30 * (truncate t125)) + 20) (if s123 > 0 then ((negate s124) / (if (s123 - 1.0e-300) > 0 then s123 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t125)) + 26) 1.0
+        wrU contacts ((30 * (truncate t125)) + 27) t116
+        wrU contacts ((30 * (truncate t125)) + 28) t117
+        wrU contacts ((30 * (truncate t125)) + 29) t118
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t147 <- rdU pos (-3)
-          t148 <- rdU pos (-2)
-          t149 <- rdU pos (-1)
+          t152 <- rdU pos (-3)
+          t153 <- rdU pos (-2)
+          t154 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t150 <- rdU normal (-3)
-          t151 <- rdU normal (-2)
-          t152 <- rdU normal (-1)
+          t155 <- rdU normal (-3)
+          t156 <- rdU normal (-2)
+          t157 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t153 <- rdU axis (-3)
-          t154 <- rdU axis (-2)
-          t155 <- rdU axis (-1)
-          let !s156 = ((t151 * t155) - (t152 * t154))
-          let !s157 = ((t152 * t153) - (t150 * t155))
-          let !s158 = ((t150 * t154) - (t151 * t153))
+          t158 <- rdU axis (-3)
+          t159 <- rdU axis (-2)
+          t160 <- rdU axis (-1)
+          let !s161 = ((t156 * t160) - (t157 * t159))
+          let !s162 = ((t157 * t158) - (t155 * t160))
+          let !s163 = ((t155 * t159) - (t156 * t158))
           chkI scalars 0 (-6) (-1)
-          t159 <- rdU scalars (-6)
-          t160 <- rdU scalars (-1)
-          t161 <- rdU scalars (-4)
-          t162 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t120)) + 8) (t139 + (negate (((t150 * t139) + (t152 * t140)) * t150)))
-          wrU contacts ((30 * (truncate t120)) + 9) (negate (((t150 * t139) + (t152 * t140)) * t151))
-          wrU contacts ((30 * (truncate t120)) + 10) (t140 + (negate (((t150 * t139) + (t152 * t140)) * t152)))
-          let !t163 = (t112 + (negate t148))
-          wrU contacts ((30 * (truncate t120)) + 11) ((((t163 * t140) * t150) + ((((t113 + (negate t149)) * t139) - ((t111 + (negate t147)) * t140)) * t151)) + ((negate (t163 * t139)) * t152))
-          wrU contacts ((30 * (truncate t120)) + 16) (t142 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t150)))
-          wrU contacts ((30 * (truncate t120)) + 17) (t143 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t151)))
-          wrU contacts ((30 * (truncate t120)) + 18) (t144 + (negate ((((t150 * t142) + (t151 * t143)) + (t152 * t144)) * t152)))
-          let !t164 = (t113 + (negate t149))
-          let !t165 = (t111 + (negate t147))
-          wrU contacts ((30 * (truncate t120)) + 19) (((((t163 * t144) - (t164 * t143)) * t150) + (((t164 * t142) - (t165 * t144)) * t151)) + (((t165 * t143) - (t163 * t142)) * t152))
+          t164 <- rdU scalars (-6)
+          t165 <- rdU scalars (-1)
+          t166 <- rdU scalars (-4)
+          t167 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t125)) + 8) (t144 + (negate (((t155 * t144) + (t157 * t145)) * t155)))
+          wrU contacts ((30 * (truncate t125)) + 9) (negate (((t155 * t144) + (t157 * t145)) * t156))
+          wrU contacts ((30 * (truncate t125)) + 10) (t145 + (negate (((t155 * t144) + (t157 * t145)) * t157)))
+          let !t168 = (t117 + (negate t153))
+          wrU contacts ((30 * (truncate t125)) + 11) ((((t168 * t145) * t155) + ((((t118 + (negate t154)) * t144) - ((t116 + (negate t152)) * t145)) * t156)) + ((negate (t168 * t144)) * t157))
+          wrU contacts ((30 * (truncate t125)) + 16) (t147 + (negate ((((t155 * t147) + (t156 * t148)) + (t157 * t149)) * t155)))
+          wrU contacts ((30 * (truncate t125)) + 17) (t148 + (negate ((((t155 * t147) + (t156 * t148)) + (t157 * t149)) * t156)))
+          wrU contacts ((30 * (truncate t125)) + 18) (t149 + (negate ((((t155 * t147) + (t156 * t148)) + (t157 * t149)) * t157)))
+          let !t169 = (t118 + (negate t154))
+          let !t170 = (t116 + (negate t152))
+          wrU contacts ((30 * (truncate t125)) + 19) (((((t168 * t149) - (t169 * t148)) * t155) + (((t169 * t147) - (t170 * t149)) * t156)) + (((t170 * t148) - (t168 * t147)) * t157))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t120)) + 8) 0.0
-          wrU contacts ((30 * (truncate t120)) + 9) 0.0
-          wrU contacts ((30 * (truncate t120)) + 10) 0.0
-          wrU contacts ((30 * (truncate t120)) + 11) 0.0
-          wrU contacts ((30 * (truncate t120)) + 16) 0.0
-          wrU contacts ((30 * (truncate t120)) + 17) 0.0
-          wrU contacts ((30 * (truncate t120)) + 18) 0.0
-          wrU contacts ((30 * (truncate t120)) + 19) 0.0
+          wrU contacts ((30 * (truncate t125)) + 8) 0.0
+          wrU contacts ((30 * (truncate t125)) + 9) 0.0
+          wrU contacts ((30 * (truncate t125)) + 10) 0.0
+          wrU contacts ((30 * (truncate t125)) + 11) 0.0
+          wrU contacts ((30 * (truncate t125)) + 16) 0.0
+          wrU contacts ((30 * (truncate t125)) + 17) 0.0
+          wrU contacts ((30 * (truncate t125)) + 18) 0.0
+          wrU contacts ((30 * (truncate t125)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t166 <- rdU meta 6
-        wrU meta 6 (t166 + 1.0)
+        t171 <- rdU meta 6
+        wrU meta 6 (t171 + 1.0)
         pure ()
-      if (abs (t110 - t109)) > 0 then do
-        chkI verts ((12 * (truncate t110)) + (291 * i31)) 12 14
-        t167 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 12)
-        t168 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 13)
-        t169 <- rdU verts (((12 * (truncate t110)) + (291 * i31)) + 14)
-        let !t170 = (exp ((0.9 * t169) - 0.7))
-        let !t171 = ((1.0 - (abs t169)) - (t170 - (abs t167)))
-        let !s172 = (if t171 > 0 then (negate (signum t167)) else 0.0)
-        let !s173 = (if t171 > 0 then (t170 * 0.9) else (negate (signum t169)))
-        let !s174 = (sqrt ((s172 * s172) + (s173 * s173)))
-        let !s175 = (if t171 > 0 then (t170 - (abs t167)) else (1.0 - (abs t169)))
-        t176 <- rdU meta 2
-        t177 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t177) > 0 then 1.0 else t177)) - t176) - 0.5) > 0 then do
-          wrU meta 2 (t176 + 1.0)
-          t178 <- rdU pos (3 * i31)
-          t179 <- rdU pos ((3 * i31) + 1)
-          t180 <- rdU pos ((3 * i31) + 2)
-          t181 <- rdU normal (3 * i31)
-          t182 <- rdU normal ((3 * i31) + 1)
-          t183 <- rdU normal ((3 * i31) + 2)
+      if (abs (t115 - t114)) > 0 then do
+        chkI verts ((12 * (truncate t115)) + (291 * i31)) 12 14
+        t172 <- rdU verts (((12 * (truncate t115)) + (291 * i31)) + 12)
+        t173 <- rdU verts (((12 * (truncate t115)) + (291 * i31)) + 13)
+        t174 <- rdU verts (((12 * (truncate t115)) + (291 * i31)) + 14)
+        let !t175 = (exp ((0.9 * t174) - 0.7))
+        let !t176 = ((1.0 - (abs t174)) - (t175 - (abs t172)))
+        let !s177 = (if t176 > 0 then (negate (signum t172)) else 0.0)
+        let !s178 = (if t176 > 0 then (t175 * 0.9) else (negate (signum t174)))
+        let !s179 = (sqrt ((s177 * s177) + (s178 * s178)))
+        let !s180 = (if t176 > 0 then (t175 - (abs t172)) else (1.0 - (abs t174)))
+        t181 <- rdU meta 2
+        t182 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t182) > 0 then 1.0 else t182)) - t181) - 0.5) > 0 then do
+          wrU meta 2 (t181 + 1.0)
+          t183 <- rdU pos (3 * i31)
+          t184 <- rdU pos ((3 * i31) + 1)
+          t185 <- rdU pos ((3 * i31) + 2)
+          t186 <- rdU normal (3 * i31)
+          t187 <- rdU normal ((3 * i31) + 1)
+          t188 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t184 <- rdU axis (3 * i31)
-          t185 <- rdU axis ((3 * i31) + 1)
-          t186 <- rdU axis ((3 * i31) + 2)
-          let !s187 = ((t182 * t186) - (t183 * t185))
-          let !s188 = ((t183 * t184) - (t181 * t186))
-          let !s189 = ((t181 * t185) - (t182 * t184))
+          t189 <- rdU axis (3 * i31)
+          t190 <- rdU axis ((3 * i31) + 1)
+          t191 <- rdU axis ((3 * i31) + 2)
+          let !s192 = ((t187 * t191) - (t188 * t190))
+          let !s193 = ((t188 * t189) - (t186 * t191))
+          let !s194 = ((t186 * t190) - (t187 * t189))
           chkI scalars (6 * i31) 0 0
-          t190 <- rdU scalars (6 * i31)
-          t191 <- rdU scalars ((6 * i31) + 5)
-          t192 <- rdU scalars ((6 * i31) + 2)
-          t193 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t176)) 0 29
-          wrU contacts (30 * (truncate t176)) d31
-          wrU contacts ((30 * (truncate t176)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t176)) + 2) d31
-          wrU contacts ((30 * (truncate t176)) + 3) 9.0
-          let !t194 = (if s174 > 0 then (recip (if (s174 - 1.0e-300) > 0 then s174 else 1.0e-300)) else 0.0)
-          let !t195 = (t194 * s172)
-          wrU contacts ((30 * (truncate t176)) + 4) (t195 + (negate (((t181 * t195) + (t183 * (t194 * s173))) * t181)))
-          wrU contacts ((30 * (truncate t176)) + 5) (negate (((t181 * t195) + (t183 * (t194 * s173))) * t182))
-          let !t196 = (t194 * s173)
-          wrU contacts ((30 * (truncate t176)) + 6) (t196 + (negate (((t181 * t195) + (t183 * t196)) * t183)))
-          let !t197 = (t168 + (negate t179))
-          wrU contacts ((30 * (truncate t176)) + 7) ((((t197 * t196) * t181) + ((((t169 + (negate t180)) * t195) - ((t167 + (negate t178)) * t196)) * t182)) + ((negate (t197 * t195)) * t183))
-          let !t198 = (t182 * t196)
-          wrU contacts ((30 * (truncate t176)) + 12) (t198 + (negate ((((t181 * t198) + (t182 * ((t183 * t195) - (t181 * t196)))) + (t183 * (negate (t182 * t195)))) * t181)))
-          let !t199 = ((t183 * t195) - (t181 * t196))
-          wrU contacts ((30 * (truncate t176)) + 13) (t199 + (negate ((((t181 * t198) + (t182 * t199)) + (t183 * (negate (t182 * t195)))) * t182)))
-          let !t200 = (negate (t182 * t195))
-          wrU contacts ((30 * (truncate t176)) + 14) (t200 + (negate ((((t181 * t198) + (t182 * t199)) + (t183 * t200)) * t183)))
-          let !t201 = (t169 + (negate t180))
-          let !t202 = (t167 + (negate t178))
-          wrU contacts ((30 * (truncate t176)) + 15) (((((t197 * t200) - (t201 * t199)) * t181) + (((t201 * t198) - (t202 * t200)) * t182)) + (((t202 * t199) - (t197 * t198)) * t183))
-          wrU contacts ((30 * (truncate t176)) + 20) (if s174 > 0 then ((negate s175) / (if (s174 - 1.0e-300) > 0 then s174 else 1.0e-300)) else 0.0)
-          wrU contacts ((30 * (truncate t176)) + 26) 1.0
-          wrU contacts ((30 * (truncate t176)) + 27) t167
-          wrU contacts ((30 * (truncate t176)) + 28) t168
-          wrU contacts ((30 * (truncate t176)) + 29) t169
+          t195 <- rdU scalars (6 * i31)
+          t196 <- rdU scalars ((6 * i31) + 5)
+          t197 <- rdU scalars ((6 * i31) + 2)
+          t198 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t181)) 0 29
+          wrU contacts (30 * (truncate t181)) d31
+          wrU contacts ((30 * (truncate t181)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t181)) + 2) d31
+          wrU contacts ((30 * (truncate t181)) + 3) 9.0
+          let !t199 = (if s179 > 0 then (recip (if (s179 - 1.0e-300) > 0 then s179 else 1.0e-300)) else 0.0)
+          let !t200 = (t199 * s177)
+          wrU contacts ((30 * (truncate t181)) + 4) (t200 + (negate (((t186 * t200) + (t188 * (t199 * s178))) * t186)))
+          wrU contacts ((30 * (truncate t181)) + 5) (negate (((t186 * t200) + (t188 * (t199 * s178))) * t187))
+          let !t201 = (t199 * s178)
+          wrU contacts ((30 * (truncate t181)) + 6) (t201 + (negate (((t186 * t200) + (t188 * t201)) * t188)))
+          let !t202 = (t173 + (negate t184))
+          wrU contacts ((30 * (truncate t181)) + 7) ((((t202 * t201) * t186) + ((((t174 + (negate t185)) * t200) - ((t172 + (negate t183)) * t201)) * t187)) + ((negate (t202 * t200)) * t188))
+          let !t203 = (t187 * t201)
+          wrU contacts ((30 * (truncate t181)) + 12) (t203 + (negate ((((t186 * t203) + (t187 * ((t188 * t200) - (t186 * t201)))) + (t188 * (negate (t187 * t200)))) * t186)))
+          let !t204 = ((t188 * t200) - (t186 * t201))
+          wrU contacts ((30 * (truncate t181)) + 13) (t204 + (negate ((((t186 * t203) + (t187 * t204)) + (t188 * (negate (t187 * t200)))) * t187)))
+          let !t205 = (negate (t187 * t200))
+          wrU contacts ((30 * (truncate t181)) + 14) (t205 + (negate ((((t186 * t203) + (t187 * t204)) + (t188 * t205)) * t188)))
+          let !t206 = (t174 + (negate t185))
+          let !t207 = (t172 + (negate t183))
+          wrU contacts ((30 * (truncate t181)) + 15) (((((t202 * t205) - (t206 * t204)) * t186) + (((t206 * t203) - (t207 * t205)) * t187)) + (((t207 * t204) - (t202 * t203)) * t188))
+          wrU contacts ((30 * (truncate t181)) + 20) (if s179 > 0 then ((negate s180) / (if (s179 - 1.0e-300) > 0 then s179 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t181)) + 26) 1.0
+          wrU contacts ((30 * (truncate t181)) + 27) t172
+          wrU contacts ((30 * (truncate t181)) + 28) t173
+          wrU contacts ((30 * (truncate t181)) + 29) t174
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t203 <- rdU pos (-3)
-            t204 <- rdU pos (-2)
-            t205 <- rdU pos (-1)
+            t208 <- rdU pos (-3)
+            t209 <- rdU pos (-2)
+            t210 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t206 <- rdU normal (-3)
-            t207 <- rdU normal (-2)
-            t208 <- rdU normal (-1)
+            t211 <- rdU normal (-3)
+            t212 <- rdU normal (-2)
+            t213 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t209 <- rdU axis (-3)
-            t210 <- rdU axis (-2)
-            t211 <- rdU axis (-1)
-            let !s212 = ((t207 * t211) - (t208 * t210))
-            let !s213 = ((t208 * t209) - (t206 * t211))
-            let !s214 = ((t206 * t210) - (t207 * t209))
+            t214 <- rdU axis (-3)
+            t215 <- rdU axis (-2)
+            t216 <- rdU axis (-1)
+            let !s217 = ((t212 * t216) - (t213 * t215))
+            let !s218 = ((t213 * t214) - (t211 * t216))
+            let !s219 = ((t211 * t215) - (t212 * t214))
             chkI scalars 0 (-6) (-1)
-            t215 <- rdU scalars (-6)
-            t216 <- rdU scalars (-1)
-            t217 <- rdU scalars (-4)
-            t218 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t176)) + 8) (t195 + (negate (((t206 * t195) + (t208 * t196)) * t206)))
-            wrU contacts ((30 * (truncate t176)) + 9) (negate (((t206 * t195) + (t208 * t196)) * t207))
-            wrU contacts ((30 * (truncate t176)) + 10) (t196 + (negate (((t206 * t195) + (t208 * t196)) * t208)))
-            let !t219 = (t168 + (negate t204))
-            wrU contacts ((30 * (truncate t176)) + 11) ((((t219 * t196) * t206) + ((((t169 + (negate t205)) * t195) - ((t167 + (negate t203)) * t196)) * t207)) + ((negate (t219 * t195)) * t208))
-            wrU contacts ((30 * (truncate t176)) + 16) (t198 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t206)))
-            wrU contacts ((30 * (truncate t176)) + 17) (t199 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t207)))
-            wrU contacts ((30 * (truncate t176)) + 18) (t200 + (negate ((((t206 * t198) + (t207 * t199)) + (t208 * t200)) * t208)))
-            let !t220 = (t169 + (negate t205))
-            let !t221 = (t167 + (negate t203))
-            wrU contacts ((30 * (truncate t176)) + 19) (((((t219 * t200) - (t220 * t199)) * t206) + (((t220 * t198) - (t221 * t200)) * t207)) + (((t221 * t199) - (t219 * t198)) * t208))
+            t220 <- rdU scalars (-6)
+            t221 <- rdU scalars (-1)
+            t222 <- rdU scalars (-4)
+            t223 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t181)) + 8) (t200 + (negate (((t211 * t200) + (t213 * t201)) * t211)))
+            wrU contacts ((30 * (truncate t181)) + 9) (negate (((t211 * t200) + (t213 * t201)) * t212))
+            wrU contacts ((30 * (truncate t181)) + 10) (t201 + (negate (((t211 * t200) + (t213 * t201)) * t213)))
+            let !t224 = (t173 + (negate t209))
+            wrU contacts ((30 * (truncate t181)) + 11) ((((t224 * t201) * t211) + ((((t174 + (negate t210)) * t200) - ((t172 + (negate t208)) * t201)) * t212)) + ((negate (t224 * t200)) * t213))
+            wrU contacts ((30 * (truncate t181)) + 16) (t203 + (negate ((((t211 * t203) + (t212 * t204)) + (t213 * t205)) * t211)))
+            wrU contacts ((30 * (truncate t181)) + 17) (t204 + (negate ((((t211 * t203) + (t212 * t204)) + (t213 * t205)) * t212)))
+            wrU contacts ((30 * (truncate t181)) + 18) (t205 + (negate ((((t211 * t203) + (t212 * t204)) + (t213 * t205)) * t213)))
+            let !t225 = (t174 + (negate t210))
+            let !t226 = (t172 + (negate t208))
+            wrU contacts ((30 * (truncate t181)) + 19) (((((t224 * t205) - (t225 * t204)) * t211) + (((t225 * t203) - (t226 * t205)) * t212)) + (((t226 * t204) - (t224 * t203)) * t213))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t176)) + 8) 0.0
-            wrU contacts ((30 * (truncate t176)) + 9) 0.0
-            wrU contacts ((30 * (truncate t176)) + 10) 0.0
-            wrU contacts ((30 * (truncate t176)) + 11) 0.0
-            wrU contacts ((30 * (truncate t176)) + 16) 0.0
-            wrU contacts ((30 * (truncate t176)) + 17) 0.0
-            wrU contacts ((30 * (truncate t176)) + 18) 0.0
-            wrU contacts ((30 * (truncate t176)) + 19) 0.0
+            wrU contacts ((30 * (truncate t181)) + 8) 0.0
+            wrU contacts ((30 * (truncate t181)) + 9) 0.0
+            wrU contacts ((30 * (truncate t181)) + 10) 0.0
+            wrU contacts ((30 * (truncate t181)) + 11) 0.0
+            wrU contacts ((30 * (truncate t181)) + 16) 0.0
+            wrU contacts ((30 * (truncate t181)) + 17) 0.0
+            wrU contacts ((30 * (truncate t181)) + 18) 0.0
+            wrU contacts ((30 * (truncate t181)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t222 <- rdU meta 6
-          wrU meta 6 (t222 + 1.0)
+          t227 <- rdU meta 6
+          wrU meta 6 (t227 + 1.0)
           pure ()
         pure ()
       else do
@@ -502,132 +514,132 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     else do
       pure ()
     chkI verts (291 * i31) 0 2
-    t223 <- rdU verts (291 * i31)
-    t224 <- rdU verts ((291 * i31) + 1)
-    t225 <- rdU verts ((291 * i31) + 2)
-    v226 <- newR 1.0
-    loopI 0.0 24.0 $ \i227 -> do
-      let !d227 = fromIntegral i227 :: Double
-      chkI verts ((12 * i227) + (291 * i31)) 12 14
-      t228 <- rdU verts (((12 * i227) + (291 * i31)) + 12)
-      t229 <- rdU verts (((12 * i227) + (291 * i31)) + 13)
-      t230 <- rdU verts (((12 * i227) + (291 * i31)) + 14)
-      chkI radii (i227 + (24 * i31)) 0 0
-      t231 <- rdU radii (i227 + (24 * i31))
-      t232 <- getR v226
-      let !t233 = (t228 + (negate t223))
-      let !t234 = (t229 + (negate t224))
-      let !t235 = (t230 + (negate t225))
-      let !t236 = (if t231 > 0 then ((sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235))) / t231) else 1.0)
-      setR v226 (if (t232 - t236) > 0 then t236 else t232)
+    t228 <- rdU verts (291 * i31)
+    t229 <- rdU verts ((291 * i31) + 1)
+    t230 <- rdU verts ((291 * i31) + 2)
+    v231 <- newR 1.0
+    loopI 0.0 24.0 $ \i232 -> do
+      let !d232 = fromIntegral i232 :: Double
+      chkI verts ((12 * i232) + (291 * i31)) 12 14
+      t233 <- rdU verts (((12 * i232) + (291 * i31)) + 12)
+      t234 <- rdU verts (((12 * i232) + (291 * i31)) + 13)
+      t235 <- rdU verts (((12 * i232) + (291 * i31)) + 14)
+      chkI radii (i232 + (24 * i31)) 0 0
+      t236 <- rdU radii (i232 + (24 * i31))
+      t237 <- getR v231
+      let !t238 = (t233 + (negate t228))
+      let !t239 = (t234 + (negate t229))
+      let !t240 = (t235 + (negate t230))
+      let !t241 = (if t236 > 0 then ((sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240))) / t236) else 1.0)
+      setR v231 (if (t237 - t241) > 0 then t241 else t237)
       pure ()
-    t237 <- getR v226
-    if (0.8 - t237) > 0 then do
-      v238 <- newR 0.0
-      v239 <- newR 0.0
-      v240 <- newR 0.0
-      v241 <- newR 0.0
-      v242 <- newR 0.0
+    t242 <- getR v231
+    if (0.8 - t242) > 0 then do
       v243 <- newR 0.0
       v244 <- newR 0.0
-      loopI 0.0 24.0 $ \i245 -> do
-        let !d245 = fromIntegral i245 :: Double
-        chkI radii (i245 + (24 * i31)) 0 0
-        t246 <- rdU radii (i245 + (24 * i31))
-        loopI 6.0 12.0 $ \i247 -> do
-          let !d247 = fromIntegral i247 :: Double
-          let !t248 = (d245 + d247)
-          chkI radii (truncate ((24.0 * d31) + (t248 - (24.0 * (floorF (t248 / 24.0)))))) 0 0
-          t249 <- rdU radii (truncate ((24.0 * d31) + (t248 - (24.0 * (floorF (t248 / 24.0))))))
-          loopI 1.0 4.0 $ \i250 -> do
-            let !d250 = fromIntegral i250 :: Double
-            chkI verts ((12 * i245) + (3 * i250) + (291 * i31)) 0 5
-            t251 <- rdU verts ((12 * i245) + (3 * i250) + (291 * i31))
-            t252 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 1)
-            t253 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 2)
-            t254 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 3)
-            t255 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 4)
-            t256 <- rdU verts (((12 * i245) + (3 * i250) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i257 -> do
-              let !d257 = fromIntegral i257 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0)))) 0 0
-              t258 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 1.0)) 0 0
-              t259 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 2.0)) 0 0
-              t260 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d257 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257))) 0 0
-              t261 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 1.0)) 0 0
-              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 2.0)) 0 0
-              t263 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d257)) + 2.0))
-              t264 <- getR v238
-              let !t265 = (negate t258)
-              let !t266 = (t261 + t265)
-              let !t267 = (negate t259)
-              let !t268 = (t262 + t267)
-              let !t269 = (negate t260)
-              let !t270 = (t263 + t269)
-              let !t271 = (((t266 * t266) + (t268 * t268)) + (t270 * t270))
-              let !t272 = (t254 + (negate t251))
-              let !t273 = (t255 + (negate t252))
-              let !t274 = (t256 + (negate t253))
-              let !t275 = (((t272 * t266) + (t273 * t268)) + (t274 * t270))
-              let !t276 = (((t272 * t272) + (t273 * t273)) + (t274 * t274))
-              let !t277 = ((t276 * t271) - (t275 * t275))
-              let !t278 = (t251 + t265)
-              let !t279 = (t252 + t267)
-              let !t280 = (t253 + t269)
-              let !t281 = (((t266 * t278) + (t268 * t279)) + (t270 * t280))
-              let !t282 = (((t272 * t278) + (t273 * t279)) + (t274 * t280))
-              let !t283 = (if ((abs t277) - 1.0e-300) > 0 then (((t275 * t281) - (t282 * t271)) / t277) else 0.0)
-              let !t284 = (if (t283 - 1.0) > 0 then 1.0 else t283)
-              let !t285 = (if (t277 - ((1.0e-12 * t276) * t271)) > 0 then (if (negate t284) > 0 then 0.0 else t284) else 0.0)
-              let !t286 = (if ((abs t271) - 1.0e-300) > 0 then (((t275 * t285) + t281) / t271) else 0.0)
-              let !t287 = ((abs t276) - 1.0e-300)
-              let !t288 = (if t287 > 0 then ((negate t282) / t276) else 0.0)
+      v245 <- newR 0.0
+      v246 <- newR 0.0
+      v247 <- newR 0.0
+      v248 <- newR 0.0
+      v249 <- newR 0.0
+      loopI 0.0 24.0 $ \i250 -> do
+        let !d250 = fromIntegral i250 :: Double
+        chkI radii (i250 + (24 * i31)) 0 0
+        t251 <- rdU radii (i250 + (24 * i31))
+        loopI 6.0 12.0 $ \i252 -> do
+          let !d252 = fromIntegral i252 :: Double
+          let !t253 = (d250 + d252)
+          chkI radii (truncate ((24.0 * d31) + (t253 - (24.0 * (floorF (t253 / 24.0)))))) 0 0
+          t254 <- rdU radii (truncate ((24.0 * d31) + (t253 - (24.0 * (floorF (t253 / 24.0))))))
+          loopI 1.0 4.0 $ \i255 -> do
+            let !d255 = fromIntegral i255 :: Double
+            chkI verts ((12 * i250) + (3 * i255) + (291 * i31)) 0 5
+            t256 <- rdU verts ((12 * i250) + (3 * i255) + (291 * i31))
+            t257 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 1)
+            t258 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 2)
+            t259 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 3)
+            t260 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 4)
+            t261 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 5)
+            loopI 1.0 4.0 $ \i262 -> do
+              let !d262 = fromIntegral i262 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0)))) 0 0
+              t263 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 1.0)) 0 0
+              t264 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 2.0)) 0 0
+              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262))) 0 0
+              t266 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 1.0)) 0 0
+              t267 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 2.0)) 0 0
+              t268 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 2.0))
+              t269 <- getR v243
+              let !t270 = (negate t263)
+              let !t271 = (t266 + t270)
+              let !t272 = (negate t264)
+              let !t273 = (t267 + t272)
+              let !t274 = (negate t265)
+              let !t275 = (t268 + t274)
+              let !t276 = (((t271 * t271) + (t273 * t273)) + (t275 * t275))
+              let !t277 = (t259 + (negate t256))
+              let !t278 = (t260 + (negate t257))
+              let !t279 = (t261 + (negate t258))
+              let !t280 = (((t277 * t271) + (t278 * t273)) + (t279 * t275))
+              let !t281 = (((t277 * t277) + (t278 * t278)) + (t279 * t279))
+              let !t282 = ((t281 * t276) - (t280 * t280))
+              let !t283 = (t256 + t270)
+              let !t284 = (t257 + t272)
+              let !t285 = (t258 + t274)
+              let !t286 = (((t271 * t283) + (t273 * t284)) + (t275 * t285))
+              let !t287 = (((t277 * t283) + (t278 * t284)) + (t279 * t285))
+              let !t288 = (if ((abs t282) - 1.0e-300) > 0 then (((t280 * t286) - (t287 * t276)) / t282) else 0.0)
               let !t289 = (if (t288 - 1.0) > 0 then 1.0 else t288)
-              let !t290 = (t286 - 1.0)
-              let !t291 = (if t287 > 0 then ((t275 - t282) / t276) else 0.0)
-              let !t292 = (if (t291 - 1.0) > 0 then 1.0 else t291)
-              let !t293 = (if (negate t286) > 0 then (if (negate t289) > 0 then 0.0 else t289) else (if t290 > 0 then (if (negate t292) > 0 then 0.0 else t292) else t285))
-              let !t294 = (if t290 > 0 then 1.0 else t286)
-              let !t295 = (if (negate t294) > 0 then 0.0 else t294)
-              let !t296 = ((0.5 * ((t246 - ((t246 * (d250 + t293)) / 4.0)) + (t249 - ((t249 * (d257 + t295)) / 4.0)))) - t264)
-              let !t297 = ((t251 + (t293 * t272)) + (negate (t258 + (t295 * t266))))
-              let !t298 = ((t252 + (t293 * t273)) + (negate (t259 + (t295 * t268))))
-              let !t299 = ((t253 + (t293 * t274)) + (negate (t260 + (t295 * t270))))
-              let !t300 = ((0.3 * ((if (t249 - t246) > 0 then t246 else t249) / 4.0)) - (sqrt (((t297 * t297) + (t298 * t298)) + (t299 * t299))))
-              if (if (t296 - t300) > 0 then t300 else t296) > 0 then do
-                setR v238 (0.5 * ((t246 - ((t246 * (d250 + t293)) / 4.0)) + (t249 - ((t249 * (d257 + t295)) / 4.0))))
-                chkI verts ((12 * i245) + (291 * i31)) 3 5
-                t301 <- rdU verts (((12 * i245) + (291 * i31)) + 3)
-                t302 <- rdU verts (((12 * i245) + (291 * i31)) + 4)
-                t303 <- rdU verts (((12 * i245) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)))) 0 0
-                t304 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t305 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t306 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0))
-                setR v239 (t251 + (t293 * t272))
-                setR v240 (t252 + (t293 * t273))
-                setR v241 (t253 + (t293 * t274))
-                let !t307 = (negate t223)
-                let !t308 = (t301 + t307)
-                let !t309 = (negate t224)
-                let !t310 = (t302 + t309)
-                let !t311 = (negate t225)
-                let !t312 = (t303 + t311)
-                let !t313 = (sqrt (((t308 * t308) + (t310 * t310)) + (t312 * t312)))
-                let !t314 = (t304 + t307)
-                let !t315 = (t305 + t309)
-                let !t316 = (t306 + t311)
-                let !t317 = (sqrt (((t314 * t314) + (t315 * t315)) + (t316 * t316)))
-                setR v242 (negate (((if t313 > 0 then (recip (if (t313 - 1.0e-300) > 0 then t313 else 1.0e-300)) else 0.0) * t308) + ((if t317 > 0 then (recip (if (t317 - 1.0e-300) > 0 then t317 else 1.0e-300)) else 0.0) * t314)))
-                setR v243 (negate (((if t313 > 0 then (recip (if (t313 - 1.0e-300) > 0 then t313 else 1.0e-300)) else 0.0) * t310) + ((if t317 > 0 then (recip (if (t317 - 1.0e-300) > 0 then t317 else 1.0e-300)) else 0.0) * t315)))
-                setR v244 (negate (((if t313 > 0 then (recip (if (t313 - 1.0e-300) > 0 then t313 else 1.0e-300)) else 0.0) * t312) + ((if t317 > 0 then (recip (if (t317 - 1.0e-300) > 0 then t317 else 1.0e-300)) else 0.0) * t316)))
+              let !t290 = (if (t282 - ((1.0e-12 * t281) * t276)) > 0 then (if (negate t289) > 0 then 0.0 else t289) else 0.0)
+              let !t291 = (if ((abs t276) - 1.0e-300) > 0 then (((t280 * t290) + t286) / t276) else 0.0)
+              let !t292 = ((abs t281) - 1.0e-300)
+              let !t293 = (if t292 > 0 then ((negate t287) / t281) else 0.0)
+              let !t294 = (if (t293 - 1.0) > 0 then 1.0 else t293)
+              let !t295 = (t291 - 1.0)
+              let !t296 = (if t292 > 0 then ((t280 - t287) / t281) else 0.0)
+              let !t297 = (if (t296 - 1.0) > 0 then 1.0 else t296)
+              let !t298 = (if (negate t291) > 0 then (if (negate t294) > 0 then 0.0 else t294) else (if t295 > 0 then (if (negate t297) > 0 then 0.0 else t297) else t290))
+              let !t299 = (if t295 > 0 then 1.0 else t291)
+              let !t300 = (if (negate t299) > 0 then 0.0 else t299)
+              let !t301 = ((0.5 * ((t251 - ((t251 * (d255 + t298)) / 4.0)) + (t254 - ((t254 * (d262 + t300)) / 4.0)))) - t269)
+              let !t302 = ((t256 + (t298 * t277)) + (negate (t263 + (t300 * t271))))
+              let !t303 = ((t257 + (t298 * t278)) + (negate (t264 + (t300 * t273))))
+              let !t304 = ((t258 + (t298 * t279)) + (negate (t265 + (t300 * t275))))
+              let !t305 = ((0.3 * ((if (t254 - t251) > 0 then t251 else t254) / 4.0)) - (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304))))
+              if (if (t301 - t305) > 0 then t305 else t301) > 0 then do
+                setR v243 (0.5 * ((t251 - ((t251 * (d255 + t298)) / 4.0)) + (t254 - ((t254 * (d262 + t300)) / 4.0))))
+                chkI verts ((12 * i250) + (291 * i31)) 3 5
+                t306 <- rdU verts (((12 * i250) + (291 * i31)) + 3)
+                t307 <- rdU verts (((12 * i250) + (291 * i31)) + 4)
+                t308 <- rdU verts (((12 * i250) + (291 * i31)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)))) 0 0
+                t309 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t310 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t311 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 2.0))
+                setR v244 (t256 + (t298 * t277))
+                setR v245 (t257 + (t298 * t278))
+                setR v246 (t258 + (t298 * t279))
+                let !t312 = (negate t228)
+                let !t313 = (t306 + t312)
+                let !t314 = (negate t229)
+                let !t315 = (t307 + t314)
+                let !t316 = (negate t230)
+                let !t317 = (t308 + t316)
+                let !t318 = (sqrt (((t313 * t313) + (t315 * t315)) + (t317 * t317)))
+                let !t319 = (t309 + t312)
+                let !t320 = (t310 + t314)
+                let !t321 = (t311 + t316)
+                let !t322 = (sqrt (((t319 * t319) + (t320 * t320)) + (t321 * t321)))
+                setR v247 (negate (((if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0) * t313) + ((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t319)))
+                setR v248 (negate (((if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0) * t315) + ((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t320)))
+                setR v249 (negate (((if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0) * t317) + ((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t321)))
                 pure ()
               else do
                 pure ()
@@ -635,111 +647,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t318 <- getR v238
-      if t318 > 0 then do
-        t319 <- getR v239
-        t320 <- getR v240
-        t321 <- getR v241
-        t322 <- getR v242
-        t323 <- getR v243
+      t323 <- getR v243
+      if t323 > 0 then do
         t324 <- getR v244
-        let !t325 = (t323 + (negate t323))
-        let !t326 = (sqrt (((t322 * t322) + (t325 * t325)) + (t324 * t324)))
-        let !t327 = (if t326 > 0 then (recip (if (t326 - 1.0e-300) > 0 then t326 else 1.0e-300)) else 0.0)
-        let !s328 = (t327 * t322)
-        let !s329 = (t327 * t325)
-        let !s330 = (t327 * t324)
-        t331 <- rdU meta 2
-        t332 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t332) > 0 then 1.0 else t332)) - t331) - 0.5) > 0 then do
-          wrU meta 2 (t331 + 1.0)
-          t333 <- rdU pos (3 * i31)
-          t334 <- rdU pos ((3 * i31) + 1)
-          t335 <- rdU pos ((3 * i31) + 2)
-          t336 <- rdU normal (3 * i31)
-          t337 <- rdU normal ((3 * i31) + 1)
-          t338 <- rdU normal ((3 * i31) + 2)
+        t325 <- getR v245
+        t326 <- getR v246
+        t327 <- getR v247
+        t328 <- getR v248
+        t329 <- getR v249
+        let !t330 = (t328 + (negate t328))
+        let !t331 = (sqrt (((t327 * t327) + (t330 * t330)) + (t329 * t329)))
+        let !t332 = (if t331 > 0 then (recip (if (t331 - 1.0e-300) > 0 then t331 else 1.0e-300)) else 0.0)
+        let !s333 = (t332 * t327)
+        let !s334 = (t332 * t330)
+        let !s335 = (t332 * t329)
+        t336 <- rdU meta 2
+        t337 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t337) > 0 then 1.0 else t337)) - t336) - 0.5) > 0 then do
+          wrU meta 2 (t336 + 1.0)
+          t338 <- rdU pos (3 * i31)
+          t339 <- rdU pos ((3 * i31) + 1)
+          t340 <- rdU pos ((3 * i31) + 2)
+          t341 <- rdU normal (3 * i31)
+          t342 <- rdU normal ((3 * i31) + 1)
+          t343 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t339 <- rdU axis (3 * i31)
-          t340 <- rdU axis ((3 * i31) + 1)
-          t341 <- rdU axis ((3 * i31) + 2)
-          let !s342 = ((t337 * t341) - (t338 * t340))
-          let !s343 = ((t338 * t339) - (t336 * t341))
-          let !s344 = ((t336 * t340) - (t337 * t339))
+          t344 <- rdU axis (3 * i31)
+          t345 <- rdU axis ((3 * i31) + 1)
+          t346 <- rdU axis ((3 * i31) + 2)
+          let !s347 = ((t342 * t346) - (t343 * t345))
+          let !s348 = ((t343 * t344) - (t341 * t346))
+          let !s349 = ((t341 * t345) - (t342 * t344))
           chkI scalars (6 * i31) 0 0
-          t345 <- rdU scalars (6 * i31)
-          t346 <- rdU scalars ((6 * i31) + 5)
-          t347 <- rdU scalars ((6 * i31) + 2)
-          t348 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t331)) 0 29
-          wrU contacts (30 * (truncate t331)) d31
-          wrU contacts ((30 * (truncate t331)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t331)) + 2) d31
-          wrU contacts ((30 * (truncate t331)) + 3) 12.0
-          wrU contacts ((30 * (truncate t331)) + 4) (s328 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t336)))
-          wrU contacts ((30 * (truncate t331)) + 5) (s329 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t337)))
-          wrU contacts ((30 * (truncate t331)) + 6) (s330 + (negate ((((t336 * s328) + (t337 * s329)) + (t338 * s330)) * t338)))
-          wrU contacts ((30 * (truncate t331)) + 7) 0.0
-          wrU contacts ((30 * (truncate t331)) + 12) 0.0
-          wrU contacts ((30 * (truncate t331)) + 13) 0.0
-          wrU contacts ((30 * (truncate t331)) + 14) 0.0
-          wrU contacts ((30 * (truncate t331)) + 15) 0.0
-          wrU contacts ((30 * (truncate t331)) + 20) t318
-          wrU contacts ((30 * (truncate t331)) + 26) 0.6
-          wrU contacts ((30 * (truncate t331)) + 27) t319
-          wrU contacts ((30 * (truncate t331)) + 28) t320
-          wrU contacts ((30 * (truncate t331)) + 29) t321
+          t350 <- rdU scalars (6 * i31)
+          t351 <- rdU scalars ((6 * i31) + 5)
+          t352 <- rdU scalars ((6 * i31) + 2)
+          t353 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t336)) 0 29
+          wrU contacts (30 * (truncate t336)) d31
+          wrU contacts ((30 * (truncate t336)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t336)) + 2) d31
+          wrU contacts ((30 * (truncate t336)) + 3) 12.0
+          wrU contacts ((30 * (truncate t336)) + 4) (s333 + (negate ((((t341 * s333) + (t342 * s334)) + (t343 * s335)) * t341)))
+          wrU contacts ((30 * (truncate t336)) + 5) (s334 + (negate ((((t341 * s333) + (t342 * s334)) + (t343 * s335)) * t342)))
+          wrU contacts ((30 * (truncate t336)) + 6) (s335 + (negate ((((t341 * s333) + (t342 * s334)) + (t343 * s335)) * t343)))
+          wrU contacts ((30 * (truncate t336)) + 7) 0.0
+          wrU contacts ((30 * (truncate t336)) + 12) 0.0
+          wrU contacts ((30 * (truncate t336)) + 13) 0.0
+          wrU contacts ((30 * (truncate t336)) + 14) 0.0
+          wrU contacts ((30 * (truncate t336)) + 15) 0.0
+          wrU contacts ((30 * (truncate t336)) + 20) t323
+          wrU contacts ((30 * (truncate t336)) + 26) 0.6
+          wrU contacts ((30 * (truncate t336)) + 27) t324
+          wrU contacts ((30 * (truncate t336)) + 28) t325
+          wrU contacts ((30 * (truncate t336)) + 29) t326
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t349 <- rdU pos (-3)
-            t350 <- rdU pos (-2)
-            t351 <- rdU pos (-1)
+            t354 <- rdU pos (-3)
+            t355 <- rdU pos (-2)
+            t356 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t352 <- rdU normal (-3)
-            t353 <- rdU normal (-2)
-            t354 <- rdU normal (-1)
+            t357 <- rdU normal (-3)
+            t358 <- rdU normal (-2)
+            t359 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t355 <- rdU axis (-3)
-            t356 <- rdU axis (-2)
-            t357 <- rdU axis (-1)
-            let !s358 = ((t353 * t357) - (t354 * t356))
-            let !s359 = ((t354 * t355) - (t352 * t357))
-            let !s360 = ((t352 * t356) - (t353 * t355))
+            t360 <- rdU axis (-3)
+            t361 <- rdU axis (-2)
+            t362 <- rdU axis (-1)
+            let !s363 = ((t358 * t362) - (t359 * t361))
+            let !s364 = ((t359 * t360) - (t357 * t362))
+            let !s365 = ((t357 * t361) - (t358 * t360))
             chkI scalars 0 (-6) (-1)
-            t361 <- rdU scalars (-6)
-            t362 <- rdU scalars (-1)
-            t363 <- rdU scalars (-4)
-            t364 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t331)) + 8) (s328 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t352)))
-            wrU contacts ((30 * (truncate t331)) + 9) (s329 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t353)))
-            wrU contacts ((30 * (truncate t331)) + 10) (s330 + (negate ((((t352 * s328) + (t353 * s329)) + (t354 * s330)) * t354)))
-            let !t365 = (t320 + (negate t350))
-            let !t366 = (t321 + (negate t351))
-            let !t367 = (t319 + (negate t349))
-            wrU contacts ((30 * (truncate t331)) + 11) (((((t365 * s330) - (t366 * s329)) * t352) + (((t366 * s328) - (t367 * s330)) * t353)) + (((t367 * s329) - (t365 * s328)) * t354))
-            let !t368 = ((t337 * s330) - (t338 * s329))
-            wrU contacts ((30 * (truncate t331)) + 16) (t368 + (negate ((((t352 * t368) + (t353 * ((t338 * s328) - (t336 * s330)))) + (t354 * ((t336 * s329) - (t337 * s328)))) * t352)))
-            let !t369 = ((t338 * s328) - (t336 * s330))
-            wrU contacts ((30 * (truncate t331)) + 17) (t369 + (negate ((((t352 * t368) + (t353 * t369)) + (t354 * ((t336 * s329) - (t337 * s328)))) * t353)))
-            let !t370 = ((t336 * s329) - (t337 * s328))
-            wrU contacts ((30 * (truncate t331)) + 18) (t370 + (negate ((((t352 * t368) + (t353 * t369)) + (t354 * t370)) * t354)))
-            wrU contacts ((30 * (truncate t331)) + 19) (((((t365 * t370) - (t366 * t369)) * t352) + (((t366 * t368) - (t367 * t370)) * t353)) + (((t367 * t369) - (t365 * t368)) * t354))
+            t366 <- rdU scalars (-6)
+            t367 <- rdU scalars (-1)
+            t368 <- rdU scalars (-4)
+            t369 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t336)) + 8) (s333 + (negate ((((t357 * s333) + (t358 * s334)) + (t359 * s335)) * t357)))
+            wrU contacts ((30 * (truncate t336)) + 9) (s334 + (negate ((((t357 * s333) + (t358 * s334)) + (t359 * s335)) * t358)))
+            wrU contacts ((30 * (truncate t336)) + 10) (s335 + (negate ((((t357 * s333) + (t358 * s334)) + (t359 * s335)) * t359)))
+            let !t370 = (t325 + (negate t355))
+            let !t371 = (t326 + (negate t356))
+            let !t372 = (t324 + (negate t354))
+            wrU contacts ((30 * (truncate t336)) + 11) (((((t370 * s335) - (t371 * s334)) * t357) + (((t371 * s333) - (t372 * s335)) * t358)) + (((t372 * s334) - (t370 * s333)) * t359))
+            let !t373 = ((t342 * s335) - (t343 * s334))
+            wrU contacts ((30 * (truncate t336)) + 16) (t373 + (negate ((((t357 * t373) + (t358 * ((t343 * s333) - (t341 * s335)))) + (t359 * ((t341 * s334) - (t342 * s333)))) * t357)))
+            let !t374 = ((t343 * s333) - (t341 * s335))
+            wrU contacts ((30 * (truncate t336)) + 17) (t374 + (negate ((((t357 * t373) + (t358 * t374)) + (t359 * ((t341 * s334) - (t342 * s333)))) * t358)))
+            let !t375 = ((t341 * s334) - (t342 * s333))
+            wrU contacts ((30 * (truncate t336)) + 18) (t375 + (negate ((((t357 * t373) + (t358 * t374)) + (t359 * t375)) * t359)))
+            wrU contacts ((30 * (truncate t336)) + 19) (((((t370 * t375) - (t371 * t374)) * t357) + (((t371 * t373) - (t372 * t375)) * t358)) + (((t372 * t374) - (t370 * t373)) * t359))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t331)) + 8) 0.0
-            wrU contacts ((30 * (truncate t331)) + 9) 0.0
-            wrU contacts ((30 * (truncate t331)) + 10) 0.0
-            wrU contacts ((30 * (truncate t331)) + 11) 0.0
-            wrU contacts ((30 * (truncate t331)) + 16) 0.0
-            wrU contacts ((30 * (truncate t331)) + 17) 0.0
-            wrU contacts ((30 * (truncate t331)) + 18) 0.0
-            wrU contacts ((30 * (truncate t331)) + 19) 0.0
+            wrU contacts ((30 * (truncate t336)) + 8) 0.0
+            wrU contacts ((30 * (truncate t336)) + 9) 0.0
+            wrU contacts ((30 * (truncate t336)) + 10) 0.0
+            wrU contacts ((30 * (truncate t336)) + 11) 0.0
+            wrU contacts ((30 * (truncate t336)) + 16) 0.0
+            wrU contacts ((30 * (truncate t336)) + 17) 0.0
+            wrU contacts ((30 * (truncate t336)) + 18) 0.0
+            wrU contacts ((30 * (truncate t336)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t371 <- rdU meta 6
-          wrU meta 6 (t371 + 1.0)
+          t376 <- rdU meta 6
+          wrU meta 6 (t376 + 1.0)
           pure ()
         pure ()
       else do
@@ -750,8 +762,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1440,8 +1452,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1564,8 +1576,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "hemisphere" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt((((x * x) + (y * y)) + (z * z))) - 1.0);\n}\n\nboundary function f(x, y, z) {\n  return (-y);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, (-4.0), 0.0];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Hemisphere: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -147,49 +147,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -203,58 +208,65 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
     chkI normal (3 * i31) 0 2
-    t67 <- rdU normal (3 * i31)
-    t68 <- rdU normal ((3 * i31) + 1)
-    t69 <- rdU normal ((3 * i31) + 2)
-    v70 <- newR 0.0
-    v71 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i72 -> do
-      let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i31) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
-      let !s76 = (negate t74)
-      t77 <- getR v70
-      if ((negate s76) - t77) > 0 then do
-        setR v70 (negate s76)
-        setR v71 d72
+    t72 <- rdU normal (3 * i31)
+    t73 <- rdU normal ((3 * i31) + 1)
+    t74 <- rdU normal ((3 * i31) + 2)
+    v75 <- newR 0.0
+    v76 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i77 -> do
+      let !d77 = fromIntegral i77 :: Double
+      chkI verts ((291 * i31) + (12 * i77)) 12 14
+      t78 <- rdU verts (((291 * i31) + (12 * i77)) + 12)
+      t79 <- rdU verts (((291 * i31) + (12 * i77)) + 13)
+      t80 <- rdU verts (((291 * i31) + (12 * i77)) + 14)
+      let !s81 = (negate t79)
+      t82 <- getR v75
+      if ((negate s81) - t82) > 0 then do
+        setR v75 (negate s81)
+        setR v76 d77
         pure ()
       else do
         pure ()
       pure ()
-    t78 <- getR v70
-    if t78 > 0 then do
-      t79 <- getR v71
-      chkI verts ((12 * (truncate t79)) + (291 * i31)) 12 14
-      t80 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 12)
-      t81 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 13)
-      t82 <- rdU verts (((12 * (truncate t79)) + (291 * i31)) + 14)
-      let !s83 = (negate t67)
-      v84 <- newR 1.0e300
-      v85 <- newR (-1.0e300)
-      v86 <- newR (-1.0)
-      v87 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i88 -> do
-        let !d88 = fromIntegral i88 :: Double
-        chkI verts ((291 * i31) + (12 * i88)) 12 14
-        t89 <- rdU verts (((291 * i31) + (12 * i88)) + 12)
-        t90 <- rdU verts (((291 * i31) + (12 * i88)) + 13)
-        t91 <- rdU verts (((291 * i31) + (12 * i88)) + 14)
-        if t90 > 0 then do
-          let !s92 = ((t89 * t69) + (t91 * s83))
-          t93 <- getR v84
-          if (t93 - s92) > 0 then do
-            setR v84 s92
-            setR v86 d88
+    t83 <- getR v75
+    if t83 > 0 then do
+      t84 <- getR v76
+      chkI verts ((12 * (truncate t84)) + (291 * i31)) 12 14
+      t85 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 12)
+      t86 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 13)
+      t87 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 14)
+      let !s88 = (negate t72)
+      v89 <- newR 1.0e300
+      v90 <- newR (-1.0e300)
+      v91 <- newR (-1.0)
+      v92 <- newR (-1.0)
+      loopI 0.0 24.0 $ \i93 -> do
+        let !d93 = fromIntegral i93 :: Double
+        chkI verts ((291 * i31) + (12 * i93)) 12 14
+        t94 <- rdU verts (((291 * i31) + (12 * i93)) + 12)
+        t95 <- rdU verts (((291 * i31) + (12 * i93)) + 13)
+        t96 <- rdU verts (((291 * i31) + (12 * i93)) + 14)
+        if t95 > 0 then do
+          let !s97 = ((t94 * t74) + (t96 * s88))
+          t98 <- getR v89
+          if (t98 - s97) > 0 then do
+            setR v89 s97
+            setR v91 d93
             pure ()
           else do
             pure ()
-          t94 <- getR v85
-          if (s92 - t94) > 0 then do
-            setR v85 s92
-            setR v87 d88
+          t99 <- getR v90
+          if (s97 - t99) > 0 then do
+            setR v90 s97
+            setR v92 d93
             pure ()
           else do
             pure ()
@@ -262,196 +274,196 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t95 <- getR v86
-      t96 <- getR v87
-      chkI verts ((12 * (truncate t95)) + (291 * i31)) 12 14
-      t97 <- rdU verts (((12 * (truncate t95)) + (291 * i31)) + 12)
-      t98 <- rdU verts (((12 * (truncate t95)) + (291 * i31)) + 13)
-      t99 <- rdU verts (((12 * (truncate t95)) + (291 * i31)) + 14)
-      let !s100 = (negate t98)
-      t101 <- rdU meta 2
-      t102 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t102) > 0 then 1.0 else t102)) - t101) - 0.5) > 0 then do
-        wrU meta 2 (t101 + 1.0)
-        t103 <- rdU pos (3 * i31)
-        t104 <- rdU pos ((3 * i31) + 1)
-        t105 <- rdU pos ((3 * i31) + 2)
-        t106 <- rdU normal (3 * i31)
-        t107 <- rdU normal ((3 * i31) + 1)
-        t108 <- rdU normal ((3 * i31) + 2)
+      t100 <- getR v91
+      t101 <- getR v92
+      chkI verts ((12 * (truncate t100)) + (291 * i31)) 12 14
+      t102 <- rdU verts (((12 * (truncate t100)) + (291 * i31)) + 12)
+      t103 <- rdU verts (((12 * (truncate t100)) + (291 * i31)) + 13)
+      t104 <- rdU verts (((12 * (truncate t100)) + (291 * i31)) + 14)
+      let !s105 = (negate t103)
+      t106 <- rdU meta 2
+      t107 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t107) > 0 then 1.0 else t107)) - t106) - 0.5) > 0 then do
+        wrU meta 2 (t106 + 1.0)
+        t108 <- rdU pos (3 * i31)
+        t109 <- rdU pos ((3 * i31) + 1)
+        t110 <- rdU pos ((3 * i31) + 2)
+        t111 <- rdU normal (3 * i31)
+        t112 <- rdU normal ((3 * i31) + 1)
+        t113 <- rdU normal ((3 * i31) + 2)
         chkI axis (3 * i31) 0 2
-        t109 <- rdU axis (3 * i31)
-        t110 <- rdU axis ((3 * i31) + 1)
-        t111 <- rdU axis ((3 * i31) + 2)
-        let !s112 = ((t107 * t111) - (t108 * t110))
-        let !s113 = ((t108 * t109) - (t106 * t111))
-        let !s114 = ((t106 * t110) - (t107 * t109))
+        t114 <- rdU axis (3 * i31)
+        t115 <- rdU axis ((3 * i31) + 1)
+        t116 <- rdU axis ((3 * i31) + 2)
+        let !s117 = ((t112 * t116) - (t113 * t115))
+        let !s118 = ((t113 * t114) - (t111 * t116))
+        let !s119 = ((t111 * t115) - (t112 * t114))
         chkI scalars (6 * i31) 0 0
-        t115 <- rdU scalars (6 * i31)
-        t116 <- rdU scalars ((6 * i31) + 5)
-        t117 <- rdU scalars ((6 * i31) + 2)
-        t118 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t101)) 0 29
-        wrU contacts (30 * (truncate t101)) d31
-        wrU contacts ((30 * (truncate t101)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t101)) + 2) d31
-        wrU contacts ((30 * (truncate t101)) + 3) 8.0
-        wrU contacts ((30 * (truncate t101)) + 4) (negate ((negate t107) * t106))
-        wrU contacts ((30 * (truncate t101)) + 5) ((-1.0) + (negate ((negate t107) * t107)))
-        wrU contacts ((30 * (truncate t101)) + 6) (negate ((negate t107) * t108))
-        wrU contacts ((30 * (truncate t101)) + 7) (((t99 + (negate t105)) * t106) + ((negate (t97 + (negate t103))) * t108))
-        wrU contacts ((30 * (truncate t101)) + 12) (t108 + (negate (((t106 * t108) + (t108 * (negate t106))) * t106)))
-        wrU contacts ((30 * (truncate t101)) + 13) (negate (((t106 * t108) + (t108 * (negate t106))) * t107))
-        let !t119 = (negate t106)
-        wrU contacts ((30 * (truncate t101)) + 14) (t119 + (negate (((t106 * t108) + (t108 * t119)) * t108)))
-        let !t120 = (t98 + (negate t104))
-        wrU contacts ((30 * (truncate t101)) + 15) ((((t120 * t119) * t106) + ((((t99 + (negate t105)) * t108) - ((t97 + (negate t103)) * t119)) * t107)) + ((negate (t120 * t108)) * t108))
-        wrU contacts ((30 * (truncate t101)) + 20) (negate s100)
-        wrU contacts ((30 * (truncate t101)) + 26) 1.0
-        wrU contacts ((30 * (truncate t101)) + 27) t97
-        wrU contacts ((30 * (truncate t101)) + 28) t98
-        wrU contacts ((30 * (truncate t101)) + 29) t99
+        t120 <- rdU scalars (6 * i31)
+        t121 <- rdU scalars ((6 * i31) + 5)
+        t122 <- rdU scalars ((6 * i31) + 2)
+        t123 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t106)) 0 29
+        wrU contacts (30 * (truncate t106)) d31
+        wrU contacts ((30 * (truncate t106)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t106)) + 2) d31
+        wrU contacts ((30 * (truncate t106)) + 3) 8.0
+        wrU contacts ((30 * (truncate t106)) + 4) (negate ((negate t112) * t111))
+        wrU contacts ((30 * (truncate t106)) + 5) ((-1.0) + (negate ((negate t112) * t112)))
+        wrU contacts ((30 * (truncate t106)) + 6) (negate ((negate t112) * t113))
+        wrU contacts ((30 * (truncate t106)) + 7) (((t104 + (negate t110)) * t111) + ((negate (t102 + (negate t108))) * t113))
+        wrU contacts ((30 * (truncate t106)) + 12) (t113 + (negate (((t111 * t113) + (t113 * (negate t111))) * t111)))
+        wrU contacts ((30 * (truncate t106)) + 13) (negate (((t111 * t113) + (t113 * (negate t111))) * t112))
+        let !t124 = (negate t111)
+        wrU contacts ((30 * (truncate t106)) + 14) (t124 + (negate (((t111 * t113) + (t113 * t124)) * t113)))
+        let !t125 = (t103 + (negate t109))
+        wrU contacts ((30 * (truncate t106)) + 15) ((((t125 * t124) * t111) + ((((t104 + (negate t110)) * t113) - ((t102 + (negate t108)) * t124)) * t112)) + ((negate (t125 * t113)) * t113))
+        wrU contacts ((30 * (truncate t106)) + 20) (negate s105)
+        wrU contacts ((30 * (truncate t106)) + 26) 1.0
+        wrU contacts ((30 * (truncate t106)) + 27) t102
+        wrU contacts ((30 * (truncate t106)) + 28) t103
+        wrU contacts ((30 * (truncate t106)) + 29) t104
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t121 <- rdU pos (-3)
-          t122 <- rdU pos (-2)
-          t123 <- rdU pos (-1)
+          t126 <- rdU pos (-3)
+          t127 <- rdU pos (-2)
+          t128 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t124 <- rdU normal (-3)
-          t125 <- rdU normal (-2)
-          t126 <- rdU normal (-1)
+          t129 <- rdU normal (-3)
+          t130 <- rdU normal (-2)
+          t131 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t127 <- rdU axis (-3)
-          t128 <- rdU axis (-2)
-          t129 <- rdU axis (-1)
-          let !s130 = ((t125 * t129) - (t126 * t128))
-          let !s131 = ((t126 * t127) - (t124 * t129))
-          let !s132 = ((t124 * t128) - (t125 * t127))
+          t132 <- rdU axis (-3)
+          t133 <- rdU axis (-2)
+          t134 <- rdU axis (-1)
+          let !s135 = ((t130 * t134) - (t131 * t133))
+          let !s136 = ((t131 * t132) - (t129 * t134))
+          let !s137 = ((t129 * t133) - (t130 * t132))
           chkI scalars 0 (-6) (-1)
-          t133 <- rdU scalars (-6)
-          t134 <- rdU scalars (-1)
-          t135 <- rdU scalars (-4)
-          t136 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t101)) + 8) (negate ((negate t125) * t124))
-          wrU contacts ((30 * (truncate t101)) + 9) ((-1.0) + (negate ((negate t125) * t125)))
-          wrU contacts ((30 * (truncate t101)) + 10) (negate ((negate t125) * t126))
-          wrU contacts ((30 * (truncate t101)) + 11) (((t99 + (negate t123)) * t124) + ((negate (t97 + (negate t121))) * t126))
-          wrU contacts ((30 * (truncate t101)) + 16) (t108 + (negate (((t124 * t108) + (t126 * t119)) * t124)))
-          wrU contacts ((30 * (truncate t101)) + 17) (negate (((t124 * t108) + (t126 * t119)) * t125))
-          wrU contacts ((30 * (truncate t101)) + 18) (t119 + (negate (((t124 * t108) + (t126 * t119)) * t126)))
-          let !t137 = (t98 + (negate t122))
-          wrU contacts ((30 * (truncate t101)) + 19) ((((t137 * t119) * t124) + ((((t99 + (negate t123)) * t108) - ((t97 + (negate t121)) * t119)) * t125)) + ((negate (t137 * t108)) * t126))
+          t138 <- rdU scalars (-6)
+          t139 <- rdU scalars (-1)
+          t140 <- rdU scalars (-4)
+          t141 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t106)) + 8) (negate ((negate t130) * t129))
+          wrU contacts ((30 * (truncate t106)) + 9) ((-1.0) + (negate ((negate t130) * t130)))
+          wrU contacts ((30 * (truncate t106)) + 10) (negate ((negate t130) * t131))
+          wrU contacts ((30 * (truncate t106)) + 11) (((t104 + (negate t128)) * t129) + ((negate (t102 + (negate t126))) * t131))
+          wrU contacts ((30 * (truncate t106)) + 16) (t113 + (negate (((t129 * t113) + (t131 * t124)) * t129)))
+          wrU contacts ((30 * (truncate t106)) + 17) (negate (((t129 * t113) + (t131 * t124)) * t130))
+          wrU contacts ((30 * (truncate t106)) + 18) (t124 + (negate (((t129 * t113) + (t131 * t124)) * t131)))
+          let !t142 = (t103 + (negate t127))
+          wrU contacts ((30 * (truncate t106)) + 19) ((((t142 * t124) * t129) + ((((t104 + (negate t128)) * t113) - ((t102 + (negate t126)) * t124)) * t130)) + ((negate (t142 * t113)) * t131))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t101)) + 8) 0.0
-          wrU contacts ((30 * (truncate t101)) + 9) 0.0
-          wrU contacts ((30 * (truncate t101)) + 10) 0.0
-          wrU contacts ((30 * (truncate t101)) + 11) 0.0
-          wrU contacts ((30 * (truncate t101)) + 16) 0.0
-          wrU contacts ((30 * (truncate t101)) + 17) 0.0
-          wrU contacts ((30 * (truncate t101)) + 18) 0.0
-          wrU contacts ((30 * (truncate t101)) + 19) 0.0
+          wrU contacts ((30 * (truncate t106)) + 8) 0.0
+          wrU contacts ((30 * (truncate t106)) + 9) 0.0
+          wrU contacts ((30 * (truncate t106)) + 10) 0.0
+          wrU contacts ((30 * (truncate t106)) + 11) 0.0
+          wrU contacts ((30 * (truncate t106)) + 16) 0.0
+          wrU contacts ((30 * (truncate t106)) + 17) 0.0
+          wrU contacts ((30 * (truncate t106)) + 18) 0.0
+          wrU contacts ((30 * (truncate t106)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t138 <- rdU meta 6
-        wrU meta 6 (t138 + 1.0)
+        t143 <- rdU meta 6
+        wrU meta 6 (t143 + 1.0)
         pure ()
-      if (abs (t96 - t95)) > 0 then do
-        chkI verts ((12 * (truncate t96)) + (291 * i31)) 12 14
-        t139 <- rdU verts (((12 * (truncate t96)) + (291 * i31)) + 12)
-        t140 <- rdU verts (((12 * (truncate t96)) + (291 * i31)) + 13)
-        t141 <- rdU verts (((12 * (truncate t96)) + (291 * i31)) + 14)
-        let !s142 = (negate t140)
-        t143 <- rdU meta 2
-        t144 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t144) > 0 then 1.0 else t144)) - t143) - 0.5) > 0 then do
-          wrU meta 2 (t143 + 1.0)
-          t145 <- rdU pos (3 * i31)
-          t146 <- rdU pos ((3 * i31) + 1)
-          t147 <- rdU pos ((3 * i31) + 2)
-          t148 <- rdU normal (3 * i31)
-          t149 <- rdU normal ((3 * i31) + 1)
-          t150 <- rdU normal ((3 * i31) + 2)
+      if (abs (t101 - t100)) > 0 then do
+        chkI verts ((12 * (truncate t101)) + (291 * i31)) 12 14
+        t144 <- rdU verts (((12 * (truncate t101)) + (291 * i31)) + 12)
+        t145 <- rdU verts (((12 * (truncate t101)) + (291 * i31)) + 13)
+        t146 <- rdU verts (((12 * (truncate t101)) + (291 * i31)) + 14)
+        let !s147 = (negate t145)
+        t148 <- rdU meta 2
+        t149 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t149) > 0 then 1.0 else t149)) - t148) - 0.5) > 0 then do
+          wrU meta 2 (t148 + 1.0)
+          t150 <- rdU pos (3 * i31)
+          t151 <- rdU pos ((3 * i31) + 1)
+          t152 <- rdU pos ((3 * i31) + 2)
+          t153 <- rdU normal (3 * i31)
+          t154 <- rdU normal ((3 * i31) + 1)
+          t155 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t151 <- rdU axis (3 * i31)
-          t152 <- rdU axis ((3 * i31) + 1)
-          t153 <- rdU axis ((3 * i31) + 2)
-          let !s154 = ((t149 * t153) - (t150 * t152))
-          let !s155 = ((t150 * t151) - (t148 * t153))
-          let !s156 = ((t148 * t152) - (t149 * t151))
+          t156 <- rdU axis (3 * i31)
+          t157 <- rdU axis ((3 * i31) + 1)
+          t158 <- rdU axis ((3 * i31) + 2)
+          let !s159 = ((t154 * t158) - (t155 * t157))
+          let !s160 = ((t155 * t156) - (t153 * t158))
+          let !s161 = ((t153 * t157) - (t154 * t156))
           chkI scalars (6 * i31) 0 0
-          t157 <- rdU scalars (6 * i31)
-          t158 <- rdU scalars ((6 * i31) + 5)
-          t159 <- rdU scalars ((6 * i31) + 2)
-          t160 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t143)) 0 29
-          wrU contacts (30 * (truncate t143)) d31
-          wrU contacts ((30 * (truncate t143)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t143)) + 2) d31
-          wrU contacts ((30 * (truncate t143)) + 3) 9.0
-          wrU contacts ((30 * (truncate t143)) + 4) (negate ((negate t149) * t148))
-          wrU contacts ((30 * (truncate t143)) + 5) ((-1.0) + (negate ((negate t149) * t149)))
-          wrU contacts ((30 * (truncate t143)) + 6) (negate ((negate t149) * t150))
-          wrU contacts ((30 * (truncate t143)) + 7) (((t141 + (negate t147)) * t148) + ((negate (t139 + (negate t145))) * t150))
-          wrU contacts ((30 * (truncate t143)) + 12) (t150 + (negate (((t148 * t150) + (t150 * (negate t148))) * t148)))
-          wrU contacts ((30 * (truncate t143)) + 13) (negate (((t148 * t150) + (t150 * (negate t148))) * t149))
-          let !t161 = (negate t148)
-          wrU contacts ((30 * (truncate t143)) + 14) (t161 + (negate (((t148 * t150) + (t150 * t161)) * t150)))
-          let !t162 = (t140 + (negate t146))
-          wrU contacts ((30 * (truncate t143)) + 15) ((((t162 * t161) * t148) + ((((t141 + (negate t147)) * t150) - ((t139 + (negate t145)) * t161)) * t149)) + ((negate (t162 * t150)) * t150))
-          wrU contacts ((30 * (truncate t143)) + 20) (negate s142)
-          wrU contacts ((30 * (truncate t143)) + 26) 1.0
-          wrU contacts ((30 * (truncate t143)) + 27) t139
-          wrU contacts ((30 * (truncate t143)) + 28) t140
-          wrU contacts ((30 * (truncate t143)) + 29) t141
+          t162 <- rdU scalars (6 * i31)
+          t163 <- rdU scalars ((6 * i31) + 5)
+          t164 <- rdU scalars ((6 * i31) + 2)
+          t165 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t148)) 0 29
+          wrU contacts (30 * (truncate t148)) d31
+          wrU contacts ((30 * (truncate t148)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t148)) + 2) d31
+          wrU contacts ((30 * (truncate t148)) + 3) 9.0
+          wrU contacts ((30 * (truncate t148)) + 4) (negate ((negate t154) * t153))
+          wrU contacts ((30 * (truncate t148)) + 5) ((-1.0) + (negate ((negate t154) * t154)))
+          wrU contacts ((30 * (truncate t148)) + 6) (negate ((negate t154) * t155))
+          wrU contacts ((30 * (truncate t148)) + 7) (((t146 + (negate t152)) * t153) + ((negate (t144 + (negate t150))) * t155))
+          wrU contacts ((30 * (truncate t148)) + 12) (t155 + (negate (((t153 * t155) + (t155 * (negate t153))) * t153)))
+          wrU contacts ((30 * (truncate t148)) + 13) (negate (((t153 * t155) + (t155 * (negate t153))) * t154))
+          let !t166 = (negate t153)
+          wrU contacts ((30 * (truncate t148)) + 14) (t166 + (negate (((t153 * t155) + (t155 * t166)) * t155)))
+          let !t167 = (t145 + (negate t151))
+          wrU contacts ((30 * (truncate t148)) + 15) ((((t167 * t166) * t153) + ((((t146 + (negate t152)) * t155) - ((t144 + (negate t150)) * t166)) * t154)) + ((negate (t167 * t155)) * t155))
+          wrU contacts ((30 * (truncate t148)) + 20) (negate s147)
+          wrU contacts ((30 * (truncate t148)) + 26) 1.0
+          wrU contacts ((30 * (truncate t148)) + 27) t144
+          wrU contacts ((30 * (truncate t148)) + 28) t145
+          wrU contacts ((30 * (truncate t148)) + 29) t146
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t163 <- rdU pos (-3)
-            t164 <- rdU pos (-2)
-            t165 <- rdU pos (-1)
+            t168 <- rdU pos (-3)
+            t169 <- rdU pos (-2)
+            t170 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t166 <- rdU normal (-3)
-            t167 <- rdU normal (-2)
-            t168 <- rdU normal (-1)
+            t171 <- rdU normal (-3)
+            t172 <- rdU normal (-2)
+            t173 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t169 <- rdU axis (-3)
-            t170 <- rdU axis (-2)
-            t171 <- rdU axis (-1)
-            let !s172 = ((t167 * t171) - (t168 * t170))
-            let !s173 = ((t168 * t169) - (t166 * t171))
-            let !s174 = ((t166 * t170) - (t167 * t169))
+            t174 <- rdU axis (-3)
+            t175 <- rdU axis (-2)
+            t176 <- rdU axis (-1)
+            let !s177 = ((t172 * t176) - (t173 * t175))
+            let !s178 = ((t173 * t174) - (t171 * t176))
+            let !s179 = ((t171 * t175) - (t172 * t174))
             chkI scalars 0 (-6) (-1)
-            t175 <- rdU scalars (-6)
-            t176 <- rdU scalars (-1)
-            t177 <- rdU scalars (-4)
-            t178 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t143)) + 8) (negate ((negate t167) * t166))
-            wrU contacts ((30 * (truncate t143)) + 9) ((-1.0) + (negate ((negate t167) * t167)))
-            wrU contacts ((30 * (truncate t143)) + 10) (negate ((negate t167) * t168))
-            wrU contacts ((30 * (truncate t143)) + 11) (((t141 + (negate t165)) * t166) + ((negate (t139 + (negate t163))) * t168))
-            wrU contacts ((30 * (truncate t143)) + 16) (t150 + (negate (((t166 * t150) + (t168 * t161)) * t166)))
-            wrU contacts ((30 * (truncate t143)) + 17) (negate (((t166 * t150) + (t168 * t161)) * t167))
-            wrU contacts ((30 * (truncate t143)) + 18) (t161 + (negate (((t166 * t150) + (t168 * t161)) * t168)))
-            let !t179 = (t140 + (negate t164))
-            wrU contacts ((30 * (truncate t143)) + 19) ((((t179 * t161) * t166) + ((((t141 + (negate t165)) * t150) - ((t139 + (negate t163)) * t161)) * t167)) + ((negate (t179 * t150)) * t168))
+            t180 <- rdU scalars (-6)
+            t181 <- rdU scalars (-1)
+            t182 <- rdU scalars (-4)
+            t183 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t148)) + 8) (negate ((negate t172) * t171))
+            wrU contacts ((30 * (truncate t148)) + 9) ((-1.0) + (negate ((negate t172) * t172)))
+            wrU contacts ((30 * (truncate t148)) + 10) (negate ((negate t172) * t173))
+            wrU contacts ((30 * (truncate t148)) + 11) (((t146 + (negate t170)) * t171) + ((negate (t144 + (negate t168))) * t173))
+            wrU contacts ((30 * (truncate t148)) + 16) (t155 + (negate (((t171 * t155) + (t173 * t166)) * t171)))
+            wrU contacts ((30 * (truncate t148)) + 17) (negate (((t171 * t155) + (t173 * t166)) * t172))
+            wrU contacts ((30 * (truncate t148)) + 18) (t166 + (negate (((t171 * t155) + (t173 * t166)) * t173)))
+            let !t184 = (t145 + (negate t169))
+            wrU contacts ((30 * (truncate t148)) + 19) ((((t184 * t166) * t171) + ((((t146 + (negate t170)) * t155) - ((t144 + (negate t168)) * t166)) * t172)) + ((negate (t184 * t155)) * t173))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t143)) + 8) 0.0
-            wrU contacts ((30 * (truncate t143)) + 9) 0.0
-            wrU contacts ((30 * (truncate t143)) + 10) 0.0
-            wrU contacts ((30 * (truncate t143)) + 11) 0.0
-            wrU contacts ((30 * (truncate t143)) + 16) 0.0
-            wrU contacts ((30 * (truncate t143)) + 17) 0.0
-            wrU contacts ((30 * (truncate t143)) + 18) 0.0
-            wrU contacts ((30 * (truncate t143)) + 19) 0.0
+            wrU contacts ((30 * (truncate t148)) + 8) 0.0
+            wrU contacts ((30 * (truncate t148)) + 9) 0.0
+            wrU contacts ((30 * (truncate t148)) + 10) 0.0
+            wrU contacts ((30 * (truncate t148)) + 11) 0.0
+            wrU contacts ((30 * (truncate t148)) + 16) 0.0
+            wrU contacts ((30 * (truncate t148)) + 17) 0.0
+            wrU contacts ((30 * (truncate t148)) + 18) 0.0
+            wrU contacts ((30 * (truncate t148)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t180 <- rdU meta 6
-          wrU meta 6 (t180 + 1.0)
+          t185 <- rdU meta 6
+          wrU meta 6 (t185 + 1.0)
           pure ()
         pure ()
       else do
@@ -460,132 +472,132 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     else do
       pure ()
     chkI verts (291 * i31) 0 2
-    t181 <- rdU verts (291 * i31)
-    t182 <- rdU verts ((291 * i31) + 1)
-    t183 <- rdU verts ((291 * i31) + 2)
-    v184 <- newR 1.0
-    loopI 0.0 24.0 $ \i185 -> do
-      let !d185 = fromIntegral i185 :: Double
-      chkI verts ((12 * i185) + (291 * i31)) 12 14
-      t186 <- rdU verts (((12 * i185) + (291 * i31)) + 12)
-      t187 <- rdU verts (((12 * i185) + (291 * i31)) + 13)
-      t188 <- rdU verts (((12 * i185) + (291 * i31)) + 14)
-      chkI radii (i185 + (24 * i31)) 0 0
-      t189 <- rdU radii (i185 + (24 * i31))
-      t190 <- getR v184
-      let !t191 = (t186 + (negate t181))
-      let !t192 = (t187 + (negate t182))
-      let !t193 = (t188 + (negate t183))
-      let !t194 = (if t189 > 0 then ((sqrt (((t191 * t191) + (t192 * t192)) + (t193 * t193))) / t189) else 1.0)
-      setR v184 (if (t190 - t194) > 0 then t194 else t190)
+    t186 <- rdU verts (291 * i31)
+    t187 <- rdU verts ((291 * i31) + 1)
+    t188 <- rdU verts ((291 * i31) + 2)
+    v189 <- newR 1.0
+    loopI 0.0 24.0 $ \i190 -> do
+      let !d190 = fromIntegral i190 :: Double
+      chkI verts ((12 * i190) + (291 * i31)) 12 14
+      t191 <- rdU verts (((12 * i190) + (291 * i31)) + 12)
+      t192 <- rdU verts (((12 * i190) + (291 * i31)) + 13)
+      t193 <- rdU verts (((12 * i190) + (291 * i31)) + 14)
+      chkI radii (i190 + (24 * i31)) 0 0
+      t194 <- rdU radii (i190 + (24 * i31))
+      t195 <- getR v189
+      let !t196 = (t191 + (negate t186))
+      let !t197 = (t192 + (negate t187))
+      let !t198 = (t193 + (negate t188))
+      let !t199 = (if t194 > 0 then ((sqrt (((t196 * t196) + (t197 * t197)) + (t198 * t198))) / t194) else 1.0)
+      setR v189 (if (t195 - t199) > 0 then t199 else t195)
       pure ()
-    t195 <- getR v184
-    if (0.8 - t195) > 0 then do
-      v196 <- newR 0.0
-      v197 <- newR 0.0
-      v198 <- newR 0.0
-      v199 <- newR 0.0
-      v200 <- newR 0.0
+    t200 <- getR v189
+    if (0.8 - t200) > 0 then do
       v201 <- newR 0.0
       v202 <- newR 0.0
-      loopI 0.0 24.0 $ \i203 -> do
-        let !d203 = fromIntegral i203 :: Double
-        chkI radii (i203 + (24 * i31)) 0 0
-        t204 <- rdU radii (i203 + (24 * i31))
-        loopI 6.0 12.0 $ \i205 -> do
-          let !d205 = fromIntegral i205 :: Double
-          let !t206 = (d203 + d205)
-          chkI radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0)))))) 0 0
-          t207 <- rdU radii (truncate ((24.0 * d31) + (t206 - (24.0 * (floorF (t206 / 24.0))))))
-          loopI 1.0 4.0 $ \i208 -> do
-            let !d208 = fromIntegral i208 :: Double
-            chkI verts ((12 * i203) + (3 * i208) + (291 * i31)) 0 5
-            t209 <- rdU verts ((12 * i203) + (3 * i208) + (291 * i31))
-            t210 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 1)
-            t211 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 2)
-            t212 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 3)
-            t213 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 4)
-            t214 <- rdU verts (((12 * i203) + (3 * i208) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i215 -> do
-              let !d215 = fromIntegral i215 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0)))) 0 0
-              t216 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 1.0)) 0 0
-              t217 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 2.0)) 0 0
-              t218 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + (d215 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215))) 0 0
-              t219 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 1.0)) 0 0
-              t220 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 2.0)) 0 0
-              t221 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)) + d215)) + 2.0))
-              t222 <- getR v196
-              let !t223 = (negate t216)
-              let !t224 = (t219 + t223)
-              let !t225 = (negate t217)
-              let !t226 = (t220 + t225)
-              let !t227 = (negate t218)
-              let !t228 = (t221 + t227)
-              let !t229 = (((t224 * t224) + (t226 * t226)) + (t228 * t228))
-              let !t230 = (t212 + (negate t209))
-              let !t231 = (t213 + (negate t210))
-              let !t232 = (t214 + (negate t211))
-              let !t233 = (((t230 * t224) + (t231 * t226)) + (t232 * t228))
-              let !t234 = (((t230 * t230) + (t231 * t231)) + (t232 * t232))
-              let !t235 = ((t234 * t229) - (t233 * t233))
-              let !t236 = (t209 + t223)
-              let !t237 = (t210 + t225)
-              let !t238 = (t211 + t227)
-              let !t239 = (((t224 * t236) + (t226 * t237)) + (t228 * t238))
-              let !t240 = (((t230 * t236) + (t231 * t237)) + (t232 * t238))
-              let !t241 = (if ((abs t235) - 1.0e-300) > 0 then (((t233 * t239) - (t240 * t229)) / t235) else 0.0)
-              let !t242 = (if (t241 - 1.0) > 0 then 1.0 else t241)
-              let !t243 = (if (t235 - ((1.0e-12 * t234) * t229)) > 0 then (if (negate t242) > 0 then 0.0 else t242) else 0.0)
-              let !t244 = (if ((abs t229) - 1.0e-300) > 0 then (((t233 * t243) + t239) / t229) else 0.0)
-              let !t245 = ((abs t234) - 1.0e-300)
-              let !t246 = (if t245 > 0 then ((negate t240) / t234) else 0.0)
+      v203 <- newR 0.0
+      v204 <- newR 0.0
+      v205 <- newR 0.0
+      v206 <- newR 0.0
+      v207 <- newR 0.0
+      loopI 0.0 24.0 $ \i208 -> do
+        let !d208 = fromIntegral i208 :: Double
+        chkI radii (i208 + (24 * i31)) 0 0
+        t209 <- rdU radii (i208 + (24 * i31))
+        loopI 6.0 12.0 $ \i210 -> do
+          let !d210 = fromIntegral i210 :: Double
+          let !t211 = (d208 + d210)
+          chkI radii (truncate ((24.0 * d31) + (t211 - (24.0 * (floorF (t211 / 24.0)))))) 0 0
+          t212 <- rdU radii (truncate ((24.0 * d31) + (t211 - (24.0 * (floorF (t211 / 24.0))))))
+          loopI 1.0 4.0 $ \i213 -> do
+            let !d213 = fromIntegral i213 :: Double
+            chkI verts ((12 * i208) + (3 * i213) + (291 * i31)) 0 5
+            t214 <- rdU verts ((12 * i208) + (3 * i213) + (291 * i31))
+            t215 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 1)
+            t216 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 2)
+            t217 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 3)
+            t218 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 4)
+            t219 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 5)
+            loopI 1.0 4.0 $ \i220 -> do
+              let !d220 = fromIntegral i220 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0)))) 0 0
+              t221 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 1.0)) 0 0
+              t222 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 2.0)) 0 0
+              t223 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220))) 0 0
+              t224 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 1.0)) 0 0
+              t225 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 2.0)) 0 0
+              t226 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 2.0))
+              t227 <- getR v201
+              let !t228 = (negate t221)
+              let !t229 = (t224 + t228)
+              let !t230 = (negate t222)
+              let !t231 = (t225 + t230)
+              let !t232 = (negate t223)
+              let !t233 = (t226 + t232)
+              let !t234 = (((t229 * t229) + (t231 * t231)) + (t233 * t233))
+              let !t235 = (t217 + (negate t214))
+              let !t236 = (t218 + (negate t215))
+              let !t237 = (t219 + (negate t216))
+              let !t238 = (((t235 * t229) + (t236 * t231)) + (t237 * t233))
+              let !t239 = (((t235 * t235) + (t236 * t236)) + (t237 * t237))
+              let !t240 = ((t239 * t234) - (t238 * t238))
+              let !t241 = (t214 + t228)
+              let !t242 = (t215 + t230)
+              let !t243 = (t216 + t232)
+              let !t244 = (((t229 * t241) + (t231 * t242)) + (t233 * t243))
+              let !t245 = (((t235 * t241) + (t236 * t242)) + (t237 * t243))
+              let !t246 = (if ((abs t240) - 1.0e-300) > 0 then (((t238 * t244) - (t245 * t234)) / t240) else 0.0)
               let !t247 = (if (t246 - 1.0) > 0 then 1.0 else t246)
-              let !t248 = (t244 - 1.0)
-              let !t249 = (if t245 > 0 then ((t233 - t240) / t234) else 0.0)
-              let !t250 = (if (t249 - 1.0) > 0 then 1.0 else t249)
-              let !t251 = (if (negate t244) > 0 then (if (negate t247) > 0 then 0.0 else t247) else (if t248 > 0 then (if (negate t250) > 0 then 0.0 else t250) else t243))
-              let !t252 = (if t248 > 0 then 1.0 else t244)
-              let !t253 = (if (negate t252) > 0 then 0.0 else t252)
-              let !t254 = ((0.5 * ((t204 - ((t204 * (d208 + t251)) / 4.0)) + (t207 - ((t207 * (d215 + t253)) / 4.0)))) - t222)
-              let !t255 = ((t209 + (t251 * t230)) + (negate (t216 + (t253 * t224))))
-              let !t256 = ((t210 + (t251 * t231)) + (negate (t217 + (t253 * t226))))
-              let !t257 = ((t211 + (t251 * t232)) + (negate (t218 + (t253 * t228))))
-              let !t258 = ((0.3 * ((if (t207 - t204) > 0 then t204 else t207) / 4.0)) - (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257))))
-              if (if (t254 - t258) > 0 then t258 else t254) > 0 then do
-                setR v196 (0.5 * ((t204 - ((t204 * (d208 + t251)) / 4.0)) + (t207 - ((t207 * (d215 + t253)) / 4.0))))
-                chkI verts ((12 * i203) + (291 * i31)) 3 5
-                t259 <- rdU verts (((12 * i203) + (291 * i31)) + 3)
-                t260 <- rdU verts (((12 * i203) + (291 * i31)) + 4)
-                t261 <- rdU verts (((12 * i203) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0)))) 0 0
-                t262 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t263 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t264 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t206 - (24.0 * (floorF (t206 / 24.0)))) * 4.0))) + 2.0))
-                setR v197 (t209 + (t251 * t230))
-                setR v198 (t210 + (t251 * t231))
-                setR v199 (t211 + (t251 * t232))
-                let !t265 = (negate t181)
-                let !t266 = (t259 + t265)
-                let !t267 = (negate t182)
-                let !t268 = (t260 + t267)
-                let !t269 = (negate t183)
-                let !t270 = (t261 + t269)
-                let !t271 = (sqrt (((t266 * t266) + (t268 * t268)) + (t270 * t270)))
-                let !t272 = (t262 + t265)
-                let !t273 = (t263 + t267)
-                let !t274 = (t264 + t269)
-                let !t275 = (sqrt (((t272 * t272) + (t273 * t273)) + (t274 * t274)))
-                setR v200 (negate (((if t271 > 0 then (recip (if (t271 - 1.0e-300) > 0 then t271 else 1.0e-300)) else 0.0) * t266) + ((if t275 > 0 then (recip (if (t275 - 1.0e-300) > 0 then t275 else 1.0e-300)) else 0.0) * t272)))
-                setR v201 (negate (((if t271 > 0 then (recip (if (t271 - 1.0e-300) > 0 then t271 else 1.0e-300)) else 0.0) * t268) + ((if t275 > 0 then (recip (if (t275 - 1.0e-300) > 0 then t275 else 1.0e-300)) else 0.0) * t273)))
-                setR v202 (negate (((if t271 > 0 then (recip (if (t271 - 1.0e-300) > 0 then t271 else 1.0e-300)) else 0.0) * t270) + ((if t275 > 0 then (recip (if (t275 - 1.0e-300) > 0 then t275 else 1.0e-300)) else 0.0) * t274)))
+              let !t248 = (if (t240 - ((1.0e-12 * t239) * t234)) > 0 then (if (negate t247) > 0 then 0.0 else t247) else 0.0)
+              let !t249 = (if ((abs t234) - 1.0e-300) > 0 then (((t238 * t248) + t244) / t234) else 0.0)
+              let !t250 = ((abs t239) - 1.0e-300)
+              let !t251 = (if t250 > 0 then ((negate t245) / t239) else 0.0)
+              let !t252 = (if (t251 - 1.0) > 0 then 1.0 else t251)
+              let !t253 = (t249 - 1.0)
+              let !t254 = (if t250 > 0 then ((t238 - t245) / t239) else 0.0)
+              let !t255 = (if (t254 - 1.0) > 0 then 1.0 else t254)
+              let !t256 = (if (negate t249) > 0 then (if (negate t252) > 0 then 0.0 else t252) else (if t253 > 0 then (if (negate t255) > 0 then 0.0 else t255) else t248))
+              let !t257 = (if t253 > 0 then 1.0 else t249)
+              let !t258 = (if (negate t257) > 0 then 0.0 else t257)
+              let !t259 = ((0.5 * ((t209 - ((t209 * (d213 + t256)) / 4.0)) + (t212 - ((t212 * (d220 + t258)) / 4.0)))) - t227)
+              let !t260 = ((t214 + (t256 * t235)) + (negate (t221 + (t258 * t229))))
+              let !t261 = ((t215 + (t256 * t236)) + (negate (t222 + (t258 * t231))))
+              let !t262 = ((t216 + (t256 * t237)) + (negate (t223 + (t258 * t233))))
+              let !t263 = ((0.3 * ((if (t212 - t209) > 0 then t209 else t212) / 4.0)) - (sqrt (((t260 * t260) + (t261 * t261)) + (t262 * t262))))
+              if (if (t259 - t263) > 0 then t263 else t259) > 0 then do
+                setR v201 (0.5 * ((t209 - ((t209 * (d213 + t256)) / 4.0)) + (t212 - ((t212 * (d220 + t258)) / 4.0))))
+                chkI verts ((12 * i208) + (291 * i31)) 3 5
+                t264 <- rdU verts (((12 * i208) + (291 * i31)) + 3)
+                t265 <- rdU verts (((12 * i208) + (291 * i31)) + 4)
+                t266 <- rdU verts (((12 * i208) + (291 * i31)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)))) 0 0
+                t267 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t268 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t269 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 2.0))
+                setR v202 (t214 + (t256 * t235))
+                setR v203 (t215 + (t256 * t236))
+                setR v204 (t216 + (t256 * t237))
+                let !t270 = (negate t186)
+                let !t271 = (t264 + t270)
+                let !t272 = (negate t187)
+                let !t273 = (t265 + t272)
+                let !t274 = (negate t188)
+                let !t275 = (t266 + t274)
+                let !t276 = (sqrt (((t271 * t271) + (t273 * t273)) + (t275 * t275)))
+                let !t277 = (t267 + t270)
+                let !t278 = (t268 + t272)
+                let !t279 = (t269 + t274)
+                let !t280 = (sqrt (((t277 * t277) + (t278 * t278)) + (t279 * t279)))
+                setR v205 (negate (((if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0) * t271) + ((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t277)))
+                setR v206 (negate (((if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0) * t273) + ((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t278)))
+                setR v207 (negate (((if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0) * t275) + ((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t279)))
                 pure ()
               else do
                 pure ()
@@ -593,123 +605,123 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t276 <- getR v196
-      if t276 > 0 then do
-        t277 <- getR v197
-        t278 <- getR v198
-        t279 <- getR v199
-        t280 <- getR v200
-        t281 <- getR v201
+      t281 <- getR v201
+      if t281 > 0 then do
         t282 <- getR v202
-        let !t283 = (recip (2.0 * (sqrt (((t277 * t277) + (t278 * t278)) + (t279 * t279)))))
-        let !t284 = (t283 * (t277 + t277))
-        let !t285 = (t283 * (t278 + t278))
-        let !t286 = (t283 * (t279 + t279))
-        let !t287 = (sqrt (((t284 * t284) + (t285 * t285)) + (t286 * t286)))
-        let !t288 = (if t287 > 0 then (recip (if (t287 - 1.0e-300) > 0 then t287 else 1.0e-300)) else 0.0)
-        let !s289 = (t288 * t284)
-        let !s290 = (t288 * t285)
-        let !s291 = (t288 * t286)
-        let !t292 = (((s289 * t280) + (s290 * t281)) + (s291 * t282))
-        let !t293 = (t280 + (negate (t292 * s289)))
-        let !t294 = (t281 + (negate (t292 * s290)))
-        let !t295 = (t282 + (negate (t292 * s291)))
-        let !t296 = (sqrt (((t293 * t293) + (t294 * t294)) + (t295 * t295)))
-        let !t297 = (if t296 > 0 then (recip (if (t296 - 1.0e-300) > 0 then t296 else 1.0e-300)) else 0.0)
-        let !s298 = (t297 * t293)
-        let !s299 = (t297 * t294)
-        let !s300 = (t297 * t295)
-        t301 <- rdU meta 2
-        t302 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t302) > 0 then 1.0 else t302)) - t301) - 0.5) > 0 then do
-          wrU meta 2 (t301 + 1.0)
-          t303 <- rdU pos (3 * i31)
-          t304 <- rdU pos ((3 * i31) + 1)
-          t305 <- rdU pos ((3 * i31) + 2)
-          t306 <- rdU normal (3 * i31)
-          t307 <- rdU normal ((3 * i31) + 1)
-          t308 <- rdU normal ((3 * i31) + 2)
+        t283 <- getR v203
+        t284 <- getR v204
+        t285 <- getR v205
+        t286 <- getR v206
+        t287 <- getR v207
+        let !t288 = (recip (2.0 * (sqrt (((t282 * t282) + (t283 * t283)) + (t284 * t284)))))
+        let !t289 = (t288 * (t282 + t282))
+        let !t290 = (t288 * (t283 + t283))
+        let !t291 = (t288 * (t284 + t284))
+        let !t292 = (sqrt (((t289 * t289) + (t290 * t290)) + (t291 * t291)))
+        let !t293 = (if t292 > 0 then (recip (if (t292 - 1.0e-300) > 0 then t292 else 1.0e-300)) else 0.0)
+        let !s294 = (t293 * t289)
+        let !s295 = (t293 * t290)
+        let !s296 = (t293 * t291)
+        let !t297 = (((s294 * t285) + (s295 * t286)) + (s296 * t287))
+        let !t298 = (t285 + (negate (t297 * s294)))
+        let !t299 = (t286 + (negate (t297 * s295)))
+        let !t300 = (t287 + (negate (t297 * s296)))
+        let !t301 = (sqrt (((t298 * t298) + (t299 * t299)) + (t300 * t300)))
+        let !t302 = (if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0)
+        let !s303 = (t302 * t298)
+        let !s304 = (t302 * t299)
+        let !s305 = (t302 * t300)
+        t306 <- rdU meta 2
+        t307 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t307) > 0 then 1.0 else t307)) - t306) - 0.5) > 0 then do
+          wrU meta 2 (t306 + 1.0)
+          t308 <- rdU pos (3 * i31)
+          t309 <- rdU pos ((3 * i31) + 1)
+          t310 <- rdU pos ((3 * i31) + 2)
+          t311 <- rdU normal (3 * i31)
+          t312 <- rdU normal ((3 * i31) + 1)
+          t313 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t309 <- rdU axis (3 * i31)
-          t310 <- rdU axis ((3 * i31) + 1)
-          t311 <- rdU axis ((3 * i31) + 2)
-          let !s312 = ((t307 * t311) - (t308 * t310))
-          let !s313 = ((t308 * t309) - (t306 * t311))
-          let !s314 = ((t306 * t310) - (t307 * t309))
+          t314 <- rdU axis (3 * i31)
+          t315 <- rdU axis ((3 * i31) + 1)
+          t316 <- rdU axis ((3 * i31) + 2)
+          let !s317 = ((t312 * t316) - (t313 * t315))
+          let !s318 = ((t313 * t314) - (t311 * t316))
+          let !s319 = ((t311 * t315) - (t312 * t314))
           chkI scalars (6 * i31) 0 0
-          t315 <- rdU scalars (6 * i31)
-          t316 <- rdU scalars ((6 * i31) + 5)
-          t317 <- rdU scalars ((6 * i31) + 2)
-          t318 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t301)) 0 29
-          wrU contacts (30 * (truncate t301)) d31
-          wrU contacts ((30 * (truncate t301)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t301)) + 2) d31
-          wrU contacts ((30 * (truncate t301)) + 3) 12.0
-          wrU contacts ((30 * (truncate t301)) + 4) (s298 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t306)))
-          wrU contacts ((30 * (truncate t301)) + 5) (s299 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t307)))
-          wrU contacts ((30 * (truncate t301)) + 6) (s300 + (negate ((((t306 * s298) + (t307 * s299)) + (t308 * s300)) * t308)))
-          wrU contacts ((30 * (truncate t301)) + 7) 0.0
-          wrU contacts ((30 * (truncate t301)) + 12) 0.0
-          wrU contacts ((30 * (truncate t301)) + 13) 0.0
-          wrU contacts ((30 * (truncate t301)) + 14) 0.0
-          wrU contacts ((30 * (truncate t301)) + 15) 0.0
-          wrU contacts ((30 * (truncate t301)) + 20) t276
-          wrU contacts ((30 * (truncate t301)) + 26) 0.6
-          wrU contacts ((30 * (truncate t301)) + 27) t277
-          wrU contacts ((30 * (truncate t301)) + 28) t278
-          wrU contacts ((30 * (truncate t301)) + 29) t279
+          t320 <- rdU scalars (6 * i31)
+          t321 <- rdU scalars ((6 * i31) + 5)
+          t322 <- rdU scalars ((6 * i31) + 2)
+          t323 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t306)) 0 29
+          wrU contacts (30 * (truncate t306)) d31
+          wrU contacts ((30 * (truncate t306)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t306)) + 2) d31
+          wrU contacts ((30 * (truncate t306)) + 3) 12.0
+          wrU contacts ((30 * (truncate t306)) + 4) (s303 + (negate ((((t311 * s303) + (t312 * s304)) + (t313 * s305)) * t311)))
+          wrU contacts ((30 * (truncate t306)) + 5) (s304 + (negate ((((t311 * s303) + (t312 * s304)) + (t313 * s305)) * t312)))
+          wrU contacts ((30 * (truncate t306)) + 6) (s305 + (negate ((((t311 * s303) + (t312 * s304)) + (t313 * s305)) * t313)))
+          wrU contacts ((30 * (truncate t306)) + 7) 0.0
+          wrU contacts ((30 * (truncate t306)) + 12) 0.0
+          wrU contacts ((30 * (truncate t306)) + 13) 0.0
+          wrU contacts ((30 * (truncate t306)) + 14) 0.0
+          wrU contacts ((30 * (truncate t306)) + 15) 0.0
+          wrU contacts ((30 * (truncate t306)) + 20) t281
+          wrU contacts ((30 * (truncate t306)) + 26) 0.6
+          wrU contacts ((30 * (truncate t306)) + 27) t282
+          wrU contacts ((30 * (truncate t306)) + 28) t283
+          wrU contacts ((30 * (truncate t306)) + 29) t284
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t319 <- rdU pos (-3)
-            t320 <- rdU pos (-2)
-            t321 <- rdU pos (-1)
+            t324 <- rdU pos (-3)
+            t325 <- rdU pos (-2)
+            t326 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t322 <- rdU normal (-3)
-            t323 <- rdU normal (-2)
-            t324 <- rdU normal (-1)
+            t327 <- rdU normal (-3)
+            t328 <- rdU normal (-2)
+            t329 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t325 <- rdU axis (-3)
-            t326 <- rdU axis (-2)
-            t327 <- rdU axis (-1)
-            let !s328 = ((t323 * t327) - (t324 * t326))
-            let !s329 = ((t324 * t325) - (t322 * t327))
-            let !s330 = ((t322 * t326) - (t323 * t325))
+            t330 <- rdU axis (-3)
+            t331 <- rdU axis (-2)
+            t332 <- rdU axis (-1)
+            let !s333 = ((t328 * t332) - (t329 * t331))
+            let !s334 = ((t329 * t330) - (t327 * t332))
+            let !s335 = ((t327 * t331) - (t328 * t330))
             chkI scalars 0 (-6) (-1)
-            t331 <- rdU scalars (-6)
-            t332 <- rdU scalars (-1)
-            t333 <- rdU scalars (-4)
-            t334 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t301)) + 8) (s298 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t322)))
-            wrU contacts ((30 * (truncate t301)) + 9) (s299 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t323)))
-            wrU contacts ((30 * (truncate t301)) + 10) (s300 + (negate ((((t322 * s298) + (t323 * s299)) + (t324 * s300)) * t324)))
-            let !t335 = (t278 + (negate t320))
-            let !t336 = (t279 + (negate t321))
-            let !t337 = (t277 + (negate t319))
-            wrU contacts ((30 * (truncate t301)) + 11) (((((t335 * s300) - (t336 * s299)) * t322) + (((t336 * s298) - (t337 * s300)) * t323)) + (((t337 * s299) - (t335 * s298)) * t324))
-            let !t338 = ((t307 * s300) - (t308 * s299))
-            wrU contacts ((30 * (truncate t301)) + 16) (t338 + (negate ((((t322 * t338) + (t323 * ((t308 * s298) - (t306 * s300)))) + (t324 * ((t306 * s299) - (t307 * s298)))) * t322)))
-            let !t339 = ((t308 * s298) - (t306 * s300))
-            wrU contacts ((30 * (truncate t301)) + 17) (t339 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * ((t306 * s299) - (t307 * s298)))) * t323)))
-            let !t340 = ((t306 * s299) - (t307 * s298))
-            wrU contacts ((30 * (truncate t301)) + 18) (t340 + (negate ((((t322 * t338) + (t323 * t339)) + (t324 * t340)) * t324)))
-            wrU contacts ((30 * (truncate t301)) + 19) (((((t335 * t340) - (t336 * t339)) * t322) + (((t336 * t338) - (t337 * t340)) * t323)) + (((t337 * t339) - (t335 * t338)) * t324))
+            t336 <- rdU scalars (-6)
+            t337 <- rdU scalars (-1)
+            t338 <- rdU scalars (-4)
+            t339 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t306)) + 8) (s303 + (negate ((((t327 * s303) + (t328 * s304)) + (t329 * s305)) * t327)))
+            wrU contacts ((30 * (truncate t306)) + 9) (s304 + (negate ((((t327 * s303) + (t328 * s304)) + (t329 * s305)) * t328)))
+            wrU contacts ((30 * (truncate t306)) + 10) (s305 + (negate ((((t327 * s303) + (t328 * s304)) + (t329 * s305)) * t329)))
+            let !t340 = (t283 + (negate t325))
+            let !t341 = (t284 + (negate t326))
+            let !t342 = (t282 + (negate t324))
+            wrU contacts ((30 * (truncate t306)) + 11) (((((t340 * s305) - (t341 * s304)) * t327) + (((t341 * s303) - (t342 * s305)) * t328)) + (((t342 * s304) - (t340 * s303)) * t329))
+            let !t343 = ((t312 * s305) - (t313 * s304))
+            wrU contacts ((30 * (truncate t306)) + 16) (t343 + (negate ((((t327 * t343) + (t328 * ((t313 * s303) - (t311 * s305)))) + (t329 * ((t311 * s304) - (t312 * s303)))) * t327)))
+            let !t344 = ((t313 * s303) - (t311 * s305))
+            wrU contacts ((30 * (truncate t306)) + 17) (t344 + (negate ((((t327 * t343) + (t328 * t344)) + (t329 * ((t311 * s304) - (t312 * s303)))) * t328)))
+            let !t345 = ((t311 * s304) - (t312 * s303))
+            wrU contacts ((30 * (truncate t306)) + 18) (t345 + (negate ((((t327 * t343) + (t328 * t344)) + (t329 * t345)) * t329)))
+            wrU contacts ((30 * (truncate t306)) + 19) (((((t340 * t345) - (t341 * t344)) * t327) + (((t341 * t343) - (t342 * t345)) * t328)) + (((t342 * t344) - (t340 * t343)) * t329))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t301)) + 8) 0.0
-            wrU contacts ((30 * (truncate t301)) + 9) 0.0
-            wrU contacts ((30 * (truncate t301)) + 10) 0.0
-            wrU contacts ((30 * (truncate t301)) + 11) 0.0
-            wrU contacts ((30 * (truncate t301)) + 16) 0.0
-            wrU contacts ((30 * (truncate t301)) + 17) 0.0
-            wrU contacts ((30 * (truncate t301)) + 18) 0.0
-            wrU contacts ((30 * (truncate t301)) + 19) 0.0
+            wrU contacts ((30 * (truncate t306)) + 8) 0.0
+            wrU contacts ((30 * (truncate t306)) + 9) 0.0
+            wrU contacts ((30 * (truncate t306)) + 10) 0.0
+            wrU contacts ((30 * (truncate t306)) + 11) 0.0
+            wrU contacts ((30 * (truncate t306)) + 16) 0.0
+            wrU contacts ((30 * (truncate t306)) + 17) 0.0
+            wrU contacts ((30 * (truncate t306)) + 18) 0.0
+            wrU contacts ((30 * (truncate t306)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t341 <- rdU meta 6
-          wrU meta 6 (t341 + 1.0)
+          t346 <- rdU meta 6
+          wrU meta 6 (t346 + 1.0)
           pure ()
         pure ()
       else do
@@ -720,8 +732,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1738,8 +1750,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1901,8 +1913,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "klein-bottle" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  const t0 = (Math.sqrt(((x * x) + (z * z))) - 0.8);\n  return (Math.sqrt(((t0 * t0) + (y * y))) - 0.5);\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [(-(3.0 * x)), 0.0, (-(3.0 * z))];\n}\n\nquotient Antipodal\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.KleinBottle: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -73,8 +73,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -149,49 +149,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -205,52 +210,63 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    let !s67 = (negate t32)
-    let !s68 = (negate t33)
-    let !s69 = (negate t34)
-    t70 <- rdU meta 4
-    t71 <- rdU meta 5
-    let !s72 = (floorF (s67 / t71))
-    let !s73 = (floorF (s68 / t71))
-    let !s74 = (floorF (s69 / t71))
-    loopI 0.0 3.0 $ \i75 -> do
-      let !d75 = fromIntegral i75 :: Double
-      loopI 0.0 3.0 $ \i76 -> do
-        let !d76 = fromIntegral i76 :: Double
-        loopI 0.0 3.0 $ \i77 -> do
-          let !d77 = fromIntegral i77 :: Double
-          let !s78 = ((s72 + d75) - 1.0)
-          let !s79 = ((s73 + d76) - 1.0)
-          let !s80 = ((s74 + d77) - 1.0)
-          let !s81 = (((((s78 + 131072.0) * 262144.0) + (s79 + 131072.0)) * 262144.0) + (s80 + 131072.0))
-          let !t82 = (((s78 * 7.3856093e7) + (s79 * 1.9349663e7)) + (s80 * 8.3492791e7))
-          let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
-          chkI grid (truncate s83) 0 0
-          t84 <- rdU grid (truncate s83)
-          chkI grid ((truncate s83) + (truncate t70)) 0 0
-          t85 <- rdU grid ((truncate s83) + (truncate t70))
-          loopI t85 t84 $ \i86 -> do
-            let !d86 = fromIntegral i86 :: Double
-            chkI items i86 0 0
-            t87 <- rdU items i86
-            chkI cellOf (truncate t87) 0 0
-            t88 <- rdU cellOf (truncate t87)
-            if (0.5 - (abs (t88 - s81))) > 0 then do
-              if ((t87 - d31) + 0.5) > 0 then do
-                chkI pos (3 * (truncate t87)) 0 2
-                t89 <- rdU pos (3 * (truncate t87))
-                t90 <- rdU pos ((3 * (truncate t87)) + 1)
-                t91 <- rdU pos ((3 * (truncate t87)) + 2)
-                chkI scalars (6 * (truncate t87)) 2 5
-                t92 <- rdU scalars ((6 * (truncate t87)) + 5)
-                t93 <- rdU scalars ((6 * (truncate t87)) + 2)
-                let !t94 = (t36 + t93)
-                let !t95 = (s67 + (negate t89))
-                let !t96 = (s68 + (negate t90))
-                let !t97 = (s69 + (negate t91))
-                let !t98 = ((t35 + t92) - (sqrt (((t95 * t95) + (t96 * t96)) + (t97 * t97))))
-                if (if (t94 - t98) > 0 then t98 else t94) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t87 + 1.0) * 64.0) + 16.0) d31 t87 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
+    let !s72 = (negate t32)
+    let !s73 = (negate t33)
+    let !s74 = (negate t34)
+    setR v38 0.0
+    t75 <- rdU meta 4
+    t76 <- rdU meta 5
+    let !s77 = (floorF (s72 / t76))
+    let !s78 = (floorF (s73 / t76))
+    let !s79 = (floorF (s74 / t76))
+    loopI 0.0 3.0 $ \i80 -> do
+      let !d80 = fromIntegral i80 :: Double
+      loopI 0.0 3.0 $ \i81 -> do
+        let !d81 = fromIntegral i81 :: Double
+        loopI 0.0 3.0 $ \i82 -> do
+          let !d82 = fromIntegral i82 :: Double
+          let !s83 = ((s77 + d80) - 1.0)
+          let !s84 = ((s78 + d81) - 1.0)
+          let !s85 = ((s79 + d82) - 1.0)
+          let !s86 = (((((s83 + 131072.0) * 262144.0) + (s84 + 131072.0)) * 262144.0) + (s85 + 131072.0))
+          let !t87 = (((s83 * 7.3856093e7) + (s84 * 1.9349663e7)) + (s85 * 8.3492791e7))
+          let !s88 = (t87 - (t75 * (floorF (t87 / t75))))
+          chkI grid (truncate s88) 0 0
+          t89 <- rdU grid (truncate s88)
+          chkI grid ((truncate s88) + (truncate t75)) 0 0
+          t90 <- rdU grid ((truncate s88) + (truncate t75))
+          loopI t90 t89 $ \i91 -> do
+            let !d91 = fromIntegral i91 :: Double
+            chkI items i91 0 0
+            t92 <- rdU items i91
+            chkI cellOf (truncate t92) 0 0
+            t93 <- rdU cellOf (truncate t92)
+            if (0.5 - (abs (t93 - s86))) > 0 then do
+              if ((t92 - d31) + 0.5) > 0 then do
+                chkI pos (3 * (truncate t92)) 0 2
+                t94 <- rdU pos (3 * (truncate t92))
+                t95 <- rdU pos ((3 * (truncate t92)) + 1)
+                t96 <- rdU pos ((3 * (truncate t92)) + 2)
+                chkI scalars (6 * (truncate t92)) 2 5
+                t97 <- rdU scalars ((6 * (truncate t92)) + 5)
+                t98 <- rdU scalars ((6 * (truncate t92)) + 2)
+                let !t99 = (t36 + t98)
+                let !t100 = (s72 + (negate t94))
+                let !t101 = (s73 + (negate t95))
+                let !t102 = (s74 + (negate t96))
+                let !t103 = ((t35 + t97) - (sqrt (((t100 * t100) + (t101 * t101)) + (t102 * t102))))
+                if (if (t99 - t103) > 0 then t103 else t99) > 0 then do
+                  t104 <- getR v38
+                  chkI near (truncate t104) 0 0
+                  wrU near (truncate t104) t92
+                  setR v38 (t104 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -263,134 +279,141 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
+      pure ()
+    t105 <- getR v38
+    loopI 0.0 t105 $ \i106 -> do
+      let !d106 = fromIntegral i106 :: Double
+      chkI near i106 0 0
+      t107 <- rdU near i106
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t107 + 1.0) * 64.0) + 16.0) d31 t107 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
       pure ()
     chkI verts (291 * i31) 0 2
-    t99 <- rdU verts (291 * i31)
-    t100 <- rdU verts ((291 * i31) + 1)
-    t101 <- rdU verts ((291 * i31) + 2)
-    v102 <- newR 1.0
-    loopI 0.0 24.0 $ \i103 -> do
-      let !d103 = fromIntegral i103 :: Double
-      chkI verts ((12 * i103) + (291 * i31)) 12 14
-      t104 <- rdU verts (((12 * i103) + (291 * i31)) + 12)
-      t105 <- rdU verts (((12 * i103) + (291 * i31)) + 13)
-      t106 <- rdU verts (((12 * i103) + (291 * i31)) + 14)
-      chkI radii (i103 + (24 * i31)) 0 0
-      t107 <- rdU radii (i103 + (24 * i31))
-      t108 <- getR v102
-      let !t109 = (t104 + (negate t99))
-      let !t110 = (t105 + (negate t100))
-      let !t111 = (t106 + (negate t101))
-      let !t112 = (if t107 > 0 then ((sqrt (((t109 * t109) + (t110 * t110)) + (t111 * t111))) / t107) else 1.0)
-      setR v102 (if (t108 - t112) > 0 then t112 else t108)
+    t108 <- rdU verts (291 * i31)
+    t109 <- rdU verts ((291 * i31) + 1)
+    t110 <- rdU verts ((291 * i31) + 2)
+    v111 <- newR 1.0
+    loopI 0.0 24.0 $ \i112 -> do
+      let !d112 = fromIntegral i112 :: Double
+      chkI verts ((12 * i112) + (291 * i31)) 12 14
+      t113 <- rdU verts (((12 * i112) + (291 * i31)) + 12)
+      t114 <- rdU verts (((12 * i112) + (291 * i31)) + 13)
+      t115 <- rdU verts (((12 * i112) + (291 * i31)) + 14)
+      chkI radii (i112 + (24 * i31)) 0 0
+      t116 <- rdU radii (i112 + (24 * i31))
+      t117 <- getR v111
+      let !t118 = (t113 + (negate t108))
+      let !t119 = (t114 + (negate t109))
+      let !t120 = (t115 + (negate t110))
+      let !t121 = (if t116 > 0 then ((sqrt (((t118 * t118) + (t119 * t119)) + (t120 * t120))) / t116) else 1.0)
+      setR v111 (if (t117 - t121) > 0 then t121 else t117)
       pure ()
-    t113 <- getR v102
-    if (0.8 - t113) > 0 then do
-      v114 <- newR 0.0
-      v115 <- newR 0.0
-      v116 <- newR 0.0
-      v117 <- newR 0.0
-      v118 <- newR 0.0
-      v119 <- newR 0.0
-      v120 <- newR 0.0
-      loopI 0.0 24.0 $ \i121 -> do
-        let !d121 = fromIntegral i121 :: Double
-        chkI radii (i121 + (24 * i31)) 0 0
-        t122 <- rdU radii (i121 + (24 * i31))
-        loopI 6.0 12.0 $ \i123 -> do
-          let !d123 = fromIntegral i123 :: Double
-          let !t124 = (d121 + d123)
-          chkI radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0)))))) 0 0
-          t125 <- rdU radii (truncate ((24.0 * d31) + (t124 - (24.0 * (floorF (t124 / 24.0))))))
-          loopI 1.0 4.0 $ \i126 -> do
-            let !d126 = fromIntegral i126 :: Double
-            chkI verts ((12 * i121) + (3 * i126) + (291 * i31)) 0 5
-            t127 <- rdU verts ((12 * i121) + (3 * i126) + (291 * i31))
-            t128 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 1)
-            t129 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 2)
-            t130 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 3)
-            t131 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 4)
-            t132 <- rdU verts (((12 * i121) + (3 * i126) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i133 -> do
-              let !d133 = fromIntegral i133 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0)))) 0 0
-              t134 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 1.0)) 0 0
-              t135 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 2.0)) 0 0
-              t136 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + (d133 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133))) 0 0
-              t137 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 1.0)) 0 0
-              t138 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 2.0)) 0 0
-              t139 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)) + d133)) + 2.0))
-              t140 <- getR v114
-              let !t141 = (negate t134)
-              let !t142 = (t137 + t141)
-              let !t143 = (negate t135)
-              let !t144 = (t138 + t143)
-              let !t145 = (negate t136)
-              let !t146 = (t139 + t145)
-              let !t147 = (((t142 * t142) + (t144 * t144)) + (t146 * t146))
-              let !t148 = (t130 + (negate t127))
-              let !t149 = (t131 + (negate t128))
-              let !t150 = (t132 + (negate t129))
-              let !t151 = (((t148 * t142) + (t149 * t144)) + (t150 * t146))
-              let !t152 = (((t148 * t148) + (t149 * t149)) + (t150 * t150))
-              let !t153 = ((t152 * t147) - (t151 * t151))
-              let !t154 = (t127 + t141)
-              let !t155 = (t128 + t143)
-              let !t156 = (t129 + t145)
-              let !t157 = (((t142 * t154) + (t144 * t155)) + (t146 * t156))
-              let !t158 = (((t148 * t154) + (t149 * t155)) + (t150 * t156))
-              let !t159 = (if ((abs t153) - 1.0e-300) > 0 then (((t151 * t157) - (t158 * t147)) / t153) else 0.0)
-              let !t160 = (if (t159 - 1.0) > 0 then 1.0 else t159)
-              let !t161 = (if (t153 - ((1.0e-12 * t152) * t147)) > 0 then (if (negate t160) > 0 then 0.0 else t160) else 0.0)
-              let !t162 = (if ((abs t147) - 1.0e-300) > 0 then (((t151 * t161) + t157) / t147) else 0.0)
-              let !t163 = ((abs t152) - 1.0e-300)
-              let !t164 = (if t163 > 0 then ((negate t158) / t152) else 0.0)
-              let !t165 = (if (t164 - 1.0) > 0 then 1.0 else t164)
-              let !t166 = (t162 - 1.0)
-              let !t167 = (if t163 > 0 then ((t151 - t158) / t152) else 0.0)
-              let !t168 = (if (t167 - 1.0) > 0 then 1.0 else t167)
-              let !t169 = (if (negate t162) > 0 then (if (negate t165) > 0 then 0.0 else t165) else (if t166 > 0 then (if (negate t168) > 0 then 0.0 else t168) else t161))
-              let !t170 = (if t166 > 0 then 1.0 else t162)
-              let !t171 = (if (negate t170) > 0 then 0.0 else t170)
-              let !t172 = ((0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0)))) - t140)
-              let !t173 = ((t127 + (t169 * t148)) + (negate (t134 + (t171 * t142))))
-              let !t174 = ((t128 + (t169 * t149)) + (negate (t135 + (t171 * t144))))
-              let !t175 = ((t129 + (t169 * t150)) + (negate (t136 + (t171 * t146))))
-              let !t176 = ((0.3 * ((if (t125 - t122) > 0 then t122 else t125) / 4.0)) - (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175))))
-              if (if (t172 - t176) > 0 then t176 else t172) > 0 then do
-                setR v114 (0.5 * ((t122 - ((t122 * (d126 + t169)) / 4.0)) + (t125 - ((t125 * (d133 + t171)) / 4.0))))
-                chkI verts ((12 * i121) + (291 * i31)) 3 5
-                t177 <- rdU verts (((12 * i121) + (291 * i31)) + 3)
-                t178 <- rdU verts (((12 * i121) + (291 * i31)) + 4)
-                t179 <- rdU verts (((12 * i121) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0)))) 0 0
-                t180 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t181 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t182 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t124 - (24.0 * (floorF (t124 / 24.0)))) * 4.0))) + 2.0))
-                setR v115 (t127 + (t169 * t148))
-                setR v116 (t128 + (t169 * t149))
-                setR v117 (t129 + (t169 * t150))
-                let !t183 = (negate t99)
-                let !t184 = (t177 + t183)
-                let !t185 = (negate t100)
-                let !t186 = (t178 + t185)
-                let !t187 = (negate t101)
-                let !t188 = (t179 + t187)
-                let !t189 = (sqrt (((t184 * t184) + (t186 * t186)) + (t188 * t188)))
-                let !t190 = (t180 + t183)
-                let !t191 = (t181 + t185)
-                let !t192 = (t182 + t187)
-                let !t193 = (sqrt (((t190 * t190) + (t191 * t191)) + (t192 * t192)))
-                setR v118 (negate (((if t189 > 0 then (recip (if (t189 - 1.0e-300) > 0 then t189 else 1.0e-300)) else 0.0) * t184) + ((if t193 > 0 then (recip (if (t193 - 1.0e-300) > 0 then t193 else 1.0e-300)) else 0.0) * t190)))
-                setR v119 (negate (((if t189 > 0 then (recip (if (t189 - 1.0e-300) > 0 then t189 else 1.0e-300)) else 0.0) * t186) + ((if t193 > 0 then (recip (if (t193 - 1.0e-300) > 0 then t193 else 1.0e-300)) else 0.0) * t191)))
-                setR v120 (negate (((if t189 > 0 then (recip (if (t189 - 1.0e-300) > 0 then t189 else 1.0e-300)) else 0.0) * t188) + ((if t193 > 0 then (recip (if (t193 - 1.0e-300) > 0 then t193 else 1.0e-300)) else 0.0) * t192)))
+    t122 <- getR v111
+    if (0.8 - t122) > 0 then do
+      v123 <- newR 0.0
+      v124 <- newR 0.0
+      v125 <- newR 0.0
+      v126 <- newR 0.0
+      v127 <- newR 0.0
+      v128 <- newR 0.0
+      v129 <- newR 0.0
+      loopI 0.0 24.0 $ \i130 -> do
+        let !d130 = fromIntegral i130 :: Double
+        chkI radii (i130 + (24 * i31)) 0 0
+        t131 <- rdU radii (i130 + (24 * i31))
+        loopI 6.0 12.0 $ \i132 -> do
+          let !d132 = fromIntegral i132 :: Double
+          let !t133 = (d130 + d132)
+          chkI radii (truncate ((24.0 * d31) + (t133 - (24.0 * (floorF (t133 / 24.0)))))) 0 0
+          t134 <- rdU radii (truncate ((24.0 * d31) + (t133 - (24.0 * (floorF (t133 / 24.0))))))
+          loopI 1.0 4.0 $ \i135 -> do
+            let !d135 = fromIntegral i135 :: Double
+            chkI verts ((12 * i130) + (3 * i135) + (291 * i31)) 0 5
+            t136 <- rdU verts ((12 * i130) + (3 * i135) + (291 * i31))
+            t137 <- rdU verts (((12 * i130) + (3 * i135) + (291 * i31)) + 1)
+            t138 <- rdU verts (((12 * i130) + (3 * i135) + (291 * i31)) + 2)
+            t139 <- rdU verts (((12 * i130) + (3 * i135) + (291 * i31)) + 3)
+            t140 <- rdU verts (((12 * i130) + (3 * i135) + (291 * i31)) + 4)
+            t141 <- rdU verts (((12 * i130) + (3 * i135) + (291 * i31)) + 5)
+            loopI 1.0 4.0 $ \i142 -> do
+              let !d142 = fromIntegral i142 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + (d142 - 1.0)))) 0 0
+              t143 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + (d142 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + (d142 - 1.0))) + 1.0)) 0 0
+              t144 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + (d142 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + (d142 - 1.0))) + 2.0)) 0 0
+              t145 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + (d142 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + d142))) 0 0
+              t146 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + d142)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + d142)) + 1.0)) 0 0
+              t147 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + d142)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + d142)) + 2.0)) 0 0
+              t148 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)) + d142)) + 2.0))
+              t149 <- getR v123
+              let !t150 = (negate t143)
+              let !t151 = (t146 + t150)
+              let !t152 = (negate t144)
+              let !t153 = (t147 + t152)
+              let !t154 = (negate t145)
+              let !t155 = (t148 + t154)
+              let !t156 = (((t151 * t151) + (t153 * t153)) + (t155 * t155))
+              let !t157 = (t139 + (negate t136))
+              let !t158 = (t140 + (negate t137))
+              let !t159 = (t141 + (negate t138))
+              let !t160 = (((t157 * t151) + (t158 * t153)) + (t159 * t155))
+              let !t161 = (((t157 * t157) + (t158 * t158)) + (t159 * t159))
+              let !t162 = ((t161 * t156) - (t160 * t160))
+              let !t163 = (t136 + t150)
+              let !t164 = (t137 + t152)
+              let !t165 = (t138 + t154)
+              let !t166 = (((t151 * t163) + (t153 * t164)) + (t155 * t165))
+              let !t167 = (((t157 * t163) + (t158 * t164)) + (t159 * t165))
+              let !t168 = (if ((abs t162) - 1.0e-300) > 0 then (((t160 * t166) - (t167 * t156)) / t162) else 0.0)
+              let !t169 = (if (t168 - 1.0) > 0 then 1.0 else t168)
+              let !t170 = (if (t162 - ((1.0e-12 * t161) * t156)) > 0 then (if (negate t169) > 0 then 0.0 else t169) else 0.0)
+              let !t171 = (if ((abs t156) - 1.0e-300) > 0 then (((t160 * t170) + t166) / t156) else 0.0)
+              let !t172 = ((abs t161) - 1.0e-300)
+              let !t173 = (if t172 > 0 then ((negate t167) / t161) else 0.0)
+              let !t174 = (if (t173 - 1.0) > 0 then 1.0 else t173)
+              let !t175 = (t171 - 1.0)
+              let !t176 = (if t172 > 0 then ((t160 - t167) / t161) else 0.0)
+              let !t177 = (if (t176 - 1.0) > 0 then 1.0 else t176)
+              let !t178 = (if (negate t171) > 0 then (if (negate t174) > 0 then 0.0 else t174) else (if t175 > 0 then (if (negate t177) > 0 then 0.0 else t177) else t170))
+              let !t179 = (if t175 > 0 then 1.0 else t171)
+              let !t180 = (if (negate t179) > 0 then 0.0 else t179)
+              let !t181 = ((0.5 * ((t131 - ((t131 * (d135 + t178)) / 4.0)) + (t134 - ((t134 * (d142 + t180)) / 4.0)))) - t149)
+              let !t182 = ((t136 + (t178 * t157)) + (negate (t143 + (t180 * t151))))
+              let !t183 = ((t137 + (t178 * t158)) + (negate (t144 + (t180 * t153))))
+              let !t184 = ((t138 + (t178 * t159)) + (negate (t145 + (t180 * t155))))
+              let !t185 = ((0.3 * ((if (t134 - t131) > 0 then t131 else t134) / 4.0)) - (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184))))
+              if (if (t181 - t185) > 0 then t185 else t181) > 0 then do
+                setR v123 (0.5 * ((t131 - ((t131 * (d135 + t178)) / 4.0)) + (t134 - ((t134 * (d142 + t180)) / 4.0))))
+                chkI verts ((12 * i130) + (291 * i31)) 3 5
+                t186 <- rdU verts (((12 * i130) + (291 * i31)) + 3)
+                t187 <- rdU verts (((12 * i130) + (291 * i31)) + 4)
+                t188 <- rdU verts (((12 * i130) + (291 * i31)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0)))) 0 0
+                t189 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t190 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t191 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t133 - (24.0 * (floorF (t133 / 24.0)))) * 4.0))) + 2.0))
+                setR v124 (t136 + (t178 * t157))
+                setR v125 (t137 + (t178 * t158))
+                setR v126 (t138 + (t178 * t159))
+                let !t192 = (negate t108)
+                let !t193 = (t186 + t192)
+                let !t194 = (negate t109)
+                let !t195 = (t187 + t194)
+                let !t196 = (negate t110)
+                let !t197 = (t188 + t196)
+                let !t198 = (sqrt (((t193 * t193) + (t195 * t195)) + (t197 * t197)))
+                let !t199 = (t189 + t192)
+                let !t200 = (t190 + t194)
+                let !t201 = (t191 + t196)
+                let !t202 = (sqrt (((t199 * t199) + (t200 * t200)) + (t201 * t201)))
+                setR v127 (negate (((if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0) * t193) + ((if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0) * t199)))
+                setR v128 (negate (((if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0) * t195) + ((if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0) * t200)))
+                setR v129 (negate (((if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0) * t197) + ((if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0) * t201)))
                 pure ()
               else do
                 pure ()
@@ -398,129 +421,129 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t194 <- getR v114
-      if t194 > 0 then do
-        t195 <- getR v115
-        t196 <- getR v116
-        t197 <- getR v117
-        t198 <- getR v118
-        t199 <- getR v119
-        t200 <- getR v120
-        let !t201 = (sqrt ((t195 * t195) + (t197 * t197)))
-        let !t202 = (t201 - 0.8)
-        let !t203 = (recip (2.0 * (sqrt ((t202 * t202) + (t196 * t196)))))
-        let !t204 = (recip (2.0 * t201))
-        let !t205 = (t202 * (t204 * (t195 + t195)))
-        let !t206 = (t203 * (t205 + t205))
-        let !t207 = (t203 * (t196 + t196))
-        let !t208 = (t202 * (t204 * (t197 + t197)))
-        let !t209 = (t203 * (t208 + t208))
-        let !t210 = (sqrt (((t206 * t206) + (t207 * t207)) + (t209 * t209)))
-        let !t211 = (if t210 > 0 then (recip (if (t210 - 1.0e-300) > 0 then t210 else 1.0e-300)) else 0.0)
-        let !s212 = (t211 * t206)
-        let !s213 = (t211 * t207)
-        let !s214 = (t211 * t209)
-        let !t215 = (((s212 * t198) + (s213 * t199)) + (s214 * t200))
-        let !t216 = (t198 + (negate (t215 * s212)))
-        let !t217 = (t199 + (negate (t215 * s213)))
-        let !t218 = (t200 + (negate (t215 * s214)))
-        let !t219 = (sqrt (((t216 * t216) + (t217 * t217)) + (t218 * t218)))
+      t203 <- getR v123
+      if t203 > 0 then do
+        t204 <- getR v124
+        t205 <- getR v125
+        t206 <- getR v126
+        t207 <- getR v127
+        t208 <- getR v128
+        t209 <- getR v129
+        let !t210 = (sqrt ((t204 * t204) + (t206 * t206)))
+        let !t211 = (t210 - 0.8)
+        let !t212 = (recip (2.0 * (sqrt ((t211 * t211) + (t205 * t205)))))
+        let !t213 = (recip (2.0 * t210))
+        let !t214 = (t211 * (t213 * (t204 + t204)))
+        let !t215 = (t212 * (t214 + t214))
+        let !t216 = (t212 * (t205 + t205))
+        let !t217 = (t211 * (t213 * (t206 + t206)))
+        let !t218 = (t212 * (t217 + t217))
+        let !t219 = (sqrt (((t215 * t215) + (t216 * t216)) + (t218 * t218)))
         let !t220 = (if t219 > 0 then (recip (if (t219 - 1.0e-300) > 0 then t219 else 1.0e-300)) else 0.0)
-        let !s221 = (t220 * t216)
-        let !s222 = (t220 * t217)
+        let !s221 = (t220 * t215)
+        let !s222 = (t220 * t216)
         let !s223 = (t220 * t218)
-        t224 <- rdU meta 2
-        t225 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t225) > 0 then 1.0 else t225)) - t224) - 0.5) > 0 then do
-          wrU meta 2 (t224 + 1.0)
-          t226 <- rdU pos (3 * i31)
-          t227 <- rdU pos ((3 * i31) + 1)
-          t228 <- rdU pos ((3 * i31) + 2)
+        let !t224 = (((s221 * t207) + (s222 * t208)) + (s223 * t209))
+        let !t225 = (t207 + (negate (t224 * s221)))
+        let !t226 = (t208 + (negate (t224 * s222)))
+        let !t227 = (t209 + (negate (t224 * s223)))
+        let !t228 = (sqrt (((t225 * t225) + (t226 * t226)) + (t227 * t227)))
+        let !t229 = (if t228 > 0 then (recip (if (t228 - 1.0e-300) > 0 then t228 else 1.0e-300)) else 0.0)
+        let !s230 = (t229 * t225)
+        let !s231 = (t229 * t226)
+        let !s232 = (t229 * t227)
+        t233 <- rdU meta 2
+        t234 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t234) > 0 then 1.0 else t234)) - t233) - 0.5) > 0 then do
+          wrU meta 2 (t233 + 1.0)
+          t235 <- rdU pos (3 * i31)
+          t236 <- rdU pos ((3 * i31) + 1)
+          t237 <- rdU pos ((3 * i31) + 2)
           chkI normal (3 * i31) 0 2
-          t229 <- rdU normal (3 * i31)
-          t230 <- rdU normal ((3 * i31) + 1)
-          t231 <- rdU normal ((3 * i31) + 2)
+          t238 <- rdU normal (3 * i31)
+          t239 <- rdU normal ((3 * i31) + 1)
+          t240 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t232 <- rdU axis (3 * i31)
-          t233 <- rdU axis ((3 * i31) + 1)
-          t234 <- rdU axis ((3 * i31) + 2)
-          let !s235 = ((t230 * t234) - (t231 * t233))
-          let !s236 = ((t231 * t232) - (t229 * t234))
-          let !s237 = ((t229 * t233) - (t230 * t232))
+          t241 <- rdU axis (3 * i31)
+          t242 <- rdU axis ((3 * i31) + 1)
+          t243 <- rdU axis ((3 * i31) + 2)
+          let !s244 = ((t239 * t243) - (t240 * t242))
+          let !s245 = ((t240 * t241) - (t238 * t243))
+          let !s246 = ((t238 * t242) - (t239 * t241))
           chkI scalars (6 * i31) 0 0
-          t238 <- rdU scalars (6 * i31)
-          t239 <- rdU scalars ((6 * i31) + 5)
-          t240 <- rdU scalars ((6 * i31) + 2)
-          t241 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t224)) 0 29
-          wrU contacts (30 * (truncate t224)) d31
-          wrU contacts ((30 * (truncate t224)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t224)) + 2) d31
-          wrU contacts ((30 * (truncate t224)) + 3) 12.0
-          wrU contacts ((30 * (truncate t224)) + 4) (s221 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t229)))
-          wrU contacts ((30 * (truncate t224)) + 5) (s222 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t230)))
-          wrU contacts ((30 * (truncate t224)) + 6) (s223 + (negate ((((t229 * s221) + (t230 * s222)) + (t231 * s223)) * t231)))
-          wrU contacts ((30 * (truncate t224)) + 7) 0.0
-          wrU contacts ((30 * (truncate t224)) + 12) 0.0
-          wrU contacts ((30 * (truncate t224)) + 13) 0.0
-          wrU contacts ((30 * (truncate t224)) + 14) 0.0
-          wrU contacts ((30 * (truncate t224)) + 15) 0.0
-          wrU contacts ((30 * (truncate t224)) + 20) t194
-          wrU contacts ((30 * (truncate t224)) + 26) 0.6
-          wrU contacts ((30 * (truncate t224)) + 27) t195
-          wrU contacts ((30 * (truncate t224)) + 28) t196
-          wrU contacts ((30 * (truncate t224)) + 29) t197
+          t247 <- rdU scalars (6 * i31)
+          t248 <- rdU scalars ((6 * i31) + 5)
+          t249 <- rdU scalars ((6 * i31) + 2)
+          t250 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t233)) 0 29
+          wrU contacts (30 * (truncate t233)) d31
+          wrU contacts ((30 * (truncate t233)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t233)) + 2) d31
+          wrU contacts ((30 * (truncate t233)) + 3) 12.0
+          wrU contacts ((30 * (truncate t233)) + 4) (s230 + (negate ((((t238 * s230) + (t239 * s231)) + (t240 * s232)) * t238)))
+          wrU contacts ((30 * (truncate t233)) + 5) (s231 + (negate ((((t238 * s230) + (t239 * s231)) + (t240 * s232)) * t239)))
+          wrU contacts ((30 * (truncate t233)) + 6) (s232 + (negate ((((t238 * s230) + (t239 * s231)) + (t240 * s232)) * t240)))
+          wrU contacts ((30 * (truncate t233)) + 7) 0.0
+          wrU contacts ((30 * (truncate t233)) + 12) 0.0
+          wrU contacts ((30 * (truncate t233)) + 13) 0.0
+          wrU contacts ((30 * (truncate t233)) + 14) 0.0
+          wrU contacts ((30 * (truncate t233)) + 15) 0.0
+          wrU contacts ((30 * (truncate t233)) + 20) t203
+          wrU contacts ((30 * (truncate t233)) + 26) 0.6
+          wrU contacts ((30 * (truncate t233)) + 27) t204
+          wrU contacts ((30 * (truncate t233)) + 28) t205
+          wrU contacts ((30 * (truncate t233)) + 29) t206
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t242 <- rdU pos (-3)
-            t243 <- rdU pos (-2)
-            t244 <- rdU pos (-1)
+            t251 <- rdU pos (-3)
+            t252 <- rdU pos (-2)
+            t253 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t245 <- rdU normal (-3)
-            t246 <- rdU normal (-2)
-            t247 <- rdU normal (-1)
+            t254 <- rdU normal (-3)
+            t255 <- rdU normal (-2)
+            t256 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t248 <- rdU axis (-3)
-            t249 <- rdU axis (-2)
-            t250 <- rdU axis (-1)
-            let !s251 = ((t246 * t250) - (t247 * t249))
-            let !s252 = ((t247 * t248) - (t245 * t250))
-            let !s253 = ((t245 * t249) - (t246 * t248))
+            t257 <- rdU axis (-3)
+            t258 <- rdU axis (-2)
+            t259 <- rdU axis (-1)
+            let !s260 = ((t255 * t259) - (t256 * t258))
+            let !s261 = ((t256 * t257) - (t254 * t259))
+            let !s262 = ((t254 * t258) - (t255 * t257))
             chkI scalars 0 (-6) (-1)
-            t254 <- rdU scalars (-6)
-            t255 <- rdU scalars (-1)
-            t256 <- rdU scalars (-4)
-            t257 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t224)) + 8) (s221 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t245)))
-            wrU contacts ((30 * (truncate t224)) + 9) (s222 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t246)))
-            wrU contacts ((30 * (truncate t224)) + 10) (s223 + (negate ((((t245 * s221) + (t246 * s222)) + (t247 * s223)) * t247)))
-            let !t258 = (t196 + (negate t243))
-            let !t259 = (t197 + (negate t244))
-            let !t260 = (t195 + (negate t242))
-            wrU contacts ((30 * (truncate t224)) + 11) (((((t258 * s223) - (t259 * s222)) * t245) + (((t259 * s221) - (t260 * s223)) * t246)) + (((t260 * s222) - (t258 * s221)) * t247))
-            let !t261 = ((t230 * s223) - (t231 * s222))
-            wrU contacts ((30 * (truncate t224)) + 16) (t261 + (negate ((((t245 * t261) + (t246 * ((t231 * s221) - (t229 * s223)))) + (t247 * ((t229 * s222) - (t230 * s221)))) * t245)))
-            let !t262 = ((t231 * s221) - (t229 * s223))
-            wrU contacts ((30 * (truncate t224)) + 17) (t262 + (negate ((((t245 * t261) + (t246 * t262)) + (t247 * ((t229 * s222) - (t230 * s221)))) * t246)))
-            let !t263 = ((t229 * s222) - (t230 * s221))
-            wrU contacts ((30 * (truncate t224)) + 18) (t263 + (negate ((((t245 * t261) + (t246 * t262)) + (t247 * t263)) * t247)))
-            wrU contacts ((30 * (truncate t224)) + 19) (((((t258 * t263) - (t259 * t262)) * t245) + (((t259 * t261) - (t260 * t263)) * t246)) + (((t260 * t262) - (t258 * t261)) * t247))
+            t263 <- rdU scalars (-6)
+            t264 <- rdU scalars (-1)
+            t265 <- rdU scalars (-4)
+            t266 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t233)) + 8) (s230 + (negate ((((t254 * s230) + (t255 * s231)) + (t256 * s232)) * t254)))
+            wrU contacts ((30 * (truncate t233)) + 9) (s231 + (negate ((((t254 * s230) + (t255 * s231)) + (t256 * s232)) * t255)))
+            wrU contacts ((30 * (truncate t233)) + 10) (s232 + (negate ((((t254 * s230) + (t255 * s231)) + (t256 * s232)) * t256)))
+            let !t267 = (t205 + (negate t252))
+            let !t268 = (t206 + (negate t253))
+            let !t269 = (t204 + (negate t251))
+            wrU contacts ((30 * (truncate t233)) + 11) (((((t267 * s232) - (t268 * s231)) * t254) + (((t268 * s230) - (t269 * s232)) * t255)) + (((t269 * s231) - (t267 * s230)) * t256))
+            let !t270 = ((t239 * s232) - (t240 * s231))
+            wrU contacts ((30 * (truncate t233)) + 16) (t270 + (negate ((((t254 * t270) + (t255 * ((t240 * s230) - (t238 * s232)))) + (t256 * ((t238 * s231) - (t239 * s230)))) * t254)))
+            let !t271 = ((t240 * s230) - (t238 * s232))
+            wrU contacts ((30 * (truncate t233)) + 17) (t271 + (negate ((((t254 * t270) + (t255 * t271)) + (t256 * ((t238 * s231) - (t239 * s230)))) * t255)))
+            let !t272 = ((t238 * s231) - (t239 * s230))
+            wrU contacts ((30 * (truncate t233)) + 18) (t272 + (negate ((((t254 * t270) + (t255 * t271)) + (t256 * t272)) * t256)))
+            wrU contacts ((30 * (truncate t233)) + 19) (((((t267 * t272) - (t268 * t271)) * t254) + (((t268 * t270) - (t269 * t272)) * t255)) + (((t269 * t271) - (t267 * t270)) * t256))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t224)) + 8) 0.0
-            wrU contacts ((30 * (truncate t224)) + 9) 0.0
-            wrU contacts ((30 * (truncate t224)) + 10) 0.0
-            wrU contacts ((30 * (truncate t224)) + 11) 0.0
-            wrU contacts ((30 * (truncate t224)) + 16) 0.0
-            wrU contacts ((30 * (truncate t224)) + 17) 0.0
-            wrU contacts ((30 * (truncate t224)) + 18) 0.0
-            wrU contacts ((30 * (truncate t224)) + 19) 0.0
+            wrU contacts ((30 * (truncate t233)) + 8) 0.0
+            wrU contacts ((30 * (truncate t233)) + 9) 0.0
+            wrU contacts ((30 * (truncate t233)) + 10) 0.0
+            wrU contacts ((30 * (truncate t233)) + 11) 0.0
+            wrU contacts ((30 * (truncate t233)) + 16) 0.0
+            wrU contacts ((30 * (truncate t233)) + 17) 0.0
+            wrU contacts ((30 * (truncate t233)) + 18) 0.0
+            wrU contacts ((30 * (truncate t233)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t264 <- rdU meta 6
-          wrU meta 6 (t264 + 1.0)
+          t273 <- rdU meta 6
+          wrU meta 6 (t273 + 1.0)
           pure ()
         pure ()
       else do
@@ -531,8 +554,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1709,8 +1732,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1903,8 +1926,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

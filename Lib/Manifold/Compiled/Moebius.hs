@@ -22,13 +22,13 @@ compiled = CompiledStep "moebius" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - 1.0);\n}\n\nboundary function f(x, y, z) {\n  return (0.4 - Math.abs(y));\n}\n\ngravity function f(x, y, z) {\n  return [0.0, (-(4.0 * y)), 0.0];\n}\n\nquotient Antipodal\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Moebius: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -72,8 +72,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -148,49 +148,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -204,52 +209,63 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    let !s67 = (negate t32)
-    let !s68 = (negate t33)
-    let !s69 = (negate t34)
-    t70 <- rdU meta 4
-    t71 <- rdU meta 5
-    let !s72 = (floorF (s67 / t71))
-    let !s73 = (floorF (s68 / t71))
-    let !s74 = (floorF (s69 / t71))
-    loopI 0.0 3.0 $ \i75 -> do
-      let !d75 = fromIntegral i75 :: Double
-      loopI 0.0 3.0 $ \i76 -> do
-        let !d76 = fromIntegral i76 :: Double
-        loopI 0.0 3.0 $ \i77 -> do
-          let !d77 = fromIntegral i77 :: Double
-          let !s78 = ((s72 + d75) - 1.0)
-          let !s79 = ((s73 + d76) - 1.0)
-          let !s80 = ((s74 + d77) - 1.0)
-          let !s81 = (((((s78 + 131072.0) * 262144.0) + (s79 + 131072.0)) * 262144.0) + (s80 + 131072.0))
-          let !t82 = (((s78 * 7.3856093e7) + (s79 * 1.9349663e7)) + (s80 * 8.3492791e7))
-          let !s83 = (t82 - (t70 * (floorF (t82 / t70))))
-          chkI grid (truncate s83) 0 0
-          t84 <- rdU grid (truncate s83)
-          chkI grid ((truncate s83) + (truncate t70)) 0 0
-          t85 <- rdU grid ((truncate s83) + (truncate t70))
-          loopI t85 t84 $ \i86 -> do
-            let !d86 = fromIntegral i86 :: Double
-            chkI items i86 0 0
-            t87 <- rdU items i86
-            chkI cellOf (truncate t87) 0 0
-            t88 <- rdU cellOf (truncate t87)
-            if (0.5 - (abs (t88 - s81))) > 0 then do
-              if ((t87 - d31) + 0.5) > 0 then do
-                chkI pos (3 * (truncate t87)) 0 2
-                t89 <- rdU pos (3 * (truncate t87))
-                t90 <- rdU pos ((3 * (truncate t87)) + 1)
-                t91 <- rdU pos ((3 * (truncate t87)) + 2)
-                chkI scalars (6 * (truncate t87)) 2 5
-                t92 <- rdU scalars ((6 * (truncate t87)) + 5)
-                t93 <- rdU scalars ((6 * (truncate t87)) + 2)
-                let !t94 = (t36 + t93)
-                let !t95 = (s67 + (negate t89))
-                let !t96 = (s68 + (negate t90))
-                let !t97 = (s69 + (negate t91))
-                let !t98 = ((t35 + t92) - (sqrt (((t95 * t95) + (t96 * t96)) + (t97 * t97))))
-                if (if (t94 - t98) > 0 then t98 else t94) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe (((t87 + 1.0) * 64.0) + 16.0) d31 t87 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
+    let !s72 = (negate t32)
+    let !s73 = (negate t33)
+    let !s74 = (negate t34)
+    setR v38 0.0
+    t75 <- rdU meta 4
+    t76 <- rdU meta 5
+    let !s77 = (floorF (s72 / t76))
+    let !s78 = (floorF (s73 / t76))
+    let !s79 = (floorF (s74 / t76))
+    loopI 0.0 3.0 $ \i80 -> do
+      let !d80 = fromIntegral i80 :: Double
+      loopI 0.0 3.0 $ \i81 -> do
+        let !d81 = fromIntegral i81 :: Double
+        loopI 0.0 3.0 $ \i82 -> do
+          let !d82 = fromIntegral i82 :: Double
+          let !s83 = ((s77 + d80) - 1.0)
+          let !s84 = ((s78 + d81) - 1.0)
+          let !s85 = ((s79 + d82) - 1.0)
+          let !s86 = (((((s83 + 131072.0) * 262144.0) + (s84 + 131072.0)) * 262144.0) + (s85 + 131072.0))
+          let !t87 = (((s83 * 7.3856093e7) + (s84 * 1.9349663e7)) + (s85 * 8.3492791e7))
+          let !s88 = (t87 - (t75 * (floorF (t87 / t75))))
+          chkI grid (truncate s88) 0 0
+          t89 <- rdU grid (truncate s88)
+          chkI grid ((truncate s88) + (truncate t75)) 0 0
+          t90 <- rdU grid ((truncate s88) + (truncate t75))
+          loopI t90 t89 $ \i91 -> do
+            let !d91 = fromIntegral i91 :: Double
+            chkI items i91 0 0
+            t92 <- rdU items i91
+            chkI cellOf (truncate t92) 0 0
+            t93 <- rdU cellOf (truncate t92)
+            if (0.5 - (abs (t93 - s86))) > 0 then do
+              if ((t92 - d31) + 0.5) > 0 then do
+                chkI pos (3 * (truncate t92)) 0 2
+                t94 <- rdU pos (3 * (truncate t92))
+                t95 <- rdU pos ((3 * (truncate t92)) + 1)
+                t96 <- rdU pos ((3 * (truncate t92)) + 2)
+                chkI scalars (6 * (truncate t92)) 2 5
+                t97 <- rdU scalars ((6 * (truncate t92)) + 5)
+                t98 <- rdU scalars ((6 * (truncate t92)) + 2)
+                let !t99 = (t36 + t98)
+                let !t100 = (s72 + (negate t94))
+                let !t101 = (s73 + (negate t95))
+                let !t102 = (s74 + (negate t96))
+                let !t103 = ((t35 + t97) - (sqrt (((t100 * t100) + (t101 * t101)) + (t102 * t102))))
+                if (if (t99 - t103) > 0 then t103 else t99) > 0 then do
+                  t104 <- getR v38
+                  chkI near (truncate t104) 0 0
+                  wrU near (truncate t104) t92
+                  setR v38 (t104 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -262,63 +278,70 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
+      pure ()
+    t105 <- getR v38
+    loopI 0.0 t105 $ \i106 -> do
+      let !d106 = fromIntegral i106 :: Double
+      chkI near i106 0 0
+      t107 <- rdU near i106
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near (((t107 + 1.0) * 64.0) + 16.0) d31 t107 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
       pure ()
     chkI normal (3 * i31) 0 2
-    t99 <- rdU normal (3 * i31)
-    t100 <- rdU normal ((3 * i31) + 1)
-    t101 <- rdU normal ((3 * i31) + 2)
-    v102 <- newR 0.0
-    v103 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i104 -> do
-      let !d104 = fromIntegral i104 :: Double
-      chkI verts ((12 * i104) + (291 * i31)) 12 14
-      t105 <- rdU verts (((12 * i104) + (291 * i31)) + 12)
-      t106 <- rdU verts (((12 * i104) + (291 * i31)) + 13)
-      t107 <- rdU verts (((12 * i104) + (291 * i31)) + 14)
-      let !s108 = (0.4 - (abs t106))
-      t109 <- getR v102
-      if ((negate s108) - t109) > 0 then do
-        setR v102 (negate s108)
-        setR v103 d104
+    t108 <- rdU normal (3 * i31)
+    t109 <- rdU normal ((3 * i31) + 1)
+    t110 <- rdU normal ((3 * i31) + 2)
+    v111 <- newR 0.0
+    v112 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i113 -> do
+      let !d113 = fromIntegral i113 :: Double
+      chkI verts ((12 * i113) + (291 * i31)) 12 14
+      t114 <- rdU verts (((12 * i113) + (291 * i31)) + 12)
+      t115 <- rdU verts (((12 * i113) + (291 * i31)) + 13)
+      t116 <- rdU verts (((12 * i113) + (291 * i31)) + 14)
+      let !s117 = (0.4 - (abs t115))
+      t118 <- getR v111
+      if ((negate s117) - t118) > 0 then do
+        setR v111 (negate s117)
+        setR v112 d113
         pure ()
       else do
         pure ()
       pure ()
-    t110 <- getR v102
-    if t110 > 0 then do
-      t111 <- getR v103
-      chkI verts ((12 * (truncate t111)) + (291 * i31)) 12 14
-      t112 <- rdU verts (((12 * (truncate t111)) + (291 * i31)) + 12)
-      t113 <- rdU verts (((12 * (truncate t111)) + (291 * i31)) + 13)
-      t114 <- rdU verts (((12 * (truncate t111)) + (291 * i31)) + 14)
-      let !t115 = (negate (signum t113))
-      let !t116 = (sqrt (t115 * t115))
-      let !s117 = ((if t116 > 0 then (recip (if (t116 - 1.0e-300) > 0 then t116 else 1.0e-300)) else 0.0) * t115)
-      let !s118 = (negate (t101 * s117))
-      let !s119 = (t99 * s117)
-      v120 <- newR 1.0e300
-      v121 <- newR (-1.0e300)
-      v122 <- newR (-1.0)
-      v123 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i124 -> do
-        let !d124 = fromIntegral i124 :: Double
-        chkI verts ((12 * i124) + (291 * i31)) 12 14
-        t125 <- rdU verts (((12 * i124) + (291 * i31)) + 12)
-        t126 <- rdU verts (((12 * i124) + (291 * i31)) + 13)
-        t127 <- rdU verts (((12 * i124) + (291 * i31)) + 14)
-        if (negate (0.4 - (abs t126))) > 0 then do
-          let !s128 = ((t125 * s118) + (t127 * s119))
-          t129 <- getR v120
-          if (t129 - s128) > 0 then do
-            setR v120 s128
-            setR v122 d124
+    t119 <- getR v111
+    if t119 > 0 then do
+      t120 <- getR v112
+      chkI verts ((12 * (truncate t120)) + (291 * i31)) 12 14
+      t121 <- rdU verts (((12 * (truncate t120)) + (291 * i31)) + 12)
+      t122 <- rdU verts (((12 * (truncate t120)) + (291 * i31)) + 13)
+      t123 <- rdU verts (((12 * (truncate t120)) + (291 * i31)) + 14)
+      let !t124 = (negate (signum t122))
+      let !t125 = (sqrt (t124 * t124))
+      let !s126 = ((if t125 > 0 then (recip (if (t125 - 1.0e-300) > 0 then t125 else 1.0e-300)) else 0.0) * t124)
+      let !s127 = (negate (t110 * s126))
+      let !s128 = (t108 * s126)
+      v129 <- newR 1.0e300
+      v130 <- newR (-1.0e300)
+      v131 <- newR (-1.0)
+      v132 <- newR (-1.0)
+      loopI 0.0 24.0 $ \i133 -> do
+        let !d133 = fromIntegral i133 :: Double
+        chkI verts ((12 * i133) + (291 * i31)) 12 14
+        t134 <- rdU verts (((12 * i133) + (291 * i31)) + 12)
+        t135 <- rdU verts (((12 * i133) + (291 * i31)) + 13)
+        t136 <- rdU verts (((12 * i133) + (291 * i31)) + 14)
+        if (negate (0.4 - (abs t135))) > 0 then do
+          let !s137 = ((t134 * s127) + (t136 * s128))
+          t138 <- getR v129
+          if (t138 - s137) > 0 then do
+            setR v129 s137
+            setR v131 d133
             pure ()
           else do
             pure ()
-          t130 <- getR v121
-          if (s128 - t130) > 0 then do
-            setR v121 s128
-            setR v123 d124
+          t139 <- getR v130
+          if (s137 - t139) > 0 then do
+            setR v130 s137
+            setR v132 d133
             pure ()
           else do
             pure ()
@@ -326,204 +349,204 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t131 <- getR v122
-      t132 <- getR v123
-      chkI verts ((12 * (truncate t131)) + (291 * i31)) 12 14
-      t133 <- rdU verts (((12 * (truncate t131)) + (291 * i31)) + 12)
-      t134 <- rdU verts (((12 * (truncate t131)) + (291 * i31)) + 13)
-      t135 <- rdU verts (((12 * (truncate t131)) + (291 * i31)) + 14)
-      let !s136 = (negate (signum t134))
-      let !s137 = (sqrt (s136 * s136))
-      let !s138 = (0.4 - (abs t134))
-      t139 <- rdU meta 2
-      t140 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t140) > 0 then 1.0 else t140)) - t139) - 0.5) > 0 then do
-        wrU meta 2 (t139 + 1.0)
-        t141 <- rdU pos (3 * i31)
-        t142 <- rdU pos ((3 * i31) + 1)
-        t143 <- rdU pos ((3 * i31) + 2)
-        t144 <- rdU normal (3 * i31)
-        t145 <- rdU normal ((3 * i31) + 1)
-        t146 <- rdU normal ((3 * i31) + 2)
+      t140 <- getR v131
+      t141 <- getR v132
+      chkI verts ((12 * (truncate t140)) + (291 * i31)) 12 14
+      t142 <- rdU verts (((12 * (truncate t140)) + (291 * i31)) + 12)
+      t143 <- rdU verts (((12 * (truncate t140)) + (291 * i31)) + 13)
+      t144 <- rdU verts (((12 * (truncate t140)) + (291 * i31)) + 14)
+      let !s145 = (negate (signum t143))
+      let !s146 = (sqrt (s145 * s145))
+      let !s147 = (0.4 - (abs t143))
+      t148 <- rdU meta 2
+      t149 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t149) > 0 then 1.0 else t149)) - t148) - 0.5) > 0 then do
+        wrU meta 2 (t148 + 1.0)
+        t150 <- rdU pos (3 * i31)
+        t151 <- rdU pos ((3 * i31) + 1)
+        t152 <- rdU pos ((3 * i31) + 2)
+        t153 <- rdU normal (3 * i31)
+        t154 <- rdU normal ((3 * i31) + 1)
+        t155 <- rdU normal ((3 * i31) + 2)
         chkI axis (3 * i31) 0 2
-        t147 <- rdU axis (3 * i31)
-        t148 <- rdU axis ((3 * i31) + 1)
-        t149 <- rdU axis ((3 * i31) + 2)
-        let !s150 = ((t145 * t149) - (t146 * t148))
-        let !s151 = ((t146 * t147) - (t144 * t149))
-        let !s152 = ((t144 * t148) - (t145 * t147))
+        t156 <- rdU axis (3 * i31)
+        t157 <- rdU axis ((3 * i31) + 1)
+        t158 <- rdU axis ((3 * i31) + 2)
+        let !s159 = ((t154 * t158) - (t155 * t157))
+        let !s160 = ((t155 * t156) - (t153 * t158))
+        let !s161 = ((t153 * t157) - (t154 * t156))
         chkI scalars (6 * i31) 0 0
-        t153 <- rdU scalars (6 * i31)
-        t154 <- rdU scalars ((6 * i31) + 5)
-        t155 <- rdU scalars ((6 * i31) + 2)
-        t156 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t139)) 0 29
-        wrU contacts (30 * (truncate t139)) d31
-        wrU contacts ((30 * (truncate t139)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t139)) + 2) d31
-        wrU contacts ((30 * (truncate t139)) + 3) 8.0
-        wrU contacts ((30 * (truncate t139)) + 4) (negate ((t145 * ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)) * t144))
-        let !t157 = ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)
-        wrU contacts ((30 * (truncate t139)) + 5) (t157 + (negate ((t145 * t157) * t145)))
-        wrU contacts ((30 * (truncate t139)) + 6) (negate ((t145 * t157) * t146))
-        wrU contacts ((30 * (truncate t139)) + 7) (((negate ((t135 + (negate t143)) * t157)) * t144) + (((t133 + (negate t141)) * t157) * t146))
-        let !t158 = (negate (t146 * t157))
-        wrU contacts ((30 * (truncate t139)) + 12) (t158 + (negate (((t144 * t158) + (t146 * (t144 * t157))) * t144)))
-        wrU contacts ((30 * (truncate t139)) + 13) (negate (((t144 * t158) + (t146 * (t144 * t157))) * t145))
-        let !t159 = (t144 * t157)
-        wrU contacts ((30 * (truncate t139)) + 14) (t159 + (negate (((t144 * t158) + (t146 * t159)) * t146)))
-        let !t160 = (t134 + (negate t142))
-        wrU contacts ((30 * (truncate t139)) + 15) ((((t160 * t159) * t144) + ((((t135 + (negate t143)) * t158) - ((t133 + (negate t141)) * t159)) * t145)) + ((negate (t160 * t158)) * t146))
-        wrU contacts ((30 * (truncate t139)) + 20) (if s137 > 0 then ((negate s138) / (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0)
-        wrU contacts ((30 * (truncate t139)) + 26) 1.0
-        wrU contacts ((30 * (truncate t139)) + 27) t133
-        wrU contacts ((30 * (truncate t139)) + 28) t134
-        wrU contacts ((30 * (truncate t139)) + 29) t135
+        t162 <- rdU scalars (6 * i31)
+        t163 <- rdU scalars ((6 * i31) + 5)
+        t164 <- rdU scalars ((6 * i31) + 2)
+        t165 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t148)) 0 29
+        wrU contacts (30 * (truncate t148)) d31
+        wrU contacts ((30 * (truncate t148)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t148)) + 2) d31
+        wrU contacts ((30 * (truncate t148)) + 3) 8.0
+        wrU contacts ((30 * (truncate t148)) + 4) (negate ((t154 * ((if s146 > 0 then (recip (if (s146 - 1.0e-300) > 0 then s146 else 1.0e-300)) else 0.0) * s145)) * t153))
+        let !t166 = ((if s146 > 0 then (recip (if (s146 - 1.0e-300) > 0 then s146 else 1.0e-300)) else 0.0) * s145)
+        wrU contacts ((30 * (truncate t148)) + 5) (t166 + (negate ((t154 * t166) * t154)))
+        wrU contacts ((30 * (truncate t148)) + 6) (negate ((t154 * t166) * t155))
+        wrU contacts ((30 * (truncate t148)) + 7) (((negate ((t144 + (negate t152)) * t166)) * t153) + (((t142 + (negate t150)) * t166) * t155))
+        let !t167 = (negate (t155 * t166))
+        wrU contacts ((30 * (truncate t148)) + 12) (t167 + (negate (((t153 * t167) + (t155 * (t153 * t166))) * t153)))
+        wrU contacts ((30 * (truncate t148)) + 13) (negate (((t153 * t167) + (t155 * (t153 * t166))) * t154))
+        let !t168 = (t153 * t166)
+        wrU contacts ((30 * (truncate t148)) + 14) (t168 + (negate (((t153 * t167) + (t155 * t168)) * t155)))
+        let !t169 = (t143 + (negate t151))
+        wrU contacts ((30 * (truncate t148)) + 15) ((((t169 * t168) * t153) + ((((t144 + (negate t152)) * t167) - ((t142 + (negate t150)) * t168)) * t154)) + ((negate (t169 * t167)) * t155))
+        wrU contacts ((30 * (truncate t148)) + 20) (if s146 > 0 then ((negate s147) / (if (s146 - 1.0e-300) > 0 then s146 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t148)) + 26) 1.0
+        wrU contacts ((30 * (truncate t148)) + 27) t142
+        wrU contacts ((30 * (truncate t148)) + 28) t143
+        wrU contacts ((30 * (truncate t148)) + 29) t144
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t161 <- rdU pos (-3)
-          t162 <- rdU pos (-2)
-          t163 <- rdU pos (-1)
+          t170 <- rdU pos (-3)
+          t171 <- rdU pos (-2)
+          t172 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t164 <- rdU normal (-3)
-          t165 <- rdU normal (-2)
-          t166 <- rdU normal (-1)
+          t173 <- rdU normal (-3)
+          t174 <- rdU normal (-2)
+          t175 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t167 <- rdU axis (-3)
-          t168 <- rdU axis (-2)
-          t169 <- rdU axis (-1)
-          let !s170 = ((t165 * t169) - (t166 * t168))
-          let !s171 = ((t166 * t167) - (t164 * t169))
-          let !s172 = ((t164 * t168) - (t165 * t167))
+          t176 <- rdU axis (-3)
+          t177 <- rdU axis (-2)
+          t178 <- rdU axis (-1)
+          let !s179 = ((t174 * t178) - (t175 * t177))
+          let !s180 = ((t175 * t176) - (t173 * t178))
+          let !s181 = ((t173 * t177) - (t174 * t176))
           chkI scalars 0 (-6) (-1)
-          t173 <- rdU scalars (-6)
-          t174 <- rdU scalars (-1)
-          t175 <- rdU scalars (-4)
-          t176 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t139)) + 8) (negate ((t165 * t157) * t164))
-          wrU contacts ((30 * (truncate t139)) + 9) (t157 + (negate ((t165 * t157) * t165)))
-          wrU contacts ((30 * (truncate t139)) + 10) (negate ((t165 * t157) * t166))
-          wrU contacts ((30 * (truncate t139)) + 11) (((negate ((t135 + (negate t163)) * t157)) * t164) + (((t133 + (negate t161)) * t157) * t166))
-          wrU contacts ((30 * (truncate t139)) + 16) (t158 + (negate (((t164 * t158) + (t166 * t159)) * t164)))
-          wrU contacts ((30 * (truncate t139)) + 17) (negate (((t164 * t158) + (t166 * t159)) * t165))
-          wrU contacts ((30 * (truncate t139)) + 18) (t159 + (negate (((t164 * t158) + (t166 * t159)) * t166)))
-          let !t177 = (t134 + (negate t162))
-          wrU contacts ((30 * (truncate t139)) + 19) ((((t177 * t159) * t164) + ((((t135 + (negate t163)) * t158) - ((t133 + (negate t161)) * t159)) * t165)) + ((negate (t177 * t158)) * t166))
+          t182 <- rdU scalars (-6)
+          t183 <- rdU scalars (-1)
+          t184 <- rdU scalars (-4)
+          t185 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t148)) + 8) (negate ((t174 * t166) * t173))
+          wrU contacts ((30 * (truncate t148)) + 9) (t166 + (negate ((t174 * t166) * t174)))
+          wrU contacts ((30 * (truncate t148)) + 10) (negate ((t174 * t166) * t175))
+          wrU contacts ((30 * (truncate t148)) + 11) (((negate ((t144 + (negate t172)) * t166)) * t173) + (((t142 + (negate t170)) * t166) * t175))
+          wrU contacts ((30 * (truncate t148)) + 16) (t167 + (negate (((t173 * t167) + (t175 * t168)) * t173)))
+          wrU contacts ((30 * (truncate t148)) + 17) (negate (((t173 * t167) + (t175 * t168)) * t174))
+          wrU contacts ((30 * (truncate t148)) + 18) (t168 + (negate (((t173 * t167) + (t175 * t168)) * t175)))
+          let !t186 = (t143 + (negate t171))
+          wrU contacts ((30 * (truncate t148)) + 19) ((((t186 * t168) * t173) + ((((t144 + (negate t172)) * t167) - ((t142 + (negate t170)) * t168)) * t174)) + ((negate (t186 * t167)) * t175))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t139)) + 8) 0.0
-          wrU contacts ((30 * (truncate t139)) + 9) 0.0
-          wrU contacts ((30 * (truncate t139)) + 10) 0.0
-          wrU contacts ((30 * (truncate t139)) + 11) 0.0
-          wrU contacts ((30 * (truncate t139)) + 16) 0.0
-          wrU contacts ((30 * (truncate t139)) + 17) 0.0
-          wrU contacts ((30 * (truncate t139)) + 18) 0.0
-          wrU contacts ((30 * (truncate t139)) + 19) 0.0
+          wrU contacts ((30 * (truncate t148)) + 8) 0.0
+          wrU contacts ((30 * (truncate t148)) + 9) 0.0
+          wrU contacts ((30 * (truncate t148)) + 10) 0.0
+          wrU contacts ((30 * (truncate t148)) + 11) 0.0
+          wrU contacts ((30 * (truncate t148)) + 16) 0.0
+          wrU contacts ((30 * (truncate t148)) + 17) 0.0
+          wrU contacts ((30 * (truncate t148)) + 18) 0.0
+          wrU contacts ((30 * (truncate t148)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t178 <- rdU meta 6
-        wrU meta 6 (t178 + 1.0)
+        t187 <- rdU meta 6
+        wrU meta 6 (t187 + 1.0)
         pure ()
-      if (abs (t132 - t131)) > 0 then do
-        chkI verts ((12 * (truncate t132)) + (291 * i31)) 12 14
-        t179 <- rdU verts (((12 * (truncate t132)) + (291 * i31)) + 12)
-        t180 <- rdU verts (((12 * (truncate t132)) + (291 * i31)) + 13)
-        t181 <- rdU verts (((12 * (truncate t132)) + (291 * i31)) + 14)
-        let !s182 = (negate (signum t180))
-        let !s183 = (sqrt (s182 * s182))
-        let !s184 = (0.4 - (abs t180))
-        t185 <- rdU meta 2
-        t186 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t186) > 0 then 1.0 else t186)) - t185) - 0.5) > 0 then do
-          wrU meta 2 (t185 + 1.0)
-          t187 <- rdU pos (3 * i31)
-          t188 <- rdU pos ((3 * i31) + 1)
-          t189 <- rdU pos ((3 * i31) + 2)
-          t190 <- rdU normal (3 * i31)
-          t191 <- rdU normal ((3 * i31) + 1)
-          t192 <- rdU normal ((3 * i31) + 2)
+      if (abs (t141 - t140)) > 0 then do
+        chkI verts ((12 * (truncate t141)) + (291 * i31)) 12 14
+        t188 <- rdU verts (((12 * (truncate t141)) + (291 * i31)) + 12)
+        t189 <- rdU verts (((12 * (truncate t141)) + (291 * i31)) + 13)
+        t190 <- rdU verts (((12 * (truncate t141)) + (291 * i31)) + 14)
+        let !s191 = (negate (signum t189))
+        let !s192 = (sqrt (s191 * s191))
+        let !s193 = (0.4 - (abs t189))
+        t194 <- rdU meta 2
+        t195 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t195) > 0 then 1.0 else t195)) - t194) - 0.5) > 0 then do
+          wrU meta 2 (t194 + 1.0)
+          t196 <- rdU pos (3 * i31)
+          t197 <- rdU pos ((3 * i31) + 1)
+          t198 <- rdU pos ((3 * i31) + 2)
+          t199 <- rdU normal (3 * i31)
+          t200 <- rdU normal ((3 * i31) + 1)
+          t201 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t193 <- rdU axis (3 * i31)
-          t194 <- rdU axis ((3 * i31) + 1)
-          t195 <- rdU axis ((3 * i31) + 2)
-          let !s196 = ((t191 * t195) - (t192 * t194))
-          let !s197 = ((t192 * t193) - (t190 * t195))
-          let !s198 = ((t190 * t194) - (t191 * t193))
+          t202 <- rdU axis (3 * i31)
+          t203 <- rdU axis ((3 * i31) + 1)
+          t204 <- rdU axis ((3 * i31) + 2)
+          let !s205 = ((t200 * t204) - (t201 * t203))
+          let !s206 = ((t201 * t202) - (t199 * t204))
+          let !s207 = ((t199 * t203) - (t200 * t202))
           chkI scalars (6 * i31) 0 0
-          t199 <- rdU scalars (6 * i31)
-          t200 <- rdU scalars ((6 * i31) + 5)
-          t201 <- rdU scalars ((6 * i31) + 2)
-          t202 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t185)) 0 29
-          wrU contacts (30 * (truncate t185)) d31
-          wrU contacts ((30 * (truncate t185)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t185)) + 2) d31
-          wrU contacts ((30 * (truncate t185)) + 3) 9.0
-          wrU contacts ((30 * (truncate t185)) + 4) (negate ((t191 * ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)) * t190))
-          let !t203 = ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)
-          wrU contacts ((30 * (truncate t185)) + 5) (t203 + (negate ((t191 * t203) * t191)))
-          wrU contacts ((30 * (truncate t185)) + 6) (negate ((t191 * t203) * t192))
-          wrU contacts ((30 * (truncate t185)) + 7) (((negate ((t181 + (negate t189)) * t203)) * t190) + (((t179 + (negate t187)) * t203) * t192))
-          let !t204 = (negate (t192 * t203))
-          wrU contacts ((30 * (truncate t185)) + 12) (t204 + (negate (((t190 * t204) + (t192 * (t190 * t203))) * t190)))
-          wrU contacts ((30 * (truncate t185)) + 13) (negate (((t190 * t204) + (t192 * (t190 * t203))) * t191))
-          let !t205 = (t190 * t203)
-          wrU contacts ((30 * (truncate t185)) + 14) (t205 + (negate (((t190 * t204) + (t192 * t205)) * t192)))
-          let !t206 = (t180 + (negate t188))
-          wrU contacts ((30 * (truncate t185)) + 15) ((((t206 * t205) * t190) + ((((t181 + (negate t189)) * t204) - ((t179 + (negate t187)) * t205)) * t191)) + ((negate (t206 * t204)) * t192))
-          wrU contacts ((30 * (truncate t185)) + 20) (if s183 > 0 then ((negate s184) / (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0)
-          wrU contacts ((30 * (truncate t185)) + 26) 1.0
-          wrU contacts ((30 * (truncate t185)) + 27) t179
-          wrU contacts ((30 * (truncate t185)) + 28) t180
-          wrU contacts ((30 * (truncate t185)) + 29) t181
+          t208 <- rdU scalars (6 * i31)
+          t209 <- rdU scalars ((6 * i31) + 5)
+          t210 <- rdU scalars ((6 * i31) + 2)
+          t211 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t194)) 0 29
+          wrU contacts (30 * (truncate t194)) d31
+          wrU contacts ((30 * (truncate t194)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t194)) + 2) d31
+          wrU contacts ((30 * (truncate t194)) + 3) 9.0
+          wrU contacts ((30 * (truncate t194)) + 4) (negate ((t200 * ((if s192 > 0 then (recip (if (s192 - 1.0e-300) > 0 then s192 else 1.0e-300)) else 0.0) * s191)) * t199))
+          let !t212 = ((if s192 > 0 then (recip (if (s192 - 1.0e-300) > 0 then s192 else 1.0e-300)) else 0.0) * s191)
+          wrU contacts ((30 * (truncate t194)) + 5) (t212 + (negate ((t200 * t212) * t200)))
+          wrU contacts ((30 * (truncate t194)) + 6) (negate ((t200 * t212) * t201))
+          wrU contacts ((30 * (truncate t194)) + 7) (((negate ((t190 + (negate t198)) * t212)) * t199) + (((t188 + (negate t196)) * t212) * t201))
+          let !t213 = (negate (t201 * t212))
+          wrU contacts ((30 * (truncate t194)) + 12) (t213 + (negate (((t199 * t213) + (t201 * (t199 * t212))) * t199)))
+          wrU contacts ((30 * (truncate t194)) + 13) (negate (((t199 * t213) + (t201 * (t199 * t212))) * t200))
+          let !t214 = (t199 * t212)
+          wrU contacts ((30 * (truncate t194)) + 14) (t214 + (negate (((t199 * t213) + (t201 * t214)) * t201)))
+          let !t215 = (t189 + (negate t197))
+          wrU contacts ((30 * (truncate t194)) + 15) ((((t215 * t214) * t199) + ((((t190 + (negate t198)) * t213) - ((t188 + (negate t196)) * t214)) * t200)) + ((negate (t215 * t213)) * t201))
+          wrU contacts ((30 * (truncate t194)) + 20) (if s192 > 0 then ((negate s193) / (if (s192 - 1.0e-300) > 0 then s192 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t194)) + 26) 1.0
+          wrU contacts ((30 * (truncate t194)) + 27) t188
+          wrU contacts ((30 * (truncate t194)) + 28) t189
+          wrU contacts ((30 * (truncate t194)) + 29) t190
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t207 <- rdU pos (-3)
-            t208 <- rdU pos (-2)
-            t209 <- rdU pos (-1)
+            t216 <- rdU pos (-3)
+            t217 <- rdU pos (-2)
+            t218 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t210 <- rdU normal (-3)
-            t211 <- rdU normal (-2)
-            t212 <- rdU normal (-1)
+            t219 <- rdU normal (-3)
+            t220 <- rdU normal (-2)
+            t221 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t213 <- rdU axis (-3)
-            t214 <- rdU axis (-2)
-            t215 <- rdU axis (-1)
-            let !s216 = ((t211 * t215) - (t212 * t214))
-            let !s217 = ((t212 * t213) - (t210 * t215))
-            let !s218 = ((t210 * t214) - (t211 * t213))
+            t222 <- rdU axis (-3)
+            t223 <- rdU axis (-2)
+            t224 <- rdU axis (-1)
+            let !s225 = ((t220 * t224) - (t221 * t223))
+            let !s226 = ((t221 * t222) - (t219 * t224))
+            let !s227 = ((t219 * t223) - (t220 * t222))
             chkI scalars 0 (-6) (-1)
-            t219 <- rdU scalars (-6)
-            t220 <- rdU scalars (-1)
-            t221 <- rdU scalars (-4)
-            t222 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t185)) + 8) (negate ((t211 * t203) * t210))
-            wrU contacts ((30 * (truncate t185)) + 9) (t203 + (negate ((t211 * t203) * t211)))
-            wrU contacts ((30 * (truncate t185)) + 10) (negate ((t211 * t203) * t212))
-            wrU contacts ((30 * (truncate t185)) + 11) (((negate ((t181 + (negate t209)) * t203)) * t210) + (((t179 + (negate t207)) * t203) * t212))
-            wrU contacts ((30 * (truncate t185)) + 16) (t204 + (negate (((t210 * t204) + (t212 * t205)) * t210)))
-            wrU contacts ((30 * (truncate t185)) + 17) (negate (((t210 * t204) + (t212 * t205)) * t211))
-            wrU contacts ((30 * (truncate t185)) + 18) (t205 + (negate (((t210 * t204) + (t212 * t205)) * t212)))
-            let !t223 = (t180 + (negate t208))
-            wrU contacts ((30 * (truncate t185)) + 19) ((((t223 * t205) * t210) + ((((t181 + (negate t209)) * t204) - ((t179 + (negate t207)) * t205)) * t211)) + ((negate (t223 * t204)) * t212))
+            t228 <- rdU scalars (-6)
+            t229 <- rdU scalars (-1)
+            t230 <- rdU scalars (-4)
+            t231 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t194)) + 8) (negate ((t220 * t212) * t219))
+            wrU contacts ((30 * (truncate t194)) + 9) (t212 + (negate ((t220 * t212) * t220)))
+            wrU contacts ((30 * (truncate t194)) + 10) (negate ((t220 * t212) * t221))
+            wrU contacts ((30 * (truncate t194)) + 11) (((negate ((t190 + (negate t218)) * t212)) * t219) + (((t188 + (negate t216)) * t212) * t221))
+            wrU contacts ((30 * (truncate t194)) + 16) (t213 + (negate (((t219 * t213) + (t221 * t214)) * t219)))
+            wrU contacts ((30 * (truncate t194)) + 17) (negate (((t219 * t213) + (t221 * t214)) * t220))
+            wrU contacts ((30 * (truncate t194)) + 18) (t214 + (negate (((t219 * t213) + (t221 * t214)) * t221)))
+            let !t232 = (t189 + (negate t217))
+            wrU contacts ((30 * (truncate t194)) + 19) ((((t232 * t214) * t219) + ((((t190 + (negate t218)) * t213) - ((t188 + (negate t216)) * t214)) * t220)) + ((negate (t232 * t213)) * t221))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t185)) + 8) 0.0
-            wrU contacts ((30 * (truncate t185)) + 9) 0.0
-            wrU contacts ((30 * (truncate t185)) + 10) 0.0
-            wrU contacts ((30 * (truncate t185)) + 11) 0.0
-            wrU contacts ((30 * (truncate t185)) + 16) 0.0
-            wrU contacts ((30 * (truncate t185)) + 17) 0.0
-            wrU contacts ((30 * (truncate t185)) + 18) 0.0
-            wrU contacts ((30 * (truncate t185)) + 19) 0.0
+            wrU contacts ((30 * (truncate t194)) + 8) 0.0
+            wrU contacts ((30 * (truncate t194)) + 9) 0.0
+            wrU contacts ((30 * (truncate t194)) + 10) 0.0
+            wrU contacts ((30 * (truncate t194)) + 11) 0.0
+            wrU contacts ((30 * (truncate t194)) + 16) 0.0
+            wrU contacts ((30 * (truncate t194)) + 17) 0.0
+            wrU contacts ((30 * (truncate t194)) + 18) 0.0
+            wrU contacts ((30 * (truncate t194)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t224 <- rdU meta 6
-          wrU meta 6 (t224 + 1.0)
+          t233 <- rdU meta 6
+          wrU meta 6 (t233 + 1.0)
           pure ()
         pure ()
       else do
@@ -532,132 +555,132 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     else do
       pure ()
     chkI verts (291 * i31) 0 2
-    t225 <- rdU verts (291 * i31)
-    t226 <- rdU verts ((291 * i31) + 1)
-    t227 <- rdU verts ((291 * i31) + 2)
-    v228 <- newR 1.0
-    loopI 0.0 24.0 $ \i229 -> do
-      let !d229 = fromIntegral i229 :: Double
-      chkI verts ((12 * i229) + (291 * i31)) 12 14
-      t230 <- rdU verts (((12 * i229) + (291 * i31)) + 12)
-      t231 <- rdU verts (((12 * i229) + (291 * i31)) + 13)
-      t232 <- rdU verts (((12 * i229) + (291 * i31)) + 14)
-      chkI radii (i229 + (24 * i31)) 0 0
-      t233 <- rdU radii (i229 + (24 * i31))
-      t234 <- getR v228
-      let !t235 = (t230 + (negate t225))
-      let !t236 = (t231 + (negate t226))
-      let !t237 = (t232 + (negate t227))
-      let !t238 = (if t233 > 0 then ((sqrt (((t235 * t235) + (t236 * t236)) + (t237 * t237))) / t233) else 1.0)
-      setR v228 (if (t234 - t238) > 0 then t238 else t234)
+    t234 <- rdU verts (291 * i31)
+    t235 <- rdU verts ((291 * i31) + 1)
+    t236 <- rdU verts ((291 * i31) + 2)
+    v237 <- newR 1.0
+    loopI 0.0 24.0 $ \i238 -> do
+      let !d238 = fromIntegral i238 :: Double
+      chkI verts ((12 * i238) + (291 * i31)) 12 14
+      t239 <- rdU verts (((12 * i238) + (291 * i31)) + 12)
+      t240 <- rdU verts (((12 * i238) + (291 * i31)) + 13)
+      t241 <- rdU verts (((12 * i238) + (291 * i31)) + 14)
+      chkI radii (i238 + (24 * i31)) 0 0
+      t242 <- rdU radii (i238 + (24 * i31))
+      t243 <- getR v237
+      let !t244 = (t239 + (negate t234))
+      let !t245 = (t240 + (negate t235))
+      let !t246 = (t241 + (negate t236))
+      let !t247 = (if t242 > 0 then ((sqrt (((t244 * t244) + (t245 * t245)) + (t246 * t246))) / t242) else 1.0)
+      setR v237 (if (t243 - t247) > 0 then t247 else t243)
       pure ()
-    t239 <- getR v228
-    if (0.8 - t239) > 0 then do
-      v240 <- newR 0.0
-      v241 <- newR 0.0
-      v242 <- newR 0.0
-      v243 <- newR 0.0
-      v244 <- newR 0.0
-      v245 <- newR 0.0
-      v246 <- newR 0.0
-      loopI 0.0 24.0 $ \i247 -> do
-        let !d247 = fromIntegral i247 :: Double
-        chkI radii (i247 + (24 * i31)) 0 0
-        t248 <- rdU radii (i247 + (24 * i31))
-        loopI 6.0 12.0 $ \i249 -> do
-          let !d249 = fromIntegral i249 :: Double
-          let !t250 = (d247 + d249)
-          chkI radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0)))))) 0 0
-          t251 <- rdU radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0))))))
-          loopI 1.0 4.0 $ \i252 -> do
-            let !d252 = fromIntegral i252 :: Double
-            chkI verts ((12 * i247) + (3 * i252) + (291 * i31)) 0 5
-            t253 <- rdU verts ((12 * i247) + (3 * i252) + (291 * i31))
-            t254 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 1)
-            t255 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 2)
-            t256 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 3)
-            t257 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 4)
-            t258 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i259 -> do
-              let !d259 = fromIntegral i259 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0)))) 0 0
-              t260 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0)) 0 0
-              t261 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0)) 0 0
-              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259))) 0 0
-              t263 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0)) 0 0
-              t264 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0)) 0 0
-              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0))
-              t266 <- getR v240
-              let !t267 = (negate t260)
-              let !t268 = (t263 + t267)
-              let !t269 = (negate t261)
-              let !t270 = (t264 + t269)
-              let !t271 = (negate t262)
-              let !t272 = (t265 + t271)
-              let !t273 = (((t268 * t268) + (t270 * t270)) + (t272 * t272))
-              let !t274 = (t256 + (negate t253))
-              let !t275 = (t257 + (negate t254))
-              let !t276 = (t258 + (negate t255))
-              let !t277 = (((t274 * t268) + (t275 * t270)) + (t276 * t272))
-              let !t278 = (((t274 * t274) + (t275 * t275)) + (t276 * t276))
-              let !t279 = ((t278 * t273) - (t277 * t277))
-              let !t280 = (t253 + t267)
-              let !t281 = (t254 + t269)
-              let !t282 = (t255 + t271)
-              let !t283 = (((t268 * t280) + (t270 * t281)) + (t272 * t282))
-              let !t284 = (((t274 * t280) + (t275 * t281)) + (t276 * t282))
-              let !t285 = (if ((abs t279) - 1.0e-300) > 0 then (((t277 * t283) - (t284 * t273)) / t279) else 0.0)
-              let !t286 = (if (t285 - 1.0) > 0 then 1.0 else t285)
-              let !t287 = (if (t279 - ((1.0e-12 * t278) * t273)) > 0 then (if (negate t286) > 0 then 0.0 else t286) else 0.0)
-              let !t288 = (if ((abs t273) - 1.0e-300) > 0 then (((t277 * t287) + t283) / t273) else 0.0)
-              let !t289 = ((abs t278) - 1.0e-300)
-              let !t290 = (if t289 > 0 then ((negate t284) / t278) else 0.0)
-              let !t291 = (if (t290 - 1.0) > 0 then 1.0 else t290)
-              let !t292 = (t288 - 1.0)
-              let !t293 = (if t289 > 0 then ((t277 - t284) / t278) else 0.0)
-              let !t294 = (if (t293 - 1.0) > 0 then 1.0 else t293)
-              let !t295 = (if (negate t288) > 0 then (if (negate t291) > 0 then 0.0 else t291) else (if t292 > 0 then (if (negate t294) > 0 then 0.0 else t294) else t287))
-              let !t296 = (if t292 > 0 then 1.0 else t288)
-              let !t297 = (if (negate t296) > 0 then 0.0 else t296)
-              let !t298 = ((0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0)))) - t266)
-              let !t299 = ((t253 + (t295 * t274)) + (negate (t260 + (t297 * t268))))
-              let !t300 = ((t254 + (t295 * t275)) + (negate (t261 + (t297 * t270))))
-              let !t301 = ((t255 + (t295 * t276)) + (negate (t262 + (t297 * t272))))
-              let !t302 = ((0.3 * ((if (t251 - t248) > 0 then t248 else t251) / 4.0)) - (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301))))
-              if (if (t298 - t302) > 0 then t302 else t298) > 0 then do
-                setR v240 (0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0))))
-                chkI verts ((12 * i247) + (291 * i31)) 3 5
-                t303 <- rdU verts (((12 * i247) + (291 * i31)) + 3)
-                t304 <- rdU verts (((12 * i247) + (291 * i31)) + 4)
-                t305 <- rdU verts (((12 * i247) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)))) 0 0
-                t306 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t307 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t308 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0))
-                setR v241 (t253 + (t295 * t274))
-                setR v242 (t254 + (t295 * t275))
-                setR v243 (t255 + (t295 * t276))
-                let !t309 = (negate t225)
-                let !t310 = (t303 + t309)
-                let !t311 = (negate t226)
-                let !t312 = (t304 + t311)
-                let !t313 = (negate t227)
-                let !t314 = (t305 + t313)
-                let !t315 = (sqrt (((t310 * t310) + (t312 * t312)) + (t314 * t314)))
-                let !t316 = (t306 + t309)
-                let !t317 = (t307 + t311)
-                let !t318 = (t308 + t313)
-                let !t319 = (sqrt (((t316 * t316) + (t317 * t317)) + (t318 * t318)))
-                setR v244 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t310) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t316)))
-                setR v245 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t312) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t317)))
-                setR v246 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t314) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t318)))
+    t248 <- getR v237
+    if (0.8 - t248) > 0 then do
+      v249 <- newR 0.0
+      v250 <- newR 0.0
+      v251 <- newR 0.0
+      v252 <- newR 0.0
+      v253 <- newR 0.0
+      v254 <- newR 0.0
+      v255 <- newR 0.0
+      loopI 0.0 24.0 $ \i256 -> do
+        let !d256 = fromIntegral i256 :: Double
+        chkI radii (i256 + (24 * i31)) 0 0
+        t257 <- rdU radii (i256 + (24 * i31))
+        loopI 6.0 12.0 $ \i258 -> do
+          let !d258 = fromIntegral i258 :: Double
+          let !t259 = (d256 + d258)
+          chkI radii (truncate ((24.0 * d31) + (t259 - (24.0 * (floorF (t259 / 24.0)))))) 0 0
+          t260 <- rdU radii (truncate ((24.0 * d31) + (t259 - (24.0 * (floorF (t259 / 24.0))))))
+          loopI 1.0 4.0 $ \i261 -> do
+            let !d261 = fromIntegral i261 :: Double
+            chkI verts ((12 * i256) + (3 * i261) + (291 * i31)) 0 5
+            t262 <- rdU verts ((12 * i256) + (3 * i261) + (291 * i31))
+            t263 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 1)
+            t264 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 2)
+            t265 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 3)
+            t266 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 4)
+            t267 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 5)
+            loopI 1.0 4.0 $ \i268 -> do
+              let !d268 = fromIntegral i268 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0)))) 0 0
+              t269 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 1.0)) 0 0
+              t270 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 2.0)) 0 0
+              t271 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268))) 0 0
+              t272 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 1.0)) 0 0
+              t273 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 2.0)) 0 0
+              t274 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 2.0))
+              t275 <- getR v249
+              let !t276 = (negate t269)
+              let !t277 = (t272 + t276)
+              let !t278 = (negate t270)
+              let !t279 = (t273 + t278)
+              let !t280 = (negate t271)
+              let !t281 = (t274 + t280)
+              let !t282 = (((t277 * t277) + (t279 * t279)) + (t281 * t281))
+              let !t283 = (t265 + (negate t262))
+              let !t284 = (t266 + (negate t263))
+              let !t285 = (t267 + (negate t264))
+              let !t286 = (((t283 * t277) + (t284 * t279)) + (t285 * t281))
+              let !t287 = (((t283 * t283) + (t284 * t284)) + (t285 * t285))
+              let !t288 = ((t287 * t282) - (t286 * t286))
+              let !t289 = (t262 + t276)
+              let !t290 = (t263 + t278)
+              let !t291 = (t264 + t280)
+              let !t292 = (((t277 * t289) + (t279 * t290)) + (t281 * t291))
+              let !t293 = (((t283 * t289) + (t284 * t290)) + (t285 * t291))
+              let !t294 = (if ((abs t288) - 1.0e-300) > 0 then (((t286 * t292) - (t293 * t282)) / t288) else 0.0)
+              let !t295 = (if (t294 - 1.0) > 0 then 1.0 else t294)
+              let !t296 = (if (t288 - ((1.0e-12 * t287) * t282)) > 0 then (if (negate t295) > 0 then 0.0 else t295) else 0.0)
+              let !t297 = (if ((abs t282) - 1.0e-300) > 0 then (((t286 * t296) + t292) / t282) else 0.0)
+              let !t298 = ((abs t287) - 1.0e-300)
+              let !t299 = (if t298 > 0 then ((negate t293) / t287) else 0.0)
+              let !t300 = (if (t299 - 1.0) > 0 then 1.0 else t299)
+              let !t301 = (t297 - 1.0)
+              let !t302 = (if t298 > 0 then ((t286 - t293) / t287) else 0.0)
+              let !t303 = (if (t302 - 1.0) > 0 then 1.0 else t302)
+              let !t304 = (if (negate t297) > 0 then (if (negate t300) > 0 then 0.0 else t300) else (if t301 > 0 then (if (negate t303) > 0 then 0.0 else t303) else t296))
+              let !t305 = (if t301 > 0 then 1.0 else t297)
+              let !t306 = (if (negate t305) > 0 then 0.0 else t305)
+              let !t307 = ((0.5 * ((t257 - ((t257 * (d261 + t304)) / 4.0)) + (t260 - ((t260 * (d268 + t306)) / 4.0)))) - t275)
+              let !t308 = ((t262 + (t304 * t283)) + (negate (t269 + (t306 * t277))))
+              let !t309 = ((t263 + (t304 * t284)) + (negate (t270 + (t306 * t279))))
+              let !t310 = ((t264 + (t304 * t285)) + (negate (t271 + (t306 * t281))))
+              let !t311 = ((0.3 * ((if (t260 - t257) > 0 then t257 else t260) / 4.0)) - (sqrt (((t308 * t308) + (t309 * t309)) + (t310 * t310))))
+              if (if (t307 - t311) > 0 then t311 else t307) > 0 then do
+                setR v249 (0.5 * ((t257 - ((t257 * (d261 + t304)) / 4.0)) + (t260 - ((t260 * (d268 + t306)) / 4.0))))
+                chkI verts ((12 * i256) + (291 * i31)) 3 5
+                t312 <- rdU verts (((12 * i256) + (291 * i31)) + 3)
+                t313 <- rdU verts (((12 * i256) + (291 * i31)) + 4)
+                t314 <- rdU verts (((12 * i256) + (291 * i31)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)))) 0 0
+                t315 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t316 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t317 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 2.0))
+                setR v250 (t262 + (t304 * t283))
+                setR v251 (t263 + (t304 * t284))
+                setR v252 (t264 + (t304 * t285))
+                let !t318 = (negate t234)
+                let !t319 = (t312 + t318)
+                let !t320 = (negate t235)
+                let !t321 = (t313 + t320)
+                let !t322 = (negate t236)
+                let !t323 = (t314 + t322)
+                let !t324 = (sqrt (((t319 * t319) + (t321 * t321)) + (t323 * t323)))
+                let !t325 = (t315 + t318)
+                let !t326 = (t316 + t320)
+                let !t327 = (t317 + t322)
+                let !t328 = (sqrt (((t325 * t325) + (t326 * t326)) + (t327 * t327)))
+                setR v253 (negate (((if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0) * t319) + ((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t325)))
+                setR v254 (negate (((if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0) * t321) + ((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t326)))
+                setR v255 (negate (((if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0) * t323) + ((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t327)))
                 pure ()
               else do
                 pure ()
@@ -665,120 +688,120 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t320 <- getR v240
-      if t320 > 0 then do
-        t321 <- getR v241
-        t322 <- getR v242
-        t323 <- getR v243
-        t324 <- getR v244
-        t325 <- getR v245
-        t326 <- getR v246
-        let !t327 = (recip (2.0 * (sqrt ((t321 * t321) + (t323 * t323)))))
-        let !t328 = (t327 * (t321 + t321))
-        let !t329 = (t327 * (t323 + t323))
-        let !t330 = (sqrt ((t328 * t328) + (t329 * t329)))
-        let !t331 = (if t330 > 0 then (recip (if (t330 - 1.0e-300) > 0 then t330 else 1.0e-300)) else 0.0)
-        let !s332 = (t331 * t328)
-        let !s333 = (t331 * t329)
-        let !t334 = ((s332 * t324) + (s333 * t326))
-        let !t335 = (t324 + (negate (t334 * s332)))
-        let !t336 = (t326 + (negate (t334 * s333)))
-        let !t337 = (sqrt (((t335 * t335) + (t325 * t325)) + (t336 * t336)))
-        let !t338 = (if t337 > 0 then (recip (if (t337 - 1.0e-300) > 0 then t337 else 1.0e-300)) else 0.0)
-        let !s339 = (t338 * t335)
-        let !s340 = (t338 * t325)
-        let !s341 = (t338 * t336)
-        t342 <- rdU meta 2
-        t343 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t343) > 0 then 1.0 else t343)) - t342) - 0.5) > 0 then do
-          wrU meta 2 (t342 + 1.0)
-          t344 <- rdU pos (3 * i31)
-          t345 <- rdU pos ((3 * i31) + 1)
-          t346 <- rdU pos ((3 * i31) + 2)
-          t347 <- rdU normal (3 * i31)
-          t348 <- rdU normal ((3 * i31) + 1)
-          t349 <- rdU normal ((3 * i31) + 2)
+      t329 <- getR v249
+      if t329 > 0 then do
+        t330 <- getR v250
+        t331 <- getR v251
+        t332 <- getR v252
+        t333 <- getR v253
+        t334 <- getR v254
+        t335 <- getR v255
+        let !t336 = (recip (2.0 * (sqrt ((t330 * t330) + (t332 * t332)))))
+        let !t337 = (t336 * (t330 + t330))
+        let !t338 = (t336 * (t332 + t332))
+        let !t339 = (sqrt ((t337 * t337) + (t338 * t338)))
+        let !t340 = (if t339 > 0 then (recip (if (t339 - 1.0e-300) > 0 then t339 else 1.0e-300)) else 0.0)
+        let !s341 = (t340 * t337)
+        let !s342 = (t340 * t338)
+        let !t343 = ((s341 * t333) + (s342 * t335))
+        let !t344 = (t333 + (negate (t343 * s341)))
+        let !t345 = (t335 + (negate (t343 * s342)))
+        let !t346 = (sqrt (((t344 * t344) + (t334 * t334)) + (t345 * t345)))
+        let !t347 = (if t346 > 0 then (recip (if (t346 - 1.0e-300) > 0 then t346 else 1.0e-300)) else 0.0)
+        let !s348 = (t347 * t344)
+        let !s349 = (t347 * t334)
+        let !s350 = (t347 * t345)
+        t351 <- rdU meta 2
+        t352 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t352) > 0 then 1.0 else t352)) - t351) - 0.5) > 0 then do
+          wrU meta 2 (t351 + 1.0)
+          t353 <- rdU pos (3 * i31)
+          t354 <- rdU pos ((3 * i31) + 1)
+          t355 <- rdU pos ((3 * i31) + 2)
+          t356 <- rdU normal (3 * i31)
+          t357 <- rdU normal ((3 * i31) + 1)
+          t358 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t350 <- rdU axis (3 * i31)
-          t351 <- rdU axis ((3 * i31) + 1)
-          t352 <- rdU axis ((3 * i31) + 2)
-          let !s353 = ((t348 * t352) - (t349 * t351))
-          let !s354 = ((t349 * t350) - (t347 * t352))
-          let !s355 = ((t347 * t351) - (t348 * t350))
+          t359 <- rdU axis (3 * i31)
+          t360 <- rdU axis ((3 * i31) + 1)
+          t361 <- rdU axis ((3 * i31) + 2)
+          let !s362 = ((t357 * t361) - (t358 * t360))
+          let !s363 = ((t358 * t359) - (t356 * t361))
+          let !s364 = ((t356 * t360) - (t357 * t359))
           chkI scalars (6 * i31) 0 0
-          t356 <- rdU scalars (6 * i31)
-          t357 <- rdU scalars ((6 * i31) + 5)
-          t358 <- rdU scalars ((6 * i31) + 2)
-          t359 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t342)) 0 29
-          wrU contacts (30 * (truncate t342)) d31
-          wrU contacts ((30 * (truncate t342)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t342)) + 2) d31
-          wrU contacts ((30 * (truncate t342)) + 3) 12.0
-          wrU contacts ((30 * (truncate t342)) + 4) (s339 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t347)))
-          wrU contacts ((30 * (truncate t342)) + 5) (s340 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t348)))
-          wrU contacts ((30 * (truncate t342)) + 6) (s341 + (negate ((((t347 * s339) + (t348 * s340)) + (t349 * s341)) * t349)))
-          wrU contacts ((30 * (truncate t342)) + 7) 0.0
-          wrU contacts ((30 * (truncate t342)) + 12) 0.0
-          wrU contacts ((30 * (truncate t342)) + 13) 0.0
-          wrU contacts ((30 * (truncate t342)) + 14) 0.0
-          wrU contacts ((30 * (truncate t342)) + 15) 0.0
-          wrU contacts ((30 * (truncate t342)) + 20) t320
-          wrU contacts ((30 * (truncate t342)) + 26) 0.6
-          wrU contacts ((30 * (truncate t342)) + 27) t321
-          wrU contacts ((30 * (truncate t342)) + 28) t322
-          wrU contacts ((30 * (truncate t342)) + 29) t323
+          t365 <- rdU scalars (6 * i31)
+          t366 <- rdU scalars ((6 * i31) + 5)
+          t367 <- rdU scalars ((6 * i31) + 2)
+          t368 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t351)) 0 29
+          wrU contacts (30 * (truncate t351)) d31
+          wrU contacts ((30 * (truncate t351)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t351)) + 2) d31
+          wrU contacts ((30 * (truncate t351)) + 3) 12.0
+          wrU contacts ((30 * (truncate t351)) + 4) (s348 + (negate ((((t356 * s348) + (t357 * s349)) + (t358 * s350)) * t356)))
+          wrU contacts ((30 * (truncate t351)) + 5) (s349 + (negate ((((t356 * s348) + (t357 * s349)) + (t358 * s350)) * t357)))
+          wrU contacts ((30 * (truncate t351)) + 6) (s350 + (negate ((((t356 * s348) + (t357 * s349)) + (t358 * s350)) * t358)))
+          wrU contacts ((30 * (truncate t351)) + 7) 0.0
+          wrU contacts ((30 * (truncate t351)) + 12) 0.0
+          wrU contacts ((30 * (truncate t351)) + 13) 0.0
+          wrU contacts ((30 * (truncate t351)) + 14) 0.0
+          wrU contacts ((30 * (truncate t351)) + 15) 0.0
+          wrU contacts ((30 * (truncate t351)) + 20) t329
+          wrU contacts ((30 * (truncate t351)) + 26) 0.6
+          wrU contacts ((30 * (truncate t351)) + 27) t330
+          wrU contacts ((30 * (truncate t351)) + 28) t331
+          wrU contacts ((30 * (truncate t351)) + 29) t332
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t360 <- rdU pos (-3)
-            t361 <- rdU pos (-2)
-            t362 <- rdU pos (-1)
+            t369 <- rdU pos (-3)
+            t370 <- rdU pos (-2)
+            t371 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t363 <- rdU normal (-3)
-            t364 <- rdU normal (-2)
-            t365 <- rdU normal (-1)
+            t372 <- rdU normal (-3)
+            t373 <- rdU normal (-2)
+            t374 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t366 <- rdU axis (-3)
-            t367 <- rdU axis (-2)
-            t368 <- rdU axis (-1)
-            let !s369 = ((t364 * t368) - (t365 * t367))
-            let !s370 = ((t365 * t366) - (t363 * t368))
-            let !s371 = ((t363 * t367) - (t364 * t366))
+            t375 <- rdU axis (-3)
+            t376 <- rdU axis (-2)
+            t377 <- rdU axis (-1)
+            let !s378 = ((t373 * t377) - (t374 * t376))
+            let !s379 = ((t374 * t375) - (t372 * t377))
+            let !s380 = ((t372 * t376) - (t373 * t375))
             chkI scalars 0 (-6) (-1)
-            t372 <- rdU scalars (-6)
-            t373 <- rdU scalars (-1)
-            t374 <- rdU scalars (-4)
-            t375 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t342)) + 8) (s339 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t363)))
-            wrU contacts ((30 * (truncate t342)) + 9) (s340 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t364)))
-            wrU contacts ((30 * (truncate t342)) + 10) (s341 + (negate ((((t363 * s339) + (t364 * s340)) + (t365 * s341)) * t365)))
-            let !t376 = (t322 + (negate t361))
-            let !t377 = (t323 + (negate t362))
-            let !t378 = (t321 + (negate t360))
-            wrU contacts ((30 * (truncate t342)) + 11) (((((t376 * s341) - (t377 * s340)) * t363) + (((t377 * s339) - (t378 * s341)) * t364)) + (((t378 * s340) - (t376 * s339)) * t365))
-            let !t379 = ((t348 * s341) - (t349 * s340))
-            wrU contacts ((30 * (truncate t342)) + 16) (t379 + (negate ((((t363 * t379) + (t364 * ((t349 * s339) - (t347 * s341)))) + (t365 * ((t347 * s340) - (t348 * s339)))) * t363)))
-            let !t380 = ((t349 * s339) - (t347 * s341))
-            wrU contacts ((30 * (truncate t342)) + 17) (t380 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * ((t347 * s340) - (t348 * s339)))) * t364)))
-            let !t381 = ((t347 * s340) - (t348 * s339))
-            wrU contacts ((30 * (truncate t342)) + 18) (t381 + (negate ((((t363 * t379) + (t364 * t380)) + (t365 * t381)) * t365)))
-            wrU contacts ((30 * (truncate t342)) + 19) (((((t376 * t381) - (t377 * t380)) * t363) + (((t377 * t379) - (t378 * t381)) * t364)) + (((t378 * t380) - (t376 * t379)) * t365))
+            t381 <- rdU scalars (-6)
+            t382 <- rdU scalars (-1)
+            t383 <- rdU scalars (-4)
+            t384 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t351)) + 8) (s348 + (negate ((((t372 * s348) + (t373 * s349)) + (t374 * s350)) * t372)))
+            wrU contacts ((30 * (truncate t351)) + 9) (s349 + (negate ((((t372 * s348) + (t373 * s349)) + (t374 * s350)) * t373)))
+            wrU contacts ((30 * (truncate t351)) + 10) (s350 + (negate ((((t372 * s348) + (t373 * s349)) + (t374 * s350)) * t374)))
+            let !t385 = (t331 + (negate t370))
+            let !t386 = (t332 + (negate t371))
+            let !t387 = (t330 + (negate t369))
+            wrU contacts ((30 * (truncate t351)) + 11) (((((t385 * s350) - (t386 * s349)) * t372) + (((t386 * s348) - (t387 * s350)) * t373)) + (((t387 * s349) - (t385 * s348)) * t374))
+            let !t388 = ((t357 * s350) - (t358 * s349))
+            wrU contacts ((30 * (truncate t351)) + 16) (t388 + (negate ((((t372 * t388) + (t373 * ((t358 * s348) - (t356 * s350)))) + (t374 * ((t356 * s349) - (t357 * s348)))) * t372)))
+            let !t389 = ((t358 * s348) - (t356 * s350))
+            wrU contacts ((30 * (truncate t351)) + 17) (t389 + (negate ((((t372 * t388) + (t373 * t389)) + (t374 * ((t356 * s349) - (t357 * s348)))) * t373)))
+            let !t390 = ((t356 * s349) - (t357 * s348))
+            wrU contacts ((30 * (truncate t351)) + 18) (t390 + (negate ((((t372 * t388) + (t373 * t389)) + (t374 * t390)) * t374)))
+            wrU contacts ((30 * (truncate t351)) + 19) (((((t385 * t390) - (t386 * t389)) * t372) + (((t386 * t388) - (t387 * t390)) * t373)) + (((t387 * t389) - (t385 * t388)) * t374))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t342)) + 8) 0.0
-            wrU contacts ((30 * (truncate t342)) + 9) 0.0
-            wrU contacts ((30 * (truncate t342)) + 10) 0.0
-            wrU contacts ((30 * (truncate t342)) + 11) 0.0
-            wrU contacts ((30 * (truncate t342)) + 16) 0.0
-            wrU contacts ((30 * (truncate t342)) + 17) 0.0
-            wrU contacts ((30 * (truncate t342)) + 18) 0.0
-            wrU contacts ((30 * (truncate t342)) + 19) 0.0
+            wrU contacts ((30 * (truncate t351)) + 8) 0.0
+            wrU contacts ((30 * (truncate t351)) + 9) 0.0
+            wrU contacts ((30 * (truncate t351)) + 10) 0.0
+            wrU contacts ((30 * (truncate t351)) + 11) 0.0
+            wrU contacts ((30 * (truncate t351)) + 16) 0.0
+            wrU contacts ((30 * (truncate t351)) + 17) 0.0
+            wrU contacts ((30 * (truncate t351)) + 18) 0.0
+            wrU contacts ((30 * (truncate t351)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t382 <- rdU meta 6
-          wrU meta 6 (t382 + 1.0)
+          t391 <- rdU meta 6
+          wrU meta 6 (t391 + 1.0)
           pure ()
         pure ()
       else do
@@ -789,8 +812,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1743,8 +1766,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1902,8 +1925,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "plane" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Plane: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -147,49 +147,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -203,133 +208,140 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    chkI verts (291 * i31) 0 2
-    t67 <- rdU verts (291 * i31)
-    t68 <- rdU verts ((291 * i31) + 1)
-    t69 <- rdU verts ((291 * i31) + 2)
-    v70 <- newR 1.0
-    loopI 0.0 24.0 $ \i71 -> do
-      let !d71 = fromIntegral i71 :: Double
-      chkI verts ((291 * i31) + (12 * i71)) 12 14
-      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
-      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
-      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
-      chkI radii ((24 * i31) + i71) 0 0
-      t75 <- rdU radii ((24 * i31) + i71)
-      t76 <- getR v70
-      let !t77 = (t72 + (negate t67))
-      let !t78 = (t73 + (negate t68))
-      let !t79 = (t74 + (negate t69))
-      let !t80 = (if t75 > 0 then ((sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79))) / t75) else 1.0)
-      setR v70 (if (t76 - t80) > 0 then t80 else t76)
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    t81 <- getR v70
-    if (0.8 - t81) > 0 then do
-      v82 <- newR 0.0
-      v83 <- newR 0.0
-      v84 <- newR 0.0
-      v85 <- newR 0.0
-      v86 <- newR 0.0
+    chkI verts (291 * i31) 0 2
+    t72 <- rdU verts (291 * i31)
+    t73 <- rdU verts ((291 * i31) + 1)
+    t74 <- rdU verts ((291 * i31) + 2)
+    v75 <- newR 1.0
+    loopI 0.0 24.0 $ \i76 -> do
+      let !d76 = fromIntegral i76 :: Double
+      chkI verts ((291 * i31) + (12 * i76)) 12 14
+      t77 <- rdU verts (((291 * i31) + (12 * i76)) + 12)
+      t78 <- rdU verts (((291 * i31) + (12 * i76)) + 13)
+      t79 <- rdU verts (((291 * i31) + (12 * i76)) + 14)
+      chkI radii ((24 * i31) + i76) 0 0
+      t80 <- rdU radii ((24 * i31) + i76)
+      t81 <- getR v75
+      let !t82 = (t77 + (negate t72))
+      let !t83 = (t78 + (negate t73))
+      let !t84 = (t79 + (negate t74))
+      let !t85 = (if t80 > 0 then ((sqrt (((t82 * t82) + (t83 * t83)) + (t84 * t84))) / t80) else 1.0)
+      setR v75 (if (t81 - t85) > 0 then t85 else t81)
+      pure ()
+    t86 <- getR v75
+    if (0.8 - t86) > 0 then do
       v87 <- newR 0.0
       v88 <- newR 0.0
-      loopI 0.0 24.0 $ \i89 -> do
-        let !d89 = fromIntegral i89 :: Double
-        chkI radii ((24 * i31) + i89) 0 0
-        t90 <- rdU radii ((24 * i31) + i89)
-        loopI 6.0 12.0 $ \i91 -> do
-          let !d91 = fromIntegral i91 :: Double
-          let !t92 = (d89 + d91)
-          chkI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))) 0 0
-          t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
-          loopI 1.0 4.0 $ \i94 -> do
-            let !d94 = fromIntegral i94 :: Double
-            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
-            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
-            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
-            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
-            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
-            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
-            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
-            loopI 1.0 4.0 $ \i101 -> do
-              let !d101 = fromIntegral i101 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
-              t102 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0)) 0 0
-              t103 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0)) 0 0
-              t104 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101))) 0 0
-              t105 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0)) 0 0
-              t106 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0)) 0 0
-              t107 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
-              t108 <- getR v82
-              let !t109 = (negate t102)
-              let !t110 = (t105 + t109)
-              let !t111 = (negate t103)
-              let !t112 = (t106 + t111)
-              let !t113 = (negate t104)
-              let !t114 = (t107 + t113)
-              let !t115 = (((t110 * t110) + (t112 * t112)) + (t114 * t114))
-              let !t116 = (t98 + (negate t95))
-              let !t117 = (t99 + (negate t96))
-              let !t118 = (t100 + (negate t97))
-              let !t119 = (((t116 * t110) + (t117 * t112)) + (t118 * t114))
-              let !t120 = (((t116 * t116) + (t117 * t117)) + (t118 * t118))
-              let !t121 = ((t120 * t115) - (t119 * t119))
-              let !t122 = (t95 + t109)
-              let !t123 = (t96 + t111)
-              let !t124 = (t97 + t113)
-              let !t125 = (((t110 * t122) + (t112 * t123)) + (t114 * t124))
-              let !t126 = (((t116 * t122) + (t117 * t123)) + (t118 * t124))
-              let !t127 = (if ((abs t121) - 1.0e-300) > 0 then (((t119 * t125) - (t126 * t115)) / t121) else 0.0)
-              let !t128 = (if (t127 - 1.0) > 0 then 1.0 else t127)
-              let !t129 = (if (t121 - ((1.0e-12 * t120) * t115)) > 0 then (if (negate t128) > 0 then 0.0 else t128) else 0.0)
-              let !t130 = (if ((abs t115) - 1.0e-300) > 0 then (((t119 * t129) + t125) / t115) else 0.0)
-              let !t131 = ((abs t120) - 1.0e-300)
-              let !t132 = (if t131 > 0 then ((negate t126) / t120) else 0.0)
+      v89 <- newR 0.0
+      v90 <- newR 0.0
+      v91 <- newR 0.0
+      v92 <- newR 0.0
+      v93 <- newR 0.0
+      loopI 0.0 24.0 $ \i94 -> do
+        let !d94 = fromIntegral i94 :: Double
+        chkI radii ((24 * i31) + i94) 0 0
+        t95 <- rdU radii ((24 * i31) + i94)
+        loopI 6.0 12.0 $ \i96 -> do
+          let !d96 = fromIntegral i96 :: Double
+          let !t97 = (d94 + d96)
+          chkI radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0)))))) 0 0
+          t98 <- rdU radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0))))))
+          loopI 1.0 4.0 $ \i99 -> do
+            let !d99 = fromIntegral i99 :: Double
+            chkI verts ((291 * i31) + (12 * i94) + (3 * i99)) 0 5
+            t100 <- rdU verts ((291 * i31) + (12 * i94) + (3 * i99))
+            t101 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 1)
+            t102 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 2)
+            t103 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 3)
+            t104 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 4)
+            t105 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 5)
+            loopI 1.0 4.0 $ \i106 -> do
+              let !d106 = fromIntegral i106 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0)))) 0 0
+              t107 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0)) 0 0
+              t108 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0)) 0 0
+              t109 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106))) 0 0
+              t110 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0)) 0 0
+              t111 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0)) 0 0
+              t112 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0))
+              t113 <- getR v87
+              let !t114 = (negate t107)
+              let !t115 = (t110 + t114)
+              let !t116 = (negate t108)
+              let !t117 = (t111 + t116)
+              let !t118 = (negate t109)
+              let !t119 = (t112 + t118)
+              let !t120 = (((t115 * t115) + (t117 * t117)) + (t119 * t119))
+              let !t121 = (t103 + (negate t100))
+              let !t122 = (t104 + (negate t101))
+              let !t123 = (t105 + (negate t102))
+              let !t124 = (((t121 * t115) + (t122 * t117)) + (t123 * t119))
+              let !t125 = (((t121 * t121) + (t122 * t122)) + (t123 * t123))
+              let !t126 = ((t125 * t120) - (t124 * t124))
+              let !t127 = (t100 + t114)
+              let !t128 = (t101 + t116)
+              let !t129 = (t102 + t118)
+              let !t130 = (((t115 * t127) + (t117 * t128)) + (t119 * t129))
+              let !t131 = (((t121 * t127) + (t122 * t128)) + (t123 * t129))
+              let !t132 = (if ((abs t126) - 1.0e-300) > 0 then (((t124 * t130) - (t131 * t120)) / t126) else 0.0)
               let !t133 = (if (t132 - 1.0) > 0 then 1.0 else t132)
-              let !t134 = (t130 - 1.0)
-              let !t135 = (if t131 > 0 then ((t119 - t126) / t120) else 0.0)
-              let !t136 = (if (t135 - 1.0) > 0 then 1.0 else t135)
-              let !t137 = (if (negate t130) > 0 then (if (negate t133) > 0 then 0.0 else t133) else (if t134 > 0 then (if (negate t136) > 0 then 0.0 else t136) else t129))
-              let !t138 = (if t134 > 0 then 1.0 else t130)
-              let !t139 = (if (negate t138) > 0 then 0.0 else t138)
-              let !t140 = ((0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0)))) - t108)
-              let !t141 = ((t95 + (t137 * t116)) + (negate (t102 + (t139 * t110))))
-              let !t142 = ((t96 + (t137 * t117)) + (negate (t103 + (t139 * t112))))
-              let !t143 = ((t97 + (t137 * t118)) + (negate (t104 + (t139 * t114))))
-              let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
-              if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
-                setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i89)) 3 5
-                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
-                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
-                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
-                t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t149 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t150 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
-                setR v83 (t95 + (t137 * t116))
-                setR v84 (t96 + (t137 * t117))
-                setR v85 (t97 + (t137 * t118))
-                let !t151 = (negate t67)
-                let !t152 = (t145 + t151)
-                let !t153 = (negate t68)
-                let !t154 = (t146 + t153)
-                let !t155 = (negate t69)
-                let !t156 = (t147 + t155)
-                let !t157 = (sqrt (((t152 * t152) + (t154 * t154)) + (t156 * t156)))
-                let !t158 = (t148 + t151)
-                let !t159 = (t149 + t153)
-                let !t160 = (t150 + t155)
-                let !t161 = (sqrt (((t158 * t158) + (t159 * t159)) + (t160 * t160)))
-                setR v86 (negate (((if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0) * t152) + ((if t161 > 0 then (recip (if (t161 - 1.0e-300) > 0 then t161 else 1.0e-300)) else 0.0) * t158)))
-                setR v87 (negate (((if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0) * t154) + ((if t161 > 0 then (recip (if (t161 - 1.0e-300) > 0 then t161 else 1.0e-300)) else 0.0) * t159)))
-                setR v88 (negate (((if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0) * t156) + ((if t161 > 0 then (recip (if (t161 - 1.0e-300) > 0 then t161 else 1.0e-300)) else 0.0) * t160)))
+              let !t134 = (if (t126 - ((1.0e-12 * t125) * t120)) > 0 then (if (negate t133) > 0 then 0.0 else t133) else 0.0)
+              let !t135 = (if ((abs t120) - 1.0e-300) > 0 then (((t124 * t134) + t130) / t120) else 0.0)
+              let !t136 = ((abs t125) - 1.0e-300)
+              let !t137 = (if t136 > 0 then ((negate t131) / t125) else 0.0)
+              let !t138 = (if (t137 - 1.0) > 0 then 1.0 else t137)
+              let !t139 = (t135 - 1.0)
+              let !t140 = (if t136 > 0 then ((t124 - t131) / t125) else 0.0)
+              let !t141 = (if (t140 - 1.0) > 0 then 1.0 else t140)
+              let !t142 = (if (negate t135) > 0 then (if (negate t138) > 0 then 0.0 else t138) else (if t139 > 0 then (if (negate t141) > 0 then 0.0 else t141) else t134))
+              let !t143 = (if t139 > 0 then 1.0 else t135)
+              let !t144 = (if (negate t143) > 0 then 0.0 else t143)
+              let !t145 = ((0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0)))) - t113)
+              let !t146 = ((t100 + (t142 * t121)) + (negate (t107 + (t144 * t115))))
+              let !t147 = ((t101 + (t142 * t122)) + (negate (t108 + (t144 * t117))))
+              let !t148 = ((t102 + (t142 * t123)) + (negate (t109 + (t144 * t119))))
+              let !t149 = ((0.3 * ((if (t98 - t95) > 0 then t95 else t98) / 4.0)) - (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148))))
+              if (if (t145 - t149) > 0 then t149 else t145) > 0 then do
+                setR v87 (0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0))))
+                chkI verts ((291 * i31) + (12 * i94)) 3 5
+                t150 <- rdU verts (((291 * i31) + (12 * i94)) + 3)
+                t151 <- rdU verts (((291 * i31) + (12 * i94)) + 4)
+                t152 <- rdU verts (((291 * i31) + (12 * i94)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)))) 0 0
+                t153 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t154 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t155 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0))
+                setR v88 (t100 + (t142 * t121))
+                setR v89 (t101 + (t142 * t122))
+                setR v90 (t102 + (t142 * t123))
+                let !t156 = (negate t72)
+                let !t157 = (t150 + t156)
+                let !t158 = (negate t73)
+                let !t159 = (t151 + t158)
+                let !t160 = (negate t74)
+                let !t161 = (t152 + t160)
+                let !t162 = (sqrt (((t157 * t157) + (t159 * t159)) + (t161 * t161)))
+                let !t163 = (t153 + t156)
+                let !t164 = (t154 + t158)
+                let !t165 = (t155 + t160)
+                let !t166 = (sqrt (((t163 * t163) + (t164 * t164)) + (t165 * t165)))
+                setR v91 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t157) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t163)))
+                setR v92 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t159) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t164)))
+                setR v93 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t161) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t165)))
                 pure ()
               else do
                 pure ()
@@ -337,112 +349,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t162 <- getR v82
-      if t162 > 0 then do
-        t163 <- getR v83
-        t164 <- getR v84
-        t165 <- getR v85
-        t166 <- getR v86
-        t167 <- getR v87
+      t167 <- getR v87
+      if t167 > 0 then do
         t168 <- getR v88
-        let !t169 = (t167 + (negate t167))
-        let !t170 = (sqrt (((t166 * t166) + (t169 * t169)) + (t168 * t168)))
-        let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
-        let !s172 = (t171 * t166)
-        let !s173 = (t171 * t169)
-        let !s174 = (t171 * t168)
-        t175 <- rdU meta 2
-        t176 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t176) > 0 then 1.0 else t176)) - t175) - 0.5) > 0 then do
-          wrU meta 2 (t175 + 1.0)
-          t177 <- rdU pos (3 * i31)
-          t178 <- rdU pos ((3 * i31) + 1)
-          t179 <- rdU pos ((3 * i31) + 2)
+        t169 <- getR v89
+        t170 <- getR v90
+        t171 <- getR v91
+        t172 <- getR v92
+        t173 <- getR v93
+        let !t174 = (t172 + (negate t172))
+        let !t175 = (sqrt (((t171 * t171) + (t174 * t174)) + (t173 * t173)))
+        let !t176 = (if t175 > 0 then (recip (if (t175 - 1.0e-300) > 0 then t175 else 1.0e-300)) else 0.0)
+        let !s177 = (t176 * t171)
+        let !s178 = (t176 * t174)
+        let !s179 = (t176 * t173)
+        t180 <- rdU meta 2
+        t181 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t181) > 0 then 1.0 else t181)) - t180) - 0.5) > 0 then do
+          wrU meta 2 (t180 + 1.0)
+          t182 <- rdU pos (3 * i31)
+          t183 <- rdU pos ((3 * i31) + 1)
+          t184 <- rdU pos ((3 * i31) + 2)
           chkI normal (3 * i31) 0 2
-          t180 <- rdU normal (3 * i31)
-          t181 <- rdU normal ((3 * i31) + 1)
-          t182 <- rdU normal ((3 * i31) + 2)
+          t185 <- rdU normal (3 * i31)
+          t186 <- rdU normal ((3 * i31) + 1)
+          t187 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t183 <- rdU axis (3 * i31)
-          t184 <- rdU axis ((3 * i31) + 1)
-          t185 <- rdU axis ((3 * i31) + 2)
-          let !s186 = ((t181 * t185) - (t182 * t184))
-          let !s187 = ((t182 * t183) - (t180 * t185))
-          let !s188 = ((t180 * t184) - (t181 * t183))
+          t188 <- rdU axis (3 * i31)
+          t189 <- rdU axis ((3 * i31) + 1)
+          t190 <- rdU axis ((3 * i31) + 2)
+          let !s191 = ((t186 * t190) - (t187 * t189))
+          let !s192 = ((t187 * t188) - (t185 * t190))
+          let !s193 = ((t185 * t189) - (t186 * t188))
           chkI scalars (6 * i31) 0 0
-          t189 <- rdU scalars (6 * i31)
-          t190 <- rdU scalars ((6 * i31) + 5)
-          t191 <- rdU scalars ((6 * i31) + 2)
-          t192 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t175)) 0 29
-          wrU contacts (30 * (truncate t175)) d31
-          wrU contacts ((30 * (truncate t175)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t175)) + 2) d31
-          wrU contacts ((30 * (truncate t175)) + 3) 12.0
-          wrU contacts ((30 * (truncate t175)) + 4) (s172 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t180)))
-          wrU contacts ((30 * (truncate t175)) + 5) (s173 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t181)))
-          wrU contacts ((30 * (truncate t175)) + 6) (s174 + (negate ((((t180 * s172) + (t181 * s173)) + (t182 * s174)) * t182)))
-          wrU contacts ((30 * (truncate t175)) + 7) 0.0
-          wrU contacts ((30 * (truncate t175)) + 12) 0.0
-          wrU contacts ((30 * (truncate t175)) + 13) 0.0
-          wrU contacts ((30 * (truncate t175)) + 14) 0.0
-          wrU contacts ((30 * (truncate t175)) + 15) 0.0
-          wrU contacts ((30 * (truncate t175)) + 20) t162
-          wrU contacts ((30 * (truncate t175)) + 26) 0.6
-          wrU contacts ((30 * (truncate t175)) + 27) t163
-          wrU contacts ((30 * (truncate t175)) + 28) t164
-          wrU contacts ((30 * (truncate t175)) + 29) t165
+          t194 <- rdU scalars (6 * i31)
+          t195 <- rdU scalars ((6 * i31) + 5)
+          t196 <- rdU scalars ((6 * i31) + 2)
+          t197 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t180)) 0 29
+          wrU contacts (30 * (truncate t180)) d31
+          wrU contacts ((30 * (truncate t180)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t180)) + 2) d31
+          wrU contacts ((30 * (truncate t180)) + 3) 12.0
+          wrU contacts ((30 * (truncate t180)) + 4) (s177 + (negate ((((t185 * s177) + (t186 * s178)) + (t187 * s179)) * t185)))
+          wrU contacts ((30 * (truncate t180)) + 5) (s178 + (negate ((((t185 * s177) + (t186 * s178)) + (t187 * s179)) * t186)))
+          wrU contacts ((30 * (truncate t180)) + 6) (s179 + (negate ((((t185 * s177) + (t186 * s178)) + (t187 * s179)) * t187)))
+          wrU contacts ((30 * (truncate t180)) + 7) 0.0
+          wrU contacts ((30 * (truncate t180)) + 12) 0.0
+          wrU contacts ((30 * (truncate t180)) + 13) 0.0
+          wrU contacts ((30 * (truncate t180)) + 14) 0.0
+          wrU contacts ((30 * (truncate t180)) + 15) 0.0
+          wrU contacts ((30 * (truncate t180)) + 20) t167
+          wrU contacts ((30 * (truncate t180)) + 26) 0.6
+          wrU contacts ((30 * (truncate t180)) + 27) t168
+          wrU contacts ((30 * (truncate t180)) + 28) t169
+          wrU contacts ((30 * (truncate t180)) + 29) t170
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t193 <- rdU pos (-3)
-            t194 <- rdU pos (-2)
-            t195 <- rdU pos (-1)
+            t198 <- rdU pos (-3)
+            t199 <- rdU pos (-2)
+            t200 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t196 <- rdU normal (-3)
-            t197 <- rdU normal (-2)
-            t198 <- rdU normal (-1)
+            t201 <- rdU normal (-3)
+            t202 <- rdU normal (-2)
+            t203 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t199 <- rdU axis (-3)
-            t200 <- rdU axis (-2)
-            t201 <- rdU axis (-1)
-            let !s202 = ((t197 * t201) - (t198 * t200))
-            let !s203 = ((t198 * t199) - (t196 * t201))
-            let !s204 = ((t196 * t200) - (t197 * t199))
+            t204 <- rdU axis (-3)
+            t205 <- rdU axis (-2)
+            t206 <- rdU axis (-1)
+            let !s207 = ((t202 * t206) - (t203 * t205))
+            let !s208 = ((t203 * t204) - (t201 * t206))
+            let !s209 = ((t201 * t205) - (t202 * t204))
             chkI scalars 0 (-6) (-1)
-            t205 <- rdU scalars (-6)
-            t206 <- rdU scalars (-1)
-            t207 <- rdU scalars (-4)
-            t208 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t175)) + 8) (s172 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t196)))
-            wrU contacts ((30 * (truncate t175)) + 9) (s173 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t197)))
-            wrU contacts ((30 * (truncate t175)) + 10) (s174 + (negate ((((t196 * s172) + (t197 * s173)) + (t198 * s174)) * t198)))
-            let !t209 = (t164 + (negate t194))
-            let !t210 = (t165 + (negate t195))
-            let !t211 = (t163 + (negate t193))
-            wrU contacts ((30 * (truncate t175)) + 11) (((((t209 * s174) - (t210 * s173)) * t196) + (((t210 * s172) - (t211 * s174)) * t197)) + (((t211 * s173) - (t209 * s172)) * t198))
-            let !t212 = ((t181 * s174) - (t182 * s173))
-            wrU contacts ((30 * (truncate t175)) + 16) (t212 + (negate ((((t196 * t212) + (t197 * ((t182 * s172) - (t180 * s174)))) + (t198 * ((t180 * s173) - (t181 * s172)))) * t196)))
-            let !t213 = ((t182 * s172) - (t180 * s174))
-            wrU contacts ((30 * (truncate t175)) + 17) (t213 + (negate ((((t196 * t212) + (t197 * t213)) + (t198 * ((t180 * s173) - (t181 * s172)))) * t197)))
-            let !t214 = ((t180 * s173) - (t181 * s172))
-            wrU contacts ((30 * (truncate t175)) + 18) (t214 + (negate ((((t196 * t212) + (t197 * t213)) + (t198 * t214)) * t198)))
-            wrU contacts ((30 * (truncate t175)) + 19) (((((t209 * t214) - (t210 * t213)) * t196) + (((t210 * t212) - (t211 * t214)) * t197)) + (((t211 * t213) - (t209 * t212)) * t198))
+            t210 <- rdU scalars (-6)
+            t211 <- rdU scalars (-1)
+            t212 <- rdU scalars (-4)
+            t213 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t180)) + 8) (s177 + (negate ((((t201 * s177) + (t202 * s178)) + (t203 * s179)) * t201)))
+            wrU contacts ((30 * (truncate t180)) + 9) (s178 + (negate ((((t201 * s177) + (t202 * s178)) + (t203 * s179)) * t202)))
+            wrU contacts ((30 * (truncate t180)) + 10) (s179 + (negate ((((t201 * s177) + (t202 * s178)) + (t203 * s179)) * t203)))
+            let !t214 = (t169 + (negate t199))
+            let !t215 = (t170 + (negate t200))
+            let !t216 = (t168 + (negate t198))
+            wrU contacts ((30 * (truncate t180)) + 11) (((((t214 * s179) - (t215 * s178)) * t201) + (((t215 * s177) - (t216 * s179)) * t202)) + (((t216 * s178) - (t214 * s177)) * t203))
+            let !t217 = ((t186 * s179) - (t187 * s178))
+            wrU contacts ((30 * (truncate t180)) + 16) (t217 + (negate ((((t201 * t217) + (t202 * ((t187 * s177) - (t185 * s179)))) + (t203 * ((t185 * s178) - (t186 * s177)))) * t201)))
+            let !t218 = ((t187 * s177) - (t185 * s179))
+            wrU contacts ((30 * (truncate t180)) + 17) (t218 + (negate ((((t201 * t217) + (t202 * t218)) + (t203 * ((t185 * s178) - (t186 * s177)))) * t202)))
+            let !t219 = ((t185 * s178) - (t186 * s177))
+            wrU contacts ((30 * (truncate t180)) + 18) (t219 + (negate ((((t201 * t217) + (t202 * t218)) + (t203 * t219)) * t203)))
+            wrU contacts ((30 * (truncate t180)) + 19) (((((t214 * t219) - (t215 * t218)) * t201) + (((t215 * t217) - (t216 * t219)) * t202)) + (((t216 * t218) - (t214 * t217)) * t203))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t175)) + 8) 0.0
-            wrU contacts ((30 * (truncate t175)) + 9) 0.0
-            wrU contacts ((30 * (truncate t175)) + 10) 0.0
-            wrU contacts ((30 * (truncate t175)) + 11) 0.0
-            wrU contacts ((30 * (truncate t175)) + 16) 0.0
-            wrU contacts ((30 * (truncate t175)) + 17) 0.0
-            wrU contacts ((30 * (truncate t175)) + 18) 0.0
-            wrU contacts ((30 * (truncate t175)) + 19) 0.0
+            wrU contacts ((30 * (truncate t180)) + 8) 0.0
+            wrU contacts ((30 * (truncate t180)) + 9) 0.0
+            wrU contacts ((30 * (truncate t180)) + 10) 0.0
+            wrU contacts ((30 * (truncate t180)) + 11) 0.0
+            wrU contacts ((30 * (truncate t180)) + 16) 0.0
+            wrU contacts ((30 * (truncate t180)) + 17) 0.0
+            wrU contacts ((30 * (truncate t180)) + 18) 0.0
+            wrU contacts ((30 * (truncate t180)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t215 <- rdU meta 6
-          wrU meta 6 (t215 + 1.0)
+          t220 <- rdU meta 6
+          wrU meta 6 (t220 + 1.0)
           pure ()
         pure ()
       else do
@@ -453,8 +465,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1143,8 +1155,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1267,8 +1279,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "rectangle" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary function f(x, y, z) {\n  const t0 = (1.0 - Math.abs(z));\n  const t1 = (1.5 - Math.abs(x));\n  return ((t0 - t1) > 0 ? t1 : t0);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Rectangle: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -147,49 +147,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -203,71 +208,78 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pure ()
     chkI normal (3 * i31) 0 2
-    t67 <- rdU normal (3 * i31)
-    t68 <- rdU normal ((3 * i31) + 1)
-    t69 <- rdU normal ((3 * i31) + 2)
-    v70 <- newR 0.0
-    v71 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i72 -> do
-      let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i31) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i31) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i31) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i31) + (12 * i72)) + 14)
-      let !t76 = (1.0 - (abs t75))
-      let !t77 = (1.5 - (abs t73))
-      let !s78 = (if (t76 - t77) > 0 then t77 else t76)
-      t79 <- getR v70
-      if ((negate s78) - t79) > 0 then do
-        setR v70 (negate s78)
-        setR v71 d72
+    t72 <- rdU normal (3 * i31)
+    t73 <- rdU normal ((3 * i31) + 1)
+    t74 <- rdU normal ((3 * i31) + 2)
+    v75 <- newR 0.0
+    v76 <- newR (-1.0)
+    loopI 0.0 24.0 $ \i77 -> do
+      let !d77 = fromIntegral i77 :: Double
+      chkI verts ((291 * i31) + (12 * i77)) 12 14
+      t78 <- rdU verts (((291 * i31) + (12 * i77)) + 12)
+      t79 <- rdU verts (((291 * i31) + (12 * i77)) + 13)
+      t80 <- rdU verts (((291 * i31) + (12 * i77)) + 14)
+      let !t81 = (1.0 - (abs t80))
+      let !t82 = (1.5 - (abs t78))
+      let !s83 = (if (t81 - t82) > 0 then t82 else t81)
+      t84 <- getR v75
+      if ((negate s83) - t84) > 0 then do
+        setR v75 (negate s83)
+        setR v76 d77
         pure ()
       else do
         pure ()
       pure ()
-    t80 <- getR v70
-    if t80 > 0 then do
-      t81 <- getR v71
-      chkI verts ((12 * (truncate t81)) + (291 * i31)) 12 14
-      t82 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 12)
-      t83 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 13)
-      t84 <- rdU verts (((12 * (truncate t81)) + (291 * i31)) + 14)
-      let !t85 = ((1.0 - (abs t84)) - (1.5 - (abs t82)))
-      let !t86 = (if t85 > 0 then (negate (signum t82)) else 0.0)
-      let !t87 = (if t85 > 0 then 0.0 else (negate (signum t84)))
-      let !t88 = (sqrt ((t86 * t86) + (t87 * t87)))
-      let !t89 = (if t88 > 0 then (recip (if (t88 - 1.0e-300) > 0 then t88 else 1.0e-300)) else 0.0)
-      let !s90 = (t89 * t86)
-      let !s91 = (t89 * t87)
-      let !s92 = (t68 * s91)
-      let !s93 = ((t69 * s90) - (t67 * s91))
-      let !s94 = (negate (t68 * s90))
-      v95 <- newR 1.0e300
-      v96 <- newR (-1.0e300)
-      v97 <- newR (-1.0)
-      v98 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i99 -> do
-        let !d99 = fromIntegral i99 :: Double
-        chkI verts ((291 * i31) + (12 * i99)) 12 14
-        t100 <- rdU verts (((291 * i31) + (12 * i99)) + 12)
-        t101 <- rdU verts (((291 * i31) + (12 * i99)) + 13)
-        t102 <- rdU verts (((291 * i31) + (12 * i99)) + 14)
-        let !t103 = (1.0 - (abs t102))
-        let !t104 = (1.5 - (abs t100))
-        if (negate (if (t103 - t104) > 0 then t104 else t103)) > 0 then do
-          let !s105 = (((t100 * s92) + (t101 * s93)) + (t102 * s94))
-          t106 <- getR v95
-          if (t106 - s105) > 0 then do
-            setR v95 s105
-            setR v97 d99
+    t85 <- getR v75
+    if t85 > 0 then do
+      t86 <- getR v76
+      chkI verts ((12 * (truncate t86)) + (291 * i31)) 12 14
+      t87 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 12)
+      t88 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 13)
+      t89 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 14)
+      let !t90 = ((1.0 - (abs t89)) - (1.5 - (abs t87)))
+      let !t91 = (if t90 > 0 then (negate (signum t87)) else 0.0)
+      let !t92 = (if t90 > 0 then 0.0 else (negate (signum t89)))
+      let !t93 = (sqrt ((t91 * t91) + (t92 * t92)))
+      let !t94 = (if t93 > 0 then (recip (if (t93 - 1.0e-300) > 0 then t93 else 1.0e-300)) else 0.0)
+      let !s95 = (t94 * t91)
+      let !s96 = (t94 * t92)
+      let !s97 = (t73 * s96)
+      let !s98 = ((t74 * s95) - (t72 * s96))
+      let !s99 = (negate (t73 * s95))
+      v100 <- newR 1.0e300
+      v101 <- newR (-1.0e300)
+      v102 <- newR (-1.0)
+      v103 <- newR (-1.0)
+      loopI 0.0 24.0 $ \i104 -> do
+        let !d104 = fromIntegral i104 :: Double
+        chkI verts ((12 * i104) + (291 * i31)) 12 14
+        t105 <- rdU verts (((12 * i104) + (291 * i31)) + 12)
+        t106 <- rdU verts (((12 * i104) + (291 * i31)) + 13)
+        t107 <- rdU verts (((12 * i104) + (291 * i31)) + 14)
+        let !t108 = (1.0 - (abs t107))
+        let !t109 = (1.5 - (abs t105))
+        if (negate (if (t108 - t109) > 0 then t109 else t108)) > 0 then do
+          let !s110 = (((t105 * s97) + (t106 * s98)) + (t107 * s99))
+          t111 <- getR v100
+          if (t111 - s110) > 0 then do
+            setR v100 s110
+            setR v102 d104
             pure ()
           else do
             pure ()
-          t107 <- getR v96
-          if (s105 - t107) > 0 then do
-            setR v96 s105
-            setR v98 d99
+          t112 <- getR v101
+          if (s110 - t112) > 0 then do
+            setR v101 s110
+            setR v103 d104
             pure ()
           else do
             pure ()
@@ -275,222 +287,222 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t108 <- getR v97
-      t109 <- getR v98
-      chkI verts ((12 * (truncate t108)) + (291 * i31)) 12 14
-      t110 <- rdU verts (((12 * (truncate t108)) + (291 * i31)) + 12)
-      t111 <- rdU verts (((12 * (truncate t108)) + (291 * i31)) + 13)
-      t112 <- rdU verts (((12 * (truncate t108)) + (291 * i31)) + 14)
-      let !t113 = ((1.0 - (abs t112)) - (1.5 - (abs t110)))
-      let !s114 = (if t113 > 0 then (negate (signum t110)) else 0.0)
-      let !s115 = (if t113 > 0 then 0.0 else (negate (signum t112)))
-      let !s116 = (sqrt ((s114 * s114) + (s115 * s115)))
-      let !s117 = (if t113 > 0 then (1.5 - (abs t110)) else (1.0 - (abs t112)))
-      t118 <- rdU meta 2
-      t119 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t119) > 0 then 1.0 else t119)) - t118) - 0.5) > 0 then do
-        wrU meta 2 (t118 + 1.0)
-        t120 <- rdU pos (3 * i31)
-        t121 <- rdU pos ((3 * i31) + 1)
-        t122 <- rdU pos ((3 * i31) + 2)
-        t123 <- rdU normal (3 * i31)
-        t124 <- rdU normal ((3 * i31) + 1)
-        t125 <- rdU normal ((3 * i31) + 2)
+      t113 <- getR v102
+      t114 <- getR v103
+      chkI verts ((12 * (truncate t113)) + (291 * i31)) 12 14
+      t115 <- rdU verts (((12 * (truncate t113)) + (291 * i31)) + 12)
+      t116 <- rdU verts (((12 * (truncate t113)) + (291 * i31)) + 13)
+      t117 <- rdU verts (((12 * (truncate t113)) + (291 * i31)) + 14)
+      let !t118 = ((1.0 - (abs t117)) - (1.5 - (abs t115)))
+      let !s119 = (if t118 > 0 then (negate (signum t115)) else 0.0)
+      let !s120 = (if t118 > 0 then 0.0 else (negate (signum t117)))
+      let !s121 = (sqrt ((s119 * s119) + (s120 * s120)))
+      let !s122 = (if t118 > 0 then (1.5 - (abs t115)) else (1.0 - (abs t117)))
+      t123 <- rdU meta 2
+      t124 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t124) > 0 then 1.0 else t124)) - t123) - 0.5) > 0 then do
+        wrU meta 2 (t123 + 1.0)
+        t125 <- rdU pos (3 * i31)
+        t126 <- rdU pos ((3 * i31) + 1)
+        t127 <- rdU pos ((3 * i31) + 2)
+        t128 <- rdU normal (3 * i31)
+        t129 <- rdU normal ((3 * i31) + 1)
+        t130 <- rdU normal ((3 * i31) + 2)
         chkI axis (3 * i31) 0 2
-        t126 <- rdU axis (3 * i31)
-        t127 <- rdU axis ((3 * i31) + 1)
-        t128 <- rdU axis ((3 * i31) + 2)
-        let !s129 = ((t124 * t128) - (t125 * t127))
-        let !s130 = ((t125 * t126) - (t123 * t128))
-        let !s131 = ((t123 * t127) - (t124 * t126))
+        t131 <- rdU axis (3 * i31)
+        t132 <- rdU axis ((3 * i31) + 1)
+        t133 <- rdU axis ((3 * i31) + 2)
+        let !s134 = ((t129 * t133) - (t130 * t132))
+        let !s135 = ((t130 * t131) - (t128 * t133))
+        let !s136 = ((t128 * t132) - (t129 * t131))
         chkI scalars (6 * i31) 0 0
-        t132 <- rdU scalars (6 * i31)
-        t133 <- rdU scalars ((6 * i31) + 5)
-        t134 <- rdU scalars ((6 * i31) + 2)
-        t135 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t118)) 0 29
-        wrU contacts (30 * (truncate t118)) d31
-        wrU contacts ((30 * (truncate t118)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t118)) + 2) d31
-        wrU contacts ((30 * (truncate t118)) + 3) 8.0
-        let !t136 = (if s116 > 0 then (recip (if (s116 - 1.0e-300) > 0 then s116 else 1.0e-300)) else 0.0)
-        let !t137 = (t136 * s114)
-        wrU contacts ((30 * (truncate t118)) + 4) (t137 + (negate (((t123 * t137) + (t125 * (t136 * s115))) * t123)))
-        wrU contacts ((30 * (truncate t118)) + 5) (negate (((t123 * t137) + (t125 * (t136 * s115))) * t124))
-        let !t138 = (t136 * s115)
-        wrU contacts ((30 * (truncate t118)) + 6) (t138 + (negate (((t123 * t137) + (t125 * t138)) * t125)))
-        let !t139 = (t111 + (negate t121))
-        wrU contacts ((30 * (truncate t118)) + 7) ((((t139 * t138) * t123) + ((((t112 + (negate t122)) * t137) - ((t110 + (negate t120)) * t138)) * t124)) + ((negate (t139 * t137)) * t125))
-        let !t140 = (t124 * t138)
-        wrU contacts ((30 * (truncate t118)) + 12) (t140 + (negate ((((t123 * t140) + (t124 * ((t125 * t137) - (t123 * t138)))) + (t125 * (negate (t124 * t137)))) * t123)))
-        let !t141 = ((t125 * t137) - (t123 * t138))
-        wrU contacts ((30 * (truncate t118)) + 13) (t141 + (negate ((((t123 * t140) + (t124 * t141)) + (t125 * (negate (t124 * t137)))) * t124)))
-        let !t142 = (negate (t124 * t137))
-        wrU contacts ((30 * (truncate t118)) + 14) (t142 + (negate ((((t123 * t140) + (t124 * t141)) + (t125 * t142)) * t125)))
-        let !t143 = (t112 + (negate t122))
-        let !t144 = (t110 + (negate t120))
-        wrU contacts ((30 * (truncate t118)) + 15) (((((t139 * t142) - (t143 * t141)) * t123) + (((t143 * t140) - (t144 * t142)) * t124)) + (((t144 * t141) - (t139 * t140)) * t125))
-        wrU contacts ((30 * (truncate t118)) + 20) (if s116 > 0 then ((negate s117) / (if (s116 - 1.0e-300) > 0 then s116 else 1.0e-300)) else 0.0)
-        wrU contacts ((30 * (truncate t118)) + 26) 1.0
-        wrU contacts ((30 * (truncate t118)) + 27) t110
-        wrU contacts ((30 * (truncate t118)) + 28) t111
-        wrU contacts ((30 * (truncate t118)) + 29) t112
+        t137 <- rdU scalars (6 * i31)
+        t138 <- rdU scalars ((6 * i31) + 5)
+        t139 <- rdU scalars ((6 * i31) + 2)
+        t140 <- rdU scalars ((6 * i31) + 3)
+        chkI contacts (30 * (truncate t123)) 0 29
+        wrU contacts (30 * (truncate t123)) d31
+        wrU contacts ((30 * (truncate t123)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t123)) + 2) d31
+        wrU contacts ((30 * (truncate t123)) + 3) 8.0
+        let !t141 = (if s121 > 0 then (recip (if (s121 - 1.0e-300) > 0 then s121 else 1.0e-300)) else 0.0)
+        let !t142 = (t141 * s119)
+        wrU contacts ((30 * (truncate t123)) + 4) (t142 + (negate (((t128 * t142) + (t130 * (t141 * s120))) * t128)))
+        wrU contacts ((30 * (truncate t123)) + 5) (negate (((t128 * t142) + (t130 * (t141 * s120))) * t129))
+        let !t143 = (t141 * s120)
+        wrU contacts ((30 * (truncate t123)) + 6) (t143 + (negate (((t128 * t142) + (t130 * t143)) * t130)))
+        let !t144 = (t116 + (negate t126))
+        wrU contacts ((30 * (truncate t123)) + 7) ((((t144 * t143) * t128) + ((((t117 + (negate t127)) * t142) - ((t115 + (negate t125)) * t143)) * t129)) + ((negate (t144 * t142)) * t130))
+        let !t145 = (t129 * t143)
+        wrU contacts ((30 * (truncate t123)) + 12) (t145 + (negate ((((t128 * t145) + (t129 * ((t130 * t142) - (t128 * t143)))) + (t130 * (negate (t129 * t142)))) * t128)))
+        let !t146 = ((t130 * t142) - (t128 * t143))
+        wrU contacts ((30 * (truncate t123)) + 13) (t146 + (negate ((((t128 * t145) + (t129 * t146)) + (t130 * (negate (t129 * t142)))) * t129)))
+        let !t147 = (negate (t129 * t142))
+        wrU contacts ((30 * (truncate t123)) + 14) (t147 + (negate ((((t128 * t145) + (t129 * t146)) + (t130 * t147)) * t130)))
+        let !t148 = (t117 + (negate t127))
+        let !t149 = (t115 + (negate t125))
+        wrU contacts ((30 * (truncate t123)) + 15) (((((t144 * t147) - (t148 * t146)) * t128) + (((t148 * t145) - (t149 * t147)) * t129)) + (((t149 * t146) - (t144 * t145)) * t130))
+        wrU contacts ((30 * (truncate t123)) + 20) (if s121 > 0 then ((negate s122) / (if (s121 - 1.0e-300) > 0 then s121 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t123)) + 26) 1.0
+        wrU contacts ((30 * (truncate t123)) + 27) t115
+        wrU contacts ((30 * (truncate t123)) + 28) t116
+        wrU contacts ((30 * (truncate t123)) + 29) t117
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t145 <- rdU pos (-3)
-          t146 <- rdU pos (-2)
-          t147 <- rdU pos (-1)
+          t150 <- rdU pos (-3)
+          t151 <- rdU pos (-2)
+          t152 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t148 <- rdU normal (-3)
-          t149 <- rdU normal (-2)
-          t150 <- rdU normal (-1)
+          t153 <- rdU normal (-3)
+          t154 <- rdU normal (-2)
+          t155 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t151 <- rdU axis (-3)
-          t152 <- rdU axis (-2)
-          t153 <- rdU axis (-1)
-          let !s154 = ((t149 * t153) - (t150 * t152))
-          let !s155 = ((t150 * t151) - (t148 * t153))
-          let !s156 = ((t148 * t152) - (t149 * t151))
+          t156 <- rdU axis (-3)
+          t157 <- rdU axis (-2)
+          t158 <- rdU axis (-1)
+          let !s159 = ((t154 * t158) - (t155 * t157))
+          let !s160 = ((t155 * t156) - (t153 * t158))
+          let !s161 = ((t153 * t157) - (t154 * t156))
           chkI scalars 0 (-6) (-1)
-          t157 <- rdU scalars (-6)
-          t158 <- rdU scalars (-1)
-          t159 <- rdU scalars (-4)
-          t160 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t118)) + 8) (t137 + (negate (((t148 * t137) + (t150 * t138)) * t148)))
-          wrU contacts ((30 * (truncate t118)) + 9) (negate (((t148 * t137) + (t150 * t138)) * t149))
-          wrU contacts ((30 * (truncate t118)) + 10) (t138 + (negate (((t148 * t137) + (t150 * t138)) * t150)))
-          let !t161 = (t111 + (negate t146))
-          wrU contacts ((30 * (truncate t118)) + 11) ((((t161 * t138) * t148) + ((((t112 + (negate t147)) * t137) - ((t110 + (negate t145)) * t138)) * t149)) + ((negate (t161 * t137)) * t150))
-          wrU contacts ((30 * (truncate t118)) + 16) (t140 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t148)))
-          wrU contacts ((30 * (truncate t118)) + 17) (t141 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t149)))
-          wrU contacts ((30 * (truncate t118)) + 18) (t142 + (negate ((((t148 * t140) + (t149 * t141)) + (t150 * t142)) * t150)))
-          let !t162 = (t112 + (negate t147))
-          let !t163 = (t110 + (negate t145))
-          wrU contacts ((30 * (truncate t118)) + 19) (((((t161 * t142) - (t162 * t141)) * t148) + (((t162 * t140) - (t163 * t142)) * t149)) + (((t163 * t141) - (t161 * t140)) * t150))
+          t162 <- rdU scalars (-6)
+          t163 <- rdU scalars (-1)
+          t164 <- rdU scalars (-4)
+          t165 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t123)) + 8) (t142 + (negate (((t153 * t142) + (t155 * t143)) * t153)))
+          wrU contacts ((30 * (truncate t123)) + 9) (negate (((t153 * t142) + (t155 * t143)) * t154))
+          wrU contacts ((30 * (truncate t123)) + 10) (t143 + (negate (((t153 * t142) + (t155 * t143)) * t155)))
+          let !t166 = (t116 + (negate t151))
+          wrU contacts ((30 * (truncate t123)) + 11) ((((t166 * t143) * t153) + ((((t117 + (negate t152)) * t142) - ((t115 + (negate t150)) * t143)) * t154)) + ((negate (t166 * t142)) * t155))
+          wrU contacts ((30 * (truncate t123)) + 16) (t145 + (negate ((((t153 * t145) + (t154 * t146)) + (t155 * t147)) * t153)))
+          wrU contacts ((30 * (truncate t123)) + 17) (t146 + (negate ((((t153 * t145) + (t154 * t146)) + (t155 * t147)) * t154)))
+          wrU contacts ((30 * (truncate t123)) + 18) (t147 + (negate ((((t153 * t145) + (t154 * t146)) + (t155 * t147)) * t155)))
+          let !t167 = (t117 + (negate t152))
+          let !t168 = (t115 + (negate t150))
+          wrU contacts ((30 * (truncate t123)) + 19) (((((t166 * t147) - (t167 * t146)) * t153) + (((t167 * t145) - (t168 * t147)) * t154)) + (((t168 * t146) - (t166 * t145)) * t155))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t118)) + 8) 0.0
-          wrU contacts ((30 * (truncate t118)) + 9) 0.0
-          wrU contacts ((30 * (truncate t118)) + 10) 0.0
-          wrU contacts ((30 * (truncate t118)) + 11) 0.0
-          wrU contacts ((30 * (truncate t118)) + 16) 0.0
-          wrU contacts ((30 * (truncate t118)) + 17) 0.0
-          wrU contacts ((30 * (truncate t118)) + 18) 0.0
-          wrU contacts ((30 * (truncate t118)) + 19) 0.0
+          wrU contacts ((30 * (truncate t123)) + 8) 0.0
+          wrU contacts ((30 * (truncate t123)) + 9) 0.0
+          wrU contacts ((30 * (truncate t123)) + 10) 0.0
+          wrU contacts ((30 * (truncate t123)) + 11) 0.0
+          wrU contacts ((30 * (truncate t123)) + 16) 0.0
+          wrU contacts ((30 * (truncate t123)) + 17) 0.0
+          wrU contacts ((30 * (truncate t123)) + 18) 0.0
+          wrU contacts ((30 * (truncate t123)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t164 <- rdU meta 6
-        wrU meta 6 (t164 + 1.0)
+        t169 <- rdU meta 6
+        wrU meta 6 (t169 + 1.0)
         pure ()
-      if (abs (t109 - t108)) > 0 then do
-        chkI verts ((12 * (truncate t109)) + (291 * i31)) 12 14
-        t165 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 12)
-        t166 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 13)
-        t167 <- rdU verts (((12 * (truncate t109)) + (291 * i31)) + 14)
-        let !t168 = ((1.0 - (abs t167)) - (1.5 - (abs t165)))
-        let !s169 = (if t168 > 0 then (negate (signum t165)) else 0.0)
-        let !s170 = (if t168 > 0 then 0.0 else (negate (signum t167)))
-        let !s171 = (sqrt ((s169 * s169) + (s170 * s170)))
-        let !s172 = (if t168 > 0 then (1.5 - (abs t165)) else (1.0 - (abs t167)))
-        t173 <- rdU meta 2
-        t174 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t174) > 0 then 1.0 else t174)) - t173) - 0.5) > 0 then do
-          wrU meta 2 (t173 + 1.0)
-          t175 <- rdU pos (3 * i31)
-          t176 <- rdU pos ((3 * i31) + 1)
-          t177 <- rdU pos ((3 * i31) + 2)
-          t178 <- rdU normal (3 * i31)
-          t179 <- rdU normal ((3 * i31) + 1)
-          t180 <- rdU normal ((3 * i31) + 2)
+      if (abs (t114 - t113)) > 0 then do
+        chkI verts ((12 * (truncate t114)) + (291 * i31)) 12 14
+        t170 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 12)
+        t171 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 13)
+        t172 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 14)
+        let !t173 = ((1.0 - (abs t172)) - (1.5 - (abs t170)))
+        let !s174 = (if t173 > 0 then (negate (signum t170)) else 0.0)
+        let !s175 = (if t173 > 0 then 0.0 else (negate (signum t172)))
+        let !s176 = (sqrt ((s174 * s174) + (s175 * s175)))
+        let !s177 = (if t173 > 0 then (1.5 - (abs t170)) else (1.0 - (abs t172)))
+        t178 <- rdU meta 2
+        t179 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t179) > 0 then 1.0 else t179)) - t178) - 0.5) > 0 then do
+          wrU meta 2 (t178 + 1.0)
+          t180 <- rdU pos (3 * i31)
+          t181 <- rdU pos ((3 * i31) + 1)
+          t182 <- rdU pos ((3 * i31) + 2)
+          t183 <- rdU normal (3 * i31)
+          t184 <- rdU normal ((3 * i31) + 1)
+          t185 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t181 <- rdU axis (3 * i31)
-          t182 <- rdU axis ((3 * i31) + 1)
-          t183 <- rdU axis ((3 * i31) + 2)
-          let !s184 = ((t179 * t183) - (t180 * t182))
-          let !s185 = ((t180 * t181) - (t178 * t183))
-          let !s186 = ((t178 * t182) - (t179 * t181))
+          t186 <- rdU axis (3 * i31)
+          t187 <- rdU axis ((3 * i31) + 1)
+          t188 <- rdU axis ((3 * i31) + 2)
+          let !s189 = ((t184 * t188) - (t185 * t187))
+          let !s190 = ((t185 * t186) - (t183 * t188))
+          let !s191 = ((t183 * t187) - (t184 * t186))
           chkI scalars (6 * i31) 0 0
-          t187 <- rdU scalars (6 * i31)
-          t188 <- rdU scalars ((6 * i31) + 5)
-          t189 <- rdU scalars ((6 * i31) + 2)
-          t190 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t173)) 0 29
-          wrU contacts (30 * (truncate t173)) d31
-          wrU contacts ((30 * (truncate t173)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t173)) + 2) d31
-          wrU contacts ((30 * (truncate t173)) + 3) 9.0
-          let !t191 = (if s171 > 0 then (recip (if (s171 - 1.0e-300) > 0 then s171 else 1.0e-300)) else 0.0)
-          let !t192 = (t191 * s169)
-          wrU contacts ((30 * (truncate t173)) + 4) (t192 + (negate (((t178 * t192) + (t180 * (t191 * s170))) * t178)))
-          wrU contacts ((30 * (truncate t173)) + 5) (negate (((t178 * t192) + (t180 * (t191 * s170))) * t179))
-          let !t193 = (t191 * s170)
-          wrU contacts ((30 * (truncate t173)) + 6) (t193 + (negate (((t178 * t192) + (t180 * t193)) * t180)))
-          let !t194 = (t166 + (negate t176))
-          wrU contacts ((30 * (truncate t173)) + 7) ((((t194 * t193) * t178) + ((((t167 + (negate t177)) * t192) - ((t165 + (negate t175)) * t193)) * t179)) + ((negate (t194 * t192)) * t180))
-          let !t195 = (t179 * t193)
-          wrU contacts ((30 * (truncate t173)) + 12) (t195 + (negate ((((t178 * t195) + (t179 * ((t180 * t192) - (t178 * t193)))) + (t180 * (negate (t179 * t192)))) * t178)))
-          let !t196 = ((t180 * t192) - (t178 * t193))
-          wrU contacts ((30 * (truncate t173)) + 13) (t196 + (negate ((((t178 * t195) + (t179 * t196)) + (t180 * (negate (t179 * t192)))) * t179)))
-          let !t197 = (negate (t179 * t192))
-          wrU contacts ((30 * (truncate t173)) + 14) (t197 + (negate ((((t178 * t195) + (t179 * t196)) + (t180 * t197)) * t180)))
-          let !t198 = (t167 + (negate t177))
-          let !t199 = (t165 + (negate t175))
-          wrU contacts ((30 * (truncate t173)) + 15) (((((t194 * t197) - (t198 * t196)) * t178) + (((t198 * t195) - (t199 * t197)) * t179)) + (((t199 * t196) - (t194 * t195)) * t180))
-          wrU contacts ((30 * (truncate t173)) + 20) (if s171 > 0 then ((negate s172) / (if (s171 - 1.0e-300) > 0 then s171 else 1.0e-300)) else 0.0)
-          wrU contacts ((30 * (truncate t173)) + 26) 1.0
-          wrU contacts ((30 * (truncate t173)) + 27) t165
-          wrU contacts ((30 * (truncate t173)) + 28) t166
-          wrU contacts ((30 * (truncate t173)) + 29) t167
+          t192 <- rdU scalars (6 * i31)
+          t193 <- rdU scalars ((6 * i31) + 5)
+          t194 <- rdU scalars ((6 * i31) + 2)
+          t195 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t178)) 0 29
+          wrU contacts (30 * (truncate t178)) d31
+          wrU contacts ((30 * (truncate t178)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t178)) + 2) d31
+          wrU contacts ((30 * (truncate t178)) + 3) 9.0
+          let !t196 = (if s176 > 0 then (recip (if (s176 - 1.0e-300) > 0 then s176 else 1.0e-300)) else 0.0)
+          let !t197 = (t196 * s174)
+          wrU contacts ((30 * (truncate t178)) + 4) (t197 + (negate (((t183 * t197) + (t185 * (t196 * s175))) * t183)))
+          wrU contacts ((30 * (truncate t178)) + 5) (negate (((t183 * t197) + (t185 * (t196 * s175))) * t184))
+          let !t198 = (t196 * s175)
+          wrU contacts ((30 * (truncate t178)) + 6) (t198 + (negate (((t183 * t197) + (t185 * t198)) * t185)))
+          let !t199 = (t171 + (negate t181))
+          wrU contacts ((30 * (truncate t178)) + 7) ((((t199 * t198) * t183) + ((((t172 + (negate t182)) * t197) - ((t170 + (negate t180)) * t198)) * t184)) + ((negate (t199 * t197)) * t185))
+          let !t200 = (t184 * t198)
+          wrU contacts ((30 * (truncate t178)) + 12) (t200 + (negate ((((t183 * t200) + (t184 * ((t185 * t197) - (t183 * t198)))) + (t185 * (negate (t184 * t197)))) * t183)))
+          let !t201 = ((t185 * t197) - (t183 * t198))
+          wrU contacts ((30 * (truncate t178)) + 13) (t201 + (negate ((((t183 * t200) + (t184 * t201)) + (t185 * (negate (t184 * t197)))) * t184)))
+          let !t202 = (negate (t184 * t197))
+          wrU contacts ((30 * (truncate t178)) + 14) (t202 + (negate ((((t183 * t200) + (t184 * t201)) + (t185 * t202)) * t185)))
+          let !t203 = (t172 + (negate t182))
+          let !t204 = (t170 + (negate t180))
+          wrU contacts ((30 * (truncate t178)) + 15) (((((t199 * t202) - (t203 * t201)) * t183) + (((t203 * t200) - (t204 * t202)) * t184)) + (((t204 * t201) - (t199 * t200)) * t185))
+          wrU contacts ((30 * (truncate t178)) + 20) (if s176 > 0 then ((negate s177) / (if (s176 - 1.0e-300) > 0 then s176 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t178)) + 26) 1.0
+          wrU contacts ((30 * (truncate t178)) + 27) t170
+          wrU contacts ((30 * (truncate t178)) + 28) t171
+          wrU contacts ((30 * (truncate t178)) + 29) t172
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t200 <- rdU pos (-3)
-            t201 <- rdU pos (-2)
-            t202 <- rdU pos (-1)
+            t205 <- rdU pos (-3)
+            t206 <- rdU pos (-2)
+            t207 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t203 <- rdU normal (-3)
-            t204 <- rdU normal (-2)
-            t205 <- rdU normal (-1)
+            t208 <- rdU normal (-3)
+            t209 <- rdU normal (-2)
+            t210 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t206 <- rdU axis (-3)
-            t207 <- rdU axis (-2)
-            t208 <- rdU axis (-1)
-            let !s209 = ((t204 * t208) - (t205 * t207))
-            let !s210 = ((t205 * t206) - (t203 * t208))
-            let !s211 = ((t203 * t207) - (t204 * t206))
+            t211 <- rdU axis (-3)
+            t212 <- rdU axis (-2)
+            t213 <- rdU axis (-1)
+            let !s214 = ((t209 * t213) - (t210 * t212))
+            let !s215 = ((t210 * t211) - (t208 * t213))
+            let !s216 = ((t208 * t212) - (t209 * t211))
             chkI scalars 0 (-6) (-1)
-            t212 <- rdU scalars (-6)
-            t213 <- rdU scalars (-1)
-            t214 <- rdU scalars (-4)
-            t215 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t173)) + 8) (t192 + (negate (((t203 * t192) + (t205 * t193)) * t203)))
-            wrU contacts ((30 * (truncate t173)) + 9) (negate (((t203 * t192) + (t205 * t193)) * t204))
-            wrU contacts ((30 * (truncate t173)) + 10) (t193 + (negate (((t203 * t192) + (t205 * t193)) * t205)))
-            let !t216 = (t166 + (negate t201))
-            wrU contacts ((30 * (truncate t173)) + 11) ((((t216 * t193) * t203) + ((((t167 + (negate t202)) * t192) - ((t165 + (negate t200)) * t193)) * t204)) + ((negate (t216 * t192)) * t205))
-            wrU contacts ((30 * (truncate t173)) + 16) (t195 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t203)))
-            wrU contacts ((30 * (truncate t173)) + 17) (t196 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t204)))
-            wrU contacts ((30 * (truncate t173)) + 18) (t197 + (negate ((((t203 * t195) + (t204 * t196)) + (t205 * t197)) * t205)))
-            let !t217 = (t167 + (negate t202))
-            let !t218 = (t165 + (negate t200))
-            wrU contacts ((30 * (truncate t173)) + 19) (((((t216 * t197) - (t217 * t196)) * t203) + (((t217 * t195) - (t218 * t197)) * t204)) + (((t218 * t196) - (t216 * t195)) * t205))
+            t217 <- rdU scalars (-6)
+            t218 <- rdU scalars (-1)
+            t219 <- rdU scalars (-4)
+            t220 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t178)) + 8) (t197 + (negate (((t208 * t197) + (t210 * t198)) * t208)))
+            wrU contacts ((30 * (truncate t178)) + 9) (negate (((t208 * t197) + (t210 * t198)) * t209))
+            wrU contacts ((30 * (truncate t178)) + 10) (t198 + (negate (((t208 * t197) + (t210 * t198)) * t210)))
+            let !t221 = (t171 + (negate t206))
+            wrU contacts ((30 * (truncate t178)) + 11) ((((t221 * t198) * t208) + ((((t172 + (negate t207)) * t197) - ((t170 + (negate t205)) * t198)) * t209)) + ((negate (t221 * t197)) * t210))
+            wrU contacts ((30 * (truncate t178)) + 16) (t200 + (negate ((((t208 * t200) + (t209 * t201)) + (t210 * t202)) * t208)))
+            wrU contacts ((30 * (truncate t178)) + 17) (t201 + (negate ((((t208 * t200) + (t209 * t201)) + (t210 * t202)) * t209)))
+            wrU contacts ((30 * (truncate t178)) + 18) (t202 + (negate ((((t208 * t200) + (t209 * t201)) + (t210 * t202)) * t210)))
+            let !t222 = (t172 + (negate t207))
+            let !t223 = (t170 + (negate t205))
+            wrU contacts ((30 * (truncate t178)) + 19) (((((t221 * t202) - (t222 * t201)) * t208) + (((t222 * t200) - (t223 * t202)) * t209)) + (((t223 * t201) - (t221 * t200)) * t210))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t173)) + 8) 0.0
-            wrU contacts ((30 * (truncate t173)) + 9) 0.0
-            wrU contacts ((30 * (truncate t173)) + 10) 0.0
-            wrU contacts ((30 * (truncate t173)) + 11) 0.0
-            wrU contacts ((30 * (truncate t173)) + 16) 0.0
-            wrU contacts ((30 * (truncate t173)) + 17) 0.0
-            wrU contacts ((30 * (truncate t173)) + 18) 0.0
-            wrU contacts ((30 * (truncate t173)) + 19) 0.0
+            wrU contacts ((30 * (truncate t178)) + 8) 0.0
+            wrU contacts ((30 * (truncate t178)) + 9) 0.0
+            wrU contacts ((30 * (truncate t178)) + 10) 0.0
+            wrU contacts ((30 * (truncate t178)) + 11) 0.0
+            wrU contacts ((30 * (truncate t178)) + 16) 0.0
+            wrU contacts ((30 * (truncate t178)) + 17) 0.0
+            wrU contacts ((30 * (truncate t178)) + 18) 0.0
+            wrU contacts ((30 * (truncate t178)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t219 <- rdU meta 6
-          wrU meta 6 (t219 + 1.0)
+          t224 <- rdU meta 6
+          wrU meta 6 (t224 + 1.0)
           pure ()
         pure ()
       else do
@@ -499,132 +511,132 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     else do
       pure ()
     chkI verts (291 * i31) 0 2
-    t220 <- rdU verts (291 * i31)
-    t221 <- rdU verts ((291 * i31) + 1)
-    t222 <- rdU verts ((291 * i31) + 2)
-    v223 <- newR 1.0
-    loopI 0.0 24.0 $ \i224 -> do
-      let !d224 = fromIntegral i224 :: Double
-      chkI verts ((12 * i224) + (291 * i31)) 12 14
-      t225 <- rdU verts (((12 * i224) + (291 * i31)) + 12)
-      t226 <- rdU verts (((12 * i224) + (291 * i31)) + 13)
-      t227 <- rdU verts (((12 * i224) + (291 * i31)) + 14)
-      chkI radii (i224 + (24 * i31)) 0 0
-      t228 <- rdU radii (i224 + (24 * i31))
-      t229 <- getR v223
-      let !t230 = (t225 + (negate t220))
-      let !t231 = (t226 + (negate t221))
-      let !t232 = (t227 + (negate t222))
-      let !t233 = (if t228 > 0 then ((sqrt (((t230 * t230) + (t231 * t231)) + (t232 * t232))) / t228) else 1.0)
-      setR v223 (if (t229 - t233) > 0 then t233 else t229)
+    t225 <- rdU verts (291 * i31)
+    t226 <- rdU verts ((291 * i31) + 1)
+    t227 <- rdU verts ((291 * i31) + 2)
+    v228 <- newR 1.0
+    loopI 0.0 24.0 $ \i229 -> do
+      let !d229 = fromIntegral i229 :: Double
+      chkI verts ((12 * i229) + (291 * i31)) 12 14
+      t230 <- rdU verts (((12 * i229) + (291 * i31)) + 12)
+      t231 <- rdU verts (((12 * i229) + (291 * i31)) + 13)
+      t232 <- rdU verts (((12 * i229) + (291 * i31)) + 14)
+      chkI radii (i229 + (24 * i31)) 0 0
+      t233 <- rdU radii (i229 + (24 * i31))
+      t234 <- getR v228
+      let !t235 = (t230 + (negate t225))
+      let !t236 = (t231 + (negate t226))
+      let !t237 = (t232 + (negate t227))
+      let !t238 = (if t233 > 0 then ((sqrt (((t235 * t235) + (t236 * t236)) + (t237 * t237))) / t233) else 1.0)
+      setR v228 (if (t234 - t238) > 0 then t238 else t234)
       pure ()
-    t234 <- getR v223
-    if (0.8 - t234) > 0 then do
-      v235 <- newR 0.0
-      v236 <- newR 0.0
-      v237 <- newR 0.0
-      v238 <- newR 0.0
-      v239 <- newR 0.0
+    t239 <- getR v228
+    if (0.8 - t239) > 0 then do
       v240 <- newR 0.0
       v241 <- newR 0.0
-      loopI 0.0 24.0 $ \i242 -> do
-        let !d242 = fromIntegral i242 :: Double
-        chkI radii (i242 + (24 * i31)) 0 0
-        t243 <- rdU radii (i242 + (24 * i31))
-        loopI 6.0 12.0 $ \i244 -> do
-          let !d244 = fromIntegral i244 :: Double
-          let !t245 = (d242 + d244)
-          chkI radii (truncate ((24.0 * d31) + (t245 - (24.0 * (floorF (t245 / 24.0)))))) 0 0
-          t246 <- rdU radii (truncate ((24.0 * d31) + (t245 - (24.0 * (floorF (t245 / 24.0))))))
-          loopI 1.0 4.0 $ \i247 -> do
-            let !d247 = fromIntegral i247 :: Double
-            chkI verts ((12 * i242) + (3 * i247) + (291 * i31)) 0 5
-            t248 <- rdU verts ((12 * i242) + (3 * i247) + (291 * i31))
-            t249 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 1)
-            t250 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 2)
-            t251 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 3)
-            t252 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 4)
-            t253 <- rdU verts (((12 * i242) + (3 * i247) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i254 -> do
-              let !d254 = fromIntegral i254 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0)))) 0 0
-              t255 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 1.0)) 0 0
-              t256 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 2.0)) 0 0
-              t257 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + (d254 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254))) 0 0
-              t258 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 1.0)) 0 0
-              t259 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 2.0)) 0 0
-              t260 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)) + d254)) + 2.0))
-              t261 <- getR v235
-              let !t262 = (negate t255)
-              let !t263 = (t258 + t262)
-              let !t264 = (negate t256)
-              let !t265 = (t259 + t264)
-              let !t266 = (negate t257)
-              let !t267 = (t260 + t266)
-              let !t268 = (((t263 * t263) + (t265 * t265)) + (t267 * t267))
-              let !t269 = (t251 + (negate t248))
-              let !t270 = (t252 + (negate t249))
-              let !t271 = (t253 + (negate t250))
-              let !t272 = (((t269 * t263) + (t270 * t265)) + (t271 * t267))
-              let !t273 = (((t269 * t269) + (t270 * t270)) + (t271 * t271))
-              let !t274 = ((t273 * t268) - (t272 * t272))
-              let !t275 = (t248 + t262)
-              let !t276 = (t249 + t264)
-              let !t277 = (t250 + t266)
-              let !t278 = (((t263 * t275) + (t265 * t276)) + (t267 * t277))
-              let !t279 = (((t269 * t275) + (t270 * t276)) + (t271 * t277))
-              let !t280 = (if ((abs t274) - 1.0e-300) > 0 then (((t272 * t278) - (t279 * t268)) / t274) else 0.0)
-              let !t281 = (if (t280 - 1.0) > 0 then 1.0 else t280)
-              let !t282 = (if (t274 - ((1.0e-12 * t273) * t268)) > 0 then (if (negate t281) > 0 then 0.0 else t281) else 0.0)
-              let !t283 = (if ((abs t268) - 1.0e-300) > 0 then (((t272 * t282) + t278) / t268) else 0.0)
-              let !t284 = ((abs t273) - 1.0e-300)
-              let !t285 = (if t284 > 0 then ((negate t279) / t273) else 0.0)
+      v242 <- newR 0.0
+      v243 <- newR 0.0
+      v244 <- newR 0.0
+      v245 <- newR 0.0
+      v246 <- newR 0.0
+      loopI 0.0 24.0 $ \i247 -> do
+        let !d247 = fromIntegral i247 :: Double
+        chkI radii (i247 + (24 * i31)) 0 0
+        t248 <- rdU radii (i247 + (24 * i31))
+        loopI 6.0 12.0 $ \i249 -> do
+          let !d249 = fromIntegral i249 :: Double
+          let !t250 = (d247 + d249)
+          chkI radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0)))))) 0 0
+          t251 <- rdU radii (truncate ((24.0 * d31) + (t250 - (24.0 * (floorF (t250 / 24.0))))))
+          loopI 1.0 4.0 $ \i252 -> do
+            let !d252 = fromIntegral i252 :: Double
+            chkI verts ((12 * i247) + (3 * i252) + (291 * i31)) 0 5
+            t253 <- rdU verts ((12 * i247) + (3 * i252) + (291 * i31))
+            t254 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 1)
+            t255 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 2)
+            t256 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 3)
+            t257 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 4)
+            t258 <- rdU verts (((12 * i247) + (3 * i252) + (291 * i31)) + 5)
+            loopI 1.0 4.0 $ \i259 -> do
+              let !d259 = fromIntegral i259 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0)))) 0 0
+              t260 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0)) 0 0
+              t261 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0)) 0 0
+              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + (d259 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259))) 0 0
+              t263 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0)) 0 0
+              t264 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0)) 0 0
+              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)) + d259)) + 2.0))
+              t266 <- getR v240
+              let !t267 = (negate t260)
+              let !t268 = (t263 + t267)
+              let !t269 = (negate t261)
+              let !t270 = (t264 + t269)
+              let !t271 = (negate t262)
+              let !t272 = (t265 + t271)
+              let !t273 = (((t268 * t268) + (t270 * t270)) + (t272 * t272))
+              let !t274 = (t256 + (negate t253))
+              let !t275 = (t257 + (negate t254))
+              let !t276 = (t258 + (negate t255))
+              let !t277 = (((t274 * t268) + (t275 * t270)) + (t276 * t272))
+              let !t278 = (((t274 * t274) + (t275 * t275)) + (t276 * t276))
+              let !t279 = ((t278 * t273) - (t277 * t277))
+              let !t280 = (t253 + t267)
+              let !t281 = (t254 + t269)
+              let !t282 = (t255 + t271)
+              let !t283 = (((t268 * t280) + (t270 * t281)) + (t272 * t282))
+              let !t284 = (((t274 * t280) + (t275 * t281)) + (t276 * t282))
+              let !t285 = (if ((abs t279) - 1.0e-300) > 0 then (((t277 * t283) - (t284 * t273)) / t279) else 0.0)
               let !t286 = (if (t285 - 1.0) > 0 then 1.0 else t285)
-              let !t287 = (t283 - 1.0)
-              let !t288 = (if t284 > 0 then ((t272 - t279) / t273) else 0.0)
-              let !t289 = (if (t288 - 1.0) > 0 then 1.0 else t288)
-              let !t290 = (if (negate t283) > 0 then (if (negate t286) > 0 then 0.0 else t286) else (if t287 > 0 then (if (negate t289) > 0 then 0.0 else t289) else t282))
-              let !t291 = (if t287 > 0 then 1.0 else t283)
-              let !t292 = (if (negate t291) > 0 then 0.0 else t291)
-              let !t293 = ((0.5 * ((t243 - ((t243 * (d247 + t290)) / 4.0)) + (t246 - ((t246 * (d254 + t292)) / 4.0)))) - t261)
-              let !t294 = ((t248 + (t290 * t269)) + (negate (t255 + (t292 * t263))))
-              let !t295 = ((t249 + (t290 * t270)) + (negate (t256 + (t292 * t265))))
-              let !t296 = ((t250 + (t290 * t271)) + (negate (t257 + (t292 * t267))))
-              let !t297 = ((0.3 * ((if (t246 - t243) > 0 then t243 else t246) / 4.0)) - (sqrt (((t294 * t294) + (t295 * t295)) + (t296 * t296))))
-              if (if (t293 - t297) > 0 then t297 else t293) > 0 then do
-                setR v235 (0.5 * ((t243 - ((t243 * (d247 + t290)) / 4.0)) + (t246 - ((t246 * (d254 + t292)) / 4.0))))
-                chkI verts ((12 * i242) + (291 * i31)) 3 5
-                t298 <- rdU verts (((12 * i242) + (291 * i31)) + 3)
-                t299 <- rdU verts (((12 * i242) + (291 * i31)) + 4)
-                t300 <- rdU verts (((12 * i242) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0)))) 0 0
-                t301 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t302 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t303 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t245 - (24.0 * (floorF (t245 / 24.0)))) * 4.0))) + 2.0))
-                setR v236 (t248 + (t290 * t269))
-                setR v237 (t249 + (t290 * t270))
-                setR v238 (t250 + (t290 * t271))
-                let !t304 = (negate t220)
-                let !t305 = (t298 + t304)
-                let !t306 = (negate t221)
-                let !t307 = (t299 + t306)
-                let !t308 = (negate t222)
-                let !t309 = (t300 + t308)
-                let !t310 = (sqrt (((t305 * t305) + (t307 * t307)) + (t309 * t309)))
-                let !t311 = (t301 + t304)
-                let !t312 = (t302 + t306)
-                let !t313 = (t303 + t308)
-                let !t314 = (sqrt (((t311 * t311) + (t312 * t312)) + (t313 * t313)))
-                setR v239 (negate (((if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0) * t305) + ((if t314 > 0 then (recip (if (t314 - 1.0e-300) > 0 then t314 else 1.0e-300)) else 0.0) * t311)))
-                setR v240 (negate (((if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0) * t307) + ((if t314 > 0 then (recip (if (t314 - 1.0e-300) > 0 then t314 else 1.0e-300)) else 0.0) * t312)))
-                setR v241 (negate (((if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0) * t309) + ((if t314 > 0 then (recip (if (t314 - 1.0e-300) > 0 then t314 else 1.0e-300)) else 0.0) * t313)))
+              let !t287 = (if (t279 - ((1.0e-12 * t278) * t273)) > 0 then (if (negate t286) > 0 then 0.0 else t286) else 0.0)
+              let !t288 = (if ((abs t273) - 1.0e-300) > 0 then (((t277 * t287) + t283) / t273) else 0.0)
+              let !t289 = ((abs t278) - 1.0e-300)
+              let !t290 = (if t289 > 0 then ((negate t284) / t278) else 0.0)
+              let !t291 = (if (t290 - 1.0) > 0 then 1.0 else t290)
+              let !t292 = (t288 - 1.0)
+              let !t293 = (if t289 > 0 then ((t277 - t284) / t278) else 0.0)
+              let !t294 = (if (t293 - 1.0) > 0 then 1.0 else t293)
+              let !t295 = (if (negate t288) > 0 then (if (negate t291) > 0 then 0.0 else t291) else (if t292 > 0 then (if (negate t294) > 0 then 0.0 else t294) else t287))
+              let !t296 = (if t292 > 0 then 1.0 else t288)
+              let !t297 = (if (negate t296) > 0 then 0.0 else t296)
+              let !t298 = ((0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0)))) - t266)
+              let !t299 = ((t253 + (t295 * t274)) + (negate (t260 + (t297 * t268))))
+              let !t300 = ((t254 + (t295 * t275)) + (negate (t261 + (t297 * t270))))
+              let !t301 = ((t255 + (t295 * t276)) + (negate (t262 + (t297 * t272))))
+              let !t302 = ((0.3 * ((if (t251 - t248) > 0 then t248 else t251) / 4.0)) - (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301))))
+              if (if (t298 - t302) > 0 then t302 else t298) > 0 then do
+                setR v240 (0.5 * ((t248 - ((t248 * (d252 + t295)) / 4.0)) + (t251 - ((t251 * (d259 + t297)) / 4.0))))
+                chkI verts ((12 * i247) + (291 * i31)) 3 5
+                t303 <- rdU verts (((12 * i247) + (291 * i31)) + 3)
+                t304 <- rdU verts (((12 * i247) + (291 * i31)) + 4)
+                t305 <- rdU verts (((12 * i247) + (291 * i31)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0)))) 0 0
+                t306 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t307 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t308 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t250 - (24.0 * (floorF (t250 / 24.0)))) * 4.0))) + 2.0))
+                setR v241 (t253 + (t295 * t274))
+                setR v242 (t254 + (t295 * t275))
+                setR v243 (t255 + (t295 * t276))
+                let !t309 = (negate t225)
+                let !t310 = (t303 + t309)
+                let !t311 = (negate t226)
+                let !t312 = (t304 + t311)
+                let !t313 = (negate t227)
+                let !t314 = (t305 + t313)
+                let !t315 = (sqrt (((t310 * t310) + (t312 * t312)) + (t314 * t314)))
+                let !t316 = (t306 + t309)
+                let !t317 = (t307 + t311)
+                let !t318 = (t308 + t313)
+                let !t319 = (sqrt (((t316 * t316) + (t317 * t317)) + (t318 * t318)))
+                setR v244 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t310) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t316)))
+                setR v245 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t312) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t317)))
+                setR v246 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t314) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t318)))
                 pure ()
               else do
                 pure ()
@@ -632,111 +644,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t315 <- getR v235
-      if t315 > 0 then do
-        t316 <- getR v236
-        t317 <- getR v237
-        t318 <- getR v238
-        t319 <- getR v239
-        t320 <- getR v240
+      t320 <- getR v240
+      if t320 > 0 then do
         t321 <- getR v241
-        let !t322 = (t320 + (negate t320))
-        let !t323 = (sqrt (((t319 * t319) + (t322 * t322)) + (t321 * t321)))
-        let !t324 = (if t323 > 0 then (recip (if (t323 - 1.0e-300) > 0 then t323 else 1.0e-300)) else 0.0)
-        let !s325 = (t324 * t319)
-        let !s326 = (t324 * t322)
-        let !s327 = (t324 * t321)
-        t328 <- rdU meta 2
-        t329 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t329) > 0 then 1.0 else t329)) - t328) - 0.5) > 0 then do
-          wrU meta 2 (t328 + 1.0)
-          t330 <- rdU pos (3 * i31)
-          t331 <- rdU pos ((3 * i31) + 1)
-          t332 <- rdU pos ((3 * i31) + 2)
-          t333 <- rdU normal (3 * i31)
-          t334 <- rdU normal ((3 * i31) + 1)
-          t335 <- rdU normal ((3 * i31) + 2)
+        t322 <- getR v242
+        t323 <- getR v243
+        t324 <- getR v244
+        t325 <- getR v245
+        t326 <- getR v246
+        let !t327 = (t325 + (negate t325))
+        let !t328 = (sqrt (((t324 * t324) + (t327 * t327)) + (t326 * t326)))
+        let !t329 = (if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0)
+        let !s330 = (t329 * t324)
+        let !s331 = (t329 * t327)
+        let !s332 = (t329 * t326)
+        t333 <- rdU meta 2
+        t334 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t334) > 0 then 1.0 else t334)) - t333) - 0.5) > 0 then do
+          wrU meta 2 (t333 + 1.0)
+          t335 <- rdU pos (3 * i31)
+          t336 <- rdU pos ((3 * i31) + 1)
+          t337 <- rdU pos ((3 * i31) + 2)
+          t338 <- rdU normal (3 * i31)
+          t339 <- rdU normal ((3 * i31) + 1)
+          t340 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t336 <- rdU axis (3 * i31)
-          t337 <- rdU axis ((3 * i31) + 1)
-          t338 <- rdU axis ((3 * i31) + 2)
-          let !s339 = ((t334 * t338) - (t335 * t337))
-          let !s340 = ((t335 * t336) - (t333 * t338))
-          let !s341 = ((t333 * t337) - (t334 * t336))
+          t341 <- rdU axis (3 * i31)
+          t342 <- rdU axis ((3 * i31) + 1)
+          t343 <- rdU axis ((3 * i31) + 2)
+          let !s344 = ((t339 * t343) - (t340 * t342))
+          let !s345 = ((t340 * t341) - (t338 * t343))
+          let !s346 = ((t338 * t342) - (t339 * t341))
           chkI scalars (6 * i31) 0 0
-          t342 <- rdU scalars (6 * i31)
-          t343 <- rdU scalars ((6 * i31) + 5)
-          t344 <- rdU scalars ((6 * i31) + 2)
-          t345 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t328)) 0 29
-          wrU contacts (30 * (truncate t328)) d31
-          wrU contacts ((30 * (truncate t328)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t328)) + 2) d31
-          wrU contacts ((30 * (truncate t328)) + 3) 12.0
-          wrU contacts ((30 * (truncate t328)) + 4) (s325 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t333)))
-          wrU contacts ((30 * (truncate t328)) + 5) (s326 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t334)))
-          wrU contacts ((30 * (truncate t328)) + 6) (s327 + (negate ((((t333 * s325) + (t334 * s326)) + (t335 * s327)) * t335)))
-          wrU contacts ((30 * (truncate t328)) + 7) 0.0
-          wrU contacts ((30 * (truncate t328)) + 12) 0.0
-          wrU contacts ((30 * (truncate t328)) + 13) 0.0
-          wrU contacts ((30 * (truncate t328)) + 14) 0.0
-          wrU contacts ((30 * (truncate t328)) + 15) 0.0
-          wrU contacts ((30 * (truncate t328)) + 20) t315
-          wrU contacts ((30 * (truncate t328)) + 26) 0.6
-          wrU contacts ((30 * (truncate t328)) + 27) t316
-          wrU contacts ((30 * (truncate t328)) + 28) t317
-          wrU contacts ((30 * (truncate t328)) + 29) t318
+          t347 <- rdU scalars (6 * i31)
+          t348 <- rdU scalars ((6 * i31) + 5)
+          t349 <- rdU scalars ((6 * i31) + 2)
+          t350 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t333)) 0 29
+          wrU contacts (30 * (truncate t333)) d31
+          wrU contacts ((30 * (truncate t333)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t333)) + 2) d31
+          wrU contacts ((30 * (truncate t333)) + 3) 12.0
+          wrU contacts ((30 * (truncate t333)) + 4) (s330 + (negate ((((t338 * s330) + (t339 * s331)) + (t340 * s332)) * t338)))
+          wrU contacts ((30 * (truncate t333)) + 5) (s331 + (negate ((((t338 * s330) + (t339 * s331)) + (t340 * s332)) * t339)))
+          wrU contacts ((30 * (truncate t333)) + 6) (s332 + (negate ((((t338 * s330) + (t339 * s331)) + (t340 * s332)) * t340)))
+          wrU contacts ((30 * (truncate t333)) + 7) 0.0
+          wrU contacts ((30 * (truncate t333)) + 12) 0.0
+          wrU contacts ((30 * (truncate t333)) + 13) 0.0
+          wrU contacts ((30 * (truncate t333)) + 14) 0.0
+          wrU contacts ((30 * (truncate t333)) + 15) 0.0
+          wrU contacts ((30 * (truncate t333)) + 20) t320
+          wrU contacts ((30 * (truncate t333)) + 26) 0.6
+          wrU contacts ((30 * (truncate t333)) + 27) t321
+          wrU contacts ((30 * (truncate t333)) + 28) t322
+          wrU contacts ((30 * (truncate t333)) + 29) t323
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t346 <- rdU pos (-3)
-            t347 <- rdU pos (-2)
-            t348 <- rdU pos (-1)
+            t351 <- rdU pos (-3)
+            t352 <- rdU pos (-2)
+            t353 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t349 <- rdU normal (-3)
-            t350 <- rdU normal (-2)
-            t351 <- rdU normal (-1)
+            t354 <- rdU normal (-3)
+            t355 <- rdU normal (-2)
+            t356 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t352 <- rdU axis (-3)
-            t353 <- rdU axis (-2)
-            t354 <- rdU axis (-1)
-            let !s355 = ((t350 * t354) - (t351 * t353))
-            let !s356 = ((t351 * t352) - (t349 * t354))
-            let !s357 = ((t349 * t353) - (t350 * t352))
+            t357 <- rdU axis (-3)
+            t358 <- rdU axis (-2)
+            t359 <- rdU axis (-1)
+            let !s360 = ((t355 * t359) - (t356 * t358))
+            let !s361 = ((t356 * t357) - (t354 * t359))
+            let !s362 = ((t354 * t358) - (t355 * t357))
             chkI scalars 0 (-6) (-1)
-            t358 <- rdU scalars (-6)
-            t359 <- rdU scalars (-1)
-            t360 <- rdU scalars (-4)
-            t361 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t328)) + 8) (s325 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t349)))
-            wrU contacts ((30 * (truncate t328)) + 9) (s326 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t350)))
-            wrU contacts ((30 * (truncate t328)) + 10) (s327 + (negate ((((t349 * s325) + (t350 * s326)) + (t351 * s327)) * t351)))
-            let !t362 = (t317 + (negate t347))
-            let !t363 = (t318 + (negate t348))
-            let !t364 = (t316 + (negate t346))
-            wrU contacts ((30 * (truncate t328)) + 11) (((((t362 * s327) - (t363 * s326)) * t349) + (((t363 * s325) - (t364 * s327)) * t350)) + (((t364 * s326) - (t362 * s325)) * t351))
-            let !t365 = ((t334 * s327) - (t335 * s326))
-            wrU contacts ((30 * (truncate t328)) + 16) (t365 + (negate ((((t349 * t365) + (t350 * ((t335 * s325) - (t333 * s327)))) + (t351 * ((t333 * s326) - (t334 * s325)))) * t349)))
-            let !t366 = ((t335 * s325) - (t333 * s327))
-            wrU contacts ((30 * (truncate t328)) + 17) (t366 + (negate ((((t349 * t365) + (t350 * t366)) + (t351 * ((t333 * s326) - (t334 * s325)))) * t350)))
-            let !t367 = ((t333 * s326) - (t334 * s325))
-            wrU contacts ((30 * (truncate t328)) + 18) (t367 + (negate ((((t349 * t365) + (t350 * t366)) + (t351 * t367)) * t351)))
-            wrU contacts ((30 * (truncate t328)) + 19) (((((t362 * t367) - (t363 * t366)) * t349) + (((t363 * t365) - (t364 * t367)) * t350)) + (((t364 * t366) - (t362 * t365)) * t351))
+            t363 <- rdU scalars (-6)
+            t364 <- rdU scalars (-1)
+            t365 <- rdU scalars (-4)
+            t366 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t333)) + 8) (s330 + (negate ((((t354 * s330) + (t355 * s331)) + (t356 * s332)) * t354)))
+            wrU contacts ((30 * (truncate t333)) + 9) (s331 + (negate ((((t354 * s330) + (t355 * s331)) + (t356 * s332)) * t355)))
+            wrU contacts ((30 * (truncate t333)) + 10) (s332 + (negate ((((t354 * s330) + (t355 * s331)) + (t356 * s332)) * t356)))
+            let !t367 = (t322 + (negate t352))
+            let !t368 = (t323 + (negate t353))
+            let !t369 = (t321 + (negate t351))
+            wrU contacts ((30 * (truncate t333)) + 11) (((((t367 * s332) - (t368 * s331)) * t354) + (((t368 * s330) - (t369 * s332)) * t355)) + (((t369 * s331) - (t367 * s330)) * t356))
+            let !t370 = ((t339 * s332) - (t340 * s331))
+            wrU contacts ((30 * (truncate t333)) + 16) (t370 + (negate ((((t354 * t370) + (t355 * ((t340 * s330) - (t338 * s332)))) + (t356 * ((t338 * s331) - (t339 * s330)))) * t354)))
+            let !t371 = ((t340 * s330) - (t338 * s332))
+            wrU contacts ((30 * (truncate t333)) + 17) (t371 + (negate ((((t354 * t370) + (t355 * t371)) + (t356 * ((t338 * s331) - (t339 * s330)))) * t355)))
+            let !t372 = ((t338 * s331) - (t339 * s330))
+            wrU contacts ((30 * (truncate t333)) + 18) (t372 + (negate ((((t354 * t370) + (t355 * t371)) + (t356 * t372)) * t356)))
+            wrU contacts ((30 * (truncate t333)) + 19) (((((t367 * t372) - (t368 * t371)) * t354) + (((t368 * t370) - (t369 * t372)) * t355)) + (((t369 * t371) - (t367 * t370)) * t356))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t328)) + 8) 0.0
-            wrU contacts ((30 * (truncate t328)) + 9) 0.0
-            wrU contacts ((30 * (truncate t328)) + 10) 0.0
-            wrU contacts ((30 * (truncate t328)) + 11) 0.0
-            wrU contacts ((30 * (truncate t328)) + 16) 0.0
-            wrU contacts ((30 * (truncate t328)) + 17) 0.0
-            wrU contacts ((30 * (truncate t328)) + 18) 0.0
-            wrU contacts ((30 * (truncate t328)) + 19) 0.0
+            wrU contacts ((30 * (truncate t333)) + 8) 0.0
+            wrU contacts ((30 * (truncate t333)) + 9) 0.0
+            wrU contacts ((30 * (truncate t333)) + 10) 0.0
+            wrU contacts ((30 * (truncate t333)) + 11) 0.0
+            wrU contacts ((30 * (truncate t333)) + 16) 0.0
+            wrU contacts ((30 * (truncate t333)) + 17) 0.0
+            wrU contacts ((30 * (truncate t333)) + 18) 0.0
+            wrU contacts ((30 * (truncate t333)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t368 <- rdU meta 6
-          wrU meta 6 (t368 + 1.0)
+          t373 <- rdU meta 6
+          wrU meta 6 (t373 + 1.0)
           pure ()
         pure ()
       else do
@@ -747,8 +759,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1437,8 +1449,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1561,8 +1573,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do

@@ -22,13 +22,13 @@ compiled = CompiledStep "trumpet" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - Math.exp(y));\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, (-0.6), 0.0];\n}\n\nquotient NoQuotient\nbounds 4.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
   _ -> error "Manifold.Compiled.Trumpet: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -147,49 +147,54 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t35 <- rdU scalars ((6 * i31) + 5)
     t36 <- rdU scalars ((6 * i31) + 2)
     t37 <- rdU meta 5
-    t38 <- rdU meta 4
-    t39 <- rdU meta 5
-    let !s40 = (floorF (t32 / t39))
-    let !s41 = (floorF (t33 / t39))
-    let !s42 = (floorF (t34 / t39))
-    loopI 0.0 3.0 $ \i43 -> do
-      let !d43 = fromIntegral i43 :: Double
-      loopI 0.0 3.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        loopI 0.0 3.0 $ \i45 -> do
-          let !d45 = fromIntegral i45 :: Double
-          let !s46 = ((s40 + d43) - 1.0)
+    v38 <- newR 0.0
+    setR v38 0.0
+    t39 <- rdU meta 4
+    t40 <- rdU meta 5
+    let !s41 = (floorF (t32 / t40))
+    let !s42 = (floorF (t33 / t40))
+    let !s43 = (floorF (t34 / t40))
+    loopI 0.0 3.0 $ \i44 -> do
+      let !d44 = fromIntegral i44 :: Double
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
           let !s47 = ((s41 + d44) - 1.0)
           let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = (((((s46 + 131072.0) * 262144.0) + (s47 + 131072.0)) * 262144.0) + (s48 + 131072.0))
-          let !t50 = (((s46 * 7.3856093e7) + (s47 * 1.9349663e7)) + (s48 * 8.3492791e7))
-          let !s51 = (t50 - (t38 * (floorF (t50 / t38))))
-          chkI grid (truncate s51) 0 0
-          t52 <- rdU grid (truncate s51)
-          chkI grid ((truncate s51) + (truncate t38)) 0 0
-          t53 <- rdU grid ((truncate s51) + (truncate t38))
-          loopI t53 t52 $ \i54 -> do
-            let !d54 = fromIntegral i54 :: Double
-            chkI items i54 0 0
-            t55 <- rdU items i54
-            chkI cellOf (truncate t55) 0 0
-            t56 <- rdU cellOf (truncate t55)
-            if (0.5 - (abs (t56 - s49))) > 0 then do
-              if (t55 - d31) > 0 then do
-                chkI pos (3 * (truncate t55)) 0 2
-                t57 <- rdU pos (3 * (truncate t55))
-                t58 <- rdU pos ((3 * (truncate t55)) + 1)
-                t59 <- rdU pos ((3 * (truncate t55)) + 2)
-                chkI scalars (6 * (truncate t55)) 2 5
-                t60 <- rdU scalars ((6 * (truncate t55)) + 5)
-                t61 <- rdU scalars ((6 * (truncate t55)) + 2)
-                let !t62 = (t36 + t61)
-                let !t63 = (t32 + (negate t57))
-                let !t64 = (t33 + (negate t58))
-                let !t65 = (t34 + (negate t59))
-                let !t66 = ((t35 + t60) - (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65))))
-                if (if (t62 - t66) > 0 then t66 else t62) > 0 then do
-                  pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe ((t55 + 1.0) * 64.0) d31 t55 1.0 1.0 1.0 0.0 0.0 0.0
+          let !s49 = ((s43 + d46) - 1.0)
+          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
+          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
+          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
+          chkI grid (truncate s52) 0 0
+          t53 <- rdU grid (truncate s52)
+          chkI grid ((truncate s52) + (truncate t39)) 0 0
+          t54 <- rdU grid ((truncate s52) + (truncate t39))
+          loopI t54 t53 $ \i55 -> do
+            let !d55 = fromIntegral i55 :: Double
+            chkI items i55 0 0
+            t56 <- rdU items i55
+            chkI cellOf (truncate t56) 0 0
+            t57 <- rdU cellOf (truncate t56)
+            if (0.5 - (abs (t57 - s50))) > 0 then do
+              if (t56 - d31) > 0 then do
+                chkI pos (3 * (truncate t56)) 0 2
+                t58 <- rdU pos (3 * (truncate t56))
+                t59 <- rdU pos ((3 * (truncate t56)) + 1)
+                t60 <- rdU pos ((3 * (truncate t56)) + 2)
+                chkI scalars (6 * (truncate t56)) 2 5
+                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
+                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
+                let !t63 = (t36 + t62)
+                let !t64 = (t32 + (negate t58))
+                let !t65 = (t33 + (negate t59))
+                let !t66 = (t34 + (negate t60))
+                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
+                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
+                  t68 <- getR v38
+                  chkI near (truncate t68) 0 0
+                  wrU near (truncate t68) t56
+                  setR v38 (t68 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -203,133 +208,140 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    chkI verts (291 * i31) 0 2
-    t67 <- rdU verts (291 * i31)
-    t68 <- rdU verts ((291 * i31) + 1)
-    t69 <- rdU verts ((291 * i31) + 2)
-    v70 <- newR 1.0
-    loopI 0.0 24.0 $ \i71 -> do
-      let !d71 = fromIntegral i71 :: Double
-      chkI verts ((291 * i31) + (12 * i71)) 12 14
-      t72 <- rdU verts (((291 * i31) + (12 * i71)) + 12)
-      t73 <- rdU verts (((291 * i31) + (12 * i71)) + 13)
-      t74 <- rdU verts (((291 * i31) + (12 * i71)) + 14)
-      chkI radii ((24 * i31) + i71) 0 0
-      t75 <- rdU radii ((24 * i31) + i71)
-      t76 <- getR v70
-      let !t77 = (t72 + (negate t67))
-      let !t78 = (t73 + (negate t68))
-      let !t79 = (t74 + (negate t69))
-      let !t80 = (if t75 > 0 then ((sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79))) / t75) else 1.0)
-      setR v70 (if (t76 - t80) > 0 then t80 else t76)
+    t69 <- getR v38
+    loopI 0.0 t69 $ \i70 -> do
+      let !d70 = fromIntegral i70 :: Double
+      chkI near i70 0 0
+      t71 <- rdU near i70
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    t81 <- getR v70
-    if (0.8 - t81) > 0 then do
-      v82 <- newR 0.0
-      v83 <- newR 0.0
-      v84 <- newR 0.0
-      v85 <- newR 0.0
-      v86 <- newR 0.0
+    chkI verts (291 * i31) 0 2
+    t72 <- rdU verts (291 * i31)
+    t73 <- rdU verts ((291 * i31) + 1)
+    t74 <- rdU verts ((291 * i31) + 2)
+    v75 <- newR 1.0
+    loopI 0.0 24.0 $ \i76 -> do
+      let !d76 = fromIntegral i76 :: Double
+      chkI verts ((291 * i31) + (12 * i76)) 12 14
+      t77 <- rdU verts (((291 * i31) + (12 * i76)) + 12)
+      t78 <- rdU verts (((291 * i31) + (12 * i76)) + 13)
+      t79 <- rdU verts (((291 * i31) + (12 * i76)) + 14)
+      chkI radii ((24 * i31) + i76) 0 0
+      t80 <- rdU radii ((24 * i31) + i76)
+      t81 <- getR v75
+      let !t82 = (t77 + (negate t72))
+      let !t83 = (t78 + (negate t73))
+      let !t84 = (t79 + (negate t74))
+      let !t85 = (if t80 > 0 then ((sqrt (((t82 * t82) + (t83 * t83)) + (t84 * t84))) / t80) else 1.0)
+      setR v75 (if (t81 - t85) > 0 then t85 else t81)
+      pure ()
+    t86 <- getR v75
+    if (0.8 - t86) > 0 then do
       v87 <- newR 0.0
       v88 <- newR 0.0
-      loopI 0.0 24.0 $ \i89 -> do
-        let !d89 = fromIntegral i89 :: Double
-        chkI radii ((24 * i31) + i89) 0 0
-        t90 <- rdU radii ((24 * i31) + i89)
-        loopI 6.0 12.0 $ \i91 -> do
-          let !d91 = fromIntegral i91 :: Double
-          let !t92 = (d89 + d91)
-          chkI radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0)))))) 0 0
-          t93 <- rdU radii (truncate ((24.0 * d31) + (t92 - (24.0 * (floorF (t92 / 24.0))))))
-          loopI 1.0 4.0 $ \i94 -> do
-            let !d94 = fromIntegral i94 :: Double
-            chkI verts ((291 * i31) + (12 * i89) + (3 * i94)) 0 5
-            t95 <- rdU verts ((291 * i31) + (12 * i89) + (3 * i94))
-            t96 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 1)
-            t97 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 2)
-            t98 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 3)
-            t99 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 4)
-            t100 <- rdU verts (((291 * i31) + (12 * i89) + (3 * i94)) + 5)
-            loopI 1.0 4.0 $ \i101 -> do
-              let !d101 = fromIntegral i101 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0)))) 0 0
-              t102 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0)) 0 0
-              t103 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0)) 0 0
-              t104 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + (d101 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101))) 0 0
-              t105 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0)) 0 0
-              t106 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0)) 0 0
-              t107 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)) + d101)) + 2.0))
-              t108 <- getR v82
-              let !t109 = (negate t102)
-              let !t110 = (t105 + t109)
-              let !t111 = (negate t103)
-              let !t112 = (t106 + t111)
-              let !t113 = (negate t104)
-              let !t114 = (t107 + t113)
-              let !t115 = (((t110 * t110) + (t112 * t112)) + (t114 * t114))
-              let !t116 = (t98 + (negate t95))
-              let !t117 = (t99 + (negate t96))
-              let !t118 = (t100 + (negate t97))
-              let !t119 = (((t116 * t110) + (t117 * t112)) + (t118 * t114))
-              let !t120 = (((t116 * t116) + (t117 * t117)) + (t118 * t118))
-              let !t121 = ((t120 * t115) - (t119 * t119))
-              let !t122 = (t95 + t109)
-              let !t123 = (t96 + t111)
-              let !t124 = (t97 + t113)
-              let !t125 = (((t110 * t122) + (t112 * t123)) + (t114 * t124))
-              let !t126 = (((t116 * t122) + (t117 * t123)) + (t118 * t124))
-              let !t127 = (if ((abs t121) - 1.0e-300) > 0 then (((t119 * t125) - (t126 * t115)) / t121) else 0.0)
-              let !t128 = (if (t127 - 1.0) > 0 then 1.0 else t127)
-              let !t129 = (if (t121 - ((1.0e-12 * t120) * t115)) > 0 then (if (negate t128) > 0 then 0.0 else t128) else 0.0)
-              let !t130 = (if ((abs t115) - 1.0e-300) > 0 then (((t119 * t129) + t125) / t115) else 0.0)
-              let !t131 = ((abs t120) - 1.0e-300)
-              let !t132 = (if t131 > 0 then ((negate t126) / t120) else 0.0)
+      v89 <- newR 0.0
+      v90 <- newR 0.0
+      v91 <- newR 0.0
+      v92 <- newR 0.0
+      v93 <- newR 0.0
+      loopI 0.0 24.0 $ \i94 -> do
+        let !d94 = fromIntegral i94 :: Double
+        chkI radii ((24 * i31) + i94) 0 0
+        t95 <- rdU radii ((24 * i31) + i94)
+        loopI 6.0 12.0 $ \i96 -> do
+          let !d96 = fromIntegral i96 :: Double
+          let !t97 = (d94 + d96)
+          chkI radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0)))))) 0 0
+          t98 <- rdU radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0))))))
+          loopI 1.0 4.0 $ \i99 -> do
+            let !d99 = fromIntegral i99 :: Double
+            chkI verts ((291 * i31) + (12 * i94) + (3 * i99)) 0 5
+            t100 <- rdU verts ((291 * i31) + (12 * i94) + (3 * i99))
+            t101 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 1)
+            t102 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 2)
+            t103 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 3)
+            t104 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 4)
+            t105 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 5)
+            loopI 1.0 4.0 $ \i106 -> do
+              let !d106 = fromIntegral i106 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0)))) 0 0
+              t107 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0)) 0 0
+              t108 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0)) 0 0
+              t109 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106))) 0 0
+              t110 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0)) 0 0
+              t111 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0)) 0 0
+              t112 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0))
+              t113 <- getR v87
+              let !t114 = (negate t107)
+              let !t115 = (t110 + t114)
+              let !t116 = (negate t108)
+              let !t117 = (t111 + t116)
+              let !t118 = (negate t109)
+              let !t119 = (t112 + t118)
+              let !t120 = (((t115 * t115) + (t117 * t117)) + (t119 * t119))
+              let !t121 = (t103 + (negate t100))
+              let !t122 = (t104 + (negate t101))
+              let !t123 = (t105 + (negate t102))
+              let !t124 = (((t121 * t115) + (t122 * t117)) + (t123 * t119))
+              let !t125 = (((t121 * t121) + (t122 * t122)) + (t123 * t123))
+              let !t126 = ((t125 * t120) - (t124 * t124))
+              let !t127 = (t100 + t114)
+              let !t128 = (t101 + t116)
+              let !t129 = (t102 + t118)
+              let !t130 = (((t115 * t127) + (t117 * t128)) + (t119 * t129))
+              let !t131 = (((t121 * t127) + (t122 * t128)) + (t123 * t129))
+              let !t132 = (if ((abs t126) - 1.0e-300) > 0 then (((t124 * t130) - (t131 * t120)) / t126) else 0.0)
               let !t133 = (if (t132 - 1.0) > 0 then 1.0 else t132)
-              let !t134 = (t130 - 1.0)
-              let !t135 = (if t131 > 0 then ((t119 - t126) / t120) else 0.0)
-              let !t136 = (if (t135 - 1.0) > 0 then 1.0 else t135)
-              let !t137 = (if (negate t130) > 0 then (if (negate t133) > 0 then 0.0 else t133) else (if t134 > 0 then (if (negate t136) > 0 then 0.0 else t136) else t129))
-              let !t138 = (if t134 > 0 then 1.0 else t130)
-              let !t139 = (if (negate t138) > 0 then 0.0 else t138)
-              let !t140 = ((0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0)))) - t108)
-              let !t141 = ((t95 + (t137 * t116)) + (negate (t102 + (t139 * t110))))
-              let !t142 = ((t96 + (t137 * t117)) + (negate (t103 + (t139 * t112))))
-              let !t143 = ((t97 + (t137 * t118)) + (negate (t104 + (t139 * t114))))
-              let !t144 = ((0.3 * ((if (t93 - t90) > 0 then t90 else t93) / 4.0)) - (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143))))
-              if (if (t140 - t144) > 0 then t144 else t140) > 0 then do
-                setR v82 (0.5 * ((t90 - ((t90 * (d94 + t137)) / 4.0)) + (t93 - ((t93 * (d101 + t139)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i89)) 3 5
-                t145 <- rdU verts (((291 * i31) + (12 * i89)) + 3)
-                t146 <- rdU verts (((291 * i31) + (12 * i89)) + 4)
-                t147 <- rdU verts (((291 * i31) + (12 * i89)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0)))) 0 0
-                t148 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t149 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t150 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t92 - (24.0 * (floorF (t92 / 24.0)))) * 4.0))) + 2.0))
-                setR v83 (t95 + (t137 * t116))
-                setR v84 (t96 + (t137 * t117))
-                setR v85 (t97 + (t137 * t118))
-                let !t151 = (negate t67)
-                let !t152 = (t145 + t151)
-                let !t153 = (negate t68)
-                let !t154 = (t146 + t153)
-                let !t155 = (negate t69)
-                let !t156 = (t147 + t155)
-                let !t157 = (sqrt (((t152 * t152) + (t154 * t154)) + (t156 * t156)))
-                let !t158 = (t148 + t151)
-                let !t159 = (t149 + t153)
-                let !t160 = (t150 + t155)
-                let !t161 = (sqrt (((t158 * t158) + (t159 * t159)) + (t160 * t160)))
-                setR v86 (negate (((if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0) * t152) + ((if t161 > 0 then (recip (if (t161 - 1.0e-300) > 0 then t161 else 1.0e-300)) else 0.0) * t158)))
-                setR v87 (negate (((if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0) * t154) + ((if t161 > 0 then (recip (if (t161 - 1.0e-300) > 0 then t161 else 1.0e-300)) else 0.0) * t159)))
-                setR v88 (negate (((if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0) * t156) + ((if t161 > 0 then (recip (if (t161 - 1.0e-300) > 0 then t161 else 1.0e-300)) else 0.0) * t160)))
+              let !t134 = (if (t126 - ((1.0e-12 * t125) * t120)) > 0 then (if (negate t133) > 0 then 0.0 else t133) else 0.0)
+              let !t135 = (if ((abs t120) - 1.0e-300) > 0 then (((t124 * t134) + t130) / t120) else 0.0)
+              let !t136 = ((abs t125) - 1.0e-300)
+              let !t137 = (if t136 > 0 then ((negate t131) / t125) else 0.0)
+              let !t138 = (if (t137 - 1.0) > 0 then 1.0 else t137)
+              let !t139 = (t135 - 1.0)
+              let !t140 = (if t136 > 0 then ((t124 - t131) / t125) else 0.0)
+              let !t141 = (if (t140 - 1.0) > 0 then 1.0 else t140)
+              let !t142 = (if (negate t135) > 0 then (if (negate t138) > 0 then 0.0 else t138) else (if t139 > 0 then (if (negate t141) > 0 then 0.0 else t141) else t134))
+              let !t143 = (if t139 > 0 then 1.0 else t135)
+              let !t144 = (if (negate t143) > 0 then 0.0 else t143)
+              let !t145 = ((0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0)))) - t113)
+              let !t146 = ((t100 + (t142 * t121)) + (negate (t107 + (t144 * t115))))
+              let !t147 = ((t101 + (t142 * t122)) + (negate (t108 + (t144 * t117))))
+              let !t148 = ((t102 + (t142 * t123)) + (negate (t109 + (t144 * t119))))
+              let !t149 = ((0.3 * ((if (t98 - t95) > 0 then t95 else t98) / 4.0)) - (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148))))
+              if (if (t145 - t149) > 0 then t149 else t145) > 0 then do
+                setR v87 (0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0))))
+                chkI verts ((291 * i31) + (12 * i94)) 3 5
+                t150 <- rdU verts (((291 * i31) + (12 * i94)) + 3)
+                t151 <- rdU verts (((291 * i31) + (12 * i94)) + 4)
+                t152 <- rdU verts (((291 * i31) + (12 * i94)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)))) 0 0
+                t153 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t154 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t155 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0))
+                setR v88 (t100 + (t142 * t121))
+                setR v89 (t101 + (t142 * t122))
+                setR v90 (t102 + (t142 * t123))
+                let !t156 = (negate t72)
+                let !t157 = (t150 + t156)
+                let !t158 = (negate t73)
+                let !t159 = (t151 + t158)
+                let !t160 = (negate t74)
+                let !t161 = (t152 + t160)
+                let !t162 = (sqrt (((t157 * t157) + (t159 * t159)) + (t161 * t161)))
+                let !t163 = (t153 + t156)
+                let !t164 = (t154 + t158)
+                let !t165 = (t155 + t160)
+                let !t166 = (sqrt (((t163 * t163) + (t164 * t164)) + (t165 * t165)))
+                setR v91 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t157) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t163)))
+                setR v92 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t159) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t164)))
+                setR v93 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t161) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t165)))
                 pure ()
               else do
                 pure ()
@@ -337,124 +349,124 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t162 <- getR v82
-      if t162 > 0 then do
-        t163 <- getR v83
-        t164 <- getR v84
-        t165 <- getR v85
-        t166 <- getR v86
-        t167 <- getR v87
+      t167 <- getR v87
+      if t167 > 0 then do
         t168 <- getR v88
-        let !t169 = (recip (2.0 * (sqrt ((t163 * t163) + (t165 * t165)))))
-        let !t170 = (t169 * (t163 + t163))
-        let !t171 = (negate (exp t164))
-        let !t172 = (t169 * (t165 + t165))
-        let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
-        let !t174 = (if t173 > 0 then (recip (if (t173 - 1.0e-300) > 0 then t173 else 1.0e-300)) else 0.0)
-        let !s175 = (t174 * t170)
-        let !s176 = (t174 * t171)
-        let !s177 = (t174 * t172)
-        let !t178 = (((s175 * t166) + (s176 * t167)) + (s177 * t168))
-        let !t179 = (t166 + (negate (t178 * s175)))
-        let !t180 = (t167 + (negate (t178 * s176)))
-        let !t181 = (t168 + (negate (t178 * s177)))
-        let !t182 = (sqrt (((t179 * t179) + (t180 * t180)) + (t181 * t181)))
-        let !t183 = (if t182 > 0 then (recip (if (t182 - 1.0e-300) > 0 then t182 else 1.0e-300)) else 0.0)
-        let !s184 = (t183 * t179)
-        let !s185 = (t183 * t180)
-        let !s186 = (t183 * t181)
-        t187 <- rdU meta 2
-        t188 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t188) > 0 then 1.0 else t188)) - t187) - 0.5) > 0 then do
-          wrU meta 2 (t187 + 1.0)
-          t189 <- rdU pos (3 * i31)
-          t190 <- rdU pos ((3 * i31) + 1)
-          t191 <- rdU pos ((3 * i31) + 2)
+        t169 <- getR v89
+        t170 <- getR v90
+        t171 <- getR v91
+        t172 <- getR v92
+        t173 <- getR v93
+        let !t174 = (recip (2.0 * (sqrt ((t168 * t168) + (t170 * t170)))))
+        let !t175 = (t174 * (t168 + t168))
+        let !t176 = (negate (exp t169))
+        let !t177 = (t174 * (t170 + t170))
+        let !t178 = (sqrt (((t175 * t175) + (t176 * t176)) + (t177 * t177)))
+        let !t179 = (if t178 > 0 then (recip (if (t178 - 1.0e-300) > 0 then t178 else 1.0e-300)) else 0.0)
+        let !s180 = (t179 * t175)
+        let !s181 = (t179 * t176)
+        let !s182 = (t179 * t177)
+        let !t183 = (((s180 * t171) + (s181 * t172)) + (s182 * t173))
+        let !t184 = (t171 + (negate (t183 * s180)))
+        let !t185 = (t172 + (negate (t183 * s181)))
+        let !t186 = (t173 + (negate (t183 * s182)))
+        let !t187 = (sqrt (((t184 * t184) + (t185 * t185)) + (t186 * t186)))
+        let !t188 = (if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0)
+        let !s189 = (t188 * t184)
+        let !s190 = (t188 * t185)
+        let !s191 = (t188 * t186)
+        t192 <- rdU meta 2
+        t193 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t193) > 0 then 1.0 else t193)) - t192) - 0.5) > 0 then do
+          wrU meta 2 (t192 + 1.0)
+          t194 <- rdU pos (3 * i31)
+          t195 <- rdU pos ((3 * i31) + 1)
+          t196 <- rdU pos ((3 * i31) + 2)
           chkI normal (3 * i31) 0 2
-          t192 <- rdU normal (3 * i31)
-          t193 <- rdU normal ((3 * i31) + 1)
-          t194 <- rdU normal ((3 * i31) + 2)
+          t197 <- rdU normal (3 * i31)
+          t198 <- rdU normal ((3 * i31) + 1)
+          t199 <- rdU normal ((3 * i31) + 2)
           chkI axis (3 * i31) 0 2
-          t195 <- rdU axis (3 * i31)
-          t196 <- rdU axis ((3 * i31) + 1)
-          t197 <- rdU axis ((3 * i31) + 2)
-          let !s198 = ((t193 * t197) - (t194 * t196))
-          let !s199 = ((t194 * t195) - (t192 * t197))
-          let !s200 = ((t192 * t196) - (t193 * t195))
+          t200 <- rdU axis (3 * i31)
+          t201 <- rdU axis ((3 * i31) + 1)
+          t202 <- rdU axis ((3 * i31) + 2)
+          let !s203 = ((t198 * t202) - (t199 * t201))
+          let !s204 = ((t199 * t200) - (t197 * t202))
+          let !s205 = ((t197 * t201) - (t198 * t200))
           chkI scalars (6 * i31) 0 0
-          t201 <- rdU scalars (6 * i31)
-          t202 <- rdU scalars ((6 * i31) + 5)
-          t203 <- rdU scalars ((6 * i31) + 2)
-          t204 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t187)) 0 29
-          wrU contacts (30 * (truncate t187)) d31
-          wrU contacts ((30 * (truncate t187)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t187)) + 2) d31
-          wrU contacts ((30 * (truncate t187)) + 3) 12.0
-          wrU contacts ((30 * (truncate t187)) + 4) (s184 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t192)))
-          wrU contacts ((30 * (truncate t187)) + 5) (s185 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t193)))
-          wrU contacts ((30 * (truncate t187)) + 6) (s186 + (negate ((((t192 * s184) + (t193 * s185)) + (t194 * s186)) * t194)))
-          wrU contacts ((30 * (truncate t187)) + 7) 0.0
-          wrU contacts ((30 * (truncate t187)) + 12) 0.0
-          wrU contacts ((30 * (truncate t187)) + 13) 0.0
-          wrU contacts ((30 * (truncate t187)) + 14) 0.0
-          wrU contacts ((30 * (truncate t187)) + 15) 0.0
-          wrU contacts ((30 * (truncate t187)) + 20) t162
-          wrU contacts ((30 * (truncate t187)) + 26) 0.6
-          wrU contacts ((30 * (truncate t187)) + 27) t163
-          wrU contacts ((30 * (truncate t187)) + 28) t164
-          wrU contacts ((30 * (truncate t187)) + 29) t165
+          t206 <- rdU scalars (6 * i31)
+          t207 <- rdU scalars ((6 * i31) + 5)
+          t208 <- rdU scalars ((6 * i31) + 2)
+          t209 <- rdU scalars ((6 * i31) + 3)
+          chkI contacts (30 * (truncate t192)) 0 29
+          wrU contacts (30 * (truncate t192)) d31
+          wrU contacts ((30 * (truncate t192)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t192)) + 2) d31
+          wrU contacts ((30 * (truncate t192)) + 3) 12.0
+          wrU contacts ((30 * (truncate t192)) + 4) (s189 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t197)))
+          wrU contacts ((30 * (truncate t192)) + 5) (s190 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t198)))
+          wrU contacts ((30 * (truncate t192)) + 6) (s191 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t199)))
+          wrU contacts ((30 * (truncate t192)) + 7) 0.0
+          wrU contacts ((30 * (truncate t192)) + 12) 0.0
+          wrU contacts ((30 * (truncate t192)) + 13) 0.0
+          wrU contacts ((30 * (truncate t192)) + 14) 0.0
+          wrU contacts ((30 * (truncate t192)) + 15) 0.0
+          wrU contacts ((30 * (truncate t192)) + 20) t167
+          wrU contacts ((30 * (truncate t192)) + 26) 0.6
+          wrU contacts ((30 * (truncate t192)) + 27) t168
+          wrU contacts ((30 * (truncate t192)) + 28) t169
+          wrU contacts ((30 * (truncate t192)) + 29) t170
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t205 <- rdU pos (-3)
-            t206 <- rdU pos (-2)
-            t207 <- rdU pos (-1)
+            t210 <- rdU pos (-3)
+            t211 <- rdU pos (-2)
+            t212 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t208 <- rdU normal (-3)
-            t209 <- rdU normal (-2)
-            t210 <- rdU normal (-1)
+            t213 <- rdU normal (-3)
+            t214 <- rdU normal (-2)
+            t215 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t211 <- rdU axis (-3)
-            t212 <- rdU axis (-2)
-            t213 <- rdU axis (-1)
-            let !s214 = ((t209 * t213) - (t210 * t212))
-            let !s215 = ((t210 * t211) - (t208 * t213))
-            let !s216 = ((t208 * t212) - (t209 * t211))
+            t216 <- rdU axis (-3)
+            t217 <- rdU axis (-2)
+            t218 <- rdU axis (-1)
+            let !s219 = ((t214 * t218) - (t215 * t217))
+            let !s220 = ((t215 * t216) - (t213 * t218))
+            let !s221 = ((t213 * t217) - (t214 * t216))
             chkI scalars 0 (-6) (-1)
-            t217 <- rdU scalars (-6)
-            t218 <- rdU scalars (-1)
-            t219 <- rdU scalars (-4)
-            t220 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t187)) + 8) (s184 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t208)))
-            wrU contacts ((30 * (truncate t187)) + 9) (s185 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t209)))
-            wrU contacts ((30 * (truncate t187)) + 10) (s186 + (negate ((((t208 * s184) + (t209 * s185)) + (t210 * s186)) * t210)))
-            let !t221 = (t164 + (negate t206))
-            let !t222 = (t165 + (negate t207))
-            let !t223 = (t163 + (negate t205))
-            wrU contacts ((30 * (truncate t187)) + 11) (((((t221 * s186) - (t222 * s185)) * t208) + (((t222 * s184) - (t223 * s186)) * t209)) + (((t223 * s185) - (t221 * s184)) * t210))
-            let !t224 = ((t193 * s186) - (t194 * s185))
-            wrU contacts ((30 * (truncate t187)) + 16) (t224 + (negate ((((t208 * t224) + (t209 * ((t194 * s184) - (t192 * s186)))) + (t210 * ((t192 * s185) - (t193 * s184)))) * t208)))
-            let !t225 = ((t194 * s184) - (t192 * s186))
-            wrU contacts ((30 * (truncate t187)) + 17) (t225 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * ((t192 * s185) - (t193 * s184)))) * t209)))
-            let !t226 = ((t192 * s185) - (t193 * s184))
-            wrU contacts ((30 * (truncate t187)) + 18) (t226 + (negate ((((t208 * t224) + (t209 * t225)) + (t210 * t226)) * t210)))
-            wrU contacts ((30 * (truncate t187)) + 19) (((((t221 * t226) - (t222 * t225)) * t208) + (((t222 * t224) - (t223 * t226)) * t209)) + (((t223 * t225) - (t221 * t224)) * t210))
+            t222 <- rdU scalars (-6)
+            t223 <- rdU scalars (-1)
+            t224 <- rdU scalars (-4)
+            t225 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t192)) + 8) (s189 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t213)))
+            wrU contacts ((30 * (truncate t192)) + 9) (s190 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t214)))
+            wrU contacts ((30 * (truncate t192)) + 10) (s191 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t215)))
+            let !t226 = (t169 + (negate t211))
+            let !t227 = (t170 + (negate t212))
+            let !t228 = (t168 + (negate t210))
+            wrU contacts ((30 * (truncate t192)) + 11) (((((t226 * s191) - (t227 * s190)) * t213) + (((t227 * s189) - (t228 * s191)) * t214)) + (((t228 * s190) - (t226 * s189)) * t215))
+            let !t229 = ((t198 * s191) - (t199 * s190))
+            wrU contacts ((30 * (truncate t192)) + 16) (t229 + (negate ((((t213 * t229) + (t214 * ((t199 * s189) - (t197 * s191)))) + (t215 * ((t197 * s190) - (t198 * s189)))) * t213)))
+            let !t230 = ((t199 * s189) - (t197 * s191))
+            wrU contacts ((30 * (truncate t192)) + 17) (t230 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * ((t197 * s190) - (t198 * s189)))) * t214)))
+            let !t231 = ((t197 * s190) - (t198 * s189))
+            wrU contacts ((30 * (truncate t192)) + 18) (t231 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * t231)) * t215)))
+            wrU contacts ((30 * (truncate t192)) + 19) (((((t226 * t231) - (t227 * t230)) * t213) + (((t227 * t229) - (t228 * t231)) * t214)) + (((t228 * t230) - (t226 * t229)) * t215))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t187)) + 8) 0.0
-            wrU contacts ((30 * (truncate t187)) + 9) 0.0
-            wrU contacts ((30 * (truncate t187)) + 10) 0.0
-            wrU contacts ((30 * (truncate t187)) + 11) 0.0
-            wrU contacts ((30 * (truncate t187)) + 16) 0.0
-            wrU contacts ((30 * (truncate t187)) + 17) 0.0
-            wrU contacts ((30 * (truncate t187)) + 18) 0.0
-            wrU contacts ((30 * (truncate t187)) + 19) 0.0
+            wrU contacts ((30 * (truncate t192)) + 8) 0.0
+            wrU contacts ((30 * (truncate t192)) + 9) 0.0
+            wrU contacts ((30 * (truncate t192)) + 10) 0.0
+            wrU contacts ((30 * (truncate t192)) + 11) 0.0
+            wrU contacts ((30 * (truncate t192)) + 16) 0.0
+            wrU contacts ((30 * (truncate t192)) + 17) 0.0
+            wrU contacts ((30 * (truncate t192)) + 18) 0.0
+            wrU contacts ((30 * (truncate t192)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t227 <- rdU meta 6
-          wrU meta 6 (t227 + 1.0)
+          t232 <- rdU meta 6
+          wrU meta 6 (t232 + 1.0)
           pure ()
         pure ()
       else do
@@ -465,8 +477,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1507,8 +1519,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1676,8 +1688,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
