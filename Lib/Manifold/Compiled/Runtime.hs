@@ -85,7 +85,7 @@ wrU a i !x = PV.unsafeWrite a i x
 -- | A mutable local (the printed @let@): one unboxed number.
 newtype NumRef = NumRef (PV.IOVector Double)
 
--- (not 'MV.replicate': its fill loop costs more than the one write)
+-- (not 'PV.replicate': its fill loop costs more than the one write)
 newR :: Double -> IO NumRef
 newR !x = do
   r <- PV.unsafeNew 1
