@@ -36,7 +36,7 @@ data Command
   | Compile FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
-  | Bench String String Int Int Int Bool (Maybe FilePath) Bool
+  | Bench String String Int Int Int Int Bool (Maybe FilePath) Bool
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -58,11 +58,12 @@ commandParser = hsubparser
                        (progDesc "Simulate a scene headless and print the bodies' states as JSON"))
  <> command "bench" (info (Bench <$> strOption (long "spaces" <> metavar "A,B" <> value (intercalate "," (map spaceName benchSpaces)) <> help "Spaces (default: plane, sphere, torus, trumpet, projective-plane, rectangle)")
                                    <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
-                                   <*> option auto (long "warmup" <> metavar "W" <> value 100 <> help "Steps to settle before timing (default 100)")
+                                   <*> option auto (long "settle" <> metavar "K" <> value defaultSettleSteps <> help ("Steps each scene runs once, from its placement, before it is saved and timed (default " ++ show defaultSettleSteps ++ ")"))
+                                   <*> option auto (long "warmup" <> metavar "W" <> value 50 <> help "Steps run from the saved scene before the timed steps, in every round (default 50)")
                                    <*> option auto (long "steps" <> metavar "S" <> value 50 <> help "Steps timed (default 50)")
                                    <*> option auto (long "rounds" <> metavar "R" <> value 3 <> help "Time every scene R times, round after round, and keep its fastest round (default 3)")
                                    <*> switch (long "json" <> help "Print JSON")
-                                   <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
+                                   <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the settled scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
                                    <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one"))
                        (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "compile" (info (Compile <$> strOption (long "out" <> metavar "DIR" <> value "Lib" <> help "The library's source directory (default: Lib)"))
@@ -103,7 +104,7 @@ main = do
       putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
-    Bench spaces sizes warmup steps rounds json scenes generic -> bench spaces sizes warmup steps rounds json scenes generic
+    Bench spaces sizes settle warmup steps rounds json scenes generic -> bench spaces sizes settle warmup steps rounds json scenes generic
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -202,48 +203,55 @@ simulate path steps every = do
 -- | The native benchmark: progress on standard error, a table or JSON on
 -- standard output.
 --
--- Every scene is timed in each of @rounds@ rounds (all scenes, then all
--- again), each time loaded and settled afresh, and reported by its round
+-- Each scene is settled once ('settleScene') and saved; every round then
+-- loads the saved scene, warms up and times it. Every scene is timed in each
+-- of @rounds@ rounds (all scenes, then all again) and reported by its round
 -- with the lowest median: on a shared machine, what others run only ever
 -- adds time, and a slow spell of minutes would otherwise decide the scenes
 -- it happens to fall on.
-bench :: String -> String -> Int -> Int -> Int -> Bool -> Maybe FilePath -> Bool -> IO ()
-bench spacesArg sizesArg _ _ _ _ (Just dir) _ = do
+bench :: String -> String -> Int -> Int -> Int -> Int -> Bool -> Maybe FilePath -> Bool -> IO ()
+bench spacesArg sizesArg settle warmup steps rounds json scenesDir generic = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
-  createDirectoryIfMissing True dir
-  forM_ [(sp, n) | sp <- spaces, n <- sizes] $ \(sp, n) -> do
-    let file = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
-    BL.writeFile file (A.encode (sceneJSON (benchScene sp n)))
-    putStrLn file
-bench spacesArg sizesArg warmup steps rounds json Nothing generic = do
-  spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
-  sizes <- either usageError pure (parseSizes sizesArg)
+  when (settle < 0) (usageError "--settle: must not be negative")
   when (warmup < 0) (usageError "--warmup: must not be negative")
   when (steps < 1) (usageError "--steps: must be at least 1")
   when (rounds < 1) (usageError "--rounds: must be at least 1")
-  let cases = [BenchCase sp n | sp <- spaces, n <- sizes]
-  perRound <- forM [1 .. rounds] $ \k -> do
-    let progress msg = hPutStrLn stderr ("bench: round " ++ show k ++ " of " ++ show rounds ++ ": " ++ msg)
-    mapM (runBench progress generic warmup steps) cases
-  let results = map (minimumBy (comparing brMedianMs)) (transpose perRound)
-  if json
-    then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
-                                          , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
-                                          , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
-                                          , "rounds" A..= rounds
-                                          , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]
-                               | r <- results ])
-    else do
-      let phaseNames = case results of
-            r : _ -> map fst (brPhases r)
-            [] -> []
-      putStrLn (row (["space", "bodies", "size", "contacts", "median ms", "p10 ms", "p90 ms"] ++ phaseNames))
-      mapM_ (\r -> putStrLn (row ([brSpace r, show (brBodies r), fixed 4 (brSize r), show (brContacts r)
-                                  , fixed 3 (brMedianMs r), fixed 3 (brP10Ms r), fixed 3 (brP90Ms r)]
-                                  ++ map (fixed 3 . snd) (brPhases r)))) results
-      putStrLn "(phase columns: median ms of each phase of the step)"
+  let cases = [(sp, n) | sp <- spaces, n <- sizes]
+      settled (sp, n) = do
+        hPutStrLn stderr ("bench: " ++ spaceName sp ++ " " ++ show n ++ ": settling " ++ show settle ++ " steps")
+        settleScene settle (benchScene sp n)
+  case scenesDir of
+    Just dir -> do
+      createDirectoryIfMissing True dir
+      forM_ cases $ \(sp, n) -> do
+        scene <- settled (sp, n)
+        let file = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
+        BL.writeFile file (A.encode (sceneJSON scene))
+        putStrLn file
+    Nothing -> timeScenes =<< mapM settled cases
   where
+    timeScenes scenes = do
+      perRound <- forM [1 .. rounds] $ \k -> do
+        let progress msg = hPutStrLn stderr ("bench: round " ++ show k ++ " of " ++ show rounds ++ ": " ++ msg)
+        mapM (runBench progress generic warmup steps) scenes
+      let results = map (minimumBy (comparing brMedianMs)) (transpose perRound)
+      if json
+        then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
+                                              , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
+                                              , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
+                                              , "rounds" A..= rounds, "settle" A..= settle, "warmup" A..= warmup
+                                              , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]
+                                   | r <- results ])
+        else do
+          let phaseNames = case results of
+                r : _ -> map fst (brPhases r)
+                [] -> []
+          putStrLn (row (["space", "bodies", "size", "contacts", "median ms", "p10 ms", "p90 ms"] ++ phaseNames))
+          mapM_ (\r -> putStrLn (row ([brSpace r, show (brBodies r), fixed 4 (brSize r), show (brContacts r)
+                                      , fixed 3 (brMedianMs r), fixed 3 (brP10Ms r), fixed 3 (brP90Ms r)]
+                                      ++ map (fixed 3 . snd) (brPhases r)))) results
+          putStrLn "(phase columns: median ms of each phase of the step)"
     row cols = intercalate " | " [c ++ replicate (w - length c) ' ' | (c, w) <- zip cols ([16, 7, 7, 9, 10, 10, 10] ++ repeat 10)]
     fixed k x = let s = show (fromIntegral (round (x * 10 ^ (k :: Int)) :: Integer) / 10 ^ k :: Double) in s
 

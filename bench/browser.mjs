@@ -2,23 +2,26 @@
 // through the page (web/) in headless Chromium (Debian's, software WebGL2),
 // driven by playwright-core.
 //
-//   node bench/browser.mjs [--scenes DIR] [--spaces A,B] [--sizes N,M] [--warmup W] [--steps S]
+//   node bench/browser.mjs [--scenes DIR] [--settle K] [--spaces A,B] [--sizes N,M] [--warmup W] [--steps S]
 //                          [--rounds R] [--fps-spaces torus|all|none|A,B] [--fps-seconds T] [--out FILE.json]
 //
-// Without --scenes it runs `manifold bench --scenes TMPDIR` itself (the
-// executable: $MANIFOLD_EXE, else `cabal list-bin exe:manifold`).
+// Without --scenes it runs `manifold bench --scenes TMPDIR [--settle K]`
+// itself (the executable: $MANIFOLD_EXE, else `cabal list-bin
+// exe:manifold`): the scenes as the native benchmark times them, run natively
+// until their piles have settled and saved.
 //
-// 1. Step time, per scene: the scene is loaded into the page with
+// 1. Step time, per scene: the settled scene is loaded into the page with
 //    manifold.loadScene (paused). Inside the page, as bench/node.mjs does
 //    under node, a World (web/js/world.js) is made on the same generated
-//    engine and the same scene, settled for W steps, and each phase of S steps
-//    is timed on its own with performance.now(); the step is their sum (as
-//    `manifold bench` times the native step). The page's own world, settled
-//    for W steps too, takes a step manifold.step(1) before each of those,
-//    timed whole (`apiMedianMs`). Every scene is timed in each of R rounds
-//    (all scenes, then all again; default 3), loaded and settled afresh each
-//    time, and reported by its round with the lowest median, as `manifold
-//    bench --rounds` does: what else runs on the machine only adds time.
+//    engine and the same scene, run for W steps (default 50: the contacts'
+//    warm start and the JIT), and each phase of S steps is timed on its own
+//    with performance.now(); the step is their sum (as `manifold bench`
+//    times the native step). The page's own world, run for W steps too,
+//    takes a step manifold.step(1) before each of those, timed whole
+//    (`apiMedianMs`). Every scene is timed in each of R rounds (all scenes,
+//    then all again; default 3), loaded afresh each time, and reported by
+//    its round with the lowest median, as `manifold bench --rounds` does:
+//    what else runs on the machine only adds time.
 //    The page is served cross-origin isolated (COOP/COEP headers), so
 //    performance.now() ticks in 5 µs rather than 100 µs.
 // 2. Frame rate with rendering on, 800×600 viewport: the page's world runs
@@ -42,9 +45,9 @@ const VIEWPORT = { width: 800, height: 600 };
 
 // ---- arguments -------------------------------------------------------------------------
 const argv = process.argv.slice(2);
-const USAGE = "usage: node bench/browser.mjs [--scenes DIR] [--spaces A,B] [--sizes N,M] [--warmup W] [--steps S]\n" +
+const USAGE = "usage: node bench/browser.mjs [--scenes DIR] [--settle K] [--spaces A,B] [--sizes N,M] [--warmup W] [--steps S]\n" +
   "                              [--rounds R] [--fps-spaces torus|all|none|A,B] [--fps-seconds T] [--out FILE.json]";
-const KNOWN = ["--scenes", "--spaces", "--sizes", "--warmup", "--steps", "--rounds", "--fps-spaces", "--fps-seconds", "--out"];
+const KNOWN = ["--scenes", "--settle", "--spaces", "--sizes", "--warmup", "--steps", "--rounds", "--fps-spaces", "--fps-seconds", "--out"];
 for (let i = 0; i < argv.length; i += 2) {
   if (argv[i] === "--help" || argv[i] === "-h") { console.log(USAGE); process.exit(0); }
   if (KNOWN.indexOf(argv[i]) < 0 || argv[i + 1] === undefined) { console.error(USAGE); process.exit(2); }
@@ -62,7 +65,9 @@ const list = (s) => s.split(",").map((x) => x.trim()).filter((x) => x);
 const spaces = list(arg("--spaces", SPACES.join(",")));
 const sizes = list(arg("--sizes", SIZES.join(","))).map(Number);
 if (sizes.some((n) => !Number.isInteger(n) || n < 1)) { console.error("--sizes must be whole numbers"); process.exit(2); }
-const warmup = count("--warmup", 100, 0);
+const warmup = count("--warmup", 50, 0);
+// null: manifold bench's default (or, with --scenes, however DIR's scenes were written)
+const settle = arg("--settle", null) === null ? null : count("--settle", 0, 0);
 const steps = count("--steps", 50, 1);
 const rounds = count("--rounds", 3, 1);
 const fpsSeconds = Number(arg("--fps-seconds", "3"));
@@ -79,8 +84,9 @@ if (!scenesDir) {
   tmpDir = fs.mkdtempSync(path.join(os.tmpdir(), "manifold-bench-"));
   scenesDir = tmpDir;
   const exe = manifoldExe();
-  log("writing the scenes: " + exe + " bench --scenes " + tmpDir);
-  execFileSync(exe, ["bench", "--scenes", tmpDir, "--spaces", spaces.join(","), "--sizes", sizes.join(",")],
+  const settleArgs = settle === null ? [] : ["--settle", String(settle)];
+  log("writing the settled scenes: " + exe + " bench --scenes " + tmpDir + " " + settleArgs.join(" "));
+  execFileSync(exe, ["bench", "--scenes", tmpDir, "--spaces", spaces.join(","), "--sizes", sizes.join(",")].concat(settleArgs),
     { cwd: ROOT, stdio: ["ignore", "ignore", "inherit"] });
 }
 const cases = [];
@@ -235,7 +241,7 @@ try {
       const scene = JSON.parse(fs.readFileSync(c.file, "utf8"));
       log(`${tag}: ${scene.bodies.length} bodies, loading`);
       await loadPaused(page, scene);
-      log(`${tag}: settling ${warmup} steps, timing ${steps}`);
+      log(`${tag}: warming up ${warmup} steps, timing ${steps}`);
       const r = await timeSteps(page, scene, warmup, steps);
       const row = Object.assign({ space: c.space, n: c.n, steps, warmup, rounds }, r);
       if (!fastest[i] || row.medianMs < fastest[i].medianMs) fastest[i] = row;
@@ -278,7 +284,7 @@ if (fps.length) {
   }
 }
 if (outFile) {
-  const out = { date: new Date().toISOString(), warmup, steps, rounds, fpsSeconds, environment, results, fps };
+  const out = { date: new Date().toISOString(), settle, warmup, steps, rounds, fpsSeconds, environment, results, fps };
   fs.mkdirSync(path.dirname(path.resolve(outFile)), { recursive: true });
   fs.writeFileSync(outFile, JSON.stringify(out, null, 2) + "\n");
   log("wrote " + outFile);

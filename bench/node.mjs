@@ -11,7 +11,7 @@ const args = process.argv.slice(2);
 const dir = args[0];
 if (!dir) { console.error("usage: node bench/node.mjs DIR [--warmup W] [--steps S]"); process.exit(2); }
 const opt = (name, dflt) => { const k = args.indexOf(name); return k >= 0 ? Number(args[k + 1]) : dflt; };
-const warmup = opt("--warmup", 100), steps = opt("--steps", 50);
+const warmup = opt("--warmup", 50), steps = opt("--steps", 50);
 
 function load(file) { vm.runInThisContext(fs.readFileSync(file, "utf8"), { filename: file }); }
 globalThis.performance = globalThis.performance || performance;

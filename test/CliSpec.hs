@@ -16,6 +16,8 @@ import System.IO.Temp (withSystemTempDirectory)
 import Test.Hspec
 
 import Manifold
+import Manifold.Bench (benchScene)
+import Manifold.Scene (BodySpec (..), Scene (..), parseScene)
 import TestUtil
 
 data SpaceInfo = SpaceInfo
@@ -207,3 +209,21 @@ spec = do
       A.eitherDecode out `shouldBe` Right [BenchRounds 2, BenchRounds 2]
       (code0, _, err0) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--rounds", "0"]
       (code0, "--rounds: must be at least 1" `isInfixOf` err0) `shouldBe` (ExitFailure 2, True)
+    it "bench --scenes DIR writes each scene after --settle K steps, the same scene as placed with --settle 0" $
+      withSystemTempDirectory "manifold-scenes" $ \dir -> do
+        let write :: Int -> IO Scene
+            write k = do
+              (code, out, err) <- run ["bench", "--scenes", dir </> show k, "--spaces", "sphere", "--sizes", "10", "--settle", show k]
+              (code, out) `shouldBe` (ExitSuccess, BL.fromStrict (BC.pack (dir </> show k </> "sphere-10.json\n")))
+              ("settling " ++ show k ++ " steps") `shouldSatisfy` (`isInfixOf` err)
+              text <- BL.readFile (dir </> show k </> "sphere-10.json")
+              either (\e -> fail ("sphere-10.json: " ++ e)) pure (parseScene text)
+        placed <- write 0
+        settled <- write 300
+        sceneBodies placed `shouldBe` sceneBodies (benchScene sphere 10)
+        map (\b -> (bsShape b, bsSize b)) (sceneBodies settled) `shouldBe` map (\b -> (bsShape b, bsSize b)) (sceneBodies placed)
+        -- the bodies have fallen: on the unit sphere with gravity along −y, lower than placed
+        let height = sum . map ((\(V3 _ y _) -> y) . bsP) . sceneBodies
+        height settled `shouldSatisfy` (< height placed - 1)
+        (codeN, _, errN) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--settle", "-1"]
+        (codeN, "--settle: must not be negative" `isInfixOf` errN) `shouldBe` (ExitFailure 2, True)

@@ -10,7 +10,8 @@ import qualified Data.ByteString.Lazy.Char8 as BL
 import qualified Data.Vector.Unboxed as V
 import GHC.Float (castDoubleToWord64)
 import Linear.Metric (distance, quadrance)
-import Linear.V3 (V3 (..))
+import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((*^), (^+^))
 import System.Directory (getTemporaryDirectory, removeFile)
 import System.FilePath ((</>))
 import System.IO (hClose, hPutStr, openTempFile)
@@ -188,6 +189,29 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       length bodies `shouldSatisfy` (>= (if spaceName sp == "rectangle" && n == 10 then 9 else n))
       maximum [abs (evalField sp p) | p <- ps] `shouldSatisfy` (< 1e-9)
       (spaceName sp, closest >= 2 * size) `shouldBe` (spaceName sp, True)
+
+  it "saves a world that has run as a scene that loads back with every body where it was, moving as it moved" $ do
+    let scene = benchScene torus 60
+    w <- loadScene 0 scene >>= either (\e -> fail e) pure
+    replicateM_ 150 (stepNative w)
+    saved <- sceneOfWorld scene w >>= either (\e -> fail e) pure
+    w' <- loadScene 0 saved >>= either (\e -> fail e) pure
+    let n = length (sceneBodies scene)
+        normalAt p = unitNormal (spaceField torus) p
+        -- the direction a body's angle points to: its outline's orientation
+        facing st = let u = bsAxis st
+                        v = normalAt (bsPos st) `cross` u
+                    in cos (bsAngle st) *^ u ^+^ sin (bsAngle st) *^ v
+    pairs <- forM [0 .. n - 1] $ \i -> (,) <$> readBody w i <*> readBody w' i
+    -- the axes have turned away from where a body placed there starts (else
+    -- the angle's conversion would go untested)
+    maximum [distance (bsAxis a) (referenceAxis (normalAt (bsPos a))) | (a, _) <- pairs] `shouldSatisfy` (> 0.1)
+    maximum [distance (bsPos a) (bsPos b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-9)
+    maximum [distance (bsVel a) (bsVel b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-9)
+    maximum [abs (bsOmega a - bsOmega b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-12)
+    maximum [distance (facing a) (facing b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-9)
+    removeBodyAt w 0
+    sceneOfWorld scene w >>= (`shouldBe` Left "the world holds 59 bodies, the scene 60") . fmap (length . sceneBodies)
 
   it "reads a scene it printed back as the same scene" $ do
     let scene = benchScene torus 30

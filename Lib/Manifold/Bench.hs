@@ -1,12 +1,13 @@
 -- | The native benchmark (@manifold bench@): scenes of N equal circles and
--- squares covering about a third of a space's area, gravity on, settled for a
--- while, then each step timed.
+-- squares covering about a third of a space's area, gravity on, run until
+-- their piles have settled, saved, then each step timed from the saved state.
 module Manifold.Bench
-  ( BenchCase (..)
-  , BenchResult (..)
+  ( BenchResult (..)
   , benchSpaces
   , benchSizes
   , benchScene
+  , settleScene
+  , defaultSettleSteps
   , runBench
   ) where
 
@@ -26,11 +27,6 @@ import Manifold.Space
 import Manifold.Spaces
 import Manifold.Surface
 import Manifold.Scene
-
-data BenchCase = BenchCase
-  { bcSpace :: Space
-  , bcBodies :: Int
-  }
 
 data BenchResult = BenchResult
   { brSpace :: String
@@ -129,18 +125,39 @@ benchScene sp n =
       shapeOf i = if even i then CircleShape else SquareShape
   in Scene sp 0.01 True 8 0.4 0 [BodySpec (shapeOf i) size 1 False p (V3 0 0 0) 0 0 | (i, p) <- zip [0 :: Int ..] points]
 
--- | Settle for @warmup@ steps, then time @steps@ steps one by one, each
--- phase of each step on its own (the step's time is their sum). With
--- @generic@, the world runs the generic step even where its space has a
--- compiled one (to see what the compiled step gains).
-runBench :: (String -> IO ()) -> Bool -> Int -> Int -> BenchCase -> IO BenchResult
-runBench progress generic warmup steps (BenchCase sp n) = do
-  let scene = benchScene sp n
+-- | How long the benchmark scenes run before they are timed. The bodies
+-- start apart and fall; contacts per body rise for a few hundred steps
+-- (after 100 steps the trumpet's scenes had 0.1 contact rows per body, at
+-- 800 steps 2.1; the projective plane's 1000 bodies 2.1 and 2.9) and change
+-- by about 3 % between 800 and 1200 steps.
+defaultSettleSteps :: Int
+defaultSettleSteps = 1000
+
+-- | A scene after @settle@ steps of the native step, saved as a scene: what
+-- 'runBench' times, and what the browser benchmark loads, so that both time
+-- the same settled piles.
+settleScene :: Int -> Scene -> IO Scene
+settleScene 0 scene = pure scene -- exactly as placed
+settleScene settle scene = do
+  w <- loadScene 0 scene >>= either (benchError scene) pure
+  replicateM_ settle (stepNative w)
+  sceneOfWorld scene w >>= either (benchError scene) pure
+
+benchError :: Scene -> String -> IO a
+benchError scene e =
+  ioError (userError ("bench scene " ++ spaceName (sceneSpace scene) ++ " " ++ show (length (sceneBodies scene)) ++ ": " ++ e))
+
+-- | Run @warmup@ steps (the contacts' warm start and the caches), then time
+-- @steps@ steps one by one, each phase of each step on its own (the step's
+-- time is their sum). With @generic@, the world runs the generic step even
+-- where its space has a compiled one (to see what the compiled step gains).
+runBench :: (String -> IO ()) -> Bool -> Int -> Int -> Scene -> IO BenchResult
+runBench progress generic warmup steps scene = do
+  let sp = sceneSpace scene
       size = maybe 0 bsSize (listToMaybe (sceneBodies scene))
-  w <- (if generic then genericStep else id) <$>
-         (loadScene 0 scene >>= either (\e -> ioError (userError ("bench scene " ++ spaceName sp ++ " " ++ show n ++ ": " ++ e))) pure)
+  w <- (if generic then genericStep else id) <$> (loadScene 0 scene >>= either (benchError scene) pure)
   placed <- bodyCount w
-  progress (spaceName sp ++ ": " ++ show placed ++ " bodies of size " ++ show (roundTo 4 size) ++ ", settling")
+  progress (spaceName sp ++ ": " ++ show placed ++ " bodies of size " ++ show (roundTo 4 size) ++ ", warming up")
   replicateM_ warmup (stepNative w)
   progress (spaceName sp ++ ": " ++ show placed ++ " bodies, timing " ++ show steps ++ " steps")
   let phases = stepPhasesNative w

@@ -12,7 +12,7 @@ module Manifold.Population
 
 import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
-import Linear.Vector ((*^), (^+^))
+import Linear.Vector ((*^))
 
 import Manifold.Body (PolygonParams (..))
 import Manifold.Field
@@ -52,9 +52,7 @@ addBodyWith sp l w outline b = do
     (do let i = toIndex count
             movable = 1 - baStatic b
             v = movable *^ tangentProjection n (baVel b)
-            ax1 = tangentProjection n (V3 1 0 0)
-            ax2 = tangentProjection n (V3 0 0 1)
-            axis = safeNormalize (select (norm ax1 - 0.5) 1 0 *^ ax1 ^+^ select (norm ax1 - 0.5) 0 1 *^ ax2)
+            axis = referenceAxis n
         write3 (wPos w) i p
         write3 (wVel w) i v
         axis' <- share3 axis

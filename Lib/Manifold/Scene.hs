@@ -11,6 +11,7 @@ module Manifold.Scene
   , sceneParams
   , loadScene
   , bodyInit
+  , sceneOfWorld
   ) where
 
 import Control.Monad (forM, unless, when)
@@ -22,12 +23,14 @@ import Data.List (intercalate)
 import Data.Scientific (toRealFloat)
 import qualified Data.Text as T
 import qualified Data.Vector as V
-import Linear.V3 (V3 (..))
+import Linear.Metric (dot)
+import Linear.V3 (V3 (..), cross)
 
 import Manifold.Body
 import Manifold.Engine
 import Manifold.Space
 import Manifold.Spaces
+import Manifold.Surface (referenceAxis, unitNormal)
 import Manifold.World (layout)
 
 data BodySpec = BodySpec
@@ -182,3 +185,26 @@ loadScene extra s = do
   added <- forM (zip [0 :: Int ..] (sceneBodies s)) $ \(k, b) ->
     either (Left . (("$.bodies[" ++ show k ++ "].p: ") ++)) Right <$> addBody w (bodyInit b)
   pure (w <$ sequence added)
+
+-- | The scene as the world now has it: the scene's bodies (which the world
+-- must hold in the scene's order: as 'loadScene' made it, none added or
+-- removed since) where they are now, moving as they now move. A body's
+-- angle is measured from the axis it has carried along since it was
+-- placed; the saved angle is measured from the axis a body placed here
+-- starts with, so that loading the scene puts every outline where it is.
+-- What the world remembers of its contacts (the warm start) is not kept.
+sceneOfWorld :: Scene -> NativeWorld -> IO (P Scene)
+sceneOfWorld s w = do
+  n <- bodyCount w
+  let specs = sceneBodies s
+  if n /= length specs
+    then pure (Left ("the world holds " ++ show n ++ " bodies, the scene " ++ show (length specs)))
+    else do
+      bodies <- forM (zip [0 ..] specs) $ \(i, spec) -> do
+        st <- readBody w i
+        let normal = unitNormal (spaceField (sceneSpace s)) (bsPos st)
+            start = referenceAxis normal
+            carried = bsAxis st
+            turned = atan2 ((normal `cross` start) `dot` carried) (start `dot` carried)
+        pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = bsAngle st + turned, bsOmega0 = bsOmega st }
+      pure (Right s { sceneBodies = bodies })

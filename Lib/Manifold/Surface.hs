@@ -23,6 +23,7 @@ module Manifold.Surface
   , expMap
   , geodesicPath
   , tangentFrame
+  , referenceAxis
   , safeNormalize
   ) where
 
@@ -186,3 +187,14 @@ geodesicPath sf n p dir len =
 tangentFrame :: Field a => V3 a -> V3 a -> (V3 a, V3 a)
 {-# INLINE tangentFrame #-}
 tangentFrame n u = (u, n `cross` u)
+
+-- | The axis a body placed where the unit normal is @n@ starts with: the
+-- x axis projected to the tangent plane, or the z axis where the x axis is
+-- nearly the normal. A body's angle is measured from its axis, which it
+-- then carries along.
+referenceAxis :: Field a => V3 a -> V3 a
+{-# INLINE referenceAxis #-}
+referenceAxis n =
+  let ax1 = tangentProjection n (V3 1 0 0)
+      ax2 = tangentProjection n (V3 0 0 1)
+  in safeNormalize (select (norm ax1 - 0.5) 1 0 *^ ax1 ^+^ select (norm ax1 - 0.5) 0 1 *^ ax2)
