@@ -213,17 +213,48 @@ solve sp _ w = do
       ln <- readContact w c ImpulseN
       lt <- readContact w c ImpulseT
       kt <- readContact w c TangentMass
-      vt <- rowVelocity w a b tangent
+      kn <- readContact w c NormalMass
+      bias <- readContact w c CBias
+      -- both bodies' velocities are read once and written once (a row
+      -- without body b has zero Jacobians on its side: body 0 stands in);
+      -- when a body meets its own image (a = b) each side's change is
+      -- added to the other's copy too, so both copies stay the body's
+      bIx <- share (maxF 0 b)
+      let bi = toIndex bIx
+      hasB <- share (b + 0.5)
+      same <- share (select (0.5 - abs (toScalar a - b)) 1 0)
+      ima <- readSlot w a InvMass
+      iia <- readSlot w a InvInertia
+      imb <- readSlot w bi InvMass
+      iib <- readSlot w bi InvInertia
+      va0 <- readVel w a
+      vb0 <- readVel w bi
+      let along r (Vel va oa) (Vel vb ob) =
+            share ((rowA r `dot` va) + rowAW r * oa - select hasB ((rowB r `dot` vb) + rowBW r * ob) 0)
+          apply r lambda (Vel va oa) (Vel vb ob) = do
+            dva <- share3 ((ima * lambda) *^ rowA r)
+            doa <- share (iia * lambda * rowAW r)
+            dvb <- share3 ((imb * negate lambda) *^ rowB r)
+            dob <- share (iib * negate lambda * rowBW r)
+            va' <- share3 (va ^+^ dva ^+^ same *^ dvb)
+            oa' <- share (oa + doa + same * dob)
+            vb' <- share3 (vb ^+^ dvb ^+^ same *^ dva)
+            ob' <- share (ob + dob + same * doa)
+            pure (Vel va' oa', Vel vb' ob')
+      vt <- along tangent va0 vb0
       let limit = mu * ln
       lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
       writeContact w c ImpulseT lt'
-      applyRow w a b tangent (lt' - lt)
-      kn <- readContact w c NormalMass
-      bias <- readContact w c CBias
-      vn <- rowVelocity w a b normal
+      (va1, vb1) <- apply tangent (lt' - lt) va0 vb0
+      vn <- along normal va1 vb1
       ln' <- share (finiteOr0 (maxF 0 (ln + scale * (bias - vn) * kn)))
       writeContact w c ImpulseN ln'
-      applyRow w a b normal (ln' - ln)
+      (Vel va2 oa2, Vel vb2 ob2) <- apply normal (ln' - ln) va1 vb1
+      write3 (wVel w) a va2
+      writeSlot w a Omega oa2
+      whenPositive hasB $ do
+        write3 (wVel w) bi vb2
+        writeSlot w bi Omega ob2
     mouseRows sp w False
   -- remember the impulses, grouped by owner, for the next step
   bodies <- readMeta w BodyCount

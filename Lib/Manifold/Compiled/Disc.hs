@@ -1121,293 +1121,272 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
       t263 <- rdU contacts ((30 * i243) + 24)
       t264 <- rdU contacts ((30 * i243) + 25)
       t265 <- rdU contacts ((30 * i243) + 22)
-      chkI vel (3 * (truncate t244)) 0 2
-      t266 <- rdU vel (3 * (truncate t244))
-      t267 <- rdU vel ((3 * (truncate t244)) + 1)
-      t268 <- rdU vel ((3 * (truncate t244)) + 2)
+      t266 <- rdU contacts ((30 * i243) + 21)
+      t267 <- rdU contacts ((30 * i243) + 23)
+      let !s268 = (if (negate t245) > 0 then 0.0 else t245)
+      let !s269 = (t245 + 0.5)
+      let !s270 = (if (0.5 - (abs (t244 - t245))) > 0 then 1.0 else 0.0)
       chkI scalars (6 * (truncate t244)) 1 3
-      t269 <- rdU scalars ((6 * (truncate t244)) + 1)
-      v270 <- newR 0.0
-      if (t245 + 0.5) > 0 then do
-        chkI vel (3 * (truncate t245)) 0 2
-        t271 <- rdU vel (3 * (truncate t245))
-        t272 <- rdU vel ((3 * (truncate t245)) + 1)
-        t273 <- rdU vel ((3 * (truncate t245)) + 2)
-        chkI scalars (6 * (truncate t245)) 1 1
-        t274 <- rdU scalars ((6 * (truncate t245)) + 1)
-        setR v270 ((((t250 * t271) + (t251 * t272)) + (t252 * t273)) + (t253 * t274))
-        pure ()
-      else do
-        pure ()
-      t275 <- getR v270
-      let !s276 = (((((t246 * t266) + (t247 * t267)) + (t248 * t268)) + (t249 * t269)) - t275)
-      let !t277 = (t2 * t263)
-      let !t278 = (negate t277)
-      let !t279 = (t264 - ((t262 * s276) * t265))
-      let !t280 = (if (t279 - t277) > 0 then t277 else t279)
-      let !t281 = (if (t278 - t280) > 0 then t278 else t280)
-      let !s282 = (if (1.0 - (abs (t281 - t281))) > 0 then t281 else 0.0)
-      wrU contacts ((30 * i243) + 25) s282
-      t283 <- rdU scalars ((6 * (truncate t244)) + 2)
-      t284 <- rdU scalars ((6 * (truncate t244)) + 3)
-      t285 <- rdU vel (3 * (truncate t244))
-      t286 <- rdU vel ((3 * (truncate t244)) + 1)
-      t287 <- rdU vel ((3 * (truncate t244)) + 2)
-      t288 <- rdU scalars ((6 * (truncate t244)) + 1)
-      wrU vel (3 * (truncate t244)) (t285 + ((t283 * (s282 - t264)) * t246))
-      wrU vel ((3 * (truncate t244)) + 1) (t286 + ((t283 * (s282 - t264)) * t247))
-      wrU vel ((3 * (truncate t244)) + 2) (t287 + ((t283 * (s282 - t264)) * t248))
-      wrU scalars ((6 * (truncate t244)) + 1) (t288 + ((t284 * (s282 - t264)) * t249))
-      if (t245 + 0.5) > 0 then do
-        chkI scalars (6 * (truncate t245)) 1 3
-        t289 <- rdU scalars ((6 * (truncate t245)) + 2)
-        t290 <- rdU scalars ((6 * (truncate t245)) + 3)
-        chkI vel (3 * (truncate t245)) 0 2
-        t291 <- rdU vel (3 * (truncate t245))
-        t292 <- rdU vel ((3 * (truncate t245)) + 1)
-        t293 <- rdU vel ((3 * (truncate t245)) + 2)
-        t294 <- rdU scalars ((6 * (truncate t245)) + 1)
-        wrU vel (3 * (truncate t245)) (t291 + ((t289 * (negate (s282 - t264))) * t250))
-        wrU vel ((3 * (truncate t245)) + 1) (t292 + ((t289 * (negate (s282 - t264))) * t251))
-        wrU vel ((3 * (truncate t245)) + 2) (t293 + ((t289 * (negate (s282 - t264))) * t252))
-        wrU scalars ((6 * (truncate t245)) + 1) (t294 + ((t290 * (negate (s282 - t264))) * t253))
-        pure ()
-      else do
-        pure ()
-      t295 <- rdU contacts ((30 * i243) + 21)
-      t296 <- rdU contacts ((30 * i243) + 23)
-      t297 <- rdU vel (3 * (truncate t244))
-      t298 <- rdU vel ((3 * (truncate t244)) + 1)
-      t299 <- rdU vel ((3 * (truncate t244)) + 2)
-      t300 <- rdU scalars ((6 * (truncate t244)) + 1)
-      v301 <- newR 0.0
-      if (t245 + 0.5) > 0 then do
-        chkI vel (3 * (truncate t245)) 0 2
-        t302 <- rdU vel (3 * (truncate t245))
-        t303 <- rdU vel ((3 * (truncate t245)) + 1)
-        t304 <- rdU vel ((3 * (truncate t245)) + 2)
-        chkI scalars (6 * (truncate t245)) 1 1
-        t305 <- rdU scalars ((6 * (truncate t245)) + 1)
-        setR v301 ((((t258 * t302) + (t259 * t303)) + (t260 * t304)) + (t261 * t305))
-        pure ()
-      else do
-        pure ()
-      t306 <- getR v301
-      let !s307 = (((((t254 * t297) + (t255 * t298)) + (t256 * t299)) + (t257 * t300)) - t306)
-      let !t308 = (t263 + ((t262 * (t296 - s307)) * t295))
-      let !t309 = (if (negate t308) > 0 then 0.0 else t308)
-      let !s310 = (if (1.0 - (abs (t309 - t309))) > 0 then t309 else 0.0)
-      wrU contacts ((30 * i243) + 24) s310
-      t311 <- rdU scalars ((6 * (truncate t244)) + 2)
-      t312 <- rdU scalars ((6 * (truncate t244)) + 3)
-      t313 <- rdU vel (3 * (truncate t244))
-      t314 <- rdU vel ((3 * (truncate t244)) + 1)
-      t315 <- rdU vel ((3 * (truncate t244)) + 2)
-      t316 <- rdU scalars ((6 * (truncate t244)) + 1)
-      wrU vel (3 * (truncate t244)) (t313 + ((t311 * (s310 - t263)) * t254))
-      wrU vel ((3 * (truncate t244)) + 1) (t314 + ((t311 * (s310 - t263)) * t255))
-      wrU vel ((3 * (truncate t244)) + 2) (t315 + ((t311 * (s310 - t263)) * t256))
-      wrU scalars ((6 * (truncate t244)) + 1) (t316 + ((t312 * (s310 - t263)) * t257))
-      if (t245 + 0.5) > 0 then do
-        chkI scalars (6 * (truncate t245)) 1 3
-        t317 <- rdU scalars ((6 * (truncate t245)) + 2)
-        t318 <- rdU scalars ((6 * (truncate t245)) + 3)
-        chkI vel (3 * (truncate t245)) 0 2
-        t319 <- rdU vel (3 * (truncate t245))
-        t320 <- rdU vel ((3 * (truncate t245)) + 1)
-        t321 <- rdU vel ((3 * (truncate t245)) + 2)
-        t322 <- rdU scalars ((6 * (truncate t245)) + 1)
-        wrU vel (3 * (truncate t245)) (t319 + ((t317 * (negate (s310 - t263))) * t258))
-        wrU vel ((3 * (truncate t245)) + 1) (t320 + ((t317 * (negate (s310 - t263))) * t259))
-        wrU vel ((3 * (truncate t245)) + 2) (t321 + ((t317 * (negate (s310 - t263))) * t260))
-        wrU scalars ((6 * (truncate t245)) + 1) (t322 + ((t318 * (negate (s310 - t263))) * t261))
+      t271 <- rdU scalars ((6 * (truncate t244)) + 2)
+      t272 <- rdU scalars ((6 * (truncate t244)) + 3)
+      chkI scalars (6 * (truncate s268)) 1 3
+      t273 <- rdU scalars ((6 * (truncate s268)) + 2)
+      t274 <- rdU scalars ((6 * (truncate s268)) + 3)
+      chkI vel (3 * (truncate t244)) 0 2
+      t275 <- rdU vel (3 * (truncate t244))
+      t276 <- rdU vel ((3 * (truncate t244)) + 1)
+      t277 <- rdU vel ((3 * (truncate t244)) + 2)
+      t278 <- rdU scalars ((6 * (truncate t244)) + 1)
+      chkI vel (3 * (truncate s268)) 0 2
+      t279 <- rdU vel (3 * (truncate s268))
+      t280 <- rdU vel ((3 * (truncate s268)) + 1)
+      t281 <- rdU vel ((3 * (truncate s268)) + 2)
+      t282 <- rdU scalars ((6 * (truncate s268)) + 1)
+      let !s283 = (((((t246 * t275) + (t247 * t276)) + (t248 * t277)) + (t249 * t278)) - (if s269 > 0 then ((((t250 * t279) + (t251 * t280)) + (t252 * t281)) + (t253 * t282)) else 0.0))
+      let !t284 = (t2 * t263)
+      let !t285 = (negate t284)
+      let !t286 = (t264 - ((t262 * s283) * t265))
+      let !t287 = (if (t286 - t284) > 0 then t284 else t286)
+      let !t288 = (if (t285 - t287) > 0 then t285 else t287)
+      let !s289 = (if (1.0 - (abs (t288 - t288))) > 0 then t288 else 0.0)
+      wrU contacts ((30 * i243) + 25) s289
+      let !t290 = (t271 * (s289 - t264))
+      let !s291 = (t290 * t246)
+      let !s292 = (t290 * t247)
+      let !s293 = (t290 * t248)
+      let !s294 = ((t272 * (s289 - t264)) * t249)
+      let !t295 = (t273 * (negate (s289 - t264)))
+      let !s296 = (t295 * t250)
+      let !s297 = (t295 * t251)
+      let !s298 = (t295 * t252)
+      let !s299 = ((t274 * (negate (s289 - t264))) * t253)
+      let !s300 = ((t275 + s291) + (s270 * s296))
+      let !s301 = ((t276 + s292) + (s270 * s297))
+      let !s302 = ((t277 + s293) + (s270 * s298))
+      let !s303 = ((t278 + s294) + (s270 * s299))
+      let !s304 = ((t279 + s296) + (s270 * s291))
+      let !s305 = ((t280 + s297) + (s270 * s292))
+      let !s306 = ((t281 + s298) + (s270 * s293))
+      let !s307 = ((t282 + s299) + (s270 * s294))
+      let !s308 = (((((t254 * s300) + (t255 * s301)) + (t256 * s302)) + (t257 * s303)) - (if s269 > 0 then ((((t258 * s304) + (t259 * s305)) + (t260 * s306)) + (t261 * s307)) else 0.0))
+      let !t309 = (t263 + ((t262 * (t267 - s308)) * t266))
+      let !t310 = (if (negate t309) > 0 then 0.0 else t309)
+      let !s311 = (if (1.0 - (abs (t310 - t310))) > 0 then t310 else 0.0)
+      wrU contacts ((30 * i243) + 24) s311
+      let !t312 = (t271 * (s311 - t263))
+      let !s313 = (t312 * t254)
+      let !s314 = (t312 * t255)
+      let !s315 = (t312 * t256)
+      let !s316 = ((t272 * (s311 - t263)) * t257)
+      let !t317 = (t273 * (negate (s311 - t263)))
+      let !s318 = (t317 * t258)
+      let !s319 = (t317 * t259)
+      let !s320 = (t317 * t260)
+      let !s321 = ((t274 * (negate (s311 - t263))) * t261)
+      let !s322 = ((s300 + s313) + (s270 * s318))
+      let !s323 = ((s301 + s314) + (s270 * s319))
+      let !s324 = ((s302 + s315) + (s270 * s320))
+      let !s325 = ((s303 + s316) + (s270 * s321))
+      let !s326 = ((s304 + s318) + (s270 * s313))
+      let !s327 = ((s305 + s319) + (s270 * s314))
+      let !s328 = ((s306 + s320) + (s270 * s315))
+      let !s329 = ((s307 + s321) + (s270 * s316))
+      wrU vel (3 * (truncate t244)) s322
+      wrU vel ((3 * (truncate t244)) + 1) s323
+      wrU vel ((3 * (truncate t244)) + 2) s324
+      wrU scalars ((6 * (truncate t244)) + 1) s325
+      if s269 > 0 then do
+        wrU vel (3 * (truncate s268)) s326
+        wrU vel ((3 * (truncate s268)) + 1) s327
+        wrU vel ((3 * (truncate s268)) + 2) s328
+        wrU scalars ((6 * (truncate s268)) + 1) s329
         pure ()
       else do
         pure ()
       pure ()
-    t323 <- rdU mouse 0
-    if t323 > 0 then do
+    t330 <- rdU mouse 0
+    if t330 > 0 then do
       chkI mouse 0 1 1
-      t324 <- rdU mouse 1
-      chkI scalars (6 * (truncate t324)) 2 2
-      t325 <- rdU scalars ((6 * (truncate t324)) + 2)
-      if t325 > 0 then do
-        chkI scalars (6 * (truncate t324)) 0 5
-        t326 <- rdU scalars ((6 * (truncate t324)) + 3)
-        t327 <- rdU params 0
-        chkI pos (3 * (truncate t324)) 0 2
-        t328 <- rdU pos (3 * (truncate t324))
-        t329 <- rdU pos ((3 * (truncate t324)) + 1)
-        t330 <- rdU pos ((3 * (truncate t324)) + 2)
-        chkI normal (3 * (truncate t324)) 0 2
-        t331 <- rdU normal (3 * (truncate t324))
-        t332 <- rdU normal ((3 * (truncate t324)) + 1)
-        t333 <- rdU normal ((3 * (truncate t324)) + 2)
-        chkI axis (3 * (truncate t324)) 0 2
-        t334 <- rdU axis (3 * (truncate t324))
-        t335 <- rdU axis ((3 * (truncate t324)) + 1)
-        t336 <- rdU axis ((3 * (truncate t324)) + 2)
-        let !s337 = ((t332 * t336) - (t333 * t335))
-        let !s338 = ((t333 * t334) - (t331 * t336))
-        let !s339 = ((t331 * t335) - (t332 * t334))
-        t340 <- rdU scalars (6 * (truncate t324))
-        t341 <- rdU scalars ((6 * (truncate t324)) + 5)
-        t342 <- rdU scalars ((6 * (truncate t324)) + 2)
-        t343 <- rdU scalars ((6 * (truncate t324)) + 3)
-        t344 <- rdU pos (3 * (truncate t324))
-        t345 <- rdU pos ((3 * (truncate t324)) + 1)
-        t346 <- rdU pos ((3 * (truncate t324)) + 2)
-        t347 <- rdU normal (3 * (truncate t324))
-        t348 <- rdU normal ((3 * (truncate t324)) + 1)
-        t349 <- rdU normal ((3 * (truncate t324)) + 2)
-        t350 <- rdU axis (3 * (truncate t324))
-        t351 <- rdU axis ((3 * (truncate t324)) + 1)
-        t352 <- rdU axis ((3 * (truncate t324)) + 2)
-        let !s353 = ((t348 * t352) - (t349 * t351))
-        let !s354 = ((t349 * t350) - (t347 * t352))
-        let !s355 = ((t347 * t351) - (t348 * t350))
-        t356 <- rdU scalars (6 * (truncate t324))
-        t357 <- rdU scalars ((6 * (truncate t324)) + 5)
-        t358 <- rdU scalars ((6 * (truncate t324)) + 2)
-        t359 <- rdU scalars ((6 * (truncate t324)) + 3)
+      t331 <- rdU mouse 1
+      chkI scalars (6 * (truncate t331)) 2 2
+      t332 <- rdU scalars ((6 * (truncate t331)) + 2)
+      if t332 > 0 then do
+        chkI scalars (6 * (truncate t331)) 0 5
+        t333 <- rdU scalars ((6 * (truncate t331)) + 3)
+        t334 <- rdU params 0
+        chkI pos (3 * (truncate t331)) 0 2
+        t335 <- rdU pos (3 * (truncate t331))
+        t336 <- rdU pos ((3 * (truncate t331)) + 1)
+        t337 <- rdU pos ((3 * (truncate t331)) + 2)
+        chkI normal (3 * (truncate t331)) 0 2
+        t338 <- rdU normal (3 * (truncate t331))
+        t339 <- rdU normal ((3 * (truncate t331)) + 1)
+        t340 <- rdU normal ((3 * (truncate t331)) + 2)
+        chkI axis (3 * (truncate t331)) 0 2
+        t341 <- rdU axis (3 * (truncate t331))
+        t342 <- rdU axis ((3 * (truncate t331)) + 1)
+        t343 <- rdU axis ((3 * (truncate t331)) + 2)
+        let !s344 = ((t339 * t343) - (t340 * t342))
+        let !s345 = ((t340 * t341) - (t338 * t343))
+        let !s346 = ((t338 * t342) - (t339 * t341))
+        t347 <- rdU scalars (6 * (truncate t331))
+        t348 <- rdU scalars ((6 * (truncate t331)) + 5)
+        t349 <- rdU scalars ((6 * (truncate t331)) + 2)
+        t350 <- rdU scalars ((6 * (truncate t331)) + 3)
+        t351 <- rdU pos (3 * (truncate t331))
+        t352 <- rdU pos ((3 * (truncate t331)) + 1)
+        t353 <- rdU pos ((3 * (truncate t331)) + 2)
+        t354 <- rdU normal (3 * (truncate t331))
+        t355 <- rdU normal ((3 * (truncate t331)) + 1)
+        t356 <- rdU normal ((3 * (truncate t331)) + 2)
+        t357 <- rdU axis (3 * (truncate t331))
+        t358 <- rdU axis ((3 * (truncate t331)) + 1)
+        t359 <- rdU axis ((3 * (truncate t331)) + 2)
+        let !s360 = ((t355 * t359) - (t356 * t358))
+        let !s361 = ((t356 * t357) - (t354 * t359))
+        let !s362 = ((t354 * t358) - (t355 * t357))
+        t363 <- rdU scalars (6 * (truncate t331))
+        t364 <- rdU scalars ((6 * (truncate t331)) + 5)
+        t365 <- rdU scalars ((6 * (truncate t331)) + 2)
+        t366 <- rdU scalars ((6 * (truncate t331)) + 3)
         chkI mouse 0 2 11
-        t360 <- rdU mouse 2
-        t361 <- rdU mouse 3
-        let !t362 = (t360 / 4.0)
-        let !t363 = (if (abs t362) > 0 then 1.0 else 0.0)
-        let !t364 = (t356 + t361)
-        let !t365 = (cos t364)
-        let !t366 = (sin t364)
-        let !t367 = (1.0 - t363)
-        let !t368 = (t345 + (t362 * ((t365 * t351) + (t366 * s354))))
-        let !t369 = (if (if ((abs t368) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t368 + (negate t368)) else t368)
-        let !t370 = (if (if ((abs t369) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t369 + (negate t369)) else t369)
-        let !s371 = ((t363 * (t344 + (t362 * ((t365 * t350) + (t366 * s353))))) + (t367 * t344))
-        let !s372 = ((t363 * (if (if ((abs t370) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t370 + (negate t370)) else t370)) + (t367 * t345))
-        let !s373 = ((t363 * (t346 + (t362 * ((t365 * t352) + (t366 * s355))))) + (t367 * t346))
-        let !t374 = ((t365 * t350) + (t366 * s353))
-        let !t375 = ((t365 * t351) + (t366 * s354))
-        let !t376 = ((t365 * t352) + (t366 * s355))
-        let !t377 = (sqrt (((t374 * t374) + (t375 * t375)) + (t376 * t376)))
-        let !t378 = (if (abs t362) > 0 then (recip t362) else 0.0)
-        let !t379 = (t378 * ((t344 + (t362 * t374)) + (negate t344)))
-        let !t380 = (t378 * ((if (if ((abs t370) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t370 + (negate t370)) else t370) + (negate t345)))
-        let !t381 = (t380 + (negate t380))
-        let !t382 = (t378 * ((t346 + (t362 * t376)) + (negate t346)))
-        let !t383 = (sqrt (((t379 * t379) + (t381 * t381)) + (t382 * t382)))
-        let !t384 = (if t383 > 0 then (recip (if (t383 - 1.0e-300) > 0 then t383 else 1.0e-300)) else 0.0)
-        let !s385 = ((t363 * (t377 * (t384 * t379))) + (t367 * t374))
-        let !s386 = ((t363 * (t377 * (t384 * t381))) + (t367 * t375))
-        let !s387 = ((t363 * (t377 * (t384 * t382))) + (t367 * t376))
-        let !t388 = (s372 + (t362 * s386))
-        let !t389 = (if (if ((abs t388) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t388 + (negate t388)) else t388)
-        let !t390 = (if (if ((abs t389) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t389 + (negate t389)) else t389)
-        let !s391 = ((t363 * (s371 + (t362 * s385))) + (t367 * s371))
-        let !s392 = ((t363 * (if (if ((abs t390) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t390 + (negate t390)) else t390)) + (t367 * s372))
-        let !s393 = ((t363 * (s373 + (t362 * s387))) + (t367 * s373))
-        let !t394 = (sqrt (((s385 * s385) + (s386 * s386)) + (s387 * s387)))
-        let !t395 = (t378 * ((s371 + (t362 * s385)) + (negate s371)))
-        let !t396 = (t378 * ((if (if ((abs t390) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t390 + (negate t390)) else t390) + (negate s372)))
-        let !t397 = (t396 + (negate t396))
-        let !t398 = (t378 * ((s373 + (t362 * s387)) + (negate s373)))
-        let !t399 = (sqrt (((t395 * t395) + (t397 * t397)) + (t398 * t398)))
-        let !t400 = (if t399 > 0 then (recip (if (t399 - 1.0e-300) > 0 then t399 else 1.0e-300)) else 0.0)
-        let !s401 = ((t363 * (t394 * (t400 * t395))) + (t367 * s385))
-        let !s402 = ((t363 * (t394 * (t400 * t397))) + (t367 * s386))
-        let !s403 = ((t363 * (t394 * (t400 * t398))) + (t367 * s387))
-        let !t404 = (s392 + (t362 * s402))
-        let !t405 = (if (if ((abs t404) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t404 + (negate t404)) else t404)
-        let !t406 = (if (if ((abs t405) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t405 + (negate t405)) else t405)
-        let !s407 = ((t363 * (s391 + (t362 * s401))) + (t367 * s391))
-        let !s408 = ((t363 * (if (if ((abs t406) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t406 + (negate t406)) else t406)) + (t367 * s392))
-        let !s409 = ((t363 * (s393 + (t362 * s403))) + (t367 * s393))
-        let !t410 = (sqrt (((s401 * s401) + (s402 * s402)) + (s403 * s403)))
-        let !t411 = (t378 * ((s391 + (t362 * s401)) + (negate s391)))
-        let !t412 = (t378 * ((if (if ((abs t406) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t406 + (negate t406)) else t406) + (negate s392)))
-        let !t413 = (t412 + (negate t412))
-        let !t414 = (t378 * ((s393 + (t362 * s403)) + (negate s393)))
-        let !t415 = (sqrt (((t411 * t411) + (t413 * t413)) + (t414 * t414)))
-        let !t416 = (if t415 > 0 then (recip (if (t415 - 1.0e-300) > 0 then t415 else 1.0e-300)) else 0.0)
-        let !s417 = ((t363 * (t410 * (t416 * t411))) + (t367 * s401))
-        let !s418 = ((t363 * (t410 * (t416 * t413))) + (t367 * s402))
-        let !s419 = ((t363 * (t410 * (t416 * t414))) + (t367 * s403))
-        let !t420 = (s408 + (t362 * s418))
-        let !t421 = (if (if ((abs t420) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t420 + (negate t420)) else t420)
-        let !t422 = (if (if ((abs t421) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t421 + (negate t421)) else t421)
-        let !s423 = ((t363 * (s407 + (t362 * s417))) + (t367 * s407))
-        let !s424 = ((t363 * (if (if ((abs t422) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t422 + (negate t422)) else t422)) + (t367 * s408))
-        let !s425 = ((t363 * (s409 + (t362 * s419))) + (t367 * s409))
-        let !t426 = (sqrt (((s417 * s417) + (s418 * s418)) + (s419 * s419)))
-        let !t427 = (t378 * ((s407 + (t362 * s417)) + (negate s407)))
-        let !t428 = (t378 * ((if (if ((abs t422) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t422 + (negate t422)) else t422) + (negate s408)))
-        let !t429 = (t428 + (negate t428))
-        let !t430 = (t378 * ((s409 + (t362 * s419)) + (negate s409)))
-        let !t431 = (sqrt (((t427 * t427) + (t429 * t429)) + (t430 * t430)))
-        let !t432 = (if t431 > 0 then (recip (if (t431 - 1.0e-300) > 0 then t431 else 1.0e-300)) else 0.0)
-        let !s433 = ((t363 * (t426 * (t432 * t427))) + (t367 * s417))
-        let !s434 = ((t363 * (t426 * (t432 * t429))) + (t367 * s418))
-        let !s435 = ((t363 * (t426 * (t432 * t430))) + (t367 * s419))
-        t436 <- rdU mouse 4
-        t437 <- rdU mouse 5
-        t438 <- rdU mouse 6
-        t439 <- rdU mouse 7
-        t440 <- rdU mouse 8
-        t441 <- rdU mouse 9
-        let !t442 = (recip t325)
-        let !t443 = (6.283185307179586 * t439)
-        let !s444 = (recip (t327 * ((((2.0 * t442) * t440) * t443) + (t327 * ((t442 * t443) * t443)))))
-        let !s445 = ((t327 * ((t442 * t443) * t443)) * s444)
-        let !s446 = (s423 + (negate t328))
-        let !s447 = (s424 + (negate t329))
-        let !s448 = (s425 + (negate t330))
-        let !s449 = (s423 + (negate t436))
-        let !s450 = (s424 + (negate t437))
-        let !s451 = (s425 + (negate t438))
-        t452 <- rdU mouse 10
-        chkI vel (3 * (truncate t324)) 0 2
-        t453 <- rdU vel (3 * (truncate t324))
-        t454 <- rdU vel ((3 * (truncate t324)) + 1)
-        t455 <- rdU vel ((3 * (truncate t324)) + 2)
-        t456 <- rdU scalars ((6 * (truncate t324)) + 1)
-        let !t457 = (t441 * t327)
-        let !t458 = (negate t457)
-        let !t459 = (((((s447 * t336) - (s448 * t335)) * t331) + (((s448 * t334) - (s446 * t336)) * t332)) + (((s446 * t335) - (s447 * t334)) * t333))
-        let !t460 = (t452 + ((negate ((((((t334 * t453) + (t335 * t454)) + (t336 * t455)) + (t459 * t456)) + (s445 * (((s449 * t334) + (s450 * t335)) + (s451 * t336)))) + (s444 * t452))) / (((t325 * (((t334 * t334) + (t335 * t335)) + (t336 * t336))) + ((t326 * t459) * t459)) + s444)))
-        let !t461 = (if (t460 - t457) > 0 then t457 else t460)
-        let !t462 = (if (t458 - t461) > 0 then t458 else t461)
-        let !s463 = (if (1.0 - (abs (t462 - t462))) > 0 then t462 else 0.0)
-        wrU mouse 10 s463
-        t464 <- rdU scalars ((6 * (truncate t324)) + 2)
-        t465 <- rdU scalars ((6 * (truncate t324)) + 3)
-        t466 <- rdU vel (3 * (truncate t324))
-        t467 <- rdU vel ((3 * (truncate t324)) + 1)
-        t468 <- rdU vel ((3 * (truncate t324)) + 2)
-        t469 <- rdU scalars ((6 * (truncate t324)) + 1)
-        wrU vel (3 * (truncate t324)) (t466 + ((t464 * (s463 - t452)) * t334))
-        wrU vel ((3 * (truncate t324)) + 1) (t467 + ((t464 * (s463 - t452)) * t335))
-        wrU vel ((3 * (truncate t324)) + 2) (t468 + ((t464 * (s463 - t452)) * t336))
-        wrU scalars ((6 * (truncate t324)) + 1) (t469 + ((t465 * (s463 - t452)) * t459))
-        t470 <- rdU mouse 11
-        t471 <- rdU vel (3 * (truncate t324))
-        t472 <- rdU vel ((3 * (truncate t324)) + 1)
-        t473 <- rdU vel ((3 * (truncate t324)) + 2)
-        t474 <- rdU scalars ((6 * (truncate t324)) + 1)
-        let !t475 = (((((s447 * s339) - (s448 * s338)) * t331) + (((s448 * s337) - (s446 * s339)) * t332)) + (((s446 * s338) - (s447 * s337)) * t333))
-        let !t476 = (t470 + ((negate ((((((s337 * t471) + (s338 * t472)) + (s339 * t473)) + (t475 * t474)) + (s445 * (((s449 * s337) + (s450 * s338)) + (s451 * s339)))) + (s444 * t470))) / (((t325 * (((s337 * s337) + (s338 * s338)) + (s339 * s339))) + ((t326 * t475) * t475)) + s444)))
-        let !t477 = (if (t476 - t457) > 0 then t457 else t476)
-        let !t478 = (if (t458 - t477) > 0 then t458 else t477)
-        let !s479 = (if (1.0 - (abs (t478 - t478))) > 0 then t478 else 0.0)
-        wrU mouse 11 s479
-        t480 <- rdU scalars ((6 * (truncate t324)) + 2)
-        t481 <- rdU scalars ((6 * (truncate t324)) + 3)
-        t482 <- rdU vel (3 * (truncate t324))
-        t483 <- rdU vel ((3 * (truncate t324)) + 1)
-        t484 <- rdU vel ((3 * (truncate t324)) + 2)
-        t485 <- rdU scalars ((6 * (truncate t324)) + 1)
-        wrU vel (3 * (truncate t324)) (t482 + ((t480 * (s479 - t470)) * s337))
-        wrU vel ((3 * (truncate t324)) + 1) (t483 + ((t480 * (s479 - t470)) * s338))
-        wrU vel ((3 * (truncate t324)) + 2) (t484 + ((t480 * (s479 - t470)) * s339))
-        wrU scalars ((6 * (truncate t324)) + 1) (t485 + ((t481 * (s479 - t470)) * t475))
+        t367 <- rdU mouse 2
+        t368 <- rdU mouse 3
+        let !t369 = (t367 / 4.0)
+        let !t370 = (if (abs t369) > 0 then 1.0 else 0.0)
+        let !t371 = (t363 + t368)
+        let !t372 = (cos t371)
+        let !t373 = (sin t371)
+        let !t374 = (1.0 - t370)
+        let !t375 = (t352 + (t369 * ((t372 * t358) + (t373 * s361))))
+        let !t376 = (if (if ((abs t375) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t375 + (negate t375)) else t375)
+        let !t377 = (if (if ((abs t376) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t376 + (negate t376)) else t376)
+        let !s378 = ((t370 * (t351 + (t369 * ((t372 * t357) + (t373 * s360))))) + (t374 * t351))
+        let !s379 = ((t370 * (if (if ((abs t377) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t377 + (negate t377)) else t377)) + (t374 * t352))
+        let !s380 = ((t370 * (t353 + (t369 * ((t372 * t359) + (t373 * s362))))) + (t374 * t353))
+        let !t381 = ((t372 * t357) + (t373 * s360))
+        let !t382 = ((t372 * t358) + (t373 * s361))
+        let !t383 = ((t372 * t359) + (t373 * s362))
+        let !t384 = (sqrt (((t381 * t381) + (t382 * t382)) + (t383 * t383)))
+        let !t385 = (if (abs t369) > 0 then (recip t369) else 0.0)
+        let !t386 = (t385 * ((t351 + (t369 * t381)) + (negate t351)))
+        let !t387 = (t385 * ((if (if ((abs t377) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t377 + (negate t377)) else t377) + (negate t352)))
+        let !t388 = (t387 + (negate t387))
+        let !t389 = (t385 * ((t353 + (t369 * t383)) + (negate t353)))
+        let !t390 = (sqrt (((t386 * t386) + (t388 * t388)) + (t389 * t389)))
+        let !t391 = (if t390 > 0 then (recip (if (t390 - 1.0e-300) > 0 then t390 else 1.0e-300)) else 0.0)
+        let !s392 = ((t370 * (t384 * (t391 * t386))) + (t374 * t381))
+        let !s393 = ((t370 * (t384 * (t391 * t388))) + (t374 * t382))
+        let !s394 = ((t370 * (t384 * (t391 * t389))) + (t374 * t383))
+        let !t395 = (s379 + (t369 * s393))
+        let !t396 = (if (if ((abs t395) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t395 + (negate t395)) else t395)
+        let !t397 = (if (if ((abs t396) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t396 + (negate t396)) else t396)
+        let !s398 = ((t370 * (s378 + (t369 * s392))) + (t374 * s378))
+        let !s399 = ((t370 * (if (if ((abs t397) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t397 + (negate t397)) else t397)) + (t374 * s379))
+        let !s400 = ((t370 * (s380 + (t369 * s394))) + (t374 * s380))
+        let !t401 = (sqrt (((s392 * s392) + (s393 * s393)) + (s394 * s394)))
+        let !t402 = (t385 * ((s378 + (t369 * s392)) + (negate s378)))
+        let !t403 = (t385 * ((if (if ((abs t397) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t397 + (negate t397)) else t397) + (negate s379)))
+        let !t404 = (t403 + (negate t403))
+        let !t405 = (t385 * ((s380 + (t369 * s394)) + (negate s380)))
+        let !t406 = (sqrt (((t402 * t402) + (t404 * t404)) + (t405 * t405)))
+        let !t407 = (if t406 > 0 then (recip (if (t406 - 1.0e-300) > 0 then t406 else 1.0e-300)) else 0.0)
+        let !s408 = ((t370 * (t401 * (t407 * t402))) + (t374 * s392))
+        let !s409 = ((t370 * (t401 * (t407 * t404))) + (t374 * s393))
+        let !s410 = ((t370 * (t401 * (t407 * t405))) + (t374 * s394))
+        let !t411 = (s399 + (t369 * s409))
+        let !t412 = (if (if ((abs t411) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t411 + (negate t411)) else t411)
+        let !t413 = (if (if ((abs t412) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t412 + (negate t412)) else t412)
+        let !s414 = ((t370 * (s398 + (t369 * s408))) + (t374 * s398))
+        let !s415 = ((t370 * (if (if ((abs t413) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t413 + (negate t413)) else t413)) + (t374 * s399))
+        let !s416 = ((t370 * (s400 + (t369 * s410))) + (t374 * s400))
+        let !t417 = (sqrt (((s408 * s408) + (s409 * s409)) + (s410 * s410)))
+        let !t418 = (t385 * ((s398 + (t369 * s408)) + (negate s398)))
+        let !t419 = (t385 * ((if (if ((abs t413) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t413 + (negate t413)) else t413) + (negate s399)))
+        let !t420 = (t419 + (negate t419))
+        let !t421 = (t385 * ((s400 + (t369 * s410)) + (negate s400)))
+        let !t422 = (sqrt (((t418 * t418) + (t420 * t420)) + (t421 * t421)))
+        let !t423 = (if t422 > 0 then (recip (if (t422 - 1.0e-300) > 0 then t422 else 1.0e-300)) else 0.0)
+        let !s424 = ((t370 * (t417 * (t423 * t418))) + (t374 * s408))
+        let !s425 = ((t370 * (t417 * (t423 * t420))) + (t374 * s409))
+        let !s426 = ((t370 * (t417 * (t423 * t421))) + (t374 * s410))
+        let !t427 = (s415 + (t369 * s425))
+        let !t428 = (if (if ((abs t427) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t427 + (negate t427)) else t427)
+        let !t429 = (if (if ((abs t428) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t428 + (negate t428)) else t428)
+        let !s430 = ((t370 * (s414 + (t369 * s424))) + (t374 * s414))
+        let !s431 = ((t370 * (if (if ((abs t429) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t429 + (negate t429)) else t429)) + (t374 * s415))
+        let !s432 = ((t370 * (s416 + (t369 * s426))) + (t374 * s416))
+        let !t433 = (sqrt (((s424 * s424) + (s425 * s425)) + (s426 * s426)))
+        let !t434 = (t385 * ((s414 + (t369 * s424)) + (negate s414)))
+        let !t435 = (t385 * ((if (if ((abs t429) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t429 + (negate t429)) else t429) + (negate s415)))
+        let !t436 = (t435 + (negate t435))
+        let !t437 = (t385 * ((s416 + (t369 * s426)) + (negate s416)))
+        let !t438 = (sqrt (((t434 * t434) + (t436 * t436)) + (t437 * t437)))
+        let !t439 = (if t438 > 0 then (recip (if (t438 - 1.0e-300) > 0 then t438 else 1.0e-300)) else 0.0)
+        let !s440 = ((t370 * (t433 * (t439 * t434))) + (t374 * s424))
+        let !s441 = ((t370 * (t433 * (t439 * t436))) + (t374 * s425))
+        let !s442 = ((t370 * (t433 * (t439 * t437))) + (t374 * s426))
+        t443 <- rdU mouse 4
+        t444 <- rdU mouse 5
+        t445 <- rdU mouse 6
+        t446 <- rdU mouse 7
+        t447 <- rdU mouse 8
+        t448 <- rdU mouse 9
+        let !t449 = (recip t332)
+        let !t450 = (6.283185307179586 * t446)
+        let !s451 = (recip (t334 * ((((2.0 * t449) * t447) * t450) + (t334 * ((t449 * t450) * t450)))))
+        let !s452 = ((t334 * ((t449 * t450) * t450)) * s451)
+        let !s453 = (s430 + (negate t335))
+        let !s454 = (s431 + (negate t336))
+        let !s455 = (s432 + (negate t337))
+        let !s456 = (s430 + (negate t443))
+        let !s457 = (s431 + (negate t444))
+        let !s458 = (s432 + (negate t445))
+        t459 <- rdU mouse 10
+        chkI vel (3 * (truncate t331)) 0 2
+        t460 <- rdU vel (3 * (truncate t331))
+        t461 <- rdU vel ((3 * (truncate t331)) + 1)
+        t462 <- rdU vel ((3 * (truncate t331)) + 2)
+        t463 <- rdU scalars ((6 * (truncate t331)) + 1)
+        let !t464 = (t448 * t334)
+        let !t465 = (negate t464)
+        let !t466 = (((((s454 * t343) - (s455 * t342)) * t338) + (((s455 * t341) - (s453 * t343)) * t339)) + (((s453 * t342) - (s454 * t341)) * t340))
+        let !t467 = (t459 + ((negate ((((((t341 * t460) + (t342 * t461)) + (t343 * t462)) + (t466 * t463)) + (s452 * (((s456 * t341) + (s457 * t342)) + (s458 * t343)))) + (s451 * t459))) / (((t332 * (((t341 * t341) + (t342 * t342)) + (t343 * t343))) + ((t333 * t466) * t466)) + s451)))
+        let !t468 = (if (t467 - t464) > 0 then t464 else t467)
+        let !t469 = (if (t465 - t468) > 0 then t465 else t468)
+        let !s470 = (if (1.0 - (abs (t469 - t469))) > 0 then t469 else 0.0)
+        wrU mouse 10 s470
+        t471 <- rdU scalars ((6 * (truncate t331)) + 2)
+        t472 <- rdU scalars ((6 * (truncate t331)) + 3)
+        t473 <- rdU vel (3 * (truncate t331))
+        t474 <- rdU vel ((3 * (truncate t331)) + 1)
+        t475 <- rdU vel ((3 * (truncate t331)) + 2)
+        t476 <- rdU scalars ((6 * (truncate t331)) + 1)
+        wrU vel (3 * (truncate t331)) (t473 + ((t471 * (s470 - t459)) * t341))
+        wrU vel ((3 * (truncate t331)) + 1) (t474 + ((t471 * (s470 - t459)) * t342))
+        wrU vel ((3 * (truncate t331)) + 2) (t475 + ((t471 * (s470 - t459)) * t343))
+        wrU scalars ((6 * (truncate t331)) + 1) (t476 + ((t472 * (s470 - t459)) * t466))
+        t477 <- rdU mouse 11
+        t478 <- rdU vel (3 * (truncate t331))
+        t479 <- rdU vel ((3 * (truncate t331)) + 1)
+        t480 <- rdU vel ((3 * (truncate t331)) + 2)
+        t481 <- rdU scalars ((6 * (truncate t331)) + 1)
+        let !t482 = (((((s454 * s346) - (s455 * s345)) * t338) + (((s455 * s344) - (s453 * s346)) * t339)) + (((s453 * s345) - (s454 * s344)) * t340))
+        let !t483 = (t477 + ((negate ((((((s344 * t478) + (s345 * t479)) + (s346 * t480)) + (t482 * t481)) + (s452 * (((s456 * s344) + (s457 * s345)) + (s458 * s346)))) + (s451 * t477))) / (((t332 * (((s344 * s344) + (s345 * s345)) + (s346 * s346))) + ((t333 * t482) * t482)) + s451)))
+        let !t484 = (if (t483 - t464) > 0 then t464 else t483)
+        let !t485 = (if (t465 - t484) > 0 then t465 else t484)
+        let !s486 = (if (1.0 - (abs (t485 - t485))) > 0 then t485 else 0.0)
+        wrU mouse 11 s486
+        t487 <- rdU scalars ((6 * (truncate t331)) + 2)
+        t488 <- rdU scalars ((6 * (truncate t331)) + 3)
+        t489 <- rdU vel (3 * (truncate t331))
+        t490 <- rdU vel ((3 * (truncate t331)) + 1)
+        t491 <- rdU vel ((3 * (truncate t331)) + 2)
+        t492 <- rdU scalars ((6 * (truncate t331)) + 1)
+        wrU vel (3 * (truncate t331)) (t489 + ((t487 * (s486 - t477)) * s344))
+        wrU vel ((3 * (truncate t331)) + 1) (t490 + ((t487 * (s486 - t477)) * s345))
+        wrU vel ((3 * (truncate t331)) + 2) (t491 + ((t487 * (s486 - t477)) * s346))
+        wrU scalars ((6 * (truncate t331)) + 1) (t492 + ((t488 * (s486 - t477)) * t482))
         pure ()
       else do
         pure ()
@@ -1415,33 +1394,33 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t486 <- rdU meta 0
-  loopI 0.0 t486 $ \i487 -> do
-    let !d487 = fromIntegral i487 :: Double
-    chkI bodyPrev (2 * i487) 1 1
-    wrU bodyPrev ((2 * i487) + 1) 0.0
+  t493 <- rdU meta 0
+  loopI 0.0 t493 $ \i494 -> do
+    let !d494 = fromIntegral i494 :: Double
+    chkI bodyPrev (2 * i494) 1 1
+    wrU bodyPrev ((2 * i494) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i488 -> do
-    let !d488 = fromIntegral i488 :: Double
-    chkI contacts (30 * i488) 2 25
-    t489 <- rdU contacts ((30 * i488) + 2)
-    chkI prev (4 * i488) 0 3
-    wrU prev (4 * i488) t489
-    t490 <- rdU contacts ((30 * i488) + 3)
-    wrU prev ((4 * i488) + 1) t490
-    t491 <- rdU contacts ((30 * i488) + 24)
-    wrU prev ((4 * i488) + 2) t491
-    t492 <- rdU contacts ((30 * i488) + 25)
-    wrU prev ((4 * i488) + 3) t492
-    chkI bodyPrev (2 * (truncate t489)) 1 1
-    t493 <- rdU bodyPrev ((2 * (truncate t489)) + 1)
-    if (0.5 - t493) > 0 then do
-      chkI bodyPrev (2 * (truncate t489)) 0 0
-      wrU bodyPrev (2 * (truncate t489)) d488
+  loopI 0.0 t9 $ \i495 -> do
+    let !d495 = fromIntegral i495 :: Double
+    chkI contacts (30 * i495) 2 25
+    t496 <- rdU contacts ((30 * i495) + 2)
+    chkI prev (4 * i495) 0 3
+    wrU prev (4 * i495) t496
+    t497 <- rdU contacts ((30 * i495) + 3)
+    wrU prev ((4 * i495) + 1) t497
+    t498 <- rdU contacts ((30 * i495) + 24)
+    wrU prev ((4 * i495) + 2) t498
+    t499 <- rdU contacts ((30 * i495) + 25)
+    wrU prev ((4 * i495) + 3) t499
+    chkI bodyPrev (2 * (truncate t496)) 1 1
+    t500 <- rdU bodyPrev ((2 * (truncate t496)) + 1)
+    if (0.5 - t500) > 0 then do
+      chkI bodyPrev (2 * (truncate t496)) 0 0
+      wrU bodyPrev (2 * (truncate t496)) d495
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t489)) + 1) (t493 + 1.0)
+    wrU bodyPrev ((2 * (truncate t496)) + 1) (t500 + 1.0)
     pure ()
   pure ()
 
