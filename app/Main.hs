@@ -36,7 +36,7 @@ data Command
   | Compile FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
-  | Bench String String Int Int Int Int Bool (Maybe FilePath) Bool
+  | Bench String String Int Int Int Int Bool (Maybe FilePath) (Maybe FilePath) Bool
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -64,6 +64,7 @@ commandParser = hsubparser
                                    <*> option auto (long "rounds" <> metavar "R" <> value 3 <> help "Time every scene R times, round after round, and keep its fastest round (default 3)")
                                    <*> switch (long "json" <> help "Print JSON")
                                    <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the settled scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
+                                   <*> optional (strOption (long "from" <> metavar "DIR" <> help "Time the scenes DIR/SPACE-N.json that --scenes wrote instead of settling them again"))
                                    <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one"))
                        (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "compile" (info (Compile <$> strOption (long "out" <> metavar "DIR" <> value "Lib" <> help "The library's source directory (default: Lib)"))
@@ -104,7 +105,7 @@ main = do
       putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
-    Bench spaces sizes settle warmup steps rounds json scenes generic -> bench spaces sizes settle warmup steps rounds json scenes generic
+    Bench spaces sizes settle warmup steps rounds json scenes from generic -> bench spaces sizes settle warmup steps rounds json scenes from generic
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -209,8 +210,8 @@ simulate path steps every = do
 -- with the lowest median: on a shared machine, what others run only ever
 -- adds time, and a slow spell of minutes would otherwise decide the scenes
 -- it happens to fall on.
-bench :: String -> String -> Int -> Int -> Int -> Int -> Bool -> Maybe FilePath -> Bool -> IO ()
-bench spacesArg sizesArg settle warmup steps rounds json scenesDir generic = do
+bench :: String -> String -> Int -> Int -> Int -> Int -> Bool -> Maybe FilePath -> Maybe FilePath -> Bool -> IO ()
+bench spacesArg sizesArg settle warmup steps rounds json scenesDir fromDir generic = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   when (settle < 0) (usageError "--settle: must not be negative")
@@ -221,15 +222,22 @@ bench spacesArg sizesArg settle warmup steps rounds json scenesDir generic = do
       settled (sp, n) = do
         hPutStrLn stderr ("bench: " ++ spaceName sp ++ " " ++ show n ++ ": settling " ++ show settle ++ " steps")
         settleScene settle (benchScene sp n)
-  case scenesDir of
-    Just dir -> do
+      sceneFile dir (sp, n) = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
+      saved dir c = do
+        let file = sceneFile dir c
+        exists <- doesFileExist file
+        text <- if exists then BL.readFile file else usageError (file ++ ": no such scene file (write the scenes with --scenes " ++ dir ++ ")")
+        either (usageError . ((file ++ ": ") ++)) pure (parseScene text)
+  case (scenesDir, fromDir) of
+    (Just _, Just _) -> usageError "--scenes and --from: write the scenes or time them, not both"
+    (Just dir, _) -> do
       createDirectoryIfMissing True dir
       forM_ cases $ \(sp, n) -> do
         scene <- settled (sp, n)
-        let file = dir </> (spaceName sp ++ "-" ++ show n ++ ".json")
-        BL.writeFile file (A.encode (sceneJSON scene))
-        putStrLn file
-    Nothing -> timeScenes =<< mapM settled cases
+        BL.writeFile (sceneFile dir (sp, n)) (A.encode (sceneJSON scene))
+        putStrLn (sceneFile dir (sp, n))
+    (Nothing, Just dir) -> timeScenes =<< mapM (saved dir) cases
+    (Nothing, Nothing) -> timeScenes =<< mapM settled cases
   where
     timeScenes scenes = do
       perRound <- forM [1 .. rounds] $ \k -> do
@@ -240,7 +248,7 @@ bench spacesArg sizesArg settle warmup steps rounds json scenesDir generic = do
         then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
                                               , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
                                               , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
-                                              , "rounds" A..= rounds, "settle" A..= settle, "warmup" A..= warmup
+                                              , "rounds" A..= rounds, "settle" A..= (settle <$ maybe (Just ()) (const Nothing) fromDir), "warmup" A..= warmup
                                               , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]
                                    | r <- results ])
         else do

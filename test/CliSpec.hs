@@ -47,6 +47,12 @@ newtype BenchRounds = BenchRounds Int deriving (Show, Eq)
 instance A.FromJSON BenchRounds where
   parseJSON = A.withObject "bench result" $ \o -> BenchRounds <$> o .: "rounds"
 
+-- | What a bench result says of how its scene was settled (null: timed as read).
+newtype BenchSettle = BenchSettle (Maybe Int) deriving (Show, Eq)
+
+instance A.FromJSON BenchSettle where
+  parseJSON = A.withObject "bench result" $ \o -> BenchSettle <$> o .: "settle"
+
 expectedNames :: [String]
 expectedNames =
   [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
@@ -209,7 +215,7 @@ spec = do
       A.eitherDecode out `shouldBe` Right [BenchRounds 2, BenchRounds 2]
       (code0, _, err0) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--rounds", "0"]
       (code0, "--rounds: must be at least 1" `isInfixOf` err0) `shouldBe` (ExitFailure 2, True)
-    it "bench --scenes DIR writes each scene after --settle K steps, the same scene as placed with --settle 0" $
+    it "bench --scenes DIR writes each scene after --settle K steps (as placed with --settle 0), and bench --from DIR times them" $
       withSystemTempDirectory "manifold-scenes" $ \dir -> do
         let write :: Int -> IO Scene
             write k = do
@@ -227,3 +233,11 @@ spec = do
         height settled `shouldSatisfy` (< height placed - 1)
         (codeN, _, errN) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--settle", "-1"]
         (codeN, "--settle: must not be negative" `isInfixOf` errN) `shouldBe` (ExitFailure 2, True)
+        -- --from times the written scenes as they are: no settling
+        (codeF, outF, errF) <- run ["bench", "--from", dir </> "300", "--spaces", "sphere", "--sizes", "10", "--warmup", "0", "--steps", "2", "--rounds", "1", "--json"]
+        (codeF, "settling" `isInfixOf` errF) `shouldBe` (ExitSuccess, False)
+        A.eitherDecode outF `shouldBe` Right [BenchSettle Nothing]
+        (codeM, _, errM) <- run ["bench", "--from", dir </> "300", "--spaces", "torus", "--sizes", "10"]
+        (codeM, "torus-10.json: no such scene file" `isInfixOf` errM) `shouldBe` (ExitFailure 2, True)
+        (codeB, _, errB) <- run ["bench", "--from", dir </> "300", "--scenes", dir </> "x", "--sizes", "10"]
+        (codeB, "not both" `isInfixOf` errB) `shouldBe` (ExitFailure 2, True)
