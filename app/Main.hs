@@ -256,7 +256,7 @@ bench spacesArg sizesArg settle warmup steps rounds json scenesDir fromDir gener
                 r : _ -> map fst (brPhases r)
                 [] -> []
           putStrLn (row (["space", "bodies", "size", "contacts", "median ms", "p10 ms", "p90 ms"] ++ phaseNames))
-          mapM_ (\r -> putStrLn (row ([brSpace r, show (brBodies r), fixed 4 (brSize r), show (brContacts r)
+          mapM_ (\r -> putStrLn (row ([brSpace r, show (brBodies r), fixed 4 (brSize r), fixed 1 (brContacts r)
                                       , fixed 3 (brMedianMs r), fixed 3 (brP10Ms r), fixed 3 (brP90Ms r)]
                                       ++ map (fixed 3 . snd) (brPhases r)))) results
           putStrLn "(phase columns: median ms of each phase of the step)"

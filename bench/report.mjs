@@ -128,7 +128,7 @@ function report() {
   const nSteps = native.length ? native[0].steps : null;
   const fastestOf = (r) => r > 1 ? ", the fastest of " + r + " rounds" : "";
   // runs before the benchmarks learnt to settle once (2026-11-22) left "settle" out and settled for "warmup" steps
-  const settled = (settle) => (settle === undefined ? "" : settle === null ? "scenes settled as given, " : "scenes settled " + settle + " steps, ");
+  const settled = (settle) => (settle === undefined ? "" : settle === null ? "scenes as `manifold bench --scenes` wrote them, " : "scenes settled " + settle + " steps, ");
   const warmedUp = (w, settle) => (w === undefined ? "" : w + (settle === undefined ? " steps to settle, " : " steps of warm-up, "));
   if (nSteps) settings.push("native: " + settled(native[0].settle) + warmedUp(native[0].warmup, native[0].settle) +
     nSteps + " steps timed" + fastestOf(native[0].rounds || 1));

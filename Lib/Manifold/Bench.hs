@@ -32,7 +32,7 @@ data BenchResult = BenchResult
   { brSpace :: String
   , brBodies :: Int -- ^ bodies placed (fewer than asked when the space is full)
   , brSize :: Double
-  , brContacts :: Int -- ^ contacts at the end
+  , brContacts :: Double -- ^ contact rows, the mean over the timed steps (a settled pile's count moves by a tenth from step to step)
   , brMedianMs :: Double
   , brP10Ms :: Double
   , brP90Ms :: Double
@@ -161,13 +161,17 @@ runBench progress generic warmup steps scene = do
   replicateM_ warmup (stepNative w)
   progress (spaceName sp ++ ": " ++ show placed ++ " bodies, timing " ++ show steps ++ " steps")
   let phases = stepPhasesNative w
-  phaseTimes <- forM [1 .. steps] $ \_ -> forM phases $ \(_, run) -> do
-    t0 <- getMonotonicTime
-    run
-    t1 <- getMonotonicTime
-    pure ((t1 - t0) * 1000)
-  contacts <- contactCount w
-  let times = map sum phaseTimes
+  timed <- forM [1 .. steps] $ \_ -> do
+    ts <- forM phases $ \(_, run) -> do
+      t0 <- getMonotonicTime
+      run
+      t1 <- getMonotonicTime
+      pure ((t1 - t0) * 1000)
+    c <- contactCount w
+    pure (ts, c)
+  let phaseTimes = map fst timed
+      contacts = fromIntegral (sum (map snd timed)) / fromIntegral steps
+      times = map sum phaseTimes
       quantile :: [Double] -> Double -> Double
       quantile xs x = let sorted = sort xs in sorted !! min (length sorted - 1) (floor (x * fromIntegral (length sorted)))
       q = quantile times
