@@ -85,7 +85,7 @@ if (!scenesDir) {
   scenesDir = tmpDir;
   const exe = manifoldExe();
   const settleArgs = settle === null ? [] : ["--settle", String(settle)];
-  log("writing the settled scenes: " + exe + " bench --scenes " + tmpDir + " " + settleArgs.join(" "));
+  log("writing the settled scenes: " + [exe, "bench", "--scenes", tmpDir].concat(settleArgs).join(" "));
   execFileSync(exe, ["bench", "--scenes", tmpDir, "--spaces", spaces.join(","), "--sizes", sizes.join(",")].concat(settleArgs),
     { cwd: ROOT, stdio: ["ignore", "ignore", "inherit"] });
 }
