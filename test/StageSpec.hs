@@ -407,6 +407,22 @@ exprSpec = do
     let bad = [o | o <- outs, not (agree (oNative o) (oJs o))]
     unless (null bad) $ expectationFailure $ unlines (map showOutcome bad)
 
+  it "floor is Math.floor bit for bit natively: ±0, halves, whole numbers, near 2^52 and 2^53, infinities, NaN" $ do
+    -- a floor that truncates through an Int (instead of C's) slips above
+    -- 2^63 and at −0: this pins the native floor to JavaScript's
+    let edges = concat [ [x, -x] | x <- [ 0, 0.25, 0.5, 0.75, 1, 1.5, 2, 2.5, 1e-300, 5e-324, 0.9999999999999999
+                                        , 4503599627370495.5, 4503599627370496, 4503599627370497
+                                        , 9007199254740991, 9007199254740992, 9007199254740994
+                                        , 9.223372036854776e18, 1.8446744073709552e19, 1e300, 1 / 0 ] ]
+                    ++ [0 / 0]
+        spread = [ s * m * 10 ** e | s <- [1, -1], m <- [1.0000000000000002, 3.7, 9.99], e <- [-3 .. 17] ]
+        points = [ [x, 0, 0] | x <- edges ++ spread ]
+    outs <- runBatch [Case (Floor (Var 0)) points]
+    length outs `shouldBe` length points
+    let sameBits a b = (isNaN a && isNaN b) || castDoubleToWord64 a == castDoubleToWord64 b
+        bad = [o | o <- outs, not (sameBits (oNative o) (oJs o))]
+    unless (null bad) $ expectationFailure $ unlines (map showOutcome bad)
+
   it "pow agrees at base ±1 with a NaN or infinite exponent" $ do
     -- Haskell's (**) is C pow: pow(1, y) = 1 for every y and pow(-1, ±Inf)
     -- = 1; JavaScript's Math.pow gives NaN for all of them.
