@@ -143,7 +143,7 @@ contactsPerBody = 8
 
 -- | The broad phase's hash table has at most this many buckets.
 maxBuckets :: Int
-maxBuckets = 32768
+maxBuckets = 65536
 
 verticesPerBody :: Layout -> Int
 verticesPerBody l = 1 + polyDirections (polygon l) * polySteps (polygon l)

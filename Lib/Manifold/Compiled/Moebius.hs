@@ -88,8 +88,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   t5 <- getR v1
   let !t6 = (2.0 * t5)
   let !s7 = (if (t6 - 9.1552734375e-5) > 0 then t6 else 9.1552734375e-5)
-  let !t8 = (2.0 * t0)
-  let !t9 = (if (t8 - 32768.0) > 0 then 32768.0 else t8)
+  let !t8 = (8.0 * t0)
+  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
   let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
   wrU meta 4 s10
   wrU meta 5 s7
