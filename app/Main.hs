@@ -37,7 +37,21 @@ data Command
   | Compile FilePath
   | Serve Int FilePath
   | Sim FilePath Int Int
-  | Bench String String Int Int Int Int Bool (Maybe FilePath) (Maybe FilePath) Bool
+  | Bench BenchArgs
+
+-- | @manifold bench@'s options, as given (checked by 'bench').
+data BenchArgs = BenchArgs
+  { bSpaces :: String -- ^ comma-separated space names
+  , bSizes :: String -- ^ comma-separated body counts
+  , bSettle :: Int -- ^ steps each scene runs once before it is saved
+  , bWarmup :: Int -- ^ steps from the saved scene before the timed ones, every round
+  , bSteps :: Int -- ^ steps timed
+  , bRounds :: Int
+  , bJson :: Bool
+  , bScenes :: Maybe FilePath -- ^ write the settled scenes here instead of timing
+  , bFrom :: Maybe FilePath -- ^ time the scenes written here instead of settling
+  , bGeneric :: Bool -- ^ the generic step even where a compiled one exists
+  }
 
 data GeodesicArgs = GeodesicArgs
   { gSpace :: String
@@ -57,7 +71,7 @@ commandParser = hsubparser
                                  <*> option auto (long "steps" <> metavar "K" <> help "Steps to simulate")
                                  <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)"))
                        (progDesc "Simulate a scene headless and print the bodies' states as JSON"))
- <> command "bench" (info (Bench <$> strOption (long "spaces" <> metavar "A,B" <> value (intercalate "," (map spaceName benchSpaces)) <> help "Spaces (default: plane, sphere, torus, trumpet, projective-plane, rectangle)")
+ <> command "bench" (info (fmap Bench $ BenchArgs <$> strOption (long "spaces" <> metavar "A,B" <> value (intercalate "," (map spaceName benchSpaces)) <> help "Spaces (default: plane, sphere, torus, trumpet, projective-plane, rectangle)")
                                    <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
                                    <*> option auto (long "settle" <> metavar "K" <> value defaultSettleSteps <> help ("Steps each scene runs once, from its placement, before it is saved and timed (default " ++ show defaultSettleSteps ++ ")"))
                                    <*> option auto (long "warmup" <> metavar "W" <> value 50 <> help "Steps run from the saved scene before the timed steps, in every round (default 50)")
@@ -106,7 +120,7 @@ main = do
       putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
     Sim path steps every -> simulate path steps every
-    Bench spaces sizes settle warmup steps rounds json scenes from generic -> bench spaces sizes settle warmup steps rounds json scenes from generic
+    Bench args -> bench args
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -211,8 +225,9 @@ simulate path steps every = do
 -- with the lowest median: on a shared machine, what others run only ever
 -- adds time, and a slow spell of minutes would otherwise decide the scenes
 -- it happens to fall on.
-bench :: String -> String -> Int -> Int -> Int -> Int -> Bool -> Maybe FilePath -> Maybe FilePath -> Bool -> IO ()
-bench spacesArg sizesArg settle warmup steps rounds json scenesDir fromDir generic = do
+bench :: BenchArgs -> IO ()
+bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWarmup = warmup, bSteps = steps
+                , bRounds = rounds, bJson = json, bScenes = scenesDir, bFrom = fromDir, bGeneric = generic } = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   when (settle < 0) (usageError "--settle: must not be negative")
