@@ -2,7 +2,8 @@
 // `manifold bench --scenes DIR`, run under node, after W steps: contact rows
 // per body and per touching pair, how far circles overlap one another (a
 // measure independent of how contacts are made: two circles overlap by
-// r1 + r2 − |p1 − p2|), and how many rows find last step's row of the same
+// r1 + r2 − |p1 − p2|), the pairs whose bounds overlap and the edge lookups
+// their narrow phase makes, per body, and how many rows find last step's row of the same
 // key for warm starting over the next 20 steps.
 // Usage: node bench/pile.mjs DIR [--steps W]   (JSON lines on stdout)
 import fs from "node:fs";
@@ -62,6 +63,29 @@ for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
       }
   }
 
+  // the narrow phase's work: pairs whose bounding circles overlap (not
+  // through an image), and the edge lookups they make (a vertex of either
+  // body within the other's bounding radius)
+  const ne = E.directions, ns = E.steps, per = E.verticesPerBody;
+  const vertex = (i, d) => { const v = 3 * (per * i + 1 + d * ns + ns - 1); return [a.verts[v], a.verts[v + 1], a.verts[v + 2]]; };
+  const dist2 = (p, q) => (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 + (p[2] - q[2]) ** 2;
+  const reach = 2 * Math.max(...Array.from({ length: n }, (_, i) => radius(i))), near = new Map();
+  const cellOf = (p) => p.map((x) => Math.floor(x / reach));
+  for (let i = 0; i < n; i++) { const kk = cellOf(p3(i)).join(","); if (!near.has(kk)) near.set(kk, []); near.get(kk).push(i); }
+  let candidates = 0, lookups = 0;
+  for (let i = 0; i < n; i++) {
+    const c = cellOf(p3(i));
+    for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) for (let dz = -1; dz <= 1; dz++)
+      for (const j of near.get([c[0] + dx, c[1] + dy, c[2] + dz].join(",")) || []) {
+        if (j <= i || dist2(p3(i), p3(j)) >= (radius(i) + radius(j)) ** 2) continue;
+        candidates++;
+        for (let d = 0; d < ne; d++) {
+          if (dist2(vertex(i, d), p3(j)) < radius(j) ** 2) lookups++;
+          if (dist2(vertex(j, d), p3(i)) < radius(i) ** 2) lookups++;
+        }
+      }
+  }
+
   let hits = 0, total = 0, last = new Set(now.map((r) => r.owner + ":" + r.key));
   for (let s = 0; s < 20; s++) {
     world.step(1);
@@ -73,6 +97,7 @@ for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
   const result = {
     space: scene.space, bodies: n, steps: settle,
     rowsPerBody: now.length / n, rowsPerPair: histogram,
+    candidatePairsPerBody: candidates / n, edgeLookupsPerBody: lookups / n,
     circleOverlapMean: count ? sum / count : 0, circleOverlapMax: worst, touchingCirclePairs: count,
     warmStartHits: total ? hits / total : 1,
   };
