@@ -9,31 +9,16 @@
 // that the counts per bucket it gets equal the engine's own table for the
 // same step, and stops if they differ.
 // Usage: node bench/cells.mjs DIR [--steps W]   (JSON lines on stdout)
-import fs from "node:fs";
-import path from "node:path";
-import vm from "node:vm";
-import { fileURLToPath } from "node:url";
+import { commandLine, worlds } from "./worlds.mjs";
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "..");
-const args = process.argv.slice(2);
-const dir = args[0];
-if (!dir) { console.error("usage: node bench/cells.mjs DIR [--steps W]"); process.exit(2); }
-const k = args.indexOf("--steps");
-const steps = k >= 0 ? Number(args[k + 1]) : 1;
-
-function load(file) { vm.runInThisContext(fs.readFileSync(file, "utf8"), { filename: file }); }
-load(path.join(root, "web/js/world.js"));
+const { dir, option } = commandLine("node bench/cells.mjs DIR [--steps W]");
+const steps = option("--steps", 1);
 
 const hash = ([x, y, z]) => x * 73856093 + y * 19349663 + z * 83492791;
 const bucketOf = (buckets, c) => { const h = hash(c); return h - buckets * Math.floor(h / buckets); };
 const same = (a, b) => a[0] === b[0] && a[1] === b[1] && a[2] === b[2];
 
-for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
-  const scene = JSON.parse(fs.readFileSync(path.join(dir, f), "utf8"));
-  if (!globalThis.Manifold || !globalThis.Manifold.spaces[scene.space]) load(path.join(root, "web/gen", "space-" + scene.space + ".js"));
-  const W = globalThis.ManifoldWeb.world;
-  const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
-  world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
+for (const { file: f, scene, world } of worlds(dir)) {
   world.step(steps);
   // the broad phase once more, on the positions as they are now (a step
   // moves the bodies after it has built its table)

@@ -1,30 +1,13 @@
 // The generated engine (web/gen) under node, on the scenes `manifold bench
 // --scenes DIR` writes: the JavaScript half of "native vs JS" without a
 // browser. Usage: node bench/node.mjs DIR [--warmup W] [--steps S]
-import fs from "node:fs";
-import path from "node:path";
-import vm from "node:vm";
-import { fileURLToPath } from "node:url";
+import { commandLine, worlds } from "./worlds.mjs";
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "..");
-const args = process.argv.slice(2);
-const dir = args[0];
-if (!dir) { console.error("usage: node bench/node.mjs DIR [--warmup W] [--steps S]"); process.exit(2); }
-const opt = (name, dflt) => { const k = args.indexOf(name); return k >= 0 ? Number(args[k + 1]) : dflt; };
-const warmup = opt("--warmup", 50), steps = opt("--steps", 50);
-
-function load(file) { vm.runInThisContext(fs.readFileSync(file, "utf8"), { filename: file }); }
-globalThis.performance = globalThis.performance || performance;
-load(path.join(root, "web/js/world.js"));
+const { dir, option } = commandLine("node bench/node.mjs DIR [--warmup W] [--steps S]");
+const warmup = option("--warmup", 50), steps = option("--steps", 50);
 
 const results = [];
-for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
-  const scene = JSON.parse(fs.readFileSync(path.join(dir, f), "utf8"));
-  const script = path.join(root, "web/gen", "space-" + scene.space + ".js");
-  if (!globalThis.Manifold || !globalThis.Manifold.spaces[scene.space]) load(script);
-  const W = globalThis.ManifoldWeb.world;
-  const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
-  world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
+for (const { scene, world } of worlds(dir)) {
   world.step(warmup);
   // each phase timed on its own, as `manifold bench` does; the step is their sum
   const phases = world.engine.phases, arrays = world.arrays;

@@ -6,27 +6,12 @@
 // their narrow phase makes, per body, and how many rows find last step's row of the same
 // key for warm starting over the next 20 steps.
 // Usage: node bench/pile.mjs DIR [--steps W]   (JSON lines on stdout)
-import fs from "node:fs";
-import path from "node:path";
-import vm from "node:vm";
-import { fileURLToPath } from "node:url";
+import { commandLine, worlds } from "./worlds.mjs";
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "..");
-const args = process.argv.slice(2);
-const dir = args[0];
-if (!dir) { console.error("usage: node bench/pile.mjs DIR [--steps W]"); process.exit(2); }
-const k = args.indexOf("--steps");
-const settle = k >= 0 ? Number(args[k + 1]) : 400;
+const { dir, option } = commandLine("node bench/pile.mjs DIR [--steps W]");
+const settle = option("--steps", 400);
 
-function load(file) { vm.runInThisContext(fs.readFileSync(file, "utf8"), { filename: file }); }
-load(path.join(root, "web/js/world.js"));
-
-for (const f of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
-  const scene = JSON.parse(fs.readFileSync(path.join(dir, f), "utf8"));
-  if (!globalThis.Manifold || !globalThis.Manifold.spaces[scene.space]) load(path.join(root, "web/gen", "space-" + scene.space + ".js"));
-  const W = globalThis.ManifoldWeb.world;
-  const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
-  world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
+for (const { scene, world } of worlds(dir)) {
   world.step(settle);
   const E = world.engine, C = E.contact, stride = E.contactStride, slots = world.stride();
   const a = world.a, n = world.count();
