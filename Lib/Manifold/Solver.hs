@@ -55,17 +55,22 @@ readRow w c linA linB = do
   bw <- readContact w c (succ (succ (succ linB)))
   pure (Row a aw b bw)
 
+-- | How fast body a's, and body b's, side of a row moves.
+sideA, sideB :: Num s => Row s -> Vel s -> s
+{-# INLINE sideA #-}
+{-# INLINE sideB #-}
+sideA r (Vel v o) = (rowA r `dot` v) + rowAW r * o
+sideB r (Vel v o) = (rowB r `dot` v) + rowBW r * o
+
 -- | The relative velocity along a row: body a's minus body b's.
 rowVelocity :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
 {-# INLINE rowVelocity #-}
 rowVelocity w a b r = do
-  Vel va oa <- readVel w a
+  va <- readVel w a
   vb <- newRef 0
-  whenPositive (b + 0.5) $ do
-    Vel v o <- readVel w (toIndex b)
-    writeRef vb ((rowB r `dot` v) + rowBW r * o)
+  whenPositive (b + 0.5) $ readVel w (toIndex b) >>= writeRef vb . sideB r
   vB <- readRef vb
-  share ((rowA r `dot` va) + rowAW r * oa - vB)
+  share (sideA r va - vB)
 
 applyRow :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> Scalar m -> m ()
 {-# INLINE applyRow #-}
@@ -229,8 +234,7 @@ solve sp _ w = do
       iib <- readSlot w bi InvInertia
       va0 <- readVel w a
       vb0 <- readVel w bi
-      let along r (Vel va oa) (Vel vb ob) =
-            share ((rowA r `dot` va) + rowAW r * oa - select hasB ((rowB r `dot` vb) + rowBW r * ob) 0)
+      let along r va vb = share (sideA r va - select hasB (sideB r vb) 0)
           apply r lambda (Vel va oa) (Vel vb ob) = do
             dva <- share3 ((ima * lambda) *^ rowA r)
             doa <- share (iia * lambda * rowAW r)
