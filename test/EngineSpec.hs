@@ -149,6 +149,23 @@ freeMotionSpec = describe "Engine: free motion" $ do
         expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
     maxDiff (take (length expected) verts) expected `shouldSatisfy` (< 1e-8)
 
+  -- the staged walk takes each step in every direction before the next
+  -- step, keeping the walks' state in a scratch array shared by all bodies
+  it "walks every body's polygon as Manifold.Body.polygonise does after 20 steps (1e-8), on sphere, torus and trumpet" $
+    forM_ [sphere, torus, trumpet] $ \sp -> do
+      w <- sceneWorld sp
+      setParams w defaultParams { pPolygonStep = 0 }
+      replicateM_ 20 (stepNative w)
+      verts <- freeze (wVerts (nwArrays w))
+      let l = layout 32
+          perBody = 3 * verticesPerBody l
+      diffs <- forM (zip [0 ..] (spaceScene sp)) $ \(i, pl) -> do
+        b <- readBody w i
+        let poly = polygonise (spaceField sp) (polygon l) (shapeFromKind (placeShape pl)) (placeSize pl) (bsPos b) (bsAxis b) (bsAngle b)
+            expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
+        pure (maxDiff (take perBody (drop (perBody * i) verts)) expected)
+      (spaceName sp, length diffs > 1, maximum diffs < 1e-8) `shouldBe` (spaceName sp, True, True)
+
   it "runs the same as the emitted JavaScript under node: 200 steps, every space, positions within 1e-9" $
     forM_ catalogue $ \sp -> do
       w <- sceneWorld sp

@@ -60,7 +60,7 @@ module Manifold.World
   ) where
 
 import Linear.V3 (V3 (..), cross)
-import Control.Monad (forM_)
+import Control.Monad (forM_, when)
 import Linear.Metric (norm, quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
 
@@ -90,6 +90,7 @@ data WorldArrays a = WorldArrays
   , wMouse :: a -- ^ see 'MouseField'
   , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
   , wNear :: a -- ^ broad phase scratch: the bodies whose bounds overlap the current one's
+  , wWalk :: a -- ^ polygon walk scratch: per direction the walk's point, direction and normal between steps
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -168,19 +169,29 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wMouse = count' MActive
   , wProbe = 2 * polyDirections (polygon l)
   , wNear = c
+  , wWalk = 9 * polyDirections (polygon l)
   }
 
 arrayNames :: WorldArrays String
 arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
-  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near"
+  "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near" "walk"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 {-# INLINE read3 #-}
-read3 a i = V3 <$> readArray a (3 * i) <*> readArray a (3 * i + 1) <*> readArray a (3 * i + 2)
+read3 a i = readAt3 a (3 * i)
 
 write3 :: Imp m => Array m -> Index m -> V3 (Scalar m) -> m ()
 {-# INLINE write3 #-}
-write3 a i (V3 x y z) = writeArray a (3 * i) x >> writeArray a (3 * i + 1) y >> writeArray a (3 * i + 2) z
+write3 a i = writeAt3 a (3 * i)
+
+-- | Three consecutive numbers from the given offset.
+readAt3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
+{-# INLINE readAt3 #-}
+readAt3 a o = V3 <$> readArray a o <*> readArray a (o + 1) <*> readArray a (o + 2)
+
+writeAt3 :: Imp m => Array m -> Index m -> V3 (Scalar m) -> m ()
+{-# INLINE writeAt3 #-}
+writeAt3 a o (V3 x y z) = writeArray a o x >> writeArray a (o + 1) y >> writeArray a (o + 2) z
 
 share3 :: Imp m => V3 (Scalar m) -> m (V3 (Scalar m))
 {-# INLINE share3 #-}
@@ -221,14 +232,11 @@ writeContact w c k = writeArray (wContacts w) (fromIntegral contactStride * c + 
 -- | Three consecutive fields starting at the given one.
 readContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (V3 (Scalar m))
 {-# INLINE readContact3 #-}
-readContact3 w c k = let o = fromIntegral contactStride * c + ix k in
-  V3 <$> readArray (wContacts w) o <*> readArray (wContacts w) (o + 1) <*> readArray (wContacts w) (o + 2)
+readContact3 w c k = readAt3 (wContacts w) (fromIntegral contactStride * c + ix k)
 
 writeContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> V3 (Scalar m) -> m ()
 {-# INLINE writeContact3 #-}
-writeContact3 w c k (V3 x y z) = do
-  let o = fromIntegral contactStride * c + ix k
-  writeArray (wContacts w) o x >> writeArray (wContacts w) (o + 1) y >> writeArray (wContacts w) (o + 2) z
+writeContact3 w c k = writeAt3 (wContacts w) (fromIntegral contactStride * c + ix k)
 
 readMouse :: Imp m => WorldArrays (Array m) -> MouseField -> m (Scalar m)
 readMouse w k = readArray (wMouse w) (ix k)
@@ -425,34 +433,38 @@ polygoniseBody sp l w i = do
   sinRef <- newRef (sin angle)
   let turnC = constant (cos (2 * pi / fromIntegral nd))
       turnS = constant (sin (2 * pi / fromIntegral nd))
-  forEach (fromIntegral nd) $ \d -> do
-    r <- readArray (wRadii w) (fromIntegral nd * i + d)
-    c <- readRef cosRef
-    s <- readRef sinRef
-    writeRef cosRef (c * turnC - s * turnS)
-    writeRef sinRef (s * turnC + c * turnS)
-    dir0 <- share3 (c *^ u ^+^ s *^ v)
-    ifPositive fine
-      (do h <- share (r / fromIntegral ns)
-          -- the walk's state as nine strict scalars, not three vectors: a
-          -- native walk then keeps them unboxed instead of allocating
-          -- vectors at every step
-          let walk !k !qx !qy !qz !ux !uy !uz !nx !ny !nz
-                | k > ns = pure ()
-                | otherwise = do
-                    let (q1, dir1, n1) = geodesicStepFrom f h (V3 nx ny nz) (V3 qx qy qz, V3 ux uy uz)
-                    q'@(V3 qx' qy' qz') <- share3 q1
-                    V3 ux' uy' uz' <- share3 dir1
-                    V3 nx' ny' nz' <- share3 n1
-                    -- a walk that fails (a singular point) leaves the
-                    -- vertex at the centre rather than poison the polygon
-                    write3 (wVerts w) (vertexIx d k) (select (finiteness (toList3 q')) <$> q' <*> p)
-                    walk (k + 1 :: Int) qx' qy' qz' ux' uy' uz' nx' ny' nz'
-              V3 px py pz = p
-              V3 dx0 dy0 dz0 = dir0
-              V3 nx0 ny0 nz0 = n
-          walk 1 px py pz dx0 dy0 dz0 nx0 ny0 nz0)
-      (do let (o, _, _) = geodesicStepFrom f r n (p, dir0)
+      nextDirection = do
+        c <- readRef cosRef
+        s <- readRef sinRef
+        writeRef cosRef (c * turnC - s * turnS)
+        writeRef sinRef (s * turnC + c * turnS)
+        share3 (c *^ u ^+^ s *^ v)
+      radius d = readArray (wRadii w) (fromIntegral nd * i + d)
+      walkSlot d field = 9 * d + field -- the point at 0, the direction at 3, the normal at 6
+  ifPositive fine
+    -- Step by step, each step in every direction: the steps of one direction
+    -- depend on each other (roots and divisions, one after another), those
+    -- of different directions do not, so the processor overlaps the
+    -- directions' steps instead of waiting on each chain in turn.
+    (do forEach (fromIntegral nd) $ \d -> nextDirection >>= writeAt3 (wWalk w) (walkSlot d 3)
+        forM_ [1 .. ns] $ \k -> forEach (fromIntegral nd) $ \d -> do
+          h <- share . (/ fromIntegral ns) =<< radius d
+          dir <- readAt3 (wWalk w) (walkSlot d 3)
+          (q, nq) <- if k == 1 then pure (p, n)
+                     else (,) <$> readAt3 (wWalk w) (walkSlot d 0) <*> readAt3 (wWalk w) (walkSlot d 6)
+          let (q1, dir1, n1) = geodesicStepFrom f h nq (q, dir)
+          q' <- share3 q1
+          -- a walk that fails (a singular point) leaves the vertex at the
+          -- centre rather than poison the polygon
+          write3 (wVerts w) (vertexIx d k) (select (finiteness (toList3 q')) <$> q' <*> p)
+          when (k < ns) $ do
+            writeAt3 (wWalk w) (walkSlot d 0) q'
+            writeAt3 (wWalk w) (walkSlot d 3) =<< share3 dir1
+            writeAt3 (wWalk w) (walkSlot d 6) =<< share3 n1)
+    (forEach (fromIntegral nd) $ \d -> do
+          r <- radius d
+          dir0 <- nextDirection
+          let (o, _, _) = geodesicStepFrom f r n (p, dir0)
           o' <- share3 (select (finiteness (toList3 o)) <$> o <*> p)
           write3 (wVerts w) (vertexIx d ns) o'
           forM_ [1 .. ns - 1] $ \k ->

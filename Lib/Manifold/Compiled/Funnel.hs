@@ -22,13 +22,13 @@ compiled = CompiledStep "funnel" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary function f(x, y, z) {\n  const t0 = (1.0 - Math.abs(z));\n  const t1 = (Math.exp(((0.9 * z) - 0.7)) - Math.abs(x));\n  return ((t0 - t1) > 0 ? t1 : t0);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Funnel: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -213,7 +213,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d70 = fromIntegral i70 :: Double
       chkI near i70 0 0
       t71 <- rdU near i70
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     chkI normal (3 * i31) 0 2
     t72 <- rdU normal (3 * i31)
@@ -762,8 +762,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1431,8 +1431,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1555,8 +1555,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -1588,188 +1588,284 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
     v18 <- newR (cos t11)
     v19 <- newR (sin t11)
-    loopI 0.0 24.0 $ \i20 -> do
-      let !d20 = fromIntegral i20 :: Double
-      chkI radii ((24 * i1) + i20) 0 0
-      t21 <- rdU radii ((24 * i1) + i20)
-      t22 <- getR v18
-      t23 <- getR v19
-      setR v18 ((t22 * 0.9659258262890683) - (t23 * 0.25881904510252074))
-      setR v19 ((t23 * 0.9659258262890683) + (t22 * 0.25881904510252074))
-      let !s24 = ((t22 * t5) + (t23 * s14))
-      let !s25 = ((t22 * t6) + (t23 * s15))
-      let !s26 = ((t22 * t7) + (t23 * s16))
-      if s17 > 0 then do
-        let !s27 = (t21 / 4.0)
-        let !t28 = (if (abs s27) > 0 then 1.0 else 0.0)
-        let !t29 = (t3 + (s27 * s25))
-        let !t30 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t31 = (if ((abs t29) - 1.0e-10) > 0 then t30 else 0.0)
-        let !t32 = (if t31 > 0 then (t29 + (negate ((t29 / t9) * t9))) else t29)
-        let !t33 = (if ((abs t32) - 1.0e-10) > 0 then t30 else 0.0)
-        let !t34 = (if t33 > 0 then (t32 + (negate ((t32 / t9) * t9))) else t32)
-        let !t35 = (if ((abs t34) - 1.0e-10) > 0 then t30 else 0.0)
-        let !t36 = (t2 + (s27 * s24))
-        let !t37 = (if t31 > 0 then (t36 + (negate ((t29 / t9) * t8))) else t36)
-        let !t38 = (if t33 > 0 then (t37 + (negate ((t32 / t9) * t8))) else t37)
-        let !t39 = (1.0 - t28)
-        let !t40 = (t4 + (s27 * s26))
-        let !t41 = (if t31 > 0 then (t40 + (negate ((t29 / t9) * t10))) else t40)
-        let !t42 = (if t33 > 0 then (t41 + (negate ((t32 / t9) * t10))) else t41)
-        let !s43 = ((t28 * (if t35 > 0 then (t38 + (negate ((t34 / t9) * t8))) else t38)) + (t39 * t2))
-        let !s44 = ((t28 * (if t35 > 0 then (t34 + (negate ((t34 / t9) * t9))) else t34)) + (t39 * t3))
-        let !s45 = ((t28 * (if t35 > 0 then (t42 + (negate ((t34 / t9) * t10))) else t42)) + (t39 * t4))
-        let !t46 = (sqrt (((s24 * s24) + (s25 * s25)) + (s26 * s26)))
-        let !t47 = (if (abs s27) > 0 then (recip s27) else 0.0)
-        let !t48 = (t47 * ((if t35 > 0 then (t38 + (negate ((t34 / t9) * t8))) else t38) + (negate t2)))
-        let !t49 = (t47 * ((if t35 > 0 then (t34 + (negate ((t34 / t9) * t9))) else t34) + (negate t3)))
-        let !t50 = (t49 + (negate t49))
-        let !t51 = (t47 * ((if t35 > 0 then (t42 + (negate ((t34 / t9) * t10))) else t42) + (negate t4)))
-        let !t52 = (sqrt (((t48 * t48) + (t50 * t50)) + (t51 * t51)))
-        let !t53 = (if t52 > 0 then (recip (if (t52 - 1.0e-300) > 0 then t52 else 1.0e-300)) else 0.0)
-        let !s54 = ((t28 * (t46 * (t53 * t48))) + (t39 * s24))
-        let !s55 = ((t28 * (t46 * (t53 * t50))) + (t39 * s25))
-        let !s56 = ((t28 * (t46 * (t53 * t51))) + (t39 * s26))
-        let !s57 = (t39 * t8)
-        let !s58 = (t28 + (t39 * t9))
-        let !s59 = (t39 * t10)
-        chkI verts ((291 * i1) + (12 * i20)) 3 14
-        wrU verts (((291 * i1) + (12 * i20)) + 3) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s43 else t2)
-        wrU verts (((291 * i1) + (12 * i20)) + 4) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s44 else t3)
-        wrU verts (((291 * i1) + (12 * i20)) + 5) (if (1.0 - (abs (((s43 - s43) + (s44 - s44)) + (s45 - s45)))) > 0 then s45 else t4)
-        let !t60 = (s44 + (s27 * s55))
-        let !t61 = (if (abs s58) > 0 then 1.0 else 0.0)
-        let !t62 = (if ((abs t60) - 1.0e-10) > 0 then t61 else 0.0)
-        let !t63 = (if t62 > 0 then (t60 + (negate ((t60 / s58) * s58))) else t60)
-        let !t64 = (if ((abs t63) - 1.0e-10) > 0 then t61 else 0.0)
-        let !t65 = (if t64 > 0 then (t63 + (negate ((t63 / s58) * s58))) else t63)
-        let !t66 = (if ((abs t65) - 1.0e-10) > 0 then t61 else 0.0)
-        let !t67 = (s43 + (s27 * s54))
-        let !t68 = (if t62 > 0 then (t67 + (negate ((t60 / s58) * s57))) else t67)
-        let !t69 = (if t64 > 0 then (t68 + (negate ((t63 / s58) * s57))) else t68)
-        let !t70 = (s45 + (s27 * s56))
-        let !t71 = (if t62 > 0 then (t70 + (negate ((t60 / s58) * s59))) else t70)
-        let !t72 = (if t64 > 0 then (t71 + (negate ((t63 / s58) * s59))) else t71)
-        let !s73 = ((t28 * (if t66 > 0 then (t69 + (negate ((t65 / s58) * s57))) else t69)) + (t39 * s43))
-        let !s74 = ((t28 * (if t66 > 0 then (t65 + (negate ((t65 / s58) * s58))) else t65)) + (t39 * s44))
-        let !s75 = ((t28 * (if t66 > 0 then (t72 + (negate ((t65 / s58) * s59))) else t72)) + (t39 * s45))
-        let !t76 = (sqrt (((s54 * s54) + (s55 * s55)) + (s56 * s56)))
-        let !t77 = (t47 * ((if t66 > 0 then (t69 + (negate ((t65 / s58) * s57))) else t69) + (negate s43)))
-        let !t78 = (t47 * ((if t66 > 0 then (t65 + (negate ((t65 / s58) * s58))) else t65) + (negate s44)))
-        let !t79 = (t78 + (negate t78))
-        let !t80 = (t47 * ((if t66 > 0 then (t72 + (negate ((t65 / s58) * s59))) else t72) + (negate s45)))
-        let !t81 = (sqrt (((t77 * t77) + (t79 * t79)) + (t80 * t80)))
-        let !t82 = (if t81 > 0 then (recip (if (t81 - 1.0e-300) > 0 then t81 else 1.0e-300)) else 0.0)
-        let !s83 = ((t28 * (t76 * (t82 * t77))) + (t39 * s54))
-        let !s84 = ((t28 * (t76 * (t82 * t79))) + (t39 * s55))
-        let !s85 = ((t28 * (t76 * (t82 * t80))) + (t39 * s56))
-        let !s86 = (t39 * s57)
-        let !s87 = (t28 + (t39 * s58))
-        let !s88 = (t39 * s59)
-        wrU verts (((291 * i1) + (12 * i20)) + 6) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s73 else t2)
-        wrU verts (((291 * i1) + (12 * i20)) + 7) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s74 else t3)
-        wrU verts (((291 * i1) + (12 * i20)) + 8) (if (1.0 - (abs (((s73 - s73) + (s74 - s74)) + (s75 - s75)))) > 0 then s75 else t4)
-        let !t89 = (s74 + (s27 * s84))
-        let !t90 = (if (abs s87) > 0 then 1.0 else 0.0)
-        let !t91 = (if ((abs t89) - 1.0e-10) > 0 then t90 else 0.0)
-        let !t92 = (if t91 > 0 then (t89 + (negate ((t89 / s87) * s87))) else t89)
-        let !t93 = (if ((abs t92) - 1.0e-10) > 0 then t90 else 0.0)
-        let !t94 = (if t93 > 0 then (t92 + (negate ((t92 / s87) * s87))) else t92)
-        let !t95 = (if ((abs t94) - 1.0e-10) > 0 then t90 else 0.0)
-        let !t96 = (s73 + (s27 * s83))
-        let !t97 = (if t91 > 0 then (t96 + (negate ((t89 / s87) * s86))) else t96)
-        let !t98 = (if t93 > 0 then (t97 + (negate ((t92 / s87) * s86))) else t97)
-        let !t99 = (s75 + (s27 * s85))
-        let !t100 = (if t91 > 0 then (t99 + (negate ((t89 / s87) * s88))) else t99)
-        let !t101 = (if t93 > 0 then (t100 + (negate ((t92 / s87) * s88))) else t100)
-        let !s102 = ((t28 * (if t95 > 0 then (t98 + (negate ((t94 / s87) * s86))) else t98)) + (t39 * s73))
-        let !s103 = ((t28 * (if t95 > 0 then (t94 + (negate ((t94 / s87) * s87))) else t94)) + (t39 * s74))
-        let !s104 = ((t28 * (if t95 > 0 then (t101 + (negate ((t94 / s87) * s88))) else t101)) + (t39 * s75))
-        let !t105 = (sqrt (((s83 * s83) + (s84 * s84)) + (s85 * s85)))
-        let !t106 = (t47 * ((if t95 > 0 then (t98 + (negate ((t94 / s87) * s86))) else t98) + (negate s73)))
-        let !t107 = (t47 * ((if t95 > 0 then (t94 + (negate ((t94 / s87) * s87))) else t94) + (negate s74)))
-        let !t108 = (t107 + (negate t107))
-        let !t109 = (t47 * ((if t95 > 0 then (t101 + (negate ((t94 / s87) * s88))) else t101) + (negate s75)))
-        let !t110 = (sqrt (((t106 * t106) + (t108 * t108)) + (t109 * t109)))
-        let !t111 = (if t110 > 0 then (recip (if (t110 - 1.0e-300) > 0 then t110 else 1.0e-300)) else 0.0)
-        let !s112 = ((t28 * (t105 * (t111 * t106))) + (t39 * s83))
-        let !s113 = ((t28 * (t105 * (t111 * t108))) + (t39 * s84))
-        let !s114 = ((t28 * (t105 * (t111 * t109))) + (t39 * s85))
-        let !s115 = (t39 * s86)
-        let !s116 = (t28 + (t39 * s87))
-        let !s117 = (t39 * s88)
-        wrU verts (((291 * i1) + (12 * i20)) + 9) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s102 else t2)
-        wrU verts (((291 * i1) + (12 * i20)) + 10) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s103 else t3)
-        wrU verts (((291 * i1) + (12 * i20)) + 11) (if (1.0 - (abs (((s102 - s102) + (s103 - s103)) + (s104 - s104)))) > 0 then s104 else t4)
-        let !t118 = (s103 + (s27 * s113))
-        let !t119 = (if (abs s116) > 0 then 1.0 else 0.0)
-        let !t120 = (if ((abs t118) - 1.0e-10) > 0 then t119 else 0.0)
-        let !t121 = (if t120 > 0 then (t118 + (negate ((t118 / s116) * s116))) else t118)
-        let !t122 = (if ((abs t121) - 1.0e-10) > 0 then t119 else 0.0)
-        let !t123 = (if t122 > 0 then (t121 + (negate ((t121 / s116) * s116))) else t121)
-        let !t124 = (if ((abs t123) - 1.0e-10) > 0 then t119 else 0.0)
-        let !t125 = (s102 + (s27 * s112))
-        let !t126 = (if t120 > 0 then (t125 + (negate ((t118 / s116) * s115))) else t125)
-        let !t127 = (if t122 > 0 then (t126 + (negate ((t121 / s116) * s115))) else t126)
-        let !t128 = (s104 + (s27 * s114))
-        let !t129 = (if t120 > 0 then (t128 + (negate ((t118 / s116) * s117))) else t128)
-        let !t130 = (if t122 > 0 then (t129 + (negate ((t121 / s116) * s117))) else t129)
-        let !s131 = ((t28 * (if t124 > 0 then (t127 + (negate ((t123 / s116) * s115))) else t127)) + (t39 * s102))
-        let !s132 = ((t28 * (if t124 > 0 then (t123 + (negate ((t123 / s116) * s116))) else t123)) + (t39 * s103))
-        let !s133 = ((t28 * (if t124 > 0 then (t130 + (negate ((t123 / s116) * s117))) else t130)) + (t39 * s104))
-        let !t134 = (sqrt (((s112 * s112) + (s113 * s113)) + (s114 * s114)))
-        let !t135 = (t47 * ((if t124 > 0 then (t127 + (negate ((t123 / s116) * s115))) else t127) + (negate s102)))
-        let !t136 = (t47 * ((if t124 > 0 then (t123 + (negate ((t123 / s116) * s116))) else t123) + (negate s103)))
-        let !t137 = (t136 + (negate t136))
-        let !t138 = (t47 * ((if t124 > 0 then (t130 + (negate ((t123 / s116) * s117))) else t130) + (negate s104)))
-        let !t139 = (sqrt (((t135 * t135) + (t137 * t137)) + (t138 * t138)))
-        let !t140 = (if t139 > 0 then (recip (if (t139 - 1.0e-300) > 0 then t139 else 1.0e-300)) else 0.0)
-        let !s141 = ((t28 * (t134 * (t140 * t135))) + (t39 * s112))
-        let !s142 = ((t28 * (t134 * (t140 * t137))) + (t39 * s113))
-        let !s143 = ((t28 * (t134 * (t140 * t138))) + (t39 * s114))
-        let !s144 = (t39 * s115)
-        let !s145 = (t28 + (t39 * s116))
-        let !s146 = (t39 * s117)
-        wrU verts (((291 * i1) + (12 * i20)) + 12) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s131 else t2)
-        wrU verts (((291 * i1) + (12 * i20)) + 13) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s132 else t3)
-        wrU verts (((291 * i1) + (12 * i20)) + 14) (if (1.0 - (abs (((s131 - s131) + (s132 - s132)) + (s133 - s133)))) > 0 then s133 else t4)
+    if s17 > 0 then do
+      loopI 0.0 24.0 $ \i20 -> do
+        let !d20 = fromIntegral i20 :: Double
+        t21 <- getR v18
+        t22 <- getR v19
+        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
+        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
+        let !s23 = ((t21 * t5) + (t22 * s14))
+        let !s24 = ((t21 * t6) + (t22 * s15))
+        let !s25 = ((t21 * t7) + (t22 * s16))
+        chkI walk (9 * i20) 3 5
+        wrU walk ((9 * i20) + 3) s23
+        wrU walk ((9 * i20) + 4) s24
+        wrU walk ((9 * i20) + 5) s25
         pure ()
-      else do
-        let !t147 = (if (abs t21) > 0 then 1.0 else 0.0)
-        let !t148 = (t3 + (t21 * s25))
-        let !t149 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t150 = (if ((abs t148) - 1.0e-10) > 0 then t149 else 0.0)
-        let !t151 = (if t150 > 0 then (t148 + (negate ((t148 / t9) * t9))) else t148)
-        let !t152 = (if ((abs t151) - 1.0e-10) > 0 then t149 else 0.0)
-        let !t153 = (if t152 > 0 then (t151 + (negate ((t151 / t9) * t9))) else t151)
-        let !t154 = (if ((abs t153) - 1.0e-10) > 0 then t149 else 0.0)
-        let !t155 = (t2 + (t21 * s24))
-        let !t156 = (if t150 > 0 then (t155 + (negate ((t148 / t9) * t8))) else t155)
-        let !t157 = (if t152 > 0 then (t156 + (negate ((t151 / t9) * t8))) else t156)
-        let !t158 = (1.0 - t147)
-        let !t159 = ((t147 * (if t154 > 0 then (t157 + (negate ((t153 / t9) * t8))) else t157)) + (t158 * t2))
-        let !t160 = ((t147 * (if t154 > 0 then (t153 + (negate ((t153 / t9) * t9))) else t153)) + (t158 * t3))
-        let !t161 = (t4 + (t21 * s26))
-        let !t162 = (if t150 > 0 then (t161 + (negate ((t148 / t9) * t10))) else t161)
-        let !t163 = (if t152 > 0 then (t162 + (negate ((t151 / t9) * t10))) else t162)
-        let !t164 = ((t147 * (if t154 > 0 then (t163 + (negate ((t153 / t9) * t10))) else t163)) + (t158 * t4))
-        let !t165 = (1.0 - (abs (((t159 - t159) + (t160 - t160)) + (t164 - t164))))
-        let !s166 = (if t165 > 0 then t159 else t2)
-        let !s167 = (if t165 > 0 then t160 else t3)
-        let !s168 = (if t165 > 0 then t164 else t4)
-        chkI verts ((291 * i1) + (12 * i20)) 3 14
-        wrU verts (((291 * i1) + (12 * i20)) + 12) s166
-        wrU verts (((291 * i1) + (12 * i20)) + 13) s167
-        wrU verts (((291 * i1) + (12 * i20)) + 14) s168
-        wrU verts (((291 * i1) + (12 * i20)) + 3) (t2 + (0.25 * (s166 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i20)) + 4) (t3 + (0.25 * (s167 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i20)) + 5) (t4 + (0.25 * (s168 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i20)) + 6) (t2 + (0.5 * (s166 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i20)) + 7) (t3 + (0.5 * (s167 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i20)) + 8) (t4 + (0.5 * (s168 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i20)) + 9) (t2 + (0.75 * (s166 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i20)) + 10) (t3 + (0.75 * (s167 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i20)) + 11) (t4 + (0.75 * (s168 + (negate t4))))
+      loopI 0.0 24.0 $ \i26 -> do
+        let !d26 = fromIntegral i26 :: Double
+        chkI radii ((24 * i1) + i26) 0 0
+        t27 <- rdU radii ((24 * i1) + i26)
+        let !s28 = (t27 / 4.0)
+        chkI walk (9 * i26) 0 8
+        t29 <- rdU walk ((9 * i26) + 3)
+        t30 <- rdU walk ((9 * i26) + 4)
+        t31 <- rdU walk ((9 * i26) + 5)
+        let !t32 = (if (abs s28) > 0 then 1.0 else 0.0)
+        let !t33 = (t3 + (s28 * t30))
+        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t35 = (if ((abs t33) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t36 = (if t35 > 0 then (t33 + (negate ((t33 / t9) * t9))) else t33)
+        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t40 = (t2 + (s28 * t29))
+        let !t41 = (if t35 > 0 then (t40 + (negate ((t33 / t9) * t8))) else t40)
+        let !t42 = (if t37 > 0 then (t41 + (negate ((t36 / t9) * t8))) else t41)
+        let !t43 = (1.0 - t32)
+        let !t44 = (t4 + (s28 * t31))
+        let !t45 = (if t35 > 0 then (t44 + (negate ((t33 / t9) * t10))) else t44)
+        let !t46 = (if t37 > 0 then (t45 + (negate ((t36 / t9) * t10))) else t45)
+        let !s47 = ((t32 * (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)) + (t43 * t2))
+        let !s48 = ((t32 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t43 * t3))
+        let !s49 = ((t32 * (if t39 > 0 then (t46 + (negate ((t38 / t9) * t10))) else t46)) + (t43 * t4))
+        chkI verts ((291 * i1) + (12 * i26)) 3 5
+        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
+        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
+        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
+        wrU walk (9 * i26) s47
+        wrU walk ((9 * i26) + 1) s48
+        wrU walk ((9 * i26) + 2) s49
+        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
+        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
+        let !t52 = (t51 * ((if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42) + (negate t2)))
+        let !t53 = (t51 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
+        let !t54 = (t53 + (negate t53))
+        let !t55 = (t51 * ((if t39 > 0 then (t46 + (negate ((t38 / t9) * t10))) else t46) + (negate t4)))
+        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
+        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
+        let !s58 = ((t32 * (t50 * (t57 * t52))) + (t43 * t29))
+        let !s59 = ((t32 * (t50 * (t57 * t54))) + (t43 * t30))
+        let !s60 = ((t32 * (t50 * (t57 * t55))) + (t43 * t31))
+        wrU walk ((9 * i26) + 3) s58
+        wrU walk ((9 * i26) + 4) s59
+        wrU walk ((9 * i26) + 5) s60
+        let !s61 = (t43 * t8)
+        let !s62 = (t32 + (t43 * t9))
+        let !s63 = (t43 * t10)
+        wrU walk ((9 * i26) + 6) s61
+        wrU walk ((9 * i26) + 7) s62
+        wrU walk ((9 * i26) + 8) s63
+        pure ()
+      loopI 0.0 24.0 $ \i64 -> do
+        let !d64 = fromIntegral i64 :: Double
+        chkI radii ((24 * i1) + i64) 0 0
+        t65 <- rdU radii ((24 * i1) + i64)
+        let !s66 = (t65 / 4.0)
+        chkI walk (9 * i64) 0 8
+        t67 <- rdU walk ((9 * i64) + 3)
+        t68 <- rdU walk ((9 * i64) + 4)
+        t69 <- rdU walk ((9 * i64) + 5)
+        t70 <- rdU walk (9 * i64)
+        t71 <- rdU walk ((9 * i64) + 1)
+        t72 <- rdU walk ((9 * i64) + 2)
+        t73 <- rdU walk ((9 * i64) + 6)
+        t74 <- rdU walk ((9 * i64) + 7)
+        t75 <- rdU walk ((9 * i64) + 8)
+        let !t76 = (if (abs s66) > 0 then 1.0 else 0.0)
+        let !t77 = (t71 + (s66 * t68))
+        let !t78 = (if (abs t74) > 0 then 1.0 else 0.0)
+        let !t79 = (if ((abs t77) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t80 = (if t79 > 0 then (t77 + (negate ((t77 / t74) * t74))) else t77)
+        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t74) * t74))) else t80)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t84 = (t70 + (s66 * t67))
+        let !t85 = (if t79 > 0 then (t84 + (negate ((t77 / t74) * t73))) else t84)
+        let !t86 = (if t81 > 0 then (t85 + (negate ((t80 / t74) * t73))) else t85)
+        let !t87 = (1.0 - t76)
+        let !t88 = (t72 + (s66 * t69))
+        let !t89 = (if t79 > 0 then (t88 + (negate ((t77 / t74) * t75))) else t88)
+        let !t90 = (if t81 > 0 then (t89 + (negate ((t80 / t74) * t75))) else t89)
+        let !s91 = ((t76 * (if t83 > 0 then (t86 + (negate ((t82 / t74) * t73))) else t86)) + (t87 * t70))
+        let !s92 = ((t76 * (if t83 > 0 then (t82 + (negate ((t82 / t74) * t74))) else t82)) + (t87 * t71))
+        let !s93 = ((t76 * (if t83 > 0 then (t90 + (negate ((t82 / t74) * t75))) else t90)) + (t87 * t72))
+        chkI verts ((291 * i1) + (12 * i64)) 6 8
+        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
+        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
+        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
+        wrU walk (9 * i64) s91
+        wrU walk ((9 * i64) + 1) s92
+        wrU walk ((9 * i64) + 2) s93
+        let !t94 = (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69)))
+        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
+        let !t96 = (t95 * ((if t83 > 0 then (t86 + (negate ((t82 / t74) * t73))) else t86) + (negate t70)))
+        let !t97 = (t95 * ((if t83 > 0 then (t82 + (negate ((t82 / t74) * t74))) else t82) + (negate t71)))
+        let !t98 = (t97 + (negate t97))
+        let !t99 = (t95 * ((if t83 > 0 then (t90 + (negate ((t82 / t74) * t75))) else t90) + (negate t72)))
+        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
+        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
+        let !s102 = ((t76 * (t94 * (t101 * t96))) + (t87 * t67))
+        let !s103 = ((t76 * (t94 * (t101 * t98))) + (t87 * t68))
+        let !s104 = ((t76 * (t94 * (t101 * t99))) + (t87 * t69))
+        wrU walk ((9 * i64) + 3) s102
+        wrU walk ((9 * i64) + 4) s103
+        wrU walk ((9 * i64) + 5) s104
+        let !s105 = (t87 * t73)
+        let !s106 = (t76 + (t87 * t74))
+        let !s107 = (t87 * t75)
+        wrU walk ((9 * i64) + 6) s105
+        wrU walk ((9 * i64) + 7) s106
+        wrU walk ((9 * i64) + 8) s107
+        pure ()
+      loopI 0.0 24.0 $ \i108 -> do
+        let !d108 = fromIntegral i108 :: Double
+        chkI radii ((24 * i1) + i108) 0 0
+        t109 <- rdU radii ((24 * i1) + i108)
+        let !s110 = (t109 / 4.0)
+        chkI walk (9 * i108) 0 8
+        t111 <- rdU walk ((9 * i108) + 3)
+        t112 <- rdU walk ((9 * i108) + 4)
+        t113 <- rdU walk ((9 * i108) + 5)
+        t114 <- rdU walk (9 * i108)
+        t115 <- rdU walk ((9 * i108) + 1)
+        t116 <- rdU walk ((9 * i108) + 2)
+        t117 <- rdU walk ((9 * i108) + 6)
+        t118 <- rdU walk ((9 * i108) + 7)
+        t119 <- rdU walk ((9 * i108) + 8)
+        let !t120 = (if (abs s110) > 0 then 1.0 else 0.0)
+        let !t121 = (t115 + (s110 * t112))
+        let !t122 = (if (abs t118) > 0 then 1.0 else 0.0)
+        let !t123 = (if ((abs t121) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t124 = (if t123 > 0 then (t121 + (negate ((t121 / t118) * t118))) else t121)
+        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t118) * t118))) else t124)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t128 = (t114 + (s110 * t111))
+        let !t129 = (if t123 > 0 then (t128 + (negate ((t121 / t118) * t117))) else t128)
+        let !t130 = (if t125 > 0 then (t129 + (negate ((t124 / t118) * t117))) else t129)
+        let !t131 = (1.0 - t120)
+        let !t132 = (t116 + (s110 * t113))
+        let !t133 = (if t123 > 0 then (t132 + (negate ((t121 / t118) * t119))) else t132)
+        let !t134 = (if t125 > 0 then (t133 + (negate ((t124 / t118) * t119))) else t133)
+        let !s135 = ((t120 * (if t127 > 0 then (t130 + (negate ((t126 / t118) * t117))) else t130)) + (t131 * t114))
+        let !s136 = ((t120 * (if t127 > 0 then (t126 + (negate ((t126 / t118) * t118))) else t126)) + (t131 * t115))
+        let !s137 = ((t120 * (if t127 > 0 then (t134 + (negate ((t126 / t118) * t119))) else t134)) + (t131 * t116))
+        chkI verts ((291 * i1) + (12 * i108)) 9 11
+        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
+        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
+        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
+        wrU walk (9 * i108) s135
+        wrU walk ((9 * i108) + 1) s136
+        wrU walk ((9 * i108) + 2) s137
+        let !t138 = (sqrt (((t111 * t111) + (t112 * t112)) + (t113 * t113)))
+        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
+        let !t140 = (t139 * ((if t127 > 0 then (t130 + (negate ((t126 / t118) * t117))) else t130) + (negate t114)))
+        let !t141 = (t139 * ((if t127 > 0 then (t126 + (negate ((t126 / t118) * t118))) else t126) + (negate t115)))
+        let !t142 = (t141 + (negate t141))
+        let !t143 = (t139 * ((if t127 > 0 then (t134 + (negate ((t126 / t118) * t119))) else t134) + (negate t116)))
+        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
+        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
+        let !s146 = ((t120 * (t138 * (t145 * t140))) + (t131 * t111))
+        let !s147 = ((t120 * (t138 * (t145 * t142))) + (t131 * t112))
+        let !s148 = ((t120 * (t138 * (t145 * t143))) + (t131 * t113))
+        wrU walk ((9 * i108) + 3) s146
+        wrU walk ((9 * i108) + 4) s147
+        wrU walk ((9 * i108) + 5) s148
+        let !s149 = (t131 * t117)
+        let !s150 = (t120 + (t131 * t118))
+        let !s151 = (t131 * t119)
+        wrU walk ((9 * i108) + 6) s149
+        wrU walk ((9 * i108) + 7) s150
+        wrU walk ((9 * i108) + 8) s151
+        pure ()
+      loopI 0.0 24.0 $ \i152 -> do
+        let !d152 = fromIntegral i152 :: Double
+        chkI radii ((24 * i1) + i152) 0 0
+        t153 <- rdU radii ((24 * i1) + i152)
+        let !s154 = (t153 / 4.0)
+        chkI walk (9 * i152) 0 8
+        t155 <- rdU walk ((9 * i152) + 3)
+        t156 <- rdU walk ((9 * i152) + 4)
+        t157 <- rdU walk ((9 * i152) + 5)
+        t158 <- rdU walk (9 * i152)
+        t159 <- rdU walk ((9 * i152) + 1)
+        t160 <- rdU walk ((9 * i152) + 2)
+        t161 <- rdU walk ((9 * i152) + 6)
+        t162 <- rdU walk ((9 * i152) + 7)
+        t163 <- rdU walk ((9 * i152) + 8)
+        let !t164 = (if (abs s154) > 0 then 1.0 else 0.0)
+        let !t165 = (t159 + (s154 * t156))
+        let !t166 = (if (abs t162) > 0 then 1.0 else 0.0)
+        let !t167 = (if ((abs t165) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t168 = (if t167 > 0 then (t165 + (negate ((t165 / t162) * t162))) else t165)
+        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t162) * t162))) else t168)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t172 = (t158 + (s154 * t155))
+        let !t173 = (if t167 > 0 then (t172 + (negate ((t165 / t162) * t161))) else t172)
+        let !t174 = (if t169 > 0 then (t173 + (negate ((t168 / t162) * t161))) else t173)
+        let !t175 = (1.0 - t164)
+        let !t176 = (t160 + (s154 * t157))
+        let !t177 = (if t167 > 0 then (t176 + (negate ((t165 / t162) * t163))) else t176)
+        let !t178 = (if t169 > 0 then (t177 + (negate ((t168 / t162) * t163))) else t177)
+        let !s179 = ((t164 * (if t171 > 0 then (t174 + (negate ((t170 / t162) * t161))) else t174)) + (t175 * t158))
+        let !s180 = ((t164 * (if t171 > 0 then (t170 + (negate ((t170 / t162) * t162))) else t170)) + (t175 * t159))
+        let !s181 = ((t164 * (if t171 > 0 then (t178 + (negate ((t170 / t162) * t163))) else t178)) + (t175 * t160))
+        chkI verts ((291 * i1) + (12 * i152)) 12 14
+        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
+        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
+        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
+        pure ()
+      pure ()
+    else do
+      loopI 0.0 24.0 $ \i182 -> do
+        let !d182 = fromIntegral i182 :: Double
+        chkI radii ((24 * i1) + i182) 0 0
+        t183 <- rdU radii ((24 * i1) + i182)
+        t184 <- getR v18
+        t185 <- getR v19
+        setR v18 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
+        setR v19 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
+        let !s186 = ((t184 * t5) + (t185 * s14))
+        let !s187 = ((t184 * t6) + (t185 * s15))
+        let !s188 = ((t184 * t7) + (t185 * s16))
+        let !t189 = (if (abs t183) > 0 then 1.0 else 0.0)
+        let !t190 = (t3 + (t183 * s187))
+        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t192 = (if ((abs t190) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t193 = (if t192 > 0 then (t190 + (negate ((t190 / t9) * t9))) else t190)
+        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t197 = (t2 + (t183 * s186))
+        let !t198 = (if t192 > 0 then (t197 + (negate ((t190 / t9) * t8))) else t197)
+        let !t199 = (if t194 > 0 then (t198 + (negate ((t193 / t9) * t8))) else t198)
+        let !t200 = (1.0 - t189)
+        let !t201 = ((t189 * (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)) + (t200 * t2))
+        let !t202 = ((t189 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t200 * t3))
+        let !t203 = (t4 + (t183 * s188))
+        let !t204 = (if t192 > 0 then (t203 + (negate ((t190 / t9) * t10))) else t203)
+        let !t205 = (if t194 > 0 then (t204 + (negate ((t193 / t9) * t10))) else t204)
+        let !t206 = ((t189 * (if t196 > 0 then (t205 + (negate ((t195 / t9) * t10))) else t205)) + (t200 * t4))
+        let !t207 = (1.0 - (abs (((t201 - t201) + (t202 - t202)) + (t206 - t206))))
+        let !s208 = (if t207 > 0 then t201 else t2)
+        let !s209 = (if t207 > 0 then t202 else t3)
+        let !s210 = (if t207 > 0 then t206 else t4)
+        chkI verts ((291 * i1) + (12 * i182)) 3 14
+        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
+        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
+        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
+        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -6,8 +6,8 @@ module Manifold.Compiled.Shared (pairContacts) where
 
 import Manifold.Compiled.Runtime
 
-pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
-pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
+pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
+pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
   let !s0 = (negate (a3 * a6))
   let !s1 = (negate (a4 * a7))
   let !s2 = (negate (a5 * a8))
