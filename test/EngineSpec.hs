@@ -149,10 +149,11 @@ freeMotionSpec = describe "Engine: free motion" $ do
         expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
     maxDiff (take (length expected) verts) expected `shouldSatisfy` (< 1e-8)
 
-  -- the staged walk takes each step in every direction before the next
-  -- step, keeping the walks' state in a scratch array shared by all bodies
-  it "walks every body's polygon as Manifold.Body.polygonise does after 20 steps (1e-8), on sphere, torus and trumpet" $
-    forM_ [sphere, torus, trumpet] $ \sp -> do
+  -- the staged walk takes each step (and on curved surfaces each Newton
+  -- iteration of it) in every direction before the next, keeping the
+  -- walks' state in a scratch array shared by all bodies
+  it "walks every body's polygon as Manifold.Body.polygonise does after 20 steps (1e-8), on plane, sphere, torus and trumpet" $
+    forM_ [plane, sphere, torus, trumpet] $ \sp -> do
       w <- sceneWorld sp
       setParams w defaultParams { pPolygonStep = 0 }
       replicateM_ 20 (stepNative w)
@@ -165,6 +166,35 @@ freeMotionSpec = describe "Engine: free motion" $ do
             expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
         pure (maxDiff (take perBody (drop (perBody * i) verts)) expected)
       (spaceName sp, length diffs > 1, maximum diffs < 1e-8) `shouldBe` (spaceName sp, True, True)
+
+  it "walks each direction of a body no larger than polygonStep in one geodesic step (1e-8), on plane, sphere, torus and trumpet" $
+    forM_ [plane, sphere, torus, trumpet] $ \sp -> do
+      w <- sceneWorld sp
+      setParams w defaultParams { pPolygonStep = 10 }
+      replicateM_ 20 (stepNative w)
+      let a = nwArrays w
+          l = layout 32
+          PolygonParams nd ns = polygon l
+          f = spaceField sp
+      verts <- freeze (wVerts a)
+      radii <- freeze (wRadii a)
+      normals <- freeze (wNormal a)
+      diffs <- forM [0 .. length (spaceScene sp) - 1] $ \i -> do
+        b <- readBody w i
+        let n = V3 (normals !! (3 * i)) (normals !! (3 * i + 1)) (normals !! (3 * i + 2))
+            u = bsAxis b
+            v = n `cross` u
+            outline d = let o = 3 * (verticesPerBody l * i + 1 + d * ns + ns - 1) in V3 (verts !! o) (verts !! (o + 1)) (verts !! (o + 2))
+            expected d =
+              let theta = bsAngle b + 2 * pi * fromIntegral d / fromIntegral nd
+                  (q, _, _) = geodesicStepFrom f (radii !! (nd * i + d)) n (bsPos b, cos theta *^ u ^+^ sin theta *^ v)
+              in q
+        pure (maximum [distance (outline d) (expected d) | d <- [0 .. nd - 1]])
+      (spaceName sp, maximum diffs < 1e-8) `shouldBe` (spaceName sp, True)
+
+  it "takes a field's gradient as constant only on the flat spaces (planes, with walls or quotients)" $ do
+    [spaceName sp | sp <- catalogue, hasConstantGradient (spaceField sp)]
+      `shouldBe` ["plane", "disc", "rectangle", "funnel", "flat-torus", "flat-klein"]
 
   it "runs the same as the emitted JavaScript under node: 200 steps, every space, positions within 1e-9" $
     forM_ catalogue $ \sp -> do

@@ -14,12 +14,15 @@ module Manifold.Surface
   , projectToSurfaceWith
   , projectAlong
   , projectAlongWithGradient
+  , newtonAlong
+  , stepProjectionIterations
   , defaultProjectionIterations
   , projectionTolerance
   , tangentProjection
   , transport
   , geodesicStep
   , geodesicStepFrom
+  , geodesicStepEnd
   , expMap
   , geodesicPath
   , tangentFrame
@@ -140,11 +143,19 @@ projectAlongWithGradient sf n = go stepProjectionIterations
   where
     go :: Int -> V3 a -> (V3 a, V3 a)
     go k q =
-      let (v, g) = valueGradFn sf q
-          slope = g `dot` n
-          moving = select (abs v - constant projectionTolerance) (select (abs slope) 1 0) 0
-          q' = select moving <$> (q ^-^ (v / slope) *^ n) <*> q
+      let (q', g) = newtonAlong sf n q
       in if k <= 1 then (q', g) else go (k - 1) q'
+
+-- | One Newton iteration of 'projectAlong': the next iterate, and the
+-- field's gradient at this one. Converged (or where @∇f · n@ vanishes) the
+-- point stays.
+newtonAlong :: Field a => ScalarFn -> V3 a -> V3 a -> (V3 a, V3 a)
+{-# INLINE newtonAlong #-}
+newtonAlong sf n q =
+  let (v, g) = valueGradFn sf q
+      slope = g `dot` n
+      moving = select (abs v - constant projectionTolerance) (select (abs slope) 1 0) 0
+  in (select moving <$> (q ^-^ (v / slope) *^ n) <*> q, g)
 
 -- | One step of a geodesic (RATTLE): move along the velocity for time @h@,
 -- pull back onto the surface along the normal where the step began, take
@@ -161,8 +172,15 @@ geodesicStep sf h (p, v) =
 geodesicStepFrom :: Field a => ScalarFn -> a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
 {-# INLINE geodesicStepFrom #-}
 geodesicStepFrom sf h n (p, v) =
-  let (p', g') = projectAlongWithGradient sf n (p ^+^ h *^ v)
-      mean = select (abs h) (recip h) 0 *^ (p' ^-^ p)
+  geodesicStepEnd h n (p, v) (projectAlongWithGradient sf n (p ^+^ h *^ v))
+
+-- | The end of 'geodesicStepFrom', once the moved point @p + h·v@ has been
+-- pulled back onto the surface: from that point and the gradient left by
+-- 'projectAlongWithGradient', the new point, velocity and unit normal.
+geodesicStepEnd :: Field a => a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
+{-# INLINE geodesicStepEnd #-}
+geodesicStepEnd h n (p, v) (p', g') =
+  let mean = select (abs h) (recip h) 0 *^ (p' ^-^ p)
       n' = safeNormalize g'
       v' = norm v *^ safeNormalize (tangentProjection n' mean)
       moved = select (abs h) 1 0

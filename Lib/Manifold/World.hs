@@ -55,18 +55,21 @@ module Manifold.World
   , integrate
   , polygoniseAll
   , polygoniseBody
+  , hasConstantGradient
   , toList3
   , outlineRadiiInto
   ) where
 
 import Linear.V3 (V3 (..), cross)
 import Control.Monad (forM_, when)
+import Data.Maybe (isJust)
 import Linear.Metric (norm, quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Body (PolygonParams (..))
 import Manifold.Field
 import Manifold.Space
+import Manifold.Stage.Expr (literalValue, sym)
 import Manifold.Stage.Imp
 import Manifold.Surface
 
@@ -90,7 +93,7 @@ data WorldArrays a = WorldArrays
   , wMouse :: a -- ^ see 'MouseField'
   , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
   , wNear :: a -- ^ broad phase scratch: the bodies whose bounds overlap the current one's
-  , wWalk :: a -- ^ polygon walk scratch: per direction the walk's point, direction and normal between steps
+  , wWalk :: a -- ^ polygon walk scratch: 'walkStride' numbers per direction, the walk's state between its loops
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -138,6 +141,10 @@ scalarSlots = count' Angle
 contactStride = count' CA
 prevStride = 4
 
+-- | The polygon walk's scratch numbers per direction (see 'polygoniseBody').
+walkStride :: Int
+walkStride = 12
+
 -- | Contacts a body may own (pairs it leads, its boundary contacts).
 contactsPerBody :: Int
 contactsPerBody = 8
@@ -169,7 +176,7 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wMouse = count' MActive
   , wProbe = 2 * polyDirections (polygon l)
   , wNear = c
-  , wWalk = 9 * polyDirections (polygon l)
+  , wWalk = walkStride * polyDirections (polygon l)
   }
 
 arrayNames :: WorldArrays String
@@ -391,6 +398,11 @@ outlineRadiiInto l outline w i size = do
     let theta = toScalar d * constant (2 * pi / fromIntegral nd)
     writeArray (wRadii w) (fromIntegral nd * i + d) (size * outline theta)
 
+-- | Whether a field's gradient is the same everywhere (a plane): its
+-- symbolic gradient at a symbolic point is made of numbers.
+hasConstantGradient :: ScalarFn -> Bool
+hasConstantGradient f = all (isJust . literalValue) (gradFn f (V3 (sym "x") (sym "y") (sym "z")))
+
 -- | Walk every body's geodesic polygon into the vertex cache (paper §3.4).
 polygoniseAll :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE polygoniseAll :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
@@ -411,6 +423,7 @@ polygoniseAll sp l w = do
 polygoniseBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 polygoniseBody sp l w i = do
   let f = spaceField sp
+      flat = hasConstantGradient f
       pp = polygon l
       nd = polyDirections pp
       ns = polySteps pp
@@ -440,32 +453,63 @@ polygoniseBody sp l w i = do
         writeRef sinRef (s * turnC + c * turnS)
         share3 (c *^ u ^+^ s *^ v)
       radius d = readArray (wRadii w) (fromIntegral nd * i + d)
-      walkSlot d field = 9 * d + field -- the point at 0, the direction at 3, the normal at 6
+      directions = forEach (fromIntegral nd)
+      scratch = wWalk w
+      at d field = fromIntegral walkStride * d + field
+      -- a direction's walk state: where its step starts and the unit normal
+      -- there, the direction, and the Newton iterate
+      (pointAt, directionAt, normalAt, iterateAt) = (0, 3, 6, 9)
+      -- Every direction takes its step before any takes the next: one
+      -- direction's arithmetic is a chain of roots and divisions, each
+      -- waiting on the last, while the directions are independent, so
+      -- short loops across them let the processor overlap the directions
+      -- instead of waiting on each chain in turn. On a curved surface each
+      -- Newton iteration of a step gets its loop across the directions (the
+      -- first also moves the point, the last ends the step); on a flat one
+      -- Newton has nothing to wait on and one loop a step is quicker. The
+      -- arithmetic is 'geodesicStepFrom''s, in the same order.
+      walk steps stepLength vertex = do
+        -- on a flat surface a single step is one loop, turning the
+        -- direction where it is walked
+        let fused = flat && steps == 1
+        when (not fused) $ directions $ \d -> nextDirection >>= writeAt3 scratch (at d directionAt)
+        forM_ [1 .. steps] $ \k -> do
+          -- where the step starts, and the unit normal there
+          let startAt field centre d = if k == 1 then pure centre else readAt3 scratch (at d field)
+              start d = do
+                h <- stepLength d
+                q0 <- startAt pointAt p d
+                nq <- startAt normalAt n d
+                dir <- if fused then nextDirection else readAt3 scratch (at d directionAt)
+                pure (h, nq, (q0, dir))
+              moved (h, _, (q0, dir)) = share3 (q0 ^+^ h *^ dir)
+              end d (h, nq, pd) projected = do
+                let (q1, dir1, n1) = geodesicStepEnd h nq pd projected
+                q <- share3 q1
+                vertex k d q
+                when (k < steps) $ do
+                  writeAt3 scratch (at d pointAt) q
+                  writeAt3 scratch (at d directionAt) =<< share3 dir1
+                  writeAt3 scratch (at d normalAt) =<< share3 n1
+          if flat
+            then directions $ \d -> do
+              s0@(_, nq, _) <- start d
+              end d s0 . projectAlongWithGradient f nq =<< moved s0
+            else forM_ [1 .. stepProjectionIterations] $ \j -> directions $ \d -> do
+              nq <- startAt normalAt n d
+              q <- if j == 1 then moved =<< start d else readAt3 scratch (at d iterateAt)
+              let projected = newtonAlong f nq q
+              if j < stepProjectionIterations
+                then writeAt3 scratch (at d iterateAt) =<< share3 (fst projected)
+                else start d >>= \s0 -> end d s0 projected
+      -- a walk that fails (a singular point) leaves the vertex at the
+      -- centre rather than poison the polygon
+      finite q = select (finiteness (toList3 q)) <$> q <*> p
   ifPositive fine
-    -- Step by step, each step in every direction: the steps of one direction
-    -- depend on each other (roots and divisions, one after another), those
-    -- of different directions do not, so the processor overlaps the
-    -- directions' steps instead of waiting on each chain in turn.
-    (do forEach (fromIntegral nd) $ \d -> nextDirection >>= writeAt3 (wWalk w) (walkSlot d 3)
-        forM_ [1 .. ns] $ \k -> forEach (fromIntegral nd) $ \d -> do
-          h <- share . (/ fromIntegral ns) =<< radius d
-          dir <- readAt3 (wWalk w) (walkSlot d 3)
-          (q, nq) <- if k == 1 then pure (p, n)
-                     else (,) <$> readAt3 (wWalk w) (walkSlot d 0) <*> readAt3 (wWalk w) (walkSlot d 6)
-          let (q1, dir1, n1) = geodesicStepFrom f h nq (q, dir)
-          q' <- share3 q1
-          -- a walk that fails (a singular point) leaves the vertex at the
-          -- centre rather than poison the polygon
-          write3 (wVerts w) (vertexIx d k) (select (finiteness (toList3 q')) <$> q' <*> p)
-          when (k < ns) $ do
-            writeAt3 (wWalk w) (walkSlot d 0) q'
-            writeAt3 (wWalk w) (walkSlot d 3) =<< share3 dir1
-            writeAt3 (wWalk w) (walkSlot d 6) =<< share3 n1)
-    (forEach (fromIntegral nd) $ \d -> do
-          r <- radius d
-          dir0 <- nextDirection
-          let (o, _, _) = geodesicStepFrom f r n (p, dir0)
-          o' <- share3 (select (finiteness (toList3 o)) <$> o <*> p)
-          write3 (wVerts w) (vertexIx d ns) o'
-          forM_ [1 .. ns - 1] $ \k ->
-            write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o' ^-^ p)))
+    (walk ns (\d -> share . (/ fromIntegral ns) =<< radius d)
+          (\k d q -> write3 (wVerts w) (vertexIx d k) (finite q)))
+    (walk 1 radius $ \_ d q -> do
+       o <- share3 (finite q)
+       write3 (wVerts w) (vertexIx d ns) o
+       forM_ [1 .. ns - 1] $ \k ->
+         write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o ^-^ p)))

@@ -2012,221 +2012,221 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s23 = ((t21 * t5) + (t22 * s14))
         let !s24 = ((t21 * t6) + (t22 * s15))
         let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (9 * i20) 3 5
-        wrU walk ((9 * i20) + 3) s23
-        wrU walk ((9 * i20) + 4) s24
-        wrU walk ((9 * i20) + 5) s25
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
       loopI 0.0 24.0 $ \i26 -> do
         let !d26 = fromIntegral i26 :: Double
         chkI radii ((24 * i1) + i26) 0 0
         t27 <- rdU radii ((24 * i1) + i26)
         let !s28 = (t27 / 4.0)
-        chkI walk (9 * i26) 0 8
-        t29 <- rdU walk ((9 * i26) + 3)
-        t30 <- rdU walk ((9 * i26) + 4)
-        t31 <- rdU walk ((9 * i26) + 5)
-        let !t32 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t33 = (t3 + (s28 * t30))
-        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t35 = (if ((abs t33) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t36 = (if t35 > 0 then (t33 + (negate ((t33 / t9) * t9))) else t33)
-        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t40 = (t2 + (s28 * t29))
-        let !t41 = (if t35 > 0 then (t40 + (negate ((t33 / t9) * t8))) else t40)
-        let !t42 = (if t37 > 0 then (t41 + (negate ((t36 / t9) * t8))) else t41)
-        let !t43 = (1.0 - t32)
-        let !t44 = (t4 + (s28 * t31))
-        let !t45 = (if t35 > 0 then (t44 + (negate ((t33 / t9) * t10))) else t44)
-        let !t46 = (if t37 > 0 then (t45 + (negate ((t36 / t9) * t10))) else t45)
-        let !s47 = ((t32 * (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)) + (t43 * t2))
-        let !s48 = ((t32 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t43 * t3))
-        let !s49 = ((t32 * (if t39 > 0 then (t46 + (negate ((t38 / t9) * t10))) else t46)) + (t43 * t4))
+        chkI walk (12 * i26) 0 8
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
+        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
+        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
+        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
+        let !t44 = (1.0 - t35)
+        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
+        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
+        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
+        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
+        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
         chkI verts ((291 * i1) + (12 * i26)) 3 5
         wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
         wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
         wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
-        wrU walk (9 * i26) s47
-        wrU walk ((9 * i26) + 1) s48
-        wrU walk ((9 * i26) + 2) s49
+        wrU walk (12 * i26) s47
+        wrU walk ((12 * i26) + 1) s48
+        wrU walk ((12 * i26) + 2) s49
         let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
         let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t52 = (t51 * ((if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42) + (negate t2)))
-        let !t53 = (t51 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
+        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
+        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
         let !t54 = (t53 + (negate t53))
-        let !t55 = (t51 * ((if t39 > 0 then (t46 + (negate ((t38 / t9) * t10))) else t46) + (negate t4)))
+        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
         let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
         let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
-        let !s58 = ((t32 * (t50 * (t57 * t52))) + (t43 * t29))
-        let !s59 = ((t32 * (t50 * (t57 * t54))) + (t43 * t30))
-        let !s60 = ((t32 * (t50 * (t57 * t55))) + (t43 * t31))
-        wrU walk ((9 * i26) + 3) s58
-        wrU walk ((9 * i26) + 4) s59
-        wrU walk ((9 * i26) + 5) s60
-        let !s61 = (t43 * t8)
-        let !s62 = (t32 + (t43 * t9))
-        let !s63 = (t43 * t10)
-        wrU walk ((9 * i26) + 6) s61
-        wrU walk ((9 * i26) + 7) s62
-        wrU walk ((9 * i26) + 8) s63
+        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
+        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
+        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
+        wrU walk ((12 * i26) + 3) s58
+        wrU walk ((12 * i26) + 4) s59
+        wrU walk ((12 * i26) + 5) s60
+        let !s61 = (t44 * t8)
+        let !s62 = (t35 + (t44 * t9))
+        let !s63 = (t44 * t10)
+        wrU walk ((12 * i26) + 6) s61
+        wrU walk ((12 * i26) + 7) s62
+        wrU walk ((12 * i26) + 8) s63
         pure ()
       loopI 0.0 24.0 $ \i64 -> do
         let !d64 = fromIntegral i64 :: Double
         chkI radii ((24 * i1) + i64) 0 0
         t65 <- rdU radii ((24 * i1) + i64)
         let !s66 = (t65 / 4.0)
-        chkI walk (9 * i64) 0 8
-        t67 <- rdU walk ((9 * i64) + 3)
-        t68 <- rdU walk ((9 * i64) + 4)
-        t69 <- rdU walk ((9 * i64) + 5)
-        t70 <- rdU walk (9 * i64)
-        t71 <- rdU walk ((9 * i64) + 1)
-        t72 <- rdU walk ((9 * i64) + 2)
-        t73 <- rdU walk ((9 * i64) + 6)
-        t74 <- rdU walk ((9 * i64) + 7)
-        t75 <- rdU walk ((9 * i64) + 8)
-        let !t76 = (if (abs s66) > 0 then 1.0 else 0.0)
-        let !t77 = (t71 + (s66 * t68))
-        let !t78 = (if (abs t74) > 0 then 1.0 else 0.0)
-        let !t79 = (if ((abs t77) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t80 = (if t79 > 0 then (t77 + (negate ((t77 / t74) * t74))) else t77)
-        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t74) * t74))) else t80)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t84 = (t70 + (s66 * t67))
-        let !t85 = (if t79 > 0 then (t84 + (negate ((t77 / t74) * t73))) else t84)
-        let !t86 = (if t81 > 0 then (t85 + (negate ((t80 / t74) * t73))) else t85)
-        let !t87 = (1.0 - t76)
-        let !t88 = (t72 + (s66 * t69))
-        let !t89 = (if t79 > 0 then (t88 + (negate ((t77 / t74) * t75))) else t88)
-        let !t90 = (if t81 > 0 then (t89 + (negate ((t80 / t74) * t75))) else t89)
-        let !s91 = ((t76 * (if t83 > 0 then (t86 + (negate ((t82 / t74) * t73))) else t86)) + (t87 * t70))
-        let !s92 = ((t76 * (if t83 > 0 then (t82 + (negate ((t82 / t74) * t74))) else t82)) + (t87 * t71))
-        let !s93 = ((t76 * (if t83 > 0 then (t90 + (negate ((t82 / t74) * t75))) else t90)) + (t87 * t72))
+        chkI walk (12 * i64) 0 8
+        t67 <- rdU walk (12 * i64)
+        t68 <- rdU walk ((12 * i64) + 1)
+        t69 <- rdU walk ((12 * i64) + 2)
+        t70 <- rdU walk ((12 * i64) + 6)
+        t71 <- rdU walk ((12 * i64) + 7)
+        t72 <- rdU walk ((12 * i64) + 8)
+        t73 <- rdU walk ((12 * i64) + 3)
+        t74 <- rdU walk ((12 * i64) + 4)
+        t75 <- rdU walk ((12 * i64) + 5)
+        let !s76 = (t67 + (s66 * t73))
+        let !s77 = (t68 + (s66 * t74))
+        let !s78 = (t69 + (s66 * t75))
+        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
+        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
+        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
+        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
+        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
+        let !t88 = (1.0 - t79)
+        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
+        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
+        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
+        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
+        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
         chkI verts ((291 * i1) + (12 * i64)) 6 8
         wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
         wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
         wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
-        wrU walk (9 * i64) s91
-        wrU walk ((9 * i64) + 1) s92
-        wrU walk ((9 * i64) + 2) s93
-        let !t94 = (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69)))
+        wrU walk (12 * i64) s91
+        wrU walk ((12 * i64) + 1) s92
+        wrU walk ((12 * i64) + 2) s93
+        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
         let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
-        let !t96 = (t95 * ((if t83 > 0 then (t86 + (negate ((t82 / t74) * t73))) else t86) + (negate t70)))
-        let !t97 = (t95 * ((if t83 > 0 then (t82 + (negate ((t82 / t74) * t74))) else t82) + (negate t71)))
+        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
+        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
         let !t98 = (t97 + (negate t97))
-        let !t99 = (t95 * ((if t83 > 0 then (t90 + (negate ((t82 / t74) * t75))) else t90) + (negate t72)))
+        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
         let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
         let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
-        let !s102 = ((t76 * (t94 * (t101 * t96))) + (t87 * t67))
-        let !s103 = ((t76 * (t94 * (t101 * t98))) + (t87 * t68))
-        let !s104 = ((t76 * (t94 * (t101 * t99))) + (t87 * t69))
-        wrU walk ((9 * i64) + 3) s102
-        wrU walk ((9 * i64) + 4) s103
-        wrU walk ((9 * i64) + 5) s104
-        let !s105 = (t87 * t73)
-        let !s106 = (t76 + (t87 * t74))
-        let !s107 = (t87 * t75)
-        wrU walk ((9 * i64) + 6) s105
-        wrU walk ((9 * i64) + 7) s106
-        wrU walk ((9 * i64) + 8) s107
+        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
+        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
+        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
+        wrU walk ((12 * i64) + 3) s102
+        wrU walk ((12 * i64) + 4) s103
+        wrU walk ((12 * i64) + 5) s104
+        let !s105 = (t88 * t70)
+        let !s106 = (t79 + (t88 * t71))
+        let !s107 = (t88 * t72)
+        wrU walk ((12 * i64) + 6) s105
+        wrU walk ((12 * i64) + 7) s106
+        wrU walk ((12 * i64) + 8) s107
         pure ()
       loopI 0.0 24.0 $ \i108 -> do
         let !d108 = fromIntegral i108 :: Double
         chkI radii ((24 * i1) + i108) 0 0
         t109 <- rdU radii ((24 * i1) + i108)
         let !s110 = (t109 / 4.0)
-        chkI walk (9 * i108) 0 8
-        t111 <- rdU walk ((9 * i108) + 3)
-        t112 <- rdU walk ((9 * i108) + 4)
-        t113 <- rdU walk ((9 * i108) + 5)
-        t114 <- rdU walk (9 * i108)
-        t115 <- rdU walk ((9 * i108) + 1)
-        t116 <- rdU walk ((9 * i108) + 2)
-        t117 <- rdU walk ((9 * i108) + 6)
-        t118 <- rdU walk ((9 * i108) + 7)
-        t119 <- rdU walk ((9 * i108) + 8)
-        let !t120 = (if (abs s110) > 0 then 1.0 else 0.0)
-        let !t121 = (t115 + (s110 * t112))
-        let !t122 = (if (abs t118) > 0 then 1.0 else 0.0)
-        let !t123 = (if ((abs t121) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t124 = (if t123 > 0 then (t121 + (negate ((t121 / t118) * t118))) else t121)
-        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t118) * t118))) else t124)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t128 = (t114 + (s110 * t111))
-        let !t129 = (if t123 > 0 then (t128 + (negate ((t121 / t118) * t117))) else t128)
-        let !t130 = (if t125 > 0 then (t129 + (negate ((t124 / t118) * t117))) else t129)
-        let !t131 = (1.0 - t120)
-        let !t132 = (t116 + (s110 * t113))
-        let !t133 = (if t123 > 0 then (t132 + (negate ((t121 / t118) * t119))) else t132)
-        let !t134 = (if t125 > 0 then (t133 + (negate ((t124 / t118) * t119))) else t133)
-        let !s135 = ((t120 * (if t127 > 0 then (t130 + (negate ((t126 / t118) * t117))) else t130)) + (t131 * t114))
-        let !s136 = ((t120 * (if t127 > 0 then (t126 + (negate ((t126 / t118) * t118))) else t126)) + (t131 * t115))
-        let !s137 = ((t120 * (if t127 > 0 then (t134 + (negate ((t126 / t118) * t119))) else t134)) + (t131 * t116))
+        chkI walk (12 * i108) 0 8
+        t111 <- rdU walk (12 * i108)
+        t112 <- rdU walk ((12 * i108) + 1)
+        t113 <- rdU walk ((12 * i108) + 2)
+        t114 <- rdU walk ((12 * i108) + 6)
+        t115 <- rdU walk ((12 * i108) + 7)
+        t116 <- rdU walk ((12 * i108) + 8)
+        t117 <- rdU walk ((12 * i108) + 3)
+        t118 <- rdU walk ((12 * i108) + 4)
+        t119 <- rdU walk ((12 * i108) + 5)
+        let !s120 = (t111 + (s110 * t117))
+        let !s121 = (t112 + (s110 * t118))
+        let !s122 = (t113 + (s110 * t119))
+        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
+        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
+        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
+        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
+        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
+        let !t132 = (1.0 - t123)
+        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
+        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
+        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
+        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
+        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
         chkI verts ((291 * i1) + (12 * i108)) 9 11
         wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
         wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
         wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
-        wrU walk (9 * i108) s135
-        wrU walk ((9 * i108) + 1) s136
-        wrU walk ((9 * i108) + 2) s137
-        let !t138 = (sqrt (((t111 * t111) + (t112 * t112)) + (t113 * t113)))
+        wrU walk (12 * i108) s135
+        wrU walk ((12 * i108) + 1) s136
+        wrU walk ((12 * i108) + 2) s137
+        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
         let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
-        let !t140 = (t139 * ((if t127 > 0 then (t130 + (negate ((t126 / t118) * t117))) else t130) + (negate t114)))
-        let !t141 = (t139 * ((if t127 > 0 then (t126 + (negate ((t126 / t118) * t118))) else t126) + (negate t115)))
+        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
+        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
         let !t142 = (t141 + (negate t141))
-        let !t143 = (t139 * ((if t127 > 0 then (t134 + (negate ((t126 / t118) * t119))) else t134) + (negate t116)))
+        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
         let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
         let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
-        let !s146 = ((t120 * (t138 * (t145 * t140))) + (t131 * t111))
-        let !s147 = ((t120 * (t138 * (t145 * t142))) + (t131 * t112))
-        let !s148 = ((t120 * (t138 * (t145 * t143))) + (t131 * t113))
-        wrU walk ((9 * i108) + 3) s146
-        wrU walk ((9 * i108) + 4) s147
-        wrU walk ((9 * i108) + 5) s148
-        let !s149 = (t131 * t117)
-        let !s150 = (t120 + (t131 * t118))
-        let !s151 = (t131 * t119)
-        wrU walk ((9 * i108) + 6) s149
-        wrU walk ((9 * i108) + 7) s150
-        wrU walk ((9 * i108) + 8) s151
+        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
+        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
+        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
+        wrU walk ((12 * i108) + 3) s146
+        wrU walk ((12 * i108) + 4) s147
+        wrU walk ((12 * i108) + 5) s148
+        let !s149 = (t132 * t114)
+        let !s150 = (t123 + (t132 * t115))
+        let !s151 = (t132 * t116)
+        wrU walk ((12 * i108) + 6) s149
+        wrU walk ((12 * i108) + 7) s150
+        wrU walk ((12 * i108) + 8) s151
         pure ()
       loopI 0.0 24.0 $ \i152 -> do
         let !d152 = fromIntegral i152 :: Double
         chkI radii ((24 * i1) + i152) 0 0
         t153 <- rdU radii ((24 * i1) + i152)
         let !s154 = (t153 / 4.0)
-        chkI walk (9 * i152) 0 8
-        t155 <- rdU walk ((9 * i152) + 3)
-        t156 <- rdU walk ((9 * i152) + 4)
-        t157 <- rdU walk ((9 * i152) + 5)
-        t158 <- rdU walk (9 * i152)
-        t159 <- rdU walk ((9 * i152) + 1)
-        t160 <- rdU walk ((9 * i152) + 2)
-        t161 <- rdU walk ((9 * i152) + 6)
-        t162 <- rdU walk ((9 * i152) + 7)
-        t163 <- rdU walk ((9 * i152) + 8)
-        let !t164 = (if (abs s154) > 0 then 1.0 else 0.0)
-        let !t165 = (t159 + (s154 * t156))
-        let !t166 = (if (abs t162) > 0 then 1.0 else 0.0)
-        let !t167 = (if ((abs t165) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t168 = (if t167 > 0 then (t165 + (negate ((t165 / t162) * t162))) else t165)
-        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t162) * t162))) else t168)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t172 = (t158 + (s154 * t155))
-        let !t173 = (if t167 > 0 then (t172 + (negate ((t165 / t162) * t161))) else t172)
-        let !t174 = (if t169 > 0 then (t173 + (negate ((t168 / t162) * t161))) else t173)
-        let !t175 = (1.0 - t164)
-        let !t176 = (t160 + (s154 * t157))
-        let !t177 = (if t167 > 0 then (t176 + (negate ((t165 / t162) * t163))) else t176)
-        let !t178 = (if t169 > 0 then (t177 + (negate ((t168 / t162) * t163))) else t177)
-        let !s179 = ((t164 * (if t171 > 0 then (t174 + (negate ((t170 / t162) * t161))) else t174)) + (t175 * t158))
-        let !s180 = ((t164 * (if t171 > 0 then (t170 + (negate ((t170 / t162) * t162))) else t170)) + (t175 * t159))
-        let !s181 = ((t164 * (if t171 > 0 then (t178 + (negate ((t170 / t162) * t163))) else t178)) + (t175 * t160))
+        chkI walk (12 * i152) 0 8
+        t155 <- rdU walk (12 * i152)
+        t156 <- rdU walk ((12 * i152) + 1)
+        t157 <- rdU walk ((12 * i152) + 2)
+        t158 <- rdU walk ((12 * i152) + 6)
+        t159 <- rdU walk ((12 * i152) + 7)
+        t160 <- rdU walk ((12 * i152) + 8)
+        t161 <- rdU walk ((12 * i152) + 3)
+        t162 <- rdU walk ((12 * i152) + 4)
+        t163 <- rdU walk ((12 * i152) + 5)
+        let !s164 = (t155 + (s154 * t161))
+        let !s165 = (t156 + (s154 * t162))
+        let !s166 = (t157 + (s154 * t163))
+        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
+        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
+        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
+        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
+        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
+        let !t176 = (1.0 - t167)
+        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
+        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
+        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
+        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
+        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
         chkI verts ((291 * i1) + (12 * i152)) 12 14
         wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
         wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
@@ -2245,28 +2245,28 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s186 = ((t184 * t5) + (t185 * s14))
         let !s187 = ((t184 * t6) + (t185 * s15))
         let !s188 = ((t184 * t7) + (t185 * s16))
-        let !t189 = (if (abs t183) > 0 then 1.0 else 0.0)
-        let !t190 = (t3 + (t183 * s187))
-        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t192 = (if ((abs t190) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t193 = (if t192 > 0 then (t190 + (negate ((t190 / t9) * t9))) else t190)
-        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t197 = (t2 + (t183 * s186))
-        let !t198 = (if t192 > 0 then (t197 + (negate ((t190 / t9) * t8))) else t197)
-        let !t199 = (if t194 > 0 then (t198 + (negate ((t193 / t9) * t8))) else t198)
-        let !t200 = (1.0 - t189)
-        let !t201 = ((t189 * (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)) + (t200 * t2))
-        let !t202 = ((t189 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t200 * t3))
-        let !t203 = (t4 + (t183 * s188))
-        let !t204 = (if t192 > 0 then (t203 + (negate ((t190 / t9) * t10))) else t203)
-        let !t205 = (if t194 > 0 then (t204 + (negate ((t193 / t9) * t10))) else t204)
-        let !t206 = ((t189 * (if t196 > 0 then (t205 + (negate ((t195 / t9) * t10))) else t205)) + (t200 * t4))
-        let !t207 = (1.0 - (abs (((t201 - t201) + (t202 - t202)) + (t206 - t206))))
-        let !s208 = (if t207 > 0 then t201 else t2)
-        let !s209 = (if t207 > 0 then t202 else t3)
-        let !s210 = (if t207 > 0 then t206 else t4)
+        let !s189 = (t2 + (t183 * s186))
+        let !s190 = (t3 + (t183 * s187))
+        let !s191 = (t4 + (t183 * s188))
+        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
+        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
+        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
+        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
+        let !t201 = (1.0 - t192)
+        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
+        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
+        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
+        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
+        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
+        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
+        let !s208 = (if t207 > 0 then s204 else t2)
+        let !s209 = (if t207 > 0 then s205 else t3)
+        let !s210 = (if t207 > 0 then s206 else t4)
         chkI verts ((291 * i1) + (12 * i182)) 3 14
         wrU verts (((291 * i1) + (12 * i182)) + 12) s208
         wrU verts (((291 * i1) + (12 * i182)) + 13) s209

@@ -1947,353 +1947,538 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s23 = ((t21 * t5) + (t22 * s14))
         let !s24 = ((t21 * t6) + (t22 * s15))
         let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (9 * i20) 3 5
-        wrU walk ((9 * i20) + 3) s23
-        wrU walk ((9 * i20) + 4) s24
-        wrU walk ((9 * i20) + 5) s25
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
       loopI 0.0 24.0 $ \i26 -> do
         let !d26 = fromIntegral i26 :: Double
         chkI radii ((24 * i1) + i26) 0 0
         t27 <- rdU radii ((24 * i1) + i26)
         let !s28 = (t27 / 4.0)
-        chkI walk (9 * i26) 0 8
-        t29 <- rdU walk ((9 * i26) + 3)
-        t30 <- rdU walk ((9 * i26) + 4)
-        t31 <- rdU walk ((9 * i26) + 5)
-        let !t32 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t33 = (t2 + (s28 * t29))
-        let !t34 = (t4 + (s28 * t31))
-        let !t35 = (sqrt ((t33 * t33) + (t34 * t34)))
+        chkI walk (12 * i26) 3 11
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (sqrt ((s32 * s32) + (s34 * s34)))
         let !t36 = (t35 - 1.0)
         let !t37 = (recip (2.0 * t35))
-        let !t38 = (((t37 * (t33 + t33)) * t8) + ((t37 * (t34 + t34)) * t10))
+        let !t38 = (((t37 * (s32 + s32)) * t8) + ((t37 * (s34 + s34)) * t10))
         let !t39 = (if ((abs t36) - 1.0e-10) > 0 then (if (abs t38) > 0 then 1.0 else 0.0) else 0.0)
-        let !t40 = (if t39 > 0 then (t33 + (negate ((t36 / t38) * t8))) else t33)
-        let !t41 = (if t39 > 0 then (t34 + (negate ((t36 / t38) * t10))) else t34)
-        let !t42 = (sqrt ((t40 * t40) + (t41 * t41)))
-        let !t43 = (t42 - 1.0)
-        let !t44 = (recip (2.0 * t42))
-        let !t45 = (((t44 * (t40 + t40)) * t8) + ((t44 * (t41 + t41)) * t10))
-        let !t46 = (if ((abs t43) - 1.0e-10) > 0 then (if (abs t45) > 0 then 1.0 else 0.0) else 0.0)
-        let !t47 = (if t46 > 0 then (t40 + (negate ((t43 / t45) * t8))) else t40)
-        let !t48 = (if t46 > 0 then (t41 + (negate ((t43 / t45) * t10))) else t41)
-        let !t49 = (sqrt ((t47 * t47) + (t48 * t48)))
-        let !t50 = (t49 - 1.0)
-        let !t51 = (recip (2.0 * t49))
-        let !t52 = (((t51 * (t47 + t47)) * t8) + ((t51 * (t48 + t48)) * t10))
-        let !t53 = (if ((abs t50) - 1.0e-10) > 0 then (if (abs t52) > 0 then 1.0 else 0.0) else 0.0)
-        let !t54 = (1.0 - t32)
-        let !t55 = (t3 + (s28 * t30))
-        let !t56 = (if t39 > 0 then (t55 + (negate ((t36 / t38) * t9))) else t55)
-        let !t57 = (if t46 > 0 then (t56 + (negate ((t43 / t45) * t9))) else t56)
-        let !s58 = ((t32 * (if t53 > 0 then (t47 + (negate ((t50 / t52) * t8))) else t47)) + (t54 * t2))
-        let !s59 = ((t32 * (if t53 > 0 then (t57 + (negate ((t50 / t52) * t9))) else t57)) + (t54 * t3))
-        let !s60 = ((t32 * (if t53 > 0 then (t48 + (negate ((t50 / t52) * t10))) else t48)) + (t54 * t4))
-        chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s58 - s58) + (s59 - s59)) + (s60 - s60)))) > 0 then s58 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s58 - s58) + (s59 - s59)) + (s60 - s60)))) > 0 then s59 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s58 - s58) + (s59 - s59)) + (s60 - s60)))) > 0 then s60 else t4)
-        wrU walk (9 * i26) s58
-        wrU walk ((9 * i26) + 1) s59
-        wrU walk ((9 * i26) + 2) s60
-        let !t61 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t62 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t63 = (t62 * ((if t53 > 0 then (t47 + (negate ((t50 / t52) * t8))) else t47) + (negate t2)))
-        let !t64 = (t51 * (t47 + t47))
-        let !t65 = (t51 * (t48 + t48))
-        let !t66 = (sqrt ((t64 * t64) + (t65 * t65)))
-        let !t67 = (if t66 > 0 then (recip (if (t66 - 1.0e-300) > 0 then t66 else 1.0e-300)) else 0.0)
-        let !t68 = (t67 * t64)
-        let !t69 = (t67 * t65)
-        let !t70 = (t62 * ((if t53 > 0 then (t48 + (negate ((t50 / t52) * t10))) else t48) + (negate t4)))
-        let !t71 = ((t68 * t63) + (t69 * t70))
-        let !t72 = (t63 + (negate (t71 * t68)))
-        let !t73 = (t62 * ((if t53 > 0 then (t57 + (negate ((t50 / t52) * t9))) else t57) + (negate t3)))
-        let !t74 = (t70 + (negate (t71 * t69)))
-        let !t75 = (sqrt (((t72 * t72) + (t73 * t73)) + (t74 * t74)))
-        let !t76 = (if t75 > 0 then (recip (if (t75 - 1.0e-300) > 0 then t75 else 1.0e-300)) else 0.0)
-        let !s77 = ((t32 * (t61 * (t76 * t72))) + (t54 * t29))
-        let !s78 = ((t32 * (t61 * (t76 * t73))) + (t54 * t30))
-        let !s79 = ((t32 * (t61 * (t76 * t74))) + (t54 * t31))
-        wrU walk ((9 * i26) + 3) s77
-        wrU walk ((9 * i26) + 4) s78
-        wrU walk ((9 * i26) + 5) s79
-        let !s80 = ((t32 * t68) + (t54 * t8))
-        let !s81 = (t54 * t9)
-        let !s82 = ((t32 * t69) + (t54 * t10))
-        wrU walk ((9 * i26) + 6) s80
-        wrU walk ((9 * i26) + 7) s81
-        wrU walk ((9 * i26) + 8) s82
+        let !s40 = (if t39 > 0 then (s32 + (negate ((t36 / t38) * t8))) else s32)
+        let !s41 = (if t39 > 0 then (s33 + (negate ((t36 / t38) * t9))) else s33)
+        let !s42 = (if t39 > 0 then (s34 + (negate ((t36 / t38) * t10))) else s34)
+        wrU walk ((12 * i26) + 9) s40
+        wrU walk ((12 * i26) + 10) s41
+        wrU walk ((12 * i26) + 11) s42
         pure ()
-      loopI 0.0 24.0 $ \i83 -> do
-        let !d83 = fromIntegral i83 :: Double
-        chkI radii ((24 * i1) + i83) 0 0
-        t84 <- rdU radii ((24 * i1) + i83)
-        let !s85 = (t84 / 4.0)
-        chkI walk (9 * i83) 0 8
-        t86 <- rdU walk ((9 * i83) + 3)
-        t87 <- rdU walk ((9 * i83) + 4)
-        t88 <- rdU walk ((9 * i83) + 5)
-        t89 <- rdU walk (9 * i83)
-        t90 <- rdU walk ((9 * i83) + 1)
-        t91 <- rdU walk ((9 * i83) + 2)
-        t92 <- rdU walk ((9 * i83) + 6)
-        t93 <- rdU walk ((9 * i83) + 7)
-        t94 <- rdU walk ((9 * i83) + 8)
-        let !t95 = (if (abs s85) > 0 then 1.0 else 0.0)
-        let !t96 = (t89 + (s85 * t86))
-        let !t97 = (t91 + (s85 * t88))
-        let !t98 = (sqrt ((t96 * t96) + (t97 * t97)))
-        let !t99 = (t98 - 1.0)
-        let !t100 = (recip (2.0 * t98))
-        let !t101 = (((t100 * (t96 + t96)) * t92) + ((t100 * (t97 + t97)) * t94))
-        let !t102 = (if ((abs t99) - 1.0e-10) > 0 then (if (abs t101) > 0 then 1.0 else 0.0) else 0.0)
-        let !t103 = (if t102 > 0 then (t96 + (negate ((t99 / t101) * t92))) else t96)
-        let !t104 = (if t102 > 0 then (t97 + (negate ((t99 / t101) * t94))) else t97)
-        let !t105 = (sqrt ((t103 * t103) + (t104 * t104)))
-        let !t106 = (t105 - 1.0)
-        let !t107 = (recip (2.0 * t105))
-        let !t108 = (((t107 * (t103 + t103)) * t92) + ((t107 * (t104 + t104)) * t94))
-        let !t109 = (if ((abs t106) - 1.0e-10) > 0 then (if (abs t108) > 0 then 1.0 else 0.0) else 0.0)
-        let !t110 = (if t109 > 0 then (t103 + (negate ((t106 / t108) * t92))) else t103)
-        let !t111 = (if t109 > 0 then (t104 + (negate ((t106 / t108) * t94))) else t104)
-        let !t112 = (sqrt ((t110 * t110) + (t111 * t111)))
-        let !t113 = (t112 - 1.0)
-        let !t114 = (recip (2.0 * t112))
-        let !t115 = (((t114 * (t110 + t110)) * t92) + ((t114 * (t111 + t111)) * t94))
-        let !t116 = (if ((abs t113) - 1.0e-10) > 0 then (if (abs t115) > 0 then 1.0 else 0.0) else 0.0)
-        let !t117 = (1.0 - t95)
-        let !t118 = (t90 + (s85 * t87))
-        let !t119 = (if t102 > 0 then (t118 + (negate ((t99 / t101) * t93))) else t118)
-        let !t120 = (if t109 > 0 then (t119 + (negate ((t106 / t108) * t93))) else t119)
-        let !s121 = ((t95 * (if t116 > 0 then (t110 + (negate ((t113 / t115) * t92))) else t110)) + (t117 * t89))
-        let !s122 = ((t95 * (if t116 > 0 then (t120 + (negate ((t113 / t115) * t93))) else t120)) + (t117 * t90))
-        let !s123 = ((t95 * (if t116 > 0 then (t111 + (negate ((t113 / t115) * t94))) else t111)) + (t117 * t91))
-        chkI verts ((291 * i1) + (12 * i83)) 6 8
-        wrU verts (((291 * i1) + (12 * i83)) + 6) (if (1.0 - (abs (((s121 - s121) + (s122 - s122)) + (s123 - s123)))) > 0 then s121 else t2)
-        wrU verts (((291 * i1) + (12 * i83)) + 7) (if (1.0 - (abs (((s121 - s121) + (s122 - s122)) + (s123 - s123)))) > 0 then s122 else t3)
-        wrU verts (((291 * i1) + (12 * i83)) + 8) (if (1.0 - (abs (((s121 - s121) + (s122 - s122)) + (s123 - s123)))) > 0 then s123 else t4)
-        wrU walk (9 * i83) s121
-        wrU walk ((9 * i83) + 1) s122
-        wrU walk ((9 * i83) + 2) s123
-        let !t124 = (sqrt (((t86 * t86) + (t87 * t87)) + (t88 * t88)))
-        let !t125 = (if (abs s85) > 0 then (recip s85) else 0.0)
-        let !t126 = (t125 * ((if t116 > 0 then (t110 + (negate ((t113 / t115) * t92))) else t110) + (negate t89)))
-        let !t127 = (t114 * (t110 + t110))
-        let !t128 = (t114 * (t111 + t111))
-        let !t129 = (sqrt ((t127 * t127) + (t128 * t128)))
-        let !t130 = (if t129 > 0 then (recip (if (t129 - 1.0e-300) > 0 then t129 else 1.0e-300)) else 0.0)
-        let !t131 = (t130 * t127)
-        let !t132 = (t130 * t128)
-        let !t133 = (t125 * ((if t116 > 0 then (t111 + (negate ((t113 / t115) * t94))) else t111) + (negate t91)))
-        let !t134 = ((t131 * t126) + (t132 * t133))
-        let !t135 = (t126 + (negate (t134 * t131)))
-        let !t136 = (t125 * ((if t116 > 0 then (t120 + (negate ((t113 / t115) * t93))) else t120) + (negate t90)))
-        let !t137 = (t133 + (negate (t134 * t132)))
-        let !t138 = (sqrt (((t135 * t135) + (t136 * t136)) + (t137 * t137)))
-        let !t139 = (if t138 > 0 then (recip (if (t138 - 1.0e-300) > 0 then t138 else 1.0e-300)) else 0.0)
-        let !s140 = ((t95 * (t124 * (t139 * t135))) + (t117 * t86))
-        let !s141 = ((t95 * (t124 * (t139 * t136))) + (t117 * t87))
-        let !s142 = ((t95 * (t124 * (t139 * t137))) + (t117 * t88))
-        wrU walk ((9 * i83) + 3) s140
-        wrU walk ((9 * i83) + 4) s141
-        wrU walk ((9 * i83) + 5) s142
-        let !s143 = ((t95 * t131) + (t117 * t92))
-        let !s144 = (t117 * t93)
-        let !s145 = ((t95 * t132) + (t117 * t94))
-        wrU walk ((9 * i83) + 6) s143
-        wrU walk ((9 * i83) + 7) s144
-        wrU walk ((9 * i83) + 8) s145
+      loopI 0.0 24.0 $ \i43 -> do
+        let !d43 = fromIntegral i43 :: Double
+        chkI walk (12 * i43) 9 11
+        t44 <- rdU walk ((12 * i43) + 9)
+        t45 <- rdU walk ((12 * i43) + 10)
+        t46 <- rdU walk ((12 * i43) + 11)
+        let !t47 = (sqrt ((t44 * t44) + (t46 * t46)))
+        let !t48 = (t47 - 1.0)
+        let !t49 = (recip (2.0 * t47))
+        let !t50 = (((t49 * (t44 + t44)) * t8) + ((t49 * (t46 + t46)) * t10))
+        let !t51 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t50) > 0 then 1.0 else 0.0) else 0.0)
+        let !s52 = (if t51 > 0 then (t44 + (negate ((t48 / t50) * t8))) else t44)
+        let !s53 = (if t51 > 0 then (t45 + (negate ((t48 / t50) * t9))) else t45)
+        let !s54 = (if t51 > 0 then (t46 + (negate ((t48 / t50) * t10))) else t46)
+        wrU walk ((12 * i43) + 9) s52
+        wrU walk ((12 * i43) + 10) s53
+        wrU walk ((12 * i43) + 11) s54
         pure ()
-      loopI 0.0 24.0 $ \i146 -> do
-        let !d146 = fromIntegral i146 :: Double
-        chkI radii ((24 * i1) + i146) 0 0
-        t147 <- rdU radii ((24 * i1) + i146)
-        let !s148 = (t147 / 4.0)
-        chkI walk (9 * i146) 0 8
-        t149 <- rdU walk ((9 * i146) + 3)
-        t150 <- rdU walk ((9 * i146) + 4)
-        t151 <- rdU walk ((9 * i146) + 5)
-        t152 <- rdU walk (9 * i146)
-        t153 <- rdU walk ((9 * i146) + 1)
-        t154 <- rdU walk ((9 * i146) + 2)
-        t155 <- rdU walk ((9 * i146) + 6)
-        t156 <- rdU walk ((9 * i146) + 7)
-        t157 <- rdU walk ((9 * i146) + 8)
-        let !t158 = (if (abs s148) > 0 then 1.0 else 0.0)
-        let !t159 = (t152 + (s148 * t149))
-        let !t160 = (t154 + (s148 * t151))
-        let !t161 = (sqrt ((t159 * t159) + (t160 * t160)))
-        let !t162 = (t161 - 1.0)
-        let !t163 = (recip (2.0 * t161))
-        let !t164 = (((t163 * (t159 + t159)) * t155) + ((t163 * (t160 + t160)) * t157))
-        let !t165 = (if ((abs t162) - 1.0e-10) > 0 then (if (abs t164) > 0 then 1.0 else 0.0) else 0.0)
-        let !t166 = (if t165 > 0 then (t159 + (negate ((t162 / t164) * t155))) else t159)
-        let !t167 = (if t165 > 0 then (t160 + (negate ((t162 / t164) * t157))) else t160)
-        let !t168 = (sqrt ((t166 * t166) + (t167 * t167)))
-        let !t169 = (t168 - 1.0)
-        let !t170 = (recip (2.0 * t168))
-        let !t171 = (((t170 * (t166 + t166)) * t155) + ((t170 * (t167 + t167)) * t157))
-        let !t172 = (if ((abs t169) - 1.0e-10) > 0 then (if (abs t171) > 0 then 1.0 else 0.0) else 0.0)
-        let !t173 = (if t172 > 0 then (t166 + (negate ((t169 / t171) * t155))) else t166)
-        let !t174 = (if t172 > 0 then (t167 + (negate ((t169 / t171) * t157))) else t167)
-        let !t175 = (sqrt ((t173 * t173) + (t174 * t174)))
-        let !t176 = (t175 - 1.0)
-        let !t177 = (recip (2.0 * t175))
-        let !t178 = (((t177 * (t173 + t173)) * t155) + ((t177 * (t174 + t174)) * t157))
-        let !t179 = (if ((abs t176) - 1.0e-10) > 0 then (if (abs t178) > 0 then 1.0 else 0.0) else 0.0)
-        let !t180 = (1.0 - t158)
-        let !t181 = (t153 + (s148 * t150))
-        let !t182 = (if t165 > 0 then (t181 + (negate ((t162 / t164) * t156))) else t181)
-        let !t183 = (if t172 > 0 then (t182 + (negate ((t169 / t171) * t156))) else t182)
-        let !s184 = ((t158 * (if t179 > 0 then (t173 + (negate ((t176 / t178) * t155))) else t173)) + (t180 * t152))
-        let !s185 = ((t158 * (if t179 > 0 then (t183 + (negate ((t176 / t178) * t156))) else t183)) + (t180 * t153))
-        let !s186 = ((t158 * (if t179 > 0 then (t174 + (negate ((t176 / t178) * t157))) else t174)) + (t180 * t154))
-        chkI verts ((291 * i1) + (12 * i146)) 9 11
-        wrU verts (((291 * i1) + (12 * i146)) + 9) (if (1.0 - (abs (((s184 - s184) + (s185 - s185)) + (s186 - s186)))) > 0 then s184 else t2)
-        wrU verts (((291 * i1) + (12 * i146)) + 10) (if (1.0 - (abs (((s184 - s184) + (s185 - s185)) + (s186 - s186)))) > 0 then s185 else t3)
-        wrU verts (((291 * i1) + (12 * i146)) + 11) (if (1.0 - (abs (((s184 - s184) + (s185 - s185)) + (s186 - s186)))) > 0 then s186 else t4)
-        wrU walk (9 * i146) s184
-        wrU walk ((9 * i146) + 1) s185
-        wrU walk ((9 * i146) + 2) s186
-        let !t187 = (sqrt (((t149 * t149) + (t150 * t150)) + (t151 * t151)))
-        let !t188 = (if (abs s148) > 0 then (recip s148) else 0.0)
-        let !t189 = (t188 * ((if t179 > 0 then (t173 + (negate ((t176 / t178) * t155))) else t173) + (negate t152)))
-        let !t190 = (t177 * (t173 + t173))
-        let !t191 = (t177 * (t174 + t174))
-        let !t192 = (sqrt ((t190 * t190) + (t191 * t191)))
-        let !t193 = (if t192 > 0 then (recip (if (t192 - 1.0e-300) > 0 then t192 else 1.0e-300)) else 0.0)
-        let !t194 = (t193 * t190)
-        let !t195 = (t193 * t191)
-        let !t196 = (t188 * ((if t179 > 0 then (t174 + (negate ((t176 / t178) * t157))) else t174) + (negate t154)))
-        let !t197 = ((t194 * t189) + (t195 * t196))
-        let !t198 = (t189 + (negate (t197 * t194)))
-        let !t199 = (t188 * ((if t179 > 0 then (t183 + (negate ((t176 / t178) * t156))) else t183) + (negate t153)))
-        let !t200 = (t196 + (negate (t197 * t195)))
-        let !t201 = (sqrt (((t198 * t198) + (t199 * t199)) + (t200 * t200)))
-        let !t202 = (if t201 > 0 then (recip (if (t201 - 1.0e-300) > 0 then t201 else 1.0e-300)) else 0.0)
-        let !s203 = ((t158 * (t187 * (t202 * t198))) + (t180 * t149))
-        let !s204 = ((t158 * (t187 * (t202 * t199))) + (t180 * t150))
-        let !s205 = ((t158 * (t187 * (t202 * t200))) + (t180 * t151))
-        wrU walk ((9 * i146) + 3) s203
-        wrU walk ((9 * i146) + 4) s204
-        wrU walk ((9 * i146) + 5) s205
-        let !s206 = ((t158 * t194) + (t180 * t155))
-        let !s207 = (t180 * t156)
-        let !s208 = ((t158 * t195) + (t180 * t157))
-        wrU walk ((9 * i146) + 6) s206
-        wrU walk ((9 * i146) + 7) s207
-        wrU walk ((9 * i146) + 8) s208
+      loopI 0.0 24.0 $ \i55 -> do
+        let !d55 = fromIntegral i55 :: Double
+        chkI walk (12 * i55) 0 11
+        t56 <- rdU walk ((12 * i55) + 9)
+        t57 <- rdU walk ((12 * i55) + 10)
+        t58 <- rdU walk ((12 * i55) + 11)
+        chkI radii ((24 * i1) + i55) 0 0
+        t59 <- rdU radii ((24 * i1) + i55)
+        let !s60 = (t59 / 4.0)
+        t61 <- rdU walk ((12 * i55) + 3)
+        t62 <- rdU walk ((12 * i55) + 4)
+        t63 <- rdU walk ((12 * i55) + 5)
+        let !t64 = (if (abs s60) > 0 then 1.0 else 0.0)
+        let !t65 = (sqrt ((t56 * t56) + (t58 * t58)))
+        let !t66 = (t65 - 1.0)
+        let !t67 = (recip (2.0 * t65))
+        let !t68 = (((t67 * (t56 + t56)) * t8) + ((t67 * (t58 + t58)) * t10))
+        let !t69 = (if ((abs t66) - 1.0e-10) > 0 then (if (abs t68) > 0 then 1.0 else 0.0) else 0.0)
+        let !t70 = (1.0 - t64)
+        let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
+        let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
+        let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
+        chkI verts ((291 * i1) + (12 * i55)) 3 5
+        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
+        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
+        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
+        wrU walk (12 * i55) s71
+        wrU walk ((12 * i55) + 1) s72
+        wrU walk ((12 * i55) + 2) s73
+        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
+        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
+        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
+        let !t77 = (t67 * (t56 + t56))
+        let !t78 = (t67 * (t58 + t58))
+        let !t79 = (sqrt ((t77 * t77) + (t78 * t78)))
+        let !t80 = (if t79 > 0 then (recip (if (t79 - 1.0e-300) > 0 then t79 else 1.0e-300)) else 0.0)
+        let !t81 = (t80 * t77)
+        let !t82 = (t80 * t78)
+        let !t83 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
+        let !t84 = ((t81 * t76) + (t82 * t83))
+        let !t85 = (t76 + (negate (t84 * t81)))
+        let !t86 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
+        let !t87 = (t83 + (negate (t84 * t82)))
+        let !t88 = (sqrt (((t85 * t85) + (t86 * t86)) + (t87 * t87)))
+        let !t89 = (if t88 > 0 then (recip (if (t88 - 1.0e-300) > 0 then t88 else 1.0e-300)) else 0.0)
+        let !s90 = ((t64 * (t74 * (t89 * t85))) + (t70 * t61))
+        let !s91 = ((t64 * (t74 * (t89 * t86))) + (t70 * t62))
+        let !s92 = ((t64 * (t74 * (t89 * t87))) + (t70 * t63))
+        wrU walk ((12 * i55) + 3) s90
+        wrU walk ((12 * i55) + 4) s91
+        wrU walk ((12 * i55) + 5) s92
+        let !s93 = ((t64 * t81) + (t70 * t8))
+        let !s94 = (t70 * t9)
+        let !s95 = ((t64 * t82) + (t70 * t10))
+        wrU walk ((12 * i55) + 6) s93
+        wrU walk ((12 * i55) + 7) s94
+        wrU walk ((12 * i55) + 8) s95
         pure ()
-      loopI 0.0 24.0 $ \i209 -> do
-        let !d209 = fromIntegral i209 :: Double
-        chkI radii ((24 * i1) + i209) 0 0
-        t210 <- rdU radii ((24 * i1) + i209)
-        let !s211 = (t210 / 4.0)
-        chkI walk (9 * i209) 0 8
-        t212 <- rdU walk ((9 * i209) + 3)
-        t213 <- rdU walk ((9 * i209) + 4)
-        t214 <- rdU walk ((9 * i209) + 5)
-        t215 <- rdU walk (9 * i209)
-        t216 <- rdU walk ((9 * i209) + 1)
-        t217 <- rdU walk ((9 * i209) + 2)
-        t218 <- rdU walk ((9 * i209) + 6)
-        t219 <- rdU walk ((9 * i209) + 7)
-        t220 <- rdU walk ((9 * i209) + 8)
-        let !t221 = (if (abs s211) > 0 then 1.0 else 0.0)
-        let !t222 = (t215 + (s211 * t212))
-        let !t223 = (t217 + (s211 * t214))
-        let !t224 = (sqrt ((t222 * t222) + (t223 * t223)))
-        let !t225 = (t224 - 1.0)
-        let !t226 = (recip (2.0 * t224))
-        let !t227 = (((t226 * (t222 + t222)) * t218) + ((t226 * (t223 + t223)) * t220))
-        let !t228 = (if ((abs t225) - 1.0e-10) > 0 then (if (abs t227) > 0 then 1.0 else 0.0) else 0.0)
-        let !t229 = (if t228 > 0 then (t222 + (negate ((t225 / t227) * t218))) else t222)
-        let !t230 = (if t228 > 0 then (t223 + (negate ((t225 / t227) * t220))) else t223)
-        let !t231 = (sqrt ((t229 * t229) + (t230 * t230)))
-        let !t232 = (t231 - 1.0)
-        let !t233 = (recip (2.0 * t231))
-        let !t234 = (((t233 * (t229 + t229)) * t218) + ((t233 * (t230 + t230)) * t220))
-        let !t235 = (if ((abs t232) - 1.0e-10) > 0 then (if (abs t234) > 0 then 1.0 else 0.0) else 0.0)
-        let !t236 = (if t235 > 0 then (t229 + (negate ((t232 / t234) * t218))) else t229)
-        let !t237 = (if t235 > 0 then (t230 + (negate ((t232 / t234) * t220))) else t230)
-        let !t238 = (sqrt ((t236 * t236) + (t237 * t237)))
-        let !t239 = (t238 - 1.0)
-        let !t240 = (recip (2.0 * t238))
-        let !t241 = (((t240 * (t236 + t236)) * t218) + ((t240 * (t237 + t237)) * t220))
-        let !t242 = (if ((abs t239) - 1.0e-10) > 0 then (if (abs t241) > 0 then 1.0 else 0.0) else 0.0)
-        let !t243 = (1.0 - t221)
-        let !t244 = (t216 + (s211 * t213))
-        let !t245 = (if t228 > 0 then (t244 + (negate ((t225 / t227) * t219))) else t244)
-        let !t246 = (if t235 > 0 then (t245 + (negate ((t232 / t234) * t219))) else t245)
-        let !s247 = ((t221 * (if t242 > 0 then (t236 + (negate ((t239 / t241) * t218))) else t236)) + (t243 * t215))
-        let !s248 = ((t221 * (if t242 > 0 then (t246 + (negate ((t239 / t241) * t219))) else t246)) + (t243 * t216))
-        let !s249 = ((t221 * (if t242 > 0 then (t237 + (negate ((t239 / t241) * t220))) else t237)) + (t243 * t217))
-        chkI verts ((291 * i1) + (12 * i209)) 12 14
-        wrU verts (((291 * i1) + (12 * i209)) + 12) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s247 else t2)
-        wrU verts (((291 * i1) + (12 * i209)) + 13) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s248 else t3)
-        wrU verts (((291 * i1) + (12 * i209)) + 14) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s249 else t4)
+      loopI 0.0 24.0 $ \i96 -> do
+        let !d96 = fromIntegral i96 :: Double
+        chkI walk (12 * i96) 0 11
+        t97 <- rdU walk ((12 * i96) + 6)
+        t98 <- rdU walk ((12 * i96) + 7)
+        t99 <- rdU walk ((12 * i96) + 8)
+        chkI radii ((24 * i1) + i96) 0 0
+        t100 <- rdU radii ((24 * i1) + i96)
+        let !s101 = (t100 / 4.0)
+        t102 <- rdU walk (12 * i96)
+        t103 <- rdU walk ((12 * i96) + 1)
+        t104 <- rdU walk ((12 * i96) + 2)
+        t105 <- rdU walk ((12 * i96) + 6)
+        t106 <- rdU walk ((12 * i96) + 7)
+        t107 <- rdU walk ((12 * i96) + 8)
+        t108 <- rdU walk ((12 * i96) + 3)
+        t109 <- rdU walk ((12 * i96) + 4)
+        t110 <- rdU walk ((12 * i96) + 5)
+        let !s111 = (t102 + (s101 * t108))
+        let !s112 = (t103 + (s101 * t109))
+        let !s113 = (t104 + (s101 * t110))
+        let !t114 = (sqrt ((s111 * s111) + (s113 * s113)))
+        let !t115 = (t114 - 1.0)
+        let !t116 = (recip (2.0 * t114))
+        let !t117 = (((t116 * (s111 + s111)) * t97) + ((t116 * (s113 + s113)) * t99))
+        let !t118 = (if ((abs t115) - 1.0e-10) > 0 then (if (abs t117) > 0 then 1.0 else 0.0) else 0.0)
+        let !s119 = (if t118 > 0 then (s111 + (negate ((t115 / t117) * t97))) else s111)
+        let !s120 = (if t118 > 0 then (s112 + (negate ((t115 / t117) * t98))) else s112)
+        let !s121 = (if t118 > 0 then (s113 + (negate ((t115 / t117) * t99))) else s113)
+        wrU walk ((12 * i96) + 9) s119
+        wrU walk ((12 * i96) + 10) s120
+        wrU walk ((12 * i96) + 11) s121
+        pure ()
+      loopI 0.0 24.0 $ \i122 -> do
+        let !d122 = fromIntegral i122 :: Double
+        chkI walk (12 * i122) 6 11
+        t123 <- rdU walk ((12 * i122) + 6)
+        t124 <- rdU walk ((12 * i122) + 7)
+        t125 <- rdU walk ((12 * i122) + 8)
+        t126 <- rdU walk ((12 * i122) + 9)
+        t127 <- rdU walk ((12 * i122) + 10)
+        t128 <- rdU walk ((12 * i122) + 11)
+        let !t129 = (sqrt ((t126 * t126) + (t128 * t128)))
+        let !t130 = (t129 - 1.0)
+        let !t131 = (recip (2.0 * t129))
+        let !t132 = (((t131 * (t126 + t126)) * t123) + ((t131 * (t128 + t128)) * t125))
+        let !t133 = (if ((abs t130) - 1.0e-10) > 0 then (if (abs t132) > 0 then 1.0 else 0.0) else 0.0)
+        let !s134 = (if t133 > 0 then (t126 + (negate ((t130 / t132) * t123))) else t126)
+        let !s135 = (if t133 > 0 then (t127 + (negate ((t130 / t132) * t124))) else t127)
+        let !s136 = (if t133 > 0 then (t128 + (negate ((t130 / t132) * t125))) else t128)
+        wrU walk ((12 * i122) + 9) s134
+        wrU walk ((12 * i122) + 10) s135
+        wrU walk ((12 * i122) + 11) s136
+        pure ()
+      loopI 0.0 24.0 $ \i137 -> do
+        let !d137 = fromIntegral i137 :: Double
+        chkI walk (12 * i137) 0 11
+        t138 <- rdU walk ((12 * i137) + 6)
+        t139 <- rdU walk ((12 * i137) + 7)
+        t140 <- rdU walk ((12 * i137) + 8)
+        t141 <- rdU walk ((12 * i137) + 9)
+        t142 <- rdU walk ((12 * i137) + 10)
+        t143 <- rdU walk ((12 * i137) + 11)
+        chkI radii ((24 * i1) + i137) 0 0
+        t144 <- rdU radii ((24 * i1) + i137)
+        let !s145 = (t144 / 4.0)
+        t146 <- rdU walk (12 * i137)
+        t147 <- rdU walk ((12 * i137) + 1)
+        t148 <- rdU walk ((12 * i137) + 2)
+        t149 <- rdU walk ((12 * i137) + 6)
+        t150 <- rdU walk ((12 * i137) + 7)
+        t151 <- rdU walk ((12 * i137) + 8)
+        t152 <- rdU walk ((12 * i137) + 3)
+        t153 <- rdU walk ((12 * i137) + 4)
+        t154 <- rdU walk ((12 * i137) + 5)
+        let !t155 = (if (abs s145) > 0 then 1.0 else 0.0)
+        let !t156 = (sqrt ((t141 * t141) + (t143 * t143)))
+        let !t157 = (t156 - 1.0)
+        let !t158 = (recip (2.0 * t156))
+        let !t159 = (((t158 * (t141 + t141)) * t138) + ((t158 * (t143 + t143)) * t140))
+        let !t160 = (if ((abs t157) - 1.0e-10) > 0 then (if (abs t159) > 0 then 1.0 else 0.0) else 0.0)
+        let !t161 = (1.0 - t155)
+        let !s162 = ((t155 * (if t160 > 0 then (t141 + (negate ((t157 / t159) * t138))) else t141)) + (t161 * t146))
+        let !s163 = ((t155 * (if t160 > 0 then (t142 + (negate ((t157 / t159) * t139))) else t142)) + (t161 * t147))
+        let !s164 = ((t155 * (if t160 > 0 then (t143 + (negate ((t157 / t159) * t140))) else t143)) + (t161 * t148))
+        chkI verts ((291 * i1) + (12 * i137)) 6 8
+        wrU verts (((291 * i1) + (12 * i137)) + 6) (if (1.0 - (abs (((s162 - s162) + (s163 - s163)) + (s164 - s164)))) > 0 then s162 else t2)
+        wrU verts (((291 * i1) + (12 * i137)) + 7) (if (1.0 - (abs (((s162 - s162) + (s163 - s163)) + (s164 - s164)))) > 0 then s163 else t3)
+        wrU verts (((291 * i1) + (12 * i137)) + 8) (if (1.0 - (abs (((s162 - s162) + (s163 - s163)) + (s164 - s164)))) > 0 then s164 else t4)
+        wrU walk (12 * i137) s162
+        wrU walk ((12 * i137) + 1) s163
+        wrU walk ((12 * i137) + 2) s164
+        let !t165 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
+        let !t166 = (if (abs s145) > 0 then (recip s145) else 0.0)
+        let !t167 = (t166 * ((if t160 > 0 then (t141 + (negate ((t157 / t159) * t138))) else t141) + (negate t146)))
+        let !t168 = (t158 * (t141 + t141))
+        let !t169 = (t158 * (t143 + t143))
+        let !t170 = (sqrt ((t168 * t168) + (t169 * t169)))
+        let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
+        let !t172 = (t171 * t168)
+        let !t173 = (t171 * t169)
+        let !t174 = (t166 * ((if t160 > 0 then (t143 + (negate ((t157 / t159) * t140))) else t143) + (negate t148)))
+        let !t175 = ((t172 * t167) + (t173 * t174))
+        let !t176 = (t167 + (negate (t175 * t172)))
+        let !t177 = (t166 * ((if t160 > 0 then (t142 + (negate ((t157 / t159) * t139))) else t142) + (negate t147)))
+        let !t178 = (t174 + (negate (t175 * t173)))
+        let !t179 = (sqrt (((t176 * t176) + (t177 * t177)) + (t178 * t178)))
+        let !t180 = (if t179 > 0 then (recip (if (t179 - 1.0e-300) > 0 then t179 else 1.0e-300)) else 0.0)
+        let !s181 = ((t155 * (t165 * (t180 * t176))) + (t161 * t152))
+        let !s182 = ((t155 * (t165 * (t180 * t177))) + (t161 * t153))
+        let !s183 = ((t155 * (t165 * (t180 * t178))) + (t161 * t154))
+        wrU walk ((12 * i137) + 3) s181
+        wrU walk ((12 * i137) + 4) s182
+        wrU walk ((12 * i137) + 5) s183
+        let !s184 = ((t155 * t172) + (t161 * t149))
+        let !s185 = (t161 * t150)
+        let !s186 = ((t155 * t173) + (t161 * t151))
+        wrU walk ((12 * i137) + 6) s184
+        wrU walk ((12 * i137) + 7) s185
+        wrU walk ((12 * i137) + 8) s186
+        pure ()
+      loopI 0.0 24.0 $ \i187 -> do
+        let !d187 = fromIntegral i187 :: Double
+        chkI walk (12 * i187) 0 11
+        t188 <- rdU walk ((12 * i187) + 6)
+        t189 <- rdU walk ((12 * i187) + 7)
+        t190 <- rdU walk ((12 * i187) + 8)
+        chkI radii ((24 * i1) + i187) 0 0
+        t191 <- rdU radii ((24 * i1) + i187)
+        let !s192 = (t191 / 4.0)
+        t193 <- rdU walk (12 * i187)
+        t194 <- rdU walk ((12 * i187) + 1)
+        t195 <- rdU walk ((12 * i187) + 2)
+        t196 <- rdU walk ((12 * i187) + 6)
+        t197 <- rdU walk ((12 * i187) + 7)
+        t198 <- rdU walk ((12 * i187) + 8)
+        t199 <- rdU walk ((12 * i187) + 3)
+        t200 <- rdU walk ((12 * i187) + 4)
+        t201 <- rdU walk ((12 * i187) + 5)
+        let !s202 = (t193 + (s192 * t199))
+        let !s203 = (t194 + (s192 * t200))
+        let !s204 = (t195 + (s192 * t201))
+        let !t205 = (sqrt ((s202 * s202) + (s204 * s204)))
+        let !t206 = (t205 - 1.0)
+        let !t207 = (recip (2.0 * t205))
+        let !t208 = (((t207 * (s202 + s202)) * t188) + ((t207 * (s204 + s204)) * t190))
+        let !t209 = (if ((abs t206) - 1.0e-10) > 0 then (if (abs t208) > 0 then 1.0 else 0.0) else 0.0)
+        let !s210 = (if t209 > 0 then (s202 + (negate ((t206 / t208) * t188))) else s202)
+        let !s211 = (if t209 > 0 then (s203 + (negate ((t206 / t208) * t189))) else s203)
+        let !s212 = (if t209 > 0 then (s204 + (negate ((t206 / t208) * t190))) else s204)
+        wrU walk ((12 * i187) + 9) s210
+        wrU walk ((12 * i187) + 10) s211
+        wrU walk ((12 * i187) + 11) s212
+        pure ()
+      loopI 0.0 24.0 $ \i213 -> do
+        let !d213 = fromIntegral i213 :: Double
+        chkI walk (12 * i213) 6 11
+        t214 <- rdU walk ((12 * i213) + 6)
+        t215 <- rdU walk ((12 * i213) + 7)
+        t216 <- rdU walk ((12 * i213) + 8)
+        t217 <- rdU walk ((12 * i213) + 9)
+        t218 <- rdU walk ((12 * i213) + 10)
+        t219 <- rdU walk ((12 * i213) + 11)
+        let !t220 = (sqrt ((t217 * t217) + (t219 * t219)))
+        let !t221 = (t220 - 1.0)
+        let !t222 = (recip (2.0 * t220))
+        let !t223 = (((t222 * (t217 + t217)) * t214) + ((t222 * (t219 + t219)) * t216))
+        let !t224 = (if ((abs t221) - 1.0e-10) > 0 then (if (abs t223) > 0 then 1.0 else 0.0) else 0.0)
+        let !s225 = (if t224 > 0 then (t217 + (negate ((t221 / t223) * t214))) else t217)
+        let !s226 = (if t224 > 0 then (t218 + (negate ((t221 / t223) * t215))) else t218)
+        let !s227 = (if t224 > 0 then (t219 + (negate ((t221 / t223) * t216))) else t219)
+        wrU walk ((12 * i213) + 9) s225
+        wrU walk ((12 * i213) + 10) s226
+        wrU walk ((12 * i213) + 11) s227
+        pure ()
+      loopI 0.0 24.0 $ \i228 -> do
+        let !d228 = fromIntegral i228 :: Double
+        chkI walk (12 * i228) 0 11
+        t229 <- rdU walk ((12 * i228) + 6)
+        t230 <- rdU walk ((12 * i228) + 7)
+        t231 <- rdU walk ((12 * i228) + 8)
+        t232 <- rdU walk ((12 * i228) + 9)
+        t233 <- rdU walk ((12 * i228) + 10)
+        t234 <- rdU walk ((12 * i228) + 11)
+        chkI radii ((24 * i1) + i228) 0 0
+        t235 <- rdU radii ((24 * i1) + i228)
+        let !s236 = (t235 / 4.0)
+        t237 <- rdU walk (12 * i228)
+        t238 <- rdU walk ((12 * i228) + 1)
+        t239 <- rdU walk ((12 * i228) + 2)
+        t240 <- rdU walk ((12 * i228) + 6)
+        t241 <- rdU walk ((12 * i228) + 7)
+        t242 <- rdU walk ((12 * i228) + 8)
+        t243 <- rdU walk ((12 * i228) + 3)
+        t244 <- rdU walk ((12 * i228) + 4)
+        t245 <- rdU walk ((12 * i228) + 5)
+        let !t246 = (if (abs s236) > 0 then 1.0 else 0.0)
+        let !t247 = (sqrt ((t232 * t232) + (t234 * t234)))
+        let !t248 = (t247 - 1.0)
+        let !t249 = (recip (2.0 * t247))
+        let !t250 = (((t249 * (t232 + t232)) * t229) + ((t249 * (t234 + t234)) * t231))
+        let !t251 = (if ((abs t248) - 1.0e-10) > 0 then (if (abs t250) > 0 then 1.0 else 0.0) else 0.0)
+        let !t252 = (1.0 - t246)
+        let !s253 = ((t246 * (if t251 > 0 then (t232 + (negate ((t248 / t250) * t229))) else t232)) + (t252 * t237))
+        let !s254 = ((t246 * (if t251 > 0 then (t233 + (negate ((t248 / t250) * t230))) else t233)) + (t252 * t238))
+        let !s255 = ((t246 * (if t251 > 0 then (t234 + (negate ((t248 / t250) * t231))) else t234)) + (t252 * t239))
+        chkI verts ((291 * i1) + (12 * i228)) 9 11
+        wrU verts (((291 * i1) + (12 * i228)) + 9) (if (1.0 - (abs (((s253 - s253) + (s254 - s254)) + (s255 - s255)))) > 0 then s253 else t2)
+        wrU verts (((291 * i1) + (12 * i228)) + 10) (if (1.0 - (abs (((s253 - s253) + (s254 - s254)) + (s255 - s255)))) > 0 then s254 else t3)
+        wrU verts (((291 * i1) + (12 * i228)) + 11) (if (1.0 - (abs (((s253 - s253) + (s254 - s254)) + (s255 - s255)))) > 0 then s255 else t4)
+        wrU walk (12 * i228) s253
+        wrU walk ((12 * i228) + 1) s254
+        wrU walk ((12 * i228) + 2) s255
+        let !t256 = (sqrt (((t243 * t243) + (t244 * t244)) + (t245 * t245)))
+        let !t257 = (if (abs s236) > 0 then (recip s236) else 0.0)
+        let !t258 = (t257 * ((if t251 > 0 then (t232 + (negate ((t248 / t250) * t229))) else t232) + (negate t237)))
+        let !t259 = (t249 * (t232 + t232))
+        let !t260 = (t249 * (t234 + t234))
+        let !t261 = (sqrt ((t259 * t259) + (t260 * t260)))
+        let !t262 = (if t261 > 0 then (recip (if (t261 - 1.0e-300) > 0 then t261 else 1.0e-300)) else 0.0)
+        let !t263 = (t262 * t259)
+        let !t264 = (t262 * t260)
+        let !t265 = (t257 * ((if t251 > 0 then (t234 + (negate ((t248 / t250) * t231))) else t234) + (negate t239)))
+        let !t266 = ((t263 * t258) + (t264 * t265))
+        let !t267 = (t258 + (negate (t266 * t263)))
+        let !t268 = (t257 * ((if t251 > 0 then (t233 + (negate ((t248 / t250) * t230))) else t233) + (negate t238)))
+        let !t269 = (t265 + (negate (t266 * t264)))
+        let !t270 = (sqrt (((t267 * t267) + (t268 * t268)) + (t269 * t269)))
+        let !t271 = (if t270 > 0 then (recip (if (t270 - 1.0e-300) > 0 then t270 else 1.0e-300)) else 0.0)
+        let !s272 = ((t246 * (t256 * (t271 * t267))) + (t252 * t243))
+        let !s273 = ((t246 * (t256 * (t271 * t268))) + (t252 * t244))
+        let !s274 = ((t246 * (t256 * (t271 * t269))) + (t252 * t245))
+        wrU walk ((12 * i228) + 3) s272
+        wrU walk ((12 * i228) + 4) s273
+        wrU walk ((12 * i228) + 5) s274
+        let !s275 = ((t246 * t263) + (t252 * t240))
+        let !s276 = (t252 * t241)
+        let !s277 = ((t246 * t264) + (t252 * t242))
+        wrU walk ((12 * i228) + 6) s275
+        wrU walk ((12 * i228) + 7) s276
+        wrU walk ((12 * i228) + 8) s277
+        pure ()
+      loopI 0.0 24.0 $ \i278 -> do
+        let !d278 = fromIntegral i278 :: Double
+        chkI walk (12 * i278) 0 11
+        t279 <- rdU walk ((12 * i278) + 6)
+        t280 <- rdU walk ((12 * i278) + 7)
+        t281 <- rdU walk ((12 * i278) + 8)
+        chkI radii ((24 * i1) + i278) 0 0
+        t282 <- rdU radii ((24 * i1) + i278)
+        let !s283 = (t282 / 4.0)
+        t284 <- rdU walk (12 * i278)
+        t285 <- rdU walk ((12 * i278) + 1)
+        t286 <- rdU walk ((12 * i278) + 2)
+        t287 <- rdU walk ((12 * i278) + 6)
+        t288 <- rdU walk ((12 * i278) + 7)
+        t289 <- rdU walk ((12 * i278) + 8)
+        t290 <- rdU walk ((12 * i278) + 3)
+        t291 <- rdU walk ((12 * i278) + 4)
+        t292 <- rdU walk ((12 * i278) + 5)
+        let !s293 = (t284 + (s283 * t290))
+        let !s294 = (t285 + (s283 * t291))
+        let !s295 = (t286 + (s283 * t292))
+        let !t296 = (sqrt ((s293 * s293) + (s295 * s295)))
+        let !t297 = (t296 - 1.0)
+        let !t298 = (recip (2.0 * t296))
+        let !t299 = (((t298 * (s293 + s293)) * t279) + ((t298 * (s295 + s295)) * t281))
+        let !t300 = (if ((abs t297) - 1.0e-10) > 0 then (if (abs t299) > 0 then 1.0 else 0.0) else 0.0)
+        let !s301 = (if t300 > 0 then (s293 + (negate ((t297 / t299) * t279))) else s293)
+        let !s302 = (if t300 > 0 then (s294 + (negate ((t297 / t299) * t280))) else s294)
+        let !s303 = (if t300 > 0 then (s295 + (negate ((t297 / t299) * t281))) else s295)
+        wrU walk ((12 * i278) + 9) s301
+        wrU walk ((12 * i278) + 10) s302
+        wrU walk ((12 * i278) + 11) s303
+        pure ()
+      loopI 0.0 24.0 $ \i304 -> do
+        let !d304 = fromIntegral i304 :: Double
+        chkI walk (12 * i304) 6 11
+        t305 <- rdU walk ((12 * i304) + 6)
+        t306 <- rdU walk ((12 * i304) + 7)
+        t307 <- rdU walk ((12 * i304) + 8)
+        t308 <- rdU walk ((12 * i304) + 9)
+        t309 <- rdU walk ((12 * i304) + 10)
+        t310 <- rdU walk ((12 * i304) + 11)
+        let !t311 = (sqrt ((t308 * t308) + (t310 * t310)))
+        let !t312 = (t311 - 1.0)
+        let !t313 = (recip (2.0 * t311))
+        let !t314 = (((t313 * (t308 + t308)) * t305) + ((t313 * (t310 + t310)) * t307))
+        let !t315 = (if ((abs t312) - 1.0e-10) > 0 then (if (abs t314) > 0 then 1.0 else 0.0) else 0.0)
+        let !s316 = (if t315 > 0 then (t308 + (negate ((t312 / t314) * t305))) else t308)
+        let !s317 = (if t315 > 0 then (t309 + (negate ((t312 / t314) * t306))) else t309)
+        let !s318 = (if t315 > 0 then (t310 + (negate ((t312 / t314) * t307))) else t310)
+        wrU walk ((12 * i304) + 9) s316
+        wrU walk ((12 * i304) + 10) s317
+        wrU walk ((12 * i304) + 11) s318
+        pure ()
+      loopI 0.0 24.0 $ \i319 -> do
+        let !d319 = fromIntegral i319 :: Double
+        chkI walk (12 * i319) 0 11
+        t320 <- rdU walk ((12 * i319) + 6)
+        t321 <- rdU walk ((12 * i319) + 7)
+        t322 <- rdU walk ((12 * i319) + 8)
+        t323 <- rdU walk ((12 * i319) + 9)
+        t324 <- rdU walk ((12 * i319) + 10)
+        t325 <- rdU walk ((12 * i319) + 11)
+        chkI radii ((24 * i1) + i319) 0 0
+        t326 <- rdU radii ((24 * i1) + i319)
+        let !s327 = (t326 / 4.0)
+        t328 <- rdU walk (12 * i319)
+        t329 <- rdU walk ((12 * i319) + 1)
+        t330 <- rdU walk ((12 * i319) + 2)
+        t331 <- rdU walk ((12 * i319) + 6)
+        t332 <- rdU walk ((12 * i319) + 7)
+        t333 <- rdU walk ((12 * i319) + 8)
+        t334 <- rdU walk ((12 * i319) + 3)
+        t335 <- rdU walk ((12 * i319) + 4)
+        t336 <- rdU walk ((12 * i319) + 5)
+        let !t337 = (if (abs s327) > 0 then 1.0 else 0.0)
+        let !t338 = (sqrt ((t323 * t323) + (t325 * t325)))
+        let !t339 = (t338 - 1.0)
+        let !t340 = (recip (2.0 * t338))
+        let !t341 = (((t340 * (t323 + t323)) * t320) + ((t340 * (t325 + t325)) * t322))
+        let !t342 = (if ((abs t339) - 1.0e-10) > 0 then (if (abs t341) > 0 then 1.0 else 0.0) else 0.0)
+        let !t343 = (1.0 - t337)
+        let !s344 = ((t337 * (if t342 > 0 then (t323 + (negate ((t339 / t341) * t320))) else t323)) + (t343 * t328))
+        let !s345 = ((t337 * (if t342 > 0 then (t324 + (negate ((t339 / t341) * t321))) else t324)) + (t343 * t329))
+        let !s346 = ((t337 * (if t342 > 0 then (t325 + (negate ((t339 / t341) * t322))) else t325)) + (t343 * t330))
+        chkI verts ((291 * i1) + (12 * i319)) 12 14
+        wrU verts (((291 * i1) + (12 * i319)) + 12) (if (1.0 - (abs (((s344 - s344) + (s345 - s345)) + (s346 - s346)))) > 0 then s344 else t2)
+        wrU verts (((291 * i1) + (12 * i319)) + 13) (if (1.0 - (abs (((s344 - s344) + (s345 - s345)) + (s346 - s346)))) > 0 then s345 else t3)
+        wrU verts (((291 * i1) + (12 * i319)) + 14) (if (1.0 - (abs (((s344 - s344) + (s345 - s345)) + (s346 - s346)))) > 0 then s346 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i250 -> do
-        let !d250 = fromIntegral i250 :: Double
-        chkI radii ((24 * i1) + i250) 0 0
-        t251 <- rdU radii ((24 * i1) + i250)
-        t252 <- getR v18
-        t253 <- getR v19
-        setR v18 ((t252 * 0.9659258262890683) - (t253 * 0.25881904510252074))
-        setR v19 ((t253 * 0.9659258262890683) + (t252 * 0.25881904510252074))
-        let !s254 = ((t252 * t5) + (t253 * s14))
-        let !s255 = ((t252 * t6) + (t253 * s15))
-        let !s256 = ((t252 * t7) + (t253 * s16))
-        let !t257 = (if (abs t251) > 0 then 1.0 else 0.0)
-        let !t258 = (t2 + (t251 * s254))
-        let !t259 = (t4 + (t251 * s256))
-        let !t260 = (sqrt ((t258 * t258) + (t259 * t259)))
-        let !t261 = (t260 - 1.0)
-        let !t262 = (recip (2.0 * t260))
-        let !t263 = (((t262 * (t258 + t258)) * t8) + ((t262 * (t259 + t259)) * t10))
-        let !t264 = (if ((abs t261) - 1.0e-10) > 0 then (if (abs t263) > 0 then 1.0 else 0.0) else 0.0)
-        let !t265 = (if t264 > 0 then (t258 + (negate ((t261 / t263) * t8))) else t258)
-        let !t266 = (if t264 > 0 then (t259 + (negate ((t261 / t263) * t10))) else t259)
-        let !t267 = (sqrt ((t265 * t265) + (t266 * t266)))
-        let !t268 = (t267 - 1.0)
-        let !t269 = (recip (2.0 * t267))
-        let !t270 = (((t269 * (t265 + t265)) * t8) + ((t269 * (t266 + t266)) * t10))
-        let !t271 = (if ((abs t268) - 1.0e-10) > 0 then (if (abs t270) > 0 then 1.0 else 0.0) else 0.0)
-        let !t272 = (if t271 > 0 then (t265 + (negate ((t268 / t270) * t8))) else t265)
-        let !t273 = (if t271 > 0 then (t266 + (negate ((t268 / t270) * t10))) else t266)
-        let !t274 = (sqrt ((t272 * t272) + (t273 * t273)))
-        let !t275 = (t274 - 1.0)
-        let !t276 = (recip (2.0 * t274))
-        let !t277 = (((t276 * (t272 + t272)) * t8) + ((t276 * (t273 + t273)) * t10))
-        let !t278 = (if ((abs t275) - 1.0e-10) > 0 then (if (abs t277) > 0 then 1.0 else 0.0) else 0.0)
-        let !t279 = (1.0 - t257)
-        let !t280 = ((t257 * (if t278 > 0 then (t272 + (negate ((t275 / t277) * t8))) else t272)) + (t279 * t2))
-        let !t281 = (t3 + (t251 * s255))
-        let !t282 = (if t264 > 0 then (t281 + (negate ((t261 / t263) * t9))) else t281)
-        let !t283 = (if t271 > 0 then (t282 + (negate ((t268 / t270) * t9))) else t282)
-        let !t284 = ((t257 * (if t278 > 0 then (t283 + (negate ((t275 / t277) * t9))) else t283)) + (t279 * t3))
-        let !t285 = ((t257 * (if t278 > 0 then (t273 + (negate ((t275 / t277) * t10))) else t273)) + (t279 * t4))
-        let !t286 = (1.0 - (abs (((t280 - t280) + (t284 - t284)) + (t285 - t285))))
-        let !s287 = (if t286 > 0 then t280 else t2)
-        let !s288 = (if t286 > 0 then t284 else t3)
-        let !s289 = (if t286 > 0 then t285 else t4)
-        chkI verts ((291 * i1) + (12 * i250)) 3 14
-        wrU verts (((291 * i1) + (12 * i250)) + 12) s287
-        wrU verts (((291 * i1) + (12 * i250)) + 13) s288
-        wrU verts (((291 * i1) + (12 * i250)) + 14) s289
-        wrU verts (((291 * i1) + (12 * i250)) + 3) (t2 + (0.25 * (s287 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i250)) + 4) (t3 + (0.25 * (s288 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i250)) + 5) (t4 + (0.25 * (s289 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i250)) + 6) (t2 + (0.5 * (s287 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i250)) + 7) (t3 + (0.5 * (s288 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i250)) + 8) (t4 + (0.5 * (s289 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i250)) + 9) (t2 + (0.75 * (s287 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i250)) + 10) (t3 + (0.75 * (s288 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i250)) + 11) (t4 + (0.75 * (s289 + (negate t4))))
+      loopI 0.0 24.0 $ \i347 -> do
+        let !d347 = fromIntegral i347 :: Double
+        t348 <- getR v18
+        t349 <- getR v19
+        setR v18 ((t348 * 0.9659258262890683) - (t349 * 0.25881904510252074))
+        setR v19 ((t349 * 0.9659258262890683) + (t348 * 0.25881904510252074))
+        let !s350 = ((t348 * t5) + (t349 * s14))
+        let !s351 = ((t348 * t6) + (t349 * s15))
+        let !s352 = ((t348 * t7) + (t349 * s16))
+        chkI walk (12 * i347) 3 5
+        wrU walk ((12 * i347) + 3) s350
+        wrU walk ((12 * i347) + 4) s351
+        wrU walk ((12 * i347) + 5) s352
+        pure ()
+      loopI 0.0 24.0 $ \i353 -> do
+        let !d353 = fromIntegral i353 :: Double
+        chkI radii ((24 * i1) + i353) 0 0
+        t354 <- rdU radii ((24 * i1) + i353)
+        chkI walk (12 * i353) 3 11
+        t355 <- rdU walk ((12 * i353) + 3)
+        t356 <- rdU walk ((12 * i353) + 4)
+        t357 <- rdU walk ((12 * i353) + 5)
+        let !s358 = (t2 + (t354 * t355))
+        let !s359 = (t3 + (t354 * t356))
+        let !s360 = (t4 + (t354 * t357))
+        let !t361 = (sqrt ((s358 * s358) + (s360 * s360)))
+        let !t362 = (t361 - 1.0)
+        let !t363 = (recip (2.0 * t361))
+        let !t364 = (((t363 * (s358 + s358)) * t8) + ((t363 * (s360 + s360)) * t10))
+        let !t365 = (if ((abs t362) - 1.0e-10) > 0 then (if (abs t364) > 0 then 1.0 else 0.0) else 0.0)
+        let !s366 = (if t365 > 0 then (s358 + (negate ((t362 / t364) * t8))) else s358)
+        let !s367 = (if t365 > 0 then (s359 + (negate ((t362 / t364) * t9))) else s359)
+        let !s368 = (if t365 > 0 then (s360 + (negate ((t362 / t364) * t10))) else s360)
+        wrU walk ((12 * i353) + 9) s366
+        wrU walk ((12 * i353) + 10) s367
+        wrU walk ((12 * i353) + 11) s368
+        pure ()
+      loopI 0.0 24.0 $ \i369 -> do
+        let !d369 = fromIntegral i369 :: Double
+        chkI walk (12 * i369) 9 11
+        t370 <- rdU walk ((12 * i369) + 9)
+        t371 <- rdU walk ((12 * i369) + 10)
+        t372 <- rdU walk ((12 * i369) + 11)
+        let !t373 = (sqrt ((t370 * t370) + (t372 * t372)))
+        let !t374 = (t373 - 1.0)
+        let !t375 = (recip (2.0 * t373))
+        let !t376 = (((t375 * (t370 + t370)) * t8) + ((t375 * (t372 + t372)) * t10))
+        let !t377 = (if ((abs t374) - 1.0e-10) > 0 then (if (abs t376) > 0 then 1.0 else 0.0) else 0.0)
+        let !s378 = (if t377 > 0 then (t370 + (negate ((t374 / t376) * t8))) else t370)
+        let !s379 = (if t377 > 0 then (t371 + (negate ((t374 / t376) * t9))) else t371)
+        let !s380 = (if t377 > 0 then (t372 + (negate ((t374 / t376) * t10))) else t372)
+        wrU walk ((12 * i369) + 9) s378
+        wrU walk ((12 * i369) + 10) s379
+        wrU walk ((12 * i369) + 11) s380
+        pure ()
+      loopI 0.0 24.0 $ \i381 -> do
+        let !d381 = fromIntegral i381 :: Double
+        chkI walk (12 * i381) 3 11
+        t382 <- rdU walk ((12 * i381) + 9)
+        t383 <- rdU walk ((12 * i381) + 10)
+        t384 <- rdU walk ((12 * i381) + 11)
+        chkI radii ((24 * i1) + i381) 0 0
+        t385 <- rdU radii ((24 * i1) + i381)
+        t386 <- rdU walk ((12 * i381) + 3)
+        t387 <- rdU walk ((12 * i381) + 4)
+        t388 <- rdU walk ((12 * i381) + 5)
+        let !t389 = (if (abs t385) > 0 then 1.0 else 0.0)
+        let !t390 = (sqrt ((t382 * t382) + (t384 * t384)))
+        let !t391 = (t390 - 1.0)
+        let !t392 = (recip (2.0 * t390))
+        let !t393 = (((t392 * (t382 + t382)) * t8) + ((t392 * (t384 + t384)) * t10))
+        let !t394 = (if ((abs t391) - 1.0e-10) > 0 then (if (abs t393) > 0 then 1.0 else 0.0) else 0.0)
+        let !t395 = (1.0 - t389)
+        let !s396 = ((t389 * (if t394 > 0 then (t382 + (negate ((t391 / t393) * t8))) else t382)) + (t395 * t2))
+        let !s397 = ((t389 * (if t394 > 0 then (t383 + (negate ((t391 / t393) * t9))) else t383)) + (t395 * t3))
+        let !s398 = ((t389 * (if t394 > 0 then (t384 + (negate ((t391 / t393) * t10))) else t384)) + (t395 * t4))
+        let !t399 = (1.0 - (abs (((s396 - s396) + (s397 - s397)) + (s398 - s398))))
+        let !s400 = (if t399 > 0 then s396 else t2)
+        let !s401 = (if t399 > 0 then s397 else t3)
+        let !s402 = (if t399 > 0 then s398 else t4)
+        chkI verts ((291 * i1) + (12 * i381)) 3 14
+        wrU verts (((291 * i1) + (12 * i381)) + 12) s400
+        wrU verts (((291 * i1) + (12 * i381)) + 13) s401
+        wrU verts (((291 * i1) + (12 * i381)) + 14) s402
+        wrU verts (((291 * i1) + (12 * i381)) + 3) (t2 + (0.25 * (s400 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i381)) + 4) (t3 + (0.25 * (s401 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i381)) + 5) (t4 + (0.25 * (s402 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i381)) + 6) (t2 + (0.5 * (s400 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i381)) + 7) (t3 + (0.5 * (s401 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i381)) + 8) (t4 + (0.5 * (s402 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i381)) + 9) (t2 + (0.75 * (s400 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i381)) + 10) (t3 + (0.75 * (s401 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i381)) + 11) (t4 + (0.75 * (s402 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -1751,362 +1751,547 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s23 = ((t21 * t5) + (t22 * s14))
         let !s24 = ((t21 * t6) + (t22 * s15))
         let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (9 * i20) 3 5
-        wrU walk ((9 * i20) + 3) s23
-        wrU walk ((9 * i20) + 4) s24
-        wrU walk ((9 * i20) + 5) s25
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
       loopI 0.0 24.0 $ \i26 -> do
         let !d26 = fromIntegral i26 :: Double
         chkI radii ((24 * i1) + i26) 0 0
         t27 <- rdU radii ((24 * i1) + i26)
         let !s28 = (t27 / 4.0)
-        chkI walk (9 * i26) 0 8
-        t29 <- rdU walk ((9 * i26) + 3)
-        t30 <- rdU walk ((9 * i26) + 4)
-        t31 <- rdU walk ((9 * i26) + 5)
-        let !t32 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t33 = (t2 + (s28 * t29))
-        let !t34 = (t3 + (s28 * t30))
-        let !t35 = (t4 + (s28 * t31))
-        let !t36 = (sqrt (((t33 * t33) + (t34 * t34)) + (t35 * t35)))
-        let !t37 = (t36 - 1.0)
-        let !t38 = (recip (2.0 * t36))
-        let !t39 = ((((t38 * (t33 + t33)) * t8) + ((t38 * (t34 + t34)) * t9)) + ((t38 * (t35 + t35)) * t10))
-        let !t40 = (if ((abs t37) - 1.0e-10) > 0 then (if (abs t39) > 0 then 1.0 else 0.0) else 0.0)
-        let !t41 = (if t40 > 0 then (t33 + (negate ((t37 / t39) * t8))) else t33)
-        let !t42 = (if t40 > 0 then (t34 + (negate ((t37 / t39) * t9))) else t34)
-        let !t43 = (if t40 > 0 then (t35 + (negate ((t37 / t39) * t10))) else t35)
-        let !t44 = (sqrt (((t41 * t41) + (t42 * t42)) + (t43 * t43)))
-        let !t45 = (t44 - 1.0)
-        let !t46 = (recip (2.0 * t44))
-        let !t47 = ((((t46 * (t41 + t41)) * t8) + ((t46 * (t42 + t42)) * t9)) + ((t46 * (t43 + t43)) * t10))
-        let !t48 = (if ((abs t45) - 1.0e-10) > 0 then (if (abs t47) > 0 then 1.0 else 0.0) else 0.0)
-        let !t49 = (if t48 > 0 then (t41 + (negate ((t45 / t47) * t8))) else t41)
-        let !t50 = (if t48 > 0 then (t42 + (negate ((t45 / t47) * t9))) else t42)
-        let !t51 = (if t48 > 0 then (t43 + (negate ((t45 / t47) * t10))) else t43)
-        let !t52 = (sqrt (((t49 * t49) + (t50 * t50)) + (t51 * t51)))
-        let !t53 = (t52 - 1.0)
-        let !t54 = (recip (2.0 * t52))
-        let !t55 = ((((t54 * (t49 + t49)) * t8) + ((t54 * (t50 + t50)) * t9)) + ((t54 * (t51 + t51)) * t10))
-        let !t56 = (if ((abs t53) - 1.0e-10) > 0 then (if (abs t55) > 0 then 1.0 else 0.0) else 0.0)
-        let !t57 = (1.0 - t32)
-        let !s58 = ((t32 * (if t56 > 0 then (t49 + (negate ((t53 / t55) * t8))) else t49)) + (t57 * t2))
-        let !s59 = ((t32 * (if t56 > 0 then (t50 + (negate ((t53 / t55) * t9))) else t50)) + (t57 * t3))
-        let !s60 = ((t32 * (if t56 > 0 then (t51 + (negate ((t53 / t55) * t10))) else t51)) + (t57 * t4))
-        chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s58 - s58) + (s59 - s59)) + (s60 - s60)))) > 0 then s58 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s58 - s58) + (s59 - s59)) + (s60 - s60)))) > 0 then s59 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s58 - s58) + (s59 - s59)) + (s60 - s60)))) > 0 then s60 else t4)
-        wrU walk (9 * i26) s58
-        wrU walk ((9 * i26) + 1) s59
-        wrU walk ((9 * i26) + 2) s60
-        let !t61 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t62 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t63 = (t62 * ((if t56 > 0 then (t49 + (negate ((t53 / t55) * t8))) else t49) + (negate t2)))
-        let !t64 = (t54 * (t49 + t49))
-        let !t65 = (t54 * (t50 + t50))
-        let !t66 = (t54 * (t51 + t51))
-        let !t67 = (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66)))
-        let !t68 = (if t67 > 0 then (recip (if (t67 - 1.0e-300) > 0 then t67 else 1.0e-300)) else 0.0)
-        let !t69 = (t68 * t64)
-        let !t70 = (t68 * t65)
-        let !t71 = (t62 * ((if t56 > 0 then (t50 + (negate ((t53 / t55) * t9))) else t50) + (negate t3)))
-        let !t72 = (t68 * t66)
-        let !t73 = (t62 * ((if t56 > 0 then (t51 + (negate ((t53 / t55) * t10))) else t51) + (negate t4)))
-        let !t74 = (((t69 * t63) + (t70 * t71)) + (t72 * t73))
-        let !t75 = (t63 + (negate (t74 * t69)))
-        let !t76 = (t71 + (negate (t74 * t70)))
-        let !t77 = (t73 + (negate (t74 * t72)))
-        let !t78 = (sqrt (((t75 * t75) + (t76 * t76)) + (t77 * t77)))
-        let !t79 = (if t78 > 0 then (recip (if (t78 - 1.0e-300) > 0 then t78 else 1.0e-300)) else 0.0)
-        let !s80 = ((t32 * (t61 * (t79 * t75))) + (t57 * t29))
-        let !s81 = ((t32 * (t61 * (t79 * t76))) + (t57 * t30))
-        let !s82 = ((t32 * (t61 * (t79 * t77))) + (t57 * t31))
-        wrU walk ((9 * i26) + 3) s80
-        wrU walk ((9 * i26) + 4) s81
-        wrU walk ((9 * i26) + 5) s82
-        let !s83 = ((t32 * t69) + (t57 * t8))
-        let !s84 = ((t32 * t70) + (t57 * t9))
-        let !s85 = ((t32 * t72) + (t57 * t10))
-        wrU walk ((9 * i26) + 6) s83
-        wrU walk ((9 * i26) + 7) s84
-        wrU walk ((9 * i26) + 8) s85
+        chkI walk (12 * i26) 3 11
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (sqrt (((s32 * s32) + (s33 * s33)) + (s34 * s34)))
+        let !t36 = (t35 - 1.0)
+        let !t37 = (recip (2.0 * t35))
+        let !t38 = ((((t37 * (s32 + s32)) * t8) + ((t37 * (s33 + s33)) * t9)) + ((t37 * (s34 + s34)) * t10))
+        let !t39 = (if ((abs t36) - 1.0e-10) > 0 then (if (abs t38) > 0 then 1.0 else 0.0) else 0.0)
+        let !s40 = (if t39 > 0 then (s32 + (negate ((t36 / t38) * t8))) else s32)
+        let !s41 = (if t39 > 0 then (s33 + (negate ((t36 / t38) * t9))) else s33)
+        let !s42 = (if t39 > 0 then (s34 + (negate ((t36 / t38) * t10))) else s34)
+        wrU walk ((12 * i26) + 9) s40
+        wrU walk ((12 * i26) + 10) s41
+        wrU walk ((12 * i26) + 11) s42
         pure ()
-      loopI 0.0 24.0 $ \i86 -> do
-        let !d86 = fromIntegral i86 :: Double
-        chkI radii ((24 * i1) + i86) 0 0
-        t87 <- rdU radii ((24 * i1) + i86)
-        let !s88 = (t87 / 4.0)
-        chkI walk (9 * i86) 0 8
-        t89 <- rdU walk ((9 * i86) + 3)
-        t90 <- rdU walk ((9 * i86) + 4)
-        t91 <- rdU walk ((9 * i86) + 5)
-        t92 <- rdU walk (9 * i86)
-        t93 <- rdU walk ((9 * i86) + 1)
-        t94 <- rdU walk ((9 * i86) + 2)
-        t95 <- rdU walk ((9 * i86) + 6)
-        t96 <- rdU walk ((9 * i86) + 7)
-        t97 <- rdU walk ((9 * i86) + 8)
-        let !t98 = (if (abs s88) > 0 then 1.0 else 0.0)
-        let !t99 = (t92 + (s88 * t89))
-        let !t100 = (t93 + (s88 * t90))
-        let !t101 = (t94 + (s88 * t91))
-        let !t102 = (sqrt (((t99 * t99) + (t100 * t100)) + (t101 * t101)))
-        let !t103 = (t102 - 1.0)
-        let !t104 = (recip (2.0 * t102))
-        let !t105 = ((((t104 * (t99 + t99)) * t95) + ((t104 * (t100 + t100)) * t96)) + ((t104 * (t101 + t101)) * t97))
-        let !t106 = (if ((abs t103) - 1.0e-10) > 0 then (if (abs t105) > 0 then 1.0 else 0.0) else 0.0)
-        let !t107 = (if t106 > 0 then (t99 + (negate ((t103 / t105) * t95))) else t99)
-        let !t108 = (if t106 > 0 then (t100 + (negate ((t103 / t105) * t96))) else t100)
-        let !t109 = (if t106 > 0 then (t101 + (negate ((t103 / t105) * t97))) else t101)
-        let !t110 = (sqrt (((t107 * t107) + (t108 * t108)) + (t109 * t109)))
-        let !t111 = (t110 - 1.0)
-        let !t112 = (recip (2.0 * t110))
-        let !t113 = ((((t112 * (t107 + t107)) * t95) + ((t112 * (t108 + t108)) * t96)) + ((t112 * (t109 + t109)) * t97))
-        let !t114 = (if ((abs t111) - 1.0e-10) > 0 then (if (abs t113) > 0 then 1.0 else 0.0) else 0.0)
-        let !t115 = (if t114 > 0 then (t107 + (negate ((t111 / t113) * t95))) else t107)
-        let !t116 = (if t114 > 0 then (t108 + (negate ((t111 / t113) * t96))) else t108)
-        let !t117 = (if t114 > 0 then (t109 + (negate ((t111 / t113) * t97))) else t109)
-        let !t118 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
-        let !t119 = (t118 - 1.0)
-        let !t120 = (recip (2.0 * t118))
-        let !t121 = ((((t120 * (t115 + t115)) * t95) + ((t120 * (t116 + t116)) * t96)) + ((t120 * (t117 + t117)) * t97))
-        let !t122 = (if ((abs t119) - 1.0e-10) > 0 then (if (abs t121) > 0 then 1.0 else 0.0) else 0.0)
-        let !t123 = (1.0 - t98)
-        let !s124 = ((t98 * (if t122 > 0 then (t115 + (negate ((t119 / t121) * t95))) else t115)) + (t123 * t92))
-        let !s125 = ((t98 * (if t122 > 0 then (t116 + (negate ((t119 / t121) * t96))) else t116)) + (t123 * t93))
-        let !s126 = ((t98 * (if t122 > 0 then (t117 + (negate ((t119 / t121) * t97))) else t117)) + (t123 * t94))
-        chkI verts ((291 * i1) + (12 * i86)) 6 8
-        wrU verts (((291 * i1) + (12 * i86)) + 6) (if (1.0 - (abs (((s124 - s124) + (s125 - s125)) + (s126 - s126)))) > 0 then s124 else t2)
-        wrU verts (((291 * i1) + (12 * i86)) + 7) (if (1.0 - (abs (((s124 - s124) + (s125 - s125)) + (s126 - s126)))) > 0 then s125 else t3)
-        wrU verts (((291 * i1) + (12 * i86)) + 8) (if (1.0 - (abs (((s124 - s124) + (s125 - s125)) + (s126 - s126)))) > 0 then s126 else t4)
-        wrU walk (9 * i86) s124
-        wrU walk ((9 * i86) + 1) s125
-        wrU walk ((9 * i86) + 2) s126
-        let !t127 = (sqrt (((t89 * t89) + (t90 * t90)) + (t91 * t91)))
-        let !t128 = (if (abs s88) > 0 then (recip s88) else 0.0)
-        let !t129 = (t128 * ((if t122 > 0 then (t115 + (negate ((t119 / t121) * t95))) else t115) + (negate t92)))
-        let !t130 = (t120 * (t115 + t115))
-        let !t131 = (t120 * (t116 + t116))
-        let !t132 = (t120 * (t117 + t117))
-        let !t133 = (sqrt (((t130 * t130) + (t131 * t131)) + (t132 * t132)))
-        let !t134 = (if t133 > 0 then (recip (if (t133 - 1.0e-300) > 0 then t133 else 1.0e-300)) else 0.0)
-        let !t135 = (t134 * t130)
-        let !t136 = (t134 * t131)
-        let !t137 = (t128 * ((if t122 > 0 then (t116 + (negate ((t119 / t121) * t96))) else t116) + (negate t93)))
-        let !t138 = (t134 * t132)
-        let !t139 = (t128 * ((if t122 > 0 then (t117 + (negate ((t119 / t121) * t97))) else t117) + (negate t94)))
-        let !t140 = (((t135 * t129) + (t136 * t137)) + (t138 * t139))
-        let !t141 = (t129 + (negate (t140 * t135)))
-        let !t142 = (t137 + (negate (t140 * t136)))
-        let !t143 = (t139 + (negate (t140 * t138)))
-        let !t144 = (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143)))
-        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
-        let !s146 = ((t98 * (t127 * (t145 * t141))) + (t123 * t89))
-        let !s147 = ((t98 * (t127 * (t145 * t142))) + (t123 * t90))
-        let !s148 = ((t98 * (t127 * (t145 * t143))) + (t123 * t91))
-        wrU walk ((9 * i86) + 3) s146
-        wrU walk ((9 * i86) + 4) s147
-        wrU walk ((9 * i86) + 5) s148
-        let !s149 = ((t98 * t135) + (t123 * t95))
-        let !s150 = ((t98 * t136) + (t123 * t96))
-        let !s151 = ((t98 * t138) + (t123 * t97))
-        wrU walk ((9 * i86) + 6) s149
-        wrU walk ((9 * i86) + 7) s150
-        wrU walk ((9 * i86) + 8) s151
+      loopI 0.0 24.0 $ \i43 -> do
+        let !d43 = fromIntegral i43 :: Double
+        chkI walk (12 * i43) 9 11
+        t44 <- rdU walk ((12 * i43) + 9)
+        t45 <- rdU walk ((12 * i43) + 10)
+        t46 <- rdU walk ((12 * i43) + 11)
+        let !t47 = (sqrt (((t44 * t44) + (t45 * t45)) + (t46 * t46)))
+        let !t48 = (t47 - 1.0)
+        let !t49 = (recip (2.0 * t47))
+        let !t50 = ((((t49 * (t44 + t44)) * t8) + ((t49 * (t45 + t45)) * t9)) + ((t49 * (t46 + t46)) * t10))
+        let !t51 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t50) > 0 then 1.0 else 0.0) else 0.0)
+        let !s52 = (if t51 > 0 then (t44 + (negate ((t48 / t50) * t8))) else t44)
+        let !s53 = (if t51 > 0 then (t45 + (negate ((t48 / t50) * t9))) else t45)
+        let !s54 = (if t51 > 0 then (t46 + (negate ((t48 / t50) * t10))) else t46)
+        wrU walk ((12 * i43) + 9) s52
+        wrU walk ((12 * i43) + 10) s53
+        wrU walk ((12 * i43) + 11) s54
         pure ()
-      loopI 0.0 24.0 $ \i152 -> do
-        let !d152 = fromIntegral i152 :: Double
-        chkI radii ((24 * i1) + i152) 0 0
-        t153 <- rdU radii ((24 * i1) + i152)
-        let !s154 = (t153 / 4.0)
-        chkI walk (9 * i152) 0 8
-        t155 <- rdU walk ((9 * i152) + 3)
-        t156 <- rdU walk ((9 * i152) + 4)
-        t157 <- rdU walk ((9 * i152) + 5)
-        t158 <- rdU walk (9 * i152)
-        t159 <- rdU walk ((9 * i152) + 1)
-        t160 <- rdU walk ((9 * i152) + 2)
-        t161 <- rdU walk ((9 * i152) + 6)
-        t162 <- rdU walk ((9 * i152) + 7)
-        t163 <- rdU walk ((9 * i152) + 8)
-        let !t164 = (if (abs s154) > 0 then 1.0 else 0.0)
-        let !t165 = (t158 + (s154 * t155))
-        let !t166 = (t159 + (s154 * t156))
-        let !t167 = (t160 + (s154 * t157))
-        let !t168 = (sqrt (((t165 * t165) + (t166 * t166)) + (t167 * t167)))
-        let !t169 = (t168 - 1.0)
-        let !t170 = (recip (2.0 * t168))
-        let !t171 = ((((t170 * (t165 + t165)) * t161) + ((t170 * (t166 + t166)) * t162)) + ((t170 * (t167 + t167)) * t163))
-        let !t172 = (if ((abs t169) - 1.0e-10) > 0 then (if (abs t171) > 0 then 1.0 else 0.0) else 0.0)
-        let !t173 = (if t172 > 0 then (t165 + (negate ((t169 / t171) * t161))) else t165)
-        let !t174 = (if t172 > 0 then (t166 + (negate ((t169 / t171) * t162))) else t166)
-        let !t175 = (if t172 > 0 then (t167 + (negate ((t169 / t171) * t163))) else t167)
-        let !t176 = (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175)))
-        let !t177 = (t176 - 1.0)
-        let !t178 = (recip (2.0 * t176))
-        let !t179 = ((((t178 * (t173 + t173)) * t161) + ((t178 * (t174 + t174)) * t162)) + ((t178 * (t175 + t175)) * t163))
-        let !t180 = (if ((abs t177) - 1.0e-10) > 0 then (if (abs t179) > 0 then 1.0 else 0.0) else 0.0)
-        let !t181 = (if t180 > 0 then (t173 + (negate ((t177 / t179) * t161))) else t173)
-        let !t182 = (if t180 > 0 then (t174 + (negate ((t177 / t179) * t162))) else t174)
-        let !t183 = (if t180 > 0 then (t175 + (negate ((t177 / t179) * t163))) else t175)
-        let !t184 = (sqrt (((t181 * t181) + (t182 * t182)) + (t183 * t183)))
-        let !t185 = (t184 - 1.0)
-        let !t186 = (recip (2.0 * t184))
-        let !t187 = ((((t186 * (t181 + t181)) * t161) + ((t186 * (t182 + t182)) * t162)) + ((t186 * (t183 + t183)) * t163))
-        let !t188 = (if ((abs t185) - 1.0e-10) > 0 then (if (abs t187) > 0 then 1.0 else 0.0) else 0.0)
-        let !t189 = (1.0 - t164)
-        let !s190 = ((t164 * (if t188 > 0 then (t181 + (negate ((t185 / t187) * t161))) else t181)) + (t189 * t158))
-        let !s191 = ((t164 * (if t188 > 0 then (t182 + (negate ((t185 / t187) * t162))) else t182)) + (t189 * t159))
-        let !s192 = ((t164 * (if t188 > 0 then (t183 + (negate ((t185 / t187) * t163))) else t183)) + (t189 * t160))
-        chkI verts ((291 * i1) + (12 * i152)) 9 11
-        wrU verts (((291 * i1) + (12 * i152)) + 9) (if (1.0 - (abs (((s190 - s190) + (s191 - s191)) + (s192 - s192)))) > 0 then s190 else t2)
-        wrU verts (((291 * i1) + (12 * i152)) + 10) (if (1.0 - (abs (((s190 - s190) + (s191 - s191)) + (s192 - s192)))) > 0 then s191 else t3)
-        wrU verts (((291 * i1) + (12 * i152)) + 11) (if (1.0 - (abs (((s190 - s190) + (s191 - s191)) + (s192 - s192)))) > 0 then s192 else t4)
-        wrU walk (9 * i152) s190
-        wrU walk ((9 * i152) + 1) s191
-        wrU walk ((9 * i152) + 2) s192
-        let !t193 = (sqrt (((t155 * t155) + (t156 * t156)) + (t157 * t157)))
-        let !t194 = (if (abs s154) > 0 then (recip s154) else 0.0)
-        let !t195 = (t194 * ((if t188 > 0 then (t181 + (negate ((t185 / t187) * t161))) else t181) + (negate t158)))
-        let !t196 = (t186 * (t181 + t181))
-        let !t197 = (t186 * (t182 + t182))
-        let !t198 = (t186 * (t183 + t183))
-        let !t199 = (sqrt (((t196 * t196) + (t197 * t197)) + (t198 * t198)))
-        let !t200 = (if t199 > 0 then (recip (if (t199 - 1.0e-300) > 0 then t199 else 1.0e-300)) else 0.0)
-        let !t201 = (t200 * t196)
-        let !t202 = (t200 * t197)
-        let !t203 = (t194 * ((if t188 > 0 then (t182 + (negate ((t185 / t187) * t162))) else t182) + (negate t159)))
-        let !t204 = (t200 * t198)
-        let !t205 = (t194 * ((if t188 > 0 then (t183 + (negate ((t185 / t187) * t163))) else t183) + (negate t160)))
-        let !t206 = (((t201 * t195) + (t202 * t203)) + (t204 * t205))
-        let !t207 = (t195 + (negate (t206 * t201)))
-        let !t208 = (t203 + (negate (t206 * t202)))
-        let !t209 = (t205 + (negate (t206 * t204)))
-        let !t210 = (sqrt (((t207 * t207) + (t208 * t208)) + (t209 * t209)))
-        let !t211 = (if t210 > 0 then (recip (if (t210 - 1.0e-300) > 0 then t210 else 1.0e-300)) else 0.0)
-        let !s212 = ((t164 * (t193 * (t211 * t207))) + (t189 * t155))
-        let !s213 = ((t164 * (t193 * (t211 * t208))) + (t189 * t156))
-        let !s214 = ((t164 * (t193 * (t211 * t209))) + (t189 * t157))
-        wrU walk ((9 * i152) + 3) s212
-        wrU walk ((9 * i152) + 4) s213
-        wrU walk ((9 * i152) + 5) s214
-        let !s215 = ((t164 * t201) + (t189 * t161))
-        let !s216 = ((t164 * t202) + (t189 * t162))
-        let !s217 = ((t164 * t204) + (t189 * t163))
-        wrU walk ((9 * i152) + 6) s215
-        wrU walk ((9 * i152) + 7) s216
-        wrU walk ((9 * i152) + 8) s217
+      loopI 0.0 24.0 $ \i55 -> do
+        let !d55 = fromIntegral i55 :: Double
+        chkI walk (12 * i55) 0 11
+        t56 <- rdU walk ((12 * i55) + 9)
+        t57 <- rdU walk ((12 * i55) + 10)
+        t58 <- rdU walk ((12 * i55) + 11)
+        chkI radii ((24 * i1) + i55) 0 0
+        t59 <- rdU radii ((24 * i1) + i55)
+        let !s60 = (t59 / 4.0)
+        t61 <- rdU walk ((12 * i55) + 3)
+        t62 <- rdU walk ((12 * i55) + 4)
+        t63 <- rdU walk ((12 * i55) + 5)
+        let !t64 = (if (abs s60) > 0 then 1.0 else 0.0)
+        let !t65 = (sqrt (((t56 * t56) + (t57 * t57)) + (t58 * t58)))
+        let !t66 = (t65 - 1.0)
+        let !t67 = (recip (2.0 * t65))
+        let !t68 = ((((t67 * (t56 + t56)) * t8) + ((t67 * (t57 + t57)) * t9)) + ((t67 * (t58 + t58)) * t10))
+        let !t69 = (if ((abs t66) - 1.0e-10) > 0 then (if (abs t68) > 0 then 1.0 else 0.0) else 0.0)
+        let !t70 = (1.0 - t64)
+        let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
+        let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
+        let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
+        chkI verts ((291 * i1) + (12 * i55)) 3 5
+        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
+        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
+        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
+        wrU walk (12 * i55) s71
+        wrU walk ((12 * i55) + 1) s72
+        wrU walk ((12 * i55) + 2) s73
+        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
+        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
+        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
+        let !t77 = (t67 * (t56 + t56))
+        let !t78 = (t67 * (t57 + t57))
+        let !t79 = (t67 * (t58 + t58))
+        let !t80 = (sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79)))
+        let !t81 = (if t80 > 0 then (recip (if (t80 - 1.0e-300) > 0 then t80 else 1.0e-300)) else 0.0)
+        let !t82 = (t81 * t77)
+        let !t83 = (t81 * t78)
+        let !t84 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
+        let !t85 = (t81 * t79)
+        let !t86 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
+        let !t87 = (((t82 * t76) + (t83 * t84)) + (t85 * t86))
+        let !t88 = (t76 + (negate (t87 * t82)))
+        let !t89 = (t84 + (negate (t87 * t83)))
+        let !t90 = (t86 + (negate (t87 * t85)))
+        let !t91 = (sqrt (((t88 * t88) + (t89 * t89)) + (t90 * t90)))
+        let !t92 = (if t91 > 0 then (recip (if (t91 - 1.0e-300) > 0 then t91 else 1.0e-300)) else 0.0)
+        let !s93 = ((t64 * (t74 * (t92 * t88))) + (t70 * t61))
+        let !s94 = ((t64 * (t74 * (t92 * t89))) + (t70 * t62))
+        let !s95 = ((t64 * (t74 * (t92 * t90))) + (t70 * t63))
+        wrU walk ((12 * i55) + 3) s93
+        wrU walk ((12 * i55) + 4) s94
+        wrU walk ((12 * i55) + 5) s95
+        let !s96 = ((t64 * t82) + (t70 * t8))
+        let !s97 = ((t64 * t83) + (t70 * t9))
+        let !s98 = ((t64 * t85) + (t70 * t10))
+        wrU walk ((12 * i55) + 6) s96
+        wrU walk ((12 * i55) + 7) s97
+        wrU walk ((12 * i55) + 8) s98
         pure ()
-      loopI 0.0 24.0 $ \i218 -> do
-        let !d218 = fromIntegral i218 :: Double
-        chkI radii ((24 * i1) + i218) 0 0
-        t219 <- rdU radii ((24 * i1) + i218)
-        let !s220 = (t219 / 4.0)
-        chkI walk (9 * i218) 0 8
-        t221 <- rdU walk ((9 * i218) + 3)
-        t222 <- rdU walk ((9 * i218) + 4)
-        t223 <- rdU walk ((9 * i218) + 5)
-        t224 <- rdU walk (9 * i218)
-        t225 <- rdU walk ((9 * i218) + 1)
-        t226 <- rdU walk ((9 * i218) + 2)
-        t227 <- rdU walk ((9 * i218) + 6)
-        t228 <- rdU walk ((9 * i218) + 7)
-        t229 <- rdU walk ((9 * i218) + 8)
-        let !t230 = (if (abs s220) > 0 then 1.0 else 0.0)
-        let !t231 = (t224 + (s220 * t221))
-        let !t232 = (t225 + (s220 * t222))
-        let !t233 = (t226 + (s220 * t223))
-        let !t234 = (sqrt (((t231 * t231) + (t232 * t232)) + (t233 * t233)))
-        let !t235 = (t234 - 1.0)
-        let !t236 = (recip (2.0 * t234))
-        let !t237 = ((((t236 * (t231 + t231)) * t227) + ((t236 * (t232 + t232)) * t228)) + ((t236 * (t233 + t233)) * t229))
-        let !t238 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t237) > 0 then 1.0 else 0.0) else 0.0)
-        let !t239 = (if t238 > 0 then (t231 + (negate ((t235 / t237) * t227))) else t231)
-        let !t240 = (if t238 > 0 then (t232 + (negate ((t235 / t237) * t228))) else t232)
-        let !t241 = (if t238 > 0 then (t233 + (negate ((t235 / t237) * t229))) else t233)
-        let !t242 = (sqrt (((t239 * t239) + (t240 * t240)) + (t241 * t241)))
-        let !t243 = (t242 - 1.0)
-        let !t244 = (recip (2.0 * t242))
-        let !t245 = ((((t244 * (t239 + t239)) * t227) + ((t244 * (t240 + t240)) * t228)) + ((t244 * (t241 + t241)) * t229))
-        let !t246 = (if ((abs t243) - 1.0e-10) > 0 then (if (abs t245) > 0 then 1.0 else 0.0) else 0.0)
-        let !t247 = (if t246 > 0 then (t239 + (negate ((t243 / t245) * t227))) else t239)
-        let !t248 = (if t246 > 0 then (t240 + (negate ((t243 / t245) * t228))) else t240)
-        let !t249 = (if t246 > 0 then (t241 + (negate ((t243 / t245) * t229))) else t241)
-        let !t250 = (sqrt (((t247 * t247) + (t248 * t248)) + (t249 * t249)))
-        let !t251 = (t250 - 1.0)
-        let !t252 = (recip (2.0 * t250))
-        let !t253 = ((((t252 * (t247 + t247)) * t227) + ((t252 * (t248 + t248)) * t228)) + ((t252 * (t249 + t249)) * t229))
-        let !t254 = (if ((abs t251) - 1.0e-10) > 0 then (if (abs t253) > 0 then 1.0 else 0.0) else 0.0)
-        let !t255 = (1.0 - t230)
-        let !s256 = ((t230 * (if t254 > 0 then (t247 + (negate ((t251 / t253) * t227))) else t247)) + (t255 * t224))
-        let !s257 = ((t230 * (if t254 > 0 then (t248 + (negate ((t251 / t253) * t228))) else t248)) + (t255 * t225))
-        let !s258 = ((t230 * (if t254 > 0 then (t249 + (negate ((t251 / t253) * t229))) else t249)) + (t255 * t226))
-        chkI verts ((291 * i1) + (12 * i218)) 12 14
-        wrU verts (((291 * i1) + (12 * i218)) + 12) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s256 else t2)
-        wrU verts (((291 * i1) + (12 * i218)) + 13) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s257 else t3)
-        wrU verts (((291 * i1) + (12 * i218)) + 14) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s258 else t4)
+      loopI 0.0 24.0 $ \i99 -> do
+        let !d99 = fromIntegral i99 :: Double
+        chkI walk (12 * i99) 0 11
+        t100 <- rdU walk ((12 * i99) + 6)
+        t101 <- rdU walk ((12 * i99) + 7)
+        t102 <- rdU walk ((12 * i99) + 8)
+        chkI radii ((24 * i1) + i99) 0 0
+        t103 <- rdU radii ((24 * i1) + i99)
+        let !s104 = (t103 / 4.0)
+        t105 <- rdU walk (12 * i99)
+        t106 <- rdU walk ((12 * i99) + 1)
+        t107 <- rdU walk ((12 * i99) + 2)
+        t108 <- rdU walk ((12 * i99) + 6)
+        t109 <- rdU walk ((12 * i99) + 7)
+        t110 <- rdU walk ((12 * i99) + 8)
+        t111 <- rdU walk ((12 * i99) + 3)
+        t112 <- rdU walk ((12 * i99) + 4)
+        t113 <- rdU walk ((12 * i99) + 5)
+        let !s114 = (t105 + (s104 * t111))
+        let !s115 = (t106 + (s104 * t112))
+        let !s116 = (t107 + (s104 * t113))
+        let !t117 = (sqrt (((s114 * s114) + (s115 * s115)) + (s116 * s116)))
+        let !t118 = (t117 - 1.0)
+        let !t119 = (recip (2.0 * t117))
+        let !t120 = ((((t119 * (s114 + s114)) * t100) + ((t119 * (s115 + s115)) * t101)) + ((t119 * (s116 + s116)) * t102))
+        let !t121 = (if ((abs t118) - 1.0e-10) > 0 then (if (abs t120) > 0 then 1.0 else 0.0) else 0.0)
+        let !s122 = (if t121 > 0 then (s114 + (negate ((t118 / t120) * t100))) else s114)
+        let !s123 = (if t121 > 0 then (s115 + (negate ((t118 / t120) * t101))) else s115)
+        let !s124 = (if t121 > 0 then (s116 + (negate ((t118 / t120) * t102))) else s116)
+        wrU walk ((12 * i99) + 9) s122
+        wrU walk ((12 * i99) + 10) s123
+        wrU walk ((12 * i99) + 11) s124
+        pure ()
+      loopI 0.0 24.0 $ \i125 -> do
+        let !d125 = fromIntegral i125 :: Double
+        chkI walk (12 * i125) 6 11
+        t126 <- rdU walk ((12 * i125) + 6)
+        t127 <- rdU walk ((12 * i125) + 7)
+        t128 <- rdU walk ((12 * i125) + 8)
+        t129 <- rdU walk ((12 * i125) + 9)
+        t130 <- rdU walk ((12 * i125) + 10)
+        t131 <- rdU walk ((12 * i125) + 11)
+        let !t132 = (sqrt (((t129 * t129) + (t130 * t130)) + (t131 * t131)))
+        let !t133 = (t132 - 1.0)
+        let !t134 = (recip (2.0 * t132))
+        let !t135 = ((((t134 * (t129 + t129)) * t126) + ((t134 * (t130 + t130)) * t127)) + ((t134 * (t131 + t131)) * t128))
+        let !t136 = (if ((abs t133) - 1.0e-10) > 0 then (if (abs t135) > 0 then 1.0 else 0.0) else 0.0)
+        let !s137 = (if t136 > 0 then (t129 + (negate ((t133 / t135) * t126))) else t129)
+        let !s138 = (if t136 > 0 then (t130 + (negate ((t133 / t135) * t127))) else t130)
+        let !s139 = (if t136 > 0 then (t131 + (negate ((t133 / t135) * t128))) else t131)
+        wrU walk ((12 * i125) + 9) s137
+        wrU walk ((12 * i125) + 10) s138
+        wrU walk ((12 * i125) + 11) s139
+        pure ()
+      loopI 0.0 24.0 $ \i140 -> do
+        let !d140 = fromIntegral i140 :: Double
+        chkI walk (12 * i140) 0 11
+        t141 <- rdU walk ((12 * i140) + 6)
+        t142 <- rdU walk ((12 * i140) + 7)
+        t143 <- rdU walk ((12 * i140) + 8)
+        t144 <- rdU walk ((12 * i140) + 9)
+        t145 <- rdU walk ((12 * i140) + 10)
+        t146 <- rdU walk ((12 * i140) + 11)
+        chkI radii ((24 * i1) + i140) 0 0
+        t147 <- rdU radii ((24 * i1) + i140)
+        let !s148 = (t147 / 4.0)
+        t149 <- rdU walk (12 * i140)
+        t150 <- rdU walk ((12 * i140) + 1)
+        t151 <- rdU walk ((12 * i140) + 2)
+        t152 <- rdU walk ((12 * i140) + 6)
+        t153 <- rdU walk ((12 * i140) + 7)
+        t154 <- rdU walk ((12 * i140) + 8)
+        t155 <- rdU walk ((12 * i140) + 3)
+        t156 <- rdU walk ((12 * i140) + 4)
+        t157 <- rdU walk ((12 * i140) + 5)
+        let !t158 = (if (abs s148) > 0 then 1.0 else 0.0)
+        let !t159 = (sqrt (((t144 * t144) + (t145 * t145)) + (t146 * t146)))
+        let !t160 = (t159 - 1.0)
+        let !t161 = (recip (2.0 * t159))
+        let !t162 = ((((t161 * (t144 + t144)) * t141) + ((t161 * (t145 + t145)) * t142)) + ((t161 * (t146 + t146)) * t143))
+        let !t163 = (if ((abs t160) - 1.0e-10) > 0 then (if (abs t162) > 0 then 1.0 else 0.0) else 0.0)
+        let !t164 = (1.0 - t158)
+        let !s165 = ((t158 * (if t163 > 0 then (t144 + (negate ((t160 / t162) * t141))) else t144)) + (t164 * t149))
+        let !s166 = ((t158 * (if t163 > 0 then (t145 + (negate ((t160 / t162) * t142))) else t145)) + (t164 * t150))
+        let !s167 = ((t158 * (if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146)) + (t164 * t151))
+        chkI verts ((291 * i1) + (12 * i140)) 6 8
+        wrU verts (((291 * i1) + (12 * i140)) + 6) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s165 else t2)
+        wrU verts (((291 * i1) + (12 * i140)) + 7) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s166 else t3)
+        wrU verts (((291 * i1) + (12 * i140)) + 8) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s167 else t4)
+        wrU walk (12 * i140) s165
+        wrU walk ((12 * i140) + 1) s166
+        wrU walk ((12 * i140) + 2) s167
+        let !t168 = (sqrt (((t155 * t155) + (t156 * t156)) + (t157 * t157)))
+        let !t169 = (if (abs s148) > 0 then (recip s148) else 0.0)
+        let !t170 = (t169 * ((if t163 > 0 then (t144 + (negate ((t160 / t162) * t141))) else t144) + (negate t149)))
+        let !t171 = (t161 * (t144 + t144))
+        let !t172 = (t161 * (t145 + t145))
+        let !t173 = (t161 * (t146 + t146))
+        let !t174 = (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173)))
+        let !t175 = (if t174 > 0 then (recip (if (t174 - 1.0e-300) > 0 then t174 else 1.0e-300)) else 0.0)
+        let !t176 = (t175 * t171)
+        let !t177 = (t175 * t172)
+        let !t178 = (t169 * ((if t163 > 0 then (t145 + (negate ((t160 / t162) * t142))) else t145) + (negate t150)))
+        let !t179 = (t175 * t173)
+        let !t180 = (t169 * ((if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146) + (negate t151)))
+        let !t181 = (((t176 * t170) + (t177 * t178)) + (t179 * t180))
+        let !t182 = (t170 + (negate (t181 * t176)))
+        let !t183 = (t178 + (negate (t181 * t177)))
+        let !t184 = (t180 + (negate (t181 * t179)))
+        let !t185 = (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184)))
+        let !t186 = (if t185 > 0 then (recip (if (t185 - 1.0e-300) > 0 then t185 else 1.0e-300)) else 0.0)
+        let !s187 = ((t158 * (t168 * (t186 * t182))) + (t164 * t155))
+        let !s188 = ((t158 * (t168 * (t186 * t183))) + (t164 * t156))
+        let !s189 = ((t158 * (t168 * (t186 * t184))) + (t164 * t157))
+        wrU walk ((12 * i140) + 3) s187
+        wrU walk ((12 * i140) + 4) s188
+        wrU walk ((12 * i140) + 5) s189
+        let !s190 = ((t158 * t176) + (t164 * t152))
+        let !s191 = ((t158 * t177) + (t164 * t153))
+        let !s192 = ((t158 * t179) + (t164 * t154))
+        wrU walk ((12 * i140) + 6) s190
+        wrU walk ((12 * i140) + 7) s191
+        wrU walk ((12 * i140) + 8) s192
+        pure ()
+      loopI 0.0 24.0 $ \i193 -> do
+        let !d193 = fromIntegral i193 :: Double
+        chkI walk (12 * i193) 0 11
+        t194 <- rdU walk ((12 * i193) + 6)
+        t195 <- rdU walk ((12 * i193) + 7)
+        t196 <- rdU walk ((12 * i193) + 8)
+        chkI radii ((24 * i1) + i193) 0 0
+        t197 <- rdU radii ((24 * i1) + i193)
+        let !s198 = (t197 / 4.0)
+        t199 <- rdU walk (12 * i193)
+        t200 <- rdU walk ((12 * i193) + 1)
+        t201 <- rdU walk ((12 * i193) + 2)
+        t202 <- rdU walk ((12 * i193) + 6)
+        t203 <- rdU walk ((12 * i193) + 7)
+        t204 <- rdU walk ((12 * i193) + 8)
+        t205 <- rdU walk ((12 * i193) + 3)
+        t206 <- rdU walk ((12 * i193) + 4)
+        t207 <- rdU walk ((12 * i193) + 5)
+        let !s208 = (t199 + (s198 * t205))
+        let !s209 = (t200 + (s198 * t206))
+        let !s210 = (t201 + (s198 * t207))
+        let !t211 = (sqrt (((s208 * s208) + (s209 * s209)) + (s210 * s210)))
+        let !t212 = (t211 - 1.0)
+        let !t213 = (recip (2.0 * t211))
+        let !t214 = ((((t213 * (s208 + s208)) * t194) + ((t213 * (s209 + s209)) * t195)) + ((t213 * (s210 + s210)) * t196))
+        let !t215 = (if ((abs t212) - 1.0e-10) > 0 then (if (abs t214) > 0 then 1.0 else 0.0) else 0.0)
+        let !s216 = (if t215 > 0 then (s208 + (negate ((t212 / t214) * t194))) else s208)
+        let !s217 = (if t215 > 0 then (s209 + (negate ((t212 / t214) * t195))) else s209)
+        let !s218 = (if t215 > 0 then (s210 + (negate ((t212 / t214) * t196))) else s210)
+        wrU walk ((12 * i193) + 9) s216
+        wrU walk ((12 * i193) + 10) s217
+        wrU walk ((12 * i193) + 11) s218
+        pure ()
+      loopI 0.0 24.0 $ \i219 -> do
+        let !d219 = fromIntegral i219 :: Double
+        chkI walk (12 * i219) 6 11
+        t220 <- rdU walk ((12 * i219) + 6)
+        t221 <- rdU walk ((12 * i219) + 7)
+        t222 <- rdU walk ((12 * i219) + 8)
+        t223 <- rdU walk ((12 * i219) + 9)
+        t224 <- rdU walk ((12 * i219) + 10)
+        t225 <- rdU walk ((12 * i219) + 11)
+        let !t226 = (sqrt (((t223 * t223) + (t224 * t224)) + (t225 * t225)))
+        let !t227 = (t226 - 1.0)
+        let !t228 = (recip (2.0 * t226))
+        let !t229 = ((((t228 * (t223 + t223)) * t220) + ((t228 * (t224 + t224)) * t221)) + ((t228 * (t225 + t225)) * t222))
+        let !t230 = (if ((abs t227) - 1.0e-10) > 0 then (if (abs t229) > 0 then 1.0 else 0.0) else 0.0)
+        let !s231 = (if t230 > 0 then (t223 + (negate ((t227 / t229) * t220))) else t223)
+        let !s232 = (if t230 > 0 then (t224 + (negate ((t227 / t229) * t221))) else t224)
+        let !s233 = (if t230 > 0 then (t225 + (negate ((t227 / t229) * t222))) else t225)
+        wrU walk ((12 * i219) + 9) s231
+        wrU walk ((12 * i219) + 10) s232
+        wrU walk ((12 * i219) + 11) s233
+        pure ()
+      loopI 0.0 24.0 $ \i234 -> do
+        let !d234 = fromIntegral i234 :: Double
+        chkI walk (12 * i234) 0 11
+        t235 <- rdU walk ((12 * i234) + 6)
+        t236 <- rdU walk ((12 * i234) + 7)
+        t237 <- rdU walk ((12 * i234) + 8)
+        t238 <- rdU walk ((12 * i234) + 9)
+        t239 <- rdU walk ((12 * i234) + 10)
+        t240 <- rdU walk ((12 * i234) + 11)
+        chkI radii ((24 * i1) + i234) 0 0
+        t241 <- rdU radii ((24 * i1) + i234)
+        let !s242 = (t241 / 4.0)
+        t243 <- rdU walk (12 * i234)
+        t244 <- rdU walk ((12 * i234) + 1)
+        t245 <- rdU walk ((12 * i234) + 2)
+        t246 <- rdU walk ((12 * i234) + 6)
+        t247 <- rdU walk ((12 * i234) + 7)
+        t248 <- rdU walk ((12 * i234) + 8)
+        t249 <- rdU walk ((12 * i234) + 3)
+        t250 <- rdU walk ((12 * i234) + 4)
+        t251 <- rdU walk ((12 * i234) + 5)
+        let !t252 = (if (abs s242) > 0 then 1.0 else 0.0)
+        let !t253 = (sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240)))
+        let !t254 = (t253 - 1.0)
+        let !t255 = (recip (2.0 * t253))
+        let !t256 = ((((t255 * (t238 + t238)) * t235) + ((t255 * (t239 + t239)) * t236)) + ((t255 * (t240 + t240)) * t237))
+        let !t257 = (if ((abs t254) - 1.0e-10) > 0 then (if (abs t256) > 0 then 1.0 else 0.0) else 0.0)
+        let !t258 = (1.0 - t252)
+        let !s259 = ((t252 * (if t257 > 0 then (t238 + (negate ((t254 / t256) * t235))) else t238)) + (t258 * t243))
+        let !s260 = ((t252 * (if t257 > 0 then (t239 + (negate ((t254 / t256) * t236))) else t239)) + (t258 * t244))
+        let !s261 = ((t252 * (if t257 > 0 then (t240 + (negate ((t254 / t256) * t237))) else t240)) + (t258 * t245))
+        chkI verts ((291 * i1) + (12 * i234)) 9 11
+        wrU verts (((291 * i1) + (12 * i234)) + 9) (if (1.0 - (abs (((s259 - s259) + (s260 - s260)) + (s261 - s261)))) > 0 then s259 else t2)
+        wrU verts (((291 * i1) + (12 * i234)) + 10) (if (1.0 - (abs (((s259 - s259) + (s260 - s260)) + (s261 - s261)))) > 0 then s260 else t3)
+        wrU verts (((291 * i1) + (12 * i234)) + 11) (if (1.0 - (abs (((s259 - s259) + (s260 - s260)) + (s261 - s261)))) > 0 then s261 else t4)
+        wrU walk (12 * i234) s259
+        wrU walk ((12 * i234) + 1) s260
+        wrU walk ((12 * i234) + 2) s261
+        let !t262 = (sqrt (((t249 * t249) + (t250 * t250)) + (t251 * t251)))
+        let !t263 = (if (abs s242) > 0 then (recip s242) else 0.0)
+        let !t264 = (t263 * ((if t257 > 0 then (t238 + (negate ((t254 / t256) * t235))) else t238) + (negate t243)))
+        let !t265 = (t255 * (t238 + t238))
+        let !t266 = (t255 * (t239 + t239))
+        let !t267 = (t255 * (t240 + t240))
+        let !t268 = (sqrt (((t265 * t265) + (t266 * t266)) + (t267 * t267)))
+        let !t269 = (if t268 > 0 then (recip (if (t268 - 1.0e-300) > 0 then t268 else 1.0e-300)) else 0.0)
+        let !t270 = (t269 * t265)
+        let !t271 = (t269 * t266)
+        let !t272 = (t263 * ((if t257 > 0 then (t239 + (negate ((t254 / t256) * t236))) else t239) + (negate t244)))
+        let !t273 = (t269 * t267)
+        let !t274 = (t263 * ((if t257 > 0 then (t240 + (negate ((t254 / t256) * t237))) else t240) + (negate t245)))
+        let !t275 = (((t270 * t264) + (t271 * t272)) + (t273 * t274))
+        let !t276 = (t264 + (negate (t275 * t270)))
+        let !t277 = (t272 + (negate (t275 * t271)))
+        let !t278 = (t274 + (negate (t275 * t273)))
+        let !t279 = (sqrt (((t276 * t276) + (t277 * t277)) + (t278 * t278)))
+        let !t280 = (if t279 > 0 then (recip (if (t279 - 1.0e-300) > 0 then t279 else 1.0e-300)) else 0.0)
+        let !s281 = ((t252 * (t262 * (t280 * t276))) + (t258 * t249))
+        let !s282 = ((t252 * (t262 * (t280 * t277))) + (t258 * t250))
+        let !s283 = ((t252 * (t262 * (t280 * t278))) + (t258 * t251))
+        wrU walk ((12 * i234) + 3) s281
+        wrU walk ((12 * i234) + 4) s282
+        wrU walk ((12 * i234) + 5) s283
+        let !s284 = ((t252 * t270) + (t258 * t246))
+        let !s285 = ((t252 * t271) + (t258 * t247))
+        let !s286 = ((t252 * t273) + (t258 * t248))
+        wrU walk ((12 * i234) + 6) s284
+        wrU walk ((12 * i234) + 7) s285
+        wrU walk ((12 * i234) + 8) s286
+        pure ()
+      loopI 0.0 24.0 $ \i287 -> do
+        let !d287 = fromIntegral i287 :: Double
+        chkI walk (12 * i287) 0 11
+        t288 <- rdU walk ((12 * i287) + 6)
+        t289 <- rdU walk ((12 * i287) + 7)
+        t290 <- rdU walk ((12 * i287) + 8)
+        chkI radii ((24 * i1) + i287) 0 0
+        t291 <- rdU radii ((24 * i1) + i287)
+        let !s292 = (t291 / 4.0)
+        t293 <- rdU walk (12 * i287)
+        t294 <- rdU walk ((12 * i287) + 1)
+        t295 <- rdU walk ((12 * i287) + 2)
+        t296 <- rdU walk ((12 * i287) + 6)
+        t297 <- rdU walk ((12 * i287) + 7)
+        t298 <- rdU walk ((12 * i287) + 8)
+        t299 <- rdU walk ((12 * i287) + 3)
+        t300 <- rdU walk ((12 * i287) + 4)
+        t301 <- rdU walk ((12 * i287) + 5)
+        let !s302 = (t293 + (s292 * t299))
+        let !s303 = (t294 + (s292 * t300))
+        let !s304 = (t295 + (s292 * t301))
+        let !t305 = (sqrt (((s302 * s302) + (s303 * s303)) + (s304 * s304)))
+        let !t306 = (t305 - 1.0)
+        let !t307 = (recip (2.0 * t305))
+        let !t308 = ((((t307 * (s302 + s302)) * t288) + ((t307 * (s303 + s303)) * t289)) + ((t307 * (s304 + s304)) * t290))
+        let !t309 = (if ((abs t306) - 1.0e-10) > 0 then (if (abs t308) > 0 then 1.0 else 0.0) else 0.0)
+        let !s310 = (if t309 > 0 then (s302 + (negate ((t306 / t308) * t288))) else s302)
+        let !s311 = (if t309 > 0 then (s303 + (negate ((t306 / t308) * t289))) else s303)
+        let !s312 = (if t309 > 0 then (s304 + (negate ((t306 / t308) * t290))) else s304)
+        wrU walk ((12 * i287) + 9) s310
+        wrU walk ((12 * i287) + 10) s311
+        wrU walk ((12 * i287) + 11) s312
+        pure ()
+      loopI 0.0 24.0 $ \i313 -> do
+        let !d313 = fromIntegral i313 :: Double
+        chkI walk (12 * i313) 6 11
+        t314 <- rdU walk ((12 * i313) + 6)
+        t315 <- rdU walk ((12 * i313) + 7)
+        t316 <- rdU walk ((12 * i313) + 8)
+        t317 <- rdU walk ((12 * i313) + 9)
+        t318 <- rdU walk ((12 * i313) + 10)
+        t319 <- rdU walk ((12 * i313) + 11)
+        let !t320 = (sqrt (((t317 * t317) + (t318 * t318)) + (t319 * t319)))
+        let !t321 = (t320 - 1.0)
+        let !t322 = (recip (2.0 * t320))
+        let !t323 = ((((t322 * (t317 + t317)) * t314) + ((t322 * (t318 + t318)) * t315)) + ((t322 * (t319 + t319)) * t316))
+        let !t324 = (if ((abs t321) - 1.0e-10) > 0 then (if (abs t323) > 0 then 1.0 else 0.0) else 0.0)
+        let !s325 = (if t324 > 0 then (t317 + (negate ((t321 / t323) * t314))) else t317)
+        let !s326 = (if t324 > 0 then (t318 + (negate ((t321 / t323) * t315))) else t318)
+        let !s327 = (if t324 > 0 then (t319 + (negate ((t321 / t323) * t316))) else t319)
+        wrU walk ((12 * i313) + 9) s325
+        wrU walk ((12 * i313) + 10) s326
+        wrU walk ((12 * i313) + 11) s327
+        pure ()
+      loopI 0.0 24.0 $ \i328 -> do
+        let !d328 = fromIntegral i328 :: Double
+        chkI walk (12 * i328) 0 11
+        t329 <- rdU walk ((12 * i328) + 6)
+        t330 <- rdU walk ((12 * i328) + 7)
+        t331 <- rdU walk ((12 * i328) + 8)
+        t332 <- rdU walk ((12 * i328) + 9)
+        t333 <- rdU walk ((12 * i328) + 10)
+        t334 <- rdU walk ((12 * i328) + 11)
+        chkI radii ((24 * i1) + i328) 0 0
+        t335 <- rdU radii ((24 * i1) + i328)
+        let !s336 = (t335 / 4.0)
+        t337 <- rdU walk (12 * i328)
+        t338 <- rdU walk ((12 * i328) + 1)
+        t339 <- rdU walk ((12 * i328) + 2)
+        t340 <- rdU walk ((12 * i328) + 6)
+        t341 <- rdU walk ((12 * i328) + 7)
+        t342 <- rdU walk ((12 * i328) + 8)
+        t343 <- rdU walk ((12 * i328) + 3)
+        t344 <- rdU walk ((12 * i328) + 4)
+        t345 <- rdU walk ((12 * i328) + 5)
+        let !t346 = (if (abs s336) > 0 then 1.0 else 0.0)
+        let !t347 = (sqrt (((t332 * t332) + (t333 * t333)) + (t334 * t334)))
+        let !t348 = (t347 - 1.0)
+        let !t349 = (recip (2.0 * t347))
+        let !t350 = ((((t349 * (t332 + t332)) * t329) + ((t349 * (t333 + t333)) * t330)) + ((t349 * (t334 + t334)) * t331))
+        let !t351 = (if ((abs t348) - 1.0e-10) > 0 then (if (abs t350) > 0 then 1.0 else 0.0) else 0.0)
+        let !t352 = (1.0 - t346)
+        let !s353 = ((t346 * (if t351 > 0 then (t332 + (negate ((t348 / t350) * t329))) else t332)) + (t352 * t337))
+        let !s354 = ((t346 * (if t351 > 0 then (t333 + (negate ((t348 / t350) * t330))) else t333)) + (t352 * t338))
+        let !s355 = ((t346 * (if t351 > 0 then (t334 + (negate ((t348 / t350) * t331))) else t334)) + (t352 * t339))
+        chkI verts ((291 * i1) + (12 * i328)) 12 14
+        wrU verts (((291 * i1) + (12 * i328)) + 12) (if (1.0 - (abs (((s353 - s353) + (s354 - s354)) + (s355 - s355)))) > 0 then s353 else t2)
+        wrU verts (((291 * i1) + (12 * i328)) + 13) (if (1.0 - (abs (((s353 - s353) + (s354 - s354)) + (s355 - s355)))) > 0 then s354 else t3)
+        wrU verts (((291 * i1) + (12 * i328)) + 14) (if (1.0 - (abs (((s353 - s353) + (s354 - s354)) + (s355 - s355)))) > 0 then s355 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i259 -> do
-        let !d259 = fromIntegral i259 :: Double
-        chkI radii ((24 * i1) + i259) 0 0
-        t260 <- rdU radii ((24 * i1) + i259)
-        t261 <- getR v18
-        t262 <- getR v19
-        setR v18 ((t261 * 0.9659258262890683) - (t262 * 0.25881904510252074))
-        setR v19 ((t262 * 0.9659258262890683) + (t261 * 0.25881904510252074))
-        let !s263 = ((t261 * t5) + (t262 * s14))
-        let !s264 = ((t261 * t6) + (t262 * s15))
-        let !s265 = ((t261 * t7) + (t262 * s16))
-        let !t266 = (if (abs t260) > 0 then 1.0 else 0.0)
-        let !t267 = (t2 + (t260 * s263))
-        let !t268 = (t3 + (t260 * s264))
-        let !t269 = (t4 + (t260 * s265))
-        let !t270 = (sqrt (((t267 * t267) + (t268 * t268)) + (t269 * t269)))
-        let !t271 = (t270 - 1.0)
-        let !t272 = (recip (2.0 * t270))
-        let !t273 = ((((t272 * (t267 + t267)) * t8) + ((t272 * (t268 + t268)) * t9)) + ((t272 * (t269 + t269)) * t10))
-        let !t274 = (if ((abs t271) - 1.0e-10) > 0 then (if (abs t273) > 0 then 1.0 else 0.0) else 0.0)
-        let !t275 = (if t274 > 0 then (t267 + (negate ((t271 / t273) * t8))) else t267)
-        let !t276 = (if t274 > 0 then (t268 + (negate ((t271 / t273) * t9))) else t268)
-        let !t277 = (if t274 > 0 then (t269 + (negate ((t271 / t273) * t10))) else t269)
-        let !t278 = (sqrt (((t275 * t275) + (t276 * t276)) + (t277 * t277)))
-        let !t279 = (t278 - 1.0)
-        let !t280 = (recip (2.0 * t278))
-        let !t281 = ((((t280 * (t275 + t275)) * t8) + ((t280 * (t276 + t276)) * t9)) + ((t280 * (t277 + t277)) * t10))
-        let !t282 = (if ((abs t279) - 1.0e-10) > 0 then (if (abs t281) > 0 then 1.0 else 0.0) else 0.0)
-        let !t283 = (if t282 > 0 then (t275 + (negate ((t279 / t281) * t8))) else t275)
-        let !t284 = (if t282 > 0 then (t276 + (negate ((t279 / t281) * t9))) else t276)
-        let !t285 = (if t282 > 0 then (t277 + (negate ((t279 / t281) * t10))) else t277)
-        let !t286 = (sqrt (((t283 * t283) + (t284 * t284)) + (t285 * t285)))
-        let !t287 = (t286 - 1.0)
-        let !t288 = (recip (2.0 * t286))
-        let !t289 = ((((t288 * (t283 + t283)) * t8) + ((t288 * (t284 + t284)) * t9)) + ((t288 * (t285 + t285)) * t10))
-        let !t290 = (if ((abs t287) - 1.0e-10) > 0 then (if (abs t289) > 0 then 1.0 else 0.0) else 0.0)
-        let !t291 = (1.0 - t266)
-        let !t292 = ((t266 * (if t290 > 0 then (t283 + (negate ((t287 / t289) * t8))) else t283)) + (t291 * t2))
-        let !t293 = ((t266 * (if t290 > 0 then (t284 + (negate ((t287 / t289) * t9))) else t284)) + (t291 * t3))
-        let !t294 = ((t266 * (if t290 > 0 then (t285 + (negate ((t287 / t289) * t10))) else t285)) + (t291 * t4))
-        let !t295 = (1.0 - (abs (((t292 - t292) + (t293 - t293)) + (t294 - t294))))
-        let !s296 = (if t295 > 0 then t292 else t2)
-        let !s297 = (if t295 > 0 then t293 else t3)
-        let !s298 = (if t295 > 0 then t294 else t4)
-        chkI verts ((291 * i1) + (12 * i259)) 3 14
-        wrU verts (((291 * i1) + (12 * i259)) + 12) s296
-        wrU verts (((291 * i1) + (12 * i259)) + 13) s297
-        wrU verts (((291 * i1) + (12 * i259)) + 14) s298
-        wrU verts (((291 * i1) + (12 * i259)) + 3) (t2 + (0.25 * (s296 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i259)) + 4) (t3 + (0.25 * (s297 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i259)) + 5) (t4 + (0.25 * (s298 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i259)) + 6) (t2 + (0.5 * (s296 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i259)) + 7) (t3 + (0.5 * (s297 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i259)) + 8) (t4 + (0.5 * (s298 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i259)) + 9) (t2 + (0.75 * (s296 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i259)) + 10) (t3 + (0.75 * (s297 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i259)) + 11) (t4 + (0.75 * (s298 + (negate t4))))
+      loopI 0.0 24.0 $ \i356 -> do
+        let !d356 = fromIntegral i356 :: Double
+        t357 <- getR v18
+        t358 <- getR v19
+        setR v18 ((t357 * 0.9659258262890683) - (t358 * 0.25881904510252074))
+        setR v19 ((t358 * 0.9659258262890683) + (t357 * 0.25881904510252074))
+        let !s359 = ((t357 * t5) + (t358 * s14))
+        let !s360 = ((t357 * t6) + (t358 * s15))
+        let !s361 = ((t357 * t7) + (t358 * s16))
+        chkI walk (12 * i356) 3 5
+        wrU walk ((12 * i356) + 3) s359
+        wrU walk ((12 * i356) + 4) s360
+        wrU walk ((12 * i356) + 5) s361
+        pure ()
+      loopI 0.0 24.0 $ \i362 -> do
+        let !d362 = fromIntegral i362 :: Double
+        chkI radii ((24 * i1) + i362) 0 0
+        t363 <- rdU radii ((24 * i1) + i362)
+        chkI walk (12 * i362) 3 11
+        t364 <- rdU walk ((12 * i362) + 3)
+        t365 <- rdU walk ((12 * i362) + 4)
+        t366 <- rdU walk ((12 * i362) + 5)
+        let !s367 = (t2 + (t363 * t364))
+        let !s368 = (t3 + (t363 * t365))
+        let !s369 = (t4 + (t363 * t366))
+        let !t370 = (sqrt (((s367 * s367) + (s368 * s368)) + (s369 * s369)))
+        let !t371 = (t370 - 1.0)
+        let !t372 = (recip (2.0 * t370))
+        let !t373 = ((((t372 * (s367 + s367)) * t8) + ((t372 * (s368 + s368)) * t9)) + ((t372 * (s369 + s369)) * t10))
+        let !t374 = (if ((abs t371) - 1.0e-10) > 0 then (if (abs t373) > 0 then 1.0 else 0.0) else 0.0)
+        let !s375 = (if t374 > 0 then (s367 + (negate ((t371 / t373) * t8))) else s367)
+        let !s376 = (if t374 > 0 then (s368 + (negate ((t371 / t373) * t9))) else s368)
+        let !s377 = (if t374 > 0 then (s369 + (negate ((t371 / t373) * t10))) else s369)
+        wrU walk ((12 * i362) + 9) s375
+        wrU walk ((12 * i362) + 10) s376
+        wrU walk ((12 * i362) + 11) s377
+        pure ()
+      loopI 0.0 24.0 $ \i378 -> do
+        let !d378 = fromIntegral i378 :: Double
+        chkI walk (12 * i378) 9 11
+        t379 <- rdU walk ((12 * i378) + 9)
+        t380 <- rdU walk ((12 * i378) + 10)
+        t381 <- rdU walk ((12 * i378) + 11)
+        let !t382 = (sqrt (((t379 * t379) + (t380 * t380)) + (t381 * t381)))
+        let !t383 = (t382 - 1.0)
+        let !t384 = (recip (2.0 * t382))
+        let !t385 = ((((t384 * (t379 + t379)) * t8) + ((t384 * (t380 + t380)) * t9)) + ((t384 * (t381 + t381)) * t10))
+        let !t386 = (if ((abs t383) - 1.0e-10) > 0 then (if (abs t385) > 0 then 1.0 else 0.0) else 0.0)
+        let !s387 = (if t386 > 0 then (t379 + (negate ((t383 / t385) * t8))) else t379)
+        let !s388 = (if t386 > 0 then (t380 + (negate ((t383 / t385) * t9))) else t380)
+        let !s389 = (if t386 > 0 then (t381 + (negate ((t383 / t385) * t10))) else t381)
+        wrU walk ((12 * i378) + 9) s387
+        wrU walk ((12 * i378) + 10) s388
+        wrU walk ((12 * i378) + 11) s389
+        pure ()
+      loopI 0.0 24.0 $ \i390 -> do
+        let !d390 = fromIntegral i390 :: Double
+        chkI walk (12 * i390) 3 11
+        t391 <- rdU walk ((12 * i390) + 9)
+        t392 <- rdU walk ((12 * i390) + 10)
+        t393 <- rdU walk ((12 * i390) + 11)
+        chkI radii ((24 * i1) + i390) 0 0
+        t394 <- rdU radii ((24 * i1) + i390)
+        t395 <- rdU walk ((12 * i390) + 3)
+        t396 <- rdU walk ((12 * i390) + 4)
+        t397 <- rdU walk ((12 * i390) + 5)
+        let !t398 = (if (abs t394) > 0 then 1.0 else 0.0)
+        let !t399 = (sqrt (((t391 * t391) + (t392 * t392)) + (t393 * t393)))
+        let !t400 = (t399 - 1.0)
+        let !t401 = (recip (2.0 * t399))
+        let !t402 = ((((t401 * (t391 + t391)) * t8) + ((t401 * (t392 + t392)) * t9)) + ((t401 * (t393 + t393)) * t10))
+        let !t403 = (if ((abs t400) - 1.0e-10) > 0 then (if (abs t402) > 0 then 1.0 else 0.0) else 0.0)
+        let !t404 = (1.0 - t398)
+        let !s405 = ((t398 * (if t403 > 0 then (t391 + (negate ((t400 / t402) * t8))) else t391)) + (t404 * t2))
+        let !s406 = ((t398 * (if t403 > 0 then (t392 + (negate ((t400 / t402) * t9))) else t392)) + (t404 * t3))
+        let !s407 = ((t398 * (if t403 > 0 then (t393 + (negate ((t400 / t402) * t10))) else t393)) + (t404 * t4))
+        let !t408 = (1.0 - (abs (((s405 - s405) + (s406 - s406)) + (s407 - s407))))
+        let !s409 = (if t408 > 0 then s405 else t2)
+        let !s410 = (if t408 > 0 then s406 else t3)
+        let !s411 = (if t408 > 0 then s407 else t4)
+        chkI verts ((291 * i1) + (12 * i390)) 3 14
+        wrU verts (((291 * i1) + (12 * i390)) + 12) s409
+        wrU verts (((291 * i1) + (12 * i390)) + 13) s410
+        wrU verts (((291 * i1) + (12 * i390)) + 14) s411
+        wrU verts (((291 * i1) + (12 * i390)) + 3) (t2 + (0.25 * (s409 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i390)) + 4) (t3 + (0.25 * (s410 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i390)) + 5) (t4 + (0.25 * (s411 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i390)) + 6) (t2 + (0.5 * (s409 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i390)) + 7) (t3 + (0.5 * (s410 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i390)) + 8) (t4 + (0.5 * (s411 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i390)) + 9) (t2 + (0.75 * (s409 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i390)) + 10) (t3 + (0.75 * (s410 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i390)) + 11) (t4 + (0.75 * (s411 + (negate t4))))
         pure ()
       pure ()
     pure ()

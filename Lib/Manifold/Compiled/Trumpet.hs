@@ -1710,377 +1710,562 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s23 = ((t21 * t5) + (t22 * s14))
         let !s24 = ((t21 * t6) + (t22 * s15))
         let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (9 * i20) 3 5
-        wrU walk ((9 * i20) + 3) s23
-        wrU walk ((9 * i20) + 4) s24
-        wrU walk ((9 * i20) + 5) s25
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
       loopI 0.0 24.0 $ \i26 -> do
         let !d26 = fromIntegral i26 :: Double
         chkI radii ((24 * i1) + i26) 0 0
         t27 <- rdU radii ((24 * i1) + i26)
         let !s28 = (t27 / 4.0)
-        chkI walk (9 * i26) 0 8
-        t29 <- rdU walk ((9 * i26) + 3)
-        t30 <- rdU walk ((9 * i26) + 4)
-        t31 <- rdU walk ((9 * i26) + 5)
-        let !t32 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t33 = (t2 + (s28 * t29))
-        let !t34 = (t4 + (s28 * t31))
-        let !t35 = (sqrt ((t33 * t33) + (t34 * t34)))
-        let !t36 = (t3 + (s28 * t30))
-        let !t37 = (exp t36)
-        let !t38 = (t35 - t37)
-        let !t39 = (recip (2.0 * t35))
-        let !t40 = ((((t39 * (t33 + t33)) * t8) + ((negate t37) * t9)) + ((t39 * (t34 + t34)) * t10))
-        let !t41 = (if ((abs t38) - 1.0e-10) > 0 then (if (abs t40) > 0 then 1.0 else 0.0) else 0.0)
-        let !t42 = (if t41 > 0 then (t33 + (negate ((t38 / t40) * t8))) else t33)
-        let !t43 = (if t41 > 0 then (t34 + (negate ((t38 / t40) * t10))) else t34)
-        let !t44 = (sqrt ((t42 * t42) + (t43 * t43)))
-        let !t45 = (if t41 > 0 then (t36 + (negate ((t38 / t40) * t9))) else t36)
-        let !t46 = (exp t45)
-        let !t47 = (t44 - t46)
-        let !t48 = (recip (2.0 * t44))
-        let !t49 = ((((t48 * (t42 + t42)) * t8) + ((negate t46) * t9)) + ((t48 * (t43 + t43)) * t10))
-        let !t50 = (if ((abs t47) - 1.0e-10) > 0 then (if (abs t49) > 0 then 1.0 else 0.0) else 0.0)
-        let !t51 = (if t50 > 0 then (t42 + (negate ((t47 / t49) * t8))) else t42)
-        let !t52 = (if t50 > 0 then (t43 + (negate ((t47 / t49) * t10))) else t43)
-        let !t53 = (sqrt ((t51 * t51) + (t52 * t52)))
-        let !t54 = (if t50 > 0 then (t45 + (negate ((t47 / t49) * t9))) else t45)
-        let !t55 = (exp t54)
-        let !t56 = (t53 - t55)
-        let !t57 = (recip (2.0 * t53))
-        let !t58 = ((((t57 * (t51 + t51)) * t8) + ((negate t55) * t9)) + ((t57 * (t52 + t52)) * t10))
-        let !t59 = (if ((abs t56) - 1.0e-10) > 0 then (if (abs t58) > 0 then 1.0 else 0.0) else 0.0)
-        let !t60 = (1.0 - t32)
-        let !s61 = ((t32 * (if t59 > 0 then (t51 + (negate ((t56 / t58) * t8))) else t51)) + (t60 * t2))
-        let !s62 = ((t32 * (if t59 > 0 then (t54 + (negate ((t56 / t58) * t9))) else t54)) + (t60 * t3))
-        let !s63 = ((t32 * (if t59 > 0 then (t52 + (negate ((t56 / t58) * t10))) else t52)) + (t60 * t4))
-        chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s61 - s61) + (s62 - s62)) + (s63 - s63)))) > 0 then s61 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s61 - s61) + (s62 - s62)) + (s63 - s63)))) > 0 then s62 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s61 - s61) + (s62 - s62)) + (s63 - s63)))) > 0 then s63 else t4)
-        wrU walk (9 * i26) s61
-        wrU walk ((9 * i26) + 1) s62
-        wrU walk ((9 * i26) + 2) s63
-        let !t64 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t65 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t66 = (t65 * ((if t59 > 0 then (t51 + (negate ((t56 / t58) * t8))) else t51) + (negate t2)))
-        let !t67 = (t57 * (t51 + t51))
-        let !t68 = (negate t55)
-        let !t69 = (t57 * (t52 + t52))
-        let !t70 = (sqrt (((t67 * t67) + (t68 * t68)) + (t69 * t69)))
-        let !t71 = (if t70 > 0 then (recip (if (t70 - 1.0e-300) > 0 then t70 else 1.0e-300)) else 0.0)
-        let !t72 = (t71 * t67)
-        let !t73 = (t71 * t68)
-        let !t74 = (t65 * ((if t59 > 0 then (t54 + (negate ((t56 / t58) * t9))) else t54) + (negate t3)))
-        let !t75 = (t71 * t69)
-        let !t76 = (t65 * ((if t59 > 0 then (t52 + (negate ((t56 / t58) * t10))) else t52) + (negate t4)))
-        let !t77 = (((t72 * t66) + (t73 * t74)) + (t75 * t76))
-        let !t78 = (t66 + (negate (t77 * t72)))
-        let !t79 = (t74 + (negate (t77 * t73)))
-        let !t80 = (t76 + (negate (t77 * t75)))
-        let !t81 = (sqrt (((t78 * t78) + (t79 * t79)) + (t80 * t80)))
-        let !t82 = (if t81 > 0 then (recip (if (t81 - 1.0e-300) > 0 then t81 else 1.0e-300)) else 0.0)
-        let !s83 = ((t32 * (t64 * (t82 * t78))) + (t60 * t29))
-        let !s84 = ((t32 * (t64 * (t82 * t79))) + (t60 * t30))
-        let !s85 = ((t32 * (t64 * (t82 * t80))) + (t60 * t31))
-        wrU walk ((9 * i26) + 3) s83
-        wrU walk ((9 * i26) + 4) s84
-        wrU walk ((9 * i26) + 5) s85
-        let !s86 = ((t32 * t72) + (t60 * t8))
-        let !s87 = ((t32 * t73) + (t60 * t9))
-        let !s88 = ((t32 * t75) + (t60 * t10))
-        wrU walk ((9 * i26) + 6) s86
-        wrU walk ((9 * i26) + 7) s87
-        wrU walk ((9 * i26) + 8) s88
+        chkI walk (12 * i26) 3 11
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (sqrt ((s32 * s32) + (s34 * s34)))
+        let !t36 = (exp s33)
+        let !t37 = (t35 - t36)
+        let !t38 = (recip (2.0 * t35))
+        let !t39 = ((((t38 * (s32 + s32)) * t8) + ((negate t36) * t9)) + ((t38 * (s34 + s34)) * t10))
+        let !t40 = (if ((abs t37) - 1.0e-10) > 0 then (if (abs t39) > 0 then 1.0 else 0.0) else 0.0)
+        let !s41 = (if t40 > 0 then (s32 + (negate ((t37 / t39) * t8))) else s32)
+        let !s42 = (if t40 > 0 then (s33 + (negate ((t37 / t39) * t9))) else s33)
+        let !s43 = (if t40 > 0 then (s34 + (negate ((t37 / t39) * t10))) else s34)
+        wrU walk ((12 * i26) + 9) s41
+        wrU walk ((12 * i26) + 10) s42
+        wrU walk ((12 * i26) + 11) s43
         pure ()
-      loopI 0.0 24.0 $ \i89 -> do
-        let !d89 = fromIntegral i89 :: Double
-        chkI radii ((24 * i1) + i89) 0 0
-        t90 <- rdU radii ((24 * i1) + i89)
-        let !s91 = (t90 / 4.0)
-        chkI walk (9 * i89) 0 8
-        t92 <- rdU walk ((9 * i89) + 3)
-        t93 <- rdU walk ((9 * i89) + 4)
-        t94 <- rdU walk ((9 * i89) + 5)
-        t95 <- rdU walk (9 * i89)
-        t96 <- rdU walk ((9 * i89) + 1)
-        t97 <- rdU walk ((9 * i89) + 2)
-        t98 <- rdU walk ((9 * i89) + 6)
-        t99 <- rdU walk ((9 * i89) + 7)
-        t100 <- rdU walk ((9 * i89) + 8)
-        let !t101 = (if (abs s91) > 0 then 1.0 else 0.0)
-        let !t102 = (t95 + (s91 * t92))
-        let !t103 = (t97 + (s91 * t94))
-        let !t104 = (sqrt ((t102 * t102) + (t103 * t103)))
-        let !t105 = (t96 + (s91 * t93))
-        let !t106 = (exp t105)
-        let !t107 = (t104 - t106)
-        let !t108 = (recip (2.0 * t104))
-        let !t109 = ((((t108 * (t102 + t102)) * t98) + ((negate t106) * t99)) + ((t108 * (t103 + t103)) * t100))
-        let !t110 = (if ((abs t107) - 1.0e-10) > 0 then (if (abs t109) > 0 then 1.0 else 0.0) else 0.0)
-        let !t111 = (if t110 > 0 then (t102 + (negate ((t107 / t109) * t98))) else t102)
-        let !t112 = (if t110 > 0 then (t103 + (negate ((t107 / t109) * t100))) else t103)
-        let !t113 = (sqrt ((t111 * t111) + (t112 * t112)))
-        let !t114 = (if t110 > 0 then (t105 + (negate ((t107 / t109) * t99))) else t105)
-        let !t115 = (exp t114)
-        let !t116 = (t113 - t115)
-        let !t117 = (recip (2.0 * t113))
-        let !t118 = ((((t117 * (t111 + t111)) * t98) + ((negate t115) * t99)) + ((t117 * (t112 + t112)) * t100))
-        let !t119 = (if ((abs t116) - 1.0e-10) > 0 then (if (abs t118) > 0 then 1.0 else 0.0) else 0.0)
-        let !t120 = (if t119 > 0 then (t111 + (negate ((t116 / t118) * t98))) else t111)
-        let !t121 = (if t119 > 0 then (t112 + (negate ((t116 / t118) * t100))) else t112)
-        let !t122 = (sqrt ((t120 * t120) + (t121 * t121)))
-        let !t123 = (if t119 > 0 then (t114 + (negate ((t116 / t118) * t99))) else t114)
-        let !t124 = (exp t123)
-        let !t125 = (t122 - t124)
-        let !t126 = (recip (2.0 * t122))
-        let !t127 = ((((t126 * (t120 + t120)) * t98) + ((negate t124) * t99)) + ((t126 * (t121 + t121)) * t100))
-        let !t128 = (if ((abs t125) - 1.0e-10) > 0 then (if (abs t127) > 0 then 1.0 else 0.0) else 0.0)
-        let !t129 = (1.0 - t101)
-        let !s130 = ((t101 * (if t128 > 0 then (t120 + (negate ((t125 / t127) * t98))) else t120)) + (t129 * t95))
-        let !s131 = ((t101 * (if t128 > 0 then (t123 + (negate ((t125 / t127) * t99))) else t123)) + (t129 * t96))
-        let !s132 = ((t101 * (if t128 > 0 then (t121 + (negate ((t125 / t127) * t100))) else t121)) + (t129 * t97))
-        chkI verts ((291 * i1) + (12 * i89)) 6 8
-        wrU verts (((291 * i1) + (12 * i89)) + 6) (if (1.0 - (abs (((s130 - s130) + (s131 - s131)) + (s132 - s132)))) > 0 then s130 else t2)
-        wrU verts (((291 * i1) + (12 * i89)) + 7) (if (1.0 - (abs (((s130 - s130) + (s131 - s131)) + (s132 - s132)))) > 0 then s131 else t3)
-        wrU verts (((291 * i1) + (12 * i89)) + 8) (if (1.0 - (abs (((s130 - s130) + (s131 - s131)) + (s132 - s132)))) > 0 then s132 else t4)
-        wrU walk (9 * i89) s130
-        wrU walk ((9 * i89) + 1) s131
-        wrU walk ((9 * i89) + 2) s132
-        let !t133 = (sqrt (((t92 * t92) + (t93 * t93)) + (t94 * t94)))
-        let !t134 = (if (abs s91) > 0 then (recip s91) else 0.0)
-        let !t135 = (t134 * ((if t128 > 0 then (t120 + (negate ((t125 / t127) * t98))) else t120) + (negate t95)))
-        let !t136 = (t126 * (t120 + t120))
-        let !t137 = (negate t124)
-        let !t138 = (t126 * (t121 + t121))
-        let !t139 = (sqrt (((t136 * t136) + (t137 * t137)) + (t138 * t138)))
-        let !t140 = (if t139 > 0 then (recip (if (t139 - 1.0e-300) > 0 then t139 else 1.0e-300)) else 0.0)
-        let !t141 = (t140 * t136)
-        let !t142 = (t140 * t137)
-        let !t143 = (t134 * ((if t128 > 0 then (t123 + (negate ((t125 / t127) * t99))) else t123) + (negate t96)))
-        let !t144 = (t140 * t138)
-        let !t145 = (t134 * ((if t128 > 0 then (t121 + (negate ((t125 / t127) * t100))) else t121) + (negate t97)))
-        let !t146 = (((t141 * t135) + (t142 * t143)) + (t144 * t145))
-        let !t147 = (t135 + (negate (t146 * t141)))
-        let !t148 = (t143 + (negate (t146 * t142)))
-        let !t149 = (t145 + (negate (t146 * t144)))
-        let !t150 = (sqrt (((t147 * t147) + (t148 * t148)) + (t149 * t149)))
-        let !t151 = (if t150 > 0 then (recip (if (t150 - 1.0e-300) > 0 then t150 else 1.0e-300)) else 0.0)
-        let !s152 = ((t101 * (t133 * (t151 * t147))) + (t129 * t92))
-        let !s153 = ((t101 * (t133 * (t151 * t148))) + (t129 * t93))
-        let !s154 = ((t101 * (t133 * (t151 * t149))) + (t129 * t94))
-        wrU walk ((9 * i89) + 3) s152
-        wrU walk ((9 * i89) + 4) s153
-        wrU walk ((9 * i89) + 5) s154
-        let !s155 = ((t101 * t141) + (t129 * t98))
-        let !s156 = ((t101 * t142) + (t129 * t99))
-        let !s157 = ((t101 * t144) + (t129 * t100))
-        wrU walk ((9 * i89) + 6) s155
-        wrU walk ((9 * i89) + 7) s156
-        wrU walk ((9 * i89) + 8) s157
+      loopI 0.0 24.0 $ \i44 -> do
+        let !d44 = fromIntegral i44 :: Double
+        chkI walk (12 * i44) 9 11
+        t45 <- rdU walk ((12 * i44) + 9)
+        t46 <- rdU walk ((12 * i44) + 10)
+        t47 <- rdU walk ((12 * i44) + 11)
+        let !t48 = (sqrt ((t45 * t45) + (t47 * t47)))
+        let !t49 = (exp t46)
+        let !t50 = (t48 - t49)
+        let !t51 = (recip (2.0 * t48))
+        let !t52 = ((((t51 * (t45 + t45)) * t8) + ((negate t49) * t9)) + ((t51 * (t47 + t47)) * t10))
+        let !t53 = (if ((abs t50) - 1.0e-10) > 0 then (if (abs t52) > 0 then 1.0 else 0.0) else 0.0)
+        let !s54 = (if t53 > 0 then (t45 + (negate ((t50 / t52) * t8))) else t45)
+        let !s55 = (if t53 > 0 then (t46 + (negate ((t50 / t52) * t9))) else t46)
+        let !s56 = (if t53 > 0 then (t47 + (negate ((t50 / t52) * t10))) else t47)
+        wrU walk ((12 * i44) + 9) s54
+        wrU walk ((12 * i44) + 10) s55
+        wrU walk ((12 * i44) + 11) s56
         pure ()
-      loopI 0.0 24.0 $ \i158 -> do
-        let !d158 = fromIntegral i158 :: Double
-        chkI radii ((24 * i1) + i158) 0 0
-        t159 <- rdU radii ((24 * i1) + i158)
-        let !s160 = (t159 / 4.0)
-        chkI walk (9 * i158) 0 8
-        t161 <- rdU walk ((9 * i158) + 3)
-        t162 <- rdU walk ((9 * i158) + 4)
-        t163 <- rdU walk ((9 * i158) + 5)
-        t164 <- rdU walk (9 * i158)
-        t165 <- rdU walk ((9 * i158) + 1)
-        t166 <- rdU walk ((9 * i158) + 2)
-        t167 <- rdU walk ((9 * i158) + 6)
-        t168 <- rdU walk ((9 * i158) + 7)
-        t169 <- rdU walk ((9 * i158) + 8)
-        let !t170 = (if (abs s160) > 0 then 1.0 else 0.0)
-        let !t171 = (t164 + (s160 * t161))
-        let !t172 = (t166 + (s160 * t163))
-        let !t173 = (sqrt ((t171 * t171) + (t172 * t172)))
-        let !t174 = (t165 + (s160 * t162))
-        let !t175 = (exp t174)
-        let !t176 = (t173 - t175)
-        let !t177 = (recip (2.0 * t173))
-        let !t178 = ((((t177 * (t171 + t171)) * t167) + ((negate t175) * t168)) + ((t177 * (t172 + t172)) * t169))
-        let !t179 = (if ((abs t176) - 1.0e-10) > 0 then (if (abs t178) > 0 then 1.0 else 0.0) else 0.0)
-        let !t180 = (if t179 > 0 then (t171 + (negate ((t176 / t178) * t167))) else t171)
-        let !t181 = (if t179 > 0 then (t172 + (negate ((t176 / t178) * t169))) else t172)
-        let !t182 = (sqrt ((t180 * t180) + (t181 * t181)))
-        let !t183 = (if t179 > 0 then (t174 + (negate ((t176 / t178) * t168))) else t174)
-        let !t184 = (exp t183)
-        let !t185 = (t182 - t184)
-        let !t186 = (recip (2.0 * t182))
-        let !t187 = ((((t186 * (t180 + t180)) * t167) + ((negate t184) * t168)) + ((t186 * (t181 + t181)) * t169))
-        let !t188 = (if ((abs t185) - 1.0e-10) > 0 then (if (abs t187) > 0 then 1.0 else 0.0) else 0.0)
-        let !t189 = (if t188 > 0 then (t180 + (negate ((t185 / t187) * t167))) else t180)
-        let !t190 = (if t188 > 0 then (t181 + (negate ((t185 / t187) * t169))) else t181)
-        let !t191 = (sqrt ((t189 * t189) + (t190 * t190)))
-        let !t192 = (if t188 > 0 then (t183 + (negate ((t185 / t187) * t168))) else t183)
-        let !t193 = (exp t192)
-        let !t194 = (t191 - t193)
-        let !t195 = (recip (2.0 * t191))
-        let !t196 = ((((t195 * (t189 + t189)) * t167) + ((negate t193) * t168)) + ((t195 * (t190 + t190)) * t169))
-        let !t197 = (if ((abs t194) - 1.0e-10) > 0 then (if (abs t196) > 0 then 1.0 else 0.0) else 0.0)
-        let !t198 = (1.0 - t170)
-        let !s199 = ((t170 * (if t197 > 0 then (t189 + (negate ((t194 / t196) * t167))) else t189)) + (t198 * t164))
-        let !s200 = ((t170 * (if t197 > 0 then (t192 + (negate ((t194 / t196) * t168))) else t192)) + (t198 * t165))
-        let !s201 = ((t170 * (if t197 > 0 then (t190 + (negate ((t194 / t196) * t169))) else t190)) + (t198 * t166))
-        chkI verts ((291 * i1) + (12 * i158)) 9 11
-        wrU verts (((291 * i1) + (12 * i158)) + 9) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s199 else t2)
-        wrU verts (((291 * i1) + (12 * i158)) + 10) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s200 else t3)
-        wrU verts (((291 * i1) + (12 * i158)) + 11) (if (1.0 - (abs (((s199 - s199) + (s200 - s200)) + (s201 - s201)))) > 0 then s201 else t4)
-        wrU walk (9 * i158) s199
-        wrU walk ((9 * i158) + 1) s200
-        wrU walk ((9 * i158) + 2) s201
-        let !t202 = (sqrt (((t161 * t161) + (t162 * t162)) + (t163 * t163)))
-        let !t203 = (if (abs s160) > 0 then (recip s160) else 0.0)
-        let !t204 = (t203 * ((if t197 > 0 then (t189 + (negate ((t194 / t196) * t167))) else t189) + (negate t164)))
-        let !t205 = (t195 * (t189 + t189))
-        let !t206 = (negate t193)
-        let !t207 = (t195 * (t190 + t190))
-        let !t208 = (sqrt (((t205 * t205) + (t206 * t206)) + (t207 * t207)))
-        let !t209 = (if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0)
-        let !t210 = (t209 * t205)
-        let !t211 = (t209 * t206)
-        let !t212 = (t203 * ((if t197 > 0 then (t192 + (negate ((t194 / t196) * t168))) else t192) + (negate t165)))
-        let !t213 = (t209 * t207)
-        let !t214 = (t203 * ((if t197 > 0 then (t190 + (negate ((t194 / t196) * t169))) else t190) + (negate t166)))
-        let !t215 = (((t210 * t204) + (t211 * t212)) + (t213 * t214))
-        let !t216 = (t204 + (negate (t215 * t210)))
-        let !t217 = (t212 + (negate (t215 * t211)))
-        let !t218 = (t214 + (negate (t215 * t213)))
-        let !t219 = (sqrt (((t216 * t216) + (t217 * t217)) + (t218 * t218)))
-        let !t220 = (if t219 > 0 then (recip (if (t219 - 1.0e-300) > 0 then t219 else 1.0e-300)) else 0.0)
-        let !s221 = ((t170 * (t202 * (t220 * t216))) + (t198 * t161))
-        let !s222 = ((t170 * (t202 * (t220 * t217))) + (t198 * t162))
-        let !s223 = ((t170 * (t202 * (t220 * t218))) + (t198 * t163))
-        wrU walk ((9 * i158) + 3) s221
-        wrU walk ((9 * i158) + 4) s222
-        wrU walk ((9 * i158) + 5) s223
-        let !s224 = ((t170 * t210) + (t198 * t167))
-        let !s225 = ((t170 * t211) + (t198 * t168))
-        let !s226 = ((t170 * t213) + (t198 * t169))
-        wrU walk ((9 * i158) + 6) s224
-        wrU walk ((9 * i158) + 7) s225
-        wrU walk ((9 * i158) + 8) s226
+      loopI 0.0 24.0 $ \i57 -> do
+        let !d57 = fromIntegral i57 :: Double
+        chkI walk (12 * i57) 0 11
+        t58 <- rdU walk ((12 * i57) + 9)
+        t59 <- rdU walk ((12 * i57) + 10)
+        t60 <- rdU walk ((12 * i57) + 11)
+        chkI radii ((24 * i1) + i57) 0 0
+        t61 <- rdU radii ((24 * i1) + i57)
+        let !s62 = (t61 / 4.0)
+        t63 <- rdU walk ((12 * i57) + 3)
+        t64 <- rdU walk ((12 * i57) + 4)
+        t65 <- rdU walk ((12 * i57) + 5)
+        let !t66 = (if (abs s62) > 0 then 1.0 else 0.0)
+        let !t67 = (sqrt ((t58 * t58) + (t60 * t60)))
+        let !t68 = (exp t59)
+        let !t69 = (t67 - t68)
+        let !t70 = (recip (2.0 * t67))
+        let !t71 = ((((t70 * (t58 + t58)) * t8) + ((negate t68) * t9)) + ((t70 * (t60 + t60)) * t10))
+        let !t72 = (if ((abs t69) - 1.0e-10) > 0 then (if (abs t71) > 0 then 1.0 else 0.0) else 0.0)
+        let !t73 = (1.0 - t66)
+        let !s74 = ((t66 * (if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58)) + (t73 * t2))
+        let !s75 = ((t66 * (if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59)) + (t73 * t3))
+        let !s76 = ((t66 * (if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60)) + (t73 * t4))
+        chkI verts ((291 * i1) + (12 * i57)) 3 5
+        wrU verts (((291 * i1) + (12 * i57)) + 3) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s74 else t2)
+        wrU verts (((291 * i1) + (12 * i57)) + 4) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s75 else t3)
+        wrU verts (((291 * i1) + (12 * i57)) + 5) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s76 else t4)
+        wrU walk (12 * i57) s74
+        wrU walk ((12 * i57) + 1) s75
+        wrU walk ((12 * i57) + 2) s76
+        let !t77 = (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65)))
+        let !t78 = (if (abs s62) > 0 then (recip s62) else 0.0)
+        let !t79 = (t78 * ((if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58) + (negate t2)))
+        let !t80 = (t70 * (t58 + t58))
+        let !t81 = (negate t68)
+        let !t82 = (t70 * (t60 + t60))
+        let !t83 = (sqrt (((t80 * t80) + (t81 * t81)) + (t82 * t82)))
+        let !t84 = (if t83 > 0 then (recip (if (t83 - 1.0e-300) > 0 then t83 else 1.0e-300)) else 0.0)
+        let !t85 = (t84 * t80)
+        let !t86 = (t84 * t81)
+        let !t87 = (t78 * ((if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59) + (negate t3)))
+        let !t88 = (t84 * t82)
+        let !t89 = (t78 * ((if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60) + (negate t4)))
+        let !t90 = (((t85 * t79) + (t86 * t87)) + (t88 * t89))
+        let !t91 = (t79 + (negate (t90 * t85)))
+        let !t92 = (t87 + (negate (t90 * t86)))
+        let !t93 = (t89 + (negate (t90 * t88)))
+        let !t94 = (sqrt (((t91 * t91) + (t92 * t92)) + (t93 * t93)))
+        let !t95 = (if t94 > 0 then (recip (if (t94 - 1.0e-300) > 0 then t94 else 1.0e-300)) else 0.0)
+        let !s96 = ((t66 * (t77 * (t95 * t91))) + (t73 * t63))
+        let !s97 = ((t66 * (t77 * (t95 * t92))) + (t73 * t64))
+        let !s98 = ((t66 * (t77 * (t95 * t93))) + (t73 * t65))
+        wrU walk ((12 * i57) + 3) s96
+        wrU walk ((12 * i57) + 4) s97
+        wrU walk ((12 * i57) + 5) s98
+        let !s99 = ((t66 * t85) + (t73 * t8))
+        let !s100 = ((t66 * t86) + (t73 * t9))
+        let !s101 = ((t66 * t88) + (t73 * t10))
+        wrU walk ((12 * i57) + 6) s99
+        wrU walk ((12 * i57) + 7) s100
+        wrU walk ((12 * i57) + 8) s101
         pure ()
-      loopI 0.0 24.0 $ \i227 -> do
-        let !d227 = fromIntegral i227 :: Double
-        chkI radii ((24 * i1) + i227) 0 0
-        t228 <- rdU radii ((24 * i1) + i227)
-        let !s229 = (t228 / 4.0)
-        chkI walk (9 * i227) 0 8
-        t230 <- rdU walk ((9 * i227) + 3)
-        t231 <- rdU walk ((9 * i227) + 4)
-        t232 <- rdU walk ((9 * i227) + 5)
-        t233 <- rdU walk (9 * i227)
-        t234 <- rdU walk ((9 * i227) + 1)
-        t235 <- rdU walk ((9 * i227) + 2)
-        t236 <- rdU walk ((9 * i227) + 6)
-        t237 <- rdU walk ((9 * i227) + 7)
-        t238 <- rdU walk ((9 * i227) + 8)
-        let !t239 = (if (abs s229) > 0 then 1.0 else 0.0)
-        let !t240 = (t233 + (s229 * t230))
-        let !t241 = (t235 + (s229 * t232))
-        let !t242 = (sqrt ((t240 * t240) + (t241 * t241)))
-        let !t243 = (t234 + (s229 * t231))
-        let !t244 = (exp t243)
-        let !t245 = (t242 - t244)
-        let !t246 = (recip (2.0 * t242))
-        let !t247 = ((((t246 * (t240 + t240)) * t236) + ((negate t244) * t237)) + ((t246 * (t241 + t241)) * t238))
-        let !t248 = (if ((abs t245) - 1.0e-10) > 0 then (if (abs t247) > 0 then 1.0 else 0.0) else 0.0)
-        let !t249 = (if t248 > 0 then (t240 + (negate ((t245 / t247) * t236))) else t240)
-        let !t250 = (if t248 > 0 then (t241 + (negate ((t245 / t247) * t238))) else t241)
-        let !t251 = (sqrt ((t249 * t249) + (t250 * t250)))
-        let !t252 = (if t248 > 0 then (t243 + (negate ((t245 / t247) * t237))) else t243)
-        let !t253 = (exp t252)
-        let !t254 = (t251 - t253)
-        let !t255 = (recip (2.0 * t251))
-        let !t256 = ((((t255 * (t249 + t249)) * t236) + ((negate t253) * t237)) + ((t255 * (t250 + t250)) * t238))
-        let !t257 = (if ((abs t254) - 1.0e-10) > 0 then (if (abs t256) > 0 then 1.0 else 0.0) else 0.0)
-        let !t258 = (if t257 > 0 then (t249 + (negate ((t254 / t256) * t236))) else t249)
-        let !t259 = (if t257 > 0 then (t250 + (negate ((t254 / t256) * t238))) else t250)
-        let !t260 = (sqrt ((t258 * t258) + (t259 * t259)))
-        let !t261 = (if t257 > 0 then (t252 + (negate ((t254 / t256) * t237))) else t252)
-        let !t262 = (exp t261)
-        let !t263 = (t260 - t262)
-        let !t264 = (recip (2.0 * t260))
-        let !t265 = ((((t264 * (t258 + t258)) * t236) + ((negate t262) * t237)) + ((t264 * (t259 + t259)) * t238))
+      loopI 0.0 24.0 $ \i102 -> do
+        let !d102 = fromIntegral i102 :: Double
+        chkI walk (12 * i102) 0 11
+        t103 <- rdU walk ((12 * i102) + 6)
+        t104 <- rdU walk ((12 * i102) + 7)
+        t105 <- rdU walk ((12 * i102) + 8)
+        chkI radii ((24 * i1) + i102) 0 0
+        t106 <- rdU radii ((24 * i1) + i102)
+        let !s107 = (t106 / 4.0)
+        t108 <- rdU walk (12 * i102)
+        t109 <- rdU walk ((12 * i102) + 1)
+        t110 <- rdU walk ((12 * i102) + 2)
+        t111 <- rdU walk ((12 * i102) + 6)
+        t112 <- rdU walk ((12 * i102) + 7)
+        t113 <- rdU walk ((12 * i102) + 8)
+        t114 <- rdU walk ((12 * i102) + 3)
+        t115 <- rdU walk ((12 * i102) + 4)
+        t116 <- rdU walk ((12 * i102) + 5)
+        let !s117 = (t108 + (s107 * t114))
+        let !s118 = (t109 + (s107 * t115))
+        let !s119 = (t110 + (s107 * t116))
+        let !t120 = (sqrt ((s117 * s117) + (s119 * s119)))
+        let !t121 = (exp s118)
+        let !t122 = (t120 - t121)
+        let !t123 = (recip (2.0 * t120))
+        let !t124 = ((((t123 * (s117 + s117)) * t103) + ((negate t121) * t104)) + ((t123 * (s119 + s119)) * t105))
+        let !t125 = (if ((abs t122) - 1.0e-10) > 0 then (if (abs t124) > 0 then 1.0 else 0.0) else 0.0)
+        let !s126 = (if t125 > 0 then (s117 + (negate ((t122 / t124) * t103))) else s117)
+        let !s127 = (if t125 > 0 then (s118 + (negate ((t122 / t124) * t104))) else s118)
+        let !s128 = (if t125 > 0 then (s119 + (negate ((t122 / t124) * t105))) else s119)
+        wrU walk ((12 * i102) + 9) s126
+        wrU walk ((12 * i102) + 10) s127
+        wrU walk ((12 * i102) + 11) s128
+        pure ()
+      loopI 0.0 24.0 $ \i129 -> do
+        let !d129 = fromIntegral i129 :: Double
+        chkI walk (12 * i129) 6 11
+        t130 <- rdU walk ((12 * i129) + 6)
+        t131 <- rdU walk ((12 * i129) + 7)
+        t132 <- rdU walk ((12 * i129) + 8)
+        t133 <- rdU walk ((12 * i129) + 9)
+        t134 <- rdU walk ((12 * i129) + 10)
+        t135 <- rdU walk ((12 * i129) + 11)
+        let !t136 = (sqrt ((t133 * t133) + (t135 * t135)))
+        let !t137 = (exp t134)
+        let !t138 = (t136 - t137)
+        let !t139 = (recip (2.0 * t136))
+        let !t140 = ((((t139 * (t133 + t133)) * t130) + ((negate t137) * t131)) + ((t139 * (t135 + t135)) * t132))
+        let !t141 = (if ((abs t138) - 1.0e-10) > 0 then (if (abs t140) > 0 then 1.0 else 0.0) else 0.0)
+        let !s142 = (if t141 > 0 then (t133 + (negate ((t138 / t140) * t130))) else t133)
+        let !s143 = (if t141 > 0 then (t134 + (negate ((t138 / t140) * t131))) else t134)
+        let !s144 = (if t141 > 0 then (t135 + (negate ((t138 / t140) * t132))) else t135)
+        wrU walk ((12 * i129) + 9) s142
+        wrU walk ((12 * i129) + 10) s143
+        wrU walk ((12 * i129) + 11) s144
+        pure ()
+      loopI 0.0 24.0 $ \i145 -> do
+        let !d145 = fromIntegral i145 :: Double
+        chkI walk (12 * i145) 0 11
+        t146 <- rdU walk ((12 * i145) + 6)
+        t147 <- rdU walk ((12 * i145) + 7)
+        t148 <- rdU walk ((12 * i145) + 8)
+        t149 <- rdU walk ((12 * i145) + 9)
+        t150 <- rdU walk ((12 * i145) + 10)
+        t151 <- rdU walk ((12 * i145) + 11)
+        chkI radii ((24 * i1) + i145) 0 0
+        t152 <- rdU radii ((24 * i1) + i145)
+        let !s153 = (t152 / 4.0)
+        t154 <- rdU walk (12 * i145)
+        t155 <- rdU walk ((12 * i145) + 1)
+        t156 <- rdU walk ((12 * i145) + 2)
+        t157 <- rdU walk ((12 * i145) + 6)
+        t158 <- rdU walk ((12 * i145) + 7)
+        t159 <- rdU walk ((12 * i145) + 8)
+        t160 <- rdU walk ((12 * i145) + 3)
+        t161 <- rdU walk ((12 * i145) + 4)
+        t162 <- rdU walk ((12 * i145) + 5)
+        let !t163 = (if (abs s153) > 0 then 1.0 else 0.0)
+        let !t164 = (sqrt ((t149 * t149) + (t151 * t151)))
+        let !t165 = (exp t150)
+        let !t166 = (t164 - t165)
+        let !t167 = (recip (2.0 * t164))
+        let !t168 = ((((t167 * (t149 + t149)) * t146) + ((negate t165) * t147)) + ((t167 * (t151 + t151)) * t148))
+        let !t169 = (if ((abs t166) - 1.0e-10) > 0 then (if (abs t168) > 0 then 1.0 else 0.0) else 0.0)
+        let !t170 = (1.0 - t163)
+        let !s171 = ((t163 * (if t169 > 0 then (t149 + (negate ((t166 / t168) * t146))) else t149)) + (t170 * t154))
+        let !s172 = ((t163 * (if t169 > 0 then (t150 + (negate ((t166 / t168) * t147))) else t150)) + (t170 * t155))
+        let !s173 = ((t163 * (if t169 > 0 then (t151 + (negate ((t166 / t168) * t148))) else t151)) + (t170 * t156))
+        chkI verts ((291 * i1) + (12 * i145)) 6 8
+        wrU verts (((291 * i1) + (12 * i145)) + 6) (if (1.0 - (abs (((s171 - s171) + (s172 - s172)) + (s173 - s173)))) > 0 then s171 else t2)
+        wrU verts (((291 * i1) + (12 * i145)) + 7) (if (1.0 - (abs (((s171 - s171) + (s172 - s172)) + (s173 - s173)))) > 0 then s172 else t3)
+        wrU verts (((291 * i1) + (12 * i145)) + 8) (if (1.0 - (abs (((s171 - s171) + (s172 - s172)) + (s173 - s173)))) > 0 then s173 else t4)
+        wrU walk (12 * i145) s171
+        wrU walk ((12 * i145) + 1) s172
+        wrU walk ((12 * i145) + 2) s173
+        let !t174 = (sqrt (((t160 * t160) + (t161 * t161)) + (t162 * t162)))
+        let !t175 = (if (abs s153) > 0 then (recip s153) else 0.0)
+        let !t176 = (t175 * ((if t169 > 0 then (t149 + (negate ((t166 / t168) * t146))) else t149) + (negate t154)))
+        let !t177 = (t167 * (t149 + t149))
+        let !t178 = (negate t165)
+        let !t179 = (t167 * (t151 + t151))
+        let !t180 = (sqrt (((t177 * t177) + (t178 * t178)) + (t179 * t179)))
+        let !t181 = (if t180 > 0 then (recip (if (t180 - 1.0e-300) > 0 then t180 else 1.0e-300)) else 0.0)
+        let !t182 = (t181 * t177)
+        let !t183 = (t181 * t178)
+        let !t184 = (t175 * ((if t169 > 0 then (t150 + (negate ((t166 / t168) * t147))) else t150) + (negate t155)))
+        let !t185 = (t181 * t179)
+        let !t186 = (t175 * ((if t169 > 0 then (t151 + (negate ((t166 / t168) * t148))) else t151) + (negate t156)))
+        let !t187 = (((t182 * t176) + (t183 * t184)) + (t185 * t186))
+        let !t188 = (t176 + (negate (t187 * t182)))
+        let !t189 = (t184 + (negate (t187 * t183)))
+        let !t190 = (t186 + (negate (t187 * t185)))
+        let !t191 = (sqrt (((t188 * t188) + (t189 * t189)) + (t190 * t190)))
+        let !t192 = (if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0)
+        let !s193 = ((t163 * (t174 * (t192 * t188))) + (t170 * t160))
+        let !s194 = ((t163 * (t174 * (t192 * t189))) + (t170 * t161))
+        let !s195 = ((t163 * (t174 * (t192 * t190))) + (t170 * t162))
+        wrU walk ((12 * i145) + 3) s193
+        wrU walk ((12 * i145) + 4) s194
+        wrU walk ((12 * i145) + 5) s195
+        let !s196 = ((t163 * t182) + (t170 * t157))
+        let !s197 = ((t163 * t183) + (t170 * t158))
+        let !s198 = ((t163 * t185) + (t170 * t159))
+        wrU walk ((12 * i145) + 6) s196
+        wrU walk ((12 * i145) + 7) s197
+        wrU walk ((12 * i145) + 8) s198
+        pure ()
+      loopI 0.0 24.0 $ \i199 -> do
+        let !d199 = fromIntegral i199 :: Double
+        chkI walk (12 * i199) 0 11
+        t200 <- rdU walk ((12 * i199) + 6)
+        t201 <- rdU walk ((12 * i199) + 7)
+        t202 <- rdU walk ((12 * i199) + 8)
+        chkI radii ((24 * i1) + i199) 0 0
+        t203 <- rdU radii ((24 * i1) + i199)
+        let !s204 = (t203 / 4.0)
+        t205 <- rdU walk (12 * i199)
+        t206 <- rdU walk ((12 * i199) + 1)
+        t207 <- rdU walk ((12 * i199) + 2)
+        t208 <- rdU walk ((12 * i199) + 6)
+        t209 <- rdU walk ((12 * i199) + 7)
+        t210 <- rdU walk ((12 * i199) + 8)
+        t211 <- rdU walk ((12 * i199) + 3)
+        t212 <- rdU walk ((12 * i199) + 4)
+        t213 <- rdU walk ((12 * i199) + 5)
+        let !s214 = (t205 + (s204 * t211))
+        let !s215 = (t206 + (s204 * t212))
+        let !s216 = (t207 + (s204 * t213))
+        let !t217 = (sqrt ((s214 * s214) + (s216 * s216)))
+        let !t218 = (exp s215)
+        let !t219 = (t217 - t218)
+        let !t220 = (recip (2.0 * t217))
+        let !t221 = ((((t220 * (s214 + s214)) * t200) + ((negate t218) * t201)) + ((t220 * (s216 + s216)) * t202))
+        let !t222 = (if ((abs t219) - 1.0e-10) > 0 then (if (abs t221) > 0 then 1.0 else 0.0) else 0.0)
+        let !s223 = (if t222 > 0 then (s214 + (negate ((t219 / t221) * t200))) else s214)
+        let !s224 = (if t222 > 0 then (s215 + (negate ((t219 / t221) * t201))) else s215)
+        let !s225 = (if t222 > 0 then (s216 + (negate ((t219 / t221) * t202))) else s216)
+        wrU walk ((12 * i199) + 9) s223
+        wrU walk ((12 * i199) + 10) s224
+        wrU walk ((12 * i199) + 11) s225
+        pure ()
+      loopI 0.0 24.0 $ \i226 -> do
+        let !d226 = fromIntegral i226 :: Double
+        chkI walk (12 * i226) 6 11
+        t227 <- rdU walk ((12 * i226) + 6)
+        t228 <- rdU walk ((12 * i226) + 7)
+        t229 <- rdU walk ((12 * i226) + 8)
+        t230 <- rdU walk ((12 * i226) + 9)
+        t231 <- rdU walk ((12 * i226) + 10)
+        t232 <- rdU walk ((12 * i226) + 11)
+        let !t233 = (sqrt ((t230 * t230) + (t232 * t232)))
+        let !t234 = (exp t231)
+        let !t235 = (t233 - t234)
+        let !t236 = (recip (2.0 * t233))
+        let !t237 = ((((t236 * (t230 + t230)) * t227) + ((negate t234) * t228)) + ((t236 * (t232 + t232)) * t229))
+        let !t238 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t237) > 0 then 1.0 else 0.0) else 0.0)
+        let !s239 = (if t238 > 0 then (t230 + (negate ((t235 / t237) * t227))) else t230)
+        let !s240 = (if t238 > 0 then (t231 + (negate ((t235 / t237) * t228))) else t231)
+        let !s241 = (if t238 > 0 then (t232 + (negate ((t235 / t237) * t229))) else t232)
+        wrU walk ((12 * i226) + 9) s239
+        wrU walk ((12 * i226) + 10) s240
+        wrU walk ((12 * i226) + 11) s241
+        pure ()
+      loopI 0.0 24.0 $ \i242 -> do
+        let !d242 = fromIntegral i242 :: Double
+        chkI walk (12 * i242) 0 11
+        t243 <- rdU walk ((12 * i242) + 6)
+        t244 <- rdU walk ((12 * i242) + 7)
+        t245 <- rdU walk ((12 * i242) + 8)
+        t246 <- rdU walk ((12 * i242) + 9)
+        t247 <- rdU walk ((12 * i242) + 10)
+        t248 <- rdU walk ((12 * i242) + 11)
+        chkI radii ((24 * i1) + i242) 0 0
+        t249 <- rdU radii ((24 * i1) + i242)
+        let !s250 = (t249 / 4.0)
+        t251 <- rdU walk (12 * i242)
+        t252 <- rdU walk ((12 * i242) + 1)
+        t253 <- rdU walk ((12 * i242) + 2)
+        t254 <- rdU walk ((12 * i242) + 6)
+        t255 <- rdU walk ((12 * i242) + 7)
+        t256 <- rdU walk ((12 * i242) + 8)
+        t257 <- rdU walk ((12 * i242) + 3)
+        t258 <- rdU walk ((12 * i242) + 4)
+        t259 <- rdU walk ((12 * i242) + 5)
+        let !t260 = (if (abs s250) > 0 then 1.0 else 0.0)
+        let !t261 = (sqrt ((t246 * t246) + (t248 * t248)))
+        let !t262 = (exp t247)
+        let !t263 = (t261 - t262)
+        let !t264 = (recip (2.0 * t261))
+        let !t265 = ((((t264 * (t246 + t246)) * t243) + ((negate t262) * t244)) + ((t264 * (t248 + t248)) * t245))
         let !t266 = (if ((abs t263) - 1.0e-10) > 0 then (if (abs t265) > 0 then 1.0 else 0.0) else 0.0)
-        let !t267 = (1.0 - t239)
-        let !s268 = ((t239 * (if t266 > 0 then (t258 + (negate ((t263 / t265) * t236))) else t258)) + (t267 * t233))
-        let !s269 = ((t239 * (if t266 > 0 then (t261 + (negate ((t263 / t265) * t237))) else t261)) + (t267 * t234))
-        let !s270 = ((t239 * (if t266 > 0 then (t259 + (negate ((t263 / t265) * t238))) else t259)) + (t267 * t235))
-        chkI verts ((291 * i1) + (12 * i227)) 12 14
-        wrU verts (((291 * i1) + (12 * i227)) + 12) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
-        wrU verts (((291 * i1) + (12 * i227)) + 13) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
-        wrU verts (((291 * i1) + (12 * i227)) + 14) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
+        let !t267 = (1.0 - t260)
+        let !s268 = ((t260 * (if t266 > 0 then (t246 + (negate ((t263 / t265) * t243))) else t246)) + (t267 * t251))
+        let !s269 = ((t260 * (if t266 > 0 then (t247 + (negate ((t263 / t265) * t244))) else t247)) + (t267 * t252))
+        let !s270 = ((t260 * (if t266 > 0 then (t248 + (negate ((t263 / t265) * t245))) else t248)) + (t267 * t253))
+        chkI verts ((291 * i1) + (12 * i242)) 9 11
+        wrU verts (((291 * i1) + (12 * i242)) + 9) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
+        wrU verts (((291 * i1) + (12 * i242)) + 10) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
+        wrU verts (((291 * i1) + (12 * i242)) + 11) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
+        wrU walk (12 * i242) s268
+        wrU walk ((12 * i242) + 1) s269
+        wrU walk ((12 * i242) + 2) s270
+        let !t271 = (sqrt (((t257 * t257) + (t258 * t258)) + (t259 * t259)))
+        let !t272 = (if (abs s250) > 0 then (recip s250) else 0.0)
+        let !t273 = (t272 * ((if t266 > 0 then (t246 + (negate ((t263 / t265) * t243))) else t246) + (negate t251)))
+        let !t274 = (t264 * (t246 + t246))
+        let !t275 = (negate t262)
+        let !t276 = (t264 * (t248 + t248))
+        let !t277 = (sqrt (((t274 * t274) + (t275 * t275)) + (t276 * t276)))
+        let !t278 = (if t277 > 0 then (recip (if (t277 - 1.0e-300) > 0 then t277 else 1.0e-300)) else 0.0)
+        let !t279 = (t278 * t274)
+        let !t280 = (t278 * t275)
+        let !t281 = (t272 * ((if t266 > 0 then (t247 + (negate ((t263 / t265) * t244))) else t247) + (negate t252)))
+        let !t282 = (t278 * t276)
+        let !t283 = (t272 * ((if t266 > 0 then (t248 + (negate ((t263 / t265) * t245))) else t248) + (negate t253)))
+        let !t284 = (((t279 * t273) + (t280 * t281)) + (t282 * t283))
+        let !t285 = (t273 + (negate (t284 * t279)))
+        let !t286 = (t281 + (negate (t284 * t280)))
+        let !t287 = (t283 + (negate (t284 * t282)))
+        let !t288 = (sqrt (((t285 * t285) + (t286 * t286)) + (t287 * t287)))
+        let !t289 = (if t288 > 0 then (recip (if (t288 - 1.0e-300) > 0 then t288 else 1.0e-300)) else 0.0)
+        let !s290 = ((t260 * (t271 * (t289 * t285))) + (t267 * t257))
+        let !s291 = ((t260 * (t271 * (t289 * t286))) + (t267 * t258))
+        let !s292 = ((t260 * (t271 * (t289 * t287))) + (t267 * t259))
+        wrU walk ((12 * i242) + 3) s290
+        wrU walk ((12 * i242) + 4) s291
+        wrU walk ((12 * i242) + 5) s292
+        let !s293 = ((t260 * t279) + (t267 * t254))
+        let !s294 = ((t260 * t280) + (t267 * t255))
+        let !s295 = ((t260 * t282) + (t267 * t256))
+        wrU walk ((12 * i242) + 6) s293
+        wrU walk ((12 * i242) + 7) s294
+        wrU walk ((12 * i242) + 8) s295
+        pure ()
+      loopI 0.0 24.0 $ \i296 -> do
+        let !d296 = fromIntegral i296 :: Double
+        chkI walk (12 * i296) 0 11
+        t297 <- rdU walk ((12 * i296) + 6)
+        t298 <- rdU walk ((12 * i296) + 7)
+        t299 <- rdU walk ((12 * i296) + 8)
+        chkI radii ((24 * i1) + i296) 0 0
+        t300 <- rdU radii ((24 * i1) + i296)
+        let !s301 = (t300 / 4.0)
+        t302 <- rdU walk (12 * i296)
+        t303 <- rdU walk ((12 * i296) + 1)
+        t304 <- rdU walk ((12 * i296) + 2)
+        t305 <- rdU walk ((12 * i296) + 6)
+        t306 <- rdU walk ((12 * i296) + 7)
+        t307 <- rdU walk ((12 * i296) + 8)
+        t308 <- rdU walk ((12 * i296) + 3)
+        t309 <- rdU walk ((12 * i296) + 4)
+        t310 <- rdU walk ((12 * i296) + 5)
+        let !s311 = (t302 + (s301 * t308))
+        let !s312 = (t303 + (s301 * t309))
+        let !s313 = (t304 + (s301 * t310))
+        let !t314 = (sqrt ((s311 * s311) + (s313 * s313)))
+        let !t315 = (exp s312)
+        let !t316 = (t314 - t315)
+        let !t317 = (recip (2.0 * t314))
+        let !t318 = ((((t317 * (s311 + s311)) * t297) + ((negate t315) * t298)) + ((t317 * (s313 + s313)) * t299))
+        let !t319 = (if ((abs t316) - 1.0e-10) > 0 then (if (abs t318) > 0 then 1.0 else 0.0) else 0.0)
+        let !s320 = (if t319 > 0 then (s311 + (negate ((t316 / t318) * t297))) else s311)
+        let !s321 = (if t319 > 0 then (s312 + (negate ((t316 / t318) * t298))) else s312)
+        let !s322 = (if t319 > 0 then (s313 + (negate ((t316 / t318) * t299))) else s313)
+        wrU walk ((12 * i296) + 9) s320
+        wrU walk ((12 * i296) + 10) s321
+        wrU walk ((12 * i296) + 11) s322
+        pure ()
+      loopI 0.0 24.0 $ \i323 -> do
+        let !d323 = fromIntegral i323 :: Double
+        chkI walk (12 * i323) 6 11
+        t324 <- rdU walk ((12 * i323) + 6)
+        t325 <- rdU walk ((12 * i323) + 7)
+        t326 <- rdU walk ((12 * i323) + 8)
+        t327 <- rdU walk ((12 * i323) + 9)
+        t328 <- rdU walk ((12 * i323) + 10)
+        t329 <- rdU walk ((12 * i323) + 11)
+        let !t330 = (sqrt ((t327 * t327) + (t329 * t329)))
+        let !t331 = (exp t328)
+        let !t332 = (t330 - t331)
+        let !t333 = (recip (2.0 * t330))
+        let !t334 = ((((t333 * (t327 + t327)) * t324) + ((negate t331) * t325)) + ((t333 * (t329 + t329)) * t326))
+        let !t335 = (if ((abs t332) - 1.0e-10) > 0 then (if (abs t334) > 0 then 1.0 else 0.0) else 0.0)
+        let !s336 = (if t335 > 0 then (t327 + (negate ((t332 / t334) * t324))) else t327)
+        let !s337 = (if t335 > 0 then (t328 + (negate ((t332 / t334) * t325))) else t328)
+        let !s338 = (if t335 > 0 then (t329 + (negate ((t332 / t334) * t326))) else t329)
+        wrU walk ((12 * i323) + 9) s336
+        wrU walk ((12 * i323) + 10) s337
+        wrU walk ((12 * i323) + 11) s338
+        pure ()
+      loopI 0.0 24.0 $ \i339 -> do
+        let !d339 = fromIntegral i339 :: Double
+        chkI walk (12 * i339) 0 11
+        t340 <- rdU walk ((12 * i339) + 6)
+        t341 <- rdU walk ((12 * i339) + 7)
+        t342 <- rdU walk ((12 * i339) + 8)
+        t343 <- rdU walk ((12 * i339) + 9)
+        t344 <- rdU walk ((12 * i339) + 10)
+        t345 <- rdU walk ((12 * i339) + 11)
+        chkI radii ((24 * i1) + i339) 0 0
+        t346 <- rdU radii ((24 * i1) + i339)
+        let !s347 = (t346 / 4.0)
+        t348 <- rdU walk (12 * i339)
+        t349 <- rdU walk ((12 * i339) + 1)
+        t350 <- rdU walk ((12 * i339) + 2)
+        t351 <- rdU walk ((12 * i339) + 6)
+        t352 <- rdU walk ((12 * i339) + 7)
+        t353 <- rdU walk ((12 * i339) + 8)
+        t354 <- rdU walk ((12 * i339) + 3)
+        t355 <- rdU walk ((12 * i339) + 4)
+        t356 <- rdU walk ((12 * i339) + 5)
+        let !t357 = (if (abs s347) > 0 then 1.0 else 0.0)
+        let !t358 = (sqrt ((t343 * t343) + (t345 * t345)))
+        let !t359 = (exp t344)
+        let !t360 = (t358 - t359)
+        let !t361 = (recip (2.0 * t358))
+        let !t362 = ((((t361 * (t343 + t343)) * t340) + ((negate t359) * t341)) + ((t361 * (t345 + t345)) * t342))
+        let !t363 = (if ((abs t360) - 1.0e-10) > 0 then (if (abs t362) > 0 then 1.0 else 0.0) else 0.0)
+        let !t364 = (1.0 - t357)
+        let !s365 = ((t357 * (if t363 > 0 then (t343 + (negate ((t360 / t362) * t340))) else t343)) + (t364 * t348))
+        let !s366 = ((t357 * (if t363 > 0 then (t344 + (negate ((t360 / t362) * t341))) else t344)) + (t364 * t349))
+        let !s367 = ((t357 * (if t363 > 0 then (t345 + (negate ((t360 / t362) * t342))) else t345)) + (t364 * t350))
+        chkI verts ((291 * i1) + (12 * i339)) 12 14
+        wrU verts (((291 * i1) + (12 * i339)) + 12) (if (1.0 - (abs (((s365 - s365) + (s366 - s366)) + (s367 - s367)))) > 0 then s365 else t2)
+        wrU verts (((291 * i1) + (12 * i339)) + 13) (if (1.0 - (abs (((s365 - s365) + (s366 - s366)) + (s367 - s367)))) > 0 then s366 else t3)
+        wrU verts (((291 * i1) + (12 * i339)) + 14) (if (1.0 - (abs (((s365 - s365) + (s366 - s366)) + (s367 - s367)))) > 0 then s367 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i271 -> do
-        let !d271 = fromIntegral i271 :: Double
-        chkI radii ((24 * i1) + i271) 0 0
-        t272 <- rdU radii ((24 * i1) + i271)
-        t273 <- getR v18
-        t274 <- getR v19
-        setR v18 ((t273 * 0.9659258262890683) - (t274 * 0.25881904510252074))
-        setR v19 ((t274 * 0.9659258262890683) + (t273 * 0.25881904510252074))
-        let !s275 = ((t273 * t5) + (t274 * s14))
-        let !s276 = ((t273 * t6) + (t274 * s15))
-        let !s277 = ((t273 * t7) + (t274 * s16))
-        let !t278 = (if (abs t272) > 0 then 1.0 else 0.0)
-        let !t279 = (t2 + (t272 * s275))
-        let !t280 = (t4 + (t272 * s277))
-        let !t281 = (sqrt ((t279 * t279) + (t280 * t280)))
-        let !t282 = (t3 + (t272 * s276))
-        let !t283 = (exp t282)
-        let !t284 = (t281 - t283)
-        let !t285 = (recip (2.0 * t281))
-        let !t286 = ((((t285 * (t279 + t279)) * t8) + ((negate t283) * t9)) + ((t285 * (t280 + t280)) * t10))
-        let !t287 = (if ((abs t284) - 1.0e-10) > 0 then (if (abs t286) > 0 then 1.0 else 0.0) else 0.0)
-        let !t288 = (if t287 > 0 then (t279 + (negate ((t284 / t286) * t8))) else t279)
-        let !t289 = (if t287 > 0 then (t280 + (negate ((t284 / t286) * t10))) else t280)
-        let !t290 = (sqrt ((t288 * t288) + (t289 * t289)))
-        let !t291 = (if t287 > 0 then (t282 + (negate ((t284 / t286) * t9))) else t282)
-        let !t292 = (exp t291)
-        let !t293 = (t290 - t292)
-        let !t294 = (recip (2.0 * t290))
-        let !t295 = ((((t294 * (t288 + t288)) * t8) + ((negate t292) * t9)) + ((t294 * (t289 + t289)) * t10))
-        let !t296 = (if ((abs t293) - 1.0e-10) > 0 then (if (abs t295) > 0 then 1.0 else 0.0) else 0.0)
-        let !t297 = (if t296 > 0 then (t288 + (negate ((t293 / t295) * t8))) else t288)
-        let !t298 = (if t296 > 0 then (t289 + (negate ((t293 / t295) * t10))) else t289)
-        let !t299 = (sqrt ((t297 * t297) + (t298 * t298)))
-        let !t300 = (if t296 > 0 then (t291 + (negate ((t293 / t295) * t9))) else t291)
-        let !t301 = (exp t300)
-        let !t302 = (t299 - t301)
-        let !t303 = (recip (2.0 * t299))
-        let !t304 = ((((t303 * (t297 + t297)) * t8) + ((negate t301) * t9)) + ((t303 * (t298 + t298)) * t10))
-        let !t305 = (if ((abs t302) - 1.0e-10) > 0 then (if (abs t304) > 0 then 1.0 else 0.0) else 0.0)
-        let !t306 = (1.0 - t278)
-        let !t307 = ((t278 * (if t305 > 0 then (t297 + (negate ((t302 / t304) * t8))) else t297)) + (t306 * t2))
-        let !t308 = ((t278 * (if t305 > 0 then (t300 + (negate ((t302 / t304) * t9))) else t300)) + (t306 * t3))
-        let !t309 = ((t278 * (if t305 > 0 then (t298 + (negate ((t302 / t304) * t10))) else t298)) + (t306 * t4))
-        let !t310 = (1.0 - (abs (((t307 - t307) + (t308 - t308)) + (t309 - t309))))
-        let !s311 = (if t310 > 0 then t307 else t2)
-        let !s312 = (if t310 > 0 then t308 else t3)
-        let !s313 = (if t310 > 0 then t309 else t4)
-        chkI verts ((291 * i1) + (12 * i271)) 3 14
-        wrU verts (((291 * i1) + (12 * i271)) + 12) s311
-        wrU verts (((291 * i1) + (12 * i271)) + 13) s312
-        wrU verts (((291 * i1) + (12 * i271)) + 14) s313
-        wrU verts (((291 * i1) + (12 * i271)) + 3) (t2 + (0.25 * (s311 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i271)) + 4) (t3 + (0.25 * (s312 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i271)) + 5) (t4 + (0.25 * (s313 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i271)) + 6) (t2 + (0.5 * (s311 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i271)) + 7) (t3 + (0.5 * (s312 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i271)) + 8) (t4 + (0.5 * (s313 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i271)) + 9) (t2 + (0.75 * (s311 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i271)) + 10) (t3 + (0.75 * (s312 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i271)) + 11) (t4 + (0.75 * (s313 + (negate t4))))
+      loopI 0.0 24.0 $ \i368 -> do
+        let !d368 = fromIntegral i368 :: Double
+        t369 <- getR v18
+        t370 <- getR v19
+        setR v18 ((t369 * 0.9659258262890683) - (t370 * 0.25881904510252074))
+        setR v19 ((t370 * 0.9659258262890683) + (t369 * 0.25881904510252074))
+        let !s371 = ((t369 * t5) + (t370 * s14))
+        let !s372 = ((t369 * t6) + (t370 * s15))
+        let !s373 = ((t369 * t7) + (t370 * s16))
+        chkI walk (12 * i368) 3 5
+        wrU walk ((12 * i368) + 3) s371
+        wrU walk ((12 * i368) + 4) s372
+        wrU walk ((12 * i368) + 5) s373
+        pure ()
+      loopI 0.0 24.0 $ \i374 -> do
+        let !d374 = fromIntegral i374 :: Double
+        chkI radii ((24 * i1) + i374) 0 0
+        t375 <- rdU radii ((24 * i1) + i374)
+        chkI walk (12 * i374) 3 11
+        t376 <- rdU walk ((12 * i374) + 3)
+        t377 <- rdU walk ((12 * i374) + 4)
+        t378 <- rdU walk ((12 * i374) + 5)
+        let !s379 = (t2 + (t375 * t376))
+        let !s380 = (t3 + (t375 * t377))
+        let !s381 = (t4 + (t375 * t378))
+        let !t382 = (sqrt ((s379 * s379) + (s381 * s381)))
+        let !t383 = (exp s380)
+        let !t384 = (t382 - t383)
+        let !t385 = (recip (2.0 * t382))
+        let !t386 = ((((t385 * (s379 + s379)) * t8) + ((negate t383) * t9)) + ((t385 * (s381 + s381)) * t10))
+        let !t387 = (if ((abs t384) - 1.0e-10) > 0 then (if (abs t386) > 0 then 1.0 else 0.0) else 0.0)
+        let !s388 = (if t387 > 0 then (s379 + (negate ((t384 / t386) * t8))) else s379)
+        let !s389 = (if t387 > 0 then (s380 + (negate ((t384 / t386) * t9))) else s380)
+        let !s390 = (if t387 > 0 then (s381 + (negate ((t384 / t386) * t10))) else s381)
+        wrU walk ((12 * i374) + 9) s388
+        wrU walk ((12 * i374) + 10) s389
+        wrU walk ((12 * i374) + 11) s390
+        pure ()
+      loopI 0.0 24.0 $ \i391 -> do
+        let !d391 = fromIntegral i391 :: Double
+        chkI walk (12 * i391) 9 11
+        t392 <- rdU walk ((12 * i391) + 9)
+        t393 <- rdU walk ((12 * i391) + 10)
+        t394 <- rdU walk ((12 * i391) + 11)
+        let !t395 = (sqrt ((t392 * t392) + (t394 * t394)))
+        let !t396 = (exp t393)
+        let !t397 = (t395 - t396)
+        let !t398 = (recip (2.0 * t395))
+        let !t399 = ((((t398 * (t392 + t392)) * t8) + ((negate t396) * t9)) + ((t398 * (t394 + t394)) * t10))
+        let !t400 = (if ((abs t397) - 1.0e-10) > 0 then (if (abs t399) > 0 then 1.0 else 0.0) else 0.0)
+        let !s401 = (if t400 > 0 then (t392 + (negate ((t397 / t399) * t8))) else t392)
+        let !s402 = (if t400 > 0 then (t393 + (negate ((t397 / t399) * t9))) else t393)
+        let !s403 = (if t400 > 0 then (t394 + (negate ((t397 / t399) * t10))) else t394)
+        wrU walk ((12 * i391) + 9) s401
+        wrU walk ((12 * i391) + 10) s402
+        wrU walk ((12 * i391) + 11) s403
+        pure ()
+      loopI 0.0 24.0 $ \i404 -> do
+        let !d404 = fromIntegral i404 :: Double
+        chkI walk (12 * i404) 3 11
+        t405 <- rdU walk ((12 * i404) + 9)
+        t406 <- rdU walk ((12 * i404) + 10)
+        t407 <- rdU walk ((12 * i404) + 11)
+        chkI radii ((24 * i1) + i404) 0 0
+        t408 <- rdU radii ((24 * i1) + i404)
+        t409 <- rdU walk ((12 * i404) + 3)
+        t410 <- rdU walk ((12 * i404) + 4)
+        t411 <- rdU walk ((12 * i404) + 5)
+        let !t412 = (if (abs t408) > 0 then 1.0 else 0.0)
+        let !t413 = (sqrt ((t405 * t405) + (t407 * t407)))
+        let !t414 = (exp t406)
+        let !t415 = (t413 - t414)
+        let !t416 = (recip (2.0 * t413))
+        let !t417 = ((((t416 * (t405 + t405)) * t8) + ((negate t414) * t9)) + ((t416 * (t407 + t407)) * t10))
+        let !t418 = (if ((abs t415) - 1.0e-10) > 0 then (if (abs t417) > 0 then 1.0 else 0.0) else 0.0)
+        let !t419 = (1.0 - t412)
+        let !s420 = ((t412 * (if t418 > 0 then (t405 + (negate ((t415 / t417) * t8))) else t405)) + (t419 * t2))
+        let !s421 = ((t412 * (if t418 > 0 then (t406 + (negate ((t415 / t417) * t9))) else t406)) + (t419 * t3))
+        let !s422 = ((t412 * (if t418 > 0 then (t407 + (negate ((t415 / t417) * t10))) else t407)) + (t419 * t4))
+        let !t423 = (1.0 - (abs (((s420 - s420) + (s421 - s421)) + (s422 - s422))))
+        let !s424 = (if t423 > 0 then s420 else t2)
+        let !s425 = (if t423 > 0 then s421 else t3)
+        let !s426 = (if t423 > 0 then s422 else t4)
+        chkI verts ((291 * i1) + (12 * i404)) 3 14
+        wrU verts (((291 * i1) + (12 * i404)) + 12) s424
+        wrU verts (((291 * i1) + (12 * i404)) + 13) s425
+        wrU verts (((291 * i1) + (12 * i404)) + 14) s426
+        wrU verts (((291 * i1) + (12 * i404)) + 3) (t2 + (0.25 * (s424 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i404)) + 4) (t3 + (0.25 * (s425 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i404)) + 5) (t4 + (0.25 * (s426 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i404)) + 6) (t2 + (0.5 * (s424 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i404)) + 7) (t3 + (0.5 * (s425 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i404)) + 8) (t4 + (0.5 * (s426 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i404)) + 9) (t2 + (0.75 * (s424 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i404)) + 10) (t3 + (0.75 * (s425 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i404)) + 11) (t4 + (0.75 * (s426 + (negate t4))))
         pure ()
       pure ()
     pure ()
