@@ -19,7 +19,7 @@ import Manifold.Space
 import Manifold.Spaces (catalogue)
 import Manifold.Stage.Imp (stageProceduresFor)
 import Manifold.Stage.Print (Target (..))
-import Manifold.World (Layout, layout)
+import Manifold.World (Layout (..), WalkLoops (..), layout)
 
 -- | @projective-plane@ → @ProjectivePlane@.
 compiledModuleName :: Space -> String
@@ -111,7 +111,9 @@ compiledFiles =
   : ("Manifold/Compiled/Shared.hs", sharedModule shared)
   : [ ("Manifold/Compiled/" ++ compiledModuleName sp ++ ".hs", compiledModule shared sp l fs) | (sp, fs) <- zip catalogue perSpace ]
   where
-    l = layout 0
+    -- the compiled step's polygon walk waits on its Newton iterations'
+    -- chains unless each iteration is a loop of its own (see 'WalkLoops')
+    l = (layout 0) { walkLoops = LoopPerNewtonIteration }
     -- each space's step staged once, for the shared module and its own
     perSpace = map (`stepFunctions` l) catalogue
     shared = sharedFunctions perSpace

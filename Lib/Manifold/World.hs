@@ -14,6 +14,7 @@
 module Manifold.World
   ( WorldArrays (..)
   , Layout (..)
+  , WalkLoops (..)
   , layout
   , arraySizes
   , arrayNames
@@ -100,10 +101,20 @@ data WorldArrays a = WorldArrays
 data Layout = Layout
   { capacity :: Int
   , polygon :: PolygonParams
+  , walkLoops :: WalkLoops -- ^ how the polygon walk's loops are arranged on curved surfaces
   } deriving (Show, Eq)
 
+-- | How the polygon walk arranges its loops across the directions on a
+-- curved surface: the same arithmetic either way, but the two engines run
+-- best with different ones (see 'polygoniseBody'). On a flat surface the
+-- walk takes one loop a step either way.
+data WalkLoops
+  = LoopPerStep -- ^ one loop across the directions for each geodesic step (the page's engine)
+  | LoopPerNewtonIteration -- ^ one for each Newton iteration of a step (the compiled native step)
+  deriving (Show, Eq)
+
 layout :: Int -> Layout
-layout cap = Layout cap (PolygonParams 24 4)
+layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 
 -- | Per body.
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
@@ -462,54 +473,72 @@ polygoniseBody sp l w i = do
       -- Every direction takes its step before any takes the next: one
       -- direction's arithmetic is a chain of roots and divisions, each
       -- waiting on the last, while the directions are independent, so
-      -- short loops across them let the processor overlap the directions
-      -- instead of waiting on each chain in turn. On a curved surface each
-      -- Newton iteration of a step gets its loop across the directions (the
-      -- first also moves the point, the last ends the step); on a flat one
-      -- Newton has nothing to wait on and one loop a step is quicker. The
-      -- arithmetic is 'geodesicStepFrom''s, in the same order.
-      walk steps stepLength vertex = do
-        -- on a flat surface a single step is one loop, turning the
-        -- direction where it is walked
-        let fused = flat && steps == 1
+      -- loops across them let the processor overlap the directions instead
+      -- of waiting on each chain in turn. 'stepLoopsWalk' makes a step in one
+      -- loop (and a single step turns the direction where it is walked);
+      -- 'newtonLoopsWalk' gives each Newton iteration of a step its own
+      -- loop. The arithmetic is 'geodesicStepFrom''s, in the same order
+      -- either way. Compiled natively (LLVM's code waits on the chains),
+      -- Newton loops made the walk of the sphere with 1000 bodies twice as
+      -- fast; in Chromium (whose code is busy with more instructions) they
+      -- made the torus with 3000 bodies a quarter slower. On a flat surface
+      -- Newton has nothing to wait on, and step loops are quicker in both.
+      stepLoopsWalk steps stepLength vertex = do
+        let fused = steps == 1
         when (not fused) $ directions $ \d -> nextDirection >>= writeAt3 scratch (at d directionAt)
-        forM_ [1 .. steps] $ \k -> do
-          -- where the step starts, and the unit normal there
-          let startAt field centre d = if k == 1 then pure centre else readAt3 scratch (at d field)
-              start d = do
+        forM_ [1 .. steps] $ \k -> directions $ \d -> do
+          let startAt field centre = if k == 1 then pure centre else readAt3 scratch (at d field)
+          h <- stepLength d
+          q0 <- startAt pointAt p
+          nq <- startAt normalAt n
+          dir <- if fused then nextDirection else readAt3 scratch (at d directionAt)
+          projected <- projectAlongWithGradient f nq <$> share3 (q0 ^+^ h *^ dir)
+          let (q1, dir1, n1) = geodesicStepEnd h nq (q0, dir) projected
+          q <- share3 q1
+          vertex k d q
+          when (k < steps) $ do
+            writeAt3 scratch (at d pointAt) q
+            writeAt3 scratch (at d directionAt) =<< share3 dir1
+            writeAt3 scratch (at d normalAt) =<< share3 n1
+      -- A loop across the directions for each Newton iteration (the first
+      -- also moves the point, the last ends the step), for each step. (Four
+      -- steps of these loops, and one, unrolled in one function are more
+      -- than Chromium's V8 optimises: the walk ran 10 to 20 times slower.
+      -- Natively, the steps counted in a loop instead made the walk slower
+      -- than one loop a step.)
+      newtonLoopsWalk steps stepLength vertex = do
+        directions $ \d -> nextDirection >>= writeAt3 scratch (at d directionAt)
+        forM_ [1 .. steps] $ \k -> forM_ [1 .. stepProjectionIterations] $ \j -> directions $ \d -> do
+          let startAt field centre = if k == 1 then pure centre else readAt3 scratch (at d field)
+              start = do
                 h <- stepLength d
-                q0 <- startAt pointAt p d
-                nq <- startAt normalAt n d
-                dir <- if fused then nextDirection else readAt3 scratch (at d directionAt)
-                pure (h, nq, (q0, dir))
-              moved (h, _, (q0, dir)) = share3 (q0 ^+^ h *^ dir)
-              end d (h, nq, pd) projected = do
-                let (q1, dir1, n1) = geodesicStepEnd h nq pd projected
-                q <- share3 q1
-                vertex k d q
-                when (k < steps) $ do
-                  writeAt3 scratch (at d pointAt) q
-                  writeAt3 scratch (at d directionAt) =<< share3 dir1
-                  writeAt3 scratch (at d normalAt) =<< share3 n1
-          if flat
-            then directions $ \d -> do
-              s0@(_, nq, _) <- start d
-              end d s0 . projectAlongWithGradient f nq =<< moved s0
-            else forM_ [1 .. stepProjectionIterations] $ \j -> directions $ \d -> do
-              nq <- startAt normalAt n d
-              q <- if j == 1 then moved =<< start d else readAt3 scratch (at d iterateAt)
-              let projected = newtonAlong f nq q
-              if j < stepProjectionIterations
-                then writeAt3 scratch (at d iterateAt) =<< share3 (fst projected)
-                else start d >>= \s0 -> end d s0 projected
+                pd <- (,) <$> startAt pointAt p <*> readAt3 scratch (at d directionAt)
+                pure (h, pd)
+          nq <- startAt normalAt n
+          q <- if j == 1 then (\(h, (q0, dir)) -> share3 (q0 ^+^ h *^ dir)) =<< start
+               else readAt3 scratch (at d iterateAt)
+          let projected = newtonAlong f nq q
+          if j < stepProjectionIterations then writeAt3 scratch (at d iterateAt) =<< share3 (fst projected) else do
+            (h, pd) <- start
+            let (q1, dir1, n1) = geodesicStepEnd h nq pd projected
+            q' <- share3 q1
+            vertex k d q'
+            when (k < steps) $ do
+              writeAt3 scratch (at d pointAt) q'
+              writeAt3 scratch (at d directionAt) =<< share3 dir1
+              writeAt3 scratch (at d normalAt) =<< share3 n1
+      -- a single step's end is the outline vertex; the inner vertices go on
+      -- the chord from the centre
+      outlineVertex' d q = do
+        o <- share3 (finite q)
+        write3 (wVerts w) (vertexIx d ns) o
+        forM_ [1 .. ns - 1] $ \k ->
+          write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o ^-^ p))
       -- a walk that fails (a singular point) leaves the vertex at the
       -- centre rather than poison the polygon
       finite q = select (finiteness (toList3 q)) <$> q <*> p
+  let walk = if flat || walkLoops l == LoopPerStep then stepLoopsWalk else newtonLoopsWalk
   ifPositive fine
     (walk ns (\d -> share . (/ fromIntegral ns) =<< radius d)
           (\k d q -> write3 (wVerts w) (vertexIx d k) (finite q)))
-    (walk 1 radius $ \_ d q -> do
-       o <- share3 (finite q)
-       write3 (wVerts w) (vertexIx d ns) o
-       forM_ [1 .. ns - 1] $ \k ->
-         write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o ^-^ p)))
+    (walk 1 radius (\_ d q -> outlineVertex' d q))

@@ -2055,427 +2055,409 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         t105 <- rdU walk (12 * i99)
         t106 <- rdU walk ((12 * i99) + 1)
         t107 <- rdU walk ((12 * i99) + 2)
-        t108 <- rdU walk ((12 * i99) + 6)
-        t109 <- rdU walk ((12 * i99) + 7)
-        t110 <- rdU walk ((12 * i99) + 8)
-        t111 <- rdU walk ((12 * i99) + 3)
-        t112 <- rdU walk ((12 * i99) + 4)
-        t113 <- rdU walk ((12 * i99) + 5)
-        let !s114 = (t105 + (s104 * t111))
-        let !s115 = (t106 + (s104 * t112))
-        let !s116 = (t107 + (s104 * t113))
-        let !t117 = (sqrt (((s114 * s114) + (s115 * s115)) + (s116 * s116)))
-        let !t118 = (t117 - 1.0)
-        let !t119 = (recip (2.0 * t117))
-        let !t120 = ((((t119 * (s114 + s114)) * t100) + ((t119 * (s115 + s115)) * t101)) + ((t119 * (s116 + s116)) * t102))
-        let !t121 = (if ((abs t118) - 1.0e-10) > 0 then (if (abs t120) > 0 then 1.0 else 0.0) else 0.0)
-        let !s122 = (if t121 > 0 then (s114 + (negate ((t118 / t120) * t100))) else s114)
-        let !s123 = (if t121 > 0 then (s115 + (negate ((t118 / t120) * t101))) else s115)
-        let !s124 = (if t121 > 0 then (s116 + (negate ((t118 / t120) * t102))) else s116)
-        wrU walk ((12 * i99) + 9) s122
-        wrU walk ((12 * i99) + 10) s123
-        wrU walk ((12 * i99) + 11) s124
+        t108 <- rdU walk ((12 * i99) + 3)
+        t109 <- rdU walk ((12 * i99) + 4)
+        t110 <- rdU walk ((12 * i99) + 5)
+        let !s111 = (t105 + (s104 * t108))
+        let !s112 = (t106 + (s104 * t109))
+        let !s113 = (t107 + (s104 * t110))
+        let !t114 = (sqrt (((s111 * s111) + (s112 * s112)) + (s113 * s113)))
+        let !t115 = (t114 - 1.0)
+        let !t116 = (recip (2.0 * t114))
+        let !t117 = ((((t116 * (s111 + s111)) * t100) + ((t116 * (s112 + s112)) * t101)) + ((t116 * (s113 + s113)) * t102))
+        let !t118 = (if ((abs t115) - 1.0e-10) > 0 then (if (abs t117) > 0 then 1.0 else 0.0) else 0.0)
+        let !s119 = (if t118 > 0 then (s111 + (negate ((t115 / t117) * t100))) else s111)
+        let !s120 = (if t118 > 0 then (s112 + (negate ((t115 / t117) * t101))) else s112)
+        let !s121 = (if t118 > 0 then (s113 + (negate ((t115 / t117) * t102))) else s113)
+        wrU walk ((12 * i99) + 9) s119
+        wrU walk ((12 * i99) + 10) s120
+        wrU walk ((12 * i99) + 11) s121
         pure ()
-      loopI 0.0 24.0 $ \i125 -> do
-        let !d125 = fromIntegral i125 :: Double
-        chkI walk (12 * i125) 6 11
-        t126 <- rdU walk ((12 * i125) + 6)
-        t127 <- rdU walk ((12 * i125) + 7)
-        t128 <- rdU walk ((12 * i125) + 8)
-        t129 <- rdU walk ((12 * i125) + 9)
-        t130 <- rdU walk ((12 * i125) + 10)
-        t131 <- rdU walk ((12 * i125) + 11)
-        let !t132 = (sqrt (((t129 * t129) + (t130 * t130)) + (t131 * t131)))
-        let !t133 = (t132 - 1.0)
-        let !t134 = (recip (2.0 * t132))
-        let !t135 = ((((t134 * (t129 + t129)) * t126) + ((t134 * (t130 + t130)) * t127)) + ((t134 * (t131 + t131)) * t128))
-        let !t136 = (if ((abs t133) - 1.0e-10) > 0 then (if (abs t135) > 0 then 1.0 else 0.0) else 0.0)
-        let !s137 = (if t136 > 0 then (t129 + (negate ((t133 / t135) * t126))) else t129)
-        let !s138 = (if t136 > 0 then (t130 + (negate ((t133 / t135) * t127))) else t130)
-        let !s139 = (if t136 > 0 then (t131 + (negate ((t133 / t135) * t128))) else t131)
-        wrU walk ((12 * i125) + 9) s137
-        wrU walk ((12 * i125) + 10) s138
-        wrU walk ((12 * i125) + 11) s139
+      loopI 0.0 24.0 $ \i122 -> do
+        let !d122 = fromIntegral i122 :: Double
+        chkI walk (12 * i122) 6 11
+        t123 <- rdU walk ((12 * i122) + 6)
+        t124 <- rdU walk ((12 * i122) + 7)
+        t125 <- rdU walk ((12 * i122) + 8)
+        t126 <- rdU walk ((12 * i122) + 9)
+        t127 <- rdU walk ((12 * i122) + 10)
+        t128 <- rdU walk ((12 * i122) + 11)
+        let !t129 = (sqrt (((t126 * t126) + (t127 * t127)) + (t128 * t128)))
+        let !t130 = (t129 - 1.0)
+        let !t131 = (recip (2.0 * t129))
+        let !t132 = ((((t131 * (t126 + t126)) * t123) + ((t131 * (t127 + t127)) * t124)) + ((t131 * (t128 + t128)) * t125))
+        let !t133 = (if ((abs t130) - 1.0e-10) > 0 then (if (abs t132) > 0 then 1.0 else 0.0) else 0.0)
+        let !s134 = (if t133 > 0 then (t126 + (negate ((t130 / t132) * t123))) else t126)
+        let !s135 = (if t133 > 0 then (t127 + (negate ((t130 / t132) * t124))) else t127)
+        let !s136 = (if t133 > 0 then (t128 + (negate ((t130 / t132) * t125))) else t128)
+        wrU walk ((12 * i122) + 9) s134
+        wrU walk ((12 * i122) + 10) s135
+        wrU walk ((12 * i122) + 11) s136
         pure ()
-      loopI 0.0 24.0 $ \i140 -> do
-        let !d140 = fromIntegral i140 :: Double
-        chkI walk (12 * i140) 0 11
-        t141 <- rdU walk ((12 * i140) + 6)
-        t142 <- rdU walk ((12 * i140) + 7)
-        t143 <- rdU walk ((12 * i140) + 8)
-        t144 <- rdU walk ((12 * i140) + 9)
-        t145 <- rdU walk ((12 * i140) + 10)
-        t146 <- rdU walk ((12 * i140) + 11)
-        chkI radii ((24 * i1) + i140) 0 0
-        t147 <- rdU radii ((24 * i1) + i140)
-        let !s148 = (t147 / 4.0)
-        t149 <- rdU walk (12 * i140)
-        t150 <- rdU walk ((12 * i140) + 1)
-        t151 <- rdU walk ((12 * i140) + 2)
-        t152 <- rdU walk ((12 * i140) + 6)
-        t153 <- rdU walk ((12 * i140) + 7)
-        t154 <- rdU walk ((12 * i140) + 8)
-        t155 <- rdU walk ((12 * i140) + 3)
-        t156 <- rdU walk ((12 * i140) + 4)
-        t157 <- rdU walk ((12 * i140) + 5)
-        let !t158 = (if (abs s148) > 0 then 1.0 else 0.0)
-        let !t159 = (sqrt (((t144 * t144) + (t145 * t145)) + (t146 * t146)))
-        let !t160 = (t159 - 1.0)
-        let !t161 = (recip (2.0 * t159))
-        let !t162 = ((((t161 * (t144 + t144)) * t141) + ((t161 * (t145 + t145)) * t142)) + ((t161 * (t146 + t146)) * t143))
-        let !t163 = (if ((abs t160) - 1.0e-10) > 0 then (if (abs t162) > 0 then 1.0 else 0.0) else 0.0)
-        let !t164 = (1.0 - t158)
-        let !s165 = ((t158 * (if t163 > 0 then (t144 + (negate ((t160 / t162) * t141))) else t144)) + (t164 * t149))
-        let !s166 = ((t158 * (if t163 > 0 then (t145 + (negate ((t160 / t162) * t142))) else t145)) + (t164 * t150))
-        let !s167 = ((t158 * (if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146)) + (t164 * t151))
-        chkI verts ((291 * i1) + (12 * i140)) 6 8
-        wrU verts (((291 * i1) + (12 * i140)) + 6) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s165 else t2)
-        wrU verts (((291 * i1) + (12 * i140)) + 7) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s166 else t3)
-        wrU verts (((291 * i1) + (12 * i140)) + 8) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s167 else t4)
-        wrU walk (12 * i140) s165
-        wrU walk ((12 * i140) + 1) s166
-        wrU walk ((12 * i140) + 2) s167
-        let !t168 = (sqrt (((t155 * t155) + (t156 * t156)) + (t157 * t157)))
-        let !t169 = (if (abs s148) > 0 then (recip s148) else 0.0)
-        let !t170 = (t169 * ((if t163 > 0 then (t144 + (negate ((t160 / t162) * t141))) else t144) + (negate t149)))
-        let !t171 = (t161 * (t144 + t144))
-        let !t172 = (t161 * (t145 + t145))
-        let !t173 = (t161 * (t146 + t146))
-        let !t174 = (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173)))
-        let !t175 = (if t174 > 0 then (recip (if (t174 - 1.0e-300) > 0 then t174 else 1.0e-300)) else 0.0)
-        let !t176 = (t175 * t171)
-        let !t177 = (t175 * t172)
-        let !t178 = (t169 * ((if t163 > 0 then (t145 + (negate ((t160 / t162) * t142))) else t145) + (negate t150)))
-        let !t179 = (t175 * t173)
-        let !t180 = (t169 * ((if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146) + (negate t151)))
-        let !t181 = (((t176 * t170) + (t177 * t178)) + (t179 * t180))
-        let !t182 = (t170 + (negate (t181 * t176)))
-        let !t183 = (t178 + (negate (t181 * t177)))
-        let !t184 = (t180 + (negate (t181 * t179)))
-        let !t185 = (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184)))
-        let !t186 = (if t185 > 0 then (recip (if (t185 - 1.0e-300) > 0 then t185 else 1.0e-300)) else 0.0)
-        let !s187 = ((t158 * (t168 * (t186 * t182))) + (t164 * t155))
-        let !s188 = ((t158 * (t168 * (t186 * t183))) + (t164 * t156))
-        let !s189 = ((t158 * (t168 * (t186 * t184))) + (t164 * t157))
-        wrU walk ((12 * i140) + 3) s187
-        wrU walk ((12 * i140) + 4) s188
-        wrU walk ((12 * i140) + 5) s189
-        let !s190 = ((t158 * t176) + (t164 * t152))
-        let !s191 = ((t158 * t177) + (t164 * t153))
-        let !s192 = ((t158 * t179) + (t164 * t154))
-        wrU walk ((12 * i140) + 6) s190
-        wrU walk ((12 * i140) + 7) s191
-        wrU walk ((12 * i140) + 8) s192
+      loopI 0.0 24.0 $ \i137 -> do
+        let !d137 = fromIntegral i137 :: Double
+        chkI walk (12 * i137) 0 11
+        t138 <- rdU walk ((12 * i137) + 6)
+        t139 <- rdU walk ((12 * i137) + 7)
+        t140 <- rdU walk ((12 * i137) + 8)
+        t141 <- rdU walk ((12 * i137) + 9)
+        t142 <- rdU walk ((12 * i137) + 10)
+        t143 <- rdU walk ((12 * i137) + 11)
+        chkI radii ((24 * i1) + i137) 0 0
+        t144 <- rdU radii ((24 * i1) + i137)
+        let !s145 = (t144 / 4.0)
+        t146 <- rdU walk (12 * i137)
+        t147 <- rdU walk ((12 * i137) + 1)
+        t148 <- rdU walk ((12 * i137) + 2)
+        t149 <- rdU walk ((12 * i137) + 3)
+        t150 <- rdU walk ((12 * i137) + 4)
+        t151 <- rdU walk ((12 * i137) + 5)
+        let !t152 = (if (abs s145) > 0 then 1.0 else 0.0)
+        let !t153 = (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143)))
+        let !t154 = (t153 - 1.0)
+        let !t155 = (recip (2.0 * t153))
+        let !t156 = ((((t155 * (t141 + t141)) * t138) + ((t155 * (t142 + t142)) * t139)) + ((t155 * (t143 + t143)) * t140))
+        let !t157 = (if ((abs t154) - 1.0e-10) > 0 then (if (abs t156) > 0 then 1.0 else 0.0) else 0.0)
+        let !t158 = (1.0 - t152)
+        let !s159 = ((t152 * (if t157 > 0 then (t141 + (negate ((t154 / t156) * t138))) else t141)) + (t158 * t146))
+        let !s160 = ((t152 * (if t157 > 0 then (t142 + (negate ((t154 / t156) * t139))) else t142)) + (t158 * t147))
+        let !s161 = ((t152 * (if t157 > 0 then (t143 + (negate ((t154 / t156) * t140))) else t143)) + (t158 * t148))
+        chkI verts ((291 * i1) + (12 * i137)) 6 8
+        wrU verts (((291 * i1) + (12 * i137)) + 6) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s159 else t2)
+        wrU verts (((291 * i1) + (12 * i137)) + 7) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s160 else t3)
+        wrU verts (((291 * i1) + (12 * i137)) + 8) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s161 else t4)
+        wrU walk (12 * i137) s159
+        wrU walk ((12 * i137) + 1) s160
+        wrU walk ((12 * i137) + 2) s161
+        let !t162 = (sqrt (((t149 * t149) + (t150 * t150)) + (t151 * t151)))
+        let !t163 = (if (abs s145) > 0 then (recip s145) else 0.0)
+        let !t164 = (t163 * ((if t157 > 0 then (t141 + (negate ((t154 / t156) * t138))) else t141) + (negate t146)))
+        let !t165 = (t155 * (t141 + t141))
+        let !t166 = (t155 * (t142 + t142))
+        let !t167 = (t155 * (t143 + t143))
+        let !t168 = (sqrt (((t165 * t165) + (t166 * t166)) + (t167 * t167)))
+        let !t169 = (if t168 > 0 then (recip (if (t168 - 1.0e-300) > 0 then t168 else 1.0e-300)) else 0.0)
+        let !t170 = (t169 * t165)
+        let !t171 = (t169 * t166)
+        let !t172 = (t163 * ((if t157 > 0 then (t142 + (negate ((t154 / t156) * t139))) else t142) + (negate t147)))
+        let !t173 = (t169 * t167)
+        let !t174 = (t163 * ((if t157 > 0 then (t143 + (negate ((t154 / t156) * t140))) else t143) + (negate t148)))
+        let !t175 = (((t170 * t164) + (t171 * t172)) + (t173 * t174))
+        let !t176 = (t164 + (negate (t175 * t170)))
+        let !t177 = (t172 + (negate (t175 * t171)))
+        let !t178 = (t174 + (negate (t175 * t173)))
+        let !t179 = (sqrt (((t176 * t176) + (t177 * t177)) + (t178 * t178)))
+        let !t180 = (if t179 > 0 then (recip (if (t179 - 1.0e-300) > 0 then t179 else 1.0e-300)) else 0.0)
+        let !s181 = ((t152 * (t162 * (t180 * t176))) + (t158 * t149))
+        let !s182 = ((t152 * (t162 * (t180 * t177))) + (t158 * t150))
+        let !s183 = ((t152 * (t162 * (t180 * t178))) + (t158 * t151))
+        wrU walk ((12 * i137) + 3) s181
+        wrU walk ((12 * i137) + 4) s182
+        wrU walk ((12 * i137) + 5) s183
+        let !s184 = ((t152 * t170) + (t158 * t138))
+        let !s185 = ((t152 * t171) + (t158 * t139))
+        let !s186 = ((t152 * t173) + (t158 * t140))
+        wrU walk ((12 * i137) + 6) s184
+        wrU walk ((12 * i137) + 7) s185
+        wrU walk ((12 * i137) + 8) s186
         pure ()
-      loopI 0.0 24.0 $ \i193 -> do
-        let !d193 = fromIntegral i193 :: Double
-        chkI walk (12 * i193) 0 11
-        t194 <- rdU walk ((12 * i193) + 6)
-        t195 <- rdU walk ((12 * i193) + 7)
-        t196 <- rdU walk ((12 * i193) + 8)
-        chkI radii ((24 * i1) + i193) 0 0
-        t197 <- rdU radii ((24 * i1) + i193)
-        let !s198 = (t197 / 4.0)
-        t199 <- rdU walk (12 * i193)
-        t200 <- rdU walk ((12 * i193) + 1)
-        t201 <- rdU walk ((12 * i193) + 2)
-        t202 <- rdU walk ((12 * i193) + 6)
-        t203 <- rdU walk ((12 * i193) + 7)
-        t204 <- rdU walk ((12 * i193) + 8)
-        t205 <- rdU walk ((12 * i193) + 3)
-        t206 <- rdU walk ((12 * i193) + 4)
-        t207 <- rdU walk ((12 * i193) + 5)
-        let !s208 = (t199 + (s198 * t205))
-        let !s209 = (t200 + (s198 * t206))
-        let !s210 = (t201 + (s198 * t207))
-        let !t211 = (sqrt (((s208 * s208) + (s209 * s209)) + (s210 * s210)))
-        let !t212 = (t211 - 1.0)
-        let !t213 = (recip (2.0 * t211))
-        let !t214 = ((((t213 * (s208 + s208)) * t194) + ((t213 * (s209 + s209)) * t195)) + ((t213 * (s210 + s210)) * t196))
-        let !t215 = (if ((abs t212) - 1.0e-10) > 0 then (if (abs t214) > 0 then 1.0 else 0.0) else 0.0)
-        let !s216 = (if t215 > 0 then (s208 + (negate ((t212 / t214) * t194))) else s208)
-        let !s217 = (if t215 > 0 then (s209 + (negate ((t212 / t214) * t195))) else s209)
-        let !s218 = (if t215 > 0 then (s210 + (negate ((t212 / t214) * t196))) else s210)
-        wrU walk ((12 * i193) + 9) s216
-        wrU walk ((12 * i193) + 10) s217
-        wrU walk ((12 * i193) + 11) s218
+      loopI 0.0 24.0 $ \i187 -> do
+        let !d187 = fromIntegral i187 :: Double
+        chkI walk (12 * i187) 0 11
+        t188 <- rdU walk ((12 * i187) + 6)
+        t189 <- rdU walk ((12 * i187) + 7)
+        t190 <- rdU walk ((12 * i187) + 8)
+        chkI radii ((24 * i1) + i187) 0 0
+        t191 <- rdU radii ((24 * i1) + i187)
+        let !s192 = (t191 / 4.0)
+        t193 <- rdU walk (12 * i187)
+        t194 <- rdU walk ((12 * i187) + 1)
+        t195 <- rdU walk ((12 * i187) + 2)
+        t196 <- rdU walk ((12 * i187) + 3)
+        t197 <- rdU walk ((12 * i187) + 4)
+        t198 <- rdU walk ((12 * i187) + 5)
+        let !s199 = (t193 + (s192 * t196))
+        let !s200 = (t194 + (s192 * t197))
+        let !s201 = (t195 + (s192 * t198))
+        let !t202 = (sqrt (((s199 * s199) + (s200 * s200)) + (s201 * s201)))
+        let !t203 = (t202 - 1.0)
+        let !t204 = (recip (2.0 * t202))
+        let !t205 = ((((t204 * (s199 + s199)) * t188) + ((t204 * (s200 + s200)) * t189)) + ((t204 * (s201 + s201)) * t190))
+        let !t206 = (if ((abs t203) - 1.0e-10) > 0 then (if (abs t205) > 0 then 1.0 else 0.0) else 0.0)
+        let !s207 = (if t206 > 0 then (s199 + (negate ((t203 / t205) * t188))) else s199)
+        let !s208 = (if t206 > 0 then (s200 + (negate ((t203 / t205) * t189))) else s200)
+        let !s209 = (if t206 > 0 then (s201 + (negate ((t203 / t205) * t190))) else s201)
+        wrU walk ((12 * i187) + 9) s207
+        wrU walk ((12 * i187) + 10) s208
+        wrU walk ((12 * i187) + 11) s209
         pure ()
-      loopI 0.0 24.0 $ \i219 -> do
-        let !d219 = fromIntegral i219 :: Double
-        chkI walk (12 * i219) 6 11
-        t220 <- rdU walk ((12 * i219) + 6)
-        t221 <- rdU walk ((12 * i219) + 7)
-        t222 <- rdU walk ((12 * i219) + 8)
-        t223 <- rdU walk ((12 * i219) + 9)
-        t224 <- rdU walk ((12 * i219) + 10)
-        t225 <- rdU walk ((12 * i219) + 11)
-        let !t226 = (sqrt (((t223 * t223) + (t224 * t224)) + (t225 * t225)))
-        let !t227 = (t226 - 1.0)
-        let !t228 = (recip (2.0 * t226))
-        let !t229 = ((((t228 * (t223 + t223)) * t220) + ((t228 * (t224 + t224)) * t221)) + ((t228 * (t225 + t225)) * t222))
-        let !t230 = (if ((abs t227) - 1.0e-10) > 0 then (if (abs t229) > 0 then 1.0 else 0.0) else 0.0)
-        let !s231 = (if t230 > 0 then (t223 + (negate ((t227 / t229) * t220))) else t223)
-        let !s232 = (if t230 > 0 then (t224 + (negate ((t227 / t229) * t221))) else t224)
-        let !s233 = (if t230 > 0 then (t225 + (negate ((t227 / t229) * t222))) else t225)
-        wrU walk ((12 * i219) + 9) s231
-        wrU walk ((12 * i219) + 10) s232
-        wrU walk ((12 * i219) + 11) s233
+      loopI 0.0 24.0 $ \i210 -> do
+        let !d210 = fromIntegral i210 :: Double
+        chkI walk (12 * i210) 6 11
+        t211 <- rdU walk ((12 * i210) + 6)
+        t212 <- rdU walk ((12 * i210) + 7)
+        t213 <- rdU walk ((12 * i210) + 8)
+        t214 <- rdU walk ((12 * i210) + 9)
+        t215 <- rdU walk ((12 * i210) + 10)
+        t216 <- rdU walk ((12 * i210) + 11)
+        let !t217 = (sqrt (((t214 * t214) + (t215 * t215)) + (t216 * t216)))
+        let !t218 = (t217 - 1.0)
+        let !t219 = (recip (2.0 * t217))
+        let !t220 = ((((t219 * (t214 + t214)) * t211) + ((t219 * (t215 + t215)) * t212)) + ((t219 * (t216 + t216)) * t213))
+        let !t221 = (if ((abs t218) - 1.0e-10) > 0 then (if (abs t220) > 0 then 1.0 else 0.0) else 0.0)
+        let !s222 = (if t221 > 0 then (t214 + (negate ((t218 / t220) * t211))) else t214)
+        let !s223 = (if t221 > 0 then (t215 + (negate ((t218 / t220) * t212))) else t215)
+        let !s224 = (if t221 > 0 then (t216 + (negate ((t218 / t220) * t213))) else t216)
+        wrU walk ((12 * i210) + 9) s222
+        wrU walk ((12 * i210) + 10) s223
+        wrU walk ((12 * i210) + 11) s224
         pure ()
-      loopI 0.0 24.0 $ \i234 -> do
-        let !d234 = fromIntegral i234 :: Double
-        chkI walk (12 * i234) 0 11
-        t235 <- rdU walk ((12 * i234) + 6)
-        t236 <- rdU walk ((12 * i234) + 7)
-        t237 <- rdU walk ((12 * i234) + 8)
-        t238 <- rdU walk ((12 * i234) + 9)
-        t239 <- rdU walk ((12 * i234) + 10)
-        t240 <- rdU walk ((12 * i234) + 11)
-        chkI radii ((24 * i1) + i234) 0 0
-        t241 <- rdU radii ((24 * i1) + i234)
-        let !s242 = (t241 / 4.0)
-        t243 <- rdU walk (12 * i234)
-        t244 <- rdU walk ((12 * i234) + 1)
-        t245 <- rdU walk ((12 * i234) + 2)
-        t246 <- rdU walk ((12 * i234) + 6)
-        t247 <- rdU walk ((12 * i234) + 7)
-        t248 <- rdU walk ((12 * i234) + 8)
-        t249 <- rdU walk ((12 * i234) + 3)
-        t250 <- rdU walk ((12 * i234) + 4)
-        t251 <- rdU walk ((12 * i234) + 5)
-        let !t252 = (if (abs s242) > 0 then 1.0 else 0.0)
-        let !t253 = (sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240)))
-        let !t254 = (t253 - 1.0)
-        let !t255 = (recip (2.0 * t253))
-        let !t256 = ((((t255 * (t238 + t238)) * t235) + ((t255 * (t239 + t239)) * t236)) + ((t255 * (t240 + t240)) * t237))
-        let !t257 = (if ((abs t254) - 1.0e-10) > 0 then (if (abs t256) > 0 then 1.0 else 0.0) else 0.0)
-        let !t258 = (1.0 - t252)
-        let !s259 = ((t252 * (if t257 > 0 then (t238 + (negate ((t254 / t256) * t235))) else t238)) + (t258 * t243))
-        let !s260 = ((t252 * (if t257 > 0 then (t239 + (negate ((t254 / t256) * t236))) else t239)) + (t258 * t244))
-        let !s261 = ((t252 * (if t257 > 0 then (t240 + (negate ((t254 / t256) * t237))) else t240)) + (t258 * t245))
-        chkI verts ((291 * i1) + (12 * i234)) 9 11
-        wrU verts (((291 * i1) + (12 * i234)) + 9) (if (1.0 - (abs (((s259 - s259) + (s260 - s260)) + (s261 - s261)))) > 0 then s259 else t2)
-        wrU verts (((291 * i1) + (12 * i234)) + 10) (if (1.0 - (abs (((s259 - s259) + (s260 - s260)) + (s261 - s261)))) > 0 then s260 else t3)
-        wrU verts (((291 * i1) + (12 * i234)) + 11) (if (1.0 - (abs (((s259 - s259) + (s260 - s260)) + (s261 - s261)))) > 0 then s261 else t4)
-        wrU walk (12 * i234) s259
-        wrU walk ((12 * i234) + 1) s260
-        wrU walk ((12 * i234) + 2) s261
-        let !t262 = (sqrt (((t249 * t249) + (t250 * t250)) + (t251 * t251)))
-        let !t263 = (if (abs s242) > 0 then (recip s242) else 0.0)
-        let !t264 = (t263 * ((if t257 > 0 then (t238 + (negate ((t254 / t256) * t235))) else t238) + (negate t243)))
-        let !t265 = (t255 * (t238 + t238))
-        let !t266 = (t255 * (t239 + t239))
-        let !t267 = (t255 * (t240 + t240))
-        let !t268 = (sqrt (((t265 * t265) + (t266 * t266)) + (t267 * t267)))
-        let !t269 = (if t268 > 0 then (recip (if (t268 - 1.0e-300) > 0 then t268 else 1.0e-300)) else 0.0)
-        let !t270 = (t269 * t265)
-        let !t271 = (t269 * t266)
-        let !t272 = (t263 * ((if t257 > 0 then (t239 + (negate ((t254 / t256) * t236))) else t239) + (negate t244)))
-        let !t273 = (t269 * t267)
-        let !t274 = (t263 * ((if t257 > 0 then (t240 + (negate ((t254 / t256) * t237))) else t240) + (negate t245)))
-        let !t275 = (((t270 * t264) + (t271 * t272)) + (t273 * t274))
-        let !t276 = (t264 + (negate (t275 * t270)))
-        let !t277 = (t272 + (negate (t275 * t271)))
-        let !t278 = (t274 + (negate (t275 * t273)))
-        let !t279 = (sqrt (((t276 * t276) + (t277 * t277)) + (t278 * t278)))
-        let !t280 = (if t279 > 0 then (recip (if (t279 - 1.0e-300) > 0 then t279 else 1.0e-300)) else 0.0)
-        let !s281 = ((t252 * (t262 * (t280 * t276))) + (t258 * t249))
-        let !s282 = ((t252 * (t262 * (t280 * t277))) + (t258 * t250))
-        let !s283 = ((t252 * (t262 * (t280 * t278))) + (t258 * t251))
-        wrU walk ((12 * i234) + 3) s281
-        wrU walk ((12 * i234) + 4) s282
-        wrU walk ((12 * i234) + 5) s283
-        let !s284 = ((t252 * t270) + (t258 * t246))
-        let !s285 = ((t252 * t271) + (t258 * t247))
-        let !s286 = ((t252 * t273) + (t258 * t248))
-        wrU walk ((12 * i234) + 6) s284
-        wrU walk ((12 * i234) + 7) s285
-        wrU walk ((12 * i234) + 8) s286
+      loopI 0.0 24.0 $ \i225 -> do
+        let !d225 = fromIntegral i225 :: Double
+        chkI walk (12 * i225) 0 11
+        t226 <- rdU walk ((12 * i225) + 6)
+        t227 <- rdU walk ((12 * i225) + 7)
+        t228 <- rdU walk ((12 * i225) + 8)
+        t229 <- rdU walk ((12 * i225) + 9)
+        t230 <- rdU walk ((12 * i225) + 10)
+        t231 <- rdU walk ((12 * i225) + 11)
+        chkI radii ((24 * i1) + i225) 0 0
+        t232 <- rdU radii ((24 * i1) + i225)
+        let !s233 = (t232 / 4.0)
+        t234 <- rdU walk (12 * i225)
+        t235 <- rdU walk ((12 * i225) + 1)
+        t236 <- rdU walk ((12 * i225) + 2)
+        t237 <- rdU walk ((12 * i225) + 3)
+        t238 <- rdU walk ((12 * i225) + 4)
+        t239 <- rdU walk ((12 * i225) + 5)
+        let !t240 = (if (abs s233) > 0 then 1.0 else 0.0)
+        let !t241 = (sqrt (((t229 * t229) + (t230 * t230)) + (t231 * t231)))
+        let !t242 = (t241 - 1.0)
+        let !t243 = (recip (2.0 * t241))
+        let !t244 = ((((t243 * (t229 + t229)) * t226) + ((t243 * (t230 + t230)) * t227)) + ((t243 * (t231 + t231)) * t228))
+        let !t245 = (if ((abs t242) - 1.0e-10) > 0 then (if (abs t244) > 0 then 1.0 else 0.0) else 0.0)
+        let !t246 = (1.0 - t240)
+        let !s247 = ((t240 * (if t245 > 0 then (t229 + (negate ((t242 / t244) * t226))) else t229)) + (t246 * t234))
+        let !s248 = ((t240 * (if t245 > 0 then (t230 + (negate ((t242 / t244) * t227))) else t230)) + (t246 * t235))
+        let !s249 = ((t240 * (if t245 > 0 then (t231 + (negate ((t242 / t244) * t228))) else t231)) + (t246 * t236))
+        chkI verts ((291 * i1) + (12 * i225)) 9 11
+        wrU verts (((291 * i1) + (12 * i225)) + 9) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s247 else t2)
+        wrU verts (((291 * i1) + (12 * i225)) + 10) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s248 else t3)
+        wrU verts (((291 * i1) + (12 * i225)) + 11) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s249 else t4)
+        wrU walk (12 * i225) s247
+        wrU walk ((12 * i225) + 1) s248
+        wrU walk ((12 * i225) + 2) s249
+        let !t250 = (sqrt (((t237 * t237) + (t238 * t238)) + (t239 * t239)))
+        let !t251 = (if (abs s233) > 0 then (recip s233) else 0.0)
+        let !t252 = (t251 * ((if t245 > 0 then (t229 + (negate ((t242 / t244) * t226))) else t229) + (negate t234)))
+        let !t253 = (t243 * (t229 + t229))
+        let !t254 = (t243 * (t230 + t230))
+        let !t255 = (t243 * (t231 + t231))
+        let !t256 = (sqrt (((t253 * t253) + (t254 * t254)) + (t255 * t255)))
+        let !t257 = (if t256 > 0 then (recip (if (t256 - 1.0e-300) > 0 then t256 else 1.0e-300)) else 0.0)
+        let !t258 = (t257 * t253)
+        let !t259 = (t257 * t254)
+        let !t260 = (t251 * ((if t245 > 0 then (t230 + (negate ((t242 / t244) * t227))) else t230) + (negate t235)))
+        let !t261 = (t257 * t255)
+        let !t262 = (t251 * ((if t245 > 0 then (t231 + (negate ((t242 / t244) * t228))) else t231) + (negate t236)))
+        let !t263 = (((t258 * t252) + (t259 * t260)) + (t261 * t262))
+        let !t264 = (t252 + (negate (t263 * t258)))
+        let !t265 = (t260 + (negate (t263 * t259)))
+        let !t266 = (t262 + (negate (t263 * t261)))
+        let !t267 = (sqrt (((t264 * t264) + (t265 * t265)) + (t266 * t266)))
+        let !t268 = (if t267 > 0 then (recip (if (t267 - 1.0e-300) > 0 then t267 else 1.0e-300)) else 0.0)
+        let !s269 = ((t240 * (t250 * (t268 * t264))) + (t246 * t237))
+        let !s270 = ((t240 * (t250 * (t268 * t265))) + (t246 * t238))
+        let !s271 = ((t240 * (t250 * (t268 * t266))) + (t246 * t239))
+        wrU walk ((12 * i225) + 3) s269
+        wrU walk ((12 * i225) + 4) s270
+        wrU walk ((12 * i225) + 5) s271
+        let !s272 = ((t240 * t258) + (t246 * t226))
+        let !s273 = ((t240 * t259) + (t246 * t227))
+        let !s274 = ((t240 * t261) + (t246 * t228))
+        wrU walk ((12 * i225) + 6) s272
+        wrU walk ((12 * i225) + 7) s273
+        wrU walk ((12 * i225) + 8) s274
         pure ()
-      loopI 0.0 24.0 $ \i287 -> do
-        let !d287 = fromIntegral i287 :: Double
-        chkI walk (12 * i287) 0 11
-        t288 <- rdU walk ((12 * i287) + 6)
-        t289 <- rdU walk ((12 * i287) + 7)
-        t290 <- rdU walk ((12 * i287) + 8)
-        chkI radii ((24 * i1) + i287) 0 0
-        t291 <- rdU radii ((24 * i1) + i287)
-        let !s292 = (t291 / 4.0)
-        t293 <- rdU walk (12 * i287)
-        t294 <- rdU walk ((12 * i287) + 1)
-        t295 <- rdU walk ((12 * i287) + 2)
-        t296 <- rdU walk ((12 * i287) + 6)
-        t297 <- rdU walk ((12 * i287) + 7)
-        t298 <- rdU walk ((12 * i287) + 8)
-        t299 <- rdU walk ((12 * i287) + 3)
-        t300 <- rdU walk ((12 * i287) + 4)
-        t301 <- rdU walk ((12 * i287) + 5)
-        let !s302 = (t293 + (s292 * t299))
-        let !s303 = (t294 + (s292 * t300))
-        let !s304 = (t295 + (s292 * t301))
-        let !t305 = (sqrt (((s302 * s302) + (s303 * s303)) + (s304 * s304)))
+      loopI 0.0 24.0 $ \i275 -> do
+        let !d275 = fromIntegral i275 :: Double
+        chkI walk (12 * i275) 0 11
+        t276 <- rdU walk ((12 * i275) + 6)
+        t277 <- rdU walk ((12 * i275) + 7)
+        t278 <- rdU walk ((12 * i275) + 8)
+        chkI radii ((24 * i1) + i275) 0 0
+        t279 <- rdU radii ((24 * i1) + i275)
+        let !s280 = (t279 / 4.0)
+        t281 <- rdU walk (12 * i275)
+        t282 <- rdU walk ((12 * i275) + 1)
+        t283 <- rdU walk ((12 * i275) + 2)
+        t284 <- rdU walk ((12 * i275) + 3)
+        t285 <- rdU walk ((12 * i275) + 4)
+        t286 <- rdU walk ((12 * i275) + 5)
+        let !s287 = (t281 + (s280 * t284))
+        let !s288 = (t282 + (s280 * t285))
+        let !s289 = (t283 + (s280 * t286))
+        let !t290 = (sqrt (((s287 * s287) + (s288 * s288)) + (s289 * s289)))
+        let !t291 = (t290 - 1.0)
+        let !t292 = (recip (2.0 * t290))
+        let !t293 = ((((t292 * (s287 + s287)) * t276) + ((t292 * (s288 + s288)) * t277)) + ((t292 * (s289 + s289)) * t278))
+        let !t294 = (if ((abs t291) - 1.0e-10) > 0 then (if (abs t293) > 0 then 1.0 else 0.0) else 0.0)
+        let !s295 = (if t294 > 0 then (s287 + (negate ((t291 / t293) * t276))) else s287)
+        let !s296 = (if t294 > 0 then (s288 + (negate ((t291 / t293) * t277))) else s288)
+        let !s297 = (if t294 > 0 then (s289 + (negate ((t291 / t293) * t278))) else s289)
+        wrU walk ((12 * i275) + 9) s295
+        wrU walk ((12 * i275) + 10) s296
+        wrU walk ((12 * i275) + 11) s297
+        pure ()
+      loopI 0.0 24.0 $ \i298 -> do
+        let !d298 = fromIntegral i298 :: Double
+        chkI walk (12 * i298) 6 11
+        t299 <- rdU walk ((12 * i298) + 6)
+        t300 <- rdU walk ((12 * i298) + 7)
+        t301 <- rdU walk ((12 * i298) + 8)
+        t302 <- rdU walk ((12 * i298) + 9)
+        t303 <- rdU walk ((12 * i298) + 10)
+        t304 <- rdU walk ((12 * i298) + 11)
+        let !t305 = (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304)))
         let !t306 = (t305 - 1.0)
         let !t307 = (recip (2.0 * t305))
-        let !t308 = ((((t307 * (s302 + s302)) * t288) + ((t307 * (s303 + s303)) * t289)) + ((t307 * (s304 + s304)) * t290))
+        let !t308 = ((((t307 * (t302 + t302)) * t299) + ((t307 * (t303 + t303)) * t300)) + ((t307 * (t304 + t304)) * t301))
         let !t309 = (if ((abs t306) - 1.0e-10) > 0 then (if (abs t308) > 0 then 1.0 else 0.0) else 0.0)
-        let !s310 = (if t309 > 0 then (s302 + (negate ((t306 / t308) * t288))) else s302)
-        let !s311 = (if t309 > 0 then (s303 + (negate ((t306 / t308) * t289))) else s303)
-        let !s312 = (if t309 > 0 then (s304 + (negate ((t306 / t308) * t290))) else s304)
-        wrU walk ((12 * i287) + 9) s310
-        wrU walk ((12 * i287) + 10) s311
-        wrU walk ((12 * i287) + 11) s312
+        let !s310 = (if t309 > 0 then (t302 + (negate ((t306 / t308) * t299))) else t302)
+        let !s311 = (if t309 > 0 then (t303 + (negate ((t306 / t308) * t300))) else t303)
+        let !s312 = (if t309 > 0 then (t304 + (negate ((t306 / t308) * t301))) else t304)
+        wrU walk ((12 * i298) + 9) s310
+        wrU walk ((12 * i298) + 10) s311
+        wrU walk ((12 * i298) + 11) s312
         pure ()
       loopI 0.0 24.0 $ \i313 -> do
         let !d313 = fromIntegral i313 :: Double
-        chkI walk (12 * i313) 6 11
+        chkI walk (12 * i313) 0 11
         t314 <- rdU walk ((12 * i313) + 6)
         t315 <- rdU walk ((12 * i313) + 7)
         t316 <- rdU walk ((12 * i313) + 8)
         t317 <- rdU walk ((12 * i313) + 9)
         t318 <- rdU walk ((12 * i313) + 10)
         t319 <- rdU walk ((12 * i313) + 11)
-        let !t320 = (sqrt (((t317 * t317) + (t318 * t318)) + (t319 * t319)))
-        let !t321 = (t320 - 1.0)
-        let !t322 = (recip (2.0 * t320))
-        let !t323 = ((((t322 * (t317 + t317)) * t314) + ((t322 * (t318 + t318)) * t315)) + ((t322 * (t319 + t319)) * t316))
-        let !t324 = (if ((abs t321) - 1.0e-10) > 0 then (if (abs t323) > 0 then 1.0 else 0.0) else 0.0)
-        let !s325 = (if t324 > 0 then (t317 + (negate ((t321 / t323) * t314))) else t317)
-        let !s326 = (if t324 > 0 then (t318 + (negate ((t321 / t323) * t315))) else t318)
-        let !s327 = (if t324 > 0 then (t319 + (negate ((t321 / t323) * t316))) else t319)
-        wrU walk ((12 * i313) + 9) s325
-        wrU walk ((12 * i313) + 10) s326
-        wrU walk ((12 * i313) + 11) s327
-        pure ()
-      loopI 0.0 24.0 $ \i328 -> do
-        let !d328 = fromIntegral i328 :: Double
-        chkI walk (12 * i328) 0 11
-        t329 <- rdU walk ((12 * i328) + 6)
-        t330 <- rdU walk ((12 * i328) + 7)
-        t331 <- rdU walk ((12 * i328) + 8)
-        t332 <- rdU walk ((12 * i328) + 9)
-        t333 <- rdU walk ((12 * i328) + 10)
-        t334 <- rdU walk ((12 * i328) + 11)
-        chkI radii ((24 * i1) + i328) 0 0
-        t335 <- rdU radii ((24 * i1) + i328)
-        let !s336 = (t335 / 4.0)
-        t337 <- rdU walk (12 * i328)
-        t338 <- rdU walk ((12 * i328) + 1)
-        t339 <- rdU walk ((12 * i328) + 2)
-        t340 <- rdU walk ((12 * i328) + 6)
-        t341 <- rdU walk ((12 * i328) + 7)
-        t342 <- rdU walk ((12 * i328) + 8)
-        t343 <- rdU walk ((12 * i328) + 3)
-        t344 <- rdU walk ((12 * i328) + 4)
-        t345 <- rdU walk ((12 * i328) + 5)
-        let !t346 = (if (abs s336) > 0 then 1.0 else 0.0)
-        let !t347 = (sqrt (((t332 * t332) + (t333 * t333)) + (t334 * t334)))
-        let !t348 = (t347 - 1.0)
-        let !t349 = (recip (2.0 * t347))
-        let !t350 = ((((t349 * (t332 + t332)) * t329) + ((t349 * (t333 + t333)) * t330)) + ((t349 * (t334 + t334)) * t331))
-        let !t351 = (if ((abs t348) - 1.0e-10) > 0 then (if (abs t350) > 0 then 1.0 else 0.0) else 0.0)
-        let !t352 = (1.0 - t346)
-        let !s353 = ((t346 * (if t351 > 0 then (t332 + (negate ((t348 / t350) * t329))) else t332)) + (t352 * t337))
-        let !s354 = ((t346 * (if t351 > 0 then (t333 + (negate ((t348 / t350) * t330))) else t333)) + (t352 * t338))
-        let !s355 = ((t346 * (if t351 > 0 then (t334 + (negate ((t348 / t350) * t331))) else t334)) + (t352 * t339))
-        chkI verts ((291 * i1) + (12 * i328)) 12 14
-        wrU verts (((291 * i1) + (12 * i328)) + 12) (if (1.0 - (abs (((s353 - s353) + (s354 - s354)) + (s355 - s355)))) > 0 then s353 else t2)
-        wrU verts (((291 * i1) + (12 * i328)) + 13) (if (1.0 - (abs (((s353 - s353) + (s354 - s354)) + (s355 - s355)))) > 0 then s354 else t3)
-        wrU verts (((291 * i1) + (12 * i328)) + 14) (if (1.0 - (abs (((s353 - s353) + (s354 - s354)) + (s355 - s355)))) > 0 then s355 else t4)
+        chkI radii ((24 * i1) + i313) 0 0
+        t320 <- rdU radii ((24 * i1) + i313)
+        let !s321 = (t320 / 4.0)
+        t322 <- rdU walk (12 * i313)
+        t323 <- rdU walk ((12 * i313) + 1)
+        t324 <- rdU walk ((12 * i313) + 2)
+        t325 <- rdU walk ((12 * i313) + 3)
+        t326 <- rdU walk ((12 * i313) + 4)
+        t327 <- rdU walk ((12 * i313) + 5)
+        let !t328 = (if (abs s321) > 0 then 1.0 else 0.0)
+        let !t329 = (sqrt (((t317 * t317) + (t318 * t318)) + (t319 * t319)))
+        let !t330 = (t329 - 1.0)
+        let !t331 = (recip (2.0 * t329))
+        let !t332 = ((((t331 * (t317 + t317)) * t314) + ((t331 * (t318 + t318)) * t315)) + ((t331 * (t319 + t319)) * t316))
+        let !t333 = (if ((abs t330) - 1.0e-10) > 0 then (if (abs t332) > 0 then 1.0 else 0.0) else 0.0)
+        let !t334 = (1.0 - t328)
+        let !s335 = ((t328 * (if t333 > 0 then (t317 + (negate ((t330 / t332) * t314))) else t317)) + (t334 * t322))
+        let !s336 = ((t328 * (if t333 > 0 then (t318 + (negate ((t330 / t332) * t315))) else t318)) + (t334 * t323))
+        let !s337 = ((t328 * (if t333 > 0 then (t319 + (negate ((t330 / t332) * t316))) else t319)) + (t334 * t324))
+        chkI verts ((291 * i1) + (12 * i313)) 12 14
+        wrU verts (((291 * i1) + (12 * i313)) + 12) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s335 else t2)
+        wrU verts (((291 * i1) + (12 * i313)) + 13) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s336 else t3)
+        wrU verts (((291 * i1) + (12 * i313)) + 14) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s337 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i356 -> do
-        let !d356 = fromIntegral i356 :: Double
-        t357 <- getR v18
-        t358 <- getR v19
-        setR v18 ((t357 * 0.9659258262890683) - (t358 * 0.25881904510252074))
-        setR v19 ((t358 * 0.9659258262890683) + (t357 * 0.25881904510252074))
-        let !s359 = ((t357 * t5) + (t358 * s14))
-        let !s360 = ((t357 * t6) + (t358 * s15))
-        let !s361 = ((t357 * t7) + (t358 * s16))
-        chkI walk (12 * i356) 3 5
-        wrU walk ((12 * i356) + 3) s359
-        wrU walk ((12 * i356) + 4) s360
-        wrU walk ((12 * i356) + 5) s361
+      loopI 0.0 24.0 $ \i338 -> do
+        let !d338 = fromIntegral i338 :: Double
+        t339 <- getR v18
+        t340 <- getR v19
+        setR v18 ((t339 * 0.9659258262890683) - (t340 * 0.25881904510252074))
+        setR v19 ((t340 * 0.9659258262890683) + (t339 * 0.25881904510252074))
+        let !s341 = ((t339 * t5) + (t340 * s14))
+        let !s342 = ((t339 * t6) + (t340 * s15))
+        let !s343 = ((t339 * t7) + (t340 * s16))
+        chkI walk (12 * i338) 3 5
+        wrU walk ((12 * i338) + 3) s341
+        wrU walk ((12 * i338) + 4) s342
+        wrU walk ((12 * i338) + 5) s343
         pure ()
-      loopI 0.0 24.0 $ \i362 -> do
-        let !d362 = fromIntegral i362 :: Double
-        chkI radii ((24 * i1) + i362) 0 0
-        t363 <- rdU radii ((24 * i1) + i362)
-        chkI walk (12 * i362) 3 11
-        t364 <- rdU walk ((12 * i362) + 3)
-        t365 <- rdU walk ((12 * i362) + 4)
-        t366 <- rdU walk ((12 * i362) + 5)
-        let !s367 = (t2 + (t363 * t364))
-        let !s368 = (t3 + (t363 * t365))
-        let !s369 = (t4 + (t363 * t366))
-        let !t370 = (sqrt (((s367 * s367) + (s368 * s368)) + (s369 * s369)))
-        let !t371 = (t370 - 1.0)
-        let !t372 = (recip (2.0 * t370))
-        let !t373 = ((((t372 * (s367 + s367)) * t8) + ((t372 * (s368 + s368)) * t9)) + ((t372 * (s369 + s369)) * t10))
-        let !t374 = (if ((abs t371) - 1.0e-10) > 0 then (if (abs t373) > 0 then 1.0 else 0.0) else 0.0)
-        let !s375 = (if t374 > 0 then (s367 + (negate ((t371 / t373) * t8))) else s367)
-        let !s376 = (if t374 > 0 then (s368 + (negate ((t371 / t373) * t9))) else s368)
-        let !s377 = (if t374 > 0 then (s369 + (negate ((t371 / t373) * t10))) else s369)
-        wrU walk ((12 * i362) + 9) s375
-        wrU walk ((12 * i362) + 10) s376
-        wrU walk ((12 * i362) + 11) s377
+      loopI 0.0 24.0 $ \i344 -> do
+        let !d344 = fromIntegral i344 :: Double
+        chkI radii ((24 * i1) + i344) 0 0
+        t345 <- rdU radii ((24 * i1) + i344)
+        chkI walk (12 * i344) 3 11
+        t346 <- rdU walk ((12 * i344) + 3)
+        t347 <- rdU walk ((12 * i344) + 4)
+        t348 <- rdU walk ((12 * i344) + 5)
+        let !s349 = (t2 + (t345 * t346))
+        let !s350 = (t3 + (t345 * t347))
+        let !s351 = (t4 + (t345 * t348))
+        let !t352 = (sqrt (((s349 * s349) + (s350 * s350)) + (s351 * s351)))
+        let !t353 = (t352 - 1.0)
+        let !t354 = (recip (2.0 * t352))
+        let !t355 = ((((t354 * (s349 + s349)) * t8) + ((t354 * (s350 + s350)) * t9)) + ((t354 * (s351 + s351)) * t10))
+        let !t356 = (if ((abs t353) - 1.0e-10) > 0 then (if (abs t355) > 0 then 1.0 else 0.0) else 0.0)
+        let !s357 = (if t356 > 0 then (s349 + (negate ((t353 / t355) * t8))) else s349)
+        let !s358 = (if t356 > 0 then (s350 + (negate ((t353 / t355) * t9))) else s350)
+        let !s359 = (if t356 > 0 then (s351 + (negate ((t353 / t355) * t10))) else s351)
+        wrU walk ((12 * i344) + 9) s357
+        wrU walk ((12 * i344) + 10) s358
+        wrU walk ((12 * i344) + 11) s359
         pure ()
-      loopI 0.0 24.0 $ \i378 -> do
-        let !d378 = fromIntegral i378 :: Double
-        chkI walk (12 * i378) 9 11
-        t379 <- rdU walk ((12 * i378) + 9)
-        t380 <- rdU walk ((12 * i378) + 10)
-        t381 <- rdU walk ((12 * i378) + 11)
-        let !t382 = (sqrt (((t379 * t379) + (t380 * t380)) + (t381 * t381)))
-        let !t383 = (t382 - 1.0)
-        let !t384 = (recip (2.0 * t382))
-        let !t385 = ((((t384 * (t379 + t379)) * t8) + ((t384 * (t380 + t380)) * t9)) + ((t384 * (t381 + t381)) * t10))
-        let !t386 = (if ((abs t383) - 1.0e-10) > 0 then (if (abs t385) > 0 then 1.0 else 0.0) else 0.0)
-        let !s387 = (if t386 > 0 then (t379 + (negate ((t383 / t385) * t8))) else t379)
-        let !s388 = (if t386 > 0 then (t380 + (negate ((t383 / t385) * t9))) else t380)
-        let !s389 = (if t386 > 0 then (t381 + (negate ((t383 / t385) * t10))) else t381)
-        wrU walk ((12 * i378) + 9) s387
-        wrU walk ((12 * i378) + 10) s388
-        wrU walk ((12 * i378) + 11) s389
+      loopI 0.0 24.0 $ \i360 -> do
+        let !d360 = fromIntegral i360 :: Double
+        chkI walk (12 * i360) 9 11
+        t361 <- rdU walk ((12 * i360) + 9)
+        t362 <- rdU walk ((12 * i360) + 10)
+        t363 <- rdU walk ((12 * i360) + 11)
+        let !t364 = (sqrt (((t361 * t361) + (t362 * t362)) + (t363 * t363)))
+        let !t365 = (t364 - 1.0)
+        let !t366 = (recip (2.0 * t364))
+        let !t367 = ((((t366 * (t361 + t361)) * t8) + ((t366 * (t362 + t362)) * t9)) + ((t366 * (t363 + t363)) * t10))
+        let !t368 = (if ((abs t365) - 1.0e-10) > 0 then (if (abs t367) > 0 then 1.0 else 0.0) else 0.0)
+        let !s369 = (if t368 > 0 then (t361 + (negate ((t365 / t367) * t8))) else t361)
+        let !s370 = (if t368 > 0 then (t362 + (negate ((t365 / t367) * t9))) else t362)
+        let !s371 = (if t368 > 0 then (t363 + (negate ((t365 / t367) * t10))) else t363)
+        wrU walk ((12 * i360) + 9) s369
+        wrU walk ((12 * i360) + 10) s370
+        wrU walk ((12 * i360) + 11) s371
         pure ()
-      loopI 0.0 24.0 $ \i390 -> do
-        let !d390 = fromIntegral i390 :: Double
-        chkI walk (12 * i390) 3 11
-        t391 <- rdU walk ((12 * i390) + 9)
-        t392 <- rdU walk ((12 * i390) + 10)
-        t393 <- rdU walk ((12 * i390) + 11)
-        chkI radii ((24 * i1) + i390) 0 0
-        t394 <- rdU radii ((24 * i1) + i390)
-        t395 <- rdU walk ((12 * i390) + 3)
-        t396 <- rdU walk ((12 * i390) + 4)
-        t397 <- rdU walk ((12 * i390) + 5)
-        let !t398 = (if (abs t394) > 0 then 1.0 else 0.0)
-        let !t399 = (sqrt (((t391 * t391) + (t392 * t392)) + (t393 * t393)))
-        let !t400 = (t399 - 1.0)
-        let !t401 = (recip (2.0 * t399))
-        let !t402 = ((((t401 * (t391 + t391)) * t8) + ((t401 * (t392 + t392)) * t9)) + ((t401 * (t393 + t393)) * t10))
-        let !t403 = (if ((abs t400) - 1.0e-10) > 0 then (if (abs t402) > 0 then 1.0 else 0.0) else 0.0)
-        let !t404 = (1.0 - t398)
-        let !s405 = ((t398 * (if t403 > 0 then (t391 + (negate ((t400 / t402) * t8))) else t391)) + (t404 * t2))
-        let !s406 = ((t398 * (if t403 > 0 then (t392 + (negate ((t400 / t402) * t9))) else t392)) + (t404 * t3))
-        let !s407 = ((t398 * (if t403 > 0 then (t393 + (negate ((t400 / t402) * t10))) else t393)) + (t404 * t4))
-        let !t408 = (1.0 - (abs (((s405 - s405) + (s406 - s406)) + (s407 - s407))))
-        let !s409 = (if t408 > 0 then s405 else t2)
-        let !s410 = (if t408 > 0 then s406 else t3)
-        let !s411 = (if t408 > 0 then s407 else t4)
-        chkI verts ((291 * i1) + (12 * i390)) 3 14
-        wrU verts (((291 * i1) + (12 * i390)) + 12) s409
-        wrU verts (((291 * i1) + (12 * i390)) + 13) s410
-        wrU verts (((291 * i1) + (12 * i390)) + 14) s411
-        wrU verts (((291 * i1) + (12 * i390)) + 3) (t2 + (0.25 * (s409 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i390)) + 4) (t3 + (0.25 * (s410 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i390)) + 5) (t4 + (0.25 * (s411 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i390)) + 6) (t2 + (0.5 * (s409 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i390)) + 7) (t3 + (0.5 * (s410 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i390)) + 8) (t4 + (0.5 * (s411 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i390)) + 9) (t2 + (0.75 * (s409 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i390)) + 10) (t3 + (0.75 * (s410 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i390)) + 11) (t4 + (0.75 * (s411 + (negate t4))))
+      loopI 0.0 24.0 $ \i372 -> do
+        let !d372 = fromIntegral i372 :: Double
+        chkI walk (12 * i372) 3 11
+        t373 <- rdU walk ((12 * i372) + 9)
+        t374 <- rdU walk ((12 * i372) + 10)
+        t375 <- rdU walk ((12 * i372) + 11)
+        chkI radii ((24 * i1) + i372) 0 0
+        t376 <- rdU radii ((24 * i1) + i372)
+        t377 <- rdU walk ((12 * i372) + 3)
+        t378 <- rdU walk ((12 * i372) + 4)
+        t379 <- rdU walk ((12 * i372) + 5)
+        let !t380 = (if (abs t376) > 0 then 1.0 else 0.0)
+        let !t381 = (sqrt (((t373 * t373) + (t374 * t374)) + (t375 * t375)))
+        let !t382 = (t381 - 1.0)
+        let !t383 = (recip (2.0 * t381))
+        let !t384 = ((((t383 * (t373 + t373)) * t8) + ((t383 * (t374 + t374)) * t9)) + ((t383 * (t375 + t375)) * t10))
+        let !t385 = (if ((abs t382) - 1.0e-10) > 0 then (if (abs t384) > 0 then 1.0 else 0.0) else 0.0)
+        let !t386 = (1.0 - t380)
+        let !s387 = ((t380 * (if t385 > 0 then (t373 + (negate ((t382 / t384) * t8))) else t373)) + (t386 * t2))
+        let !s388 = ((t380 * (if t385 > 0 then (t374 + (negate ((t382 / t384) * t9))) else t374)) + (t386 * t3))
+        let !s389 = ((t380 * (if t385 > 0 then (t375 + (negate ((t382 / t384) * t10))) else t375)) + (t386 * t4))
+        let !t390 = (1.0 - (abs (((s387 - s387) + (s388 - s388)) + (s389 - s389))))
+        let !s391 = (if t390 > 0 then s387 else t2)
+        let !s392 = (if t390 > 0 then s388 else t3)
+        let !s393 = (if t390 > 0 then s389 else t4)
+        chkI verts ((291 * i1) + (12 * i372)) 3 14
+        wrU verts (((291 * i1) + (12 * i372)) + 12) s391
+        wrU verts (((291 * i1) + (12 * i372)) + 13) s392
+        wrU verts (((291 * i1) + (12 * i372)) + 14) s393
+        wrU verts (((291 * i1) + (12 * i372)) + 3) (t2 + (0.25 * (s391 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i372)) + 4) (t3 + (0.25 * (s392 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i372)) + 5) (t4 + (0.25 * (s393 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i372)) + 6) (t2 + (0.5 * (s391 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i372)) + 7) (t3 + (0.5 * (s392 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i372)) + 8) (t4 + (0.5 * (s393 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i372)) + 9) (t2 + (0.75 * (s391 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i372)) + 10) (t3 + (0.75 * (s392 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i372)) + 11) (t4 + (0.75 * (s393 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -2083,487 +2083,469 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         t120 <- rdU walk (12 * i114)
         t121 <- rdU walk ((12 * i114) + 1)
         t122 <- rdU walk ((12 * i114) + 2)
-        t123 <- rdU walk ((12 * i114) + 6)
-        t124 <- rdU walk ((12 * i114) + 7)
-        t125 <- rdU walk ((12 * i114) + 8)
-        t126 <- rdU walk ((12 * i114) + 3)
-        t127 <- rdU walk ((12 * i114) + 4)
-        t128 <- rdU walk ((12 * i114) + 5)
-        let !s129 = (t120 + (s119 * t126))
-        let !s130 = (t121 + (s119 * t127))
-        let !s131 = (t122 + (s119 * t128))
-        let !t132 = (sqrt ((s129 * s129) + (s131 * s131)))
-        let !t133 = (t132 - 0.8)
-        let !t134 = (sqrt ((t133 * t133) + (s130 * s130)))
-        let !t135 = (t134 - 0.5)
-        let !t136 = (recip (2.0 * t134))
-        let !t137 = (recip (2.0 * t132))
-        let !t138 = (t133 * (t137 * (s129 + s129)))
-        let !t139 = (t133 * (t137 * (s131 + s131)))
-        let !t140 = ((((t136 * (t138 + t138)) * t115) + ((t136 * (s130 + s130)) * t116)) + ((t136 * (t139 + t139)) * t117))
-        let !t141 = (if ((abs t135) - 1.0e-10) > 0 then (if (abs t140) > 0 then 1.0 else 0.0) else 0.0)
-        let !s142 = (if t141 > 0 then (s129 + (negate ((t135 / t140) * t115))) else s129)
-        let !s143 = (if t141 > 0 then (s130 + (negate ((t135 / t140) * t116))) else s130)
-        let !s144 = (if t141 > 0 then (s131 + (negate ((t135 / t140) * t117))) else s131)
-        wrU walk ((12 * i114) + 9) s142
-        wrU walk ((12 * i114) + 10) s143
-        wrU walk ((12 * i114) + 11) s144
+        t123 <- rdU walk ((12 * i114) + 3)
+        t124 <- rdU walk ((12 * i114) + 4)
+        t125 <- rdU walk ((12 * i114) + 5)
+        let !s126 = (t120 + (s119 * t123))
+        let !s127 = (t121 + (s119 * t124))
+        let !s128 = (t122 + (s119 * t125))
+        let !t129 = (sqrt ((s126 * s126) + (s128 * s128)))
+        let !t130 = (t129 - 0.8)
+        let !t131 = (sqrt ((t130 * t130) + (s127 * s127)))
+        let !t132 = (t131 - 0.5)
+        let !t133 = (recip (2.0 * t131))
+        let !t134 = (recip (2.0 * t129))
+        let !t135 = (t130 * (t134 * (s126 + s126)))
+        let !t136 = (t130 * (t134 * (s128 + s128)))
+        let !t137 = ((((t133 * (t135 + t135)) * t115) + ((t133 * (s127 + s127)) * t116)) + ((t133 * (t136 + t136)) * t117))
+        let !t138 = (if ((abs t132) - 1.0e-10) > 0 then (if (abs t137) > 0 then 1.0 else 0.0) else 0.0)
+        let !s139 = (if t138 > 0 then (s126 + (negate ((t132 / t137) * t115))) else s126)
+        let !s140 = (if t138 > 0 then (s127 + (negate ((t132 / t137) * t116))) else s127)
+        let !s141 = (if t138 > 0 then (s128 + (negate ((t132 / t137) * t117))) else s128)
+        wrU walk ((12 * i114) + 9) s139
+        wrU walk ((12 * i114) + 10) s140
+        wrU walk ((12 * i114) + 11) s141
         pure ()
-      loopI 0.0 24.0 $ \i145 -> do
-        let !d145 = fromIntegral i145 :: Double
-        chkI walk (12 * i145) 6 11
-        t146 <- rdU walk ((12 * i145) + 6)
-        t147 <- rdU walk ((12 * i145) + 7)
-        t148 <- rdU walk ((12 * i145) + 8)
-        t149 <- rdU walk ((12 * i145) + 9)
-        t150 <- rdU walk ((12 * i145) + 10)
-        t151 <- rdU walk ((12 * i145) + 11)
-        let !t152 = (sqrt ((t149 * t149) + (t151 * t151)))
-        let !t153 = (t152 - 0.8)
-        let !t154 = (sqrt ((t153 * t153) + (t150 * t150)))
-        let !t155 = (t154 - 0.5)
-        let !t156 = (recip (2.0 * t154))
-        let !t157 = (recip (2.0 * t152))
-        let !t158 = (t153 * (t157 * (t149 + t149)))
-        let !t159 = (t153 * (t157 * (t151 + t151)))
-        let !t160 = ((((t156 * (t158 + t158)) * t146) + ((t156 * (t150 + t150)) * t147)) + ((t156 * (t159 + t159)) * t148))
-        let !t161 = (if ((abs t155) - 1.0e-10) > 0 then (if (abs t160) > 0 then 1.0 else 0.0) else 0.0)
-        let !s162 = (if t161 > 0 then (t149 + (negate ((t155 / t160) * t146))) else t149)
-        let !s163 = (if t161 > 0 then (t150 + (negate ((t155 / t160) * t147))) else t150)
-        let !s164 = (if t161 > 0 then (t151 + (negate ((t155 / t160) * t148))) else t151)
-        wrU walk ((12 * i145) + 9) s162
-        wrU walk ((12 * i145) + 10) s163
-        wrU walk ((12 * i145) + 11) s164
+      loopI 0.0 24.0 $ \i142 -> do
+        let !d142 = fromIntegral i142 :: Double
+        chkI walk (12 * i142) 6 11
+        t143 <- rdU walk ((12 * i142) + 6)
+        t144 <- rdU walk ((12 * i142) + 7)
+        t145 <- rdU walk ((12 * i142) + 8)
+        t146 <- rdU walk ((12 * i142) + 9)
+        t147 <- rdU walk ((12 * i142) + 10)
+        t148 <- rdU walk ((12 * i142) + 11)
+        let !t149 = (sqrt ((t146 * t146) + (t148 * t148)))
+        let !t150 = (t149 - 0.8)
+        let !t151 = (sqrt ((t150 * t150) + (t147 * t147)))
+        let !t152 = (t151 - 0.5)
+        let !t153 = (recip (2.0 * t151))
+        let !t154 = (recip (2.0 * t149))
+        let !t155 = (t150 * (t154 * (t146 + t146)))
+        let !t156 = (t150 * (t154 * (t148 + t148)))
+        let !t157 = ((((t153 * (t155 + t155)) * t143) + ((t153 * (t147 + t147)) * t144)) + ((t153 * (t156 + t156)) * t145))
+        let !t158 = (if ((abs t152) - 1.0e-10) > 0 then (if (abs t157) > 0 then 1.0 else 0.0) else 0.0)
+        let !s159 = (if t158 > 0 then (t146 + (negate ((t152 / t157) * t143))) else t146)
+        let !s160 = (if t158 > 0 then (t147 + (negate ((t152 / t157) * t144))) else t147)
+        let !s161 = (if t158 > 0 then (t148 + (negate ((t152 / t157) * t145))) else t148)
+        wrU walk ((12 * i142) + 9) s159
+        wrU walk ((12 * i142) + 10) s160
+        wrU walk ((12 * i142) + 11) s161
         pure ()
-      loopI 0.0 24.0 $ \i165 -> do
-        let !d165 = fromIntegral i165 :: Double
-        chkI walk (12 * i165) 0 11
-        t166 <- rdU walk ((12 * i165) + 6)
-        t167 <- rdU walk ((12 * i165) + 7)
-        t168 <- rdU walk ((12 * i165) + 8)
-        t169 <- rdU walk ((12 * i165) + 9)
-        t170 <- rdU walk ((12 * i165) + 10)
-        t171 <- rdU walk ((12 * i165) + 11)
-        chkI radii ((24 * i1) + i165) 0 0
-        t172 <- rdU radii ((24 * i1) + i165)
-        let !s173 = (t172 / 4.0)
-        t174 <- rdU walk (12 * i165)
-        t175 <- rdU walk ((12 * i165) + 1)
-        t176 <- rdU walk ((12 * i165) + 2)
-        t177 <- rdU walk ((12 * i165) + 6)
-        t178 <- rdU walk ((12 * i165) + 7)
-        t179 <- rdU walk ((12 * i165) + 8)
-        t180 <- rdU walk ((12 * i165) + 3)
-        t181 <- rdU walk ((12 * i165) + 4)
-        t182 <- rdU walk ((12 * i165) + 5)
-        let !t183 = (if (abs s173) > 0 then 1.0 else 0.0)
-        let !t184 = (sqrt ((t169 * t169) + (t171 * t171)))
-        let !t185 = (t184 - 0.8)
-        let !t186 = (sqrt ((t185 * t185) + (t170 * t170)))
-        let !t187 = (t186 - 0.5)
-        let !t188 = (recip (2.0 * t186))
-        let !t189 = (recip (2.0 * t184))
-        let !t190 = (t185 * (t189 * (t169 + t169)))
-        let !t191 = (t185 * (t189 * (t171 + t171)))
-        let !t192 = ((((t188 * (t190 + t190)) * t166) + ((t188 * (t170 + t170)) * t167)) + ((t188 * (t191 + t191)) * t168))
-        let !t193 = (if ((abs t187) - 1.0e-10) > 0 then (if (abs t192) > 0 then 1.0 else 0.0) else 0.0)
-        let !t194 = (1.0 - t183)
-        let !s195 = ((t183 * (if t193 > 0 then (t169 + (negate ((t187 / t192) * t166))) else t169)) + (t194 * t174))
-        let !s196 = ((t183 * (if t193 > 0 then (t170 + (negate ((t187 / t192) * t167))) else t170)) + (t194 * t175))
-        let !s197 = ((t183 * (if t193 > 0 then (t171 + (negate ((t187 / t192) * t168))) else t171)) + (t194 * t176))
-        chkI verts ((291 * i1) + (12 * i165)) 6 8
-        wrU verts (((291 * i1) + (12 * i165)) + 6) (if (1.0 - (abs (((s195 - s195) + (s196 - s196)) + (s197 - s197)))) > 0 then s195 else t2)
-        wrU verts (((291 * i1) + (12 * i165)) + 7) (if (1.0 - (abs (((s195 - s195) + (s196 - s196)) + (s197 - s197)))) > 0 then s196 else t3)
-        wrU verts (((291 * i1) + (12 * i165)) + 8) (if (1.0 - (abs (((s195 - s195) + (s196 - s196)) + (s197 - s197)))) > 0 then s197 else t4)
-        wrU walk (12 * i165) s195
-        wrU walk ((12 * i165) + 1) s196
-        wrU walk ((12 * i165) + 2) s197
-        let !t198 = (sqrt (((t180 * t180) + (t181 * t181)) + (t182 * t182)))
-        let !t199 = (if (abs s173) > 0 then (recip s173) else 0.0)
-        let !t200 = (t199 * ((if t193 > 0 then (t169 + (negate ((t187 / t192) * t166))) else t169) + (negate t174)))
-        let !t201 = (t188 * (t190 + t190))
-        let !t202 = (t188 * (t170 + t170))
-        let !t203 = (t188 * (t191 + t191))
-        let !t204 = (sqrt (((t201 * t201) + (t202 * t202)) + (t203 * t203)))
-        let !t205 = (if t204 > 0 then (recip (if (t204 - 1.0e-300) > 0 then t204 else 1.0e-300)) else 0.0)
-        let !t206 = (t205 * t201)
-        let !t207 = (t205 * t202)
-        let !t208 = (t199 * ((if t193 > 0 then (t170 + (negate ((t187 / t192) * t167))) else t170) + (negate t175)))
-        let !t209 = (t205 * t203)
-        let !t210 = (t199 * ((if t193 > 0 then (t171 + (negate ((t187 / t192) * t168))) else t171) + (negate t176)))
-        let !t211 = (((t206 * t200) + (t207 * t208)) + (t209 * t210))
-        let !t212 = (t200 + (negate (t211 * t206)))
-        let !t213 = (t208 + (negate (t211 * t207)))
-        let !t214 = (t210 + (negate (t211 * t209)))
-        let !t215 = (sqrt (((t212 * t212) + (t213 * t213)) + (t214 * t214)))
-        let !t216 = (if t215 > 0 then (recip (if (t215 - 1.0e-300) > 0 then t215 else 1.0e-300)) else 0.0)
-        let !s217 = ((t183 * (t198 * (t216 * t212))) + (t194 * t180))
-        let !s218 = ((t183 * (t198 * (t216 * t213))) + (t194 * t181))
-        let !s219 = ((t183 * (t198 * (t216 * t214))) + (t194 * t182))
-        wrU walk ((12 * i165) + 3) s217
-        wrU walk ((12 * i165) + 4) s218
-        wrU walk ((12 * i165) + 5) s219
-        let !s220 = ((t183 * t206) + (t194 * t177))
-        let !s221 = ((t183 * t207) + (t194 * t178))
-        let !s222 = ((t183 * t209) + (t194 * t179))
-        wrU walk ((12 * i165) + 6) s220
-        wrU walk ((12 * i165) + 7) s221
-        wrU walk ((12 * i165) + 8) s222
+      loopI 0.0 24.0 $ \i162 -> do
+        let !d162 = fromIntegral i162 :: Double
+        chkI walk (12 * i162) 0 11
+        t163 <- rdU walk ((12 * i162) + 6)
+        t164 <- rdU walk ((12 * i162) + 7)
+        t165 <- rdU walk ((12 * i162) + 8)
+        t166 <- rdU walk ((12 * i162) + 9)
+        t167 <- rdU walk ((12 * i162) + 10)
+        t168 <- rdU walk ((12 * i162) + 11)
+        chkI radii ((24 * i1) + i162) 0 0
+        t169 <- rdU radii ((24 * i1) + i162)
+        let !s170 = (t169 / 4.0)
+        t171 <- rdU walk (12 * i162)
+        t172 <- rdU walk ((12 * i162) + 1)
+        t173 <- rdU walk ((12 * i162) + 2)
+        t174 <- rdU walk ((12 * i162) + 3)
+        t175 <- rdU walk ((12 * i162) + 4)
+        t176 <- rdU walk ((12 * i162) + 5)
+        let !t177 = (if (abs s170) > 0 then 1.0 else 0.0)
+        let !t178 = (sqrt ((t166 * t166) + (t168 * t168)))
+        let !t179 = (t178 - 0.8)
+        let !t180 = (sqrt ((t179 * t179) + (t167 * t167)))
+        let !t181 = (t180 - 0.5)
+        let !t182 = (recip (2.0 * t180))
+        let !t183 = (recip (2.0 * t178))
+        let !t184 = (t179 * (t183 * (t166 + t166)))
+        let !t185 = (t179 * (t183 * (t168 + t168)))
+        let !t186 = ((((t182 * (t184 + t184)) * t163) + ((t182 * (t167 + t167)) * t164)) + ((t182 * (t185 + t185)) * t165))
+        let !t187 = (if ((abs t181) - 1.0e-10) > 0 then (if (abs t186) > 0 then 1.0 else 0.0) else 0.0)
+        let !t188 = (1.0 - t177)
+        let !s189 = ((t177 * (if t187 > 0 then (t166 + (negate ((t181 / t186) * t163))) else t166)) + (t188 * t171))
+        let !s190 = ((t177 * (if t187 > 0 then (t167 + (negate ((t181 / t186) * t164))) else t167)) + (t188 * t172))
+        let !s191 = ((t177 * (if t187 > 0 then (t168 + (negate ((t181 / t186) * t165))) else t168)) + (t188 * t173))
+        chkI verts ((291 * i1) + (12 * i162)) 6 8
+        wrU verts (((291 * i1) + (12 * i162)) + 6) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s189 else t2)
+        wrU verts (((291 * i1) + (12 * i162)) + 7) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s190 else t3)
+        wrU verts (((291 * i1) + (12 * i162)) + 8) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s191 else t4)
+        wrU walk (12 * i162) s189
+        wrU walk ((12 * i162) + 1) s190
+        wrU walk ((12 * i162) + 2) s191
+        let !t192 = (sqrt (((t174 * t174) + (t175 * t175)) + (t176 * t176)))
+        let !t193 = (if (abs s170) > 0 then (recip s170) else 0.0)
+        let !t194 = (t193 * ((if t187 > 0 then (t166 + (negate ((t181 / t186) * t163))) else t166) + (negate t171)))
+        let !t195 = (t182 * (t184 + t184))
+        let !t196 = (t182 * (t167 + t167))
+        let !t197 = (t182 * (t185 + t185))
+        let !t198 = (sqrt (((t195 * t195) + (t196 * t196)) + (t197 * t197)))
+        let !t199 = (if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0)
+        let !t200 = (t199 * t195)
+        let !t201 = (t199 * t196)
+        let !t202 = (t193 * ((if t187 > 0 then (t167 + (negate ((t181 / t186) * t164))) else t167) + (negate t172)))
+        let !t203 = (t199 * t197)
+        let !t204 = (t193 * ((if t187 > 0 then (t168 + (negate ((t181 / t186) * t165))) else t168) + (negate t173)))
+        let !t205 = (((t200 * t194) + (t201 * t202)) + (t203 * t204))
+        let !t206 = (t194 + (negate (t205 * t200)))
+        let !t207 = (t202 + (negate (t205 * t201)))
+        let !t208 = (t204 + (negate (t205 * t203)))
+        let !t209 = (sqrt (((t206 * t206) + (t207 * t207)) + (t208 * t208)))
+        let !t210 = (if t209 > 0 then (recip (if (t209 - 1.0e-300) > 0 then t209 else 1.0e-300)) else 0.0)
+        let !s211 = ((t177 * (t192 * (t210 * t206))) + (t188 * t174))
+        let !s212 = ((t177 * (t192 * (t210 * t207))) + (t188 * t175))
+        let !s213 = ((t177 * (t192 * (t210 * t208))) + (t188 * t176))
+        wrU walk ((12 * i162) + 3) s211
+        wrU walk ((12 * i162) + 4) s212
+        wrU walk ((12 * i162) + 5) s213
+        let !s214 = ((t177 * t200) + (t188 * t163))
+        let !s215 = ((t177 * t201) + (t188 * t164))
+        let !s216 = ((t177 * t203) + (t188 * t165))
+        wrU walk ((12 * i162) + 6) s214
+        wrU walk ((12 * i162) + 7) s215
+        wrU walk ((12 * i162) + 8) s216
         pure ()
-      loopI 0.0 24.0 $ \i223 -> do
-        let !d223 = fromIntegral i223 :: Double
-        chkI walk (12 * i223) 0 11
-        t224 <- rdU walk ((12 * i223) + 6)
-        t225 <- rdU walk ((12 * i223) + 7)
-        t226 <- rdU walk ((12 * i223) + 8)
-        chkI radii ((24 * i1) + i223) 0 0
-        t227 <- rdU radii ((24 * i1) + i223)
-        let !s228 = (t227 / 4.0)
-        t229 <- rdU walk (12 * i223)
-        t230 <- rdU walk ((12 * i223) + 1)
-        t231 <- rdU walk ((12 * i223) + 2)
-        t232 <- rdU walk ((12 * i223) + 6)
-        t233 <- rdU walk ((12 * i223) + 7)
-        t234 <- rdU walk ((12 * i223) + 8)
-        t235 <- rdU walk ((12 * i223) + 3)
-        t236 <- rdU walk ((12 * i223) + 4)
-        t237 <- rdU walk ((12 * i223) + 5)
-        let !s238 = (t229 + (s228 * t235))
-        let !s239 = (t230 + (s228 * t236))
-        let !s240 = (t231 + (s228 * t237))
-        let !t241 = (sqrt ((s238 * s238) + (s240 * s240)))
-        let !t242 = (t241 - 0.8)
-        let !t243 = (sqrt ((t242 * t242) + (s239 * s239)))
-        let !t244 = (t243 - 0.5)
-        let !t245 = (recip (2.0 * t243))
-        let !t246 = (recip (2.0 * t241))
-        let !t247 = (t242 * (t246 * (s238 + s238)))
-        let !t248 = (t242 * (t246 * (s240 + s240)))
-        let !t249 = ((((t245 * (t247 + t247)) * t224) + ((t245 * (s239 + s239)) * t225)) + ((t245 * (t248 + t248)) * t226))
-        let !t250 = (if ((abs t244) - 1.0e-10) > 0 then (if (abs t249) > 0 then 1.0 else 0.0) else 0.0)
-        let !s251 = (if t250 > 0 then (s238 + (negate ((t244 / t249) * t224))) else s238)
-        let !s252 = (if t250 > 0 then (s239 + (negate ((t244 / t249) * t225))) else s239)
-        let !s253 = (if t250 > 0 then (s240 + (negate ((t244 / t249) * t226))) else s240)
-        wrU walk ((12 * i223) + 9) s251
-        wrU walk ((12 * i223) + 10) s252
-        wrU walk ((12 * i223) + 11) s253
+      loopI 0.0 24.0 $ \i217 -> do
+        let !d217 = fromIntegral i217 :: Double
+        chkI walk (12 * i217) 0 11
+        t218 <- rdU walk ((12 * i217) + 6)
+        t219 <- rdU walk ((12 * i217) + 7)
+        t220 <- rdU walk ((12 * i217) + 8)
+        chkI radii ((24 * i1) + i217) 0 0
+        t221 <- rdU radii ((24 * i1) + i217)
+        let !s222 = (t221 / 4.0)
+        t223 <- rdU walk (12 * i217)
+        t224 <- rdU walk ((12 * i217) + 1)
+        t225 <- rdU walk ((12 * i217) + 2)
+        t226 <- rdU walk ((12 * i217) + 3)
+        t227 <- rdU walk ((12 * i217) + 4)
+        t228 <- rdU walk ((12 * i217) + 5)
+        let !s229 = (t223 + (s222 * t226))
+        let !s230 = (t224 + (s222 * t227))
+        let !s231 = (t225 + (s222 * t228))
+        let !t232 = (sqrt ((s229 * s229) + (s231 * s231)))
+        let !t233 = (t232 - 0.8)
+        let !t234 = (sqrt ((t233 * t233) + (s230 * s230)))
+        let !t235 = (t234 - 0.5)
+        let !t236 = (recip (2.0 * t234))
+        let !t237 = (recip (2.0 * t232))
+        let !t238 = (t233 * (t237 * (s229 + s229)))
+        let !t239 = (t233 * (t237 * (s231 + s231)))
+        let !t240 = ((((t236 * (t238 + t238)) * t218) + ((t236 * (s230 + s230)) * t219)) + ((t236 * (t239 + t239)) * t220))
+        let !t241 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t240) > 0 then 1.0 else 0.0) else 0.0)
+        let !s242 = (if t241 > 0 then (s229 + (negate ((t235 / t240) * t218))) else s229)
+        let !s243 = (if t241 > 0 then (s230 + (negate ((t235 / t240) * t219))) else s230)
+        let !s244 = (if t241 > 0 then (s231 + (negate ((t235 / t240) * t220))) else s231)
+        wrU walk ((12 * i217) + 9) s242
+        wrU walk ((12 * i217) + 10) s243
+        wrU walk ((12 * i217) + 11) s244
         pure ()
-      loopI 0.0 24.0 $ \i254 -> do
-        let !d254 = fromIntegral i254 :: Double
-        chkI walk (12 * i254) 6 11
-        t255 <- rdU walk ((12 * i254) + 6)
-        t256 <- rdU walk ((12 * i254) + 7)
-        t257 <- rdU walk ((12 * i254) + 8)
-        t258 <- rdU walk ((12 * i254) + 9)
-        t259 <- rdU walk ((12 * i254) + 10)
-        t260 <- rdU walk ((12 * i254) + 11)
-        let !t261 = (sqrt ((t258 * t258) + (t260 * t260)))
-        let !t262 = (t261 - 0.8)
-        let !t263 = (sqrt ((t262 * t262) + (t259 * t259)))
-        let !t264 = (t263 - 0.5)
-        let !t265 = (recip (2.0 * t263))
-        let !t266 = (recip (2.0 * t261))
-        let !t267 = (t262 * (t266 * (t258 + t258)))
-        let !t268 = (t262 * (t266 * (t260 + t260)))
-        let !t269 = ((((t265 * (t267 + t267)) * t255) + ((t265 * (t259 + t259)) * t256)) + ((t265 * (t268 + t268)) * t257))
-        let !t270 = (if ((abs t264) - 1.0e-10) > 0 then (if (abs t269) > 0 then 1.0 else 0.0) else 0.0)
-        let !s271 = (if t270 > 0 then (t258 + (negate ((t264 / t269) * t255))) else t258)
-        let !s272 = (if t270 > 0 then (t259 + (negate ((t264 / t269) * t256))) else t259)
-        let !s273 = (if t270 > 0 then (t260 + (negate ((t264 / t269) * t257))) else t260)
-        wrU walk ((12 * i254) + 9) s271
-        wrU walk ((12 * i254) + 10) s272
-        wrU walk ((12 * i254) + 11) s273
+      loopI 0.0 24.0 $ \i245 -> do
+        let !d245 = fromIntegral i245 :: Double
+        chkI walk (12 * i245) 6 11
+        t246 <- rdU walk ((12 * i245) + 6)
+        t247 <- rdU walk ((12 * i245) + 7)
+        t248 <- rdU walk ((12 * i245) + 8)
+        t249 <- rdU walk ((12 * i245) + 9)
+        t250 <- rdU walk ((12 * i245) + 10)
+        t251 <- rdU walk ((12 * i245) + 11)
+        let !t252 = (sqrt ((t249 * t249) + (t251 * t251)))
+        let !t253 = (t252 - 0.8)
+        let !t254 = (sqrt ((t253 * t253) + (t250 * t250)))
+        let !t255 = (t254 - 0.5)
+        let !t256 = (recip (2.0 * t254))
+        let !t257 = (recip (2.0 * t252))
+        let !t258 = (t253 * (t257 * (t249 + t249)))
+        let !t259 = (t253 * (t257 * (t251 + t251)))
+        let !t260 = ((((t256 * (t258 + t258)) * t246) + ((t256 * (t250 + t250)) * t247)) + ((t256 * (t259 + t259)) * t248))
+        let !t261 = (if ((abs t255) - 1.0e-10) > 0 then (if (abs t260) > 0 then 1.0 else 0.0) else 0.0)
+        let !s262 = (if t261 > 0 then (t249 + (negate ((t255 / t260) * t246))) else t249)
+        let !s263 = (if t261 > 0 then (t250 + (negate ((t255 / t260) * t247))) else t250)
+        let !s264 = (if t261 > 0 then (t251 + (negate ((t255 / t260) * t248))) else t251)
+        wrU walk ((12 * i245) + 9) s262
+        wrU walk ((12 * i245) + 10) s263
+        wrU walk ((12 * i245) + 11) s264
         pure ()
-      loopI 0.0 24.0 $ \i274 -> do
-        let !d274 = fromIntegral i274 :: Double
-        chkI walk (12 * i274) 0 11
-        t275 <- rdU walk ((12 * i274) + 6)
-        t276 <- rdU walk ((12 * i274) + 7)
-        t277 <- rdU walk ((12 * i274) + 8)
-        t278 <- rdU walk ((12 * i274) + 9)
-        t279 <- rdU walk ((12 * i274) + 10)
-        t280 <- rdU walk ((12 * i274) + 11)
-        chkI radii ((24 * i1) + i274) 0 0
-        t281 <- rdU radii ((24 * i1) + i274)
-        let !s282 = (t281 / 4.0)
-        t283 <- rdU walk (12 * i274)
-        t284 <- rdU walk ((12 * i274) + 1)
-        t285 <- rdU walk ((12 * i274) + 2)
-        t286 <- rdU walk ((12 * i274) + 6)
-        t287 <- rdU walk ((12 * i274) + 7)
-        t288 <- rdU walk ((12 * i274) + 8)
-        t289 <- rdU walk ((12 * i274) + 3)
-        t290 <- rdU walk ((12 * i274) + 4)
-        t291 <- rdU walk ((12 * i274) + 5)
-        let !t292 = (if (abs s282) > 0 then 1.0 else 0.0)
-        let !t293 = (sqrt ((t278 * t278) + (t280 * t280)))
-        let !t294 = (t293 - 0.8)
-        let !t295 = (sqrt ((t294 * t294) + (t279 * t279)))
-        let !t296 = (t295 - 0.5)
-        let !t297 = (recip (2.0 * t295))
-        let !t298 = (recip (2.0 * t293))
-        let !t299 = (t294 * (t298 * (t278 + t278)))
-        let !t300 = (t294 * (t298 * (t280 + t280)))
-        let !t301 = ((((t297 * (t299 + t299)) * t275) + ((t297 * (t279 + t279)) * t276)) + ((t297 * (t300 + t300)) * t277))
-        let !t302 = (if ((abs t296) - 1.0e-10) > 0 then (if (abs t301) > 0 then 1.0 else 0.0) else 0.0)
-        let !t303 = (1.0 - t292)
-        let !s304 = ((t292 * (if t302 > 0 then (t278 + (negate ((t296 / t301) * t275))) else t278)) + (t303 * t283))
-        let !s305 = ((t292 * (if t302 > 0 then (t279 + (negate ((t296 / t301) * t276))) else t279)) + (t303 * t284))
-        let !s306 = ((t292 * (if t302 > 0 then (t280 + (negate ((t296 / t301) * t277))) else t280)) + (t303 * t285))
-        chkI verts ((291 * i1) + (12 * i274)) 9 11
-        wrU verts (((291 * i1) + (12 * i274)) + 9) (if (1.0 - (abs (((s304 - s304) + (s305 - s305)) + (s306 - s306)))) > 0 then s304 else t2)
-        wrU verts (((291 * i1) + (12 * i274)) + 10) (if (1.0 - (abs (((s304 - s304) + (s305 - s305)) + (s306 - s306)))) > 0 then s305 else t3)
-        wrU verts (((291 * i1) + (12 * i274)) + 11) (if (1.0 - (abs (((s304 - s304) + (s305 - s305)) + (s306 - s306)))) > 0 then s306 else t4)
-        wrU walk (12 * i274) s304
-        wrU walk ((12 * i274) + 1) s305
-        wrU walk ((12 * i274) + 2) s306
-        let !t307 = (sqrt (((t289 * t289) + (t290 * t290)) + (t291 * t291)))
-        let !t308 = (if (abs s282) > 0 then (recip s282) else 0.0)
-        let !t309 = (t308 * ((if t302 > 0 then (t278 + (negate ((t296 / t301) * t275))) else t278) + (negate t283)))
-        let !t310 = (t297 * (t299 + t299))
-        let !t311 = (t297 * (t279 + t279))
-        let !t312 = (t297 * (t300 + t300))
-        let !t313 = (sqrt (((t310 * t310) + (t311 * t311)) + (t312 * t312)))
-        let !t314 = (if t313 > 0 then (recip (if (t313 - 1.0e-300) > 0 then t313 else 1.0e-300)) else 0.0)
-        let !t315 = (t314 * t310)
-        let !t316 = (t314 * t311)
-        let !t317 = (t308 * ((if t302 > 0 then (t279 + (negate ((t296 / t301) * t276))) else t279) + (negate t284)))
-        let !t318 = (t314 * t312)
-        let !t319 = (t308 * ((if t302 > 0 then (t280 + (negate ((t296 / t301) * t277))) else t280) + (negate t285)))
-        let !t320 = (((t315 * t309) + (t316 * t317)) + (t318 * t319))
-        let !t321 = (t309 + (negate (t320 * t315)))
-        let !t322 = (t317 + (negate (t320 * t316)))
-        let !t323 = (t319 + (negate (t320 * t318)))
-        let !t324 = (sqrt (((t321 * t321) + (t322 * t322)) + (t323 * t323)))
-        let !t325 = (if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0)
-        let !s326 = ((t292 * (t307 * (t325 * t321))) + (t303 * t289))
-        let !s327 = ((t292 * (t307 * (t325 * t322))) + (t303 * t290))
-        let !s328 = ((t292 * (t307 * (t325 * t323))) + (t303 * t291))
-        wrU walk ((12 * i274) + 3) s326
-        wrU walk ((12 * i274) + 4) s327
-        wrU walk ((12 * i274) + 5) s328
-        let !s329 = ((t292 * t315) + (t303 * t286))
-        let !s330 = ((t292 * t316) + (t303 * t287))
-        let !s331 = ((t292 * t318) + (t303 * t288))
-        wrU walk ((12 * i274) + 6) s329
-        wrU walk ((12 * i274) + 7) s330
-        wrU walk ((12 * i274) + 8) s331
+      loopI 0.0 24.0 $ \i265 -> do
+        let !d265 = fromIntegral i265 :: Double
+        chkI walk (12 * i265) 0 11
+        t266 <- rdU walk ((12 * i265) + 6)
+        t267 <- rdU walk ((12 * i265) + 7)
+        t268 <- rdU walk ((12 * i265) + 8)
+        t269 <- rdU walk ((12 * i265) + 9)
+        t270 <- rdU walk ((12 * i265) + 10)
+        t271 <- rdU walk ((12 * i265) + 11)
+        chkI radii ((24 * i1) + i265) 0 0
+        t272 <- rdU radii ((24 * i1) + i265)
+        let !s273 = (t272 / 4.0)
+        t274 <- rdU walk (12 * i265)
+        t275 <- rdU walk ((12 * i265) + 1)
+        t276 <- rdU walk ((12 * i265) + 2)
+        t277 <- rdU walk ((12 * i265) + 3)
+        t278 <- rdU walk ((12 * i265) + 4)
+        t279 <- rdU walk ((12 * i265) + 5)
+        let !t280 = (if (abs s273) > 0 then 1.0 else 0.0)
+        let !t281 = (sqrt ((t269 * t269) + (t271 * t271)))
+        let !t282 = (t281 - 0.8)
+        let !t283 = (sqrt ((t282 * t282) + (t270 * t270)))
+        let !t284 = (t283 - 0.5)
+        let !t285 = (recip (2.0 * t283))
+        let !t286 = (recip (2.0 * t281))
+        let !t287 = (t282 * (t286 * (t269 + t269)))
+        let !t288 = (t282 * (t286 * (t271 + t271)))
+        let !t289 = ((((t285 * (t287 + t287)) * t266) + ((t285 * (t270 + t270)) * t267)) + ((t285 * (t288 + t288)) * t268))
+        let !t290 = (if ((abs t284) - 1.0e-10) > 0 then (if (abs t289) > 0 then 1.0 else 0.0) else 0.0)
+        let !t291 = (1.0 - t280)
+        let !s292 = ((t280 * (if t290 > 0 then (t269 + (negate ((t284 / t289) * t266))) else t269)) + (t291 * t274))
+        let !s293 = ((t280 * (if t290 > 0 then (t270 + (negate ((t284 / t289) * t267))) else t270)) + (t291 * t275))
+        let !s294 = ((t280 * (if t290 > 0 then (t271 + (negate ((t284 / t289) * t268))) else t271)) + (t291 * t276))
+        chkI verts ((291 * i1) + (12 * i265)) 9 11
+        wrU verts (((291 * i1) + (12 * i265)) + 9) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s292 else t2)
+        wrU verts (((291 * i1) + (12 * i265)) + 10) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s293 else t3)
+        wrU verts (((291 * i1) + (12 * i265)) + 11) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s294 else t4)
+        wrU walk (12 * i265) s292
+        wrU walk ((12 * i265) + 1) s293
+        wrU walk ((12 * i265) + 2) s294
+        let !t295 = (sqrt (((t277 * t277) + (t278 * t278)) + (t279 * t279)))
+        let !t296 = (if (abs s273) > 0 then (recip s273) else 0.0)
+        let !t297 = (t296 * ((if t290 > 0 then (t269 + (negate ((t284 / t289) * t266))) else t269) + (negate t274)))
+        let !t298 = (t285 * (t287 + t287))
+        let !t299 = (t285 * (t270 + t270))
+        let !t300 = (t285 * (t288 + t288))
+        let !t301 = (sqrt (((t298 * t298) + (t299 * t299)) + (t300 * t300)))
+        let !t302 = (if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0)
+        let !t303 = (t302 * t298)
+        let !t304 = (t302 * t299)
+        let !t305 = (t296 * ((if t290 > 0 then (t270 + (negate ((t284 / t289) * t267))) else t270) + (negate t275)))
+        let !t306 = (t302 * t300)
+        let !t307 = (t296 * ((if t290 > 0 then (t271 + (negate ((t284 / t289) * t268))) else t271) + (negate t276)))
+        let !t308 = (((t303 * t297) + (t304 * t305)) + (t306 * t307))
+        let !t309 = (t297 + (negate (t308 * t303)))
+        let !t310 = (t305 + (negate (t308 * t304)))
+        let !t311 = (t307 + (negate (t308 * t306)))
+        let !t312 = (sqrt (((t309 * t309) + (t310 * t310)) + (t311 * t311)))
+        let !t313 = (if t312 > 0 then (recip (if (t312 - 1.0e-300) > 0 then t312 else 1.0e-300)) else 0.0)
+        let !s314 = ((t280 * (t295 * (t313 * t309))) + (t291 * t277))
+        let !s315 = ((t280 * (t295 * (t313 * t310))) + (t291 * t278))
+        let !s316 = ((t280 * (t295 * (t313 * t311))) + (t291 * t279))
+        wrU walk ((12 * i265) + 3) s314
+        wrU walk ((12 * i265) + 4) s315
+        wrU walk ((12 * i265) + 5) s316
+        let !s317 = ((t280 * t303) + (t291 * t266))
+        let !s318 = ((t280 * t304) + (t291 * t267))
+        let !s319 = ((t280 * t306) + (t291 * t268))
+        wrU walk ((12 * i265) + 6) s317
+        wrU walk ((12 * i265) + 7) s318
+        wrU walk ((12 * i265) + 8) s319
         pure ()
-      loopI 0.0 24.0 $ \i332 -> do
-        let !d332 = fromIntegral i332 :: Double
-        chkI walk (12 * i332) 0 11
-        t333 <- rdU walk ((12 * i332) + 6)
-        t334 <- rdU walk ((12 * i332) + 7)
-        t335 <- rdU walk ((12 * i332) + 8)
-        chkI radii ((24 * i1) + i332) 0 0
-        t336 <- rdU radii ((24 * i1) + i332)
-        let !s337 = (t336 / 4.0)
-        t338 <- rdU walk (12 * i332)
-        t339 <- rdU walk ((12 * i332) + 1)
-        t340 <- rdU walk ((12 * i332) + 2)
-        t341 <- rdU walk ((12 * i332) + 6)
-        t342 <- rdU walk ((12 * i332) + 7)
-        t343 <- rdU walk ((12 * i332) + 8)
-        t344 <- rdU walk ((12 * i332) + 3)
-        t345 <- rdU walk ((12 * i332) + 4)
-        t346 <- rdU walk ((12 * i332) + 5)
-        let !s347 = (t338 + (s337 * t344))
-        let !s348 = (t339 + (s337 * t345))
-        let !s349 = (t340 + (s337 * t346))
-        let !t350 = (sqrt ((s347 * s347) + (s349 * s349)))
-        let !t351 = (t350 - 0.8)
-        let !t352 = (sqrt ((t351 * t351) + (s348 * s348)))
-        let !t353 = (t352 - 0.5)
-        let !t354 = (recip (2.0 * t352))
-        let !t355 = (recip (2.0 * t350))
-        let !t356 = (t351 * (t355 * (s347 + s347)))
-        let !t357 = (t351 * (t355 * (s349 + s349)))
-        let !t358 = ((((t354 * (t356 + t356)) * t333) + ((t354 * (s348 + s348)) * t334)) + ((t354 * (t357 + t357)) * t335))
-        let !t359 = (if ((abs t353) - 1.0e-10) > 0 then (if (abs t358) > 0 then 1.0 else 0.0) else 0.0)
-        let !s360 = (if t359 > 0 then (s347 + (negate ((t353 / t358) * t333))) else s347)
-        let !s361 = (if t359 > 0 then (s348 + (negate ((t353 / t358) * t334))) else s348)
-        let !s362 = (if t359 > 0 then (s349 + (negate ((t353 / t358) * t335))) else s349)
-        wrU walk ((12 * i332) + 9) s360
-        wrU walk ((12 * i332) + 10) s361
-        wrU walk ((12 * i332) + 11) s362
+      loopI 0.0 24.0 $ \i320 -> do
+        let !d320 = fromIntegral i320 :: Double
+        chkI walk (12 * i320) 0 11
+        t321 <- rdU walk ((12 * i320) + 6)
+        t322 <- rdU walk ((12 * i320) + 7)
+        t323 <- rdU walk ((12 * i320) + 8)
+        chkI radii ((24 * i1) + i320) 0 0
+        t324 <- rdU radii ((24 * i1) + i320)
+        let !s325 = (t324 / 4.0)
+        t326 <- rdU walk (12 * i320)
+        t327 <- rdU walk ((12 * i320) + 1)
+        t328 <- rdU walk ((12 * i320) + 2)
+        t329 <- rdU walk ((12 * i320) + 3)
+        t330 <- rdU walk ((12 * i320) + 4)
+        t331 <- rdU walk ((12 * i320) + 5)
+        let !s332 = (t326 + (s325 * t329))
+        let !s333 = (t327 + (s325 * t330))
+        let !s334 = (t328 + (s325 * t331))
+        let !t335 = (sqrt ((s332 * s332) + (s334 * s334)))
+        let !t336 = (t335 - 0.8)
+        let !t337 = (sqrt ((t336 * t336) + (s333 * s333)))
+        let !t338 = (t337 - 0.5)
+        let !t339 = (recip (2.0 * t337))
+        let !t340 = (recip (2.0 * t335))
+        let !t341 = (t336 * (t340 * (s332 + s332)))
+        let !t342 = (t336 * (t340 * (s334 + s334)))
+        let !t343 = ((((t339 * (t341 + t341)) * t321) + ((t339 * (s333 + s333)) * t322)) + ((t339 * (t342 + t342)) * t323))
+        let !t344 = (if ((abs t338) - 1.0e-10) > 0 then (if (abs t343) > 0 then 1.0 else 0.0) else 0.0)
+        let !s345 = (if t344 > 0 then (s332 + (negate ((t338 / t343) * t321))) else s332)
+        let !s346 = (if t344 > 0 then (s333 + (negate ((t338 / t343) * t322))) else s333)
+        let !s347 = (if t344 > 0 then (s334 + (negate ((t338 / t343) * t323))) else s334)
+        wrU walk ((12 * i320) + 9) s345
+        wrU walk ((12 * i320) + 10) s346
+        wrU walk ((12 * i320) + 11) s347
         pure ()
-      loopI 0.0 24.0 $ \i363 -> do
-        let !d363 = fromIntegral i363 :: Double
-        chkI walk (12 * i363) 6 11
-        t364 <- rdU walk ((12 * i363) + 6)
-        t365 <- rdU walk ((12 * i363) + 7)
-        t366 <- rdU walk ((12 * i363) + 8)
-        t367 <- rdU walk ((12 * i363) + 9)
-        t368 <- rdU walk ((12 * i363) + 10)
-        t369 <- rdU walk ((12 * i363) + 11)
-        let !t370 = (sqrt ((t367 * t367) + (t369 * t369)))
-        let !t371 = (t370 - 0.8)
-        let !t372 = (sqrt ((t371 * t371) + (t368 * t368)))
-        let !t373 = (t372 - 0.5)
-        let !t374 = (recip (2.0 * t372))
-        let !t375 = (recip (2.0 * t370))
-        let !t376 = (t371 * (t375 * (t367 + t367)))
-        let !t377 = (t371 * (t375 * (t369 + t369)))
-        let !t378 = ((((t374 * (t376 + t376)) * t364) + ((t374 * (t368 + t368)) * t365)) + ((t374 * (t377 + t377)) * t366))
-        let !t379 = (if ((abs t373) - 1.0e-10) > 0 then (if (abs t378) > 0 then 1.0 else 0.0) else 0.0)
-        let !s380 = (if t379 > 0 then (t367 + (negate ((t373 / t378) * t364))) else t367)
-        let !s381 = (if t379 > 0 then (t368 + (negate ((t373 / t378) * t365))) else t368)
-        let !s382 = (if t379 > 0 then (t369 + (negate ((t373 / t378) * t366))) else t369)
-        wrU walk ((12 * i363) + 9) s380
-        wrU walk ((12 * i363) + 10) s381
-        wrU walk ((12 * i363) + 11) s382
+      loopI 0.0 24.0 $ \i348 -> do
+        let !d348 = fromIntegral i348 :: Double
+        chkI walk (12 * i348) 6 11
+        t349 <- rdU walk ((12 * i348) + 6)
+        t350 <- rdU walk ((12 * i348) + 7)
+        t351 <- rdU walk ((12 * i348) + 8)
+        t352 <- rdU walk ((12 * i348) + 9)
+        t353 <- rdU walk ((12 * i348) + 10)
+        t354 <- rdU walk ((12 * i348) + 11)
+        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
+        let !t356 = (t355 - 0.8)
+        let !t357 = (sqrt ((t356 * t356) + (t353 * t353)))
+        let !t358 = (t357 - 0.5)
+        let !t359 = (recip (2.0 * t357))
+        let !t360 = (recip (2.0 * t355))
+        let !t361 = (t356 * (t360 * (t352 + t352)))
+        let !t362 = (t356 * (t360 * (t354 + t354)))
+        let !t363 = ((((t359 * (t361 + t361)) * t349) + ((t359 * (t353 + t353)) * t350)) + ((t359 * (t362 + t362)) * t351))
+        let !t364 = (if ((abs t358) - 1.0e-10) > 0 then (if (abs t363) > 0 then 1.0 else 0.0) else 0.0)
+        let !s365 = (if t364 > 0 then (t352 + (negate ((t358 / t363) * t349))) else t352)
+        let !s366 = (if t364 > 0 then (t353 + (negate ((t358 / t363) * t350))) else t353)
+        let !s367 = (if t364 > 0 then (t354 + (negate ((t358 / t363) * t351))) else t354)
+        wrU walk ((12 * i348) + 9) s365
+        wrU walk ((12 * i348) + 10) s366
+        wrU walk ((12 * i348) + 11) s367
         pure ()
-      loopI 0.0 24.0 $ \i383 -> do
-        let !d383 = fromIntegral i383 :: Double
-        chkI walk (12 * i383) 0 11
-        t384 <- rdU walk ((12 * i383) + 6)
-        t385 <- rdU walk ((12 * i383) + 7)
-        t386 <- rdU walk ((12 * i383) + 8)
-        t387 <- rdU walk ((12 * i383) + 9)
-        t388 <- rdU walk ((12 * i383) + 10)
-        t389 <- rdU walk ((12 * i383) + 11)
-        chkI radii ((24 * i1) + i383) 0 0
-        t390 <- rdU radii ((24 * i1) + i383)
-        let !s391 = (t390 / 4.0)
-        t392 <- rdU walk (12 * i383)
-        t393 <- rdU walk ((12 * i383) + 1)
-        t394 <- rdU walk ((12 * i383) + 2)
-        t395 <- rdU walk ((12 * i383) + 6)
-        t396 <- rdU walk ((12 * i383) + 7)
-        t397 <- rdU walk ((12 * i383) + 8)
-        t398 <- rdU walk ((12 * i383) + 3)
-        t399 <- rdU walk ((12 * i383) + 4)
-        t400 <- rdU walk ((12 * i383) + 5)
-        let !t401 = (if (abs s391) > 0 then 1.0 else 0.0)
-        let !t402 = (sqrt ((t387 * t387) + (t389 * t389)))
-        let !t403 = (t402 - 0.8)
-        let !t404 = (sqrt ((t403 * t403) + (t388 * t388)))
-        let !t405 = (t404 - 0.5)
-        let !t406 = (recip (2.0 * t404))
-        let !t407 = (recip (2.0 * t402))
-        let !t408 = (t403 * (t407 * (t387 + t387)))
-        let !t409 = (t403 * (t407 * (t389 + t389)))
-        let !t410 = ((((t406 * (t408 + t408)) * t384) + ((t406 * (t388 + t388)) * t385)) + ((t406 * (t409 + t409)) * t386))
-        let !t411 = (if ((abs t405) - 1.0e-10) > 0 then (if (abs t410) > 0 then 1.0 else 0.0) else 0.0)
-        let !t412 = (1.0 - t401)
-        let !s413 = ((t401 * (if t411 > 0 then (t387 + (negate ((t405 / t410) * t384))) else t387)) + (t412 * t392))
-        let !s414 = ((t401 * (if t411 > 0 then (t388 + (negate ((t405 / t410) * t385))) else t388)) + (t412 * t393))
-        let !s415 = ((t401 * (if t411 > 0 then (t389 + (negate ((t405 / t410) * t386))) else t389)) + (t412 * t394))
-        chkI verts ((291 * i1) + (12 * i383)) 12 14
-        wrU verts (((291 * i1) + (12 * i383)) + 12) (if (1.0 - (abs (((s413 - s413) + (s414 - s414)) + (s415 - s415)))) > 0 then s413 else t2)
-        wrU verts (((291 * i1) + (12 * i383)) + 13) (if (1.0 - (abs (((s413 - s413) + (s414 - s414)) + (s415 - s415)))) > 0 then s414 else t3)
-        wrU verts (((291 * i1) + (12 * i383)) + 14) (if (1.0 - (abs (((s413 - s413) + (s414 - s414)) + (s415 - s415)))) > 0 then s415 else t4)
+      loopI 0.0 24.0 $ \i368 -> do
+        let !d368 = fromIntegral i368 :: Double
+        chkI walk (12 * i368) 0 11
+        t369 <- rdU walk ((12 * i368) + 6)
+        t370 <- rdU walk ((12 * i368) + 7)
+        t371 <- rdU walk ((12 * i368) + 8)
+        t372 <- rdU walk ((12 * i368) + 9)
+        t373 <- rdU walk ((12 * i368) + 10)
+        t374 <- rdU walk ((12 * i368) + 11)
+        chkI radii ((24 * i1) + i368) 0 0
+        t375 <- rdU radii ((24 * i1) + i368)
+        let !s376 = (t375 / 4.0)
+        t377 <- rdU walk (12 * i368)
+        t378 <- rdU walk ((12 * i368) + 1)
+        t379 <- rdU walk ((12 * i368) + 2)
+        t380 <- rdU walk ((12 * i368) + 3)
+        t381 <- rdU walk ((12 * i368) + 4)
+        t382 <- rdU walk ((12 * i368) + 5)
+        let !t383 = (if (abs s376) > 0 then 1.0 else 0.0)
+        let !t384 = (sqrt ((t372 * t372) + (t374 * t374)))
+        let !t385 = (t384 - 0.8)
+        let !t386 = (sqrt ((t385 * t385) + (t373 * t373)))
+        let !t387 = (t386 - 0.5)
+        let !t388 = (recip (2.0 * t386))
+        let !t389 = (recip (2.0 * t384))
+        let !t390 = (t385 * (t389 * (t372 + t372)))
+        let !t391 = (t385 * (t389 * (t374 + t374)))
+        let !t392 = ((((t388 * (t390 + t390)) * t369) + ((t388 * (t373 + t373)) * t370)) + ((t388 * (t391 + t391)) * t371))
+        let !t393 = (if ((abs t387) - 1.0e-10) > 0 then (if (abs t392) > 0 then 1.0 else 0.0) else 0.0)
+        let !t394 = (1.0 - t383)
+        let !s395 = ((t383 * (if t393 > 0 then (t372 + (negate ((t387 / t392) * t369))) else t372)) + (t394 * t377))
+        let !s396 = ((t383 * (if t393 > 0 then (t373 + (negate ((t387 / t392) * t370))) else t373)) + (t394 * t378))
+        let !s397 = ((t383 * (if t393 > 0 then (t374 + (negate ((t387 / t392) * t371))) else t374)) + (t394 * t379))
+        chkI verts ((291 * i1) + (12 * i368)) 12 14
+        wrU verts (((291 * i1) + (12 * i368)) + 12) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s395 else t2)
+        wrU verts (((291 * i1) + (12 * i368)) + 13) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s396 else t3)
+        wrU verts (((291 * i1) + (12 * i368)) + 14) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s397 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i416 -> do
-        let !d416 = fromIntegral i416 :: Double
-        t417 <- getR v18
-        t418 <- getR v19
-        setR v18 ((t417 * 0.9659258262890683) - (t418 * 0.25881904510252074))
-        setR v19 ((t418 * 0.9659258262890683) + (t417 * 0.25881904510252074))
-        let !s419 = ((t417 * t5) + (t418 * s14))
-        let !s420 = ((t417 * t6) + (t418 * s15))
-        let !s421 = ((t417 * t7) + (t418 * s16))
-        chkI walk (12 * i416) 3 5
-        wrU walk ((12 * i416) + 3) s419
-        wrU walk ((12 * i416) + 4) s420
-        wrU walk ((12 * i416) + 5) s421
+      loopI 0.0 24.0 $ \i398 -> do
+        let !d398 = fromIntegral i398 :: Double
+        t399 <- getR v18
+        t400 <- getR v19
+        setR v18 ((t399 * 0.9659258262890683) - (t400 * 0.25881904510252074))
+        setR v19 ((t400 * 0.9659258262890683) + (t399 * 0.25881904510252074))
+        let !s401 = ((t399 * t5) + (t400 * s14))
+        let !s402 = ((t399 * t6) + (t400 * s15))
+        let !s403 = ((t399 * t7) + (t400 * s16))
+        chkI walk (12 * i398) 3 5
+        wrU walk ((12 * i398) + 3) s401
+        wrU walk ((12 * i398) + 4) s402
+        wrU walk ((12 * i398) + 5) s403
         pure ()
-      loopI 0.0 24.0 $ \i422 -> do
-        let !d422 = fromIntegral i422 :: Double
-        chkI radii ((24 * i1) + i422) 0 0
-        t423 <- rdU radii ((24 * i1) + i422)
-        chkI walk (12 * i422) 3 11
-        t424 <- rdU walk ((12 * i422) + 3)
-        t425 <- rdU walk ((12 * i422) + 4)
-        t426 <- rdU walk ((12 * i422) + 5)
-        let !s427 = (t2 + (t423 * t424))
-        let !s428 = (t3 + (t423 * t425))
-        let !s429 = (t4 + (t423 * t426))
-        let !t430 = (sqrt ((s427 * s427) + (s429 * s429)))
-        let !t431 = (t430 - 0.8)
-        let !t432 = (sqrt ((t431 * t431) + (s428 * s428)))
-        let !t433 = (t432 - 0.5)
-        let !t434 = (recip (2.0 * t432))
-        let !t435 = (recip (2.0 * t430))
-        let !t436 = (t431 * (t435 * (s427 + s427)))
-        let !t437 = (t431 * (t435 * (s429 + s429)))
-        let !t438 = ((((t434 * (t436 + t436)) * t8) + ((t434 * (s428 + s428)) * t9)) + ((t434 * (t437 + t437)) * t10))
-        let !t439 = (if ((abs t433) - 1.0e-10) > 0 then (if (abs t438) > 0 then 1.0 else 0.0) else 0.0)
-        let !s440 = (if t439 > 0 then (s427 + (negate ((t433 / t438) * t8))) else s427)
-        let !s441 = (if t439 > 0 then (s428 + (negate ((t433 / t438) * t9))) else s428)
-        let !s442 = (if t439 > 0 then (s429 + (negate ((t433 / t438) * t10))) else s429)
-        wrU walk ((12 * i422) + 9) s440
-        wrU walk ((12 * i422) + 10) s441
-        wrU walk ((12 * i422) + 11) s442
+      loopI 0.0 24.0 $ \i404 -> do
+        let !d404 = fromIntegral i404 :: Double
+        chkI radii ((24 * i1) + i404) 0 0
+        t405 <- rdU radii ((24 * i1) + i404)
+        chkI walk (12 * i404) 3 11
+        t406 <- rdU walk ((12 * i404) + 3)
+        t407 <- rdU walk ((12 * i404) + 4)
+        t408 <- rdU walk ((12 * i404) + 5)
+        let !s409 = (t2 + (t405 * t406))
+        let !s410 = (t3 + (t405 * t407))
+        let !s411 = (t4 + (t405 * t408))
+        let !t412 = (sqrt ((s409 * s409) + (s411 * s411)))
+        let !t413 = (t412 - 0.8)
+        let !t414 = (sqrt ((t413 * t413) + (s410 * s410)))
+        let !t415 = (t414 - 0.5)
+        let !t416 = (recip (2.0 * t414))
+        let !t417 = (recip (2.0 * t412))
+        let !t418 = (t413 * (t417 * (s409 + s409)))
+        let !t419 = (t413 * (t417 * (s411 + s411)))
+        let !t420 = ((((t416 * (t418 + t418)) * t8) + ((t416 * (s410 + s410)) * t9)) + ((t416 * (t419 + t419)) * t10))
+        let !t421 = (if ((abs t415) - 1.0e-10) > 0 then (if (abs t420) > 0 then 1.0 else 0.0) else 0.0)
+        let !s422 = (if t421 > 0 then (s409 + (negate ((t415 / t420) * t8))) else s409)
+        let !s423 = (if t421 > 0 then (s410 + (negate ((t415 / t420) * t9))) else s410)
+        let !s424 = (if t421 > 0 then (s411 + (negate ((t415 / t420) * t10))) else s411)
+        wrU walk ((12 * i404) + 9) s422
+        wrU walk ((12 * i404) + 10) s423
+        wrU walk ((12 * i404) + 11) s424
         pure ()
-      loopI 0.0 24.0 $ \i443 -> do
-        let !d443 = fromIntegral i443 :: Double
-        chkI walk (12 * i443) 9 11
-        t444 <- rdU walk ((12 * i443) + 9)
-        t445 <- rdU walk ((12 * i443) + 10)
-        t446 <- rdU walk ((12 * i443) + 11)
-        let !t447 = (sqrt ((t444 * t444) + (t446 * t446)))
-        let !t448 = (t447 - 0.8)
-        let !t449 = (sqrt ((t448 * t448) + (t445 * t445)))
-        let !t450 = (t449 - 0.5)
-        let !t451 = (recip (2.0 * t449))
-        let !t452 = (recip (2.0 * t447))
-        let !t453 = (t448 * (t452 * (t444 + t444)))
-        let !t454 = (t448 * (t452 * (t446 + t446)))
-        let !t455 = ((((t451 * (t453 + t453)) * t8) + ((t451 * (t445 + t445)) * t9)) + ((t451 * (t454 + t454)) * t10))
-        let !t456 = (if ((abs t450) - 1.0e-10) > 0 then (if (abs t455) > 0 then 1.0 else 0.0) else 0.0)
-        let !s457 = (if t456 > 0 then (t444 + (negate ((t450 / t455) * t8))) else t444)
-        let !s458 = (if t456 > 0 then (t445 + (negate ((t450 / t455) * t9))) else t445)
-        let !s459 = (if t456 > 0 then (t446 + (negate ((t450 / t455) * t10))) else t446)
-        wrU walk ((12 * i443) + 9) s457
-        wrU walk ((12 * i443) + 10) s458
-        wrU walk ((12 * i443) + 11) s459
+      loopI 0.0 24.0 $ \i425 -> do
+        let !d425 = fromIntegral i425 :: Double
+        chkI walk (12 * i425) 9 11
+        t426 <- rdU walk ((12 * i425) + 9)
+        t427 <- rdU walk ((12 * i425) + 10)
+        t428 <- rdU walk ((12 * i425) + 11)
+        let !t429 = (sqrt ((t426 * t426) + (t428 * t428)))
+        let !t430 = (t429 - 0.8)
+        let !t431 = (sqrt ((t430 * t430) + (t427 * t427)))
+        let !t432 = (t431 - 0.5)
+        let !t433 = (recip (2.0 * t431))
+        let !t434 = (recip (2.0 * t429))
+        let !t435 = (t430 * (t434 * (t426 + t426)))
+        let !t436 = (t430 * (t434 * (t428 + t428)))
+        let !t437 = ((((t433 * (t435 + t435)) * t8) + ((t433 * (t427 + t427)) * t9)) + ((t433 * (t436 + t436)) * t10))
+        let !t438 = (if ((abs t432) - 1.0e-10) > 0 then (if (abs t437) > 0 then 1.0 else 0.0) else 0.0)
+        let !s439 = (if t438 > 0 then (t426 + (negate ((t432 / t437) * t8))) else t426)
+        let !s440 = (if t438 > 0 then (t427 + (negate ((t432 / t437) * t9))) else t427)
+        let !s441 = (if t438 > 0 then (t428 + (negate ((t432 / t437) * t10))) else t428)
+        wrU walk ((12 * i425) + 9) s439
+        wrU walk ((12 * i425) + 10) s440
+        wrU walk ((12 * i425) + 11) s441
         pure ()
-      loopI 0.0 24.0 $ \i460 -> do
-        let !d460 = fromIntegral i460 :: Double
-        chkI walk (12 * i460) 3 11
-        t461 <- rdU walk ((12 * i460) + 9)
-        t462 <- rdU walk ((12 * i460) + 10)
-        t463 <- rdU walk ((12 * i460) + 11)
-        chkI radii ((24 * i1) + i460) 0 0
-        t464 <- rdU radii ((24 * i1) + i460)
-        t465 <- rdU walk ((12 * i460) + 3)
-        t466 <- rdU walk ((12 * i460) + 4)
-        t467 <- rdU walk ((12 * i460) + 5)
-        let !t468 = (if (abs t464) > 0 then 1.0 else 0.0)
-        let !t469 = (sqrt ((t461 * t461) + (t463 * t463)))
-        let !t470 = (t469 - 0.8)
-        let !t471 = (sqrt ((t470 * t470) + (t462 * t462)))
-        let !t472 = (t471 - 0.5)
-        let !t473 = (recip (2.0 * t471))
-        let !t474 = (recip (2.0 * t469))
-        let !t475 = (t470 * (t474 * (t461 + t461)))
-        let !t476 = (t470 * (t474 * (t463 + t463)))
-        let !t477 = ((((t473 * (t475 + t475)) * t8) + ((t473 * (t462 + t462)) * t9)) + ((t473 * (t476 + t476)) * t10))
-        let !t478 = (if ((abs t472) - 1.0e-10) > 0 then (if (abs t477) > 0 then 1.0 else 0.0) else 0.0)
-        let !t479 = (1.0 - t468)
-        let !s480 = ((t468 * (if t478 > 0 then (t461 + (negate ((t472 / t477) * t8))) else t461)) + (t479 * t2))
-        let !s481 = ((t468 * (if t478 > 0 then (t462 + (negate ((t472 / t477) * t9))) else t462)) + (t479 * t3))
-        let !s482 = ((t468 * (if t478 > 0 then (t463 + (negate ((t472 / t477) * t10))) else t463)) + (t479 * t4))
-        let !t483 = (1.0 - (abs (((s480 - s480) + (s481 - s481)) + (s482 - s482))))
-        let !s484 = (if t483 > 0 then s480 else t2)
-        let !s485 = (if t483 > 0 then s481 else t3)
-        let !s486 = (if t483 > 0 then s482 else t4)
-        chkI verts ((291 * i1) + (12 * i460)) 3 14
-        wrU verts (((291 * i1) + (12 * i460)) + 12) s484
-        wrU verts (((291 * i1) + (12 * i460)) + 13) s485
-        wrU verts (((291 * i1) + (12 * i460)) + 14) s486
-        wrU verts (((291 * i1) + (12 * i460)) + 3) (t2 + (0.25 * (s484 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i460)) + 4) (t3 + (0.25 * (s485 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i460)) + 5) (t4 + (0.25 * (s486 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i460)) + 6) (t2 + (0.5 * (s484 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i460)) + 7) (t3 + (0.5 * (s485 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i460)) + 8) (t4 + (0.5 * (s486 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i460)) + 9) (t2 + (0.75 * (s484 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i460)) + 10) (t3 + (0.75 * (s485 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i460)) + 11) (t4 + (0.75 * (s486 + (negate t4))))
+      loopI 0.0 24.0 $ \i442 -> do
+        let !d442 = fromIntegral i442 :: Double
+        chkI walk (12 * i442) 3 11
+        t443 <- rdU walk ((12 * i442) + 9)
+        t444 <- rdU walk ((12 * i442) + 10)
+        t445 <- rdU walk ((12 * i442) + 11)
+        chkI radii ((24 * i1) + i442) 0 0
+        t446 <- rdU radii ((24 * i1) + i442)
+        t447 <- rdU walk ((12 * i442) + 3)
+        t448 <- rdU walk ((12 * i442) + 4)
+        t449 <- rdU walk ((12 * i442) + 5)
+        let !t450 = (if (abs t446) > 0 then 1.0 else 0.0)
+        let !t451 = (sqrt ((t443 * t443) + (t445 * t445)))
+        let !t452 = (t451 - 0.8)
+        let !t453 = (sqrt ((t452 * t452) + (t444 * t444)))
+        let !t454 = (t453 - 0.5)
+        let !t455 = (recip (2.0 * t453))
+        let !t456 = (recip (2.0 * t451))
+        let !t457 = (t452 * (t456 * (t443 + t443)))
+        let !t458 = (t452 * (t456 * (t445 + t445)))
+        let !t459 = ((((t455 * (t457 + t457)) * t8) + ((t455 * (t444 + t444)) * t9)) + ((t455 * (t458 + t458)) * t10))
+        let !t460 = (if ((abs t454) - 1.0e-10) > 0 then (if (abs t459) > 0 then 1.0 else 0.0) else 0.0)
+        let !t461 = (1.0 - t450)
+        let !s462 = ((t450 * (if t460 > 0 then (t443 + (negate ((t454 / t459) * t8))) else t443)) + (t461 * t2))
+        let !s463 = ((t450 * (if t460 > 0 then (t444 + (negate ((t454 / t459) * t9))) else t444)) + (t461 * t3))
+        let !s464 = ((t450 * (if t460 > 0 then (t445 + (negate ((t454 / t459) * t10))) else t445)) + (t461 * t4))
+        let !t465 = (1.0 - (abs (((s462 - s462) + (s463 - s463)) + (s464 - s464))))
+        let !s466 = (if t465 > 0 then s462 else t2)
+        let !s467 = (if t465 > 0 then s463 else t3)
+        let !s468 = (if t465 > 0 then s464 else t4)
+        chkI verts ((291 * i1) + (12 * i442)) 3 14
+        wrU verts (((291 * i1) + (12 * i442)) + 12) s466
+        wrU verts (((291 * i1) + (12 * i442)) + 13) s467
+        wrU verts (((291 * i1) + (12 * i442)) + 14) s468
+        wrU verts (((291 * i1) + (12 * i442)) + 3) (t2 + (0.25 * (s466 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i442)) + 4) (t3 + (0.25 * (s467 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i442)) + 5) (t4 + (0.25 * (s468 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i442)) + 6) (t2 + (0.5 * (s466 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i442)) + 7) (t3 + (0.5 * (s467 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i442)) + 8) (t4 + (0.5 * (s468 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i442)) + 9) (t2 + (0.75 * (s466 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i442)) + 10) (t3 + (0.75 * (s467 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i442)) + 11) (t4 + (0.75 * (s468 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -2064,421 +2064,403 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         t102 <- rdU walk (12 * i96)
         t103 <- rdU walk ((12 * i96) + 1)
         t104 <- rdU walk ((12 * i96) + 2)
-        t105 <- rdU walk ((12 * i96) + 6)
-        t106 <- rdU walk ((12 * i96) + 7)
-        t107 <- rdU walk ((12 * i96) + 8)
-        t108 <- rdU walk ((12 * i96) + 3)
-        t109 <- rdU walk ((12 * i96) + 4)
-        t110 <- rdU walk ((12 * i96) + 5)
-        let !s111 = (t102 + (s101 * t108))
-        let !s112 = (t103 + (s101 * t109))
-        let !s113 = (t104 + (s101 * t110))
-        let !t114 = (sqrt ((s111 * s111) + (s113 * s113)))
-        let !t115 = (t114 - 1.0)
-        let !t116 = (recip (2.0 * t114))
-        let !t117 = (((t116 * (s111 + s111)) * t97) + ((t116 * (s113 + s113)) * t99))
-        let !t118 = (if ((abs t115) - 1.0e-10) > 0 then (if (abs t117) > 0 then 1.0 else 0.0) else 0.0)
-        let !s119 = (if t118 > 0 then (s111 + (negate ((t115 / t117) * t97))) else s111)
-        let !s120 = (if t118 > 0 then (s112 + (negate ((t115 / t117) * t98))) else s112)
-        let !s121 = (if t118 > 0 then (s113 + (negate ((t115 / t117) * t99))) else s113)
-        wrU walk ((12 * i96) + 9) s119
-        wrU walk ((12 * i96) + 10) s120
-        wrU walk ((12 * i96) + 11) s121
+        t105 <- rdU walk ((12 * i96) + 3)
+        t106 <- rdU walk ((12 * i96) + 4)
+        t107 <- rdU walk ((12 * i96) + 5)
+        let !s108 = (t102 + (s101 * t105))
+        let !s109 = (t103 + (s101 * t106))
+        let !s110 = (t104 + (s101 * t107))
+        let !t111 = (sqrt ((s108 * s108) + (s110 * s110)))
+        let !t112 = (t111 - 1.0)
+        let !t113 = (recip (2.0 * t111))
+        let !t114 = (((t113 * (s108 + s108)) * t97) + ((t113 * (s110 + s110)) * t99))
+        let !t115 = (if ((abs t112) - 1.0e-10) > 0 then (if (abs t114) > 0 then 1.0 else 0.0) else 0.0)
+        let !s116 = (if t115 > 0 then (s108 + (negate ((t112 / t114) * t97))) else s108)
+        let !s117 = (if t115 > 0 then (s109 + (negate ((t112 / t114) * t98))) else s109)
+        let !s118 = (if t115 > 0 then (s110 + (negate ((t112 / t114) * t99))) else s110)
+        wrU walk ((12 * i96) + 9) s116
+        wrU walk ((12 * i96) + 10) s117
+        wrU walk ((12 * i96) + 11) s118
         pure ()
-      loopI 0.0 24.0 $ \i122 -> do
-        let !d122 = fromIntegral i122 :: Double
-        chkI walk (12 * i122) 6 11
-        t123 <- rdU walk ((12 * i122) + 6)
-        t124 <- rdU walk ((12 * i122) + 7)
-        t125 <- rdU walk ((12 * i122) + 8)
-        t126 <- rdU walk ((12 * i122) + 9)
-        t127 <- rdU walk ((12 * i122) + 10)
-        t128 <- rdU walk ((12 * i122) + 11)
-        let !t129 = (sqrt ((t126 * t126) + (t128 * t128)))
-        let !t130 = (t129 - 1.0)
-        let !t131 = (recip (2.0 * t129))
-        let !t132 = (((t131 * (t126 + t126)) * t123) + ((t131 * (t128 + t128)) * t125))
-        let !t133 = (if ((abs t130) - 1.0e-10) > 0 then (if (abs t132) > 0 then 1.0 else 0.0) else 0.0)
-        let !s134 = (if t133 > 0 then (t126 + (negate ((t130 / t132) * t123))) else t126)
-        let !s135 = (if t133 > 0 then (t127 + (negate ((t130 / t132) * t124))) else t127)
-        let !s136 = (if t133 > 0 then (t128 + (negate ((t130 / t132) * t125))) else t128)
-        wrU walk ((12 * i122) + 9) s134
-        wrU walk ((12 * i122) + 10) s135
-        wrU walk ((12 * i122) + 11) s136
+      loopI 0.0 24.0 $ \i119 -> do
+        let !d119 = fromIntegral i119 :: Double
+        chkI walk (12 * i119) 6 11
+        t120 <- rdU walk ((12 * i119) + 6)
+        t121 <- rdU walk ((12 * i119) + 7)
+        t122 <- rdU walk ((12 * i119) + 8)
+        t123 <- rdU walk ((12 * i119) + 9)
+        t124 <- rdU walk ((12 * i119) + 10)
+        t125 <- rdU walk ((12 * i119) + 11)
+        let !t126 = (sqrt ((t123 * t123) + (t125 * t125)))
+        let !t127 = (t126 - 1.0)
+        let !t128 = (recip (2.0 * t126))
+        let !t129 = (((t128 * (t123 + t123)) * t120) + ((t128 * (t125 + t125)) * t122))
+        let !t130 = (if ((abs t127) - 1.0e-10) > 0 then (if (abs t129) > 0 then 1.0 else 0.0) else 0.0)
+        let !s131 = (if t130 > 0 then (t123 + (negate ((t127 / t129) * t120))) else t123)
+        let !s132 = (if t130 > 0 then (t124 + (negate ((t127 / t129) * t121))) else t124)
+        let !s133 = (if t130 > 0 then (t125 + (negate ((t127 / t129) * t122))) else t125)
+        wrU walk ((12 * i119) + 9) s131
+        wrU walk ((12 * i119) + 10) s132
+        wrU walk ((12 * i119) + 11) s133
         pure ()
-      loopI 0.0 24.0 $ \i137 -> do
-        let !d137 = fromIntegral i137 :: Double
-        chkI walk (12 * i137) 0 11
-        t138 <- rdU walk ((12 * i137) + 6)
-        t139 <- rdU walk ((12 * i137) + 7)
-        t140 <- rdU walk ((12 * i137) + 8)
-        t141 <- rdU walk ((12 * i137) + 9)
-        t142 <- rdU walk ((12 * i137) + 10)
-        t143 <- rdU walk ((12 * i137) + 11)
-        chkI radii ((24 * i1) + i137) 0 0
-        t144 <- rdU radii ((24 * i1) + i137)
-        let !s145 = (t144 / 4.0)
-        t146 <- rdU walk (12 * i137)
-        t147 <- rdU walk ((12 * i137) + 1)
-        t148 <- rdU walk ((12 * i137) + 2)
-        t149 <- rdU walk ((12 * i137) + 6)
-        t150 <- rdU walk ((12 * i137) + 7)
-        t151 <- rdU walk ((12 * i137) + 8)
-        t152 <- rdU walk ((12 * i137) + 3)
-        t153 <- rdU walk ((12 * i137) + 4)
-        t154 <- rdU walk ((12 * i137) + 5)
-        let !t155 = (if (abs s145) > 0 then 1.0 else 0.0)
-        let !t156 = (sqrt ((t141 * t141) + (t143 * t143)))
-        let !t157 = (t156 - 1.0)
-        let !t158 = (recip (2.0 * t156))
-        let !t159 = (((t158 * (t141 + t141)) * t138) + ((t158 * (t143 + t143)) * t140))
-        let !t160 = (if ((abs t157) - 1.0e-10) > 0 then (if (abs t159) > 0 then 1.0 else 0.0) else 0.0)
-        let !t161 = (1.0 - t155)
-        let !s162 = ((t155 * (if t160 > 0 then (t141 + (negate ((t157 / t159) * t138))) else t141)) + (t161 * t146))
-        let !s163 = ((t155 * (if t160 > 0 then (t142 + (negate ((t157 / t159) * t139))) else t142)) + (t161 * t147))
-        let !s164 = ((t155 * (if t160 > 0 then (t143 + (negate ((t157 / t159) * t140))) else t143)) + (t161 * t148))
-        chkI verts ((291 * i1) + (12 * i137)) 6 8
-        wrU verts (((291 * i1) + (12 * i137)) + 6) (if (1.0 - (abs (((s162 - s162) + (s163 - s163)) + (s164 - s164)))) > 0 then s162 else t2)
-        wrU verts (((291 * i1) + (12 * i137)) + 7) (if (1.0 - (abs (((s162 - s162) + (s163 - s163)) + (s164 - s164)))) > 0 then s163 else t3)
-        wrU verts (((291 * i1) + (12 * i137)) + 8) (if (1.0 - (abs (((s162 - s162) + (s163 - s163)) + (s164 - s164)))) > 0 then s164 else t4)
-        wrU walk (12 * i137) s162
-        wrU walk ((12 * i137) + 1) s163
-        wrU walk ((12 * i137) + 2) s164
-        let !t165 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
-        let !t166 = (if (abs s145) > 0 then (recip s145) else 0.0)
-        let !t167 = (t166 * ((if t160 > 0 then (t141 + (negate ((t157 / t159) * t138))) else t141) + (negate t146)))
-        let !t168 = (t158 * (t141 + t141))
-        let !t169 = (t158 * (t143 + t143))
-        let !t170 = (sqrt ((t168 * t168) + (t169 * t169)))
-        let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
-        let !t172 = (t171 * t168)
-        let !t173 = (t171 * t169)
-        let !t174 = (t166 * ((if t160 > 0 then (t143 + (negate ((t157 / t159) * t140))) else t143) + (negate t148)))
-        let !t175 = ((t172 * t167) + (t173 * t174))
-        let !t176 = (t167 + (negate (t175 * t172)))
-        let !t177 = (t166 * ((if t160 > 0 then (t142 + (negate ((t157 / t159) * t139))) else t142) + (negate t147)))
-        let !t178 = (t174 + (negate (t175 * t173)))
-        let !t179 = (sqrt (((t176 * t176) + (t177 * t177)) + (t178 * t178)))
-        let !t180 = (if t179 > 0 then (recip (if (t179 - 1.0e-300) > 0 then t179 else 1.0e-300)) else 0.0)
-        let !s181 = ((t155 * (t165 * (t180 * t176))) + (t161 * t152))
-        let !s182 = ((t155 * (t165 * (t180 * t177))) + (t161 * t153))
-        let !s183 = ((t155 * (t165 * (t180 * t178))) + (t161 * t154))
-        wrU walk ((12 * i137) + 3) s181
-        wrU walk ((12 * i137) + 4) s182
-        wrU walk ((12 * i137) + 5) s183
-        let !s184 = ((t155 * t172) + (t161 * t149))
-        let !s185 = (t161 * t150)
-        let !s186 = ((t155 * t173) + (t161 * t151))
-        wrU walk ((12 * i137) + 6) s184
-        wrU walk ((12 * i137) + 7) s185
-        wrU walk ((12 * i137) + 8) s186
+      loopI 0.0 24.0 $ \i134 -> do
+        let !d134 = fromIntegral i134 :: Double
+        chkI walk (12 * i134) 0 11
+        t135 <- rdU walk ((12 * i134) + 6)
+        t136 <- rdU walk ((12 * i134) + 7)
+        t137 <- rdU walk ((12 * i134) + 8)
+        t138 <- rdU walk ((12 * i134) + 9)
+        t139 <- rdU walk ((12 * i134) + 10)
+        t140 <- rdU walk ((12 * i134) + 11)
+        chkI radii ((24 * i1) + i134) 0 0
+        t141 <- rdU radii ((24 * i1) + i134)
+        let !s142 = (t141 / 4.0)
+        t143 <- rdU walk (12 * i134)
+        t144 <- rdU walk ((12 * i134) + 1)
+        t145 <- rdU walk ((12 * i134) + 2)
+        t146 <- rdU walk ((12 * i134) + 3)
+        t147 <- rdU walk ((12 * i134) + 4)
+        t148 <- rdU walk ((12 * i134) + 5)
+        let !t149 = (if (abs s142) > 0 then 1.0 else 0.0)
+        let !t150 = (sqrt ((t138 * t138) + (t140 * t140)))
+        let !t151 = (t150 - 1.0)
+        let !t152 = (recip (2.0 * t150))
+        let !t153 = (((t152 * (t138 + t138)) * t135) + ((t152 * (t140 + t140)) * t137))
+        let !t154 = (if ((abs t151) - 1.0e-10) > 0 then (if (abs t153) > 0 then 1.0 else 0.0) else 0.0)
+        let !t155 = (1.0 - t149)
+        let !s156 = ((t149 * (if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138)) + (t155 * t143))
+        let !s157 = ((t149 * (if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139)) + (t155 * t144))
+        let !s158 = ((t149 * (if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140)) + (t155 * t145))
+        chkI verts ((291 * i1) + (12 * i134)) 6 8
+        wrU verts (((291 * i1) + (12 * i134)) + 6) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s156 else t2)
+        wrU verts (((291 * i1) + (12 * i134)) + 7) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s157 else t3)
+        wrU verts (((291 * i1) + (12 * i134)) + 8) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s158 else t4)
+        wrU walk (12 * i134) s156
+        wrU walk ((12 * i134) + 1) s157
+        wrU walk ((12 * i134) + 2) s158
+        let !t159 = (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148)))
+        let !t160 = (if (abs s142) > 0 then (recip s142) else 0.0)
+        let !t161 = (t160 * ((if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138) + (negate t143)))
+        let !t162 = (t152 * (t138 + t138))
+        let !t163 = (t152 * (t140 + t140))
+        let !t164 = (sqrt ((t162 * t162) + (t163 * t163)))
+        let !t165 = (if t164 > 0 then (recip (if (t164 - 1.0e-300) > 0 then t164 else 1.0e-300)) else 0.0)
+        let !t166 = (t165 * t162)
+        let !t167 = (t165 * t163)
+        let !t168 = (t160 * ((if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140) + (negate t145)))
+        let !t169 = ((t166 * t161) + (t167 * t168))
+        let !t170 = (t161 + (negate (t169 * t166)))
+        let !t171 = (t160 * ((if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139) + (negate t144)))
+        let !t172 = (t168 + (negate (t169 * t167)))
+        let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
+        let !t174 = (if t173 > 0 then (recip (if (t173 - 1.0e-300) > 0 then t173 else 1.0e-300)) else 0.0)
+        let !s175 = ((t149 * (t159 * (t174 * t170))) + (t155 * t146))
+        let !s176 = ((t149 * (t159 * (t174 * t171))) + (t155 * t147))
+        let !s177 = ((t149 * (t159 * (t174 * t172))) + (t155 * t148))
+        wrU walk ((12 * i134) + 3) s175
+        wrU walk ((12 * i134) + 4) s176
+        wrU walk ((12 * i134) + 5) s177
+        let !s178 = ((t149 * t166) + (t155 * t135))
+        let !s179 = (t155 * t136)
+        let !s180 = ((t149 * t167) + (t155 * t137))
+        wrU walk ((12 * i134) + 6) s178
+        wrU walk ((12 * i134) + 7) s179
+        wrU walk ((12 * i134) + 8) s180
         pure ()
-      loopI 0.0 24.0 $ \i187 -> do
-        let !d187 = fromIntegral i187 :: Double
-        chkI walk (12 * i187) 0 11
-        t188 <- rdU walk ((12 * i187) + 6)
-        t189 <- rdU walk ((12 * i187) + 7)
-        t190 <- rdU walk ((12 * i187) + 8)
-        chkI radii ((24 * i1) + i187) 0 0
-        t191 <- rdU radii ((24 * i1) + i187)
-        let !s192 = (t191 / 4.0)
-        t193 <- rdU walk (12 * i187)
-        t194 <- rdU walk ((12 * i187) + 1)
-        t195 <- rdU walk ((12 * i187) + 2)
-        t196 <- rdU walk ((12 * i187) + 6)
-        t197 <- rdU walk ((12 * i187) + 7)
-        t198 <- rdU walk ((12 * i187) + 8)
-        t199 <- rdU walk ((12 * i187) + 3)
-        t200 <- rdU walk ((12 * i187) + 4)
-        t201 <- rdU walk ((12 * i187) + 5)
-        let !s202 = (t193 + (s192 * t199))
-        let !s203 = (t194 + (s192 * t200))
-        let !s204 = (t195 + (s192 * t201))
-        let !t205 = (sqrt ((s202 * s202) + (s204 * s204)))
-        let !t206 = (t205 - 1.0)
-        let !t207 = (recip (2.0 * t205))
-        let !t208 = (((t207 * (s202 + s202)) * t188) + ((t207 * (s204 + s204)) * t190))
-        let !t209 = (if ((abs t206) - 1.0e-10) > 0 then (if (abs t208) > 0 then 1.0 else 0.0) else 0.0)
-        let !s210 = (if t209 > 0 then (s202 + (negate ((t206 / t208) * t188))) else s202)
-        let !s211 = (if t209 > 0 then (s203 + (negate ((t206 / t208) * t189))) else s203)
-        let !s212 = (if t209 > 0 then (s204 + (negate ((t206 / t208) * t190))) else s204)
-        wrU walk ((12 * i187) + 9) s210
-        wrU walk ((12 * i187) + 10) s211
-        wrU walk ((12 * i187) + 11) s212
+      loopI 0.0 24.0 $ \i181 -> do
+        let !d181 = fromIntegral i181 :: Double
+        chkI walk (12 * i181) 0 11
+        t182 <- rdU walk ((12 * i181) + 6)
+        t183 <- rdU walk ((12 * i181) + 7)
+        t184 <- rdU walk ((12 * i181) + 8)
+        chkI radii ((24 * i1) + i181) 0 0
+        t185 <- rdU radii ((24 * i1) + i181)
+        let !s186 = (t185 / 4.0)
+        t187 <- rdU walk (12 * i181)
+        t188 <- rdU walk ((12 * i181) + 1)
+        t189 <- rdU walk ((12 * i181) + 2)
+        t190 <- rdU walk ((12 * i181) + 3)
+        t191 <- rdU walk ((12 * i181) + 4)
+        t192 <- rdU walk ((12 * i181) + 5)
+        let !s193 = (t187 + (s186 * t190))
+        let !s194 = (t188 + (s186 * t191))
+        let !s195 = (t189 + (s186 * t192))
+        let !t196 = (sqrt ((s193 * s193) + (s195 * s195)))
+        let !t197 = (t196 - 1.0)
+        let !t198 = (recip (2.0 * t196))
+        let !t199 = (((t198 * (s193 + s193)) * t182) + ((t198 * (s195 + s195)) * t184))
+        let !t200 = (if ((abs t197) - 1.0e-10) > 0 then (if (abs t199) > 0 then 1.0 else 0.0) else 0.0)
+        let !s201 = (if t200 > 0 then (s193 + (negate ((t197 / t199) * t182))) else s193)
+        let !s202 = (if t200 > 0 then (s194 + (negate ((t197 / t199) * t183))) else s194)
+        let !s203 = (if t200 > 0 then (s195 + (negate ((t197 / t199) * t184))) else s195)
+        wrU walk ((12 * i181) + 9) s201
+        wrU walk ((12 * i181) + 10) s202
+        wrU walk ((12 * i181) + 11) s203
         pure ()
-      loopI 0.0 24.0 $ \i213 -> do
-        let !d213 = fromIntegral i213 :: Double
-        chkI walk (12 * i213) 6 11
-        t214 <- rdU walk ((12 * i213) + 6)
-        t215 <- rdU walk ((12 * i213) + 7)
-        t216 <- rdU walk ((12 * i213) + 8)
-        t217 <- rdU walk ((12 * i213) + 9)
-        t218 <- rdU walk ((12 * i213) + 10)
-        t219 <- rdU walk ((12 * i213) + 11)
-        let !t220 = (sqrt ((t217 * t217) + (t219 * t219)))
-        let !t221 = (t220 - 1.0)
-        let !t222 = (recip (2.0 * t220))
-        let !t223 = (((t222 * (t217 + t217)) * t214) + ((t222 * (t219 + t219)) * t216))
-        let !t224 = (if ((abs t221) - 1.0e-10) > 0 then (if (abs t223) > 0 then 1.0 else 0.0) else 0.0)
-        let !s225 = (if t224 > 0 then (t217 + (negate ((t221 / t223) * t214))) else t217)
-        let !s226 = (if t224 > 0 then (t218 + (negate ((t221 / t223) * t215))) else t218)
-        let !s227 = (if t224 > 0 then (t219 + (negate ((t221 / t223) * t216))) else t219)
-        wrU walk ((12 * i213) + 9) s225
-        wrU walk ((12 * i213) + 10) s226
-        wrU walk ((12 * i213) + 11) s227
+      loopI 0.0 24.0 $ \i204 -> do
+        let !d204 = fromIntegral i204 :: Double
+        chkI walk (12 * i204) 6 11
+        t205 <- rdU walk ((12 * i204) + 6)
+        t206 <- rdU walk ((12 * i204) + 7)
+        t207 <- rdU walk ((12 * i204) + 8)
+        t208 <- rdU walk ((12 * i204) + 9)
+        t209 <- rdU walk ((12 * i204) + 10)
+        t210 <- rdU walk ((12 * i204) + 11)
+        let !t211 = (sqrt ((t208 * t208) + (t210 * t210)))
+        let !t212 = (t211 - 1.0)
+        let !t213 = (recip (2.0 * t211))
+        let !t214 = (((t213 * (t208 + t208)) * t205) + ((t213 * (t210 + t210)) * t207))
+        let !t215 = (if ((abs t212) - 1.0e-10) > 0 then (if (abs t214) > 0 then 1.0 else 0.0) else 0.0)
+        let !s216 = (if t215 > 0 then (t208 + (negate ((t212 / t214) * t205))) else t208)
+        let !s217 = (if t215 > 0 then (t209 + (negate ((t212 / t214) * t206))) else t209)
+        let !s218 = (if t215 > 0 then (t210 + (negate ((t212 / t214) * t207))) else t210)
+        wrU walk ((12 * i204) + 9) s216
+        wrU walk ((12 * i204) + 10) s217
+        wrU walk ((12 * i204) + 11) s218
         pure ()
-      loopI 0.0 24.0 $ \i228 -> do
-        let !d228 = fromIntegral i228 :: Double
-        chkI walk (12 * i228) 0 11
-        t229 <- rdU walk ((12 * i228) + 6)
-        t230 <- rdU walk ((12 * i228) + 7)
-        t231 <- rdU walk ((12 * i228) + 8)
-        t232 <- rdU walk ((12 * i228) + 9)
-        t233 <- rdU walk ((12 * i228) + 10)
-        t234 <- rdU walk ((12 * i228) + 11)
-        chkI radii ((24 * i1) + i228) 0 0
-        t235 <- rdU radii ((24 * i1) + i228)
-        let !s236 = (t235 / 4.0)
-        t237 <- rdU walk (12 * i228)
-        t238 <- rdU walk ((12 * i228) + 1)
-        t239 <- rdU walk ((12 * i228) + 2)
-        t240 <- rdU walk ((12 * i228) + 6)
-        t241 <- rdU walk ((12 * i228) + 7)
-        t242 <- rdU walk ((12 * i228) + 8)
-        t243 <- rdU walk ((12 * i228) + 3)
-        t244 <- rdU walk ((12 * i228) + 4)
-        t245 <- rdU walk ((12 * i228) + 5)
-        let !t246 = (if (abs s236) > 0 then 1.0 else 0.0)
-        let !t247 = (sqrt ((t232 * t232) + (t234 * t234)))
-        let !t248 = (t247 - 1.0)
-        let !t249 = (recip (2.0 * t247))
-        let !t250 = (((t249 * (t232 + t232)) * t229) + ((t249 * (t234 + t234)) * t231))
-        let !t251 = (if ((abs t248) - 1.0e-10) > 0 then (if (abs t250) > 0 then 1.0 else 0.0) else 0.0)
-        let !t252 = (1.0 - t246)
-        let !s253 = ((t246 * (if t251 > 0 then (t232 + (negate ((t248 / t250) * t229))) else t232)) + (t252 * t237))
-        let !s254 = ((t246 * (if t251 > 0 then (t233 + (negate ((t248 / t250) * t230))) else t233)) + (t252 * t238))
-        let !s255 = ((t246 * (if t251 > 0 then (t234 + (negate ((t248 / t250) * t231))) else t234)) + (t252 * t239))
-        chkI verts ((291 * i1) + (12 * i228)) 9 11
-        wrU verts (((291 * i1) + (12 * i228)) + 9) (if (1.0 - (abs (((s253 - s253) + (s254 - s254)) + (s255 - s255)))) > 0 then s253 else t2)
-        wrU verts (((291 * i1) + (12 * i228)) + 10) (if (1.0 - (abs (((s253 - s253) + (s254 - s254)) + (s255 - s255)))) > 0 then s254 else t3)
-        wrU verts (((291 * i1) + (12 * i228)) + 11) (if (1.0 - (abs (((s253 - s253) + (s254 - s254)) + (s255 - s255)))) > 0 then s255 else t4)
-        wrU walk (12 * i228) s253
-        wrU walk ((12 * i228) + 1) s254
-        wrU walk ((12 * i228) + 2) s255
-        let !t256 = (sqrt (((t243 * t243) + (t244 * t244)) + (t245 * t245)))
-        let !t257 = (if (abs s236) > 0 then (recip s236) else 0.0)
-        let !t258 = (t257 * ((if t251 > 0 then (t232 + (negate ((t248 / t250) * t229))) else t232) + (negate t237)))
-        let !t259 = (t249 * (t232 + t232))
-        let !t260 = (t249 * (t234 + t234))
-        let !t261 = (sqrt ((t259 * t259) + (t260 * t260)))
-        let !t262 = (if t261 > 0 then (recip (if (t261 - 1.0e-300) > 0 then t261 else 1.0e-300)) else 0.0)
-        let !t263 = (t262 * t259)
-        let !t264 = (t262 * t260)
-        let !t265 = (t257 * ((if t251 > 0 then (t234 + (negate ((t248 / t250) * t231))) else t234) + (negate t239)))
-        let !t266 = ((t263 * t258) + (t264 * t265))
-        let !t267 = (t258 + (negate (t266 * t263)))
-        let !t268 = (t257 * ((if t251 > 0 then (t233 + (negate ((t248 / t250) * t230))) else t233) + (negate t238)))
-        let !t269 = (t265 + (negate (t266 * t264)))
-        let !t270 = (sqrt (((t267 * t267) + (t268 * t268)) + (t269 * t269)))
-        let !t271 = (if t270 > 0 then (recip (if (t270 - 1.0e-300) > 0 then t270 else 1.0e-300)) else 0.0)
-        let !s272 = ((t246 * (t256 * (t271 * t267))) + (t252 * t243))
-        let !s273 = ((t246 * (t256 * (t271 * t268))) + (t252 * t244))
-        let !s274 = ((t246 * (t256 * (t271 * t269))) + (t252 * t245))
-        wrU walk ((12 * i228) + 3) s272
-        wrU walk ((12 * i228) + 4) s273
-        wrU walk ((12 * i228) + 5) s274
-        let !s275 = ((t246 * t263) + (t252 * t240))
-        let !s276 = (t252 * t241)
-        let !s277 = ((t246 * t264) + (t252 * t242))
-        wrU walk ((12 * i228) + 6) s275
-        wrU walk ((12 * i228) + 7) s276
-        wrU walk ((12 * i228) + 8) s277
+      loopI 0.0 24.0 $ \i219 -> do
+        let !d219 = fromIntegral i219 :: Double
+        chkI walk (12 * i219) 0 11
+        t220 <- rdU walk ((12 * i219) + 6)
+        t221 <- rdU walk ((12 * i219) + 7)
+        t222 <- rdU walk ((12 * i219) + 8)
+        t223 <- rdU walk ((12 * i219) + 9)
+        t224 <- rdU walk ((12 * i219) + 10)
+        t225 <- rdU walk ((12 * i219) + 11)
+        chkI radii ((24 * i1) + i219) 0 0
+        t226 <- rdU radii ((24 * i1) + i219)
+        let !s227 = (t226 / 4.0)
+        t228 <- rdU walk (12 * i219)
+        t229 <- rdU walk ((12 * i219) + 1)
+        t230 <- rdU walk ((12 * i219) + 2)
+        t231 <- rdU walk ((12 * i219) + 3)
+        t232 <- rdU walk ((12 * i219) + 4)
+        t233 <- rdU walk ((12 * i219) + 5)
+        let !t234 = (if (abs s227) > 0 then 1.0 else 0.0)
+        let !t235 = (sqrt ((t223 * t223) + (t225 * t225)))
+        let !t236 = (t235 - 1.0)
+        let !t237 = (recip (2.0 * t235))
+        let !t238 = (((t237 * (t223 + t223)) * t220) + ((t237 * (t225 + t225)) * t222))
+        let !t239 = (if ((abs t236) - 1.0e-10) > 0 then (if (abs t238) > 0 then 1.0 else 0.0) else 0.0)
+        let !t240 = (1.0 - t234)
+        let !s241 = ((t234 * (if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223)) + (t240 * t228))
+        let !s242 = ((t234 * (if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224)) + (t240 * t229))
+        let !s243 = ((t234 * (if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225)) + (t240 * t230))
+        chkI verts ((291 * i1) + (12 * i219)) 9 11
+        wrU verts (((291 * i1) + (12 * i219)) + 9) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s241 else t2)
+        wrU verts (((291 * i1) + (12 * i219)) + 10) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s242 else t3)
+        wrU verts (((291 * i1) + (12 * i219)) + 11) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s243 else t4)
+        wrU walk (12 * i219) s241
+        wrU walk ((12 * i219) + 1) s242
+        wrU walk ((12 * i219) + 2) s243
+        let !t244 = (sqrt (((t231 * t231) + (t232 * t232)) + (t233 * t233)))
+        let !t245 = (if (abs s227) > 0 then (recip s227) else 0.0)
+        let !t246 = (t245 * ((if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223) + (negate t228)))
+        let !t247 = (t237 * (t223 + t223))
+        let !t248 = (t237 * (t225 + t225))
+        let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
+        let !t250 = (if t249 > 0 then (recip (if (t249 - 1.0e-300) > 0 then t249 else 1.0e-300)) else 0.0)
+        let !t251 = (t250 * t247)
+        let !t252 = (t250 * t248)
+        let !t253 = (t245 * ((if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225) + (negate t230)))
+        let !t254 = ((t251 * t246) + (t252 * t253))
+        let !t255 = (t246 + (negate (t254 * t251)))
+        let !t256 = (t245 * ((if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224) + (negate t229)))
+        let !t257 = (t253 + (negate (t254 * t252)))
+        let !t258 = (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257)))
+        let !t259 = (if t258 > 0 then (recip (if (t258 - 1.0e-300) > 0 then t258 else 1.0e-300)) else 0.0)
+        let !s260 = ((t234 * (t244 * (t259 * t255))) + (t240 * t231))
+        let !s261 = ((t234 * (t244 * (t259 * t256))) + (t240 * t232))
+        let !s262 = ((t234 * (t244 * (t259 * t257))) + (t240 * t233))
+        wrU walk ((12 * i219) + 3) s260
+        wrU walk ((12 * i219) + 4) s261
+        wrU walk ((12 * i219) + 5) s262
+        let !s263 = ((t234 * t251) + (t240 * t220))
+        let !s264 = (t240 * t221)
+        let !s265 = ((t234 * t252) + (t240 * t222))
+        wrU walk ((12 * i219) + 6) s263
+        wrU walk ((12 * i219) + 7) s264
+        wrU walk ((12 * i219) + 8) s265
         pure ()
-      loopI 0.0 24.0 $ \i278 -> do
-        let !d278 = fromIntegral i278 :: Double
-        chkI walk (12 * i278) 0 11
-        t279 <- rdU walk ((12 * i278) + 6)
-        t280 <- rdU walk ((12 * i278) + 7)
-        t281 <- rdU walk ((12 * i278) + 8)
-        chkI radii ((24 * i1) + i278) 0 0
-        t282 <- rdU radii ((24 * i1) + i278)
-        let !s283 = (t282 / 4.0)
-        t284 <- rdU walk (12 * i278)
-        t285 <- rdU walk ((12 * i278) + 1)
-        t286 <- rdU walk ((12 * i278) + 2)
-        t287 <- rdU walk ((12 * i278) + 6)
-        t288 <- rdU walk ((12 * i278) + 7)
-        t289 <- rdU walk ((12 * i278) + 8)
-        t290 <- rdU walk ((12 * i278) + 3)
-        t291 <- rdU walk ((12 * i278) + 4)
-        t292 <- rdU walk ((12 * i278) + 5)
-        let !s293 = (t284 + (s283 * t290))
-        let !s294 = (t285 + (s283 * t291))
-        let !s295 = (t286 + (s283 * t292))
-        let !t296 = (sqrt ((s293 * s293) + (s295 * s295)))
+      loopI 0.0 24.0 $ \i266 -> do
+        let !d266 = fromIntegral i266 :: Double
+        chkI walk (12 * i266) 0 11
+        t267 <- rdU walk ((12 * i266) + 6)
+        t268 <- rdU walk ((12 * i266) + 7)
+        t269 <- rdU walk ((12 * i266) + 8)
+        chkI radii ((24 * i1) + i266) 0 0
+        t270 <- rdU radii ((24 * i1) + i266)
+        let !s271 = (t270 / 4.0)
+        t272 <- rdU walk (12 * i266)
+        t273 <- rdU walk ((12 * i266) + 1)
+        t274 <- rdU walk ((12 * i266) + 2)
+        t275 <- rdU walk ((12 * i266) + 3)
+        t276 <- rdU walk ((12 * i266) + 4)
+        t277 <- rdU walk ((12 * i266) + 5)
+        let !s278 = (t272 + (s271 * t275))
+        let !s279 = (t273 + (s271 * t276))
+        let !s280 = (t274 + (s271 * t277))
+        let !t281 = (sqrt ((s278 * s278) + (s280 * s280)))
+        let !t282 = (t281 - 1.0)
+        let !t283 = (recip (2.0 * t281))
+        let !t284 = (((t283 * (s278 + s278)) * t267) + ((t283 * (s280 + s280)) * t269))
+        let !t285 = (if ((abs t282) - 1.0e-10) > 0 then (if (abs t284) > 0 then 1.0 else 0.0) else 0.0)
+        let !s286 = (if t285 > 0 then (s278 + (negate ((t282 / t284) * t267))) else s278)
+        let !s287 = (if t285 > 0 then (s279 + (negate ((t282 / t284) * t268))) else s279)
+        let !s288 = (if t285 > 0 then (s280 + (negate ((t282 / t284) * t269))) else s280)
+        wrU walk ((12 * i266) + 9) s286
+        wrU walk ((12 * i266) + 10) s287
+        wrU walk ((12 * i266) + 11) s288
+        pure ()
+      loopI 0.0 24.0 $ \i289 -> do
+        let !d289 = fromIntegral i289 :: Double
+        chkI walk (12 * i289) 6 11
+        t290 <- rdU walk ((12 * i289) + 6)
+        t291 <- rdU walk ((12 * i289) + 7)
+        t292 <- rdU walk ((12 * i289) + 8)
+        t293 <- rdU walk ((12 * i289) + 9)
+        t294 <- rdU walk ((12 * i289) + 10)
+        t295 <- rdU walk ((12 * i289) + 11)
+        let !t296 = (sqrt ((t293 * t293) + (t295 * t295)))
         let !t297 = (t296 - 1.0)
         let !t298 = (recip (2.0 * t296))
-        let !t299 = (((t298 * (s293 + s293)) * t279) + ((t298 * (s295 + s295)) * t281))
+        let !t299 = (((t298 * (t293 + t293)) * t290) + ((t298 * (t295 + t295)) * t292))
         let !t300 = (if ((abs t297) - 1.0e-10) > 0 then (if (abs t299) > 0 then 1.0 else 0.0) else 0.0)
-        let !s301 = (if t300 > 0 then (s293 + (negate ((t297 / t299) * t279))) else s293)
-        let !s302 = (if t300 > 0 then (s294 + (negate ((t297 / t299) * t280))) else s294)
-        let !s303 = (if t300 > 0 then (s295 + (negate ((t297 / t299) * t281))) else s295)
-        wrU walk ((12 * i278) + 9) s301
-        wrU walk ((12 * i278) + 10) s302
-        wrU walk ((12 * i278) + 11) s303
+        let !s301 = (if t300 > 0 then (t293 + (negate ((t297 / t299) * t290))) else t293)
+        let !s302 = (if t300 > 0 then (t294 + (negate ((t297 / t299) * t291))) else t294)
+        let !s303 = (if t300 > 0 then (t295 + (negate ((t297 / t299) * t292))) else t295)
+        wrU walk ((12 * i289) + 9) s301
+        wrU walk ((12 * i289) + 10) s302
+        wrU walk ((12 * i289) + 11) s303
         pure ()
       loopI 0.0 24.0 $ \i304 -> do
         let !d304 = fromIntegral i304 :: Double
-        chkI walk (12 * i304) 6 11
+        chkI walk (12 * i304) 0 11
         t305 <- rdU walk ((12 * i304) + 6)
         t306 <- rdU walk ((12 * i304) + 7)
         t307 <- rdU walk ((12 * i304) + 8)
         t308 <- rdU walk ((12 * i304) + 9)
         t309 <- rdU walk ((12 * i304) + 10)
         t310 <- rdU walk ((12 * i304) + 11)
-        let !t311 = (sqrt ((t308 * t308) + (t310 * t310)))
-        let !t312 = (t311 - 1.0)
-        let !t313 = (recip (2.0 * t311))
-        let !t314 = (((t313 * (t308 + t308)) * t305) + ((t313 * (t310 + t310)) * t307))
-        let !t315 = (if ((abs t312) - 1.0e-10) > 0 then (if (abs t314) > 0 then 1.0 else 0.0) else 0.0)
-        let !s316 = (if t315 > 0 then (t308 + (negate ((t312 / t314) * t305))) else t308)
-        let !s317 = (if t315 > 0 then (t309 + (negate ((t312 / t314) * t306))) else t309)
-        let !s318 = (if t315 > 0 then (t310 + (negate ((t312 / t314) * t307))) else t310)
-        wrU walk ((12 * i304) + 9) s316
-        wrU walk ((12 * i304) + 10) s317
-        wrU walk ((12 * i304) + 11) s318
-        pure ()
-      loopI 0.0 24.0 $ \i319 -> do
-        let !d319 = fromIntegral i319 :: Double
-        chkI walk (12 * i319) 0 11
-        t320 <- rdU walk ((12 * i319) + 6)
-        t321 <- rdU walk ((12 * i319) + 7)
-        t322 <- rdU walk ((12 * i319) + 8)
-        t323 <- rdU walk ((12 * i319) + 9)
-        t324 <- rdU walk ((12 * i319) + 10)
-        t325 <- rdU walk ((12 * i319) + 11)
-        chkI radii ((24 * i1) + i319) 0 0
-        t326 <- rdU radii ((24 * i1) + i319)
-        let !s327 = (t326 / 4.0)
-        t328 <- rdU walk (12 * i319)
-        t329 <- rdU walk ((12 * i319) + 1)
-        t330 <- rdU walk ((12 * i319) + 2)
-        t331 <- rdU walk ((12 * i319) + 6)
-        t332 <- rdU walk ((12 * i319) + 7)
-        t333 <- rdU walk ((12 * i319) + 8)
-        t334 <- rdU walk ((12 * i319) + 3)
-        t335 <- rdU walk ((12 * i319) + 4)
-        t336 <- rdU walk ((12 * i319) + 5)
-        let !t337 = (if (abs s327) > 0 then 1.0 else 0.0)
-        let !t338 = (sqrt ((t323 * t323) + (t325 * t325)))
-        let !t339 = (t338 - 1.0)
-        let !t340 = (recip (2.0 * t338))
-        let !t341 = (((t340 * (t323 + t323)) * t320) + ((t340 * (t325 + t325)) * t322))
-        let !t342 = (if ((abs t339) - 1.0e-10) > 0 then (if (abs t341) > 0 then 1.0 else 0.0) else 0.0)
-        let !t343 = (1.0 - t337)
-        let !s344 = ((t337 * (if t342 > 0 then (t323 + (negate ((t339 / t341) * t320))) else t323)) + (t343 * t328))
-        let !s345 = ((t337 * (if t342 > 0 then (t324 + (negate ((t339 / t341) * t321))) else t324)) + (t343 * t329))
-        let !s346 = ((t337 * (if t342 > 0 then (t325 + (negate ((t339 / t341) * t322))) else t325)) + (t343 * t330))
-        chkI verts ((291 * i1) + (12 * i319)) 12 14
-        wrU verts (((291 * i1) + (12 * i319)) + 12) (if (1.0 - (abs (((s344 - s344) + (s345 - s345)) + (s346 - s346)))) > 0 then s344 else t2)
-        wrU verts (((291 * i1) + (12 * i319)) + 13) (if (1.0 - (abs (((s344 - s344) + (s345 - s345)) + (s346 - s346)))) > 0 then s345 else t3)
-        wrU verts (((291 * i1) + (12 * i319)) + 14) (if (1.0 - (abs (((s344 - s344) + (s345 - s345)) + (s346 - s346)))) > 0 then s346 else t4)
+        chkI radii ((24 * i1) + i304) 0 0
+        t311 <- rdU radii ((24 * i1) + i304)
+        let !s312 = (t311 / 4.0)
+        t313 <- rdU walk (12 * i304)
+        t314 <- rdU walk ((12 * i304) + 1)
+        t315 <- rdU walk ((12 * i304) + 2)
+        t316 <- rdU walk ((12 * i304) + 3)
+        t317 <- rdU walk ((12 * i304) + 4)
+        t318 <- rdU walk ((12 * i304) + 5)
+        let !t319 = (if (abs s312) > 0 then 1.0 else 0.0)
+        let !t320 = (sqrt ((t308 * t308) + (t310 * t310)))
+        let !t321 = (t320 - 1.0)
+        let !t322 = (recip (2.0 * t320))
+        let !t323 = (((t322 * (t308 + t308)) * t305) + ((t322 * (t310 + t310)) * t307))
+        let !t324 = (if ((abs t321) - 1.0e-10) > 0 then (if (abs t323) > 0 then 1.0 else 0.0) else 0.0)
+        let !t325 = (1.0 - t319)
+        let !s326 = ((t319 * (if t324 > 0 then (t308 + (negate ((t321 / t323) * t305))) else t308)) + (t325 * t313))
+        let !s327 = ((t319 * (if t324 > 0 then (t309 + (negate ((t321 / t323) * t306))) else t309)) + (t325 * t314))
+        let !s328 = ((t319 * (if t324 > 0 then (t310 + (negate ((t321 / t323) * t307))) else t310)) + (t325 * t315))
+        chkI verts ((291 * i1) + (12 * i304)) 12 14
+        wrU verts (((291 * i1) + (12 * i304)) + 12) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s326 else t2)
+        wrU verts (((291 * i1) + (12 * i304)) + 13) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s327 else t3)
+        wrU verts (((291 * i1) + (12 * i304)) + 14) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s328 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i347 -> do
-        let !d347 = fromIntegral i347 :: Double
-        t348 <- getR v18
-        t349 <- getR v19
-        setR v18 ((t348 * 0.9659258262890683) - (t349 * 0.25881904510252074))
-        setR v19 ((t349 * 0.9659258262890683) + (t348 * 0.25881904510252074))
-        let !s350 = ((t348 * t5) + (t349 * s14))
-        let !s351 = ((t348 * t6) + (t349 * s15))
-        let !s352 = ((t348 * t7) + (t349 * s16))
-        chkI walk (12 * i347) 3 5
-        wrU walk ((12 * i347) + 3) s350
-        wrU walk ((12 * i347) + 4) s351
-        wrU walk ((12 * i347) + 5) s352
+      loopI 0.0 24.0 $ \i329 -> do
+        let !d329 = fromIntegral i329 :: Double
+        t330 <- getR v18
+        t331 <- getR v19
+        setR v18 ((t330 * 0.9659258262890683) - (t331 * 0.25881904510252074))
+        setR v19 ((t331 * 0.9659258262890683) + (t330 * 0.25881904510252074))
+        let !s332 = ((t330 * t5) + (t331 * s14))
+        let !s333 = ((t330 * t6) + (t331 * s15))
+        let !s334 = ((t330 * t7) + (t331 * s16))
+        chkI walk (12 * i329) 3 5
+        wrU walk ((12 * i329) + 3) s332
+        wrU walk ((12 * i329) + 4) s333
+        wrU walk ((12 * i329) + 5) s334
         pure ()
-      loopI 0.0 24.0 $ \i353 -> do
-        let !d353 = fromIntegral i353 :: Double
-        chkI radii ((24 * i1) + i353) 0 0
-        t354 <- rdU radii ((24 * i1) + i353)
-        chkI walk (12 * i353) 3 11
-        t355 <- rdU walk ((12 * i353) + 3)
-        t356 <- rdU walk ((12 * i353) + 4)
-        t357 <- rdU walk ((12 * i353) + 5)
-        let !s358 = (t2 + (t354 * t355))
-        let !s359 = (t3 + (t354 * t356))
-        let !s360 = (t4 + (t354 * t357))
-        let !t361 = (sqrt ((s358 * s358) + (s360 * s360)))
-        let !t362 = (t361 - 1.0)
-        let !t363 = (recip (2.0 * t361))
-        let !t364 = (((t363 * (s358 + s358)) * t8) + ((t363 * (s360 + s360)) * t10))
-        let !t365 = (if ((abs t362) - 1.0e-10) > 0 then (if (abs t364) > 0 then 1.0 else 0.0) else 0.0)
-        let !s366 = (if t365 > 0 then (s358 + (negate ((t362 / t364) * t8))) else s358)
-        let !s367 = (if t365 > 0 then (s359 + (negate ((t362 / t364) * t9))) else s359)
-        let !s368 = (if t365 > 0 then (s360 + (negate ((t362 / t364) * t10))) else s360)
-        wrU walk ((12 * i353) + 9) s366
-        wrU walk ((12 * i353) + 10) s367
-        wrU walk ((12 * i353) + 11) s368
+      loopI 0.0 24.0 $ \i335 -> do
+        let !d335 = fromIntegral i335 :: Double
+        chkI radii ((24 * i1) + i335) 0 0
+        t336 <- rdU radii ((24 * i1) + i335)
+        chkI walk (12 * i335) 3 11
+        t337 <- rdU walk ((12 * i335) + 3)
+        t338 <- rdU walk ((12 * i335) + 4)
+        t339 <- rdU walk ((12 * i335) + 5)
+        let !s340 = (t2 + (t336 * t337))
+        let !s341 = (t3 + (t336 * t338))
+        let !s342 = (t4 + (t336 * t339))
+        let !t343 = (sqrt ((s340 * s340) + (s342 * s342)))
+        let !t344 = (t343 - 1.0)
+        let !t345 = (recip (2.0 * t343))
+        let !t346 = (((t345 * (s340 + s340)) * t8) + ((t345 * (s342 + s342)) * t10))
+        let !t347 = (if ((abs t344) - 1.0e-10) > 0 then (if (abs t346) > 0 then 1.0 else 0.0) else 0.0)
+        let !s348 = (if t347 > 0 then (s340 + (negate ((t344 / t346) * t8))) else s340)
+        let !s349 = (if t347 > 0 then (s341 + (negate ((t344 / t346) * t9))) else s341)
+        let !s350 = (if t347 > 0 then (s342 + (negate ((t344 / t346) * t10))) else s342)
+        wrU walk ((12 * i335) + 9) s348
+        wrU walk ((12 * i335) + 10) s349
+        wrU walk ((12 * i335) + 11) s350
         pure ()
-      loopI 0.0 24.0 $ \i369 -> do
-        let !d369 = fromIntegral i369 :: Double
-        chkI walk (12 * i369) 9 11
-        t370 <- rdU walk ((12 * i369) + 9)
-        t371 <- rdU walk ((12 * i369) + 10)
-        t372 <- rdU walk ((12 * i369) + 11)
-        let !t373 = (sqrt ((t370 * t370) + (t372 * t372)))
-        let !t374 = (t373 - 1.0)
-        let !t375 = (recip (2.0 * t373))
-        let !t376 = (((t375 * (t370 + t370)) * t8) + ((t375 * (t372 + t372)) * t10))
-        let !t377 = (if ((abs t374) - 1.0e-10) > 0 then (if (abs t376) > 0 then 1.0 else 0.0) else 0.0)
-        let !s378 = (if t377 > 0 then (t370 + (negate ((t374 / t376) * t8))) else t370)
-        let !s379 = (if t377 > 0 then (t371 + (negate ((t374 / t376) * t9))) else t371)
-        let !s380 = (if t377 > 0 then (t372 + (negate ((t374 / t376) * t10))) else t372)
-        wrU walk ((12 * i369) + 9) s378
-        wrU walk ((12 * i369) + 10) s379
-        wrU walk ((12 * i369) + 11) s380
+      loopI 0.0 24.0 $ \i351 -> do
+        let !d351 = fromIntegral i351 :: Double
+        chkI walk (12 * i351) 9 11
+        t352 <- rdU walk ((12 * i351) + 9)
+        t353 <- rdU walk ((12 * i351) + 10)
+        t354 <- rdU walk ((12 * i351) + 11)
+        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
+        let !t356 = (t355 - 1.0)
+        let !t357 = (recip (2.0 * t355))
+        let !t358 = (((t357 * (t352 + t352)) * t8) + ((t357 * (t354 + t354)) * t10))
+        let !t359 = (if ((abs t356) - 1.0e-10) > 0 then (if (abs t358) > 0 then 1.0 else 0.0) else 0.0)
+        let !s360 = (if t359 > 0 then (t352 + (negate ((t356 / t358) * t8))) else t352)
+        let !s361 = (if t359 > 0 then (t353 + (negate ((t356 / t358) * t9))) else t353)
+        let !s362 = (if t359 > 0 then (t354 + (negate ((t356 / t358) * t10))) else t354)
+        wrU walk ((12 * i351) + 9) s360
+        wrU walk ((12 * i351) + 10) s361
+        wrU walk ((12 * i351) + 11) s362
         pure ()
-      loopI 0.0 24.0 $ \i381 -> do
-        let !d381 = fromIntegral i381 :: Double
-        chkI walk (12 * i381) 3 11
-        t382 <- rdU walk ((12 * i381) + 9)
-        t383 <- rdU walk ((12 * i381) + 10)
-        t384 <- rdU walk ((12 * i381) + 11)
-        chkI radii ((24 * i1) + i381) 0 0
-        t385 <- rdU radii ((24 * i1) + i381)
-        t386 <- rdU walk ((12 * i381) + 3)
-        t387 <- rdU walk ((12 * i381) + 4)
-        t388 <- rdU walk ((12 * i381) + 5)
-        let !t389 = (if (abs t385) > 0 then 1.0 else 0.0)
-        let !t390 = (sqrt ((t382 * t382) + (t384 * t384)))
-        let !t391 = (t390 - 1.0)
-        let !t392 = (recip (2.0 * t390))
-        let !t393 = (((t392 * (t382 + t382)) * t8) + ((t392 * (t384 + t384)) * t10))
-        let !t394 = (if ((abs t391) - 1.0e-10) > 0 then (if (abs t393) > 0 then 1.0 else 0.0) else 0.0)
-        let !t395 = (1.0 - t389)
-        let !s396 = ((t389 * (if t394 > 0 then (t382 + (negate ((t391 / t393) * t8))) else t382)) + (t395 * t2))
-        let !s397 = ((t389 * (if t394 > 0 then (t383 + (negate ((t391 / t393) * t9))) else t383)) + (t395 * t3))
-        let !s398 = ((t389 * (if t394 > 0 then (t384 + (negate ((t391 / t393) * t10))) else t384)) + (t395 * t4))
-        let !t399 = (1.0 - (abs (((s396 - s396) + (s397 - s397)) + (s398 - s398))))
-        let !s400 = (if t399 > 0 then s396 else t2)
-        let !s401 = (if t399 > 0 then s397 else t3)
-        let !s402 = (if t399 > 0 then s398 else t4)
-        chkI verts ((291 * i1) + (12 * i381)) 3 14
-        wrU verts (((291 * i1) + (12 * i381)) + 12) s400
-        wrU verts (((291 * i1) + (12 * i381)) + 13) s401
-        wrU verts (((291 * i1) + (12 * i381)) + 14) s402
-        wrU verts (((291 * i1) + (12 * i381)) + 3) (t2 + (0.25 * (s400 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i381)) + 4) (t3 + (0.25 * (s401 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i381)) + 5) (t4 + (0.25 * (s402 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i381)) + 6) (t2 + (0.5 * (s400 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i381)) + 7) (t3 + (0.5 * (s401 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i381)) + 8) (t4 + (0.5 * (s402 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i381)) + 9) (t2 + (0.75 * (s400 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i381)) + 10) (t3 + (0.75 * (s401 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i381)) + 11) (t4 + (0.75 * (s402 + (negate t4))))
+      loopI 0.0 24.0 $ \i363 -> do
+        let !d363 = fromIntegral i363 :: Double
+        chkI walk (12 * i363) 3 11
+        t364 <- rdU walk ((12 * i363) + 9)
+        t365 <- rdU walk ((12 * i363) + 10)
+        t366 <- rdU walk ((12 * i363) + 11)
+        chkI radii ((24 * i1) + i363) 0 0
+        t367 <- rdU radii ((24 * i1) + i363)
+        t368 <- rdU walk ((12 * i363) + 3)
+        t369 <- rdU walk ((12 * i363) + 4)
+        t370 <- rdU walk ((12 * i363) + 5)
+        let !t371 = (if (abs t367) > 0 then 1.0 else 0.0)
+        let !t372 = (sqrt ((t364 * t364) + (t366 * t366)))
+        let !t373 = (t372 - 1.0)
+        let !t374 = (recip (2.0 * t372))
+        let !t375 = (((t374 * (t364 + t364)) * t8) + ((t374 * (t366 + t366)) * t10))
+        let !t376 = (if ((abs t373) - 1.0e-10) > 0 then (if (abs t375) > 0 then 1.0 else 0.0) else 0.0)
+        let !t377 = (1.0 - t371)
+        let !s378 = ((t371 * (if t376 > 0 then (t364 + (negate ((t373 / t375) * t8))) else t364)) + (t377 * t2))
+        let !s379 = ((t371 * (if t376 > 0 then (t365 + (negate ((t373 / t375) * t9))) else t365)) + (t377 * t3))
+        let !s380 = ((t371 * (if t376 > 0 then (t366 + (negate ((t373 / t375) * t10))) else t366)) + (t377 * t4))
+        let !t381 = (1.0 - (abs (((s378 - s378) + (s379 - s379)) + (s380 - s380))))
+        let !s382 = (if t381 > 0 then s378 else t2)
+        let !s383 = (if t381 > 0 then s379 else t3)
+        let !s384 = (if t381 > 0 then s380 else t4)
+        chkI verts ((291 * i1) + (12 * i363)) 3 14
+        wrU verts (((291 * i1) + (12 * i363)) + 12) s382
+        wrU verts (((291 * i1) + (12 * i363)) + 13) s383
+        wrU verts (((291 * i1) + (12 * i363)) + 14) s384
+        wrU verts (((291 * i1) + (12 * i363)) + 3) (t2 + (0.25 * (s382 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i363)) + 4) (t3 + (0.25 * (s383 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i363)) + 5) (t4 + (0.25 * (s384 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i363)) + 6) (t2 + (0.5 * (s382 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i363)) + 7) (t3 + (0.5 * (s383 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i363)) + 8) (t4 + (0.5 * (s384 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i363)) + 9) (t2 + (0.75 * (s382 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i363)) + 10) (t3 + (0.75 * (s383 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i363)) + 11) (t4 + (0.75 * (s384 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -1833,439 +1833,421 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         t108 <- rdU walk (12 * i102)
         t109 <- rdU walk ((12 * i102) + 1)
         t110 <- rdU walk ((12 * i102) + 2)
-        t111 <- rdU walk ((12 * i102) + 6)
-        t112 <- rdU walk ((12 * i102) + 7)
-        t113 <- rdU walk ((12 * i102) + 8)
-        t114 <- rdU walk ((12 * i102) + 3)
-        t115 <- rdU walk ((12 * i102) + 4)
-        t116 <- rdU walk ((12 * i102) + 5)
-        let !s117 = (t108 + (s107 * t114))
-        let !s118 = (t109 + (s107 * t115))
-        let !s119 = (t110 + (s107 * t116))
-        let !t120 = (sqrt ((s117 * s117) + (s119 * s119)))
-        let !t121 = (exp s118)
-        let !t122 = (t120 - t121)
-        let !t123 = (recip (2.0 * t120))
-        let !t124 = ((((t123 * (s117 + s117)) * t103) + ((negate t121) * t104)) + ((t123 * (s119 + s119)) * t105))
-        let !t125 = (if ((abs t122) - 1.0e-10) > 0 then (if (abs t124) > 0 then 1.0 else 0.0) else 0.0)
-        let !s126 = (if t125 > 0 then (s117 + (negate ((t122 / t124) * t103))) else s117)
-        let !s127 = (if t125 > 0 then (s118 + (negate ((t122 / t124) * t104))) else s118)
-        let !s128 = (if t125 > 0 then (s119 + (negate ((t122 / t124) * t105))) else s119)
-        wrU walk ((12 * i102) + 9) s126
-        wrU walk ((12 * i102) + 10) s127
-        wrU walk ((12 * i102) + 11) s128
+        t111 <- rdU walk ((12 * i102) + 3)
+        t112 <- rdU walk ((12 * i102) + 4)
+        t113 <- rdU walk ((12 * i102) + 5)
+        let !s114 = (t108 + (s107 * t111))
+        let !s115 = (t109 + (s107 * t112))
+        let !s116 = (t110 + (s107 * t113))
+        let !t117 = (sqrt ((s114 * s114) + (s116 * s116)))
+        let !t118 = (exp s115)
+        let !t119 = (t117 - t118)
+        let !t120 = (recip (2.0 * t117))
+        let !t121 = ((((t120 * (s114 + s114)) * t103) + ((negate t118) * t104)) + ((t120 * (s116 + s116)) * t105))
+        let !t122 = (if ((abs t119) - 1.0e-10) > 0 then (if (abs t121) > 0 then 1.0 else 0.0) else 0.0)
+        let !s123 = (if t122 > 0 then (s114 + (negate ((t119 / t121) * t103))) else s114)
+        let !s124 = (if t122 > 0 then (s115 + (negate ((t119 / t121) * t104))) else s115)
+        let !s125 = (if t122 > 0 then (s116 + (negate ((t119 / t121) * t105))) else s116)
+        wrU walk ((12 * i102) + 9) s123
+        wrU walk ((12 * i102) + 10) s124
+        wrU walk ((12 * i102) + 11) s125
         pure ()
-      loopI 0.0 24.0 $ \i129 -> do
-        let !d129 = fromIntegral i129 :: Double
-        chkI walk (12 * i129) 6 11
-        t130 <- rdU walk ((12 * i129) + 6)
-        t131 <- rdU walk ((12 * i129) + 7)
-        t132 <- rdU walk ((12 * i129) + 8)
-        t133 <- rdU walk ((12 * i129) + 9)
-        t134 <- rdU walk ((12 * i129) + 10)
-        t135 <- rdU walk ((12 * i129) + 11)
-        let !t136 = (sqrt ((t133 * t133) + (t135 * t135)))
-        let !t137 = (exp t134)
-        let !t138 = (t136 - t137)
-        let !t139 = (recip (2.0 * t136))
-        let !t140 = ((((t139 * (t133 + t133)) * t130) + ((negate t137) * t131)) + ((t139 * (t135 + t135)) * t132))
-        let !t141 = (if ((abs t138) - 1.0e-10) > 0 then (if (abs t140) > 0 then 1.0 else 0.0) else 0.0)
-        let !s142 = (if t141 > 0 then (t133 + (negate ((t138 / t140) * t130))) else t133)
-        let !s143 = (if t141 > 0 then (t134 + (negate ((t138 / t140) * t131))) else t134)
-        let !s144 = (if t141 > 0 then (t135 + (negate ((t138 / t140) * t132))) else t135)
-        wrU walk ((12 * i129) + 9) s142
-        wrU walk ((12 * i129) + 10) s143
-        wrU walk ((12 * i129) + 11) s144
+      loopI 0.0 24.0 $ \i126 -> do
+        let !d126 = fromIntegral i126 :: Double
+        chkI walk (12 * i126) 6 11
+        t127 <- rdU walk ((12 * i126) + 6)
+        t128 <- rdU walk ((12 * i126) + 7)
+        t129 <- rdU walk ((12 * i126) + 8)
+        t130 <- rdU walk ((12 * i126) + 9)
+        t131 <- rdU walk ((12 * i126) + 10)
+        t132 <- rdU walk ((12 * i126) + 11)
+        let !t133 = (sqrt ((t130 * t130) + (t132 * t132)))
+        let !t134 = (exp t131)
+        let !t135 = (t133 - t134)
+        let !t136 = (recip (2.0 * t133))
+        let !t137 = ((((t136 * (t130 + t130)) * t127) + ((negate t134) * t128)) + ((t136 * (t132 + t132)) * t129))
+        let !t138 = (if ((abs t135) - 1.0e-10) > 0 then (if (abs t137) > 0 then 1.0 else 0.0) else 0.0)
+        let !s139 = (if t138 > 0 then (t130 + (negate ((t135 / t137) * t127))) else t130)
+        let !s140 = (if t138 > 0 then (t131 + (negate ((t135 / t137) * t128))) else t131)
+        let !s141 = (if t138 > 0 then (t132 + (negate ((t135 / t137) * t129))) else t132)
+        wrU walk ((12 * i126) + 9) s139
+        wrU walk ((12 * i126) + 10) s140
+        wrU walk ((12 * i126) + 11) s141
         pure ()
-      loopI 0.0 24.0 $ \i145 -> do
-        let !d145 = fromIntegral i145 :: Double
-        chkI walk (12 * i145) 0 11
-        t146 <- rdU walk ((12 * i145) + 6)
-        t147 <- rdU walk ((12 * i145) + 7)
-        t148 <- rdU walk ((12 * i145) + 8)
-        t149 <- rdU walk ((12 * i145) + 9)
-        t150 <- rdU walk ((12 * i145) + 10)
-        t151 <- rdU walk ((12 * i145) + 11)
-        chkI radii ((24 * i1) + i145) 0 0
-        t152 <- rdU radii ((24 * i1) + i145)
-        let !s153 = (t152 / 4.0)
-        t154 <- rdU walk (12 * i145)
-        t155 <- rdU walk ((12 * i145) + 1)
-        t156 <- rdU walk ((12 * i145) + 2)
-        t157 <- rdU walk ((12 * i145) + 6)
-        t158 <- rdU walk ((12 * i145) + 7)
-        t159 <- rdU walk ((12 * i145) + 8)
-        t160 <- rdU walk ((12 * i145) + 3)
-        t161 <- rdU walk ((12 * i145) + 4)
-        t162 <- rdU walk ((12 * i145) + 5)
-        let !t163 = (if (abs s153) > 0 then 1.0 else 0.0)
-        let !t164 = (sqrt ((t149 * t149) + (t151 * t151)))
-        let !t165 = (exp t150)
-        let !t166 = (t164 - t165)
-        let !t167 = (recip (2.0 * t164))
-        let !t168 = ((((t167 * (t149 + t149)) * t146) + ((negate t165) * t147)) + ((t167 * (t151 + t151)) * t148))
-        let !t169 = (if ((abs t166) - 1.0e-10) > 0 then (if (abs t168) > 0 then 1.0 else 0.0) else 0.0)
-        let !t170 = (1.0 - t163)
-        let !s171 = ((t163 * (if t169 > 0 then (t149 + (negate ((t166 / t168) * t146))) else t149)) + (t170 * t154))
-        let !s172 = ((t163 * (if t169 > 0 then (t150 + (negate ((t166 / t168) * t147))) else t150)) + (t170 * t155))
-        let !s173 = ((t163 * (if t169 > 0 then (t151 + (negate ((t166 / t168) * t148))) else t151)) + (t170 * t156))
-        chkI verts ((291 * i1) + (12 * i145)) 6 8
-        wrU verts (((291 * i1) + (12 * i145)) + 6) (if (1.0 - (abs (((s171 - s171) + (s172 - s172)) + (s173 - s173)))) > 0 then s171 else t2)
-        wrU verts (((291 * i1) + (12 * i145)) + 7) (if (1.0 - (abs (((s171 - s171) + (s172 - s172)) + (s173 - s173)))) > 0 then s172 else t3)
-        wrU verts (((291 * i1) + (12 * i145)) + 8) (if (1.0 - (abs (((s171 - s171) + (s172 - s172)) + (s173 - s173)))) > 0 then s173 else t4)
-        wrU walk (12 * i145) s171
-        wrU walk ((12 * i145) + 1) s172
-        wrU walk ((12 * i145) + 2) s173
-        let !t174 = (sqrt (((t160 * t160) + (t161 * t161)) + (t162 * t162)))
-        let !t175 = (if (abs s153) > 0 then (recip s153) else 0.0)
-        let !t176 = (t175 * ((if t169 > 0 then (t149 + (negate ((t166 / t168) * t146))) else t149) + (negate t154)))
-        let !t177 = (t167 * (t149 + t149))
-        let !t178 = (negate t165)
-        let !t179 = (t167 * (t151 + t151))
-        let !t180 = (sqrt (((t177 * t177) + (t178 * t178)) + (t179 * t179)))
-        let !t181 = (if t180 > 0 then (recip (if (t180 - 1.0e-300) > 0 then t180 else 1.0e-300)) else 0.0)
-        let !t182 = (t181 * t177)
-        let !t183 = (t181 * t178)
-        let !t184 = (t175 * ((if t169 > 0 then (t150 + (negate ((t166 / t168) * t147))) else t150) + (negate t155)))
-        let !t185 = (t181 * t179)
-        let !t186 = (t175 * ((if t169 > 0 then (t151 + (negate ((t166 / t168) * t148))) else t151) + (negate t156)))
-        let !t187 = (((t182 * t176) + (t183 * t184)) + (t185 * t186))
-        let !t188 = (t176 + (negate (t187 * t182)))
-        let !t189 = (t184 + (negate (t187 * t183)))
-        let !t190 = (t186 + (negate (t187 * t185)))
-        let !t191 = (sqrt (((t188 * t188) + (t189 * t189)) + (t190 * t190)))
-        let !t192 = (if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0)
-        let !s193 = ((t163 * (t174 * (t192 * t188))) + (t170 * t160))
-        let !s194 = ((t163 * (t174 * (t192 * t189))) + (t170 * t161))
-        let !s195 = ((t163 * (t174 * (t192 * t190))) + (t170 * t162))
-        wrU walk ((12 * i145) + 3) s193
-        wrU walk ((12 * i145) + 4) s194
-        wrU walk ((12 * i145) + 5) s195
-        let !s196 = ((t163 * t182) + (t170 * t157))
-        let !s197 = ((t163 * t183) + (t170 * t158))
-        let !s198 = ((t163 * t185) + (t170 * t159))
-        wrU walk ((12 * i145) + 6) s196
-        wrU walk ((12 * i145) + 7) s197
-        wrU walk ((12 * i145) + 8) s198
+      loopI 0.0 24.0 $ \i142 -> do
+        let !d142 = fromIntegral i142 :: Double
+        chkI walk (12 * i142) 0 11
+        t143 <- rdU walk ((12 * i142) + 6)
+        t144 <- rdU walk ((12 * i142) + 7)
+        t145 <- rdU walk ((12 * i142) + 8)
+        t146 <- rdU walk ((12 * i142) + 9)
+        t147 <- rdU walk ((12 * i142) + 10)
+        t148 <- rdU walk ((12 * i142) + 11)
+        chkI radii ((24 * i1) + i142) 0 0
+        t149 <- rdU radii ((24 * i1) + i142)
+        let !s150 = (t149 / 4.0)
+        t151 <- rdU walk (12 * i142)
+        t152 <- rdU walk ((12 * i142) + 1)
+        t153 <- rdU walk ((12 * i142) + 2)
+        t154 <- rdU walk ((12 * i142) + 3)
+        t155 <- rdU walk ((12 * i142) + 4)
+        t156 <- rdU walk ((12 * i142) + 5)
+        let !t157 = (if (abs s150) > 0 then 1.0 else 0.0)
+        let !t158 = (sqrt ((t146 * t146) + (t148 * t148)))
+        let !t159 = (exp t147)
+        let !t160 = (t158 - t159)
+        let !t161 = (recip (2.0 * t158))
+        let !t162 = ((((t161 * (t146 + t146)) * t143) + ((negate t159) * t144)) + ((t161 * (t148 + t148)) * t145))
+        let !t163 = (if ((abs t160) - 1.0e-10) > 0 then (if (abs t162) > 0 then 1.0 else 0.0) else 0.0)
+        let !t164 = (1.0 - t157)
+        let !s165 = ((t157 * (if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146)) + (t164 * t151))
+        let !s166 = ((t157 * (if t163 > 0 then (t147 + (negate ((t160 / t162) * t144))) else t147)) + (t164 * t152))
+        let !s167 = ((t157 * (if t163 > 0 then (t148 + (negate ((t160 / t162) * t145))) else t148)) + (t164 * t153))
+        chkI verts ((291 * i1) + (12 * i142)) 6 8
+        wrU verts (((291 * i1) + (12 * i142)) + 6) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s165 else t2)
+        wrU verts (((291 * i1) + (12 * i142)) + 7) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s166 else t3)
+        wrU verts (((291 * i1) + (12 * i142)) + 8) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s167 else t4)
+        wrU walk (12 * i142) s165
+        wrU walk ((12 * i142) + 1) s166
+        wrU walk ((12 * i142) + 2) s167
+        let !t168 = (sqrt (((t154 * t154) + (t155 * t155)) + (t156 * t156)))
+        let !t169 = (if (abs s150) > 0 then (recip s150) else 0.0)
+        let !t170 = (t169 * ((if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146) + (negate t151)))
+        let !t171 = (t161 * (t146 + t146))
+        let !t172 = (negate t159)
+        let !t173 = (t161 * (t148 + t148))
+        let !t174 = (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173)))
+        let !t175 = (if t174 > 0 then (recip (if (t174 - 1.0e-300) > 0 then t174 else 1.0e-300)) else 0.0)
+        let !t176 = (t175 * t171)
+        let !t177 = (t175 * t172)
+        let !t178 = (t169 * ((if t163 > 0 then (t147 + (negate ((t160 / t162) * t144))) else t147) + (negate t152)))
+        let !t179 = (t175 * t173)
+        let !t180 = (t169 * ((if t163 > 0 then (t148 + (negate ((t160 / t162) * t145))) else t148) + (negate t153)))
+        let !t181 = (((t176 * t170) + (t177 * t178)) + (t179 * t180))
+        let !t182 = (t170 + (negate (t181 * t176)))
+        let !t183 = (t178 + (negate (t181 * t177)))
+        let !t184 = (t180 + (negate (t181 * t179)))
+        let !t185 = (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184)))
+        let !t186 = (if t185 > 0 then (recip (if (t185 - 1.0e-300) > 0 then t185 else 1.0e-300)) else 0.0)
+        let !s187 = ((t157 * (t168 * (t186 * t182))) + (t164 * t154))
+        let !s188 = ((t157 * (t168 * (t186 * t183))) + (t164 * t155))
+        let !s189 = ((t157 * (t168 * (t186 * t184))) + (t164 * t156))
+        wrU walk ((12 * i142) + 3) s187
+        wrU walk ((12 * i142) + 4) s188
+        wrU walk ((12 * i142) + 5) s189
+        let !s190 = ((t157 * t176) + (t164 * t143))
+        let !s191 = ((t157 * t177) + (t164 * t144))
+        let !s192 = ((t157 * t179) + (t164 * t145))
+        wrU walk ((12 * i142) + 6) s190
+        wrU walk ((12 * i142) + 7) s191
+        wrU walk ((12 * i142) + 8) s192
         pure ()
-      loopI 0.0 24.0 $ \i199 -> do
-        let !d199 = fromIntegral i199 :: Double
-        chkI walk (12 * i199) 0 11
-        t200 <- rdU walk ((12 * i199) + 6)
-        t201 <- rdU walk ((12 * i199) + 7)
-        t202 <- rdU walk ((12 * i199) + 8)
-        chkI radii ((24 * i1) + i199) 0 0
-        t203 <- rdU radii ((24 * i1) + i199)
-        let !s204 = (t203 / 4.0)
-        t205 <- rdU walk (12 * i199)
-        t206 <- rdU walk ((12 * i199) + 1)
-        t207 <- rdU walk ((12 * i199) + 2)
-        t208 <- rdU walk ((12 * i199) + 6)
-        t209 <- rdU walk ((12 * i199) + 7)
-        t210 <- rdU walk ((12 * i199) + 8)
-        t211 <- rdU walk ((12 * i199) + 3)
-        t212 <- rdU walk ((12 * i199) + 4)
-        t213 <- rdU walk ((12 * i199) + 5)
-        let !s214 = (t205 + (s204 * t211))
-        let !s215 = (t206 + (s204 * t212))
-        let !s216 = (t207 + (s204 * t213))
-        let !t217 = (sqrt ((s214 * s214) + (s216 * s216)))
-        let !t218 = (exp s215)
-        let !t219 = (t217 - t218)
-        let !t220 = (recip (2.0 * t217))
-        let !t221 = ((((t220 * (s214 + s214)) * t200) + ((negate t218) * t201)) + ((t220 * (s216 + s216)) * t202))
-        let !t222 = (if ((abs t219) - 1.0e-10) > 0 then (if (abs t221) > 0 then 1.0 else 0.0) else 0.0)
-        let !s223 = (if t222 > 0 then (s214 + (negate ((t219 / t221) * t200))) else s214)
-        let !s224 = (if t222 > 0 then (s215 + (negate ((t219 / t221) * t201))) else s215)
-        let !s225 = (if t222 > 0 then (s216 + (negate ((t219 / t221) * t202))) else s216)
-        wrU walk ((12 * i199) + 9) s223
-        wrU walk ((12 * i199) + 10) s224
-        wrU walk ((12 * i199) + 11) s225
+      loopI 0.0 24.0 $ \i193 -> do
+        let !d193 = fromIntegral i193 :: Double
+        chkI walk (12 * i193) 0 11
+        t194 <- rdU walk ((12 * i193) + 6)
+        t195 <- rdU walk ((12 * i193) + 7)
+        t196 <- rdU walk ((12 * i193) + 8)
+        chkI radii ((24 * i1) + i193) 0 0
+        t197 <- rdU radii ((24 * i1) + i193)
+        let !s198 = (t197 / 4.0)
+        t199 <- rdU walk (12 * i193)
+        t200 <- rdU walk ((12 * i193) + 1)
+        t201 <- rdU walk ((12 * i193) + 2)
+        t202 <- rdU walk ((12 * i193) + 3)
+        t203 <- rdU walk ((12 * i193) + 4)
+        t204 <- rdU walk ((12 * i193) + 5)
+        let !s205 = (t199 + (s198 * t202))
+        let !s206 = (t200 + (s198 * t203))
+        let !s207 = (t201 + (s198 * t204))
+        let !t208 = (sqrt ((s205 * s205) + (s207 * s207)))
+        let !t209 = (exp s206)
+        let !t210 = (t208 - t209)
+        let !t211 = (recip (2.0 * t208))
+        let !t212 = ((((t211 * (s205 + s205)) * t194) + ((negate t209) * t195)) + ((t211 * (s207 + s207)) * t196))
+        let !t213 = (if ((abs t210) - 1.0e-10) > 0 then (if (abs t212) > 0 then 1.0 else 0.0) else 0.0)
+        let !s214 = (if t213 > 0 then (s205 + (negate ((t210 / t212) * t194))) else s205)
+        let !s215 = (if t213 > 0 then (s206 + (negate ((t210 / t212) * t195))) else s206)
+        let !s216 = (if t213 > 0 then (s207 + (negate ((t210 / t212) * t196))) else s207)
+        wrU walk ((12 * i193) + 9) s214
+        wrU walk ((12 * i193) + 10) s215
+        wrU walk ((12 * i193) + 11) s216
         pure ()
-      loopI 0.0 24.0 $ \i226 -> do
-        let !d226 = fromIntegral i226 :: Double
-        chkI walk (12 * i226) 6 11
-        t227 <- rdU walk ((12 * i226) + 6)
-        t228 <- rdU walk ((12 * i226) + 7)
-        t229 <- rdU walk ((12 * i226) + 8)
-        t230 <- rdU walk ((12 * i226) + 9)
-        t231 <- rdU walk ((12 * i226) + 10)
-        t232 <- rdU walk ((12 * i226) + 11)
-        let !t233 = (sqrt ((t230 * t230) + (t232 * t232)))
-        let !t234 = (exp t231)
-        let !t235 = (t233 - t234)
-        let !t236 = (recip (2.0 * t233))
-        let !t237 = ((((t236 * (t230 + t230)) * t227) + ((negate t234) * t228)) + ((t236 * (t232 + t232)) * t229))
-        let !t238 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t237) > 0 then 1.0 else 0.0) else 0.0)
-        let !s239 = (if t238 > 0 then (t230 + (negate ((t235 / t237) * t227))) else t230)
-        let !s240 = (if t238 > 0 then (t231 + (negate ((t235 / t237) * t228))) else t231)
-        let !s241 = (if t238 > 0 then (t232 + (negate ((t235 / t237) * t229))) else t232)
-        wrU walk ((12 * i226) + 9) s239
-        wrU walk ((12 * i226) + 10) s240
-        wrU walk ((12 * i226) + 11) s241
+      loopI 0.0 24.0 $ \i217 -> do
+        let !d217 = fromIntegral i217 :: Double
+        chkI walk (12 * i217) 6 11
+        t218 <- rdU walk ((12 * i217) + 6)
+        t219 <- rdU walk ((12 * i217) + 7)
+        t220 <- rdU walk ((12 * i217) + 8)
+        t221 <- rdU walk ((12 * i217) + 9)
+        t222 <- rdU walk ((12 * i217) + 10)
+        t223 <- rdU walk ((12 * i217) + 11)
+        let !t224 = (sqrt ((t221 * t221) + (t223 * t223)))
+        let !t225 = (exp t222)
+        let !t226 = (t224 - t225)
+        let !t227 = (recip (2.0 * t224))
+        let !t228 = ((((t227 * (t221 + t221)) * t218) + ((negate t225) * t219)) + ((t227 * (t223 + t223)) * t220))
+        let !t229 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t228) > 0 then 1.0 else 0.0) else 0.0)
+        let !s230 = (if t229 > 0 then (t221 + (negate ((t226 / t228) * t218))) else t221)
+        let !s231 = (if t229 > 0 then (t222 + (negate ((t226 / t228) * t219))) else t222)
+        let !s232 = (if t229 > 0 then (t223 + (negate ((t226 / t228) * t220))) else t223)
+        wrU walk ((12 * i217) + 9) s230
+        wrU walk ((12 * i217) + 10) s231
+        wrU walk ((12 * i217) + 11) s232
         pure ()
-      loopI 0.0 24.0 $ \i242 -> do
-        let !d242 = fromIntegral i242 :: Double
-        chkI walk (12 * i242) 0 11
-        t243 <- rdU walk ((12 * i242) + 6)
-        t244 <- rdU walk ((12 * i242) + 7)
-        t245 <- rdU walk ((12 * i242) + 8)
-        t246 <- rdU walk ((12 * i242) + 9)
-        t247 <- rdU walk ((12 * i242) + 10)
-        t248 <- rdU walk ((12 * i242) + 11)
-        chkI radii ((24 * i1) + i242) 0 0
-        t249 <- rdU radii ((24 * i1) + i242)
-        let !s250 = (t249 / 4.0)
-        t251 <- rdU walk (12 * i242)
-        t252 <- rdU walk ((12 * i242) + 1)
-        t253 <- rdU walk ((12 * i242) + 2)
-        t254 <- rdU walk ((12 * i242) + 6)
-        t255 <- rdU walk ((12 * i242) + 7)
-        t256 <- rdU walk ((12 * i242) + 8)
-        t257 <- rdU walk ((12 * i242) + 3)
-        t258 <- rdU walk ((12 * i242) + 4)
-        t259 <- rdU walk ((12 * i242) + 5)
-        let !t260 = (if (abs s250) > 0 then 1.0 else 0.0)
-        let !t261 = (sqrt ((t246 * t246) + (t248 * t248)))
-        let !t262 = (exp t247)
-        let !t263 = (t261 - t262)
-        let !t264 = (recip (2.0 * t261))
-        let !t265 = ((((t264 * (t246 + t246)) * t243) + ((negate t262) * t244)) + ((t264 * (t248 + t248)) * t245))
-        let !t266 = (if ((abs t263) - 1.0e-10) > 0 then (if (abs t265) > 0 then 1.0 else 0.0) else 0.0)
-        let !t267 = (1.0 - t260)
-        let !s268 = ((t260 * (if t266 > 0 then (t246 + (negate ((t263 / t265) * t243))) else t246)) + (t267 * t251))
-        let !s269 = ((t260 * (if t266 > 0 then (t247 + (negate ((t263 / t265) * t244))) else t247)) + (t267 * t252))
-        let !s270 = ((t260 * (if t266 > 0 then (t248 + (negate ((t263 / t265) * t245))) else t248)) + (t267 * t253))
-        chkI verts ((291 * i1) + (12 * i242)) 9 11
-        wrU verts (((291 * i1) + (12 * i242)) + 9) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s268 else t2)
-        wrU verts (((291 * i1) + (12 * i242)) + 10) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s269 else t3)
-        wrU verts (((291 * i1) + (12 * i242)) + 11) (if (1.0 - (abs (((s268 - s268) + (s269 - s269)) + (s270 - s270)))) > 0 then s270 else t4)
-        wrU walk (12 * i242) s268
-        wrU walk ((12 * i242) + 1) s269
-        wrU walk ((12 * i242) + 2) s270
-        let !t271 = (sqrt (((t257 * t257) + (t258 * t258)) + (t259 * t259)))
-        let !t272 = (if (abs s250) > 0 then (recip s250) else 0.0)
-        let !t273 = (t272 * ((if t266 > 0 then (t246 + (negate ((t263 / t265) * t243))) else t246) + (negate t251)))
-        let !t274 = (t264 * (t246 + t246))
-        let !t275 = (negate t262)
-        let !t276 = (t264 * (t248 + t248))
-        let !t277 = (sqrt (((t274 * t274) + (t275 * t275)) + (t276 * t276)))
-        let !t278 = (if t277 > 0 then (recip (if (t277 - 1.0e-300) > 0 then t277 else 1.0e-300)) else 0.0)
-        let !t279 = (t278 * t274)
-        let !t280 = (t278 * t275)
-        let !t281 = (t272 * ((if t266 > 0 then (t247 + (negate ((t263 / t265) * t244))) else t247) + (negate t252)))
-        let !t282 = (t278 * t276)
-        let !t283 = (t272 * ((if t266 > 0 then (t248 + (negate ((t263 / t265) * t245))) else t248) + (negate t253)))
-        let !t284 = (((t279 * t273) + (t280 * t281)) + (t282 * t283))
-        let !t285 = (t273 + (negate (t284 * t279)))
-        let !t286 = (t281 + (negate (t284 * t280)))
-        let !t287 = (t283 + (negate (t284 * t282)))
-        let !t288 = (sqrt (((t285 * t285) + (t286 * t286)) + (t287 * t287)))
-        let !t289 = (if t288 > 0 then (recip (if (t288 - 1.0e-300) > 0 then t288 else 1.0e-300)) else 0.0)
-        let !s290 = ((t260 * (t271 * (t289 * t285))) + (t267 * t257))
-        let !s291 = ((t260 * (t271 * (t289 * t286))) + (t267 * t258))
-        let !s292 = ((t260 * (t271 * (t289 * t287))) + (t267 * t259))
-        wrU walk ((12 * i242) + 3) s290
-        wrU walk ((12 * i242) + 4) s291
-        wrU walk ((12 * i242) + 5) s292
-        let !s293 = ((t260 * t279) + (t267 * t254))
-        let !s294 = ((t260 * t280) + (t267 * t255))
-        let !s295 = ((t260 * t282) + (t267 * t256))
-        wrU walk ((12 * i242) + 6) s293
-        wrU walk ((12 * i242) + 7) s294
-        wrU walk ((12 * i242) + 8) s295
+      loopI 0.0 24.0 $ \i233 -> do
+        let !d233 = fromIntegral i233 :: Double
+        chkI walk (12 * i233) 0 11
+        t234 <- rdU walk ((12 * i233) + 6)
+        t235 <- rdU walk ((12 * i233) + 7)
+        t236 <- rdU walk ((12 * i233) + 8)
+        t237 <- rdU walk ((12 * i233) + 9)
+        t238 <- rdU walk ((12 * i233) + 10)
+        t239 <- rdU walk ((12 * i233) + 11)
+        chkI radii ((24 * i1) + i233) 0 0
+        t240 <- rdU radii ((24 * i1) + i233)
+        let !s241 = (t240 / 4.0)
+        t242 <- rdU walk (12 * i233)
+        t243 <- rdU walk ((12 * i233) + 1)
+        t244 <- rdU walk ((12 * i233) + 2)
+        t245 <- rdU walk ((12 * i233) + 3)
+        t246 <- rdU walk ((12 * i233) + 4)
+        t247 <- rdU walk ((12 * i233) + 5)
+        let !t248 = (if (abs s241) > 0 then 1.0 else 0.0)
+        let !t249 = (sqrt ((t237 * t237) + (t239 * t239)))
+        let !t250 = (exp t238)
+        let !t251 = (t249 - t250)
+        let !t252 = (recip (2.0 * t249))
+        let !t253 = ((((t252 * (t237 + t237)) * t234) + ((negate t250) * t235)) + ((t252 * (t239 + t239)) * t236))
+        let !t254 = (if ((abs t251) - 1.0e-10) > 0 then (if (abs t253) > 0 then 1.0 else 0.0) else 0.0)
+        let !t255 = (1.0 - t248)
+        let !s256 = ((t248 * (if t254 > 0 then (t237 + (negate ((t251 / t253) * t234))) else t237)) + (t255 * t242))
+        let !s257 = ((t248 * (if t254 > 0 then (t238 + (negate ((t251 / t253) * t235))) else t238)) + (t255 * t243))
+        let !s258 = ((t248 * (if t254 > 0 then (t239 + (negate ((t251 / t253) * t236))) else t239)) + (t255 * t244))
+        chkI verts ((291 * i1) + (12 * i233)) 9 11
+        wrU verts (((291 * i1) + (12 * i233)) + 9) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s256 else t2)
+        wrU verts (((291 * i1) + (12 * i233)) + 10) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s257 else t3)
+        wrU verts (((291 * i1) + (12 * i233)) + 11) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s258 else t4)
+        wrU walk (12 * i233) s256
+        wrU walk ((12 * i233) + 1) s257
+        wrU walk ((12 * i233) + 2) s258
+        let !t259 = (sqrt (((t245 * t245) + (t246 * t246)) + (t247 * t247)))
+        let !t260 = (if (abs s241) > 0 then (recip s241) else 0.0)
+        let !t261 = (t260 * ((if t254 > 0 then (t237 + (negate ((t251 / t253) * t234))) else t237) + (negate t242)))
+        let !t262 = (t252 * (t237 + t237))
+        let !t263 = (negate t250)
+        let !t264 = (t252 * (t239 + t239))
+        let !t265 = (sqrt (((t262 * t262) + (t263 * t263)) + (t264 * t264)))
+        let !t266 = (if t265 > 0 then (recip (if (t265 - 1.0e-300) > 0 then t265 else 1.0e-300)) else 0.0)
+        let !t267 = (t266 * t262)
+        let !t268 = (t266 * t263)
+        let !t269 = (t260 * ((if t254 > 0 then (t238 + (negate ((t251 / t253) * t235))) else t238) + (negate t243)))
+        let !t270 = (t266 * t264)
+        let !t271 = (t260 * ((if t254 > 0 then (t239 + (negate ((t251 / t253) * t236))) else t239) + (negate t244)))
+        let !t272 = (((t267 * t261) + (t268 * t269)) + (t270 * t271))
+        let !t273 = (t261 + (negate (t272 * t267)))
+        let !t274 = (t269 + (negate (t272 * t268)))
+        let !t275 = (t271 + (negate (t272 * t270)))
+        let !t276 = (sqrt (((t273 * t273) + (t274 * t274)) + (t275 * t275)))
+        let !t277 = (if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0)
+        let !s278 = ((t248 * (t259 * (t277 * t273))) + (t255 * t245))
+        let !s279 = ((t248 * (t259 * (t277 * t274))) + (t255 * t246))
+        let !s280 = ((t248 * (t259 * (t277 * t275))) + (t255 * t247))
+        wrU walk ((12 * i233) + 3) s278
+        wrU walk ((12 * i233) + 4) s279
+        wrU walk ((12 * i233) + 5) s280
+        let !s281 = ((t248 * t267) + (t255 * t234))
+        let !s282 = ((t248 * t268) + (t255 * t235))
+        let !s283 = ((t248 * t270) + (t255 * t236))
+        wrU walk ((12 * i233) + 6) s281
+        wrU walk ((12 * i233) + 7) s282
+        wrU walk ((12 * i233) + 8) s283
         pure ()
-      loopI 0.0 24.0 $ \i296 -> do
-        let !d296 = fromIntegral i296 :: Double
-        chkI walk (12 * i296) 0 11
-        t297 <- rdU walk ((12 * i296) + 6)
-        t298 <- rdU walk ((12 * i296) + 7)
-        t299 <- rdU walk ((12 * i296) + 8)
-        chkI radii ((24 * i1) + i296) 0 0
-        t300 <- rdU radii ((24 * i1) + i296)
-        let !s301 = (t300 / 4.0)
-        t302 <- rdU walk (12 * i296)
-        t303 <- rdU walk ((12 * i296) + 1)
-        t304 <- rdU walk ((12 * i296) + 2)
-        t305 <- rdU walk ((12 * i296) + 6)
-        t306 <- rdU walk ((12 * i296) + 7)
-        t307 <- rdU walk ((12 * i296) + 8)
-        t308 <- rdU walk ((12 * i296) + 3)
-        t309 <- rdU walk ((12 * i296) + 4)
-        t310 <- rdU walk ((12 * i296) + 5)
-        let !s311 = (t302 + (s301 * t308))
-        let !s312 = (t303 + (s301 * t309))
-        let !s313 = (t304 + (s301 * t310))
-        let !t314 = (sqrt ((s311 * s311) + (s313 * s313)))
-        let !t315 = (exp s312)
-        let !t316 = (t314 - t315)
-        let !t317 = (recip (2.0 * t314))
-        let !t318 = ((((t317 * (s311 + s311)) * t297) + ((negate t315) * t298)) + ((t317 * (s313 + s313)) * t299))
-        let !t319 = (if ((abs t316) - 1.0e-10) > 0 then (if (abs t318) > 0 then 1.0 else 0.0) else 0.0)
-        let !s320 = (if t319 > 0 then (s311 + (negate ((t316 / t318) * t297))) else s311)
-        let !s321 = (if t319 > 0 then (s312 + (negate ((t316 / t318) * t298))) else s312)
-        let !s322 = (if t319 > 0 then (s313 + (negate ((t316 / t318) * t299))) else s313)
-        wrU walk ((12 * i296) + 9) s320
-        wrU walk ((12 * i296) + 10) s321
-        wrU walk ((12 * i296) + 11) s322
+      loopI 0.0 24.0 $ \i284 -> do
+        let !d284 = fromIntegral i284 :: Double
+        chkI walk (12 * i284) 0 11
+        t285 <- rdU walk ((12 * i284) + 6)
+        t286 <- rdU walk ((12 * i284) + 7)
+        t287 <- rdU walk ((12 * i284) + 8)
+        chkI radii ((24 * i1) + i284) 0 0
+        t288 <- rdU radii ((24 * i1) + i284)
+        let !s289 = (t288 / 4.0)
+        t290 <- rdU walk (12 * i284)
+        t291 <- rdU walk ((12 * i284) + 1)
+        t292 <- rdU walk ((12 * i284) + 2)
+        t293 <- rdU walk ((12 * i284) + 3)
+        t294 <- rdU walk ((12 * i284) + 4)
+        t295 <- rdU walk ((12 * i284) + 5)
+        let !s296 = (t290 + (s289 * t293))
+        let !s297 = (t291 + (s289 * t294))
+        let !s298 = (t292 + (s289 * t295))
+        let !t299 = (sqrt ((s296 * s296) + (s298 * s298)))
+        let !t300 = (exp s297)
+        let !t301 = (t299 - t300)
+        let !t302 = (recip (2.0 * t299))
+        let !t303 = ((((t302 * (s296 + s296)) * t285) + ((negate t300) * t286)) + ((t302 * (s298 + s298)) * t287))
+        let !t304 = (if ((abs t301) - 1.0e-10) > 0 then (if (abs t303) > 0 then 1.0 else 0.0) else 0.0)
+        let !s305 = (if t304 > 0 then (s296 + (negate ((t301 / t303) * t285))) else s296)
+        let !s306 = (if t304 > 0 then (s297 + (negate ((t301 / t303) * t286))) else s297)
+        let !s307 = (if t304 > 0 then (s298 + (negate ((t301 / t303) * t287))) else s298)
+        wrU walk ((12 * i284) + 9) s305
+        wrU walk ((12 * i284) + 10) s306
+        wrU walk ((12 * i284) + 11) s307
         pure ()
-      loopI 0.0 24.0 $ \i323 -> do
-        let !d323 = fromIntegral i323 :: Double
-        chkI walk (12 * i323) 6 11
-        t324 <- rdU walk ((12 * i323) + 6)
-        t325 <- rdU walk ((12 * i323) + 7)
-        t326 <- rdU walk ((12 * i323) + 8)
-        t327 <- rdU walk ((12 * i323) + 9)
-        t328 <- rdU walk ((12 * i323) + 10)
-        t329 <- rdU walk ((12 * i323) + 11)
-        let !t330 = (sqrt ((t327 * t327) + (t329 * t329)))
-        let !t331 = (exp t328)
-        let !t332 = (t330 - t331)
-        let !t333 = (recip (2.0 * t330))
-        let !t334 = ((((t333 * (t327 + t327)) * t324) + ((negate t331) * t325)) + ((t333 * (t329 + t329)) * t326))
-        let !t335 = (if ((abs t332) - 1.0e-10) > 0 then (if (abs t334) > 0 then 1.0 else 0.0) else 0.0)
-        let !s336 = (if t335 > 0 then (t327 + (negate ((t332 / t334) * t324))) else t327)
-        let !s337 = (if t335 > 0 then (t328 + (negate ((t332 / t334) * t325))) else t328)
-        let !s338 = (if t335 > 0 then (t329 + (negate ((t332 / t334) * t326))) else t329)
-        wrU walk ((12 * i323) + 9) s336
-        wrU walk ((12 * i323) + 10) s337
-        wrU walk ((12 * i323) + 11) s338
+      loopI 0.0 24.0 $ \i308 -> do
+        let !d308 = fromIntegral i308 :: Double
+        chkI walk (12 * i308) 6 11
+        t309 <- rdU walk ((12 * i308) + 6)
+        t310 <- rdU walk ((12 * i308) + 7)
+        t311 <- rdU walk ((12 * i308) + 8)
+        t312 <- rdU walk ((12 * i308) + 9)
+        t313 <- rdU walk ((12 * i308) + 10)
+        t314 <- rdU walk ((12 * i308) + 11)
+        let !t315 = (sqrt ((t312 * t312) + (t314 * t314)))
+        let !t316 = (exp t313)
+        let !t317 = (t315 - t316)
+        let !t318 = (recip (2.0 * t315))
+        let !t319 = ((((t318 * (t312 + t312)) * t309) + ((negate t316) * t310)) + ((t318 * (t314 + t314)) * t311))
+        let !t320 = (if ((abs t317) - 1.0e-10) > 0 then (if (abs t319) > 0 then 1.0 else 0.0) else 0.0)
+        let !s321 = (if t320 > 0 then (t312 + (negate ((t317 / t319) * t309))) else t312)
+        let !s322 = (if t320 > 0 then (t313 + (negate ((t317 / t319) * t310))) else t313)
+        let !s323 = (if t320 > 0 then (t314 + (negate ((t317 / t319) * t311))) else t314)
+        wrU walk ((12 * i308) + 9) s321
+        wrU walk ((12 * i308) + 10) s322
+        wrU walk ((12 * i308) + 11) s323
         pure ()
-      loopI 0.0 24.0 $ \i339 -> do
-        let !d339 = fromIntegral i339 :: Double
-        chkI walk (12 * i339) 0 11
-        t340 <- rdU walk ((12 * i339) + 6)
-        t341 <- rdU walk ((12 * i339) + 7)
-        t342 <- rdU walk ((12 * i339) + 8)
-        t343 <- rdU walk ((12 * i339) + 9)
-        t344 <- rdU walk ((12 * i339) + 10)
-        t345 <- rdU walk ((12 * i339) + 11)
-        chkI radii ((24 * i1) + i339) 0 0
-        t346 <- rdU radii ((24 * i1) + i339)
-        let !s347 = (t346 / 4.0)
-        t348 <- rdU walk (12 * i339)
-        t349 <- rdU walk ((12 * i339) + 1)
-        t350 <- rdU walk ((12 * i339) + 2)
-        t351 <- rdU walk ((12 * i339) + 6)
-        t352 <- rdU walk ((12 * i339) + 7)
-        t353 <- rdU walk ((12 * i339) + 8)
-        t354 <- rdU walk ((12 * i339) + 3)
-        t355 <- rdU walk ((12 * i339) + 4)
-        t356 <- rdU walk ((12 * i339) + 5)
-        let !t357 = (if (abs s347) > 0 then 1.0 else 0.0)
-        let !t358 = (sqrt ((t343 * t343) + (t345 * t345)))
-        let !t359 = (exp t344)
-        let !t360 = (t358 - t359)
-        let !t361 = (recip (2.0 * t358))
-        let !t362 = ((((t361 * (t343 + t343)) * t340) + ((negate t359) * t341)) + ((t361 * (t345 + t345)) * t342))
-        let !t363 = (if ((abs t360) - 1.0e-10) > 0 then (if (abs t362) > 0 then 1.0 else 0.0) else 0.0)
-        let !t364 = (1.0 - t357)
-        let !s365 = ((t357 * (if t363 > 0 then (t343 + (negate ((t360 / t362) * t340))) else t343)) + (t364 * t348))
-        let !s366 = ((t357 * (if t363 > 0 then (t344 + (negate ((t360 / t362) * t341))) else t344)) + (t364 * t349))
-        let !s367 = ((t357 * (if t363 > 0 then (t345 + (negate ((t360 / t362) * t342))) else t345)) + (t364 * t350))
-        chkI verts ((291 * i1) + (12 * i339)) 12 14
-        wrU verts (((291 * i1) + (12 * i339)) + 12) (if (1.0 - (abs (((s365 - s365) + (s366 - s366)) + (s367 - s367)))) > 0 then s365 else t2)
-        wrU verts (((291 * i1) + (12 * i339)) + 13) (if (1.0 - (abs (((s365 - s365) + (s366 - s366)) + (s367 - s367)))) > 0 then s366 else t3)
-        wrU verts (((291 * i1) + (12 * i339)) + 14) (if (1.0 - (abs (((s365 - s365) + (s366 - s366)) + (s367 - s367)))) > 0 then s367 else t4)
+      loopI 0.0 24.0 $ \i324 -> do
+        let !d324 = fromIntegral i324 :: Double
+        chkI walk (12 * i324) 0 11
+        t325 <- rdU walk ((12 * i324) + 6)
+        t326 <- rdU walk ((12 * i324) + 7)
+        t327 <- rdU walk ((12 * i324) + 8)
+        t328 <- rdU walk ((12 * i324) + 9)
+        t329 <- rdU walk ((12 * i324) + 10)
+        t330 <- rdU walk ((12 * i324) + 11)
+        chkI radii ((24 * i1) + i324) 0 0
+        t331 <- rdU radii ((24 * i1) + i324)
+        let !s332 = (t331 / 4.0)
+        t333 <- rdU walk (12 * i324)
+        t334 <- rdU walk ((12 * i324) + 1)
+        t335 <- rdU walk ((12 * i324) + 2)
+        t336 <- rdU walk ((12 * i324) + 3)
+        t337 <- rdU walk ((12 * i324) + 4)
+        t338 <- rdU walk ((12 * i324) + 5)
+        let !t339 = (if (abs s332) > 0 then 1.0 else 0.0)
+        let !t340 = (sqrt ((t328 * t328) + (t330 * t330)))
+        let !t341 = (exp t329)
+        let !t342 = (t340 - t341)
+        let !t343 = (recip (2.0 * t340))
+        let !t344 = ((((t343 * (t328 + t328)) * t325) + ((negate t341) * t326)) + ((t343 * (t330 + t330)) * t327))
+        let !t345 = (if ((abs t342) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
+        let !t346 = (1.0 - t339)
+        let !s347 = ((t339 * (if t345 > 0 then (t328 + (negate ((t342 / t344) * t325))) else t328)) + (t346 * t333))
+        let !s348 = ((t339 * (if t345 > 0 then (t329 + (negate ((t342 / t344) * t326))) else t329)) + (t346 * t334))
+        let !s349 = ((t339 * (if t345 > 0 then (t330 + (negate ((t342 / t344) * t327))) else t330)) + (t346 * t335))
+        chkI verts ((291 * i1) + (12 * i324)) 12 14
+        wrU verts (((291 * i1) + (12 * i324)) + 12) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s347 else t2)
+        wrU verts (((291 * i1) + (12 * i324)) + 13) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s348 else t3)
+        wrU verts (((291 * i1) + (12 * i324)) + 14) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s349 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i368 -> do
-        let !d368 = fromIntegral i368 :: Double
-        t369 <- getR v18
-        t370 <- getR v19
-        setR v18 ((t369 * 0.9659258262890683) - (t370 * 0.25881904510252074))
-        setR v19 ((t370 * 0.9659258262890683) + (t369 * 0.25881904510252074))
-        let !s371 = ((t369 * t5) + (t370 * s14))
-        let !s372 = ((t369 * t6) + (t370 * s15))
-        let !s373 = ((t369 * t7) + (t370 * s16))
-        chkI walk (12 * i368) 3 5
-        wrU walk ((12 * i368) + 3) s371
-        wrU walk ((12 * i368) + 4) s372
-        wrU walk ((12 * i368) + 5) s373
+      loopI 0.0 24.0 $ \i350 -> do
+        let !d350 = fromIntegral i350 :: Double
+        t351 <- getR v18
+        t352 <- getR v19
+        setR v18 ((t351 * 0.9659258262890683) - (t352 * 0.25881904510252074))
+        setR v19 ((t352 * 0.9659258262890683) + (t351 * 0.25881904510252074))
+        let !s353 = ((t351 * t5) + (t352 * s14))
+        let !s354 = ((t351 * t6) + (t352 * s15))
+        let !s355 = ((t351 * t7) + (t352 * s16))
+        chkI walk (12 * i350) 3 5
+        wrU walk ((12 * i350) + 3) s353
+        wrU walk ((12 * i350) + 4) s354
+        wrU walk ((12 * i350) + 5) s355
         pure ()
-      loopI 0.0 24.0 $ \i374 -> do
-        let !d374 = fromIntegral i374 :: Double
-        chkI radii ((24 * i1) + i374) 0 0
-        t375 <- rdU radii ((24 * i1) + i374)
-        chkI walk (12 * i374) 3 11
-        t376 <- rdU walk ((12 * i374) + 3)
-        t377 <- rdU walk ((12 * i374) + 4)
-        t378 <- rdU walk ((12 * i374) + 5)
-        let !s379 = (t2 + (t375 * t376))
-        let !s380 = (t3 + (t375 * t377))
-        let !s381 = (t4 + (t375 * t378))
-        let !t382 = (sqrt ((s379 * s379) + (s381 * s381)))
-        let !t383 = (exp s380)
-        let !t384 = (t382 - t383)
-        let !t385 = (recip (2.0 * t382))
-        let !t386 = ((((t385 * (s379 + s379)) * t8) + ((negate t383) * t9)) + ((t385 * (s381 + s381)) * t10))
-        let !t387 = (if ((abs t384) - 1.0e-10) > 0 then (if (abs t386) > 0 then 1.0 else 0.0) else 0.0)
-        let !s388 = (if t387 > 0 then (s379 + (negate ((t384 / t386) * t8))) else s379)
-        let !s389 = (if t387 > 0 then (s380 + (negate ((t384 / t386) * t9))) else s380)
-        let !s390 = (if t387 > 0 then (s381 + (negate ((t384 / t386) * t10))) else s381)
-        wrU walk ((12 * i374) + 9) s388
-        wrU walk ((12 * i374) + 10) s389
-        wrU walk ((12 * i374) + 11) s390
+      loopI 0.0 24.0 $ \i356 -> do
+        let !d356 = fromIntegral i356 :: Double
+        chkI radii ((24 * i1) + i356) 0 0
+        t357 <- rdU radii ((24 * i1) + i356)
+        chkI walk (12 * i356) 3 11
+        t358 <- rdU walk ((12 * i356) + 3)
+        t359 <- rdU walk ((12 * i356) + 4)
+        t360 <- rdU walk ((12 * i356) + 5)
+        let !s361 = (t2 + (t357 * t358))
+        let !s362 = (t3 + (t357 * t359))
+        let !s363 = (t4 + (t357 * t360))
+        let !t364 = (sqrt ((s361 * s361) + (s363 * s363)))
+        let !t365 = (exp s362)
+        let !t366 = (t364 - t365)
+        let !t367 = (recip (2.0 * t364))
+        let !t368 = ((((t367 * (s361 + s361)) * t8) + ((negate t365) * t9)) + ((t367 * (s363 + s363)) * t10))
+        let !t369 = (if ((abs t366) - 1.0e-10) > 0 then (if (abs t368) > 0 then 1.0 else 0.0) else 0.0)
+        let !s370 = (if t369 > 0 then (s361 + (negate ((t366 / t368) * t8))) else s361)
+        let !s371 = (if t369 > 0 then (s362 + (negate ((t366 / t368) * t9))) else s362)
+        let !s372 = (if t369 > 0 then (s363 + (negate ((t366 / t368) * t10))) else s363)
+        wrU walk ((12 * i356) + 9) s370
+        wrU walk ((12 * i356) + 10) s371
+        wrU walk ((12 * i356) + 11) s372
         pure ()
-      loopI 0.0 24.0 $ \i391 -> do
-        let !d391 = fromIntegral i391 :: Double
-        chkI walk (12 * i391) 9 11
-        t392 <- rdU walk ((12 * i391) + 9)
-        t393 <- rdU walk ((12 * i391) + 10)
-        t394 <- rdU walk ((12 * i391) + 11)
-        let !t395 = (sqrt ((t392 * t392) + (t394 * t394)))
-        let !t396 = (exp t393)
+      loopI 0.0 24.0 $ \i373 -> do
+        let !d373 = fromIntegral i373 :: Double
+        chkI walk (12 * i373) 9 11
+        t374 <- rdU walk ((12 * i373) + 9)
+        t375 <- rdU walk ((12 * i373) + 10)
+        t376 <- rdU walk ((12 * i373) + 11)
+        let !t377 = (sqrt ((t374 * t374) + (t376 * t376)))
+        let !t378 = (exp t375)
+        let !t379 = (t377 - t378)
+        let !t380 = (recip (2.0 * t377))
+        let !t381 = ((((t380 * (t374 + t374)) * t8) + ((negate t378) * t9)) + ((t380 * (t376 + t376)) * t10))
+        let !t382 = (if ((abs t379) - 1.0e-10) > 0 then (if (abs t381) > 0 then 1.0 else 0.0) else 0.0)
+        let !s383 = (if t382 > 0 then (t374 + (negate ((t379 / t381) * t8))) else t374)
+        let !s384 = (if t382 > 0 then (t375 + (negate ((t379 / t381) * t9))) else t375)
+        let !s385 = (if t382 > 0 then (t376 + (negate ((t379 / t381) * t10))) else t376)
+        wrU walk ((12 * i373) + 9) s383
+        wrU walk ((12 * i373) + 10) s384
+        wrU walk ((12 * i373) + 11) s385
+        pure ()
+      loopI 0.0 24.0 $ \i386 -> do
+        let !d386 = fromIntegral i386 :: Double
+        chkI walk (12 * i386) 3 11
+        t387 <- rdU walk ((12 * i386) + 9)
+        t388 <- rdU walk ((12 * i386) + 10)
+        t389 <- rdU walk ((12 * i386) + 11)
+        chkI radii ((24 * i1) + i386) 0 0
+        t390 <- rdU radii ((24 * i1) + i386)
+        t391 <- rdU walk ((12 * i386) + 3)
+        t392 <- rdU walk ((12 * i386) + 4)
+        t393 <- rdU walk ((12 * i386) + 5)
+        let !t394 = (if (abs t390) > 0 then 1.0 else 0.0)
+        let !t395 = (sqrt ((t387 * t387) + (t389 * t389)))
+        let !t396 = (exp t388)
         let !t397 = (t395 - t396)
         let !t398 = (recip (2.0 * t395))
-        let !t399 = ((((t398 * (t392 + t392)) * t8) + ((negate t396) * t9)) + ((t398 * (t394 + t394)) * t10))
+        let !t399 = ((((t398 * (t387 + t387)) * t8) + ((negate t396) * t9)) + ((t398 * (t389 + t389)) * t10))
         let !t400 = (if ((abs t397) - 1.0e-10) > 0 then (if (abs t399) > 0 then 1.0 else 0.0) else 0.0)
-        let !s401 = (if t400 > 0 then (t392 + (negate ((t397 / t399) * t8))) else t392)
-        let !s402 = (if t400 > 0 then (t393 + (negate ((t397 / t399) * t9))) else t393)
-        let !s403 = (if t400 > 0 then (t394 + (negate ((t397 / t399) * t10))) else t394)
-        wrU walk ((12 * i391) + 9) s401
-        wrU walk ((12 * i391) + 10) s402
-        wrU walk ((12 * i391) + 11) s403
-        pure ()
-      loopI 0.0 24.0 $ \i404 -> do
-        let !d404 = fromIntegral i404 :: Double
-        chkI walk (12 * i404) 3 11
-        t405 <- rdU walk ((12 * i404) + 9)
-        t406 <- rdU walk ((12 * i404) + 10)
-        t407 <- rdU walk ((12 * i404) + 11)
-        chkI radii ((24 * i1) + i404) 0 0
-        t408 <- rdU radii ((24 * i1) + i404)
-        t409 <- rdU walk ((12 * i404) + 3)
-        t410 <- rdU walk ((12 * i404) + 4)
-        t411 <- rdU walk ((12 * i404) + 5)
-        let !t412 = (if (abs t408) > 0 then 1.0 else 0.0)
-        let !t413 = (sqrt ((t405 * t405) + (t407 * t407)))
-        let !t414 = (exp t406)
-        let !t415 = (t413 - t414)
-        let !t416 = (recip (2.0 * t413))
-        let !t417 = ((((t416 * (t405 + t405)) * t8) + ((negate t414) * t9)) + ((t416 * (t407 + t407)) * t10))
-        let !t418 = (if ((abs t415) - 1.0e-10) > 0 then (if (abs t417) > 0 then 1.0 else 0.0) else 0.0)
-        let !t419 = (1.0 - t412)
-        let !s420 = ((t412 * (if t418 > 0 then (t405 + (negate ((t415 / t417) * t8))) else t405)) + (t419 * t2))
-        let !s421 = ((t412 * (if t418 > 0 then (t406 + (negate ((t415 / t417) * t9))) else t406)) + (t419 * t3))
-        let !s422 = ((t412 * (if t418 > 0 then (t407 + (negate ((t415 / t417) * t10))) else t407)) + (t419 * t4))
-        let !t423 = (1.0 - (abs (((s420 - s420) + (s421 - s421)) + (s422 - s422))))
-        let !s424 = (if t423 > 0 then s420 else t2)
-        let !s425 = (if t423 > 0 then s421 else t3)
-        let !s426 = (if t423 > 0 then s422 else t4)
-        chkI verts ((291 * i1) + (12 * i404)) 3 14
-        wrU verts (((291 * i1) + (12 * i404)) + 12) s424
-        wrU verts (((291 * i1) + (12 * i404)) + 13) s425
-        wrU verts (((291 * i1) + (12 * i404)) + 14) s426
-        wrU verts (((291 * i1) + (12 * i404)) + 3) (t2 + (0.25 * (s424 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i404)) + 4) (t3 + (0.25 * (s425 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i404)) + 5) (t4 + (0.25 * (s426 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i404)) + 6) (t2 + (0.5 * (s424 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i404)) + 7) (t3 + (0.5 * (s425 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i404)) + 8) (t4 + (0.5 * (s426 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i404)) + 9) (t2 + (0.75 * (s424 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i404)) + 10) (t3 + (0.75 * (s425 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i404)) + 11) (t4 + (0.75 * (s426 + (negate t4))))
+        let !t401 = (1.0 - t394)
+        let !s402 = ((t394 * (if t400 > 0 then (t387 + (negate ((t397 / t399) * t8))) else t387)) + (t401 * t2))
+        let !s403 = ((t394 * (if t400 > 0 then (t388 + (negate ((t397 / t399) * t9))) else t388)) + (t401 * t3))
+        let !s404 = ((t394 * (if t400 > 0 then (t389 + (negate ((t397 / t399) * t10))) else t389)) + (t401 * t4))
+        let !t405 = (1.0 - (abs (((s402 - s402) + (s403 - s403)) + (s404 - s404))))
+        let !s406 = (if t405 > 0 then s402 else t2)
+        let !s407 = (if t405 > 0 then s403 else t3)
+        let !s408 = (if t405 > 0 then s404 else t4)
+        chkI verts ((291 * i1) + (12 * i386)) 3 14
+        wrU verts (((291 * i1) + (12 * i386)) + 12) s406
+        wrU verts (((291 * i1) + (12 * i386)) + 13) s407
+        wrU verts (((291 * i1) + (12 * i386)) + 14) s408
+        wrU verts (((291 * i1) + (12 * i386)) + 3) (t2 + (0.25 * (s406 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i386)) + 4) (t3 + (0.25 * (s407 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i386)) + 5) (t4 + (0.25 * (s408 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i386)) + 6) (t2 + (0.5 * (s406 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i386)) + 7) (t3 + (0.5 * (s407 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i386)) + 8) (t4 + (0.5 * (s408 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i386)) + 9) (t2 + (0.75 * (s406 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i386)) + 10) (t3 + (0.75 * (s407 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i386)) + 11) (t4 + (0.75 * (s408 + (negate t4))))
         pure ()
       pure ()
     pure ()
