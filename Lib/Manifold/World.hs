@@ -481,8 +481,10 @@ polygoniseBody sp l w i = do
       -- either way. Compiled natively (LLVM's code waits on the chains),
       -- Newton loops made the walk of the sphere with 1000 bodies twice as
       -- fast; in Chromium (whose code is busy with more instructions) they
-      -- made the torus with 3000 bodies a quarter slower. On a flat surface
-      -- Newton has nothing to wait on, and step loops are quicker in both.
+      -- gained nothing and, with the steps counted in a loop so that V8
+      -- optimises them, made the torus with 3000 bodies a quarter slower. On
+      -- a flat surface Newton has nothing to wait on, and step loops are
+      -- quicker in both.
       stepLoopsWalk steps stepLength vertex = do
         let fused = steps == 1
         when (not fused) $ directions $ \d -> nextDirection >>= writeAt3 scratch (at d directionAt)
@@ -537,7 +539,9 @@ polygoniseBody sp l w i = do
       -- a walk that fails (a singular point) leaves the vertex at the
       -- centre rather than poison the polygon
       finite q = select (finiteness (toList3 q)) <$> q <*> p
-  let walk = if flat || walkLoops l == LoopPerStep then stepLoopsWalk else newtonLoopsWalk
+  -- (the page's loops first: then the symbolic flatness test is only made
+  -- when staging the compiled step, not for every body of a generic step)
+  let walk = if walkLoops l == LoopPerStep || flat then stepLoopsWalk else newtonLoopsWalk
   ifPositive fine
     (walk ns (\d -> share . (/ fromIntegral ns) =<< radius d)
           (\k d q -> write3 (wVerts w) (vertexIx d k) (finite q)))
