@@ -495,13 +495,7 @@ polygoniseBody sp l w i = do
           nq <- startAt normalAt n
           dir <- if fused then nextDirection else readAt3 scratch (at d directionAt)
           projected <- projectAlongWithGradient f nq <$> share3 (q0 ^+^ h *^ dir)
-          let (q1, dir1, n1) = geodesicStepEnd h nq (q0, dir) projected
-          q <- share3 q1
-          vertex k d q
-          when (k < steps) $ do
-            writeAt3 scratch (at d pointAt) q
-            writeAt3 scratch (at d directionAt) =<< share3 dir1
-            writeAt3 scratch (at d normalAt) =<< share3 n1
+          endStep steps vertex k d h nq (q0, dir) projected
       -- A loop across the directions for each Newton iteration (the first
       -- also moves the point, the last ends the step), for each step. (Four
       -- steps of these loops, and one, unrolled in one function are more
@@ -522,13 +516,17 @@ polygoniseBody sp l w i = do
           let projected = newtonAlong f nq q
           if j < stepProjectionIterations then writeAt3 scratch (at d iterateAt) =<< share3 (fst projected) else do
             (h, pd) <- start
-            let (q1, dir1, n1) = geodesicStepEnd h nq pd projected
-            q' <- share3 q1
-            vertex k d q'
-            when (k < steps) $ do
-              writeAt3 scratch (at d pointAt) q'
-              writeAt3 scratch (at d directionAt) =<< share3 dir1
-              writeAt3 scratch (at d normalAt) =<< share3 n1
+            endStep steps vertex k d h nq pd projected
+      -- the end of step k along direction d, once its moved point is back
+      -- on the surface: the vertex, and the state the next step starts from
+      endStep steps vertex k d h nq pd projected = do
+        let (q1, dir1, n1) = geodesicStepEnd h nq pd projected
+        q <- share3 q1
+        vertex k d q
+        when (k < steps) $ do
+          writeAt3 scratch (at d pointAt) q
+          writeAt3 scratch (at d directionAt) =<< share3 dir1
+          writeAt3 scratch (at d normalAt) =<< share3 n1
       -- a single step's end is the outline vertex; the inner vertices go on
       -- the chord from the centre
       outlineVertex' d q = do
