@@ -70,9 +70,9 @@ compiledModule shared sp l functions = unlines $ generatedPragmas ["BangPatterns
   , "fingerprint :: String"
   , "fingerprint = " ++ show (spaceFingerprint sp l)
   , ""
-  , "applyTo :: (" ++ concatMap (const "Arr -> ") worldParams ++ "IO ()) -> WorldArrays (IOVector Double) -> IO ()"
+  , "applyTo :: (" ++ concatMap (const "Arr -> ") (worldParams ++ ["locals"]) ++ "IO ()) -> WorldArrays (IOVector Double) -> IO ()"
   , "applyTo f w = case map primitiveArray (toList w) of"
-  , "  [" ++ intercalate ", " worldParams ++ "] -> f " ++ unwords worldParams
+  , "  [" ++ intercalate ", " worldParams ++ "] -> newLocals >>= f " ++ unwords worldParams
   , "  _ -> error \"Manifold.Compiled." ++ compiledModuleName sp ++ ": the world's arrays are not the ones this step was printed for\""
   , ""
   ] ++ [ text | f@(_, text) <- functions, f `notElem` shared ]

@@ -22,13 +22,13 @@ compiled = CompiledStep "flat-klein" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, 0.0];\n}\n\nquotient Lattice {latticePeriod = 2.0, latticeFlip = True}\nbounds 2.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.FlatKlein: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -67,135 +67,136 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 10
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 6.103515625e-5) > 0 then t6 else 6.103515625e-5)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 6.103515625e-5) > 0 then t5 else 6.103515625e-5)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
-    t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    let !t39 = ((abs t32) - 1.0)
-    let !t40 = (if (negate t39) > 0 then 0.0 else t39)
-    let !t41 = ((abs t34) - 1.0)
-    let !t42 = (if (negate t41) > 0 then 0.0 else t41)
-    if ((t35 + t37) - (sqrt ((t40 * t40) + (t42 * t42)))) > 0 then do
-      t43 <- rdU meta 4
-      t44 <- rdU meta 5
-      let !s45 = (floorF (t32 / t44))
-      let !s46 = (floorF (t33 / t44))
-      let !s47 = (floorF (t34 / t44))
-      loopI 0.0 3.0 $ \i48 -> do
-        let !d48 = fromIntegral i48 :: Double
-        loopI 0.0 3.0 $ \i49 -> do
-          let !d49 = fromIntegral i49 :: Double
-          loopI 0.0 3.0 $ \i50 -> do
-            let !d50 = fromIntegral i50 :: Double
-            let !s51 = ((s45 + d48) - 1.0)
-            let !s52 = ((s46 + d49) - 1.0)
-            let !s53 = ((s47 + d50) - 1.0)
-            let !s54 = (((((s51 + 131072.0) * 262144.0) + (s52 + 131072.0)) * 262144.0) + (s53 + 131072.0))
-            let !t55 = (((s51 * 7.3856093e7) + (s52 * 1.9349663e7)) + (s53 * 8.3492791e7))
-            let !s56 = (t55 - (t43 * (floorF (t55 / t43))))
-            chkI grid (truncate s56) 0 0
-            t57 <- rdU grid (truncate s56)
-            chkI grid ((truncate s56) + (truncate t43)) 0 0
-            t58 <- rdU grid ((truncate s56) + (truncate t43))
-            loopI t58 t57 $ \i59 -> do
-              let !d59 = fromIntegral i59 :: Double
-              chkI items i59 0 0
-              t60 <- rdU items i59
-              chkI cellOf (truncate t60) 0 0
-              t61 <- rdU cellOf (truncate t60)
-              if (0.5 - (abs (t61 - s54))) > 0 then do
-                if (t60 - d31) > 0 then do
-                  chkI pos (3 * (truncate t60)) 0 2
-                  t62 <- rdU pos (3 * (truncate t60))
-                  t63 <- rdU pos ((3 * (truncate t60)) + 1)
-                  t64 <- rdU pos ((3 * (truncate t60)) + 2)
-                  chkI scalars (6 * (truncate t60)) 2 5
-                  t65 <- rdU scalars ((6 * (truncate t60)) + 5)
-                  t66 <- rdU scalars ((6 * (truncate t60)) + 2)
-                  let !t67 = (t36 + t66)
-                  let !t68 = (t32 + (negate t62))
-                  let !t69 = (t33 + (negate t63))
-                  let !t70 = (t34 + (negate t64))
-                  let !t71 = ((t35 + t65) - (sqrt (((t68 * t68) + (t69 * t69)) + (t70 * t70))))
-                  if (if (t67 - t71) > 0 then t71 else t67) > 0 then do
-                    t72 <- getR v38
-                    chkI near (truncate t72) 0 0
-                    wrU near (truncate t72) t60
-                    setR v38 (t72 + 1.0)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    let !t36 = ((abs t30) - 1.0)
+    let !t37 = (if (negate t36) > 0 then 0.0 else t36)
+    let !t38 = ((abs t32) - 1.0)
+    let !t39 = (if (negate t38) > 0 then 0.0 else t38)
+    if ((t33 + t35) - (sqrt ((t37 * t37) + (t39 * t39)))) > 0 then do
+      t40 <- rdU meta 4
+      t41 <- rdU meta 5
+      let !s42 = (floorF (t30 / t41))
+      let !s43 = (floorF (t31 / t41))
+      let !s44 = (floorF (t32 / t41))
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
+          loopI 0.0 3.0 $ \i47 -> do
+            let !d47 = fromIntegral i47 :: Double
+            let !s48 = ((s42 + d45) - 1.0)
+            let !s49 = ((s43 + d46) - 1.0)
+            let !s50 = ((s44 + d47) - 1.0)
+            let !s51 = (((((s48 + 131072.0) * 262144.0) + (s49 + 131072.0)) * 262144.0) + (s50 + 131072.0))
+            let !t52 = (((s48 * 7.3856093e7) + (s49 * 1.9349663e7)) + (s50 * 8.3492791e7))
+            let !s53 = (t52 - (t40 * (floorF (t52 / t40))))
+            chkI grid (truncate s53) 0 0
+            t54 <- rdU grid (truncate s53)
+            chkI grid ((truncate s53) + (truncate t40)) 0 0
+            t55 <- rdU grid ((truncate s53) + (truncate t40))
+            loopI t55 t54 $ \i56 -> do
+              let !d56 = fromIntegral i56 :: Double
+              chkI items i56 0 0
+              t57 <- rdU items i56
+              chkI cellOf (truncate t57) 0 0
+              t58 <- rdU cellOf (truncate t57)
+              if (0.5 - (abs (t58 - s51))) > 0 then do
+                if (t57 - d29) > 0 then do
+                  chkI pos (3 * (truncate t57)) 0 2
+                  t59 <- rdU pos (3 * (truncate t57))
+                  t60 <- rdU pos ((3 * (truncate t57)) + 1)
+                  t61 <- rdU pos ((3 * (truncate t57)) + 2)
+                  chkI scalars (6 * (truncate t57)) 2 5
+                  t62 <- rdU scalars ((6 * (truncate t57)) + 5)
+                  t63 <- rdU scalars ((6 * (truncate t57)) + 2)
+                  let !t64 = (t34 + t63)
+                  let !t65 = (t30 + (negate t59))
+                  let !t66 = (t31 + (negate t60))
+                  let !t67 = (t32 + (negate t61))
+                  let !t68 = ((t33 + t62) - (sqrt (((t65 * t65) + (t66 * t66)) + (t67 * t67))))
+                  if (if (t64 - t68) > 0 then t68 else t64) > 0 then do
+                    t69 <- rdU locals 2
+                    chkI near (truncate t69) 0 0
+                    wrU near (truncate t69) t57
+                    wrU locals 2 (t69 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -212,67 +213,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t73 <- getR v38
-    loopI 0.0 t73 $ \i74 -> do
-      let !d74 = fromIntegral i74 :: Double
-      chkI near i74 0 0
-      t75 <- rdU near i74
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t75 + 1.0) * 64.0) d31 t75 1.0 1.0 1.0 0.0 0.0 0.0
+    t70 <- rdU locals 2
+    loopI 0.0 t70 $ \i71 -> do
+      let !d71 = fromIntegral i71 :: Double
+      chkI near i71 0 0
+      t72 <- rdU near i71
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t72 + 1.0) * 64.0) d29 t72 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    let !s76 = (t32 + (-2.0))
-    let !s77 = ((negate t34) + (-2.0))
-    setR v38 0.0
-    let !t78 = ((abs s76) - 1.0)
-    let !t79 = (if (negate t78) > 0 then 0.0 else t78)
-    let !t80 = ((abs s77) - 1.0)
-    let !t81 = (if (negate t80) > 0 then 0.0 else t80)
-    if ((t35 + t37) - (sqrt ((t79 * t79) + (t81 * t81)))) > 0 then do
-      t82 <- rdU meta 4
-      t83 <- rdU meta 5
-      let !s84 = (floorF (s76 / t83))
-      let !s85 = (floorF (t33 / t83))
-      let !s86 = (floorF (s77 / t83))
-      loopI 0.0 3.0 $ \i87 -> do
-        let !d87 = fromIntegral i87 :: Double
-        loopI 0.0 3.0 $ \i88 -> do
-          let !d88 = fromIntegral i88 :: Double
-          loopI 0.0 3.0 $ \i89 -> do
-            let !d89 = fromIntegral i89 :: Double
-            let !s90 = ((s84 + d87) - 1.0)
-            let !s91 = ((s85 + d88) - 1.0)
-            let !s92 = ((s86 + d89) - 1.0)
-            let !s93 = (((((s90 + 131072.0) * 262144.0) + (s91 + 131072.0)) * 262144.0) + (s92 + 131072.0))
-            let !t94 = (((s90 * 7.3856093e7) + (s91 * 1.9349663e7)) + (s92 * 8.3492791e7))
-            let !s95 = (t94 - (t82 * (floorF (t94 / t82))))
-            chkI grid (truncate s95) 0 0
-            t96 <- rdU grid (truncate s95)
-            chkI grid ((truncate s95) + (truncate t82)) 0 0
-            t97 <- rdU grid ((truncate s95) + (truncate t82))
-            loopI t97 t96 $ \i98 -> do
-              let !d98 = fromIntegral i98 :: Double
-              chkI items i98 0 0
-              t99 <- rdU items i98
-              chkI cellOf (truncate t99) 0 0
-              t100 <- rdU cellOf (truncate t99)
-              if (0.5 - (abs (t100 - s93))) > 0 then do
-                if (t99 - d31) > 0 then do
-                  chkI pos (3 * (truncate t99)) 0 2
-                  t101 <- rdU pos (3 * (truncate t99))
-                  t102 <- rdU pos ((3 * (truncate t99)) + 1)
-                  t103 <- rdU pos ((3 * (truncate t99)) + 2)
-                  chkI scalars (6 * (truncate t99)) 2 5
-                  t104 <- rdU scalars ((6 * (truncate t99)) + 5)
-                  t105 <- rdU scalars ((6 * (truncate t99)) + 2)
-                  let !t106 = (t36 + t105)
-                  let !t107 = (s76 + (negate t101))
-                  let !t108 = (t33 + (negate t102))
-                  let !t109 = (s77 + (negate t103))
-                  let !t110 = ((t35 + t104) - (sqrt (((t107 * t107) + (t108 * t108)) + (t109 * t109))))
-                  if (if (t106 - t110) > 0 then t110 else t106) > 0 then do
-                    t111 <- getR v38
-                    chkI near (truncate t111) 0 0
-                    wrU near (truncate t111) t99
-                    setR v38 (t111 + 1.0)
+    let !s73 = (t30 + (-2.0))
+    let !s74 = ((negate t32) + (-2.0))
+    wrU locals 2 0.0
+    let !t75 = ((abs s73) - 1.0)
+    let !t76 = (if (negate t75) > 0 then 0.0 else t75)
+    let !t77 = ((abs s74) - 1.0)
+    let !t78 = (if (negate t77) > 0 then 0.0 else t77)
+    if ((t33 + t35) - (sqrt ((t76 * t76) + (t78 * t78)))) > 0 then do
+      t79 <- rdU meta 4
+      t80 <- rdU meta 5
+      let !s81 = (floorF (s73 / t80))
+      let !s82 = (floorF (t31 / t80))
+      let !s83 = (floorF (s74 / t80))
+      loopI 0.0 3.0 $ \i84 -> do
+        let !d84 = fromIntegral i84 :: Double
+        loopI 0.0 3.0 $ \i85 -> do
+          let !d85 = fromIntegral i85 :: Double
+          loopI 0.0 3.0 $ \i86 -> do
+            let !d86 = fromIntegral i86 :: Double
+            let !s87 = ((s81 + d84) - 1.0)
+            let !s88 = ((s82 + d85) - 1.0)
+            let !s89 = ((s83 + d86) - 1.0)
+            let !s90 = (((((s87 + 131072.0) * 262144.0) + (s88 + 131072.0)) * 262144.0) + (s89 + 131072.0))
+            let !t91 = (((s87 * 7.3856093e7) + (s88 * 1.9349663e7)) + (s89 * 8.3492791e7))
+            let !s92 = (t91 - (t79 * (floorF (t91 / t79))))
+            chkI grid (truncate s92) 0 0
+            t93 <- rdU grid (truncate s92)
+            chkI grid ((truncate s92) + (truncate t79)) 0 0
+            t94 <- rdU grid ((truncate s92) + (truncate t79))
+            loopI t94 t93 $ \i95 -> do
+              let !d95 = fromIntegral i95 :: Double
+              chkI items i95 0 0
+              t96 <- rdU items i95
+              chkI cellOf (truncate t96) 0 0
+              t97 <- rdU cellOf (truncate t96)
+              if (0.5 - (abs (t97 - s90))) > 0 then do
+                if (t96 - d29) > 0 then do
+                  chkI pos (3 * (truncate t96)) 0 2
+                  t98 <- rdU pos (3 * (truncate t96))
+                  t99 <- rdU pos ((3 * (truncate t96)) + 1)
+                  t100 <- rdU pos ((3 * (truncate t96)) + 2)
+                  chkI scalars (6 * (truncate t96)) 2 5
+                  t101 <- rdU scalars ((6 * (truncate t96)) + 5)
+                  t102 <- rdU scalars ((6 * (truncate t96)) + 2)
+                  let !t103 = (t34 + t102)
+                  let !t104 = (s73 + (negate t98))
+                  let !t105 = (t31 + (negate t99))
+                  let !t106 = (s74 + (negate t100))
+                  let !t107 = ((t33 + t101) - (sqrt (((t104 * t104) + (t105 * t105)) + (t106 * t106))))
+                  if (if (t103 - t107) > 0 then t107 else t103) > 0 then do
+                    t108 <- rdU locals 2
+                    chkI near (truncate t108) 0 0
+                    wrU near (truncate t108) t96
+                    wrU locals 2 (t108 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -289,67 +290,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t112 <- getR v38
-    loopI 0.0 t112 $ \i113 -> do
-      let !d113 = fromIntegral i113 :: Double
-      chkI near i113 0 0
-      t114 <- rdU near i113
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t114 + 1.0) * 64.0) + 16.0) d31 t114 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
+    t109 <- rdU locals 2
+    loopI 0.0 t109 $ \i110 -> do
+      let !d110 = fromIntegral i110 :: Double
+      chkI near i110 0 0
+      t111 <- rdU near i110
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t111 + 1.0) * 64.0) + 16.0) d29 t111 1.0 1.0 (-1.0) (-2.0) 0.0 (-2.0)
       pure ()
-    let !s115 = s76
-    let !s116 = (negate t34)
-    setR v38 0.0
-    let !t117 = ((abs s115) - 1.0)
-    let !t118 = (if (negate t117) > 0 then 0.0 else t117)
-    let !t119 = ((abs s116) - 1.0)
-    let !t120 = (if (negate t119) > 0 then 0.0 else t119)
-    if ((t35 + t37) - (sqrt ((t118 * t118) + (t120 * t120)))) > 0 then do
-      t121 <- rdU meta 4
-      t122 <- rdU meta 5
-      let !s123 = (floorF (s115 / t122))
-      let !s124 = (floorF (t33 / t122))
-      let !s125 = (floorF (s116 / t122))
-      loopI 0.0 3.0 $ \i126 -> do
-        let !d126 = fromIntegral i126 :: Double
-        loopI 0.0 3.0 $ \i127 -> do
-          let !d127 = fromIntegral i127 :: Double
-          loopI 0.0 3.0 $ \i128 -> do
-            let !d128 = fromIntegral i128 :: Double
-            let !s129 = ((s123 + d126) - 1.0)
-            let !s130 = ((s124 + d127) - 1.0)
-            let !s131 = ((s125 + d128) - 1.0)
-            let !s132 = (((((s129 + 131072.0) * 262144.0) + (s130 + 131072.0)) * 262144.0) + (s131 + 131072.0))
-            let !t133 = (((s129 * 7.3856093e7) + (s130 * 1.9349663e7)) + (s131 * 8.3492791e7))
-            let !s134 = (t133 - (t121 * (floorF (t133 / t121))))
-            chkI grid (truncate s134) 0 0
-            t135 <- rdU grid (truncate s134)
-            chkI grid ((truncate s134) + (truncate t121)) 0 0
-            t136 <- rdU grid ((truncate s134) + (truncate t121))
-            loopI t136 t135 $ \i137 -> do
-              let !d137 = fromIntegral i137 :: Double
-              chkI items i137 0 0
-              t138 <- rdU items i137
-              chkI cellOf (truncate t138) 0 0
-              t139 <- rdU cellOf (truncate t138)
-              if (0.5 - (abs (t139 - s132))) > 0 then do
-                if (t138 - d31) > 0 then do
-                  chkI pos (3 * (truncate t138)) 0 2
-                  t140 <- rdU pos (3 * (truncate t138))
-                  t141 <- rdU pos ((3 * (truncate t138)) + 1)
-                  t142 <- rdU pos ((3 * (truncate t138)) + 2)
-                  chkI scalars (6 * (truncate t138)) 2 5
-                  t143 <- rdU scalars ((6 * (truncate t138)) + 5)
-                  t144 <- rdU scalars ((6 * (truncate t138)) + 2)
-                  let !t145 = (t36 + t144)
-                  let !t146 = (s115 + (negate t140))
-                  let !t147 = (t33 + (negate t141))
-                  let !t148 = (s116 + (negate t142))
-                  let !t149 = ((t35 + t143) - (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148))))
-                  if (if (t145 - t149) > 0 then t149 else t145) > 0 then do
-                    t150 <- getR v38
-                    chkI near (truncate t150) 0 0
-                    wrU near (truncate t150) t138
-                    setR v38 (t150 + 1.0)
+    let !s112 = s73
+    let !s113 = (negate t32)
+    wrU locals 2 0.0
+    let !t114 = ((abs s112) - 1.0)
+    let !t115 = (if (negate t114) > 0 then 0.0 else t114)
+    let !t116 = ((abs s113) - 1.0)
+    let !t117 = (if (negate t116) > 0 then 0.0 else t116)
+    if ((t33 + t35) - (sqrt ((t115 * t115) + (t117 * t117)))) > 0 then do
+      t118 <- rdU meta 4
+      t119 <- rdU meta 5
+      let !s120 = (floorF (s112 / t119))
+      let !s121 = (floorF (t31 / t119))
+      let !s122 = (floorF (s113 / t119))
+      loopI 0.0 3.0 $ \i123 -> do
+        let !d123 = fromIntegral i123 :: Double
+        loopI 0.0 3.0 $ \i124 -> do
+          let !d124 = fromIntegral i124 :: Double
+          loopI 0.0 3.0 $ \i125 -> do
+            let !d125 = fromIntegral i125 :: Double
+            let !s126 = ((s120 + d123) - 1.0)
+            let !s127 = ((s121 + d124) - 1.0)
+            let !s128 = ((s122 + d125) - 1.0)
+            let !s129 = (((((s126 + 131072.0) * 262144.0) + (s127 + 131072.0)) * 262144.0) + (s128 + 131072.0))
+            let !t130 = (((s126 * 7.3856093e7) + (s127 * 1.9349663e7)) + (s128 * 8.3492791e7))
+            let !s131 = (t130 - (t118 * (floorF (t130 / t118))))
+            chkI grid (truncate s131) 0 0
+            t132 <- rdU grid (truncate s131)
+            chkI grid ((truncate s131) + (truncate t118)) 0 0
+            t133 <- rdU grid ((truncate s131) + (truncate t118))
+            loopI t133 t132 $ \i134 -> do
+              let !d134 = fromIntegral i134 :: Double
+              chkI items i134 0 0
+              t135 <- rdU items i134
+              chkI cellOf (truncate t135) 0 0
+              t136 <- rdU cellOf (truncate t135)
+              if (0.5 - (abs (t136 - s129))) > 0 then do
+                if (t135 - d29) > 0 then do
+                  chkI pos (3 * (truncate t135)) 0 2
+                  t137 <- rdU pos (3 * (truncate t135))
+                  t138 <- rdU pos ((3 * (truncate t135)) + 1)
+                  t139 <- rdU pos ((3 * (truncate t135)) + 2)
+                  chkI scalars (6 * (truncate t135)) 2 5
+                  t140 <- rdU scalars ((6 * (truncate t135)) + 5)
+                  t141 <- rdU scalars ((6 * (truncate t135)) + 2)
+                  let !t142 = (t34 + t141)
+                  let !t143 = (s112 + (negate t137))
+                  let !t144 = (t31 + (negate t138))
+                  let !t145 = (s113 + (negate t139))
+                  let !t146 = ((t33 + t140) - (sqrt (((t143 * t143) + (t144 * t144)) + (t145 * t145))))
+                  if (if (t142 - t146) > 0 then t146 else t142) > 0 then do
+                    t147 <- rdU locals 2
+                    chkI near (truncate t147) 0 0
+                    wrU near (truncate t147) t135
+                    wrU locals 2 (t147 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -366,67 +367,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t151 <- getR v38
-    loopI 0.0 t151 $ \i152 -> do
-      let !d152 = fromIntegral i152 :: Double
-      chkI near i152 0 0
-      t153 <- rdU near i152
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t153 + 1.0) * 64.0) + 20.0) d31 t153 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
+    t148 <- rdU locals 2
+    loopI 0.0 t148 $ \i149 -> do
+      let !d149 = fromIntegral i149 :: Double
+      chkI near i149 0 0
+      t150 <- rdU near i149
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t150 + 1.0) * 64.0) + 20.0) d29 t150 1.0 1.0 (-1.0) (-2.0) 0.0 0.0
       pure ()
-    let !s154 = s115
-    let !s155 = (s116 + 2.0)
-    setR v38 0.0
-    let !t156 = ((abs s154) - 1.0)
-    let !t157 = (if (negate t156) > 0 then 0.0 else t156)
-    let !t158 = ((abs s155) - 1.0)
-    let !t159 = (if (negate t158) > 0 then 0.0 else t158)
-    if ((t35 + t37) - (sqrt ((t157 * t157) + (t159 * t159)))) > 0 then do
-      t160 <- rdU meta 4
-      t161 <- rdU meta 5
-      let !s162 = (floorF (s154 / t161))
-      let !s163 = (floorF (t33 / t161))
-      let !s164 = (floorF (s155 / t161))
-      loopI 0.0 3.0 $ \i165 -> do
-        let !d165 = fromIntegral i165 :: Double
-        loopI 0.0 3.0 $ \i166 -> do
-          let !d166 = fromIntegral i166 :: Double
-          loopI 0.0 3.0 $ \i167 -> do
-            let !d167 = fromIntegral i167 :: Double
-            let !s168 = ((s162 + d165) - 1.0)
-            let !s169 = ((s163 + d166) - 1.0)
-            let !s170 = ((s164 + d167) - 1.0)
-            let !s171 = (((((s168 + 131072.0) * 262144.0) + (s169 + 131072.0)) * 262144.0) + (s170 + 131072.0))
-            let !t172 = (((s168 * 7.3856093e7) + (s169 * 1.9349663e7)) + (s170 * 8.3492791e7))
-            let !s173 = (t172 - (t160 * (floorF (t172 / t160))))
-            chkI grid (truncate s173) 0 0
-            t174 <- rdU grid (truncate s173)
-            chkI grid ((truncate s173) + (truncate t160)) 0 0
-            t175 <- rdU grid ((truncate s173) + (truncate t160))
-            loopI t175 t174 $ \i176 -> do
-              let !d176 = fromIntegral i176 :: Double
-              chkI items i176 0 0
-              t177 <- rdU items i176
-              chkI cellOf (truncate t177) 0 0
-              t178 <- rdU cellOf (truncate t177)
-              if (0.5 - (abs (t178 - s171))) > 0 then do
-                if (t177 - d31) > 0 then do
-                  chkI pos (3 * (truncate t177)) 0 2
-                  t179 <- rdU pos (3 * (truncate t177))
-                  t180 <- rdU pos ((3 * (truncate t177)) + 1)
-                  t181 <- rdU pos ((3 * (truncate t177)) + 2)
-                  chkI scalars (6 * (truncate t177)) 2 5
-                  t182 <- rdU scalars ((6 * (truncate t177)) + 5)
-                  t183 <- rdU scalars ((6 * (truncate t177)) + 2)
-                  let !t184 = (t36 + t183)
-                  let !t185 = (s154 + (negate t179))
-                  let !t186 = (t33 + (negate t180))
-                  let !t187 = (s155 + (negate t181))
-                  let !t188 = ((t35 + t182) - (sqrt (((t185 * t185) + (t186 * t186)) + (t187 * t187))))
-                  if (if (t184 - t188) > 0 then t188 else t184) > 0 then do
-                    t189 <- getR v38
-                    chkI near (truncate t189) 0 0
-                    wrU near (truncate t189) t177
-                    setR v38 (t189 + 1.0)
+    let !s151 = s112
+    let !s152 = (s113 + 2.0)
+    wrU locals 2 0.0
+    let !t153 = ((abs s151) - 1.0)
+    let !t154 = (if (negate t153) > 0 then 0.0 else t153)
+    let !t155 = ((abs s152) - 1.0)
+    let !t156 = (if (negate t155) > 0 then 0.0 else t155)
+    if ((t33 + t35) - (sqrt ((t154 * t154) + (t156 * t156)))) > 0 then do
+      t157 <- rdU meta 4
+      t158 <- rdU meta 5
+      let !s159 = (floorF (s151 / t158))
+      let !s160 = (floorF (t31 / t158))
+      let !s161 = (floorF (s152 / t158))
+      loopI 0.0 3.0 $ \i162 -> do
+        let !d162 = fromIntegral i162 :: Double
+        loopI 0.0 3.0 $ \i163 -> do
+          let !d163 = fromIntegral i163 :: Double
+          loopI 0.0 3.0 $ \i164 -> do
+            let !d164 = fromIntegral i164 :: Double
+            let !s165 = ((s159 + d162) - 1.0)
+            let !s166 = ((s160 + d163) - 1.0)
+            let !s167 = ((s161 + d164) - 1.0)
+            let !s168 = (((((s165 + 131072.0) * 262144.0) + (s166 + 131072.0)) * 262144.0) + (s167 + 131072.0))
+            let !t169 = (((s165 * 7.3856093e7) + (s166 * 1.9349663e7)) + (s167 * 8.3492791e7))
+            let !s170 = (t169 - (t157 * (floorF (t169 / t157))))
+            chkI grid (truncate s170) 0 0
+            t171 <- rdU grid (truncate s170)
+            chkI grid ((truncate s170) + (truncate t157)) 0 0
+            t172 <- rdU grid ((truncate s170) + (truncate t157))
+            loopI t172 t171 $ \i173 -> do
+              let !d173 = fromIntegral i173 :: Double
+              chkI items i173 0 0
+              t174 <- rdU items i173
+              chkI cellOf (truncate t174) 0 0
+              t175 <- rdU cellOf (truncate t174)
+              if (0.5 - (abs (t175 - s168))) > 0 then do
+                if (t174 - d29) > 0 then do
+                  chkI pos (3 * (truncate t174)) 0 2
+                  t176 <- rdU pos (3 * (truncate t174))
+                  t177 <- rdU pos ((3 * (truncate t174)) + 1)
+                  t178 <- rdU pos ((3 * (truncate t174)) + 2)
+                  chkI scalars (6 * (truncate t174)) 2 5
+                  t179 <- rdU scalars ((6 * (truncate t174)) + 5)
+                  t180 <- rdU scalars ((6 * (truncate t174)) + 2)
+                  let !t181 = (t34 + t180)
+                  let !t182 = (s151 + (negate t176))
+                  let !t183 = (t31 + (negate t177))
+                  let !t184 = (s152 + (negate t178))
+                  let !t185 = ((t33 + t179) - (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184))))
+                  if (if (t181 - t185) > 0 then t185 else t181) > 0 then do
+                    t186 <- rdU locals 2
+                    chkI near (truncate t186) 0 0
+                    wrU near (truncate t186) t174
+                    wrU locals 2 (t186 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -443,64 +444,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t190 <- getR v38
-    loopI 0.0 t190 $ \i191 -> do
-      let !d191 = fromIntegral i191 :: Double
-      chkI near i191 0 0
-      t192 <- rdU near i191
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t192 + 1.0) * 64.0) + 24.0) d31 t192 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
+    t187 <- rdU locals 2
+    loopI 0.0 t187 $ \i188 -> do
+      let !d188 = fromIntegral i188 :: Double
+      chkI near i188 0 0
+      t189 <- rdU near i188
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t189 + 1.0) * 64.0) + 24.0) d29 t189 1.0 1.0 (-1.0) (-2.0) 0.0 2.0
       pure ()
-    let !s193 = (t34 + (-2.0))
-    setR v38 0.0
-    let !t194 = ((abs s193) - 1.0)
-    let !t195 = (if (negate t194) > 0 then 0.0 else t194)
-    if ((t35 + t37) - (sqrt ((t40 * t40) + (t195 * t195)))) > 0 then do
-      t196 <- rdU meta 4
-      t197 <- rdU meta 5
-      let !s198 = (floorF (t32 / t197))
-      let !s199 = (floorF (t33 / t197))
-      let !s200 = (floorF (s193 / t197))
-      loopI 0.0 3.0 $ \i201 -> do
-        let !d201 = fromIntegral i201 :: Double
-        loopI 0.0 3.0 $ \i202 -> do
-          let !d202 = fromIntegral i202 :: Double
-          loopI 0.0 3.0 $ \i203 -> do
-            let !d203 = fromIntegral i203 :: Double
-            let !s204 = ((s198 + d201) - 1.0)
-            let !s205 = ((s199 + d202) - 1.0)
-            let !s206 = ((s200 + d203) - 1.0)
-            let !s207 = (((((s204 + 131072.0) * 262144.0) + (s205 + 131072.0)) * 262144.0) + (s206 + 131072.0))
-            let !t208 = (((s204 * 7.3856093e7) + (s205 * 1.9349663e7)) + (s206 * 8.3492791e7))
-            let !s209 = (t208 - (t196 * (floorF (t208 / t196))))
-            chkI grid (truncate s209) 0 0
-            t210 <- rdU grid (truncate s209)
-            chkI grid ((truncate s209) + (truncate t196)) 0 0
-            t211 <- rdU grid ((truncate s209) + (truncate t196))
-            loopI t211 t210 $ \i212 -> do
-              let !d212 = fromIntegral i212 :: Double
-              chkI items i212 0 0
-              t213 <- rdU items i212
-              chkI cellOf (truncate t213) 0 0
-              t214 <- rdU cellOf (truncate t213)
-              if (0.5 - (abs (t214 - s207))) > 0 then do
-                if (t213 - d31) > 0 then do
-                  chkI pos (3 * (truncate t213)) 0 2
-                  t215 <- rdU pos (3 * (truncate t213))
-                  t216 <- rdU pos ((3 * (truncate t213)) + 1)
-                  t217 <- rdU pos ((3 * (truncate t213)) + 2)
-                  chkI scalars (6 * (truncate t213)) 2 5
-                  t218 <- rdU scalars ((6 * (truncate t213)) + 5)
-                  t219 <- rdU scalars ((6 * (truncate t213)) + 2)
-                  let !t220 = (t36 + t219)
-                  let !t221 = (t32 + (negate t215))
-                  let !t222 = (t33 + (negate t216))
-                  let !t223 = (s193 + (negate t217))
-                  let !t224 = ((t35 + t218) - (sqrt (((t221 * t221) + (t222 * t222)) + (t223 * t223))))
-                  if (if (t220 - t224) > 0 then t224 else t220) > 0 then do
-                    t225 <- getR v38
-                    chkI near (truncate t225) 0 0
-                    wrU near (truncate t225) t213
-                    setR v38 (t225 + 1.0)
+    let !s190 = (t32 + (-2.0))
+    wrU locals 2 0.0
+    let !t191 = ((abs s190) - 1.0)
+    let !t192 = (if (negate t191) > 0 then 0.0 else t191)
+    if ((t33 + t35) - (sqrt ((t37 * t37) + (t192 * t192)))) > 0 then do
+      t193 <- rdU meta 4
+      t194 <- rdU meta 5
+      let !s195 = (floorF (t30 / t194))
+      let !s196 = (floorF (t31 / t194))
+      let !s197 = (floorF (s190 / t194))
+      loopI 0.0 3.0 $ \i198 -> do
+        let !d198 = fromIntegral i198 :: Double
+        loopI 0.0 3.0 $ \i199 -> do
+          let !d199 = fromIntegral i199 :: Double
+          loopI 0.0 3.0 $ \i200 -> do
+            let !d200 = fromIntegral i200 :: Double
+            let !s201 = ((s195 + d198) - 1.0)
+            let !s202 = ((s196 + d199) - 1.0)
+            let !s203 = ((s197 + d200) - 1.0)
+            let !s204 = (((((s201 + 131072.0) * 262144.0) + (s202 + 131072.0)) * 262144.0) + (s203 + 131072.0))
+            let !t205 = (((s201 * 7.3856093e7) + (s202 * 1.9349663e7)) + (s203 * 8.3492791e7))
+            let !s206 = (t205 - (t193 * (floorF (t205 / t193))))
+            chkI grid (truncate s206) 0 0
+            t207 <- rdU grid (truncate s206)
+            chkI grid ((truncate s206) + (truncate t193)) 0 0
+            t208 <- rdU grid ((truncate s206) + (truncate t193))
+            loopI t208 t207 $ \i209 -> do
+              let !d209 = fromIntegral i209 :: Double
+              chkI items i209 0 0
+              t210 <- rdU items i209
+              chkI cellOf (truncate t210) 0 0
+              t211 <- rdU cellOf (truncate t210)
+              if (0.5 - (abs (t211 - s204))) > 0 then do
+                if (t210 - d29) > 0 then do
+                  chkI pos (3 * (truncate t210)) 0 2
+                  t212 <- rdU pos (3 * (truncate t210))
+                  t213 <- rdU pos ((3 * (truncate t210)) + 1)
+                  t214 <- rdU pos ((3 * (truncate t210)) + 2)
+                  chkI scalars (6 * (truncate t210)) 2 5
+                  t215 <- rdU scalars ((6 * (truncate t210)) + 5)
+                  t216 <- rdU scalars ((6 * (truncate t210)) + 2)
+                  let !t217 = (t34 + t216)
+                  let !t218 = (t30 + (negate t212))
+                  let !t219 = (t31 + (negate t213))
+                  let !t220 = (s190 + (negate t214))
+                  let !t221 = ((t33 + t215) - (sqrt (((t218 * t218) + (t219 * t219)) + (t220 * t220))))
+                  if (if (t217 - t221) > 0 then t221 else t217) > 0 then do
+                    t222 <- rdU locals 2
+                    chkI near (truncate t222) 0 0
+                    wrU near (truncate t222) t210
+                    wrU locals 2 (t222 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -517,64 +518,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t226 <- getR v38
-    loopI 0.0 t226 $ \i227 -> do
-      let !d227 = fromIntegral i227 :: Double
-      chkI near i227 0 0
-      t228 <- rdU near i227
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t228 + 1.0) * 64.0) + 28.0) d31 t228 1.0 1.0 1.0 0.0 0.0 (-2.0)
+    t223 <- rdU locals 2
+    loopI 0.0 t223 $ \i224 -> do
+      let !d224 = fromIntegral i224 :: Double
+      chkI near i224 0 0
+      t225 <- rdU near i224
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t225 + 1.0) * 64.0) + 28.0) d29 t225 1.0 1.0 1.0 0.0 0.0 (-2.0)
       pure ()
-    let !s229 = (t34 + 2.0)
-    setR v38 0.0
-    let !t230 = ((abs s229) - 1.0)
-    let !t231 = (if (negate t230) > 0 then 0.0 else t230)
-    if ((t35 + t37) - (sqrt ((t40 * t40) + (t231 * t231)))) > 0 then do
-      t232 <- rdU meta 4
-      t233 <- rdU meta 5
-      let !s234 = (floorF (t32 / t233))
-      let !s235 = (floorF (t33 / t233))
-      let !s236 = (floorF (s229 / t233))
-      loopI 0.0 3.0 $ \i237 -> do
-        let !d237 = fromIntegral i237 :: Double
-        loopI 0.0 3.0 $ \i238 -> do
-          let !d238 = fromIntegral i238 :: Double
-          loopI 0.0 3.0 $ \i239 -> do
-            let !d239 = fromIntegral i239 :: Double
-            let !s240 = ((s234 + d237) - 1.0)
-            let !s241 = ((s235 + d238) - 1.0)
-            let !s242 = ((s236 + d239) - 1.0)
-            let !s243 = (((((s240 + 131072.0) * 262144.0) + (s241 + 131072.0)) * 262144.0) + (s242 + 131072.0))
-            let !t244 = (((s240 * 7.3856093e7) + (s241 * 1.9349663e7)) + (s242 * 8.3492791e7))
-            let !s245 = (t244 - (t232 * (floorF (t244 / t232))))
-            chkI grid (truncate s245) 0 0
-            t246 <- rdU grid (truncate s245)
-            chkI grid ((truncate s245) + (truncate t232)) 0 0
-            t247 <- rdU grid ((truncate s245) + (truncate t232))
-            loopI t247 t246 $ \i248 -> do
-              let !d248 = fromIntegral i248 :: Double
-              chkI items i248 0 0
-              t249 <- rdU items i248
-              chkI cellOf (truncate t249) 0 0
-              t250 <- rdU cellOf (truncate t249)
-              if (0.5 - (abs (t250 - s243))) > 0 then do
-                if ((t249 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t249)) 0 2
-                  t251 <- rdU pos (3 * (truncate t249))
-                  t252 <- rdU pos ((3 * (truncate t249)) + 1)
-                  t253 <- rdU pos ((3 * (truncate t249)) + 2)
-                  chkI scalars (6 * (truncate t249)) 2 5
-                  t254 <- rdU scalars ((6 * (truncate t249)) + 5)
-                  t255 <- rdU scalars ((6 * (truncate t249)) + 2)
-                  let !t256 = (t36 + t255)
-                  let !t257 = (t32 + (negate t251))
-                  let !t258 = (t33 + (negate t252))
-                  let !t259 = (s229 + (negate t253))
-                  let !t260 = ((t35 + t254) - (sqrt (((t257 * t257) + (t258 * t258)) + (t259 * t259))))
-                  if (if (t256 - t260) > 0 then t260 else t256) > 0 then do
-                    t261 <- getR v38
-                    chkI near (truncate t261) 0 0
-                    wrU near (truncate t261) t249
-                    setR v38 (t261 + 1.0)
+    let !s226 = (t32 + 2.0)
+    wrU locals 2 0.0
+    let !t227 = ((abs s226) - 1.0)
+    let !t228 = (if (negate t227) > 0 then 0.0 else t227)
+    if ((t33 + t35) - (sqrt ((t37 * t37) + (t228 * t228)))) > 0 then do
+      t229 <- rdU meta 4
+      t230 <- rdU meta 5
+      let !s231 = (floorF (t30 / t230))
+      let !s232 = (floorF (t31 / t230))
+      let !s233 = (floorF (s226 / t230))
+      loopI 0.0 3.0 $ \i234 -> do
+        let !d234 = fromIntegral i234 :: Double
+        loopI 0.0 3.0 $ \i235 -> do
+          let !d235 = fromIntegral i235 :: Double
+          loopI 0.0 3.0 $ \i236 -> do
+            let !d236 = fromIntegral i236 :: Double
+            let !s237 = ((s231 + d234) - 1.0)
+            let !s238 = ((s232 + d235) - 1.0)
+            let !s239 = ((s233 + d236) - 1.0)
+            let !s240 = (((((s237 + 131072.0) * 262144.0) + (s238 + 131072.0)) * 262144.0) + (s239 + 131072.0))
+            let !t241 = (((s237 * 7.3856093e7) + (s238 * 1.9349663e7)) + (s239 * 8.3492791e7))
+            let !s242 = (t241 - (t229 * (floorF (t241 / t229))))
+            chkI grid (truncate s242) 0 0
+            t243 <- rdU grid (truncate s242)
+            chkI grid ((truncate s242) + (truncate t229)) 0 0
+            t244 <- rdU grid ((truncate s242) + (truncate t229))
+            loopI t244 t243 $ \i245 -> do
+              let !d245 = fromIntegral i245 :: Double
+              chkI items i245 0 0
+              t246 <- rdU items i245
+              chkI cellOf (truncate t246) 0 0
+              t247 <- rdU cellOf (truncate t246)
+              if (0.5 - (abs (t247 - s240))) > 0 then do
+                if ((t246 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t246)) 0 2
+                  t248 <- rdU pos (3 * (truncate t246))
+                  t249 <- rdU pos ((3 * (truncate t246)) + 1)
+                  t250 <- rdU pos ((3 * (truncate t246)) + 2)
+                  chkI scalars (6 * (truncate t246)) 2 5
+                  t251 <- rdU scalars ((6 * (truncate t246)) + 5)
+                  t252 <- rdU scalars ((6 * (truncate t246)) + 2)
+                  let !t253 = (t34 + t252)
+                  let !t254 = (t30 + (negate t248))
+                  let !t255 = (t31 + (negate t249))
+                  let !t256 = (s226 + (negate t250))
+                  let !t257 = ((t33 + t251) - (sqrt (((t254 * t254) + (t255 * t255)) + (t256 * t256))))
+                  if (if (t253 - t257) > 0 then t257 else t253) > 0 then do
+                    t258 <- rdU locals 2
+                    chkI near (truncate t258) 0 0
+                    wrU near (truncate t258) t246
+                    wrU locals 2 (t258 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -591,67 +592,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t262 <- getR v38
-    loopI 0.0 t262 $ \i263 -> do
-      let !d263 = fromIntegral i263 :: Double
-      chkI near i263 0 0
-      t264 <- rdU near i263
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t264 + 1.0) * 64.0) + 32.0) d31 t264 1.0 1.0 1.0 0.0 0.0 2.0
+    t259 <- rdU locals 2
+    loopI 0.0 t259 $ \i260 -> do
+      let !d260 = fromIntegral i260 :: Double
+      chkI near i260 0 0
+      t261 <- rdU near i260
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t261 + 1.0) * 64.0) + 32.0) d29 t261 1.0 1.0 1.0 0.0 0.0 2.0
       pure ()
-    let !s265 = (t32 + 2.0)
-    let !s266 = s77
-    setR v38 0.0
-    let !t267 = ((abs s265) - 1.0)
-    let !t268 = (if (negate t267) > 0 then 0.0 else t267)
-    let !t269 = ((abs s266) - 1.0)
-    let !t270 = (if (negate t269) > 0 then 0.0 else t269)
-    if ((t35 + t37) - (sqrt ((t268 * t268) + (t270 * t270)))) > 0 then do
-      t271 <- rdU meta 4
-      t272 <- rdU meta 5
-      let !s273 = (floorF (s265 / t272))
-      let !s274 = (floorF (t33 / t272))
-      let !s275 = (floorF (s266 / t272))
-      loopI 0.0 3.0 $ \i276 -> do
-        let !d276 = fromIntegral i276 :: Double
-        loopI 0.0 3.0 $ \i277 -> do
-          let !d277 = fromIntegral i277 :: Double
-          loopI 0.0 3.0 $ \i278 -> do
-            let !d278 = fromIntegral i278 :: Double
-            let !s279 = ((s273 + d276) - 1.0)
-            let !s280 = ((s274 + d277) - 1.0)
-            let !s281 = ((s275 + d278) - 1.0)
-            let !s282 = (((((s279 + 131072.0) * 262144.0) + (s280 + 131072.0)) * 262144.0) + (s281 + 131072.0))
-            let !t283 = (((s279 * 7.3856093e7) + (s280 * 1.9349663e7)) + (s281 * 8.3492791e7))
-            let !s284 = (t283 - (t271 * (floorF (t283 / t271))))
-            chkI grid (truncate s284) 0 0
-            t285 <- rdU grid (truncate s284)
-            chkI grid ((truncate s284) + (truncate t271)) 0 0
-            t286 <- rdU grid ((truncate s284) + (truncate t271))
-            loopI t286 t285 $ \i287 -> do
-              let !d287 = fromIntegral i287 :: Double
-              chkI items i287 0 0
-              t288 <- rdU items i287
-              chkI cellOf (truncate t288) 0 0
-              t289 <- rdU cellOf (truncate t288)
-              if (0.5 - (abs (t289 - s282))) > 0 then do
-                if ((t288 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t288)) 0 2
-                  t290 <- rdU pos (3 * (truncate t288))
-                  t291 <- rdU pos ((3 * (truncate t288)) + 1)
-                  t292 <- rdU pos ((3 * (truncate t288)) + 2)
-                  chkI scalars (6 * (truncate t288)) 2 5
-                  t293 <- rdU scalars ((6 * (truncate t288)) + 5)
-                  t294 <- rdU scalars ((6 * (truncate t288)) + 2)
-                  let !t295 = (t36 + t294)
-                  let !t296 = (s265 + (negate t290))
-                  let !t297 = (t33 + (negate t291))
-                  let !t298 = (s266 + (negate t292))
-                  let !t299 = ((t35 + t293) - (sqrt (((t296 * t296) + (t297 * t297)) + (t298 * t298))))
-                  if (if (t295 - t299) > 0 then t299 else t295) > 0 then do
-                    t300 <- getR v38
-                    chkI near (truncate t300) 0 0
-                    wrU near (truncate t300) t288
-                    setR v38 (t300 + 1.0)
+    let !s262 = (t30 + 2.0)
+    let !s263 = s74
+    wrU locals 2 0.0
+    let !t264 = ((abs s262) - 1.0)
+    let !t265 = (if (negate t264) > 0 then 0.0 else t264)
+    let !t266 = ((abs s263) - 1.0)
+    let !t267 = (if (negate t266) > 0 then 0.0 else t266)
+    if ((t33 + t35) - (sqrt ((t265 * t265) + (t267 * t267)))) > 0 then do
+      t268 <- rdU meta 4
+      t269 <- rdU meta 5
+      let !s270 = (floorF (s262 / t269))
+      let !s271 = (floorF (t31 / t269))
+      let !s272 = (floorF (s263 / t269))
+      loopI 0.0 3.0 $ \i273 -> do
+        let !d273 = fromIntegral i273 :: Double
+        loopI 0.0 3.0 $ \i274 -> do
+          let !d274 = fromIntegral i274 :: Double
+          loopI 0.0 3.0 $ \i275 -> do
+            let !d275 = fromIntegral i275 :: Double
+            let !s276 = ((s270 + d273) - 1.0)
+            let !s277 = ((s271 + d274) - 1.0)
+            let !s278 = ((s272 + d275) - 1.0)
+            let !s279 = (((((s276 + 131072.0) * 262144.0) + (s277 + 131072.0)) * 262144.0) + (s278 + 131072.0))
+            let !t280 = (((s276 * 7.3856093e7) + (s277 * 1.9349663e7)) + (s278 * 8.3492791e7))
+            let !s281 = (t280 - (t268 * (floorF (t280 / t268))))
+            chkI grid (truncate s281) 0 0
+            t282 <- rdU grid (truncate s281)
+            chkI grid ((truncate s281) + (truncate t268)) 0 0
+            t283 <- rdU grid ((truncate s281) + (truncate t268))
+            loopI t283 t282 $ \i284 -> do
+              let !d284 = fromIntegral i284 :: Double
+              chkI items i284 0 0
+              t285 <- rdU items i284
+              chkI cellOf (truncate t285) 0 0
+              t286 <- rdU cellOf (truncate t285)
+              if (0.5 - (abs (t286 - s279))) > 0 then do
+                if ((t285 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t285)) 0 2
+                  t287 <- rdU pos (3 * (truncate t285))
+                  t288 <- rdU pos ((3 * (truncate t285)) + 1)
+                  t289 <- rdU pos ((3 * (truncate t285)) + 2)
+                  chkI scalars (6 * (truncate t285)) 2 5
+                  t290 <- rdU scalars ((6 * (truncate t285)) + 5)
+                  t291 <- rdU scalars ((6 * (truncate t285)) + 2)
+                  let !t292 = (t34 + t291)
+                  let !t293 = (s262 + (negate t287))
+                  let !t294 = (t31 + (negate t288))
+                  let !t295 = (s263 + (negate t289))
+                  let !t296 = ((t33 + t290) - (sqrt (((t293 * t293) + (t294 * t294)) + (t295 * t295))))
+                  if (if (t292 - t296) > 0 then t296 else t292) > 0 then do
+                    t297 <- rdU locals 2
+                    chkI near (truncate t297) 0 0
+                    wrU near (truncate t297) t285
+                    wrU locals 2 (t297 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -668,67 +669,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t301 <- getR v38
-    loopI 0.0 t301 $ \i302 -> do
-      let !d302 = fromIntegral i302 :: Double
-      chkI near i302 0 0
-      t303 <- rdU near i302
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t303 + 1.0) * 64.0) + 36.0) d31 t303 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
+    t298 <- rdU locals 2
+    loopI 0.0 t298 $ \i299 -> do
+      let !d299 = fromIntegral i299 :: Double
+      chkI near i299 0 0
+      t300 <- rdU near i299
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t300 + 1.0) * 64.0) + 36.0) d29 t300 1.0 1.0 (-1.0) 2.0 0.0 (-2.0)
       pure ()
-    let !s304 = s265
-    let !s305 = s116
-    setR v38 0.0
-    let !t306 = ((abs s304) - 1.0)
-    let !t307 = (if (negate t306) > 0 then 0.0 else t306)
-    let !t308 = ((abs s305) - 1.0)
-    let !t309 = (if (negate t308) > 0 then 0.0 else t308)
-    if ((t35 + t37) - (sqrt ((t307 * t307) + (t309 * t309)))) > 0 then do
-      t310 <- rdU meta 4
-      t311 <- rdU meta 5
-      let !s312 = (floorF (s304 / t311))
-      let !s313 = (floorF (t33 / t311))
-      let !s314 = (floorF (s305 / t311))
-      loopI 0.0 3.0 $ \i315 -> do
-        let !d315 = fromIntegral i315 :: Double
-        loopI 0.0 3.0 $ \i316 -> do
-          let !d316 = fromIntegral i316 :: Double
-          loopI 0.0 3.0 $ \i317 -> do
-            let !d317 = fromIntegral i317 :: Double
-            let !s318 = ((s312 + d315) - 1.0)
-            let !s319 = ((s313 + d316) - 1.0)
-            let !s320 = ((s314 + d317) - 1.0)
-            let !s321 = (((((s318 + 131072.0) * 262144.0) + (s319 + 131072.0)) * 262144.0) + (s320 + 131072.0))
-            let !t322 = (((s318 * 7.3856093e7) + (s319 * 1.9349663e7)) + (s320 * 8.3492791e7))
-            let !s323 = (t322 - (t310 * (floorF (t322 / t310))))
-            chkI grid (truncate s323) 0 0
-            t324 <- rdU grid (truncate s323)
-            chkI grid ((truncate s323) + (truncate t310)) 0 0
-            t325 <- rdU grid ((truncate s323) + (truncate t310))
-            loopI t325 t324 $ \i326 -> do
-              let !d326 = fromIntegral i326 :: Double
-              chkI items i326 0 0
-              t327 <- rdU items i326
-              chkI cellOf (truncate t327) 0 0
-              t328 <- rdU cellOf (truncate t327)
-              if (0.5 - (abs (t328 - s321))) > 0 then do
-                if ((t327 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t327)) 0 2
-                  t329 <- rdU pos (3 * (truncate t327))
-                  t330 <- rdU pos ((3 * (truncate t327)) + 1)
-                  t331 <- rdU pos ((3 * (truncate t327)) + 2)
-                  chkI scalars (6 * (truncate t327)) 2 5
-                  t332 <- rdU scalars ((6 * (truncate t327)) + 5)
-                  t333 <- rdU scalars ((6 * (truncate t327)) + 2)
-                  let !t334 = (t36 + t333)
-                  let !t335 = (s304 + (negate t329))
-                  let !t336 = (t33 + (negate t330))
-                  let !t337 = (s305 + (negate t331))
-                  let !t338 = ((t35 + t332) - (sqrt (((t335 * t335) + (t336 * t336)) + (t337 * t337))))
-                  if (if (t334 - t338) > 0 then t338 else t334) > 0 then do
-                    t339 <- getR v38
-                    chkI near (truncate t339) 0 0
-                    wrU near (truncate t339) t327
-                    setR v38 (t339 + 1.0)
+    let !s301 = s262
+    let !s302 = s113
+    wrU locals 2 0.0
+    let !t303 = ((abs s301) - 1.0)
+    let !t304 = (if (negate t303) > 0 then 0.0 else t303)
+    let !t305 = ((abs s302) - 1.0)
+    let !t306 = (if (negate t305) > 0 then 0.0 else t305)
+    if ((t33 + t35) - (sqrt ((t304 * t304) + (t306 * t306)))) > 0 then do
+      t307 <- rdU meta 4
+      t308 <- rdU meta 5
+      let !s309 = (floorF (s301 / t308))
+      let !s310 = (floorF (t31 / t308))
+      let !s311 = (floorF (s302 / t308))
+      loopI 0.0 3.0 $ \i312 -> do
+        let !d312 = fromIntegral i312 :: Double
+        loopI 0.0 3.0 $ \i313 -> do
+          let !d313 = fromIntegral i313 :: Double
+          loopI 0.0 3.0 $ \i314 -> do
+            let !d314 = fromIntegral i314 :: Double
+            let !s315 = ((s309 + d312) - 1.0)
+            let !s316 = ((s310 + d313) - 1.0)
+            let !s317 = ((s311 + d314) - 1.0)
+            let !s318 = (((((s315 + 131072.0) * 262144.0) + (s316 + 131072.0)) * 262144.0) + (s317 + 131072.0))
+            let !t319 = (((s315 * 7.3856093e7) + (s316 * 1.9349663e7)) + (s317 * 8.3492791e7))
+            let !s320 = (t319 - (t307 * (floorF (t319 / t307))))
+            chkI grid (truncate s320) 0 0
+            t321 <- rdU grid (truncate s320)
+            chkI grid ((truncate s320) + (truncate t307)) 0 0
+            t322 <- rdU grid ((truncate s320) + (truncate t307))
+            loopI t322 t321 $ \i323 -> do
+              let !d323 = fromIntegral i323 :: Double
+              chkI items i323 0 0
+              t324 <- rdU items i323
+              chkI cellOf (truncate t324) 0 0
+              t325 <- rdU cellOf (truncate t324)
+              if (0.5 - (abs (t325 - s318))) > 0 then do
+                if ((t324 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t324)) 0 2
+                  t326 <- rdU pos (3 * (truncate t324))
+                  t327 <- rdU pos ((3 * (truncate t324)) + 1)
+                  t328 <- rdU pos ((3 * (truncate t324)) + 2)
+                  chkI scalars (6 * (truncate t324)) 2 5
+                  t329 <- rdU scalars ((6 * (truncate t324)) + 5)
+                  t330 <- rdU scalars ((6 * (truncate t324)) + 2)
+                  let !t331 = (t34 + t330)
+                  let !t332 = (s301 + (negate t326))
+                  let !t333 = (t31 + (negate t327))
+                  let !t334 = (s302 + (negate t328))
+                  let !t335 = ((t33 + t329) - (sqrt (((t332 * t332) + (t333 * t333)) + (t334 * t334))))
+                  if (if (t331 - t335) > 0 then t335 else t331) > 0 then do
+                    t336 <- rdU locals 2
+                    chkI near (truncate t336) 0 0
+                    wrU near (truncate t336) t324
+                    wrU locals 2 (t336 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -745,67 +746,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t340 <- getR v38
-    loopI 0.0 t340 $ \i341 -> do
-      let !d341 = fromIntegral i341 :: Double
-      chkI near i341 0 0
-      t342 <- rdU near i341
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t342 + 1.0) * 64.0) + 40.0) d31 t342 1.0 1.0 (-1.0) 2.0 0.0 0.0
+    t337 <- rdU locals 2
+    loopI 0.0 t337 $ \i338 -> do
+      let !d338 = fromIntegral i338 :: Double
+      chkI near i338 0 0
+      t339 <- rdU near i338
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t339 + 1.0) * 64.0) + 40.0) d29 t339 1.0 1.0 (-1.0) 2.0 0.0 0.0
       pure ()
-    let !s343 = s304
-    let !s344 = s155
-    setR v38 0.0
-    let !t345 = ((abs s343) - 1.0)
-    let !t346 = (if (negate t345) > 0 then 0.0 else t345)
-    let !t347 = ((abs s344) - 1.0)
-    let !t348 = (if (negate t347) > 0 then 0.0 else t347)
-    if ((t35 + t37) - (sqrt ((t346 * t346) + (t348 * t348)))) > 0 then do
-      t349 <- rdU meta 4
-      t350 <- rdU meta 5
-      let !s351 = (floorF (s343 / t350))
-      let !s352 = (floorF (t33 / t350))
-      let !s353 = (floorF (s344 / t350))
-      loopI 0.0 3.0 $ \i354 -> do
-        let !d354 = fromIntegral i354 :: Double
-        loopI 0.0 3.0 $ \i355 -> do
-          let !d355 = fromIntegral i355 :: Double
-          loopI 0.0 3.0 $ \i356 -> do
-            let !d356 = fromIntegral i356 :: Double
-            let !s357 = ((s351 + d354) - 1.0)
-            let !s358 = ((s352 + d355) - 1.0)
-            let !s359 = ((s353 + d356) - 1.0)
-            let !s360 = (((((s357 + 131072.0) * 262144.0) + (s358 + 131072.0)) * 262144.0) + (s359 + 131072.0))
-            let !t361 = (((s357 * 7.3856093e7) + (s358 * 1.9349663e7)) + (s359 * 8.3492791e7))
-            let !s362 = (t361 - (t349 * (floorF (t361 / t349))))
-            chkI grid (truncate s362) 0 0
-            t363 <- rdU grid (truncate s362)
-            chkI grid ((truncate s362) + (truncate t349)) 0 0
-            t364 <- rdU grid ((truncate s362) + (truncate t349))
-            loopI t364 t363 $ \i365 -> do
-              let !d365 = fromIntegral i365 :: Double
-              chkI items i365 0 0
-              t366 <- rdU items i365
-              chkI cellOf (truncate t366) 0 0
-              t367 <- rdU cellOf (truncate t366)
-              if (0.5 - (abs (t367 - s360))) > 0 then do
-                if ((t366 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t366)) 0 2
-                  t368 <- rdU pos (3 * (truncate t366))
-                  t369 <- rdU pos ((3 * (truncate t366)) + 1)
-                  t370 <- rdU pos ((3 * (truncate t366)) + 2)
-                  chkI scalars (6 * (truncate t366)) 2 5
-                  t371 <- rdU scalars ((6 * (truncate t366)) + 5)
-                  t372 <- rdU scalars ((6 * (truncate t366)) + 2)
-                  let !t373 = (t36 + t372)
-                  let !t374 = (s343 + (negate t368))
-                  let !t375 = (t33 + (negate t369))
-                  let !t376 = (s344 + (negate t370))
-                  let !t377 = ((t35 + t371) - (sqrt (((t374 * t374) + (t375 * t375)) + (t376 * t376))))
-                  if (if (t373 - t377) > 0 then t377 else t373) > 0 then do
-                    t378 <- getR v38
-                    chkI near (truncate t378) 0 0
-                    wrU near (truncate t378) t366
-                    setR v38 (t378 + 1.0)
+    let !s340 = s301
+    let !s341 = s152
+    wrU locals 2 0.0
+    let !t342 = ((abs s340) - 1.0)
+    let !t343 = (if (negate t342) > 0 then 0.0 else t342)
+    let !t344 = ((abs s341) - 1.0)
+    let !t345 = (if (negate t344) > 0 then 0.0 else t344)
+    if ((t33 + t35) - (sqrt ((t343 * t343) + (t345 * t345)))) > 0 then do
+      t346 <- rdU meta 4
+      t347 <- rdU meta 5
+      let !s348 = (floorF (s340 / t347))
+      let !s349 = (floorF (t31 / t347))
+      let !s350 = (floorF (s341 / t347))
+      loopI 0.0 3.0 $ \i351 -> do
+        let !d351 = fromIntegral i351 :: Double
+        loopI 0.0 3.0 $ \i352 -> do
+          let !d352 = fromIntegral i352 :: Double
+          loopI 0.0 3.0 $ \i353 -> do
+            let !d353 = fromIntegral i353 :: Double
+            let !s354 = ((s348 + d351) - 1.0)
+            let !s355 = ((s349 + d352) - 1.0)
+            let !s356 = ((s350 + d353) - 1.0)
+            let !s357 = (((((s354 + 131072.0) * 262144.0) + (s355 + 131072.0)) * 262144.0) + (s356 + 131072.0))
+            let !t358 = (((s354 * 7.3856093e7) + (s355 * 1.9349663e7)) + (s356 * 8.3492791e7))
+            let !s359 = (t358 - (t346 * (floorF (t358 / t346))))
+            chkI grid (truncate s359) 0 0
+            t360 <- rdU grid (truncate s359)
+            chkI grid ((truncate s359) + (truncate t346)) 0 0
+            t361 <- rdU grid ((truncate s359) + (truncate t346))
+            loopI t361 t360 $ \i362 -> do
+              let !d362 = fromIntegral i362 :: Double
+              chkI items i362 0 0
+              t363 <- rdU items i362
+              chkI cellOf (truncate t363) 0 0
+              t364 <- rdU cellOf (truncate t363)
+              if (0.5 - (abs (t364 - s357))) > 0 then do
+                if ((t363 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t363)) 0 2
+                  t365 <- rdU pos (3 * (truncate t363))
+                  t366 <- rdU pos ((3 * (truncate t363)) + 1)
+                  t367 <- rdU pos ((3 * (truncate t363)) + 2)
+                  chkI scalars (6 * (truncate t363)) 2 5
+                  t368 <- rdU scalars ((6 * (truncate t363)) + 5)
+                  t369 <- rdU scalars ((6 * (truncate t363)) + 2)
+                  let !t370 = (t34 + t369)
+                  let !t371 = (s340 + (negate t365))
+                  let !t372 = (t31 + (negate t366))
+                  let !t373 = (s341 + (negate t367))
+                  let !t374 = ((t33 + t368) - (sqrt (((t371 * t371) + (t372 * t372)) + (t373 * t373))))
+                  if (if (t370 - t374) > 0 then t374 else t370) > 0 then do
+                    t375 <- rdU locals 2
+                    chkI near (truncate t375) 0 0
+                    wrU near (truncate t375) t363
+                    wrU locals 2 (t375 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -822,140 +823,140 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t379 <- getR v38
-    loopI 0.0 t379 $ \i380 -> do
-      let !d380 = fromIntegral i380 :: Double
-      chkI near i380 0 0
-      t381 <- rdU near i380
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t381 + 1.0) * 64.0) + 44.0) d31 t381 1.0 1.0 (-1.0) 2.0 0.0 2.0
+    t376 <- rdU locals 2
+    loopI 0.0 t376 $ \i377 -> do
+      let !d377 = fromIntegral i377 :: Double
+      chkI near i377 0 0
+      t378 <- rdU near i377
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t378 + 1.0) * 64.0) + 44.0) d29 t378 1.0 1.0 (-1.0) 2.0 0.0 2.0
       pure ()
-    chkI verts (291 * i31) 0 2
-    t382 <- rdU verts (291 * i31)
-    t383 <- rdU verts ((291 * i31) + 1)
-    t384 <- rdU verts ((291 * i31) + 2)
-    v385 <- newR 1.0
-    loopI 0.0 24.0 $ \i386 -> do
-      let !d386 = fromIntegral i386 :: Double
-      chkI verts ((291 * i31) + (12 * i386)) 12 14
-      t387 <- rdU verts (((291 * i31) + (12 * i386)) + 12)
-      t388 <- rdU verts (((291 * i31) + (12 * i386)) + 13)
-      t389 <- rdU verts (((291 * i31) + (12 * i386)) + 14)
-      chkI radii ((24 * i31) + i386) 0 0
-      t390 <- rdU radii ((24 * i31) + i386)
-      t391 <- getR v385
-      let !t392 = (t387 + (negate t382))
-      let !t393 = (t388 + (negate t383))
-      let !t394 = (t389 + (negate t384))
-      let !t395 = (if t390 > 0 then ((sqrt (((t392 * t392) + (t393 * t393)) + (t394 * t394))) / t390) else 1.0)
-      setR v385 (if (t391 - t395) > 0 then t395 else t391)
+    chkI verts (291 * i29) 0 2
+    t379 <- rdU verts (291 * i29)
+    t380 <- rdU verts ((291 * i29) + 1)
+    t381 <- rdU verts ((291 * i29) + 2)
+    wrU locals 3 1.0
+    loopI 0.0 24.0 $ \i382 -> do
+      let !d382 = fromIntegral i382 :: Double
+      chkI verts ((291 * i29) + (12 * i382)) 12 14
+      t383 <- rdU verts (((291 * i29) + (12 * i382)) + 12)
+      t384 <- rdU verts (((291 * i29) + (12 * i382)) + 13)
+      t385 <- rdU verts (((291 * i29) + (12 * i382)) + 14)
+      chkI radii ((24 * i29) + i382) 0 0
+      t386 <- rdU radii ((24 * i29) + i382)
+      t387 <- rdU locals 3
+      let !t388 = (t383 + (negate t379))
+      let !t389 = (t384 + (negate t380))
+      let !t390 = (t385 + (negate t381))
+      let !t391 = (if t386 > 0 then ((sqrt (((t388 * t388) + (t389 * t389)) + (t390 * t390))) / t386) else 1.0)
+      wrU locals 3 (if (t387 - t391) > 0 then t391 else t387)
       pure ()
-    t396 <- getR v385
-    if (0.8 - t396) > 0 then do
-      v397 <- newR 0.0
-      v398 <- newR 0.0
-      v399 <- newR 0.0
-      v400 <- newR 0.0
-      v401 <- newR 0.0
-      v402 <- newR 0.0
-      v403 <- newR 0.0
-      loopI 0.0 24.0 $ \i404 -> do
-        let !d404 = fromIntegral i404 :: Double
-        chkI radii ((24 * i31) + i404) 0 0
-        t405 <- rdU radii ((24 * i31) + i404)
-        loopI 6.0 12.0 $ \i406 -> do
-          let !d406 = fromIntegral i406 :: Double
-          let !t407 = (d404 + d406)
-          chkI radii (truncate ((24.0 * d31) + (t407 - (24.0 * (floorF (t407 / 24.0)))))) 0 0
-          t408 <- rdU radii (truncate ((24.0 * d31) + (t407 - (24.0 * (floorF (t407 / 24.0))))))
-          loopI 1.0 4.0 $ \i409 -> do
-            let !d409 = fromIntegral i409 :: Double
-            chkI verts ((291 * i31) + (12 * i404) + (3 * i409)) 0 5
-            t410 <- rdU verts ((291 * i31) + (12 * i404) + (3 * i409))
-            t411 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 1)
-            t412 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 2)
-            t413 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 3)
-            t414 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 4)
-            t415 <- rdU verts (((291 * i31) + (12 * i404) + (3 * i409)) + 5)
-            loopI 1.0 4.0 $ \i416 -> do
-              let !d416 = fromIntegral i416 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0)))) 0 0
-              t417 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 1.0)) 0 0
-              t418 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 2.0)) 0 0
-              t419 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + (d416 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416))) 0 0
-              t420 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 1.0)) 0 0
-              t421 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 2.0)) 0 0
-              t422 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)) + d416)) + 2.0))
-              t423 <- getR v397
-              let !t424 = (negate t417)
-              let !t425 = (t420 + t424)
-              let !t426 = (negate t418)
-              let !t427 = (t421 + t426)
-              let !t428 = (negate t419)
-              let !t429 = (t422 + t428)
-              let !t430 = (((t425 * t425) + (t427 * t427)) + (t429 * t429))
-              let !t431 = (t413 + (negate t410))
-              let !t432 = (t414 + (negate t411))
-              let !t433 = (t415 + (negate t412))
-              let !t434 = (((t431 * t425) + (t432 * t427)) + (t433 * t429))
-              let !t435 = (((t431 * t431) + (t432 * t432)) + (t433 * t433))
-              let !t436 = ((t435 * t430) - (t434 * t434))
-              let !t437 = (t410 + t424)
-              let !t438 = (t411 + t426)
-              let !t439 = (t412 + t428)
-              let !t440 = (((t425 * t437) + (t427 * t438)) + (t429 * t439))
-              let !t441 = (((t431 * t437) + (t432 * t438)) + (t433 * t439))
-              let !t442 = (if ((abs t436) - 1.0e-300) > 0 then (((t434 * t440) - (t441 * t430)) / t436) else 0.0)
-              let !t443 = (if (t442 - 1.0) > 0 then 1.0 else t442)
-              let !t444 = (if (t436 - ((1.0e-12 * t435) * t430)) > 0 then (if (negate t443) > 0 then 0.0 else t443) else 0.0)
-              let !t445 = (if ((abs t430) - 1.0e-300) > 0 then (((t434 * t444) + t440) / t430) else 0.0)
-              let !t446 = ((abs t435) - 1.0e-300)
-              let !t447 = (if t446 > 0 then ((negate t441) / t435) else 0.0)
-              let !t448 = (if (t447 - 1.0) > 0 then 1.0 else t447)
-              let !t449 = (t445 - 1.0)
-              let !t450 = (if t446 > 0 then ((t434 - t441) / t435) else 0.0)
-              let !t451 = (if (t450 - 1.0) > 0 then 1.0 else t450)
-              let !t452 = (if (negate t445) > 0 then (if (negate t448) > 0 then 0.0 else t448) else (if t449 > 0 then (if (negate t451) > 0 then 0.0 else t451) else t444))
-              let !t453 = (if t449 > 0 then 1.0 else t445)
-              let !t454 = (if (negate t453) > 0 then 0.0 else t453)
-              let !t455 = ((0.5 * ((t405 - ((t405 * (d409 + t452)) / 4.0)) + (t408 - ((t408 * (d416 + t454)) / 4.0)))) - t423)
-              let !t456 = ((t410 + (t452 * t431)) + (negate (t417 + (t454 * t425))))
-              let !t457 = ((t411 + (t452 * t432)) + (negate (t418 + (t454 * t427))))
-              let !t458 = ((t412 + (t452 * t433)) + (negate (t419 + (t454 * t429))))
-              let !t459 = ((0.3 * ((if (t408 - t405) > 0 then t405 else t408) / 4.0)) - (sqrt (((t456 * t456) + (t457 * t457)) + (t458 * t458))))
-              if (if (t455 - t459) > 0 then t459 else t455) > 0 then do
-                setR v397 (0.5 * ((t405 - ((t405 * (d409 + t452)) / 4.0)) + (t408 - ((t408 * (d416 + t454)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i404)) 3 5
-                t460 <- rdU verts (((291 * i31) + (12 * i404)) + 3)
-                t461 <- rdU verts (((291 * i31) + (12 * i404)) + 4)
-                t462 <- rdU verts (((291 * i31) + (12 * i404)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0)))) 0 0
-                t463 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t464 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t465 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t407 - (24.0 * (floorF (t407 / 24.0)))) * 4.0))) + 2.0))
-                setR v398 (t410 + (t452 * t431))
-                setR v399 (t411 + (t452 * t432))
-                setR v400 (t412 + (t452 * t433))
-                let !t466 = (negate t382)
-                let !t467 = (t460 + t466)
-                let !t468 = (negate t383)
-                let !t469 = (t461 + t468)
-                let !t470 = (negate t384)
-                let !t471 = (t462 + t470)
-                let !t472 = (sqrt (((t467 * t467) + (t469 * t469)) + (t471 * t471)))
-                let !t473 = (t463 + t466)
-                let !t474 = (t464 + t468)
-                let !t475 = (t465 + t470)
-                let !t476 = (sqrt (((t473 * t473) + (t474 * t474)) + (t475 * t475)))
-                setR v401 (negate (((if t472 > 0 then (recip (if (t472 - 1.0e-300) > 0 then t472 else 1.0e-300)) else 0.0) * t467) + ((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t473)))
-                setR v402 (negate (((if t472 > 0 then (recip (if (t472 - 1.0e-300) > 0 then t472 else 1.0e-300)) else 0.0) * t469) + ((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t474)))
-                setR v403 (negate (((if t472 > 0 then (recip (if (t472 - 1.0e-300) > 0 then t472 else 1.0e-300)) else 0.0) * t471) + ((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t475)))
+    t392 <- rdU locals 3
+    if (0.8 - t392) > 0 then do
+      wrU locals 4 0.0
+      wrU locals 5 0.0
+      wrU locals 6 0.0
+      wrU locals 7 0.0
+      wrU locals 8 0.0
+      wrU locals 9 0.0
+      wrU locals 10 0.0
+      loopI 0.0 24.0 $ \i393 -> do
+        let !d393 = fromIntegral i393 :: Double
+        chkI radii ((24 * i29) + i393) 0 0
+        t394 <- rdU radii ((24 * i29) + i393)
+        loopI 6.0 12.0 $ \i395 -> do
+          let !d395 = fromIntegral i395 :: Double
+          let !t396 = (d393 + d395)
+          chkI radii (truncate ((24.0 * d29) + (t396 - (24.0 * (floorF (t396 / 24.0)))))) 0 0
+          t397 <- rdU radii (truncate ((24.0 * d29) + (t396 - (24.0 * (floorF (t396 / 24.0))))))
+          loopI 1.0 4.0 $ \i398 -> do
+            let !d398 = fromIntegral i398 :: Double
+            chkI verts ((291 * i29) + (12 * i393) + (3 * i398)) 0 5
+            t399 <- rdU verts ((291 * i29) + (12 * i393) + (3 * i398))
+            t400 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 1)
+            t401 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 2)
+            t402 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 3)
+            t403 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 4)
+            t404 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 5)
+            loopI 1.0 4.0 $ \i405 -> do
+              let !d405 = fromIntegral i405 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0)))) 0 0
+              t406 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 1.0)) 0 0
+              t407 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 2.0)) 0 0
+              t408 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405))) 0 0
+              t409 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 1.0)) 0 0
+              t410 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 2.0)) 0 0
+              t411 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 2.0))
+              t412 <- rdU locals 4
+              let !t413 = (negate t406)
+              let !t414 = (t409 + t413)
+              let !t415 = (negate t407)
+              let !t416 = (t410 + t415)
+              let !t417 = (negate t408)
+              let !t418 = (t411 + t417)
+              let !t419 = (((t414 * t414) + (t416 * t416)) + (t418 * t418))
+              let !t420 = (t402 + (negate t399))
+              let !t421 = (t403 + (negate t400))
+              let !t422 = (t404 + (negate t401))
+              let !t423 = (((t420 * t414) + (t421 * t416)) + (t422 * t418))
+              let !t424 = (((t420 * t420) + (t421 * t421)) + (t422 * t422))
+              let !t425 = ((t424 * t419) - (t423 * t423))
+              let !t426 = (t399 + t413)
+              let !t427 = (t400 + t415)
+              let !t428 = (t401 + t417)
+              let !t429 = (((t414 * t426) + (t416 * t427)) + (t418 * t428))
+              let !t430 = (((t420 * t426) + (t421 * t427)) + (t422 * t428))
+              let !t431 = (if ((abs t425) - 1.0e-300) > 0 then (((t423 * t429) - (t430 * t419)) / t425) else 0.0)
+              let !t432 = (if (t431 - 1.0) > 0 then 1.0 else t431)
+              let !t433 = (if (t425 - ((1.0e-12 * t424) * t419)) > 0 then (if (negate t432) > 0 then 0.0 else t432) else 0.0)
+              let !t434 = (if ((abs t419) - 1.0e-300) > 0 then (((t423 * t433) + t429) / t419) else 0.0)
+              let !t435 = ((abs t424) - 1.0e-300)
+              let !t436 = (if t435 > 0 then ((negate t430) / t424) else 0.0)
+              let !t437 = (if (t436 - 1.0) > 0 then 1.0 else t436)
+              let !t438 = (t434 - 1.0)
+              let !t439 = (if t435 > 0 then ((t423 - t430) / t424) else 0.0)
+              let !t440 = (if (t439 - 1.0) > 0 then 1.0 else t439)
+              let !t441 = (if (negate t434) > 0 then (if (negate t437) > 0 then 0.0 else t437) else (if t438 > 0 then (if (negate t440) > 0 then 0.0 else t440) else t433))
+              let !t442 = (if t438 > 0 then 1.0 else t434)
+              let !t443 = (if (negate t442) > 0 then 0.0 else t442)
+              let !t444 = ((0.5 * ((t394 - ((t394 * (d398 + t441)) / 4.0)) + (t397 - ((t397 * (d405 + t443)) / 4.0)))) - t412)
+              let !t445 = ((t399 + (t441 * t420)) + (negate (t406 + (t443 * t414))))
+              let !t446 = ((t400 + (t441 * t421)) + (negate (t407 + (t443 * t416))))
+              let !t447 = ((t401 + (t441 * t422)) + (negate (t408 + (t443 * t418))))
+              let !t448 = ((0.3 * ((if (t397 - t394) > 0 then t394 else t397) / 4.0)) - (sqrt (((t445 * t445) + (t446 * t446)) + (t447 * t447))))
+              if (if (t444 - t448) > 0 then t448 else t444) > 0 then do
+                wrU locals 4 (0.5 * ((t394 - ((t394 * (d398 + t441)) / 4.0)) + (t397 - ((t397 * (d405 + t443)) / 4.0))))
+                chkI verts ((291 * i29) + (12 * i393)) 3 5
+                t449 <- rdU verts (((291 * i29) + (12 * i393)) + 3)
+                t450 <- rdU verts (((291 * i29) + (12 * i393)) + 4)
+                t451 <- rdU verts (((291 * i29) + (12 * i393)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)))) 0 0
+                t452 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t453 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t454 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 5 (t399 + (t441 * t420))
+                wrU locals 6 (t400 + (t441 * t421))
+                wrU locals 7 (t401 + (t441 * t422))
+                let !t455 = (negate t379)
+                let !t456 = (t449 + t455)
+                let !t457 = (negate t380)
+                let !t458 = (t450 + t457)
+                let !t459 = (negate t381)
+                let !t460 = (t451 + t459)
+                let !t461 = (sqrt (((t456 * t456) + (t458 * t458)) + (t460 * t460)))
+                let !t462 = (t452 + t455)
+                let !t463 = (t453 + t457)
+                let !t464 = (t454 + t459)
+                let !t465 = (sqrt (((t462 * t462) + (t463 * t463)) + (t464 * t464)))
+                wrU locals 8 (negate (((if t461 > 0 then (recip (if (t461 - 1.0e-300) > 0 then t461 else 1.0e-300)) else 0.0) * t456) + ((if t465 > 0 then (recip (if (t465 - 1.0e-300) > 0 then t465 else 1.0e-300)) else 0.0) * t462)))
+                wrU locals 9 (negate (((if t461 > 0 then (recip (if (t461 - 1.0e-300) > 0 then t461 else 1.0e-300)) else 0.0) * t458) + ((if t465 > 0 then (recip (if (t465 - 1.0e-300) > 0 then t465 else 1.0e-300)) else 0.0) * t463)))
+                wrU locals 10 (negate (((if t461 > 0 then (recip (if (t461 - 1.0e-300) > 0 then t461 else 1.0e-300)) else 0.0) * t460) + ((if t465 > 0 then (recip (if (t465 - 1.0e-300) > 0 then t465 else 1.0e-300)) else 0.0) * t464)))
                 pure ()
               else do
                 pure ()
@@ -963,112 +964,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t477 <- getR v397
-      if t477 > 0 then do
-        t478 <- getR v398
-        t479 <- getR v399
-        t480 <- getR v400
-        t481 <- getR v401
-        t482 <- getR v402
-        t483 <- getR v403
-        let !t484 = (t482 + (negate t482))
-        let !t485 = (sqrt (((t481 * t481) + (t484 * t484)) + (t483 * t483)))
-        let !t486 = (if t485 > 0 then (recip (if (t485 - 1.0e-300) > 0 then t485 else 1.0e-300)) else 0.0)
-        let !s487 = (t486 * t481)
-        let !s488 = (t486 * t484)
-        let !s489 = (t486 * t483)
-        t490 <- rdU meta 2
-        t491 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t491) > 0 then 1.0 else t491)) - t490) - 0.5) > 0 then do
-          wrU meta 2 (t490 + 1.0)
-          t492 <- rdU pos (3 * i31)
-          t493 <- rdU pos ((3 * i31) + 1)
-          t494 <- rdU pos ((3 * i31) + 2)
-          chkI normal (3 * i31) 0 2
-          t495 <- rdU normal (3 * i31)
-          t496 <- rdU normal ((3 * i31) + 1)
-          t497 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t498 <- rdU axis (3 * i31)
-          t499 <- rdU axis ((3 * i31) + 1)
-          t500 <- rdU axis ((3 * i31) + 2)
-          let !s501 = ((t496 * t500) - (t497 * t499))
-          let !s502 = ((t497 * t498) - (t495 * t500))
-          let !s503 = ((t495 * t499) - (t496 * t498))
-          chkI scalars (6 * i31) 0 0
-          t504 <- rdU scalars (6 * i31)
-          t505 <- rdU scalars ((6 * i31) + 5)
-          t506 <- rdU scalars ((6 * i31) + 2)
-          t507 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t490)) 0 29
-          wrU contacts (30 * (truncate t490)) d31
-          wrU contacts ((30 * (truncate t490)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t490)) + 2) d31
-          wrU contacts ((30 * (truncate t490)) + 3) 12.0
-          wrU contacts ((30 * (truncate t490)) + 4) (s487 + (negate ((((t495 * s487) + (t496 * s488)) + (t497 * s489)) * t495)))
-          wrU contacts ((30 * (truncate t490)) + 5) (s488 + (negate ((((t495 * s487) + (t496 * s488)) + (t497 * s489)) * t496)))
-          wrU contacts ((30 * (truncate t490)) + 6) (s489 + (negate ((((t495 * s487) + (t496 * s488)) + (t497 * s489)) * t497)))
-          wrU contacts ((30 * (truncate t490)) + 7) 0.0
-          wrU contacts ((30 * (truncate t490)) + 12) 0.0
-          wrU contacts ((30 * (truncate t490)) + 13) 0.0
-          wrU contacts ((30 * (truncate t490)) + 14) 0.0
-          wrU contacts ((30 * (truncate t490)) + 15) 0.0
-          wrU contacts ((30 * (truncate t490)) + 20) t477
-          wrU contacts ((30 * (truncate t490)) + 26) 0.6
-          wrU contacts ((30 * (truncate t490)) + 27) t478
-          wrU contacts ((30 * (truncate t490)) + 28) t479
-          wrU contacts ((30 * (truncate t490)) + 29) t480
+      t466 <- rdU locals 4
+      if t466 > 0 then do
+        t467 <- rdU locals 5
+        t468 <- rdU locals 6
+        t469 <- rdU locals 7
+        t470 <- rdU locals 8
+        t471 <- rdU locals 9
+        t472 <- rdU locals 10
+        let !t473 = (t471 + (negate t471))
+        let !t474 = (sqrt (((t470 * t470) + (t473 * t473)) + (t472 * t472)))
+        let !t475 = (if t474 > 0 then (recip (if (t474 - 1.0e-300) > 0 then t474 else 1.0e-300)) else 0.0)
+        let !s476 = (t475 * t470)
+        let !s477 = (t475 * t473)
+        let !s478 = (t475 * t472)
+        t479 <- rdU meta 2
+        t480 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t480) > 0 then 1.0 else t480)) - t479) - 0.5) > 0 then do
+          wrU meta 2 (t479 + 1.0)
+          t481 <- rdU pos (3 * i29)
+          t482 <- rdU pos ((3 * i29) + 1)
+          t483 <- rdU pos ((3 * i29) + 2)
+          chkI normal (3 * i29) 0 2
+          t484 <- rdU normal (3 * i29)
+          t485 <- rdU normal ((3 * i29) + 1)
+          t486 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t487 <- rdU axis (3 * i29)
+          t488 <- rdU axis ((3 * i29) + 1)
+          t489 <- rdU axis ((3 * i29) + 2)
+          let !s490 = ((t485 * t489) - (t486 * t488))
+          let !s491 = ((t486 * t487) - (t484 * t489))
+          let !s492 = ((t484 * t488) - (t485 * t487))
+          chkI scalars (6 * i29) 0 0
+          t493 <- rdU scalars (6 * i29)
+          t494 <- rdU scalars ((6 * i29) + 5)
+          t495 <- rdU scalars ((6 * i29) + 2)
+          t496 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t479)) 0 29
+          wrU contacts (30 * (truncate t479)) d29
+          wrU contacts ((30 * (truncate t479)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t479)) + 2) d29
+          wrU contacts ((30 * (truncate t479)) + 3) 12.0
+          wrU contacts ((30 * (truncate t479)) + 4) (s476 + (negate ((((t484 * s476) + (t485 * s477)) + (t486 * s478)) * t484)))
+          wrU contacts ((30 * (truncate t479)) + 5) (s477 + (negate ((((t484 * s476) + (t485 * s477)) + (t486 * s478)) * t485)))
+          wrU contacts ((30 * (truncate t479)) + 6) (s478 + (negate ((((t484 * s476) + (t485 * s477)) + (t486 * s478)) * t486)))
+          wrU contacts ((30 * (truncate t479)) + 7) 0.0
+          wrU contacts ((30 * (truncate t479)) + 12) 0.0
+          wrU contacts ((30 * (truncate t479)) + 13) 0.0
+          wrU contacts ((30 * (truncate t479)) + 14) 0.0
+          wrU contacts ((30 * (truncate t479)) + 15) 0.0
+          wrU contacts ((30 * (truncate t479)) + 20) t466
+          wrU contacts ((30 * (truncate t479)) + 26) 0.6
+          wrU contacts ((30 * (truncate t479)) + 27) t467
+          wrU contacts ((30 * (truncate t479)) + 28) t468
+          wrU contacts ((30 * (truncate t479)) + 29) t469
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t508 <- rdU pos (-3)
-            t509 <- rdU pos (-2)
-            t510 <- rdU pos (-1)
+            t497 <- rdU pos (-3)
+            t498 <- rdU pos (-2)
+            t499 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t511 <- rdU normal (-3)
-            t512 <- rdU normal (-2)
-            t513 <- rdU normal (-1)
+            t500 <- rdU normal (-3)
+            t501 <- rdU normal (-2)
+            t502 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t514 <- rdU axis (-3)
-            t515 <- rdU axis (-2)
-            t516 <- rdU axis (-1)
-            let !s517 = ((t512 * t516) - (t513 * t515))
-            let !s518 = ((t513 * t514) - (t511 * t516))
-            let !s519 = ((t511 * t515) - (t512 * t514))
+            t503 <- rdU axis (-3)
+            t504 <- rdU axis (-2)
+            t505 <- rdU axis (-1)
+            let !s506 = ((t501 * t505) - (t502 * t504))
+            let !s507 = ((t502 * t503) - (t500 * t505))
+            let !s508 = ((t500 * t504) - (t501 * t503))
             chkI scalars 0 (-6) (-1)
-            t520 <- rdU scalars (-6)
-            t521 <- rdU scalars (-1)
-            t522 <- rdU scalars (-4)
-            t523 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t490)) + 8) (s487 + (negate ((((t511 * s487) + (t512 * s488)) + (t513 * s489)) * t511)))
-            wrU contacts ((30 * (truncate t490)) + 9) (s488 + (negate ((((t511 * s487) + (t512 * s488)) + (t513 * s489)) * t512)))
-            wrU contacts ((30 * (truncate t490)) + 10) (s489 + (negate ((((t511 * s487) + (t512 * s488)) + (t513 * s489)) * t513)))
-            let !t524 = (t479 + (negate t509))
-            let !t525 = (t480 + (negate t510))
-            let !t526 = (t478 + (negate t508))
-            wrU contacts ((30 * (truncate t490)) + 11) (((((t524 * s489) - (t525 * s488)) * t511) + (((t525 * s487) - (t526 * s489)) * t512)) + (((t526 * s488) - (t524 * s487)) * t513))
-            let !t527 = ((t496 * s489) - (t497 * s488))
-            wrU contacts ((30 * (truncate t490)) + 16) (t527 + (negate ((((t511 * t527) + (t512 * ((t497 * s487) - (t495 * s489)))) + (t513 * ((t495 * s488) - (t496 * s487)))) * t511)))
-            let !t528 = ((t497 * s487) - (t495 * s489))
-            wrU contacts ((30 * (truncate t490)) + 17) (t528 + (negate ((((t511 * t527) + (t512 * t528)) + (t513 * ((t495 * s488) - (t496 * s487)))) * t512)))
-            let !t529 = ((t495 * s488) - (t496 * s487))
-            wrU contacts ((30 * (truncate t490)) + 18) (t529 + (negate ((((t511 * t527) + (t512 * t528)) + (t513 * t529)) * t513)))
-            wrU contacts ((30 * (truncate t490)) + 19) (((((t524 * t529) - (t525 * t528)) * t511) + (((t525 * t527) - (t526 * t529)) * t512)) + (((t526 * t528) - (t524 * t527)) * t513))
+            t509 <- rdU scalars (-6)
+            t510 <- rdU scalars (-1)
+            t511 <- rdU scalars (-4)
+            t512 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t479)) + 8) (s476 + (negate ((((t500 * s476) + (t501 * s477)) + (t502 * s478)) * t500)))
+            wrU contacts ((30 * (truncate t479)) + 9) (s477 + (negate ((((t500 * s476) + (t501 * s477)) + (t502 * s478)) * t501)))
+            wrU contacts ((30 * (truncate t479)) + 10) (s478 + (negate ((((t500 * s476) + (t501 * s477)) + (t502 * s478)) * t502)))
+            let !t513 = (t468 + (negate t498))
+            let !t514 = (t469 + (negate t499))
+            let !t515 = (t467 + (negate t497))
+            wrU contacts ((30 * (truncate t479)) + 11) (((((t513 * s478) - (t514 * s477)) * t500) + (((t514 * s476) - (t515 * s478)) * t501)) + (((t515 * s477) - (t513 * s476)) * t502))
+            let !t516 = ((t485 * s478) - (t486 * s477))
+            wrU contacts ((30 * (truncate t479)) + 16) (t516 + (negate ((((t500 * t516) + (t501 * ((t486 * s476) - (t484 * s478)))) + (t502 * ((t484 * s477) - (t485 * s476)))) * t500)))
+            let !t517 = ((t486 * s476) - (t484 * s478))
+            wrU contacts ((30 * (truncate t479)) + 17) (t517 + (negate ((((t500 * t516) + (t501 * t517)) + (t502 * ((t484 * s477) - (t485 * s476)))) * t501)))
+            let !t518 = ((t484 * s477) - (t485 * s476))
+            wrU contacts ((30 * (truncate t479)) + 18) (t518 + (negate ((((t500 * t516) + (t501 * t517)) + (t502 * t518)) * t502)))
+            wrU contacts ((30 * (truncate t479)) + 19) (((((t513 * t518) - (t514 * t517)) * t500) + (((t514 * t516) - (t515 * t518)) * t501)) + (((t515 * t517) - (t513 * t516)) * t502))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t490)) + 8) 0.0
-            wrU contacts ((30 * (truncate t490)) + 9) 0.0
-            wrU contacts ((30 * (truncate t490)) + 10) 0.0
-            wrU contacts ((30 * (truncate t490)) + 11) 0.0
-            wrU contacts ((30 * (truncate t490)) + 16) 0.0
-            wrU contacts ((30 * (truncate t490)) + 17) 0.0
-            wrU contacts ((30 * (truncate t490)) + 18) 0.0
-            wrU contacts ((30 * (truncate t490)) + 19) 0.0
+            wrU contacts ((30 * (truncate t479)) + 8) 0.0
+            wrU contacts ((30 * (truncate t479)) + 9) 0.0
+            wrU contacts ((30 * (truncate t479)) + 10) 0.0
+            wrU contacts ((30 * (truncate t479)) + 11) 0.0
+            wrU contacts ((30 * (truncate t479)) + 16) 0.0
+            wrU contacts ((30 * (truncate t479)) + 17) 0.0
+            wrU contacts ((30 * (truncate t479)) + 18) 0.0
+            wrU contacts ((30 * (truncate t479)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t530 <- rdU meta 6
-          wrU meta 6 (t530 + 1.0)
+          t519 <- rdU meta 6
+          wrU meta 6 (t519 + 1.0)
           pure ()
         pure ()
       else do
@@ -1079,8 +1080,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1119,704 +1121,704 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (1.0 - t139)
-      let !t144 = (t121 + (t138 * ((t141 * t127) + (t142 * s130))))
-      let !t145 = (if (if ((abs t144) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t144 + (negate t144)) else t144)
-      let !t146 = (if (if ((abs t145) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t145 + (negate t145)) else t145)
-      let !s147 = ((t139 * (t120 + (t138 * ((t141 * t126) + (t142 * s129))))) + (t143 * t120))
-      let !s148 = ((t139 * (if (if ((abs t146) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t146 + (negate t146)) else t146)) + (t143 * t121))
-      let !s149 = ((t139 * (t122 + (t138 * ((t141 * t128) + (t142 * s131))))) + (t143 * t122))
-      let !t150 = ((t141 * t126) + (t142 * s129))
-      let !t151 = ((t141 * t127) + (t142 * s130))
-      let !t152 = ((t141 * t128) + (t142 * s131))
-      let !t153 = (sqrt (((t150 * t150) + (t151 * t151)) + (t152 * t152)))
-      let !t154 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t155 = (t154 * ((t120 + (t138 * t150)) + (negate t120)))
-      let !t156 = (t154 * ((if (if ((abs t146) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t146 + (negate t146)) else t146) + (negate t121)))
-      let !t157 = (t156 + (negate t156))
-      let !t158 = (t154 * ((t122 + (t138 * t152)) + (negate t122)))
-      let !t159 = (sqrt (((t155 * t155) + (t157 * t157)) + (t158 * t158)))
-      let !t160 = (if t159 > 0 then (recip (if (t159 - 1.0e-300) > 0 then t159 else 1.0e-300)) else 0.0)
-      let !s161 = ((t139 * (t153 * (t160 * t155))) + (t143 * t150))
-      let !s162 = ((t139 * (t153 * (t160 * t157))) + (t143 * t151))
-      let !s163 = ((t139 * (t153 * (t160 * t158))) + (t143 * t152))
-      let !t164 = (s148 + (t138 * s162))
-      let !t165 = (if (if ((abs t164) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t164 + (negate t164)) else t164)
-      let !t166 = (if (if ((abs t165) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t165 + (negate t165)) else t165)
-      let !s167 = ((t139 * (s147 + (t138 * s161))) + (t143 * s147))
-      let !s168 = ((t139 * (if (if ((abs t166) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t166 + (negate t166)) else t166)) + (t143 * s148))
-      let !s169 = ((t139 * (s149 + (t138 * s163))) + (t143 * s149))
-      let !t170 = (sqrt (((s161 * s161) + (s162 * s162)) + (s163 * s163)))
-      let !t171 = (t154 * ((s147 + (t138 * s161)) + (negate s147)))
-      let !t172 = (t154 * ((if (if ((abs t166) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t166 + (negate t166)) else t166) + (negate s148)))
-      let !t173 = (t172 + (negate t172))
-      let !t174 = (t154 * ((s149 + (t138 * s163)) + (negate s149)))
-      let !t175 = (sqrt (((t171 * t171) + (t173 * t173)) + (t174 * t174)))
-      let !t176 = (if t175 > 0 then (recip (if (t175 - 1.0e-300) > 0 then t175 else 1.0e-300)) else 0.0)
-      let !s177 = ((t139 * (t170 * (t176 * t171))) + (t143 * s161))
-      let !s178 = ((t139 * (t170 * (t176 * t173))) + (t143 * s162))
-      let !s179 = ((t139 * (t170 * (t176 * t174))) + (t143 * s163))
-      let !t180 = (s168 + (t138 * s178))
-      let !t181 = (if (if ((abs t180) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t180 + (negate t180)) else t180)
-      let !t182 = (if (if ((abs t181) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t181 + (negate t181)) else t181)
-      let !s183 = ((t139 * (s167 + (t138 * s177))) + (t143 * s167))
-      let !s184 = ((t139 * (if (if ((abs t182) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t182 + (negate t182)) else t182)) + (t143 * s168))
-      let !s185 = ((t139 * (s169 + (t138 * s179))) + (t143 * s169))
-      let !t186 = (sqrt (((s177 * s177) + (s178 * s178)) + (s179 * s179)))
-      let !t187 = (t154 * ((s167 + (t138 * s177)) + (negate s167)))
-      let !t188 = (t154 * ((if (if ((abs t182) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t182 + (negate t182)) else t182) + (negate s168)))
-      let !t189 = (t188 + (negate t188))
-      let !t190 = (t154 * ((s169 + (t138 * s179)) + (negate s169)))
-      let !t191 = (sqrt (((t187 * t187) + (t189 * t189)) + (t190 * t190)))
-      let !t192 = (if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0)
-      let !s193 = ((t139 * (t186 * (t192 * t187))) + (t143 * s177))
-      let !s194 = ((t139 * (t186 * (t192 * t189))) + (t143 * s178))
-      let !s195 = ((t139 * (t186 * (t192 * t190))) + (t143 * s179))
-      let !t196 = (s184 + (t138 * s194))
-      let !t197 = (if (if ((abs t196) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t196 + (negate t196)) else t196)
-      let !t198 = (if (if ((abs t197) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t197 + (negate t197)) else t197)
-      let !s199 = ((t139 * (s183 + (t138 * s193))) + (t143 * s183))
-      let !s200 = ((t139 * (if (if ((abs t198) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t198 + (negate t198)) else t198)) + (t143 * s184))
-      let !s201 = ((t139 * (s185 + (t138 * s195))) + (t143 * s185))
-      let !t202 = (sqrt (((s193 * s193) + (s194 * s194)) + (s195 * s195)))
-      let !t203 = (t154 * ((s183 + (t138 * s193)) + (negate s183)))
-      let !t204 = (t154 * ((if (if ((abs t198) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t198 + (negate t198)) else t198) + (negate s184)))
-      let !t205 = (t204 + (negate t204))
-      let !t206 = (t154 * ((s185 + (t138 * s195)) + (negate s185)))
-      let !t207 = (sqrt (((t203 * t203) + (t205 * t205)) + (t206 * t206)))
-      let !t208 = (if t207 > 0 then (recip (if (t207 - 1.0e-300) > 0 then t207 else 1.0e-300)) else 0.0)
-      let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
-      let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
-      let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdU mouse 4
-      t213 <- rdU mouse 5
-      t214 <- rdU mouse 6
-      let !t215 = (floorF ((t212 + 1.0) / 2.0))
-      let !t216 = (t212 - (t215 * 2.0))
-      let !t217 = (negate s199)
-      let !t218 = (t216 + t217)
-      let !t219 = (t213 + (negate s200))
-      let !t220 = (t219 * t219)
-      let !t221 = ((t218 * t218) + t220)
-      let !t222 = ((1.0 - (2.0 * (t215 - (2.0 * (floorF (0.5 * t215)))))) * (t214 - ((floorF ((t214 + 1.0) / 2.0)) * 2.0)))
-      let !t223 = (negate s201)
-      let !t224 = (t222 + t223)
-      let !t225 = (t221 + (t224 * t224))
-      let !t226 = (t216 + (-2.0))
-      let !t227 = (t226 + t217)
-      let !t228 = ((t227 * t227) + t220)
-      let !t229 = (negate t222)
-      let !t230 = (t229 + (-2.0))
-      let !t231 = (t230 + t223)
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (1.0 - t134)
+      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
+      let !t140 = (if (if ((abs t139) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t139 + (negate t139)) else t139)
+      let !t141 = (if (if ((abs t140) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t140 + (negate t140)) else t140)
+      let !s142 = ((t134 * (t115 + (t133 * ((t136 * t121) + (t137 * s124))))) + (t138 * t115))
+      let !s143 = ((t134 * (if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141)) + (t138 * t116))
+      let !s144 = ((t134 * (t117 + (t133 * ((t136 * t123) + (t137 * s126))))) + (t138 * t117))
+      let !t145 = ((t136 * t121) + (t137 * s124))
+      let !t146 = ((t136 * t122) + (t137 * s125))
+      let !t147 = ((t136 * t123) + (t137 * s126))
+      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
+      let !t149 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t150 = (t149 * ((t115 + (t133 * t145)) + (negate t115)))
+      let !t151 = (t149 * ((if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141) + (negate t116)))
+      let !t152 = (t151 + (negate t151))
+      let !t153 = (t149 * ((t117 + (t133 * t147)) + (negate t117)))
+      let !t154 = (sqrt (((t150 * t150) + (t152 * t152)) + (t153 * t153)))
+      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
+      let !s156 = ((t134 * (t148 * (t155 * t150))) + (t138 * t145))
+      let !s157 = ((t134 * (t148 * (t155 * t152))) + (t138 * t146))
+      let !s158 = ((t134 * (t148 * (t155 * t153))) + (t138 * t147))
+      let !t159 = (s143 + (t133 * s157))
+      let !t160 = (if (if ((abs t159) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t159 + (negate t159)) else t159)
+      let !t161 = (if (if ((abs t160) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t160 + (negate t160)) else t160)
+      let !s162 = ((t134 * (s142 + (t133 * s156))) + (t138 * s142))
+      let !s163 = ((t134 * (if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161)) + (t138 * s143))
+      let !s164 = ((t134 * (s144 + (t133 * s158))) + (t138 * s144))
+      let !t165 = (sqrt (((s156 * s156) + (s157 * s157)) + (s158 * s158)))
+      let !t166 = (t149 * ((s142 + (t133 * s156)) + (negate s142)))
+      let !t167 = (t149 * ((if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161) + (negate s143)))
+      let !t168 = (t167 + (negate t167))
+      let !t169 = (t149 * ((s144 + (t133 * s158)) + (negate s144)))
+      let !t170 = (sqrt (((t166 * t166) + (t168 * t168)) + (t169 * t169)))
+      let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
+      let !s172 = ((t134 * (t165 * (t171 * t166))) + (t138 * s156))
+      let !s173 = ((t134 * (t165 * (t171 * t168))) + (t138 * s157))
+      let !s174 = ((t134 * (t165 * (t171 * t169))) + (t138 * s158))
+      let !t175 = (s163 + (t133 * s173))
+      let !t176 = (if (if ((abs t175) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t175 + (negate t175)) else t175)
+      let !t177 = (if (if ((abs t176) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t176 + (negate t176)) else t176)
+      let !s178 = ((t134 * (s162 + (t133 * s172))) + (t138 * s162))
+      let !s179 = ((t134 * (if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177)) + (t138 * s163))
+      let !s180 = ((t134 * (s164 + (t133 * s174))) + (t138 * s164))
+      let !t181 = (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))
+      let !t182 = (t149 * ((s162 + (t133 * s172)) + (negate s162)))
+      let !t183 = (t149 * ((if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177) + (negate s163)))
+      let !t184 = (t183 + (negate t183))
+      let !t185 = (t149 * ((s164 + (t133 * s174)) + (negate s164)))
+      let !t186 = (sqrt (((t182 * t182) + (t184 * t184)) + (t185 * t185)))
+      let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
+      let !s188 = ((t134 * (t181 * (t187 * t182))) + (t138 * s172))
+      let !s189 = ((t134 * (t181 * (t187 * t184))) + (t138 * s173))
+      let !s190 = ((t134 * (t181 * (t187 * t185))) + (t138 * s174))
+      let !t191 = (s179 + (t133 * s189))
+      let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
+      let !t193 = (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)
+      let !s194 = ((t134 * (s178 + (t133 * s188))) + (t138 * s178))
+      let !s195 = ((t134 * (if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193)) + (t138 * s179))
+      let !s196 = ((t134 * (s180 + (t133 * s190))) + (t138 * s180))
+      let !t197 = (sqrt (((s188 * s188) + (s189 * s189)) + (s190 * s190)))
+      let !t198 = (t149 * ((s178 + (t133 * s188)) + (negate s178)))
+      let !t199 = (t149 * ((if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193) + (negate s179)))
+      let !t200 = (t199 + (negate t199))
+      let !t201 = (t149 * ((s180 + (t133 * s190)) + (negate s180)))
+      let !t202 = (sqrt (((t198 * t198) + (t200 * t200)) + (t201 * t201)))
+      let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
+      let !s204 = ((t134 * (t197 * (t203 * t198))) + (t138 * s188))
+      let !s205 = ((t134 * (t197 * (t203 * t200))) + (t138 * s189))
+      let !s206 = ((t134 * (t197 * (t203 * t201))) + (t138 * s190))
+      t207 <- rdU mouse 4
+      t208 <- rdU mouse 5
+      t209 <- rdU mouse 6
+      let !t210 = (floorF ((t207 + 1.0) / 2.0))
+      let !t211 = (t207 - (t210 * 2.0))
+      let !t212 = (negate s194)
+      let !t213 = (t211 + t212)
+      let !t214 = (t208 + (negate s195))
+      let !t215 = (t214 * t214)
+      let !t216 = ((t213 * t213) + t215)
+      let !t217 = ((1.0 - (2.0 * (t210 - (2.0 * (floorF (0.5 * t210)))))) * (t209 - ((floorF ((t209 + 1.0) / 2.0)) * 2.0)))
+      let !t218 = (negate s196)
+      let !t219 = (t217 + t218)
+      let !t220 = (t216 + (t219 * t219))
+      let !t221 = (t211 + (-2.0))
+      let !t222 = (t221 + t212)
+      let !t223 = ((t222 * t222) + t215)
+      let !t224 = (negate t217)
+      let !t225 = (t224 + (-2.0))
+      let !t226 = (t225 + t218)
+      let !t227 = (t226 * t226)
+      let !t228 = (t223 + t227)
+      let !t229 = (t220 - t228)
+      let !t230 = (if t229 > 0 then t228 else t220)
+      let !t231 = (t224 + t218)
       let !t232 = (t231 * t231)
-      let !t233 = (t228 + t232)
-      let !t234 = (t225 - t233)
-      let !t235 = (if t234 > 0 then t233 else t225)
-      let !t236 = (t229 + t223)
-      let !t237 = (t236 * t236)
-      let !t238 = (t228 + t237)
-      let !t239 = (t235 - t238)
-      let !t240 = (if t239 > 0 then t238 else t235)
-      let !t241 = (t229 + 2.0)
-      let !t242 = (t241 + t223)
-      let !t243 = (t242 * t242)
-      let !t244 = (t228 + t243)
-      let !t245 = (t240 - t244)
-      let !t246 = (if t245 > 0 then t244 else t240)
-      let !t247 = (t222 + (-2.0))
-      let !t248 = (t247 + t223)
-      let !t249 = (t221 + (t248 * t248))
+      let !t233 = (t223 + t232)
+      let !t234 = (t230 - t233)
+      let !t235 = (if t234 > 0 then t233 else t230)
+      let !t236 = (t224 + 2.0)
+      let !t237 = (t236 + t218)
+      let !t238 = (t237 * t237)
+      let !t239 = (t223 + t238)
+      let !t240 = (t235 - t239)
+      let !t241 = (if t240 > 0 then t239 else t235)
+      let !t242 = (t217 + (-2.0))
+      let !t243 = (t242 + t218)
+      let !t244 = (t216 + (t243 * t243))
+      let !t245 = (t241 - t244)
+      let !t246 = (if t245 > 0 then t244 else t241)
+      let !t247 = (t217 + 2.0)
+      let !t248 = (t247 + t218)
+      let !t249 = (t216 + (t248 * t248))
       let !t250 = (t246 - t249)
       let !t251 = (if t250 > 0 then t249 else t246)
-      let !t252 = (t222 + 2.0)
-      let !t253 = (t252 + t223)
-      let !t254 = (t221 + (t253 * t253))
-      let !t255 = (t251 - t254)
-      let !t256 = (if t255 > 0 then t254 else t251)
-      let !t257 = (t216 + 2.0)
-      let !t258 = (t257 + t217)
-      let !t259 = ((t258 * t258) + t220)
-      let !t260 = (t259 + t232)
-      let !t261 = (t256 - t260)
-      let !t262 = (if t261 > 0 then t260 else t256)
-      let !t263 = (t259 + t237)
-      let !t264 = (t262 - t263)
-      let !t265 = ((if t264 > 0 then t263 else t262) - (t259 + t243))
-      let !s266 = (if t265 > 0 then t257 else (if t264 > 0 then t257 else (if t261 > 0 then t257 else (if t255 > 0 then t216 else (if t250 > 0 then t216 else (if t245 > 0 then t226 else (if t239 > 0 then t226 else (if t234 > 0 then t226 else t216))))))))
-      let !s267 = (if t265 > 0 then t241 else (if t264 > 0 then t229 else (if t261 > 0 then t230 else (if t255 > 0 then t252 else (if t250 > 0 then t247 else (if t245 > 0 then t241 else (if t239 > 0 then t229 else (if t234 > 0 then t230 else t222))))))))
-      t268 <- rdU mouse 7
-      t269 <- rdU mouse 8
-      t270 <- rdU mouse 9
-      let !t271 = (recip t101)
-      let !t272 = (6.283185307179586 * t268)
-      let !s273 = (recip (t103 * ((((2.0 * t271) * t269) * t272) + (t103 * ((t271 * t272) * t272)))))
-      let !s274 = ((t103 * ((t271 * t272) * t272)) * s273)
-      let !s275 = (s199 + (negate t104))
-      let !s276 = (s200 + (negate t105))
-      let !s277 = (s201 + (negate t106))
-      let !s278 = (s199 + (negate s266))
-      let !s279 = (s200 + (negate t213))
-      let !s280 = (s201 + (negate s267))
-      t281 <- rdU mouse 10
-      t282 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t283 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t284 <- rdU vel (3 * (truncate t100))
-      t285 <- rdU vel ((3 * (truncate t100)) + 1)
-      t286 <- rdU vel ((3 * (truncate t100)) + 2)
-      t287 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t284 + ((t282 * t281) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s276 * t112) - (s277 * t111)) * t107) + (((s277 * t110) - (s275 * t112)) * t108)) + (((s275 * t111) - (s276 * t110)) * t109))))
-      t288 <- rdU mouse 11
-      t289 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t290 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t291 <- rdU vel (3 * (truncate t100))
-      t292 <- rdU vel ((3 * (truncate t100)) + 1)
-      t293 <- rdU vel ((3 * (truncate t100)) + 2)
-      t294 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t291 + ((t289 * t288) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t292 + ((t289 * t288) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t293 + ((t289 * t288) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t294 + ((t290 * t288) * (((((s276 * s115) - (s277 * s114)) * t107) + (((s277 * s113) - (s275 * s115)) * t108)) + (((s275 * s114) - (s276 * s113)) * t109))))
+      let !t252 = (t211 + 2.0)
+      let !t253 = (t252 + t212)
+      let !t254 = ((t253 * t253) + t215)
+      let !t255 = (t254 + t227)
+      let !t256 = (t251 - t255)
+      let !t257 = (if t256 > 0 then t255 else t251)
+      let !t258 = (t254 + t232)
+      let !t259 = (t257 - t258)
+      let !t260 = ((if t259 > 0 then t258 else t257) - (t254 + t238))
+      let !s261 = (if t260 > 0 then t252 else (if t259 > 0 then t252 else (if t256 > 0 then t252 else (if t250 > 0 then t211 else (if t245 > 0 then t211 else (if t240 > 0 then t221 else (if t234 > 0 then t221 else (if t229 > 0 then t221 else t211))))))))
+      let !s262 = (if t260 > 0 then t236 else (if t259 > 0 then t224 else (if t256 > 0 then t225 else (if t250 > 0 then t247 else (if t245 > 0 then t242 else (if t240 > 0 then t236 else (if t234 > 0 then t224 else (if t229 > 0 then t225 else t217))))))))
+      t263 <- rdU mouse 7
+      t264 <- rdU mouse 8
+      t265 <- rdU mouse 9
+      let !t266 = (recip t96)
+      let !t267 = (6.283185307179586 * t263)
+      let !s268 = (recip (t98 * ((((2.0 * t266) * t264) * t267) + (t98 * ((t266 * t267) * t267)))))
+      let !s269 = ((t98 * ((t266 * t267) * t267)) * s268)
+      let !s270 = (s194 + (negate t99))
+      let !s271 = (s195 + (negate t100))
+      let !s272 = (s196 + (negate t101))
+      let !s273 = (s194 + (negate s261))
+      let !s274 = (s195 + (negate t208))
+      let !s275 = (s196 + (negate s262))
+      t276 <- rdU mouse 10
+      t277 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t278 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t279 <- rdU vel (3 * (truncate t95))
+      t280 <- rdU vel ((3 * (truncate t95)) + 1)
+      t281 <- rdU vel ((3 * (truncate t95)) + 2)
+      t282 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t279 + ((t277 * t276) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t280 + ((t277 * t276) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t281 + ((t277 * t276) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t282 + ((t278 * t276) * (((((s271 * t107) - (s272 * t106)) * t102) + (((s272 * t105) - (s270 * t107)) * t103)) + (((s270 * t106) - (s271 * t105)) * t104))))
+      t283 <- rdU mouse 11
+      t284 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t285 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t286 <- rdU vel (3 * (truncate t95))
+      t287 <- rdU vel ((3 * (truncate t95)) + 1)
+      t288 <- rdU vel ((3 * (truncate t95)) + 2)
+      t289 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t286 + ((t284 * t283) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t287 + ((t284 * t283) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t288 + ((t284 * t283) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t289 + ((t285 * t283) * (((((s271 * s110) - (s272 * s109)) * t102) + (((s272 * s108) - (s270 * s110)) * t103)) + (((s270 * s109) - (s271 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i295 -> do
-    let !d295 = fromIntegral i295 :: Double
-    loopI 0.0 t9 $ \i296 -> do
-      let !d296 = fromIntegral i296 :: Double
-      chkI contacts (30 * i296) 0 26
-      t297 <- rdU contacts (30 * i296)
-      t298 <- rdU contacts ((30 * i296) + 1)
-      t299 <- rdU contacts ((30 * i296) + 12)
-      t300 <- rdU contacts ((30 * i296) + 13)
-      t301 <- rdU contacts ((30 * i296) + 14)
-      t302 <- rdU contacts ((30 * i296) + 15)
-      t303 <- rdU contacts ((30 * i296) + 16)
-      t304 <- rdU contacts ((30 * i296) + 17)
-      t305 <- rdU contacts ((30 * i296) + 18)
-      t306 <- rdU contacts ((30 * i296) + 19)
-      t307 <- rdU contacts ((30 * i296) + 4)
-      t308 <- rdU contacts ((30 * i296) + 5)
-      t309 <- rdU contacts ((30 * i296) + 6)
-      t310 <- rdU contacts ((30 * i296) + 7)
-      t311 <- rdU contacts ((30 * i296) + 8)
-      t312 <- rdU contacts ((30 * i296) + 9)
-      t313 <- rdU contacts ((30 * i296) + 10)
-      t314 <- rdU contacts ((30 * i296) + 11)
-      t315 <- rdU contacts ((30 * i296) + 26)
-      t316 <- rdU contacts ((30 * i296) + 24)
-      t317 <- rdU contacts ((30 * i296) + 25)
-      t318 <- rdU contacts ((30 * i296) + 22)
-      t319 <- rdU contacts ((30 * i296) + 21)
-      t320 <- rdU contacts ((30 * i296) + 23)
-      let !s321 = (if (negate t298) > 0 then 0.0 else t298)
-      let !s322 = (t298 + 0.5)
-      let !s323 = (if (0.5 - (abs (t297 - t298))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t297)) 1 3
-      t324 <- rdU scalars ((6 * (truncate t297)) + 2)
-      t325 <- rdU scalars ((6 * (truncate t297)) + 3)
-      chkI scalars (6 * (truncate s321)) 1 3
-      t326 <- rdU scalars ((6 * (truncate s321)) + 2)
-      t327 <- rdU scalars ((6 * (truncate s321)) + 3)
-      chkI vel (3 * (truncate t297)) 0 2
-      t328 <- rdU vel (3 * (truncate t297))
-      t329 <- rdU vel ((3 * (truncate t297)) + 1)
-      t330 <- rdU vel ((3 * (truncate t297)) + 2)
-      t331 <- rdU scalars ((6 * (truncate t297)) + 1)
-      chkI vel (3 * (truncate s321)) 0 2
-      t332 <- rdU vel (3 * (truncate s321))
-      t333 <- rdU vel ((3 * (truncate s321)) + 1)
-      t334 <- rdU vel ((3 * (truncate s321)) + 2)
-      t335 <- rdU scalars ((6 * (truncate s321)) + 1)
-      let !s336 = (((((t299 * t328) + (t300 * t329)) + (t301 * t330)) + (t302 * t331)) - (if s322 > 0 then ((((t303 * t332) + (t304 * t333)) + (t305 * t334)) + (t306 * t335)) else 0.0))
-      let !t337 = (t2 * t316)
-      let !t338 = (negate t337)
-      let !t339 = (t317 - ((t315 * s336) * t318))
-      let !t340 = (if (t339 - t337) > 0 then t337 else t339)
-      let !t341 = (if (t338 - t340) > 0 then t338 else t340)
-      let !s342 = (if (1.0 - (abs (t341 - t341))) > 0 then t341 else 0.0)
-      wrU contacts ((30 * i296) + 25) s342
-      let !t343 = (t324 * (s342 - t317))
-      let !s344 = (t343 * t299)
-      let !s345 = (t343 * t300)
-      let !s346 = (t343 * t301)
-      let !s347 = ((t325 * (s342 - t317)) * t302)
-      let !t348 = (t326 * (negate (s342 - t317)))
-      let !s349 = (t348 * t303)
-      let !s350 = (t348 * t304)
-      let !s351 = (t348 * t305)
-      let !s352 = ((t327 * (negate (s342 - t317))) * t306)
-      let !s353 = ((t328 + s344) + (s323 * s349))
-      let !s354 = ((t329 + s345) + (s323 * s350))
-      let !s355 = ((t330 + s346) + (s323 * s351))
-      let !s356 = ((t331 + s347) + (s323 * s352))
-      let !s357 = ((t332 + s349) + (s323 * s344))
-      let !s358 = ((t333 + s350) + (s323 * s345))
-      let !s359 = ((t334 + s351) + (s323 * s346))
-      let !s360 = ((t335 + s352) + (s323 * s347))
-      let !s361 = (((((t307 * s353) + (t308 * s354)) + (t309 * s355)) + (t310 * s356)) - (if s322 > 0 then ((((t311 * s357) + (t312 * s358)) + (t313 * s359)) + (t314 * s360)) else 0.0))
-      let !t362 = (t316 + ((t315 * (t320 - s361)) * t319))
-      let !t363 = (if (negate t362) > 0 then 0.0 else t362)
-      let !s364 = (if (1.0 - (abs (t363 - t363))) > 0 then t363 else 0.0)
-      wrU contacts ((30 * i296) + 24) s364
-      let !t365 = (t324 * (s364 - t316))
-      let !s366 = (t365 * t307)
-      let !s367 = (t365 * t308)
-      let !s368 = (t365 * t309)
-      let !s369 = ((t325 * (s364 - t316)) * t310)
-      let !t370 = (t326 * (negate (s364 - t316)))
-      let !s371 = (t370 * t311)
-      let !s372 = (t370 * t312)
-      let !s373 = (t370 * t313)
-      let !s374 = ((t327 * (negate (s364 - t316))) * t314)
-      let !s375 = ((s353 + s366) + (s323 * s371))
-      let !s376 = ((s354 + s367) + (s323 * s372))
-      let !s377 = ((s355 + s368) + (s323 * s373))
-      let !s378 = ((s356 + s369) + (s323 * s374))
-      let !s379 = ((s357 + s371) + (s323 * s366))
-      let !s380 = ((s358 + s372) + (s323 * s367))
-      let !s381 = ((s359 + s373) + (s323 * s368))
-      let !s382 = ((s360 + s374) + (s323 * s369))
-      wrU vel (3 * (truncate t297)) s375
-      wrU vel ((3 * (truncate t297)) + 1) s376
-      wrU vel ((3 * (truncate t297)) + 2) s377
-      wrU scalars ((6 * (truncate t297)) + 1) s378
-      if s322 > 0 then do
-        wrU vel (3 * (truncate s321)) s379
-        wrU vel ((3 * (truncate s321)) + 1) s380
-        wrU vel ((3 * (truncate s321)) + 2) s381
-        wrU scalars ((6 * (truncate s321)) + 1) s382
+  loopI 0.0 t1 $ \i290 -> do
+    let !d290 = fromIntegral i290 :: Double
+    loopI 0.0 t9 $ \i291 -> do
+      let !d291 = fromIntegral i291 :: Double
+      chkI contacts (30 * i291) 0 26
+      t292 <- rdU contacts (30 * i291)
+      t293 <- rdU contacts ((30 * i291) + 1)
+      t294 <- rdU contacts ((30 * i291) + 12)
+      t295 <- rdU contacts ((30 * i291) + 13)
+      t296 <- rdU contacts ((30 * i291) + 14)
+      t297 <- rdU contacts ((30 * i291) + 15)
+      t298 <- rdU contacts ((30 * i291) + 16)
+      t299 <- rdU contacts ((30 * i291) + 17)
+      t300 <- rdU contacts ((30 * i291) + 18)
+      t301 <- rdU contacts ((30 * i291) + 19)
+      t302 <- rdU contacts ((30 * i291) + 4)
+      t303 <- rdU contacts ((30 * i291) + 5)
+      t304 <- rdU contacts ((30 * i291) + 6)
+      t305 <- rdU contacts ((30 * i291) + 7)
+      t306 <- rdU contacts ((30 * i291) + 8)
+      t307 <- rdU contacts ((30 * i291) + 9)
+      t308 <- rdU contacts ((30 * i291) + 10)
+      t309 <- rdU contacts ((30 * i291) + 11)
+      t310 <- rdU contacts ((30 * i291) + 26)
+      t311 <- rdU contacts ((30 * i291) + 24)
+      t312 <- rdU contacts ((30 * i291) + 25)
+      t313 <- rdU contacts ((30 * i291) + 22)
+      t314 <- rdU contacts ((30 * i291) + 21)
+      t315 <- rdU contacts ((30 * i291) + 23)
+      let !s316 = (if (negate t293) > 0 then 0.0 else t293)
+      let !s317 = (t293 + 0.5)
+      let !s318 = (if (0.5 - (abs (t292 - t293))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t292)) 1 3
+      t319 <- rdU scalars ((6 * (truncate t292)) + 2)
+      t320 <- rdU scalars ((6 * (truncate t292)) + 3)
+      chkI scalars (6 * (truncate s316)) 1 3
+      t321 <- rdU scalars ((6 * (truncate s316)) + 2)
+      t322 <- rdU scalars ((6 * (truncate s316)) + 3)
+      chkI vel (3 * (truncate t292)) 0 2
+      t323 <- rdU vel (3 * (truncate t292))
+      t324 <- rdU vel ((3 * (truncate t292)) + 1)
+      t325 <- rdU vel ((3 * (truncate t292)) + 2)
+      t326 <- rdU scalars ((6 * (truncate t292)) + 1)
+      chkI vel (3 * (truncate s316)) 0 2
+      t327 <- rdU vel (3 * (truncate s316))
+      t328 <- rdU vel ((3 * (truncate s316)) + 1)
+      t329 <- rdU vel ((3 * (truncate s316)) + 2)
+      t330 <- rdU scalars ((6 * (truncate s316)) + 1)
+      let !s331 = (((((t294 * t323) + (t295 * t324)) + (t296 * t325)) + (t297 * t326)) - (if s317 > 0 then ((((t298 * t327) + (t299 * t328)) + (t300 * t329)) + (t301 * t330)) else 0.0))
+      let !t332 = (t2 * t311)
+      let !t333 = (negate t332)
+      let !t334 = (t312 - ((t310 * s331) * t313))
+      let !t335 = (if (t334 - t332) > 0 then t332 else t334)
+      let !t336 = (if (t333 - t335) > 0 then t333 else t335)
+      let !s337 = (if (1.0 - (abs (t336 - t336))) > 0 then t336 else 0.0)
+      wrU contacts ((30 * i291) + 25) s337
+      let !t338 = (t319 * (s337 - t312))
+      let !s339 = (t338 * t294)
+      let !s340 = (t338 * t295)
+      let !s341 = (t338 * t296)
+      let !s342 = ((t320 * (s337 - t312)) * t297)
+      let !t343 = (t321 * (negate (s337 - t312)))
+      let !s344 = (t343 * t298)
+      let !s345 = (t343 * t299)
+      let !s346 = (t343 * t300)
+      let !s347 = ((t322 * (negate (s337 - t312))) * t301)
+      let !s348 = ((t323 + s339) + (s318 * s344))
+      let !s349 = ((t324 + s340) + (s318 * s345))
+      let !s350 = ((t325 + s341) + (s318 * s346))
+      let !s351 = ((t326 + s342) + (s318 * s347))
+      let !s352 = ((t327 + s344) + (s318 * s339))
+      let !s353 = ((t328 + s345) + (s318 * s340))
+      let !s354 = ((t329 + s346) + (s318 * s341))
+      let !s355 = ((t330 + s347) + (s318 * s342))
+      let !s356 = (((((t302 * s348) + (t303 * s349)) + (t304 * s350)) + (t305 * s351)) - (if s317 > 0 then ((((t306 * s352) + (t307 * s353)) + (t308 * s354)) + (t309 * s355)) else 0.0))
+      let !t357 = (t311 + ((t310 * (t315 - s356)) * t314))
+      let !t358 = (if (negate t357) > 0 then 0.0 else t357)
+      let !s359 = (if (1.0 - (abs (t358 - t358))) > 0 then t358 else 0.0)
+      wrU contacts ((30 * i291) + 24) s359
+      let !t360 = (t319 * (s359 - t311))
+      let !s361 = (t360 * t302)
+      let !s362 = (t360 * t303)
+      let !s363 = (t360 * t304)
+      let !s364 = ((t320 * (s359 - t311)) * t305)
+      let !t365 = (t321 * (negate (s359 - t311)))
+      let !s366 = (t365 * t306)
+      let !s367 = (t365 * t307)
+      let !s368 = (t365 * t308)
+      let !s369 = ((t322 * (negate (s359 - t311))) * t309)
+      let !s370 = ((s348 + s361) + (s318 * s366))
+      let !s371 = ((s349 + s362) + (s318 * s367))
+      let !s372 = ((s350 + s363) + (s318 * s368))
+      let !s373 = ((s351 + s364) + (s318 * s369))
+      let !s374 = ((s352 + s366) + (s318 * s361))
+      let !s375 = ((s353 + s367) + (s318 * s362))
+      let !s376 = ((s354 + s368) + (s318 * s363))
+      let !s377 = ((s355 + s369) + (s318 * s364))
+      wrU vel (3 * (truncate t292)) s370
+      wrU vel ((3 * (truncate t292)) + 1) s371
+      wrU vel ((3 * (truncate t292)) + 2) s372
+      wrU scalars ((6 * (truncate t292)) + 1) s373
+      if s317 > 0 then do
+        wrU vel (3 * (truncate s316)) s374
+        wrU vel ((3 * (truncate s316)) + 1) s375
+        wrU vel ((3 * (truncate s316)) + 2) s376
+        wrU scalars ((6 * (truncate s316)) + 1) s377
         pure ()
       else do
         pure ()
       pure ()
-    t383 <- rdU mouse 0
-    if t383 > 0 then do
+    t378 <- rdU mouse 0
+    if t378 > 0 then do
       chkI mouse 0 1 1
-      t384 <- rdU mouse 1
-      chkI scalars (6 * (truncate t384)) 2 2
-      t385 <- rdU scalars ((6 * (truncate t384)) + 2)
-      if t385 > 0 then do
-        chkI scalars (6 * (truncate t384)) 0 5
-        t386 <- rdU scalars ((6 * (truncate t384)) + 3)
-        t387 <- rdU params 0
-        chkI pos (3 * (truncate t384)) 0 2
-        t388 <- rdU pos (3 * (truncate t384))
-        t389 <- rdU pos ((3 * (truncate t384)) + 1)
-        t390 <- rdU pos ((3 * (truncate t384)) + 2)
-        chkI normal (3 * (truncate t384)) 0 2
-        t391 <- rdU normal (3 * (truncate t384))
-        t392 <- rdU normal ((3 * (truncate t384)) + 1)
-        t393 <- rdU normal ((3 * (truncate t384)) + 2)
-        chkI axis (3 * (truncate t384)) 0 2
-        t394 <- rdU axis (3 * (truncate t384))
-        t395 <- rdU axis ((3 * (truncate t384)) + 1)
-        t396 <- rdU axis ((3 * (truncate t384)) + 2)
-        let !s397 = ((t392 * t396) - (t393 * t395))
-        let !s398 = ((t393 * t394) - (t391 * t396))
-        let !s399 = ((t391 * t395) - (t392 * t394))
-        t400 <- rdU scalars (6 * (truncate t384))
-        t401 <- rdU scalars ((6 * (truncate t384)) + 5)
-        t402 <- rdU scalars ((6 * (truncate t384)) + 2)
-        t403 <- rdU scalars ((6 * (truncate t384)) + 3)
-        t404 <- rdU pos (3 * (truncate t384))
-        t405 <- rdU pos ((3 * (truncate t384)) + 1)
-        t406 <- rdU pos ((3 * (truncate t384)) + 2)
-        t407 <- rdU normal (3 * (truncate t384))
-        t408 <- rdU normal ((3 * (truncate t384)) + 1)
-        t409 <- rdU normal ((3 * (truncate t384)) + 2)
-        t410 <- rdU axis (3 * (truncate t384))
-        t411 <- rdU axis ((3 * (truncate t384)) + 1)
-        t412 <- rdU axis ((3 * (truncate t384)) + 2)
-        let !s413 = ((t408 * t412) - (t409 * t411))
-        let !s414 = ((t409 * t410) - (t407 * t412))
-        let !s415 = ((t407 * t411) - (t408 * t410))
-        t416 <- rdU scalars (6 * (truncate t384))
-        t417 <- rdU scalars ((6 * (truncate t384)) + 5)
-        t418 <- rdU scalars ((6 * (truncate t384)) + 2)
-        t419 <- rdU scalars ((6 * (truncate t384)) + 3)
+      t379 <- rdU mouse 1
+      chkI scalars (6 * (truncate t379)) 2 2
+      t380 <- rdU scalars ((6 * (truncate t379)) + 2)
+      if t380 > 0 then do
+        chkI scalars (6 * (truncate t379)) 0 5
+        t381 <- rdU scalars ((6 * (truncate t379)) + 3)
+        t382 <- rdU params 0
+        chkI pos (3 * (truncate t379)) 0 2
+        t383 <- rdU pos (3 * (truncate t379))
+        t384 <- rdU pos ((3 * (truncate t379)) + 1)
+        t385 <- rdU pos ((3 * (truncate t379)) + 2)
+        chkI normal (3 * (truncate t379)) 0 2
+        t386 <- rdU normal (3 * (truncate t379))
+        t387 <- rdU normal ((3 * (truncate t379)) + 1)
+        t388 <- rdU normal ((3 * (truncate t379)) + 2)
+        chkI axis (3 * (truncate t379)) 0 2
+        t389 <- rdU axis (3 * (truncate t379))
+        t390 <- rdU axis ((3 * (truncate t379)) + 1)
+        t391 <- rdU axis ((3 * (truncate t379)) + 2)
+        let !s392 = ((t387 * t391) - (t388 * t390))
+        let !s393 = ((t388 * t389) - (t386 * t391))
+        let !s394 = ((t386 * t390) - (t387 * t389))
+        t395 <- rdU scalars (6 * (truncate t379))
+        t396 <- rdU scalars ((6 * (truncate t379)) + 5)
+        t397 <- rdU scalars ((6 * (truncate t379)) + 2)
+        t398 <- rdU scalars ((6 * (truncate t379)) + 3)
+        t399 <- rdU pos (3 * (truncate t379))
+        t400 <- rdU pos ((3 * (truncate t379)) + 1)
+        t401 <- rdU pos ((3 * (truncate t379)) + 2)
+        t402 <- rdU normal (3 * (truncate t379))
+        t403 <- rdU normal ((3 * (truncate t379)) + 1)
+        t404 <- rdU normal ((3 * (truncate t379)) + 2)
+        t405 <- rdU axis (3 * (truncate t379))
+        t406 <- rdU axis ((3 * (truncate t379)) + 1)
+        t407 <- rdU axis ((3 * (truncate t379)) + 2)
+        let !s408 = ((t403 * t407) - (t404 * t406))
+        let !s409 = ((t404 * t405) - (t402 * t407))
+        let !s410 = ((t402 * t406) - (t403 * t405))
+        t411 <- rdU scalars (6 * (truncate t379))
+        t412 <- rdU scalars ((6 * (truncate t379)) + 5)
+        t413 <- rdU scalars ((6 * (truncate t379)) + 2)
+        t414 <- rdU scalars ((6 * (truncate t379)) + 3)
         chkI mouse 0 2 11
-        t420 <- rdU mouse 2
-        t421 <- rdU mouse 3
-        let !t422 = (t420 / 4.0)
-        let !t423 = (if (abs t422) > 0 then 1.0 else 0.0)
-        let !t424 = (t416 + t421)
-        let !t425 = (cos t424)
-        let !t426 = (sin t424)
-        let !t427 = (1.0 - t423)
-        let !t428 = (t405 + (t422 * ((t425 * t411) + (t426 * s414))))
-        let !t429 = (if (if ((abs t428) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t428 + (negate t428)) else t428)
-        let !t430 = (if (if ((abs t429) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t429 + (negate t429)) else t429)
-        let !s431 = ((t423 * (t404 + (t422 * ((t425 * t410) + (t426 * s413))))) + (t427 * t404))
-        let !s432 = ((t423 * (if (if ((abs t430) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t430 + (negate t430)) else t430)) + (t427 * t405))
-        let !s433 = ((t423 * (t406 + (t422 * ((t425 * t412) + (t426 * s415))))) + (t427 * t406))
-        let !t434 = ((t425 * t410) + (t426 * s413))
-        let !t435 = ((t425 * t411) + (t426 * s414))
-        let !t436 = ((t425 * t412) + (t426 * s415))
-        let !t437 = (sqrt (((t434 * t434) + (t435 * t435)) + (t436 * t436)))
-        let !t438 = (if (abs t422) > 0 then (recip t422) else 0.0)
-        let !t439 = (t438 * ((t404 + (t422 * t434)) + (negate t404)))
-        let !t440 = (t438 * ((if (if ((abs t430) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t430 + (negate t430)) else t430) + (negate t405)))
-        let !t441 = (t440 + (negate t440))
-        let !t442 = (t438 * ((t406 + (t422 * t436)) + (negate t406)))
-        let !t443 = (sqrt (((t439 * t439) + (t441 * t441)) + (t442 * t442)))
-        let !t444 = (if t443 > 0 then (recip (if (t443 - 1.0e-300) > 0 then t443 else 1.0e-300)) else 0.0)
-        let !s445 = ((t423 * (t437 * (t444 * t439))) + (t427 * t434))
-        let !s446 = ((t423 * (t437 * (t444 * t441))) + (t427 * t435))
-        let !s447 = ((t423 * (t437 * (t444 * t442))) + (t427 * t436))
-        let !t448 = (s432 + (t422 * s446))
-        let !t449 = (if (if ((abs t448) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t448 + (negate t448)) else t448)
-        let !t450 = (if (if ((abs t449) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t449 + (negate t449)) else t449)
-        let !s451 = ((t423 * (s431 + (t422 * s445))) + (t427 * s431))
-        let !s452 = ((t423 * (if (if ((abs t450) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t450 + (negate t450)) else t450)) + (t427 * s432))
-        let !s453 = ((t423 * (s433 + (t422 * s447))) + (t427 * s433))
-        let !t454 = (sqrt (((s445 * s445) + (s446 * s446)) + (s447 * s447)))
-        let !t455 = (t438 * ((s431 + (t422 * s445)) + (negate s431)))
-        let !t456 = (t438 * ((if (if ((abs t450) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t450 + (negate t450)) else t450) + (negate s432)))
-        let !t457 = (t456 + (negate t456))
-        let !t458 = (t438 * ((s433 + (t422 * s447)) + (negate s433)))
-        let !t459 = (sqrt (((t455 * t455) + (t457 * t457)) + (t458 * t458)))
-        let !t460 = (if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0)
-        let !s461 = ((t423 * (t454 * (t460 * t455))) + (t427 * s445))
-        let !s462 = ((t423 * (t454 * (t460 * t457))) + (t427 * s446))
-        let !s463 = ((t423 * (t454 * (t460 * t458))) + (t427 * s447))
-        let !t464 = (s452 + (t422 * s462))
-        let !t465 = (if (if ((abs t464) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t464 + (negate t464)) else t464)
-        let !t466 = (if (if ((abs t465) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t465 + (negate t465)) else t465)
-        let !s467 = ((t423 * (s451 + (t422 * s461))) + (t427 * s451))
-        let !s468 = ((t423 * (if (if ((abs t466) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t466 + (negate t466)) else t466)) + (t427 * s452))
-        let !s469 = ((t423 * (s453 + (t422 * s463))) + (t427 * s453))
-        let !t470 = (sqrt (((s461 * s461) + (s462 * s462)) + (s463 * s463)))
-        let !t471 = (t438 * ((s451 + (t422 * s461)) + (negate s451)))
-        let !t472 = (t438 * ((if (if ((abs t466) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t466 + (negate t466)) else t466) + (negate s452)))
-        let !t473 = (t472 + (negate t472))
-        let !t474 = (t438 * ((s453 + (t422 * s463)) + (negate s453)))
-        let !t475 = (sqrt (((t471 * t471) + (t473 * t473)) + (t474 * t474)))
-        let !t476 = (if t475 > 0 then (recip (if (t475 - 1.0e-300) > 0 then t475 else 1.0e-300)) else 0.0)
-        let !s477 = ((t423 * (t470 * (t476 * t471))) + (t427 * s461))
-        let !s478 = ((t423 * (t470 * (t476 * t473))) + (t427 * s462))
-        let !s479 = ((t423 * (t470 * (t476 * t474))) + (t427 * s463))
-        let !t480 = (s468 + (t422 * s478))
-        let !t481 = (if (if ((abs t480) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t480 + (negate t480)) else t480)
-        let !t482 = (if (if ((abs t481) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t481 + (negate t481)) else t481)
-        let !s483 = ((t423 * (s467 + (t422 * s477))) + (t427 * s467))
-        let !s484 = ((t423 * (if (if ((abs t482) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t482 + (negate t482)) else t482)) + (t427 * s468))
-        let !s485 = ((t423 * (s469 + (t422 * s479))) + (t427 * s469))
-        let !t486 = (sqrt (((s477 * s477) + (s478 * s478)) + (s479 * s479)))
-        let !t487 = (t438 * ((s467 + (t422 * s477)) + (negate s467)))
-        let !t488 = (t438 * ((if (if ((abs t482) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t482 + (negate t482)) else t482) + (negate s468)))
-        let !t489 = (t488 + (negate t488))
-        let !t490 = (t438 * ((s469 + (t422 * s479)) + (negate s469)))
-        let !t491 = (sqrt (((t487 * t487) + (t489 * t489)) + (t490 * t490)))
-        let !t492 = (if t491 > 0 then (recip (if (t491 - 1.0e-300) > 0 then t491 else 1.0e-300)) else 0.0)
-        let !s493 = ((t423 * (t486 * (t492 * t487))) + (t427 * s477))
-        let !s494 = ((t423 * (t486 * (t492 * t489))) + (t427 * s478))
-        let !s495 = ((t423 * (t486 * (t492 * t490))) + (t427 * s479))
-        t496 <- rdU mouse 4
-        t497 <- rdU mouse 5
-        t498 <- rdU mouse 6
-        let !t499 = (floorF ((t496 + 1.0) / 2.0))
-        let !t500 = (t496 - (t499 * 2.0))
-        let !t501 = (negate s483)
-        let !t502 = (t500 + t501)
-        let !t503 = (t497 + (negate s484))
-        let !t504 = (t503 * t503)
-        let !t505 = ((t502 * t502) + t504)
-        let !t506 = ((1.0 - (2.0 * (t499 - (2.0 * (floorF (0.5 * t499)))))) * (t498 - ((floorF ((t498 + 1.0) / 2.0)) * 2.0)))
-        let !t507 = (negate s485)
-        let !t508 = (t506 + t507)
-        let !t509 = (t505 + (t508 * t508))
-        let !t510 = (t500 + (-2.0))
-        let !t511 = (t510 + t501)
-        let !t512 = ((t511 * t511) + t504)
-        let !t513 = (negate t506)
-        let !t514 = (t513 + (-2.0))
-        let !t515 = (t514 + t507)
+        t415 <- rdU mouse 2
+        t416 <- rdU mouse 3
+        let !t417 = (t415 / 4.0)
+        let !t418 = (if (abs t417) > 0 then 1.0 else 0.0)
+        let !t419 = (t411 + t416)
+        let !t420 = (cos t419)
+        let !t421 = (sin t419)
+        let !t422 = (1.0 - t418)
+        let !t423 = (t400 + (t417 * ((t420 * t406) + (t421 * s409))))
+        let !t424 = (if (if ((abs t423) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t423 + (negate t423)) else t423)
+        let !t425 = (if (if ((abs t424) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t424 + (negate t424)) else t424)
+        let !s426 = ((t418 * (t399 + (t417 * ((t420 * t405) + (t421 * s408))))) + (t422 * t399))
+        let !s427 = ((t418 * (if (if ((abs t425) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t425 + (negate t425)) else t425)) + (t422 * t400))
+        let !s428 = ((t418 * (t401 + (t417 * ((t420 * t407) + (t421 * s410))))) + (t422 * t401))
+        let !t429 = ((t420 * t405) + (t421 * s408))
+        let !t430 = ((t420 * t406) + (t421 * s409))
+        let !t431 = ((t420 * t407) + (t421 * s410))
+        let !t432 = (sqrt (((t429 * t429) + (t430 * t430)) + (t431 * t431)))
+        let !t433 = (if (abs t417) > 0 then (recip t417) else 0.0)
+        let !t434 = (t433 * ((t399 + (t417 * t429)) + (negate t399)))
+        let !t435 = (t433 * ((if (if ((abs t425) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t425 + (negate t425)) else t425) + (negate t400)))
+        let !t436 = (t435 + (negate t435))
+        let !t437 = (t433 * ((t401 + (t417 * t431)) + (negate t401)))
+        let !t438 = (sqrt (((t434 * t434) + (t436 * t436)) + (t437 * t437)))
+        let !t439 = (if t438 > 0 then (recip (if (t438 - 1.0e-300) > 0 then t438 else 1.0e-300)) else 0.0)
+        let !s440 = ((t418 * (t432 * (t439 * t434))) + (t422 * t429))
+        let !s441 = ((t418 * (t432 * (t439 * t436))) + (t422 * t430))
+        let !s442 = ((t418 * (t432 * (t439 * t437))) + (t422 * t431))
+        let !t443 = (s427 + (t417 * s441))
+        let !t444 = (if (if ((abs t443) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t443 + (negate t443)) else t443)
+        let !t445 = (if (if ((abs t444) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t444 + (negate t444)) else t444)
+        let !s446 = ((t418 * (s426 + (t417 * s440))) + (t422 * s426))
+        let !s447 = ((t418 * (if (if ((abs t445) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t445 + (negate t445)) else t445)) + (t422 * s427))
+        let !s448 = ((t418 * (s428 + (t417 * s442))) + (t422 * s428))
+        let !t449 = (sqrt (((s440 * s440) + (s441 * s441)) + (s442 * s442)))
+        let !t450 = (t433 * ((s426 + (t417 * s440)) + (negate s426)))
+        let !t451 = (t433 * ((if (if ((abs t445) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t445 + (negate t445)) else t445) + (negate s427)))
+        let !t452 = (t451 + (negate t451))
+        let !t453 = (t433 * ((s428 + (t417 * s442)) + (negate s428)))
+        let !t454 = (sqrt (((t450 * t450) + (t452 * t452)) + (t453 * t453)))
+        let !t455 = (if t454 > 0 then (recip (if (t454 - 1.0e-300) > 0 then t454 else 1.0e-300)) else 0.0)
+        let !s456 = ((t418 * (t449 * (t455 * t450))) + (t422 * s440))
+        let !s457 = ((t418 * (t449 * (t455 * t452))) + (t422 * s441))
+        let !s458 = ((t418 * (t449 * (t455 * t453))) + (t422 * s442))
+        let !t459 = (s447 + (t417 * s457))
+        let !t460 = (if (if ((abs t459) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t459 + (negate t459)) else t459)
+        let !t461 = (if (if ((abs t460) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t460 + (negate t460)) else t460)
+        let !s462 = ((t418 * (s446 + (t417 * s456))) + (t422 * s446))
+        let !s463 = ((t418 * (if (if ((abs t461) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t461 + (negate t461)) else t461)) + (t422 * s447))
+        let !s464 = ((t418 * (s448 + (t417 * s458))) + (t422 * s448))
+        let !t465 = (sqrt (((s456 * s456) + (s457 * s457)) + (s458 * s458)))
+        let !t466 = (t433 * ((s446 + (t417 * s456)) + (negate s446)))
+        let !t467 = (t433 * ((if (if ((abs t461) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t461 + (negate t461)) else t461) + (negate s447)))
+        let !t468 = (t467 + (negate t467))
+        let !t469 = (t433 * ((s448 + (t417 * s458)) + (negate s448)))
+        let !t470 = (sqrt (((t466 * t466) + (t468 * t468)) + (t469 * t469)))
+        let !t471 = (if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0)
+        let !s472 = ((t418 * (t465 * (t471 * t466))) + (t422 * s456))
+        let !s473 = ((t418 * (t465 * (t471 * t468))) + (t422 * s457))
+        let !s474 = ((t418 * (t465 * (t471 * t469))) + (t422 * s458))
+        let !t475 = (s463 + (t417 * s473))
+        let !t476 = (if (if ((abs t475) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t475 + (negate t475)) else t475)
+        let !t477 = (if (if ((abs t476) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t476 + (negate t476)) else t476)
+        let !s478 = ((t418 * (s462 + (t417 * s472))) + (t422 * s462))
+        let !s479 = ((t418 * (if (if ((abs t477) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t477 + (negate t477)) else t477)) + (t422 * s463))
+        let !s480 = ((t418 * (s464 + (t417 * s474))) + (t422 * s464))
+        let !t481 = (sqrt (((s472 * s472) + (s473 * s473)) + (s474 * s474)))
+        let !t482 = (t433 * ((s462 + (t417 * s472)) + (negate s462)))
+        let !t483 = (t433 * ((if (if ((abs t477) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t477 + (negate t477)) else t477) + (negate s463)))
+        let !t484 = (t483 + (negate t483))
+        let !t485 = (t433 * ((s464 + (t417 * s474)) + (negate s464)))
+        let !t486 = (sqrt (((t482 * t482) + (t484 * t484)) + (t485 * t485)))
+        let !t487 = (if t486 > 0 then (recip (if (t486 - 1.0e-300) > 0 then t486 else 1.0e-300)) else 0.0)
+        let !s488 = ((t418 * (t481 * (t487 * t482))) + (t422 * s472))
+        let !s489 = ((t418 * (t481 * (t487 * t484))) + (t422 * s473))
+        let !s490 = ((t418 * (t481 * (t487 * t485))) + (t422 * s474))
+        t491 <- rdU mouse 4
+        t492 <- rdU mouse 5
+        t493 <- rdU mouse 6
+        let !t494 = (floorF ((t491 + 1.0) / 2.0))
+        let !t495 = (t491 - (t494 * 2.0))
+        let !t496 = (negate s478)
+        let !t497 = (t495 + t496)
+        let !t498 = (t492 + (negate s479))
+        let !t499 = (t498 * t498)
+        let !t500 = ((t497 * t497) + t499)
+        let !t501 = ((1.0 - (2.0 * (t494 - (2.0 * (floorF (0.5 * t494)))))) * (t493 - ((floorF ((t493 + 1.0) / 2.0)) * 2.0)))
+        let !t502 = (negate s480)
+        let !t503 = (t501 + t502)
+        let !t504 = (t500 + (t503 * t503))
+        let !t505 = (t495 + (-2.0))
+        let !t506 = (t505 + t496)
+        let !t507 = ((t506 * t506) + t499)
+        let !t508 = (negate t501)
+        let !t509 = (t508 + (-2.0))
+        let !t510 = (t509 + t502)
+        let !t511 = (t510 * t510)
+        let !t512 = (t507 + t511)
+        let !t513 = (t504 - t512)
+        let !t514 = (if t513 > 0 then t512 else t504)
+        let !t515 = (t508 + t502)
         let !t516 = (t515 * t515)
-        let !t517 = (t512 + t516)
-        let !t518 = (t509 - t517)
-        let !t519 = (if t518 > 0 then t517 else t509)
-        let !t520 = (t513 + t507)
-        let !t521 = (t520 * t520)
-        let !t522 = (t512 + t521)
-        let !t523 = (t519 - t522)
-        let !t524 = (if t523 > 0 then t522 else t519)
-        let !t525 = (t513 + 2.0)
-        let !t526 = (t525 + t507)
-        let !t527 = (t526 * t526)
-        let !t528 = (t512 + t527)
-        let !t529 = (t524 - t528)
-        let !t530 = (if t529 > 0 then t528 else t524)
-        let !t531 = (t506 + (-2.0))
-        let !t532 = (t531 + t507)
-        let !t533 = (t505 + (t532 * t532))
+        let !t517 = (t507 + t516)
+        let !t518 = (t514 - t517)
+        let !t519 = (if t518 > 0 then t517 else t514)
+        let !t520 = (t508 + 2.0)
+        let !t521 = (t520 + t502)
+        let !t522 = (t521 * t521)
+        let !t523 = (t507 + t522)
+        let !t524 = (t519 - t523)
+        let !t525 = (if t524 > 0 then t523 else t519)
+        let !t526 = (t501 + (-2.0))
+        let !t527 = (t526 + t502)
+        let !t528 = (t500 + (t527 * t527))
+        let !t529 = (t525 - t528)
+        let !t530 = (if t529 > 0 then t528 else t525)
+        let !t531 = (t501 + 2.0)
+        let !t532 = (t531 + t502)
+        let !t533 = (t500 + (t532 * t532))
         let !t534 = (t530 - t533)
         let !t535 = (if t534 > 0 then t533 else t530)
-        let !t536 = (t506 + 2.0)
-        let !t537 = (t536 + t507)
-        let !t538 = (t505 + (t537 * t537))
-        let !t539 = (t535 - t538)
-        let !t540 = (if t539 > 0 then t538 else t535)
-        let !t541 = (t500 + 2.0)
-        let !t542 = (t541 + t501)
-        let !t543 = ((t542 * t542) + t504)
-        let !t544 = (t543 + t516)
-        let !t545 = (t540 - t544)
-        let !t546 = (if t545 > 0 then t544 else t540)
-        let !t547 = (t543 + t521)
-        let !t548 = (t546 - t547)
-        let !t549 = ((if t548 > 0 then t547 else t546) - (t543 + t527))
-        let !s550 = (if t549 > 0 then t541 else (if t548 > 0 then t541 else (if t545 > 0 then t541 else (if t539 > 0 then t500 else (if t534 > 0 then t500 else (if t529 > 0 then t510 else (if t523 > 0 then t510 else (if t518 > 0 then t510 else t500))))))))
-        let !s551 = (if t549 > 0 then t525 else (if t548 > 0 then t513 else (if t545 > 0 then t514 else (if t539 > 0 then t536 else (if t534 > 0 then t531 else (if t529 > 0 then t525 else (if t523 > 0 then t513 else (if t518 > 0 then t514 else t506))))))))
-        t552 <- rdU mouse 7
-        t553 <- rdU mouse 8
-        t554 <- rdU mouse 9
-        let !t555 = (recip t385)
-        let !t556 = (6.283185307179586 * t552)
-        let !s557 = (recip (t387 * ((((2.0 * t555) * t553) * t556) + (t387 * ((t555 * t556) * t556)))))
-        let !s558 = ((t387 * ((t555 * t556) * t556)) * s557)
-        let !s559 = (s483 + (negate t388))
-        let !s560 = (s484 + (negate t389))
-        let !s561 = (s485 + (negate t390))
-        let !s562 = (s483 + (negate s550))
-        let !s563 = (s484 + (negate t497))
-        let !s564 = (s485 + (negate s551))
-        t565 <- rdU mouse 10
-        chkI vel (3 * (truncate t384)) 0 2
-        t566 <- rdU vel (3 * (truncate t384))
-        t567 <- rdU vel ((3 * (truncate t384)) + 1)
-        t568 <- rdU vel ((3 * (truncate t384)) + 2)
-        t569 <- rdU scalars ((6 * (truncate t384)) + 1)
-        let !t570 = (t554 * t387)
-        let !t571 = (negate t570)
-        let !t572 = (((((s560 * t396) - (s561 * t395)) * t391) + (((s561 * t394) - (s559 * t396)) * t392)) + (((s559 * t395) - (s560 * t394)) * t393))
-        let !t573 = (t565 + ((negate ((((((t394 * t566) + (t395 * t567)) + (t396 * t568)) + (t572 * t569)) + (s558 * (((s562 * t394) + (s563 * t395)) + (s564 * t396)))) + (s557 * t565))) / (((t385 * (((t394 * t394) + (t395 * t395)) + (t396 * t396))) + ((t386 * t572) * t572)) + s557)))
-        let !t574 = (if (t573 - t570) > 0 then t570 else t573)
-        let !t575 = (if (t571 - t574) > 0 then t571 else t574)
-        let !s576 = (if (1.0 - (abs (t575 - t575))) > 0 then t575 else 0.0)
-        wrU mouse 10 s576
-        t577 <- rdU scalars ((6 * (truncate t384)) + 2)
-        t578 <- rdU scalars ((6 * (truncate t384)) + 3)
-        t579 <- rdU vel (3 * (truncate t384))
-        t580 <- rdU vel ((3 * (truncate t384)) + 1)
-        t581 <- rdU vel ((3 * (truncate t384)) + 2)
-        t582 <- rdU scalars ((6 * (truncate t384)) + 1)
-        wrU vel (3 * (truncate t384)) (t579 + ((t577 * (s576 - t565)) * t394))
-        wrU vel ((3 * (truncate t384)) + 1) (t580 + ((t577 * (s576 - t565)) * t395))
-        wrU vel ((3 * (truncate t384)) + 2) (t581 + ((t577 * (s576 - t565)) * t396))
-        wrU scalars ((6 * (truncate t384)) + 1) (t582 + ((t578 * (s576 - t565)) * t572))
-        t583 <- rdU mouse 11
-        t584 <- rdU vel (3 * (truncate t384))
-        t585 <- rdU vel ((3 * (truncate t384)) + 1)
-        t586 <- rdU vel ((3 * (truncate t384)) + 2)
-        t587 <- rdU scalars ((6 * (truncate t384)) + 1)
-        let !t588 = (((((s560 * s399) - (s561 * s398)) * t391) + (((s561 * s397) - (s559 * s399)) * t392)) + (((s559 * s398) - (s560 * s397)) * t393))
-        let !t589 = (t583 + ((negate ((((((s397 * t584) + (s398 * t585)) + (s399 * t586)) + (t588 * t587)) + (s558 * (((s562 * s397) + (s563 * s398)) + (s564 * s399)))) + (s557 * t583))) / (((t385 * (((s397 * s397) + (s398 * s398)) + (s399 * s399))) + ((t386 * t588) * t588)) + s557)))
-        let !t590 = (if (t589 - t570) > 0 then t570 else t589)
-        let !t591 = (if (t571 - t590) > 0 then t571 else t590)
-        let !s592 = (if (1.0 - (abs (t591 - t591))) > 0 then t591 else 0.0)
-        wrU mouse 11 s592
-        t593 <- rdU scalars ((6 * (truncate t384)) + 2)
-        t594 <- rdU scalars ((6 * (truncate t384)) + 3)
-        t595 <- rdU vel (3 * (truncate t384))
-        t596 <- rdU vel ((3 * (truncate t384)) + 1)
-        t597 <- rdU vel ((3 * (truncate t384)) + 2)
-        t598 <- rdU scalars ((6 * (truncate t384)) + 1)
-        wrU vel (3 * (truncate t384)) (t595 + ((t593 * (s592 - t583)) * s397))
-        wrU vel ((3 * (truncate t384)) + 1) (t596 + ((t593 * (s592 - t583)) * s398))
-        wrU vel ((3 * (truncate t384)) + 2) (t597 + ((t593 * (s592 - t583)) * s399))
-        wrU scalars ((6 * (truncate t384)) + 1) (t598 + ((t594 * (s592 - t583)) * t588))
+        let !t536 = (t495 + 2.0)
+        let !t537 = (t536 + t496)
+        let !t538 = ((t537 * t537) + t499)
+        let !t539 = (t538 + t511)
+        let !t540 = (t535 - t539)
+        let !t541 = (if t540 > 0 then t539 else t535)
+        let !t542 = (t538 + t516)
+        let !t543 = (t541 - t542)
+        let !t544 = ((if t543 > 0 then t542 else t541) - (t538 + t522))
+        let !s545 = (if t544 > 0 then t536 else (if t543 > 0 then t536 else (if t540 > 0 then t536 else (if t534 > 0 then t495 else (if t529 > 0 then t495 else (if t524 > 0 then t505 else (if t518 > 0 then t505 else (if t513 > 0 then t505 else t495))))))))
+        let !s546 = (if t544 > 0 then t520 else (if t543 > 0 then t508 else (if t540 > 0 then t509 else (if t534 > 0 then t531 else (if t529 > 0 then t526 else (if t524 > 0 then t520 else (if t518 > 0 then t508 else (if t513 > 0 then t509 else t501))))))))
+        t547 <- rdU mouse 7
+        t548 <- rdU mouse 8
+        t549 <- rdU mouse 9
+        let !t550 = (recip t380)
+        let !t551 = (6.283185307179586 * t547)
+        let !s552 = (recip (t382 * ((((2.0 * t550) * t548) * t551) + (t382 * ((t550 * t551) * t551)))))
+        let !s553 = ((t382 * ((t550 * t551) * t551)) * s552)
+        let !s554 = (s478 + (negate t383))
+        let !s555 = (s479 + (negate t384))
+        let !s556 = (s480 + (negate t385))
+        let !s557 = (s478 + (negate s545))
+        let !s558 = (s479 + (negate t492))
+        let !s559 = (s480 + (negate s546))
+        t560 <- rdU mouse 10
+        chkI vel (3 * (truncate t379)) 0 2
+        t561 <- rdU vel (3 * (truncate t379))
+        t562 <- rdU vel ((3 * (truncate t379)) + 1)
+        t563 <- rdU vel ((3 * (truncate t379)) + 2)
+        t564 <- rdU scalars ((6 * (truncate t379)) + 1)
+        let !t565 = (t549 * t382)
+        let !t566 = (negate t565)
+        let !t567 = (((((s555 * t391) - (s556 * t390)) * t386) + (((s556 * t389) - (s554 * t391)) * t387)) + (((s554 * t390) - (s555 * t389)) * t388))
+        let !t568 = (t560 + ((negate ((((((t389 * t561) + (t390 * t562)) + (t391 * t563)) + (t567 * t564)) + (s553 * (((s557 * t389) + (s558 * t390)) + (s559 * t391)))) + (s552 * t560))) / (((t380 * (((t389 * t389) + (t390 * t390)) + (t391 * t391))) + ((t381 * t567) * t567)) + s552)))
+        let !t569 = (if (t568 - t565) > 0 then t565 else t568)
+        let !t570 = (if (t566 - t569) > 0 then t566 else t569)
+        let !s571 = (if (1.0 - (abs (t570 - t570))) > 0 then t570 else 0.0)
+        wrU mouse 10 s571
+        t572 <- rdU scalars ((6 * (truncate t379)) + 2)
+        t573 <- rdU scalars ((6 * (truncate t379)) + 3)
+        t574 <- rdU vel (3 * (truncate t379))
+        t575 <- rdU vel ((3 * (truncate t379)) + 1)
+        t576 <- rdU vel ((3 * (truncate t379)) + 2)
+        t577 <- rdU scalars ((6 * (truncate t379)) + 1)
+        wrU vel (3 * (truncate t379)) (t574 + ((t572 * (s571 - t560)) * t389))
+        wrU vel ((3 * (truncate t379)) + 1) (t575 + ((t572 * (s571 - t560)) * t390))
+        wrU vel ((3 * (truncate t379)) + 2) (t576 + ((t572 * (s571 - t560)) * t391))
+        wrU scalars ((6 * (truncate t379)) + 1) (t577 + ((t573 * (s571 - t560)) * t567))
+        t578 <- rdU mouse 11
+        t579 <- rdU vel (3 * (truncate t379))
+        t580 <- rdU vel ((3 * (truncate t379)) + 1)
+        t581 <- rdU vel ((3 * (truncate t379)) + 2)
+        t582 <- rdU scalars ((6 * (truncate t379)) + 1)
+        let !t583 = (((((s555 * s394) - (s556 * s393)) * t386) + (((s556 * s392) - (s554 * s394)) * t387)) + (((s554 * s393) - (s555 * s392)) * t388))
+        let !t584 = (t578 + ((negate ((((((s392 * t579) + (s393 * t580)) + (s394 * t581)) + (t583 * t582)) + (s553 * (((s557 * s392) + (s558 * s393)) + (s559 * s394)))) + (s552 * t578))) / (((t380 * (((s392 * s392) + (s393 * s393)) + (s394 * s394))) + ((t381 * t583) * t583)) + s552)))
+        let !t585 = (if (t584 - t565) > 0 then t565 else t584)
+        let !t586 = (if (t566 - t585) > 0 then t566 else t585)
+        let !s587 = (if (1.0 - (abs (t586 - t586))) > 0 then t586 else 0.0)
+        wrU mouse 11 s587
+        t588 <- rdU scalars ((6 * (truncate t379)) + 2)
+        t589 <- rdU scalars ((6 * (truncate t379)) + 3)
+        t590 <- rdU vel (3 * (truncate t379))
+        t591 <- rdU vel ((3 * (truncate t379)) + 1)
+        t592 <- rdU vel ((3 * (truncate t379)) + 2)
+        t593 <- rdU scalars ((6 * (truncate t379)) + 1)
+        wrU vel (3 * (truncate t379)) (t590 + ((t588 * (s587 - t578)) * s392))
+        wrU vel ((3 * (truncate t379)) + 1) (t591 + ((t588 * (s587 - t578)) * s393))
+        wrU vel ((3 * (truncate t379)) + 2) (t592 + ((t588 * (s587 - t578)) * s394))
+        wrU scalars ((6 * (truncate t379)) + 1) (t593 + ((t589 * (s587 - t578)) * t583))
         pure ()
       else do
         pure ()
@@ -1824,38 +1826,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t599 <- rdU meta 0
-  loopI 0.0 t599 $ \i600 -> do
-    let !d600 = fromIntegral i600 :: Double
-    chkI bodyPrev (2 * i600) 1 1
-    wrU bodyPrev ((2 * i600) + 1) 0.0
+  t594 <- rdU meta 0
+  loopI 0.0 t594 $ \i595 -> do
+    let !d595 = fromIntegral i595 :: Double
+    chkI bodyPrev (2 * i595) 1 1
+    wrU bodyPrev ((2 * i595) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i601 -> do
-    let !d601 = fromIntegral i601 :: Double
-    chkI contacts (30 * i601) 2 25
-    t602 <- rdU contacts ((30 * i601) + 2)
-    chkI prev (4 * i601) 0 3
-    wrU prev (4 * i601) t602
-    t603 <- rdU contacts ((30 * i601) + 3)
-    wrU prev ((4 * i601) + 1) t603
-    t604 <- rdU contacts ((30 * i601) + 24)
-    wrU prev ((4 * i601) + 2) t604
-    t605 <- rdU contacts ((30 * i601) + 25)
-    wrU prev ((4 * i601) + 3) t605
-    chkI bodyPrev (2 * (truncate t602)) 1 1
-    t606 <- rdU bodyPrev ((2 * (truncate t602)) + 1)
-    if (0.5 - t606) > 0 then do
-      chkI bodyPrev (2 * (truncate t602)) 0 0
-      wrU bodyPrev (2 * (truncate t602)) d601
+  loopI 0.0 t9 $ \i596 -> do
+    let !d596 = fromIntegral i596 :: Double
+    chkI contacts (30 * i596) 2 25
+    t597 <- rdU contacts ((30 * i596) + 2)
+    chkI prev (4 * i596) 0 3
+    wrU prev (4 * i596) t597
+    t598 <- rdU contacts ((30 * i596) + 3)
+    wrU prev ((4 * i596) + 1) t598
+    t599 <- rdU contacts ((30 * i596) + 24)
+    wrU prev ((4 * i596) + 2) t599
+    t600 <- rdU contacts ((30 * i596) + 25)
+    wrU prev ((4 * i596) + 3) t600
+    chkI bodyPrev (2 * (truncate t597)) 1 1
+    t601 <- rdU bodyPrev ((2 * (truncate t597)) + 1)
+    if (0.5 - t601) > 0 then do
+      chkI bodyPrev (2 * (truncate t597)) 0 0
+      wrU bodyPrev (2 * (truncate t597)) d596
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t602)) + 1) (t606 + 1.0)
+    wrU bodyPrev ((2 * (truncate t597)) + 1) (t601 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1991,8 +1993,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -2022,286 +2025,286 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 0 8
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
-        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
-        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
-        let !t44 = (1.0 - t35)
-        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
-        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
-        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
-        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
-        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
-        chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
-        wrU walk (12 * i26) s47
-        wrU walk ((12 * i26) + 1) s48
-        wrU walk ((12 * i26) + 2) s49
-        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
-        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
-        let !t54 = (t53 + (negate t53))
-        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
-        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
-        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
-        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
-        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
-        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
-        wrU walk ((12 * i26) + 3) s58
-        wrU walk ((12 * i26) + 4) s59
-        wrU walk ((12 * i26) + 5) s60
-        let !s61 = (t44 * t8)
-        let !s62 = (t35 + (t44 * t9))
-        let !s63 = (t44 * t10)
-        wrU walk ((12 * i26) + 6) s61
-        wrU walk ((12 * i26) + 7) s62
-        wrU walk ((12 * i26) + 8) s63
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 0 8
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (if (abs s26) > 0 then 1.0 else 0.0)
+        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t35 = (if ((abs s31) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t36 = (if t35 > 0 then (s31 + (negate ((s31 / t9) * t9))) else s31)
+        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t40 = (if t35 > 0 then (s30 + (negate ((s31 / t9) * t8))) else s30)
+        let !t41 = (if t37 > 0 then (t40 + (negate ((t36 / t9) * t8))) else t40)
+        let !t42 = (1.0 - t33)
+        let !t43 = (if t35 > 0 then (s32 + (negate ((s31 / t9) * t10))) else s32)
+        let !t44 = (if t37 > 0 then (t43 + (negate ((t36 / t9) * t10))) else t43)
+        let !s45 = ((t33 * (if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41)) + (t42 * t2))
+        let !s46 = ((t33 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t42 * t3))
+        let !s47 = ((t33 * (if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44)) + (t42 * t4))
+        chkI verts ((291 * i1) + (12 * i24)) 3 5
+        wrU verts (((291 * i1) + (12 * i24)) + 3) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s45 else t2)
+        wrU verts (((291 * i1) + (12 * i24)) + 4) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s46 else t3)
+        wrU verts (((291 * i1) + (12 * i24)) + 5) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s47 else t4)
+        wrU walk (12 * i24) s45
+        wrU walk ((12 * i24) + 1) s46
+        wrU walk ((12 * i24) + 2) s47
+        let !t48 = (sqrt (((t27 * t27) + (t28 * t28)) + (t29 * t29)))
+        let !t49 = (if (abs s26) > 0 then (recip s26) else 0.0)
+        let !t50 = (t49 * ((if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41) + (negate t2)))
+        let !t51 = (t49 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
+        let !t52 = (t51 + (negate t51))
+        let !t53 = (t49 * ((if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44) + (negate t4)))
+        let !t54 = (sqrt (((t50 * t50) + (t52 * t52)) + (t53 * t53)))
+        let !t55 = (if t54 > 0 then (recip (if (t54 - 1.0e-300) > 0 then t54 else 1.0e-300)) else 0.0)
+        let !s56 = ((t33 * (t48 * (t55 * t50))) + (t42 * t27))
+        let !s57 = ((t33 * (t48 * (t55 * t52))) + (t42 * t28))
+        let !s58 = ((t33 * (t48 * (t55 * t53))) + (t42 * t29))
+        wrU walk ((12 * i24) + 3) s56
+        wrU walk ((12 * i24) + 4) s57
+        wrU walk ((12 * i24) + 5) s58
+        let !s59 = (t42 * t8)
+        let !s60 = (t33 + (t42 * t9))
+        let !s61 = (t42 * t10)
+        wrU walk ((12 * i24) + 6) s59
+        wrU walk ((12 * i24) + 7) s60
+        wrU walk ((12 * i24) + 8) s61
         pure ()
-      loopI 0.0 24.0 $ \i64 -> do
-        let !d64 = fromIntegral i64 :: Double
-        chkI radii ((24 * i1) + i64) 0 0
-        t65 <- rdU radii ((24 * i1) + i64)
-        let !s66 = (t65 / 4.0)
-        chkI walk (12 * i64) 0 8
-        t67 <- rdU walk (12 * i64)
-        t68 <- rdU walk ((12 * i64) + 1)
-        t69 <- rdU walk ((12 * i64) + 2)
-        t70 <- rdU walk ((12 * i64) + 6)
-        t71 <- rdU walk ((12 * i64) + 7)
-        t72 <- rdU walk ((12 * i64) + 8)
-        t73 <- rdU walk ((12 * i64) + 3)
-        t74 <- rdU walk ((12 * i64) + 4)
-        t75 <- rdU walk ((12 * i64) + 5)
-        let !s76 = (t67 + (s66 * t73))
-        let !s77 = (t68 + (s66 * t74))
-        let !s78 = (t69 + (s66 * t75))
-        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
-        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
-        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
-        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
-        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
-        let !t88 = (1.0 - t79)
-        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
-        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
-        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
-        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
-        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
-        chkI verts ((291 * i1) + (12 * i64)) 6 8
-        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
-        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
-        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
-        wrU walk (12 * i64) s91
-        wrU walk ((12 * i64) + 1) s92
-        wrU walk ((12 * i64) + 2) s93
-        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
-        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
-        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
-        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
-        let !t98 = (t97 + (negate t97))
-        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
-        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
-        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
-        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
-        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
-        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
-        wrU walk ((12 * i64) + 3) s102
-        wrU walk ((12 * i64) + 4) s103
-        wrU walk ((12 * i64) + 5) s104
-        let !s105 = (t88 * t70)
-        let !s106 = (t79 + (t88 * t71))
-        let !s107 = (t88 * t72)
-        wrU walk ((12 * i64) + 6) s105
-        wrU walk ((12 * i64) + 7) s106
-        wrU walk ((12 * i64) + 8) s107
+      loopI 0.0 24.0 $ \i62 -> do
+        let !d62 = fromIntegral i62 :: Double
+        chkI radii ((24 * i1) + i62) 0 0
+        t63 <- rdU radii ((24 * i1) + i62)
+        let !s64 = (t63 / 4.0)
+        chkI walk (12 * i62) 0 8
+        t65 <- rdU walk (12 * i62)
+        t66 <- rdU walk ((12 * i62) + 1)
+        t67 <- rdU walk ((12 * i62) + 2)
+        t68 <- rdU walk ((12 * i62) + 6)
+        t69 <- rdU walk ((12 * i62) + 7)
+        t70 <- rdU walk ((12 * i62) + 8)
+        t71 <- rdU walk ((12 * i62) + 3)
+        t72 <- rdU walk ((12 * i62) + 4)
+        t73 <- rdU walk ((12 * i62) + 5)
+        let !s74 = (t65 + (s64 * t71))
+        let !s75 = (t66 + (s64 * t72))
+        let !s76 = (t67 + (s64 * t73))
+        let !t77 = (if (abs s64) > 0 then 1.0 else 0.0)
+        let !t78 = (if (abs t69) > 0 then 1.0 else 0.0)
+        let !t79 = (if ((abs s75) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t80 = (if t79 > 0 then (s75 + (negate ((s75 / t69) * t69))) else s75)
+        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t69) * t69))) else t80)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t84 = (if t79 > 0 then (s74 + (negate ((s75 / t69) * t68))) else s74)
+        let !t85 = (if t81 > 0 then (t84 + (negate ((t80 / t69) * t68))) else t84)
+        let !t86 = (1.0 - t77)
+        let !t87 = (if t79 > 0 then (s76 + (negate ((s75 / t69) * t70))) else s76)
+        let !t88 = (if t81 > 0 then (t87 + (negate ((t80 / t69) * t70))) else t87)
+        let !s89 = ((t77 * (if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85)) + (t86 * t65))
+        let !s90 = ((t77 * (if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82)) + (t86 * t66))
+        let !s91 = ((t77 * (if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88)) + (t86 * t67))
+        chkI verts ((291 * i1) + (12 * i62)) 6 8
+        wrU verts (((291 * i1) + (12 * i62)) + 6) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s89 else t2)
+        wrU verts (((291 * i1) + (12 * i62)) + 7) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s90 else t3)
+        wrU verts (((291 * i1) + (12 * i62)) + 8) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s91 else t4)
+        wrU walk (12 * i62) s89
+        wrU walk ((12 * i62) + 1) s90
+        wrU walk ((12 * i62) + 2) s91
+        let !t92 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
+        let !t93 = (if (abs s64) > 0 then (recip s64) else 0.0)
+        let !t94 = (t93 * ((if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85) + (negate t65)))
+        let !t95 = (t93 * ((if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82) + (negate t66)))
+        let !t96 = (t95 + (negate t95))
+        let !t97 = (t93 * ((if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88) + (negate t67)))
+        let !t98 = (sqrt (((t94 * t94) + (t96 * t96)) + (t97 * t97)))
+        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
+        let !s100 = ((t77 * (t92 * (t99 * t94))) + (t86 * t71))
+        let !s101 = ((t77 * (t92 * (t99 * t96))) + (t86 * t72))
+        let !s102 = ((t77 * (t92 * (t99 * t97))) + (t86 * t73))
+        wrU walk ((12 * i62) + 3) s100
+        wrU walk ((12 * i62) + 4) s101
+        wrU walk ((12 * i62) + 5) s102
+        let !s103 = (t86 * t68)
+        let !s104 = (t77 + (t86 * t69))
+        let !s105 = (t86 * t70)
+        wrU walk ((12 * i62) + 6) s103
+        wrU walk ((12 * i62) + 7) s104
+        wrU walk ((12 * i62) + 8) s105
         pure ()
-      loopI 0.0 24.0 $ \i108 -> do
-        let !d108 = fromIntegral i108 :: Double
-        chkI radii ((24 * i1) + i108) 0 0
-        t109 <- rdU radii ((24 * i1) + i108)
-        let !s110 = (t109 / 4.0)
-        chkI walk (12 * i108) 0 8
-        t111 <- rdU walk (12 * i108)
-        t112 <- rdU walk ((12 * i108) + 1)
-        t113 <- rdU walk ((12 * i108) + 2)
-        t114 <- rdU walk ((12 * i108) + 6)
-        t115 <- rdU walk ((12 * i108) + 7)
-        t116 <- rdU walk ((12 * i108) + 8)
-        t117 <- rdU walk ((12 * i108) + 3)
-        t118 <- rdU walk ((12 * i108) + 4)
-        t119 <- rdU walk ((12 * i108) + 5)
-        let !s120 = (t111 + (s110 * t117))
-        let !s121 = (t112 + (s110 * t118))
-        let !s122 = (t113 + (s110 * t119))
-        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
-        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
-        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
-        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
-        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
-        let !t132 = (1.0 - t123)
-        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
-        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
-        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
-        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
-        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
-        chkI verts ((291 * i1) + (12 * i108)) 9 11
-        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
-        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
-        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
-        wrU walk (12 * i108) s135
-        wrU walk ((12 * i108) + 1) s136
-        wrU walk ((12 * i108) + 2) s137
-        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
-        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
-        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
-        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
-        let !t142 = (t141 + (negate t141))
-        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
-        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
-        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
-        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
-        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
-        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
-        wrU walk ((12 * i108) + 3) s146
-        wrU walk ((12 * i108) + 4) s147
-        wrU walk ((12 * i108) + 5) s148
-        let !s149 = (t132 * t114)
-        let !s150 = (t123 + (t132 * t115))
-        let !s151 = (t132 * t116)
-        wrU walk ((12 * i108) + 6) s149
-        wrU walk ((12 * i108) + 7) s150
-        wrU walk ((12 * i108) + 8) s151
+      loopI 0.0 24.0 $ \i106 -> do
+        let !d106 = fromIntegral i106 :: Double
+        chkI radii ((24 * i1) + i106) 0 0
+        t107 <- rdU radii ((24 * i1) + i106)
+        let !s108 = (t107 / 4.0)
+        chkI walk (12 * i106) 0 8
+        t109 <- rdU walk (12 * i106)
+        t110 <- rdU walk ((12 * i106) + 1)
+        t111 <- rdU walk ((12 * i106) + 2)
+        t112 <- rdU walk ((12 * i106) + 6)
+        t113 <- rdU walk ((12 * i106) + 7)
+        t114 <- rdU walk ((12 * i106) + 8)
+        t115 <- rdU walk ((12 * i106) + 3)
+        t116 <- rdU walk ((12 * i106) + 4)
+        t117 <- rdU walk ((12 * i106) + 5)
+        let !s118 = (t109 + (s108 * t115))
+        let !s119 = (t110 + (s108 * t116))
+        let !s120 = (t111 + (s108 * t117))
+        let !t121 = (if (abs s108) > 0 then 1.0 else 0.0)
+        let !t122 = (if (abs t113) > 0 then 1.0 else 0.0)
+        let !t123 = (if ((abs s119) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t124 = (if t123 > 0 then (s119 + (negate ((s119 / t113) * t113))) else s119)
+        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t113) * t113))) else t124)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t128 = (if t123 > 0 then (s118 + (negate ((s119 / t113) * t112))) else s118)
+        let !t129 = (if t125 > 0 then (t128 + (negate ((t124 / t113) * t112))) else t128)
+        let !t130 = (1.0 - t121)
+        let !t131 = (if t123 > 0 then (s120 + (negate ((s119 / t113) * t114))) else s120)
+        let !t132 = (if t125 > 0 then (t131 + (negate ((t124 / t113) * t114))) else t131)
+        let !s133 = ((t121 * (if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129)) + (t130 * t109))
+        let !s134 = ((t121 * (if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126)) + (t130 * t110))
+        let !s135 = ((t121 * (if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132)) + (t130 * t111))
+        chkI verts ((291 * i1) + (12 * i106)) 9 11
+        wrU verts (((291 * i1) + (12 * i106)) + 9) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s133 else t2)
+        wrU verts (((291 * i1) + (12 * i106)) + 10) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s134 else t3)
+        wrU verts (((291 * i1) + (12 * i106)) + 11) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s135 else t4)
+        wrU walk (12 * i106) s133
+        wrU walk ((12 * i106) + 1) s134
+        wrU walk ((12 * i106) + 2) s135
+        let !t136 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
+        let !t137 = (if (abs s108) > 0 then (recip s108) else 0.0)
+        let !t138 = (t137 * ((if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129) + (negate t109)))
+        let !t139 = (t137 * ((if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126) + (negate t110)))
+        let !t140 = (t139 + (negate t139))
+        let !t141 = (t137 * ((if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132) + (negate t111)))
+        let !t142 = (sqrt (((t138 * t138) + (t140 * t140)) + (t141 * t141)))
+        let !t143 = (if t142 > 0 then (recip (if (t142 - 1.0e-300) > 0 then t142 else 1.0e-300)) else 0.0)
+        let !s144 = ((t121 * (t136 * (t143 * t138))) + (t130 * t115))
+        let !s145 = ((t121 * (t136 * (t143 * t140))) + (t130 * t116))
+        let !s146 = ((t121 * (t136 * (t143 * t141))) + (t130 * t117))
+        wrU walk ((12 * i106) + 3) s144
+        wrU walk ((12 * i106) + 4) s145
+        wrU walk ((12 * i106) + 5) s146
+        let !s147 = (t130 * t112)
+        let !s148 = (t121 + (t130 * t113))
+        let !s149 = (t130 * t114)
+        wrU walk ((12 * i106) + 6) s147
+        wrU walk ((12 * i106) + 7) s148
+        wrU walk ((12 * i106) + 8) s149
         pure ()
-      loopI 0.0 24.0 $ \i152 -> do
-        let !d152 = fromIntegral i152 :: Double
-        chkI radii ((24 * i1) + i152) 0 0
-        t153 <- rdU radii ((24 * i1) + i152)
-        let !s154 = (t153 / 4.0)
-        chkI walk (12 * i152) 0 8
-        t155 <- rdU walk (12 * i152)
-        t156 <- rdU walk ((12 * i152) + 1)
-        t157 <- rdU walk ((12 * i152) + 2)
-        t158 <- rdU walk ((12 * i152) + 6)
-        t159 <- rdU walk ((12 * i152) + 7)
-        t160 <- rdU walk ((12 * i152) + 8)
-        t161 <- rdU walk ((12 * i152) + 3)
-        t162 <- rdU walk ((12 * i152) + 4)
-        t163 <- rdU walk ((12 * i152) + 5)
-        let !s164 = (t155 + (s154 * t161))
-        let !s165 = (t156 + (s154 * t162))
-        let !s166 = (t157 + (s154 * t163))
-        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
-        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
-        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
-        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
-        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
-        let !t176 = (1.0 - t167)
-        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
-        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
-        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
-        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
-        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
-        chkI verts ((291 * i1) + (12 * i152)) 12 14
-        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
-        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
-        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
+      loopI 0.0 24.0 $ \i150 -> do
+        let !d150 = fromIntegral i150 :: Double
+        chkI radii ((24 * i1) + i150) 0 0
+        t151 <- rdU radii ((24 * i1) + i150)
+        let !s152 = (t151 / 4.0)
+        chkI walk (12 * i150) 0 8
+        t153 <- rdU walk (12 * i150)
+        t154 <- rdU walk ((12 * i150) + 1)
+        t155 <- rdU walk ((12 * i150) + 2)
+        t156 <- rdU walk ((12 * i150) + 6)
+        t157 <- rdU walk ((12 * i150) + 7)
+        t158 <- rdU walk ((12 * i150) + 8)
+        t159 <- rdU walk ((12 * i150) + 3)
+        t160 <- rdU walk ((12 * i150) + 4)
+        t161 <- rdU walk ((12 * i150) + 5)
+        let !s162 = (t153 + (s152 * t159))
+        let !s163 = (t154 + (s152 * t160))
+        let !s164 = (t155 + (s152 * t161))
+        let !t165 = (if (abs s152) > 0 then 1.0 else 0.0)
+        let !t166 = (if (abs t157) > 0 then 1.0 else 0.0)
+        let !t167 = (if ((abs s163) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t168 = (if t167 > 0 then (s163 + (negate ((s163 / t157) * t157))) else s163)
+        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t157) * t157))) else t168)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t172 = (if t167 > 0 then (s162 + (negate ((s163 / t157) * t156))) else s162)
+        let !t173 = (if t169 > 0 then (t172 + (negate ((t168 / t157) * t156))) else t172)
+        let !t174 = (1.0 - t165)
+        let !t175 = (if t167 > 0 then (s164 + (negate ((s163 / t157) * t158))) else s164)
+        let !t176 = (if t169 > 0 then (t175 + (negate ((t168 / t157) * t158))) else t175)
+        let !s177 = ((t165 * (if t171 > 0 then (t173 + (negate ((t170 / t157) * t156))) else t173)) + (t174 * t153))
+        let !s178 = ((t165 * (if t171 > 0 then (t170 + (negate ((t170 / t157) * t157))) else t170)) + (t174 * t154))
+        let !s179 = ((t165 * (if t171 > 0 then (t176 + (negate ((t170 / t157) * t158))) else t176)) + (t174 * t155))
+        chkI verts ((291 * i1) + (12 * i150)) 12 14
+        wrU verts (((291 * i1) + (12 * i150)) + 12) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s177 else t2)
+        wrU verts (((291 * i1) + (12 * i150)) + 13) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s178 else t3)
+        wrU verts (((291 * i1) + (12 * i150)) + 14) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s179 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i182 -> do
-        let !d182 = fromIntegral i182 :: Double
-        chkI radii ((24 * i1) + i182) 0 0
-        t183 <- rdU radii ((24 * i1) + i182)
-        t184 <- getR v18
-        t185 <- getR v19
-        setR v18 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
-        setR v19 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
-        let !s186 = ((t184 * t5) + (t185 * s14))
-        let !s187 = ((t184 * t6) + (t185 * s15))
-        let !s188 = ((t184 * t7) + (t185 * s16))
-        let !s189 = (t2 + (t183 * s186))
-        let !s190 = (t3 + (t183 * s187))
-        let !s191 = (t4 + (t183 * s188))
-        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
-        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
-        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
-        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
-        let !t201 = (1.0 - t192)
-        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
-        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
-        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
-        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
-        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
-        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
-        let !s208 = (if t207 > 0 then s204 else t2)
-        let !s209 = (if t207 > 0 then s205 else t3)
-        let !s210 = (if t207 > 0 then s206 else t4)
-        chkI verts ((291 * i1) + (12 * i182)) 3 14
-        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
-        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
-        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
-        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
+      loopI 0.0 24.0 $ \i180 -> do
+        let !d180 = fromIntegral i180 :: Double
+        chkI radii ((24 * i1) + i180) 0 0
+        t181 <- rdU radii ((24 * i1) + i180)
+        t182 <- rdU locals 0
+        t183 <- rdU locals 1
+        wrU locals 0 ((t182 * 0.9659258262890683) - (t183 * 0.25881904510252074))
+        wrU locals 1 ((t183 * 0.9659258262890683) + (t182 * 0.25881904510252074))
+        let !s184 = ((t182 * t5) + (t183 * s14))
+        let !s185 = ((t182 * t6) + (t183 * s15))
+        let !s186 = ((t182 * t7) + (t183 * s16))
+        let !s187 = (t2 + (t181 * s184))
+        let !s188 = (t3 + (t181 * s185))
+        let !s189 = (t4 + (t181 * s186))
+        let !t190 = (if (abs t181) > 0 then 1.0 else 0.0)
+        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t192 = (if ((abs s188) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t193 = (if t192 > 0 then (s188 + (negate ((s188 / t9) * t9))) else s188)
+        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t197 = (if t192 > 0 then (s187 + (negate ((s188 / t9) * t8))) else s187)
+        let !t198 = (if t194 > 0 then (t197 + (negate ((t193 / t9) * t8))) else t197)
+        let !t199 = (1.0 - t190)
+        let !t200 = (if t192 > 0 then (s189 + (negate ((s188 / t9) * t10))) else s189)
+        let !t201 = (if t194 > 0 then (t200 + (negate ((t193 / t9) * t10))) else t200)
+        let !s202 = ((t190 * (if t196 > 0 then (t198 + (negate ((t195 / t9) * t8))) else t198)) + (t199 * t2))
+        let !s203 = ((t190 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t199 * t3))
+        let !s204 = ((t190 * (if t196 > 0 then (t201 + (negate ((t195 / t9) * t10))) else t201)) + (t199 * t4))
+        let !t205 = (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204))))
+        let !s206 = (if t205 > 0 then s202 else t2)
+        let !s207 = (if t205 > 0 then s203 else t3)
+        let !s208 = (if t205 > 0 then s204 else t4)
+        chkI verts ((291 * i1) + (12 * i180)) 3 14
+        wrU verts (((291 * i1) + (12 * i180)) + 12) s206
+        wrU verts (((291 * i1) + (12 * i180)) + 13) s207
+        wrU verts (((291 * i1) + (12 * i180)) + 14) s208
+        wrU verts (((291 * i1) + (12 * i180)) + 3) (t2 + (0.25 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 4) (t3 + (0.25 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 5) (t4 + (0.25 * (s208 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i180)) + 6) (t2 + (0.5 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 7) (t3 + (0.5 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 8) (t4 + (0.5 * (s208 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i180)) + 9) (t2 + (0.75 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 10) (t3 + (0.75 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 11) (t4 + (0.75 * (s208 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -22,13 +22,13 @@ compiled = CompiledStep "flat-torus" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, 0.0];\n}\n\nquotient Lattice {latticePeriod = 2.0, latticeFlip = False}\nbounds 2.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.FlatTorus: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -67,135 +67,136 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 10
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 6.103515625e-5) > 0 then t6 else 6.103515625e-5)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 6.103515625e-5) > 0 then t5 else 6.103515625e-5)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
-    t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    let !t39 = ((abs t32) - 1.0)
-    let !t40 = (if (negate t39) > 0 then 0.0 else t39)
-    let !t41 = ((abs t34) - 1.0)
-    let !t42 = (if (negate t41) > 0 then 0.0 else t41)
-    if ((t35 + t37) - (sqrt ((t40 * t40) + (t42 * t42)))) > 0 then do
-      t43 <- rdU meta 4
-      t44 <- rdU meta 5
-      let !s45 = (floorF (t32 / t44))
-      let !s46 = (floorF (t33 / t44))
-      let !s47 = (floorF (t34 / t44))
-      loopI 0.0 3.0 $ \i48 -> do
-        let !d48 = fromIntegral i48 :: Double
-        loopI 0.0 3.0 $ \i49 -> do
-          let !d49 = fromIntegral i49 :: Double
-          loopI 0.0 3.0 $ \i50 -> do
-            let !d50 = fromIntegral i50 :: Double
-            let !s51 = ((s45 + d48) - 1.0)
-            let !s52 = ((s46 + d49) - 1.0)
-            let !s53 = ((s47 + d50) - 1.0)
-            let !s54 = (((((s51 + 131072.0) * 262144.0) + (s52 + 131072.0)) * 262144.0) + (s53 + 131072.0))
-            let !t55 = (((s51 * 7.3856093e7) + (s52 * 1.9349663e7)) + (s53 * 8.3492791e7))
-            let !s56 = (t55 - (t43 * (floorF (t55 / t43))))
-            chkI grid (truncate s56) 0 0
-            t57 <- rdU grid (truncate s56)
-            chkI grid ((truncate s56) + (truncate t43)) 0 0
-            t58 <- rdU grid ((truncate s56) + (truncate t43))
-            loopI t58 t57 $ \i59 -> do
-              let !d59 = fromIntegral i59 :: Double
-              chkI items i59 0 0
-              t60 <- rdU items i59
-              chkI cellOf (truncate t60) 0 0
-              t61 <- rdU cellOf (truncate t60)
-              if (0.5 - (abs (t61 - s54))) > 0 then do
-                if (t60 - d31) > 0 then do
-                  chkI pos (3 * (truncate t60)) 0 2
-                  t62 <- rdU pos (3 * (truncate t60))
-                  t63 <- rdU pos ((3 * (truncate t60)) + 1)
-                  t64 <- rdU pos ((3 * (truncate t60)) + 2)
-                  chkI scalars (6 * (truncate t60)) 2 5
-                  t65 <- rdU scalars ((6 * (truncate t60)) + 5)
-                  t66 <- rdU scalars ((6 * (truncate t60)) + 2)
-                  let !t67 = (t36 + t66)
-                  let !t68 = (t32 + (negate t62))
-                  let !t69 = (t33 + (negate t63))
-                  let !t70 = (t34 + (negate t64))
-                  let !t71 = ((t35 + t65) - (sqrt (((t68 * t68) + (t69 * t69)) + (t70 * t70))))
-                  if (if (t67 - t71) > 0 then t71 else t67) > 0 then do
-                    t72 <- getR v38
-                    chkI near (truncate t72) 0 0
-                    wrU near (truncate t72) t60
-                    setR v38 (t72 + 1.0)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    let !t36 = ((abs t30) - 1.0)
+    let !t37 = (if (negate t36) > 0 then 0.0 else t36)
+    let !t38 = ((abs t32) - 1.0)
+    let !t39 = (if (negate t38) > 0 then 0.0 else t38)
+    if ((t33 + t35) - (sqrt ((t37 * t37) + (t39 * t39)))) > 0 then do
+      t40 <- rdU meta 4
+      t41 <- rdU meta 5
+      let !s42 = (floorF (t30 / t41))
+      let !s43 = (floorF (t31 / t41))
+      let !s44 = (floorF (t32 / t41))
+      loopI 0.0 3.0 $ \i45 -> do
+        let !d45 = fromIntegral i45 :: Double
+        loopI 0.0 3.0 $ \i46 -> do
+          let !d46 = fromIntegral i46 :: Double
+          loopI 0.0 3.0 $ \i47 -> do
+            let !d47 = fromIntegral i47 :: Double
+            let !s48 = ((s42 + d45) - 1.0)
+            let !s49 = ((s43 + d46) - 1.0)
+            let !s50 = ((s44 + d47) - 1.0)
+            let !s51 = (((((s48 + 131072.0) * 262144.0) + (s49 + 131072.0)) * 262144.0) + (s50 + 131072.0))
+            let !t52 = (((s48 * 7.3856093e7) + (s49 * 1.9349663e7)) + (s50 * 8.3492791e7))
+            let !s53 = (t52 - (t40 * (floorF (t52 / t40))))
+            chkI grid (truncate s53) 0 0
+            t54 <- rdU grid (truncate s53)
+            chkI grid ((truncate s53) + (truncate t40)) 0 0
+            t55 <- rdU grid ((truncate s53) + (truncate t40))
+            loopI t55 t54 $ \i56 -> do
+              let !d56 = fromIntegral i56 :: Double
+              chkI items i56 0 0
+              t57 <- rdU items i56
+              chkI cellOf (truncate t57) 0 0
+              t58 <- rdU cellOf (truncate t57)
+              if (0.5 - (abs (t58 - s51))) > 0 then do
+                if (t57 - d29) > 0 then do
+                  chkI pos (3 * (truncate t57)) 0 2
+                  t59 <- rdU pos (3 * (truncate t57))
+                  t60 <- rdU pos ((3 * (truncate t57)) + 1)
+                  t61 <- rdU pos ((3 * (truncate t57)) + 2)
+                  chkI scalars (6 * (truncate t57)) 2 5
+                  t62 <- rdU scalars ((6 * (truncate t57)) + 5)
+                  t63 <- rdU scalars ((6 * (truncate t57)) + 2)
+                  let !t64 = (t34 + t63)
+                  let !t65 = (t30 + (negate t59))
+                  let !t66 = (t31 + (negate t60))
+                  let !t67 = (t32 + (negate t61))
+                  let !t68 = ((t33 + t62) - (sqrt (((t65 * t65) + (t66 * t66)) + (t67 * t67))))
+                  if (if (t64 - t68) > 0 then t68 else t64) > 0 then do
+                    t69 <- rdU locals 2
+                    chkI near (truncate t69) 0 0
+                    wrU near (truncate t69) t57
+                    wrU locals 2 (t69 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -212,67 +213,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t73 <- getR v38
-    loopI 0.0 t73 $ \i74 -> do
-      let !d74 = fromIntegral i74 :: Double
-      chkI near i74 0 0
-      t75 <- rdU near i74
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t75 + 1.0) * 64.0) d31 t75 1.0 1.0 1.0 0.0 0.0 0.0
+    t70 <- rdU locals 2
+    loopI 0.0 t70 $ \i71 -> do
+      let !d71 = fromIntegral i71 :: Double
+      chkI near i71 0 0
+      t72 <- rdU near i71
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t72 + 1.0) * 64.0) d29 t72 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    let !s76 = (t32 + (-2.0))
-    let !s77 = (t34 + (-2.0))
-    setR v38 0.0
-    let !t78 = ((abs s76) - 1.0)
-    let !t79 = (if (negate t78) > 0 then 0.0 else t78)
-    let !t80 = ((abs s77) - 1.0)
-    let !t81 = (if (negate t80) > 0 then 0.0 else t80)
-    if ((t35 + t37) - (sqrt ((t79 * t79) + (t81 * t81)))) > 0 then do
-      t82 <- rdU meta 4
-      t83 <- rdU meta 5
-      let !s84 = (floorF (s76 / t83))
-      let !s85 = (floorF (t33 / t83))
-      let !s86 = (floorF (s77 / t83))
-      loopI 0.0 3.0 $ \i87 -> do
-        let !d87 = fromIntegral i87 :: Double
-        loopI 0.0 3.0 $ \i88 -> do
-          let !d88 = fromIntegral i88 :: Double
-          loopI 0.0 3.0 $ \i89 -> do
-            let !d89 = fromIntegral i89 :: Double
-            let !s90 = ((s84 + d87) - 1.0)
-            let !s91 = ((s85 + d88) - 1.0)
-            let !s92 = ((s86 + d89) - 1.0)
-            let !s93 = (((((s90 + 131072.0) * 262144.0) + (s91 + 131072.0)) * 262144.0) + (s92 + 131072.0))
-            let !t94 = (((s90 * 7.3856093e7) + (s91 * 1.9349663e7)) + (s92 * 8.3492791e7))
-            let !s95 = (t94 - (t82 * (floorF (t94 / t82))))
-            chkI grid (truncate s95) 0 0
-            t96 <- rdU grid (truncate s95)
-            chkI grid ((truncate s95) + (truncate t82)) 0 0
-            t97 <- rdU grid ((truncate s95) + (truncate t82))
-            loopI t97 t96 $ \i98 -> do
-              let !d98 = fromIntegral i98 :: Double
-              chkI items i98 0 0
-              t99 <- rdU items i98
-              chkI cellOf (truncate t99) 0 0
-              t100 <- rdU cellOf (truncate t99)
-              if (0.5 - (abs (t100 - s93))) > 0 then do
-                if (t99 - d31) > 0 then do
-                  chkI pos (3 * (truncate t99)) 0 2
-                  t101 <- rdU pos (3 * (truncate t99))
-                  t102 <- rdU pos ((3 * (truncate t99)) + 1)
-                  t103 <- rdU pos ((3 * (truncate t99)) + 2)
-                  chkI scalars (6 * (truncate t99)) 2 5
-                  t104 <- rdU scalars ((6 * (truncate t99)) + 5)
-                  t105 <- rdU scalars ((6 * (truncate t99)) + 2)
-                  let !t106 = (t36 + t105)
-                  let !t107 = (s76 + (negate t101))
-                  let !t108 = (t33 + (negate t102))
-                  let !t109 = (s77 + (negate t103))
-                  let !t110 = ((t35 + t104) - (sqrt (((t107 * t107) + (t108 * t108)) + (t109 * t109))))
-                  if (if (t106 - t110) > 0 then t110 else t106) > 0 then do
-                    t111 <- getR v38
-                    chkI near (truncate t111) 0 0
-                    wrU near (truncate t111) t99
-                    setR v38 (t111 + 1.0)
+    let !s73 = (t30 + (-2.0))
+    let !s74 = (t32 + (-2.0))
+    wrU locals 2 0.0
+    let !t75 = ((abs s73) - 1.0)
+    let !t76 = (if (negate t75) > 0 then 0.0 else t75)
+    let !t77 = ((abs s74) - 1.0)
+    let !t78 = (if (negate t77) > 0 then 0.0 else t77)
+    if ((t33 + t35) - (sqrt ((t76 * t76) + (t78 * t78)))) > 0 then do
+      t79 <- rdU meta 4
+      t80 <- rdU meta 5
+      let !s81 = (floorF (s73 / t80))
+      let !s82 = (floorF (t31 / t80))
+      let !s83 = (floorF (s74 / t80))
+      loopI 0.0 3.0 $ \i84 -> do
+        let !d84 = fromIntegral i84 :: Double
+        loopI 0.0 3.0 $ \i85 -> do
+          let !d85 = fromIntegral i85 :: Double
+          loopI 0.0 3.0 $ \i86 -> do
+            let !d86 = fromIntegral i86 :: Double
+            let !s87 = ((s81 + d84) - 1.0)
+            let !s88 = ((s82 + d85) - 1.0)
+            let !s89 = ((s83 + d86) - 1.0)
+            let !s90 = (((((s87 + 131072.0) * 262144.0) + (s88 + 131072.0)) * 262144.0) + (s89 + 131072.0))
+            let !t91 = (((s87 * 7.3856093e7) + (s88 * 1.9349663e7)) + (s89 * 8.3492791e7))
+            let !s92 = (t91 - (t79 * (floorF (t91 / t79))))
+            chkI grid (truncate s92) 0 0
+            t93 <- rdU grid (truncate s92)
+            chkI grid ((truncate s92) + (truncate t79)) 0 0
+            t94 <- rdU grid ((truncate s92) + (truncate t79))
+            loopI t94 t93 $ \i95 -> do
+              let !d95 = fromIntegral i95 :: Double
+              chkI items i95 0 0
+              t96 <- rdU items i95
+              chkI cellOf (truncate t96) 0 0
+              t97 <- rdU cellOf (truncate t96)
+              if (0.5 - (abs (t97 - s90))) > 0 then do
+                if (t96 - d29) > 0 then do
+                  chkI pos (3 * (truncate t96)) 0 2
+                  t98 <- rdU pos (3 * (truncate t96))
+                  t99 <- rdU pos ((3 * (truncate t96)) + 1)
+                  t100 <- rdU pos ((3 * (truncate t96)) + 2)
+                  chkI scalars (6 * (truncate t96)) 2 5
+                  t101 <- rdU scalars ((6 * (truncate t96)) + 5)
+                  t102 <- rdU scalars ((6 * (truncate t96)) + 2)
+                  let !t103 = (t34 + t102)
+                  let !t104 = (s73 + (negate t98))
+                  let !t105 = (t31 + (negate t99))
+                  let !t106 = (s74 + (negate t100))
+                  let !t107 = ((t33 + t101) - (sqrt (((t104 * t104) + (t105 * t105)) + (t106 * t106))))
+                  if (if (t103 - t107) > 0 then t107 else t103) > 0 then do
+                    t108 <- rdU locals 2
+                    chkI near (truncate t108) 0 0
+                    wrU near (truncate t108) t96
+                    wrU locals 2 (t108 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -289,64 +290,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t112 <- getR v38
-    loopI 0.0 t112 $ \i113 -> do
-      let !d113 = fromIntegral i113 :: Double
-      chkI near i113 0 0
-      t114 <- rdU near i113
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t114 + 1.0) * 64.0) + 16.0) d31 t114 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
+    t109 <- rdU locals 2
+    loopI 0.0 t109 $ \i110 -> do
+      let !d110 = fromIntegral i110 :: Double
+      chkI near i110 0 0
+      t111 <- rdU near i110
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t111 + 1.0) * 64.0) + 16.0) d29 t111 1.0 1.0 1.0 (-2.0) 0.0 (-2.0)
       pure ()
-    let !s115 = s76
-    setR v38 0.0
-    let !t116 = ((abs s115) - 1.0)
-    let !t117 = (if (negate t116) > 0 then 0.0 else t116)
-    if ((t35 + t37) - (sqrt ((t117 * t117) + (t42 * t42)))) > 0 then do
-      t118 <- rdU meta 4
-      t119 <- rdU meta 5
-      let !s120 = (floorF (s115 / t119))
-      let !s121 = (floorF (t33 / t119))
-      let !s122 = (floorF (t34 / t119))
-      loopI 0.0 3.0 $ \i123 -> do
-        let !d123 = fromIntegral i123 :: Double
-        loopI 0.0 3.0 $ \i124 -> do
-          let !d124 = fromIntegral i124 :: Double
-          loopI 0.0 3.0 $ \i125 -> do
-            let !d125 = fromIntegral i125 :: Double
-            let !s126 = ((s120 + d123) - 1.0)
-            let !s127 = ((s121 + d124) - 1.0)
-            let !s128 = ((s122 + d125) - 1.0)
-            let !s129 = (((((s126 + 131072.0) * 262144.0) + (s127 + 131072.0)) * 262144.0) + (s128 + 131072.0))
-            let !t130 = (((s126 * 7.3856093e7) + (s127 * 1.9349663e7)) + (s128 * 8.3492791e7))
-            let !s131 = (t130 - (t118 * (floorF (t130 / t118))))
-            chkI grid (truncate s131) 0 0
-            t132 <- rdU grid (truncate s131)
-            chkI grid ((truncate s131) + (truncate t118)) 0 0
-            t133 <- rdU grid ((truncate s131) + (truncate t118))
-            loopI t133 t132 $ \i134 -> do
-              let !d134 = fromIntegral i134 :: Double
-              chkI items i134 0 0
-              t135 <- rdU items i134
-              chkI cellOf (truncate t135) 0 0
-              t136 <- rdU cellOf (truncate t135)
-              if (0.5 - (abs (t136 - s129))) > 0 then do
-                if (t135 - d31) > 0 then do
-                  chkI pos (3 * (truncate t135)) 0 2
-                  t137 <- rdU pos (3 * (truncate t135))
-                  t138 <- rdU pos ((3 * (truncate t135)) + 1)
-                  t139 <- rdU pos ((3 * (truncate t135)) + 2)
-                  chkI scalars (6 * (truncate t135)) 2 5
-                  t140 <- rdU scalars ((6 * (truncate t135)) + 5)
-                  t141 <- rdU scalars ((6 * (truncate t135)) + 2)
-                  let !t142 = (t36 + t141)
-                  let !t143 = (s115 + (negate t137))
-                  let !t144 = (t33 + (negate t138))
-                  let !t145 = (t34 + (negate t139))
-                  let !t146 = ((t35 + t140) - (sqrt (((t143 * t143) + (t144 * t144)) + (t145 * t145))))
-                  if (if (t142 - t146) > 0 then t146 else t142) > 0 then do
-                    t147 <- getR v38
-                    chkI near (truncate t147) 0 0
-                    wrU near (truncate t147) t135
-                    setR v38 (t147 + 1.0)
+    let !s112 = s73
+    wrU locals 2 0.0
+    let !t113 = ((abs s112) - 1.0)
+    let !t114 = (if (negate t113) > 0 then 0.0 else t113)
+    if ((t33 + t35) - (sqrt ((t114 * t114) + (t39 * t39)))) > 0 then do
+      t115 <- rdU meta 4
+      t116 <- rdU meta 5
+      let !s117 = (floorF (s112 / t116))
+      let !s118 = (floorF (t31 / t116))
+      let !s119 = (floorF (t32 / t116))
+      loopI 0.0 3.0 $ \i120 -> do
+        let !d120 = fromIntegral i120 :: Double
+        loopI 0.0 3.0 $ \i121 -> do
+          let !d121 = fromIntegral i121 :: Double
+          loopI 0.0 3.0 $ \i122 -> do
+            let !d122 = fromIntegral i122 :: Double
+            let !s123 = ((s117 + d120) - 1.0)
+            let !s124 = ((s118 + d121) - 1.0)
+            let !s125 = ((s119 + d122) - 1.0)
+            let !s126 = (((((s123 + 131072.0) * 262144.0) + (s124 + 131072.0)) * 262144.0) + (s125 + 131072.0))
+            let !t127 = (((s123 * 7.3856093e7) + (s124 * 1.9349663e7)) + (s125 * 8.3492791e7))
+            let !s128 = (t127 - (t115 * (floorF (t127 / t115))))
+            chkI grid (truncate s128) 0 0
+            t129 <- rdU grid (truncate s128)
+            chkI grid ((truncate s128) + (truncate t115)) 0 0
+            t130 <- rdU grid ((truncate s128) + (truncate t115))
+            loopI t130 t129 $ \i131 -> do
+              let !d131 = fromIntegral i131 :: Double
+              chkI items i131 0 0
+              t132 <- rdU items i131
+              chkI cellOf (truncate t132) 0 0
+              t133 <- rdU cellOf (truncate t132)
+              if (0.5 - (abs (t133 - s126))) > 0 then do
+                if (t132 - d29) > 0 then do
+                  chkI pos (3 * (truncate t132)) 0 2
+                  t134 <- rdU pos (3 * (truncate t132))
+                  t135 <- rdU pos ((3 * (truncate t132)) + 1)
+                  t136 <- rdU pos ((3 * (truncate t132)) + 2)
+                  chkI scalars (6 * (truncate t132)) 2 5
+                  t137 <- rdU scalars ((6 * (truncate t132)) + 5)
+                  t138 <- rdU scalars ((6 * (truncate t132)) + 2)
+                  let !t139 = (t34 + t138)
+                  let !t140 = (s112 + (negate t134))
+                  let !t141 = (t31 + (negate t135))
+                  let !t142 = (t32 + (negate t136))
+                  let !t143 = ((t33 + t137) - (sqrt (((t140 * t140) + (t141 * t141)) + (t142 * t142))))
+                  if (if (t139 - t143) > 0 then t143 else t139) > 0 then do
+                    t144 <- rdU locals 2
+                    chkI near (truncate t144) 0 0
+                    wrU near (truncate t144) t132
+                    wrU locals 2 (t144 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -363,67 +364,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t148 <- getR v38
-    loopI 0.0 t148 $ \i149 -> do
-      let !d149 = fromIntegral i149 :: Double
-      chkI near i149 0 0
-      t150 <- rdU near i149
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t150 + 1.0) * 64.0) + 20.0) d31 t150 1.0 1.0 1.0 (-2.0) 0.0 0.0
+    t145 <- rdU locals 2
+    loopI 0.0 t145 $ \i146 -> do
+      let !d146 = fromIntegral i146 :: Double
+      chkI near i146 0 0
+      t147 <- rdU near i146
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t147 + 1.0) * 64.0) + 20.0) d29 t147 1.0 1.0 1.0 (-2.0) 0.0 0.0
       pure ()
-    let !s151 = s115
-    let !s152 = (t34 + 2.0)
-    setR v38 0.0
-    let !t153 = ((abs s151) - 1.0)
-    let !t154 = (if (negate t153) > 0 then 0.0 else t153)
-    let !t155 = ((abs s152) - 1.0)
-    let !t156 = (if (negate t155) > 0 then 0.0 else t155)
-    if ((t35 + t37) - (sqrt ((t154 * t154) + (t156 * t156)))) > 0 then do
-      t157 <- rdU meta 4
-      t158 <- rdU meta 5
-      let !s159 = (floorF (s151 / t158))
-      let !s160 = (floorF (t33 / t158))
-      let !s161 = (floorF (s152 / t158))
-      loopI 0.0 3.0 $ \i162 -> do
-        let !d162 = fromIntegral i162 :: Double
-        loopI 0.0 3.0 $ \i163 -> do
-          let !d163 = fromIntegral i163 :: Double
-          loopI 0.0 3.0 $ \i164 -> do
-            let !d164 = fromIntegral i164 :: Double
-            let !s165 = ((s159 + d162) - 1.0)
-            let !s166 = ((s160 + d163) - 1.0)
-            let !s167 = ((s161 + d164) - 1.0)
-            let !s168 = (((((s165 + 131072.0) * 262144.0) + (s166 + 131072.0)) * 262144.0) + (s167 + 131072.0))
-            let !t169 = (((s165 * 7.3856093e7) + (s166 * 1.9349663e7)) + (s167 * 8.3492791e7))
-            let !s170 = (t169 - (t157 * (floorF (t169 / t157))))
-            chkI grid (truncate s170) 0 0
-            t171 <- rdU grid (truncate s170)
-            chkI grid ((truncate s170) + (truncate t157)) 0 0
-            t172 <- rdU grid ((truncate s170) + (truncate t157))
-            loopI t172 t171 $ \i173 -> do
-              let !d173 = fromIntegral i173 :: Double
-              chkI items i173 0 0
-              t174 <- rdU items i173
-              chkI cellOf (truncate t174) 0 0
-              t175 <- rdU cellOf (truncate t174)
-              if (0.5 - (abs (t175 - s168))) > 0 then do
-                if (t174 - d31) > 0 then do
-                  chkI pos (3 * (truncate t174)) 0 2
-                  t176 <- rdU pos (3 * (truncate t174))
-                  t177 <- rdU pos ((3 * (truncate t174)) + 1)
-                  t178 <- rdU pos ((3 * (truncate t174)) + 2)
-                  chkI scalars (6 * (truncate t174)) 2 5
-                  t179 <- rdU scalars ((6 * (truncate t174)) + 5)
-                  t180 <- rdU scalars ((6 * (truncate t174)) + 2)
-                  let !t181 = (t36 + t180)
-                  let !t182 = (s151 + (negate t176))
-                  let !t183 = (t33 + (negate t177))
-                  let !t184 = (s152 + (negate t178))
-                  let !t185 = ((t35 + t179) - (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184))))
-                  if (if (t181 - t185) > 0 then t185 else t181) > 0 then do
-                    t186 <- getR v38
-                    chkI near (truncate t186) 0 0
-                    wrU near (truncate t186) t174
-                    setR v38 (t186 + 1.0)
+    let !s148 = s112
+    let !s149 = (t32 + 2.0)
+    wrU locals 2 0.0
+    let !t150 = ((abs s148) - 1.0)
+    let !t151 = (if (negate t150) > 0 then 0.0 else t150)
+    let !t152 = ((abs s149) - 1.0)
+    let !t153 = (if (negate t152) > 0 then 0.0 else t152)
+    if ((t33 + t35) - (sqrt ((t151 * t151) + (t153 * t153)))) > 0 then do
+      t154 <- rdU meta 4
+      t155 <- rdU meta 5
+      let !s156 = (floorF (s148 / t155))
+      let !s157 = (floorF (t31 / t155))
+      let !s158 = (floorF (s149 / t155))
+      loopI 0.0 3.0 $ \i159 -> do
+        let !d159 = fromIntegral i159 :: Double
+        loopI 0.0 3.0 $ \i160 -> do
+          let !d160 = fromIntegral i160 :: Double
+          loopI 0.0 3.0 $ \i161 -> do
+            let !d161 = fromIntegral i161 :: Double
+            let !s162 = ((s156 + d159) - 1.0)
+            let !s163 = ((s157 + d160) - 1.0)
+            let !s164 = ((s158 + d161) - 1.0)
+            let !s165 = (((((s162 + 131072.0) * 262144.0) + (s163 + 131072.0)) * 262144.0) + (s164 + 131072.0))
+            let !t166 = (((s162 * 7.3856093e7) + (s163 * 1.9349663e7)) + (s164 * 8.3492791e7))
+            let !s167 = (t166 - (t154 * (floorF (t166 / t154))))
+            chkI grid (truncate s167) 0 0
+            t168 <- rdU grid (truncate s167)
+            chkI grid ((truncate s167) + (truncate t154)) 0 0
+            t169 <- rdU grid ((truncate s167) + (truncate t154))
+            loopI t169 t168 $ \i170 -> do
+              let !d170 = fromIntegral i170 :: Double
+              chkI items i170 0 0
+              t171 <- rdU items i170
+              chkI cellOf (truncate t171) 0 0
+              t172 <- rdU cellOf (truncate t171)
+              if (0.5 - (abs (t172 - s165))) > 0 then do
+                if (t171 - d29) > 0 then do
+                  chkI pos (3 * (truncate t171)) 0 2
+                  t173 <- rdU pos (3 * (truncate t171))
+                  t174 <- rdU pos ((3 * (truncate t171)) + 1)
+                  t175 <- rdU pos ((3 * (truncate t171)) + 2)
+                  chkI scalars (6 * (truncate t171)) 2 5
+                  t176 <- rdU scalars ((6 * (truncate t171)) + 5)
+                  t177 <- rdU scalars ((6 * (truncate t171)) + 2)
+                  let !t178 = (t34 + t177)
+                  let !t179 = (s148 + (negate t173))
+                  let !t180 = (t31 + (negate t174))
+                  let !t181 = (s149 + (negate t175))
+                  let !t182 = ((t33 + t176) - (sqrt (((t179 * t179) + (t180 * t180)) + (t181 * t181))))
+                  if (if (t178 - t182) > 0 then t182 else t178) > 0 then do
+                    t183 <- rdU locals 2
+                    chkI near (truncate t183) 0 0
+                    wrU near (truncate t183) t171
+                    wrU locals 2 (t183 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -440,64 +441,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t187 <- getR v38
-    loopI 0.0 t187 $ \i188 -> do
-      let !d188 = fromIntegral i188 :: Double
-      chkI near i188 0 0
-      t189 <- rdU near i188
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t189 + 1.0) * 64.0) + 24.0) d31 t189 1.0 1.0 1.0 (-2.0) 0.0 2.0
+    t184 <- rdU locals 2
+    loopI 0.0 t184 $ \i185 -> do
+      let !d185 = fromIntegral i185 :: Double
+      chkI near i185 0 0
+      t186 <- rdU near i185
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t186 + 1.0) * 64.0) + 24.0) d29 t186 1.0 1.0 1.0 (-2.0) 0.0 2.0
       pure ()
-    let !s190 = s77
-    setR v38 0.0
-    let !t191 = ((abs s190) - 1.0)
-    let !t192 = (if (negate t191) > 0 then 0.0 else t191)
-    if ((t35 + t37) - (sqrt ((t40 * t40) + (t192 * t192)))) > 0 then do
-      t193 <- rdU meta 4
-      t194 <- rdU meta 5
-      let !s195 = (floorF (t32 / t194))
-      let !s196 = (floorF (t33 / t194))
-      let !s197 = (floorF (s190 / t194))
-      loopI 0.0 3.0 $ \i198 -> do
-        let !d198 = fromIntegral i198 :: Double
-        loopI 0.0 3.0 $ \i199 -> do
-          let !d199 = fromIntegral i199 :: Double
-          loopI 0.0 3.0 $ \i200 -> do
-            let !d200 = fromIntegral i200 :: Double
-            let !s201 = ((s195 + d198) - 1.0)
-            let !s202 = ((s196 + d199) - 1.0)
-            let !s203 = ((s197 + d200) - 1.0)
-            let !s204 = (((((s201 + 131072.0) * 262144.0) + (s202 + 131072.0)) * 262144.0) + (s203 + 131072.0))
-            let !t205 = (((s201 * 7.3856093e7) + (s202 * 1.9349663e7)) + (s203 * 8.3492791e7))
-            let !s206 = (t205 - (t193 * (floorF (t205 / t193))))
-            chkI grid (truncate s206) 0 0
-            t207 <- rdU grid (truncate s206)
-            chkI grid ((truncate s206) + (truncate t193)) 0 0
-            t208 <- rdU grid ((truncate s206) + (truncate t193))
-            loopI t208 t207 $ \i209 -> do
-              let !d209 = fromIntegral i209 :: Double
-              chkI items i209 0 0
-              t210 <- rdU items i209
-              chkI cellOf (truncate t210) 0 0
-              t211 <- rdU cellOf (truncate t210)
-              if (0.5 - (abs (t211 - s204))) > 0 then do
-                if (t210 - d31) > 0 then do
-                  chkI pos (3 * (truncate t210)) 0 2
-                  t212 <- rdU pos (3 * (truncate t210))
-                  t213 <- rdU pos ((3 * (truncate t210)) + 1)
-                  t214 <- rdU pos ((3 * (truncate t210)) + 2)
-                  chkI scalars (6 * (truncate t210)) 2 5
-                  t215 <- rdU scalars ((6 * (truncate t210)) + 5)
-                  t216 <- rdU scalars ((6 * (truncate t210)) + 2)
-                  let !t217 = (t36 + t216)
-                  let !t218 = (t32 + (negate t212))
-                  let !t219 = (t33 + (negate t213))
-                  let !t220 = (s190 + (negate t214))
-                  let !t221 = ((t35 + t215) - (sqrt (((t218 * t218) + (t219 * t219)) + (t220 * t220))))
-                  if (if (t217 - t221) > 0 then t221 else t217) > 0 then do
-                    t222 <- getR v38
-                    chkI near (truncate t222) 0 0
-                    wrU near (truncate t222) t210
-                    setR v38 (t222 + 1.0)
+    let !s187 = s74
+    wrU locals 2 0.0
+    let !t188 = ((abs s187) - 1.0)
+    let !t189 = (if (negate t188) > 0 then 0.0 else t188)
+    if ((t33 + t35) - (sqrt ((t37 * t37) + (t189 * t189)))) > 0 then do
+      t190 <- rdU meta 4
+      t191 <- rdU meta 5
+      let !s192 = (floorF (t30 / t191))
+      let !s193 = (floorF (t31 / t191))
+      let !s194 = (floorF (s187 / t191))
+      loopI 0.0 3.0 $ \i195 -> do
+        let !d195 = fromIntegral i195 :: Double
+        loopI 0.0 3.0 $ \i196 -> do
+          let !d196 = fromIntegral i196 :: Double
+          loopI 0.0 3.0 $ \i197 -> do
+            let !d197 = fromIntegral i197 :: Double
+            let !s198 = ((s192 + d195) - 1.0)
+            let !s199 = ((s193 + d196) - 1.0)
+            let !s200 = ((s194 + d197) - 1.0)
+            let !s201 = (((((s198 + 131072.0) * 262144.0) + (s199 + 131072.0)) * 262144.0) + (s200 + 131072.0))
+            let !t202 = (((s198 * 7.3856093e7) + (s199 * 1.9349663e7)) + (s200 * 8.3492791e7))
+            let !s203 = (t202 - (t190 * (floorF (t202 / t190))))
+            chkI grid (truncate s203) 0 0
+            t204 <- rdU grid (truncate s203)
+            chkI grid ((truncate s203) + (truncate t190)) 0 0
+            t205 <- rdU grid ((truncate s203) + (truncate t190))
+            loopI t205 t204 $ \i206 -> do
+              let !d206 = fromIntegral i206 :: Double
+              chkI items i206 0 0
+              t207 <- rdU items i206
+              chkI cellOf (truncate t207) 0 0
+              t208 <- rdU cellOf (truncate t207)
+              if (0.5 - (abs (t208 - s201))) > 0 then do
+                if (t207 - d29) > 0 then do
+                  chkI pos (3 * (truncate t207)) 0 2
+                  t209 <- rdU pos (3 * (truncate t207))
+                  t210 <- rdU pos ((3 * (truncate t207)) + 1)
+                  t211 <- rdU pos ((3 * (truncate t207)) + 2)
+                  chkI scalars (6 * (truncate t207)) 2 5
+                  t212 <- rdU scalars ((6 * (truncate t207)) + 5)
+                  t213 <- rdU scalars ((6 * (truncate t207)) + 2)
+                  let !t214 = (t34 + t213)
+                  let !t215 = (t30 + (negate t209))
+                  let !t216 = (t31 + (negate t210))
+                  let !t217 = (s187 + (negate t211))
+                  let !t218 = ((t33 + t212) - (sqrt (((t215 * t215) + (t216 * t216)) + (t217 * t217))))
+                  if (if (t214 - t218) > 0 then t218 else t214) > 0 then do
+                    t219 <- rdU locals 2
+                    chkI near (truncate t219) 0 0
+                    wrU near (truncate t219) t207
+                    wrU locals 2 (t219 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -514,64 +515,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t223 <- getR v38
-    loopI 0.0 t223 $ \i224 -> do
-      let !d224 = fromIntegral i224 :: Double
-      chkI near i224 0 0
-      t225 <- rdU near i224
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t225 + 1.0) * 64.0) + 28.0) d31 t225 1.0 1.0 1.0 0.0 0.0 (-2.0)
+    t220 <- rdU locals 2
+    loopI 0.0 t220 $ \i221 -> do
+      let !d221 = fromIntegral i221 :: Double
+      chkI near i221 0 0
+      t222 <- rdU near i221
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t222 + 1.0) * 64.0) + 28.0) d29 t222 1.0 1.0 1.0 0.0 0.0 (-2.0)
       pure ()
-    let !s226 = s152
-    setR v38 0.0
-    let !t227 = ((abs s226) - 1.0)
-    let !t228 = (if (negate t227) > 0 then 0.0 else t227)
-    if ((t35 + t37) - (sqrt ((t40 * t40) + (t228 * t228)))) > 0 then do
-      t229 <- rdU meta 4
-      t230 <- rdU meta 5
-      let !s231 = (floorF (t32 / t230))
-      let !s232 = (floorF (t33 / t230))
-      let !s233 = (floorF (s226 / t230))
-      loopI 0.0 3.0 $ \i234 -> do
-        let !d234 = fromIntegral i234 :: Double
-        loopI 0.0 3.0 $ \i235 -> do
-          let !d235 = fromIntegral i235 :: Double
-          loopI 0.0 3.0 $ \i236 -> do
-            let !d236 = fromIntegral i236 :: Double
-            let !s237 = ((s231 + d234) - 1.0)
-            let !s238 = ((s232 + d235) - 1.0)
-            let !s239 = ((s233 + d236) - 1.0)
-            let !s240 = (((((s237 + 131072.0) * 262144.0) + (s238 + 131072.0)) * 262144.0) + (s239 + 131072.0))
-            let !t241 = (((s237 * 7.3856093e7) + (s238 * 1.9349663e7)) + (s239 * 8.3492791e7))
-            let !s242 = (t241 - (t229 * (floorF (t241 / t229))))
-            chkI grid (truncate s242) 0 0
-            t243 <- rdU grid (truncate s242)
-            chkI grid ((truncate s242) + (truncate t229)) 0 0
-            t244 <- rdU grid ((truncate s242) + (truncate t229))
-            loopI t244 t243 $ \i245 -> do
-              let !d245 = fromIntegral i245 :: Double
-              chkI items i245 0 0
-              t246 <- rdU items i245
-              chkI cellOf (truncate t246) 0 0
-              t247 <- rdU cellOf (truncate t246)
-              if (0.5 - (abs (t247 - s240))) > 0 then do
-                if ((t246 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t246)) 0 2
-                  t248 <- rdU pos (3 * (truncate t246))
-                  t249 <- rdU pos ((3 * (truncate t246)) + 1)
-                  t250 <- rdU pos ((3 * (truncate t246)) + 2)
-                  chkI scalars (6 * (truncate t246)) 2 5
-                  t251 <- rdU scalars ((6 * (truncate t246)) + 5)
-                  t252 <- rdU scalars ((6 * (truncate t246)) + 2)
-                  let !t253 = (t36 + t252)
-                  let !t254 = (t32 + (negate t248))
-                  let !t255 = (t33 + (negate t249))
-                  let !t256 = (s226 + (negate t250))
-                  let !t257 = ((t35 + t251) - (sqrt (((t254 * t254) + (t255 * t255)) + (t256 * t256))))
-                  if (if (t253 - t257) > 0 then t257 else t253) > 0 then do
-                    t258 <- getR v38
-                    chkI near (truncate t258) 0 0
-                    wrU near (truncate t258) t246
-                    setR v38 (t258 + 1.0)
+    let !s223 = s149
+    wrU locals 2 0.0
+    let !t224 = ((abs s223) - 1.0)
+    let !t225 = (if (negate t224) > 0 then 0.0 else t224)
+    if ((t33 + t35) - (sqrt ((t37 * t37) + (t225 * t225)))) > 0 then do
+      t226 <- rdU meta 4
+      t227 <- rdU meta 5
+      let !s228 = (floorF (t30 / t227))
+      let !s229 = (floorF (t31 / t227))
+      let !s230 = (floorF (s223 / t227))
+      loopI 0.0 3.0 $ \i231 -> do
+        let !d231 = fromIntegral i231 :: Double
+        loopI 0.0 3.0 $ \i232 -> do
+          let !d232 = fromIntegral i232 :: Double
+          loopI 0.0 3.0 $ \i233 -> do
+            let !d233 = fromIntegral i233 :: Double
+            let !s234 = ((s228 + d231) - 1.0)
+            let !s235 = ((s229 + d232) - 1.0)
+            let !s236 = ((s230 + d233) - 1.0)
+            let !s237 = (((((s234 + 131072.0) * 262144.0) + (s235 + 131072.0)) * 262144.0) + (s236 + 131072.0))
+            let !t238 = (((s234 * 7.3856093e7) + (s235 * 1.9349663e7)) + (s236 * 8.3492791e7))
+            let !s239 = (t238 - (t226 * (floorF (t238 / t226))))
+            chkI grid (truncate s239) 0 0
+            t240 <- rdU grid (truncate s239)
+            chkI grid ((truncate s239) + (truncate t226)) 0 0
+            t241 <- rdU grid ((truncate s239) + (truncate t226))
+            loopI t241 t240 $ \i242 -> do
+              let !d242 = fromIntegral i242 :: Double
+              chkI items i242 0 0
+              t243 <- rdU items i242
+              chkI cellOf (truncate t243) 0 0
+              t244 <- rdU cellOf (truncate t243)
+              if (0.5 - (abs (t244 - s237))) > 0 then do
+                if ((t243 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t243)) 0 2
+                  t245 <- rdU pos (3 * (truncate t243))
+                  t246 <- rdU pos ((3 * (truncate t243)) + 1)
+                  t247 <- rdU pos ((3 * (truncate t243)) + 2)
+                  chkI scalars (6 * (truncate t243)) 2 5
+                  t248 <- rdU scalars ((6 * (truncate t243)) + 5)
+                  t249 <- rdU scalars ((6 * (truncate t243)) + 2)
+                  let !t250 = (t34 + t249)
+                  let !t251 = (t30 + (negate t245))
+                  let !t252 = (t31 + (negate t246))
+                  let !t253 = (s223 + (negate t247))
+                  let !t254 = ((t33 + t248) - (sqrt (((t251 * t251) + (t252 * t252)) + (t253 * t253))))
+                  if (if (t250 - t254) > 0 then t254 else t250) > 0 then do
+                    t255 <- rdU locals 2
+                    chkI near (truncate t255) 0 0
+                    wrU near (truncate t255) t243
+                    wrU locals 2 (t255 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -588,67 +589,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t259 <- getR v38
-    loopI 0.0 t259 $ \i260 -> do
-      let !d260 = fromIntegral i260 :: Double
-      chkI near i260 0 0
-      t261 <- rdU near i260
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t261 + 1.0) * 64.0) + 32.0) d31 t261 1.0 1.0 1.0 0.0 0.0 2.0
+    t256 <- rdU locals 2
+    loopI 0.0 t256 $ \i257 -> do
+      let !d257 = fromIntegral i257 :: Double
+      chkI near i257 0 0
+      t258 <- rdU near i257
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t258 + 1.0) * 64.0) + 32.0) d29 t258 1.0 1.0 1.0 0.0 0.0 2.0
       pure ()
-    let !s262 = (t32 + 2.0)
-    let !s263 = s190
-    setR v38 0.0
-    let !t264 = ((abs s262) - 1.0)
-    let !t265 = (if (negate t264) > 0 then 0.0 else t264)
-    let !t266 = ((abs s263) - 1.0)
-    let !t267 = (if (negate t266) > 0 then 0.0 else t266)
-    if ((t35 + t37) - (sqrt ((t265 * t265) + (t267 * t267)))) > 0 then do
-      t268 <- rdU meta 4
-      t269 <- rdU meta 5
-      let !s270 = (floorF (s262 / t269))
-      let !s271 = (floorF (t33 / t269))
-      let !s272 = (floorF (s263 / t269))
-      loopI 0.0 3.0 $ \i273 -> do
-        let !d273 = fromIntegral i273 :: Double
-        loopI 0.0 3.0 $ \i274 -> do
-          let !d274 = fromIntegral i274 :: Double
-          loopI 0.0 3.0 $ \i275 -> do
-            let !d275 = fromIntegral i275 :: Double
-            let !s276 = ((s270 + d273) - 1.0)
-            let !s277 = ((s271 + d274) - 1.0)
-            let !s278 = ((s272 + d275) - 1.0)
-            let !s279 = (((((s276 + 131072.0) * 262144.0) + (s277 + 131072.0)) * 262144.0) + (s278 + 131072.0))
-            let !t280 = (((s276 * 7.3856093e7) + (s277 * 1.9349663e7)) + (s278 * 8.3492791e7))
-            let !s281 = (t280 - (t268 * (floorF (t280 / t268))))
-            chkI grid (truncate s281) 0 0
-            t282 <- rdU grid (truncate s281)
-            chkI grid ((truncate s281) + (truncate t268)) 0 0
-            t283 <- rdU grid ((truncate s281) + (truncate t268))
-            loopI t283 t282 $ \i284 -> do
-              let !d284 = fromIntegral i284 :: Double
-              chkI items i284 0 0
-              t285 <- rdU items i284
-              chkI cellOf (truncate t285) 0 0
-              t286 <- rdU cellOf (truncate t285)
-              if (0.5 - (abs (t286 - s279))) > 0 then do
-                if ((t285 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t285)) 0 2
-                  t287 <- rdU pos (3 * (truncate t285))
-                  t288 <- rdU pos ((3 * (truncate t285)) + 1)
-                  t289 <- rdU pos ((3 * (truncate t285)) + 2)
-                  chkI scalars (6 * (truncate t285)) 2 5
-                  t290 <- rdU scalars ((6 * (truncate t285)) + 5)
-                  t291 <- rdU scalars ((6 * (truncate t285)) + 2)
-                  let !t292 = (t36 + t291)
-                  let !t293 = (s262 + (negate t287))
-                  let !t294 = (t33 + (negate t288))
-                  let !t295 = (s263 + (negate t289))
-                  let !t296 = ((t35 + t290) - (sqrt (((t293 * t293) + (t294 * t294)) + (t295 * t295))))
-                  if (if (t292 - t296) > 0 then t296 else t292) > 0 then do
-                    t297 <- getR v38
-                    chkI near (truncate t297) 0 0
-                    wrU near (truncate t297) t285
-                    setR v38 (t297 + 1.0)
+    let !s259 = (t30 + 2.0)
+    let !s260 = s187
+    wrU locals 2 0.0
+    let !t261 = ((abs s259) - 1.0)
+    let !t262 = (if (negate t261) > 0 then 0.0 else t261)
+    let !t263 = ((abs s260) - 1.0)
+    let !t264 = (if (negate t263) > 0 then 0.0 else t263)
+    if ((t33 + t35) - (sqrt ((t262 * t262) + (t264 * t264)))) > 0 then do
+      t265 <- rdU meta 4
+      t266 <- rdU meta 5
+      let !s267 = (floorF (s259 / t266))
+      let !s268 = (floorF (t31 / t266))
+      let !s269 = (floorF (s260 / t266))
+      loopI 0.0 3.0 $ \i270 -> do
+        let !d270 = fromIntegral i270 :: Double
+        loopI 0.0 3.0 $ \i271 -> do
+          let !d271 = fromIntegral i271 :: Double
+          loopI 0.0 3.0 $ \i272 -> do
+            let !d272 = fromIntegral i272 :: Double
+            let !s273 = ((s267 + d270) - 1.0)
+            let !s274 = ((s268 + d271) - 1.0)
+            let !s275 = ((s269 + d272) - 1.0)
+            let !s276 = (((((s273 + 131072.0) * 262144.0) + (s274 + 131072.0)) * 262144.0) + (s275 + 131072.0))
+            let !t277 = (((s273 * 7.3856093e7) + (s274 * 1.9349663e7)) + (s275 * 8.3492791e7))
+            let !s278 = (t277 - (t265 * (floorF (t277 / t265))))
+            chkI grid (truncate s278) 0 0
+            t279 <- rdU grid (truncate s278)
+            chkI grid ((truncate s278) + (truncate t265)) 0 0
+            t280 <- rdU grid ((truncate s278) + (truncate t265))
+            loopI t280 t279 $ \i281 -> do
+              let !d281 = fromIntegral i281 :: Double
+              chkI items i281 0 0
+              t282 <- rdU items i281
+              chkI cellOf (truncate t282) 0 0
+              t283 <- rdU cellOf (truncate t282)
+              if (0.5 - (abs (t283 - s276))) > 0 then do
+                if ((t282 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t282)) 0 2
+                  t284 <- rdU pos (3 * (truncate t282))
+                  t285 <- rdU pos ((3 * (truncate t282)) + 1)
+                  t286 <- rdU pos ((3 * (truncate t282)) + 2)
+                  chkI scalars (6 * (truncate t282)) 2 5
+                  t287 <- rdU scalars ((6 * (truncate t282)) + 5)
+                  t288 <- rdU scalars ((6 * (truncate t282)) + 2)
+                  let !t289 = (t34 + t288)
+                  let !t290 = (s259 + (negate t284))
+                  let !t291 = (t31 + (negate t285))
+                  let !t292 = (s260 + (negate t286))
+                  let !t293 = ((t33 + t287) - (sqrt (((t290 * t290) + (t291 * t291)) + (t292 * t292))))
+                  if (if (t289 - t293) > 0 then t293 else t289) > 0 then do
+                    t294 <- rdU locals 2
+                    chkI near (truncate t294) 0 0
+                    wrU near (truncate t294) t282
+                    wrU locals 2 (t294 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -665,64 +666,64 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t298 <- getR v38
-    loopI 0.0 t298 $ \i299 -> do
-      let !d299 = fromIntegral i299 :: Double
-      chkI near i299 0 0
-      t300 <- rdU near i299
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t300 + 1.0) * 64.0) + 36.0) d31 t300 1.0 1.0 1.0 2.0 0.0 (-2.0)
+    t295 <- rdU locals 2
+    loopI 0.0 t295 $ \i296 -> do
+      let !d296 = fromIntegral i296 :: Double
+      chkI near i296 0 0
+      t297 <- rdU near i296
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t297 + 1.0) * 64.0) + 36.0) d29 t297 1.0 1.0 1.0 2.0 0.0 (-2.0)
       pure ()
-    let !s301 = s262
-    setR v38 0.0
-    let !t302 = ((abs s301) - 1.0)
-    let !t303 = (if (negate t302) > 0 then 0.0 else t302)
-    if ((t35 + t37) - (sqrt ((t303 * t303) + (t42 * t42)))) > 0 then do
-      t304 <- rdU meta 4
-      t305 <- rdU meta 5
-      let !s306 = (floorF (s301 / t305))
-      let !s307 = (floorF (t33 / t305))
-      let !s308 = (floorF (t34 / t305))
-      loopI 0.0 3.0 $ \i309 -> do
-        let !d309 = fromIntegral i309 :: Double
-        loopI 0.0 3.0 $ \i310 -> do
-          let !d310 = fromIntegral i310 :: Double
-          loopI 0.0 3.0 $ \i311 -> do
-            let !d311 = fromIntegral i311 :: Double
-            let !s312 = ((s306 + d309) - 1.0)
-            let !s313 = ((s307 + d310) - 1.0)
-            let !s314 = ((s308 + d311) - 1.0)
-            let !s315 = (((((s312 + 131072.0) * 262144.0) + (s313 + 131072.0)) * 262144.0) + (s314 + 131072.0))
-            let !t316 = (((s312 * 7.3856093e7) + (s313 * 1.9349663e7)) + (s314 * 8.3492791e7))
-            let !s317 = (t316 - (t304 * (floorF (t316 / t304))))
-            chkI grid (truncate s317) 0 0
-            t318 <- rdU grid (truncate s317)
-            chkI grid ((truncate s317) + (truncate t304)) 0 0
-            t319 <- rdU grid ((truncate s317) + (truncate t304))
-            loopI t319 t318 $ \i320 -> do
-              let !d320 = fromIntegral i320 :: Double
-              chkI items i320 0 0
-              t321 <- rdU items i320
-              chkI cellOf (truncate t321) 0 0
-              t322 <- rdU cellOf (truncate t321)
-              if (0.5 - (abs (t322 - s315))) > 0 then do
-                if ((t321 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t321)) 0 2
-                  t323 <- rdU pos (3 * (truncate t321))
-                  t324 <- rdU pos ((3 * (truncate t321)) + 1)
-                  t325 <- rdU pos ((3 * (truncate t321)) + 2)
-                  chkI scalars (6 * (truncate t321)) 2 5
-                  t326 <- rdU scalars ((6 * (truncate t321)) + 5)
-                  t327 <- rdU scalars ((6 * (truncate t321)) + 2)
-                  let !t328 = (t36 + t327)
-                  let !t329 = (s301 + (negate t323))
-                  let !t330 = (t33 + (negate t324))
-                  let !t331 = (t34 + (negate t325))
-                  let !t332 = ((t35 + t326) - (sqrt (((t329 * t329) + (t330 * t330)) + (t331 * t331))))
-                  if (if (t328 - t332) > 0 then t332 else t328) > 0 then do
-                    t333 <- getR v38
-                    chkI near (truncate t333) 0 0
-                    wrU near (truncate t333) t321
-                    setR v38 (t333 + 1.0)
+    let !s298 = s259
+    wrU locals 2 0.0
+    let !t299 = ((abs s298) - 1.0)
+    let !t300 = (if (negate t299) > 0 then 0.0 else t299)
+    if ((t33 + t35) - (sqrt ((t300 * t300) + (t39 * t39)))) > 0 then do
+      t301 <- rdU meta 4
+      t302 <- rdU meta 5
+      let !s303 = (floorF (s298 / t302))
+      let !s304 = (floorF (t31 / t302))
+      let !s305 = (floorF (t32 / t302))
+      loopI 0.0 3.0 $ \i306 -> do
+        let !d306 = fromIntegral i306 :: Double
+        loopI 0.0 3.0 $ \i307 -> do
+          let !d307 = fromIntegral i307 :: Double
+          loopI 0.0 3.0 $ \i308 -> do
+            let !d308 = fromIntegral i308 :: Double
+            let !s309 = ((s303 + d306) - 1.0)
+            let !s310 = ((s304 + d307) - 1.0)
+            let !s311 = ((s305 + d308) - 1.0)
+            let !s312 = (((((s309 + 131072.0) * 262144.0) + (s310 + 131072.0)) * 262144.0) + (s311 + 131072.0))
+            let !t313 = (((s309 * 7.3856093e7) + (s310 * 1.9349663e7)) + (s311 * 8.3492791e7))
+            let !s314 = (t313 - (t301 * (floorF (t313 / t301))))
+            chkI grid (truncate s314) 0 0
+            t315 <- rdU grid (truncate s314)
+            chkI grid ((truncate s314) + (truncate t301)) 0 0
+            t316 <- rdU grid ((truncate s314) + (truncate t301))
+            loopI t316 t315 $ \i317 -> do
+              let !d317 = fromIntegral i317 :: Double
+              chkI items i317 0 0
+              t318 <- rdU items i317
+              chkI cellOf (truncate t318) 0 0
+              t319 <- rdU cellOf (truncate t318)
+              if (0.5 - (abs (t319 - s312))) > 0 then do
+                if ((t318 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t318)) 0 2
+                  t320 <- rdU pos (3 * (truncate t318))
+                  t321 <- rdU pos ((3 * (truncate t318)) + 1)
+                  t322 <- rdU pos ((3 * (truncate t318)) + 2)
+                  chkI scalars (6 * (truncate t318)) 2 5
+                  t323 <- rdU scalars ((6 * (truncate t318)) + 5)
+                  t324 <- rdU scalars ((6 * (truncate t318)) + 2)
+                  let !t325 = (t34 + t324)
+                  let !t326 = (s298 + (negate t320))
+                  let !t327 = (t31 + (negate t321))
+                  let !t328 = (t32 + (negate t322))
+                  let !t329 = ((t33 + t323) - (sqrt (((t326 * t326) + (t327 * t327)) + (t328 * t328))))
+                  if (if (t325 - t329) > 0 then t329 else t325) > 0 then do
+                    t330 <- rdU locals 2
+                    chkI near (truncate t330) 0 0
+                    wrU near (truncate t330) t318
+                    wrU locals 2 (t330 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -739,67 +740,67 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t334 <- getR v38
-    loopI 0.0 t334 $ \i335 -> do
-      let !d335 = fromIntegral i335 :: Double
-      chkI near i335 0 0
-      t336 <- rdU near i335
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t336 + 1.0) * 64.0) + 40.0) d31 t336 1.0 1.0 1.0 2.0 0.0 0.0
+    t331 <- rdU locals 2
+    loopI 0.0 t331 $ \i332 -> do
+      let !d332 = fromIntegral i332 :: Double
+      chkI near i332 0 0
+      t333 <- rdU near i332
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t333 + 1.0) * 64.0) + 40.0) d29 t333 1.0 1.0 1.0 2.0 0.0 0.0
       pure ()
-    let !s337 = s301
-    let !s338 = s226
-    setR v38 0.0
-    let !t339 = ((abs s337) - 1.0)
-    let !t340 = (if (negate t339) > 0 then 0.0 else t339)
-    let !t341 = ((abs s338) - 1.0)
-    let !t342 = (if (negate t341) > 0 then 0.0 else t341)
-    if ((t35 + t37) - (sqrt ((t340 * t340) + (t342 * t342)))) > 0 then do
-      t343 <- rdU meta 4
-      t344 <- rdU meta 5
-      let !s345 = (floorF (s337 / t344))
-      let !s346 = (floorF (t33 / t344))
-      let !s347 = (floorF (s338 / t344))
-      loopI 0.0 3.0 $ \i348 -> do
-        let !d348 = fromIntegral i348 :: Double
-        loopI 0.0 3.0 $ \i349 -> do
-          let !d349 = fromIntegral i349 :: Double
-          loopI 0.0 3.0 $ \i350 -> do
-            let !d350 = fromIntegral i350 :: Double
-            let !s351 = ((s345 + d348) - 1.0)
-            let !s352 = ((s346 + d349) - 1.0)
-            let !s353 = ((s347 + d350) - 1.0)
-            let !s354 = (((((s351 + 131072.0) * 262144.0) + (s352 + 131072.0)) * 262144.0) + (s353 + 131072.0))
-            let !t355 = (((s351 * 7.3856093e7) + (s352 * 1.9349663e7)) + (s353 * 8.3492791e7))
-            let !s356 = (t355 - (t343 * (floorF (t355 / t343))))
-            chkI grid (truncate s356) 0 0
-            t357 <- rdU grid (truncate s356)
-            chkI grid ((truncate s356) + (truncate t343)) 0 0
-            t358 <- rdU grid ((truncate s356) + (truncate t343))
-            loopI t358 t357 $ \i359 -> do
-              let !d359 = fromIntegral i359 :: Double
-              chkI items i359 0 0
-              t360 <- rdU items i359
-              chkI cellOf (truncate t360) 0 0
-              t361 <- rdU cellOf (truncate t360)
-              if (0.5 - (abs (t361 - s354))) > 0 then do
-                if ((t360 - d31) + 0.5) > 0 then do
-                  chkI pos (3 * (truncate t360)) 0 2
-                  t362 <- rdU pos (3 * (truncate t360))
-                  t363 <- rdU pos ((3 * (truncate t360)) + 1)
-                  t364 <- rdU pos ((3 * (truncate t360)) + 2)
-                  chkI scalars (6 * (truncate t360)) 2 5
-                  t365 <- rdU scalars ((6 * (truncate t360)) + 5)
-                  t366 <- rdU scalars ((6 * (truncate t360)) + 2)
-                  let !t367 = (t36 + t366)
-                  let !t368 = (s337 + (negate t362))
-                  let !t369 = (t33 + (negate t363))
-                  let !t370 = (s338 + (negate t364))
-                  let !t371 = ((t35 + t365) - (sqrt (((t368 * t368) + (t369 * t369)) + (t370 * t370))))
-                  if (if (t367 - t371) > 0 then t371 else t367) > 0 then do
-                    t372 <- getR v38
-                    chkI near (truncate t372) 0 0
-                    wrU near (truncate t372) t360
-                    setR v38 (t372 + 1.0)
+    let !s334 = s298
+    let !s335 = s223
+    wrU locals 2 0.0
+    let !t336 = ((abs s334) - 1.0)
+    let !t337 = (if (negate t336) > 0 then 0.0 else t336)
+    let !t338 = ((abs s335) - 1.0)
+    let !t339 = (if (negate t338) > 0 then 0.0 else t338)
+    if ((t33 + t35) - (sqrt ((t337 * t337) + (t339 * t339)))) > 0 then do
+      t340 <- rdU meta 4
+      t341 <- rdU meta 5
+      let !s342 = (floorF (s334 / t341))
+      let !s343 = (floorF (t31 / t341))
+      let !s344 = (floorF (s335 / t341))
+      loopI 0.0 3.0 $ \i345 -> do
+        let !d345 = fromIntegral i345 :: Double
+        loopI 0.0 3.0 $ \i346 -> do
+          let !d346 = fromIntegral i346 :: Double
+          loopI 0.0 3.0 $ \i347 -> do
+            let !d347 = fromIntegral i347 :: Double
+            let !s348 = ((s342 + d345) - 1.0)
+            let !s349 = ((s343 + d346) - 1.0)
+            let !s350 = ((s344 + d347) - 1.0)
+            let !s351 = (((((s348 + 131072.0) * 262144.0) + (s349 + 131072.0)) * 262144.0) + (s350 + 131072.0))
+            let !t352 = (((s348 * 7.3856093e7) + (s349 * 1.9349663e7)) + (s350 * 8.3492791e7))
+            let !s353 = (t352 - (t340 * (floorF (t352 / t340))))
+            chkI grid (truncate s353) 0 0
+            t354 <- rdU grid (truncate s353)
+            chkI grid ((truncate s353) + (truncate t340)) 0 0
+            t355 <- rdU grid ((truncate s353) + (truncate t340))
+            loopI t355 t354 $ \i356 -> do
+              let !d356 = fromIntegral i356 :: Double
+              chkI items i356 0 0
+              t357 <- rdU items i356
+              chkI cellOf (truncate t357) 0 0
+              t358 <- rdU cellOf (truncate t357)
+              if (0.5 - (abs (t358 - s351))) > 0 then do
+                if ((t357 - d29) + 0.5) > 0 then do
+                  chkI pos (3 * (truncate t357)) 0 2
+                  t359 <- rdU pos (3 * (truncate t357))
+                  t360 <- rdU pos ((3 * (truncate t357)) + 1)
+                  t361 <- rdU pos ((3 * (truncate t357)) + 2)
+                  chkI scalars (6 * (truncate t357)) 2 5
+                  t362 <- rdU scalars ((6 * (truncate t357)) + 5)
+                  t363 <- rdU scalars ((6 * (truncate t357)) + 2)
+                  let !t364 = (t34 + t363)
+                  let !t365 = (s334 + (negate t359))
+                  let !t366 = (t31 + (negate t360))
+                  let !t367 = (s335 + (negate t361))
+                  let !t368 = ((t33 + t362) - (sqrt (((t365 * t365) + (t366 * t366)) + (t367 * t367))))
+                  if (if (t364 - t368) > 0 then t368 else t364) > 0 then do
+                    t369 <- rdU locals 2
+                    chkI near (truncate t369) 0 0
+                    wrU near (truncate t369) t357
+                    wrU locals 2 (t369 + 1.0)
                     pure ()
                   else do
                     pure ()
@@ -816,140 +817,140 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    t373 <- getR v38
-    loopI 0.0 t373 $ \i374 -> do
-      let !d374 = fromIntegral i374 :: Double
-      chkI near i374 0 0
-      t375 <- rdU near i374
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t375 + 1.0) * 64.0) + 44.0) d31 t375 1.0 1.0 1.0 2.0 0.0 2.0
+    t370 <- rdU locals 2
+    loopI 0.0 t370 $ \i371 -> do
+      let !d371 = fromIntegral i371 :: Double
+      chkI near i371 0 0
+      t372 <- rdU near i371
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t372 + 1.0) * 64.0) + 44.0) d29 t372 1.0 1.0 1.0 2.0 0.0 2.0
       pure ()
-    chkI verts (291 * i31) 0 2
-    t376 <- rdU verts (291 * i31)
-    t377 <- rdU verts ((291 * i31) + 1)
-    t378 <- rdU verts ((291 * i31) + 2)
-    v379 <- newR 1.0
-    loopI 0.0 24.0 $ \i380 -> do
-      let !d380 = fromIntegral i380 :: Double
-      chkI verts ((291 * i31) + (12 * i380)) 12 14
-      t381 <- rdU verts (((291 * i31) + (12 * i380)) + 12)
-      t382 <- rdU verts (((291 * i31) + (12 * i380)) + 13)
-      t383 <- rdU verts (((291 * i31) + (12 * i380)) + 14)
-      chkI radii ((24 * i31) + i380) 0 0
-      t384 <- rdU radii ((24 * i31) + i380)
-      t385 <- getR v379
-      let !t386 = (t381 + (negate t376))
-      let !t387 = (t382 + (negate t377))
-      let !t388 = (t383 + (negate t378))
-      let !t389 = (if t384 > 0 then ((sqrt (((t386 * t386) + (t387 * t387)) + (t388 * t388))) / t384) else 1.0)
-      setR v379 (if (t385 - t389) > 0 then t389 else t385)
+    chkI verts (291 * i29) 0 2
+    t373 <- rdU verts (291 * i29)
+    t374 <- rdU verts ((291 * i29) + 1)
+    t375 <- rdU verts ((291 * i29) + 2)
+    wrU locals 3 1.0
+    loopI 0.0 24.0 $ \i376 -> do
+      let !d376 = fromIntegral i376 :: Double
+      chkI verts ((291 * i29) + (12 * i376)) 12 14
+      t377 <- rdU verts (((291 * i29) + (12 * i376)) + 12)
+      t378 <- rdU verts (((291 * i29) + (12 * i376)) + 13)
+      t379 <- rdU verts (((291 * i29) + (12 * i376)) + 14)
+      chkI radii ((24 * i29) + i376) 0 0
+      t380 <- rdU radii ((24 * i29) + i376)
+      t381 <- rdU locals 3
+      let !t382 = (t377 + (negate t373))
+      let !t383 = (t378 + (negate t374))
+      let !t384 = (t379 + (negate t375))
+      let !t385 = (if t380 > 0 then ((sqrt (((t382 * t382) + (t383 * t383)) + (t384 * t384))) / t380) else 1.0)
+      wrU locals 3 (if (t381 - t385) > 0 then t385 else t381)
       pure ()
-    t390 <- getR v379
-    if (0.8 - t390) > 0 then do
-      v391 <- newR 0.0
-      v392 <- newR 0.0
-      v393 <- newR 0.0
-      v394 <- newR 0.0
-      v395 <- newR 0.0
-      v396 <- newR 0.0
-      v397 <- newR 0.0
-      loopI 0.0 24.0 $ \i398 -> do
-        let !d398 = fromIntegral i398 :: Double
-        chkI radii ((24 * i31) + i398) 0 0
-        t399 <- rdU radii ((24 * i31) + i398)
-        loopI 6.0 12.0 $ \i400 -> do
-          let !d400 = fromIntegral i400 :: Double
-          let !t401 = (d398 + d400)
-          chkI radii (truncate ((24.0 * d31) + (t401 - (24.0 * (floorF (t401 / 24.0)))))) 0 0
-          t402 <- rdU radii (truncate ((24.0 * d31) + (t401 - (24.0 * (floorF (t401 / 24.0))))))
-          loopI 1.0 4.0 $ \i403 -> do
-            let !d403 = fromIntegral i403 :: Double
-            chkI verts ((291 * i31) + (12 * i398) + (3 * i403)) 0 5
-            t404 <- rdU verts ((291 * i31) + (12 * i398) + (3 * i403))
-            t405 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 1)
-            t406 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 2)
-            t407 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 3)
-            t408 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 4)
-            t409 <- rdU verts (((291 * i31) + (12 * i398) + (3 * i403)) + 5)
-            loopI 1.0 4.0 $ \i410 -> do
-              let !d410 = fromIntegral i410 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0)))) 0 0
-              t411 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 1.0)) 0 0
-              t412 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 2.0)) 0 0
-              t413 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + (d410 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410))) 0 0
-              t414 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 1.0)) 0 0
-              t415 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 2.0)) 0 0
-              t416 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)) + d410)) + 2.0))
-              t417 <- getR v391
-              let !t418 = (negate t411)
-              let !t419 = (t414 + t418)
-              let !t420 = (negate t412)
-              let !t421 = (t415 + t420)
-              let !t422 = (negate t413)
-              let !t423 = (t416 + t422)
-              let !t424 = (((t419 * t419) + (t421 * t421)) + (t423 * t423))
-              let !t425 = (t407 + (negate t404))
-              let !t426 = (t408 + (negate t405))
-              let !t427 = (t409 + (negate t406))
-              let !t428 = (((t425 * t419) + (t426 * t421)) + (t427 * t423))
-              let !t429 = (((t425 * t425) + (t426 * t426)) + (t427 * t427))
-              let !t430 = ((t429 * t424) - (t428 * t428))
-              let !t431 = (t404 + t418)
-              let !t432 = (t405 + t420)
-              let !t433 = (t406 + t422)
-              let !t434 = (((t419 * t431) + (t421 * t432)) + (t423 * t433))
-              let !t435 = (((t425 * t431) + (t426 * t432)) + (t427 * t433))
-              let !t436 = (if ((abs t430) - 1.0e-300) > 0 then (((t428 * t434) - (t435 * t424)) / t430) else 0.0)
-              let !t437 = (if (t436 - 1.0) > 0 then 1.0 else t436)
-              let !t438 = (if (t430 - ((1.0e-12 * t429) * t424)) > 0 then (if (negate t437) > 0 then 0.0 else t437) else 0.0)
-              let !t439 = (if ((abs t424) - 1.0e-300) > 0 then (((t428 * t438) + t434) / t424) else 0.0)
-              let !t440 = ((abs t429) - 1.0e-300)
-              let !t441 = (if t440 > 0 then ((negate t435) / t429) else 0.0)
-              let !t442 = (if (t441 - 1.0) > 0 then 1.0 else t441)
-              let !t443 = (t439 - 1.0)
-              let !t444 = (if t440 > 0 then ((t428 - t435) / t429) else 0.0)
-              let !t445 = (if (t444 - 1.0) > 0 then 1.0 else t444)
-              let !t446 = (if (negate t439) > 0 then (if (negate t442) > 0 then 0.0 else t442) else (if t443 > 0 then (if (negate t445) > 0 then 0.0 else t445) else t438))
-              let !t447 = (if t443 > 0 then 1.0 else t439)
-              let !t448 = (if (negate t447) > 0 then 0.0 else t447)
-              let !t449 = ((0.5 * ((t399 - ((t399 * (d403 + t446)) / 4.0)) + (t402 - ((t402 * (d410 + t448)) / 4.0)))) - t417)
-              let !t450 = ((t404 + (t446 * t425)) + (negate (t411 + (t448 * t419))))
-              let !t451 = ((t405 + (t446 * t426)) + (negate (t412 + (t448 * t421))))
-              let !t452 = ((t406 + (t446 * t427)) + (negate (t413 + (t448 * t423))))
-              let !t453 = ((0.3 * ((if (t402 - t399) > 0 then t399 else t402) / 4.0)) - (sqrt (((t450 * t450) + (t451 * t451)) + (t452 * t452))))
-              if (if (t449 - t453) > 0 then t453 else t449) > 0 then do
-                setR v391 (0.5 * ((t399 - ((t399 * (d403 + t446)) / 4.0)) + (t402 - ((t402 * (d410 + t448)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i398)) 3 5
-                t454 <- rdU verts (((291 * i31) + (12 * i398)) + 3)
-                t455 <- rdU verts (((291 * i31) + (12 * i398)) + 4)
-                t456 <- rdU verts (((291 * i31) + (12 * i398)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0)))) 0 0
-                t457 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t458 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t459 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t401 - (24.0 * (floorF (t401 / 24.0)))) * 4.0))) + 2.0))
-                setR v392 (t404 + (t446 * t425))
-                setR v393 (t405 + (t446 * t426))
-                setR v394 (t406 + (t446 * t427))
-                let !t460 = (negate t376)
-                let !t461 = (t454 + t460)
-                let !t462 = (negate t377)
-                let !t463 = (t455 + t462)
-                let !t464 = (negate t378)
-                let !t465 = (t456 + t464)
-                let !t466 = (sqrt (((t461 * t461) + (t463 * t463)) + (t465 * t465)))
-                let !t467 = (t457 + t460)
-                let !t468 = (t458 + t462)
-                let !t469 = (t459 + t464)
-                let !t470 = (sqrt (((t467 * t467) + (t468 * t468)) + (t469 * t469)))
-                setR v395 (negate (((if t466 > 0 then (recip (if (t466 - 1.0e-300) > 0 then t466 else 1.0e-300)) else 0.0) * t461) + ((if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0) * t467)))
-                setR v396 (negate (((if t466 > 0 then (recip (if (t466 - 1.0e-300) > 0 then t466 else 1.0e-300)) else 0.0) * t463) + ((if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0) * t468)))
-                setR v397 (negate (((if t466 > 0 then (recip (if (t466 - 1.0e-300) > 0 then t466 else 1.0e-300)) else 0.0) * t465) + ((if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0) * t469)))
+    t386 <- rdU locals 3
+    if (0.8 - t386) > 0 then do
+      wrU locals 4 0.0
+      wrU locals 5 0.0
+      wrU locals 6 0.0
+      wrU locals 7 0.0
+      wrU locals 8 0.0
+      wrU locals 9 0.0
+      wrU locals 10 0.0
+      loopI 0.0 24.0 $ \i387 -> do
+        let !d387 = fromIntegral i387 :: Double
+        chkI radii ((24 * i29) + i387) 0 0
+        t388 <- rdU radii ((24 * i29) + i387)
+        loopI 6.0 12.0 $ \i389 -> do
+          let !d389 = fromIntegral i389 :: Double
+          let !t390 = (d387 + d389)
+          chkI radii (truncate ((24.0 * d29) + (t390 - (24.0 * (floorF (t390 / 24.0)))))) 0 0
+          t391 <- rdU radii (truncate ((24.0 * d29) + (t390 - (24.0 * (floorF (t390 / 24.0))))))
+          loopI 1.0 4.0 $ \i392 -> do
+            let !d392 = fromIntegral i392 :: Double
+            chkI verts ((291 * i29) + (12 * i387) + (3 * i392)) 0 5
+            t393 <- rdU verts ((291 * i29) + (12 * i387) + (3 * i392))
+            t394 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 1)
+            t395 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 2)
+            t396 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 3)
+            t397 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 4)
+            t398 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 5)
+            loopI 1.0 4.0 $ \i399 -> do
+              let !d399 = fromIntegral i399 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0)))) 0 0
+              t400 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 1.0)) 0 0
+              t401 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 2.0)) 0 0
+              t402 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399))) 0 0
+              t403 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 1.0)) 0 0
+              t404 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 2.0)) 0 0
+              t405 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 2.0))
+              t406 <- rdU locals 4
+              let !t407 = (negate t400)
+              let !t408 = (t403 + t407)
+              let !t409 = (negate t401)
+              let !t410 = (t404 + t409)
+              let !t411 = (negate t402)
+              let !t412 = (t405 + t411)
+              let !t413 = (((t408 * t408) + (t410 * t410)) + (t412 * t412))
+              let !t414 = (t396 + (negate t393))
+              let !t415 = (t397 + (negate t394))
+              let !t416 = (t398 + (negate t395))
+              let !t417 = (((t414 * t408) + (t415 * t410)) + (t416 * t412))
+              let !t418 = (((t414 * t414) + (t415 * t415)) + (t416 * t416))
+              let !t419 = ((t418 * t413) - (t417 * t417))
+              let !t420 = (t393 + t407)
+              let !t421 = (t394 + t409)
+              let !t422 = (t395 + t411)
+              let !t423 = (((t408 * t420) + (t410 * t421)) + (t412 * t422))
+              let !t424 = (((t414 * t420) + (t415 * t421)) + (t416 * t422))
+              let !t425 = (if ((abs t419) - 1.0e-300) > 0 then (((t417 * t423) - (t424 * t413)) / t419) else 0.0)
+              let !t426 = (if (t425 - 1.0) > 0 then 1.0 else t425)
+              let !t427 = (if (t419 - ((1.0e-12 * t418) * t413)) > 0 then (if (negate t426) > 0 then 0.0 else t426) else 0.0)
+              let !t428 = (if ((abs t413) - 1.0e-300) > 0 then (((t417 * t427) + t423) / t413) else 0.0)
+              let !t429 = ((abs t418) - 1.0e-300)
+              let !t430 = (if t429 > 0 then ((negate t424) / t418) else 0.0)
+              let !t431 = (if (t430 - 1.0) > 0 then 1.0 else t430)
+              let !t432 = (t428 - 1.0)
+              let !t433 = (if t429 > 0 then ((t417 - t424) / t418) else 0.0)
+              let !t434 = (if (t433 - 1.0) > 0 then 1.0 else t433)
+              let !t435 = (if (negate t428) > 0 then (if (negate t431) > 0 then 0.0 else t431) else (if t432 > 0 then (if (negate t434) > 0 then 0.0 else t434) else t427))
+              let !t436 = (if t432 > 0 then 1.0 else t428)
+              let !t437 = (if (negate t436) > 0 then 0.0 else t436)
+              let !t438 = ((0.5 * ((t388 - ((t388 * (d392 + t435)) / 4.0)) + (t391 - ((t391 * (d399 + t437)) / 4.0)))) - t406)
+              let !t439 = ((t393 + (t435 * t414)) + (negate (t400 + (t437 * t408))))
+              let !t440 = ((t394 + (t435 * t415)) + (negate (t401 + (t437 * t410))))
+              let !t441 = ((t395 + (t435 * t416)) + (negate (t402 + (t437 * t412))))
+              let !t442 = ((0.3 * ((if (t391 - t388) > 0 then t388 else t391) / 4.0)) - (sqrt (((t439 * t439) + (t440 * t440)) + (t441 * t441))))
+              if (if (t438 - t442) > 0 then t442 else t438) > 0 then do
+                wrU locals 4 (0.5 * ((t388 - ((t388 * (d392 + t435)) / 4.0)) + (t391 - ((t391 * (d399 + t437)) / 4.0))))
+                chkI verts ((291 * i29) + (12 * i387)) 3 5
+                t443 <- rdU verts (((291 * i29) + (12 * i387)) + 3)
+                t444 <- rdU verts (((291 * i29) + (12 * i387)) + 4)
+                t445 <- rdU verts (((291 * i29) + (12 * i387)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)))) 0 0
+                t446 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t447 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t448 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 5 (t393 + (t435 * t414))
+                wrU locals 6 (t394 + (t435 * t415))
+                wrU locals 7 (t395 + (t435 * t416))
+                let !t449 = (negate t373)
+                let !t450 = (t443 + t449)
+                let !t451 = (negate t374)
+                let !t452 = (t444 + t451)
+                let !t453 = (negate t375)
+                let !t454 = (t445 + t453)
+                let !t455 = (sqrt (((t450 * t450) + (t452 * t452)) + (t454 * t454)))
+                let !t456 = (t446 + t449)
+                let !t457 = (t447 + t451)
+                let !t458 = (t448 + t453)
+                let !t459 = (sqrt (((t456 * t456) + (t457 * t457)) + (t458 * t458)))
+                wrU locals 8 (negate (((if t455 > 0 then (recip (if (t455 - 1.0e-300) > 0 then t455 else 1.0e-300)) else 0.0) * t450) + ((if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0) * t456)))
+                wrU locals 9 (negate (((if t455 > 0 then (recip (if (t455 - 1.0e-300) > 0 then t455 else 1.0e-300)) else 0.0) * t452) + ((if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0) * t457)))
+                wrU locals 10 (negate (((if t455 > 0 then (recip (if (t455 - 1.0e-300) > 0 then t455 else 1.0e-300)) else 0.0) * t454) + ((if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0) * t458)))
                 pure ()
               else do
                 pure ()
@@ -957,112 +958,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t471 <- getR v391
-      if t471 > 0 then do
-        t472 <- getR v392
-        t473 <- getR v393
-        t474 <- getR v394
-        t475 <- getR v395
-        t476 <- getR v396
-        t477 <- getR v397
-        let !t478 = (t476 + (negate t476))
-        let !t479 = (sqrt (((t475 * t475) + (t478 * t478)) + (t477 * t477)))
-        let !t480 = (if t479 > 0 then (recip (if (t479 - 1.0e-300) > 0 then t479 else 1.0e-300)) else 0.0)
-        let !s481 = (t480 * t475)
-        let !s482 = (t480 * t478)
-        let !s483 = (t480 * t477)
-        t484 <- rdU meta 2
-        t485 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t485) > 0 then 1.0 else t485)) - t484) - 0.5) > 0 then do
-          wrU meta 2 (t484 + 1.0)
-          t486 <- rdU pos (3 * i31)
-          t487 <- rdU pos ((3 * i31) + 1)
-          t488 <- rdU pos ((3 * i31) + 2)
-          chkI normal (3 * i31) 0 2
-          t489 <- rdU normal (3 * i31)
-          t490 <- rdU normal ((3 * i31) + 1)
-          t491 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t492 <- rdU axis (3 * i31)
-          t493 <- rdU axis ((3 * i31) + 1)
-          t494 <- rdU axis ((3 * i31) + 2)
-          let !s495 = ((t490 * t494) - (t491 * t493))
-          let !s496 = ((t491 * t492) - (t489 * t494))
-          let !s497 = ((t489 * t493) - (t490 * t492))
-          chkI scalars (6 * i31) 0 0
-          t498 <- rdU scalars (6 * i31)
-          t499 <- rdU scalars ((6 * i31) + 5)
-          t500 <- rdU scalars ((6 * i31) + 2)
-          t501 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t484)) 0 29
-          wrU contacts (30 * (truncate t484)) d31
-          wrU contacts ((30 * (truncate t484)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t484)) + 2) d31
-          wrU contacts ((30 * (truncate t484)) + 3) 12.0
-          wrU contacts ((30 * (truncate t484)) + 4) (s481 + (negate ((((t489 * s481) + (t490 * s482)) + (t491 * s483)) * t489)))
-          wrU contacts ((30 * (truncate t484)) + 5) (s482 + (negate ((((t489 * s481) + (t490 * s482)) + (t491 * s483)) * t490)))
-          wrU contacts ((30 * (truncate t484)) + 6) (s483 + (negate ((((t489 * s481) + (t490 * s482)) + (t491 * s483)) * t491)))
-          wrU contacts ((30 * (truncate t484)) + 7) 0.0
-          wrU contacts ((30 * (truncate t484)) + 12) 0.0
-          wrU contacts ((30 * (truncate t484)) + 13) 0.0
-          wrU contacts ((30 * (truncate t484)) + 14) 0.0
-          wrU contacts ((30 * (truncate t484)) + 15) 0.0
-          wrU contacts ((30 * (truncate t484)) + 20) t471
-          wrU contacts ((30 * (truncate t484)) + 26) 0.6
-          wrU contacts ((30 * (truncate t484)) + 27) t472
-          wrU contacts ((30 * (truncate t484)) + 28) t473
-          wrU contacts ((30 * (truncate t484)) + 29) t474
+      t460 <- rdU locals 4
+      if t460 > 0 then do
+        t461 <- rdU locals 5
+        t462 <- rdU locals 6
+        t463 <- rdU locals 7
+        t464 <- rdU locals 8
+        t465 <- rdU locals 9
+        t466 <- rdU locals 10
+        let !t467 = (t465 + (negate t465))
+        let !t468 = (sqrt (((t464 * t464) + (t467 * t467)) + (t466 * t466)))
+        let !t469 = (if t468 > 0 then (recip (if (t468 - 1.0e-300) > 0 then t468 else 1.0e-300)) else 0.0)
+        let !s470 = (t469 * t464)
+        let !s471 = (t469 * t467)
+        let !s472 = (t469 * t466)
+        t473 <- rdU meta 2
+        t474 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t474) > 0 then 1.0 else t474)) - t473) - 0.5) > 0 then do
+          wrU meta 2 (t473 + 1.0)
+          t475 <- rdU pos (3 * i29)
+          t476 <- rdU pos ((3 * i29) + 1)
+          t477 <- rdU pos ((3 * i29) + 2)
+          chkI normal (3 * i29) 0 2
+          t478 <- rdU normal (3 * i29)
+          t479 <- rdU normal ((3 * i29) + 1)
+          t480 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t481 <- rdU axis (3 * i29)
+          t482 <- rdU axis ((3 * i29) + 1)
+          t483 <- rdU axis ((3 * i29) + 2)
+          let !s484 = ((t479 * t483) - (t480 * t482))
+          let !s485 = ((t480 * t481) - (t478 * t483))
+          let !s486 = ((t478 * t482) - (t479 * t481))
+          chkI scalars (6 * i29) 0 0
+          t487 <- rdU scalars (6 * i29)
+          t488 <- rdU scalars ((6 * i29) + 5)
+          t489 <- rdU scalars ((6 * i29) + 2)
+          t490 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t473)) 0 29
+          wrU contacts (30 * (truncate t473)) d29
+          wrU contacts ((30 * (truncate t473)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t473)) + 2) d29
+          wrU contacts ((30 * (truncate t473)) + 3) 12.0
+          wrU contacts ((30 * (truncate t473)) + 4) (s470 + (negate ((((t478 * s470) + (t479 * s471)) + (t480 * s472)) * t478)))
+          wrU contacts ((30 * (truncate t473)) + 5) (s471 + (negate ((((t478 * s470) + (t479 * s471)) + (t480 * s472)) * t479)))
+          wrU contacts ((30 * (truncate t473)) + 6) (s472 + (negate ((((t478 * s470) + (t479 * s471)) + (t480 * s472)) * t480)))
+          wrU contacts ((30 * (truncate t473)) + 7) 0.0
+          wrU contacts ((30 * (truncate t473)) + 12) 0.0
+          wrU contacts ((30 * (truncate t473)) + 13) 0.0
+          wrU contacts ((30 * (truncate t473)) + 14) 0.0
+          wrU contacts ((30 * (truncate t473)) + 15) 0.0
+          wrU contacts ((30 * (truncate t473)) + 20) t460
+          wrU contacts ((30 * (truncate t473)) + 26) 0.6
+          wrU contacts ((30 * (truncate t473)) + 27) t461
+          wrU contacts ((30 * (truncate t473)) + 28) t462
+          wrU contacts ((30 * (truncate t473)) + 29) t463
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t502 <- rdU pos (-3)
-            t503 <- rdU pos (-2)
-            t504 <- rdU pos (-1)
+            t491 <- rdU pos (-3)
+            t492 <- rdU pos (-2)
+            t493 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t505 <- rdU normal (-3)
-            t506 <- rdU normal (-2)
-            t507 <- rdU normal (-1)
+            t494 <- rdU normal (-3)
+            t495 <- rdU normal (-2)
+            t496 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t508 <- rdU axis (-3)
-            t509 <- rdU axis (-2)
-            t510 <- rdU axis (-1)
-            let !s511 = ((t506 * t510) - (t507 * t509))
-            let !s512 = ((t507 * t508) - (t505 * t510))
-            let !s513 = ((t505 * t509) - (t506 * t508))
+            t497 <- rdU axis (-3)
+            t498 <- rdU axis (-2)
+            t499 <- rdU axis (-1)
+            let !s500 = ((t495 * t499) - (t496 * t498))
+            let !s501 = ((t496 * t497) - (t494 * t499))
+            let !s502 = ((t494 * t498) - (t495 * t497))
             chkI scalars 0 (-6) (-1)
-            t514 <- rdU scalars (-6)
-            t515 <- rdU scalars (-1)
-            t516 <- rdU scalars (-4)
-            t517 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t484)) + 8) (s481 + (negate ((((t505 * s481) + (t506 * s482)) + (t507 * s483)) * t505)))
-            wrU contacts ((30 * (truncate t484)) + 9) (s482 + (negate ((((t505 * s481) + (t506 * s482)) + (t507 * s483)) * t506)))
-            wrU contacts ((30 * (truncate t484)) + 10) (s483 + (negate ((((t505 * s481) + (t506 * s482)) + (t507 * s483)) * t507)))
-            let !t518 = (t473 + (negate t503))
-            let !t519 = (t474 + (negate t504))
-            let !t520 = (t472 + (negate t502))
-            wrU contacts ((30 * (truncate t484)) + 11) (((((t518 * s483) - (t519 * s482)) * t505) + (((t519 * s481) - (t520 * s483)) * t506)) + (((t520 * s482) - (t518 * s481)) * t507))
-            let !t521 = ((t490 * s483) - (t491 * s482))
-            wrU contacts ((30 * (truncate t484)) + 16) (t521 + (negate ((((t505 * t521) + (t506 * ((t491 * s481) - (t489 * s483)))) + (t507 * ((t489 * s482) - (t490 * s481)))) * t505)))
-            let !t522 = ((t491 * s481) - (t489 * s483))
-            wrU contacts ((30 * (truncate t484)) + 17) (t522 + (negate ((((t505 * t521) + (t506 * t522)) + (t507 * ((t489 * s482) - (t490 * s481)))) * t506)))
-            let !t523 = ((t489 * s482) - (t490 * s481))
-            wrU contacts ((30 * (truncate t484)) + 18) (t523 + (negate ((((t505 * t521) + (t506 * t522)) + (t507 * t523)) * t507)))
-            wrU contacts ((30 * (truncate t484)) + 19) (((((t518 * t523) - (t519 * t522)) * t505) + (((t519 * t521) - (t520 * t523)) * t506)) + (((t520 * t522) - (t518 * t521)) * t507))
+            t503 <- rdU scalars (-6)
+            t504 <- rdU scalars (-1)
+            t505 <- rdU scalars (-4)
+            t506 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t473)) + 8) (s470 + (negate ((((t494 * s470) + (t495 * s471)) + (t496 * s472)) * t494)))
+            wrU contacts ((30 * (truncate t473)) + 9) (s471 + (negate ((((t494 * s470) + (t495 * s471)) + (t496 * s472)) * t495)))
+            wrU contacts ((30 * (truncate t473)) + 10) (s472 + (negate ((((t494 * s470) + (t495 * s471)) + (t496 * s472)) * t496)))
+            let !t507 = (t462 + (negate t492))
+            let !t508 = (t463 + (negate t493))
+            let !t509 = (t461 + (negate t491))
+            wrU contacts ((30 * (truncate t473)) + 11) (((((t507 * s472) - (t508 * s471)) * t494) + (((t508 * s470) - (t509 * s472)) * t495)) + (((t509 * s471) - (t507 * s470)) * t496))
+            let !t510 = ((t479 * s472) - (t480 * s471))
+            wrU contacts ((30 * (truncate t473)) + 16) (t510 + (negate ((((t494 * t510) + (t495 * ((t480 * s470) - (t478 * s472)))) + (t496 * ((t478 * s471) - (t479 * s470)))) * t494)))
+            let !t511 = ((t480 * s470) - (t478 * s472))
+            wrU contacts ((30 * (truncate t473)) + 17) (t511 + (negate ((((t494 * t510) + (t495 * t511)) + (t496 * ((t478 * s471) - (t479 * s470)))) * t495)))
+            let !t512 = ((t478 * s471) - (t479 * s470))
+            wrU contacts ((30 * (truncate t473)) + 18) (t512 + (negate ((((t494 * t510) + (t495 * t511)) + (t496 * t512)) * t496)))
+            wrU contacts ((30 * (truncate t473)) + 19) (((((t507 * t512) - (t508 * t511)) * t494) + (((t508 * t510) - (t509 * t512)) * t495)) + (((t509 * t511) - (t507 * t510)) * t496))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t484)) + 8) 0.0
-            wrU contacts ((30 * (truncate t484)) + 9) 0.0
-            wrU contacts ((30 * (truncate t484)) + 10) 0.0
-            wrU contacts ((30 * (truncate t484)) + 11) 0.0
-            wrU contacts ((30 * (truncate t484)) + 16) 0.0
-            wrU contacts ((30 * (truncate t484)) + 17) 0.0
-            wrU contacts ((30 * (truncate t484)) + 18) 0.0
-            wrU contacts ((30 * (truncate t484)) + 19) 0.0
+            wrU contacts ((30 * (truncate t473)) + 8) 0.0
+            wrU contacts ((30 * (truncate t473)) + 9) 0.0
+            wrU contacts ((30 * (truncate t473)) + 10) 0.0
+            wrU contacts ((30 * (truncate t473)) + 11) 0.0
+            wrU contacts ((30 * (truncate t473)) + 16) 0.0
+            wrU contacts ((30 * (truncate t473)) + 17) 0.0
+            wrU contacts ((30 * (truncate t473)) + 18) 0.0
+            wrU contacts ((30 * (truncate t473)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t524 <- rdU meta 6
-          wrU meta 6 (t524 + 1.0)
+          t513 <- rdU meta 6
+          wrU meta 6 (t513 + 1.0)
           pure ()
         pure ()
       else do
@@ -1073,8 +1074,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -1113,690 +1115,690 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (1.0 - t139)
-      let !t144 = (t121 + (t138 * ((t141 * t127) + (t142 * s130))))
-      let !t145 = (if (if ((abs t144) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t144 + (negate t144)) else t144)
-      let !t146 = (if (if ((abs t145) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t145 + (negate t145)) else t145)
-      let !s147 = ((t139 * (t120 + (t138 * ((t141 * t126) + (t142 * s129))))) + (t143 * t120))
-      let !s148 = ((t139 * (if (if ((abs t146) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t146 + (negate t146)) else t146)) + (t143 * t121))
-      let !s149 = ((t139 * (t122 + (t138 * ((t141 * t128) + (t142 * s131))))) + (t143 * t122))
-      let !t150 = ((t141 * t126) + (t142 * s129))
-      let !t151 = ((t141 * t127) + (t142 * s130))
-      let !t152 = ((t141 * t128) + (t142 * s131))
-      let !t153 = (sqrt (((t150 * t150) + (t151 * t151)) + (t152 * t152)))
-      let !t154 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t155 = (t154 * ((t120 + (t138 * t150)) + (negate t120)))
-      let !t156 = (t154 * ((if (if ((abs t146) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t146 + (negate t146)) else t146) + (negate t121)))
-      let !t157 = (t156 + (negate t156))
-      let !t158 = (t154 * ((t122 + (t138 * t152)) + (negate t122)))
-      let !t159 = (sqrt (((t155 * t155) + (t157 * t157)) + (t158 * t158)))
-      let !t160 = (if t159 > 0 then (recip (if (t159 - 1.0e-300) > 0 then t159 else 1.0e-300)) else 0.0)
-      let !s161 = ((t139 * (t153 * (t160 * t155))) + (t143 * t150))
-      let !s162 = ((t139 * (t153 * (t160 * t157))) + (t143 * t151))
-      let !s163 = ((t139 * (t153 * (t160 * t158))) + (t143 * t152))
-      let !t164 = (s148 + (t138 * s162))
-      let !t165 = (if (if ((abs t164) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t164 + (negate t164)) else t164)
-      let !t166 = (if (if ((abs t165) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t165 + (negate t165)) else t165)
-      let !s167 = ((t139 * (s147 + (t138 * s161))) + (t143 * s147))
-      let !s168 = ((t139 * (if (if ((abs t166) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t166 + (negate t166)) else t166)) + (t143 * s148))
-      let !s169 = ((t139 * (s149 + (t138 * s163))) + (t143 * s149))
-      let !t170 = (sqrt (((s161 * s161) + (s162 * s162)) + (s163 * s163)))
-      let !t171 = (t154 * ((s147 + (t138 * s161)) + (negate s147)))
-      let !t172 = (t154 * ((if (if ((abs t166) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t166 + (negate t166)) else t166) + (negate s148)))
-      let !t173 = (t172 + (negate t172))
-      let !t174 = (t154 * ((s149 + (t138 * s163)) + (negate s149)))
-      let !t175 = (sqrt (((t171 * t171) + (t173 * t173)) + (t174 * t174)))
-      let !t176 = (if t175 > 0 then (recip (if (t175 - 1.0e-300) > 0 then t175 else 1.0e-300)) else 0.0)
-      let !s177 = ((t139 * (t170 * (t176 * t171))) + (t143 * s161))
-      let !s178 = ((t139 * (t170 * (t176 * t173))) + (t143 * s162))
-      let !s179 = ((t139 * (t170 * (t176 * t174))) + (t143 * s163))
-      let !t180 = (s168 + (t138 * s178))
-      let !t181 = (if (if ((abs t180) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t180 + (negate t180)) else t180)
-      let !t182 = (if (if ((abs t181) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t181 + (negate t181)) else t181)
-      let !s183 = ((t139 * (s167 + (t138 * s177))) + (t143 * s167))
-      let !s184 = ((t139 * (if (if ((abs t182) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t182 + (negate t182)) else t182)) + (t143 * s168))
-      let !s185 = ((t139 * (s169 + (t138 * s179))) + (t143 * s169))
-      let !t186 = (sqrt (((s177 * s177) + (s178 * s178)) + (s179 * s179)))
-      let !t187 = (t154 * ((s167 + (t138 * s177)) + (negate s167)))
-      let !t188 = (t154 * ((if (if ((abs t182) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t182 + (negate t182)) else t182) + (negate s168)))
-      let !t189 = (t188 + (negate t188))
-      let !t190 = (t154 * ((s169 + (t138 * s179)) + (negate s169)))
-      let !t191 = (sqrt (((t187 * t187) + (t189 * t189)) + (t190 * t190)))
-      let !t192 = (if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0)
-      let !s193 = ((t139 * (t186 * (t192 * t187))) + (t143 * s177))
-      let !s194 = ((t139 * (t186 * (t192 * t189))) + (t143 * s178))
-      let !s195 = ((t139 * (t186 * (t192 * t190))) + (t143 * s179))
-      let !t196 = (s184 + (t138 * s194))
-      let !t197 = (if (if ((abs t196) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t196 + (negate t196)) else t196)
-      let !t198 = (if (if ((abs t197) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t197 + (negate t197)) else t197)
-      let !s199 = ((t139 * (s183 + (t138 * s193))) + (t143 * s183))
-      let !s200 = ((t139 * (if (if ((abs t198) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t198 + (negate t198)) else t198)) + (t143 * s184))
-      let !s201 = ((t139 * (s185 + (t138 * s195))) + (t143 * s185))
-      let !t202 = (sqrt (((s193 * s193) + (s194 * s194)) + (s195 * s195)))
-      let !t203 = (t154 * ((s183 + (t138 * s193)) + (negate s183)))
-      let !t204 = (t154 * ((if (if ((abs t198) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t198 + (negate t198)) else t198) + (negate s184)))
-      let !t205 = (t204 + (negate t204))
-      let !t206 = (t154 * ((s185 + (t138 * s195)) + (negate s185)))
-      let !t207 = (sqrt (((t203 * t203) + (t205 * t205)) + (t206 * t206)))
-      let !t208 = (if t207 > 0 then (recip (if (t207 - 1.0e-300) > 0 then t207 else 1.0e-300)) else 0.0)
-      let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
-      let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
-      let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdU mouse 4
-      t213 <- rdU mouse 5
-      t214 <- rdU mouse 6
-      let !t215 = (t212 - ((floorF ((t212 + 1.0) / 2.0)) * 2.0))
-      let !t216 = (negate s199)
-      let !t217 = (t215 + t216)
-      let !t218 = (t213 + (negate s200))
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (1.0 - t134)
+      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
+      let !t140 = (if (if ((abs t139) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t139 + (negate t139)) else t139)
+      let !t141 = (if (if ((abs t140) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t140 + (negate t140)) else t140)
+      let !s142 = ((t134 * (t115 + (t133 * ((t136 * t121) + (t137 * s124))))) + (t138 * t115))
+      let !s143 = ((t134 * (if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141)) + (t138 * t116))
+      let !s144 = ((t134 * (t117 + (t133 * ((t136 * t123) + (t137 * s126))))) + (t138 * t117))
+      let !t145 = ((t136 * t121) + (t137 * s124))
+      let !t146 = ((t136 * t122) + (t137 * s125))
+      let !t147 = ((t136 * t123) + (t137 * s126))
+      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
+      let !t149 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t150 = (t149 * ((t115 + (t133 * t145)) + (negate t115)))
+      let !t151 = (t149 * ((if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141) + (negate t116)))
+      let !t152 = (t151 + (negate t151))
+      let !t153 = (t149 * ((t117 + (t133 * t147)) + (negate t117)))
+      let !t154 = (sqrt (((t150 * t150) + (t152 * t152)) + (t153 * t153)))
+      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
+      let !s156 = ((t134 * (t148 * (t155 * t150))) + (t138 * t145))
+      let !s157 = ((t134 * (t148 * (t155 * t152))) + (t138 * t146))
+      let !s158 = ((t134 * (t148 * (t155 * t153))) + (t138 * t147))
+      let !t159 = (s143 + (t133 * s157))
+      let !t160 = (if (if ((abs t159) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t159 + (negate t159)) else t159)
+      let !t161 = (if (if ((abs t160) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t160 + (negate t160)) else t160)
+      let !s162 = ((t134 * (s142 + (t133 * s156))) + (t138 * s142))
+      let !s163 = ((t134 * (if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161)) + (t138 * s143))
+      let !s164 = ((t134 * (s144 + (t133 * s158))) + (t138 * s144))
+      let !t165 = (sqrt (((s156 * s156) + (s157 * s157)) + (s158 * s158)))
+      let !t166 = (t149 * ((s142 + (t133 * s156)) + (negate s142)))
+      let !t167 = (t149 * ((if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161) + (negate s143)))
+      let !t168 = (t167 + (negate t167))
+      let !t169 = (t149 * ((s144 + (t133 * s158)) + (negate s144)))
+      let !t170 = (sqrt (((t166 * t166) + (t168 * t168)) + (t169 * t169)))
+      let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
+      let !s172 = ((t134 * (t165 * (t171 * t166))) + (t138 * s156))
+      let !s173 = ((t134 * (t165 * (t171 * t168))) + (t138 * s157))
+      let !s174 = ((t134 * (t165 * (t171 * t169))) + (t138 * s158))
+      let !t175 = (s163 + (t133 * s173))
+      let !t176 = (if (if ((abs t175) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t175 + (negate t175)) else t175)
+      let !t177 = (if (if ((abs t176) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t176 + (negate t176)) else t176)
+      let !s178 = ((t134 * (s162 + (t133 * s172))) + (t138 * s162))
+      let !s179 = ((t134 * (if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177)) + (t138 * s163))
+      let !s180 = ((t134 * (s164 + (t133 * s174))) + (t138 * s164))
+      let !t181 = (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))
+      let !t182 = (t149 * ((s162 + (t133 * s172)) + (negate s162)))
+      let !t183 = (t149 * ((if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177) + (negate s163)))
+      let !t184 = (t183 + (negate t183))
+      let !t185 = (t149 * ((s164 + (t133 * s174)) + (negate s164)))
+      let !t186 = (sqrt (((t182 * t182) + (t184 * t184)) + (t185 * t185)))
+      let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
+      let !s188 = ((t134 * (t181 * (t187 * t182))) + (t138 * s172))
+      let !s189 = ((t134 * (t181 * (t187 * t184))) + (t138 * s173))
+      let !s190 = ((t134 * (t181 * (t187 * t185))) + (t138 * s174))
+      let !t191 = (s179 + (t133 * s189))
+      let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
+      let !t193 = (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)
+      let !s194 = ((t134 * (s178 + (t133 * s188))) + (t138 * s178))
+      let !s195 = ((t134 * (if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193)) + (t138 * s179))
+      let !s196 = ((t134 * (s180 + (t133 * s190))) + (t138 * s180))
+      let !t197 = (sqrt (((s188 * s188) + (s189 * s189)) + (s190 * s190)))
+      let !t198 = (t149 * ((s178 + (t133 * s188)) + (negate s178)))
+      let !t199 = (t149 * ((if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193) + (negate s179)))
+      let !t200 = (t199 + (negate t199))
+      let !t201 = (t149 * ((s180 + (t133 * s190)) + (negate s180)))
+      let !t202 = (sqrt (((t198 * t198) + (t200 * t200)) + (t201 * t201)))
+      let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
+      let !s204 = ((t134 * (t197 * (t203 * t198))) + (t138 * s188))
+      let !s205 = ((t134 * (t197 * (t203 * t200))) + (t138 * s189))
+      let !s206 = ((t134 * (t197 * (t203 * t201))) + (t138 * s190))
+      t207 <- rdU mouse 4
+      t208 <- rdU mouse 5
+      t209 <- rdU mouse 6
+      let !t210 = (t207 - ((floorF ((t207 + 1.0) / 2.0)) * 2.0))
+      let !t211 = (negate s194)
+      let !t212 = (t210 + t211)
+      let !t213 = (t208 + (negate s195))
+      let !t214 = (t213 * t213)
+      let !t215 = ((t212 * t212) + t214)
+      let !t216 = (t209 - ((floorF ((t209 + 1.0) / 2.0)) * 2.0))
+      let !t217 = (negate s196)
+      let !t218 = (t216 + t217)
       let !t219 = (t218 * t218)
-      let !t220 = ((t217 * t217) + t219)
-      let !t221 = (t214 - ((floorF ((t214 + 1.0) / 2.0)) * 2.0))
-      let !t222 = (negate s201)
-      let !t223 = (t221 + t222)
-      let !t224 = (t223 * t223)
-      let !t225 = (t220 + t224)
-      let !t226 = (t215 + (-2.0))
-      let !t227 = (t226 + t216)
-      let !t228 = ((t227 * t227) + t219)
-      let !t229 = (t221 + (-2.0))
-      let !t230 = (t229 + t222)
-      let !t231 = (t230 * t230)
-      let !t232 = (t228 + t231)
-      let !t233 = (t225 - t232)
-      let !t234 = (if t233 > 0 then t232 else t225)
-      let !t235 = (t228 + t224)
-      let !t236 = (t234 - t235)
-      let !t237 = (if t236 > 0 then t235 else t234)
-      let !t238 = (t221 + 2.0)
-      let !t239 = (t238 + t222)
-      let !t240 = (t239 * t239)
-      let !t241 = (t228 + t240)
-      let !t242 = (t237 - t241)
-      let !t243 = (if t242 > 0 then t241 else t237)
-      let !t244 = (t220 + t231)
-      let !t245 = (t243 - t244)
-      let !t246 = (if t245 > 0 then t244 else t243)
-      let !t247 = (t220 + t240)
-      let !t248 = (t246 - t247)
-      let !t249 = (if t248 > 0 then t247 else t246)
-      let !t250 = (t215 + 2.0)
-      let !t251 = (t250 + t216)
-      let !t252 = ((t251 * t251) + t219)
-      let !t253 = (t252 + t231)
-      let !t254 = (t249 - t253)
-      let !t255 = (if t254 > 0 then t253 else t249)
-      let !t256 = (t252 + t224)
-      let !t257 = (t255 - t256)
-      let !t258 = ((if t257 > 0 then t256 else t255) - (t252 + t240))
-      let !s259 = (if t258 > 0 then t250 else (if t257 > 0 then t250 else (if t254 > 0 then t250 else (if t248 > 0 then t215 else (if t245 > 0 then t215 else (if t242 > 0 then t226 else (if t236 > 0 then t226 else (if t233 > 0 then t226 else t215))))))))
-      let !s260 = (if t258 > 0 then t238 else (if t257 > 0 then t221 else (if t254 > 0 then t229 else (if t248 > 0 then t238 else (if t245 > 0 then t229 else (if t242 > 0 then t238 else (if t236 > 0 then t221 else (if t233 > 0 then t229 else t221))))))))
-      t261 <- rdU mouse 7
-      t262 <- rdU mouse 8
-      t263 <- rdU mouse 9
-      let !t264 = (recip t101)
-      let !t265 = (6.283185307179586 * t261)
-      let !s266 = (recip (t103 * ((((2.0 * t264) * t262) * t265) + (t103 * ((t264 * t265) * t265)))))
-      let !s267 = ((t103 * ((t264 * t265) * t265)) * s266)
-      let !s268 = (s199 + (negate t104))
-      let !s269 = (s200 + (negate t105))
-      let !s270 = (s201 + (negate t106))
-      let !s271 = (s199 + (negate s259))
-      let !s272 = (s200 + (negate t213))
-      let !s273 = (s201 + (negate s260))
-      t274 <- rdU mouse 10
-      t275 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t276 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t277 <- rdU vel (3 * (truncate t100))
-      t278 <- rdU vel ((3 * (truncate t100)) + 1)
-      t279 <- rdU vel ((3 * (truncate t100)) + 2)
-      t280 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t277 + ((t275 * t274) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t278 + ((t275 * t274) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t279 + ((t275 * t274) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t280 + ((t276 * t274) * (((((s269 * t112) - (s270 * t111)) * t107) + (((s270 * t110) - (s268 * t112)) * t108)) + (((s268 * t111) - (s269 * t110)) * t109))))
-      t281 <- rdU mouse 11
-      t282 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t283 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t284 <- rdU vel (3 * (truncate t100))
-      t285 <- rdU vel ((3 * (truncate t100)) + 1)
-      t286 <- rdU vel ((3 * (truncate t100)) + 2)
-      t287 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t284 + ((t282 * t281) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t285 + ((t282 * t281) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t286 + ((t282 * t281) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t287 + ((t283 * t281) * (((((s269 * s115) - (s270 * s114)) * t107) + (((s270 * s113) - (s268 * s115)) * t108)) + (((s268 * s114) - (s269 * s113)) * t109))))
+      let !t220 = (t215 + t219)
+      let !t221 = (t210 + (-2.0))
+      let !t222 = (t221 + t211)
+      let !t223 = ((t222 * t222) + t214)
+      let !t224 = (t216 + (-2.0))
+      let !t225 = (t224 + t217)
+      let !t226 = (t225 * t225)
+      let !t227 = (t223 + t226)
+      let !t228 = (t220 - t227)
+      let !t229 = (if t228 > 0 then t227 else t220)
+      let !t230 = (t223 + t219)
+      let !t231 = (t229 - t230)
+      let !t232 = (if t231 > 0 then t230 else t229)
+      let !t233 = (t216 + 2.0)
+      let !t234 = (t233 + t217)
+      let !t235 = (t234 * t234)
+      let !t236 = (t223 + t235)
+      let !t237 = (t232 - t236)
+      let !t238 = (if t237 > 0 then t236 else t232)
+      let !t239 = (t215 + t226)
+      let !t240 = (t238 - t239)
+      let !t241 = (if t240 > 0 then t239 else t238)
+      let !t242 = (t215 + t235)
+      let !t243 = (t241 - t242)
+      let !t244 = (if t243 > 0 then t242 else t241)
+      let !t245 = (t210 + 2.0)
+      let !t246 = (t245 + t211)
+      let !t247 = ((t246 * t246) + t214)
+      let !t248 = (t247 + t226)
+      let !t249 = (t244 - t248)
+      let !t250 = (if t249 > 0 then t248 else t244)
+      let !t251 = (t247 + t219)
+      let !t252 = (t250 - t251)
+      let !t253 = ((if t252 > 0 then t251 else t250) - (t247 + t235))
+      let !s254 = (if t253 > 0 then t245 else (if t252 > 0 then t245 else (if t249 > 0 then t245 else (if t243 > 0 then t210 else (if t240 > 0 then t210 else (if t237 > 0 then t221 else (if t231 > 0 then t221 else (if t228 > 0 then t221 else t210))))))))
+      let !s255 = (if t253 > 0 then t233 else (if t252 > 0 then t216 else (if t249 > 0 then t224 else (if t243 > 0 then t233 else (if t240 > 0 then t224 else (if t237 > 0 then t233 else (if t231 > 0 then t216 else (if t228 > 0 then t224 else t216))))))))
+      t256 <- rdU mouse 7
+      t257 <- rdU mouse 8
+      t258 <- rdU mouse 9
+      let !t259 = (recip t96)
+      let !t260 = (6.283185307179586 * t256)
+      let !s261 = (recip (t98 * ((((2.0 * t259) * t257) * t260) + (t98 * ((t259 * t260) * t260)))))
+      let !s262 = ((t98 * ((t259 * t260) * t260)) * s261)
+      let !s263 = (s194 + (negate t99))
+      let !s264 = (s195 + (negate t100))
+      let !s265 = (s196 + (negate t101))
+      let !s266 = (s194 + (negate s254))
+      let !s267 = (s195 + (negate t208))
+      let !s268 = (s196 + (negate s255))
+      t269 <- rdU mouse 10
+      t270 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t271 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t272 <- rdU vel (3 * (truncate t95))
+      t273 <- rdU vel ((3 * (truncate t95)) + 1)
+      t274 <- rdU vel ((3 * (truncate t95)) + 2)
+      t275 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t272 + ((t270 * t269) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t273 + ((t270 * t269) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t274 + ((t270 * t269) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t275 + ((t271 * t269) * (((((s264 * t107) - (s265 * t106)) * t102) + (((s265 * t105) - (s263 * t107)) * t103)) + (((s263 * t106) - (s264 * t105)) * t104))))
+      t276 <- rdU mouse 11
+      t277 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t278 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t279 <- rdU vel (3 * (truncate t95))
+      t280 <- rdU vel ((3 * (truncate t95)) + 1)
+      t281 <- rdU vel ((3 * (truncate t95)) + 2)
+      t282 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t279 + ((t277 * t276) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t280 + ((t277 * t276) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t281 + ((t277 * t276) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t282 + ((t278 * t276) * (((((s264 * s110) - (s265 * s109)) * t102) + (((s265 * s108) - (s263 * s110)) * t103)) + (((s263 * s109) - (s264 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i288 -> do
-    let !d288 = fromIntegral i288 :: Double
-    loopI 0.0 t9 $ \i289 -> do
-      let !d289 = fromIntegral i289 :: Double
-      chkI contacts (30 * i289) 0 26
-      t290 <- rdU contacts (30 * i289)
-      t291 <- rdU contacts ((30 * i289) + 1)
-      t292 <- rdU contacts ((30 * i289) + 12)
-      t293 <- rdU contacts ((30 * i289) + 13)
-      t294 <- rdU contacts ((30 * i289) + 14)
-      t295 <- rdU contacts ((30 * i289) + 15)
-      t296 <- rdU contacts ((30 * i289) + 16)
-      t297 <- rdU contacts ((30 * i289) + 17)
-      t298 <- rdU contacts ((30 * i289) + 18)
-      t299 <- rdU contacts ((30 * i289) + 19)
-      t300 <- rdU contacts ((30 * i289) + 4)
-      t301 <- rdU contacts ((30 * i289) + 5)
-      t302 <- rdU contacts ((30 * i289) + 6)
-      t303 <- rdU contacts ((30 * i289) + 7)
-      t304 <- rdU contacts ((30 * i289) + 8)
-      t305 <- rdU contacts ((30 * i289) + 9)
-      t306 <- rdU contacts ((30 * i289) + 10)
-      t307 <- rdU contacts ((30 * i289) + 11)
-      t308 <- rdU contacts ((30 * i289) + 26)
-      t309 <- rdU contacts ((30 * i289) + 24)
-      t310 <- rdU contacts ((30 * i289) + 25)
-      t311 <- rdU contacts ((30 * i289) + 22)
-      t312 <- rdU contacts ((30 * i289) + 21)
-      t313 <- rdU contacts ((30 * i289) + 23)
-      let !s314 = (if (negate t291) > 0 then 0.0 else t291)
-      let !s315 = (t291 + 0.5)
-      let !s316 = (if (0.5 - (abs (t290 - t291))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t290)) 1 3
-      t317 <- rdU scalars ((6 * (truncate t290)) + 2)
-      t318 <- rdU scalars ((6 * (truncate t290)) + 3)
-      chkI scalars (6 * (truncate s314)) 1 3
-      t319 <- rdU scalars ((6 * (truncate s314)) + 2)
-      t320 <- rdU scalars ((6 * (truncate s314)) + 3)
-      chkI vel (3 * (truncate t290)) 0 2
-      t321 <- rdU vel (3 * (truncate t290))
-      t322 <- rdU vel ((3 * (truncate t290)) + 1)
-      t323 <- rdU vel ((3 * (truncate t290)) + 2)
-      t324 <- rdU scalars ((6 * (truncate t290)) + 1)
-      chkI vel (3 * (truncate s314)) 0 2
-      t325 <- rdU vel (3 * (truncate s314))
-      t326 <- rdU vel ((3 * (truncate s314)) + 1)
-      t327 <- rdU vel ((3 * (truncate s314)) + 2)
-      t328 <- rdU scalars ((6 * (truncate s314)) + 1)
-      let !s329 = (((((t292 * t321) + (t293 * t322)) + (t294 * t323)) + (t295 * t324)) - (if s315 > 0 then ((((t296 * t325) + (t297 * t326)) + (t298 * t327)) + (t299 * t328)) else 0.0))
-      let !t330 = (t2 * t309)
-      let !t331 = (negate t330)
-      let !t332 = (t310 - ((t308 * s329) * t311))
-      let !t333 = (if (t332 - t330) > 0 then t330 else t332)
-      let !t334 = (if (t331 - t333) > 0 then t331 else t333)
-      let !s335 = (if (1.0 - (abs (t334 - t334))) > 0 then t334 else 0.0)
-      wrU contacts ((30 * i289) + 25) s335
-      let !t336 = (t317 * (s335 - t310))
-      let !s337 = (t336 * t292)
-      let !s338 = (t336 * t293)
-      let !s339 = (t336 * t294)
-      let !s340 = ((t318 * (s335 - t310)) * t295)
-      let !t341 = (t319 * (negate (s335 - t310)))
-      let !s342 = (t341 * t296)
-      let !s343 = (t341 * t297)
-      let !s344 = (t341 * t298)
-      let !s345 = ((t320 * (negate (s335 - t310))) * t299)
-      let !s346 = ((t321 + s337) + (s316 * s342))
-      let !s347 = ((t322 + s338) + (s316 * s343))
-      let !s348 = ((t323 + s339) + (s316 * s344))
-      let !s349 = ((t324 + s340) + (s316 * s345))
-      let !s350 = ((t325 + s342) + (s316 * s337))
-      let !s351 = ((t326 + s343) + (s316 * s338))
-      let !s352 = ((t327 + s344) + (s316 * s339))
-      let !s353 = ((t328 + s345) + (s316 * s340))
-      let !s354 = (((((t300 * s346) + (t301 * s347)) + (t302 * s348)) + (t303 * s349)) - (if s315 > 0 then ((((t304 * s350) + (t305 * s351)) + (t306 * s352)) + (t307 * s353)) else 0.0))
-      let !t355 = (t309 + ((t308 * (t313 - s354)) * t312))
-      let !t356 = (if (negate t355) > 0 then 0.0 else t355)
-      let !s357 = (if (1.0 - (abs (t356 - t356))) > 0 then t356 else 0.0)
-      wrU contacts ((30 * i289) + 24) s357
-      let !t358 = (t317 * (s357 - t309))
-      let !s359 = (t358 * t300)
-      let !s360 = (t358 * t301)
-      let !s361 = (t358 * t302)
-      let !s362 = ((t318 * (s357 - t309)) * t303)
-      let !t363 = (t319 * (negate (s357 - t309)))
-      let !s364 = (t363 * t304)
-      let !s365 = (t363 * t305)
-      let !s366 = (t363 * t306)
-      let !s367 = ((t320 * (negate (s357 - t309))) * t307)
-      let !s368 = ((s346 + s359) + (s316 * s364))
-      let !s369 = ((s347 + s360) + (s316 * s365))
-      let !s370 = ((s348 + s361) + (s316 * s366))
-      let !s371 = ((s349 + s362) + (s316 * s367))
-      let !s372 = ((s350 + s364) + (s316 * s359))
-      let !s373 = ((s351 + s365) + (s316 * s360))
-      let !s374 = ((s352 + s366) + (s316 * s361))
-      let !s375 = ((s353 + s367) + (s316 * s362))
-      wrU vel (3 * (truncate t290)) s368
-      wrU vel ((3 * (truncate t290)) + 1) s369
-      wrU vel ((3 * (truncate t290)) + 2) s370
-      wrU scalars ((6 * (truncate t290)) + 1) s371
-      if s315 > 0 then do
-        wrU vel (3 * (truncate s314)) s372
-        wrU vel ((3 * (truncate s314)) + 1) s373
-        wrU vel ((3 * (truncate s314)) + 2) s374
-        wrU scalars ((6 * (truncate s314)) + 1) s375
+  loopI 0.0 t1 $ \i283 -> do
+    let !d283 = fromIntegral i283 :: Double
+    loopI 0.0 t9 $ \i284 -> do
+      let !d284 = fromIntegral i284 :: Double
+      chkI contacts (30 * i284) 0 26
+      t285 <- rdU contacts (30 * i284)
+      t286 <- rdU contacts ((30 * i284) + 1)
+      t287 <- rdU contacts ((30 * i284) + 12)
+      t288 <- rdU contacts ((30 * i284) + 13)
+      t289 <- rdU contacts ((30 * i284) + 14)
+      t290 <- rdU contacts ((30 * i284) + 15)
+      t291 <- rdU contacts ((30 * i284) + 16)
+      t292 <- rdU contacts ((30 * i284) + 17)
+      t293 <- rdU contacts ((30 * i284) + 18)
+      t294 <- rdU contacts ((30 * i284) + 19)
+      t295 <- rdU contacts ((30 * i284) + 4)
+      t296 <- rdU contacts ((30 * i284) + 5)
+      t297 <- rdU contacts ((30 * i284) + 6)
+      t298 <- rdU contacts ((30 * i284) + 7)
+      t299 <- rdU contacts ((30 * i284) + 8)
+      t300 <- rdU contacts ((30 * i284) + 9)
+      t301 <- rdU contacts ((30 * i284) + 10)
+      t302 <- rdU contacts ((30 * i284) + 11)
+      t303 <- rdU contacts ((30 * i284) + 26)
+      t304 <- rdU contacts ((30 * i284) + 24)
+      t305 <- rdU contacts ((30 * i284) + 25)
+      t306 <- rdU contacts ((30 * i284) + 22)
+      t307 <- rdU contacts ((30 * i284) + 21)
+      t308 <- rdU contacts ((30 * i284) + 23)
+      let !s309 = (if (negate t286) > 0 then 0.0 else t286)
+      let !s310 = (t286 + 0.5)
+      let !s311 = (if (0.5 - (abs (t285 - t286))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t285)) 1 3
+      t312 <- rdU scalars ((6 * (truncate t285)) + 2)
+      t313 <- rdU scalars ((6 * (truncate t285)) + 3)
+      chkI scalars (6 * (truncate s309)) 1 3
+      t314 <- rdU scalars ((6 * (truncate s309)) + 2)
+      t315 <- rdU scalars ((6 * (truncate s309)) + 3)
+      chkI vel (3 * (truncate t285)) 0 2
+      t316 <- rdU vel (3 * (truncate t285))
+      t317 <- rdU vel ((3 * (truncate t285)) + 1)
+      t318 <- rdU vel ((3 * (truncate t285)) + 2)
+      t319 <- rdU scalars ((6 * (truncate t285)) + 1)
+      chkI vel (3 * (truncate s309)) 0 2
+      t320 <- rdU vel (3 * (truncate s309))
+      t321 <- rdU vel ((3 * (truncate s309)) + 1)
+      t322 <- rdU vel ((3 * (truncate s309)) + 2)
+      t323 <- rdU scalars ((6 * (truncate s309)) + 1)
+      let !s324 = (((((t287 * t316) + (t288 * t317)) + (t289 * t318)) + (t290 * t319)) - (if s310 > 0 then ((((t291 * t320) + (t292 * t321)) + (t293 * t322)) + (t294 * t323)) else 0.0))
+      let !t325 = (t2 * t304)
+      let !t326 = (negate t325)
+      let !t327 = (t305 - ((t303 * s324) * t306))
+      let !t328 = (if (t327 - t325) > 0 then t325 else t327)
+      let !t329 = (if (t326 - t328) > 0 then t326 else t328)
+      let !s330 = (if (1.0 - (abs (t329 - t329))) > 0 then t329 else 0.0)
+      wrU contacts ((30 * i284) + 25) s330
+      let !t331 = (t312 * (s330 - t305))
+      let !s332 = (t331 * t287)
+      let !s333 = (t331 * t288)
+      let !s334 = (t331 * t289)
+      let !s335 = ((t313 * (s330 - t305)) * t290)
+      let !t336 = (t314 * (negate (s330 - t305)))
+      let !s337 = (t336 * t291)
+      let !s338 = (t336 * t292)
+      let !s339 = (t336 * t293)
+      let !s340 = ((t315 * (negate (s330 - t305))) * t294)
+      let !s341 = ((t316 + s332) + (s311 * s337))
+      let !s342 = ((t317 + s333) + (s311 * s338))
+      let !s343 = ((t318 + s334) + (s311 * s339))
+      let !s344 = ((t319 + s335) + (s311 * s340))
+      let !s345 = ((t320 + s337) + (s311 * s332))
+      let !s346 = ((t321 + s338) + (s311 * s333))
+      let !s347 = ((t322 + s339) + (s311 * s334))
+      let !s348 = ((t323 + s340) + (s311 * s335))
+      let !s349 = (((((t295 * s341) + (t296 * s342)) + (t297 * s343)) + (t298 * s344)) - (if s310 > 0 then ((((t299 * s345) + (t300 * s346)) + (t301 * s347)) + (t302 * s348)) else 0.0))
+      let !t350 = (t304 + ((t303 * (t308 - s349)) * t307))
+      let !t351 = (if (negate t350) > 0 then 0.0 else t350)
+      let !s352 = (if (1.0 - (abs (t351 - t351))) > 0 then t351 else 0.0)
+      wrU contacts ((30 * i284) + 24) s352
+      let !t353 = (t312 * (s352 - t304))
+      let !s354 = (t353 * t295)
+      let !s355 = (t353 * t296)
+      let !s356 = (t353 * t297)
+      let !s357 = ((t313 * (s352 - t304)) * t298)
+      let !t358 = (t314 * (negate (s352 - t304)))
+      let !s359 = (t358 * t299)
+      let !s360 = (t358 * t300)
+      let !s361 = (t358 * t301)
+      let !s362 = ((t315 * (negate (s352 - t304))) * t302)
+      let !s363 = ((s341 + s354) + (s311 * s359))
+      let !s364 = ((s342 + s355) + (s311 * s360))
+      let !s365 = ((s343 + s356) + (s311 * s361))
+      let !s366 = ((s344 + s357) + (s311 * s362))
+      let !s367 = ((s345 + s359) + (s311 * s354))
+      let !s368 = ((s346 + s360) + (s311 * s355))
+      let !s369 = ((s347 + s361) + (s311 * s356))
+      let !s370 = ((s348 + s362) + (s311 * s357))
+      wrU vel (3 * (truncate t285)) s363
+      wrU vel ((3 * (truncate t285)) + 1) s364
+      wrU vel ((3 * (truncate t285)) + 2) s365
+      wrU scalars ((6 * (truncate t285)) + 1) s366
+      if s310 > 0 then do
+        wrU vel (3 * (truncate s309)) s367
+        wrU vel ((3 * (truncate s309)) + 1) s368
+        wrU vel ((3 * (truncate s309)) + 2) s369
+        wrU scalars ((6 * (truncate s309)) + 1) s370
         pure ()
       else do
         pure ()
       pure ()
-    t376 <- rdU mouse 0
-    if t376 > 0 then do
+    t371 <- rdU mouse 0
+    if t371 > 0 then do
       chkI mouse 0 1 1
-      t377 <- rdU mouse 1
-      chkI scalars (6 * (truncate t377)) 2 2
-      t378 <- rdU scalars ((6 * (truncate t377)) + 2)
-      if t378 > 0 then do
-        chkI scalars (6 * (truncate t377)) 0 5
-        t379 <- rdU scalars ((6 * (truncate t377)) + 3)
-        t380 <- rdU params 0
-        chkI pos (3 * (truncate t377)) 0 2
-        t381 <- rdU pos (3 * (truncate t377))
-        t382 <- rdU pos ((3 * (truncate t377)) + 1)
-        t383 <- rdU pos ((3 * (truncate t377)) + 2)
-        chkI normal (3 * (truncate t377)) 0 2
-        t384 <- rdU normal (3 * (truncate t377))
-        t385 <- rdU normal ((3 * (truncate t377)) + 1)
-        t386 <- rdU normal ((3 * (truncate t377)) + 2)
-        chkI axis (3 * (truncate t377)) 0 2
-        t387 <- rdU axis (3 * (truncate t377))
-        t388 <- rdU axis ((3 * (truncate t377)) + 1)
-        t389 <- rdU axis ((3 * (truncate t377)) + 2)
-        let !s390 = ((t385 * t389) - (t386 * t388))
-        let !s391 = ((t386 * t387) - (t384 * t389))
-        let !s392 = ((t384 * t388) - (t385 * t387))
-        t393 <- rdU scalars (6 * (truncate t377))
-        t394 <- rdU scalars ((6 * (truncate t377)) + 5)
-        t395 <- rdU scalars ((6 * (truncate t377)) + 2)
-        t396 <- rdU scalars ((6 * (truncate t377)) + 3)
-        t397 <- rdU pos (3 * (truncate t377))
-        t398 <- rdU pos ((3 * (truncate t377)) + 1)
-        t399 <- rdU pos ((3 * (truncate t377)) + 2)
-        t400 <- rdU normal (3 * (truncate t377))
-        t401 <- rdU normal ((3 * (truncate t377)) + 1)
-        t402 <- rdU normal ((3 * (truncate t377)) + 2)
-        t403 <- rdU axis (3 * (truncate t377))
-        t404 <- rdU axis ((3 * (truncate t377)) + 1)
-        t405 <- rdU axis ((3 * (truncate t377)) + 2)
-        let !s406 = ((t401 * t405) - (t402 * t404))
-        let !s407 = ((t402 * t403) - (t400 * t405))
-        let !s408 = ((t400 * t404) - (t401 * t403))
-        t409 <- rdU scalars (6 * (truncate t377))
-        t410 <- rdU scalars ((6 * (truncate t377)) + 5)
-        t411 <- rdU scalars ((6 * (truncate t377)) + 2)
-        t412 <- rdU scalars ((6 * (truncate t377)) + 3)
+      t372 <- rdU mouse 1
+      chkI scalars (6 * (truncate t372)) 2 2
+      t373 <- rdU scalars ((6 * (truncate t372)) + 2)
+      if t373 > 0 then do
+        chkI scalars (6 * (truncate t372)) 0 5
+        t374 <- rdU scalars ((6 * (truncate t372)) + 3)
+        t375 <- rdU params 0
+        chkI pos (3 * (truncate t372)) 0 2
+        t376 <- rdU pos (3 * (truncate t372))
+        t377 <- rdU pos ((3 * (truncate t372)) + 1)
+        t378 <- rdU pos ((3 * (truncate t372)) + 2)
+        chkI normal (3 * (truncate t372)) 0 2
+        t379 <- rdU normal (3 * (truncate t372))
+        t380 <- rdU normal ((3 * (truncate t372)) + 1)
+        t381 <- rdU normal ((3 * (truncate t372)) + 2)
+        chkI axis (3 * (truncate t372)) 0 2
+        t382 <- rdU axis (3 * (truncate t372))
+        t383 <- rdU axis ((3 * (truncate t372)) + 1)
+        t384 <- rdU axis ((3 * (truncate t372)) + 2)
+        let !s385 = ((t380 * t384) - (t381 * t383))
+        let !s386 = ((t381 * t382) - (t379 * t384))
+        let !s387 = ((t379 * t383) - (t380 * t382))
+        t388 <- rdU scalars (6 * (truncate t372))
+        t389 <- rdU scalars ((6 * (truncate t372)) + 5)
+        t390 <- rdU scalars ((6 * (truncate t372)) + 2)
+        t391 <- rdU scalars ((6 * (truncate t372)) + 3)
+        t392 <- rdU pos (3 * (truncate t372))
+        t393 <- rdU pos ((3 * (truncate t372)) + 1)
+        t394 <- rdU pos ((3 * (truncate t372)) + 2)
+        t395 <- rdU normal (3 * (truncate t372))
+        t396 <- rdU normal ((3 * (truncate t372)) + 1)
+        t397 <- rdU normal ((3 * (truncate t372)) + 2)
+        t398 <- rdU axis (3 * (truncate t372))
+        t399 <- rdU axis ((3 * (truncate t372)) + 1)
+        t400 <- rdU axis ((3 * (truncate t372)) + 2)
+        let !s401 = ((t396 * t400) - (t397 * t399))
+        let !s402 = ((t397 * t398) - (t395 * t400))
+        let !s403 = ((t395 * t399) - (t396 * t398))
+        t404 <- rdU scalars (6 * (truncate t372))
+        t405 <- rdU scalars ((6 * (truncate t372)) + 5)
+        t406 <- rdU scalars ((6 * (truncate t372)) + 2)
+        t407 <- rdU scalars ((6 * (truncate t372)) + 3)
         chkI mouse 0 2 11
-        t413 <- rdU mouse 2
-        t414 <- rdU mouse 3
-        let !t415 = (t413 / 4.0)
-        let !t416 = (if (abs t415) > 0 then 1.0 else 0.0)
-        let !t417 = (t409 + t414)
-        let !t418 = (cos t417)
-        let !t419 = (sin t417)
-        let !t420 = (1.0 - t416)
-        let !t421 = (t398 + (t415 * ((t418 * t404) + (t419 * s407))))
-        let !t422 = (if (if ((abs t421) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t421 + (negate t421)) else t421)
-        let !t423 = (if (if ((abs t422) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t422 + (negate t422)) else t422)
-        let !s424 = ((t416 * (t397 + (t415 * ((t418 * t403) + (t419 * s406))))) + (t420 * t397))
-        let !s425 = ((t416 * (if (if ((abs t423) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t423 + (negate t423)) else t423)) + (t420 * t398))
-        let !s426 = ((t416 * (t399 + (t415 * ((t418 * t405) + (t419 * s408))))) + (t420 * t399))
-        let !t427 = ((t418 * t403) + (t419 * s406))
-        let !t428 = ((t418 * t404) + (t419 * s407))
-        let !t429 = ((t418 * t405) + (t419 * s408))
-        let !t430 = (sqrt (((t427 * t427) + (t428 * t428)) + (t429 * t429)))
-        let !t431 = (if (abs t415) > 0 then (recip t415) else 0.0)
-        let !t432 = (t431 * ((t397 + (t415 * t427)) + (negate t397)))
-        let !t433 = (t431 * ((if (if ((abs t423) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t423 + (negate t423)) else t423) + (negate t398)))
-        let !t434 = (t433 + (negate t433))
-        let !t435 = (t431 * ((t399 + (t415 * t429)) + (negate t399)))
-        let !t436 = (sqrt (((t432 * t432) + (t434 * t434)) + (t435 * t435)))
-        let !t437 = (if t436 > 0 then (recip (if (t436 - 1.0e-300) > 0 then t436 else 1.0e-300)) else 0.0)
-        let !s438 = ((t416 * (t430 * (t437 * t432))) + (t420 * t427))
-        let !s439 = ((t416 * (t430 * (t437 * t434))) + (t420 * t428))
-        let !s440 = ((t416 * (t430 * (t437 * t435))) + (t420 * t429))
-        let !t441 = (s425 + (t415 * s439))
-        let !t442 = (if (if ((abs t441) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t441 + (negate t441)) else t441)
-        let !t443 = (if (if ((abs t442) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t442 + (negate t442)) else t442)
-        let !s444 = ((t416 * (s424 + (t415 * s438))) + (t420 * s424))
-        let !s445 = ((t416 * (if (if ((abs t443) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t443 + (negate t443)) else t443)) + (t420 * s425))
-        let !s446 = ((t416 * (s426 + (t415 * s440))) + (t420 * s426))
-        let !t447 = (sqrt (((s438 * s438) + (s439 * s439)) + (s440 * s440)))
-        let !t448 = (t431 * ((s424 + (t415 * s438)) + (negate s424)))
-        let !t449 = (t431 * ((if (if ((abs t443) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t443 + (negate t443)) else t443) + (negate s425)))
-        let !t450 = (t449 + (negate t449))
-        let !t451 = (t431 * ((s426 + (t415 * s440)) + (negate s426)))
-        let !t452 = (sqrt (((t448 * t448) + (t450 * t450)) + (t451 * t451)))
-        let !t453 = (if t452 > 0 then (recip (if (t452 - 1.0e-300) > 0 then t452 else 1.0e-300)) else 0.0)
-        let !s454 = ((t416 * (t447 * (t453 * t448))) + (t420 * s438))
-        let !s455 = ((t416 * (t447 * (t453 * t450))) + (t420 * s439))
-        let !s456 = ((t416 * (t447 * (t453 * t451))) + (t420 * s440))
-        let !t457 = (s445 + (t415 * s455))
-        let !t458 = (if (if ((abs t457) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t457 + (negate t457)) else t457)
-        let !t459 = (if (if ((abs t458) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t458 + (negate t458)) else t458)
-        let !s460 = ((t416 * (s444 + (t415 * s454))) + (t420 * s444))
-        let !s461 = ((t416 * (if (if ((abs t459) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t459 + (negate t459)) else t459)) + (t420 * s445))
-        let !s462 = ((t416 * (s446 + (t415 * s456))) + (t420 * s446))
-        let !t463 = (sqrt (((s454 * s454) + (s455 * s455)) + (s456 * s456)))
-        let !t464 = (t431 * ((s444 + (t415 * s454)) + (negate s444)))
-        let !t465 = (t431 * ((if (if ((abs t459) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t459 + (negate t459)) else t459) + (negate s445)))
-        let !t466 = (t465 + (negate t465))
-        let !t467 = (t431 * ((s446 + (t415 * s456)) + (negate s446)))
-        let !t468 = (sqrt (((t464 * t464) + (t466 * t466)) + (t467 * t467)))
-        let !t469 = (if t468 > 0 then (recip (if (t468 - 1.0e-300) > 0 then t468 else 1.0e-300)) else 0.0)
-        let !s470 = ((t416 * (t463 * (t469 * t464))) + (t420 * s454))
-        let !s471 = ((t416 * (t463 * (t469 * t466))) + (t420 * s455))
-        let !s472 = ((t416 * (t463 * (t469 * t467))) + (t420 * s456))
-        let !t473 = (s461 + (t415 * s471))
-        let !t474 = (if (if ((abs t473) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t473 + (negate t473)) else t473)
-        let !t475 = (if (if ((abs t474) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t474 + (negate t474)) else t474)
-        let !s476 = ((t416 * (s460 + (t415 * s470))) + (t420 * s460))
-        let !s477 = ((t416 * (if (if ((abs t475) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t475 + (negate t475)) else t475)) + (t420 * s461))
-        let !s478 = ((t416 * (s462 + (t415 * s472))) + (t420 * s462))
-        let !t479 = (sqrt (((s470 * s470) + (s471 * s471)) + (s472 * s472)))
-        let !t480 = (t431 * ((s460 + (t415 * s470)) + (negate s460)))
-        let !t481 = (t431 * ((if (if ((abs t475) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t475 + (negate t475)) else t475) + (negate s461)))
-        let !t482 = (t481 + (negate t481))
-        let !t483 = (t431 * ((s462 + (t415 * s472)) + (negate s462)))
-        let !t484 = (sqrt (((t480 * t480) + (t482 * t482)) + (t483 * t483)))
-        let !t485 = (if t484 > 0 then (recip (if (t484 - 1.0e-300) > 0 then t484 else 1.0e-300)) else 0.0)
-        let !s486 = ((t416 * (t479 * (t485 * t480))) + (t420 * s470))
-        let !s487 = ((t416 * (t479 * (t485 * t482))) + (t420 * s471))
-        let !s488 = ((t416 * (t479 * (t485 * t483))) + (t420 * s472))
-        t489 <- rdU mouse 4
-        t490 <- rdU mouse 5
-        t491 <- rdU mouse 6
-        let !t492 = (t489 - ((floorF ((t489 + 1.0) / 2.0)) * 2.0))
-        let !t493 = (negate s476)
-        let !t494 = (t492 + t493)
-        let !t495 = (t490 + (negate s477))
+        t408 <- rdU mouse 2
+        t409 <- rdU mouse 3
+        let !t410 = (t408 / 4.0)
+        let !t411 = (if (abs t410) > 0 then 1.0 else 0.0)
+        let !t412 = (t404 + t409)
+        let !t413 = (cos t412)
+        let !t414 = (sin t412)
+        let !t415 = (1.0 - t411)
+        let !t416 = (t393 + (t410 * ((t413 * t399) + (t414 * s402))))
+        let !t417 = (if (if ((abs t416) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t416 + (negate t416)) else t416)
+        let !t418 = (if (if ((abs t417) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t417 + (negate t417)) else t417)
+        let !s419 = ((t411 * (t392 + (t410 * ((t413 * t398) + (t414 * s401))))) + (t415 * t392))
+        let !s420 = ((t411 * (if (if ((abs t418) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t418 + (negate t418)) else t418)) + (t415 * t393))
+        let !s421 = ((t411 * (t394 + (t410 * ((t413 * t400) + (t414 * s403))))) + (t415 * t394))
+        let !t422 = ((t413 * t398) + (t414 * s401))
+        let !t423 = ((t413 * t399) + (t414 * s402))
+        let !t424 = ((t413 * t400) + (t414 * s403))
+        let !t425 = (sqrt (((t422 * t422) + (t423 * t423)) + (t424 * t424)))
+        let !t426 = (if (abs t410) > 0 then (recip t410) else 0.0)
+        let !t427 = (t426 * ((t392 + (t410 * t422)) + (negate t392)))
+        let !t428 = (t426 * ((if (if ((abs t418) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t418 + (negate t418)) else t418) + (negate t393)))
+        let !t429 = (t428 + (negate t428))
+        let !t430 = (t426 * ((t394 + (t410 * t424)) + (negate t394)))
+        let !t431 = (sqrt (((t427 * t427) + (t429 * t429)) + (t430 * t430)))
+        let !t432 = (if t431 > 0 then (recip (if (t431 - 1.0e-300) > 0 then t431 else 1.0e-300)) else 0.0)
+        let !s433 = ((t411 * (t425 * (t432 * t427))) + (t415 * t422))
+        let !s434 = ((t411 * (t425 * (t432 * t429))) + (t415 * t423))
+        let !s435 = ((t411 * (t425 * (t432 * t430))) + (t415 * t424))
+        let !t436 = (s420 + (t410 * s434))
+        let !t437 = (if (if ((abs t436) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t436 + (negate t436)) else t436)
+        let !t438 = (if (if ((abs t437) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t437 + (negate t437)) else t437)
+        let !s439 = ((t411 * (s419 + (t410 * s433))) + (t415 * s419))
+        let !s440 = ((t411 * (if (if ((abs t438) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t438 + (negate t438)) else t438)) + (t415 * s420))
+        let !s441 = ((t411 * (s421 + (t410 * s435))) + (t415 * s421))
+        let !t442 = (sqrt (((s433 * s433) + (s434 * s434)) + (s435 * s435)))
+        let !t443 = (t426 * ((s419 + (t410 * s433)) + (negate s419)))
+        let !t444 = (t426 * ((if (if ((abs t438) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t438 + (negate t438)) else t438) + (negate s420)))
+        let !t445 = (t444 + (negate t444))
+        let !t446 = (t426 * ((s421 + (t410 * s435)) + (negate s421)))
+        let !t447 = (sqrt (((t443 * t443) + (t445 * t445)) + (t446 * t446)))
+        let !t448 = (if t447 > 0 then (recip (if (t447 - 1.0e-300) > 0 then t447 else 1.0e-300)) else 0.0)
+        let !s449 = ((t411 * (t442 * (t448 * t443))) + (t415 * s433))
+        let !s450 = ((t411 * (t442 * (t448 * t445))) + (t415 * s434))
+        let !s451 = ((t411 * (t442 * (t448 * t446))) + (t415 * s435))
+        let !t452 = (s440 + (t410 * s450))
+        let !t453 = (if (if ((abs t452) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t452 + (negate t452)) else t452)
+        let !t454 = (if (if ((abs t453) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t453 + (negate t453)) else t453)
+        let !s455 = ((t411 * (s439 + (t410 * s449))) + (t415 * s439))
+        let !s456 = ((t411 * (if (if ((abs t454) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t454 + (negate t454)) else t454)) + (t415 * s440))
+        let !s457 = ((t411 * (s441 + (t410 * s451))) + (t415 * s441))
+        let !t458 = (sqrt (((s449 * s449) + (s450 * s450)) + (s451 * s451)))
+        let !t459 = (t426 * ((s439 + (t410 * s449)) + (negate s439)))
+        let !t460 = (t426 * ((if (if ((abs t454) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t454 + (negate t454)) else t454) + (negate s440)))
+        let !t461 = (t460 + (negate t460))
+        let !t462 = (t426 * ((s441 + (t410 * s451)) + (negate s441)))
+        let !t463 = (sqrt (((t459 * t459) + (t461 * t461)) + (t462 * t462)))
+        let !t464 = (if t463 > 0 then (recip (if (t463 - 1.0e-300) > 0 then t463 else 1.0e-300)) else 0.0)
+        let !s465 = ((t411 * (t458 * (t464 * t459))) + (t415 * s449))
+        let !s466 = ((t411 * (t458 * (t464 * t461))) + (t415 * s450))
+        let !s467 = ((t411 * (t458 * (t464 * t462))) + (t415 * s451))
+        let !t468 = (s456 + (t410 * s466))
+        let !t469 = (if (if ((abs t468) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t468 + (negate t468)) else t468)
+        let !t470 = (if (if ((abs t469) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t469 + (negate t469)) else t469)
+        let !s471 = ((t411 * (s455 + (t410 * s465))) + (t415 * s455))
+        let !s472 = ((t411 * (if (if ((abs t470) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t470 + (negate t470)) else t470)) + (t415 * s456))
+        let !s473 = ((t411 * (s457 + (t410 * s467))) + (t415 * s457))
+        let !t474 = (sqrt (((s465 * s465) + (s466 * s466)) + (s467 * s467)))
+        let !t475 = (t426 * ((s455 + (t410 * s465)) + (negate s455)))
+        let !t476 = (t426 * ((if (if ((abs t470) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t470 + (negate t470)) else t470) + (negate s456)))
+        let !t477 = (t476 + (negate t476))
+        let !t478 = (t426 * ((s457 + (t410 * s467)) + (negate s457)))
+        let !t479 = (sqrt (((t475 * t475) + (t477 * t477)) + (t478 * t478)))
+        let !t480 = (if t479 > 0 then (recip (if (t479 - 1.0e-300) > 0 then t479 else 1.0e-300)) else 0.0)
+        let !s481 = ((t411 * (t474 * (t480 * t475))) + (t415 * s465))
+        let !s482 = ((t411 * (t474 * (t480 * t477))) + (t415 * s466))
+        let !s483 = ((t411 * (t474 * (t480 * t478))) + (t415 * s467))
+        t484 <- rdU mouse 4
+        t485 <- rdU mouse 5
+        t486 <- rdU mouse 6
+        let !t487 = (t484 - ((floorF ((t484 + 1.0) / 2.0)) * 2.0))
+        let !t488 = (negate s471)
+        let !t489 = (t487 + t488)
+        let !t490 = (t485 + (negate s472))
+        let !t491 = (t490 * t490)
+        let !t492 = ((t489 * t489) + t491)
+        let !t493 = (t486 - ((floorF ((t486 + 1.0) / 2.0)) * 2.0))
+        let !t494 = (negate s473)
+        let !t495 = (t493 + t494)
         let !t496 = (t495 * t495)
-        let !t497 = ((t494 * t494) + t496)
-        let !t498 = (t491 - ((floorF ((t491 + 1.0) / 2.0)) * 2.0))
-        let !t499 = (negate s478)
-        let !t500 = (t498 + t499)
-        let !t501 = (t500 * t500)
-        let !t502 = (t497 + t501)
-        let !t503 = (t492 + (-2.0))
-        let !t504 = (t503 + t493)
-        let !t505 = ((t504 * t504) + t496)
-        let !t506 = (t498 + (-2.0))
-        let !t507 = (t506 + t499)
-        let !t508 = (t507 * t507)
-        let !t509 = (t505 + t508)
-        let !t510 = (t502 - t509)
-        let !t511 = (if t510 > 0 then t509 else t502)
-        let !t512 = (t505 + t501)
-        let !t513 = (t511 - t512)
-        let !t514 = (if t513 > 0 then t512 else t511)
-        let !t515 = (t498 + 2.0)
-        let !t516 = (t515 + t499)
-        let !t517 = (t516 * t516)
-        let !t518 = (t505 + t517)
-        let !t519 = (t514 - t518)
-        let !t520 = (if t519 > 0 then t518 else t514)
-        let !t521 = (t497 + t508)
-        let !t522 = (t520 - t521)
-        let !t523 = (if t522 > 0 then t521 else t520)
-        let !t524 = (t497 + t517)
-        let !t525 = (t523 - t524)
-        let !t526 = (if t525 > 0 then t524 else t523)
-        let !t527 = (t492 + 2.0)
-        let !t528 = (t527 + t493)
-        let !t529 = ((t528 * t528) + t496)
-        let !t530 = (t529 + t508)
-        let !t531 = (t526 - t530)
-        let !t532 = (if t531 > 0 then t530 else t526)
-        let !t533 = (t529 + t501)
-        let !t534 = (t532 - t533)
-        let !t535 = ((if t534 > 0 then t533 else t532) - (t529 + t517))
-        let !s536 = (if t535 > 0 then t527 else (if t534 > 0 then t527 else (if t531 > 0 then t527 else (if t525 > 0 then t492 else (if t522 > 0 then t492 else (if t519 > 0 then t503 else (if t513 > 0 then t503 else (if t510 > 0 then t503 else t492))))))))
-        let !s537 = (if t535 > 0 then t515 else (if t534 > 0 then t498 else (if t531 > 0 then t506 else (if t525 > 0 then t515 else (if t522 > 0 then t506 else (if t519 > 0 then t515 else (if t513 > 0 then t498 else (if t510 > 0 then t506 else t498))))))))
-        t538 <- rdU mouse 7
-        t539 <- rdU mouse 8
-        t540 <- rdU mouse 9
-        let !t541 = (recip t378)
-        let !t542 = (6.283185307179586 * t538)
-        let !s543 = (recip (t380 * ((((2.0 * t541) * t539) * t542) + (t380 * ((t541 * t542) * t542)))))
-        let !s544 = ((t380 * ((t541 * t542) * t542)) * s543)
-        let !s545 = (s476 + (negate t381))
-        let !s546 = (s477 + (negate t382))
-        let !s547 = (s478 + (negate t383))
-        let !s548 = (s476 + (negate s536))
-        let !s549 = (s477 + (negate t490))
-        let !s550 = (s478 + (negate s537))
-        t551 <- rdU mouse 10
-        chkI vel (3 * (truncate t377)) 0 2
-        t552 <- rdU vel (3 * (truncate t377))
-        t553 <- rdU vel ((3 * (truncate t377)) + 1)
-        t554 <- rdU vel ((3 * (truncate t377)) + 2)
-        t555 <- rdU scalars ((6 * (truncate t377)) + 1)
-        let !t556 = (t540 * t380)
-        let !t557 = (negate t556)
-        let !t558 = (((((s546 * t389) - (s547 * t388)) * t384) + (((s547 * t387) - (s545 * t389)) * t385)) + (((s545 * t388) - (s546 * t387)) * t386))
-        let !t559 = (t551 + ((negate ((((((t387 * t552) + (t388 * t553)) + (t389 * t554)) + (t558 * t555)) + (s544 * (((s548 * t387) + (s549 * t388)) + (s550 * t389)))) + (s543 * t551))) / (((t378 * (((t387 * t387) + (t388 * t388)) + (t389 * t389))) + ((t379 * t558) * t558)) + s543)))
-        let !t560 = (if (t559 - t556) > 0 then t556 else t559)
-        let !t561 = (if (t557 - t560) > 0 then t557 else t560)
-        let !s562 = (if (1.0 - (abs (t561 - t561))) > 0 then t561 else 0.0)
-        wrU mouse 10 s562
-        t563 <- rdU scalars ((6 * (truncate t377)) + 2)
-        t564 <- rdU scalars ((6 * (truncate t377)) + 3)
-        t565 <- rdU vel (3 * (truncate t377))
-        t566 <- rdU vel ((3 * (truncate t377)) + 1)
-        t567 <- rdU vel ((3 * (truncate t377)) + 2)
-        t568 <- rdU scalars ((6 * (truncate t377)) + 1)
-        wrU vel (3 * (truncate t377)) (t565 + ((t563 * (s562 - t551)) * t387))
-        wrU vel ((3 * (truncate t377)) + 1) (t566 + ((t563 * (s562 - t551)) * t388))
-        wrU vel ((3 * (truncate t377)) + 2) (t567 + ((t563 * (s562 - t551)) * t389))
-        wrU scalars ((6 * (truncate t377)) + 1) (t568 + ((t564 * (s562 - t551)) * t558))
-        t569 <- rdU mouse 11
-        t570 <- rdU vel (3 * (truncate t377))
-        t571 <- rdU vel ((3 * (truncate t377)) + 1)
-        t572 <- rdU vel ((3 * (truncate t377)) + 2)
-        t573 <- rdU scalars ((6 * (truncate t377)) + 1)
-        let !t574 = (((((s546 * s392) - (s547 * s391)) * t384) + (((s547 * s390) - (s545 * s392)) * t385)) + (((s545 * s391) - (s546 * s390)) * t386))
-        let !t575 = (t569 + ((negate ((((((s390 * t570) + (s391 * t571)) + (s392 * t572)) + (t574 * t573)) + (s544 * (((s548 * s390) + (s549 * s391)) + (s550 * s392)))) + (s543 * t569))) / (((t378 * (((s390 * s390) + (s391 * s391)) + (s392 * s392))) + ((t379 * t574) * t574)) + s543)))
-        let !t576 = (if (t575 - t556) > 0 then t556 else t575)
-        let !t577 = (if (t557 - t576) > 0 then t557 else t576)
-        let !s578 = (if (1.0 - (abs (t577 - t577))) > 0 then t577 else 0.0)
-        wrU mouse 11 s578
-        t579 <- rdU scalars ((6 * (truncate t377)) + 2)
-        t580 <- rdU scalars ((6 * (truncate t377)) + 3)
-        t581 <- rdU vel (3 * (truncate t377))
-        t582 <- rdU vel ((3 * (truncate t377)) + 1)
-        t583 <- rdU vel ((3 * (truncate t377)) + 2)
-        t584 <- rdU scalars ((6 * (truncate t377)) + 1)
-        wrU vel (3 * (truncate t377)) (t581 + ((t579 * (s578 - t569)) * s390))
-        wrU vel ((3 * (truncate t377)) + 1) (t582 + ((t579 * (s578 - t569)) * s391))
-        wrU vel ((3 * (truncate t377)) + 2) (t583 + ((t579 * (s578 - t569)) * s392))
-        wrU scalars ((6 * (truncate t377)) + 1) (t584 + ((t580 * (s578 - t569)) * t574))
+        let !t497 = (t492 + t496)
+        let !t498 = (t487 + (-2.0))
+        let !t499 = (t498 + t488)
+        let !t500 = ((t499 * t499) + t491)
+        let !t501 = (t493 + (-2.0))
+        let !t502 = (t501 + t494)
+        let !t503 = (t502 * t502)
+        let !t504 = (t500 + t503)
+        let !t505 = (t497 - t504)
+        let !t506 = (if t505 > 0 then t504 else t497)
+        let !t507 = (t500 + t496)
+        let !t508 = (t506 - t507)
+        let !t509 = (if t508 > 0 then t507 else t506)
+        let !t510 = (t493 + 2.0)
+        let !t511 = (t510 + t494)
+        let !t512 = (t511 * t511)
+        let !t513 = (t500 + t512)
+        let !t514 = (t509 - t513)
+        let !t515 = (if t514 > 0 then t513 else t509)
+        let !t516 = (t492 + t503)
+        let !t517 = (t515 - t516)
+        let !t518 = (if t517 > 0 then t516 else t515)
+        let !t519 = (t492 + t512)
+        let !t520 = (t518 - t519)
+        let !t521 = (if t520 > 0 then t519 else t518)
+        let !t522 = (t487 + 2.0)
+        let !t523 = (t522 + t488)
+        let !t524 = ((t523 * t523) + t491)
+        let !t525 = (t524 + t503)
+        let !t526 = (t521 - t525)
+        let !t527 = (if t526 > 0 then t525 else t521)
+        let !t528 = (t524 + t496)
+        let !t529 = (t527 - t528)
+        let !t530 = ((if t529 > 0 then t528 else t527) - (t524 + t512))
+        let !s531 = (if t530 > 0 then t522 else (if t529 > 0 then t522 else (if t526 > 0 then t522 else (if t520 > 0 then t487 else (if t517 > 0 then t487 else (if t514 > 0 then t498 else (if t508 > 0 then t498 else (if t505 > 0 then t498 else t487))))))))
+        let !s532 = (if t530 > 0 then t510 else (if t529 > 0 then t493 else (if t526 > 0 then t501 else (if t520 > 0 then t510 else (if t517 > 0 then t501 else (if t514 > 0 then t510 else (if t508 > 0 then t493 else (if t505 > 0 then t501 else t493))))))))
+        t533 <- rdU mouse 7
+        t534 <- rdU mouse 8
+        t535 <- rdU mouse 9
+        let !t536 = (recip t373)
+        let !t537 = (6.283185307179586 * t533)
+        let !s538 = (recip (t375 * ((((2.0 * t536) * t534) * t537) + (t375 * ((t536 * t537) * t537)))))
+        let !s539 = ((t375 * ((t536 * t537) * t537)) * s538)
+        let !s540 = (s471 + (negate t376))
+        let !s541 = (s472 + (negate t377))
+        let !s542 = (s473 + (negate t378))
+        let !s543 = (s471 + (negate s531))
+        let !s544 = (s472 + (negate t485))
+        let !s545 = (s473 + (negate s532))
+        t546 <- rdU mouse 10
+        chkI vel (3 * (truncate t372)) 0 2
+        t547 <- rdU vel (3 * (truncate t372))
+        t548 <- rdU vel ((3 * (truncate t372)) + 1)
+        t549 <- rdU vel ((3 * (truncate t372)) + 2)
+        t550 <- rdU scalars ((6 * (truncate t372)) + 1)
+        let !t551 = (t535 * t375)
+        let !t552 = (negate t551)
+        let !t553 = (((((s541 * t384) - (s542 * t383)) * t379) + (((s542 * t382) - (s540 * t384)) * t380)) + (((s540 * t383) - (s541 * t382)) * t381))
+        let !t554 = (t546 + ((negate ((((((t382 * t547) + (t383 * t548)) + (t384 * t549)) + (t553 * t550)) + (s539 * (((s543 * t382) + (s544 * t383)) + (s545 * t384)))) + (s538 * t546))) / (((t373 * (((t382 * t382) + (t383 * t383)) + (t384 * t384))) + ((t374 * t553) * t553)) + s538)))
+        let !t555 = (if (t554 - t551) > 0 then t551 else t554)
+        let !t556 = (if (t552 - t555) > 0 then t552 else t555)
+        let !s557 = (if (1.0 - (abs (t556 - t556))) > 0 then t556 else 0.0)
+        wrU mouse 10 s557
+        t558 <- rdU scalars ((6 * (truncate t372)) + 2)
+        t559 <- rdU scalars ((6 * (truncate t372)) + 3)
+        t560 <- rdU vel (3 * (truncate t372))
+        t561 <- rdU vel ((3 * (truncate t372)) + 1)
+        t562 <- rdU vel ((3 * (truncate t372)) + 2)
+        t563 <- rdU scalars ((6 * (truncate t372)) + 1)
+        wrU vel (3 * (truncate t372)) (t560 + ((t558 * (s557 - t546)) * t382))
+        wrU vel ((3 * (truncate t372)) + 1) (t561 + ((t558 * (s557 - t546)) * t383))
+        wrU vel ((3 * (truncate t372)) + 2) (t562 + ((t558 * (s557 - t546)) * t384))
+        wrU scalars ((6 * (truncate t372)) + 1) (t563 + ((t559 * (s557 - t546)) * t553))
+        t564 <- rdU mouse 11
+        t565 <- rdU vel (3 * (truncate t372))
+        t566 <- rdU vel ((3 * (truncate t372)) + 1)
+        t567 <- rdU vel ((3 * (truncate t372)) + 2)
+        t568 <- rdU scalars ((6 * (truncate t372)) + 1)
+        let !t569 = (((((s541 * s387) - (s542 * s386)) * t379) + (((s542 * s385) - (s540 * s387)) * t380)) + (((s540 * s386) - (s541 * s385)) * t381))
+        let !t570 = (t564 + ((negate ((((((s385 * t565) + (s386 * t566)) + (s387 * t567)) + (t569 * t568)) + (s539 * (((s543 * s385) + (s544 * s386)) + (s545 * s387)))) + (s538 * t564))) / (((t373 * (((s385 * s385) + (s386 * s386)) + (s387 * s387))) + ((t374 * t569) * t569)) + s538)))
+        let !t571 = (if (t570 - t551) > 0 then t551 else t570)
+        let !t572 = (if (t552 - t571) > 0 then t552 else t571)
+        let !s573 = (if (1.0 - (abs (t572 - t572))) > 0 then t572 else 0.0)
+        wrU mouse 11 s573
+        t574 <- rdU scalars ((6 * (truncate t372)) + 2)
+        t575 <- rdU scalars ((6 * (truncate t372)) + 3)
+        t576 <- rdU vel (3 * (truncate t372))
+        t577 <- rdU vel ((3 * (truncate t372)) + 1)
+        t578 <- rdU vel ((3 * (truncate t372)) + 2)
+        t579 <- rdU scalars ((6 * (truncate t372)) + 1)
+        wrU vel (3 * (truncate t372)) (t576 + ((t574 * (s573 - t564)) * s385))
+        wrU vel ((3 * (truncate t372)) + 1) (t577 + ((t574 * (s573 - t564)) * s386))
+        wrU vel ((3 * (truncate t372)) + 2) (t578 + ((t574 * (s573 - t564)) * s387))
+        wrU scalars ((6 * (truncate t372)) + 1) (t579 + ((t575 * (s573 - t564)) * t569))
         pure ()
       else do
         pure ()
@@ -1804,38 +1806,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t585 <- rdU meta 0
-  loopI 0.0 t585 $ \i586 -> do
-    let !d586 = fromIntegral i586 :: Double
-    chkI bodyPrev (2 * i586) 1 1
-    wrU bodyPrev ((2 * i586) + 1) 0.0
+  t580 <- rdU meta 0
+  loopI 0.0 t580 $ \i581 -> do
+    let !d581 = fromIntegral i581 :: Double
+    chkI bodyPrev (2 * i581) 1 1
+    wrU bodyPrev ((2 * i581) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i587 -> do
-    let !d587 = fromIntegral i587 :: Double
-    chkI contacts (30 * i587) 2 25
-    t588 <- rdU contacts ((30 * i587) + 2)
-    chkI prev (4 * i587) 0 3
-    wrU prev (4 * i587) t588
-    t589 <- rdU contacts ((30 * i587) + 3)
-    wrU prev ((4 * i587) + 1) t589
-    t590 <- rdU contacts ((30 * i587) + 24)
-    wrU prev ((4 * i587) + 2) t590
-    t591 <- rdU contacts ((30 * i587) + 25)
-    wrU prev ((4 * i587) + 3) t591
-    chkI bodyPrev (2 * (truncate t588)) 1 1
-    t592 <- rdU bodyPrev ((2 * (truncate t588)) + 1)
-    if (0.5 - t592) > 0 then do
-      chkI bodyPrev (2 * (truncate t588)) 0 0
-      wrU bodyPrev (2 * (truncate t588)) d587
+  loopI 0.0 t9 $ \i582 -> do
+    let !d582 = fromIntegral i582 :: Double
+    chkI contacts (30 * i582) 2 25
+    t583 <- rdU contacts ((30 * i582) + 2)
+    chkI prev (4 * i582) 0 3
+    wrU prev (4 * i582) t583
+    t584 <- rdU contacts ((30 * i582) + 3)
+    wrU prev ((4 * i582) + 1) t584
+    t585 <- rdU contacts ((30 * i582) + 24)
+    wrU prev ((4 * i582) + 2) t585
+    t586 <- rdU contacts ((30 * i582) + 25)
+    wrU prev ((4 * i582) + 3) t586
+    chkI bodyPrev (2 * (truncate t583)) 1 1
+    t587 <- rdU bodyPrev ((2 * (truncate t583)) + 1)
+    if (0.5 - t587) > 0 then do
+      chkI bodyPrev (2 * (truncate t583)) 0 0
+      wrU bodyPrev (2 * (truncate t583)) d582
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t588)) + 1) (t592 + 1.0)
+    wrU bodyPrev ((2 * (truncate t583)) + 1) (t587 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1969,8 +1971,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -2000,286 +2003,286 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 0 8
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
-        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
-        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
-        let !t44 = (1.0 - t35)
-        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
-        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
-        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
-        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
-        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
-        chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
-        wrU walk (12 * i26) s47
-        wrU walk ((12 * i26) + 1) s48
-        wrU walk ((12 * i26) + 2) s49
-        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
-        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
-        let !t54 = (t53 + (negate t53))
-        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
-        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
-        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
-        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
-        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
-        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
-        wrU walk ((12 * i26) + 3) s58
-        wrU walk ((12 * i26) + 4) s59
-        wrU walk ((12 * i26) + 5) s60
-        let !s61 = (t44 * t8)
-        let !s62 = (t35 + (t44 * t9))
-        let !s63 = (t44 * t10)
-        wrU walk ((12 * i26) + 6) s61
-        wrU walk ((12 * i26) + 7) s62
-        wrU walk ((12 * i26) + 8) s63
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 0 8
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (if (abs s26) > 0 then 1.0 else 0.0)
+        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t35 = (if ((abs s31) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t36 = (if t35 > 0 then (s31 + (negate ((s31 / t9) * t9))) else s31)
+        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t40 = (if t35 > 0 then (s30 + (negate ((s31 / t9) * t8))) else s30)
+        let !t41 = (if t37 > 0 then (t40 + (negate ((t36 / t9) * t8))) else t40)
+        let !t42 = (1.0 - t33)
+        let !t43 = (if t35 > 0 then (s32 + (negate ((s31 / t9) * t10))) else s32)
+        let !t44 = (if t37 > 0 then (t43 + (negate ((t36 / t9) * t10))) else t43)
+        let !s45 = ((t33 * (if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41)) + (t42 * t2))
+        let !s46 = ((t33 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t42 * t3))
+        let !s47 = ((t33 * (if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44)) + (t42 * t4))
+        chkI verts ((291 * i1) + (12 * i24)) 3 5
+        wrU verts (((291 * i1) + (12 * i24)) + 3) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s45 else t2)
+        wrU verts (((291 * i1) + (12 * i24)) + 4) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s46 else t3)
+        wrU verts (((291 * i1) + (12 * i24)) + 5) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s47 else t4)
+        wrU walk (12 * i24) s45
+        wrU walk ((12 * i24) + 1) s46
+        wrU walk ((12 * i24) + 2) s47
+        let !t48 = (sqrt (((t27 * t27) + (t28 * t28)) + (t29 * t29)))
+        let !t49 = (if (abs s26) > 0 then (recip s26) else 0.0)
+        let !t50 = (t49 * ((if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41) + (negate t2)))
+        let !t51 = (t49 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
+        let !t52 = (t51 + (negate t51))
+        let !t53 = (t49 * ((if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44) + (negate t4)))
+        let !t54 = (sqrt (((t50 * t50) + (t52 * t52)) + (t53 * t53)))
+        let !t55 = (if t54 > 0 then (recip (if (t54 - 1.0e-300) > 0 then t54 else 1.0e-300)) else 0.0)
+        let !s56 = ((t33 * (t48 * (t55 * t50))) + (t42 * t27))
+        let !s57 = ((t33 * (t48 * (t55 * t52))) + (t42 * t28))
+        let !s58 = ((t33 * (t48 * (t55 * t53))) + (t42 * t29))
+        wrU walk ((12 * i24) + 3) s56
+        wrU walk ((12 * i24) + 4) s57
+        wrU walk ((12 * i24) + 5) s58
+        let !s59 = (t42 * t8)
+        let !s60 = (t33 + (t42 * t9))
+        let !s61 = (t42 * t10)
+        wrU walk ((12 * i24) + 6) s59
+        wrU walk ((12 * i24) + 7) s60
+        wrU walk ((12 * i24) + 8) s61
         pure ()
-      loopI 0.0 24.0 $ \i64 -> do
-        let !d64 = fromIntegral i64 :: Double
-        chkI radii ((24 * i1) + i64) 0 0
-        t65 <- rdU radii ((24 * i1) + i64)
-        let !s66 = (t65 / 4.0)
-        chkI walk (12 * i64) 0 8
-        t67 <- rdU walk (12 * i64)
-        t68 <- rdU walk ((12 * i64) + 1)
-        t69 <- rdU walk ((12 * i64) + 2)
-        t70 <- rdU walk ((12 * i64) + 6)
-        t71 <- rdU walk ((12 * i64) + 7)
-        t72 <- rdU walk ((12 * i64) + 8)
-        t73 <- rdU walk ((12 * i64) + 3)
-        t74 <- rdU walk ((12 * i64) + 4)
-        t75 <- rdU walk ((12 * i64) + 5)
-        let !s76 = (t67 + (s66 * t73))
-        let !s77 = (t68 + (s66 * t74))
-        let !s78 = (t69 + (s66 * t75))
-        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
-        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
-        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
-        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
-        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
-        let !t88 = (1.0 - t79)
-        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
-        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
-        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
-        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
-        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
-        chkI verts ((291 * i1) + (12 * i64)) 6 8
-        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
-        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
-        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
-        wrU walk (12 * i64) s91
-        wrU walk ((12 * i64) + 1) s92
-        wrU walk ((12 * i64) + 2) s93
-        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
-        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
-        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
-        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
-        let !t98 = (t97 + (negate t97))
-        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
-        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
-        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
-        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
-        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
-        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
-        wrU walk ((12 * i64) + 3) s102
-        wrU walk ((12 * i64) + 4) s103
-        wrU walk ((12 * i64) + 5) s104
-        let !s105 = (t88 * t70)
-        let !s106 = (t79 + (t88 * t71))
-        let !s107 = (t88 * t72)
-        wrU walk ((12 * i64) + 6) s105
-        wrU walk ((12 * i64) + 7) s106
-        wrU walk ((12 * i64) + 8) s107
+      loopI 0.0 24.0 $ \i62 -> do
+        let !d62 = fromIntegral i62 :: Double
+        chkI radii ((24 * i1) + i62) 0 0
+        t63 <- rdU radii ((24 * i1) + i62)
+        let !s64 = (t63 / 4.0)
+        chkI walk (12 * i62) 0 8
+        t65 <- rdU walk (12 * i62)
+        t66 <- rdU walk ((12 * i62) + 1)
+        t67 <- rdU walk ((12 * i62) + 2)
+        t68 <- rdU walk ((12 * i62) + 6)
+        t69 <- rdU walk ((12 * i62) + 7)
+        t70 <- rdU walk ((12 * i62) + 8)
+        t71 <- rdU walk ((12 * i62) + 3)
+        t72 <- rdU walk ((12 * i62) + 4)
+        t73 <- rdU walk ((12 * i62) + 5)
+        let !s74 = (t65 + (s64 * t71))
+        let !s75 = (t66 + (s64 * t72))
+        let !s76 = (t67 + (s64 * t73))
+        let !t77 = (if (abs s64) > 0 then 1.0 else 0.0)
+        let !t78 = (if (abs t69) > 0 then 1.0 else 0.0)
+        let !t79 = (if ((abs s75) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t80 = (if t79 > 0 then (s75 + (negate ((s75 / t69) * t69))) else s75)
+        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t69) * t69))) else t80)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t84 = (if t79 > 0 then (s74 + (negate ((s75 / t69) * t68))) else s74)
+        let !t85 = (if t81 > 0 then (t84 + (negate ((t80 / t69) * t68))) else t84)
+        let !t86 = (1.0 - t77)
+        let !t87 = (if t79 > 0 then (s76 + (negate ((s75 / t69) * t70))) else s76)
+        let !t88 = (if t81 > 0 then (t87 + (negate ((t80 / t69) * t70))) else t87)
+        let !s89 = ((t77 * (if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85)) + (t86 * t65))
+        let !s90 = ((t77 * (if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82)) + (t86 * t66))
+        let !s91 = ((t77 * (if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88)) + (t86 * t67))
+        chkI verts ((291 * i1) + (12 * i62)) 6 8
+        wrU verts (((291 * i1) + (12 * i62)) + 6) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s89 else t2)
+        wrU verts (((291 * i1) + (12 * i62)) + 7) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s90 else t3)
+        wrU verts (((291 * i1) + (12 * i62)) + 8) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s91 else t4)
+        wrU walk (12 * i62) s89
+        wrU walk ((12 * i62) + 1) s90
+        wrU walk ((12 * i62) + 2) s91
+        let !t92 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
+        let !t93 = (if (abs s64) > 0 then (recip s64) else 0.0)
+        let !t94 = (t93 * ((if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85) + (negate t65)))
+        let !t95 = (t93 * ((if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82) + (negate t66)))
+        let !t96 = (t95 + (negate t95))
+        let !t97 = (t93 * ((if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88) + (negate t67)))
+        let !t98 = (sqrt (((t94 * t94) + (t96 * t96)) + (t97 * t97)))
+        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
+        let !s100 = ((t77 * (t92 * (t99 * t94))) + (t86 * t71))
+        let !s101 = ((t77 * (t92 * (t99 * t96))) + (t86 * t72))
+        let !s102 = ((t77 * (t92 * (t99 * t97))) + (t86 * t73))
+        wrU walk ((12 * i62) + 3) s100
+        wrU walk ((12 * i62) + 4) s101
+        wrU walk ((12 * i62) + 5) s102
+        let !s103 = (t86 * t68)
+        let !s104 = (t77 + (t86 * t69))
+        let !s105 = (t86 * t70)
+        wrU walk ((12 * i62) + 6) s103
+        wrU walk ((12 * i62) + 7) s104
+        wrU walk ((12 * i62) + 8) s105
         pure ()
-      loopI 0.0 24.0 $ \i108 -> do
-        let !d108 = fromIntegral i108 :: Double
-        chkI radii ((24 * i1) + i108) 0 0
-        t109 <- rdU radii ((24 * i1) + i108)
-        let !s110 = (t109 / 4.0)
-        chkI walk (12 * i108) 0 8
-        t111 <- rdU walk (12 * i108)
-        t112 <- rdU walk ((12 * i108) + 1)
-        t113 <- rdU walk ((12 * i108) + 2)
-        t114 <- rdU walk ((12 * i108) + 6)
-        t115 <- rdU walk ((12 * i108) + 7)
-        t116 <- rdU walk ((12 * i108) + 8)
-        t117 <- rdU walk ((12 * i108) + 3)
-        t118 <- rdU walk ((12 * i108) + 4)
-        t119 <- rdU walk ((12 * i108) + 5)
-        let !s120 = (t111 + (s110 * t117))
-        let !s121 = (t112 + (s110 * t118))
-        let !s122 = (t113 + (s110 * t119))
-        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
-        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
-        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
-        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
-        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
-        let !t132 = (1.0 - t123)
-        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
-        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
-        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
-        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
-        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
-        chkI verts ((291 * i1) + (12 * i108)) 9 11
-        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
-        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
-        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
-        wrU walk (12 * i108) s135
-        wrU walk ((12 * i108) + 1) s136
-        wrU walk ((12 * i108) + 2) s137
-        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
-        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
-        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
-        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
-        let !t142 = (t141 + (negate t141))
-        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
-        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
-        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
-        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
-        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
-        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
-        wrU walk ((12 * i108) + 3) s146
-        wrU walk ((12 * i108) + 4) s147
-        wrU walk ((12 * i108) + 5) s148
-        let !s149 = (t132 * t114)
-        let !s150 = (t123 + (t132 * t115))
-        let !s151 = (t132 * t116)
-        wrU walk ((12 * i108) + 6) s149
-        wrU walk ((12 * i108) + 7) s150
-        wrU walk ((12 * i108) + 8) s151
+      loopI 0.0 24.0 $ \i106 -> do
+        let !d106 = fromIntegral i106 :: Double
+        chkI radii ((24 * i1) + i106) 0 0
+        t107 <- rdU radii ((24 * i1) + i106)
+        let !s108 = (t107 / 4.0)
+        chkI walk (12 * i106) 0 8
+        t109 <- rdU walk (12 * i106)
+        t110 <- rdU walk ((12 * i106) + 1)
+        t111 <- rdU walk ((12 * i106) + 2)
+        t112 <- rdU walk ((12 * i106) + 6)
+        t113 <- rdU walk ((12 * i106) + 7)
+        t114 <- rdU walk ((12 * i106) + 8)
+        t115 <- rdU walk ((12 * i106) + 3)
+        t116 <- rdU walk ((12 * i106) + 4)
+        t117 <- rdU walk ((12 * i106) + 5)
+        let !s118 = (t109 + (s108 * t115))
+        let !s119 = (t110 + (s108 * t116))
+        let !s120 = (t111 + (s108 * t117))
+        let !t121 = (if (abs s108) > 0 then 1.0 else 0.0)
+        let !t122 = (if (abs t113) > 0 then 1.0 else 0.0)
+        let !t123 = (if ((abs s119) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t124 = (if t123 > 0 then (s119 + (negate ((s119 / t113) * t113))) else s119)
+        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t113) * t113))) else t124)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t128 = (if t123 > 0 then (s118 + (negate ((s119 / t113) * t112))) else s118)
+        let !t129 = (if t125 > 0 then (t128 + (negate ((t124 / t113) * t112))) else t128)
+        let !t130 = (1.0 - t121)
+        let !t131 = (if t123 > 0 then (s120 + (negate ((s119 / t113) * t114))) else s120)
+        let !t132 = (if t125 > 0 then (t131 + (negate ((t124 / t113) * t114))) else t131)
+        let !s133 = ((t121 * (if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129)) + (t130 * t109))
+        let !s134 = ((t121 * (if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126)) + (t130 * t110))
+        let !s135 = ((t121 * (if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132)) + (t130 * t111))
+        chkI verts ((291 * i1) + (12 * i106)) 9 11
+        wrU verts (((291 * i1) + (12 * i106)) + 9) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s133 else t2)
+        wrU verts (((291 * i1) + (12 * i106)) + 10) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s134 else t3)
+        wrU verts (((291 * i1) + (12 * i106)) + 11) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s135 else t4)
+        wrU walk (12 * i106) s133
+        wrU walk ((12 * i106) + 1) s134
+        wrU walk ((12 * i106) + 2) s135
+        let !t136 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
+        let !t137 = (if (abs s108) > 0 then (recip s108) else 0.0)
+        let !t138 = (t137 * ((if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129) + (negate t109)))
+        let !t139 = (t137 * ((if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126) + (negate t110)))
+        let !t140 = (t139 + (negate t139))
+        let !t141 = (t137 * ((if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132) + (negate t111)))
+        let !t142 = (sqrt (((t138 * t138) + (t140 * t140)) + (t141 * t141)))
+        let !t143 = (if t142 > 0 then (recip (if (t142 - 1.0e-300) > 0 then t142 else 1.0e-300)) else 0.0)
+        let !s144 = ((t121 * (t136 * (t143 * t138))) + (t130 * t115))
+        let !s145 = ((t121 * (t136 * (t143 * t140))) + (t130 * t116))
+        let !s146 = ((t121 * (t136 * (t143 * t141))) + (t130 * t117))
+        wrU walk ((12 * i106) + 3) s144
+        wrU walk ((12 * i106) + 4) s145
+        wrU walk ((12 * i106) + 5) s146
+        let !s147 = (t130 * t112)
+        let !s148 = (t121 + (t130 * t113))
+        let !s149 = (t130 * t114)
+        wrU walk ((12 * i106) + 6) s147
+        wrU walk ((12 * i106) + 7) s148
+        wrU walk ((12 * i106) + 8) s149
         pure ()
-      loopI 0.0 24.0 $ \i152 -> do
-        let !d152 = fromIntegral i152 :: Double
-        chkI radii ((24 * i1) + i152) 0 0
-        t153 <- rdU radii ((24 * i1) + i152)
-        let !s154 = (t153 / 4.0)
-        chkI walk (12 * i152) 0 8
-        t155 <- rdU walk (12 * i152)
-        t156 <- rdU walk ((12 * i152) + 1)
-        t157 <- rdU walk ((12 * i152) + 2)
-        t158 <- rdU walk ((12 * i152) + 6)
-        t159 <- rdU walk ((12 * i152) + 7)
-        t160 <- rdU walk ((12 * i152) + 8)
-        t161 <- rdU walk ((12 * i152) + 3)
-        t162 <- rdU walk ((12 * i152) + 4)
-        t163 <- rdU walk ((12 * i152) + 5)
-        let !s164 = (t155 + (s154 * t161))
-        let !s165 = (t156 + (s154 * t162))
-        let !s166 = (t157 + (s154 * t163))
-        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
-        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
-        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
-        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
-        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
-        let !t176 = (1.0 - t167)
-        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
-        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
-        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
-        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
-        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
-        chkI verts ((291 * i1) + (12 * i152)) 12 14
-        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
-        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
-        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
+      loopI 0.0 24.0 $ \i150 -> do
+        let !d150 = fromIntegral i150 :: Double
+        chkI radii ((24 * i1) + i150) 0 0
+        t151 <- rdU radii ((24 * i1) + i150)
+        let !s152 = (t151 / 4.0)
+        chkI walk (12 * i150) 0 8
+        t153 <- rdU walk (12 * i150)
+        t154 <- rdU walk ((12 * i150) + 1)
+        t155 <- rdU walk ((12 * i150) + 2)
+        t156 <- rdU walk ((12 * i150) + 6)
+        t157 <- rdU walk ((12 * i150) + 7)
+        t158 <- rdU walk ((12 * i150) + 8)
+        t159 <- rdU walk ((12 * i150) + 3)
+        t160 <- rdU walk ((12 * i150) + 4)
+        t161 <- rdU walk ((12 * i150) + 5)
+        let !s162 = (t153 + (s152 * t159))
+        let !s163 = (t154 + (s152 * t160))
+        let !s164 = (t155 + (s152 * t161))
+        let !t165 = (if (abs s152) > 0 then 1.0 else 0.0)
+        let !t166 = (if (abs t157) > 0 then 1.0 else 0.0)
+        let !t167 = (if ((abs s163) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t168 = (if t167 > 0 then (s163 + (negate ((s163 / t157) * t157))) else s163)
+        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t157) * t157))) else t168)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t172 = (if t167 > 0 then (s162 + (negate ((s163 / t157) * t156))) else s162)
+        let !t173 = (if t169 > 0 then (t172 + (negate ((t168 / t157) * t156))) else t172)
+        let !t174 = (1.0 - t165)
+        let !t175 = (if t167 > 0 then (s164 + (negate ((s163 / t157) * t158))) else s164)
+        let !t176 = (if t169 > 0 then (t175 + (negate ((t168 / t157) * t158))) else t175)
+        let !s177 = ((t165 * (if t171 > 0 then (t173 + (negate ((t170 / t157) * t156))) else t173)) + (t174 * t153))
+        let !s178 = ((t165 * (if t171 > 0 then (t170 + (negate ((t170 / t157) * t157))) else t170)) + (t174 * t154))
+        let !s179 = ((t165 * (if t171 > 0 then (t176 + (negate ((t170 / t157) * t158))) else t176)) + (t174 * t155))
+        chkI verts ((291 * i1) + (12 * i150)) 12 14
+        wrU verts (((291 * i1) + (12 * i150)) + 12) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s177 else t2)
+        wrU verts (((291 * i1) + (12 * i150)) + 13) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s178 else t3)
+        wrU verts (((291 * i1) + (12 * i150)) + 14) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s179 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i182 -> do
-        let !d182 = fromIntegral i182 :: Double
-        chkI radii ((24 * i1) + i182) 0 0
-        t183 <- rdU radii ((24 * i1) + i182)
-        t184 <- getR v18
-        t185 <- getR v19
-        setR v18 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
-        setR v19 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
-        let !s186 = ((t184 * t5) + (t185 * s14))
-        let !s187 = ((t184 * t6) + (t185 * s15))
-        let !s188 = ((t184 * t7) + (t185 * s16))
-        let !s189 = (t2 + (t183 * s186))
-        let !s190 = (t3 + (t183 * s187))
-        let !s191 = (t4 + (t183 * s188))
-        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
-        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
-        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
-        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
-        let !t201 = (1.0 - t192)
-        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
-        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
-        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
-        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
-        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
-        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
-        let !s208 = (if t207 > 0 then s204 else t2)
-        let !s209 = (if t207 > 0 then s205 else t3)
-        let !s210 = (if t207 > 0 then s206 else t4)
-        chkI verts ((291 * i1) + (12 * i182)) 3 14
-        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
-        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
-        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
-        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
+      loopI 0.0 24.0 $ \i180 -> do
+        let !d180 = fromIntegral i180 :: Double
+        chkI radii ((24 * i1) + i180) 0 0
+        t181 <- rdU radii ((24 * i1) + i180)
+        t182 <- rdU locals 0
+        t183 <- rdU locals 1
+        wrU locals 0 ((t182 * 0.9659258262890683) - (t183 * 0.25881904510252074))
+        wrU locals 1 ((t183 * 0.9659258262890683) + (t182 * 0.25881904510252074))
+        let !s184 = ((t182 * t5) + (t183 * s14))
+        let !s185 = ((t182 * t6) + (t183 * s15))
+        let !s186 = ((t182 * t7) + (t183 * s16))
+        let !s187 = (t2 + (t181 * s184))
+        let !s188 = (t3 + (t181 * s185))
+        let !s189 = (t4 + (t181 * s186))
+        let !t190 = (if (abs t181) > 0 then 1.0 else 0.0)
+        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t192 = (if ((abs s188) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t193 = (if t192 > 0 then (s188 + (negate ((s188 / t9) * t9))) else s188)
+        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t197 = (if t192 > 0 then (s187 + (negate ((s188 / t9) * t8))) else s187)
+        let !t198 = (if t194 > 0 then (t197 + (negate ((t193 / t9) * t8))) else t197)
+        let !t199 = (1.0 - t190)
+        let !t200 = (if t192 > 0 then (s189 + (negate ((s188 / t9) * t10))) else s189)
+        let !t201 = (if t194 > 0 then (t200 + (negate ((t193 / t9) * t10))) else t200)
+        let !s202 = ((t190 * (if t196 > 0 then (t198 + (negate ((t195 / t9) * t8))) else t198)) + (t199 * t2))
+        let !s203 = ((t190 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t199 * t3))
+        let !s204 = ((t190 * (if t196 > 0 then (t201 + (negate ((t195 / t9) * t10))) else t201)) + (t199 * t4))
+        let !t205 = (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204))))
+        let !s206 = (if t205 > 0 then s202 else t2)
+        let !s207 = (if t205 > 0 then s203 else t3)
+        let !s208 = (if t205 > 0 then s204 else t4)
+        chkI verts ((291 * i1) + (12 * i180)) 3 14
+        wrU verts (((291 * i1) + (12 * i180)) + 12) s206
+        wrU verts (((291 * i1) + (12 * i180)) + 13) s207
+        wrU verts (((291 * i1) + (12 * i180)) + 14) s208
+        wrU verts (((291 * i1) + (12 * i180)) + 3) (t2 + (0.25 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 4) (t3 + (0.25 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 5) (t4 + (0.25 * (s208 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i180)) + 6) (t2 + (0.5 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 7) (t3 + (0.5 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 8) (t4 + (0.5 * (s208 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i180)) + 9) (t2 + (0.75 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 10) (t3 + (0.75 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 11) (t4 + (0.75 * (s208 + (negate t4))))
         pure ()
       pure ()
     pure ()

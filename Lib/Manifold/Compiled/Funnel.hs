@@ -22,13 +22,13 @@ compiled = CompiledStep "funnel" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary function f(x, y, z) {\n  const t0 = (1.0 - Math.abs(z));\n  const t1 = (Math.exp(((0.9 * z) - 0.7)) - Math.abs(x));\n  return ((t0 - t1) > 0 ? t1 : t0);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Funnel: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,130 +71,131 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 16
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 9.1552734375e-5) > 0 then t6 else 9.1552734375e-5)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 9.1552734375e-5) > 0 then t5 else 9.1552734375e-5)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    t36 <- rdU meta 4
     t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    t39 <- rdU meta 4
-    t40 <- rdU meta 5
-    let !s41 = (floorF (t32 / t40))
-    let !s42 = (floorF (t33 / t40))
-    let !s43 = (floorF (t34 / t40))
-    loopI 0.0 3.0 $ \i44 -> do
-      let !d44 = fromIntegral i44 :: Double
-      loopI 0.0 3.0 $ \i45 -> do
-        let !d45 = fromIntegral i45 :: Double
-        loopI 0.0 3.0 $ \i46 -> do
-          let !d46 = fromIntegral i46 :: Double
-          let !s47 = ((s41 + d44) - 1.0)
-          let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = ((s43 + d46) - 1.0)
-          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
-          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
-          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
-          chkI grid (truncate s52) 0 0
-          t53 <- rdU grid (truncate s52)
-          chkI grid ((truncate s52) + (truncate t39)) 0 0
-          t54 <- rdU grid ((truncate s52) + (truncate t39))
-          loopI t54 t53 $ \i55 -> do
-            let !d55 = fromIntegral i55 :: Double
-            chkI items i55 0 0
-            t56 <- rdU items i55
-            chkI cellOf (truncate t56) 0 0
-            t57 <- rdU cellOf (truncate t56)
-            if (0.5 - (abs (t57 - s50))) > 0 then do
-              if (t56 - d31) > 0 then do
-                chkI pos (3 * (truncate t56)) 0 2
-                t58 <- rdU pos (3 * (truncate t56))
-                t59 <- rdU pos ((3 * (truncate t56)) + 1)
-                t60 <- rdU pos ((3 * (truncate t56)) + 2)
-                chkI scalars (6 * (truncate t56)) 2 5
-                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
-                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
-                let !t63 = (t36 + t62)
-                let !t64 = (t32 + (negate t58))
-                let !t65 = (t33 + (negate t59))
-                let !t66 = (t34 + (negate t60))
-                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
-                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
-                  t68 <- getR v38
-                  chkI near (truncate t68) 0 0
-                  wrU near (truncate t68) t56
-                  setR v38 (t68 + 1.0)
+    let !s38 = (floorF (t30 / t37))
+    let !s39 = (floorF (t31 / t37))
+    let !s40 = (floorF (t32 / t37))
+    loopI 0.0 3.0 $ \i41 -> do
+      let !d41 = fromIntegral i41 :: Double
+      loopI 0.0 3.0 $ \i42 -> do
+        let !d42 = fromIntegral i42 :: Double
+        loopI 0.0 3.0 $ \i43 -> do
+          let !d43 = fromIntegral i43 :: Double
+          let !s44 = ((s38 + d41) - 1.0)
+          let !s45 = ((s39 + d42) - 1.0)
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = (((((s44 + 131072.0) * 262144.0) + (s45 + 131072.0)) * 262144.0) + (s46 + 131072.0))
+          let !t48 = (((s44 * 7.3856093e7) + (s45 * 1.9349663e7)) + (s46 * 8.3492791e7))
+          let !s49 = (t48 - (t36 * (floorF (t48 / t36))))
+          chkI grid (truncate s49) 0 0
+          t50 <- rdU grid (truncate s49)
+          chkI grid ((truncate s49) + (truncate t36)) 0 0
+          t51 <- rdU grid ((truncate s49) + (truncate t36))
+          loopI t51 t50 $ \i52 -> do
+            let !d52 = fromIntegral i52 :: Double
+            chkI items i52 0 0
+            t53 <- rdU items i52
+            chkI cellOf (truncate t53) 0 0
+            t54 <- rdU cellOf (truncate t53)
+            if (0.5 - (abs (t54 - s47))) > 0 then do
+              if (t53 - d29) > 0 then do
+                chkI pos (3 * (truncate t53)) 0 2
+                t55 <- rdU pos (3 * (truncate t53))
+                t56 <- rdU pos ((3 * (truncate t53)) + 1)
+                t57 <- rdU pos ((3 * (truncate t53)) + 2)
+                chkI scalars (6 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                let !t60 = (t34 + t59)
+                let !t61 = (t30 + (negate t55))
+                let !t62 = (t31 + (negate t56))
+                let !t63 = (t32 + (negate t57))
+                let !t64 = ((t33 + t58) - (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63))))
+                if (if (t60 - t64) > 0 then t64 else t60) > 0 then do
+                  t65 <- rdU locals 2
+                  chkI near (truncate t65) 0 0
+                  wrU near (truncate t65) t53
+                  wrU locals 2 (t65 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -208,79 +209,79 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    t69 <- getR v38
-    loopI 0.0 t69 $ \i70 -> do
-      let !d70 = fromIntegral i70 :: Double
-      chkI near i70 0 0
-      t71 <- rdU near i70
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+    t66 <- rdU locals 2
+    loopI 0.0 t66 $ \i67 -> do
+      let !d67 = fromIntegral i67 :: Double
+      chkI near i67 0 0
+      t68 <- rdU near i67
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    chkI normal (3 * i31) 0 2
-    t72 <- rdU normal (3 * i31)
-    t73 <- rdU normal ((3 * i31) + 1)
-    t74 <- rdU normal ((3 * i31) + 2)
-    v75 <- newR 0.0
-    v76 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i77 -> do
-      let !d77 = fromIntegral i77 :: Double
-      chkI verts ((291 * i31) + (12 * i77)) 12 14
-      t78 <- rdU verts (((291 * i31) + (12 * i77)) + 12)
-      t79 <- rdU verts (((291 * i31) + (12 * i77)) + 13)
-      t80 <- rdU verts (((291 * i31) + (12 * i77)) + 14)
-      let !t81 = (1.0 - (abs t80))
-      let !t82 = ((exp ((0.9 * t80) - 0.7)) - (abs t78))
-      let !s83 = (if (t81 - t82) > 0 then t82 else t81)
-      t84 <- getR v75
-      if ((negate s83) - t84) > 0 then do
-        setR v75 (negate s83)
-        setR v76 d77
+    chkI normal (3 * i29) 0 2
+    t69 <- rdU normal (3 * i29)
+    t70 <- rdU normal ((3 * i29) + 1)
+    t71 <- rdU normal ((3 * i29) + 2)
+    wrU locals 3 0.0
+    wrU locals 4 (-1.0)
+    loopI 0.0 24.0 $ \i72 -> do
+      let !d72 = fromIntegral i72 :: Double
+      chkI verts ((291 * i29) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      let !t76 = (1.0 - (abs t75))
+      let !t77 = ((exp ((0.9 * t75) - 0.7)) - (abs t73))
+      let !s78 = (if (t76 - t77) > 0 then t77 else t76)
+      t79 <- rdU locals 3
+      if ((negate s78) - t79) > 0 then do
+        wrU locals 3 (negate s78)
+        wrU locals 4 d72
         pure ()
       else do
         pure ()
       pure ()
-    t85 <- getR v75
-    if t85 > 0 then do
-      t86 <- getR v76
-      chkI verts ((12 * (truncate t86)) + (291 * i31)) 12 14
-      t87 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 12)
-      t88 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 13)
-      t89 <- rdU verts (((12 * (truncate t86)) + (291 * i31)) + 14)
-      let !t90 = (exp ((0.9 * t89) - 0.7))
-      let !t91 = ((1.0 - (abs t89)) - (t90 - (abs t87)))
-      let !t92 = (if t91 > 0 then (negate (signum t87)) else 0.0)
-      let !t93 = (if t91 > 0 then (t90 * 0.9) else (negate (signum t89)))
-      let !t94 = (sqrt ((t92 * t92) + (t93 * t93)))
-      let !t95 = (if t94 > 0 then (recip (if (t94 - 1.0e-300) > 0 then t94 else 1.0e-300)) else 0.0)
-      let !s96 = (t95 * t92)
-      let !s97 = (t95 * t93)
-      let !s98 = (t73 * s97)
-      let !s99 = ((t74 * s96) - (t72 * s97))
-      let !s100 = (negate (t73 * s96))
-      v101 <- newR 1.0e300
-      v102 <- newR (-1.0e300)
-      v103 <- newR (-1.0)
-      v104 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i105 -> do
-        let !d105 = fromIntegral i105 :: Double
-        chkI verts ((12 * i105) + (291 * i31)) 12 14
-        t106 <- rdU verts (((12 * i105) + (291 * i31)) + 12)
-        t107 <- rdU verts (((12 * i105) + (291 * i31)) + 13)
-        t108 <- rdU verts (((12 * i105) + (291 * i31)) + 14)
-        let !t109 = (1.0 - (abs t108))
-        let !t110 = ((exp ((0.9 * t108) - 0.7)) - (abs t106))
-        if (negate (if (t109 - t110) > 0 then t110 else t109)) > 0 then do
-          let !s111 = (((t106 * s98) + (t107 * s99)) + (t108 * s100))
-          t112 <- getR v101
-          if (t112 - s111) > 0 then do
-            setR v101 s111
-            setR v103 d105
+    t80 <- rdU locals 3
+    if t80 > 0 then do
+      t81 <- rdU locals 4
+      chkI verts ((12 * (truncate t81)) + (291 * i29)) 12 14
+      t82 <- rdU verts (((12 * (truncate t81)) + (291 * i29)) + 12)
+      t83 <- rdU verts (((12 * (truncate t81)) + (291 * i29)) + 13)
+      t84 <- rdU verts (((12 * (truncate t81)) + (291 * i29)) + 14)
+      let !t85 = (exp ((0.9 * t84) - 0.7))
+      let !t86 = ((1.0 - (abs t84)) - (t85 - (abs t82)))
+      let !t87 = (if t86 > 0 then (negate (signum t82)) else 0.0)
+      let !t88 = (if t86 > 0 then (t85 * 0.9) else (negate (signum t84)))
+      let !t89 = (sqrt ((t87 * t87) + (t88 * t88)))
+      let !t90 = (if t89 > 0 then (recip (if (t89 - 1.0e-300) > 0 then t89 else 1.0e-300)) else 0.0)
+      let !s91 = (t90 * t87)
+      let !s92 = (t90 * t88)
+      let !s93 = (t70 * s92)
+      let !s94 = ((t71 * s91) - (t69 * s92))
+      let !s95 = (negate (t70 * s91))
+      wrU locals 5 1.0e300
+      wrU locals 6 (-1.0e300)
+      wrU locals 7 (-1.0)
+      wrU locals 8 (-1.0)
+      loopI 0.0 24.0 $ \i96 -> do
+        let !d96 = fromIntegral i96 :: Double
+        chkI verts ((291 * i29) + (12 * i96)) 12 14
+        t97 <- rdU verts (((291 * i29) + (12 * i96)) + 12)
+        t98 <- rdU verts (((291 * i29) + (12 * i96)) + 13)
+        t99 <- rdU verts (((291 * i29) + (12 * i96)) + 14)
+        let !t100 = (1.0 - (abs t99))
+        let !t101 = ((exp ((0.9 * t99) - 0.7)) - (abs t97))
+        if (negate (if (t100 - t101) > 0 then t101 else t100)) > 0 then do
+          let !s102 = (((t97 * s93) + (t98 * s94)) + (t99 * s95))
+          t103 <- rdU locals 5
+          if (t103 - s102) > 0 then do
+            wrU locals 5 s102
+            wrU locals 7 d96
             pure ()
           else do
             pure ()
-          t113 <- getR v102
-          if (s111 - t113) > 0 then do
-            setR v102 s111
-            setR v104 d105
+          t104 <- rdU locals 6
+          if (s102 - t104) > 0 then do
+            wrU locals 6 s102
+            wrU locals 8 d96
             pure ()
           else do
             pure ()
@@ -288,224 +289,224 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t114 <- getR v103
-      t115 <- getR v104
-      chkI verts ((12 * (truncate t114)) + (291 * i31)) 12 14
-      t116 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 12)
-      t117 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 13)
-      t118 <- rdU verts (((12 * (truncate t114)) + (291 * i31)) + 14)
-      let !t119 = (exp ((0.9 * t118) - 0.7))
-      let !t120 = ((1.0 - (abs t118)) - (t119 - (abs t116)))
-      let !s121 = (if t120 > 0 then (negate (signum t116)) else 0.0)
-      let !s122 = (if t120 > 0 then (t119 * 0.9) else (negate (signum t118)))
-      let !s123 = (sqrt ((s121 * s121) + (s122 * s122)))
-      let !s124 = (if t120 > 0 then (t119 - (abs t116)) else (1.0 - (abs t118)))
-      t125 <- rdU meta 2
-      t126 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t126) > 0 then 1.0 else t126)) - t125) - 0.5) > 0 then do
-        wrU meta 2 (t125 + 1.0)
-        t127 <- rdU pos (3 * i31)
-        t128 <- rdU pos ((3 * i31) + 1)
-        t129 <- rdU pos ((3 * i31) + 2)
-        t130 <- rdU normal (3 * i31)
-        t131 <- rdU normal ((3 * i31) + 1)
-        t132 <- rdU normal ((3 * i31) + 2)
-        chkI axis (3 * i31) 0 2
-        t133 <- rdU axis (3 * i31)
-        t134 <- rdU axis ((3 * i31) + 1)
-        t135 <- rdU axis ((3 * i31) + 2)
-        let !s136 = ((t131 * t135) - (t132 * t134))
-        let !s137 = ((t132 * t133) - (t130 * t135))
-        let !s138 = ((t130 * t134) - (t131 * t133))
-        chkI scalars (6 * i31) 0 0
-        t139 <- rdU scalars (6 * i31)
-        t140 <- rdU scalars ((6 * i31) + 5)
-        t141 <- rdU scalars ((6 * i31) + 2)
-        t142 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t125)) 0 29
-        wrU contacts (30 * (truncate t125)) d31
-        wrU contacts ((30 * (truncate t125)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t125)) + 2) d31
-        wrU contacts ((30 * (truncate t125)) + 3) 8.0
-        let !t143 = (if s123 > 0 then (recip (if (s123 - 1.0e-300) > 0 then s123 else 1.0e-300)) else 0.0)
-        let !t144 = (t143 * s121)
-        wrU contacts ((30 * (truncate t125)) + 4) (t144 + (negate (((t130 * t144) + (t132 * (t143 * s122))) * t130)))
-        wrU contacts ((30 * (truncate t125)) + 5) (negate (((t130 * t144) + (t132 * (t143 * s122))) * t131))
-        let !t145 = (t143 * s122)
-        wrU contacts ((30 * (truncate t125)) + 6) (t145 + (negate (((t130 * t144) + (t132 * t145)) * t132)))
-        let !t146 = (t117 + (negate t128))
-        wrU contacts ((30 * (truncate t125)) + 7) ((((t146 * t145) * t130) + ((((t118 + (negate t129)) * t144) - ((t116 + (negate t127)) * t145)) * t131)) + ((negate (t146 * t144)) * t132))
-        let !t147 = (t131 * t145)
-        wrU contacts ((30 * (truncate t125)) + 12) (t147 + (negate ((((t130 * t147) + (t131 * ((t132 * t144) - (t130 * t145)))) + (t132 * (negate (t131 * t144)))) * t130)))
-        let !t148 = ((t132 * t144) - (t130 * t145))
-        wrU contacts ((30 * (truncate t125)) + 13) (t148 + (negate ((((t130 * t147) + (t131 * t148)) + (t132 * (negate (t131 * t144)))) * t131)))
-        let !t149 = (negate (t131 * t144))
-        wrU contacts ((30 * (truncate t125)) + 14) (t149 + (negate ((((t130 * t147) + (t131 * t148)) + (t132 * t149)) * t132)))
-        let !t150 = (t118 + (negate t129))
-        let !t151 = (t116 + (negate t127))
-        wrU contacts ((30 * (truncate t125)) + 15) (((((t146 * t149) - (t150 * t148)) * t130) + (((t150 * t147) - (t151 * t149)) * t131)) + (((t151 * t148) - (t146 * t147)) * t132))
-        wrU contacts ((30 * (truncate t125)) + 20) (if s123 > 0 then ((negate s124) / (if (s123 - 1.0e-300) > 0 then s123 else 1.0e-300)) else 0.0)
-        wrU contacts ((30 * (truncate t125)) + 26) 1.0
-        wrU contacts ((30 * (truncate t125)) + 27) t116
-        wrU contacts ((30 * (truncate t125)) + 28) t117
-        wrU contacts ((30 * (truncate t125)) + 29) t118
+      t105 <- rdU locals 7
+      t106 <- rdU locals 8
+      chkI verts ((12 * (truncate t105)) + (291 * i29)) 12 14
+      t107 <- rdU verts (((12 * (truncate t105)) + (291 * i29)) + 12)
+      t108 <- rdU verts (((12 * (truncate t105)) + (291 * i29)) + 13)
+      t109 <- rdU verts (((12 * (truncate t105)) + (291 * i29)) + 14)
+      let !t110 = (exp ((0.9 * t109) - 0.7))
+      let !t111 = ((1.0 - (abs t109)) - (t110 - (abs t107)))
+      let !s112 = (if t111 > 0 then (negate (signum t107)) else 0.0)
+      let !s113 = (if t111 > 0 then (t110 * 0.9) else (negate (signum t109)))
+      let !s114 = (sqrt ((s112 * s112) + (s113 * s113)))
+      let !s115 = (if t111 > 0 then (t110 - (abs t107)) else (1.0 - (abs t109)))
+      t116 <- rdU meta 2
+      t117 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t117) > 0 then 1.0 else t117)) - t116) - 0.5) > 0 then do
+        wrU meta 2 (t116 + 1.0)
+        t118 <- rdU pos (3 * i29)
+        t119 <- rdU pos ((3 * i29) + 1)
+        t120 <- rdU pos ((3 * i29) + 2)
+        t121 <- rdU normal (3 * i29)
+        t122 <- rdU normal ((3 * i29) + 1)
+        t123 <- rdU normal ((3 * i29) + 2)
+        chkI axis (3 * i29) 0 2
+        t124 <- rdU axis (3 * i29)
+        t125 <- rdU axis ((3 * i29) + 1)
+        t126 <- rdU axis ((3 * i29) + 2)
+        let !s127 = ((t122 * t126) - (t123 * t125))
+        let !s128 = ((t123 * t124) - (t121 * t126))
+        let !s129 = ((t121 * t125) - (t122 * t124))
+        chkI scalars (6 * i29) 0 0
+        t130 <- rdU scalars (6 * i29)
+        t131 <- rdU scalars ((6 * i29) + 5)
+        t132 <- rdU scalars ((6 * i29) + 2)
+        t133 <- rdU scalars ((6 * i29) + 3)
+        chkI contacts (30 * (truncate t116)) 0 29
+        wrU contacts (30 * (truncate t116)) d29
+        wrU contacts ((30 * (truncate t116)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t116)) + 2) d29
+        wrU contacts ((30 * (truncate t116)) + 3) 8.0
+        let !t134 = (if s114 > 0 then (recip (if (s114 - 1.0e-300) > 0 then s114 else 1.0e-300)) else 0.0)
+        let !t135 = (t134 * s112)
+        wrU contacts ((30 * (truncate t116)) + 4) (t135 + (negate (((t121 * t135) + (t123 * (t134 * s113))) * t121)))
+        wrU contacts ((30 * (truncate t116)) + 5) (negate (((t121 * t135) + (t123 * (t134 * s113))) * t122))
+        let !t136 = (t134 * s113)
+        wrU contacts ((30 * (truncate t116)) + 6) (t136 + (negate (((t121 * t135) + (t123 * t136)) * t123)))
+        let !t137 = (t108 + (negate t119))
+        wrU contacts ((30 * (truncate t116)) + 7) ((((t137 * t136) * t121) + ((((t109 + (negate t120)) * t135) - ((t107 + (negate t118)) * t136)) * t122)) + ((negate (t137 * t135)) * t123))
+        let !t138 = (t122 * t136)
+        wrU contacts ((30 * (truncate t116)) + 12) (t138 + (negate ((((t121 * t138) + (t122 * ((t123 * t135) - (t121 * t136)))) + (t123 * (negate (t122 * t135)))) * t121)))
+        let !t139 = ((t123 * t135) - (t121 * t136))
+        wrU contacts ((30 * (truncate t116)) + 13) (t139 + (negate ((((t121 * t138) + (t122 * t139)) + (t123 * (negate (t122 * t135)))) * t122)))
+        let !t140 = (negate (t122 * t135))
+        wrU contacts ((30 * (truncate t116)) + 14) (t140 + (negate ((((t121 * t138) + (t122 * t139)) + (t123 * t140)) * t123)))
+        let !t141 = (t109 + (negate t120))
+        let !t142 = (t107 + (negate t118))
+        wrU contacts ((30 * (truncate t116)) + 15) (((((t137 * t140) - (t141 * t139)) * t121) + (((t141 * t138) - (t142 * t140)) * t122)) + (((t142 * t139) - (t137 * t138)) * t123))
+        wrU contacts ((30 * (truncate t116)) + 20) (if s114 > 0 then ((negate s115) / (if (s114 - 1.0e-300) > 0 then s114 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t116)) + 26) 1.0
+        wrU contacts ((30 * (truncate t116)) + 27) t107
+        wrU contacts ((30 * (truncate t116)) + 28) t108
+        wrU contacts ((30 * (truncate t116)) + 29) t109
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t152 <- rdU pos (-3)
-          t153 <- rdU pos (-2)
-          t154 <- rdU pos (-1)
+          t143 <- rdU pos (-3)
+          t144 <- rdU pos (-2)
+          t145 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t155 <- rdU normal (-3)
-          t156 <- rdU normal (-2)
-          t157 <- rdU normal (-1)
+          t146 <- rdU normal (-3)
+          t147 <- rdU normal (-2)
+          t148 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t158 <- rdU axis (-3)
-          t159 <- rdU axis (-2)
-          t160 <- rdU axis (-1)
-          let !s161 = ((t156 * t160) - (t157 * t159))
-          let !s162 = ((t157 * t158) - (t155 * t160))
-          let !s163 = ((t155 * t159) - (t156 * t158))
+          t149 <- rdU axis (-3)
+          t150 <- rdU axis (-2)
+          t151 <- rdU axis (-1)
+          let !s152 = ((t147 * t151) - (t148 * t150))
+          let !s153 = ((t148 * t149) - (t146 * t151))
+          let !s154 = ((t146 * t150) - (t147 * t149))
           chkI scalars 0 (-6) (-1)
-          t164 <- rdU scalars (-6)
-          t165 <- rdU scalars (-1)
-          t166 <- rdU scalars (-4)
-          t167 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t125)) + 8) (t144 + (negate (((t155 * t144) + (t157 * t145)) * t155)))
-          wrU contacts ((30 * (truncate t125)) + 9) (negate (((t155 * t144) + (t157 * t145)) * t156))
-          wrU contacts ((30 * (truncate t125)) + 10) (t145 + (negate (((t155 * t144) + (t157 * t145)) * t157)))
-          let !t168 = (t117 + (negate t153))
-          wrU contacts ((30 * (truncate t125)) + 11) ((((t168 * t145) * t155) + ((((t118 + (negate t154)) * t144) - ((t116 + (negate t152)) * t145)) * t156)) + ((negate (t168 * t144)) * t157))
-          wrU contacts ((30 * (truncate t125)) + 16) (t147 + (negate ((((t155 * t147) + (t156 * t148)) + (t157 * t149)) * t155)))
-          wrU contacts ((30 * (truncate t125)) + 17) (t148 + (negate ((((t155 * t147) + (t156 * t148)) + (t157 * t149)) * t156)))
-          wrU contacts ((30 * (truncate t125)) + 18) (t149 + (negate ((((t155 * t147) + (t156 * t148)) + (t157 * t149)) * t157)))
-          let !t169 = (t118 + (negate t154))
-          let !t170 = (t116 + (negate t152))
-          wrU contacts ((30 * (truncate t125)) + 19) (((((t168 * t149) - (t169 * t148)) * t155) + (((t169 * t147) - (t170 * t149)) * t156)) + (((t170 * t148) - (t168 * t147)) * t157))
+          t155 <- rdU scalars (-6)
+          t156 <- rdU scalars (-1)
+          t157 <- rdU scalars (-4)
+          t158 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t116)) + 8) (t135 + (negate (((t146 * t135) + (t148 * t136)) * t146)))
+          wrU contacts ((30 * (truncate t116)) + 9) (negate (((t146 * t135) + (t148 * t136)) * t147))
+          wrU contacts ((30 * (truncate t116)) + 10) (t136 + (negate (((t146 * t135) + (t148 * t136)) * t148)))
+          let !t159 = (t108 + (negate t144))
+          wrU contacts ((30 * (truncate t116)) + 11) ((((t159 * t136) * t146) + ((((t109 + (negate t145)) * t135) - ((t107 + (negate t143)) * t136)) * t147)) + ((negate (t159 * t135)) * t148))
+          wrU contacts ((30 * (truncate t116)) + 16) (t138 + (negate ((((t146 * t138) + (t147 * t139)) + (t148 * t140)) * t146)))
+          wrU contacts ((30 * (truncate t116)) + 17) (t139 + (negate ((((t146 * t138) + (t147 * t139)) + (t148 * t140)) * t147)))
+          wrU contacts ((30 * (truncate t116)) + 18) (t140 + (negate ((((t146 * t138) + (t147 * t139)) + (t148 * t140)) * t148)))
+          let !t160 = (t109 + (negate t145))
+          let !t161 = (t107 + (negate t143))
+          wrU contacts ((30 * (truncate t116)) + 19) (((((t159 * t140) - (t160 * t139)) * t146) + (((t160 * t138) - (t161 * t140)) * t147)) + (((t161 * t139) - (t159 * t138)) * t148))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t125)) + 8) 0.0
-          wrU contacts ((30 * (truncate t125)) + 9) 0.0
-          wrU contacts ((30 * (truncate t125)) + 10) 0.0
-          wrU contacts ((30 * (truncate t125)) + 11) 0.0
-          wrU contacts ((30 * (truncate t125)) + 16) 0.0
-          wrU contacts ((30 * (truncate t125)) + 17) 0.0
-          wrU contacts ((30 * (truncate t125)) + 18) 0.0
-          wrU contacts ((30 * (truncate t125)) + 19) 0.0
+          wrU contacts ((30 * (truncate t116)) + 8) 0.0
+          wrU contacts ((30 * (truncate t116)) + 9) 0.0
+          wrU contacts ((30 * (truncate t116)) + 10) 0.0
+          wrU contacts ((30 * (truncate t116)) + 11) 0.0
+          wrU contacts ((30 * (truncate t116)) + 16) 0.0
+          wrU contacts ((30 * (truncate t116)) + 17) 0.0
+          wrU contacts ((30 * (truncate t116)) + 18) 0.0
+          wrU contacts ((30 * (truncate t116)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t171 <- rdU meta 6
-        wrU meta 6 (t171 + 1.0)
+        t162 <- rdU meta 6
+        wrU meta 6 (t162 + 1.0)
         pure ()
-      if (abs (t115 - t114)) > 0 then do
-        chkI verts ((12 * (truncate t115)) + (291 * i31)) 12 14
-        t172 <- rdU verts (((12 * (truncate t115)) + (291 * i31)) + 12)
-        t173 <- rdU verts (((12 * (truncate t115)) + (291 * i31)) + 13)
-        t174 <- rdU verts (((12 * (truncate t115)) + (291 * i31)) + 14)
-        let !t175 = (exp ((0.9 * t174) - 0.7))
-        let !t176 = ((1.0 - (abs t174)) - (t175 - (abs t172)))
-        let !s177 = (if t176 > 0 then (negate (signum t172)) else 0.0)
-        let !s178 = (if t176 > 0 then (t175 * 0.9) else (negate (signum t174)))
-        let !s179 = (sqrt ((s177 * s177) + (s178 * s178)))
-        let !s180 = (if t176 > 0 then (t175 - (abs t172)) else (1.0 - (abs t174)))
-        t181 <- rdU meta 2
-        t182 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t182) > 0 then 1.0 else t182)) - t181) - 0.5) > 0 then do
-          wrU meta 2 (t181 + 1.0)
-          t183 <- rdU pos (3 * i31)
-          t184 <- rdU pos ((3 * i31) + 1)
-          t185 <- rdU pos ((3 * i31) + 2)
-          t186 <- rdU normal (3 * i31)
-          t187 <- rdU normal ((3 * i31) + 1)
-          t188 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t189 <- rdU axis (3 * i31)
-          t190 <- rdU axis ((3 * i31) + 1)
-          t191 <- rdU axis ((3 * i31) + 2)
-          let !s192 = ((t187 * t191) - (t188 * t190))
-          let !s193 = ((t188 * t189) - (t186 * t191))
-          let !s194 = ((t186 * t190) - (t187 * t189))
-          chkI scalars (6 * i31) 0 0
-          t195 <- rdU scalars (6 * i31)
-          t196 <- rdU scalars ((6 * i31) + 5)
-          t197 <- rdU scalars ((6 * i31) + 2)
-          t198 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t181)) 0 29
-          wrU contacts (30 * (truncate t181)) d31
-          wrU contacts ((30 * (truncate t181)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t181)) + 2) d31
-          wrU contacts ((30 * (truncate t181)) + 3) 9.0
-          let !t199 = (if s179 > 0 then (recip (if (s179 - 1.0e-300) > 0 then s179 else 1.0e-300)) else 0.0)
-          let !t200 = (t199 * s177)
-          wrU contacts ((30 * (truncate t181)) + 4) (t200 + (negate (((t186 * t200) + (t188 * (t199 * s178))) * t186)))
-          wrU contacts ((30 * (truncate t181)) + 5) (negate (((t186 * t200) + (t188 * (t199 * s178))) * t187))
-          let !t201 = (t199 * s178)
-          wrU contacts ((30 * (truncate t181)) + 6) (t201 + (negate (((t186 * t200) + (t188 * t201)) * t188)))
-          let !t202 = (t173 + (negate t184))
-          wrU contacts ((30 * (truncate t181)) + 7) ((((t202 * t201) * t186) + ((((t174 + (negate t185)) * t200) - ((t172 + (negate t183)) * t201)) * t187)) + ((negate (t202 * t200)) * t188))
-          let !t203 = (t187 * t201)
-          wrU contacts ((30 * (truncate t181)) + 12) (t203 + (negate ((((t186 * t203) + (t187 * ((t188 * t200) - (t186 * t201)))) + (t188 * (negate (t187 * t200)))) * t186)))
-          let !t204 = ((t188 * t200) - (t186 * t201))
-          wrU contacts ((30 * (truncate t181)) + 13) (t204 + (negate ((((t186 * t203) + (t187 * t204)) + (t188 * (negate (t187 * t200)))) * t187)))
-          let !t205 = (negate (t187 * t200))
-          wrU contacts ((30 * (truncate t181)) + 14) (t205 + (negate ((((t186 * t203) + (t187 * t204)) + (t188 * t205)) * t188)))
-          let !t206 = (t174 + (negate t185))
-          let !t207 = (t172 + (negate t183))
-          wrU contacts ((30 * (truncate t181)) + 15) (((((t202 * t205) - (t206 * t204)) * t186) + (((t206 * t203) - (t207 * t205)) * t187)) + (((t207 * t204) - (t202 * t203)) * t188))
-          wrU contacts ((30 * (truncate t181)) + 20) (if s179 > 0 then ((negate s180) / (if (s179 - 1.0e-300) > 0 then s179 else 1.0e-300)) else 0.0)
-          wrU contacts ((30 * (truncate t181)) + 26) 1.0
-          wrU contacts ((30 * (truncate t181)) + 27) t172
-          wrU contacts ((30 * (truncate t181)) + 28) t173
-          wrU contacts ((30 * (truncate t181)) + 29) t174
+      if (abs (t106 - t105)) > 0 then do
+        chkI verts ((12 * (truncate t106)) + (291 * i29)) 12 14
+        t163 <- rdU verts (((12 * (truncate t106)) + (291 * i29)) + 12)
+        t164 <- rdU verts (((12 * (truncate t106)) + (291 * i29)) + 13)
+        t165 <- rdU verts (((12 * (truncate t106)) + (291 * i29)) + 14)
+        let !t166 = (exp ((0.9 * t165) - 0.7))
+        let !t167 = ((1.0 - (abs t165)) - (t166 - (abs t163)))
+        let !s168 = (if t167 > 0 then (negate (signum t163)) else 0.0)
+        let !s169 = (if t167 > 0 then (t166 * 0.9) else (negate (signum t165)))
+        let !s170 = (sqrt ((s168 * s168) + (s169 * s169)))
+        let !s171 = (if t167 > 0 then (t166 - (abs t163)) else (1.0 - (abs t165)))
+        t172 <- rdU meta 2
+        t173 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t173) > 0 then 1.0 else t173)) - t172) - 0.5) > 0 then do
+          wrU meta 2 (t172 + 1.0)
+          t174 <- rdU pos (3 * i29)
+          t175 <- rdU pos ((3 * i29) + 1)
+          t176 <- rdU pos ((3 * i29) + 2)
+          t177 <- rdU normal (3 * i29)
+          t178 <- rdU normal ((3 * i29) + 1)
+          t179 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t180 <- rdU axis (3 * i29)
+          t181 <- rdU axis ((3 * i29) + 1)
+          t182 <- rdU axis ((3 * i29) + 2)
+          let !s183 = ((t178 * t182) - (t179 * t181))
+          let !s184 = ((t179 * t180) - (t177 * t182))
+          let !s185 = ((t177 * t181) - (t178 * t180))
+          chkI scalars (6 * i29) 0 0
+          t186 <- rdU scalars (6 * i29)
+          t187 <- rdU scalars ((6 * i29) + 5)
+          t188 <- rdU scalars ((6 * i29) + 2)
+          t189 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t172)) 0 29
+          wrU contacts (30 * (truncate t172)) d29
+          wrU contacts ((30 * (truncate t172)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t172)) + 2) d29
+          wrU contacts ((30 * (truncate t172)) + 3) 9.0
+          let !t190 = (if s170 > 0 then (recip (if (s170 - 1.0e-300) > 0 then s170 else 1.0e-300)) else 0.0)
+          let !t191 = (t190 * s168)
+          wrU contacts ((30 * (truncate t172)) + 4) (t191 + (negate (((t177 * t191) + (t179 * (t190 * s169))) * t177)))
+          wrU contacts ((30 * (truncate t172)) + 5) (negate (((t177 * t191) + (t179 * (t190 * s169))) * t178))
+          let !t192 = (t190 * s169)
+          wrU contacts ((30 * (truncate t172)) + 6) (t192 + (negate (((t177 * t191) + (t179 * t192)) * t179)))
+          let !t193 = (t164 + (negate t175))
+          wrU contacts ((30 * (truncate t172)) + 7) ((((t193 * t192) * t177) + ((((t165 + (negate t176)) * t191) - ((t163 + (negate t174)) * t192)) * t178)) + ((negate (t193 * t191)) * t179))
+          let !t194 = (t178 * t192)
+          wrU contacts ((30 * (truncate t172)) + 12) (t194 + (negate ((((t177 * t194) + (t178 * ((t179 * t191) - (t177 * t192)))) + (t179 * (negate (t178 * t191)))) * t177)))
+          let !t195 = ((t179 * t191) - (t177 * t192))
+          wrU contacts ((30 * (truncate t172)) + 13) (t195 + (negate ((((t177 * t194) + (t178 * t195)) + (t179 * (negate (t178 * t191)))) * t178)))
+          let !t196 = (negate (t178 * t191))
+          wrU contacts ((30 * (truncate t172)) + 14) (t196 + (negate ((((t177 * t194) + (t178 * t195)) + (t179 * t196)) * t179)))
+          let !t197 = (t165 + (negate t176))
+          let !t198 = (t163 + (negate t174))
+          wrU contacts ((30 * (truncate t172)) + 15) (((((t193 * t196) - (t197 * t195)) * t177) + (((t197 * t194) - (t198 * t196)) * t178)) + (((t198 * t195) - (t193 * t194)) * t179))
+          wrU contacts ((30 * (truncate t172)) + 20) (if s170 > 0 then ((negate s171) / (if (s170 - 1.0e-300) > 0 then s170 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t172)) + 26) 1.0
+          wrU contacts ((30 * (truncate t172)) + 27) t163
+          wrU contacts ((30 * (truncate t172)) + 28) t164
+          wrU contacts ((30 * (truncate t172)) + 29) t165
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t208 <- rdU pos (-3)
-            t209 <- rdU pos (-2)
-            t210 <- rdU pos (-1)
+            t199 <- rdU pos (-3)
+            t200 <- rdU pos (-2)
+            t201 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t211 <- rdU normal (-3)
-            t212 <- rdU normal (-2)
-            t213 <- rdU normal (-1)
+            t202 <- rdU normal (-3)
+            t203 <- rdU normal (-2)
+            t204 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t214 <- rdU axis (-3)
-            t215 <- rdU axis (-2)
-            t216 <- rdU axis (-1)
-            let !s217 = ((t212 * t216) - (t213 * t215))
-            let !s218 = ((t213 * t214) - (t211 * t216))
-            let !s219 = ((t211 * t215) - (t212 * t214))
+            t205 <- rdU axis (-3)
+            t206 <- rdU axis (-2)
+            t207 <- rdU axis (-1)
+            let !s208 = ((t203 * t207) - (t204 * t206))
+            let !s209 = ((t204 * t205) - (t202 * t207))
+            let !s210 = ((t202 * t206) - (t203 * t205))
             chkI scalars 0 (-6) (-1)
-            t220 <- rdU scalars (-6)
-            t221 <- rdU scalars (-1)
-            t222 <- rdU scalars (-4)
-            t223 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t181)) + 8) (t200 + (negate (((t211 * t200) + (t213 * t201)) * t211)))
-            wrU contacts ((30 * (truncate t181)) + 9) (negate (((t211 * t200) + (t213 * t201)) * t212))
-            wrU contacts ((30 * (truncate t181)) + 10) (t201 + (negate (((t211 * t200) + (t213 * t201)) * t213)))
-            let !t224 = (t173 + (negate t209))
-            wrU contacts ((30 * (truncate t181)) + 11) ((((t224 * t201) * t211) + ((((t174 + (negate t210)) * t200) - ((t172 + (negate t208)) * t201)) * t212)) + ((negate (t224 * t200)) * t213))
-            wrU contacts ((30 * (truncate t181)) + 16) (t203 + (negate ((((t211 * t203) + (t212 * t204)) + (t213 * t205)) * t211)))
-            wrU contacts ((30 * (truncate t181)) + 17) (t204 + (negate ((((t211 * t203) + (t212 * t204)) + (t213 * t205)) * t212)))
-            wrU contacts ((30 * (truncate t181)) + 18) (t205 + (negate ((((t211 * t203) + (t212 * t204)) + (t213 * t205)) * t213)))
-            let !t225 = (t174 + (negate t210))
-            let !t226 = (t172 + (negate t208))
-            wrU contacts ((30 * (truncate t181)) + 19) (((((t224 * t205) - (t225 * t204)) * t211) + (((t225 * t203) - (t226 * t205)) * t212)) + (((t226 * t204) - (t224 * t203)) * t213))
+            t211 <- rdU scalars (-6)
+            t212 <- rdU scalars (-1)
+            t213 <- rdU scalars (-4)
+            t214 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t172)) + 8) (t191 + (negate (((t202 * t191) + (t204 * t192)) * t202)))
+            wrU contacts ((30 * (truncate t172)) + 9) (negate (((t202 * t191) + (t204 * t192)) * t203))
+            wrU contacts ((30 * (truncate t172)) + 10) (t192 + (negate (((t202 * t191) + (t204 * t192)) * t204)))
+            let !t215 = (t164 + (negate t200))
+            wrU contacts ((30 * (truncate t172)) + 11) ((((t215 * t192) * t202) + ((((t165 + (negate t201)) * t191) - ((t163 + (negate t199)) * t192)) * t203)) + ((negate (t215 * t191)) * t204))
+            wrU contacts ((30 * (truncate t172)) + 16) (t194 + (negate ((((t202 * t194) + (t203 * t195)) + (t204 * t196)) * t202)))
+            wrU contacts ((30 * (truncate t172)) + 17) (t195 + (negate ((((t202 * t194) + (t203 * t195)) + (t204 * t196)) * t203)))
+            wrU contacts ((30 * (truncate t172)) + 18) (t196 + (negate ((((t202 * t194) + (t203 * t195)) + (t204 * t196)) * t204)))
+            let !t216 = (t165 + (negate t201))
+            let !t217 = (t163 + (negate t199))
+            wrU contacts ((30 * (truncate t172)) + 19) (((((t215 * t196) - (t216 * t195)) * t202) + (((t216 * t194) - (t217 * t196)) * t203)) + (((t217 * t195) - (t215 * t194)) * t204))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t181)) + 8) 0.0
-            wrU contacts ((30 * (truncate t181)) + 9) 0.0
-            wrU contacts ((30 * (truncate t181)) + 10) 0.0
-            wrU contacts ((30 * (truncate t181)) + 11) 0.0
-            wrU contacts ((30 * (truncate t181)) + 16) 0.0
-            wrU contacts ((30 * (truncate t181)) + 17) 0.0
-            wrU contacts ((30 * (truncate t181)) + 18) 0.0
-            wrU contacts ((30 * (truncate t181)) + 19) 0.0
+            wrU contacts ((30 * (truncate t172)) + 8) 0.0
+            wrU contacts ((30 * (truncate t172)) + 9) 0.0
+            wrU contacts ((30 * (truncate t172)) + 10) 0.0
+            wrU contacts ((30 * (truncate t172)) + 11) 0.0
+            wrU contacts ((30 * (truncate t172)) + 16) 0.0
+            wrU contacts ((30 * (truncate t172)) + 17) 0.0
+            wrU contacts ((30 * (truncate t172)) + 18) 0.0
+            wrU contacts ((30 * (truncate t172)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t227 <- rdU meta 6
-          wrU meta 6 (t227 + 1.0)
+          t218 <- rdU meta 6
+          wrU meta 6 (t218 + 1.0)
           pure ()
         pure ()
       else do
@@ -513,133 +514,133 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    chkI verts (291 * i31) 0 2
-    t228 <- rdU verts (291 * i31)
-    t229 <- rdU verts ((291 * i31) + 1)
-    t230 <- rdU verts ((291 * i31) + 2)
-    v231 <- newR 1.0
-    loopI 0.0 24.0 $ \i232 -> do
-      let !d232 = fromIntegral i232 :: Double
-      chkI verts ((12 * i232) + (291 * i31)) 12 14
-      t233 <- rdU verts (((12 * i232) + (291 * i31)) + 12)
-      t234 <- rdU verts (((12 * i232) + (291 * i31)) + 13)
-      t235 <- rdU verts (((12 * i232) + (291 * i31)) + 14)
-      chkI radii (i232 + (24 * i31)) 0 0
-      t236 <- rdU radii (i232 + (24 * i31))
-      t237 <- getR v231
-      let !t238 = (t233 + (negate t228))
-      let !t239 = (t234 + (negate t229))
-      let !t240 = (t235 + (negate t230))
-      let !t241 = (if t236 > 0 then ((sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240))) / t236) else 1.0)
-      setR v231 (if (t237 - t241) > 0 then t241 else t237)
+    chkI verts (291 * i29) 0 2
+    t219 <- rdU verts (291 * i29)
+    t220 <- rdU verts ((291 * i29) + 1)
+    t221 <- rdU verts ((291 * i29) + 2)
+    wrU locals 9 1.0
+    loopI 0.0 24.0 $ \i222 -> do
+      let !d222 = fromIntegral i222 :: Double
+      chkI verts ((12 * i222) + (291 * i29)) 12 14
+      t223 <- rdU verts (((12 * i222) + (291 * i29)) + 12)
+      t224 <- rdU verts (((12 * i222) + (291 * i29)) + 13)
+      t225 <- rdU verts (((12 * i222) + (291 * i29)) + 14)
+      chkI radii (i222 + (24 * i29)) 0 0
+      t226 <- rdU radii (i222 + (24 * i29))
+      t227 <- rdU locals 9
+      let !t228 = (t223 + (negate t219))
+      let !t229 = (t224 + (negate t220))
+      let !t230 = (t225 + (negate t221))
+      let !t231 = (if t226 > 0 then ((sqrt (((t228 * t228) + (t229 * t229)) + (t230 * t230))) / t226) else 1.0)
+      wrU locals 9 (if (t227 - t231) > 0 then t231 else t227)
       pure ()
-    t242 <- getR v231
-    if (0.8 - t242) > 0 then do
-      v243 <- newR 0.0
-      v244 <- newR 0.0
-      v245 <- newR 0.0
-      v246 <- newR 0.0
-      v247 <- newR 0.0
-      v248 <- newR 0.0
-      v249 <- newR 0.0
-      loopI 0.0 24.0 $ \i250 -> do
-        let !d250 = fromIntegral i250 :: Double
-        chkI radii (i250 + (24 * i31)) 0 0
-        t251 <- rdU radii (i250 + (24 * i31))
-        loopI 6.0 12.0 $ \i252 -> do
-          let !d252 = fromIntegral i252 :: Double
-          let !t253 = (d250 + d252)
-          chkI radii (truncate ((24.0 * d31) + (t253 - (24.0 * (floorF (t253 / 24.0)))))) 0 0
-          t254 <- rdU radii (truncate ((24.0 * d31) + (t253 - (24.0 * (floorF (t253 / 24.0))))))
-          loopI 1.0 4.0 $ \i255 -> do
-            let !d255 = fromIntegral i255 :: Double
-            chkI verts ((12 * i250) + (3 * i255) + (291 * i31)) 0 5
-            t256 <- rdU verts ((12 * i250) + (3 * i255) + (291 * i31))
-            t257 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 1)
-            t258 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 2)
-            t259 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 3)
-            t260 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 4)
-            t261 <- rdU verts (((12 * i250) + (3 * i255) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i262 -> do
-              let !d262 = fromIntegral i262 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0)))) 0 0
-              t263 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 1.0)) 0 0
-              t264 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 2.0)) 0 0
-              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + (d262 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262))) 0 0
-              t266 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 1.0)) 0 0
-              t267 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 2.0)) 0 0
-              t268 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)) + d262)) + 2.0))
-              t269 <- getR v243
-              let !t270 = (negate t263)
-              let !t271 = (t266 + t270)
-              let !t272 = (negate t264)
-              let !t273 = (t267 + t272)
-              let !t274 = (negate t265)
-              let !t275 = (t268 + t274)
-              let !t276 = (((t271 * t271) + (t273 * t273)) + (t275 * t275))
-              let !t277 = (t259 + (negate t256))
-              let !t278 = (t260 + (negate t257))
-              let !t279 = (t261 + (negate t258))
-              let !t280 = (((t277 * t271) + (t278 * t273)) + (t279 * t275))
-              let !t281 = (((t277 * t277) + (t278 * t278)) + (t279 * t279))
-              let !t282 = ((t281 * t276) - (t280 * t280))
-              let !t283 = (t256 + t270)
-              let !t284 = (t257 + t272)
-              let !t285 = (t258 + t274)
-              let !t286 = (((t271 * t283) + (t273 * t284)) + (t275 * t285))
-              let !t287 = (((t277 * t283) + (t278 * t284)) + (t279 * t285))
-              let !t288 = (if ((abs t282) - 1.0e-300) > 0 then (((t280 * t286) - (t287 * t276)) / t282) else 0.0)
-              let !t289 = (if (t288 - 1.0) > 0 then 1.0 else t288)
-              let !t290 = (if (t282 - ((1.0e-12 * t281) * t276)) > 0 then (if (negate t289) > 0 then 0.0 else t289) else 0.0)
-              let !t291 = (if ((abs t276) - 1.0e-300) > 0 then (((t280 * t290) + t286) / t276) else 0.0)
-              let !t292 = ((abs t281) - 1.0e-300)
-              let !t293 = (if t292 > 0 then ((negate t287) / t281) else 0.0)
-              let !t294 = (if (t293 - 1.0) > 0 then 1.0 else t293)
-              let !t295 = (t291 - 1.0)
-              let !t296 = (if t292 > 0 then ((t280 - t287) / t281) else 0.0)
-              let !t297 = (if (t296 - 1.0) > 0 then 1.0 else t296)
-              let !t298 = (if (negate t291) > 0 then (if (negate t294) > 0 then 0.0 else t294) else (if t295 > 0 then (if (negate t297) > 0 then 0.0 else t297) else t290))
-              let !t299 = (if t295 > 0 then 1.0 else t291)
-              let !t300 = (if (negate t299) > 0 then 0.0 else t299)
-              let !t301 = ((0.5 * ((t251 - ((t251 * (d255 + t298)) / 4.0)) + (t254 - ((t254 * (d262 + t300)) / 4.0)))) - t269)
-              let !t302 = ((t256 + (t298 * t277)) + (negate (t263 + (t300 * t271))))
-              let !t303 = ((t257 + (t298 * t278)) + (negate (t264 + (t300 * t273))))
-              let !t304 = ((t258 + (t298 * t279)) + (negate (t265 + (t300 * t275))))
-              let !t305 = ((0.3 * ((if (t254 - t251) > 0 then t251 else t254) / 4.0)) - (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304))))
-              if (if (t301 - t305) > 0 then t305 else t301) > 0 then do
-                setR v243 (0.5 * ((t251 - ((t251 * (d255 + t298)) / 4.0)) + (t254 - ((t254 * (d262 + t300)) / 4.0))))
-                chkI verts ((12 * i250) + (291 * i31)) 3 5
-                t306 <- rdU verts (((12 * i250) + (291 * i31)) + 3)
-                t307 <- rdU verts (((12 * i250) + (291 * i31)) + 4)
-                t308 <- rdU verts (((12 * i250) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0)))) 0 0
-                t309 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t310 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t311 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t253 - (24.0 * (floorF (t253 / 24.0)))) * 4.0))) + 2.0))
-                setR v244 (t256 + (t298 * t277))
-                setR v245 (t257 + (t298 * t278))
-                setR v246 (t258 + (t298 * t279))
-                let !t312 = (negate t228)
-                let !t313 = (t306 + t312)
-                let !t314 = (negate t229)
-                let !t315 = (t307 + t314)
-                let !t316 = (negate t230)
-                let !t317 = (t308 + t316)
-                let !t318 = (sqrt (((t313 * t313) + (t315 * t315)) + (t317 * t317)))
-                let !t319 = (t309 + t312)
-                let !t320 = (t310 + t314)
-                let !t321 = (t311 + t316)
-                let !t322 = (sqrt (((t319 * t319) + (t320 * t320)) + (t321 * t321)))
-                setR v247 (negate (((if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0) * t313) + ((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t319)))
-                setR v248 (negate (((if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0) * t315) + ((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t320)))
-                setR v249 (negate (((if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0) * t317) + ((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t321)))
+    t232 <- rdU locals 9
+    if (0.8 - t232) > 0 then do
+      wrU locals 10 0.0
+      wrU locals 11 0.0
+      wrU locals 12 0.0
+      wrU locals 13 0.0
+      wrU locals 14 0.0
+      wrU locals 15 0.0
+      wrU locals 16 0.0
+      loopI 0.0 24.0 $ \i233 -> do
+        let !d233 = fromIntegral i233 :: Double
+        chkI radii (i233 + (24 * i29)) 0 0
+        t234 <- rdU radii (i233 + (24 * i29))
+        loopI 6.0 12.0 $ \i235 -> do
+          let !d235 = fromIntegral i235 :: Double
+          let !t236 = (d233 + d235)
+          chkI radii (truncate ((24.0 * d29) + (t236 - (24.0 * (floorF (t236 / 24.0)))))) 0 0
+          t237 <- rdU radii (truncate ((24.0 * d29) + (t236 - (24.0 * (floorF (t236 / 24.0))))))
+          loopI 1.0 4.0 $ \i238 -> do
+            let !d238 = fromIntegral i238 :: Double
+            chkI verts ((12 * i233) + (3 * i238) + (291 * i29)) 0 5
+            t239 <- rdU verts ((12 * i233) + (3 * i238) + (291 * i29))
+            t240 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 1)
+            t241 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 2)
+            t242 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 3)
+            t243 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 4)
+            t244 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i245 -> do
+              let !d245 = fromIntegral i245 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0)))) 0 0
+              t246 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 1.0)) 0 0
+              t247 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 2.0)) 0 0
+              t248 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245))) 0 0
+              t249 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 1.0)) 0 0
+              t250 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 2.0)) 0 0
+              t251 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 2.0))
+              t252 <- rdU locals 10
+              let !t253 = (negate t246)
+              let !t254 = (t249 + t253)
+              let !t255 = (negate t247)
+              let !t256 = (t250 + t255)
+              let !t257 = (negate t248)
+              let !t258 = (t251 + t257)
+              let !t259 = (((t254 * t254) + (t256 * t256)) + (t258 * t258))
+              let !t260 = (t242 + (negate t239))
+              let !t261 = (t243 + (negate t240))
+              let !t262 = (t244 + (negate t241))
+              let !t263 = (((t260 * t254) + (t261 * t256)) + (t262 * t258))
+              let !t264 = (((t260 * t260) + (t261 * t261)) + (t262 * t262))
+              let !t265 = ((t264 * t259) - (t263 * t263))
+              let !t266 = (t239 + t253)
+              let !t267 = (t240 + t255)
+              let !t268 = (t241 + t257)
+              let !t269 = (((t254 * t266) + (t256 * t267)) + (t258 * t268))
+              let !t270 = (((t260 * t266) + (t261 * t267)) + (t262 * t268))
+              let !t271 = (if ((abs t265) - 1.0e-300) > 0 then (((t263 * t269) - (t270 * t259)) / t265) else 0.0)
+              let !t272 = (if (t271 - 1.0) > 0 then 1.0 else t271)
+              let !t273 = (if (t265 - ((1.0e-12 * t264) * t259)) > 0 then (if (negate t272) > 0 then 0.0 else t272) else 0.0)
+              let !t274 = (if ((abs t259) - 1.0e-300) > 0 then (((t263 * t273) + t269) / t259) else 0.0)
+              let !t275 = ((abs t264) - 1.0e-300)
+              let !t276 = (if t275 > 0 then ((negate t270) / t264) else 0.0)
+              let !t277 = (if (t276 - 1.0) > 0 then 1.0 else t276)
+              let !t278 = (t274 - 1.0)
+              let !t279 = (if t275 > 0 then ((t263 - t270) / t264) else 0.0)
+              let !t280 = (if (t279 - 1.0) > 0 then 1.0 else t279)
+              let !t281 = (if (negate t274) > 0 then (if (negate t277) > 0 then 0.0 else t277) else (if t278 > 0 then (if (negate t280) > 0 then 0.0 else t280) else t273))
+              let !t282 = (if t278 > 0 then 1.0 else t274)
+              let !t283 = (if (negate t282) > 0 then 0.0 else t282)
+              let !t284 = ((0.5 * ((t234 - ((t234 * (d238 + t281)) / 4.0)) + (t237 - ((t237 * (d245 + t283)) / 4.0)))) - t252)
+              let !t285 = ((t239 + (t281 * t260)) + (negate (t246 + (t283 * t254))))
+              let !t286 = ((t240 + (t281 * t261)) + (negate (t247 + (t283 * t256))))
+              let !t287 = ((t241 + (t281 * t262)) + (negate (t248 + (t283 * t258))))
+              let !t288 = ((0.3 * ((if (t237 - t234) > 0 then t234 else t237) / 4.0)) - (sqrt (((t285 * t285) + (t286 * t286)) + (t287 * t287))))
+              if (if (t284 - t288) > 0 then t288 else t284) > 0 then do
+                wrU locals 10 (0.5 * ((t234 - ((t234 * (d238 + t281)) / 4.0)) + (t237 - ((t237 * (d245 + t283)) / 4.0))))
+                chkI verts ((12 * i233) + (291 * i29)) 3 5
+                t289 <- rdU verts (((12 * i233) + (291 * i29)) + 3)
+                t290 <- rdU verts (((12 * i233) + (291 * i29)) + 4)
+                t291 <- rdU verts (((12 * i233) + (291 * i29)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)))) 0 0
+                t292 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t293 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t294 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 11 (t239 + (t281 * t260))
+                wrU locals 12 (t240 + (t281 * t261))
+                wrU locals 13 (t241 + (t281 * t262))
+                let !t295 = (negate t219)
+                let !t296 = (t289 + t295)
+                let !t297 = (negate t220)
+                let !t298 = (t290 + t297)
+                let !t299 = (negate t221)
+                let !t300 = (t291 + t299)
+                let !t301 = (sqrt (((t296 * t296) + (t298 * t298)) + (t300 * t300)))
+                let !t302 = (t292 + t295)
+                let !t303 = (t293 + t297)
+                let !t304 = (t294 + t299)
+                let !t305 = (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304)))
+                wrU locals 14 (negate (((if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0) * t296) + ((if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0) * t302)))
+                wrU locals 15 (negate (((if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0) * t298) + ((if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0) * t303)))
+                wrU locals 16 (negate (((if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0) * t300) + ((if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0) * t304)))
                 pure ()
               else do
                 pure ()
@@ -647,111 +648,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t323 <- getR v243
-      if t323 > 0 then do
-        t324 <- getR v244
-        t325 <- getR v245
-        t326 <- getR v246
-        t327 <- getR v247
-        t328 <- getR v248
-        t329 <- getR v249
-        let !t330 = (t328 + (negate t328))
-        let !t331 = (sqrt (((t327 * t327) + (t330 * t330)) + (t329 * t329)))
-        let !t332 = (if t331 > 0 then (recip (if (t331 - 1.0e-300) > 0 then t331 else 1.0e-300)) else 0.0)
-        let !s333 = (t332 * t327)
-        let !s334 = (t332 * t330)
-        let !s335 = (t332 * t329)
-        t336 <- rdU meta 2
-        t337 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t337) > 0 then 1.0 else t337)) - t336) - 0.5) > 0 then do
-          wrU meta 2 (t336 + 1.0)
-          t338 <- rdU pos (3 * i31)
-          t339 <- rdU pos ((3 * i31) + 1)
-          t340 <- rdU pos ((3 * i31) + 2)
-          t341 <- rdU normal (3 * i31)
-          t342 <- rdU normal ((3 * i31) + 1)
-          t343 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t344 <- rdU axis (3 * i31)
-          t345 <- rdU axis ((3 * i31) + 1)
-          t346 <- rdU axis ((3 * i31) + 2)
-          let !s347 = ((t342 * t346) - (t343 * t345))
-          let !s348 = ((t343 * t344) - (t341 * t346))
-          let !s349 = ((t341 * t345) - (t342 * t344))
-          chkI scalars (6 * i31) 0 0
-          t350 <- rdU scalars (6 * i31)
-          t351 <- rdU scalars ((6 * i31) + 5)
-          t352 <- rdU scalars ((6 * i31) + 2)
-          t353 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t336)) 0 29
-          wrU contacts (30 * (truncate t336)) d31
-          wrU contacts ((30 * (truncate t336)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t336)) + 2) d31
-          wrU contacts ((30 * (truncate t336)) + 3) 12.0
-          wrU contacts ((30 * (truncate t336)) + 4) (s333 + (negate ((((t341 * s333) + (t342 * s334)) + (t343 * s335)) * t341)))
-          wrU contacts ((30 * (truncate t336)) + 5) (s334 + (negate ((((t341 * s333) + (t342 * s334)) + (t343 * s335)) * t342)))
-          wrU contacts ((30 * (truncate t336)) + 6) (s335 + (negate ((((t341 * s333) + (t342 * s334)) + (t343 * s335)) * t343)))
-          wrU contacts ((30 * (truncate t336)) + 7) 0.0
-          wrU contacts ((30 * (truncate t336)) + 12) 0.0
-          wrU contacts ((30 * (truncate t336)) + 13) 0.0
-          wrU contacts ((30 * (truncate t336)) + 14) 0.0
-          wrU contacts ((30 * (truncate t336)) + 15) 0.0
-          wrU contacts ((30 * (truncate t336)) + 20) t323
-          wrU contacts ((30 * (truncate t336)) + 26) 0.6
-          wrU contacts ((30 * (truncate t336)) + 27) t324
-          wrU contacts ((30 * (truncate t336)) + 28) t325
-          wrU contacts ((30 * (truncate t336)) + 29) t326
+      t306 <- rdU locals 10
+      if t306 > 0 then do
+        t307 <- rdU locals 11
+        t308 <- rdU locals 12
+        t309 <- rdU locals 13
+        t310 <- rdU locals 14
+        t311 <- rdU locals 15
+        t312 <- rdU locals 16
+        let !t313 = (t311 + (negate t311))
+        let !t314 = (sqrt (((t310 * t310) + (t313 * t313)) + (t312 * t312)))
+        let !t315 = (if t314 > 0 then (recip (if (t314 - 1.0e-300) > 0 then t314 else 1.0e-300)) else 0.0)
+        let !s316 = (t315 * t310)
+        let !s317 = (t315 * t313)
+        let !s318 = (t315 * t312)
+        t319 <- rdU meta 2
+        t320 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t320) > 0 then 1.0 else t320)) - t319) - 0.5) > 0 then do
+          wrU meta 2 (t319 + 1.0)
+          t321 <- rdU pos (3 * i29)
+          t322 <- rdU pos ((3 * i29) + 1)
+          t323 <- rdU pos ((3 * i29) + 2)
+          t324 <- rdU normal (3 * i29)
+          t325 <- rdU normal ((3 * i29) + 1)
+          t326 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t327 <- rdU axis (3 * i29)
+          t328 <- rdU axis ((3 * i29) + 1)
+          t329 <- rdU axis ((3 * i29) + 2)
+          let !s330 = ((t325 * t329) - (t326 * t328))
+          let !s331 = ((t326 * t327) - (t324 * t329))
+          let !s332 = ((t324 * t328) - (t325 * t327))
+          chkI scalars (6 * i29) 0 0
+          t333 <- rdU scalars (6 * i29)
+          t334 <- rdU scalars ((6 * i29) + 5)
+          t335 <- rdU scalars ((6 * i29) + 2)
+          t336 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t319)) 0 29
+          wrU contacts (30 * (truncate t319)) d29
+          wrU contacts ((30 * (truncate t319)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t319)) + 2) d29
+          wrU contacts ((30 * (truncate t319)) + 3) 12.0
+          wrU contacts ((30 * (truncate t319)) + 4) (s316 + (negate ((((t324 * s316) + (t325 * s317)) + (t326 * s318)) * t324)))
+          wrU contacts ((30 * (truncate t319)) + 5) (s317 + (negate ((((t324 * s316) + (t325 * s317)) + (t326 * s318)) * t325)))
+          wrU contacts ((30 * (truncate t319)) + 6) (s318 + (negate ((((t324 * s316) + (t325 * s317)) + (t326 * s318)) * t326)))
+          wrU contacts ((30 * (truncate t319)) + 7) 0.0
+          wrU contacts ((30 * (truncate t319)) + 12) 0.0
+          wrU contacts ((30 * (truncate t319)) + 13) 0.0
+          wrU contacts ((30 * (truncate t319)) + 14) 0.0
+          wrU contacts ((30 * (truncate t319)) + 15) 0.0
+          wrU contacts ((30 * (truncate t319)) + 20) t306
+          wrU contacts ((30 * (truncate t319)) + 26) 0.6
+          wrU contacts ((30 * (truncate t319)) + 27) t307
+          wrU contacts ((30 * (truncate t319)) + 28) t308
+          wrU contacts ((30 * (truncate t319)) + 29) t309
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t354 <- rdU pos (-3)
-            t355 <- rdU pos (-2)
-            t356 <- rdU pos (-1)
+            t337 <- rdU pos (-3)
+            t338 <- rdU pos (-2)
+            t339 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t357 <- rdU normal (-3)
-            t358 <- rdU normal (-2)
-            t359 <- rdU normal (-1)
+            t340 <- rdU normal (-3)
+            t341 <- rdU normal (-2)
+            t342 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t360 <- rdU axis (-3)
-            t361 <- rdU axis (-2)
-            t362 <- rdU axis (-1)
-            let !s363 = ((t358 * t362) - (t359 * t361))
-            let !s364 = ((t359 * t360) - (t357 * t362))
-            let !s365 = ((t357 * t361) - (t358 * t360))
+            t343 <- rdU axis (-3)
+            t344 <- rdU axis (-2)
+            t345 <- rdU axis (-1)
+            let !s346 = ((t341 * t345) - (t342 * t344))
+            let !s347 = ((t342 * t343) - (t340 * t345))
+            let !s348 = ((t340 * t344) - (t341 * t343))
             chkI scalars 0 (-6) (-1)
-            t366 <- rdU scalars (-6)
-            t367 <- rdU scalars (-1)
-            t368 <- rdU scalars (-4)
-            t369 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t336)) + 8) (s333 + (negate ((((t357 * s333) + (t358 * s334)) + (t359 * s335)) * t357)))
-            wrU contacts ((30 * (truncate t336)) + 9) (s334 + (negate ((((t357 * s333) + (t358 * s334)) + (t359 * s335)) * t358)))
-            wrU contacts ((30 * (truncate t336)) + 10) (s335 + (negate ((((t357 * s333) + (t358 * s334)) + (t359 * s335)) * t359)))
-            let !t370 = (t325 + (negate t355))
-            let !t371 = (t326 + (negate t356))
-            let !t372 = (t324 + (negate t354))
-            wrU contacts ((30 * (truncate t336)) + 11) (((((t370 * s335) - (t371 * s334)) * t357) + (((t371 * s333) - (t372 * s335)) * t358)) + (((t372 * s334) - (t370 * s333)) * t359))
-            let !t373 = ((t342 * s335) - (t343 * s334))
-            wrU contacts ((30 * (truncate t336)) + 16) (t373 + (negate ((((t357 * t373) + (t358 * ((t343 * s333) - (t341 * s335)))) + (t359 * ((t341 * s334) - (t342 * s333)))) * t357)))
-            let !t374 = ((t343 * s333) - (t341 * s335))
-            wrU contacts ((30 * (truncate t336)) + 17) (t374 + (negate ((((t357 * t373) + (t358 * t374)) + (t359 * ((t341 * s334) - (t342 * s333)))) * t358)))
-            let !t375 = ((t341 * s334) - (t342 * s333))
-            wrU contacts ((30 * (truncate t336)) + 18) (t375 + (negate ((((t357 * t373) + (t358 * t374)) + (t359 * t375)) * t359)))
-            wrU contacts ((30 * (truncate t336)) + 19) (((((t370 * t375) - (t371 * t374)) * t357) + (((t371 * t373) - (t372 * t375)) * t358)) + (((t372 * t374) - (t370 * t373)) * t359))
+            t349 <- rdU scalars (-6)
+            t350 <- rdU scalars (-1)
+            t351 <- rdU scalars (-4)
+            t352 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t319)) + 8) (s316 + (negate ((((t340 * s316) + (t341 * s317)) + (t342 * s318)) * t340)))
+            wrU contacts ((30 * (truncate t319)) + 9) (s317 + (negate ((((t340 * s316) + (t341 * s317)) + (t342 * s318)) * t341)))
+            wrU contacts ((30 * (truncate t319)) + 10) (s318 + (negate ((((t340 * s316) + (t341 * s317)) + (t342 * s318)) * t342)))
+            let !t353 = (t308 + (negate t338))
+            let !t354 = (t309 + (negate t339))
+            let !t355 = (t307 + (negate t337))
+            wrU contacts ((30 * (truncate t319)) + 11) (((((t353 * s318) - (t354 * s317)) * t340) + (((t354 * s316) - (t355 * s318)) * t341)) + (((t355 * s317) - (t353 * s316)) * t342))
+            let !t356 = ((t325 * s318) - (t326 * s317))
+            wrU contacts ((30 * (truncate t319)) + 16) (t356 + (negate ((((t340 * t356) + (t341 * ((t326 * s316) - (t324 * s318)))) + (t342 * ((t324 * s317) - (t325 * s316)))) * t340)))
+            let !t357 = ((t326 * s316) - (t324 * s318))
+            wrU contacts ((30 * (truncate t319)) + 17) (t357 + (negate ((((t340 * t356) + (t341 * t357)) + (t342 * ((t324 * s317) - (t325 * s316)))) * t341)))
+            let !t358 = ((t324 * s317) - (t325 * s316))
+            wrU contacts ((30 * (truncate t319)) + 18) (t358 + (negate ((((t340 * t356) + (t341 * t357)) + (t342 * t358)) * t342)))
+            wrU contacts ((30 * (truncate t319)) + 19) (((((t353 * t358) - (t354 * t357)) * t340) + (((t354 * t356) - (t355 * t358)) * t341)) + (((t355 * t357) - (t353 * t356)) * t342))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t336)) + 8) 0.0
-            wrU contacts ((30 * (truncate t336)) + 9) 0.0
-            wrU contacts ((30 * (truncate t336)) + 10) 0.0
-            wrU contacts ((30 * (truncate t336)) + 11) 0.0
-            wrU contacts ((30 * (truncate t336)) + 16) 0.0
-            wrU contacts ((30 * (truncate t336)) + 17) 0.0
-            wrU contacts ((30 * (truncate t336)) + 18) 0.0
-            wrU contacts ((30 * (truncate t336)) + 19) 0.0
+            wrU contacts ((30 * (truncate t319)) + 8) 0.0
+            wrU contacts ((30 * (truncate t319)) + 9) 0.0
+            wrU contacts ((30 * (truncate t319)) + 10) 0.0
+            wrU contacts ((30 * (truncate t319)) + 11) 0.0
+            wrU contacts ((30 * (truncate t319)) + 16) 0.0
+            wrU contacts ((30 * (truncate t319)) + 17) 0.0
+            wrU contacts ((30 * (truncate t319)) + 18) 0.0
+            wrU contacts ((30 * (truncate t319)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t376 <- rdU meta 6
-          wrU meta 6 (t376 + 1.0)
+          t359 <- rdU meta 6
+          wrU meta 6 (t359 + 1.0)
           pure ()
         pure ()
       else do
@@ -762,8 +763,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -802,598 +804,598 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (1.0 - t139)
-      let !t144 = (t121 + (t138 * ((t141 * t127) + (t142 * s130))))
-      let !t145 = (if (if ((abs t144) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t144 + (negate t144)) else t144)
-      let !t146 = (if (if ((abs t145) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t145 + (negate t145)) else t145)
-      let !s147 = ((t139 * (t120 + (t138 * ((t141 * t126) + (t142 * s129))))) + (t143 * t120))
-      let !s148 = ((t139 * (if (if ((abs t146) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t146 + (negate t146)) else t146)) + (t143 * t121))
-      let !s149 = ((t139 * (t122 + (t138 * ((t141 * t128) + (t142 * s131))))) + (t143 * t122))
-      let !t150 = ((t141 * t126) + (t142 * s129))
-      let !t151 = ((t141 * t127) + (t142 * s130))
-      let !t152 = ((t141 * t128) + (t142 * s131))
-      let !t153 = (sqrt (((t150 * t150) + (t151 * t151)) + (t152 * t152)))
-      let !t154 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t155 = (t154 * ((t120 + (t138 * t150)) + (negate t120)))
-      let !t156 = (t154 * ((if (if ((abs t146) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t146 + (negate t146)) else t146) + (negate t121)))
-      let !t157 = (t156 + (negate t156))
-      let !t158 = (t154 * ((t122 + (t138 * t152)) + (negate t122)))
-      let !t159 = (sqrt (((t155 * t155) + (t157 * t157)) + (t158 * t158)))
-      let !t160 = (if t159 > 0 then (recip (if (t159 - 1.0e-300) > 0 then t159 else 1.0e-300)) else 0.0)
-      let !s161 = ((t139 * (t153 * (t160 * t155))) + (t143 * t150))
-      let !s162 = ((t139 * (t153 * (t160 * t157))) + (t143 * t151))
-      let !s163 = ((t139 * (t153 * (t160 * t158))) + (t143 * t152))
-      let !t164 = (s148 + (t138 * s162))
-      let !t165 = (if (if ((abs t164) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t164 + (negate t164)) else t164)
-      let !t166 = (if (if ((abs t165) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t165 + (negate t165)) else t165)
-      let !s167 = ((t139 * (s147 + (t138 * s161))) + (t143 * s147))
-      let !s168 = ((t139 * (if (if ((abs t166) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t166 + (negate t166)) else t166)) + (t143 * s148))
-      let !s169 = ((t139 * (s149 + (t138 * s163))) + (t143 * s149))
-      let !t170 = (sqrt (((s161 * s161) + (s162 * s162)) + (s163 * s163)))
-      let !t171 = (t154 * ((s147 + (t138 * s161)) + (negate s147)))
-      let !t172 = (t154 * ((if (if ((abs t166) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t166 + (negate t166)) else t166) + (negate s148)))
-      let !t173 = (t172 + (negate t172))
-      let !t174 = (t154 * ((s149 + (t138 * s163)) + (negate s149)))
-      let !t175 = (sqrt (((t171 * t171) + (t173 * t173)) + (t174 * t174)))
-      let !t176 = (if t175 > 0 then (recip (if (t175 - 1.0e-300) > 0 then t175 else 1.0e-300)) else 0.0)
-      let !s177 = ((t139 * (t170 * (t176 * t171))) + (t143 * s161))
-      let !s178 = ((t139 * (t170 * (t176 * t173))) + (t143 * s162))
-      let !s179 = ((t139 * (t170 * (t176 * t174))) + (t143 * s163))
-      let !t180 = (s168 + (t138 * s178))
-      let !t181 = (if (if ((abs t180) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t180 + (negate t180)) else t180)
-      let !t182 = (if (if ((abs t181) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t181 + (negate t181)) else t181)
-      let !s183 = ((t139 * (s167 + (t138 * s177))) + (t143 * s167))
-      let !s184 = ((t139 * (if (if ((abs t182) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t182 + (negate t182)) else t182)) + (t143 * s168))
-      let !s185 = ((t139 * (s169 + (t138 * s179))) + (t143 * s169))
-      let !t186 = (sqrt (((s177 * s177) + (s178 * s178)) + (s179 * s179)))
-      let !t187 = (t154 * ((s167 + (t138 * s177)) + (negate s167)))
-      let !t188 = (t154 * ((if (if ((abs t182) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t182 + (negate t182)) else t182) + (negate s168)))
-      let !t189 = (t188 + (negate t188))
-      let !t190 = (t154 * ((s169 + (t138 * s179)) + (negate s169)))
-      let !t191 = (sqrt (((t187 * t187) + (t189 * t189)) + (t190 * t190)))
-      let !t192 = (if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0)
-      let !s193 = ((t139 * (t186 * (t192 * t187))) + (t143 * s177))
-      let !s194 = ((t139 * (t186 * (t192 * t189))) + (t143 * s178))
-      let !s195 = ((t139 * (t186 * (t192 * t190))) + (t143 * s179))
-      let !t196 = (s184 + (t138 * s194))
-      let !t197 = (if (if ((abs t196) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t196 + (negate t196)) else t196)
-      let !t198 = (if (if ((abs t197) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t197 + (negate t197)) else t197)
-      let !s199 = ((t139 * (s183 + (t138 * s193))) + (t143 * s183))
-      let !s200 = ((t139 * (if (if ((abs t198) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t198 + (negate t198)) else t198)) + (t143 * s184))
-      let !s201 = ((t139 * (s185 + (t138 * s195))) + (t143 * s185))
-      let !t202 = (sqrt (((s193 * s193) + (s194 * s194)) + (s195 * s195)))
-      let !t203 = (t154 * ((s183 + (t138 * s193)) + (negate s183)))
-      let !t204 = (t154 * ((if (if ((abs t198) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t198 + (negate t198)) else t198) + (negate s184)))
-      let !t205 = (t204 + (negate t204))
-      let !t206 = (t154 * ((s185 + (t138 * s195)) + (negate s185)))
-      let !t207 = (sqrt (((t203 * t203) + (t205 * t205)) + (t206 * t206)))
-      let !t208 = (if t207 > 0 then (recip (if (t207 - 1.0e-300) > 0 then t207 else 1.0e-300)) else 0.0)
-      let !s209 = ((t139 * (t202 * (t208 * t203))) + (t143 * s193))
-      let !s210 = ((t139 * (t202 * (t208 * t205))) + (t143 * s194))
-      let !s211 = ((t139 * (t202 * (t208 * t206))) + (t143 * s195))
-      t212 <- rdU mouse 4
-      t213 <- rdU mouse 5
-      t214 <- rdU mouse 6
-      t215 <- rdU mouse 7
-      t216 <- rdU mouse 8
-      t217 <- rdU mouse 9
-      let !t218 = (recip t101)
-      let !t219 = (6.283185307179586 * t215)
-      let !s220 = (recip (t103 * ((((2.0 * t218) * t216) * t219) + (t103 * ((t218 * t219) * t219)))))
-      let !s221 = ((t103 * ((t218 * t219) * t219)) * s220)
-      let !s222 = (s199 + (negate t104))
-      let !s223 = (s200 + (negate t105))
-      let !s224 = (s201 + (negate t106))
-      let !s225 = (s199 + (negate t212))
-      let !s226 = (s200 + (negate t213))
-      let !s227 = (s201 + (negate t214))
-      t228 <- rdU mouse 10
-      t229 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t230 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t231 <- rdU vel (3 * (truncate t100))
-      t232 <- rdU vel ((3 * (truncate t100)) + 1)
-      t233 <- rdU vel ((3 * (truncate t100)) + 2)
-      t234 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t231 + ((t229 * t228) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t232 + ((t229 * t228) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t233 + ((t229 * t228) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t234 + ((t230 * t228) * (((((s223 * t112) - (s224 * t111)) * t107) + (((s224 * t110) - (s222 * t112)) * t108)) + (((s222 * t111) - (s223 * t110)) * t109))))
-      t235 <- rdU mouse 11
-      t236 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t237 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t238 <- rdU vel (3 * (truncate t100))
-      t239 <- rdU vel ((3 * (truncate t100)) + 1)
-      t240 <- rdU vel ((3 * (truncate t100)) + 2)
-      t241 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t238 + ((t236 * t235) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t239 + ((t236 * t235) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t240 + ((t236 * t235) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t241 + ((t237 * t235) * (((((s223 * s115) - (s224 * s114)) * t107) + (((s224 * s113) - (s222 * s115)) * t108)) + (((s222 * s114) - (s223 * s113)) * t109))))
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (1.0 - t134)
+      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
+      let !t140 = (if (if ((abs t139) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t139 + (negate t139)) else t139)
+      let !t141 = (if (if ((abs t140) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t140 + (negate t140)) else t140)
+      let !s142 = ((t134 * (t115 + (t133 * ((t136 * t121) + (t137 * s124))))) + (t138 * t115))
+      let !s143 = ((t134 * (if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141)) + (t138 * t116))
+      let !s144 = ((t134 * (t117 + (t133 * ((t136 * t123) + (t137 * s126))))) + (t138 * t117))
+      let !t145 = ((t136 * t121) + (t137 * s124))
+      let !t146 = ((t136 * t122) + (t137 * s125))
+      let !t147 = ((t136 * t123) + (t137 * s126))
+      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
+      let !t149 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t150 = (t149 * ((t115 + (t133 * t145)) + (negate t115)))
+      let !t151 = (t149 * ((if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141) + (negate t116)))
+      let !t152 = (t151 + (negate t151))
+      let !t153 = (t149 * ((t117 + (t133 * t147)) + (negate t117)))
+      let !t154 = (sqrt (((t150 * t150) + (t152 * t152)) + (t153 * t153)))
+      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
+      let !s156 = ((t134 * (t148 * (t155 * t150))) + (t138 * t145))
+      let !s157 = ((t134 * (t148 * (t155 * t152))) + (t138 * t146))
+      let !s158 = ((t134 * (t148 * (t155 * t153))) + (t138 * t147))
+      let !t159 = (s143 + (t133 * s157))
+      let !t160 = (if (if ((abs t159) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t159 + (negate t159)) else t159)
+      let !t161 = (if (if ((abs t160) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t160 + (negate t160)) else t160)
+      let !s162 = ((t134 * (s142 + (t133 * s156))) + (t138 * s142))
+      let !s163 = ((t134 * (if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161)) + (t138 * s143))
+      let !s164 = ((t134 * (s144 + (t133 * s158))) + (t138 * s144))
+      let !t165 = (sqrt (((s156 * s156) + (s157 * s157)) + (s158 * s158)))
+      let !t166 = (t149 * ((s142 + (t133 * s156)) + (negate s142)))
+      let !t167 = (t149 * ((if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161) + (negate s143)))
+      let !t168 = (t167 + (negate t167))
+      let !t169 = (t149 * ((s144 + (t133 * s158)) + (negate s144)))
+      let !t170 = (sqrt (((t166 * t166) + (t168 * t168)) + (t169 * t169)))
+      let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
+      let !s172 = ((t134 * (t165 * (t171 * t166))) + (t138 * s156))
+      let !s173 = ((t134 * (t165 * (t171 * t168))) + (t138 * s157))
+      let !s174 = ((t134 * (t165 * (t171 * t169))) + (t138 * s158))
+      let !t175 = (s163 + (t133 * s173))
+      let !t176 = (if (if ((abs t175) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t175 + (negate t175)) else t175)
+      let !t177 = (if (if ((abs t176) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t176 + (negate t176)) else t176)
+      let !s178 = ((t134 * (s162 + (t133 * s172))) + (t138 * s162))
+      let !s179 = ((t134 * (if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177)) + (t138 * s163))
+      let !s180 = ((t134 * (s164 + (t133 * s174))) + (t138 * s164))
+      let !t181 = (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))
+      let !t182 = (t149 * ((s162 + (t133 * s172)) + (negate s162)))
+      let !t183 = (t149 * ((if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177) + (negate s163)))
+      let !t184 = (t183 + (negate t183))
+      let !t185 = (t149 * ((s164 + (t133 * s174)) + (negate s164)))
+      let !t186 = (sqrt (((t182 * t182) + (t184 * t184)) + (t185 * t185)))
+      let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
+      let !s188 = ((t134 * (t181 * (t187 * t182))) + (t138 * s172))
+      let !s189 = ((t134 * (t181 * (t187 * t184))) + (t138 * s173))
+      let !s190 = ((t134 * (t181 * (t187 * t185))) + (t138 * s174))
+      let !t191 = (s179 + (t133 * s189))
+      let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
+      let !t193 = (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)
+      let !s194 = ((t134 * (s178 + (t133 * s188))) + (t138 * s178))
+      let !s195 = ((t134 * (if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193)) + (t138 * s179))
+      let !s196 = ((t134 * (s180 + (t133 * s190))) + (t138 * s180))
+      let !t197 = (sqrt (((s188 * s188) + (s189 * s189)) + (s190 * s190)))
+      let !t198 = (t149 * ((s178 + (t133 * s188)) + (negate s178)))
+      let !t199 = (t149 * ((if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193) + (negate s179)))
+      let !t200 = (t199 + (negate t199))
+      let !t201 = (t149 * ((s180 + (t133 * s190)) + (negate s180)))
+      let !t202 = (sqrt (((t198 * t198) + (t200 * t200)) + (t201 * t201)))
+      let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
+      let !s204 = ((t134 * (t197 * (t203 * t198))) + (t138 * s188))
+      let !s205 = ((t134 * (t197 * (t203 * t200))) + (t138 * s189))
+      let !s206 = ((t134 * (t197 * (t203 * t201))) + (t138 * s190))
+      t207 <- rdU mouse 4
+      t208 <- rdU mouse 5
+      t209 <- rdU mouse 6
+      t210 <- rdU mouse 7
+      t211 <- rdU mouse 8
+      t212 <- rdU mouse 9
+      let !t213 = (recip t96)
+      let !t214 = (6.283185307179586 * t210)
+      let !s215 = (recip (t98 * ((((2.0 * t213) * t211) * t214) + (t98 * ((t213 * t214) * t214)))))
+      let !s216 = ((t98 * ((t213 * t214) * t214)) * s215)
+      let !s217 = (s194 + (negate t99))
+      let !s218 = (s195 + (negate t100))
+      let !s219 = (s196 + (negate t101))
+      let !s220 = (s194 + (negate t207))
+      let !s221 = (s195 + (negate t208))
+      let !s222 = (s196 + (negate t209))
+      t223 <- rdU mouse 10
+      t224 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t225 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t226 <- rdU vel (3 * (truncate t95))
+      t227 <- rdU vel ((3 * (truncate t95)) + 1)
+      t228 <- rdU vel ((3 * (truncate t95)) + 2)
+      t229 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t226 + ((t224 * t223) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t227 + ((t224 * t223) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t228 + ((t224 * t223) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t229 + ((t225 * t223) * (((((s218 * t107) - (s219 * t106)) * t102) + (((s219 * t105) - (s217 * t107)) * t103)) + (((s217 * t106) - (s218 * t105)) * t104))))
+      t230 <- rdU mouse 11
+      t231 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t232 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t233 <- rdU vel (3 * (truncate t95))
+      t234 <- rdU vel ((3 * (truncate t95)) + 1)
+      t235 <- rdU vel ((3 * (truncate t95)) + 2)
+      t236 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t233 + ((t231 * t230) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t234 + ((t231 * t230) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t235 + ((t231 * t230) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t236 + ((t232 * t230) * (((((s218 * s110) - (s219 * s109)) * t102) + (((s219 * s108) - (s217 * s110)) * t103)) + (((s217 * s109) - (s218 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i242 -> do
-    let !d242 = fromIntegral i242 :: Double
-    loopI 0.0 t9 $ \i243 -> do
-      let !d243 = fromIntegral i243 :: Double
-      chkI contacts (30 * i243) 0 26
-      t244 <- rdU contacts (30 * i243)
-      t245 <- rdU contacts ((30 * i243) + 1)
-      t246 <- rdU contacts ((30 * i243) + 12)
-      t247 <- rdU contacts ((30 * i243) + 13)
-      t248 <- rdU contacts ((30 * i243) + 14)
-      t249 <- rdU contacts ((30 * i243) + 15)
-      t250 <- rdU contacts ((30 * i243) + 16)
-      t251 <- rdU contacts ((30 * i243) + 17)
-      t252 <- rdU contacts ((30 * i243) + 18)
-      t253 <- rdU contacts ((30 * i243) + 19)
-      t254 <- rdU contacts ((30 * i243) + 4)
-      t255 <- rdU contacts ((30 * i243) + 5)
-      t256 <- rdU contacts ((30 * i243) + 6)
-      t257 <- rdU contacts ((30 * i243) + 7)
-      t258 <- rdU contacts ((30 * i243) + 8)
-      t259 <- rdU contacts ((30 * i243) + 9)
-      t260 <- rdU contacts ((30 * i243) + 10)
-      t261 <- rdU contacts ((30 * i243) + 11)
-      t262 <- rdU contacts ((30 * i243) + 26)
-      t263 <- rdU contacts ((30 * i243) + 24)
-      t264 <- rdU contacts ((30 * i243) + 25)
-      t265 <- rdU contacts ((30 * i243) + 22)
-      t266 <- rdU contacts ((30 * i243) + 21)
-      t267 <- rdU contacts ((30 * i243) + 23)
-      let !s268 = (if (negate t245) > 0 then 0.0 else t245)
-      let !s269 = (t245 + 0.5)
-      let !s270 = (if (0.5 - (abs (t244 - t245))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t244)) 1 3
-      t271 <- rdU scalars ((6 * (truncate t244)) + 2)
-      t272 <- rdU scalars ((6 * (truncate t244)) + 3)
-      chkI scalars (6 * (truncate s268)) 1 3
-      t273 <- rdU scalars ((6 * (truncate s268)) + 2)
-      t274 <- rdU scalars ((6 * (truncate s268)) + 3)
-      chkI vel (3 * (truncate t244)) 0 2
-      t275 <- rdU vel (3 * (truncate t244))
-      t276 <- rdU vel ((3 * (truncate t244)) + 1)
-      t277 <- rdU vel ((3 * (truncate t244)) + 2)
-      t278 <- rdU scalars ((6 * (truncate t244)) + 1)
-      chkI vel (3 * (truncate s268)) 0 2
-      t279 <- rdU vel (3 * (truncate s268))
-      t280 <- rdU vel ((3 * (truncate s268)) + 1)
-      t281 <- rdU vel ((3 * (truncate s268)) + 2)
-      t282 <- rdU scalars ((6 * (truncate s268)) + 1)
-      let !s283 = (((((t246 * t275) + (t247 * t276)) + (t248 * t277)) + (t249 * t278)) - (if s269 > 0 then ((((t250 * t279) + (t251 * t280)) + (t252 * t281)) + (t253 * t282)) else 0.0))
-      let !t284 = (t2 * t263)
-      let !t285 = (negate t284)
-      let !t286 = (t264 - ((t262 * s283) * t265))
-      let !t287 = (if (t286 - t284) > 0 then t284 else t286)
-      let !t288 = (if (t285 - t287) > 0 then t285 else t287)
-      let !s289 = (if (1.0 - (abs (t288 - t288))) > 0 then t288 else 0.0)
-      wrU contacts ((30 * i243) + 25) s289
-      let !t290 = (t271 * (s289 - t264))
-      let !s291 = (t290 * t246)
-      let !s292 = (t290 * t247)
-      let !s293 = (t290 * t248)
-      let !s294 = ((t272 * (s289 - t264)) * t249)
-      let !t295 = (t273 * (negate (s289 - t264)))
-      let !s296 = (t295 * t250)
-      let !s297 = (t295 * t251)
-      let !s298 = (t295 * t252)
-      let !s299 = ((t274 * (negate (s289 - t264))) * t253)
-      let !s300 = ((t275 + s291) + (s270 * s296))
-      let !s301 = ((t276 + s292) + (s270 * s297))
-      let !s302 = ((t277 + s293) + (s270 * s298))
-      let !s303 = ((t278 + s294) + (s270 * s299))
-      let !s304 = ((t279 + s296) + (s270 * s291))
-      let !s305 = ((t280 + s297) + (s270 * s292))
-      let !s306 = ((t281 + s298) + (s270 * s293))
-      let !s307 = ((t282 + s299) + (s270 * s294))
-      let !s308 = (((((t254 * s300) + (t255 * s301)) + (t256 * s302)) + (t257 * s303)) - (if s269 > 0 then ((((t258 * s304) + (t259 * s305)) + (t260 * s306)) + (t261 * s307)) else 0.0))
-      let !t309 = (t263 + ((t262 * (t267 - s308)) * t266))
-      let !t310 = (if (negate t309) > 0 then 0.0 else t309)
-      let !s311 = (if (1.0 - (abs (t310 - t310))) > 0 then t310 else 0.0)
-      wrU contacts ((30 * i243) + 24) s311
-      let !t312 = (t271 * (s311 - t263))
-      let !s313 = (t312 * t254)
-      let !s314 = (t312 * t255)
-      let !s315 = (t312 * t256)
-      let !s316 = ((t272 * (s311 - t263)) * t257)
-      let !t317 = (t273 * (negate (s311 - t263)))
-      let !s318 = (t317 * t258)
-      let !s319 = (t317 * t259)
-      let !s320 = (t317 * t260)
-      let !s321 = ((t274 * (negate (s311 - t263))) * t261)
-      let !s322 = ((s300 + s313) + (s270 * s318))
-      let !s323 = ((s301 + s314) + (s270 * s319))
-      let !s324 = ((s302 + s315) + (s270 * s320))
-      let !s325 = ((s303 + s316) + (s270 * s321))
-      let !s326 = ((s304 + s318) + (s270 * s313))
-      let !s327 = ((s305 + s319) + (s270 * s314))
-      let !s328 = ((s306 + s320) + (s270 * s315))
-      let !s329 = ((s307 + s321) + (s270 * s316))
-      wrU vel (3 * (truncate t244)) s322
-      wrU vel ((3 * (truncate t244)) + 1) s323
-      wrU vel ((3 * (truncate t244)) + 2) s324
-      wrU scalars ((6 * (truncate t244)) + 1) s325
-      if s269 > 0 then do
-        wrU vel (3 * (truncate s268)) s326
-        wrU vel ((3 * (truncate s268)) + 1) s327
-        wrU vel ((3 * (truncate s268)) + 2) s328
-        wrU scalars ((6 * (truncate s268)) + 1) s329
+  loopI 0.0 t1 $ \i237 -> do
+    let !d237 = fromIntegral i237 :: Double
+    loopI 0.0 t9 $ \i238 -> do
+      let !d238 = fromIntegral i238 :: Double
+      chkI contacts (30 * i238) 0 26
+      t239 <- rdU contacts (30 * i238)
+      t240 <- rdU contacts ((30 * i238) + 1)
+      t241 <- rdU contacts ((30 * i238) + 12)
+      t242 <- rdU contacts ((30 * i238) + 13)
+      t243 <- rdU contacts ((30 * i238) + 14)
+      t244 <- rdU contacts ((30 * i238) + 15)
+      t245 <- rdU contacts ((30 * i238) + 16)
+      t246 <- rdU contacts ((30 * i238) + 17)
+      t247 <- rdU contacts ((30 * i238) + 18)
+      t248 <- rdU contacts ((30 * i238) + 19)
+      t249 <- rdU contacts ((30 * i238) + 4)
+      t250 <- rdU contacts ((30 * i238) + 5)
+      t251 <- rdU contacts ((30 * i238) + 6)
+      t252 <- rdU contacts ((30 * i238) + 7)
+      t253 <- rdU contacts ((30 * i238) + 8)
+      t254 <- rdU contacts ((30 * i238) + 9)
+      t255 <- rdU contacts ((30 * i238) + 10)
+      t256 <- rdU contacts ((30 * i238) + 11)
+      t257 <- rdU contacts ((30 * i238) + 26)
+      t258 <- rdU contacts ((30 * i238) + 24)
+      t259 <- rdU contacts ((30 * i238) + 25)
+      t260 <- rdU contacts ((30 * i238) + 22)
+      t261 <- rdU contacts ((30 * i238) + 21)
+      t262 <- rdU contacts ((30 * i238) + 23)
+      let !s263 = (if (negate t240) > 0 then 0.0 else t240)
+      let !s264 = (t240 + 0.5)
+      let !s265 = (if (0.5 - (abs (t239 - t240))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t239)) 1 3
+      t266 <- rdU scalars ((6 * (truncate t239)) + 2)
+      t267 <- rdU scalars ((6 * (truncate t239)) + 3)
+      chkI scalars (6 * (truncate s263)) 1 3
+      t268 <- rdU scalars ((6 * (truncate s263)) + 2)
+      t269 <- rdU scalars ((6 * (truncate s263)) + 3)
+      chkI vel (3 * (truncate t239)) 0 2
+      t270 <- rdU vel (3 * (truncate t239))
+      t271 <- rdU vel ((3 * (truncate t239)) + 1)
+      t272 <- rdU vel ((3 * (truncate t239)) + 2)
+      t273 <- rdU scalars ((6 * (truncate t239)) + 1)
+      chkI vel (3 * (truncate s263)) 0 2
+      t274 <- rdU vel (3 * (truncate s263))
+      t275 <- rdU vel ((3 * (truncate s263)) + 1)
+      t276 <- rdU vel ((3 * (truncate s263)) + 2)
+      t277 <- rdU scalars ((6 * (truncate s263)) + 1)
+      let !s278 = (((((t241 * t270) + (t242 * t271)) + (t243 * t272)) + (t244 * t273)) - (if s264 > 0 then ((((t245 * t274) + (t246 * t275)) + (t247 * t276)) + (t248 * t277)) else 0.0))
+      let !t279 = (t2 * t258)
+      let !t280 = (negate t279)
+      let !t281 = (t259 - ((t257 * s278) * t260))
+      let !t282 = (if (t281 - t279) > 0 then t279 else t281)
+      let !t283 = (if (t280 - t282) > 0 then t280 else t282)
+      let !s284 = (if (1.0 - (abs (t283 - t283))) > 0 then t283 else 0.0)
+      wrU contacts ((30 * i238) + 25) s284
+      let !t285 = (t266 * (s284 - t259))
+      let !s286 = (t285 * t241)
+      let !s287 = (t285 * t242)
+      let !s288 = (t285 * t243)
+      let !s289 = ((t267 * (s284 - t259)) * t244)
+      let !t290 = (t268 * (negate (s284 - t259)))
+      let !s291 = (t290 * t245)
+      let !s292 = (t290 * t246)
+      let !s293 = (t290 * t247)
+      let !s294 = ((t269 * (negate (s284 - t259))) * t248)
+      let !s295 = ((t270 + s286) + (s265 * s291))
+      let !s296 = ((t271 + s287) + (s265 * s292))
+      let !s297 = ((t272 + s288) + (s265 * s293))
+      let !s298 = ((t273 + s289) + (s265 * s294))
+      let !s299 = ((t274 + s291) + (s265 * s286))
+      let !s300 = ((t275 + s292) + (s265 * s287))
+      let !s301 = ((t276 + s293) + (s265 * s288))
+      let !s302 = ((t277 + s294) + (s265 * s289))
+      let !s303 = (((((t249 * s295) + (t250 * s296)) + (t251 * s297)) + (t252 * s298)) - (if s264 > 0 then ((((t253 * s299) + (t254 * s300)) + (t255 * s301)) + (t256 * s302)) else 0.0))
+      let !t304 = (t258 + ((t257 * (t262 - s303)) * t261))
+      let !t305 = (if (negate t304) > 0 then 0.0 else t304)
+      let !s306 = (if (1.0 - (abs (t305 - t305))) > 0 then t305 else 0.0)
+      wrU contacts ((30 * i238) + 24) s306
+      let !t307 = (t266 * (s306 - t258))
+      let !s308 = (t307 * t249)
+      let !s309 = (t307 * t250)
+      let !s310 = (t307 * t251)
+      let !s311 = ((t267 * (s306 - t258)) * t252)
+      let !t312 = (t268 * (negate (s306 - t258)))
+      let !s313 = (t312 * t253)
+      let !s314 = (t312 * t254)
+      let !s315 = (t312 * t255)
+      let !s316 = ((t269 * (negate (s306 - t258))) * t256)
+      let !s317 = ((s295 + s308) + (s265 * s313))
+      let !s318 = ((s296 + s309) + (s265 * s314))
+      let !s319 = ((s297 + s310) + (s265 * s315))
+      let !s320 = ((s298 + s311) + (s265 * s316))
+      let !s321 = ((s299 + s313) + (s265 * s308))
+      let !s322 = ((s300 + s314) + (s265 * s309))
+      let !s323 = ((s301 + s315) + (s265 * s310))
+      let !s324 = ((s302 + s316) + (s265 * s311))
+      wrU vel (3 * (truncate t239)) s317
+      wrU vel ((3 * (truncate t239)) + 1) s318
+      wrU vel ((3 * (truncate t239)) + 2) s319
+      wrU scalars ((6 * (truncate t239)) + 1) s320
+      if s264 > 0 then do
+        wrU vel (3 * (truncate s263)) s321
+        wrU vel ((3 * (truncate s263)) + 1) s322
+        wrU vel ((3 * (truncate s263)) + 2) s323
+        wrU scalars ((6 * (truncate s263)) + 1) s324
         pure ()
       else do
         pure ()
       pure ()
-    t330 <- rdU mouse 0
-    if t330 > 0 then do
+    t325 <- rdU mouse 0
+    if t325 > 0 then do
       chkI mouse 0 1 1
-      t331 <- rdU mouse 1
-      chkI scalars (6 * (truncate t331)) 2 2
-      t332 <- rdU scalars ((6 * (truncate t331)) + 2)
-      if t332 > 0 then do
-        chkI scalars (6 * (truncate t331)) 0 5
-        t333 <- rdU scalars ((6 * (truncate t331)) + 3)
-        t334 <- rdU params 0
-        chkI pos (3 * (truncate t331)) 0 2
-        t335 <- rdU pos (3 * (truncate t331))
-        t336 <- rdU pos ((3 * (truncate t331)) + 1)
-        t337 <- rdU pos ((3 * (truncate t331)) + 2)
-        chkI normal (3 * (truncate t331)) 0 2
-        t338 <- rdU normal (3 * (truncate t331))
-        t339 <- rdU normal ((3 * (truncate t331)) + 1)
-        t340 <- rdU normal ((3 * (truncate t331)) + 2)
-        chkI axis (3 * (truncate t331)) 0 2
-        t341 <- rdU axis (3 * (truncate t331))
-        t342 <- rdU axis ((3 * (truncate t331)) + 1)
-        t343 <- rdU axis ((3 * (truncate t331)) + 2)
-        let !s344 = ((t339 * t343) - (t340 * t342))
-        let !s345 = ((t340 * t341) - (t338 * t343))
-        let !s346 = ((t338 * t342) - (t339 * t341))
-        t347 <- rdU scalars (6 * (truncate t331))
-        t348 <- rdU scalars ((6 * (truncate t331)) + 5)
-        t349 <- rdU scalars ((6 * (truncate t331)) + 2)
-        t350 <- rdU scalars ((6 * (truncate t331)) + 3)
-        t351 <- rdU pos (3 * (truncate t331))
-        t352 <- rdU pos ((3 * (truncate t331)) + 1)
-        t353 <- rdU pos ((3 * (truncate t331)) + 2)
-        t354 <- rdU normal (3 * (truncate t331))
-        t355 <- rdU normal ((3 * (truncate t331)) + 1)
-        t356 <- rdU normal ((3 * (truncate t331)) + 2)
-        t357 <- rdU axis (3 * (truncate t331))
-        t358 <- rdU axis ((3 * (truncate t331)) + 1)
-        t359 <- rdU axis ((3 * (truncate t331)) + 2)
-        let !s360 = ((t355 * t359) - (t356 * t358))
-        let !s361 = ((t356 * t357) - (t354 * t359))
-        let !s362 = ((t354 * t358) - (t355 * t357))
-        t363 <- rdU scalars (6 * (truncate t331))
-        t364 <- rdU scalars ((6 * (truncate t331)) + 5)
-        t365 <- rdU scalars ((6 * (truncate t331)) + 2)
-        t366 <- rdU scalars ((6 * (truncate t331)) + 3)
+      t326 <- rdU mouse 1
+      chkI scalars (6 * (truncate t326)) 2 2
+      t327 <- rdU scalars ((6 * (truncate t326)) + 2)
+      if t327 > 0 then do
+        chkI scalars (6 * (truncate t326)) 0 5
+        t328 <- rdU scalars ((6 * (truncate t326)) + 3)
+        t329 <- rdU params 0
+        chkI pos (3 * (truncate t326)) 0 2
+        t330 <- rdU pos (3 * (truncate t326))
+        t331 <- rdU pos ((3 * (truncate t326)) + 1)
+        t332 <- rdU pos ((3 * (truncate t326)) + 2)
+        chkI normal (3 * (truncate t326)) 0 2
+        t333 <- rdU normal (3 * (truncate t326))
+        t334 <- rdU normal ((3 * (truncate t326)) + 1)
+        t335 <- rdU normal ((3 * (truncate t326)) + 2)
+        chkI axis (3 * (truncate t326)) 0 2
+        t336 <- rdU axis (3 * (truncate t326))
+        t337 <- rdU axis ((3 * (truncate t326)) + 1)
+        t338 <- rdU axis ((3 * (truncate t326)) + 2)
+        let !s339 = ((t334 * t338) - (t335 * t337))
+        let !s340 = ((t335 * t336) - (t333 * t338))
+        let !s341 = ((t333 * t337) - (t334 * t336))
+        t342 <- rdU scalars (6 * (truncate t326))
+        t343 <- rdU scalars ((6 * (truncate t326)) + 5)
+        t344 <- rdU scalars ((6 * (truncate t326)) + 2)
+        t345 <- rdU scalars ((6 * (truncate t326)) + 3)
+        t346 <- rdU pos (3 * (truncate t326))
+        t347 <- rdU pos ((3 * (truncate t326)) + 1)
+        t348 <- rdU pos ((3 * (truncate t326)) + 2)
+        t349 <- rdU normal (3 * (truncate t326))
+        t350 <- rdU normal ((3 * (truncate t326)) + 1)
+        t351 <- rdU normal ((3 * (truncate t326)) + 2)
+        t352 <- rdU axis (3 * (truncate t326))
+        t353 <- rdU axis ((3 * (truncate t326)) + 1)
+        t354 <- rdU axis ((3 * (truncate t326)) + 2)
+        let !s355 = ((t350 * t354) - (t351 * t353))
+        let !s356 = ((t351 * t352) - (t349 * t354))
+        let !s357 = ((t349 * t353) - (t350 * t352))
+        t358 <- rdU scalars (6 * (truncate t326))
+        t359 <- rdU scalars ((6 * (truncate t326)) + 5)
+        t360 <- rdU scalars ((6 * (truncate t326)) + 2)
+        t361 <- rdU scalars ((6 * (truncate t326)) + 3)
         chkI mouse 0 2 11
-        t367 <- rdU mouse 2
-        t368 <- rdU mouse 3
-        let !t369 = (t367 / 4.0)
-        let !t370 = (if (abs t369) > 0 then 1.0 else 0.0)
-        let !t371 = (t363 + t368)
-        let !t372 = (cos t371)
-        let !t373 = (sin t371)
-        let !t374 = (1.0 - t370)
-        let !t375 = (t352 + (t369 * ((t372 * t358) + (t373 * s361))))
-        let !t376 = (if (if ((abs t375) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t375 + (negate t375)) else t375)
-        let !t377 = (if (if ((abs t376) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t376 + (negate t376)) else t376)
-        let !s378 = ((t370 * (t351 + (t369 * ((t372 * t357) + (t373 * s360))))) + (t374 * t351))
-        let !s379 = ((t370 * (if (if ((abs t377) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t377 + (negate t377)) else t377)) + (t374 * t352))
-        let !s380 = ((t370 * (t353 + (t369 * ((t372 * t359) + (t373 * s362))))) + (t374 * t353))
-        let !t381 = ((t372 * t357) + (t373 * s360))
-        let !t382 = ((t372 * t358) + (t373 * s361))
-        let !t383 = ((t372 * t359) + (t373 * s362))
-        let !t384 = (sqrt (((t381 * t381) + (t382 * t382)) + (t383 * t383)))
-        let !t385 = (if (abs t369) > 0 then (recip t369) else 0.0)
-        let !t386 = (t385 * ((t351 + (t369 * t381)) + (negate t351)))
-        let !t387 = (t385 * ((if (if ((abs t377) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t377 + (negate t377)) else t377) + (negate t352)))
-        let !t388 = (t387 + (negate t387))
-        let !t389 = (t385 * ((t353 + (t369 * t383)) + (negate t353)))
-        let !t390 = (sqrt (((t386 * t386) + (t388 * t388)) + (t389 * t389)))
-        let !t391 = (if t390 > 0 then (recip (if (t390 - 1.0e-300) > 0 then t390 else 1.0e-300)) else 0.0)
-        let !s392 = ((t370 * (t384 * (t391 * t386))) + (t374 * t381))
-        let !s393 = ((t370 * (t384 * (t391 * t388))) + (t374 * t382))
-        let !s394 = ((t370 * (t384 * (t391 * t389))) + (t374 * t383))
-        let !t395 = (s379 + (t369 * s393))
-        let !t396 = (if (if ((abs t395) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t395 + (negate t395)) else t395)
-        let !t397 = (if (if ((abs t396) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t396 + (negate t396)) else t396)
-        let !s398 = ((t370 * (s378 + (t369 * s392))) + (t374 * s378))
-        let !s399 = ((t370 * (if (if ((abs t397) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t397 + (negate t397)) else t397)) + (t374 * s379))
-        let !s400 = ((t370 * (s380 + (t369 * s394))) + (t374 * s380))
-        let !t401 = (sqrt (((s392 * s392) + (s393 * s393)) + (s394 * s394)))
-        let !t402 = (t385 * ((s378 + (t369 * s392)) + (negate s378)))
-        let !t403 = (t385 * ((if (if ((abs t397) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t397 + (negate t397)) else t397) + (negate s379)))
-        let !t404 = (t403 + (negate t403))
-        let !t405 = (t385 * ((s380 + (t369 * s394)) + (negate s380)))
-        let !t406 = (sqrt (((t402 * t402) + (t404 * t404)) + (t405 * t405)))
-        let !t407 = (if t406 > 0 then (recip (if (t406 - 1.0e-300) > 0 then t406 else 1.0e-300)) else 0.0)
-        let !s408 = ((t370 * (t401 * (t407 * t402))) + (t374 * s392))
-        let !s409 = ((t370 * (t401 * (t407 * t404))) + (t374 * s393))
-        let !s410 = ((t370 * (t401 * (t407 * t405))) + (t374 * s394))
-        let !t411 = (s399 + (t369 * s409))
-        let !t412 = (if (if ((abs t411) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t411 + (negate t411)) else t411)
-        let !t413 = (if (if ((abs t412) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t412 + (negate t412)) else t412)
-        let !s414 = ((t370 * (s398 + (t369 * s408))) + (t374 * s398))
-        let !s415 = ((t370 * (if (if ((abs t413) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t413 + (negate t413)) else t413)) + (t374 * s399))
-        let !s416 = ((t370 * (s400 + (t369 * s410))) + (t374 * s400))
-        let !t417 = (sqrt (((s408 * s408) + (s409 * s409)) + (s410 * s410)))
-        let !t418 = (t385 * ((s398 + (t369 * s408)) + (negate s398)))
-        let !t419 = (t385 * ((if (if ((abs t413) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t413 + (negate t413)) else t413) + (negate s399)))
-        let !t420 = (t419 + (negate t419))
-        let !t421 = (t385 * ((s400 + (t369 * s410)) + (negate s400)))
-        let !t422 = (sqrt (((t418 * t418) + (t420 * t420)) + (t421 * t421)))
-        let !t423 = (if t422 > 0 then (recip (if (t422 - 1.0e-300) > 0 then t422 else 1.0e-300)) else 0.0)
-        let !s424 = ((t370 * (t417 * (t423 * t418))) + (t374 * s408))
-        let !s425 = ((t370 * (t417 * (t423 * t420))) + (t374 * s409))
-        let !s426 = ((t370 * (t417 * (t423 * t421))) + (t374 * s410))
-        let !t427 = (s415 + (t369 * s425))
-        let !t428 = (if (if ((abs t427) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t427 + (negate t427)) else t427)
-        let !t429 = (if (if ((abs t428) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t428 + (negate t428)) else t428)
-        let !s430 = ((t370 * (s414 + (t369 * s424))) + (t374 * s414))
-        let !s431 = ((t370 * (if (if ((abs t429) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t429 + (negate t429)) else t429)) + (t374 * s415))
-        let !s432 = ((t370 * (s416 + (t369 * s426))) + (t374 * s416))
-        let !t433 = (sqrt (((s424 * s424) + (s425 * s425)) + (s426 * s426)))
-        let !t434 = (t385 * ((s414 + (t369 * s424)) + (negate s414)))
-        let !t435 = (t385 * ((if (if ((abs t429) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t429 + (negate t429)) else t429) + (negate s415)))
-        let !t436 = (t435 + (negate t435))
-        let !t437 = (t385 * ((s416 + (t369 * s426)) + (negate s416)))
-        let !t438 = (sqrt (((t434 * t434) + (t436 * t436)) + (t437 * t437)))
-        let !t439 = (if t438 > 0 then (recip (if (t438 - 1.0e-300) > 0 then t438 else 1.0e-300)) else 0.0)
-        let !s440 = ((t370 * (t433 * (t439 * t434))) + (t374 * s424))
-        let !s441 = ((t370 * (t433 * (t439 * t436))) + (t374 * s425))
-        let !s442 = ((t370 * (t433 * (t439 * t437))) + (t374 * s426))
-        t443 <- rdU mouse 4
-        t444 <- rdU mouse 5
-        t445 <- rdU mouse 6
-        t446 <- rdU mouse 7
-        t447 <- rdU mouse 8
-        t448 <- rdU mouse 9
-        let !t449 = (recip t332)
-        let !t450 = (6.283185307179586 * t446)
-        let !s451 = (recip (t334 * ((((2.0 * t449) * t447) * t450) + (t334 * ((t449 * t450) * t450)))))
-        let !s452 = ((t334 * ((t449 * t450) * t450)) * s451)
-        let !s453 = (s430 + (negate t335))
-        let !s454 = (s431 + (negate t336))
-        let !s455 = (s432 + (negate t337))
-        let !s456 = (s430 + (negate t443))
-        let !s457 = (s431 + (negate t444))
-        let !s458 = (s432 + (negate t445))
-        t459 <- rdU mouse 10
-        chkI vel (3 * (truncate t331)) 0 2
-        t460 <- rdU vel (3 * (truncate t331))
-        t461 <- rdU vel ((3 * (truncate t331)) + 1)
-        t462 <- rdU vel ((3 * (truncate t331)) + 2)
-        t463 <- rdU scalars ((6 * (truncate t331)) + 1)
-        let !t464 = (t448 * t334)
-        let !t465 = (negate t464)
-        let !t466 = (((((s454 * t343) - (s455 * t342)) * t338) + (((s455 * t341) - (s453 * t343)) * t339)) + (((s453 * t342) - (s454 * t341)) * t340))
-        let !t467 = (t459 + ((negate ((((((t341 * t460) + (t342 * t461)) + (t343 * t462)) + (t466 * t463)) + (s452 * (((s456 * t341) + (s457 * t342)) + (s458 * t343)))) + (s451 * t459))) / (((t332 * (((t341 * t341) + (t342 * t342)) + (t343 * t343))) + ((t333 * t466) * t466)) + s451)))
-        let !t468 = (if (t467 - t464) > 0 then t464 else t467)
-        let !t469 = (if (t465 - t468) > 0 then t465 else t468)
-        let !s470 = (if (1.0 - (abs (t469 - t469))) > 0 then t469 else 0.0)
-        wrU mouse 10 s470
-        t471 <- rdU scalars ((6 * (truncate t331)) + 2)
-        t472 <- rdU scalars ((6 * (truncate t331)) + 3)
-        t473 <- rdU vel (3 * (truncate t331))
-        t474 <- rdU vel ((3 * (truncate t331)) + 1)
-        t475 <- rdU vel ((3 * (truncate t331)) + 2)
-        t476 <- rdU scalars ((6 * (truncate t331)) + 1)
-        wrU vel (3 * (truncate t331)) (t473 + ((t471 * (s470 - t459)) * t341))
-        wrU vel ((3 * (truncate t331)) + 1) (t474 + ((t471 * (s470 - t459)) * t342))
-        wrU vel ((3 * (truncate t331)) + 2) (t475 + ((t471 * (s470 - t459)) * t343))
-        wrU scalars ((6 * (truncate t331)) + 1) (t476 + ((t472 * (s470 - t459)) * t466))
-        t477 <- rdU mouse 11
-        t478 <- rdU vel (3 * (truncate t331))
-        t479 <- rdU vel ((3 * (truncate t331)) + 1)
-        t480 <- rdU vel ((3 * (truncate t331)) + 2)
-        t481 <- rdU scalars ((6 * (truncate t331)) + 1)
-        let !t482 = (((((s454 * s346) - (s455 * s345)) * t338) + (((s455 * s344) - (s453 * s346)) * t339)) + (((s453 * s345) - (s454 * s344)) * t340))
-        let !t483 = (t477 + ((negate ((((((s344 * t478) + (s345 * t479)) + (s346 * t480)) + (t482 * t481)) + (s452 * (((s456 * s344) + (s457 * s345)) + (s458 * s346)))) + (s451 * t477))) / (((t332 * (((s344 * s344) + (s345 * s345)) + (s346 * s346))) + ((t333 * t482) * t482)) + s451)))
-        let !t484 = (if (t483 - t464) > 0 then t464 else t483)
-        let !t485 = (if (t465 - t484) > 0 then t465 else t484)
-        let !s486 = (if (1.0 - (abs (t485 - t485))) > 0 then t485 else 0.0)
-        wrU mouse 11 s486
-        t487 <- rdU scalars ((6 * (truncate t331)) + 2)
-        t488 <- rdU scalars ((6 * (truncate t331)) + 3)
-        t489 <- rdU vel (3 * (truncate t331))
-        t490 <- rdU vel ((3 * (truncate t331)) + 1)
-        t491 <- rdU vel ((3 * (truncate t331)) + 2)
-        t492 <- rdU scalars ((6 * (truncate t331)) + 1)
-        wrU vel (3 * (truncate t331)) (t489 + ((t487 * (s486 - t477)) * s344))
-        wrU vel ((3 * (truncate t331)) + 1) (t490 + ((t487 * (s486 - t477)) * s345))
-        wrU vel ((3 * (truncate t331)) + 2) (t491 + ((t487 * (s486 - t477)) * s346))
-        wrU scalars ((6 * (truncate t331)) + 1) (t492 + ((t488 * (s486 - t477)) * t482))
+        t362 <- rdU mouse 2
+        t363 <- rdU mouse 3
+        let !t364 = (t362 / 4.0)
+        let !t365 = (if (abs t364) > 0 then 1.0 else 0.0)
+        let !t366 = (t358 + t363)
+        let !t367 = (cos t366)
+        let !t368 = (sin t366)
+        let !t369 = (1.0 - t365)
+        let !t370 = (t347 + (t364 * ((t367 * t353) + (t368 * s356))))
+        let !t371 = (if (if ((abs t370) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t370 + (negate t370)) else t370)
+        let !t372 = (if (if ((abs t371) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t371 + (negate t371)) else t371)
+        let !s373 = ((t365 * (t346 + (t364 * ((t367 * t352) + (t368 * s355))))) + (t369 * t346))
+        let !s374 = ((t365 * (if (if ((abs t372) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t372 + (negate t372)) else t372)) + (t369 * t347))
+        let !s375 = ((t365 * (t348 + (t364 * ((t367 * t354) + (t368 * s357))))) + (t369 * t348))
+        let !t376 = ((t367 * t352) + (t368 * s355))
+        let !t377 = ((t367 * t353) + (t368 * s356))
+        let !t378 = ((t367 * t354) + (t368 * s357))
+        let !t379 = (sqrt (((t376 * t376) + (t377 * t377)) + (t378 * t378)))
+        let !t380 = (if (abs t364) > 0 then (recip t364) else 0.0)
+        let !t381 = (t380 * ((t346 + (t364 * t376)) + (negate t346)))
+        let !t382 = (t380 * ((if (if ((abs t372) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t372 + (negate t372)) else t372) + (negate t347)))
+        let !t383 = (t382 + (negate t382))
+        let !t384 = (t380 * ((t348 + (t364 * t378)) + (negate t348)))
+        let !t385 = (sqrt (((t381 * t381) + (t383 * t383)) + (t384 * t384)))
+        let !t386 = (if t385 > 0 then (recip (if (t385 - 1.0e-300) > 0 then t385 else 1.0e-300)) else 0.0)
+        let !s387 = ((t365 * (t379 * (t386 * t381))) + (t369 * t376))
+        let !s388 = ((t365 * (t379 * (t386 * t383))) + (t369 * t377))
+        let !s389 = ((t365 * (t379 * (t386 * t384))) + (t369 * t378))
+        let !t390 = (s374 + (t364 * s388))
+        let !t391 = (if (if ((abs t390) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t390 + (negate t390)) else t390)
+        let !t392 = (if (if ((abs t391) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t391 + (negate t391)) else t391)
+        let !s393 = ((t365 * (s373 + (t364 * s387))) + (t369 * s373))
+        let !s394 = ((t365 * (if (if ((abs t392) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t392 + (negate t392)) else t392)) + (t369 * s374))
+        let !s395 = ((t365 * (s375 + (t364 * s389))) + (t369 * s375))
+        let !t396 = (sqrt (((s387 * s387) + (s388 * s388)) + (s389 * s389)))
+        let !t397 = (t380 * ((s373 + (t364 * s387)) + (negate s373)))
+        let !t398 = (t380 * ((if (if ((abs t392) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t392 + (negate t392)) else t392) + (negate s374)))
+        let !t399 = (t398 + (negate t398))
+        let !t400 = (t380 * ((s375 + (t364 * s389)) + (negate s375)))
+        let !t401 = (sqrt (((t397 * t397) + (t399 * t399)) + (t400 * t400)))
+        let !t402 = (if t401 > 0 then (recip (if (t401 - 1.0e-300) > 0 then t401 else 1.0e-300)) else 0.0)
+        let !s403 = ((t365 * (t396 * (t402 * t397))) + (t369 * s387))
+        let !s404 = ((t365 * (t396 * (t402 * t399))) + (t369 * s388))
+        let !s405 = ((t365 * (t396 * (t402 * t400))) + (t369 * s389))
+        let !t406 = (s394 + (t364 * s404))
+        let !t407 = (if (if ((abs t406) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t406 + (negate t406)) else t406)
+        let !t408 = (if (if ((abs t407) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t407 + (negate t407)) else t407)
+        let !s409 = ((t365 * (s393 + (t364 * s403))) + (t369 * s393))
+        let !s410 = ((t365 * (if (if ((abs t408) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t408 + (negate t408)) else t408)) + (t369 * s394))
+        let !s411 = ((t365 * (s395 + (t364 * s405))) + (t369 * s395))
+        let !t412 = (sqrt (((s403 * s403) + (s404 * s404)) + (s405 * s405)))
+        let !t413 = (t380 * ((s393 + (t364 * s403)) + (negate s393)))
+        let !t414 = (t380 * ((if (if ((abs t408) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t408 + (negate t408)) else t408) + (negate s394)))
+        let !t415 = (t414 + (negate t414))
+        let !t416 = (t380 * ((s395 + (t364 * s405)) + (negate s395)))
+        let !t417 = (sqrt (((t413 * t413) + (t415 * t415)) + (t416 * t416)))
+        let !t418 = (if t417 > 0 then (recip (if (t417 - 1.0e-300) > 0 then t417 else 1.0e-300)) else 0.0)
+        let !s419 = ((t365 * (t412 * (t418 * t413))) + (t369 * s403))
+        let !s420 = ((t365 * (t412 * (t418 * t415))) + (t369 * s404))
+        let !s421 = ((t365 * (t412 * (t418 * t416))) + (t369 * s405))
+        let !t422 = (s410 + (t364 * s420))
+        let !t423 = (if (if ((abs t422) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t422 + (negate t422)) else t422)
+        let !t424 = (if (if ((abs t423) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t423 + (negate t423)) else t423)
+        let !s425 = ((t365 * (s409 + (t364 * s419))) + (t369 * s409))
+        let !s426 = ((t365 * (if (if ((abs t424) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t424 + (negate t424)) else t424)) + (t369 * s410))
+        let !s427 = ((t365 * (s411 + (t364 * s421))) + (t369 * s411))
+        let !t428 = (sqrt (((s419 * s419) + (s420 * s420)) + (s421 * s421)))
+        let !t429 = (t380 * ((s409 + (t364 * s419)) + (negate s409)))
+        let !t430 = (t380 * ((if (if ((abs t424) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t424 + (negate t424)) else t424) + (negate s410)))
+        let !t431 = (t430 + (negate t430))
+        let !t432 = (t380 * ((s411 + (t364 * s421)) + (negate s411)))
+        let !t433 = (sqrt (((t429 * t429) + (t431 * t431)) + (t432 * t432)))
+        let !t434 = (if t433 > 0 then (recip (if (t433 - 1.0e-300) > 0 then t433 else 1.0e-300)) else 0.0)
+        let !s435 = ((t365 * (t428 * (t434 * t429))) + (t369 * s419))
+        let !s436 = ((t365 * (t428 * (t434 * t431))) + (t369 * s420))
+        let !s437 = ((t365 * (t428 * (t434 * t432))) + (t369 * s421))
+        t438 <- rdU mouse 4
+        t439 <- rdU mouse 5
+        t440 <- rdU mouse 6
+        t441 <- rdU mouse 7
+        t442 <- rdU mouse 8
+        t443 <- rdU mouse 9
+        let !t444 = (recip t327)
+        let !t445 = (6.283185307179586 * t441)
+        let !s446 = (recip (t329 * ((((2.0 * t444) * t442) * t445) + (t329 * ((t444 * t445) * t445)))))
+        let !s447 = ((t329 * ((t444 * t445) * t445)) * s446)
+        let !s448 = (s425 + (negate t330))
+        let !s449 = (s426 + (negate t331))
+        let !s450 = (s427 + (negate t332))
+        let !s451 = (s425 + (negate t438))
+        let !s452 = (s426 + (negate t439))
+        let !s453 = (s427 + (negate t440))
+        t454 <- rdU mouse 10
+        chkI vel (3 * (truncate t326)) 0 2
+        t455 <- rdU vel (3 * (truncate t326))
+        t456 <- rdU vel ((3 * (truncate t326)) + 1)
+        t457 <- rdU vel ((3 * (truncate t326)) + 2)
+        t458 <- rdU scalars ((6 * (truncate t326)) + 1)
+        let !t459 = (t443 * t329)
+        let !t460 = (negate t459)
+        let !t461 = (((((s449 * t338) - (s450 * t337)) * t333) + (((s450 * t336) - (s448 * t338)) * t334)) + (((s448 * t337) - (s449 * t336)) * t335))
+        let !t462 = (t454 + ((negate ((((((t336 * t455) + (t337 * t456)) + (t338 * t457)) + (t461 * t458)) + (s447 * (((s451 * t336) + (s452 * t337)) + (s453 * t338)))) + (s446 * t454))) / (((t327 * (((t336 * t336) + (t337 * t337)) + (t338 * t338))) + ((t328 * t461) * t461)) + s446)))
+        let !t463 = (if (t462 - t459) > 0 then t459 else t462)
+        let !t464 = (if (t460 - t463) > 0 then t460 else t463)
+        let !s465 = (if (1.0 - (abs (t464 - t464))) > 0 then t464 else 0.0)
+        wrU mouse 10 s465
+        t466 <- rdU scalars ((6 * (truncate t326)) + 2)
+        t467 <- rdU scalars ((6 * (truncate t326)) + 3)
+        t468 <- rdU vel (3 * (truncate t326))
+        t469 <- rdU vel ((3 * (truncate t326)) + 1)
+        t470 <- rdU vel ((3 * (truncate t326)) + 2)
+        t471 <- rdU scalars ((6 * (truncate t326)) + 1)
+        wrU vel (3 * (truncate t326)) (t468 + ((t466 * (s465 - t454)) * t336))
+        wrU vel ((3 * (truncate t326)) + 1) (t469 + ((t466 * (s465 - t454)) * t337))
+        wrU vel ((3 * (truncate t326)) + 2) (t470 + ((t466 * (s465 - t454)) * t338))
+        wrU scalars ((6 * (truncate t326)) + 1) (t471 + ((t467 * (s465 - t454)) * t461))
+        t472 <- rdU mouse 11
+        t473 <- rdU vel (3 * (truncate t326))
+        t474 <- rdU vel ((3 * (truncate t326)) + 1)
+        t475 <- rdU vel ((3 * (truncate t326)) + 2)
+        t476 <- rdU scalars ((6 * (truncate t326)) + 1)
+        let !t477 = (((((s449 * s341) - (s450 * s340)) * t333) + (((s450 * s339) - (s448 * s341)) * t334)) + (((s448 * s340) - (s449 * s339)) * t335))
+        let !t478 = (t472 + ((negate ((((((s339 * t473) + (s340 * t474)) + (s341 * t475)) + (t477 * t476)) + (s447 * (((s451 * s339) + (s452 * s340)) + (s453 * s341)))) + (s446 * t472))) / (((t327 * (((s339 * s339) + (s340 * s340)) + (s341 * s341))) + ((t328 * t477) * t477)) + s446)))
+        let !t479 = (if (t478 - t459) > 0 then t459 else t478)
+        let !t480 = (if (t460 - t479) > 0 then t460 else t479)
+        let !s481 = (if (1.0 - (abs (t480 - t480))) > 0 then t480 else 0.0)
+        wrU mouse 11 s481
+        t482 <- rdU scalars ((6 * (truncate t326)) + 2)
+        t483 <- rdU scalars ((6 * (truncate t326)) + 3)
+        t484 <- rdU vel (3 * (truncate t326))
+        t485 <- rdU vel ((3 * (truncate t326)) + 1)
+        t486 <- rdU vel ((3 * (truncate t326)) + 2)
+        t487 <- rdU scalars ((6 * (truncate t326)) + 1)
+        wrU vel (3 * (truncate t326)) (t484 + ((t482 * (s481 - t472)) * s339))
+        wrU vel ((3 * (truncate t326)) + 1) (t485 + ((t482 * (s481 - t472)) * s340))
+        wrU vel ((3 * (truncate t326)) + 2) (t486 + ((t482 * (s481 - t472)) * s341))
+        wrU scalars ((6 * (truncate t326)) + 1) (t487 + ((t483 * (s481 - t472)) * t477))
         pure ()
       else do
         pure ()
@@ -1401,38 +1403,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t493 <- rdU meta 0
-  loopI 0.0 t493 $ \i494 -> do
-    let !d494 = fromIntegral i494 :: Double
-    chkI bodyPrev (2 * i494) 1 1
-    wrU bodyPrev ((2 * i494) + 1) 0.0
+  t488 <- rdU meta 0
+  loopI 0.0 t488 $ \i489 -> do
+    let !d489 = fromIntegral i489 :: Double
+    chkI bodyPrev (2 * i489) 1 1
+    wrU bodyPrev ((2 * i489) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i495 -> do
-    let !d495 = fromIntegral i495 :: Double
-    chkI contacts (30 * i495) 2 25
-    t496 <- rdU contacts ((30 * i495) + 2)
-    chkI prev (4 * i495) 0 3
-    wrU prev (4 * i495) t496
-    t497 <- rdU contacts ((30 * i495) + 3)
-    wrU prev ((4 * i495) + 1) t497
-    t498 <- rdU contacts ((30 * i495) + 24)
-    wrU prev ((4 * i495) + 2) t498
-    t499 <- rdU contacts ((30 * i495) + 25)
-    wrU prev ((4 * i495) + 3) t499
-    chkI bodyPrev (2 * (truncate t496)) 1 1
-    t500 <- rdU bodyPrev ((2 * (truncate t496)) + 1)
-    if (0.5 - t500) > 0 then do
-      chkI bodyPrev (2 * (truncate t496)) 0 0
-      wrU bodyPrev (2 * (truncate t496)) d495
+  loopI 0.0 t9 $ \i490 -> do
+    let !d490 = fromIntegral i490 :: Double
+    chkI contacts (30 * i490) 2 25
+    t491 <- rdU contacts ((30 * i490) + 2)
+    chkI prev (4 * i490) 0 3
+    wrU prev (4 * i490) t491
+    t492 <- rdU contacts ((30 * i490) + 3)
+    wrU prev ((4 * i490) + 1) t492
+    t493 <- rdU contacts ((30 * i490) + 24)
+    wrU prev ((4 * i490) + 2) t493
+    t494 <- rdU contacts ((30 * i490) + 25)
+    wrU prev ((4 * i490) + 3) t494
+    chkI bodyPrev (2 * (truncate t491)) 1 1
+    t495 <- rdU bodyPrev ((2 * (truncate t491)) + 1)
+    if (0.5 - t495) > 0 then do
+      chkI bodyPrev (2 * (truncate t491)) 0 0
+      wrU bodyPrev (2 * (truncate t491)) d490
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t496)) + 1) (t500 + 1.0)
+    wrU bodyPrev ((2 * (truncate t491)) + 1) (t495 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1555,8 +1557,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -1586,286 +1589,286 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 0 8
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
-        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
-        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
-        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
-        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
-        let !t44 = (1.0 - t35)
-        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
-        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
-        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
-        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
-        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
-        chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
-        wrU walk (12 * i26) s47
-        wrU walk ((12 * i26) + 1) s48
-        wrU walk ((12 * i26) + 2) s49
-        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
-        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
-        let !t54 = (t53 + (negate t53))
-        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
-        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
-        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
-        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
-        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
-        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
-        wrU walk ((12 * i26) + 3) s58
-        wrU walk ((12 * i26) + 4) s59
-        wrU walk ((12 * i26) + 5) s60
-        let !s61 = (t44 * t8)
-        let !s62 = (t35 + (t44 * t9))
-        let !s63 = (t44 * t10)
-        wrU walk ((12 * i26) + 6) s61
-        wrU walk ((12 * i26) + 7) s62
-        wrU walk ((12 * i26) + 8) s63
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 0 8
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (if (abs s26) > 0 then 1.0 else 0.0)
+        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t35 = (if ((abs s31) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t36 = (if t35 > 0 then (s31 + (negate ((s31 / t9) * t9))) else s31)
+        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
+        let !t40 = (if t35 > 0 then (s30 + (negate ((s31 / t9) * t8))) else s30)
+        let !t41 = (if t37 > 0 then (t40 + (negate ((t36 / t9) * t8))) else t40)
+        let !t42 = (1.0 - t33)
+        let !t43 = (if t35 > 0 then (s32 + (negate ((s31 / t9) * t10))) else s32)
+        let !t44 = (if t37 > 0 then (t43 + (negate ((t36 / t9) * t10))) else t43)
+        let !s45 = ((t33 * (if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41)) + (t42 * t2))
+        let !s46 = ((t33 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t42 * t3))
+        let !s47 = ((t33 * (if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44)) + (t42 * t4))
+        chkI verts ((291 * i1) + (12 * i24)) 3 5
+        wrU verts (((291 * i1) + (12 * i24)) + 3) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s45 else t2)
+        wrU verts (((291 * i1) + (12 * i24)) + 4) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s46 else t3)
+        wrU verts (((291 * i1) + (12 * i24)) + 5) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s47 else t4)
+        wrU walk (12 * i24) s45
+        wrU walk ((12 * i24) + 1) s46
+        wrU walk ((12 * i24) + 2) s47
+        let !t48 = (sqrt (((t27 * t27) + (t28 * t28)) + (t29 * t29)))
+        let !t49 = (if (abs s26) > 0 then (recip s26) else 0.0)
+        let !t50 = (t49 * ((if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41) + (negate t2)))
+        let !t51 = (t49 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
+        let !t52 = (t51 + (negate t51))
+        let !t53 = (t49 * ((if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44) + (negate t4)))
+        let !t54 = (sqrt (((t50 * t50) + (t52 * t52)) + (t53 * t53)))
+        let !t55 = (if t54 > 0 then (recip (if (t54 - 1.0e-300) > 0 then t54 else 1.0e-300)) else 0.0)
+        let !s56 = ((t33 * (t48 * (t55 * t50))) + (t42 * t27))
+        let !s57 = ((t33 * (t48 * (t55 * t52))) + (t42 * t28))
+        let !s58 = ((t33 * (t48 * (t55 * t53))) + (t42 * t29))
+        wrU walk ((12 * i24) + 3) s56
+        wrU walk ((12 * i24) + 4) s57
+        wrU walk ((12 * i24) + 5) s58
+        let !s59 = (t42 * t8)
+        let !s60 = (t33 + (t42 * t9))
+        let !s61 = (t42 * t10)
+        wrU walk ((12 * i24) + 6) s59
+        wrU walk ((12 * i24) + 7) s60
+        wrU walk ((12 * i24) + 8) s61
         pure ()
-      loopI 0.0 24.0 $ \i64 -> do
-        let !d64 = fromIntegral i64 :: Double
-        chkI radii ((24 * i1) + i64) 0 0
-        t65 <- rdU radii ((24 * i1) + i64)
-        let !s66 = (t65 / 4.0)
-        chkI walk (12 * i64) 0 8
-        t67 <- rdU walk (12 * i64)
-        t68 <- rdU walk ((12 * i64) + 1)
-        t69 <- rdU walk ((12 * i64) + 2)
-        t70 <- rdU walk ((12 * i64) + 6)
-        t71 <- rdU walk ((12 * i64) + 7)
-        t72 <- rdU walk ((12 * i64) + 8)
-        t73 <- rdU walk ((12 * i64) + 3)
-        t74 <- rdU walk ((12 * i64) + 4)
-        t75 <- rdU walk ((12 * i64) + 5)
-        let !s76 = (t67 + (s66 * t73))
-        let !s77 = (t68 + (s66 * t74))
-        let !s78 = (t69 + (s66 * t75))
-        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
-        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
-        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
-        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
-        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
-        let !t88 = (1.0 - t79)
-        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
-        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
-        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
-        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
-        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
-        chkI verts ((291 * i1) + (12 * i64)) 6 8
-        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
-        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
-        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
-        wrU walk (12 * i64) s91
-        wrU walk ((12 * i64) + 1) s92
-        wrU walk ((12 * i64) + 2) s93
-        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
-        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
-        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
-        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
-        let !t98 = (t97 + (negate t97))
-        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
-        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
-        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
-        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
-        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
-        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
-        wrU walk ((12 * i64) + 3) s102
-        wrU walk ((12 * i64) + 4) s103
-        wrU walk ((12 * i64) + 5) s104
-        let !s105 = (t88 * t70)
-        let !s106 = (t79 + (t88 * t71))
-        let !s107 = (t88 * t72)
-        wrU walk ((12 * i64) + 6) s105
-        wrU walk ((12 * i64) + 7) s106
-        wrU walk ((12 * i64) + 8) s107
+      loopI 0.0 24.0 $ \i62 -> do
+        let !d62 = fromIntegral i62 :: Double
+        chkI radii ((24 * i1) + i62) 0 0
+        t63 <- rdU radii ((24 * i1) + i62)
+        let !s64 = (t63 / 4.0)
+        chkI walk (12 * i62) 0 8
+        t65 <- rdU walk (12 * i62)
+        t66 <- rdU walk ((12 * i62) + 1)
+        t67 <- rdU walk ((12 * i62) + 2)
+        t68 <- rdU walk ((12 * i62) + 6)
+        t69 <- rdU walk ((12 * i62) + 7)
+        t70 <- rdU walk ((12 * i62) + 8)
+        t71 <- rdU walk ((12 * i62) + 3)
+        t72 <- rdU walk ((12 * i62) + 4)
+        t73 <- rdU walk ((12 * i62) + 5)
+        let !s74 = (t65 + (s64 * t71))
+        let !s75 = (t66 + (s64 * t72))
+        let !s76 = (t67 + (s64 * t73))
+        let !t77 = (if (abs s64) > 0 then 1.0 else 0.0)
+        let !t78 = (if (abs t69) > 0 then 1.0 else 0.0)
+        let !t79 = (if ((abs s75) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t80 = (if t79 > 0 then (s75 + (negate ((s75 / t69) * t69))) else s75)
+        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t69) * t69))) else t80)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
+        let !t84 = (if t79 > 0 then (s74 + (negate ((s75 / t69) * t68))) else s74)
+        let !t85 = (if t81 > 0 then (t84 + (negate ((t80 / t69) * t68))) else t84)
+        let !t86 = (1.0 - t77)
+        let !t87 = (if t79 > 0 then (s76 + (negate ((s75 / t69) * t70))) else s76)
+        let !t88 = (if t81 > 0 then (t87 + (negate ((t80 / t69) * t70))) else t87)
+        let !s89 = ((t77 * (if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85)) + (t86 * t65))
+        let !s90 = ((t77 * (if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82)) + (t86 * t66))
+        let !s91 = ((t77 * (if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88)) + (t86 * t67))
+        chkI verts ((291 * i1) + (12 * i62)) 6 8
+        wrU verts (((291 * i1) + (12 * i62)) + 6) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s89 else t2)
+        wrU verts (((291 * i1) + (12 * i62)) + 7) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s90 else t3)
+        wrU verts (((291 * i1) + (12 * i62)) + 8) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s91 else t4)
+        wrU walk (12 * i62) s89
+        wrU walk ((12 * i62) + 1) s90
+        wrU walk ((12 * i62) + 2) s91
+        let !t92 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
+        let !t93 = (if (abs s64) > 0 then (recip s64) else 0.0)
+        let !t94 = (t93 * ((if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85) + (negate t65)))
+        let !t95 = (t93 * ((if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82) + (negate t66)))
+        let !t96 = (t95 + (negate t95))
+        let !t97 = (t93 * ((if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88) + (negate t67)))
+        let !t98 = (sqrt (((t94 * t94) + (t96 * t96)) + (t97 * t97)))
+        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
+        let !s100 = ((t77 * (t92 * (t99 * t94))) + (t86 * t71))
+        let !s101 = ((t77 * (t92 * (t99 * t96))) + (t86 * t72))
+        let !s102 = ((t77 * (t92 * (t99 * t97))) + (t86 * t73))
+        wrU walk ((12 * i62) + 3) s100
+        wrU walk ((12 * i62) + 4) s101
+        wrU walk ((12 * i62) + 5) s102
+        let !s103 = (t86 * t68)
+        let !s104 = (t77 + (t86 * t69))
+        let !s105 = (t86 * t70)
+        wrU walk ((12 * i62) + 6) s103
+        wrU walk ((12 * i62) + 7) s104
+        wrU walk ((12 * i62) + 8) s105
         pure ()
-      loopI 0.0 24.0 $ \i108 -> do
-        let !d108 = fromIntegral i108 :: Double
-        chkI radii ((24 * i1) + i108) 0 0
-        t109 <- rdU radii ((24 * i1) + i108)
-        let !s110 = (t109 / 4.0)
-        chkI walk (12 * i108) 0 8
-        t111 <- rdU walk (12 * i108)
-        t112 <- rdU walk ((12 * i108) + 1)
-        t113 <- rdU walk ((12 * i108) + 2)
-        t114 <- rdU walk ((12 * i108) + 6)
-        t115 <- rdU walk ((12 * i108) + 7)
-        t116 <- rdU walk ((12 * i108) + 8)
-        t117 <- rdU walk ((12 * i108) + 3)
-        t118 <- rdU walk ((12 * i108) + 4)
-        t119 <- rdU walk ((12 * i108) + 5)
-        let !s120 = (t111 + (s110 * t117))
-        let !s121 = (t112 + (s110 * t118))
-        let !s122 = (t113 + (s110 * t119))
-        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
-        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
-        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
-        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
-        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
-        let !t132 = (1.0 - t123)
-        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
-        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
-        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
-        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
-        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
-        chkI verts ((291 * i1) + (12 * i108)) 9 11
-        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
-        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
-        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
-        wrU walk (12 * i108) s135
-        wrU walk ((12 * i108) + 1) s136
-        wrU walk ((12 * i108) + 2) s137
-        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
-        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
-        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
-        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
-        let !t142 = (t141 + (negate t141))
-        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
-        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
-        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
-        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
-        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
-        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
-        wrU walk ((12 * i108) + 3) s146
-        wrU walk ((12 * i108) + 4) s147
-        wrU walk ((12 * i108) + 5) s148
-        let !s149 = (t132 * t114)
-        let !s150 = (t123 + (t132 * t115))
-        let !s151 = (t132 * t116)
-        wrU walk ((12 * i108) + 6) s149
-        wrU walk ((12 * i108) + 7) s150
-        wrU walk ((12 * i108) + 8) s151
+      loopI 0.0 24.0 $ \i106 -> do
+        let !d106 = fromIntegral i106 :: Double
+        chkI radii ((24 * i1) + i106) 0 0
+        t107 <- rdU radii ((24 * i1) + i106)
+        let !s108 = (t107 / 4.0)
+        chkI walk (12 * i106) 0 8
+        t109 <- rdU walk (12 * i106)
+        t110 <- rdU walk ((12 * i106) + 1)
+        t111 <- rdU walk ((12 * i106) + 2)
+        t112 <- rdU walk ((12 * i106) + 6)
+        t113 <- rdU walk ((12 * i106) + 7)
+        t114 <- rdU walk ((12 * i106) + 8)
+        t115 <- rdU walk ((12 * i106) + 3)
+        t116 <- rdU walk ((12 * i106) + 4)
+        t117 <- rdU walk ((12 * i106) + 5)
+        let !s118 = (t109 + (s108 * t115))
+        let !s119 = (t110 + (s108 * t116))
+        let !s120 = (t111 + (s108 * t117))
+        let !t121 = (if (abs s108) > 0 then 1.0 else 0.0)
+        let !t122 = (if (abs t113) > 0 then 1.0 else 0.0)
+        let !t123 = (if ((abs s119) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t124 = (if t123 > 0 then (s119 + (negate ((s119 / t113) * t113))) else s119)
+        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t113) * t113))) else t124)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
+        let !t128 = (if t123 > 0 then (s118 + (negate ((s119 / t113) * t112))) else s118)
+        let !t129 = (if t125 > 0 then (t128 + (negate ((t124 / t113) * t112))) else t128)
+        let !t130 = (1.0 - t121)
+        let !t131 = (if t123 > 0 then (s120 + (negate ((s119 / t113) * t114))) else s120)
+        let !t132 = (if t125 > 0 then (t131 + (negate ((t124 / t113) * t114))) else t131)
+        let !s133 = ((t121 * (if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129)) + (t130 * t109))
+        let !s134 = ((t121 * (if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126)) + (t130 * t110))
+        let !s135 = ((t121 * (if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132)) + (t130 * t111))
+        chkI verts ((291 * i1) + (12 * i106)) 9 11
+        wrU verts (((291 * i1) + (12 * i106)) + 9) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s133 else t2)
+        wrU verts (((291 * i1) + (12 * i106)) + 10) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s134 else t3)
+        wrU verts (((291 * i1) + (12 * i106)) + 11) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s135 else t4)
+        wrU walk (12 * i106) s133
+        wrU walk ((12 * i106) + 1) s134
+        wrU walk ((12 * i106) + 2) s135
+        let !t136 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
+        let !t137 = (if (abs s108) > 0 then (recip s108) else 0.0)
+        let !t138 = (t137 * ((if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129) + (negate t109)))
+        let !t139 = (t137 * ((if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126) + (negate t110)))
+        let !t140 = (t139 + (negate t139))
+        let !t141 = (t137 * ((if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132) + (negate t111)))
+        let !t142 = (sqrt (((t138 * t138) + (t140 * t140)) + (t141 * t141)))
+        let !t143 = (if t142 > 0 then (recip (if (t142 - 1.0e-300) > 0 then t142 else 1.0e-300)) else 0.0)
+        let !s144 = ((t121 * (t136 * (t143 * t138))) + (t130 * t115))
+        let !s145 = ((t121 * (t136 * (t143 * t140))) + (t130 * t116))
+        let !s146 = ((t121 * (t136 * (t143 * t141))) + (t130 * t117))
+        wrU walk ((12 * i106) + 3) s144
+        wrU walk ((12 * i106) + 4) s145
+        wrU walk ((12 * i106) + 5) s146
+        let !s147 = (t130 * t112)
+        let !s148 = (t121 + (t130 * t113))
+        let !s149 = (t130 * t114)
+        wrU walk ((12 * i106) + 6) s147
+        wrU walk ((12 * i106) + 7) s148
+        wrU walk ((12 * i106) + 8) s149
         pure ()
-      loopI 0.0 24.0 $ \i152 -> do
-        let !d152 = fromIntegral i152 :: Double
-        chkI radii ((24 * i1) + i152) 0 0
-        t153 <- rdU radii ((24 * i1) + i152)
-        let !s154 = (t153 / 4.0)
-        chkI walk (12 * i152) 0 8
-        t155 <- rdU walk (12 * i152)
-        t156 <- rdU walk ((12 * i152) + 1)
-        t157 <- rdU walk ((12 * i152) + 2)
-        t158 <- rdU walk ((12 * i152) + 6)
-        t159 <- rdU walk ((12 * i152) + 7)
-        t160 <- rdU walk ((12 * i152) + 8)
-        t161 <- rdU walk ((12 * i152) + 3)
-        t162 <- rdU walk ((12 * i152) + 4)
-        t163 <- rdU walk ((12 * i152) + 5)
-        let !s164 = (t155 + (s154 * t161))
-        let !s165 = (t156 + (s154 * t162))
-        let !s166 = (t157 + (s154 * t163))
-        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
-        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
-        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
-        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
-        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
-        let !t176 = (1.0 - t167)
-        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
-        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
-        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
-        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
-        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
-        chkI verts ((291 * i1) + (12 * i152)) 12 14
-        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
-        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
-        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
+      loopI 0.0 24.0 $ \i150 -> do
+        let !d150 = fromIntegral i150 :: Double
+        chkI radii ((24 * i1) + i150) 0 0
+        t151 <- rdU radii ((24 * i1) + i150)
+        let !s152 = (t151 / 4.0)
+        chkI walk (12 * i150) 0 8
+        t153 <- rdU walk (12 * i150)
+        t154 <- rdU walk ((12 * i150) + 1)
+        t155 <- rdU walk ((12 * i150) + 2)
+        t156 <- rdU walk ((12 * i150) + 6)
+        t157 <- rdU walk ((12 * i150) + 7)
+        t158 <- rdU walk ((12 * i150) + 8)
+        t159 <- rdU walk ((12 * i150) + 3)
+        t160 <- rdU walk ((12 * i150) + 4)
+        t161 <- rdU walk ((12 * i150) + 5)
+        let !s162 = (t153 + (s152 * t159))
+        let !s163 = (t154 + (s152 * t160))
+        let !s164 = (t155 + (s152 * t161))
+        let !t165 = (if (abs s152) > 0 then 1.0 else 0.0)
+        let !t166 = (if (abs t157) > 0 then 1.0 else 0.0)
+        let !t167 = (if ((abs s163) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t168 = (if t167 > 0 then (s163 + (negate ((s163 / t157) * t157))) else s163)
+        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t157) * t157))) else t168)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
+        let !t172 = (if t167 > 0 then (s162 + (negate ((s163 / t157) * t156))) else s162)
+        let !t173 = (if t169 > 0 then (t172 + (negate ((t168 / t157) * t156))) else t172)
+        let !t174 = (1.0 - t165)
+        let !t175 = (if t167 > 0 then (s164 + (negate ((s163 / t157) * t158))) else s164)
+        let !t176 = (if t169 > 0 then (t175 + (negate ((t168 / t157) * t158))) else t175)
+        let !s177 = ((t165 * (if t171 > 0 then (t173 + (negate ((t170 / t157) * t156))) else t173)) + (t174 * t153))
+        let !s178 = ((t165 * (if t171 > 0 then (t170 + (negate ((t170 / t157) * t157))) else t170)) + (t174 * t154))
+        let !s179 = ((t165 * (if t171 > 0 then (t176 + (negate ((t170 / t157) * t158))) else t176)) + (t174 * t155))
+        chkI verts ((291 * i1) + (12 * i150)) 12 14
+        wrU verts (((291 * i1) + (12 * i150)) + 12) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s177 else t2)
+        wrU verts (((291 * i1) + (12 * i150)) + 13) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s178 else t3)
+        wrU verts (((291 * i1) + (12 * i150)) + 14) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s179 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i182 -> do
-        let !d182 = fromIntegral i182 :: Double
-        chkI radii ((24 * i1) + i182) 0 0
-        t183 <- rdU radii ((24 * i1) + i182)
-        t184 <- getR v18
-        t185 <- getR v19
-        setR v18 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
-        setR v19 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
-        let !s186 = ((t184 * t5) + (t185 * s14))
-        let !s187 = ((t184 * t6) + (t185 * s15))
-        let !s188 = ((t184 * t7) + (t185 * s16))
-        let !s189 = (t2 + (t183 * s186))
-        let !s190 = (t3 + (t183 * s187))
-        let !s191 = (t4 + (t183 * s188))
-        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
-        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
-        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
-        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
-        let !t201 = (1.0 - t192)
-        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
-        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
-        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
-        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
-        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
-        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
-        let !s208 = (if t207 > 0 then s204 else t2)
-        let !s209 = (if t207 > 0 then s205 else t3)
-        let !s210 = (if t207 > 0 then s206 else t4)
-        chkI verts ((291 * i1) + (12 * i182)) 3 14
-        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
-        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
-        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
-        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
+      loopI 0.0 24.0 $ \i180 -> do
+        let !d180 = fromIntegral i180 :: Double
+        chkI radii ((24 * i1) + i180) 0 0
+        t181 <- rdU radii ((24 * i1) + i180)
+        t182 <- rdU locals 0
+        t183 <- rdU locals 1
+        wrU locals 0 ((t182 * 0.9659258262890683) - (t183 * 0.25881904510252074))
+        wrU locals 1 ((t183 * 0.9659258262890683) + (t182 * 0.25881904510252074))
+        let !s184 = ((t182 * t5) + (t183 * s14))
+        let !s185 = ((t182 * t6) + (t183 * s15))
+        let !s186 = ((t182 * t7) + (t183 * s16))
+        let !s187 = (t2 + (t181 * s184))
+        let !s188 = (t3 + (t181 * s185))
+        let !s189 = (t4 + (t181 * s186))
+        let !t190 = (if (abs t181) > 0 then 1.0 else 0.0)
+        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t192 = (if ((abs s188) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t193 = (if t192 > 0 then (s188 + (negate ((s188 / t9) * t9))) else s188)
+        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
+        let !t197 = (if t192 > 0 then (s187 + (negate ((s188 / t9) * t8))) else s187)
+        let !t198 = (if t194 > 0 then (t197 + (negate ((t193 / t9) * t8))) else t197)
+        let !t199 = (1.0 - t190)
+        let !t200 = (if t192 > 0 then (s189 + (negate ((s188 / t9) * t10))) else s189)
+        let !t201 = (if t194 > 0 then (t200 + (negate ((t193 / t9) * t10))) else t200)
+        let !s202 = ((t190 * (if t196 > 0 then (t198 + (negate ((t195 / t9) * t8))) else t198)) + (t199 * t2))
+        let !s203 = ((t190 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t199 * t3))
+        let !s204 = ((t190 * (if t196 > 0 then (t201 + (negate ((t195 / t9) * t10))) else t201)) + (t199 * t4))
+        let !t205 = (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204))))
+        let !s206 = (if t205 > 0 then s202 else t2)
+        let !s207 = (if t205 > 0 then s203 else t3)
+        let !s208 = (if t205 > 0 then s204 else t4)
+        chkI verts ((291 * i1) + (12 * i180)) 3 14
+        wrU verts (((291 * i1) + (12 * i180)) + 12) s206
+        wrU verts (((291 * i1) + (12 * i180)) + 13) s207
+        wrU verts (((291 * i1) + (12 * i180)) + 14) s208
+        wrU verts (((291 * i1) + (12 * i180)) + 3) (t2 + (0.25 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 4) (t3 + (0.25 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 5) (t4 + (0.25 * (s208 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i180)) + 6) (t2 + (0.5 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 7) (t3 + (0.5 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 8) (t4 + (0.5 * (s208 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i180)) + 9) (t2 + (0.75 * (s206 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i180)) + 10) (t3 + (0.75 * (s207 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i180)) + 11) (t4 + (0.75 * (s208 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -22,13 +22,13 @@ compiled = CompiledStep "hemisphere" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt((((x * x) + (y * y)) + (z * z))) - 1.0);\n}\n\nboundary function f(x, y, z) {\n  return (-y);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, (-4.0), 0.0];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Hemisphere: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,130 +71,131 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 16
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 9.1552734375e-5) > 0 then t6 else 9.1552734375e-5)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 9.1552734375e-5) > 0 then t5 else 9.1552734375e-5)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    t36 <- rdU meta 4
     t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    t39 <- rdU meta 4
-    t40 <- rdU meta 5
-    let !s41 = (floorF (t32 / t40))
-    let !s42 = (floorF (t33 / t40))
-    let !s43 = (floorF (t34 / t40))
-    loopI 0.0 3.0 $ \i44 -> do
-      let !d44 = fromIntegral i44 :: Double
-      loopI 0.0 3.0 $ \i45 -> do
-        let !d45 = fromIntegral i45 :: Double
-        loopI 0.0 3.0 $ \i46 -> do
-          let !d46 = fromIntegral i46 :: Double
-          let !s47 = ((s41 + d44) - 1.0)
-          let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = ((s43 + d46) - 1.0)
-          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
-          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
-          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
-          chkI grid (truncate s52) 0 0
-          t53 <- rdU grid (truncate s52)
-          chkI grid ((truncate s52) + (truncate t39)) 0 0
-          t54 <- rdU grid ((truncate s52) + (truncate t39))
-          loopI t54 t53 $ \i55 -> do
-            let !d55 = fromIntegral i55 :: Double
-            chkI items i55 0 0
-            t56 <- rdU items i55
-            chkI cellOf (truncate t56) 0 0
-            t57 <- rdU cellOf (truncate t56)
-            if (0.5 - (abs (t57 - s50))) > 0 then do
-              if (t56 - d31) > 0 then do
-                chkI pos (3 * (truncate t56)) 0 2
-                t58 <- rdU pos (3 * (truncate t56))
-                t59 <- rdU pos ((3 * (truncate t56)) + 1)
-                t60 <- rdU pos ((3 * (truncate t56)) + 2)
-                chkI scalars (6 * (truncate t56)) 2 5
-                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
-                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
-                let !t63 = (t36 + t62)
-                let !t64 = (t32 + (negate t58))
-                let !t65 = (t33 + (negate t59))
-                let !t66 = (t34 + (negate t60))
-                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
-                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
-                  t68 <- getR v38
-                  chkI near (truncate t68) 0 0
-                  wrU near (truncate t68) t56
-                  setR v38 (t68 + 1.0)
+    let !s38 = (floorF (t30 / t37))
+    let !s39 = (floorF (t31 / t37))
+    let !s40 = (floorF (t32 / t37))
+    loopI 0.0 3.0 $ \i41 -> do
+      let !d41 = fromIntegral i41 :: Double
+      loopI 0.0 3.0 $ \i42 -> do
+        let !d42 = fromIntegral i42 :: Double
+        loopI 0.0 3.0 $ \i43 -> do
+          let !d43 = fromIntegral i43 :: Double
+          let !s44 = ((s38 + d41) - 1.0)
+          let !s45 = ((s39 + d42) - 1.0)
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = (((((s44 + 131072.0) * 262144.0) + (s45 + 131072.0)) * 262144.0) + (s46 + 131072.0))
+          let !t48 = (((s44 * 7.3856093e7) + (s45 * 1.9349663e7)) + (s46 * 8.3492791e7))
+          let !s49 = (t48 - (t36 * (floorF (t48 / t36))))
+          chkI grid (truncate s49) 0 0
+          t50 <- rdU grid (truncate s49)
+          chkI grid ((truncate s49) + (truncate t36)) 0 0
+          t51 <- rdU grid ((truncate s49) + (truncate t36))
+          loopI t51 t50 $ \i52 -> do
+            let !d52 = fromIntegral i52 :: Double
+            chkI items i52 0 0
+            t53 <- rdU items i52
+            chkI cellOf (truncate t53) 0 0
+            t54 <- rdU cellOf (truncate t53)
+            if (0.5 - (abs (t54 - s47))) > 0 then do
+              if (t53 - d29) > 0 then do
+                chkI pos (3 * (truncate t53)) 0 2
+                t55 <- rdU pos (3 * (truncate t53))
+                t56 <- rdU pos ((3 * (truncate t53)) + 1)
+                t57 <- rdU pos ((3 * (truncate t53)) + 2)
+                chkI scalars (6 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                let !t60 = (t34 + t59)
+                let !t61 = (t30 + (negate t55))
+                let !t62 = (t31 + (negate t56))
+                let !t63 = (t32 + (negate t57))
+                let !t64 = ((t33 + t58) - (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63))))
+                if (if (t60 - t64) > 0 then t64 else t60) > 0 then do
+                  t65 <- rdU locals 2
+                  chkI near (truncate t65) 0 0
+                  wrU near (truncate t65) t53
+                  wrU locals 2 (t65 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -208,65 +209,65 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    t69 <- getR v38
-    loopI 0.0 t69 $ \i70 -> do
-      let !d70 = fromIntegral i70 :: Double
-      chkI near i70 0 0
-      t71 <- rdU near i70
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+    t66 <- rdU locals 2
+    loopI 0.0 t66 $ \i67 -> do
+      let !d67 = fromIntegral i67 :: Double
+      chkI near i67 0 0
+      t68 <- rdU near i67
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    chkI normal (3 * i31) 0 2
-    t72 <- rdU normal (3 * i31)
-    t73 <- rdU normal ((3 * i31) + 1)
-    t74 <- rdU normal ((3 * i31) + 2)
-    v75 <- newR 0.0
-    v76 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i77 -> do
-      let !d77 = fromIntegral i77 :: Double
-      chkI verts ((291 * i31) + (12 * i77)) 12 14
-      t78 <- rdU verts (((291 * i31) + (12 * i77)) + 12)
-      t79 <- rdU verts (((291 * i31) + (12 * i77)) + 13)
-      t80 <- rdU verts (((291 * i31) + (12 * i77)) + 14)
-      let !s81 = (negate t79)
-      t82 <- getR v75
-      if ((negate s81) - t82) > 0 then do
-        setR v75 (negate s81)
-        setR v76 d77
+    chkI normal (3 * i29) 0 2
+    t69 <- rdU normal (3 * i29)
+    t70 <- rdU normal ((3 * i29) + 1)
+    t71 <- rdU normal ((3 * i29) + 2)
+    wrU locals 3 0.0
+    wrU locals 4 (-1.0)
+    loopI 0.0 24.0 $ \i72 -> do
+      let !d72 = fromIntegral i72 :: Double
+      chkI verts ((291 * i29) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      let !s76 = (negate t74)
+      t77 <- rdU locals 3
+      if ((negate s76) - t77) > 0 then do
+        wrU locals 3 (negate s76)
+        wrU locals 4 d72
         pure ()
       else do
         pure ()
       pure ()
-    t83 <- getR v75
-    if t83 > 0 then do
-      t84 <- getR v76
-      chkI verts ((12 * (truncate t84)) + (291 * i31)) 12 14
-      t85 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 12)
-      t86 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 13)
-      t87 <- rdU verts (((12 * (truncate t84)) + (291 * i31)) + 14)
-      let !s88 = (negate t72)
-      v89 <- newR 1.0e300
-      v90 <- newR (-1.0e300)
-      v91 <- newR (-1.0)
-      v92 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i93 -> do
-        let !d93 = fromIntegral i93 :: Double
-        chkI verts ((291 * i31) + (12 * i93)) 12 14
-        t94 <- rdU verts (((291 * i31) + (12 * i93)) + 12)
-        t95 <- rdU verts (((291 * i31) + (12 * i93)) + 13)
-        t96 <- rdU verts (((291 * i31) + (12 * i93)) + 14)
-        if t95 > 0 then do
-          let !s97 = ((t94 * t74) + (t96 * s88))
-          t98 <- getR v89
-          if (t98 - s97) > 0 then do
-            setR v89 s97
-            setR v91 d93
+    t78 <- rdU locals 3
+    if t78 > 0 then do
+      t79 <- rdU locals 4
+      chkI verts ((12 * (truncate t79)) + (291 * i29)) 12 14
+      t80 <- rdU verts (((12 * (truncate t79)) + (291 * i29)) + 12)
+      t81 <- rdU verts (((12 * (truncate t79)) + (291 * i29)) + 13)
+      t82 <- rdU verts (((12 * (truncate t79)) + (291 * i29)) + 14)
+      let !s83 = (negate t69)
+      wrU locals 5 1.0e300
+      wrU locals 6 (-1.0e300)
+      wrU locals 7 (-1.0)
+      wrU locals 8 (-1.0)
+      loopI 0.0 24.0 $ \i84 -> do
+        let !d84 = fromIntegral i84 :: Double
+        chkI verts ((291 * i29) + (12 * i84)) 12 14
+        t85 <- rdU verts (((291 * i29) + (12 * i84)) + 12)
+        t86 <- rdU verts (((291 * i29) + (12 * i84)) + 13)
+        t87 <- rdU verts (((291 * i29) + (12 * i84)) + 14)
+        if t86 > 0 then do
+          let !s88 = ((t85 * t71) + (t87 * s83))
+          t89 <- rdU locals 5
+          if (t89 - s88) > 0 then do
+            wrU locals 5 s88
+            wrU locals 7 d84
             pure ()
           else do
             pure ()
-          t99 <- getR v90
-          if (s97 - t99) > 0 then do
-            setR v90 s97
-            setR v92 d93
+          t90 <- rdU locals 6
+          if (s88 - t90) > 0 then do
+            wrU locals 6 s88
+            wrU locals 8 d84
             pure ()
           else do
             pure ()
@@ -274,196 +275,196 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t100 <- getR v91
-      t101 <- getR v92
-      chkI verts ((12 * (truncate t100)) + (291 * i31)) 12 14
-      t102 <- rdU verts (((12 * (truncate t100)) + (291 * i31)) + 12)
-      t103 <- rdU verts (((12 * (truncate t100)) + (291 * i31)) + 13)
-      t104 <- rdU verts (((12 * (truncate t100)) + (291 * i31)) + 14)
-      let !s105 = (negate t103)
-      t106 <- rdU meta 2
-      t107 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t107) > 0 then 1.0 else t107)) - t106) - 0.5) > 0 then do
-        wrU meta 2 (t106 + 1.0)
-        t108 <- rdU pos (3 * i31)
-        t109 <- rdU pos ((3 * i31) + 1)
-        t110 <- rdU pos ((3 * i31) + 2)
-        t111 <- rdU normal (3 * i31)
-        t112 <- rdU normal ((3 * i31) + 1)
-        t113 <- rdU normal ((3 * i31) + 2)
-        chkI axis (3 * i31) 0 2
-        t114 <- rdU axis (3 * i31)
-        t115 <- rdU axis ((3 * i31) + 1)
-        t116 <- rdU axis ((3 * i31) + 2)
-        let !s117 = ((t112 * t116) - (t113 * t115))
-        let !s118 = ((t113 * t114) - (t111 * t116))
-        let !s119 = ((t111 * t115) - (t112 * t114))
-        chkI scalars (6 * i31) 0 0
-        t120 <- rdU scalars (6 * i31)
-        t121 <- rdU scalars ((6 * i31) + 5)
-        t122 <- rdU scalars ((6 * i31) + 2)
-        t123 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t106)) 0 29
-        wrU contacts (30 * (truncate t106)) d31
-        wrU contacts ((30 * (truncate t106)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t106)) + 2) d31
-        wrU contacts ((30 * (truncate t106)) + 3) 8.0
-        wrU contacts ((30 * (truncate t106)) + 4) (negate ((negate t112) * t111))
-        wrU contacts ((30 * (truncate t106)) + 5) ((-1.0) + (negate ((negate t112) * t112)))
-        wrU contacts ((30 * (truncate t106)) + 6) (negate ((negate t112) * t113))
-        wrU contacts ((30 * (truncate t106)) + 7) (((t104 + (negate t110)) * t111) + ((negate (t102 + (negate t108))) * t113))
-        wrU contacts ((30 * (truncate t106)) + 12) (t113 + (negate (((t111 * t113) + (t113 * (negate t111))) * t111)))
-        wrU contacts ((30 * (truncate t106)) + 13) (negate (((t111 * t113) + (t113 * (negate t111))) * t112))
-        let !t124 = (negate t111)
-        wrU contacts ((30 * (truncate t106)) + 14) (t124 + (negate (((t111 * t113) + (t113 * t124)) * t113)))
-        let !t125 = (t103 + (negate t109))
-        wrU contacts ((30 * (truncate t106)) + 15) ((((t125 * t124) * t111) + ((((t104 + (negate t110)) * t113) - ((t102 + (negate t108)) * t124)) * t112)) + ((negate (t125 * t113)) * t113))
-        wrU contacts ((30 * (truncate t106)) + 20) (negate s105)
-        wrU contacts ((30 * (truncate t106)) + 26) 1.0
-        wrU contacts ((30 * (truncate t106)) + 27) t102
-        wrU contacts ((30 * (truncate t106)) + 28) t103
-        wrU contacts ((30 * (truncate t106)) + 29) t104
+      t91 <- rdU locals 7
+      t92 <- rdU locals 8
+      chkI verts ((12 * (truncate t91)) + (291 * i29)) 12 14
+      t93 <- rdU verts (((12 * (truncate t91)) + (291 * i29)) + 12)
+      t94 <- rdU verts (((12 * (truncate t91)) + (291 * i29)) + 13)
+      t95 <- rdU verts (((12 * (truncate t91)) + (291 * i29)) + 14)
+      let !s96 = (negate t94)
+      t97 <- rdU meta 2
+      t98 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t98) > 0 then 1.0 else t98)) - t97) - 0.5) > 0 then do
+        wrU meta 2 (t97 + 1.0)
+        t99 <- rdU pos (3 * i29)
+        t100 <- rdU pos ((3 * i29) + 1)
+        t101 <- rdU pos ((3 * i29) + 2)
+        t102 <- rdU normal (3 * i29)
+        t103 <- rdU normal ((3 * i29) + 1)
+        t104 <- rdU normal ((3 * i29) + 2)
+        chkI axis (3 * i29) 0 2
+        t105 <- rdU axis (3 * i29)
+        t106 <- rdU axis ((3 * i29) + 1)
+        t107 <- rdU axis ((3 * i29) + 2)
+        let !s108 = ((t103 * t107) - (t104 * t106))
+        let !s109 = ((t104 * t105) - (t102 * t107))
+        let !s110 = ((t102 * t106) - (t103 * t105))
+        chkI scalars (6 * i29) 0 0
+        t111 <- rdU scalars (6 * i29)
+        t112 <- rdU scalars ((6 * i29) + 5)
+        t113 <- rdU scalars ((6 * i29) + 2)
+        t114 <- rdU scalars ((6 * i29) + 3)
+        chkI contacts (30 * (truncate t97)) 0 29
+        wrU contacts (30 * (truncate t97)) d29
+        wrU contacts ((30 * (truncate t97)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t97)) + 2) d29
+        wrU contacts ((30 * (truncate t97)) + 3) 8.0
+        wrU contacts ((30 * (truncate t97)) + 4) (negate ((negate t103) * t102))
+        wrU contacts ((30 * (truncate t97)) + 5) ((-1.0) + (negate ((negate t103) * t103)))
+        wrU contacts ((30 * (truncate t97)) + 6) (negate ((negate t103) * t104))
+        wrU contacts ((30 * (truncate t97)) + 7) (((t95 + (negate t101)) * t102) + ((negate (t93 + (negate t99))) * t104))
+        wrU contacts ((30 * (truncate t97)) + 12) (t104 + (negate (((t102 * t104) + (t104 * (negate t102))) * t102)))
+        wrU contacts ((30 * (truncate t97)) + 13) (negate (((t102 * t104) + (t104 * (negate t102))) * t103))
+        let !t115 = (negate t102)
+        wrU contacts ((30 * (truncate t97)) + 14) (t115 + (negate (((t102 * t104) + (t104 * t115)) * t104)))
+        let !t116 = (t94 + (negate t100))
+        wrU contacts ((30 * (truncate t97)) + 15) ((((t116 * t115) * t102) + ((((t95 + (negate t101)) * t104) - ((t93 + (negate t99)) * t115)) * t103)) + ((negate (t116 * t104)) * t104))
+        wrU contacts ((30 * (truncate t97)) + 20) (negate s96)
+        wrU contacts ((30 * (truncate t97)) + 26) 1.0
+        wrU contacts ((30 * (truncate t97)) + 27) t93
+        wrU contacts ((30 * (truncate t97)) + 28) t94
+        wrU contacts ((30 * (truncate t97)) + 29) t95
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t126 <- rdU pos (-3)
-          t127 <- rdU pos (-2)
-          t128 <- rdU pos (-1)
+          t117 <- rdU pos (-3)
+          t118 <- rdU pos (-2)
+          t119 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t129 <- rdU normal (-3)
-          t130 <- rdU normal (-2)
-          t131 <- rdU normal (-1)
+          t120 <- rdU normal (-3)
+          t121 <- rdU normal (-2)
+          t122 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t132 <- rdU axis (-3)
-          t133 <- rdU axis (-2)
-          t134 <- rdU axis (-1)
-          let !s135 = ((t130 * t134) - (t131 * t133))
-          let !s136 = ((t131 * t132) - (t129 * t134))
-          let !s137 = ((t129 * t133) - (t130 * t132))
+          t123 <- rdU axis (-3)
+          t124 <- rdU axis (-2)
+          t125 <- rdU axis (-1)
+          let !s126 = ((t121 * t125) - (t122 * t124))
+          let !s127 = ((t122 * t123) - (t120 * t125))
+          let !s128 = ((t120 * t124) - (t121 * t123))
           chkI scalars 0 (-6) (-1)
-          t138 <- rdU scalars (-6)
-          t139 <- rdU scalars (-1)
-          t140 <- rdU scalars (-4)
-          t141 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t106)) + 8) (negate ((negate t130) * t129))
-          wrU contacts ((30 * (truncate t106)) + 9) ((-1.0) + (negate ((negate t130) * t130)))
-          wrU contacts ((30 * (truncate t106)) + 10) (negate ((negate t130) * t131))
-          wrU contacts ((30 * (truncate t106)) + 11) (((t104 + (negate t128)) * t129) + ((negate (t102 + (negate t126))) * t131))
-          wrU contacts ((30 * (truncate t106)) + 16) (t113 + (negate (((t129 * t113) + (t131 * t124)) * t129)))
-          wrU contacts ((30 * (truncate t106)) + 17) (negate (((t129 * t113) + (t131 * t124)) * t130))
-          wrU contacts ((30 * (truncate t106)) + 18) (t124 + (negate (((t129 * t113) + (t131 * t124)) * t131)))
-          let !t142 = (t103 + (negate t127))
-          wrU contacts ((30 * (truncate t106)) + 19) ((((t142 * t124) * t129) + ((((t104 + (negate t128)) * t113) - ((t102 + (negate t126)) * t124)) * t130)) + ((negate (t142 * t113)) * t131))
+          t129 <- rdU scalars (-6)
+          t130 <- rdU scalars (-1)
+          t131 <- rdU scalars (-4)
+          t132 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t97)) + 8) (negate ((negate t121) * t120))
+          wrU contacts ((30 * (truncate t97)) + 9) ((-1.0) + (negate ((negate t121) * t121)))
+          wrU contacts ((30 * (truncate t97)) + 10) (negate ((negate t121) * t122))
+          wrU contacts ((30 * (truncate t97)) + 11) (((t95 + (negate t119)) * t120) + ((negate (t93 + (negate t117))) * t122))
+          wrU contacts ((30 * (truncate t97)) + 16) (t104 + (negate (((t120 * t104) + (t122 * t115)) * t120)))
+          wrU contacts ((30 * (truncate t97)) + 17) (negate (((t120 * t104) + (t122 * t115)) * t121))
+          wrU contacts ((30 * (truncate t97)) + 18) (t115 + (negate (((t120 * t104) + (t122 * t115)) * t122)))
+          let !t133 = (t94 + (negate t118))
+          wrU contacts ((30 * (truncate t97)) + 19) ((((t133 * t115) * t120) + ((((t95 + (negate t119)) * t104) - ((t93 + (negate t117)) * t115)) * t121)) + ((negate (t133 * t104)) * t122))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t106)) + 8) 0.0
-          wrU contacts ((30 * (truncate t106)) + 9) 0.0
-          wrU contacts ((30 * (truncate t106)) + 10) 0.0
-          wrU contacts ((30 * (truncate t106)) + 11) 0.0
-          wrU contacts ((30 * (truncate t106)) + 16) 0.0
-          wrU contacts ((30 * (truncate t106)) + 17) 0.0
-          wrU contacts ((30 * (truncate t106)) + 18) 0.0
-          wrU contacts ((30 * (truncate t106)) + 19) 0.0
+          wrU contacts ((30 * (truncate t97)) + 8) 0.0
+          wrU contacts ((30 * (truncate t97)) + 9) 0.0
+          wrU contacts ((30 * (truncate t97)) + 10) 0.0
+          wrU contacts ((30 * (truncate t97)) + 11) 0.0
+          wrU contacts ((30 * (truncate t97)) + 16) 0.0
+          wrU contacts ((30 * (truncate t97)) + 17) 0.0
+          wrU contacts ((30 * (truncate t97)) + 18) 0.0
+          wrU contacts ((30 * (truncate t97)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t143 <- rdU meta 6
-        wrU meta 6 (t143 + 1.0)
+        t134 <- rdU meta 6
+        wrU meta 6 (t134 + 1.0)
         pure ()
-      if (abs (t101 - t100)) > 0 then do
-        chkI verts ((12 * (truncate t101)) + (291 * i31)) 12 14
-        t144 <- rdU verts (((12 * (truncate t101)) + (291 * i31)) + 12)
-        t145 <- rdU verts (((12 * (truncate t101)) + (291 * i31)) + 13)
-        t146 <- rdU verts (((12 * (truncate t101)) + (291 * i31)) + 14)
-        let !s147 = (negate t145)
-        t148 <- rdU meta 2
-        t149 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t149) > 0 then 1.0 else t149)) - t148) - 0.5) > 0 then do
-          wrU meta 2 (t148 + 1.0)
-          t150 <- rdU pos (3 * i31)
-          t151 <- rdU pos ((3 * i31) + 1)
-          t152 <- rdU pos ((3 * i31) + 2)
-          t153 <- rdU normal (3 * i31)
-          t154 <- rdU normal ((3 * i31) + 1)
-          t155 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t156 <- rdU axis (3 * i31)
-          t157 <- rdU axis ((3 * i31) + 1)
-          t158 <- rdU axis ((3 * i31) + 2)
-          let !s159 = ((t154 * t158) - (t155 * t157))
-          let !s160 = ((t155 * t156) - (t153 * t158))
-          let !s161 = ((t153 * t157) - (t154 * t156))
-          chkI scalars (6 * i31) 0 0
-          t162 <- rdU scalars (6 * i31)
-          t163 <- rdU scalars ((6 * i31) + 5)
-          t164 <- rdU scalars ((6 * i31) + 2)
-          t165 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t148)) 0 29
-          wrU contacts (30 * (truncate t148)) d31
-          wrU contacts ((30 * (truncate t148)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t148)) + 2) d31
-          wrU contacts ((30 * (truncate t148)) + 3) 9.0
-          wrU contacts ((30 * (truncate t148)) + 4) (negate ((negate t154) * t153))
-          wrU contacts ((30 * (truncate t148)) + 5) ((-1.0) + (negate ((negate t154) * t154)))
-          wrU contacts ((30 * (truncate t148)) + 6) (negate ((negate t154) * t155))
-          wrU contacts ((30 * (truncate t148)) + 7) (((t146 + (negate t152)) * t153) + ((negate (t144 + (negate t150))) * t155))
-          wrU contacts ((30 * (truncate t148)) + 12) (t155 + (negate (((t153 * t155) + (t155 * (negate t153))) * t153)))
-          wrU contacts ((30 * (truncate t148)) + 13) (negate (((t153 * t155) + (t155 * (negate t153))) * t154))
-          let !t166 = (negate t153)
-          wrU contacts ((30 * (truncate t148)) + 14) (t166 + (negate (((t153 * t155) + (t155 * t166)) * t155)))
-          let !t167 = (t145 + (negate t151))
-          wrU contacts ((30 * (truncate t148)) + 15) ((((t167 * t166) * t153) + ((((t146 + (negate t152)) * t155) - ((t144 + (negate t150)) * t166)) * t154)) + ((negate (t167 * t155)) * t155))
-          wrU contacts ((30 * (truncate t148)) + 20) (negate s147)
-          wrU contacts ((30 * (truncate t148)) + 26) 1.0
-          wrU contacts ((30 * (truncate t148)) + 27) t144
-          wrU contacts ((30 * (truncate t148)) + 28) t145
-          wrU contacts ((30 * (truncate t148)) + 29) t146
+      if (abs (t92 - t91)) > 0 then do
+        chkI verts ((12 * (truncate t92)) + (291 * i29)) 12 14
+        t135 <- rdU verts (((12 * (truncate t92)) + (291 * i29)) + 12)
+        t136 <- rdU verts (((12 * (truncate t92)) + (291 * i29)) + 13)
+        t137 <- rdU verts (((12 * (truncate t92)) + (291 * i29)) + 14)
+        let !s138 = (negate t136)
+        t139 <- rdU meta 2
+        t140 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t140) > 0 then 1.0 else t140)) - t139) - 0.5) > 0 then do
+          wrU meta 2 (t139 + 1.0)
+          t141 <- rdU pos (3 * i29)
+          t142 <- rdU pos ((3 * i29) + 1)
+          t143 <- rdU pos ((3 * i29) + 2)
+          t144 <- rdU normal (3 * i29)
+          t145 <- rdU normal ((3 * i29) + 1)
+          t146 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t147 <- rdU axis (3 * i29)
+          t148 <- rdU axis ((3 * i29) + 1)
+          t149 <- rdU axis ((3 * i29) + 2)
+          let !s150 = ((t145 * t149) - (t146 * t148))
+          let !s151 = ((t146 * t147) - (t144 * t149))
+          let !s152 = ((t144 * t148) - (t145 * t147))
+          chkI scalars (6 * i29) 0 0
+          t153 <- rdU scalars (6 * i29)
+          t154 <- rdU scalars ((6 * i29) + 5)
+          t155 <- rdU scalars ((6 * i29) + 2)
+          t156 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t139)) 0 29
+          wrU contacts (30 * (truncate t139)) d29
+          wrU contacts ((30 * (truncate t139)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t139)) + 2) d29
+          wrU contacts ((30 * (truncate t139)) + 3) 9.0
+          wrU contacts ((30 * (truncate t139)) + 4) (negate ((negate t145) * t144))
+          wrU contacts ((30 * (truncate t139)) + 5) ((-1.0) + (negate ((negate t145) * t145)))
+          wrU contacts ((30 * (truncate t139)) + 6) (negate ((negate t145) * t146))
+          wrU contacts ((30 * (truncate t139)) + 7) (((t137 + (negate t143)) * t144) + ((negate (t135 + (negate t141))) * t146))
+          wrU contacts ((30 * (truncate t139)) + 12) (t146 + (negate (((t144 * t146) + (t146 * (negate t144))) * t144)))
+          wrU contacts ((30 * (truncate t139)) + 13) (negate (((t144 * t146) + (t146 * (negate t144))) * t145))
+          let !t157 = (negate t144)
+          wrU contacts ((30 * (truncate t139)) + 14) (t157 + (negate (((t144 * t146) + (t146 * t157)) * t146)))
+          let !t158 = (t136 + (negate t142))
+          wrU contacts ((30 * (truncate t139)) + 15) ((((t158 * t157) * t144) + ((((t137 + (negate t143)) * t146) - ((t135 + (negate t141)) * t157)) * t145)) + ((negate (t158 * t146)) * t146))
+          wrU contacts ((30 * (truncate t139)) + 20) (negate s138)
+          wrU contacts ((30 * (truncate t139)) + 26) 1.0
+          wrU contacts ((30 * (truncate t139)) + 27) t135
+          wrU contacts ((30 * (truncate t139)) + 28) t136
+          wrU contacts ((30 * (truncate t139)) + 29) t137
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t168 <- rdU pos (-3)
-            t169 <- rdU pos (-2)
-            t170 <- rdU pos (-1)
+            t159 <- rdU pos (-3)
+            t160 <- rdU pos (-2)
+            t161 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t171 <- rdU normal (-3)
-            t172 <- rdU normal (-2)
-            t173 <- rdU normal (-1)
+            t162 <- rdU normal (-3)
+            t163 <- rdU normal (-2)
+            t164 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t174 <- rdU axis (-3)
-            t175 <- rdU axis (-2)
-            t176 <- rdU axis (-1)
-            let !s177 = ((t172 * t176) - (t173 * t175))
-            let !s178 = ((t173 * t174) - (t171 * t176))
-            let !s179 = ((t171 * t175) - (t172 * t174))
+            t165 <- rdU axis (-3)
+            t166 <- rdU axis (-2)
+            t167 <- rdU axis (-1)
+            let !s168 = ((t163 * t167) - (t164 * t166))
+            let !s169 = ((t164 * t165) - (t162 * t167))
+            let !s170 = ((t162 * t166) - (t163 * t165))
             chkI scalars 0 (-6) (-1)
-            t180 <- rdU scalars (-6)
-            t181 <- rdU scalars (-1)
-            t182 <- rdU scalars (-4)
-            t183 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t148)) + 8) (negate ((negate t172) * t171))
-            wrU contacts ((30 * (truncate t148)) + 9) ((-1.0) + (negate ((negate t172) * t172)))
-            wrU contacts ((30 * (truncate t148)) + 10) (negate ((negate t172) * t173))
-            wrU contacts ((30 * (truncate t148)) + 11) (((t146 + (negate t170)) * t171) + ((negate (t144 + (negate t168))) * t173))
-            wrU contacts ((30 * (truncate t148)) + 16) (t155 + (negate (((t171 * t155) + (t173 * t166)) * t171)))
-            wrU contacts ((30 * (truncate t148)) + 17) (negate (((t171 * t155) + (t173 * t166)) * t172))
-            wrU contacts ((30 * (truncate t148)) + 18) (t166 + (negate (((t171 * t155) + (t173 * t166)) * t173)))
-            let !t184 = (t145 + (negate t169))
-            wrU contacts ((30 * (truncate t148)) + 19) ((((t184 * t166) * t171) + ((((t146 + (negate t170)) * t155) - ((t144 + (negate t168)) * t166)) * t172)) + ((negate (t184 * t155)) * t173))
+            t171 <- rdU scalars (-6)
+            t172 <- rdU scalars (-1)
+            t173 <- rdU scalars (-4)
+            t174 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t139)) + 8) (negate ((negate t163) * t162))
+            wrU contacts ((30 * (truncate t139)) + 9) ((-1.0) + (negate ((negate t163) * t163)))
+            wrU contacts ((30 * (truncate t139)) + 10) (negate ((negate t163) * t164))
+            wrU contacts ((30 * (truncate t139)) + 11) (((t137 + (negate t161)) * t162) + ((negate (t135 + (negate t159))) * t164))
+            wrU contacts ((30 * (truncate t139)) + 16) (t146 + (negate (((t162 * t146) + (t164 * t157)) * t162)))
+            wrU contacts ((30 * (truncate t139)) + 17) (negate (((t162 * t146) + (t164 * t157)) * t163))
+            wrU contacts ((30 * (truncate t139)) + 18) (t157 + (negate (((t162 * t146) + (t164 * t157)) * t164)))
+            let !t175 = (t136 + (negate t160))
+            wrU contacts ((30 * (truncate t139)) + 19) ((((t175 * t157) * t162) + ((((t137 + (negate t161)) * t146) - ((t135 + (negate t159)) * t157)) * t163)) + ((negate (t175 * t146)) * t164))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t148)) + 8) 0.0
-            wrU contacts ((30 * (truncate t148)) + 9) 0.0
-            wrU contacts ((30 * (truncate t148)) + 10) 0.0
-            wrU contacts ((30 * (truncate t148)) + 11) 0.0
-            wrU contacts ((30 * (truncate t148)) + 16) 0.0
-            wrU contacts ((30 * (truncate t148)) + 17) 0.0
-            wrU contacts ((30 * (truncate t148)) + 18) 0.0
-            wrU contacts ((30 * (truncate t148)) + 19) 0.0
+            wrU contacts ((30 * (truncate t139)) + 8) 0.0
+            wrU contacts ((30 * (truncate t139)) + 9) 0.0
+            wrU contacts ((30 * (truncate t139)) + 10) 0.0
+            wrU contacts ((30 * (truncate t139)) + 11) 0.0
+            wrU contacts ((30 * (truncate t139)) + 16) 0.0
+            wrU contacts ((30 * (truncate t139)) + 17) 0.0
+            wrU contacts ((30 * (truncate t139)) + 18) 0.0
+            wrU contacts ((30 * (truncate t139)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t185 <- rdU meta 6
-          wrU meta 6 (t185 + 1.0)
+          t176 <- rdU meta 6
+          wrU meta 6 (t176 + 1.0)
           pure ()
         pure ()
       else do
@@ -471,133 +472,133 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    chkI verts (291 * i31) 0 2
-    t186 <- rdU verts (291 * i31)
-    t187 <- rdU verts ((291 * i31) + 1)
-    t188 <- rdU verts ((291 * i31) + 2)
-    v189 <- newR 1.0
-    loopI 0.0 24.0 $ \i190 -> do
-      let !d190 = fromIntegral i190 :: Double
-      chkI verts ((12 * i190) + (291 * i31)) 12 14
-      t191 <- rdU verts (((12 * i190) + (291 * i31)) + 12)
-      t192 <- rdU verts (((12 * i190) + (291 * i31)) + 13)
-      t193 <- rdU verts (((12 * i190) + (291 * i31)) + 14)
-      chkI radii (i190 + (24 * i31)) 0 0
-      t194 <- rdU radii (i190 + (24 * i31))
-      t195 <- getR v189
-      let !t196 = (t191 + (negate t186))
-      let !t197 = (t192 + (negate t187))
-      let !t198 = (t193 + (negate t188))
-      let !t199 = (if t194 > 0 then ((sqrt (((t196 * t196) + (t197 * t197)) + (t198 * t198))) / t194) else 1.0)
-      setR v189 (if (t195 - t199) > 0 then t199 else t195)
+    chkI verts (291 * i29) 0 2
+    t177 <- rdU verts (291 * i29)
+    t178 <- rdU verts ((291 * i29) + 1)
+    t179 <- rdU verts ((291 * i29) + 2)
+    wrU locals 9 1.0
+    loopI 0.0 24.0 $ \i180 -> do
+      let !d180 = fromIntegral i180 :: Double
+      chkI verts ((12 * i180) + (291 * i29)) 12 14
+      t181 <- rdU verts (((12 * i180) + (291 * i29)) + 12)
+      t182 <- rdU verts (((12 * i180) + (291 * i29)) + 13)
+      t183 <- rdU verts (((12 * i180) + (291 * i29)) + 14)
+      chkI radii (i180 + (24 * i29)) 0 0
+      t184 <- rdU radii (i180 + (24 * i29))
+      t185 <- rdU locals 9
+      let !t186 = (t181 + (negate t177))
+      let !t187 = (t182 + (negate t178))
+      let !t188 = (t183 + (negate t179))
+      let !t189 = (if t184 > 0 then ((sqrt (((t186 * t186) + (t187 * t187)) + (t188 * t188))) / t184) else 1.0)
+      wrU locals 9 (if (t185 - t189) > 0 then t189 else t185)
       pure ()
-    t200 <- getR v189
-    if (0.8 - t200) > 0 then do
-      v201 <- newR 0.0
-      v202 <- newR 0.0
-      v203 <- newR 0.0
-      v204 <- newR 0.0
-      v205 <- newR 0.0
-      v206 <- newR 0.0
-      v207 <- newR 0.0
-      loopI 0.0 24.0 $ \i208 -> do
-        let !d208 = fromIntegral i208 :: Double
-        chkI radii (i208 + (24 * i31)) 0 0
-        t209 <- rdU radii (i208 + (24 * i31))
-        loopI 6.0 12.0 $ \i210 -> do
-          let !d210 = fromIntegral i210 :: Double
-          let !t211 = (d208 + d210)
-          chkI radii (truncate ((24.0 * d31) + (t211 - (24.0 * (floorF (t211 / 24.0)))))) 0 0
-          t212 <- rdU radii (truncate ((24.0 * d31) + (t211 - (24.0 * (floorF (t211 / 24.0))))))
-          loopI 1.0 4.0 $ \i213 -> do
-            let !d213 = fromIntegral i213 :: Double
-            chkI verts ((12 * i208) + (3 * i213) + (291 * i31)) 0 5
-            t214 <- rdU verts ((12 * i208) + (3 * i213) + (291 * i31))
-            t215 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 1)
-            t216 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 2)
-            t217 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 3)
-            t218 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 4)
-            t219 <- rdU verts (((12 * i208) + (3 * i213) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i220 -> do
-              let !d220 = fromIntegral i220 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0)))) 0 0
-              t221 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 1.0)) 0 0
-              t222 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 2.0)) 0 0
-              t223 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + (d220 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220))) 0 0
-              t224 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 1.0)) 0 0
-              t225 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 2.0)) 0 0
-              t226 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)) + d220)) + 2.0))
-              t227 <- getR v201
-              let !t228 = (negate t221)
-              let !t229 = (t224 + t228)
-              let !t230 = (negate t222)
-              let !t231 = (t225 + t230)
-              let !t232 = (negate t223)
-              let !t233 = (t226 + t232)
-              let !t234 = (((t229 * t229) + (t231 * t231)) + (t233 * t233))
-              let !t235 = (t217 + (negate t214))
-              let !t236 = (t218 + (negate t215))
-              let !t237 = (t219 + (negate t216))
-              let !t238 = (((t235 * t229) + (t236 * t231)) + (t237 * t233))
-              let !t239 = (((t235 * t235) + (t236 * t236)) + (t237 * t237))
-              let !t240 = ((t239 * t234) - (t238 * t238))
-              let !t241 = (t214 + t228)
-              let !t242 = (t215 + t230)
-              let !t243 = (t216 + t232)
-              let !t244 = (((t229 * t241) + (t231 * t242)) + (t233 * t243))
-              let !t245 = (((t235 * t241) + (t236 * t242)) + (t237 * t243))
-              let !t246 = (if ((abs t240) - 1.0e-300) > 0 then (((t238 * t244) - (t245 * t234)) / t240) else 0.0)
-              let !t247 = (if (t246 - 1.0) > 0 then 1.0 else t246)
-              let !t248 = (if (t240 - ((1.0e-12 * t239) * t234)) > 0 then (if (negate t247) > 0 then 0.0 else t247) else 0.0)
-              let !t249 = (if ((abs t234) - 1.0e-300) > 0 then (((t238 * t248) + t244) / t234) else 0.0)
-              let !t250 = ((abs t239) - 1.0e-300)
-              let !t251 = (if t250 > 0 then ((negate t245) / t239) else 0.0)
-              let !t252 = (if (t251 - 1.0) > 0 then 1.0 else t251)
-              let !t253 = (t249 - 1.0)
-              let !t254 = (if t250 > 0 then ((t238 - t245) / t239) else 0.0)
-              let !t255 = (if (t254 - 1.0) > 0 then 1.0 else t254)
-              let !t256 = (if (negate t249) > 0 then (if (negate t252) > 0 then 0.0 else t252) else (if t253 > 0 then (if (negate t255) > 0 then 0.0 else t255) else t248))
-              let !t257 = (if t253 > 0 then 1.0 else t249)
-              let !t258 = (if (negate t257) > 0 then 0.0 else t257)
-              let !t259 = ((0.5 * ((t209 - ((t209 * (d213 + t256)) / 4.0)) + (t212 - ((t212 * (d220 + t258)) / 4.0)))) - t227)
-              let !t260 = ((t214 + (t256 * t235)) + (negate (t221 + (t258 * t229))))
-              let !t261 = ((t215 + (t256 * t236)) + (negate (t222 + (t258 * t231))))
-              let !t262 = ((t216 + (t256 * t237)) + (negate (t223 + (t258 * t233))))
-              let !t263 = ((0.3 * ((if (t212 - t209) > 0 then t209 else t212) / 4.0)) - (sqrt (((t260 * t260) + (t261 * t261)) + (t262 * t262))))
-              if (if (t259 - t263) > 0 then t263 else t259) > 0 then do
-                setR v201 (0.5 * ((t209 - ((t209 * (d213 + t256)) / 4.0)) + (t212 - ((t212 * (d220 + t258)) / 4.0))))
-                chkI verts ((12 * i208) + (291 * i31)) 3 5
-                t264 <- rdU verts (((12 * i208) + (291 * i31)) + 3)
-                t265 <- rdU verts (((12 * i208) + (291 * i31)) + 4)
-                t266 <- rdU verts (((12 * i208) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0)))) 0 0
-                t267 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t268 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t269 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t211 - (24.0 * (floorF (t211 / 24.0)))) * 4.0))) + 2.0))
-                setR v202 (t214 + (t256 * t235))
-                setR v203 (t215 + (t256 * t236))
-                setR v204 (t216 + (t256 * t237))
-                let !t270 = (negate t186)
-                let !t271 = (t264 + t270)
-                let !t272 = (negate t187)
-                let !t273 = (t265 + t272)
-                let !t274 = (negate t188)
-                let !t275 = (t266 + t274)
-                let !t276 = (sqrt (((t271 * t271) + (t273 * t273)) + (t275 * t275)))
-                let !t277 = (t267 + t270)
-                let !t278 = (t268 + t272)
-                let !t279 = (t269 + t274)
-                let !t280 = (sqrt (((t277 * t277) + (t278 * t278)) + (t279 * t279)))
-                setR v205 (negate (((if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0) * t271) + ((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t277)))
-                setR v206 (negate (((if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0) * t273) + ((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t278)))
-                setR v207 (negate (((if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0) * t275) + ((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t279)))
+    t190 <- rdU locals 9
+    if (0.8 - t190) > 0 then do
+      wrU locals 10 0.0
+      wrU locals 11 0.0
+      wrU locals 12 0.0
+      wrU locals 13 0.0
+      wrU locals 14 0.0
+      wrU locals 15 0.0
+      wrU locals 16 0.0
+      loopI 0.0 24.0 $ \i191 -> do
+        let !d191 = fromIntegral i191 :: Double
+        chkI radii (i191 + (24 * i29)) 0 0
+        t192 <- rdU radii (i191 + (24 * i29))
+        loopI 6.0 12.0 $ \i193 -> do
+          let !d193 = fromIntegral i193 :: Double
+          let !t194 = (d191 + d193)
+          chkI radii (truncate ((24.0 * d29) + (t194 - (24.0 * (floorF (t194 / 24.0)))))) 0 0
+          t195 <- rdU radii (truncate ((24.0 * d29) + (t194 - (24.0 * (floorF (t194 / 24.0))))))
+          loopI 1.0 4.0 $ \i196 -> do
+            let !d196 = fromIntegral i196 :: Double
+            chkI verts ((12 * i191) + (3 * i196) + (291 * i29)) 0 5
+            t197 <- rdU verts ((12 * i191) + (3 * i196) + (291 * i29))
+            t198 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 1)
+            t199 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 2)
+            t200 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 3)
+            t201 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 4)
+            t202 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i203 -> do
+              let !d203 = fromIntegral i203 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0)))) 0 0
+              t204 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 1.0)) 0 0
+              t205 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 2.0)) 0 0
+              t206 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203))) 0 0
+              t207 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 1.0)) 0 0
+              t208 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 2.0)) 0 0
+              t209 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 2.0))
+              t210 <- rdU locals 10
+              let !t211 = (negate t204)
+              let !t212 = (t207 + t211)
+              let !t213 = (negate t205)
+              let !t214 = (t208 + t213)
+              let !t215 = (negate t206)
+              let !t216 = (t209 + t215)
+              let !t217 = (((t212 * t212) + (t214 * t214)) + (t216 * t216))
+              let !t218 = (t200 + (negate t197))
+              let !t219 = (t201 + (negate t198))
+              let !t220 = (t202 + (negate t199))
+              let !t221 = (((t218 * t212) + (t219 * t214)) + (t220 * t216))
+              let !t222 = (((t218 * t218) + (t219 * t219)) + (t220 * t220))
+              let !t223 = ((t222 * t217) - (t221 * t221))
+              let !t224 = (t197 + t211)
+              let !t225 = (t198 + t213)
+              let !t226 = (t199 + t215)
+              let !t227 = (((t212 * t224) + (t214 * t225)) + (t216 * t226))
+              let !t228 = (((t218 * t224) + (t219 * t225)) + (t220 * t226))
+              let !t229 = (if ((abs t223) - 1.0e-300) > 0 then (((t221 * t227) - (t228 * t217)) / t223) else 0.0)
+              let !t230 = (if (t229 - 1.0) > 0 then 1.0 else t229)
+              let !t231 = (if (t223 - ((1.0e-12 * t222) * t217)) > 0 then (if (negate t230) > 0 then 0.0 else t230) else 0.0)
+              let !t232 = (if ((abs t217) - 1.0e-300) > 0 then (((t221 * t231) + t227) / t217) else 0.0)
+              let !t233 = ((abs t222) - 1.0e-300)
+              let !t234 = (if t233 > 0 then ((negate t228) / t222) else 0.0)
+              let !t235 = (if (t234 - 1.0) > 0 then 1.0 else t234)
+              let !t236 = (t232 - 1.0)
+              let !t237 = (if t233 > 0 then ((t221 - t228) / t222) else 0.0)
+              let !t238 = (if (t237 - 1.0) > 0 then 1.0 else t237)
+              let !t239 = (if (negate t232) > 0 then (if (negate t235) > 0 then 0.0 else t235) else (if t236 > 0 then (if (negate t238) > 0 then 0.0 else t238) else t231))
+              let !t240 = (if t236 > 0 then 1.0 else t232)
+              let !t241 = (if (negate t240) > 0 then 0.0 else t240)
+              let !t242 = ((0.5 * ((t192 - ((t192 * (d196 + t239)) / 4.0)) + (t195 - ((t195 * (d203 + t241)) / 4.0)))) - t210)
+              let !t243 = ((t197 + (t239 * t218)) + (negate (t204 + (t241 * t212))))
+              let !t244 = ((t198 + (t239 * t219)) + (negate (t205 + (t241 * t214))))
+              let !t245 = ((t199 + (t239 * t220)) + (negate (t206 + (t241 * t216))))
+              let !t246 = ((0.3 * ((if (t195 - t192) > 0 then t192 else t195) / 4.0)) - (sqrt (((t243 * t243) + (t244 * t244)) + (t245 * t245))))
+              if (if (t242 - t246) > 0 then t246 else t242) > 0 then do
+                wrU locals 10 (0.5 * ((t192 - ((t192 * (d196 + t239)) / 4.0)) + (t195 - ((t195 * (d203 + t241)) / 4.0))))
+                chkI verts ((12 * i191) + (291 * i29)) 3 5
+                t247 <- rdU verts (((12 * i191) + (291 * i29)) + 3)
+                t248 <- rdU verts (((12 * i191) + (291 * i29)) + 4)
+                t249 <- rdU verts (((12 * i191) + (291 * i29)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)))) 0 0
+                t250 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t251 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t252 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 11 (t197 + (t239 * t218))
+                wrU locals 12 (t198 + (t239 * t219))
+                wrU locals 13 (t199 + (t239 * t220))
+                let !t253 = (negate t177)
+                let !t254 = (t247 + t253)
+                let !t255 = (negate t178)
+                let !t256 = (t248 + t255)
+                let !t257 = (negate t179)
+                let !t258 = (t249 + t257)
+                let !t259 = (sqrt (((t254 * t254) + (t256 * t256)) + (t258 * t258)))
+                let !t260 = (t250 + t253)
+                let !t261 = (t251 + t255)
+                let !t262 = (t252 + t257)
+                let !t263 = (sqrt (((t260 * t260) + (t261 * t261)) + (t262 * t262)))
+                wrU locals 14 (negate (((if t259 > 0 then (recip (if (t259 - 1.0e-300) > 0 then t259 else 1.0e-300)) else 0.0) * t254) + ((if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0) * t260)))
+                wrU locals 15 (negate (((if t259 > 0 then (recip (if (t259 - 1.0e-300) > 0 then t259 else 1.0e-300)) else 0.0) * t256) + ((if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0) * t261)))
+                wrU locals 16 (negate (((if t259 > 0 then (recip (if (t259 - 1.0e-300) > 0 then t259 else 1.0e-300)) else 0.0) * t258) + ((if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0) * t262)))
                 pure ()
               else do
                 pure ()
@@ -605,123 +606,123 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t281 <- getR v201
-      if t281 > 0 then do
-        t282 <- getR v202
-        t283 <- getR v203
-        t284 <- getR v204
-        t285 <- getR v205
-        t286 <- getR v206
-        t287 <- getR v207
-        let !t288 = (recip (2.0 * (sqrt (((t282 * t282) + (t283 * t283)) + (t284 * t284)))))
-        let !t289 = (t288 * (t282 + t282))
-        let !t290 = (t288 * (t283 + t283))
-        let !t291 = (t288 * (t284 + t284))
-        let !t292 = (sqrt (((t289 * t289) + (t290 * t290)) + (t291 * t291)))
-        let !t293 = (if t292 > 0 then (recip (if (t292 - 1.0e-300) > 0 then t292 else 1.0e-300)) else 0.0)
-        let !s294 = (t293 * t289)
-        let !s295 = (t293 * t290)
-        let !s296 = (t293 * t291)
-        let !t297 = (((s294 * t285) + (s295 * t286)) + (s296 * t287))
-        let !t298 = (t285 + (negate (t297 * s294)))
-        let !t299 = (t286 + (negate (t297 * s295)))
-        let !t300 = (t287 + (negate (t297 * s296)))
-        let !t301 = (sqrt (((t298 * t298) + (t299 * t299)) + (t300 * t300)))
-        let !t302 = (if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0)
-        let !s303 = (t302 * t298)
-        let !s304 = (t302 * t299)
-        let !s305 = (t302 * t300)
-        t306 <- rdU meta 2
-        t307 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t307) > 0 then 1.0 else t307)) - t306) - 0.5) > 0 then do
-          wrU meta 2 (t306 + 1.0)
-          t308 <- rdU pos (3 * i31)
-          t309 <- rdU pos ((3 * i31) + 1)
-          t310 <- rdU pos ((3 * i31) + 2)
-          t311 <- rdU normal (3 * i31)
-          t312 <- rdU normal ((3 * i31) + 1)
-          t313 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t314 <- rdU axis (3 * i31)
-          t315 <- rdU axis ((3 * i31) + 1)
-          t316 <- rdU axis ((3 * i31) + 2)
-          let !s317 = ((t312 * t316) - (t313 * t315))
-          let !s318 = ((t313 * t314) - (t311 * t316))
-          let !s319 = ((t311 * t315) - (t312 * t314))
-          chkI scalars (6 * i31) 0 0
-          t320 <- rdU scalars (6 * i31)
-          t321 <- rdU scalars ((6 * i31) + 5)
-          t322 <- rdU scalars ((6 * i31) + 2)
-          t323 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t306)) 0 29
-          wrU contacts (30 * (truncate t306)) d31
-          wrU contacts ((30 * (truncate t306)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t306)) + 2) d31
-          wrU contacts ((30 * (truncate t306)) + 3) 12.0
-          wrU contacts ((30 * (truncate t306)) + 4) (s303 + (negate ((((t311 * s303) + (t312 * s304)) + (t313 * s305)) * t311)))
-          wrU contacts ((30 * (truncate t306)) + 5) (s304 + (negate ((((t311 * s303) + (t312 * s304)) + (t313 * s305)) * t312)))
-          wrU contacts ((30 * (truncate t306)) + 6) (s305 + (negate ((((t311 * s303) + (t312 * s304)) + (t313 * s305)) * t313)))
-          wrU contacts ((30 * (truncate t306)) + 7) 0.0
-          wrU contacts ((30 * (truncate t306)) + 12) 0.0
-          wrU contacts ((30 * (truncate t306)) + 13) 0.0
-          wrU contacts ((30 * (truncate t306)) + 14) 0.0
-          wrU contacts ((30 * (truncate t306)) + 15) 0.0
-          wrU contacts ((30 * (truncate t306)) + 20) t281
-          wrU contacts ((30 * (truncate t306)) + 26) 0.6
-          wrU contacts ((30 * (truncate t306)) + 27) t282
-          wrU contacts ((30 * (truncate t306)) + 28) t283
-          wrU contacts ((30 * (truncate t306)) + 29) t284
+      t264 <- rdU locals 10
+      if t264 > 0 then do
+        t265 <- rdU locals 11
+        t266 <- rdU locals 12
+        t267 <- rdU locals 13
+        t268 <- rdU locals 14
+        t269 <- rdU locals 15
+        t270 <- rdU locals 16
+        let !t271 = (recip (2.0 * (sqrt (((t265 * t265) + (t266 * t266)) + (t267 * t267)))))
+        let !t272 = (t271 * (t265 + t265))
+        let !t273 = (t271 * (t266 + t266))
+        let !t274 = (t271 * (t267 + t267))
+        let !t275 = (sqrt (((t272 * t272) + (t273 * t273)) + (t274 * t274)))
+        let !t276 = (if t275 > 0 then (recip (if (t275 - 1.0e-300) > 0 then t275 else 1.0e-300)) else 0.0)
+        let !s277 = (t276 * t272)
+        let !s278 = (t276 * t273)
+        let !s279 = (t276 * t274)
+        let !t280 = (((s277 * t268) + (s278 * t269)) + (s279 * t270))
+        let !t281 = (t268 + (negate (t280 * s277)))
+        let !t282 = (t269 + (negate (t280 * s278)))
+        let !t283 = (t270 + (negate (t280 * s279)))
+        let !t284 = (sqrt (((t281 * t281) + (t282 * t282)) + (t283 * t283)))
+        let !t285 = (if t284 > 0 then (recip (if (t284 - 1.0e-300) > 0 then t284 else 1.0e-300)) else 0.0)
+        let !s286 = (t285 * t281)
+        let !s287 = (t285 * t282)
+        let !s288 = (t285 * t283)
+        t289 <- rdU meta 2
+        t290 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t290) > 0 then 1.0 else t290)) - t289) - 0.5) > 0 then do
+          wrU meta 2 (t289 + 1.0)
+          t291 <- rdU pos (3 * i29)
+          t292 <- rdU pos ((3 * i29) + 1)
+          t293 <- rdU pos ((3 * i29) + 2)
+          t294 <- rdU normal (3 * i29)
+          t295 <- rdU normal ((3 * i29) + 1)
+          t296 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t297 <- rdU axis (3 * i29)
+          t298 <- rdU axis ((3 * i29) + 1)
+          t299 <- rdU axis ((3 * i29) + 2)
+          let !s300 = ((t295 * t299) - (t296 * t298))
+          let !s301 = ((t296 * t297) - (t294 * t299))
+          let !s302 = ((t294 * t298) - (t295 * t297))
+          chkI scalars (6 * i29) 0 0
+          t303 <- rdU scalars (6 * i29)
+          t304 <- rdU scalars ((6 * i29) + 5)
+          t305 <- rdU scalars ((6 * i29) + 2)
+          t306 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t289)) 0 29
+          wrU contacts (30 * (truncate t289)) d29
+          wrU contacts ((30 * (truncate t289)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t289)) + 2) d29
+          wrU contacts ((30 * (truncate t289)) + 3) 12.0
+          wrU contacts ((30 * (truncate t289)) + 4) (s286 + (negate ((((t294 * s286) + (t295 * s287)) + (t296 * s288)) * t294)))
+          wrU contacts ((30 * (truncate t289)) + 5) (s287 + (negate ((((t294 * s286) + (t295 * s287)) + (t296 * s288)) * t295)))
+          wrU contacts ((30 * (truncate t289)) + 6) (s288 + (negate ((((t294 * s286) + (t295 * s287)) + (t296 * s288)) * t296)))
+          wrU contacts ((30 * (truncate t289)) + 7) 0.0
+          wrU contacts ((30 * (truncate t289)) + 12) 0.0
+          wrU contacts ((30 * (truncate t289)) + 13) 0.0
+          wrU contacts ((30 * (truncate t289)) + 14) 0.0
+          wrU contacts ((30 * (truncate t289)) + 15) 0.0
+          wrU contacts ((30 * (truncate t289)) + 20) t264
+          wrU contacts ((30 * (truncate t289)) + 26) 0.6
+          wrU contacts ((30 * (truncate t289)) + 27) t265
+          wrU contacts ((30 * (truncate t289)) + 28) t266
+          wrU contacts ((30 * (truncate t289)) + 29) t267
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t324 <- rdU pos (-3)
-            t325 <- rdU pos (-2)
-            t326 <- rdU pos (-1)
+            t307 <- rdU pos (-3)
+            t308 <- rdU pos (-2)
+            t309 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t327 <- rdU normal (-3)
-            t328 <- rdU normal (-2)
-            t329 <- rdU normal (-1)
+            t310 <- rdU normal (-3)
+            t311 <- rdU normal (-2)
+            t312 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t330 <- rdU axis (-3)
-            t331 <- rdU axis (-2)
-            t332 <- rdU axis (-1)
-            let !s333 = ((t328 * t332) - (t329 * t331))
-            let !s334 = ((t329 * t330) - (t327 * t332))
-            let !s335 = ((t327 * t331) - (t328 * t330))
+            t313 <- rdU axis (-3)
+            t314 <- rdU axis (-2)
+            t315 <- rdU axis (-1)
+            let !s316 = ((t311 * t315) - (t312 * t314))
+            let !s317 = ((t312 * t313) - (t310 * t315))
+            let !s318 = ((t310 * t314) - (t311 * t313))
             chkI scalars 0 (-6) (-1)
-            t336 <- rdU scalars (-6)
-            t337 <- rdU scalars (-1)
-            t338 <- rdU scalars (-4)
-            t339 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t306)) + 8) (s303 + (negate ((((t327 * s303) + (t328 * s304)) + (t329 * s305)) * t327)))
-            wrU contacts ((30 * (truncate t306)) + 9) (s304 + (negate ((((t327 * s303) + (t328 * s304)) + (t329 * s305)) * t328)))
-            wrU contacts ((30 * (truncate t306)) + 10) (s305 + (negate ((((t327 * s303) + (t328 * s304)) + (t329 * s305)) * t329)))
-            let !t340 = (t283 + (negate t325))
-            let !t341 = (t284 + (negate t326))
-            let !t342 = (t282 + (negate t324))
-            wrU contacts ((30 * (truncate t306)) + 11) (((((t340 * s305) - (t341 * s304)) * t327) + (((t341 * s303) - (t342 * s305)) * t328)) + (((t342 * s304) - (t340 * s303)) * t329))
-            let !t343 = ((t312 * s305) - (t313 * s304))
-            wrU contacts ((30 * (truncate t306)) + 16) (t343 + (negate ((((t327 * t343) + (t328 * ((t313 * s303) - (t311 * s305)))) + (t329 * ((t311 * s304) - (t312 * s303)))) * t327)))
-            let !t344 = ((t313 * s303) - (t311 * s305))
-            wrU contacts ((30 * (truncate t306)) + 17) (t344 + (negate ((((t327 * t343) + (t328 * t344)) + (t329 * ((t311 * s304) - (t312 * s303)))) * t328)))
-            let !t345 = ((t311 * s304) - (t312 * s303))
-            wrU contacts ((30 * (truncate t306)) + 18) (t345 + (negate ((((t327 * t343) + (t328 * t344)) + (t329 * t345)) * t329)))
-            wrU contacts ((30 * (truncate t306)) + 19) (((((t340 * t345) - (t341 * t344)) * t327) + (((t341 * t343) - (t342 * t345)) * t328)) + (((t342 * t344) - (t340 * t343)) * t329))
+            t319 <- rdU scalars (-6)
+            t320 <- rdU scalars (-1)
+            t321 <- rdU scalars (-4)
+            t322 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t289)) + 8) (s286 + (negate ((((t310 * s286) + (t311 * s287)) + (t312 * s288)) * t310)))
+            wrU contacts ((30 * (truncate t289)) + 9) (s287 + (negate ((((t310 * s286) + (t311 * s287)) + (t312 * s288)) * t311)))
+            wrU contacts ((30 * (truncate t289)) + 10) (s288 + (negate ((((t310 * s286) + (t311 * s287)) + (t312 * s288)) * t312)))
+            let !t323 = (t266 + (negate t308))
+            let !t324 = (t267 + (negate t309))
+            let !t325 = (t265 + (negate t307))
+            wrU contacts ((30 * (truncate t289)) + 11) (((((t323 * s288) - (t324 * s287)) * t310) + (((t324 * s286) - (t325 * s288)) * t311)) + (((t325 * s287) - (t323 * s286)) * t312))
+            let !t326 = ((t295 * s288) - (t296 * s287))
+            wrU contacts ((30 * (truncate t289)) + 16) (t326 + (negate ((((t310 * t326) + (t311 * ((t296 * s286) - (t294 * s288)))) + (t312 * ((t294 * s287) - (t295 * s286)))) * t310)))
+            let !t327 = ((t296 * s286) - (t294 * s288))
+            wrU contacts ((30 * (truncate t289)) + 17) (t327 + (negate ((((t310 * t326) + (t311 * t327)) + (t312 * ((t294 * s287) - (t295 * s286)))) * t311)))
+            let !t328 = ((t294 * s287) - (t295 * s286))
+            wrU contacts ((30 * (truncate t289)) + 18) (t328 + (negate ((((t310 * t326) + (t311 * t327)) + (t312 * t328)) * t312)))
+            wrU contacts ((30 * (truncate t289)) + 19) (((((t323 * t328) - (t324 * t327)) * t310) + (((t324 * t326) - (t325 * t328)) * t311)) + (((t325 * t327) - (t323 * t326)) * t312))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t306)) + 8) 0.0
-            wrU contacts ((30 * (truncate t306)) + 9) 0.0
-            wrU contacts ((30 * (truncate t306)) + 10) 0.0
-            wrU contacts ((30 * (truncate t306)) + 11) 0.0
-            wrU contacts ((30 * (truncate t306)) + 16) 0.0
-            wrU contacts ((30 * (truncate t306)) + 17) 0.0
-            wrU contacts ((30 * (truncate t306)) + 18) 0.0
-            wrU contacts ((30 * (truncate t306)) + 19) 0.0
+            wrU contacts ((30 * (truncate t289)) + 8) 0.0
+            wrU contacts ((30 * (truncate t289)) + 9) 0.0
+            wrU contacts ((30 * (truncate t289)) + 10) 0.0
+            wrU contacts ((30 * (truncate t289)) + 11) 0.0
+            wrU contacts ((30 * (truncate t289)) + 16) 0.0
+            wrU contacts ((30 * (truncate t289)) + 17) 0.0
+            wrU contacts ((30 * (truncate t289)) + 18) 0.0
+            wrU contacts ((30 * (truncate t289)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t346 <- rdU meta 6
-          wrU meta 6 (t346 + 1.0)
+          t329 <- rdU meta 6
+          wrU meta 6 (t329 + 1.0)
           pure ()
         pure ()
       else do
@@ -732,8 +733,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -772,926 +774,926 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (t120 + (t138 * ((t141 * t126) + (t142 * s129))))
-      let !t144 = (t121 + (t138 * ((t141 * t127) + (t142 * s130))))
-      let !t145 = (t122 + (t138 * ((t141 * t128) + (t142 * s131))))
-      let !t146 = (sqrt (((t143 * t143) + (t144 * t144)) + (t145 * t145)))
-      let !t147 = (t146 - 1.0)
-      let !t148 = (recip (2.0 * t146))
-      let !t149 = (recip (2.0 * (sqrt (((t120 * t120) + (t121 * t121)) + (t122 * t122)))))
-      let !t150 = (t149 * (t120 + t120))
-      let !t151 = (t149 * (t121 + t121))
-      let !t152 = (t149 * (t122 + t122))
-      let !t153 = (sqrt (((t150 * t150) + (t151 * t151)) + (t152 * t152)))
-      let !t154 = (if t153 > 0 then (recip (if (t153 - 1.0e-300) > 0 then t153 else 1.0e-300)) else 0.0)
-      let !t155 = (t154 * t150)
-      let !t156 = (t154 * t151)
-      let !t157 = (t154 * t152)
-      let !t158 = ((((t148 * (t143 + t143)) * t155) + ((t148 * (t144 + t144)) * t156)) + ((t148 * (t145 + t145)) * t157))
-      let !t159 = (if ((abs t147) - 1.0e-10) > 0 then (if (abs t158) > 0 then 1.0 else 0.0) else 0.0)
-      let !t160 = (if t159 > 0 then (t143 + (negate ((t147 / t158) * t155))) else t143)
-      let !t161 = (if t159 > 0 then (t144 + (negate ((t147 / t158) * t156))) else t144)
-      let !t162 = (if t159 > 0 then (t145 + (negate ((t147 / t158) * t157))) else t145)
-      let !t163 = (sqrt (((t160 * t160) + (t161 * t161)) + (t162 * t162)))
-      let !t164 = (t163 - 1.0)
-      let !t165 = (recip (2.0 * t163))
-      let !t166 = ((((t165 * (t160 + t160)) * t155) + ((t165 * (t161 + t161)) * t156)) + ((t165 * (t162 + t162)) * t157))
-      let !t167 = (if ((abs t164) - 1.0e-10) > 0 then (if (abs t166) > 0 then 1.0 else 0.0) else 0.0)
-      let !t168 = (if t167 > 0 then (t160 + (negate ((t164 / t166) * t155))) else t160)
-      let !t169 = (if t167 > 0 then (t161 + (negate ((t164 / t166) * t156))) else t161)
-      let !t170 = (if t167 > 0 then (t162 + (negate ((t164 / t166) * t157))) else t162)
-      let !t171 = (sqrt (((t168 * t168) + (t169 * t169)) + (t170 * t170)))
-      let !t172 = (t171 - 1.0)
-      let !t173 = (recip (2.0 * t171))
-      let !t174 = ((((t173 * (t168 + t168)) * t155) + ((t173 * (t169 + t169)) * t156)) + ((t173 * (t170 + t170)) * t157))
-      let !t175 = (if ((abs t172) - 1.0e-10) > 0 then (if (abs t174) > 0 then 1.0 else 0.0) else 0.0)
-      let !t176 = (1.0 - t139)
-      let !s177 = ((t139 * (if t175 > 0 then (t168 + (negate ((t172 / t174) * t155))) else t168)) + (t176 * t120))
-      let !s178 = ((t139 * (if t175 > 0 then (t169 + (negate ((t172 / t174) * t156))) else t169)) + (t176 * t121))
-      let !s179 = ((t139 * (if t175 > 0 then (t170 + (negate ((t172 / t174) * t157))) else t170)) + (t176 * t122))
-      let !t180 = ((t141 * t126) + (t142 * s129))
-      let !t181 = ((t141 * t127) + (t142 * s130))
-      let !t182 = ((t141 * t128) + (t142 * s131))
-      let !t183 = (sqrt (((t180 * t180) + (t181 * t181)) + (t182 * t182)))
-      let !t184 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t185 = (t184 * ((if t175 > 0 then (t168 + (negate ((t172 / t174) * t155))) else t168) + (negate t120)))
-      let !t186 = (t173 * (t168 + t168))
-      let !t187 = (t173 * (t169 + t169))
-      let !t188 = (t173 * (t170 + t170))
-      let !t189 = (sqrt (((t186 * t186) + (t187 * t187)) + (t188 * t188)))
-      let !t190 = (if t189 > 0 then (recip (if (t189 - 1.0e-300) > 0 then t189 else 1.0e-300)) else 0.0)
-      let !t191 = (t190 * t186)
-      let !t192 = (t190 * t187)
-      let !t193 = (t184 * ((if t175 > 0 then (t169 + (negate ((t172 / t174) * t156))) else t169) + (negate t121)))
-      let !t194 = (t190 * t188)
-      let !t195 = (t184 * ((if t175 > 0 then (t170 + (negate ((t172 / t174) * t157))) else t170) + (negate t122)))
-      let !t196 = (((t191 * t185) + (t192 * t193)) + (t194 * t195))
-      let !t197 = (t185 + (negate (t196 * t191)))
-      let !t198 = (t193 + (negate (t196 * t192)))
-      let !t199 = (t195 + (negate (t196 * t194)))
-      let !t200 = (sqrt (((t197 * t197) + (t198 * t198)) + (t199 * t199)))
-      let !t201 = (if t200 > 0 then (recip (if (t200 - 1.0e-300) > 0 then t200 else 1.0e-300)) else 0.0)
-      let !s202 = ((t139 * (t183 * (t201 * t197))) + (t176 * t180))
-      let !s203 = ((t139 * (t183 * (t201 * t198))) + (t176 * t181))
-      let !s204 = ((t139 * (t183 * (t201 * t199))) + (t176 * t182))
-      let !t205 = (s177 + (t138 * s202))
-      let !t206 = (s178 + (t138 * s203))
-      let !t207 = (s179 + (t138 * s204))
-      let !t208 = (sqrt (((t205 * t205) + (t206 * t206)) + (t207 * t207)))
-      let !t209 = (t208 - 1.0)
-      let !t210 = (recip (2.0 * t208))
-      let !t211 = (recip (2.0 * (sqrt (((s177 * s177) + (s178 * s178)) + (s179 * s179)))))
-      let !t212 = (t211 * (s177 + s177))
-      let !t213 = (t211 * (s178 + s178))
-      let !t214 = (t211 * (s179 + s179))
-      let !t215 = (sqrt (((t212 * t212) + (t213 * t213)) + (t214 * t214)))
-      let !t216 = (if t215 > 0 then (recip (if (t215 - 1.0e-300) > 0 then t215 else 1.0e-300)) else 0.0)
-      let !t217 = (t216 * t212)
-      let !t218 = (t216 * t213)
-      let !t219 = (t216 * t214)
-      let !t220 = ((((t210 * (t205 + t205)) * t217) + ((t210 * (t206 + t206)) * t218)) + ((t210 * (t207 + t207)) * t219))
-      let !t221 = (if ((abs t209) - 1.0e-10) > 0 then (if (abs t220) > 0 then 1.0 else 0.0) else 0.0)
-      let !t222 = (if t221 > 0 then (t205 + (negate ((t209 / t220) * t217))) else t205)
-      let !t223 = (if t221 > 0 then (t206 + (negate ((t209 / t220) * t218))) else t206)
-      let !t224 = (if t221 > 0 then (t207 + (negate ((t209 / t220) * t219))) else t207)
-      let !t225 = (sqrt (((t222 * t222) + (t223 * t223)) + (t224 * t224)))
-      let !t226 = (t225 - 1.0)
-      let !t227 = (recip (2.0 * t225))
-      let !t228 = ((((t227 * (t222 + t222)) * t217) + ((t227 * (t223 + t223)) * t218)) + ((t227 * (t224 + t224)) * t219))
-      let !t229 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t228) > 0 then 1.0 else 0.0) else 0.0)
-      let !t230 = (if t229 > 0 then (t222 + (negate ((t226 / t228) * t217))) else t222)
-      let !t231 = (if t229 > 0 then (t223 + (negate ((t226 / t228) * t218))) else t223)
-      let !t232 = (if t229 > 0 then (t224 + (negate ((t226 / t228) * t219))) else t224)
-      let !t233 = (sqrt (((t230 * t230) + (t231 * t231)) + (t232 * t232)))
-      let !t234 = (t233 - 1.0)
-      let !t235 = (recip (2.0 * t233))
-      let !t236 = ((((t235 * (t230 + t230)) * t217) + ((t235 * (t231 + t231)) * t218)) + ((t235 * (t232 + t232)) * t219))
-      let !t237 = (if ((abs t234) - 1.0e-10) > 0 then (if (abs t236) > 0 then 1.0 else 0.0) else 0.0)
-      let !s238 = ((t139 * (if t237 > 0 then (t230 + (negate ((t234 / t236) * t217))) else t230)) + (t176 * s177))
-      let !s239 = ((t139 * (if t237 > 0 then (t231 + (negate ((t234 / t236) * t218))) else t231)) + (t176 * s178))
-      let !s240 = ((t139 * (if t237 > 0 then (t232 + (negate ((t234 / t236) * t219))) else t232)) + (t176 * s179))
-      let !t241 = (sqrt (((s202 * s202) + (s203 * s203)) + (s204 * s204)))
-      let !t242 = (t184 * ((if t237 > 0 then (t230 + (negate ((t234 / t236) * t217))) else t230) + (negate s177)))
-      let !t243 = (t235 * (t230 + t230))
-      let !t244 = (t235 * (t231 + t231))
-      let !t245 = (t235 * (t232 + t232))
-      let !t246 = (sqrt (((t243 * t243) + (t244 * t244)) + (t245 * t245)))
-      let !t247 = (if t246 > 0 then (recip (if (t246 - 1.0e-300) > 0 then t246 else 1.0e-300)) else 0.0)
-      let !t248 = (t247 * t243)
-      let !t249 = (t247 * t244)
-      let !t250 = (t184 * ((if t237 > 0 then (t231 + (negate ((t234 / t236) * t218))) else t231) + (negate s178)))
-      let !t251 = (t247 * t245)
-      let !t252 = (t184 * ((if t237 > 0 then (t232 + (negate ((t234 / t236) * t219))) else t232) + (negate s179)))
-      let !t253 = (((t248 * t242) + (t249 * t250)) + (t251 * t252))
-      let !t254 = (t242 + (negate (t253 * t248)))
-      let !t255 = (t250 + (negate (t253 * t249)))
-      let !t256 = (t252 + (negate (t253 * t251)))
-      let !t257 = (sqrt (((t254 * t254) + (t255 * t255)) + (t256 * t256)))
-      let !t258 = (if t257 > 0 then (recip (if (t257 - 1.0e-300) > 0 then t257 else 1.0e-300)) else 0.0)
-      let !s259 = ((t139 * (t241 * (t258 * t254))) + (t176 * s202))
-      let !s260 = ((t139 * (t241 * (t258 * t255))) + (t176 * s203))
-      let !s261 = ((t139 * (t241 * (t258 * t256))) + (t176 * s204))
-      let !t262 = (s238 + (t138 * s259))
-      let !t263 = (s239 + (t138 * s260))
-      let !t264 = (s240 + (t138 * s261))
-      let !t265 = (sqrt (((t262 * t262) + (t263 * t263)) + (t264 * t264)))
-      let !t266 = (t265 - 1.0)
-      let !t267 = (recip (2.0 * t265))
-      let !t268 = (recip (2.0 * (sqrt (((s238 * s238) + (s239 * s239)) + (s240 * s240)))))
-      let !t269 = (t268 * (s238 + s238))
-      let !t270 = (t268 * (s239 + s239))
-      let !t271 = (t268 * (s240 + s240))
-      let !t272 = (sqrt (((t269 * t269) + (t270 * t270)) + (t271 * t271)))
-      let !t273 = (if t272 > 0 then (recip (if (t272 - 1.0e-300) > 0 then t272 else 1.0e-300)) else 0.0)
-      let !t274 = (t273 * t269)
-      let !t275 = (t273 * t270)
-      let !t276 = (t273 * t271)
-      let !t277 = ((((t267 * (t262 + t262)) * t274) + ((t267 * (t263 + t263)) * t275)) + ((t267 * (t264 + t264)) * t276))
-      let !t278 = (if ((abs t266) - 1.0e-10) > 0 then (if (abs t277) > 0 then 1.0 else 0.0) else 0.0)
-      let !t279 = (if t278 > 0 then (t262 + (negate ((t266 / t277) * t274))) else t262)
-      let !t280 = (if t278 > 0 then (t263 + (negate ((t266 / t277) * t275))) else t263)
-      let !t281 = (if t278 > 0 then (t264 + (negate ((t266 / t277) * t276))) else t264)
-      let !t282 = (sqrt (((t279 * t279) + (t280 * t280)) + (t281 * t281)))
-      let !t283 = (t282 - 1.0)
-      let !t284 = (recip (2.0 * t282))
-      let !t285 = ((((t284 * (t279 + t279)) * t274) + ((t284 * (t280 + t280)) * t275)) + ((t284 * (t281 + t281)) * t276))
-      let !t286 = (if ((abs t283) - 1.0e-10) > 0 then (if (abs t285) > 0 then 1.0 else 0.0) else 0.0)
-      let !t287 = (if t286 > 0 then (t279 + (negate ((t283 / t285) * t274))) else t279)
-      let !t288 = (if t286 > 0 then (t280 + (negate ((t283 / t285) * t275))) else t280)
-      let !t289 = (if t286 > 0 then (t281 + (negate ((t283 / t285) * t276))) else t281)
-      let !t290 = (sqrt (((t287 * t287) + (t288 * t288)) + (t289 * t289)))
-      let !t291 = (t290 - 1.0)
-      let !t292 = (recip (2.0 * t290))
-      let !t293 = ((((t292 * (t287 + t287)) * t274) + ((t292 * (t288 + t288)) * t275)) + ((t292 * (t289 + t289)) * t276))
-      let !t294 = (if ((abs t291) - 1.0e-10) > 0 then (if (abs t293) > 0 then 1.0 else 0.0) else 0.0)
-      let !s295 = ((t139 * (if t294 > 0 then (t287 + (negate ((t291 / t293) * t274))) else t287)) + (t176 * s238))
-      let !s296 = ((t139 * (if t294 > 0 then (t288 + (negate ((t291 / t293) * t275))) else t288)) + (t176 * s239))
-      let !s297 = ((t139 * (if t294 > 0 then (t289 + (negate ((t291 / t293) * t276))) else t289)) + (t176 * s240))
-      let !t298 = (sqrt (((s259 * s259) + (s260 * s260)) + (s261 * s261)))
-      let !t299 = (t184 * ((if t294 > 0 then (t287 + (negate ((t291 / t293) * t274))) else t287) + (negate s238)))
-      let !t300 = (t292 * (t287 + t287))
-      let !t301 = (t292 * (t288 + t288))
-      let !t302 = (t292 * (t289 + t289))
-      let !t303 = (sqrt (((t300 * t300) + (t301 * t301)) + (t302 * t302)))
-      let !t304 = (if t303 > 0 then (recip (if (t303 - 1.0e-300) > 0 then t303 else 1.0e-300)) else 0.0)
-      let !t305 = (t304 * t300)
-      let !t306 = (t304 * t301)
-      let !t307 = (t184 * ((if t294 > 0 then (t288 + (negate ((t291 / t293) * t275))) else t288) + (negate s239)))
-      let !t308 = (t304 * t302)
-      let !t309 = (t184 * ((if t294 > 0 then (t289 + (negate ((t291 / t293) * t276))) else t289) + (negate s240)))
-      let !t310 = (((t305 * t299) + (t306 * t307)) + (t308 * t309))
-      let !t311 = (t299 + (negate (t310 * t305)))
-      let !t312 = (t307 + (negate (t310 * t306)))
-      let !t313 = (t309 + (negate (t310 * t308)))
-      let !t314 = (sqrt (((t311 * t311) + (t312 * t312)) + (t313 * t313)))
-      let !t315 = (if t314 > 0 then (recip (if (t314 - 1.0e-300) > 0 then t314 else 1.0e-300)) else 0.0)
-      let !s316 = ((t139 * (t298 * (t315 * t311))) + (t176 * s259))
-      let !s317 = ((t139 * (t298 * (t315 * t312))) + (t176 * s260))
-      let !s318 = ((t139 * (t298 * (t315 * t313))) + (t176 * s261))
-      let !t319 = (s295 + (t138 * s316))
-      let !t320 = (s296 + (t138 * s317))
-      let !t321 = (s297 + (t138 * s318))
-      let !t322 = (sqrt (((t319 * t319) + (t320 * t320)) + (t321 * t321)))
-      let !t323 = (t322 - 1.0)
-      let !t324 = (recip (2.0 * t322))
-      let !t325 = (recip (2.0 * (sqrt (((s295 * s295) + (s296 * s296)) + (s297 * s297)))))
-      let !t326 = (t325 * (s295 + s295))
-      let !t327 = (t325 * (s296 + s296))
-      let !t328 = (t325 * (s297 + s297))
-      let !t329 = (sqrt (((t326 * t326) + (t327 * t327)) + (t328 * t328)))
-      let !t330 = (if t329 > 0 then (recip (if (t329 - 1.0e-300) > 0 then t329 else 1.0e-300)) else 0.0)
-      let !t331 = (t330 * t326)
-      let !t332 = (t330 * t327)
-      let !t333 = (t330 * t328)
-      let !t334 = ((((t324 * (t319 + t319)) * t331) + ((t324 * (t320 + t320)) * t332)) + ((t324 * (t321 + t321)) * t333))
-      let !t335 = (if ((abs t323) - 1.0e-10) > 0 then (if (abs t334) > 0 then 1.0 else 0.0) else 0.0)
-      let !t336 = (if t335 > 0 then (t319 + (negate ((t323 / t334) * t331))) else t319)
-      let !t337 = (if t335 > 0 then (t320 + (negate ((t323 / t334) * t332))) else t320)
-      let !t338 = (if t335 > 0 then (t321 + (negate ((t323 / t334) * t333))) else t321)
-      let !t339 = (sqrt (((t336 * t336) + (t337 * t337)) + (t338 * t338)))
-      let !t340 = (t339 - 1.0)
-      let !t341 = (recip (2.0 * t339))
-      let !t342 = ((((t341 * (t336 + t336)) * t331) + ((t341 * (t337 + t337)) * t332)) + ((t341 * (t338 + t338)) * t333))
-      let !t343 = (if ((abs t340) - 1.0e-10) > 0 then (if (abs t342) > 0 then 1.0 else 0.0) else 0.0)
-      let !t344 = (if t343 > 0 then (t336 + (negate ((t340 / t342) * t331))) else t336)
-      let !t345 = (if t343 > 0 then (t337 + (negate ((t340 / t342) * t332))) else t337)
-      let !t346 = (if t343 > 0 then (t338 + (negate ((t340 / t342) * t333))) else t338)
-      let !t347 = (sqrt (((t344 * t344) + (t345 * t345)) + (t346 * t346)))
-      let !t348 = (t347 - 1.0)
-      let !t349 = (recip (2.0 * t347))
-      let !t350 = ((((t349 * (t344 + t344)) * t331) + ((t349 * (t345 + t345)) * t332)) + ((t349 * (t346 + t346)) * t333))
-      let !t351 = (if ((abs t348) - 1.0e-10) > 0 then (if (abs t350) > 0 then 1.0 else 0.0) else 0.0)
-      let !s352 = ((t139 * (if t351 > 0 then (t344 + (negate ((t348 / t350) * t331))) else t344)) + (t176 * s295))
-      let !s353 = ((t139 * (if t351 > 0 then (t345 + (negate ((t348 / t350) * t332))) else t345)) + (t176 * s296))
-      let !s354 = ((t139 * (if t351 > 0 then (t346 + (negate ((t348 / t350) * t333))) else t346)) + (t176 * s297))
-      let !t355 = (sqrt (((s316 * s316) + (s317 * s317)) + (s318 * s318)))
-      let !t356 = (t184 * ((if t351 > 0 then (t344 + (negate ((t348 / t350) * t331))) else t344) + (negate s295)))
-      let !t357 = (t349 * (t344 + t344))
-      let !t358 = (t349 * (t345 + t345))
-      let !t359 = (t349 * (t346 + t346))
-      let !t360 = (sqrt (((t357 * t357) + (t358 * t358)) + (t359 * t359)))
-      let !t361 = (if t360 > 0 then (recip (if (t360 - 1.0e-300) > 0 then t360 else 1.0e-300)) else 0.0)
-      let !t362 = (t361 * t357)
-      let !t363 = (t361 * t358)
-      let !t364 = (t184 * ((if t351 > 0 then (t345 + (negate ((t348 / t350) * t332))) else t345) + (negate s296)))
-      let !t365 = (t361 * t359)
-      let !t366 = (t184 * ((if t351 > 0 then (t346 + (negate ((t348 / t350) * t333))) else t346) + (negate s297)))
-      let !t367 = (((t362 * t356) + (t363 * t364)) + (t365 * t366))
-      let !t368 = (t356 + (negate (t367 * t362)))
-      let !t369 = (t364 + (negate (t367 * t363)))
-      let !t370 = (t366 + (negate (t367 * t365)))
-      let !t371 = (sqrt (((t368 * t368) + (t369 * t369)) + (t370 * t370)))
-      let !t372 = (if t371 > 0 then (recip (if (t371 - 1.0e-300) > 0 then t371 else 1.0e-300)) else 0.0)
-      let !s373 = ((t139 * (t355 * (t372 * t368))) + (t176 * s316))
-      let !s374 = ((t139 * (t355 * (t372 * t369))) + (t176 * s317))
-      let !s375 = ((t139 * (t355 * (t372 * t370))) + (t176 * s318))
-      t376 <- rdU mouse 4
-      t377 <- rdU mouse 5
-      t378 <- rdU mouse 6
-      t379 <- rdU mouse 7
-      t380 <- rdU mouse 8
-      t381 <- rdU mouse 9
-      let !t382 = (recip t101)
-      let !t383 = (6.283185307179586 * t379)
-      let !s384 = (recip (t103 * ((((2.0 * t382) * t380) * t383) + (t103 * ((t382 * t383) * t383)))))
-      let !s385 = ((t103 * ((t382 * t383) * t383)) * s384)
-      let !s386 = (s352 + (negate t104))
-      let !s387 = (s353 + (negate t105))
-      let !s388 = (s354 + (negate t106))
-      let !s389 = (s352 + (negate t376))
-      let !s390 = (s353 + (negate t377))
-      let !s391 = (s354 + (negate t378))
-      t392 <- rdU mouse 10
-      t393 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t394 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t395 <- rdU vel (3 * (truncate t100))
-      t396 <- rdU vel ((3 * (truncate t100)) + 1)
-      t397 <- rdU vel ((3 * (truncate t100)) + 2)
-      t398 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t395 + ((t393 * t392) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t396 + ((t393 * t392) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t397 + ((t393 * t392) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t398 + ((t394 * t392) * (((((s387 * t112) - (s388 * t111)) * t107) + (((s388 * t110) - (s386 * t112)) * t108)) + (((s386 * t111) - (s387 * t110)) * t109))))
-      t399 <- rdU mouse 11
-      t400 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t401 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t402 <- rdU vel (3 * (truncate t100))
-      t403 <- rdU vel ((3 * (truncate t100)) + 1)
-      t404 <- rdU vel ((3 * (truncate t100)) + 2)
-      t405 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t402 + ((t400 * t399) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t403 + ((t400 * t399) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t404 + ((t400 * t399) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t405 + ((t401 * t399) * (((((s387 * s115) - (s388 * s114)) * t107) + (((s388 * s113) - (s386 * s115)) * t108)) + (((s386 * s114) - (s387 * s113)) * t109))))
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (t115 + (t133 * ((t136 * t121) + (t137 * s124))))
+      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
+      let !t140 = (t117 + (t133 * ((t136 * t123) + (t137 * s126))))
+      let !t141 = (sqrt (((t138 * t138) + (t139 * t139)) + (t140 * t140)))
+      let !t142 = (t141 - 1.0)
+      let !t143 = (recip (2.0 * t141))
+      let !t144 = (recip (2.0 * (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))))
+      let !t145 = (t144 * (t115 + t115))
+      let !t146 = (t144 * (t116 + t116))
+      let !t147 = (t144 * (t117 + t117))
+      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
+      let !t149 = (if t148 > 0 then (recip (if (t148 - 1.0e-300) > 0 then t148 else 1.0e-300)) else 0.0)
+      let !t150 = (t149 * t145)
+      let !t151 = (t149 * t146)
+      let !t152 = (t149 * t147)
+      let !t153 = ((((t143 * (t138 + t138)) * t150) + ((t143 * (t139 + t139)) * t151)) + ((t143 * (t140 + t140)) * t152))
+      let !t154 = (if ((abs t142) - 1.0e-10) > 0 then (if (abs t153) > 0 then 1.0 else 0.0) else 0.0)
+      let !t155 = (if t154 > 0 then (t138 + (negate ((t142 / t153) * t150))) else t138)
+      let !t156 = (if t154 > 0 then (t139 + (negate ((t142 / t153) * t151))) else t139)
+      let !t157 = (if t154 > 0 then (t140 + (negate ((t142 / t153) * t152))) else t140)
+      let !t158 = (sqrt (((t155 * t155) + (t156 * t156)) + (t157 * t157)))
+      let !t159 = (t158 - 1.0)
+      let !t160 = (recip (2.0 * t158))
+      let !t161 = ((((t160 * (t155 + t155)) * t150) + ((t160 * (t156 + t156)) * t151)) + ((t160 * (t157 + t157)) * t152))
+      let !t162 = (if ((abs t159) - 1.0e-10) > 0 then (if (abs t161) > 0 then 1.0 else 0.0) else 0.0)
+      let !t163 = (if t162 > 0 then (t155 + (negate ((t159 / t161) * t150))) else t155)
+      let !t164 = (if t162 > 0 then (t156 + (negate ((t159 / t161) * t151))) else t156)
+      let !t165 = (if t162 > 0 then (t157 + (negate ((t159 / t161) * t152))) else t157)
+      let !t166 = (sqrt (((t163 * t163) + (t164 * t164)) + (t165 * t165)))
+      let !t167 = (t166 - 1.0)
+      let !t168 = (recip (2.0 * t166))
+      let !t169 = ((((t168 * (t163 + t163)) * t150) + ((t168 * (t164 + t164)) * t151)) + ((t168 * (t165 + t165)) * t152))
+      let !t170 = (if ((abs t167) - 1.0e-10) > 0 then (if (abs t169) > 0 then 1.0 else 0.0) else 0.0)
+      let !t171 = (1.0 - t134)
+      let !s172 = ((t134 * (if t170 > 0 then (t163 + (negate ((t167 / t169) * t150))) else t163)) + (t171 * t115))
+      let !s173 = ((t134 * (if t170 > 0 then (t164 + (negate ((t167 / t169) * t151))) else t164)) + (t171 * t116))
+      let !s174 = ((t134 * (if t170 > 0 then (t165 + (negate ((t167 / t169) * t152))) else t165)) + (t171 * t117))
+      let !t175 = ((t136 * t121) + (t137 * s124))
+      let !t176 = ((t136 * t122) + (t137 * s125))
+      let !t177 = ((t136 * t123) + (t137 * s126))
+      let !t178 = (sqrt (((t175 * t175) + (t176 * t176)) + (t177 * t177)))
+      let !t179 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t180 = (t179 * ((if t170 > 0 then (t163 + (negate ((t167 / t169) * t150))) else t163) + (negate t115)))
+      let !t181 = (t168 * (t163 + t163))
+      let !t182 = (t168 * (t164 + t164))
+      let !t183 = (t168 * (t165 + t165))
+      let !t184 = (sqrt (((t181 * t181) + (t182 * t182)) + (t183 * t183)))
+      let !t185 = (if t184 > 0 then (recip (if (t184 - 1.0e-300) > 0 then t184 else 1.0e-300)) else 0.0)
+      let !t186 = (t185 * t181)
+      let !t187 = (t185 * t182)
+      let !t188 = (t179 * ((if t170 > 0 then (t164 + (negate ((t167 / t169) * t151))) else t164) + (negate t116)))
+      let !t189 = (t185 * t183)
+      let !t190 = (t179 * ((if t170 > 0 then (t165 + (negate ((t167 / t169) * t152))) else t165) + (negate t117)))
+      let !t191 = (((t186 * t180) + (t187 * t188)) + (t189 * t190))
+      let !t192 = (t180 + (negate (t191 * t186)))
+      let !t193 = (t188 + (negate (t191 * t187)))
+      let !t194 = (t190 + (negate (t191 * t189)))
+      let !t195 = (sqrt (((t192 * t192) + (t193 * t193)) + (t194 * t194)))
+      let !t196 = (if t195 > 0 then (recip (if (t195 - 1.0e-300) > 0 then t195 else 1.0e-300)) else 0.0)
+      let !s197 = ((t134 * (t178 * (t196 * t192))) + (t171 * t175))
+      let !s198 = ((t134 * (t178 * (t196 * t193))) + (t171 * t176))
+      let !s199 = ((t134 * (t178 * (t196 * t194))) + (t171 * t177))
+      let !t200 = (s172 + (t133 * s197))
+      let !t201 = (s173 + (t133 * s198))
+      let !t202 = (s174 + (t133 * s199))
+      let !t203 = (sqrt (((t200 * t200) + (t201 * t201)) + (t202 * t202)))
+      let !t204 = (t203 - 1.0)
+      let !t205 = (recip (2.0 * t203))
+      let !t206 = (recip (2.0 * (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))))
+      let !t207 = (t206 * (s172 + s172))
+      let !t208 = (t206 * (s173 + s173))
+      let !t209 = (t206 * (s174 + s174))
+      let !t210 = (sqrt (((t207 * t207) + (t208 * t208)) + (t209 * t209)))
+      let !t211 = (if t210 > 0 then (recip (if (t210 - 1.0e-300) > 0 then t210 else 1.0e-300)) else 0.0)
+      let !t212 = (t211 * t207)
+      let !t213 = (t211 * t208)
+      let !t214 = (t211 * t209)
+      let !t215 = ((((t205 * (t200 + t200)) * t212) + ((t205 * (t201 + t201)) * t213)) + ((t205 * (t202 + t202)) * t214))
+      let !t216 = (if ((abs t204) - 1.0e-10) > 0 then (if (abs t215) > 0 then 1.0 else 0.0) else 0.0)
+      let !t217 = (if t216 > 0 then (t200 + (negate ((t204 / t215) * t212))) else t200)
+      let !t218 = (if t216 > 0 then (t201 + (negate ((t204 / t215) * t213))) else t201)
+      let !t219 = (if t216 > 0 then (t202 + (negate ((t204 / t215) * t214))) else t202)
+      let !t220 = (sqrt (((t217 * t217) + (t218 * t218)) + (t219 * t219)))
+      let !t221 = (t220 - 1.0)
+      let !t222 = (recip (2.0 * t220))
+      let !t223 = ((((t222 * (t217 + t217)) * t212) + ((t222 * (t218 + t218)) * t213)) + ((t222 * (t219 + t219)) * t214))
+      let !t224 = (if ((abs t221) - 1.0e-10) > 0 then (if (abs t223) > 0 then 1.0 else 0.0) else 0.0)
+      let !t225 = (if t224 > 0 then (t217 + (negate ((t221 / t223) * t212))) else t217)
+      let !t226 = (if t224 > 0 then (t218 + (negate ((t221 / t223) * t213))) else t218)
+      let !t227 = (if t224 > 0 then (t219 + (negate ((t221 / t223) * t214))) else t219)
+      let !t228 = (sqrt (((t225 * t225) + (t226 * t226)) + (t227 * t227)))
+      let !t229 = (t228 - 1.0)
+      let !t230 = (recip (2.0 * t228))
+      let !t231 = ((((t230 * (t225 + t225)) * t212) + ((t230 * (t226 + t226)) * t213)) + ((t230 * (t227 + t227)) * t214))
+      let !t232 = (if ((abs t229) - 1.0e-10) > 0 then (if (abs t231) > 0 then 1.0 else 0.0) else 0.0)
+      let !s233 = ((t134 * (if t232 > 0 then (t225 + (negate ((t229 / t231) * t212))) else t225)) + (t171 * s172))
+      let !s234 = ((t134 * (if t232 > 0 then (t226 + (negate ((t229 / t231) * t213))) else t226)) + (t171 * s173))
+      let !s235 = ((t134 * (if t232 > 0 then (t227 + (negate ((t229 / t231) * t214))) else t227)) + (t171 * s174))
+      let !t236 = (sqrt (((s197 * s197) + (s198 * s198)) + (s199 * s199)))
+      let !t237 = (t179 * ((if t232 > 0 then (t225 + (negate ((t229 / t231) * t212))) else t225) + (negate s172)))
+      let !t238 = (t230 * (t225 + t225))
+      let !t239 = (t230 * (t226 + t226))
+      let !t240 = (t230 * (t227 + t227))
+      let !t241 = (sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240)))
+      let !t242 = (if t241 > 0 then (recip (if (t241 - 1.0e-300) > 0 then t241 else 1.0e-300)) else 0.0)
+      let !t243 = (t242 * t238)
+      let !t244 = (t242 * t239)
+      let !t245 = (t179 * ((if t232 > 0 then (t226 + (negate ((t229 / t231) * t213))) else t226) + (negate s173)))
+      let !t246 = (t242 * t240)
+      let !t247 = (t179 * ((if t232 > 0 then (t227 + (negate ((t229 / t231) * t214))) else t227) + (negate s174)))
+      let !t248 = (((t243 * t237) + (t244 * t245)) + (t246 * t247))
+      let !t249 = (t237 + (negate (t248 * t243)))
+      let !t250 = (t245 + (negate (t248 * t244)))
+      let !t251 = (t247 + (negate (t248 * t246)))
+      let !t252 = (sqrt (((t249 * t249) + (t250 * t250)) + (t251 * t251)))
+      let !t253 = (if t252 > 0 then (recip (if (t252 - 1.0e-300) > 0 then t252 else 1.0e-300)) else 0.0)
+      let !s254 = ((t134 * (t236 * (t253 * t249))) + (t171 * s197))
+      let !s255 = ((t134 * (t236 * (t253 * t250))) + (t171 * s198))
+      let !s256 = ((t134 * (t236 * (t253 * t251))) + (t171 * s199))
+      let !t257 = (s233 + (t133 * s254))
+      let !t258 = (s234 + (t133 * s255))
+      let !t259 = (s235 + (t133 * s256))
+      let !t260 = (sqrt (((t257 * t257) + (t258 * t258)) + (t259 * t259)))
+      let !t261 = (t260 - 1.0)
+      let !t262 = (recip (2.0 * t260))
+      let !t263 = (recip (2.0 * (sqrt (((s233 * s233) + (s234 * s234)) + (s235 * s235)))))
+      let !t264 = (t263 * (s233 + s233))
+      let !t265 = (t263 * (s234 + s234))
+      let !t266 = (t263 * (s235 + s235))
+      let !t267 = (sqrt (((t264 * t264) + (t265 * t265)) + (t266 * t266)))
+      let !t268 = (if t267 > 0 then (recip (if (t267 - 1.0e-300) > 0 then t267 else 1.0e-300)) else 0.0)
+      let !t269 = (t268 * t264)
+      let !t270 = (t268 * t265)
+      let !t271 = (t268 * t266)
+      let !t272 = ((((t262 * (t257 + t257)) * t269) + ((t262 * (t258 + t258)) * t270)) + ((t262 * (t259 + t259)) * t271))
+      let !t273 = (if ((abs t261) - 1.0e-10) > 0 then (if (abs t272) > 0 then 1.0 else 0.0) else 0.0)
+      let !t274 = (if t273 > 0 then (t257 + (negate ((t261 / t272) * t269))) else t257)
+      let !t275 = (if t273 > 0 then (t258 + (negate ((t261 / t272) * t270))) else t258)
+      let !t276 = (if t273 > 0 then (t259 + (negate ((t261 / t272) * t271))) else t259)
+      let !t277 = (sqrt (((t274 * t274) + (t275 * t275)) + (t276 * t276)))
+      let !t278 = (t277 - 1.0)
+      let !t279 = (recip (2.0 * t277))
+      let !t280 = ((((t279 * (t274 + t274)) * t269) + ((t279 * (t275 + t275)) * t270)) + ((t279 * (t276 + t276)) * t271))
+      let !t281 = (if ((abs t278) - 1.0e-10) > 0 then (if (abs t280) > 0 then 1.0 else 0.0) else 0.0)
+      let !t282 = (if t281 > 0 then (t274 + (negate ((t278 / t280) * t269))) else t274)
+      let !t283 = (if t281 > 0 then (t275 + (negate ((t278 / t280) * t270))) else t275)
+      let !t284 = (if t281 > 0 then (t276 + (negate ((t278 / t280) * t271))) else t276)
+      let !t285 = (sqrt (((t282 * t282) + (t283 * t283)) + (t284 * t284)))
+      let !t286 = (t285 - 1.0)
+      let !t287 = (recip (2.0 * t285))
+      let !t288 = ((((t287 * (t282 + t282)) * t269) + ((t287 * (t283 + t283)) * t270)) + ((t287 * (t284 + t284)) * t271))
+      let !t289 = (if ((abs t286) - 1.0e-10) > 0 then (if (abs t288) > 0 then 1.0 else 0.0) else 0.0)
+      let !s290 = ((t134 * (if t289 > 0 then (t282 + (negate ((t286 / t288) * t269))) else t282)) + (t171 * s233))
+      let !s291 = ((t134 * (if t289 > 0 then (t283 + (negate ((t286 / t288) * t270))) else t283)) + (t171 * s234))
+      let !s292 = ((t134 * (if t289 > 0 then (t284 + (negate ((t286 / t288) * t271))) else t284)) + (t171 * s235))
+      let !t293 = (sqrt (((s254 * s254) + (s255 * s255)) + (s256 * s256)))
+      let !t294 = (t179 * ((if t289 > 0 then (t282 + (negate ((t286 / t288) * t269))) else t282) + (negate s233)))
+      let !t295 = (t287 * (t282 + t282))
+      let !t296 = (t287 * (t283 + t283))
+      let !t297 = (t287 * (t284 + t284))
+      let !t298 = (sqrt (((t295 * t295) + (t296 * t296)) + (t297 * t297)))
+      let !t299 = (if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0)
+      let !t300 = (t299 * t295)
+      let !t301 = (t299 * t296)
+      let !t302 = (t179 * ((if t289 > 0 then (t283 + (negate ((t286 / t288) * t270))) else t283) + (negate s234)))
+      let !t303 = (t299 * t297)
+      let !t304 = (t179 * ((if t289 > 0 then (t284 + (negate ((t286 / t288) * t271))) else t284) + (negate s235)))
+      let !t305 = (((t300 * t294) + (t301 * t302)) + (t303 * t304))
+      let !t306 = (t294 + (negate (t305 * t300)))
+      let !t307 = (t302 + (negate (t305 * t301)))
+      let !t308 = (t304 + (negate (t305 * t303)))
+      let !t309 = (sqrt (((t306 * t306) + (t307 * t307)) + (t308 * t308)))
+      let !t310 = (if t309 > 0 then (recip (if (t309 - 1.0e-300) > 0 then t309 else 1.0e-300)) else 0.0)
+      let !s311 = ((t134 * (t293 * (t310 * t306))) + (t171 * s254))
+      let !s312 = ((t134 * (t293 * (t310 * t307))) + (t171 * s255))
+      let !s313 = ((t134 * (t293 * (t310 * t308))) + (t171 * s256))
+      let !t314 = (s290 + (t133 * s311))
+      let !t315 = (s291 + (t133 * s312))
+      let !t316 = (s292 + (t133 * s313))
+      let !t317 = (sqrt (((t314 * t314) + (t315 * t315)) + (t316 * t316)))
+      let !t318 = (t317 - 1.0)
+      let !t319 = (recip (2.0 * t317))
+      let !t320 = (recip (2.0 * (sqrt (((s290 * s290) + (s291 * s291)) + (s292 * s292)))))
+      let !t321 = (t320 * (s290 + s290))
+      let !t322 = (t320 * (s291 + s291))
+      let !t323 = (t320 * (s292 + s292))
+      let !t324 = (sqrt (((t321 * t321) + (t322 * t322)) + (t323 * t323)))
+      let !t325 = (if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0)
+      let !t326 = (t325 * t321)
+      let !t327 = (t325 * t322)
+      let !t328 = (t325 * t323)
+      let !t329 = ((((t319 * (t314 + t314)) * t326) + ((t319 * (t315 + t315)) * t327)) + ((t319 * (t316 + t316)) * t328))
+      let !t330 = (if ((abs t318) - 1.0e-10) > 0 then (if (abs t329) > 0 then 1.0 else 0.0) else 0.0)
+      let !t331 = (if t330 > 0 then (t314 + (negate ((t318 / t329) * t326))) else t314)
+      let !t332 = (if t330 > 0 then (t315 + (negate ((t318 / t329) * t327))) else t315)
+      let !t333 = (if t330 > 0 then (t316 + (negate ((t318 / t329) * t328))) else t316)
+      let !t334 = (sqrt (((t331 * t331) + (t332 * t332)) + (t333 * t333)))
+      let !t335 = (t334 - 1.0)
+      let !t336 = (recip (2.0 * t334))
+      let !t337 = ((((t336 * (t331 + t331)) * t326) + ((t336 * (t332 + t332)) * t327)) + ((t336 * (t333 + t333)) * t328))
+      let !t338 = (if ((abs t335) - 1.0e-10) > 0 then (if (abs t337) > 0 then 1.0 else 0.0) else 0.0)
+      let !t339 = (if t338 > 0 then (t331 + (negate ((t335 / t337) * t326))) else t331)
+      let !t340 = (if t338 > 0 then (t332 + (negate ((t335 / t337) * t327))) else t332)
+      let !t341 = (if t338 > 0 then (t333 + (negate ((t335 / t337) * t328))) else t333)
+      let !t342 = (sqrt (((t339 * t339) + (t340 * t340)) + (t341 * t341)))
+      let !t343 = (t342 - 1.0)
+      let !t344 = (recip (2.0 * t342))
+      let !t345 = ((((t344 * (t339 + t339)) * t326) + ((t344 * (t340 + t340)) * t327)) + ((t344 * (t341 + t341)) * t328))
+      let !t346 = (if ((abs t343) - 1.0e-10) > 0 then (if (abs t345) > 0 then 1.0 else 0.0) else 0.0)
+      let !s347 = ((t134 * (if t346 > 0 then (t339 + (negate ((t343 / t345) * t326))) else t339)) + (t171 * s290))
+      let !s348 = ((t134 * (if t346 > 0 then (t340 + (negate ((t343 / t345) * t327))) else t340)) + (t171 * s291))
+      let !s349 = ((t134 * (if t346 > 0 then (t341 + (negate ((t343 / t345) * t328))) else t341)) + (t171 * s292))
+      let !t350 = (sqrt (((s311 * s311) + (s312 * s312)) + (s313 * s313)))
+      let !t351 = (t179 * ((if t346 > 0 then (t339 + (negate ((t343 / t345) * t326))) else t339) + (negate s290)))
+      let !t352 = (t344 * (t339 + t339))
+      let !t353 = (t344 * (t340 + t340))
+      let !t354 = (t344 * (t341 + t341))
+      let !t355 = (sqrt (((t352 * t352) + (t353 * t353)) + (t354 * t354)))
+      let !t356 = (if t355 > 0 then (recip (if (t355 - 1.0e-300) > 0 then t355 else 1.0e-300)) else 0.0)
+      let !t357 = (t356 * t352)
+      let !t358 = (t356 * t353)
+      let !t359 = (t179 * ((if t346 > 0 then (t340 + (negate ((t343 / t345) * t327))) else t340) + (negate s291)))
+      let !t360 = (t356 * t354)
+      let !t361 = (t179 * ((if t346 > 0 then (t341 + (negate ((t343 / t345) * t328))) else t341) + (negate s292)))
+      let !t362 = (((t357 * t351) + (t358 * t359)) + (t360 * t361))
+      let !t363 = (t351 + (negate (t362 * t357)))
+      let !t364 = (t359 + (negate (t362 * t358)))
+      let !t365 = (t361 + (negate (t362 * t360)))
+      let !t366 = (sqrt (((t363 * t363) + (t364 * t364)) + (t365 * t365)))
+      let !t367 = (if t366 > 0 then (recip (if (t366 - 1.0e-300) > 0 then t366 else 1.0e-300)) else 0.0)
+      let !s368 = ((t134 * (t350 * (t367 * t363))) + (t171 * s311))
+      let !s369 = ((t134 * (t350 * (t367 * t364))) + (t171 * s312))
+      let !s370 = ((t134 * (t350 * (t367 * t365))) + (t171 * s313))
+      t371 <- rdU mouse 4
+      t372 <- rdU mouse 5
+      t373 <- rdU mouse 6
+      t374 <- rdU mouse 7
+      t375 <- rdU mouse 8
+      t376 <- rdU mouse 9
+      let !t377 = (recip t96)
+      let !t378 = (6.283185307179586 * t374)
+      let !s379 = (recip (t98 * ((((2.0 * t377) * t375) * t378) + (t98 * ((t377 * t378) * t378)))))
+      let !s380 = ((t98 * ((t377 * t378) * t378)) * s379)
+      let !s381 = (s347 + (negate t99))
+      let !s382 = (s348 + (negate t100))
+      let !s383 = (s349 + (negate t101))
+      let !s384 = (s347 + (negate t371))
+      let !s385 = (s348 + (negate t372))
+      let !s386 = (s349 + (negate t373))
+      t387 <- rdU mouse 10
+      t388 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t389 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t390 <- rdU vel (3 * (truncate t95))
+      t391 <- rdU vel ((3 * (truncate t95)) + 1)
+      t392 <- rdU vel ((3 * (truncate t95)) + 2)
+      t393 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t390 + ((t388 * t387) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t391 + ((t388 * t387) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t392 + ((t388 * t387) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t393 + ((t389 * t387) * (((((s382 * t107) - (s383 * t106)) * t102) + (((s383 * t105) - (s381 * t107)) * t103)) + (((s381 * t106) - (s382 * t105)) * t104))))
+      t394 <- rdU mouse 11
+      t395 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t396 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t397 <- rdU vel (3 * (truncate t95))
+      t398 <- rdU vel ((3 * (truncate t95)) + 1)
+      t399 <- rdU vel ((3 * (truncate t95)) + 2)
+      t400 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t397 + ((t395 * t394) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t398 + ((t395 * t394) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t399 + ((t395 * t394) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t400 + ((t396 * t394) * (((((s382 * s110) - (s383 * s109)) * t102) + (((s383 * s108) - (s381 * s110)) * t103)) + (((s381 * s109) - (s382 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i406 -> do
-    let !d406 = fromIntegral i406 :: Double
-    loopI 0.0 t9 $ \i407 -> do
-      let !d407 = fromIntegral i407 :: Double
-      chkI contacts (30 * i407) 0 26
-      t408 <- rdU contacts (30 * i407)
-      t409 <- rdU contacts ((30 * i407) + 1)
-      t410 <- rdU contacts ((30 * i407) + 12)
-      t411 <- rdU contacts ((30 * i407) + 13)
-      t412 <- rdU contacts ((30 * i407) + 14)
-      t413 <- rdU contacts ((30 * i407) + 15)
-      t414 <- rdU contacts ((30 * i407) + 16)
-      t415 <- rdU contacts ((30 * i407) + 17)
-      t416 <- rdU contacts ((30 * i407) + 18)
-      t417 <- rdU contacts ((30 * i407) + 19)
-      t418 <- rdU contacts ((30 * i407) + 4)
-      t419 <- rdU contacts ((30 * i407) + 5)
-      t420 <- rdU contacts ((30 * i407) + 6)
-      t421 <- rdU contacts ((30 * i407) + 7)
-      t422 <- rdU contacts ((30 * i407) + 8)
-      t423 <- rdU contacts ((30 * i407) + 9)
-      t424 <- rdU contacts ((30 * i407) + 10)
-      t425 <- rdU contacts ((30 * i407) + 11)
-      t426 <- rdU contacts ((30 * i407) + 26)
-      t427 <- rdU contacts ((30 * i407) + 24)
-      t428 <- rdU contacts ((30 * i407) + 25)
-      t429 <- rdU contacts ((30 * i407) + 22)
-      t430 <- rdU contacts ((30 * i407) + 21)
-      t431 <- rdU contacts ((30 * i407) + 23)
-      let !s432 = (if (negate t409) > 0 then 0.0 else t409)
-      let !s433 = (t409 + 0.5)
-      let !s434 = (if (0.5 - (abs (t408 - t409))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t408)) 1 3
-      t435 <- rdU scalars ((6 * (truncate t408)) + 2)
-      t436 <- rdU scalars ((6 * (truncate t408)) + 3)
-      chkI scalars (6 * (truncate s432)) 1 3
-      t437 <- rdU scalars ((6 * (truncate s432)) + 2)
-      t438 <- rdU scalars ((6 * (truncate s432)) + 3)
-      chkI vel (3 * (truncate t408)) 0 2
-      t439 <- rdU vel (3 * (truncate t408))
-      t440 <- rdU vel ((3 * (truncate t408)) + 1)
-      t441 <- rdU vel ((3 * (truncate t408)) + 2)
-      t442 <- rdU scalars ((6 * (truncate t408)) + 1)
-      chkI vel (3 * (truncate s432)) 0 2
-      t443 <- rdU vel (3 * (truncate s432))
-      t444 <- rdU vel ((3 * (truncate s432)) + 1)
-      t445 <- rdU vel ((3 * (truncate s432)) + 2)
-      t446 <- rdU scalars ((6 * (truncate s432)) + 1)
-      let !s447 = (((((t410 * t439) + (t411 * t440)) + (t412 * t441)) + (t413 * t442)) - (if s433 > 0 then ((((t414 * t443) + (t415 * t444)) + (t416 * t445)) + (t417 * t446)) else 0.0))
-      let !t448 = (t2 * t427)
-      let !t449 = (negate t448)
-      let !t450 = (t428 - ((t426 * s447) * t429))
-      let !t451 = (if (t450 - t448) > 0 then t448 else t450)
-      let !t452 = (if (t449 - t451) > 0 then t449 else t451)
-      let !s453 = (if (1.0 - (abs (t452 - t452))) > 0 then t452 else 0.0)
-      wrU contacts ((30 * i407) + 25) s453
-      let !t454 = (t435 * (s453 - t428))
-      let !s455 = (t454 * t410)
-      let !s456 = (t454 * t411)
-      let !s457 = (t454 * t412)
-      let !s458 = ((t436 * (s453 - t428)) * t413)
-      let !t459 = (t437 * (negate (s453 - t428)))
-      let !s460 = (t459 * t414)
-      let !s461 = (t459 * t415)
-      let !s462 = (t459 * t416)
-      let !s463 = ((t438 * (negate (s453 - t428))) * t417)
-      let !s464 = ((t439 + s455) + (s434 * s460))
-      let !s465 = ((t440 + s456) + (s434 * s461))
-      let !s466 = ((t441 + s457) + (s434 * s462))
-      let !s467 = ((t442 + s458) + (s434 * s463))
-      let !s468 = ((t443 + s460) + (s434 * s455))
-      let !s469 = ((t444 + s461) + (s434 * s456))
-      let !s470 = ((t445 + s462) + (s434 * s457))
-      let !s471 = ((t446 + s463) + (s434 * s458))
-      let !s472 = (((((t418 * s464) + (t419 * s465)) + (t420 * s466)) + (t421 * s467)) - (if s433 > 0 then ((((t422 * s468) + (t423 * s469)) + (t424 * s470)) + (t425 * s471)) else 0.0))
-      let !t473 = (t427 + ((t426 * (t431 - s472)) * t430))
-      let !t474 = (if (negate t473) > 0 then 0.0 else t473)
-      let !s475 = (if (1.0 - (abs (t474 - t474))) > 0 then t474 else 0.0)
-      wrU contacts ((30 * i407) + 24) s475
-      let !t476 = (t435 * (s475 - t427))
-      let !s477 = (t476 * t418)
-      let !s478 = (t476 * t419)
-      let !s479 = (t476 * t420)
-      let !s480 = ((t436 * (s475 - t427)) * t421)
-      let !t481 = (t437 * (negate (s475 - t427)))
-      let !s482 = (t481 * t422)
-      let !s483 = (t481 * t423)
-      let !s484 = (t481 * t424)
-      let !s485 = ((t438 * (negate (s475 - t427))) * t425)
-      let !s486 = ((s464 + s477) + (s434 * s482))
-      let !s487 = ((s465 + s478) + (s434 * s483))
-      let !s488 = ((s466 + s479) + (s434 * s484))
-      let !s489 = ((s467 + s480) + (s434 * s485))
-      let !s490 = ((s468 + s482) + (s434 * s477))
-      let !s491 = ((s469 + s483) + (s434 * s478))
-      let !s492 = ((s470 + s484) + (s434 * s479))
-      let !s493 = ((s471 + s485) + (s434 * s480))
-      wrU vel (3 * (truncate t408)) s486
-      wrU vel ((3 * (truncate t408)) + 1) s487
-      wrU vel ((3 * (truncate t408)) + 2) s488
-      wrU scalars ((6 * (truncate t408)) + 1) s489
-      if s433 > 0 then do
-        wrU vel (3 * (truncate s432)) s490
-        wrU vel ((3 * (truncate s432)) + 1) s491
-        wrU vel ((3 * (truncate s432)) + 2) s492
-        wrU scalars ((6 * (truncate s432)) + 1) s493
+  loopI 0.0 t1 $ \i401 -> do
+    let !d401 = fromIntegral i401 :: Double
+    loopI 0.0 t9 $ \i402 -> do
+      let !d402 = fromIntegral i402 :: Double
+      chkI contacts (30 * i402) 0 26
+      t403 <- rdU contacts (30 * i402)
+      t404 <- rdU contacts ((30 * i402) + 1)
+      t405 <- rdU contacts ((30 * i402) + 12)
+      t406 <- rdU contacts ((30 * i402) + 13)
+      t407 <- rdU contacts ((30 * i402) + 14)
+      t408 <- rdU contacts ((30 * i402) + 15)
+      t409 <- rdU contacts ((30 * i402) + 16)
+      t410 <- rdU contacts ((30 * i402) + 17)
+      t411 <- rdU contacts ((30 * i402) + 18)
+      t412 <- rdU contacts ((30 * i402) + 19)
+      t413 <- rdU contacts ((30 * i402) + 4)
+      t414 <- rdU contacts ((30 * i402) + 5)
+      t415 <- rdU contacts ((30 * i402) + 6)
+      t416 <- rdU contacts ((30 * i402) + 7)
+      t417 <- rdU contacts ((30 * i402) + 8)
+      t418 <- rdU contacts ((30 * i402) + 9)
+      t419 <- rdU contacts ((30 * i402) + 10)
+      t420 <- rdU contacts ((30 * i402) + 11)
+      t421 <- rdU contacts ((30 * i402) + 26)
+      t422 <- rdU contacts ((30 * i402) + 24)
+      t423 <- rdU contacts ((30 * i402) + 25)
+      t424 <- rdU contacts ((30 * i402) + 22)
+      t425 <- rdU contacts ((30 * i402) + 21)
+      t426 <- rdU contacts ((30 * i402) + 23)
+      let !s427 = (if (negate t404) > 0 then 0.0 else t404)
+      let !s428 = (t404 + 0.5)
+      let !s429 = (if (0.5 - (abs (t403 - t404))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t403)) 1 3
+      t430 <- rdU scalars ((6 * (truncate t403)) + 2)
+      t431 <- rdU scalars ((6 * (truncate t403)) + 3)
+      chkI scalars (6 * (truncate s427)) 1 3
+      t432 <- rdU scalars ((6 * (truncate s427)) + 2)
+      t433 <- rdU scalars ((6 * (truncate s427)) + 3)
+      chkI vel (3 * (truncate t403)) 0 2
+      t434 <- rdU vel (3 * (truncate t403))
+      t435 <- rdU vel ((3 * (truncate t403)) + 1)
+      t436 <- rdU vel ((3 * (truncate t403)) + 2)
+      t437 <- rdU scalars ((6 * (truncate t403)) + 1)
+      chkI vel (3 * (truncate s427)) 0 2
+      t438 <- rdU vel (3 * (truncate s427))
+      t439 <- rdU vel ((3 * (truncate s427)) + 1)
+      t440 <- rdU vel ((3 * (truncate s427)) + 2)
+      t441 <- rdU scalars ((6 * (truncate s427)) + 1)
+      let !s442 = (((((t405 * t434) + (t406 * t435)) + (t407 * t436)) + (t408 * t437)) - (if s428 > 0 then ((((t409 * t438) + (t410 * t439)) + (t411 * t440)) + (t412 * t441)) else 0.0))
+      let !t443 = (t2 * t422)
+      let !t444 = (negate t443)
+      let !t445 = (t423 - ((t421 * s442) * t424))
+      let !t446 = (if (t445 - t443) > 0 then t443 else t445)
+      let !t447 = (if (t444 - t446) > 0 then t444 else t446)
+      let !s448 = (if (1.0 - (abs (t447 - t447))) > 0 then t447 else 0.0)
+      wrU contacts ((30 * i402) + 25) s448
+      let !t449 = (t430 * (s448 - t423))
+      let !s450 = (t449 * t405)
+      let !s451 = (t449 * t406)
+      let !s452 = (t449 * t407)
+      let !s453 = ((t431 * (s448 - t423)) * t408)
+      let !t454 = (t432 * (negate (s448 - t423)))
+      let !s455 = (t454 * t409)
+      let !s456 = (t454 * t410)
+      let !s457 = (t454 * t411)
+      let !s458 = ((t433 * (negate (s448 - t423))) * t412)
+      let !s459 = ((t434 + s450) + (s429 * s455))
+      let !s460 = ((t435 + s451) + (s429 * s456))
+      let !s461 = ((t436 + s452) + (s429 * s457))
+      let !s462 = ((t437 + s453) + (s429 * s458))
+      let !s463 = ((t438 + s455) + (s429 * s450))
+      let !s464 = ((t439 + s456) + (s429 * s451))
+      let !s465 = ((t440 + s457) + (s429 * s452))
+      let !s466 = ((t441 + s458) + (s429 * s453))
+      let !s467 = (((((t413 * s459) + (t414 * s460)) + (t415 * s461)) + (t416 * s462)) - (if s428 > 0 then ((((t417 * s463) + (t418 * s464)) + (t419 * s465)) + (t420 * s466)) else 0.0))
+      let !t468 = (t422 + ((t421 * (t426 - s467)) * t425))
+      let !t469 = (if (negate t468) > 0 then 0.0 else t468)
+      let !s470 = (if (1.0 - (abs (t469 - t469))) > 0 then t469 else 0.0)
+      wrU contacts ((30 * i402) + 24) s470
+      let !t471 = (t430 * (s470 - t422))
+      let !s472 = (t471 * t413)
+      let !s473 = (t471 * t414)
+      let !s474 = (t471 * t415)
+      let !s475 = ((t431 * (s470 - t422)) * t416)
+      let !t476 = (t432 * (negate (s470 - t422)))
+      let !s477 = (t476 * t417)
+      let !s478 = (t476 * t418)
+      let !s479 = (t476 * t419)
+      let !s480 = ((t433 * (negate (s470 - t422))) * t420)
+      let !s481 = ((s459 + s472) + (s429 * s477))
+      let !s482 = ((s460 + s473) + (s429 * s478))
+      let !s483 = ((s461 + s474) + (s429 * s479))
+      let !s484 = ((s462 + s475) + (s429 * s480))
+      let !s485 = ((s463 + s477) + (s429 * s472))
+      let !s486 = ((s464 + s478) + (s429 * s473))
+      let !s487 = ((s465 + s479) + (s429 * s474))
+      let !s488 = ((s466 + s480) + (s429 * s475))
+      wrU vel (3 * (truncate t403)) s481
+      wrU vel ((3 * (truncate t403)) + 1) s482
+      wrU vel ((3 * (truncate t403)) + 2) s483
+      wrU scalars ((6 * (truncate t403)) + 1) s484
+      if s428 > 0 then do
+        wrU vel (3 * (truncate s427)) s485
+        wrU vel ((3 * (truncate s427)) + 1) s486
+        wrU vel ((3 * (truncate s427)) + 2) s487
+        wrU scalars ((6 * (truncate s427)) + 1) s488
         pure ()
       else do
         pure ()
       pure ()
-    t494 <- rdU mouse 0
-    if t494 > 0 then do
+    t489 <- rdU mouse 0
+    if t489 > 0 then do
       chkI mouse 0 1 1
-      t495 <- rdU mouse 1
-      chkI scalars (6 * (truncate t495)) 2 2
-      t496 <- rdU scalars ((6 * (truncate t495)) + 2)
-      if t496 > 0 then do
-        chkI scalars (6 * (truncate t495)) 0 5
-        t497 <- rdU scalars ((6 * (truncate t495)) + 3)
-        t498 <- rdU params 0
-        chkI pos (3 * (truncate t495)) 0 2
-        t499 <- rdU pos (3 * (truncate t495))
-        t500 <- rdU pos ((3 * (truncate t495)) + 1)
-        t501 <- rdU pos ((3 * (truncate t495)) + 2)
-        chkI normal (3 * (truncate t495)) 0 2
-        t502 <- rdU normal (3 * (truncate t495))
-        t503 <- rdU normal ((3 * (truncate t495)) + 1)
-        t504 <- rdU normal ((3 * (truncate t495)) + 2)
-        chkI axis (3 * (truncate t495)) 0 2
-        t505 <- rdU axis (3 * (truncate t495))
-        t506 <- rdU axis ((3 * (truncate t495)) + 1)
-        t507 <- rdU axis ((3 * (truncate t495)) + 2)
-        let !s508 = ((t503 * t507) - (t504 * t506))
-        let !s509 = ((t504 * t505) - (t502 * t507))
-        let !s510 = ((t502 * t506) - (t503 * t505))
-        t511 <- rdU scalars (6 * (truncate t495))
-        t512 <- rdU scalars ((6 * (truncate t495)) + 5)
-        t513 <- rdU scalars ((6 * (truncate t495)) + 2)
-        t514 <- rdU scalars ((6 * (truncate t495)) + 3)
-        t515 <- rdU pos (3 * (truncate t495))
-        t516 <- rdU pos ((3 * (truncate t495)) + 1)
-        t517 <- rdU pos ((3 * (truncate t495)) + 2)
-        t518 <- rdU normal (3 * (truncate t495))
-        t519 <- rdU normal ((3 * (truncate t495)) + 1)
-        t520 <- rdU normal ((3 * (truncate t495)) + 2)
-        t521 <- rdU axis (3 * (truncate t495))
-        t522 <- rdU axis ((3 * (truncate t495)) + 1)
-        t523 <- rdU axis ((3 * (truncate t495)) + 2)
-        let !s524 = ((t519 * t523) - (t520 * t522))
-        let !s525 = ((t520 * t521) - (t518 * t523))
-        let !s526 = ((t518 * t522) - (t519 * t521))
-        t527 <- rdU scalars (6 * (truncate t495))
-        t528 <- rdU scalars ((6 * (truncate t495)) + 5)
-        t529 <- rdU scalars ((6 * (truncate t495)) + 2)
-        t530 <- rdU scalars ((6 * (truncate t495)) + 3)
+      t490 <- rdU mouse 1
+      chkI scalars (6 * (truncate t490)) 2 2
+      t491 <- rdU scalars ((6 * (truncate t490)) + 2)
+      if t491 > 0 then do
+        chkI scalars (6 * (truncate t490)) 0 5
+        t492 <- rdU scalars ((6 * (truncate t490)) + 3)
+        t493 <- rdU params 0
+        chkI pos (3 * (truncate t490)) 0 2
+        t494 <- rdU pos (3 * (truncate t490))
+        t495 <- rdU pos ((3 * (truncate t490)) + 1)
+        t496 <- rdU pos ((3 * (truncate t490)) + 2)
+        chkI normal (3 * (truncate t490)) 0 2
+        t497 <- rdU normal (3 * (truncate t490))
+        t498 <- rdU normal ((3 * (truncate t490)) + 1)
+        t499 <- rdU normal ((3 * (truncate t490)) + 2)
+        chkI axis (3 * (truncate t490)) 0 2
+        t500 <- rdU axis (3 * (truncate t490))
+        t501 <- rdU axis ((3 * (truncate t490)) + 1)
+        t502 <- rdU axis ((3 * (truncate t490)) + 2)
+        let !s503 = ((t498 * t502) - (t499 * t501))
+        let !s504 = ((t499 * t500) - (t497 * t502))
+        let !s505 = ((t497 * t501) - (t498 * t500))
+        t506 <- rdU scalars (6 * (truncate t490))
+        t507 <- rdU scalars ((6 * (truncate t490)) + 5)
+        t508 <- rdU scalars ((6 * (truncate t490)) + 2)
+        t509 <- rdU scalars ((6 * (truncate t490)) + 3)
+        t510 <- rdU pos (3 * (truncate t490))
+        t511 <- rdU pos ((3 * (truncate t490)) + 1)
+        t512 <- rdU pos ((3 * (truncate t490)) + 2)
+        t513 <- rdU normal (3 * (truncate t490))
+        t514 <- rdU normal ((3 * (truncate t490)) + 1)
+        t515 <- rdU normal ((3 * (truncate t490)) + 2)
+        t516 <- rdU axis (3 * (truncate t490))
+        t517 <- rdU axis ((3 * (truncate t490)) + 1)
+        t518 <- rdU axis ((3 * (truncate t490)) + 2)
+        let !s519 = ((t514 * t518) - (t515 * t517))
+        let !s520 = ((t515 * t516) - (t513 * t518))
+        let !s521 = ((t513 * t517) - (t514 * t516))
+        t522 <- rdU scalars (6 * (truncate t490))
+        t523 <- rdU scalars ((6 * (truncate t490)) + 5)
+        t524 <- rdU scalars ((6 * (truncate t490)) + 2)
+        t525 <- rdU scalars ((6 * (truncate t490)) + 3)
         chkI mouse 0 2 11
-        t531 <- rdU mouse 2
-        t532 <- rdU mouse 3
-        let !t533 = (t531 / 4.0)
-        let !t534 = (if (abs t533) > 0 then 1.0 else 0.0)
-        let !t535 = (t527 + t532)
-        let !t536 = (cos t535)
-        let !t537 = (sin t535)
-        let !t538 = (t515 + (t533 * ((t536 * t521) + (t537 * s524))))
-        let !t539 = (t516 + (t533 * ((t536 * t522) + (t537 * s525))))
-        let !t540 = (t517 + (t533 * ((t536 * t523) + (t537 * s526))))
-        let !t541 = (sqrt (((t538 * t538) + (t539 * t539)) + (t540 * t540)))
-        let !t542 = (t541 - 1.0)
-        let !t543 = (recip (2.0 * t541))
-        let !t544 = (recip (2.0 * (sqrt (((t515 * t515) + (t516 * t516)) + (t517 * t517)))))
-        let !t545 = (t544 * (t515 + t515))
-        let !t546 = (t544 * (t516 + t516))
-        let !t547 = (t544 * (t517 + t517))
-        let !t548 = (sqrt (((t545 * t545) + (t546 * t546)) + (t547 * t547)))
-        let !t549 = (if t548 > 0 then (recip (if (t548 - 1.0e-300) > 0 then t548 else 1.0e-300)) else 0.0)
-        let !t550 = (t549 * t545)
-        let !t551 = (t549 * t546)
-        let !t552 = (t549 * t547)
-        let !t553 = ((((t543 * (t538 + t538)) * t550) + ((t543 * (t539 + t539)) * t551)) + ((t543 * (t540 + t540)) * t552))
-        let !t554 = (if ((abs t542) - 1.0e-10) > 0 then (if (abs t553) > 0 then 1.0 else 0.0) else 0.0)
-        let !t555 = (if t554 > 0 then (t538 + (negate ((t542 / t553) * t550))) else t538)
-        let !t556 = (if t554 > 0 then (t539 + (negate ((t542 / t553) * t551))) else t539)
-        let !t557 = (if t554 > 0 then (t540 + (negate ((t542 / t553) * t552))) else t540)
-        let !t558 = (sqrt (((t555 * t555) + (t556 * t556)) + (t557 * t557)))
-        let !t559 = (t558 - 1.0)
-        let !t560 = (recip (2.0 * t558))
-        let !t561 = ((((t560 * (t555 + t555)) * t550) + ((t560 * (t556 + t556)) * t551)) + ((t560 * (t557 + t557)) * t552))
-        let !t562 = (if ((abs t559) - 1.0e-10) > 0 then (if (abs t561) > 0 then 1.0 else 0.0) else 0.0)
-        let !t563 = (if t562 > 0 then (t555 + (negate ((t559 / t561) * t550))) else t555)
-        let !t564 = (if t562 > 0 then (t556 + (negate ((t559 / t561) * t551))) else t556)
-        let !t565 = (if t562 > 0 then (t557 + (negate ((t559 / t561) * t552))) else t557)
-        let !t566 = (sqrt (((t563 * t563) + (t564 * t564)) + (t565 * t565)))
-        let !t567 = (t566 - 1.0)
-        let !t568 = (recip (2.0 * t566))
-        let !t569 = ((((t568 * (t563 + t563)) * t550) + ((t568 * (t564 + t564)) * t551)) + ((t568 * (t565 + t565)) * t552))
-        let !t570 = (if ((abs t567) - 1.0e-10) > 0 then (if (abs t569) > 0 then 1.0 else 0.0) else 0.0)
-        let !t571 = (1.0 - t534)
-        let !s572 = ((t534 * (if t570 > 0 then (t563 + (negate ((t567 / t569) * t550))) else t563)) + (t571 * t515))
-        let !s573 = ((t534 * (if t570 > 0 then (t564 + (negate ((t567 / t569) * t551))) else t564)) + (t571 * t516))
-        let !s574 = ((t534 * (if t570 > 0 then (t565 + (negate ((t567 / t569) * t552))) else t565)) + (t571 * t517))
-        let !t575 = ((t536 * t521) + (t537 * s524))
-        let !t576 = ((t536 * t522) + (t537 * s525))
-        let !t577 = ((t536 * t523) + (t537 * s526))
-        let !t578 = (sqrt (((t575 * t575) + (t576 * t576)) + (t577 * t577)))
-        let !t579 = (if (abs t533) > 0 then (recip t533) else 0.0)
-        let !t580 = (t579 * ((if t570 > 0 then (t563 + (negate ((t567 / t569) * t550))) else t563) + (negate t515)))
-        let !t581 = (t568 * (t563 + t563))
-        let !t582 = (t568 * (t564 + t564))
-        let !t583 = (t568 * (t565 + t565))
-        let !t584 = (sqrt (((t581 * t581) + (t582 * t582)) + (t583 * t583)))
-        let !t585 = (if t584 > 0 then (recip (if (t584 - 1.0e-300) > 0 then t584 else 1.0e-300)) else 0.0)
-        let !t586 = (t585 * t581)
-        let !t587 = (t585 * t582)
-        let !t588 = (t579 * ((if t570 > 0 then (t564 + (negate ((t567 / t569) * t551))) else t564) + (negate t516)))
-        let !t589 = (t585 * t583)
-        let !t590 = (t579 * ((if t570 > 0 then (t565 + (negate ((t567 / t569) * t552))) else t565) + (negate t517)))
-        let !t591 = (((t586 * t580) + (t587 * t588)) + (t589 * t590))
-        let !t592 = (t580 + (negate (t591 * t586)))
-        let !t593 = (t588 + (negate (t591 * t587)))
-        let !t594 = (t590 + (negate (t591 * t589)))
-        let !t595 = (sqrt (((t592 * t592) + (t593 * t593)) + (t594 * t594)))
-        let !t596 = (if t595 > 0 then (recip (if (t595 - 1.0e-300) > 0 then t595 else 1.0e-300)) else 0.0)
-        let !s597 = ((t534 * (t578 * (t596 * t592))) + (t571 * t575))
-        let !s598 = ((t534 * (t578 * (t596 * t593))) + (t571 * t576))
-        let !s599 = ((t534 * (t578 * (t596 * t594))) + (t571 * t577))
-        let !t600 = (s572 + (t533 * s597))
-        let !t601 = (s573 + (t533 * s598))
-        let !t602 = (s574 + (t533 * s599))
-        let !t603 = (sqrt (((t600 * t600) + (t601 * t601)) + (t602 * t602)))
-        let !t604 = (t603 - 1.0)
-        let !t605 = (recip (2.0 * t603))
-        let !t606 = (recip (2.0 * (sqrt (((s572 * s572) + (s573 * s573)) + (s574 * s574)))))
-        let !t607 = (t606 * (s572 + s572))
-        let !t608 = (t606 * (s573 + s573))
-        let !t609 = (t606 * (s574 + s574))
-        let !t610 = (sqrt (((t607 * t607) + (t608 * t608)) + (t609 * t609)))
-        let !t611 = (if t610 > 0 then (recip (if (t610 - 1.0e-300) > 0 then t610 else 1.0e-300)) else 0.0)
-        let !t612 = (t611 * t607)
-        let !t613 = (t611 * t608)
-        let !t614 = (t611 * t609)
-        let !t615 = ((((t605 * (t600 + t600)) * t612) + ((t605 * (t601 + t601)) * t613)) + ((t605 * (t602 + t602)) * t614))
-        let !t616 = (if ((abs t604) - 1.0e-10) > 0 then (if (abs t615) > 0 then 1.0 else 0.0) else 0.0)
-        let !t617 = (if t616 > 0 then (t600 + (negate ((t604 / t615) * t612))) else t600)
-        let !t618 = (if t616 > 0 then (t601 + (negate ((t604 / t615) * t613))) else t601)
-        let !t619 = (if t616 > 0 then (t602 + (negate ((t604 / t615) * t614))) else t602)
-        let !t620 = (sqrt (((t617 * t617) + (t618 * t618)) + (t619 * t619)))
-        let !t621 = (t620 - 1.0)
-        let !t622 = (recip (2.0 * t620))
-        let !t623 = ((((t622 * (t617 + t617)) * t612) + ((t622 * (t618 + t618)) * t613)) + ((t622 * (t619 + t619)) * t614))
-        let !t624 = (if ((abs t621) - 1.0e-10) > 0 then (if (abs t623) > 0 then 1.0 else 0.0) else 0.0)
-        let !t625 = (if t624 > 0 then (t617 + (negate ((t621 / t623) * t612))) else t617)
-        let !t626 = (if t624 > 0 then (t618 + (negate ((t621 / t623) * t613))) else t618)
-        let !t627 = (if t624 > 0 then (t619 + (negate ((t621 / t623) * t614))) else t619)
-        let !t628 = (sqrt (((t625 * t625) + (t626 * t626)) + (t627 * t627)))
-        let !t629 = (t628 - 1.0)
-        let !t630 = (recip (2.0 * t628))
-        let !t631 = ((((t630 * (t625 + t625)) * t612) + ((t630 * (t626 + t626)) * t613)) + ((t630 * (t627 + t627)) * t614))
-        let !t632 = (if ((abs t629) - 1.0e-10) > 0 then (if (abs t631) > 0 then 1.0 else 0.0) else 0.0)
-        let !s633 = ((t534 * (if t632 > 0 then (t625 + (negate ((t629 / t631) * t612))) else t625)) + (t571 * s572))
-        let !s634 = ((t534 * (if t632 > 0 then (t626 + (negate ((t629 / t631) * t613))) else t626)) + (t571 * s573))
-        let !s635 = ((t534 * (if t632 > 0 then (t627 + (negate ((t629 / t631) * t614))) else t627)) + (t571 * s574))
-        let !t636 = (sqrt (((s597 * s597) + (s598 * s598)) + (s599 * s599)))
-        let !t637 = (t579 * ((if t632 > 0 then (t625 + (negate ((t629 / t631) * t612))) else t625) + (negate s572)))
-        let !t638 = (t630 * (t625 + t625))
-        let !t639 = (t630 * (t626 + t626))
-        let !t640 = (t630 * (t627 + t627))
-        let !t641 = (sqrt (((t638 * t638) + (t639 * t639)) + (t640 * t640)))
-        let !t642 = (if t641 > 0 then (recip (if (t641 - 1.0e-300) > 0 then t641 else 1.0e-300)) else 0.0)
-        let !t643 = (t642 * t638)
-        let !t644 = (t642 * t639)
-        let !t645 = (t579 * ((if t632 > 0 then (t626 + (negate ((t629 / t631) * t613))) else t626) + (negate s573)))
-        let !t646 = (t642 * t640)
-        let !t647 = (t579 * ((if t632 > 0 then (t627 + (negate ((t629 / t631) * t614))) else t627) + (negate s574)))
-        let !t648 = (((t643 * t637) + (t644 * t645)) + (t646 * t647))
-        let !t649 = (t637 + (negate (t648 * t643)))
-        let !t650 = (t645 + (negate (t648 * t644)))
-        let !t651 = (t647 + (negate (t648 * t646)))
-        let !t652 = (sqrt (((t649 * t649) + (t650 * t650)) + (t651 * t651)))
-        let !t653 = (if t652 > 0 then (recip (if (t652 - 1.0e-300) > 0 then t652 else 1.0e-300)) else 0.0)
-        let !s654 = ((t534 * (t636 * (t653 * t649))) + (t571 * s597))
-        let !s655 = ((t534 * (t636 * (t653 * t650))) + (t571 * s598))
-        let !s656 = ((t534 * (t636 * (t653 * t651))) + (t571 * s599))
-        let !t657 = (s633 + (t533 * s654))
-        let !t658 = (s634 + (t533 * s655))
-        let !t659 = (s635 + (t533 * s656))
-        let !t660 = (sqrt (((t657 * t657) + (t658 * t658)) + (t659 * t659)))
-        let !t661 = (t660 - 1.0)
-        let !t662 = (recip (2.0 * t660))
-        let !t663 = (recip (2.0 * (sqrt (((s633 * s633) + (s634 * s634)) + (s635 * s635)))))
-        let !t664 = (t663 * (s633 + s633))
-        let !t665 = (t663 * (s634 + s634))
-        let !t666 = (t663 * (s635 + s635))
-        let !t667 = (sqrt (((t664 * t664) + (t665 * t665)) + (t666 * t666)))
-        let !t668 = (if t667 > 0 then (recip (if (t667 - 1.0e-300) > 0 then t667 else 1.0e-300)) else 0.0)
-        let !t669 = (t668 * t664)
-        let !t670 = (t668 * t665)
-        let !t671 = (t668 * t666)
-        let !t672 = ((((t662 * (t657 + t657)) * t669) + ((t662 * (t658 + t658)) * t670)) + ((t662 * (t659 + t659)) * t671))
-        let !t673 = (if ((abs t661) - 1.0e-10) > 0 then (if (abs t672) > 0 then 1.0 else 0.0) else 0.0)
-        let !t674 = (if t673 > 0 then (t657 + (negate ((t661 / t672) * t669))) else t657)
-        let !t675 = (if t673 > 0 then (t658 + (negate ((t661 / t672) * t670))) else t658)
-        let !t676 = (if t673 > 0 then (t659 + (negate ((t661 / t672) * t671))) else t659)
-        let !t677 = (sqrt (((t674 * t674) + (t675 * t675)) + (t676 * t676)))
-        let !t678 = (t677 - 1.0)
-        let !t679 = (recip (2.0 * t677))
-        let !t680 = ((((t679 * (t674 + t674)) * t669) + ((t679 * (t675 + t675)) * t670)) + ((t679 * (t676 + t676)) * t671))
-        let !t681 = (if ((abs t678) - 1.0e-10) > 0 then (if (abs t680) > 0 then 1.0 else 0.0) else 0.0)
-        let !t682 = (if t681 > 0 then (t674 + (negate ((t678 / t680) * t669))) else t674)
-        let !t683 = (if t681 > 0 then (t675 + (negate ((t678 / t680) * t670))) else t675)
-        let !t684 = (if t681 > 0 then (t676 + (negate ((t678 / t680) * t671))) else t676)
-        let !t685 = (sqrt (((t682 * t682) + (t683 * t683)) + (t684 * t684)))
-        let !t686 = (t685 - 1.0)
-        let !t687 = (recip (2.0 * t685))
-        let !t688 = ((((t687 * (t682 + t682)) * t669) + ((t687 * (t683 + t683)) * t670)) + ((t687 * (t684 + t684)) * t671))
-        let !t689 = (if ((abs t686) - 1.0e-10) > 0 then (if (abs t688) > 0 then 1.0 else 0.0) else 0.0)
-        let !s690 = ((t534 * (if t689 > 0 then (t682 + (negate ((t686 / t688) * t669))) else t682)) + (t571 * s633))
-        let !s691 = ((t534 * (if t689 > 0 then (t683 + (negate ((t686 / t688) * t670))) else t683)) + (t571 * s634))
-        let !s692 = ((t534 * (if t689 > 0 then (t684 + (negate ((t686 / t688) * t671))) else t684)) + (t571 * s635))
-        let !t693 = (sqrt (((s654 * s654) + (s655 * s655)) + (s656 * s656)))
-        let !t694 = (t579 * ((if t689 > 0 then (t682 + (negate ((t686 / t688) * t669))) else t682) + (negate s633)))
-        let !t695 = (t687 * (t682 + t682))
-        let !t696 = (t687 * (t683 + t683))
-        let !t697 = (t687 * (t684 + t684))
-        let !t698 = (sqrt (((t695 * t695) + (t696 * t696)) + (t697 * t697)))
-        let !t699 = (if t698 > 0 then (recip (if (t698 - 1.0e-300) > 0 then t698 else 1.0e-300)) else 0.0)
-        let !t700 = (t699 * t695)
-        let !t701 = (t699 * t696)
-        let !t702 = (t579 * ((if t689 > 0 then (t683 + (negate ((t686 / t688) * t670))) else t683) + (negate s634)))
-        let !t703 = (t699 * t697)
-        let !t704 = (t579 * ((if t689 > 0 then (t684 + (negate ((t686 / t688) * t671))) else t684) + (negate s635)))
-        let !t705 = (((t700 * t694) + (t701 * t702)) + (t703 * t704))
-        let !t706 = (t694 + (negate (t705 * t700)))
-        let !t707 = (t702 + (negate (t705 * t701)))
-        let !t708 = (t704 + (negate (t705 * t703)))
-        let !t709 = (sqrt (((t706 * t706) + (t707 * t707)) + (t708 * t708)))
-        let !t710 = (if t709 > 0 then (recip (if (t709 - 1.0e-300) > 0 then t709 else 1.0e-300)) else 0.0)
-        let !s711 = ((t534 * (t693 * (t710 * t706))) + (t571 * s654))
-        let !s712 = ((t534 * (t693 * (t710 * t707))) + (t571 * s655))
-        let !s713 = ((t534 * (t693 * (t710 * t708))) + (t571 * s656))
-        let !t714 = (s690 + (t533 * s711))
-        let !t715 = (s691 + (t533 * s712))
-        let !t716 = (s692 + (t533 * s713))
-        let !t717 = (sqrt (((t714 * t714) + (t715 * t715)) + (t716 * t716)))
-        let !t718 = (t717 - 1.0)
-        let !t719 = (recip (2.0 * t717))
-        let !t720 = (recip (2.0 * (sqrt (((s690 * s690) + (s691 * s691)) + (s692 * s692)))))
-        let !t721 = (t720 * (s690 + s690))
-        let !t722 = (t720 * (s691 + s691))
-        let !t723 = (t720 * (s692 + s692))
-        let !t724 = (sqrt (((t721 * t721) + (t722 * t722)) + (t723 * t723)))
-        let !t725 = (if t724 > 0 then (recip (if (t724 - 1.0e-300) > 0 then t724 else 1.0e-300)) else 0.0)
-        let !t726 = (t725 * t721)
-        let !t727 = (t725 * t722)
-        let !t728 = (t725 * t723)
-        let !t729 = ((((t719 * (t714 + t714)) * t726) + ((t719 * (t715 + t715)) * t727)) + ((t719 * (t716 + t716)) * t728))
-        let !t730 = (if ((abs t718) - 1.0e-10) > 0 then (if (abs t729) > 0 then 1.0 else 0.0) else 0.0)
-        let !t731 = (if t730 > 0 then (t714 + (negate ((t718 / t729) * t726))) else t714)
-        let !t732 = (if t730 > 0 then (t715 + (negate ((t718 / t729) * t727))) else t715)
-        let !t733 = (if t730 > 0 then (t716 + (negate ((t718 / t729) * t728))) else t716)
-        let !t734 = (sqrt (((t731 * t731) + (t732 * t732)) + (t733 * t733)))
-        let !t735 = (t734 - 1.0)
-        let !t736 = (recip (2.0 * t734))
-        let !t737 = ((((t736 * (t731 + t731)) * t726) + ((t736 * (t732 + t732)) * t727)) + ((t736 * (t733 + t733)) * t728))
-        let !t738 = (if ((abs t735) - 1.0e-10) > 0 then (if (abs t737) > 0 then 1.0 else 0.0) else 0.0)
-        let !t739 = (if t738 > 0 then (t731 + (negate ((t735 / t737) * t726))) else t731)
-        let !t740 = (if t738 > 0 then (t732 + (negate ((t735 / t737) * t727))) else t732)
-        let !t741 = (if t738 > 0 then (t733 + (negate ((t735 / t737) * t728))) else t733)
-        let !t742 = (sqrt (((t739 * t739) + (t740 * t740)) + (t741 * t741)))
-        let !t743 = (t742 - 1.0)
-        let !t744 = (recip (2.0 * t742))
-        let !t745 = ((((t744 * (t739 + t739)) * t726) + ((t744 * (t740 + t740)) * t727)) + ((t744 * (t741 + t741)) * t728))
-        let !t746 = (if ((abs t743) - 1.0e-10) > 0 then (if (abs t745) > 0 then 1.0 else 0.0) else 0.0)
-        let !s747 = ((t534 * (if t746 > 0 then (t739 + (negate ((t743 / t745) * t726))) else t739)) + (t571 * s690))
-        let !s748 = ((t534 * (if t746 > 0 then (t740 + (negate ((t743 / t745) * t727))) else t740)) + (t571 * s691))
-        let !s749 = ((t534 * (if t746 > 0 then (t741 + (negate ((t743 / t745) * t728))) else t741)) + (t571 * s692))
-        let !t750 = (sqrt (((s711 * s711) + (s712 * s712)) + (s713 * s713)))
-        let !t751 = (t579 * ((if t746 > 0 then (t739 + (negate ((t743 / t745) * t726))) else t739) + (negate s690)))
-        let !t752 = (t744 * (t739 + t739))
-        let !t753 = (t744 * (t740 + t740))
-        let !t754 = (t744 * (t741 + t741))
-        let !t755 = (sqrt (((t752 * t752) + (t753 * t753)) + (t754 * t754)))
-        let !t756 = (if t755 > 0 then (recip (if (t755 - 1.0e-300) > 0 then t755 else 1.0e-300)) else 0.0)
-        let !t757 = (t756 * t752)
-        let !t758 = (t756 * t753)
-        let !t759 = (t579 * ((if t746 > 0 then (t740 + (negate ((t743 / t745) * t727))) else t740) + (negate s691)))
-        let !t760 = (t756 * t754)
-        let !t761 = (t579 * ((if t746 > 0 then (t741 + (negate ((t743 / t745) * t728))) else t741) + (negate s692)))
-        let !t762 = (((t757 * t751) + (t758 * t759)) + (t760 * t761))
-        let !t763 = (t751 + (negate (t762 * t757)))
-        let !t764 = (t759 + (negate (t762 * t758)))
-        let !t765 = (t761 + (negate (t762 * t760)))
-        let !t766 = (sqrt (((t763 * t763) + (t764 * t764)) + (t765 * t765)))
-        let !t767 = (if t766 > 0 then (recip (if (t766 - 1.0e-300) > 0 then t766 else 1.0e-300)) else 0.0)
-        let !s768 = ((t534 * (t750 * (t767 * t763))) + (t571 * s711))
-        let !s769 = ((t534 * (t750 * (t767 * t764))) + (t571 * s712))
-        let !s770 = ((t534 * (t750 * (t767 * t765))) + (t571 * s713))
-        t771 <- rdU mouse 4
-        t772 <- rdU mouse 5
-        t773 <- rdU mouse 6
-        t774 <- rdU mouse 7
-        t775 <- rdU mouse 8
-        t776 <- rdU mouse 9
-        let !t777 = (recip t496)
-        let !t778 = (6.283185307179586 * t774)
-        let !s779 = (recip (t498 * ((((2.0 * t777) * t775) * t778) + (t498 * ((t777 * t778) * t778)))))
-        let !s780 = ((t498 * ((t777 * t778) * t778)) * s779)
-        let !s781 = (s747 + (negate t499))
-        let !s782 = (s748 + (negate t500))
-        let !s783 = (s749 + (negate t501))
-        let !s784 = (s747 + (negate t771))
-        let !s785 = (s748 + (negate t772))
-        let !s786 = (s749 + (negate t773))
-        t787 <- rdU mouse 10
-        chkI vel (3 * (truncate t495)) 0 2
-        t788 <- rdU vel (3 * (truncate t495))
-        t789 <- rdU vel ((3 * (truncate t495)) + 1)
-        t790 <- rdU vel ((3 * (truncate t495)) + 2)
-        t791 <- rdU scalars ((6 * (truncate t495)) + 1)
-        let !t792 = (t776 * t498)
-        let !t793 = (negate t792)
-        let !t794 = (((((s782 * t507) - (s783 * t506)) * t502) + (((s783 * t505) - (s781 * t507)) * t503)) + (((s781 * t506) - (s782 * t505)) * t504))
-        let !t795 = (t787 + ((negate ((((((t505 * t788) + (t506 * t789)) + (t507 * t790)) + (t794 * t791)) + (s780 * (((s784 * t505) + (s785 * t506)) + (s786 * t507)))) + (s779 * t787))) / (((t496 * (((t505 * t505) + (t506 * t506)) + (t507 * t507))) + ((t497 * t794) * t794)) + s779)))
-        let !t796 = (if (t795 - t792) > 0 then t792 else t795)
-        let !t797 = (if (t793 - t796) > 0 then t793 else t796)
-        let !s798 = (if (1.0 - (abs (t797 - t797))) > 0 then t797 else 0.0)
-        wrU mouse 10 s798
-        t799 <- rdU scalars ((6 * (truncate t495)) + 2)
-        t800 <- rdU scalars ((6 * (truncate t495)) + 3)
-        t801 <- rdU vel (3 * (truncate t495))
-        t802 <- rdU vel ((3 * (truncate t495)) + 1)
-        t803 <- rdU vel ((3 * (truncate t495)) + 2)
-        t804 <- rdU scalars ((6 * (truncate t495)) + 1)
-        wrU vel (3 * (truncate t495)) (t801 + ((t799 * (s798 - t787)) * t505))
-        wrU vel ((3 * (truncate t495)) + 1) (t802 + ((t799 * (s798 - t787)) * t506))
-        wrU vel ((3 * (truncate t495)) + 2) (t803 + ((t799 * (s798 - t787)) * t507))
-        wrU scalars ((6 * (truncate t495)) + 1) (t804 + ((t800 * (s798 - t787)) * t794))
-        t805 <- rdU mouse 11
-        t806 <- rdU vel (3 * (truncate t495))
-        t807 <- rdU vel ((3 * (truncate t495)) + 1)
-        t808 <- rdU vel ((3 * (truncate t495)) + 2)
-        t809 <- rdU scalars ((6 * (truncate t495)) + 1)
-        let !t810 = (((((s782 * s510) - (s783 * s509)) * t502) + (((s783 * s508) - (s781 * s510)) * t503)) + (((s781 * s509) - (s782 * s508)) * t504))
-        let !t811 = (t805 + ((negate ((((((s508 * t806) + (s509 * t807)) + (s510 * t808)) + (t810 * t809)) + (s780 * (((s784 * s508) + (s785 * s509)) + (s786 * s510)))) + (s779 * t805))) / (((t496 * (((s508 * s508) + (s509 * s509)) + (s510 * s510))) + ((t497 * t810) * t810)) + s779)))
-        let !t812 = (if (t811 - t792) > 0 then t792 else t811)
-        let !t813 = (if (t793 - t812) > 0 then t793 else t812)
-        let !s814 = (if (1.0 - (abs (t813 - t813))) > 0 then t813 else 0.0)
-        wrU mouse 11 s814
-        t815 <- rdU scalars ((6 * (truncate t495)) + 2)
-        t816 <- rdU scalars ((6 * (truncate t495)) + 3)
-        t817 <- rdU vel (3 * (truncate t495))
-        t818 <- rdU vel ((3 * (truncate t495)) + 1)
-        t819 <- rdU vel ((3 * (truncate t495)) + 2)
-        t820 <- rdU scalars ((6 * (truncate t495)) + 1)
-        wrU vel (3 * (truncate t495)) (t817 + ((t815 * (s814 - t805)) * s508))
-        wrU vel ((3 * (truncate t495)) + 1) (t818 + ((t815 * (s814 - t805)) * s509))
-        wrU vel ((3 * (truncate t495)) + 2) (t819 + ((t815 * (s814 - t805)) * s510))
-        wrU scalars ((6 * (truncate t495)) + 1) (t820 + ((t816 * (s814 - t805)) * t810))
+        t526 <- rdU mouse 2
+        t527 <- rdU mouse 3
+        let !t528 = (t526 / 4.0)
+        let !t529 = (if (abs t528) > 0 then 1.0 else 0.0)
+        let !t530 = (t522 + t527)
+        let !t531 = (cos t530)
+        let !t532 = (sin t530)
+        let !t533 = (t510 + (t528 * ((t531 * t516) + (t532 * s519))))
+        let !t534 = (t511 + (t528 * ((t531 * t517) + (t532 * s520))))
+        let !t535 = (t512 + (t528 * ((t531 * t518) + (t532 * s521))))
+        let !t536 = (sqrt (((t533 * t533) + (t534 * t534)) + (t535 * t535)))
+        let !t537 = (t536 - 1.0)
+        let !t538 = (recip (2.0 * t536))
+        let !t539 = (recip (2.0 * (sqrt (((t510 * t510) + (t511 * t511)) + (t512 * t512)))))
+        let !t540 = (t539 * (t510 + t510))
+        let !t541 = (t539 * (t511 + t511))
+        let !t542 = (t539 * (t512 + t512))
+        let !t543 = (sqrt (((t540 * t540) + (t541 * t541)) + (t542 * t542)))
+        let !t544 = (if t543 > 0 then (recip (if (t543 - 1.0e-300) > 0 then t543 else 1.0e-300)) else 0.0)
+        let !t545 = (t544 * t540)
+        let !t546 = (t544 * t541)
+        let !t547 = (t544 * t542)
+        let !t548 = ((((t538 * (t533 + t533)) * t545) + ((t538 * (t534 + t534)) * t546)) + ((t538 * (t535 + t535)) * t547))
+        let !t549 = (if ((abs t537) - 1.0e-10) > 0 then (if (abs t548) > 0 then 1.0 else 0.0) else 0.0)
+        let !t550 = (if t549 > 0 then (t533 + (negate ((t537 / t548) * t545))) else t533)
+        let !t551 = (if t549 > 0 then (t534 + (negate ((t537 / t548) * t546))) else t534)
+        let !t552 = (if t549 > 0 then (t535 + (negate ((t537 / t548) * t547))) else t535)
+        let !t553 = (sqrt (((t550 * t550) + (t551 * t551)) + (t552 * t552)))
+        let !t554 = (t553 - 1.0)
+        let !t555 = (recip (2.0 * t553))
+        let !t556 = ((((t555 * (t550 + t550)) * t545) + ((t555 * (t551 + t551)) * t546)) + ((t555 * (t552 + t552)) * t547))
+        let !t557 = (if ((abs t554) - 1.0e-10) > 0 then (if (abs t556) > 0 then 1.0 else 0.0) else 0.0)
+        let !t558 = (if t557 > 0 then (t550 + (negate ((t554 / t556) * t545))) else t550)
+        let !t559 = (if t557 > 0 then (t551 + (negate ((t554 / t556) * t546))) else t551)
+        let !t560 = (if t557 > 0 then (t552 + (negate ((t554 / t556) * t547))) else t552)
+        let !t561 = (sqrt (((t558 * t558) + (t559 * t559)) + (t560 * t560)))
+        let !t562 = (t561 - 1.0)
+        let !t563 = (recip (2.0 * t561))
+        let !t564 = ((((t563 * (t558 + t558)) * t545) + ((t563 * (t559 + t559)) * t546)) + ((t563 * (t560 + t560)) * t547))
+        let !t565 = (if ((abs t562) - 1.0e-10) > 0 then (if (abs t564) > 0 then 1.0 else 0.0) else 0.0)
+        let !t566 = (1.0 - t529)
+        let !s567 = ((t529 * (if t565 > 0 then (t558 + (negate ((t562 / t564) * t545))) else t558)) + (t566 * t510))
+        let !s568 = ((t529 * (if t565 > 0 then (t559 + (negate ((t562 / t564) * t546))) else t559)) + (t566 * t511))
+        let !s569 = ((t529 * (if t565 > 0 then (t560 + (negate ((t562 / t564) * t547))) else t560)) + (t566 * t512))
+        let !t570 = ((t531 * t516) + (t532 * s519))
+        let !t571 = ((t531 * t517) + (t532 * s520))
+        let !t572 = ((t531 * t518) + (t532 * s521))
+        let !t573 = (sqrt (((t570 * t570) + (t571 * t571)) + (t572 * t572)))
+        let !t574 = (if (abs t528) > 0 then (recip t528) else 0.0)
+        let !t575 = (t574 * ((if t565 > 0 then (t558 + (negate ((t562 / t564) * t545))) else t558) + (negate t510)))
+        let !t576 = (t563 * (t558 + t558))
+        let !t577 = (t563 * (t559 + t559))
+        let !t578 = (t563 * (t560 + t560))
+        let !t579 = (sqrt (((t576 * t576) + (t577 * t577)) + (t578 * t578)))
+        let !t580 = (if t579 > 0 then (recip (if (t579 - 1.0e-300) > 0 then t579 else 1.0e-300)) else 0.0)
+        let !t581 = (t580 * t576)
+        let !t582 = (t580 * t577)
+        let !t583 = (t574 * ((if t565 > 0 then (t559 + (negate ((t562 / t564) * t546))) else t559) + (negate t511)))
+        let !t584 = (t580 * t578)
+        let !t585 = (t574 * ((if t565 > 0 then (t560 + (negate ((t562 / t564) * t547))) else t560) + (negate t512)))
+        let !t586 = (((t581 * t575) + (t582 * t583)) + (t584 * t585))
+        let !t587 = (t575 + (negate (t586 * t581)))
+        let !t588 = (t583 + (negate (t586 * t582)))
+        let !t589 = (t585 + (negate (t586 * t584)))
+        let !t590 = (sqrt (((t587 * t587) + (t588 * t588)) + (t589 * t589)))
+        let !t591 = (if t590 > 0 then (recip (if (t590 - 1.0e-300) > 0 then t590 else 1.0e-300)) else 0.0)
+        let !s592 = ((t529 * (t573 * (t591 * t587))) + (t566 * t570))
+        let !s593 = ((t529 * (t573 * (t591 * t588))) + (t566 * t571))
+        let !s594 = ((t529 * (t573 * (t591 * t589))) + (t566 * t572))
+        let !t595 = (s567 + (t528 * s592))
+        let !t596 = (s568 + (t528 * s593))
+        let !t597 = (s569 + (t528 * s594))
+        let !t598 = (sqrt (((t595 * t595) + (t596 * t596)) + (t597 * t597)))
+        let !t599 = (t598 - 1.0)
+        let !t600 = (recip (2.0 * t598))
+        let !t601 = (recip (2.0 * (sqrt (((s567 * s567) + (s568 * s568)) + (s569 * s569)))))
+        let !t602 = (t601 * (s567 + s567))
+        let !t603 = (t601 * (s568 + s568))
+        let !t604 = (t601 * (s569 + s569))
+        let !t605 = (sqrt (((t602 * t602) + (t603 * t603)) + (t604 * t604)))
+        let !t606 = (if t605 > 0 then (recip (if (t605 - 1.0e-300) > 0 then t605 else 1.0e-300)) else 0.0)
+        let !t607 = (t606 * t602)
+        let !t608 = (t606 * t603)
+        let !t609 = (t606 * t604)
+        let !t610 = ((((t600 * (t595 + t595)) * t607) + ((t600 * (t596 + t596)) * t608)) + ((t600 * (t597 + t597)) * t609))
+        let !t611 = (if ((abs t599) - 1.0e-10) > 0 then (if (abs t610) > 0 then 1.0 else 0.0) else 0.0)
+        let !t612 = (if t611 > 0 then (t595 + (negate ((t599 / t610) * t607))) else t595)
+        let !t613 = (if t611 > 0 then (t596 + (negate ((t599 / t610) * t608))) else t596)
+        let !t614 = (if t611 > 0 then (t597 + (negate ((t599 / t610) * t609))) else t597)
+        let !t615 = (sqrt (((t612 * t612) + (t613 * t613)) + (t614 * t614)))
+        let !t616 = (t615 - 1.0)
+        let !t617 = (recip (2.0 * t615))
+        let !t618 = ((((t617 * (t612 + t612)) * t607) + ((t617 * (t613 + t613)) * t608)) + ((t617 * (t614 + t614)) * t609))
+        let !t619 = (if ((abs t616) - 1.0e-10) > 0 then (if (abs t618) > 0 then 1.0 else 0.0) else 0.0)
+        let !t620 = (if t619 > 0 then (t612 + (negate ((t616 / t618) * t607))) else t612)
+        let !t621 = (if t619 > 0 then (t613 + (negate ((t616 / t618) * t608))) else t613)
+        let !t622 = (if t619 > 0 then (t614 + (negate ((t616 / t618) * t609))) else t614)
+        let !t623 = (sqrt (((t620 * t620) + (t621 * t621)) + (t622 * t622)))
+        let !t624 = (t623 - 1.0)
+        let !t625 = (recip (2.0 * t623))
+        let !t626 = ((((t625 * (t620 + t620)) * t607) + ((t625 * (t621 + t621)) * t608)) + ((t625 * (t622 + t622)) * t609))
+        let !t627 = (if ((abs t624) - 1.0e-10) > 0 then (if (abs t626) > 0 then 1.0 else 0.0) else 0.0)
+        let !s628 = ((t529 * (if t627 > 0 then (t620 + (negate ((t624 / t626) * t607))) else t620)) + (t566 * s567))
+        let !s629 = ((t529 * (if t627 > 0 then (t621 + (negate ((t624 / t626) * t608))) else t621)) + (t566 * s568))
+        let !s630 = ((t529 * (if t627 > 0 then (t622 + (negate ((t624 / t626) * t609))) else t622)) + (t566 * s569))
+        let !t631 = (sqrt (((s592 * s592) + (s593 * s593)) + (s594 * s594)))
+        let !t632 = (t574 * ((if t627 > 0 then (t620 + (negate ((t624 / t626) * t607))) else t620) + (negate s567)))
+        let !t633 = (t625 * (t620 + t620))
+        let !t634 = (t625 * (t621 + t621))
+        let !t635 = (t625 * (t622 + t622))
+        let !t636 = (sqrt (((t633 * t633) + (t634 * t634)) + (t635 * t635)))
+        let !t637 = (if t636 > 0 then (recip (if (t636 - 1.0e-300) > 0 then t636 else 1.0e-300)) else 0.0)
+        let !t638 = (t637 * t633)
+        let !t639 = (t637 * t634)
+        let !t640 = (t574 * ((if t627 > 0 then (t621 + (negate ((t624 / t626) * t608))) else t621) + (negate s568)))
+        let !t641 = (t637 * t635)
+        let !t642 = (t574 * ((if t627 > 0 then (t622 + (negate ((t624 / t626) * t609))) else t622) + (negate s569)))
+        let !t643 = (((t638 * t632) + (t639 * t640)) + (t641 * t642))
+        let !t644 = (t632 + (negate (t643 * t638)))
+        let !t645 = (t640 + (negate (t643 * t639)))
+        let !t646 = (t642 + (negate (t643 * t641)))
+        let !t647 = (sqrt (((t644 * t644) + (t645 * t645)) + (t646 * t646)))
+        let !t648 = (if t647 > 0 then (recip (if (t647 - 1.0e-300) > 0 then t647 else 1.0e-300)) else 0.0)
+        let !s649 = ((t529 * (t631 * (t648 * t644))) + (t566 * s592))
+        let !s650 = ((t529 * (t631 * (t648 * t645))) + (t566 * s593))
+        let !s651 = ((t529 * (t631 * (t648 * t646))) + (t566 * s594))
+        let !t652 = (s628 + (t528 * s649))
+        let !t653 = (s629 + (t528 * s650))
+        let !t654 = (s630 + (t528 * s651))
+        let !t655 = (sqrt (((t652 * t652) + (t653 * t653)) + (t654 * t654)))
+        let !t656 = (t655 - 1.0)
+        let !t657 = (recip (2.0 * t655))
+        let !t658 = (recip (2.0 * (sqrt (((s628 * s628) + (s629 * s629)) + (s630 * s630)))))
+        let !t659 = (t658 * (s628 + s628))
+        let !t660 = (t658 * (s629 + s629))
+        let !t661 = (t658 * (s630 + s630))
+        let !t662 = (sqrt (((t659 * t659) + (t660 * t660)) + (t661 * t661)))
+        let !t663 = (if t662 > 0 then (recip (if (t662 - 1.0e-300) > 0 then t662 else 1.0e-300)) else 0.0)
+        let !t664 = (t663 * t659)
+        let !t665 = (t663 * t660)
+        let !t666 = (t663 * t661)
+        let !t667 = ((((t657 * (t652 + t652)) * t664) + ((t657 * (t653 + t653)) * t665)) + ((t657 * (t654 + t654)) * t666))
+        let !t668 = (if ((abs t656) - 1.0e-10) > 0 then (if (abs t667) > 0 then 1.0 else 0.0) else 0.0)
+        let !t669 = (if t668 > 0 then (t652 + (negate ((t656 / t667) * t664))) else t652)
+        let !t670 = (if t668 > 0 then (t653 + (negate ((t656 / t667) * t665))) else t653)
+        let !t671 = (if t668 > 0 then (t654 + (negate ((t656 / t667) * t666))) else t654)
+        let !t672 = (sqrt (((t669 * t669) + (t670 * t670)) + (t671 * t671)))
+        let !t673 = (t672 - 1.0)
+        let !t674 = (recip (2.0 * t672))
+        let !t675 = ((((t674 * (t669 + t669)) * t664) + ((t674 * (t670 + t670)) * t665)) + ((t674 * (t671 + t671)) * t666))
+        let !t676 = (if ((abs t673) - 1.0e-10) > 0 then (if (abs t675) > 0 then 1.0 else 0.0) else 0.0)
+        let !t677 = (if t676 > 0 then (t669 + (negate ((t673 / t675) * t664))) else t669)
+        let !t678 = (if t676 > 0 then (t670 + (negate ((t673 / t675) * t665))) else t670)
+        let !t679 = (if t676 > 0 then (t671 + (negate ((t673 / t675) * t666))) else t671)
+        let !t680 = (sqrt (((t677 * t677) + (t678 * t678)) + (t679 * t679)))
+        let !t681 = (t680 - 1.0)
+        let !t682 = (recip (2.0 * t680))
+        let !t683 = ((((t682 * (t677 + t677)) * t664) + ((t682 * (t678 + t678)) * t665)) + ((t682 * (t679 + t679)) * t666))
+        let !t684 = (if ((abs t681) - 1.0e-10) > 0 then (if (abs t683) > 0 then 1.0 else 0.0) else 0.0)
+        let !s685 = ((t529 * (if t684 > 0 then (t677 + (negate ((t681 / t683) * t664))) else t677)) + (t566 * s628))
+        let !s686 = ((t529 * (if t684 > 0 then (t678 + (negate ((t681 / t683) * t665))) else t678)) + (t566 * s629))
+        let !s687 = ((t529 * (if t684 > 0 then (t679 + (negate ((t681 / t683) * t666))) else t679)) + (t566 * s630))
+        let !t688 = (sqrt (((s649 * s649) + (s650 * s650)) + (s651 * s651)))
+        let !t689 = (t574 * ((if t684 > 0 then (t677 + (negate ((t681 / t683) * t664))) else t677) + (negate s628)))
+        let !t690 = (t682 * (t677 + t677))
+        let !t691 = (t682 * (t678 + t678))
+        let !t692 = (t682 * (t679 + t679))
+        let !t693 = (sqrt (((t690 * t690) + (t691 * t691)) + (t692 * t692)))
+        let !t694 = (if t693 > 0 then (recip (if (t693 - 1.0e-300) > 0 then t693 else 1.0e-300)) else 0.0)
+        let !t695 = (t694 * t690)
+        let !t696 = (t694 * t691)
+        let !t697 = (t574 * ((if t684 > 0 then (t678 + (negate ((t681 / t683) * t665))) else t678) + (negate s629)))
+        let !t698 = (t694 * t692)
+        let !t699 = (t574 * ((if t684 > 0 then (t679 + (negate ((t681 / t683) * t666))) else t679) + (negate s630)))
+        let !t700 = (((t695 * t689) + (t696 * t697)) + (t698 * t699))
+        let !t701 = (t689 + (negate (t700 * t695)))
+        let !t702 = (t697 + (negate (t700 * t696)))
+        let !t703 = (t699 + (negate (t700 * t698)))
+        let !t704 = (sqrt (((t701 * t701) + (t702 * t702)) + (t703 * t703)))
+        let !t705 = (if t704 > 0 then (recip (if (t704 - 1.0e-300) > 0 then t704 else 1.0e-300)) else 0.0)
+        let !s706 = ((t529 * (t688 * (t705 * t701))) + (t566 * s649))
+        let !s707 = ((t529 * (t688 * (t705 * t702))) + (t566 * s650))
+        let !s708 = ((t529 * (t688 * (t705 * t703))) + (t566 * s651))
+        let !t709 = (s685 + (t528 * s706))
+        let !t710 = (s686 + (t528 * s707))
+        let !t711 = (s687 + (t528 * s708))
+        let !t712 = (sqrt (((t709 * t709) + (t710 * t710)) + (t711 * t711)))
+        let !t713 = (t712 - 1.0)
+        let !t714 = (recip (2.0 * t712))
+        let !t715 = (recip (2.0 * (sqrt (((s685 * s685) + (s686 * s686)) + (s687 * s687)))))
+        let !t716 = (t715 * (s685 + s685))
+        let !t717 = (t715 * (s686 + s686))
+        let !t718 = (t715 * (s687 + s687))
+        let !t719 = (sqrt (((t716 * t716) + (t717 * t717)) + (t718 * t718)))
+        let !t720 = (if t719 > 0 then (recip (if (t719 - 1.0e-300) > 0 then t719 else 1.0e-300)) else 0.0)
+        let !t721 = (t720 * t716)
+        let !t722 = (t720 * t717)
+        let !t723 = (t720 * t718)
+        let !t724 = ((((t714 * (t709 + t709)) * t721) + ((t714 * (t710 + t710)) * t722)) + ((t714 * (t711 + t711)) * t723))
+        let !t725 = (if ((abs t713) - 1.0e-10) > 0 then (if (abs t724) > 0 then 1.0 else 0.0) else 0.0)
+        let !t726 = (if t725 > 0 then (t709 + (negate ((t713 / t724) * t721))) else t709)
+        let !t727 = (if t725 > 0 then (t710 + (negate ((t713 / t724) * t722))) else t710)
+        let !t728 = (if t725 > 0 then (t711 + (negate ((t713 / t724) * t723))) else t711)
+        let !t729 = (sqrt (((t726 * t726) + (t727 * t727)) + (t728 * t728)))
+        let !t730 = (t729 - 1.0)
+        let !t731 = (recip (2.0 * t729))
+        let !t732 = ((((t731 * (t726 + t726)) * t721) + ((t731 * (t727 + t727)) * t722)) + ((t731 * (t728 + t728)) * t723))
+        let !t733 = (if ((abs t730) - 1.0e-10) > 0 then (if (abs t732) > 0 then 1.0 else 0.0) else 0.0)
+        let !t734 = (if t733 > 0 then (t726 + (negate ((t730 / t732) * t721))) else t726)
+        let !t735 = (if t733 > 0 then (t727 + (negate ((t730 / t732) * t722))) else t727)
+        let !t736 = (if t733 > 0 then (t728 + (negate ((t730 / t732) * t723))) else t728)
+        let !t737 = (sqrt (((t734 * t734) + (t735 * t735)) + (t736 * t736)))
+        let !t738 = (t737 - 1.0)
+        let !t739 = (recip (2.0 * t737))
+        let !t740 = ((((t739 * (t734 + t734)) * t721) + ((t739 * (t735 + t735)) * t722)) + ((t739 * (t736 + t736)) * t723))
+        let !t741 = (if ((abs t738) - 1.0e-10) > 0 then (if (abs t740) > 0 then 1.0 else 0.0) else 0.0)
+        let !s742 = ((t529 * (if t741 > 0 then (t734 + (negate ((t738 / t740) * t721))) else t734)) + (t566 * s685))
+        let !s743 = ((t529 * (if t741 > 0 then (t735 + (negate ((t738 / t740) * t722))) else t735)) + (t566 * s686))
+        let !s744 = ((t529 * (if t741 > 0 then (t736 + (negate ((t738 / t740) * t723))) else t736)) + (t566 * s687))
+        let !t745 = (sqrt (((s706 * s706) + (s707 * s707)) + (s708 * s708)))
+        let !t746 = (t574 * ((if t741 > 0 then (t734 + (negate ((t738 / t740) * t721))) else t734) + (negate s685)))
+        let !t747 = (t739 * (t734 + t734))
+        let !t748 = (t739 * (t735 + t735))
+        let !t749 = (t739 * (t736 + t736))
+        let !t750 = (sqrt (((t747 * t747) + (t748 * t748)) + (t749 * t749)))
+        let !t751 = (if t750 > 0 then (recip (if (t750 - 1.0e-300) > 0 then t750 else 1.0e-300)) else 0.0)
+        let !t752 = (t751 * t747)
+        let !t753 = (t751 * t748)
+        let !t754 = (t574 * ((if t741 > 0 then (t735 + (negate ((t738 / t740) * t722))) else t735) + (negate s686)))
+        let !t755 = (t751 * t749)
+        let !t756 = (t574 * ((if t741 > 0 then (t736 + (negate ((t738 / t740) * t723))) else t736) + (negate s687)))
+        let !t757 = (((t752 * t746) + (t753 * t754)) + (t755 * t756))
+        let !t758 = (t746 + (negate (t757 * t752)))
+        let !t759 = (t754 + (negate (t757 * t753)))
+        let !t760 = (t756 + (negate (t757 * t755)))
+        let !t761 = (sqrt (((t758 * t758) + (t759 * t759)) + (t760 * t760)))
+        let !t762 = (if t761 > 0 then (recip (if (t761 - 1.0e-300) > 0 then t761 else 1.0e-300)) else 0.0)
+        let !s763 = ((t529 * (t745 * (t762 * t758))) + (t566 * s706))
+        let !s764 = ((t529 * (t745 * (t762 * t759))) + (t566 * s707))
+        let !s765 = ((t529 * (t745 * (t762 * t760))) + (t566 * s708))
+        t766 <- rdU mouse 4
+        t767 <- rdU mouse 5
+        t768 <- rdU mouse 6
+        t769 <- rdU mouse 7
+        t770 <- rdU mouse 8
+        t771 <- rdU mouse 9
+        let !t772 = (recip t491)
+        let !t773 = (6.283185307179586 * t769)
+        let !s774 = (recip (t493 * ((((2.0 * t772) * t770) * t773) + (t493 * ((t772 * t773) * t773)))))
+        let !s775 = ((t493 * ((t772 * t773) * t773)) * s774)
+        let !s776 = (s742 + (negate t494))
+        let !s777 = (s743 + (negate t495))
+        let !s778 = (s744 + (negate t496))
+        let !s779 = (s742 + (negate t766))
+        let !s780 = (s743 + (negate t767))
+        let !s781 = (s744 + (negate t768))
+        t782 <- rdU mouse 10
+        chkI vel (3 * (truncate t490)) 0 2
+        t783 <- rdU vel (3 * (truncate t490))
+        t784 <- rdU vel ((3 * (truncate t490)) + 1)
+        t785 <- rdU vel ((3 * (truncate t490)) + 2)
+        t786 <- rdU scalars ((6 * (truncate t490)) + 1)
+        let !t787 = (t771 * t493)
+        let !t788 = (negate t787)
+        let !t789 = (((((s777 * t502) - (s778 * t501)) * t497) + (((s778 * t500) - (s776 * t502)) * t498)) + (((s776 * t501) - (s777 * t500)) * t499))
+        let !t790 = (t782 + ((negate ((((((t500 * t783) + (t501 * t784)) + (t502 * t785)) + (t789 * t786)) + (s775 * (((s779 * t500) + (s780 * t501)) + (s781 * t502)))) + (s774 * t782))) / (((t491 * (((t500 * t500) + (t501 * t501)) + (t502 * t502))) + ((t492 * t789) * t789)) + s774)))
+        let !t791 = (if (t790 - t787) > 0 then t787 else t790)
+        let !t792 = (if (t788 - t791) > 0 then t788 else t791)
+        let !s793 = (if (1.0 - (abs (t792 - t792))) > 0 then t792 else 0.0)
+        wrU mouse 10 s793
+        t794 <- rdU scalars ((6 * (truncate t490)) + 2)
+        t795 <- rdU scalars ((6 * (truncate t490)) + 3)
+        t796 <- rdU vel (3 * (truncate t490))
+        t797 <- rdU vel ((3 * (truncate t490)) + 1)
+        t798 <- rdU vel ((3 * (truncate t490)) + 2)
+        t799 <- rdU scalars ((6 * (truncate t490)) + 1)
+        wrU vel (3 * (truncate t490)) (t796 + ((t794 * (s793 - t782)) * t500))
+        wrU vel ((3 * (truncate t490)) + 1) (t797 + ((t794 * (s793 - t782)) * t501))
+        wrU vel ((3 * (truncate t490)) + 2) (t798 + ((t794 * (s793 - t782)) * t502))
+        wrU scalars ((6 * (truncate t490)) + 1) (t799 + ((t795 * (s793 - t782)) * t789))
+        t800 <- rdU mouse 11
+        t801 <- rdU vel (3 * (truncate t490))
+        t802 <- rdU vel ((3 * (truncate t490)) + 1)
+        t803 <- rdU vel ((3 * (truncate t490)) + 2)
+        t804 <- rdU scalars ((6 * (truncate t490)) + 1)
+        let !t805 = (((((s777 * s505) - (s778 * s504)) * t497) + (((s778 * s503) - (s776 * s505)) * t498)) + (((s776 * s504) - (s777 * s503)) * t499))
+        let !t806 = (t800 + ((negate ((((((s503 * t801) + (s504 * t802)) + (s505 * t803)) + (t805 * t804)) + (s775 * (((s779 * s503) + (s780 * s504)) + (s781 * s505)))) + (s774 * t800))) / (((t491 * (((s503 * s503) + (s504 * s504)) + (s505 * s505))) + ((t492 * t805) * t805)) + s774)))
+        let !t807 = (if (t806 - t787) > 0 then t787 else t806)
+        let !t808 = (if (t788 - t807) > 0 then t788 else t807)
+        let !s809 = (if (1.0 - (abs (t808 - t808))) > 0 then t808 else 0.0)
+        wrU mouse 11 s809
+        t810 <- rdU scalars ((6 * (truncate t490)) + 2)
+        t811 <- rdU scalars ((6 * (truncate t490)) + 3)
+        t812 <- rdU vel (3 * (truncate t490))
+        t813 <- rdU vel ((3 * (truncate t490)) + 1)
+        t814 <- rdU vel ((3 * (truncate t490)) + 2)
+        t815 <- rdU scalars ((6 * (truncate t490)) + 1)
+        wrU vel (3 * (truncate t490)) (t812 + ((t810 * (s809 - t800)) * s503))
+        wrU vel ((3 * (truncate t490)) + 1) (t813 + ((t810 * (s809 - t800)) * s504))
+        wrU vel ((3 * (truncate t490)) + 2) (t814 + ((t810 * (s809 - t800)) * s505))
+        wrU scalars ((6 * (truncate t490)) + 1) (t815 + ((t811 * (s809 - t800)) * t805))
         pure ()
       else do
         pure ()
@@ -1699,38 +1701,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t821 <- rdU meta 0
-  loopI 0.0 t821 $ \i822 -> do
-    let !d822 = fromIntegral i822 :: Double
-    chkI bodyPrev (2 * i822) 1 1
-    wrU bodyPrev ((2 * i822) + 1) 0.0
+  t816 <- rdU meta 0
+  loopI 0.0 t816 $ \i817 -> do
+    let !d817 = fromIntegral i817 :: Double
+    chkI bodyPrev (2 * i817) 1 1
+    wrU bodyPrev ((2 * i817) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i823 -> do
-    let !d823 = fromIntegral i823 :: Double
-    chkI contacts (30 * i823) 2 25
-    t824 <- rdU contacts ((30 * i823) + 2)
-    chkI prev (4 * i823) 0 3
-    wrU prev (4 * i823) t824
-    t825 <- rdU contacts ((30 * i823) + 3)
-    wrU prev ((4 * i823) + 1) t825
-    t826 <- rdU contacts ((30 * i823) + 24)
-    wrU prev ((4 * i823) + 2) t826
-    t827 <- rdU contacts ((30 * i823) + 25)
-    wrU prev ((4 * i823) + 3) t827
-    chkI bodyPrev (2 * (truncate t824)) 1 1
-    t828 <- rdU bodyPrev ((2 * (truncate t824)) + 1)
-    if (0.5 - t828) > 0 then do
-      chkI bodyPrev (2 * (truncate t824)) 0 0
-      wrU bodyPrev (2 * (truncate t824)) d823
+  loopI 0.0 t9 $ \i818 -> do
+    let !d818 = fromIntegral i818 :: Double
+    chkI contacts (30 * i818) 2 25
+    t819 <- rdU contacts ((30 * i818) + 2)
+    chkI prev (4 * i818) 0 3
+    wrU prev (4 * i818) t819
+    t820 <- rdU contacts ((30 * i818) + 3)
+    wrU prev ((4 * i818) + 1) t820
+    t821 <- rdU contacts ((30 * i818) + 24)
+    wrU prev ((4 * i818) + 2) t821
+    t822 <- rdU contacts ((30 * i818) + 25)
+    wrU prev ((4 * i818) + 3) t822
+    chkI bodyPrev (2 * (truncate t819)) 1 1
+    t823 <- rdU bodyPrev ((2 * (truncate t819)) + 1)
+    if (0.5 - t823) > 0 then do
+      chkI bodyPrev (2 * (truncate t819)) 0 0
+      wrU bodyPrev (2 * (truncate t819)) d818
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t824)) + 1) (t828 + 1.0)
+    wrU bodyPrev ((2 * (truncate t819)) + 1) (t823 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1892,8 +1894,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -1923,541 +1926,541 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 3 11
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (sqrt (((s32 * s32) + (s33 * s33)) + (s34 * s34)))
-        let !t36 = (t35 - 1.0)
-        let !t37 = (recip (2.0 * t35))
-        let !t38 = ((((t37 * (s32 + s32)) * t8) + ((t37 * (s33 + s33)) * t9)) + ((t37 * (s34 + s34)) * t10))
-        let !t39 = (if ((abs t36) - 1.0e-10) > 0 then (if (abs t38) > 0 then 1.0 else 0.0) else 0.0)
-        let !s40 = (if t39 > 0 then (s32 + (negate ((t36 / t38) * t8))) else s32)
-        let !s41 = (if t39 > 0 then (s33 + (negate ((t36 / t38) * t9))) else s33)
-        let !s42 = (if t39 > 0 then (s34 + (negate ((t36 / t38) * t10))) else s34)
-        wrU walk ((12 * i26) + 9) s40
-        wrU walk ((12 * i26) + 10) s41
-        wrU walk ((12 * i26) + 11) s42
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 3 11
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (sqrt (((s30 * s30) + (s31 * s31)) + (s32 * s32)))
+        let !t34 = (t33 - 1.0)
+        let !t35 = (recip (2.0 * t33))
+        let !t36 = ((((t35 * (s30 + s30)) * t8) + ((t35 * (s31 + s31)) * t9)) + ((t35 * (s32 + s32)) * t10))
+        let !t37 = (if ((abs t34) - 1.0e-10) > 0 then (if (abs t36) > 0 then 1.0 else 0.0) else 0.0)
+        let !s38 = (if t37 > 0 then (s30 + (negate ((t34 / t36) * t8))) else s30)
+        let !s39 = (if t37 > 0 then (s31 + (negate ((t34 / t36) * t9))) else s31)
+        let !s40 = (if t37 > 0 then (s32 + (negate ((t34 / t36) * t10))) else s32)
+        wrU walk ((12 * i24) + 9) s38
+        wrU walk ((12 * i24) + 10) s39
+        wrU walk ((12 * i24) + 11) s40
         pure ()
-      loopI 0.0 24.0 $ \i43 -> do
-        let !d43 = fromIntegral i43 :: Double
-        chkI walk (12 * i43) 9 11
-        t44 <- rdU walk ((12 * i43) + 9)
-        t45 <- rdU walk ((12 * i43) + 10)
-        t46 <- rdU walk ((12 * i43) + 11)
-        let !t47 = (sqrt (((t44 * t44) + (t45 * t45)) + (t46 * t46)))
-        let !t48 = (t47 - 1.0)
-        let !t49 = (recip (2.0 * t47))
-        let !t50 = ((((t49 * (t44 + t44)) * t8) + ((t49 * (t45 + t45)) * t9)) + ((t49 * (t46 + t46)) * t10))
-        let !t51 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t50) > 0 then 1.0 else 0.0) else 0.0)
-        let !s52 = (if t51 > 0 then (t44 + (negate ((t48 / t50) * t8))) else t44)
-        let !s53 = (if t51 > 0 then (t45 + (negate ((t48 / t50) * t9))) else t45)
-        let !s54 = (if t51 > 0 then (t46 + (negate ((t48 / t50) * t10))) else t46)
-        wrU walk ((12 * i43) + 9) s52
-        wrU walk ((12 * i43) + 10) s53
-        wrU walk ((12 * i43) + 11) s54
+      loopI 0.0 24.0 $ \i41 -> do
+        let !d41 = fromIntegral i41 :: Double
+        chkI walk (12 * i41) 9 11
+        t42 <- rdU walk ((12 * i41) + 9)
+        t43 <- rdU walk ((12 * i41) + 10)
+        t44 <- rdU walk ((12 * i41) + 11)
+        let !t45 = (sqrt (((t42 * t42) + (t43 * t43)) + (t44 * t44)))
+        let !t46 = (t45 - 1.0)
+        let !t47 = (recip (2.0 * t45))
+        let !t48 = ((((t47 * (t42 + t42)) * t8) + ((t47 * (t43 + t43)) * t9)) + ((t47 * (t44 + t44)) * t10))
+        let !t49 = (if ((abs t46) - 1.0e-10) > 0 then (if (abs t48) > 0 then 1.0 else 0.0) else 0.0)
+        let !s50 = (if t49 > 0 then (t42 + (negate ((t46 / t48) * t8))) else t42)
+        let !s51 = (if t49 > 0 then (t43 + (negate ((t46 / t48) * t9))) else t43)
+        let !s52 = (if t49 > 0 then (t44 + (negate ((t46 / t48) * t10))) else t44)
+        wrU walk ((12 * i41) + 9) s50
+        wrU walk ((12 * i41) + 10) s51
+        wrU walk ((12 * i41) + 11) s52
         pure ()
-      loopI 0.0 24.0 $ \i55 -> do
-        let !d55 = fromIntegral i55 :: Double
-        chkI walk (12 * i55) 0 11
-        t56 <- rdU walk ((12 * i55) + 9)
-        t57 <- rdU walk ((12 * i55) + 10)
-        t58 <- rdU walk ((12 * i55) + 11)
-        chkI radii ((24 * i1) + i55) 0 0
-        t59 <- rdU radii ((24 * i1) + i55)
-        let !s60 = (t59 / 4.0)
-        t61 <- rdU walk ((12 * i55) + 3)
-        t62 <- rdU walk ((12 * i55) + 4)
-        t63 <- rdU walk ((12 * i55) + 5)
-        let !t64 = (if (abs s60) > 0 then 1.0 else 0.0)
-        let !t65 = (sqrt (((t56 * t56) + (t57 * t57)) + (t58 * t58)))
-        let !t66 = (t65 - 1.0)
-        let !t67 = (recip (2.0 * t65))
-        let !t68 = ((((t67 * (t56 + t56)) * t8) + ((t67 * (t57 + t57)) * t9)) + ((t67 * (t58 + t58)) * t10))
-        let !t69 = (if ((abs t66) - 1.0e-10) > 0 then (if (abs t68) > 0 then 1.0 else 0.0) else 0.0)
-        let !t70 = (1.0 - t64)
-        let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
-        let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
-        let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
-        chkI verts ((291 * i1) + (12 * i55)) 3 5
-        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
-        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
-        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
-        wrU walk (12 * i55) s71
-        wrU walk ((12 * i55) + 1) s72
-        wrU walk ((12 * i55) + 2) s73
-        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
-        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
-        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
-        let !t77 = (t67 * (t56 + t56))
-        let !t78 = (t67 * (t57 + t57))
-        let !t79 = (t67 * (t58 + t58))
-        let !t80 = (sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79)))
-        let !t81 = (if t80 > 0 then (recip (if (t80 - 1.0e-300) > 0 then t80 else 1.0e-300)) else 0.0)
-        let !t82 = (t81 * t77)
-        let !t83 = (t81 * t78)
-        let !t84 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
-        let !t85 = (t81 * t79)
-        let !t86 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
-        let !t87 = (((t82 * t76) + (t83 * t84)) + (t85 * t86))
-        let !t88 = (t76 + (negate (t87 * t82)))
-        let !t89 = (t84 + (negate (t87 * t83)))
-        let !t90 = (t86 + (negate (t87 * t85)))
-        let !t91 = (sqrt (((t88 * t88) + (t89 * t89)) + (t90 * t90)))
-        let !t92 = (if t91 > 0 then (recip (if (t91 - 1.0e-300) > 0 then t91 else 1.0e-300)) else 0.0)
-        let !s93 = ((t64 * (t74 * (t92 * t88))) + (t70 * t61))
-        let !s94 = ((t64 * (t74 * (t92 * t89))) + (t70 * t62))
-        let !s95 = ((t64 * (t74 * (t92 * t90))) + (t70 * t63))
-        wrU walk ((12 * i55) + 3) s93
-        wrU walk ((12 * i55) + 4) s94
-        wrU walk ((12 * i55) + 5) s95
-        let !s96 = ((t64 * t82) + (t70 * t8))
-        let !s97 = ((t64 * t83) + (t70 * t9))
-        let !s98 = ((t64 * t85) + (t70 * t10))
-        wrU walk ((12 * i55) + 6) s96
-        wrU walk ((12 * i55) + 7) s97
-        wrU walk ((12 * i55) + 8) s98
+      loopI 0.0 24.0 $ \i53 -> do
+        let !d53 = fromIntegral i53 :: Double
+        chkI walk (12 * i53) 0 11
+        t54 <- rdU walk ((12 * i53) + 9)
+        t55 <- rdU walk ((12 * i53) + 10)
+        t56 <- rdU walk ((12 * i53) + 11)
+        chkI radii ((24 * i1) + i53) 0 0
+        t57 <- rdU radii ((24 * i1) + i53)
+        let !s58 = (t57 / 4.0)
+        t59 <- rdU walk ((12 * i53) + 3)
+        t60 <- rdU walk ((12 * i53) + 4)
+        t61 <- rdU walk ((12 * i53) + 5)
+        let !t62 = (if (abs s58) > 0 then 1.0 else 0.0)
+        let !t63 = (sqrt (((t54 * t54) + (t55 * t55)) + (t56 * t56)))
+        let !t64 = (t63 - 1.0)
+        let !t65 = (recip (2.0 * t63))
+        let !t66 = ((((t65 * (t54 + t54)) * t8) + ((t65 * (t55 + t55)) * t9)) + ((t65 * (t56 + t56)) * t10))
+        let !t67 = (if ((abs t64) - 1.0e-10) > 0 then (if (abs t66) > 0 then 1.0 else 0.0) else 0.0)
+        let !t68 = (1.0 - t62)
+        let !s69 = ((t62 * (if t67 > 0 then (t54 + (negate ((t64 / t66) * t8))) else t54)) + (t68 * t2))
+        let !s70 = ((t62 * (if t67 > 0 then (t55 + (negate ((t64 / t66) * t9))) else t55)) + (t68 * t3))
+        let !s71 = ((t62 * (if t67 > 0 then (t56 + (negate ((t64 / t66) * t10))) else t56)) + (t68 * t4))
+        chkI verts ((291 * i1) + (12 * i53)) 3 5
+        wrU verts (((291 * i1) + (12 * i53)) + 3) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
+        wrU verts (((291 * i1) + (12 * i53)) + 4) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
+        wrU verts (((291 * i1) + (12 * i53)) + 5) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
+        wrU walk (12 * i53) s69
+        wrU walk ((12 * i53) + 1) s70
+        wrU walk ((12 * i53) + 2) s71
+        let !t72 = (sqrt (((t59 * t59) + (t60 * t60)) + (t61 * t61)))
+        let !t73 = (if (abs s58) > 0 then (recip s58) else 0.0)
+        let !t74 = (t73 * ((if t67 > 0 then (t54 + (negate ((t64 / t66) * t8))) else t54) + (negate t2)))
+        let !t75 = (t65 * (t54 + t54))
+        let !t76 = (t65 * (t55 + t55))
+        let !t77 = (t65 * (t56 + t56))
+        let !t78 = (sqrt (((t75 * t75) + (t76 * t76)) + (t77 * t77)))
+        let !t79 = (if t78 > 0 then (recip (if (t78 - 1.0e-300) > 0 then t78 else 1.0e-300)) else 0.0)
+        let !t80 = (t79 * t75)
+        let !t81 = (t79 * t76)
+        let !t82 = (t73 * ((if t67 > 0 then (t55 + (negate ((t64 / t66) * t9))) else t55) + (negate t3)))
+        let !t83 = (t79 * t77)
+        let !t84 = (t73 * ((if t67 > 0 then (t56 + (negate ((t64 / t66) * t10))) else t56) + (negate t4)))
+        let !t85 = (((t80 * t74) + (t81 * t82)) + (t83 * t84))
+        let !t86 = (t74 + (negate (t85 * t80)))
+        let !t87 = (t82 + (negate (t85 * t81)))
+        let !t88 = (t84 + (negate (t85 * t83)))
+        let !t89 = (sqrt (((t86 * t86) + (t87 * t87)) + (t88 * t88)))
+        let !t90 = (if t89 > 0 then (recip (if (t89 - 1.0e-300) > 0 then t89 else 1.0e-300)) else 0.0)
+        let !s91 = ((t62 * (t72 * (t90 * t86))) + (t68 * t59))
+        let !s92 = ((t62 * (t72 * (t90 * t87))) + (t68 * t60))
+        let !s93 = ((t62 * (t72 * (t90 * t88))) + (t68 * t61))
+        wrU walk ((12 * i53) + 3) s91
+        wrU walk ((12 * i53) + 4) s92
+        wrU walk ((12 * i53) + 5) s93
+        let !s94 = ((t62 * t80) + (t68 * t8))
+        let !s95 = ((t62 * t81) + (t68 * t9))
+        let !s96 = ((t62 * t83) + (t68 * t10))
+        wrU walk ((12 * i53) + 6) s94
+        wrU walk ((12 * i53) + 7) s95
+        wrU walk ((12 * i53) + 8) s96
         pure ()
-      loopI 0.0 24.0 $ \i99 -> do
-        let !d99 = fromIntegral i99 :: Double
-        chkI walk (12 * i99) 0 11
-        t100 <- rdU walk ((12 * i99) + 6)
-        t101 <- rdU walk ((12 * i99) + 7)
-        t102 <- rdU walk ((12 * i99) + 8)
-        chkI radii ((24 * i1) + i99) 0 0
-        t103 <- rdU radii ((24 * i1) + i99)
-        let !s104 = (t103 / 4.0)
-        t105 <- rdU walk (12 * i99)
-        t106 <- rdU walk ((12 * i99) + 1)
-        t107 <- rdU walk ((12 * i99) + 2)
-        t108 <- rdU walk ((12 * i99) + 3)
-        t109 <- rdU walk ((12 * i99) + 4)
-        t110 <- rdU walk ((12 * i99) + 5)
-        let !s111 = (t105 + (s104 * t108))
-        let !s112 = (t106 + (s104 * t109))
-        let !s113 = (t107 + (s104 * t110))
-        let !t114 = (sqrt (((s111 * s111) + (s112 * s112)) + (s113 * s113)))
-        let !t115 = (t114 - 1.0)
-        let !t116 = (recip (2.0 * t114))
-        let !t117 = ((((t116 * (s111 + s111)) * t100) + ((t116 * (s112 + s112)) * t101)) + ((t116 * (s113 + s113)) * t102))
-        let !t118 = (if ((abs t115) - 1.0e-10) > 0 then (if (abs t117) > 0 then 1.0 else 0.0) else 0.0)
-        let !s119 = (if t118 > 0 then (s111 + (negate ((t115 / t117) * t100))) else s111)
-        let !s120 = (if t118 > 0 then (s112 + (negate ((t115 / t117) * t101))) else s112)
-        let !s121 = (if t118 > 0 then (s113 + (negate ((t115 / t117) * t102))) else s113)
-        wrU walk ((12 * i99) + 9) s119
-        wrU walk ((12 * i99) + 10) s120
-        wrU walk ((12 * i99) + 11) s121
+      loopI 0.0 24.0 $ \i97 -> do
+        let !d97 = fromIntegral i97 :: Double
+        chkI walk (12 * i97) 0 11
+        t98 <- rdU walk ((12 * i97) + 6)
+        t99 <- rdU walk ((12 * i97) + 7)
+        t100 <- rdU walk ((12 * i97) + 8)
+        chkI radii ((24 * i1) + i97) 0 0
+        t101 <- rdU radii ((24 * i1) + i97)
+        let !s102 = (t101 / 4.0)
+        t103 <- rdU walk (12 * i97)
+        t104 <- rdU walk ((12 * i97) + 1)
+        t105 <- rdU walk ((12 * i97) + 2)
+        t106 <- rdU walk ((12 * i97) + 3)
+        t107 <- rdU walk ((12 * i97) + 4)
+        t108 <- rdU walk ((12 * i97) + 5)
+        let !s109 = (t103 + (s102 * t106))
+        let !s110 = (t104 + (s102 * t107))
+        let !s111 = (t105 + (s102 * t108))
+        let !t112 = (sqrt (((s109 * s109) + (s110 * s110)) + (s111 * s111)))
+        let !t113 = (t112 - 1.0)
+        let !t114 = (recip (2.0 * t112))
+        let !t115 = ((((t114 * (s109 + s109)) * t98) + ((t114 * (s110 + s110)) * t99)) + ((t114 * (s111 + s111)) * t100))
+        let !t116 = (if ((abs t113) - 1.0e-10) > 0 then (if (abs t115) > 0 then 1.0 else 0.0) else 0.0)
+        let !s117 = (if t116 > 0 then (s109 + (negate ((t113 / t115) * t98))) else s109)
+        let !s118 = (if t116 > 0 then (s110 + (negate ((t113 / t115) * t99))) else s110)
+        let !s119 = (if t116 > 0 then (s111 + (negate ((t113 / t115) * t100))) else s111)
+        wrU walk ((12 * i97) + 9) s117
+        wrU walk ((12 * i97) + 10) s118
+        wrU walk ((12 * i97) + 11) s119
         pure ()
-      loopI 0.0 24.0 $ \i122 -> do
-        let !d122 = fromIntegral i122 :: Double
-        chkI walk (12 * i122) 6 11
-        t123 <- rdU walk ((12 * i122) + 6)
-        t124 <- rdU walk ((12 * i122) + 7)
-        t125 <- rdU walk ((12 * i122) + 8)
-        t126 <- rdU walk ((12 * i122) + 9)
-        t127 <- rdU walk ((12 * i122) + 10)
-        t128 <- rdU walk ((12 * i122) + 11)
-        let !t129 = (sqrt (((t126 * t126) + (t127 * t127)) + (t128 * t128)))
-        let !t130 = (t129 - 1.0)
-        let !t131 = (recip (2.0 * t129))
-        let !t132 = ((((t131 * (t126 + t126)) * t123) + ((t131 * (t127 + t127)) * t124)) + ((t131 * (t128 + t128)) * t125))
-        let !t133 = (if ((abs t130) - 1.0e-10) > 0 then (if (abs t132) > 0 then 1.0 else 0.0) else 0.0)
-        let !s134 = (if t133 > 0 then (t126 + (negate ((t130 / t132) * t123))) else t126)
-        let !s135 = (if t133 > 0 then (t127 + (negate ((t130 / t132) * t124))) else t127)
-        let !s136 = (if t133 > 0 then (t128 + (negate ((t130 / t132) * t125))) else t128)
-        wrU walk ((12 * i122) + 9) s134
-        wrU walk ((12 * i122) + 10) s135
-        wrU walk ((12 * i122) + 11) s136
+      loopI 0.0 24.0 $ \i120 -> do
+        let !d120 = fromIntegral i120 :: Double
+        chkI walk (12 * i120) 6 11
+        t121 <- rdU walk ((12 * i120) + 6)
+        t122 <- rdU walk ((12 * i120) + 7)
+        t123 <- rdU walk ((12 * i120) + 8)
+        t124 <- rdU walk ((12 * i120) + 9)
+        t125 <- rdU walk ((12 * i120) + 10)
+        t126 <- rdU walk ((12 * i120) + 11)
+        let !t127 = (sqrt (((t124 * t124) + (t125 * t125)) + (t126 * t126)))
+        let !t128 = (t127 - 1.0)
+        let !t129 = (recip (2.0 * t127))
+        let !t130 = ((((t129 * (t124 + t124)) * t121) + ((t129 * (t125 + t125)) * t122)) + ((t129 * (t126 + t126)) * t123))
+        let !t131 = (if ((abs t128) - 1.0e-10) > 0 then (if (abs t130) > 0 then 1.0 else 0.0) else 0.0)
+        let !s132 = (if t131 > 0 then (t124 + (negate ((t128 / t130) * t121))) else t124)
+        let !s133 = (if t131 > 0 then (t125 + (negate ((t128 / t130) * t122))) else t125)
+        let !s134 = (if t131 > 0 then (t126 + (negate ((t128 / t130) * t123))) else t126)
+        wrU walk ((12 * i120) + 9) s132
+        wrU walk ((12 * i120) + 10) s133
+        wrU walk ((12 * i120) + 11) s134
         pure ()
-      loopI 0.0 24.0 $ \i137 -> do
-        let !d137 = fromIntegral i137 :: Double
-        chkI walk (12 * i137) 0 11
-        t138 <- rdU walk ((12 * i137) + 6)
-        t139 <- rdU walk ((12 * i137) + 7)
-        t140 <- rdU walk ((12 * i137) + 8)
-        t141 <- rdU walk ((12 * i137) + 9)
-        t142 <- rdU walk ((12 * i137) + 10)
-        t143 <- rdU walk ((12 * i137) + 11)
-        chkI radii ((24 * i1) + i137) 0 0
-        t144 <- rdU radii ((24 * i1) + i137)
-        let !s145 = (t144 / 4.0)
-        t146 <- rdU walk (12 * i137)
-        t147 <- rdU walk ((12 * i137) + 1)
-        t148 <- rdU walk ((12 * i137) + 2)
-        t149 <- rdU walk ((12 * i137) + 3)
-        t150 <- rdU walk ((12 * i137) + 4)
-        t151 <- rdU walk ((12 * i137) + 5)
-        let !t152 = (if (abs s145) > 0 then 1.0 else 0.0)
-        let !t153 = (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143)))
-        let !t154 = (t153 - 1.0)
-        let !t155 = (recip (2.0 * t153))
-        let !t156 = ((((t155 * (t141 + t141)) * t138) + ((t155 * (t142 + t142)) * t139)) + ((t155 * (t143 + t143)) * t140))
-        let !t157 = (if ((abs t154) - 1.0e-10) > 0 then (if (abs t156) > 0 then 1.0 else 0.0) else 0.0)
-        let !t158 = (1.0 - t152)
-        let !s159 = ((t152 * (if t157 > 0 then (t141 + (negate ((t154 / t156) * t138))) else t141)) + (t158 * t146))
-        let !s160 = ((t152 * (if t157 > 0 then (t142 + (negate ((t154 / t156) * t139))) else t142)) + (t158 * t147))
-        let !s161 = ((t152 * (if t157 > 0 then (t143 + (negate ((t154 / t156) * t140))) else t143)) + (t158 * t148))
-        chkI verts ((291 * i1) + (12 * i137)) 6 8
-        wrU verts (((291 * i1) + (12 * i137)) + 6) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s159 else t2)
-        wrU verts (((291 * i1) + (12 * i137)) + 7) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s160 else t3)
-        wrU verts (((291 * i1) + (12 * i137)) + 8) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s161 else t4)
-        wrU walk (12 * i137) s159
-        wrU walk ((12 * i137) + 1) s160
-        wrU walk ((12 * i137) + 2) s161
-        let !t162 = (sqrt (((t149 * t149) + (t150 * t150)) + (t151 * t151)))
-        let !t163 = (if (abs s145) > 0 then (recip s145) else 0.0)
-        let !t164 = (t163 * ((if t157 > 0 then (t141 + (negate ((t154 / t156) * t138))) else t141) + (negate t146)))
-        let !t165 = (t155 * (t141 + t141))
-        let !t166 = (t155 * (t142 + t142))
-        let !t167 = (t155 * (t143 + t143))
-        let !t168 = (sqrt (((t165 * t165) + (t166 * t166)) + (t167 * t167)))
-        let !t169 = (if t168 > 0 then (recip (if (t168 - 1.0e-300) > 0 then t168 else 1.0e-300)) else 0.0)
-        let !t170 = (t169 * t165)
-        let !t171 = (t169 * t166)
-        let !t172 = (t163 * ((if t157 > 0 then (t142 + (negate ((t154 / t156) * t139))) else t142) + (negate t147)))
-        let !t173 = (t169 * t167)
-        let !t174 = (t163 * ((if t157 > 0 then (t143 + (negate ((t154 / t156) * t140))) else t143) + (negate t148)))
-        let !t175 = (((t170 * t164) + (t171 * t172)) + (t173 * t174))
-        let !t176 = (t164 + (negate (t175 * t170)))
-        let !t177 = (t172 + (negate (t175 * t171)))
-        let !t178 = (t174 + (negate (t175 * t173)))
-        let !t179 = (sqrt (((t176 * t176) + (t177 * t177)) + (t178 * t178)))
-        let !t180 = (if t179 > 0 then (recip (if (t179 - 1.0e-300) > 0 then t179 else 1.0e-300)) else 0.0)
-        let !s181 = ((t152 * (t162 * (t180 * t176))) + (t158 * t149))
-        let !s182 = ((t152 * (t162 * (t180 * t177))) + (t158 * t150))
-        let !s183 = ((t152 * (t162 * (t180 * t178))) + (t158 * t151))
-        wrU walk ((12 * i137) + 3) s181
-        wrU walk ((12 * i137) + 4) s182
-        wrU walk ((12 * i137) + 5) s183
-        let !s184 = ((t152 * t170) + (t158 * t138))
-        let !s185 = ((t152 * t171) + (t158 * t139))
-        let !s186 = ((t152 * t173) + (t158 * t140))
-        wrU walk ((12 * i137) + 6) s184
-        wrU walk ((12 * i137) + 7) s185
-        wrU walk ((12 * i137) + 8) s186
+      loopI 0.0 24.0 $ \i135 -> do
+        let !d135 = fromIntegral i135 :: Double
+        chkI walk (12 * i135) 0 11
+        t136 <- rdU walk ((12 * i135) + 6)
+        t137 <- rdU walk ((12 * i135) + 7)
+        t138 <- rdU walk ((12 * i135) + 8)
+        t139 <- rdU walk ((12 * i135) + 9)
+        t140 <- rdU walk ((12 * i135) + 10)
+        t141 <- rdU walk ((12 * i135) + 11)
+        chkI radii ((24 * i1) + i135) 0 0
+        t142 <- rdU radii ((24 * i1) + i135)
+        let !s143 = (t142 / 4.0)
+        t144 <- rdU walk (12 * i135)
+        t145 <- rdU walk ((12 * i135) + 1)
+        t146 <- rdU walk ((12 * i135) + 2)
+        t147 <- rdU walk ((12 * i135) + 3)
+        t148 <- rdU walk ((12 * i135) + 4)
+        t149 <- rdU walk ((12 * i135) + 5)
+        let !t150 = (if (abs s143) > 0 then 1.0 else 0.0)
+        let !t151 = (sqrt (((t139 * t139) + (t140 * t140)) + (t141 * t141)))
+        let !t152 = (t151 - 1.0)
+        let !t153 = (recip (2.0 * t151))
+        let !t154 = ((((t153 * (t139 + t139)) * t136) + ((t153 * (t140 + t140)) * t137)) + ((t153 * (t141 + t141)) * t138))
+        let !t155 = (if ((abs t152) - 1.0e-10) > 0 then (if (abs t154) > 0 then 1.0 else 0.0) else 0.0)
+        let !t156 = (1.0 - t150)
+        let !s157 = ((t150 * (if t155 > 0 then (t139 + (negate ((t152 / t154) * t136))) else t139)) + (t156 * t144))
+        let !s158 = ((t150 * (if t155 > 0 then (t140 + (negate ((t152 / t154) * t137))) else t140)) + (t156 * t145))
+        let !s159 = ((t150 * (if t155 > 0 then (t141 + (negate ((t152 / t154) * t138))) else t141)) + (t156 * t146))
+        chkI verts ((291 * i1) + (12 * i135)) 6 8
+        wrU verts (((291 * i1) + (12 * i135)) + 6) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s157 else t2)
+        wrU verts (((291 * i1) + (12 * i135)) + 7) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s158 else t3)
+        wrU verts (((291 * i1) + (12 * i135)) + 8) (if (1.0 - (abs (((s157 - s157) + (s158 - s158)) + (s159 - s159)))) > 0 then s159 else t4)
+        wrU walk (12 * i135) s157
+        wrU walk ((12 * i135) + 1) s158
+        wrU walk ((12 * i135) + 2) s159
+        let !t160 = (sqrt (((t147 * t147) + (t148 * t148)) + (t149 * t149)))
+        let !t161 = (if (abs s143) > 0 then (recip s143) else 0.0)
+        let !t162 = (t161 * ((if t155 > 0 then (t139 + (negate ((t152 / t154) * t136))) else t139) + (negate t144)))
+        let !t163 = (t153 * (t139 + t139))
+        let !t164 = (t153 * (t140 + t140))
+        let !t165 = (t153 * (t141 + t141))
+        let !t166 = (sqrt (((t163 * t163) + (t164 * t164)) + (t165 * t165)))
+        let !t167 = (if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0)
+        let !t168 = (t167 * t163)
+        let !t169 = (t167 * t164)
+        let !t170 = (t161 * ((if t155 > 0 then (t140 + (negate ((t152 / t154) * t137))) else t140) + (negate t145)))
+        let !t171 = (t167 * t165)
+        let !t172 = (t161 * ((if t155 > 0 then (t141 + (negate ((t152 / t154) * t138))) else t141) + (negate t146)))
+        let !t173 = (((t168 * t162) + (t169 * t170)) + (t171 * t172))
+        let !t174 = (t162 + (negate (t173 * t168)))
+        let !t175 = (t170 + (negate (t173 * t169)))
+        let !t176 = (t172 + (negate (t173 * t171)))
+        let !t177 = (sqrt (((t174 * t174) + (t175 * t175)) + (t176 * t176)))
+        let !t178 = (if t177 > 0 then (recip (if (t177 - 1.0e-300) > 0 then t177 else 1.0e-300)) else 0.0)
+        let !s179 = ((t150 * (t160 * (t178 * t174))) + (t156 * t147))
+        let !s180 = ((t150 * (t160 * (t178 * t175))) + (t156 * t148))
+        let !s181 = ((t150 * (t160 * (t178 * t176))) + (t156 * t149))
+        wrU walk ((12 * i135) + 3) s179
+        wrU walk ((12 * i135) + 4) s180
+        wrU walk ((12 * i135) + 5) s181
+        let !s182 = ((t150 * t168) + (t156 * t136))
+        let !s183 = ((t150 * t169) + (t156 * t137))
+        let !s184 = ((t150 * t171) + (t156 * t138))
+        wrU walk ((12 * i135) + 6) s182
+        wrU walk ((12 * i135) + 7) s183
+        wrU walk ((12 * i135) + 8) s184
         pure ()
-      loopI 0.0 24.0 $ \i187 -> do
-        let !d187 = fromIntegral i187 :: Double
-        chkI walk (12 * i187) 0 11
-        t188 <- rdU walk ((12 * i187) + 6)
-        t189 <- rdU walk ((12 * i187) + 7)
-        t190 <- rdU walk ((12 * i187) + 8)
-        chkI radii ((24 * i1) + i187) 0 0
-        t191 <- rdU radii ((24 * i1) + i187)
-        let !s192 = (t191 / 4.0)
-        t193 <- rdU walk (12 * i187)
-        t194 <- rdU walk ((12 * i187) + 1)
-        t195 <- rdU walk ((12 * i187) + 2)
-        t196 <- rdU walk ((12 * i187) + 3)
-        t197 <- rdU walk ((12 * i187) + 4)
-        t198 <- rdU walk ((12 * i187) + 5)
-        let !s199 = (t193 + (s192 * t196))
-        let !s200 = (t194 + (s192 * t197))
-        let !s201 = (t195 + (s192 * t198))
-        let !t202 = (sqrt (((s199 * s199) + (s200 * s200)) + (s201 * s201)))
-        let !t203 = (t202 - 1.0)
-        let !t204 = (recip (2.0 * t202))
-        let !t205 = ((((t204 * (s199 + s199)) * t188) + ((t204 * (s200 + s200)) * t189)) + ((t204 * (s201 + s201)) * t190))
-        let !t206 = (if ((abs t203) - 1.0e-10) > 0 then (if (abs t205) > 0 then 1.0 else 0.0) else 0.0)
-        let !s207 = (if t206 > 0 then (s199 + (negate ((t203 / t205) * t188))) else s199)
-        let !s208 = (if t206 > 0 then (s200 + (negate ((t203 / t205) * t189))) else s200)
-        let !s209 = (if t206 > 0 then (s201 + (negate ((t203 / t205) * t190))) else s201)
-        wrU walk ((12 * i187) + 9) s207
-        wrU walk ((12 * i187) + 10) s208
-        wrU walk ((12 * i187) + 11) s209
+      loopI 0.0 24.0 $ \i185 -> do
+        let !d185 = fromIntegral i185 :: Double
+        chkI walk (12 * i185) 0 11
+        t186 <- rdU walk ((12 * i185) + 6)
+        t187 <- rdU walk ((12 * i185) + 7)
+        t188 <- rdU walk ((12 * i185) + 8)
+        chkI radii ((24 * i1) + i185) 0 0
+        t189 <- rdU radii ((24 * i1) + i185)
+        let !s190 = (t189 / 4.0)
+        t191 <- rdU walk (12 * i185)
+        t192 <- rdU walk ((12 * i185) + 1)
+        t193 <- rdU walk ((12 * i185) + 2)
+        t194 <- rdU walk ((12 * i185) + 3)
+        t195 <- rdU walk ((12 * i185) + 4)
+        t196 <- rdU walk ((12 * i185) + 5)
+        let !s197 = (t191 + (s190 * t194))
+        let !s198 = (t192 + (s190 * t195))
+        let !s199 = (t193 + (s190 * t196))
+        let !t200 = (sqrt (((s197 * s197) + (s198 * s198)) + (s199 * s199)))
+        let !t201 = (t200 - 1.0)
+        let !t202 = (recip (2.0 * t200))
+        let !t203 = ((((t202 * (s197 + s197)) * t186) + ((t202 * (s198 + s198)) * t187)) + ((t202 * (s199 + s199)) * t188))
+        let !t204 = (if ((abs t201) - 1.0e-10) > 0 then (if (abs t203) > 0 then 1.0 else 0.0) else 0.0)
+        let !s205 = (if t204 > 0 then (s197 + (negate ((t201 / t203) * t186))) else s197)
+        let !s206 = (if t204 > 0 then (s198 + (negate ((t201 / t203) * t187))) else s198)
+        let !s207 = (if t204 > 0 then (s199 + (negate ((t201 / t203) * t188))) else s199)
+        wrU walk ((12 * i185) + 9) s205
+        wrU walk ((12 * i185) + 10) s206
+        wrU walk ((12 * i185) + 11) s207
         pure ()
-      loopI 0.0 24.0 $ \i210 -> do
-        let !d210 = fromIntegral i210 :: Double
-        chkI walk (12 * i210) 6 11
-        t211 <- rdU walk ((12 * i210) + 6)
-        t212 <- rdU walk ((12 * i210) + 7)
-        t213 <- rdU walk ((12 * i210) + 8)
-        t214 <- rdU walk ((12 * i210) + 9)
-        t215 <- rdU walk ((12 * i210) + 10)
-        t216 <- rdU walk ((12 * i210) + 11)
-        let !t217 = (sqrt (((t214 * t214) + (t215 * t215)) + (t216 * t216)))
-        let !t218 = (t217 - 1.0)
-        let !t219 = (recip (2.0 * t217))
-        let !t220 = ((((t219 * (t214 + t214)) * t211) + ((t219 * (t215 + t215)) * t212)) + ((t219 * (t216 + t216)) * t213))
-        let !t221 = (if ((abs t218) - 1.0e-10) > 0 then (if (abs t220) > 0 then 1.0 else 0.0) else 0.0)
-        let !s222 = (if t221 > 0 then (t214 + (negate ((t218 / t220) * t211))) else t214)
-        let !s223 = (if t221 > 0 then (t215 + (negate ((t218 / t220) * t212))) else t215)
-        let !s224 = (if t221 > 0 then (t216 + (negate ((t218 / t220) * t213))) else t216)
-        wrU walk ((12 * i210) + 9) s222
-        wrU walk ((12 * i210) + 10) s223
-        wrU walk ((12 * i210) + 11) s224
+      loopI 0.0 24.0 $ \i208 -> do
+        let !d208 = fromIntegral i208 :: Double
+        chkI walk (12 * i208) 6 11
+        t209 <- rdU walk ((12 * i208) + 6)
+        t210 <- rdU walk ((12 * i208) + 7)
+        t211 <- rdU walk ((12 * i208) + 8)
+        t212 <- rdU walk ((12 * i208) + 9)
+        t213 <- rdU walk ((12 * i208) + 10)
+        t214 <- rdU walk ((12 * i208) + 11)
+        let !t215 = (sqrt (((t212 * t212) + (t213 * t213)) + (t214 * t214)))
+        let !t216 = (t215 - 1.0)
+        let !t217 = (recip (2.0 * t215))
+        let !t218 = ((((t217 * (t212 + t212)) * t209) + ((t217 * (t213 + t213)) * t210)) + ((t217 * (t214 + t214)) * t211))
+        let !t219 = (if ((abs t216) - 1.0e-10) > 0 then (if (abs t218) > 0 then 1.0 else 0.0) else 0.0)
+        let !s220 = (if t219 > 0 then (t212 + (negate ((t216 / t218) * t209))) else t212)
+        let !s221 = (if t219 > 0 then (t213 + (negate ((t216 / t218) * t210))) else t213)
+        let !s222 = (if t219 > 0 then (t214 + (negate ((t216 / t218) * t211))) else t214)
+        wrU walk ((12 * i208) + 9) s220
+        wrU walk ((12 * i208) + 10) s221
+        wrU walk ((12 * i208) + 11) s222
         pure ()
-      loopI 0.0 24.0 $ \i225 -> do
-        let !d225 = fromIntegral i225 :: Double
-        chkI walk (12 * i225) 0 11
-        t226 <- rdU walk ((12 * i225) + 6)
-        t227 <- rdU walk ((12 * i225) + 7)
-        t228 <- rdU walk ((12 * i225) + 8)
-        t229 <- rdU walk ((12 * i225) + 9)
-        t230 <- rdU walk ((12 * i225) + 10)
-        t231 <- rdU walk ((12 * i225) + 11)
-        chkI radii ((24 * i1) + i225) 0 0
-        t232 <- rdU radii ((24 * i1) + i225)
-        let !s233 = (t232 / 4.0)
-        t234 <- rdU walk (12 * i225)
-        t235 <- rdU walk ((12 * i225) + 1)
-        t236 <- rdU walk ((12 * i225) + 2)
-        t237 <- rdU walk ((12 * i225) + 3)
-        t238 <- rdU walk ((12 * i225) + 4)
-        t239 <- rdU walk ((12 * i225) + 5)
-        let !t240 = (if (abs s233) > 0 then 1.0 else 0.0)
-        let !t241 = (sqrt (((t229 * t229) + (t230 * t230)) + (t231 * t231)))
-        let !t242 = (t241 - 1.0)
-        let !t243 = (recip (2.0 * t241))
-        let !t244 = ((((t243 * (t229 + t229)) * t226) + ((t243 * (t230 + t230)) * t227)) + ((t243 * (t231 + t231)) * t228))
-        let !t245 = (if ((abs t242) - 1.0e-10) > 0 then (if (abs t244) > 0 then 1.0 else 0.0) else 0.0)
-        let !t246 = (1.0 - t240)
-        let !s247 = ((t240 * (if t245 > 0 then (t229 + (negate ((t242 / t244) * t226))) else t229)) + (t246 * t234))
-        let !s248 = ((t240 * (if t245 > 0 then (t230 + (negate ((t242 / t244) * t227))) else t230)) + (t246 * t235))
-        let !s249 = ((t240 * (if t245 > 0 then (t231 + (negate ((t242 / t244) * t228))) else t231)) + (t246 * t236))
-        chkI verts ((291 * i1) + (12 * i225)) 9 11
-        wrU verts (((291 * i1) + (12 * i225)) + 9) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s247 else t2)
-        wrU verts (((291 * i1) + (12 * i225)) + 10) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s248 else t3)
-        wrU verts (((291 * i1) + (12 * i225)) + 11) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s249 else t4)
-        wrU walk (12 * i225) s247
-        wrU walk ((12 * i225) + 1) s248
-        wrU walk ((12 * i225) + 2) s249
-        let !t250 = (sqrt (((t237 * t237) + (t238 * t238)) + (t239 * t239)))
-        let !t251 = (if (abs s233) > 0 then (recip s233) else 0.0)
-        let !t252 = (t251 * ((if t245 > 0 then (t229 + (negate ((t242 / t244) * t226))) else t229) + (negate t234)))
-        let !t253 = (t243 * (t229 + t229))
-        let !t254 = (t243 * (t230 + t230))
-        let !t255 = (t243 * (t231 + t231))
-        let !t256 = (sqrt (((t253 * t253) + (t254 * t254)) + (t255 * t255)))
-        let !t257 = (if t256 > 0 then (recip (if (t256 - 1.0e-300) > 0 then t256 else 1.0e-300)) else 0.0)
-        let !t258 = (t257 * t253)
-        let !t259 = (t257 * t254)
-        let !t260 = (t251 * ((if t245 > 0 then (t230 + (negate ((t242 / t244) * t227))) else t230) + (negate t235)))
-        let !t261 = (t257 * t255)
-        let !t262 = (t251 * ((if t245 > 0 then (t231 + (negate ((t242 / t244) * t228))) else t231) + (negate t236)))
-        let !t263 = (((t258 * t252) + (t259 * t260)) + (t261 * t262))
-        let !t264 = (t252 + (negate (t263 * t258)))
-        let !t265 = (t260 + (negate (t263 * t259)))
-        let !t266 = (t262 + (negate (t263 * t261)))
-        let !t267 = (sqrt (((t264 * t264) + (t265 * t265)) + (t266 * t266)))
-        let !t268 = (if t267 > 0 then (recip (if (t267 - 1.0e-300) > 0 then t267 else 1.0e-300)) else 0.0)
-        let !s269 = ((t240 * (t250 * (t268 * t264))) + (t246 * t237))
-        let !s270 = ((t240 * (t250 * (t268 * t265))) + (t246 * t238))
-        let !s271 = ((t240 * (t250 * (t268 * t266))) + (t246 * t239))
-        wrU walk ((12 * i225) + 3) s269
-        wrU walk ((12 * i225) + 4) s270
-        wrU walk ((12 * i225) + 5) s271
-        let !s272 = ((t240 * t258) + (t246 * t226))
-        let !s273 = ((t240 * t259) + (t246 * t227))
-        let !s274 = ((t240 * t261) + (t246 * t228))
-        wrU walk ((12 * i225) + 6) s272
-        wrU walk ((12 * i225) + 7) s273
-        wrU walk ((12 * i225) + 8) s274
+      loopI 0.0 24.0 $ \i223 -> do
+        let !d223 = fromIntegral i223 :: Double
+        chkI walk (12 * i223) 0 11
+        t224 <- rdU walk ((12 * i223) + 6)
+        t225 <- rdU walk ((12 * i223) + 7)
+        t226 <- rdU walk ((12 * i223) + 8)
+        t227 <- rdU walk ((12 * i223) + 9)
+        t228 <- rdU walk ((12 * i223) + 10)
+        t229 <- rdU walk ((12 * i223) + 11)
+        chkI radii ((24 * i1) + i223) 0 0
+        t230 <- rdU radii ((24 * i1) + i223)
+        let !s231 = (t230 / 4.0)
+        t232 <- rdU walk (12 * i223)
+        t233 <- rdU walk ((12 * i223) + 1)
+        t234 <- rdU walk ((12 * i223) + 2)
+        t235 <- rdU walk ((12 * i223) + 3)
+        t236 <- rdU walk ((12 * i223) + 4)
+        t237 <- rdU walk ((12 * i223) + 5)
+        let !t238 = (if (abs s231) > 0 then 1.0 else 0.0)
+        let !t239 = (sqrt (((t227 * t227) + (t228 * t228)) + (t229 * t229)))
+        let !t240 = (t239 - 1.0)
+        let !t241 = (recip (2.0 * t239))
+        let !t242 = ((((t241 * (t227 + t227)) * t224) + ((t241 * (t228 + t228)) * t225)) + ((t241 * (t229 + t229)) * t226))
+        let !t243 = (if ((abs t240) - 1.0e-10) > 0 then (if (abs t242) > 0 then 1.0 else 0.0) else 0.0)
+        let !t244 = (1.0 - t238)
+        let !s245 = ((t238 * (if t243 > 0 then (t227 + (negate ((t240 / t242) * t224))) else t227)) + (t244 * t232))
+        let !s246 = ((t238 * (if t243 > 0 then (t228 + (negate ((t240 / t242) * t225))) else t228)) + (t244 * t233))
+        let !s247 = ((t238 * (if t243 > 0 then (t229 + (negate ((t240 / t242) * t226))) else t229)) + (t244 * t234))
+        chkI verts ((291 * i1) + (12 * i223)) 9 11
+        wrU verts (((291 * i1) + (12 * i223)) + 9) (if (1.0 - (abs (((s245 - s245) + (s246 - s246)) + (s247 - s247)))) > 0 then s245 else t2)
+        wrU verts (((291 * i1) + (12 * i223)) + 10) (if (1.0 - (abs (((s245 - s245) + (s246 - s246)) + (s247 - s247)))) > 0 then s246 else t3)
+        wrU verts (((291 * i1) + (12 * i223)) + 11) (if (1.0 - (abs (((s245 - s245) + (s246 - s246)) + (s247 - s247)))) > 0 then s247 else t4)
+        wrU walk (12 * i223) s245
+        wrU walk ((12 * i223) + 1) s246
+        wrU walk ((12 * i223) + 2) s247
+        let !t248 = (sqrt (((t235 * t235) + (t236 * t236)) + (t237 * t237)))
+        let !t249 = (if (abs s231) > 0 then (recip s231) else 0.0)
+        let !t250 = (t249 * ((if t243 > 0 then (t227 + (negate ((t240 / t242) * t224))) else t227) + (negate t232)))
+        let !t251 = (t241 * (t227 + t227))
+        let !t252 = (t241 * (t228 + t228))
+        let !t253 = (t241 * (t229 + t229))
+        let !t254 = (sqrt (((t251 * t251) + (t252 * t252)) + (t253 * t253)))
+        let !t255 = (if t254 > 0 then (recip (if (t254 - 1.0e-300) > 0 then t254 else 1.0e-300)) else 0.0)
+        let !t256 = (t255 * t251)
+        let !t257 = (t255 * t252)
+        let !t258 = (t249 * ((if t243 > 0 then (t228 + (negate ((t240 / t242) * t225))) else t228) + (negate t233)))
+        let !t259 = (t255 * t253)
+        let !t260 = (t249 * ((if t243 > 0 then (t229 + (negate ((t240 / t242) * t226))) else t229) + (negate t234)))
+        let !t261 = (((t256 * t250) + (t257 * t258)) + (t259 * t260))
+        let !t262 = (t250 + (negate (t261 * t256)))
+        let !t263 = (t258 + (negate (t261 * t257)))
+        let !t264 = (t260 + (negate (t261 * t259)))
+        let !t265 = (sqrt (((t262 * t262) + (t263 * t263)) + (t264 * t264)))
+        let !t266 = (if t265 > 0 then (recip (if (t265 - 1.0e-300) > 0 then t265 else 1.0e-300)) else 0.0)
+        let !s267 = ((t238 * (t248 * (t266 * t262))) + (t244 * t235))
+        let !s268 = ((t238 * (t248 * (t266 * t263))) + (t244 * t236))
+        let !s269 = ((t238 * (t248 * (t266 * t264))) + (t244 * t237))
+        wrU walk ((12 * i223) + 3) s267
+        wrU walk ((12 * i223) + 4) s268
+        wrU walk ((12 * i223) + 5) s269
+        let !s270 = ((t238 * t256) + (t244 * t224))
+        let !s271 = ((t238 * t257) + (t244 * t225))
+        let !s272 = ((t238 * t259) + (t244 * t226))
+        wrU walk ((12 * i223) + 6) s270
+        wrU walk ((12 * i223) + 7) s271
+        wrU walk ((12 * i223) + 8) s272
         pure ()
-      loopI 0.0 24.0 $ \i275 -> do
-        let !d275 = fromIntegral i275 :: Double
-        chkI walk (12 * i275) 0 11
-        t276 <- rdU walk ((12 * i275) + 6)
-        t277 <- rdU walk ((12 * i275) + 7)
-        t278 <- rdU walk ((12 * i275) + 8)
-        chkI radii ((24 * i1) + i275) 0 0
-        t279 <- rdU radii ((24 * i1) + i275)
-        let !s280 = (t279 / 4.0)
-        t281 <- rdU walk (12 * i275)
-        t282 <- rdU walk ((12 * i275) + 1)
-        t283 <- rdU walk ((12 * i275) + 2)
-        t284 <- rdU walk ((12 * i275) + 3)
-        t285 <- rdU walk ((12 * i275) + 4)
-        t286 <- rdU walk ((12 * i275) + 5)
-        let !s287 = (t281 + (s280 * t284))
-        let !s288 = (t282 + (s280 * t285))
-        let !s289 = (t283 + (s280 * t286))
-        let !t290 = (sqrt (((s287 * s287) + (s288 * s288)) + (s289 * s289)))
-        let !t291 = (t290 - 1.0)
-        let !t292 = (recip (2.0 * t290))
-        let !t293 = ((((t292 * (s287 + s287)) * t276) + ((t292 * (s288 + s288)) * t277)) + ((t292 * (s289 + s289)) * t278))
-        let !t294 = (if ((abs t291) - 1.0e-10) > 0 then (if (abs t293) > 0 then 1.0 else 0.0) else 0.0)
-        let !s295 = (if t294 > 0 then (s287 + (negate ((t291 / t293) * t276))) else s287)
-        let !s296 = (if t294 > 0 then (s288 + (negate ((t291 / t293) * t277))) else s288)
-        let !s297 = (if t294 > 0 then (s289 + (negate ((t291 / t293) * t278))) else s289)
-        wrU walk ((12 * i275) + 9) s295
-        wrU walk ((12 * i275) + 10) s296
-        wrU walk ((12 * i275) + 11) s297
+      loopI 0.0 24.0 $ \i273 -> do
+        let !d273 = fromIntegral i273 :: Double
+        chkI walk (12 * i273) 0 11
+        t274 <- rdU walk ((12 * i273) + 6)
+        t275 <- rdU walk ((12 * i273) + 7)
+        t276 <- rdU walk ((12 * i273) + 8)
+        chkI radii ((24 * i1) + i273) 0 0
+        t277 <- rdU radii ((24 * i1) + i273)
+        let !s278 = (t277 / 4.0)
+        t279 <- rdU walk (12 * i273)
+        t280 <- rdU walk ((12 * i273) + 1)
+        t281 <- rdU walk ((12 * i273) + 2)
+        t282 <- rdU walk ((12 * i273) + 3)
+        t283 <- rdU walk ((12 * i273) + 4)
+        t284 <- rdU walk ((12 * i273) + 5)
+        let !s285 = (t279 + (s278 * t282))
+        let !s286 = (t280 + (s278 * t283))
+        let !s287 = (t281 + (s278 * t284))
+        let !t288 = (sqrt (((s285 * s285) + (s286 * s286)) + (s287 * s287)))
+        let !t289 = (t288 - 1.0)
+        let !t290 = (recip (2.0 * t288))
+        let !t291 = ((((t290 * (s285 + s285)) * t274) + ((t290 * (s286 + s286)) * t275)) + ((t290 * (s287 + s287)) * t276))
+        let !t292 = (if ((abs t289) - 1.0e-10) > 0 then (if (abs t291) > 0 then 1.0 else 0.0) else 0.0)
+        let !s293 = (if t292 > 0 then (s285 + (negate ((t289 / t291) * t274))) else s285)
+        let !s294 = (if t292 > 0 then (s286 + (negate ((t289 / t291) * t275))) else s286)
+        let !s295 = (if t292 > 0 then (s287 + (negate ((t289 / t291) * t276))) else s287)
+        wrU walk ((12 * i273) + 9) s293
+        wrU walk ((12 * i273) + 10) s294
+        wrU walk ((12 * i273) + 11) s295
         pure ()
-      loopI 0.0 24.0 $ \i298 -> do
-        let !d298 = fromIntegral i298 :: Double
-        chkI walk (12 * i298) 6 11
-        t299 <- rdU walk ((12 * i298) + 6)
-        t300 <- rdU walk ((12 * i298) + 7)
-        t301 <- rdU walk ((12 * i298) + 8)
-        t302 <- rdU walk ((12 * i298) + 9)
-        t303 <- rdU walk ((12 * i298) + 10)
-        t304 <- rdU walk ((12 * i298) + 11)
-        let !t305 = (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304)))
-        let !t306 = (t305 - 1.0)
-        let !t307 = (recip (2.0 * t305))
-        let !t308 = ((((t307 * (t302 + t302)) * t299) + ((t307 * (t303 + t303)) * t300)) + ((t307 * (t304 + t304)) * t301))
-        let !t309 = (if ((abs t306) - 1.0e-10) > 0 then (if (abs t308) > 0 then 1.0 else 0.0) else 0.0)
-        let !s310 = (if t309 > 0 then (t302 + (negate ((t306 / t308) * t299))) else t302)
-        let !s311 = (if t309 > 0 then (t303 + (negate ((t306 / t308) * t300))) else t303)
-        let !s312 = (if t309 > 0 then (t304 + (negate ((t306 / t308) * t301))) else t304)
-        wrU walk ((12 * i298) + 9) s310
-        wrU walk ((12 * i298) + 10) s311
-        wrU walk ((12 * i298) + 11) s312
+      loopI 0.0 24.0 $ \i296 -> do
+        let !d296 = fromIntegral i296 :: Double
+        chkI walk (12 * i296) 6 11
+        t297 <- rdU walk ((12 * i296) + 6)
+        t298 <- rdU walk ((12 * i296) + 7)
+        t299 <- rdU walk ((12 * i296) + 8)
+        t300 <- rdU walk ((12 * i296) + 9)
+        t301 <- rdU walk ((12 * i296) + 10)
+        t302 <- rdU walk ((12 * i296) + 11)
+        let !t303 = (sqrt (((t300 * t300) + (t301 * t301)) + (t302 * t302)))
+        let !t304 = (t303 - 1.0)
+        let !t305 = (recip (2.0 * t303))
+        let !t306 = ((((t305 * (t300 + t300)) * t297) + ((t305 * (t301 + t301)) * t298)) + ((t305 * (t302 + t302)) * t299))
+        let !t307 = (if ((abs t304) - 1.0e-10) > 0 then (if (abs t306) > 0 then 1.0 else 0.0) else 0.0)
+        let !s308 = (if t307 > 0 then (t300 + (negate ((t304 / t306) * t297))) else t300)
+        let !s309 = (if t307 > 0 then (t301 + (negate ((t304 / t306) * t298))) else t301)
+        let !s310 = (if t307 > 0 then (t302 + (negate ((t304 / t306) * t299))) else t302)
+        wrU walk ((12 * i296) + 9) s308
+        wrU walk ((12 * i296) + 10) s309
+        wrU walk ((12 * i296) + 11) s310
         pure ()
-      loopI 0.0 24.0 $ \i313 -> do
-        let !d313 = fromIntegral i313 :: Double
-        chkI walk (12 * i313) 0 11
-        t314 <- rdU walk ((12 * i313) + 6)
-        t315 <- rdU walk ((12 * i313) + 7)
-        t316 <- rdU walk ((12 * i313) + 8)
-        t317 <- rdU walk ((12 * i313) + 9)
-        t318 <- rdU walk ((12 * i313) + 10)
-        t319 <- rdU walk ((12 * i313) + 11)
-        chkI radii ((24 * i1) + i313) 0 0
-        t320 <- rdU radii ((24 * i1) + i313)
-        let !s321 = (t320 / 4.0)
-        t322 <- rdU walk (12 * i313)
-        t323 <- rdU walk ((12 * i313) + 1)
-        t324 <- rdU walk ((12 * i313) + 2)
-        t325 <- rdU walk ((12 * i313) + 3)
-        t326 <- rdU walk ((12 * i313) + 4)
-        t327 <- rdU walk ((12 * i313) + 5)
-        let !t328 = (if (abs s321) > 0 then 1.0 else 0.0)
-        let !t329 = (sqrt (((t317 * t317) + (t318 * t318)) + (t319 * t319)))
-        let !t330 = (t329 - 1.0)
-        let !t331 = (recip (2.0 * t329))
-        let !t332 = ((((t331 * (t317 + t317)) * t314) + ((t331 * (t318 + t318)) * t315)) + ((t331 * (t319 + t319)) * t316))
-        let !t333 = (if ((abs t330) - 1.0e-10) > 0 then (if (abs t332) > 0 then 1.0 else 0.0) else 0.0)
-        let !t334 = (1.0 - t328)
-        let !s335 = ((t328 * (if t333 > 0 then (t317 + (negate ((t330 / t332) * t314))) else t317)) + (t334 * t322))
-        let !s336 = ((t328 * (if t333 > 0 then (t318 + (negate ((t330 / t332) * t315))) else t318)) + (t334 * t323))
-        let !s337 = ((t328 * (if t333 > 0 then (t319 + (negate ((t330 / t332) * t316))) else t319)) + (t334 * t324))
-        chkI verts ((291 * i1) + (12 * i313)) 12 14
-        wrU verts (((291 * i1) + (12 * i313)) + 12) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s335 else t2)
-        wrU verts (((291 * i1) + (12 * i313)) + 13) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s336 else t3)
-        wrU verts (((291 * i1) + (12 * i313)) + 14) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s337 else t4)
+      loopI 0.0 24.0 $ \i311 -> do
+        let !d311 = fromIntegral i311 :: Double
+        chkI walk (12 * i311) 0 11
+        t312 <- rdU walk ((12 * i311) + 6)
+        t313 <- rdU walk ((12 * i311) + 7)
+        t314 <- rdU walk ((12 * i311) + 8)
+        t315 <- rdU walk ((12 * i311) + 9)
+        t316 <- rdU walk ((12 * i311) + 10)
+        t317 <- rdU walk ((12 * i311) + 11)
+        chkI radii ((24 * i1) + i311) 0 0
+        t318 <- rdU radii ((24 * i1) + i311)
+        let !s319 = (t318 / 4.0)
+        t320 <- rdU walk (12 * i311)
+        t321 <- rdU walk ((12 * i311) + 1)
+        t322 <- rdU walk ((12 * i311) + 2)
+        t323 <- rdU walk ((12 * i311) + 3)
+        t324 <- rdU walk ((12 * i311) + 4)
+        t325 <- rdU walk ((12 * i311) + 5)
+        let !t326 = (if (abs s319) > 0 then 1.0 else 0.0)
+        let !t327 = (sqrt (((t315 * t315) + (t316 * t316)) + (t317 * t317)))
+        let !t328 = (t327 - 1.0)
+        let !t329 = (recip (2.0 * t327))
+        let !t330 = ((((t329 * (t315 + t315)) * t312) + ((t329 * (t316 + t316)) * t313)) + ((t329 * (t317 + t317)) * t314))
+        let !t331 = (if ((abs t328) - 1.0e-10) > 0 then (if (abs t330) > 0 then 1.0 else 0.0) else 0.0)
+        let !t332 = (1.0 - t326)
+        let !s333 = ((t326 * (if t331 > 0 then (t315 + (negate ((t328 / t330) * t312))) else t315)) + (t332 * t320))
+        let !s334 = ((t326 * (if t331 > 0 then (t316 + (negate ((t328 / t330) * t313))) else t316)) + (t332 * t321))
+        let !s335 = ((t326 * (if t331 > 0 then (t317 + (negate ((t328 / t330) * t314))) else t317)) + (t332 * t322))
+        chkI verts ((291 * i1) + (12 * i311)) 12 14
+        wrU verts (((291 * i1) + (12 * i311)) + 12) (if (1.0 - (abs (((s333 - s333) + (s334 - s334)) + (s335 - s335)))) > 0 then s333 else t2)
+        wrU verts (((291 * i1) + (12 * i311)) + 13) (if (1.0 - (abs (((s333 - s333) + (s334 - s334)) + (s335 - s335)))) > 0 then s334 else t3)
+        wrU verts (((291 * i1) + (12 * i311)) + 14) (if (1.0 - (abs (((s333 - s333) + (s334 - s334)) + (s335 - s335)))) > 0 then s335 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i338 -> do
-        let !d338 = fromIntegral i338 :: Double
-        t339 <- getR v18
-        t340 <- getR v19
-        setR v18 ((t339 * 0.9659258262890683) - (t340 * 0.25881904510252074))
-        setR v19 ((t340 * 0.9659258262890683) + (t339 * 0.25881904510252074))
-        let !s341 = ((t339 * t5) + (t340 * s14))
-        let !s342 = ((t339 * t6) + (t340 * s15))
-        let !s343 = ((t339 * t7) + (t340 * s16))
-        chkI walk (12 * i338) 3 5
-        wrU walk ((12 * i338) + 3) s341
-        wrU walk ((12 * i338) + 4) s342
-        wrU walk ((12 * i338) + 5) s343
+      loopI 0.0 24.0 $ \i336 -> do
+        let !d336 = fromIntegral i336 :: Double
+        t337 <- rdU locals 0
+        t338 <- rdU locals 1
+        wrU locals 0 ((t337 * 0.9659258262890683) - (t338 * 0.25881904510252074))
+        wrU locals 1 ((t338 * 0.9659258262890683) + (t337 * 0.25881904510252074))
+        let !s339 = ((t337 * t5) + (t338 * s14))
+        let !s340 = ((t337 * t6) + (t338 * s15))
+        let !s341 = ((t337 * t7) + (t338 * s16))
+        chkI walk (12 * i336) 3 5
+        wrU walk ((12 * i336) + 3) s339
+        wrU walk ((12 * i336) + 4) s340
+        wrU walk ((12 * i336) + 5) s341
         pure ()
-      loopI 0.0 24.0 $ \i344 -> do
-        let !d344 = fromIntegral i344 :: Double
-        chkI radii ((24 * i1) + i344) 0 0
-        t345 <- rdU radii ((24 * i1) + i344)
-        chkI walk (12 * i344) 3 11
-        t346 <- rdU walk ((12 * i344) + 3)
-        t347 <- rdU walk ((12 * i344) + 4)
-        t348 <- rdU walk ((12 * i344) + 5)
-        let !s349 = (t2 + (t345 * t346))
-        let !s350 = (t3 + (t345 * t347))
-        let !s351 = (t4 + (t345 * t348))
-        let !t352 = (sqrt (((s349 * s349) + (s350 * s350)) + (s351 * s351)))
-        let !t353 = (t352 - 1.0)
-        let !t354 = (recip (2.0 * t352))
-        let !t355 = ((((t354 * (s349 + s349)) * t8) + ((t354 * (s350 + s350)) * t9)) + ((t354 * (s351 + s351)) * t10))
-        let !t356 = (if ((abs t353) - 1.0e-10) > 0 then (if (abs t355) > 0 then 1.0 else 0.0) else 0.0)
-        let !s357 = (if t356 > 0 then (s349 + (negate ((t353 / t355) * t8))) else s349)
-        let !s358 = (if t356 > 0 then (s350 + (negate ((t353 / t355) * t9))) else s350)
-        let !s359 = (if t356 > 0 then (s351 + (negate ((t353 / t355) * t10))) else s351)
-        wrU walk ((12 * i344) + 9) s357
-        wrU walk ((12 * i344) + 10) s358
-        wrU walk ((12 * i344) + 11) s359
+      loopI 0.0 24.0 $ \i342 -> do
+        let !d342 = fromIntegral i342 :: Double
+        chkI radii ((24 * i1) + i342) 0 0
+        t343 <- rdU radii ((24 * i1) + i342)
+        chkI walk (12 * i342) 3 11
+        t344 <- rdU walk ((12 * i342) + 3)
+        t345 <- rdU walk ((12 * i342) + 4)
+        t346 <- rdU walk ((12 * i342) + 5)
+        let !s347 = (t2 + (t343 * t344))
+        let !s348 = (t3 + (t343 * t345))
+        let !s349 = (t4 + (t343 * t346))
+        let !t350 = (sqrt (((s347 * s347) + (s348 * s348)) + (s349 * s349)))
+        let !t351 = (t350 - 1.0)
+        let !t352 = (recip (2.0 * t350))
+        let !t353 = ((((t352 * (s347 + s347)) * t8) + ((t352 * (s348 + s348)) * t9)) + ((t352 * (s349 + s349)) * t10))
+        let !t354 = (if ((abs t351) - 1.0e-10) > 0 then (if (abs t353) > 0 then 1.0 else 0.0) else 0.0)
+        let !s355 = (if t354 > 0 then (s347 + (negate ((t351 / t353) * t8))) else s347)
+        let !s356 = (if t354 > 0 then (s348 + (negate ((t351 / t353) * t9))) else s348)
+        let !s357 = (if t354 > 0 then (s349 + (negate ((t351 / t353) * t10))) else s349)
+        wrU walk ((12 * i342) + 9) s355
+        wrU walk ((12 * i342) + 10) s356
+        wrU walk ((12 * i342) + 11) s357
         pure ()
-      loopI 0.0 24.0 $ \i360 -> do
-        let !d360 = fromIntegral i360 :: Double
-        chkI walk (12 * i360) 9 11
-        t361 <- rdU walk ((12 * i360) + 9)
-        t362 <- rdU walk ((12 * i360) + 10)
-        t363 <- rdU walk ((12 * i360) + 11)
-        let !t364 = (sqrt (((t361 * t361) + (t362 * t362)) + (t363 * t363)))
-        let !t365 = (t364 - 1.0)
-        let !t366 = (recip (2.0 * t364))
-        let !t367 = ((((t366 * (t361 + t361)) * t8) + ((t366 * (t362 + t362)) * t9)) + ((t366 * (t363 + t363)) * t10))
-        let !t368 = (if ((abs t365) - 1.0e-10) > 0 then (if (abs t367) > 0 then 1.0 else 0.0) else 0.0)
-        let !s369 = (if t368 > 0 then (t361 + (negate ((t365 / t367) * t8))) else t361)
-        let !s370 = (if t368 > 0 then (t362 + (negate ((t365 / t367) * t9))) else t362)
-        let !s371 = (if t368 > 0 then (t363 + (negate ((t365 / t367) * t10))) else t363)
-        wrU walk ((12 * i360) + 9) s369
-        wrU walk ((12 * i360) + 10) s370
-        wrU walk ((12 * i360) + 11) s371
+      loopI 0.0 24.0 $ \i358 -> do
+        let !d358 = fromIntegral i358 :: Double
+        chkI walk (12 * i358) 9 11
+        t359 <- rdU walk ((12 * i358) + 9)
+        t360 <- rdU walk ((12 * i358) + 10)
+        t361 <- rdU walk ((12 * i358) + 11)
+        let !t362 = (sqrt (((t359 * t359) + (t360 * t360)) + (t361 * t361)))
+        let !t363 = (t362 - 1.0)
+        let !t364 = (recip (2.0 * t362))
+        let !t365 = ((((t364 * (t359 + t359)) * t8) + ((t364 * (t360 + t360)) * t9)) + ((t364 * (t361 + t361)) * t10))
+        let !t366 = (if ((abs t363) - 1.0e-10) > 0 then (if (abs t365) > 0 then 1.0 else 0.0) else 0.0)
+        let !s367 = (if t366 > 0 then (t359 + (negate ((t363 / t365) * t8))) else t359)
+        let !s368 = (if t366 > 0 then (t360 + (negate ((t363 / t365) * t9))) else t360)
+        let !s369 = (if t366 > 0 then (t361 + (negate ((t363 / t365) * t10))) else t361)
+        wrU walk ((12 * i358) + 9) s367
+        wrU walk ((12 * i358) + 10) s368
+        wrU walk ((12 * i358) + 11) s369
         pure ()
-      loopI 0.0 24.0 $ \i372 -> do
-        let !d372 = fromIntegral i372 :: Double
-        chkI walk (12 * i372) 3 11
-        t373 <- rdU walk ((12 * i372) + 9)
-        t374 <- rdU walk ((12 * i372) + 10)
-        t375 <- rdU walk ((12 * i372) + 11)
-        chkI radii ((24 * i1) + i372) 0 0
-        t376 <- rdU radii ((24 * i1) + i372)
-        t377 <- rdU walk ((12 * i372) + 3)
-        t378 <- rdU walk ((12 * i372) + 4)
-        t379 <- rdU walk ((12 * i372) + 5)
-        let !t380 = (if (abs t376) > 0 then 1.0 else 0.0)
-        let !t381 = (sqrt (((t373 * t373) + (t374 * t374)) + (t375 * t375)))
-        let !t382 = (t381 - 1.0)
-        let !t383 = (recip (2.0 * t381))
-        let !t384 = ((((t383 * (t373 + t373)) * t8) + ((t383 * (t374 + t374)) * t9)) + ((t383 * (t375 + t375)) * t10))
-        let !t385 = (if ((abs t382) - 1.0e-10) > 0 then (if (abs t384) > 0 then 1.0 else 0.0) else 0.0)
-        let !t386 = (1.0 - t380)
-        let !s387 = ((t380 * (if t385 > 0 then (t373 + (negate ((t382 / t384) * t8))) else t373)) + (t386 * t2))
-        let !s388 = ((t380 * (if t385 > 0 then (t374 + (negate ((t382 / t384) * t9))) else t374)) + (t386 * t3))
-        let !s389 = ((t380 * (if t385 > 0 then (t375 + (negate ((t382 / t384) * t10))) else t375)) + (t386 * t4))
-        let !t390 = (1.0 - (abs (((s387 - s387) + (s388 - s388)) + (s389 - s389))))
-        let !s391 = (if t390 > 0 then s387 else t2)
-        let !s392 = (if t390 > 0 then s388 else t3)
-        let !s393 = (if t390 > 0 then s389 else t4)
-        chkI verts ((291 * i1) + (12 * i372)) 3 14
-        wrU verts (((291 * i1) + (12 * i372)) + 12) s391
-        wrU verts (((291 * i1) + (12 * i372)) + 13) s392
-        wrU verts (((291 * i1) + (12 * i372)) + 14) s393
-        wrU verts (((291 * i1) + (12 * i372)) + 3) (t2 + (0.25 * (s391 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i372)) + 4) (t3 + (0.25 * (s392 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i372)) + 5) (t4 + (0.25 * (s393 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i372)) + 6) (t2 + (0.5 * (s391 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i372)) + 7) (t3 + (0.5 * (s392 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i372)) + 8) (t4 + (0.5 * (s393 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i372)) + 9) (t2 + (0.75 * (s391 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i372)) + 10) (t3 + (0.75 * (s392 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i372)) + 11) (t4 + (0.75 * (s393 + (negate t4))))
+      loopI 0.0 24.0 $ \i370 -> do
+        let !d370 = fromIntegral i370 :: Double
+        chkI walk (12 * i370) 3 11
+        t371 <- rdU walk ((12 * i370) + 9)
+        t372 <- rdU walk ((12 * i370) + 10)
+        t373 <- rdU walk ((12 * i370) + 11)
+        chkI radii ((24 * i1) + i370) 0 0
+        t374 <- rdU radii ((24 * i1) + i370)
+        t375 <- rdU walk ((12 * i370) + 3)
+        t376 <- rdU walk ((12 * i370) + 4)
+        t377 <- rdU walk ((12 * i370) + 5)
+        let !t378 = (if (abs t374) > 0 then 1.0 else 0.0)
+        let !t379 = (sqrt (((t371 * t371) + (t372 * t372)) + (t373 * t373)))
+        let !t380 = (t379 - 1.0)
+        let !t381 = (recip (2.0 * t379))
+        let !t382 = ((((t381 * (t371 + t371)) * t8) + ((t381 * (t372 + t372)) * t9)) + ((t381 * (t373 + t373)) * t10))
+        let !t383 = (if ((abs t380) - 1.0e-10) > 0 then (if (abs t382) > 0 then 1.0 else 0.0) else 0.0)
+        let !t384 = (1.0 - t378)
+        let !s385 = ((t378 * (if t383 > 0 then (t371 + (negate ((t380 / t382) * t8))) else t371)) + (t384 * t2))
+        let !s386 = ((t378 * (if t383 > 0 then (t372 + (negate ((t380 / t382) * t9))) else t372)) + (t384 * t3))
+        let !s387 = ((t378 * (if t383 > 0 then (t373 + (negate ((t380 / t382) * t10))) else t373)) + (t384 * t4))
+        let !t388 = (1.0 - (abs (((s385 - s385) + (s386 - s386)) + (s387 - s387))))
+        let !s389 = (if t388 > 0 then s385 else t2)
+        let !s390 = (if t388 > 0 then s386 else t3)
+        let !s391 = (if t388 > 0 then s387 else t4)
+        chkI verts ((291 * i1) + (12 * i370)) 3 14
+        wrU verts (((291 * i1) + (12 * i370)) + 12) s389
+        wrU verts (((291 * i1) + (12 * i370)) + 13) s390
+        wrU verts (((291 * i1) + (12 * i370)) + 14) s391
+        wrU verts (((291 * i1) + (12 * i370)) + 3) (t2 + (0.25 * (s389 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i370)) + 4) (t3 + (0.25 * (s390 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i370)) + 5) (t4 + (0.25 * (s391 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i370)) + 6) (t2 + (0.5 * (s389 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i370)) + 7) (t3 + (0.5 * (s390 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i370)) + 8) (t4 + (0.5 * (s391 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i370)) + 9) (t2 + (0.75 * (s389 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i370)) + 10) (t3 + (0.75 * (s390 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i370)) + 11) (t4 + (0.75 * (s391 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -22,13 +22,13 @@ compiled = CompiledStep "moebius" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - 1.0);\n}\n\nboundary function f(x, y, z) {\n  return (0.4 - Math.abs(y));\n}\n\ngravity function f(x, y, z) {\n  return [0.0, (-(4.0 * y)), 0.0];\n}\n\nquotient Antipodal\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Moebius: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -72,130 +72,131 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 16
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 9.1552734375e-5) > 0 then t6 else 9.1552734375e-5)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 9.1552734375e-5) > 0 then t5 else 9.1552734375e-5)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    t36 <- rdU meta 4
     t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    t39 <- rdU meta 4
-    t40 <- rdU meta 5
-    let !s41 = (floorF (t32 / t40))
-    let !s42 = (floorF (t33 / t40))
-    let !s43 = (floorF (t34 / t40))
-    loopI 0.0 3.0 $ \i44 -> do
-      let !d44 = fromIntegral i44 :: Double
-      loopI 0.0 3.0 $ \i45 -> do
-        let !d45 = fromIntegral i45 :: Double
-        loopI 0.0 3.0 $ \i46 -> do
-          let !d46 = fromIntegral i46 :: Double
-          let !s47 = ((s41 + d44) - 1.0)
-          let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = ((s43 + d46) - 1.0)
-          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
-          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
-          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
-          chkI grid (truncate s52) 0 0
-          t53 <- rdU grid (truncate s52)
-          chkI grid ((truncate s52) + (truncate t39)) 0 0
-          t54 <- rdU grid ((truncate s52) + (truncate t39))
-          loopI t54 t53 $ \i55 -> do
-            let !d55 = fromIntegral i55 :: Double
-            chkI items i55 0 0
-            t56 <- rdU items i55
-            chkI cellOf (truncate t56) 0 0
-            t57 <- rdU cellOf (truncate t56)
-            if (0.5 - (abs (t57 - s50))) > 0 then do
-              if (t56 - d31) > 0 then do
-                chkI pos (3 * (truncate t56)) 0 2
-                t58 <- rdU pos (3 * (truncate t56))
-                t59 <- rdU pos ((3 * (truncate t56)) + 1)
-                t60 <- rdU pos ((3 * (truncate t56)) + 2)
-                chkI scalars (6 * (truncate t56)) 2 5
-                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
-                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
-                let !t63 = (t36 + t62)
-                let !t64 = (t32 + (negate t58))
-                let !t65 = (t33 + (negate t59))
-                let !t66 = (t34 + (negate t60))
-                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
-                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
-                  t68 <- getR v38
-                  chkI near (truncate t68) 0 0
-                  wrU near (truncate t68) t56
-                  setR v38 (t68 + 1.0)
+    let !s38 = (floorF (t30 / t37))
+    let !s39 = (floorF (t31 / t37))
+    let !s40 = (floorF (t32 / t37))
+    loopI 0.0 3.0 $ \i41 -> do
+      let !d41 = fromIntegral i41 :: Double
+      loopI 0.0 3.0 $ \i42 -> do
+        let !d42 = fromIntegral i42 :: Double
+        loopI 0.0 3.0 $ \i43 -> do
+          let !d43 = fromIntegral i43 :: Double
+          let !s44 = ((s38 + d41) - 1.0)
+          let !s45 = ((s39 + d42) - 1.0)
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = (((((s44 + 131072.0) * 262144.0) + (s45 + 131072.0)) * 262144.0) + (s46 + 131072.0))
+          let !t48 = (((s44 * 7.3856093e7) + (s45 * 1.9349663e7)) + (s46 * 8.3492791e7))
+          let !s49 = (t48 - (t36 * (floorF (t48 / t36))))
+          chkI grid (truncate s49) 0 0
+          t50 <- rdU grid (truncate s49)
+          chkI grid ((truncate s49) + (truncate t36)) 0 0
+          t51 <- rdU grid ((truncate s49) + (truncate t36))
+          loopI t51 t50 $ \i52 -> do
+            let !d52 = fromIntegral i52 :: Double
+            chkI items i52 0 0
+            t53 <- rdU items i52
+            chkI cellOf (truncate t53) 0 0
+            t54 <- rdU cellOf (truncate t53)
+            if (0.5 - (abs (t54 - s47))) > 0 then do
+              if (t53 - d29) > 0 then do
+                chkI pos (3 * (truncate t53)) 0 2
+                t55 <- rdU pos (3 * (truncate t53))
+                t56 <- rdU pos ((3 * (truncate t53)) + 1)
+                t57 <- rdU pos ((3 * (truncate t53)) + 2)
+                chkI scalars (6 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                let !t60 = (t34 + t59)
+                let !t61 = (t30 + (negate t55))
+                let !t62 = (t31 + (negate t56))
+                let !t63 = (t32 + (negate t57))
+                let !t64 = ((t33 + t58) - (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63))))
+                if (if (t60 - t64) > 0 then t64 else t60) > 0 then do
+                  t65 <- rdU locals 2
+                  chkI near (truncate t65) 0 0
+                  wrU near (truncate t65) t53
+                  wrU locals 2 (t65 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -209,63 +210,63 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    t69 <- getR v38
-    loopI 0.0 t69 $ \i70 -> do
-      let !d70 = fromIntegral i70 :: Double
-      chkI near i70 0 0
-      t71 <- rdU near i70
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+    t66 <- rdU locals 2
+    loopI 0.0 t66 $ \i67 -> do
+      let !d67 = fromIntegral i67 :: Double
+      chkI near i67 0 0
+      t68 <- rdU near i67
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    let !s72 = (negate t32)
-    let !s73 = (negate t33)
-    let !s74 = (negate t34)
-    setR v38 0.0
-    t75 <- rdU meta 4
-    t76 <- rdU meta 5
-    let !s77 = (floorF (s72 / t76))
-    let !s78 = (floorF (s73 / t76))
-    let !s79 = (floorF (s74 / t76))
-    loopI 0.0 3.0 $ \i80 -> do
-      let !d80 = fromIntegral i80 :: Double
-      loopI 0.0 3.0 $ \i81 -> do
-        let !d81 = fromIntegral i81 :: Double
-        loopI 0.0 3.0 $ \i82 -> do
-          let !d82 = fromIntegral i82 :: Double
-          let !s83 = ((s77 + d80) - 1.0)
-          let !s84 = ((s78 + d81) - 1.0)
-          let !s85 = ((s79 + d82) - 1.0)
-          let !s86 = (((((s83 + 131072.0) * 262144.0) + (s84 + 131072.0)) * 262144.0) + (s85 + 131072.0))
-          let !t87 = (((s83 * 7.3856093e7) + (s84 * 1.9349663e7)) + (s85 * 8.3492791e7))
-          let !s88 = (t87 - (t75 * (floorF (t87 / t75))))
-          chkI grid (truncate s88) 0 0
-          t89 <- rdU grid (truncate s88)
-          chkI grid ((truncate s88) + (truncate t75)) 0 0
-          t90 <- rdU grid ((truncate s88) + (truncate t75))
-          loopI t90 t89 $ \i91 -> do
-            let !d91 = fromIntegral i91 :: Double
-            chkI items i91 0 0
-            t92 <- rdU items i91
-            chkI cellOf (truncate t92) 0 0
-            t93 <- rdU cellOf (truncate t92)
-            if (0.5 - (abs (t93 - s86))) > 0 then do
-              if ((t92 - d31) + 0.5) > 0 then do
-                chkI pos (3 * (truncate t92)) 0 2
-                t94 <- rdU pos (3 * (truncate t92))
-                t95 <- rdU pos ((3 * (truncate t92)) + 1)
-                t96 <- rdU pos ((3 * (truncate t92)) + 2)
-                chkI scalars (6 * (truncate t92)) 2 5
-                t97 <- rdU scalars ((6 * (truncate t92)) + 5)
-                t98 <- rdU scalars ((6 * (truncate t92)) + 2)
-                let !t99 = (t36 + t98)
-                let !t100 = (s72 + (negate t94))
-                let !t101 = (s73 + (negate t95))
-                let !t102 = (s74 + (negate t96))
-                let !t103 = ((t35 + t97) - (sqrt (((t100 * t100) + (t101 * t101)) + (t102 * t102))))
-                if (if (t99 - t103) > 0 then t103 else t99) > 0 then do
-                  t104 <- getR v38
-                  chkI near (truncate t104) 0 0
-                  wrU near (truncate t104) t92
-                  setR v38 (t104 + 1.0)
+    let !s69 = (negate t30)
+    let !s70 = (negate t31)
+    let !s71 = (negate t32)
+    wrU locals 2 0.0
+    t72 <- rdU meta 4
+    t73 <- rdU meta 5
+    let !s74 = (floorF (s69 / t73))
+    let !s75 = (floorF (s70 / t73))
+    let !s76 = (floorF (s71 / t73))
+    loopI 0.0 3.0 $ \i77 -> do
+      let !d77 = fromIntegral i77 :: Double
+      loopI 0.0 3.0 $ \i78 -> do
+        let !d78 = fromIntegral i78 :: Double
+        loopI 0.0 3.0 $ \i79 -> do
+          let !d79 = fromIntegral i79 :: Double
+          let !s80 = ((s74 + d77) - 1.0)
+          let !s81 = ((s75 + d78) - 1.0)
+          let !s82 = ((s76 + d79) - 1.0)
+          let !s83 = (((((s80 + 131072.0) * 262144.0) + (s81 + 131072.0)) * 262144.0) + (s82 + 131072.0))
+          let !t84 = (((s80 * 7.3856093e7) + (s81 * 1.9349663e7)) + (s82 * 8.3492791e7))
+          let !s85 = (t84 - (t72 * (floorF (t84 / t72))))
+          chkI grid (truncate s85) 0 0
+          t86 <- rdU grid (truncate s85)
+          chkI grid ((truncate s85) + (truncate t72)) 0 0
+          t87 <- rdU grid ((truncate s85) + (truncate t72))
+          loopI t87 t86 $ \i88 -> do
+            let !d88 = fromIntegral i88 :: Double
+            chkI items i88 0 0
+            t89 <- rdU items i88
+            chkI cellOf (truncate t89) 0 0
+            t90 <- rdU cellOf (truncate t89)
+            if (0.5 - (abs (t90 - s83))) > 0 then do
+              if ((t89 - d29) + 0.5) > 0 then do
+                chkI pos (3 * (truncate t89)) 0 2
+                t91 <- rdU pos (3 * (truncate t89))
+                t92 <- rdU pos ((3 * (truncate t89)) + 1)
+                t93 <- rdU pos ((3 * (truncate t89)) + 2)
+                chkI scalars (6 * (truncate t89)) 2 5
+                t94 <- rdU scalars ((6 * (truncate t89)) + 5)
+                t95 <- rdU scalars ((6 * (truncate t89)) + 2)
+                let !t96 = (t34 + t95)
+                let !t97 = (s69 + (negate t91))
+                let !t98 = (s70 + (negate t92))
+                let !t99 = (s71 + (negate t93))
+                let !t100 = ((t33 + t94) - (sqrt (((t97 * t97) + (t98 * t98)) + (t99 * t99))))
+                if (if (t96 - t100) > 0 then t100 else t96) > 0 then do
+                  t101 <- rdU locals 2
+                  chkI near (truncate t101) 0 0
+                  wrU near (truncate t101) t89
+                  wrU locals 2 (t101 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -279,69 +280,69 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    t105 <- getR v38
-    loopI 0.0 t105 $ \i106 -> do
-      let !d106 = fromIntegral i106 :: Double
-      chkI near i106 0 0
-      t107 <- rdU near i106
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk (((t107 + 1.0) * 64.0) + 16.0) d31 t107 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
+    t102 <- rdU locals 2
+    loopI 0.0 t102 $ \i103 -> do
+      let !d103 = fromIntegral i103 :: Double
+      chkI near i103 0 0
+      t104 <- rdU near i103
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t104 + 1.0) * 64.0) + 16.0) d29 t104 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
       pure ()
-    chkI normal (3 * i31) 0 2
-    t108 <- rdU normal (3 * i31)
-    t109 <- rdU normal ((3 * i31) + 1)
-    t110 <- rdU normal ((3 * i31) + 2)
-    v111 <- newR 0.0
-    v112 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i113 -> do
-      let !d113 = fromIntegral i113 :: Double
-      chkI verts ((12 * i113) + (291 * i31)) 12 14
-      t114 <- rdU verts (((12 * i113) + (291 * i31)) + 12)
-      t115 <- rdU verts (((12 * i113) + (291 * i31)) + 13)
-      t116 <- rdU verts (((12 * i113) + (291 * i31)) + 14)
-      let !s117 = (0.4 - (abs t115))
-      t118 <- getR v111
-      if ((negate s117) - t118) > 0 then do
-        setR v111 (negate s117)
-        setR v112 d113
+    chkI normal (3 * i29) 0 2
+    t105 <- rdU normal (3 * i29)
+    t106 <- rdU normal ((3 * i29) + 1)
+    t107 <- rdU normal ((3 * i29) + 2)
+    wrU locals 3 0.0
+    wrU locals 4 (-1.0)
+    loopI 0.0 24.0 $ \i108 -> do
+      let !d108 = fromIntegral i108 :: Double
+      chkI verts ((12 * i108) + (291 * i29)) 12 14
+      t109 <- rdU verts (((12 * i108) + (291 * i29)) + 12)
+      t110 <- rdU verts (((12 * i108) + (291 * i29)) + 13)
+      t111 <- rdU verts (((12 * i108) + (291 * i29)) + 14)
+      let !s112 = (0.4 - (abs t110))
+      t113 <- rdU locals 3
+      if ((negate s112) - t113) > 0 then do
+        wrU locals 3 (negate s112)
+        wrU locals 4 d108
         pure ()
       else do
         pure ()
       pure ()
-    t119 <- getR v111
-    if t119 > 0 then do
-      t120 <- getR v112
-      chkI verts ((12 * (truncate t120)) + (291 * i31)) 12 14
-      t121 <- rdU verts (((12 * (truncate t120)) + (291 * i31)) + 12)
-      t122 <- rdU verts (((12 * (truncate t120)) + (291 * i31)) + 13)
-      t123 <- rdU verts (((12 * (truncate t120)) + (291 * i31)) + 14)
-      let !t124 = (negate (signum t122))
-      let !t125 = (sqrt (t124 * t124))
-      let !s126 = ((if t125 > 0 then (recip (if (t125 - 1.0e-300) > 0 then t125 else 1.0e-300)) else 0.0) * t124)
-      let !s127 = (negate (t110 * s126))
-      let !s128 = (t108 * s126)
-      v129 <- newR 1.0e300
-      v130 <- newR (-1.0e300)
-      v131 <- newR (-1.0)
-      v132 <- newR (-1.0)
-      loopI 0.0 24.0 $ \i133 -> do
-        let !d133 = fromIntegral i133 :: Double
-        chkI verts ((12 * i133) + (291 * i31)) 12 14
-        t134 <- rdU verts (((12 * i133) + (291 * i31)) + 12)
-        t135 <- rdU verts (((12 * i133) + (291 * i31)) + 13)
-        t136 <- rdU verts (((12 * i133) + (291 * i31)) + 14)
-        if (negate (0.4 - (abs t135))) > 0 then do
-          let !s137 = ((t134 * s127) + (t136 * s128))
-          t138 <- getR v129
-          if (t138 - s137) > 0 then do
-            setR v129 s137
-            setR v131 d133
+    t114 <- rdU locals 3
+    if t114 > 0 then do
+      t115 <- rdU locals 4
+      chkI verts ((12 * (truncate t115)) + (291 * i29)) 12 14
+      t116 <- rdU verts (((12 * (truncate t115)) + (291 * i29)) + 12)
+      t117 <- rdU verts (((12 * (truncate t115)) + (291 * i29)) + 13)
+      t118 <- rdU verts (((12 * (truncate t115)) + (291 * i29)) + 14)
+      let !t119 = (negate (signum t117))
+      let !t120 = (sqrt (t119 * t119))
+      let !s121 = ((if t120 > 0 then (recip (if (t120 - 1.0e-300) > 0 then t120 else 1.0e-300)) else 0.0) * t119)
+      let !s122 = (negate (t107 * s121))
+      let !s123 = (t105 * s121)
+      wrU locals 5 1.0e300
+      wrU locals 6 (-1.0e300)
+      wrU locals 7 (-1.0)
+      wrU locals 8 (-1.0)
+      loopI 0.0 24.0 $ \i124 -> do
+        let !d124 = fromIntegral i124 :: Double
+        chkI verts ((12 * i124) + (291 * i29)) 12 14
+        t125 <- rdU verts (((12 * i124) + (291 * i29)) + 12)
+        t126 <- rdU verts (((12 * i124) + (291 * i29)) + 13)
+        t127 <- rdU verts (((12 * i124) + (291 * i29)) + 14)
+        if (negate (0.4 - (abs t126))) > 0 then do
+          let !s128 = ((t125 * s122) + (t127 * s123))
+          t129 <- rdU locals 5
+          if (t129 - s128) > 0 then do
+            wrU locals 5 s128
+            wrU locals 7 d124
             pure ()
           else do
             pure ()
-          t139 <- getR v130
-          if (s137 - t139) > 0 then do
-            setR v130 s137
-            setR v132 d133
+          t130 <- rdU locals 6
+          if (s128 - t130) > 0 then do
+            wrU locals 6 s128
+            wrU locals 8 d124
             pure ()
           else do
             pure ()
@@ -349,204 +350,204 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         else do
           pure ()
         pure ()
-      t140 <- getR v131
-      t141 <- getR v132
-      chkI verts ((12 * (truncate t140)) + (291 * i31)) 12 14
-      t142 <- rdU verts (((12 * (truncate t140)) + (291 * i31)) + 12)
-      t143 <- rdU verts (((12 * (truncate t140)) + (291 * i31)) + 13)
-      t144 <- rdU verts (((12 * (truncate t140)) + (291 * i31)) + 14)
-      let !s145 = (negate (signum t143))
-      let !s146 = (sqrt (s145 * s145))
-      let !s147 = (0.4 - (abs t143))
-      t148 <- rdU meta 2
-      t149 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t149) > 0 then 1.0 else t149)) - t148) - 0.5) > 0 then do
-        wrU meta 2 (t148 + 1.0)
-        t150 <- rdU pos (3 * i31)
-        t151 <- rdU pos ((3 * i31) + 1)
-        t152 <- rdU pos ((3 * i31) + 2)
-        t153 <- rdU normal (3 * i31)
-        t154 <- rdU normal ((3 * i31) + 1)
-        t155 <- rdU normal ((3 * i31) + 2)
-        chkI axis (3 * i31) 0 2
-        t156 <- rdU axis (3 * i31)
-        t157 <- rdU axis ((3 * i31) + 1)
-        t158 <- rdU axis ((3 * i31) + 2)
-        let !s159 = ((t154 * t158) - (t155 * t157))
-        let !s160 = ((t155 * t156) - (t153 * t158))
-        let !s161 = ((t153 * t157) - (t154 * t156))
-        chkI scalars (6 * i31) 0 0
-        t162 <- rdU scalars (6 * i31)
-        t163 <- rdU scalars ((6 * i31) + 5)
-        t164 <- rdU scalars ((6 * i31) + 2)
-        t165 <- rdU scalars ((6 * i31) + 3)
-        chkI contacts (30 * (truncate t148)) 0 29
-        wrU contacts (30 * (truncate t148)) d31
-        wrU contacts ((30 * (truncate t148)) + 1) (-1.0)
-        wrU contacts ((30 * (truncate t148)) + 2) d31
-        wrU contacts ((30 * (truncate t148)) + 3) 8.0
-        wrU contacts ((30 * (truncate t148)) + 4) (negate ((t154 * ((if s146 > 0 then (recip (if (s146 - 1.0e-300) > 0 then s146 else 1.0e-300)) else 0.0) * s145)) * t153))
-        let !t166 = ((if s146 > 0 then (recip (if (s146 - 1.0e-300) > 0 then s146 else 1.0e-300)) else 0.0) * s145)
-        wrU contacts ((30 * (truncate t148)) + 5) (t166 + (negate ((t154 * t166) * t154)))
-        wrU contacts ((30 * (truncate t148)) + 6) (negate ((t154 * t166) * t155))
-        wrU contacts ((30 * (truncate t148)) + 7) (((negate ((t144 + (negate t152)) * t166)) * t153) + (((t142 + (negate t150)) * t166) * t155))
-        let !t167 = (negate (t155 * t166))
-        wrU contacts ((30 * (truncate t148)) + 12) (t167 + (negate (((t153 * t167) + (t155 * (t153 * t166))) * t153)))
-        wrU contacts ((30 * (truncate t148)) + 13) (negate (((t153 * t167) + (t155 * (t153 * t166))) * t154))
-        let !t168 = (t153 * t166)
-        wrU contacts ((30 * (truncate t148)) + 14) (t168 + (negate (((t153 * t167) + (t155 * t168)) * t155)))
-        let !t169 = (t143 + (negate t151))
-        wrU contacts ((30 * (truncate t148)) + 15) ((((t169 * t168) * t153) + ((((t144 + (negate t152)) * t167) - ((t142 + (negate t150)) * t168)) * t154)) + ((negate (t169 * t167)) * t155))
-        wrU contacts ((30 * (truncate t148)) + 20) (if s146 > 0 then ((negate s147) / (if (s146 - 1.0e-300) > 0 then s146 else 1.0e-300)) else 0.0)
-        wrU contacts ((30 * (truncate t148)) + 26) 1.0
-        wrU contacts ((30 * (truncate t148)) + 27) t142
-        wrU contacts ((30 * (truncate t148)) + 28) t143
-        wrU contacts ((30 * (truncate t148)) + 29) t144
+      t131 <- rdU locals 7
+      t132 <- rdU locals 8
+      chkI verts ((12 * (truncate t131)) + (291 * i29)) 12 14
+      t133 <- rdU verts (((12 * (truncate t131)) + (291 * i29)) + 12)
+      t134 <- rdU verts (((12 * (truncate t131)) + (291 * i29)) + 13)
+      t135 <- rdU verts (((12 * (truncate t131)) + (291 * i29)) + 14)
+      let !s136 = (negate (signum t134))
+      let !s137 = (sqrt (s136 * s136))
+      let !s138 = (0.4 - (abs t134))
+      t139 <- rdU meta 2
+      t140 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t140) > 0 then 1.0 else t140)) - t139) - 0.5) > 0 then do
+        wrU meta 2 (t139 + 1.0)
+        t141 <- rdU pos (3 * i29)
+        t142 <- rdU pos ((3 * i29) + 1)
+        t143 <- rdU pos ((3 * i29) + 2)
+        t144 <- rdU normal (3 * i29)
+        t145 <- rdU normal ((3 * i29) + 1)
+        t146 <- rdU normal ((3 * i29) + 2)
+        chkI axis (3 * i29) 0 2
+        t147 <- rdU axis (3 * i29)
+        t148 <- rdU axis ((3 * i29) + 1)
+        t149 <- rdU axis ((3 * i29) + 2)
+        let !s150 = ((t145 * t149) - (t146 * t148))
+        let !s151 = ((t146 * t147) - (t144 * t149))
+        let !s152 = ((t144 * t148) - (t145 * t147))
+        chkI scalars (6 * i29) 0 0
+        t153 <- rdU scalars (6 * i29)
+        t154 <- rdU scalars ((6 * i29) + 5)
+        t155 <- rdU scalars ((6 * i29) + 2)
+        t156 <- rdU scalars ((6 * i29) + 3)
+        chkI contacts (30 * (truncate t139)) 0 29
+        wrU contacts (30 * (truncate t139)) d29
+        wrU contacts ((30 * (truncate t139)) + 1) (-1.0)
+        wrU contacts ((30 * (truncate t139)) + 2) d29
+        wrU contacts ((30 * (truncate t139)) + 3) 8.0
+        wrU contacts ((30 * (truncate t139)) + 4) (negate ((t145 * ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)) * t144))
+        let !t157 = ((if s137 > 0 then (recip (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0) * s136)
+        wrU contacts ((30 * (truncate t139)) + 5) (t157 + (negate ((t145 * t157) * t145)))
+        wrU contacts ((30 * (truncate t139)) + 6) (negate ((t145 * t157) * t146))
+        wrU contacts ((30 * (truncate t139)) + 7) (((negate ((t135 + (negate t143)) * t157)) * t144) + (((t133 + (negate t141)) * t157) * t146))
+        let !t158 = (negate (t146 * t157))
+        wrU contacts ((30 * (truncate t139)) + 12) (t158 + (negate (((t144 * t158) + (t146 * (t144 * t157))) * t144)))
+        wrU contacts ((30 * (truncate t139)) + 13) (negate (((t144 * t158) + (t146 * (t144 * t157))) * t145))
+        let !t159 = (t144 * t157)
+        wrU contacts ((30 * (truncate t139)) + 14) (t159 + (negate (((t144 * t158) + (t146 * t159)) * t146)))
+        let !t160 = (t134 + (negate t142))
+        wrU contacts ((30 * (truncate t139)) + 15) ((((t160 * t159) * t144) + ((((t135 + (negate t143)) * t158) - ((t133 + (negate t141)) * t159)) * t145)) + ((negate (t160 * t158)) * t146))
+        wrU contacts ((30 * (truncate t139)) + 20) (if s137 > 0 then ((negate s138) / (if (s137 - 1.0e-300) > 0 then s137 else 1.0e-300)) else 0.0)
+        wrU contacts ((30 * (truncate t139)) + 26) 1.0
+        wrU contacts ((30 * (truncate t139)) + 27) t133
+        wrU contacts ((30 * (truncate t139)) + 28) t134
+        wrU contacts ((30 * (truncate t139)) + 29) t135
         if (-0.5) > 0 then do
           chkI pos 0 (-3) (-1)
-          t170 <- rdU pos (-3)
-          t171 <- rdU pos (-2)
-          t172 <- rdU pos (-1)
+          t161 <- rdU pos (-3)
+          t162 <- rdU pos (-2)
+          t163 <- rdU pos (-1)
           chkI normal 0 (-3) (-1)
-          t173 <- rdU normal (-3)
-          t174 <- rdU normal (-2)
-          t175 <- rdU normal (-1)
+          t164 <- rdU normal (-3)
+          t165 <- rdU normal (-2)
+          t166 <- rdU normal (-1)
           chkI axis 0 (-3) (-1)
-          t176 <- rdU axis (-3)
-          t177 <- rdU axis (-2)
-          t178 <- rdU axis (-1)
-          let !s179 = ((t174 * t178) - (t175 * t177))
-          let !s180 = ((t175 * t176) - (t173 * t178))
-          let !s181 = ((t173 * t177) - (t174 * t176))
+          t167 <- rdU axis (-3)
+          t168 <- rdU axis (-2)
+          t169 <- rdU axis (-1)
+          let !s170 = ((t165 * t169) - (t166 * t168))
+          let !s171 = ((t166 * t167) - (t164 * t169))
+          let !s172 = ((t164 * t168) - (t165 * t167))
           chkI scalars 0 (-6) (-1)
-          t182 <- rdU scalars (-6)
-          t183 <- rdU scalars (-1)
-          t184 <- rdU scalars (-4)
-          t185 <- rdU scalars (-3)
-          wrU contacts ((30 * (truncate t148)) + 8) (negate ((t174 * t166) * t173))
-          wrU contacts ((30 * (truncate t148)) + 9) (t166 + (negate ((t174 * t166) * t174)))
-          wrU contacts ((30 * (truncate t148)) + 10) (negate ((t174 * t166) * t175))
-          wrU contacts ((30 * (truncate t148)) + 11) (((negate ((t144 + (negate t172)) * t166)) * t173) + (((t142 + (negate t170)) * t166) * t175))
-          wrU contacts ((30 * (truncate t148)) + 16) (t167 + (negate (((t173 * t167) + (t175 * t168)) * t173)))
-          wrU contacts ((30 * (truncate t148)) + 17) (negate (((t173 * t167) + (t175 * t168)) * t174))
-          wrU contacts ((30 * (truncate t148)) + 18) (t168 + (negate (((t173 * t167) + (t175 * t168)) * t175)))
-          let !t186 = (t143 + (negate t171))
-          wrU contacts ((30 * (truncate t148)) + 19) ((((t186 * t168) * t173) + ((((t144 + (negate t172)) * t167) - ((t142 + (negate t170)) * t168)) * t174)) + ((negate (t186 * t167)) * t175))
+          t173 <- rdU scalars (-6)
+          t174 <- rdU scalars (-1)
+          t175 <- rdU scalars (-4)
+          t176 <- rdU scalars (-3)
+          wrU contacts ((30 * (truncate t139)) + 8) (negate ((t165 * t157) * t164))
+          wrU contacts ((30 * (truncate t139)) + 9) (t157 + (negate ((t165 * t157) * t165)))
+          wrU contacts ((30 * (truncate t139)) + 10) (negate ((t165 * t157) * t166))
+          wrU contacts ((30 * (truncate t139)) + 11) (((negate ((t135 + (negate t163)) * t157)) * t164) + (((t133 + (negate t161)) * t157) * t166))
+          wrU contacts ((30 * (truncate t139)) + 16) (t158 + (negate (((t164 * t158) + (t166 * t159)) * t164)))
+          wrU contacts ((30 * (truncate t139)) + 17) (negate (((t164 * t158) + (t166 * t159)) * t165))
+          wrU contacts ((30 * (truncate t139)) + 18) (t159 + (negate (((t164 * t158) + (t166 * t159)) * t166)))
+          let !t177 = (t134 + (negate t162))
+          wrU contacts ((30 * (truncate t139)) + 19) ((((t177 * t159) * t164) + ((((t135 + (negate t163)) * t158) - ((t133 + (negate t161)) * t159)) * t165)) + ((negate (t177 * t158)) * t166))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t148)) + 8) 0.0
-          wrU contacts ((30 * (truncate t148)) + 9) 0.0
-          wrU contacts ((30 * (truncate t148)) + 10) 0.0
-          wrU contacts ((30 * (truncate t148)) + 11) 0.0
-          wrU contacts ((30 * (truncate t148)) + 16) 0.0
-          wrU contacts ((30 * (truncate t148)) + 17) 0.0
-          wrU contacts ((30 * (truncate t148)) + 18) 0.0
-          wrU contacts ((30 * (truncate t148)) + 19) 0.0
+          wrU contacts ((30 * (truncate t139)) + 8) 0.0
+          wrU contacts ((30 * (truncate t139)) + 9) 0.0
+          wrU contacts ((30 * (truncate t139)) + 10) 0.0
+          wrU contacts ((30 * (truncate t139)) + 11) 0.0
+          wrU contacts ((30 * (truncate t139)) + 16) 0.0
+          wrU contacts ((30 * (truncate t139)) + 17) 0.0
+          wrU contacts ((30 * (truncate t139)) + 18) 0.0
+          wrU contacts ((30 * (truncate t139)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t187 <- rdU meta 6
-        wrU meta 6 (t187 + 1.0)
+        t178 <- rdU meta 6
+        wrU meta 6 (t178 + 1.0)
         pure ()
-      if (abs (t141 - t140)) > 0 then do
-        chkI verts ((12 * (truncate t141)) + (291 * i31)) 12 14
-        t188 <- rdU verts (((12 * (truncate t141)) + (291 * i31)) + 12)
-        t189 <- rdU verts (((12 * (truncate t141)) + (291 * i31)) + 13)
-        t190 <- rdU verts (((12 * (truncate t141)) + (291 * i31)) + 14)
-        let !s191 = (negate (signum t189))
-        let !s192 = (sqrt (s191 * s191))
-        let !s193 = (0.4 - (abs t189))
-        t194 <- rdU meta 2
-        t195 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t195) > 0 then 1.0 else t195)) - t194) - 0.5) > 0 then do
-          wrU meta 2 (t194 + 1.0)
-          t196 <- rdU pos (3 * i31)
-          t197 <- rdU pos ((3 * i31) + 1)
-          t198 <- rdU pos ((3 * i31) + 2)
-          t199 <- rdU normal (3 * i31)
-          t200 <- rdU normal ((3 * i31) + 1)
-          t201 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t202 <- rdU axis (3 * i31)
-          t203 <- rdU axis ((3 * i31) + 1)
-          t204 <- rdU axis ((3 * i31) + 2)
-          let !s205 = ((t200 * t204) - (t201 * t203))
-          let !s206 = ((t201 * t202) - (t199 * t204))
-          let !s207 = ((t199 * t203) - (t200 * t202))
-          chkI scalars (6 * i31) 0 0
-          t208 <- rdU scalars (6 * i31)
-          t209 <- rdU scalars ((6 * i31) + 5)
-          t210 <- rdU scalars ((6 * i31) + 2)
-          t211 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t194)) 0 29
-          wrU contacts (30 * (truncate t194)) d31
-          wrU contacts ((30 * (truncate t194)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t194)) + 2) d31
-          wrU contacts ((30 * (truncate t194)) + 3) 9.0
-          wrU contacts ((30 * (truncate t194)) + 4) (negate ((t200 * ((if s192 > 0 then (recip (if (s192 - 1.0e-300) > 0 then s192 else 1.0e-300)) else 0.0) * s191)) * t199))
-          let !t212 = ((if s192 > 0 then (recip (if (s192 - 1.0e-300) > 0 then s192 else 1.0e-300)) else 0.0) * s191)
-          wrU contacts ((30 * (truncate t194)) + 5) (t212 + (negate ((t200 * t212) * t200)))
-          wrU contacts ((30 * (truncate t194)) + 6) (negate ((t200 * t212) * t201))
-          wrU contacts ((30 * (truncate t194)) + 7) (((negate ((t190 + (negate t198)) * t212)) * t199) + (((t188 + (negate t196)) * t212) * t201))
-          let !t213 = (negate (t201 * t212))
-          wrU contacts ((30 * (truncate t194)) + 12) (t213 + (negate (((t199 * t213) + (t201 * (t199 * t212))) * t199)))
-          wrU contacts ((30 * (truncate t194)) + 13) (negate (((t199 * t213) + (t201 * (t199 * t212))) * t200))
-          let !t214 = (t199 * t212)
-          wrU contacts ((30 * (truncate t194)) + 14) (t214 + (negate (((t199 * t213) + (t201 * t214)) * t201)))
-          let !t215 = (t189 + (negate t197))
-          wrU contacts ((30 * (truncate t194)) + 15) ((((t215 * t214) * t199) + ((((t190 + (negate t198)) * t213) - ((t188 + (negate t196)) * t214)) * t200)) + ((negate (t215 * t213)) * t201))
-          wrU contacts ((30 * (truncate t194)) + 20) (if s192 > 0 then ((negate s193) / (if (s192 - 1.0e-300) > 0 then s192 else 1.0e-300)) else 0.0)
-          wrU contacts ((30 * (truncate t194)) + 26) 1.0
-          wrU contacts ((30 * (truncate t194)) + 27) t188
-          wrU contacts ((30 * (truncate t194)) + 28) t189
-          wrU contacts ((30 * (truncate t194)) + 29) t190
+      if (abs (t132 - t131)) > 0 then do
+        chkI verts ((12 * (truncate t132)) + (291 * i29)) 12 14
+        t179 <- rdU verts (((12 * (truncate t132)) + (291 * i29)) + 12)
+        t180 <- rdU verts (((12 * (truncate t132)) + (291 * i29)) + 13)
+        t181 <- rdU verts (((12 * (truncate t132)) + (291 * i29)) + 14)
+        let !s182 = (negate (signum t180))
+        let !s183 = (sqrt (s182 * s182))
+        let !s184 = (0.4 - (abs t180))
+        t185 <- rdU meta 2
+        t186 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t186) > 0 then 1.0 else t186)) - t185) - 0.5) > 0 then do
+          wrU meta 2 (t185 + 1.0)
+          t187 <- rdU pos (3 * i29)
+          t188 <- rdU pos ((3 * i29) + 1)
+          t189 <- rdU pos ((3 * i29) + 2)
+          t190 <- rdU normal (3 * i29)
+          t191 <- rdU normal ((3 * i29) + 1)
+          t192 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t193 <- rdU axis (3 * i29)
+          t194 <- rdU axis ((3 * i29) + 1)
+          t195 <- rdU axis ((3 * i29) + 2)
+          let !s196 = ((t191 * t195) - (t192 * t194))
+          let !s197 = ((t192 * t193) - (t190 * t195))
+          let !s198 = ((t190 * t194) - (t191 * t193))
+          chkI scalars (6 * i29) 0 0
+          t199 <- rdU scalars (6 * i29)
+          t200 <- rdU scalars ((6 * i29) + 5)
+          t201 <- rdU scalars ((6 * i29) + 2)
+          t202 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t185)) 0 29
+          wrU contacts (30 * (truncate t185)) d29
+          wrU contacts ((30 * (truncate t185)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t185)) + 2) d29
+          wrU contacts ((30 * (truncate t185)) + 3) 9.0
+          wrU contacts ((30 * (truncate t185)) + 4) (negate ((t191 * ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)) * t190))
+          let !t203 = ((if s183 > 0 then (recip (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0) * s182)
+          wrU contacts ((30 * (truncate t185)) + 5) (t203 + (negate ((t191 * t203) * t191)))
+          wrU contacts ((30 * (truncate t185)) + 6) (negate ((t191 * t203) * t192))
+          wrU contacts ((30 * (truncate t185)) + 7) (((negate ((t181 + (negate t189)) * t203)) * t190) + (((t179 + (negate t187)) * t203) * t192))
+          let !t204 = (negate (t192 * t203))
+          wrU contacts ((30 * (truncate t185)) + 12) (t204 + (negate (((t190 * t204) + (t192 * (t190 * t203))) * t190)))
+          wrU contacts ((30 * (truncate t185)) + 13) (negate (((t190 * t204) + (t192 * (t190 * t203))) * t191))
+          let !t205 = (t190 * t203)
+          wrU contacts ((30 * (truncate t185)) + 14) (t205 + (negate (((t190 * t204) + (t192 * t205)) * t192)))
+          let !t206 = (t180 + (negate t188))
+          wrU contacts ((30 * (truncate t185)) + 15) ((((t206 * t205) * t190) + ((((t181 + (negate t189)) * t204) - ((t179 + (negate t187)) * t205)) * t191)) + ((negate (t206 * t204)) * t192))
+          wrU contacts ((30 * (truncate t185)) + 20) (if s183 > 0 then ((negate s184) / (if (s183 - 1.0e-300) > 0 then s183 else 1.0e-300)) else 0.0)
+          wrU contacts ((30 * (truncate t185)) + 26) 1.0
+          wrU contacts ((30 * (truncate t185)) + 27) t179
+          wrU contacts ((30 * (truncate t185)) + 28) t180
+          wrU contacts ((30 * (truncate t185)) + 29) t181
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t216 <- rdU pos (-3)
-            t217 <- rdU pos (-2)
-            t218 <- rdU pos (-1)
+            t207 <- rdU pos (-3)
+            t208 <- rdU pos (-2)
+            t209 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t219 <- rdU normal (-3)
-            t220 <- rdU normal (-2)
-            t221 <- rdU normal (-1)
+            t210 <- rdU normal (-3)
+            t211 <- rdU normal (-2)
+            t212 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t222 <- rdU axis (-3)
-            t223 <- rdU axis (-2)
-            t224 <- rdU axis (-1)
-            let !s225 = ((t220 * t224) - (t221 * t223))
-            let !s226 = ((t221 * t222) - (t219 * t224))
-            let !s227 = ((t219 * t223) - (t220 * t222))
+            t213 <- rdU axis (-3)
+            t214 <- rdU axis (-2)
+            t215 <- rdU axis (-1)
+            let !s216 = ((t211 * t215) - (t212 * t214))
+            let !s217 = ((t212 * t213) - (t210 * t215))
+            let !s218 = ((t210 * t214) - (t211 * t213))
             chkI scalars 0 (-6) (-1)
-            t228 <- rdU scalars (-6)
-            t229 <- rdU scalars (-1)
-            t230 <- rdU scalars (-4)
-            t231 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t194)) + 8) (negate ((t220 * t212) * t219))
-            wrU contacts ((30 * (truncate t194)) + 9) (t212 + (negate ((t220 * t212) * t220)))
-            wrU contacts ((30 * (truncate t194)) + 10) (negate ((t220 * t212) * t221))
-            wrU contacts ((30 * (truncate t194)) + 11) (((negate ((t190 + (negate t218)) * t212)) * t219) + (((t188 + (negate t216)) * t212) * t221))
-            wrU contacts ((30 * (truncate t194)) + 16) (t213 + (negate (((t219 * t213) + (t221 * t214)) * t219)))
-            wrU contacts ((30 * (truncate t194)) + 17) (negate (((t219 * t213) + (t221 * t214)) * t220))
-            wrU contacts ((30 * (truncate t194)) + 18) (t214 + (negate (((t219 * t213) + (t221 * t214)) * t221)))
-            let !t232 = (t189 + (negate t217))
-            wrU contacts ((30 * (truncate t194)) + 19) ((((t232 * t214) * t219) + ((((t190 + (negate t218)) * t213) - ((t188 + (negate t216)) * t214)) * t220)) + ((negate (t232 * t213)) * t221))
+            t219 <- rdU scalars (-6)
+            t220 <- rdU scalars (-1)
+            t221 <- rdU scalars (-4)
+            t222 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t185)) + 8) (negate ((t211 * t203) * t210))
+            wrU contacts ((30 * (truncate t185)) + 9) (t203 + (negate ((t211 * t203) * t211)))
+            wrU contacts ((30 * (truncate t185)) + 10) (negate ((t211 * t203) * t212))
+            wrU contacts ((30 * (truncate t185)) + 11) (((negate ((t181 + (negate t209)) * t203)) * t210) + (((t179 + (negate t207)) * t203) * t212))
+            wrU contacts ((30 * (truncate t185)) + 16) (t204 + (negate (((t210 * t204) + (t212 * t205)) * t210)))
+            wrU contacts ((30 * (truncate t185)) + 17) (negate (((t210 * t204) + (t212 * t205)) * t211))
+            wrU contacts ((30 * (truncate t185)) + 18) (t205 + (negate (((t210 * t204) + (t212 * t205)) * t212)))
+            let !t223 = (t180 + (negate t208))
+            wrU contacts ((30 * (truncate t185)) + 19) ((((t223 * t205) * t210) + ((((t181 + (negate t209)) * t204) - ((t179 + (negate t207)) * t205)) * t211)) + ((negate (t223 * t204)) * t212))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t194)) + 8) 0.0
-            wrU contacts ((30 * (truncate t194)) + 9) 0.0
-            wrU contacts ((30 * (truncate t194)) + 10) 0.0
-            wrU contacts ((30 * (truncate t194)) + 11) 0.0
-            wrU contacts ((30 * (truncate t194)) + 16) 0.0
-            wrU contacts ((30 * (truncate t194)) + 17) 0.0
-            wrU contacts ((30 * (truncate t194)) + 18) 0.0
-            wrU contacts ((30 * (truncate t194)) + 19) 0.0
+            wrU contacts ((30 * (truncate t185)) + 8) 0.0
+            wrU contacts ((30 * (truncate t185)) + 9) 0.0
+            wrU contacts ((30 * (truncate t185)) + 10) 0.0
+            wrU contacts ((30 * (truncate t185)) + 11) 0.0
+            wrU contacts ((30 * (truncate t185)) + 16) 0.0
+            wrU contacts ((30 * (truncate t185)) + 17) 0.0
+            wrU contacts ((30 * (truncate t185)) + 18) 0.0
+            wrU contacts ((30 * (truncate t185)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t233 <- rdU meta 6
-          wrU meta 6 (t233 + 1.0)
+          t224 <- rdU meta 6
+          wrU meta 6 (t224 + 1.0)
           pure ()
         pure ()
       else do
@@ -554,133 +555,133 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       pure ()
     else do
       pure ()
-    chkI verts (291 * i31) 0 2
-    t234 <- rdU verts (291 * i31)
-    t235 <- rdU verts ((291 * i31) + 1)
-    t236 <- rdU verts ((291 * i31) + 2)
-    v237 <- newR 1.0
-    loopI 0.0 24.0 $ \i238 -> do
-      let !d238 = fromIntegral i238 :: Double
-      chkI verts ((12 * i238) + (291 * i31)) 12 14
-      t239 <- rdU verts (((12 * i238) + (291 * i31)) + 12)
-      t240 <- rdU verts (((12 * i238) + (291 * i31)) + 13)
-      t241 <- rdU verts (((12 * i238) + (291 * i31)) + 14)
-      chkI radii (i238 + (24 * i31)) 0 0
-      t242 <- rdU radii (i238 + (24 * i31))
-      t243 <- getR v237
-      let !t244 = (t239 + (negate t234))
-      let !t245 = (t240 + (negate t235))
-      let !t246 = (t241 + (negate t236))
-      let !t247 = (if t242 > 0 then ((sqrt (((t244 * t244) + (t245 * t245)) + (t246 * t246))) / t242) else 1.0)
-      setR v237 (if (t243 - t247) > 0 then t247 else t243)
+    chkI verts (291 * i29) 0 2
+    t225 <- rdU verts (291 * i29)
+    t226 <- rdU verts ((291 * i29) + 1)
+    t227 <- rdU verts ((291 * i29) + 2)
+    wrU locals 9 1.0
+    loopI 0.0 24.0 $ \i228 -> do
+      let !d228 = fromIntegral i228 :: Double
+      chkI verts ((12 * i228) + (291 * i29)) 12 14
+      t229 <- rdU verts (((12 * i228) + (291 * i29)) + 12)
+      t230 <- rdU verts (((12 * i228) + (291 * i29)) + 13)
+      t231 <- rdU verts (((12 * i228) + (291 * i29)) + 14)
+      chkI radii (i228 + (24 * i29)) 0 0
+      t232 <- rdU radii (i228 + (24 * i29))
+      t233 <- rdU locals 9
+      let !t234 = (t229 + (negate t225))
+      let !t235 = (t230 + (negate t226))
+      let !t236 = (t231 + (negate t227))
+      let !t237 = (if t232 > 0 then ((sqrt (((t234 * t234) + (t235 * t235)) + (t236 * t236))) / t232) else 1.0)
+      wrU locals 9 (if (t233 - t237) > 0 then t237 else t233)
       pure ()
-    t248 <- getR v237
-    if (0.8 - t248) > 0 then do
-      v249 <- newR 0.0
-      v250 <- newR 0.0
-      v251 <- newR 0.0
-      v252 <- newR 0.0
-      v253 <- newR 0.0
-      v254 <- newR 0.0
-      v255 <- newR 0.0
-      loopI 0.0 24.0 $ \i256 -> do
-        let !d256 = fromIntegral i256 :: Double
-        chkI radii (i256 + (24 * i31)) 0 0
-        t257 <- rdU radii (i256 + (24 * i31))
-        loopI 6.0 12.0 $ \i258 -> do
-          let !d258 = fromIntegral i258 :: Double
-          let !t259 = (d256 + d258)
-          chkI radii (truncate ((24.0 * d31) + (t259 - (24.0 * (floorF (t259 / 24.0)))))) 0 0
-          t260 <- rdU radii (truncate ((24.0 * d31) + (t259 - (24.0 * (floorF (t259 / 24.0))))))
-          loopI 1.0 4.0 $ \i261 -> do
-            let !d261 = fromIntegral i261 :: Double
-            chkI verts ((12 * i256) + (3 * i261) + (291 * i31)) 0 5
-            t262 <- rdU verts ((12 * i256) + (3 * i261) + (291 * i31))
-            t263 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 1)
-            t264 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 2)
-            t265 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 3)
-            t266 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 4)
-            t267 <- rdU verts (((12 * i256) + (3 * i261) + (291 * i31)) + 5)
-            loopI 1.0 4.0 $ \i268 -> do
-              let !d268 = fromIntegral i268 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0)))) 0 0
-              t269 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 1.0)) 0 0
-              t270 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 2.0)) 0 0
-              t271 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + (d268 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268))) 0 0
-              t272 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 1.0)) 0 0
-              t273 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 2.0)) 0 0
-              t274 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)) + d268)) + 2.0))
-              t275 <- getR v249
-              let !t276 = (negate t269)
-              let !t277 = (t272 + t276)
-              let !t278 = (negate t270)
-              let !t279 = (t273 + t278)
-              let !t280 = (negate t271)
-              let !t281 = (t274 + t280)
-              let !t282 = (((t277 * t277) + (t279 * t279)) + (t281 * t281))
-              let !t283 = (t265 + (negate t262))
-              let !t284 = (t266 + (negate t263))
-              let !t285 = (t267 + (negate t264))
-              let !t286 = (((t283 * t277) + (t284 * t279)) + (t285 * t281))
-              let !t287 = (((t283 * t283) + (t284 * t284)) + (t285 * t285))
-              let !t288 = ((t287 * t282) - (t286 * t286))
-              let !t289 = (t262 + t276)
-              let !t290 = (t263 + t278)
-              let !t291 = (t264 + t280)
-              let !t292 = (((t277 * t289) + (t279 * t290)) + (t281 * t291))
-              let !t293 = (((t283 * t289) + (t284 * t290)) + (t285 * t291))
-              let !t294 = (if ((abs t288) - 1.0e-300) > 0 then (((t286 * t292) - (t293 * t282)) / t288) else 0.0)
-              let !t295 = (if (t294 - 1.0) > 0 then 1.0 else t294)
-              let !t296 = (if (t288 - ((1.0e-12 * t287) * t282)) > 0 then (if (negate t295) > 0 then 0.0 else t295) else 0.0)
-              let !t297 = (if ((abs t282) - 1.0e-300) > 0 then (((t286 * t296) + t292) / t282) else 0.0)
-              let !t298 = ((abs t287) - 1.0e-300)
-              let !t299 = (if t298 > 0 then ((negate t293) / t287) else 0.0)
-              let !t300 = (if (t299 - 1.0) > 0 then 1.0 else t299)
-              let !t301 = (t297 - 1.0)
-              let !t302 = (if t298 > 0 then ((t286 - t293) / t287) else 0.0)
-              let !t303 = (if (t302 - 1.0) > 0 then 1.0 else t302)
-              let !t304 = (if (negate t297) > 0 then (if (negate t300) > 0 then 0.0 else t300) else (if t301 > 0 then (if (negate t303) > 0 then 0.0 else t303) else t296))
-              let !t305 = (if t301 > 0 then 1.0 else t297)
-              let !t306 = (if (negate t305) > 0 then 0.0 else t305)
-              let !t307 = ((0.5 * ((t257 - ((t257 * (d261 + t304)) / 4.0)) + (t260 - ((t260 * (d268 + t306)) / 4.0)))) - t275)
-              let !t308 = ((t262 + (t304 * t283)) + (negate (t269 + (t306 * t277))))
-              let !t309 = ((t263 + (t304 * t284)) + (negate (t270 + (t306 * t279))))
-              let !t310 = ((t264 + (t304 * t285)) + (negate (t271 + (t306 * t281))))
-              let !t311 = ((0.3 * ((if (t260 - t257) > 0 then t257 else t260) / 4.0)) - (sqrt (((t308 * t308) + (t309 * t309)) + (t310 * t310))))
-              if (if (t307 - t311) > 0 then t311 else t307) > 0 then do
-                setR v249 (0.5 * ((t257 - ((t257 * (d261 + t304)) / 4.0)) + (t260 - ((t260 * (d268 + t306)) / 4.0))))
-                chkI verts ((12 * i256) + (291 * i31)) 3 5
-                t312 <- rdU verts (((12 * i256) + (291 * i31)) + 3)
-                t313 <- rdU verts (((12 * i256) + (291 * i31)) + 4)
-                t314 <- rdU verts (((12 * i256) + (291 * i31)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0)))) 0 0
-                t315 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t316 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t317 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t259 - (24.0 * (floorF (t259 / 24.0)))) * 4.0))) + 2.0))
-                setR v250 (t262 + (t304 * t283))
-                setR v251 (t263 + (t304 * t284))
-                setR v252 (t264 + (t304 * t285))
-                let !t318 = (negate t234)
-                let !t319 = (t312 + t318)
-                let !t320 = (negate t235)
-                let !t321 = (t313 + t320)
-                let !t322 = (negate t236)
-                let !t323 = (t314 + t322)
-                let !t324 = (sqrt (((t319 * t319) + (t321 * t321)) + (t323 * t323)))
-                let !t325 = (t315 + t318)
-                let !t326 = (t316 + t320)
-                let !t327 = (t317 + t322)
-                let !t328 = (sqrt (((t325 * t325) + (t326 * t326)) + (t327 * t327)))
-                setR v253 (negate (((if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0) * t319) + ((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t325)))
-                setR v254 (negate (((if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0) * t321) + ((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t326)))
-                setR v255 (negate (((if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0) * t323) + ((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t327)))
+    t238 <- rdU locals 9
+    if (0.8 - t238) > 0 then do
+      wrU locals 10 0.0
+      wrU locals 11 0.0
+      wrU locals 12 0.0
+      wrU locals 13 0.0
+      wrU locals 14 0.0
+      wrU locals 15 0.0
+      wrU locals 16 0.0
+      loopI 0.0 24.0 $ \i239 -> do
+        let !d239 = fromIntegral i239 :: Double
+        chkI radii (i239 + (24 * i29)) 0 0
+        t240 <- rdU radii (i239 + (24 * i29))
+        loopI 6.0 12.0 $ \i241 -> do
+          let !d241 = fromIntegral i241 :: Double
+          let !t242 = (d239 + d241)
+          chkI radii (truncate ((24.0 * d29) + (t242 - (24.0 * (floorF (t242 / 24.0)))))) 0 0
+          t243 <- rdU radii (truncate ((24.0 * d29) + (t242 - (24.0 * (floorF (t242 / 24.0))))))
+          loopI 1.0 4.0 $ \i244 -> do
+            let !d244 = fromIntegral i244 :: Double
+            chkI verts ((12 * i239) + (3 * i244) + (291 * i29)) 0 5
+            t245 <- rdU verts ((12 * i239) + (3 * i244) + (291 * i29))
+            t246 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 1)
+            t247 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 2)
+            t248 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 3)
+            t249 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 4)
+            t250 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i251 -> do
+              let !d251 = fromIntegral i251 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0)))) 0 0
+              t252 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 1.0)) 0 0
+              t253 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 2.0)) 0 0
+              t254 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251))) 0 0
+              t255 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 1.0)) 0 0
+              t256 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 2.0)) 0 0
+              t257 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 2.0))
+              t258 <- rdU locals 10
+              let !t259 = (negate t252)
+              let !t260 = (t255 + t259)
+              let !t261 = (negate t253)
+              let !t262 = (t256 + t261)
+              let !t263 = (negate t254)
+              let !t264 = (t257 + t263)
+              let !t265 = (((t260 * t260) + (t262 * t262)) + (t264 * t264))
+              let !t266 = (t248 + (negate t245))
+              let !t267 = (t249 + (negate t246))
+              let !t268 = (t250 + (negate t247))
+              let !t269 = (((t266 * t260) + (t267 * t262)) + (t268 * t264))
+              let !t270 = (((t266 * t266) + (t267 * t267)) + (t268 * t268))
+              let !t271 = ((t270 * t265) - (t269 * t269))
+              let !t272 = (t245 + t259)
+              let !t273 = (t246 + t261)
+              let !t274 = (t247 + t263)
+              let !t275 = (((t260 * t272) + (t262 * t273)) + (t264 * t274))
+              let !t276 = (((t266 * t272) + (t267 * t273)) + (t268 * t274))
+              let !t277 = (if ((abs t271) - 1.0e-300) > 0 then (((t269 * t275) - (t276 * t265)) / t271) else 0.0)
+              let !t278 = (if (t277 - 1.0) > 0 then 1.0 else t277)
+              let !t279 = (if (t271 - ((1.0e-12 * t270) * t265)) > 0 then (if (negate t278) > 0 then 0.0 else t278) else 0.0)
+              let !t280 = (if ((abs t265) - 1.0e-300) > 0 then (((t269 * t279) + t275) / t265) else 0.0)
+              let !t281 = ((abs t270) - 1.0e-300)
+              let !t282 = (if t281 > 0 then ((negate t276) / t270) else 0.0)
+              let !t283 = (if (t282 - 1.0) > 0 then 1.0 else t282)
+              let !t284 = (t280 - 1.0)
+              let !t285 = (if t281 > 0 then ((t269 - t276) / t270) else 0.0)
+              let !t286 = (if (t285 - 1.0) > 0 then 1.0 else t285)
+              let !t287 = (if (negate t280) > 0 then (if (negate t283) > 0 then 0.0 else t283) else (if t284 > 0 then (if (negate t286) > 0 then 0.0 else t286) else t279))
+              let !t288 = (if t284 > 0 then 1.0 else t280)
+              let !t289 = (if (negate t288) > 0 then 0.0 else t288)
+              let !t290 = ((0.5 * ((t240 - ((t240 * (d244 + t287)) / 4.0)) + (t243 - ((t243 * (d251 + t289)) / 4.0)))) - t258)
+              let !t291 = ((t245 + (t287 * t266)) + (negate (t252 + (t289 * t260))))
+              let !t292 = ((t246 + (t287 * t267)) + (negate (t253 + (t289 * t262))))
+              let !t293 = ((t247 + (t287 * t268)) + (negate (t254 + (t289 * t264))))
+              let !t294 = ((0.3 * ((if (t243 - t240) > 0 then t240 else t243) / 4.0)) - (sqrt (((t291 * t291) + (t292 * t292)) + (t293 * t293))))
+              if (if (t290 - t294) > 0 then t294 else t290) > 0 then do
+                wrU locals 10 (0.5 * ((t240 - ((t240 * (d244 + t287)) / 4.0)) + (t243 - ((t243 * (d251 + t289)) / 4.0))))
+                chkI verts ((12 * i239) + (291 * i29)) 3 5
+                t295 <- rdU verts (((12 * i239) + (291 * i29)) + 3)
+                t296 <- rdU verts (((12 * i239) + (291 * i29)) + 4)
+                t297 <- rdU verts (((12 * i239) + (291 * i29)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)))) 0 0
+                t298 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t299 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t300 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 11 (t245 + (t287 * t266))
+                wrU locals 12 (t246 + (t287 * t267))
+                wrU locals 13 (t247 + (t287 * t268))
+                let !t301 = (negate t225)
+                let !t302 = (t295 + t301)
+                let !t303 = (negate t226)
+                let !t304 = (t296 + t303)
+                let !t305 = (negate t227)
+                let !t306 = (t297 + t305)
+                let !t307 = (sqrt (((t302 * t302) + (t304 * t304)) + (t306 * t306)))
+                let !t308 = (t298 + t301)
+                let !t309 = (t299 + t303)
+                let !t310 = (t300 + t305)
+                let !t311 = (sqrt (((t308 * t308) + (t309 * t309)) + (t310 * t310)))
+                wrU locals 14 (negate (((if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0) * t302) + ((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t308)))
+                wrU locals 15 (negate (((if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0) * t304) + ((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t309)))
+                wrU locals 16 (negate (((if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0) * t306) + ((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t310)))
                 pure ()
               else do
                 pure ()
@@ -688,120 +689,120 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t329 <- getR v249
-      if t329 > 0 then do
-        t330 <- getR v250
-        t331 <- getR v251
-        t332 <- getR v252
-        t333 <- getR v253
-        t334 <- getR v254
-        t335 <- getR v255
-        let !t336 = (recip (2.0 * (sqrt ((t330 * t330) + (t332 * t332)))))
-        let !t337 = (t336 * (t330 + t330))
-        let !t338 = (t336 * (t332 + t332))
-        let !t339 = (sqrt ((t337 * t337) + (t338 * t338)))
-        let !t340 = (if t339 > 0 then (recip (if (t339 - 1.0e-300) > 0 then t339 else 1.0e-300)) else 0.0)
-        let !s341 = (t340 * t337)
-        let !s342 = (t340 * t338)
-        let !t343 = ((s341 * t333) + (s342 * t335))
-        let !t344 = (t333 + (negate (t343 * s341)))
-        let !t345 = (t335 + (negate (t343 * s342)))
-        let !t346 = (sqrt (((t344 * t344) + (t334 * t334)) + (t345 * t345)))
-        let !t347 = (if t346 > 0 then (recip (if (t346 - 1.0e-300) > 0 then t346 else 1.0e-300)) else 0.0)
-        let !s348 = (t347 * t344)
-        let !s349 = (t347 * t334)
-        let !s350 = (t347 * t345)
-        t351 <- rdU meta 2
-        t352 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t352) > 0 then 1.0 else t352)) - t351) - 0.5) > 0 then do
-          wrU meta 2 (t351 + 1.0)
-          t353 <- rdU pos (3 * i31)
-          t354 <- rdU pos ((3 * i31) + 1)
-          t355 <- rdU pos ((3 * i31) + 2)
-          t356 <- rdU normal (3 * i31)
-          t357 <- rdU normal ((3 * i31) + 1)
-          t358 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t359 <- rdU axis (3 * i31)
-          t360 <- rdU axis ((3 * i31) + 1)
-          t361 <- rdU axis ((3 * i31) + 2)
-          let !s362 = ((t357 * t361) - (t358 * t360))
-          let !s363 = ((t358 * t359) - (t356 * t361))
-          let !s364 = ((t356 * t360) - (t357 * t359))
-          chkI scalars (6 * i31) 0 0
-          t365 <- rdU scalars (6 * i31)
-          t366 <- rdU scalars ((6 * i31) + 5)
-          t367 <- rdU scalars ((6 * i31) + 2)
-          t368 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t351)) 0 29
-          wrU contacts (30 * (truncate t351)) d31
-          wrU contacts ((30 * (truncate t351)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t351)) + 2) d31
-          wrU contacts ((30 * (truncate t351)) + 3) 12.0
-          wrU contacts ((30 * (truncate t351)) + 4) (s348 + (negate ((((t356 * s348) + (t357 * s349)) + (t358 * s350)) * t356)))
-          wrU contacts ((30 * (truncate t351)) + 5) (s349 + (negate ((((t356 * s348) + (t357 * s349)) + (t358 * s350)) * t357)))
-          wrU contacts ((30 * (truncate t351)) + 6) (s350 + (negate ((((t356 * s348) + (t357 * s349)) + (t358 * s350)) * t358)))
-          wrU contacts ((30 * (truncate t351)) + 7) 0.0
-          wrU contacts ((30 * (truncate t351)) + 12) 0.0
-          wrU contacts ((30 * (truncate t351)) + 13) 0.0
-          wrU contacts ((30 * (truncate t351)) + 14) 0.0
-          wrU contacts ((30 * (truncate t351)) + 15) 0.0
-          wrU contacts ((30 * (truncate t351)) + 20) t329
-          wrU contacts ((30 * (truncate t351)) + 26) 0.6
-          wrU contacts ((30 * (truncate t351)) + 27) t330
-          wrU contacts ((30 * (truncate t351)) + 28) t331
-          wrU contacts ((30 * (truncate t351)) + 29) t332
+      t312 <- rdU locals 10
+      if t312 > 0 then do
+        t313 <- rdU locals 11
+        t314 <- rdU locals 12
+        t315 <- rdU locals 13
+        t316 <- rdU locals 14
+        t317 <- rdU locals 15
+        t318 <- rdU locals 16
+        let !t319 = (recip (2.0 * (sqrt ((t313 * t313) + (t315 * t315)))))
+        let !t320 = (t319 * (t313 + t313))
+        let !t321 = (t319 * (t315 + t315))
+        let !t322 = (sqrt ((t320 * t320) + (t321 * t321)))
+        let !t323 = (if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0)
+        let !s324 = (t323 * t320)
+        let !s325 = (t323 * t321)
+        let !t326 = ((s324 * t316) + (s325 * t318))
+        let !t327 = (t316 + (negate (t326 * s324)))
+        let !t328 = (t318 + (negate (t326 * s325)))
+        let !t329 = (sqrt (((t327 * t327) + (t317 * t317)) + (t328 * t328)))
+        let !t330 = (if t329 > 0 then (recip (if (t329 - 1.0e-300) > 0 then t329 else 1.0e-300)) else 0.0)
+        let !s331 = (t330 * t327)
+        let !s332 = (t330 * t317)
+        let !s333 = (t330 * t328)
+        t334 <- rdU meta 2
+        t335 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t335) > 0 then 1.0 else t335)) - t334) - 0.5) > 0 then do
+          wrU meta 2 (t334 + 1.0)
+          t336 <- rdU pos (3 * i29)
+          t337 <- rdU pos ((3 * i29) + 1)
+          t338 <- rdU pos ((3 * i29) + 2)
+          t339 <- rdU normal (3 * i29)
+          t340 <- rdU normal ((3 * i29) + 1)
+          t341 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t342 <- rdU axis (3 * i29)
+          t343 <- rdU axis ((3 * i29) + 1)
+          t344 <- rdU axis ((3 * i29) + 2)
+          let !s345 = ((t340 * t344) - (t341 * t343))
+          let !s346 = ((t341 * t342) - (t339 * t344))
+          let !s347 = ((t339 * t343) - (t340 * t342))
+          chkI scalars (6 * i29) 0 0
+          t348 <- rdU scalars (6 * i29)
+          t349 <- rdU scalars ((6 * i29) + 5)
+          t350 <- rdU scalars ((6 * i29) + 2)
+          t351 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t334)) 0 29
+          wrU contacts (30 * (truncate t334)) d29
+          wrU contacts ((30 * (truncate t334)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t334)) + 2) d29
+          wrU contacts ((30 * (truncate t334)) + 3) 12.0
+          wrU contacts ((30 * (truncate t334)) + 4) (s331 + (negate ((((t339 * s331) + (t340 * s332)) + (t341 * s333)) * t339)))
+          wrU contacts ((30 * (truncate t334)) + 5) (s332 + (negate ((((t339 * s331) + (t340 * s332)) + (t341 * s333)) * t340)))
+          wrU contacts ((30 * (truncate t334)) + 6) (s333 + (negate ((((t339 * s331) + (t340 * s332)) + (t341 * s333)) * t341)))
+          wrU contacts ((30 * (truncate t334)) + 7) 0.0
+          wrU contacts ((30 * (truncate t334)) + 12) 0.0
+          wrU contacts ((30 * (truncate t334)) + 13) 0.0
+          wrU contacts ((30 * (truncate t334)) + 14) 0.0
+          wrU contacts ((30 * (truncate t334)) + 15) 0.0
+          wrU contacts ((30 * (truncate t334)) + 20) t312
+          wrU contacts ((30 * (truncate t334)) + 26) 0.6
+          wrU contacts ((30 * (truncate t334)) + 27) t313
+          wrU contacts ((30 * (truncate t334)) + 28) t314
+          wrU contacts ((30 * (truncate t334)) + 29) t315
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t369 <- rdU pos (-3)
-            t370 <- rdU pos (-2)
-            t371 <- rdU pos (-1)
+            t352 <- rdU pos (-3)
+            t353 <- rdU pos (-2)
+            t354 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t372 <- rdU normal (-3)
-            t373 <- rdU normal (-2)
-            t374 <- rdU normal (-1)
+            t355 <- rdU normal (-3)
+            t356 <- rdU normal (-2)
+            t357 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t375 <- rdU axis (-3)
-            t376 <- rdU axis (-2)
-            t377 <- rdU axis (-1)
-            let !s378 = ((t373 * t377) - (t374 * t376))
-            let !s379 = ((t374 * t375) - (t372 * t377))
-            let !s380 = ((t372 * t376) - (t373 * t375))
+            t358 <- rdU axis (-3)
+            t359 <- rdU axis (-2)
+            t360 <- rdU axis (-1)
+            let !s361 = ((t356 * t360) - (t357 * t359))
+            let !s362 = ((t357 * t358) - (t355 * t360))
+            let !s363 = ((t355 * t359) - (t356 * t358))
             chkI scalars 0 (-6) (-1)
-            t381 <- rdU scalars (-6)
-            t382 <- rdU scalars (-1)
-            t383 <- rdU scalars (-4)
-            t384 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t351)) + 8) (s348 + (negate ((((t372 * s348) + (t373 * s349)) + (t374 * s350)) * t372)))
-            wrU contacts ((30 * (truncate t351)) + 9) (s349 + (negate ((((t372 * s348) + (t373 * s349)) + (t374 * s350)) * t373)))
-            wrU contacts ((30 * (truncate t351)) + 10) (s350 + (negate ((((t372 * s348) + (t373 * s349)) + (t374 * s350)) * t374)))
-            let !t385 = (t331 + (negate t370))
-            let !t386 = (t332 + (negate t371))
-            let !t387 = (t330 + (negate t369))
-            wrU contacts ((30 * (truncate t351)) + 11) (((((t385 * s350) - (t386 * s349)) * t372) + (((t386 * s348) - (t387 * s350)) * t373)) + (((t387 * s349) - (t385 * s348)) * t374))
-            let !t388 = ((t357 * s350) - (t358 * s349))
-            wrU contacts ((30 * (truncate t351)) + 16) (t388 + (negate ((((t372 * t388) + (t373 * ((t358 * s348) - (t356 * s350)))) + (t374 * ((t356 * s349) - (t357 * s348)))) * t372)))
-            let !t389 = ((t358 * s348) - (t356 * s350))
-            wrU contacts ((30 * (truncate t351)) + 17) (t389 + (negate ((((t372 * t388) + (t373 * t389)) + (t374 * ((t356 * s349) - (t357 * s348)))) * t373)))
-            let !t390 = ((t356 * s349) - (t357 * s348))
-            wrU contacts ((30 * (truncate t351)) + 18) (t390 + (negate ((((t372 * t388) + (t373 * t389)) + (t374 * t390)) * t374)))
-            wrU contacts ((30 * (truncate t351)) + 19) (((((t385 * t390) - (t386 * t389)) * t372) + (((t386 * t388) - (t387 * t390)) * t373)) + (((t387 * t389) - (t385 * t388)) * t374))
+            t364 <- rdU scalars (-6)
+            t365 <- rdU scalars (-1)
+            t366 <- rdU scalars (-4)
+            t367 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t334)) + 8) (s331 + (negate ((((t355 * s331) + (t356 * s332)) + (t357 * s333)) * t355)))
+            wrU contacts ((30 * (truncate t334)) + 9) (s332 + (negate ((((t355 * s331) + (t356 * s332)) + (t357 * s333)) * t356)))
+            wrU contacts ((30 * (truncate t334)) + 10) (s333 + (negate ((((t355 * s331) + (t356 * s332)) + (t357 * s333)) * t357)))
+            let !t368 = (t314 + (negate t353))
+            let !t369 = (t315 + (negate t354))
+            let !t370 = (t313 + (negate t352))
+            wrU contacts ((30 * (truncate t334)) + 11) (((((t368 * s333) - (t369 * s332)) * t355) + (((t369 * s331) - (t370 * s333)) * t356)) + (((t370 * s332) - (t368 * s331)) * t357))
+            let !t371 = ((t340 * s333) - (t341 * s332))
+            wrU contacts ((30 * (truncate t334)) + 16) (t371 + (negate ((((t355 * t371) + (t356 * ((t341 * s331) - (t339 * s333)))) + (t357 * ((t339 * s332) - (t340 * s331)))) * t355)))
+            let !t372 = ((t341 * s331) - (t339 * s333))
+            wrU contacts ((30 * (truncate t334)) + 17) (t372 + (negate ((((t355 * t371) + (t356 * t372)) + (t357 * ((t339 * s332) - (t340 * s331)))) * t356)))
+            let !t373 = ((t339 * s332) - (t340 * s331))
+            wrU contacts ((30 * (truncate t334)) + 18) (t373 + (negate ((((t355 * t371) + (t356 * t372)) + (t357 * t373)) * t357)))
+            wrU contacts ((30 * (truncate t334)) + 19) (((((t368 * t373) - (t369 * t372)) * t355) + (((t369 * t371) - (t370 * t373)) * t356)) + (((t370 * t372) - (t368 * t371)) * t357))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t351)) + 8) 0.0
-            wrU contacts ((30 * (truncate t351)) + 9) 0.0
-            wrU contacts ((30 * (truncate t351)) + 10) 0.0
-            wrU contacts ((30 * (truncate t351)) + 11) 0.0
-            wrU contacts ((30 * (truncate t351)) + 16) 0.0
-            wrU contacts ((30 * (truncate t351)) + 17) 0.0
-            wrU contacts ((30 * (truncate t351)) + 18) 0.0
-            wrU contacts ((30 * (truncate t351)) + 19) 0.0
+            wrU contacts ((30 * (truncate t334)) + 8) 0.0
+            wrU contacts ((30 * (truncate t334)) + 9) 0.0
+            wrU contacts ((30 * (truncate t334)) + 10) 0.0
+            wrU contacts ((30 * (truncate t334)) + 11) 0.0
+            wrU contacts ((30 * (truncate t334)) + 16) 0.0
+            wrU contacts ((30 * (truncate t334)) + 17) 0.0
+            wrU contacts ((30 * (truncate t334)) + 18) 0.0
+            wrU contacts ((30 * (truncate t334)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t391 <- rdU meta 6
-          wrU meta 6 (t391 + 1.0)
+          t374 <- rdU meta 6
+          wrU meta 6 (t374 + 1.0)
           pure ()
         pure ()
       else do
@@ -812,8 +813,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -852,862 +854,862 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (t120 + (t138 * ((t141 * t126) + (t142 * s129))))
-      let !t144 = (t122 + (t138 * ((t141 * t128) + (t142 * s131))))
-      let !t145 = (sqrt ((t143 * t143) + (t144 * t144)))
-      let !t146 = (t145 - 1.0)
-      let !t147 = (recip (2.0 * t145))
-      let !t148 = (recip (2.0 * (sqrt ((t120 * t120) + (t122 * t122)))))
-      let !t149 = (t148 * (t120 + t120))
-      let !t150 = (t148 * (t122 + t122))
-      let !t151 = (sqrt ((t149 * t149) + (t150 * t150)))
-      let !t152 = (if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0)
-      let !t153 = (t152 * t149)
-      let !t154 = (t152 * t150)
-      let !t155 = (((t147 * (t143 + t143)) * t153) + ((t147 * (t144 + t144)) * t154))
-      let !t156 = (if ((abs t146) - 1.0e-10) > 0 then (if (abs t155) > 0 then 1.0 else 0.0) else 0.0)
-      let !t157 = (if t156 > 0 then (t143 + (negate ((t146 / t155) * t153))) else t143)
-      let !t158 = (if t156 > 0 then (t144 + (negate ((t146 / t155) * t154))) else t144)
-      let !t159 = (sqrt ((t157 * t157) + (t158 * t158)))
-      let !t160 = (t159 - 1.0)
-      let !t161 = (recip (2.0 * t159))
-      let !t162 = (((t161 * (t157 + t157)) * t153) + ((t161 * (t158 + t158)) * t154))
-      let !t163 = (if ((abs t160) - 1.0e-10) > 0 then (if (abs t162) > 0 then 1.0 else 0.0) else 0.0)
-      let !t164 = (if t163 > 0 then (t157 + (negate ((t160 / t162) * t153))) else t157)
-      let !t165 = (if t163 > 0 then (t158 + (negate ((t160 / t162) * t154))) else t158)
-      let !t166 = (sqrt ((t164 * t164) + (t165 * t165)))
-      let !t167 = (t166 - 1.0)
-      let !t168 = (recip (2.0 * t166))
-      let !t169 = (((t168 * (t164 + t164)) * t153) + ((t168 * (t165 + t165)) * t154))
-      let !t170 = (if ((abs t167) - 1.0e-10) > 0 then (if (abs t169) > 0 then 1.0 else 0.0) else 0.0)
-      let !t171 = (1.0 - t139)
-      let !s172 = ((t139 * (if t170 > 0 then (t164 + (negate ((t167 / t169) * t153))) else t164)) + (t171 * t120))
-      let !s173 = ((t139 * (t121 + (t138 * ((t141 * t127) + (t142 * s130))))) + (t171 * t121))
-      let !s174 = ((t139 * (if t170 > 0 then (t165 + (negate ((t167 / t169) * t154))) else t165)) + (t171 * t122))
-      let !t175 = ((t141 * t126) + (t142 * s129))
-      let !t176 = ((t141 * t127) + (t142 * s130))
-      let !t177 = ((t141 * t128) + (t142 * s131))
-      let !t178 = (sqrt (((t175 * t175) + (t176 * t176)) + (t177 * t177)))
-      let !t179 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t180 = (t179 * ((if t170 > 0 then (t164 + (negate ((t167 / t169) * t153))) else t164) + (negate t120)))
-      let !t181 = (t168 * (t164 + t164))
-      let !t182 = (t168 * (t165 + t165))
-      let !t183 = (sqrt ((t181 * t181) + (t182 * t182)))
-      let !t184 = (if t183 > 0 then (recip (if (t183 - 1.0e-300) > 0 then t183 else 1.0e-300)) else 0.0)
-      let !t185 = (t184 * t181)
-      let !t186 = (t184 * t182)
-      let !t187 = (t179 * ((if t170 > 0 then (t165 + (negate ((t167 / t169) * t154))) else t165) + (negate t122)))
-      let !t188 = ((t185 * t180) + (t186 * t187))
-      let !t189 = (t180 + (negate (t188 * t185)))
-      let !t190 = (t179 * ((t121 + (t138 * t176)) + (negate t121)))
-      let !t191 = (t187 + (negate (t188 * t186)))
-      let !t192 = (sqrt (((t189 * t189) + (t190 * t190)) + (t191 * t191)))
-      let !t193 = (if t192 > 0 then (recip (if (t192 - 1.0e-300) > 0 then t192 else 1.0e-300)) else 0.0)
-      let !s194 = ((t139 * (t178 * (t193 * t189))) + (t171 * t175))
-      let !s195 = ((t139 * (t178 * (t193 * t190))) + (t171 * t176))
-      let !s196 = ((t139 * (t178 * (t193 * t191))) + (t171 * t177))
-      let !t197 = (s172 + (t138 * s194))
-      let !t198 = (s174 + (t138 * s196))
-      let !t199 = (sqrt ((t197 * t197) + (t198 * t198)))
-      let !t200 = (t199 - 1.0)
-      let !t201 = (recip (2.0 * t199))
-      let !t202 = (recip (2.0 * (sqrt ((s172 * s172) + (s174 * s174)))))
-      let !t203 = (t202 * (s172 + s172))
-      let !t204 = (t202 * (s174 + s174))
-      let !t205 = (sqrt ((t203 * t203) + (t204 * t204)))
-      let !t206 = (if t205 > 0 then (recip (if (t205 - 1.0e-300) > 0 then t205 else 1.0e-300)) else 0.0)
-      let !t207 = (t206 * t203)
-      let !t208 = (t206 * t204)
-      let !t209 = (((t201 * (t197 + t197)) * t207) + ((t201 * (t198 + t198)) * t208))
-      let !t210 = (if ((abs t200) - 1.0e-10) > 0 then (if (abs t209) > 0 then 1.0 else 0.0) else 0.0)
-      let !t211 = (if t210 > 0 then (t197 + (negate ((t200 / t209) * t207))) else t197)
-      let !t212 = (if t210 > 0 then (t198 + (negate ((t200 / t209) * t208))) else t198)
-      let !t213 = (sqrt ((t211 * t211) + (t212 * t212)))
-      let !t214 = (t213 - 1.0)
-      let !t215 = (recip (2.0 * t213))
-      let !t216 = (((t215 * (t211 + t211)) * t207) + ((t215 * (t212 + t212)) * t208))
-      let !t217 = (if ((abs t214) - 1.0e-10) > 0 then (if (abs t216) > 0 then 1.0 else 0.0) else 0.0)
-      let !t218 = (if t217 > 0 then (t211 + (negate ((t214 / t216) * t207))) else t211)
-      let !t219 = (if t217 > 0 then (t212 + (negate ((t214 / t216) * t208))) else t212)
-      let !t220 = (sqrt ((t218 * t218) + (t219 * t219)))
-      let !t221 = (t220 - 1.0)
-      let !t222 = (recip (2.0 * t220))
-      let !t223 = (((t222 * (t218 + t218)) * t207) + ((t222 * (t219 + t219)) * t208))
-      let !t224 = (if ((abs t221) - 1.0e-10) > 0 then (if (abs t223) > 0 then 1.0 else 0.0) else 0.0)
-      let !s225 = ((t139 * (if t224 > 0 then (t218 + (negate ((t221 / t223) * t207))) else t218)) + (t171 * s172))
-      let !s226 = ((t139 * (s173 + (t138 * s195))) + (t171 * s173))
-      let !s227 = ((t139 * (if t224 > 0 then (t219 + (negate ((t221 / t223) * t208))) else t219)) + (t171 * s174))
-      let !t228 = (sqrt (((s194 * s194) + (s195 * s195)) + (s196 * s196)))
-      let !t229 = (t179 * ((if t224 > 0 then (t218 + (negate ((t221 / t223) * t207))) else t218) + (negate s172)))
-      let !t230 = (t222 * (t218 + t218))
-      let !t231 = (t222 * (t219 + t219))
-      let !t232 = (sqrt ((t230 * t230) + (t231 * t231)))
-      let !t233 = (if t232 > 0 then (recip (if (t232 - 1.0e-300) > 0 then t232 else 1.0e-300)) else 0.0)
-      let !t234 = (t233 * t230)
-      let !t235 = (t233 * t231)
-      let !t236 = (t179 * ((if t224 > 0 then (t219 + (negate ((t221 / t223) * t208))) else t219) + (negate s174)))
-      let !t237 = ((t234 * t229) + (t235 * t236))
-      let !t238 = (t229 + (negate (t237 * t234)))
-      let !t239 = (t179 * ((s173 + (t138 * s195)) + (negate s173)))
-      let !t240 = (t236 + (negate (t237 * t235)))
-      let !t241 = (sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240)))
-      let !t242 = (if t241 > 0 then (recip (if (t241 - 1.0e-300) > 0 then t241 else 1.0e-300)) else 0.0)
-      let !s243 = ((t139 * (t228 * (t242 * t238))) + (t171 * s194))
-      let !s244 = ((t139 * (t228 * (t242 * t239))) + (t171 * s195))
-      let !s245 = ((t139 * (t228 * (t242 * t240))) + (t171 * s196))
-      let !t246 = (s225 + (t138 * s243))
-      let !t247 = (s227 + (t138 * s245))
-      let !t248 = (sqrt ((t246 * t246) + (t247 * t247)))
-      let !t249 = (t248 - 1.0)
-      let !t250 = (recip (2.0 * t248))
-      let !t251 = (recip (2.0 * (sqrt ((s225 * s225) + (s227 * s227)))))
-      let !t252 = (t251 * (s225 + s225))
-      let !t253 = (t251 * (s227 + s227))
-      let !t254 = (sqrt ((t252 * t252) + (t253 * t253)))
-      let !t255 = (if t254 > 0 then (recip (if (t254 - 1.0e-300) > 0 then t254 else 1.0e-300)) else 0.0)
-      let !t256 = (t255 * t252)
-      let !t257 = (t255 * t253)
-      let !t258 = (((t250 * (t246 + t246)) * t256) + ((t250 * (t247 + t247)) * t257))
-      let !t259 = (if ((abs t249) - 1.0e-10) > 0 then (if (abs t258) > 0 then 1.0 else 0.0) else 0.0)
-      let !t260 = (if t259 > 0 then (t246 + (negate ((t249 / t258) * t256))) else t246)
-      let !t261 = (if t259 > 0 then (t247 + (negate ((t249 / t258) * t257))) else t247)
-      let !t262 = (sqrt ((t260 * t260) + (t261 * t261)))
-      let !t263 = (t262 - 1.0)
-      let !t264 = (recip (2.0 * t262))
-      let !t265 = (((t264 * (t260 + t260)) * t256) + ((t264 * (t261 + t261)) * t257))
-      let !t266 = (if ((abs t263) - 1.0e-10) > 0 then (if (abs t265) > 0 then 1.0 else 0.0) else 0.0)
-      let !t267 = (if t266 > 0 then (t260 + (negate ((t263 / t265) * t256))) else t260)
-      let !t268 = (if t266 > 0 then (t261 + (negate ((t263 / t265) * t257))) else t261)
-      let !t269 = (sqrt ((t267 * t267) + (t268 * t268)))
-      let !t270 = (t269 - 1.0)
-      let !t271 = (recip (2.0 * t269))
-      let !t272 = (((t271 * (t267 + t267)) * t256) + ((t271 * (t268 + t268)) * t257))
-      let !t273 = (if ((abs t270) - 1.0e-10) > 0 then (if (abs t272) > 0 then 1.0 else 0.0) else 0.0)
-      let !s274 = ((t139 * (if t273 > 0 then (t267 + (negate ((t270 / t272) * t256))) else t267)) + (t171 * s225))
-      let !s275 = ((t139 * (s226 + (t138 * s244))) + (t171 * s226))
-      let !s276 = ((t139 * (if t273 > 0 then (t268 + (negate ((t270 / t272) * t257))) else t268)) + (t171 * s227))
-      let !t277 = (sqrt (((s243 * s243) + (s244 * s244)) + (s245 * s245)))
-      let !t278 = (t179 * ((if t273 > 0 then (t267 + (negate ((t270 / t272) * t256))) else t267) + (negate s225)))
-      let !t279 = (t271 * (t267 + t267))
-      let !t280 = (t271 * (t268 + t268))
-      let !t281 = (sqrt ((t279 * t279) + (t280 * t280)))
-      let !t282 = (if t281 > 0 then (recip (if (t281 - 1.0e-300) > 0 then t281 else 1.0e-300)) else 0.0)
-      let !t283 = (t282 * t279)
-      let !t284 = (t282 * t280)
-      let !t285 = (t179 * ((if t273 > 0 then (t268 + (negate ((t270 / t272) * t257))) else t268) + (negate s227)))
-      let !t286 = ((t283 * t278) + (t284 * t285))
-      let !t287 = (t278 + (negate (t286 * t283)))
-      let !t288 = (t179 * ((s226 + (t138 * s244)) + (negate s226)))
-      let !t289 = (t285 + (negate (t286 * t284)))
-      let !t290 = (sqrt (((t287 * t287) + (t288 * t288)) + (t289 * t289)))
-      let !t291 = (if t290 > 0 then (recip (if (t290 - 1.0e-300) > 0 then t290 else 1.0e-300)) else 0.0)
-      let !s292 = ((t139 * (t277 * (t291 * t287))) + (t171 * s243))
-      let !s293 = ((t139 * (t277 * (t291 * t288))) + (t171 * s244))
-      let !s294 = ((t139 * (t277 * (t291 * t289))) + (t171 * s245))
-      let !t295 = (s274 + (t138 * s292))
-      let !t296 = (s276 + (t138 * s294))
-      let !t297 = (sqrt ((t295 * t295) + (t296 * t296)))
-      let !t298 = (t297 - 1.0)
-      let !t299 = (recip (2.0 * t297))
-      let !t300 = (recip (2.0 * (sqrt ((s274 * s274) + (s276 * s276)))))
-      let !t301 = (t300 * (s274 + s274))
-      let !t302 = (t300 * (s276 + s276))
-      let !t303 = (sqrt ((t301 * t301) + (t302 * t302)))
-      let !t304 = (if t303 > 0 then (recip (if (t303 - 1.0e-300) > 0 then t303 else 1.0e-300)) else 0.0)
-      let !t305 = (t304 * t301)
-      let !t306 = (t304 * t302)
-      let !t307 = (((t299 * (t295 + t295)) * t305) + ((t299 * (t296 + t296)) * t306))
-      let !t308 = (if ((abs t298) - 1.0e-10) > 0 then (if (abs t307) > 0 then 1.0 else 0.0) else 0.0)
-      let !t309 = (if t308 > 0 then (t295 + (negate ((t298 / t307) * t305))) else t295)
-      let !t310 = (if t308 > 0 then (t296 + (negate ((t298 / t307) * t306))) else t296)
-      let !t311 = (sqrt ((t309 * t309) + (t310 * t310)))
-      let !t312 = (t311 - 1.0)
-      let !t313 = (recip (2.0 * t311))
-      let !t314 = (((t313 * (t309 + t309)) * t305) + ((t313 * (t310 + t310)) * t306))
-      let !t315 = (if ((abs t312) - 1.0e-10) > 0 then (if (abs t314) > 0 then 1.0 else 0.0) else 0.0)
-      let !t316 = (if t315 > 0 then (t309 + (negate ((t312 / t314) * t305))) else t309)
-      let !t317 = (if t315 > 0 then (t310 + (negate ((t312 / t314) * t306))) else t310)
-      let !t318 = (sqrt ((t316 * t316) + (t317 * t317)))
-      let !t319 = (t318 - 1.0)
-      let !t320 = (recip (2.0 * t318))
-      let !t321 = (((t320 * (t316 + t316)) * t305) + ((t320 * (t317 + t317)) * t306))
-      let !t322 = (if ((abs t319) - 1.0e-10) > 0 then (if (abs t321) > 0 then 1.0 else 0.0) else 0.0)
-      let !s323 = ((t139 * (if t322 > 0 then (t316 + (negate ((t319 / t321) * t305))) else t316)) + (t171 * s274))
-      let !s324 = ((t139 * (s275 + (t138 * s293))) + (t171 * s275))
-      let !s325 = ((t139 * (if t322 > 0 then (t317 + (negate ((t319 / t321) * t306))) else t317)) + (t171 * s276))
-      let !t326 = (sqrt (((s292 * s292) + (s293 * s293)) + (s294 * s294)))
-      let !t327 = (t179 * ((if t322 > 0 then (t316 + (negate ((t319 / t321) * t305))) else t316) + (negate s274)))
-      let !t328 = (t320 * (t316 + t316))
-      let !t329 = (t320 * (t317 + t317))
-      let !t330 = (sqrt ((t328 * t328) + (t329 * t329)))
-      let !t331 = (if t330 > 0 then (recip (if (t330 - 1.0e-300) > 0 then t330 else 1.0e-300)) else 0.0)
-      let !t332 = (t331 * t328)
-      let !t333 = (t331 * t329)
-      let !t334 = (t179 * ((if t322 > 0 then (t317 + (negate ((t319 / t321) * t306))) else t317) + (negate s276)))
-      let !t335 = ((t332 * t327) + (t333 * t334))
-      let !t336 = (t327 + (negate (t335 * t332)))
-      let !t337 = (t179 * ((s275 + (t138 * s293)) + (negate s275)))
-      let !t338 = (t334 + (negate (t335 * t333)))
-      let !t339 = (sqrt (((t336 * t336) + (t337 * t337)) + (t338 * t338)))
-      let !t340 = (if t339 > 0 then (recip (if (t339 - 1.0e-300) > 0 then t339 else 1.0e-300)) else 0.0)
-      let !s341 = ((t139 * (t326 * (t340 * t336))) + (t171 * s292))
-      let !s342 = ((t139 * (t326 * (t340 * t337))) + (t171 * s293))
-      let !s343 = ((t139 * (t326 * (t340 * t338))) + (t171 * s294))
-      t344 <- rdU mouse 4
-      t345 <- rdU mouse 5
-      t346 <- rdU mouse 6
-      t347 <- rdU mouse 7
-      t348 <- rdU mouse 8
-      t349 <- rdU mouse 9
-      let !t350 = (recip t101)
-      let !t351 = (6.283185307179586 * t347)
-      let !s352 = (recip (t103 * ((((2.0 * t350) * t348) * t351) + (t103 * ((t350 * t351) * t351)))))
-      let !s353 = ((t103 * ((t350 * t351) * t351)) * s352)
-      let !s354 = (s323 + (negate t104))
-      let !s355 = (s324 + (negate t105))
-      let !s356 = (s325 + (negate t106))
-      let !s357 = (s323 + (negate t344))
-      let !s358 = (s324 + (negate t345))
-      let !s359 = (s325 + (negate t346))
-      t360 <- rdU mouse 10
-      t361 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t362 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t363 <- rdU vel (3 * (truncate t100))
-      t364 <- rdU vel ((3 * (truncate t100)) + 1)
-      t365 <- rdU vel ((3 * (truncate t100)) + 2)
-      t366 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t363 + ((t361 * t360) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t364 + ((t361 * t360) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t365 + ((t361 * t360) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t366 + ((t362 * t360) * (((((s355 * t112) - (s356 * t111)) * t107) + (((s356 * t110) - (s354 * t112)) * t108)) + (((s354 * t111) - (s355 * t110)) * t109))))
-      t367 <- rdU mouse 11
-      t368 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t369 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t370 <- rdU vel (3 * (truncate t100))
-      t371 <- rdU vel ((3 * (truncate t100)) + 1)
-      t372 <- rdU vel ((3 * (truncate t100)) + 2)
-      t373 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t370 + ((t368 * t367) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t371 + ((t368 * t367) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t372 + ((t368 * t367) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t373 + ((t369 * t367) * (((((s355 * s115) - (s356 * s114)) * t107) + (((s356 * s113) - (s354 * s115)) * t108)) + (((s354 * s114) - (s355 * s113)) * t109))))
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (t115 + (t133 * ((t136 * t121) + (t137 * s124))))
+      let !t139 = (t117 + (t133 * ((t136 * t123) + (t137 * s126))))
+      let !t140 = (sqrt ((t138 * t138) + (t139 * t139)))
+      let !t141 = (t140 - 1.0)
+      let !t142 = (recip (2.0 * t140))
+      let !t143 = (recip (2.0 * (sqrt ((t115 * t115) + (t117 * t117)))))
+      let !t144 = (t143 * (t115 + t115))
+      let !t145 = (t143 * (t117 + t117))
+      let !t146 = (sqrt ((t144 * t144) + (t145 * t145)))
+      let !t147 = (if t146 > 0 then (recip (if (t146 - 1.0e-300) > 0 then t146 else 1.0e-300)) else 0.0)
+      let !t148 = (t147 * t144)
+      let !t149 = (t147 * t145)
+      let !t150 = (((t142 * (t138 + t138)) * t148) + ((t142 * (t139 + t139)) * t149))
+      let !t151 = (if ((abs t141) - 1.0e-10) > 0 then (if (abs t150) > 0 then 1.0 else 0.0) else 0.0)
+      let !t152 = (if t151 > 0 then (t138 + (negate ((t141 / t150) * t148))) else t138)
+      let !t153 = (if t151 > 0 then (t139 + (negate ((t141 / t150) * t149))) else t139)
+      let !t154 = (sqrt ((t152 * t152) + (t153 * t153)))
+      let !t155 = (t154 - 1.0)
+      let !t156 = (recip (2.0 * t154))
+      let !t157 = (((t156 * (t152 + t152)) * t148) + ((t156 * (t153 + t153)) * t149))
+      let !t158 = (if ((abs t155) - 1.0e-10) > 0 then (if (abs t157) > 0 then 1.0 else 0.0) else 0.0)
+      let !t159 = (if t158 > 0 then (t152 + (negate ((t155 / t157) * t148))) else t152)
+      let !t160 = (if t158 > 0 then (t153 + (negate ((t155 / t157) * t149))) else t153)
+      let !t161 = (sqrt ((t159 * t159) + (t160 * t160)))
+      let !t162 = (t161 - 1.0)
+      let !t163 = (recip (2.0 * t161))
+      let !t164 = (((t163 * (t159 + t159)) * t148) + ((t163 * (t160 + t160)) * t149))
+      let !t165 = (if ((abs t162) - 1.0e-10) > 0 then (if (abs t164) > 0 then 1.0 else 0.0) else 0.0)
+      let !t166 = (1.0 - t134)
+      let !s167 = ((t134 * (if t165 > 0 then (t159 + (negate ((t162 / t164) * t148))) else t159)) + (t166 * t115))
+      let !s168 = ((t134 * (t116 + (t133 * ((t136 * t122) + (t137 * s125))))) + (t166 * t116))
+      let !s169 = ((t134 * (if t165 > 0 then (t160 + (negate ((t162 / t164) * t149))) else t160)) + (t166 * t117))
+      let !t170 = ((t136 * t121) + (t137 * s124))
+      let !t171 = ((t136 * t122) + (t137 * s125))
+      let !t172 = ((t136 * t123) + (t137 * s126))
+      let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
+      let !t174 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t175 = (t174 * ((if t165 > 0 then (t159 + (negate ((t162 / t164) * t148))) else t159) + (negate t115)))
+      let !t176 = (t163 * (t159 + t159))
+      let !t177 = (t163 * (t160 + t160))
+      let !t178 = (sqrt ((t176 * t176) + (t177 * t177)))
+      let !t179 = (if t178 > 0 then (recip (if (t178 - 1.0e-300) > 0 then t178 else 1.0e-300)) else 0.0)
+      let !t180 = (t179 * t176)
+      let !t181 = (t179 * t177)
+      let !t182 = (t174 * ((if t165 > 0 then (t160 + (negate ((t162 / t164) * t149))) else t160) + (negate t117)))
+      let !t183 = ((t180 * t175) + (t181 * t182))
+      let !t184 = (t175 + (negate (t183 * t180)))
+      let !t185 = (t174 * ((t116 + (t133 * t171)) + (negate t116)))
+      let !t186 = (t182 + (negate (t183 * t181)))
+      let !t187 = (sqrt (((t184 * t184) + (t185 * t185)) + (t186 * t186)))
+      let !t188 = (if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0)
+      let !s189 = ((t134 * (t173 * (t188 * t184))) + (t166 * t170))
+      let !s190 = ((t134 * (t173 * (t188 * t185))) + (t166 * t171))
+      let !s191 = ((t134 * (t173 * (t188 * t186))) + (t166 * t172))
+      let !t192 = (s167 + (t133 * s189))
+      let !t193 = (s169 + (t133 * s191))
+      let !t194 = (sqrt ((t192 * t192) + (t193 * t193)))
+      let !t195 = (t194 - 1.0)
+      let !t196 = (recip (2.0 * t194))
+      let !t197 = (recip (2.0 * (sqrt ((s167 * s167) + (s169 * s169)))))
+      let !t198 = (t197 * (s167 + s167))
+      let !t199 = (t197 * (s169 + s169))
+      let !t200 = (sqrt ((t198 * t198) + (t199 * t199)))
+      let !t201 = (if t200 > 0 then (recip (if (t200 - 1.0e-300) > 0 then t200 else 1.0e-300)) else 0.0)
+      let !t202 = (t201 * t198)
+      let !t203 = (t201 * t199)
+      let !t204 = (((t196 * (t192 + t192)) * t202) + ((t196 * (t193 + t193)) * t203))
+      let !t205 = (if ((abs t195) - 1.0e-10) > 0 then (if (abs t204) > 0 then 1.0 else 0.0) else 0.0)
+      let !t206 = (if t205 > 0 then (t192 + (negate ((t195 / t204) * t202))) else t192)
+      let !t207 = (if t205 > 0 then (t193 + (negate ((t195 / t204) * t203))) else t193)
+      let !t208 = (sqrt ((t206 * t206) + (t207 * t207)))
+      let !t209 = (t208 - 1.0)
+      let !t210 = (recip (2.0 * t208))
+      let !t211 = (((t210 * (t206 + t206)) * t202) + ((t210 * (t207 + t207)) * t203))
+      let !t212 = (if ((abs t209) - 1.0e-10) > 0 then (if (abs t211) > 0 then 1.0 else 0.0) else 0.0)
+      let !t213 = (if t212 > 0 then (t206 + (negate ((t209 / t211) * t202))) else t206)
+      let !t214 = (if t212 > 0 then (t207 + (negate ((t209 / t211) * t203))) else t207)
+      let !t215 = (sqrt ((t213 * t213) + (t214 * t214)))
+      let !t216 = (t215 - 1.0)
+      let !t217 = (recip (2.0 * t215))
+      let !t218 = (((t217 * (t213 + t213)) * t202) + ((t217 * (t214 + t214)) * t203))
+      let !t219 = (if ((abs t216) - 1.0e-10) > 0 then (if (abs t218) > 0 then 1.0 else 0.0) else 0.0)
+      let !s220 = ((t134 * (if t219 > 0 then (t213 + (negate ((t216 / t218) * t202))) else t213)) + (t166 * s167))
+      let !s221 = ((t134 * (s168 + (t133 * s190))) + (t166 * s168))
+      let !s222 = ((t134 * (if t219 > 0 then (t214 + (negate ((t216 / t218) * t203))) else t214)) + (t166 * s169))
+      let !t223 = (sqrt (((s189 * s189) + (s190 * s190)) + (s191 * s191)))
+      let !t224 = (t174 * ((if t219 > 0 then (t213 + (negate ((t216 / t218) * t202))) else t213) + (negate s167)))
+      let !t225 = (t217 * (t213 + t213))
+      let !t226 = (t217 * (t214 + t214))
+      let !t227 = (sqrt ((t225 * t225) + (t226 * t226)))
+      let !t228 = (if t227 > 0 then (recip (if (t227 - 1.0e-300) > 0 then t227 else 1.0e-300)) else 0.0)
+      let !t229 = (t228 * t225)
+      let !t230 = (t228 * t226)
+      let !t231 = (t174 * ((if t219 > 0 then (t214 + (negate ((t216 / t218) * t203))) else t214) + (negate s169)))
+      let !t232 = ((t229 * t224) + (t230 * t231))
+      let !t233 = (t224 + (negate (t232 * t229)))
+      let !t234 = (t174 * ((s168 + (t133 * s190)) + (negate s168)))
+      let !t235 = (t231 + (negate (t232 * t230)))
+      let !t236 = (sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235)))
+      let !t237 = (if t236 > 0 then (recip (if (t236 - 1.0e-300) > 0 then t236 else 1.0e-300)) else 0.0)
+      let !s238 = ((t134 * (t223 * (t237 * t233))) + (t166 * s189))
+      let !s239 = ((t134 * (t223 * (t237 * t234))) + (t166 * s190))
+      let !s240 = ((t134 * (t223 * (t237 * t235))) + (t166 * s191))
+      let !t241 = (s220 + (t133 * s238))
+      let !t242 = (s222 + (t133 * s240))
+      let !t243 = (sqrt ((t241 * t241) + (t242 * t242)))
+      let !t244 = (t243 - 1.0)
+      let !t245 = (recip (2.0 * t243))
+      let !t246 = (recip (2.0 * (sqrt ((s220 * s220) + (s222 * s222)))))
+      let !t247 = (t246 * (s220 + s220))
+      let !t248 = (t246 * (s222 + s222))
+      let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
+      let !t250 = (if t249 > 0 then (recip (if (t249 - 1.0e-300) > 0 then t249 else 1.0e-300)) else 0.0)
+      let !t251 = (t250 * t247)
+      let !t252 = (t250 * t248)
+      let !t253 = (((t245 * (t241 + t241)) * t251) + ((t245 * (t242 + t242)) * t252))
+      let !t254 = (if ((abs t244) - 1.0e-10) > 0 then (if (abs t253) > 0 then 1.0 else 0.0) else 0.0)
+      let !t255 = (if t254 > 0 then (t241 + (negate ((t244 / t253) * t251))) else t241)
+      let !t256 = (if t254 > 0 then (t242 + (negate ((t244 / t253) * t252))) else t242)
+      let !t257 = (sqrt ((t255 * t255) + (t256 * t256)))
+      let !t258 = (t257 - 1.0)
+      let !t259 = (recip (2.0 * t257))
+      let !t260 = (((t259 * (t255 + t255)) * t251) + ((t259 * (t256 + t256)) * t252))
+      let !t261 = (if ((abs t258) - 1.0e-10) > 0 then (if (abs t260) > 0 then 1.0 else 0.0) else 0.0)
+      let !t262 = (if t261 > 0 then (t255 + (negate ((t258 / t260) * t251))) else t255)
+      let !t263 = (if t261 > 0 then (t256 + (negate ((t258 / t260) * t252))) else t256)
+      let !t264 = (sqrt ((t262 * t262) + (t263 * t263)))
+      let !t265 = (t264 - 1.0)
+      let !t266 = (recip (2.0 * t264))
+      let !t267 = (((t266 * (t262 + t262)) * t251) + ((t266 * (t263 + t263)) * t252))
+      let !t268 = (if ((abs t265) - 1.0e-10) > 0 then (if (abs t267) > 0 then 1.0 else 0.0) else 0.0)
+      let !s269 = ((t134 * (if t268 > 0 then (t262 + (negate ((t265 / t267) * t251))) else t262)) + (t166 * s220))
+      let !s270 = ((t134 * (s221 + (t133 * s239))) + (t166 * s221))
+      let !s271 = ((t134 * (if t268 > 0 then (t263 + (negate ((t265 / t267) * t252))) else t263)) + (t166 * s222))
+      let !t272 = (sqrt (((s238 * s238) + (s239 * s239)) + (s240 * s240)))
+      let !t273 = (t174 * ((if t268 > 0 then (t262 + (negate ((t265 / t267) * t251))) else t262) + (negate s220)))
+      let !t274 = (t266 * (t262 + t262))
+      let !t275 = (t266 * (t263 + t263))
+      let !t276 = (sqrt ((t274 * t274) + (t275 * t275)))
+      let !t277 = (if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0)
+      let !t278 = (t277 * t274)
+      let !t279 = (t277 * t275)
+      let !t280 = (t174 * ((if t268 > 0 then (t263 + (negate ((t265 / t267) * t252))) else t263) + (negate s222)))
+      let !t281 = ((t278 * t273) + (t279 * t280))
+      let !t282 = (t273 + (negate (t281 * t278)))
+      let !t283 = (t174 * ((s221 + (t133 * s239)) + (negate s221)))
+      let !t284 = (t280 + (negate (t281 * t279)))
+      let !t285 = (sqrt (((t282 * t282) + (t283 * t283)) + (t284 * t284)))
+      let !t286 = (if t285 > 0 then (recip (if (t285 - 1.0e-300) > 0 then t285 else 1.0e-300)) else 0.0)
+      let !s287 = ((t134 * (t272 * (t286 * t282))) + (t166 * s238))
+      let !s288 = ((t134 * (t272 * (t286 * t283))) + (t166 * s239))
+      let !s289 = ((t134 * (t272 * (t286 * t284))) + (t166 * s240))
+      let !t290 = (s269 + (t133 * s287))
+      let !t291 = (s271 + (t133 * s289))
+      let !t292 = (sqrt ((t290 * t290) + (t291 * t291)))
+      let !t293 = (t292 - 1.0)
+      let !t294 = (recip (2.0 * t292))
+      let !t295 = (recip (2.0 * (sqrt ((s269 * s269) + (s271 * s271)))))
+      let !t296 = (t295 * (s269 + s269))
+      let !t297 = (t295 * (s271 + s271))
+      let !t298 = (sqrt ((t296 * t296) + (t297 * t297)))
+      let !t299 = (if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0)
+      let !t300 = (t299 * t296)
+      let !t301 = (t299 * t297)
+      let !t302 = (((t294 * (t290 + t290)) * t300) + ((t294 * (t291 + t291)) * t301))
+      let !t303 = (if ((abs t293) - 1.0e-10) > 0 then (if (abs t302) > 0 then 1.0 else 0.0) else 0.0)
+      let !t304 = (if t303 > 0 then (t290 + (negate ((t293 / t302) * t300))) else t290)
+      let !t305 = (if t303 > 0 then (t291 + (negate ((t293 / t302) * t301))) else t291)
+      let !t306 = (sqrt ((t304 * t304) + (t305 * t305)))
+      let !t307 = (t306 - 1.0)
+      let !t308 = (recip (2.0 * t306))
+      let !t309 = (((t308 * (t304 + t304)) * t300) + ((t308 * (t305 + t305)) * t301))
+      let !t310 = (if ((abs t307) - 1.0e-10) > 0 then (if (abs t309) > 0 then 1.0 else 0.0) else 0.0)
+      let !t311 = (if t310 > 0 then (t304 + (negate ((t307 / t309) * t300))) else t304)
+      let !t312 = (if t310 > 0 then (t305 + (negate ((t307 / t309) * t301))) else t305)
+      let !t313 = (sqrt ((t311 * t311) + (t312 * t312)))
+      let !t314 = (t313 - 1.0)
+      let !t315 = (recip (2.0 * t313))
+      let !t316 = (((t315 * (t311 + t311)) * t300) + ((t315 * (t312 + t312)) * t301))
+      let !t317 = (if ((abs t314) - 1.0e-10) > 0 then (if (abs t316) > 0 then 1.0 else 0.0) else 0.0)
+      let !s318 = ((t134 * (if t317 > 0 then (t311 + (negate ((t314 / t316) * t300))) else t311)) + (t166 * s269))
+      let !s319 = ((t134 * (s270 + (t133 * s288))) + (t166 * s270))
+      let !s320 = ((t134 * (if t317 > 0 then (t312 + (negate ((t314 / t316) * t301))) else t312)) + (t166 * s271))
+      let !t321 = (sqrt (((s287 * s287) + (s288 * s288)) + (s289 * s289)))
+      let !t322 = (t174 * ((if t317 > 0 then (t311 + (negate ((t314 / t316) * t300))) else t311) + (negate s269)))
+      let !t323 = (t315 * (t311 + t311))
+      let !t324 = (t315 * (t312 + t312))
+      let !t325 = (sqrt ((t323 * t323) + (t324 * t324)))
+      let !t326 = (if t325 > 0 then (recip (if (t325 - 1.0e-300) > 0 then t325 else 1.0e-300)) else 0.0)
+      let !t327 = (t326 * t323)
+      let !t328 = (t326 * t324)
+      let !t329 = (t174 * ((if t317 > 0 then (t312 + (negate ((t314 / t316) * t301))) else t312) + (negate s271)))
+      let !t330 = ((t327 * t322) + (t328 * t329))
+      let !t331 = (t322 + (negate (t330 * t327)))
+      let !t332 = (t174 * ((s270 + (t133 * s288)) + (negate s270)))
+      let !t333 = (t329 + (negate (t330 * t328)))
+      let !t334 = (sqrt (((t331 * t331) + (t332 * t332)) + (t333 * t333)))
+      let !t335 = (if t334 > 0 then (recip (if (t334 - 1.0e-300) > 0 then t334 else 1.0e-300)) else 0.0)
+      let !s336 = ((t134 * (t321 * (t335 * t331))) + (t166 * s287))
+      let !s337 = ((t134 * (t321 * (t335 * t332))) + (t166 * s288))
+      let !s338 = ((t134 * (t321 * (t335 * t333))) + (t166 * s289))
+      t339 <- rdU mouse 4
+      t340 <- rdU mouse 5
+      t341 <- rdU mouse 6
+      t342 <- rdU mouse 7
+      t343 <- rdU mouse 8
+      t344 <- rdU mouse 9
+      let !t345 = (recip t96)
+      let !t346 = (6.283185307179586 * t342)
+      let !s347 = (recip (t98 * ((((2.0 * t345) * t343) * t346) + (t98 * ((t345 * t346) * t346)))))
+      let !s348 = ((t98 * ((t345 * t346) * t346)) * s347)
+      let !s349 = (s318 + (negate t99))
+      let !s350 = (s319 + (negate t100))
+      let !s351 = (s320 + (negate t101))
+      let !s352 = (s318 + (negate t339))
+      let !s353 = (s319 + (negate t340))
+      let !s354 = (s320 + (negate t341))
+      t355 <- rdU mouse 10
+      t356 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t357 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t358 <- rdU vel (3 * (truncate t95))
+      t359 <- rdU vel ((3 * (truncate t95)) + 1)
+      t360 <- rdU vel ((3 * (truncate t95)) + 2)
+      t361 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t358 + ((t356 * t355) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t359 + ((t356 * t355) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t360 + ((t356 * t355) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t361 + ((t357 * t355) * (((((s350 * t107) - (s351 * t106)) * t102) + (((s351 * t105) - (s349 * t107)) * t103)) + (((s349 * t106) - (s350 * t105)) * t104))))
+      t362 <- rdU mouse 11
+      t363 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t364 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t365 <- rdU vel (3 * (truncate t95))
+      t366 <- rdU vel ((3 * (truncate t95)) + 1)
+      t367 <- rdU vel ((3 * (truncate t95)) + 2)
+      t368 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t365 + ((t363 * t362) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t366 + ((t363 * t362) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t367 + ((t363 * t362) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t368 + ((t364 * t362) * (((((s350 * s110) - (s351 * s109)) * t102) + (((s351 * s108) - (s349 * s110)) * t103)) + (((s349 * s109) - (s350 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i374 -> do
-    let !d374 = fromIntegral i374 :: Double
-    loopI 0.0 t9 $ \i375 -> do
-      let !d375 = fromIntegral i375 :: Double
-      chkI contacts (30 * i375) 0 26
-      t376 <- rdU contacts (30 * i375)
-      t377 <- rdU contacts ((30 * i375) + 1)
-      t378 <- rdU contacts ((30 * i375) + 12)
-      t379 <- rdU contacts ((30 * i375) + 13)
-      t380 <- rdU contacts ((30 * i375) + 14)
-      t381 <- rdU contacts ((30 * i375) + 15)
-      t382 <- rdU contacts ((30 * i375) + 16)
-      t383 <- rdU contacts ((30 * i375) + 17)
-      t384 <- rdU contacts ((30 * i375) + 18)
-      t385 <- rdU contacts ((30 * i375) + 19)
-      t386 <- rdU contacts ((30 * i375) + 4)
-      t387 <- rdU contacts ((30 * i375) + 5)
-      t388 <- rdU contacts ((30 * i375) + 6)
-      t389 <- rdU contacts ((30 * i375) + 7)
-      t390 <- rdU contacts ((30 * i375) + 8)
-      t391 <- rdU contacts ((30 * i375) + 9)
-      t392 <- rdU contacts ((30 * i375) + 10)
-      t393 <- rdU contacts ((30 * i375) + 11)
-      t394 <- rdU contacts ((30 * i375) + 26)
-      t395 <- rdU contacts ((30 * i375) + 24)
-      t396 <- rdU contacts ((30 * i375) + 25)
-      t397 <- rdU contacts ((30 * i375) + 22)
-      t398 <- rdU contacts ((30 * i375) + 21)
-      t399 <- rdU contacts ((30 * i375) + 23)
-      let !s400 = (if (negate t377) > 0 then 0.0 else t377)
-      let !s401 = (t377 + 0.5)
-      let !s402 = (if (0.5 - (abs (t376 - t377))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t376)) 1 3
-      t403 <- rdU scalars ((6 * (truncate t376)) + 2)
-      t404 <- rdU scalars ((6 * (truncate t376)) + 3)
-      chkI scalars (6 * (truncate s400)) 1 3
-      t405 <- rdU scalars ((6 * (truncate s400)) + 2)
-      t406 <- rdU scalars ((6 * (truncate s400)) + 3)
-      chkI vel (3 * (truncate t376)) 0 2
-      t407 <- rdU vel (3 * (truncate t376))
-      t408 <- rdU vel ((3 * (truncate t376)) + 1)
-      t409 <- rdU vel ((3 * (truncate t376)) + 2)
-      t410 <- rdU scalars ((6 * (truncate t376)) + 1)
-      chkI vel (3 * (truncate s400)) 0 2
-      t411 <- rdU vel (3 * (truncate s400))
-      t412 <- rdU vel ((3 * (truncate s400)) + 1)
-      t413 <- rdU vel ((3 * (truncate s400)) + 2)
-      t414 <- rdU scalars ((6 * (truncate s400)) + 1)
-      let !s415 = (((((t378 * t407) + (t379 * t408)) + (t380 * t409)) + (t381 * t410)) - (if s401 > 0 then ((((t382 * t411) + (t383 * t412)) + (t384 * t413)) + (t385 * t414)) else 0.0))
-      let !t416 = (t2 * t395)
-      let !t417 = (negate t416)
-      let !t418 = (t396 - ((t394 * s415) * t397))
-      let !t419 = (if (t418 - t416) > 0 then t416 else t418)
-      let !t420 = (if (t417 - t419) > 0 then t417 else t419)
-      let !s421 = (if (1.0 - (abs (t420 - t420))) > 0 then t420 else 0.0)
-      wrU contacts ((30 * i375) + 25) s421
-      let !t422 = (t403 * (s421 - t396))
-      let !s423 = (t422 * t378)
-      let !s424 = (t422 * t379)
-      let !s425 = (t422 * t380)
-      let !s426 = ((t404 * (s421 - t396)) * t381)
-      let !t427 = (t405 * (negate (s421 - t396)))
-      let !s428 = (t427 * t382)
-      let !s429 = (t427 * t383)
-      let !s430 = (t427 * t384)
-      let !s431 = ((t406 * (negate (s421 - t396))) * t385)
-      let !s432 = ((t407 + s423) + (s402 * s428))
-      let !s433 = ((t408 + s424) + (s402 * s429))
-      let !s434 = ((t409 + s425) + (s402 * s430))
-      let !s435 = ((t410 + s426) + (s402 * s431))
-      let !s436 = ((t411 + s428) + (s402 * s423))
-      let !s437 = ((t412 + s429) + (s402 * s424))
-      let !s438 = ((t413 + s430) + (s402 * s425))
-      let !s439 = ((t414 + s431) + (s402 * s426))
-      let !s440 = (((((t386 * s432) + (t387 * s433)) + (t388 * s434)) + (t389 * s435)) - (if s401 > 0 then ((((t390 * s436) + (t391 * s437)) + (t392 * s438)) + (t393 * s439)) else 0.0))
-      let !t441 = (t395 + ((t394 * (t399 - s440)) * t398))
-      let !t442 = (if (negate t441) > 0 then 0.0 else t441)
-      let !s443 = (if (1.0 - (abs (t442 - t442))) > 0 then t442 else 0.0)
-      wrU contacts ((30 * i375) + 24) s443
-      let !t444 = (t403 * (s443 - t395))
-      let !s445 = (t444 * t386)
-      let !s446 = (t444 * t387)
-      let !s447 = (t444 * t388)
-      let !s448 = ((t404 * (s443 - t395)) * t389)
-      let !t449 = (t405 * (negate (s443 - t395)))
-      let !s450 = (t449 * t390)
-      let !s451 = (t449 * t391)
-      let !s452 = (t449 * t392)
-      let !s453 = ((t406 * (negate (s443 - t395))) * t393)
-      let !s454 = ((s432 + s445) + (s402 * s450))
-      let !s455 = ((s433 + s446) + (s402 * s451))
-      let !s456 = ((s434 + s447) + (s402 * s452))
-      let !s457 = ((s435 + s448) + (s402 * s453))
-      let !s458 = ((s436 + s450) + (s402 * s445))
-      let !s459 = ((s437 + s451) + (s402 * s446))
-      let !s460 = ((s438 + s452) + (s402 * s447))
-      let !s461 = ((s439 + s453) + (s402 * s448))
-      wrU vel (3 * (truncate t376)) s454
-      wrU vel ((3 * (truncate t376)) + 1) s455
-      wrU vel ((3 * (truncate t376)) + 2) s456
-      wrU scalars ((6 * (truncate t376)) + 1) s457
-      if s401 > 0 then do
-        wrU vel (3 * (truncate s400)) s458
-        wrU vel ((3 * (truncate s400)) + 1) s459
-        wrU vel ((3 * (truncate s400)) + 2) s460
-        wrU scalars ((6 * (truncate s400)) + 1) s461
+  loopI 0.0 t1 $ \i369 -> do
+    let !d369 = fromIntegral i369 :: Double
+    loopI 0.0 t9 $ \i370 -> do
+      let !d370 = fromIntegral i370 :: Double
+      chkI contacts (30 * i370) 0 26
+      t371 <- rdU contacts (30 * i370)
+      t372 <- rdU contacts ((30 * i370) + 1)
+      t373 <- rdU contacts ((30 * i370) + 12)
+      t374 <- rdU contacts ((30 * i370) + 13)
+      t375 <- rdU contacts ((30 * i370) + 14)
+      t376 <- rdU contacts ((30 * i370) + 15)
+      t377 <- rdU contacts ((30 * i370) + 16)
+      t378 <- rdU contacts ((30 * i370) + 17)
+      t379 <- rdU contacts ((30 * i370) + 18)
+      t380 <- rdU contacts ((30 * i370) + 19)
+      t381 <- rdU contacts ((30 * i370) + 4)
+      t382 <- rdU contacts ((30 * i370) + 5)
+      t383 <- rdU contacts ((30 * i370) + 6)
+      t384 <- rdU contacts ((30 * i370) + 7)
+      t385 <- rdU contacts ((30 * i370) + 8)
+      t386 <- rdU contacts ((30 * i370) + 9)
+      t387 <- rdU contacts ((30 * i370) + 10)
+      t388 <- rdU contacts ((30 * i370) + 11)
+      t389 <- rdU contacts ((30 * i370) + 26)
+      t390 <- rdU contacts ((30 * i370) + 24)
+      t391 <- rdU contacts ((30 * i370) + 25)
+      t392 <- rdU contacts ((30 * i370) + 22)
+      t393 <- rdU contacts ((30 * i370) + 21)
+      t394 <- rdU contacts ((30 * i370) + 23)
+      let !s395 = (if (negate t372) > 0 then 0.0 else t372)
+      let !s396 = (t372 + 0.5)
+      let !s397 = (if (0.5 - (abs (t371 - t372))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t371)) 1 3
+      t398 <- rdU scalars ((6 * (truncate t371)) + 2)
+      t399 <- rdU scalars ((6 * (truncate t371)) + 3)
+      chkI scalars (6 * (truncate s395)) 1 3
+      t400 <- rdU scalars ((6 * (truncate s395)) + 2)
+      t401 <- rdU scalars ((6 * (truncate s395)) + 3)
+      chkI vel (3 * (truncate t371)) 0 2
+      t402 <- rdU vel (3 * (truncate t371))
+      t403 <- rdU vel ((3 * (truncate t371)) + 1)
+      t404 <- rdU vel ((3 * (truncate t371)) + 2)
+      t405 <- rdU scalars ((6 * (truncate t371)) + 1)
+      chkI vel (3 * (truncate s395)) 0 2
+      t406 <- rdU vel (3 * (truncate s395))
+      t407 <- rdU vel ((3 * (truncate s395)) + 1)
+      t408 <- rdU vel ((3 * (truncate s395)) + 2)
+      t409 <- rdU scalars ((6 * (truncate s395)) + 1)
+      let !s410 = (((((t373 * t402) + (t374 * t403)) + (t375 * t404)) + (t376 * t405)) - (if s396 > 0 then ((((t377 * t406) + (t378 * t407)) + (t379 * t408)) + (t380 * t409)) else 0.0))
+      let !t411 = (t2 * t390)
+      let !t412 = (negate t411)
+      let !t413 = (t391 - ((t389 * s410) * t392))
+      let !t414 = (if (t413 - t411) > 0 then t411 else t413)
+      let !t415 = (if (t412 - t414) > 0 then t412 else t414)
+      let !s416 = (if (1.0 - (abs (t415 - t415))) > 0 then t415 else 0.0)
+      wrU contacts ((30 * i370) + 25) s416
+      let !t417 = (t398 * (s416 - t391))
+      let !s418 = (t417 * t373)
+      let !s419 = (t417 * t374)
+      let !s420 = (t417 * t375)
+      let !s421 = ((t399 * (s416 - t391)) * t376)
+      let !t422 = (t400 * (negate (s416 - t391)))
+      let !s423 = (t422 * t377)
+      let !s424 = (t422 * t378)
+      let !s425 = (t422 * t379)
+      let !s426 = ((t401 * (negate (s416 - t391))) * t380)
+      let !s427 = ((t402 + s418) + (s397 * s423))
+      let !s428 = ((t403 + s419) + (s397 * s424))
+      let !s429 = ((t404 + s420) + (s397 * s425))
+      let !s430 = ((t405 + s421) + (s397 * s426))
+      let !s431 = ((t406 + s423) + (s397 * s418))
+      let !s432 = ((t407 + s424) + (s397 * s419))
+      let !s433 = ((t408 + s425) + (s397 * s420))
+      let !s434 = ((t409 + s426) + (s397 * s421))
+      let !s435 = (((((t381 * s427) + (t382 * s428)) + (t383 * s429)) + (t384 * s430)) - (if s396 > 0 then ((((t385 * s431) + (t386 * s432)) + (t387 * s433)) + (t388 * s434)) else 0.0))
+      let !t436 = (t390 + ((t389 * (t394 - s435)) * t393))
+      let !t437 = (if (negate t436) > 0 then 0.0 else t436)
+      let !s438 = (if (1.0 - (abs (t437 - t437))) > 0 then t437 else 0.0)
+      wrU contacts ((30 * i370) + 24) s438
+      let !t439 = (t398 * (s438 - t390))
+      let !s440 = (t439 * t381)
+      let !s441 = (t439 * t382)
+      let !s442 = (t439 * t383)
+      let !s443 = ((t399 * (s438 - t390)) * t384)
+      let !t444 = (t400 * (negate (s438 - t390)))
+      let !s445 = (t444 * t385)
+      let !s446 = (t444 * t386)
+      let !s447 = (t444 * t387)
+      let !s448 = ((t401 * (negate (s438 - t390))) * t388)
+      let !s449 = ((s427 + s440) + (s397 * s445))
+      let !s450 = ((s428 + s441) + (s397 * s446))
+      let !s451 = ((s429 + s442) + (s397 * s447))
+      let !s452 = ((s430 + s443) + (s397 * s448))
+      let !s453 = ((s431 + s445) + (s397 * s440))
+      let !s454 = ((s432 + s446) + (s397 * s441))
+      let !s455 = ((s433 + s447) + (s397 * s442))
+      let !s456 = ((s434 + s448) + (s397 * s443))
+      wrU vel (3 * (truncate t371)) s449
+      wrU vel ((3 * (truncate t371)) + 1) s450
+      wrU vel ((3 * (truncate t371)) + 2) s451
+      wrU scalars ((6 * (truncate t371)) + 1) s452
+      if s396 > 0 then do
+        wrU vel (3 * (truncate s395)) s453
+        wrU vel ((3 * (truncate s395)) + 1) s454
+        wrU vel ((3 * (truncate s395)) + 2) s455
+        wrU scalars ((6 * (truncate s395)) + 1) s456
         pure ()
       else do
         pure ()
       pure ()
-    t462 <- rdU mouse 0
-    if t462 > 0 then do
+    t457 <- rdU mouse 0
+    if t457 > 0 then do
       chkI mouse 0 1 1
-      t463 <- rdU mouse 1
-      chkI scalars (6 * (truncate t463)) 2 2
-      t464 <- rdU scalars ((6 * (truncate t463)) + 2)
-      if t464 > 0 then do
-        chkI scalars (6 * (truncate t463)) 0 5
-        t465 <- rdU scalars ((6 * (truncate t463)) + 3)
-        t466 <- rdU params 0
-        chkI pos (3 * (truncate t463)) 0 2
-        t467 <- rdU pos (3 * (truncate t463))
-        t468 <- rdU pos ((3 * (truncate t463)) + 1)
-        t469 <- rdU pos ((3 * (truncate t463)) + 2)
-        chkI normal (3 * (truncate t463)) 0 2
-        t470 <- rdU normal (3 * (truncate t463))
-        t471 <- rdU normal ((3 * (truncate t463)) + 1)
-        t472 <- rdU normal ((3 * (truncate t463)) + 2)
-        chkI axis (3 * (truncate t463)) 0 2
-        t473 <- rdU axis (3 * (truncate t463))
-        t474 <- rdU axis ((3 * (truncate t463)) + 1)
-        t475 <- rdU axis ((3 * (truncate t463)) + 2)
-        let !s476 = ((t471 * t475) - (t472 * t474))
-        let !s477 = ((t472 * t473) - (t470 * t475))
-        let !s478 = ((t470 * t474) - (t471 * t473))
-        t479 <- rdU scalars (6 * (truncate t463))
-        t480 <- rdU scalars ((6 * (truncate t463)) + 5)
-        t481 <- rdU scalars ((6 * (truncate t463)) + 2)
-        t482 <- rdU scalars ((6 * (truncate t463)) + 3)
-        t483 <- rdU pos (3 * (truncate t463))
-        t484 <- rdU pos ((3 * (truncate t463)) + 1)
-        t485 <- rdU pos ((3 * (truncate t463)) + 2)
-        t486 <- rdU normal (3 * (truncate t463))
-        t487 <- rdU normal ((3 * (truncate t463)) + 1)
-        t488 <- rdU normal ((3 * (truncate t463)) + 2)
-        t489 <- rdU axis (3 * (truncate t463))
-        t490 <- rdU axis ((3 * (truncate t463)) + 1)
-        t491 <- rdU axis ((3 * (truncate t463)) + 2)
-        let !s492 = ((t487 * t491) - (t488 * t490))
-        let !s493 = ((t488 * t489) - (t486 * t491))
-        let !s494 = ((t486 * t490) - (t487 * t489))
-        t495 <- rdU scalars (6 * (truncate t463))
-        t496 <- rdU scalars ((6 * (truncate t463)) + 5)
-        t497 <- rdU scalars ((6 * (truncate t463)) + 2)
-        t498 <- rdU scalars ((6 * (truncate t463)) + 3)
+      t458 <- rdU mouse 1
+      chkI scalars (6 * (truncate t458)) 2 2
+      t459 <- rdU scalars ((6 * (truncate t458)) + 2)
+      if t459 > 0 then do
+        chkI scalars (6 * (truncate t458)) 0 5
+        t460 <- rdU scalars ((6 * (truncate t458)) + 3)
+        t461 <- rdU params 0
+        chkI pos (3 * (truncate t458)) 0 2
+        t462 <- rdU pos (3 * (truncate t458))
+        t463 <- rdU pos ((3 * (truncate t458)) + 1)
+        t464 <- rdU pos ((3 * (truncate t458)) + 2)
+        chkI normal (3 * (truncate t458)) 0 2
+        t465 <- rdU normal (3 * (truncate t458))
+        t466 <- rdU normal ((3 * (truncate t458)) + 1)
+        t467 <- rdU normal ((3 * (truncate t458)) + 2)
+        chkI axis (3 * (truncate t458)) 0 2
+        t468 <- rdU axis (3 * (truncate t458))
+        t469 <- rdU axis ((3 * (truncate t458)) + 1)
+        t470 <- rdU axis ((3 * (truncate t458)) + 2)
+        let !s471 = ((t466 * t470) - (t467 * t469))
+        let !s472 = ((t467 * t468) - (t465 * t470))
+        let !s473 = ((t465 * t469) - (t466 * t468))
+        t474 <- rdU scalars (6 * (truncate t458))
+        t475 <- rdU scalars ((6 * (truncate t458)) + 5)
+        t476 <- rdU scalars ((6 * (truncate t458)) + 2)
+        t477 <- rdU scalars ((6 * (truncate t458)) + 3)
+        t478 <- rdU pos (3 * (truncate t458))
+        t479 <- rdU pos ((3 * (truncate t458)) + 1)
+        t480 <- rdU pos ((3 * (truncate t458)) + 2)
+        t481 <- rdU normal (3 * (truncate t458))
+        t482 <- rdU normal ((3 * (truncate t458)) + 1)
+        t483 <- rdU normal ((3 * (truncate t458)) + 2)
+        t484 <- rdU axis (3 * (truncate t458))
+        t485 <- rdU axis ((3 * (truncate t458)) + 1)
+        t486 <- rdU axis ((3 * (truncate t458)) + 2)
+        let !s487 = ((t482 * t486) - (t483 * t485))
+        let !s488 = ((t483 * t484) - (t481 * t486))
+        let !s489 = ((t481 * t485) - (t482 * t484))
+        t490 <- rdU scalars (6 * (truncate t458))
+        t491 <- rdU scalars ((6 * (truncate t458)) + 5)
+        t492 <- rdU scalars ((6 * (truncate t458)) + 2)
+        t493 <- rdU scalars ((6 * (truncate t458)) + 3)
         chkI mouse 0 2 11
-        t499 <- rdU mouse 2
-        t500 <- rdU mouse 3
-        let !t501 = (t499 / 4.0)
-        let !t502 = (if (abs t501) > 0 then 1.0 else 0.0)
-        let !t503 = (t495 + t500)
-        let !t504 = (cos t503)
-        let !t505 = (sin t503)
-        let !t506 = (t483 + (t501 * ((t504 * t489) + (t505 * s492))))
-        let !t507 = (t485 + (t501 * ((t504 * t491) + (t505 * s494))))
-        let !t508 = (sqrt ((t506 * t506) + (t507 * t507)))
-        let !t509 = (t508 - 1.0)
-        let !t510 = (recip (2.0 * t508))
-        let !t511 = (recip (2.0 * (sqrt ((t483 * t483) + (t485 * t485)))))
-        let !t512 = (t511 * (t483 + t483))
-        let !t513 = (t511 * (t485 + t485))
-        let !t514 = (sqrt ((t512 * t512) + (t513 * t513)))
-        let !t515 = (if t514 > 0 then (recip (if (t514 - 1.0e-300) > 0 then t514 else 1.0e-300)) else 0.0)
-        let !t516 = (t515 * t512)
-        let !t517 = (t515 * t513)
-        let !t518 = (((t510 * (t506 + t506)) * t516) + ((t510 * (t507 + t507)) * t517))
-        let !t519 = (if ((abs t509) - 1.0e-10) > 0 then (if (abs t518) > 0 then 1.0 else 0.0) else 0.0)
-        let !t520 = (if t519 > 0 then (t506 + (negate ((t509 / t518) * t516))) else t506)
-        let !t521 = (if t519 > 0 then (t507 + (negate ((t509 / t518) * t517))) else t507)
-        let !t522 = (sqrt ((t520 * t520) + (t521 * t521)))
-        let !t523 = (t522 - 1.0)
-        let !t524 = (recip (2.0 * t522))
-        let !t525 = (((t524 * (t520 + t520)) * t516) + ((t524 * (t521 + t521)) * t517))
-        let !t526 = (if ((abs t523) - 1.0e-10) > 0 then (if (abs t525) > 0 then 1.0 else 0.0) else 0.0)
-        let !t527 = (if t526 > 0 then (t520 + (negate ((t523 / t525) * t516))) else t520)
-        let !t528 = (if t526 > 0 then (t521 + (negate ((t523 / t525) * t517))) else t521)
-        let !t529 = (sqrt ((t527 * t527) + (t528 * t528)))
-        let !t530 = (t529 - 1.0)
-        let !t531 = (recip (2.0 * t529))
-        let !t532 = (((t531 * (t527 + t527)) * t516) + ((t531 * (t528 + t528)) * t517))
-        let !t533 = (if ((abs t530) - 1.0e-10) > 0 then (if (abs t532) > 0 then 1.0 else 0.0) else 0.0)
-        let !t534 = (1.0 - t502)
-        let !s535 = ((t502 * (if t533 > 0 then (t527 + (negate ((t530 / t532) * t516))) else t527)) + (t534 * t483))
-        let !s536 = ((t502 * (t484 + (t501 * ((t504 * t490) + (t505 * s493))))) + (t534 * t484))
-        let !s537 = ((t502 * (if t533 > 0 then (t528 + (negate ((t530 / t532) * t517))) else t528)) + (t534 * t485))
-        let !t538 = ((t504 * t489) + (t505 * s492))
-        let !t539 = ((t504 * t490) + (t505 * s493))
-        let !t540 = ((t504 * t491) + (t505 * s494))
-        let !t541 = (sqrt (((t538 * t538) + (t539 * t539)) + (t540 * t540)))
-        let !t542 = (if (abs t501) > 0 then (recip t501) else 0.0)
-        let !t543 = (t542 * ((if t533 > 0 then (t527 + (negate ((t530 / t532) * t516))) else t527) + (negate t483)))
-        let !t544 = (t531 * (t527 + t527))
-        let !t545 = (t531 * (t528 + t528))
-        let !t546 = (sqrt ((t544 * t544) + (t545 * t545)))
-        let !t547 = (if t546 > 0 then (recip (if (t546 - 1.0e-300) > 0 then t546 else 1.0e-300)) else 0.0)
-        let !t548 = (t547 * t544)
-        let !t549 = (t547 * t545)
-        let !t550 = (t542 * ((if t533 > 0 then (t528 + (negate ((t530 / t532) * t517))) else t528) + (negate t485)))
-        let !t551 = ((t548 * t543) + (t549 * t550))
-        let !t552 = (t543 + (negate (t551 * t548)))
-        let !t553 = (t542 * ((t484 + (t501 * t539)) + (negate t484)))
-        let !t554 = (t550 + (negate (t551 * t549)))
-        let !t555 = (sqrt (((t552 * t552) + (t553 * t553)) + (t554 * t554)))
-        let !t556 = (if t555 > 0 then (recip (if (t555 - 1.0e-300) > 0 then t555 else 1.0e-300)) else 0.0)
-        let !s557 = ((t502 * (t541 * (t556 * t552))) + (t534 * t538))
-        let !s558 = ((t502 * (t541 * (t556 * t553))) + (t534 * t539))
-        let !s559 = ((t502 * (t541 * (t556 * t554))) + (t534 * t540))
-        let !t560 = (s535 + (t501 * s557))
-        let !t561 = (s537 + (t501 * s559))
-        let !t562 = (sqrt ((t560 * t560) + (t561 * t561)))
-        let !t563 = (t562 - 1.0)
-        let !t564 = (recip (2.0 * t562))
-        let !t565 = (recip (2.0 * (sqrt ((s535 * s535) + (s537 * s537)))))
-        let !t566 = (t565 * (s535 + s535))
-        let !t567 = (t565 * (s537 + s537))
-        let !t568 = (sqrt ((t566 * t566) + (t567 * t567)))
-        let !t569 = (if t568 > 0 then (recip (if (t568 - 1.0e-300) > 0 then t568 else 1.0e-300)) else 0.0)
-        let !t570 = (t569 * t566)
-        let !t571 = (t569 * t567)
-        let !t572 = (((t564 * (t560 + t560)) * t570) + ((t564 * (t561 + t561)) * t571))
-        let !t573 = (if ((abs t563) - 1.0e-10) > 0 then (if (abs t572) > 0 then 1.0 else 0.0) else 0.0)
-        let !t574 = (if t573 > 0 then (t560 + (negate ((t563 / t572) * t570))) else t560)
-        let !t575 = (if t573 > 0 then (t561 + (negate ((t563 / t572) * t571))) else t561)
-        let !t576 = (sqrt ((t574 * t574) + (t575 * t575)))
-        let !t577 = (t576 - 1.0)
-        let !t578 = (recip (2.0 * t576))
-        let !t579 = (((t578 * (t574 + t574)) * t570) + ((t578 * (t575 + t575)) * t571))
-        let !t580 = (if ((abs t577) - 1.0e-10) > 0 then (if (abs t579) > 0 then 1.0 else 0.0) else 0.0)
-        let !t581 = (if t580 > 0 then (t574 + (negate ((t577 / t579) * t570))) else t574)
-        let !t582 = (if t580 > 0 then (t575 + (negate ((t577 / t579) * t571))) else t575)
-        let !t583 = (sqrt ((t581 * t581) + (t582 * t582)))
-        let !t584 = (t583 - 1.0)
-        let !t585 = (recip (2.0 * t583))
-        let !t586 = (((t585 * (t581 + t581)) * t570) + ((t585 * (t582 + t582)) * t571))
-        let !t587 = (if ((abs t584) - 1.0e-10) > 0 then (if (abs t586) > 0 then 1.0 else 0.0) else 0.0)
-        let !s588 = ((t502 * (if t587 > 0 then (t581 + (negate ((t584 / t586) * t570))) else t581)) + (t534 * s535))
-        let !s589 = ((t502 * (s536 + (t501 * s558))) + (t534 * s536))
-        let !s590 = ((t502 * (if t587 > 0 then (t582 + (negate ((t584 / t586) * t571))) else t582)) + (t534 * s537))
-        let !t591 = (sqrt (((s557 * s557) + (s558 * s558)) + (s559 * s559)))
-        let !t592 = (t542 * ((if t587 > 0 then (t581 + (negate ((t584 / t586) * t570))) else t581) + (negate s535)))
-        let !t593 = (t585 * (t581 + t581))
-        let !t594 = (t585 * (t582 + t582))
-        let !t595 = (sqrt ((t593 * t593) + (t594 * t594)))
-        let !t596 = (if t595 > 0 then (recip (if (t595 - 1.0e-300) > 0 then t595 else 1.0e-300)) else 0.0)
-        let !t597 = (t596 * t593)
-        let !t598 = (t596 * t594)
-        let !t599 = (t542 * ((if t587 > 0 then (t582 + (negate ((t584 / t586) * t571))) else t582) + (negate s537)))
-        let !t600 = ((t597 * t592) + (t598 * t599))
-        let !t601 = (t592 + (negate (t600 * t597)))
-        let !t602 = (t542 * ((s536 + (t501 * s558)) + (negate s536)))
-        let !t603 = (t599 + (negate (t600 * t598)))
-        let !t604 = (sqrt (((t601 * t601) + (t602 * t602)) + (t603 * t603)))
-        let !t605 = (if t604 > 0 then (recip (if (t604 - 1.0e-300) > 0 then t604 else 1.0e-300)) else 0.0)
-        let !s606 = ((t502 * (t591 * (t605 * t601))) + (t534 * s557))
-        let !s607 = ((t502 * (t591 * (t605 * t602))) + (t534 * s558))
-        let !s608 = ((t502 * (t591 * (t605 * t603))) + (t534 * s559))
-        let !t609 = (s588 + (t501 * s606))
-        let !t610 = (s590 + (t501 * s608))
-        let !t611 = (sqrt ((t609 * t609) + (t610 * t610)))
-        let !t612 = (t611 - 1.0)
-        let !t613 = (recip (2.0 * t611))
-        let !t614 = (recip (2.0 * (sqrt ((s588 * s588) + (s590 * s590)))))
-        let !t615 = (t614 * (s588 + s588))
-        let !t616 = (t614 * (s590 + s590))
-        let !t617 = (sqrt ((t615 * t615) + (t616 * t616)))
-        let !t618 = (if t617 > 0 then (recip (if (t617 - 1.0e-300) > 0 then t617 else 1.0e-300)) else 0.0)
-        let !t619 = (t618 * t615)
-        let !t620 = (t618 * t616)
-        let !t621 = (((t613 * (t609 + t609)) * t619) + ((t613 * (t610 + t610)) * t620))
-        let !t622 = (if ((abs t612) - 1.0e-10) > 0 then (if (abs t621) > 0 then 1.0 else 0.0) else 0.0)
-        let !t623 = (if t622 > 0 then (t609 + (negate ((t612 / t621) * t619))) else t609)
-        let !t624 = (if t622 > 0 then (t610 + (negate ((t612 / t621) * t620))) else t610)
-        let !t625 = (sqrt ((t623 * t623) + (t624 * t624)))
-        let !t626 = (t625 - 1.0)
-        let !t627 = (recip (2.0 * t625))
-        let !t628 = (((t627 * (t623 + t623)) * t619) + ((t627 * (t624 + t624)) * t620))
-        let !t629 = (if ((abs t626) - 1.0e-10) > 0 then (if (abs t628) > 0 then 1.0 else 0.0) else 0.0)
-        let !t630 = (if t629 > 0 then (t623 + (negate ((t626 / t628) * t619))) else t623)
-        let !t631 = (if t629 > 0 then (t624 + (negate ((t626 / t628) * t620))) else t624)
-        let !t632 = (sqrt ((t630 * t630) + (t631 * t631)))
-        let !t633 = (t632 - 1.0)
-        let !t634 = (recip (2.0 * t632))
-        let !t635 = (((t634 * (t630 + t630)) * t619) + ((t634 * (t631 + t631)) * t620))
-        let !t636 = (if ((abs t633) - 1.0e-10) > 0 then (if (abs t635) > 0 then 1.0 else 0.0) else 0.0)
-        let !s637 = ((t502 * (if t636 > 0 then (t630 + (negate ((t633 / t635) * t619))) else t630)) + (t534 * s588))
-        let !s638 = ((t502 * (s589 + (t501 * s607))) + (t534 * s589))
-        let !s639 = ((t502 * (if t636 > 0 then (t631 + (negate ((t633 / t635) * t620))) else t631)) + (t534 * s590))
-        let !t640 = (sqrt (((s606 * s606) + (s607 * s607)) + (s608 * s608)))
-        let !t641 = (t542 * ((if t636 > 0 then (t630 + (negate ((t633 / t635) * t619))) else t630) + (negate s588)))
-        let !t642 = (t634 * (t630 + t630))
-        let !t643 = (t634 * (t631 + t631))
-        let !t644 = (sqrt ((t642 * t642) + (t643 * t643)))
-        let !t645 = (if t644 > 0 then (recip (if (t644 - 1.0e-300) > 0 then t644 else 1.0e-300)) else 0.0)
-        let !t646 = (t645 * t642)
-        let !t647 = (t645 * t643)
-        let !t648 = (t542 * ((if t636 > 0 then (t631 + (negate ((t633 / t635) * t620))) else t631) + (negate s590)))
-        let !t649 = ((t646 * t641) + (t647 * t648))
-        let !t650 = (t641 + (negate (t649 * t646)))
-        let !t651 = (t542 * ((s589 + (t501 * s607)) + (negate s589)))
-        let !t652 = (t648 + (negate (t649 * t647)))
-        let !t653 = (sqrt (((t650 * t650) + (t651 * t651)) + (t652 * t652)))
-        let !t654 = (if t653 > 0 then (recip (if (t653 - 1.0e-300) > 0 then t653 else 1.0e-300)) else 0.0)
-        let !s655 = ((t502 * (t640 * (t654 * t650))) + (t534 * s606))
-        let !s656 = ((t502 * (t640 * (t654 * t651))) + (t534 * s607))
-        let !s657 = ((t502 * (t640 * (t654 * t652))) + (t534 * s608))
-        let !t658 = (s637 + (t501 * s655))
-        let !t659 = (s639 + (t501 * s657))
-        let !t660 = (sqrt ((t658 * t658) + (t659 * t659)))
-        let !t661 = (t660 - 1.0)
-        let !t662 = (recip (2.0 * t660))
-        let !t663 = (recip (2.0 * (sqrt ((s637 * s637) + (s639 * s639)))))
-        let !t664 = (t663 * (s637 + s637))
-        let !t665 = (t663 * (s639 + s639))
-        let !t666 = (sqrt ((t664 * t664) + (t665 * t665)))
-        let !t667 = (if t666 > 0 then (recip (if (t666 - 1.0e-300) > 0 then t666 else 1.0e-300)) else 0.0)
-        let !t668 = (t667 * t664)
-        let !t669 = (t667 * t665)
-        let !t670 = (((t662 * (t658 + t658)) * t668) + ((t662 * (t659 + t659)) * t669))
-        let !t671 = (if ((abs t661) - 1.0e-10) > 0 then (if (abs t670) > 0 then 1.0 else 0.0) else 0.0)
-        let !t672 = (if t671 > 0 then (t658 + (negate ((t661 / t670) * t668))) else t658)
-        let !t673 = (if t671 > 0 then (t659 + (negate ((t661 / t670) * t669))) else t659)
-        let !t674 = (sqrt ((t672 * t672) + (t673 * t673)))
-        let !t675 = (t674 - 1.0)
-        let !t676 = (recip (2.0 * t674))
-        let !t677 = (((t676 * (t672 + t672)) * t668) + ((t676 * (t673 + t673)) * t669))
-        let !t678 = (if ((abs t675) - 1.0e-10) > 0 then (if (abs t677) > 0 then 1.0 else 0.0) else 0.0)
-        let !t679 = (if t678 > 0 then (t672 + (negate ((t675 / t677) * t668))) else t672)
-        let !t680 = (if t678 > 0 then (t673 + (negate ((t675 / t677) * t669))) else t673)
-        let !t681 = (sqrt ((t679 * t679) + (t680 * t680)))
-        let !t682 = (t681 - 1.0)
-        let !t683 = (recip (2.0 * t681))
-        let !t684 = (((t683 * (t679 + t679)) * t668) + ((t683 * (t680 + t680)) * t669))
-        let !t685 = (if ((abs t682) - 1.0e-10) > 0 then (if (abs t684) > 0 then 1.0 else 0.0) else 0.0)
-        let !s686 = ((t502 * (if t685 > 0 then (t679 + (negate ((t682 / t684) * t668))) else t679)) + (t534 * s637))
-        let !s687 = ((t502 * (s638 + (t501 * s656))) + (t534 * s638))
-        let !s688 = ((t502 * (if t685 > 0 then (t680 + (negate ((t682 / t684) * t669))) else t680)) + (t534 * s639))
-        let !t689 = (sqrt (((s655 * s655) + (s656 * s656)) + (s657 * s657)))
-        let !t690 = (t542 * ((if t685 > 0 then (t679 + (negate ((t682 / t684) * t668))) else t679) + (negate s637)))
-        let !t691 = (t683 * (t679 + t679))
-        let !t692 = (t683 * (t680 + t680))
-        let !t693 = (sqrt ((t691 * t691) + (t692 * t692)))
-        let !t694 = (if t693 > 0 then (recip (if (t693 - 1.0e-300) > 0 then t693 else 1.0e-300)) else 0.0)
-        let !t695 = (t694 * t691)
-        let !t696 = (t694 * t692)
-        let !t697 = (t542 * ((if t685 > 0 then (t680 + (negate ((t682 / t684) * t669))) else t680) + (negate s639)))
-        let !t698 = ((t695 * t690) + (t696 * t697))
-        let !t699 = (t690 + (negate (t698 * t695)))
-        let !t700 = (t542 * ((s638 + (t501 * s656)) + (negate s638)))
-        let !t701 = (t697 + (negate (t698 * t696)))
-        let !t702 = (sqrt (((t699 * t699) + (t700 * t700)) + (t701 * t701)))
-        let !t703 = (if t702 > 0 then (recip (if (t702 - 1.0e-300) > 0 then t702 else 1.0e-300)) else 0.0)
-        let !s704 = ((t502 * (t689 * (t703 * t699))) + (t534 * s655))
-        let !s705 = ((t502 * (t689 * (t703 * t700))) + (t534 * s656))
-        let !s706 = ((t502 * (t689 * (t703 * t701))) + (t534 * s657))
-        t707 <- rdU mouse 4
-        t708 <- rdU mouse 5
-        t709 <- rdU mouse 6
-        t710 <- rdU mouse 7
-        t711 <- rdU mouse 8
-        t712 <- rdU mouse 9
-        let !t713 = (recip t464)
-        let !t714 = (6.283185307179586 * t710)
-        let !s715 = (recip (t466 * ((((2.0 * t713) * t711) * t714) + (t466 * ((t713 * t714) * t714)))))
-        let !s716 = ((t466 * ((t713 * t714) * t714)) * s715)
-        let !s717 = (s686 + (negate t467))
-        let !s718 = (s687 + (negate t468))
-        let !s719 = (s688 + (negate t469))
-        let !s720 = (s686 + (negate t707))
-        let !s721 = (s687 + (negate t708))
-        let !s722 = (s688 + (negate t709))
-        t723 <- rdU mouse 10
-        chkI vel (3 * (truncate t463)) 0 2
-        t724 <- rdU vel (3 * (truncate t463))
-        t725 <- rdU vel ((3 * (truncate t463)) + 1)
-        t726 <- rdU vel ((3 * (truncate t463)) + 2)
-        t727 <- rdU scalars ((6 * (truncate t463)) + 1)
-        let !t728 = (t712 * t466)
-        let !t729 = (negate t728)
-        let !t730 = (((((s718 * t475) - (s719 * t474)) * t470) + (((s719 * t473) - (s717 * t475)) * t471)) + (((s717 * t474) - (s718 * t473)) * t472))
-        let !t731 = (t723 + ((negate ((((((t473 * t724) + (t474 * t725)) + (t475 * t726)) + (t730 * t727)) + (s716 * (((s720 * t473) + (s721 * t474)) + (s722 * t475)))) + (s715 * t723))) / (((t464 * (((t473 * t473) + (t474 * t474)) + (t475 * t475))) + ((t465 * t730) * t730)) + s715)))
-        let !t732 = (if (t731 - t728) > 0 then t728 else t731)
-        let !t733 = (if (t729 - t732) > 0 then t729 else t732)
-        let !s734 = (if (1.0 - (abs (t733 - t733))) > 0 then t733 else 0.0)
-        wrU mouse 10 s734
-        t735 <- rdU scalars ((6 * (truncate t463)) + 2)
-        t736 <- rdU scalars ((6 * (truncate t463)) + 3)
-        t737 <- rdU vel (3 * (truncate t463))
-        t738 <- rdU vel ((3 * (truncate t463)) + 1)
-        t739 <- rdU vel ((3 * (truncate t463)) + 2)
-        t740 <- rdU scalars ((6 * (truncate t463)) + 1)
-        wrU vel (3 * (truncate t463)) (t737 + ((t735 * (s734 - t723)) * t473))
-        wrU vel ((3 * (truncate t463)) + 1) (t738 + ((t735 * (s734 - t723)) * t474))
-        wrU vel ((3 * (truncate t463)) + 2) (t739 + ((t735 * (s734 - t723)) * t475))
-        wrU scalars ((6 * (truncate t463)) + 1) (t740 + ((t736 * (s734 - t723)) * t730))
-        t741 <- rdU mouse 11
-        t742 <- rdU vel (3 * (truncate t463))
-        t743 <- rdU vel ((3 * (truncate t463)) + 1)
-        t744 <- rdU vel ((3 * (truncate t463)) + 2)
-        t745 <- rdU scalars ((6 * (truncate t463)) + 1)
-        let !t746 = (((((s718 * s478) - (s719 * s477)) * t470) + (((s719 * s476) - (s717 * s478)) * t471)) + (((s717 * s477) - (s718 * s476)) * t472))
-        let !t747 = (t741 + ((negate ((((((s476 * t742) + (s477 * t743)) + (s478 * t744)) + (t746 * t745)) + (s716 * (((s720 * s476) + (s721 * s477)) + (s722 * s478)))) + (s715 * t741))) / (((t464 * (((s476 * s476) + (s477 * s477)) + (s478 * s478))) + ((t465 * t746) * t746)) + s715)))
-        let !t748 = (if (t747 - t728) > 0 then t728 else t747)
-        let !t749 = (if (t729 - t748) > 0 then t729 else t748)
-        let !s750 = (if (1.0 - (abs (t749 - t749))) > 0 then t749 else 0.0)
-        wrU mouse 11 s750
-        t751 <- rdU scalars ((6 * (truncate t463)) + 2)
-        t752 <- rdU scalars ((6 * (truncate t463)) + 3)
-        t753 <- rdU vel (3 * (truncate t463))
-        t754 <- rdU vel ((3 * (truncate t463)) + 1)
-        t755 <- rdU vel ((3 * (truncate t463)) + 2)
-        t756 <- rdU scalars ((6 * (truncate t463)) + 1)
-        wrU vel (3 * (truncate t463)) (t753 + ((t751 * (s750 - t741)) * s476))
-        wrU vel ((3 * (truncate t463)) + 1) (t754 + ((t751 * (s750 - t741)) * s477))
-        wrU vel ((3 * (truncate t463)) + 2) (t755 + ((t751 * (s750 - t741)) * s478))
-        wrU scalars ((6 * (truncate t463)) + 1) (t756 + ((t752 * (s750 - t741)) * t746))
+        t494 <- rdU mouse 2
+        t495 <- rdU mouse 3
+        let !t496 = (t494 / 4.0)
+        let !t497 = (if (abs t496) > 0 then 1.0 else 0.0)
+        let !t498 = (t490 + t495)
+        let !t499 = (cos t498)
+        let !t500 = (sin t498)
+        let !t501 = (t478 + (t496 * ((t499 * t484) + (t500 * s487))))
+        let !t502 = (t480 + (t496 * ((t499 * t486) + (t500 * s489))))
+        let !t503 = (sqrt ((t501 * t501) + (t502 * t502)))
+        let !t504 = (t503 - 1.0)
+        let !t505 = (recip (2.0 * t503))
+        let !t506 = (recip (2.0 * (sqrt ((t478 * t478) + (t480 * t480)))))
+        let !t507 = (t506 * (t478 + t478))
+        let !t508 = (t506 * (t480 + t480))
+        let !t509 = (sqrt ((t507 * t507) + (t508 * t508)))
+        let !t510 = (if t509 > 0 then (recip (if (t509 - 1.0e-300) > 0 then t509 else 1.0e-300)) else 0.0)
+        let !t511 = (t510 * t507)
+        let !t512 = (t510 * t508)
+        let !t513 = (((t505 * (t501 + t501)) * t511) + ((t505 * (t502 + t502)) * t512))
+        let !t514 = (if ((abs t504) - 1.0e-10) > 0 then (if (abs t513) > 0 then 1.0 else 0.0) else 0.0)
+        let !t515 = (if t514 > 0 then (t501 + (negate ((t504 / t513) * t511))) else t501)
+        let !t516 = (if t514 > 0 then (t502 + (negate ((t504 / t513) * t512))) else t502)
+        let !t517 = (sqrt ((t515 * t515) + (t516 * t516)))
+        let !t518 = (t517 - 1.0)
+        let !t519 = (recip (2.0 * t517))
+        let !t520 = (((t519 * (t515 + t515)) * t511) + ((t519 * (t516 + t516)) * t512))
+        let !t521 = (if ((abs t518) - 1.0e-10) > 0 then (if (abs t520) > 0 then 1.0 else 0.0) else 0.0)
+        let !t522 = (if t521 > 0 then (t515 + (negate ((t518 / t520) * t511))) else t515)
+        let !t523 = (if t521 > 0 then (t516 + (negate ((t518 / t520) * t512))) else t516)
+        let !t524 = (sqrt ((t522 * t522) + (t523 * t523)))
+        let !t525 = (t524 - 1.0)
+        let !t526 = (recip (2.0 * t524))
+        let !t527 = (((t526 * (t522 + t522)) * t511) + ((t526 * (t523 + t523)) * t512))
+        let !t528 = (if ((abs t525) - 1.0e-10) > 0 then (if (abs t527) > 0 then 1.0 else 0.0) else 0.0)
+        let !t529 = (1.0 - t497)
+        let !s530 = ((t497 * (if t528 > 0 then (t522 + (negate ((t525 / t527) * t511))) else t522)) + (t529 * t478))
+        let !s531 = ((t497 * (t479 + (t496 * ((t499 * t485) + (t500 * s488))))) + (t529 * t479))
+        let !s532 = ((t497 * (if t528 > 0 then (t523 + (negate ((t525 / t527) * t512))) else t523)) + (t529 * t480))
+        let !t533 = ((t499 * t484) + (t500 * s487))
+        let !t534 = ((t499 * t485) + (t500 * s488))
+        let !t535 = ((t499 * t486) + (t500 * s489))
+        let !t536 = (sqrt (((t533 * t533) + (t534 * t534)) + (t535 * t535)))
+        let !t537 = (if (abs t496) > 0 then (recip t496) else 0.0)
+        let !t538 = (t537 * ((if t528 > 0 then (t522 + (negate ((t525 / t527) * t511))) else t522) + (negate t478)))
+        let !t539 = (t526 * (t522 + t522))
+        let !t540 = (t526 * (t523 + t523))
+        let !t541 = (sqrt ((t539 * t539) + (t540 * t540)))
+        let !t542 = (if t541 > 0 then (recip (if (t541 - 1.0e-300) > 0 then t541 else 1.0e-300)) else 0.0)
+        let !t543 = (t542 * t539)
+        let !t544 = (t542 * t540)
+        let !t545 = (t537 * ((if t528 > 0 then (t523 + (negate ((t525 / t527) * t512))) else t523) + (negate t480)))
+        let !t546 = ((t543 * t538) + (t544 * t545))
+        let !t547 = (t538 + (negate (t546 * t543)))
+        let !t548 = (t537 * ((t479 + (t496 * t534)) + (negate t479)))
+        let !t549 = (t545 + (negate (t546 * t544)))
+        let !t550 = (sqrt (((t547 * t547) + (t548 * t548)) + (t549 * t549)))
+        let !t551 = (if t550 > 0 then (recip (if (t550 - 1.0e-300) > 0 then t550 else 1.0e-300)) else 0.0)
+        let !s552 = ((t497 * (t536 * (t551 * t547))) + (t529 * t533))
+        let !s553 = ((t497 * (t536 * (t551 * t548))) + (t529 * t534))
+        let !s554 = ((t497 * (t536 * (t551 * t549))) + (t529 * t535))
+        let !t555 = (s530 + (t496 * s552))
+        let !t556 = (s532 + (t496 * s554))
+        let !t557 = (sqrt ((t555 * t555) + (t556 * t556)))
+        let !t558 = (t557 - 1.0)
+        let !t559 = (recip (2.0 * t557))
+        let !t560 = (recip (2.0 * (sqrt ((s530 * s530) + (s532 * s532)))))
+        let !t561 = (t560 * (s530 + s530))
+        let !t562 = (t560 * (s532 + s532))
+        let !t563 = (sqrt ((t561 * t561) + (t562 * t562)))
+        let !t564 = (if t563 > 0 then (recip (if (t563 - 1.0e-300) > 0 then t563 else 1.0e-300)) else 0.0)
+        let !t565 = (t564 * t561)
+        let !t566 = (t564 * t562)
+        let !t567 = (((t559 * (t555 + t555)) * t565) + ((t559 * (t556 + t556)) * t566))
+        let !t568 = (if ((abs t558) - 1.0e-10) > 0 then (if (abs t567) > 0 then 1.0 else 0.0) else 0.0)
+        let !t569 = (if t568 > 0 then (t555 + (negate ((t558 / t567) * t565))) else t555)
+        let !t570 = (if t568 > 0 then (t556 + (negate ((t558 / t567) * t566))) else t556)
+        let !t571 = (sqrt ((t569 * t569) + (t570 * t570)))
+        let !t572 = (t571 - 1.0)
+        let !t573 = (recip (2.0 * t571))
+        let !t574 = (((t573 * (t569 + t569)) * t565) + ((t573 * (t570 + t570)) * t566))
+        let !t575 = (if ((abs t572) - 1.0e-10) > 0 then (if (abs t574) > 0 then 1.0 else 0.0) else 0.0)
+        let !t576 = (if t575 > 0 then (t569 + (negate ((t572 / t574) * t565))) else t569)
+        let !t577 = (if t575 > 0 then (t570 + (negate ((t572 / t574) * t566))) else t570)
+        let !t578 = (sqrt ((t576 * t576) + (t577 * t577)))
+        let !t579 = (t578 - 1.0)
+        let !t580 = (recip (2.0 * t578))
+        let !t581 = (((t580 * (t576 + t576)) * t565) + ((t580 * (t577 + t577)) * t566))
+        let !t582 = (if ((abs t579) - 1.0e-10) > 0 then (if (abs t581) > 0 then 1.0 else 0.0) else 0.0)
+        let !s583 = ((t497 * (if t582 > 0 then (t576 + (negate ((t579 / t581) * t565))) else t576)) + (t529 * s530))
+        let !s584 = ((t497 * (s531 + (t496 * s553))) + (t529 * s531))
+        let !s585 = ((t497 * (if t582 > 0 then (t577 + (negate ((t579 / t581) * t566))) else t577)) + (t529 * s532))
+        let !t586 = (sqrt (((s552 * s552) + (s553 * s553)) + (s554 * s554)))
+        let !t587 = (t537 * ((if t582 > 0 then (t576 + (negate ((t579 / t581) * t565))) else t576) + (negate s530)))
+        let !t588 = (t580 * (t576 + t576))
+        let !t589 = (t580 * (t577 + t577))
+        let !t590 = (sqrt ((t588 * t588) + (t589 * t589)))
+        let !t591 = (if t590 > 0 then (recip (if (t590 - 1.0e-300) > 0 then t590 else 1.0e-300)) else 0.0)
+        let !t592 = (t591 * t588)
+        let !t593 = (t591 * t589)
+        let !t594 = (t537 * ((if t582 > 0 then (t577 + (negate ((t579 / t581) * t566))) else t577) + (negate s532)))
+        let !t595 = ((t592 * t587) + (t593 * t594))
+        let !t596 = (t587 + (negate (t595 * t592)))
+        let !t597 = (t537 * ((s531 + (t496 * s553)) + (negate s531)))
+        let !t598 = (t594 + (negate (t595 * t593)))
+        let !t599 = (sqrt (((t596 * t596) + (t597 * t597)) + (t598 * t598)))
+        let !t600 = (if t599 > 0 then (recip (if (t599 - 1.0e-300) > 0 then t599 else 1.0e-300)) else 0.0)
+        let !s601 = ((t497 * (t586 * (t600 * t596))) + (t529 * s552))
+        let !s602 = ((t497 * (t586 * (t600 * t597))) + (t529 * s553))
+        let !s603 = ((t497 * (t586 * (t600 * t598))) + (t529 * s554))
+        let !t604 = (s583 + (t496 * s601))
+        let !t605 = (s585 + (t496 * s603))
+        let !t606 = (sqrt ((t604 * t604) + (t605 * t605)))
+        let !t607 = (t606 - 1.0)
+        let !t608 = (recip (2.0 * t606))
+        let !t609 = (recip (2.0 * (sqrt ((s583 * s583) + (s585 * s585)))))
+        let !t610 = (t609 * (s583 + s583))
+        let !t611 = (t609 * (s585 + s585))
+        let !t612 = (sqrt ((t610 * t610) + (t611 * t611)))
+        let !t613 = (if t612 > 0 then (recip (if (t612 - 1.0e-300) > 0 then t612 else 1.0e-300)) else 0.0)
+        let !t614 = (t613 * t610)
+        let !t615 = (t613 * t611)
+        let !t616 = (((t608 * (t604 + t604)) * t614) + ((t608 * (t605 + t605)) * t615))
+        let !t617 = (if ((abs t607) - 1.0e-10) > 0 then (if (abs t616) > 0 then 1.0 else 0.0) else 0.0)
+        let !t618 = (if t617 > 0 then (t604 + (negate ((t607 / t616) * t614))) else t604)
+        let !t619 = (if t617 > 0 then (t605 + (negate ((t607 / t616) * t615))) else t605)
+        let !t620 = (sqrt ((t618 * t618) + (t619 * t619)))
+        let !t621 = (t620 - 1.0)
+        let !t622 = (recip (2.0 * t620))
+        let !t623 = (((t622 * (t618 + t618)) * t614) + ((t622 * (t619 + t619)) * t615))
+        let !t624 = (if ((abs t621) - 1.0e-10) > 0 then (if (abs t623) > 0 then 1.0 else 0.0) else 0.0)
+        let !t625 = (if t624 > 0 then (t618 + (negate ((t621 / t623) * t614))) else t618)
+        let !t626 = (if t624 > 0 then (t619 + (negate ((t621 / t623) * t615))) else t619)
+        let !t627 = (sqrt ((t625 * t625) + (t626 * t626)))
+        let !t628 = (t627 - 1.0)
+        let !t629 = (recip (2.0 * t627))
+        let !t630 = (((t629 * (t625 + t625)) * t614) + ((t629 * (t626 + t626)) * t615))
+        let !t631 = (if ((abs t628) - 1.0e-10) > 0 then (if (abs t630) > 0 then 1.0 else 0.0) else 0.0)
+        let !s632 = ((t497 * (if t631 > 0 then (t625 + (negate ((t628 / t630) * t614))) else t625)) + (t529 * s583))
+        let !s633 = ((t497 * (s584 + (t496 * s602))) + (t529 * s584))
+        let !s634 = ((t497 * (if t631 > 0 then (t626 + (negate ((t628 / t630) * t615))) else t626)) + (t529 * s585))
+        let !t635 = (sqrt (((s601 * s601) + (s602 * s602)) + (s603 * s603)))
+        let !t636 = (t537 * ((if t631 > 0 then (t625 + (negate ((t628 / t630) * t614))) else t625) + (negate s583)))
+        let !t637 = (t629 * (t625 + t625))
+        let !t638 = (t629 * (t626 + t626))
+        let !t639 = (sqrt ((t637 * t637) + (t638 * t638)))
+        let !t640 = (if t639 > 0 then (recip (if (t639 - 1.0e-300) > 0 then t639 else 1.0e-300)) else 0.0)
+        let !t641 = (t640 * t637)
+        let !t642 = (t640 * t638)
+        let !t643 = (t537 * ((if t631 > 0 then (t626 + (negate ((t628 / t630) * t615))) else t626) + (negate s585)))
+        let !t644 = ((t641 * t636) + (t642 * t643))
+        let !t645 = (t636 + (negate (t644 * t641)))
+        let !t646 = (t537 * ((s584 + (t496 * s602)) + (negate s584)))
+        let !t647 = (t643 + (negate (t644 * t642)))
+        let !t648 = (sqrt (((t645 * t645) + (t646 * t646)) + (t647 * t647)))
+        let !t649 = (if t648 > 0 then (recip (if (t648 - 1.0e-300) > 0 then t648 else 1.0e-300)) else 0.0)
+        let !s650 = ((t497 * (t635 * (t649 * t645))) + (t529 * s601))
+        let !s651 = ((t497 * (t635 * (t649 * t646))) + (t529 * s602))
+        let !s652 = ((t497 * (t635 * (t649 * t647))) + (t529 * s603))
+        let !t653 = (s632 + (t496 * s650))
+        let !t654 = (s634 + (t496 * s652))
+        let !t655 = (sqrt ((t653 * t653) + (t654 * t654)))
+        let !t656 = (t655 - 1.0)
+        let !t657 = (recip (2.0 * t655))
+        let !t658 = (recip (2.0 * (sqrt ((s632 * s632) + (s634 * s634)))))
+        let !t659 = (t658 * (s632 + s632))
+        let !t660 = (t658 * (s634 + s634))
+        let !t661 = (sqrt ((t659 * t659) + (t660 * t660)))
+        let !t662 = (if t661 > 0 then (recip (if (t661 - 1.0e-300) > 0 then t661 else 1.0e-300)) else 0.0)
+        let !t663 = (t662 * t659)
+        let !t664 = (t662 * t660)
+        let !t665 = (((t657 * (t653 + t653)) * t663) + ((t657 * (t654 + t654)) * t664))
+        let !t666 = (if ((abs t656) - 1.0e-10) > 0 then (if (abs t665) > 0 then 1.0 else 0.0) else 0.0)
+        let !t667 = (if t666 > 0 then (t653 + (negate ((t656 / t665) * t663))) else t653)
+        let !t668 = (if t666 > 0 then (t654 + (negate ((t656 / t665) * t664))) else t654)
+        let !t669 = (sqrt ((t667 * t667) + (t668 * t668)))
+        let !t670 = (t669 - 1.0)
+        let !t671 = (recip (2.0 * t669))
+        let !t672 = (((t671 * (t667 + t667)) * t663) + ((t671 * (t668 + t668)) * t664))
+        let !t673 = (if ((abs t670) - 1.0e-10) > 0 then (if (abs t672) > 0 then 1.0 else 0.0) else 0.0)
+        let !t674 = (if t673 > 0 then (t667 + (negate ((t670 / t672) * t663))) else t667)
+        let !t675 = (if t673 > 0 then (t668 + (negate ((t670 / t672) * t664))) else t668)
+        let !t676 = (sqrt ((t674 * t674) + (t675 * t675)))
+        let !t677 = (t676 - 1.0)
+        let !t678 = (recip (2.0 * t676))
+        let !t679 = (((t678 * (t674 + t674)) * t663) + ((t678 * (t675 + t675)) * t664))
+        let !t680 = (if ((abs t677) - 1.0e-10) > 0 then (if (abs t679) > 0 then 1.0 else 0.0) else 0.0)
+        let !s681 = ((t497 * (if t680 > 0 then (t674 + (negate ((t677 / t679) * t663))) else t674)) + (t529 * s632))
+        let !s682 = ((t497 * (s633 + (t496 * s651))) + (t529 * s633))
+        let !s683 = ((t497 * (if t680 > 0 then (t675 + (negate ((t677 / t679) * t664))) else t675)) + (t529 * s634))
+        let !t684 = (sqrt (((s650 * s650) + (s651 * s651)) + (s652 * s652)))
+        let !t685 = (t537 * ((if t680 > 0 then (t674 + (negate ((t677 / t679) * t663))) else t674) + (negate s632)))
+        let !t686 = (t678 * (t674 + t674))
+        let !t687 = (t678 * (t675 + t675))
+        let !t688 = (sqrt ((t686 * t686) + (t687 * t687)))
+        let !t689 = (if t688 > 0 then (recip (if (t688 - 1.0e-300) > 0 then t688 else 1.0e-300)) else 0.0)
+        let !t690 = (t689 * t686)
+        let !t691 = (t689 * t687)
+        let !t692 = (t537 * ((if t680 > 0 then (t675 + (negate ((t677 / t679) * t664))) else t675) + (negate s634)))
+        let !t693 = ((t690 * t685) + (t691 * t692))
+        let !t694 = (t685 + (negate (t693 * t690)))
+        let !t695 = (t537 * ((s633 + (t496 * s651)) + (negate s633)))
+        let !t696 = (t692 + (negate (t693 * t691)))
+        let !t697 = (sqrt (((t694 * t694) + (t695 * t695)) + (t696 * t696)))
+        let !t698 = (if t697 > 0 then (recip (if (t697 - 1.0e-300) > 0 then t697 else 1.0e-300)) else 0.0)
+        let !s699 = ((t497 * (t684 * (t698 * t694))) + (t529 * s650))
+        let !s700 = ((t497 * (t684 * (t698 * t695))) + (t529 * s651))
+        let !s701 = ((t497 * (t684 * (t698 * t696))) + (t529 * s652))
+        t702 <- rdU mouse 4
+        t703 <- rdU mouse 5
+        t704 <- rdU mouse 6
+        t705 <- rdU mouse 7
+        t706 <- rdU mouse 8
+        t707 <- rdU mouse 9
+        let !t708 = (recip t459)
+        let !t709 = (6.283185307179586 * t705)
+        let !s710 = (recip (t461 * ((((2.0 * t708) * t706) * t709) + (t461 * ((t708 * t709) * t709)))))
+        let !s711 = ((t461 * ((t708 * t709) * t709)) * s710)
+        let !s712 = (s681 + (negate t462))
+        let !s713 = (s682 + (negate t463))
+        let !s714 = (s683 + (negate t464))
+        let !s715 = (s681 + (negate t702))
+        let !s716 = (s682 + (negate t703))
+        let !s717 = (s683 + (negate t704))
+        t718 <- rdU mouse 10
+        chkI vel (3 * (truncate t458)) 0 2
+        t719 <- rdU vel (3 * (truncate t458))
+        t720 <- rdU vel ((3 * (truncate t458)) + 1)
+        t721 <- rdU vel ((3 * (truncate t458)) + 2)
+        t722 <- rdU scalars ((6 * (truncate t458)) + 1)
+        let !t723 = (t707 * t461)
+        let !t724 = (negate t723)
+        let !t725 = (((((s713 * t470) - (s714 * t469)) * t465) + (((s714 * t468) - (s712 * t470)) * t466)) + (((s712 * t469) - (s713 * t468)) * t467))
+        let !t726 = (t718 + ((negate ((((((t468 * t719) + (t469 * t720)) + (t470 * t721)) + (t725 * t722)) + (s711 * (((s715 * t468) + (s716 * t469)) + (s717 * t470)))) + (s710 * t718))) / (((t459 * (((t468 * t468) + (t469 * t469)) + (t470 * t470))) + ((t460 * t725) * t725)) + s710)))
+        let !t727 = (if (t726 - t723) > 0 then t723 else t726)
+        let !t728 = (if (t724 - t727) > 0 then t724 else t727)
+        let !s729 = (if (1.0 - (abs (t728 - t728))) > 0 then t728 else 0.0)
+        wrU mouse 10 s729
+        t730 <- rdU scalars ((6 * (truncate t458)) + 2)
+        t731 <- rdU scalars ((6 * (truncate t458)) + 3)
+        t732 <- rdU vel (3 * (truncate t458))
+        t733 <- rdU vel ((3 * (truncate t458)) + 1)
+        t734 <- rdU vel ((3 * (truncate t458)) + 2)
+        t735 <- rdU scalars ((6 * (truncate t458)) + 1)
+        wrU vel (3 * (truncate t458)) (t732 + ((t730 * (s729 - t718)) * t468))
+        wrU vel ((3 * (truncate t458)) + 1) (t733 + ((t730 * (s729 - t718)) * t469))
+        wrU vel ((3 * (truncate t458)) + 2) (t734 + ((t730 * (s729 - t718)) * t470))
+        wrU scalars ((6 * (truncate t458)) + 1) (t735 + ((t731 * (s729 - t718)) * t725))
+        t736 <- rdU mouse 11
+        t737 <- rdU vel (3 * (truncate t458))
+        t738 <- rdU vel ((3 * (truncate t458)) + 1)
+        t739 <- rdU vel ((3 * (truncate t458)) + 2)
+        t740 <- rdU scalars ((6 * (truncate t458)) + 1)
+        let !t741 = (((((s713 * s473) - (s714 * s472)) * t465) + (((s714 * s471) - (s712 * s473)) * t466)) + (((s712 * s472) - (s713 * s471)) * t467))
+        let !t742 = (t736 + ((negate ((((((s471 * t737) + (s472 * t738)) + (s473 * t739)) + (t741 * t740)) + (s711 * (((s715 * s471) + (s716 * s472)) + (s717 * s473)))) + (s710 * t736))) / (((t459 * (((s471 * s471) + (s472 * s472)) + (s473 * s473))) + ((t460 * t741) * t741)) + s710)))
+        let !t743 = (if (t742 - t723) > 0 then t723 else t742)
+        let !t744 = (if (t724 - t743) > 0 then t724 else t743)
+        let !s745 = (if (1.0 - (abs (t744 - t744))) > 0 then t744 else 0.0)
+        wrU mouse 11 s745
+        t746 <- rdU scalars ((6 * (truncate t458)) + 2)
+        t747 <- rdU scalars ((6 * (truncate t458)) + 3)
+        t748 <- rdU vel (3 * (truncate t458))
+        t749 <- rdU vel ((3 * (truncate t458)) + 1)
+        t750 <- rdU vel ((3 * (truncate t458)) + 2)
+        t751 <- rdU scalars ((6 * (truncate t458)) + 1)
+        wrU vel (3 * (truncate t458)) (t748 + ((t746 * (s745 - t736)) * s471))
+        wrU vel ((3 * (truncate t458)) + 1) (t749 + ((t746 * (s745 - t736)) * s472))
+        wrU vel ((3 * (truncate t458)) + 2) (t750 + ((t746 * (s745 - t736)) * s473))
+        wrU scalars ((6 * (truncate t458)) + 1) (t751 + ((t747 * (s745 - t736)) * t741))
         pure ()
       else do
         pure ()
@@ -1715,38 +1717,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t757 <- rdU meta 0
-  loopI 0.0 t757 $ \i758 -> do
-    let !d758 = fromIntegral i758 :: Double
-    chkI bodyPrev (2 * i758) 1 1
-    wrU bodyPrev ((2 * i758) + 1) 0.0
+  t752 <- rdU meta 0
+  loopI 0.0 t752 $ \i753 -> do
+    let !d753 = fromIntegral i753 :: Double
+    chkI bodyPrev (2 * i753) 1 1
+    wrU bodyPrev ((2 * i753) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i759 -> do
-    let !d759 = fromIntegral i759 :: Double
-    chkI contacts (30 * i759) 2 25
-    t760 <- rdU contacts ((30 * i759) + 2)
-    chkI prev (4 * i759) 0 3
-    wrU prev (4 * i759) t760
-    t761 <- rdU contacts ((30 * i759) + 3)
-    wrU prev ((4 * i759) + 1) t761
-    t762 <- rdU contacts ((30 * i759) + 24)
-    wrU prev ((4 * i759) + 2) t762
-    t763 <- rdU contacts ((30 * i759) + 25)
-    wrU prev ((4 * i759) + 3) t763
-    chkI bodyPrev (2 * (truncate t760)) 1 1
-    t764 <- rdU bodyPrev ((2 * (truncate t760)) + 1)
-    if (0.5 - t764) > 0 then do
-      chkI bodyPrev (2 * (truncate t760)) 0 0
-      wrU bodyPrev (2 * (truncate t760)) d759
+  loopI 0.0 t9 $ \i754 -> do
+    let !d754 = fromIntegral i754 :: Double
+    chkI contacts (30 * i754) 2 25
+    t755 <- rdU contacts ((30 * i754) + 2)
+    chkI prev (4 * i754) 0 3
+    wrU prev (4 * i754) t755
+    t756 <- rdU contacts ((30 * i754) + 3)
+    wrU prev ((4 * i754) + 1) t756
+    t757 <- rdU contacts ((30 * i754) + 24)
+    wrU prev ((4 * i754) + 2) t757
+    t758 <- rdU contacts ((30 * i754) + 25)
+    wrU prev ((4 * i754) + 3) t758
+    chkI bodyPrev (2 * (truncate t755)) 1 1
+    t759 <- rdU bodyPrev ((2 * (truncate t755)) + 1)
+    if (0.5 - t759) > 0 then do
+      chkI bodyPrev (2 * (truncate t755)) 0 0
+      wrU bodyPrev (2 * (truncate t755)) d754
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t760)) + 1) (t764 + 1.0)
+    wrU bodyPrev ((2 * (truncate t755)) + 1) (t759 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1904,8 +1906,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -1935,532 +1938,532 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 3 11
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (sqrt ((s32 * s32) + (s34 * s34)))
-        let !t36 = (t35 - 1.0)
-        let !t37 = (recip (2.0 * t35))
-        let !t38 = (((t37 * (s32 + s32)) * t8) + ((t37 * (s34 + s34)) * t10))
-        let !t39 = (if ((abs t36) - 1.0e-10) > 0 then (if (abs t38) > 0 then 1.0 else 0.0) else 0.0)
-        let !s40 = (if t39 > 0 then (s32 + (negate ((t36 / t38) * t8))) else s32)
-        let !s41 = (if t39 > 0 then (s33 + (negate ((t36 / t38) * t9))) else s33)
-        let !s42 = (if t39 > 0 then (s34 + (negate ((t36 / t38) * t10))) else s34)
-        wrU walk ((12 * i26) + 9) s40
-        wrU walk ((12 * i26) + 10) s41
-        wrU walk ((12 * i26) + 11) s42
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 3 11
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (sqrt ((s30 * s30) + (s32 * s32)))
+        let !t34 = (t33 - 1.0)
+        let !t35 = (recip (2.0 * t33))
+        let !t36 = (((t35 * (s30 + s30)) * t8) + ((t35 * (s32 + s32)) * t10))
+        let !t37 = (if ((abs t34) - 1.0e-10) > 0 then (if (abs t36) > 0 then 1.0 else 0.0) else 0.0)
+        let !s38 = (if t37 > 0 then (s30 + (negate ((t34 / t36) * t8))) else s30)
+        let !s39 = (if t37 > 0 then (s31 + (negate ((t34 / t36) * t9))) else s31)
+        let !s40 = (if t37 > 0 then (s32 + (negate ((t34 / t36) * t10))) else s32)
+        wrU walk ((12 * i24) + 9) s38
+        wrU walk ((12 * i24) + 10) s39
+        wrU walk ((12 * i24) + 11) s40
         pure ()
-      loopI 0.0 24.0 $ \i43 -> do
-        let !d43 = fromIntegral i43 :: Double
-        chkI walk (12 * i43) 9 11
-        t44 <- rdU walk ((12 * i43) + 9)
-        t45 <- rdU walk ((12 * i43) + 10)
-        t46 <- rdU walk ((12 * i43) + 11)
-        let !t47 = (sqrt ((t44 * t44) + (t46 * t46)))
-        let !t48 = (t47 - 1.0)
-        let !t49 = (recip (2.0 * t47))
-        let !t50 = (((t49 * (t44 + t44)) * t8) + ((t49 * (t46 + t46)) * t10))
-        let !t51 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t50) > 0 then 1.0 else 0.0) else 0.0)
-        let !s52 = (if t51 > 0 then (t44 + (negate ((t48 / t50) * t8))) else t44)
-        let !s53 = (if t51 > 0 then (t45 + (negate ((t48 / t50) * t9))) else t45)
-        let !s54 = (if t51 > 0 then (t46 + (negate ((t48 / t50) * t10))) else t46)
-        wrU walk ((12 * i43) + 9) s52
-        wrU walk ((12 * i43) + 10) s53
-        wrU walk ((12 * i43) + 11) s54
+      loopI 0.0 24.0 $ \i41 -> do
+        let !d41 = fromIntegral i41 :: Double
+        chkI walk (12 * i41) 9 11
+        t42 <- rdU walk ((12 * i41) + 9)
+        t43 <- rdU walk ((12 * i41) + 10)
+        t44 <- rdU walk ((12 * i41) + 11)
+        let !t45 = (sqrt ((t42 * t42) + (t44 * t44)))
+        let !t46 = (t45 - 1.0)
+        let !t47 = (recip (2.0 * t45))
+        let !t48 = (((t47 * (t42 + t42)) * t8) + ((t47 * (t44 + t44)) * t10))
+        let !t49 = (if ((abs t46) - 1.0e-10) > 0 then (if (abs t48) > 0 then 1.0 else 0.0) else 0.0)
+        let !s50 = (if t49 > 0 then (t42 + (negate ((t46 / t48) * t8))) else t42)
+        let !s51 = (if t49 > 0 then (t43 + (negate ((t46 / t48) * t9))) else t43)
+        let !s52 = (if t49 > 0 then (t44 + (negate ((t46 / t48) * t10))) else t44)
+        wrU walk ((12 * i41) + 9) s50
+        wrU walk ((12 * i41) + 10) s51
+        wrU walk ((12 * i41) + 11) s52
         pure ()
-      loopI 0.0 24.0 $ \i55 -> do
-        let !d55 = fromIntegral i55 :: Double
-        chkI walk (12 * i55) 0 11
-        t56 <- rdU walk ((12 * i55) + 9)
-        t57 <- rdU walk ((12 * i55) + 10)
-        t58 <- rdU walk ((12 * i55) + 11)
-        chkI radii ((24 * i1) + i55) 0 0
-        t59 <- rdU radii ((24 * i1) + i55)
-        let !s60 = (t59 / 4.0)
-        t61 <- rdU walk ((12 * i55) + 3)
-        t62 <- rdU walk ((12 * i55) + 4)
-        t63 <- rdU walk ((12 * i55) + 5)
-        let !t64 = (if (abs s60) > 0 then 1.0 else 0.0)
-        let !t65 = (sqrt ((t56 * t56) + (t58 * t58)))
-        let !t66 = (t65 - 1.0)
-        let !t67 = (recip (2.0 * t65))
-        let !t68 = (((t67 * (t56 + t56)) * t8) + ((t67 * (t58 + t58)) * t10))
-        let !t69 = (if ((abs t66) - 1.0e-10) > 0 then (if (abs t68) > 0 then 1.0 else 0.0) else 0.0)
-        let !t70 = (1.0 - t64)
-        let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
-        let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
-        let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
-        chkI verts ((291 * i1) + (12 * i55)) 3 5
-        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
-        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
-        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
-        wrU walk (12 * i55) s71
-        wrU walk ((12 * i55) + 1) s72
-        wrU walk ((12 * i55) + 2) s73
-        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
-        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
-        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
-        let !t77 = (t67 * (t56 + t56))
-        let !t78 = (t67 * (t58 + t58))
-        let !t79 = (sqrt ((t77 * t77) + (t78 * t78)))
-        let !t80 = (if t79 > 0 then (recip (if (t79 - 1.0e-300) > 0 then t79 else 1.0e-300)) else 0.0)
-        let !t81 = (t80 * t77)
-        let !t82 = (t80 * t78)
-        let !t83 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
-        let !t84 = ((t81 * t76) + (t82 * t83))
-        let !t85 = (t76 + (negate (t84 * t81)))
-        let !t86 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
-        let !t87 = (t83 + (negate (t84 * t82)))
-        let !t88 = (sqrt (((t85 * t85) + (t86 * t86)) + (t87 * t87)))
-        let !t89 = (if t88 > 0 then (recip (if (t88 - 1.0e-300) > 0 then t88 else 1.0e-300)) else 0.0)
-        let !s90 = ((t64 * (t74 * (t89 * t85))) + (t70 * t61))
-        let !s91 = ((t64 * (t74 * (t89 * t86))) + (t70 * t62))
-        let !s92 = ((t64 * (t74 * (t89 * t87))) + (t70 * t63))
-        wrU walk ((12 * i55) + 3) s90
-        wrU walk ((12 * i55) + 4) s91
-        wrU walk ((12 * i55) + 5) s92
-        let !s93 = ((t64 * t81) + (t70 * t8))
-        let !s94 = (t70 * t9)
-        let !s95 = ((t64 * t82) + (t70 * t10))
-        wrU walk ((12 * i55) + 6) s93
-        wrU walk ((12 * i55) + 7) s94
-        wrU walk ((12 * i55) + 8) s95
+      loopI 0.0 24.0 $ \i53 -> do
+        let !d53 = fromIntegral i53 :: Double
+        chkI walk (12 * i53) 0 11
+        t54 <- rdU walk ((12 * i53) + 9)
+        t55 <- rdU walk ((12 * i53) + 10)
+        t56 <- rdU walk ((12 * i53) + 11)
+        chkI radii ((24 * i1) + i53) 0 0
+        t57 <- rdU radii ((24 * i1) + i53)
+        let !s58 = (t57 / 4.0)
+        t59 <- rdU walk ((12 * i53) + 3)
+        t60 <- rdU walk ((12 * i53) + 4)
+        t61 <- rdU walk ((12 * i53) + 5)
+        let !t62 = (if (abs s58) > 0 then 1.0 else 0.0)
+        let !t63 = (sqrt ((t54 * t54) + (t56 * t56)))
+        let !t64 = (t63 - 1.0)
+        let !t65 = (recip (2.0 * t63))
+        let !t66 = (((t65 * (t54 + t54)) * t8) + ((t65 * (t56 + t56)) * t10))
+        let !t67 = (if ((abs t64) - 1.0e-10) > 0 then (if (abs t66) > 0 then 1.0 else 0.0) else 0.0)
+        let !t68 = (1.0 - t62)
+        let !s69 = ((t62 * (if t67 > 0 then (t54 + (negate ((t64 / t66) * t8))) else t54)) + (t68 * t2))
+        let !s70 = ((t62 * (if t67 > 0 then (t55 + (negate ((t64 / t66) * t9))) else t55)) + (t68 * t3))
+        let !s71 = ((t62 * (if t67 > 0 then (t56 + (negate ((t64 / t66) * t10))) else t56)) + (t68 * t4))
+        chkI verts ((291 * i1) + (12 * i53)) 3 5
+        wrU verts (((291 * i1) + (12 * i53)) + 3) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
+        wrU verts (((291 * i1) + (12 * i53)) + 4) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
+        wrU verts (((291 * i1) + (12 * i53)) + 5) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
+        wrU walk (12 * i53) s69
+        wrU walk ((12 * i53) + 1) s70
+        wrU walk ((12 * i53) + 2) s71
+        let !t72 = (sqrt (((t59 * t59) + (t60 * t60)) + (t61 * t61)))
+        let !t73 = (if (abs s58) > 0 then (recip s58) else 0.0)
+        let !t74 = (t73 * ((if t67 > 0 then (t54 + (negate ((t64 / t66) * t8))) else t54) + (negate t2)))
+        let !t75 = (t65 * (t54 + t54))
+        let !t76 = (t65 * (t56 + t56))
+        let !t77 = (sqrt ((t75 * t75) + (t76 * t76)))
+        let !t78 = (if t77 > 0 then (recip (if (t77 - 1.0e-300) > 0 then t77 else 1.0e-300)) else 0.0)
+        let !t79 = (t78 * t75)
+        let !t80 = (t78 * t76)
+        let !t81 = (t73 * ((if t67 > 0 then (t56 + (negate ((t64 / t66) * t10))) else t56) + (negate t4)))
+        let !t82 = ((t79 * t74) + (t80 * t81))
+        let !t83 = (t74 + (negate (t82 * t79)))
+        let !t84 = (t73 * ((if t67 > 0 then (t55 + (negate ((t64 / t66) * t9))) else t55) + (negate t3)))
+        let !t85 = (t81 + (negate (t82 * t80)))
+        let !t86 = (sqrt (((t83 * t83) + (t84 * t84)) + (t85 * t85)))
+        let !t87 = (if t86 > 0 then (recip (if (t86 - 1.0e-300) > 0 then t86 else 1.0e-300)) else 0.0)
+        let !s88 = ((t62 * (t72 * (t87 * t83))) + (t68 * t59))
+        let !s89 = ((t62 * (t72 * (t87 * t84))) + (t68 * t60))
+        let !s90 = ((t62 * (t72 * (t87 * t85))) + (t68 * t61))
+        wrU walk ((12 * i53) + 3) s88
+        wrU walk ((12 * i53) + 4) s89
+        wrU walk ((12 * i53) + 5) s90
+        let !s91 = ((t62 * t79) + (t68 * t8))
+        let !s92 = (t68 * t9)
+        let !s93 = ((t62 * t80) + (t68 * t10))
+        wrU walk ((12 * i53) + 6) s91
+        wrU walk ((12 * i53) + 7) s92
+        wrU walk ((12 * i53) + 8) s93
         pure ()
-      loopI 0.0 24.0 $ \i96 -> do
-        let !d96 = fromIntegral i96 :: Double
-        chkI walk (12 * i96) 0 11
-        t97 <- rdU walk ((12 * i96) + 6)
-        t98 <- rdU walk ((12 * i96) + 7)
-        t99 <- rdU walk ((12 * i96) + 8)
-        chkI radii ((24 * i1) + i96) 0 0
-        t100 <- rdU radii ((24 * i1) + i96)
-        let !s101 = (t100 / 4.0)
-        t102 <- rdU walk (12 * i96)
-        t103 <- rdU walk ((12 * i96) + 1)
-        t104 <- rdU walk ((12 * i96) + 2)
-        t105 <- rdU walk ((12 * i96) + 3)
-        t106 <- rdU walk ((12 * i96) + 4)
-        t107 <- rdU walk ((12 * i96) + 5)
-        let !s108 = (t102 + (s101 * t105))
-        let !s109 = (t103 + (s101 * t106))
-        let !s110 = (t104 + (s101 * t107))
-        let !t111 = (sqrt ((s108 * s108) + (s110 * s110)))
-        let !t112 = (t111 - 1.0)
-        let !t113 = (recip (2.0 * t111))
-        let !t114 = (((t113 * (s108 + s108)) * t97) + ((t113 * (s110 + s110)) * t99))
-        let !t115 = (if ((abs t112) - 1.0e-10) > 0 then (if (abs t114) > 0 then 1.0 else 0.0) else 0.0)
-        let !s116 = (if t115 > 0 then (s108 + (negate ((t112 / t114) * t97))) else s108)
-        let !s117 = (if t115 > 0 then (s109 + (negate ((t112 / t114) * t98))) else s109)
-        let !s118 = (if t115 > 0 then (s110 + (negate ((t112 / t114) * t99))) else s110)
-        wrU walk ((12 * i96) + 9) s116
-        wrU walk ((12 * i96) + 10) s117
-        wrU walk ((12 * i96) + 11) s118
+      loopI 0.0 24.0 $ \i94 -> do
+        let !d94 = fromIntegral i94 :: Double
+        chkI walk (12 * i94) 0 11
+        t95 <- rdU walk ((12 * i94) + 6)
+        t96 <- rdU walk ((12 * i94) + 7)
+        t97 <- rdU walk ((12 * i94) + 8)
+        chkI radii ((24 * i1) + i94) 0 0
+        t98 <- rdU radii ((24 * i1) + i94)
+        let !s99 = (t98 / 4.0)
+        t100 <- rdU walk (12 * i94)
+        t101 <- rdU walk ((12 * i94) + 1)
+        t102 <- rdU walk ((12 * i94) + 2)
+        t103 <- rdU walk ((12 * i94) + 3)
+        t104 <- rdU walk ((12 * i94) + 4)
+        t105 <- rdU walk ((12 * i94) + 5)
+        let !s106 = (t100 + (s99 * t103))
+        let !s107 = (t101 + (s99 * t104))
+        let !s108 = (t102 + (s99 * t105))
+        let !t109 = (sqrt ((s106 * s106) + (s108 * s108)))
+        let !t110 = (t109 - 1.0)
+        let !t111 = (recip (2.0 * t109))
+        let !t112 = (((t111 * (s106 + s106)) * t95) + ((t111 * (s108 + s108)) * t97))
+        let !t113 = (if ((abs t110) - 1.0e-10) > 0 then (if (abs t112) > 0 then 1.0 else 0.0) else 0.0)
+        let !s114 = (if t113 > 0 then (s106 + (negate ((t110 / t112) * t95))) else s106)
+        let !s115 = (if t113 > 0 then (s107 + (negate ((t110 / t112) * t96))) else s107)
+        let !s116 = (if t113 > 0 then (s108 + (negate ((t110 / t112) * t97))) else s108)
+        wrU walk ((12 * i94) + 9) s114
+        wrU walk ((12 * i94) + 10) s115
+        wrU walk ((12 * i94) + 11) s116
         pure ()
-      loopI 0.0 24.0 $ \i119 -> do
-        let !d119 = fromIntegral i119 :: Double
-        chkI walk (12 * i119) 6 11
-        t120 <- rdU walk ((12 * i119) + 6)
-        t121 <- rdU walk ((12 * i119) + 7)
-        t122 <- rdU walk ((12 * i119) + 8)
-        t123 <- rdU walk ((12 * i119) + 9)
-        t124 <- rdU walk ((12 * i119) + 10)
-        t125 <- rdU walk ((12 * i119) + 11)
-        let !t126 = (sqrt ((t123 * t123) + (t125 * t125)))
-        let !t127 = (t126 - 1.0)
-        let !t128 = (recip (2.0 * t126))
-        let !t129 = (((t128 * (t123 + t123)) * t120) + ((t128 * (t125 + t125)) * t122))
-        let !t130 = (if ((abs t127) - 1.0e-10) > 0 then (if (abs t129) > 0 then 1.0 else 0.0) else 0.0)
-        let !s131 = (if t130 > 0 then (t123 + (negate ((t127 / t129) * t120))) else t123)
-        let !s132 = (if t130 > 0 then (t124 + (negate ((t127 / t129) * t121))) else t124)
-        let !s133 = (if t130 > 0 then (t125 + (negate ((t127 / t129) * t122))) else t125)
-        wrU walk ((12 * i119) + 9) s131
-        wrU walk ((12 * i119) + 10) s132
-        wrU walk ((12 * i119) + 11) s133
+      loopI 0.0 24.0 $ \i117 -> do
+        let !d117 = fromIntegral i117 :: Double
+        chkI walk (12 * i117) 6 11
+        t118 <- rdU walk ((12 * i117) + 6)
+        t119 <- rdU walk ((12 * i117) + 7)
+        t120 <- rdU walk ((12 * i117) + 8)
+        t121 <- rdU walk ((12 * i117) + 9)
+        t122 <- rdU walk ((12 * i117) + 10)
+        t123 <- rdU walk ((12 * i117) + 11)
+        let !t124 = (sqrt ((t121 * t121) + (t123 * t123)))
+        let !t125 = (t124 - 1.0)
+        let !t126 = (recip (2.0 * t124))
+        let !t127 = (((t126 * (t121 + t121)) * t118) + ((t126 * (t123 + t123)) * t120))
+        let !t128 = (if ((abs t125) - 1.0e-10) > 0 then (if (abs t127) > 0 then 1.0 else 0.0) else 0.0)
+        let !s129 = (if t128 > 0 then (t121 + (negate ((t125 / t127) * t118))) else t121)
+        let !s130 = (if t128 > 0 then (t122 + (negate ((t125 / t127) * t119))) else t122)
+        let !s131 = (if t128 > 0 then (t123 + (negate ((t125 / t127) * t120))) else t123)
+        wrU walk ((12 * i117) + 9) s129
+        wrU walk ((12 * i117) + 10) s130
+        wrU walk ((12 * i117) + 11) s131
         pure ()
-      loopI 0.0 24.0 $ \i134 -> do
-        let !d134 = fromIntegral i134 :: Double
-        chkI walk (12 * i134) 0 11
-        t135 <- rdU walk ((12 * i134) + 6)
-        t136 <- rdU walk ((12 * i134) + 7)
-        t137 <- rdU walk ((12 * i134) + 8)
-        t138 <- rdU walk ((12 * i134) + 9)
-        t139 <- rdU walk ((12 * i134) + 10)
-        t140 <- rdU walk ((12 * i134) + 11)
-        chkI radii ((24 * i1) + i134) 0 0
-        t141 <- rdU radii ((24 * i1) + i134)
-        let !s142 = (t141 / 4.0)
-        t143 <- rdU walk (12 * i134)
-        t144 <- rdU walk ((12 * i134) + 1)
-        t145 <- rdU walk ((12 * i134) + 2)
-        t146 <- rdU walk ((12 * i134) + 3)
-        t147 <- rdU walk ((12 * i134) + 4)
-        t148 <- rdU walk ((12 * i134) + 5)
-        let !t149 = (if (abs s142) > 0 then 1.0 else 0.0)
-        let !t150 = (sqrt ((t138 * t138) + (t140 * t140)))
-        let !t151 = (t150 - 1.0)
-        let !t152 = (recip (2.0 * t150))
-        let !t153 = (((t152 * (t138 + t138)) * t135) + ((t152 * (t140 + t140)) * t137))
-        let !t154 = (if ((abs t151) - 1.0e-10) > 0 then (if (abs t153) > 0 then 1.0 else 0.0) else 0.0)
-        let !t155 = (1.0 - t149)
-        let !s156 = ((t149 * (if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138)) + (t155 * t143))
-        let !s157 = ((t149 * (if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139)) + (t155 * t144))
-        let !s158 = ((t149 * (if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140)) + (t155 * t145))
-        chkI verts ((291 * i1) + (12 * i134)) 6 8
-        wrU verts (((291 * i1) + (12 * i134)) + 6) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s156 else t2)
-        wrU verts (((291 * i1) + (12 * i134)) + 7) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s157 else t3)
-        wrU verts (((291 * i1) + (12 * i134)) + 8) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s158 else t4)
-        wrU walk (12 * i134) s156
-        wrU walk ((12 * i134) + 1) s157
-        wrU walk ((12 * i134) + 2) s158
-        let !t159 = (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148)))
-        let !t160 = (if (abs s142) > 0 then (recip s142) else 0.0)
-        let !t161 = (t160 * ((if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138) + (negate t143)))
-        let !t162 = (t152 * (t138 + t138))
-        let !t163 = (t152 * (t140 + t140))
-        let !t164 = (sqrt ((t162 * t162) + (t163 * t163)))
-        let !t165 = (if t164 > 0 then (recip (if (t164 - 1.0e-300) > 0 then t164 else 1.0e-300)) else 0.0)
-        let !t166 = (t165 * t162)
-        let !t167 = (t165 * t163)
-        let !t168 = (t160 * ((if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140) + (negate t145)))
-        let !t169 = ((t166 * t161) + (t167 * t168))
-        let !t170 = (t161 + (negate (t169 * t166)))
-        let !t171 = (t160 * ((if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139) + (negate t144)))
-        let !t172 = (t168 + (negate (t169 * t167)))
-        let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
-        let !t174 = (if t173 > 0 then (recip (if (t173 - 1.0e-300) > 0 then t173 else 1.0e-300)) else 0.0)
-        let !s175 = ((t149 * (t159 * (t174 * t170))) + (t155 * t146))
-        let !s176 = ((t149 * (t159 * (t174 * t171))) + (t155 * t147))
-        let !s177 = ((t149 * (t159 * (t174 * t172))) + (t155 * t148))
-        wrU walk ((12 * i134) + 3) s175
-        wrU walk ((12 * i134) + 4) s176
-        wrU walk ((12 * i134) + 5) s177
-        let !s178 = ((t149 * t166) + (t155 * t135))
-        let !s179 = (t155 * t136)
-        let !s180 = ((t149 * t167) + (t155 * t137))
-        wrU walk ((12 * i134) + 6) s178
-        wrU walk ((12 * i134) + 7) s179
-        wrU walk ((12 * i134) + 8) s180
+      loopI 0.0 24.0 $ \i132 -> do
+        let !d132 = fromIntegral i132 :: Double
+        chkI walk (12 * i132) 0 11
+        t133 <- rdU walk ((12 * i132) + 6)
+        t134 <- rdU walk ((12 * i132) + 7)
+        t135 <- rdU walk ((12 * i132) + 8)
+        t136 <- rdU walk ((12 * i132) + 9)
+        t137 <- rdU walk ((12 * i132) + 10)
+        t138 <- rdU walk ((12 * i132) + 11)
+        chkI radii ((24 * i1) + i132) 0 0
+        t139 <- rdU radii ((24 * i1) + i132)
+        let !s140 = (t139 / 4.0)
+        t141 <- rdU walk (12 * i132)
+        t142 <- rdU walk ((12 * i132) + 1)
+        t143 <- rdU walk ((12 * i132) + 2)
+        t144 <- rdU walk ((12 * i132) + 3)
+        t145 <- rdU walk ((12 * i132) + 4)
+        t146 <- rdU walk ((12 * i132) + 5)
+        let !t147 = (if (abs s140) > 0 then 1.0 else 0.0)
+        let !t148 = (sqrt ((t136 * t136) + (t138 * t138)))
+        let !t149 = (t148 - 1.0)
+        let !t150 = (recip (2.0 * t148))
+        let !t151 = (((t150 * (t136 + t136)) * t133) + ((t150 * (t138 + t138)) * t135))
+        let !t152 = (if ((abs t149) - 1.0e-10) > 0 then (if (abs t151) > 0 then 1.0 else 0.0) else 0.0)
+        let !t153 = (1.0 - t147)
+        let !s154 = ((t147 * (if t152 > 0 then (t136 + (negate ((t149 / t151) * t133))) else t136)) + (t153 * t141))
+        let !s155 = ((t147 * (if t152 > 0 then (t137 + (negate ((t149 / t151) * t134))) else t137)) + (t153 * t142))
+        let !s156 = ((t147 * (if t152 > 0 then (t138 + (negate ((t149 / t151) * t135))) else t138)) + (t153 * t143))
+        chkI verts ((291 * i1) + (12 * i132)) 6 8
+        wrU verts (((291 * i1) + (12 * i132)) + 6) (if (1.0 - (abs (((s154 - s154) + (s155 - s155)) + (s156 - s156)))) > 0 then s154 else t2)
+        wrU verts (((291 * i1) + (12 * i132)) + 7) (if (1.0 - (abs (((s154 - s154) + (s155 - s155)) + (s156 - s156)))) > 0 then s155 else t3)
+        wrU verts (((291 * i1) + (12 * i132)) + 8) (if (1.0 - (abs (((s154 - s154) + (s155 - s155)) + (s156 - s156)))) > 0 then s156 else t4)
+        wrU walk (12 * i132) s154
+        wrU walk ((12 * i132) + 1) s155
+        wrU walk ((12 * i132) + 2) s156
+        let !t157 = (sqrt (((t144 * t144) + (t145 * t145)) + (t146 * t146)))
+        let !t158 = (if (abs s140) > 0 then (recip s140) else 0.0)
+        let !t159 = (t158 * ((if t152 > 0 then (t136 + (negate ((t149 / t151) * t133))) else t136) + (negate t141)))
+        let !t160 = (t150 * (t136 + t136))
+        let !t161 = (t150 * (t138 + t138))
+        let !t162 = (sqrt ((t160 * t160) + (t161 * t161)))
+        let !t163 = (if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0)
+        let !t164 = (t163 * t160)
+        let !t165 = (t163 * t161)
+        let !t166 = (t158 * ((if t152 > 0 then (t138 + (negate ((t149 / t151) * t135))) else t138) + (negate t143)))
+        let !t167 = ((t164 * t159) + (t165 * t166))
+        let !t168 = (t159 + (negate (t167 * t164)))
+        let !t169 = (t158 * ((if t152 > 0 then (t137 + (negate ((t149 / t151) * t134))) else t137) + (negate t142)))
+        let !t170 = (t166 + (negate (t167 * t165)))
+        let !t171 = (sqrt (((t168 * t168) + (t169 * t169)) + (t170 * t170)))
+        let !t172 = (if t171 > 0 then (recip (if (t171 - 1.0e-300) > 0 then t171 else 1.0e-300)) else 0.0)
+        let !s173 = ((t147 * (t157 * (t172 * t168))) + (t153 * t144))
+        let !s174 = ((t147 * (t157 * (t172 * t169))) + (t153 * t145))
+        let !s175 = ((t147 * (t157 * (t172 * t170))) + (t153 * t146))
+        wrU walk ((12 * i132) + 3) s173
+        wrU walk ((12 * i132) + 4) s174
+        wrU walk ((12 * i132) + 5) s175
+        let !s176 = ((t147 * t164) + (t153 * t133))
+        let !s177 = (t153 * t134)
+        let !s178 = ((t147 * t165) + (t153 * t135))
+        wrU walk ((12 * i132) + 6) s176
+        wrU walk ((12 * i132) + 7) s177
+        wrU walk ((12 * i132) + 8) s178
         pure ()
-      loopI 0.0 24.0 $ \i181 -> do
-        let !d181 = fromIntegral i181 :: Double
-        chkI walk (12 * i181) 0 11
-        t182 <- rdU walk ((12 * i181) + 6)
-        t183 <- rdU walk ((12 * i181) + 7)
-        t184 <- rdU walk ((12 * i181) + 8)
-        chkI radii ((24 * i1) + i181) 0 0
-        t185 <- rdU radii ((24 * i1) + i181)
-        let !s186 = (t185 / 4.0)
-        t187 <- rdU walk (12 * i181)
-        t188 <- rdU walk ((12 * i181) + 1)
-        t189 <- rdU walk ((12 * i181) + 2)
-        t190 <- rdU walk ((12 * i181) + 3)
-        t191 <- rdU walk ((12 * i181) + 4)
-        t192 <- rdU walk ((12 * i181) + 5)
-        let !s193 = (t187 + (s186 * t190))
-        let !s194 = (t188 + (s186 * t191))
-        let !s195 = (t189 + (s186 * t192))
-        let !t196 = (sqrt ((s193 * s193) + (s195 * s195)))
-        let !t197 = (t196 - 1.0)
-        let !t198 = (recip (2.0 * t196))
-        let !t199 = (((t198 * (s193 + s193)) * t182) + ((t198 * (s195 + s195)) * t184))
-        let !t200 = (if ((abs t197) - 1.0e-10) > 0 then (if (abs t199) > 0 then 1.0 else 0.0) else 0.0)
-        let !s201 = (if t200 > 0 then (s193 + (negate ((t197 / t199) * t182))) else s193)
-        let !s202 = (if t200 > 0 then (s194 + (negate ((t197 / t199) * t183))) else s194)
-        let !s203 = (if t200 > 0 then (s195 + (negate ((t197 / t199) * t184))) else s195)
-        wrU walk ((12 * i181) + 9) s201
-        wrU walk ((12 * i181) + 10) s202
-        wrU walk ((12 * i181) + 11) s203
+      loopI 0.0 24.0 $ \i179 -> do
+        let !d179 = fromIntegral i179 :: Double
+        chkI walk (12 * i179) 0 11
+        t180 <- rdU walk ((12 * i179) + 6)
+        t181 <- rdU walk ((12 * i179) + 7)
+        t182 <- rdU walk ((12 * i179) + 8)
+        chkI radii ((24 * i1) + i179) 0 0
+        t183 <- rdU radii ((24 * i1) + i179)
+        let !s184 = (t183 / 4.0)
+        t185 <- rdU walk (12 * i179)
+        t186 <- rdU walk ((12 * i179) + 1)
+        t187 <- rdU walk ((12 * i179) + 2)
+        t188 <- rdU walk ((12 * i179) + 3)
+        t189 <- rdU walk ((12 * i179) + 4)
+        t190 <- rdU walk ((12 * i179) + 5)
+        let !s191 = (t185 + (s184 * t188))
+        let !s192 = (t186 + (s184 * t189))
+        let !s193 = (t187 + (s184 * t190))
+        let !t194 = (sqrt ((s191 * s191) + (s193 * s193)))
+        let !t195 = (t194 - 1.0)
+        let !t196 = (recip (2.0 * t194))
+        let !t197 = (((t196 * (s191 + s191)) * t180) + ((t196 * (s193 + s193)) * t182))
+        let !t198 = (if ((abs t195) - 1.0e-10) > 0 then (if (abs t197) > 0 then 1.0 else 0.0) else 0.0)
+        let !s199 = (if t198 > 0 then (s191 + (negate ((t195 / t197) * t180))) else s191)
+        let !s200 = (if t198 > 0 then (s192 + (negate ((t195 / t197) * t181))) else s192)
+        let !s201 = (if t198 > 0 then (s193 + (negate ((t195 / t197) * t182))) else s193)
+        wrU walk ((12 * i179) + 9) s199
+        wrU walk ((12 * i179) + 10) s200
+        wrU walk ((12 * i179) + 11) s201
         pure ()
-      loopI 0.0 24.0 $ \i204 -> do
-        let !d204 = fromIntegral i204 :: Double
-        chkI walk (12 * i204) 6 11
-        t205 <- rdU walk ((12 * i204) + 6)
-        t206 <- rdU walk ((12 * i204) + 7)
-        t207 <- rdU walk ((12 * i204) + 8)
-        t208 <- rdU walk ((12 * i204) + 9)
-        t209 <- rdU walk ((12 * i204) + 10)
-        t210 <- rdU walk ((12 * i204) + 11)
-        let !t211 = (sqrt ((t208 * t208) + (t210 * t210)))
-        let !t212 = (t211 - 1.0)
-        let !t213 = (recip (2.0 * t211))
-        let !t214 = (((t213 * (t208 + t208)) * t205) + ((t213 * (t210 + t210)) * t207))
-        let !t215 = (if ((abs t212) - 1.0e-10) > 0 then (if (abs t214) > 0 then 1.0 else 0.0) else 0.0)
-        let !s216 = (if t215 > 0 then (t208 + (negate ((t212 / t214) * t205))) else t208)
-        let !s217 = (if t215 > 0 then (t209 + (negate ((t212 / t214) * t206))) else t209)
-        let !s218 = (if t215 > 0 then (t210 + (negate ((t212 / t214) * t207))) else t210)
-        wrU walk ((12 * i204) + 9) s216
-        wrU walk ((12 * i204) + 10) s217
-        wrU walk ((12 * i204) + 11) s218
+      loopI 0.0 24.0 $ \i202 -> do
+        let !d202 = fromIntegral i202 :: Double
+        chkI walk (12 * i202) 6 11
+        t203 <- rdU walk ((12 * i202) + 6)
+        t204 <- rdU walk ((12 * i202) + 7)
+        t205 <- rdU walk ((12 * i202) + 8)
+        t206 <- rdU walk ((12 * i202) + 9)
+        t207 <- rdU walk ((12 * i202) + 10)
+        t208 <- rdU walk ((12 * i202) + 11)
+        let !t209 = (sqrt ((t206 * t206) + (t208 * t208)))
+        let !t210 = (t209 - 1.0)
+        let !t211 = (recip (2.0 * t209))
+        let !t212 = (((t211 * (t206 + t206)) * t203) + ((t211 * (t208 + t208)) * t205))
+        let !t213 = (if ((abs t210) - 1.0e-10) > 0 then (if (abs t212) > 0 then 1.0 else 0.0) else 0.0)
+        let !s214 = (if t213 > 0 then (t206 + (negate ((t210 / t212) * t203))) else t206)
+        let !s215 = (if t213 > 0 then (t207 + (negate ((t210 / t212) * t204))) else t207)
+        let !s216 = (if t213 > 0 then (t208 + (negate ((t210 / t212) * t205))) else t208)
+        wrU walk ((12 * i202) + 9) s214
+        wrU walk ((12 * i202) + 10) s215
+        wrU walk ((12 * i202) + 11) s216
         pure ()
-      loopI 0.0 24.0 $ \i219 -> do
-        let !d219 = fromIntegral i219 :: Double
-        chkI walk (12 * i219) 0 11
-        t220 <- rdU walk ((12 * i219) + 6)
-        t221 <- rdU walk ((12 * i219) + 7)
-        t222 <- rdU walk ((12 * i219) + 8)
-        t223 <- rdU walk ((12 * i219) + 9)
-        t224 <- rdU walk ((12 * i219) + 10)
-        t225 <- rdU walk ((12 * i219) + 11)
-        chkI radii ((24 * i1) + i219) 0 0
-        t226 <- rdU radii ((24 * i1) + i219)
-        let !s227 = (t226 / 4.0)
-        t228 <- rdU walk (12 * i219)
-        t229 <- rdU walk ((12 * i219) + 1)
-        t230 <- rdU walk ((12 * i219) + 2)
-        t231 <- rdU walk ((12 * i219) + 3)
-        t232 <- rdU walk ((12 * i219) + 4)
-        t233 <- rdU walk ((12 * i219) + 5)
-        let !t234 = (if (abs s227) > 0 then 1.0 else 0.0)
-        let !t235 = (sqrt ((t223 * t223) + (t225 * t225)))
-        let !t236 = (t235 - 1.0)
-        let !t237 = (recip (2.0 * t235))
-        let !t238 = (((t237 * (t223 + t223)) * t220) + ((t237 * (t225 + t225)) * t222))
-        let !t239 = (if ((abs t236) - 1.0e-10) > 0 then (if (abs t238) > 0 then 1.0 else 0.0) else 0.0)
-        let !t240 = (1.0 - t234)
-        let !s241 = ((t234 * (if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223)) + (t240 * t228))
-        let !s242 = ((t234 * (if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224)) + (t240 * t229))
-        let !s243 = ((t234 * (if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225)) + (t240 * t230))
-        chkI verts ((291 * i1) + (12 * i219)) 9 11
-        wrU verts (((291 * i1) + (12 * i219)) + 9) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s241 else t2)
-        wrU verts (((291 * i1) + (12 * i219)) + 10) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s242 else t3)
-        wrU verts (((291 * i1) + (12 * i219)) + 11) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s243 else t4)
-        wrU walk (12 * i219) s241
-        wrU walk ((12 * i219) + 1) s242
-        wrU walk ((12 * i219) + 2) s243
-        let !t244 = (sqrt (((t231 * t231) + (t232 * t232)) + (t233 * t233)))
-        let !t245 = (if (abs s227) > 0 then (recip s227) else 0.0)
-        let !t246 = (t245 * ((if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223) + (negate t228)))
-        let !t247 = (t237 * (t223 + t223))
-        let !t248 = (t237 * (t225 + t225))
-        let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
-        let !t250 = (if t249 > 0 then (recip (if (t249 - 1.0e-300) > 0 then t249 else 1.0e-300)) else 0.0)
-        let !t251 = (t250 * t247)
-        let !t252 = (t250 * t248)
-        let !t253 = (t245 * ((if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225) + (negate t230)))
-        let !t254 = ((t251 * t246) + (t252 * t253))
-        let !t255 = (t246 + (negate (t254 * t251)))
-        let !t256 = (t245 * ((if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224) + (negate t229)))
-        let !t257 = (t253 + (negate (t254 * t252)))
-        let !t258 = (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257)))
-        let !t259 = (if t258 > 0 then (recip (if (t258 - 1.0e-300) > 0 then t258 else 1.0e-300)) else 0.0)
-        let !s260 = ((t234 * (t244 * (t259 * t255))) + (t240 * t231))
-        let !s261 = ((t234 * (t244 * (t259 * t256))) + (t240 * t232))
-        let !s262 = ((t234 * (t244 * (t259 * t257))) + (t240 * t233))
-        wrU walk ((12 * i219) + 3) s260
-        wrU walk ((12 * i219) + 4) s261
-        wrU walk ((12 * i219) + 5) s262
-        let !s263 = ((t234 * t251) + (t240 * t220))
-        let !s264 = (t240 * t221)
-        let !s265 = ((t234 * t252) + (t240 * t222))
-        wrU walk ((12 * i219) + 6) s263
-        wrU walk ((12 * i219) + 7) s264
-        wrU walk ((12 * i219) + 8) s265
+      loopI 0.0 24.0 $ \i217 -> do
+        let !d217 = fromIntegral i217 :: Double
+        chkI walk (12 * i217) 0 11
+        t218 <- rdU walk ((12 * i217) + 6)
+        t219 <- rdU walk ((12 * i217) + 7)
+        t220 <- rdU walk ((12 * i217) + 8)
+        t221 <- rdU walk ((12 * i217) + 9)
+        t222 <- rdU walk ((12 * i217) + 10)
+        t223 <- rdU walk ((12 * i217) + 11)
+        chkI radii ((24 * i1) + i217) 0 0
+        t224 <- rdU radii ((24 * i1) + i217)
+        let !s225 = (t224 / 4.0)
+        t226 <- rdU walk (12 * i217)
+        t227 <- rdU walk ((12 * i217) + 1)
+        t228 <- rdU walk ((12 * i217) + 2)
+        t229 <- rdU walk ((12 * i217) + 3)
+        t230 <- rdU walk ((12 * i217) + 4)
+        t231 <- rdU walk ((12 * i217) + 5)
+        let !t232 = (if (abs s225) > 0 then 1.0 else 0.0)
+        let !t233 = (sqrt ((t221 * t221) + (t223 * t223)))
+        let !t234 = (t233 - 1.0)
+        let !t235 = (recip (2.0 * t233))
+        let !t236 = (((t235 * (t221 + t221)) * t218) + ((t235 * (t223 + t223)) * t220))
+        let !t237 = (if ((abs t234) - 1.0e-10) > 0 then (if (abs t236) > 0 then 1.0 else 0.0) else 0.0)
+        let !t238 = (1.0 - t232)
+        let !s239 = ((t232 * (if t237 > 0 then (t221 + (negate ((t234 / t236) * t218))) else t221)) + (t238 * t226))
+        let !s240 = ((t232 * (if t237 > 0 then (t222 + (negate ((t234 / t236) * t219))) else t222)) + (t238 * t227))
+        let !s241 = ((t232 * (if t237 > 0 then (t223 + (negate ((t234 / t236) * t220))) else t223)) + (t238 * t228))
+        chkI verts ((291 * i1) + (12 * i217)) 9 11
+        wrU verts (((291 * i1) + (12 * i217)) + 9) (if (1.0 - (abs (((s239 - s239) + (s240 - s240)) + (s241 - s241)))) > 0 then s239 else t2)
+        wrU verts (((291 * i1) + (12 * i217)) + 10) (if (1.0 - (abs (((s239 - s239) + (s240 - s240)) + (s241 - s241)))) > 0 then s240 else t3)
+        wrU verts (((291 * i1) + (12 * i217)) + 11) (if (1.0 - (abs (((s239 - s239) + (s240 - s240)) + (s241 - s241)))) > 0 then s241 else t4)
+        wrU walk (12 * i217) s239
+        wrU walk ((12 * i217) + 1) s240
+        wrU walk ((12 * i217) + 2) s241
+        let !t242 = (sqrt (((t229 * t229) + (t230 * t230)) + (t231 * t231)))
+        let !t243 = (if (abs s225) > 0 then (recip s225) else 0.0)
+        let !t244 = (t243 * ((if t237 > 0 then (t221 + (negate ((t234 / t236) * t218))) else t221) + (negate t226)))
+        let !t245 = (t235 * (t221 + t221))
+        let !t246 = (t235 * (t223 + t223))
+        let !t247 = (sqrt ((t245 * t245) + (t246 * t246)))
+        let !t248 = (if t247 > 0 then (recip (if (t247 - 1.0e-300) > 0 then t247 else 1.0e-300)) else 0.0)
+        let !t249 = (t248 * t245)
+        let !t250 = (t248 * t246)
+        let !t251 = (t243 * ((if t237 > 0 then (t223 + (negate ((t234 / t236) * t220))) else t223) + (negate t228)))
+        let !t252 = ((t249 * t244) + (t250 * t251))
+        let !t253 = (t244 + (negate (t252 * t249)))
+        let !t254 = (t243 * ((if t237 > 0 then (t222 + (negate ((t234 / t236) * t219))) else t222) + (negate t227)))
+        let !t255 = (t251 + (negate (t252 * t250)))
+        let !t256 = (sqrt (((t253 * t253) + (t254 * t254)) + (t255 * t255)))
+        let !t257 = (if t256 > 0 then (recip (if (t256 - 1.0e-300) > 0 then t256 else 1.0e-300)) else 0.0)
+        let !s258 = ((t232 * (t242 * (t257 * t253))) + (t238 * t229))
+        let !s259 = ((t232 * (t242 * (t257 * t254))) + (t238 * t230))
+        let !s260 = ((t232 * (t242 * (t257 * t255))) + (t238 * t231))
+        wrU walk ((12 * i217) + 3) s258
+        wrU walk ((12 * i217) + 4) s259
+        wrU walk ((12 * i217) + 5) s260
+        let !s261 = ((t232 * t249) + (t238 * t218))
+        let !s262 = (t238 * t219)
+        let !s263 = ((t232 * t250) + (t238 * t220))
+        wrU walk ((12 * i217) + 6) s261
+        wrU walk ((12 * i217) + 7) s262
+        wrU walk ((12 * i217) + 8) s263
         pure ()
-      loopI 0.0 24.0 $ \i266 -> do
-        let !d266 = fromIntegral i266 :: Double
-        chkI walk (12 * i266) 0 11
-        t267 <- rdU walk ((12 * i266) + 6)
-        t268 <- rdU walk ((12 * i266) + 7)
-        t269 <- rdU walk ((12 * i266) + 8)
-        chkI radii ((24 * i1) + i266) 0 0
-        t270 <- rdU radii ((24 * i1) + i266)
-        let !s271 = (t270 / 4.0)
-        t272 <- rdU walk (12 * i266)
-        t273 <- rdU walk ((12 * i266) + 1)
-        t274 <- rdU walk ((12 * i266) + 2)
-        t275 <- rdU walk ((12 * i266) + 3)
-        t276 <- rdU walk ((12 * i266) + 4)
-        t277 <- rdU walk ((12 * i266) + 5)
-        let !s278 = (t272 + (s271 * t275))
-        let !s279 = (t273 + (s271 * t276))
-        let !s280 = (t274 + (s271 * t277))
-        let !t281 = (sqrt ((s278 * s278) + (s280 * s280)))
-        let !t282 = (t281 - 1.0)
-        let !t283 = (recip (2.0 * t281))
-        let !t284 = (((t283 * (s278 + s278)) * t267) + ((t283 * (s280 + s280)) * t269))
-        let !t285 = (if ((abs t282) - 1.0e-10) > 0 then (if (abs t284) > 0 then 1.0 else 0.0) else 0.0)
-        let !s286 = (if t285 > 0 then (s278 + (negate ((t282 / t284) * t267))) else s278)
-        let !s287 = (if t285 > 0 then (s279 + (negate ((t282 / t284) * t268))) else s279)
-        let !s288 = (if t285 > 0 then (s280 + (negate ((t282 / t284) * t269))) else s280)
-        wrU walk ((12 * i266) + 9) s286
-        wrU walk ((12 * i266) + 10) s287
-        wrU walk ((12 * i266) + 11) s288
+      loopI 0.0 24.0 $ \i264 -> do
+        let !d264 = fromIntegral i264 :: Double
+        chkI walk (12 * i264) 0 11
+        t265 <- rdU walk ((12 * i264) + 6)
+        t266 <- rdU walk ((12 * i264) + 7)
+        t267 <- rdU walk ((12 * i264) + 8)
+        chkI radii ((24 * i1) + i264) 0 0
+        t268 <- rdU radii ((24 * i1) + i264)
+        let !s269 = (t268 / 4.0)
+        t270 <- rdU walk (12 * i264)
+        t271 <- rdU walk ((12 * i264) + 1)
+        t272 <- rdU walk ((12 * i264) + 2)
+        t273 <- rdU walk ((12 * i264) + 3)
+        t274 <- rdU walk ((12 * i264) + 4)
+        t275 <- rdU walk ((12 * i264) + 5)
+        let !s276 = (t270 + (s269 * t273))
+        let !s277 = (t271 + (s269 * t274))
+        let !s278 = (t272 + (s269 * t275))
+        let !t279 = (sqrt ((s276 * s276) + (s278 * s278)))
+        let !t280 = (t279 - 1.0)
+        let !t281 = (recip (2.0 * t279))
+        let !t282 = (((t281 * (s276 + s276)) * t265) + ((t281 * (s278 + s278)) * t267))
+        let !t283 = (if ((abs t280) - 1.0e-10) > 0 then (if (abs t282) > 0 then 1.0 else 0.0) else 0.0)
+        let !s284 = (if t283 > 0 then (s276 + (negate ((t280 / t282) * t265))) else s276)
+        let !s285 = (if t283 > 0 then (s277 + (negate ((t280 / t282) * t266))) else s277)
+        let !s286 = (if t283 > 0 then (s278 + (negate ((t280 / t282) * t267))) else s278)
+        wrU walk ((12 * i264) + 9) s284
+        wrU walk ((12 * i264) + 10) s285
+        wrU walk ((12 * i264) + 11) s286
         pure ()
-      loopI 0.0 24.0 $ \i289 -> do
-        let !d289 = fromIntegral i289 :: Double
-        chkI walk (12 * i289) 6 11
-        t290 <- rdU walk ((12 * i289) + 6)
-        t291 <- rdU walk ((12 * i289) + 7)
-        t292 <- rdU walk ((12 * i289) + 8)
-        t293 <- rdU walk ((12 * i289) + 9)
-        t294 <- rdU walk ((12 * i289) + 10)
-        t295 <- rdU walk ((12 * i289) + 11)
-        let !t296 = (sqrt ((t293 * t293) + (t295 * t295)))
-        let !t297 = (t296 - 1.0)
-        let !t298 = (recip (2.0 * t296))
-        let !t299 = (((t298 * (t293 + t293)) * t290) + ((t298 * (t295 + t295)) * t292))
-        let !t300 = (if ((abs t297) - 1.0e-10) > 0 then (if (abs t299) > 0 then 1.0 else 0.0) else 0.0)
-        let !s301 = (if t300 > 0 then (t293 + (negate ((t297 / t299) * t290))) else t293)
-        let !s302 = (if t300 > 0 then (t294 + (negate ((t297 / t299) * t291))) else t294)
-        let !s303 = (if t300 > 0 then (t295 + (negate ((t297 / t299) * t292))) else t295)
-        wrU walk ((12 * i289) + 9) s301
-        wrU walk ((12 * i289) + 10) s302
-        wrU walk ((12 * i289) + 11) s303
+      loopI 0.0 24.0 $ \i287 -> do
+        let !d287 = fromIntegral i287 :: Double
+        chkI walk (12 * i287) 6 11
+        t288 <- rdU walk ((12 * i287) + 6)
+        t289 <- rdU walk ((12 * i287) + 7)
+        t290 <- rdU walk ((12 * i287) + 8)
+        t291 <- rdU walk ((12 * i287) + 9)
+        t292 <- rdU walk ((12 * i287) + 10)
+        t293 <- rdU walk ((12 * i287) + 11)
+        let !t294 = (sqrt ((t291 * t291) + (t293 * t293)))
+        let !t295 = (t294 - 1.0)
+        let !t296 = (recip (2.0 * t294))
+        let !t297 = (((t296 * (t291 + t291)) * t288) + ((t296 * (t293 + t293)) * t290))
+        let !t298 = (if ((abs t295) - 1.0e-10) > 0 then (if (abs t297) > 0 then 1.0 else 0.0) else 0.0)
+        let !s299 = (if t298 > 0 then (t291 + (negate ((t295 / t297) * t288))) else t291)
+        let !s300 = (if t298 > 0 then (t292 + (negate ((t295 / t297) * t289))) else t292)
+        let !s301 = (if t298 > 0 then (t293 + (negate ((t295 / t297) * t290))) else t293)
+        wrU walk ((12 * i287) + 9) s299
+        wrU walk ((12 * i287) + 10) s300
+        wrU walk ((12 * i287) + 11) s301
         pure ()
-      loopI 0.0 24.0 $ \i304 -> do
-        let !d304 = fromIntegral i304 :: Double
-        chkI walk (12 * i304) 0 11
-        t305 <- rdU walk ((12 * i304) + 6)
-        t306 <- rdU walk ((12 * i304) + 7)
-        t307 <- rdU walk ((12 * i304) + 8)
-        t308 <- rdU walk ((12 * i304) + 9)
-        t309 <- rdU walk ((12 * i304) + 10)
-        t310 <- rdU walk ((12 * i304) + 11)
-        chkI radii ((24 * i1) + i304) 0 0
-        t311 <- rdU radii ((24 * i1) + i304)
-        let !s312 = (t311 / 4.0)
-        t313 <- rdU walk (12 * i304)
-        t314 <- rdU walk ((12 * i304) + 1)
-        t315 <- rdU walk ((12 * i304) + 2)
-        t316 <- rdU walk ((12 * i304) + 3)
-        t317 <- rdU walk ((12 * i304) + 4)
-        t318 <- rdU walk ((12 * i304) + 5)
-        let !t319 = (if (abs s312) > 0 then 1.0 else 0.0)
-        let !t320 = (sqrt ((t308 * t308) + (t310 * t310)))
-        let !t321 = (t320 - 1.0)
-        let !t322 = (recip (2.0 * t320))
-        let !t323 = (((t322 * (t308 + t308)) * t305) + ((t322 * (t310 + t310)) * t307))
-        let !t324 = (if ((abs t321) - 1.0e-10) > 0 then (if (abs t323) > 0 then 1.0 else 0.0) else 0.0)
-        let !t325 = (1.0 - t319)
-        let !s326 = ((t319 * (if t324 > 0 then (t308 + (negate ((t321 / t323) * t305))) else t308)) + (t325 * t313))
-        let !s327 = ((t319 * (if t324 > 0 then (t309 + (negate ((t321 / t323) * t306))) else t309)) + (t325 * t314))
-        let !s328 = ((t319 * (if t324 > 0 then (t310 + (negate ((t321 / t323) * t307))) else t310)) + (t325 * t315))
-        chkI verts ((291 * i1) + (12 * i304)) 12 14
-        wrU verts (((291 * i1) + (12 * i304)) + 12) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s326 else t2)
-        wrU verts (((291 * i1) + (12 * i304)) + 13) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s327 else t3)
-        wrU verts (((291 * i1) + (12 * i304)) + 14) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s328 else t4)
+      loopI 0.0 24.0 $ \i302 -> do
+        let !d302 = fromIntegral i302 :: Double
+        chkI walk (12 * i302) 0 11
+        t303 <- rdU walk ((12 * i302) + 6)
+        t304 <- rdU walk ((12 * i302) + 7)
+        t305 <- rdU walk ((12 * i302) + 8)
+        t306 <- rdU walk ((12 * i302) + 9)
+        t307 <- rdU walk ((12 * i302) + 10)
+        t308 <- rdU walk ((12 * i302) + 11)
+        chkI radii ((24 * i1) + i302) 0 0
+        t309 <- rdU radii ((24 * i1) + i302)
+        let !s310 = (t309 / 4.0)
+        t311 <- rdU walk (12 * i302)
+        t312 <- rdU walk ((12 * i302) + 1)
+        t313 <- rdU walk ((12 * i302) + 2)
+        t314 <- rdU walk ((12 * i302) + 3)
+        t315 <- rdU walk ((12 * i302) + 4)
+        t316 <- rdU walk ((12 * i302) + 5)
+        let !t317 = (if (abs s310) > 0 then 1.0 else 0.0)
+        let !t318 = (sqrt ((t306 * t306) + (t308 * t308)))
+        let !t319 = (t318 - 1.0)
+        let !t320 = (recip (2.0 * t318))
+        let !t321 = (((t320 * (t306 + t306)) * t303) + ((t320 * (t308 + t308)) * t305))
+        let !t322 = (if ((abs t319) - 1.0e-10) > 0 then (if (abs t321) > 0 then 1.0 else 0.0) else 0.0)
+        let !t323 = (1.0 - t317)
+        let !s324 = ((t317 * (if t322 > 0 then (t306 + (negate ((t319 / t321) * t303))) else t306)) + (t323 * t311))
+        let !s325 = ((t317 * (if t322 > 0 then (t307 + (negate ((t319 / t321) * t304))) else t307)) + (t323 * t312))
+        let !s326 = ((t317 * (if t322 > 0 then (t308 + (negate ((t319 / t321) * t305))) else t308)) + (t323 * t313))
+        chkI verts ((291 * i1) + (12 * i302)) 12 14
+        wrU verts (((291 * i1) + (12 * i302)) + 12) (if (1.0 - (abs (((s324 - s324) + (s325 - s325)) + (s326 - s326)))) > 0 then s324 else t2)
+        wrU verts (((291 * i1) + (12 * i302)) + 13) (if (1.0 - (abs (((s324 - s324) + (s325 - s325)) + (s326 - s326)))) > 0 then s325 else t3)
+        wrU verts (((291 * i1) + (12 * i302)) + 14) (if (1.0 - (abs (((s324 - s324) + (s325 - s325)) + (s326 - s326)))) > 0 then s326 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i329 -> do
-        let !d329 = fromIntegral i329 :: Double
-        t330 <- getR v18
-        t331 <- getR v19
-        setR v18 ((t330 * 0.9659258262890683) - (t331 * 0.25881904510252074))
-        setR v19 ((t331 * 0.9659258262890683) + (t330 * 0.25881904510252074))
-        let !s332 = ((t330 * t5) + (t331 * s14))
-        let !s333 = ((t330 * t6) + (t331 * s15))
-        let !s334 = ((t330 * t7) + (t331 * s16))
-        chkI walk (12 * i329) 3 5
-        wrU walk ((12 * i329) + 3) s332
-        wrU walk ((12 * i329) + 4) s333
-        wrU walk ((12 * i329) + 5) s334
+      loopI 0.0 24.0 $ \i327 -> do
+        let !d327 = fromIntegral i327 :: Double
+        t328 <- rdU locals 0
+        t329 <- rdU locals 1
+        wrU locals 0 ((t328 * 0.9659258262890683) - (t329 * 0.25881904510252074))
+        wrU locals 1 ((t329 * 0.9659258262890683) + (t328 * 0.25881904510252074))
+        let !s330 = ((t328 * t5) + (t329 * s14))
+        let !s331 = ((t328 * t6) + (t329 * s15))
+        let !s332 = ((t328 * t7) + (t329 * s16))
+        chkI walk (12 * i327) 3 5
+        wrU walk ((12 * i327) + 3) s330
+        wrU walk ((12 * i327) + 4) s331
+        wrU walk ((12 * i327) + 5) s332
         pure ()
-      loopI 0.0 24.0 $ \i335 -> do
-        let !d335 = fromIntegral i335 :: Double
-        chkI radii ((24 * i1) + i335) 0 0
-        t336 <- rdU radii ((24 * i1) + i335)
-        chkI walk (12 * i335) 3 11
-        t337 <- rdU walk ((12 * i335) + 3)
-        t338 <- rdU walk ((12 * i335) + 4)
-        t339 <- rdU walk ((12 * i335) + 5)
-        let !s340 = (t2 + (t336 * t337))
-        let !s341 = (t3 + (t336 * t338))
-        let !s342 = (t4 + (t336 * t339))
-        let !t343 = (sqrt ((s340 * s340) + (s342 * s342)))
-        let !t344 = (t343 - 1.0)
-        let !t345 = (recip (2.0 * t343))
-        let !t346 = (((t345 * (s340 + s340)) * t8) + ((t345 * (s342 + s342)) * t10))
-        let !t347 = (if ((abs t344) - 1.0e-10) > 0 then (if (abs t346) > 0 then 1.0 else 0.0) else 0.0)
-        let !s348 = (if t347 > 0 then (s340 + (negate ((t344 / t346) * t8))) else s340)
-        let !s349 = (if t347 > 0 then (s341 + (negate ((t344 / t346) * t9))) else s341)
-        let !s350 = (if t347 > 0 then (s342 + (negate ((t344 / t346) * t10))) else s342)
-        wrU walk ((12 * i335) + 9) s348
-        wrU walk ((12 * i335) + 10) s349
-        wrU walk ((12 * i335) + 11) s350
+      loopI 0.0 24.0 $ \i333 -> do
+        let !d333 = fromIntegral i333 :: Double
+        chkI radii ((24 * i1) + i333) 0 0
+        t334 <- rdU radii ((24 * i1) + i333)
+        chkI walk (12 * i333) 3 11
+        t335 <- rdU walk ((12 * i333) + 3)
+        t336 <- rdU walk ((12 * i333) + 4)
+        t337 <- rdU walk ((12 * i333) + 5)
+        let !s338 = (t2 + (t334 * t335))
+        let !s339 = (t3 + (t334 * t336))
+        let !s340 = (t4 + (t334 * t337))
+        let !t341 = (sqrt ((s338 * s338) + (s340 * s340)))
+        let !t342 = (t341 - 1.0)
+        let !t343 = (recip (2.0 * t341))
+        let !t344 = (((t343 * (s338 + s338)) * t8) + ((t343 * (s340 + s340)) * t10))
+        let !t345 = (if ((abs t342) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
+        let !s346 = (if t345 > 0 then (s338 + (negate ((t342 / t344) * t8))) else s338)
+        let !s347 = (if t345 > 0 then (s339 + (negate ((t342 / t344) * t9))) else s339)
+        let !s348 = (if t345 > 0 then (s340 + (negate ((t342 / t344) * t10))) else s340)
+        wrU walk ((12 * i333) + 9) s346
+        wrU walk ((12 * i333) + 10) s347
+        wrU walk ((12 * i333) + 11) s348
         pure ()
-      loopI 0.0 24.0 $ \i351 -> do
-        let !d351 = fromIntegral i351 :: Double
-        chkI walk (12 * i351) 9 11
-        t352 <- rdU walk ((12 * i351) + 9)
-        t353 <- rdU walk ((12 * i351) + 10)
-        t354 <- rdU walk ((12 * i351) + 11)
-        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
-        let !t356 = (t355 - 1.0)
-        let !t357 = (recip (2.0 * t355))
-        let !t358 = (((t357 * (t352 + t352)) * t8) + ((t357 * (t354 + t354)) * t10))
-        let !t359 = (if ((abs t356) - 1.0e-10) > 0 then (if (abs t358) > 0 then 1.0 else 0.0) else 0.0)
-        let !s360 = (if t359 > 0 then (t352 + (negate ((t356 / t358) * t8))) else t352)
-        let !s361 = (if t359 > 0 then (t353 + (negate ((t356 / t358) * t9))) else t353)
-        let !s362 = (if t359 > 0 then (t354 + (negate ((t356 / t358) * t10))) else t354)
-        wrU walk ((12 * i351) + 9) s360
-        wrU walk ((12 * i351) + 10) s361
-        wrU walk ((12 * i351) + 11) s362
+      loopI 0.0 24.0 $ \i349 -> do
+        let !d349 = fromIntegral i349 :: Double
+        chkI walk (12 * i349) 9 11
+        t350 <- rdU walk ((12 * i349) + 9)
+        t351 <- rdU walk ((12 * i349) + 10)
+        t352 <- rdU walk ((12 * i349) + 11)
+        let !t353 = (sqrt ((t350 * t350) + (t352 * t352)))
+        let !t354 = (t353 - 1.0)
+        let !t355 = (recip (2.0 * t353))
+        let !t356 = (((t355 * (t350 + t350)) * t8) + ((t355 * (t352 + t352)) * t10))
+        let !t357 = (if ((abs t354) - 1.0e-10) > 0 then (if (abs t356) > 0 then 1.0 else 0.0) else 0.0)
+        let !s358 = (if t357 > 0 then (t350 + (negate ((t354 / t356) * t8))) else t350)
+        let !s359 = (if t357 > 0 then (t351 + (negate ((t354 / t356) * t9))) else t351)
+        let !s360 = (if t357 > 0 then (t352 + (negate ((t354 / t356) * t10))) else t352)
+        wrU walk ((12 * i349) + 9) s358
+        wrU walk ((12 * i349) + 10) s359
+        wrU walk ((12 * i349) + 11) s360
         pure ()
-      loopI 0.0 24.0 $ \i363 -> do
-        let !d363 = fromIntegral i363 :: Double
-        chkI walk (12 * i363) 3 11
-        t364 <- rdU walk ((12 * i363) + 9)
-        t365 <- rdU walk ((12 * i363) + 10)
-        t366 <- rdU walk ((12 * i363) + 11)
-        chkI radii ((24 * i1) + i363) 0 0
-        t367 <- rdU radii ((24 * i1) + i363)
-        t368 <- rdU walk ((12 * i363) + 3)
-        t369 <- rdU walk ((12 * i363) + 4)
-        t370 <- rdU walk ((12 * i363) + 5)
-        let !t371 = (if (abs t367) > 0 then 1.0 else 0.0)
-        let !t372 = (sqrt ((t364 * t364) + (t366 * t366)))
-        let !t373 = (t372 - 1.0)
-        let !t374 = (recip (2.0 * t372))
-        let !t375 = (((t374 * (t364 + t364)) * t8) + ((t374 * (t366 + t366)) * t10))
-        let !t376 = (if ((abs t373) - 1.0e-10) > 0 then (if (abs t375) > 0 then 1.0 else 0.0) else 0.0)
-        let !t377 = (1.0 - t371)
-        let !s378 = ((t371 * (if t376 > 0 then (t364 + (negate ((t373 / t375) * t8))) else t364)) + (t377 * t2))
-        let !s379 = ((t371 * (if t376 > 0 then (t365 + (negate ((t373 / t375) * t9))) else t365)) + (t377 * t3))
-        let !s380 = ((t371 * (if t376 > 0 then (t366 + (negate ((t373 / t375) * t10))) else t366)) + (t377 * t4))
-        let !t381 = (1.0 - (abs (((s378 - s378) + (s379 - s379)) + (s380 - s380))))
-        let !s382 = (if t381 > 0 then s378 else t2)
-        let !s383 = (if t381 > 0 then s379 else t3)
-        let !s384 = (if t381 > 0 then s380 else t4)
-        chkI verts ((291 * i1) + (12 * i363)) 3 14
-        wrU verts (((291 * i1) + (12 * i363)) + 12) s382
-        wrU verts (((291 * i1) + (12 * i363)) + 13) s383
-        wrU verts (((291 * i1) + (12 * i363)) + 14) s384
-        wrU verts (((291 * i1) + (12 * i363)) + 3) (t2 + (0.25 * (s382 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i363)) + 4) (t3 + (0.25 * (s383 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i363)) + 5) (t4 + (0.25 * (s384 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i363)) + 6) (t2 + (0.5 * (s382 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i363)) + 7) (t3 + (0.5 * (s383 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i363)) + 8) (t4 + (0.5 * (s384 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i363)) + 9) (t2 + (0.75 * (s382 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i363)) + 10) (t3 + (0.75 * (s383 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i363)) + 11) (t4 + (0.75 * (s384 + (negate t4))))
+      loopI 0.0 24.0 $ \i361 -> do
+        let !d361 = fromIntegral i361 :: Double
+        chkI walk (12 * i361) 3 11
+        t362 <- rdU walk ((12 * i361) + 9)
+        t363 <- rdU walk ((12 * i361) + 10)
+        t364 <- rdU walk ((12 * i361) + 11)
+        chkI radii ((24 * i1) + i361) 0 0
+        t365 <- rdU radii ((24 * i1) + i361)
+        t366 <- rdU walk ((12 * i361) + 3)
+        t367 <- rdU walk ((12 * i361) + 4)
+        t368 <- rdU walk ((12 * i361) + 5)
+        let !t369 = (if (abs t365) > 0 then 1.0 else 0.0)
+        let !t370 = (sqrt ((t362 * t362) + (t364 * t364)))
+        let !t371 = (t370 - 1.0)
+        let !t372 = (recip (2.0 * t370))
+        let !t373 = (((t372 * (t362 + t362)) * t8) + ((t372 * (t364 + t364)) * t10))
+        let !t374 = (if ((abs t371) - 1.0e-10) > 0 then (if (abs t373) > 0 then 1.0 else 0.0) else 0.0)
+        let !t375 = (1.0 - t369)
+        let !s376 = ((t369 * (if t374 > 0 then (t362 + (negate ((t371 / t373) * t8))) else t362)) + (t375 * t2))
+        let !s377 = ((t369 * (if t374 > 0 then (t363 + (negate ((t371 / t373) * t9))) else t363)) + (t375 * t3))
+        let !s378 = ((t369 * (if t374 > 0 then (t364 + (negate ((t371 / t373) * t10))) else t364)) + (t375 * t4))
+        let !t379 = (1.0 - (abs (((s376 - s376) + (s377 - s377)) + (s378 - s378))))
+        let !s380 = (if t379 > 0 then s376 else t2)
+        let !s381 = (if t379 > 0 then s377 else t3)
+        let !s382 = (if t379 > 0 then s378 else t4)
+        chkI verts ((291 * i1) + (12 * i361)) 3 14
+        wrU verts (((291 * i1) + (12 * i361)) + 12) s380
+        wrU verts (((291 * i1) + (12 * i361)) + 13) s381
+        wrU verts (((291 * i1) + (12 * i361)) + 14) s382
+        wrU verts (((291 * i1) + (12 * i361)) + 3) (t2 + (0.25 * (s380 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i361)) + 4) (t3 + (0.25 * (s381 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i361)) + 5) (t4 + (0.25 * (s382 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i361)) + 6) (t2 + (0.5 * (s380 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i361)) + 7) (t3 + (0.5 * (s381 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i361)) + 8) (t4 + (0.5 * (s382 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i361)) + 9) (t2 + (0.75 * (s380 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i361)) + 10) (t3 + (0.75 * (s381 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i361)) + 11) (t4 + (0.75 * (s382 + (negate t4))))
         pure ()
       pure ()
     pure ()

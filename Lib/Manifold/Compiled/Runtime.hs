@@ -16,10 +16,7 @@ module Manifold.Compiled.Runtime
   , chkI
   , rdU
   , wrU
-  , NumRef
-  , newR
-  , getR
-  , setR
+  , newLocals
   , floorF
   , CompiledStep (..)
   , spaceFingerprint
@@ -33,6 +30,7 @@ import Linear.V3 (V3 (..))
 import Manifold.Field
 import Manifold.Space
 import Manifold.Stage.Expr (E, sym)
+import Manifold.Stage.Imp (localSlots)
 import Manifold.Stage.Print
 import Manifold.World (Layout (..), WorldArrays)
 
@@ -82,24 +80,10 @@ wrU :: Arr -> Int -> Double -> IO ()
 wrU a i !x = PV.unsafeWrite a i x
 {-# INLINE wrU #-}
 
--- | A mutable local (the printed @let@): one unboxed number.
-newtype NumRef = NumRef (PV.IOVector Double)
-
--- (not 'PV.replicate': its fill loop costs more than the one write)
-newR :: Double -> IO NumRef
-newR !x = do
-  r <- PV.unsafeNew 1
-  PV.unsafeWrite r 0 x
-  pure (NumRef r)
-{-# INLINE newR #-}
-
-getR :: NumRef -> IO Double
-getR (NumRef r) = PV.unsafeRead r 0
-{-# INLINE getR #-}
-
-setR :: NumRef -> Double -> IO ()
-setR (NumRef r) !x = PV.unsafeWrite r 0 x
-{-# INLINE setR #-}
+-- | The printed step's mutable locals, one array a phase call (see
+-- 'Manifold.Stage.Imp.localSlots').
+newLocals :: IO Arr
+newLocals = PV.replicate localSlots 0
 
 -- | A space's step, compiled: the phases in the order of
 -- 'Manifold.Step.stepPhases', for the space and polygon the fingerprint

@@ -6,8 +6,9 @@ module Manifold.Compiled.Shared (pairContacts) where
 
 import Manifold.Compiled.Runtime
 
-pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
-pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
+pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
+pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
+  chkI locals 0 32 49
   let !s0 = (negate (a3 * a6))
   let !s1 = (negate (a4 * a7))
   let !s2 = (negate (a5 * a8))
@@ -31,67 +32,67 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
   t16 <- rdU scalars ((6 * (truncate a2)) + 5)
   t17 <- rdU scalars ((6 * (truncate a2)) + 2)
   t18 <- rdU scalars ((6 * (truncate a2)) + 3)
-  v19 <- newR 0.0
-  v20 <- newR 0.0
-  v21 <- newR 0.0
-  v22 <- newR 0.0
-  v23 <- newR 0.0
-  v24 <- newR 0.0
-  v25 <- newR 0.0
-  loopI 0.0 24.0 $ \i26 -> do
-    let !d26 = fromIntegral i26 :: Double
-    chkI verts ((291 * (truncate a1)) + (12 * i26)) 12 14
-    t27 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 12)
-    t28 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 13)
-    t29 <- rdU verts (((291 * (truncate a1)) + (12 * i26)) + 14)
-    chkI probe i26 0 0
-    wrU probe i26 (-1.0)
-    let !t30 = (((a3 * t27) + a6) + (negate t3))
-    let !t31 = (((a4 * t28) + a7) + (negate t4))
-    let !t32 = (((a5 * t29) + a8) + (negate t5))
-    if ((t16 * t16) - (((t30 * t30) + (t31 * t31)) + (t32 * t32))) > 0 then do
-      let !s33 = (((t30 * t9) + (t31 * t10)) + (t32 * t11))
-      let !s34 = (((t30 * s12) + (t31 * s13)) + (t32 * s14))
-      let !s35 = (((t30 * t6) + (t31 * t7)) + (t32 * t8))
-      let !t36 = ((if s33 > 0 then (2.0 * (atan (s34 / ((sqrt ((s33 * s33) + (s34 * s34))) + s33)))) else (if (abs s34) > 0 then (2.0 * (atan (((sqrt ((s33 * s33) + (s34 * s34))) - s33) / s34))) else (if (negate s33) > 0 then 3.141592653589793 else 0.0))) - t15)
-      let !t37 = (floorF ((t36 - (6.283185307179586 * (floorF (t36 / 6.283185307179586)))) / 0.2617993877991494))
-      let !s38 = (if (t37 - 23.0) > 0 then 23.0 else t37)
-      chkI verts ((291 * (truncate a2)) + (12 * (truncate s38))) 12 14
-      t39 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s38))) + 12)
-      t40 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s38))) + 13)
-      t41 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s38))) + 14)
-      chkI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0))) 0 0
-      t42 <- rdU verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)))
-      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
-      t43 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
-      t44 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s38 - 24.0) + 1.5) > 0 then 0.0 else (s38 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-      let !t45 = (negate t3)
-      let !t46 = (negate t4)
-      let !t47 = (negate t5)
-      let !s48 = (((((t42 + t45) * t9) + ((t43 + t46) * t10)) + ((t44 + t47) * t11)) - ((((t39 + t45) * t9) + ((t40 + t46) * t10)) + ((t41 + t47) * t11)))
-      let !s49 = (((((t42 + t45) * s12) + ((t43 + t46) * s13)) + ((t44 + t47) * s14)) - ((((t39 + t45) * s12) + ((t40 + t46) * s13)) + ((t41 + t47) * s14)))
-      let !s50 = (sqrt ((s48 * s48) + (s49 * s49)))
-      let !t51 = (t39 + t45)
-      let !t52 = (t40 + t46)
-      let !t53 = (t41 + t47)
-      let !s54 = (if (t16 - (abs s35)) > 0 then (if s50 > 0 then (((s48 * (s34 - (((t51 * s12) + (t52 * s13)) + (t53 * s14)))) - (s49 * (s33 - (((t51 * t9) + (t52 * t10)) + (t53 * t11))))) / s50) else (-1.0)) else (-1.0))
-      let !t55 = (if s50 > 0 then (recip s50) else 0.0)
-      let !t56 = (s49 * t55)
-      let !t57 = ((negate s48) * t55)
-      let !s58 = ((t56 * t9) + (t57 * s12))
-      let !s59 = ((t56 * t10) + (t57 * s13))
-      let !s60 = ((t56 * t11) + (t57 * s14))
-      wrU probe i26 s54
-      t61 <- getR v19
-      if (s54 - t61) > 0 then do
-        setR v19 s54
-        setR v20 s58
-        setR v21 s59
-        setR v22 s60
-        setR v23 t39
-        setR v24 t40
-        setR v25 t41
+  wrU locals 32 0.0
+  wrU locals 33 0.0
+  wrU locals 34 0.0
+  wrU locals 35 0.0
+  wrU locals 36 0.0
+  wrU locals 37 0.0
+  wrU locals 38 0.0
+  loopI 0.0 24.0 $ \i19 -> do
+    let !d19 = fromIntegral i19 :: Double
+    chkI verts ((291 * (truncate a1)) + (12 * i19)) 12 14
+    t20 <- rdU verts (((291 * (truncate a1)) + (12 * i19)) + 12)
+    t21 <- rdU verts (((291 * (truncate a1)) + (12 * i19)) + 13)
+    t22 <- rdU verts (((291 * (truncate a1)) + (12 * i19)) + 14)
+    chkI probe i19 0 0
+    wrU probe i19 (-1.0)
+    let !t23 = (((a3 * t20) + a6) + (negate t3))
+    let !t24 = (((a4 * t21) + a7) + (negate t4))
+    let !t25 = (((a5 * t22) + a8) + (negate t5))
+    if ((t16 * t16) - (((t23 * t23) + (t24 * t24)) + (t25 * t25))) > 0 then do
+      let !s26 = (((t23 * t9) + (t24 * t10)) + (t25 * t11))
+      let !s27 = (((t23 * s12) + (t24 * s13)) + (t25 * s14))
+      let !s28 = (((t23 * t6) + (t24 * t7)) + (t25 * t8))
+      let !t29 = ((if s26 > 0 then (2.0 * (atan (s27 / ((sqrt ((s26 * s26) + (s27 * s27))) + s26)))) else (if (abs s27) > 0 then (2.0 * (atan (((sqrt ((s26 * s26) + (s27 * s27))) - s26) / s27))) else (if (negate s26) > 0 then 3.141592653589793 else 0.0))) - t15)
+      let !t30 = (floorF ((t29 - (6.283185307179586 * (floorF (t29 / 6.283185307179586)))) / 0.2617993877991494))
+      let !s31 = (if (t30 - 23.0) > 0 then 23.0 else t30)
+      chkI verts ((291 * (truncate a2)) + (12 * (truncate s31))) 12 14
+      t32 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s31))) + 12)
+      t33 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s31))) + 13)
+      t34 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s31))) + 14)
+      chkI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s31 - 24.0) + 1.5) > 0 then 0.0 else (s31 + 1.0)) * 4.0)) + 3.0))) 0 0
+      t35 <- rdU verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s31 - 24.0) + 1.5) > 0 then 0.0 else (s31 + 1.0)) * 4.0)) + 3.0)))
+      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s31 - 24.0) + 1.5) > 0 then 0.0 else (s31 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
+      t36 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s31 - 24.0) + 1.5) > 0 then 0.0 else (s31 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s31 - 24.0) + 1.5) > 0 then 0.0 else (s31 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
+      t37 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s31 - 24.0) + 1.5) > 0 then 0.0 else (s31 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      let !t38 = (negate t3)
+      let !t39 = (negate t4)
+      let !t40 = (negate t5)
+      let !s41 = (((((t35 + t38) * t9) + ((t36 + t39) * t10)) + ((t37 + t40) * t11)) - ((((t32 + t38) * t9) + ((t33 + t39) * t10)) + ((t34 + t40) * t11)))
+      let !s42 = (((((t35 + t38) * s12) + ((t36 + t39) * s13)) + ((t37 + t40) * s14)) - ((((t32 + t38) * s12) + ((t33 + t39) * s13)) + ((t34 + t40) * s14)))
+      let !s43 = (sqrt ((s41 * s41) + (s42 * s42)))
+      let !t44 = (t32 + t38)
+      let !t45 = (t33 + t39)
+      let !t46 = (t34 + t40)
+      let !s47 = (if (t16 - (abs s28)) > 0 then (if s43 > 0 then (((s41 * (s27 - (((t44 * s12) + (t45 * s13)) + (t46 * s14)))) - (s42 * (s26 - (((t44 * t9) + (t45 * t10)) + (t46 * t11))))) / s43) else (-1.0)) else (-1.0))
+      let !t48 = (if s43 > 0 then (recip s43) else 0.0)
+      let !t49 = (s42 * t48)
+      let !t50 = ((negate s41) * t48)
+      let !s51 = ((t49 * t9) + (t50 * s12))
+      let !s52 = ((t49 * t10) + (t50 * s13))
+      let !s53 = ((t49 * t11) + (t50 * s14))
+      wrU probe i19 s47
+      t54 <- rdU locals 32
+      if (s47 - t54) > 0 then do
+        wrU locals 32 s47
+        wrU locals 33 s51
+        wrU locals 34 s52
+        wrU locals 35 s53
+        wrU locals 36 t32
+        wrU locals 37 t33
+        wrU locals 38 t34
         pure ()
       else do
         pure ()
@@ -99,94 +100,94 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     else do
       pure ()
     pure ()
-  t62 <- getR v19
-  t63 <- getR v20
-  t64 <- getR v21
-  t65 <- getR v22
-  t66 <- getR v23
-  t67 <- getR v24
-  t68 <- getR v25
+  t55 <- rdU locals 32
+  t56 <- rdU locals 33
+  t57 <- rdU locals 34
+  t58 <- rdU locals 35
+  t59 <- rdU locals 36
+  t60 <- rdU locals 37
+  t61 <- rdU locals 38
   chkI pos (3 * (truncate a1)) 0 2
-  t69 <- rdU pos (3 * (truncate a1))
-  t70 <- rdU pos ((3 * (truncate a1)) + 1)
-  t71 <- rdU pos ((3 * (truncate a1)) + 2)
+  t62 <- rdU pos (3 * (truncate a1))
+  t63 <- rdU pos ((3 * (truncate a1)) + 1)
+  t64 <- rdU pos ((3 * (truncate a1)) + 2)
   chkI normal (3 * (truncate a1)) 0 2
-  t72 <- rdU normal (3 * (truncate a1))
-  t73 <- rdU normal ((3 * (truncate a1)) + 1)
-  t74 <- rdU normal ((3 * (truncate a1)) + 2)
+  t65 <- rdU normal (3 * (truncate a1))
+  t66 <- rdU normal ((3 * (truncate a1)) + 1)
+  t67 <- rdU normal ((3 * (truncate a1)) + 2)
   chkI axis (3 * (truncate a1)) 0 2
-  t75 <- rdU axis (3 * (truncate a1))
-  t76 <- rdU axis ((3 * (truncate a1)) + 1)
-  t77 <- rdU axis ((3 * (truncate a1)) + 2)
-  let !s78 = ((t73 * t77) - (t74 * t76))
-  let !s79 = ((t74 * t75) - (t72 * t77))
-  let !s80 = ((t72 * t76) - (t73 * t75))
+  t68 <- rdU axis (3 * (truncate a1))
+  t69 <- rdU axis ((3 * (truncate a1)) + 1)
+  t70 <- rdU axis ((3 * (truncate a1)) + 2)
+  let !s71 = ((t66 * t70) - (t67 * t69))
+  let !s72 = ((t67 * t68) - (t65 * t70))
+  let !s73 = ((t65 * t69) - (t66 * t68))
   chkI scalars (6 * (truncate a1)) 0 5
-  t81 <- rdU scalars (6 * (truncate a1))
-  t82 <- rdU scalars ((6 * (truncate a1)) + 5)
-  t83 <- rdU scalars ((6 * (truncate a1)) + 2)
-  t84 <- rdU scalars ((6 * (truncate a1)) + 3)
-  v85 <- newR 0.0
-  v86 <- newR 0.0
-  v87 <- newR 0.0
-  v88 <- newR 0.0
-  v89 <- newR 0.0
-  v90 <- newR 0.0
-  v91 <- newR 0.0
-  loopI 0.0 24.0 $ \i92 -> do
-    let !d92 = fromIntegral i92 :: Double
-    chkI verts ((291 * (truncate a2)) + (12 * i92)) 12 14
-    t93 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 12)
-    t94 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 13)
-    t95 <- rdU verts (((291 * (truncate a2)) + (12 * i92)) + 14)
-    chkI probe i92 24 24
-    wrU probe (i92 + 24) (-1.0)
-    let !t96 = (((a3 * t93) + s0) + (negate t69))
-    let !t97 = (((a4 * t94) + s1) + (negate t70))
-    let !t98 = (((a5 * t95) + s2) + (negate t71))
-    if ((t82 * t82) - (((t96 * t96) + (t97 * t97)) + (t98 * t98))) > 0 then do
-      let !s99 = (((t96 * t75) + (t97 * t76)) + (t98 * t77))
-      let !s100 = (((t96 * s78) + (t97 * s79)) + (t98 * s80))
-      let !s101 = (((t96 * t72) + (t97 * t73)) + (t98 * t74))
-      let !t102 = ((if s99 > 0 then (2.0 * (atan (s100 / ((sqrt ((s99 * s99) + (s100 * s100))) + s99)))) else (if (abs s100) > 0 then (2.0 * (atan (((sqrt ((s99 * s99) + (s100 * s100))) - s99) / s100))) else (if (negate s99) > 0 then 3.141592653589793 else 0.0))) - t81)
-      let !t103 = (floorF ((t102 - (6.283185307179586 * (floorF (t102 / 6.283185307179586)))) / 0.2617993877991494))
-      let !s104 = (if (t103 - 23.0) > 0 then 23.0 else t103)
-      chkI verts ((291 * (truncate a1)) + (12 * (truncate s104))) 12 14
-      t105 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s104))) + 12)
-      t106 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s104))) + 13)
-      t107 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s104))) + 14)
-      chkI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0))) 0 0
-      t108 <- rdU verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)))
-      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
-      t109 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
-      t110 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s104 - 24.0) + 1.5) > 0 then 0.0 else (s104 + 1.0)) * 4.0)) + 3.0)) + 2.0))
-      let !t111 = (negate t69)
-      let !t112 = (negate t70)
-      let !t113 = (negate t71)
-      let !s114 = (((((t108 + t111) * t75) + ((t109 + t112) * t76)) + ((t110 + t113) * t77)) - ((((t105 + t111) * t75) + ((t106 + t112) * t76)) + ((t107 + t113) * t77)))
-      let !s115 = (((((t108 + t111) * s78) + ((t109 + t112) * s79)) + ((t110 + t113) * s80)) - ((((t105 + t111) * s78) + ((t106 + t112) * s79)) + ((t107 + t113) * s80)))
-      let !s116 = (sqrt ((s114 * s114) + (s115 * s115)))
-      let !t117 = (t105 + t111)
-      let !t118 = (t106 + t112)
-      let !t119 = (t107 + t113)
-      let !s120 = (if (t82 - (abs s101)) > 0 then (if s116 > 0 then (((s114 * (s100 - (((t117 * s78) + (t118 * s79)) + (t119 * s80)))) - (s115 * (s99 - (((t117 * t75) + (t118 * t76)) + (t119 * t77))))) / s116) else (-1.0)) else (-1.0))
-      let !t121 = (if s116 > 0 then (recip s116) else 0.0)
-      let !t122 = (s115 * t121)
-      let !t123 = ((negate s114) * t121)
-      let !s124 = ((t122 * t75) + (t123 * s78))
-      let !s125 = ((t122 * t76) + (t123 * s79))
-      let !s126 = ((t122 * t77) + (t123 * s80))
-      wrU probe (i92 + 24) s120
-      t127 <- getR v85
-      if (s120 - t127) > 0 then do
-        setR v85 s120
-        setR v86 s124
-        setR v87 s125
-        setR v88 s126
-        setR v89 t105
-        setR v90 t106
-        setR v91 t107
+  t74 <- rdU scalars (6 * (truncate a1))
+  t75 <- rdU scalars ((6 * (truncate a1)) + 5)
+  t76 <- rdU scalars ((6 * (truncate a1)) + 2)
+  t77 <- rdU scalars ((6 * (truncate a1)) + 3)
+  wrU locals 39 0.0
+  wrU locals 40 0.0
+  wrU locals 41 0.0
+  wrU locals 42 0.0
+  wrU locals 43 0.0
+  wrU locals 44 0.0
+  wrU locals 45 0.0
+  loopI 0.0 24.0 $ \i78 -> do
+    let !d78 = fromIntegral i78 :: Double
+    chkI verts ((291 * (truncate a2)) + (12 * i78)) 12 14
+    t79 <- rdU verts (((291 * (truncate a2)) + (12 * i78)) + 12)
+    t80 <- rdU verts (((291 * (truncate a2)) + (12 * i78)) + 13)
+    t81 <- rdU verts (((291 * (truncate a2)) + (12 * i78)) + 14)
+    chkI probe i78 24 24
+    wrU probe (i78 + 24) (-1.0)
+    let !t82 = (((a3 * t79) + s0) + (negate t62))
+    let !t83 = (((a4 * t80) + s1) + (negate t63))
+    let !t84 = (((a5 * t81) + s2) + (negate t64))
+    if ((t75 * t75) - (((t82 * t82) + (t83 * t83)) + (t84 * t84))) > 0 then do
+      let !s85 = (((t82 * t68) + (t83 * t69)) + (t84 * t70))
+      let !s86 = (((t82 * s71) + (t83 * s72)) + (t84 * s73))
+      let !s87 = (((t82 * t65) + (t83 * t66)) + (t84 * t67))
+      let !t88 = ((if s85 > 0 then (2.0 * (atan (s86 / ((sqrt ((s85 * s85) + (s86 * s86))) + s85)))) else (if (abs s86) > 0 then (2.0 * (atan (((sqrt ((s85 * s85) + (s86 * s86))) - s85) / s86))) else (if (negate s85) > 0 then 3.141592653589793 else 0.0))) - t74)
+      let !t89 = (floorF ((t88 - (6.283185307179586 * (floorF (t88 / 6.283185307179586)))) / 0.2617993877991494))
+      let !s90 = (if (t89 - 23.0) > 0 then 23.0 else t89)
+      chkI verts ((291 * (truncate a1)) + (12 * (truncate s90))) 12 14
+      t91 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s90))) + 12)
+      t92 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s90))) + 13)
+      t93 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s90))) + 14)
+      chkI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s90 - 24.0) + 1.5) > 0 then 0.0 else (s90 + 1.0)) * 4.0)) + 3.0))) 0 0
+      t94 <- rdU verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s90 - 24.0) + 1.5) > 0 then 0.0 else (s90 + 1.0)) * 4.0)) + 3.0)))
+      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s90 - 24.0) + 1.5) > 0 then 0.0 else (s90 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
+      t95 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s90 - 24.0) + 1.5) > 0 then 0.0 else (s90 + 1.0)) * 4.0)) + 3.0)) + 1.0))
+      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s90 - 24.0) + 1.5) > 0 then 0.0 else (s90 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
+      t96 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s90 - 24.0) + 1.5) > 0 then 0.0 else (s90 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      let !t97 = (negate t62)
+      let !t98 = (negate t63)
+      let !t99 = (negate t64)
+      let !s100 = (((((t94 + t97) * t68) + ((t95 + t98) * t69)) + ((t96 + t99) * t70)) - ((((t91 + t97) * t68) + ((t92 + t98) * t69)) + ((t93 + t99) * t70)))
+      let !s101 = (((((t94 + t97) * s71) + ((t95 + t98) * s72)) + ((t96 + t99) * s73)) - ((((t91 + t97) * s71) + ((t92 + t98) * s72)) + ((t93 + t99) * s73)))
+      let !s102 = (sqrt ((s100 * s100) + (s101 * s101)))
+      let !t103 = (t91 + t97)
+      let !t104 = (t92 + t98)
+      let !t105 = (t93 + t99)
+      let !s106 = (if (t75 - (abs s87)) > 0 then (if s102 > 0 then (((s100 * (s86 - (((t103 * s71) + (t104 * s72)) + (t105 * s73)))) - (s101 * (s85 - (((t103 * t68) + (t104 * t69)) + (t105 * t70))))) / s102) else (-1.0)) else (-1.0))
+      let !t107 = (if s102 > 0 then (recip s102) else 0.0)
+      let !t108 = (s101 * t107)
+      let !t109 = ((negate s100) * t107)
+      let !s110 = ((t108 * t68) + (t109 * s71))
+      let !s111 = ((t108 * t69) + (t109 * s72))
+      let !s112 = ((t108 * t70) + (t109 * s73))
+      wrU probe (i78 + 24) s106
+      t113 <- rdU locals 39
+      if (s106 - t113) > 0 then do
+        wrU locals 39 s106
+        wrU locals 40 s110
+        wrU locals 41 s111
+        wrU locals 42 s112
+        wrU locals 43 t91
+        wrU locals 44 t92
+        wrU locals 45 t93
         pure ()
       else do
         pure ()
@@ -194,84 +195,84 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     else do
       pure ()
     pure ()
-  t128 <- getR v85
-  t129 <- getR v86
-  t130 <- getR v87
-  t131 <- getR v88
-  t132 <- getR v89
-  t133 <- getR v90
-  t134 <- getR v91
-  let !s135 = (t128 - (1.1 * t62))
-  let !s136 = (if (t62 - t128) > 0 then t62 else t128)
-  if s136 > 0 then do
-    let !s137 = (if s135 > 0 then a2 else a1)
-    let !s138 = (if s135 > 0 then a1 else a2)
-    let !s139 = (if s135 > 0 then s0 else a6)
-    let !s140 = (if s135 > 0 then s1 else a7)
-    let !s141 = (if s135 > 0 then s2 else a8)
-    let !s142 = (if s135 > 0 then 24.0 else 0.0)
-    let !s143 = (if s135 > 0 then t129 else t63)
-    let !s144 = (if s135 > 0 then t130 else t64)
-    let !s145 = (if s135 > 0 then t131 else t65)
-    let !s146 = (if s135 > 0 then t132 else t66)
-    let !s147 = (if s135 > 0 then t133 else t67)
-    let !s148 = (if s135 > 0 then t134 else t68)
-    chkI pos (3 * (truncate s138)) 0 2
-    t149 <- rdU pos (3 * (truncate s138))
-    t150 <- rdU pos ((3 * (truncate s138)) + 1)
-    t151 <- rdU pos ((3 * (truncate s138)) + 2)
-    chkI normal (3 * (truncate s138)) 0 2
-    t152 <- rdU normal (3 * (truncate s138))
-    t153 <- rdU normal ((3 * (truncate s138)) + 1)
-    t154 <- rdU normal ((3 * (truncate s138)) + 2)
-    chkI axis (3 * (truncate s138)) 0 2
-    t155 <- rdU axis (3 * (truncate s138))
-    t156 <- rdU axis ((3 * (truncate s138)) + 1)
-    t157 <- rdU axis ((3 * (truncate s138)) + 2)
-    let !s158 = ((t153 * t157) - (t154 * t156))
-    let !s159 = ((t154 * t155) - (t152 * t157))
-    let !s160 = ((t152 * t156) - (t153 * t155))
-    chkI scalars (6 * (truncate s138)) 0 5
-    t161 <- rdU scalars (6 * (truncate s138))
-    t162 <- rdU scalars ((6 * (truncate s138)) + 5)
-    t163 <- rdU scalars ((6 * (truncate s138)) + 2)
-    t164 <- rdU scalars ((6 * (truncate s138)) + 3)
-    chkI pos (3 * (truncate s137)) 0 2
-    t165 <- rdU pos (3 * (truncate s137))
-    t166 <- rdU pos ((3 * (truncate s137)) + 1)
-    t167 <- rdU pos ((3 * (truncate s137)) + 2)
-    let !s168 = ((((((a3 * t165) + s139) + (negate t149)) * s143) + ((((a4 * t166) + s140) + (negate t150)) * s144)) + ((((a5 * t167) + s141) + (negate t151)) * s145))
-    let !s169 = (if s168 > 0 then s143 else (negate s143))
-    let !s170 = (if s168 > 0 then s144 else (negate s144))
-    let !s171 = (if s168 > 0 then s145 else (negate s145))
-    let !s172 = ((t153 * s171) - (t154 * s170))
-    let !s173 = ((t154 * s169) - (t152 * s171))
-    let !s174 = ((t152 * s170) - (t153 * s169))
-    v175 <- newR 1.0e300
-    v176 <- newR (-1.0e300)
-    v177 <- newR (-1.0)
-    v178 <- newR (-1.0)
-    loopI 0.0 24.0 $ \i179 -> do
-      let !d179 = fromIntegral i179 :: Double
-      chkI verts ((291 * (truncate s137)) + (12 * i179)) 12 14
-      t180 <- rdU verts (((291 * (truncate s137)) + (12 * i179)) + 12)
-      t181 <- rdU verts (((291 * (truncate s137)) + (12 * i179)) + 13)
-      t182 <- rdU verts (((291 * (truncate s137)) + (12 * i179)) + 14)
-      chkI probe ((truncate s142) + i179) 0 0
-      t183 <- rdU probe ((truncate s142) + i179)
-      if t183 > 0 then do
-        let !s184 = ((((((a3 * t180) + s139) + (negate t149)) * s172) + ((((a4 * t181) + s140) + (negate t150)) * s173)) + ((((a5 * t182) + s141) + (negate t151)) * s174))
-        t185 <- getR v175
-        if (t185 - s184) > 0 then do
-          setR v175 s184
-          setR v177 d179
+  t114 <- rdU locals 39
+  t115 <- rdU locals 40
+  t116 <- rdU locals 41
+  t117 <- rdU locals 42
+  t118 <- rdU locals 43
+  t119 <- rdU locals 44
+  t120 <- rdU locals 45
+  let !s121 = (t114 - (1.1 * t55))
+  let !s122 = (if (t55 - t114) > 0 then t55 else t114)
+  if s122 > 0 then do
+    let !s123 = (if s121 > 0 then a2 else a1)
+    let !s124 = (if s121 > 0 then a1 else a2)
+    let !s125 = (if s121 > 0 then s0 else a6)
+    let !s126 = (if s121 > 0 then s1 else a7)
+    let !s127 = (if s121 > 0 then s2 else a8)
+    let !s128 = (if s121 > 0 then 24.0 else 0.0)
+    let !s129 = (if s121 > 0 then t115 else t56)
+    let !s130 = (if s121 > 0 then t116 else t57)
+    let !s131 = (if s121 > 0 then t117 else t58)
+    let !s132 = (if s121 > 0 then t118 else t59)
+    let !s133 = (if s121 > 0 then t119 else t60)
+    let !s134 = (if s121 > 0 then t120 else t61)
+    chkI pos (3 * (truncate s124)) 0 2
+    t135 <- rdU pos (3 * (truncate s124))
+    t136 <- rdU pos ((3 * (truncate s124)) + 1)
+    t137 <- rdU pos ((3 * (truncate s124)) + 2)
+    chkI normal (3 * (truncate s124)) 0 2
+    t138 <- rdU normal (3 * (truncate s124))
+    t139 <- rdU normal ((3 * (truncate s124)) + 1)
+    t140 <- rdU normal ((3 * (truncate s124)) + 2)
+    chkI axis (3 * (truncate s124)) 0 2
+    t141 <- rdU axis (3 * (truncate s124))
+    t142 <- rdU axis ((3 * (truncate s124)) + 1)
+    t143 <- rdU axis ((3 * (truncate s124)) + 2)
+    let !s144 = ((t139 * t143) - (t140 * t142))
+    let !s145 = ((t140 * t141) - (t138 * t143))
+    let !s146 = ((t138 * t142) - (t139 * t141))
+    chkI scalars (6 * (truncate s124)) 0 5
+    t147 <- rdU scalars (6 * (truncate s124))
+    t148 <- rdU scalars ((6 * (truncate s124)) + 5)
+    t149 <- rdU scalars ((6 * (truncate s124)) + 2)
+    t150 <- rdU scalars ((6 * (truncate s124)) + 3)
+    chkI pos (3 * (truncate s123)) 0 2
+    t151 <- rdU pos (3 * (truncate s123))
+    t152 <- rdU pos ((3 * (truncate s123)) + 1)
+    t153 <- rdU pos ((3 * (truncate s123)) + 2)
+    let !s154 = ((((((a3 * t151) + s125) + (negate t135)) * s129) + ((((a4 * t152) + s126) + (negate t136)) * s130)) + ((((a5 * t153) + s127) + (negate t137)) * s131))
+    let !s155 = (if s154 > 0 then s129 else (negate s129))
+    let !s156 = (if s154 > 0 then s130 else (negate s130))
+    let !s157 = (if s154 > 0 then s131 else (negate s131))
+    let !s158 = ((t139 * s157) - (t140 * s156))
+    let !s159 = ((t140 * s155) - (t138 * s157))
+    let !s160 = ((t138 * s156) - (t139 * s155))
+    wrU locals 46 1.0e300
+    wrU locals 47 (-1.0e300)
+    wrU locals 48 (-1.0)
+    wrU locals 49 (-1.0)
+    loopI 0.0 24.0 $ \i161 -> do
+      let !d161 = fromIntegral i161 :: Double
+      chkI verts ((291 * (truncate s123)) + (12 * i161)) 12 14
+      t162 <- rdU verts (((291 * (truncate s123)) + (12 * i161)) + 12)
+      t163 <- rdU verts (((291 * (truncate s123)) + (12 * i161)) + 13)
+      t164 <- rdU verts (((291 * (truncate s123)) + (12 * i161)) + 14)
+      chkI probe ((truncate s128) + i161) 0 0
+      t165 <- rdU probe ((truncate s128) + i161)
+      if t165 > 0 then do
+        let !s166 = ((((((a3 * t162) + s125) + (negate t135)) * s158) + ((((a4 * t163) + s126) + (negate t136)) * s159)) + ((((a5 * t164) + s127) + (negate t137)) * s160))
+        t167 <- rdU locals 46
+        if (t167 - s166) > 0 then do
+          wrU locals 46 s166
+          wrU locals 48 d161
           pure ()
         else do
           pure ()
-        t186 <- getR v176
-        if (s184 - t186) > 0 then do
-          setR v176 s184
-          setR v178 d179
+        t168 <- rdU locals 47
+        if (s166 - t168) > 0 then do
+          wrU locals 47 s166
+          wrU locals 49 d161
           pure ()
         else do
           pure ()
@@ -279,219 +280,219 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       else do
         pure ()
       pure ()
-    t187 <- getR v177
-    t188 <- getR v178
-    chkI verts ((291 * (truncate s137)) + (12 * (truncate t187))) 12 14
-    t189 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t187))) + 12)
-    t190 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t187))) + 13)
-    t191 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t187))) + 14)
-    let !s192 = ((a3 * t189) + s139)
-    let !s193 = ((a4 * t190) + s140)
-    let !s194 = ((a5 * t191) + s141)
+    t169 <- rdU locals 48
+    t170 <- rdU locals 49
+    chkI verts ((291 * (truncate s123)) + (12 * (truncate t169))) 12 14
+    t171 <- rdU verts (((291 * (truncate s123)) + (12 * (truncate t169))) + 12)
+    t172 <- rdU verts (((291 * (truncate s123)) + (12 * (truncate t169))) + 13)
+    t173 <- rdU verts (((291 * (truncate s123)) + (12 * (truncate t169))) + 14)
+    let !s174 = ((a3 * t171) + s125)
+    let !s175 = ((a4 * t172) + s126)
+    let !s176 = ((a5 * t173) + s127)
     chkI meta 0 2 3
-    t195 <- rdU meta 2
-    t196 <- rdU meta 3
-    if (((8.0 * (if (1.0 - t196) > 0 then 1.0 else t196)) - t195) - 0.5) > 0 then do
-      wrU meta 2 (t195 + 1.0)
-      t197 <- rdU pos (3 * (truncate s137))
-      t198 <- rdU pos ((3 * (truncate s137)) + 1)
-      t199 <- rdU pos ((3 * (truncate s137)) + 2)
-      chkI normal (3 * (truncate s137)) 0 2
-      t200 <- rdU normal (3 * (truncate s137))
-      t201 <- rdU normal ((3 * (truncate s137)) + 1)
-      t202 <- rdU normal ((3 * (truncate s137)) + 2)
-      chkI axis (3 * (truncate s137)) 0 2
-      t203 <- rdU axis (3 * (truncate s137))
-      t204 <- rdU axis ((3 * (truncate s137)) + 1)
-      t205 <- rdU axis ((3 * (truncate s137)) + 2)
-      let !s206 = ((t201 * t205) - (t202 * t204))
-      let !s207 = ((t202 * t203) - (t200 * t205))
-      let !s208 = ((t200 * t204) - (t201 * t203))
-      chkI scalars (6 * (truncate s137)) 0 5
-      t209 <- rdU scalars (6 * (truncate s137))
-      t210 <- rdU scalars ((6 * (truncate s137)) + 5)
-      t211 <- rdU scalars ((6 * (truncate s137)) + 2)
-      t212 <- rdU scalars ((6 * (truncate s137)) + 3)
-      chkI contacts (30 * (truncate t195)) 0 29
-      wrU contacts (30 * (truncate t195)) s137
-      wrU contacts ((30 * (truncate t195)) + 1) s138
-      wrU contacts ((30 * (truncate t195)) + 2) a1
-      wrU contacts ((30 * (truncate t195)) + 3) a0
-      let !t213 = (a3 * s169)
-      wrU contacts ((30 * (truncate t195)) + 4) (t213 + (negate ((((t200 * t213) + (t201 * (a4 * s170))) + (t202 * (a5 * s171))) * t200)))
-      let !t214 = (a4 * s170)
-      wrU contacts ((30 * (truncate t195)) + 5) (t214 + (negate ((((t200 * t213) + (t201 * t214)) + (t202 * (a5 * s171))) * t201)))
-      let !t215 = (a5 * s171)
-      wrU contacts ((30 * (truncate t195)) + 6) (t215 + (negate ((((t200 * t213) + (t201 * t214)) + (t202 * t215)) * t202)))
-      let !t216 = (t190 + (negate t198))
-      let !t217 = (t191 + (negate t199))
-      let !t218 = (t189 + (negate t197))
-      wrU contacts ((30 * (truncate t195)) + 7) (((((t216 * t215) - (t217 * t214)) * t200) + (((t217 * t213) - (t218 * t215)) * t201)) + (((t218 * t214) - (t216 * t213)) * t202))
-      let !t219 = ((t201 * t215) - (t202 * t214))
-      wrU contacts ((30 * (truncate t195)) + 12) (t219 + (negate ((((t200 * t219) + (t201 * ((t202 * t213) - (t200 * t215)))) + (t202 * ((t200 * t214) - (t201 * t213)))) * t200)))
-      let !t220 = ((t202 * t213) - (t200 * t215))
-      wrU contacts ((30 * (truncate t195)) + 13) (t220 + (negate ((((t200 * t219) + (t201 * t220)) + (t202 * ((t200 * t214) - (t201 * t213)))) * t201)))
-      let !t221 = ((t200 * t214) - (t201 * t213))
-      wrU contacts ((30 * (truncate t195)) + 14) (t221 + (negate ((((t200 * t219) + (t201 * t220)) + (t202 * t221)) * t202)))
-      wrU contacts ((30 * (truncate t195)) + 15) (((((t216 * t221) - (t217 * t220)) * t200) + (((t217 * t219) - (t218 * t221)) * t201)) + (((t218 * t220) - (t216 * t219)) * t202))
-      wrU contacts ((30 * (truncate t195)) + 20) (if s168 > 0 then ((((s146 + (negate s192)) * s169) + ((s147 + (negate s193)) * s170)) + ((s148 + (negate s194)) * s171)) else s136)
-      wrU contacts ((30 * (truncate t195)) + 26) 1.0
-      wrU contacts ((30 * (truncate t195)) + 27) t189
-      wrU contacts ((30 * (truncate t195)) + 28) t190
-      wrU contacts ((30 * (truncate t195)) + 29) t191
-      if (s138 + 0.5) > 0 then do
-        t222 <- rdU pos (3 * (truncate s138))
-        t223 <- rdU pos ((3 * (truncate s138)) + 1)
-        t224 <- rdU pos ((3 * (truncate s138)) + 2)
-        t225 <- rdU normal (3 * (truncate s138))
-        t226 <- rdU normal ((3 * (truncate s138)) + 1)
-        t227 <- rdU normal ((3 * (truncate s138)) + 2)
-        t228 <- rdU axis (3 * (truncate s138))
-        t229 <- rdU axis ((3 * (truncate s138)) + 1)
-        t230 <- rdU axis ((3 * (truncate s138)) + 2)
-        let !s231 = ((t226 * t230) - (t227 * t229))
-        let !s232 = ((t227 * t228) - (t225 * t230))
-        let !s233 = ((t225 * t229) - (t226 * t228))
-        t234 <- rdU scalars (6 * (truncate s138))
-        t235 <- rdU scalars ((6 * (truncate s138)) + 5)
-        t236 <- rdU scalars ((6 * (truncate s138)) + 2)
-        t237 <- rdU scalars ((6 * (truncate s138)) + 3)
-        wrU contacts ((30 * (truncate t195)) + 8) (s169 + (negate ((((t225 * s169) + (t226 * s170)) + (t227 * s171)) * t225)))
-        wrU contacts ((30 * (truncate t195)) + 9) (s170 + (negate ((((t225 * s169) + (t226 * s170)) + (t227 * s171)) * t226)))
-        wrU contacts ((30 * (truncate t195)) + 10) (s171 + (negate ((((t225 * s169) + (t226 * s170)) + (t227 * s171)) * t227)))
-        let !t238 = (s193 + (negate t223))
-        let !t239 = (s194 + (negate t224))
-        let !t240 = (s192 + (negate t222))
-        wrU contacts ((30 * (truncate t195)) + 11) (((((t238 * s171) - (t239 * s170)) * t225) + (((t239 * s169) - (t240 * s171)) * t226)) + (((t240 * s170) - (t238 * s169)) * t227))
-        let !t241 = (a3 * t219)
-        wrU contacts ((30 * (truncate t195)) + 16) (t241 + (negate ((((t225 * t241) + (t226 * (a4 * t220))) + (t227 * (a5 * t221))) * t225)))
-        let !t242 = (a4 * t220)
-        wrU contacts ((30 * (truncate t195)) + 17) (t242 + (negate ((((t225 * t241) + (t226 * t242)) + (t227 * (a5 * t221))) * t226)))
-        let !t243 = (a5 * t221)
-        wrU contacts ((30 * (truncate t195)) + 18) (t243 + (negate ((((t225 * t241) + (t226 * t242)) + (t227 * t243)) * t227)))
-        wrU contacts ((30 * (truncate t195)) + 19) (((((t238 * t243) - (t239 * t242)) * t225) + (((t239 * t241) - (t240 * t243)) * t226)) + (((t240 * t242) - (t238 * t241)) * t227))
+    t177 <- rdU meta 2
+    t178 <- rdU meta 3
+    if (((8.0 * (if (1.0 - t178) > 0 then 1.0 else t178)) - t177) - 0.5) > 0 then do
+      wrU meta 2 (t177 + 1.0)
+      t179 <- rdU pos (3 * (truncate s123))
+      t180 <- rdU pos ((3 * (truncate s123)) + 1)
+      t181 <- rdU pos ((3 * (truncate s123)) + 2)
+      chkI normal (3 * (truncate s123)) 0 2
+      t182 <- rdU normal (3 * (truncate s123))
+      t183 <- rdU normal ((3 * (truncate s123)) + 1)
+      t184 <- rdU normal ((3 * (truncate s123)) + 2)
+      chkI axis (3 * (truncate s123)) 0 2
+      t185 <- rdU axis (3 * (truncate s123))
+      t186 <- rdU axis ((3 * (truncate s123)) + 1)
+      t187 <- rdU axis ((3 * (truncate s123)) + 2)
+      let !s188 = ((t183 * t187) - (t184 * t186))
+      let !s189 = ((t184 * t185) - (t182 * t187))
+      let !s190 = ((t182 * t186) - (t183 * t185))
+      chkI scalars (6 * (truncate s123)) 0 5
+      t191 <- rdU scalars (6 * (truncate s123))
+      t192 <- rdU scalars ((6 * (truncate s123)) + 5)
+      t193 <- rdU scalars ((6 * (truncate s123)) + 2)
+      t194 <- rdU scalars ((6 * (truncate s123)) + 3)
+      chkI contacts (30 * (truncate t177)) 0 29
+      wrU contacts (30 * (truncate t177)) s123
+      wrU contacts ((30 * (truncate t177)) + 1) s124
+      wrU contacts ((30 * (truncate t177)) + 2) a1
+      wrU contacts ((30 * (truncate t177)) + 3) a0
+      let !t195 = (a3 * s155)
+      wrU contacts ((30 * (truncate t177)) + 4) (t195 + (negate ((((t182 * t195) + (t183 * (a4 * s156))) + (t184 * (a5 * s157))) * t182)))
+      let !t196 = (a4 * s156)
+      wrU contacts ((30 * (truncate t177)) + 5) (t196 + (negate ((((t182 * t195) + (t183 * t196)) + (t184 * (a5 * s157))) * t183)))
+      let !t197 = (a5 * s157)
+      wrU contacts ((30 * (truncate t177)) + 6) (t197 + (negate ((((t182 * t195) + (t183 * t196)) + (t184 * t197)) * t184)))
+      let !t198 = (t172 + (negate t180))
+      let !t199 = (t173 + (negate t181))
+      let !t200 = (t171 + (negate t179))
+      wrU contacts ((30 * (truncate t177)) + 7) (((((t198 * t197) - (t199 * t196)) * t182) + (((t199 * t195) - (t200 * t197)) * t183)) + (((t200 * t196) - (t198 * t195)) * t184))
+      let !t201 = ((t183 * t197) - (t184 * t196))
+      wrU contacts ((30 * (truncate t177)) + 12) (t201 + (negate ((((t182 * t201) + (t183 * ((t184 * t195) - (t182 * t197)))) + (t184 * ((t182 * t196) - (t183 * t195)))) * t182)))
+      let !t202 = ((t184 * t195) - (t182 * t197))
+      wrU contacts ((30 * (truncate t177)) + 13) (t202 + (negate ((((t182 * t201) + (t183 * t202)) + (t184 * ((t182 * t196) - (t183 * t195)))) * t183)))
+      let !t203 = ((t182 * t196) - (t183 * t195))
+      wrU contacts ((30 * (truncate t177)) + 14) (t203 + (negate ((((t182 * t201) + (t183 * t202)) + (t184 * t203)) * t184)))
+      wrU contacts ((30 * (truncate t177)) + 15) (((((t198 * t203) - (t199 * t202)) * t182) + (((t199 * t201) - (t200 * t203)) * t183)) + (((t200 * t202) - (t198 * t201)) * t184))
+      wrU contacts ((30 * (truncate t177)) + 20) (if s154 > 0 then ((((s132 + (negate s174)) * s155) + ((s133 + (negate s175)) * s156)) + ((s134 + (negate s176)) * s157)) else s122)
+      wrU contacts ((30 * (truncate t177)) + 26) 1.0
+      wrU contacts ((30 * (truncate t177)) + 27) t171
+      wrU contacts ((30 * (truncate t177)) + 28) t172
+      wrU contacts ((30 * (truncate t177)) + 29) t173
+      if (s124 + 0.5) > 0 then do
+        t204 <- rdU pos (3 * (truncate s124))
+        t205 <- rdU pos ((3 * (truncate s124)) + 1)
+        t206 <- rdU pos ((3 * (truncate s124)) + 2)
+        t207 <- rdU normal (3 * (truncate s124))
+        t208 <- rdU normal ((3 * (truncate s124)) + 1)
+        t209 <- rdU normal ((3 * (truncate s124)) + 2)
+        t210 <- rdU axis (3 * (truncate s124))
+        t211 <- rdU axis ((3 * (truncate s124)) + 1)
+        t212 <- rdU axis ((3 * (truncate s124)) + 2)
+        let !s213 = ((t208 * t212) - (t209 * t211))
+        let !s214 = ((t209 * t210) - (t207 * t212))
+        let !s215 = ((t207 * t211) - (t208 * t210))
+        t216 <- rdU scalars (6 * (truncate s124))
+        t217 <- rdU scalars ((6 * (truncate s124)) + 5)
+        t218 <- rdU scalars ((6 * (truncate s124)) + 2)
+        t219 <- rdU scalars ((6 * (truncate s124)) + 3)
+        wrU contacts ((30 * (truncate t177)) + 8) (s155 + (negate ((((t207 * s155) + (t208 * s156)) + (t209 * s157)) * t207)))
+        wrU contacts ((30 * (truncate t177)) + 9) (s156 + (negate ((((t207 * s155) + (t208 * s156)) + (t209 * s157)) * t208)))
+        wrU contacts ((30 * (truncate t177)) + 10) (s157 + (negate ((((t207 * s155) + (t208 * s156)) + (t209 * s157)) * t209)))
+        let !t220 = (s175 + (negate t205))
+        let !t221 = (s176 + (negate t206))
+        let !t222 = (s174 + (negate t204))
+        wrU contacts ((30 * (truncate t177)) + 11) (((((t220 * s157) - (t221 * s156)) * t207) + (((t221 * s155) - (t222 * s157)) * t208)) + (((t222 * s156) - (t220 * s155)) * t209))
+        let !t223 = (a3 * t201)
+        wrU contacts ((30 * (truncate t177)) + 16) (t223 + (negate ((((t207 * t223) + (t208 * (a4 * t202))) + (t209 * (a5 * t203))) * t207)))
+        let !t224 = (a4 * t202)
+        wrU contacts ((30 * (truncate t177)) + 17) (t224 + (negate ((((t207 * t223) + (t208 * t224)) + (t209 * (a5 * t203))) * t208)))
+        let !t225 = (a5 * t203)
+        wrU contacts ((30 * (truncate t177)) + 18) (t225 + (negate ((((t207 * t223) + (t208 * t224)) + (t209 * t225)) * t209)))
+        wrU contacts ((30 * (truncate t177)) + 19) (((((t220 * t225) - (t221 * t224)) * t207) + (((t221 * t223) - (t222 * t225)) * t208)) + (((t222 * t224) - (t220 * t223)) * t209))
         pure ()
       else do
-        wrU contacts ((30 * (truncate t195)) + 8) 0.0
-        wrU contacts ((30 * (truncate t195)) + 9) 0.0
-        wrU contacts ((30 * (truncate t195)) + 10) 0.0
-        wrU contacts ((30 * (truncate t195)) + 11) 0.0
-        wrU contacts ((30 * (truncate t195)) + 16) 0.0
-        wrU contacts ((30 * (truncate t195)) + 17) 0.0
-        wrU contacts ((30 * (truncate t195)) + 18) 0.0
-        wrU contacts ((30 * (truncate t195)) + 19) 0.0
+        wrU contacts ((30 * (truncate t177)) + 8) 0.0
+        wrU contacts ((30 * (truncate t177)) + 9) 0.0
+        wrU contacts ((30 * (truncate t177)) + 10) 0.0
+        wrU contacts ((30 * (truncate t177)) + 11) 0.0
+        wrU contacts ((30 * (truncate t177)) + 16) 0.0
+        wrU contacts ((30 * (truncate t177)) + 17) 0.0
+        wrU contacts ((30 * (truncate t177)) + 18) 0.0
+        wrU contacts ((30 * (truncate t177)) + 19) 0.0
         pure ()
       pure ()
     else do
       chkI meta 0 6 6
-      t244 <- rdU meta 6
-      wrU meta 6 (t244 + 1.0)
+      t226 <- rdU meta 6
+      wrU meta 6 (t226 + 1.0)
       pure ()
-    if (abs (t188 - t187)) > 0 then do
-      chkI verts ((291 * (truncate s137)) + (12 * (truncate t188))) 12 14
-      t245 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t188))) + 12)
-      t246 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t188))) + 13)
-      t247 <- rdU verts (((291 * (truncate s137)) + (12 * (truncate t188))) + 14)
-      let !s248 = ((a3 * t245) + s139)
-      let !s249 = ((a4 * t246) + s140)
-      let !s250 = ((a5 * t247) + s141)
-      t251 <- rdU meta 2
-      t252 <- rdU meta 3
-      if (((8.0 * (if (1.0 - t252) > 0 then 1.0 else t252)) - t251) - 0.5) > 0 then do
-        wrU meta 2 (t251 + 1.0)
-        t253 <- rdU pos (3 * (truncate s137))
-        t254 <- rdU pos ((3 * (truncate s137)) + 1)
-        t255 <- rdU pos ((3 * (truncate s137)) + 2)
-        chkI normal (3 * (truncate s137)) 0 2
-        t256 <- rdU normal (3 * (truncate s137))
-        t257 <- rdU normal ((3 * (truncate s137)) + 1)
-        t258 <- rdU normal ((3 * (truncate s137)) + 2)
-        chkI axis (3 * (truncate s137)) 0 2
-        t259 <- rdU axis (3 * (truncate s137))
-        t260 <- rdU axis ((3 * (truncate s137)) + 1)
-        t261 <- rdU axis ((3 * (truncate s137)) + 2)
-        let !s262 = ((t257 * t261) - (t258 * t260))
-        let !s263 = ((t258 * t259) - (t256 * t261))
-        let !s264 = ((t256 * t260) - (t257 * t259))
-        chkI scalars (6 * (truncate s137)) 0 5
-        t265 <- rdU scalars (6 * (truncate s137))
-        t266 <- rdU scalars ((6 * (truncate s137)) + 5)
-        t267 <- rdU scalars ((6 * (truncate s137)) + 2)
-        t268 <- rdU scalars ((6 * (truncate s137)) + 3)
-        chkI contacts (30 * (truncate t251)) 0 29
-        wrU contacts (30 * (truncate t251)) s137
-        wrU contacts ((30 * (truncate t251)) + 1) s138
-        wrU contacts ((30 * (truncate t251)) + 2) a1
-        wrU contacts ((30 * (truncate t251)) + 3) (a0 + 1.0)
-        let !t269 = (a3 * s169)
-        wrU contacts ((30 * (truncate t251)) + 4) (t269 + (negate ((((t256 * t269) + (t257 * (a4 * s170))) + (t258 * (a5 * s171))) * t256)))
-        let !t270 = (a4 * s170)
-        wrU contacts ((30 * (truncate t251)) + 5) (t270 + (negate ((((t256 * t269) + (t257 * t270)) + (t258 * (a5 * s171))) * t257)))
-        let !t271 = (a5 * s171)
-        wrU contacts ((30 * (truncate t251)) + 6) (t271 + (negate ((((t256 * t269) + (t257 * t270)) + (t258 * t271)) * t258)))
-        let !t272 = (t246 + (negate t254))
-        let !t273 = (t247 + (negate t255))
-        let !t274 = (t245 + (negate t253))
-        wrU contacts ((30 * (truncate t251)) + 7) (((((t272 * t271) - (t273 * t270)) * t256) + (((t273 * t269) - (t274 * t271)) * t257)) + (((t274 * t270) - (t272 * t269)) * t258))
-        let !t275 = ((t257 * t271) - (t258 * t270))
-        wrU contacts ((30 * (truncate t251)) + 12) (t275 + (negate ((((t256 * t275) + (t257 * ((t258 * t269) - (t256 * t271)))) + (t258 * ((t256 * t270) - (t257 * t269)))) * t256)))
-        let !t276 = ((t258 * t269) - (t256 * t271))
-        wrU contacts ((30 * (truncate t251)) + 13) (t276 + (negate ((((t256 * t275) + (t257 * t276)) + (t258 * ((t256 * t270) - (t257 * t269)))) * t257)))
-        let !t277 = ((t256 * t270) - (t257 * t269))
-        wrU contacts ((30 * (truncate t251)) + 14) (t277 + (negate ((((t256 * t275) + (t257 * t276)) + (t258 * t277)) * t258)))
-        wrU contacts ((30 * (truncate t251)) + 15) (((((t272 * t277) - (t273 * t276)) * t256) + (((t273 * t275) - (t274 * t277)) * t257)) + (((t274 * t276) - (t272 * t275)) * t258))
-        wrU contacts ((30 * (truncate t251)) + 20) (if s168 > 0 then ((((s146 + (negate s248)) * s169) + ((s147 + (negate s249)) * s170)) + ((s148 + (negate s250)) * s171)) else s136)
-        wrU contacts ((30 * (truncate t251)) + 26) 1.0
-        wrU contacts ((30 * (truncate t251)) + 27) t245
-        wrU contacts ((30 * (truncate t251)) + 28) t246
-        wrU contacts ((30 * (truncate t251)) + 29) t247
-        if (s138 + 0.5) > 0 then do
-          t278 <- rdU pos (3 * (truncate s138))
-          t279 <- rdU pos ((3 * (truncate s138)) + 1)
-          t280 <- rdU pos ((3 * (truncate s138)) + 2)
-          t281 <- rdU normal (3 * (truncate s138))
-          t282 <- rdU normal ((3 * (truncate s138)) + 1)
-          t283 <- rdU normal ((3 * (truncate s138)) + 2)
-          t284 <- rdU axis (3 * (truncate s138))
-          t285 <- rdU axis ((3 * (truncate s138)) + 1)
-          t286 <- rdU axis ((3 * (truncate s138)) + 2)
-          let !s287 = ((t282 * t286) - (t283 * t285))
-          let !s288 = ((t283 * t284) - (t281 * t286))
-          let !s289 = ((t281 * t285) - (t282 * t284))
-          t290 <- rdU scalars (6 * (truncate s138))
-          t291 <- rdU scalars ((6 * (truncate s138)) + 5)
-          t292 <- rdU scalars ((6 * (truncate s138)) + 2)
-          t293 <- rdU scalars ((6 * (truncate s138)) + 3)
-          wrU contacts ((30 * (truncate t251)) + 8) (s169 + (negate ((((t281 * s169) + (t282 * s170)) + (t283 * s171)) * t281)))
-          wrU contacts ((30 * (truncate t251)) + 9) (s170 + (negate ((((t281 * s169) + (t282 * s170)) + (t283 * s171)) * t282)))
-          wrU contacts ((30 * (truncate t251)) + 10) (s171 + (negate ((((t281 * s169) + (t282 * s170)) + (t283 * s171)) * t283)))
-          let !t294 = (s249 + (negate t279))
-          let !t295 = (s250 + (negate t280))
-          let !t296 = (s248 + (negate t278))
-          wrU contacts ((30 * (truncate t251)) + 11) (((((t294 * s171) - (t295 * s170)) * t281) + (((t295 * s169) - (t296 * s171)) * t282)) + (((t296 * s170) - (t294 * s169)) * t283))
-          let !t297 = (a3 * t275)
-          wrU contacts ((30 * (truncate t251)) + 16) (t297 + (negate ((((t281 * t297) + (t282 * (a4 * t276))) + (t283 * (a5 * t277))) * t281)))
-          let !t298 = (a4 * t276)
-          wrU contacts ((30 * (truncate t251)) + 17) (t298 + (negate ((((t281 * t297) + (t282 * t298)) + (t283 * (a5 * t277))) * t282)))
-          let !t299 = (a5 * t277)
-          wrU contacts ((30 * (truncate t251)) + 18) (t299 + (negate ((((t281 * t297) + (t282 * t298)) + (t283 * t299)) * t283)))
-          wrU contacts ((30 * (truncate t251)) + 19) (((((t294 * t299) - (t295 * t298)) * t281) + (((t295 * t297) - (t296 * t299)) * t282)) + (((t296 * t298) - (t294 * t297)) * t283))
+    if (abs (t170 - t169)) > 0 then do
+      chkI verts ((291 * (truncate s123)) + (12 * (truncate t170))) 12 14
+      t227 <- rdU verts (((291 * (truncate s123)) + (12 * (truncate t170))) + 12)
+      t228 <- rdU verts (((291 * (truncate s123)) + (12 * (truncate t170))) + 13)
+      t229 <- rdU verts (((291 * (truncate s123)) + (12 * (truncate t170))) + 14)
+      let !s230 = ((a3 * t227) + s125)
+      let !s231 = ((a4 * t228) + s126)
+      let !s232 = ((a5 * t229) + s127)
+      t233 <- rdU meta 2
+      t234 <- rdU meta 3
+      if (((8.0 * (if (1.0 - t234) > 0 then 1.0 else t234)) - t233) - 0.5) > 0 then do
+        wrU meta 2 (t233 + 1.0)
+        t235 <- rdU pos (3 * (truncate s123))
+        t236 <- rdU pos ((3 * (truncate s123)) + 1)
+        t237 <- rdU pos ((3 * (truncate s123)) + 2)
+        chkI normal (3 * (truncate s123)) 0 2
+        t238 <- rdU normal (3 * (truncate s123))
+        t239 <- rdU normal ((3 * (truncate s123)) + 1)
+        t240 <- rdU normal ((3 * (truncate s123)) + 2)
+        chkI axis (3 * (truncate s123)) 0 2
+        t241 <- rdU axis (3 * (truncate s123))
+        t242 <- rdU axis ((3 * (truncate s123)) + 1)
+        t243 <- rdU axis ((3 * (truncate s123)) + 2)
+        let !s244 = ((t239 * t243) - (t240 * t242))
+        let !s245 = ((t240 * t241) - (t238 * t243))
+        let !s246 = ((t238 * t242) - (t239 * t241))
+        chkI scalars (6 * (truncate s123)) 0 5
+        t247 <- rdU scalars (6 * (truncate s123))
+        t248 <- rdU scalars ((6 * (truncate s123)) + 5)
+        t249 <- rdU scalars ((6 * (truncate s123)) + 2)
+        t250 <- rdU scalars ((6 * (truncate s123)) + 3)
+        chkI contacts (30 * (truncate t233)) 0 29
+        wrU contacts (30 * (truncate t233)) s123
+        wrU contacts ((30 * (truncate t233)) + 1) s124
+        wrU contacts ((30 * (truncate t233)) + 2) a1
+        wrU contacts ((30 * (truncate t233)) + 3) (a0 + 1.0)
+        let !t251 = (a3 * s155)
+        wrU contacts ((30 * (truncate t233)) + 4) (t251 + (negate ((((t238 * t251) + (t239 * (a4 * s156))) + (t240 * (a5 * s157))) * t238)))
+        let !t252 = (a4 * s156)
+        wrU contacts ((30 * (truncate t233)) + 5) (t252 + (negate ((((t238 * t251) + (t239 * t252)) + (t240 * (a5 * s157))) * t239)))
+        let !t253 = (a5 * s157)
+        wrU contacts ((30 * (truncate t233)) + 6) (t253 + (negate ((((t238 * t251) + (t239 * t252)) + (t240 * t253)) * t240)))
+        let !t254 = (t228 + (negate t236))
+        let !t255 = (t229 + (negate t237))
+        let !t256 = (t227 + (negate t235))
+        wrU contacts ((30 * (truncate t233)) + 7) (((((t254 * t253) - (t255 * t252)) * t238) + (((t255 * t251) - (t256 * t253)) * t239)) + (((t256 * t252) - (t254 * t251)) * t240))
+        let !t257 = ((t239 * t253) - (t240 * t252))
+        wrU contacts ((30 * (truncate t233)) + 12) (t257 + (negate ((((t238 * t257) + (t239 * ((t240 * t251) - (t238 * t253)))) + (t240 * ((t238 * t252) - (t239 * t251)))) * t238)))
+        let !t258 = ((t240 * t251) - (t238 * t253))
+        wrU contacts ((30 * (truncate t233)) + 13) (t258 + (negate ((((t238 * t257) + (t239 * t258)) + (t240 * ((t238 * t252) - (t239 * t251)))) * t239)))
+        let !t259 = ((t238 * t252) - (t239 * t251))
+        wrU contacts ((30 * (truncate t233)) + 14) (t259 + (negate ((((t238 * t257) + (t239 * t258)) + (t240 * t259)) * t240)))
+        wrU contacts ((30 * (truncate t233)) + 15) (((((t254 * t259) - (t255 * t258)) * t238) + (((t255 * t257) - (t256 * t259)) * t239)) + (((t256 * t258) - (t254 * t257)) * t240))
+        wrU contacts ((30 * (truncate t233)) + 20) (if s154 > 0 then ((((s132 + (negate s230)) * s155) + ((s133 + (negate s231)) * s156)) + ((s134 + (negate s232)) * s157)) else s122)
+        wrU contacts ((30 * (truncate t233)) + 26) 1.0
+        wrU contacts ((30 * (truncate t233)) + 27) t227
+        wrU contacts ((30 * (truncate t233)) + 28) t228
+        wrU contacts ((30 * (truncate t233)) + 29) t229
+        if (s124 + 0.5) > 0 then do
+          t260 <- rdU pos (3 * (truncate s124))
+          t261 <- rdU pos ((3 * (truncate s124)) + 1)
+          t262 <- rdU pos ((3 * (truncate s124)) + 2)
+          t263 <- rdU normal (3 * (truncate s124))
+          t264 <- rdU normal ((3 * (truncate s124)) + 1)
+          t265 <- rdU normal ((3 * (truncate s124)) + 2)
+          t266 <- rdU axis (3 * (truncate s124))
+          t267 <- rdU axis ((3 * (truncate s124)) + 1)
+          t268 <- rdU axis ((3 * (truncate s124)) + 2)
+          let !s269 = ((t264 * t268) - (t265 * t267))
+          let !s270 = ((t265 * t266) - (t263 * t268))
+          let !s271 = ((t263 * t267) - (t264 * t266))
+          t272 <- rdU scalars (6 * (truncate s124))
+          t273 <- rdU scalars ((6 * (truncate s124)) + 5)
+          t274 <- rdU scalars ((6 * (truncate s124)) + 2)
+          t275 <- rdU scalars ((6 * (truncate s124)) + 3)
+          wrU contacts ((30 * (truncate t233)) + 8) (s155 + (negate ((((t263 * s155) + (t264 * s156)) + (t265 * s157)) * t263)))
+          wrU contacts ((30 * (truncate t233)) + 9) (s156 + (negate ((((t263 * s155) + (t264 * s156)) + (t265 * s157)) * t264)))
+          wrU contacts ((30 * (truncate t233)) + 10) (s157 + (negate ((((t263 * s155) + (t264 * s156)) + (t265 * s157)) * t265)))
+          let !t276 = (s231 + (negate t261))
+          let !t277 = (s232 + (negate t262))
+          let !t278 = (s230 + (negate t260))
+          wrU contacts ((30 * (truncate t233)) + 11) (((((t276 * s157) - (t277 * s156)) * t263) + (((t277 * s155) - (t278 * s157)) * t264)) + (((t278 * s156) - (t276 * s155)) * t265))
+          let !t279 = (a3 * t257)
+          wrU contacts ((30 * (truncate t233)) + 16) (t279 + (negate ((((t263 * t279) + (t264 * (a4 * t258))) + (t265 * (a5 * t259))) * t263)))
+          let !t280 = (a4 * t258)
+          wrU contacts ((30 * (truncate t233)) + 17) (t280 + (negate ((((t263 * t279) + (t264 * t280)) + (t265 * (a5 * t259))) * t264)))
+          let !t281 = (a5 * t259)
+          wrU contacts ((30 * (truncate t233)) + 18) (t281 + (negate ((((t263 * t279) + (t264 * t280)) + (t265 * t281)) * t265)))
+          wrU contacts ((30 * (truncate t233)) + 19) (((((t276 * t281) - (t277 * t280)) * t263) + (((t277 * t279) - (t278 * t281)) * t264)) + (((t278 * t280) - (t276 * t279)) * t265))
           pure ()
         else do
-          wrU contacts ((30 * (truncate t251)) + 8) 0.0
-          wrU contacts ((30 * (truncate t251)) + 9) 0.0
-          wrU contacts ((30 * (truncate t251)) + 10) 0.0
-          wrU contacts ((30 * (truncate t251)) + 11) 0.0
-          wrU contacts ((30 * (truncate t251)) + 16) 0.0
-          wrU contacts ((30 * (truncate t251)) + 17) 0.0
-          wrU contacts ((30 * (truncate t251)) + 18) 0.0
-          wrU contacts ((30 * (truncate t251)) + 19) 0.0
+          wrU contacts ((30 * (truncate t233)) + 8) 0.0
+          wrU contacts ((30 * (truncate t233)) + 9) 0.0
+          wrU contacts ((30 * (truncate t233)) + 10) 0.0
+          wrU contacts ((30 * (truncate t233)) + 11) 0.0
+          wrU contacts ((30 * (truncate t233)) + 16) 0.0
+          wrU contacts ((30 * (truncate t233)) + 17) 0.0
+          wrU contacts ((30 * (truncate t233)) + 18) 0.0
+          wrU contacts ((30 * (truncate t233)) + 19) 0.0
           pure ()
         pure ()
       else do
         chkI meta 0 6 6
-        t300 <- rdU meta 6
-        wrU meta 6 (t300 + 1.0)
+        t282 <- rdU meta 6
+        wrU meta 6 (t282 + 1.0)
         pure ()
       pure ()
     else do

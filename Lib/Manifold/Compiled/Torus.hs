@@ -22,13 +22,13 @@ compiled = CompiledStep "torus" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  const t0 = (Math.sqrt(((x * x) + (z * z))) - 0.8);\n  return (Math.sqrt(((t0 * t0) + (y * y))) - 0.5);\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Torus: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,130 +71,131 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 10
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 9.1552734375e-5) > 0 then t6 else 9.1552734375e-5)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 9.1552734375e-5) > 0 then t5 else 9.1552734375e-5)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    t36 <- rdU meta 4
     t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    t39 <- rdU meta 4
-    t40 <- rdU meta 5
-    let !s41 = (floorF (t32 / t40))
-    let !s42 = (floorF (t33 / t40))
-    let !s43 = (floorF (t34 / t40))
-    loopI 0.0 3.0 $ \i44 -> do
-      let !d44 = fromIntegral i44 :: Double
-      loopI 0.0 3.0 $ \i45 -> do
-        let !d45 = fromIntegral i45 :: Double
-        loopI 0.0 3.0 $ \i46 -> do
-          let !d46 = fromIntegral i46 :: Double
-          let !s47 = ((s41 + d44) - 1.0)
-          let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = ((s43 + d46) - 1.0)
-          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
-          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
-          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
-          chkI grid (truncate s52) 0 0
-          t53 <- rdU grid (truncate s52)
-          chkI grid ((truncate s52) + (truncate t39)) 0 0
-          t54 <- rdU grid ((truncate s52) + (truncate t39))
-          loopI t54 t53 $ \i55 -> do
-            let !d55 = fromIntegral i55 :: Double
-            chkI items i55 0 0
-            t56 <- rdU items i55
-            chkI cellOf (truncate t56) 0 0
-            t57 <- rdU cellOf (truncate t56)
-            if (0.5 - (abs (t57 - s50))) > 0 then do
-              if (t56 - d31) > 0 then do
-                chkI pos (3 * (truncate t56)) 0 2
-                t58 <- rdU pos (3 * (truncate t56))
-                t59 <- rdU pos ((3 * (truncate t56)) + 1)
-                t60 <- rdU pos ((3 * (truncate t56)) + 2)
-                chkI scalars (6 * (truncate t56)) 2 5
-                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
-                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
-                let !t63 = (t36 + t62)
-                let !t64 = (t32 + (negate t58))
-                let !t65 = (t33 + (negate t59))
-                let !t66 = (t34 + (negate t60))
-                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
-                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
-                  t68 <- getR v38
-                  chkI near (truncate t68) 0 0
-                  wrU near (truncate t68) t56
-                  setR v38 (t68 + 1.0)
+    let !s38 = (floorF (t30 / t37))
+    let !s39 = (floorF (t31 / t37))
+    let !s40 = (floorF (t32 / t37))
+    loopI 0.0 3.0 $ \i41 -> do
+      let !d41 = fromIntegral i41 :: Double
+      loopI 0.0 3.0 $ \i42 -> do
+        let !d42 = fromIntegral i42 :: Double
+        loopI 0.0 3.0 $ \i43 -> do
+          let !d43 = fromIntegral i43 :: Double
+          let !s44 = ((s38 + d41) - 1.0)
+          let !s45 = ((s39 + d42) - 1.0)
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = (((((s44 + 131072.0) * 262144.0) + (s45 + 131072.0)) * 262144.0) + (s46 + 131072.0))
+          let !t48 = (((s44 * 7.3856093e7) + (s45 * 1.9349663e7)) + (s46 * 8.3492791e7))
+          let !s49 = (t48 - (t36 * (floorF (t48 / t36))))
+          chkI grid (truncate s49) 0 0
+          t50 <- rdU grid (truncate s49)
+          chkI grid ((truncate s49) + (truncate t36)) 0 0
+          t51 <- rdU grid ((truncate s49) + (truncate t36))
+          loopI t51 t50 $ \i52 -> do
+            let !d52 = fromIntegral i52 :: Double
+            chkI items i52 0 0
+            t53 <- rdU items i52
+            chkI cellOf (truncate t53) 0 0
+            t54 <- rdU cellOf (truncate t53)
+            if (0.5 - (abs (t54 - s47))) > 0 then do
+              if (t53 - d29) > 0 then do
+                chkI pos (3 * (truncate t53)) 0 2
+                t55 <- rdU pos (3 * (truncate t53))
+                t56 <- rdU pos ((3 * (truncate t53)) + 1)
+                t57 <- rdU pos ((3 * (truncate t53)) + 2)
+                chkI scalars (6 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                let !t60 = (t34 + t59)
+                let !t61 = (t30 + (negate t55))
+                let !t62 = (t31 + (negate t56))
+                let !t63 = (t32 + (negate t57))
+                let !t64 = ((t33 + t58) - (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63))))
+                if (if (t60 - t64) > 0 then t64 else t60) > 0 then do
+                  t65 <- rdU locals 2
+                  chkI near (truncate t65) 0 0
+                  wrU near (truncate t65) t53
+                  wrU locals 2 (t65 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -208,140 +209,140 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    t69 <- getR v38
-    loopI 0.0 t69 $ \i70 -> do
-      let !d70 = fromIntegral i70 :: Double
-      chkI near i70 0 0
-      t71 <- rdU near i70
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+    t66 <- rdU locals 2
+    loopI 0.0 t66 $ \i67 -> do
+      let !d67 = fromIntegral i67 :: Double
+      chkI near i67 0 0
+      t68 <- rdU near i67
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    chkI verts (291 * i31) 0 2
-    t72 <- rdU verts (291 * i31)
-    t73 <- rdU verts ((291 * i31) + 1)
-    t74 <- rdU verts ((291 * i31) + 2)
-    v75 <- newR 1.0
-    loopI 0.0 24.0 $ \i76 -> do
-      let !d76 = fromIntegral i76 :: Double
-      chkI verts ((291 * i31) + (12 * i76)) 12 14
-      t77 <- rdU verts (((291 * i31) + (12 * i76)) + 12)
-      t78 <- rdU verts (((291 * i31) + (12 * i76)) + 13)
-      t79 <- rdU verts (((291 * i31) + (12 * i76)) + 14)
-      chkI radii ((24 * i31) + i76) 0 0
-      t80 <- rdU radii ((24 * i31) + i76)
-      t81 <- getR v75
-      let !t82 = (t77 + (negate t72))
-      let !t83 = (t78 + (negate t73))
-      let !t84 = (t79 + (negate t74))
-      let !t85 = (if t80 > 0 then ((sqrt (((t82 * t82) + (t83 * t83)) + (t84 * t84))) / t80) else 1.0)
-      setR v75 (if (t81 - t85) > 0 then t85 else t81)
+    chkI verts (291 * i29) 0 2
+    t69 <- rdU verts (291 * i29)
+    t70 <- rdU verts ((291 * i29) + 1)
+    t71 <- rdU verts ((291 * i29) + 2)
+    wrU locals 3 1.0
+    loopI 0.0 24.0 $ \i72 -> do
+      let !d72 = fromIntegral i72 :: Double
+      chkI verts ((291 * i29) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      chkI radii ((24 * i29) + i72) 0 0
+      t76 <- rdU radii ((24 * i29) + i72)
+      t77 <- rdU locals 3
+      let !t78 = (t73 + (negate t69))
+      let !t79 = (t74 + (negate t70))
+      let !t80 = (t75 + (negate t71))
+      let !t81 = (if t76 > 0 then ((sqrt (((t78 * t78) + (t79 * t79)) + (t80 * t80))) / t76) else 1.0)
+      wrU locals 3 (if (t77 - t81) > 0 then t81 else t77)
       pure ()
-    t86 <- getR v75
-    if (0.8 - t86) > 0 then do
-      v87 <- newR 0.0
-      v88 <- newR 0.0
-      v89 <- newR 0.0
-      v90 <- newR 0.0
-      v91 <- newR 0.0
-      v92 <- newR 0.0
-      v93 <- newR 0.0
-      loopI 0.0 24.0 $ \i94 -> do
-        let !d94 = fromIntegral i94 :: Double
-        chkI radii ((24 * i31) + i94) 0 0
-        t95 <- rdU radii ((24 * i31) + i94)
-        loopI 6.0 12.0 $ \i96 -> do
-          let !d96 = fromIntegral i96 :: Double
-          let !t97 = (d94 + d96)
-          chkI radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0)))))) 0 0
-          t98 <- rdU radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0))))))
-          loopI 1.0 4.0 $ \i99 -> do
-            let !d99 = fromIntegral i99 :: Double
-            chkI verts ((291 * i31) + (12 * i94) + (3 * i99)) 0 5
-            t100 <- rdU verts ((291 * i31) + (12 * i94) + (3 * i99))
-            t101 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 1)
-            t102 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 2)
-            t103 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 3)
-            t104 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 4)
-            t105 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 5)
-            loopI 1.0 4.0 $ \i106 -> do
-              let !d106 = fromIntegral i106 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0)))) 0 0
-              t107 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0)) 0 0
-              t108 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0)) 0 0
-              t109 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106))) 0 0
-              t110 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0)) 0 0
-              t111 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0)) 0 0
-              t112 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0))
-              t113 <- getR v87
-              let !t114 = (negate t107)
-              let !t115 = (t110 + t114)
-              let !t116 = (negate t108)
-              let !t117 = (t111 + t116)
-              let !t118 = (negate t109)
-              let !t119 = (t112 + t118)
-              let !t120 = (((t115 * t115) + (t117 * t117)) + (t119 * t119))
-              let !t121 = (t103 + (negate t100))
-              let !t122 = (t104 + (negate t101))
-              let !t123 = (t105 + (negate t102))
-              let !t124 = (((t121 * t115) + (t122 * t117)) + (t123 * t119))
-              let !t125 = (((t121 * t121) + (t122 * t122)) + (t123 * t123))
-              let !t126 = ((t125 * t120) - (t124 * t124))
-              let !t127 = (t100 + t114)
-              let !t128 = (t101 + t116)
-              let !t129 = (t102 + t118)
-              let !t130 = (((t115 * t127) + (t117 * t128)) + (t119 * t129))
-              let !t131 = (((t121 * t127) + (t122 * t128)) + (t123 * t129))
-              let !t132 = (if ((abs t126) - 1.0e-300) > 0 then (((t124 * t130) - (t131 * t120)) / t126) else 0.0)
-              let !t133 = (if (t132 - 1.0) > 0 then 1.0 else t132)
-              let !t134 = (if (t126 - ((1.0e-12 * t125) * t120)) > 0 then (if (negate t133) > 0 then 0.0 else t133) else 0.0)
-              let !t135 = (if ((abs t120) - 1.0e-300) > 0 then (((t124 * t134) + t130) / t120) else 0.0)
-              let !t136 = ((abs t125) - 1.0e-300)
-              let !t137 = (if t136 > 0 then ((negate t131) / t125) else 0.0)
-              let !t138 = (if (t137 - 1.0) > 0 then 1.0 else t137)
-              let !t139 = (t135 - 1.0)
-              let !t140 = (if t136 > 0 then ((t124 - t131) / t125) else 0.0)
-              let !t141 = (if (t140 - 1.0) > 0 then 1.0 else t140)
-              let !t142 = (if (negate t135) > 0 then (if (negate t138) > 0 then 0.0 else t138) else (if t139 > 0 then (if (negate t141) > 0 then 0.0 else t141) else t134))
-              let !t143 = (if t139 > 0 then 1.0 else t135)
-              let !t144 = (if (negate t143) > 0 then 0.0 else t143)
-              let !t145 = ((0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0)))) - t113)
-              let !t146 = ((t100 + (t142 * t121)) + (negate (t107 + (t144 * t115))))
-              let !t147 = ((t101 + (t142 * t122)) + (negate (t108 + (t144 * t117))))
-              let !t148 = ((t102 + (t142 * t123)) + (negate (t109 + (t144 * t119))))
-              let !t149 = ((0.3 * ((if (t98 - t95) > 0 then t95 else t98) / 4.0)) - (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148))))
-              if (if (t145 - t149) > 0 then t149 else t145) > 0 then do
-                setR v87 (0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i94)) 3 5
-                t150 <- rdU verts (((291 * i31) + (12 * i94)) + 3)
-                t151 <- rdU verts (((291 * i31) + (12 * i94)) + 4)
-                t152 <- rdU verts (((291 * i31) + (12 * i94)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)))) 0 0
-                t153 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t154 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t155 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0))
-                setR v88 (t100 + (t142 * t121))
-                setR v89 (t101 + (t142 * t122))
-                setR v90 (t102 + (t142 * t123))
-                let !t156 = (negate t72)
-                let !t157 = (t150 + t156)
-                let !t158 = (negate t73)
-                let !t159 = (t151 + t158)
-                let !t160 = (negate t74)
-                let !t161 = (t152 + t160)
-                let !t162 = (sqrt (((t157 * t157) + (t159 * t159)) + (t161 * t161)))
-                let !t163 = (t153 + t156)
-                let !t164 = (t154 + t158)
-                let !t165 = (t155 + t160)
-                let !t166 = (sqrt (((t163 * t163) + (t164 * t164)) + (t165 * t165)))
-                setR v91 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t157) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t163)))
-                setR v92 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t159) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t164)))
-                setR v93 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t161) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t165)))
+    t82 <- rdU locals 3
+    if (0.8 - t82) > 0 then do
+      wrU locals 4 0.0
+      wrU locals 5 0.0
+      wrU locals 6 0.0
+      wrU locals 7 0.0
+      wrU locals 8 0.0
+      wrU locals 9 0.0
+      wrU locals 10 0.0
+      loopI 0.0 24.0 $ \i83 -> do
+        let !d83 = fromIntegral i83 :: Double
+        chkI radii ((24 * i29) + i83) 0 0
+        t84 <- rdU radii ((24 * i29) + i83)
+        loopI 6.0 12.0 $ \i85 -> do
+          let !d85 = fromIntegral i85 :: Double
+          let !t86 = (d83 + d85)
+          chkI radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0)))))) 0 0
+          t87 <- rdU radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0))))))
+          loopI 1.0 4.0 $ \i88 -> do
+            let !d88 = fromIntegral i88 :: Double
+            chkI verts ((291 * i29) + (12 * i83) + (3 * i88)) 0 5
+            t89 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i88))
+            t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 1)
+            t91 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 2)
+            t92 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 3)
+            t93 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 4)
+            t94 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 5)
+            loopI 1.0 4.0 $ \i95 -> do
+              let !d95 = fromIntegral i95 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0)))) 0 0
+              t96 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0)) 0 0
+              t97 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0)) 0 0
+              t98 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95))) 0 0
+              t99 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0)) 0 0
+              t100 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0)) 0 0
+              t101 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0))
+              t102 <- rdU locals 4
+              let !t103 = (negate t96)
+              let !t104 = (t99 + t103)
+              let !t105 = (negate t97)
+              let !t106 = (t100 + t105)
+              let !t107 = (negate t98)
+              let !t108 = (t101 + t107)
+              let !t109 = (((t104 * t104) + (t106 * t106)) + (t108 * t108))
+              let !t110 = (t92 + (negate t89))
+              let !t111 = (t93 + (negate t90))
+              let !t112 = (t94 + (negate t91))
+              let !t113 = (((t110 * t104) + (t111 * t106)) + (t112 * t108))
+              let !t114 = (((t110 * t110) + (t111 * t111)) + (t112 * t112))
+              let !t115 = ((t114 * t109) - (t113 * t113))
+              let !t116 = (t89 + t103)
+              let !t117 = (t90 + t105)
+              let !t118 = (t91 + t107)
+              let !t119 = (((t104 * t116) + (t106 * t117)) + (t108 * t118))
+              let !t120 = (((t110 * t116) + (t111 * t117)) + (t112 * t118))
+              let !t121 = (if ((abs t115) - 1.0e-300) > 0 then (((t113 * t119) - (t120 * t109)) / t115) else 0.0)
+              let !t122 = (if (t121 - 1.0) > 0 then 1.0 else t121)
+              let !t123 = (if (t115 - ((1.0e-12 * t114) * t109)) > 0 then (if (negate t122) > 0 then 0.0 else t122) else 0.0)
+              let !t124 = (if ((abs t109) - 1.0e-300) > 0 then (((t113 * t123) + t119) / t109) else 0.0)
+              let !t125 = ((abs t114) - 1.0e-300)
+              let !t126 = (if t125 > 0 then ((negate t120) / t114) else 0.0)
+              let !t127 = (if (t126 - 1.0) > 0 then 1.0 else t126)
+              let !t128 = (t124 - 1.0)
+              let !t129 = (if t125 > 0 then ((t113 - t120) / t114) else 0.0)
+              let !t130 = (if (t129 - 1.0) > 0 then 1.0 else t129)
+              let !t131 = (if (negate t124) > 0 then (if (negate t127) > 0 then 0.0 else t127) else (if t128 > 0 then (if (negate t130) > 0 then 0.0 else t130) else t123))
+              let !t132 = (if t128 > 0 then 1.0 else t124)
+              let !t133 = (if (negate t132) > 0 then 0.0 else t132)
+              let !t134 = ((0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0)))) - t102)
+              let !t135 = ((t89 + (t131 * t110)) + (negate (t96 + (t133 * t104))))
+              let !t136 = ((t90 + (t131 * t111)) + (negate (t97 + (t133 * t106))))
+              let !t137 = ((t91 + (t131 * t112)) + (negate (t98 + (t133 * t108))))
+              let !t138 = ((0.3 * ((if (t87 - t84) > 0 then t84 else t87) / 4.0)) - (sqrt (((t135 * t135) + (t136 * t136)) + (t137 * t137))))
+              if (if (t134 - t138) > 0 then t138 else t134) > 0 then do
+                wrU locals 4 (0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0))))
+                chkI verts ((291 * i29) + (12 * i83)) 3 5
+                t139 <- rdU verts (((291 * i29) + (12 * i83)) + 3)
+                t140 <- rdU verts (((291 * i29) + (12 * i83)) + 4)
+                t141 <- rdU verts (((291 * i29) + (12 * i83)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)))) 0 0
+                t142 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t143 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t144 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 5 (t89 + (t131 * t110))
+                wrU locals 6 (t90 + (t131 * t111))
+                wrU locals 7 (t91 + (t131 * t112))
+                let !t145 = (negate t69)
+                let !t146 = (t139 + t145)
+                let !t147 = (negate t70)
+                let !t148 = (t140 + t147)
+                let !t149 = (negate t71)
+                let !t150 = (t141 + t149)
+                let !t151 = (sqrt (((t146 * t146) + (t148 * t148)) + (t150 * t150)))
+                let !t152 = (t142 + t145)
+                let !t153 = (t143 + t147)
+                let !t154 = (t144 + t149)
+                let !t155 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
+                wrU locals 8 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t146) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t152)))
+                wrU locals 9 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t148) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t153)))
+                wrU locals 10 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t150) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t154)))
                 pure ()
               else do
                 pure ()
@@ -349,129 +350,129 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t167 <- getR v87
-      if t167 > 0 then do
-        t168 <- getR v88
-        t169 <- getR v89
-        t170 <- getR v90
-        t171 <- getR v91
-        t172 <- getR v92
-        t173 <- getR v93
-        let !t174 = (sqrt ((t168 * t168) + (t170 * t170)))
-        let !t175 = (t174 - 0.8)
-        let !t176 = (recip (2.0 * (sqrt ((t175 * t175) + (t169 * t169)))))
-        let !t177 = (recip (2.0 * t174))
-        let !t178 = (t175 * (t177 * (t168 + t168)))
-        let !t179 = (t176 * (t178 + t178))
-        let !t180 = (t176 * (t169 + t169))
-        let !t181 = (t175 * (t177 * (t170 + t170)))
-        let !t182 = (t176 * (t181 + t181))
-        let !t183 = (sqrt (((t179 * t179) + (t180 * t180)) + (t182 * t182)))
-        let !t184 = (if t183 > 0 then (recip (if (t183 - 1.0e-300) > 0 then t183 else 1.0e-300)) else 0.0)
-        let !s185 = (t184 * t179)
-        let !s186 = (t184 * t180)
-        let !s187 = (t184 * t182)
-        let !t188 = (((s185 * t171) + (s186 * t172)) + (s187 * t173))
-        let !t189 = (t171 + (negate (t188 * s185)))
-        let !t190 = (t172 + (negate (t188 * s186)))
-        let !t191 = (t173 + (negate (t188 * s187)))
-        let !t192 = (sqrt (((t189 * t189) + (t190 * t190)) + (t191 * t191)))
-        let !t193 = (if t192 > 0 then (recip (if (t192 - 1.0e-300) > 0 then t192 else 1.0e-300)) else 0.0)
-        let !s194 = (t193 * t189)
-        let !s195 = (t193 * t190)
-        let !s196 = (t193 * t191)
-        t197 <- rdU meta 2
-        t198 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t198) > 0 then 1.0 else t198)) - t197) - 0.5) > 0 then do
-          wrU meta 2 (t197 + 1.0)
-          t199 <- rdU pos (3 * i31)
-          t200 <- rdU pos ((3 * i31) + 1)
-          t201 <- rdU pos ((3 * i31) + 2)
-          chkI normal (3 * i31) 0 2
-          t202 <- rdU normal (3 * i31)
-          t203 <- rdU normal ((3 * i31) + 1)
-          t204 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t205 <- rdU axis (3 * i31)
-          t206 <- rdU axis ((3 * i31) + 1)
-          t207 <- rdU axis ((3 * i31) + 2)
-          let !s208 = ((t203 * t207) - (t204 * t206))
-          let !s209 = ((t204 * t205) - (t202 * t207))
-          let !s210 = ((t202 * t206) - (t203 * t205))
-          chkI scalars (6 * i31) 0 0
-          t211 <- rdU scalars (6 * i31)
-          t212 <- rdU scalars ((6 * i31) + 5)
-          t213 <- rdU scalars ((6 * i31) + 2)
-          t214 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t197)) 0 29
-          wrU contacts (30 * (truncate t197)) d31
-          wrU contacts ((30 * (truncate t197)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t197)) + 2) d31
-          wrU contacts ((30 * (truncate t197)) + 3) 12.0
-          wrU contacts ((30 * (truncate t197)) + 4) (s194 + (negate ((((t202 * s194) + (t203 * s195)) + (t204 * s196)) * t202)))
-          wrU contacts ((30 * (truncate t197)) + 5) (s195 + (negate ((((t202 * s194) + (t203 * s195)) + (t204 * s196)) * t203)))
-          wrU contacts ((30 * (truncate t197)) + 6) (s196 + (negate ((((t202 * s194) + (t203 * s195)) + (t204 * s196)) * t204)))
-          wrU contacts ((30 * (truncate t197)) + 7) 0.0
-          wrU contacts ((30 * (truncate t197)) + 12) 0.0
-          wrU contacts ((30 * (truncate t197)) + 13) 0.0
-          wrU contacts ((30 * (truncate t197)) + 14) 0.0
-          wrU contacts ((30 * (truncate t197)) + 15) 0.0
-          wrU contacts ((30 * (truncate t197)) + 20) t167
-          wrU contacts ((30 * (truncate t197)) + 26) 0.6
-          wrU contacts ((30 * (truncate t197)) + 27) t168
-          wrU contacts ((30 * (truncate t197)) + 28) t169
-          wrU contacts ((30 * (truncate t197)) + 29) t170
+      t156 <- rdU locals 4
+      if t156 > 0 then do
+        t157 <- rdU locals 5
+        t158 <- rdU locals 6
+        t159 <- rdU locals 7
+        t160 <- rdU locals 8
+        t161 <- rdU locals 9
+        t162 <- rdU locals 10
+        let !t163 = (sqrt ((t157 * t157) + (t159 * t159)))
+        let !t164 = (t163 - 0.8)
+        let !t165 = (recip (2.0 * (sqrt ((t164 * t164) + (t158 * t158)))))
+        let !t166 = (recip (2.0 * t163))
+        let !t167 = (t164 * (t166 * (t157 + t157)))
+        let !t168 = (t165 * (t167 + t167))
+        let !t169 = (t165 * (t158 + t158))
+        let !t170 = (t164 * (t166 * (t159 + t159)))
+        let !t171 = (t165 * (t170 + t170))
+        let !t172 = (sqrt (((t168 * t168) + (t169 * t169)) + (t171 * t171)))
+        let !t173 = (if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0)
+        let !s174 = (t173 * t168)
+        let !s175 = (t173 * t169)
+        let !s176 = (t173 * t171)
+        let !t177 = (((s174 * t160) + (s175 * t161)) + (s176 * t162))
+        let !t178 = (t160 + (negate (t177 * s174)))
+        let !t179 = (t161 + (negate (t177 * s175)))
+        let !t180 = (t162 + (negate (t177 * s176)))
+        let !t181 = (sqrt (((t178 * t178) + (t179 * t179)) + (t180 * t180)))
+        let !t182 = (if t181 > 0 then (recip (if (t181 - 1.0e-300) > 0 then t181 else 1.0e-300)) else 0.0)
+        let !s183 = (t182 * t178)
+        let !s184 = (t182 * t179)
+        let !s185 = (t182 * t180)
+        t186 <- rdU meta 2
+        t187 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t187) > 0 then 1.0 else t187)) - t186) - 0.5) > 0 then do
+          wrU meta 2 (t186 + 1.0)
+          t188 <- rdU pos (3 * i29)
+          t189 <- rdU pos ((3 * i29) + 1)
+          t190 <- rdU pos ((3 * i29) + 2)
+          chkI normal (3 * i29) 0 2
+          t191 <- rdU normal (3 * i29)
+          t192 <- rdU normal ((3 * i29) + 1)
+          t193 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t194 <- rdU axis (3 * i29)
+          t195 <- rdU axis ((3 * i29) + 1)
+          t196 <- rdU axis ((3 * i29) + 2)
+          let !s197 = ((t192 * t196) - (t193 * t195))
+          let !s198 = ((t193 * t194) - (t191 * t196))
+          let !s199 = ((t191 * t195) - (t192 * t194))
+          chkI scalars (6 * i29) 0 0
+          t200 <- rdU scalars (6 * i29)
+          t201 <- rdU scalars ((6 * i29) + 5)
+          t202 <- rdU scalars ((6 * i29) + 2)
+          t203 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t186)) 0 29
+          wrU contacts (30 * (truncate t186)) d29
+          wrU contacts ((30 * (truncate t186)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t186)) + 2) d29
+          wrU contacts ((30 * (truncate t186)) + 3) 12.0
+          wrU contacts ((30 * (truncate t186)) + 4) (s183 + (negate ((((t191 * s183) + (t192 * s184)) + (t193 * s185)) * t191)))
+          wrU contacts ((30 * (truncate t186)) + 5) (s184 + (negate ((((t191 * s183) + (t192 * s184)) + (t193 * s185)) * t192)))
+          wrU contacts ((30 * (truncate t186)) + 6) (s185 + (negate ((((t191 * s183) + (t192 * s184)) + (t193 * s185)) * t193)))
+          wrU contacts ((30 * (truncate t186)) + 7) 0.0
+          wrU contacts ((30 * (truncate t186)) + 12) 0.0
+          wrU contacts ((30 * (truncate t186)) + 13) 0.0
+          wrU contacts ((30 * (truncate t186)) + 14) 0.0
+          wrU contacts ((30 * (truncate t186)) + 15) 0.0
+          wrU contacts ((30 * (truncate t186)) + 20) t156
+          wrU contacts ((30 * (truncate t186)) + 26) 0.6
+          wrU contacts ((30 * (truncate t186)) + 27) t157
+          wrU contacts ((30 * (truncate t186)) + 28) t158
+          wrU contacts ((30 * (truncate t186)) + 29) t159
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t215 <- rdU pos (-3)
-            t216 <- rdU pos (-2)
-            t217 <- rdU pos (-1)
+            t204 <- rdU pos (-3)
+            t205 <- rdU pos (-2)
+            t206 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t218 <- rdU normal (-3)
-            t219 <- rdU normal (-2)
-            t220 <- rdU normal (-1)
+            t207 <- rdU normal (-3)
+            t208 <- rdU normal (-2)
+            t209 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t221 <- rdU axis (-3)
-            t222 <- rdU axis (-2)
-            t223 <- rdU axis (-1)
-            let !s224 = ((t219 * t223) - (t220 * t222))
-            let !s225 = ((t220 * t221) - (t218 * t223))
-            let !s226 = ((t218 * t222) - (t219 * t221))
+            t210 <- rdU axis (-3)
+            t211 <- rdU axis (-2)
+            t212 <- rdU axis (-1)
+            let !s213 = ((t208 * t212) - (t209 * t211))
+            let !s214 = ((t209 * t210) - (t207 * t212))
+            let !s215 = ((t207 * t211) - (t208 * t210))
             chkI scalars 0 (-6) (-1)
-            t227 <- rdU scalars (-6)
-            t228 <- rdU scalars (-1)
-            t229 <- rdU scalars (-4)
-            t230 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t197)) + 8) (s194 + (negate ((((t218 * s194) + (t219 * s195)) + (t220 * s196)) * t218)))
-            wrU contacts ((30 * (truncate t197)) + 9) (s195 + (negate ((((t218 * s194) + (t219 * s195)) + (t220 * s196)) * t219)))
-            wrU contacts ((30 * (truncate t197)) + 10) (s196 + (negate ((((t218 * s194) + (t219 * s195)) + (t220 * s196)) * t220)))
-            let !t231 = (t169 + (negate t216))
-            let !t232 = (t170 + (negate t217))
-            let !t233 = (t168 + (negate t215))
-            wrU contacts ((30 * (truncate t197)) + 11) (((((t231 * s196) - (t232 * s195)) * t218) + (((t232 * s194) - (t233 * s196)) * t219)) + (((t233 * s195) - (t231 * s194)) * t220))
-            let !t234 = ((t203 * s196) - (t204 * s195))
-            wrU contacts ((30 * (truncate t197)) + 16) (t234 + (negate ((((t218 * t234) + (t219 * ((t204 * s194) - (t202 * s196)))) + (t220 * ((t202 * s195) - (t203 * s194)))) * t218)))
-            let !t235 = ((t204 * s194) - (t202 * s196))
-            wrU contacts ((30 * (truncate t197)) + 17) (t235 + (negate ((((t218 * t234) + (t219 * t235)) + (t220 * ((t202 * s195) - (t203 * s194)))) * t219)))
-            let !t236 = ((t202 * s195) - (t203 * s194))
-            wrU contacts ((30 * (truncate t197)) + 18) (t236 + (negate ((((t218 * t234) + (t219 * t235)) + (t220 * t236)) * t220)))
-            wrU contacts ((30 * (truncate t197)) + 19) (((((t231 * t236) - (t232 * t235)) * t218) + (((t232 * t234) - (t233 * t236)) * t219)) + (((t233 * t235) - (t231 * t234)) * t220))
+            t216 <- rdU scalars (-6)
+            t217 <- rdU scalars (-1)
+            t218 <- rdU scalars (-4)
+            t219 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t186)) + 8) (s183 + (negate ((((t207 * s183) + (t208 * s184)) + (t209 * s185)) * t207)))
+            wrU contacts ((30 * (truncate t186)) + 9) (s184 + (negate ((((t207 * s183) + (t208 * s184)) + (t209 * s185)) * t208)))
+            wrU contacts ((30 * (truncate t186)) + 10) (s185 + (negate ((((t207 * s183) + (t208 * s184)) + (t209 * s185)) * t209)))
+            let !t220 = (t158 + (negate t205))
+            let !t221 = (t159 + (negate t206))
+            let !t222 = (t157 + (negate t204))
+            wrU contacts ((30 * (truncate t186)) + 11) (((((t220 * s185) - (t221 * s184)) * t207) + (((t221 * s183) - (t222 * s185)) * t208)) + (((t222 * s184) - (t220 * s183)) * t209))
+            let !t223 = ((t192 * s185) - (t193 * s184))
+            wrU contacts ((30 * (truncate t186)) + 16) (t223 + (negate ((((t207 * t223) + (t208 * ((t193 * s183) - (t191 * s185)))) + (t209 * ((t191 * s184) - (t192 * s183)))) * t207)))
+            let !t224 = ((t193 * s183) - (t191 * s185))
+            wrU contacts ((30 * (truncate t186)) + 17) (t224 + (negate ((((t207 * t223) + (t208 * t224)) + (t209 * ((t191 * s184) - (t192 * s183)))) * t208)))
+            let !t225 = ((t191 * s184) - (t192 * s183))
+            wrU contacts ((30 * (truncate t186)) + 18) (t225 + (negate ((((t207 * t223) + (t208 * t224)) + (t209 * t225)) * t209)))
+            wrU contacts ((30 * (truncate t186)) + 19) (((((t220 * t225) - (t221 * t224)) * t207) + (((t221 * t223) - (t222 * t225)) * t208)) + (((t222 * t224) - (t220 * t223)) * t209))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t197)) + 8) 0.0
-            wrU contacts ((30 * (truncate t197)) + 9) 0.0
-            wrU contacts ((30 * (truncate t197)) + 10) 0.0
-            wrU contacts ((30 * (truncate t197)) + 11) 0.0
-            wrU contacts ((30 * (truncate t197)) + 16) 0.0
-            wrU contacts ((30 * (truncate t197)) + 17) 0.0
-            wrU contacts ((30 * (truncate t197)) + 18) 0.0
-            wrU contacts ((30 * (truncate t197)) + 19) 0.0
+            wrU contacts ((30 * (truncate t186)) + 8) 0.0
+            wrU contacts ((30 * (truncate t186)) + 9) 0.0
+            wrU contacts ((30 * (truncate t186)) + 10) 0.0
+            wrU contacts ((30 * (truncate t186)) + 11) 0.0
+            wrU contacts ((30 * (truncate t186)) + 16) 0.0
+            wrU contacts ((30 * (truncate t186)) + 17) 0.0
+            wrU contacts ((30 * (truncate t186)) + 18) 0.0
+            wrU contacts ((30 * (truncate t186)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t237 <- rdU meta 6
-          wrU meta 6 (t237 + 1.0)
+          t226 <- rdU meta 6
+          wrU meta 6 (t226 + 1.0)
           pure ()
         pure ()
       else do
@@ -482,8 +483,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -522,1086 +524,1086 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (t120 + (t138 * ((t141 * t126) + (t142 * s129))))
-      let !t144 = (t122 + (t138 * ((t141 * t128) + (t142 * s131))))
-      let !t145 = (sqrt ((t143 * t143) + (t144 * t144)))
-      let !t146 = (t145 - 0.8)
-      let !t147 = (t121 + (t138 * ((t141 * t127) + (t142 * s130))))
-      let !t148 = (sqrt ((t146 * t146) + (t147 * t147)))
-      let !t149 = (t148 - 0.5)
-      let !t150 = (recip (2.0 * t148))
-      let !t151 = (recip (2.0 * t145))
-      let !t152 = (t146 * (t151 * (t143 + t143)))
-      let !t153 = (sqrt ((t120 * t120) + (t122 * t122)))
-      let !t154 = (t153 - 0.8)
-      let !t155 = (recip (2.0 * (sqrt ((t154 * t154) + (t121 * t121)))))
-      let !t156 = (recip (2.0 * t153))
-      let !t157 = (t154 * (t156 * (t120 + t120)))
-      let !t158 = (t155 * (t157 + t157))
-      let !t159 = (t155 * (t121 + t121))
-      let !t160 = (t154 * (t156 * (t122 + t122)))
-      let !t161 = (t155 * (t160 + t160))
-      let !t162 = (sqrt (((t158 * t158) + (t159 * t159)) + (t161 * t161)))
-      let !t163 = (if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0)
-      let !t164 = (t163 * t158)
-      let !t165 = (t163 * t159)
-      let !t166 = (t146 * (t151 * (t144 + t144)))
-      let !t167 = (t163 * t161)
-      let !t168 = ((((t150 * (t152 + t152)) * t164) + ((t150 * (t147 + t147)) * t165)) + ((t150 * (t166 + t166)) * t167))
-      let !t169 = (if ((abs t149) - 1.0e-10) > 0 then (if (abs t168) > 0 then 1.0 else 0.0) else 0.0)
-      let !t170 = (if t169 > 0 then (t143 + (negate ((t149 / t168) * t164))) else t143)
-      let !t171 = (if t169 > 0 then (t144 + (negate ((t149 / t168) * t167))) else t144)
-      let !t172 = (sqrt ((t170 * t170) + (t171 * t171)))
-      let !t173 = (t172 - 0.8)
-      let !t174 = (if t169 > 0 then (t147 + (negate ((t149 / t168) * t165))) else t147)
-      let !t175 = (sqrt ((t173 * t173) + (t174 * t174)))
-      let !t176 = (t175 - 0.5)
-      let !t177 = (recip (2.0 * t175))
-      let !t178 = (recip (2.0 * t172))
-      let !t179 = (t173 * (t178 * (t170 + t170)))
-      let !t180 = (t173 * (t178 * (t171 + t171)))
-      let !t181 = ((((t177 * (t179 + t179)) * t164) + ((t177 * (t174 + t174)) * t165)) + ((t177 * (t180 + t180)) * t167))
-      let !t182 = (if ((abs t176) - 1.0e-10) > 0 then (if (abs t181) > 0 then 1.0 else 0.0) else 0.0)
-      let !t183 = (if t182 > 0 then (t170 + (negate ((t176 / t181) * t164))) else t170)
-      let !t184 = (if t182 > 0 then (t171 + (negate ((t176 / t181) * t167))) else t171)
-      let !t185 = (sqrt ((t183 * t183) + (t184 * t184)))
-      let !t186 = (t185 - 0.8)
-      let !t187 = (if t182 > 0 then (t174 + (negate ((t176 / t181) * t165))) else t174)
-      let !t188 = (sqrt ((t186 * t186) + (t187 * t187)))
-      let !t189 = (t188 - 0.5)
-      let !t190 = (recip (2.0 * t188))
-      let !t191 = (recip (2.0 * t185))
-      let !t192 = (t186 * (t191 * (t183 + t183)))
-      let !t193 = (t186 * (t191 * (t184 + t184)))
-      let !t194 = ((((t190 * (t192 + t192)) * t164) + ((t190 * (t187 + t187)) * t165)) + ((t190 * (t193 + t193)) * t167))
-      let !t195 = (if ((abs t189) - 1.0e-10) > 0 then (if (abs t194) > 0 then 1.0 else 0.0) else 0.0)
-      let !t196 = (1.0 - t139)
-      let !s197 = ((t139 * (if t195 > 0 then (t183 + (negate ((t189 / t194) * t164))) else t183)) + (t196 * t120))
-      let !s198 = ((t139 * (if t195 > 0 then (t187 + (negate ((t189 / t194) * t165))) else t187)) + (t196 * t121))
-      let !s199 = ((t139 * (if t195 > 0 then (t184 + (negate ((t189 / t194) * t167))) else t184)) + (t196 * t122))
-      let !t200 = ((t141 * t126) + (t142 * s129))
-      let !t201 = ((t141 * t127) + (t142 * s130))
-      let !t202 = ((t141 * t128) + (t142 * s131))
-      let !t203 = (sqrt (((t200 * t200) + (t201 * t201)) + (t202 * t202)))
-      let !t204 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t205 = (t204 * ((if t195 > 0 then (t183 + (negate ((t189 / t194) * t164))) else t183) + (negate t120)))
-      let !t206 = (t190 * (t192 + t192))
-      let !t207 = (t190 * (t187 + t187))
-      let !t208 = (t190 * (t193 + t193))
-      let !t209 = (sqrt (((t206 * t206) + (t207 * t207)) + (t208 * t208)))
-      let !t210 = (if t209 > 0 then (recip (if (t209 - 1.0e-300) > 0 then t209 else 1.0e-300)) else 0.0)
-      let !t211 = (t210 * t206)
-      let !t212 = (t210 * t207)
-      let !t213 = (t204 * ((if t195 > 0 then (t187 + (negate ((t189 / t194) * t165))) else t187) + (negate t121)))
-      let !t214 = (t210 * t208)
-      let !t215 = (t204 * ((if t195 > 0 then (t184 + (negate ((t189 / t194) * t167))) else t184) + (negate t122)))
-      let !t216 = (((t211 * t205) + (t212 * t213)) + (t214 * t215))
-      let !t217 = (t205 + (negate (t216 * t211)))
-      let !t218 = (t213 + (negate (t216 * t212)))
-      let !t219 = (t215 + (negate (t216 * t214)))
-      let !t220 = (sqrt (((t217 * t217) + (t218 * t218)) + (t219 * t219)))
-      let !t221 = (if t220 > 0 then (recip (if (t220 - 1.0e-300) > 0 then t220 else 1.0e-300)) else 0.0)
-      let !s222 = ((t139 * (t203 * (t221 * t217))) + (t196 * t200))
-      let !s223 = ((t139 * (t203 * (t221 * t218))) + (t196 * t201))
-      let !s224 = ((t139 * (t203 * (t221 * t219))) + (t196 * t202))
-      let !t225 = (s197 + (t138 * s222))
-      let !t226 = (s199 + (t138 * s224))
-      let !t227 = (sqrt ((t225 * t225) + (t226 * t226)))
-      let !t228 = (t227 - 0.8)
-      let !t229 = (s198 + (t138 * s223))
-      let !t230 = (sqrt ((t228 * t228) + (t229 * t229)))
-      let !t231 = (t230 - 0.5)
-      let !t232 = (recip (2.0 * t230))
-      let !t233 = (recip (2.0 * t227))
-      let !t234 = (t228 * (t233 * (t225 + t225)))
-      let !t235 = (sqrt ((s197 * s197) + (s199 * s199)))
-      let !t236 = (t235 - 0.8)
-      let !t237 = (recip (2.0 * (sqrt ((t236 * t236) + (s198 * s198)))))
-      let !t238 = (recip (2.0 * t235))
-      let !t239 = (t236 * (t238 * (s197 + s197)))
-      let !t240 = (t237 * (t239 + t239))
-      let !t241 = (t237 * (s198 + s198))
-      let !t242 = (t236 * (t238 * (s199 + s199)))
-      let !t243 = (t237 * (t242 + t242))
-      let !t244 = (sqrt (((t240 * t240) + (t241 * t241)) + (t243 * t243)))
-      let !t245 = (if t244 > 0 then (recip (if (t244 - 1.0e-300) > 0 then t244 else 1.0e-300)) else 0.0)
-      let !t246 = (t245 * t240)
-      let !t247 = (t245 * t241)
-      let !t248 = (t228 * (t233 * (t226 + t226)))
-      let !t249 = (t245 * t243)
-      let !t250 = ((((t232 * (t234 + t234)) * t246) + ((t232 * (t229 + t229)) * t247)) + ((t232 * (t248 + t248)) * t249))
-      let !t251 = (if ((abs t231) - 1.0e-10) > 0 then (if (abs t250) > 0 then 1.0 else 0.0) else 0.0)
-      let !t252 = (if t251 > 0 then (t225 + (negate ((t231 / t250) * t246))) else t225)
-      let !t253 = (if t251 > 0 then (t226 + (negate ((t231 / t250) * t249))) else t226)
-      let !t254 = (sqrt ((t252 * t252) + (t253 * t253)))
-      let !t255 = (t254 - 0.8)
-      let !t256 = (if t251 > 0 then (t229 + (negate ((t231 / t250) * t247))) else t229)
-      let !t257 = (sqrt ((t255 * t255) + (t256 * t256)))
-      let !t258 = (t257 - 0.5)
-      let !t259 = (recip (2.0 * t257))
-      let !t260 = (recip (2.0 * t254))
-      let !t261 = (t255 * (t260 * (t252 + t252)))
-      let !t262 = (t255 * (t260 * (t253 + t253)))
-      let !t263 = ((((t259 * (t261 + t261)) * t246) + ((t259 * (t256 + t256)) * t247)) + ((t259 * (t262 + t262)) * t249))
-      let !t264 = (if ((abs t258) - 1.0e-10) > 0 then (if (abs t263) > 0 then 1.0 else 0.0) else 0.0)
-      let !t265 = (if t264 > 0 then (t252 + (negate ((t258 / t263) * t246))) else t252)
-      let !t266 = (if t264 > 0 then (t253 + (negate ((t258 / t263) * t249))) else t253)
-      let !t267 = (sqrt ((t265 * t265) + (t266 * t266)))
-      let !t268 = (t267 - 0.8)
-      let !t269 = (if t264 > 0 then (t256 + (negate ((t258 / t263) * t247))) else t256)
-      let !t270 = (sqrt ((t268 * t268) + (t269 * t269)))
-      let !t271 = (t270 - 0.5)
-      let !t272 = (recip (2.0 * t270))
-      let !t273 = (recip (2.0 * t267))
-      let !t274 = (t268 * (t273 * (t265 + t265)))
-      let !t275 = (t268 * (t273 * (t266 + t266)))
-      let !t276 = ((((t272 * (t274 + t274)) * t246) + ((t272 * (t269 + t269)) * t247)) + ((t272 * (t275 + t275)) * t249))
-      let !t277 = (if ((abs t271) - 1.0e-10) > 0 then (if (abs t276) > 0 then 1.0 else 0.0) else 0.0)
-      let !s278 = ((t139 * (if t277 > 0 then (t265 + (negate ((t271 / t276) * t246))) else t265)) + (t196 * s197))
-      let !s279 = ((t139 * (if t277 > 0 then (t269 + (negate ((t271 / t276) * t247))) else t269)) + (t196 * s198))
-      let !s280 = ((t139 * (if t277 > 0 then (t266 + (negate ((t271 / t276) * t249))) else t266)) + (t196 * s199))
-      let !t281 = (sqrt (((s222 * s222) + (s223 * s223)) + (s224 * s224)))
-      let !t282 = (t204 * ((if t277 > 0 then (t265 + (negate ((t271 / t276) * t246))) else t265) + (negate s197)))
-      let !t283 = (t272 * (t274 + t274))
-      let !t284 = (t272 * (t269 + t269))
-      let !t285 = (t272 * (t275 + t275))
-      let !t286 = (sqrt (((t283 * t283) + (t284 * t284)) + (t285 * t285)))
-      let !t287 = (if t286 > 0 then (recip (if (t286 - 1.0e-300) > 0 then t286 else 1.0e-300)) else 0.0)
-      let !t288 = (t287 * t283)
-      let !t289 = (t287 * t284)
-      let !t290 = (t204 * ((if t277 > 0 then (t269 + (negate ((t271 / t276) * t247))) else t269) + (negate s198)))
-      let !t291 = (t287 * t285)
-      let !t292 = (t204 * ((if t277 > 0 then (t266 + (negate ((t271 / t276) * t249))) else t266) + (negate s199)))
-      let !t293 = (((t288 * t282) + (t289 * t290)) + (t291 * t292))
-      let !t294 = (t282 + (negate (t293 * t288)))
-      let !t295 = (t290 + (negate (t293 * t289)))
-      let !t296 = (t292 + (negate (t293 * t291)))
-      let !t297 = (sqrt (((t294 * t294) + (t295 * t295)) + (t296 * t296)))
-      let !t298 = (if t297 > 0 then (recip (if (t297 - 1.0e-300) > 0 then t297 else 1.0e-300)) else 0.0)
-      let !s299 = ((t139 * (t281 * (t298 * t294))) + (t196 * s222))
-      let !s300 = ((t139 * (t281 * (t298 * t295))) + (t196 * s223))
-      let !s301 = ((t139 * (t281 * (t298 * t296))) + (t196 * s224))
-      let !t302 = (s278 + (t138 * s299))
-      let !t303 = (s280 + (t138 * s301))
-      let !t304 = (sqrt ((t302 * t302) + (t303 * t303)))
-      let !t305 = (t304 - 0.8)
-      let !t306 = (s279 + (t138 * s300))
-      let !t307 = (sqrt ((t305 * t305) + (t306 * t306)))
-      let !t308 = (t307 - 0.5)
-      let !t309 = (recip (2.0 * t307))
-      let !t310 = (recip (2.0 * t304))
-      let !t311 = (t305 * (t310 * (t302 + t302)))
-      let !t312 = (sqrt ((s278 * s278) + (s280 * s280)))
-      let !t313 = (t312 - 0.8)
-      let !t314 = (recip (2.0 * (sqrt ((t313 * t313) + (s279 * s279)))))
-      let !t315 = (recip (2.0 * t312))
-      let !t316 = (t313 * (t315 * (s278 + s278)))
-      let !t317 = (t314 * (t316 + t316))
-      let !t318 = (t314 * (s279 + s279))
-      let !t319 = (t313 * (t315 * (s280 + s280)))
-      let !t320 = (t314 * (t319 + t319))
-      let !t321 = (sqrt (((t317 * t317) + (t318 * t318)) + (t320 * t320)))
-      let !t322 = (if t321 > 0 then (recip (if (t321 - 1.0e-300) > 0 then t321 else 1.0e-300)) else 0.0)
-      let !t323 = (t322 * t317)
-      let !t324 = (t322 * t318)
-      let !t325 = (t305 * (t310 * (t303 + t303)))
-      let !t326 = (t322 * t320)
-      let !t327 = ((((t309 * (t311 + t311)) * t323) + ((t309 * (t306 + t306)) * t324)) + ((t309 * (t325 + t325)) * t326))
-      let !t328 = (if ((abs t308) - 1.0e-10) > 0 then (if (abs t327) > 0 then 1.0 else 0.0) else 0.0)
-      let !t329 = (if t328 > 0 then (t302 + (negate ((t308 / t327) * t323))) else t302)
-      let !t330 = (if t328 > 0 then (t303 + (negate ((t308 / t327) * t326))) else t303)
-      let !t331 = (sqrt ((t329 * t329) + (t330 * t330)))
-      let !t332 = (t331 - 0.8)
-      let !t333 = (if t328 > 0 then (t306 + (negate ((t308 / t327) * t324))) else t306)
-      let !t334 = (sqrt ((t332 * t332) + (t333 * t333)))
-      let !t335 = (t334 - 0.5)
-      let !t336 = (recip (2.0 * t334))
-      let !t337 = (recip (2.0 * t331))
-      let !t338 = (t332 * (t337 * (t329 + t329)))
-      let !t339 = (t332 * (t337 * (t330 + t330)))
-      let !t340 = ((((t336 * (t338 + t338)) * t323) + ((t336 * (t333 + t333)) * t324)) + ((t336 * (t339 + t339)) * t326))
-      let !t341 = (if ((abs t335) - 1.0e-10) > 0 then (if (abs t340) > 0 then 1.0 else 0.0) else 0.0)
-      let !t342 = (if t341 > 0 then (t329 + (negate ((t335 / t340) * t323))) else t329)
-      let !t343 = (if t341 > 0 then (t330 + (negate ((t335 / t340) * t326))) else t330)
-      let !t344 = (sqrt ((t342 * t342) + (t343 * t343)))
-      let !t345 = (t344 - 0.8)
-      let !t346 = (if t341 > 0 then (t333 + (negate ((t335 / t340) * t324))) else t333)
-      let !t347 = (sqrt ((t345 * t345) + (t346 * t346)))
-      let !t348 = (t347 - 0.5)
-      let !t349 = (recip (2.0 * t347))
-      let !t350 = (recip (2.0 * t344))
-      let !t351 = (t345 * (t350 * (t342 + t342)))
-      let !t352 = (t345 * (t350 * (t343 + t343)))
-      let !t353 = ((((t349 * (t351 + t351)) * t323) + ((t349 * (t346 + t346)) * t324)) + ((t349 * (t352 + t352)) * t326))
-      let !t354 = (if ((abs t348) - 1.0e-10) > 0 then (if (abs t353) > 0 then 1.0 else 0.0) else 0.0)
-      let !s355 = ((t139 * (if t354 > 0 then (t342 + (negate ((t348 / t353) * t323))) else t342)) + (t196 * s278))
-      let !s356 = ((t139 * (if t354 > 0 then (t346 + (negate ((t348 / t353) * t324))) else t346)) + (t196 * s279))
-      let !s357 = ((t139 * (if t354 > 0 then (t343 + (negate ((t348 / t353) * t326))) else t343)) + (t196 * s280))
-      let !t358 = (sqrt (((s299 * s299) + (s300 * s300)) + (s301 * s301)))
-      let !t359 = (t204 * ((if t354 > 0 then (t342 + (negate ((t348 / t353) * t323))) else t342) + (negate s278)))
-      let !t360 = (t349 * (t351 + t351))
-      let !t361 = (t349 * (t346 + t346))
-      let !t362 = (t349 * (t352 + t352))
-      let !t363 = (sqrt (((t360 * t360) + (t361 * t361)) + (t362 * t362)))
-      let !t364 = (if t363 > 0 then (recip (if (t363 - 1.0e-300) > 0 then t363 else 1.0e-300)) else 0.0)
-      let !t365 = (t364 * t360)
-      let !t366 = (t364 * t361)
-      let !t367 = (t204 * ((if t354 > 0 then (t346 + (negate ((t348 / t353) * t324))) else t346) + (negate s279)))
-      let !t368 = (t364 * t362)
-      let !t369 = (t204 * ((if t354 > 0 then (t343 + (negate ((t348 / t353) * t326))) else t343) + (negate s280)))
-      let !t370 = (((t365 * t359) + (t366 * t367)) + (t368 * t369))
-      let !t371 = (t359 + (negate (t370 * t365)))
-      let !t372 = (t367 + (negate (t370 * t366)))
-      let !t373 = (t369 + (negate (t370 * t368)))
-      let !t374 = (sqrt (((t371 * t371) + (t372 * t372)) + (t373 * t373)))
-      let !t375 = (if t374 > 0 then (recip (if (t374 - 1.0e-300) > 0 then t374 else 1.0e-300)) else 0.0)
-      let !s376 = ((t139 * (t358 * (t375 * t371))) + (t196 * s299))
-      let !s377 = ((t139 * (t358 * (t375 * t372))) + (t196 * s300))
-      let !s378 = ((t139 * (t358 * (t375 * t373))) + (t196 * s301))
-      let !t379 = (s355 + (t138 * s376))
-      let !t380 = (s357 + (t138 * s378))
-      let !t381 = (sqrt ((t379 * t379) + (t380 * t380)))
-      let !t382 = (t381 - 0.8)
-      let !t383 = (s356 + (t138 * s377))
-      let !t384 = (sqrt ((t382 * t382) + (t383 * t383)))
-      let !t385 = (t384 - 0.5)
-      let !t386 = (recip (2.0 * t384))
-      let !t387 = (recip (2.0 * t381))
-      let !t388 = (t382 * (t387 * (t379 + t379)))
-      let !t389 = (sqrt ((s355 * s355) + (s357 * s357)))
-      let !t390 = (t389 - 0.8)
-      let !t391 = (recip (2.0 * (sqrt ((t390 * t390) + (s356 * s356)))))
-      let !t392 = (recip (2.0 * t389))
-      let !t393 = (t390 * (t392 * (s355 + s355)))
-      let !t394 = (t391 * (t393 + t393))
-      let !t395 = (t391 * (s356 + s356))
-      let !t396 = (t390 * (t392 * (s357 + s357)))
-      let !t397 = (t391 * (t396 + t396))
-      let !t398 = (sqrt (((t394 * t394) + (t395 * t395)) + (t397 * t397)))
-      let !t399 = (if t398 > 0 then (recip (if (t398 - 1.0e-300) > 0 then t398 else 1.0e-300)) else 0.0)
-      let !t400 = (t399 * t394)
-      let !t401 = (t399 * t395)
-      let !t402 = (t382 * (t387 * (t380 + t380)))
-      let !t403 = (t399 * t397)
-      let !t404 = ((((t386 * (t388 + t388)) * t400) + ((t386 * (t383 + t383)) * t401)) + ((t386 * (t402 + t402)) * t403))
-      let !t405 = (if ((abs t385) - 1.0e-10) > 0 then (if (abs t404) > 0 then 1.0 else 0.0) else 0.0)
-      let !t406 = (if t405 > 0 then (t379 + (negate ((t385 / t404) * t400))) else t379)
-      let !t407 = (if t405 > 0 then (t380 + (negate ((t385 / t404) * t403))) else t380)
-      let !t408 = (sqrt ((t406 * t406) + (t407 * t407)))
-      let !t409 = (t408 - 0.8)
-      let !t410 = (if t405 > 0 then (t383 + (negate ((t385 / t404) * t401))) else t383)
-      let !t411 = (sqrt ((t409 * t409) + (t410 * t410)))
-      let !t412 = (t411 - 0.5)
-      let !t413 = (recip (2.0 * t411))
-      let !t414 = (recip (2.0 * t408))
-      let !t415 = (t409 * (t414 * (t406 + t406)))
-      let !t416 = (t409 * (t414 * (t407 + t407)))
-      let !t417 = ((((t413 * (t415 + t415)) * t400) + ((t413 * (t410 + t410)) * t401)) + ((t413 * (t416 + t416)) * t403))
-      let !t418 = (if ((abs t412) - 1.0e-10) > 0 then (if (abs t417) > 0 then 1.0 else 0.0) else 0.0)
-      let !t419 = (if t418 > 0 then (t406 + (negate ((t412 / t417) * t400))) else t406)
-      let !t420 = (if t418 > 0 then (t407 + (negate ((t412 / t417) * t403))) else t407)
-      let !t421 = (sqrt ((t419 * t419) + (t420 * t420)))
-      let !t422 = (t421 - 0.8)
-      let !t423 = (if t418 > 0 then (t410 + (negate ((t412 / t417) * t401))) else t410)
-      let !t424 = (sqrt ((t422 * t422) + (t423 * t423)))
-      let !t425 = (t424 - 0.5)
-      let !t426 = (recip (2.0 * t424))
-      let !t427 = (recip (2.0 * t421))
-      let !t428 = (t422 * (t427 * (t419 + t419)))
-      let !t429 = (t422 * (t427 * (t420 + t420)))
-      let !t430 = ((((t426 * (t428 + t428)) * t400) + ((t426 * (t423 + t423)) * t401)) + ((t426 * (t429 + t429)) * t403))
-      let !t431 = (if ((abs t425) - 1.0e-10) > 0 then (if (abs t430) > 0 then 1.0 else 0.0) else 0.0)
-      let !s432 = ((t139 * (if t431 > 0 then (t419 + (negate ((t425 / t430) * t400))) else t419)) + (t196 * s355))
-      let !s433 = ((t139 * (if t431 > 0 then (t423 + (negate ((t425 / t430) * t401))) else t423)) + (t196 * s356))
-      let !s434 = ((t139 * (if t431 > 0 then (t420 + (negate ((t425 / t430) * t403))) else t420)) + (t196 * s357))
-      let !t435 = (sqrt (((s376 * s376) + (s377 * s377)) + (s378 * s378)))
-      let !t436 = (t204 * ((if t431 > 0 then (t419 + (negate ((t425 / t430) * t400))) else t419) + (negate s355)))
-      let !t437 = (t426 * (t428 + t428))
-      let !t438 = (t426 * (t423 + t423))
-      let !t439 = (t426 * (t429 + t429))
-      let !t440 = (sqrt (((t437 * t437) + (t438 * t438)) + (t439 * t439)))
-      let !t441 = (if t440 > 0 then (recip (if (t440 - 1.0e-300) > 0 then t440 else 1.0e-300)) else 0.0)
-      let !t442 = (t441 * t437)
-      let !t443 = (t441 * t438)
-      let !t444 = (t204 * ((if t431 > 0 then (t423 + (negate ((t425 / t430) * t401))) else t423) + (negate s356)))
-      let !t445 = (t441 * t439)
-      let !t446 = (t204 * ((if t431 > 0 then (t420 + (negate ((t425 / t430) * t403))) else t420) + (negate s357)))
-      let !t447 = (((t442 * t436) + (t443 * t444)) + (t445 * t446))
-      let !t448 = (t436 + (negate (t447 * t442)))
-      let !t449 = (t444 + (negate (t447 * t443)))
-      let !t450 = (t446 + (negate (t447 * t445)))
-      let !t451 = (sqrt (((t448 * t448) + (t449 * t449)) + (t450 * t450)))
-      let !t452 = (if t451 > 0 then (recip (if (t451 - 1.0e-300) > 0 then t451 else 1.0e-300)) else 0.0)
-      let !s453 = ((t139 * (t435 * (t452 * t448))) + (t196 * s376))
-      let !s454 = ((t139 * (t435 * (t452 * t449))) + (t196 * s377))
-      let !s455 = ((t139 * (t435 * (t452 * t450))) + (t196 * s378))
-      t456 <- rdU mouse 4
-      t457 <- rdU mouse 5
-      t458 <- rdU mouse 6
-      t459 <- rdU mouse 7
-      t460 <- rdU mouse 8
-      t461 <- rdU mouse 9
-      let !t462 = (recip t101)
-      let !t463 = (6.283185307179586 * t459)
-      let !s464 = (recip (t103 * ((((2.0 * t462) * t460) * t463) + (t103 * ((t462 * t463) * t463)))))
-      let !s465 = ((t103 * ((t462 * t463) * t463)) * s464)
-      let !s466 = (s432 + (negate t104))
-      let !s467 = (s433 + (negate t105))
-      let !s468 = (s434 + (negate t106))
-      let !s469 = (s432 + (negate t456))
-      let !s470 = (s433 + (negate t457))
-      let !s471 = (s434 + (negate t458))
-      t472 <- rdU mouse 10
-      t473 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t474 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t475 <- rdU vel (3 * (truncate t100))
-      t476 <- rdU vel ((3 * (truncate t100)) + 1)
-      t477 <- rdU vel ((3 * (truncate t100)) + 2)
-      t478 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t475 + ((t473 * t472) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t476 + ((t473 * t472) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t477 + ((t473 * t472) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t478 + ((t474 * t472) * (((((s467 * t112) - (s468 * t111)) * t107) + (((s468 * t110) - (s466 * t112)) * t108)) + (((s466 * t111) - (s467 * t110)) * t109))))
-      t479 <- rdU mouse 11
-      t480 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t481 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t482 <- rdU vel (3 * (truncate t100))
-      t483 <- rdU vel ((3 * (truncate t100)) + 1)
-      t484 <- rdU vel ((3 * (truncate t100)) + 2)
-      t485 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t482 + ((t480 * t479) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t483 + ((t480 * t479) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t484 + ((t480 * t479) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t485 + ((t481 * t479) * (((((s467 * s115) - (s468 * s114)) * t107) + (((s468 * s113) - (s466 * s115)) * t108)) + (((s466 * s114) - (s467 * s113)) * t109))))
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (t115 + (t133 * ((t136 * t121) + (t137 * s124))))
+      let !t139 = (t117 + (t133 * ((t136 * t123) + (t137 * s126))))
+      let !t140 = (sqrt ((t138 * t138) + (t139 * t139)))
+      let !t141 = (t140 - 0.8)
+      let !t142 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
+      let !t143 = (sqrt ((t141 * t141) + (t142 * t142)))
+      let !t144 = (t143 - 0.5)
+      let !t145 = (recip (2.0 * t143))
+      let !t146 = (recip (2.0 * t140))
+      let !t147 = (t141 * (t146 * (t138 + t138)))
+      let !t148 = (sqrt ((t115 * t115) + (t117 * t117)))
+      let !t149 = (t148 - 0.8)
+      let !t150 = (recip (2.0 * (sqrt ((t149 * t149) + (t116 * t116)))))
+      let !t151 = (recip (2.0 * t148))
+      let !t152 = (t149 * (t151 * (t115 + t115)))
+      let !t153 = (t150 * (t152 + t152))
+      let !t154 = (t150 * (t116 + t116))
+      let !t155 = (t149 * (t151 * (t117 + t117)))
+      let !t156 = (t150 * (t155 + t155))
+      let !t157 = (sqrt (((t153 * t153) + (t154 * t154)) + (t156 * t156)))
+      let !t158 = (if t157 > 0 then (recip (if (t157 - 1.0e-300) > 0 then t157 else 1.0e-300)) else 0.0)
+      let !t159 = (t158 * t153)
+      let !t160 = (t158 * t154)
+      let !t161 = (t141 * (t146 * (t139 + t139)))
+      let !t162 = (t158 * t156)
+      let !t163 = ((((t145 * (t147 + t147)) * t159) + ((t145 * (t142 + t142)) * t160)) + ((t145 * (t161 + t161)) * t162))
+      let !t164 = (if ((abs t144) - 1.0e-10) > 0 then (if (abs t163) > 0 then 1.0 else 0.0) else 0.0)
+      let !t165 = (if t164 > 0 then (t138 + (negate ((t144 / t163) * t159))) else t138)
+      let !t166 = (if t164 > 0 then (t139 + (negate ((t144 / t163) * t162))) else t139)
+      let !t167 = (sqrt ((t165 * t165) + (t166 * t166)))
+      let !t168 = (t167 - 0.8)
+      let !t169 = (if t164 > 0 then (t142 + (negate ((t144 / t163) * t160))) else t142)
+      let !t170 = (sqrt ((t168 * t168) + (t169 * t169)))
+      let !t171 = (t170 - 0.5)
+      let !t172 = (recip (2.0 * t170))
+      let !t173 = (recip (2.0 * t167))
+      let !t174 = (t168 * (t173 * (t165 + t165)))
+      let !t175 = (t168 * (t173 * (t166 + t166)))
+      let !t176 = ((((t172 * (t174 + t174)) * t159) + ((t172 * (t169 + t169)) * t160)) + ((t172 * (t175 + t175)) * t162))
+      let !t177 = (if ((abs t171) - 1.0e-10) > 0 then (if (abs t176) > 0 then 1.0 else 0.0) else 0.0)
+      let !t178 = (if t177 > 0 then (t165 + (negate ((t171 / t176) * t159))) else t165)
+      let !t179 = (if t177 > 0 then (t166 + (negate ((t171 / t176) * t162))) else t166)
+      let !t180 = (sqrt ((t178 * t178) + (t179 * t179)))
+      let !t181 = (t180 - 0.8)
+      let !t182 = (if t177 > 0 then (t169 + (negate ((t171 / t176) * t160))) else t169)
+      let !t183 = (sqrt ((t181 * t181) + (t182 * t182)))
+      let !t184 = (t183 - 0.5)
+      let !t185 = (recip (2.0 * t183))
+      let !t186 = (recip (2.0 * t180))
+      let !t187 = (t181 * (t186 * (t178 + t178)))
+      let !t188 = (t181 * (t186 * (t179 + t179)))
+      let !t189 = ((((t185 * (t187 + t187)) * t159) + ((t185 * (t182 + t182)) * t160)) + ((t185 * (t188 + t188)) * t162))
+      let !t190 = (if ((abs t184) - 1.0e-10) > 0 then (if (abs t189) > 0 then 1.0 else 0.0) else 0.0)
+      let !t191 = (1.0 - t134)
+      let !s192 = ((t134 * (if t190 > 0 then (t178 + (negate ((t184 / t189) * t159))) else t178)) + (t191 * t115))
+      let !s193 = ((t134 * (if t190 > 0 then (t182 + (negate ((t184 / t189) * t160))) else t182)) + (t191 * t116))
+      let !s194 = ((t134 * (if t190 > 0 then (t179 + (negate ((t184 / t189) * t162))) else t179)) + (t191 * t117))
+      let !t195 = ((t136 * t121) + (t137 * s124))
+      let !t196 = ((t136 * t122) + (t137 * s125))
+      let !t197 = ((t136 * t123) + (t137 * s126))
+      let !t198 = (sqrt (((t195 * t195) + (t196 * t196)) + (t197 * t197)))
+      let !t199 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t200 = (t199 * ((if t190 > 0 then (t178 + (negate ((t184 / t189) * t159))) else t178) + (negate t115)))
+      let !t201 = (t185 * (t187 + t187))
+      let !t202 = (t185 * (t182 + t182))
+      let !t203 = (t185 * (t188 + t188))
+      let !t204 = (sqrt (((t201 * t201) + (t202 * t202)) + (t203 * t203)))
+      let !t205 = (if t204 > 0 then (recip (if (t204 - 1.0e-300) > 0 then t204 else 1.0e-300)) else 0.0)
+      let !t206 = (t205 * t201)
+      let !t207 = (t205 * t202)
+      let !t208 = (t199 * ((if t190 > 0 then (t182 + (negate ((t184 / t189) * t160))) else t182) + (negate t116)))
+      let !t209 = (t205 * t203)
+      let !t210 = (t199 * ((if t190 > 0 then (t179 + (negate ((t184 / t189) * t162))) else t179) + (negate t117)))
+      let !t211 = (((t206 * t200) + (t207 * t208)) + (t209 * t210))
+      let !t212 = (t200 + (negate (t211 * t206)))
+      let !t213 = (t208 + (negate (t211 * t207)))
+      let !t214 = (t210 + (negate (t211 * t209)))
+      let !t215 = (sqrt (((t212 * t212) + (t213 * t213)) + (t214 * t214)))
+      let !t216 = (if t215 > 0 then (recip (if (t215 - 1.0e-300) > 0 then t215 else 1.0e-300)) else 0.0)
+      let !s217 = ((t134 * (t198 * (t216 * t212))) + (t191 * t195))
+      let !s218 = ((t134 * (t198 * (t216 * t213))) + (t191 * t196))
+      let !s219 = ((t134 * (t198 * (t216 * t214))) + (t191 * t197))
+      let !t220 = (s192 + (t133 * s217))
+      let !t221 = (s194 + (t133 * s219))
+      let !t222 = (sqrt ((t220 * t220) + (t221 * t221)))
+      let !t223 = (t222 - 0.8)
+      let !t224 = (s193 + (t133 * s218))
+      let !t225 = (sqrt ((t223 * t223) + (t224 * t224)))
+      let !t226 = (t225 - 0.5)
+      let !t227 = (recip (2.0 * t225))
+      let !t228 = (recip (2.0 * t222))
+      let !t229 = (t223 * (t228 * (t220 + t220)))
+      let !t230 = (sqrt ((s192 * s192) + (s194 * s194)))
+      let !t231 = (t230 - 0.8)
+      let !t232 = (recip (2.0 * (sqrt ((t231 * t231) + (s193 * s193)))))
+      let !t233 = (recip (2.0 * t230))
+      let !t234 = (t231 * (t233 * (s192 + s192)))
+      let !t235 = (t232 * (t234 + t234))
+      let !t236 = (t232 * (s193 + s193))
+      let !t237 = (t231 * (t233 * (s194 + s194)))
+      let !t238 = (t232 * (t237 + t237))
+      let !t239 = (sqrt (((t235 * t235) + (t236 * t236)) + (t238 * t238)))
+      let !t240 = (if t239 > 0 then (recip (if (t239 - 1.0e-300) > 0 then t239 else 1.0e-300)) else 0.0)
+      let !t241 = (t240 * t235)
+      let !t242 = (t240 * t236)
+      let !t243 = (t223 * (t228 * (t221 + t221)))
+      let !t244 = (t240 * t238)
+      let !t245 = ((((t227 * (t229 + t229)) * t241) + ((t227 * (t224 + t224)) * t242)) + ((t227 * (t243 + t243)) * t244))
+      let !t246 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t245) > 0 then 1.0 else 0.0) else 0.0)
+      let !t247 = (if t246 > 0 then (t220 + (negate ((t226 / t245) * t241))) else t220)
+      let !t248 = (if t246 > 0 then (t221 + (negate ((t226 / t245) * t244))) else t221)
+      let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
+      let !t250 = (t249 - 0.8)
+      let !t251 = (if t246 > 0 then (t224 + (negate ((t226 / t245) * t242))) else t224)
+      let !t252 = (sqrt ((t250 * t250) + (t251 * t251)))
+      let !t253 = (t252 - 0.5)
+      let !t254 = (recip (2.0 * t252))
+      let !t255 = (recip (2.0 * t249))
+      let !t256 = (t250 * (t255 * (t247 + t247)))
+      let !t257 = (t250 * (t255 * (t248 + t248)))
+      let !t258 = ((((t254 * (t256 + t256)) * t241) + ((t254 * (t251 + t251)) * t242)) + ((t254 * (t257 + t257)) * t244))
+      let !t259 = (if ((abs t253) - 1.0e-10) > 0 then (if (abs t258) > 0 then 1.0 else 0.0) else 0.0)
+      let !t260 = (if t259 > 0 then (t247 + (negate ((t253 / t258) * t241))) else t247)
+      let !t261 = (if t259 > 0 then (t248 + (negate ((t253 / t258) * t244))) else t248)
+      let !t262 = (sqrt ((t260 * t260) + (t261 * t261)))
+      let !t263 = (t262 - 0.8)
+      let !t264 = (if t259 > 0 then (t251 + (negate ((t253 / t258) * t242))) else t251)
+      let !t265 = (sqrt ((t263 * t263) + (t264 * t264)))
+      let !t266 = (t265 - 0.5)
+      let !t267 = (recip (2.0 * t265))
+      let !t268 = (recip (2.0 * t262))
+      let !t269 = (t263 * (t268 * (t260 + t260)))
+      let !t270 = (t263 * (t268 * (t261 + t261)))
+      let !t271 = ((((t267 * (t269 + t269)) * t241) + ((t267 * (t264 + t264)) * t242)) + ((t267 * (t270 + t270)) * t244))
+      let !t272 = (if ((abs t266) - 1.0e-10) > 0 then (if (abs t271) > 0 then 1.0 else 0.0) else 0.0)
+      let !s273 = ((t134 * (if t272 > 0 then (t260 + (negate ((t266 / t271) * t241))) else t260)) + (t191 * s192))
+      let !s274 = ((t134 * (if t272 > 0 then (t264 + (negate ((t266 / t271) * t242))) else t264)) + (t191 * s193))
+      let !s275 = ((t134 * (if t272 > 0 then (t261 + (negate ((t266 / t271) * t244))) else t261)) + (t191 * s194))
+      let !t276 = (sqrt (((s217 * s217) + (s218 * s218)) + (s219 * s219)))
+      let !t277 = (t199 * ((if t272 > 0 then (t260 + (negate ((t266 / t271) * t241))) else t260) + (negate s192)))
+      let !t278 = (t267 * (t269 + t269))
+      let !t279 = (t267 * (t264 + t264))
+      let !t280 = (t267 * (t270 + t270))
+      let !t281 = (sqrt (((t278 * t278) + (t279 * t279)) + (t280 * t280)))
+      let !t282 = (if t281 > 0 then (recip (if (t281 - 1.0e-300) > 0 then t281 else 1.0e-300)) else 0.0)
+      let !t283 = (t282 * t278)
+      let !t284 = (t282 * t279)
+      let !t285 = (t199 * ((if t272 > 0 then (t264 + (negate ((t266 / t271) * t242))) else t264) + (negate s193)))
+      let !t286 = (t282 * t280)
+      let !t287 = (t199 * ((if t272 > 0 then (t261 + (negate ((t266 / t271) * t244))) else t261) + (negate s194)))
+      let !t288 = (((t283 * t277) + (t284 * t285)) + (t286 * t287))
+      let !t289 = (t277 + (negate (t288 * t283)))
+      let !t290 = (t285 + (negate (t288 * t284)))
+      let !t291 = (t287 + (negate (t288 * t286)))
+      let !t292 = (sqrt (((t289 * t289) + (t290 * t290)) + (t291 * t291)))
+      let !t293 = (if t292 > 0 then (recip (if (t292 - 1.0e-300) > 0 then t292 else 1.0e-300)) else 0.0)
+      let !s294 = ((t134 * (t276 * (t293 * t289))) + (t191 * s217))
+      let !s295 = ((t134 * (t276 * (t293 * t290))) + (t191 * s218))
+      let !s296 = ((t134 * (t276 * (t293 * t291))) + (t191 * s219))
+      let !t297 = (s273 + (t133 * s294))
+      let !t298 = (s275 + (t133 * s296))
+      let !t299 = (sqrt ((t297 * t297) + (t298 * t298)))
+      let !t300 = (t299 - 0.8)
+      let !t301 = (s274 + (t133 * s295))
+      let !t302 = (sqrt ((t300 * t300) + (t301 * t301)))
+      let !t303 = (t302 - 0.5)
+      let !t304 = (recip (2.0 * t302))
+      let !t305 = (recip (2.0 * t299))
+      let !t306 = (t300 * (t305 * (t297 + t297)))
+      let !t307 = (sqrt ((s273 * s273) + (s275 * s275)))
+      let !t308 = (t307 - 0.8)
+      let !t309 = (recip (2.0 * (sqrt ((t308 * t308) + (s274 * s274)))))
+      let !t310 = (recip (2.0 * t307))
+      let !t311 = (t308 * (t310 * (s273 + s273)))
+      let !t312 = (t309 * (t311 + t311))
+      let !t313 = (t309 * (s274 + s274))
+      let !t314 = (t308 * (t310 * (s275 + s275)))
+      let !t315 = (t309 * (t314 + t314))
+      let !t316 = (sqrt (((t312 * t312) + (t313 * t313)) + (t315 * t315)))
+      let !t317 = (if t316 > 0 then (recip (if (t316 - 1.0e-300) > 0 then t316 else 1.0e-300)) else 0.0)
+      let !t318 = (t317 * t312)
+      let !t319 = (t317 * t313)
+      let !t320 = (t300 * (t305 * (t298 + t298)))
+      let !t321 = (t317 * t315)
+      let !t322 = ((((t304 * (t306 + t306)) * t318) + ((t304 * (t301 + t301)) * t319)) + ((t304 * (t320 + t320)) * t321))
+      let !t323 = (if ((abs t303) - 1.0e-10) > 0 then (if (abs t322) > 0 then 1.0 else 0.0) else 0.0)
+      let !t324 = (if t323 > 0 then (t297 + (negate ((t303 / t322) * t318))) else t297)
+      let !t325 = (if t323 > 0 then (t298 + (negate ((t303 / t322) * t321))) else t298)
+      let !t326 = (sqrt ((t324 * t324) + (t325 * t325)))
+      let !t327 = (t326 - 0.8)
+      let !t328 = (if t323 > 0 then (t301 + (negate ((t303 / t322) * t319))) else t301)
+      let !t329 = (sqrt ((t327 * t327) + (t328 * t328)))
+      let !t330 = (t329 - 0.5)
+      let !t331 = (recip (2.0 * t329))
+      let !t332 = (recip (2.0 * t326))
+      let !t333 = (t327 * (t332 * (t324 + t324)))
+      let !t334 = (t327 * (t332 * (t325 + t325)))
+      let !t335 = ((((t331 * (t333 + t333)) * t318) + ((t331 * (t328 + t328)) * t319)) + ((t331 * (t334 + t334)) * t321))
+      let !t336 = (if ((abs t330) - 1.0e-10) > 0 then (if (abs t335) > 0 then 1.0 else 0.0) else 0.0)
+      let !t337 = (if t336 > 0 then (t324 + (negate ((t330 / t335) * t318))) else t324)
+      let !t338 = (if t336 > 0 then (t325 + (negate ((t330 / t335) * t321))) else t325)
+      let !t339 = (sqrt ((t337 * t337) + (t338 * t338)))
+      let !t340 = (t339 - 0.8)
+      let !t341 = (if t336 > 0 then (t328 + (negate ((t330 / t335) * t319))) else t328)
+      let !t342 = (sqrt ((t340 * t340) + (t341 * t341)))
+      let !t343 = (t342 - 0.5)
+      let !t344 = (recip (2.0 * t342))
+      let !t345 = (recip (2.0 * t339))
+      let !t346 = (t340 * (t345 * (t337 + t337)))
+      let !t347 = (t340 * (t345 * (t338 + t338)))
+      let !t348 = ((((t344 * (t346 + t346)) * t318) + ((t344 * (t341 + t341)) * t319)) + ((t344 * (t347 + t347)) * t321))
+      let !t349 = (if ((abs t343) - 1.0e-10) > 0 then (if (abs t348) > 0 then 1.0 else 0.0) else 0.0)
+      let !s350 = ((t134 * (if t349 > 0 then (t337 + (negate ((t343 / t348) * t318))) else t337)) + (t191 * s273))
+      let !s351 = ((t134 * (if t349 > 0 then (t341 + (negate ((t343 / t348) * t319))) else t341)) + (t191 * s274))
+      let !s352 = ((t134 * (if t349 > 0 then (t338 + (negate ((t343 / t348) * t321))) else t338)) + (t191 * s275))
+      let !t353 = (sqrt (((s294 * s294) + (s295 * s295)) + (s296 * s296)))
+      let !t354 = (t199 * ((if t349 > 0 then (t337 + (negate ((t343 / t348) * t318))) else t337) + (negate s273)))
+      let !t355 = (t344 * (t346 + t346))
+      let !t356 = (t344 * (t341 + t341))
+      let !t357 = (t344 * (t347 + t347))
+      let !t358 = (sqrt (((t355 * t355) + (t356 * t356)) + (t357 * t357)))
+      let !t359 = (if t358 > 0 then (recip (if (t358 - 1.0e-300) > 0 then t358 else 1.0e-300)) else 0.0)
+      let !t360 = (t359 * t355)
+      let !t361 = (t359 * t356)
+      let !t362 = (t199 * ((if t349 > 0 then (t341 + (negate ((t343 / t348) * t319))) else t341) + (negate s274)))
+      let !t363 = (t359 * t357)
+      let !t364 = (t199 * ((if t349 > 0 then (t338 + (negate ((t343 / t348) * t321))) else t338) + (negate s275)))
+      let !t365 = (((t360 * t354) + (t361 * t362)) + (t363 * t364))
+      let !t366 = (t354 + (negate (t365 * t360)))
+      let !t367 = (t362 + (negate (t365 * t361)))
+      let !t368 = (t364 + (negate (t365 * t363)))
+      let !t369 = (sqrt (((t366 * t366) + (t367 * t367)) + (t368 * t368)))
+      let !t370 = (if t369 > 0 then (recip (if (t369 - 1.0e-300) > 0 then t369 else 1.0e-300)) else 0.0)
+      let !s371 = ((t134 * (t353 * (t370 * t366))) + (t191 * s294))
+      let !s372 = ((t134 * (t353 * (t370 * t367))) + (t191 * s295))
+      let !s373 = ((t134 * (t353 * (t370 * t368))) + (t191 * s296))
+      let !t374 = (s350 + (t133 * s371))
+      let !t375 = (s352 + (t133 * s373))
+      let !t376 = (sqrt ((t374 * t374) + (t375 * t375)))
+      let !t377 = (t376 - 0.8)
+      let !t378 = (s351 + (t133 * s372))
+      let !t379 = (sqrt ((t377 * t377) + (t378 * t378)))
+      let !t380 = (t379 - 0.5)
+      let !t381 = (recip (2.0 * t379))
+      let !t382 = (recip (2.0 * t376))
+      let !t383 = (t377 * (t382 * (t374 + t374)))
+      let !t384 = (sqrt ((s350 * s350) + (s352 * s352)))
+      let !t385 = (t384 - 0.8)
+      let !t386 = (recip (2.0 * (sqrt ((t385 * t385) + (s351 * s351)))))
+      let !t387 = (recip (2.0 * t384))
+      let !t388 = (t385 * (t387 * (s350 + s350)))
+      let !t389 = (t386 * (t388 + t388))
+      let !t390 = (t386 * (s351 + s351))
+      let !t391 = (t385 * (t387 * (s352 + s352)))
+      let !t392 = (t386 * (t391 + t391))
+      let !t393 = (sqrt (((t389 * t389) + (t390 * t390)) + (t392 * t392)))
+      let !t394 = (if t393 > 0 then (recip (if (t393 - 1.0e-300) > 0 then t393 else 1.0e-300)) else 0.0)
+      let !t395 = (t394 * t389)
+      let !t396 = (t394 * t390)
+      let !t397 = (t377 * (t382 * (t375 + t375)))
+      let !t398 = (t394 * t392)
+      let !t399 = ((((t381 * (t383 + t383)) * t395) + ((t381 * (t378 + t378)) * t396)) + ((t381 * (t397 + t397)) * t398))
+      let !t400 = (if ((abs t380) - 1.0e-10) > 0 then (if (abs t399) > 0 then 1.0 else 0.0) else 0.0)
+      let !t401 = (if t400 > 0 then (t374 + (negate ((t380 / t399) * t395))) else t374)
+      let !t402 = (if t400 > 0 then (t375 + (negate ((t380 / t399) * t398))) else t375)
+      let !t403 = (sqrt ((t401 * t401) + (t402 * t402)))
+      let !t404 = (t403 - 0.8)
+      let !t405 = (if t400 > 0 then (t378 + (negate ((t380 / t399) * t396))) else t378)
+      let !t406 = (sqrt ((t404 * t404) + (t405 * t405)))
+      let !t407 = (t406 - 0.5)
+      let !t408 = (recip (2.0 * t406))
+      let !t409 = (recip (2.0 * t403))
+      let !t410 = (t404 * (t409 * (t401 + t401)))
+      let !t411 = (t404 * (t409 * (t402 + t402)))
+      let !t412 = ((((t408 * (t410 + t410)) * t395) + ((t408 * (t405 + t405)) * t396)) + ((t408 * (t411 + t411)) * t398))
+      let !t413 = (if ((abs t407) - 1.0e-10) > 0 then (if (abs t412) > 0 then 1.0 else 0.0) else 0.0)
+      let !t414 = (if t413 > 0 then (t401 + (negate ((t407 / t412) * t395))) else t401)
+      let !t415 = (if t413 > 0 then (t402 + (negate ((t407 / t412) * t398))) else t402)
+      let !t416 = (sqrt ((t414 * t414) + (t415 * t415)))
+      let !t417 = (t416 - 0.8)
+      let !t418 = (if t413 > 0 then (t405 + (negate ((t407 / t412) * t396))) else t405)
+      let !t419 = (sqrt ((t417 * t417) + (t418 * t418)))
+      let !t420 = (t419 - 0.5)
+      let !t421 = (recip (2.0 * t419))
+      let !t422 = (recip (2.0 * t416))
+      let !t423 = (t417 * (t422 * (t414 + t414)))
+      let !t424 = (t417 * (t422 * (t415 + t415)))
+      let !t425 = ((((t421 * (t423 + t423)) * t395) + ((t421 * (t418 + t418)) * t396)) + ((t421 * (t424 + t424)) * t398))
+      let !t426 = (if ((abs t420) - 1.0e-10) > 0 then (if (abs t425) > 0 then 1.0 else 0.0) else 0.0)
+      let !s427 = ((t134 * (if t426 > 0 then (t414 + (negate ((t420 / t425) * t395))) else t414)) + (t191 * s350))
+      let !s428 = ((t134 * (if t426 > 0 then (t418 + (negate ((t420 / t425) * t396))) else t418)) + (t191 * s351))
+      let !s429 = ((t134 * (if t426 > 0 then (t415 + (negate ((t420 / t425) * t398))) else t415)) + (t191 * s352))
+      let !t430 = (sqrt (((s371 * s371) + (s372 * s372)) + (s373 * s373)))
+      let !t431 = (t199 * ((if t426 > 0 then (t414 + (negate ((t420 / t425) * t395))) else t414) + (negate s350)))
+      let !t432 = (t421 * (t423 + t423))
+      let !t433 = (t421 * (t418 + t418))
+      let !t434 = (t421 * (t424 + t424))
+      let !t435 = (sqrt (((t432 * t432) + (t433 * t433)) + (t434 * t434)))
+      let !t436 = (if t435 > 0 then (recip (if (t435 - 1.0e-300) > 0 then t435 else 1.0e-300)) else 0.0)
+      let !t437 = (t436 * t432)
+      let !t438 = (t436 * t433)
+      let !t439 = (t199 * ((if t426 > 0 then (t418 + (negate ((t420 / t425) * t396))) else t418) + (negate s351)))
+      let !t440 = (t436 * t434)
+      let !t441 = (t199 * ((if t426 > 0 then (t415 + (negate ((t420 / t425) * t398))) else t415) + (negate s352)))
+      let !t442 = (((t437 * t431) + (t438 * t439)) + (t440 * t441))
+      let !t443 = (t431 + (negate (t442 * t437)))
+      let !t444 = (t439 + (negate (t442 * t438)))
+      let !t445 = (t441 + (negate (t442 * t440)))
+      let !t446 = (sqrt (((t443 * t443) + (t444 * t444)) + (t445 * t445)))
+      let !t447 = (if t446 > 0 then (recip (if (t446 - 1.0e-300) > 0 then t446 else 1.0e-300)) else 0.0)
+      let !s448 = ((t134 * (t430 * (t447 * t443))) + (t191 * s371))
+      let !s449 = ((t134 * (t430 * (t447 * t444))) + (t191 * s372))
+      let !s450 = ((t134 * (t430 * (t447 * t445))) + (t191 * s373))
+      t451 <- rdU mouse 4
+      t452 <- rdU mouse 5
+      t453 <- rdU mouse 6
+      t454 <- rdU mouse 7
+      t455 <- rdU mouse 8
+      t456 <- rdU mouse 9
+      let !t457 = (recip t96)
+      let !t458 = (6.283185307179586 * t454)
+      let !s459 = (recip (t98 * ((((2.0 * t457) * t455) * t458) + (t98 * ((t457 * t458) * t458)))))
+      let !s460 = ((t98 * ((t457 * t458) * t458)) * s459)
+      let !s461 = (s427 + (negate t99))
+      let !s462 = (s428 + (negate t100))
+      let !s463 = (s429 + (negate t101))
+      let !s464 = (s427 + (negate t451))
+      let !s465 = (s428 + (negate t452))
+      let !s466 = (s429 + (negate t453))
+      t467 <- rdU mouse 10
+      t468 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t469 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t470 <- rdU vel (3 * (truncate t95))
+      t471 <- rdU vel ((3 * (truncate t95)) + 1)
+      t472 <- rdU vel ((3 * (truncate t95)) + 2)
+      t473 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t470 + ((t468 * t467) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t471 + ((t468 * t467) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t472 + ((t468 * t467) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t473 + ((t469 * t467) * (((((s462 * t107) - (s463 * t106)) * t102) + (((s463 * t105) - (s461 * t107)) * t103)) + (((s461 * t106) - (s462 * t105)) * t104))))
+      t474 <- rdU mouse 11
+      t475 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t476 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t477 <- rdU vel (3 * (truncate t95))
+      t478 <- rdU vel ((3 * (truncate t95)) + 1)
+      t479 <- rdU vel ((3 * (truncate t95)) + 2)
+      t480 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t477 + ((t475 * t474) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t478 + ((t475 * t474) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t479 + ((t475 * t474) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t480 + ((t476 * t474) * (((((s462 * s110) - (s463 * s109)) * t102) + (((s463 * s108) - (s461 * s110)) * t103)) + (((s461 * s109) - (s462 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i486 -> do
-    let !d486 = fromIntegral i486 :: Double
-    loopI 0.0 t9 $ \i487 -> do
-      let !d487 = fromIntegral i487 :: Double
-      chkI contacts (30 * i487) 0 26
-      t488 <- rdU contacts (30 * i487)
-      t489 <- rdU contacts ((30 * i487) + 1)
-      t490 <- rdU contacts ((30 * i487) + 12)
-      t491 <- rdU contacts ((30 * i487) + 13)
-      t492 <- rdU contacts ((30 * i487) + 14)
-      t493 <- rdU contacts ((30 * i487) + 15)
-      t494 <- rdU contacts ((30 * i487) + 16)
-      t495 <- rdU contacts ((30 * i487) + 17)
-      t496 <- rdU contacts ((30 * i487) + 18)
-      t497 <- rdU contacts ((30 * i487) + 19)
-      t498 <- rdU contacts ((30 * i487) + 4)
-      t499 <- rdU contacts ((30 * i487) + 5)
-      t500 <- rdU contacts ((30 * i487) + 6)
-      t501 <- rdU contacts ((30 * i487) + 7)
-      t502 <- rdU contacts ((30 * i487) + 8)
-      t503 <- rdU contacts ((30 * i487) + 9)
-      t504 <- rdU contacts ((30 * i487) + 10)
-      t505 <- rdU contacts ((30 * i487) + 11)
-      t506 <- rdU contacts ((30 * i487) + 26)
-      t507 <- rdU contacts ((30 * i487) + 24)
-      t508 <- rdU contacts ((30 * i487) + 25)
-      t509 <- rdU contacts ((30 * i487) + 22)
-      t510 <- rdU contacts ((30 * i487) + 21)
-      t511 <- rdU contacts ((30 * i487) + 23)
-      let !s512 = (if (negate t489) > 0 then 0.0 else t489)
-      let !s513 = (t489 + 0.5)
-      let !s514 = (if (0.5 - (abs (t488 - t489))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t488)) 1 3
-      t515 <- rdU scalars ((6 * (truncate t488)) + 2)
-      t516 <- rdU scalars ((6 * (truncate t488)) + 3)
-      chkI scalars (6 * (truncate s512)) 1 3
-      t517 <- rdU scalars ((6 * (truncate s512)) + 2)
-      t518 <- rdU scalars ((6 * (truncate s512)) + 3)
-      chkI vel (3 * (truncate t488)) 0 2
-      t519 <- rdU vel (3 * (truncate t488))
-      t520 <- rdU vel ((3 * (truncate t488)) + 1)
-      t521 <- rdU vel ((3 * (truncate t488)) + 2)
-      t522 <- rdU scalars ((6 * (truncate t488)) + 1)
-      chkI vel (3 * (truncate s512)) 0 2
-      t523 <- rdU vel (3 * (truncate s512))
-      t524 <- rdU vel ((3 * (truncate s512)) + 1)
-      t525 <- rdU vel ((3 * (truncate s512)) + 2)
-      t526 <- rdU scalars ((6 * (truncate s512)) + 1)
-      let !s527 = (((((t490 * t519) + (t491 * t520)) + (t492 * t521)) + (t493 * t522)) - (if s513 > 0 then ((((t494 * t523) + (t495 * t524)) + (t496 * t525)) + (t497 * t526)) else 0.0))
-      let !t528 = (t2 * t507)
-      let !t529 = (negate t528)
-      let !t530 = (t508 - ((t506 * s527) * t509))
-      let !t531 = (if (t530 - t528) > 0 then t528 else t530)
-      let !t532 = (if (t529 - t531) > 0 then t529 else t531)
-      let !s533 = (if (1.0 - (abs (t532 - t532))) > 0 then t532 else 0.0)
-      wrU contacts ((30 * i487) + 25) s533
-      let !t534 = (t515 * (s533 - t508))
-      let !s535 = (t534 * t490)
-      let !s536 = (t534 * t491)
-      let !s537 = (t534 * t492)
-      let !s538 = ((t516 * (s533 - t508)) * t493)
-      let !t539 = (t517 * (negate (s533 - t508)))
-      let !s540 = (t539 * t494)
-      let !s541 = (t539 * t495)
-      let !s542 = (t539 * t496)
-      let !s543 = ((t518 * (negate (s533 - t508))) * t497)
-      let !s544 = ((t519 + s535) + (s514 * s540))
-      let !s545 = ((t520 + s536) + (s514 * s541))
-      let !s546 = ((t521 + s537) + (s514 * s542))
-      let !s547 = ((t522 + s538) + (s514 * s543))
-      let !s548 = ((t523 + s540) + (s514 * s535))
-      let !s549 = ((t524 + s541) + (s514 * s536))
-      let !s550 = ((t525 + s542) + (s514 * s537))
-      let !s551 = ((t526 + s543) + (s514 * s538))
-      let !s552 = (((((t498 * s544) + (t499 * s545)) + (t500 * s546)) + (t501 * s547)) - (if s513 > 0 then ((((t502 * s548) + (t503 * s549)) + (t504 * s550)) + (t505 * s551)) else 0.0))
-      let !t553 = (t507 + ((t506 * (t511 - s552)) * t510))
-      let !t554 = (if (negate t553) > 0 then 0.0 else t553)
-      let !s555 = (if (1.0 - (abs (t554 - t554))) > 0 then t554 else 0.0)
-      wrU contacts ((30 * i487) + 24) s555
-      let !t556 = (t515 * (s555 - t507))
-      let !s557 = (t556 * t498)
-      let !s558 = (t556 * t499)
-      let !s559 = (t556 * t500)
-      let !s560 = ((t516 * (s555 - t507)) * t501)
-      let !t561 = (t517 * (negate (s555 - t507)))
-      let !s562 = (t561 * t502)
-      let !s563 = (t561 * t503)
-      let !s564 = (t561 * t504)
-      let !s565 = ((t518 * (negate (s555 - t507))) * t505)
-      let !s566 = ((s544 + s557) + (s514 * s562))
-      let !s567 = ((s545 + s558) + (s514 * s563))
-      let !s568 = ((s546 + s559) + (s514 * s564))
-      let !s569 = ((s547 + s560) + (s514 * s565))
-      let !s570 = ((s548 + s562) + (s514 * s557))
-      let !s571 = ((s549 + s563) + (s514 * s558))
-      let !s572 = ((s550 + s564) + (s514 * s559))
-      let !s573 = ((s551 + s565) + (s514 * s560))
-      wrU vel (3 * (truncate t488)) s566
-      wrU vel ((3 * (truncate t488)) + 1) s567
-      wrU vel ((3 * (truncate t488)) + 2) s568
-      wrU scalars ((6 * (truncate t488)) + 1) s569
-      if s513 > 0 then do
-        wrU vel (3 * (truncate s512)) s570
-        wrU vel ((3 * (truncate s512)) + 1) s571
-        wrU vel ((3 * (truncate s512)) + 2) s572
-        wrU scalars ((6 * (truncate s512)) + 1) s573
+  loopI 0.0 t1 $ \i481 -> do
+    let !d481 = fromIntegral i481 :: Double
+    loopI 0.0 t9 $ \i482 -> do
+      let !d482 = fromIntegral i482 :: Double
+      chkI contacts (30 * i482) 0 26
+      t483 <- rdU contacts (30 * i482)
+      t484 <- rdU contacts ((30 * i482) + 1)
+      t485 <- rdU contacts ((30 * i482) + 12)
+      t486 <- rdU contacts ((30 * i482) + 13)
+      t487 <- rdU contacts ((30 * i482) + 14)
+      t488 <- rdU contacts ((30 * i482) + 15)
+      t489 <- rdU contacts ((30 * i482) + 16)
+      t490 <- rdU contacts ((30 * i482) + 17)
+      t491 <- rdU contacts ((30 * i482) + 18)
+      t492 <- rdU contacts ((30 * i482) + 19)
+      t493 <- rdU contacts ((30 * i482) + 4)
+      t494 <- rdU contacts ((30 * i482) + 5)
+      t495 <- rdU contacts ((30 * i482) + 6)
+      t496 <- rdU contacts ((30 * i482) + 7)
+      t497 <- rdU contacts ((30 * i482) + 8)
+      t498 <- rdU contacts ((30 * i482) + 9)
+      t499 <- rdU contacts ((30 * i482) + 10)
+      t500 <- rdU contacts ((30 * i482) + 11)
+      t501 <- rdU contacts ((30 * i482) + 26)
+      t502 <- rdU contacts ((30 * i482) + 24)
+      t503 <- rdU contacts ((30 * i482) + 25)
+      t504 <- rdU contacts ((30 * i482) + 22)
+      t505 <- rdU contacts ((30 * i482) + 21)
+      t506 <- rdU contacts ((30 * i482) + 23)
+      let !s507 = (if (negate t484) > 0 then 0.0 else t484)
+      let !s508 = (t484 + 0.5)
+      let !s509 = (if (0.5 - (abs (t483 - t484))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t483)) 1 3
+      t510 <- rdU scalars ((6 * (truncate t483)) + 2)
+      t511 <- rdU scalars ((6 * (truncate t483)) + 3)
+      chkI scalars (6 * (truncate s507)) 1 3
+      t512 <- rdU scalars ((6 * (truncate s507)) + 2)
+      t513 <- rdU scalars ((6 * (truncate s507)) + 3)
+      chkI vel (3 * (truncate t483)) 0 2
+      t514 <- rdU vel (3 * (truncate t483))
+      t515 <- rdU vel ((3 * (truncate t483)) + 1)
+      t516 <- rdU vel ((3 * (truncate t483)) + 2)
+      t517 <- rdU scalars ((6 * (truncate t483)) + 1)
+      chkI vel (3 * (truncate s507)) 0 2
+      t518 <- rdU vel (3 * (truncate s507))
+      t519 <- rdU vel ((3 * (truncate s507)) + 1)
+      t520 <- rdU vel ((3 * (truncate s507)) + 2)
+      t521 <- rdU scalars ((6 * (truncate s507)) + 1)
+      let !s522 = (((((t485 * t514) + (t486 * t515)) + (t487 * t516)) + (t488 * t517)) - (if s508 > 0 then ((((t489 * t518) + (t490 * t519)) + (t491 * t520)) + (t492 * t521)) else 0.0))
+      let !t523 = (t2 * t502)
+      let !t524 = (negate t523)
+      let !t525 = (t503 - ((t501 * s522) * t504))
+      let !t526 = (if (t525 - t523) > 0 then t523 else t525)
+      let !t527 = (if (t524 - t526) > 0 then t524 else t526)
+      let !s528 = (if (1.0 - (abs (t527 - t527))) > 0 then t527 else 0.0)
+      wrU contacts ((30 * i482) + 25) s528
+      let !t529 = (t510 * (s528 - t503))
+      let !s530 = (t529 * t485)
+      let !s531 = (t529 * t486)
+      let !s532 = (t529 * t487)
+      let !s533 = ((t511 * (s528 - t503)) * t488)
+      let !t534 = (t512 * (negate (s528 - t503)))
+      let !s535 = (t534 * t489)
+      let !s536 = (t534 * t490)
+      let !s537 = (t534 * t491)
+      let !s538 = ((t513 * (negate (s528 - t503))) * t492)
+      let !s539 = ((t514 + s530) + (s509 * s535))
+      let !s540 = ((t515 + s531) + (s509 * s536))
+      let !s541 = ((t516 + s532) + (s509 * s537))
+      let !s542 = ((t517 + s533) + (s509 * s538))
+      let !s543 = ((t518 + s535) + (s509 * s530))
+      let !s544 = ((t519 + s536) + (s509 * s531))
+      let !s545 = ((t520 + s537) + (s509 * s532))
+      let !s546 = ((t521 + s538) + (s509 * s533))
+      let !s547 = (((((t493 * s539) + (t494 * s540)) + (t495 * s541)) + (t496 * s542)) - (if s508 > 0 then ((((t497 * s543) + (t498 * s544)) + (t499 * s545)) + (t500 * s546)) else 0.0))
+      let !t548 = (t502 + ((t501 * (t506 - s547)) * t505))
+      let !t549 = (if (negate t548) > 0 then 0.0 else t548)
+      let !s550 = (if (1.0 - (abs (t549 - t549))) > 0 then t549 else 0.0)
+      wrU contacts ((30 * i482) + 24) s550
+      let !t551 = (t510 * (s550 - t502))
+      let !s552 = (t551 * t493)
+      let !s553 = (t551 * t494)
+      let !s554 = (t551 * t495)
+      let !s555 = ((t511 * (s550 - t502)) * t496)
+      let !t556 = (t512 * (negate (s550 - t502)))
+      let !s557 = (t556 * t497)
+      let !s558 = (t556 * t498)
+      let !s559 = (t556 * t499)
+      let !s560 = ((t513 * (negate (s550 - t502))) * t500)
+      let !s561 = ((s539 + s552) + (s509 * s557))
+      let !s562 = ((s540 + s553) + (s509 * s558))
+      let !s563 = ((s541 + s554) + (s509 * s559))
+      let !s564 = ((s542 + s555) + (s509 * s560))
+      let !s565 = ((s543 + s557) + (s509 * s552))
+      let !s566 = ((s544 + s558) + (s509 * s553))
+      let !s567 = ((s545 + s559) + (s509 * s554))
+      let !s568 = ((s546 + s560) + (s509 * s555))
+      wrU vel (3 * (truncate t483)) s561
+      wrU vel ((3 * (truncate t483)) + 1) s562
+      wrU vel ((3 * (truncate t483)) + 2) s563
+      wrU scalars ((6 * (truncate t483)) + 1) s564
+      if s508 > 0 then do
+        wrU vel (3 * (truncate s507)) s565
+        wrU vel ((3 * (truncate s507)) + 1) s566
+        wrU vel ((3 * (truncate s507)) + 2) s567
+        wrU scalars ((6 * (truncate s507)) + 1) s568
         pure ()
       else do
         pure ()
       pure ()
-    t574 <- rdU mouse 0
-    if t574 > 0 then do
+    t569 <- rdU mouse 0
+    if t569 > 0 then do
       chkI mouse 0 1 1
-      t575 <- rdU mouse 1
-      chkI scalars (6 * (truncate t575)) 2 2
-      t576 <- rdU scalars ((6 * (truncate t575)) + 2)
-      if t576 > 0 then do
-        chkI scalars (6 * (truncate t575)) 0 5
-        t577 <- rdU scalars ((6 * (truncate t575)) + 3)
-        t578 <- rdU params 0
-        chkI pos (3 * (truncate t575)) 0 2
-        t579 <- rdU pos (3 * (truncate t575))
-        t580 <- rdU pos ((3 * (truncate t575)) + 1)
-        t581 <- rdU pos ((3 * (truncate t575)) + 2)
-        chkI normal (3 * (truncate t575)) 0 2
-        t582 <- rdU normal (3 * (truncate t575))
-        t583 <- rdU normal ((3 * (truncate t575)) + 1)
-        t584 <- rdU normal ((3 * (truncate t575)) + 2)
-        chkI axis (3 * (truncate t575)) 0 2
-        t585 <- rdU axis (3 * (truncate t575))
-        t586 <- rdU axis ((3 * (truncate t575)) + 1)
-        t587 <- rdU axis ((3 * (truncate t575)) + 2)
-        let !s588 = ((t583 * t587) - (t584 * t586))
-        let !s589 = ((t584 * t585) - (t582 * t587))
-        let !s590 = ((t582 * t586) - (t583 * t585))
-        t591 <- rdU scalars (6 * (truncate t575))
-        t592 <- rdU scalars ((6 * (truncate t575)) + 5)
-        t593 <- rdU scalars ((6 * (truncate t575)) + 2)
-        t594 <- rdU scalars ((6 * (truncate t575)) + 3)
-        t595 <- rdU pos (3 * (truncate t575))
-        t596 <- rdU pos ((3 * (truncate t575)) + 1)
-        t597 <- rdU pos ((3 * (truncate t575)) + 2)
-        t598 <- rdU normal (3 * (truncate t575))
-        t599 <- rdU normal ((3 * (truncate t575)) + 1)
-        t600 <- rdU normal ((3 * (truncate t575)) + 2)
-        t601 <- rdU axis (3 * (truncate t575))
-        t602 <- rdU axis ((3 * (truncate t575)) + 1)
-        t603 <- rdU axis ((3 * (truncate t575)) + 2)
-        let !s604 = ((t599 * t603) - (t600 * t602))
-        let !s605 = ((t600 * t601) - (t598 * t603))
-        let !s606 = ((t598 * t602) - (t599 * t601))
-        t607 <- rdU scalars (6 * (truncate t575))
-        t608 <- rdU scalars ((6 * (truncate t575)) + 5)
-        t609 <- rdU scalars ((6 * (truncate t575)) + 2)
-        t610 <- rdU scalars ((6 * (truncate t575)) + 3)
+      t570 <- rdU mouse 1
+      chkI scalars (6 * (truncate t570)) 2 2
+      t571 <- rdU scalars ((6 * (truncate t570)) + 2)
+      if t571 > 0 then do
+        chkI scalars (6 * (truncate t570)) 0 5
+        t572 <- rdU scalars ((6 * (truncate t570)) + 3)
+        t573 <- rdU params 0
+        chkI pos (3 * (truncate t570)) 0 2
+        t574 <- rdU pos (3 * (truncate t570))
+        t575 <- rdU pos ((3 * (truncate t570)) + 1)
+        t576 <- rdU pos ((3 * (truncate t570)) + 2)
+        chkI normal (3 * (truncate t570)) 0 2
+        t577 <- rdU normal (3 * (truncate t570))
+        t578 <- rdU normal ((3 * (truncate t570)) + 1)
+        t579 <- rdU normal ((3 * (truncate t570)) + 2)
+        chkI axis (3 * (truncate t570)) 0 2
+        t580 <- rdU axis (3 * (truncate t570))
+        t581 <- rdU axis ((3 * (truncate t570)) + 1)
+        t582 <- rdU axis ((3 * (truncate t570)) + 2)
+        let !s583 = ((t578 * t582) - (t579 * t581))
+        let !s584 = ((t579 * t580) - (t577 * t582))
+        let !s585 = ((t577 * t581) - (t578 * t580))
+        t586 <- rdU scalars (6 * (truncate t570))
+        t587 <- rdU scalars ((6 * (truncate t570)) + 5)
+        t588 <- rdU scalars ((6 * (truncate t570)) + 2)
+        t589 <- rdU scalars ((6 * (truncate t570)) + 3)
+        t590 <- rdU pos (3 * (truncate t570))
+        t591 <- rdU pos ((3 * (truncate t570)) + 1)
+        t592 <- rdU pos ((3 * (truncate t570)) + 2)
+        t593 <- rdU normal (3 * (truncate t570))
+        t594 <- rdU normal ((3 * (truncate t570)) + 1)
+        t595 <- rdU normal ((3 * (truncate t570)) + 2)
+        t596 <- rdU axis (3 * (truncate t570))
+        t597 <- rdU axis ((3 * (truncate t570)) + 1)
+        t598 <- rdU axis ((3 * (truncate t570)) + 2)
+        let !s599 = ((t594 * t598) - (t595 * t597))
+        let !s600 = ((t595 * t596) - (t593 * t598))
+        let !s601 = ((t593 * t597) - (t594 * t596))
+        t602 <- rdU scalars (6 * (truncate t570))
+        t603 <- rdU scalars ((6 * (truncate t570)) + 5)
+        t604 <- rdU scalars ((6 * (truncate t570)) + 2)
+        t605 <- rdU scalars ((6 * (truncate t570)) + 3)
         chkI mouse 0 2 11
-        t611 <- rdU mouse 2
-        t612 <- rdU mouse 3
-        let !t613 = (t611 / 4.0)
-        let !t614 = (if (abs t613) > 0 then 1.0 else 0.0)
-        let !t615 = (t607 + t612)
-        let !t616 = (cos t615)
-        let !t617 = (sin t615)
-        let !t618 = (t595 + (t613 * ((t616 * t601) + (t617 * s604))))
-        let !t619 = (t597 + (t613 * ((t616 * t603) + (t617 * s606))))
-        let !t620 = (sqrt ((t618 * t618) + (t619 * t619)))
-        let !t621 = (t620 - 0.8)
-        let !t622 = (t596 + (t613 * ((t616 * t602) + (t617 * s605))))
-        let !t623 = (sqrt ((t621 * t621) + (t622 * t622)))
-        let !t624 = (t623 - 0.5)
-        let !t625 = (recip (2.0 * t623))
-        let !t626 = (recip (2.0 * t620))
-        let !t627 = (t621 * (t626 * (t618 + t618)))
-        let !t628 = (sqrt ((t595 * t595) + (t597 * t597)))
-        let !t629 = (t628 - 0.8)
-        let !t630 = (recip (2.0 * (sqrt ((t629 * t629) + (t596 * t596)))))
-        let !t631 = (recip (2.0 * t628))
-        let !t632 = (t629 * (t631 * (t595 + t595)))
-        let !t633 = (t630 * (t632 + t632))
-        let !t634 = (t630 * (t596 + t596))
-        let !t635 = (t629 * (t631 * (t597 + t597)))
-        let !t636 = (t630 * (t635 + t635))
-        let !t637 = (sqrt (((t633 * t633) + (t634 * t634)) + (t636 * t636)))
-        let !t638 = (if t637 > 0 then (recip (if (t637 - 1.0e-300) > 0 then t637 else 1.0e-300)) else 0.0)
-        let !t639 = (t638 * t633)
-        let !t640 = (t638 * t634)
-        let !t641 = (t621 * (t626 * (t619 + t619)))
-        let !t642 = (t638 * t636)
-        let !t643 = ((((t625 * (t627 + t627)) * t639) + ((t625 * (t622 + t622)) * t640)) + ((t625 * (t641 + t641)) * t642))
-        let !t644 = (if ((abs t624) - 1.0e-10) > 0 then (if (abs t643) > 0 then 1.0 else 0.0) else 0.0)
-        let !t645 = (if t644 > 0 then (t618 + (negate ((t624 / t643) * t639))) else t618)
-        let !t646 = (if t644 > 0 then (t619 + (negate ((t624 / t643) * t642))) else t619)
-        let !t647 = (sqrt ((t645 * t645) + (t646 * t646)))
-        let !t648 = (t647 - 0.8)
-        let !t649 = (if t644 > 0 then (t622 + (negate ((t624 / t643) * t640))) else t622)
-        let !t650 = (sqrt ((t648 * t648) + (t649 * t649)))
-        let !t651 = (t650 - 0.5)
-        let !t652 = (recip (2.0 * t650))
-        let !t653 = (recip (2.0 * t647))
-        let !t654 = (t648 * (t653 * (t645 + t645)))
-        let !t655 = (t648 * (t653 * (t646 + t646)))
-        let !t656 = ((((t652 * (t654 + t654)) * t639) + ((t652 * (t649 + t649)) * t640)) + ((t652 * (t655 + t655)) * t642))
-        let !t657 = (if ((abs t651) - 1.0e-10) > 0 then (if (abs t656) > 0 then 1.0 else 0.0) else 0.0)
-        let !t658 = (if t657 > 0 then (t645 + (negate ((t651 / t656) * t639))) else t645)
-        let !t659 = (if t657 > 0 then (t646 + (negate ((t651 / t656) * t642))) else t646)
-        let !t660 = (sqrt ((t658 * t658) + (t659 * t659)))
-        let !t661 = (t660 - 0.8)
-        let !t662 = (if t657 > 0 then (t649 + (negate ((t651 / t656) * t640))) else t649)
-        let !t663 = (sqrt ((t661 * t661) + (t662 * t662)))
-        let !t664 = (t663 - 0.5)
-        let !t665 = (recip (2.0 * t663))
-        let !t666 = (recip (2.0 * t660))
-        let !t667 = (t661 * (t666 * (t658 + t658)))
-        let !t668 = (t661 * (t666 * (t659 + t659)))
-        let !t669 = ((((t665 * (t667 + t667)) * t639) + ((t665 * (t662 + t662)) * t640)) + ((t665 * (t668 + t668)) * t642))
-        let !t670 = (if ((abs t664) - 1.0e-10) > 0 then (if (abs t669) > 0 then 1.0 else 0.0) else 0.0)
-        let !t671 = (1.0 - t614)
-        let !s672 = ((t614 * (if t670 > 0 then (t658 + (negate ((t664 / t669) * t639))) else t658)) + (t671 * t595))
-        let !s673 = ((t614 * (if t670 > 0 then (t662 + (negate ((t664 / t669) * t640))) else t662)) + (t671 * t596))
-        let !s674 = ((t614 * (if t670 > 0 then (t659 + (negate ((t664 / t669) * t642))) else t659)) + (t671 * t597))
-        let !t675 = ((t616 * t601) + (t617 * s604))
-        let !t676 = ((t616 * t602) + (t617 * s605))
-        let !t677 = ((t616 * t603) + (t617 * s606))
-        let !t678 = (sqrt (((t675 * t675) + (t676 * t676)) + (t677 * t677)))
-        let !t679 = (if (abs t613) > 0 then (recip t613) else 0.0)
-        let !t680 = (t679 * ((if t670 > 0 then (t658 + (negate ((t664 / t669) * t639))) else t658) + (negate t595)))
-        let !t681 = (t665 * (t667 + t667))
-        let !t682 = (t665 * (t662 + t662))
-        let !t683 = (t665 * (t668 + t668))
-        let !t684 = (sqrt (((t681 * t681) + (t682 * t682)) + (t683 * t683)))
-        let !t685 = (if t684 > 0 then (recip (if (t684 - 1.0e-300) > 0 then t684 else 1.0e-300)) else 0.0)
-        let !t686 = (t685 * t681)
-        let !t687 = (t685 * t682)
-        let !t688 = (t679 * ((if t670 > 0 then (t662 + (negate ((t664 / t669) * t640))) else t662) + (negate t596)))
-        let !t689 = (t685 * t683)
-        let !t690 = (t679 * ((if t670 > 0 then (t659 + (negate ((t664 / t669) * t642))) else t659) + (negate t597)))
-        let !t691 = (((t686 * t680) + (t687 * t688)) + (t689 * t690))
-        let !t692 = (t680 + (negate (t691 * t686)))
-        let !t693 = (t688 + (negate (t691 * t687)))
-        let !t694 = (t690 + (negate (t691 * t689)))
-        let !t695 = (sqrt (((t692 * t692) + (t693 * t693)) + (t694 * t694)))
-        let !t696 = (if t695 > 0 then (recip (if (t695 - 1.0e-300) > 0 then t695 else 1.0e-300)) else 0.0)
-        let !s697 = ((t614 * (t678 * (t696 * t692))) + (t671 * t675))
-        let !s698 = ((t614 * (t678 * (t696 * t693))) + (t671 * t676))
-        let !s699 = ((t614 * (t678 * (t696 * t694))) + (t671 * t677))
-        let !t700 = (s672 + (t613 * s697))
-        let !t701 = (s674 + (t613 * s699))
-        let !t702 = (sqrt ((t700 * t700) + (t701 * t701)))
-        let !t703 = (t702 - 0.8)
-        let !t704 = (s673 + (t613 * s698))
-        let !t705 = (sqrt ((t703 * t703) + (t704 * t704)))
-        let !t706 = (t705 - 0.5)
-        let !t707 = (recip (2.0 * t705))
-        let !t708 = (recip (2.0 * t702))
-        let !t709 = (t703 * (t708 * (t700 + t700)))
-        let !t710 = (sqrt ((s672 * s672) + (s674 * s674)))
-        let !t711 = (t710 - 0.8)
-        let !t712 = (recip (2.0 * (sqrt ((t711 * t711) + (s673 * s673)))))
-        let !t713 = (recip (2.0 * t710))
-        let !t714 = (t711 * (t713 * (s672 + s672)))
-        let !t715 = (t712 * (t714 + t714))
-        let !t716 = (t712 * (s673 + s673))
-        let !t717 = (t711 * (t713 * (s674 + s674)))
-        let !t718 = (t712 * (t717 + t717))
-        let !t719 = (sqrt (((t715 * t715) + (t716 * t716)) + (t718 * t718)))
-        let !t720 = (if t719 > 0 then (recip (if (t719 - 1.0e-300) > 0 then t719 else 1.0e-300)) else 0.0)
-        let !t721 = (t720 * t715)
-        let !t722 = (t720 * t716)
-        let !t723 = (t703 * (t708 * (t701 + t701)))
-        let !t724 = (t720 * t718)
-        let !t725 = ((((t707 * (t709 + t709)) * t721) + ((t707 * (t704 + t704)) * t722)) + ((t707 * (t723 + t723)) * t724))
-        let !t726 = (if ((abs t706) - 1.0e-10) > 0 then (if (abs t725) > 0 then 1.0 else 0.0) else 0.0)
-        let !t727 = (if t726 > 0 then (t700 + (negate ((t706 / t725) * t721))) else t700)
-        let !t728 = (if t726 > 0 then (t701 + (negate ((t706 / t725) * t724))) else t701)
-        let !t729 = (sqrt ((t727 * t727) + (t728 * t728)))
-        let !t730 = (t729 - 0.8)
-        let !t731 = (if t726 > 0 then (t704 + (negate ((t706 / t725) * t722))) else t704)
-        let !t732 = (sqrt ((t730 * t730) + (t731 * t731)))
-        let !t733 = (t732 - 0.5)
-        let !t734 = (recip (2.0 * t732))
-        let !t735 = (recip (2.0 * t729))
-        let !t736 = (t730 * (t735 * (t727 + t727)))
-        let !t737 = (t730 * (t735 * (t728 + t728)))
-        let !t738 = ((((t734 * (t736 + t736)) * t721) + ((t734 * (t731 + t731)) * t722)) + ((t734 * (t737 + t737)) * t724))
-        let !t739 = (if ((abs t733) - 1.0e-10) > 0 then (if (abs t738) > 0 then 1.0 else 0.0) else 0.0)
-        let !t740 = (if t739 > 0 then (t727 + (negate ((t733 / t738) * t721))) else t727)
-        let !t741 = (if t739 > 0 then (t728 + (negate ((t733 / t738) * t724))) else t728)
-        let !t742 = (sqrt ((t740 * t740) + (t741 * t741)))
-        let !t743 = (t742 - 0.8)
-        let !t744 = (if t739 > 0 then (t731 + (negate ((t733 / t738) * t722))) else t731)
-        let !t745 = (sqrt ((t743 * t743) + (t744 * t744)))
-        let !t746 = (t745 - 0.5)
-        let !t747 = (recip (2.0 * t745))
-        let !t748 = (recip (2.0 * t742))
-        let !t749 = (t743 * (t748 * (t740 + t740)))
-        let !t750 = (t743 * (t748 * (t741 + t741)))
-        let !t751 = ((((t747 * (t749 + t749)) * t721) + ((t747 * (t744 + t744)) * t722)) + ((t747 * (t750 + t750)) * t724))
-        let !t752 = (if ((abs t746) - 1.0e-10) > 0 then (if (abs t751) > 0 then 1.0 else 0.0) else 0.0)
-        let !s753 = ((t614 * (if t752 > 0 then (t740 + (negate ((t746 / t751) * t721))) else t740)) + (t671 * s672))
-        let !s754 = ((t614 * (if t752 > 0 then (t744 + (negate ((t746 / t751) * t722))) else t744)) + (t671 * s673))
-        let !s755 = ((t614 * (if t752 > 0 then (t741 + (negate ((t746 / t751) * t724))) else t741)) + (t671 * s674))
-        let !t756 = (sqrt (((s697 * s697) + (s698 * s698)) + (s699 * s699)))
-        let !t757 = (t679 * ((if t752 > 0 then (t740 + (negate ((t746 / t751) * t721))) else t740) + (negate s672)))
-        let !t758 = (t747 * (t749 + t749))
-        let !t759 = (t747 * (t744 + t744))
-        let !t760 = (t747 * (t750 + t750))
-        let !t761 = (sqrt (((t758 * t758) + (t759 * t759)) + (t760 * t760)))
-        let !t762 = (if t761 > 0 then (recip (if (t761 - 1.0e-300) > 0 then t761 else 1.0e-300)) else 0.0)
-        let !t763 = (t762 * t758)
-        let !t764 = (t762 * t759)
-        let !t765 = (t679 * ((if t752 > 0 then (t744 + (negate ((t746 / t751) * t722))) else t744) + (negate s673)))
-        let !t766 = (t762 * t760)
-        let !t767 = (t679 * ((if t752 > 0 then (t741 + (negate ((t746 / t751) * t724))) else t741) + (negate s674)))
-        let !t768 = (((t763 * t757) + (t764 * t765)) + (t766 * t767))
-        let !t769 = (t757 + (negate (t768 * t763)))
-        let !t770 = (t765 + (negate (t768 * t764)))
-        let !t771 = (t767 + (negate (t768 * t766)))
-        let !t772 = (sqrt (((t769 * t769) + (t770 * t770)) + (t771 * t771)))
-        let !t773 = (if t772 > 0 then (recip (if (t772 - 1.0e-300) > 0 then t772 else 1.0e-300)) else 0.0)
-        let !s774 = ((t614 * (t756 * (t773 * t769))) + (t671 * s697))
-        let !s775 = ((t614 * (t756 * (t773 * t770))) + (t671 * s698))
-        let !s776 = ((t614 * (t756 * (t773 * t771))) + (t671 * s699))
-        let !t777 = (s753 + (t613 * s774))
-        let !t778 = (s755 + (t613 * s776))
-        let !t779 = (sqrt ((t777 * t777) + (t778 * t778)))
-        let !t780 = (t779 - 0.8)
-        let !t781 = (s754 + (t613 * s775))
-        let !t782 = (sqrt ((t780 * t780) + (t781 * t781)))
-        let !t783 = (t782 - 0.5)
-        let !t784 = (recip (2.0 * t782))
-        let !t785 = (recip (2.0 * t779))
-        let !t786 = (t780 * (t785 * (t777 + t777)))
-        let !t787 = (sqrt ((s753 * s753) + (s755 * s755)))
-        let !t788 = (t787 - 0.8)
-        let !t789 = (recip (2.0 * (sqrt ((t788 * t788) + (s754 * s754)))))
-        let !t790 = (recip (2.0 * t787))
-        let !t791 = (t788 * (t790 * (s753 + s753)))
-        let !t792 = (t789 * (t791 + t791))
-        let !t793 = (t789 * (s754 + s754))
-        let !t794 = (t788 * (t790 * (s755 + s755)))
-        let !t795 = (t789 * (t794 + t794))
-        let !t796 = (sqrt (((t792 * t792) + (t793 * t793)) + (t795 * t795)))
-        let !t797 = (if t796 > 0 then (recip (if (t796 - 1.0e-300) > 0 then t796 else 1.0e-300)) else 0.0)
-        let !t798 = (t797 * t792)
-        let !t799 = (t797 * t793)
-        let !t800 = (t780 * (t785 * (t778 + t778)))
-        let !t801 = (t797 * t795)
-        let !t802 = ((((t784 * (t786 + t786)) * t798) + ((t784 * (t781 + t781)) * t799)) + ((t784 * (t800 + t800)) * t801))
-        let !t803 = (if ((abs t783) - 1.0e-10) > 0 then (if (abs t802) > 0 then 1.0 else 0.0) else 0.0)
-        let !t804 = (if t803 > 0 then (t777 + (negate ((t783 / t802) * t798))) else t777)
-        let !t805 = (if t803 > 0 then (t778 + (negate ((t783 / t802) * t801))) else t778)
-        let !t806 = (sqrt ((t804 * t804) + (t805 * t805)))
-        let !t807 = (t806 - 0.8)
-        let !t808 = (if t803 > 0 then (t781 + (negate ((t783 / t802) * t799))) else t781)
-        let !t809 = (sqrt ((t807 * t807) + (t808 * t808)))
-        let !t810 = (t809 - 0.5)
-        let !t811 = (recip (2.0 * t809))
-        let !t812 = (recip (2.0 * t806))
-        let !t813 = (t807 * (t812 * (t804 + t804)))
-        let !t814 = (t807 * (t812 * (t805 + t805)))
-        let !t815 = ((((t811 * (t813 + t813)) * t798) + ((t811 * (t808 + t808)) * t799)) + ((t811 * (t814 + t814)) * t801))
-        let !t816 = (if ((abs t810) - 1.0e-10) > 0 then (if (abs t815) > 0 then 1.0 else 0.0) else 0.0)
-        let !t817 = (if t816 > 0 then (t804 + (negate ((t810 / t815) * t798))) else t804)
-        let !t818 = (if t816 > 0 then (t805 + (negate ((t810 / t815) * t801))) else t805)
-        let !t819 = (sqrt ((t817 * t817) + (t818 * t818)))
-        let !t820 = (t819 - 0.8)
-        let !t821 = (if t816 > 0 then (t808 + (negate ((t810 / t815) * t799))) else t808)
-        let !t822 = (sqrt ((t820 * t820) + (t821 * t821)))
-        let !t823 = (t822 - 0.5)
-        let !t824 = (recip (2.0 * t822))
-        let !t825 = (recip (2.0 * t819))
-        let !t826 = (t820 * (t825 * (t817 + t817)))
-        let !t827 = (t820 * (t825 * (t818 + t818)))
-        let !t828 = ((((t824 * (t826 + t826)) * t798) + ((t824 * (t821 + t821)) * t799)) + ((t824 * (t827 + t827)) * t801))
-        let !t829 = (if ((abs t823) - 1.0e-10) > 0 then (if (abs t828) > 0 then 1.0 else 0.0) else 0.0)
-        let !s830 = ((t614 * (if t829 > 0 then (t817 + (negate ((t823 / t828) * t798))) else t817)) + (t671 * s753))
-        let !s831 = ((t614 * (if t829 > 0 then (t821 + (negate ((t823 / t828) * t799))) else t821)) + (t671 * s754))
-        let !s832 = ((t614 * (if t829 > 0 then (t818 + (negate ((t823 / t828) * t801))) else t818)) + (t671 * s755))
-        let !t833 = (sqrt (((s774 * s774) + (s775 * s775)) + (s776 * s776)))
-        let !t834 = (t679 * ((if t829 > 0 then (t817 + (negate ((t823 / t828) * t798))) else t817) + (negate s753)))
-        let !t835 = (t824 * (t826 + t826))
-        let !t836 = (t824 * (t821 + t821))
-        let !t837 = (t824 * (t827 + t827))
-        let !t838 = (sqrt (((t835 * t835) + (t836 * t836)) + (t837 * t837)))
-        let !t839 = (if t838 > 0 then (recip (if (t838 - 1.0e-300) > 0 then t838 else 1.0e-300)) else 0.0)
-        let !t840 = (t839 * t835)
-        let !t841 = (t839 * t836)
-        let !t842 = (t679 * ((if t829 > 0 then (t821 + (negate ((t823 / t828) * t799))) else t821) + (negate s754)))
-        let !t843 = (t839 * t837)
-        let !t844 = (t679 * ((if t829 > 0 then (t818 + (negate ((t823 / t828) * t801))) else t818) + (negate s755)))
-        let !t845 = (((t840 * t834) + (t841 * t842)) + (t843 * t844))
-        let !t846 = (t834 + (negate (t845 * t840)))
-        let !t847 = (t842 + (negate (t845 * t841)))
-        let !t848 = (t844 + (negate (t845 * t843)))
-        let !t849 = (sqrt (((t846 * t846) + (t847 * t847)) + (t848 * t848)))
-        let !t850 = (if t849 > 0 then (recip (if (t849 - 1.0e-300) > 0 then t849 else 1.0e-300)) else 0.0)
-        let !s851 = ((t614 * (t833 * (t850 * t846))) + (t671 * s774))
-        let !s852 = ((t614 * (t833 * (t850 * t847))) + (t671 * s775))
-        let !s853 = ((t614 * (t833 * (t850 * t848))) + (t671 * s776))
-        let !t854 = (s830 + (t613 * s851))
-        let !t855 = (s832 + (t613 * s853))
-        let !t856 = (sqrt ((t854 * t854) + (t855 * t855)))
-        let !t857 = (t856 - 0.8)
-        let !t858 = (s831 + (t613 * s852))
-        let !t859 = (sqrt ((t857 * t857) + (t858 * t858)))
-        let !t860 = (t859 - 0.5)
-        let !t861 = (recip (2.0 * t859))
-        let !t862 = (recip (2.0 * t856))
-        let !t863 = (t857 * (t862 * (t854 + t854)))
-        let !t864 = (sqrt ((s830 * s830) + (s832 * s832)))
-        let !t865 = (t864 - 0.8)
-        let !t866 = (recip (2.0 * (sqrt ((t865 * t865) + (s831 * s831)))))
-        let !t867 = (recip (2.0 * t864))
-        let !t868 = (t865 * (t867 * (s830 + s830)))
-        let !t869 = (t866 * (t868 + t868))
-        let !t870 = (t866 * (s831 + s831))
-        let !t871 = (t865 * (t867 * (s832 + s832)))
-        let !t872 = (t866 * (t871 + t871))
-        let !t873 = (sqrt (((t869 * t869) + (t870 * t870)) + (t872 * t872)))
-        let !t874 = (if t873 > 0 then (recip (if (t873 - 1.0e-300) > 0 then t873 else 1.0e-300)) else 0.0)
-        let !t875 = (t874 * t869)
-        let !t876 = (t874 * t870)
-        let !t877 = (t857 * (t862 * (t855 + t855)))
-        let !t878 = (t874 * t872)
-        let !t879 = ((((t861 * (t863 + t863)) * t875) + ((t861 * (t858 + t858)) * t876)) + ((t861 * (t877 + t877)) * t878))
-        let !t880 = (if ((abs t860) - 1.0e-10) > 0 then (if (abs t879) > 0 then 1.0 else 0.0) else 0.0)
-        let !t881 = (if t880 > 0 then (t854 + (negate ((t860 / t879) * t875))) else t854)
-        let !t882 = (if t880 > 0 then (t855 + (negate ((t860 / t879) * t878))) else t855)
-        let !t883 = (sqrt ((t881 * t881) + (t882 * t882)))
-        let !t884 = (t883 - 0.8)
-        let !t885 = (if t880 > 0 then (t858 + (negate ((t860 / t879) * t876))) else t858)
-        let !t886 = (sqrt ((t884 * t884) + (t885 * t885)))
-        let !t887 = (t886 - 0.5)
-        let !t888 = (recip (2.0 * t886))
-        let !t889 = (recip (2.0 * t883))
-        let !t890 = (t884 * (t889 * (t881 + t881)))
-        let !t891 = (t884 * (t889 * (t882 + t882)))
-        let !t892 = ((((t888 * (t890 + t890)) * t875) + ((t888 * (t885 + t885)) * t876)) + ((t888 * (t891 + t891)) * t878))
-        let !t893 = (if ((abs t887) - 1.0e-10) > 0 then (if (abs t892) > 0 then 1.0 else 0.0) else 0.0)
-        let !t894 = (if t893 > 0 then (t881 + (negate ((t887 / t892) * t875))) else t881)
-        let !t895 = (if t893 > 0 then (t882 + (negate ((t887 / t892) * t878))) else t882)
-        let !t896 = (sqrt ((t894 * t894) + (t895 * t895)))
-        let !t897 = (t896 - 0.8)
-        let !t898 = (if t893 > 0 then (t885 + (negate ((t887 / t892) * t876))) else t885)
-        let !t899 = (sqrt ((t897 * t897) + (t898 * t898)))
-        let !t900 = (t899 - 0.5)
-        let !t901 = (recip (2.0 * t899))
-        let !t902 = (recip (2.0 * t896))
-        let !t903 = (t897 * (t902 * (t894 + t894)))
-        let !t904 = (t897 * (t902 * (t895 + t895)))
-        let !t905 = ((((t901 * (t903 + t903)) * t875) + ((t901 * (t898 + t898)) * t876)) + ((t901 * (t904 + t904)) * t878))
-        let !t906 = (if ((abs t900) - 1.0e-10) > 0 then (if (abs t905) > 0 then 1.0 else 0.0) else 0.0)
-        let !s907 = ((t614 * (if t906 > 0 then (t894 + (negate ((t900 / t905) * t875))) else t894)) + (t671 * s830))
-        let !s908 = ((t614 * (if t906 > 0 then (t898 + (negate ((t900 / t905) * t876))) else t898)) + (t671 * s831))
-        let !s909 = ((t614 * (if t906 > 0 then (t895 + (negate ((t900 / t905) * t878))) else t895)) + (t671 * s832))
-        let !t910 = (sqrt (((s851 * s851) + (s852 * s852)) + (s853 * s853)))
-        let !t911 = (t679 * ((if t906 > 0 then (t894 + (negate ((t900 / t905) * t875))) else t894) + (negate s830)))
-        let !t912 = (t901 * (t903 + t903))
-        let !t913 = (t901 * (t898 + t898))
-        let !t914 = (t901 * (t904 + t904))
-        let !t915 = (sqrt (((t912 * t912) + (t913 * t913)) + (t914 * t914)))
-        let !t916 = (if t915 > 0 then (recip (if (t915 - 1.0e-300) > 0 then t915 else 1.0e-300)) else 0.0)
-        let !t917 = (t916 * t912)
-        let !t918 = (t916 * t913)
-        let !t919 = (t679 * ((if t906 > 0 then (t898 + (negate ((t900 / t905) * t876))) else t898) + (negate s831)))
-        let !t920 = (t916 * t914)
-        let !t921 = (t679 * ((if t906 > 0 then (t895 + (negate ((t900 / t905) * t878))) else t895) + (negate s832)))
-        let !t922 = (((t917 * t911) + (t918 * t919)) + (t920 * t921))
-        let !t923 = (t911 + (negate (t922 * t917)))
-        let !t924 = (t919 + (negate (t922 * t918)))
-        let !t925 = (t921 + (negate (t922 * t920)))
-        let !t926 = (sqrt (((t923 * t923) + (t924 * t924)) + (t925 * t925)))
-        let !t927 = (if t926 > 0 then (recip (if (t926 - 1.0e-300) > 0 then t926 else 1.0e-300)) else 0.0)
-        let !s928 = ((t614 * (t910 * (t927 * t923))) + (t671 * s851))
-        let !s929 = ((t614 * (t910 * (t927 * t924))) + (t671 * s852))
-        let !s930 = ((t614 * (t910 * (t927 * t925))) + (t671 * s853))
-        t931 <- rdU mouse 4
-        t932 <- rdU mouse 5
-        t933 <- rdU mouse 6
-        t934 <- rdU mouse 7
-        t935 <- rdU mouse 8
-        t936 <- rdU mouse 9
-        let !t937 = (recip t576)
-        let !t938 = (6.283185307179586 * t934)
-        let !s939 = (recip (t578 * ((((2.0 * t937) * t935) * t938) + (t578 * ((t937 * t938) * t938)))))
-        let !s940 = ((t578 * ((t937 * t938) * t938)) * s939)
-        let !s941 = (s907 + (negate t579))
-        let !s942 = (s908 + (negate t580))
-        let !s943 = (s909 + (negate t581))
-        let !s944 = (s907 + (negate t931))
-        let !s945 = (s908 + (negate t932))
-        let !s946 = (s909 + (negate t933))
-        t947 <- rdU mouse 10
-        chkI vel (3 * (truncate t575)) 0 2
-        t948 <- rdU vel (3 * (truncate t575))
-        t949 <- rdU vel ((3 * (truncate t575)) + 1)
-        t950 <- rdU vel ((3 * (truncate t575)) + 2)
-        t951 <- rdU scalars ((6 * (truncate t575)) + 1)
-        let !t952 = (t936 * t578)
-        let !t953 = (negate t952)
-        let !t954 = (((((s942 * t587) - (s943 * t586)) * t582) + (((s943 * t585) - (s941 * t587)) * t583)) + (((s941 * t586) - (s942 * t585)) * t584))
-        let !t955 = (t947 + ((negate ((((((t585 * t948) + (t586 * t949)) + (t587 * t950)) + (t954 * t951)) + (s940 * (((s944 * t585) + (s945 * t586)) + (s946 * t587)))) + (s939 * t947))) / (((t576 * (((t585 * t585) + (t586 * t586)) + (t587 * t587))) + ((t577 * t954) * t954)) + s939)))
-        let !t956 = (if (t955 - t952) > 0 then t952 else t955)
-        let !t957 = (if (t953 - t956) > 0 then t953 else t956)
-        let !s958 = (if (1.0 - (abs (t957 - t957))) > 0 then t957 else 0.0)
-        wrU mouse 10 s958
-        t959 <- rdU scalars ((6 * (truncate t575)) + 2)
-        t960 <- rdU scalars ((6 * (truncate t575)) + 3)
-        t961 <- rdU vel (3 * (truncate t575))
-        t962 <- rdU vel ((3 * (truncate t575)) + 1)
-        t963 <- rdU vel ((3 * (truncate t575)) + 2)
-        t964 <- rdU scalars ((6 * (truncate t575)) + 1)
-        wrU vel (3 * (truncate t575)) (t961 + ((t959 * (s958 - t947)) * t585))
-        wrU vel ((3 * (truncate t575)) + 1) (t962 + ((t959 * (s958 - t947)) * t586))
-        wrU vel ((3 * (truncate t575)) + 2) (t963 + ((t959 * (s958 - t947)) * t587))
-        wrU scalars ((6 * (truncate t575)) + 1) (t964 + ((t960 * (s958 - t947)) * t954))
-        t965 <- rdU mouse 11
-        t966 <- rdU vel (3 * (truncate t575))
-        t967 <- rdU vel ((3 * (truncate t575)) + 1)
-        t968 <- rdU vel ((3 * (truncate t575)) + 2)
-        t969 <- rdU scalars ((6 * (truncate t575)) + 1)
-        let !t970 = (((((s942 * s590) - (s943 * s589)) * t582) + (((s943 * s588) - (s941 * s590)) * t583)) + (((s941 * s589) - (s942 * s588)) * t584))
-        let !t971 = (t965 + ((negate ((((((s588 * t966) + (s589 * t967)) + (s590 * t968)) + (t970 * t969)) + (s940 * (((s944 * s588) + (s945 * s589)) + (s946 * s590)))) + (s939 * t965))) / (((t576 * (((s588 * s588) + (s589 * s589)) + (s590 * s590))) + ((t577 * t970) * t970)) + s939)))
-        let !t972 = (if (t971 - t952) > 0 then t952 else t971)
-        let !t973 = (if (t953 - t972) > 0 then t953 else t972)
-        let !s974 = (if (1.0 - (abs (t973 - t973))) > 0 then t973 else 0.0)
-        wrU mouse 11 s974
-        t975 <- rdU scalars ((6 * (truncate t575)) + 2)
-        t976 <- rdU scalars ((6 * (truncate t575)) + 3)
-        t977 <- rdU vel (3 * (truncate t575))
-        t978 <- rdU vel ((3 * (truncate t575)) + 1)
-        t979 <- rdU vel ((3 * (truncate t575)) + 2)
-        t980 <- rdU scalars ((6 * (truncate t575)) + 1)
-        wrU vel (3 * (truncate t575)) (t977 + ((t975 * (s974 - t965)) * s588))
-        wrU vel ((3 * (truncate t575)) + 1) (t978 + ((t975 * (s974 - t965)) * s589))
-        wrU vel ((3 * (truncate t575)) + 2) (t979 + ((t975 * (s974 - t965)) * s590))
-        wrU scalars ((6 * (truncate t575)) + 1) (t980 + ((t976 * (s974 - t965)) * t970))
+        t606 <- rdU mouse 2
+        t607 <- rdU mouse 3
+        let !t608 = (t606 / 4.0)
+        let !t609 = (if (abs t608) > 0 then 1.0 else 0.0)
+        let !t610 = (t602 + t607)
+        let !t611 = (cos t610)
+        let !t612 = (sin t610)
+        let !t613 = (t590 + (t608 * ((t611 * t596) + (t612 * s599))))
+        let !t614 = (t592 + (t608 * ((t611 * t598) + (t612 * s601))))
+        let !t615 = (sqrt ((t613 * t613) + (t614 * t614)))
+        let !t616 = (t615 - 0.8)
+        let !t617 = (t591 + (t608 * ((t611 * t597) + (t612 * s600))))
+        let !t618 = (sqrt ((t616 * t616) + (t617 * t617)))
+        let !t619 = (t618 - 0.5)
+        let !t620 = (recip (2.0 * t618))
+        let !t621 = (recip (2.0 * t615))
+        let !t622 = (t616 * (t621 * (t613 + t613)))
+        let !t623 = (sqrt ((t590 * t590) + (t592 * t592)))
+        let !t624 = (t623 - 0.8)
+        let !t625 = (recip (2.0 * (sqrt ((t624 * t624) + (t591 * t591)))))
+        let !t626 = (recip (2.0 * t623))
+        let !t627 = (t624 * (t626 * (t590 + t590)))
+        let !t628 = (t625 * (t627 + t627))
+        let !t629 = (t625 * (t591 + t591))
+        let !t630 = (t624 * (t626 * (t592 + t592)))
+        let !t631 = (t625 * (t630 + t630))
+        let !t632 = (sqrt (((t628 * t628) + (t629 * t629)) + (t631 * t631)))
+        let !t633 = (if t632 > 0 then (recip (if (t632 - 1.0e-300) > 0 then t632 else 1.0e-300)) else 0.0)
+        let !t634 = (t633 * t628)
+        let !t635 = (t633 * t629)
+        let !t636 = (t616 * (t621 * (t614 + t614)))
+        let !t637 = (t633 * t631)
+        let !t638 = ((((t620 * (t622 + t622)) * t634) + ((t620 * (t617 + t617)) * t635)) + ((t620 * (t636 + t636)) * t637))
+        let !t639 = (if ((abs t619) - 1.0e-10) > 0 then (if (abs t638) > 0 then 1.0 else 0.0) else 0.0)
+        let !t640 = (if t639 > 0 then (t613 + (negate ((t619 / t638) * t634))) else t613)
+        let !t641 = (if t639 > 0 then (t614 + (negate ((t619 / t638) * t637))) else t614)
+        let !t642 = (sqrt ((t640 * t640) + (t641 * t641)))
+        let !t643 = (t642 - 0.8)
+        let !t644 = (if t639 > 0 then (t617 + (negate ((t619 / t638) * t635))) else t617)
+        let !t645 = (sqrt ((t643 * t643) + (t644 * t644)))
+        let !t646 = (t645 - 0.5)
+        let !t647 = (recip (2.0 * t645))
+        let !t648 = (recip (2.0 * t642))
+        let !t649 = (t643 * (t648 * (t640 + t640)))
+        let !t650 = (t643 * (t648 * (t641 + t641)))
+        let !t651 = ((((t647 * (t649 + t649)) * t634) + ((t647 * (t644 + t644)) * t635)) + ((t647 * (t650 + t650)) * t637))
+        let !t652 = (if ((abs t646) - 1.0e-10) > 0 then (if (abs t651) > 0 then 1.0 else 0.0) else 0.0)
+        let !t653 = (if t652 > 0 then (t640 + (negate ((t646 / t651) * t634))) else t640)
+        let !t654 = (if t652 > 0 then (t641 + (negate ((t646 / t651) * t637))) else t641)
+        let !t655 = (sqrt ((t653 * t653) + (t654 * t654)))
+        let !t656 = (t655 - 0.8)
+        let !t657 = (if t652 > 0 then (t644 + (negate ((t646 / t651) * t635))) else t644)
+        let !t658 = (sqrt ((t656 * t656) + (t657 * t657)))
+        let !t659 = (t658 - 0.5)
+        let !t660 = (recip (2.0 * t658))
+        let !t661 = (recip (2.0 * t655))
+        let !t662 = (t656 * (t661 * (t653 + t653)))
+        let !t663 = (t656 * (t661 * (t654 + t654)))
+        let !t664 = ((((t660 * (t662 + t662)) * t634) + ((t660 * (t657 + t657)) * t635)) + ((t660 * (t663 + t663)) * t637))
+        let !t665 = (if ((abs t659) - 1.0e-10) > 0 then (if (abs t664) > 0 then 1.0 else 0.0) else 0.0)
+        let !t666 = (1.0 - t609)
+        let !s667 = ((t609 * (if t665 > 0 then (t653 + (negate ((t659 / t664) * t634))) else t653)) + (t666 * t590))
+        let !s668 = ((t609 * (if t665 > 0 then (t657 + (negate ((t659 / t664) * t635))) else t657)) + (t666 * t591))
+        let !s669 = ((t609 * (if t665 > 0 then (t654 + (negate ((t659 / t664) * t637))) else t654)) + (t666 * t592))
+        let !t670 = ((t611 * t596) + (t612 * s599))
+        let !t671 = ((t611 * t597) + (t612 * s600))
+        let !t672 = ((t611 * t598) + (t612 * s601))
+        let !t673 = (sqrt (((t670 * t670) + (t671 * t671)) + (t672 * t672)))
+        let !t674 = (if (abs t608) > 0 then (recip t608) else 0.0)
+        let !t675 = (t674 * ((if t665 > 0 then (t653 + (negate ((t659 / t664) * t634))) else t653) + (negate t590)))
+        let !t676 = (t660 * (t662 + t662))
+        let !t677 = (t660 * (t657 + t657))
+        let !t678 = (t660 * (t663 + t663))
+        let !t679 = (sqrt (((t676 * t676) + (t677 * t677)) + (t678 * t678)))
+        let !t680 = (if t679 > 0 then (recip (if (t679 - 1.0e-300) > 0 then t679 else 1.0e-300)) else 0.0)
+        let !t681 = (t680 * t676)
+        let !t682 = (t680 * t677)
+        let !t683 = (t674 * ((if t665 > 0 then (t657 + (negate ((t659 / t664) * t635))) else t657) + (negate t591)))
+        let !t684 = (t680 * t678)
+        let !t685 = (t674 * ((if t665 > 0 then (t654 + (negate ((t659 / t664) * t637))) else t654) + (negate t592)))
+        let !t686 = (((t681 * t675) + (t682 * t683)) + (t684 * t685))
+        let !t687 = (t675 + (negate (t686 * t681)))
+        let !t688 = (t683 + (negate (t686 * t682)))
+        let !t689 = (t685 + (negate (t686 * t684)))
+        let !t690 = (sqrt (((t687 * t687) + (t688 * t688)) + (t689 * t689)))
+        let !t691 = (if t690 > 0 then (recip (if (t690 - 1.0e-300) > 0 then t690 else 1.0e-300)) else 0.0)
+        let !s692 = ((t609 * (t673 * (t691 * t687))) + (t666 * t670))
+        let !s693 = ((t609 * (t673 * (t691 * t688))) + (t666 * t671))
+        let !s694 = ((t609 * (t673 * (t691 * t689))) + (t666 * t672))
+        let !t695 = (s667 + (t608 * s692))
+        let !t696 = (s669 + (t608 * s694))
+        let !t697 = (sqrt ((t695 * t695) + (t696 * t696)))
+        let !t698 = (t697 - 0.8)
+        let !t699 = (s668 + (t608 * s693))
+        let !t700 = (sqrt ((t698 * t698) + (t699 * t699)))
+        let !t701 = (t700 - 0.5)
+        let !t702 = (recip (2.0 * t700))
+        let !t703 = (recip (2.0 * t697))
+        let !t704 = (t698 * (t703 * (t695 + t695)))
+        let !t705 = (sqrt ((s667 * s667) + (s669 * s669)))
+        let !t706 = (t705 - 0.8)
+        let !t707 = (recip (2.0 * (sqrt ((t706 * t706) + (s668 * s668)))))
+        let !t708 = (recip (2.0 * t705))
+        let !t709 = (t706 * (t708 * (s667 + s667)))
+        let !t710 = (t707 * (t709 + t709))
+        let !t711 = (t707 * (s668 + s668))
+        let !t712 = (t706 * (t708 * (s669 + s669)))
+        let !t713 = (t707 * (t712 + t712))
+        let !t714 = (sqrt (((t710 * t710) + (t711 * t711)) + (t713 * t713)))
+        let !t715 = (if t714 > 0 then (recip (if (t714 - 1.0e-300) > 0 then t714 else 1.0e-300)) else 0.0)
+        let !t716 = (t715 * t710)
+        let !t717 = (t715 * t711)
+        let !t718 = (t698 * (t703 * (t696 + t696)))
+        let !t719 = (t715 * t713)
+        let !t720 = ((((t702 * (t704 + t704)) * t716) + ((t702 * (t699 + t699)) * t717)) + ((t702 * (t718 + t718)) * t719))
+        let !t721 = (if ((abs t701) - 1.0e-10) > 0 then (if (abs t720) > 0 then 1.0 else 0.0) else 0.0)
+        let !t722 = (if t721 > 0 then (t695 + (negate ((t701 / t720) * t716))) else t695)
+        let !t723 = (if t721 > 0 then (t696 + (negate ((t701 / t720) * t719))) else t696)
+        let !t724 = (sqrt ((t722 * t722) + (t723 * t723)))
+        let !t725 = (t724 - 0.8)
+        let !t726 = (if t721 > 0 then (t699 + (negate ((t701 / t720) * t717))) else t699)
+        let !t727 = (sqrt ((t725 * t725) + (t726 * t726)))
+        let !t728 = (t727 - 0.5)
+        let !t729 = (recip (2.0 * t727))
+        let !t730 = (recip (2.0 * t724))
+        let !t731 = (t725 * (t730 * (t722 + t722)))
+        let !t732 = (t725 * (t730 * (t723 + t723)))
+        let !t733 = ((((t729 * (t731 + t731)) * t716) + ((t729 * (t726 + t726)) * t717)) + ((t729 * (t732 + t732)) * t719))
+        let !t734 = (if ((abs t728) - 1.0e-10) > 0 then (if (abs t733) > 0 then 1.0 else 0.0) else 0.0)
+        let !t735 = (if t734 > 0 then (t722 + (negate ((t728 / t733) * t716))) else t722)
+        let !t736 = (if t734 > 0 then (t723 + (negate ((t728 / t733) * t719))) else t723)
+        let !t737 = (sqrt ((t735 * t735) + (t736 * t736)))
+        let !t738 = (t737 - 0.8)
+        let !t739 = (if t734 > 0 then (t726 + (negate ((t728 / t733) * t717))) else t726)
+        let !t740 = (sqrt ((t738 * t738) + (t739 * t739)))
+        let !t741 = (t740 - 0.5)
+        let !t742 = (recip (2.0 * t740))
+        let !t743 = (recip (2.0 * t737))
+        let !t744 = (t738 * (t743 * (t735 + t735)))
+        let !t745 = (t738 * (t743 * (t736 + t736)))
+        let !t746 = ((((t742 * (t744 + t744)) * t716) + ((t742 * (t739 + t739)) * t717)) + ((t742 * (t745 + t745)) * t719))
+        let !t747 = (if ((abs t741) - 1.0e-10) > 0 then (if (abs t746) > 0 then 1.0 else 0.0) else 0.0)
+        let !s748 = ((t609 * (if t747 > 0 then (t735 + (negate ((t741 / t746) * t716))) else t735)) + (t666 * s667))
+        let !s749 = ((t609 * (if t747 > 0 then (t739 + (negate ((t741 / t746) * t717))) else t739)) + (t666 * s668))
+        let !s750 = ((t609 * (if t747 > 0 then (t736 + (negate ((t741 / t746) * t719))) else t736)) + (t666 * s669))
+        let !t751 = (sqrt (((s692 * s692) + (s693 * s693)) + (s694 * s694)))
+        let !t752 = (t674 * ((if t747 > 0 then (t735 + (negate ((t741 / t746) * t716))) else t735) + (negate s667)))
+        let !t753 = (t742 * (t744 + t744))
+        let !t754 = (t742 * (t739 + t739))
+        let !t755 = (t742 * (t745 + t745))
+        let !t756 = (sqrt (((t753 * t753) + (t754 * t754)) + (t755 * t755)))
+        let !t757 = (if t756 > 0 then (recip (if (t756 - 1.0e-300) > 0 then t756 else 1.0e-300)) else 0.0)
+        let !t758 = (t757 * t753)
+        let !t759 = (t757 * t754)
+        let !t760 = (t674 * ((if t747 > 0 then (t739 + (negate ((t741 / t746) * t717))) else t739) + (negate s668)))
+        let !t761 = (t757 * t755)
+        let !t762 = (t674 * ((if t747 > 0 then (t736 + (negate ((t741 / t746) * t719))) else t736) + (negate s669)))
+        let !t763 = (((t758 * t752) + (t759 * t760)) + (t761 * t762))
+        let !t764 = (t752 + (negate (t763 * t758)))
+        let !t765 = (t760 + (negate (t763 * t759)))
+        let !t766 = (t762 + (negate (t763 * t761)))
+        let !t767 = (sqrt (((t764 * t764) + (t765 * t765)) + (t766 * t766)))
+        let !t768 = (if t767 > 0 then (recip (if (t767 - 1.0e-300) > 0 then t767 else 1.0e-300)) else 0.0)
+        let !s769 = ((t609 * (t751 * (t768 * t764))) + (t666 * s692))
+        let !s770 = ((t609 * (t751 * (t768 * t765))) + (t666 * s693))
+        let !s771 = ((t609 * (t751 * (t768 * t766))) + (t666 * s694))
+        let !t772 = (s748 + (t608 * s769))
+        let !t773 = (s750 + (t608 * s771))
+        let !t774 = (sqrt ((t772 * t772) + (t773 * t773)))
+        let !t775 = (t774 - 0.8)
+        let !t776 = (s749 + (t608 * s770))
+        let !t777 = (sqrt ((t775 * t775) + (t776 * t776)))
+        let !t778 = (t777 - 0.5)
+        let !t779 = (recip (2.0 * t777))
+        let !t780 = (recip (2.0 * t774))
+        let !t781 = (t775 * (t780 * (t772 + t772)))
+        let !t782 = (sqrt ((s748 * s748) + (s750 * s750)))
+        let !t783 = (t782 - 0.8)
+        let !t784 = (recip (2.0 * (sqrt ((t783 * t783) + (s749 * s749)))))
+        let !t785 = (recip (2.0 * t782))
+        let !t786 = (t783 * (t785 * (s748 + s748)))
+        let !t787 = (t784 * (t786 + t786))
+        let !t788 = (t784 * (s749 + s749))
+        let !t789 = (t783 * (t785 * (s750 + s750)))
+        let !t790 = (t784 * (t789 + t789))
+        let !t791 = (sqrt (((t787 * t787) + (t788 * t788)) + (t790 * t790)))
+        let !t792 = (if t791 > 0 then (recip (if (t791 - 1.0e-300) > 0 then t791 else 1.0e-300)) else 0.0)
+        let !t793 = (t792 * t787)
+        let !t794 = (t792 * t788)
+        let !t795 = (t775 * (t780 * (t773 + t773)))
+        let !t796 = (t792 * t790)
+        let !t797 = ((((t779 * (t781 + t781)) * t793) + ((t779 * (t776 + t776)) * t794)) + ((t779 * (t795 + t795)) * t796))
+        let !t798 = (if ((abs t778) - 1.0e-10) > 0 then (if (abs t797) > 0 then 1.0 else 0.0) else 0.0)
+        let !t799 = (if t798 > 0 then (t772 + (negate ((t778 / t797) * t793))) else t772)
+        let !t800 = (if t798 > 0 then (t773 + (negate ((t778 / t797) * t796))) else t773)
+        let !t801 = (sqrt ((t799 * t799) + (t800 * t800)))
+        let !t802 = (t801 - 0.8)
+        let !t803 = (if t798 > 0 then (t776 + (negate ((t778 / t797) * t794))) else t776)
+        let !t804 = (sqrt ((t802 * t802) + (t803 * t803)))
+        let !t805 = (t804 - 0.5)
+        let !t806 = (recip (2.0 * t804))
+        let !t807 = (recip (2.0 * t801))
+        let !t808 = (t802 * (t807 * (t799 + t799)))
+        let !t809 = (t802 * (t807 * (t800 + t800)))
+        let !t810 = ((((t806 * (t808 + t808)) * t793) + ((t806 * (t803 + t803)) * t794)) + ((t806 * (t809 + t809)) * t796))
+        let !t811 = (if ((abs t805) - 1.0e-10) > 0 then (if (abs t810) > 0 then 1.0 else 0.0) else 0.0)
+        let !t812 = (if t811 > 0 then (t799 + (negate ((t805 / t810) * t793))) else t799)
+        let !t813 = (if t811 > 0 then (t800 + (negate ((t805 / t810) * t796))) else t800)
+        let !t814 = (sqrt ((t812 * t812) + (t813 * t813)))
+        let !t815 = (t814 - 0.8)
+        let !t816 = (if t811 > 0 then (t803 + (negate ((t805 / t810) * t794))) else t803)
+        let !t817 = (sqrt ((t815 * t815) + (t816 * t816)))
+        let !t818 = (t817 - 0.5)
+        let !t819 = (recip (2.0 * t817))
+        let !t820 = (recip (2.0 * t814))
+        let !t821 = (t815 * (t820 * (t812 + t812)))
+        let !t822 = (t815 * (t820 * (t813 + t813)))
+        let !t823 = ((((t819 * (t821 + t821)) * t793) + ((t819 * (t816 + t816)) * t794)) + ((t819 * (t822 + t822)) * t796))
+        let !t824 = (if ((abs t818) - 1.0e-10) > 0 then (if (abs t823) > 0 then 1.0 else 0.0) else 0.0)
+        let !s825 = ((t609 * (if t824 > 0 then (t812 + (negate ((t818 / t823) * t793))) else t812)) + (t666 * s748))
+        let !s826 = ((t609 * (if t824 > 0 then (t816 + (negate ((t818 / t823) * t794))) else t816)) + (t666 * s749))
+        let !s827 = ((t609 * (if t824 > 0 then (t813 + (negate ((t818 / t823) * t796))) else t813)) + (t666 * s750))
+        let !t828 = (sqrt (((s769 * s769) + (s770 * s770)) + (s771 * s771)))
+        let !t829 = (t674 * ((if t824 > 0 then (t812 + (negate ((t818 / t823) * t793))) else t812) + (negate s748)))
+        let !t830 = (t819 * (t821 + t821))
+        let !t831 = (t819 * (t816 + t816))
+        let !t832 = (t819 * (t822 + t822))
+        let !t833 = (sqrt (((t830 * t830) + (t831 * t831)) + (t832 * t832)))
+        let !t834 = (if t833 > 0 then (recip (if (t833 - 1.0e-300) > 0 then t833 else 1.0e-300)) else 0.0)
+        let !t835 = (t834 * t830)
+        let !t836 = (t834 * t831)
+        let !t837 = (t674 * ((if t824 > 0 then (t816 + (negate ((t818 / t823) * t794))) else t816) + (negate s749)))
+        let !t838 = (t834 * t832)
+        let !t839 = (t674 * ((if t824 > 0 then (t813 + (negate ((t818 / t823) * t796))) else t813) + (negate s750)))
+        let !t840 = (((t835 * t829) + (t836 * t837)) + (t838 * t839))
+        let !t841 = (t829 + (negate (t840 * t835)))
+        let !t842 = (t837 + (negate (t840 * t836)))
+        let !t843 = (t839 + (negate (t840 * t838)))
+        let !t844 = (sqrt (((t841 * t841) + (t842 * t842)) + (t843 * t843)))
+        let !t845 = (if t844 > 0 then (recip (if (t844 - 1.0e-300) > 0 then t844 else 1.0e-300)) else 0.0)
+        let !s846 = ((t609 * (t828 * (t845 * t841))) + (t666 * s769))
+        let !s847 = ((t609 * (t828 * (t845 * t842))) + (t666 * s770))
+        let !s848 = ((t609 * (t828 * (t845 * t843))) + (t666 * s771))
+        let !t849 = (s825 + (t608 * s846))
+        let !t850 = (s827 + (t608 * s848))
+        let !t851 = (sqrt ((t849 * t849) + (t850 * t850)))
+        let !t852 = (t851 - 0.8)
+        let !t853 = (s826 + (t608 * s847))
+        let !t854 = (sqrt ((t852 * t852) + (t853 * t853)))
+        let !t855 = (t854 - 0.5)
+        let !t856 = (recip (2.0 * t854))
+        let !t857 = (recip (2.0 * t851))
+        let !t858 = (t852 * (t857 * (t849 + t849)))
+        let !t859 = (sqrt ((s825 * s825) + (s827 * s827)))
+        let !t860 = (t859 - 0.8)
+        let !t861 = (recip (2.0 * (sqrt ((t860 * t860) + (s826 * s826)))))
+        let !t862 = (recip (2.0 * t859))
+        let !t863 = (t860 * (t862 * (s825 + s825)))
+        let !t864 = (t861 * (t863 + t863))
+        let !t865 = (t861 * (s826 + s826))
+        let !t866 = (t860 * (t862 * (s827 + s827)))
+        let !t867 = (t861 * (t866 + t866))
+        let !t868 = (sqrt (((t864 * t864) + (t865 * t865)) + (t867 * t867)))
+        let !t869 = (if t868 > 0 then (recip (if (t868 - 1.0e-300) > 0 then t868 else 1.0e-300)) else 0.0)
+        let !t870 = (t869 * t864)
+        let !t871 = (t869 * t865)
+        let !t872 = (t852 * (t857 * (t850 + t850)))
+        let !t873 = (t869 * t867)
+        let !t874 = ((((t856 * (t858 + t858)) * t870) + ((t856 * (t853 + t853)) * t871)) + ((t856 * (t872 + t872)) * t873))
+        let !t875 = (if ((abs t855) - 1.0e-10) > 0 then (if (abs t874) > 0 then 1.0 else 0.0) else 0.0)
+        let !t876 = (if t875 > 0 then (t849 + (negate ((t855 / t874) * t870))) else t849)
+        let !t877 = (if t875 > 0 then (t850 + (negate ((t855 / t874) * t873))) else t850)
+        let !t878 = (sqrt ((t876 * t876) + (t877 * t877)))
+        let !t879 = (t878 - 0.8)
+        let !t880 = (if t875 > 0 then (t853 + (negate ((t855 / t874) * t871))) else t853)
+        let !t881 = (sqrt ((t879 * t879) + (t880 * t880)))
+        let !t882 = (t881 - 0.5)
+        let !t883 = (recip (2.0 * t881))
+        let !t884 = (recip (2.0 * t878))
+        let !t885 = (t879 * (t884 * (t876 + t876)))
+        let !t886 = (t879 * (t884 * (t877 + t877)))
+        let !t887 = ((((t883 * (t885 + t885)) * t870) + ((t883 * (t880 + t880)) * t871)) + ((t883 * (t886 + t886)) * t873))
+        let !t888 = (if ((abs t882) - 1.0e-10) > 0 then (if (abs t887) > 0 then 1.0 else 0.0) else 0.0)
+        let !t889 = (if t888 > 0 then (t876 + (negate ((t882 / t887) * t870))) else t876)
+        let !t890 = (if t888 > 0 then (t877 + (negate ((t882 / t887) * t873))) else t877)
+        let !t891 = (sqrt ((t889 * t889) + (t890 * t890)))
+        let !t892 = (t891 - 0.8)
+        let !t893 = (if t888 > 0 then (t880 + (negate ((t882 / t887) * t871))) else t880)
+        let !t894 = (sqrt ((t892 * t892) + (t893 * t893)))
+        let !t895 = (t894 - 0.5)
+        let !t896 = (recip (2.0 * t894))
+        let !t897 = (recip (2.0 * t891))
+        let !t898 = (t892 * (t897 * (t889 + t889)))
+        let !t899 = (t892 * (t897 * (t890 + t890)))
+        let !t900 = ((((t896 * (t898 + t898)) * t870) + ((t896 * (t893 + t893)) * t871)) + ((t896 * (t899 + t899)) * t873))
+        let !t901 = (if ((abs t895) - 1.0e-10) > 0 then (if (abs t900) > 0 then 1.0 else 0.0) else 0.0)
+        let !s902 = ((t609 * (if t901 > 0 then (t889 + (negate ((t895 / t900) * t870))) else t889)) + (t666 * s825))
+        let !s903 = ((t609 * (if t901 > 0 then (t893 + (negate ((t895 / t900) * t871))) else t893)) + (t666 * s826))
+        let !s904 = ((t609 * (if t901 > 0 then (t890 + (negate ((t895 / t900) * t873))) else t890)) + (t666 * s827))
+        let !t905 = (sqrt (((s846 * s846) + (s847 * s847)) + (s848 * s848)))
+        let !t906 = (t674 * ((if t901 > 0 then (t889 + (negate ((t895 / t900) * t870))) else t889) + (negate s825)))
+        let !t907 = (t896 * (t898 + t898))
+        let !t908 = (t896 * (t893 + t893))
+        let !t909 = (t896 * (t899 + t899))
+        let !t910 = (sqrt (((t907 * t907) + (t908 * t908)) + (t909 * t909)))
+        let !t911 = (if t910 > 0 then (recip (if (t910 - 1.0e-300) > 0 then t910 else 1.0e-300)) else 0.0)
+        let !t912 = (t911 * t907)
+        let !t913 = (t911 * t908)
+        let !t914 = (t674 * ((if t901 > 0 then (t893 + (negate ((t895 / t900) * t871))) else t893) + (negate s826)))
+        let !t915 = (t911 * t909)
+        let !t916 = (t674 * ((if t901 > 0 then (t890 + (negate ((t895 / t900) * t873))) else t890) + (negate s827)))
+        let !t917 = (((t912 * t906) + (t913 * t914)) + (t915 * t916))
+        let !t918 = (t906 + (negate (t917 * t912)))
+        let !t919 = (t914 + (negate (t917 * t913)))
+        let !t920 = (t916 + (negate (t917 * t915)))
+        let !t921 = (sqrt (((t918 * t918) + (t919 * t919)) + (t920 * t920)))
+        let !t922 = (if t921 > 0 then (recip (if (t921 - 1.0e-300) > 0 then t921 else 1.0e-300)) else 0.0)
+        let !s923 = ((t609 * (t905 * (t922 * t918))) + (t666 * s846))
+        let !s924 = ((t609 * (t905 * (t922 * t919))) + (t666 * s847))
+        let !s925 = ((t609 * (t905 * (t922 * t920))) + (t666 * s848))
+        t926 <- rdU mouse 4
+        t927 <- rdU mouse 5
+        t928 <- rdU mouse 6
+        t929 <- rdU mouse 7
+        t930 <- rdU mouse 8
+        t931 <- rdU mouse 9
+        let !t932 = (recip t571)
+        let !t933 = (6.283185307179586 * t929)
+        let !s934 = (recip (t573 * ((((2.0 * t932) * t930) * t933) + (t573 * ((t932 * t933) * t933)))))
+        let !s935 = ((t573 * ((t932 * t933) * t933)) * s934)
+        let !s936 = (s902 + (negate t574))
+        let !s937 = (s903 + (negate t575))
+        let !s938 = (s904 + (negate t576))
+        let !s939 = (s902 + (negate t926))
+        let !s940 = (s903 + (negate t927))
+        let !s941 = (s904 + (negate t928))
+        t942 <- rdU mouse 10
+        chkI vel (3 * (truncate t570)) 0 2
+        t943 <- rdU vel (3 * (truncate t570))
+        t944 <- rdU vel ((3 * (truncate t570)) + 1)
+        t945 <- rdU vel ((3 * (truncate t570)) + 2)
+        t946 <- rdU scalars ((6 * (truncate t570)) + 1)
+        let !t947 = (t931 * t573)
+        let !t948 = (negate t947)
+        let !t949 = (((((s937 * t582) - (s938 * t581)) * t577) + (((s938 * t580) - (s936 * t582)) * t578)) + (((s936 * t581) - (s937 * t580)) * t579))
+        let !t950 = (t942 + ((negate ((((((t580 * t943) + (t581 * t944)) + (t582 * t945)) + (t949 * t946)) + (s935 * (((s939 * t580) + (s940 * t581)) + (s941 * t582)))) + (s934 * t942))) / (((t571 * (((t580 * t580) + (t581 * t581)) + (t582 * t582))) + ((t572 * t949) * t949)) + s934)))
+        let !t951 = (if (t950 - t947) > 0 then t947 else t950)
+        let !t952 = (if (t948 - t951) > 0 then t948 else t951)
+        let !s953 = (if (1.0 - (abs (t952 - t952))) > 0 then t952 else 0.0)
+        wrU mouse 10 s953
+        t954 <- rdU scalars ((6 * (truncate t570)) + 2)
+        t955 <- rdU scalars ((6 * (truncate t570)) + 3)
+        t956 <- rdU vel (3 * (truncate t570))
+        t957 <- rdU vel ((3 * (truncate t570)) + 1)
+        t958 <- rdU vel ((3 * (truncate t570)) + 2)
+        t959 <- rdU scalars ((6 * (truncate t570)) + 1)
+        wrU vel (3 * (truncate t570)) (t956 + ((t954 * (s953 - t942)) * t580))
+        wrU vel ((3 * (truncate t570)) + 1) (t957 + ((t954 * (s953 - t942)) * t581))
+        wrU vel ((3 * (truncate t570)) + 2) (t958 + ((t954 * (s953 - t942)) * t582))
+        wrU scalars ((6 * (truncate t570)) + 1) (t959 + ((t955 * (s953 - t942)) * t949))
+        t960 <- rdU mouse 11
+        t961 <- rdU vel (3 * (truncate t570))
+        t962 <- rdU vel ((3 * (truncate t570)) + 1)
+        t963 <- rdU vel ((3 * (truncate t570)) + 2)
+        t964 <- rdU scalars ((6 * (truncate t570)) + 1)
+        let !t965 = (((((s937 * s585) - (s938 * s584)) * t577) + (((s938 * s583) - (s936 * s585)) * t578)) + (((s936 * s584) - (s937 * s583)) * t579))
+        let !t966 = (t960 + ((negate ((((((s583 * t961) + (s584 * t962)) + (s585 * t963)) + (t965 * t964)) + (s935 * (((s939 * s583) + (s940 * s584)) + (s941 * s585)))) + (s934 * t960))) / (((t571 * (((s583 * s583) + (s584 * s584)) + (s585 * s585))) + ((t572 * t965) * t965)) + s934)))
+        let !t967 = (if (t966 - t947) > 0 then t947 else t966)
+        let !t968 = (if (t948 - t967) > 0 then t948 else t967)
+        let !s969 = (if (1.0 - (abs (t968 - t968))) > 0 then t968 else 0.0)
+        wrU mouse 11 s969
+        t970 <- rdU scalars ((6 * (truncate t570)) + 2)
+        t971 <- rdU scalars ((6 * (truncate t570)) + 3)
+        t972 <- rdU vel (3 * (truncate t570))
+        t973 <- rdU vel ((3 * (truncate t570)) + 1)
+        t974 <- rdU vel ((3 * (truncate t570)) + 2)
+        t975 <- rdU scalars ((6 * (truncate t570)) + 1)
+        wrU vel (3 * (truncate t570)) (t972 + ((t970 * (s969 - t960)) * s583))
+        wrU vel ((3 * (truncate t570)) + 1) (t973 + ((t970 * (s969 - t960)) * s584))
+        wrU vel ((3 * (truncate t570)) + 2) (t974 + ((t970 * (s969 - t960)) * s585))
+        wrU scalars ((6 * (truncate t570)) + 1) (t975 + ((t971 * (s969 - t960)) * t965))
         pure ()
       else do
         pure ()
@@ -1609,38 +1611,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t981 <- rdU meta 0
-  loopI 0.0 t981 $ \i982 -> do
-    let !d982 = fromIntegral i982 :: Double
-    chkI bodyPrev (2 * i982) 1 1
-    wrU bodyPrev ((2 * i982) + 1) 0.0
+  t976 <- rdU meta 0
+  loopI 0.0 t976 $ \i977 -> do
+    let !d977 = fromIntegral i977 :: Double
+    chkI bodyPrev (2 * i977) 1 1
+    wrU bodyPrev ((2 * i977) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i983 -> do
-    let !d983 = fromIntegral i983 :: Double
-    chkI contacts (30 * i983) 2 25
-    t984 <- rdU contacts ((30 * i983) + 2)
-    chkI prev (4 * i983) 0 3
-    wrU prev (4 * i983) t984
-    t985 <- rdU contacts ((30 * i983) + 3)
-    wrU prev ((4 * i983) + 1) t985
-    t986 <- rdU contacts ((30 * i983) + 24)
-    wrU prev ((4 * i983) + 2) t986
-    t987 <- rdU contacts ((30 * i983) + 25)
-    wrU prev ((4 * i983) + 3) t987
-    chkI bodyPrev (2 * (truncate t984)) 1 1
-    t988 <- rdU bodyPrev ((2 * (truncate t984)) + 1)
-    if (0.5 - t988) > 0 then do
-      chkI bodyPrev (2 * (truncate t984)) 0 0
-      wrU bodyPrev (2 * (truncate t984)) d983
+  loopI 0.0 t9 $ \i978 -> do
+    let !d978 = fromIntegral i978 :: Double
+    chkI contacts (30 * i978) 2 25
+    t979 <- rdU contacts ((30 * i978) + 2)
+    chkI prev (4 * i978) 0 3
+    wrU prev (4 * i978) t979
+    t980 <- rdU contacts ((30 * i978) + 3)
+    wrU prev ((4 * i978) + 1) t980
+    t981 <- rdU contacts ((30 * i978) + 24)
+    wrU prev ((4 * i978) + 2) t981
+    t982 <- rdU contacts ((30 * i978) + 25)
+    wrU prev ((4 * i978) + 3) t982
+    chkI bodyPrev (2 * (truncate t979)) 1 1
+    t983 <- rdU bodyPrev ((2 * (truncate t979)) + 1)
+    if (0.5 - t983) > 0 then do
+      chkI bodyPrev (2 * (truncate t979)) 0 0
+      wrU bodyPrev (2 * (truncate t979)) d978
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t984)) + 1) (t988 + 1.0)
+    wrU bodyPrev ((2 * (truncate t979)) + 1) (t983 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1833,8 +1835,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -1864,616 +1867,616 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 3 11
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (sqrt ((s32 * s32) + (s34 * s34)))
-        let !t36 = (t35 - 0.8)
-        let !t37 = (sqrt ((t36 * t36) + (s33 * s33)))
-        let !t38 = (t37 - 0.5)
-        let !t39 = (recip (2.0 * t37))
-        let !t40 = (recip (2.0 * t35))
-        let !t41 = (t36 * (t40 * (s32 + s32)))
-        let !t42 = (t36 * (t40 * (s34 + s34)))
-        let !t43 = ((((t39 * (t41 + t41)) * t8) + ((t39 * (s33 + s33)) * t9)) + ((t39 * (t42 + t42)) * t10))
-        let !t44 = (if ((abs t38) - 1.0e-10) > 0 then (if (abs t43) > 0 then 1.0 else 0.0) else 0.0)
-        let !s45 = (if t44 > 0 then (s32 + (negate ((t38 / t43) * t8))) else s32)
-        let !s46 = (if t44 > 0 then (s33 + (negate ((t38 / t43) * t9))) else s33)
-        let !s47 = (if t44 > 0 then (s34 + (negate ((t38 / t43) * t10))) else s34)
-        wrU walk ((12 * i26) + 9) s45
-        wrU walk ((12 * i26) + 10) s46
-        wrU walk ((12 * i26) + 11) s47
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 3 11
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (sqrt ((s30 * s30) + (s32 * s32)))
+        let !t34 = (t33 - 0.8)
+        let !t35 = (sqrt ((t34 * t34) + (s31 * s31)))
+        let !t36 = (t35 - 0.5)
+        let !t37 = (recip (2.0 * t35))
+        let !t38 = (recip (2.0 * t33))
+        let !t39 = (t34 * (t38 * (s30 + s30)))
+        let !t40 = (t34 * (t38 * (s32 + s32)))
+        let !t41 = ((((t37 * (t39 + t39)) * t8) + ((t37 * (s31 + s31)) * t9)) + ((t37 * (t40 + t40)) * t10))
+        let !t42 = (if ((abs t36) - 1.0e-10) > 0 then (if (abs t41) > 0 then 1.0 else 0.0) else 0.0)
+        let !s43 = (if t42 > 0 then (s30 + (negate ((t36 / t41) * t8))) else s30)
+        let !s44 = (if t42 > 0 then (s31 + (negate ((t36 / t41) * t9))) else s31)
+        let !s45 = (if t42 > 0 then (s32 + (negate ((t36 / t41) * t10))) else s32)
+        wrU walk ((12 * i24) + 9) s43
+        wrU walk ((12 * i24) + 10) s44
+        wrU walk ((12 * i24) + 11) s45
         pure ()
-      loopI 0.0 24.0 $ \i48 -> do
-        let !d48 = fromIntegral i48 :: Double
-        chkI walk (12 * i48) 9 11
-        t49 <- rdU walk ((12 * i48) + 9)
-        t50 <- rdU walk ((12 * i48) + 10)
-        t51 <- rdU walk ((12 * i48) + 11)
-        let !t52 = (sqrt ((t49 * t49) + (t51 * t51)))
-        let !t53 = (t52 - 0.8)
-        let !t54 = (sqrt ((t53 * t53) + (t50 * t50)))
-        let !t55 = (t54 - 0.5)
-        let !t56 = (recip (2.0 * t54))
-        let !t57 = (recip (2.0 * t52))
-        let !t58 = (t53 * (t57 * (t49 + t49)))
-        let !t59 = (t53 * (t57 * (t51 + t51)))
-        let !t60 = ((((t56 * (t58 + t58)) * t8) + ((t56 * (t50 + t50)) * t9)) + ((t56 * (t59 + t59)) * t10))
-        let !t61 = (if ((abs t55) - 1.0e-10) > 0 then (if (abs t60) > 0 then 1.0 else 0.0) else 0.0)
-        let !s62 = (if t61 > 0 then (t49 + (negate ((t55 / t60) * t8))) else t49)
-        let !s63 = (if t61 > 0 then (t50 + (negate ((t55 / t60) * t9))) else t50)
-        let !s64 = (if t61 > 0 then (t51 + (negate ((t55 / t60) * t10))) else t51)
-        wrU walk ((12 * i48) + 9) s62
-        wrU walk ((12 * i48) + 10) s63
-        wrU walk ((12 * i48) + 11) s64
+      loopI 0.0 24.0 $ \i46 -> do
+        let !d46 = fromIntegral i46 :: Double
+        chkI walk (12 * i46) 9 11
+        t47 <- rdU walk ((12 * i46) + 9)
+        t48 <- rdU walk ((12 * i46) + 10)
+        t49 <- rdU walk ((12 * i46) + 11)
+        let !t50 = (sqrt ((t47 * t47) + (t49 * t49)))
+        let !t51 = (t50 - 0.8)
+        let !t52 = (sqrt ((t51 * t51) + (t48 * t48)))
+        let !t53 = (t52 - 0.5)
+        let !t54 = (recip (2.0 * t52))
+        let !t55 = (recip (2.0 * t50))
+        let !t56 = (t51 * (t55 * (t47 + t47)))
+        let !t57 = (t51 * (t55 * (t49 + t49)))
+        let !t58 = ((((t54 * (t56 + t56)) * t8) + ((t54 * (t48 + t48)) * t9)) + ((t54 * (t57 + t57)) * t10))
+        let !t59 = (if ((abs t53) - 1.0e-10) > 0 then (if (abs t58) > 0 then 1.0 else 0.0) else 0.0)
+        let !s60 = (if t59 > 0 then (t47 + (negate ((t53 / t58) * t8))) else t47)
+        let !s61 = (if t59 > 0 then (t48 + (negate ((t53 / t58) * t9))) else t48)
+        let !s62 = (if t59 > 0 then (t49 + (negate ((t53 / t58) * t10))) else t49)
+        wrU walk ((12 * i46) + 9) s60
+        wrU walk ((12 * i46) + 10) s61
+        wrU walk ((12 * i46) + 11) s62
         pure ()
-      loopI 0.0 24.0 $ \i65 -> do
-        let !d65 = fromIntegral i65 :: Double
-        chkI walk (12 * i65) 0 11
-        t66 <- rdU walk ((12 * i65) + 9)
-        t67 <- rdU walk ((12 * i65) + 10)
-        t68 <- rdU walk ((12 * i65) + 11)
-        chkI radii ((24 * i1) + i65) 0 0
-        t69 <- rdU radii ((24 * i1) + i65)
-        let !s70 = (t69 / 4.0)
-        t71 <- rdU walk ((12 * i65) + 3)
-        t72 <- rdU walk ((12 * i65) + 4)
-        t73 <- rdU walk ((12 * i65) + 5)
-        let !t74 = (if (abs s70) > 0 then 1.0 else 0.0)
-        let !t75 = (sqrt ((t66 * t66) + (t68 * t68)))
-        let !t76 = (t75 - 0.8)
-        let !t77 = (sqrt ((t76 * t76) + (t67 * t67)))
-        let !t78 = (t77 - 0.5)
-        let !t79 = (recip (2.0 * t77))
-        let !t80 = (recip (2.0 * t75))
-        let !t81 = (t76 * (t80 * (t66 + t66)))
-        let !t82 = (t76 * (t80 * (t68 + t68)))
-        let !t83 = ((((t79 * (t81 + t81)) * t8) + ((t79 * (t67 + t67)) * t9)) + ((t79 * (t82 + t82)) * t10))
-        let !t84 = (if ((abs t78) - 1.0e-10) > 0 then (if (abs t83) > 0 then 1.0 else 0.0) else 0.0)
-        let !t85 = (1.0 - t74)
-        let !s86 = ((t74 * (if t84 > 0 then (t66 + (negate ((t78 / t83) * t8))) else t66)) + (t85 * t2))
-        let !s87 = ((t74 * (if t84 > 0 then (t67 + (negate ((t78 / t83) * t9))) else t67)) + (t85 * t3))
-        let !s88 = ((t74 * (if t84 > 0 then (t68 + (negate ((t78 / t83) * t10))) else t68)) + (t85 * t4))
-        chkI verts ((291 * i1) + (12 * i65)) 3 5
-        wrU verts (((291 * i1) + (12 * i65)) + 3) (if (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88)))) > 0 then s86 else t2)
-        wrU verts (((291 * i1) + (12 * i65)) + 4) (if (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88)))) > 0 then s87 else t3)
-        wrU verts (((291 * i1) + (12 * i65)) + 5) (if (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88)))) > 0 then s88 else t4)
-        wrU walk (12 * i65) s86
-        wrU walk ((12 * i65) + 1) s87
-        wrU walk ((12 * i65) + 2) s88
-        let !t89 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
-        let !t90 = (if (abs s70) > 0 then (recip s70) else 0.0)
-        let !t91 = (t90 * ((if t84 > 0 then (t66 + (negate ((t78 / t83) * t8))) else t66) + (negate t2)))
-        let !t92 = (t79 * (t81 + t81))
-        let !t93 = (t79 * (t67 + t67))
-        let !t94 = (t79 * (t82 + t82))
-        let !t95 = (sqrt (((t92 * t92) + (t93 * t93)) + (t94 * t94)))
-        let !t96 = (if t95 > 0 then (recip (if (t95 - 1.0e-300) > 0 then t95 else 1.0e-300)) else 0.0)
-        let !t97 = (t96 * t92)
-        let !t98 = (t96 * t93)
-        let !t99 = (t90 * ((if t84 > 0 then (t67 + (negate ((t78 / t83) * t9))) else t67) + (negate t3)))
-        let !t100 = (t96 * t94)
-        let !t101 = (t90 * ((if t84 > 0 then (t68 + (negate ((t78 / t83) * t10))) else t68) + (negate t4)))
-        let !t102 = (((t97 * t91) + (t98 * t99)) + (t100 * t101))
-        let !t103 = (t91 + (negate (t102 * t97)))
-        let !t104 = (t99 + (negate (t102 * t98)))
-        let !t105 = (t101 + (negate (t102 * t100)))
-        let !t106 = (sqrt (((t103 * t103) + (t104 * t104)) + (t105 * t105)))
-        let !t107 = (if t106 > 0 then (recip (if (t106 - 1.0e-300) > 0 then t106 else 1.0e-300)) else 0.0)
-        let !s108 = ((t74 * (t89 * (t107 * t103))) + (t85 * t71))
-        let !s109 = ((t74 * (t89 * (t107 * t104))) + (t85 * t72))
-        let !s110 = ((t74 * (t89 * (t107 * t105))) + (t85 * t73))
-        wrU walk ((12 * i65) + 3) s108
-        wrU walk ((12 * i65) + 4) s109
-        wrU walk ((12 * i65) + 5) s110
-        let !s111 = ((t74 * t97) + (t85 * t8))
-        let !s112 = ((t74 * t98) + (t85 * t9))
-        let !s113 = ((t74 * t100) + (t85 * t10))
-        wrU walk ((12 * i65) + 6) s111
-        wrU walk ((12 * i65) + 7) s112
-        wrU walk ((12 * i65) + 8) s113
+      loopI 0.0 24.0 $ \i63 -> do
+        let !d63 = fromIntegral i63 :: Double
+        chkI walk (12 * i63) 0 11
+        t64 <- rdU walk ((12 * i63) + 9)
+        t65 <- rdU walk ((12 * i63) + 10)
+        t66 <- rdU walk ((12 * i63) + 11)
+        chkI radii ((24 * i1) + i63) 0 0
+        t67 <- rdU radii ((24 * i1) + i63)
+        let !s68 = (t67 / 4.0)
+        t69 <- rdU walk ((12 * i63) + 3)
+        t70 <- rdU walk ((12 * i63) + 4)
+        t71 <- rdU walk ((12 * i63) + 5)
+        let !t72 = (if (abs s68) > 0 then 1.0 else 0.0)
+        let !t73 = (sqrt ((t64 * t64) + (t66 * t66)))
+        let !t74 = (t73 - 0.8)
+        let !t75 = (sqrt ((t74 * t74) + (t65 * t65)))
+        let !t76 = (t75 - 0.5)
+        let !t77 = (recip (2.0 * t75))
+        let !t78 = (recip (2.0 * t73))
+        let !t79 = (t74 * (t78 * (t64 + t64)))
+        let !t80 = (t74 * (t78 * (t66 + t66)))
+        let !t81 = ((((t77 * (t79 + t79)) * t8) + ((t77 * (t65 + t65)) * t9)) + ((t77 * (t80 + t80)) * t10))
+        let !t82 = (if ((abs t76) - 1.0e-10) > 0 then (if (abs t81) > 0 then 1.0 else 0.0) else 0.0)
+        let !t83 = (1.0 - t72)
+        let !s84 = ((t72 * (if t82 > 0 then (t64 + (negate ((t76 / t81) * t8))) else t64)) + (t83 * t2))
+        let !s85 = ((t72 * (if t82 > 0 then (t65 + (negate ((t76 / t81) * t9))) else t65)) + (t83 * t3))
+        let !s86 = ((t72 * (if t82 > 0 then (t66 + (negate ((t76 / t81) * t10))) else t66)) + (t83 * t4))
+        chkI verts ((291 * i1) + (12 * i63)) 3 5
+        wrU verts (((291 * i1) + (12 * i63)) + 3) (if (1.0 - (abs (((s84 - s84) + (s85 - s85)) + (s86 - s86)))) > 0 then s84 else t2)
+        wrU verts (((291 * i1) + (12 * i63)) + 4) (if (1.0 - (abs (((s84 - s84) + (s85 - s85)) + (s86 - s86)))) > 0 then s85 else t3)
+        wrU verts (((291 * i1) + (12 * i63)) + 5) (if (1.0 - (abs (((s84 - s84) + (s85 - s85)) + (s86 - s86)))) > 0 then s86 else t4)
+        wrU walk (12 * i63) s84
+        wrU walk ((12 * i63) + 1) s85
+        wrU walk ((12 * i63) + 2) s86
+        let !t87 = (sqrt (((t69 * t69) + (t70 * t70)) + (t71 * t71)))
+        let !t88 = (if (abs s68) > 0 then (recip s68) else 0.0)
+        let !t89 = (t88 * ((if t82 > 0 then (t64 + (negate ((t76 / t81) * t8))) else t64) + (negate t2)))
+        let !t90 = (t77 * (t79 + t79))
+        let !t91 = (t77 * (t65 + t65))
+        let !t92 = (t77 * (t80 + t80))
+        let !t93 = (sqrt (((t90 * t90) + (t91 * t91)) + (t92 * t92)))
+        let !t94 = (if t93 > 0 then (recip (if (t93 - 1.0e-300) > 0 then t93 else 1.0e-300)) else 0.0)
+        let !t95 = (t94 * t90)
+        let !t96 = (t94 * t91)
+        let !t97 = (t88 * ((if t82 > 0 then (t65 + (negate ((t76 / t81) * t9))) else t65) + (negate t3)))
+        let !t98 = (t94 * t92)
+        let !t99 = (t88 * ((if t82 > 0 then (t66 + (negate ((t76 / t81) * t10))) else t66) + (negate t4)))
+        let !t100 = (((t95 * t89) + (t96 * t97)) + (t98 * t99))
+        let !t101 = (t89 + (negate (t100 * t95)))
+        let !t102 = (t97 + (negate (t100 * t96)))
+        let !t103 = (t99 + (negate (t100 * t98)))
+        let !t104 = (sqrt (((t101 * t101) + (t102 * t102)) + (t103 * t103)))
+        let !t105 = (if t104 > 0 then (recip (if (t104 - 1.0e-300) > 0 then t104 else 1.0e-300)) else 0.0)
+        let !s106 = ((t72 * (t87 * (t105 * t101))) + (t83 * t69))
+        let !s107 = ((t72 * (t87 * (t105 * t102))) + (t83 * t70))
+        let !s108 = ((t72 * (t87 * (t105 * t103))) + (t83 * t71))
+        wrU walk ((12 * i63) + 3) s106
+        wrU walk ((12 * i63) + 4) s107
+        wrU walk ((12 * i63) + 5) s108
+        let !s109 = ((t72 * t95) + (t83 * t8))
+        let !s110 = ((t72 * t96) + (t83 * t9))
+        let !s111 = ((t72 * t98) + (t83 * t10))
+        wrU walk ((12 * i63) + 6) s109
+        wrU walk ((12 * i63) + 7) s110
+        wrU walk ((12 * i63) + 8) s111
         pure ()
-      loopI 0.0 24.0 $ \i114 -> do
-        let !d114 = fromIntegral i114 :: Double
-        chkI walk (12 * i114) 0 11
-        t115 <- rdU walk ((12 * i114) + 6)
-        t116 <- rdU walk ((12 * i114) + 7)
-        t117 <- rdU walk ((12 * i114) + 8)
-        chkI radii ((24 * i1) + i114) 0 0
-        t118 <- rdU radii ((24 * i1) + i114)
-        let !s119 = (t118 / 4.0)
-        t120 <- rdU walk (12 * i114)
-        t121 <- rdU walk ((12 * i114) + 1)
-        t122 <- rdU walk ((12 * i114) + 2)
-        t123 <- rdU walk ((12 * i114) + 3)
-        t124 <- rdU walk ((12 * i114) + 4)
-        t125 <- rdU walk ((12 * i114) + 5)
-        let !s126 = (t120 + (s119 * t123))
-        let !s127 = (t121 + (s119 * t124))
-        let !s128 = (t122 + (s119 * t125))
-        let !t129 = (sqrt ((s126 * s126) + (s128 * s128)))
-        let !t130 = (t129 - 0.8)
-        let !t131 = (sqrt ((t130 * t130) + (s127 * s127)))
-        let !t132 = (t131 - 0.5)
-        let !t133 = (recip (2.0 * t131))
-        let !t134 = (recip (2.0 * t129))
-        let !t135 = (t130 * (t134 * (s126 + s126)))
-        let !t136 = (t130 * (t134 * (s128 + s128)))
-        let !t137 = ((((t133 * (t135 + t135)) * t115) + ((t133 * (s127 + s127)) * t116)) + ((t133 * (t136 + t136)) * t117))
-        let !t138 = (if ((abs t132) - 1.0e-10) > 0 then (if (abs t137) > 0 then 1.0 else 0.0) else 0.0)
-        let !s139 = (if t138 > 0 then (s126 + (negate ((t132 / t137) * t115))) else s126)
-        let !s140 = (if t138 > 0 then (s127 + (negate ((t132 / t137) * t116))) else s127)
-        let !s141 = (if t138 > 0 then (s128 + (negate ((t132 / t137) * t117))) else s128)
-        wrU walk ((12 * i114) + 9) s139
-        wrU walk ((12 * i114) + 10) s140
-        wrU walk ((12 * i114) + 11) s141
+      loopI 0.0 24.0 $ \i112 -> do
+        let !d112 = fromIntegral i112 :: Double
+        chkI walk (12 * i112) 0 11
+        t113 <- rdU walk ((12 * i112) + 6)
+        t114 <- rdU walk ((12 * i112) + 7)
+        t115 <- rdU walk ((12 * i112) + 8)
+        chkI radii ((24 * i1) + i112) 0 0
+        t116 <- rdU radii ((24 * i1) + i112)
+        let !s117 = (t116 / 4.0)
+        t118 <- rdU walk (12 * i112)
+        t119 <- rdU walk ((12 * i112) + 1)
+        t120 <- rdU walk ((12 * i112) + 2)
+        t121 <- rdU walk ((12 * i112) + 3)
+        t122 <- rdU walk ((12 * i112) + 4)
+        t123 <- rdU walk ((12 * i112) + 5)
+        let !s124 = (t118 + (s117 * t121))
+        let !s125 = (t119 + (s117 * t122))
+        let !s126 = (t120 + (s117 * t123))
+        let !t127 = (sqrt ((s124 * s124) + (s126 * s126)))
+        let !t128 = (t127 - 0.8)
+        let !t129 = (sqrt ((t128 * t128) + (s125 * s125)))
+        let !t130 = (t129 - 0.5)
+        let !t131 = (recip (2.0 * t129))
+        let !t132 = (recip (2.0 * t127))
+        let !t133 = (t128 * (t132 * (s124 + s124)))
+        let !t134 = (t128 * (t132 * (s126 + s126)))
+        let !t135 = ((((t131 * (t133 + t133)) * t113) + ((t131 * (s125 + s125)) * t114)) + ((t131 * (t134 + t134)) * t115))
+        let !t136 = (if ((abs t130) - 1.0e-10) > 0 then (if (abs t135) > 0 then 1.0 else 0.0) else 0.0)
+        let !s137 = (if t136 > 0 then (s124 + (negate ((t130 / t135) * t113))) else s124)
+        let !s138 = (if t136 > 0 then (s125 + (negate ((t130 / t135) * t114))) else s125)
+        let !s139 = (if t136 > 0 then (s126 + (negate ((t130 / t135) * t115))) else s126)
+        wrU walk ((12 * i112) + 9) s137
+        wrU walk ((12 * i112) + 10) s138
+        wrU walk ((12 * i112) + 11) s139
         pure ()
-      loopI 0.0 24.0 $ \i142 -> do
-        let !d142 = fromIntegral i142 :: Double
-        chkI walk (12 * i142) 6 11
-        t143 <- rdU walk ((12 * i142) + 6)
-        t144 <- rdU walk ((12 * i142) + 7)
-        t145 <- rdU walk ((12 * i142) + 8)
-        t146 <- rdU walk ((12 * i142) + 9)
-        t147 <- rdU walk ((12 * i142) + 10)
-        t148 <- rdU walk ((12 * i142) + 11)
-        let !t149 = (sqrt ((t146 * t146) + (t148 * t148)))
-        let !t150 = (t149 - 0.8)
-        let !t151 = (sqrt ((t150 * t150) + (t147 * t147)))
-        let !t152 = (t151 - 0.5)
-        let !t153 = (recip (2.0 * t151))
-        let !t154 = (recip (2.0 * t149))
-        let !t155 = (t150 * (t154 * (t146 + t146)))
-        let !t156 = (t150 * (t154 * (t148 + t148)))
-        let !t157 = ((((t153 * (t155 + t155)) * t143) + ((t153 * (t147 + t147)) * t144)) + ((t153 * (t156 + t156)) * t145))
-        let !t158 = (if ((abs t152) - 1.0e-10) > 0 then (if (abs t157) > 0 then 1.0 else 0.0) else 0.0)
-        let !s159 = (if t158 > 0 then (t146 + (negate ((t152 / t157) * t143))) else t146)
-        let !s160 = (if t158 > 0 then (t147 + (negate ((t152 / t157) * t144))) else t147)
-        let !s161 = (if t158 > 0 then (t148 + (negate ((t152 / t157) * t145))) else t148)
-        wrU walk ((12 * i142) + 9) s159
-        wrU walk ((12 * i142) + 10) s160
-        wrU walk ((12 * i142) + 11) s161
+      loopI 0.0 24.0 $ \i140 -> do
+        let !d140 = fromIntegral i140 :: Double
+        chkI walk (12 * i140) 6 11
+        t141 <- rdU walk ((12 * i140) + 6)
+        t142 <- rdU walk ((12 * i140) + 7)
+        t143 <- rdU walk ((12 * i140) + 8)
+        t144 <- rdU walk ((12 * i140) + 9)
+        t145 <- rdU walk ((12 * i140) + 10)
+        t146 <- rdU walk ((12 * i140) + 11)
+        let !t147 = (sqrt ((t144 * t144) + (t146 * t146)))
+        let !t148 = (t147 - 0.8)
+        let !t149 = (sqrt ((t148 * t148) + (t145 * t145)))
+        let !t150 = (t149 - 0.5)
+        let !t151 = (recip (2.0 * t149))
+        let !t152 = (recip (2.0 * t147))
+        let !t153 = (t148 * (t152 * (t144 + t144)))
+        let !t154 = (t148 * (t152 * (t146 + t146)))
+        let !t155 = ((((t151 * (t153 + t153)) * t141) + ((t151 * (t145 + t145)) * t142)) + ((t151 * (t154 + t154)) * t143))
+        let !t156 = (if ((abs t150) - 1.0e-10) > 0 then (if (abs t155) > 0 then 1.0 else 0.0) else 0.0)
+        let !s157 = (if t156 > 0 then (t144 + (negate ((t150 / t155) * t141))) else t144)
+        let !s158 = (if t156 > 0 then (t145 + (negate ((t150 / t155) * t142))) else t145)
+        let !s159 = (if t156 > 0 then (t146 + (negate ((t150 / t155) * t143))) else t146)
+        wrU walk ((12 * i140) + 9) s157
+        wrU walk ((12 * i140) + 10) s158
+        wrU walk ((12 * i140) + 11) s159
         pure ()
-      loopI 0.0 24.0 $ \i162 -> do
-        let !d162 = fromIntegral i162 :: Double
-        chkI walk (12 * i162) 0 11
-        t163 <- rdU walk ((12 * i162) + 6)
-        t164 <- rdU walk ((12 * i162) + 7)
-        t165 <- rdU walk ((12 * i162) + 8)
-        t166 <- rdU walk ((12 * i162) + 9)
-        t167 <- rdU walk ((12 * i162) + 10)
-        t168 <- rdU walk ((12 * i162) + 11)
-        chkI radii ((24 * i1) + i162) 0 0
-        t169 <- rdU radii ((24 * i1) + i162)
-        let !s170 = (t169 / 4.0)
-        t171 <- rdU walk (12 * i162)
-        t172 <- rdU walk ((12 * i162) + 1)
-        t173 <- rdU walk ((12 * i162) + 2)
-        t174 <- rdU walk ((12 * i162) + 3)
-        t175 <- rdU walk ((12 * i162) + 4)
-        t176 <- rdU walk ((12 * i162) + 5)
-        let !t177 = (if (abs s170) > 0 then 1.0 else 0.0)
-        let !t178 = (sqrt ((t166 * t166) + (t168 * t168)))
-        let !t179 = (t178 - 0.8)
-        let !t180 = (sqrt ((t179 * t179) + (t167 * t167)))
-        let !t181 = (t180 - 0.5)
-        let !t182 = (recip (2.0 * t180))
-        let !t183 = (recip (2.0 * t178))
-        let !t184 = (t179 * (t183 * (t166 + t166)))
-        let !t185 = (t179 * (t183 * (t168 + t168)))
-        let !t186 = ((((t182 * (t184 + t184)) * t163) + ((t182 * (t167 + t167)) * t164)) + ((t182 * (t185 + t185)) * t165))
-        let !t187 = (if ((abs t181) - 1.0e-10) > 0 then (if (abs t186) > 0 then 1.0 else 0.0) else 0.0)
-        let !t188 = (1.0 - t177)
-        let !s189 = ((t177 * (if t187 > 0 then (t166 + (negate ((t181 / t186) * t163))) else t166)) + (t188 * t171))
-        let !s190 = ((t177 * (if t187 > 0 then (t167 + (negate ((t181 / t186) * t164))) else t167)) + (t188 * t172))
-        let !s191 = ((t177 * (if t187 > 0 then (t168 + (negate ((t181 / t186) * t165))) else t168)) + (t188 * t173))
-        chkI verts ((291 * i1) + (12 * i162)) 6 8
-        wrU verts (((291 * i1) + (12 * i162)) + 6) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s189 else t2)
-        wrU verts (((291 * i1) + (12 * i162)) + 7) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s190 else t3)
-        wrU verts (((291 * i1) + (12 * i162)) + 8) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s191 else t4)
-        wrU walk (12 * i162) s189
-        wrU walk ((12 * i162) + 1) s190
-        wrU walk ((12 * i162) + 2) s191
-        let !t192 = (sqrt (((t174 * t174) + (t175 * t175)) + (t176 * t176)))
-        let !t193 = (if (abs s170) > 0 then (recip s170) else 0.0)
-        let !t194 = (t193 * ((if t187 > 0 then (t166 + (negate ((t181 / t186) * t163))) else t166) + (negate t171)))
-        let !t195 = (t182 * (t184 + t184))
-        let !t196 = (t182 * (t167 + t167))
-        let !t197 = (t182 * (t185 + t185))
-        let !t198 = (sqrt (((t195 * t195) + (t196 * t196)) + (t197 * t197)))
-        let !t199 = (if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0)
-        let !t200 = (t199 * t195)
-        let !t201 = (t199 * t196)
-        let !t202 = (t193 * ((if t187 > 0 then (t167 + (negate ((t181 / t186) * t164))) else t167) + (negate t172)))
-        let !t203 = (t199 * t197)
-        let !t204 = (t193 * ((if t187 > 0 then (t168 + (negate ((t181 / t186) * t165))) else t168) + (negate t173)))
-        let !t205 = (((t200 * t194) + (t201 * t202)) + (t203 * t204))
-        let !t206 = (t194 + (negate (t205 * t200)))
-        let !t207 = (t202 + (negate (t205 * t201)))
-        let !t208 = (t204 + (negate (t205 * t203)))
-        let !t209 = (sqrt (((t206 * t206) + (t207 * t207)) + (t208 * t208)))
-        let !t210 = (if t209 > 0 then (recip (if (t209 - 1.0e-300) > 0 then t209 else 1.0e-300)) else 0.0)
-        let !s211 = ((t177 * (t192 * (t210 * t206))) + (t188 * t174))
-        let !s212 = ((t177 * (t192 * (t210 * t207))) + (t188 * t175))
-        let !s213 = ((t177 * (t192 * (t210 * t208))) + (t188 * t176))
-        wrU walk ((12 * i162) + 3) s211
-        wrU walk ((12 * i162) + 4) s212
-        wrU walk ((12 * i162) + 5) s213
-        let !s214 = ((t177 * t200) + (t188 * t163))
-        let !s215 = ((t177 * t201) + (t188 * t164))
-        let !s216 = ((t177 * t203) + (t188 * t165))
-        wrU walk ((12 * i162) + 6) s214
-        wrU walk ((12 * i162) + 7) s215
-        wrU walk ((12 * i162) + 8) s216
+      loopI 0.0 24.0 $ \i160 -> do
+        let !d160 = fromIntegral i160 :: Double
+        chkI walk (12 * i160) 0 11
+        t161 <- rdU walk ((12 * i160) + 6)
+        t162 <- rdU walk ((12 * i160) + 7)
+        t163 <- rdU walk ((12 * i160) + 8)
+        t164 <- rdU walk ((12 * i160) + 9)
+        t165 <- rdU walk ((12 * i160) + 10)
+        t166 <- rdU walk ((12 * i160) + 11)
+        chkI radii ((24 * i1) + i160) 0 0
+        t167 <- rdU radii ((24 * i1) + i160)
+        let !s168 = (t167 / 4.0)
+        t169 <- rdU walk (12 * i160)
+        t170 <- rdU walk ((12 * i160) + 1)
+        t171 <- rdU walk ((12 * i160) + 2)
+        t172 <- rdU walk ((12 * i160) + 3)
+        t173 <- rdU walk ((12 * i160) + 4)
+        t174 <- rdU walk ((12 * i160) + 5)
+        let !t175 = (if (abs s168) > 0 then 1.0 else 0.0)
+        let !t176 = (sqrt ((t164 * t164) + (t166 * t166)))
+        let !t177 = (t176 - 0.8)
+        let !t178 = (sqrt ((t177 * t177) + (t165 * t165)))
+        let !t179 = (t178 - 0.5)
+        let !t180 = (recip (2.0 * t178))
+        let !t181 = (recip (2.0 * t176))
+        let !t182 = (t177 * (t181 * (t164 + t164)))
+        let !t183 = (t177 * (t181 * (t166 + t166)))
+        let !t184 = ((((t180 * (t182 + t182)) * t161) + ((t180 * (t165 + t165)) * t162)) + ((t180 * (t183 + t183)) * t163))
+        let !t185 = (if ((abs t179) - 1.0e-10) > 0 then (if (abs t184) > 0 then 1.0 else 0.0) else 0.0)
+        let !t186 = (1.0 - t175)
+        let !s187 = ((t175 * (if t185 > 0 then (t164 + (negate ((t179 / t184) * t161))) else t164)) + (t186 * t169))
+        let !s188 = ((t175 * (if t185 > 0 then (t165 + (negate ((t179 / t184) * t162))) else t165)) + (t186 * t170))
+        let !s189 = ((t175 * (if t185 > 0 then (t166 + (negate ((t179 / t184) * t163))) else t166)) + (t186 * t171))
+        chkI verts ((291 * i1) + (12 * i160)) 6 8
+        wrU verts (((291 * i1) + (12 * i160)) + 6) (if (1.0 - (abs (((s187 - s187) + (s188 - s188)) + (s189 - s189)))) > 0 then s187 else t2)
+        wrU verts (((291 * i1) + (12 * i160)) + 7) (if (1.0 - (abs (((s187 - s187) + (s188 - s188)) + (s189 - s189)))) > 0 then s188 else t3)
+        wrU verts (((291 * i1) + (12 * i160)) + 8) (if (1.0 - (abs (((s187 - s187) + (s188 - s188)) + (s189 - s189)))) > 0 then s189 else t4)
+        wrU walk (12 * i160) s187
+        wrU walk ((12 * i160) + 1) s188
+        wrU walk ((12 * i160) + 2) s189
+        let !t190 = (sqrt (((t172 * t172) + (t173 * t173)) + (t174 * t174)))
+        let !t191 = (if (abs s168) > 0 then (recip s168) else 0.0)
+        let !t192 = (t191 * ((if t185 > 0 then (t164 + (negate ((t179 / t184) * t161))) else t164) + (negate t169)))
+        let !t193 = (t180 * (t182 + t182))
+        let !t194 = (t180 * (t165 + t165))
+        let !t195 = (t180 * (t183 + t183))
+        let !t196 = (sqrt (((t193 * t193) + (t194 * t194)) + (t195 * t195)))
+        let !t197 = (if t196 > 0 then (recip (if (t196 - 1.0e-300) > 0 then t196 else 1.0e-300)) else 0.0)
+        let !t198 = (t197 * t193)
+        let !t199 = (t197 * t194)
+        let !t200 = (t191 * ((if t185 > 0 then (t165 + (negate ((t179 / t184) * t162))) else t165) + (negate t170)))
+        let !t201 = (t197 * t195)
+        let !t202 = (t191 * ((if t185 > 0 then (t166 + (negate ((t179 / t184) * t163))) else t166) + (negate t171)))
+        let !t203 = (((t198 * t192) + (t199 * t200)) + (t201 * t202))
+        let !t204 = (t192 + (negate (t203 * t198)))
+        let !t205 = (t200 + (negate (t203 * t199)))
+        let !t206 = (t202 + (negate (t203 * t201)))
+        let !t207 = (sqrt (((t204 * t204) + (t205 * t205)) + (t206 * t206)))
+        let !t208 = (if t207 > 0 then (recip (if (t207 - 1.0e-300) > 0 then t207 else 1.0e-300)) else 0.0)
+        let !s209 = ((t175 * (t190 * (t208 * t204))) + (t186 * t172))
+        let !s210 = ((t175 * (t190 * (t208 * t205))) + (t186 * t173))
+        let !s211 = ((t175 * (t190 * (t208 * t206))) + (t186 * t174))
+        wrU walk ((12 * i160) + 3) s209
+        wrU walk ((12 * i160) + 4) s210
+        wrU walk ((12 * i160) + 5) s211
+        let !s212 = ((t175 * t198) + (t186 * t161))
+        let !s213 = ((t175 * t199) + (t186 * t162))
+        let !s214 = ((t175 * t201) + (t186 * t163))
+        wrU walk ((12 * i160) + 6) s212
+        wrU walk ((12 * i160) + 7) s213
+        wrU walk ((12 * i160) + 8) s214
         pure ()
-      loopI 0.0 24.0 $ \i217 -> do
-        let !d217 = fromIntegral i217 :: Double
-        chkI walk (12 * i217) 0 11
-        t218 <- rdU walk ((12 * i217) + 6)
-        t219 <- rdU walk ((12 * i217) + 7)
-        t220 <- rdU walk ((12 * i217) + 8)
-        chkI radii ((24 * i1) + i217) 0 0
-        t221 <- rdU radii ((24 * i1) + i217)
-        let !s222 = (t221 / 4.0)
-        t223 <- rdU walk (12 * i217)
-        t224 <- rdU walk ((12 * i217) + 1)
-        t225 <- rdU walk ((12 * i217) + 2)
-        t226 <- rdU walk ((12 * i217) + 3)
-        t227 <- rdU walk ((12 * i217) + 4)
-        t228 <- rdU walk ((12 * i217) + 5)
-        let !s229 = (t223 + (s222 * t226))
-        let !s230 = (t224 + (s222 * t227))
-        let !s231 = (t225 + (s222 * t228))
-        let !t232 = (sqrt ((s229 * s229) + (s231 * s231)))
-        let !t233 = (t232 - 0.8)
-        let !t234 = (sqrt ((t233 * t233) + (s230 * s230)))
-        let !t235 = (t234 - 0.5)
-        let !t236 = (recip (2.0 * t234))
-        let !t237 = (recip (2.0 * t232))
-        let !t238 = (t233 * (t237 * (s229 + s229)))
-        let !t239 = (t233 * (t237 * (s231 + s231)))
-        let !t240 = ((((t236 * (t238 + t238)) * t218) + ((t236 * (s230 + s230)) * t219)) + ((t236 * (t239 + t239)) * t220))
-        let !t241 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t240) > 0 then 1.0 else 0.0) else 0.0)
-        let !s242 = (if t241 > 0 then (s229 + (negate ((t235 / t240) * t218))) else s229)
-        let !s243 = (if t241 > 0 then (s230 + (negate ((t235 / t240) * t219))) else s230)
-        let !s244 = (if t241 > 0 then (s231 + (negate ((t235 / t240) * t220))) else s231)
-        wrU walk ((12 * i217) + 9) s242
-        wrU walk ((12 * i217) + 10) s243
-        wrU walk ((12 * i217) + 11) s244
+      loopI 0.0 24.0 $ \i215 -> do
+        let !d215 = fromIntegral i215 :: Double
+        chkI walk (12 * i215) 0 11
+        t216 <- rdU walk ((12 * i215) + 6)
+        t217 <- rdU walk ((12 * i215) + 7)
+        t218 <- rdU walk ((12 * i215) + 8)
+        chkI radii ((24 * i1) + i215) 0 0
+        t219 <- rdU radii ((24 * i1) + i215)
+        let !s220 = (t219 / 4.0)
+        t221 <- rdU walk (12 * i215)
+        t222 <- rdU walk ((12 * i215) + 1)
+        t223 <- rdU walk ((12 * i215) + 2)
+        t224 <- rdU walk ((12 * i215) + 3)
+        t225 <- rdU walk ((12 * i215) + 4)
+        t226 <- rdU walk ((12 * i215) + 5)
+        let !s227 = (t221 + (s220 * t224))
+        let !s228 = (t222 + (s220 * t225))
+        let !s229 = (t223 + (s220 * t226))
+        let !t230 = (sqrt ((s227 * s227) + (s229 * s229)))
+        let !t231 = (t230 - 0.8)
+        let !t232 = (sqrt ((t231 * t231) + (s228 * s228)))
+        let !t233 = (t232 - 0.5)
+        let !t234 = (recip (2.0 * t232))
+        let !t235 = (recip (2.0 * t230))
+        let !t236 = (t231 * (t235 * (s227 + s227)))
+        let !t237 = (t231 * (t235 * (s229 + s229)))
+        let !t238 = ((((t234 * (t236 + t236)) * t216) + ((t234 * (s228 + s228)) * t217)) + ((t234 * (t237 + t237)) * t218))
+        let !t239 = (if ((abs t233) - 1.0e-10) > 0 then (if (abs t238) > 0 then 1.0 else 0.0) else 0.0)
+        let !s240 = (if t239 > 0 then (s227 + (negate ((t233 / t238) * t216))) else s227)
+        let !s241 = (if t239 > 0 then (s228 + (negate ((t233 / t238) * t217))) else s228)
+        let !s242 = (if t239 > 0 then (s229 + (negate ((t233 / t238) * t218))) else s229)
+        wrU walk ((12 * i215) + 9) s240
+        wrU walk ((12 * i215) + 10) s241
+        wrU walk ((12 * i215) + 11) s242
         pure ()
-      loopI 0.0 24.0 $ \i245 -> do
-        let !d245 = fromIntegral i245 :: Double
-        chkI walk (12 * i245) 6 11
-        t246 <- rdU walk ((12 * i245) + 6)
-        t247 <- rdU walk ((12 * i245) + 7)
-        t248 <- rdU walk ((12 * i245) + 8)
-        t249 <- rdU walk ((12 * i245) + 9)
-        t250 <- rdU walk ((12 * i245) + 10)
-        t251 <- rdU walk ((12 * i245) + 11)
-        let !t252 = (sqrt ((t249 * t249) + (t251 * t251)))
-        let !t253 = (t252 - 0.8)
-        let !t254 = (sqrt ((t253 * t253) + (t250 * t250)))
-        let !t255 = (t254 - 0.5)
-        let !t256 = (recip (2.0 * t254))
-        let !t257 = (recip (2.0 * t252))
-        let !t258 = (t253 * (t257 * (t249 + t249)))
-        let !t259 = (t253 * (t257 * (t251 + t251)))
-        let !t260 = ((((t256 * (t258 + t258)) * t246) + ((t256 * (t250 + t250)) * t247)) + ((t256 * (t259 + t259)) * t248))
-        let !t261 = (if ((abs t255) - 1.0e-10) > 0 then (if (abs t260) > 0 then 1.0 else 0.0) else 0.0)
-        let !s262 = (if t261 > 0 then (t249 + (negate ((t255 / t260) * t246))) else t249)
-        let !s263 = (if t261 > 0 then (t250 + (negate ((t255 / t260) * t247))) else t250)
-        let !s264 = (if t261 > 0 then (t251 + (negate ((t255 / t260) * t248))) else t251)
-        wrU walk ((12 * i245) + 9) s262
-        wrU walk ((12 * i245) + 10) s263
-        wrU walk ((12 * i245) + 11) s264
+      loopI 0.0 24.0 $ \i243 -> do
+        let !d243 = fromIntegral i243 :: Double
+        chkI walk (12 * i243) 6 11
+        t244 <- rdU walk ((12 * i243) + 6)
+        t245 <- rdU walk ((12 * i243) + 7)
+        t246 <- rdU walk ((12 * i243) + 8)
+        t247 <- rdU walk ((12 * i243) + 9)
+        t248 <- rdU walk ((12 * i243) + 10)
+        t249 <- rdU walk ((12 * i243) + 11)
+        let !t250 = (sqrt ((t247 * t247) + (t249 * t249)))
+        let !t251 = (t250 - 0.8)
+        let !t252 = (sqrt ((t251 * t251) + (t248 * t248)))
+        let !t253 = (t252 - 0.5)
+        let !t254 = (recip (2.0 * t252))
+        let !t255 = (recip (2.0 * t250))
+        let !t256 = (t251 * (t255 * (t247 + t247)))
+        let !t257 = (t251 * (t255 * (t249 + t249)))
+        let !t258 = ((((t254 * (t256 + t256)) * t244) + ((t254 * (t248 + t248)) * t245)) + ((t254 * (t257 + t257)) * t246))
+        let !t259 = (if ((abs t253) - 1.0e-10) > 0 then (if (abs t258) > 0 then 1.0 else 0.0) else 0.0)
+        let !s260 = (if t259 > 0 then (t247 + (negate ((t253 / t258) * t244))) else t247)
+        let !s261 = (if t259 > 0 then (t248 + (negate ((t253 / t258) * t245))) else t248)
+        let !s262 = (if t259 > 0 then (t249 + (negate ((t253 / t258) * t246))) else t249)
+        wrU walk ((12 * i243) + 9) s260
+        wrU walk ((12 * i243) + 10) s261
+        wrU walk ((12 * i243) + 11) s262
         pure ()
-      loopI 0.0 24.0 $ \i265 -> do
-        let !d265 = fromIntegral i265 :: Double
-        chkI walk (12 * i265) 0 11
-        t266 <- rdU walk ((12 * i265) + 6)
-        t267 <- rdU walk ((12 * i265) + 7)
-        t268 <- rdU walk ((12 * i265) + 8)
-        t269 <- rdU walk ((12 * i265) + 9)
-        t270 <- rdU walk ((12 * i265) + 10)
-        t271 <- rdU walk ((12 * i265) + 11)
-        chkI radii ((24 * i1) + i265) 0 0
-        t272 <- rdU radii ((24 * i1) + i265)
-        let !s273 = (t272 / 4.0)
-        t274 <- rdU walk (12 * i265)
-        t275 <- rdU walk ((12 * i265) + 1)
-        t276 <- rdU walk ((12 * i265) + 2)
-        t277 <- rdU walk ((12 * i265) + 3)
-        t278 <- rdU walk ((12 * i265) + 4)
-        t279 <- rdU walk ((12 * i265) + 5)
-        let !t280 = (if (abs s273) > 0 then 1.0 else 0.0)
-        let !t281 = (sqrt ((t269 * t269) + (t271 * t271)))
-        let !t282 = (t281 - 0.8)
-        let !t283 = (sqrt ((t282 * t282) + (t270 * t270)))
-        let !t284 = (t283 - 0.5)
-        let !t285 = (recip (2.0 * t283))
-        let !t286 = (recip (2.0 * t281))
-        let !t287 = (t282 * (t286 * (t269 + t269)))
-        let !t288 = (t282 * (t286 * (t271 + t271)))
-        let !t289 = ((((t285 * (t287 + t287)) * t266) + ((t285 * (t270 + t270)) * t267)) + ((t285 * (t288 + t288)) * t268))
-        let !t290 = (if ((abs t284) - 1.0e-10) > 0 then (if (abs t289) > 0 then 1.0 else 0.0) else 0.0)
-        let !t291 = (1.0 - t280)
-        let !s292 = ((t280 * (if t290 > 0 then (t269 + (negate ((t284 / t289) * t266))) else t269)) + (t291 * t274))
-        let !s293 = ((t280 * (if t290 > 0 then (t270 + (negate ((t284 / t289) * t267))) else t270)) + (t291 * t275))
-        let !s294 = ((t280 * (if t290 > 0 then (t271 + (negate ((t284 / t289) * t268))) else t271)) + (t291 * t276))
-        chkI verts ((291 * i1) + (12 * i265)) 9 11
-        wrU verts (((291 * i1) + (12 * i265)) + 9) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s292 else t2)
-        wrU verts (((291 * i1) + (12 * i265)) + 10) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s293 else t3)
-        wrU verts (((291 * i1) + (12 * i265)) + 11) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s294 else t4)
-        wrU walk (12 * i265) s292
-        wrU walk ((12 * i265) + 1) s293
-        wrU walk ((12 * i265) + 2) s294
-        let !t295 = (sqrt (((t277 * t277) + (t278 * t278)) + (t279 * t279)))
-        let !t296 = (if (abs s273) > 0 then (recip s273) else 0.0)
-        let !t297 = (t296 * ((if t290 > 0 then (t269 + (negate ((t284 / t289) * t266))) else t269) + (negate t274)))
-        let !t298 = (t285 * (t287 + t287))
-        let !t299 = (t285 * (t270 + t270))
-        let !t300 = (t285 * (t288 + t288))
-        let !t301 = (sqrt (((t298 * t298) + (t299 * t299)) + (t300 * t300)))
-        let !t302 = (if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0)
-        let !t303 = (t302 * t298)
-        let !t304 = (t302 * t299)
-        let !t305 = (t296 * ((if t290 > 0 then (t270 + (negate ((t284 / t289) * t267))) else t270) + (negate t275)))
-        let !t306 = (t302 * t300)
-        let !t307 = (t296 * ((if t290 > 0 then (t271 + (negate ((t284 / t289) * t268))) else t271) + (negate t276)))
-        let !t308 = (((t303 * t297) + (t304 * t305)) + (t306 * t307))
-        let !t309 = (t297 + (negate (t308 * t303)))
-        let !t310 = (t305 + (negate (t308 * t304)))
-        let !t311 = (t307 + (negate (t308 * t306)))
-        let !t312 = (sqrt (((t309 * t309) + (t310 * t310)) + (t311 * t311)))
-        let !t313 = (if t312 > 0 then (recip (if (t312 - 1.0e-300) > 0 then t312 else 1.0e-300)) else 0.0)
-        let !s314 = ((t280 * (t295 * (t313 * t309))) + (t291 * t277))
-        let !s315 = ((t280 * (t295 * (t313 * t310))) + (t291 * t278))
-        let !s316 = ((t280 * (t295 * (t313 * t311))) + (t291 * t279))
-        wrU walk ((12 * i265) + 3) s314
-        wrU walk ((12 * i265) + 4) s315
-        wrU walk ((12 * i265) + 5) s316
-        let !s317 = ((t280 * t303) + (t291 * t266))
-        let !s318 = ((t280 * t304) + (t291 * t267))
-        let !s319 = ((t280 * t306) + (t291 * t268))
-        wrU walk ((12 * i265) + 6) s317
-        wrU walk ((12 * i265) + 7) s318
-        wrU walk ((12 * i265) + 8) s319
+      loopI 0.0 24.0 $ \i263 -> do
+        let !d263 = fromIntegral i263 :: Double
+        chkI walk (12 * i263) 0 11
+        t264 <- rdU walk ((12 * i263) + 6)
+        t265 <- rdU walk ((12 * i263) + 7)
+        t266 <- rdU walk ((12 * i263) + 8)
+        t267 <- rdU walk ((12 * i263) + 9)
+        t268 <- rdU walk ((12 * i263) + 10)
+        t269 <- rdU walk ((12 * i263) + 11)
+        chkI radii ((24 * i1) + i263) 0 0
+        t270 <- rdU radii ((24 * i1) + i263)
+        let !s271 = (t270 / 4.0)
+        t272 <- rdU walk (12 * i263)
+        t273 <- rdU walk ((12 * i263) + 1)
+        t274 <- rdU walk ((12 * i263) + 2)
+        t275 <- rdU walk ((12 * i263) + 3)
+        t276 <- rdU walk ((12 * i263) + 4)
+        t277 <- rdU walk ((12 * i263) + 5)
+        let !t278 = (if (abs s271) > 0 then 1.0 else 0.0)
+        let !t279 = (sqrt ((t267 * t267) + (t269 * t269)))
+        let !t280 = (t279 - 0.8)
+        let !t281 = (sqrt ((t280 * t280) + (t268 * t268)))
+        let !t282 = (t281 - 0.5)
+        let !t283 = (recip (2.0 * t281))
+        let !t284 = (recip (2.0 * t279))
+        let !t285 = (t280 * (t284 * (t267 + t267)))
+        let !t286 = (t280 * (t284 * (t269 + t269)))
+        let !t287 = ((((t283 * (t285 + t285)) * t264) + ((t283 * (t268 + t268)) * t265)) + ((t283 * (t286 + t286)) * t266))
+        let !t288 = (if ((abs t282) - 1.0e-10) > 0 then (if (abs t287) > 0 then 1.0 else 0.0) else 0.0)
+        let !t289 = (1.0 - t278)
+        let !s290 = ((t278 * (if t288 > 0 then (t267 + (negate ((t282 / t287) * t264))) else t267)) + (t289 * t272))
+        let !s291 = ((t278 * (if t288 > 0 then (t268 + (negate ((t282 / t287) * t265))) else t268)) + (t289 * t273))
+        let !s292 = ((t278 * (if t288 > 0 then (t269 + (negate ((t282 / t287) * t266))) else t269)) + (t289 * t274))
+        chkI verts ((291 * i1) + (12 * i263)) 9 11
+        wrU verts (((291 * i1) + (12 * i263)) + 9) (if (1.0 - (abs (((s290 - s290) + (s291 - s291)) + (s292 - s292)))) > 0 then s290 else t2)
+        wrU verts (((291 * i1) + (12 * i263)) + 10) (if (1.0 - (abs (((s290 - s290) + (s291 - s291)) + (s292 - s292)))) > 0 then s291 else t3)
+        wrU verts (((291 * i1) + (12 * i263)) + 11) (if (1.0 - (abs (((s290 - s290) + (s291 - s291)) + (s292 - s292)))) > 0 then s292 else t4)
+        wrU walk (12 * i263) s290
+        wrU walk ((12 * i263) + 1) s291
+        wrU walk ((12 * i263) + 2) s292
+        let !t293 = (sqrt (((t275 * t275) + (t276 * t276)) + (t277 * t277)))
+        let !t294 = (if (abs s271) > 0 then (recip s271) else 0.0)
+        let !t295 = (t294 * ((if t288 > 0 then (t267 + (negate ((t282 / t287) * t264))) else t267) + (negate t272)))
+        let !t296 = (t283 * (t285 + t285))
+        let !t297 = (t283 * (t268 + t268))
+        let !t298 = (t283 * (t286 + t286))
+        let !t299 = (sqrt (((t296 * t296) + (t297 * t297)) + (t298 * t298)))
+        let !t300 = (if t299 > 0 then (recip (if (t299 - 1.0e-300) > 0 then t299 else 1.0e-300)) else 0.0)
+        let !t301 = (t300 * t296)
+        let !t302 = (t300 * t297)
+        let !t303 = (t294 * ((if t288 > 0 then (t268 + (negate ((t282 / t287) * t265))) else t268) + (negate t273)))
+        let !t304 = (t300 * t298)
+        let !t305 = (t294 * ((if t288 > 0 then (t269 + (negate ((t282 / t287) * t266))) else t269) + (negate t274)))
+        let !t306 = (((t301 * t295) + (t302 * t303)) + (t304 * t305))
+        let !t307 = (t295 + (negate (t306 * t301)))
+        let !t308 = (t303 + (negate (t306 * t302)))
+        let !t309 = (t305 + (negate (t306 * t304)))
+        let !t310 = (sqrt (((t307 * t307) + (t308 * t308)) + (t309 * t309)))
+        let !t311 = (if t310 > 0 then (recip (if (t310 - 1.0e-300) > 0 then t310 else 1.0e-300)) else 0.0)
+        let !s312 = ((t278 * (t293 * (t311 * t307))) + (t289 * t275))
+        let !s313 = ((t278 * (t293 * (t311 * t308))) + (t289 * t276))
+        let !s314 = ((t278 * (t293 * (t311 * t309))) + (t289 * t277))
+        wrU walk ((12 * i263) + 3) s312
+        wrU walk ((12 * i263) + 4) s313
+        wrU walk ((12 * i263) + 5) s314
+        let !s315 = ((t278 * t301) + (t289 * t264))
+        let !s316 = ((t278 * t302) + (t289 * t265))
+        let !s317 = ((t278 * t304) + (t289 * t266))
+        wrU walk ((12 * i263) + 6) s315
+        wrU walk ((12 * i263) + 7) s316
+        wrU walk ((12 * i263) + 8) s317
         pure ()
-      loopI 0.0 24.0 $ \i320 -> do
-        let !d320 = fromIntegral i320 :: Double
-        chkI walk (12 * i320) 0 11
-        t321 <- rdU walk ((12 * i320) + 6)
-        t322 <- rdU walk ((12 * i320) + 7)
-        t323 <- rdU walk ((12 * i320) + 8)
-        chkI radii ((24 * i1) + i320) 0 0
-        t324 <- rdU radii ((24 * i1) + i320)
-        let !s325 = (t324 / 4.0)
-        t326 <- rdU walk (12 * i320)
-        t327 <- rdU walk ((12 * i320) + 1)
-        t328 <- rdU walk ((12 * i320) + 2)
-        t329 <- rdU walk ((12 * i320) + 3)
-        t330 <- rdU walk ((12 * i320) + 4)
-        t331 <- rdU walk ((12 * i320) + 5)
-        let !s332 = (t326 + (s325 * t329))
-        let !s333 = (t327 + (s325 * t330))
-        let !s334 = (t328 + (s325 * t331))
-        let !t335 = (sqrt ((s332 * s332) + (s334 * s334)))
-        let !t336 = (t335 - 0.8)
-        let !t337 = (sqrt ((t336 * t336) + (s333 * s333)))
-        let !t338 = (t337 - 0.5)
-        let !t339 = (recip (2.0 * t337))
-        let !t340 = (recip (2.0 * t335))
-        let !t341 = (t336 * (t340 * (s332 + s332)))
-        let !t342 = (t336 * (t340 * (s334 + s334)))
-        let !t343 = ((((t339 * (t341 + t341)) * t321) + ((t339 * (s333 + s333)) * t322)) + ((t339 * (t342 + t342)) * t323))
-        let !t344 = (if ((abs t338) - 1.0e-10) > 0 then (if (abs t343) > 0 then 1.0 else 0.0) else 0.0)
-        let !s345 = (if t344 > 0 then (s332 + (negate ((t338 / t343) * t321))) else s332)
-        let !s346 = (if t344 > 0 then (s333 + (negate ((t338 / t343) * t322))) else s333)
-        let !s347 = (if t344 > 0 then (s334 + (negate ((t338 / t343) * t323))) else s334)
-        wrU walk ((12 * i320) + 9) s345
-        wrU walk ((12 * i320) + 10) s346
-        wrU walk ((12 * i320) + 11) s347
+      loopI 0.0 24.0 $ \i318 -> do
+        let !d318 = fromIntegral i318 :: Double
+        chkI walk (12 * i318) 0 11
+        t319 <- rdU walk ((12 * i318) + 6)
+        t320 <- rdU walk ((12 * i318) + 7)
+        t321 <- rdU walk ((12 * i318) + 8)
+        chkI radii ((24 * i1) + i318) 0 0
+        t322 <- rdU radii ((24 * i1) + i318)
+        let !s323 = (t322 / 4.0)
+        t324 <- rdU walk (12 * i318)
+        t325 <- rdU walk ((12 * i318) + 1)
+        t326 <- rdU walk ((12 * i318) + 2)
+        t327 <- rdU walk ((12 * i318) + 3)
+        t328 <- rdU walk ((12 * i318) + 4)
+        t329 <- rdU walk ((12 * i318) + 5)
+        let !s330 = (t324 + (s323 * t327))
+        let !s331 = (t325 + (s323 * t328))
+        let !s332 = (t326 + (s323 * t329))
+        let !t333 = (sqrt ((s330 * s330) + (s332 * s332)))
+        let !t334 = (t333 - 0.8)
+        let !t335 = (sqrt ((t334 * t334) + (s331 * s331)))
+        let !t336 = (t335 - 0.5)
+        let !t337 = (recip (2.0 * t335))
+        let !t338 = (recip (2.0 * t333))
+        let !t339 = (t334 * (t338 * (s330 + s330)))
+        let !t340 = (t334 * (t338 * (s332 + s332)))
+        let !t341 = ((((t337 * (t339 + t339)) * t319) + ((t337 * (s331 + s331)) * t320)) + ((t337 * (t340 + t340)) * t321))
+        let !t342 = (if ((abs t336) - 1.0e-10) > 0 then (if (abs t341) > 0 then 1.0 else 0.0) else 0.0)
+        let !s343 = (if t342 > 0 then (s330 + (negate ((t336 / t341) * t319))) else s330)
+        let !s344 = (if t342 > 0 then (s331 + (negate ((t336 / t341) * t320))) else s331)
+        let !s345 = (if t342 > 0 then (s332 + (negate ((t336 / t341) * t321))) else s332)
+        wrU walk ((12 * i318) + 9) s343
+        wrU walk ((12 * i318) + 10) s344
+        wrU walk ((12 * i318) + 11) s345
         pure ()
-      loopI 0.0 24.0 $ \i348 -> do
-        let !d348 = fromIntegral i348 :: Double
-        chkI walk (12 * i348) 6 11
-        t349 <- rdU walk ((12 * i348) + 6)
-        t350 <- rdU walk ((12 * i348) + 7)
-        t351 <- rdU walk ((12 * i348) + 8)
-        t352 <- rdU walk ((12 * i348) + 9)
-        t353 <- rdU walk ((12 * i348) + 10)
-        t354 <- rdU walk ((12 * i348) + 11)
-        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
-        let !t356 = (t355 - 0.8)
-        let !t357 = (sqrt ((t356 * t356) + (t353 * t353)))
-        let !t358 = (t357 - 0.5)
-        let !t359 = (recip (2.0 * t357))
-        let !t360 = (recip (2.0 * t355))
-        let !t361 = (t356 * (t360 * (t352 + t352)))
-        let !t362 = (t356 * (t360 * (t354 + t354)))
-        let !t363 = ((((t359 * (t361 + t361)) * t349) + ((t359 * (t353 + t353)) * t350)) + ((t359 * (t362 + t362)) * t351))
-        let !t364 = (if ((abs t358) - 1.0e-10) > 0 then (if (abs t363) > 0 then 1.0 else 0.0) else 0.0)
-        let !s365 = (if t364 > 0 then (t352 + (negate ((t358 / t363) * t349))) else t352)
-        let !s366 = (if t364 > 0 then (t353 + (negate ((t358 / t363) * t350))) else t353)
-        let !s367 = (if t364 > 0 then (t354 + (negate ((t358 / t363) * t351))) else t354)
-        wrU walk ((12 * i348) + 9) s365
-        wrU walk ((12 * i348) + 10) s366
-        wrU walk ((12 * i348) + 11) s367
+      loopI 0.0 24.0 $ \i346 -> do
+        let !d346 = fromIntegral i346 :: Double
+        chkI walk (12 * i346) 6 11
+        t347 <- rdU walk ((12 * i346) + 6)
+        t348 <- rdU walk ((12 * i346) + 7)
+        t349 <- rdU walk ((12 * i346) + 8)
+        t350 <- rdU walk ((12 * i346) + 9)
+        t351 <- rdU walk ((12 * i346) + 10)
+        t352 <- rdU walk ((12 * i346) + 11)
+        let !t353 = (sqrt ((t350 * t350) + (t352 * t352)))
+        let !t354 = (t353 - 0.8)
+        let !t355 = (sqrt ((t354 * t354) + (t351 * t351)))
+        let !t356 = (t355 - 0.5)
+        let !t357 = (recip (2.0 * t355))
+        let !t358 = (recip (2.0 * t353))
+        let !t359 = (t354 * (t358 * (t350 + t350)))
+        let !t360 = (t354 * (t358 * (t352 + t352)))
+        let !t361 = ((((t357 * (t359 + t359)) * t347) + ((t357 * (t351 + t351)) * t348)) + ((t357 * (t360 + t360)) * t349))
+        let !t362 = (if ((abs t356) - 1.0e-10) > 0 then (if (abs t361) > 0 then 1.0 else 0.0) else 0.0)
+        let !s363 = (if t362 > 0 then (t350 + (negate ((t356 / t361) * t347))) else t350)
+        let !s364 = (if t362 > 0 then (t351 + (negate ((t356 / t361) * t348))) else t351)
+        let !s365 = (if t362 > 0 then (t352 + (negate ((t356 / t361) * t349))) else t352)
+        wrU walk ((12 * i346) + 9) s363
+        wrU walk ((12 * i346) + 10) s364
+        wrU walk ((12 * i346) + 11) s365
         pure ()
-      loopI 0.0 24.0 $ \i368 -> do
-        let !d368 = fromIntegral i368 :: Double
-        chkI walk (12 * i368) 0 11
-        t369 <- rdU walk ((12 * i368) + 6)
-        t370 <- rdU walk ((12 * i368) + 7)
-        t371 <- rdU walk ((12 * i368) + 8)
-        t372 <- rdU walk ((12 * i368) + 9)
-        t373 <- rdU walk ((12 * i368) + 10)
-        t374 <- rdU walk ((12 * i368) + 11)
-        chkI radii ((24 * i1) + i368) 0 0
-        t375 <- rdU radii ((24 * i1) + i368)
-        let !s376 = (t375 / 4.0)
-        t377 <- rdU walk (12 * i368)
-        t378 <- rdU walk ((12 * i368) + 1)
-        t379 <- rdU walk ((12 * i368) + 2)
-        t380 <- rdU walk ((12 * i368) + 3)
-        t381 <- rdU walk ((12 * i368) + 4)
-        t382 <- rdU walk ((12 * i368) + 5)
-        let !t383 = (if (abs s376) > 0 then 1.0 else 0.0)
-        let !t384 = (sqrt ((t372 * t372) + (t374 * t374)))
-        let !t385 = (t384 - 0.8)
-        let !t386 = (sqrt ((t385 * t385) + (t373 * t373)))
-        let !t387 = (t386 - 0.5)
-        let !t388 = (recip (2.0 * t386))
-        let !t389 = (recip (2.0 * t384))
-        let !t390 = (t385 * (t389 * (t372 + t372)))
-        let !t391 = (t385 * (t389 * (t374 + t374)))
-        let !t392 = ((((t388 * (t390 + t390)) * t369) + ((t388 * (t373 + t373)) * t370)) + ((t388 * (t391 + t391)) * t371))
-        let !t393 = (if ((abs t387) - 1.0e-10) > 0 then (if (abs t392) > 0 then 1.0 else 0.0) else 0.0)
-        let !t394 = (1.0 - t383)
-        let !s395 = ((t383 * (if t393 > 0 then (t372 + (negate ((t387 / t392) * t369))) else t372)) + (t394 * t377))
-        let !s396 = ((t383 * (if t393 > 0 then (t373 + (negate ((t387 / t392) * t370))) else t373)) + (t394 * t378))
-        let !s397 = ((t383 * (if t393 > 0 then (t374 + (negate ((t387 / t392) * t371))) else t374)) + (t394 * t379))
-        chkI verts ((291 * i1) + (12 * i368)) 12 14
-        wrU verts (((291 * i1) + (12 * i368)) + 12) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s395 else t2)
-        wrU verts (((291 * i1) + (12 * i368)) + 13) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s396 else t3)
-        wrU verts (((291 * i1) + (12 * i368)) + 14) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s397 else t4)
+      loopI 0.0 24.0 $ \i366 -> do
+        let !d366 = fromIntegral i366 :: Double
+        chkI walk (12 * i366) 0 11
+        t367 <- rdU walk ((12 * i366) + 6)
+        t368 <- rdU walk ((12 * i366) + 7)
+        t369 <- rdU walk ((12 * i366) + 8)
+        t370 <- rdU walk ((12 * i366) + 9)
+        t371 <- rdU walk ((12 * i366) + 10)
+        t372 <- rdU walk ((12 * i366) + 11)
+        chkI radii ((24 * i1) + i366) 0 0
+        t373 <- rdU radii ((24 * i1) + i366)
+        let !s374 = (t373 / 4.0)
+        t375 <- rdU walk (12 * i366)
+        t376 <- rdU walk ((12 * i366) + 1)
+        t377 <- rdU walk ((12 * i366) + 2)
+        t378 <- rdU walk ((12 * i366) + 3)
+        t379 <- rdU walk ((12 * i366) + 4)
+        t380 <- rdU walk ((12 * i366) + 5)
+        let !t381 = (if (abs s374) > 0 then 1.0 else 0.0)
+        let !t382 = (sqrt ((t370 * t370) + (t372 * t372)))
+        let !t383 = (t382 - 0.8)
+        let !t384 = (sqrt ((t383 * t383) + (t371 * t371)))
+        let !t385 = (t384 - 0.5)
+        let !t386 = (recip (2.0 * t384))
+        let !t387 = (recip (2.0 * t382))
+        let !t388 = (t383 * (t387 * (t370 + t370)))
+        let !t389 = (t383 * (t387 * (t372 + t372)))
+        let !t390 = ((((t386 * (t388 + t388)) * t367) + ((t386 * (t371 + t371)) * t368)) + ((t386 * (t389 + t389)) * t369))
+        let !t391 = (if ((abs t385) - 1.0e-10) > 0 then (if (abs t390) > 0 then 1.0 else 0.0) else 0.0)
+        let !t392 = (1.0 - t381)
+        let !s393 = ((t381 * (if t391 > 0 then (t370 + (negate ((t385 / t390) * t367))) else t370)) + (t392 * t375))
+        let !s394 = ((t381 * (if t391 > 0 then (t371 + (negate ((t385 / t390) * t368))) else t371)) + (t392 * t376))
+        let !s395 = ((t381 * (if t391 > 0 then (t372 + (negate ((t385 / t390) * t369))) else t372)) + (t392 * t377))
+        chkI verts ((291 * i1) + (12 * i366)) 12 14
+        wrU verts (((291 * i1) + (12 * i366)) + 12) (if (1.0 - (abs (((s393 - s393) + (s394 - s394)) + (s395 - s395)))) > 0 then s393 else t2)
+        wrU verts (((291 * i1) + (12 * i366)) + 13) (if (1.0 - (abs (((s393 - s393) + (s394 - s394)) + (s395 - s395)))) > 0 then s394 else t3)
+        wrU verts (((291 * i1) + (12 * i366)) + 14) (if (1.0 - (abs (((s393 - s393) + (s394 - s394)) + (s395 - s395)))) > 0 then s395 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i398 -> do
-        let !d398 = fromIntegral i398 :: Double
-        t399 <- getR v18
-        t400 <- getR v19
-        setR v18 ((t399 * 0.9659258262890683) - (t400 * 0.25881904510252074))
-        setR v19 ((t400 * 0.9659258262890683) + (t399 * 0.25881904510252074))
-        let !s401 = ((t399 * t5) + (t400 * s14))
-        let !s402 = ((t399 * t6) + (t400 * s15))
-        let !s403 = ((t399 * t7) + (t400 * s16))
-        chkI walk (12 * i398) 3 5
-        wrU walk ((12 * i398) + 3) s401
-        wrU walk ((12 * i398) + 4) s402
-        wrU walk ((12 * i398) + 5) s403
+      loopI 0.0 24.0 $ \i396 -> do
+        let !d396 = fromIntegral i396 :: Double
+        t397 <- rdU locals 0
+        t398 <- rdU locals 1
+        wrU locals 0 ((t397 * 0.9659258262890683) - (t398 * 0.25881904510252074))
+        wrU locals 1 ((t398 * 0.9659258262890683) + (t397 * 0.25881904510252074))
+        let !s399 = ((t397 * t5) + (t398 * s14))
+        let !s400 = ((t397 * t6) + (t398 * s15))
+        let !s401 = ((t397 * t7) + (t398 * s16))
+        chkI walk (12 * i396) 3 5
+        wrU walk ((12 * i396) + 3) s399
+        wrU walk ((12 * i396) + 4) s400
+        wrU walk ((12 * i396) + 5) s401
         pure ()
-      loopI 0.0 24.0 $ \i404 -> do
-        let !d404 = fromIntegral i404 :: Double
-        chkI radii ((24 * i1) + i404) 0 0
-        t405 <- rdU radii ((24 * i1) + i404)
-        chkI walk (12 * i404) 3 11
-        t406 <- rdU walk ((12 * i404) + 3)
-        t407 <- rdU walk ((12 * i404) + 4)
-        t408 <- rdU walk ((12 * i404) + 5)
-        let !s409 = (t2 + (t405 * t406))
-        let !s410 = (t3 + (t405 * t407))
-        let !s411 = (t4 + (t405 * t408))
-        let !t412 = (sqrt ((s409 * s409) + (s411 * s411)))
-        let !t413 = (t412 - 0.8)
-        let !t414 = (sqrt ((t413 * t413) + (s410 * s410)))
-        let !t415 = (t414 - 0.5)
-        let !t416 = (recip (2.0 * t414))
-        let !t417 = (recip (2.0 * t412))
-        let !t418 = (t413 * (t417 * (s409 + s409)))
-        let !t419 = (t413 * (t417 * (s411 + s411)))
-        let !t420 = ((((t416 * (t418 + t418)) * t8) + ((t416 * (s410 + s410)) * t9)) + ((t416 * (t419 + t419)) * t10))
-        let !t421 = (if ((abs t415) - 1.0e-10) > 0 then (if (abs t420) > 0 then 1.0 else 0.0) else 0.0)
-        let !s422 = (if t421 > 0 then (s409 + (negate ((t415 / t420) * t8))) else s409)
-        let !s423 = (if t421 > 0 then (s410 + (negate ((t415 / t420) * t9))) else s410)
-        let !s424 = (if t421 > 0 then (s411 + (negate ((t415 / t420) * t10))) else s411)
-        wrU walk ((12 * i404) + 9) s422
-        wrU walk ((12 * i404) + 10) s423
-        wrU walk ((12 * i404) + 11) s424
+      loopI 0.0 24.0 $ \i402 -> do
+        let !d402 = fromIntegral i402 :: Double
+        chkI radii ((24 * i1) + i402) 0 0
+        t403 <- rdU radii ((24 * i1) + i402)
+        chkI walk (12 * i402) 3 11
+        t404 <- rdU walk ((12 * i402) + 3)
+        t405 <- rdU walk ((12 * i402) + 4)
+        t406 <- rdU walk ((12 * i402) + 5)
+        let !s407 = (t2 + (t403 * t404))
+        let !s408 = (t3 + (t403 * t405))
+        let !s409 = (t4 + (t403 * t406))
+        let !t410 = (sqrt ((s407 * s407) + (s409 * s409)))
+        let !t411 = (t410 - 0.8)
+        let !t412 = (sqrt ((t411 * t411) + (s408 * s408)))
+        let !t413 = (t412 - 0.5)
+        let !t414 = (recip (2.0 * t412))
+        let !t415 = (recip (2.0 * t410))
+        let !t416 = (t411 * (t415 * (s407 + s407)))
+        let !t417 = (t411 * (t415 * (s409 + s409)))
+        let !t418 = ((((t414 * (t416 + t416)) * t8) + ((t414 * (s408 + s408)) * t9)) + ((t414 * (t417 + t417)) * t10))
+        let !t419 = (if ((abs t413) - 1.0e-10) > 0 then (if (abs t418) > 0 then 1.0 else 0.0) else 0.0)
+        let !s420 = (if t419 > 0 then (s407 + (negate ((t413 / t418) * t8))) else s407)
+        let !s421 = (if t419 > 0 then (s408 + (negate ((t413 / t418) * t9))) else s408)
+        let !s422 = (if t419 > 0 then (s409 + (negate ((t413 / t418) * t10))) else s409)
+        wrU walk ((12 * i402) + 9) s420
+        wrU walk ((12 * i402) + 10) s421
+        wrU walk ((12 * i402) + 11) s422
         pure ()
-      loopI 0.0 24.0 $ \i425 -> do
-        let !d425 = fromIntegral i425 :: Double
-        chkI walk (12 * i425) 9 11
-        t426 <- rdU walk ((12 * i425) + 9)
-        t427 <- rdU walk ((12 * i425) + 10)
-        t428 <- rdU walk ((12 * i425) + 11)
-        let !t429 = (sqrt ((t426 * t426) + (t428 * t428)))
-        let !t430 = (t429 - 0.8)
-        let !t431 = (sqrt ((t430 * t430) + (t427 * t427)))
-        let !t432 = (t431 - 0.5)
-        let !t433 = (recip (2.0 * t431))
-        let !t434 = (recip (2.0 * t429))
-        let !t435 = (t430 * (t434 * (t426 + t426)))
-        let !t436 = (t430 * (t434 * (t428 + t428)))
-        let !t437 = ((((t433 * (t435 + t435)) * t8) + ((t433 * (t427 + t427)) * t9)) + ((t433 * (t436 + t436)) * t10))
-        let !t438 = (if ((abs t432) - 1.0e-10) > 0 then (if (abs t437) > 0 then 1.0 else 0.0) else 0.0)
-        let !s439 = (if t438 > 0 then (t426 + (negate ((t432 / t437) * t8))) else t426)
-        let !s440 = (if t438 > 0 then (t427 + (negate ((t432 / t437) * t9))) else t427)
-        let !s441 = (if t438 > 0 then (t428 + (negate ((t432 / t437) * t10))) else t428)
-        wrU walk ((12 * i425) + 9) s439
-        wrU walk ((12 * i425) + 10) s440
-        wrU walk ((12 * i425) + 11) s441
+      loopI 0.0 24.0 $ \i423 -> do
+        let !d423 = fromIntegral i423 :: Double
+        chkI walk (12 * i423) 9 11
+        t424 <- rdU walk ((12 * i423) + 9)
+        t425 <- rdU walk ((12 * i423) + 10)
+        t426 <- rdU walk ((12 * i423) + 11)
+        let !t427 = (sqrt ((t424 * t424) + (t426 * t426)))
+        let !t428 = (t427 - 0.8)
+        let !t429 = (sqrt ((t428 * t428) + (t425 * t425)))
+        let !t430 = (t429 - 0.5)
+        let !t431 = (recip (2.0 * t429))
+        let !t432 = (recip (2.0 * t427))
+        let !t433 = (t428 * (t432 * (t424 + t424)))
+        let !t434 = (t428 * (t432 * (t426 + t426)))
+        let !t435 = ((((t431 * (t433 + t433)) * t8) + ((t431 * (t425 + t425)) * t9)) + ((t431 * (t434 + t434)) * t10))
+        let !t436 = (if ((abs t430) - 1.0e-10) > 0 then (if (abs t435) > 0 then 1.0 else 0.0) else 0.0)
+        let !s437 = (if t436 > 0 then (t424 + (negate ((t430 / t435) * t8))) else t424)
+        let !s438 = (if t436 > 0 then (t425 + (negate ((t430 / t435) * t9))) else t425)
+        let !s439 = (if t436 > 0 then (t426 + (negate ((t430 / t435) * t10))) else t426)
+        wrU walk ((12 * i423) + 9) s437
+        wrU walk ((12 * i423) + 10) s438
+        wrU walk ((12 * i423) + 11) s439
         pure ()
-      loopI 0.0 24.0 $ \i442 -> do
-        let !d442 = fromIntegral i442 :: Double
-        chkI walk (12 * i442) 3 11
-        t443 <- rdU walk ((12 * i442) + 9)
-        t444 <- rdU walk ((12 * i442) + 10)
-        t445 <- rdU walk ((12 * i442) + 11)
-        chkI radii ((24 * i1) + i442) 0 0
-        t446 <- rdU radii ((24 * i1) + i442)
-        t447 <- rdU walk ((12 * i442) + 3)
-        t448 <- rdU walk ((12 * i442) + 4)
-        t449 <- rdU walk ((12 * i442) + 5)
-        let !t450 = (if (abs t446) > 0 then 1.0 else 0.0)
-        let !t451 = (sqrt ((t443 * t443) + (t445 * t445)))
-        let !t452 = (t451 - 0.8)
-        let !t453 = (sqrt ((t452 * t452) + (t444 * t444)))
-        let !t454 = (t453 - 0.5)
-        let !t455 = (recip (2.0 * t453))
-        let !t456 = (recip (2.0 * t451))
-        let !t457 = (t452 * (t456 * (t443 + t443)))
-        let !t458 = (t452 * (t456 * (t445 + t445)))
-        let !t459 = ((((t455 * (t457 + t457)) * t8) + ((t455 * (t444 + t444)) * t9)) + ((t455 * (t458 + t458)) * t10))
-        let !t460 = (if ((abs t454) - 1.0e-10) > 0 then (if (abs t459) > 0 then 1.0 else 0.0) else 0.0)
-        let !t461 = (1.0 - t450)
-        let !s462 = ((t450 * (if t460 > 0 then (t443 + (negate ((t454 / t459) * t8))) else t443)) + (t461 * t2))
-        let !s463 = ((t450 * (if t460 > 0 then (t444 + (negate ((t454 / t459) * t9))) else t444)) + (t461 * t3))
-        let !s464 = ((t450 * (if t460 > 0 then (t445 + (negate ((t454 / t459) * t10))) else t445)) + (t461 * t4))
-        let !t465 = (1.0 - (abs (((s462 - s462) + (s463 - s463)) + (s464 - s464))))
-        let !s466 = (if t465 > 0 then s462 else t2)
-        let !s467 = (if t465 > 0 then s463 else t3)
-        let !s468 = (if t465 > 0 then s464 else t4)
-        chkI verts ((291 * i1) + (12 * i442)) 3 14
-        wrU verts (((291 * i1) + (12 * i442)) + 12) s466
-        wrU verts (((291 * i1) + (12 * i442)) + 13) s467
-        wrU verts (((291 * i1) + (12 * i442)) + 14) s468
-        wrU verts (((291 * i1) + (12 * i442)) + 3) (t2 + (0.25 * (s466 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i442)) + 4) (t3 + (0.25 * (s467 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i442)) + 5) (t4 + (0.25 * (s468 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i442)) + 6) (t2 + (0.5 * (s466 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i442)) + 7) (t3 + (0.5 * (s467 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i442)) + 8) (t4 + (0.5 * (s468 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i442)) + 9) (t2 + (0.75 * (s466 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i442)) + 10) (t3 + (0.75 * (s467 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i442)) + 11) (t4 + (0.75 * (s468 + (negate t4))))
+      loopI 0.0 24.0 $ \i440 -> do
+        let !d440 = fromIntegral i440 :: Double
+        chkI walk (12 * i440) 3 11
+        t441 <- rdU walk ((12 * i440) + 9)
+        t442 <- rdU walk ((12 * i440) + 10)
+        t443 <- rdU walk ((12 * i440) + 11)
+        chkI radii ((24 * i1) + i440) 0 0
+        t444 <- rdU radii ((24 * i1) + i440)
+        t445 <- rdU walk ((12 * i440) + 3)
+        t446 <- rdU walk ((12 * i440) + 4)
+        t447 <- rdU walk ((12 * i440) + 5)
+        let !t448 = (if (abs t444) > 0 then 1.0 else 0.0)
+        let !t449 = (sqrt ((t441 * t441) + (t443 * t443)))
+        let !t450 = (t449 - 0.8)
+        let !t451 = (sqrt ((t450 * t450) + (t442 * t442)))
+        let !t452 = (t451 - 0.5)
+        let !t453 = (recip (2.0 * t451))
+        let !t454 = (recip (2.0 * t449))
+        let !t455 = (t450 * (t454 * (t441 + t441)))
+        let !t456 = (t450 * (t454 * (t443 + t443)))
+        let !t457 = ((((t453 * (t455 + t455)) * t8) + ((t453 * (t442 + t442)) * t9)) + ((t453 * (t456 + t456)) * t10))
+        let !t458 = (if ((abs t452) - 1.0e-10) > 0 then (if (abs t457) > 0 then 1.0 else 0.0) else 0.0)
+        let !t459 = (1.0 - t448)
+        let !s460 = ((t448 * (if t458 > 0 then (t441 + (negate ((t452 / t457) * t8))) else t441)) + (t459 * t2))
+        let !s461 = ((t448 * (if t458 > 0 then (t442 + (negate ((t452 / t457) * t9))) else t442)) + (t459 * t3))
+        let !s462 = ((t448 * (if t458 > 0 then (t443 + (negate ((t452 / t457) * t10))) else t443)) + (t459 * t4))
+        let !t463 = (1.0 - (abs (((s460 - s460) + (s461 - s461)) + (s462 - s462))))
+        let !s464 = (if t463 > 0 then s460 else t2)
+        let !s465 = (if t463 > 0 then s461 else t3)
+        let !s466 = (if t463 > 0 then s462 else t4)
+        chkI verts ((291 * i1) + (12 * i440)) 3 14
+        wrU verts (((291 * i1) + (12 * i440)) + 12) s464
+        wrU verts (((291 * i1) + (12 * i440)) + 13) s465
+        wrU verts (((291 * i1) + (12 * i440)) + 14) s466
+        wrU verts (((291 * i1) + (12 * i440)) + 3) (t2 + (0.25 * (s464 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i440)) + 4) (t3 + (0.25 * (s465 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i440)) + 5) (t4 + (0.25 * (s466 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i440)) + 6) (t2 + (0.5 * (s464 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i440)) + 7) (t3 + (0.5 * (s465 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i440)) + 8) (t4 + (0.5 * (s466 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i440)) + 9) (t2 + (0.75 * (s464 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i440)) + 10) (t3 + (0.75 * (s465 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i440)) + 11) (t4 + (0.75 * (s466 + (negate t4))))
         pure ()
       pure ()
     pure ()

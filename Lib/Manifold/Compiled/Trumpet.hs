@@ -22,13 +22,13 @@ compiled = CompiledStep "trumpet" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - Math.exp(y));\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, (-0.6), 0.0];\n}\n\nquotient NoQuotient\nbounds 4.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Trumpet: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,130 +71,131 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 10
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
-  v1 <- newR 0.0
-  loopI 0.0 t0 $ \i2 -> do
-    let !d2 = fromIntegral i2 :: Double
-    chkI scalars (6 * i2) 5 5
-    t3 <- rdU scalars ((6 * i2) + 5)
-    t4 <- getR v1
-    setR v1 (if (t3 - t4) > 0 then t3 else t4)
+  wrU locals 0 0.0
+  loopI 0.0 t0 $ \i1 -> do
+    let !d1 = fromIntegral i1 :: Double
+    chkI scalars (6 * i1) 5 5
+    t2 <- rdU scalars ((6 * i1) + 5)
+    t3 <- rdU locals 0
+    wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
-  t5 <- getR v1
-  let !t6 = (2.0 * t5)
-  let !s7 = (if (t6 - 1.220703125e-4) > 0 then t6 else 1.220703125e-4)
-  let !t8 = (8.0 * t0)
-  let !t9 = (if (t8 - 65536.0) > 0 then 65536.0 else t8)
-  let !s10 = (if (1.0 - t9) > 0 then 1.0 else t9)
-  wrU meta 4 s10
-  wrU meta 5 s7
-  loopI 0.0 s10 $ \i11 -> do
+  t4 <- rdU locals 0
+  let !t5 = (2.0 * t4)
+  let !s6 = (if (t5 - 1.220703125e-4) > 0 then t5 else 1.220703125e-4)
+  let !t7 = (8.0 * t0)
+  let !t8 = (if (t7 - 65536.0) > 0 then 65536.0 else t7)
+  let !s9 = (if (1.0 - t8) > 0 then 1.0 else t8)
+  wrU meta 4 s9
+  wrU meta 5 s6
+  loopI 0.0 s9 $ \i10 -> do
+    let !d10 = fromIntegral i10 :: Double
+    chkI grid i10 0 0
+    wrU grid i10 0.0
+    pure ()
+  loopI 0.0 t0 $ \i11 -> do
     let !d11 = fromIntegral i11 :: Double
-    chkI grid i11 0 0
-    wrU grid i11 0.0
+    chkI pos (3 * i11) 0 2
+    t12 <- rdU pos (3 * i11)
+    t13 <- rdU pos ((3 * i11) + 1)
+    t14 <- rdU pos ((3 * i11) + 2)
+    chkI cellOf i11 0 0
+    wrU cellOf i11 ((((((floorF (t12 / s6)) + 131072.0) * 262144.0) + ((floorF (t13 / s6)) + 131072.0)) * 262144.0) + ((floorF (t14 / s6)) + 131072.0))
+    let !t15 = ((((floorF (t12 / s6)) * 7.3856093e7) + ((floorF (t13 / s6)) * 1.9349663e7)) + ((floorF (t14 / s6)) * 8.3492791e7))
+    let !s16 = (t15 - (s9 * (floorF (t15 / s9))))
+    chkI grid (truncate s16) 0 0
+    t17 <- rdU grid (truncate s16)
+    wrU grid (truncate s16) (t17 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i12 -> do
-    let !d12 = fromIntegral i12 :: Double
-    chkI pos (3 * i12) 0 2
-    t13 <- rdU pos (3 * i12)
-    t14 <- rdU pos ((3 * i12) + 1)
-    t15 <- rdU pos ((3 * i12) + 2)
-    chkI cellOf i12 0 0
-    wrU cellOf i12 ((((((floorF (t13 / s7)) + 131072.0) * 262144.0) + ((floorF (t14 / s7)) + 131072.0)) * 262144.0) + ((floorF (t15 / s7)) + 131072.0))
-    let !t16 = ((((floorF (t13 / s7)) * 7.3856093e7) + ((floorF (t14 / s7)) * 1.9349663e7)) + ((floorF (t15 / s7)) * 8.3492791e7))
-    let !s17 = (t16 - (s10 * (floorF (t16 / s10))))
-    chkI grid (truncate s17) 0 0
-    t18 <- rdU grid (truncate s17)
-    wrU grid (truncate s17) (t18 + 1.0)
+  wrU locals 1 0.0
+  loopI 0.0 s9 $ \i18 -> do
+    let !d18 = fromIntegral i18 :: Double
+    chkI grid i18 0 0
+    t19 <- rdU grid i18
+    t20 <- rdU locals 1
+    chkI grid ((truncate s9) + i18) 0 0
+    wrU grid ((truncate s9) + i18) t20
+    wrU grid i18 t20
+    wrU locals 1 (t20 + t19)
     pure ()
-  v19 <- newR 0.0
-  loopI 0.0 s10 $ \i20 -> do
-    let !d20 = fromIntegral i20 :: Double
-    chkI grid i20 0 0
-    t21 <- rdU grid i20
-    t22 <- getR v19
-    chkI grid ((truncate s10) + i20) 0 0
-    wrU grid ((truncate s10) + i20) t22
-    wrU grid i20 t22
-    setR v19 (t22 + t21)
+  loopI 0.0 t0 $ \i21 -> do
+    let !d21 = fromIntegral i21 :: Double
+    chkI pos (3 * i21) 0 2
+    t22 <- rdU pos (3 * i21)
+    t23 <- rdU pos ((3 * i21) + 1)
+    t24 <- rdU pos ((3 * i21) + 2)
+    let !t25 = ((((floorF (t22 / s6)) * 7.3856093e7) + ((floorF (t23 / s6)) * 1.9349663e7)) + ((floorF (t24 / s6)) * 8.3492791e7))
+    let !s26 = (t25 - (s9 * (floorF (t25 / s9))))
+    chkI grid (truncate s26) 0 0
+    t27 <- rdU grid (truncate s26)
+    chkI items (truncate t27) 0 0
+    wrU items (truncate t27) d21
+    wrU grid (truncate s26) (t27 + 1.0)
     pure ()
-  loopI 0.0 t0 $ \i23 -> do
-    let !d23 = fromIntegral i23 :: Double
-    chkI pos (3 * i23) 0 2
-    t24 <- rdU pos (3 * i23)
-    t25 <- rdU pos ((3 * i23) + 1)
-    t26 <- rdU pos ((3 * i23) + 2)
-    let !t27 = ((((floorF (t24 / s7)) * 7.3856093e7) + ((floorF (t25 / s7)) * 1.9349663e7)) + ((floorF (t26 / s7)) * 8.3492791e7))
-    let !s28 = (t27 - (s10 * (floorF (t27 / s10))))
-    chkI grid (truncate s28) 0 0
-    t29 <- rdU grid (truncate s28)
-    chkI items (truncate t29) 0 0
-    wrU items (truncate t29) d23
-    wrU grid (truncate s28) (t29 + 1.0)
-    pure ()
-  t30 <- rdU meta 0
-  loopI 0.0 t30 $ \i31 -> do
-    let !d31 = fromIntegral i31 :: Double
-    chkI pos (3 * i31) 0 2
-    t32 <- rdU pos (3 * i31)
-    t33 <- rdU pos ((3 * i31) + 1)
-    t34 <- rdU pos ((3 * i31) + 2)
-    chkI scalars (6 * i31) 2 5
-    t35 <- rdU scalars ((6 * i31) + 5)
-    t36 <- rdU scalars ((6 * i31) + 2)
+  t28 <- rdU meta 0
+  loopI 0.0 t28 $ \i29 -> do
+    let !d29 = fromIntegral i29 :: Double
+    chkI pos (3 * i29) 0 2
+    t30 <- rdU pos (3 * i29)
+    t31 <- rdU pos ((3 * i29) + 1)
+    t32 <- rdU pos ((3 * i29) + 2)
+    chkI scalars (6 * i29) 2 5
+    t33 <- rdU scalars ((6 * i29) + 5)
+    t34 <- rdU scalars ((6 * i29) + 2)
+    t35 <- rdU meta 5
+    wrU locals 2 0.0
+    wrU locals 2 0.0
+    t36 <- rdU meta 4
     t37 <- rdU meta 5
-    v38 <- newR 0.0
-    setR v38 0.0
-    t39 <- rdU meta 4
-    t40 <- rdU meta 5
-    let !s41 = (floorF (t32 / t40))
-    let !s42 = (floorF (t33 / t40))
-    let !s43 = (floorF (t34 / t40))
-    loopI 0.0 3.0 $ \i44 -> do
-      let !d44 = fromIntegral i44 :: Double
-      loopI 0.0 3.0 $ \i45 -> do
-        let !d45 = fromIntegral i45 :: Double
-        loopI 0.0 3.0 $ \i46 -> do
-          let !d46 = fromIntegral i46 :: Double
-          let !s47 = ((s41 + d44) - 1.0)
-          let !s48 = ((s42 + d45) - 1.0)
-          let !s49 = ((s43 + d46) - 1.0)
-          let !s50 = (((((s47 + 131072.0) * 262144.0) + (s48 + 131072.0)) * 262144.0) + (s49 + 131072.0))
-          let !t51 = (((s47 * 7.3856093e7) + (s48 * 1.9349663e7)) + (s49 * 8.3492791e7))
-          let !s52 = (t51 - (t39 * (floorF (t51 / t39))))
-          chkI grid (truncate s52) 0 0
-          t53 <- rdU grid (truncate s52)
-          chkI grid ((truncate s52) + (truncate t39)) 0 0
-          t54 <- rdU grid ((truncate s52) + (truncate t39))
-          loopI t54 t53 $ \i55 -> do
-            let !d55 = fromIntegral i55 :: Double
-            chkI items i55 0 0
-            t56 <- rdU items i55
-            chkI cellOf (truncate t56) 0 0
-            t57 <- rdU cellOf (truncate t56)
-            if (0.5 - (abs (t57 - s50))) > 0 then do
-              if (t56 - d31) > 0 then do
-                chkI pos (3 * (truncate t56)) 0 2
-                t58 <- rdU pos (3 * (truncate t56))
-                t59 <- rdU pos ((3 * (truncate t56)) + 1)
-                t60 <- rdU pos ((3 * (truncate t56)) + 2)
-                chkI scalars (6 * (truncate t56)) 2 5
-                t61 <- rdU scalars ((6 * (truncate t56)) + 5)
-                t62 <- rdU scalars ((6 * (truncate t56)) + 2)
-                let !t63 = (t36 + t62)
-                let !t64 = (t32 + (negate t58))
-                let !t65 = (t33 + (negate t59))
-                let !t66 = (t34 + (negate t60))
-                let !t67 = ((t35 + t61) - (sqrt (((t64 * t64) + (t65 * t65)) + (t66 * t66))))
-                if (if (t63 - t67) > 0 then t67 else t63) > 0 then do
-                  t68 <- getR v38
-                  chkI near (truncate t68) 0 0
-                  wrU near (truncate t68) t56
-                  setR v38 (t68 + 1.0)
+    let !s38 = (floorF (t30 / t37))
+    let !s39 = (floorF (t31 / t37))
+    let !s40 = (floorF (t32 / t37))
+    loopI 0.0 3.0 $ \i41 -> do
+      let !d41 = fromIntegral i41 :: Double
+      loopI 0.0 3.0 $ \i42 -> do
+        let !d42 = fromIntegral i42 :: Double
+        loopI 0.0 3.0 $ \i43 -> do
+          let !d43 = fromIntegral i43 :: Double
+          let !s44 = ((s38 + d41) - 1.0)
+          let !s45 = ((s39 + d42) - 1.0)
+          let !s46 = ((s40 + d43) - 1.0)
+          let !s47 = (((((s44 + 131072.0) * 262144.0) + (s45 + 131072.0)) * 262144.0) + (s46 + 131072.0))
+          let !t48 = (((s44 * 7.3856093e7) + (s45 * 1.9349663e7)) + (s46 * 8.3492791e7))
+          let !s49 = (t48 - (t36 * (floorF (t48 / t36))))
+          chkI grid (truncate s49) 0 0
+          t50 <- rdU grid (truncate s49)
+          chkI grid ((truncate s49) + (truncate t36)) 0 0
+          t51 <- rdU grid ((truncate s49) + (truncate t36))
+          loopI t51 t50 $ \i52 -> do
+            let !d52 = fromIntegral i52 :: Double
+            chkI items i52 0 0
+            t53 <- rdU items i52
+            chkI cellOf (truncate t53) 0 0
+            t54 <- rdU cellOf (truncate t53)
+            if (0.5 - (abs (t54 - s47))) > 0 then do
+              if (t53 - d29) > 0 then do
+                chkI pos (3 * (truncate t53)) 0 2
+                t55 <- rdU pos (3 * (truncate t53))
+                t56 <- rdU pos ((3 * (truncate t53)) + 1)
+                t57 <- rdU pos ((3 * (truncate t53)) + 2)
+                chkI scalars (6 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                let !t60 = (t34 + t59)
+                let !t61 = (t30 + (negate t55))
+                let !t62 = (t31 + (negate t56))
+                let !t63 = (t32 + (negate t57))
+                let !t64 = ((t33 + t58) - (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63))))
+                if (if (t60 - t64) > 0 then t64 else t60) > 0 then do
+                  t65 <- rdU locals 2
+                  chkI near (truncate t65) 0 0
+                  wrU near (truncate t65) t53
+                  wrU locals 2 (t65 + 1.0)
                   pure ()
                 else do
                   pure ()
@@ -208,140 +209,140 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           pure ()
         pure ()
       pure ()
-    t69 <- getR v38
-    loopI 0.0 t69 $ \i70 -> do
-      let !d70 = fromIntegral i70 :: Double
-      chkI near i70 0 0
-      t71 <- rdU near i70
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk ((t71 + 1.0) * 64.0) d31 t71 1.0 1.0 1.0 0.0 0.0 0.0
+    t66 <- rdU locals 2
+    loopI 0.0 t66 $ \i67 -> do
+      let !d67 = fromIntegral i67 :: Double
+      chkI near i67 0 0
+      t68 <- rdU near i67
+      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
-    chkI verts (291 * i31) 0 2
-    t72 <- rdU verts (291 * i31)
-    t73 <- rdU verts ((291 * i31) + 1)
-    t74 <- rdU verts ((291 * i31) + 2)
-    v75 <- newR 1.0
-    loopI 0.0 24.0 $ \i76 -> do
-      let !d76 = fromIntegral i76 :: Double
-      chkI verts ((291 * i31) + (12 * i76)) 12 14
-      t77 <- rdU verts (((291 * i31) + (12 * i76)) + 12)
-      t78 <- rdU verts (((291 * i31) + (12 * i76)) + 13)
-      t79 <- rdU verts (((291 * i31) + (12 * i76)) + 14)
-      chkI radii ((24 * i31) + i76) 0 0
-      t80 <- rdU radii ((24 * i31) + i76)
-      t81 <- getR v75
-      let !t82 = (t77 + (negate t72))
-      let !t83 = (t78 + (negate t73))
-      let !t84 = (t79 + (negate t74))
-      let !t85 = (if t80 > 0 then ((sqrt (((t82 * t82) + (t83 * t83)) + (t84 * t84))) / t80) else 1.0)
-      setR v75 (if (t81 - t85) > 0 then t85 else t81)
+    chkI verts (291 * i29) 0 2
+    t69 <- rdU verts (291 * i29)
+    t70 <- rdU verts ((291 * i29) + 1)
+    t71 <- rdU verts ((291 * i29) + 2)
+    wrU locals 3 1.0
+    loopI 0.0 24.0 $ \i72 -> do
+      let !d72 = fromIntegral i72 :: Double
+      chkI verts ((291 * i29) + (12 * i72)) 12 14
+      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
+      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
+      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      chkI radii ((24 * i29) + i72) 0 0
+      t76 <- rdU radii ((24 * i29) + i72)
+      t77 <- rdU locals 3
+      let !t78 = (t73 + (negate t69))
+      let !t79 = (t74 + (negate t70))
+      let !t80 = (t75 + (negate t71))
+      let !t81 = (if t76 > 0 then ((sqrt (((t78 * t78) + (t79 * t79)) + (t80 * t80))) / t76) else 1.0)
+      wrU locals 3 (if (t77 - t81) > 0 then t81 else t77)
       pure ()
-    t86 <- getR v75
-    if (0.8 - t86) > 0 then do
-      v87 <- newR 0.0
-      v88 <- newR 0.0
-      v89 <- newR 0.0
-      v90 <- newR 0.0
-      v91 <- newR 0.0
-      v92 <- newR 0.0
-      v93 <- newR 0.0
-      loopI 0.0 24.0 $ \i94 -> do
-        let !d94 = fromIntegral i94 :: Double
-        chkI radii ((24 * i31) + i94) 0 0
-        t95 <- rdU radii ((24 * i31) + i94)
-        loopI 6.0 12.0 $ \i96 -> do
-          let !d96 = fromIntegral i96 :: Double
-          let !t97 = (d94 + d96)
-          chkI radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0)))))) 0 0
-          t98 <- rdU radii (truncate ((24.0 * d31) + (t97 - (24.0 * (floorF (t97 / 24.0))))))
-          loopI 1.0 4.0 $ \i99 -> do
-            let !d99 = fromIntegral i99 :: Double
-            chkI verts ((291 * i31) + (12 * i94) + (3 * i99)) 0 5
-            t100 <- rdU verts ((291 * i31) + (12 * i94) + (3 * i99))
-            t101 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 1)
-            t102 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 2)
-            t103 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 3)
-            t104 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 4)
-            t105 <- rdU verts (((291 * i31) + (12 * i94) + (3 * i99)) + 5)
-            loopI 1.0 4.0 $ \i106 -> do
-              let !d106 = fromIntegral i106 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0)))) 0 0
-              t107 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0)) 0 0
-              t108 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0)) 0 0
-              t109 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + (d106 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106))) 0 0
-              t110 <- rdU verts (truncate (3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0)) 0 0
-              t111 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0)) 0 0
-              t112 <- rdU verts (truncate ((3.0 * ((((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)) + d106)) + 2.0))
-              t113 <- getR v87
-              let !t114 = (negate t107)
-              let !t115 = (t110 + t114)
-              let !t116 = (negate t108)
-              let !t117 = (t111 + t116)
-              let !t118 = (negate t109)
-              let !t119 = (t112 + t118)
-              let !t120 = (((t115 * t115) + (t117 * t117)) + (t119 * t119))
-              let !t121 = (t103 + (negate t100))
-              let !t122 = (t104 + (negate t101))
-              let !t123 = (t105 + (negate t102))
-              let !t124 = (((t121 * t115) + (t122 * t117)) + (t123 * t119))
-              let !t125 = (((t121 * t121) + (t122 * t122)) + (t123 * t123))
-              let !t126 = ((t125 * t120) - (t124 * t124))
-              let !t127 = (t100 + t114)
-              let !t128 = (t101 + t116)
-              let !t129 = (t102 + t118)
-              let !t130 = (((t115 * t127) + (t117 * t128)) + (t119 * t129))
-              let !t131 = (((t121 * t127) + (t122 * t128)) + (t123 * t129))
-              let !t132 = (if ((abs t126) - 1.0e-300) > 0 then (((t124 * t130) - (t131 * t120)) / t126) else 0.0)
-              let !t133 = (if (t132 - 1.0) > 0 then 1.0 else t132)
-              let !t134 = (if (t126 - ((1.0e-12 * t125) * t120)) > 0 then (if (negate t133) > 0 then 0.0 else t133) else 0.0)
-              let !t135 = (if ((abs t120) - 1.0e-300) > 0 then (((t124 * t134) + t130) / t120) else 0.0)
-              let !t136 = ((abs t125) - 1.0e-300)
-              let !t137 = (if t136 > 0 then ((negate t131) / t125) else 0.0)
-              let !t138 = (if (t137 - 1.0) > 0 then 1.0 else t137)
-              let !t139 = (t135 - 1.0)
-              let !t140 = (if t136 > 0 then ((t124 - t131) / t125) else 0.0)
-              let !t141 = (if (t140 - 1.0) > 0 then 1.0 else t140)
-              let !t142 = (if (negate t135) > 0 then (if (negate t138) > 0 then 0.0 else t138) else (if t139 > 0 then (if (negate t141) > 0 then 0.0 else t141) else t134))
-              let !t143 = (if t139 > 0 then 1.0 else t135)
-              let !t144 = (if (negate t143) > 0 then 0.0 else t143)
-              let !t145 = ((0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0)))) - t113)
-              let !t146 = ((t100 + (t142 * t121)) + (negate (t107 + (t144 * t115))))
-              let !t147 = ((t101 + (t142 * t122)) + (negate (t108 + (t144 * t117))))
-              let !t148 = ((t102 + (t142 * t123)) + (negate (t109 + (t144 * t119))))
-              let !t149 = ((0.3 * ((if (t98 - t95) > 0 then t95 else t98) / 4.0)) - (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148))))
-              if (if (t145 - t149) > 0 then t149 else t145) > 0 then do
-                setR v87 (0.5 * ((t95 - ((t95 * (d99 + t142)) / 4.0)) + (t98 - ((t98 * (d106 + t144)) / 4.0))))
-                chkI verts ((291 * i31) + (12 * i94)) 3 5
-                t150 <- rdU verts (((291 * i31) + (12 * i94)) + 3)
-                t151 <- rdU verts (((291 * i31) + (12 * i94)) + 4)
-                t152 <- rdU verts (((291 * i31) + (12 * i94)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0)))) 0 0
-                t153 <- rdU verts (truncate (3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t154 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t155 <- rdU verts (truncate ((3.0 * (((97.0 * d31) + 1.0) + ((t97 - (24.0 * (floorF (t97 / 24.0)))) * 4.0))) + 2.0))
-                setR v88 (t100 + (t142 * t121))
-                setR v89 (t101 + (t142 * t122))
-                setR v90 (t102 + (t142 * t123))
-                let !t156 = (negate t72)
-                let !t157 = (t150 + t156)
-                let !t158 = (negate t73)
-                let !t159 = (t151 + t158)
-                let !t160 = (negate t74)
-                let !t161 = (t152 + t160)
-                let !t162 = (sqrt (((t157 * t157) + (t159 * t159)) + (t161 * t161)))
-                let !t163 = (t153 + t156)
-                let !t164 = (t154 + t158)
-                let !t165 = (t155 + t160)
-                let !t166 = (sqrt (((t163 * t163) + (t164 * t164)) + (t165 * t165)))
-                setR v91 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t157) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t163)))
-                setR v92 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t159) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t164)))
-                setR v93 (negate (((if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0) * t161) + ((if t166 > 0 then (recip (if (t166 - 1.0e-300) > 0 then t166 else 1.0e-300)) else 0.0) * t165)))
+    t82 <- rdU locals 3
+    if (0.8 - t82) > 0 then do
+      wrU locals 4 0.0
+      wrU locals 5 0.0
+      wrU locals 6 0.0
+      wrU locals 7 0.0
+      wrU locals 8 0.0
+      wrU locals 9 0.0
+      wrU locals 10 0.0
+      loopI 0.0 24.0 $ \i83 -> do
+        let !d83 = fromIntegral i83 :: Double
+        chkI radii ((24 * i29) + i83) 0 0
+        t84 <- rdU radii ((24 * i29) + i83)
+        loopI 6.0 12.0 $ \i85 -> do
+          let !d85 = fromIntegral i85 :: Double
+          let !t86 = (d83 + d85)
+          chkI radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0)))))) 0 0
+          t87 <- rdU radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0))))))
+          loopI 1.0 4.0 $ \i88 -> do
+            let !d88 = fromIntegral i88 :: Double
+            chkI verts ((291 * i29) + (12 * i83) + (3 * i88)) 0 5
+            t89 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i88))
+            t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 1)
+            t91 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 2)
+            t92 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 3)
+            t93 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 4)
+            t94 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 5)
+            loopI 1.0 4.0 $ \i95 -> do
+              let !d95 = fromIntegral i95 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0)))) 0 0
+              t96 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0)) 0 0
+              t97 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0)) 0 0
+              t98 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95))) 0 0
+              t99 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0)) 0 0
+              t100 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0)) 0 0
+              t101 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0))
+              t102 <- rdU locals 4
+              let !t103 = (negate t96)
+              let !t104 = (t99 + t103)
+              let !t105 = (negate t97)
+              let !t106 = (t100 + t105)
+              let !t107 = (negate t98)
+              let !t108 = (t101 + t107)
+              let !t109 = (((t104 * t104) + (t106 * t106)) + (t108 * t108))
+              let !t110 = (t92 + (negate t89))
+              let !t111 = (t93 + (negate t90))
+              let !t112 = (t94 + (negate t91))
+              let !t113 = (((t110 * t104) + (t111 * t106)) + (t112 * t108))
+              let !t114 = (((t110 * t110) + (t111 * t111)) + (t112 * t112))
+              let !t115 = ((t114 * t109) - (t113 * t113))
+              let !t116 = (t89 + t103)
+              let !t117 = (t90 + t105)
+              let !t118 = (t91 + t107)
+              let !t119 = (((t104 * t116) + (t106 * t117)) + (t108 * t118))
+              let !t120 = (((t110 * t116) + (t111 * t117)) + (t112 * t118))
+              let !t121 = (if ((abs t115) - 1.0e-300) > 0 then (((t113 * t119) - (t120 * t109)) / t115) else 0.0)
+              let !t122 = (if (t121 - 1.0) > 0 then 1.0 else t121)
+              let !t123 = (if (t115 - ((1.0e-12 * t114) * t109)) > 0 then (if (negate t122) > 0 then 0.0 else t122) else 0.0)
+              let !t124 = (if ((abs t109) - 1.0e-300) > 0 then (((t113 * t123) + t119) / t109) else 0.0)
+              let !t125 = ((abs t114) - 1.0e-300)
+              let !t126 = (if t125 > 0 then ((negate t120) / t114) else 0.0)
+              let !t127 = (if (t126 - 1.0) > 0 then 1.0 else t126)
+              let !t128 = (t124 - 1.0)
+              let !t129 = (if t125 > 0 then ((t113 - t120) / t114) else 0.0)
+              let !t130 = (if (t129 - 1.0) > 0 then 1.0 else t129)
+              let !t131 = (if (negate t124) > 0 then (if (negate t127) > 0 then 0.0 else t127) else (if t128 > 0 then (if (negate t130) > 0 then 0.0 else t130) else t123))
+              let !t132 = (if t128 > 0 then 1.0 else t124)
+              let !t133 = (if (negate t132) > 0 then 0.0 else t132)
+              let !t134 = ((0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0)))) - t102)
+              let !t135 = ((t89 + (t131 * t110)) + (negate (t96 + (t133 * t104))))
+              let !t136 = ((t90 + (t131 * t111)) + (negate (t97 + (t133 * t106))))
+              let !t137 = ((t91 + (t131 * t112)) + (negate (t98 + (t133 * t108))))
+              let !t138 = ((0.3 * ((if (t87 - t84) > 0 then t84 else t87) / 4.0)) - (sqrt (((t135 * t135) + (t136 * t136)) + (t137 * t137))))
+              if (if (t134 - t138) > 0 then t138 else t134) > 0 then do
+                wrU locals 4 (0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0))))
+                chkI verts ((291 * i29) + (12 * i83)) 3 5
+                t139 <- rdU verts (((291 * i29) + (12 * i83)) + 3)
+                t140 <- rdU verts (((291 * i29) + (12 * i83)) + 4)
+                t141 <- rdU verts (((291 * i29) + (12 * i83)) + 5)
+                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)))) 0 0
+                t142 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                t143 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0))
+                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                t144 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0))
+                wrU locals 5 (t89 + (t131 * t110))
+                wrU locals 6 (t90 + (t131 * t111))
+                wrU locals 7 (t91 + (t131 * t112))
+                let !t145 = (negate t69)
+                let !t146 = (t139 + t145)
+                let !t147 = (negate t70)
+                let !t148 = (t140 + t147)
+                let !t149 = (negate t71)
+                let !t150 = (t141 + t149)
+                let !t151 = (sqrt (((t146 * t146) + (t148 * t148)) + (t150 * t150)))
+                let !t152 = (t142 + t145)
+                let !t153 = (t143 + t147)
+                let !t154 = (t144 + t149)
+                let !t155 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
+                wrU locals 8 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t146) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t152)))
+                wrU locals 9 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t148) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t153)))
+                wrU locals 10 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t150) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t154)))
                 pure ()
               else do
                 pure ()
@@ -349,124 +350,124 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t167 <- getR v87
-      if t167 > 0 then do
-        t168 <- getR v88
-        t169 <- getR v89
-        t170 <- getR v90
-        t171 <- getR v91
-        t172 <- getR v92
-        t173 <- getR v93
-        let !t174 = (recip (2.0 * (sqrt ((t168 * t168) + (t170 * t170)))))
-        let !t175 = (t174 * (t168 + t168))
-        let !t176 = (negate (exp t169))
-        let !t177 = (t174 * (t170 + t170))
-        let !t178 = (sqrt (((t175 * t175) + (t176 * t176)) + (t177 * t177)))
-        let !t179 = (if t178 > 0 then (recip (if (t178 - 1.0e-300) > 0 then t178 else 1.0e-300)) else 0.0)
-        let !s180 = (t179 * t175)
-        let !s181 = (t179 * t176)
-        let !s182 = (t179 * t177)
-        let !t183 = (((s180 * t171) + (s181 * t172)) + (s182 * t173))
-        let !t184 = (t171 + (negate (t183 * s180)))
-        let !t185 = (t172 + (negate (t183 * s181)))
-        let !t186 = (t173 + (negate (t183 * s182)))
-        let !t187 = (sqrt (((t184 * t184) + (t185 * t185)) + (t186 * t186)))
-        let !t188 = (if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0)
-        let !s189 = (t188 * t184)
-        let !s190 = (t188 * t185)
-        let !s191 = (t188 * t186)
-        t192 <- rdU meta 2
-        t193 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t193) > 0 then 1.0 else t193)) - t192) - 0.5) > 0 then do
-          wrU meta 2 (t192 + 1.0)
-          t194 <- rdU pos (3 * i31)
-          t195 <- rdU pos ((3 * i31) + 1)
-          t196 <- rdU pos ((3 * i31) + 2)
-          chkI normal (3 * i31) 0 2
-          t197 <- rdU normal (3 * i31)
-          t198 <- rdU normal ((3 * i31) + 1)
-          t199 <- rdU normal ((3 * i31) + 2)
-          chkI axis (3 * i31) 0 2
-          t200 <- rdU axis (3 * i31)
-          t201 <- rdU axis ((3 * i31) + 1)
-          t202 <- rdU axis ((3 * i31) + 2)
-          let !s203 = ((t198 * t202) - (t199 * t201))
-          let !s204 = ((t199 * t200) - (t197 * t202))
-          let !s205 = ((t197 * t201) - (t198 * t200))
-          chkI scalars (6 * i31) 0 0
-          t206 <- rdU scalars (6 * i31)
-          t207 <- rdU scalars ((6 * i31) + 5)
-          t208 <- rdU scalars ((6 * i31) + 2)
-          t209 <- rdU scalars ((6 * i31) + 3)
-          chkI contacts (30 * (truncate t192)) 0 29
-          wrU contacts (30 * (truncate t192)) d31
-          wrU contacts ((30 * (truncate t192)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t192)) + 2) d31
-          wrU contacts ((30 * (truncate t192)) + 3) 12.0
-          wrU contacts ((30 * (truncate t192)) + 4) (s189 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t197)))
-          wrU contacts ((30 * (truncate t192)) + 5) (s190 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t198)))
-          wrU contacts ((30 * (truncate t192)) + 6) (s191 + (negate ((((t197 * s189) + (t198 * s190)) + (t199 * s191)) * t199)))
-          wrU contacts ((30 * (truncate t192)) + 7) 0.0
-          wrU contacts ((30 * (truncate t192)) + 12) 0.0
-          wrU contacts ((30 * (truncate t192)) + 13) 0.0
-          wrU contacts ((30 * (truncate t192)) + 14) 0.0
-          wrU contacts ((30 * (truncate t192)) + 15) 0.0
-          wrU contacts ((30 * (truncate t192)) + 20) t167
-          wrU contacts ((30 * (truncate t192)) + 26) 0.6
-          wrU contacts ((30 * (truncate t192)) + 27) t168
-          wrU contacts ((30 * (truncate t192)) + 28) t169
-          wrU contacts ((30 * (truncate t192)) + 29) t170
+      t156 <- rdU locals 4
+      if t156 > 0 then do
+        t157 <- rdU locals 5
+        t158 <- rdU locals 6
+        t159 <- rdU locals 7
+        t160 <- rdU locals 8
+        t161 <- rdU locals 9
+        t162 <- rdU locals 10
+        let !t163 = (recip (2.0 * (sqrt ((t157 * t157) + (t159 * t159)))))
+        let !t164 = (t163 * (t157 + t157))
+        let !t165 = (negate (exp t158))
+        let !t166 = (t163 * (t159 + t159))
+        let !t167 = (sqrt (((t164 * t164) + (t165 * t165)) + (t166 * t166)))
+        let !t168 = (if t167 > 0 then (recip (if (t167 - 1.0e-300) > 0 then t167 else 1.0e-300)) else 0.0)
+        let !s169 = (t168 * t164)
+        let !s170 = (t168 * t165)
+        let !s171 = (t168 * t166)
+        let !t172 = (((s169 * t160) + (s170 * t161)) + (s171 * t162))
+        let !t173 = (t160 + (negate (t172 * s169)))
+        let !t174 = (t161 + (negate (t172 * s170)))
+        let !t175 = (t162 + (negate (t172 * s171)))
+        let !t176 = (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175)))
+        let !t177 = (if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0)
+        let !s178 = (t177 * t173)
+        let !s179 = (t177 * t174)
+        let !s180 = (t177 * t175)
+        t181 <- rdU meta 2
+        t182 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t182) > 0 then 1.0 else t182)) - t181) - 0.5) > 0 then do
+          wrU meta 2 (t181 + 1.0)
+          t183 <- rdU pos (3 * i29)
+          t184 <- rdU pos ((3 * i29) + 1)
+          t185 <- rdU pos ((3 * i29) + 2)
+          chkI normal (3 * i29) 0 2
+          t186 <- rdU normal (3 * i29)
+          t187 <- rdU normal ((3 * i29) + 1)
+          t188 <- rdU normal ((3 * i29) + 2)
+          chkI axis (3 * i29) 0 2
+          t189 <- rdU axis (3 * i29)
+          t190 <- rdU axis ((3 * i29) + 1)
+          t191 <- rdU axis ((3 * i29) + 2)
+          let !s192 = ((t187 * t191) - (t188 * t190))
+          let !s193 = ((t188 * t189) - (t186 * t191))
+          let !s194 = ((t186 * t190) - (t187 * t189))
+          chkI scalars (6 * i29) 0 0
+          t195 <- rdU scalars (6 * i29)
+          t196 <- rdU scalars ((6 * i29) + 5)
+          t197 <- rdU scalars ((6 * i29) + 2)
+          t198 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t181)) 0 29
+          wrU contacts (30 * (truncate t181)) d29
+          wrU contacts ((30 * (truncate t181)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t181)) + 2) d29
+          wrU contacts ((30 * (truncate t181)) + 3) 12.0
+          wrU contacts ((30 * (truncate t181)) + 4) (s178 + (negate ((((t186 * s178) + (t187 * s179)) + (t188 * s180)) * t186)))
+          wrU contacts ((30 * (truncate t181)) + 5) (s179 + (negate ((((t186 * s178) + (t187 * s179)) + (t188 * s180)) * t187)))
+          wrU contacts ((30 * (truncate t181)) + 6) (s180 + (negate ((((t186 * s178) + (t187 * s179)) + (t188 * s180)) * t188)))
+          wrU contacts ((30 * (truncate t181)) + 7) 0.0
+          wrU contacts ((30 * (truncate t181)) + 12) 0.0
+          wrU contacts ((30 * (truncate t181)) + 13) 0.0
+          wrU contacts ((30 * (truncate t181)) + 14) 0.0
+          wrU contacts ((30 * (truncate t181)) + 15) 0.0
+          wrU contacts ((30 * (truncate t181)) + 20) t156
+          wrU contacts ((30 * (truncate t181)) + 26) 0.6
+          wrU contacts ((30 * (truncate t181)) + 27) t157
+          wrU contacts ((30 * (truncate t181)) + 28) t158
+          wrU contacts ((30 * (truncate t181)) + 29) t159
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t210 <- rdU pos (-3)
-            t211 <- rdU pos (-2)
-            t212 <- rdU pos (-1)
+            t199 <- rdU pos (-3)
+            t200 <- rdU pos (-2)
+            t201 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t213 <- rdU normal (-3)
-            t214 <- rdU normal (-2)
-            t215 <- rdU normal (-1)
+            t202 <- rdU normal (-3)
+            t203 <- rdU normal (-2)
+            t204 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t216 <- rdU axis (-3)
-            t217 <- rdU axis (-2)
-            t218 <- rdU axis (-1)
-            let !s219 = ((t214 * t218) - (t215 * t217))
-            let !s220 = ((t215 * t216) - (t213 * t218))
-            let !s221 = ((t213 * t217) - (t214 * t216))
+            t205 <- rdU axis (-3)
+            t206 <- rdU axis (-2)
+            t207 <- rdU axis (-1)
+            let !s208 = ((t203 * t207) - (t204 * t206))
+            let !s209 = ((t204 * t205) - (t202 * t207))
+            let !s210 = ((t202 * t206) - (t203 * t205))
             chkI scalars 0 (-6) (-1)
-            t222 <- rdU scalars (-6)
-            t223 <- rdU scalars (-1)
-            t224 <- rdU scalars (-4)
-            t225 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t192)) + 8) (s189 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t213)))
-            wrU contacts ((30 * (truncate t192)) + 9) (s190 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t214)))
-            wrU contacts ((30 * (truncate t192)) + 10) (s191 + (negate ((((t213 * s189) + (t214 * s190)) + (t215 * s191)) * t215)))
-            let !t226 = (t169 + (negate t211))
-            let !t227 = (t170 + (negate t212))
-            let !t228 = (t168 + (negate t210))
-            wrU contacts ((30 * (truncate t192)) + 11) (((((t226 * s191) - (t227 * s190)) * t213) + (((t227 * s189) - (t228 * s191)) * t214)) + (((t228 * s190) - (t226 * s189)) * t215))
-            let !t229 = ((t198 * s191) - (t199 * s190))
-            wrU contacts ((30 * (truncate t192)) + 16) (t229 + (negate ((((t213 * t229) + (t214 * ((t199 * s189) - (t197 * s191)))) + (t215 * ((t197 * s190) - (t198 * s189)))) * t213)))
-            let !t230 = ((t199 * s189) - (t197 * s191))
-            wrU contacts ((30 * (truncate t192)) + 17) (t230 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * ((t197 * s190) - (t198 * s189)))) * t214)))
-            let !t231 = ((t197 * s190) - (t198 * s189))
-            wrU contacts ((30 * (truncate t192)) + 18) (t231 + (negate ((((t213 * t229) + (t214 * t230)) + (t215 * t231)) * t215)))
-            wrU contacts ((30 * (truncate t192)) + 19) (((((t226 * t231) - (t227 * t230)) * t213) + (((t227 * t229) - (t228 * t231)) * t214)) + (((t228 * t230) - (t226 * t229)) * t215))
+            t211 <- rdU scalars (-6)
+            t212 <- rdU scalars (-1)
+            t213 <- rdU scalars (-4)
+            t214 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t181)) + 8) (s178 + (negate ((((t202 * s178) + (t203 * s179)) + (t204 * s180)) * t202)))
+            wrU contacts ((30 * (truncate t181)) + 9) (s179 + (negate ((((t202 * s178) + (t203 * s179)) + (t204 * s180)) * t203)))
+            wrU contacts ((30 * (truncate t181)) + 10) (s180 + (negate ((((t202 * s178) + (t203 * s179)) + (t204 * s180)) * t204)))
+            let !t215 = (t158 + (negate t200))
+            let !t216 = (t159 + (negate t201))
+            let !t217 = (t157 + (negate t199))
+            wrU contacts ((30 * (truncate t181)) + 11) (((((t215 * s180) - (t216 * s179)) * t202) + (((t216 * s178) - (t217 * s180)) * t203)) + (((t217 * s179) - (t215 * s178)) * t204))
+            let !t218 = ((t187 * s180) - (t188 * s179))
+            wrU contacts ((30 * (truncate t181)) + 16) (t218 + (negate ((((t202 * t218) + (t203 * ((t188 * s178) - (t186 * s180)))) + (t204 * ((t186 * s179) - (t187 * s178)))) * t202)))
+            let !t219 = ((t188 * s178) - (t186 * s180))
+            wrU contacts ((30 * (truncate t181)) + 17) (t219 + (negate ((((t202 * t218) + (t203 * t219)) + (t204 * ((t186 * s179) - (t187 * s178)))) * t203)))
+            let !t220 = ((t186 * s179) - (t187 * s178))
+            wrU contacts ((30 * (truncate t181)) + 18) (t220 + (negate ((((t202 * t218) + (t203 * t219)) + (t204 * t220)) * t204)))
+            wrU contacts ((30 * (truncate t181)) + 19) (((((t215 * t220) - (t216 * t219)) * t202) + (((t216 * t218) - (t217 * t220)) * t203)) + (((t217 * t219) - (t215 * t218)) * t204))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t192)) + 8) 0.0
-            wrU contacts ((30 * (truncate t192)) + 9) 0.0
-            wrU contacts ((30 * (truncate t192)) + 10) 0.0
-            wrU contacts ((30 * (truncate t192)) + 11) 0.0
-            wrU contacts ((30 * (truncate t192)) + 16) 0.0
-            wrU contacts ((30 * (truncate t192)) + 17) 0.0
-            wrU contacts ((30 * (truncate t192)) + 18) 0.0
-            wrU contacts ((30 * (truncate t192)) + 19) 0.0
+            wrU contacts ((30 * (truncate t181)) + 8) 0.0
+            wrU contacts ((30 * (truncate t181)) + 9) 0.0
+            wrU contacts ((30 * (truncate t181)) + 10) 0.0
+            wrU contacts ((30 * (truncate t181)) + 11) 0.0
+            wrU contacts ((30 * (truncate t181)) + 16) 0.0
+            wrU contacts ((30 * (truncate t181)) + 17) 0.0
+            wrU contacts ((30 * (truncate t181)) + 18) 0.0
+            wrU contacts ((30 * (truncate t181)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t232 <- rdU meta 6
-          wrU meta 6 (t232 + 1.0)
+          t221 <- rdU meta 6
+          wrU meta 6 (t221 + 1.0)
           pure ()
         pure ()
       else do
@@ -477,8 +478,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 4
   chkI params 0 0 9
   t0 <- rdU params 0
   t1 <- rdU params 2
@@ -517,950 +519,950 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     chkI scalars (6 * (truncate t11)) 1 3
     t31 <- rdU scalars ((6 * (truncate t11)) + 2)
     t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v33 <- newR 0.0
+    wrU locals 0 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t34 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t35 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v33 ((t34 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t35 * t22) * t22))
+      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
       pure ()
     else do
       pure ()
-    t36 <- getR v33
-    let !s37 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t36)
-    let !s38 = (if s37 > 0 then (recip s37) else 0.0)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t40 <- rdU scalars ((6 * (truncate t11)) + 3)
-    v41 <- newR 0.0
+    t35 <- rdU locals 0
+    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
+    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
+    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
+    wrU locals 1 0.0
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 2 3
-      t42 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t43 <- rdU scalars ((6 * (truncate t12)) + 3)
-      setR v41 ((t42 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t43 * t30) * t30))
+      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
+      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
       pure ()
     else do
       pure ()
-    t44 <- getR v41
-    let !s45 = (((t39 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t40 * t26) * t26)) + t44)
-    let !s46 = (if s45 > 0 then (recip s45) else 0.0)
-    wrU contacts ((30 * i10) + 21) s38
-    wrU contacts ((30 * i10) + 22) s46
-    t47 <- rdU contacts ((30 * i10) + 20)
-    t48 <- rdU contacts ((30 * i10) + 26)
+    t42 <- rdU locals 1
+    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
+    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
+    wrU contacts ((30 * i10) + 21) s37
+    wrU contacts ((30 * i10) + 22) s44
+    t45 <- rdU contacts ((30 * i10) + 20)
+    t46 <- rdU contacts ((30 * i10) + 26)
     chkI vel (3 * (truncate t11)) 0 2
-    t49 <- rdU vel (3 * (truncate t11))
-    t50 <- rdU vel ((3 * (truncate t11)) + 1)
-    t51 <- rdU vel ((3 * (truncate t11)) + 2)
-    t52 <- rdU scalars ((6 * (truncate t11)) + 1)
-    v53 <- newR 0.0
+    t47 <- rdU vel (3 * (truncate t11))
+    t48 <- rdU vel ((3 * (truncate t11)) + 1)
+    t49 <- rdU vel ((3 * (truncate t11)) + 2)
+    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU locals 2 0.0
     if (t12 + 0.5) > 0 then do
       chkI vel (3 * (truncate t12)) 0 2
-      t54 <- rdU vel (3 * (truncate t12))
-      t55 <- rdU vel ((3 * (truncate t12)) + 1)
-      t56 <- rdU vel ((3 * (truncate t12)) + 2)
+      t51 <- rdU vel (3 * (truncate t12))
+      t52 <- rdU vel ((3 * (truncate t12)) + 1)
+      t53 <- rdU vel ((3 * (truncate t12)) + 2)
       chkI scalars (6 * (truncate t12)) 1 1
-      t57 <- rdU scalars ((6 * (truncate t12)) + 1)
-      setR v53 ((((t19 * t54) + (t20 * t55)) + (t21 * t56)) + (t22 * t57))
+      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
       pure ()
     else do
       pure ()
-    t58 <- getR v53
-    let !s59 = (((((t15 * t49) + (t16 * t50)) + (t17 * t51)) + (t18 * t52)) - t58)
-    let !t60 = (t47 - t5)
-    let !t61 = (((t48 * t4) / t0) * (if (negate t60) > 0 then 0.0 else t60))
-    let !t62 = (if (t61 - t8) > 0 then t8 else t61)
-    let !t63 = (if ((negate s59) - t6) > 0 then ((negate t3) * s59) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t62 - t63) > 0 then t62 else t63)
-    v64 <- newR 0.0
-    v65 <- newR 0.0
+    t55 <- rdU locals 2
+    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
+    let !t57 = (t45 - t5)
+    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
+    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
+    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
+    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
+    wrU locals 3 0.0
+    wrU locals 4 0.0
     chkI bodyPrev (2 * (truncate t13)) 0 1
-    t66 <- rdU bodyPrev (2 * (truncate t13))
-    t67 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n68 = (t66 + t67)
-    loopI t66 n68 $ \i69 -> do
-      let !d69 = fromIntegral i69 :: Double
-      chkI prev (4 * i69) 1 1
-      t70 <- rdU prev ((4 * i69) + 1)
-      if (0.5 - (abs (t70 - t14))) > 0 then do
-        chkI prev (4 * i69) 2 3
-        t71 <- rdU prev ((4 * i69) + 2)
-        setR v64 t71
-        t72 <- rdU prev ((4 * i69) + 3)
-        setR v65 t72
+    t61 <- rdU bodyPrev (2 * (truncate t13))
+    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
+    let !n63 = (t61 + t62)
+    loopI t61 n63 $ \i64 -> do
+      let !d64 = fromIntegral i64 :: Double
+      chkI prev (4 * i64) 1 1
+      t65 <- rdU prev ((4 * i64) + 1)
+      if (0.5 - (abs (t65 - t14))) > 0 then do
+        chkI prev (4 * i64) 2 3
+        t66 <- rdU prev ((4 * i64) + 2)
+        wrU locals 3 t66
+        t67 <- rdU prev ((4 * i64) + 3)
+        wrU locals 4 t67
         pure ()
       else do
         pure ()
       pure ()
-    t73 <- getR v64
-    t74 <- getR v65
-    wrU contacts ((30 * i10) + 24) (t7 * t73)
-    wrU contacts ((30 * i10) + 25) (t7 * t74)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t76 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t77 <- rdU vel (3 * (truncate t11))
-    t78 <- rdU vel ((3 * (truncate t11)) + 1)
-    t79 <- rdU vel ((3 * (truncate t11)) + 2)
-    t80 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t77 + ((t75 * (t7 * t73)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t78 + ((t75 * (t7 * t73)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t79 + ((t75 * (t7 * t73)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t80 + ((t76 * (t7 * t73)) * t18))
+    t68 <- rdU locals 3
+    t69 <- rdU locals 4
+    wrU contacts ((30 * i10) + 24) (t7 * t68)
+    wrU contacts ((30 * i10) + 25) (t7 * t69)
+    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t72 <- rdU vel (3 * (truncate t11))
+    t73 <- rdU vel ((3 * (truncate t11)) + 1)
+    t74 <- rdU vel ((3 * (truncate t11)) + 2)
+    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
+    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
+    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
+    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t81 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t82 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t83 <- rdU vel (3 * (truncate t12))
-      t84 <- rdU vel ((3 * (truncate t12)) + 1)
-      t85 <- rdU vel ((3 * (truncate t12)) + 2)
-      t86 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t83 + ((t81 * (negate (t7 * t73))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t84 + ((t81 * (negate (t7 * t73))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t85 + ((t81 * (negate (t7 * t73))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t86 + ((t82 * (negate (t7 * t73))) * t22))
+      t78 <- rdU vel (3 * (truncate t12))
+      t79 <- rdU vel ((3 * (truncate t12)) + 1)
+      t80 <- rdU vel ((3 * (truncate t12)) + 2)
+      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
+      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
+      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
+      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
       pure ()
     else do
       pure ()
-    t87 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t88 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t89 <- rdU vel (3 * (truncate t11))
-    t90 <- rdU vel ((3 * (truncate t11)) + 1)
-    t91 <- rdU vel ((3 * (truncate t11)) + 2)
-    t92 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t89 + ((t87 * (t7 * t74)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t90 + ((t87 * (t7 * t74)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t91 + ((t87 * (t7 * t74)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t92 + ((t88 * (t7 * t74)) * t26))
+    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
+    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
+    t84 <- rdU vel (3 * (truncate t11))
+    t85 <- rdU vel ((3 * (truncate t11)) + 1)
+    t86 <- rdU vel ((3 * (truncate t11)) + 2)
+    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
+    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
+    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
+    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
+    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
     if (t12 + 0.5) > 0 then do
       chkI scalars (6 * (truncate t12)) 1 3
-      t93 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t94 <- rdU scalars ((6 * (truncate t12)) + 3)
+      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
+      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
       chkI vel (3 * (truncate t12)) 0 2
-      t95 <- rdU vel (3 * (truncate t12))
-      t96 <- rdU vel ((3 * (truncate t12)) + 1)
-      t97 <- rdU vel ((3 * (truncate t12)) + 2)
-      t98 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t95 + ((t93 * (negate (t7 * t74))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t96 + ((t93 * (negate (t7 * t74))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t97 + ((t93 * (negate (t7 * t74))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t98 + ((t94 * (negate (t7 * t74))) * t30))
+      t90 <- rdU vel (3 * (truncate t12))
+      t91 <- rdU vel ((3 * (truncate t12)) + 1)
+      t92 <- rdU vel ((3 * (truncate t12)) + 2)
+      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
+      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
+      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
+      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
+      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
       pure ()
     else do
       pure ()
     pure ()
   chkI mouse 0 0 0
-  t99 <- rdU mouse 0
-  if t99 > 0 then do
+  t94 <- rdU mouse 0
+  if t94 > 0 then do
     chkI mouse 0 1 1
-    t100 <- rdU mouse 1
-    chkI scalars (6 * (truncate t100)) 2 2
-    t101 <- rdU scalars ((6 * (truncate t100)) + 2)
-    if t101 > 0 then do
-      chkI scalars (6 * (truncate t100)) 0 5
-      t102 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t103 <- rdU params 0
-      chkI pos (3 * (truncate t100)) 0 2
-      t104 <- rdU pos (3 * (truncate t100))
-      t105 <- rdU pos ((3 * (truncate t100)) + 1)
-      t106 <- rdU pos ((3 * (truncate t100)) + 2)
-      chkI normal (3 * (truncate t100)) 0 2
-      t107 <- rdU normal (3 * (truncate t100))
-      t108 <- rdU normal ((3 * (truncate t100)) + 1)
-      t109 <- rdU normal ((3 * (truncate t100)) + 2)
-      chkI axis (3 * (truncate t100)) 0 2
-      t110 <- rdU axis (3 * (truncate t100))
-      t111 <- rdU axis ((3 * (truncate t100)) + 1)
-      t112 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s113 = ((t108 * t112) - (t109 * t111))
-      let !s114 = ((t109 * t110) - (t107 * t112))
-      let !s115 = ((t107 * t111) - (t108 * t110))
-      t116 <- rdU scalars (6 * (truncate t100))
-      t117 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t118 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t119 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t120 <- rdU pos (3 * (truncate t100))
-      t121 <- rdU pos ((3 * (truncate t100)) + 1)
-      t122 <- rdU pos ((3 * (truncate t100)) + 2)
-      t123 <- rdU normal (3 * (truncate t100))
-      t124 <- rdU normal ((3 * (truncate t100)) + 1)
-      t125 <- rdU normal ((3 * (truncate t100)) + 2)
-      t126 <- rdU axis (3 * (truncate t100))
-      t127 <- rdU axis ((3 * (truncate t100)) + 1)
-      t128 <- rdU axis ((3 * (truncate t100)) + 2)
-      let !s129 = ((t124 * t128) - (t125 * t127))
-      let !s130 = ((t125 * t126) - (t123 * t128))
-      let !s131 = ((t123 * t127) - (t124 * t126))
-      t132 <- rdU scalars (6 * (truncate t100))
-      t133 <- rdU scalars ((6 * (truncate t100)) + 5)
-      t134 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t135 <- rdU scalars ((6 * (truncate t100)) + 3)
+    t95 <- rdU mouse 1
+    chkI scalars (6 * (truncate t95)) 2 2
+    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
+    if t96 > 0 then do
+      chkI scalars (6 * (truncate t95)) 0 5
+      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t98 <- rdU params 0
+      chkI pos (3 * (truncate t95)) 0 2
+      t99 <- rdU pos (3 * (truncate t95))
+      t100 <- rdU pos ((3 * (truncate t95)) + 1)
+      t101 <- rdU pos ((3 * (truncate t95)) + 2)
+      chkI normal (3 * (truncate t95)) 0 2
+      t102 <- rdU normal (3 * (truncate t95))
+      t103 <- rdU normal ((3 * (truncate t95)) + 1)
+      t104 <- rdU normal ((3 * (truncate t95)) + 2)
+      chkI axis (3 * (truncate t95)) 0 2
+      t105 <- rdU axis (3 * (truncate t95))
+      t106 <- rdU axis ((3 * (truncate t95)) + 1)
+      t107 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s108 = ((t103 * t107) - (t104 * t106))
+      let !s109 = ((t104 * t105) - (t102 * t107))
+      let !s110 = ((t102 * t106) - (t103 * t105))
+      t111 <- rdU scalars (6 * (truncate t95))
+      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t115 <- rdU pos (3 * (truncate t95))
+      t116 <- rdU pos ((3 * (truncate t95)) + 1)
+      t117 <- rdU pos ((3 * (truncate t95)) + 2)
+      t118 <- rdU normal (3 * (truncate t95))
+      t119 <- rdU normal ((3 * (truncate t95)) + 1)
+      t120 <- rdU normal ((3 * (truncate t95)) + 2)
+      t121 <- rdU axis (3 * (truncate t95))
+      t122 <- rdU axis ((3 * (truncate t95)) + 1)
+      t123 <- rdU axis ((3 * (truncate t95)) + 2)
+      let !s124 = ((t119 * t123) - (t120 * t122))
+      let !s125 = ((t120 * t121) - (t118 * t123))
+      let !s126 = ((t118 * t122) - (t119 * t121))
+      t127 <- rdU scalars (6 * (truncate t95))
+      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
+      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
       chkI mouse 0 2 11
-      t136 <- rdU mouse 2
-      t137 <- rdU mouse 3
-      let !t138 = (t136 / 4.0)
-      let !t139 = (if (abs t138) > 0 then 1.0 else 0.0)
-      let !t140 = (t132 + t137)
-      let !t141 = (cos t140)
-      let !t142 = (sin t140)
-      let !t143 = (t120 + (t138 * ((t141 * t126) + (t142 * s129))))
-      let !t144 = (t122 + (t138 * ((t141 * t128) + (t142 * s131))))
-      let !t145 = (sqrt ((t143 * t143) + (t144 * t144)))
-      let !t146 = (t121 + (t138 * ((t141 * t127) + (t142 * s130))))
-      let !t147 = (exp t146)
-      let !t148 = (t145 - t147)
-      let !t149 = (recip (2.0 * t145))
-      let !t150 = (recip (2.0 * (sqrt ((t120 * t120) + (t122 * t122)))))
-      let !t151 = (t150 * (t120 + t120))
-      let !t152 = (negate (exp t121))
-      let !t153 = (t150 * (t122 + t122))
-      let !t154 = (sqrt (((t151 * t151) + (t152 * t152)) + (t153 * t153)))
-      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
-      let !t156 = (t155 * t151)
-      let !t157 = (t155 * t152)
-      let !t158 = (t155 * t153)
-      let !t159 = ((((t149 * (t143 + t143)) * t156) + ((negate t147) * t157)) + ((t149 * (t144 + t144)) * t158))
-      let !t160 = (if ((abs t148) - 1.0e-10) > 0 then (if (abs t159) > 0 then 1.0 else 0.0) else 0.0)
-      let !t161 = (if t160 > 0 then (t143 + (negate ((t148 / t159) * t156))) else t143)
-      let !t162 = (if t160 > 0 then (t144 + (negate ((t148 / t159) * t158))) else t144)
-      let !t163 = (sqrt ((t161 * t161) + (t162 * t162)))
-      let !t164 = (if t160 > 0 then (t146 + (negate ((t148 / t159) * t157))) else t146)
-      let !t165 = (exp t164)
-      let !t166 = (t163 - t165)
-      let !t167 = (recip (2.0 * t163))
-      let !t168 = ((((t167 * (t161 + t161)) * t156) + ((negate t165) * t157)) + ((t167 * (t162 + t162)) * t158))
-      let !t169 = (if ((abs t166) - 1.0e-10) > 0 then (if (abs t168) > 0 then 1.0 else 0.0) else 0.0)
-      let !t170 = (if t169 > 0 then (t161 + (negate ((t166 / t168) * t156))) else t161)
-      let !t171 = (if t169 > 0 then (t162 + (negate ((t166 / t168) * t158))) else t162)
-      let !t172 = (sqrt ((t170 * t170) + (t171 * t171)))
-      let !t173 = (if t169 > 0 then (t164 + (negate ((t166 / t168) * t157))) else t164)
-      let !t174 = (exp t173)
-      let !t175 = (t172 - t174)
-      let !t176 = (recip (2.0 * t172))
-      let !t177 = ((((t176 * (t170 + t170)) * t156) + ((negate t174) * t157)) + ((t176 * (t171 + t171)) * t158))
-      let !t178 = (if ((abs t175) - 1.0e-10) > 0 then (if (abs t177) > 0 then 1.0 else 0.0) else 0.0)
-      let !t179 = (1.0 - t139)
-      let !s180 = ((t139 * (if t178 > 0 then (t170 + (negate ((t175 / t177) * t156))) else t170)) + (t179 * t120))
-      let !s181 = ((t139 * (if t178 > 0 then (t173 + (negate ((t175 / t177) * t157))) else t173)) + (t179 * t121))
-      let !s182 = ((t139 * (if t178 > 0 then (t171 + (negate ((t175 / t177) * t158))) else t171)) + (t179 * t122))
-      let !t183 = ((t141 * t126) + (t142 * s129))
-      let !t184 = ((t141 * t127) + (t142 * s130))
-      let !t185 = ((t141 * t128) + (t142 * s131))
-      let !t186 = (sqrt (((t183 * t183) + (t184 * t184)) + (t185 * t185)))
-      let !t187 = (if (abs t138) > 0 then (recip t138) else 0.0)
-      let !t188 = (t187 * ((if t178 > 0 then (t170 + (negate ((t175 / t177) * t156))) else t170) + (negate t120)))
-      let !t189 = (t176 * (t170 + t170))
-      let !t190 = (negate t174)
-      let !t191 = (t176 * (t171 + t171))
-      let !t192 = (sqrt (((t189 * t189) + (t190 * t190)) + (t191 * t191)))
-      let !t193 = (if t192 > 0 then (recip (if (t192 - 1.0e-300) > 0 then t192 else 1.0e-300)) else 0.0)
-      let !t194 = (t193 * t189)
-      let !t195 = (t193 * t190)
-      let !t196 = (t187 * ((if t178 > 0 then (t173 + (negate ((t175 / t177) * t157))) else t173) + (negate t121)))
-      let !t197 = (t193 * t191)
-      let !t198 = (t187 * ((if t178 > 0 then (t171 + (negate ((t175 / t177) * t158))) else t171) + (negate t122)))
-      let !t199 = (((t194 * t188) + (t195 * t196)) + (t197 * t198))
-      let !t200 = (t188 + (negate (t199 * t194)))
-      let !t201 = (t196 + (negate (t199 * t195)))
-      let !t202 = (t198 + (negate (t199 * t197)))
-      let !t203 = (sqrt (((t200 * t200) + (t201 * t201)) + (t202 * t202)))
-      let !t204 = (if t203 > 0 then (recip (if (t203 - 1.0e-300) > 0 then t203 else 1.0e-300)) else 0.0)
-      let !s205 = ((t139 * (t186 * (t204 * t200))) + (t179 * t183))
-      let !s206 = ((t139 * (t186 * (t204 * t201))) + (t179 * t184))
-      let !s207 = ((t139 * (t186 * (t204 * t202))) + (t179 * t185))
-      let !t208 = (s180 + (t138 * s205))
-      let !t209 = (s182 + (t138 * s207))
-      let !t210 = (sqrt ((t208 * t208) + (t209 * t209)))
-      let !t211 = (s181 + (t138 * s206))
-      let !t212 = (exp t211)
-      let !t213 = (t210 - t212)
-      let !t214 = (recip (2.0 * t210))
-      let !t215 = (recip (2.0 * (sqrt ((s180 * s180) + (s182 * s182)))))
-      let !t216 = (t215 * (s180 + s180))
-      let !t217 = (negate (exp s181))
-      let !t218 = (t215 * (s182 + s182))
-      let !t219 = (sqrt (((t216 * t216) + (t217 * t217)) + (t218 * t218)))
-      let !t220 = (if t219 > 0 then (recip (if (t219 - 1.0e-300) > 0 then t219 else 1.0e-300)) else 0.0)
-      let !t221 = (t220 * t216)
-      let !t222 = (t220 * t217)
-      let !t223 = (t220 * t218)
-      let !t224 = ((((t214 * (t208 + t208)) * t221) + ((negate t212) * t222)) + ((t214 * (t209 + t209)) * t223))
-      let !t225 = (if ((abs t213) - 1.0e-10) > 0 then (if (abs t224) > 0 then 1.0 else 0.0) else 0.0)
-      let !t226 = (if t225 > 0 then (t208 + (negate ((t213 / t224) * t221))) else t208)
-      let !t227 = (if t225 > 0 then (t209 + (negate ((t213 / t224) * t223))) else t209)
-      let !t228 = (sqrt ((t226 * t226) + (t227 * t227)))
-      let !t229 = (if t225 > 0 then (t211 + (negate ((t213 / t224) * t222))) else t211)
-      let !t230 = (exp t229)
-      let !t231 = (t228 - t230)
-      let !t232 = (recip (2.0 * t228))
-      let !t233 = ((((t232 * (t226 + t226)) * t221) + ((negate t230) * t222)) + ((t232 * (t227 + t227)) * t223))
-      let !t234 = (if ((abs t231) - 1.0e-10) > 0 then (if (abs t233) > 0 then 1.0 else 0.0) else 0.0)
-      let !t235 = (if t234 > 0 then (t226 + (negate ((t231 / t233) * t221))) else t226)
-      let !t236 = (if t234 > 0 then (t227 + (negate ((t231 / t233) * t223))) else t227)
-      let !t237 = (sqrt ((t235 * t235) + (t236 * t236)))
-      let !t238 = (if t234 > 0 then (t229 + (negate ((t231 / t233) * t222))) else t229)
-      let !t239 = (exp t238)
-      let !t240 = (t237 - t239)
-      let !t241 = (recip (2.0 * t237))
-      let !t242 = ((((t241 * (t235 + t235)) * t221) + ((negate t239) * t222)) + ((t241 * (t236 + t236)) * t223))
-      let !t243 = (if ((abs t240) - 1.0e-10) > 0 then (if (abs t242) > 0 then 1.0 else 0.0) else 0.0)
-      let !s244 = ((t139 * (if t243 > 0 then (t235 + (negate ((t240 / t242) * t221))) else t235)) + (t179 * s180))
-      let !s245 = ((t139 * (if t243 > 0 then (t238 + (negate ((t240 / t242) * t222))) else t238)) + (t179 * s181))
-      let !s246 = ((t139 * (if t243 > 0 then (t236 + (negate ((t240 / t242) * t223))) else t236)) + (t179 * s182))
-      let !t247 = (sqrt (((s205 * s205) + (s206 * s206)) + (s207 * s207)))
-      let !t248 = (t187 * ((if t243 > 0 then (t235 + (negate ((t240 / t242) * t221))) else t235) + (negate s180)))
-      let !t249 = (t241 * (t235 + t235))
-      let !t250 = (negate t239)
-      let !t251 = (t241 * (t236 + t236))
-      let !t252 = (sqrt (((t249 * t249) + (t250 * t250)) + (t251 * t251)))
-      let !t253 = (if t252 > 0 then (recip (if (t252 - 1.0e-300) > 0 then t252 else 1.0e-300)) else 0.0)
-      let !t254 = (t253 * t249)
-      let !t255 = (t253 * t250)
-      let !t256 = (t187 * ((if t243 > 0 then (t238 + (negate ((t240 / t242) * t222))) else t238) + (negate s181)))
-      let !t257 = (t253 * t251)
-      let !t258 = (t187 * ((if t243 > 0 then (t236 + (negate ((t240 / t242) * t223))) else t236) + (negate s182)))
-      let !t259 = (((t254 * t248) + (t255 * t256)) + (t257 * t258))
-      let !t260 = (t248 + (negate (t259 * t254)))
-      let !t261 = (t256 + (negate (t259 * t255)))
-      let !t262 = (t258 + (negate (t259 * t257)))
-      let !t263 = (sqrt (((t260 * t260) + (t261 * t261)) + (t262 * t262)))
-      let !t264 = (if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0)
-      let !s265 = ((t139 * (t247 * (t264 * t260))) + (t179 * s205))
-      let !s266 = ((t139 * (t247 * (t264 * t261))) + (t179 * s206))
-      let !s267 = ((t139 * (t247 * (t264 * t262))) + (t179 * s207))
-      let !t268 = (s244 + (t138 * s265))
-      let !t269 = (s246 + (t138 * s267))
-      let !t270 = (sqrt ((t268 * t268) + (t269 * t269)))
-      let !t271 = (s245 + (t138 * s266))
-      let !t272 = (exp t271)
-      let !t273 = (t270 - t272)
-      let !t274 = (recip (2.0 * t270))
-      let !t275 = (recip (2.0 * (sqrt ((s244 * s244) + (s246 * s246)))))
-      let !t276 = (t275 * (s244 + s244))
-      let !t277 = (negate (exp s245))
-      let !t278 = (t275 * (s246 + s246))
-      let !t279 = (sqrt (((t276 * t276) + (t277 * t277)) + (t278 * t278)))
-      let !t280 = (if t279 > 0 then (recip (if (t279 - 1.0e-300) > 0 then t279 else 1.0e-300)) else 0.0)
-      let !t281 = (t280 * t276)
-      let !t282 = (t280 * t277)
-      let !t283 = (t280 * t278)
-      let !t284 = ((((t274 * (t268 + t268)) * t281) + ((negate t272) * t282)) + ((t274 * (t269 + t269)) * t283))
-      let !t285 = (if ((abs t273) - 1.0e-10) > 0 then (if (abs t284) > 0 then 1.0 else 0.0) else 0.0)
-      let !t286 = (if t285 > 0 then (t268 + (negate ((t273 / t284) * t281))) else t268)
-      let !t287 = (if t285 > 0 then (t269 + (negate ((t273 / t284) * t283))) else t269)
-      let !t288 = (sqrt ((t286 * t286) + (t287 * t287)))
-      let !t289 = (if t285 > 0 then (t271 + (negate ((t273 / t284) * t282))) else t271)
-      let !t290 = (exp t289)
-      let !t291 = (t288 - t290)
-      let !t292 = (recip (2.0 * t288))
-      let !t293 = ((((t292 * (t286 + t286)) * t281) + ((negate t290) * t282)) + ((t292 * (t287 + t287)) * t283))
-      let !t294 = (if ((abs t291) - 1.0e-10) > 0 then (if (abs t293) > 0 then 1.0 else 0.0) else 0.0)
-      let !t295 = (if t294 > 0 then (t286 + (negate ((t291 / t293) * t281))) else t286)
-      let !t296 = (if t294 > 0 then (t287 + (negate ((t291 / t293) * t283))) else t287)
-      let !t297 = (sqrt ((t295 * t295) + (t296 * t296)))
-      let !t298 = (if t294 > 0 then (t289 + (negate ((t291 / t293) * t282))) else t289)
-      let !t299 = (exp t298)
-      let !t300 = (t297 - t299)
-      let !t301 = (recip (2.0 * t297))
-      let !t302 = ((((t301 * (t295 + t295)) * t281) + ((negate t299) * t282)) + ((t301 * (t296 + t296)) * t283))
-      let !t303 = (if ((abs t300) - 1.0e-10) > 0 then (if (abs t302) > 0 then 1.0 else 0.0) else 0.0)
-      let !s304 = ((t139 * (if t303 > 0 then (t295 + (negate ((t300 / t302) * t281))) else t295)) + (t179 * s244))
-      let !s305 = ((t139 * (if t303 > 0 then (t298 + (negate ((t300 / t302) * t282))) else t298)) + (t179 * s245))
-      let !s306 = ((t139 * (if t303 > 0 then (t296 + (negate ((t300 / t302) * t283))) else t296)) + (t179 * s246))
-      let !t307 = (sqrt (((s265 * s265) + (s266 * s266)) + (s267 * s267)))
-      let !t308 = (t187 * ((if t303 > 0 then (t295 + (negate ((t300 / t302) * t281))) else t295) + (negate s244)))
-      let !t309 = (t301 * (t295 + t295))
-      let !t310 = (negate t299)
-      let !t311 = (t301 * (t296 + t296))
-      let !t312 = (sqrt (((t309 * t309) + (t310 * t310)) + (t311 * t311)))
-      let !t313 = (if t312 > 0 then (recip (if (t312 - 1.0e-300) > 0 then t312 else 1.0e-300)) else 0.0)
-      let !t314 = (t313 * t309)
-      let !t315 = (t313 * t310)
-      let !t316 = (t187 * ((if t303 > 0 then (t298 + (negate ((t300 / t302) * t282))) else t298) + (negate s245)))
-      let !t317 = (t313 * t311)
-      let !t318 = (t187 * ((if t303 > 0 then (t296 + (negate ((t300 / t302) * t283))) else t296) + (negate s246)))
-      let !t319 = (((t314 * t308) + (t315 * t316)) + (t317 * t318))
-      let !t320 = (t308 + (negate (t319 * t314)))
-      let !t321 = (t316 + (negate (t319 * t315)))
-      let !t322 = (t318 + (negate (t319 * t317)))
-      let !t323 = (sqrt (((t320 * t320) + (t321 * t321)) + (t322 * t322)))
-      let !t324 = (if t323 > 0 then (recip (if (t323 - 1.0e-300) > 0 then t323 else 1.0e-300)) else 0.0)
-      let !s325 = ((t139 * (t307 * (t324 * t320))) + (t179 * s265))
-      let !s326 = ((t139 * (t307 * (t324 * t321))) + (t179 * s266))
-      let !s327 = ((t139 * (t307 * (t324 * t322))) + (t179 * s267))
-      let !t328 = (s304 + (t138 * s325))
-      let !t329 = (s306 + (t138 * s327))
-      let !t330 = (sqrt ((t328 * t328) + (t329 * t329)))
-      let !t331 = (s305 + (t138 * s326))
-      let !t332 = (exp t331)
-      let !t333 = (t330 - t332)
-      let !t334 = (recip (2.0 * t330))
-      let !t335 = (recip (2.0 * (sqrt ((s304 * s304) + (s306 * s306)))))
-      let !t336 = (t335 * (s304 + s304))
-      let !t337 = (negate (exp s305))
-      let !t338 = (t335 * (s306 + s306))
-      let !t339 = (sqrt (((t336 * t336) + (t337 * t337)) + (t338 * t338)))
-      let !t340 = (if t339 > 0 then (recip (if (t339 - 1.0e-300) > 0 then t339 else 1.0e-300)) else 0.0)
-      let !t341 = (t340 * t336)
-      let !t342 = (t340 * t337)
-      let !t343 = (t340 * t338)
-      let !t344 = ((((t334 * (t328 + t328)) * t341) + ((negate t332) * t342)) + ((t334 * (t329 + t329)) * t343))
-      let !t345 = (if ((abs t333) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
-      let !t346 = (if t345 > 0 then (t328 + (negate ((t333 / t344) * t341))) else t328)
-      let !t347 = (if t345 > 0 then (t329 + (negate ((t333 / t344) * t343))) else t329)
-      let !t348 = (sqrt ((t346 * t346) + (t347 * t347)))
-      let !t349 = (if t345 > 0 then (t331 + (negate ((t333 / t344) * t342))) else t331)
-      let !t350 = (exp t349)
-      let !t351 = (t348 - t350)
-      let !t352 = (recip (2.0 * t348))
-      let !t353 = ((((t352 * (t346 + t346)) * t341) + ((negate t350) * t342)) + ((t352 * (t347 + t347)) * t343))
-      let !t354 = (if ((abs t351) - 1.0e-10) > 0 then (if (abs t353) > 0 then 1.0 else 0.0) else 0.0)
-      let !t355 = (if t354 > 0 then (t346 + (negate ((t351 / t353) * t341))) else t346)
-      let !t356 = (if t354 > 0 then (t347 + (negate ((t351 / t353) * t343))) else t347)
-      let !t357 = (sqrt ((t355 * t355) + (t356 * t356)))
-      let !t358 = (if t354 > 0 then (t349 + (negate ((t351 / t353) * t342))) else t349)
-      let !t359 = (exp t358)
-      let !t360 = (t357 - t359)
-      let !t361 = (recip (2.0 * t357))
-      let !t362 = ((((t361 * (t355 + t355)) * t341) + ((negate t359) * t342)) + ((t361 * (t356 + t356)) * t343))
-      let !t363 = (if ((abs t360) - 1.0e-10) > 0 then (if (abs t362) > 0 then 1.0 else 0.0) else 0.0)
-      let !s364 = ((t139 * (if t363 > 0 then (t355 + (negate ((t360 / t362) * t341))) else t355)) + (t179 * s304))
-      let !s365 = ((t139 * (if t363 > 0 then (t358 + (negate ((t360 / t362) * t342))) else t358)) + (t179 * s305))
-      let !s366 = ((t139 * (if t363 > 0 then (t356 + (negate ((t360 / t362) * t343))) else t356)) + (t179 * s306))
-      let !t367 = (sqrt (((s325 * s325) + (s326 * s326)) + (s327 * s327)))
-      let !t368 = (t187 * ((if t363 > 0 then (t355 + (negate ((t360 / t362) * t341))) else t355) + (negate s304)))
-      let !t369 = (t361 * (t355 + t355))
-      let !t370 = (negate t359)
-      let !t371 = (t361 * (t356 + t356))
-      let !t372 = (sqrt (((t369 * t369) + (t370 * t370)) + (t371 * t371)))
-      let !t373 = (if t372 > 0 then (recip (if (t372 - 1.0e-300) > 0 then t372 else 1.0e-300)) else 0.0)
-      let !t374 = (t373 * t369)
-      let !t375 = (t373 * t370)
-      let !t376 = (t187 * ((if t363 > 0 then (t358 + (negate ((t360 / t362) * t342))) else t358) + (negate s305)))
-      let !t377 = (t373 * t371)
-      let !t378 = (t187 * ((if t363 > 0 then (t356 + (negate ((t360 / t362) * t343))) else t356) + (negate s306)))
-      let !t379 = (((t374 * t368) + (t375 * t376)) + (t377 * t378))
-      let !t380 = (t368 + (negate (t379 * t374)))
-      let !t381 = (t376 + (negate (t379 * t375)))
-      let !t382 = (t378 + (negate (t379 * t377)))
-      let !t383 = (sqrt (((t380 * t380) + (t381 * t381)) + (t382 * t382)))
-      let !t384 = (if t383 > 0 then (recip (if (t383 - 1.0e-300) > 0 then t383 else 1.0e-300)) else 0.0)
-      let !s385 = ((t139 * (t367 * (t384 * t380))) + (t179 * s325))
-      let !s386 = ((t139 * (t367 * (t384 * t381))) + (t179 * s326))
-      let !s387 = ((t139 * (t367 * (t384 * t382))) + (t179 * s327))
-      t388 <- rdU mouse 4
-      t389 <- rdU mouse 5
-      t390 <- rdU mouse 6
-      t391 <- rdU mouse 7
-      t392 <- rdU mouse 8
-      t393 <- rdU mouse 9
-      let !t394 = (recip t101)
-      let !t395 = (6.283185307179586 * t391)
-      let !s396 = (recip (t103 * ((((2.0 * t394) * t392) * t395) + (t103 * ((t394 * t395) * t395)))))
-      let !s397 = ((t103 * ((t394 * t395) * t395)) * s396)
-      let !s398 = (s364 + (negate t104))
-      let !s399 = (s365 + (negate t105))
-      let !s400 = (s366 + (negate t106))
-      let !s401 = (s364 + (negate t388))
-      let !s402 = (s365 + (negate t389))
-      let !s403 = (s366 + (negate t390))
-      t404 <- rdU mouse 10
-      t405 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t406 <- rdU scalars ((6 * (truncate t100)) + 3)
-      chkI vel (3 * (truncate t100)) 0 2
-      t407 <- rdU vel (3 * (truncate t100))
-      t408 <- rdU vel ((3 * (truncate t100)) + 1)
-      t409 <- rdU vel ((3 * (truncate t100)) + 2)
-      t410 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t407 + ((t405 * t404) * t110))
-      wrU vel ((3 * (truncate t100)) + 1) (t408 + ((t405 * t404) * t111))
-      wrU vel ((3 * (truncate t100)) + 2) (t409 + ((t405 * t404) * t112))
-      wrU scalars ((6 * (truncate t100)) + 1) (t410 + ((t406 * t404) * (((((s399 * t112) - (s400 * t111)) * t107) + (((s400 * t110) - (s398 * t112)) * t108)) + (((s398 * t111) - (s399 * t110)) * t109))))
-      t411 <- rdU mouse 11
-      t412 <- rdU scalars ((6 * (truncate t100)) + 2)
-      t413 <- rdU scalars ((6 * (truncate t100)) + 3)
-      t414 <- rdU vel (3 * (truncate t100))
-      t415 <- rdU vel ((3 * (truncate t100)) + 1)
-      t416 <- rdU vel ((3 * (truncate t100)) + 2)
-      t417 <- rdU scalars ((6 * (truncate t100)) + 1)
-      wrU vel (3 * (truncate t100)) (t414 + ((t412 * t411) * s113))
-      wrU vel ((3 * (truncate t100)) + 1) (t415 + ((t412 * t411) * s114))
-      wrU vel ((3 * (truncate t100)) + 2) (t416 + ((t412 * t411) * s115))
-      wrU scalars ((6 * (truncate t100)) + 1) (t417 + ((t413 * t411) * (((((s399 * s115) - (s400 * s114)) * t107) + (((s400 * s113) - (s398 * s115)) * t108)) + (((s398 * s114) - (s399 * s113)) * t109))))
+      t131 <- rdU mouse 2
+      t132 <- rdU mouse 3
+      let !t133 = (t131 / 4.0)
+      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
+      let !t135 = (t127 + t132)
+      let !t136 = (cos t135)
+      let !t137 = (sin t135)
+      let !t138 = (t115 + (t133 * ((t136 * t121) + (t137 * s124))))
+      let !t139 = (t117 + (t133 * ((t136 * t123) + (t137 * s126))))
+      let !t140 = (sqrt ((t138 * t138) + (t139 * t139)))
+      let !t141 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
+      let !t142 = (exp t141)
+      let !t143 = (t140 - t142)
+      let !t144 = (recip (2.0 * t140))
+      let !t145 = (recip (2.0 * (sqrt ((t115 * t115) + (t117 * t117)))))
+      let !t146 = (t145 * (t115 + t115))
+      let !t147 = (negate (exp t116))
+      let !t148 = (t145 * (t117 + t117))
+      let !t149 = (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148)))
+      let !t150 = (if t149 > 0 then (recip (if (t149 - 1.0e-300) > 0 then t149 else 1.0e-300)) else 0.0)
+      let !t151 = (t150 * t146)
+      let !t152 = (t150 * t147)
+      let !t153 = (t150 * t148)
+      let !t154 = ((((t144 * (t138 + t138)) * t151) + ((negate t142) * t152)) + ((t144 * (t139 + t139)) * t153))
+      let !t155 = (if ((abs t143) - 1.0e-10) > 0 then (if (abs t154) > 0 then 1.0 else 0.0) else 0.0)
+      let !t156 = (if t155 > 0 then (t138 + (negate ((t143 / t154) * t151))) else t138)
+      let !t157 = (if t155 > 0 then (t139 + (negate ((t143 / t154) * t153))) else t139)
+      let !t158 = (sqrt ((t156 * t156) + (t157 * t157)))
+      let !t159 = (if t155 > 0 then (t141 + (negate ((t143 / t154) * t152))) else t141)
+      let !t160 = (exp t159)
+      let !t161 = (t158 - t160)
+      let !t162 = (recip (2.0 * t158))
+      let !t163 = ((((t162 * (t156 + t156)) * t151) + ((negate t160) * t152)) + ((t162 * (t157 + t157)) * t153))
+      let !t164 = (if ((abs t161) - 1.0e-10) > 0 then (if (abs t163) > 0 then 1.0 else 0.0) else 0.0)
+      let !t165 = (if t164 > 0 then (t156 + (negate ((t161 / t163) * t151))) else t156)
+      let !t166 = (if t164 > 0 then (t157 + (negate ((t161 / t163) * t153))) else t157)
+      let !t167 = (sqrt ((t165 * t165) + (t166 * t166)))
+      let !t168 = (if t164 > 0 then (t159 + (negate ((t161 / t163) * t152))) else t159)
+      let !t169 = (exp t168)
+      let !t170 = (t167 - t169)
+      let !t171 = (recip (2.0 * t167))
+      let !t172 = ((((t171 * (t165 + t165)) * t151) + ((negate t169) * t152)) + ((t171 * (t166 + t166)) * t153))
+      let !t173 = (if ((abs t170) - 1.0e-10) > 0 then (if (abs t172) > 0 then 1.0 else 0.0) else 0.0)
+      let !t174 = (1.0 - t134)
+      let !s175 = ((t134 * (if t173 > 0 then (t165 + (negate ((t170 / t172) * t151))) else t165)) + (t174 * t115))
+      let !s176 = ((t134 * (if t173 > 0 then (t168 + (negate ((t170 / t172) * t152))) else t168)) + (t174 * t116))
+      let !s177 = ((t134 * (if t173 > 0 then (t166 + (negate ((t170 / t172) * t153))) else t166)) + (t174 * t117))
+      let !t178 = ((t136 * t121) + (t137 * s124))
+      let !t179 = ((t136 * t122) + (t137 * s125))
+      let !t180 = ((t136 * t123) + (t137 * s126))
+      let !t181 = (sqrt (((t178 * t178) + (t179 * t179)) + (t180 * t180)))
+      let !t182 = (if (abs t133) > 0 then (recip t133) else 0.0)
+      let !t183 = (t182 * ((if t173 > 0 then (t165 + (negate ((t170 / t172) * t151))) else t165) + (negate t115)))
+      let !t184 = (t171 * (t165 + t165))
+      let !t185 = (negate t169)
+      let !t186 = (t171 * (t166 + t166))
+      let !t187 = (sqrt (((t184 * t184) + (t185 * t185)) + (t186 * t186)))
+      let !t188 = (if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0)
+      let !t189 = (t188 * t184)
+      let !t190 = (t188 * t185)
+      let !t191 = (t182 * ((if t173 > 0 then (t168 + (negate ((t170 / t172) * t152))) else t168) + (negate t116)))
+      let !t192 = (t188 * t186)
+      let !t193 = (t182 * ((if t173 > 0 then (t166 + (negate ((t170 / t172) * t153))) else t166) + (negate t117)))
+      let !t194 = (((t189 * t183) + (t190 * t191)) + (t192 * t193))
+      let !t195 = (t183 + (negate (t194 * t189)))
+      let !t196 = (t191 + (negate (t194 * t190)))
+      let !t197 = (t193 + (negate (t194 * t192)))
+      let !t198 = (sqrt (((t195 * t195) + (t196 * t196)) + (t197 * t197)))
+      let !t199 = (if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0)
+      let !s200 = ((t134 * (t181 * (t199 * t195))) + (t174 * t178))
+      let !s201 = ((t134 * (t181 * (t199 * t196))) + (t174 * t179))
+      let !s202 = ((t134 * (t181 * (t199 * t197))) + (t174 * t180))
+      let !t203 = (s175 + (t133 * s200))
+      let !t204 = (s177 + (t133 * s202))
+      let !t205 = (sqrt ((t203 * t203) + (t204 * t204)))
+      let !t206 = (s176 + (t133 * s201))
+      let !t207 = (exp t206)
+      let !t208 = (t205 - t207)
+      let !t209 = (recip (2.0 * t205))
+      let !t210 = (recip (2.0 * (sqrt ((s175 * s175) + (s177 * s177)))))
+      let !t211 = (t210 * (s175 + s175))
+      let !t212 = (negate (exp s176))
+      let !t213 = (t210 * (s177 + s177))
+      let !t214 = (sqrt (((t211 * t211) + (t212 * t212)) + (t213 * t213)))
+      let !t215 = (if t214 > 0 then (recip (if (t214 - 1.0e-300) > 0 then t214 else 1.0e-300)) else 0.0)
+      let !t216 = (t215 * t211)
+      let !t217 = (t215 * t212)
+      let !t218 = (t215 * t213)
+      let !t219 = ((((t209 * (t203 + t203)) * t216) + ((negate t207) * t217)) + ((t209 * (t204 + t204)) * t218))
+      let !t220 = (if ((abs t208) - 1.0e-10) > 0 then (if (abs t219) > 0 then 1.0 else 0.0) else 0.0)
+      let !t221 = (if t220 > 0 then (t203 + (negate ((t208 / t219) * t216))) else t203)
+      let !t222 = (if t220 > 0 then (t204 + (negate ((t208 / t219) * t218))) else t204)
+      let !t223 = (sqrt ((t221 * t221) + (t222 * t222)))
+      let !t224 = (if t220 > 0 then (t206 + (negate ((t208 / t219) * t217))) else t206)
+      let !t225 = (exp t224)
+      let !t226 = (t223 - t225)
+      let !t227 = (recip (2.0 * t223))
+      let !t228 = ((((t227 * (t221 + t221)) * t216) + ((negate t225) * t217)) + ((t227 * (t222 + t222)) * t218))
+      let !t229 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t228) > 0 then 1.0 else 0.0) else 0.0)
+      let !t230 = (if t229 > 0 then (t221 + (negate ((t226 / t228) * t216))) else t221)
+      let !t231 = (if t229 > 0 then (t222 + (negate ((t226 / t228) * t218))) else t222)
+      let !t232 = (sqrt ((t230 * t230) + (t231 * t231)))
+      let !t233 = (if t229 > 0 then (t224 + (negate ((t226 / t228) * t217))) else t224)
+      let !t234 = (exp t233)
+      let !t235 = (t232 - t234)
+      let !t236 = (recip (2.0 * t232))
+      let !t237 = ((((t236 * (t230 + t230)) * t216) + ((negate t234) * t217)) + ((t236 * (t231 + t231)) * t218))
+      let !t238 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t237) > 0 then 1.0 else 0.0) else 0.0)
+      let !s239 = ((t134 * (if t238 > 0 then (t230 + (negate ((t235 / t237) * t216))) else t230)) + (t174 * s175))
+      let !s240 = ((t134 * (if t238 > 0 then (t233 + (negate ((t235 / t237) * t217))) else t233)) + (t174 * s176))
+      let !s241 = ((t134 * (if t238 > 0 then (t231 + (negate ((t235 / t237) * t218))) else t231)) + (t174 * s177))
+      let !t242 = (sqrt (((s200 * s200) + (s201 * s201)) + (s202 * s202)))
+      let !t243 = (t182 * ((if t238 > 0 then (t230 + (negate ((t235 / t237) * t216))) else t230) + (negate s175)))
+      let !t244 = (t236 * (t230 + t230))
+      let !t245 = (negate t234)
+      let !t246 = (t236 * (t231 + t231))
+      let !t247 = (sqrt (((t244 * t244) + (t245 * t245)) + (t246 * t246)))
+      let !t248 = (if t247 > 0 then (recip (if (t247 - 1.0e-300) > 0 then t247 else 1.0e-300)) else 0.0)
+      let !t249 = (t248 * t244)
+      let !t250 = (t248 * t245)
+      let !t251 = (t182 * ((if t238 > 0 then (t233 + (negate ((t235 / t237) * t217))) else t233) + (negate s176)))
+      let !t252 = (t248 * t246)
+      let !t253 = (t182 * ((if t238 > 0 then (t231 + (negate ((t235 / t237) * t218))) else t231) + (negate s177)))
+      let !t254 = (((t249 * t243) + (t250 * t251)) + (t252 * t253))
+      let !t255 = (t243 + (negate (t254 * t249)))
+      let !t256 = (t251 + (negate (t254 * t250)))
+      let !t257 = (t253 + (negate (t254 * t252)))
+      let !t258 = (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257)))
+      let !t259 = (if t258 > 0 then (recip (if (t258 - 1.0e-300) > 0 then t258 else 1.0e-300)) else 0.0)
+      let !s260 = ((t134 * (t242 * (t259 * t255))) + (t174 * s200))
+      let !s261 = ((t134 * (t242 * (t259 * t256))) + (t174 * s201))
+      let !s262 = ((t134 * (t242 * (t259 * t257))) + (t174 * s202))
+      let !t263 = (s239 + (t133 * s260))
+      let !t264 = (s241 + (t133 * s262))
+      let !t265 = (sqrt ((t263 * t263) + (t264 * t264)))
+      let !t266 = (s240 + (t133 * s261))
+      let !t267 = (exp t266)
+      let !t268 = (t265 - t267)
+      let !t269 = (recip (2.0 * t265))
+      let !t270 = (recip (2.0 * (sqrt ((s239 * s239) + (s241 * s241)))))
+      let !t271 = (t270 * (s239 + s239))
+      let !t272 = (negate (exp s240))
+      let !t273 = (t270 * (s241 + s241))
+      let !t274 = (sqrt (((t271 * t271) + (t272 * t272)) + (t273 * t273)))
+      let !t275 = (if t274 > 0 then (recip (if (t274 - 1.0e-300) > 0 then t274 else 1.0e-300)) else 0.0)
+      let !t276 = (t275 * t271)
+      let !t277 = (t275 * t272)
+      let !t278 = (t275 * t273)
+      let !t279 = ((((t269 * (t263 + t263)) * t276) + ((negate t267) * t277)) + ((t269 * (t264 + t264)) * t278))
+      let !t280 = (if ((abs t268) - 1.0e-10) > 0 then (if (abs t279) > 0 then 1.0 else 0.0) else 0.0)
+      let !t281 = (if t280 > 0 then (t263 + (negate ((t268 / t279) * t276))) else t263)
+      let !t282 = (if t280 > 0 then (t264 + (negate ((t268 / t279) * t278))) else t264)
+      let !t283 = (sqrt ((t281 * t281) + (t282 * t282)))
+      let !t284 = (if t280 > 0 then (t266 + (negate ((t268 / t279) * t277))) else t266)
+      let !t285 = (exp t284)
+      let !t286 = (t283 - t285)
+      let !t287 = (recip (2.0 * t283))
+      let !t288 = ((((t287 * (t281 + t281)) * t276) + ((negate t285) * t277)) + ((t287 * (t282 + t282)) * t278))
+      let !t289 = (if ((abs t286) - 1.0e-10) > 0 then (if (abs t288) > 0 then 1.0 else 0.0) else 0.0)
+      let !t290 = (if t289 > 0 then (t281 + (negate ((t286 / t288) * t276))) else t281)
+      let !t291 = (if t289 > 0 then (t282 + (negate ((t286 / t288) * t278))) else t282)
+      let !t292 = (sqrt ((t290 * t290) + (t291 * t291)))
+      let !t293 = (if t289 > 0 then (t284 + (negate ((t286 / t288) * t277))) else t284)
+      let !t294 = (exp t293)
+      let !t295 = (t292 - t294)
+      let !t296 = (recip (2.0 * t292))
+      let !t297 = ((((t296 * (t290 + t290)) * t276) + ((negate t294) * t277)) + ((t296 * (t291 + t291)) * t278))
+      let !t298 = (if ((abs t295) - 1.0e-10) > 0 then (if (abs t297) > 0 then 1.0 else 0.0) else 0.0)
+      let !s299 = ((t134 * (if t298 > 0 then (t290 + (negate ((t295 / t297) * t276))) else t290)) + (t174 * s239))
+      let !s300 = ((t134 * (if t298 > 0 then (t293 + (negate ((t295 / t297) * t277))) else t293)) + (t174 * s240))
+      let !s301 = ((t134 * (if t298 > 0 then (t291 + (negate ((t295 / t297) * t278))) else t291)) + (t174 * s241))
+      let !t302 = (sqrt (((s260 * s260) + (s261 * s261)) + (s262 * s262)))
+      let !t303 = (t182 * ((if t298 > 0 then (t290 + (negate ((t295 / t297) * t276))) else t290) + (negate s239)))
+      let !t304 = (t296 * (t290 + t290))
+      let !t305 = (negate t294)
+      let !t306 = (t296 * (t291 + t291))
+      let !t307 = (sqrt (((t304 * t304) + (t305 * t305)) + (t306 * t306)))
+      let !t308 = (if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0)
+      let !t309 = (t308 * t304)
+      let !t310 = (t308 * t305)
+      let !t311 = (t182 * ((if t298 > 0 then (t293 + (negate ((t295 / t297) * t277))) else t293) + (negate s240)))
+      let !t312 = (t308 * t306)
+      let !t313 = (t182 * ((if t298 > 0 then (t291 + (negate ((t295 / t297) * t278))) else t291) + (negate s241)))
+      let !t314 = (((t309 * t303) + (t310 * t311)) + (t312 * t313))
+      let !t315 = (t303 + (negate (t314 * t309)))
+      let !t316 = (t311 + (negate (t314 * t310)))
+      let !t317 = (t313 + (negate (t314 * t312)))
+      let !t318 = (sqrt (((t315 * t315) + (t316 * t316)) + (t317 * t317)))
+      let !t319 = (if t318 > 0 then (recip (if (t318 - 1.0e-300) > 0 then t318 else 1.0e-300)) else 0.0)
+      let !s320 = ((t134 * (t302 * (t319 * t315))) + (t174 * s260))
+      let !s321 = ((t134 * (t302 * (t319 * t316))) + (t174 * s261))
+      let !s322 = ((t134 * (t302 * (t319 * t317))) + (t174 * s262))
+      let !t323 = (s299 + (t133 * s320))
+      let !t324 = (s301 + (t133 * s322))
+      let !t325 = (sqrt ((t323 * t323) + (t324 * t324)))
+      let !t326 = (s300 + (t133 * s321))
+      let !t327 = (exp t326)
+      let !t328 = (t325 - t327)
+      let !t329 = (recip (2.0 * t325))
+      let !t330 = (recip (2.0 * (sqrt ((s299 * s299) + (s301 * s301)))))
+      let !t331 = (t330 * (s299 + s299))
+      let !t332 = (negate (exp s300))
+      let !t333 = (t330 * (s301 + s301))
+      let !t334 = (sqrt (((t331 * t331) + (t332 * t332)) + (t333 * t333)))
+      let !t335 = (if t334 > 0 then (recip (if (t334 - 1.0e-300) > 0 then t334 else 1.0e-300)) else 0.0)
+      let !t336 = (t335 * t331)
+      let !t337 = (t335 * t332)
+      let !t338 = (t335 * t333)
+      let !t339 = ((((t329 * (t323 + t323)) * t336) + ((negate t327) * t337)) + ((t329 * (t324 + t324)) * t338))
+      let !t340 = (if ((abs t328) - 1.0e-10) > 0 then (if (abs t339) > 0 then 1.0 else 0.0) else 0.0)
+      let !t341 = (if t340 > 0 then (t323 + (negate ((t328 / t339) * t336))) else t323)
+      let !t342 = (if t340 > 0 then (t324 + (negate ((t328 / t339) * t338))) else t324)
+      let !t343 = (sqrt ((t341 * t341) + (t342 * t342)))
+      let !t344 = (if t340 > 0 then (t326 + (negate ((t328 / t339) * t337))) else t326)
+      let !t345 = (exp t344)
+      let !t346 = (t343 - t345)
+      let !t347 = (recip (2.0 * t343))
+      let !t348 = ((((t347 * (t341 + t341)) * t336) + ((negate t345) * t337)) + ((t347 * (t342 + t342)) * t338))
+      let !t349 = (if ((abs t346) - 1.0e-10) > 0 then (if (abs t348) > 0 then 1.0 else 0.0) else 0.0)
+      let !t350 = (if t349 > 0 then (t341 + (negate ((t346 / t348) * t336))) else t341)
+      let !t351 = (if t349 > 0 then (t342 + (negate ((t346 / t348) * t338))) else t342)
+      let !t352 = (sqrt ((t350 * t350) + (t351 * t351)))
+      let !t353 = (if t349 > 0 then (t344 + (negate ((t346 / t348) * t337))) else t344)
+      let !t354 = (exp t353)
+      let !t355 = (t352 - t354)
+      let !t356 = (recip (2.0 * t352))
+      let !t357 = ((((t356 * (t350 + t350)) * t336) + ((negate t354) * t337)) + ((t356 * (t351 + t351)) * t338))
+      let !t358 = (if ((abs t355) - 1.0e-10) > 0 then (if (abs t357) > 0 then 1.0 else 0.0) else 0.0)
+      let !s359 = ((t134 * (if t358 > 0 then (t350 + (negate ((t355 / t357) * t336))) else t350)) + (t174 * s299))
+      let !s360 = ((t134 * (if t358 > 0 then (t353 + (negate ((t355 / t357) * t337))) else t353)) + (t174 * s300))
+      let !s361 = ((t134 * (if t358 > 0 then (t351 + (negate ((t355 / t357) * t338))) else t351)) + (t174 * s301))
+      let !t362 = (sqrt (((s320 * s320) + (s321 * s321)) + (s322 * s322)))
+      let !t363 = (t182 * ((if t358 > 0 then (t350 + (negate ((t355 / t357) * t336))) else t350) + (negate s299)))
+      let !t364 = (t356 * (t350 + t350))
+      let !t365 = (negate t354)
+      let !t366 = (t356 * (t351 + t351))
+      let !t367 = (sqrt (((t364 * t364) + (t365 * t365)) + (t366 * t366)))
+      let !t368 = (if t367 > 0 then (recip (if (t367 - 1.0e-300) > 0 then t367 else 1.0e-300)) else 0.0)
+      let !t369 = (t368 * t364)
+      let !t370 = (t368 * t365)
+      let !t371 = (t182 * ((if t358 > 0 then (t353 + (negate ((t355 / t357) * t337))) else t353) + (negate s300)))
+      let !t372 = (t368 * t366)
+      let !t373 = (t182 * ((if t358 > 0 then (t351 + (negate ((t355 / t357) * t338))) else t351) + (negate s301)))
+      let !t374 = (((t369 * t363) + (t370 * t371)) + (t372 * t373))
+      let !t375 = (t363 + (negate (t374 * t369)))
+      let !t376 = (t371 + (negate (t374 * t370)))
+      let !t377 = (t373 + (negate (t374 * t372)))
+      let !t378 = (sqrt (((t375 * t375) + (t376 * t376)) + (t377 * t377)))
+      let !t379 = (if t378 > 0 then (recip (if (t378 - 1.0e-300) > 0 then t378 else 1.0e-300)) else 0.0)
+      let !s380 = ((t134 * (t362 * (t379 * t375))) + (t174 * s320))
+      let !s381 = ((t134 * (t362 * (t379 * t376))) + (t174 * s321))
+      let !s382 = ((t134 * (t362 * (t379 * t377))) + (t174 * s322))
+      t383 <- rdU mouse 4
+      t384 <- rdU mouse 5
+      t385 <- rdU mouse 6
+      t386 <- rdU mouse 7
+      t387 <- rdU mouse 8
+      t388 <- rdU mouse 9
+      let !t389 = (recip t96)
+      let !t390 = (6.283185307179586 * t386)
+      let !s391 = (recip (t98 * ((((2.0 * t389) * t387) * t390) + (t98 * ((t389 * t390) * t390)))))
+      let !s392 = ((t98 * ((t389 * t390) * t390)) * s391)
+      let !s393 = (s359 + (negate t99))
+      let !s394 = (s360 + (negate t100))
+      let !s395 = (s361 + (negate t101))
+      let !s396 = (s359 + (negate t383))
+      let !s397 = (s360 + (negate t384))
+      let !s398 = (s361 + (negate t385))
+      t399 <- rdU mouse 10
+      t400 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t401 <- rdU scalars ((6 * (truncate t95)) + 3)
+      chkI vel (3 * (truncate t95)) 0 2
+      t402 <- rdU vel (3 * (truncate t95))
+      t403 <- rdU vel ((3 * (truncate t95)) + 1)
+      t404 <- rdU vel ((3 * (truncate t95)) + 2)
+      t405 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t402 + ((t400 * t399) * t105))
+      wrU vel ((3 * (truncate t95)) + 1) (t403 + ((t400 * t399) * t106))
+      wrU vel ((3 * (truncate t95)) + 2) (t404 + ((t400 * t399) * t107))
+      wrU scalars ((6 * (truncate t95)) + 1) (t405 + ((t401 * t399) * (((((s394 * t107) - (s395 * t106)) * t102) + (((s395 * t105) - (s393 * t107)) * t103)) + (((s393 * t106) - (s394 * t105)) * t104))))
+      t406 <- rdU mouse 11
+      t407 <- rdU scalars ((6 * (truncate t95)) + 2)
+      t408 <- rdU scalars ((6 * (truncate t95)) + 3)
+      t409 <- rdU vel (3 * (truncate t95))
+      t410 <- rdU vel ((3 * (truncate t95)) + 1)
+      t411 <- rdU vel ((3 * (truncate t95)) + 2)
+      t412 <- rdU scalars ((6 * (truncate t95)) + 1)
+      wrU vel (3 * (truncate t95)) (t409 + ((t407 * t406) * s108))
+      wrU vel ((3 * (truncate t95)) + 1) (t410 + ((t407 * t406) * s109))
+      wrU vel ((3 * (truncate t95)) + 2) (t411 + ((t407 * t406) * s110))
+      wrU scalars ((6 * (truncate t95)) + 1) (t412 + ((t408 * t406) * (((((s394 * s110) - (s395 * s109)) * t102) + (((s395 * s108) - (s393 * s110)) * t103)) + (((s393 * s109) - (s394 * s108)) * t104))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i418 -> do
-    let !d418 = fromIntegral i418 :: Double
-    loopI 0.0 t9 $ \i419 -> do
-      let !d419 = fromIntegral i419 :: Double
-      chkI contacts (30 * i419) 0 26
-      t420 <- rdU contacts (30 * i419)
-      t421 <- rdU contacts ((30 * i419) + 1)
-      t422 <- rdU contacts ((30 * i419) + 12)
-      t423 <- rdU contacts ((30 * i419) + 13)
-      t424 <- rdU contacts ((30 * i419) + 14)
-      t425 <- rdU contacts ((30 * i419) + 15)
-      t426 <- rdU contacts ((30 * i419) + 16)
-      t427 <- rdU contacts ((30 * i419) + 17)
-      t428 <- rdU contacts ((30 * i419) + 18)
-      t429 <- rdU contacts ((30 * i419) + 19)
-      t430 <- rdU contacts ((30 * i419) + 4)
-      t431 <- rdU contacts ((30 * i419) + 5)
-      t432 <- rdU contacts ((30 * i419) + 6)
-      t433 <- rdU contacts ((30 * i419) + 7)
-      t434 <- rdU contacts ((30 * i419) + 8)
-      t435 <- rdU contacts ((30 * i419) + 9)
-      t436 <- rdU contacts ((30 * i419) + 10)
-      t437 <- rdU contacts ((30 * i419) + 11)
-      t438 <- rdU contacts ((30 * i419) + 26)
-      t439 <- rdU contacts ((30 * i419) + 24)
-      t440 <- rdU contacts ((30 * i419) + 25)
-      t441 <- rdU contacts ((30 * i419) + 22)
-      t442 <- rdU contacts ((30 * i419) + 21)
-      t443 <- rdU contacts ((30 * i419) + 23)
-      let !s444 = (if (negate t421) > 0 then 0.0 else t421)
-      let !s445 = (t421 + 0.5)
-      let !s446 = (if (0.5 - (abs (t420 - t421))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t420)) 1 3
-      t447 <- rdU scalars ((6 * (truncate t420)) + 2)
-      t448 <- rdU scalars ((6 * (truncate t420)) + 3)
-      chkI scalars (6 * (truncate s444)) 1 3
-      t449 <- rdU scalars ((6 * (truncate s444)) + 2)
-      t450 <- rdU scalars ((6 * (truncate s444)) + 3)
-      chkI vel (3 * (truncate t420)) 0 2
-      t451 <- rdU vel (3 * (truncate t420))
-      t452 <- rdU vel ((3 * (truncate t420)) + 1)
-      t453 <- rdU vel ((3 * (truncate t420)) + 2)
-      t454 <- rdU scalars ((6 * (truncate t420)) + 1)
-      chkI vel (3 * (truncate s444)) 0 2
-      t455 <- rdU vel (3 * (truncate s444))
-      t456 <- rdU vel ((3 * (truncate s444)) + 1)
-      t457 <- rdU vel ((3 * (truncate s444)) + 2)
-      t458 <- rdU scalars ((6 * (truncate s444)) + 1)
-      let !s459 = (((((t422 * t451) + (t423 * t452)) + (t424 * t453)) + (t425 * t454)) - (if s445 > 0 then ((((t426 * t455) + (t427 * t456)) + (t428 * t457)) + (t429 * t458)) else 0.0))
-      let !t460 = (t2 * t439)
-      let !t461 = (negate t460)
-      let !t462 = (t440 - ((t438 * s459) * t441))
-      let !t463 = (if (t462 - t460) > 0 then t460 else t462)
-      let !t464 = (if (t461 - t463) > 0 then t461 else t463)
-      let !s465 = (if (1.0 - (abs (t464 - t464))) > 0 then t464 else 0.0)
-      wrU contacts ((30 * i419) + 25) s465
-      let !t466 = (t447 * (s465 - t440))
-      let !s467 = (t466 * t422)
-      let !s468 = (t466 * t423)
-      let !s469 = (t466 * t424)
-      let !s470 = ((t448 * (s465 - t440)) * t425)
-      let !t471 = (t449 * (negate (s465 - t440)))
-      let !s472 = (t471 * t426)
-      let !s473 = (t471 * t427)
-      let !s474 = (t471 * t428)
-      let !s475 = ((t450 * (negate (s465 - t440))) * t429)
-      let !s476 = ((t451 + s467) + (s446 * s472))
-      let !s477 = ((t452 + s468) + (s446 * s473))
-      let !s478 = ((t453 + s469) + (s446 * s474))
-      let !s479 = ((t454 + s470) + (s446 * s475))
-      let !s480 = ((t455 + s472) + (s446 * s467))
-      let !s481 = ((t456 + s473) + (s446 * s468))
-      let !s482 = ((t457 + s474) + (s446 * s469))
-      let !s483 = ((t458 + s475) + (s446 * s470))
-      let !s484 = (((((t430 * s476) + (t431 * s477)) + (t432 * s478)) + (t433 * s479)) - (if s445 > 0 then ((((t434 * s480) + (t435 * s481)) + (t436 * s482)) + (t437 * s483)) else 0.0))
-      let !t485 = (t439 + ((t438 * (t443 - s484)) * t442))
-      let !t486 = (if (negate t485) > 0 then 0.0 else t485)
-      let !s487 = (if (1.0 - (abs (t486 - t486))) > 0 then t486 else 0.0)
-      wrU contacts ((30 * i419) + 24) s487
-      let !t488 = (t447 * (s487 - t439))
-      let !s489 = (t488 * t430)
-      let !s490 = (t488 * t431)
-      let !s491 = (t488 * t432)
-      let !s492 = ((t448 * (s487 - t439)) * t433)
-      let !t493 = (t449 * (negate (s487 - t439)))
-      let !s494 = (t493 * t434)
-      let !s495 = (t493 * t435)
-      let !s496 = (t493 * t436)
-      let !s497 = ((t450 * (negate (s487 - t439))) * t437)
-      let !s498 = ((s476 + s489) + (s446 * s494))
-      let !s499 = ((s477 + s490) + (s446 * s495))
-      let !s500 = ((s478 + s491) + (s446 * s496))
-      let !s501 = ((s479 + s492) + (s446 * s497))
-      let !s502 = ((s480 + s494) + (s446 * s489))
-      let !s503 = ((s481 + s495) + (s446 * s490))
-      let !s504 = ((s482 + s496) + (s446 * s491))
-      let !s505 = ((s483 + s497) + (s446 * s492))
-      wrU vel (3 * (truncate t420)) s498
-      wrU vel ((3 * (truncate t420)) + 1) s499
-      wrU vel ((3 * (truncate t420)) + 2) s500
-      wrU scalars ((6 * (truncate t420)) + 1) s501
-      if s445 > 0 then do
-        wrU vel (3 * (truncate s444)) s502
-        wrU vel ((3 * (truncate s444)) + 1) s503
-        wrU vel ((3 * (truncate s444)) + 2) s504
-        wrU scalars ((6 * (truncate s444)) + 1) s505
+  loopI 0.0 t1 $ \i413 -> do
+    let !d413 = fromIntegral i413 :: Double
+    loopI 0.0 t9 $ \i414 -> do
+      let !d414 = fromIntegral i414 :: Double
+      chkI contacts (30 * i414) 0 26
+      t415 <- rdU contacts (30 * i414)
+      t416 <- rdU contacts ((30 * i414) + 1)
+      t417 <- rdU contacts ((30 * i414) + 12)
+      t418 <- rdU contacts ((30 * i414) + 13)
+      t419 <- rdU contacts ((30 * i414) + 14)
+      t420 <- rdU contacts ((30 * i414) + 15)
+      t421 <- rdU contacts ((30 * i414) + 16)
+      t422 <- rdU contacts ((30 * i414) + 17)
+      t423 <- rdU contacts ((30 * i414) + 18)
+      t424 <- rdU contacts ((30 * i414) + 19)
+      t425 <- rdU contacts ((30 * i414) + 4)
+      t426 <- rdU contacts ((30 * i414) + 5)
+      t427 <- rdU contacts ((30 * i414) + 6)
+      t428 <- rdU contacts ((30 * i414) + 7)
+      t429 <- rdU contacts ((30 * i414) + 8)
+      t430 <- rdU contacts ((30 * i414) + 9)
+      t431 <- rdU contacts ((30 * i414) + 10)
+      t432 <- rdU contacts ((30 * i414) + 11)
+      t433 <- rdU contacts ((30 * i414) + 26)
+      t434 <- rdU contacts ((30 * i414) + 24)
+      t435 <- rdU contacts ((30 * i414) + 25)
+      t436 <- rdU contacts ((30 * i414) + 22)
+      t437 <- rdU contacts ((30 * i414) + 21)
+      t438 <- rdU contacts ((30 * i414) + 23)
+      let !s439 = (if (negate t416) > 0 then 0.0 else t416)
+      let !s440 = (t416 + 0.5)
+      let !s441 = (if (0.5 - (abs (t415 - t416))) > 0 then 1.0 else 0.0)
+      chkI scalars (6 * (truncate t415)) 1 3
+      t442 <- rdU scalars ((6 * (truncate t415)) + 2)
+      t443 <- rdU scalars ((6 * (truncate t415)) + 3)
+      chkI scalars (6 * (truncate s439)) 1 3
+      t444 <- rdU scalars ((6 * (truncate s439)) + 2)
+      t445 <- rdU scalars ((6 * (truncate s439)) + 3)
+      chkI vel (3 * (truncate t415)) 0 2
+      t446 <- rdU vel (3 * (truncate t415))
+      t447 <- rdU vel ((3 * (truncate t415)) + 1)
+      t448 <- rdU vel ((3 * (truncate t415)) + 2)
+      t449 <- rdU scalars ((6 * (truncate t415)) + 1)
+      chkI vel (3 * (truncate s439)) 0 2
+      t450 <- rdU vel (3 * (truncate s439))
+      t451 <- rdU vel ((3 * (truncate s439)) + 1)
+      t452 <- rdU vel ((3 * (truncate s439)) + 2)
+      t453 <- rdU scalars ((6 * (truncate s439)) + 1)
+      let !s454 = (((((t417 * t446) + (t418 * t447)) + (t419 * t448)) + (t420 * t449)) - (if s440 > 0 then ((((t421 * t450) + (t422 * t451)) + (t423 * t452)) + (t424 * t453)) else 0.0))
+      let !t455 = (t2 * t434)
+      let !t456 = (negate t455)
+      let !t457 = (t435 - ((t433 * s454) * t436))
+      let !t458 = (if (t457 - t455) > 0 then t455 else t457)
+      let !t459 = (if (t456 - t458) > 0 then t456 else t458)
+      let !s460 = (if (1.0 - (abs (t459 - t459))) > 0 then t459 else 0.0)
+      wrU contacts ((30 * i414) + 25) s460
+      let !t461 = (t442 * (s460 - t435))
+      let !s462 = (t461 * t417)
+      let !s463 = (t461 * t418)
+      let !s464 = (t461 * t419)
+      let !s465 = ((t443 * (s460 - t435)) * t420)
+      let !t466 = (t444 * (negate (s460 - t435)))
+      let !s467 = (t466 * t421)
+      let !s468 = (t466 * t422)
+      let !s469 = (t466 * t423)
+      let !s470 = ((t445 * (negate (s460 - t435))) * t424)
+      let !s471 = ((t446 + s462) + (s441 * s467))
+      let !s472 = ((t447 + s463) + (s441 * s468))
+      let !s473 = ((t448 + s464) + (s441 * s469))
+      let !s474 = ((t449 + s465) + (s441 * s470))
+      let !s475 = ((t450 + s467) + (s441 * s462))
+      let !s476 = ((t451 + s468) + (s441 * s463))
+      let !s477 = ((t452 + s469) + (s441 * s464))
+      let !s478 = ((t453 + s470) + (s441 * s465))
+      let !s479 = (((((t425 * s471) + (t426 * s472)) + (t427 * s473)) + (t428 * s474)) - (if s440 > 0 then ((((t429 * s475) + (t430 * s476)) + (t431 * s477)) + (t432 * s478)) else 0.0))
+      let !t480 = (t434 + ((t433 * (t438 - s479)) * t437))
+      let !t481 = (if (negate t480) > 0 then 0.0 else t480)
+      let !s482 = (if (1.0 - (abs (t481 - t481))) > 0 then t481 else 0.0)
+      wrU contacts ((30 * i414) + 24) s482
+      let !t483 = (t442 * (s482 - t434))
+      let !s484 = (t483 * t425)
+      let !s485 = (t483 * t426)
+      let !s486 = (t483 * t427)
+      let !s487 = ((t443 * (s482 - t434)) * t428)
+      let !t488 = (t444 * (negate (s482 - t434)))
+      let !s489 = (t488 * t429)
+      let !s490 = (t488 * t430)
+      let !s491 = (t488 * t431)
+      let !s492 = ((t445 * (negate (s482 - t434))) * t432)
+      let !s493 = ((s471 + s484) + (s441 * s489))
+      let !s494 = ((s472 + s485) + (s441 * s490))
+      let !s495 = ((s473 + s486) + (s441 * s491))
+      let !s496 = ((s474 + s487) + (s441 * s492))
+      let !s497 = ((s475 + s489) + (s441 * s484))
+      let !s498 = ((s476 + s490) + (s441 * s485))
+      let !s499 = ((s477 + s491) + (s441 * s486))
+      let !s500 = ((s478 + s492) + (s441 * s487))
+      wrU vel (3 * (truncate t415)) s493
+      wrU vel ((3 * (truncate t415)) + 1) s494
+      wrU vel ((3 * (truncate t415)) + 2) s495
+      wrU scalars ((6 * (truncate t415)) + 1) s496
+      if s440 > 0 then do
+        wrU vel (3 * (truncate s439)) s497
+        wrU vel ((3 * (truncate s439)) + 1) s498
+        wrU vel ((3 * (truncate s439)) + 2) s499
+        wrU scalars ((6 * (truncate s439)) + 1) s500
         pure ()
       else do
         pure ()
       pure ()
-    t506 <- rdU mouse 0
-    if t506 > 0 then do
+    t501 <- rdU mouse 0
+    if t501 > 0 then do
       chkI mouse 0 1 1
-      t507 <- rdU mouse 1
-      chkI scalars (6 * (truncate t507)) 2 2
-      t508 <- rdU scalars ((6 * (truncate t507)) + 2)
-      if t508 > 0 then do
-        chkI scalars (6 * (truncate t507)) 0 5
-        t509 <- rdU scalars ((6 * (truncate t507)) + 3)
-        t510 <- rdU params 0
-        chkI pos (3 * (truncate t507)) 0 2
-        t511 <- rdU pos (3 * (truncate t507))
-        t512 <- rdU pos ((3 * (truncate t507)) + 1)
-        t513 <- rdU pos ((3 * (truncate t507)) + 2)
-        chkI normal (3 * (truncate t507)) 0 2
-        t514 <- rdU normal (3 * (truncate t507))
-        t515 <- rdU normal ((3 * (truncate t507)) + 1)
-        t516 <- rdU normal ((3 * (truncate t507)) + 2)
-        chkI axis (3 * (truncate t507)) 0 2
-        t517 <- rdU axis (3 * (truncate t507))
-        t518 <- rdU axis ((3 * (truncate t507)) + 1)
-        t519 <- rdU axis ((3 * (truncate t507)) + 2)
-        let !s520 = ((t515 * t519) - (t516 * t518))
-        let !s521 = ((t516 * t517) - (t514 * t519))
-        let !s522 = ((t514 * t518) - (t515 * t517))
-        t523 <- rdU scalars (6 * (truncate t507))
-        t524 <- rdU scalars ((6 * (truncate t507)) + 5)
-        t525 <- rdU scalars ((6 * (truncate t507)) + 2)
-        t526 <- rdU scalars ((6 * (truncate t507)) + 3)
-        t527 <- rdU pos (3 * (truncate t507))
-        t528 <- rdU pos ((3 * (truncate t507)) + 1)
-        t529 <- rdU pos ((3 * (truncate t507)) + 2)
-        t530 <- rdU normal (3 * (truncate t507))
-        t531 <- rdU normal ((3 * (truncate t507)) + 1)
-        t532 <- rdU normal ((3 * (truncate t507)) + 2)
-        t533 <- rdU axis (3 * (truncate t507))
-        t534 <- rdU axis ((3 * (truncate t507)) + 1)
-        t535 <- rdU axis ((3 * (truncate t507)) + 2)
-        let !s536 = ((t531 * t535) - (t532 * t534))
-        let !s537 = ((t532 * t533) - (t530 * t535))
-        let !s538 = ((t530 * t534) - (t531 * t533))
-        t539 <- rdU scalars (6 * (truncate t507))
-        t540 <- rdU scalars ((6 * (truncate t507)) + 5)
-        t541 <- rdU scalars ((6 * (truncate t507)) + 2)
-        t542 <- rdU scalars ((6 * (truncate t507)) + 3)
+      t502 <- rdU mouse 1
+      chkI scalars (6 * (truncate t502)) 2 2
+      t503 <- rdU scalars ((6 * (truncate t502)) + 2)
+      if t503 > 0 then do
+        chkI scalars (6 * (truncate t502)) 0 5
+        t504 <- rdU scalars ((6 * (truncate t502)) + 3)
+        t505 <- rdU params 0
+        chkI pos (3 * (truncate t502)) 0 2
+        t506 <- rdU pos (3 * (truncate t502))
+        t507 <- rdU pos ((3 * (truncate t502)) + 1)
+        t508 <- rdU pos ((3 * (truncate t502)) + 2)
+        chkI normal (3 * (truncate t502)) 0 2
+        t509 <- rdU normal (3 * (truncate t502))
+        t510 <- rdU normal ((3 * (truncate t502)) + 1)
+        t511 <- rdU normal ((3 * (truncate t502)) + 2)
+        chkI axis (3 * (truncate t502)) 0 2
+        t512 <- rdU axis (3 * (truncate t502))
+        t513 <- rdU axis ((3 * (truncate t502)) + 1)
+        t514 <- rdU axis ((3 * (truncate t502)) + 2)
+        let !s515 = ((t510 * t514) - (t511 * t513))
+        let !s516 = ((t511 * t512) - (t509 * t514))
+        let !s517 = ((t509 * t513) - (t510 * t512))
+        t518 <- rdU scalars (6 * (truncate t502))
+        t519 <- rdU scalars ((6 * (truncate t502)) + 5)
+        t520 <- rdU scalars ((6 * (truncate t502)) + 2)
+        t521 <- rdU scalars ((6 * (truncate t502)) + 3)
+        t522 <- rdU pos (3 * (truncate t502))
+        t523 <- rdU pos ((3 * (truncate t502)) + 1)
+        t524 <- rdU pos ((3 * (truncate t502)) + 2)
+        t525 <- rdU normal (3 * (truncate t502))
+        t526 <- rdU normal ((3 * (truncate t502)) + 1)
+        t527 <- rdU normal ((3 * (truncate t502)) + 2)
+        t528 <- rdU axis (3 * (truncate t502))
+        t529 <- rdU axis ((3 * (truncate t502)) + 1)
+        t530 <- rdU axis ((3 * (truncate t502)) + 2)
+        let !s531 = ((t526 * t530) - (t527 * t529))
+        let !s532 = ((t527 * t528) - (t525 * t530))
+        let !s533 = ((t525 * t529) - (t526 * t528))
+        t534 <- rdU scalars (6 * (truncate t502))
+        t535 <- rdU scalars ((6 * (truncate t502)) + 5)
+        t536 <- rdU scalars ((6 * (truncate t502)) + 2)
+        t537 <- rdU scalars ((6 * (truncate t502)) + 3)
         chkI mouse 0 2 11
-        t543 <- rdU mouse 2
-        t544 <- rdU mouse 3
-        let !t545 = (t543 / 4.0)
-        let !t546 = (if (abs t545) > 0 then 1.0 else 0.0)
-        let !t547 = (t539 + t544)
-        let !t548 = (cos t547)
-        let !t549 = (sin t547)
-        let !t550 = (t527 + (t545 * ((t548 * t533) + (t549 * s536))))
-        let !t551 = (t529 + (t545 * ((t548 * t535) + (t549 * s538))))
-        let !t552 = (sqrt ((t550 * t550) + (t551 * t551)))
-        let !t553 = (t528 + (t545 * ((t548 * t534) + (t549 * s537))))
-        let !t554 = (exp t553)
-        let !t555 = (t552 - t554)
-        let !t556 = (recip (2.0 * t552))
-        let !t557 = (recip (2.0 * (sqrt ((t527 * t527) + (t529 * t529)))))
-        let !t558 = (t557 * (t527 + t527))
-        let !t559 = (negate (exp t528))
-        let !t560 = (t557 * (t529 + t529))
-        let !t561 = (sqrt (((t558 * t558) + (t559 * t559)) + (t560 * t560)))
-        let !t562 = (if t561 > 0 then (recip (if (t561 - 1.0e-300) > 0 then t561 else 1.0e-300)) else 0.0)
-        let !t563 = (t562 * t558)
-        let !t564 = (t562 * t559)
-        let !t565 = (t562 * t560)
-        let !t566 = ((((t556 * (t550 + t550)) * t563) + ((negate t554) * t564)) + ((t556 * (t551 + t551)) * t565))
-        let !t567 = (if ((abs t555) - 1.0e-10) > 0 then (if (abs t566) > 0 then 1.0 else 0.0) else 0.0)
-        let !t568 = (if t567 > 0 then (t550 + (negate ((t555 / t566) * t563))) else t550)
-        let !t569 = (if t567 > 0 then (t551 + (negate ((t555 / t566) * t565))) else t551)
-        let !t570 = (sqrt ((t568 * t568) + (t569 * t569)))
-        let !t571 = (if t567 > 0 then (t553 + (negate ((t555 / t566) * t564))) else t553)
-        let !t572 = (exp t571)
-        let !t573 = (t570 - t572)
-        let !t574 = (recip (2.0 * t570))
-        let !t575 = ((((t574 * (t568 + t568)) * t563) + ((negate t572) * t564)) + ((t574 * (t569 + t569)) * t565))
-        let !t576 = (if ((abs t573) - 1.0e-10) > 0 then (if (abs t575) > 0 then 1.0 else 0.0) else 0.0)
-        let !t577 = (if t576 > 0 then (t568 + (negate ((t573 / t575) * t563))) else t568)
-        let !t578 = (if t576 > 0 then (t569 + (negate ((t573 / t575) * t565))) else t569)
-        let !t579 = (sqrt ((t577 * t577) + (t578 * t578)))
-        let !t580 = (if t576 > 0 then (t571 + (negate ((t573 / t575) * t564))) else t571)
-        let !t581 = (exp t580)
-        let !t582 = (t579 - t581)
-        let !t583 = (recip (2.0 * t579))
-        let !t584 = ((((t583 * (t577 + t577)) * t563) + ((negate t581) * t564)) + ((t583 * (t578 + t578)) * t565))
-        let !t585 = (if ((abs t582) - 1.0e-10) > 0 then (if (abs t584) > 0 then 1.0 else 0.0) else 0.0)
-        let !t586 = (1.0 - t546)
-        let !s587 = ((t546 * (if t585 > 0 then (t577 + (negate ((t582 / t584) * t563))) else t577)) + (t586 * t527))
-        let !s588 = ((t546 * (if t585 > 0 then (t580 + (negate ((t582 / t584) * t564))) else t580)) + (t586 * t528))
-        let !s589 = ((t546 * (if t585 > 0 then (t578 + (negate ((t582 / t584) * t565))) else t578)) + (t586 * t529))
-        let !t590 = ((t548 * t533) + (t549 * s536))
-        let !t591 = ((t548 * t534) + (t549 * s537))
-        let !t592 = ((t548 * t535) + (t549 * s538))
-        let !t593 = (sqrt (((t590 * t590) + (t591 * t591)) + (t592 * t592)))
-        let !t594 = (if (abs t545) > 0 then (recip t545) else 0.0)
-        let !t595 = (t594 * ((if t585 > 0 then (t577 + (negate ((t582 / t584) * t563))) else t577) + (negate t527)))
-        let !t596 = (t583 * (t577 + t577))
-        let !t597 = (negate t581)
-        let !t598 = (t583 * (t578 + t578))
-        let !t599 = (sqrt (((t596 * t596) + (t597 * t597)) + (t598 * t598)))
-        let !t600 = (if t599 > 0 then (recip (if (t599 - 1.0e-300) > 0 then t599 else 1.0e-300)) else 0.0)
-        let !t601 = (t600 * t596)
-        let !t602 = (t600 * t597)
-        let !t603 = (t594 * ((if t585 > 0 then (t580 + (negate ((t582 / t584) * t564))) else t580) + (negate t528)))
-        let !t604 = (t600 * t598)
-        let !t605 = (t594 * ((if t585 > 0 then (t578 + (negate ((t582 / t584) * t565))) else t578) + (negate t529)))
-        let !t606 = (((t601 * t595) + (t602 * t603)) + (t604 * t605))
-        let !t607 = (t595 + (negate (t606 * t601)))
-        let !t608 = (t603 + (negate (t606 * t602)))
-        let !t609 = (t605 + (negate (t606 * t604)))
-        let !t610 = (sqrt (((t607 * t607) + (t608 * t608)) + (t609 * t609)))
-        let !t611 = (if t610 > 0 then (recip (if (t610 - 1.0e-300) > 0 then t610 else 1.0e-300)) else 0.0)
-        let !s612 = ((t546 * (t593 * (t611 * t607))) + (t586 * t590))
-        let !s613 = ((t546 * (t593 * (t611 * t608))) + (t586 * t591))
-        let !s614 = ((t546 * (t593 * (t611 * t609))) + (t586 * t592))
-        let !t615 = (s587 + (t545 * s612))
-        let !t616 = (s589 + (t545 * s614))
-        let !t617 = (sqrt ((t615 * t615) + (t616 * t616)))
-        let !t618 = (s588 + (t545 * s613))
-        let !t619 = (exp t618)
-        let !t620 = (t617 - t619)
-        let !t621 = (recip (2.0 * t617))
-        let !t622 = (recip (2.0 * (sqrt ((s587 * s587) + (s589 * s589)))))
-        let !t623 = (t622 * (s587 + s587))
-        let !t624 = (negate (exp s588))
-        let !t625 = (t622 * (s589 + s589))
-        let !t626 = (sqrt (((t623 * t623) + (t624 * t624)) + (t625 * t625)))
-        let !t627 = (if t626 > 0 then (recip (if (t626 - 1.0e-300) > 0 then t626 else 1.0e-300)) else 0.0)
-        let !t628 = (t627 * t623)
-        let !t629 = (t627 * t624)
-        let !t630 = (t627 * t625)
-        let !t631 = ((((t621 * (t615 + t615)) * t628) + ((negate t619) * t629)) + ((t621 * (t616 + t616)) * t630))
-        let !t632 = (if ((abs t620) - 1.0e-10) > 0 then (if (abs t631) > 0 then 1.0 else 0.0) else 0.0)
-        let !t633 = (if t632 > 0 then (t615 + (negate ((t620 / t631) * t628))) else t615)
-        let !t634 = (if t632 > 0 then (t616 + (negate ((t620 / t631) * t630))) else t616)
-        let !t635 = (sqrt ((t633 * t633) + (t634 * t634)))
-        let !t636 = (if t632 > 0 then (t618 + (negate ((t620 / t631) * t629))) else t618)
-        let !t637 = (exp t636)
-        let !t638 = (t635 - t637)
-        let !t639 = (recip (2.0 * t635))
-        let !t640 = ((((t639 * (t633 + t633)) * t628) + ((negate t637) * t629)) + ((t639 * (t634 + t634)) * t630))
-        let !t641 = (if ((abs t638) - 1.0e-10) > 0 then (if (abs t640) > 0 then 1.0 else 0.0) else 0.0)
-        let !t642 = (if t641 > 0 then (t633 + (negate ((t638 / t640) * t628))) else t633)
-        let !t643 = (if t641 > 0 then (t634 + (negate ((t638 / t640) * t630))) else t634)
-        let !t644 = (sqrt ((t642 * t642) + (t643 * t643)))
-        let !t645 = (if t641 > 0 then (t636 + (negate ((t638 / t640) * t629))) else t636)
-        let !t646 = (exp t645)
-        let !t647 = (t644 - t646)
-        let !t648 = (recip (2.0 * t644))
-        let !t649 = ((((t648 * (t642 + t642)) * t628) + ((negate t646) * t629)) + ((t648 * (t643 + t643)) * t630))
-        let !t650 = (if ((abs t647) - 1.0e-10) > 0 then (if (abs t649) > 0 then 1.0 else 0.0) else 0.0)
-        let !s651 = ((t546 * (if t650 > 0 then (t642 + (negate ((t647 / t649) * t628))) else t642)) + (t586 * s587))
-        let !s652 = ((t546 * (if t650 > 0 then (t645 + (negate ((t647 / t649) * t629))) else t645)) + (t586 * s588))
-        let !s653 = ((t546 * (if t650 > 0 then (t643 + (negate ((t647 / t649) * t630))) else t643)) + (t586 * s589))
-        let !t654 = (sqrt (((s612 * s612) + (s613 * s613)) + (s614 * s614)))
-        let !t655 = (t594 * ((if t650 > 0 then (t642 + (negate ((t647 / t649) * t628))) else t642) + (negate s587)))
-        let !t656 = (t648 * (t642 + t642))
-        let !t657 = (negate t646)
-        let !t658 = (t648 * (t643 + t643))
-        let !t659 = (sqrt (((t656 * t656) + (t657 * t657)) + (t658 * t658)))
-        let !t660 = (if t659 > 0 then (recip (if (t659 - 1.0e-300) > 0 then t659 else 1.0e-300)) else 0.0)
-        let !t661 = (t660 * t656)
-        let !t662 = (t660 * t657)
-        let !t663 = (t594 * ((if t650 > 0 then (t645 + (negate ((t647 / t649) * t629))) else t645) + (negate s588)))
-        let !t664 = (t660 * t658)
-        let !t665 = (t594 * ((if t650 > 0 then (t643 + (negate ((t647 / t649) * t630))) else t643) + (negate s589)))
-        let !t666 = (((t661 * t655) + (t662 * t663)) + (t664 * t665))
-        let !t667 = (t655 + (negate (t666 * t661)))
-        let !t668 = (t663 + (negate (t666 * t662)))
-        let !t669 = (t665 + (negate (t666 * t664)))
-        let !t670 = (sqrt (((t667 * t667) + (t668 * t668)) + (t669 * t669)))
-        let !t671 = (if t670 > 0 then (recip (if (t670 - 1.0e-300) > 0 then t670 else 1.0e-300)) else 0.0)
-        let !s672 = ((t546 * (t654 * (t671 * t667))) + (t586 * s612))
-        let !s673 = ((t546 * (t654 * (t671 * t668))) + (t586 * s613))
-        let !s674 = ((t546 * (t654 * (t671 * t669))) + (t586 * s614))
-        let !t675 = (s651 + (t545 * s672))
-        let !t676 = (s653 + (t545 * s674))
-        let !t677 = (sqrt ((t675 * t675) + (t676 * t676)))
-        let !t678 = (s652 + (t545 * s673))
-        let !t679 = (exp t678)
-        let !t680 = (t677 - t679)
-        let !t681 = (recip (2.0 * t677))
-        let !t682 = (recip (2.0 * (sqrt ((s651 * s651) + (s653 * s653)))))
-        let !t683 = (t682 * (s651 + s651))
-        let !t684 = (negate (exp s652))
-        let !t685 = (t682 * (s653 + s653))
-        let !t686 = (sqrt (((t683 * t683) + (t684 * t684)) + (t685 * t685)))
-        let !t687 = (if t686 > 0 then (recip (if (t686 - 1.0e-300) > 0 then t686 else 1.0e-300)) else 0.0)
-        let !t688 = (t687 * t683)
-        let !t689 = (t687 * t684)
-        let !t690 = (t687 * t685)
-        let !t691 = ((((t681 * (t675 + t675)) * t688) + ((negate t679) * t689)) + ((t681 * (t676 + t676)) * t690))
-        let !t692 = (if ((abs t680) - 1.0e-10) > 0 then (if (abs t691) > 0 then 1.0 else 0.0) else 0.0)
-        let !t693 = (if t692 > 0 then (t675 + (negate ((t680 / t691) * t688))) else t675)
-        let !t694 = (if t692 > 0 then (t676 + (negate ((t680 / t691) * t690))) else t676)
-        let !t695 = (sqrt ((t693 * t693) + (t694 * t694)))
-        let !t696 = (if t692 > 0 then (t678 + (negate ((t680 / t691) * t689))) else t678)
-        let !t697 = (exp t696)
-        let !t698 = (t695 - t697)
-        let !t699 = (recip (2.0 * t695))
-        let !t700 = ((((t699 * (t693 + t693)) * t688) + ((negate t697) * t689)) + ((t699 * (t694 + t694)) * t690))
-        let !t701 = (if ((abs t698) - 1.0e-10) > 0 then (if (abs t700) > 0 then 1.0 else 0.0) else 0.0)
-        let !t702 = (if t701 > 0 then (t693 + (negate ((t698 / t700) * t688))) else t693)
-        let !t703 = (if t701 > 0 then (t694 + (negate ((t698 / t700) * t690))) else t694)
-        let !t704 = (sqrt ((t702 * t702) + (t703 * t703)))
-        let !t705 = (if t701 > 0 then (t696 + (negate ((t698 / t700) * t689))) else t696)
-        let !t706 = (exp t705)
-        let !t707 = (t704 - t706)
-        let !t708 = (recip (2.0 * t704))
-        let !t709 = ((((t708 * (t702 + t702)) * t688) + ((negate t706) * t689)) + ((t708 * (t703 + t703)) * t690))
-        let !t710 = (if ((abs t707) - 1.0e-10) > 0 then (if (abs t709) > 0 then 1.0 else 0.0) else 0.0)
-        let !s711 = ((t546 * (if t710 > 0 then (t702 + (negate ((t707 / t709) * t688))) else t702)) + (t586 * s651))
-        let !s712 = ((t546 * (if t710 > 0 then (t705 + (negate ((t707 / t709) * t689))) else t705)) + (t586 * s652))
-        let !s713 = ((t546 * (if t710 > 0 then (t703 + (negate ((t707 / t709) * t690))) else t703)) + (t586 * s653))
-        let !t714 = (sqrt (((s672 * s672) + (s673 * s673)) + (s674 * s674)))
-        let !t715 = (t594 * ((if t710 > 0 then (t702 + (negate ((t707 / t709) * t688))) else t702) + (negate s651)))
-        let !t716 = (t708 * (t702 + t702))
-        let !t717 = (negate t706)
-        let !t718 = (t708 * (t703 + t703))
-        let !t719 = (sqrt (((t716 * t716) + (t717 * t717)) + (t718 * t718)))
-        let !t720 = (if t719 > 0 then (recip (if (t719 - 1.0e-300) > 0 then t719 else 1.0e-300)) else 0.0)
-        let !t721 = (t720 * t716)
-        let !t722 = (t720 * t717)
-        let !t723 = (t594 * ((if t710 > 0 then (t705 + (negate ((t707 / t709) * t689))) else t705) + (negate s652)))
-        let !t724 = (t720 * t718)
-        let !t725 = (t594 * ((if t710 > 0 then (t703 + (negate ((t707 / t709) * t690))) else t703) + (negate s653)))
-        let !t726 = (((t721 * t715) + (t722 * t723)) + (t724 * t725))
-        let !t727 = (t715 + (negate (t726 * t721)))
-        let !t728 = (t723 + (negate (t726 * t722)))
-        let !t729 = (t725 + (negate (t726 * t724)))
-        let !t730 = (sqrt (((t727 * t727) + (t728 * t728)) + (t729 * t729)))
-        let !t731 = (if t730 > 0 then (recip (if (t730 - 1.0e-300) > 0 then t730 else 1.0e-300)) else 0.0)
-        let !s732 = ((t546 * (t714 * (t731 * t727))) + (t586 * s672))
-        let !s733 = ((t546 * (t714 * (t731 * t728))) + (t586 * s673))
-        let !s734 = ((t546 * (t714 * (t731 * t729))) + (t586 * s674))
-        let !t735 = (s711 + (t545 * s732))
-        let !t736 = (s713 + (t545 * s734))
-        let !t737 = (sqrt ((t735 * t735) + (t736 * t736)))
-        let !t738 = (s712 + (t545 * s733))
-        let !t739 = (exp t738)
-        let !t740 = (t737 - t739)
-        let !t741 = (recip (2.0 * t737))
-        let !t742 = (recip (2.0 * (sqrt ((s711 * s711) + (s713 * s713)))))
-        let !t743 = (t742 * (s711 + s711))
-        let !t744 = (negate (exp s712))
-        let !t745 = (t742 * (s713 + s713))
-        let !t746 = (sqrt (((t743 * t743) + (t744 * t744)) + (t745 * t745)))
-        let !t747 = (if t746 > 0 then (recip (if (t746 - 1.0e-300) > 0 then t746 else 1.0e-300)) else 0.0)
-        let !t748 = (t747 * t743)
-        let !t749 = (t747 * t744)
-        let !t750 = (t747 * t745)
-        let !t751 = ((((t741 * (t735 + t735)) * t748) + ((negate t739) * t749)) + ((t741 * (t736 + t736)) * t750))
-        let !t752 = (if ((abs t740) - 1.0e-10) > 0 then (if (abs t751) > 0 then 1.0 else 0.0) else 0.0)
-        let !t753 = (if t752 > 0 then (t735 + (negate ((t740 / t751) * t748))) else t735)
-        let !t754 = (if t752 > 0 then (t736 + (negate ((t740 / t751) * t750))) else t736)
-        let !t755 = (sqrt ((t753 * t753) + (t754 * t754)))
-        let !t756 = (if t752 > 0 then (t738 + (negate ((t740 / t751) * t749))) else t738)
-        let !t757 = (exp t756)
-        let !t758 = (t755 - t757)
-        let !t759 = (recip (2.0 * t755))
-        let !t760 = ((((t759 * (t753 + t753)) * t748) + ((negate t757) * t749)) + ((t759 * (t754 + t754)) * t750))
-        let !t761 = (if ((abs t758) - 1.0e-10) > 0 then (if (abs t760) > 0 then 1.0 else 0.0) else 0.0)
-        let !t762 = (if t761 > 0 then (t753 + (negate ((t758 / t760) * t748))) else t753)
-        let !t763 = (if t761 > 0 then (t754 + (negate ((t758 / t760) * t750))) else t754)
-        let !t764 = (sqrt ((t762 * t762) + (t763 * t763)))
-        let !t765 = (if t761 > 0 then (t756 + (negate ((t758 / t760) * t749))) else t756)
-        let !t766 = (exp t765)
-        let !t767 = (t764 - t766)
-        let !t768 = (recip (2.0 * t764))
-        let !t769 = ((((t768 * (t762 + t762)) * t748) + ((negate t766) * t749)) + ((t768 * (t763 + t763)) * t750))
-        let !t770 = (if ((abs t767) - 1.0e-10) > 0 then (if (abs t769) > 0 then 1.0 else 0.0) else 0.0)
-        let !s771 = ((t546 * (if t770 > 0 then (t762 + (negate ((t767 / t769) * t748))) else t762)) + (t586 * s711))
-        let !s772 = ((t546 * (if t770 > 0 then (t765 + (negate ((t767 / t769) * t749))) else t765)) + (t586 * s712))
-        let !s773 = ((t546 * (if t770 > 0 then (t763 + (negate ((t767 / t769) * t750))) else t763)) + (t586 * s713))
-        let !t774 = (sqrt (((s732 * s732) + (s733 * s733)) + (s734 * s734)))
-        let !t775 = (t594 * ((if t770 > 0 then (t762 + (negate ((t767 / t769) * t748))) else t762) + (negate s711)))
-        let !t776 = (t768 * (t762 + t762))
-        let !t777 = (negate t766)
-        let !t778 = (t768 * (t763 + t763))
-        let !t779 = (sqrt (((t776 * t776) + (t777 * t777)) + (t778 * t778)))
-        let !t780 = (if t779 > 0 then (recip (if (t779 - 1.0e-300) > 0 then t779 else 1.0e-300)) else 0.0)
-        let !t781 = (t780 * t776)
-        let !t782 = (t780 * t777)
-        let !t783 = (t594 * ((if t770 > 0 then (t765 + (negate ((t767 / t769) * t749))) else t765) + (negate s712)))
-        let !t784 = (t780 * t778)
-        let !t785 = (t594 * ((if t770 > 0 then (t763 + (negate ((t767 / t769) * t750))) else t763) + (negate s713)))
-        let !t786 = (((t781 * t775) + (t782 * t783)) + (t784 * t785))
-        let !t787 = (t775 + (negate (t786 * t781)))
-        let !t788 = (t783 + (negate (t786 * t782)))
-        let !t789 = (t785 + (negate (t786 * t784)))
-        let !t790 = (sqrt (((t787 * t787) + (t788 * t788)) + (t789 * t789)))
-        let !t791 = (if t790 > 0 then (recip (if (t790 - 1.0e-300) > 0 then t790 else 1.0e-300)) else 0.0)
-        let !s792 = ((t546 * (t774 * (t791 * t787))) + (t586 * s732))
-        let !s793 = ((t546 * (t774 * (t791 * t788))) + (t586 * s733))
-        let !s794 = ((t546 * (t774 * (t791 * t789))) + (t586 * s734))
-        t795 <- rdU mouse 4
-        t796 <- rdU mouse 5
-        t797 <- rdU mouse 6
-        t798 <- rdU mouse 7
-        t799 <- rdU mouse 8
-        t800 <- rdU mouse 9
-        let !t801 = (recip t508)
-        let !t802 = (6.283185307179586 * t798)
-        let !s803 = (recip (t510 * ((((2.0 * t801) * t799) * t802) + (t510 * ((t801 * t802) * t802)))))
-        let !s804 = ((t510 * ((t801 * t802) * t802)) * s803)
-        let !s805 = (s771 + (negate t511))
-        let !s806 = (s772 + (negate t512))
-        let !s807 = (s773 + (negate t513))
-        let !s808 = (s771 + (negate t795))
-        let !s809 = (s772 + (negate t796))
-        let !s810 = (s773 + (negate t797))
-        t811 <- rdU mouse 10
-        chkI vel (3 * (truncate t507)) 0 2
-        t812 <- rdU vel (3 * (truncate t507))
-        t813 <- rdU vel ((3 * (truncate t507)) + 1)
-        t814 <- rdU vel ((3 * (truncate t507)) + 2)
-        t815 <- rdU scalars ((6 * (truncate t507)) + 1)
-        let !t816 = (t800 * t510)
-        let !t817 = (negate t816)
-        let !t818 = (((((s806 * t519) - (s807 * t518)) * t514) + (((s807 * t517) - (s805 * t519)) * t515)) + (((s805 * t518) - (s806 * t517)) * t516))
-        let !t819 = (t811 + ((negate ((((((t517 * t812) + (t518 * t813)) + (t519 * t814)) + (t818 * t815)) + (s804 * (((s808 * t517) + (s809 * t518)) + (s810 * t519)))) + (s803 * t811))) / (((t508 * (((t517 * t517) + (t518 * t518)) + (t519 * t519))) + ((t509 * t818) * t818)) + s803)))
-        let !t820 = (if (t819 - t816) > 0 then t816 else t819)
-        let !t821 = (if (t817 - t820) > 0 then t817 else t820)
-        let !s822 = (if (1.0 - (abs (t821 - t821))) > 0 then t821 else 0.0)
-        wrU mouse 10 s822
-        t823 <- rdU scalars ((6 * (truncate t507)) + 2)
-        t824 <- rdU scalars ((6 * (truncate t507)) + 3)
-        t825 <- rdU vel (3 * (truncate t507))
-        t826 <- rdU vel ((3 * (truncate t507)) + 1)
-        t827 <- rdU vel ((3 * (truncate t507)) + 2)
-        t828 <- rdU scalars ((6 * (truncate t507)) + 1)
-        wrU vel (3 * (truncate t507)) (t825 + ((t823 * (s822 - t811)) * t517))
-        wrU vel ((3 * (truncate t507)) + 1) (t826 + ((t823 * (s822 - t811)) * t518))
-        wrU vel ((3 * (truncate t507)) + 2) (t827 + ((t823 * (s822 - t811)) * t519))
-        wrU scalars ((6 * (truncate t507)) + 1) (t828 + ((t824 * (s822 - t811)) * t818))
-        t829 <- rdU mouse 11
-        t830 <- rdU vel (3 * (truncate t507))
-        t831 <- rdU vel ((3 * (truncate t507)) + 1)
-        t832 <- rdU vel ((3 * (truncate t507)) + 2)
-        t833 <- rdU scalars ((6 * (truncate t507)) + 1)
-        let !t834 = (((((s806 * s522) - (s807 * s521)) * t514) + (((s807 * s520) - (s805 * s522)) * t515)) + (((s805 * s521) - (s806 * s520)) * t516))
-        let !t835 = (t829 + ((negate ((((((s520 * t830) + (s521 * t831)) + (s522 * t832)) + (t834 * t833)) + (s804 * (((s808 * s520) + (s809 * s521)) + (s810 * s522)))) + (s803 * t829))) / (((t508 * (((s520 * s520) + (s521 * s521)) + (s522 * s522))) + ((t509 * t834) * t834)) + s803)))
-        let !t836 = (if (t835 - t816) > 0 then t816 else t835)
-        let !t837 = (if (t817 - t836) > 0 then t817 else t836)
-        let !s838 = (if (1.0 - (abs (t837 - t837))) > 0 then t837 else 0.0)
-        wrU mouse 11 s838
-        t839 <- rdU scalars ((6 * (truncate t507)) + 2)
-        t840 <- rdU scalars ((6 * (truncate t507)) + 3)
-        t841 <- rdU vel (3 * (truncate t507))
-        t842 <- rdU vel ((3 * (truncate t507)) + 1)
-        t843 <- rdU vel ((3 * (truncate t507)) + 2)
-        t844 <- rdU scalars ((6 * (truncate t507)) + 1)
-        wrU vel (3 * (truncate t507)) (t841 + ((t839 * (s838 - t829)) * s520))
-        wrU vel ((3 * (truncate t507)) + 1) (t842 + ((t839 * (s838 - t829)) * s521))
-        wrU vel ((3 * (truncate t507)) + 2) (t843 + ((t839 * (s838 - t829)) * s522))
-        wrU scalars ((6 * (truncate t507)) + 1) (t844 + ((t840 * (s838 - t829)) * t834))
+        t538 <- rdU mouse 2
+        t539 <- rdU mouse 3
+        let !t540 = (t538 / 4.0)
+        let !t541 = (if (abs t540) > 0 then 1.0 else 0.0)
+        let !t542 = (t534 + t539)
+        let !t543 = (cos t542)
+        let !t544 = (sin t542)
+        let !t545 = (t522 + (t540 * ((t543 * t528) + (t544 * s531))))
+        let !t546 = (t524 + (t540 * ((t543 * t530) + (t544 * s533))))
+        let !t547 = (sqrt ((t545 * t545) + (t546 * t546)))
+        let !t548 = (t523 + (t540 * ((t543 * t529) + (t544 * s532))))
+        let !t549 = (exp t548)
+        let !t550 = (t547 - t549)
+        let !t551 = (recip (2.0 * t547))
+        let !t552 = (recip (2.0 * (sqrt ((t522 * t522) + (t524 * t524)))))
+        let !t553 = (t552 * (t522 + t522))
+        let !t554 = (negate (exp t523))
+        let !t555 = (t552 * (t524 + t524))
+        let !t556 = (sqrt (((t553 * t553) + (t554 * t554)) + (t555 * t555)))
+        let !t557 = (if t556 > 0 then (recip (if (t556 - 1.0e-300) > 0 then t556 else 1.0e-300)) else 0.0)
+        let !t558 = (t557 * t553)
+        let !t559 = (t557 * t554)
+        let !t560 = (t557 * t555)
+        let !t561 = ((((t551 * (t545 + t545)) * t558) + ((negate t549) * t559)) + ((t551 * (t546 + t546)) * t560))
+        let !t562 = (if ((abs t550) - 1.0e-10) > 0 then (if (abs t561) > 0 then 1.0 else 0.0) else 0.0)
+        let !t563 = (if t562 > 0 then (t545 + (negate ((t550 / t561) * t558))) else t545)
+        let !t564 = (if t562 > 0 then (t546 + (negate ((t550 / t561) * t560))) else t546)
+        let !t565 = (sqrt ((t563 * t563) + (t564 * t564)))
+        let !t566 = (if t562 > 0 then (t548 + (negate ((t550 / t561) * t559))) else t548)
+        let !t567 = (exp t566)
+        let !t568 = (t565 - t567)
+        let !t569 = (recip (2.0 * t565))
+        let !t570 = ((((t569 * (t563 + t563)) * t558) + ((negate t567) * t559)) + ((t569 * (t564 + t564)) * t560))
+        let !t571 = (if ((abs t568) - 1.0e-10) > 0 then (if (abs t570) > 0 then 1.0 else 0.0) else 0.0)
+        let !t572 = (if t571 > 0 then (t563 + (negate ((t568 / t570) * t558))) else t563)
+        let !t573 = (if t571 > 0 then (t564 + (negate ((t568 / t570) * t560))) else t564)
+        let !t574 = (sqrt ((t572 * t572) + (t573 * t573)))
+        let !t575 = (if t571 > 0 then (t566 + (negate ((t568 / t570) * t559))) else t566)
+        let !t576 = (exp t575)
+        let !t577 = (t574 - t576)
+        let !t578 = (recip (2.0 * t574))
+        let !t579 = ((((t578 * (t572 + t572)) * t558) + ((negate t576) * t559)) + ((t578 * (t573 + t573)) * t560))
+        let !t580 = (if ((abs t577) - 1.0e-10) > 0 then (if (abs t579) > 0 then 1.0 else 0.0) else 0.0)
+        let !t581 = (1.0 - t541)
+        let !s582 = ((t541 * (if t580 > 0 then (t572 + (negate ((t577 / t579) * t558))) else t572)) + (t581 * t522))
+        let !s583 = ((t541 * (if t580 > 0 then (t575 + (negate ((t577 / t579) * t559))) else t575)) + (t581 * t523))
+        let !s584 = ((t541 * (if t580 > 0 then (t573 + (negate ((t577 / t579) * t560))) else t573)) + (t581 * t524))
+        let !t585 = ((t543 * t528) + (t544 * s531))
+        let !t586 = ((t543 * t529) + (t544 * s532))
+        let !t587 = ((t543 * t530) + (t544 * s533))
+        let !t588 = (sqrt (((t585 * t585) + (t586 * t586)) + (t587 * t587)))
+        let !t589 = (if (abs t540) > 0 then (recip t540) else 0.0)
+        let !t590 = (t589 * ((if t580 > 0 then (t572 + (negate ((t577 / t579) * t558))) else t572) + (negate t522)))
+        let !t591 = (t578 * (t572 + t572))
+        let !t592 = (negate t576)
+        let !t593 = (t578 * (t573 + t573))
+        let !t594 = (sqrt (((t591 * t591) + (t592 * t592)) + (t593 * t593)))
+        let !t595 = (if t594 > 0 then (recip (if (t594 - 1.0e-300) > 0 then t594 else 1.0e-300)) else 0.0)
+        let !t596 = (t595 * t591)
+        let !t597 = (t595 * t592)
+        let !t598 = (t589 * ((if t580 > 0 then (t575 + (negate ((t577 / t579) * t559))) else t575) + (negate t523)))
+        let !t599 = (t595 * t593)
+        let !t600 = (t589 * ((if t580 > 0 then (t573 + (negate ((t577 / t579) * t560))) else t573) + (negate t524)))
+        let !t601 = (((t596 * t590) + (t597 * t598)) + (t599 * t600))
+        let !t602 = (t590 + (negate (t601 * t596)))
+        let !t603 = (t598 + (negate (t601 * t597)))
+        let !t604 = (t600 + (negate (t601 * t599)))
+        let !t605 = (sqrt (((t602 * t602) + (t603 * t603)) + (t604 * t604)))
+        let !t606 = (if t605 > 0 then (recip (if (t605 - 1.0e-300) > 0 then t605 else 1.0e-300)) else 0.0)
+        let !s607 = ((t541 * (t588 * (t606 * t602))) + (t581 * t585))
+        let !s608 = ((t541 * (t588 * (t606 * t603))) + (t581 * t586))
+        let !s609 = ((t541 * (t588 * (t606 * t604))) + (t581 * t587))
+        let !t610 = (s582 + (t540 * s607))
+        let !t611 = (s584 + (t540 * s609))
+        let !t612 = (sqrt ((t610 * t610) + (t611 * t611)))
+        let !t613 = (s583 + (t540 * s608))
+        let !t614 = (exp t613)
+        let !t615 = (t612 - t614)
+        let !t616 = (recip (2.0 * t612))
+        let !t617 = (recip (2.0 * (sqrt ((s582 * s582) + (s584 * s584)))))
+        let !t618 = (t617 * (s582 + s582))
+        let !t619 = (negate (exp s583))
+        let !t620 = (t617 * (s584 + s584))
+        let !t621 = (sqrt (((t618 * t618) + (t619 * t619)) + (t620 * t620)))
+        let !t622 = (if t621 > 0 then (recip (if (t621 - 1.0e-300) > 0 then t621 else 1.0e-300)) else 0.0)
+        let !t623 = (t622 * t618)
+        let !t624 = (t622 * t619)
+        let !t625 = (t622 * t620)
+        let !t626 = ((((t616 * (t610 + t610)) * t623) + ((negate t614) * t624)) + ((t616 * (t611 + t611)) * t625))
+        let !t627 = (if ((abs t615) - 1.0e-10) > 0 then (if (abs t626) > 0 then 1.0 else 0.0) else 0.0)
+        let !t628 = (if t627 > 0 then (t610 + (negate ((t615 / t626) * t623))) else t610)
+        let !t629 = (if t627 > 0 then (t611 + (negate ((t615 / t626) * t625))) else t611)
+        let !t630 = (sqrt ((t628 * t628) + (t629 * t629)))
+        let !t631 = (if t627 > 0 then (t613 + (negate ((t615 / t626) * t624))) else t613)
+        let !t632 = (exp t631)
+        let !t633 = (t630 - t632)
+        let !t634 = (recip (2.0 * t630))
+        let !t635 = ((((t634 * (t628 + t628)) * t623) + ((negate t632) * t624)) + ((t634 * (t629 + t629)) * t625))
+        let !t636 = (if ((abs t633) - 1.0e-10) > 0 then (if (abs t635) > 0 then 1.0 else 0.0) else 0.0)
+        let !t637 = (if t636 > 0 then (t628 + (negate ((t633 / t635) * t623))) else t628)
+        let !t638 = (if t636 > 0 then (t629 + (negate ((t633 / t635) * t625))) else t629)
+        let !t639 = (sqrt ((t637 * t637) + (t638 * t638)))
+        let !t640 = (if t636 > 0 then (t631 + (negate ((t633 / t635) * t624))) else t631)
+        let !t641 = (exp t640)
+        let !t642 = (t639 - t641)
+        let !t643 = (recip (2.0 * t639))
+        let !t644 = ((((t643 * (t637 + t637)) * t623) + ((negate t641) * t624)) + ((t643 * (t638 + t638)) * t625))
+        let !t645 = (if ((abs t642) - 1.0e-10) > 0 then (if (abs t644) > 0 then 1.0 else 0.0) else 0.0)
+        let !s646 = ((t541 * (if t645 > 0 then (t637 + (negate ((t642 / t644) * t623))) else t637)) + (t581 * s582))
+        let !s647 = ((t541 * (if t645 > 0 then (t640 + (negate ((t642 / t644) * t624))) else t640)) + (t581 * s583))
+        let !s648 = ((t541 * (if t645 > 0 then (t638 + (negate ((t642 / t644) * t625))) else t638)) + (t581 * s584))
+        let !t649 = (sqrt (((s607 * s607) + (s608 * s608)) + (s609 * s609)))
+        let !t650 = (t589 * ((if t645 > 0 then (t637 + (negate ((t642 / t644) * t623))) else t637) + (negate s582)))
+        let !t651 = (t643 * (t637 + t637))
+        let !t652 = (negate t641)
+        let !t653 = (t643 * (t638 + t638))
+        let !t654 = (sqrt (((t651 * t651) + (t652 * t652)) + (t653 * t653)))
+        let !t655 = (if t654 > 0 then (recip (if (t654 - 1.0e-300) > 0 then t654 else 1.0e-300)) else 0.0)
+        let !t656 = (t655 * t651)
+        let !t657 = (t655 * t652)
+        let !t658 = (t589 * ((if t645 > 0 then (t640 + (negate ((t642 / t644) * t624))) else t640) + (negate s583)))
+        let !t659 = (t655 * t653)
+        let !t660 = (t589 * ((if t645 > 0 then (t638 + (negate ((t642 / t644) * t625))) else t638) + (negate s584)))
+        let !t661 = (((t656 * t650) + (t657 * t658)) + (t659 * t660))
+        let !t662 = (t650 + (negate (t661 * t656)))
+        let !t663 = (t658 + (negate (t661 * t657)))
+        let !t664 = (t660 + (negate (t661 * t659)))
+        let !t665 = (sqrt (((t662 * t662) + (t663 * t663)) + (t664 * t664)))
+        let !t666 = (if t665 > 0 then (recip (if (t665 - 1.0e-300) > 0 then t665 else 1.0e-300)) else 0.0)
+        let !s667 = ((t541 * (t649 * (t666 * t662))) + (t581 * s607))
+        let !s668 = ((t541 * (t649 * (t666 * t663))) + (t581 * s608))
+        let !s669 = ((t541 * (t649 * (t666 * t664))) + (t581 * s609))
+        let !t670 = (s646 + (t540 * s667))
+        let !t671 = (s648 + (t540 * s669))
+        let !t672 = (sqrt ((t670 * t670) + (t671 * t671)))
+        let !t673 = (s647 + (t540 * s668))
+        let !t674 = (exp t673)
+        let !t675 = (t672 - t674)
+        let !t676 = (recip (2.0 * t672))
+        let !t677 = (recip (2.0 * (sqrt ((s646 * s646) + (s648 * s648)))))
+        let !t678 = (t677 * (s646 + s646))
+        let !t679 = (negate (exp s647))
+        let !t680 = (t677 * (s648 + s648))
+        let !t681 = (sqrt (((t678 * t678) + (t679 * t679)) + (t680 * t680)))
+        let !t682 = (if t681 > 0 then (recip (if (t681 - 1.0e-300) > 0 then t681 else 1.0e-300)) else 0.0)
+        let !t683 = (t682 * t678)
+        let !t684 = (t682 * t679)
+        let !t685 = (t682 * t680)
+        let !t686 = ((((t676 * (t670 + t670)) * t683) + ((negate t674) * t684)) + ((t676 * (t671 + t671)) * t685))
+        let !t687 = (if ((abs t675) - 1.0e-10) > 0 then (if (abs t686) > 0 then 1.0 else 0.0) else 0.0)
+        let !t688 = (if t687 > 0 then (t670 + (negate ((t675 / t686) * t683))) else t670)
+        let !t689 = (if t687 > 0 then (t671 + (negate ((t675 / t686) * t685))) else t671)
+        let !t690 = (sqrt ((t688 * t688) + (t689 * t689)))
+        let !t691 = (if t687 > 0 then (t673 + (negate ((t675 / t686) * t684))) else t673)
+        let !t692 = (exp t691)
+        let !t693 = (t690 - t692)
+        let !t694 = (recip (2.0 * t690))
+        let !t695 = ((((t694 * (t688 + t688)) * t683) + ((negate t692) * t684)) + ((t694 * (t689 + t689)) * t685))
+        let !t696 = (if ((abs t693) - 1.0e-10) > 0 then (if (abs t695) > 0 then 1.0 else 0.0) else 0.0)
+        let !t697 = (if t696 > 0 then (t688 + (negate ((t693 / t695) * t683))) else t688)
+        let !t698 = (if t696 > 0 then (t689 + (negate ((t693 / t695) * t685))) else t689)
+        let !t699 = (sqrt ((t697 * t697) + (t698 * t698)))
+        let !t700 = (if t696 > 0 then (t691 + (negate ((t693 / t695) * t684))) else t691)
+        let !t701 = (exp t700)
+        let !t702 = (t699 - t701)
+        let !t703 = (recip (2.0 * t699))
+        let !t704 = ((((t703 * (t697 + t697)) * t683) + ((negate t701) * t684)) + ((t703 * (t698 + t698)) * t685))
+        let !t705 = (if ((abs t702) - 1.0e-10) > 0 then (if (abs t704) > 0 then 1.0 else 0.0) else 0.0)
+        let !s706 = ((t541 * (if t705 > 0 then (t697 + (negate ((t702 / t704) * t683))) else t697)) + (t581 * s646))
+        let !s707 = ((t541 * (if t705 > 0 then (t700 + (negate ((t702 / t704) * t684))) else t700)) + (t581 * s647))
+        let !s708 = ((t541 * (if t705 > 0 then (t698 + (negate ((t702 / t704) * t685))) else t698)) + (t581 * s648))
+        let !t709 = (sqrt (((s667 * s667) + (s668 * s668)) + (s669 * s669)))
+        let !t710 = (t589 * ((if t705 > 0 then (t697 + (negate ((t702 / t704) * t683))) else t697) + (negate s646)))
+        let !t711 = (t703 * (t697 + t697))
+        let !t712 = (negate t701)
+        let !t713 = (t703 * (t698 + t698))
+        let !t714 = (sqrt (((t711 * t711) + (t712 * t712)) + (t713 * t713)))
+        let !t715 = (if t714 > 0 then (recip (if (t714 - 1.0e-300) > 0 then t714 else 1.0e-300)) else 0.0)
+        let !t716 = (t715 * t711)
+        let !t717 = (t715 * t712)
+        let !t718 = (t589 * ((if t705 > 0 then (t700 + (negate ((t702 / t704) * t684))) else t700) + (negate s647)))
+        let !t719 = (t715 * t713)
+        let !t720 = (t589 * ((if t705 > 0 then (t698 + (negate ((t702 / t704) * t685))) else t698) + (negate s648)))
+        let !t721 = (((t716 * t710) + (t717 * t718)) + (t719 * t720))
+        let !t722 = (t710 + (negate (t721 * t716)))
+        let !t723 = (t718 + (negate (t721 * t717)))
+        let !t724 = (t720 + (negate (t721 * t719)))
+        let !t725 = (sqrt (((t722 * t722) + (t723 * t723)) + (t724 * t724)))
+        let !t726 = (if t725 > 0 then (recip (if (t725 - 1.0e-300) > 0 then t725 else 1.0e-300)) else 0.0)
+        let !s727 = ((t541 * (t709 * (t726 * t722))) + (t581 * s667))
+        let !s728 = ((t541 * (t709 * (t726 * t723))) + (t581 * s668))
+        let !s729 = ((t541 * (t709 * (t726 * t724))) + (t581 * s669))
+        let !t730 = (s706 + (t540 * s727))
+        let !t731 = (s708 + (t540 * s729))
+        let !t732 = (sqrt ((t730 * t730) + (t731 * t731)))
+        let !t733 = (s707 + (t540 * s728))
+        let !t734 = (exp t733)
+        let !t735 = (t732 - t734)
+        let !t736 = (recip (2.0 * t732))
+        let !t737 = (recip (2.0 * (sqrt ((s706 * s706) + (s708 * s708)))))
+        let !t738 = (t737 * (s706 + s706))
+        let !t739 = (negate (exp s707))
+        let !t740 = (t737 * (s708 + s708))
+        let !t741 = (sqrt (((t738 * t738) + (t739 * t739)) + (t740 * t740)))
+        let !t742 = (if t741 > 0 then (recip (if (t741 - 1.0e-300) > 0 then t741 else 1.0e-300)) else 0.0)
+        let !t743 = (t742 * t738)
+        let !t744 = (t742 * t739)
+        let !t745 = (t742 * t740)
+        let !t746 = ((((t736 * (t730 + t730)) * t743) + ((negate t734) * t744)) + ((t736 * (t731 + t731)) * t745))
+        let !t747 = (if ((abs t735) - 1.0e-10) > 0 then (if (abs t746) > 0 then 1.0 else 0.0) else 0.0)
+        let !t748 = (if t747 > 0 then (t730 + (negate ((t735 / t746) * t743))) else t730)
+        let !t749 = (if t747 > 0 then (t731 + (negate ((t735 / t746) * t745))) else t731)
+        let !t750 = (sqrt ((t748 * t748) + (t749 * t749)))
+        let !t751 = (if t747 > 0 then (t733 + (negate ((t735 / t746) * t744))) else t733)
+        let !t752 = (exp t751)
+        let !t753 = (t750 - t752)
+        let !t754 = (recip (2.0 * t750))
+        let !t755 = ((((t754 * (t748 + t748)) * t743) + ((negate t752) * t744)) + ((t754 * (t749 + t749)) * t745))
+        let !t756 = (if ((abs t753) - 1.0e-10) > 0 then (if (abs t755) > 0 then 1.0 else 0.0) else 0.0)
+        let !t757 = (if t756 > 0 then (t748 + (negate ((t753 / t755) * t743))) else t748)
+        let !t758 = (if t756 > 0 then (t749 + (negate ((t753 / t755) * t745))) else t749)
+        let !t759 = (sqrt ((t757 * t757) + (t758 * t758)))
+        let !t760 = (if t756 > 0 then (t751 + (negate ((t753 / t755) * t744))) else t751)
+        let !t761 = (exp t760)
+        let !t762 = (t759 - t761)
+        let !t763 = (recip (2.0 * t759))
+        let !t764 = ((((t763 * (t757 + t757)) * t743) + ((negate t761) * t744)) + ((t763 * (t758 + t758)) * t745))
+        let !t765 = (if ((abs t762) - 1.0e-10) > 0 then (if (abs t764) > 0 then 1.0 else 0.0) else 0.0)
+        let !s766 = ((t541 * (if t765 > 0 then (t757 + (negate ((t762 / t764) * t743))) else t757)) + (t581 * s706))
+        let !s767 = ((t541 * (if t765 > 0 then (t760 + (negate ((t762 / t764) * t744))) else t760)) + (t581 * s707))
+        let !s768 = ((t541 * (if t765 > 0 then (t758 + (negate ((t762 / t764) * t745))) else t758)) + (t581 * s708))
+        let !t769 = (sqrt (((s727 * s727) + (s728 * s728)) + (s729 * s729)))
+        let !t770 = (t589 * ((if t765 > 0 then (t757 + (negate ((t762 / t764) * t743))) else t757) + (negate s706)))
+        let !t771 = (t763 * (t757 + t757))
+        let !t772 = (negate t761)
+        let !t773 = (t763 * (t758 + t758))
+        let !t774 = (sqrt (((t771 * t771) + (t772 * t772)) + (t773 * t773)))
+        let !t775 = (if t774 > 0 then (recip (if (t774 - 1.0e-300) > 0 then t774 else 1.0e-300)) else 0.0)
+        let !t776 = (t775 * t771)
+        let !t777 = (t775 * t772)
+        let !t778 = (t589 * ((if t765 > 0 then (t760 + (negate ((t762 / t764) * t744))) else t760) + (negate s707)))
+        let !t779 = (t775 * t773)
+        let !t780 = (t589 * ((if t765 > 0 then (t758 + (negate ((t762 / t764) * t745))) else t758) + (negate s708)))
+        let !t781 = (((t776 * t770) + (t777 * t778)) + (t779 * t780))
+        let !t782 = (t770 + (negate (t781 * t776)))
+        let !t783 = (t778 + (negate (t781 * t777)))
+        let !t784 = (t780 + (negate (t781 * t779)))
+        let !t785 = (sqrt (((t782 * t782) + (t783 * t783)) + (t784 * t784)))
+        let !t786 = (if t785 > 0 then (recip (if (t785 - 1.0e-300) > 0 then t785 else 1.0e-300)) else 0.0)
+        let !s787 = ((t541 * (t769 * (t786 * t782))) + (t581 * s727))
+        let !s788 = ((t541 * (t769 * (t786 * t783))) + (t581 * s728))
+        let !s789 = ((t541 * (t769 * (t786 * t784))) + (t581 * s729))
+        t790 <- rdU mouse 4
+        t791 <- rdU mouse 5
+        t792 <- rdU mouse 6
+        t793 <- rdU mouse 7
+        t794 <- rdU mouse 8
+        t795 <- rdU mouse 9
+        let !t796 = (recip t503)
+        let !t797 = (6.283185307179586 * t793)
+        let !s798 = (recip (t505 * ((((2.0 * t796) * t794) * t797) + (t505 * ((t796 * t797) * t797)))))
+        let !s799 = ((t505 * ((t796 * t797) * t797)) * s798)
+        let !s800 = (s766 + (negate t506))
+        let !s801 = (s767 + (negate t507))
+        let !s802 = (s768 + (negate t508))
+        let !s803 = (s766 + (negate t790))
+        let !s804 = (s767 + (negate t791))
+        let !s805 = (s768 + (negate t792))
+        t806 <- rdU mouse 10
+        chkI vel (3 * (truncate t502)) 0 2
+        t807 <- rdU vel (3 * (truncate t502))
+        t808 <- rdU vel ((3 * (truncate t502)) + 1)
+        t809 <- rdU vel ((3 * (truncate t502)) + 2)
+        t810 <- rdU scalars ((6 * (truncate t502)) + 1)
+        let !t811 = (t795 * t505)
+        let !t812 = (negate t811)
+        let !t813 = (((((s801 * t514) - (s802 * t513)) * t509) + (((s802 * t512) - (s800 * t514)) * t510)) + (((s800 * t513) - (s801 * t512)) * t511))
+        let !t814 = (t806 + ((negate ((((((t512 * t807) + (t513 * t808)) + (t514 * t809)) + (t813 * t810)) + (s799 * (((s803 * t512) + (s804 * t513)) + (s805 * t514)))) + (s798 * t806))) / (((t503 * (((t512 * t512) + (t513 * t513)) + (t514 * t514))) + ((t504 * t813) * t813)) + s798)))
+        let !t815 = (if (t814 - t811) > 0 then t811 else t814)
+        let !t816 = (if (t812 - t815) > 0 then t812 else t815)
+        let !s817 = (if (1.0 - (abs (t816 - t816))) > 0 then t816 else 0.0)
+        wrU mouse 10 s817
+        t818 <- rdU scalars ((6 * (truncate t502)) + 2)
+        t819 <- rdU scalars ((6 * (truncate t502)) + 3)
+        t820 <- rdU vel (3 * (truncate t502))
+        t821 <- rdU vel ((3 * (truncate t502)) + 1)
+        t822 <- rdU vel ((3 * (truncate t502)) + 2)
+        t823 <- rdU scalars ((6 * (truncate t502)) + 1)
+        wrU vel (3 * (truncate t502)) (t820 + ((t818 * (s817 - t806)) * t512))
+        wrU vel ((3 * (truncate t502)) + 1) (t821 + ((t818 * (s817 - t806)) * t513))
+        wrU vel ((3 * (truncate t502)) + 2) (t822 + ((t818 * (s817 - t806)) * t514))
+        wrU scalars ((6 * (truncate t502)) + 1) (t823 + ((t819 * (s817 - t806)) * t813))
+        t824 <- rdU mouse 11
+        t825 <- rdU vel (3 * (truncate t502))
+        t826 <- rdU vel ((3 * (truncate t502)) + 1)
+        t827 <- rdU vel ((3 * (truncate t502)) + 2)
+        t828 <- rdU scalars ((6 * (truncate t502)) + 1)
+        let !t829 = (((((s801 * s517) - (s802 * s516)) * t509) + (((s802 * s515) - (s800 * s517)) * t510)) + (((s800 * s516) - (s801 * s515)) * t511))
+        let !t830 = (t824 + ((negate ((((((s515 * t825) + (s516 * t826)) + (s517 * t827)) + (t829 * t828)) + (s799 * (((s803 * s515) + (s804 * s516)) + (s805 * s517)))) + (s798 * t824))) / (((t503 * (((s515 * s515) + (s516 * s516)) + (s517 * s517))) + ((t504 * t829) * t829)) + s798)))
+        let !t831 = (if (t830 - t811) > 0 then t811 else t830)
+        let !t832 = (if (t812 - t831) > 0 then t812 else t831)
+        let !s833 = (if (1.0 - (abs (t832 - t832))) > 0 then t832 else 0.0)
+        wrU mouse 11 s833
+        t834 <- rdU scalars ((6 * (truncate t502)) + 2)
+        t835 <- rdU scalars ((6 * (truncate t502)) + 3)
+        t836 <- rdU vel (3 * (truncate t502))
+        t837 <- rdU vel ((3 * (truncate t502)) + 1)
+        t838 <- rdU vel ((3 * (truncate t502)) + 2)
+        t839 <- rdU scalars ((6 * (truncate t502)) + 1)
+        wrU vel (3 * (truncate t502)) (t836 + ((t834 * (s833 - t824)) * s515))
+        wrU vel ((3 * (truncate t502)) + 1) (t837 + ((t834 * (s833 - t824)) * s516))
+        wrU vel ((3 * (truncate t502)) + 2) (t838 + ((t834 * (s833 - t824)) * s517))
+        wrU scalars ((6 * (truncate t502)) + 1) (t839 + ((t835 * (s833 - t824)) * t829))
         pure ()
       else do
         pure ()
@@ -1468,38 +1470,38 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t845 <- rdU meta 0
-  loopI 0.0 t845 $ \i846 -> do
-    let !d846 = fromIntegral i846 :: Double
-    chkI bodyPrev (2 * i846) 1 1
-    wrU bodyPrev ((2 * i846) + 1) 0.0
+  t840 <- rdU meta 0
+  loopI 0.0 t840 $ \i841 -> do
+    let !d841 = fromIntegral i841 :: Double
+    chkI bodyPrev (2 * i841) 1 1
+    wrU bodyPrev ((2 * i841) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i847 -> do
-    let !d847 = fromIntegral i847 :: Double
-    chkI contacts (30 * i847) 2 25
-    t848 <- rdU contacts ((30 * i847) + 2)
-    chkI prev (4 * i847) 0 3
-    wrU prev (4 * i847) t848
-    t849 <- rdU contacts ((30 * i847) + 3)
-    wrU prev ((4 * i847) + 1) t849
-    t850 <- rdU contacts ((30 * i847) + 24)
-    wrU prev ((4 * i847) + 2) t850
-    t851 <- rdU contacts ((30 * i847) + 25)
-    wrU prev ((4 * i847) + 3) t851
-    chkI bodyPrev (2 * (truncate t848)) 1 1
-    t852 <- rdU bodyPrev ((2 * (truncate t848)) + 1)
-    if (0.5 - t852) > 0 then do
-      chkI bodyPrev (2 * (truncate t848)) 0 0
-      wrU bodyPrev (2 * (truncate t848)) d847
+  loopI 0.0 t9 $ \i842 -> do
+    let !d842 = fromIntegral i842 :: Double
+    chkI contacts (30 * i842) 2 25
+    t843 <- rdU contacts ((30 * i842) + 2)
+    chkI prev (4 * i842) 0 3
+    wrU prev (4 * i842) t843
+    t844 <- rdU contacts ((30 * i842) + 3)
+    wrU prev ((4 * i842) + 1) t844
+    t845 <- rdU contacts ((30 * i842) + 24)
+    wrU prev ((4 * i842) + 2) t845
+    t846 <- rdU contacts ((30 * i842) + 25)
+    wrU prev ((4 * i842) + 3) t846
+    chkI bodyPrev (2 * (truncate t843)) 1 1
+    t847 <- rdU bodyPrev ((2 * (truncate t843)) + 1)
+    if (0.5 - t847) > 0 then do
+      chkI bodyPrev (2 * (truncate t843)) 0 0
+      wrU bodyPrev (2 * (truncate t843)) d842
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t848)) + 1) (t852 + 1.0)
+    wrU bodyPrev ((2 * (truncate t843)) + 1) (t847 + 1.0)
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1667,8 +1669,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+  chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
   loopI 0.0 t0 $ \i1 -> do
@@ -1698,556 +1701,556 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    v18 <- newR (cos t11)
-    v19 <- newR (sin t11)
+    wrU locals 0 (cos t11)
+    wrU locals 1 (sin t11)
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i20 -> do
-        let !d20 = fromIntegral i20 :: Double
-        t21 <- getR v18
-        t22 <- getR v19
-        setR v18 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
-        setR v19 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
-        let !s23 = ((t21 * t5) + (t22 * s14))
-        let !s24 = ((t21 * t6) + (t22 * s15))
-        let !s25 = ((t21 * t7) + (t22 * s16))
-        chkI walk (12 * i20) 3 5
-        wrU walk ((12 * i20) + 3) s23
-        wrU walk ((12 * i20) + 4) s24
-        wrU walk ((12 * i20) + 5) s25
+      loopI 0.0 24.0 $ \i18 -> do
+        let !d18 = fromIntegral i18 :: Double
+        t19 <- rdU locals 0
+        t20 <- rdU locals 1
+        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
+        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
+        let !s21 = ((t19 * t5) + (t20 * s14))
+        let !s22 = ((t19 * t6) + (t20 * s15))
+        let !s23 = ((t19 * t7) + (t20 * s16))
+        chkI walk (12 * i18) 3 5
+        wrU walk ((12 * i18) + 3) s21
+        wrU walk ((12 * i18) + 4) s22
+        wrU walk ((12 * i18) + 5) s23
         pure ()
-      loopI 0.0 24.0 $ \i26 -> do
-        let !d26 = fromIntegral i26 :: Double
-        chkI radii ((24 * i1) + i26) 0 0
-        t27 <- rdU radii ((24 * i1) + i26)
-        let !s28 = (t27 / 4.0)
-        chkI walk (12 * i26) 3 11
-        t29 <- rdU walk ((12 * i26) + 3)
-        t30 <- rdU walk ((12 * i26) + 4)
-        t31 <- rdU walk ((12 * i26) + 5)
-        let !s32 = (t2 + (s28 * t29))
-        let !s33 = (t3 + (s28 * t30))
-        let !s34 = (t4 + (s28 * t31))
-        let !t35 = (sqrt ((s32 * s32) + (s34 * s34)))
-        let !t36 = (exp s33)
-        let !t37 = (t35 - t36)
-        let !t38 = (recip (2.0 * t35))
-        let !t39 = ((((t38 * (s32 + s32)) * t8) + ((negate t36) * t9)) + ((t38 * (s34 + s34)) * t10))
-        let !t40 = (if ((abs t37) - 1.0e-10) > 0 then (if (abs t39) > 0 then 1.0 else 0.0) else 0.0)
-        let !s41 = (if t40 > 0 then (s32 + (negate ((t37 / t39) * t8))) else s32)
-        let !s42 = (if t40 > 0 then (s33 + (negate ((t37 / t39) * t9))) else s33)
-        let !s43 = (if t40 > 0 then (s34 + (negate ((t37 / t39) * t10))) else s34)
-        wrU walk ((12 * i26) + 9) s41
-        wrU walk ((12 * i26) + 10) s42
-        wrU walk ((12 * i26) + 11) s43
+      loopI 0.0 24.0 $ \i24 -> do
+        let !d24 = fromIntegral i24 :: Double
+        chkI radii ((24 * i1) + i24) 0 0
+        t25 <- rdU radii ((24 * i1) + i24)
+        let !s26 = (t25 / 4.0)
+        chkI walk (12 * i24) 3 11
+        t27 <- rdU walk ((12 * i24) + 3)
+        t28 <- rdU walk ((12 * i24) + 4)
+        t29 <- rdU walk ((12 * i24) + 5)
+        let !s30 = (t2 + (s26 * t27))
+        let !s31 = (t3 + (s26 * t28))
+        let !s32 = (t4 + (s26 * t29))
+        let !t33 = (sqrt ((s30 * s30) + (s32 * s32)))
+        let !t34 = (exp s31)
+        let !t35 = (t33 - t34)
+        let !t36 = (recip (2.0 * t33))
+        let !t37 = ((((t36 * (s30 + s30)) * t8) + ((negate t34) * t9)) + ((t36 * (s32 + s32)) * t10))
+        let !t38 = (if ((abs t35) - 1.0e-10) > 0 then (if (abs t37) > 0 then 1.0 else 0.0) else 0.0)
+        let !s39 = (if t38 > 0 then (s30 + (negate ((t35 / t37) * t8))) else s30)
+        let !s40 = (if t38 > 0 then (s31 + (negate ((t35 / t37) * t9))) else s31)
+        let !s41 = (if t38 > 0 then (s32 + (negate ((t35 / t37) * t10))) else s32)
+        wrU walk ((12 * i24) + 9) s39
+        wrU walk ((12 * i24) + 10) s40
+        wrU walk ((12 * i24) + 11) s41
         pure ()
-      loopI 0.0 24.0 $ \i44 -> do
-        let !d44 = fromIntegral i44 :: Double
-        chkI walk (12 * i44) 9 11
-        t45 <- rdU walk ((12 * i44) + 9)
-        t46 <- rdU walk ((12 * i44) + 10)
-        t47 <- rdU walk ((12 * i44) + 11)
-        let !t48 = (sqrt ((t45 * t45) + (t47 * t47)))
-        let !t49 = (exp t46)
-        let !t50 = (t48 - t49)
-        let !t51 = (recip (2.0 * t48))
-        let !t52 = ((((t51 * (t45 + t45)) * t8) + ((negate t49) * t9)) + ((t51 * (t47 + t47)) * t10))
-        let !t53 = (if ((abs t50) - 1.0e-10) > 0 then (if (abs t52) > 0 then 1.0 else 0.0) else 0.0)
-        let !s54 = (if t53 > 0 then (t45 + (negate ((t50 / t52) * t8))) else t45)
-        let !s55 = (if t53 > 0 then (t46 + (negate ((t50 / t52) * t9))) else t46)
-        let !s56 = (if t53 > 0 then (t47 + (negate ((t50 / t52) * t10))) else t47)
-        wrU walk ((12 * i44) + 9) s54
-        wrU walk ((12 * i44) + 10) s55
-        wrU walk ((12 * i44) + 11) s56
+      loopI 0.0 24.0 $ \i42 -> do
+        let !d42 = fromIntegral i42 :: Double
+        chkI walk (12 * i42) 9 11
+        t43 <- rdU walk ((12 * i42) + 9)
+        t44 <- rdU walk ((12 * i42) + 10)
+        t45 <- rdU walk ((12 * i42) + 11)
+        let !t46 = (sqrt ((t43 * t43) + (t45 * t45)))
+        let !t47 = (exp t44)
+        let !t48 = (t46 - t47)
+        let !t49 = (recip (2.0 * t46))
+        let !t50 = ((((t49 * (t43 + t43)) * t8) + ((negate t47) * t9)) + ((t49 * (t45 + t45)) * t10))
+        let !t51 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t50) > 0 then 1.0 else 0.0) else 0.0)
+        let !s52 = (if t51 > 0 then (t43 + (negate ((t48 / t50) * t8))) else t43)
+        let !s53 = (if t51 > 0 then (t44 + (negate ((t48 / t50) * t9))) else t44)
+        let !s54 = (if t51 > 0 then (t45 + (negate ((t48 / t50) * t10))) else t45)
+        wrU walk ((12 * i42) + 9) s52
+        wrU walk ((12 * i42) + 10) s53
+        wrU walk ((12 * i42) + 11) s54
         pure ()
-      loopI 0.0 24.0 $ \i57 -> do
-        let !d57 = fromIntegral i57 :: Double
-        chkI walk (12 * i57) 0 11
-        t58 <- rdU walk ((12 * i57) + 9)
-        t59 <- rdU walk ((12 * i57) + 10)
-        t60 <- rdU walk ((12 * i57) + 11)
-        chkI radii ((24 * i1) + i57) 0 0
-        t61 <- rdU radii ((24 * i1) + i57)
-        let !s62 = (t61 / 4.0)
-        t63 <- rdU walk ((12 * i57) + 3)
-        t64 <- rdU walk ((12 * i57) + 4)
-        t65 <- rdU walk ((12 * i57) + 5)
-        let !t66 = (if (abs s62) > 0 then 1.0 else 0.0)
-        let !t67 = (sqrt ((t58 * t58) + (t60 * t60)))
-        let !t68 = (exp t59)
-        let !t69 = (t67 - t68)
-        let !t70 = (recip (2.0 * t67))
-        let !t71 = ((((t70 * (t58 + t58)) * t8) + ((negate t68) * t9)) + ((t70 * (t60 + t60)) * t10))
-        let !t72 = (if ((abs t69) - 1.0e-10) > 0 then (if (abs t71) > 0 then 1.0 else 0.0) else 0.0)
-        let !t73 = (1.0 - t66)
-        let !s74 = ((t66 * (if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58)) + (t73 * t2))
-        let !s75 = ((t66 * (if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59)) + (t73 * t3))
-        let !s76 = ((t66 * (if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60)) + (t73 * t4))
-        chkI verts ((291 * i1) + (12 * i57)) 3 5
-        wrU verts (((291 * i1) + (12 * i57)) + 3) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s74 else t2)
-        wrU verts (((291 * i1) + (12 * i57)) + 4) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s75 else t3)
-        wrU verts (((291 * i1) + (12 * i57)) + 5) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s76 else t4)
-        wrU walk (12 * i57) s74
-        wrU walk ((12 * i57) + 1) s75
-        wrU walk ((12 * i57) + 2) s76
-        let !t77 = (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65)))
-        let !t78 = (if (abs s62) > 0 then (recip s62) else 0.0)
-        let !t79 = (t78 * ((if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58) + (negate t2)))
-        let !t80 = (t70 * (t58 + t58))
-        let !t81 = (negate t68)
-        let !t82 = (t70 * (t60 + t60))
-        let !t83 = (sqrt (((t80 * t80) + (t81 * t81)) + (t82 * t82)))
-        let !t84 = (if t83 > 0 then (recip (if (t83 - 1.0e-300) > 0 then t83 else 1.0e-300)) else 0.0)
-        let !t85 = (t84 * t80)
-        let !t86 = (t84 * t81)
-        let !t87 = (t78 * ((if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59) + (negate t3)))
-        let !t88 = (t84 * t82)
-        let !t89 = (t78 * ((if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60) + (negate t4)))
-        let !t90 = (((t85 * t79) + (t86 * t87)) + (t88 * t89))
-        let !t91 = (t79 + (negate (t90 * t85)))
-        let !t92 = (t87 + (negate (t90 * t86)))
-        let !t93 = (t89 + (negate (t90 * t88)))
-        let !t94 = (sqrt (((t91 * t91) + (t92 * t92)) + (t93 * t93)))
-        let !t95 = (if t94 > 0 then (recip (if (t94 - 1.0e-300) > 0 then t94 else 1.0e-300)) else 0.0)
-        let !s96 = ((t66 * (t77 * (t95 * t91))) + (t73 * t63))
-        let !s97 = ((t66 * (t77 * (t95 * t92))) + (t73 * t64))
-        let !s98 = ((t66 * (t77 * (t95 * t93))) + (t73 * t65))
-        wrU walk ((12 * i57) + 3) s96
-        wrU walk ((12 * i57) + 4) s97
-        wrU walk ((12 * i57) + 5) s98
-        let !s99 = ((t66 * t85) + (t73 * t8))
-        let !s100 = ((t66 * t86) + (t73 * t9))
-        let !s101 = ((t66 * t88) + (t73 * t10))
-        wrU walk ((12 * i57) + 6) s99
-        wrU walk ((12 * i57) + 7) s100
-        wrU walk ((12 * i57) + 8) s101
+      loopI 0.0 24.0 $ \i55 -> do
+        let !d55 = fromIntegral i55 :: Double
+        chkI walk (12 * i55) 0 11
+        t56 <- rdU walk ((12 * i55) + 9)
+        t57 <- rdU walk ((12 * i55) + 10)
+        t58 <- rdU walk ((12 * i55) + 11)
+        chkI radii ((24 * i1) + i55) 0 0
+        t59 <- rdU radii ((24 * i1) + i55)
+        let !s60 = (t59 / 4.0)
+        t61 <- rdU walk ((12 * i55) + 3)
+        t62 <- rdU walk ((12 * i55) + 4)
+        t63 <- rdU walk ((12 * i55) + 5)
+        let !t64 = (if (abs s60) > 0 then 1.0 else 0.0)
+        let !t65 = (sqrt ((t56 * t56) + (t58 * t58)))
+        let !t66 = (exp t57)
+        let !t67 = (t65 - t66)
+        let !t68 = (recip (2.0 * t65))
+        let !t69 = ((((t68 * (t56 + t56)) * t8) + ((negate t66) * t9)) + ((t68 * (t58 + t58)) * t10))
+        let !t70 = (if ((abs t67) - 1.0e-10) > 0 then (if (abs t69) > 0 then 1.0 else 0.0) else 0.0)
+        let !t71 = (1.0 - t64)
+        let !s72 = ((t64 * (if t70 > 0 then (t56 + (negate ((t67 / t69) * t8))) else t56)) + (t71 * t2))
+        let !s73 = ((t64 * (if t70 > 0 then (t57 + (negate ((t67 / t69) * t9))) else t57)) + (t71 * t3))
+        let !s74 = ((t64 * (if t70 > 0 then (t58 + (negate ((t67 / t69) * t10))) else t58)) + (t71 * t4))
+        chkI verts ((291 * i1) + (12 * i55)) 3 5
+        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s72 else t2)
+        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s73 else t3)
+        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s72 - s72) + (s73 - s73)) + (s74 - s74)))) > 0 then s74 else t4)
+        wrU walk (12 * i55) s72
+        wrU walk ((12 * i55) + 1) s73
+        wrU walk ((12 * i55) + 2) s74
+        let !t75 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
+        let !t76 = (if (abs s60) > 0 then (recip s60) else 0.0)
+        let !t77 = (t76 * ((if t70 > 0 then (t56 + (negate ((t67 / t69) * t8))) else t56) + (negate t2)))
+        let !t78 = (t68 * (t56 + t56))
+        let !t79 = (negate t66)
+        let !t80 = (t68 * (t58 + t58))
+        let !t81 = (sqrt (((t78 * t78) + (t79 * t79)) + (t80 * t80)))
+        let !t82 = (if t81 > 0 then (recip (if (t81 - 1.0e-300) > 0 then t81 else 1.0e-300)) else 0.0)
+        let !t83 = (t82 * t78)
+        let !t84 = (t82 * t79)
+        let !t85 = (t76 * ((if t70 > 0 then (t57 + (negate ((t67 / t69) * t9))) else t57) + (negate t3)))
+        let !t86 = (t82 * t80)
+        let !t87 = (t76 * ((if t70 > 0 then (t58 + (negate ((t67 / t69) * t10))) else t58) + (negate t4)))
+        let !t88 = (((t83 * t77) + (t84 * t85)) + (t86 * t87))
+        let !t89 = (t77 + (negate (t88 * t83)))
+        let !t90 = (t85 + (negate (t88 * t84)))
+        let !t91 = (t87 + (negate (t88 * t86)))
+        let !t92 = (sqrt (((t89 * t89) + (t90 * t90)) + (t91 * t91)))
+        let !t93 = (if t92 > 0 then (recip (if (t92 - 1.0e-300) > 0 then t92 else 1.0e-300)) else 0.0)
+        let !s94 = ((t64 * (t75 * (t93 * t89))) + (t71 * t61))
+        let !s95 = ((t64 * (t75 * (t93 * t90))) + (t71 * t62))
+        let !s96 = ((t64 * (t75 * (t93 * t91))) + (t71 * t63))
+        wrU walk ((12 * i55) + 3) s94
+        wrU walk ((12 * i55) + 4) s95
+        wrU walk ((12 * i55) + 5) s96
+        let !s97 = ((t64 * t83) + (t71 * t8))
+        let !s98 = ((t64 * t84) + (t71 * t9))
+        let !s99 = ((t64 * t86) + (t71 * t10))
+        wrU walk ((12 * i55) + 6) s97
+        wrU walk ((12 * i55) + 7) s98
+        wrU walk ((12 * i55) + 8) s99
         pure ()
-      loopI 0.0 24.0 $ \i102 -> do
-        let !d102 = fromIntegral i102 :: Double
-        chkI walk (12 * i102) 0 11
-        t103 <- rdU walk ((12 * i102) + 6)
-        t104 <- rdU walk ((12 * i102) + 7)
-        t105 <- rdU walk ((12 * i102) + 8)
-        chkI radii ((24 * i1) + i102) 0 0
-        t106 <- rdU radii ((24 * i1) + i102)
-        let !s107 = (t106 / 4.0)
-        t108 <- rdU walk (12 * i102)
-        t109 <- rdU walk ((12 * i102) + 1)
-        t110 <- rdU walk ((12 * i102) + 2)
-        t111 <- rdU walk ((12 * i102) + 3)
-        t112 <- rdU walk ((12 * i102) + 4)
-        t113 <- rdU walk ((12 * i102) + 5)
-        let !s114 = (t108 + (s107 * t111))
-        let !s115 = (t109 + (s107 * t112))
-        let !s116 = (t110 + (s107 * t113))
-        let !t117 = (sqrt ((s114 * s114) + (s116 * s116)))
-        let !t118 = (exp s115)
-        let !t119 = (t117 - t118)
-        let !t120 = (recip (2.0 * t117))
-        let !t121 = ((((t120 * (s114 + s114)) * t103) + ((negate t118) * t104)) + ((t120 * (s116 + s116)) * t105))
-        let !t122 = (if ((abs t119) - 1.0e-10) > 0 then (if (abs t121) > 0 then 1.0 else 0.0) else 0.0)
-        let !s123 = (if t122 > 0 then (s114 + (negate ((t119 / t121) * t103))) else s114)
-        let !s124 = (if t122 > 0 then (s115 + (negate ((t119 / t121) * t104))) else s115)
-        let !s125 = (if t122 > 0 then (s116 + (negate ((t119 / t121) * t105))) else s116)
-        wrU walk ((12 * i102) + 9) s123
-        wrU walk ((12 * i102) + 10) s124
-        wrU walk ((12 * i102) + 11) s125
+      loopI 0.0 24.0 $ \i100 -> do
+        let !d100 = fromIntegral i100 :: Double
+        chkI walk (12 * i100) 0 11
+        t101 <- rdU walk ((12 * i100) + 6)
+        t102 <- rdU walk ((12 * i100) + 7)
+        t103 <- rdU walk ((12 * i100) + 8)
+        chkI radii ((24 * i1) + i100) 0 0
+        t104 <- rdU radii ((24 * i1) + i100)
+        let !s105 = (t104 / 4.0)
+        t106 <- rdU walk (12 * i100)
+        t107 <- rdU walk ((12 * i100) + 1)
+        t108 <- rdU walk ((12 * i100) + 2)
+        t109 <- rdU walk ((12 * i100) + 3)
+        t110 <- rdU walk ((12 * i100) + 4)
+        t111 <- rdU walk ((12 * i100) + 5)
+        let !s112 = (t106 + (s105 * t109))
+        let !s113 = (t107 + (s105 * t110))
+        let !s114 = (t108 + (s105 * t111))
+        let !t115 = (sqrt ((s112 * s112) + (s114 * s114)))
+        let !t116 = (exp s113)
+        let !t117 = (t115 - t116)
+        let !t118 = (recip (2.0 * t115))
+        let !t119 = ((((t118 * (s112 + s112)) * t101) + ((negate t116) * t102)) + ((t118 * (s114 + s114)) * t103))
+        let !t120 = (if ((abs t117) - 1.0e-10) > 0 then (if (abs t119) > 0 then 1.0 else 0.0) else 0.0)
+        let !s121 = (if t120 > 0 then (s112 + (negate ((t117 / t119) * t101))) else s112)
+        let !s122 = (if t120 > 0 then (s113 + (negate ((t117 / t119) * t102))) else s113)
+        let !s123 = (if t120 > 0 then (s114 + (negate ((t117 / t119) * t103))) else s114)
+        wrU walk ((12 * i100) + 9) s121
+        wrU walk ((12 * i100) + 10) s122
+        wrU walk ((12 * i100) + 11) s123
         pure ()
-      loopI 0.0 24.0 $ \i126 -> do
-        let !d126 = fromIntegral i126 :: Double
-        chkI walk (12 * i126) 6 11
-        t127 <- rdU walk ((12 * i126) + 6)
-        t128 <- rdU walk ((12 * i126) + 7)
-        t129 <- rdU walk ((12 * i126) + 8)
-        t130 <- rdU walk ((12 * i126) + 9)
-        t131 <- rdU walk ((12 * i126) + 10)
-        t132 <- rdU walk ((12 * i126) + 11)
-        let !t133 = (sqrt ((t130 * t130) + (t132 * t132)))
-        let !t134 = (exp t131)
-        let !t135 = (t133 - t134)
-        let !t136 = (recip (2.0 * t133))
-        let !t137 = ((((t136 * (t130 + t130)) * t127) + ((negate t134) * t128)) + ((t136 * (t132 + t132)) * t129))
-        let !t138 = (if ((abs t135) - 1.0e-10) > 0 then (if (abs t137) > 0 then 1.0 else 0.0) else 0.0)
-        let !s139 = (if t138 > 0 then (t130 + (negate ((t135 / t137) * t127))) else t130)
-        let !s140 = (if t138 > 0 then (t131 + (negate ((t135 / t137) * t128))) else t131)
-        let !s141 = (if t138 > 0 then (t132 + (negate ((t135 / t137) * t129))) else t132)
-        wrU walk ((12 * i126) + 9) s139
-        wrU walk ((12 * i126) + 10) s140
-        wrU walk ((12 * i126) + 11) s141
+      loopI 0.0 24.0 $ \i124 -> do
+        let !d124 = fromIntegral i124 :: Double
+        chkI walk (12 * i124) 6 11
+        t125 <- rdU walk ((12 * i124) + 6)
+        t126 <- rdU walk ((12 * i124) + 7)
+        t127 <- rdU walk ((12 * i124) + 8)
+        t128 <- rdU walk ((12 * i124) + 9)
+        t129 <- rdU walk ((12 * i124) + 10)
+        t130 <- rdU walk ((12 * i124) + 11)
+        let !t131 = (sqrt ((t128 * t128) + (t130 * t130)))
+        let !t132 = (exp t129)
+        let !t133 = (t131 - t132)
+        let !t134 = (recip (2.0 * t131))
+        let !t135 = ((((t134 * (t128 + t128)) * t125) + ((negate t132) * t126)) + ((t134 * (t130 + t130)) * t127))
+        let !t136 = (if ((abs t133) - 1.0e-10) > 0 then (if (abs t135) > 0 then 1.0 else 0.0) else 0.0)
+        let !s137 = (if t136 > 0 then (t128 + (negate ((t133 / t135) * t125))) else t128)
+        let !s138 = (if t136 > 0 then (t129 + (negate ((t133 / t135) * t126))) else t129)
+        let !s139 = (if t136 > 0 then (t130 + (negate ((t133 / t135) * t127))) else t130)
+        wrU walk ((12 * i124) + 9) s137
+        wrU walk ((12 * i124) + 10) s138
+        wrU walk ((12 * i124) + 11) s139
         pure ()
-      loopI 0.0 24.0 $ \i142 -> do
-        let !d142 = fromIntegral i142 :: Double
-        chkI walk (12 * i142) 0 11
-        t143 <- rdU walk ((12 * i142) + 6)
-        t144 <- rdU walk ((12 * i142) + 7)
-        t145 <- rdU walk ((12 * i142) + 8)
-        t146 <- rdU walk ((12 * i142) + 9)
-        t147 <- rdU walk ((12 * i142) + 10)
-        t148 <- rdU walk ((12 * i142) + 11)
-        chkI radii ((24 * i1) + i142) 0 0
-        t149 <- rdU radii ((24 * i1) + i142)
-        let !s150 = (t149 / 4.0)
-        t151 <- rdU walk (12 * i142)
-        t152 <- rdU walk ((12 * i142) + 1)
-        t153 <- rdU walk ((12 * i142) + 2)
-        t154 <- rdU walk ((12 * i142) + 3)
-        t155 <- rdU walk ((12 * i142) + 4)
-        t156 <- rdU walk ((12 * i142) + 5)
-        let !t157 = (if (abs s150) > 0 then 1.0 else 0.0)
-        let !t158 = (sqrt ((t146 * t146) + (t148 * t148)))
-        let !t159 = (exp t147)
-        let !t160 = (t158 - t159)
-        let !t161 = (recip (2.0 * t158))
-        let !t162 = ((((t161 * (t146 + t146)) * t143) + ((negate t159) * t144)) + ((t161 * (t148 + t148)) * t145))
-        let !t163 = (if ((abs t160) - 1.0e-10) > 0 then (if (abs t162) > 0 then 1.0 else 0.0) else 0.0)
-        let !t164 = (1.0 - t157)
-        let !s165 = ((t157 * (if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146)) + (t164 * t151))
-        let !s166 = ((t157 * (if t163 > 0 then (t147 + (negate ((t160 / t162) * t144))) else t147)) + (t164 * t152))
-        let !s167 = ((t157 * (if t163 > 0 then (t148 + (negate ((t160 / t162) * t145))) else t148)) + (t164 * t153))
-        chkI verts ((291 * i1) + (12 * i142)) 6 8
-        wrU verts (((291 * i1) + (12 * i142)) + 6) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s165 else t2)
-        wrU verts (((291 * i1) + (12 * i142)) + 7) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s166 else t3)
-        wrU verts (((291 * i1) + (12 * i142)) + 8) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s167 else t4)
-        wrU walk (12 * i142) s165
-        wrU walk ((12 * i142) + 1) s166
-        wrU walk ((12 * i142) + 2) s167
-        let !t168 = (sqrt (((t154 * t154) + (t155 * t155)) + (t156 * t156)))
-        let !t169 = (if (abs s150) > 0 then (recip s150) else 0.0)
-        let !t170 = (t169 * ((if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146) + (negate t151)))
-        let !t171 = (t161 * (t146 + t146))
-        let !t172 = (negate t159)
-        let !t173 = (t161 * (t148 + t148))
-        let !t174 = (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173)))
-        let !t175 = (if t174 > 0 then (recip (if (t174 - 1.0e-300) > 0 then t174 else 1.0e-300)) else 0.0)
-        let !t176 = (t175 * t171)
-        let !t177 = (t175 * t172)
-        let !t178 = (t169 * ((if t163 > 0 then (t147 + (negate ((t160 / t162) * t144))) else t147) + (negate t152)))
-        let !t179 = (t175 * t173)
-        let !t180 = (t169 * ((if t163 > 0 then (t148 + (negate ((t160 / t162) * t145))) else t148) + (negate t153)))
-        let !t181 = (((t176 * t170) + (t177 * t178)) + (t179 * t180))
-        let !t182 = (t170 + (negate (t181 * t176)))
-        let !t183 = (t178 + (negate (t181 * t177)))
-        let !t184 = (t180 + (negate (t181 * t179)))
-        let !t185 = (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184)))
-        let !t186 = (if t185 > 0 then (recip (if (t185 - 1.0e-300) > 0 then t185 else 1.0e-300)) else 0.0)
-        let !s187 = ((t157 * (t168 * (t186 * t182))) + (t164 * t154))
-        let !s188 = ((t157 * (t168 * (t186 * t183))) + (t164 * t155))
-        let !s189 = ((t157 * (t168 * (t186 * t184))) + (t164 * t156))
-        wrU walk ((12 * i142) + 3) s187
-        wrU walk ((12 * i142) + 4) s188
-        wrU walk ((12 * i142) + 5) s189
-        let !s190 = ((t157 * t176) + (t164 * t143))
-        let !s191 = ((t157 * t177) + (t164 * t144))
-        let !s192 = ((t157 * t179) + (t164 * t145))
-        wrU walk ((12 * i142) + 6) s190
-        wrU walk ((12 * i142) + 7) s191
-        wrU walk ((12 * i142) + 8) s192
+      loopI 0.0 24.0 $ \i140 -> do
+        let !d140 = fromIntegral i140 :: Double
+        chkI walk (12 * i140) 0 11
+        t141 <- rdU walk ((12 * i140) + 6)
+        t142 <- rdU walk ((12 * i140) + 7)
+        t143 <- rdU walk ((12 * i140) + 8)
+        t144 <- rdU walk ((12 * i140) + 9)
+        t145 <- rdU walk ((12 * i140) + 10)
+        t146 <- rdU walk ((12 * i140) + 11)
+        chkI radii ((24 * i1) + i140) 0 0
+        t147 <- rdU radii ((24 * i1) + i140)
+        let !s148 = (t147 / 4.0)
+        t149 <- rdU walk (12 * i140)
+        t150 <- rdU walk ((12 * i140) + 1)
+        t151 <- rdU walk ((12 * i140) + 2)
+        t152 <- rdU walk ((12 * i140) + 3)
+        t153 <- rdU walk ((12 * i140) + 4)
+        t154 <- rdU walk ((12 * i140) + 5)
+        let !t155 = (if (abs s148) > 0 then 1.0 else 0.0)
+        let !t156 = (sqrt ((t144 * t144) + (t146 * t146)))
+        let !t157 = (exp t145)
+        let !t158 = (t156 - t157)
+        let !t159 = (recip (2.0 * t156))
+        let !t160 = ((((t159 * (t144 + t144)) * t141) + ((negate t157) * t142)) + ((t159 * (t146 + t146)) * t143))
+        let !t161 = (if ((abs t158) - 1.0e-10) > 0 then (if (abs t160) > 0 then 1.0 else 0.0) else 0.0)
+        let !t162 = (1.0 - t155)
+        let !s163 = ((t155 * (if t161 > 0 then (t144 + (negate ((t158 / t160) * t141))) else t144)) + (t162 * t149))
+        let !s164 = ((t155 * (if t161 > 0 then (t145 + (negate ((t158 / t160) * t142))) else t145)) + (t162 * t150))
+        let !s165 = ((t155 * (if t161 > 0 then (t146 + (negate ((t158 / t160) * t143))) else t146)) + (t162 * t151))
+        chkI verts ((291 * i1) + (12 * i140)) 6 8
+        wrU verts (((291 * i1) + (12 * i140)) + 6) (if (1.0 - (abs (((s163 - s163) + (s164 - s164)) + (s165 - s165)))) > 0 then s163 else t2)
+        wrU verts (((291 * i1) + (12 * i140)) + 7) (if (1.0 - (abs (((s163 - s163) + (s164 - s164)) + (s165 - s165)))) > 0 then s164 else t3)
+        wrU verts (((291 * i1) + (12 * i140)) + 8) (if (1.0 - (abs (((s163 - s163) + (s164 - s164)) + (s165 - s165)))) > 0 then s165 else t4)
+        wrU walk (12 * i140) s163
+        wrU walk ((12 * i140) + 1) s164
+        wrU walk ((12 * i140) + 2) s165
+        let !t166 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
+        let !t167 = (if (abs s148) > 0 then (recip s148) else 0.0)
+        let !t168 = (t167 * ((if t161 > 0 then (t144 + (negate ((t158 / t160) * t141))) else t144) + (negate t149)))
+        let !t169 = (t159 * (t144 + t144))
+        let !t170 = (negate t157)
+        let !t171 = (t159 * (t146 + t146))
+        let !t172 = (sqrt (((t169 * t169) + (t170 * t170)) + (t171 * t171)))
+        let !t173 = (if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0)
+        let !t174 = (t173 * t169)
+        let !t175 = (t173 * t170)
+        let !t176 = (t167 * ((if t161 > 0 then (t145 + (negate ((t158 / t160) * t142))) else t145) + (negate t150)))
+        let !t177 = (t173 * t171)
+        let !t178 = (t167 * ((if t161 > 0 then (t146 + (negate ((t158 / t160) * t143))) else t146) + (negate t151)))
+        let !t179 = (((t174 * t168) + (t175 * t176)) + (t177 * t178))
+        let !t180 = (t168 + (negate (t179 * t174)))
+        let !t181 = (t176 + (negate (t179 * t175)))
+        let !t182 = (t178 + (negate (t179 * t177)))
+        let !t183 = (sqrt (((t180 * t180) + (t181 * t181)) + (t182 * t182)))
+        let !t184 = (if t183 > 0 then (recip (if (t183 - 1.0e-300) > 0 then t183 else 1.0e-300)) else 0.0)
+        let !s185 = ((t155 * (t166 * (t184 * t180))) + (t162 * t152))
+        let !s186 = ((t155 * (t166 * (t184 * t181))) + (t162 * t153))
+        let !s187 = ((t155 * (t166 * (t184 * t182))) + (t162 * t154))
+        wrU walk ((12 * i140) + 3) s185
+        wrU walk ((12 * i140) + 4) s186
+        wrU walk ((12 * i140) + 5) s187
+        let !s188 = ((t155 * t174) + (t162 * t141))
+        let !s189 = ((t155 * t175) + (t162 * t142))
+        let !s190 = ((t155 * t177) + (t162 * t143))
+        wrU walk ((12 * i140) + 6) s188
+        wrU walk ((12 * i140) + 7) s189
+        wrU walk ((12 * i140) + 8) s190
         pure ()
-      loopI 0.0 24.0 $ \i193 -> do
-        let !d193 = fromIntegral i193 :: Double
-        chkI walk (12 * i193) 0 11
-        t194 <- rdU walk ((12 * i193) + 6)
-        t195 <- rdU walk ((12 * i193) + 7)
-        t196 <- rdU walk ((12 * i193) + 8)
-        chkI radii ((24 * i1) + i193) 0 0
-        t197 <- rdU radii ((24 * i1) + i193)
-        let !s198 = (t197 / 4.0)
-        t199 <- rdU walk (12 * i193)
-        t200 <- rdU walk ((12 * i193) + 1)
-        t201 <- rdU walk ((12 * i193) + 2)
-        t202 <- rdU walk ((12 * i193) + 3)
-        t203 <- rdU walk ((12 * i193) + 4)
-        t204 <- rdU walk ((12 * i193) + 5)
-        let !s205 = (t199 + (s198 * t202))
-        let !s206 = (t200 + (s198 * t203))
-        let !s207 = (t201 + (s198 * t204))
-        let !t208 = (sqrt ((s205 * s205) + (s207 * s207)))
-        let !t209 = (exp s206)
-        let !t210 = (t208 - t209)
-        let !t211 = (recip (2.0 * t208))
-        let !t212 = ((((t211 * (s205 + s205)) * t194) + ((negate t209) * t195)) + ((t211 * (s207 + s207)) * t196))
-        let !t213 = (if ((abs t210) - 1.0e-10) > 0 then (if (abs t212) > 0 then 1.0 else 0.0) else 0.0)
-        let !s214 = (if t213 > 0 then (s205 + (negate ((t210 / t212) * t194))) else s205)
-        let !s215 = (if t213 > 0 then (s206 + (negate ((t210 / t212) * t195))) else s206)
-        let !s216 = (if t213 > 0 then (s207 + (negate ((t210 / t212) * t196))) else s207)
-        wrU walk ((12 * i193) + 9) s214
-        wrU walk ((12 * i193) + 10) s215
-        wrU walk ((12 * i193) + 11) s216
+      loopI 0.0 24.0 $ \i191 -> do
+        let !d191 = fromIntegral i191 :: Double
+        chkI walk (12 * i191) 0 11
+        t192 <- rdU walk ((12 * i191) + 6)
+        t193 <- rdU walk ((12 * i191) + 7)
+        t194 <- rdU walk ((12 * i191) + 8)
+        chkI radii ((24 * i1) + i191) 0 0
+        t195 <- rdU radii ((24 * i1) + i191)
+        let !s196 = (t195 / 4.0)
+        t197 <- rdU walk (12 * i191)
+        t198 <- rdU walk ((12 * i191) + 1)
+        t199 <- rdU walk ((12 * i191) + 2)
+        t200 <- rdU walk ((12 * i191) + 3)
+        t201 <- rdU walk ((12 * i191) + 4)
+        t202 <- rdU walk ((12 * i191) + 5)
+        let !s203 = (t197 + (s196 * t200))
+        let !s204 = (t198 + (s196 * t201))
+        let !s205 = (t199 + (s196 * t202))
+        let !t206 = (sqrt ((s203 * s203) + (s205 * s205)))
+        let !t207 = (exp s204)
+        let !t208 = (t206 - t207)
+        let !t209 = (recip (2.0 * t206))
+        let !t210 = ((((t209 * (s203 + s203)) * t192) + ((negate t207) * t193)) + ((t209 * (s205 + s205)) * t194))
+        let !t211 = (if ((abs t208) - 1.0e-10) > 0 then (if (abs t210) > 0 then 1.0 else 0.0) else 0.0)
+        let !s212 = (if t211 > 0 then (s203 + (negate ((t208 / t210) * t192))) else s203)
+        let !s213 = (if t211 > 0 then (s204 + (negate ((t208 / t210) * t193))) else s204)
+        let !s214 = (if t211 > 0 then (s205 + (negate ((t208 / t210) * t194))) else s205)
+        wrU walk ((12 * i191) + 9) s212
+        wrU walk ((12 * i191) + 10) s213
+        wrU walk ((12 * i191) + 11) s214
         pure ()
-      loopI 0.0 24.0 $ \i217 -> do
-        let !d217 = fromIntegral i217 :: Double
-        chkI walk (12 * i217) 6 11
-        t218 <- rdU walk ((12 * i217) + 6)
-        t219 <- rdU walk ((12 * i217) + 7)
-        t220 <- rdU walk ((12 * i217) + 8)
-        t221 <- rdU walk ((12 * i217) + 9)
-        t222 <- rdU walk ((12 * i217) + 10)
-        t223 <- rdU walk ((12 * i217) + 11)
-        let !t224 = (sqrt ((t221 * t221) + (t223 * t223)))
-        let !t225 = (exp t222)
-        let !t226 = (t224 - t225)
-        let !t227 = (recip (2.0 * t224))
-        let !t228 = ((((t227 * (t221 + t221)) * t218) + ((negate t225) * t219)) + ((t227 * (t223 + t223)) * t220))
-        let !t229 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t228) > 0 then 1.0 else 0.0) else 0.0)
-        let !s230 = (if t229 > 0 then (t221 + (negate ((t226 / t228) * t218))) else t221)
-        let !s231 = (if t229 > 0 then (t222 + (negate ((t226 / t228) * t219))) else t222)
-        let !s232 = (if t229 > 0 then (t223 + (negate ((t226 / t228) * t220))) else t223)
-        wrU walk ((12 * i217) + 9) s230
-        wrU walk ((12 * i217) + 10) s231
-        wrU walk ((12 * i217) + 11) s232
+      loopI 0.0 24.0 $ \i215 -> do
+        let !d215 = fromIntegral i215 :: Double
+        chkI walk (12 * i215) 6 11
+        t216 <- rdU walk ((12 * i215) + 6)
+        t217 <- rdU walk ((12 * i215) + 7)
+        t218 <- rdU walk ((12 * i215) + 8)
+        t219 <- rdU walk ((12 * i215) + 9)
+        t220 <- rdU walk ((12 * i215) + 10)
+        t221 <- rdU walk ((12 * i215) + 11)
+        let !t222 = (sqrt ((t219 * t219) + (t221 * t221)))
+        let !t223 = (exp t220)
+        let !t224 = (t222 - t223)
+        let !t225 = (recip (2.0 * t222))
+        let !t226 = ((((t225 * (t219 + t219)) * t216) + ((negate t223) * t217)) + ((t225 * (t221 + t221)) * t218))
+        let !t227 = (if ((abs t224) - 1.0e-10) > 0 then (if (abs t226) > 0 then 1.0 else 0.0) else 0.0)
+        let !s228 = (if t227 > 0 then (t219 + (negate ((t224 / t226) * t216))) else t219)
+        let !s229 = (if t227 > 0 then (t220 + (negate ((t224 / t226) * t217))) else t220)
+        let !s230 = (if t227 > 0 then (t221 + (negate ((t224 / t226) * t218))) else t221)
+        wrU walk ((12 * i215) + 9) s228
+        wrU walk ((12 * i215) + 10) s229
+        wrU walk ((12 * i215) + 11) s230
         pure ()
-      loopI 0.0 24.0 $ \i233 -> do
-        let !d233 = fromIntegral i233 :: Double
-        chkI walk (12 * i233) 0 11
-        t234 <- rdU walk ((12 * i233) + 6)
-        t235 <- rdU walk ((12 * i233) + 7)
-        t236 <- rdU walk ((12 * i233) + 8)
-        t237 <- rdU walk ((12 * i233) + 9)
-        t238 <- rdU walk ((12 * i233) + 10)
-        t239 <- rdU walk ((12 * i233) + 11)
-        chkI radii ((24 * i1) + i233) 0 0
-        t240 <- rdU radii ((24 * i1) + i233)
-        let !s241 = (t240 / 4.0)
-        t242 <- rdU walk (12 * i233)
-        t243 <- rdU walk ((12 * i233) + 1)
-        t244 <- rdU walk ((12 * i233) + 2)
-        t245 <- rdU walk ((12 * i233) + 3)
-        t246 <- rdU walk ((12 * i233) + 4)
-        t247 <- rdU walk ((12 * i233) + 5)
-        let !t248 = (if (abs s241) > 0 then 1.0 else 0.0)
-        let !t249 = (sqrt ((t237 * t237) + (t239 * t239)))
-        let !t250 = (exp t238)
-        let !t251 = (t249 - t250)
-        let !t252 = (recip (2.0 * t249))
-        let !t253 = ((((t252 * (t237 + t237)) * t234) + ((negate t250) * t235)) + ((t252 * (t239 + t239)) * t236))
-        let !t254 = (if ((abs t251) - 1.0e-10) > 0 then (if (abs t253) > 0 then 1.0 else 0.0) else 0.0)
-        let !t255 = (1.0 - t248)
-        let !s256 = ((t248 * (if t254 > 0 then (t237 + (negate ((t251 / t253) * t234))) else t237)) + (t255 * t242))
-        let !s257 = ((t248 * (if t254 > 0 then (t238 + (negate ((t251 / t253) * t235))) else t238)) + (t255 * t243))
-        let !s258 = ((t248 * (if t254 > 0 then (t239 + (negate ((t251 / t253) * t236))) else t239)) + (t255 * t244))
-        chkI verts ((291 * i1) + (12 * i233)) 9 11
-        wrU verts (((291 * i1) + (12 * i233)) + 9) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s256 else t2)
-        wrU verts (((291 * i1) + (12 * i233)) + 10) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s257 else t3)
-        wrU verts (((291 * i1) + (12 * i233)) + 11) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s258 else t4)
-        wrU walk (12 * i233) s256
-        wrU walk ((12 * i233) + 1) s257
-        wrU walk ((12 * i233) + 2) s258
-        let !t259 = (sqrt (((t245 * t245) + (t246 * t246)) + (t247 * t247)))
-        let !t260 = (if (abs s241) > 0 then (recip s241) else 0.0)
-        let !t261 = (t260 * ((if t254 > 0 then (t237 + (negate ((t251 / t253) * t234))) else t237) + (negate t242)))
-        let !t262 = (t252 * (t237 + t237))
-        let !t263 = (negate t250)
-        let !t264 = (t252 * (t239 + t239))
-        let !t265 = (sqrt (((t262 * t262) + (t263 * t263)) + (t264 * t264)))
-        let !t266 = (if t265 > 0 then (recip (if (t265 - 1.0e-300) > 0 then t265 else 1.0e-300)) else 0.0)
-        let !t267 = (t266 * t262)
-        let !t268 = (t266 * t263)
-        let !t269 = (t260 * ((if t254 > 0 then (t238 + (negate ((t251 / t253) * t235))) else t238) + (negate t243)))
-        let !t270 = (t266 * t264)
-        let !t271 = (t260 * ((if t254 > 0 then (t239 + (negate ((t251 / t253) * t236))) else t239) + (negate t244)))
-        let !t272 = (((t267 * t261) + (t268 * t269)) + (t270 * t271))
-        let !t273 = (t261 + (negate (t272 * t267)))
-        let !t274 = (t269 + (negate (t272 * t268)))
-        let !t275 = (t271 + (negate (t272 * t270)))
-        let !t276 = (sqrt (((t273 * t273) + (t274 * t274)) + (t275 * t275)))
-        let !t277 = (if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0)
-        let !s278 = ((t248 * (t259 * (t277 * t273))) + (t255 * t245))
-        let !s279 = ((t248 * (t259 * (t277 * t274))) + (t255 * t246))
-        let !s280 = ((t248 * (t259 * (t277 * t275))) + (t255 * t247))
-        wrU walk ((12 * i233) + 3) s278
-        wrU walk ((12 * i233) + 4) s279
-        wrU walk ((12 * i233) + 5) s280
-        let !s281 = ((t248 * t267) + (t255 * t234))
-        let !s282 = ((t248 * t268) + (t255 * t235))
-        let !s283 = ((t248 * t270) + (t255 * t236))
-        wrU walk ((12 * i233) + 6) s281
-        wrU walk ((12 * i233) + 7) s282
-        wrU walk ((12 * i233) + 8) s283
+      loopI 0.0 24.0 $ \i231 -> do
+        let !d231 = fromIntegral i231 :: Double
+        chkI walk (12 * i231) 0 11
+        t232 <- rdU walk ((12 * i231) + 6)
+        t233 <- rdU walk ((12 * i231) + 7)
+        t234 <- rdU walk ((12 * i231) + 8)
+        t235 <- rdU walk ((12 * i231) + 9)
+        t236 <- rdU walk ((12 * i231) + 10)
+        t237 <- rdU walk ((12 * i231) + 11)
+        chkI radii ((24 * i1) + i231) 0 0
+        t238 <- rdU radii ((24 * i1) + i231)
+        let !s239 = (t238 / 4.0)
+        t240 <- rdU walk (12 * i231)
+        t241 <- rdU walk ((12 * i231) + 1)
+        t242 <- rdU walk ((12 * i231) + 2)
+        t243 <- rdU walk ((12 * i231) + 3)
+        t244 <- rdU walk ((12 * i231) + 4)
+        t245 <- rdU walk ((12 * i231) + 5)
+        let !t246 = (if (abs s239) > 0 then 1.0 else 0.0)
+        let !t247 = (sqrt ((t235 * t235) + (t237 * t237)))
+        let !t248 = (exp t236)
+        let !t249 = (t247 - t248)
+        let !t250 = (recip (2.0 * t247))
+        let !t251 = ((((t250 * (t235 + t235)) * t232) + ((negate t248) * t233)) + ((t250 * (t237 + t237)) * t234))
+        let !t252 = (if ((abs t249) - 1.0e-10) > 0 then (if (abs t251) > 0 then 1.0 else 0.0) else 0.0)
+        let !t253 = (1.0 - t246)
+        let !s254 = ((t246 * (if t252 > 0 then (t235 + (negate ((t249 / t251) * t232))) else t235)) + (t253 * t240))
+        let !s255 = ((t246 * (if t252 > 0 then (t236 + (negate ((t249 / t251) * t233))) else t236)) + (t253 * t241))
+        let !s256 = ((t246 * (if t252 > 0 then (t237 + (negate ((t249 / t251) * t234))) else t237)) + (t253 * t242))
+        chkI verts ((291 * i1) + (12 * i231)) 9 11
+        wrU verts (((291 * i1) + (12 * i231)) + 9) (if (1.0 - (abs (((s254 - s254) + (s255 - s255)) + (s256 - s256)))) > 0 then s254 else t2)
+        wrU verts (((291 * i1) + (12 * i231)) + 10) (if (1.0 - (abs (((s254 - s254) + (s255 - s255)) + (s256 - s256)))) > 0 then s255 else t3)
+        wrU verts (((291 * i1) + (12 * i231)) + 11) (if (1.0 - (abs (((s254 - s254) + (s255 - s255)) + (s256 - s256)))) > 0 then s256 else t4)
+        wrU walk (12 * i231) s254
+        wrU walk ((12 * i231) + 1) s255
+        wrU walk ((12 * i231) + 2) s256
+        let !t257 = (sqrt (((t243 * t243) + (t244 * t244)) + (t245 * t245)))
+        let !t258 = (if (abs s239) > 0 then (recip s239) else 0.0)
+        let !t259 = (t258 * ((if t252 > 0 then (t235 + (negate ((t249 / t251) * t232))) else t235) + (negate t240)))
+        let !t260 = (t250 * (t235 + t235))
+        let !t261 = (negate t248)
+        let !t262 = (t250 * (t237 + t237))
+        let !t263 = (sqrt (((t260 * t260) + (t261 * t261)) + (t262 * t262)))
+        let !t264 = (if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0)
+        let !t265 = (t264 * t260)
+        let !t266 = (t264 * t261)
+        let !t267 = (t258 * ((if t252 > 0 then (t236 + (negate ((t249 / t251) * t233))) else t236) + (negate t241)))
+        let !t268 = (t264 * t262)
+        let !t269 = (t258 * ((if t252 > 0 then (t237 + (negate ((t249 / t251) * t234))) else t237) + (negate t242)))
+        let !t270 = (((t265 * t259) + (t266 * t267)) + (t268 * t269))
+        let !t271 = (t259 + (negate (t270 * t265)))
+        let !t272 = (t267 + (negate (t270 * t266)))
+        let !t273 = (t269 + (negate (t270 * t268)))
+        let !t274 = (sqrt (((t271 * t271) + (t272 * t272)) + (t273 * t273)))
+        let !t275 = (if t274 > 0 then (recip (if (t274 - 1.0e-300) > 0 then t274 else 1.0e-300)) else 0.0)
+        let !s276 = ((t246 * (t257 * (t275 * t271))) + (t253 * t243))
+        let !s277 = ((t246 * (t257 * (t275 * t272))) + (t253 * t244))
+        let !s278 = ((t246 * (t257 * (t275 * t273))) + (t253 * t245))
+        wrU walk ((12 * i231) + 3) s276
+        wrU walk ((12 * i231) + 4) s277
+        wrU walk ((12 * i231) + 5) s278
+        let !s279 = ((t246 * t265) + (t253 * t232))
+        let !s280 = ((t246 * t266) + (t253 * t233))
+        let !s281 = ((t246 * t268) + (t253 * t234))
+        wrU walk ((12 * i231) + 6) s279
+        wrU walk ((12 * i231) + 7) s280
+        wrU walk ((12 * i231) + 8) s281
         pure ()
-      loopI 0.0 24.0 $ \i284 -> do
-        let !d284 = fromIntegral i284 :: Double
-        chkI walk (12 * i284) 0 11
-        t285 <- rdU walk ((12 * i284) + 6)
-        t286 <- rdU walk ((12 * i284) + 7)
-        t287 <- rdU walk ((12 * i284) + 8)
-        chkI radii ((24 * i1) + i284) 0 0
-        t288 <- rdU radii ((24 * i1) + i284)
-        let !s289 = (t288 / 4.0)
-        t290 <- rdU walk (12 * i284)
-        t291 <- rdU walk ((12 * i284) + 1)
-        t292 <- rdU walk ((12 * i284) + 2)
-        t293 <- rdU walk ((12 * i284) + 3)
-        t294 <- rdU walk ((12 * i284) + 4)
-        t295 <- rdU walk ((12 * i284) + 5)
-        let !s296 = (t290 + (s289 * t293))
-        let !s297 = (t291 + (s289 * t294))
-        let !s298 = (t292 + (s289 * t295))
-        let !t299 = (sqrt ((s296 * s296) + (s298 * s298)))
-        let !t300 = (exp s297)
-        let !t301 = (t299 - t300)
-        let !t302 = (recip (2.0 * t299))
-        let !t303 = ((((t302 * (s296 + s296)) * t285) + ((negate t300) * t286)) + ((t302 * (s298 + s298)) * t287))
-        let !t304 = (if ((abs t301) - 1.0e-10) > 0 then (if (abs t303) > 0 then 1.0 else 0.0) else 0.0)
-        let !s305 = (if t304 > 0 then (s296 + (negate ((t301 / t303) * t285))) else s296)
-        let !s306 = (if t304 > 0 then (s297 + (negate ((t301 / t303) * t286))) else s297)
-        let !s307 = (if t304 > 0 then (s298 + (negate ((t301 / t303) * t287))) else s298)
-        wrU walk ((12 * i284) + 9) s305
-        wrU walk ((12 * i284) + 10) s306
-        wrU walk ((12 * i284) + 11) s307
+      loopI 0.0 24.0 $ \i282 -> do
+        let !d282 = fromIntegral i282 :: Double
+        chkI walk (12 * i282) 0 11
+        t283 <- rdU walk ((12 * i282) + 6)
+        t284 <- rdU walk ((12 * i282) + 7)
+        t285 <- rdU walk ((12 * i282) + 8)
+        chkI radii ((24 * i1) + i282) 0 0
+        t286 <- rdU radii ((24 * i1) + i282)
+        let !s287 = (t286 / 4.0)
+        t288 <- rdU walk (12 * i282)
+        t289 <- rdU walk ((12 * i282) + 1)
+        t290 <- rdU walk ((12 * i282) + 2)
+        t291 <- rdU walk ((12 * i282) + 3)
+        t292 <- rdU walk ((12 * i282) + 4)
+        t293 <- rdU walk ((12 * i282) + 5)
+        let !s294 = (t288 + (s287 * t291))
+        let !s295 = (t289 + (s287 * t292))
+        let !s296 = (t290 + (s287 * t293))
+        let !t297 = (sqrt ((s294 * s294) + (s296 * s296)))
+        let !t298 = (exp s295)
+        let !t299 = (t297 - t298)
+        let !t300 = (recip (2.0 * t297))
+        let !t301 = ((((t300 * (s294 + s294)) * t283) + ((negate t298) * t284)) + ((t300 * (s296 + s296)) * t285))
+        let !t302 = (if ((abs t299) - 1.0e-10) > 0 then (if (abs t301) > 0 then 1.0 else 0.0) else 0.0)
+        let !s303 = (if t302 > 0 then (s294 + (negate ((t299 / t301) * t283))) else s294)
+        let !s304 = (if t302 > 0 then (s295 + (negate ((t299 / t301) * t284))) else s295)
+        let !s305 = (if t302 > 0 then (s296 + (negate ((t299 / t301) * t285))) else s296)
+        wrU walk ((12 * i282) + 9) s303
+        wrU walk ((12 * i282) + 10) s304
+        wrU walk ((12 * i282) + 11) s305
         pure ()
-      loopI 0.0 24.0 $ \i308 -> do
-        let !d308 = fromIntegral i308 :: Double
-        chkI walk (12 * i308) 6 11
-        t309 <- rdU walk ((12 * i308) + 6)
-        t310 <- rdU walk ((12 * i308) + 7)
-        t311 <- rdU walk ((12 * i308) + 8)
-        t312 <- rdU walk ((12 * i308) + 9)
-        t313 <- rdU walk ((12 * i308) + 10)
-        t314 <- rdU walk ((12 * i308) + 11)
-        let !t315 = (sqrt ((t312 * t312) + (t314 * t314)))
-        let !t316 = (exp t313)
-        let !t317 = (t315 - t316)
-        let !t318 = (recip (2.0 * t315))
-        let !t319 = ((((t318 * (t312 + t312)) * t309) + ((negate t316) * t310)) + ((t318 * (t314 + t314)) * t311))
-        let !t320 = (if ((abs t317) - 1.0e-10) > 0 then (if (abs t319) > 0 then 1.0 else 0.0) else 0.0)
-        let !s321 = (if t320 > 0 then (t312 + (negate ((t317 / t319) * t309))) else t312)
-        let !s322 = (if t320 > 0 then (t313 + (negate ((t317 / t319) * t310))) else t313)
-        let !s323 = (if t320 > 0 then (t314 + (negate ((t317 / t319) * t311))) else t314)
-        wrU walk ((12 * i308) + 9) s321
-        wrU walk ((12 * i308) + 10) s322
-        wrU walk ((12 * i308) + 11) s323
+      loopI 0.0 24.0 $ \i306 -> do
+        let !d306 = fromIntegral i306 :: Double
+        chkI walk (12 * i306) 6 11
+        t307 <- rdU walk ((12 * i306) + 6)
+        t308 <- rdU walk ((12 * i306) + 7)
+        t309 <- rdU walk ((12 * i306) + 8)
+        t310 <- rdU walk ((12 * i306) + 9)
+        t311 <- rdU walk ((12 * i306) + 10)
+        t312 <- rdU walk ((12 * i306) + 11)
+        let !t313 = (sqrt ((t310 * t310) + (t312 * t312)))
+        let !t314 = (exp t311)
+        let !t315 = (t313 - t314)
+        let !t316 = (recip (2.0 * t313))
+        let !t317 = ((((t316 * (t310 + t310)) * t307) + ((negate t314) * t308)) + ((t316 * (t312 + t312)) * t309))
+        let !t318 = (if ((abs t315) - 1.0e-10) > 0 then (if (abs t317) > 0 then 1.0 else 0.0) else 0.0)
+        let !s319 = (if t318 > 0 then (t310 + (negate ((t315 / t317) * t307))) else t310)
+        let !s320 = (if t318 > 0 then (t311 + (negate ((t315 / t317) * t308))) else t311)
+        let !s321 = (if t318 > 0 then (t312 + (negate ((t315 / t317) * t309))) else t312)
+        wrU walk ((12 * i306) + 9) s319
+        wrU walk ((12 * i306) + 10) s320
+        wrU walk ((12 * i306) + 11) s321
         pure ()
-      loopI 0.0 24.0 $ \i324 -> do
-        let !d324 = fromIntegral i324 :: Double
-        chkI walk (12 * i324) 0 11
-        t325 <- rdU walk ((12 * i324) + 6)
-        t326 <- rdU walk ((12 * i324) + 7)
-        t327 <- rdU walk ((12 * i324) + 8)
-        t328 <- rdU walk ((12 * i324) + 9)
-        t329 <- rdU walk ((12 * i324) + 10)
-        t330 <- rdU walk ((12 * i324) + 11)
-        chkI radii ((24 * i1) + i324) 0 0
-        t331 <- rdU radii ((24 * i1) + i324)
-        let !s332 = (t331 / 4.0)
-        t333 <- rdU walk (12 * i324)
-        t334 <- rdU walk ((12 * i324) + 1)
-        t335 <- rdU walk ((12 * i324) + 2)
-        t336 <- rdU walk ((12 * i324) + 3)
-        t337 <- rdU walk ((12 * i324) + 4)
-        t338 <- rdU walk ((12 * i324) + 5)
-        let !t339 = (if (abs s332) > 0 then 1.0 else 0.0)
-        let !t340 = (sqrt ((t328 * t328) + (t330 * t330)))
-        let !t341 = (exp t329)
-        let !t342 = (t340 - t341)
-        let !t343 = (recip (2.0 * t340))
-        let !t344 = ((((t343 * (t328 + t328)) * t325) + ((negate t341) * t326)) + ((t343 * (t330 + t330)) * t327))
-        let !t345 = (if ((abs t342) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
-        let !t346 = (1.0 - t339)
-        let !s347 = ((t339 * (if t345 > 0 then (t328 + (negate ((t342 / t344) * t325))) else t328)) + (t346 * t333))
-        let !s348 = ((t339 * (if t345 > 0 then (t329 + (negate ((t342 / t344) * t326))) else t329)) + (t346 * t334))
-        let !s349 = ((t339 * (if t345 > 0 then (t330 + (negate ((t342 / t344) * t327))) else t330)) + (t346 * t335))
-        chkI verts ((291 * i1) + (12 * i324)) 12 14
-        wrU verts (((291 * i1) + (12 * i324)) + 12) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s347 else t2)
-        wrU verts (((291 * i1) + (12 * i324)) + 13) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s348 else t3)
-        wrU verts (((291 * i1) + (12 * i324)) + 14) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s349 else t4)
+      loopI 0.0 24.0 $ \i322 -> do
+        let !d322 = fromIntegral i322 :: Double
+        chkI walk (12 * i322) 0 11
+        t323 <- rdU walk ((12 * i322) + 6)
+        t324 <- rdU walk ((12 * i322) + 7)
+        t325 <- rdU walk ((12 * i322) + 8)
+        t326 <- rdU walk ((12 * i322) + 9)
+        t327 <- rdU walk ((12 * i322) + 10)
+        t328 <- rdU walk ((12 * i322) + 11)
+        chkI radii ((24 * i1) + i322) 0 0
+        t329 <- rdU radii ((24 * i1) + i322)
+        let !s330 = (t329 / 4.0)
+        t331 <- rdU walk (12 * i322)
+        t332 <- rdU walk ((12 * i322) + 1)
+        t333 <- rdU walk ((12 * i322) + 2)
+        t334 <- rdU walk ((12 * i322) + 3)
+        t335 <- rdU walk ((12 * i322) + 4)
+        t336 <- rdU walk ((12 * i322) + 5)
+        let !t337 = (if (abs s330) > 0 then 1.0 else 0.0)
+        let !t338 = (sqrt ((t326 * t326) + (t328 * t328)))
+        let !t339 = (exp t327)
+        let !t340 = (t338 - t339)
+        let !t341 = (recip (2.0 * t338))
+        let !t342 = ((((t341 * (t326 + t326)) * t323) + ((negate t339) * t324)) + ((t341 * (t328 + t328)) * t325))
+        let !t343 = (if ((abs t340) - 1.0e-10) > 0 then (if (abs t342) > 0 then 1.0 else 0.0) else 0.0)
+        let !t344 = (1.0 - t337)
+        let !s345 = ((t337 * (if t343 > 0 then (t326 + (negate ((t340 / t342) * t323))) else t326)) + (t344 * t331))
+        let !s346 = ((t337 * (if t343 > 0 then (t327 + (negate ((t340 / t342) * t324))) else t327)) + (t344 * t332))
+        let !s347 = ((t337 * (if t343 > 0 then (t328 + (negate ((t340 / t342) * t325))) else t328)) + (t344 * t333))
+        chkI verts ((291 * i1) + (12 * i322)) 12 14
+        wrU verts (((291 * i1) + (12 * i322)) + 12) (if (1.0 - (abs (((s345 - s345) + (s346 - s346)) + (s347 - s347)))) > 0 then s345 else t2)
+        wrU verts (((291 * i1) + (12 * i322)) + 13) (if (1.0 - (abs (((s345 - s345) + (s346 - s346)) + (s347 - s347)))) > 0 then s346 else t3)
+        wrU verts (((291 * i1) + (12 * i322)) + 14) (if (1.0 - (abs (((s345 - s345) + (s346 - s346)) + (s347 - s347)))) > 0 then s347 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i350 -> do
-        let !d350 = fromIntegral i350 :: Double
-        t351 <- getR v18
-        t352 <- getR v19
-        setR v18 ((t351 * 0.9659258262890683) - (t352 * 0.25881904510252074))
-        setR v19 ((t352 * 0.9659258262890683) + (t351 * 0.25881904510252074))
-        let !s353 = ((t351 * t5) + (t352 * s14))
-        let !s354 = ((t351 * t6) + (t352 * s15))
-        let !s355 = ((t351 * t7) + (t352 * s16))
-        chkI walk (12 * i350) 3 5
-        wrU walk ((12 * i350) + 3) s353
-        wrU walk ((12 * i350) + 4) s354
-        wrU walk ((12 * i350) + 5) s355
+      loopI 0.0 24.0 $ \i348 -> do
+        let !d348 = fromIntegral i348 :: Double
+        t349 <- rdU locals 0
+        t350 <- rdU locals 1
+        wrU locals 0 ((t349 * 0.9659258262890683) - (t350 * 0.25881904510252074))
+        wrU locals 1 ((t350 * 0.9659258262890683) + (t349 * 0.25881904510252074))
+        let !s351 = ((t349 * t5) + (t350 * s14))
+        let !s352 = ((t349 * t6) + (t350 * s15))
+        let !s353 = ((t349 * t7) + (t350 * s16))
+        chkI walk (12 * i348) 3 5
+        wrU walk ((12 * i348) + 3) s351
+        wrU walk ((12 * i348) + 4) s352
+        wrU walk ((12 * i348) + 5) s353
         pure ()
-      loopI 0.0 24.0 $ \i356 -> do
-        let !d356 = fromIntegral i356 :: Double
-        chkI radii ((24 * i1) + i356) 0 0
-        t357 <- rdU radii ((24 * i1) + i356)
-        chkI walk (12 * i356) 3 11
-        t358 <- rdU walk ((12 * i356) + 3)
-        t359 <- rdU walk ((12 * i356) + 4)
-        t360 <- rdU walk ((12 * i356) + 5)
-        let !s361 = (t2 + (t357 * t358))
-        let !s362 = (t3 + (t357 * t359))
-        let !s363 = (t4 + (t357 * t360))
-        let !t364 = (sqrt ((s361 * s361) + (s363 * s363)))
-        let !t365 = (exp s362)
-        let !t366 = (t364 - t365)
-        let !t367 = (recip (2.0 * t364))
-        let !t368 = ((((t367 * (s361 + s361)) * t8) + ((negate t365) * t9)) + ((t367 * (s363 + s363)) * t10))
-        let !t369 = (if ((abs t366) - 1.0e-10) > 0 then (if (abs t368) > 0 then 1.0 else 0.0) else 0.0)
-        let !s370 = (if t369 > 0 then (s361 + (negate ((t366 / t368) * t8))) else s361)
-        let !s371 = (if t369 > 0 then (s362 + (negate ((t366 / t368) * t9))) else s362)
-        let !s372 = (if t369 > 0 then (s363 + (negate ((t366 / t368) * t10))) else s363)
-        wrU walk ((12 * i356) + 9) s370
-        wrU walk ((12 * i356) + 10) s371
-        wrU walk ((12 * i356) + 11) s372
+      loopI 0.0 24.0 $ \i354 -> do
+        let !d354 = fromIntegral i354 :: Double
+        chkI radii ((24 * i1) + i354) 0 0
+        t355 <- rdU radii ((24 * i1) + i354)
+        chkI walk (12 * i354) 3 11
+        t356 <- rdU walk ((12 * i354) + 3)
+        t357 <- rdU walk ((12 * i354) + 4)
+        t358 <- rdU walk ((12 * i354) + 5)
+        let !s359 = (t2 + (t355 * t356))
+        let !s360 = (t3 + (t355 * t357))
+        let !s361 = (t4 + (t355 * t358))
+        let !t362 = (sqrt ((s359 * s359) + (s361 * s361)))
+        let !t363 = (exp s360)
+        let !t364 = (t362 - t363)
+        let !t365 = (recip (2.0 * t362))
+        let !t366 = ((((t365 * (s359 + s359)) * t8) + ((negate t363) * t9)) + ((t365 * (s361 + s361)) * t10))
+        let !t367 = (if ((abs t364) - 1.0e-10) > 0 then (if (abs t366) > 0 then 1.0 else 0.0) else 0.0)
+        let !s368 = (if t367 > 0 then (s359 + (negate ((t364 / t366) * t8))) else s359)
+        let !s369 = (if t367 > 0 then (s360 + (negate ((t364 / t366) * t9))) else s360)
+        let !s370 = (if t367 > 0 then (s361 + (negate ((t364 / t366) * t10))) else s361)
+        wrU walk ((12 * i354) + 9) s368
+        wrU walk ((12 * i354) + 10) s369
+        wrU walk ((12 * i354) + 11) s370
         pure ()
-      loopI 0.0 24.0 $ \i373 -> do
-        let !d373 = fromIntegral i373 :: Double
-        chkI walk (12 * i373) 9 11
-        t374 <- rdU walk ((12 * i373) + 9)
-        t375 <- rdU walk ((12 * i373) + 10)
-        t376 <- rdU walk ((12 * i373) + 11)
-        let !t377 = (sqrt ((t374 * t374) + (t376 * t376)))
-        let !t378 = (exp t375)
-        let !t379 = (t377 - t378)
-        let !t380 = (recip (2.0 * t377))
-        let !t381 = ((((t380 * (t374 + t374)) * t8) + ((negate t378) * t9)) + ((t380 * (t376 + t376)) * t10))
-        let !t382 = (if ((abs t379) - 1.0e-10) > 0 then (if (abs t381) > 0 then 1.0 else 0.0) else 0.0)
-        let !s383 = (if t382 > 0 then (t374 + (negate ((t379 / t381) * t8))) else t374)
-        let !s384 = (if t382 > 0 then (t375 + (negate ((t379 / t381) * t9))) else t375)
-        let !s385 = (if t382 > 0 then (t376 + (negate ((t379 / t381) * t10))) else t376)
-        wrU walk ((12 * i373) + 9) s383
-        wrU walk ((12 * i373) + 10) s384
-        wrU walk ((12 * i373) + 11) s385
+      loopI 0.0 24.0 $ \i371 -> do
+        let !d371 = fromIntegral i371 :: Double
+        chkI walk (12 * i371) 9 11
+        t372 <- rdU walk ((12 * i371) + 9)
+        t373 <- rdU walk ((12 * i371) + 10)
+        t374 <- rdU walk ((12 * i371) + 11)
+        let !t375 = (sqrt ((t372 * t372) + (t374 * t374)))
+        let !t376 = (exp t373)
+        let !t377 = (t375 - t376)
+        let !t378 = (recip (2.0 * t375))
+        let !t379 = ((((t378 * (t372 + t372)) * t8) + ((negate t376) * t9)) + ((t378 * (t374 + t374)) * t10))
+        let !t380 = (if ((abs t377) - 1.0e-10) > 0 then (if (abs t379) > 0 then 1.0 else 0.0) else 0.0)
+        let !s381 = (if t380 > 0 then (t372 + (negate ((t377 / t379) * t8))) else t372)
+        let !s382 = (if t380 > 0 then (t373 + (negate ((t377 / t379) * t9))) else t373)
+        let !s383 = (if t380 > 0 then (t374 + (negate ((t377 / t379) * t10))) else t374)
+        wrU walk ((12 * i371) + 9) s381
+        wrU walk ((12 * i371) + 10) s382
+        wrU walk ((12 * i371) + 11) s383
         pure ()
-      loopI 0.0 24.0 $ \i386 -> do
-        let !d386 = fromIntegral i386 :: Double
-        chkI walk (12 * i386) 3 11
-        t387 <- rdU walk ((12 * i386) + 9)
-        t388 <- rdU walk ((12 * i386) + 10)
-        t389 <- rdU walk ((12 * i386) + 11)
-        chkI radii ((24 * i1) + i386) 0 0
-        t390 <- rdU radii ((24 * i1) + i386)
-        t391 <- rdU walk ((12 * i386) + 3)
-        t392 <- rdU walk ((12 * i386) + 4)
-        t393 <- rdU walk ((12 * i386) + 5)
-        let !t394 = (if (abs t390) > 0 then 1.0 else 0.0)
-        let !t395 = (sqrt ((t387 * t387) + (t389 * t389)))
-        let !t396 = (exp t388)
-        let !t397 = (t395 - t396)
-        let !t398 = (recip (2.0 * t395))
-        let !t399 = ((((t398 * (t387 + t387)) * t8) + ((negate t396) * t9)) + ((t398 * (t389 + t389)) * t10))
-        let !t400 = (if ((abs t397) - 1.0e-10) > 0 then (if (abs t399) > 0 then 1.0 else 0.0) else 0.0)
-        let !t401 = (1.0 - t394)
-        let !s402 = ((t394 * (if t400 > 0 then (t387 + (negate ((t397 / t399) * t8))) else t387)) + (t401 * t2))
-        let !s403 = ((t394 * (if t400 > 0 then (t388 + (negate ((t397 / t399) * t9))) else t388)) + (t401 * t3))
-        let !s404 = ((t394 * (if t400 > 0 then (t389 + (negate ((t397 / t399) * t10))) else t389)) + (t401 * t4))
-        let !t405 = (1.0 - (abs (((s402 - s402) + (s403 - s403)) + (s404 - s404))))
-        let !s406 = (if t405 > 0 then s402 else t2)
-        let !s407 = (if t405 > 0 then s403 else t3)
-        let !s408 = (if t405 > 0 then s404 else t4)
-        chkI verts ((291 * i1) + (12 * i386)) 3 14
-        wrU verts (((291 * i1) + (12 * i386)) + 12) s406
-        wrU verts (((291 * i1) + (12 * i386)) + 13) s407
-        wrU verts (((291 * i1) + (12 * i386)) + 14) s408
-        wrU verts (((291 * i1) + (12 * i386)) + 3) (t2 + (0.25 * (s406 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i386)) + 4) (t3 + (0.25 * (s407 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i386)) + 5) (t4 + (0.25 * (s408 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i386)) + 6) (t2 + (0.5 * (s406 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i386)) + 7) (t3 + (0.5 * (s407 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i386)) + 8) (t4 + (0.5 * (s408 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i386)) + 9) (t2 + (0.75 * (s406 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i386)) + 10) (t3 + (0.75 * (s407 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i386)) + 11) (t4 + (0.75 * (s408 + (negate t4))))
+      loopI 0.0 24.0 $ \i384 -> do
+        let !d384 = fromIntegral i384 :: Double
+        chkI walk (12 * i384) 3 11
+        t385 <- rdU walk ((12 * i384) + 9)
+        t386 <- rdU walk ((12 * i384) + 10)
+        t387 <- rdU walk ((12 * i384) + 11)
+        chkI radii ((24 * i1) + i384) 0 0
+        t388 <- rdU radii ((24 * i1) + i384)
+        t389 <- rdU walk ((12 * i384) + 3)
+        t390 <- rdU walk ((12 * i384) + 4)
+        t391 <- rdU walk ((12 * i384) + 5)
+        let !t392 = (if (abs t388) > 0 then 1.0 else 0.0)
+        let !t393 = (sqrt ((t385 * t385) + (t387 * t387)))
+        let !t394 = (exp t386)
+        let !t395 = (t393 - t394)
+        let !t396 = (recip (2.0 * t393))
+        let !t397 = ((((t396 * (t385 + t385)) * t8) + ((negate t394) * t9)) + ((t396 * (t387 + t387)) * t10))
+        let !t398 = (if ((abs t395) - 1.0e-10) > 0 then (if (abs t397) > 0 then 1.0 else 0.0) else 0.0)
+        let !t399 = (1.0 - t392)
+        let !s400 = ((t392 * (if t398 > 0 then (t385 + (negate ((t395 / t397) * t8))) else t385)) + (t399 * t2))
+        let !s401 = ((t392 * (if t398 > 0 then (t386 + (negate ((t395 / t397) * t9))) else t386)) + (t399 * t3))
+        let !s402 = ((t392 * (if t398 > 0 then (t387 + (negate ((t395 / t397) * t10))) else t387)) + (t399 * t4))
+        let !t403 = (1.0 - (abs (((s400 - s400) + (s401 - s401)) + (s402 - s402))))
+        let !s404 = (if t403 > 0 then s400 else t2)
+        let !s405 = (if t403 > 0 then s401 else t3)
+        let !s406 = (if t403 > 0 then s402 else t4)
+        chkI verts ((291 * i1) + (12 * i384)) 3 14
+        wrU verts (((291 * i1) + (12 * i384)) + 12) s404
+        wrU verts (((291 * i1) + (12 * i384)) + 13) s405
+        wrU verts (((291 * i1) + (12 * i384)) + 14) s406
+        wrU verts (((291 * i1) + (12 * i384)) + 3) (t2 + (0.25 * (s404 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i384)) + 4) (t3 + (0.25 * (s405 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i384)) + 5) (t4 + (0.25 * (s406 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i384)) + 6) (t2 + (0.5 * (s404 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i384)) + 7) (t3 + (0.5 * (s405 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i384)) + 8) (t4 + (0.5 * (s406 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i384)) + 9) (t2 + (0.75 * (s404 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i384)) + 10) (t3 + (0.75 * (s405 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i384)) + 11) (t4 + (0.75 * (s406 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -32,6 +32,7 @@ module Manifold.Stage.Imp
   , stageProcedure
   , stageProcedures
   , stageProceduresFor
+  , localSlots
   ) where
 
 import Control.Monad.State.Strict
@@ -168,7 +169,55 @@ data StageState = StageState
     -- whether the current block made them (see 'arrayAccess')
   , ssCheckRanges :: IM.IntMap (Int, Int) -- ^ each check's offsets, lowest and highest
   , ssNextCheck :: !Int
+  , ssNextLocal :: !Int -- ^ Haskell: the next slot of the locals array (see 'localSlots')
+  , ssInSubroutine :: !Bool
   }
+
+-- | Haskell: the printed step's mutable locals (the JavaScript @let@s) are
+-- slots of a scratch array of this many numbers, which each phase call
+-- allocates once ("Manifold.Compiled.Runtime"'s @newLocals@) and passes to
+-- every function it calls, as the last array. A local of its own (a
+-- one-number array) would be allocated on GHC's heap every time its
+-- statement runs: the narrow phase's eighteen per pair and the solver's
+-- five per contact row were most of what the native step allocated.
+-- A procedure numbers its locals from 0 and a subroutine from
+-- 'subroutineLocals', so the locals of a procedure and of the subroutine it
+-- calls are different slots; a subroutine calls no other.
+localSlots :: Int
+localSlots = 64
+
+subroutineLocals :: Int
+subroutineLocals = 32
+
+-- | The array of locals as the printed Haskell names it.
+localsArray :: String
+localsArray = "locals"
+
+-- | Haskell: the check that the locals array holds a function's slots, the
+-- function's first statement (none for a function without locals).
+localsCheck :: Int -> StageState -> [String]
+localsCheck first s
+  | ssTarget s /= Haskell || ssNextLocal s == first = []
+  | otherwise = ["  chkI " ++ localsArray ++ " 0 " ++ show first ++ " " ++ show (ssNextLocal s - 1)]
+
+-- | The arrays a printed function takes: the procedure's, and in Haskell
+-- the locals array last.
+printedArrays :: Target -> [String] -> [String]
+printedArrays Haskell arrays = arrays ++ [localsArray]
+printedArrays _ arrays = arrays
+
+-- | Haskell: a fresh slot for a local, or an error once a function's slots
+-- run out (a staging error, printed by @manifold compile@).
+freshLocal :: Staged Int
+freshLocal = do
+  s <- Staged get
+  let limit = if ssInSubroutine s then localSlots else subroutineLocals
+  when (ssNextLocal s >= limit) $
+    error ("the compiled step's locals: a " ++ (if ssInSubroutine s then "subroutine" else "procedure")
+           ++ " needs more than " ++ show (limit - (if ssInSubroutine s then subroutineLocals else 0))
+           ++ " (Manifold.Stage.Imp.localSlots)")
+  Staged (put s { ssNextLocal = ssNextLocal s + 1 })
+  pure (ssNextLocal s)
 
 newtype Staged a = Staged (State StageState a)
   deriving (Functor, Applicative, Monad)
@@ -295,28 +344,40 @@ instance Imp Staged where
     traverse (bindAs "s") xs
   newRef x = do
     x' <- expression x
-    v <- fresh "v"
     hs <- isHaskell
-    emitLine (if hs then v ++ " <- newR " ++ x' else "let " ++ v ++ " = " ++ x' ++ ";")
-    pure (StagedRef v)
+    if hs
+      then do
+        k <- freshLocal
+        emitLine ("wrU " ++ localsArray ++ " " ++ show k ++ " " ++ x')
+        pure (StagedRef (show k))
+      else do
+        v <- fresh "v"
+        emitLine ("let " ++ v ++ " = " ++ x' ++ ";")
+        pure (StagedRef v)
   readRef (StagedRef v) = do
     t <- fresh "t"
     hs <- isHaskell
-    emitLine (if hs then t ++ " <- getR " ++ v else "const " ++ t ++ " = " ++ v ++ ";")
+    emitLine (if hs then t ++ " <- rdU " ++ localsArray ++ " " ++ v else "const " ++ t ++ " = " ++ v ++ ";")
     pure (sym t)
   writeRef (StagedRef v) x = do
     x' <- expression x
     hs <- isHaskell
-    emitLine (if hs then "setR " ++ v ++ " " ++ x' else v ++ " = " ++ x' ++ ";")
+    emitLine (if hs then "wrU " ++ localsArray ++ " " ++ v ++ " " ++ x' else v ++ " = " ++ x' ++ ";")
   toScalar (IxE e) = e
   toIndex = IxE
   subroutine name args body = do
     args' <- mapM expression args
     st <- Staged get
+    when (ssInSubroutine st && ssTarget st == Haskell) $
+      error ("subroutine " ++ name ++ " called from a subroutine: their locals would share slots")
     let params = ["a" ++ show k | k <- [0 .. length args - 1]]
         Staged m = body (map sym params)
-        inner = execState (m >> unStaged closeFunction) st { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1, ssChecks = M.empty }
-        text = unlines (functionHead (ssTarget st) name (ssArrays st) params : map (fillChecks inner) (reverse (ssLines inner)) ++ functionEnd (ssTarget st))
+        inner = execState (m >> unStaged closeFunction) st
+          { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1, ssChecks = M.empty
+          , ssNextLocal = subroutineLocals, ssInSubroutine = True }
+        text = unlines (functionHead (ssTarget st) name (ssArrays st) params
+                        : localsCheck subroutineLocals inner
+                        ++ map (fillChecks inner) (reverse (ssLines inner)) ++ functionEnd (ssTarget st))
     case M.lookup name (ssSubroutines inner) of
       Just old | old /= text -> error ("subroutine " ++ name ++ ": two different bodies under one name")
       _ -> pure ()
@@ -473,17 +534,20 @@ stageProcedures = stageProceduresFor JavaScript
 
 -- | 'stageProcedures' in a target language: JavaScript functions, or
 -- Haskell functions in 'IO' over the arrays (the definitions
--- "Manifold.Compiled.Runtime" provides: @loopI@, @chkI@, @rdU@, @wrU@, @newR@, @getR@,
--- @setR@, @floorF@, and the array type @Arr@).
+-- "Manifold.Compiled.Runtime" provides: @loopI@, @chkI@, @rdU@, @wrU@,
+-- @floorF@, and the array type @Arr@; each function takes the locals array
+-- last, see 'localSlots').
 stageProceduresFor :: Target -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
 stageProceduresFor target = go M.empty
   where
     go _ [] = []
     go seen ((p, body) : rest) =
       let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
-          s0 = StageState 0 emptyScope [] 1 (procArrays p) M.empty [] target M.empty M.empty IM.empty 0
+          arrays = printedArrays target (procArrays p)
+          s0 = StageState 0 emptyScope [] 1 arrays M.empty [] target M.empty M.empty IM.empty 0 0 False
           s1 = execState (m >> unStaged closeFunction) s0
-          main = unlines (functionHead target (procName p) (procArrays p) (procScalars p) : map (fillChecks s1) (reverse (ssLines s1)) ++ functionEnd target)
+          main = unlines (functionHead target (procName p) arrays (procScalars p)
+                          : localsCheck 0 s1 ++ map (fillChecks s1) (reverse (ssLines s1)) ++ functionEnd target)
           fresh = [ (n, t) | n <- reverse (ssOrder s1), let t = ssSubroutines s1 M.! n
                            , case M.lookup n seen of
                                Nothing -> True
