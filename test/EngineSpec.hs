@@ -111,7 +111,7 @@ compiledSpec = describe "Engine: the compiled native step" $ do
       putStrLn ("    compiled vs generic (" ++ spaceName sp ++ "), 300 steps: max difference over all arrays " ++ show d ++ " (one step apart: " ++ show moved ++ ")")
       (spaceName sp, d < 1e-9, moved > 0) `shouldBe` (spaceName sp, True, True)
 
-  it "allocates no heap per body or per contact row, but for the pair narrow phase's boxed arguments (settled pile, sphere, 300 bodies)" $ do
+  it "allocates no heap per body or per contact row, but for the pair narrow phase's boxed arguments (settled pile, sphere, 300 bodies); nor does the generic step's solver" $ do
     -- the printed step's locals are slots of one array a phase call; as
     -- one-number arrays of their own they cost about 480 bytes a contact
     -- row (eighteen locals a pair in the narrow phase, five a row in the
@@ -131,6 +131,18 @@ compiledSpec = describe "Engine: the compiled native step" $ do
     -- two or three boxed numbers a candidate pair (GHC passes the call's 29
     -- arguments boxed): about 42 KB here, 340 KB with a heap object a local
     perStep `shouldSatisfy` (< 20000 + 64 * rows)
+    -- the generic step (a space of one's own) calls the field through a
+    -- record and boxes its numbers there; its solver, which calls no field,
+    -- boxed every row and velocity it passed to a helper GHC had not
+    -- inlined: 6.6 KB a contact row a step; about 120 bytes now (its
+    -- locals, each a heap object in the generic step)
+    let genericSolve = head [run | (name, run) <- stepPhasesNative (genericStep w), name == "solve"]
+    before' <- getAllocationCounter
+    replicateM_ steps genericSolve
+    after' <- getAllocationCounter
+    let solvePerStep = fromIntegral (before' - after') `div` steps
+    putStrLn ("    the generic step's solve phase: " ++ show solvePerStep ++ " bytes a step")
+    solvePerStep `shouldSatisfy` (< 20000 + 256 * rows)
 
 freeMotionSpec :: Spec
 freeMotionSpec = describe "Engine: free motion" $ do

@@ -80,6 +80,7 @@ applyRow w a b r lambda = do
 
 -- | The effective mass of a row: @1 / (J M⁻¹ Jᵀ)@.
 effectiveMass :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
+{-# INLINE effectiveMass #-}
 effectiveMass w a b r = do
   ima <- readSlot w a InvMass
   iia <- readSlot w a InvInertia
@@ -234,7 +235,10 @@ solve sp _ w = do
       iib <- readSlot w bi InvInertia
       va0 <- readVel w a
       vb0 <- readVel w bi
+      -- inlined: lifted out as functions of their own, the generic
+      -- (native, uncompiled) step boxed every row and velocity it passed
       let along r va vb = share (sideA r va - select hasB (sideB r vb) 0)
+          {-# INLINE along #-}
           apply r lambda (Vel va oa) (Vel vb ob) = do
             dva <- share3 ((ima * lambda) *^ rowA r)
             doa <- share (iia * lambda * rowAW r)
@@ -245,6 +249,7 @@ solve sp _ w = do
             vb' <- share3 (vb ^+^ dvb ^+^ same *^ dva)
             ob' <- share (ob + dob + same * doa)
             pure (Vel va' oa', Vel vb' ob')
+          {-# INLINE apply #-}
       vt <- along tangent va0 vb0
       let limit = mu * ln
       lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
