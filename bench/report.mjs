@@ -191,6 +191,30 @@ function report() {
   })));
   out.push("\n![step ms against bodies, log–log](scaling.png)");
 
+  // what the scaling ratio is made of: how many more contact rows the larger
+  // pile holds, what the contact phases cost per row at each size, and the
+  // ratio the step would have if each row cost what it does at the smaller size
+  const contactPhases = ["collide", "solve"];
+  const growth = [];
+  for (const s of spaces) for (const [label, rows] of [["native", native], ["browser", browser]]) {
+    const a = find(rows, { space: s, n: TARGET.from }), b = find(rows, { space: s, n: TARGET.to });
+    if (!a || !b || !a.contacts || !b.contacts || !a.phaseMedianMs || !b.phaseMedianMs) continue;
+    const sum = (r) => contactPhases.reduce((t, p) => t + (r.phaseMedianMs[p] || 0), 0);
+    const rowsRatio = b.contacts / a.contacts, contactRatio = sum(b) / sum(a);
+    const atSmallerCost = (sum(a) * rowsRatio + (b.medianMs - sum(b))) / a.medianMs;
+    growth.push([s, label, ratio(a.contacts / a.bodies) + " → " + ratio(b.contacts / b.bodies), ratio(rowsRatio),
+      ms(1000 * sum(a) / a.contacts) + " → " + ms(1000 * sum(b) / b.contacts), ratio(contactRatio / rowsRatio),
+      ratio(b.medianMs / a.medianMs), ratio(atSmallerCost)]);
+  }
+  if (growth.length) {
+    out.push("\nWhere the ratio comes from, on the spaces with contacts: contact rows per body, the rows' ratio, " +
+      "collide + solve per row (µs) and its ratio, the step's ratio, and the ratio the step would have if every row " +
+      "cost what it costs at " + TARGET.from + " bodies (the other phases as measured). Where that last column exceeds " +
+      TARGET.ratio + ", the larger pile's extra rows alone break the target.\n");
+    out.push(table(["space", "engine", "rows per body", "rows ×", "µs per row", "per row ×", "t(" + TARGET.to + ")/t(" + TARGET.from + ")",
+      "at the " + TARGET.from + "-body cost per row"], growth));
+  }
+
   // phases
   const phaseNames = [...new Set(native.concat(browser).flatMap((r) => Object.keys(r.phaseMedianMs || {})))];
   const canon = ["gravity", "collide", "solve", "integrate", "polygonise"];

@@ -463,6 +463,7 @@ polygoniseBody sp l w i = do
         writeRef cosRef (c * turnC - s * turnS)
         writeRef sinRef (s * turnC + c * turnS)
         share3 (c *^ u ^+^ s *^ v)
+      {-# INLINE nextDirection #-}
       radius d = readArray (wRadii w) (fromIntegral nd * i + d)
       directions = forEach (fromIntegral nd)
       scratch = wWalk w
@@ -496,6 +497,7 @@ polygoniseBody sp l w i = do
           dir <- if fused then nextDirection else readAt3 scratch (at d directionAt)
           projected <- projectAlongWithGradient f nq <$> share3 (q0 ^+^ h *^ dir)
           endStep steps vertex k d h nq (q0, dir) projected
+      {-# INLINE stepLoopsWalk #-}
       -- A loop across the directions for each Newton iteration (the first
       -- also moves the point, the last ends the step), for each step. (Four
       -- steps of these loops, and one, unrolled in one function are more
@@ -517,6 +519,7 @@ polygoniseBody sp l w i = do
           if j < stepProjectionIterations then writeAt3 scratch (at d iterateAt) =<< share3 (fst projected) else do
             (h, pd) <- start
             endStep steps vertex k d h nq pd projected
+      {-# INLINE newtonLoopsWalk #-}
       -- the end of step k along direction d, once its moved point is back
       -- on the surface: the vertex, and the state the next step starts from
       endStep steps vertex k d h nq pd projected = do
@@ -527,6 +530,7 @@ polygoniseBody sp l w i = do
           writeAt3 scratch (at d pointAt) q
           writeAt3 scratch (at d directionAt) =<< share3 dir1
           writeAt3 scratch (at d normalAt) =<< share3 n1
+      {-# INLINE endStep #-}
       -- a single step's end is the outline vertex; the inner vertices go on
       -- the chord from the centre
       outlineVertex' d q = do
@@ -534,6 +538,7 @@ polygoniseBody sp l w i = do
         write3 (wVerts w) (vertexIx d ns) o
         forM_ [1 .. ns - 1] $ \k ->
           write3 (wVerts w) (vertexIx d k) (p ^+^ constant (fromIntegral k / fromIntegral ns) *^ (o ^-^ p))
+      {-# INLINE outlineVertex' #-}
       -- a walk that fails (a singular point) leaves the vertex at the
       -- centre rather than poison the polygon
       finite q = select (finiteness (toList3 q)) <$> q <*> p
