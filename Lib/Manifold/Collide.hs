@@ -451,31 +451,47 @@ selfContacts sp l w i = do
     mx <- newRef 0
     my <- newRef 0
     mz <- newRef 0
+    -- the longest of the body's ray segments: two segments whose midpoints
+    -- lie farther apart than that plus 0.3 h are more than 0.3 h apart
+    -- everywhere, and most of the pairs below are (a wrapped body's rays
+    -- cross in a few places), so they are passed over before the closest
+    -- points are solved for (an exact bound: the same rows)
+    longest <- newRef 0
+    forEach (fromIntegral nd) $ \d -> forLoop 1 (fromIntegral ns) $ \k -> do
+      a0 <- vertex d (k - 1)
+      a1 <- vertex d k
+      modifyRef longest (maxF (quadrance (a1 ^-^ a0)))
+    segment <- share . sqrt =<< readRef longest
     forEach (fromIntegral nd) $ \d -> do
       rd <- readArray (wRadii w) (fromIntegral nd * i + d)
       forLoop (fromIntegral (nd `div` 4)) (fromIntegral (nd `div` 2)) $ \off -> do
         let d' = toIndex (let x = toScalar d + toScalar off in x - fromIntegral nd * floorF (x / fromIntegral nd))
         rd' <- readArray (wRadii w) (fromIntegral nd * i + d')
+        h <- share (minF rd rd' / fromIntegral ns)
+        -- (with a relative margin, so that rounding never passes over a
+        -- pair the closest-point test would take)
+        reach <- share (let x = 0.3 * h + segment in x * x * 1.000001)
         forLoop 1 (fromIntegral ns) $ \k -> do
           a0 <- vertex d (k - 1)
           a1 <- vertex d k
           forLoop 1 (fromIntegral ns) $ \k' -> do
             b0 <- vertex d' (k' - 1)
             b1 <- vertex d' k'
-            let (s, t, gap) = segmentClosest a0 a1 b0 b1
-                h = minF rd rd' / fromIntegral ns
-                arc = rd * (toScalar k + s) / fromIntegral ns
-                arc' = rd' * (toScalar k' + t) / fromIntegral ns
-                depth = 0.5 * ((rd - arc) + (rd' - arc'))
-            best <- readRef deepest
-            whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
-              writeRef deepest depth
-              first <- vertex d 0
-              first' <- vertex d' 0
-              let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
-                  V3 u v q = negated (safeNormalize (first ^-^ c) ^+^ safeNormalize (first' ^-^ c))
-              writeRef px x >> writeRef py y >> writeRef pz z
-              writeRef mx u >> writeRef my v >> writeRef mz q
+            let midpoints = 0.5 *^ ((a0 ^+^ a1) ^-^ (b0 ^+^ b1))
+            whenPositive (reach - quadrance midpoints) $ do
+              let (s, t, gap) = segmentClosest a0 a1 b0 b1
+                  arc = rd * (toScalar k + s) / fromIntegral ns
+                  arc' = rd' * (toScalar k' + t) / fromIntegral ns
+                  depth = 0.5 * ((rd - arc) + (rd' - arc'))
+              best <- readRef deepest
+              whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
+                writeRef deepest depth
+                first <- vertex d 0
+                first' <- vertex d' 0
+                let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
+                    V3 u v q = negated (safeNormalize (first ^-^ c) ^+^ safeNormalize (first' ^-^ c))
+                writeRef px x >> writeRef py y >> writeRef pz z
+                writeRef mx u >> writeRef my v >> writeRef mz q
     best <- readRef deepest
     whenPositive best $ do
       point <- V3 <$> readRef px <*> readRef py <*> readRef pz

@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -245,104 +245,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i83 -> do
         let !d83 = fromIntegral i83 :: Double
-        chkI radii ((24 * i29) + i83) 0 0
-        t84 <- rdU radii ((24 * i29) + i83)
-        loopI 6.0 12.0 $ \i85 -> do
-          let !d85 = fromIntegral i85 :: Double
-          let !t86 = (d83 + d85)
-          chkI radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0)))))) 0 0
-          t87 <- rdU radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0))))))
-          loopI 1.0 4.0 $ \i88 -> do
-            let !d88 = fromIntegral i88 :: Double
-            chkI verts ((291 * i29) + (12 * i83) + (3 * i88)) 0 5
-            t89 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i88))
-            t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 1)
-            t91 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 2)
-            t92 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 3)
-            t93 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 4)
-            t94 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 5)
-            loopI 1.0 4.0 $ \i95 -> do
-              let !d95 = fromIntegral i95 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0)))) 0 0
-              t96 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0)) 0 0
-              t97 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0)) 0 0
-              t98 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95))) 0 0
-              t99 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0)) 0 0
-              t100 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0)) 0 0
-              t101 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0))
-              t102 <- rdU locals 4
-              let !t103 = (negate t96)
-              let !t104 = (t99 + t103)
-              let !t105 = (negate t97)
-              let !t106 = (t100 + t105)
-              let !t107 = (negate t98)
-              let !t108 = (t101 + t107)
-              let !t109 = (((t104 * t104) + (t106 * t106)) + (t108 * t108))
-              let !t110 = (t92 + (negate t89))
-              let !t111 = (t93 + (negate t90))
-              let !t112 = (t94 + (negate t91))
-              let !t113 = (((t110 * t104) + (t111 * t106)) + (t112 * t108))
-              let !t114 = (((t110 * t110) + (t111 * t111)) + (t112 * t112))
-              let !t115 = ((t114 * t109) - (t113 * t113))
-              let !t116 = (t89 + t103)
-              let !t117 = (t90 + t105)
-              let !t118 = (t91 + t107)
-              let !t119 = (((t104 * t116) + (t106 * t117)) + (t108 * t118))
-              let !t120 = (((t110 * t116) + (t111 * t117)) + (t112 * t118))
-              let !t121 = (if ((abs t115) - 1.0e-300) > 0 then (((t113 * t119) - (t120 * t109)) / t115) else 0.0)
-              let !t122 = (if (t121 - 1.0) > 0 then 1.0 else t121)
-              let !t123 = (if (t115 - ((1.0e-12 * t114) * t109)) > 0 then (if (negate t122) > 0 then 0.0 else t122) else 0.0)
-              let !t124 = (if ((abs t109) - 1.0e-300) > 0 then (((t113 * t123) + t119) / t109) else 0.0)
-              let !t125 = ((abs t114) - 1.0e-300)
-              let !t126 = (if t125 > 0 then ((negate t120) / t114) else 0.0)
-              let !t127 = (if (t126 - 1.0) > 0 then 1.0 else t126)
-              let !t128 = (t124 - 1.0)
-              let !t129 = (if t125 > 0 then ((t113 - t120) / t114) else 0.0)
-              let !t130 = (if (t129 - 1.0) > 0 then 1.0 else t129)
-              let !t131 = (if (negate t124) > 0 then (if (negate t127) > 0 then 0.0 else t127) else (if t128 > 0 then (if (negate t130) > 0 then 0.0 else t130) else t123))
-              let !t132 = (if t128 > 0 then 1.0 else t124)
-              let !t133 = (if (negate t132) > 0 then 0.0 else t132)
-              let !t134 = ((0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0)))) - t102)
-              let !t135 = ((t89 + (t131 * t110)) + (negate (t96 + (t133 * t104))))
-              let !t136 = ((t90 + (t131 * t111)) + (negate (t97 + (t133 * t106))))
-              let !t137 = ((t91 + (t131 * t112)) + (negate (t98 + (t133 * t108))))
-              let !t138 = ((0.3 * ((if (t87 - t84) > 0 then t84 else t87) / 4.0)) - (sqrt (((t135 * t135) + (t136 * t136)) + (t137 * t137))))
-              if (if (t134 - t138) > 0 then t138 else t134) > 0 then do
-                wrU locals 4 (0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0))))
-                chkI verts ((291 * i29) + (12 * i83)) 3 5
-                t139 <- rdU verts (((291 * i29) + (12 * i83)) + 3)
-                t140 <- rdU verts (((291 * i29) + (12 * i83)) + 4)
-                t141 <- rdU verts (((291 * i29) + (12 * i83)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)))) 0 0
-                t142 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t143 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t144 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t89 + (t131 * t110))
-                wrU locals 6 (t90 + (t131 * t111))
-                wrU locals 7 (t91 + (t131 * t112))
-                let !t145 = (negate t69)
-                let !t146 = (t139 + t145)
-                let !t147 = (negate t70)
-                let !t148 = (t140 + t147)
-                let !t149 = (negate t71)
-                let !t150 = (t141 + t149)
-                let !t151 = (sqrt (((t146 * t146) + (t148 * t148)) + (t150 * t150)))
-                let !t152 = (t142 + t145)
-                let !t153 = (t143 + t147)
-                let !t154 = (t144 + t149)
-                let !t155 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
-                wrU locals 8 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t146) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t152)))
-                wrU locals 9 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t148) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t153)))
-                wrU locals 10 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t150) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t154)))
+        loopI 1.0 4.0 $ \i84 -> do
+          let !d84 = fromIntegral i84 :: Double
+          chkI verts ((291 * i29) + (12 * i83) + (3 * i84)) 0 5
+          t85 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i84))
+          t86 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 1)
+          t87 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 2)
+          t88 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 3)
+          t89 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 4)
+          t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 5)
+          t91 <- rdU locals 11
+          let !t92 = (t88 + (negate t85))
+          let !t93 = (t89 + (negate t86))
+          let !t94 = (t90 + (negate t87))
+          let !t95 = (((t92 * t92) + (t93 * t93)) + (t94 * t94))
+          wrU locals 11 (if (t95 - t91) > 0 then t95 else t91)
+          pure ()
+        pure ()
+      t96 <- rdU locals 11
+      let !s97 = (sqrt t96)
+      loopI 0.0 24.0 $ \i98 -> do
+        let !d98 = fromIntegral i98 :: Double
+        chkI radii ((24 * i29) + i98) 0 0
+        t99 <- rdU radii ((24 * i29) + i98)
+        loopI 6.0 12.0 $ \i100 -> do
+          let !d100 = fromIntegral i100 :: Double
+          let !t101 = (d98 + d100)
+          chkI radii (truncate ((24.0 * d29) + (t101 - (24.0 * (floorF (t101 / 24.0)))))) 0 0
+          t102 <- rdU radii (truncate ((24.0 * d29) + (t101 - (24.0 * (floorF (t101 / 24.0))))))
+          let !s103 = ((if (t102 - t99) > 0 then t99 else t102) / 4.0)
+          let !t104 = ((0.3 * s103) + s97)
+          let !s105 = ((t104 * t104) * 1.000001)
+          loopI 1.0 4.0 $ \i106 -> do
+            let !d106 = fromIntegral i106 :: Double
+            chkI verts ((3 * i106) + (291 * i29) + (12 * i98)) 0 5
+            t107 <- rdU verts ((3 * i106) + (291 * i29) + (12 * i98))
+            t108 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 1)
+            t109 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 2)
+            t110 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 3)
+            t111 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 4)
+            t112 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 5)
+            loopI 1.0 4.0 $ \i113 -> do
+              let !d113 = fromIntegral i113 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0)))) 0 0
+              t114 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 1.0)) 0 0
+              t115 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 2.0)) 0 0
+              t116 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113))) 0 0
+              t117 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 1.0)) 0 0
+              t118 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 2.0)) 0 0
+              t119 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 2.0))
+              let !t120 = (0.5 * ((t107 + t110) + (negate (t114 + t117))))
+              let !t121 = (0.5 * ((t108 + t111) + (negate (t115 + t118))))
+              let !t122 = (0.5 * ((t109 + t112) + (negate (t116 + t119))))
+              if (s105 - (((t120 * t120) + (t121 * t121)) + (t122 * t122))) > 0 then do
+                t123 <- rdU locals 4
+                let !t124 = (negate t114)
+                let !t125 = (t117 + t124)
+                let !t126 = (negate t115)
+                let !t127 = (t118 + t126)
+                let !t128 = (negate t116)
+                let !t129 = (t119 + t128)
+                let !t130 = (((t125 * t125) + (t127 * t127)) + (t129 * t129))
+                let !t131 = (t110 + (negate t107))
+                let !t132 = (t111 + (negate t108))
+                let !t133 = (t112 + (negate t109))
+                let !t134 = (((t131 * t125) + (t132 * t127)) + (t133 * t129))
+                let !t135 = (((t131 * t131) + (t132 * t132)) + (t133 * t133))
+                let !t136 = ((t135 * t130) - (t134 * t134))
+                let !t137 = (t107 + t124)
+                let !t138 = (t108 + t126)
+                let !t139 = (t109 + t128)
+                let !t140 = (((t125 * t137) + (t127 * t138)) + (t129 * t139))
+                let !t141 = (((t131 * t137) + (t132 * t138)) + (t133 * t139))
+                let !t142 = (if ((abs t136) - 1.0e-300) > 0 then (((t134 * t140) - (t141 * t130)) / t136) else 0.0)
+                let !t143 = (if (t142 - 1.0) > 0 then 1.0 else t142)
+                let !t144 = (if (t136 - ((1.0e-12 * t135) * t130)) > 0 then (if (negate t143) > 0 then 0.0 else t143) else 0.0)
+                let !t145 = (if ((abs t130) - 1.0e-300) > 0 then (((t134 * t144) + t140) / t130) else 0.0)
+                let !t146 = ((abs t135) - 1.0e-300)
+                let !t147 = (if t146 > 0 then ((negate t141) / t135) else 0.0)
+                let !t148 = (if (t147 - 1.0) > 0 then 1.0 else t147)
+                let !t149 = (t145 - 1.0)
+                let !t150 = (if t146 > 0 then ((t134 - t141) / t135) else 0.0)
+                let !t151 = (if (t150 - 1.0) > 0 then 1.0 else t150)
+                let !t152 = (if (negate t145) > 0 then (if (negate t148) > 0 then 0.0 else t148) else (if t149 > 0 then (if (negate t151) > 0 then 0.0 else t151) else t144))
+                let !t153 = (if t149 > 0 then 1.0 else t145)
+                let !t154 = (if (negate t153) > 0 then 0.0 else t153)
+                let !t155 = ((0.5 * ((t99 - ((t99 * (d106 + t152)) / 4.0)) + (t102 - ((t102 * (d113 + t154)) / 4.0)))) - t123)
+                let !t156 = ((t107 + (t152 * t131)) + (negate (t114 + (t154 * t125))))
+                let !t157 = ((t108 + (t152 * t132)) + (negate (t115 + (t154 * t127))))
+                let !t158 = ((t109 + (t152 * t133)) + (negate (t116 + (t154 * t129))))
+                let !t159 = ((0.3 * s103) - (sqrt (((t156 * t156) + (t157 * t157)) + (t158 * t158))))
+                if (if (t155 - t159) > 0 then t159 else t155) > 0 then do
+                  wrU locals 4 (0.5 * ((t99 - ((t99 * (d106 + t152)) / 4.0)) + (t102 - ((t102 * (d113 + t154)) / 4.0))))
+                  chkI verts ((291 * i29) + (12 * i98)) 3 5
+                  t160 <- rdU verts (((291 * i29) + (12 * i98)) + 3)
+                  t161 <- rdU verts (((291 * i29) + (12 * i98)) + 4)
+                  t162 <- rdU verts (((291 * i29) + (12 * i98)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)))) 0 0
+                  t163 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t164 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t165 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t107 + (t152 * t131))
+                  wrU locals 6 (t108 + (t152 * t132))
+                  wrU locals 7 (t109 + (t152 * t133))
+                  let !t166 = (negate t69)
+                  let !t167 = (t160 + t166)
+                  let !t168 = (negate t70)
+                  let !t169 = (t161 + t168)
+                  let !t170 = (negate t71)
+                  let !t171 = (t162 + t170)
+                  let !t172 = (sqrt (((t167 * t167) + (t169 * t169)) + (t171 * t171)))
+                  let !t173 = (t163 + t166)
+                  let !t174 = (t164 + t168)
+                  let !t175 = (t165 + t170)
+                  let !t176 = (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175)))
+                  wrU locals 8 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t167) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t173)))
+                  wrU locals 9 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t169) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t174)))
+                  wrU locals 10 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t171) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t175)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -350,143 +382,143 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t156 <- rdU locals 4
-      if t156 > 0 then do
-        t157 <- rdU locals 5
-        t158 <- rdU locals 6
-        t159 <- rdU locals 7
-        t160 <- rdU locals 8
-        t161 <- rdU locals 9
-        t162 <- rdU locals 10
-        let !t163 = ((abs t157) - 0.6)
-        let !t164 = (negate t163)
-        let !t165 = (if t164 > 0 then 0.0 else t163)
-        let !t166 = ((abs t158) - 0.6)
-        let !t167 = (negate t166)
-        let !t168 = (if t167 > 0 then 0.0 else t166)
-        let !t169 = ((abs t159) - 0.6)
-        let !t170 = (negate t169)
-        let !t171 = (if t170 > 0 then 0.0 else t169)
-        let !t172 = (recip (2.0 * (sqrt (((t165 * t165) + (t168 * t168)) + (t171 * t171)))))
-        let !t173 = (signum t157)
-        let !t174 = (t165 * (if t164 > 0 then 0.0 else t173))
-        let !t175 = (t166 - t169)
-        let !t176 = (if t175 > 0 then t166 else t169)
-        let !t177 = (t163 - t176)
-        let !t178 = (if t177 > 0 then t163 else t176)
-        let !t179 = ((t172 * (t174 + t174)) + (if t178 > 0 then 0.0 else (if t177 > 0 then t173 else 0.0)))
-        let !t180 = (signum t158)
-        let !t181 = (t168 * (if t167 > 0 then 0.0 else t180))
-        let !t182 = ((t172 * (t181 + t181)) + (if t178 > 0 then 0.0 else (if t177 > 0 then 0.0 else (if t175 > 0 then t180 else 0.0))))
-        let !t183 = (signum t159)
-        let !t184 = (t171 * (if t170 > 0 then 0.0 else t183))
-        let !t185 = ((t172 * (t184 + t184)) + (if t178 > 0 then 0.0 else (if t177 > 0 then 0.0 else (if t175 > 0 then 0.0 else t183))))
-        let !t186 = (sqrt (((t179 * t179) + (t182 * t182)) + (t185 * t185)))
-        let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
-        let !s188 = (t187 * t179)
-        let !s189 = (t187 * t182)
-        let !s190 = (t187 * t185)
-        let !t191 = (((s188 * t160) + (s189 * t161)) + (s190 * t162))
-        let !t192 = (t160 + (negate (t191 * s188)))
-        let !t193 = (t161 + (negate (t191 * s189)))
-        let !t194 = (t162 + (negate (t191 * s190)))
-        let !t195 = (sqrt (((t192 * t192) + (t193 * t193)) + (t194 * t194)))
-        let !t196 = (if t195 > 0 then (recip (if (t195 - 1.0e-300) > 0 then t195 else 1.0e-300)) else 0.0)
-        let !s197 = (t196 * t192)
-        let !s198 = (t196 * t193)
-        let !s199 = (t196 * t194)
-        t200 <- rdU meta 2
-        t201 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t201) > 0 then 1.0 else t201)) - t200) - 0.5) > 0 then do
-          wrU meta 2 (t200 + 1.0)
-          t202 <- rdU pos (3 * i29)
-          t203 <- rdU pos ((3 * i29) + 1)
-          t204 <- rdU pos ((3 * i29) + 2)
+      t177 <- rdU locals 4
+      if t177 > 0 then do
+        t178 <- rdU locals 5
+        t179 <- rdU locals 6
+        t180 <- rdU locals 7
+        t181 <- rdU locals 8
+        t182 <- rdU locals 9
+        t183 <- rdU locals 10
+        let !t184 = ((abs t178) - 0.6)
+        let !t185 = (negate t184)
+        let !t186 = (if t185 > 0 then 0.0 else t184)
+        let !t187 = ((abs t179) - 0.6)
+        let !t188 = (negate t187)
+        let !t189 = (if t188 > 0 then 0.0 else t187)
+        let !t190 = ((abs t180) - 0.6)
+        let !t191 = (negate t190)
+        let !t192 = (if t191 > 0 then 0.0 else t190)
+        let !t193 = (recip (2.0 * (sqrt (((t186 * t186) + (t189 * t189)) + (t192 * t192)))))
+        let !t194 = (signum t178)
+        let !t195 = (t186 * (if t185 > 0 then 0.0 else t194))
+        let !t196 = (t187 - t190)
+        let !t197 = (if t196 > 0 then t187 else t190)
+        let !t198 = (t184 - t197)
+        let !t199 = (if t198 > 0 then t184 else t197)
+        let !t200 = ((t193 * (t195 + t195)) + (if t199 > 0 then 0.0 else (if t198 > 0 then t194 else 0.0)))
+        let !t201 = (signum t179)
+        let !t202 = (t189 * (if t188 > 0 then 0.0 else t201))
+        let !t203 = ((t193 * (t202 + t202)) + (if t199 > 0 then 0.0 else (if t198 > 0 then 0.0 else (if t196 > 0 then t201 else 0.0))))
+        let !t204 = (signum t180)
+        let !t205 = (t192 * (if t191 > 0 then 0.0 else t204))
+        let !t206 = ((t193 * (t205 + t205)) + (if t199 > 0 then 0.0 else (if t198 > 0 then 0.0 else (if t196 > 0 then 0.0 else t204))))
+        let !t207 = (sqrt (((t200 * t200) + (t203 * t203)) + (t206 * t206)))
+        let !t208 = (if t207 > 0 then (recip (if (t207 - 1.0e-300) > 0 then t207 else 1.0e-300)) else 0.0)
+        let !s209 = (t208 * t200)
+        let !s210 = (t208 * t203)
+        let !s211 = (t208 * t206)
+        let !t212 = (((s209 * t181) + (s210 * t182)) + (s211 * t183))
+        let !t213 = (t181 + (negate (t212 * s209)))
+        let !t214 = (t182 + (negate (t212 * s210)))
+        let !t215 = (t183 + (negate (t212 * s211)))
+        let !t216 = (sqrt (((t213 * t213) + (t214 * t214)) + (t215 * t215)))
+        let !t217 = (if t216 > 0 then (recip (if (t216 - 1.0e-300) > 0 then t216 else 1.0e-300)) else 0.0)
+        let !s218 = (t217 * t213)
+        let !s219 = (t217 * t214)
+        let !s220 = (t217 * t215)
+        t221 <- rdU meta 2
+        t222 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t222) > 0 then 1.0 else t222)) - t221) - 0.5) > 0 then do
+          wrU meta 2 (t221 + 1.0)
+          t223 <- rdU pos (3 * i29)
+          t224 <- rdU pos ((3 * i29) + 1)
+          t225 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t205 <- rdU normal (3 * i29)
-          t206 <- rdU normal ((3 * i29) + 1)
-          t207 <- rdU normal ((3 * i29) + 2)
+          t226 <- rdU normal (3 * i29)
+          t227 <- rdU normal ((3 * i29) + 1)
+          t228 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t208 <- rdU axis (3 * i29)
-          t209 <- rdU axis ((3 * i29) + 1)
-          t210 <- rdU axis ((3 * i29) + 2)
-          let !s211 = ((t206 * t210) - (t207 * t209))
-          let !s212 = ((t207 * t208) - (t205 * t210))
-          let !s213 = ((t205 * t209) - (t206 * t208))
+          t229 <- rdU axis (3 * i29)
+          t230 <- rdU axis ((3 * i29) + 1)
+          t231 <- rdU axis ((3 * i29) + 2)
+          let !s232 = ((t227 * t231) - (t228 * t230))
+          let !s233 = ((t228 * t229) - (t226 * t231))
+          let !s234 = ((t226 * t230) - (t227 * t229))
           chkI scalars (6 * i29) 0 0
-          t214 <- rdU scalars (6 * i29)
-          t215 <- rdU scalars ((6 * i29) + 5)
-          t216 <- rdU scalars ((6 * i29) + 2)
-          t217 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t200)) 0 29
-          wrU contacts (30 * (truncate t200)) d29
-          wrU contacts ((30 * (truncate t200)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t200)) + 2) d29
-          wrU contacts ((30 * (truncate t200)) + 3) 12.0
-          wrU contacts ((30 * (truncate t200)) + 4) (s197 + (negate ((((t205 * s197) + (t206 * s198)) + (t207 * s199)) * t205)))
-          wrU contacts ((30 * (truncate t200)) + 5) (s198 + (negate ((((t205 * s197) + (t206 * s198)) + (t207 * s199)) * t206)))
-          wrU contacts ((30 * (truncate t200)) + 6) (s199 + (negate ((((t205 * s197) + (t206 * s198)) + (t207 * s199)) * t207)))
-          wrU contacts ((30 * (truncate t200)) + 7) 0.0
-          wrU contacts ((30 * (truncate t200)) + 12) 0.0
-          wrU contacts ((30 * (truncate t200)) + 13) 0.0
-          wrU contacts ((30 * (truncate t200)) + 14) 0.0
-          wrU contacts ((30 * (truncate t200)) + 15) 0.0
-          wrU contacts ((30 * (truncate t200)) + 20) t156
-          wrU contacts ((30 * (truncate t200)) + 26) 0.6
-          wrU contacts ((30 * (truncate t200)) + 27) t157
-          wrU contacts ((30 * (truncate t200)) + 28) t158
-          wrU contacts ((30 * (truncate t200)) + 29) t159
+          t235 <- rdU scalars (6 * i29)
+          t236 <- rdU scalars ((6 * i29) + 5)
+          t237 <- rdU scalars ((6 * i29) + 2)
+          t238 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t221)) 0 29
+          wrU contacts (30 * (truncate t221)) d29
+          wrU contacts ((30 * (truncate t221)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t221)) + 2) d29
+          wrU contacts ((30 * (truncate t221)) + 3) 12.0
+          wrU contacts ((30 * (truncate t221)) + 4) (s218 + (negate ((((t226 * s218) + (t227 * s219)) + (t228 * s220)) * t226)))
+          wrU contacts ((30 * (truncate t221)) + 5) (s219 + (negate ((((t226 * s218) + (t227 * s219)) + (t228 * s220)) * t227)))
+          wrU contacts ((30 * (truncate t221)) + 6) (s220 + (negate ((((t226 * s218) + (t227 * s219)) + (t228 * s220)) * t228)))
+          wrU contacts ((30 * (truncate t221)) + 7) 0.0
+          wrU contacts ((30 * (truncate t221)) + 12) 0.0
+          wrU contacts ((30 * (truncate t221)) + 13) 0.0
+          wrU contacts ((30 * (truncate t221)) + 14) 0.0
+          wrU contacts ((30 * (truncate t221)) + 15) 0.0
+          wrU contacts ((30 * (truncate t221)) + 20) t177
+          wrU contacts ((30 * (truncate t221)) + 26) 0.6
+          wrU contacts ((30 * (truncate t221)) + 27) t178
+          wrU contacts ((30 * (truncate t221)) + 28) t179
+          wrU contacts ((30 * (truncate t221)) + 29) t180
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t218 <- rdU pos (-3)
-            t219 <- rdU pos (-2)
-            t220 <- rdU pos (-1)
+            t239 <- rdU pos (-3)
+            t240 <- rdU pos (-2)
+            t241 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t221 <- rdU normal (-3)
-            t222 <- rdU normal (-2)
-            t223 <- rdU normal (-1)
+            t242 <- rdU normal (-3)
+            t243 <- rdU normal (-2)
+            t244 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t224 <- rdU axis (-3)
-            t225 <- rdU axis (-2)
-            t226 <- rdU axis (-1)
-            let !s227 = ((t222 * t226) - (t223 * t225))
-            let !s228 = ((t223 * t224) - (t221 * t226))
-            let !s229 = ((t221 * t225) - (t222 * t224))
+            t245 <- rdU axis (-3)
+            t246 <- rdU axis (-2)
+            t247 <- rdU axis (-1)
+            let !s248 = ((t243 * t247) - (t244 * t246))
+            let !s249 = ((t244 * t245) - (t242 * t247))
+            let !s250 = ((t242 * t246) - (t243 * t245))
             chkI scalars 0 (-6) (-1)
-            t230 <- rdU scalars (-6)
-            t231 <- rdU scalars (-1)
-            t232 <- rdU scalars (-4)
-            t233 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t200)) + 8) (s197 + (negate ((((t221 * s197) + (t222 * s198)) + (t223 * s199)) * t221)))
-            wrU contacts ((30 * (truncate t200)) + 9) (s198 + (negate ((((t221 * s197) + (t222 * s198)) + (t223 * s199)) * t222)))
-            wrU contacts ((30 * (truncate t200)) + 10) (s199 + (negate ((((t221 * s197) + (t222 * s198)) + (t223 * s199)) * t223)))
-            let !t234 = (t158 + (negate t219))
-            let !t235 = (t159 + (negate t220))
-            let !t236 = (t157 + (negate t218))
-            wrU contacts ((30 * (truncate t200)) + 11) (((((t234 * s199) - (t235 * s198)) * t221) + (((t235 * s197) - (t236 * s199)) * t222)) + (((t236 * s198) - (t234 * s197)) * t223))
-            let !t237 = ((t206 * s199) - (t207 * s198))
-            wrU contacts ((30 * (truncate t200)) + 16) (t237 + (negate ((((t221 * t237) + (t222 * ((t207 * s197) - (t205 * s199)))) + (t223 * ((t205 * s198) - (t206 * s197)))) * t221)))
-            let !t238 = ((t207 * s197) - (t205 * s199))
-            wrU contacts ((30 * (truncate t200)) + 17) (t238 + (negate ((((t221 * t237) + (t222 * t238)) + (t223 * ((t205 * s198) - (t206 * s197)))) * t222)))
-            let !t239 = ((t205 * s198) - (t206 * s197))
-            wrU contacts ((30 * (truncate t200)) + 18) (t239 + (negate ((((t221 * t237) + (t222 * t238)) + (t223 * t239)) * t223)))
-            wrU contacts ((30 * (truncate t200)) + 19) (((((t234 * t239) - (t235 * t238)) * t221) + (((t235 * t237) - (t236 * t239)) * t222)) + (((t236 * t238) - (t234 * t237)) * t223))
+            t251 <- rdU scalars (-6)
+            t252 <- rdU scalars (-1)
+            t253 <- rdU scalars (-4)
+            t254 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t221)) + 8) (s218 + (negate ((((t242 * s218) + (t243 * s219)) + (t244 * s220)) * t242)))
+            wrU contacts ((30 * (truncate t221)) + 9) (s219 + (negate ((((t242 * s218) + (t243 * s219)) + (t244 * s220)) * t243)))
+            wrU contacts ((30 * (truncate t221)) + 10) (s220 + (negate ((((t242 * s218) + (t243 * s219)) + (t244 * s220)) * t244)))
+            let !t255 = (t179 + (negate t240))
+            let !t256 = (t180 + (negate t241))
+            let !t257 = (t178 + (negate t239))
+            wrU contacts ((30 * (truncate t221)) + 11) (((((t255 * s220) - (t256 * s219)) * t242) + (((t256 * s218) - (t257 * s220)) * t243)) + (((t257 * s219) - (t255 * s218)) * t244))
+            let !t258 = ((t227 * s220) - (t228 * s219))
+            wrU contacts ((30 * (truncate t221)) + 16) (t258 + (negate ((((t242 * t258) + (t243 * ((t228 * s218) - (t226 * s220)))) + (t244 * ((t226 * s219) - (t227 * s218)))) * t242)))
+            let !t259 = ((t228 * s218) - (t226 * s220))
+            wrU contacts ((30 * (truncate t221)) + 17) (t259 + (negate ((((t242 * t258) + (t243 * t259)) + (t244 * ((t226 * s219) - (t227 * s218)))) * t243)))
+            let !t260 = ((t226 * s219) - (t227 * s218))
+            wrU contacts ((30 * (truncate t221)) + 18) (t260 + (negate ((((t242 * t258) + (t243 * t259)) + (t244 * t260)) * t244)))
+            wrU contacts ((30 * (truncate t221)) + 19) (((((t255 * t260) - (t256 * t259)) * t242) + (((t256 * t258) - (t257 * t260)) * t243)) + (((t257 * t259) - (t255 * t258)) * t244))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t200)) + 8) 0.0
-            wrU contacts ((30 * (truncate t200)) + 9) 0.0
-            wrU contacts ((30 * (truncate t200)) + 10) 0.0
-            wrU contacts ((30 * (truncate t200)) + 11) 0.0
-            wrU contacts ((30 * (truncate t200)) + 16) 0.0
-            wrU contacts ((30 * (truncate t200)) + 17) 0.0
-            wrU contacts ((30 * (truncate t200)) + 18) 0.0
-            wrU contacts ((30 * (truncate t200)) + 19) 0.0
+            wrU contacts ((30 * (truncate t221)) + 8) 0.0
+            wrU contacts ((30 * (truncate t221)) + 9) 0.0
+            wrU contacts ((30 * (truncate t221)) + 10) 0.0
+            wrU contacts ((30 * (truncate t221)) + 11) 0.0
+            wrU contacts ((30 * (truncate t221)) + 16) 0.0
+            wrU contacts ((30 * (truncate t221)) + 17) 0.0
+            wrU contacts ((30 * (truncate t221)) + 18) 0.0
+            wrU contacts ((30 * (truncate t221)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t240 <- rdU meta 6
-          wrU meta 6 (t240 + 1.0)
+          t261 <- rdU meta 6
+          wrU meta 6 (t261 + 1.0)
           pure ()
         pure ()
       else do

@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 16
+  chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -536,104 +536,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 14 0.0
       wrU locals 15 0.0
       wrU locals 16 0.0
+      wrU locals 17 0.0
       loopI 0.0 24.0 $ \i226 -> do
         let !d226 = fromIntegral i226 :: Double
-        chkI radii (i226 + (24 * i29)) 0 0
-        t227 <- rdU radii (i226 + (24 * i29))
-        loopI 6.0 12.0 $ \i228 -> do
-          let !d228 = fromIntegral i228 :: Double
-          let !t229 = (d226 + d228)
-          chkI radii (truncate ((24.0 * d29) + (t229 - (24.0 * (floorF (t229 / 24.0)))))) 0 0
-          t230 <- rdU radii (truncate ((24.0 * d29) + (t229 - (24.0 * (floorF (t229 / 24.0))))))
-          loopI 1.0 4.0 $ \i231 -> do
-            let !d231 = fromIntegral i231 :: Double
-            chkI verts ((12 * i226) + (3 * i231) + (291 * i29)) 0 5
-            t232 <- rdU verts ((12 * i226) + (3 * i231) + (291 * i29))
-            t233 <- rdU verts (((12 * i226) + (3 * i231) + (291 * i29)) + 1)
-            t234 <- rdU verts (((12 * i226) + (3 * i231) + (291 * i29)) + 2)
-            t235 <- rdU verts (((12 * i226) + (3 * i231) + (291 * i29)) + 3)
-            t236 <- rdU verts (((12 * i226) + (3 * i231) + (291 * i29)) + 4)
-            t237 <- rdU verts (((12 * i226) + (3 * i231) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i238 -> do
-              let !d238 = fromIntegral i238 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + (d238 - 1.0)))) 0 0
-              t239 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + (d238 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + (d238 - 1.0))) + 1.0)) 0 0
-              t240 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + (d238 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + (d238 - 1.0))) + 2.0)) 0 0
-              t241 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + (d238 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + d238))) 0 0
-              t242 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + d238)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + d238)) + 1.0)) 0 0
-              t243 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + d238)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + d238)) + 2.0)) 0 0
-              t244 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)) + d238)) + 2.0))
-              t245 <- rdU locals 10
-              let !t246 = (negate t239)
-              let !t247 = (t242 + t246)
-              let !t248 = (negate t240)
-              let !t249 = (t243 + t248)
-              let !t250 = (negate t241)
-              let !t251 = (t244 + t250)
-              let !t252 = (((t247 * t247) + (t249 * t249)) + (t251 * t251))
-              let !t253 = (t235 + (negate t232))
-              let !t254 = (t236 + (negate t233))
-              let !t255 = (t237 + (negate t234))
-              let !t256 = (((t253 * t247) + (t254 * t249)) + (t255 * t251))
-              let !t257 = (((t253 * t253) + (t254 * t254)) + (t255 * t255))
-              let !t258 = ((t257 * t252) - (t256 * t256))
-              let !t259 = (t232 + t246)
-              let !t260 = (t233 + t248)
-              let !t261 = (t234 + t250)
-              let !t262 = (((t247 * t259) + (t249 * t260)) + (t251 * t261))
-              let !t263 = (((t253 * t259) + (t254 * t260)) + (t255 * t261))
-              let !t264 = (if ((abs t258) - 1.0e-300) > 0 then (((t256 * t262) - (t263 * t252)) / t258) else 0.0)
-              let !t265 = (if (t264 - 1.0) > 0 then 1.0 else t264)
-              let !t266 = (if (t258 - ((1.0e-12 * t257) * t252)) > 0 then (if (negate t265) > 0 then 0.0 else t265) else 0.0)
-              let !t267 = (if ((abs t252) - 1.0e-300) > 0 then (((t256 * t266) + t262) / t252) else 0.0)
-              let !t268 = ((abs t257) - 1.0e-300)
-              let !t269 = (if t268 > 0 then ((negate t263) / t257) else 0.0)
-              let !t270 = (if (t269 - 1.0) > 0 then 1.0 else t269)
-              let !t271 = (t267 - 1.0)
-              let !t272 = (if t268 > 0 then ((t256 - t263) / t257) else 0.0)
-              let !t273 = (if (t272 - 1.0) > 0 then 1.0 else t272)
-              let !t274 = (if (negate t267) > 0 then (if (negate t270) > 0 then 0.0 else t270) else (if t271 > 0 then (if (negate t273) > 0 then 0.0 else t273) else t266))
-              let !t275 = (if t271 > 0 then 1.0 else t267)
-              let !t276 = (if (negate t275) > 0 then 0.0 else t275)
-              let !t277 = ((0.5 * ((t227 - ((t227 * (d231 + t274)) / 4.0)) + (t230 - ((t230 * (d238 + t276)) / 4.0)))) - t245)
-              let !t278 = ((t232 + (t274 * t253)) + (negate (t239 + (t276 * t247))))
-              let !t279 = ((t233 + (t274 * t254)) + (negate (t240 + (t276 * t249))))
-              let !t280 = ((t234 + (t274 * t255)) + (negate (t241 + (t276 * t251))))
-              let !t281 = ((0.3 * ((if (t230 - t227) > 0 then t227 else t230) / 4.0)) - (sqrt (((t278 * t278) + (t279 * t279)) + (t280 * t280))))
-              if (if (t277 - t281) > 0 then t281 else t277) > 0 then do
-                wrU locals 10 (0.5 * ((t227 - ((t227 * (d231 + t274)) / 4.0)) + (t230 - ((t230 * (d238 + t276)) / 4.0))))
-                chkI verts ((12 * i226) + (291 * i29)) 3 5
-                t282 <- rdU verts (((12 * i226) + (291 * i29)) + 3)
-                t283 <- rdU verts (((12 * i226) + (291 * i29)) + 4)
-                t284 <- rdU verts (((12 * i226) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0)))) 0 0
-                t285 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t286 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t287 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t229 - (24.0 * (floorF (t229 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 11 (t232 + (t274 * t253))
-                wrU locals 12 (t233 + (t274 * t254))
-                wrU locals 13 (t234 + (t274 * t255))
-                let !t288 = (negate t212)
-                let !t289 = (t282 + t288)
-                let !t290 = (negate t213)
-                let !t291 = (t283 + t290)
-                let !t292 = (negate t214)
-                let !t293 = (t284 + t292)
-                let !t294 = (sqrt (((t289 * t289) + (t291 * t291)) + (t293 * t293)))
-                let !t295 = (t285 + t288)
-                let !t296 = (t286 + t290)
-                let !t297 = (t287 + t292)
-                let !t298 = (sqrt (((t295 * t295) + (t296 * t296)) + (t297 * t297)))
-                wrU locals 14 (negate (((if t294 > 0 then (recip (if (t294 - 1.0e-300) > 0 then t294 else 1.0e-300)) else 0.0) * t289) + ((if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0) * t295)))
-                wrU locals 15 (negate (((if t294 > 0 then (recip (if (t294 - 1.0e-300) > 0 then t294 else 1.0e-300)) else 0.0) * t291) + ((if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0) * t296)))
-                wrU locals 16 (negate (((if t294 > 0 then (recip (if (t294 - 1.0e-300) > 0 then t294 else 1.0e-300)) else 0.0) * t293) + ((if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0) * t297)))
+        loopI 1.0 4.0 $ \i227 -> do
+          let !d227 = fromIntegral i227 :: Double
+          chkI verts ((12 * i226) + (3 * i227) + (291 * i29)) 0 5
+          t228 <- rdU verts ((12 * i226) + (3 * i227) + (291 * i29))
+          t229 <- rdU verts (((12 * i226) + (3 * i227) + (291 * i29)) + 1)
+          t230 <- rdU verts (((12 * i226) + (3 * i227) + (291 * i29)) + 2)
+          t231 <- rdU verts (((12 * i226) + (3 * i227) + (291 * i29)) + 3)
+          t232 <- rdU verts (((12 * i226) + (3 * i227) + (291 * i29)) + 4)
+          t233 <- rdU verts (((12 * i226) + (3 * i227) + (291 * i29)) + 5)
+          t234 <- rdU locals 17
+          let !t235 = (t231 + (negate t228))
+          let !t236 = (t232 + (negate t229))
+          let !t237 = (t233 + (negate t230))
+          let !t238 = (((t235 * t235) + (t236 * t236)) + (t237 * t237))
+          wrU locals 17 (if (t238 - t234) > 0 then t238 else t234)
+          pure ()
+        pure ()
+      t239 <- rdU locals 17
+      let !s240 = (sqrt t239)
+      loopI 0.0 24.0 $ \i241 -> do
+        let !d241 = fromIntegral i241 :: Double
+        chkI radii (i241 + (24 * i29)) 0 0
+        t242 <- rdU radii (i241 + (24 * i29))
+        loopI 6.0 12.0 $ \i243 -> do
+          let !d243 = fromIntegral i243 :: Double
+          let !t244 = (d241 + d243)
+          chkI radii (truncate ((24.0 * d29) + (t244 - (24.0 * (floorF (t244 / 24.0)))))) 0 0
+          t245 <- rdU radii (truncate ((24.0 * d29) + (t244 - (24.0 * (floorF (t244 / 24.0))))))
+          let !s246 = ((if (t245 - t242) > 0 then t242 else t245) / 4.0)
+          let !t247 = ((0.3 * s246) + s240)
+          let !s248 = ((t247 * t247) * 1.000001)
+          loopI 1.0 4.0 $ \i249 -> do
+            let !d249 = fromIntegral i249 :: Double
+            chkI verts ((12 * i241) + (3 * i249) + (291 * i29)) 0 5
+            t250 <- rdU verts ((12 * i241) + (3 * i249) + (291 * i29))
+            t251 <- rdU verts (((12 * i241) + (3 * i249) + (291 * i29)) + 1)
+            t252 <- rdU verts (((12 * i241) + (3 * i249) + (291 * i29)) + 2)
+            t253 <- rdU verts (((12 * i241) + (3 * i249) + (291 * i29)) + 3)
+            t254 <- rdU verts (((12 * i241) + (3 * i249) + (291 * i29)) + 4)
+            t255 <- rdU verts (((12 * i241) + (3 * i249) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i256 -> do
+              let !d256 = fromIntegral i256 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + (d256 - 1.0)))) 0 0
+              t257 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + (d256 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + (d256 - 1.0))) + 1.0)) 0 0
+              t258 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + (d256 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + (d256 - 1.0))) + 2.0)) 0 0
+              t259 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + (d256 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + d256))) 0 0
+              t260 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + d256)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + d256)) + 1.0)) 0 0
+              t261 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + d256)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + d256)) + 2.0)) 0 0
+              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)) + d256)) + 2.0))
+              let !t263 = (0.5 * ((t250 + t253) + (negate (t257 + t260))))
+              let !t264 = (0.5 * ((t251 + t254) + (negate (t258 + t261))))
+              let !t265 = (0.5 * ((t252 + t255) + (negate (t259 + t262))))
+              if (s248 - (((t263 * t263) + (t264 * t264)) + (t265 * t265))) > 0 then do
+                t266 <- rdU locals 10
+                let !t267 = (negate t257)
+                let !t268 = (t260 + t267)
+                let !t269 = (negate t258)
+                let !t270 = (t261 + t269)
+                let !t271 = (negate t259)
+                let !t272 = (t262 + t271)
+                let !t273 = (((t268 * t268) + (t270 * t270)) + (t272 * t272))
+                let !t274 = (t253 + (negate t250))
+                let !t275 = (t254 + (negate t251))
+                let !t276 = (t255 + (negate t252))
+                let !t277 = (((t274 * t268) + (t275 * t270)) + (t276 * t272))
+                let !t278 = (((t274 * t274) + (t275 * t275)) + (t276 * t276))
+                let !t279 = ((t278 * t273) - (t277 * t277))
+                let !t280 = (t250 + t267)
+                let !t281 = (t251 + t269)
+                let !t282 = (t252 + t271)
+                let !t283 = (((t268 * t280) + (t270 * t281)) + (t272 * t282))
+                let !t284 = (((t274 * t280) + (t275 * t281)) + (t276 * t282))
+                let !t285 = (if ((abs t279) - 1.0e-300) > 0 then (((t277 * t283) - (t284 * t273)) / t279) else 0.0)
+                let !t286 = (if (t285 - 1.0) > 0 then 1.0 else t285)
+                let !t287 = (if (t279 - ((1.0e-12 * t278) * t273)) > 0 then (if (negate t286) > 0 then 0.0 else t286) else 0.0)
+                let !t288 = (if ((abs t273) - 1.0e-300) > 0 then (((t277 * t287) + t283) / t273) else 0.0)
+                let !t289 = ((abs t278) - 1.0e-300)
+                let !t290 = (if t289 > 0 then ((negate t284) / t278) else 0.0)
+                let !t291 = (if (t290 - 1.0) > 0 then 1.0 else t290)
+                let !t292 = (t288 - 1.0)
+                let !t293 = (if t289 > 0 then ((t277 - t284) / t278) else 0.0)
+                let !t294 = (if (t293 - 1.0) > 0 then 1.0 else t293)
+                let !t295 = (if (negate t288) > 0 then (if (negate t291) > 0 then 0.0 else t291) else (if t292 > 0 then (if (negate t294) > 0 then 0.0 else t294) else t287))
+                let !t296 = (if t292 > 0 then 1.0 else t288)
+                let !t297 = (if (negate t296) > 0 then 0.0 else t296)
+                let !t298 = ((0.5 * ((t242 - ((t242 * (d249 + t295)) / 4.0)) + (t245 - ((t245 * (d256 + t297)) / 4.0)))) - t266)
+                let !t299 = ((t250 + (t295 * t274)) + (negate (t257 + (t297 * t268))))
+                let !t300 = ((t251 + (t295 * t275)) + (negate (t258 + (t297 * t270))))
+                let !t301 = ((t252 + (t295 * t276)) + (negate (t259 + (t297 * t272))))
+                let !t302 = ((0.3 * s246) - (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301))))
+                if (if (t298 - t302) > 0 then t302 else t298) > 0 then do
+                  wrU locals 10 (0.5 * ((t242 - ((t242 * (d249 + t295)) / 4.0)) + (t245 - ((t245 * (d256 + t297)) / 4.0))))
+                  chkI verts ((12 * i241) + (291 * i29)) 3 5
+                  t303 <- rdU verts (((12 * i241) + (291 * i29)) + 3)
+                  t304 <- rdU verts (((12 * i241) + (291 * i29)) + 4)
+                  t305 <- rdU verts (((12 * i241) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0)))) 0 0
+                  t306 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t307 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t308 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t244 - (24.0 * (floorF (t244 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 11 (t250 + (t295 * t274))
+                  wrU locals 12 (t251 + (t295 * t275))
+                  wrU locals 13 (t252 + (t295 * t276))
+                  let !t309 = (negate t212)
+                  let !t310 = (t303 + t309)
+                  let !t311 = (negate t213)
+                  let !t312 = (t304 + t311)
+                  let !t313 = (negate t214)
+                  let !t314 = (t305 + t313)
+                  let !t315 = (sqrt (((t310 * t310) + (t312 * t312)) + (t314 * t314)))
+                  let !t316 = (t306 + t309)
+                  let !t317 = (t307 + t311)
+                  let !t318 = (t308 + t313)
+                  let !t319 = (sqrt (((t316 * t316) + (t317 * t317)) + (t318 * t318)))
+                  wrU locals 14 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t310) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t316)))
+                  wrU locals 15 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t312) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t317)))
+                  wrU locals 16 (negate (((if t315 > 0 then (recip (if (t315 - 1.0e-300) > 0 then t315 else 1.0e-300)) else 0.0) * t314) + ((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t318)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -641,111 +673,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t299 <- rdU locals 10
-      if t299 > 0 then do
-        t300 <- rdU locals 11
-        t301 <- rdU locals 12
-        t302 <- rdU locals 13
-        t303 <- rdU locals 14
-        t304 <- rdU locals 15
-        t305 <- rdU locals 16
-        let !t306 = (t304 + (negate t304))
-        let !t307 = (sqrt (((t303 * t303) + (t306 * t306)) + (t305 * t305)))
-        let !t308 = (if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0)
-        let !s309 = (t308 * t303)
-        let !s310 = (t308 * t306)
-        let !s311 = (t308 * t305)
-        t312 <- rdU meta 2
-        t313 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t313) > 0 then 1.0 else t313)) - t312) - 0.5) > 0 then do
-          wrU meta 2 (t312 + 1.0)
-          t314 <- rdU pos (3 * i29)
-          t315 <- rdU pos ((3 * i29) + 1)
-          t316 <- rdU pos ((3 * i29) + 2)
-          t317 <- rdU normal (3 * i29)
-          t318 <- rdU normal ((3 * i29) + 1)
-          t319 <- rdU normal ((3 * i29) + 2)
+      t320 <- rdU locals 10
+      if t320 > 0 then do
+        t321 <- rdU locals 11
+        t322 <- rdU locals 12
+        t323 <- rdU locals 13
+        t324 <- rdU locals 14
+        t325 <- rdU locals 15
+        t326 <- rdU locals 16
+        let !t327 = (t325 + (negate t325))
+        let !t328 = (sqrt (((t324 * t324) + (t327 * t327)) + (t326 * t326)))
+        let !t329 = (if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0)
+        let !s330 = (t329 * t324)
+        let !s331 = (t329 * t327)
+        let !s332 = (t329 * t326)
+        t333 <- rdU meta 2
+        t334 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t334) > 0 then 1.0 else t334)) - t333) - 0.5) > 0 then do
+          wrU meta 2 (t333 + 1.0)
+          t335 <- rdU pos (3 * i29)
+          t336 <- rdU pos ((3 * i29) + 1)
+          t337 <- rdU pos ((3 * i29) + 2)
+          t338 <- rdU normal (3 * i29)
+          t339 <- rdU normal ((3 * i29) + 1)
+          t340 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t320 <- rdU axis (3 * i29)
-          t321 <- rdU axis ((3 * i29) + 1)
-          t322 <- rdU axis ((3 * i29) + 2)
-          let !s323 = ((t318 * t322) - (t319 * t321))
-          let !s324 = ((t319 * t320) - (t317 * t322))
-          let !s325 = ((t317 * t321) - (t318 * t320))
+          t341 <- rdU axis (3 * i29)
+          t342 <- rdU axis ((3 * i29) + 1)
+          t343 <- rdU axis ((3 * i29) + 2)
+          let !s344 = ((t339 * t343) - (t340 * t342))
+          let !s345 = ((t340 * t341) - (t338 * t343))
+          let !s346 = ((t338 * t342) - (t339 * t341))
           chkI scalars (6 * i29) 0 0
-          t326 <- rdU scalars (6 * i29)
-          t327 <- rdU scalars ((6 * i29) + 5)
-          t328 <- rdU scalars ((6 * i29) + 2)
-          t329 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t312)) 0 29
-          wrU contacts (30 * (truncate t312)) d29
-          wrU contacts ((30 * (truncate t312)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t312)) + 2) d29
-          wrU contacts ((30 * (truncate t312)) + 3) 12.0
-          wrU contacts ((30 * (truncate t312)) + 4) (s309 + (negate ((((t317 * s309) + (t318 * s310)) + (t319 * s311)) * t317)))
-          wrU contacts ((30 * (truncate t312)) + 5) (s310 + (negate ((((t317 * s309) + (t318 * s310)) + (t319 * s311)) * t318)))
-          wrU contacts ((30 * (truncate t312)) + 6) (s311 + (negate ((((t317 * s309) + (t318 * s310)) + (t319 * s311)) * t319)))
-          wrU contacts ((30 * (truncate t312)) + 7) 0.0
-          wrU contacts ((30 * (truncate t312)) + 12) 0.0
-          wrU contacts ((30 * (truncate t312)) + 13) 0.0
-          wrU contacts ((30 * (truncate t312)) + 14) 0.0
-          wrU contacts ((30 * (truncate t312)) + 15) 0.0
-          wrU contacts ((30 * (truncate t312)) + 20) t299
-          wrU contacts ((30 * (truncate t312)) + 26) 0.6
-          wrU contacts ((30 * (truncate t312)) + 27) t300
-          wrU contacts ((30 * (truncate t312)) + 28) t301
-          wrU contacts ((30 * (truncate t312)) + 29) t302
+          t347 <- rdU scalars (6 * i29)
+          t348 <- rdU scalars ((6 * i29) + 5)
+          t349 <- rdU scalars ((6 * i29) + 2)
+          t350 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t333)) 0 29
+          wrU contacts (30 * (truncate t333)) d29
+          wrU contacts ((30 * (truncate t333)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t333)) + 2) d29
+          wrU contacts ((30 * (truncate t333)) + 3) 12.0
+          wrU contacts ((30 * (truncate t333)) + 4) (s330 + (negate ((((t338 * s330) + (t339 * s331)) + (t340 * s332)) * t338)))
+          wrU contacts ((30 * (truncate t333)) + 5) (s331 + (negate ((((t338 * s330) + (t339 * s331)) + (t340 * s332)) * t339)))
+          wrU contacts ((30 * (truncate t333)) + 6) (s332 + (negate ((((t338 * s330) + (t339 * s331)) + (t340 * s332)) * t340)))
+          wrU contacts ((30 * (truncate t333)) + 7) 0.0
+          wrU contacts ((30 * (truncate t333)) + 12) 0.0
+          wrU contacts ((30 * (truncate t333)) + 13) 0.0
+          wrU contacts ((30 * (truncate t333)) + 14) 0.0
+          wrU contacts ((30 * (truncate t333)) + 15) 0.0
+          wrU contacts ((30 * (truncate t333)) + 20) t320
+          wrU contacts ((30 * (truncate t333)) + 26) 0.6
+          wrU contacts ((30 * (truncate t333)) + 27) t321
+          wrU contacts ((30 * (truncate t333)) + 28) t322
+          wrU contacts ((30 * (truncate t333)) + 29) t323
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t330 <- rdU pos (-3)
-            t331 <- rdU pos (-2)
-            t332 <- rdU pos (-1)
+            t351 <- rdU pos (-3)
+            t352 <- rdU pos (-2)
+            t353 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t333 <- rdU normal (-3)
-            t334 <- rdU normal (-2)
-            t335 <- rdU normal (-1)
+            t354 <- rdU normal (-3)
+            t355 <- rdU normal (-2)
+            t356 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t336 <- rdU axis (-3)
-            t337 <- rdU axis (-2)
-            t338 <- rdU axis (-1)
-            let !s339 = ((t334 * t338) - (t335 * t337))
-            let !s340 = ((t335 * t336) - (t333 * t338))
-            let !s341 = ((t333 * t337) - (t334 * t336))
+            t357 <- rdU axis (-3)
+            t358 <- rdU axis (-2)
+            t359 <- rdU axis (-1)
+            let !s360 = ((t355 * t359) - (t356 * t358))
+            let !s361 = ((t356 * t357) - (t354 * t359))
+            let !s362 = ((t354 * t358) - (t355 * t357))
             chkI scalars 0 (-6) (-1)
-            t342 <- rdU scalars (-6)
-            t343 <- rdU scalars (-1)
-            t344 <- rdU scalars (-4)
-            t345 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t312)) + 8) (s309 + (negate ((((t333 * s309) + (t334 * s310)) + (t335 * s311)) * t333)))
-            wrU contacts ((30 * (truncate t312)) + 9) (s310 + (negate ((((t333 * s309) + (t334 * s310)) + (t335 * s311)) * t334)))
-            wrU contacts ((30 * (truncate t312)) + 10) (s311 + (negate ((((t333 * s309) + (t334 * s310)) + (t335 * s311)) * t335)))
-            let !t346 = (t301 + (negate t331))
-            let !t347 = (t302 + (negate t332))
-            let !t348 = (t300 + (negate t330))
-            wrU contacts ((30 * (truncate t312)) + 11) (((((t346 * s311) - (t347 * s310)) * t333) + (((t347 * s309) - (t348 * s311)) * t334)) + (((t348 * s310) - (t346 * s309)) * t335))
-            let !t349 = ((t318 * s311) - (t319 * s310))
-            wrU contacts ((30 * (truncate t312)) + 16) (t349 + (negate ((((t333 * t349) + (t334 * ((t319 * s309) - (t317 * s311)))) + (t335 * ((t317 * s310) - (t318 * s309)))) * t333)))
-            let !t350 = ((t319 * s309) - (t317 * s311))
-            wrU contacts ((30 * (truncate t312)) + 17) (t350 + (negate ((((t333 * t349) + (t334 * t350)) + (t335 * ((t317 * s310) - (t318 * s309)))) * t334)))
-            let !t351 = ((t317 * s310) - (t318 * s309))
-            wrU contacts ((30 * (truncate t312)) + 18) (t351 + (negate ((((t333 * t349) + (t334 * t350)) + (t335 * t351)) * t335)))
-            wrU contacts ((30 * (truncate t312)) + 19) (((((t346 * t351) - (t347 * t350)) * t333) + (((t347 * t349) - (t348 * t351)) * t334)) + (((t348 * t350) - (t346 * t349)) * t335))
+            t363 <- rdU scalars (-6)
+            t364 <- rdU scalars (-1)
+            t365 <- rdU scalars (-4)
+            t366 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t333)) + 8) (s330 + (negate ((((t354 * s330) + (t355 * s331)) + (t356 * s332)) * t354)))
+            wrU contacts ((30 * (truncate t333)) + 9) (s331 + (negate ((((t354 * s330) + (t355 * s331)) + (t356 * s332)) * t355)))
+            wrU contacts ((30 * (truncate t333)) + 10) (s332 + (negate ((((t354 * s330) + (t355 * s331)) + (t356 * s332)) * t356)))
+            let !t367 = (t322 + (negate t352))
+            let !t368 = (t323 + (negate t353))
+            let !t369 = (t321 + (negate t351))
+            wrU contacts ((30 * (truncate t333)) + 11) (((((t367 * s332) - (t368 * s331)) * t354) + (((t368 * s330) - (t369 * s332)) * t355)) + (((t369 * s331) - (t367 * s330)) * t356))
+            let !t370 = ((t339 * s332) - (t340 * s331))
+            wrU contacts ((30 * (truncate t333)) + 16) (t370 + (negate ((((t354 * t370) + (t355 * ((t340 * s330) - (t338 * s332)))) + (t356 * ((t338 * s331) - (t339 * s330)))) * t354)))
+            let !t371 = ((t340 * s330) - (t338 * s332))
+            wrU contacts ((30 * (truncate t333)) + 17) (t371 + (negate ((((t354 * t370) + (t355 * t371)) + (t356 * ((t338 * s331) - (t339 * s330)))) * t355)))
+            let !t372 = ((t338 * s331) - (t339 * s330))
+            wrU contacts ((30 * (truncate t333)) + 18) (t372 + (negate ((((t354 * t370) + (t355 * t371)) + (t356 * t372)) * t356)))
+            wrU contacts ((30 * (truncate t333)) + 19) (((((t367 * t372) - (t368 * t371)) * t354) + (((t368 * t370) - (t369 * t372)) * t355)) + (((t369 * t371) - (t367 * t370)) * t356))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t312)) + 8) 0.0
-            wrU contacts ((30 * (truncate t312)) + 9) 0.0
-            wrU contacts ((30 * (truncate t312)) + 10) 0.0
-            wrU contacts ((30 * (truncate t312)) + 11) 0.0
-            wrU contacts ((30 * (truncate t312)) + 16) 0.0
-            wrU contacts ((30 * (truncate t312)) + 17) 0.0
-            wrU contacts ((30 * (truncate t312)) + 18) 0.0
-            wrU contacts ((30 * (truncate t312)) + 19) 0.0
+            wrU contacts ((30 * (truncate t333)) + 8) 0.0
+            wrU contacts ((30 * (truncate t333)) + 9) 0.0
+            wrU contacts ((30 * (truncate t333)) + 10) 0.0
+            wrU contacts ((30 * (truncate t333)) + 11) 0.0
+            wrU contacts ((30 * (truncate t333)) + 16) 0.0
+            wrU contacts ((30 * (truncate t333)) + 17) 0.0
+            wrU contacts ((30 * (truncate t333)) + 18) 0.0
+            wrU contacts ((30 * (truncate t333)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t352 <- rdU meta 6
-          wrU meta 6 (t352 + 1.0)
+          t373 <- rdU meta 6
+          wrU meta 6 (t373 + 1.0)
           pure ()
         pure ()
       else do

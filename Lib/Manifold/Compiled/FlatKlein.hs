@@ -69,7 +69,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -859,104 +859,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i393 -> do
         let !d393 = fromIntegral i393 :: Double
-        chkI radii ((24 * i29) + i393) 0 0
-        t394 <- rdU radii ((24 * i29) + i393)
-        loopI 6.0 12.0 $ \i395 -> do
-          let !d395 = fromIntegral i395 :: Double
-          let !t396 = (d393 + d395)
-          chkI radii (truncate ((24.0 * d29) + (t396 - (24.0 * (floorF (t396 / 24.0)))))) 0 0
-          t397 <- rdU radii (truncate ((24.0 * d29) + (t396 - (24.0 * (floorF (t396 / 24.0))))))
-          loopI 1.0 4.0 $ \i398 -> do
-            let !d398 = fromIntegral i398 :: Double
-            chkI verts ((291 * i29) + (12 * i393) + (3 * i398)) 0 5
-            t399 <- rdU verts ((291 * i29) + (12 * i393) + (3 * i398))
-            t400 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 1)
-            t401 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 2)
-            t402 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 3)
-            t403 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 4)
-            t404 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i398)) + 5)
-            loopI 1.0 4.0 $ \i405 -> do
-              let !d405 = fromIntegral i405 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0)))) 0 0
-              t406 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 1.0)) 0 0
-              t407 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 2.0)) 0 0
-              t408 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + (d405 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405))) 0 0
-              t409 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 1.0)) 0 0
-              t410 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 2.0)) 0 0
-              t411 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)) + d405)) + 2.0))
-              t412 <- rdU locals 4
-              let !t413 = (negate t406)
-              let !t414 = (t409 + t413)
-              let !t415 = (negate t407)
-              let !t416 = (t410 + t415)
-              let !t417 = (negate t408)
-              let !t418 = (t411 + t417)
-              let !t419 = (((t414 * t414) + (t416 * t416)) + (t418 * t418))
-              let !t420 = (t402 + (negate t399))
-              let !t421 = (t403 + (negate t400))
-              let !t422 = (t404 + (negate t401))
-              let !t423 = (((t420 * t414) + (t421 * t416)) + (t422 * t418))
-              let !t424 = (((t420 * t420) + (t421 * t421)) + (t422 * t422))
-              let !t425 = ((t424 * t419) - (t423 * t423))
-              let !t426 = (t399 + t413)
-              let !t427 = (t400 + t415)
-              let !t428 = (t401 + t417)
-              let !t429 = (((t414 * t426) + (t416 * t427)) + (t418 * t428))
-              let !t430 = (((t420 * t426) + (t421 * t427)) + (t422 * t428))
-              let !t431 = (if ((abs t425) - 1.0e-300) > 0 then (((t423 * t429) - (t430 * t419)) / t425) else 0.0)
-              let !t432 = (if (t431 - 1.0) > 0 then 1.0 else t431)
-              let !t433 = (if (t425 - ((1.0e-12 * t424) * t419)) > 0 then (if (negate t432) > 0 then 0.0 else t432) else 0.0)
-              let !t434 = (if ((abs t419) - 1.0e-300) > 0 then (((t423 * t433) + t429) / t419) else 0.0)
-              let !t435 = ((abs t424) - 1.0e-300)
-              let !t436 = (if t435 > 0 then ((negate t430) / t424) else 0.0)
-              let !t437 = (if (t436 - 1.0) > 0 then 1.0 else t436)
-              let !t438 = (t434 - 1.0)
-              let !t439 = (if t435 > 0 then ((t423 - t430) / t424) else 0.0)
-              let !t440 = (if (t439 - 1.0) > 0 then 1.0 else t439)
-              let !t441 = (if (negate t434) > 0 then (if (negate t437) > 0 then 0.0 else t437) else (if t438 > 0 then (if (negate t440) > 0 then 0.0 else t440) else t433))
-              let !t442 = (if t438 > 0 then 1.0 else t434)
-              let !t443 = (if (negate t442) > 0 then 0.0 else t442)
-              let !t444 = ((0.5 * ((t394 - ((t394 * (d398 + t441)) / 4.0)) + (t397 - ((t397 * (d405 + t443)) / 4.0)))) - t412)
-              let !t445 = ((t399 + (t441 * t420)) + (negate (t406 + (t443 * t414))))
-              let !t446 = ((t400 + (t441 * t421)) + (negate (t407 + (t443 * t416))))
-              let !t447 = ((t401 + (t441 * t422)) + (negate (t408 + (t443 * t418))))
-              let !t448 = ((0.3 * ((if (t397 - t394) > 0 then t394 else t397) / 4.0)) - (sqrt (((t445 * t445) + (t446 * t446)) + (t447 * t447))))
-              if (if (t444 - t448) > 0 then t448 else t444) > 0 then do
-                wrU locals 4 (0.5 * ((t394 - ((t394 * (d398 + t441)) / 4.0)) + (t397 - ((t397 * (d405 + t443)) / 4.0))))
-                chkI verts ((291 * i29) + (12 * i393)) 3 5
-                t449 <- rdU verts (((291 * i29) + (12 * i393)) + 3)
-                t450 <- rdU verts (((291 * i29) + (12 * i393)) + 4)
-                t451 <- rdU verts (((291 * i29) + (12 * i393)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0)))) 0 0
-                t452 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t453 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t454 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t396 - (24.0 * (floorF (t396 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t399 + (t441 * t420))
-                wrU locals 6 (t400 + (t441 * t421))
-                wrU locals 7 (t401 + (t441 * t422))
-                let !t455 = (negate t379)
-                let !t456 = (t449 + t455)
-                let !t457 = (negate t380)
-                let !t458 = (t450 + t457)
-                let !t459 = (negate t381)
-                let !t460 = (t451 + t459)
-                let !t461 = (sqrt (((t456 * t456) + (t458 * t458)) + (t460 * t460)))
-                let !t462 = (t452 + t455)
-                let !t463 = (t453 + t457)
-                let !t464 = (t454 + t459)
-                let !t465 = (sqrt (((t462 * t462) + (t463 * t463)) + (t464 * t464)))
-                wrU locals 8 (negate (((if t461 > 0 then (recip (if (t461 - 1.0e-300) > 0 then t461 else 1.0e-300)) else 0.0) * t456) + ((if t465 > 0 then (recip (if (t465 - 1.0e-300) > 0 then t465 else 1.0e-300)) else 0.0) * t462)))
-                wrU locals 9 (negate (((if t461 > 0 then (recip (if (t461 - 1.0e-300) > 0 then t461 else 1.0e-300)) else 0.0) * t458) + ((if t465 > 0 then (recip (if (t465 - 1.0e-300) > 0 then t465 else 1.0e-300)) else 0.0) * t463)))
-                wrU locals 10 (negate (((if t461 > 0 then (recip (if (t461 - 1.0e-300) > 0 then t461 else 1.0e-300)) else 0.0) * t460) + ((if t465 > 0 then (recip (if (t465 - 1.0e-300) > 0 then t465 else 1.0e-300)) else 0.0) * t464)))
+        loopI 1.0 4.0 $ \i394 -> do
+          let !d394 = fromIntegral i394 :: Double
+          chkI verts ((291 * i29) + (12 * i393) + (3 * i394)) 0 5
+          t395 <- rdU verts ((291 * i29) + (12 * i393) + (3 * i394))
+          t396 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i394)) + 1)
+          t397 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i394)) + 2)
+          t398 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i394)) + 3)
+          t399 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i394)) + 4)
+          t400 <- rdU verts (((291 * i29) + (12 * i393) + (3 * i394)) + 5)
+          t401 <- rdU locals 11
+          let !t402 = (t398 + (negate t395))
+          let !t403 = (t399 + (negate t396))
+          let !t404 = (t400 + (negate t397))
+          let !t405 = (((t402 * t402) + (t403 * t403)) + (t404 * t404))
+          wrU locals 11 (if (t405 - t401) > 0 then t405 else t401)
+          pure ()
+        pure ()
+      t406 <- rdU locals 11
+      let !s407 = (sqrt t406)
+      loopI 0.0 24.0 $ \i408 -> do
+        let !d408 = fromIntegral i408 :: Double
+        chkI radii ((24 * i29) + i408) 0 0
+        t409 <- rdU radii ((24 * i29) + i408)
+        loopI 6.0 12.0 $ \i410 -> do
+          let !d410 = fromIntegral i410 :: Double
+          let !t411 = (d408 + d410)
+          chkI radii (truncate ((24.0 * d29) + (t411 - (24.0 * (floorF (t411 / 24.0)))))) 0 0
+          t412 <- rdU radii (truncate ((24.0 * d29) + (t411 - (24.0 * (floorF (t411 / 24.0))))))
+          let !s413 = ((if (t412 - t409) > 0 then t409 else t412) / 4.0)
+          let !t414 = ((0.3 * s413) + s407)
+          let !s415 = ((t414 * t414) * 1.000001)
+          loopI 1.0 4.0 $ \i416 -> do
+            let !d416 = fromIntegral i416 :: Double
+            chkI verts ((291 * i29) + (12 * i408) + (3 * i416)) 0 5
+            t417 <- rdU verts ((291 * i29) + (12 * i408) + (3 * i416))
+            t418 <- rdU verts (((291 * i29) + (12 * i408) + (3 * i416)) + 1)
+            t419 <- rdU verts (((291 * i29) + (12 * i408) + (3 * i416)) + 2)
+            t420 <- rdU verts (((291 * i29) + (12 * i408) + (3 * i416)) + 3)
+            t421 <- rdU verts (((291 * i29) + (12 * i408) + (3 * i416)) + 4)
+            t422 <- rdU verts (((291 * i29) + (12 * i408) + (3 * i416)) + 5)
+            loopI 1.0 4.0 $ \i423 -> do
+              let !d423 = fromIntegral i423 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + (d423 - 1.0)))) 0 0
+              t424 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + (d423 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + (d423 - 1.0))) + 1.0)) 0 0
+              t425 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + (d423 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + (d423 - 1.0))) + 2.0)) 0 0
+              t426 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + (d423 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + d423))) 0 0
+              t427 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + d423)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + d423)) + 1.0)) 0 0
+              t428 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + d423)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + d423)) + 2.0)) 0 0
+              t429 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)) + d423)) + 2.0))
+              let !t430 = (0.5 * ((t417 + t420) + (negate (t424 + t427))))
+              let !t431 = (0.5 * ((t418 + t421) + (negate (t425 + t428))))
+              let !t432 = (0.5 * ((t419 + t422) + (negate (t426 + t429))))
+              if (s415 - (((t430 * t430) + (t431 * t431)) + (t432 * t432))) > 0 then do
+                t433 <- rdU locals 4
+                let !t434 = (negate t424)
+                let !t435 = (t427 + t434)
+                let !t436 = (negate t425)
+                let !t437 = (t428 + t436)
+                let !t438 = (negate t426)
+                let !t439 = (t429 + t438)
+                let !t440 = (((t435 * t435) + (t437 * t437)) + (t439 * t439))
+                let !t441 = (t420 + (negate t417))
+                let !t442 = (t421 + (negate t418))
+                let !t443 = (t422 + (negate t419))
+                let !t444 = (((t441 * t435) + (t442 * t437)) + (t443 * t439))
+                let !t445 = (((t441 * t441) + (t442 * t442)) + (t443 * t443))
+                let !t446 = ((t445 * t440) - (t444 * t444))
+                let !t447 = (t417 + t434)
+                let !t448 = (t418 + t436)
+                let !t449 = (t419 + t438)
+                let !t450 = (((t435 * t447) + (t437 * t448)) + (t439 * t449))
+                let !t451 = (((t441 * t447) + (t442 * t448)) + (t443 * t449))
+                let !t452 = (if ((abs t446) - 1.0e-300) > 0 then (((t444 * t450) - (t451 * t440)) / t446) else 0.0)
+                let !t453 = (if (t452 - 1.0) > 0 then 1.0 else t452)
+                let !t454 = (if (t446 - ((1.0e-12 * t445) * t440)) > 0 then (if (negate t453) > 0 then 0.0 else t453) else 0.0)
+                let !t455 = (if ((abs t440) - 1.0e-300) > 0 then (((t444 * t454) + t450) / t440) else 0.0)
+                let !t456 = ((abs t445) - 1.0e-300)
+                let !t457 = (if t456 > 0 then ((negate t451) / t445) else 0.0)
+                let !t458 = (if (t457 - 1.0) > 0 then 1.0 else t457)
+                let !t459 = (t455 - 1.0)
+                let !t460 = (if t456 > 0 then ((t444 - t451) / t445) else 0.0)
+                let !t461 = (if (t460 - 1.0) > 0 then 1.0 else t460)
+                let !t462 = (if (negate t455) > 0 then (if (negate t458) > 0 then 0.0 else t458) else (if t459 > 0 then (if (negate t461) > 0 then 0.0 else t461) else t454))
+                let !t463 = (if t459 > 0 then 1.0 else t455)
+                let !t464 = (if (negate t463) > 0 then 0.0 else t463)
+                let !t465 = ((0.5 * ((t409 - ((t409 * (d416 + t462)) / 4.0)) + (t412 - ((t412 * (d423 + t464)) / 4.0)))) - t433)
+                let !t466 = ((t417 + (t462 * t441)) + (negate (t424 + (t464 * t435))))
+                let !t467 = ((t418 + (t462 * t442)) + (negate (t425 + (t464 * t437))))
+                let !t468 = ((t419 + (t462 * t443)) + (negate (t426 + (t464 * t439))))
+                let !t469 = ((0.3 * s413) - (sqrt (((t466 * t466) + (t467 * t467)) + (t468 * t468))))
+                if (if (t465 - t469) > 0 then t469 else t465) > 0 then do
+                  wrU locals 4 (0.5 * ((t409 - ((t409 * (d416 + t462)) / 4.0)) + (t412 - ((t412 * (d423 + t464)) / 4.0))))
+                  chkI verts ((291 * i29) + (12 * i408)) 3 5
+                  t470 <- rdU verts (((291 * i29) + (12 * i408)) + 3)
+                  t471 <- rdU verts (((291 * i29) + (12 * i408)) + 4)
+                  t472 <- rdU verts (((291 * i29) + (12 * i408)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0)))) 0 0
+                  t473 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t474 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t475 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t411 - (24.0 * (floorF (t411 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t417 + (t462 * t441))
+                  wrU locals 6 (t418 + (t462 * t442))
+                  wrU locals 7 (t419 + (t462 * t443))
+                  let !t476 = (negate t379)
+                  let !t477 = (t470 + t476)
+                  let !t478 = (negate t380)
+                  let !t479 = (t471 + t478)
+                  let !t480 = (negate t381)
+                  let !t481 = (t472 + t480)
+                  let !t482 = (sqrt (((t477 * t477) + (t479 * t479)) + (t481 * t481)))
+                  let !t483 = (t473 + t476)
+                  let !t484 = (t474 + t478)
+                  let !t485 = (t475 + t480)
+                  let !t486 = (sqrt (((t483 * t483) + (t484 * t484)) + (t485 * t485)))
+                  wrU locals 8 (negate (((if t482 > 0 then (recip (if (t482 - 1.0e-300) > 0 then t482 else 1.0e-300)) else 0.0) * t477) + ((if t486 > 0 then (recip (if (t486 - 1.0e-300) > 0 then t486 else 1.0e-300)) else 0.0) * t483)))
+                  wrU locals 9 (negate (((if t482 > 0 then (recip (if (t482 - 1.0e-300) > 0 then t482 else 1.0e-300)) else 0.0) * t479) + ((if t486 > 0 then (recip (if (t486 - 1.0e-300) > 0 then t486 else 1.0e-300)) else 0.0) * t484)))
+                  wrU locals 10 (negate (((if t482 > 0 then (recip (if (t482 - 1.0e-300) > 0 then t482 else 1.0e-300)) else 0.0) * t481) + ((if t486 > 0 then (recip (if (t486 - 1.0e-300) > 0 then t486 else 1.0e-300)) else 0.0) * t485)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -964,112 +996,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t466 <- rdU locals 4
-      if t466 > 0 then do
-        t467 <- rdU locals 5
-        t468 <- rdU locals 6
-        t469 <- rdU locals 7
-        t470 <- rdU locals 8
-        t471 <- rdU locals 9
-        t472 <- rdU locals 10
-        let !t473 = (t471 + (negate t471))
-        let !t474 = (sqrt (((t470 * t470) + (t473 * t473)) + (t472 * t472)))
-        let !t475 = (if t474 > 0 then (recip (if (t474 - 1.0e-300) > 0 then t474 else 1.0e-300)) else 0.0)
-        let !s476 = (t475 * t470)
-        let !s477 = (t475 * t473)
-        let !s478 = (t475 * t472)
-        t479 <- rdU meta 2
-        t480 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t480) > 0 then 1.0 else t480)) - t479) - 0.5) > 0 then do
-          wrU meta 2 (t479 + 1.0)
-          t481 <- rdU pos (3 * i29)
-          t482 <- rdU pos ((3 * i29) + 1)
-          t483 <- rdU pos ((3 * i29) + 2)
+      t487 <- rdU locals 4
+      if t487 > 0 then do
+        t488 <- rdU locals 5
+        t489 <- rdU locals 6
+        t490 <- rdU locals 7
+        t491 <- rdU locals 8
+        t492 <- rdU locals 9
+        t493 <- rdU locals 10
+        let !t494 = (t492 + (negate t492))
+        let !t495 = (sqrt (((t491 * t491) + (t494 * t494)) + (t493 * t493)))
+        let !t496 = (if t495 > 0 then (recip (if (t495 - 1.0e-300) > 0 then t495 else 1.0e-300)) else 0.0)
+        let !s497 = (t496 * t491)
+        let !s498 = (t496 * t494)
+        let !s499 = (t496 * t493)
+        t500 <- rdU meta 2
+        t501 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t501) > 0 then 1.0 else t501)) - t500) - 0.5) > 0 then do
+          wrU meta 2 (t500 + 1.0)
+          t502 <- rdU pos (3 * i29)
+          t503 <- rdU pos ((3 * i29) + 1)
+          t504 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t484 <- rdU normal (3 * i29)
-          t485 <- rdU normal ((3 * i29) + 1)
-          t486 <- rdU normal ((3 * i29) + 2)
+          t505 <- rdU normal (3 * i29)
+          t506 <- rdU normal ((3 * i29) + 1)
+          t507 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t487 <- rdU axis (3 * i29)
-          t488 <- rdU axis ((3 * i29) + 1)
-          t489 <- rdU axis ((3 * i29) + 2)
-          let !s490 = ((t485 * t489) - (t486 * t488))
-          let !s491 = ((t486 * t487) - (t484 * t489))
-          let !s492 = ((t484 * t488) - (t485 * t487))
+          t508 <- rdU axis (3 * i29)
+          t509 <- rdU axis ((3 * i29) + 1)
+          t510 <- rdU axis ((3 * i29) + 2)
+          let !s511 = ((t506 * t510) - (t507 * t509))
+          let !s512 = ((t507 * t508) - (t505 * t510))
+          let !s513 = ((t505 * t509) - (t506 * t508))
           chkI scalars (6 * i29) 0 0
-          t493 <- rdU scalars (6 * i29)
-          t494 <- rdU scalars ((6 * i29) + 5)
-          t495 <- rdU scalars ((6 * i29) + 2)
-          t496 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t479)) 0 29
-          wrU contacts (30 * (truncate t479)) d29
-          wrU contacts ((30 * (truncate t479)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t479)) + 2) d29
-          wrU contacts ((30 * (truncate t479)) + 3) 12.0
-          wrU contacts ((30 * (truncate t479)) + 4) (s476 + (negate ((((t484 * s476) + (t485 * s477)) + (t486 * s478)) * t484)))
-          wrU contacts ((30 * (truncate t479)) + 5) (s477 + (negate ((((t484 * s476) + (t485 * s477)) + (t486 * s478)) * t485)))
-          wrU contacts ((30 * (truncate t479)) + 6) (s478 + (negate ((((t484 * s476) + (t485 * s477)) + (t486 * s478)) * t486)))
-          wrU contacts ((30 * (truncate t479)) + 7) 0.0
-          wrU contacts ((30 * (truncate t479)) + 12) 0.0
-          wrU contacts ((30 * (truncate t479)) + 13) 0.0
-          wrU contacts ((30 * (truncate t479)) + 14) 0.0
-          wrU contacts ((30 * (truncate t479)) + 15) 0.0
-          wrU contacts ((30 * (truncate t479)) + 20) t466
-          wrU contacts ((30 * (truncate t479)) + 26) 0.6
-          wrU contacts ((30 * (truncate t479)) + 27) t467
-          wrU contacts ((30 * (truncate t479)) + 28) t468
-          wrU contacts ((30 * (truncate t479)) + 29) t469
+          t514 <- rdU scalars (6 * i29)
+          t515 <- rdU scalars ((6 * i29) + 5)
+          t516 <- rdU scalars ((6 * i29) + 2)
+          t517 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t500)) 0 29
+          wrU contacts (30 * (truncate t500)) d29
+          wrU contacts ((30 * (truncate t500)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t500)) + 2) d29
+          wrU contacts ((30 * (truncate t500)) + 3) 12.0
+          wrU contacts ((30 * (truncate t500)) + 4) (s497 + (negate ((((t505 * s497) + (t506 * s498)) + (t507 * s499)) * t505)))
+          wrU contacts ((30 * (truncate t500)) + 5) (s498 + (negate ((((t505 * s497) + (t506 * s498)) + (t507 * s499)) * t506)))
+          wrU contacts ((30 * (truncate t500)) + 6) (s499 + (negate ((((t505 * s497) + (t506 * s498)) + (t507 * s499)) * t507)))
+          wrU contacts ((30 * (truncate t500)) + 7) 0.0
+          wrU contacts ((30 * (truncate t500)) + 12) 0.0
+          wrU contacts ((30 * (truncate t500)) + 13) 0.0
+          wrU contacts ((30 * (truncate t500)) + 14) 0.0
+          wrU contacts ((30 * (truncate t500)) + 15) 0.0
+          wrU contacts ((30 * (truncate t500)) + 20) t487
+          wrU contacts ((30 * (truncate t500)) + 26) 0.6
+          wrU contacts ((30 * (truncate t500)) + 27) t488
+          wrU contacts ((30 * (truncate t500)) + 28) t489
+          wrU contacts ((30 * (truncate t500)) + 29) t490
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t497 <- rdU pos (-3)
-            t498 <- rdU pos (-2)
-            t499 <- rdU pos (-1)
+            t518 <- rdU pos (-3)
+            t519 <- rdU pos (-2)
+            t520 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t500 <- rdU normal (-3)
-            t501 <- rdU normal (-2)
-            t502 <- rdU normal (-1)
+            t521 <- rdU normal (-3)
+            t522 <- rdU normal (-2)
+            t523 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t503 <- rdU axis (-3)
-            t504 <- rdU axis (-2)
-            t505 <- rdU axis (-1)
-            let !s506 = ((t501 * t505) - (t502 * t504))
-            let !s507 = ((t502 * t503) - (t500 * t505))
-            let !s508 = ((t500 * t504) - (t501 * t503))
+            t524 <- rdU axis (-3)
+            t525 <- rdU axis (-2)
+            t526 <- rdU axis (-1)
+            let !s527 = ((t522 * t526) - (t523 * t525))
+            let !s528 = ((t523 * t524) - (t521 * t526))
+            let !s529 = ((t521 * t525) - (t522 * t524))
             chkI scalars 0 (-6) (-1)
-            t509 <- rdU scalars (-6)
-            t510 <- rdU scalars (-1)
-            t511 <- rdU scalars (-4)
-            t512 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t479)) + 8) (s476 + (negate ((((t500 * s476) + (t501 * s477)) + (t502 * s478)) * t500)))
-            wrU contacts ((30 * (truncate t479)) + 9) (s477 + (negate ((((t500 * s476) + (t501 * s477)) + (t502 * s478)) * t501)))
-            wrU contacts ((30 * (truncate t479)) + 10) (s478 + (negate ((((t500 * s476) + (t501 * s477)) + (t502 * s478)) * t502)))
-            let !t513 = (t468 + (negate t498))
-            let !t514 = (t469 + (negate t499))
-            let !t515 = (t467 + (negate t497))
-            wrU contacts ((30 * (truncate t479)) + 11) (((((t513 * s478) - (t514 * s477)) * t500) + (((t514 * s476) - (t515 * s478)) * t501)) + (((t515 * s477) - (t513 * s476)) * t502))
-            let !t516 = ((t485 * s478) - (t486 * s477))
-            wrU contacts ((30 * (truncate t479)) + 16) (t516 + (negate ((((t500 * t516) + (t501 * ((t486 * s476) - (t484 * s478)))) + (t502 * ((t484 * s477) - (t485 * s476)))) * t500)))
-            let !t517 = ((t486 * s476) - (t484 * s478))
-            wrU contacts ((30 * (truncate t479)) + 17) (t517 + (negate ((((t500 * t516) + (t501 * t517)) + (t502 * ((t484 * s477) - (t485 * s476)))) * t501)))
-            let !t518 = ((t484 * s477) - (t485 * s476))
-            wrU contacts ((30 * (truncate t479)) + 18) (t518 + (negate ((((t500 * t516) + (t501 * t517)) + (t502 * t518)) * t502)))
-            wrU contacts ((30 * (truncate t479)) + 19) (((((t513 * t518) - (t514 * t517)) * t500) + (((t514 * t516) - (t515 * t518)) * t501)) + (((t515 * t517) - (t513 * t516)) * t502))
+            t530 <- rdU scalars (-6)
+            t531 <- rdU scalars (-1)
+            t532 <- rdU scalars (-4)
+            t533 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t500)) + 8) (s497 + (negate ((((t521 * s497) + (t522 * s498)) + (t523 * s499)) * t521)))
+            wrU contacts ((30 * (truncate t500)) + 9) (s498 + (negate ((((t521 * s497) + (t522 * s498)) + (t523 * s499)) * t522)))
+            wrU contacts ((30 * (truncate t500)) + 10) (s499 + (negate ((((t521 * s497) + (t522 * s498)) + (t523 * s499)) * t523)))
+            let !t534 = (t489 + (negate t519))
+            let !t535 = (t490 + (negate t520))
+            let !t536 = (t488 + (negate t518))
+            wrU contacts ((30 * (truncate t500)) + 11) (((((t534 * s499) - (t535 * s498)) * t521) + (((t535 * s497) - (t536 * s499)) * t522)) + (((t536 * s498) - (t534 * s497)) * t523))
+            let !t537 = ((t506 * s499) - (t507 * s498))
+            wrU contacts ((30 * (truncate t500)) + 16) (t537 + (negate ((((t521 * t537) + (t522 * ((t507 * s497) - (t505 * s499)))) + (t523 * ((t505 * s498) - (t506 * s497)))) * t521)))
+            let !t538 = ((t507 * s497) - (t505 * s499))
+            wrU contacts ((30 * (truncate t500)) + 17) (t538 + (negate ((((t521 * t537) + (t522 * t538)) + (t523 * ((t505 * s498) - (t506 * s497)))) * t522)))
+            let !t539 = ((t505 * s498) - (t506 * s497))
+            wrU contacts ((30 * (truncate t500)) + 18) (t539 + (negate ((((t521 * t537) + (t522 * t538)) + (t523 * t539)) * t523)))
+            wrU contacts ((30 * (truncate t500)) + 19) (((((t534 * t539) - (t535 * t538)) * t521) + (((t535 * t537) - (t536 * t539)) * t522)) + (((t536 * t538) - (t534 * t537)) * t523))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t479)) + 8) 0.0
-            wrU contacts ((30 * (truncate t479)) + 9) 0.0
-            wrU contacts ((30 * (truncate t479)) + 10) 0.0
-            wrU contacts ((30 * (truncate t479)) + 11) 0.0
-            wrU contacts ((30 * (truncate t479)) + 16) 0.0
-            wrU contacts ((30 * (truncate t479)) + 17) 0.0
-            wrU contacts ((30 * (truncate t479)) + 18) 0.0
-            wrU contacts ((30 * (truncate t479)) + 19) 0.0
+            wrU contacts ((30 * (truncate t500)) + 8) 0.0
+            wrU contacts ((30 * (truncate t500)) + 9) 0.0
+            wrU contacts ((30 * (truncate t500)) + 10) 0.0
+            wrU contacts ((30 * (truncate t500)) + 11) 0.0
+            wrU contacts ((30 * (truncate t500)) + 16) 0.0
+            wrU contacts ((30 * (truncate t500)) + 17) 0.0
+            wrU contacts ((30 * (truncate t500)) + 18) 0.0
+            wrU contacts ((30 * (truncate t500)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t519 <- rdU meta 6
-          wrU meta 6 (t519 + 1.0)
+          t540 <- rdU meta 6
+          wrU meta 6 (t540 + 1.0)
           pure ()
         pure ()
       else do

@@ -69,7 +69,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -853,104 +853,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i387 -> do
         let !d387 = fromIntegral i387 :: Double
-        chkI radii ((24 * i29) + i387) 0 0
-        t388 <- rdU radii ((24 * i29) + i387)
-        loopI 6.0 12.0 $ \i389 -> do
-          let !d389 = fromIntegral i389 :: Double
-          let !t390 = (d387 + d389)
-          chkI radii (truncate ((24.0 * d29) + (t390 - (24.0 * (floorF (t390 / 24.0)))))) 0 0
-          t391 <- rdU radii (truncate ((24.0 * d29) + (t390 - (24.0 * (floorF (t390 / 24.0))))))
-          loopI 1.0 4.0 $ \i392 -> do
-            let !d392 = fromIntegral i392 :: Double
-            chkI verts ((291 * i29) + (12 * i387) + (3 * i392)) 0 5
-            t393 <- rdU verts ((291 * i29) + (12 * i387) + (3 * i392))
-            t394 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 1)
-            t395 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 2)
-            t396 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 3)
-            t397 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 4)
-            t398 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i392)) + 5)
-            loopI 1.0 4.0 $ \i399 -> do
-              let !d399 = fromIntegral i399 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0)))) 0 0
-              t400 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 1.0)) 0 0
-              t401 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 2.0)) 0 0
-              t402 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + (d399 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399))) 0 0
-              t403 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 1.0)) 0 0
-              t404 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 2.0)) 0 0
-              t405 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)) + d399)) + 2.0))
-              t406 <- rdU locals 4
-              let !t407 = (negate t400)
-              let !t408 = (t403 + t407)
-              let !t409 = (negate t401)
-              let !t410 = (t404 + t409)
-              let !t411 = (negate t402)
-              let !t412 = (t405 + t411)
-              let !t413 = (((t408 * t408) + (t410 * t410)) + (t412 * t412))
-              let !t414 = (t396 + (negate t393))
-              let !t415 = (t397 + (negate t394))
-              let !t416 = (t398 + (negate t395))
-              let !t417 = (((t414 * t408) + (t415 * t410)) + (t416 * t412))
-              let !t418 = (((t414 * t414) + (t415 * t415)) + (t416 * t416))
-              let !t419 = ((t418 * t413) - (t417 * t417))
-              let !t420 = (t393 + t407)
-              let !t421 = (t394 + t409)
-              let !t422 = (t395 + t411)
-              let !t423 = (((t408 * t420) + (t410 * t421)) + (t412 * t422))
-              let !t424 = (((t414 * t420) + (t415 * t421)) + (t416 * t422))
-              let !t425 = (if ((abs t419) - 1.0e-300) > 0 then (((t417 * t423) - (t424 * t413)) / t419) else 0.0)
-              let !t426 = (if (t425 - 1.0) > 0 then 1.0 else t425)
-              let !t427 = (if (t419 - ((1.0e-12 * t418) * t413)) > 0 then (if (negate t426) > 0 then 0.0 else t426) else 0.0)
-              let !t428 = (if ((abs t413) - 1.0e-300) > 0 then (((t417 * t427) + t423) / t413) else 0.0)
-              let !t429 = ((abs t418) - 1.0e-300)
-              let !t430 = (if t429 > 0 then ((negate t424) / t418) else 0.0)
-              let !t431 = (if (t430 - 1.0) > 0 then 1.0 else t430)
-              let !t432 = (t428 - 1.0)
-              let !t433 = (if t429 > 0 then ((t417 - t424) / t418) else 0.0)
-              let !t434 = (if (t433 - 1.0) > 0 then 1.0 else t433)
-              let !t435 = (if (negate t428) > 0 then (if (negate t431) > 0 then 0.0 else t431) else (if t432 > 0 then (if (negate t434) > 0 then 0.0 else t434) else t427))
-              let !t436 = (if t432 > 0 then 1.0 else t428)
-              let !t437 = (if (negate t436) > 0 then 0.0 else t436)
-              let !t438 = ((0.5 * ((t388 - ((t388 * (d392 + t435)) / 4.0)) + (t391 - ((t391 * (d399 + t437)) / 4.0)))) - t406)
-              let !t439 = ((t393 + (t435 * t414)) + (negate (t400 + (t437 * t408))))
-              let !t440 = ((t394 + (t435 * t415)) + (negate (t401 + (t437 * t410))))
-              let !t441 = ((t395 + (t435 * t416)) + (negate (t402 + (t437 * t412))))
-              let !t442 = ((0.3 * ((if (t391 - t388) > 0 then t388 else t391) / 4.0)) - (sqrt (((t439 * t439) + (t440 * t440)) + (t441 * t441))))
-              if (if (t438 - t442) > 0 then t442 else t438) > 0 then do
-                wrU locals 4 (0.5 * ((t388 - ((t388 * (d392 + t435)) / 4.0)) + (t391 - ((t391 * (d399 + t437)) / 4.0))))
-                chkI verts ((291 * i29) + (12 * i387)) 3 5
-                t443 <- rdU verts (((291 * i29) + (12 * i387)) + 3)
-                t444 <- rdU verts (((291 * i29) + (12 * i387)) + 4)
-                t445 <- rdU verts (((291 * i29) + (12 * i387)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0)))) 0 0
-                t446 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t447 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t448 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t390 - (24.0 * (floorF (t390 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t393 + (t435 * t414))
-                wrU locals 6 (t394 + (t435 * t415))
-                wrU locals 7 (t395 + (t435 * t416))
-                let !t449 = (negate t373)
-                let !t450 = (t443 + t449)
-                let !t451 = (negate t374)
-                let !t452 = (t444 + t451)
-                let !t453 = (negate t375)
-                let !t454 = (t445 + t453)
-                let !t455 = (sqrt (((t450 * t450) + (t452 * t452)) + (t454 * t454)))
-                let !t456 = (t446 + t449)
-                let !t457 = (t447 + t451)
-                let !t458 = (t448 + t453)
-                let !t459 = (sqrt (((t456 * t456) + (t457 * t457)) + (t458 * t458)))
-                wrU locals 8 (negate (((if t455 > 0 then (recip (if (t455 - 1.0e-300) > 0 then t455 else 1.0e-300)) else 0.0) * t450) + ((if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0) * t456)))
-                wrU locals 9 (negate (((if t455 > 0 then (recip (if (t455 - 1.0e-300) > 0 then t455 else 1.0e-300)) else 0.0) * t452) + ((if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0) * t457)))
-                wrU locals 10 (negate (((if t455 > 0 then (recip (if (t455 - 1.0e-300) > 0 then t455 else 1.0e-300)) else 0.0) * t454) + ((if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0) * t458)))
+        loopI 1.0 4.0 $ \i388 -> do
+          let !d388 = fromIntegral i388 :: Double
+          chkI verts ((291 * i29) + (12 * i387) + (3 * i388)) 0 5
+          t389 <- rdU verts ((291 * i29) + (12 * i387) + (3 * i388))
+          t390 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i388)) + 1)
+          t391 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i388)) + 2)
+          t392 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i388)) + 3)
+          t393 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i388)) + 4)
+          t394 <- rdU verts (((291 * i29) + (12 * i387) + (3 * i388)) + 5)
+          t395 <- rdU locals 11
+          let !t396 = (t392 + (negate t389))
+          let !t397 = (t393 + (negate t390))
+          let !t398 = (t394 + (negate t391))
+          let !t399 = (((t396 * t396) + (t397 * t397)) + (t398 * t398))
+          wrU locals 11 (if (t399 - t395) > 0 then t399 else t395)
+          pure ()
+        pure ()
+      t400 <- rdU locals 11
+      let !s401 = (sqrt t400)
+      loopI 0.0 24.0 $ \i402 -> do
+        let !d402 = fromIntegral i402 :: Double
+        chkI radii ((24 * i29) + i402) 0 0
+        t403 <- rdU radii ((24 * i29) + i402)
+        loopI 6.0 12.0 $ \i404 -> do
+          let !d404 = fromIntegral i404 :: Double
+          let !t405 = (d402 + d404)
+          chkI radii (truncate ((24.0 * d29) + (t405 - (24.0 * (floorF (t405 / 24.0)))))) 0 0
+          t406 <- rdU radii (truncate ((24.0 * d29) + (t405 - (24.0 * (floorF (t405 / 24.0))))))
+          let !s407 = ((if (t406 - t403) > 0 then t403 else t406) / 4.0)
+          let !t408 = ((0.3 * s407) + s401)
+          let !s409 = ((t408 * t408) * 1.000001)
+          loopI 1.0 4.0 $ \i410 -> do
+            let !d410 = fromIntegral i410 :: Double
+            chkI verts ((291 * i29) + (12 * i402) + (3 * i410)) 0 5
+            t411 <- rdU verts ((291 * i29) + (12 * i402) + (3 * i410))
+            t412 <- rdU verts (((291 * i29) + (12 * i402) + (3 * i410)) + 1)
+            t413 <- rdU verts (((291 * i29) + (12 * i402) + (3 * i410)) + 2)
+            t414 <- rdU verts (((291 * i29) + (12 * i402) + (3 * i410)) + 3)
+            t415 <- rdU verts (((291 * i29) + (12 * i402) + (3 * i410)) + 4)
+            t416 <- rdU verts (((291 * i29) + (12 * i402) + (3 * i410)) + 5)
+            loopI 1.0 4.0 $ \i417 -> do
+              let !d417 = fromIntegral i417 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + (d417 - 1.0)))) 0 0
+              t418 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + (d417 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + (d417 - 1.0))) + 1.0)) 0 0
+              t419 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + (d417 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + (d417 - 1.0))) + 2.0)) 0 0
+              t420 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + (d417 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + d417))) 0 0
+              t421 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + d417)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + d417)) + 1.0)) 0 0
+              t422 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + d417)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + d417)) + 2.0)) 0 0
+              t423 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)) + d417)) + 2.0))
+              let !t424 = (0.5 * ((t411 + t414) + (negate (t418 + t421))))
+              let !t425 = (0.5 * ((t412 + t415) + (negate (t419 + t422))))
+              let !t426 = (0.5 * ((t413 + t416) + (negate (t420 + t423))))
+              if (s409 - (((t424 * t424) + (t425 * t425)) + (t426 * t426))) > 0 then do
+                t427 <- rdU locals 4
+                let !t428 = (negate t418)
+                let !t429 = (t421 + t428)
+                let !t430 = (negate t419)
+                let !t431 = (t422 + t430)
+                let !t432 = (negate t420)
+                let !t433 = (t423 + t432)
+                let !t434 = (((t429 * t429) + (t431 * t431)) + (t433 * t433))
+                let !t435 = (t414 + (negate t411))
+                let !t436 = (t415 + (negate t412))
+                let !t437 = (t416 + (negate t413))
+                let !t438 = (((t435 * t429) + (t436 * t431)) + (t437 * t433))
+                let !t439 = (((t435 * t435) + (t436 * t436)) + (t437 * t437))
+                let !t440 = ((t439 * t434) - (t438 * t438))
+                let !t441 = (t411 + t428)
+                let !t442 = (t412 + t430)
+                let !t443 = (t413 + t432)
+                let !t444 = (((t429 * t441) + (t431 * t442)) + (t433 * t443))
+                let !t445 = (((t435 * t441) + (t436 * t442)) + (t437 * t443))
+                let !t446 = (if ((abs t440) - 1.0e-300) > 0 then (((t438 * t444) - (t445 * t434)) / t440) else 0.0)
+                let !t447 = (if (t446 - 1.0) > 0 then 1.0 else t446)
+                let !t448 = (if (t440 - ((1.0e-12 * t439) * t434)) > 0 then (if (negate t447) > 0 then 0.0 else t447) else 0.0)
+                let !t449 = (if ((abs t434) - 1.0e-300) > 0 then (((t438 * t448) + t444) / t434) else 0.0)
+                let !t450 = ((abs t439) - 1.0e-300)
+                let !t451 = (if t450 > 0 then ((negate t445) / t439) else 0.0)
+                let !t452 = (if (t451 - 1.0) > 0 then 1.0 else t451)
+                let !t453 = (t449 - 1.0)
+                let !t454 = (if t450 > 0 then ((t438 - t445) / t439) else 0.0)
+                let !t455 = (if (t454 - 1.0) > 0 then 1.0 else t454)
+                let !t456 = (if (negate t449) > 0 then (if (negate t452) > 0 then 0.0 else t452) else (if t453 > 0 then (if (negate t455) > 0 then 0.0 else t455) else t448))
+                let !t457 = (if t453 > 0 then 1.0 else t449)
+                let !t458 = (if (negate t457) > 0 then 0.0 else t457)
+                let !t459 = ((0.5 * ((t403 - ((t403 * (d410 + t456)) / 4.0)) + (t406 - ((t406 * (d417 + t458)) / 4.0)))) - t427)
+                let !t460 = ((t411 + (t456 * t435)) + (negate (t418 + (t458 * t429))))
+                let !t461 = ((t412 + (t456 * t436)) + (negate (t419 + (t458 * t431))))
+                let !t462 = ((t413 + (t456 * t437)) + (negate (t420 + (t458 * t433))))
+                let !t463 = ((0.3 * s407) - (sqrt (((t460 * t460) + (t461 * t461)) + (t462 * t462))))
+                if (if (t459 - t463) > 0 then t463 else t459) > 0 then do
+                  wrU locals 4 (0.5 * ((t403 - ((t403 * (d410 + t456)) / 4.0)) + (t406 - ((t406 * (d417 + t458)) / 4.0))))
+                  chkI verts ((291 * i29) + (12 * i402)) 3 5
+                  t464 <- rdU verts (((291 * i29) + (12 * i402)) + 3)
+                  t465 <- rdU verts (((291 * i29) + (12 * i402)) + 4)
+                  t466 <- rdU verts (((291 * i29) + (12 * i402)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0)))) 0 0
+                  t467 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t468 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t469 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t405 - (24.0 * (floorF (t405 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t411 + (t456 * t435))
+                  wrU locals 6 (t412 + (t456 * t436))
+                  wrU locals 7 (t413 + (t456 * t437))
+                  let !t470 = (negate t373)
+                  let !t471 = (t464 + t470)
+                  let !t472 = (negate t374)
+                  let !t473 = (t465 + t472)
+                  let !t474 = (negate t375)
+                  let !t475 = (t466 + t474)
+                  let !t476 = (sqrt (((t471 * t471) + (t473 * t473)) + (t475 * t475)))
+                  let !t477 = (t467 + t470)
+                  let !t478 = (t468 + t472)
+                  let !t479 = (t469 + t474)
+                  let !t480 = (sqrt (((t477 * t477) + (t478 * t478)) + (t479 * t479)))
+                  wrU locals 8 (negate (((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t471) + ((if t480 > 0 then (recip (if (t480 - 1.0e-300) > 0 then t480 else 1.0e-300)) else 0.0) * t477)))
+                  wrU locals 9 (negate (((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t473) + ((if t480 > 0 then (recip (if (t480 - 1.0e-300) > 0 then t480 else 1.0e-300)) else 0.0) * t478)))
+                  wrU locals 10 (negate (((if t476 > 0 then (recip (if (t476 - 1.0e-300) > 0 then t476 else 1.0e-300)) else 0.0) * t475) + ((if t480 > 0 then (recip (if (t480 - 1.0e-300) > 0 then t480 else 1.0e-300)) else 0.0) * t479)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -958,112 +990,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t460 <- rdU locals 4
-      if t460 > 0 then do
-        t461 <- rdU locals 5
-        t462 <- rdU locals 6
-        t463 <- rdU locals 7
-        t464 <- rdU locals 8
-        t465 <- rdU locals 9
-        t466 <- rdU locals 10
-        let !t467 = (t465 + (negate t465))
-        let !t468 = (sqrt (((t464 * t464) + (t467 * t467)) + (t466 * t466)))
-        let !t469 = (if t468 > 0 then (recip (if (t468 - 1.0e-300) > 0 then t468 else 1.0e-300)) else 0.0)
-        let !s470 = (t469 * t464)
-        let !s471 = (t469 * t467)
-        let !s472 = (t469 * t466)
-        t473 <- rdU meta 2
-        t474 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t474) > 0 then 1.0 else t474)) - t473) - 0.5) > 0 then do
-          wrU meta 2 (t473 + 1.0)
-          t475 <- rdU pos (3 * i29)
-          t476 <- rdU pos ((3 * i29) + 1)
-          t477 <- rdU pos ((3 * i29) + 2)
+      t481 <- rdU locals 4
+      if t481 > 0 then do
+        t482 <- rdU locals 5
+        t483 <- rdU locals 6
+        t484 <- rdU locals 7
+        t485 <- rdU locals 8
+        t486 <- rdU locals 9
+        t487 <- rdU locals 10
+        let !t488 = (t486 + (negate t486))
+        let !t489 = (sqrt (((t485 * t485) + (t488 * t488)) + (t487 * t487)))
+        let !t490 = (if t489 > 0 then (recip (if (t489 - 1.0e-300) > 0 then t489 else 1.0e-300)) else 0.0)
+        let !s491 = (t490 * t485)
+        let !s492 = (t490 * t488)
+        let !s493 = (t490 * t487)
+        t494 <- rdU meta 2
+        t495 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t495) > 0 then 1.0 else t495)) - t494) - 0.5) > 0 then do
+          wrU meta 2 (t494 + 1.0)
+          t496 <- rdU pos (3 * i29)
+          t497 <- rdU pos ((3 * i29) + 1)
+          t498 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t478 <- rdU normal (3 * i29)
-          t479 <- rdU normal ((3 * i29) + 1)
-          t480 <- rdU normal ((3 * i29) + 2)
+          t499 <- rdU normal (3 * i29)
+          t500 <- rdU normal ((3 * i29) + 1)
+          t501 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t481 <- rdU axis (3 * i29)
-          t482 <- rdU axis ((3 * i29) + 1)
-          t483 <- rdU axis ((3 * i29) + 2)
-          let !s484 = ((t479 * t483) - (t480 * t482))
-          let !s485 = ((t480 * t481) - (t478 * t483))
-          let !s486 = ((t478 * t482) - (t479 * t481))
+          t502 <- rdU axis (3 * i29)
+          t503 <- rdU axis ((3 * i29) + 1)
+          t504 <- rdU axis ((3 * i29) + 2)
+          let !s505 = ((t500 * t504) - (t501 * t503))
+          let !s506 = ((t501 * t502) - (t499 * t504))
+          let !s507 = ((t499 * t503) - (t500 * t502))
           chkI scalars (6 * i29) 0 0
-          t487 <- rdU scalars (6 * i29)
-          t488 <- rdU scalars ((6 * i29) + 5)
-          t489 <- rdU scalars ((6 * i29) + 2)
-          t490 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t473)) 0 29
-          wrU contacts (30 * (truncate t473)) d29
-          wrU contacts ((30 * (truncate t473)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t473)) + 2) d29
-          wrU contacts ((30 * (truncate t473)) + 3) 12.0
-          wrU contacts ((30 * (truncate t473)) + 4) (s470 + (negate ((((t478 * s470) + (t479 * s471)) + (t480 * s472)) * t478)))
-          wrU contacts ((30 * (truncate t473)) + 5) (s471 + (negate ((((t478 * s470) + (t479 * s471)) + (t480 * s472)) * t479)))
-          wrU contacts ((30 * (truncate t473)) + 6) (s472 + (negate ((((t478 * s470) + (t479 * s471)) + (t480 * s472)) * t480)))
-          wrU contacts ((30 * (truncate t473)) + 7) 0.0
-          wrU contacts ((30 * (truncate t473)) + 12) 0.0
-          wrU contacts ((30 * (truncate t473)) + 13) 0.0
-          wrU contacts ((30 * (truncate t473)) + 14) 0.0
-          wrU contacts ((30 * (truncate t473)) + 15) 0.0
-          wrU contacts ((30 * (truncate t473)) + 20) t460
-          wrU contacts ((30 * (truncate t473)) + 26) 0.6
-          wrU contacts ((30 * (truncate t473)) + 27) t461
-          wrU contacts ((30 * (truncate t473)) + 28) t462
-          wrU contacts ((30 * (truncate t473)) + 29) t463
+          t508 <- rdU scalars (6 * i29)
+          t509 <- rdU scalars ((6 * i29) + 5)
+          t510 <- rdU scalars ((6 * i29) + 2)
+          t511 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t494)) 0 29
+          wrU contacts (30 * (truncate t494)) d29
+          wrU contacts ((30 * (truncate t494)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t494)) + 2) d29
+          wrU contacts ((30 * (truncate t494)) + 3) 12.0
+          wrU contacts ((30 * (truncate t494)) + 4) (s491 + (negate ((((t499 * s491) + (t500 * s492)) + (t501 * s493)) * t499)))
+          wrU contacts ((30 * (truncate t494)) + 5) (s492 + (negate ((((t499 * s491) + (t500 * s492)) + (t501 * s493)) * t500)))
+          wrU contacts ((30 * (truncate t494)) + 6) (s493 + (negate ((((t499 * s491) + (t500 * s492)) + (t501 * s493)) * t501)))
+          wrU contacts ((30 * (truncate t494)) + 7) 0.0
+          wrU contacts ((30 * (truncate t494)) + 12) 0.0
+          wrU contacts ((30 * (truncate t494)) + 13) 0.0
+          wrU contacts ((30 * (truncate t494)) + 14) 0.0
+          wrU contacts ((30 * (truncate t494)) + 15) 0.0
+          wrU contacts ((30 * (truncate t494)) + 20) t481
+          wrU contacts ((30 * (truncate t494)) + 26) 0.6
+          wrU contacts ((30 * (truncate t494)) + 27) t482
+          wrU contacts ((30 * (truncate t494)) + 28) t483
+          wrU contacts ((30 * (truncate t494)) + 29) t484
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t491 <- rdU pos (-3)
-            t492 <- rdU pos (-2)
-            t493 <- rdU pos (-1)
+            t512 <- rdU pos (-3)
+            t513 <- rdU pos (-2)
+            t514 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t494 <- rdU normal (-3)
-            t495 <- rdU normal (-2)
-            t496 <- rdU normal (-1)
+            t515 <- rdU normal (-3)
+            t516 <- rdU normal (-2)
+            t517 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t497 <- rdU axis (-3)
-            t498 <- rdU axis (-2)
-            t499 <- rdU axis (-1)
-            let !s500 = ((t495 * t499) - (t496 * t498))
-            let !s501 = ((t496 * t497) - (t494 * t499))
-            let !s502 = ((t494 * t498) - (t495 * t497))
+            t518 <- rdU axis (-3)
+            t519 <- rdU axis (-2)
+            t520 <- rdU axis (-1)
+            let !s521 = ((t516 * t520) - (t517 * t519))
+            let !s522 = ((t517 * t518) - (t515 * t520))
+            let !s523 = ((t515 * t519) - (t516 * t518))
             chkI scalars 0 (-6) (-1)
-            t503 <- rdU scalars (-6)
-            t504 <- rdU scalars (-1)
-            t505 <- rdU scalars (-4)
-            t506 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t473)) + 8) (s470 + (negate ((((t494 * s470) + (t495 * s471)) + (t496 * s472)) * t494)))
-            wrU contacts ((30 * (truncate t473)) + 9) (s471 + (negate ((((t494 * s470) + (t495 * s471)) + (t496 * s472)) * t495)))
-            wrU contacts ((30 * (truncate t473)) + 10) (s472 + (negate ((((t494 * s470) + (t495 * s471)) + (t496 * s472)) * t496)))
-            let !t507 = (t462 + (negate t492))
-            let !t508 = (t463 + (negate t493))
-            let !t509 = (t461 + (negate t491))
-            wrU contacts ((30 * (truncate t473)) + 11) (((((t507 * s472) - (t508 * s471)) * t494) + (((t508 * s470) - (t509 * s472)) * t495)) + (((t509 * s471) - (t507 * s470)) * t496))
-            let !t510 = ((t479 * s472) - (t480 * s471))
-            wrU contacts ((30 * (truncate t473)) + 16) (t510 + (negate ((((t494 * t510) + (t495 * ((t480 * s470) - (t478 * s472)))) + (t496 * ((t478 * s471) - (t479 * s470)))) * t494)))
-            let !t511 = ((t480 * s470) - (t478 * s472))
-            wrU contacts ((30 * (truncate t473)) + 17) (t511 + (negate ((((t494 * t510) + (t495 * t511)) + (t496 * ((t478 * s471) - (t479 * s470)))) * t495)))
-            let !t512 = ((t478 * s471) - (t479 * s470))
-            wrU contacts ((30 * (truncate t473)) + 18) (t512 + (negate ((((t494 * t510) + (t495 * t511)) + (t496 * t512)) * t496)))
-            wrU contacts ((30 * (truncate t473)) + 19) (((((t507 * t512) - (t508 * t511)) * t494) + (((t508 * t510) - (t509 * t512)) * t495)) + (((t509 * t511) - (t507 * t510)) * t496))
+            t524 <- rdU scalars (-6)
+            t525 <- rdU scalars (-1)
+            t526 <- rdU scalars (-4)
+            t527 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t494)) + 8) (s491 + (negate ((((t515 * s491) + (t516 * s492)) + (t517 * s493)) * t515)))
+            wrU contacts ((30 * (truncate t494)) + 9) (s492 + (negate ((((t515 * s491) + (t516 * s492)) + (t517 * s493)) * t516)))
+            wrU contacts ((30 * (truncate t494)) + 10) (s493 + (negate ((((t515 * s491) + (t516 * s492)) + (t517 * s493)) * t517)))
+            let !t528 = (t483 + (negate t513))
+            let !t529 = (t484 + (negate t514))
+            let !t530 = (t482 + (negate t512))
+            wrU contacts ((30 * (truncate t494)) + 11) (((((t528 * s493) - (t529 * s492)) * t515) + (((t529 * s491) - (t530 * s493)) * t516)) + (((t530 * s492) - (t528 * s491)) * t517))
+            let !t531 = ((t500 * s493) - (t501 * s492))
+            wrU contacts ((30 * (truncate t494)) + 16) (t531 + (negate ((((t515 * t531) + (t516 * ((t501 * s491) - (t499 * s493)))) + (t517 * ((t499 * s492) - (t500 * s491)))) * t515)))
+            let !t532 = ((t501 * s491) - (t499 * s493))
+            wrU contacts ((30 * (truncate t494)) + 17) (t532 + (negate ((((t515 * t531) + (t516 * t532)) + (t517 * ((t499 * s492) - (t500 * s491)))) * t516)))
+            let !t533 = ((t499 * s492) - (t500 * s491))
+            wrU contacts ((30 * (truncate t494)) + 18) (t533 + (negate ((((t515 * t531) + (t516 * t532)) + (t517 * t533)) * t517)))
+            wrU contacts ((30 * (truncate t494)) + 19) (((((t528 * t533) - (t529 * t532)) * t515) + (((t529 * t531) - (t530 * t533)) * t516)) + (((t530 * t532) - (t528 * t531)) * t517))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t473)) + 8) 0.0
-            wrU contacts ((30 * (truncate t473)) + 9) 0.0
-            wrU contacts ((30 * (truncate t473)) + 10) 0.0
-            wrU contacts ((30 * (truncate t473)) + 11) 0.0
-            wrU contacts ((30 * (truncate t473)) + 16) 0.0
-            wrU contacts ((30 * (truncate t473)) + 17) 0.0
-            wrU contacts ((30 * (truncate t473)) + 18) 0.0
-            wrU contacts ((30 * (truncate t473)) + 19) 0.0
+            wrU contacts ((30 * (truncate t494)) + 8) 0.0
+            wrU contacts ((30 * (truncate t494)) + 9) 0.0
+            wrU contacts ((30 * (truncate t494)) + 10) 0.0
+            wrU contacts ((30 * (truncate t494)) + 11) 0.0
+            wrU contacts ((30 * (truncate t494)) + 16) 0.0
+            wrU contacts ((30 * (truncate t494)) + 17) 0.0
+            wrU contacts ((30 * (truncate t494)) + 18) 0.0
+            wrU contacts ((30 * (truncate t494)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t513 <- rdU meta 6
-          wrU meta 6 (t513 + 1.0)
+          t534 <- rdU meta 6
+          wrU meta 6 (t534 + 1.0)
           pure ()
         pure ()
       else do

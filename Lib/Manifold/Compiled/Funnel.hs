@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 16
+  chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -543,104 +543,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 14 0.0
       wrU locals 15 0.0
       wrU locals 16 0.0
+      wrU locals 17 0.0
       loopI 0.0 24.0 $ \i233 -> do
         let !d233 = fromIntegral i233 :: Double
-        chkI radii (i233 + (24 * i29)) 0 0
-        t234 <- rdU radii (i233 + (24 * i29))
-        loopI 6.0 12.0 $ \i235 -> do
-          let !d235 = fromIntegral i235 :: Double
-          let !t236 = (d233 + d235)
-          chkI radii (truncate ((24.0 * d29) + (t236 - (24.0 * (floorF (t236 / 24.0)))))) 0 0
-          t237 <- rdU radii (truncate ((24.0 * d29) + (t236 - (24.0 * (floorF (t236 / 24.0))))))
-          loopI 1.0 4.0 $ \i238 -> do
-            let !d238 = fromIntegral i238 :: Double
-            chkI verts ((12 * i233) + (3 * i238) + (291 * i29)) 0 5
-            t239 <- rdU verts ((12 * i233) + (3 * i238) + (291 * i29))
-            t240 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 1)
-            t241 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 2)
-            t242 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 3)
-            t243 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 4)
-            t244 <- rdU verts (((12 * i233) + (3 * i238) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i245 -> do
-              let !d245 = fromIntegral i245 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0)))) 0 0
-              t246 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 1.0)) 0 0
-              t247 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 2.0)) 0 0
-              t248 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + (d245 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245))) 0 0
-              t249 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 1.0)) 0 0
-              t250 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 2.0)) 0 0
-              t251 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)) + d245)) + 2.0))
-              t252 <- rdU locals 10
-              let !t253 = (negate t246)
-              let !t254 = (t249 + t253)
-              let !t255 = (negate t247)
-              let !t256 = (t250 + t255)
-              let !t257 = (negate t248)
-              let !t258 = (t251 + t257)
-              let !t259 = (((t254 * t254) + (t256 * t256)) + (t258 * t258))
-              let !t260 = (t242 + (negate t239))
-              let !t261 = (t243 + (negate t240))
-              let !t262 = (t244 + (negate t241))
-              let !t263 = (((t260 * t254) + (t261 * t256)) + (t262 * t258))
-              let !t264 = (((t260 * t260) + (t261 * t261)) + (t262 * t262))
-              let !t265 = ((t264 * t259) - (t263 * t263))
-              let !t266 = (t239 + t253)
-              let !t267 = (t240 + t255)
-              let !t268 = (t241 + t257)
-              let !t269 = (((t254 * t266) + (t256 * t267)) + (t258 * t268))
-              let !t270 = (((t260 * t266) + (t261 * t267)) + (t262 * t268))
-              let !t271 = (if ((abs t265) - 1.0e-300) > 0 then (((t263 * t269) - (t270 * t259)) / t265) else 0.0)
-              let !t272 = (if (t271 - 1.0) > 0 then 1.0 else t271)
-              let !t273 = (if (t265 - ((1.0e-12 * t264) * t259)) > 0 then (if (negate t272) > 0 then 0.0 else t272) else 0.0)
-              let !t274 = (if ((abs t259) - 1.0e-300) > 0 then (((t263 * t273) + t269) / t259) else 0.0)
-              let !t275 = ((abs t264) - 1.0e-300)
-              let !t276 = (if t275 > 0 then ((negate t270) / t264) else 0.0)
-              let !t277 = (if (t276 - 1.0) > 0 then 1.0 else t276)
-              let !t278 = (t274 - 1.0)
-              let !t279 = (if t275 > 0 then ((t263 - t270) / t264) else 0.0)
-              let !t280 = (if (t279 - 1.0) > 0 then 1.0 else t279)
-              let !t281 = (if (negate t274) > 0 then (if (negate t277) > 0 then 0.0 else t277) else (if t278 > 0 then (if (negate t280) > 0 then 0.0 else t280) else t273))
-              let !t282 = (if t278 > 0 then 1.0 else t274)
-              let !t283 = (if (negate t282) > 0 then 0.0 else t282)
-              let !t284 = ((0.5 * ((t234 - ((t234 * (d238 + t281)) / 4.0)) + (t237 - ((t237 * (d245 + t283)) / 4.0)))) - t252)
-              let !t285 = ((t239 + (t281 * t260)) + (negate (t246 + (t283 * t254))))
-              let !t286 = ((t240 + (t281 * t261)) + (negate (t247 + (t283 * t256))))
-              let !t287 = ((t241 + (t281 * t262)) + (negate (t248 + (t283 * t258))))
-              let !t288 = ((0.3 * ((if (t237 - t234) > 0 then t234 else t237) / 4.0)) - (sqrt (((t285 * t285) + (t286 * t286)) + (t287 * t287))))
-              if (if (t284 - t288) > 0 then t288 else t284) > 0 then do
-                wrU locals 10 (0.5 * ((t234 - ((t234 * (d238 + t281)) / 4.0)) + (t237 - ((t237 * (d245 + t283)) / 4.0))))
-                chkI verts ((12 * i233) + (291 * i29)) 3 5
-                t289 <- rdU verts (((12 * i233) + (291 * i29)) + 3)
-                t290 <- rdU verts (((12 * i233) + (291 * i29)) + 4)
-                t291 <- rdU verts (((12 * i233) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0)))) 0 0
-                t292 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t293 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t294 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t236 - (24.0 * (floorF (t236 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 11 (t239 + (t281 * t260))
-                wrU locals 12 (t240 + (t281 * t261))
-                wrU locals 13 (t241 + (t281 * t262))
-                let !t295 = (negate t219)
-                let !t296 = (t289 + t295)
-                let !t297 = (negate t220)
-                let !t298 = (t290 + t297)
-                let !t299 = (negate t221)
-                let !t300 = (t291 + t299)
-                let !t301 = (sqrt (((t296 * t296) + (t298 * t298)) + (t300 * t300)))
-                let !t302 = (t292 + t295)
-                let !t303 = (t293 + t297)
-                let !t304 = (t294 + t299)
-                let !t305 = (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304)))
-                wrU locals 14 (negate (((if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0) * t296) + ((if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0) * t302)))
-                wrU locals 15 (negate (((if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0) * t298) + ((if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0) * t303)))
-                wrU locals 16 (negate (((if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0) * t300) + ((if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0) * t304)))
+        loopI 1.0 4.0 $ \i234 -> do
+          let !d234 = fromIntegral i234 :: Double
+          chkI verts ((12 * i233) + (3 * i234) + (291 * i29)) 0 5
+          t235 <- rdU verts ((12 * i233) + (3 * i234) + (291 * i29))
+          t236 <- rdU verts (((12 * i233) + (3 * i234) + (291 * i29)) + 1)
+          t237 <- rdU verts (((12 * i233) + (3 * i234) + (291 * i29)) + 2)
+          t238 <- rdU verts (((12 * i233) + (3 * i234) + (291 * i29)) + 3)
+          t239 <- rdU verts (((12 * i233) + (3 * i234) + (291 * i29)) + 4)
+          t240 <- rdU verts (((12 * i233) + (3 * i234) + (291 * i29)) + 5)
+          t241 <- rdU locals 17
+          let !t242 = (t238 + (negate t235))
+          let !t243 = (t239 + (negate t236))
+          let !t244 = (t240 + (negate t237))
+          let !t245 = (((t242 * t242) + (t243 * t243)) + (t244 * t244))
+          wrU locals 17 (if (t245 - t241) > 0 then t245 else t241)
+          pure ()
+        pure ()
+      t246 <- rdU locals 17
+      let !s247 = (sqrt t246)
+      loopI 0.0 24.0 $ \i248 -> do
+        let !d248 = fromIntegral i248 :: Double
+        chkI radii (i248 + (24 * i29)) 0 0
+        t249 <- rdU radii (i248 + (24 * i29))
+        loopI 6.0 12.0 $ \i250 -> do
+          let !d250 = fromIntegral i250 :: Double
+          let !t251 = (d248 + d250)
+          chkI radii (truncate ((24.0 * d29) + (t251 - (24.0 * (floorF (t251 / 24.0)))))) 0 0
+          t252 <- rdU radii (truncate ((24.0 * d29) + (t251 - (24.0 * (floorF (t251 / 24.0))))))
+          let !s253 = ((if (t252 - t249) > 0 then t249 else t252) / 4.0)
+          let !t254 = ((0.3 * s253) + s247)
+          let !s255 = ((t254 * t254) * 1.000001)
+          loopI 1.0 4.0 $ \i256 -> do
+            let !d256 = fromIntegral i256 :: Double
+            chkI verts ((12 * i248) + (3 * i256) + (291 * i29)) 0 5
+            t257 <- rdU verts ((12 * i248) + (3 * i256) + (291 * i29))
+            t258 <- rdU verts (((12 * i248) + (3 * i256) + (291 * i29)) + 1)
+            t259 <- rdU verts (((12 * i248) + (3 * i256) + (291 * i29)) + 2)
+            t260 <- rdU verts (((12 * i248) + (3 * i256) + (291 * i29)) + 3)
+            t261 <- rdU verts (((12 * i248) + (3 * i256) + (291 * i29)) + 4)
+            t262 <- rdU verts (((12 * i248) + (3 * i256) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i263 -> do
+              let !d263 = fromIntegral i263 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + (d263 - 1.0)))) 0 0
+              t264 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + (d263 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + (d263 - 1.0))) + 1.0)) 0 0
+              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + (d263 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + (d263 - 1.0))) + 2.0)) 0 0
+              t266 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + (d263 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + d263))) 0 0
+              t267 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + d263)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + d263)) + 1.0)) 0 0
+              t268 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + d263)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + d263)) + 2.0)) 0 0
+              t269 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)) + d263)) + 2.0))
+              let !t270 = (0.5 * ((t257 + t260) + (negate (t264 + t267))))
+              let !t271 = (0.5 * ((t258 + t261) + (negate (t265 + t268))))
+              let !t272 = (0.5 * ((t259 + t262) + (negate (t266 + t269))))
+              if (s255 - (((t270 * t270) + (t271 * t271)) + (t272 * t272))) > 0 then do
+                t273 <- rdU locals 10
+                let !t274 = (negate t264)
+                let !t275 = (t267 + t274)
+                let !t276 = (negate t265)
+                let !t277 = (t268 + t276)
+                let !t278 = (negate t266)
+                let !t279 = (t269 + t278)
+                let !t280 = (((t275 * t275) + (t277 * t277)) + (t279 * t279))
+                let !t281 = (t260 + (negate t257))
+                let !t282 = (t261 + (negate t258))
+                let !t283 = (t262 + (negate t259))
+                let !t284 = (((t281 * t275) + (t282 * t277)) + (t283 * t279))
+                let !t285 = (((t281 * t281) + (t282 * t282)) + (t283 * t283))
+                let !t286 = ((t285 * t280) - (t284 * t284))
+                let !t287 = (t257 + t274)
+                let !t288 = (t258 + t276)
+                let !t289 = (t259 + t278)
+                let !t290 = (((t275 * t287) + (t277 * t288)) + (t279 * t289))
+                let !t291 = (((t281 * t287) + (t282 * t288)) + (t283 * t289))
+                let !t292 = (if ((abs t286) - 1.0e-300) > 0 then (((t284 * t290) - (t291 * t280)) / t286) else 0.0)
+                let !t293 = (if (t292 - 1.0) > 0 then 1.0 else t292)
+                let !t294 = (if (t286 - ((1.0e-12 * t285) * t280)) > 0 then (if (negate t293) > 0 then 0.0 else t293) else 0.0)
+                let !t295 = (if ((abs t280) - 1.0e-300) > 0 then (((t284 * t294) + t290) / t280) else 0.0)
+                let !t296 = ((abs t285) - 1.0e-300)
+                let !t297 = (if t296 > 0 then ((negate t291) / t285) else 0.0)
+                let !t298 = (if (t297 - 1.0) > 0 then 1.0 else t297)
+                let !t299 = (t295 - 1.0)
+                let !t300 = (if t296 > 0 then ((t284 - t291) / t285) else 0.0)
+                let !t301 = (if (t300 - 1.0) > 0 then 1.0 else t300)
+                let !t302 = (if (negate t295) > 0 then (if (negate t298) > 0 then 0.0 else t298) else (if t299 > 0 then (if (negate t301) > 0 then 0.0 else t301) else t294))
+                let !t303 = (if t299 > 0 then 1.0 else t295)
+                let !t304 = (if (negate t303) > 0 then 0.0 else t303)
+                let !t305 = ((0.5 * ((t249 - ((t249 * (d256 + t302)) / 4.0)) + (t252 - ((t252 * (d263 + t304)) / 4.0)))) - t273)
+                let !t306 = ((t257 + (t302 * t281)) + (negate (t264 + (t304 * t275))))
+                let !t307 = ((t258 + (t302 * t282)) + (negate (t265 + (t304 * t277))))
+                let !t308 = ((t259 + (t302 * t283)) + (negate (t266 + (t304 * t279))))
+                let !t309 = ((0.3 * s253) - (sqrt (((t306 * t306) + (t307 * t307)) + (t308 * t308))))
+                if (if (t305 - t309) > 0 then t309 else t305) > 0 then do
+                  wrU locals 10 (0.5 * ((t249 - ((t249 * (d256 + t302)) / 4.0)) + (t252 - ((t252 * (d263 + t304)) / 4.0))))
+                  chkI verts ((12 * i248) + (291 * i29)) 3 5
+                  t310 <- rdU verts (((12 * i248) + (291 * i29)) + 3)
+                  t311 <- rdU verts (((12 * i248) + (291 * i29)) + 4)
+                  t312 <- rdU verts (((12 * i248) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0)))) 0 0
+                  t313 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t314 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t315 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t251 - (24.0 * (floorF (t251 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 11 (t257 + (t302 * t281))
+                  wrU locals 12 (t258 + (t302 * t282))
+                  wrU locals 13 (t259 + (t302 * t283))
+                  let !t316 = (negate t219)
+                  let !t317 = (t310 + t316)
+                  let !t318 = (negate t220)
+                  let !t319 = (t311 + t318)
+                  let !t320 = (negate t221)
+                  let !t321 = (t312 + t320)
+                  let !t322 = (sqrt (((t317 * t317) + (t319 * t319)) + (t321 * t321)))
+                  let !t323 = (t313 + t316)
+                  let !t324 = (t314 + t318)
+                  let !t325 = (t315 + t320)
+                  let !t326 = (sqrt (((t323 * t323) + (t324 * t324)) + (t325 * t325)))
+                  wrU locals 14 (negate (((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t317) + ((if t326 > 0 then (recip (if (t326 - 1.0e-300) > 0 then t326 else 1.0e-300)) else 0.0) * t323)))
+                  wrU locals 15 (negate (((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t319) + ((if t326 > 0 then (recip (if (t326 - 1.0e-300) > 0 then t326 else 1.0e-300)) else 0.0) * t324)))
+                  wrU locals 16 (negate (((if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0) * t321) + ((if t326 > 0 then (recip (if (t326 - 1.0e-300) > 0 then t326 else 1.0e-300)) else 0.0) * t325)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -648,111 +680,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t306 <- rdU locals 10
-      if t306 > 0 then do
-        t307 <- rdU locals 11
-        t308 <- rdU locals 12
-        t309 <- rdU locals 13
-        t310 <- rdU locals 14
-        t311 <- rdU locals 15
-        t312 <- rdU locals 16
-        let !t313 = (t311 + (negate t311))
-        let !t314 = (sqrt (((t310 * t310) + (t313 * t313)) + (t312 * t312)))
-        let !t315 = (if t314 > 0 then (recip (if (t314 - 1.0e-300) > 0 then t314 else 1.0e-300)) else 0.0)
-        let !s316 = (t315 * t310)
-        let !s317 = (t315 * t313)
-        let !s318 = (t315 * t312)
-        t319 <- rdU meta 2
-        t320 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t320) > 0 then 1.0 else t320)) - t319) - 0.5) > 0 then do
-          wrU meta 2 (t319 + 1.0)
-          t321 <- rdU pos (3 * i29)
-          t322 <- rdU pos ((3 * i29) + 1)
-          t323 <- rdU pos ((3 * i29) + 2)
-          t324 <- rdU normal (3 * i29)
-          t325 <- rdU normal ((3 * i29) + 1)
-          t326 <- rdU normal ((3 * i29) + 2)
+      t327 <- rdU locals 10
+      if t327 > 0 then do
+        t328 <- rdU locals 11
+        t329 <- rdU locals 12
+        t330 <- rdU locals 13
+        t331 <- rdU locals 14
+        t332 <- rdU locals 15
+        t333 <- rdU locals 16
+        let !t334 = (t332 + (negate t332))
+        let !t335 = (sqrt (((t331 * t331) + (t334 * t334)) + (t333 * t333)))
+        let !t336 = (if t335 > 0 then (recip (if (t335 - 1.0e-300) > 0 then t335 else 1.0e-300)) else 0.0)
+        let !s337 = (t336 * t331)
+        let !s338 = (t336 * t334)
+        let !s339 = (t336 * t333)
+        t340 <- rdU meta 2
+        t341 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t341) > 0 then 1.0 else t341)) - t340) - 0.5) > 0 then do
+          wrU meta 2 (t340 + 1.0)
+          t342 <- rdU pos (3 * i29)
+          t343 <- rdU pos ((3 * i29) + 1)
+          t344 <- rdU pos ((3 * i29) + 2)
+          t345 <- rdU normal (3 * i29)
+          t346 <- rdU normal ((3 * i29) + 1)
+          t347 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t327 <- rdU axis (3 * i29)
-          t328 <- rdU axis ((3 * i29) + 1)
-          t329 <- rdU axis ((3 * i29) + 2)
-          let !s330 = ((t325 * t329) - (t326 * t328))
-          let !s331 = ((t326 * t327) - (t324 * t329))
-          let !s332 = ((t324 * t328) - (t325 * t327))
+          t348 <- rdU axis (3 * i29)
+          t349 <- rdU axis ((3 * i29) + 1)
+          t350 <- rdU axis ((3 * i29) + 2)
+          let !s351 = ((t346 * t350) - (t347 * t349))
+          let !s352 = ((t347 * t348) - (t345 * t350))
+          let !s353 = ((t345 * t349) - (t346 * t348))
           chkI scalars (6 * i29) 0 0
-          t333 <- rdU scalars (6 * i29)
-          t334 <- rdU scalars ((6 * i29) + 5)
-          t335 <- rdU scalars ((6 * i29) + 2)
-          t336 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t319)) 0 29
-          wrU contacts (30 * (truncate t319)) d29
-          wrU contacts ((30 * (truncate t319)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t319)) + 2) d29
-          wrU contacts ((30 * (truncate t319)) + 3) 12.0
-          wrU contacts ((30 * (truncate t319)) + 4) (s316 + (negate ((((t324 * s316) + (t325 * s317)) + (t326 * s318)) * t324)))
-          wrU contacts ((30 * (truncate t319)) + 5) (s317 + (negate ((((t324 * s316) + (t325 * s317)) + (t326 * s318)) * t325)))
-          wrU contacts ((30 * (truncate t319)) + 6) (s318 + (negate ((((t324 * s316) + (t325 * s317)) + (t326 * s318)) * t326)))
-          wrU contacts ((30 * (truncate t319)) + 7) 0.0
-          wrU contacts ((30 * (truncate t319)) + 12) 0.0
-          wrU contacts ((30 * (truncate t319)) + 13) 0.0
-          wrU contacts ((30 * (truncate t319)) + 14) 0.0
-          wrU contacts ((30 * (truncate t319)) + 15) 0.0
-          wrU contacts ((30 * (truncate t319)) + 20) t306
-          wrU contacts ((30 * (truncate t319)) + 26) 0.6
-          wrU contacts ((30 * (truncate t319)) + 27) t307
-          wrU contacts ((30 * (truncate t319)) + 28) t308
-          wrU contacts ((30 * (truncate t319)) + 29) t309
+          t354 <- rdU scalars (6 * i29)
+          t355 <- rdU scalars ((6 * i29) + 5)
+          t356 <- rdU scalars ((6 * i29) + 2)
+          t357 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t340)) 0 29
+          wrU contacts (30 * (truncate t340)) d29
+          wrU contacts ((30 * (truncate t340)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t340)) + 2) d29
+          wrU contacts ((30 * (truncate t340)) + 3) 12.0
+          wrU contacts ((30 * (truncate t340)) + 4) (s337 + (negate ((((t345 * s337) + (t346 * s338)) + (t347 * s339)) * t345)))
+          wrU contacts ((30 * (truncate t340)) + 5) (s338 + (negate ((((t345 * s337) + (t346 * s338)) + (t347 * s339)) * t346)))
+          wrU contacts ((30 * (truncate t340)) + 6) (s339 + (negate ((((t345 * s337) + (t346 * s338)) + (t347 * s339)) * t347)))
+          wrU contacts ((30 * (truncate t340)) + 7) 0.0
+          wrU contacts ((30 * (truncate t340)) + 12) 0.0
+          wrU contacts ((30 * (truncate t340)) + 13) 0.0
+          wrU contacts ((30 * (truncate t340)) + 14) 0.0
+          wrU contacts ((30 * (truncate t340)) + 15) 0.0
+          wrU contacts ((30 * (truncate t340)) + 20) t327
+          wrU contacts ((30 * (truncate t340)) + 26) 0.6
+          wrU contacts ((30 * (truncate t340)) + 27) t328
+          wrU contacts ((30 * (truncate t340)) + 28) t329
+          wrU contacts ((30 * (truncate t340)) + 29) t330
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t337 <- rdU pos (-3)
-            t338 <- rdU pos (-2)
-            t339 <- rdU pos (-1)
+            t358 <- rdU pos (-3)
+            t359 <- rdU pos (-2)
+            t360 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t340 <- rdU normal (-3)
-            t341 <- rdU normal (-2)
-            t342 <- rdU normal (-1)
+            t361 <- rdU normal (-3)
+            t362 <- rdU normal (-2)
+            t363 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t343 <- rdU axis (-3)
-            t344 <- rdU axis (-2)
-            t345 <- rdU axis (-1)
-            let !s346 = ((t341 * t345) - (t342 * t344))
-            let !s347 = ((t342 * t343) - (t340 * t345))
-            let !s348 = ((t340 * t344) - (t341 * t343))
+            t364 <- rdU axis (-3)
+            t365 <- rdU axis (-2)
+            t366 <- rdU axis (-1)
+            let !s367 = ((t362 * t366) - (t363 * t365))
+            let !s368 = ((t363 * t364) - (t361 * t366))
+            let !s369 = ((t361 * t365) - (t362 * t364))
             chkI scalars 0 (-6) (-1)
-            t349 <- rdU scalars (-6)
-            t350 <- rdU scalars (-1)
-            t351 <- rdU scalars (-4)
-            t352 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t319)) + 8) (s316 + (negate ((((t340 * s316) + (t341 * s317)) + (t342 * s318)) * t340)))
-            wrU contacts ((30 * (truncate t319)) + 9) (s317 + (negate ((((t340 * s316) + (t341 * s317)) + (t342 * s318)) * t341)))
-            wrU contacts ((30 * (truncate t319)) + 10) (s318 + (negate ((((t340 * s316) + (t341 * s317)) + (t342 * s318)) * t342)))
-            let !t353 = (t308 + (negate t338))
-            let !t354 = (t309 + (negate t339))
-            let !t355 = (t307 + (negate t337))
-            wrU contacts ((30 * (truncate t319)) + 11) (((((t353 * s318) - (t354 * s317)) * t340) + (((t354 * s316) - (t355 * s318)) * t341)) + (((t355 * s317) - (t353 * s316)) * t342))
-            let !t356 = ((t325 * s318) - (t326 * s317))
-            wrU contacts ((30 * (truncate t319)) + 16) (t356 + (negate ((((t340 * t356) + (t341 * ((t326 * s316) - (t324 * s318)))) + (t342 * ((t324 * s317) - (t325 * s316)))) * t340)))
-            let !t357 = ((t326 * s316) - (t324 * s318))
-            wrU contacts ((30 * (truncate t319)) + 17) (t357 + (negate ((((t340 * t356) + (t341 * t357)) + (t342 * ((t324 * s317) - (t325 * s316)))) * t341)))
-            let !t358 = ((t324 * s317) - (t325 * s316))
-            wrU contacts ((30 * (truncate t319)) + 18) (t358 + (negate ((((t340 * t356) + (t341 * t357)) + (t342 * t358)) * t342)))
-            wrU contacts ((30 * (truncate t319)) + 19) (((((t353 * t358) - (t354 * t357)) * t340) + (((t354 * t356) - (t355 * t358)) * t341)) + (((t355 * t357) - (t353 * t356)) * t342))
+            t370 <- rdU scalars (-6)
+            t371 <- rdU scalars (-1)
+            t372 <- rdU scalars (-4)
+            t373 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t340)) + 8) (s337 + (negate ((((t361 * s337) + (t362 * s338)) + (t363 * s339)) * t361)))
+            wrU contacts ((30 * (truncate t340)) + 9) (s338 + (negate ((((t361 * s337) + (t362 * s338)) + (t363 * s339)) * t362)))
+            wrU contacts ((30 * (truncate t340)) + 10) (s339 + (negate ((((t361 * s337) + (t362 * s338)) + (t363 * s339)) * t363)))
+            let !t374 = (t329 + (negate t359))
+            let !t375 = (t330 + (negate t360))
+            let !t376 = (t328 + (negate t358))
+            wrU contacts ((30 * (truncate t340)) + 11) (((((t374 * s339) - (t375 * s338)) * t361) + (((t375 * s337) - (t376 * s339)) * t362)) + (((t376 * s338) - (t374 * s337)) * t363))
+            let !t377 = ((t346 * s339) - (t347 * s338))
+            wrU contacts ((30 * (truncate t340)) + 16) (t377 + (negate ((((t361 * t377) + (t362 * ((t347 * s337) - (t345 * s339)))) + (t363 * ((t345 * s338) - (t346 * s337)))) * t361)))
+            let !t378 = ((t347 * s337) - (t345 * s339))
+            wrU contacts ((30 * (truncate t340)) + 17) (t378 + (negate ((((t361 * t377) + (t362 * t378)) + (t363 * ((t345 * s338) - (t346 * s337)))) * t362)))
+            let !t379 = ((t345 * s338) - (t346 * s337))
+            wrU contacts ((30 * (truncate t340)) + 18) (t379 + (negate ((((t361 * t377) + (t362 * t378)) + (t363 * t379)) * t363)))
+            wrU contacts ((30 * (truncate t340)) + 19) (((((t374 * t379) - (t375 * t378)) * t361) + (((t375 * t377) - (t376 * t379)) * t362)) + (((t376 * t378) - (t374 * t377)) * t363))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t319)) + 8) 0.0
-            wrU contacts ((30 * (truncate t319)) + 9) 0.0
-            wrU contacts ((30 * (truncate t319)) + 10) 0.0
-            wrU contacts ((30 * (truncate t319)) + 11) 0.0
-            wrU contacts ((30 * (truncate t319)) + 16) 0.0
-            wrU contacts ((30 * (truncate t319)) + 17) 0.0
-            wrU contacts ((30 * (truncate t319)) + 18) 0.0
-            wrU contacts ((30 * (truncate t319)) + 19) 0.0
+            wrU contacts ((30 * (truncate t340)) + 8) 0.0
+            wrU contacts ((30 * (truncate t340)) + 9) 0.0
+            wrU contacts ((30 * (truncate t340)) + 10) 0.0
+            wrU contacts ((30 * (truncate t340)) + 11) 0.0
+            wrU contacts ((30 * (truncate t340)) + 16) 0.0
+            wrU contacts ((30 * (truncate t340)) + 17) 0.0
+            wrU contacts ((30 * (truncate t340)) + 18) 0.0
+            wrU contacts ((30 * (truncate t340)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t359 <- rdU meta 6
-          wrU meta 6 (t359 + 1.0)
+          t380 <- rdU meta 6
+          wrU meta 6 (t380 + 1.0)
           pure ()
         pure ()
       else do

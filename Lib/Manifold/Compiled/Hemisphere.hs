@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 16
+  chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -501,104 +501,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 14 0.0
       wrU locals 15 0.0
       wrU locals 16 0.0
+      wrU locals 17 0.0
       loopI 0.0 24.0 $ \i191 -> do
         let !d191 = fromIntegral i191 :: Double
-        chkI radii (i191 + (24 * i29)) 0 0
-        t192 <- rdU radii (i191 + (24 * i29))
-        loopI 6.0 12.0 $ \i193 -> do
-          let !d193 = fromIntegral i193 :: Double
-          let !t194 = (d191 + d193)
-          chkI radii (truncate ((24.0 * d29) + (t194 - (24.0 * (floorF (t194 / 24.0)))))) 0 0
-          t195 <- rdU radii (truncate ((24.0 * d29) + (t194 - (24.0 * (floorF (t194 / 24.0))))))
-          loopI 1.0 4.0 $ \i196 -> do
-            let !d196 = fromIntegral i196 :: Double
-            chkI verts ((12 * i191) + (3 * i196) + (291 * i29)) 0 5
-            t197 <- rdU verts ((12 * i191) + (3 * i196) + (291 * i29))
-            t198 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 1)
-            t199 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 2)
-            t200 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 3)
-            t201 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 4)
-            t202 <- rdU verts (((12 * i191) + (3 * i196) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i203 -> do
-              let !d203 = fromIntegral i203 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0)))) 0 0
-              t204 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 1.0)) 0 0
-              t205 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 2.0)) 0 0
-              t206 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + (d203 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203))) 0 0
-              t207 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 1.0)) 0 0
-              t208 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 2.0)) 0 0
-              t209 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)) + d203)) + 2.0))
-              t210 <- rdU locals 10
-              let !t211 = (negate t204)
-              let !t212 = (t207 + t211)
-              let !t213 = (negate t205)
-              let !t214 = (t208 + t213)
-              let !t215 = (negate t206)
-              let !t216 = (t209 + t215)
-              let !t217 = (((t212 * t212) + (t214 * t214)) + (t216 * t216))
-              let !t218 = (t200 + (negate t197))
-              let !t219 = (t201 + (negate t198))
-              let !t220 = (t202 + (negate t199))
-              let !t221 = (((t218 * t212) + (t219 * t214)) + (t220 * t216))
-              let !t222 = (((t218 * t218) + (t219 * t219)) + (t220 * t220))
-              let !t223 = ((t222 * t217) - (t221 * t221))
-              let !t224 = (t197 + t211)
-              let !t225 = (t198 + t213)
-              let !t226 = (t199 + t215)
-              let !t227 = (((t212 * t224) + (t214 * t225)) + (t216 * t226))
-              let !t228 = (((t218 * t224) + (t219 * t225)) + (t220 * t226))
-              let !t229 = (if ((abs t223) - 1.0e-300) > 0 then (((t221 * t227) - (t228 * t217)) / t223) else 0.0)
-              let !t230 = (if (t229 - 1.0) > 0 then 1.0 else t229)
-              let !t231 = (if (t223 - ((1.0e-12 * t222) * t217)) > 0 then (if (negate t230) > 0 then 0.0 else t230) else 0.0)
-              let !t232 = (if ((abs t217) - 1.0e-300) > 0 then (((t221 * t231) + t227) / t217) else 0.0)
-              let !t233 = ((abs t222) - 1.0e-300)
-              let !t234 = (if t233 > 0 then ((negate t228) / t222) else 0.0)
-              let !t235 = (if (t234 - 1.0) > 0 then 1.0 else t234)
-              let !t236 = (t232 - 1.0)
-              let !t237 = (if t233 > 0 then ((t221 - t228) / t222) else 0.0)
-              let !t238 = (if (t237 - 1.0) > 0 then 1.0 else t237)
-              let !t239 = (if (negate t232) > 0 then (if (negate t235) > 0 then 0.0 else t235) else (if t236 > 0 then (if (negate t238) > 0 then 0.0 else t238) else t231))
-              let !t240 = (if t236 > 0 then 1.0 else t232)
-              let !t241 = (if (negate t240) > 0 then 0.0 else t240)
-              let !t242 = ((0.5 * ((t192 - ((t192 * (d196 + t239)) / 4.0)) + (t195 - ((t195 * (d203 + t241)) / 4.0)))) - t210)
-              let !t243 = ((t197 + (t239 * t218)) + (negate (t204 + (t241 * t212))))
-              let !t244 = ((t198 + (t239 * t219)) + (negate (t205 + (t241 * t214))))
-              let !t245 = ((t199 + (t239 * t220)) + (negate (t206 + (t241 * t216))))
-              let !t246 = ((0.3 * ((if (t195 - t192) > 0 then t192 else t195) / 4.0)) - (sqrt (((t243 * t243) + (t244 * t244)) + (t245 * t245))))
-              if (if (t242 - t246) > 0 then t246 else t242) > 0 then do
-                wrU locals 10 (0.5 * ((t192 - ((t192 * (d196 + t239)) / 4.0)) + (t195 - ((t195 * (d203 + t241)) / 4.0))))
-                chkI verts ((12 * i191) + (291 * i29)) 3 5
-                t247 <- rdU verts (((12 * i191) + (291 * i29)) + 3)
-                t248 <- rdU verts (((12 * i191) + (291 * i29)) + 4)
-                t249 <- rdU verts (((12 * i191) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0)))) 0 0
-                t250 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t251 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t252 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t194 - (24.0 * (floorF (t194 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 11 (t197 + (t239 * t218))
-                wrU locals 12 (t198 + (t239 * t219))
-                wrU locals 13 (t199 + (t239 * t220))
-                let !t253 = (negate t177)
-                let !t254 = (t247 + t253)
-                let !t255 = (negate t178)
-                let !t256 = (t248 + t255)
-                let !t257 = (negate t179)
-                let !t258 = (t249 + t257)
-                let !t259 = (sqrt (((t254 * t254) + (t256 * t256)) + (t258 * t258)))
-                let !t260 = (t250 + t253)
-                let !t261 = (t251 + t255)
-                let !t262 = (t252 + t257)
-                let !t263 = (sqrt (((t260 * t260) + (t261 * t261)) + (t262 * t262)))
-                wrU locals 14 (negate (((if t259 > 0 then (recip (if (t259 - 1.0e-300) > 0 then t259 else 1.0e-300)) else 0.0) * t254) + ((if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0) * t260)))
-                wrU locals 15 (negate (((if t259 > 0 then (recip (if (t259 - 1.0e-300) > 0 then t259 else 1.0e-300)) else 0.0) * t256) + ((if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0) * t261)))
-                wrU locals 16 (negate (((if t259 > 0 then (recip (if (t259 - 1.0e-300) > 0 then t259 else 1.0e-300)) else 0.0) * t258) + ((if t263 > 0 then (recip (if (t263 - 1.0e-300) > 0 then t263 else 1.0e-300)) else 0.0) * t262)))
+        loopI 1.0 4.0 $ \i192 -> do
+          let !d192 = fromIntegral i192 :: Double
+          chkI verts ((12 * i191) + (3 * i192) + (291 * i29)) 0 5
+          t193 <- rdU verts ((12 * i191) + (3 * i192) + (291 * i29))
+          t194 <- rdU verts (((12 * i191) + (3 * i192) + (291 * i29)) + 1)
+          t195 <- rdU verts (((12 * i191) + (3 * i192) + (291 * i29)) + 2)
+          t196 <- rdU verts (((12 * i191) + (3 * i192) + (291 * i29)) + 3)
+          t197 <- rdU verts (((12 * i191) + (3 * i192) + (291 * i29)) + 4)
+          t198 <- rdU verts (((12 * i191) + (3 * i192) + (291 * i29)) + 5)
+          t199 <- rdU locals 17
+          let !t200 = (t196 + (negate t193))
+          let !t201 = (t197 + (negate t194))
+          let !t202 = (t198 + (negate t195))
+          let !t203 = (((t200 * t200) + (t201 * t201)) + (t202 * t202))
+          wrU locals 17 (if (t203 - t199) > 0 then t203 else t199)
+          pure ()
+        pure ()
+      t204 <- rdU locals 17
+      let !s205 = (sqrt t204)
+      loopI 0.0 24.0 $ \i206 -> do
+        let !d206 = fromIntegral i206 :: Double
+        chkI radii (i206 + (24 * i29)) 0 0
+        t207 <- rdU radii (i206 + (24 * i29))
+        loopI 6.0 12.0 $ \i208 -> do
+          let !d208 = fromIntegral i208 :: Double
+          let !t209 = (d206 + d208)
+          chkI radii (truncate ((24.0 * d29) + (t209 - (24.0 * (floorF (t209 / 24.0)))))) 0 0
+          t210 <- rdU radii (truncate ((24.0 * d29) + (t209 - (24.0 * (floorF (t209 / 24.0))))))
+          let !s211 = ((if (t210 - t207) > 0 then t207 else t210) / 4.0)
+          let !t212 = ((0.3 * s211) + s205)
+          let !s213 = ((t212 * t212) * 1.000001)
+          loopI 1.0 4.0 $ \i214 -> do
+            let !d214 = fromIntegral i214 :: Double
+            chkI verts ((12 * i206) + (3 * i214) + (291 * i29)) 0 5
+            t215 <- rdU verts ((12 * i206) + (3 * i214) + (291 * i29))
+            t216 <- rdU verts (((12 * i206) + (3 * i214) + (291 * i29)) + 1)
+            t217 <- rdU verts (((12 * i206) + (3 * i214) + (291 * i29)) + 2)
+            t218 <- rdU verts (((12 * i206) + (3 * i214) + (291 * i29)) + 3)
+            t219 <- rdU verts (((12 * i206) + (3 * i214) + (291 * i29)) + 4)
+            t220 <- rdU verts (((12 * i206) + (3 * i214) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i221 -> do
+              let !d221 = fromIntegral i221 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + (d221 - 1.0)))) 0 0
+              t222 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + (d221 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + (d221 - 1.0))) + 1.0)) 0 0
+              t223 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + (d221 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + (d221 - 1.0))) + 2.0)) 0 0
+              t224 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + (d221 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + d221))) 0 0
+              t225 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + d221)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + d221)) + 1.0)) 0 0
+              t226 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + d221)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + d221)) + 2.0)) 0 0
+              t227 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)) + d221)) + 2.0))
+              let !t228 = (0.5 * ((t215 + t218) + (negate (t222 + t225))))
+              let !t229 = (0.5 * ((t216 + t219) + (negate (t223 + t226))))
+              let !t230 = (0.5 * ((t217 + t220) + (negate (t224 + t227))))
+              if (s213 - (((t228 * t228) + (t229 * t229)) + (t230 * t230))) > 0 then do
+                t231 <- rdU locals 10
+                let !t232 = (negate t222)
+                let !t233 = (t225 + t232)
+                let !t234 = (negate t223)
+                let !t235 = (t226 + t234)
+                let !t236 = (negate t224)
+                let !t237 = (t227 + t236)
+                let !t238 = (((t233 * t233) + (t235 * t235)) + (t237 * t237))
+                let !t239 = (t218 + (negate t215))
+                let !t240 = (t219 + (negate t216))
+                let !t241 = (t220 + (negate t217))
+                let !t242 = (((t239 * t233) + (t240 * t235)) + (t241 * t237))
+                let !t243 = (((t239 * t239) + (t240 * t240)) + (t241 * t241))
+                let !t244 = ((t243 * t238) - (t242 * t242))
+                let !t245 = (t215 + t232)
+                let !t246 = (t216 + t234)
+                let !t247 = (t217 + t236)
+                let !t248 = (((t233 * t245) + (t235 * t246)) + (t237 * t247))
+                let !t249 = (((t239 * t245) + (t240 * t246)) + (t241 * t247))
+                let !t250 = (if ((abs t244) - 1.0e-300) > 0 then (((t242 * t248) - (t249 * t238)) / t244) else 0.0)
+                let !t251 = (if (t250 - 1.0) > 0 then 1.0 else t250)
+                let !t252 = (if (t244 - ((1.0e-12 * t243) * t238)) > 0 then (if (negate t251) > 0 then 0.0 else t251) else 0.0)
+                let !t253 = (if ((abs t238) - 1.0e-300) > 0 then (((t242 * t252) + t248) / t238) else 0.0)
+                let !t254 = ((abs t243) - 1.0e-300)
+                let !t255 = (if t254 > 0 then ((negate t249) / t243) else 0.0)
+                let !t256 = (if (t255 - 1.0) > 0 then 1.0 else t255)
+                let !t257 = (t253 - 1.0)
+                let !t258 = (if t254 > 0 then ((t242 - t249) / t243) else 0.0)
+                let !t259 = (if (t258 - 1.0) > 0 then 1.0 else t258)
+                let !t260 = (if (negate t253) > 0 then (if (negate t256) > 0 then 0.0 else t256) else (if t257 > 0 then (if (negate t259) > 0 then 0.0 else t259) else t252))
+                let !t261 = (if t257 > 0 then 1.0 else t253)
+                let !t262 = (if (negate t261) > 0 then 0.0 else t261)
+                let !t263 = ((0.5 * ((t207 - ((t207 * (d214 + t260)) / 4.0)) + (t210 - ((t210 * (d221 + t262)) / 4.0)))) - t231)
+                let !t264 = ((t215 + (t260 * t239)) + (negate (t222 + (t262 * t233))))
+                let !t265 = ((t216 + (t260 * t240)) + (negate (t223 + (t262 * t235))))
+                let !t266 = ((t217 + (t260 * t241)) + (negate (t224 + (t262 * t237))))
+                let !t267 = ((0.3 * s211) - (sqrt (((t264 * t264) + (t265 * t265)) + (t266 * t266))))
+                if (if (t263 - t267) > 0 then t267 else t263) > 0 then do
+                  wrU locals 10 (0.5 * ((t207 - ((t207 * (d214 + t260)) / 4.0)) + (t210 - ((t210 * (d221 + t262)) / 4.0))))
+                  chkI verts ((12 * i206) + (291 * i29)) 3 5
+                  t268 <- rdU verts (((12 * i206) + (291 * i29)) + 3)
+                  t269 <- rdU verts (((12 * i206) + (291 * i29)) + 4)
+                  t270 <- rdU verts (((12 * i206) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0)))) 0 0
+                  t271 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t272 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t273 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t209 - (24.0 * (floorF (t209 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 11 (t215 + (t260 * t239))
+                  wrU locals 12 (t216 + (t260 * t240))
+                  wrU locals 13 (t217 + (t260 * t241))
+                  let !t274 = (negate t177)
+                  let !t275 = (t268 + t274)
+                  let !t276 = (negate t178)
+                  let !t277 = (t269 + t276)
+                  let !t278 = (negate t179)
+                  let !t279 = (t270 + t278)
+                  let !t280 = (sqrt (((t275 * t275) + (t277 * t277)) + (t279 * t279)))
+                  let !t281 = (t271 + t274)
+                  let !t282 = (t272 + t276)
+                  let !t283 = (t273 + t278)
+                  let !t284 = (sqrt (((t281 * t281) + (t282 * t282)) + (t283 * t283)))
+                  wrU locals 14 (negate (((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t275) + ((if t284 > 0 then (recip (if (t284 - 1.0e-300) > 0 then t284 else 1.0e-300)) else 0.0) * t281)))
+                  wrU locals 15 (negate (((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t277) + ((if t284 > 0 then (recip (if (t284 - 1.0e-300) > 0 then t284 else 1.0e-300)) else 0.0) * t282)))
+                  wrU locals 16 (negate (((if t280 > 0 then (recip (if (t280 - 1.0e-300) > 0 then t280 else 1.0e-300)) else 0.0) * t279) + ((if t284 > 0 then (recip (if (t284 - 1.0e-300) > 0 then t284 else 1.0e-300)) else 0.0) * t283)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -606,123 +638,123 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t264 <- rdU locals 10
-      if t264 > 0 then do
-        t265 <- rdU locals 11
-        t266 <- rdU locals 12
-        t267 <- rdU locals 13
-        t268 <- rdU locals 14
-        t269 <- rdU locals 15
-        t270 <- rdU locals 16
-        let !t271 = (recip (2.0 * (sqrt (((t265 * t265) + (t266 * t266)) + (t267 * t267)))))
-        let !t272 = (t271 * (t265 + t265))
-        let !t273 = (t271 * (t266 + t266))
-        let !t274 = (t271 * (t267 + t267))
-        let !t275 = (sqrt (((t272 * t272) + (t273 * t273)) + (t274 * t274)))
-        let !t276 = (if t275 > 0 then (recip (if (t275 - 1.0e-300) > 0 then t275 else 1.0e-300)) else 0.0)
-        let !s277 = (t276 * t272)
-        let !s278 = (t276 * t273)
-        let !s279 = (t276 * t274)
-        let !t280 = (((s277 * t268) + (s278 * t269)) + (s279 * t270))
-        let !t281 = (t268 + (negate (t280 * s277)))
-        let !t282 = (t269 + (negate (t280 * s278)))
-        let !t283 = (t270 + (negate (t280 * s279)))
-        let !t284 = (sqrt (((t281 * t281) + (t282 * t282)) + (t283 * t283)))
-        let !t285 = (if t284 > 0 then (recip (if (t284 - 1.0e-300) > 0 then t284 else 1.0e-300)) else 0.0)
-        let !s286 = (t285 * t281)
-        let !s287 = (t285 * t282)
-        let !s288 = (t285 * t283)
-        t289 <- rdU meta 2
-        t290 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t290) > 0 then 1.0 else t290)) - t289) - 0.5) > 0 then do
-          wrU meta 2 (t289 + 1.0)
-          t291 <- rdU pos (3 * i29)
-          t292 <- rdU pos ((3 * i29) + 1)
-          t293 <- rdU pos ((3 * i29) + 2)
-          t294 <- rdU normal (3 * i29)
-          t295 <- rdU normal ((3 * i29) + 1)
-          t296 <- rdU normal ((3 * i29) + 2)
+      t285 <- rdU locals 10
+      if t285 > 0 then do
+        t286 <- rdU locals 11
+        t287 <- rdU locals 12
+        t288 <- rdU locals 13
+        t289 <- rdU locals 14
+        t290 <- rdU locals 15
+        t291 <- rdU locals 16
+        let !t292 = (recip (2.0 * (sqrt (((t286 * t286) + (t287 * t287)) + (t288 * t288)))))
+        let !t293 = (t292 * (t286 + t286))
+        let !t294 = (t292 * (t287 + t287))
+        let !t295 = (t292 * (t288 + t288))
+        let !t296 = (sqrt (((t293 * t293) + (t294 * t294)) + (t295 * t295)))
+        let !t297 = (if t296 > 0 then (recip (if (t296 - 1.0e-300) > 0 then t296 else 1.0e-300)) else 0.0)
+        let !s298 = (t297 * t293)
+        let !s299 = (t297 * t294)
+        let !s300 = (t297 * t295)
+        let !t301 = (((s298 * t289) + (s299 * t290)) + (s300 * t291))
+        let !t302 = (t289 + (negate (t301 * s298)))
+        let !t303 = (t290 + (negate (t301 * s299)))
+        let !t304 = (t291 + (negate (t301 * s300)))
+        let !t305 = (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304)))
+        let !t306 = (if t305 > 0 then (recip (if (t305 - 1.0e-300) > 0 then t305 else 1.0e-300)) else 0.0)
+        let !s307 = (t306 * t302)
+        let !s308 = (t306 * t303)
+        let !s309 = (t306 * t304)
+        t310 <- rdU meta 2
+        t311 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t311) > 0 then 1.0 else t311)) - t310) - 0.5) > 0 then do
+          wrU meta 2 (t310 + 1.0)
+          t312 <- rdU pos (3 * i29)
+          t313 <- rdU pos ((3 * i29) + 1)
+          t314 <- rdU pos ((3 * i29) + 2)
+          t315 <- rdU normal (3 * i29)
+          t316 <- rdU normal ((3 * i29) + 1)
+          t317 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t297 <- rdU axis (3 * i29)
-          t298 <- rdU axis ((3 * i29) + 1)
-          t299 <- rdU axis ((3 * i29) + 2)
-          let !s300 = ((t295 * t299) - (t296 * t298))
-          let !s301 = ((t296 * t297) - (t294 * t299))
-          let !s302 = ((t294 * t298) - (t295 * t297))
+          t318 <- rdU axis (3 * i29)
+          t319 <- rdU axis ((3 * i29) + 1)
+          t320 <- rdU axis ((3 * i29) + 2)
+          let !s321 = ((t316 * t320) - (t317 * t319))
+          let !s322 = ((t317 * t318) - (t315 * t320))
+          let !s323 = ((t315 * t319) - (t316 * t318))
           chkI scalars (6 * i29) 0 0
-          t303 <- rdU scalars (6 * i29)
-          t304 <- rdU scalars ((6 * i29) + 5)
-          t305 <- rdU scalars ((6 * i29) + 2)
-          t306 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t289)) 0 29
-          wrU contacts (30 * (truncate t289)) d29
-          wrU contacts ((30 * (truncate t289)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t289)) + 2) d29
-          wrU contacts ((30 * (truncate t289)) + 3) 12.0
-          wrU contacts ((30 * (truncate t289)) + 4) (s286 + (negate ((((t294 * s286) + (t295 * s287)) + (t296 * s288)) * t294)))
-          wrU contacts ((30 * (truncate t289)) + 5) (s287 + (negate ((((t294 * s286) + (t295 * s287)) + (t296 * s288)) * t295)))
-          wrU contacts ((30 * (truncate t289)) + 6) (s288 + (negate ((((t294 * s286) + (t295 * s287)) + (t296 * s288)) * t296)))
-          wrU contacts ((30 * (truncate t289)) + 7) 0.0
-          wrU contacts ((30 * (truncate t289)) + 12) 0.0
-          wrU contacts ((30 * (truncate t289)) + 13) 0.0
-          wrU contacts ((30 * (truncate t289)) + 14) 0.0
-          wrU contacts ((30 * (truncate t289)) + 15) 0.0
-          wrU contacts ((30 * (truncate t289)) + 20) t264
-          wrU contacts ((30 * (truncate t289)) + 26) 0.6
-          wrU contacts ((30 * (truncate t289)) + 27) t265
-          wrU contacts ((30 * (truncate t289)) + 28) t266
-          wrU contacts ((30 * (truncate t289)) + 29) t267
+          t324 <- rdU scalars (6 * i29)
+          t325 <- rdU scalars ((6 * i29) + 5)
+          t326 <- rdU scalars ((6 * i29) + 2)
+          t327 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t310)) 0 29
+          wrU contacts (30 * (truncate t310)) d29
+          wrU contacts ((30 * (truncate t310)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t310)) + 2) d29
+          wrU contacts ((30 * (truncate t310)) + 3) 12.0
+          wrU contacts ((30 * (truncate t310)) + 4) (s307 + (negate ((((t315 * s307) + (t316 * s308)) + (t317 * s309)) * t315)))
+          wrU contacts ((30 * (truncate t310)) + 5) (s308 + (negate ((((t315 * s307) + (t316 * s308)) + (t317 * s309)) * t316)))
+          wrU contacts ((30 * (truncate t310)) + 6) (s309 + (negate ((((t315 * s307) + (t316 * s308)) + (t317 * s309)) * t317)))
+          wrU contacts ((30 * (truncate t310)) + 7) 0.0
+          wrU contacts ((30 * (truncate t310)) + 12) 0.0
+          wrU contacts ((30 * (truncate t310)) + 13) 0.0
+          wrU contacts ((30 * (truncate t310)) + 14) 0.0
+          wrU contacts ((30 * (truncate t310)) + 15) 0.0
+          wrU contacts ((30 * (truncate t310)) + 20) t285
+          wrU contacts ((30 * (truncate t310)) + 26) 0.6
+          wrU contacts ((30 * (truncate t310)) + 27) t286
+          wrU contacts ((30 * (truncate t310)) + 28) t287
+          wrU contacts ((30 * (truncate t310)) + 29) t288
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t307 <- rdU pos (-3)
-            t308 <- rdU pos (-2)
-            t309 <- rdU pos (-1)
+            t328 <- rdU pos (-3)
+            t329 <- rdU pos (-2)
+            t330 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t310 <- rdU normal (-3)
-            t311 <- rdU normal (-2)
-            t312 <- rdU normal (-1)
+            t331 <- rdU normal (-3)
+            t332 <- rdU normal (-2)
+            t333 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t313 <- rdU axis (-3)
-            t314 <- rdU axis (-2)
-            t315 <- rdU axis (-1)
-            let !s316 = ((t311 * t315) - (t312 * t314))
-            let !s317 = ((t312 * t313) - (t310 * t315))
-            let !s318 = ((t310 * t314) - (t311 * t313))
+            t334 <- rdU axis (-3)
+            t335 <- rdU axis (-2)
+            t336 <- rdU axis (-1)
+            let !s337 = ((t332 * t336) - (t333 * t335))
+            let !s338 = ((t333 * t334) - (t331 * t336))
+            let !s339 = ((t331 * t335) - (t332 * t334))
             chkI scalars 0 (-6) (-1)
-            t319 <- rdU scalars (-6)
-            t320 <- rdU scalars (-1)
-            t321 <- rdU scalars (-4)
-            t322 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t289)) + 8) (s286 + (negate ((((t310 * s286) + (t311 * s287)) + (t312 * s288)) * t310)))
-            wrU contacts ((30 * (truncate t289)) + 9) (s287 + (negate ((((t310 * s286) + (t311 * s287)) + (t312 * s288)) * t311)))
-            wrU contacts ((30 * (truncate t289)) + 10) (s288 + (negate ((((t310 * s286) + (t311 * s287)) + (t312 * s288)) * t312)))
-            let !t323 = (t266 + (negate t308))
-            let !t324 = (t267 + (negate t309))
-            let !t325 = (t265 + (negate t307))
-            wrU contacts ((30 * (truncate t289)) + 11) (((((t323 * s288) - (t324 * s287)) * t310) + (((t324 * s286) - (t325 * s288)) * t311)) + (((t325 * s287) - (t323 * s286)) * t312))
-            let !t326 = ((t295 * s288) - (t296 * s287))
-            wrU contacts ((30 * (truncate t289)) + 16) (t326 + (negate ((((t310 * t326) + (t311 * ((t296 * s286) - (t294 * s288)))) + (t312 * ((t294 * s287) - (t295 * s286)))) * t310)))
-            let !t327 = ((t296 * s286) - (t294 * s288))
-            wrU contacts ((30 * (truncate t289)) + 17) (t327 + (negate ((((t310 * t326) + (t311 * t327)) + (t312 * ((t294 * s287) - (t295 * s286)))) * t311)))
-            let !t328 = ((t294 * s287) - (t295 * s286))
-            wrU contacts ((30 * (truncate t289)) + 18) (t328 + (negate ((((t310 * t326) + (t311 * t327)) + (t312 * t328)) * t312)))
-            wrU contacts ((30 * (truncate t289)) + 19) (((((t323 * t328) - (t324 * t327)) * t310) + (((t324 * t326) - (t325 * t328)) * t311)) + (((t325 * t327) - (t323 * t326)) * t312))
+            t340 <- rdU scalars (-6)
+            t341 <- rdU scalars (-1)
+            t342 <- rdU scalars (-4)
+            t343 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t310)) + 8) (s307 + (negate ((((t331 * s307) + (t332 * s308)) + (t333 * s309)) * t331)))
+            wrU contacts ((30 * (truncate t310)) + 9) (s308 + (negate ((((t331 * s307) + (t332 * s308)) + (t333 * s309)) * t332)))
+            wrU contacts ((30 * (truncate t310)) + 10) (s309 + (negate ((((t331 * s307) + (t332 * s308)) + (t333 * s309)) * t333)))
+            let !t344 = (t287 + (negate t329))
+            let !t345 = (t288 + (negate t330))
+            let !t346 = (t286 + (negate t328))
+            wrU contacts ((30 * (truncate t310)) + 11) (((((t344 * s309) - (t345 * s308)) * t331) + (((t345 * s307) - (t346 * s309)) * t332)) + (((t346 * s308) - (t344 * s307)) * t333))
+            let !t347 = ((t316 * s309) - (t317 * s308))
+            wrU contacts ((30 * (truncate t310)) + 16) (t347 + (negate ((((t331 * t347) + (t332 * ((t317 * s307) - (t315 * s309)))) + (t333 * ((t315 * s308) - (t316 * s307)))) * t331)))
+            let !t348 = ((t317 * s307) - (t315 * s309))
+            wrU contacts ((30 * (truncate t310)) + 17) (t348 + (negate ((((t331 * t347) + (t332 * t348)) + (t333 * ((t315 * s308) - (t316 * s307)))) * t332)))
+            let !t349 = ((t315 * s308) - (t316 * s307))
+            wrU contacts ((30 * (truncate t310)) + 18) (t349 + (negate ((((t331 * t347) + (t332 * t348)) + (t333 * t349)) * t333)))
+            wrU contacts ((30 * (truncate t310)) + 19) (((((t344 * t349) - (t345 * t348)) * t331) + (((t345 * t347) - (t346 * t349)) * t332)) + (((t346 * t348) - (t344 * t347)) * t333))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t289)) + 8) 0.0
-            wrU contacts ((30 * (truncate t289)) + 9) 0.0
-            wrU contacts ((30 * (truncate t289)) + 10) 0.0
-            wrU contacts ((30 * (truncate t289)) + 11) 0.0
-            wrU contacts ((30 * (truncate t289)) + 16) 0.0
-            wrU contacts ((30 * (truncate t289)) + 17) 0.0
-            wrU contacts ((30 * (truncate t289)) + 18) 0.0
-            wrU contacts ((30 * (truncate t289)) + 19) 0.0
+            wrU contacts ((30 * (truncate t310)) + 8) 0.0
+            wrU contacts ((30 * (truncate t310)) + 9) 0.0
+            wrU contacts ((30 * (truncate t310)) + 10) 0.0
+            wrU contacts ((30 * (truncate t310)) + 11) 0.0
+            wrU contacts ((30 * (truncate t310)) + 16) 0.0
+            wrU contacts ((30 * (truncate t310)) + 17) 0.0
+            wrU contacts ((30 * (truncate t310)) + 18) 0.0
+            wrU contacts ((30 * (truncate t310)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t329 <- rdU meta 6
-          wrU meta 6 (t329 + 1.0)
+          t350 <- rdU meta 6
+          wrU meta 6 (t350 + 1.0)
           pure ()
         pure ()
       else do

@@ -75,7 +75,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -317,104 +317,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i119 -> do
         let !d119 = fromIntegral i119 :: Double
-        chkI radii (i119 + (24 * i29)) 0 0
-        t120 <- rdU radii (i119 + (24 * i29))
-        loopI 6.0 12.0 $ \i121 -> do
-          let !d121 = fromIntegral i121 :: Double
-          let !t122 = (d119 + d121)
-          chkI radii (truncate ((24.0 * d29) + (t122 - (24.0 * (floorF (t122 / 24.0)))))) 0 0
-          t123 <- rdU radii (truncate ((24.0 * d29) + (t122 - (24.0 * (floorF (t122 / 24.0))))))
-          loopI 1.0 4.0 $ \i124 -> do
-            let !d124 = fromIntegral i124 :: Double
-            chkI verts ((12 * i119) + (3 * i124) + (291 * i29)) 0 5
-            t125 <- rdU verts ((12 * i119) + (3 * i124) + (291 * i29))
-            t126 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 1)
-            t127 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 2)
-            t128 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 3)
-            t129 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 4)
-            t130 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i131 -> do
-              let !d131 = fromIntegral i131 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0)))) 0 0
-              t132 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 1.0)) 0 0
-              t133 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 2.0)) 0 0
-              t134 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131))) 0 0
-              t135 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 1.0)) 0 0
-              t136 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 2.0)) 0 0
-              t137 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 2.0))
-              t138 <- rdU locals 4
-              let !t139 = (negate t132)
-              let !t140 = (t135 + t139)
-              let !t141 = (negate t133)
-              let !t142 = (t136 + t141)
-              let !t143 = (negate t134)
-              let !t144 = (t137 + t143)
-              let !t145 = (((t140 * t140) + (t142 * t142)) + (t144 * t144))
-              let !t146 = (t128 + (negate t125))
-              let !t147 = (t129 + (negate t126))
-              let !t148 = (t130 + (negate t127))
-              let !t149 = (((t146 * t140) + (t147 * t142)) + (t148 * t144))
-              let !t150 = (((t146 * t146) + (t147 * t147)) + (t148 * t148))
-              let !t151 = ((t150 * t145) - (t149 * t149))
-              let !t152 = (t125 + t139)
-              let !t153 = (t126 + t141)
-              let !t154 = (t127 + t143)
-              let !t155 = (((t140 * t152) + (t142 * t153)) + (t144 * t154))
-              let !t156 = (((t146 * t152) + (t147 * t153)) + (t148 * t154))
-              let !t157 = (if ((abs t151) - 1.0e-300) > 0 then (((t149 * t155) - (t156 * t145)) / t151) else 0.0)
-              let !t158 = (if (t157 - 1.0) > 0 then 1.0 else t157)
-              let !t159 = (if (t151 - ((1.0e-12 * t150) * t145)) > 0 then (if (negate t158) > 0 then 0.0 else t158) else 0.0)
-              let !t160 = (if ((abs t145) - 1.0e-300) > 0 then (((t149 * t159) + t155) / t145) else 0.0)
-              let !t161 = ((abs t150) - 1.0e-300)
-              let !t162 = (if t161 > 0 then ((negate t156) / t150) else 0.0)
-              let !t163 = (if (t162 - 1.0) > 0 then 1.0 else t162)
-              let !t164 = (t160 - 1.0)
-              let !t165 = (if t161 > 0 then ((t149 - t156) / t150) else 0.0)
-              let !t166 = (if (t165 - 1.0) > 0 then 1.0 else t165)
-              let !t167 = (if (negate t160) > 0 then (if (negate t163) > 0 then 0.0 else t163) else (if t164 > 0 then (if (negate t166) > 0 then 0.0 else t166) else t159))
-              let !t168 = (if t164 > 0 then 1.0 else t160)
-              let !t169 = (if (negate t168) > 0 then 0.0 else t168)
-              let !t170 = ((0.5 * ((t120 - ((t120 * (d124 + t167)) / 4.0)) + (t123 - ((t123 * (d131 + t169)) / 4.0)))) - t138)
-              let !t171 = ((t125 + (t167 * t146)) + (negate (t132 + (t169 * t140))))
-              let !t172 = ((t126 + (t167 * t147)) + (negate (t133 + (t169 * t142))))
-              let !t173 = ((t127 + (t167 * t148)) + (negate (t134 + (t169 * t144))))
-              let !t174 = ((0.3 * ((if (t123 - t120) > 0 then t120 else t123) / 4.0)) - (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173))))
-              if (if (t170 - t174) > 0 then t174 else t170) > 0 then do
-                wrU locals 4 (0.5 * ((t120 - ((t120 * (d124 + t167)) / 4.0)) + (t123 - ((t123 * (d131 + t169)) / 4.0))))
-                chkI verts ((12 * i119) + (291 * i29)) 3 5
-                t175 <- rdU verts (((12 * i119) + (291 * i29)) + 3)
-                t176 <- rdU verts (((12 * i119) + (291 * i29)) + 4)
-                t177 <- rdU verts (((12 * i119) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)))) 0 0
-                t178 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t179 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t180 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t125 + (t167 * t146))
-                wrU locals 6 (t126 + (t167 * t147))
-                wrU locals 7 (t127 + (t167 * t148))
-                let !t181 = (negate t105)
-                let !t182 = (t175 + t181)
-                let !t183 = (negate t106)
-                let !t184 = (t176 + t183)
-                let !t185 = (negate t107)
-                let !t186 = (t177 + t185)
-                let !t187 = (sqrt (((t182 * t182) + (t184 * t184)) + (t186 * t186)))
-                let !t188 = (t178 + t181)
-                let !t189 = (t179 + t183)
-                let !t190 = (t180 + t185)
-                let !t191 = (sqrt (((t188 * t188) + (t189 * t189)) + (t190 * t190)))
-                wrU locals 8 (negate (((if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0) * t182) + ((if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0) * t188)))
-                wrU locals 9 (negate (((if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0) * t184) + ((if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0) * t189)))
-                wrU locals 10 (negate (((if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0) * t186) + ((if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0) * t190)))
+        loopI 1.0 4.0 $ \i120 -> do
+          let !d120 = fromIntegral i120 :: Double
+          chkI verts ((12 * i119) + (3 * i120) + (291 * i29)) 0 5
+          t121 <- rdU verts ((12 * i119) + (3 * i120) + (291 * i29))
+          t122 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 1)
+          t123 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 2)
+          t124 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 3)
+          t125 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 4)
+          t126 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 5)
+          t127 <- rdU locals 11
+          let !t128 = (t124 + (negate t121))
+          let !t129 = (t125 + (negate t122))
+          let !t130 = (t126 + (negate t123))
+          let !t131 = (((t128 * t128) + (t129 * t129)) + (t130 * t130))
+          wrU locals 11 (if (t131 - t127) > 0 then t131 else t127)
+          pure ()
+        pure ()
+      t132 <- rdU locals 11
+      let !s133 = (sqrt t132)
+      loopI 0.0 24.0 $ \i134 -> do
+        let !d134 = fromIntegral i134 :: Double
+        chkI radii (i134 + (24 * i29)) 0 0
+        t135 <- rdU radii (i134 + (24 * i29))
+        loopI 6.0 12.0 $ \i136 -> do
+          let !d136 = fromIntegral i136 :: Double
+          let !t137 = (d134 + d136)
+          chkI radii (truncate ((24.0 * d29) + (t137 - (24.0 * (floorF (t137 / 24.0)))))) 0 0
+          t138 <- rdU radii (truncate ((24.0 * d29) + (t137 - (24.0 * (floorF (t137 / 24.0))))))
+          let !s139 = ((if (t138 - t135) > 0 then t135 else t138) / 4.0)
+          let !t140 = ((0.3 * s139) + s133)
+          let !s141 = ((t140 * t140) * 1.000001)
+          loopI 1.0 4.0 $ \i142 -> do
+            let !d142 = fromIntegral i142 :: Double
+            chkI verts ((12 * i134) + (3 * i142) + (291 * i29)) 0 5
+            t143 <- rdU verts ((12 * i134) + (3 * i142) + (291 * i29))
+            t144 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 1)
+            t145 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 2)
+            t146 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 3)
+            t147 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 4)
+            t148 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i149 -> do
+              let !d149 = fromIntegral i149 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0)))) 0 0
+              t150 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 1.0)) 0 0
+              t151 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 2.0)) 0 0
+              t152 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149))) 0 0
+              t153 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 1.0)) 0 0
+              t154 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 2.0)) 0 0
+              t155 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 2.0))
+              let !t156 = (0.5 * ((t143 + t146) + (negate (t150 + t153))))
+              let !t157 = (0.5 * ((t144 + t147) + (negate (t151 + t154))))
+              let !t158 = (0.5 * ((t145 + t148) + (negate (t152 + t155))))
+              if (s141 - (((t156 * t156) + (t157 * t157)) + (t158 * t158))) > 0 then do
+                t159 <- rdU locals 4
+                let !t160 = (negate t150)
+                let !t161 = (t153 + t160)
+                let !t162 = (negate t151)
+                let !t163 = (t154 + t162)
+                let !t164 = (negate t152)
+                let !t165 = (t155 + t164)
+                let !t166 = (((t161 * t161) + (t163 * t163)) + (t165 * t165))
+                let !t167 = (t146 + (negate t143))
+                let !t168 = (t147 + (negate t144))
+                let !t169 = (t148 + (negate t145))
+                let !t170 = (((t167 * t161) + (t168 * t163)) + (t169 * t165))
+                let !t171 = (((t167 * t167) + (t168 * t168)) + (t169 * t169))
+                let !t172 = ((t171 * t166) - (t170 * t170))
+                let !t173 = (t143 + t160)
+                let !t174 = (t144 + t162)
+                let !t175 = (t145 + t164)
+                let !t176 = (((t161 * t173) + (t163 * t174)) + (t165 * t175))
+                let !t177 = (((t167 * t173) + (t168 * t174)) + (t169 * t175))
+                let !t178 = (if ((abs t172) - 1.0e-300) > 0 then (((t170 * t176) - (t177 * t166)) / t172) else 0.0)
+                let !t179 = (if (t178 - 1.0) > 0 then 1.0 else t178)
+                let !t180 = (if (t172 - ((1.0e-12 * t171) * t166)) > 0 then (if (negate t179) > 0 then 0.0 else t179) else 0.0)
+                let !t181 = (if ((abs t166) - 1.0e-300) > 0 then (((t170 * t180) + t176) / t166) else 0.0)
+                let !t182 = ((abs t171) - 1.0e-300)
+                let !t183 = (if t182 > 0 then ((negate t177) / t171) else 0.0)
+                let !t184 = (if (t183 - 1.0) > 0 then 1.0 else t183)
+                let !t185 = (t181 - 1.0)
+                let !t186 = (if t182 > 0 then ((t170 - t177) / t171) else 0.0)
+                let !t187 = (if (t186 - 1.0) > 0 then 1.0 else t186)
+                let !t188 = (if (negate t181) > 0 then (if (negate t184) > 0 then 0.0 else t184) else (if t185 > 0 then (if (negate t187) > 0 then 0.0 else t187) else t180))
+                let !t189 = (if t185 > 0 then 1.0 else t181)
+                let !t190 = (if (negate t189) > 0 then 0.0 else t189)
+                let !t191 = ((0.5 * ((t135 - ((t135 * (d142 + t188)) / 4.0)) + (t138 - ((t138 * (d149 + t190)) / 4.0)))) - t159)
+                let !t192 = ((t143 + (t188 * t167)) + (negate (t150 + (t190 * t161))))
+                let !t193 = ((t144 + (t188 * t168)) + (negate (t151 + (t190 * t163))))
+                let !t194 = ((t145 + (t188 * t169)) + (negate (t152 + (t190 * t165))))
+                let !t195 = ((0.3 * s139) - (sqrt (((t192 * t192) + (t193 * t193)) + (t194 * t194))))
+                if (if (t191 - t195) > 0 then t195 else t191) > 0 then do
+                  wrU locals 4 (0.5 * ((t135 - ((t135 * (d142 + t188)) / 4.0)) + (t138 - ((t138 * (d149 + t190)) / 4.0))))
+                  chkI verts ((12 * i134) + (291 * i29)) 3 5
+                  t196 <- rdU verts (((12 * i134) + (291 * i29)) + 3)
+                  t197 <- rdU verts (((12 * i134) + (291 * i29)) + 4)
+                  t198 <- rdU verts (((12 * i134) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)))) 0 0
+                  t199 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t200 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t201 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t143 + (t188 * t167))
+                  wrU locals 6 (t144 + (t188 * t168))
+                  wrU locals 7 (t145 + (t188 * t169))
+                  let !t202 = (negate t105)
+                  let !t203 = (t196 + t202)
+                  let !t204 = (negate t106)
+                  let !t205 = (t197 + t204)
+                  let !t206 = (negate t107)
+                  let !t207 = (t198 + t206)
+                  let !t208 = (sqrt (((t203 * t203) + (t205 * t205)) + (t207 * t207)))
+                  let !t209 = (t199 + t202)
+                  let !t210 = (t200 + t204)
+                  let !t211 = (t201 + t206)
+                  let !t212 = (sqrt (((t209 * t209) + (t210 * t210)) + (t211 * t211)))
+                  wrU locals 8 (negate (((if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0) * t203) + ((if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0) * t209)))
+                  wrU locals 9 (negate (((if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0) * t205) + ((if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0) * t210)))
+                  wrU locals 10 (negate (((if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0) * t207) + ((if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0) * t211)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -422,129 +454,129 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t192 <- rdU locals 4
-      if t192 > 0 then do
-        t193 <- rdU locals 5
-        t194 <- rdU locals 6
-        t195 <- rdU locals 7
-        t196 <- rdU locals 8
-        t197 <- rdU locals 9
-        t198 <- rdU locals 10
-        let !t199 = (sqrt ((t193 * t193) + (t195 * t195)))
-        let !t200 = (t199 - 0.8)
-        let !t201 = (recip (2.0 * (sqrt ((t200 * t200) + (t194 * t194)))))
-        let !t202 = (recip (2.0 * t199))
-        let !t203 = (t200 * (t202 * (t193 + t193)))
-        let !t204 = (t201 * (t203 + t203))
-        let !t205 = (t201 * (t194 + t194))
-        let !t206 = (t200 * (t202 * (t195 + t195)))
-        let !t207 = (t201 * (t206 + t206))
-        let !t208 = (sqrt (((t204 * t204) + (t205 * t205)) + (t207 * t207)))
-        let !t209 = (if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0)
-        let !s210 = (t209 * t204)
-        let !s211 = (t209 * t205)
-        let !s212 = (t209 * t207)
-        let !t213 = (((s210 * t196) + (s211 * t197)) + (s212 * t198))
-        let !t214 = (t196 + (negate (t213 * s210)))
-        let !t215 = (t197 + (negate (t213 * s211)))
-        let !t216 = (t198 + (negate (t213 * s212)))
-        let !t217 = (sqrt (((t214 * t214) + (t215 * t215)) + (t216 * t216)))
-        let !t218 = (if t217 > 0 then (recip (if (t217 - 1.0e-300) > 0 then t217 else 1.0e-300)) else 0.0)
-        let !s219 = (t218 * t214)
-        let !s220 = (t218 * t215)
-        let !s221 = (t218 * t216)
-        t222 <- rdU meta 2
-        t223 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t223) > 0 then 1.0 else t223)) - t222) - 0.5) > 0 then do
-          wrU meta 2 (t222 + 1.0)
-          t224 <- rdU pos (3 * i29)
-          t225 <- rdU pos ((3 * i29) + 1)
-          t226 <- rdU pos ((3 * i29) + 2)
+      t213 <- rdU locals 4
+      if t213 > 0 then do
+        t214 <- rdU locals 5
+        t215 <- rdU locals 6
+        t216 <- rdU locals 7
+        t217 <- rdU locals 8
+        t218 <- rdU locals 9
+        t219 <- rdU locals 10
+        let !t220 = (sqrt ((t214 * t214) + (t216 * t216)))
+        let !t221 = (t220 - 0.8)
+        let !t222 = (recip (2.0 * (sqrt ((t221 * t221) + (t215 * t215)))))
+        let !t223 = (recip (2.0 * t220))
+        let !t224 = (t221 * (t223 * (t214 + t214)))
+        let !t225 = (t222 * (t224 + t224))
+        let !t226 = (t222 * (t215 + t215))
+        let !t227 = (t221 * (t223 * (t216 + t216)))
+        let !t228 = (t222 * (t227 + t227))
+        let !t229 = (sqrt (((t225 * t225) + (t226 * t226)) + (t228 * t228)))
+        let !t230 = (if t229 > 0 then (recip (if (t229 - 1.0e-300) > 0 then t229 else 1.0e-300)) else 0.0)
+        let !s231 = (t230 * t225)
+        let !s232 = (t230 * t226)
+        let !s233 = (t230 * t228)
+        let !t234 = (((s231 * t217) + (s232 * t218)) + (s233 * t219))
+        let !t235 = (t217 + (negate (t234 * s231)))
+        let !t236 = (t218 + (negate (t234 * s232)))
+        let !t237 = (t219 + (negate (t234 * s233)))
+        let !t238 = (sqrt (((t235 * t235) + (t236 * t236)) + (t237 * t237)))
+        let !t239 = (if t238 > 0 then (recip (if (t238 - 1.0e-300) > 0 then t238 else 1.0e-300)) else 0.0)
+        let !s240 = (t239 * t235)
+        let !s241 = (t239 * t236)
+        let !s242 = (t239 * t237)
+        t243 <- rdU meta 2
+        t244 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t244) > 0 then 1.0 else t244)) - t243) - 0.5) > 0 then do
+          wrU meta 2 (t243 + 1.0)
+          t245 <- rdU pos (3 * i29)
+          t246 <- rdU pos ((3 * i29) + 1)
+          t247 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t227 <- rdU normal (3 * i29)
-          t228 <- rdU normal ((3 * i29) + 1)
-          t229 <- rdU normal ((3 * i29) + 2)
+          t248 <- rdU normal (3 * i29)
+          t249 <- rdU normal ((3 * i29) + 1)
+          t250 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t230 <- rdU axis (3 * i29)
-          t231 <- rdU axis ((3 * i29) + 1)
-          t232 <- rdU axis ((3 * i29) + 2)
-          let !s233 = ((t228 * t232) - (t229 * t231))
-          let !s234 = ((t229 * t230) - (t227 * t232))
-          let !s235 = ((t227 * t231) - (t228 * t230))
+          t251 <- rdU axis (3 * i29)
+          t252 <- rdU axis ((3 * i29) + 1)
+          t253 <- rdU axis ((3 * i29) + 2)
+          let !s254 = ((t249 * t253) - (t250 * t252))
+          let !s255 = ((t250 * t251) - (t248 * t253))
+          let !s256 = ((t248 * t252) - (t249 * t251))
           chkI scalars (6 * i29) 0 0
-          t236 <- rdU scalars (6 * i29)
-          t237 <- rdU scalars ((6 * i29) + 5)
-          t238 <- rdU scalars ((6 * i29) + 2)
-          t239 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t222)) 0 29
-          wrU contacts (30 * (truncate t222)) d29
-          wrU contacts ((30 * (truncate t222)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t222)) + 2) d29
-          wrU contacts ((30 * (truncate t222)) + 3) 12.0
-          wrU contacts ((30 * (truncate t222)) + 4) (s219 + (negate ((((t227 * s219) + (t228 * s220)) + (t229 * s221)) * t227)))
-          wrU contacts ((30 * (truncate t222)) + 5) (s220 + (negate ((((t227 * s219) + (t228 * s220)) + (t229 * s221)) * t228)))
-          wrU contacts ((30 * (truncate t222)) + 6) (s221 + (negate ((((t227 * s219) + (t228 * s220)) + (t229 * s221)) * t229)))
-          wrU contacts ((30 * (truncate t222)) + 7) 0.0
-          wrU contacts ((30 * (truncate t222)) + 12) 0.0
-          wrU contacts ((30 * (truncate t222)) + 13) 0.0
-          wrU contacts ((30 * (truncate t222)) + 14) 0.0
-          wrU contacts ((30 * (truncate t222)) + 15) 0.0
-          wrU contacts ((30 * (truncate t222)) + 20) t192
-          wrU contacts ((30 * (truncate t222)) + 26) 0.6
-          wrU contacts ((30 * (truncate t222)) + 27) t193
-          wrU contacts ((30 * (truncate t222)) + 28) t194
-          wrU contacts ((30 * (truncate t222)) + 29) t195
+          t257 <- rdU scalars (6 * i29)
+          t258 <- rdU scalars ((6 * i29) + 5)
+          t259 <- rdU scalars ((6 * i29) + 2)
+          t260 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t243)) 0 29
+          wrU contacts (30 * (truncate t243)) d29
+          wrU contacts ((30 * (truncate t243)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t243)) + 2) d29
+          wrU contacts ((30 * (truncate t243)) + 3) 12.0
+          wrU contacts ((30 * (truncate t243)) + 4) (s240 + (negate ((((t248 * s240) + (t249 * s241)) + (t250 * s242)) * t248)))
+          wrU contacts ((30 * (truncate t243)) + 5) (s241 + (negate ((((t248 * s240) + (t249 * s241)) + (t250 * s242)) * t249)))
+          wrU contacts ((30 * (truncate t243)) + 6) (s242 + (negate ((((t248 * s240) + (t249 * s241)) + (t250 * s242)) * t250)))
+          wrU contacts ((30 * (truncate t243)) + 7) 0.0
+          wrU contacts ((30 * (truncate t243)) + 12) 0.0
+          wrU contacts ((30 * (truncate t243)) + 13) 0.0
+          wrU contacts ((30 * (truncate t243)) + 14) 0.0
+          wrU contacts ((30 * (truncate t243)) + 15) 0.0
+          wrU contacts ((30 * (truncate t243)) + 20) t213
+          wrU contacts ((30 * (truncate t243)) + 26) 0.6
+          wrU contacts ((30 * (truncate t243)) + 27) t214
+          wrU contacts ((30 * (truncate t243)) + 28) t215
+          wrU contacts ((30 * (truncate t243)) + 29) t216
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t240 <- rdU pos (-3)
-            t241 <- rdU pos (-2)
-            t242 <- rdU pos (-1)
+            t261 <- rdU pos (-3)
+            t262 <- rdU pos (-2)
+            t263 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t243 <- rdU normal (-3)
-            t244 <- rdU normal (-2)
-            t245 <- rdU normal (-1)
+            t264 <- rdU normal (-3)
+            t265 <- rdU normal (-2)
+            t266 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t246 <- rdU axis (-3)
-            t247 <- rdU axis (-2)
-            t248 <- rdU axis (-1)
-            let !s249 = ((t244 * t248) - (t245 * t247))
-            let !s250 = ((t245 * t246) - (t243 * t248))
-            let !s251 = ((t243 * t247) - (t244 * t246))
+            t267 <- rdU axis (-3)
+            t268 <- rdU axis (-2)
+            t269 <- rdU axis (-1)
+            let !s270 = ((t265 * t269) - (t266 * t268))
+            let !s271 = ((t266 * t267) - (t264 * t269))
+            let !s272 = ((t264 * t268) - (t265 * t267))
             chkI scalars 0 (-6) (-1)
-            t252 <- rdU scalars (-6)
-            t253 <- rdU scalars (-1)
-            t254 <- rdU scalars (-4)
-            t255 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t222)) + 8) (s219 + (negate ((((t243 * s219) + (t244 * s220)) + (t245 * s221)) * t243)))
-            wrU contacts ((30 * (truncate t222)) + 9) (s220 + (negate ((((t243 * s219) + (t244 * s220)) + (t245 * s221)) * t244)))
-            wrU contacts ((30 * (truncate t222)) + 10) (s221 + (negate ((((t243 * s219) + (t244 * s220)) + (t245 * s221)) * t245)))
-            let !t256 = (t194 + (negate t241))
-            let !t257 = (t195 + (negate t242))
-            let !t258 = (t193 + (negate t240))
-            wrU contacts ((30 * (truncate t222)) + 11) (((((t256 * s221) - (t257 * s220)) * t243) + (((t257 * s219) - (t258 * s221)) * t244)) + (((t258 * s220) - (t256 * s219)) * t245))
-            let !t259 = ((t228 * s221) - (t229 * s220))
-            wrU contacts ((30 * (truncate t222)) + 16) (t259 + (negate ((((t243 * t259) + (t244 * ((t229 * s219) - (t227 * s221)))) + (t245 * ((t227 * s220) - (t228 * s219)))) * t243)))
-            let !t260 = ((t229 * s219) - (t227 * s221))
-            wrU contacts ((30 * (truncate t222)) + 17) (t260 + (negate ((((t243 * t259) + (t244 * t260)) + (t245 * ((t227 * s220) - (t228 * s219)))) * t244)))
-            let !t261 = ((t227 * s220) - (t228 * s219))
-            wrU contacts ((30 * (truncate t222)) + 18) (t261 + (negate ((((t243 * t259) + (t244 * t260)) + (t245 * t261)) * t245)))
-            wrU contacts ((30 * (truncate t222)) + 19) (((((t256 * t261) - (t257 * t260)) * t243) + (((t257 * t259) - (t258 * t261)) * t244)) + (((t258 * t260) - (t256 * t259)) * t245))
+            t273 <- rdU scalars (-6)
+            t274 <- rdU scalars (-1)
+            t275 <- rdU scalars (-4)
+            t276 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t243)) + 8) (s240 + (negate ((((t264 * s240) + (t265 * s241)) + (t266 * s242)) * t264)))
+            wrU contacts ((30 * (truncate t243)) + 9) (s241 + (negate ((((t264 * s240) + (t265 * s241)) + (t266 * s242)) * t265)))
+            wrU contacts ((30 * (truncate t243)) + 10) (s242 + (negate ((((t264 * s240) + (t265 * s241)) + (t266 * s242)) * t266)))
+            let !t277 = (t215 + (negate t262))
+            let !t278 = (t216 + (negate t263))
+            let !t279 = (t214 + (negate t261))
+            wrU contacts ((30 * (truncate t243)) + 11) (((((t277 * s242) - (t278 * s241)) * t264) + (((t278 * s240) - (t279 * s242)) * t265)) + (((t279 * s241) - (t277 * s240)) * t266))
+            let !t280 = ((t249 * s242) - (t250 * s241))
+            wrU contacts ((30 * (truncate t243)) + 16) (t280 + (negate ((((t264 * t280) + (t265 * ((t250 * s240) - (t248 * s242)))) + (t266 * ((t248 * s241) - (t249 * s240)))) * t264)))
+            let !t281 = ((t250 * s240) - (t248 * s242))
+            wrU contacts ((30 * (truncate t243)) + 17) (t281 + (negate ((((t264 * t280) + (t265 * t281)) + (t266 * ((t248 * s241) - (t249 * s240)))) * t265)))
+            let !t282 = ((t248 * s241) - (t249 * s240))
+            wrU contacts ((30 * (truncate t243)) + 18) (t282 + (negate ((((t264 * t280) + (t265 * t281)) + (t266 * t282)) * t266)))
+            wrU contacts ((30 * (truncate t243)) + 19) (((((t277 * t282) - (t278 * t281)) * t264) + (((t278 * t280) - (t279 * t282)) * t265)) + (((t279 * t281) - (t277 * t280)) * t266))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t222)) + 8) 0.0
-            wrU contacts ((30 * (truncate t222)) + 9) 0.0
-            wrU contacts ((30 * (truncate t222)) + 10) 0.0
-            wrU contacts ((30 * (truncate t222)) + 11) 0.0
-            wrU contacts ((30 * (truncate t222)) + 16) 0.0
-            wrU contacts ((30 * (truncate t222)) + 17) 0.0
-            wrU contacts ((30 * (truncate t222)) + 18) 0.0
-            wrU contacts ((30 * (truncate t222)) + 19) 0.0
+            wrU contacts ((30 * (truncate t243)) + 8) 0.0
+            wrU contacts ((30 * (truncate t243)) + 9) 0.0
+            wrU contacts ((30 * (truncate t243)) + 10) 0.0
+            wrU contacts ((30 * (truncate t243)) + 11) 0.0
+            wrU contacts ((30 * (truncate t243)) + 16) 0.0
+            wrU contacts ((30 * (truncate t243)) + 17) 0.0
+            wrU contacts ((30 * (truncate t243)) + 18) 0.0
+            wrU contacts ((30 * (truncate t243)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t262 <- rdU meta 6
-          wrU meta 6 (t262 + 1.0)
+          t283 <- rdU meta 6
+          wrU meta 6 (t283 + 1.0)
           pure ()
         pure ()
       else do

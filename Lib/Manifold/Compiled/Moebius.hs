@@ -74,7 +74,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 16
+  chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -584,104 +584,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 14 0.0
       wrU locals 15 0.0
       wrU locals 16 0.0
+      wrU locals 17 0.0
       loopI 0.0 24.0 $ \i239 -> do
         let !d239 = fromIntegral i239 :: Double
-        chkI radii (i239 + (24 * i29)) 0 0
-        t240 <- rdU radii (i239 + (24 * i29))
-        loopI 6.0 12.0 $ \i241 -> do
-          let !d241 = fromIntegral i241 :: Double
-          let !t242 = (d239 + d241)
-          chkI radii (truncate ((24.0 * d29) + (t242 - (24.0 * (floorF (t242 / 24.0)))))) 0 0
-          t243 <- rdU radii (truncate ((24.0 * d29) + (t242 - (24.0 * (floorF (t242 / 24.0))))))
-          loopI 1.0 4.0 $ \i244 -> do
-            let !d244 = fromIntegral i244 :: Double
-            chkI verts ((12 * i239) + (3 * i244) + (291 * i29)) 0 5
-            t245 <- rdU verts ((12 * i239) + (3 * i244) + (291 * i29))
-            t246 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 1)
-            t247 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 2)
-            t248 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 3)
-            t249 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 4)
-            t250 <- rdU verts (((12 * i239) + (3 * i244) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i251 -> do
-              let !d251 = fromIntegral i251 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0)))) 0 0
-              t252 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 1.0)) 0 0
-              t253 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 2.0)) 0 0
-              t254 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + (d251 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251))) 0 0
-              t255 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 1.0)) 0 0
-              t256 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 2.0)) 0 0
-              t257 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)) + d251)) + 2.0))
-              t258 <- rdU locals 10
-              let !t259 = (negate t252)
-              let !t260 = (t255 + t259)
-              let !t261 = (negate t253)
-              let !t262 = (t256 + t261)
-              let !t263 = (negate t254)
-              let !t264 = (t257 + t263)
-              let !t265 = (((t260 * t260) + (t262 * t262)) + (t264 * t264))
-              let !t266 = (t248 + (negate t245))
-              let !t267 = (t249 + (negate t246))
-              let !t268 = (t250 + (negate t247))
-              let !t269 = (((t266 * t260) + (t267 * t262)) + (t268 * t264))
-              let !t270 = (((t266 * t266) + (t267 * t267)) + (t268 * t268))
-              let !t271 = ((t270 * t265) - (t269 * t269))
-              let !t272 = (t245 + t259)
-              let !t273 = (t246 + t261)
-              let !t274 = (t247 + t263)
-              let !t275 = (((t260 * t272) + (t262 * t273)) + (t264 * t274))
-              let !t276 = (((t266 * t272) + (t267 * t273)) + (t268 * t274))
-              let !t277 = (if ((abs t271) - 1.0e-300) > 0 then (((t269 * t275) - (t276 * t265)) / t271) else 0.0)
-              let !t278 = (if (t277 - 1.0) > 0 then 1.0 else t277)
-              let !t279 = (if (t271 - ((1.0e-12 * t270) * t265)) > 0 then (if (negate t278) > 0 then 0.0 else t278) else 0.0)
-              let !t280 = (if ((abs t265) - 1.0e-300) > 0 then (((t269 * t279) + t275) / t265) else 0.0)
-              let !t281 = ((abs t270) - 1.0e-300)
-              let !t282 = (if t281 > 0 then ((negate t276) / t270) else 0.0)
-              let !t283 = (if (t282 - 1.0) > 0 then 1.0 else t282)
-              let !t284 = (t280 - 1.0)
-              let !t285 = (if t281 > 0 then ((t269 - t276) / t270) else 0.0)
-              let !t286 = (if (t285 - 1.0) > 0 then 1.0 else t285)
-              let !t287 = (if (negate t280) > 0 then (if (negate t283) > 0 then 0.0 else t283) else (if t284 > 0 then (if (negate t286) > 0 then 0.0 else t286) else t279))
-              let !t288 = (if t284 > 0 then 1.0 else t280)
-              let !t289 = (if (negate t288) > 0 then 0.0 else t288)
-              let !t290 = ((0.5 * ((t240 - ((t240 * (d244 + t287)) / 4.0)) + (t243 - ((t243 * (d251 + t289)) / 4.0)))) - t258)
-              let !t291 = ((t245 + (t287 * t266)) + (negate (t252 + (t289 * t260))))
-              let !t292 = ((t246 + (t287 * t267)) + (negate (t253 + (t289 * t262))))
-              let !t293 = ((t247 + (t287 * t268)) + (negate (t254 + (t289 * t264))))
-              let !t294 = ((0.3 * ((if (t243 - t240) > 0 then t240 else t243) / 4.0)) - (sqrt (((t291 * t291) + (t292 * t292)) + (t293 * t293))))
-              if (if (t290 - t294) > 0 then t294 else t290) > 0 then do
-                wrU locals 10 (0.5 * ((t240 - ((t240 * (d244 + t287)) / 4.0)) + (t243 - ((t243 * (d251 + t289)) / 4.0))))
-                chkI verts ((12 * i239) + (291 * i29)) 3 5
-                t295 <- rdU verts (((12 * i239) + (291 * i29)) + 3)
-                t296 <- rdU verts (((12 * i239) + (291 * i29)) + 4)
-                t297 <- rdU verts (((12 * i239) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0)))) 0 0
-                t298 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t299 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t300 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t242 - (24.0 * (floorF (t242 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 11 (t245 + (t287 * t266))
-                wrU locals 12 (t246 + (t287 * t267))
-                wrU locals 13 (t247 + (t287 * t268))
-                let !t301 = (negate t225)
-                let !t302 = (t295 + t301)
-                let !t303 = (negate t226)
-                let !t304 = (t296 + t303)
-                let !t305 = (negate t227)
-                let !t306 = (t297 + t305)
-                let !t307 = (sqrt (((t302 * t302) + (t304 * t304)) + (t306 * t306)))
-                let !t308 = (t298 + t301)
-                let !t309 = (t299 + t303)
-                let !t310 = (t300 + t305)
-                let !t311 = (sqrt (((t308 * t308) + (t309 * t309)) + (t310 * t310)))
-                wrU locals 14 (negate (((if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0) * t302) + ((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t308)))
-                wrU locals 15 (negate (((if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0) * t304) + ((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t309)))
-                wrU locals 16 (negate (((if t307 > 0 then (recip (if (t307 - 1.0e-300) > 0 then t307 else 1.0e-300)) else 0.0) * t306) + ((if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0) * t310)))
+        loopI 1.0 4.0 $ \i240 -> do
+          let !d240 = fromIntegral i240 :: Double
+          chkI verts ((12 * i239) + (3 * i240) + (291 * i29)) 0 5
+          t241 <- rdU verts ((12 * i239) + (3 * i240) + (291 * i29))
+          t242 <- rdU verts (((12 * i239) + (3 * i240) + (291 * i29)) + 1)
+          t243 <- rdU verts (((12 * i239) + (3 * i240) + (291 * i29)) + 2)
+          t244 <- rdU verts (((12 * i239) + (3 * i240) + (291 * i29)) + 3)
+          t245 <- rdU verts (((12 * i239) + (3 * i240) + (291 * i29)) + 4)
+          t246 <- rdU verts (((12 * i239) + (3 * i240) + (291 * i29)) + 5)
+          t247 <- rdU locals 17
+          let !t248 = (t244 + (negate t241))
+          let !t249 = (t245 + (negate t242))
+          let !t250 = (t246 + (negate t243))
+          let !t251 = (((t248 * t248) + (t249 * t249)) + (t250 * t250))
+          wrU locals 17 (if (t251 - t247) > 0 then t251 else t247)
+          pure ()
+        pure ()
+      t252 <- rdU locals 17
+      let !s253 = (sqrt t252)
+      loopI 0.0 24.0 $ \i254 -> do
+        let !d254 = fromIntegral i254 :: Double
+        chkI radii (i254 + (24 * i29)) 0 0
+        t255 <- rdU radii (i254 + (24 * i29))
+        loopI 6.0 12.0 $ \i256 -> do
+          let !d256 = fromIntegral i256 :: Double
+          let !t257 = (d254 + d256)
+          chkI radii (truncate ((24.0 * d29) + (t257 - (24.0 * (floorF (t257 / 24.0)))))) 0 0
+          t258 <- rdU radii (truncate ((24.0 * d29) + (t257 - (24.0 * (floorF (t257 / 24.0))))))
+          let !s259 = ((if (t258 - t255) > 0 then t255 else t258) / 4.0)
+          let !t260 = ((0.3 * s259) + s253)
+          let !s261 = ((t260 * t260) * 1.000001)
+          loopI 1.0 4.0 $ \i262 -> do
+            let !d262 = fromIntegral i262 :: Double
+            chkI verts ((12 * i254) + (3 * i262) + (291 * i29)) 0 5
+            t263 <- rdU verts ((12 * i254) + (3 * i262) + (291 * i29))
+            t264 <- rdU verts (((12 * i254) + (3 * i262) + (291 * i29)) + 1)
+            t265 <- rdU verts (((12 * i254) + (3 * i262) + (291 * i29)) + 2)
+            t266 <- rdU verts (((12 * i254) + (3 * i262) + (291 * i29)) + 3)
+            t267 <- rdU verts (((12 * i254) + (3 * i262) + (291 * i29)) + 4)
+            t268 <- rdU verts (((12 * i254) + (3 * i262) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i269 -> do
+              let !d269 = fromIntegral i269 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + (d269 - 1.0)))) 0 0
+              t270 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + (d269 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + (d269 - 1.0))) + 1.0)) 0 0
+              t271 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + (d269 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + (d269 - 1.0))) + 2.0)) 0 0
+              t272 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + (d269 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + d269))) 0 0
+              t273 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + d269)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + d269)) + 1.0)) 0 0
+              t274 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + d269)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + d269)) + 2.0)) 0 0
+              t275 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)) + d269)) + 2.0))
+              let !t276 = (0.5 * ((t263 + t266) + (negate (t270 + t273))))
+              let !t277 = (0.5 * ((t264 + t267) + (negate (t271 + t274))))
+              let !t278 = (0.5 * ((t265 + t268) + (negate (t272 + t275))))
+              if (s261 - (((t276 * t276) + (t277 * t277)) + (t278 * t278))) > 0 then do
+                t279 <- rdU locals 10
+                let !t280 = (negate t270)
+                let !t281 = (t273 + t280)
+                let !t282 = (negate t271)
+                let !t283 = (t274 + t282)
+                let !t284 = (negate t272)
+                let !t285 = (t275 + t284)
+                let !t286 = (((t281 * t281) + (t283 * t283)) + (t285 * t285))
+                let !t287 = (t266 + (negate t263))
+                let !t288 = (t267 + (negate t264))
+                let !t289 = (t268 + (negate t265))
+                let !t290 = (((t287 * t281) + (t288 * t283)) + (t289 * t285))
+                let !t291 = (((t287 * t287) + (t288 * t288)) + (t289 * t289))
+                let !t292 = ((t291 * t286) - (t290 * t290))
+                let !t293 = (t263 + t280)
+                let !t294 = (t264 + t282)
+                let !t295 = (t265 + t284)
+                let !t296 = (((t281 * t293) + (t283 * t294)) + (t285 * t295))
+                let !t297 = (((t287 * t293) + (t288 * t294)) + (t289 * t295))
+                let !t298 = (if ((abs t292) - 1.0e-300) > 0 then (((t290 * t296) - (t297 * t286)) / t292) else 0.0)
+                let !t299 = (if (t298 - 1.0) > 0 then 1.0 else t298)
+                let !t300 = (if (t292 - ((1.0e-12 * t291) * t286)) > 0 then (if (negate t299) > 0 then 0.0 else t299) else 0.0)
+                let !t301 = (if ((abs t286) - 1.0e-300) > 0 then (((t290 * t300) + t296) / t286) else 0.0)
+                let !t302 = ((abs t291) - 1.0e-300)
+                let !t303 = (if t302 > 0 then ((negate t297) / t291) else 0.0)
+                let !t304 = (if (t303 - 1.0) > 0 then 1.0 else t303)
+                let !t305 = (t301 - 1.0)
+                let !t306 = (if t302 > 0 then ((t290 - t297) / t291) else 0.0)
+                let !t307 = (if (t306 - 1.0) > 0 then 1.0 else t306)
+                let !t308 = (if (negate t301) > 0 then (if (negate t304) > 0 then 0.0 else t304) else (if t305 > 0 then (if (negate t307) > 0 then 0.0 else t307) else t300))
+                let !t309 = (if t305 > 0 then 1.0 else t301)
+                let !t310 = (if (negate t309) > 0 then 0.0 else t309)
+                let !t311 = ((0.5 * ((t255 - ((t255 * (d262 + t308)) / 4.0)) + (t258 - ((t258 * (d269 + t310)) / 4.0)))) - t279)
+                let !t312 = ((t263 + (t308 * t287)) + (negate (t270 + (t310 * t281))))
+                let !t313 = ((t264 + (t308 * t288)) + (negate (t271 + (t310 * t283))))
+                let !t314 = ((t265 + (t308 * t289)) + (negate (t272 + (t310 * t285))))
+                let !t315 = ((0.3 * s259) - (sqrt (((t312 * t312) + (t313 * t313)) + (t314 * t314))))
+                if (if (t311 - t315) > 0 then t315 else t311) > 0 then do
+                  wrU locals 10 (0.5 * ((t255 - ((t255 * (d262 + t308)) / 4.0)) + (t258 - ((t258 * (d269 + t310)) / 4.0))))
+                  chkI verts ((12 * i254) + (291 * i29)) 3 5
+                  t316 <- rdU verts (((12 * i254) + (291 * i29)) + 3)
+                  t317 <- rdU verts (((12 * i254) + (291 * i29)) + 4)
+                  t318 <- rdU verts (((12 * i254) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0)))) 0 0
+                  t319 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t320 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t321 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t257 - (24.0 * (floorF (t257 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 11 (t263 + (t308 * t287))
+                  wrU locals 12 (t264 + (t308 * t288))
+                  wrU locals 13 (t265 + (t308 * t289))
+                  let !t322 = (negate t225)
+                  let !t323 = (t316 + t322)
+                  let !t324 = (negate t226)
+                  let !t325 = (t317 + t324)
+                  let !t326 = (negate t227)
+                  let !t327 = (t318 + t326)
+                  let !t328 = (sqrt (((t323 * t323) + (t325 * t325)) + (t327 * t327)))
+                  let !t329 = (t319 + t322)
+                  let !t330 = (t320 + t324)
+                  let !t331 = (t321 + t326)
+                  let !t332 = (sqrt (((t329 * t329) + (t330 * t330)) + (t331 * t331)))
+                  wrU locals 14 (negate (((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t323) + ((if t332 > 0 then (recip (if (t332 - 1.0e-300) > 0 then t332 else 1.0e-300)) else 0.0) * t329)))
+                  wrU locals 15 (negate (((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t325) + ((if t332 > 0 then (recip (if (t332 - 1.0e-300) > 0 then t332 else 1.0e-300)) else 0.0) * t330)))
+                  wrU locals 16 (negate (((if t328 > 0 then (recip (if (t328 - 1.0e-300) > 0 then t328 else 1.0e-300)) else 0.0) * t327) + ((if t332 > 0 then (recip (if (t332 - 1.0e-300) > 0 then t332 else 1.0e-300)) else 0.0) * t331)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -689,120 +721,120 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t312 <- rdU locals 10
-      if t312 > 0 then do
-        t313 <- rdU locals 11
-        t314 <- rdU locals 12
-        t315 <- rdU locals 13
-        t316 <- rdU locals 14
-        t317 <- rdU locals 15
-        t318 <- rdU locals 16
-        let !t319 = (recip (2.0 * (sqrt ((t313 * t313) + (t315 * t315)))))
-        let !t320 = (t319 * (t313 + t313))
-        let !t321 = (t319 * (t315 + t315))
-        let !t322 = (sqrt ((t320 * t320) + (t321 * t321)))
-        let !t323 = (if t322 > 0 then (recip (if (t322 - 1.0e-300) > 0 then t322 else 1.0e-300)) else 0.0)
-        let !s324 = (t323 * t320)
-        let !s325 = (t323 * t321)
-        let !t326 = ((s324 * t316) + (s325 * t318))
-        let !t327 = (t316 + (negate (t326 * s324)))
-        let !t328 = (t318 + (negate (t326 * s325)))
-        let !t329 = (sqrt (((t327 * t327) + (t317 * t317)) + (t328 * t328)))
-        let !t330 = (if t329 > 0 then (recip (if (t329 - 1.0e-300) > 0 then t329 else 1.0e-300)) else 0.0)
-        let !s331 = (t330 * t327)
-        let !s332 = (t330 * t317)
-        let !s333 = (t330 * t328)
-        t334 <- rdU meta 2
-        t335 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t335) > 0 then 1.0 else t335)) - t334) - 0.5) > 0 then do
-          wrU meta 2 (t334 + 1.0)
-          t336 <- rdU pos (3 * i29)
-          t337 <- rdU pos ((3 * i29) + 1)
-          t338 <- rdU pos ((3 * i29) + 2)
-          t339 <- rdU normal (3 * i29)
-          t340 <- rdU normal ((3 * i29) + 1)
-          t341 <- rdU normal ((3 * i29) + 2)
+      t333 <- rdU locals 10
+      if t333 > 0 then do
+        t334 <- rdU locals 11
+        t335 <- rdU locals 12
+        t336 <- rdU locals 13
+        t337 <- rdU locals 14
+        t338 <- rdU locals 15
+        t339 <- rdU locals 16
+        let !t340 = (recip (2.0 * (sqrt ((t334 * t334) + (t336 * t336)))))
+        let !t341 = (t340 * (t334 + t334))
+        let !t342 = (t340 * (t336 + t336))
+        let !t343 = (sqrt ((t341 * t341) + (t342 * t342)))
+        let !t344 = (if t343 > 0 then (recip (if (t343 - 1.0e-300) > 0 then t343 else 1.0e-300)) else 0.0)
+        let !s345 = (t344 * t341)
+        let !s346 = (t344 * t342)
+        let !t347 = ((s345 * t337) + (s346 * t339))
+        let !t348 = (t337 + (negate (t347 * s345)))
+        let !t349 = (t339 + (negate (t347 * s346)))
+        let !t350 = (sqrt (((t348 * t348) + (t338 * t338)) + (t349 * t349)))
+        let !t351 = (if t350 > 0 then (recip (if (t350 - 1.0e-300) > 0 then t350 else 1.0e-300)) else 0.0)
+        let !s352 = (t351 * t348)
+        let !s353 = (t351 * t338)
+        let !s354 = (t351 * t349)
+        t355 <- rdU meta 2
+        t356 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t356) > 0 then 1.0 else t356)) - t355) - 0.5) > 0 then do
+          wrU meta 2 (t355 + 1.0)
+          t357 <- rdU pos (3 * i29)
+          t358 <- rdU pos ((3 * i29) + 1)
+          t359 <- rdU pos ((3 * i29) + 2)
+          t360 <- rdU normal (3 * i29)
+          t361 <- rdU normal ((3 * i29) + 1)
+          t362 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t342 <- rdU axis (3 * i29)
-          t343 <- rdU axis ((3 * i29) + 1)
-          t344 <- rdU axis ((3 * i29) + 2)
-          let !s345 = ((t340 * t344) - (t341 * t343))
-          let !s346 = ((t341 * t342) - (t339 * t344))
-          let !s347 = ((t339 * t343) - (t340 * t342))
+          t363 <- rdU axis (3 * i29)
+          t364 <- rdU axis ((3 * i29) + 1)
+          t365 <- rdU axis ((3 * i29) + 2)
+          let !s366 = ((t361 * t365) - (t362 * t364))
+          let !s367 = ((t362 * t363) - (t360 * t365))
+          let !s368 = ((t360 * t364) - (t361 * t363))
           chkI scalars (6 * i29) 0 0
-          t348 <- rdU scalars (6 * i29)
-          t349 <- rdU scalars ((6 * i29) + 5)
-          t350 <- rdU scalars ((6 * i29) + 2)
-          t351 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t334)) 0 29
-          wrU contacts (30 * (truncate t334)) d29
-          wrU contacts ((30 * (truncate t334)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t334)) + 2) d29
-          wrU contacts ((30 * (truncate t334)) + 3) 12.0
-          wrU contacts ((30 * (truncate t334)) + 4) (s331 + (negate ((((t339 * s331) + (t340 * s332)) + (t341 * s333)) * t339)))
-          wrU contacts ((30 * (truncate t334)) + 5) (s332 + (negate ((((t339 * s331) + (t340 * s332)) + (t341 * s333)) * t340)))
-          wrU contacts ((30 * (truncate t334)) + 6) (s333 + (negate ((((t339 * s331) + (t340 * s332)) + (t341 * s333)) * t341)))
-          wrU contacts ((30 * (truncate t334)) + 7) 0.0
-          wrU contacts ((30 * (truncate t334)) + 12) 0.0
-          wrU contacts ((30 * (truncate t334)) + 13) 0.0
-          wrU contacts ((30 * (truncate t334)) + 14) 0.0
-          wrU contacts ((30 * (truncate t334)) + 15) 0.0
-          wrU contacts ((30 * (truncate t334)) + 20) t312
-          wrU contacts ((30 * (truncate t334)) + 26) 0.6
-          wrU contacts ((30 * (truncate t334)) + 27) t313
-          wrU contacts ((30 * (truncate t334)) + 28) t314
-          wrU contacts ((30 * (truncate t334)) + 29) t315
+          t369 <- rdU scalars (6 * i29)
+          t370 <- rdU scalars ((6 * i29) + 5)
+          t371 <- rdU scalars ((6 * i29) + 2)
+          t372 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t355)) 0 29
+          wrU contacts (30 * (truncate t355)) d29
+          wrU contacts ((30 * (truncate t355)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t355)) + 2) d29
+          wrU contacts ((30 * (truncate t355)) + 3) 12.0
+          wrU contacts ((30 * (truncate t355)) + 4) (s352 + (negate ((((t360 * s352) + (t361 * s353)) + (t362 * s354)) * t360)))
+          wrU contacts ((30 * (truncate t355)) + 5) (s353 + (negate ((((t360 * s352) + (t361 * s353)) + (t362 * s354)) * t361)))
+          wrU contacts ((30 * (truncate t355)) + 6) (s354 + (negate ((((t360 * s352) + (t361 * s353)) + (t362 * s354)) * t362)))
+          wrU contacts ((30 * (truncate t355)) + 7) 0.0
+          wrU contacts ((30 * (truncate t355)) + 12) 0.0
+          wrU contacts ((30 * (truncate t355)) + 13) 0.0
+          wrU contacts ((30 * (truncate t355)) + 14) 0.0
+          wrU contacts ((30 * (truncate t355)) + 15) 0.0
+          wrU contacts ((30 * (truncate t355)) + 20) t333
+          wrU contacts ((30 * (truncate t355)) + 26) 0.6
+          wrU contacts ((30 * (truncate t355)) + 27) t334
+          wrU contacts ((30 * (truncate t355)) + 28) t335
+          wrU contacts ((30 * (truncate t355)) + 29) t336
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t352 <- rdU pos (-3)
-            t353 <- rdU pos (-2)
-            t354 <- rdU pos (-1)
+            t373 <- rdU pos (-3)
+            t374 <- rdU pos (-2)
+            t375 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t355 <- rdU normal (-3)
-            t356 <- rdU normal (-2)
-            t357 <- rdU normal (-1)
+            t376 <- rdU normal (-3)
+            t377 <- rdU normal (-2)
+            t378 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t358 <- rdU axis (-3)
-            t359 <- rdU axis (-2)
-            t360 <- rdU axis (-1)
-            let !s361 = ((t356 * t360) - (t357 * t359))
-            let !s362 = ((t357 * t358) - (t355 * t360))
-            let !s363 = ((t355 * t359) - (t356 * t358))
+            t379 <- rdU axis (-3)
+            t380 <- rdU axis (-2)
+            t381 <- rdU axis (-1)
+            let !s382 = ((t377 * t381) - (t378 * t380))
+            let !s383 = ((t378 * t379) - (t376 * t381))
+            let !s384 = ((t376 * t380) - (t377 * t379))
             chkI scalars 0 (-6) (-1)
-            t364 <- rdU scalars (-6)
-            t365 <- rdU scalars (-1)
-            t366 <- rdU scalars (-4)
-            t367 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t334)) + 8) (s331 + (negate ((((t355 * s331) + (t356 * s332)) + (t357 * s333)) * t355)))
-            wrU contacts ((30 * (truncate t334)) + 9) (s332 + (negate ((((t355 * s331) + (t356 * s332)) + (t357 * s333)) * t356)))
-            wrU contacts ((30 * (truncate t334)) + 10) (s333 + (negate ((((t355 * s331) + (t356 * s332)) + (t357 * s333)) * t357)))
-            let !t368 = (t314 + (negate t353))
-            let !t369 = (t315 + (negate t354))
-            let !t370 = (t313 + (negate t352))
-            wrU contacts ((30 * (truncate t334)) + 11) (((((t368 * s333) - (t369 * s332)) * t355) + (((t369 * s331) - (t370 * s333)) * t356)) + (((t370 * s332) - (t368 * s331)) * t357))
-            let !t371 = ((t340 * s333) - (t341 * s332))
-            wrU contacts ((30 * (truncate t334)) + 16) (t371 + (negate ((((t355 * t371) + (t356 * ((t341 * s331) - (t339 * s333)))) + (t357 * ((t339 * s332) - (t340 * s331)))) * t355)))
-            let !t372 = ((t341 * s331) - (t339 * s333))
-            wrU contacts ((30 * (truncate t334)) + 17) (t372 + (negate ((((t355 * t371) + (t356 * t372)) + (t357 * ((t339 * s332) - (t340 * s331)))) * t356)))
-            let !t373 = ((t339 * s332) - (t340 * s331))
-            wrU contacts ((30 * (truncate t334)) + 18) (t373 + (negate ((((t355 * t371) + (t356 * t372)) + (t357 * t373)) * t357)))
-            wrU contacts ((30 * (truncate t334)) + 19) (((((t368 * t373) - (t369 * t372)) * t355) + (((t369 * t371) - (t370 * t373)) * t356)) + (((t370 * t372) - (t368 * t371)) * t357))
+            t385 <- rdU scalars (-6)
+            t386 <- rdU scalars (-1)
+            t387 <- rdU scalars (-4)
+            t388 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t355)) + 8) (s352 + (negate ((((t376 * s352) + (t377 * s353)) + (t378 * s354)) * t376)))
+            wrU contacts ((30 * (truncate t355)) + 9) (s353 + (negate ((((t376 * s352) + (t377 * s353)) + (t378 * s354)) * t377)))
+            wrU contacts ((30 * (truncate t355)) + 10) (s354 + (negate ((((t376 * s352) + (t377 * s353)) + (t378 * s354)) * t378)))
+            let !t389 = (t335 + (negate t374))
+            let !t390 = (t336 + (negate t375))
+            let !t391 = (t334 + (negate t373))
+            wrU contacts ((30 * (truncate t355)) + 11) (((((t389 * s354) - (t390 * s353)) * t376) + (((t390 * s352) - (t391 * s354)) * t377)) + (((t391 * s353) - (t389 * s352)) * t378))
+            let !t392 = ((t361 * s354) - (t362 * s353))
+            wrU contacts ((30 * (truncate t355)) + 16) (t392 + (negate ((((t376 * t392) + (t377 * ((t362 * s352) - (t360 * s354)))) + (t378 * ((t360 * s353) - (t361 * s352)))) * t376)))
+            let !t393 = ((t362 * s352) - (t360 * s354))
+            wrU contacts ((30 * (truncate t355)) + 17) (t393 + (negate ((((t376 * t392) + (t377 * t393)) + (t378 * ((t360 * s353) - (t361 * s352)))) * t377)))
+            let !t394 = ((t360 * s353) - (t361 * s352))
+            wrU contacts ((30 * (truncate t355)) + 18) (t394 + (negate ((((t376 * t392) + (t377 * t393)) + (t378 * t394)) * t378)))
+            wrU contacts ((30 * (truncate t355)) + 19) (((((t389 * t394) - (t390 * t393)) * t376) + (((t390 * t392) - (t391 * t394)) * t377)) + (((t391 * t393) - (t389 * t392)) * t378))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t334)) + 8) 0.0
-            wrU contacts ((30 * (truncate t334)) + 9) 0.0
-            wrU contacts ((30 * (truncate t334)) + 10) 0.0
-            wrU contacts ((30 * (truncate t334)) + 11) 0.0
-            wrU contacts ((30 * (truncate t334)) + 16) 0.0
-            wrU contacts ((30 * (truncate t334)) + 17) 0.0
-            wrU contacts ((30 * (truncate t334)) + 18) 0.0
-            wrU contacts ((30 * (truncate t334)) + 19) 0.0
+            wrU contacts ((30 * (truncate t355)) + 8) 0.0
+            wrU contacts ((30 * (truncate t355)) + 9) 0.0
+            wrU contacts ((30 * (truncate t355)) + 10) 0.0
+            wrU contacts ((30 * (truncate t355)) + 11) 0.0
+            wrU contacts ((30 * (truncate t355)) + 16) 0.0
+            wrU contacts ((30 * (truncate t355)) + 17) 0.0
+            wrU contacts ((30 * (truncate t355)) + 18) 0.0
+            wrU contacts ((30 * (truncate t355)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t374 <- rdU meta 6
-          wrU meta 6 (t374 + 1.0)
+          t395 <- rdU meta 6
+          wrU meta 6 (t395 + 1.0)
           pure ()
         pure ()
       else do

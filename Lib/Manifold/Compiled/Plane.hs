@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -245,104 +245,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i83 -> do
         let !d83 = fromIntegral i83 :: Double
-        chkI radii ((24 * i29) + i83) 0 0
-        t84 <- rdU radii ((24 * i29) + i83)
-        loopI 6.0 12.0 $ \i85 -> do
-          let !d85 = fromIntegral i85 :: Double
-          let !t86 = (d83 + d85)
-          chkI radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0)))))) 0 0
-          t87 <- rdU radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0))))))
-          loopI 1.0 4.0 $ \i88 -> do
-            let !d88 = fromIntegral i88 :: Double
-            chkI verts ((291 * i29) + (12 * i83) + (3 * i88)) 0 5
-            t89 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i88))
-            t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 1)
-            t91 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 2)
-            t92 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 3)
-            t93 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 4)
-            t94 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 5)
-            loopI 1.0 4.0 $ \i95 -> do
-              let !d95 = fromIntegral i95 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0)))) 0 0
-              t96 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0)) 0 0
-              t97 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0)) 0 0
-              t98 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95))) 0 0
-              t99 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0)) 0 0
-              t100 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0)) 0 0
-              t101 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0))
-              t102 <- rdU locals 4
-              let !t103 = (negate t96)
-              let !t104 = (t99 + t103)
-              let !t105 = (negate t97)
-              let !t106 = (t100 + t105)
-              let !t107 = (negate t98)
-              let !t108 = (t101 + t107)
-              let !t109 = (((t104 * t104) + (t106 * t106)) + (t108 * t108))
-              let !t110 = (t92 + (negate t89))
-              let !t111 = (t93 + (negate t90))
-              let !t112 = (t94 + (negate t91))
-              let !t113 = (((t110 * t104) + (t111 * t106)) + (t112 * t108))
-              let !t114 = (((t110 * t110) + (t111 * t111)) + (t112 * t112))
-              let !t115 = ((t114 * t109) - (t113 * t113))
-              let !t116 = (t89 + t103)
-              let !t117 = (t90 + t105)
-              let !t118 = (t91 + t107)
-              let !t119 = (((t104 * t116) + (t106 * t117)) + (t108 * t118))
-              let !t120 = (((t110 * t116) + (t111 * t117)) + (t112 * t118))
-              let !t121 = (if ((abs t115) - 1.0e-300) > 0 then (((t113 * t119) - (t120 * t109)) / t115) else 0.0)
-              let !t122 = (if (t121 - 1.0) > 0 then 1.0 else t121)
-              let !t123 = (if (t115 - ((1.0e-12 * t114) * t109)) > 0 then (if (negate t122) > 0 then 0.0 else t122) else 0.0)
-              let !t124 = (if ((abs t109) - 1.0e-300) > 0 then (((t113 * t123) + t119) / t109) else 0.0)
-              let !t125 = ((abs t114) - 1.0e-300)
-              let !t126 = (if t125 > 0 then ((negate t120) / t114) else 0.0)
-              let !t127 = (if (t126 - 1.0) > 0 then 1.0 else t126)
-              let !t128 = (t124 - 1.0)
-              let !t129 = (if t125 > 0 then ((t113 - t120) / t114) else 0.0)
-              let !t130 = (if (t129 - 1.0) > 0 then 1.0 else t129)
-              let !t131 = (if (negate t124) > 0 then (if (negate t127) > 0 then 0.0 else t127) else (if t128 > 0 then (if (negate t130) > 0 then 0.0 else t130) else t123))
-              let !t132 = (if t128 > 0 then 1.0 else t124)
-              let !t133 = (if (negate t132) > 0 then 0.0 else t132)
-              let !t134 = ((0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0)))) - t102)
-              let !t135 = ((t89 + (t131 * t110)) + (negate (t96 + (t133 * t104))))
-              let !t136 = ((t90 + (t131 * t111)) + (negate (t97 + (t133 * t106))))
-              let !t137 = ((t91 + (t131 * t112)) + (negate (t98 + (t133 * t108))))
-              let !t138 = ((0.3 * ((if (t87 - t84) > 0 then t84 else t87) / 4.0)) - (sqrt (((t135 * t135) + (t136 * t136)) + (t137 * t137))))
-              if (if (t134 - t138) > 0 then t138 else t134) > 0 then do
-                wrU locals 4 (0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0))))
-                chkI verts ((291 * i29) + (12 * i83)) 3 5
-                t139 <- rdU verts (((291 * i29) + (12 * i83)) + 3)
-                t140 <- rdU verts (((291 * i29) + (12 * i83)) + 4)
-                t141 <- rdU verts (((291 * i29) + (12 * i83)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)))) 0 0
-                t142 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t143 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t144 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t89 + (t131 * t110))
-                wrU locals 6 (t90 + (t131 * t111))
-                wrU locals 7 (t91 + (t131 * t112))
-                let !t145 = (negate t69)
-                let !t146 = (t139 + t145)
-                let !t147 = (negate t70)
-                let !t148 = (t140 + t147)
-                let !t149 = (negate t71)
-                let !t150 = (t141 + t149)
-                let !t151 = (sqrt (((t146 * t146) + (t148 * t148)) + (t150 * t150)))
-                let !t152 = (t142 + t145)
-                let !t153 = (t143 + t147)
-                let !t154 = (t144 + t149)
-                let !t155 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
-                wrU locals 8 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t146) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t152)))
-                wrU locals 9 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t148) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t153)))
-                wrU locals 10 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t150) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t154)))
+        loopI 1.0 4.0 $ \i84 -> do
+          let !d84 = fromIntegral i84 :: Double
+          chkI verts ((291 * i29) + (12 * i83) + (3 * i84)) 0 5
+          t85 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i84))
+          t86 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 1)
+          t87 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 2)
+          t88 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 3)
+          t89 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 4)
+          t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 5)
+          t91 <- rdU locals 11
+          let !t92 = (t88 + (negate t85))
+          let !t93 = (t89 + (negate t86))
+          let !t94 = (t90 + (negate t87))
+          let !t95 = (((t92 * t92) + (t93 * t93)) + (t94 * t94))
+          wrU locals 11 (if (t95 - t91) > 0 then t95 else t91)
+          pure ()
+        pure ()
+      t96 <- rdU locals 11
+      let !s97 = (sqrt t96)
+      loopI 0.0 24.0 $ \i98 -> do
+        let !d98 = fromIntegral i98 :: Double
+        chkI radii ((24 * i29) + i98) 0 0
+        t99 <- rdU radii ((24 * i29) + i98)
+        loopI 6.0 12.0 $ \i100 -> do
+          let !d100 = fromIntegral i100 :: Double
+          let !t101 = (d98 + d100)
+          chkI radii (truncate ((24.0 * d29) + (t101 - (24.0 * (floorF (t101 / 24.0)))))) 0 0
+          t102 <- rdU radii (truncate ((24.0 * d29) + (t101 - (24.0 * (floorF (t101 / 24.0))))))
+          let !s103 = ((if (t102 - t99) > 0 then t99 else t102) / 4.0)
+          let !t104 = ((0.3 * s103) + s97)
+          let !s105 = ((t104 * t104) * 1.000001)
+          loopI 1.0 4.0 $ \i106 -> do
+            let !d106 = fromIntegral i106 :: Double
+            chkI verts ((3 * i106) + (291 * i29) + (12 * i98)) 0 5
+            t107 <- rdU verts ((3 * i106) + (291 * i29) + (12 * i98))
+            t108 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 1)
+            t109 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 2)
+            t110 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 3)
+            t111 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 4)
+            t112 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 5)
+            loopI 1.0 4.0 $ \i113 -> do
+              let !d113 = fromIntegral i113 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0)))) 0 0
+              t114 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 1.0)) 0 0
+              t115 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 2.0)) 0 0
+              t116 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113))) 0 0
+              t117 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 1.0)) 0 0
+              t118 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 2.0)) 0 0
+              t119 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 2.0))
+              let !t120 = (0.5 * ((t107 + t110) + (negate (t114 + t117))))
+              let !t121 = (0.5 * ((t108 + t111) + (negate (t115 + t118))))
+              let !t122 = (0.5 * ((t109 + t112) + (negate (t116 + t119))))
+              if (s105 - (((t120 * t120) + (t121 * t121)) + (t122 * t122))) > 0 then do
+                t123 <- rdU locals 4
+                let !t124 = (negate t114)
+                let !t125 = (t117 + t124)
+                let !t126 = (negate t115)
+                let !t127 = (t118 + t126)
+                let !t128 = (negate t116)
+                let !t129 = (t119 + t128)
+                let !t130 = (((t125 * t125) + (t127 * t127)) + (t129 * t129))
+                let !t131 = (t110 + (negate t107))
+                let !t132 = (t111 + (negate t108))
+                let !t133 = (t112 + (negate t109))
+                let !t134 = (((t131 * t125) + (t132 * t127)) + (t133 * t129))
+                let !t135 = (((t131 * t131) + (t132 * t132)) + (t133 * t133))
+                let !t136 = ((t135 * t130) - (t134 * t134))
+                let !t137 = (t107 + t124)
+                let !t138 = (t108 + t126)
+                let !t139 = (t109 + t128)
+                let !t140 = (((t125 * t137) + (t127 * t138)) + (t129 * t139))
+                let !t141 = (((t131 * t137) + (t132 * t138)) + (t133 * t139))
+                let !t142 = (if ((abs t136) - 1.0e-300) > 0 then (((t134 * t140) - (t141 * t130)) / t136) else 0.0)
+                let !t143 = (if (t142 - 1.0) > 0 then 1.0 else t142)
+                let !t144 = (if (t136 - ((1.0e-12 * t135) * t130)) > 0 then (if (negate t143) > 0 then 0.0 else t143) else 0.0)
+                let !t145 = (if ((abs t130) - 1.0e-300) > 0 then (((t134 * t144) + t140) / t130) else 0.0)
+                let !t146 = ((abs t135) - 1.0e-300)
+                let !t147 = (if t146 > 0 then ((negate t141) / t135) else 0.0)
+                let !t148 = (if (t147 - 1.0) > 0 then 1.0 else t147)
+                let !t149 = (t145 - 1.0)
+                let !t150 = (if t146 > 0 then ((t134 - t141) / t135) else 0.0)
+                let !t151 = (if (t150 - 1.0) > 0 then 1.0 else t150)
+                let !t152 = (if (negate t145) > 0 then (if (negate t148) > 0 then 0.0 else t148) else (if t149 > 0 then (if (negate t151) > 0 then 0.0 else t151) else t144))
+                let !t153 = (if t149 > 0 then 1.0 else t145)
+                let !t154 = (if (negate t153) > 0 then 0.0 else t153)
+                let !t155 = ((0.5 * ((t99 - ((t99 * (d106 + t152)) / 4.0)) + (t102 - ((t102 * (d113 + t154)) / 4.0)))) - t123)
+                let !t156 = ((t107 + (t152 * t131)) + (negate (t114 + (t154 * t125))))
+                let !t157 = ((t108 + (t152 * t132)) + (negate (t115 + (t154 * t127))))
+                let !t158 = ((t109 + (t152 * t133)) + (negate (t116 + (t154 * t129))))
+                let !t159 = ((0.3 * s103) - (sqrt (((t156 * t156) + (t157 * t157)) + (t158 * t158))))
+                if (if (t155 - t159) > 0 then t159 else t155) > 0 then do
+                  wrU locals 4 (0.5 * ((t99 - ((t99 * (d106 + t152)) / 4.0)) + (t102 - ((t102 * (d113 + t154)) / 4.0))))
+                  chkI verts ((291 * i29) + (12 * i98)) 3 5
+                  t160 <- rdU verts (((291 * i29) + (12 * i98)) + 3)
+                  t161 <- rdU verts (((291 * i29) + (12 * i98)) + 4)
+                  t162 <- rdU verts (((291 * i29) + (12 * i98)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)))) 0 0
+                  t163 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t164 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t165 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t107 + (t152 * t131))
+                  wrU locals 6 (t108 + (t152 * t132))
+                  wrU locals 7 (t109 + (t152 * t133))
+                  let !t166 = (negate t69)
+                  let !t167 = (t160 + t166)
+                  let !t168 = (negate t70)
+                  let !t169 = (t161 + t168)
+                  let !t170 = (negate t71)
+                  let !t171 = (t162 + t170)
+                  let !t172 = (sqrt (((t167 * t167) + (t169 * t169)) + (t171 * t171)))
+                  let !t173 = (t163 + t166)
+                  let !t174 = (t164 + t168)
+                  let !t175 = (t165 + t170)
+                  let !t176 = (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175)))
+                  wrU locals 8 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t167) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t173)))
+                  wrU locals 9 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t169) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t174)))
+                  wrU locals 10 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t171) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t175)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -350,112 +382,112 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t156 <- rdU locals 4
-      if t156 > 0 then do
-        t157 <- rdU locals 5
-        t158 <- rdU locals 6
-        t159 <- rdU locals 7
-        t160 <- rdU locals 8
-        t161 <- rdU locals 9
-        t162 <- rdU locals 10
-        let !t163 = (t161 + (negate t161))
-        let !t164 = (sqrt (((t160 * t160) + (t163 * t163)) + (t162 * t162)))
-        let !t165 = (if t164 > 0 then (recip (if (t164 - 1.0e-300) > 0 then t164 else 1.0e-300)) else 0.0)
-        let !s166 = (t165 * t160)
-        let !s167 = (t165 * t163)
-        let !s168 = (t165 * t162)
-        t169 <- rdU meta 2
-        t170 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t170) > 0 then 1.0 else t170)) - t169) - 0.5) > 0 then do
-          wrU meta 2 (t169 + 1.0)
-          t171 <- rdU pos (3 * i29)
-          t172 <- rdU pos ((3 * i29) + 1)
-          t173 <- rdU pos ((3 * i29) + 2)
+      t177 <- rdU locals 4
+      if t177 > 0 then do
+        t178 <- rdU locals 5
+        t179 <- rdU locals 6
+        t180 <- rdU locals 7
+        t181 <- rdU locals 8
+        t182 <- rdU locals 9
+        t183 <- rdU locals 10
+        let !t184 = (t182 + (negate t182))
+        let !t185 = (sqrt (((t181 * t181) + (t184 * t184)) + (t183 * t183)))
+        let !t186 = (if t185 > 0 then (recip (if (t185 - 1.0e-300) > 0 then t185 else 1.0e-300)) else 0.0)
+        let !s187 = (t186 * t181)
+        let !s188 = (t186 * t184)
+        let !s189 = (t186 * t183)
+        t190 <- rdU meta 2
+        t191 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t191) > 0 then 1.0 else t191)) - t190) - 0.5) > 0 then do
+          wrU meta 2 (t190 + 1.0)
+          t192 <- rdU pos (3 * i29)
+          t193 <- rdU pos ((3 * i29) + 1)
+          t194 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t174 <- rdU normal (3 * i29)
-          t175 <- rdU normal ((3 * i29) + 1)
-          t176 <- rdU normal ((3 * i29) + 2)
+          t195 <- rdU normal (3 * i29)
+          t196 <- rdU normal ((3 * i29) + 1)
+          t197 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t177 <- rdU axis (3 * i29)
-          t178 <- rdU axis ((3 * i29) + 1)
-          t179 <- rdU axis ((3 * i29) + 2)
-          let !s180 = ((t175 * t179) - (t176 * t178))
-          let !s181 = ((t176 * t177) - (t174 * t179))
-          let !s182 = ((t174 * t178) - (t175 * t177))
+          t198 <- rdU axis (3 * i29)
+          t199 <- rdU axis ((3 * i29) + 1)
+          t200 <- rdU axis ((3 * i29) + 2)
+          let !s201 = ((t196 * t200) - (t197 * t199))
+          let !s202 = ((t197 * t198) - (t195 * t200))
+          let !s203 = ((t195 * t199) - (t196 * t198))
           chkI scalars (6 * i29) 0 0
-          t183 <- rdU scalars (6 * i29)
-          t184 <- rdU scalars ((6 * i29) + 5)
-          t185 <- rdU scalars ((6 * i29) + 2)
-          t186 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t169)) 0 29
-          wrU contacts (30 * (truncate t169)) d29
-          wrU contacts ((30 * (truncate t169)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t169)) + 2) d29
-          wrU contacts ((30 * (truncate t169)) + 3) 12.0
-          wrU contacts ((30 * (truncate t169)) + 4) (s166 + (negate ((((t174 * s166) + (t175 * s167)) + (t176 * s168)) * t174)))
-          wrU contacts ((30 * (truncate t169)) + 5) (s167 + (negate ((((t174 * s166) + (t175 * s167)) + (t176 * s168)) * t175)))
-          wrU contacts ((30 * (truncate t169)) + 6) (s168 + (negate ((((t174 * s166) + (t175 * s167)) + (t176 * s168)) * t176)))
-          wrU contacts ((30 * (truncate t169)) + 7) 0.0
-          wrU contacts ((30 * (truncate t169)) + 12) 0.0
-          wrU contacts ((30 * (truncate t169)) + 13) 0.0
-          wrU contacts ((30 * (truncate t169)) + 14) 0.0
-          wrU contacts ((30 * (truncate t169)) + 15) 0.0
-          wrU contacts ((30 * (truncate t169)) + 20) t156
-          wrU contacts ((30 * (truncate t169)) + 26) 0.6
-          wrU contacts ((30 * (truncate t169)) + 27) t157
-          wrU contacts ((30 * (truncate t169)) + 28) t158
-          wrU contacts ((30 * (truncate t169)) + 29) t159
+          t204 <- rdU scalars (6 * i29)
+          t205 <- rdU scalars ((6 * i29) + 5)
+          t206 <- rdU scalars ((6 * i29) + 2)
+          t207 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t190)) 0 29
+          wrU contacts (30 * (truncate t190)) d29
+          wrU contacts ((30 * (truncate t190)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t190)) + 2) d29
+          wrU contacts ((30 * (truncate t190)) + 3) 12.0
+          wrU contacts ((30 * (truncate t190)) + 4) (s187 + (negate ((((t195 * s187) + (t196 * s188)) + (t197 * s189)) * t195)))
+          wrU contacts ((30 * (truncate t190)) + 5) (s188 + (negate ((((t195 * s187) + (t196 * s188)) + (t197 * s189)) * t196)))
+          wrU contacts ((30 * (truncate t190)) + 6) (s189 + (negate ((((t195 * s187) + (t196 * s188)) + (t197 * s189)) * t197)))
+          wrU contacts ((30 * (truncate t190)) + 7) 0.0
+          wrU contacts ((30 * (truncate t190)) + 12) 0.0
+          wrU contacts ((30 * (truncate t190)) + 13) 0.0
+          wrU contacts ((30 * (truncate t190)) + 14) 0.0
+          wrU contacts ((30 * (truncate t190)) + 15) 0.0
+          wrU contacts ((30 * (truncate t190)) + 20) t177
+          wrU contacts ((30 * (truncate t190)) + 26) 0.6
+          wrU contacts ((30 * (truncate t190)) + 27) t178
+          wrU contacts ((30 * (truncate t190)) + 28) t179
+          wrU contacts ((30 * (truncate t190)) + 29) t180
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t187 <- rdU pos (-3)
-            t188 <- rdU pos (-2)
-            t189 <- rdU pos (-1)
+            t208 <- rdU pos (-3)
+            t209 <- rdU pos (-2)
+            t210 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t190 <- rdU normal (-3)
-            t191 <- rdU normal (-2)
-            t192 <- rdU normal (-1)
+            t211 <- rdU normal (-3)
+            t212 <- rdU normal (-2)
+            t213 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t193 <- rdU axis (-3)
-            t194 <- rdU axis (-2)
-            t195 <- rdU axis (-1)
-            let !s196 = ((t191 * t195) - (t192 * t194))
-            let !s197 = ((t192 * t193) - (t190 * t195))
-            let !s198 = ((t190 * t194) - (t191 * t193))
+            t214 <- rdU axis (-3)
+            t215 <- rdU axis (-2)
+            t216 <- rdU axis (-1)
+            let !s217 = ((t212 * t216) - (t213 * t215))
+            let !s218 = ((t213 * t214) - (t211 * t216))
+            let !s219 = ((t211 * t215) - (t212 * t214))
             chkI scalars 0 (-6) (-1)
-            t199 <- rdU scalars (-6)
-            t200 <- rdU scalars (-1)
-            t201 <- rdU scalars (-4)
-            t202 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t169)) + 8) (s166 + (negate ((((t190 * s166) + (t191 * s167)) + (t192 * s168)) * t190)))
-            wrU contacts ((30 * (truncate t169)) + 9) (s167 + (negate ((((t190 * s166) + (t191 * s167)) + (t192 * s168)) * t191)))
-            wrU contacts ((30 * (truncate t169)) + 10) (s168 + (negate ((((t190 * s166) + (t191 * s167)) + (t192 * s168)) * t192)))
-            let !t203 = (t158 + (negate t188))
-            let !t204 = (t159 + (negate t189))
-            let !t205 = (t157 + (negate t187))
-            wrU contacts ((30 * (truncate t169)) + 11) (((((t203 * s168) - (t204 * s167)) * t190) + (((t204 * s166) - (t205 * s168)) * t191)) + (((t205 * s167) - (t203 * s166)) * t192))
-            let !t206 = ((t175 * s168) - (t176 * s167))
-            wrU contacts ((30 * (truncate t169)) + 16) (t206 + (negate ((((t190 * t206) + (t191 * ((t176 * s166) - (t174 * s168)))) + (t192 * ((t174 * s167) - (t175 * s166)))) * t190)))
-            let !t207 = ((t176 * s166) - (t174 * s168))
-            wrU contacts ((30 * (truncate t169)) + 17) (t207 + (negate ((((t190 * t206) + (t191 * t207)) + (t192 * ((t174 * s167) - (t175 * s166)))) * t191)))
-            let !t208 = ((t174 * s167) - (t175 * s166))
-            wrU contacts ((30 * (truncate t169)) + 18) (t208 + (negate ((((t190 * t206) + (t191 * t207)) + (t192 * t208)) * t192)))
-            wrU contacts ((30 * (truncate t169)) + 19) (((((t203 * t208) - (t204 * t207)) * t190) + (((t204 * t206) - (t205 * t208)) * t191)) + (((t205 * t207) - (t203 * t206)) * t192))
+            t220 <- rdU scalars (-6)
+            t221 <- rdU scalars (-1)
+            t222 <- rdU scalars (-4)
+            t223 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t190)) + 8) (s187 + (negate ((((t211 * s187) + (t212 * s188)) + (t213 * s189)) * t211)))
+            wrU contacts ((30 * (truncate t190)) + 9) (s188 + (negate ((((t211 * s187) + (t212 * s188)) + (t213 * s189)) * t212)))
+            wrU contacts ((30 * (truncate t190)) + 10) (s189 + (negate ((((t211 * s187) + (t212 * s188)) + (t213 * s189)) * t213)))
+            let !t224 = (t179 + (negate t209))
+            let !t225 = (t180 + (negate t210))
+            let !t226 = (t178 + (negate t208))
+            wrU contacts ((30 * (truncate t190)) + 11) (((((t224 * s189) - (t225 * s188)) * t211) + (((t225 * s187) - (t226 * s189)) * t212)) + (((t226 * s188) - (t224 * s187)) * t213))
+            let !t227 = ((t196 * s189) - (t197 * s188))
+            wrU contacts ((30 * (truncate t190)) + 16) (t227 + (negate ((((t211 * t227) + (t212 * ((t197 * s187) - (t195 * s189)))) + (t213 * ((t195 * s188) - (t196 * s187)))) * t211)))
+            let !t228 = ((t197 * s187) - (t195 * s189))
+            wrU contacts ((30 * (truncate t190)) + 17) (t228 + (negate ((((t211 * t227) + (t212 * t228)) + (t213 * ((t195 * s188) - (t196 * s187)))) * t212)))
+            let !t229 = ((t195 * s188) - (t196 * s187))
+            wrU contacts ((30 * (truncate t190)) + 18) (t229 + (negate ((((t211 * t227) + (t212 * t228)) + (t213 * t229)) * t213)))
+            wrU contacts ((30 * (truncate t190)) + 19) (((((t224 * t229) - (t225 * t228)) * t211) + (((t225 * t227) - (t226 * t229)) * t212)) + (((t226 * t228) - (t224 * t227)) * t213))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t169)) + 8) 0.0
-            wrU contacts ((30 * (truncate t169)) + 9) 0.0
-            wrU contacts ((30 * (truncate t169)) + 10) 0.0
-            wrU contacts ((30 * (truncate t169)) + 11) 0.0
-            wrU contacts ((30 * (truncate t169)) + 16) 0.0
-            wrU contacts ((30 * (truncate t169)) + 17) 0.0
-            wrU contacts ((30 * (truncate t169)) + 18) 0.0
-            wrU contacts ((30 * (truncate t169)) + 19) 0.0
+            wrU contacts ((30 * (truncate t190)) + 8) 0.0
+            wrU contacts ((30 * (truncate t190)) + 9) 0.0
+            wrU contacts ((30 * (truncate t190)) + 10) 0.0
+            wrU contacts ((30 * (truncate t190)) + 11) 0.0
+            wrU contacts ((30 * (truncate t190)) + 16) 0.0
+            wrU contacts ((30 * (truncate t190)) + 17) 0.0
+            wrU contacts ((30 * (truncate t190)) + 18) 0.0
+            wrU contacts ((30 * (truncate t190)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t209 <- rdU meta 6
-          wrU meta 6 (t209 + 1.0)
+          t230 <- rdU meta 6
+          wrU meta 6 (t230 + 1.0)
           pure ()
         pure ()
       else do

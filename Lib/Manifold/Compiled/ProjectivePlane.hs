@@ -74,7 +74,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -316,104 +316,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i119 -> do
         let !d119 = fromIntegral i119 :: Double
-        chkI radii (i119 + (24 * i29)) 0 0
-        t120 <- rdU radii (i119 + (24 * i29))
-        loopI 6.0 12.0 $ \i121 -> do
-          let !d121 = fromIntegral i121 :: Double
-          let !t122 = (d119 + d121)
-          chkI radii (truncate ((24.0 * d29) + (t122 - (24.0 * (floorF (t122 / 24.0)))))) 0 0
-          t123 <- rdU radii (truncate ((24.0 * d29) + (t122 - (24.0 * (floorF (t122 / 24.0))))))
-          loopI 1.0 4.0 $ \i124 -> do
-            let !d124 = fromIntegral i124 :: Double
-            chkI verts ((12 * i119) + (3 * i124) + (291 * i29)) 0 5
-            t125 <- rdU verts ((12 * i119) + (3 * i124) + (291 * i29))
-            t126 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 1)
-            t127 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 2)
-            t128 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 3)
-            t129 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 4)
-            t130 <- rdU verts (((12 * i119) + (3 * i124) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i131 -> do
-              let !d131 = fromIntegral i131 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0)))) 0 0
-              t132 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 1.0)) 0 0
-              t133 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 2.0)) 0 0
-              t134 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + (d131 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131))) 0 0
-              t135 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 1.0)) 0 0
-              t136 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 2.0)) 0 0
-              t137 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)) + d131)) + 2.0))
-              t138 <- rdU locals 4
-              let !t139 = (negate t132)
-              let !t140 = (t135 + t139)
-              let !t141 = (negate t133)
-              let !t142 = (t136 + t141)
-              let !t143 = (negate t134)
-              let !t144 = (t137 + t143)
-              let !t145 = (((t140 * t140) + (t142 * t142)) + (t144 * t144))
-              let !t146 = (t128 + (negate t125))
-              let !t147 = (t129 + (negate t126))
-              let !t148 = (t130 + (negate t127))
-              let !t149 = (((t146 * t140) + (t147 * t142)) + (t148 * t144))
-              let !t150 = (((t146 * t146) + (t147 * t147)) + (t148 * t148))
-              let !t151 = ((t150 * t145) - (t149 * t149))
-              let !t152 = (t125 + t139)
-              let !t153 = (t126 + t141)
-              let !t154 = (t127 + t143)
-              let !t155 = (((t140 * t152) + (t142 * t153)) + (t144 * t154))
-              let !t156 = (((t146 * t152) + (t147 * t153)) + (t148 * t154))
-              let !t157 = (if ((abs t151) - 1.0e-300) > 0 then (((t149 * t155) - (t156 * t145)) / t151) else 0.0)
-              let !t158 = (if (t157 - 1.0) > 0 then 1.0 else t157)
-              let !t159 = (if (t151 - ((1.0e-12 * t150) * t145)) > 0 then (if (negate t158) > 0 then 0.0 else t158) else 0.0)
-              let !t160 = (if ((abs t145) - 1.0e-300) > 0 then (((t149 * t159) + t155) / t145) else 0.0)
-              let !t161 = ((abs t150) - 1.0e-300)
-              let !t162 = (if t161 > 0 then ((negate t156) / t150) else 0.0)
-              let !t163 = (if (t162 - 1.0) > 0 then 1.0 else t162)
-              let !t164 = (t160 - 1.0)
-              let !t165 = (if t161 > 0 then ((t149 - t156) / t150) else 0.0)
-              let !t166 = (if (t165 - 1.0) > 0 then 1.0 else t165)
-              let !t167 = (if (negate t160) > 0 then (if (negate t163) > 0 then 0.0 else t163) else (if t164 > 0 then (if (negate t166) > 0 then 0.0 else t166) else t159))
-              let !t168 = (if t164 > 0 then 1.0 else t160)
-              let !t169 = (if (negate t168) > 0 then 0.0 else t168)
-              let !t170 = ((0.5 * ((t120 - ((t120 * (d124 + t167)) / 4.0)) + (t123 - ((t123 * (d131 + t169)) / 4.0)))) - t138)
-              let !t171 = ((t125 + (t167 * t146)) + (negate (t132 + (t169 * t140))))
-              let !t172 = ((t126 + (t167 * t147)) + (negate (t133 + (t169 * t142))))
-              let !t173 = ((t127 + (t167 * t148)) + (negate (t134 + (t169 * t144))))
-              let !t174 = ((0.3 * ((if (t123 - t120) > 0 then t120 else t123) / 4.0)) - (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173))))
-              if (if (t170 - t174) > 0 then t174 else t170) > 0 then do
-                wrU locals 4 (0.5 * ((t120 - ((t120 * (d124 + t167)) / 4.0)) + (t123 - ((t123 * (d131 + t169)) / 4.0))))
-                chkI verts ((12 * i119) + (291 * i29)) 3 5
-                t175 <- rdU verts (((12 * i119) + (291 * i29)) + 3)
-                t176 <- rdU verts (((12 * i119) + (291 * i29)) + 4)
-                t177 <- rdU verts (((12 * i119) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0)))) 0 0
-                t178 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t179 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t180 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t122 - (24.0 * (floorF (t122 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t125 + (t167 * t146))
-                wrU locals 6 (t126 + (t167 * t147))
-                wrU locals 7 (t127 + (t167 * t148))
-                let !t181 = (negate t105)
-                let !t182 = (t175 + t181)
-                let !t183 = (negate t106)
-                let !t184 = (t176 + t183)
-                let !t185 = (negate t107)
-                let !t186 = (t177 + t185)
-                let !t187 = (sqrt (((t182 * t182) + (t184 * t184)) + (t186 * t186)))
-                let !t188 = (t178 + t181)
-                let !t189 = (t179 + t183)
-                let !t190 = (t180 + t185)
-                let !t191 = (sqrt (((t188 * t188) + (t189 * t189)) + (t190 * t190)))
-                wrU locals 8 (negate (((if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0) * t182) + ((if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0) * t188)))
-                wrU locals 9 (negate (((if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0) * t184) + ((if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0) * t189)))
-                wrU locals 10 (negate (((if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0) * t186) + ((if t191 > 0 then (recip (if (t191 - 1.0e-300) > 0 then t191 else 1.0e-300)) else 0.0) * t190)))
+        loopI 1.0 4.0 $ \i120 -> do
+          let !d120 = fromIntegral i120 :: Double
+          chkI verts ((12 * i119) + (3 * i120) + (291 * i29)) 0 5
+          t121 <- rdU verts ((12 * i119) + (3 * i120) + (291 * i29))
+          t122 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 1)
+          t123 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 2)
+          t124 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 3)
+          t125 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 4)
+          t126 <- rdU verts (((12 * i119) + (3 * i120) + (291 * i29)) + 5)
+          t127 <- rdU locals 11
+          let !t128 = (t124 + (negate t121))
+          let !t129 = (t125 + (negate t122))
+          let !t130 = (t126 + (negate t123))
+          let !t131 = (((t128 * t128) + (t129 * t129)) + (t130 * t130))
+          wrU locals 11 (if (t131 - t127) > 0 then t131 else t127)
+          pure ()
+        pure ()
+      t132 <- rdU locals 11
+      let !s133 = (sqrt t132)
+      loopI 0.0 24.0 $ \i134 -> do
+        let !d134 = fromIntegral i134 :: Double
+        chkI radii (i134 + (24 * i29)) 0 0
+        t135 <- rdU radii (i134 + (24 * i29))
+        loopI 6.0 12.0 $ \i136 -> do
+          let !d136 = fromIntegral i136 :: Double
+          let !t137 = (d134 + d136)
+          chkI radii (truncate ((24.0 * d29) + (t137 - (24.0 * (floorF (t137 / 24.0)))))) 0 0
+          t138 <- rdU radii (truncate ((24.0 * d29) + (t137 - (24.0 * (floorF (t137 / 24.0))))))
+          let !s139 = ((if (t138 - t135) > 0 then t135 else t138) / 4.0)
+          let !t140 = ((0.3 * s139) + s133)
+          let !s141 = ((t140 * t140) * 1.000001)
+          loopI 1.0 4.0 $ \i142 -> do
+            let !d142 = fromIntegral i142 :: Double
+            chkI verts ((12 * i134) + (3 * i142) + (291 * i29)) 0 5
+            t143 <- rdU verts ((12 * i134) + (3 * i142) + (291 * i29))
+            t144 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 1)
+            t145 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 2)
+            t146 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 3)
+            t147 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 4)
+            t148 <- rdU verts (((12 * i134) + (3 * i142) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i149 -> do
+              let !d149 = fromIntegral i149 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0)))) 0 0
+              t150 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 1.0)) 0 0
+              t151 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 2.0)) 0 0
+              t152 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + (d149 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149))) 0 0
+              t153 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 1.0)) 0 0
+              t154 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 2.0)) 0 0
+              t155 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)) + d149)) + 2.0))
+              let !t156 = (0.5 * ((t143 + t146) + (negate (t150 + t153))))
+              let !t157 = (0.5 * ((t144 + t147) + (negate (t151 + t154))))
+              let !t158 = (0.5 * ((t145 + t148) + (negate (t152 + t155))))
+              if (s141 - (((t156 * t156) + (t157 * t157)) + (t158 * t158))) > 0 then do
+                t159 <- rdU locals 4
+                let !t160 = (negate t150)
+                let !t161 = (t153 + t160)
+                let !t162 = (negate t151)
+                let !t163 = (t154 + t162)
+                let !t164 = (negate t152)
+                let !t165 = (t155 + t164)
+                let !t166 = (((t161 * t161) + (t163 * t163)) + (t165 * t165))
+                let !t167 = (t146 + (negate t143))
+                let !t168 = (t147 + (negate t144))
+                let !t169 = (t148 + (negate t145))
+                let !t170 = (((t167 * t161) + (t168 * t163)) + (t169 * t165))
+                let !t171 = (((t167 * t167) + (t168 * t168)) + (t169 * t169))
+                let !t172 = ((t171 * t166) - (t170 * t170))
+                let !t173 = (t143 + t160)
+                let !t174 = (t144 + t162)
+                let !t175 = (t145 + t164)
+                let !t176 = (((t161 * t173) + (t163 * t174)) + (t165 * t175))
+                let !t177 = (((t167 * t173) + (t168 * t174)) + (t169 * t175))
+                let !t178 = (if ((abs t172) - 1.0e-300) > 0 then (((t170 * t176) - (t177 * t166)) / t172) else 0.0)
+                let !t179 = (if (t178 - 1.0) > 0 then 1.0 else t178)
+                let !t180 = (if (t172 - ((1.0e-12 * t171) * t166)) > 0 then (if (negate t179) > 0 then 0.0 else t179) else 0.0)
+                let !t181 = (if ((abs t166) - 1.0e-300) > 0 then (((t170 * t180) + t176) / t166) else 0.0)
+                let !t182 = ((abs t171) - 1.0e-300)
+                let !t183 = (if t182 > 0 then ((negate t177) / t171) else 0.0)
+                let !t184 = (if (t183 - 1.0) > 0 then 1.0 else t183)
+                let !t185 = (t181 - 1.0)
+                let !t186 = (if t182 > 0 then ((t170 - t177) / t171) else 0.0)
+                let !t187 = (if (t186 - 1.0) > 0 then 1.0 else t186)
+                let !t188 = (if (negate t181) > 0 then (if (negate t184) > 0 then 0.0 else t184) else (if t185 > 0 then (if (negate t187) > 0 then 0.0 else t187) else t180))
+                let !t189 = (if t185 > 0 then 1.0 else t181)
+                let !t190 = (if (negate t189) > 0 then 0.0 else t189)
+                let !t191 = ((0.5 * ((t135 - ((t135 * (d142 + t188)) / 4.0)) + (t138 - ((t138 * (d149 + t190)) / 4.0)))) - t159)
+                let !t192 = ((t143 + (t188 * t167)) + (negate (t150 + (t190 * t161))))
+                let !t193 = ((t144 + (t188 * t168)) + (negate (t151 + (t190 * t163))))
+                let !t194 = ((t145 + (t188 * t169)) + (negate (t152 + (t190 * t165))))
+                let !t195 = ((0.3 * s139) - (sqrt (((t192 * t192) + (t193 * t193)) + (t194 * t194))))
+                if (if (t191 - t195) > 0 then t195 else t191) > 0 then do
+                  wrU locals 4 (0.5 * ((t135 - ((t135 * (d142 + t188)) / 4.0)) + (t138 - ((t138 * (d149 + t190)) / 4.0))))
+                  chkI verts ((12 * i134) + (291 * i29)) 3 5
+                  t196 <- rdU verts (((12 * i134) + (291 * i29)) + 3)
+                  t197 <- rdU verts (((12 * i134) + (291 * i29)) + 4)
+                  t198 <- rdU verts (((12 * i134) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0)))) 0 0
+                  t199 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t200 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t201 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t137 - (24.0 * (floorF (t137 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t143 + (t188 * t167))
+                  wrU locals 6 (t144 + (t188 * t168))
+                  wrU locals 7 (t145 + (t188 * t169))
+                  let !t202 = (negate t105)
+                  let !t203 = (t196 + t202)
+                  let !t204 = (negate t106)
+                  let !t205 = (t197 + t204)
+                  let !t206 = (negate t107)
+                  let !t207 = (t198 + t206)
+                  let !t208 = (sqrt (((t203 * t203) + (t205 * t205)) + (t207 * t207)))
+                  let !t209 = (t199 + t202)
+                  let !t210 = (t200 + t204)
+                  let !t211 = (t201 + t206)
+                  let !t212 = (sqrt (((t209 * t209) + (t210 * t210)) + (t211 * t211)))
+                  wrU locals 8 (negate (((if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0) * t203) + ((if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0) * t209)))
+                  wrU locals 9 (negate (((if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0) * t205) + ((if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0) * t210)))
+                  wrU locals 10 (negate (((if t208 > 0 then (recip (if (t208 - 1.0e-300) > 0 then t208 else 1.0e-300)) else 0.0) * t207) + ((if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0) * t211)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -421,124 +453,124 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t192 <- rdU locals 4
-      if t192 > 0 then do
-        t193 <- rdU locals 5
-        t194 <- rdU locals 6
-        t195 <- rdU locals 7
-        t196 <- rdU locals 8
-        t197 <- rdU locals 9
-        t198 <- rdU locals 10
-        let !t199 = (recip (2.0 * (sqrt (((t193 * t193) + (t194 * t194)) + (t195 * t195)))))
-        let !t200 = (t199 * (t193 + t193))
-        let !t201 = (t199 * (t194 + t194))
-        let !t202 = (t199 * (t195 + t195))
-        let !t203 = (sqrt (((t200 * t200) + (t201 * t201)) + (t202 * t202)))
-        let !t204 = (if t203 > 0 then (recip (if (t203 - 1.0e-300) > 0 then t203 else 1.0e-300)) else 0.0)
-        let !s205 = (t204 * t200)
-        let !s206 = (t204 * t201)
-        let !s207 = (t204 * t202)
-        let !t208 = (((s205 * t196) + (s206 * t197)) + (s207 * t198))
-        let !t209 = (t196 + (negate (t208 * s205)))
-        let !t210 = (t197 + (negate (t208 * s206)))
-        let !t211 = (t198 + (negate (t208 * s207)))
-        let !t212 = (sqrt (((t209 * t209) + (t210 * t210)) + (t211 * t211)))
-        let !t213 = (if t212 > 0 then (recip (if (t212 - 1.0e-300) > 0 then t212 else 1.0e-300)) else 0.0)
-        let !s214 = (t213 * t209)
-        let !s215 = (t213 * t210)
-        let !s216 = (t213 * t211)
-        t217 <- rdU meta 2
-        t218 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t218) > 0 then 1.0 else t218)) - t217) - 0.5) > 0 then do
-          wrU meta 2 (t217 + 1.0)
-          t219 <- rdU pos (3 * i29)
-          t220 <- rdU pos ((3 * i29) + 1)
-          t221 <- rdU pos ((3 * i29) + 2)
+      t213 <- rdU locals 4
+      if t213 > 0 then do
+        t214 <- rdU locals 5
+        t215 <- rdU locals 6
+        t216 <- rdU locals 7
+        t217 <- rdU locals 8
+        t218 <- rdU locals 9
+        t219 <- rdU locals 10
+        let !t220 = (recip (2.0 * (sqrt (((t214 * t214) + (t215 * t215)) + (t216 * t216)))))
+        let !t221 = (t220 * (t214 + t214))
+        let !t222 = (t220 * (t215 + t215))
+        let !t223 = (t220 * (t216 + t216))
+        let !t224 = (sqrt (((t221 * t221) + (t222 * t222)) + (t223 * t223)))
+        let !t225 = (if t224 > 0 then (recip (if (t224 - 1.0e-300) > 0 then t224 else 1.0e-300)) else 0.0)
+        let !s226 = (t225 * t221)
+        let !s227 = (t225 * t222)
+        let !s228 = (t225 * t223)
+        let !t229 = (((s226 * t217) + (s227 * t218)) + (s228 * t219))
+        let !t230 = (t217 + (negate (t229 * s226)))
+        let !t231 = (t218 + (negate (t229 * s227)))
+        let !t232 = (t219 + (negate (t229 * s228)))
+        let !t233 = (sqrt (((t230 * t230) + (t231 * t231)) + (t232 * t232)))
+        let !t234 = (if t233 > 0 then (recip (if (t233 - 1.0e-300) > 0 then t233 else 1.0e-300)) else 0.0)
+        let !s235 = (t234 * t230)
+        let !s236 = (t234 * t231)
+        let !s237 = (t234 * t232)
+        t238 <- rdU meta 2
+        t239 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t239) > 0 then 1.0 else t239)) - t238) - 0.5) > 0 then do
+          wrU meta 2 (t238 + 1.0)
+          t240 <- rdU pos (3 * i29)
+          t241 <- rdU pos ((3 * i29) + 1)
+          t242 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t222 <- rdU normal (3 * i29)
-          t223 <- rdU normal ((3 * i29) + 1)
-          t224 <- rdU normal ((3 * i29) + 2)
+          t243 <- rdU normal (3 * i29)
+          t244 <- rdU normal ((3 * i29) + 1)
+          t245 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t225 <- rdU axis (3 * i29)
-          t226 <- rdU axis ((3 * i29) + 1)
-          t227 <- rdU axis ((3 * i29) + 2)
-          let !s228 = ((t223 * t227) - (t224 * t226))
-          let !s229 = ((t224 * t225) - (t222 * t227))
-          let !s230 = ((t222 * t226) - (t223 * t225))
+          t246 <- rdU axis (3 * i29)
+          t247 <- rdU axis ((3 * i29) + 1)
+          t248 <- rdU axis ((3 * i29) + 2)
+          let !s249 = ((t244 * t248) - (t245 * t247))
+          let !s250 = ((t245 * t246) - (t243 * t248))
+          let !s251 = ((t243 * t247) - (t244 * t246))
           chkI scalars (6 * i29) 0 0
-          t231 <- rdU scalars (6 * i29)
-          t232 <- rdU scalars ((6 * i29) + 5)
-          t233 <- rdU scalars ((6 * i29) + 2)
-          t234 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t217)) 0 29
-          wrU contacts (30 * (truncate t217)) d29
-          wrU contacts ((30 * (truncate t217)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t217)) + 2) d29
-          wrU contacts ((30 * (truncate t217)) + 3) 12.0
-          wrU contacts ((30 * (truncate t217)) + 4) (s214 + (negate ((((t222 * s214) + (t223 * s215)) + (t224 * s216)) * t222)))
-          wrU contacts ((30 * (truncate t217)) + 5) (s215 + (negate ((((t222 * s214) + (t223 * s215)) + (t224 * s216)) * t223)))
-          wrU contacts ((30 * (truncate t217)) + 6) (s216 + (negate ((((t222 * s214) + (t223 * s215)) + (t224 * s216)) * t224)))
-          wrU contacts ((30 * (truncate t217)) + 7) 0.0
-          wrU contacts ((30 * (truncate t217)) + 12) 0.0
-          wrU contacts ((30 * (truncate t217)) + 13) 0.0
-          wrU contacts ((30 * (truncate t217)) + 14) 0.0
-          wrU contacts ((30 * (truncate t217)) + 15) 0.0
-          wrU contacts ((30 * (truncate t217)) + 20) t192
-          wrU contacts ((30 * (truncate t217)) + 26) 0.6
-          wrU contacts ((30 * (truncate t217)) + 27) t193
-          wrU contacts ((30 * (truncate t217)) + 28) t194
-          wrU contacts ((30 * (truncate t217)) + 29) t195
+          t252 <- rdU scalars (6 * i29)
+          t253 <- rdU scalars ((6 * i29) + 5)
+          t254 <- rdU scalars ((6 * i29) + 2)
+          t255 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t238)) 0 29
+          wrU contacts (30 * (truncate t238)) d29
+          wrU contacts ((30 * (truncate t238)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t238)) + 2) d29
+          wrU contacts ((30 * (truncate t238)) + 3) 12.0
+          wrU contacts ((30 * (truncate t238)) + 4) (s235 + (negate ((((t243 * s235) + (t244 * s236)) + (t245 * s237)) * t243)))
+          wrU contacts ((30 * (truncate t238)) + 5) (s236 + (negate ((((t243 * s235) + (t244 * s236)) + (t245 * s237)) * t244)))
+          wrU contacts ((30 * (truncate t238)) + 6) (s237 + (negate ((((t243 * s235) + (t244 * s236)) + (t245 * s237)) * t245)))
+          wrU contacts ((30 * (truncate t238)) + 7) 0.0
+          wrU contacts ((30 * (truncate t238)) + 12) 0.0
+          wrU contacts ((30 * (truncate t238)) + 13) 0.0
+          wrU contacts ((30 * (truncate t238)) + 14) 0.0
+          wrU contacts ((30 * (truncate t238)) + 15) 0.0
+          wrU contacts ((30 * (truncate t238)) + 20) t213
+          wrU contacts ((30 * (truncate t238)) + 26) 0.6
+          wrU contacts ((30 * (truncate t238)) + 27) t214
+          wrU contacts ((30 * (truncate t238)) + 28) t215
+          wrU contacts ((30 * (truncate t238)) + 29) t216
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t235 <- rdU pos (-3)
-            t236 <- rdU pos (-2)
-            t237 <- rdU pos (-1)
+            t256 <- rdU pos (-3)
+            t257 <- rdU pos (-2)
+            t258 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t238 <- rdU normal (-3)
-            t239 <- rdU normal (-2)
-            t240 <- rdU normal (-1)
+            t259 <- rdU normal (-3)
+            t260 <- rdU normal (-2)
+            t261 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t241 <- rdU axis (-3)
-            t242 <- rdU axis (-2)
-            t243 <- rdU axis (-1)
-            let !s244 = ((t239 * t243) - (t240 * t242))
-            let !s245 = ((t240 * t241) - (t238 * t243))
-            let !s246 = ((t238 * t242) - (t239 * t241))
+            t262 <- rdU axis (-3)
+            t263 <- rdU axis (-2)
+            t264 <- rdU axis (-1)
+            let !s265 = ((t260 * t264) - (t261 * t263))
+            let !s266 = ((t261 * t262) - (t259 * t264))
+            let !s267 = ((t259 * t263) - (t260 * t262))
             chkI scalars 0 (-6) (-1)
-            t247 <- rdU scalars (-6)
-            t248 <- rdU scalars (-1)
-            t249 <- rdU scalars (-4)
-            t250 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t217)) + 8) (s214 + (negate ((((t238 * s214) + (t239 * s215)) + (t240 * s216)) * t238)))
-            wrU contacts ((30 * (truncate t217)) + 9) (s215 + (negate ((((t238 * s214) + (t239 * s215)) + (t240 * s216)) * t239)))
-            wrU contacts ((30 * (truncate t217)) + 10) (s216 + (negate ((((t238 * s214) + (t239 * s215)) + (t240 * s216)) * t240)))
-            let !t251 = (t194 + (negate t236))
-            let !t252 = (t195 + (negate t237))
-            let !t253 = (t193 + (negate t235))
-            wrU contacts ((30 * (truncate t217)) + 11) (((((t251 * s216) - (t252 * s215)) * t238) + (((t252 * s214) - (t253 * s216)) * t239)) + (((t253 * s215) - (t251 * s214)) * t240))
-            let !t254 = ((t223 * s216) - (t224 * s215))
-            wrU contacts ((30 * (truncate t217)) + 16) (t254 + (negate ((((t238 * t254) + (t239 * ((t224 * s214) - (t222 * s216)))) + (t240 * ((t222 * s215) - (t223 * s214)))) * t238)))
-            let !t255 = ((t224 * s214) - (t222 * s216))
-            wrU contacts ((30 * (truncate t217)) + 17) (t255 + (negate ((((t238 * t254) + (t239 * t255)) + (t240 * ((t222 * s215) - (t223 * s214)))) * t239)))
-            let !t256 = ((t222 * s215) - (t223 * s214))
-            wrU contacts ((30 * (truncate t217)) + 18) (t256 + (negate ((((t238 * t254) + (t239 * t255)) + (t240 * t256)) * t240)))
-            wrU contacts ((30 * (truncate t217)) + 19) (((((t251 * t256) - (t252 * t255)) * t238) + (((t252 * t254) - (t253 * t256)) * t239)) + (((t253 * t255) - (t251 * t254)) * t240))
+            t268 <- rdU scalars (-6)
+            t269 <- rdU scalars (-1)
+            t270 <- rdU scalars (-4)
+            t271 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t238)) + 8) (s235 + (negate ((((t259 * s235) + (t260 * s236)) + (t261 * s237)) * t259)))
+            wrU contacts ((30 * (truncate t238)) + 9) (s236 + (negate ((((t259 * s235) + (t260 * s236)) + (t261 * s237)) * t260)))
+            wrU contacts ((30 * (truncate t238)) + 10) (s237 + (negate ((((t259 * s235) + (t260 * s236)) + (t261 * s237)) * t261)))
+            let !t272 = (t215 + (negate t257))
+            let !t273 = (t216 + (negate t258))
+            let !t274 = (t214 + (negate t256))
+            wrU contacts ((30 * (truncate t238)) + 11) (((((t272 * s237) - (t273 * s236)) * t259) + (((t273 * s235) - (t274 * s237)) * t260)) + (((t274 * s236) - (t272 * s235)) * t261))
+            let !t275 = ((t244 * s237) - (t245 * s236))
+            wrU contacts ((30 * (truncate t238)) + 16) (t275 + (negate ((((t259 * t275) + (t260 * ((t245 * s235) - (t243 * s237)))) + (t261 * ((t243 * s236) - (t244 * s235)))) * t259)))
+            let !t276 = ((t245 * s235) - (t243 * s237))
+            wrU contacts ((30 * (truncate t238)) + 17) (t276 + (negate ((((t259 * t275) + (t260 * t276)) + (t261 * ((t243 * s236) - (t244 * s235)))) * t260)))
+            let !t277 = ((t243 * s236) - (t244 * s235))
+            wrU contacts ((30 * (truncate t238)) + 18) (t277 + (negate ((((t259 * t275) + (t260 * t276)) + (t261 * t277)) * t261)))
+            wrU contacts ((30 * (truncate t238)) + 19) (((((t272 * t277) - (t273 * t276)) * t259) + (((t273 * t275) - (t274 * t277)) * t260)) + (((t274 * t276) - (t272 * t275)) * t261))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t217)) + 8) 0.0
-            wrU contacts ((30 * (truncate t217)) + 9) 0.0
-            wrU contacts ((30 * (truncate t217)) + 10) 0.0
-            wrU contacts ((30 * (truncate t217)) + 11) 0.0
-            wrU contacts ((30 * (truncate t217)) + 16) 0.0
-            wrU contacts ((30 * (truncate t217)) + 17) 0.0
-            wrU contacts ((30 * (truncate t217)) + 18) 0.0
-            wrU contacts ((30 * (truncate t217)) + 19) 0.0
+            wrU contacts ((30 * (truncate t238)) + 8) 0.0
+            wrU contacts ((30 * (truncate t238)) + 9) 0.0
+            wrU contacts ((30 * (truncate t238)) + 10) 0.0
+            wrU contacts ((30 * (truncate t238)) + 11) 0.0
+            wrU contacts ((30 * (truncate t238)) + 16) 0.0
+            wrU contacts ((30 * (truncate t238)) + 17) 0.0
+            wrU contacts ((30 * (truncate t238)) + 18) 0.0
+            wrU contacts ((30 * (truncate t238)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t257 <- rdU meta 6
-          wrU meta 6 (t257 + 1.0)
+          t278 <- rdU meta 6
+          wrU meta 6 (t278 + 1.0)
           pure ()
         pure ()
       else do

@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 16
+  chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -540,104 +540,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 14 0.0
       wrU locals 15 0.0
       wrU locals 16 0.0
+      wrU locals 17 0.0
       loopI 0.0 24.0 $ \i230 -> do
         let !d230 = fromIntegral i230 :: Double
-        chkI radii (i230 + (24 * i29)) 0 0
-        t231 <- rdU radii (i230 + (24 * i29))
-        loopI 6.0 12.0 $ \i232 -> do
-          let !d232 = fromIntegral i232 :: Double
-          let !t233 = (d230 + d232)
-          chkI radii (truncate ((24.0 * d29) + (t233 - (24.0 * (floorF (t233 / 24.0)))))) 0 0
-          t234 <- rdU radii (truncate ((24.0 * d29) + (t233 - (24.0 * (floorF (t233 / 24.0))))))
-          loopI 1.0 4.0 $ \i235 -> do
-            let !d235 = fromIntegral i235 :: Double
-            chkI verts ((12 * i230) + (3 * i235) + (291 * i29)) 0 5
-            t236 <- rdU verts ((12 * i230) + (3 * i235) + (291 * i29))
-            t237 <- rdU verts (((12 * i230) + (3 * i235) + (291 * i29)) + 1)
-            t238 <- rdU verts (((12 * i230) + (3 * i235) + (291 * i29)) + 2)
-            t239 <- rdU verts (((12 * i230) + (3 * i235) + (291 * i29)) + 3)
-            t240 <- rdU verts (((12 * i230) + (3 * i235) + (291 * i29)) + 4)
-            t241 <- rdU verts (((12 * i230) + (3 * i235) + (291 * i29)) + 5)
-            loopI 1.0 4.0 $ \i242 -> do
-              let !d242 = fromIntegral i242 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + (d242 - 1.0)))) 0 0
-              t243 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + (d242 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + (d242 - 1.0))) + 1.0)) 0 0
-              t244 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + (d242 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + (d242 - 1.0))) + 2.0)) 0 0
-              t245 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + (d242 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + d242))) 0 0
-              t246 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + d242)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + d242)) + 1.0)) 0 0
-              t247 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + d242)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + d242)) + 2.0)) 0 0
-              t248 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)) + d242)) + 2.0))
-              t249 <- rdU locals 10
-              let !t250 = (negate t243)
-              let !t251 = (t246 + t250)
-              let !t252 = (negate t244)
-              let !t253 = (t247 + t252)
-              let !t254 = (negate t245)
-              let !t255 = (t248 + t254)
-              let !t256 = (((t251 * t251) + (t253 * t253)) + (t255 * t255))
-              let !t257 = (t239 + (negate t236))
-              let !t258 = (t240 + (negate t237))
-              let !t259 = (t241 + (negate t238))
-              let !t260 = (((t257 * t251) + (t258 * t253)) + (t259 * t255))
-              let !t261 = (((t257 * t257) + (t258 * t258)) + (t259 * t259))
-              let !t262 = ((t261 * t256) - (t260 * t260))
-              let !t263 = (t236 + t250)
-              let !t264 = (t237 + t252)
-              let !t265 = (t238 + t254)
-              let !t266 = (((t251 * t263) + (t253 * t264)) + (t255 * t265))
-              let !t267 = (((t257 * t263) + (t258 * t264)) + (t259 * t265))
-              let !t268 = (if ((abs t262) - 1.0e-300) > 0 then (((t260 * t266) - (t267 * t256)) / t262) else 0.0)
-              let !t269 = (if (t268 - 1.0) > 0 then 1.0 else t268)
-              let !t270 = (if (t262 - ((1.0e-12 * t261) * t256)) > 0 then (if (negate t269) > 0 then 0.0 else t269) else 0.0)
-              let !t271 = (if ((abs t256) - 1.0e-300) > 0 then (((t260 * t270) + t266) / t256) else 0.0)
-              let !t272 = ((abs t261) - 1.0e-300)
-              let !t273 = (if t272 > 0 then ((negate t267) / t261) else 0.0)
-              let !t274 = (if (t273 - 1.0) > 0 then 1.0 else t273)
-              let !t275 = (t271 - 1.0)
-              let !t276 = (if t272 > 0 then ((t260 - t267) / t261) else 0.0)
-              let !t277 = (if (t276 - 1.0) > 0 then 1.0 else t276)
-              let !t278 = (if (negate t271) > 0 then (if (negate t274) > 0 then 0.0 else t274) else (if t275 > 0 then (if (negate t277) > 0 then 0.0 else t277) else t270))
-              let !t279 = (if t275 > 0 then 1.0 else t271)
-              let !t280 = (if (negate t279) > 0 then 0.0 else t279)
-              let !t281 = ((0.5 * ((t231 - ((t231 * (d235 + t278)) / 4.0)) + (t234 - ((t234 * (d242 + t280)) / 4.0)))) - t249)
-              let !t282 = ((t236 + (t278 * t257)) + (negate (t243 + (t280 * t251))))
-              let !t283 = ((t237 + (t278 * t258)) + (negate (t244 + (t280 * t253))))
-              let !t284 = ((t238 + (t278 * t259)) + (negate (t245 + (t280 * t255))))
-              let !t285 = ((0.3 * ((if (t234 - t231) > 0 then t231 else t234) / 4.0)) - (sqrt (((t282 * t282) + (t283 * t283)) + (t284 * t284))))
-              if (if (t281 - t285) > 0 then t285 else t281) > 0 then do
-                wrU locals 10 (0.5 * ((t231 - ((t231 * (d235 + t278)) / 4.0)) + (t234 - ((t234 * (d242 + t280)) / 4.0))))
-                chkI verts ((12 * i230) + (291 * i29)) 3 5
-                t286 <- rdU verts (((12 * i230) + (291 * i29)) + 3)
-                t287 <- rdU verts (((12 * i230) + (291 * i29)) + 4)
-                t288 <- rdU verts (((12 * i230) + (291 * i29)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0)))) 0 0
-                t289 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t290 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t291 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t233 - (24.0 * (floorF (t233 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 11 (t236 + (t278 * t257))
-                wrU locals 12 (t237 + (t278 * t258))
-                wrU locals 13 (t238 + (t278 * t259))
-                let !t292 = (negate t216)
-                let !t293 = (t286 + t292)
-                let !t294 = (negate t217)
-                let !t295 = (t287 + t294)
-                let !t296 = (negate t218)
-                let !t297 = (t288 + t296)
-                let !t298 = (sqrt (((t293 * t293) + (t295 * t295)) + (t297 * t297)))
-                let !t299 = (t289 + t292)
-                let !t300 = (t290 + t294)
-                let !t301 = (t291 + t296)
-                let !t302 = (sqrt (((t299 * t299) + (t300 * t300)) + (t301 * t301)))
-                wrU locals 14 (negate (((if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0) * t293) + ((if t302 > 0 then (recip (if (t302 - 1.0e-300) > 0 then t302 else 1.0e-300)) else 0.0) * t299)))
-                wrU locals 15 (negate (((if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0) * t295) + ((if t302 > 0 then (recip (if (t302 - 1.0e-300) > 0 then t302 else 1.0e-300)) else 0.0) * t300)))
-                wrU locals 16 (negate (((if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0) * t297) + ((if t302 > 0 then (recip (if (t302 - 1.0e-300) > 0 then t302 else 1.0e-300)) else 0.0) * t301)))
+        loopI 1.0 4.0 $ \i231 -> do
+          let !d231 = fromIntegral i231 :: Double
+          chkI verts ((12 * i230) + (3 * i231) + (291 * i29)) 0 5
+          t232 <- rdU verts ((12 * i230) + (3 * i231) + (291 * i29))
+          t233 <- rdU verts (((12 * i230) + (3 * i231) + (291 * i29)) + 1)
+          t234 <- rdU verts (((12 * i230) + (3 * i231) + (291 * i29)) + 2)
+          t235 <- rdU verts (((12 * i230) + (3 * i231) + (291 * i29)) + 3)
+          t236 <- rdU verts (((12 * i230) + (3 * i231) + (291 * i29)) + 4)
+          t237 <- rdU verts (((12 * i230) + (3 * i231) + (291 * i29)) + 5)
+          t238 <- rdU locals 17
+          let !t239 = (t235 + (negate t232))
+          let !t240 = (t236 + (negate t233))
+          let !t241 = (t237 + (negate t234))
+          let !t242 = (((t239 * t239) + (t240 * t240)) + (t241 * t241))
+          wrU locals 17 (if (t242 - t238) > 0 then t242 else t238)
+          pure ()
+        pure ()
+      t243 <- rdU locals 17
+      let !s244 = (sqrt t243)
+      loopI 0.0 24.0 $ \i245 -> do
+        let !d245 = fromIntegral i245 :: Double
+        chkI radii (i245 + (24 * i29)) 0 0
+        t246 <- rdU radii (i245 + (24 * i29))
+        loopI 6.0 12.0 $ \i247 -> do
+          let !d247 = fromIntegral i247 :: Double
+          let !t248 = (d245 + d247)
+          chkI radii (truncate ((24.0 * d29) + (t248 - (24.0 * (floorF (t248 / 24.0)))))) 0 0
+          t249 <- rdU radii (truncate ((24.0 * d29) + (t248 - (24.0 * (floorF (t248 / 24.0))))))
+          let !s250 = ((if (t249 - t246) > 0 then t246 else t249) / 4.0)
+          let !t251 = ((0.3 * s250) + s244)
+          let !s252 = ((t251 * t251) * 1.000001)
+          loopI 1.0 4.0 $ \i253 -> do
+            let !d253 = fromIntegral i253 :: Double
+            chkI verts ((12 * i245) + (3 * i253) + (291 * i29)) 0 5
+            t254 <- rdU verts ((12 * i245) + (3 * i253) + (291 * i29))
+            t255 <- rdU verts (((12 * i245) + (3 * i253) + (291 * i29)) + 1)
+            t256 <- rdU verts (((12 * i245) + (3 * i253) + (291 * i29)) + 2)
+            t257 <- rdU verts (((12 * i245) + (3 * i253) + (291 * i29)) + 3)
+            t258 <- rdU verts (((12 * i245) + (3 * i253) + (291 * i29)) + 4)
+            t259 <- rdU verts (((12 * i245) + (3 * i253) + (291 * i29)) + 5)
+            loopI 1.0 4.0 $ \i260 -> do
+              let !d260 = fromIntegral i260 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d260 - 1.0)))) 0 0
+              t261 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d260 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d260 - 1.0))) + 1.0)) 0 0
+              t262 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d260 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d260 - 1.0))) + 2.0)) 0 0
+              t263 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + (d260 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d260))) 0 0
+              t264 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d260)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d260)) + 1.0)) 0 0
+              t265 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d260)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d260)) + 2.0)) 0 0
+              t266 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)) + d260)) + 2.0))
+              let !t267 = (0.5 * ((t254 + t257) + (negate (t261 + t264))))
+              let !t268 = (0.5 * ((t255 + t258) + (negate (t262 + t265))))
+              let !t269 = (0.5 * ((t256 + t259) + (negate (t263 + t266))))
+              if (s252 - (((t267 * t267) + (t268 * t268)) + (t269 * t269))) > 0 then do
+                t270 <- rdU locals 10
+                let !t271 = (negate t261)
+                let !t272 = (t264 + t271)
+                let !t273 = (negate t262)
+                let !t274 = (t265 + t273)
+                let !t275 = (negate t263)
+                let !t276 = (t266 + t275)
+                let !t277 = (((t272 * t272) + (t274 * t274)) + (t276 * t276))
+                let !t278 = (t257 + (negate t254))
+                let !t279 = (t258 + (negate t255))
+                let !t280 = (t259 + (negate t256))
+                let !t281 = (((t278 * t272) + (t279 * t274)) + (t280 * t276))
+                let !t282 = (((t278 * t278) + (t279 * t279)) + (t280 * t280))
+                let !t283 = ((t282 * t277) - (t281 * t281))
+                let !t284 = (t254 + t271)
+                let !t285 = (t255 + t273)
+                let !t286 = (t256 + t275)
+                let !t287 = (((t272 * t284) + (t274 * t285)) + (t276 * t286))
+                let !t288 = (((t278 * t284) + (t279 * t285)) + (t280 * t286))
+                let !t289 = (if ((abs t283) - 1.0e-300) > 0 then (((t281 * t287) - (t288 * t277)) / t283) else 0.0)
+                let !t290 = (if (t289 - 1.0) > 0 then 1.0 else t289)
+                let !t291 = (if (t283 - ((1.0e-12 * t282) * t277)) > 0 then (if (negate t290) > 0 then 0.0 else t290) else 0.0)
+                let !t292 = (if ((abs t277) - 1.0e-300) > 0 then (((t281 * t291) + t287) / t277) else 0.0)
+                let !t293 = ((abs t282) - 1.0e-300)
+                let !t294 = (if t293 > 0 then ((negate t288) / t282) else 0.0)
+                let !t295 = (if (t294 - 1.0) > 0 then 1.0 else t294)
+                let !t296 = (t292 - 1.0)
+                let !t297 = (if t293 > 0 then ((t281 - t288) / t282) else 0.0)
+                let !t298 = (if (t297 - 1.0) > 0 then 1.0 else t297)
+                let !t299 = (if (negate t292) > 0 then (if (negate t295) > 0 then 0.0 else t295) else (if t296 > 0 then (if (negate t298) > 0 then 0.0 else t298) else t291))
+                let !t300 = (if t296 > 0 then 1.0 else t292)
+                let !t301 = (if (negate t300) > 0 then 0.0 else t300)
+                let !t302 = ((0.5 * ((t246 - ((t246 * (d253 + t299)) / 4.0)) + (t249 - ((t249 * (d260 + t301)) / 4.0)))) - t270)
+                let !t303 = ((t254 + (t299 * t278)) + (negate (t261 + (t301 * t272))))
+                let !t304 = ((t255 + (t299 * t279)) + (negate (t262 + (t301 * t274))))
+                let !t305 = ((t256 + (t299 * t280)) + (negate (t263 + (t301 * t276))))
+                let !t306 = ((0.3 * s250) - (sqrt (((t303 * t303) + (t304 * t304)) + (t305 * t305))))
+                if (if (t302 - t306) > 0 then t306 else t302) > 0 then do
+                  wrU locals 10 (0.5 * ((t246 - ((t246 * (d253 + t299)) / 4.0)) + (t249 - ((t249 * (d260 + t301)) / 4.0))))
+                  chkI verts ((12 * i245) + (291 * i29)) 3 5
+                  t307 <- rdU verts (((12 * i245) + (291 * i29)) + 3)
+                  t308 <- rdU verts (((12 * i245) + (291 * i29)) + 4)
+                  t309 <- rdU verts (((12 * i245) + (291 * i29)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0)))) 0 0
+                  t310 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t311 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t312 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t248 - (24.0 * (floorF (t248 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 11 (t254 + (t299 * t278))
+                  wrU locals 12 (t255 + (t299 * t279))
+                  wrU locals 13 (t256 + (t299 * t280))
+                  let !t313 = (negate t216)
+                  let !t314 = (t307 + t313)
+                  let !t315 = (negate t217)
+                  let !t316 = (t308 + t315)
+                  let !t317 = (negate t218)
+                  let !t318 = (t309 + t317)
+                  let !t319 = (sqrt (((t314 * t314) + (t316 * t316)) + (t318 * t318)))
+                  let !t320 = (t310 + t313)
+                  let !t321 = (t311 + t315)
+                  let !t322 = (t312 + t317)
+                  let !t323 = (sqrt (((t320 * t320) + (t321 * t321)) + (t322 * t322)))
+                  wrU locals 14 (negate (((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t314) + ((if t323 > 0 then (recip (if (t323 - 1.0e-300) > 0 then t323 else 1.0e-300)) else 0.0) * t320)))
+                  wrU locals 15 (negate (((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t316) + ((if t323 > 0 then (recip (if (t323 - 1.0e-300) > 0 then t323 else 1.0e-300)) else 0.0) * t321)))
+                  wrU locals 16 (negate (((if t319 > 0 then (recip (if (t319 - 1.0e-300) > 0 then t319 else 1.0e-300)) else 0.0) * t318) + ((if t323 > 0 then (recip (if (t323 - 1.0e-300) > 0 then t323 else 1.0e-300)) else 0.0) * t322)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -645,111 +677,111 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t303 <- rdU locals 10
-      if t303 > 0 then do
-        t304 <- rdU locals 11
-        t305 <- rdU locals 12
-        t306 <- rdU locals 13
-        t307 <- rdU locals 14
-        t308 <- rdU locals 15
-        t309 <- rdU locals 16
-        let !t310 = (t308 + (negate t308))
-        let !t311 = (sqrt (((t307 * t307) + (t310 * t310)) + (t309 * t309)))
-        let !t312 = (if t311 > 0 then (recip (if (t311 - 1.0e-300) > 0 then t311 else 1.0e-300)) else 0.0)
-        let !s313 = (t312 * t307)
-        let !s314 = (t312 * t310)
-        let !s315 = (t312 * t309)
-        t316 <- rdU meta 2
-        t317 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t317) > 0 then 1.0 else t317)) - t316) - 0.5) > 0 then do
-          wrU meta 2 (t316 + 1.0)
-          t318 <- rdU pos (3 * i29)
-          t319 <- rdU pos ((3 * i29) + 1)
-          t320 <- rdU pos ((3 * i29) + 2)
-          t321 <- rdU normal (3 * i29)
-          t322 <- rdU normal ((3 * i29) + 1)
-          t323 <- rdU normal ((3 * i29) + 2)
+      t324 <- rdU locals 10
+      if t324 > 0 then do
+        t325 <- rdU locals 11
+        t326 <- rdU locals 12
+        t327 <- rdU locals 13
+        t328 <- rdU locals 14
+        t329 <- rdU locals 15
+        t330 <- rdU locals 16
+        let !t331 = (t329 + (negate t329))
+        let !t332 = (sqrt (((t328 * t328) + (t331 * t331)) + (t330 * t330)))
+        let !t333 = (if t332 > 0 then (recip (if (t332 - 1.0e-300) > 0 then t332 else 1.0e-300)) else 0.0)
+        let !s334 = (t333 * t328)
+        let !s335 = (t333 * t331)
+        let !s336 = (t333 * t330)
+        t337 <- rdU meta 2
+        t338 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t338) > 0 then 1.0 else t338)) - t337) - 0.5) > 0 then do
+          wrU meta 2 (t337 + 1.0)
+          t339 <- rdU pos (3 * i29)
+          t340 <- rdU pos ((3 * i29) + 1)
+          t341 <- rdU pos ((3 * i29) + 2)
+          t342 <- rdU normal (3 * i29)
+          t343 <- rdU normal ((3 * i29) + 1)
+          t344 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t324 <- rdU axis (3 * i29)
-          t325 <- rdU axis ((3 * i29) + 1)
-          t326 <- rdU axis ((3 * i29) + 2)
-          let !s327 = ((t322 * t326) - (t323 * t325))
-          let !s328 = ((t323 * t324) - (t321 * t326))
-          let !s329 = ((t321 * t325) - (t322 * t324))
+          t345 <- rdU axis (3 * i29)
+          t346 <- rdU axis ((3 * i29) + 1)
+          t347 <- rdU axis ((3 * i29) + 2)
+          let !s348 = ((t343 * t347) - (t344 * t346))
+          let !s349 = ((t344 * t345) - (t342 * t347))
+          let !s350 = ((t342 * t346) - (t343 * t345))
           chkI scalars (6 * i29) 0 0
-          t330 <- rdU scalars (6 * i29)
-          t331 <- rdU scalars ((6 * i29) + 5)
-          t332 <- rdU scalars ((6 * i29) + 2)
-          t333 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t316)) 0 29
-          wrU contacts (30 * (truncate t316)) d29
-          wrU contacts ((30 * (truncate t316)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t316)) + 2) d29
-          wrU contacts ((30 * (truncate t316)) + 3) 12.0
-          wrU contacts ((30 * (truncate t316)) + 4) (s313 + (negate ((((t321 * s313) + (t322 * s314)) + (t323 * s315)) * t321)))
-          wrU contacts ((30 * (truncate t316)) + 5) (s314 + (negate ((((t321 * s313) + (t322 * s314)) + (t323 * s315)) * t322)))
-          wrU contacts ((30 * (truncate t316)) + 6) (s315 + (negate ((((t321 * s313) + (t322 * s314)) + (t323 * s315)) * t323)))
-          wrU contacts ((30 * (truncate t316)) + 7) 0.0
-          wrU contacts ((30 * (truncate t316)) + 12) 0.0
-          wrU contacts ((30 * (truncate t316)) + 13) 0.0
-          wrU contacts ((30 * (truncate t316)) + 14) 0.0
-          wrU contacts ((30 * (truncate t316)) + 15) 0.0
-          wrU contacts ((30 * (truncate t316)) + 20) t303
-          wrU contacts ((30 * (truncate t316)) + 26) 0.6
-          wrU contacts ((30 * (truncate t316)) + 27) t304
-          wrU contacts ((30 * (truncate t316)) + 28) t305
-          wrU contacts ((30 * (truncate t316)) + 29) t306
+          t351 <- rdU scalars (6 * i29)
+          t352 <- rdU scalars ((6 * i29) + 5)
+          t353 <- rdU scalars ((6 * i29) + 2)
+          t354 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t337)) 0 29
+          wrU contacts (30 * (truncate t337)) d29
+          wrU contacts ((30 * (truncate t337)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t337)) + 2) d29
+          wrU contacts ((30 * (truncate t337)) + 3) 12.0
+          wrU contacts ((30 * (truncate t337)) + 4) (s334 + (negate ((((t342 * s334) + (t343 * s335)) + (t344 * s336)) * t342)))
+          wrU contacts ((30 * (truncate t337)) + 5) (s335 + (negate ((((t342 * s334) + (t343 * s335)) + (t344 * s336)) * t343)))
+          wrU contacts ((30 * (truncate t337)) + 6) (s336 + (negate ((((t342 * s334) + (t343 * s335)) + (t344 * s336)) * t344)))
+          wrU contacts ((30 * (truncate t337)) + 7) 0.0
+          wrU contacts ((30 * (truncate t337)) + 12) 0.0
+          wrU contacts ((30 * (truncate t337)) + 13) 0.0
+          wrU contacts ((30 * (truncate t337)) + 14) 0.0
+          wrU contacts ((30 * (truncate t337)) + 15) 0.0
+          wrU contacts ((30 * (truncate t337)) + 20) t324
+          wrU contacts ((30 * (truncate t337)) + 26) 0.6
+          wrU contacts ((30 * (truncate t337)) + 27) t325
+          wrU contacts ((30 * (truncate t337)) + 28) t326
+          wrU contacts ((30 * (truncate t337)) + 29) t327
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t334 <- rdU pos (-3)
-            t335 <- rdU pos (-2)
-            t336 <- rdU pos (-1)
+            t355 <- rdU pos (-3)
+            t356 <- rdU pos (-2)
+            t357 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t337 <- rdU normal (-3)
-            t338 <- rdU normal (-2)
-            t339 <- rdU normal (-1)
+            t358 <- rdU normal (-3)
+            t359 <- rdU normal (-2)
+            t360 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t340 <- rdU axis (-3)
-            t341 <- rdU axis (-2)
-            t342 <- rdU axis (-1)
-            let !s343 = ((t338 * t342) - (t339 * t341))
-            let !s344 = ((t339 * t340) - (t337 * t342))
-            let !s345 = ((t337 * t341) - (t338 * t340))
+            t361 <- rdU axis (-3)
+            t362 <- rdU axis (-2)
+            t363 <- rdU axis (-1)
+            let !s364 = ((t359 * t363) - (t360 * t362))
+            let !s365 = ((t360 * t361) - (t358 * t363))
+            let !s366 = ((t358 * t362) - (t359 * t361))
             chkI scalars 0 (-6) (-1)
-            t346 <- rdU scalars (-6)
-            t347 <- rdU scalars (-1)
-            t348 <- rdU scalars (-4)
-            t349 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t316)) + 8) (s313 + (negate ((((t337 * s313) + (t338 * s314)) + (t339 * s315)) * t337)))
-            wrU contacts ((30 * (truncate t316)) + 9) (s314 + (negate ((((t337 * s313) + (t338 * s314)) + (t339 * s315)) * t338)))
-            wrU contacts ((30 * (truncate t316)) + 10) (s315 + (negate ((((t337 * s313) + (t338 * s314)) + (t339 * s315)) * t339)))
-            let !t350 = (t305 + (negate t335))
-            let !t351 = (t306 + (negate t336))
-            let !t352 = (t304 + (negate t334))
-            wrU contacts ((30 * (truncate t316)) + 11) (((((t350 * s315) - (t351 * s314)) * t337) + (((t351 * s313) - (t352 * s315)) * t338)) + (((t352 * s314) - (t350 * s313)) * t339))
-            let !t353 = ((t322 * s315) - (t323 * s314))
-            wrU contacts ((30 * (truncate t316)) + 16) (t353 + (negate ((((t337 * t353) + (t338 * ((t323 * s313) - (t321 * s315)))) + (t339 * ((t321 * s314) - (t322 * s313)))) * t337)))
-            let !t354 = ((t323 * s313) - (t321 * s315))
-            wrU contacts ((30 * (truncate t316)) + 17) (t354 + (negate ((((t337 * t353) + (t338 * t354)) + (t339 * ((t321 * s314) - (t322 * s313)))) * t338)))
-            let !t355 = ((t321 * s314) - (t322 * s313))
-            wrU contacts ((30 * (truncate t316)) + 18) (t355 + (negate ((((t337 * t353) + (t338 * t354)) + (t339 * t355)) * t339)))
-            wrU contacts ((30 * (truncate t316)) + 19) (((((t350 * t355) - (t351 * t354)) * t337) + (((t351 * t353) - (t352 * t355)) * t338)) + (((t352 * t354) - (t350 * t353)) * t339))
+            t367 <- rdU scalars (-6)
+            t368 <- rdU scalars (-1)
+            t369 <- rdU scalars (-4)
+            t370 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t337)) + 8) (s334 + (negate ((((t358 * s334) + (t359 * s335)) + (t360 * s336)) * t358)))
+            wrU contacts ((30 * (truncate t337)) + 9) (s335 + (negate ((((t358 * s334) + (t359 * s335)) + (t360 * s336)) * t359)))
+            wrU contacts ((30 * (truncate t337)) + 10) (s336 + (negate ((((t358 * s334) + (t359 * s335)) + (t360 * s336)) * t360)))
+            let !t371 = (t326 + (negate t356))
+            let !t372 = (t327 + (negate t357))
+            let !t373 = (t325 + (negate t355))
+            wrU contacts ((30 * (truncate t337)) + 11) (((((t371 * s336) - (t372 * s335)) * t358) + (((t372 * s334) - (t373 * s336)) * t359)) + (((t373 * s335) - (t371 * s334)) * t360))
+            let !t374 = ((t343 * s336) - (t344 * s335))
+            wrU contacts ((30 * (truncate t337)) + 16) (t374 + (negate ((((t358 * t374) + (t359 * ((t344 * s334) - (t342 * s336)))) + (t360 * ((t342 * s335) - (t343 * s334)))) * t358)))
+            let !t375 = ((t344 * s334) - (t342 * s336))
+            wrU contacts ((30 * (truncate t337)) + 17) (t375 + (negate ((((t358 * t374) + (t359 * t375)) + (t360 * ((t342 * s335) - (t343 * s334)))) * t359)))
+            let !t376 = ((t342 * s335) - (t343 * s334))
+            wrU contacts ((30 * (truncate t337)) + 18) (t376 + (negate ((((t358 * t374) + (t359 * t375)) + (t360 * t376)) * t360)))
+            wrU contacts ((30 * (truncate t337)) + 19) (((((t371 * t376) - (t372 * t375)) * t358) + (((t372 * t374) - (t373 * t376)) * t359)) + (((t373 * t375) - (t371 * t374)) * t360))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t316)) + 8) 0.0
-            wrU contacts ((30 * (truncate t316)) + 9) 0.0
-            wrU contacts ((30 * (truncate t316)) + 10) 0.0
-            wrU contacts ((30 * (truncate t316)) + 11) 0.0
-            wrU contacts ((30 * (truncate t316)) + 16) 0.0
-            wrU contacts ((30 * (truncate t316)) + 17) 0.0
-            wrU contacts ((30 * (truncate t316)) + 18) 0.0
-            wrU contacts ((30 * (truncate t316)) + 19) 0.0
+            wrU contacts ((30 * (truncate t337)) + 8) 0.0
+            wrU contacts ((30 * (truncate t337)) + 9) 0.0
+            wrU contacts ((30 * (truncate t337)) + 10) 0.0
+            wrU contacts ((30 * (truncate t337)) + 11) 0.0
+            wrU contacts ((30 * (truncate t337)) + 16) 0.0
+            wrU contacts ((30 * (truncate t337)) + 17) 0.0
+            wrU contacts ((30 * (truncate t337)) + 18) 0.0
+            wrU contacts ((30 * (truncate t337)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t356 <- rdU meta 6
-          wrU meta 6 (t356 + 1.0)
+          t377 <- rdU meta 6
+          wrU meta 6 (t377 + 1.0)
           pure ()
         pure ()
       else do

@@ -73,7 +73,7 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 10
+  chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
   t0 <- rdU meta 0
@@ -245,104 +245,136 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 0.0
       wrU locals 9 0.0
       wrU locals 10 0.0
+      wrU locals 11 0.0
       loopI 0.0 24.0 $ \i83 -> do
         let !d83 = fromIntegral i83 :: Double
-        chkI radii ((24 * i29) + i83) 0 0
-        t84 <- rdU radii ((24 * i29) + i83)
-        loopI 6.0 12.0 $ \i85 -> do
-          let !d85 = fromIntegral i85 :: Double
-          let !t86 = (d83 + d85)
-          chkI radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0)))))) 0 0
-          t87 <- rdU radii (truncate ((24.0 * d29) + (t86 - (24.0 * (floorF (t86 / 24.0))))))
-          loopI 1.0 4.0 $ \i88 -> do
-            let !d88 = fromIntegral i88 :: Double
-            chkI verts ((291 * i29) + (12 * i83) + (3 * i88)) 0 5
-            t89 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i88))
-            t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 1)
-            t91 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 2)
-            t92 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 3)
-            t93 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 4)
-            t94 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i88)) + 5)
-            loopI 1.0 4.0 $ \i95 -> do
-              let !d95 = fromIntegral i95 :: Double
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0)))) 0 0
-              t96 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0)) 0 0
-              t97 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0)) 0 0
-              t98 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + (d95 - 1.0))) + 2.0))
-              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95))) 0 0
-              t99 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0)) 0 0
-              t100 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 1.0))
-              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0)) 0 0
-              t101 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)) + d95)) + 2.0))
-              t102 <- rdU locals 4
-              let !t103 = (negate t96)
-              let !t104 = (t99 + t103)
-              let !t105 = (negate t97)
-              let !t106 = (t100 + t105)
-              let !t107 = (negate t98)
-              let !t108 = (t101 + t107)
-              let !t109 = (((t104 * t104) + (t106 * t106)) + (t108 * t108))
-              let !t110 = (t92 + (negate t89))
-              let !t111 = (t93 + (negate t90))
-              let !t112 = (t94 + (negate t91))
-              let !t113 = (((t110 * t104) + (t111 * t106)) + (t112 * t108))
-              let !t114 = (((t110 * t110) + (t111 * t111)) + (t112 * t112))
-              let !t115 = ((t114 * t109) - (t113 * t113))
-              let !t116 = (t89 + t103)
-              let !t117 = (t90 + t105)
-              let !t118 = (t91 + t107)
-              let !t119 = (((t104 * t116) + (t106 * t117)) + (t108 * t118))
-              let !t120 = (((t110 * t116) + (t111 * t117)) + (t112 * t118))
-              let !t121 = (if ((abs t115) - 1.0e-300) > 0 then (((t113 * t119) - (t120 * t109)) / t115) else 0.0)
-              let !t122 = (if (t121 - 1.0) > 0 then 1.0 else t121)
-              let !t123 = (if (t115 - ((1.0e-12 * t114) * t109)) > 0 then (if (negate t122) > 0 then 0.0 else t122) else 0.0)
-              let !t124 = (if ((abs t109) - 1.0e-300) > 0 then (((t113 * t123) + t119) / t109) else 0.0)
-              let !t125 = ((abs t114) - 1.0e-300)
-              let !t126 = (if t125 > 0 then ((negate t120) / t114) else 0.0)
-              let !t127 = (if (t126 - 1.0) > 0 then 1.0 else t126)
-              let !t128 = (t124 - 1.0)
-              let !t129 = (if t125 > 0 then ((t113 - t120) / t114) else 0.0)
-              let !t130 = (if (t129 - 1.0) > 0 then 1.0 else t129)
-              let !t131 = (if (negate t124) > 0 then (if (negate t127) > 0 then 0.0 else t127) else (if t128 > 0 then (if (negate t130) > 0 then 0.0 else t130) else t123))
-              let !t132 = (if t128 > 0 then 1.0 else t124)
-              let !t133 = (if (negate t132) > 0 then 0.0 else t132)
-              let !t134 = ((0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0)))) - t102)
-              let !t135 = ((t89 + (t131 * t110)) + (negate (t96 + (t133 * t104))))
-              let !t136 = ((t90 + (t131 * t111)) + (negate (t97 + (t133 * t106))))
-              let !t137 = ((t91 + (t131 * t112)) + (negate (t98 + (t133 * t108))))
-              let !t138 = ((0.3 * ((if (t87 - t84) > 0 then t84 else t87) / 4.0)) - (sqrt (((t135 * t135) + (t136 * t136)) + (t137 * t137))))
-              if (if (t134 - t138) > 0 then t138 else t134) > 0 then do
-                wrU locals 4 (0.5 * ((t84 - ((t84 * (d88 + t131)) / 4.0)) + (t87 - ((t87 * (d95 + t133)) / 4.0))))
-                chkI verts ((291 * i29) + (12 * i83)) 3 5
-                t139 <- rdU verts (((291 * i29) + (12 * i83)) + 3)
-                t140 <- rdU verts (((291 * i29) + (12 * i83)) + 4)
-                t141 <- rdU verts (((291 * i29) + (12 * i83)) + 5)
-                chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0)))) 0 0
-                t142 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0)) 0 0
-                t143 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 1.0))
-                chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0)) 0 0
-                t144 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t86 - (24.0 * (floorF (t86 / 24.0)))) * 4.0))) + 2.0))
-                wrU locals 5 (t89 + (t131 * t110))
-                wrU locals 6 (t90 + (t131 * t111))
-                wrU locals 7 (t91 + (t131 * t112))
-                let !t145 = (negate t69)
-                let !t146 = (t139 + t145)
-                let !t147 = (negate t70)
-                let !t148 = (t140 + t147)
-                let !t149 = (negate t71)
-                let !t150 = (t141 + t149)
-                let !t151 = (sqrt (((t146 * t146) + (t148 * t148)) + (t150 * t150)))
-                let !t152 = (t142 + t145)
-                let !t153 = (t143 + t147)
-                let !t154 = (t144 + t149)
-                let !t155 = (sqrt (((t152 * t152) + (t153 * t153)) + (t154 * t154)))
-                wrU locals 8 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t146) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t152)))
-                wrU locals 9 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t148) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t153)))
-                wrU locals 10 (negate (((if t151 > 0 then (recip (if (t151 - 1.0e-300) > 0 then t151 else 1.0e-300)) else 0.0) * t150) + ((if t155 > 0 then (recip (if (t155 - 1.0e-300) > 0 then t155 else 1.0e-300)) else 0.0) * t154)))
+        loopI 1.0 4.0 $ \i84 -> do
+          let !d84 = fromIntegral i84 :: Double
+          chkI verts ((291 * i29) + (12 * i83) + (3 * i84)) 0 5
+          t85 <- rdU verts ((291 * i29) + (12 * i83) + (3 * i84))
+          t86 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 1)
+          t87 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 2)
+          t88 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 3)
+          t89 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 4)
+          t90 <- rdU verts (((291 * i29) + (12 * i83) + (3 * i84)) + 5)
+          t91 <- rdU locals 11
+          let !t92 = (t88 + (negate t85))
+          let !t93 = (t89 + (negate t86))
+          let !t94 = (t90 + (negate t87))
+          let !t95 = (((t92 * t92) + (t93 * t93)) + (t94 * t94))
+          wrU locals 11 (if (t95 - t91) > 0 then t95 else t91)
+          pure ()
+        pure ()
+      t96 <- rdU locals 11
+      let !s97 = (sqrt t96)
+      loopI 0.0 24.0 $ \i98 -> do
+        let !d98 = fromIntegral i98 :: Double
+        chkI radii ((24 * i29) + i98) 0 0
+        t99 <- rdU radii ((24 * i29) + i98)
+        loopI 6.0 12.0 $ \i100 -> do
+          let !d100 = fromIntegral i100 :: Double
+          let !t101 = (d98 + d100)
+          chkI radii (truncate ((24.0 * d29) + (t101 - (24.0 * (floorF (t101 / 24.0)))))) 0 0
+          t102 <- rdU radii (truncate ((24.0 * d29) + (t101 - (24.0 * (floorF (t101 / 24.0))))))
+          let !s103 = ((if (t102 - t99) > 0 then t99 else t102) / 4.0)
+          let !t104 = ((0.3 * s103) + s97)
+          let !s105 = ((t104 * t104) * 1.000001)
+          loopI 1.0 4.0 $ \i106 -> do
+            let !d106 = fromIntegral i106 :: Double
+            chkI verts ((3 * i106) + (291 * i29) + (12 * i98)) 0 5
+            t107 <- rdU verts ((3 * i106) + (291 * i29) + (12 * i98))
+            t108 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 1)
+            t109 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 2)
+            t110 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 3)
+            t111 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 4)
+            t112 <- rdU verts (((3 * i106) + (291 * i29) + (12 * i98)) + 5)
+            loopI 1.0 4.0 $ \i113 -> do
+              let !d113 = fromIntegral i113 :: Double
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0)))) 0 0
+              t114 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 1.0)) 0 0
+              t115 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 2.0)) 0 0
+              t116 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + (d113 - 1.0))) + 2.0))
+              chkI verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113))) 0 0
+              t117 <- rdU verts (truncate (3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 1.0)) 0 0
+              t118 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 1.0))
+              chkI verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 2.0)) 0 0
+              t119 <- rdU verts (truncate ((3.0 * ((((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)) + d113)) + 2.0))
+              let !t120 = (0.5 * ((t107 + t110) + (negate (t114 + t117))))
+              let !t121 = (0.5 * ((t108 + t111) + (negate (t115 + t118))))
+              let !t122 = (0.5 * ((t109 + t112) + (negate (t116 + t119))))
+              if (s105 - (((t120 * t120) + (t121 * t121)) + (t122 * t122))) > 0 then do
+                t123 <- rdU locals 4
+                let !t124 = (negate t114)
+                let !t125 = (t117 + t124)
+                let !t126 = (negate t115)
+                let !t127 = (t118 + t126)
+                let !t128 = (negate t116)
+                let !t129 = (t119 + t128)
+                let !t130 = (((t125 * t125) + (t127 * t127)) + (t129 * t129))
+                let !t131 = (t110 + (negate t107))
+                let !t132 = (t111 + (negate t108))
+                let !t133 = (t112 + (negate t109))
+                let !t134 = (((t131 * t125) + (t132 * t127)) + (t133 * t129))
+                let !t135 = (((t131 * t131) + (t132 * t132)) + (t133 * t133))
+                let !t136 = ((t135 * t130) - (t134 * t134))
+                let !t137 = (t107 + t124)
+                let !t138 = (t108 + t126)
+                let !t139 = (t109 + t128)
+                let !t140 = (((t125 * t137) + (t127 * t138)) + (t129 * t139))
+                let !t141 = (((t131 * t137) + (t132 * t138)) + (t133 * t139))
+                let !t142 = (if ((abs t136) - 1.0e-300) > 0 then (((t134 * t140) - (t141 * t130)) / t136) else 0.0)
+                let !t143 = (if (t142 - 1.0) > 0 then 1.0 else t142)
+                let !t144 = (if (t136 - ((1.0e-12 * t135) * t130)) > 0 then (if (negate t143) > 0 then 0.0 else t143) else 0.0)
+                let !t145 = (if ((abs t130) - 1.0e-300) > 0 then (((t134 * t144) + t140) / t130) else 0.0)
+                let !t146 = ((abs t135) - 1.0e-300)
+                let !t147 = (if t146 > 0 then ((negate t141) / t135) else 0.0)
+                let !t148 = (if (t147 - 1.0) > 0 then 1.0 else t147)
+                let !t149 = (t145 - 1.0)
+                let !t150 = (if t146 > 0 then ((t134 - t141) / t135) else 0.0)
+                let !t151 = (if (t150 - 1.0) > 0 then 1.0 else t150)
+                let !t152 = (if (negate t145) > 0 then (if (negate t148) > 0 then 0.0 else t148) else (if t149 > 0 then (if (negate t151) > 0 then 0.0 else t151) else t144))
+                let !t153 = (if t149 > 0 then 1.0 else t145)
+                let !t154 = (if (negate t153) > 0 then 0.0 else t153)
+                let !t155 = ((0.5 * ((t99 - ((t99 * (d106 + t152)) / 4.0)) + (t102 - ((t102 * (d113 + t154)) / 4.0)))) - t123)
+                let !t156 = ((t107 + (t152 * t131)) + (negate (t114 + (t154 * t125))))
+                let !t157 = ((t108 + (t152 * t132)) + (negate (t115 + (t154 * t127))))
+                let !t158 = ((t109 + (t152 * t133)) + (negate (t116 + (t154 * t129))))
+                let !t159 = ((0.3 * s103) - (sqrt (((t156 * t156) + (t157 * t157)) + (t158 * t158))))
+                if (if (t155 - t159) > 0 then t159 else t155) > 0 then do
+                  wrU locals 4 (0.5 * ((t99 - ((t99 * (d106 + t152)) / 4.0)) + (t102 - ((t102 * (d113 + t154)) / 4.0))))
+                  chkI verts ((291 * i29) + (12 * i98)) 3 5
+                  t160 <- rdU verts (((291 * i29) + (12 * i98)) + 3)
+                  t161 <- rdU verts (((291 * i29) + (12 * i98)) + 4)
+                  t162 <- rdU verts (((291 * i29) + (12 * i98)) + 5)
+                  chkI verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0)))) 0 0
+                  t163 <- rdU verts (truncate (3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 1.0)) 0 0
+                  t164 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 1.0))
+                  chkI verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 2.0)) 0 0
+                  t165 <- rdU verts (truncate ((3.0 * (((97.0 * d29) + 1.0) + ((t101 - (24.0 * (floorF (t101 / 24.0)))) * 4.0))) + 2.0))
+                  wrU locals 5 (t107 + (t152 * t131))
+                  wrU locals 6 (t108 + (t152 * t132))
+                  wrU locals 7 (t109 + (t152 * t133))
+                  let !t166 = (negate t69)
+                  let !t167 = (t160 + t166)
+                  let !t168 = (negate t70)
+                  let !t169 = (t161 + t168)
+                  let !t170 = (negate t71)
+                  let !t171 = (t162 + t170)
+                  let !t172 = (sqrt (((t167 * t167) + (t169 * t169)) + (t171 * t171)))
+                  let !t173 = (t163 + t166)
+                  let !t174 = (t164 + t168)
+                  let !t175 = (t165 + t170)
+                  let !t176 = (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175)))
+                  wrU locals 8 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t167) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t173)))
+                  wrU locals 9 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t169) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t174)))
+                  wrU locals 10 (negate (((if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0) * t171) + ((if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0) * t175)))
+                  pure ()
+                else do
+                  pure ()
                 pure ()
               else do
                 pure ()
@@ -350,129 +382,129 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             pure ()
           pure ()
         pure ()
-      t156 <- rdU locals 4
-      if t156 > 0 then do
-        t157 <- rdU locals 5
-        t158 <- rdU locals 6
-        t159 <- rdU locals 7
-        t160 <- rdU locals 8
-        t161 <- rdU locals 9
-        t162 <- rdU locals 10
-        let !t163 = (sqrt ((t157 * t157) + (t159 * t159)))
-        let !t164 = (t163 - 0.8)
-        let !t165 = (recip (2.0 * (sqrt ((t164 * t164) + (t158 * t158)))))
-        let !t166 = (recip (2.0 * t163))
-        let !t167 = (t164 * (t166 * (t157 + t157)))
-        let !t168 = (t165 * (t167 + t167))
-        let !t169 = (t165 * (t158 + t158))
-        let !t170 = (t164 * (t166 * (t159 + t159)))
-        let !t171 = (t165 * (t170 + t170))
-        let !t172 = (sqrt (((t168 * t168) + (t169 * t169)) + (t171 * t171)))
-        let !t173 = (if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0)
-        let !s174 = (t173 * t168)
-        let !s175 = (t173 * t169)
-        let !s176 = (t173 * t171)
-        let !t177 = (((s174 * t160) + (s175 * t161)) + (s176 * t162))
-        let !t178 = (t160 + (negate (t177 * s174)))
-        let !t179 = (t161 + (negate (t177 * s175)))
-        let !t180 = (t162 + (negate (t177 * s176)))
-        let !t181 = (sqrt (((t178 * t178) + (t179 * t179)) + (t180 * t180)))
-        let !t182 = (if t181 > 0 then (recip (if (t181 - 1.0e-300) > 0 then t181 else 1.0e-300)) else 0.0)
-        let !s183 = (t182 * t178)
-        let !s184 = (t182 * t179)
-        let !s185 = (t182 * t180)
-        t186 <- rdU meta 2
-        t187 <- rdU meta 3
-        if (((8.0 * (if (1.0 - t187) > 0 then 1.0 else t187)) - t186) - 0.5) > 0 then do
-          wrU meta 2 (t186 + 1.0)
-          t188 <- rdU pos (3 * i29)
-          t189 <- rdU pos ((3 * i29) + 1)
-          t190 <- rdU pos ((3 * i29) + 2)
+      t177 <- rdU locals 4
+      if t177 > 0 then do
+        t178 <- rdU locals 5
+        t179 <- rdU locals 6
+        t180 <- rdU locals 7
+        t181 <- rdU locals 8
+        t182 <- rdU locals 9
+        t183 <- rdU locals 10
+        let !t184 = (sqrt ((t178 * t178) + (t180 * t180)))
+        let !t185 = (t184 - 0.8)
+        let !t186 = (recip (2.0 * (sqrt ((t185 * t185) + (t179 * t179)))))
+        let !t187 = (recip (2.0 * t184))
+        let !t188 = (t185 * (t187 * (t178 + t178)))
+        let !t189 = (t186 * (t188 + t188))
+        let !t190 = (t186 * (t179 + t179))
+        let !t191 = (t185 * (t187 * (t180 + t180)))
+        let !t192 = (t186 * (t191 + t191))
+        let !t193 = (sqrt (((t189 * t189) + (t190 * t190)) + (t192 * t192)))
+        let !t194 = (if t193 > 0 then (recip (if (t193 - 1.0e-300) > 0 then t193 else 1.0e-300)) else 0.0)
+        let !s195 = (t194 * t189)
+        let !s196 = (t194 * t190)
+        let !s197 = (t194 * t192)
+        let !t198 = (((s195 * t181) + (s196 * t182)) + (s197 * t183))
+        let !t199 = (t181 + (negate (t198 * s195)))
+        let !t200 = (t182 + (negate (t198 * s196)))
+        let !t201 = (t183 + (negate (t198 * s197)))
+        let !t202 = (sqrt (((t199 * t199) + (t200 * t200)) + (t201 * t201)))
+        let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
+        let !s204 = (t203 * t199)
+        let !s205 = (t203 * t200)
+        let !s206 = (t203 * t201)
+        t207 <- rdU meta 2
+        t208 <- rdU meta 3
+        if (((8.0 * (if (1.0 - t208) > 0 then 1.0 else t208)) - t207) - 0.5) > 0 then do
+          wrU meta 2 (t207 + 1.0)
+          t209 <- rdU pos (3 * i29)
+          t210 <- rdU pos ((3 * i29) + 1)
+          t211 <- rdU pos ((3 * i29) + 2)
           chkI normal (3 * i29) 0 2
-          t191 <- rdU normal (3 * i29)
-          t192 <- rdU normal ((3 * i29) + 1)
-          t193 <- rdU normal ((3 * i29) + 2)
+          t212 <- rdU normal (3 * i29)
+          t213 <- rdU normal ((3 * i29) + 1)
+          t214 <- rdU normal ((3 * i29) + 2)
           chkI axis (3 * i29) 0 2
-          t194 <- rdU axis (3 * i29)
-          t195 <- rdU axis ((3 * i29) + 1)
-          t196 <- rdU axis ((3 * i29) + 2)
-          let !s197 = ((t192 * t196) - (t193 * t195))
-          let !s198 = ((t193 * t194) - (t191 * t196))
-          let !s199 = ((t191 * t195) - (t192 * t194))
+          t215 <- rdU axis (3 * i29)
+          t216 <- rdU axis ((3 * i29) + 1)
+          t217 <- rdU axis ((3 * i29) + 2)
+          let !s218 = ((t213 * t217) - (t214 * t216))
+          let !s219 = ((t214 * t215) - (t212 * t217))
+          let !s220 = ((t212 * t216) - (t213 * t215))
           chkI scalars (6 * i29) 0 0
-          t200 <- rdU scalars (6 * i29)
-          t201 <- rdU scalars ((6 * i29) + 5)
-          t202 <- rdU scalars ((6 * i29) + 2)
-          t203 <- rdU scalars ((6 * i29) + 3)
-          chkI contacts (30 * (truncate t186)) 0 29
-          wrU contacts (30 * (truncate t186)) d29
-          wrU contacts ((30 * (truncate t186)) + 1) (-1.0)
-          wrU contacts ((30 * (truncate t186)) + 2) d29
-          wrU contacts ((30 * (truncate t186)) + 3) 12.0
-          wrU contacts ((30 * (truncate t186)) + 4) (s183 + (negate ((((t191 * s183) + (t192 * s184)) + (t193 * s185)) * t191)))
-          wrU contacts ((30 * (truncate t186)) + 5) (s184 + (negate ((((t191 * s183) + (t192 * s184)) + (t193 * s185)) * t192)))
-          wrU contacts ((30 * (truncate t186)) + 6) (s185 + (negate ((((t191 * s183) + (t192 * s184)) + (t193 * s185)) * t193)))
-          wrU contacts ((30 * (truncate t186)) + 7) 0.0
-          wrU contacts ((30 * (truncate t186)) + 12) 0.0
-          wrU contacts ((30 * (truncate t186)) + 13) 0.0
-          wrU contacts ((30 * (truncate t186)) + 14) 0.0
-          wrU contacts ((30 * (truncate t186)) + 15) 0.0
-          wrU contacts ((30 * (truncate t186)) + 20) t156
-          wrU contacts ((30 * (truncate t186)) + 26) 0.6
-          wrU contacts ((30 * (truncate t186)) + 27) t157
-          wrU contacts ((30 * (truncate t186)) + 28) t158
-          wrU contacts ((30 * (truncate t186)) + 29) t159
+          t221 <- rdU scalars (6 * i29)
+          t222 <- rdU scalars ((6 * i29) + 5)
+          t223 <- rdU scalars ((6 * i29) + 2)
+          t224 <- rdU scalars ((6 * i29) + 3)
+          chkI contacts (30 * (truncate t207)) 0 29
+          wrU contacts (30 * (truncate t207)) d29
+          wrU contacts ((30 * (truncate t207)) + 1) (-1.0)
+          wrU contacts ((30 * (truncate t207)) + 2) d29
+          wrU contacts ((30 * (truncate t207)) + 3) 12.0
+          wrU contacts ((30 * (truncate t207)) + 4) (s204 + (negate ((((t212 * s204) + (t213 * s205)) + (t214 * s206)) * t212)))
+          wrU contacts ((30 * (truncate t207)) + 5) (s205 + (negate ((((t212 * s204) + (t213 * s205)) + (t214 * s206)) * t213)))
+          wrU contacts ((30 * (truncate t207)) + 6) (s206 + (negate ((((t212 * s204) + (t213 * s205)) + (t214 * s206)) * t214)))
+          wrU contacts ((30 * (truncate t207)) + 7) 0.0
+          wrU contacts ((30 * (truncate t207)) + 12) 0.0
+          wrU contacts ((30 * (truncate t207)) + 13) 0.0
+          wrU contacts ((30 * (truncate t207)) + 14) 0.0
+          wrU contacts ((30 * (truncate t207)) + 15) 0.0
+          wrU contacts ((30 * (truncate t207)) + 20) t177
+          wrU contacts ((30 * (truncate t207)) + 26) 0.6
+          wrU contacts ((30 * (truncate t207)) + 27) t178
+          wrU contacts ((30 * (truncate t207)) + 28) t179
+          wrU contacts ((30 * (truncate t207)) + 29) t180
           if (-0.5) > 0 then do
             chkI pos 0 (-3) (-1)
-            t204 <- rdU pos (-3)
-            t205 <- rdU pos (-2)
-            t206 <- rdU pos (-1)
+            t225 <- rdU pos (-3)
+            t226 <- rdU pos (-2)
+            t227 <- rdU pos (-1)
             chkI normal 0 (-3) (-1)
-            t207 <- rdU normal (-3)
-            t208 <- rdU normal (-2)
-            t209 <- rdU normal (-1)
+            t228 <- rdU normal (-3)
+            t229 <- rdU normal (-2)
+            t230 <- rdU normal (-1)
             chkI axis 0 (-3) (-1)
-            t210 <- rdU axis (-3)
-            t211 <- rdU axis (-2)
-            t212 <- rdU axis (-1)
-            let !s213 = ((t208 * t212) - (t209 * t211))
-            let !s214 = ((t209 * t210) - (t207 * t212))
-            let !s215 = ((t207 * t211) - (t208 * t210))
+            t231 <- rdU axis (-3)
+            t232 <- rdU axis (-2)
+            t233 <- rdU axis (-1)
+            let !s234 = ((t229 * t233) - (t230 * t232))
+            let !s235 = ((t230 * t231) - (t228 * t233))
+            let !s236 = ((t228 * t232) - (t229 * t231))
             chkI scalars 0 (-6) (-1)
-            t216 <- rdU scalars (-6)
-            t217 <- rdU scalars (-1)
-            t218 <- rdU scalars (-4)
-            t219 <- rdU scalars (-3)
-            wrU contacts ((30 * (truncate t186)) + 8) (s183 + (negate ((((t207 * s183) + (t208 * s184)) + (t209 * s185)) * t207)))
-            wrU contacts ((30 * (truncate t186)) + 9) (s184 + (negate ((((t207 * s183) + (t208 * s184)) + (t209 * s185)) * t208)))
-            wrU contacts ((30 * (truncate t186)) + 10) (s185 + (negate ((((t207 * s183) + (t208 * s184)) + (t209 * s185)) * t209)))
-            let !t220 = (t158 + (negate t205))
-            let !t221 = (t159 + (negate t206))
-            let !t222 = (t157 + (negate t204))
-            wrU contacts ((30 * (truncate t186)) + 11) (((((t220 * s185) - (t221 * s184)) * t207) + (((t221 * s183) - (t222 * s185)) * t208)) + (((t222 * s184) - (t220 * s183)) * t209))
-            let !t223 = ((t192 * s185) - (t193 * s184))
-            wrU contacts ((30 * (truncate t186)) + 16) (t223 + (negate ((((t207 * t223) + (t208 * ((t193 * s183) - (t191 * s185)))) + (t209 * ((t191 * s184) - (t192 * s183)))) * t207)))
-            let !t224 = ((t193 * s183) - (t191 * s185))
-            wrU contacts ((30 * (truncate t186)) + 17) (t224 + (negate ((((t207 * t223) + (t208 * t224)) + (t209 * ((t191 * s184) - (t192 * s183)))) * t208)))
-            let !t225 = ((t191 * s184) - (t192 * s183))
-            wrU contacts ((30 * (truncate t186)) + 18) (t225 + (negate ((((t207 * t223) + (t208 * t224)) + (t209 * t225)) * t209)))
-            wrU contacts ((30 * (truncate t186)) + 19) (((((t220 * t225) - (t221 * t224)) * t207) + (((t221 * t223) - (t222 * t225)) * t208)) + (((t222 * t224) - (t220 * t223)) * t209))
+            t237 <- rdU scalars (-6)
+            t238 <- rdU scalars (-1)
+            t239 <- rdU scalars (-4)
+            t240 <- rdU scalars (-3)
+            wrU contacts ((30 * (truncate t207)) + 8) (s204 + (negate ((((t228 * s204) + (t229 * s205)) + (t230 * s206)) * t228)))
+            wrU contacts ((30 * (truncate t207)) + 9) (s205 + (negate ((((t228 * s204) + (t229 * s205)) + (t230 * s206)) * t229)))
+            wrU contacts ((30 * (truncate t207)) + 10) (s206 + (negate ((((t228 * s204) + (t229 * s205)) + (t230 * s206)) * t230)))
+            let !t241 = (t179 + (negate t226))
+            let !t242 = (t180 + (negate t227))
+            let !t243 = (t178 + (negate t225))
+            wrU contacts ((30 * (truncate t207)) + 11) (((((t241 * s206) - (t242 * s205)) * t228) + (((t242 * s204) - (t243 * s206)) * t229)) + (((t243 * s205) - (t241 * s204)) * t230))
+            let !t244 = ((t213 * s206) - (t214 * s205))
+            wrU contacts ((30 * (truncate t207)) + 16) (t244 + (negate ((((t228 * t244) + (t229 * ((t214 * s204) - (t212 * s206)))) + (t230 * ((t212 * s205) - (t213 * s204)))) * t228)))
+            let !t245 = ((t214 * s204) - (t212 * s206))
+            wrU contacts ((30 * (truncate t207)) + 17) (t245 + (negate ((((t228 * t244) + (t229 * t245)) + (t230 * ((t212 * s205) - (t213 * s204)))) * t229)))
+            let !t246 = ((t212 * s205) - (t213 * s204))
+            wrU contacts ((30 * (truncate t207)) + 18) (t246 + (negate ((((t228 * t244) + (t229 * t245)) + (t230 * t246)) * t230)))
+            wrU contacts ((30 * (truncate t207)) + 19) (((((t241 * t246) - (t242 * t245)) * t228) + (((t242 * t244) - (t243 * t246)) * t229)) + (((t243 * t245) - (t241 * t244)) * t230))
             pure ()
           else do
-            wrU contacts ((30 * (truncate t186)) + 8) 0.0
-            wrU contacts ((30 * (truncate t186)) + 9) 0.0
-            wrU contacts ((30 * (truncate t186)) + 10) 0.0
-            wrU contacts ((30 * (truncate t186)) + 11) 0.0
-            wrU contacts ((30 * (truncate t186)) + 16) 0.0
-            wrU contacts ((30 * (truncate t186)) + 17) 0.0
-            wrU contacts ((30 * (truncate t186)) + 18) 0.0
-            wrU contacts ((30 * (truncate t186)) + 19) 0.0
+            wrU contacts ((30 * (truncate t207)) + 8) 0.0
+            wrU contacts ((30 * (truncate t207)) + 9) 0.0
+            wrU contacts ((30 * (truncate t207)) + 10) 0.0
+            wrU contacts ((30 * (truncate t207)) + 11) 0.0
+            wrU contacts ((30 * (truncate t207)) + 16) 0.0
+            wrU contacts ((30 * (truncate t207)) + 17) 0.0
+            wrU contacts ((30 * (truncate t207)) + 18) 0.0
+            wrU contacts ((30 * (truncate t207)) + 19) 0.0
             pure ()
           pure ()
         else do
           chkI meta 0 6 6
-          t226 <- rdU meta 6
-          wrU meta 6 (t226 + 1.0)
+          t247 <- rdU meta 6
+          wrU meta 6 (t247 + 1.0)
           pure ()
         pure ()
       else do
