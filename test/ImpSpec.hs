@@ -253,6 +253,36 @@ spec = do
     checks `shouldBe` [["chkI", "meta", "0", "0", "0"], ["chkI", "a", "(3", "*", "i1)", "0", "2"], ["chkI", "a", "(3", "*", "i1)", "5", "5"]]
     filter (\ln -> "rdI" `isInfixOf` ln || "wrI" `isInfixOf` ln) printed `shouldBe` []
 
+  it "prints a Haskell procedure's locals as slots from 0 and its subroutine's from 32 of one array, checked once on entry" $ do
+    let haskell = lines (concat (stageProceduresFor Haskell
+          [(JsProcedure "outer" ["a"] [], \as _ -> case as of
+              [a] -> do
+                r <- newRef 1
+                s <- newRef 2
+                subroutine "inner" [] (\_ -> do
+                  q <- newRef 3
+                  readRef q >>= writeArray a 1)
+                (+) <$> readRef r <*> readRef s >>= writeArray a 0
+              _ -> error "arity")]))
+        js = concat (stageProceduresFor JavaScript [(JsProcedure "outer" ["a"] [], \as _ -> case as of
+              [a] -> newRef 1 >>= readRef >>= writeArray a 0
+              _ -> error "arity")])
+        trimmed = map (unwords . words) haskell
+    trimmed `shouldContain` ["outer !a !locals = do", "chkI locals 0 0 1", "wrU locals 0 1.0", "wrU locals 1 2.0", "inner a locals"]
+    trimmed `shouldContain` ["inner !a !locals = do", "chkI locals 0 32 32", "wrU locals 32 3.0"]
+    filter (\ln -> any (`isInfixOf` ln) ["newR", "getR", "setR"]) haskell `shouldBe` []
+    js `shouldSatisfy` (not . ("locals" `isInfixOf`))
+
+  it "refuses a Haskell procedure with more locals than its slots, and a subroutine called from a subroutine" $ do
+    let tooMany = stageProceduresFor Haskell [(JsProcedure "many" ["a"] [], \as _ -> case as of
+          [a] -> mapM_ (\k -> newRef (fromIntegral k) >>= readRef >>= writeArray a 0) [1 .. 33 :: Int]
+          _ -> error "arity")]
+        nested = stageProceduresFor Haskell [(JsProcedure "nest" ["a"] [], \as _ -> case as of
+          [a] -> subroutine "one" [] (\_ -> subroutine "two" [] (\_ -> writeArray a 0 1))
+          _ -> error "arity")]
+    evaluate (length (concat tooMany)) `shouldThrow` errorCall "the compiled step's locals: a procedure needs more than 32 (Manifold.Stage.Imp.localSlots)"
+    evaluate (length (concat nested)) `shouldThrow` errorCall "subroutine two called from a subroutine: their locals would share slots"
+
   it "a failed index check is an error naming the indices, before any access" $ do
     arr <- primitiveArray <$> MV.replicate 4 (0 :: Double)
     chkI arr 1 0 2
