@@ -211,10 +211,11 @@ printedArrays _ arrays = arrays
 freshLocal :: Staged Int
 freshLocal = do
   s <- Staged get
-  let limit = if ssInSubroutine s then localSlots else subroutineLocals
-  when (ssNextLocal s >= limit) $
-    error ("the compiled step's locals: a " ++ (if ssInSubroutine s then "subroutine" else "procedure")
-           ++ " needs more than " ++ show (limit - (if ssInSubroutine s then subroutineLocals else 0))
+  let (kind, first, end)
+        | ssInSubroutine s = ("subroutine", subroutineLocals, localSlots)
+        | otherwise = ("procedure", 0, subroutineLocals)
+  when (ssNextLocal s >= end) $
+    error ("the compiled step's locals: a " ++ kind ++ " needs more than " ++ show (end - first)
            ++ " (Manifold.Stage.Imp.localSlots)")
   Staged (put s { ssNextLocal = ssNextLocal s + 1 })
   pure (ssNextLocal s)
