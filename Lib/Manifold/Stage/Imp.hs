@@ -564,7 +564,12 @@ functionHead target name arrays scalars = case target of
     -- strict parameters: each array is evaluated once, here, rather than
     -- wherever the body reads it, and the numbers arrive unboxed
     ++ unwords (name : map ('!' :) (arrays ++ scalars)) ++ " = do"
-  _ -> "function " ++ name ++ "(" ++ intercalate ", " (arrays ++ scalars) ++ ") {"
+  -- each number parameter is first made a number: V8 types a parameter as
+  -- anything, and where a select merged one with a computed number (the
+  -- pair's image shift against its negation, −0 for the identity) it boxed
+  -- the result, a heap number for every touching pair
+  _ -> intercalate "\n" (("function " ++ name ++ "(" ++ intercalate ", " (arrays ++ scalars) ++ ") {")
+                         : ["  " ++ s ++ " = +" ++ s ++ ";" | s <- scalars])
 
 functionEnd :: Target -> [String]
 functionEnd Haskell = []
