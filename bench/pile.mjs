@@ -4,15 +4,26 @@
 // measure independent of how contacts are made: two circles overlap by
 // r1 + r2 − |p1 − p2|), the pairs whose bounds overlap and the edge lookups
 // their narrow phase makes, per body, and how many rows find last step's row of the same
-// key for warm starting over the next 20 steps.
-// Usage: node bench/pile.mjs DIR [--steps W]   (JSON lines on stdout)
+// key for warm starting over the next 20 steps; by kind of pair (circles
+// are a bench scene's even-numbered bodies), the touching pairs per body and
+// the share of them with two rows. --mean M adds the rows per body averaged
+// over the last M of the W steps; --slop-per-size F sets the engine's slop to
+// F times the scene's body size before the steps (what a slop that scales
+// with the bodies would do: 0.0717 is the default 0.002 at the rectangle's
+// 1000-body size).
+// Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 
-const { dir, option } = commandLine("node bench/pile.mjs DIR [--steps W]");
-const settle = option("--steps", 400);
+const { dir, option } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F]");
+const settle = option("--steps", 400), meanOver = option("--mean", 0), slopPerSize = option("--slop-per-size", 0);
 
 for (const { scene, world } of worlds(dir)) {
-  world.step(settle);
+  if (slopPerSize > 0) world.setParams({ slop: slopPerSize * scene.bodies[0].size });
+  let rowSum = 0;
+  for (let s = 0; s < settle; s++) {
+    world.step(1);
+    if (s >= settle - meanOver) rowSum += world.meta("contactCount");
+  }
   const E = world.engine, C = E.contact, stride = E.contactStride, slots = world.stride();
   const a = world.a, n = world.count();
 
@@ -20,15 +31,27 @@ for (const { scene, world } of worlds(dir)) {
     const out = [];
     for (let c = 0; c < world.meta("contactCount"); c++) {
       const at = (field) => a.contacts[c * stride + C[field]];
-      out.push({ owner: at("cOwner"), key: at("cKey"), b: at("cB") });
+      out.push({ owner: at("cOwner"), key: at("cKey"), a: at("cA"), b: at("cB") });
     }
     return out;
   };
   // a pair (through one image) has the keys 4k .. 4k + 3 under its owner
   const now = rows(), perPair = new Map();
-  for (const r of now) if (r.b >= 0) { const p = r.owner + ":" + Math.floor(r.key / 4); perPair.set(p, (perPair.get(p) || 0) + 1); }
-  const histogram = {};
-  for (const m of perPair.values()) histogram[m] = (histogram[m] || 0) + 1;
+  for (const r of now) if (r.b >= 0) {
+    const p = r.owner + ":" + Math.floor(r.key / 4);
+    const kind = ["circleCircle", "circleSquare", "squareSquare"][(r.a % 2) + (r.b % 2)];
+    const e = perPair.get(p) || { kind, rows: 0 };
+    e.rows++;
+    perPair.set(p, e);
+  }
+  const histogram = {}, byKind = {};
+  for (const { kind, rows: m } of perPair.values()) {
+    histogram[m] = (histogram[m] || 0) + 1;
+    const k = byKind[kind] || (byKind[kind] = { pairsPerBody: 0, twoRowShare: 0 });
+    k.pairsPerBody++;
+    if (m === 2) k.twoRowShare++;
+  }
+  for (const k of Object.values(byKind)) { k.twoRowShare /= k.pairsPerBody; k.pairsPerBody /= n; }
 
   // circles are the even-numbered bodies of a bench scene
   const radius = (i) => a.scalars[i * slots + E.slots.boundRadius];
@@ -81,7 +104,9 @@ for (const { scene, world } of worlds(dir)) {
 
   const result = {
     space: scene.space, bodies: n, steps: settle,
-    rowsPerBody: now.length / n, rowsPerPair: histogram,
+    rowsPerBody: now.length / n, rowsPerPair: histogram, pairsByKind: byKind,
+    ...(meanOver > 0 ? { rowsPerBodyMean: rowSum / Math.min(meanOver, settle) / n } : {}),
+    ...(slopPerSize > 0 ? { slop: world.param("slop") } : {}),
     candidatePairsPerBody: candidates / n, edgeLookupsPerBody: lookups / n,
     circleOverlapMean: count ? sum / count : 0, circleOverlapMax: worst, touchingCirclePairs: count,
     warmStartHits: total ? hits / total : 1,
