@@ -333,7 +333,48 @@ async function testApi(check, context, base) {
   await page.close();
 }
 
+// What the running page allocates a frame (V8's sampling heap profiler, counting
+// what was collected too), with n bodies falling on the torus: steps, drawing, stats.
+async function garbagePerFrame(page, client, n) {
+  // n small bodies round the torus (R = 0.8, r = 0.5 about the y axis), on a grid of 20 turns
+  const bodies = [];
+  for (let k = 0; k < n; k++) {
+    const u = 2 * Math.PI * (k % 20) / 20, v = 2 * Math.PI * Math.floor(k / 20) / Math.ceil(n / 20), rho = 0.8 + 0.5 * Math.cos(v);
+    bodies.push({ shape: k % 2 ? "square" : "circle", size: 0.04, p: [rho * Math.cos(u), 0.5 * Math.sin(v), rho * Math.sin(u)] });
+  }
+  await page.evaluate(function (b) {
+    const m = window.manifold;
+    return m.loadScene({ space: "torus", gravity: true, bodies: b }).then(function () { m.resume(); });
+  }, bodies);
+  await page.waitForTimeout(1500); // the first frames trace the surface; the engine warms up
+  const s0 = await page.evaluate(function () { return window.manifold.stats(); });
+  await client.send("HeapProfiler.startSampling", { samplingInterval: 256, includeObjectsCollectedByMinorGC: true, includeObjectsCollectedByMajorGC: true });
+  await page.waitForTimeout(2500);
+  const { profile } = await client.send("HeapProfiler.stopSampling");
+  const s1 = await page.evaluate(function () { return window.manifold.stats(); });
+  const total = (function sum(node) { return node.selfSize + node.children.reduce(function (t, c) { return t + sum(c); }, 0); })(profile.head);
+  const frames = s1.frames - s0.frames;
+  return { bytes: total / Math.max(1, frames), frames: frames, steps: s1.steps - s0.steps, bodies: s1.bodies };
+}
+
+// The running page's garbage does not grow with its bodies: the emitted step
+// allocates nothing, and the drawing checks the bodies' colours without
+// building a key (a string of every colour, about 25 KB a frame with 300
+// bodies). What is left is the frame's own (camera, stats), a few KB.
+async function testFrameGarbage(check, context, base) {
+  const errors = [];
+  const page = await openSpace(context, base, "#space=torus", errors);
+  const client = await context.newCDPSession(page);
+  await client.send("HeapProfiler.enable");
+  const r = await garbagePerFrame(page, client, 300);
+  check("the running page allocates at most 8 KB a frame with 300 bodies (torus, stepping and drawing)",
+    r.frames > 5 && r.steps > 0 && r.bodies === 300 && r.bytes <= 8192 && errors.length === 0,
+    JSON.stringify({ bytesPerFrame: Math.round(r.bytes), frames: r.frames, steps: r.steps, bodies: r.bodies, errors: errors }));
+  await page.close();
+}
+
 export async function testBodies(check, context, base) {
+  await testFrameGarbage(check, context, base);
   await testHidden(check, context, base);
   await testDrag(check, context, base, "sphere", [0.5, 0.5], [-100, 0]);
   await testDrag(check, context, base, "torus", [0.5, 0.8], [100, -10]);

@@ -116,7 +116,7 @@ void main() {
       this.capacity = 0;        // bodies the static buffers hold
       this.indicesPerBody = 0;
       this.scratch = new Float32Array(0);
-      this.colourKey = null;    // what the colour buffer was filled from
+      this.colourOf = [];       // per body, the colour its vertices in the colour buffer have
       const p = this.program.program;
       gl.bindVertexArray(this.vao);
       gl.bindBuffer(gl.ARRAY_BUFFER, this.positions);
@@ -182,7 +182,7 @@ void main() {
       this.capacity = capacity;
       this.indicesPerBody = local.length;
       this.scratch = new Float32Array(3 * vpb * capacity);
-      this.colourKey = null;
+      this.colourOf = [];
     }
 
     // Draws the world's bodies into the bound colour buffer of `frame` (see
@@ -207,9 +207,12 @@ void main() {
         this.scratch.set(world.a.verts.subarray(0, count));
         gl.bindBuffer(gl.ARRAY_BUFFER, this.positions);
         gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, count);
-        // colours: only when the bodies changed identity
-        const key = world.info.map(function (b) { return b.colour.join(","); }).join(";");
-        if (key !== this.colourKey) {
+        // colours: only when a body's colour changed (bodies come, go and take
+        // each other's indices). The colours are shared constant arrays, so
+        // comparing them by reference finds a change without building anything
+        // each frame (a key string of all the colours was 8 KB of garbage a
+        // frame with 300 bodies).
+        if (this.coloursChanged(world.info, n)) {
           for (let i = 0; i < n; i++) {
             const c = world.info[i].colour;
             for (let v = 0; v < vpb; v++) {
@@ -221,7 +224,6 @@ void main() {
           }
           gl.bindBuffer(gl.ARRAY_BUFFER, this.colours);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, count);
-          this.colourKey = key;
         }
         gl.bindBuffer(gl.ARRAY_BUFFER, null);
 
@@ -266,6 +268,19 @@ void main() {
         gl.bindVertexArray(null);
       }
       gl.useProgram(null);
+    }
+
+    // Whether the first n bodies' colours differ from those the colour buffer
+    // holds; if so, remembers them as held.
+    coloursChanged(info, n) {
+      const held = this.colourOf;
+      let changed = held.length !== n;
+      for (let i = 0; !changed && i < n; i++) changed = held[i] !== info[i].colour;
+      if (changed) {
+        held.length = n;
+        for (let i = 0; i < n; i++) held[i] = info[i].colour;
+      }
+      return changed;
     }
 
     dispose() {
