@@ -216,13 +216,14 @@ printFunction target name ty roots =
         _ -> case target of
           JavaScript -> "[" ++ intercalate ", " rs ++ "]"
           GLSL -> "vec" ++ show (length rs) ++ "(" ++ intercalate ", " rs ++ ")"
+          Haskell -> "(" ++ intercalate ", " rs ++ ")"
   in case target of
     Haskell -> unlines $
       (name ++ " :: " ++ concatMap (const "Double -> ") (fnParams ty)
          ++ (case rs of [_] -> "Double"; _ -> "(" ++ intercalate ", " (map (const "Double") rs) ++ ")"))
       : (name ++ concatMap (" " ++) (fnParams ty) ++ " =")
       : map (\(n, e) -> indent ("let !" ++ n ++ " = " ++ e ++ " in")) bs
-      ++ [indent (case rs of [r] -> r; _ -> "(" ++ intercalate ", " rs ++ ")")]
+      ++ [indent result]
     JavaScript -> unlines $
       ("function " ++ name ++ "(" ++ intercalate ", " (fnParams ty) ++ ") {")
       : map (\(n, e) -> indent ("const " ++ n ++ " = " ++ e ++ ";")) bs
