@@ -7,13 +7,13 @@ import Control.Monad (forM, forM_, replicateM_)
 import Data.Foldable (toList)
 import Data.List (intercalate)
 import qualified Data.Aeson as A
+import Data.ByteString.Builder (doubleLE, toLazyByteString)
 import qualified Data.ByteString.Lazy.Char8 as BL
 import qualified Data.Vector.Unboxed as V
 import GHC.Float (castDoubleToWord64)
 import Linear.Metric (distance, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^))
-import Data.ByteString.Builder (doubleLE, toLazyByteString)
 import System.FilePath ((</>))
 import System.IO.Temp (withSystemTempDirectory)
 import System.Mem (getAllocationCounter)
@@ -78,8 +78,7 @@ nodeOverArrays flags sp initial body =
     readProcess "node" (flags ++ [script]) ""
 
 -- | For 'nodeOverArrays' (node run with @--expose-gc@,
--- @--allow-natives-syntax@ and a young generation that 60 steps cannot
--- fill): the bytes one step adds to V8's young generation, the least of
+-- @--allow-natives-syntax@ and a young generation no window fills): the bytes one step adds to V8's young generation, the least of
 -- three 50-step windows less what measuring costs, and the contact rows.
 -- Every phase is optimised first, as a minute of the page's running would:
 -- a phase with little to do (the plane's solve, without contacts) stays in
@@ -349,9 +348,9 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           putStrLn ("    " ++ spaceName sp ++ ": " ++ show (bytes :: Double) ++ " bytes a step on node's heap, " ++ show (rows :: Int) ++ " contact rows")
           pure (spaceName sp, bytes, rows)
         Nothing -> fail ("node printed no result for " ++ spaceName sp ++ ": " ++ take 500 out)
-    -- a number V8 cannot keep in a register is a 12-byte heap object: one
-    -- a touching pair (until 2026-11-22: the pair's image shift merged with
-    -- a parameter) was 1 to 6 KB a step here
+    -- a number V8 cannot keep in a register becomes a heap object (16
+    -- bytes): three a touching pair (until 2026-11-22: the pair's image
+    -- shift merged with a parameter) were 0.7 to 6 KB a step here
     [(name, bytes) | (name, bytes, _) <- results, bytes > 32] `shouldBe` []
     -- the narrow phase ran: every space has a pile but the plane, whose
     -- bodies fall side by side along it with nothing to land on

@@ -359,7 +359,7 @@ async function garbagePerFrame(page, client, n) {
 
 // The running page's garbage does not grow with its bodies: the emitted step
 // allocates nothing, and the drawing checks the bodies' colours without
-// building a key (a string of every colour, about 25 KB a frame with 300
+// building a key (a string of every colour, about 30 KB a frame with 300
 // bodies). What is left is the frame's own (camera, stats), a few KB.
 async function testFrameGarbage(check, context, base) {
   const errors = [];

@@ -210,8 +210,8 @@ void main() {
         // colours: only when a body's colour changed (bodies come, go and take
         // each other's indices). The colours are shared constant arrays, so
         // comparing them by reference finds a change without building anything
-        // each frame (a key string of all the colours was 8 KB of garbage a
-        // frame with 300 bodies).
+        // each frame (a key string of all the colours was about 30 KB of
+        // garbage a frame with 300 bodies).
         if (this.coloursChanged(world.info, n)) {
           for (let i = 0; i < n; i++) {
             const c = world.info[i].colour;
