@@ -22,6 +22,10 @@ module Manifold.Engine
   , warningCount
   , readBody
   , BodyState (..)
+  , placementAngleOf
+  , Impulse (..)
+  , rememberedImpulses
+  , restoreImpulses
   , engineScript
   , engineProcedures
   , engineObject
@@ -212,6 +216,60 @@ readBody w i = do
       r3 arr = V3 <$> MV.read arr (3 * i) <*> MV.read arr (3 * i + 1) <*> MV.read arr (3 * i + 2)
   BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> MV.read (wScalars a) (scalarSlots * i) <*> MV.read (wScalars a) (scalarSlots * i + 1) <*> r3 (wAxis a)
 
+-- | The angle that places body @i@'s outline where it is now (see
+-- 'placementAngle'): a scene's @angle@.
+placementAngleOf :: NativeWorld -> Int -> IO Double
+placementAngleOf w i = do
+  runNative (placementAngle (nwSpace w) (nwArrays w) (fromIntegral i))
+  MV.read (wMeta (nwArrays w)) (fromEnum PlacementAngle)
+
+-- | A contact row's impulses as the world remembers them after a step, to
+-- warm start the same contact (by its key) in the next.
+data Impulse = Impulse
+  { impulseKey :: Double -- ^ the contact's identity (a whole number)
+  , impulseNormal :: Double
+  , impulseFriction :: Double
+  } deriving (Show, Eq)
+
+-- | What body @i@ remembers of the last step's contact rows it owns (rows
+-- whose impulses were both 0 warm start nothing and are left out).
+rememberedImpulses :: NativeWorld -> Int -> IO [Impulse]
+rememberedImpulses w i = do
+  let a = nwArrays w
+      field :: Int -> PrevField -> IO Double
+      field k f = MV.read (wPrev a) (prevStride * k + fromEnum f)
+  start <- truncate <$> MV.read (wBodyPrev a) (2 * i)
+  count <- truncate <$> MV.read (wBodyPrev a) (2 * i + 1)
+  rows <- mapM (\k -> Impulse <$> field k PrevKey <*> field k PrevNormal <*> field k PrevFriction) [start .. start + count - 1]
+  pure [r | r <- rows, impulseNormal r /= 0 || impulseFriction r /= 0]
+
+-- | Give the world's bodies, in order, what they remember of the last
+-- step's contacts (as 'rememberedImpulses' read it), replacing what they
+-- remembered; the next step warm starts from it.
+restoreImpulses :: NativeWorld -> [[Impulse]] -> IO (Either String ())
+restoreImpulses w perBody = do
+  n <- bodyCount w
+  let a = nwArrays w
+      total = sum (map length perBody)
+      room = maxContacts (nwLayout w)
+  if length perBody > n then pure (Left ("impulses for " ++ show (length perBody) ++ " bodies, the world holds " ++ show n))
+  else if total > room then pure (Left (show total ++ " remembered contact rows, more than the world's " ++ show room))
+  else do
+    let starts = scanl (+) 0 (map length perBody)
+    mapM_ (\i -> MV.write (wBodyPrev a) (2 * i + 1) 0) [0 .. n - 1]
+    sequence_
+      [ do MV.write (wBodyPrev a) (2 * i) (fromIntegral s)
+           MV.write (wBodyPrev a) (2 * i + 1) (fromIntegral (length rows))
+           sequence_ [ do let put :: PrevField -> Double -> IO ()
+                              put f = MV.write (wPrev a) (prevStride * k + fromEnum f)
+                          put PrevOwner (fromIntegral i)
+                          put PrevKey (impulseKey r)
+                          put PrevNormal (impulseNormal r)
+                          put PrevFriction (impulseFriction r)
+                     | (k, r) <- zip [s ..] rows ]
+      | (i, s, rows) <- zip3 [0 ..] starts perBody ]
+    pure (Right ())
+
 stagedArrays :: WorldArrays StagedArray
 stagedArrays = fmap StagedArray arrayNames
 
@@ -234,6 +292,8 @@ engineProcedures sp l =
            (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega))
   , (JsProcedure "removeBody" worldParams ["index"],
       \_ [i] -> removeBody l stagedArrays (toIndex i))
+  , (JsProcedure "placementAngle" worldParams ["index"],
+      \_ [i] -> placementAngle sp stagedArrays (toIndex i))
   , (JsProcedure "pickBody" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
   , (JsProcedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"],
@@ -288,15 +348,16 @@ engineObject l =
     , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"
     , "  sizes: { " ++ intercalate ", " (zipWith3 size (toList arrayNames) (toList one) (toList two)) ++ " },"
     , "  directions: " ++ show (polyDirections (polygon l)) ++ ", steps: " ++ show (polySteps (polygon l)) ++ ","
-    , "  verticesPerBody: " ++ show (verticesPerBody l) ++ ", contactStride: " ++ show contactStride ++ ","
+    , "  verticesPerBody: " ++ show (verticesPerBody l) ++ ", contactStride: " ++ show contactStride ++ ", contactsPerBody: " ++ show contactsPerBody ++ ","
     , "  meta: " ++ enumObj BodyCount ++ ","
     , "  params: " ++ enumObj Dt ++ ","
     , "  slots: " ++ enumObj Angle ++ ","
     , "  contact: " ++ enumObj CA ++ ","
+    , "  prev: " ++ enumObj PrevOwner ++ ", prevStride: " ++ show prevStride ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","
     , "  defaults: { " ++ intercalate ", " [k ++ ": " ++ show v | (k, v) <- params] ++ " },"
     , "  phases: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ phaseFunction name ++ "]" | (name, _) <- phaseNames] ++ "],"
-    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody,"
+    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody, placementAngle: placementAngle,"
     , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
     , "}"
     ]

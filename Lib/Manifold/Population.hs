@@ -7,11 +7,12 @@ module Manifold.Population
   ( BodyArgs (..)
   , addBodyWith
   , removeBody
+  , placementAngle
   , massSamples
   ) where
 
-import Linear.Metric (norm)
-import Linear.V3 (V3 (..))
+import Linear.Metric (dot, norm)
+import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^))
 
 import Manifold.Body (PolygonParams (..))
@@ -116,3 +117,18 @@ removeBody l w i = do
     active <- readMouse w MActive
     whenPositive (minF active (0.5 - abs (grabbed - toScalar i))) (writeMouse w MActive 0)
     whenPositive (minF active (0.5 - abs (grabbed - (count - 1)))) (writeMouse w MBody (toScalar i))
+
+-- | The angle that, given to 'addBodyWith' with body @i@'s position, puts
+-- its outline where it is now, into 'PlacementAngle': what a saved scene
+-- holds. A body's angle is measured from the axis it has carried along
+-- since it was placed, and a body placed anew starts from the reference
+-- axis at its position; the two differ once it has moved on a curved
+-- surface.
+placementAngle :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m ()
+placementAngle sp w i = do
+  p <- read3 (wPos w) i
+  n <- share3 (unitNormal (spaceField sp) p)
+  start <- share3 (referenceAxis n)
+  carried <- read3 (wAxis w) i
+  angle <- readSlot w i Angle
+  writeMeta w PlacementAngle (angle + atan2F ((n `cross` start) `dot` carried) (start `dot` carried))

@@ -23,15 +23,13 @@ import Data.List (intercalate)
 import Data.Scientific (toRealFloat)
 import qualified Data.Text as T
 import qualified Data.Vector as V
-import Linear.Metric (dot)
-import Linear.V3 (V3 (..), cross)
+import Linear.V3 (V3 (..))
 
 import Manifold.Body
 import Manifold.Engine
 import Manifold.Space
 import Manifold.Spaces
-import Manifold.Surface (referenceAxis, unitNormal)
-import Manifold.World (layout)
+import Manifold.World (contactsPerBody, layout)
 
 data BodySpec = BodySpec
   { bsShape :: ShapeKind
@@ -42,6 +40,7 @@ data BodySpec = BodySpec
   , bsV :: V3 Double
   , bsAngle0 :: Double
   , bsOmega0 :: Double
+  , bsImpulses :: [Impulse] -- ^ what the body remembers of the last step's contacts it owns (warm starting)
   } deriving (Show, Eq)
 
 data Scene = Scene
@@ -115,7 +114,7 @@ shape path = \case
 
 body :: Path -> A.Value -> P BodySpec
 body path v = do
-  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega"] v
+  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega", "impulses"] v
   BodySpec
     <$> required path o "shape" shape
     <*> required path o "size" positive
@@ -125,6 +124,21 @@ body path v = do
     <*> optional path o "v" (V3 0 0 0) vec3
     <*> optional path o "angle" 0 number
     <*> optional path o "omega" 0 number
+    <*> optional path o "impulses" [] impulses
+
+-- | A body's remembered contact impulses: @[[key, normal, friction], …]@.
+impulses :: Path -> A.Value -> P [Impulse]
+impulses path = \case
+  A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, x) -> do
+    let at = path ++ "[" ++ show k ++ "]"
+    case x of
+      A.Array r | V.length r == 3 -> do
+        key <- number (at ++ "[0]") (r V.! 0)
+        when (key /= fromIntegral (round key :: Integer) || key < 0 || key >= 2 ^ (53 :: Int)) $
+          problem (at ++ "[0]") "must be a contact key, a whole number from 0 to 2^53"
+        Impulse key <$> nonNegative (at ++ "[1]") (r V.! 1) <*> number (at ++ "[2]") (r V.! 2)
+      _ -> problem at "must be an array of three numbers [key, normal, friction]"
+  _ -> problem path "must be an array of [key, normal, friction] impulses"
 
 -- | A scene from its JSON text.
 parseScene :: BL.ByteString -> P Scene
@@ -149,6 +163,11 @@ parseScene text = do
   bodies <- optional "$" o "bodies" [] $ \path -> \case
     A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
     _ -> problem path "must be an array of bodies"
+  let remembered = sum (map (length . bsImpulses) bodies)
+      room = contactsPerBody * length bodies
+  when (remembered > room) $
+    problem "$.bodies" (show remembered ++ " remembered contact impulses, more than " ++ show (length bodies)
+                         ++ " bodies remember (" ++ show contactsPerBody ++ " a body)")
   pure (Scene sp dt gravity iterations friction restitution bodies)
 
 -- | A scene as the JSON 'parseScene' reads (numbers are printed so that
@@ -159,10 +178,11 @@ sceneJSON s = A.object
   , "iterations" A..= sceneIterations s, "friction" A..= sceneFriction s
   , "restitution" A..= sceneRestitution s, "bodies" A..= map bodyJSON (sceneBodies s) ]
   where
-    bodyJSON b = A.object
+    bodyJSON b = A.object $
       [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b
       , "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
       , "angle" A..= bsAngle0 b, "omega" A..= bsOmega0 b ]
+      ++ [ "impulses" A..= [[impulseKey r, impulseNormal r, impulseFriction r] | r <- bsImpulses b] | not (null (bsImpulses b)) ]
     shapeJSON = \case
       CircleShape -> A.String "circle"
       SquareShape -> A.String "square"
@@ -177,14 +197,20 @@ sceneParams s = defaultParams
 bodyInit :: BodySpec -> BodyInit
 bodyInit b = BodyInit (shapeFromKind (bsShape b)) (bsSize b) (bsDensity b) (bsStatic b) (bsP b) (bsV b) (bsAngle0 b) (bsOmega0 b)
 
--- | A world holding the scene (with room for @extra@ more bodies).
+-- | A world holding the scene (with room for @extra@ more bodies), its
+-- bodies remembering the contact impulses the scene gives them, so that a
+-- saved pile goes on as it went instead of sagging for the steps warm
+-- starting would take to find its impulses again.
 loadScene :: Int -> Scene -> IO (P NativeWorld)
 loadScene extra s = do
   w <- newWorld (sceneSpace s) (layout (length (sceneBodies s) + extra))
   setParams w (sceneParams s)
   added <- forM (zip [0 :: Int ..] (sceneBodies s)) $ \(k, b) ->
     either (Left . (("$.bodies[" ++ show k ++ "].p: ") ++)) Right <$> addBody w (bodyInit b)
-  pure (w <$ sequence added)
+  case sequence added of
+    Left e -> pure (Left e)
+    Right _ -> fmap (const w) . either (Left . ("$.bodies: " ++)) Right
+                 <$> restoreImpulses w (map bsImpulses (sceneBodies s))
 
 -- | The scene as the world now has it: the scene's bodies (which the world
 -- must hold in the scene's order: as 'loadScene' made it, none added or
@@ -192,7 +218,7 @@ loadScene extra s = do
 -- angle is measured from the axis it has carried along since it was
 -- placed; the saved angle is measured from the axis a body placed here
 -- starts with, so that loading the scene puts every outline where it is.
--- What the world remembers of its contacts (the warm start) is not kept.
+-- Each body keeps what it remembers of the last step's contacts.
 sceneOfWorld :: Scene -> NativeWorld -> IO (P Scene)
 sceneOfWorld s w = do
   n <- bodyCount w
@@ -202,9 +228,7 @@ sceneOfWorld s w = do
     else do
       bodies <- forM (zip [0 ..] specs) $ \(i, spec) -> do
         st <- readBody w i
-        let normal = unitNormal (spaceField (sceneSpace s)) (bsPos st)
-            start = referenceAxis normal
-            carried = bsAxis st
-            turned = atan2 ((normal `cross` start) `dot` carried) (start `dot` carried)
-        pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = bsAngle st + turned, bsOmega0 = bsOmega st }
+        angle <- placementAngleOf w i
+        remembered <- rememberedImpulses w i
+        pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = angle, bsOmega0 = bsOmega st, bsImpulses = remembered }
       pure (Right s { sceneBodies = bodies })

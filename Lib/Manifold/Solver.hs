@@ -197,10 +197,10 @@ solve sp _ w = do
     start <- readArray (wBodyPrev w) (2 * toIndex owner)
     count <- readArray (wBodyPrev w) (2 * toIndex owner + 1)
     forLoop (toIndex start) (toIndex (start + count)) $ \k -> do
-      pk <- readArray (wPrev w) (fromIntegral prevStride * k + 1)
+      pk <- readPrev w k PrevKey
       whenPositive (0.5 - abs (pk - key)) $ do
-        readArray (wPrev w) (fromIntegral prevStride * k + 2) >>= writeRef ln
-        readArray (wPrev w) (fromIntegral prevStride * k + 3) >>= writeRef lt
+        readPrev w k PrevNormal >>= writeRef ln
+        readPrev w k PrevFriction >>= writeRef lt
     lnv <- (warmStart *) <$> readRef ln
     ltv <- (warmStart *) <$> readRef lt
     writeContact w c ImpulseN lnv
@@ -270,11 +270,10 @@ solve sp _ w = do
   forEach (toIndex bodies) $ \i -> writeArray (wBodyPrev w) (2 * i + 1) 0
   forEach (toIndex nc) $ \c -> do
     owner <- toIndex <$> readContact w c COwner
-    let o = fromIntegral prevStride * c
-    writeArray (wPrev w) o (toScalar owner)
-    readContact w c CKey >>= writeArray (wPrev w) (o + 1)
-    readContact w c ImpulseN >>= writeArray (wPrev w) (o + 2)
-    readContact w c ImpulseT >>= writeArray (wPrev w) (o + 3)
+    writePrev w c PrevOwner (toScalar owner)
+    readContact w c CKey >>= writePrev w c PrevKey
+    readContact w c ImpulseN >>= writePrev w c PrevNormal
+    readContact w c ImpulseT >>= writePrev w c PrevFriction
     n <- readArray (wBodyPrev w) (2 * owner + 1)
     whenPositive (0.5 - n) $ writeArray (wBodyPrev w) (2 * owner) (toScalar c)
     writeArray (wBodyPrev w) (2 * owner + 1) (n + 1)

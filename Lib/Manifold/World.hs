@@ -22,6 +22,7 @@ module Manifold.World
   , Meta (..)
   , Param (..)
   , ContactField (..)
+  , PrevField (..)
   , MouseField (..)
   , scalarSlots
   , contactStride
@@ -43,6 +44,8 @@ module Manifold.World
   , writeContact
   , readContact3
   , writeContact3
+  , readPrev
+  , writePrev
   , readMouse
   , writeMouse
   , outlineVertex
@@ -122,6 +125,7 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
 
 -- | The world's counters.
 data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
+  | PlacementAngle
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
@@ -139,6 +143,14 @@ data ContactField
   | PointX | PointY | PointZ
   deriving (Show, Eq, Enum, Bounded)
 
+-- | What the world remembers of one of the last step's contact rows, for
+-- warm starting: the body that owns the row, its key (the contact's
+-- identity, see 'Manifold.Collide'), and its normal and friction impulses.
+-- A body's rows are consecutive ('wBodyPrev' holds where they start and
+-- how many there are).
+data PrevField = PrevOwner | PrevKey | PrevNormal | PrevFriction
+  deriving (Show, Eq, Enum, Bounded)
+
 -- | The mouse joint.
 data MouseField = MActive | MBody | MLocalR | MLocalTheta | MTargetX | MTargetY | MTargetZ
   | MFrequency | MDamping | MMaxForce | MImpulseU | MImpulseW | MSign
@@ -150,7 +162,7 @@ count' _ = fromEnum (maxBound :: e) + 1
 scalarSlots, contactStride, prevStride :: Int
 scalarSlots = count' Angle
 contactStride = count' CA
-prevStride = 4
+prevStride = count' PrevOwner
 
 -- | The polygon walk's scratch numbers per direction (see 'polygoniseBody').
 walkStride :: Int
@@ -255,6 +267,14 @@ readContact3 w c k = readAt3 (wContacts w) (fromIntegral contactStride * c + ix 
 writeContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> V3 (Scalar m) -> m ()
 {-# INLINE writeContact3 #-}
 writeContact3 w c k = writeAt3 (wContacts w) (fromIntegral contactStride * c + ix k)
+
+readPrev :: Imp m => WorldArrays (Array m) -> Index m -> PrevField -> m (Scalar m)
+{-# INLINE readPrev #-}
+readPrev w k f = readArray (wPrev w) (fromIntegral prevStride * k + ix f)
+
+writePrev :: Imp m => WorldArrays (Array m) -> Index m -> PrevField -> Scalar m -> m ()
+{-# INLINE writePrev #-}
+writePrev w k f = writeArray (wPrev w) (fromIntegral prevStride * k + ix f)
 
 readMouse :: Imp m => WorldArrays (Array m) -> MouseField -> m (Scalar m)
 readMouse w k = readArray (wMouse w) (ix k)

@@ -19,7 +19,7 @@
 
   // ---- scenes: validation naming the JSON path of the first problem (as Manifold.Scene does) ----
   const SCENE_KEYS = ["space", "dt", "gravity", "iterations", "friction", "restitution", "bodies"];
-  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega"];
+  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "impulses"];
 
   class SceneError extends Error {
     constructor(message) {
@@ -74,6 +74,17 @@
     }
     return problem(path, "must be \"circle\", \"square\" or {\"polygon\": N}");
   }
+  // a body's remembered contact impulses: [[key, normal, friction], ...]
+  function impulses(path, v) {
+    if (!Array.isArray(v)) problem(path, "must be an array of [key, normal, friction] impulses");
+    return v.map(function (r, k) {
+      const at = path + "[" + k + "]";
+      if (!Array.isArray(r) || r.length !== 3) problem(at, "must be an array of three numbers [key, normal, friction]");
+      const key = number(at + "[0]", r[0]);
+      if (key !== Math.round(key) || key < 0 || key >= Math.pow(2, 53)) problem(at + "[0]", "must be a contact key, a whole number from 0 to 2^53");
+      return [key, nonNegative(at + "[1]", r[1]), number(at + "[2]", r[2])];
+    });
+  }
   function required(path, o, k, parse) {
     if (!(k in o)) problem(path + "." + k, "is missing");
     return parse(path + "." + k, o[k]);
@@ -95,6 +106,7 @@
       v: optional(path, o, "v", [0, 0, 0], vec3),
       angle: optional(path, o, "angle", 0, number),
       omega: optional(path, o, "omega", 0, number),
+      impulses: optional(path, o, "impulses", [], impulses),
     };
   }
 
@@ -207,6 +219,13 @@
     // Adds a body from a scene body (JSON value); returns its index or throws.
     add(v) {
       const b = parseBody(v, "body");
+      // a contact key names the other body by its index in a whole scene
+      if (b.impulses.length) problem("body.impulses", "only a scene's bodies carry contact impulses (load the scene)");
+      return this.place(b);
+    }
+
+    // Adds a parsed body (its impulses aside); returns its index or throws.
+    place(b) {
       const E = this.engine;
       if (this.count() >= this.capacity) {
         if (this.capacity >= MAX_CAPACITY) throw new Error("the world is full (" + MAX_CAPACITY + " bodies)");
@@ -306,24 +325,66 @@
 
     stride() { return Object.keys(this.engine.slots).length; }
 
-    // The bodies in the scene format.
+    // The bodies in the scene format: the angle that places each outline
+    // where it is (the engine's placementAngle: the angle is kept from the
+    // axis a body carries, a body placed anew starts from the reference axis
+    // there), and what each remembers of the last step's contacts.
     bodies() {
-      const a = this.a, S = this.engine.slots, k = this.stride(), out = [];
+      const a = this.a, E = this.engine, S = E.slots, k = this.stride(), out = [];
       const v3 = function (arr, i) { return [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]]; };
       for (let i = 0; i < this.count(); i++) {
         const info = this.info[i];
-        out.push({
+        E.placementAngle.apply(null, this.arrays.concat([i]));
+        const b = {
           shape: copyShape(info.shape),
           size: a.scalars[i * k + S.size],
           density: info.density,
           static: info.static,
           p: v3(a.pos, i),
           v: v3(a.vel, i),
-          angle: a.scalars[i * k + S.angle],
+          angle: this.meta("placementAngle"),
           omega: a.scalars[i * k + S.omega],
-        });
+        };
+        const remembered = this.impulses(i);
+        if (remembered.length) b.impulses = remembered;
+        out.push(b);
       }
       return out;
+    }
+
+    // What body i remembers of the last step's contact rows it owns, for
+    // warm starting: [key, normal, friction] (rows with no impulse left out).
+    impulses(i) {
+      const E = this.engine, P = E.prev, prev = this.a.prev, out = [];
+      const start = this.a.bodyPrev[2 * i], count = this.a.bodyPrev[2 * i + 1];
+      for (let r = start; r < start + count; r++) {
+        const o = E.prevStride * r;
+        if (prev[o + P.prevNormal] !== 0 || prev[o + P.prevFriction] !== 0) {
+          out.push([prev[o + P.prevKey], prev[o + P.prevNormal], prev[o + P.prevFriction]]);
+        }
+      }
+      return out;
+    }
+
+    // Replaces what the bodies remember of the last step's contacts (one
+    // list of impulses per body, in order; see impulses).
+    restoreImpulses(perBody) {
+      const E = this.engine, P = E.prev, a = this.a;
+      const total = perBody.reduce(function (t, rows) { return t + rows.length; }, 0);
+      if (total * E.prevStride > a.prev.length) throw new Error(total + " remembered contact rows, more than the world's " + a.prev.length / E.prevStride);
+      let slot = 0;
+      for (let i = 0; i < this.count(); i++) {
+        const rows = perBody[i] || [];
+        a.bodyPrev[2 * i] = slot;
+        a.bodyPrev[2 * i + 1] = rows.length;
+        rows.forEach(function (r) {
+          const o = E.prevStride * slot++;
+          a.prev[o + P.prevOwner] = i;
+          a.prev[o + P.prevKey] = r[0];
+          a.prev[o + P.prevNormal] = r[1];
+          a.prev[o + P.prevFriction] = r[2];
+        });
+      }
     }
 
     // The world as a scene (JSON value).
@@ -339,7 +400,8 @@
       };
     }
 
-    // Replaces the world's bodies and parameters by a parsed scene (see parseScene).
+    // Replaces the world's bodies and parameters by a parsed scene (see parseScene),
+    // the bodies remembering the contact impulses the scene gives them.
     // All or nothing: a body that cannot be added leaves the world as it was and throws.
     load(scene) {
       const saved = { arrays: this.arrays.map(function (x) { return x; }), capacity: this.capacity,
@@ -350,11 +412,19 @@
       try {
         scene.bodies.forEach(function (b, k) {
           try {
-            this.add(b);
+            this.place(parseBody(b, "body"));
           } catch (e) {
             throw new SceneError("$.bodies[" + k + "].p: " + e.message);
           }
         }, this);
+        const remembered = scene.bodies.map(function (b) { return b.impulses || []; });
+        const total = remembered.reduce(function (t, rows) { return t + rows.length; }, 0);
+        const room = this.engine.contactsPerBody * scene.bodies.length;
+        if (total > room) {
+          problem("$.bodies", total + " remembered contact impulses, more than " + scene.bodies.length +
+            " bodies remember (" + this.engine.contactsPerBody + " a body)");
+        }
+        this.restoreImpulses(remembered);
       } catch (e) {
         this.arrays = saved.arrays;
         this.capacity = saved.capacity;
