@@ -231,13 +231,18 @@ ix :: (Imp m, Enum e) => e -> Index m
 {-# INLINE ix #-}
 ix = fromIntegral . fromEnum
 
+-- | Where field @f@ of record @k@ is in an array of records of @stride@ numbers.
+fieldAt :: (Imp m, Enum e) => Int -> Index m -> e -> Index m
+{-# INLINE fieldAt #-}
+fieldAt stride k f = fromIntegral stride * k + ix f
+
 readSlot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> m (Scalar m)
 {-# INLINE readSlot #-}
-readSlot w i s = readArray (wScalars w) (fromIntegral scalarSlots * i + ix s)
+readSlot w i s = readArray (wScalars w) (fieldAt scalarSlots i s)
 
 writeSlot :: Imp m => WorldArrays (Array m) -> Index m -> Slot -> Scalar m -> m ()
 {-# INLINE writeSlot #-}
-writeSlot w i s = writeArray (wScalars w) (fromIntegral scalarSlots * i + ix s)
+writeSlot w i s = writeArray (wScalars w) (fieldAt scalarSlots i s)
 
 readMeta :: Imp m => WorldArrays (Array m) -> Meta -> m (Scalar m)
 {-# INLINE readMeta #-}
@@ -253,28 +258,28 @@ readParam w k = readArray (wParams w) (ix k)
 
 readContact :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (Scalar m)
 {-# INLINE readContact #-}
-readContact w c k = readArray (wContacts w) (fromIntegral contactStride * c + ix k)
+readContact w c k = readArray (wContacts w) (fieldAt contactStride c k)
 
 writeContact :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> Scalar m -> m ()
 {-# INLINE writeContact #-}
-writeContact w c k = writeArray (wContacts w) (fromIntegral contactStride * c + ix k)
+writeContact w c k = writeArray (wContacts w) (fieldAt contactStride c k)
 
 -- | Three consecutive fields starting at the given one.
 readContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> m (V3 (Scalar m))
 {-# INLINE readContact3 #-}
-readContact3 w c k = readAt3 (wContacts w) (fromIntegral contactStride * c + ix k)
+readContact3 w c k = readAt3 (wContacts w) (fieldAt contactStride c k)
 
 writeContact3 :: Imp m => WorldArrays (Array m) -> Index m -> ContactField -> V3 (Scalar m) -> m ()
 {-# INLINE writeContact3 #-}
-writeContact3 w c k = writeAt3 (wContacts w) (fromIntegral contactStride * c + ix k)
+writeContact3 w c k = writeAt3 (wContacts w) (fieldAt contactStride c k)
 
 readPrev :: Imp m => WorldArrays (Array m) -> Index m -> PrevField -> m (Scalar m)
 {-# INLINE readPrev #-}
-readPrev w k f = readArray (wPrev w) (fromIntegral prevStride * k + ix f)
+readPrev w k f = readArray (wPrev w) (fieldAt prevStride k f)
 
 writePrev :: Imp m => WorldArrays (Array m) -> Index m -> PrevField -> Scalar m -> m ()
 {-# INLINE writePrev #-}
-writePrev w k f = writeArray (wPrev w) (fromIntegral prevStride * k + ix f)
+writePrev w k f = writeArray (wPrev w) (fieldAt prevStride k f)
 
 readMouse :: Imp m => WorldArrays (Array m) -> MouseField -> m (Scalar m)
 readMouse w k = readArray (wMouse w) (ix k)

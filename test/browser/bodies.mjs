@@ -341,6 +341,11 @@ async function testApi(check, context, base) {
     }
     out.badImpulse = await m.loadScene(JSON.stringify({ space: "torus", bodies: [{ shape: "circle", size: 0.1, p: [1.3, 0, 0], impulses: [[64, 0.1, 0], [65, -1, 0]] }] }))
       .then(function () { return null; }, function (e) { return e.message; });
+    const nine = [];
+    for (let k = 0; k < 9; k++) nine.push([64 + k, 0.1, 0]);
+    out.tooMany = await m.loadScene({ space: "torus", bodies: [{ shape: "circle", size: 0.1, p: [1.3, 0, 0], impulses: nine }] })
+      .then(function () { return null; }, function (e) { return e.message; });
+    out.kept = m.bodies().length;
     try { m.addBody({ shape: "circle", size: 0.1, p: [1.3, 0, 0], impulses: [[64, 0.1, 0]] }); out.addWithImpulses = null; } catch (e) { out.addWithImpulses = e.message; }
     return out;
   });
@@ -351,8 +356,9 @@ async function testApi(check, context, base) {
     tor.remembered > tor.n && tor.impulsesBack && tor.angleBack < 1e-12 && tor.kept < 1e-12 && tor.turned > 1e-4, JSON.stringify(tor));
   check("remembered impulses are checked like the rest of a scene, and addBody takes none",
     /\$\.bodies\[0\]\.impulses\[1\]\[1\]: must not be negative/.test(resume.badImpulse || "") &&
-      /body\.impulses: only a scene's bodies carry contact impulses/.test(resume.addWithImpulses || ""),
-    resume.badImpulse + " | " + resume.addWithImpulses);
+      /\$\.bodies: 9 remembered contact impulses, more than 1 bodies remember \(8 a body\)/.test(resume.tooMany || "") &&
+      resume.kept === 60 && /body\.impulses: only a scene's bodies carry contact impulses/.test(resume.addWithImpulses || ""),
+    [resume.badImpulse, resume.tooMany, resume.kept + " bodies kept", resume.addWithImpulses].join(" | "));
 
   // the controls
   await page.evaluate(function () { window.manifold.clear(); window.manifold.resume(); });
