@@ -28,6 +28,7 @@ import Manifold.Scene
 import Manifold.Stage.Kernels (spaceScript)
 import Manifold.World
 import Manifold.Stage.Imp (NativeArray)
+import NodeJS (runNode)
 import PhysicsUtil (Contact (..), contacts, meta, slot)
 
 -- | A few bodies from the space's default scene, moving.
@@ -429,6 +430,51 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     problemOf "[[64, 0.1, \"x\"]]" `shouldBe` "$.bodies[0].impulses[0][2]: must be a number"
     problemOf ("[" ++ intercalate ", " (replicate 9 "[64, 0.1, 0]") ++ "]") `shouldBe` "$.bodies: 9 remembered contact impulses, more than 1 bodies remember (8 a body)"
     problemOf "[[64, 0.1, -0.02]]" `shouldBe` "accepted"
+
+  it "refuses the same scenes in the same words in the page's parser (web/js/world.js) as in parseScene, and reads the others alike" $ do
+    let body extra = "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0, 0]" ++ extra ++ "}"
+        withBody b = "{\"space\": \"sphere\", \"bodies\": [" ++ b ++ "]}"
+        texts =
+          [ "[]", "{}", "{\"space\": \"nowhere\"}", "{\"space\": 3}", "{\"space\": \"plane\", \"colour\": 1}"
+          , "{\"space\": \"plane\", \"dt\": 0}", "{\"space\": \"plane\", \"dt\": \"x\"}", "{\"space\": \"plane\", \"dt\": 1e400}"
+          , "{\"space\": \"plane\", \"iterations\": 2.5}", "{\"space\": \"plane\", \"iterations\": 1001}", "{\"space\": \"plane\", \"iterations\": 0}"
+          , "{\"space\": \"plane\", \"friction\": -1}", "{\"space\": \"plane\", \"restitution\": 2}", "{\"space\": \"plane\", \"gravity\": \"yes\"}"
+          , "{\"space\": \"plane\", \"bodies\": {}}", withBody "[]", withBody "{\"size\": 0.1, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": \"blob\", \"size\": 0.1, \"p\": [1, 0, 0]}", withBody "{\"shape\": 5, \"size\": 0.1, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"polygon\": 2}, \"size\": 0.1, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"polygon\": 3.5}, \"size\": 0.1, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"polygon\": 65}, \"size\": 0.1, \"p\": [1, 0, 0]}", withBody "{\"shape\": {}, \"size\": 0.1, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"polygon\": 5, \"sides\": 5}, \"size\": 0.1, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": \"square\", \"size\": -1, \"p\": [1, 0, 0]}", withBody "{\"shape\": \"square\", \"size\": 0.1}"
+          , withBody "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0]}", withBody "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0, \"x\"]}"
+          , withBody (body ", \"v\": 1"), withBody (body ", \"angle\": \"a\""), withBody (body ", \"omega\": null")
+          , withBody (body ", \"static\": 1"), withBody (body ", \"density\": 0"), withBody (body ", \"colour\": 1")
+          , withBody (body ", \"impulses\": 3"), withBody (body ", \"impulses\": [[64, 0.1]]"), withBody (body ", \"impulses\": [[64.5, 0.1, 0]]")
+          , withBody (body ", \"impulses\": [[-1, 0.1, 0]]"), withBody (body ", \"impulses\": [[64, -0.1, 0]]"), withBody (body ", \"impulses\": [[64, 0.1, null]]")
+          -- read alike
+          , "{\"space\": \"plane\"}", withBody (body "")
+          , "{\"space\": \"torus\", \"dt\": 0.02, \"gravity\": false, \"iterations\": 12, \"friction\": 0.1, \"restitution\": 0.5, \"bodies\": ["
+              ++ body ", \"density\": 2, \"static\": true, \"v\": [0, 0.5, 0], \"angle\": 0.3, \"omega\": -1, \"impulses\": [[64, 0.25, -0.01], [129, 0, 0.5]]"
+              ++ ", {\"shape\": {\"polygon\": 7}, \"size\": 0.2, \"p\": [0, 0.4, 1]}]}" ]
+        -- what a parse gives: its problem, or the scene as JSON (a body without impulses has none)
+        native t = case parseScene (BL.pack t) of
+          Left e -> A.object ["problem" A..= e]
+          Right sc -> A.object ["scene" A..= sceneJSON sc]
+    out <- runNode $ unlines
+      [ "globalThis.performance = globalThis.performance || { now: () => 0 };"
+      , "const texts = " ++ BL.unpack (A.encode texts) ++ ";"
+      , "const names = " ++ BL.unpack (A.encode spaceNames) ++ ";"
+      , "require('vm').runInThisContext(require('fs').readFileSync('web/js/world.js', 'utf8'));"
+      , "const results = texts.map((t) => {"
+      , "  try {"
+      , "    const sc = ManifoldWeb.world.parseScene(t, names);"
+      , "    sc.bodies.forEach((b) => { if (b.impulses.length === 0) delete b.impulses; });"
+      , "    return { scene: sc };"
+      , "  } catch (e) { return { problem: e.message }; }"
+      , "});"
+      , "process.stdout.write(JSON.stringify(results) + '\\n');" ]
+    page <- maybe (fail ("node printed no results: " ++ take 300 out)) pure (A.decode (BL.pack (last ("" : lines out))))
+    [(t, n, j) | (t, n, j) <- zip3 texts (map native texts) page, n /= j] `shouldBe` []
+    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 3
 
   it "reads a scene it printed back as the same scene (remembered impulses too)" $ do
     let scene = benchScene torus 30
