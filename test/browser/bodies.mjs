@@ -345,7 +345,7 @@ async function testApi(check, context, base) {
     for (let k = 0; k < 9; k++) nine.push([64 + k, 0.1, 0]);
     out.tooMany = await m.loadScene({ space: "torus", bodies: [{ shape: "circle", size: 0.1, p: [1.3, 0, 0], impulses: nine }] })
       .then(function () { return null; }, function (e) { return e.message; });
-    out.kept = m.bodies().length;
+    out.bodiesAfter = m.bodies().length;
     try { m.addBody({ shape: "circle", size: 0.1, p: [1.3, 0, 0], impulses: [[64, 0.1, 0]] }); out.addWithImpulses = null; } catch (e) { out.addWithImpulses = e.message; }
     return out;
   });
@@ -357,8 +357,8 @@ async function testApi(check, context, base) {
   check("remembered impulses are checked like the rest of a scene, and addBody takes none",
     /\$\.bodies\[0\]\.impulses\[1\]\[1\]: must not be negative/.test(resume.badImpulse || "") &&
       /\$\.bodies: 9 remembered contact impulses, more than 1 bodies remember \(8 a body\)/.test(resume.tooMany || "") &&
-      resume.kept === 60 && /body\.impulses: only a scene's bodies carry contact impulses/.test(resume.addWithImpulses || ""),
-    [resume.badImpulse, resume.tooMany, resume.kept + " bodies kept", resume.addWithImpulses].join(" | "));
+      resume.bodiesAfter === 60 && /body\.impulses: only a scene's bodies carry contact impulses/.test(resume.addWithImpulses || ""),
+    [resume.badImpulse, resume.tooMany, resume.bodiesAfter + " bodies kept", resume.addWithImpulses].join(" | "));
 
   // the controls
   await page.evaluate(function () { window.manifold.clear(); window.manifold.resume(); });
