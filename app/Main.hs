@@ -6,7 +6,7 @@ import Control.Exception (IOException, try)
 import Data.List (isInfixOf)
 import qualified Network.Wai.Handler.Warp as Warp
 import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
-import System.Directory (createDirectoryIfMissing, doesFileExist)
+import System.Directory (createDirectoryIfMissing, doesDirectoryExist, doesFileExist)
 import System.FilePath ((</>), takeDirectory)
 import System.IO.Error (isAlreadyInUseError)
 import Control.Monad (forM, forM_, when)
@@ -36,7 +36,7 @@ data Command
   | Build FilePath
   | Compile FilePath
   | Serve Int FilePath
-  | Sim FilePath Int Int
+  | Sim FilePath Int Int (Maybe FilePath)
   | Bench BenchArgs
 
 -- | @manifold bench@'s options, as given (checked by 'bench').
@@ -69,7 +69,8 @@ commandParser = hsubparser
  <> command "build" (info (Build <$> outDir) (progDesc "Emit the page's generated scripts (spaces, GLSL) into web/gen"))
  <> command "sim" (info (Sim <$> strArgument (metavar "SCENE" <> help "Scene JSON file (- for standard input)")
                                  <*> option auto (long "steps" <> metavar "K" <> help "Steps to simulate")
-                                 <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)"))
+                                 <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)")
+                                 <*> optional (strOption (long "save" <> metavar "FILE" <> help "Also write the scene as it is after the last step to FILE (the format sim reads, with the contacts' impulses), to go on from there later")))
                        (progDesc "Simulate a scene headless and print the bodies' states as JSON"))
  <> command "bench" (info (fmap Bench $ BenchArgs <$> strOption (long "spaces" <> metavar "A,B" <> value (intercalate "," (map spaceName benchSpaces)) <> help "Spaces (default: plane, sphere, torus, trumpet, projective-plane, rectangle)")
                                    <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
@@ -119,7 +120,7 @@ main = do
         writeFile (dir </> rel) text
       putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir ++ "; rebuild to use them")
     Serve p dir -> serve p dir
-    Sim path steps every -> simulate path steps every
+    Sim path steps every save -> simulate path steps every save
     Bench args -> bench args
 
 -- | A one-line error and exit code 2.
@@ -188,10 +189,14 @@ geodesic a = do
 
 -- | Run a scene and print frames; on any problem, a message and exit code 2,
 -- and nothing on standard output.
-simulate :: FilePath -> Int -> Int -> IO ()
-simulate path steps every = do
+simulate :: FilePath -> Int -> Int -> Maybe FilePath -> IO ()
+simulate path steps every save = do
   when (steps < 0) (usageError "--steps: must not be negative")
   when (every < 1) (usageError "--every: must be at least 1")
+  forM_ save $ \out -> do
+    let dir = takeDirectory out
+    there <- doesDirectoryExist dir
+    when (not there) (usageError ("--save: the directory " ++ dir ++ " does not exist"))
   text <- if path == "-" then BL.getContents else do
     exists <- doesFileExist path
     if exists then BL.readFile path else usageError (path ++ ": no such scene file")
@@ -212,6 +217,10 @@ simulate path steps every = do
             run (k + 1) (f ++ acc)
   frames <- run 0 []
   warnings <- warningCount w
+  forM_ save $ \out -> do
+    final <- sceneOfWorld scene w >>= either usageError pure
+    written <- try (BL.writeFile out (A.encode (sceneJSON final))) :: IO (Either IOException ())
+    either (\e -> usageError ("--save: " ++ show e)) pure written
   BL.putStrLn (A.encode (A.object
     [ "space" A..= spaceName (sceneSpace scene), "dt" A..= sceneDt scene
     , "warnings" A..= warnings, "frames" A..= frames ]))

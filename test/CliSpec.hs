@@ -2,9 +2,10 @@
 -- | The @manifold@ command, run as a process.
 module CliSpec (spec) where
 
-import Control.Monad (forM_)
+import Control.Monad (forM_, (>=>))
 import Data.Aeson ((.:))
 import qualified Data.Aeson as A
+import qualified Data.Aeson.Types as A
 import qualified Data.ByteString.Char8 as BC
 import qualified Data.ByteString.Lazy as BL
 import Data.List (isInfixOf, isPrefixOf, sort)
@@ -17,7 +18,7 @@ import Test.Hspec
 
 import Manifold
 import Manifold.Bench (benchScene)
-import Manifold.Scene (BodySpec (..), Scene (..), parseScene)
+import Manifold.Scene (BodySpec (..), Scene (..), parseScene, sceneJSON)
 import TestUtil
 
 data SpaceInfo = SpaceInfo
@@ -191,6 +192,43 @@ spec = do
     it "negative length and non-positive step" $ do
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length=-1"] (const True)
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1", "--step", "0"] (const True)
+
+  describe "manifold sim" $ do
+    let frameSteps :: BL.ByteString -> Either String [Int]
+        frameSteps = A.eitherDecode >=> A.parseEither (A.withObject "sim" $ \o -> o .: "frames" >>= mapM (A.withObject "frame" (.: "step")))
+        lastBodies :: BL.ByteString -> Either String A.Value
+        lastBodies = A.eitherDecode >=> A.parseEither (A.withObject "sim" $ \o -> o .: "frames" >>= \fs -> case reverse fs of
+          f : _ -> A.withObject "frame" (.: "bodies") f
+          [] -> fail "no frames")
+    it "prints a frame every M steps and the last, and refuses bad input with exit code 2 and nothing on standard output" $
+      withSystemTempDirectory "manifold-sim" $ \dir -> do
+        let file = dir </> "scene.json"
+        BL.writeFile file (A.encode (sceneJSON (benchScene torus 10)))
+        (code, out, err) <- run ["sim", file, "--steps", "5", "--every", "2"]
+        (code, err) `shouldBe` (ExitSuccess, "")
+        frameSteps out `shouldBe` Right [0, 2, 4, 5]
+        BL.writeFile (dir </> "bad.json") "{\"space\": \"torus\", \"bodies\": [{\"shape\": \"circle\", \"size\": -1, \"p\": [1.3, 0, 0]}]}"
+        forM_ [ (["sim", dir </> "bad.json", "--steps", "5"], "$.bodies[0].size: must be positive")
+              , (["sim", dir </> "none.json", "--steps", "5"], "no such scene file")
+              , (["sim", file, "--steps", "-1"], "--steps: must not be negative")
+              , (["sim", file, "--steps", "5", "--every", "0"], "--every: must be at least 1")
+              , (["sim", file, "--steps", "5", "--save", dir </> "missing" </> "out.json"], "--save: the directory") ] $ \(args, message) -> do
+          (c, o, e) <- run args
+          (args, c, o, message `isInfixOf` e, length (lines e)) `shouldBe` (args, ExitFailure 2, "", True, 1)
+    it "--save writes the scene after the last step, and running it on is running on: 200 + 100 steps of a pile are 300 steps, bit for bit" $
+      withSystemTempDirectory "manifold-sim" $ \dir -> do
+        let file = dir </> "scene.json"
+            mid = dir </> "mid.json"
+        BL.writeFile file (A.encode (sceneJSON (benchScene rectangle 100)))
+        (code1, _, _) <- run ["sim", file, "--steps", "200", "--every", "200", "--save", mid]
+        (code2, split, _) <- run ["sim", mid, "--steps", "100", "--every", "100"]
+        (code3, whole, _) <- run ["sim", file, "--steps", "300", "--every", "300"]
+        (code1, code2, code3) `shouldBe` (ExitSuccess, ExitSuccess, ExitSuccess)
+        saved <- BL.readFile mid >>= either (\e -> fail ("mid.json: " ++ e)) pure . parseScene
+        -- the pile has formed: its bodies remember their contacts
+        length (concatMap bsImpulses (sceneBodies saved)) `shouldSatisfy` (> 100)
+        lastBodies split `shouldBe` lastBodies whole
+        lastBodies whole `shouldSatisfy` either (const False) (const True)
 
   describe "manifold compile and manifold bench" $ do
     it "compile --out DIR writes the checked-in compiled step (Lib/Manifold/Compiled)" $
