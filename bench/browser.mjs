@@ -13,8 +13,8 @@
 // 1. Step time, per scene: the settled scene is loaded into the page with
 //    manifold.loadScene (paused). Inside the page, as bench/node.mjs does
 //    under node, a World (web/js/world.js) is made on the same generated
-//    engine and the same scene, run for W steps (default 50: the contacts'
-//    warm start and the JIT), and each phase of S steps is timed on its own
+//    engine and the same scene (with its contacts' impulses), run for W
+//    steps (default 50: the JIT and the caches), and each phase of S steps is timed on its own
 //    with performance.now(); the step is their sum (as `manifold bench`
 //    times the native step). The page's own world, run for W steps too,
 //    takes a step manifold.step(1) before each of those, timed whole
@@ -31,11 +31,11 @@
 // Progress goes to stderr, a table to stdout, everything as JSON to --out.
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
-import http from "node:http";
 import os from "node:os";
 import path from "node:path";
 import url from "node:url";
 import { launchBrowser, manifoldExe, chromiumPath } from "../test/browser/lib.mjs";
+import { serveWeb, loadPaused } from "./page.mjs";
 
 const ROOT = path.resolve(path.dirname(url.fileURLToPath(import.meta.url)), "..");
 const WEB = process.env.MANIFOLD_WEB ? path.resolve(process.env.MANIFOLD_WEB) : path.join(ROOT, "web");
@@ -99,45 +99,7 @@ for (const space of spaces) {
 }
 if (!cases.length) { console.error("no scenes for " + spaces.join(",") + " × " + sizes.join(",") + " in " + scenesDir); process.exit(2); }
 
-// ---- a static server for web/, cross-origin isolated (fine-grained performance.now) ---------
-const TYPES = { ".html": "text/html; charset=utf-8", ".js": "text/javascript; charset=utf-8", ".css": "text/css; charset=utf-8",
-  ".json": "application/json", ".png": "image/png", ".svg": "image/svg+xml", ".ico": "image/x-icon" };
-function serveWeb() {
-  const server = http.createServer(function (req, res) {
-    const p = decodeURIComponent(new URL(req.url, "http://x").pathname);
-    const file = path.join(WEB, p.endsWith("/") ? p + "index.html" : p);
-    if (!file.startsWith(WEB) || !fs.existsSync(file) || !fs.statSync(file).isFile()) {
-      res.writeHead(404, { "Content-Type": "text/plain" });
-      res.end("not found");
-      return;
-    }
-    res.writeHead(200, {
-      "Content-Type": TYPES[path.extname(file)] || "application/octet-stream",
-      "Cache-Control": "no-store",
-      "Cross-Origin-Opener-Policy": "same-origin",
-      "Cross-Origin-Embedder-Policy": "require-corp",
-    });
-    fs.createReadStream(file).pipe(res);
-  });
-  return new Promise(function (resolve) {
-    server.listen(0, "127.0.0.1", function () {
-      resolve({ url: "http://127.0.0.1:" + server.address().port + "/", stop: () => new Promise((r) => server.close(r)) });
-    });
-  });
-}
-
 // ---- in the page ---------------------------------------------------------------------------
-// Loads the scene into the page's world (paused) and waits for the frame it draws.
-async function loadPaused(page, scene) {
-  await page.evaluate(async function (scene) {
-    const m = window.manifold;
-    m.pause();
-    await m.loadScene(scene);
-    m.pause();
-    m.measureFrame(); // draws and waits for the GPU: nothing renders during the timing
-  }, scene);
-}
-
 // Times the step inside the page (one synchronous evaluate: no frame runs in between).
 function timeSteps(page, scene, warmup, steps) {
   return page.evaluate(function (a) {
@@ -207,7 +169,7 @@ async function runFps(page, scene, seconds) {
 
 // ---- run -----------------------------------------------------------------------------------
 const fmt = (x, d = 3) => (x === null || x === undefined ? "–" : x.toFixed(d));
-const server = await serveWeb();
+const server = await serveWeb(WEB);
 const browser = await launchBrowser();
 const results = [], fps = [];
 let environment = {};

@@ -12,6 +12,7 @@ import {
 } from "./lib.mjs";
 import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 import { testCompare } from "./compare.mjs";
+import { testBenchScripts } from "./benchscripts.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
 const PICKS = 20;           // surface pixels picked per space
@@ -20,7 +21,7 @@ const PIXEL_TOL = 1.5;      // project(pick(x, y)) vs the pixel's centre
 const BG_TOL = 4;           // per channel, background pixel vs the expected gradient
 
 // For working on one thing: --spaces a,b runs only those spaces' tests, --parts
-// p,q only those other parts (interaction, bodies, errors, file, hidpi, compare); either alone skips the rest.
+// p,q only those other parts (interaction, bodies, errors, file, hidpi, compare, benchmarks); either alone skips the rest.
 function listArg(name) {
   const i = process.argv.indexOf(name);
   return i >= 0 ? (process.argv[i + 1] || "").split(",").filter(Boolean) : null;
@@ -578,6 +579,7 @@ async function main() {
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);
     if (partWanted("compare")) await testCompare(check, browser, server.url);
+    if (partWanted("benchmarks")) await testBenchScripts(check);
     await context.close();
   } catch (e) {
     check("browser tests ran to the end", false, e && e.stack || String(e));
