@@ -402,12 +402,7 @@ async function testApi(check, context, base) {
 // What the running page allocates a frame (V8's sampling heap profiler, counting
 // what was collected too), with n bodies falling on the torus: steps, drawing, stats.
 async function garbagePerFrame(page, client, n) {
-  // n small bodies round the torus (R = 0.8, r = 0.5 about the y axis), on a grid of 20 turns
-  const bodies = [];
-  for (let k = 0; k < n; k++) {
-    const u = 2 * Math.PI * (k % 20) / 20, v = 2 * Math.PI * Math.floor(k / 20) / Math.ceil(n / 20), rho = 0.8 + 0.5 * Math.cos(v);
-    bodies.push({ shape: k % 2 ? "square" : "circle", size: 0.04, p: [rho * Math.cos(u), 0.5 * Math.sin(v), rho * Math.sin(u)] });
-  }
+  const bodies = torusBodies(n, 0.04);
   await page.evaluate(function (b) {
     const m = window.manifold;
     return m.loadScene({ space: "torus", gravity: true, bodies: b }).then(function () { m.resume(); });
@@ -439,8 +434,106 @@ async function testFrameGarbage(check, context, base) {
   await page.close();
 }
 
+// n small bodies round the torus (R = 0.8, r = 0.5 about the y axis), on a grid of 20 turns
+function torusBodies(n, size) {
+  const bodies = [];
+  for (let k = 0; k < n; k++) {
+    const u = 2 * Math.PI * (k % 20) / 20, v = 2 * Math.PI * Math.floor(k / 20) / Math.ceil(n / 20), rho = 0.8 + 0.5 * Math.cos(v);
+    bodies.push({ shape: k % 2 ? "square" : "circle", size: size, p: [rho * Math.cos(u), 0.5 * Math.sin(v), rho * Math.sin(u)] });
+  }
+  return bodies;
+}
+
+// Pixels of two screenshots of one size differing by more than `by` in a channel, and body-coloured pixels of each.
+// (Where fan and mesh differ, it is pixels along the bodies' edges: a fan may move an edge by up to
+// half a pixel, and the outline's width comes from the derivatives of the marks, which a fan's
+// larger triangles interpolate a little differently, most where the surface is seen edge on.)
+function shotDifference(a, b, by) {
+  let differ = 0, bodyA = 0, bodyB = 0;
+  for (let y = 0; y < a.height; y++) {
+    for (let x = 0; x < a.width; x++) {
+      const p = a.at(x, y), q = b.at(x, y);
+      if (Math.max(Math.abs(p[0] - q[0]), Math.abs(p[1] - q[1]), Math.abs(p[2] - q[2])) > by) differ++;
+      if (saturation(p) > SATURATED) bodyA++;
+      if (saturation(q) > SATURATED) bodyB++;
+    }
+  }
+  return { differ: differ, pixels: a.width * a.height, bodyA: bodyA, bodyB: bodyB };
+}
+
+// ---- level of detail: a body whose mesh a fan from its centre to its
+// outline (to every outline vertex, or every 2nd, 3rd or 4th) reproduces
+// within half a pixel is drawn as that fan (24 triangles or fewer instead of
+// 168); the picture is the one every mesh drawn gives, large bodies on a
+// curved surface keep their meshes, and a small body seen close gets its mesh
+// back. (Bodies up to the engine's polygonStep, 0.05, have their inner
+// vertices on the chords already, so these bodies are larger.) ----
+async function testBodyForms(check, context, base) {
+  const errors = [];
+  const page = await openSpace(context, base, "#space=torus", errors);
+  const forms = function () {
+    return page.evaluate(function () { const m = window.manifold; m.render(); return m.stats().bodyForms; });
+  };
+  await page.evaluate(function (b) {
+    const m = window.manifold;
+    m.pause();
+    return m.loadScene({ space: "torus", gravity: false, bodies: b }).then(function () { m.render(); });
+  }, torusBodies(120, 0.08));
+  const auto = await forms();
+  const autoShot = await canvasShot(page, path.join(OUT, "torus-120-auto.png"));
+  await page.evaluate(function () { window.manifold.setOptions({ bodyDetail: "mesh" }); });
+  const mesh = await forms();
+  const meshShot = await canvasShot(page, path.join(OUT, "torus-120-mesh.png"));
+  const d = shotDifference(autoShot, meshShot, 32);
+  check("small bodies are drawn as fans, and the picture is the one their meshes give (torus, 120 bodies of size 0.08)",
+    auto.fans === 120 && auto.meshes === 0 && mesh.fans === 0 && mesh.meshes === 120 &&
+    d.bodyB > 0.01 * d.pixels && Math.abs(d.bodyA - d.bodyB) <= 0.05 * d.bodyB && d.differ <= 0.25 * d.bodyB &&
+    auto.triangles < 0.2 * mesh.triangles,
+    "auto " + JSON.stringify(auto) + ", mesh " + JSON.stringify(mesh) + "; " + d.differ + " of " + d.pixels +
+    " pixels differ by more than 32, body-coloured " + d.bodyA + " / " + d.bodyB);
+
+  // one small body seen from close by: its inner rings then stray from the fan by more than half a pixel
+  await page.evaluate(function () { window.manifold.setOptions({ bodyDetail: "auto" }); });
+  const near = await page.evaluate(function () {
+    const m = window.manifold, c0 = m.camera(), p = m.bodies()[0].p;
+    const out = { far: null, near: null, back: null };
+    out.far = (m.render(), m.stats().bodyForms);
+    // 0.1 out from the body along the torus's normal there (its tube's centre is at 0.8 along p's direction in xz)
+    const rho = Math.hypot(p[0], p[2]), centre = [0.8 * p[0] / rho, 0, 0.8 * p[2] / rho];
+    const nrm = [p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]], l = Math.hypot(nrm[0], nrm[1], nrm[2]);
+    m.setCamera({ eye: p.map(function (x, i) { return x + 0.1 * nrm[i] / l; }), target: p, up: [0, 1, 0.1], fov: 45 });
+    m.render();
+    out.near = m.stats().bodyForms;
+    m.setCamera(c0);
+    m.render();
+    out.back = m.stats().bodyForms;
+    return out;
+  });
+  check("a small body seen from close by is drawn as its mesh, and as a fan again from afar",
+    near.far.meshes === 0 && near.near.meshes >= 1 && near.back.meshes === 0, JSON.stringify(near));
+
+  // large bodies on the sphere bend with it: meshes
+  const large = await page.evaluate(function () {
+    const m = window.manifold;
+    return m.setSpace("sphere").then(function () {
+      m.pause();
+      return m.loadScene({ space: "sphere", gravity: false, bodies: [
+        { shape: "circle", size: 0.6, p: [1, 0, 0] }, { shape: "square", size: 0.6, p: [0, 0, 1] }, { shape: "circle", size: 0.6, p: [0, 1, 0] }] });
+    }).then(function () { m.render(); return m.stats().bodyForms; });
+  });
+  check("large bodies on the sphere are drawn as their meshes", large.meshes === 3 && large.fans === 0, JSON.stringify(large));
+
+  const bad = await page.evaluate(function () {
+    try { window.manifold.setOptions({ bodyDetail: "coarse" }); return null; } catch (e) { return e.message; }
+  });
+  check("setOptions refuses an unknown bodyDetail in words", /bodyDetail must be one of auto, mesh/.test(bad || ""), bad);
+  check("body level-of-detail page: no console errors", errors.length === 0, errors.join("; "));
+  await page.close();
+}
+
 export async function testBodies(check, context, base) {
   await testFrameGarbage(check, context, base);
+  await testBodyForms(check, context, base);
   await testHidden(check, context, base);
   await testDrag(check, context, base, "sphere", [0.5, 0.5], [-100, 0]);
   await testDrag(check, context, base, "torus", [0.5, 0.8], [100, -10]);

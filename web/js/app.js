@@ -12,7 +12,7 @@
   const CURVATURE_SCALE = 1.0;
   // World units between the lines of the (optional) coordinate grid drawn on the surface.
   const GRID_SPACING = 0.25;
-  const DEFAULT_OPTIONS = { curvature: false, grid: true, antialias: "fxaa" };
+  const DEFAULT_OPTIONS = { curvature: false, grid: true, antialias: "fxaa", bodyDetail: "auto" };
   // What #debugBrokenShader=1 appends to the space's GLSL: an undeclared identifier.
   const BROKEN_GLSL = "\nfloat brokenOnPurpose = debugBrokenShader; // #debugBrokenShader=1 in the URL\n";
 
@@ -64,8 +64,9 @@
   // (Manifold.spaces[NAME].engine); web/js/bodies.js draws its polygons over the
   // traced surface. drawBodies is the tracer's overlay hook, called after the
   // surface is shaded with the colour buffer bound (frame: gl, width, height,
-  // scale, positionTexture, normalTexture, viewProjection, eye).
+  // scale, pixelAngle, positionTexture, normalTexture, viewProjection, eye).
   function drawBodies(frame) {
+    frame.bodyDetail = state.options.bodyDetail;
     if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame);
   }
 
@@ -185,6 +186,9 @@
       antialias: state.options.antialias,
       curvature: state.options.curvature,
       grid: state.options.grid,
+      bodyDetail: state.options.bodyDetail,
+      // how the last frame drew the bodies: as a fan from the centre, or as the whole mesh
+      bodyForms: state.bodyRenderer ? state.bodyRenderer.formCounts() : { fans: 0, meshes: 0 },
     };
   }
 
@@ -640,13 +644,17 @@
   }
 
   function setOptions(o) {
-    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias}");
+    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail}");
     if (o.antialias !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(o.antialias) < 0) {
       throw new TypeError("antialias must be one of " + MW.tracer.ANTIALIAS_MODES.join(", "));
+    }
+    if (o.bodyDetail !== undefined && MW.bodies.BODY_DETAILS.indexOf(o.bodyDetail) < 0) {
+      throw new TypeError("bodyDetail must be one of " + MW.bodies.BODY_DETAILS.join(", "));
     }
     if (o.curvature !== undefined) state.options.curvature = !!o.curvature;
     if (o.grid !== undefined) state.options.grid = !!o.grid;
     if (o.antialias !== undefined) state.options.antialias = o.antialias;
+    if (o.bodyDetail !== undefined) state.options.bodyDetail = o.bodyDetail;
     state.ui.setCurvature(state.options.curvature);
     state.ui.setGrid(state.options.grid);
     state.ui.setAntialias(state.options.antialias);
@@ -965,7 +973,7 @@
           gridSpacing: GRID_SPACING,
         });
       },
-      // {curvature: bool, grid: bool, antialias: "fxaa" | "ssaa" | "off"}
+      // {curvature: bool, grid: bool, antialias: "fxaa" | "ssaa" | "off", bodyDetail: "auto" | "mesh"}
       setOptions: setOptions,
       // Replace a space's GLSL (null restores the generated one); rebuilds the
       // shader when it is the current space. For experiments and the error-path test.

@@ -1,7 +1,8 @@
 // Draws the engine's body polygons (the `verts` array the generated `step` and
 // `polygonise` fill) over the traced surface: per body a triangle mesh (a fan
-// round the centre, then quads between the rings of geodesic steps), filled
-// with the body's colour and lit with the traced surface normal, with a dark
+// round the centre, then quads between the rings of geodesic steps), or the
+// fan from the centre to the outline alone where that lies within half a pixel
+// of the mesh (see buildStatic), filled with the body's colour and lit with the traced surface normal, with a dark
 // outline and a light axis mark (centre → outline vertex of direction 0) drawn
 // in the fragment shader a fixed number of pixels wide. A fragment behind the
 // traced surface (further from the eye than the traced distance at its pixel
@@ -16,6 +17,13 @@
   // how far beyond the flat spaces' square bodies are drawn (world units): 0, the
   // fundamental square alone, where a body across an edge shows in two (or four) parts
   const IMAGE_BAND = 0;
+  // how far (pixels) a fan may put any vertex of a body's mesh from where the mesh has it
+  const FAN_TOLERANCE = 0.5;
+  // the fans tried, coarsest first: from the centre to every s-th outline vertex
+  const FAN_STRIDES = [4, 3, 2, 1];
+  const IDENTITY = [1, 1, 1, 0, 0, 0];
+  // "auto": each body as a fan where that looks the same, else as its mesh; "mesh": every body as its mesh
+  const BODY_DETAILS = ["auto", "mesh"];
 
   const VERTEX = `#version 300 es
 precision highp float;
@@ -114,7 +122,8 @@ void main() {
       this.indices = gl.createBuffer();
       this.layout = null;       // { directions, steps, verticesPerBody } the static buffers were built for
       this.capacity = 0;        // bodies the static buffers hold
-      this.indicesPerBody = 0;
+      this.forms = null;        // the fan's and the mesh's templates (buildStatic)
+      this.heldCount = -1;      // bodies the index, mark and colour buffers hold (-1: none yet)
       this.scratch = new Float32Array(0);
       this.colourOf = [];       // per body, the colour its vertices in the colour buffer have
       const p = this.program.program;
@@ -136,53 +145,144 @@ void main() {
       gl.bindBuffer(gl.ARRAY_BUFFER, null);
     }
 
-    // The triangles and per-vertex marks of `capacity` bodies laid out as the
-    // engine's verts: vertex 0 the centre, vertex 1 + d·steps + (k − 1) step k along direction d.
-    // The marks place the vertices in a unit disc by their indices alone (step
-    // k/steps at the d-th of `directions` equal angles, direction 0 the axis): a
-    // drawing parametrisation for the outline and the axis mark, not the body's geometry.
+    // The per-body templates, and buffers for `capacity` bodies in any form.
+    // The engine's verts hold a body as vertex 0 the centre, vertex
+    // 1 + d·steps + (k − 1) step k along direction d. A body is drawn as its
+    // whole mesh (a fan round the centre, then quads between the rings of
+    // geodesic steps) or, where that looks the same (chooseForms), as a fan
+    // from the centre to every s-th outline vertex, s = 4, 3, 2 or 1 (those
+    // dividing the directions): with software rendering the triangles drawn
+    // were most of a frame. The marks place the vertices in a unit disc by
+    // their indices alone (step k/steps at the d-th of `directions` equal
+    // angles, direction 0 the axis): a drawing parametrisation for the outline
+    // and the axis mark, linear along a ray and 1 on the outline, so a fan
+    // interpolates the marks the mesh has along its rays and its outline.
     buildStatic(E, capacity) {
       const gl = this.gl;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
-      const v = function (d, k) { return k === 0 ? 0 : 1 + (d % nd) * ns + (k - 1); };
-      const local = [];
+      const mesh = function (d, k) { return k === 0 ? 0 : 1 + (d % nd) * ns + (k - 1); };
+      const markOf = function (t) { // the mark of the engine's vertex t of a body
+        if (t === 0) return [0, 0, 0];
+        const d = Math.floor((t - 1) / ns), k = (t - 1) % ns + 1;
+        const c = Math.cos(2 * Math.PI * d / nd), sn = Math.sin(2 * Math.PI * d / nd);
+        return [k / ns, d === 0 ? k / ns : c * k / ns, d === 0 ? 0 : sn * k / ns];
+      };
+      // a form: its vertices as offsets into the engine's body, its triangles over those
+      const form = function (vertices, indices, stride) {
+        return { stride: stride, vertices: Int32Array.from(vertices), indices: Uint32Array.from(indices),
+          marks: Float32Array.from([].concat.apply([], vertices.map(markOf))) };
+      };
+      this.forms = [];
+      for (const stride of FAN_STRIDES) {
+        if (nd % stride !== 0 || nd / stride < 3) continue;
+        const vertices = [0], indices = [], m = nd / stride;
+        for (let j = 0; j < m; j++) {
+          vertices.push(mesh(j * stride, ns));
+          indices.push(0, 1 + j, 1 + (j + 1) % m);
+        }
+        this.forms.push(form(vertices, indices, stride));
+      }
+      const meshIndices = [];
       for (let d = 0; d < nd; d++) {
-        local.push(0, v(d, 1), v(d + 1, 1));
+        meshIndices.push(0, mesh(d, 1), mesh(d + 1, 1));
         for (let k = 1; k < ns; k++) {
-          const a = v(d, k), b = v(d + 1, k), c = v(d, k + 1), e = v(d + 1, k + 1);
-          local.push(a, b, e, a, e, c);
+          const a = mesh(d, k), b = mesh(d + 1, k), c = mesh(d, k + 1), e = mesh(d + 1, k + 1);
+          meshIndices.push(a, b, e, a, e, c);
         }
       }
-      const idx = new Uint32Array(local.length * capacity);
-      const marks = new Float32Array(3 * vpb * capacity);
-      for (let i = 0; i < capacity; i++) {
-        for (let t = 0; t < local.length; t++) idx[i * local.length + t] = i * vpb + local[t];
-        const m = 3 * vpb * i;
-        for (let d = 0; d < nd; d++) {
-          const c = Math.cos(2 * Math.PI * d / nd), s = Math.sin(2 * Math.PI * d / nd);
-          for (let k = 1; k <= ns; k++) {
-            const o = m + 3 * v(d, k);
-            marks[o] = k / ns;
-            marks[o + 1] = d === 0 ? k / ns : c * k / ns;
-            marks[o + 2] = d === 0 ? 0 : s * k / ns;
-          }
-        }
-      }
+      this.forms.push(form(Array.from({ length: vpb }, function (_, t) { return t; }), meshIndices, 0));
+      this.meshForm = this.forms.length - 1;
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.indices);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, idx, gl.STATIC_DRAW);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, 4 * meshIndices.length * capacity, gl.DYNAMIC_DRAW);
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, null);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.marks);
-      gl.bufferData(gl.ARRAY_BUFFER, marks, gl.STATIC_DRAW);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.positions);
-      gl.bufferData(gl.ARRAY_BUFFER, 4 * 3 * vpb * capacity, gl.DYNAMIC_DRAW);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.colours);
-      gl.bufferData(gl.ARRAY_BUFFER, 4 * 3 * vpb * capacity, gl.DYNAMIC_DRAW);
+      for (const b of [this.positions, this.colours, this.marks]) {
+        gl.bindBuffer(gl.ARRAY_BUFFER, b);
+        gl.bufferData(gl.ARRAY_BUFFER, 4 * 3 * vpb * capacity, gl.DYNAMIC_DRAW);
+      }
       gl.bindBuffer(gl.ARRAY_BUFFER, null);
       this.layout = { directions: nd, steps: ns, verticesPerBody: vpb };
       this.capacity = capacity;
-      this.indicesPerBody = local.length;
       this.scratch = new Float32Array(3 * vpb * capacity);
+      this.indexScratch = new Uint32Array(meshIndices.length * capacity);
+      this.formOf = new Uint8Array(capacity);    // per body, the form chosen this frame (an index into forms)
+      this.heldForms = new Uint8Array(capacity); // per body, the form the index, mark and colour buffers hold
+      this.heldCount = -1;
+      this.indexCount = 0;
       this.colourOf = [];
+    }
+
+    // Chooses each body's form for this frame: the coarsest fan that puts
+    // every vertex of the mesh within `FAN_TOLERANCE` pixels of where the
+    // mesh has it, at the body's nearest image, else the mesh. A fan of every
+    // s-th outline vertex puts vertex k of direction a + j (0 <= j < s) at
+    // k/steps of the way from the centre to the point j/s of the way from
+    // outline vertex a to outline vertex a + s, which is where it
+    // interpolates that vertex's mark. Returns whether any form differs from
+    // the one the buffers hold.
+    chooseForms(world, n, frame, images) {
+      const E = world.engine, v = world.a.verts;
+      const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
+      const eye = frame.eye, pixel = frame.bodyDetail === "mesh" ? 0 : frame.pixelAngle;
+      const forms = this.forms, meshForm = this.meshForm;
+      let changed = n !== this.heldCount;
+      for (let i = 0; i < n; i++) {
+        const o = 3 * vpb * i;
+        const cx = v[o], cy = v[o + 1], cz = v[o + 2];
+        let near = Infinity;
+        for (let g = 0; g < images.length; g++) {
+          const m = images[g];
+          const dx = m[0] * cx + m[3] - eye[0], dy = m[1] * cy + m[4] - eye[1], dz = m[2] * cz + m[5] - eye[2];
+          near = Math.min(near, Math.sqrt(dx * dx + dy * dy + dz * dz));
+        }
+        const allowed = FAN_TOLERANCE * pixel * near;
+        const allowed2 = allowed * allowed;
+        let chosen = meshForm;
+        for (let f = 0; allowed > 0 && f < meshForm && chosen === meshForm; f++) {
+          const s = forms[f].stride;
+          let fits = true;
+          for (let a = 0; fits && a < nd; a += s) {
+            const ea = o + 3 * (1 + a * ns + ns - 1), eb = o + 3 * (1 + ((a + s) % nd) * ns + ns - 1);
+            for (let j = 0; fits && j < s; j++) {
+              const t = j / s;
+              // the outline point the fan puts at direction a + j, from the centre
+              const px = (1 - t) * v[ea] + t * v[eb] - cx, py = (1 - t) * v[ea + 1] + t * v[eb + 1] - cy,
+                pz = (1 - t) * v[ea + 2] + t * v[eb + 2] - cz;
+              for (let k = 1; k <= ns; k++) {
+                const q = o + 3 * (1 + (a + j) * ns + k - 1), u = k / ns;
+                const x = v[q] - cx - u * px, y = v[q + 1] - cy - u * py, z = v[q + 2] - cz - u * pz;
+                if (!(x * x + y * y + z * z <= allowed2)) { fits = false; break; }
+              }
+            }
+          }
+          if (fits) chosen = f;
+        }
+        this.formOf[i] = chosen;
+        if (chosen !== this.heldForms[i]) changed = true;
+      }
+      return changed;
+    }
+
+    // Rebuilds the index and mark buffers for the forms chosen (only when
+    // they change, so a still pile uploads nothing but its positions).
+    layOut(n) {
+      const gl = this.gl;
+      let vertexCount = 0, indexCount = 0;
+      for (let i = 0; i < n; i++) {
+        const form = this.forms[this.formOf[i]];
+        const idx = form.indices, marks = form.marks;
+        for (let t = 0; t < idx.length; t++) this.indexScratch[indexCount + t] = vertexCount + idx[t];
+        this.scratch.set(marks, 3 * vertexCount);
+        indexCount += idx.length;
+        vertexCount += form.vertices.length;
+        this.heldForms[i] = this.formOf[i];
+      }
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.indices);
+      gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, 0, this.indexScratch, 0, indexCount);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, null);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.marks);
+      gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, 3 * vertexCount);
+      this.heldCount = n;
+      this.indexCount = indexCount;
     }
 
     // Draws the world's bodies into the bound colour buffer of `frame` (see
@@ -191,6 +291,7 @@ void main() {
       const gl = this.gl;
       const E = world.engine;
       const n = world.count();
+      if (n === 0) this.heldCount = Math.min(this.heldCount, 0);
       if (n === 0 && !world.target) return;
       const L = this.layout;
       if (!L || L.directions !== E.directions || L.steps !== E.steps || L.verticesPerBody !== E.verticesPerBody ||
@@ -202,29 +303,41 @@ void main() {
       gl.disable(gl.DEPTH_TEST);
       gl.disable(gl.BLEND);
       if (n > 0) {
-        // positions: the engine's doubles as floats
-        const count = 3 * vpb * n;
-        this.scratch.set(world.a.verts.subarray(0, count));
-        gl.bindBuffer(gl.ARRAY_BUFFER, this.positions);
-        gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, count);
-        // colours: only when a body's colour changed (bodies come, go and take
-        // each other's indices). The colours are shared constant arrays, so
-        // comparing them by reference finds a change without building anything
-        // each frame (a key string of all the colours was about 30 KB of
-        // garbage a frame with 300 bodies).
-        if (this.coloursChanged(world.info, n)) {
+        const images = [IDENTITY].concat(world.images || []);
+        const relaid = this.chooseForms(world, n, frame, images);
+        if (relaid) this.layOut(n);
+        // colours: when a body's colour or form changed (bodies come, go and
+        // take each other's indices). The colours are shared constant arrays,
+        // so comparing them by reference finds a change without building
+        // anything each frame (a key string of all the colours was about 30 KB
+        // of garbage a frame with 300 bodies).
+        if (this.coloursChanged(world.info, n) || relaid) {
+          let at = 0;
           for (let i = 0; i < n; i++) {
             const c = world.info[i].colour;
-            for (let v = 0; v < vpb; v++) {
-              const o = 3 * (vpb * i + v);
-              this.scratch[o] = c[0];
-              this.scratch[o + 1] = c[1];
-              this.scratch[o + 2] = c[2];
+            for (let t = this.forms[this.formOf[i]].vertices.length; t > 0; t--, at += 3) {
+              this.scratch[at] = c[0];
+              this.scratch[at + 1] = c[1];
+              this.scratch[at + 2] = c[2];
             }
           }
           gl.bindBuffer(gl.ARRAY_BUFFER, this.colours);
-          gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, count);
+          gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, at);
         }
+        // positions: the vertices of each body's form, the engine's doubles as floats
+        const v = world.a.verts;
+        let at = 0;
+        for (let i = 0; i < n; i++) {
+          const vertices = this.forms[this.formOf[i]].vertices, o = vpb * i;
+          for (let t = 0; t < vertices.length; t++, at += 3) {
+            const q = 3 * (o + vertices[t]);
+            this.scratch[at] = v[q];
+            this.scratch[at + 1] = v[q + 1];
+            this.scratch[at + 2] = v[q + 2];
+          }
+        }
+        gl.bindBuffer(gl.ARRAY_BUFFER, this.positions);
+        gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, at);
         gl.bindBuffer(gl.ARRAY_BUFFER, null);
 
         const p = this.program;
@@ -240,7 +353,6 @@ void main() {
         gl.uniform1f(p.uniform("uTolerance"), 0.01);
         gl.uniform1f(p.uniform("uLineWidth"), 1.6 * Math.max(1, frame.scale));
         gl.bindVertexArray(this.vao);
-        const images = [[1, 1, 1, 0, 0, 0]].concat(world.images || []);
         // translation images (the flat spaces): only the fundamental square is drawn,
         // so a body across an edge shows on both sides of it, and nothing is drawn twice
         let half = 0;
@@ -249,7 +361,7 @@ void main() {
         for (const g of images) {
           gl.uniform3f(p.uniform("uImageScale"), g[0], g[1], g[2]);
           gl.uniform3f(p.uniform("uImageShift"), g[3], g[4], g[5]);
-          gl.drawElements(gl.TRIANGLES, this.indicesPerBody * n, gl.UNSIGNED_INT, 0);
+          gl.drawElements(gl.TRIANGLES, this.indexCount, gl.UNSIGNED_INT, 0);
         }
         gl.bindVertexArray(null);
         gl.activeTexture(gl.TEXTURE1);
@@ -268,6 +380,14 @@ void main() {
         gl.bindVertexArray(null);
       }
       gl.useProgram(null);
+    }
+
+    // How many bodies the last frame drew as fans and as meshes, and the
+    // triangles drawn (at each image).
+    formCounts() {
+      let meshes = 0;
+      for (let i = 0; i < this.heldCount; i++) if (this.heldForms[i] === this.meshForm) meshes++;
+      return { fans: Math.max(0, this.heldCount) - meshes, meshes: meshes, triangles: this.heldCount > 0 ? this.indexCount / 3 : 0 };
     }
 
     // Whether the first n bodies' colours differ from those the colour buffer
@@ -294,5 +414,5 @@ void main() {
   }
 
   W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.bodies = { BodyRenderer: BodyRenderer };
+  W.ManifoldWeb.bodies = { BodyRenderer: BodyRenderer, BODY_DETAILS: BODY_DETAILS };
 })(globalThis);

@@ -210,6 +210,7 @@
       }, function (frame) {
         frame.viewProjection = camera.viewProjection(w / h, 0.01, 100);
         frame.eye = camera.eye.slice();
+        frame.bodyDetail = o.bodyDetail;
         self.renderer.draw(self.flatOnTorus(), frame);
       }, force || resized ? null : key);
     }

@@ -436,6 +436,7 @@ void main() {
           width: tw,
           height: th,
           scale: this.scale,
+          pixelAngle: 2 * basis.tanHalf / th, // the angle a pixel of this buffer spans at the eye
           positionTexture: floatTarget.textures[0],
           normalTexture: floatTarget.textures[1],
         });
