@@ -24,9 +24,12 @@
 //    what else runs on the machine only adds time.
 //    The page is served cross-origin isolated (COOP/COEP headers), so
 //    performance.now() ticks in 5 µs rather than 100 µs.
-// 2. Frame rate with rendering on, 800×600 viewport: the page's world runs
-//    the scene unpaused for T seconds; fps, physics steps per second and ms
-//    per step are read from manifold.stats().
+// 2. Frame rate with rendering on, 800×600 viewport: first, paused, the
+//    median time of 21 frames that each follow a step and reuse the traced
+//    surface (manifold.measureFrame(false): the bodies drawn, then the post
+//    pass, waited for), and the triangles the bodies took; then the page's
+//    world runs the scene unpaused for T seconds; fps, physics steps per
+//    second and ms per step are read from manifold.stats().
 //
 // Progress goes to stderr, a table to stdout, everything as JSON to --out.
 import { execFileSync } from "node:child_process";
@@ -145,9 +148,19 @@ function timeSteps(page, scene, warmup, steps) {
   }, { scene, warmup, steps });
 }
 
-// The running page (clock on, rendering on) for `seconds`: frames and steps per second.
+// The running page (clock on, rendering on) for `seconds`: frames and steps per second; first,
+// paused, the median time of a frame that reuses the traced surface and draws the bodies after a step.
 async function runFps(page, scene, seconds) {
   await loadPaused(page, scene);
+  const draw = await page.evaluate(function () {
+    const m = window.manifold, times = [];
+    for (let k = 0; k < 21; k++) {
+      m.step(1);
+      times.push(m.measureFrame(false));
+    }
+    times.sort(function (a, b) { return a - b; });
+    return { drawMs: times[10], forms: m.stats().bodyForms };
+  });
   await page.evaluate(function () { window.manifold.resume(); });
   await page.waitForTimeout(1000); // the first frames: the clock's step estimate settles
   const s0 = await page.evaluate(function () { return window.manifold.stats(); });
@@ -163,7 +176,8 @@ async function runFps(page, scene, seconds) {
     stepsPerSecond: stepsPerSecond,
     realTime: stepsPerSecond * scene.dt, // simulated seconds per real second (1 = real time)
     physicsMsPerStep: s1.physicsMsPerStep,
-    frameMs: s1.frameMs, contacts: s1.contacts, width: s1.width, height: s1.height, antialias: s1.antialias,
+    frameMs: s1.frameMs, drawMs: draw.drawMs, bodyForms: draw.forms,
+    contacts: s1.contacts, width: s1.width, height: s1.height, antialias: s1.antialias,
   };
 }
 
@@ -242,10 +256,12 @@ for (const r of results) {
 }
 if (fps.length) {
   console.log("\nthe running page, rendering on (" + environment.viewport + " viewport, canvas " + environment.canvas + ", " + environment.antialias + ")");
-  console.log(["space".padEnd(17), pad("N", 5), pad("bodies", 6), pad("fps", 6), pad("steps/s", 8), pad("ms/step", 9), pad("real time", 9)].join(" "));
+  console.log(["space".padEnd(17), pad("N", 5), pad("bodies", 6), pad("fps", 6), pad("steps/s", 8), pad("ms/step", 9), pad("real time", 9),
+    pad("draw ms", 8), pad("triangles", 9)].join(" "));
   for (const f of fps) {
     console.log([f.space.padEnd(17), pad(f.n, 5), pad(f.bodies, 6), pad(fmt(f.fps, 1), 6), pad(fmt(f.stepsPerSecond, 0), 8),
-      pad(fmt(f.physicsMsPerStep), 9), pad(fmt(f.realTime, 2) + "×", 9)].join(" "));
+      pad(fmt(f.physicsMsPerStep), 9), pad(fmt(f.realTime, 2) + "×", 9), pad(fmt(f.drawMs, 1), 8),
+      pad(f.bodyForms ? f.bodyForms.triangles : "–", 9)].join(" "));
   }
 }
 if (outFile) {

@@ -237,9 +237,12 @@ function report() {
     out.push("The page running the scene (clock on, rendering on) for " + browserJ.value.fpsSeconds + " s at " +
       (env.viewport || "800x600") + " (canvas " + (env.canvas || "?") + ", " + (env.antialias || "?") + "), software WebGL2: " +
       "frames per second, physics steps per second, physics ms per step (the page's moving average), and simulated " +
-      "seconds per real second (the clock runs at most 10 steps and about 30 ms of physics per frame).\n");
-    out.push(table(["space", "N", "bodies", "fps", "steps/s", "physics ms/step", "real time"], fpsRows.map((f) =>
-      [f.space, f.n, f.bodies, f.fps.toFixed(1), f.stepsPerSecond.toFixed(0), ms(f.physicsMsPerStep), f.realTime.toFixed(2) + "×"])));
+      "seconds per real second (the clock runs at most 10 steps and about 30 ms of physics per frame); and, measured " +
+      "paused before, the median time of a frame that reuses the traced surface and draws the bodies after a step " +
+      "(waited for), with the triangles the bodies took.\n");
+    out.push(table(["space", "N", "bodies", "fps", "steps/s", "physics ms/step", "real time", "draw ms", "triangles"], fpsRows.map((f) =>
+      [f.space, f.n, f.bodies, f.fps.toFixed(1), f.stepsPerSecond.toFixed(0), ms(f.physicsMsPerStep), f.realTime.toFixed(2) + "×",
+        f.drawMs === undefined ? "–" : f.drawMs.toFixed(1), f.bodyForms ? String(f.bodyForms.triangles) : "–"])));
   }
   return out.join("\n");
 }

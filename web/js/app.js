@@ -40,6 +40,7 @@
     frameCount: 0,
     gpuFrameMs: null,       // GPU time of the last timed full frame
     fence: null,
+    syncPixel: new Uint8Array(4), // measureFrame reads one pixel back into it
     fenceAt: 0,
     preview: false,         // the last frame was a half-resolution preview
     interactUntil: 0,       // the view counts as moving until then (performance.now())
@@ -132,12 +133,19 @@
   }
 
   // GPU time of a full frame measured by a one-pixel read-back (which waits for it).
-  function measureFrame() {
+  // retrace false: the frame reuses the traced surface when it can, as a frame
+  // in which only bodies moved does (then it does not count as frameMs)
+  function measureFrame(retrace) {
     if (!canRender() || state.error) return null;
+    const gl = state.gl;
     const t0 = performance.now();
-    renderNow(false, true);
-    if (state.tracer.hasFrame) state.tracer.readTexel(0, 0);
-    state.gpuFrameMs = performance.now() - t0;
+    renderNow(false, retrace !== false);
+    // one pixel of the canvas read back: waits for the frame's last pass
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, state.syncPixel);
+    const ms = performance.now() - t0;
+    if (retrace === false) return ms;
+    state.gpuFrameMs = ms;
     if (state.fence) {
       state.gl.deleteSync(state.fence);
       state.fence = null;
