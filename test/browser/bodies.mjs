@@ -523,6 +523,35 @@ async function testBodyForms(check, context, base) {
   });
   check("large bodies on the sphere are drawn as their meshes", large.meshes === 3 && large.fans === 0, JSON.stringify(large));
 
+  // every space's default scene (quotients drawn at their images, the trumpet's bent bodies, the
+  // flat spaces' clipped squares): the fans chosen give the picture the meshes give
+  const perSpace = [];
+  for (const name of await page.evaluate(function () { return window.manifold.spaces(); })) {
+    const shots = {};
+    for (const detail of ["auto", "mesh"]) {
+      shots.forms = await page.evaluate(function (a) {
+        const m = window.manifold;
+        m.setOptions({ bodyDetail: a.detail });
+        return (m.space() === a.name ? Promise.resolve() : m.setSpace(a.name)).then(function () {
+          m.pause();
+          return m.loadScene({ space: a.name, bodies: window.Manifold.spaces[a.name].scene });
+        }).then(function () { m.render(); return m.stats().bodyForms; });
+      }, { name: name, detail: detail });
+      shots[detail] = await canvasShot(page, path.join(OUT, name + "-bodies-" + detail + ".png"));
+      if (detail === "auto") shots.autoForms = shots.forms;
+    }
+    const d = shotDifference(shots.auto, shots.mesh, 32);
+    perSpace.push({ name: name, forms: shots.autoForms, d: d,
+      ok: shots.forms.fans === 0 && Math.abs(d.bodyA - d.bodyB) <= 0.05 * d.bodyB + 20 && d.differ <= 0.25 * d.bodyB + 20 });
+  }
+  await page.evaluate(function () { window.manifold.setOptions({ bodyDetail: "auto" }); });
+  check("every space's default scene looks the same drawn with fans where they fit as with every mesh",
+    perSpace.every(function (r) { return r.ok; }) && perSpace.some(function (r) { return r.forms.fans > 0; }),
+    perSpace.map(function (r) {
+      return (r.ok ? "" : "FAILED ") + r.name + " " + r.forms.fans + "/" + (r.forms.fans + r.forms.meshes) + " fans, " +
+        r.d.differ + " px differ, body px " + r.d.bodyA + "/" + r.d.bodyB;
+    }).join("; "));
+
   const bad = await page.evaluate(function () {
     try { window.manifold.setOptions({ bodyDetail: "coarse" }); return null; } catch (e) { return e.message; }
   });
