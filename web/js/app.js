@@ -196,7 +196,7 @@
       grid: state.options.grid,
       bodyDetail: state.options.bodyDetail,
       // how the last frame drew the bodies: as a fan from the centre, or as the whole mesh
-      bodyForms: state.bodyRenderer ? state.bodyRenderer.formCounts() : { fans: 0, meshes: 0 },
+      bodyForms: state.bodyRenderer ? state.bodyRenderer.formCounts() : { fans: 0, meshes: 0, triangles: 0 },
     };
   }
 

@@ -1,8 +1,9 @@
 // Draws the engine's body polygons (the `verts` array the generated `step` and
 // `polygonise` fill) over the traced surface: per body a triangle mesh (a fan
-// round the centre, then quads between the rings of geodesic steps), or the
-// fan from the centre to the outline alone where that lies within half a pixel
-// of the mesh (see buildStatic), filled with the body's colour and lit with the traced surface normal, with a dark
+// round the centre, then quads between the rings of geodesic steps), or a fan
+// from the centre to the outline alone where that puts the mesh's vertices
+// within half a pixel of where they are (buildStatic, chooseForms), filled
+// with the body's colour and lit with the traced surface normal, with a dark
 // outline and a light axis mark (centre → outline vertex of direction 0) drawn
 // in the fragment shader a fixed number of pixels wide. A fragment behind the
 // traced surface (further from the eye than the traced distance at its pixel
@@ -122,7 +123,7 @@ void main() {
       this.indices = gl.createBuffer();
       this.layout = null;       // { directions, steps, verticesPerBody } the static buffers were built for
       this.capacity = 0;        // bodies the static buffers hold
-      this.forms = null;        // the fan's and the mesh's templates (buildStatic)
+      this.forms = null;        // the templates of the fans, coarsest first, then of the mesh (buildStatic)
       this.heldCount = -1;      // bodies the index, mark and colour buffers hold (-1: none yet)
       this.scratch = new Float32Array(0);
       this.colourOf = [];       // per body, the colour its vertices in the colour buffer have
