@@ -431,7 +431,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     problemOf ("[" ++ intercalate ", " (replicate 9 "[64, 0.1, 0]") ++ "]") `shouldBe` "$.bodies: 9 remembered contact impulses, more than 1 bodies remember (8 a body)"
     problemOf "[[64, 0.1, -0.02]]" `shouldBe` "accepted"
 
-  it "refuses the same scenes in the same words in the page's parser (web/js/world.js) as in parseScene, and reads the others alike" $ do
+  it "refuses the same scenes in the same words in the page's parser (web/js/world.js) as in parseScene, and reads the others alike (a key given twice: the last)" $ do
     let body extra = "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0, 0]" ++ extra ++ "}"
         withBody b = "{\"space\": \"sphere\", \"bodies\": [" ++ b ++ "]}"
         texts =
@@ -450,6 +450,9 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withBody (body ", \"static\": 1"), withBody (body ", \"density\": 0"), withBody (body ", \"colour\": 1")
           , withBody (body ", \"impulses\": 3"), withBody (body ", \"impulses\": [[64, 0.1]]"), withBody (body ", \"impulses\": [[64.5, 0.1, 0]]")
           , withBody (body ", \"impulses\": [[-1, 0.1, 0]]"), withBody (body ", \"impulses\": [[64, -0.1, 0]]"), withBody (body ", \"impulses\": [[64, 0.1, null]]")
+          -- a key given twice: the last counts in both
+          , "{\"space\": \"plane\", \"dt\": 0.02, \"dt\": 0}"
+          , "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}", withBody (body ", \"size\": 0.3")
           -- read alike
           , "{\"space\": \"plane\"}", withBody (body "")
           , "{\"space\": \"torus\", \"dt\": 0.02, \"gravity\": false, \"iterations\": 12, \"friction\": 0.1, \"restitution\": 0.5, \"bodies\": ["
@@ -474,7 +477,9 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       , "process.stdout.write(JSON.stringify(results) + '\\n');" ]
     page <- maybe (fail ("node printed no results: " ++ take 300 out)) pure (A.decode (BL.pack (last ("" : lines out))))
     [(t, n, j) | (t, n, j) <- zip3 texts (map native texts) page, n /= j] `shouldBe` []
-    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 3
+    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 5
+    fmap sceneDt (parseScene "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}") `shouldBe` Right 0.02
+    fmap (map bsSize . sceneBodies) (parseScene (BL.pack (withBody (body ", \"size\": 0.3")))) `shouldBe` Right [0.3]
 
   it "reads a scene it printed back as the same scene (remembered impulses too)" $ do
     let scene = benchScene torus 30

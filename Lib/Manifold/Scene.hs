@@ -16,8 +16,11 @@ module Manifold.Scene
 
 import Control.Monad (forM, unless, when)
 import qualified Data.Aeson as A
+import Data.Aeson.Internal (IResult (ISuccess), formatError)
 import qualified Data.Aeson.Key as K
 import qualified Data.Aeson.KeyMap as KM
+import qualified Data.Aeson.Parser as AP
+import qualified Data.Attoparsec.ByteString.Char8 as AC
 import qualified Data.ByteString.Lazy as BL
 import Data.List (intercalate)
 import Data.Scientific (toRealFloat)
@@ -140,10 +143,13 @@ impulses path = \case
       _ -> problem at "must be an array of three numbers [key, normal, friction]"
   _ -> problem path "must be an array of [key, normal, friction] impulses"
 
--- | A scene from its JSON text.
+-- | A scene from its JSON text. Of an object's keys given twice, the last
+-- counts, as in the page's @JSON.parse@ (aeson's own decoder keeps the
+-- first), so that a scene file reads alike in both.
 parseScene :: BL.ByteString -> P Scene
 parseScene text = do
-  v <- either (\e -> Left ("not JSON: " ++ e)) pure (A.eitherDecode text)
+  v <- either (\(path, e) -> Left ("not JSON: " ++ formatError path e)) pure
+         (AP.eitherDecodeWith (AP.jsonLast <* AC.skipSpace <* AC.endOfInput) ISuccess text)
   o <- object "$" ["space", "dt", "gravity", "iterations", "friction", "restitution", "bodies"] v
   sp <- required "$" o "space" $ \path -> \case
     A.String s -> maybe (problem path ("unknown space " ++ show (T.unpack s) ++ "; the spaces are " ++ intercalate ", " spaceNames))
