@@ -445,9 +445,9 @@ function torusBodies(n, size) {
 }
 
 // Pixels of two screenshots of one size differing by more than `by` in a channel, and body-coloured pixels of each.
-// (Where fan and mesh differ, it is pixels along the bodies' edges: a fan may move an edge by up to
-// half a pixel, and the outline's width comes from the derivatives of the marks, which a fan's
-// larger triangles interpolate a little differently, most where the surface is seen edge on.)
+// (Where a coarser form and the mesh differ, it is pixels along the bodies' edges: a coarser form may
+// move an edge by up to half a pixel, and the outline's width comes from the derivatives of the marks,
+// which larger triangles interpolate a little differently, most where the surface is seen edge on.)
 function shotDifference(a, b, by) {
   let differ = 0, bodyA = 0, bodyB = 0;
   for (let y = 0; y < a.height; y++) {
@@ -461,12 +461,12 @@ function shotDifference(a, b, by) {
   return { differ: differ, pixels: a.width * a.height, bodyA: bodyA, bodyB: bodyB };
 }
 
-// ---- level of detail: a body whose mesh a fan from its centre to its
-// outline (to every outline vertex, or every 2nd, 3rd or 4th) reproduces
-// within half a pixel is drawn as that fan (24 triangles or fewer instead of
-// 168); the picture is the one every mesh drawn gives, large bodies on a
-// curved surface keep their meshes, and a small body seen close gets its mesh
-// back. (Bodies up to the engine's polygonStep, 0.05, have their inner
+// ---- level of detail: a body whose mesh a coarser one (every 2nd, 3rd or
+// 4th direction, every 2nd ring, or the fan from the centre to the outline
+// alone) reproduces within half a pixel is drawn in the coarsest such form
+// (as few as 6 triangles instead of 168); the picture is the one every whole
+// mesh drawn gives, large bodies on a curved surface keep their whole meshes,
+// and bodies seen close are drawn finer. (Bodies up to the engine's polygonStep, 0.05, have their inner
 // vertices on the chords already, so these bodies are larger.) ----
 async function testBodyForms(check, context, base) {
   const errors = [];
@@ -486,7 +486,7 @@ async function testBodyForms(check, context, base) {
   const meshShot = await canvasShot(page, path.join(OUT, "torus-120-mesh.png"));
   const d = shotDifference(autoShot, meshShot, 32);
   check("small bodies are drawn as fans, and the picture is the one their meshes give (torus, 120 bodies of size 0.08)",
-    auto.fans === 120 && auto.meshes === 0 && mesh.fans === 0 && mesh.meshes === 120 &&
+    auto.fans + auto.coarser === 120 && auto.meshes === 0 && mesh.meshes === 120 &&
     d.bodyB > 0.01 * d.pixels && Math.abs(d.bodyA - d.bodyB) <= 0.05 * d.bodyB && d.differ <= 0.25 * d.bodyB &&
     auto.triangles < 0.2 * mesh.triangles,
     "auto " + JSON.stringify(auto) + ", mesh " + JSON.stringify(mesh) + "; " + d.differ + " of " + d.pixels +
@@ -509,8 +509,9 @@ async function testBodyForms(check, context, base) {
     out.back = m.stats().bodyForms;
     return out;
   });
-  check("a small body seen from close by is drawn as its mesh, and as a fan again from afar",
-    near.far.meshes === 0 && near.near.meshes >= 1 && near.back.meshes === 0, JSON.stringify(near));
+  check("bodies seen from close by are drawn finer (more of their mesh), and as before from afar",
+    near.far.meshes === 0 && near.near.fans < near.far.fans && near.near.triangles > near.far.triangles &&
+    JSON.stringify(near.back) === JSON.stringify(near.far), JSON.stringify(near));
 
   // large bodies on the sphere bend with it: meshes
   const large = await page.evaluate(function () {
@@ -521,10 +522,10 @@ async function testBodyForms(check, context, base) {
         { shape: "circle", size: 0.6, p: [1, 0, 0] }, { shape: "square", size: 0.6, p: [0, 0, 1] }, { shape: "circle", size: 0.6, p: [0, 1, 0] }] });
     }).then(function () { m.render(); return m.stats().bodyForms; });
   });
-  check("large bodies on the sphere are drawn as their meshes", large.meshes === 3 && large.fans === 0, JSON.stringify(large));
+  check("large bodies on the sphere are drawn as their whole meshes", large.meshes === 3, JSON.stringify(large));
 
   // every space's default scene (quotients drawn at their images, the trumpet's bent bodies, the
-  // flat spaces' clipped squares): the fans chosen give the picture the meshes give
+  // flat spaces' clipped squares): the forms chosen give the picture the whole meshes give
   const perSpace = [];
   for (const name of await page.evaluate(function () { return window.manifold.spaces(); })) {
     const shots = {};
@@ -542,13 +543,13 @@ async function testBodyForms(check, context, base) {
     }
     const d = shotDifference(shots.auto, shots.mesh, 32);
     perSpace.push({ name: name, forms: shots.autoForms, d: d,
-      ok: shots.forms.fans === 0 && Math.abs(d.bodyA - d.bodyB) <= 0.05 * d.bodyB + 20 && d.differ <= 0.25 * d.bodyB + 20 });
+      ok: shots.forms.meshes === shots.forms.fans + shots.forms.coarser + shots.forms.meshes && Math.abs(d.bodyA - d.bodyB) <= 0.05 * d.bodyB + 20 && d.differ <= 0.25 * d.bodyB + 20 });
   }
   await page.evaluate(function () { window.manifold.setOptions({ bodyDetail: "auto" }); });
-  check("every space's default scene looks the same drawn with fans where they fit as with every mesh",
+  check("every space's default scene looks the same drawn in coarser forms where they fit as with every whole mesh",
     perSpace.every(function (r) { return r.ok; }) && perSpace.some(function (r) { return r.forms.fans > 0; }),
     perSpace.map(function (r) {
-      return (r.ok ? "" : "FAILED ") + r.name + " " + r.forms.fans + "/" + (r.forms.fans + r.forms.meshes) + " fans, " +
+      return (r.ok ? "" : "FAILED ") + r.name + " " + r.forms.fans + " fans, " + r.forms.coarser + " coarser, " + r.forms.meshes + " meshes, " +
         r.d.differ + " px differ, body px " + r.d.bodyA + "/" + r.d.bodyB;
     }).join("; "));
 

@@ -195,8 +195,8 @@
       curvature: state.options.curvature,
       grid: state.options.grid,
       bodyDetail: state.options.bodyDetail,
-      // how the last frame drew the bodies: as a fan from the centre, or as the whole mesh
-      bodyForms: state.bodyRenderer ? state.bodyRenderer.formCounts() : { fans: 0, meshes: 0, triangles: 0 },
+      // how the last frame drew the bodies: as fans from the centre, coarser meshes, whole meshes
+      bodyForms: state.bodyRenderer ? state.bodyRenderer.formCounts() : { fans: 0, coarser: 0, meshes: 0, triangles: 0 },
     };
   }
 

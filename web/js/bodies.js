@@ -1,8 +1,9 @@
 // Draws the engine's body polygons (the `verts` array the generated `step` and
 // `polygonise` fill) over the traced surface: per body a triangle mesh (a fan
-// round the centre, then quads between the rings of geodesic steps), or a fan
-// from the centre to the outline alone where that puts the mesh's vertices
-// within half a pixel of where they are (buildStatic, chooseForms), filled
+// round the centre, then quads between the rings of geodesic steps), or a
+// coarser one (fewer directions, fewer rings, down to a fan from the centre
+// to the outline) where that puts the mesh's vertices within half a pixel of
+// where they are (buildStatic, chooseForms), filled
 // with the body's colour and lit with the traced surface normal, with a dark
 // outline and a light axis mark (centre → outline vertex of direction 0) drawn
 // in the fragment shader a fixed number of pixels wide. A fragment behind the
@@ -18,12 +19,12 @@
   // how far beyond the flat spaces' square bodies are drawn (world units): 0, the
   // fundamental square alone, where a body across an edge shows in two (or four) parts
   const IMAGE_BAND = 0;
-  // how far (pixels) a fan may put any vertex of a body's mesh from where the mesh has it
-  const FAN_TOLERANCE = 0.5;
-  // the fans tried, coarsest first: from the centre to every s-th outline vertex
-  const FAN_STRIDES = [4, 3, 2, 1];
+  // how far (pixels) a coarser form may put any vertex of a body's mesh from where the mesh has it
+  const FORM_TOLERANCE = 0.5;
+  // the strides of the directions a coarser form keeps
+  const DIRECTION_STRIDES = [4, 3, 2, 1];
   const IDENTITY = [1, 1, 1, 0, 0, 0];
-  // "auto": each body as a fan where that looks the same, else as its mesh; "mesh": every body as its mesh
+  // "auto": each body in the coarsest form that looks the same as its mesh; "mesh": every body as its whole mesh
   const BODY_DETAILS = ["auto", "mesh"];
 
   const VERTEX = `#version 300 es
@@ -123,7 +124,7 @@ void main() {
       this.indices = gl.createBuffer();
       this.layout = null;       // { directions, steps, verticesPerBody } the static buffers were built for
       this.capacity = 0;        // bodies the static buffers hold
-      this.forms = null;        // the templates of the fans, coarsest first, then of the mesh (buildStatic)
+      this.forms = null;        // the templates of the coarser forms, coarsest first, then of the whole mesh (buildStatic)
       this.heldCount = -1;      // bodies the index, mark and colour buffers hold (-1: none yet)
       this.scratch = new Float32Array(0);
       this.colourOf = [];       // per body, the colour its vertices in the colour buffer have
@@ -150,14 +151,16 @@ void main() {
     // The engine's verts hold a body as vertex 0 the centre, vertex
     // 1 + d·steps + (k − 1) step k along direction d. A body is drawn as its
     // whole mesh (a fan round the centre, then quads between the rings of
-    // geodesic steps) or, where that looks the same (chooseForms), as a fan
-    // from the centre to every s-th outline vertex, s = 4, 3, 2 or 1 (those
-    // dividing the directions): with software rendering the triangles drawn
-    // were most of a frame. The marks place the vertices in a unit disc by
-    // their indices alone (step k/steps at the d-th of `directions` equal
-    // angles, direction 0 the axis): a drawing parametrisation for the outline
-    // and the axis mark, linear along a ray and 1 on the outline, so a fan
-    // interpolates the marks the mesh has along its rays and its outline.
+    // geodesic steps) or, where that looks the same (chooseForms), as a
+    // coarser mesh of the same kind: every s-th direction (s = 4, 3, 2, 1,
+    // those dividing the directions) and every r-th ring (r dividing the
+    // steps; r = steps leaves the fan from the centre to the outline alone).
+    // With software rendering the triangles drawn were most of a frame. The
+    // marks place the vertices in a unit disc by their indices alone (step
+    // k/steps at the d-th of `directions` equal angles, direction 0 the
+    // axis): a drawing parametrisation for the outline and the axis mark,
+    // linear along a ray and 1 on the outline, so a coarser mesh interpolates
+    // the marks the mesh has along its rays and its outline.
     buildStatic(E, capacity) {
       const gl = this.gl;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
@@ -168,33 +171,32 @@ void main() {
         const c = Math.cos(2 * Math.PI * d / nd), sn = Math.sin(2 * Math.PI * d / nd);
         return [k / ns, d === 0 ? k / ns : c * k / ns, d === 0 ? 0 : sn * k / ns];
       };
-      // a form: its vertices as offsets into the engine's body, its triangles over those
-      const form = function (vertices, indices, stride) {
-        return { stride: stride, vertices: Int32Array.from(vertices), indices: Uint32Array.from(indices),
+      // the mesh of every s-th direction and every r-th ring: its vertices as
+      // offsets into the engine's body, its triangles over those
+      const form = function (s, r) {
+        const m = nd / s, rings = ns / r, vertices = [0], indices = [];
+        const at = function (j, t) { return 1 + (j % m) * rings + t; }; // direction j·s, ring (t + 1)·r
+        for (let j = 0; j < m; j++) {
+          for (let t = 0; t < rings; t++) vertices.push(mesh(j * s, (t + 1) * r));
+          indices.push(0, at(j, 0), at(j + 1, 0));
+          for (let t = 0; t + 1 < rings; t++) {
+            indices.push(at(j, t), at(j + 1, t), at(j + 1, t + 1), at(j, t), at(j + 1, t + 1), at(j, t + 1));
+          }
+        }
+        return { stride: s, ringStride: r, vertices: Int32Array.from(vertices), indices: Uint32Array.from(indices),
           marks: Float32Array.from([].concat.apply([], vertices.map(markOf))) };
       };
       this.forms = [];
-      for (const stride of FAN_STRIDES) {
-        if (nd % stride !== 0 || nd / stride < 3) continue;
-        const vertices = [0], indices = [], m = nd / stride;
-        for (let j = 0; j < m; j++) {
-          vertices.push(mesh(j * stride, ns));
-          indices.push(0, 1 + j, 1 + (j + 1) % m);
-        }
-        this.forms.push(form(vertices, indices, stride));
+      for (const s of DIRECTION_STRIDES) {
+        if (nd % s !== 0 || nd / s < 3) continue;
+        for (let r = ns; r >= 1; r--) if (ns % r === 0 && !(s === 1 && r === 1)) this.forms.push(form(s, r));
       }
-      const meshIndices = [];
-      for (let d = 0; d < nd; d++) {
-        meshIndices.push(0, mesh(d, 1), mesh(d + 1, 1));
-        for (let k = 1; k < ns; k++) {
-          const a = mesh(d, k), b = mesh(d + 1, k), c = mesh(d, k + 1), e = mesh(d + 1, k + 1);
-          meshIndices.push(a, b, e, a, e, c);
-        }
-      }
-      this.forms.push(form(Array.from({ length: vpb }, function (_, t) { return t; }), meshIndices, 0));
+      this.forms.sort(function (x, y) { return x.indices.length - y.indices.length; }); // coarsest first
+      const whole = form(1, 1); // its vertices are the engine's, in the engine's order
+      this.forms.push(whole);
       this.meshForm = this.forms.length - 1;
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.indices);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, 4 * meshIndices.length * capacity, gl.DYNAMIC_DRAW);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, 4 * whole.indices.length * capacity, gl.DYNAMIC_DRAW);
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, null);
       for (const b of [this.positions, this.colours, this.marks]) {
         gl.bindBuffer(gl.ARRAY_BUFFER, b);
@@ -204,7 +206,7 @@ void main() {
       this.layout = { directions: nd, steps: ns, verticesPerBody: vpb };
       this.capacity = capacity;
       this.scratch = new Float32Array(3 * vpb * capacity);
-      this.indexScratch = new Uint32Array(meshIndices.length * capacity);
+      this.indexScratch = new Uint32Array(whole.indices.length * capacity);
       this.formOf = new Uint8Array(capacity);    // per body, the form chosen this frame (an index into forms)
       this.heldForms = new Uint8Array(capacity); // per body, the form the index, mark and colour buffers hold
       this.heldCount = -1;
@@ -212,19 +214,22 @@ void main() {
       this.colourOf = [];
     }
 
-    // Chooses each body's form for this frame: the coarsest fan that puts
-    // every vertex of the mesh within `FAN_TOLERANCE` pixels of where the
-    // mesh has it, at the body's nearest image, else the mesh. A fan of every
-    // s-th outline vertex puts vertex k of direction a + j (0 <= j < s) at
-    // k/steps of the way from the centre to the point j/s of the way from
-    // outline vertex a to outline vertex a + s, which is where it
-    // interpolates that vertex's mark. Returns whether any form differs from
-    // the one the buffers hold.
+    // Chooses each body's form for this frame: the coarsest that puts every
+    // vertex of the mesh within `FORM_TOLERANCE` pixels of where the mesh has
+    // it, at the body's nearest image, else the whole mesh. A form of every
+    // s-th direction and r-th ring puts vertex k of direction a + j
+    // (0 <= j < s) at the point (k − k0)/r of the way between its rings k0
+    // and k0 + r (k0 = 0 the centre) along the line j/s of the way from
+    // direction a to direction a + s, which is where it interpolates that
+    // vertex's mark. Returns whether any form differs from the one the
+    // buffers hold.
     chooseForms(world, n, frame, images) {
       const E = world.engine, v = world.a.verts;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
       const eye = frame.eye, pixel = frame.bodyDetail === "mesh" ? 0 : frame.pixelAngle;
       const forms = this.forms, meshForm = this.meshForm;
+      // coordinate x of vertex (d, k) of the body at offset o, from its centre (k = 0: the centre)
+      const rel = function (o, d, k, x) { return k === 0 ? 0 : v[o + 3 * (1 + (d % nd) * ns + k - 1) + x] - v[o + x]; };
       let changed = n !== this.heldCount;
       for (let i = 0; i < n; i++) {
         const o = 3 * vpb * i;
@@ -235,23 +240,25 @@ void main() {
           const dx = m[0] * cx + m[3] - eye[0], dy = m[1] * cy + m[4] - eye[1], dz = m[2] * cz + m[5] - eye[2];
           near = Math.min(near, Math.sqrt(dx * dx + dy * dy + dz * dz));
         }
-        const allowed = FAN_TOLERANCE * pixel * near;
+        const allowed = FORM_TOLERANCE * pixel * near;
         const allowed2 = allowed * allowed;
         let chosen = meshForm;
         for (let f = 0; allowed > 0 && f < meshForm && chosen === meshForm; f++) {
-          const s = forms[f].stride;
+          const s = forms[f].stride, r = forms[f].ringStride;
           let fits = true;
           for (let a = 0; fits && a < nd; a += s) {
-            const ea = o + 3 * (1 + a * ns + ns - 1), eb = o + 3 * (1 + ((a + s) % nd) * ns + ns - 1);
             for (let j = 0; fits && j < s; j++) {
               const t = j / s;
-              // the outline point the fan puts at direction a + j, from the centre
-              const px = (1 - t) * v[ea] + t * v[eb] - cx, py = (1 - t) * v[ea + 1] + t * v[eb + 1] - cy,
-                pz = (1 - t) * v[ea + 2] + t * v[eb + 2] - cz;
               for (let k = 1; k <= ns; k++) {
-                const q = o + 3 * (1 + (a + j) * ns + k - 1), u = k / ns;
-                const x = v[q] - cx - u * px, y = v[q + 1] - cy - u * py, z = v[q + 2] - cz - u * pz;
-                if (!(x * x + y * y + z * z <= allowed2)) { fits = false; break; }
+                const k0 = k - k % r, k1 = k0 === k ? k : k0 + r, u = k0 === k ? 0 : (k - k0) / r;
+                let e2 = 0;
+                for (let x = 0; x < 3; x++) {
+                  const p0 = (1 - t) * rel(o, a, k0, x) + t * rel(o, a + s, k0, x);
+                  const p1 = (1 - t) * rel(o, a, k1, x) + t * rel(o, a + s, k1, x);
+                  const e = rel(o, a + j, k, x) - ((1 - u) * p0 + u * p1);
+                  e2 += e * e;
+                }
+                if (!(e2 <= allowed2)) { fits = false; break; }
               }
             }
           }
@@ -383,12 +390,17 @@ void main() {
       gl.useProgram(null);
     }
 
-    // How many bodies the last frame drew as fans and as meshes, and the
-    // triangles drawn (at each image).
+    // How many bodies the last frame drew as fans (no inner rings), as
+    // coarser meshes, and as whole meshes, and the triangles drawn (at each image).
     formCounts() {
-      let meshes = 0;
-      for (let i = 0; i < this.heldCount; i++) if (this.heldForms[i] === this.meshForm) meshes++;
-      return { fans: Math.max(0, this.heldCount) - meshes, meshes: meshes, triangles: this.heldCount > 0 ? this.indexCount / 3 : 0 };
+      let fans = 0, meshes = 0;
+      for (let i = 0; i < this.heldCount; i++) {
+        const f = this.heldForms[i];
+        if (f === this.meshForm) meshes++;
+        else if (this.forms[f].ringStride === this.layout.steps) fans++;
+      }
+      const held = Math.max(0, this.heldCount);
+      return { fans: fans, coarser: held - fans - meshes, meshes: meshes, triangles: held > 0 ? this.indexCount / 3 : 0 };
     }
 
     // Whether the first n bodies' colours differ from those the colour buffer
