@@ -207,6 +207,7 @@ void main() {
       this.capacity = capacity;
       this.scratch = new Float32Array(3 * vpb * capacity);
       this.indexScratch = new Uint32Array(whole.indices.length * capacity);
+      this.formPoints = new Float64Array(3 * (ns + 1)); // chooseForms' scratch: a form's points along one line
       this.formOf = new Uint8Array(capacity);    // per body, the form chosen this frame (an index into forms)
       this.heldForms = new Uint8Array(capacity); // per body, the form the index, mark and colour buffers hold
       this.heldCount = -1;
@@ -227,9 +228,7 @@ void main() {
       const E = world.engine, v = world.a.verts;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
       const eye = frame.eye, pixel = frame.bodyDetail === "mesh" ? 0 : frame.pixelAngle;
-      const forms = this.forms, meshForm = this.meshForm;
-      // coordinate x of vertex (d, k) of the body at offset o, from its centre (k = 0: the centre)
-      const rel = function (o, d, k, x) { return k === 0 ? 0 : v[o + 3 * (1 + (d % nd) * ns + k - 1) + x] - v[o + x]; };
+      const forms = this.forms, meshForm = this.meshForm, L = this.formPoints;
       let changed = n !== this.heldCount;
       for (let i = 0; i < n; i++) {
         const o = 3 * vpb * i;
@@ -247,18 +246,26 @@ void main() {
           const s = forms[f].stride, r = forms[f].ringStride;
           let fits = true;
           for (let a = 0; fits && a < nd; a += s) {
+            const b = (a + s) % nd;
             for (let j = 0; fits && j < s; j++) {
-              const t = j / s;
-              for (let k = 1; k <= ns; k++) {
-                const k0 = k - k % r, k1 = k0 === k ? k : k0 + r, u = k0 === k ? 0 : (k - k0) / r;
-                let e2 = 0;
-                for (let x = 0; x < 3; x++) {
-                  const p0 = (1 - t) * rel(o, a, k0, x) + t * rel(o, a + s, k0, x);
-                  const p1 = (1 - t) * rel(o, a, k1, x) + t * rel(o, a + s, k1, x);
-                  const e = rel(o, a + j, k, x) - ((1 - u) * p0 + u * p1);
-                  e2 += e * e;
-                }
-                if (!(e2 <= allowed2)) { fits = false; break; }
+              const t = j / s, q0 = o + 3 * (a + j) * ns;
+              // the form's points on the line j/s of the way from direction a to b, at its kept rings
+              // (L[0] the centre), then direction a + j's vertices against them, the outline first
+              for (let m = r, w = 3; m <= ns; m += r, w += 3) {
+                const pa = o + 3 * (a * ns + m), pb = o + 3 * (b * ns + m);
+                L[w] = (1 - t) * v[pa] + t * v[pb];
+                L[w + 1] = (1 - t) * v[pa + 1] + t * v[pb + 1];
+                L[w + 2] = (1 - t) * v[pa + 2] + t * v[pb + 2];
+              }
+              L[0] = v[o]; L[1] = v[o + 1]; L[2] = v[o + 2];
+              for (let k = ns; k >= 1; k--) {
+                const m0 = (k - k % r) / r, u = (k % r) / r;
+                if (u === 0 && j === 0) continue; // the form has this vertex where the mesh has it
+                const w0 = 3 * m0, w1 = u === 0 ? w0 : w0 + 3, q = q0 + 3 * k;
+                const ex = v[q] - ((1 - u) * L[w0] + u * L[w1]);
+                const ey = v[q + 1] - ((1 - u) * L[w0 + 1] + u * L[w1 + 1]);
+                const ez = v[q + 2] - ((1 - u) * L[w0 + 2] + u * L[w1 + 2]);
+                if (!(ex * ex + ey * ey + ez * ez <= allowed2)) { fits = false; break; }
               }
             }
           }
