@@ -184,6 +184,25 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
               in c ^+^ r *^ (cos phi *^ u ^+^ sin phi *^ w)
         in conjoin [ counterexample (show k ++ ": " ++ showV3 o ++ " expected " ++ showV3 (expected k)) (vecDist o (expected k) <= 1e-9)
                    | (k, o) <- zip [0 :: Int ..] (polyOutline poly) ]
+  describe "directionSector counts the boundaries a direction has passed: the floor of its angle over 2π/nd" $ do
+    forM_ [2, 3, 4, 5, 7, 8, 12, 24, 25] $ \nd ->
+      it (show nd ++ " directions") $
+        property $ withMaxSuccess 2000 $
+          forAll (choose (0, 2 * pi)) $ \phi -> forAll (choose (1e-3, 1e3)) $ \r ->
+            let sigma = 2 * pi / fromIntegral nd
+                x = r * cos phi
+                y = r * sin phi
+                -- the angle as atan2 gives it, in [0, 2π)
+                angle = let a = atan2 y x in if a < 0 then a + 2 * pi else a
+                nearBoundary = let f = angle / sigma in abs (f - fromIntegral (round f :: Int)) < 1e-9
+                expected = fromIntegral (min (nd - 1) (floor (angle / sigma)) :: Int) :: Double
+            in not nearBoundary ==> directionSector nd x y === expected
+    it "puts the origin, NaN and directions along the x axis in whole sectors" $ do
+      directionSector 24 0 (0 :: Double) `shouldBe` 0
+      directionSector 24 1 (0 :: Double) `shouldBe` 0
+      directionSector 24 (-1) (0 :: Double) `shouldSatisfy` (`elem` [11, 12])
+      directionSector 5 (-1) (0 :: Double) `shouldSatisfy` (`elem` [2, 3])
+      directionSector 24 (0 / 0) (1 :: Double) `shouldSatisfy` (\k -> k >= 0 && k <= 23)
   it "polyLocal gives each vertex's (r, θ)" $ do
     let pp = PolygonParams 8 2
         poly = polygonise (spaceField plane) pp circle 0.5 (V3 0 0 0) (V3 1 0 0) (0 :: Double)

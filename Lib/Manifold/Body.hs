@@ -30,6 +30,7 @@ module Manifold.Body
   , vertexCount
   , triangleCount
   , directionAngle
+  , directionSector
   ) where
 
 import Linear.V2 (V2 (..))
@@ -169,6 +170,36 @@ triangleCount (PolygonParams d s) = d + 2 * d * (s - 1)
 -- | The body-local angle of direction @d@.
 directionAngle :: Field a => PolygonParams -> Int -> a
 directionAngle pp d = constant (2 * pi * fromIntegral d / fromIntegral (polyDirections pp))
+
+-- | Of the @nd@ equal sectors between the directions, the one (0 to nd − 1)
+-- that holds the body-local direction @(x, y)@, measured from direction 0:
+-- the floor of its angle over @2π/nd@ (0 at the origin; a direction exactly
+-- on a boundary may count on either side).
+--
+-- Counted, not measured: the sector boundaries a direction has passed are
+-- those it lies counter-clockwise of, a cross product each with a constant.
+-- The narrow phase finds a sector for every outline vertex near another
+-- body, and this needs no arctangent, root, division or floor, the most
+-- expensive parts of that lookup. With an even @nd@ the lower half turn is
+-- first turned onto the upper, which halves the boundaries to count.
+directionSector :: Field a => Int -> a -> a -> a
+directionSector nd x y
+  | even nd =
+      let lower = negate y -- positive below the x axis
+          x' = select lower (negate x) x
+          y' = select lower (negate y) y
+      in select lower (fromIntegral (nd `div` 2)) 0 + passed x' y' [1 .. nd `div` 2 - 1]
+  | otherwise =
+      -- below the x axis every boundary of the upper half is passed, above
+      -- it none of the lower half is
+      let lower = negate y
+          upper = [j | j <- [1 .. nd - 1], 2 * j < nd]
+          lowerHalf = [j | j <- [1 .. nd - 1], 2 * j > nd]
+      in select lower (fromIntegral (length upper) + passed x y lowerHalf) (passed x y upper)
+  where
+    sigma = 2 * pi / fromIntegral nd :: Double
+    passed u v js = sum [ select (constant (cos a) * v - constant (sin a) * u) 1 0
+                        | j <- js, let a = sigma * fromIntegral j ]
 
 -- | Walk the outline: from the centre @p@ with unit tangent axis @axis@ and
 -- angle @angle@, along a geodesic in each direction, in equal steps of

@@ -23,7 +23,7 @@ import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
-import Manifold.Body (PolygonParams (..))
+import Manifold.Body (PolygonParams (..), directionSector)
 import Manifold.Field
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -128,8 +128,17 @@ neighbours w p visit = do
 pointInBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m))
 {-# INLINE pointInBody #-}
 pointInBody l w j y q = do
-  e <- edgeFacing l w j y q
+  turn <- bodyTurn w j
+  e <- edgeFacing l w j y turn q
   pure (efDepth e, efNormal e)
+
+-- | The cosine and sine of body @j@'s angle as its outline was last walked,
+-- which turn a point into its own directions. Read once before a loop over
+-- points: read in the loop, GHC floated the read's bounds check out of it
+-- as a lazy value, allocated at every pair.
+bodyTurn :: Imp m => WorldArrays (Array m) -> Index m -> m (Scalar m, Scalar m)
+{-# INLINE bodyTurn #-}
+bodyTurn w j = (,) <$> readSlot w j TurnCos <*> readSlot w j TurnSin
 
 -- | The outline edge of body Y that the direction from Y's centre to a
 -- point crosses, seen from the point.
@@ -139,20 +148,18 @@ data EdgeFacing s = EdgeFacing
   , efVertex :: V3 s -- ^ one end of the edge
   }
 
-edgeFacing :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (EdgeFacing (Scalar m))
+edgeFacing :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> (Scalar m, Scalar m)
+           -> V3 (Scalar m) -> m (EdgeFacing (Scalar m))
 {-# INLINE edgeFacing #-}
-edgeFacing l w j y q = do
+edgeFacing l w j y (c0, s0) q = do
   let nd = polyDirections (polygon l)
-      sector = constant (2 * pi / fromIntegral nd)
       c = bfCentre y
       d = q ^-^ c
   qx <- share (d `dot` bfU y)
   qy <- share (d `dot` bfW y)
   h <- share (d `dot` bfNormal y)
-  let beta = atan2F qy qx - bfAngle y
-      turn = constant (2 * pi)
-      beta' = beta - turn * floorF (beta / turn)
-  k <- share (minF (fromIntegral (nd - 1)) (floorF (beta' / sector)))
+  -- the point turned back by the body's angle: in its own directions
+  k <- share (directionSector nd (qx * c0 + qy * s0) (qy * c0 - qx * s0))
   let k1 = select (k - fromIntegral nd + 1.5) 0 (k + 1)
   o0 <- outlineVertex l w j (toIndex k)
   o1 <- outlineVertex l w j (toIndex k1)
@@ -312,6 +319,7 @@ deepestInside l w slot x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
   fy <- bodyFrame w y
+  turn <- bodyTurn w y
   deepest <- newRef 0
   mx <- newRef 0
   my <- newRef 0
@@ -323,7 +331,7 @@ deepestInside l w slot x y signs shift = do
     q <- outlineVertex l w x d
     writeArray (wProbe w) (slot + d) (-1)
     whenNear fy (image q) $ do
-      e <- edgeFacing l w y fy (image q)
+      e <- edgeFacing l w y fy turn (image q)
       writeArray (wProbe w) (slot + d) (efDepth e)
       best <- readRef deepest
       whenPositive (efDepth e - best) $ do

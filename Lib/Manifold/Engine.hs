@@ -29,6 +29,7 @@ module Manifold.Engine
   , engineScript
   , engineProcedures
   , engineObject
+  , engineSubroutines
   , stepProcedures
   , stagedPhases
   , phaseFunction
@@ -283,7 +284,19 @@ engineProcedures sp l =
   unlines (("function step(" ++ intercalate ", " worldParams ++ ") {")
            : ["  " ++ phaseFunction name ++ "(" ++ intercalate ", " worldParams ++ ");" | (name, _) <- stagedPhases]
            ++ ["}"])
-  : stageProcedures (stepProcedures sp l ++
+  : stageProcedures (engineProcedureList sp l)
+
+-- | The names of the subroutines among a space's printed functions (each
+-- printed function begins @function NAME(@): all but @step@ and the
+-- procedures.
+engineSubroutines :: Space -> Layout -> [String] -> [String]
+engineSubroutines sp l printed =
+  [ name | text <- printed, let name = takeWhile (/= '(') (drop (length "function ") text)
+         , name `notElem` ("step" : map (procName . fst) (engineProcedureList sp l)) ]
+
+-- | The procedures the page calls: the phases, then the rest.
+engineProcedureList :: Space -> Layout -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())]
+engineProcedureList sp l = stepProcedures sp l ++
   [ (JsProcedure "polygonise" worldParams [], \_ _ -> polygoniseAll sp l stagedArrays)
   , (JsProcedure "addBody" worldParams
       ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"],
@@ -301,7 +314,7 @@ engineProcedures sp l =
   , (JsProcedure "drag" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
   , (JsProcedure "release" worldParams [], \_ _ -> release stagedArrays)
-  ])
+  ]
 
 -- | The step's phases as procedures to print, one for each phase.
 stepProcedures :: Space -> Layout -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())]
@@ -327,8 +340,8 @@ engineScript sp l = unlines (engineProcedures sp l)
 -- how to allocate a world (sizes are linear in the capacity), what each
 -- index of the meta, parameter, per-body, contact and mouse arrays means,
 -- the default parameters, and the procedures.
-engineObject :: Layout -> String
-engineObject l =
+engineObject :: Layout -> [String] -> String
+engineObject l subroutines =
   let at c = arraySizes l { capacity = c }
       one = at 1
       two = at 2
@@ -357,6 +370,8 @@ engineObject l =
     , "  mouse: " ++ enumObj MActive ++ ","
     , "  defaults: { " ++ intercalate ", " [k ++ ": " ++ show v | (k, v) <- params] ++ " },"
     , "  phases: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ phaseFunction name ++ "]" | (name, _) <- phaseNames] ++ "],"
+    , "  // what the phases call, each printed once: for profiles, and for tests that optimise all of the step"
+    , "  subroutines: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ name ++ "]" | name <- subroutines] ++ "],"
     , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody, placementAngle: placementAngle,"
     , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
     , "}"

@@ -162,9 +162,26 @@ mouseRows sp w warm = do
 solve :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE solve :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 solve sp _ w = do
-  dt <- readParam w Dt
   iterations <- readParam w Iterations
-  mu <- readParam w Friction
+  -- The preparation and each sweep over the rows are printed as functions
+  -- of their own: V8 optimised the whole solver as one function only
+  -- sometimes. In a page that had run a torus of 3000 bodies, Chromium's
+  -- optimising compiler gave up on the rectangle's solver as "too big to be
+  -- optimized" and never tried again, and the page's solve then took 100 ms
+  -- a step instead of 5 (bench/README).
+  subroutine "solvePrepare" [] $ \_ -> prepareRows w
+  mouseRows sp w True
+  forEach (toIndex iterations) $ \_ -> do
+    subroutine "solveSweep" [] $ \_ -> sweepRows w
+    mouseRows sp w False
+  rememberImpulses w
+
+-- | Each contact row's masses and bias, and its impulses warm started from
+-- the last step's row of the same key, applied.
+prepareRows :: Imp m => WorldArrays (Array m) -> m ()
+{-# INLINE prepareRows #-}
+prepareRows w = do
+  dt <- readParam w Dt
   restitution <- readParam w Restitution
   beta <- readParam w Baumgarte
   slop <- readParam w Slop
@@ -172,7 +189,6 @@ solve sp _ w = do
   warmStart <- readParam w WarmStart
   maxCorrection <- readParam w MaxCorrection
   nc <- readMeta w ContactCount
-  -- prepare, and warm start from the last step
   forEach (toIndex nc) $ \c -> do
     a <- toIndex <$> readContact w c CA
     b <- readContact w c CB
@@ -207,65 +223,74 @@ solve sp _ w = do
     writeContact w c ImpulseT ltv
     applyRow w a b normal lnv
     applyRow w a b tangent ltv
-  mouseRows sp w True
-  -- iterate
-  forEach (toIndex iterations) $ \_ -> do
-    forEach (toIndex nc) $ \c -> do
-      a <- toIndex <$> readContact w c CA
-      b <- readContact w c CB
-      tangent <- readRow w c TaX TbX
-      normal <- readRow w c JaX JbX
-      scale <- readContact w c CSelfScale
-      ln <- readContact w c ImpulseN
-      lt <- readContact w c ImpulseT
-      kt <- readContact w c TangentMass
-      kn <- readContact w c NormalMass
-      bias <- readContact w c CBias
-      -- both bodies' velocities are read once and written once (a row
-      -- without body b has zero Jacobians on its side: body 0 stands in);
-      -- when a body meets its own image (a = b) each side's change is
-      -- added to the other's copy too, so both copies stay the body's
-      bIx <- share (maxF 0 b)
-      let bi = toIndex bIx
-      hasB <- share (b + 0.5)
-      same <- share (select (0.5 - abs (toScalar a - b)) 1 0)
-      ima <- readSlot w a InvMass
-      iia <- readSlot w a InvInertia
-      imb <- readSlot w bi InvMass
-      iib <- readSlot w bi InvInertia
-      va0 <- readVel w a
-      vb0 <- readVel w bi
-      -- inlined: lifted out as functions of their own, the generic
-      -- (native, uncompiled) step boxed every row and velocity it passed
-      let along r va vb = share (sideA r va - select hasB (sideB r vb) 0)
-          {-# INLINE along #-}
-          apply r lambda (Vel va oa) (Vel vb ob) = do
-            dva <- share3 ((ima * lambda) *^ rowA r)
-            doa <- share (iia * lambda * rowAW r)
-            dvb <- share3 ((imb * negate lambda) *^ rowB r)
-            dob <- share (iib * negate lambda * rowBW r)
-            va' <- share3 (va ^+^ dva ^+^ same *^ dvb)
-            oa' <- share (oa + doa + same * dob)
-            vb' <- share3 (vb ^+^ dvb ^+^ same *^ dva)
-            ob' <- share (ob + dob + same * doa)
-            pure (Vel va' oa', Vel vb' ob')
-          {-# INLINE apply #-}
-      vt <- along tangent va0 vb0
-      let limit = mu * ln
-      lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
-      writeContact w c ImpulseT lt'
-      (va1, vb1) <- apply tangent (lt' - lt) va0 vb0
-      vn <- along normal va1 vb1
-      ln' <- share (finiteOr0 (maxF 0 (ln + scale * (bias - vn) * kn)))
-      writeContact w c ImpulseN ln'
-      (Vel va2 oa2, Vel vb2 ob2) <- apply normal (ln' - ln) va1 vb1
-      write3 (wVel w) a va2
-      writeSlot w a Omega oa2
-      whenPositive hasB $ do
-        write3 (wVel w) bi vb2
-        writeSlot w bi Omega ob2
-    mouseRows sp w False
-  -- remember the impulses, grouped by owner, for the next step
+
+-- | One sequential-impulse sweep over the contact rows: friction, then the
+-- normal impulse, each clamped.
+sweepRows :: Imp m => WorldArrays (Array m) -> m ()
+{-# INLINE sweepRows #-}
+sweepRows w = do
+  mu <- readParam w Friction
+  nc <- readMeta w ContactCount
+  forEach (toIndex nc) $ \c -> do
+    a <- toIndex <$> readContact w c CA
+    b <- readContact w c CB
+    tangent <- readRow w c TaX TbX
+    normal <- readRow w c JaX JbX
+    scale <- readContact w c CSelfScale
+    ln <- readContact w c ImpulseN
+    lt <- readContact w c ImpulseT
+    kt <- readContact w c TangentMass
+    kn <- readContact w c NormalMass
+    bias <- readContact w c CBias
+    -- both bodies' velocities are read once and written once (a row
+    -- without body b has zero Jacobians on its side: body 0 stands in);
+    -- when a body meets its own image (a = b) each side's change is
+    -- added to the other's copy too, so both copies stay the body's
+    bIx <- share (maxF 0 b)
+    let bi = toIndex bIx
+    hasB <- share (b + 0.5)
+    same <- share (select (0.5 - abs (toScalar a - b)) 1 0)
+    ima <- readSlot w a InvMass
+    iia <- readSlot w a InvInertia
+    imb <- readSlot w bi InvMass
+    iib <- readSlot w bi InvInertia
+    va0 <- readVel w a
+    vb0 <- readVel w bi
+    -- inlined: lifted out as functions of their own, the generic
+    -- (native, uncompiled) step boxed every row and velocity it passed
+    let along r va vb = share (sideA r va - select hasB (sideB r vb) 0)
+        {-# INLINE along #-}
+        apply r lambda (Vel va oa) (Vel vb ob) = do
+          dva <- share3 ((ima * lambda) *^ rowA r)
+          doa <- share (iia * lambda * rowAW r)
+          dvb <- share3 ((imb * negate lambda) *^ rowB r)
+          dob <- share (iib * negate lambda * rowBW r)
+          va' <- share3 (va ^+^ dva ^+^ same *^ dvb)
+          oa' <- share (oa + doa + same * dob)
+          vb' <- share3 (vb ^+^ dvb ^+^ same *^ dva)
+          ob' <- share (ob + dob + same * doa)
+          pure (Vel va' oa', Vel vb' ob')
+        {-# INLINE apply #-}
+    vt <- along tangent va0 vb0
+    let limit = mu * ln
+    lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
+    writeContact w c ImpulseT lt'
+    (va1, vb1) <- apply tangent (lt' - lt) va0 vb0
+    vn <- along normal va1 vb1
+    ln' <- share (finiteOr0 (maxF 0 (ln + scale * (bias - vn) * kn)))
+    writeContact w c ImpulseN ln'
+    (Vel va2 oa2, Vel vb2 ob2) <- apply normal (ln' - ln) va1 vb1
+    write3 (wVel w) a va2
+    writeSlot w a Omega oa2
+    whenPositive hasB $ do
+      write3 (wVel w) bi vb2
+      writeSlot w bi Omega ob2
+
+-- | The impulses, grouped by owner, for the next step's warm start.
+rememberImpulses :: Imp m => WorldArrays (Array m) -> m ()
+{-# INLINE rememberImpulses #-}
+rememberImpulses w = do
+  nc <- readMeta w ContactCount
   bodies <- readMeta w BodyCount
   forEach (toIndex bodies) $ \i -> writeArray (wBodyPrev w) (2 * i + 1) 0
   forEach (toIndex nc) $ \c -> do

@@ -120,7 +120,12 @@ layout :: Int -> Layout
 layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 
 -- | Per body.
-data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius
+--
+-- 'TurnCos' and 'TurnSin' are the cosine and sine of 'Angle' as the outline
+-- was last walked ('polygoniseBody' writes them with the vertices), so that
+-- the narrow phase turns a point into the body's own directions without an
+-- arctangent.
+data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos | TurnSin
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters.
@@ -478,8 +483,12 @@ polygoniseBody sp l w i = do
   fine <- share (select hmax (rmax - hmax) 1)
   -- the direction's cosine and sine, turned by 2π/nd from one direction to
   -- the next (two transcendental calls a body instead of two a direction)
-  cosRef <- newRef (cos angle)
-  sinRef <- newRef (sin angle)
+  cos0 <- share (cos angle)
+  sin0 <- share (sin angle)
+  writeSlot w i TurnCos cos0
+  writeSlot w i TurnSin sin0
+  cosRef <- newRef cos0
+  sinRef <- newRef sin0
   let turnC = constant (cos (2 * pi / fromIntegral nd))
       turnS = constant (sin (2 * pi / fromIntegral nd))
       nextDirection = do

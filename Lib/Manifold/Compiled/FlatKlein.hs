@@ -36,8 +36,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    chkI scalars (6 * i3) 2 2
-    t4 <- rdU scalars ((6 * i3) + 2)
+    chkI scalars (8 * i3) 2 2
+    t4 <- rdU scalars ((8 * i3) + 2)
     if (t4 * t2) > 0 then do
       chkI pos (3 * i3) 0 2
       t5 <- rdU pos (3 * i3)
@@ -76,8 +76,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   wrU locals 0 0.0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    chkI scalars (6 * i1) 5 5
-    t2 <- rdU scalars ((6 * i1) + 5)
+    chkI scalars (8 * i1) 5 5
+    t2 <- rdU scalars ((8 * i1) + 5)
     t3 <- rdU locals 0
     wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
@@ -140,9 +140,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t30 <- rdU pos (3 * i29)
     t31 <- rdU pos ((3 * i29) + 1)
     t32 <- rdU pos ((3 * i29) + 2)
-    chkI scalars (6 * i29) 2 5
-    t33 <- rdU scalars ((6 * i29) + 5)
-    t34 <- rdU scalars ((6 * i29) + 2)
+    chkI scalars (8 * i29) 2 5
+    t33 <- rdU scalars ((8 * i29) + 5)
+    t34 <- rdU scalars ((8 * i29) + 2)
     t35 <- rdU meta 5
     wrU locals 2 0.0
     wrU locals 2 0.0
@@ -184,9 +184,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t59 <- rdU pos (3 * (truncate t57))
                   t60 <- rdU pos ((3 * (truncate t57)) + 1)
                   t61 <- rdU pos ((3 * (truncate t57)) + 2)
-                  chkI scalars (6 * (truncate t57)) 2 5
-                  t62 <- rdU scalars ((6 * (truncate t57)) + 5)
-                  t63 <- rdU scalars ((6 * (truncate t57)) + 2)
+                  chkI scalars (8 * (truncate t57)) 2 5
+                  t62 <- rdU scalars ((8 * (truncate t57)) + 5)
+                  t63 <- rdU scalars ((8 * (truncate t57)) + 2)
                   let !t64 = (t34 + t63)
                   let !t65 = (t30 + (negate t59))
                   let !t66 = (t31 + (negate t60))
@@ -261,9 +261,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t98 <- rdU pos (3 * (truncate t96))
                   t99 <- rdU pos ((3 * (truncate t96)) + 1)
                   t100 <- rdU pos ((3 * (truncate t96)) + 2)
-                  chkI scalars (6 * (truncate t96)) 2 5
-                  t101 <- rdU scalars ((6 * (truncate t96)) + 5)
-                  t102 <- rdU scalars ((6 * (truncate t96)) + 2)
+                  chkI scalars (8 * (truncate t96)) 2 5
+                  t101 <- rdU scalars ((8 * (truncate t96)) + 5)
+                  t102 <- rdU scalars ((8 * (truncate t96)) + 2)
                   let !t103 = (t34 + t102)
                   let !t104 = (s73 + (negate t98))
                   let !t105 = (t31 + (negate t99))
@@ -338,9 +338,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t137 <- rdU pos (3 * (truncate t135))
                   t138 <- rdU pos ((3 * (truncate t135)) + 1)
                   t139 <- rdU pos ((3 * (truncate t135)) + 2)
-                  chkI scalars (6 * (truncate t135)) 2 5
-                  t140 <- rdU scalars ((6 * (truncate t135)) + 5)
-                  t141 <- rdU scalars ((6 * (truncate t135)) + 2)
+                  chkI scalars (8 * (truncate t135)) 2 5
+                  t140 <- rdU scalars ((8 * (truncate t135)) + 5)
+                  t141 <- rdU scalars ((8 * (truncate t135)) + 2)
                   let !t142 = (t34 + t141)
                   let !t143 = (s112 + (negate t137))
                   let !t144 = (t31 + (negate t138))
@@ -415,9 +415,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t176 <- rdU pos (3 * (truncate t174))
                   t177 <- rdU pos ((3 * (truncate t174)) + 1)
                   t178 <- rdU pos ((3 * (truncate t174)) + 2)
-                  chkI scalars (6 * (truncate t174)) 2 5
-                  t179 <- rdU scalars ((6 * (truncate t174)) + 5)
-                  t180 <- rdU scalars ((6 * (truncate t174)) + 2)
+                  chkI scalars (8 * (truncate t174)) 2 5
+                  t179 <- rdU scalars ((8 * (truncate t174)) + 5)
+                  t180 <- rdU scalars ((8 * (truncate t174)) + 2)
                   let !t181 = (t34 + t180)
                   let !t182 = (s151 + (negate t176))
                   let !t183 = (t31 + (negate t177))
@@ -489,9 +489,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t212 <- rdU pos (3 * (truncate t210))
                   t213 <- rdU pos ((3 * (truncate t210)) + 1)
                   t214 <- rdU pos ((3 * (truncate t210)) + 2)
-                  chkI scalars (6 * (truncate t210)) 2 5
-                  t215 <- rdU scalars ((6 * (truncate t210)) + 5)
-                  t216 <- rdU scalars ((6 * (truncate t210)) + 2)
+                  chkI scalars (8 * (truncate t210)) 2 5
+                  t215 <- rdU scalars ((8 * (truncate t210)) + 5)
+                  t216 <- rdU scalars ((8 * (truncate t210)) + 2)
                   let !t217 = (t34 + t216)
                   let !t218 = (t30 + (negate t212))
                   let !t219 = (t31 + (negate t213))
@@ -563,9 +563,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t248 <- rdU pos (3 * (truncate t246))
                   t249 <- rdU pos ((3 * (truncate t246)) + 1)
                   t250 <- rdU pos ((3 * (truncate t246)) + 2)
-                  chkI scalars (6 * (truncate t246)) 2 5
-                  t251 <- rdU scalars ((6 * (truncate t246)) + 5)
-                  t252 <- rdU scalars ((6 * (truncate t246)) + 2)
+                  chkI scalars (8 * (truncate t246)) 2 5
+                  t251 <- rdU scalars ((8 * (truncate t246)) + 5)
+                  t252 <- rdU scalars ((8 * (truncate t246)) + 2)
                   let !t253 = (t34 + t252)
                   let !t254 = (t30 + (negate t248))
                   let !t255 = (t31 + (negate t249))
@@ -640,9 +640,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t287 <- rdU pos (3 * (truncate t285))
                   t288 <- rdU pos ((3 * (truncate t285)) + 1)
                   t289 <- rdU pos ((3 * (truncate t285)) + 2)
-                  chkI scalars (6 * (truncate t285)) 2 5
-                  t290 <- rdU scalars ((6 * (truncate t285)) + 5)
-                  t291 <- rdU scalars ((6 * (truncate t285)) + 2)
+                  chkI scalars (8 * (truncate t285)) 2 5
+                  t290 <- rdU scalars ((8 * (truncate t285)) + 5)
+                  t291 <- rdU scalars ((8 * (truncate t285)) + 2)
                   let !t292 = (t34 + t291)
                   let !t293 = (s262 + (negate t287))
                   let !t294 = (t31 + (negate t288))
@@ -717,9 +717,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t326 <- rdU pos (3 * (truncate t324))
                   t327 <- rdU pos ((3 * (truncate t324)) + 1)
                   t328 <- rdU pos ((3 * (truncate t324)) + 2)
-                  chkI scalars (6 * (truncate t324)) 2 5
-                  t329 <- rdU scalars ((6 * (truncate t324)) + 5)
-                  t330 <- rdU scalars ((6 * (truncate t324)) + 2)
+                  chkI scalars (8 * (truncate t324)) 2 5
+                  t329 <- rdU scalars ((8 * (truncate t324)) + 5)
+                  t330 <- rdU scalars ((8 * (truncate t324)) + 2)
                   let !t331 = (t34 + t330)
                   let !t332 = (s301 + (negate t326))
                   let !t333 = (t31 + (negate t327))
@@ -794,9 +794,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t365 <- rdU pos (3 * (truncate t363))
                   t366 <- rdU pos ((3 * (truncate t363)) + 1)
                   t367 <- rdU pos ((3 * (truncate t363)) + 2)
-                  chkI scalars (6 * (truncate t363)) 2 5
-                  t368 <- rdU scalars ((6 * (truncate t363)) + 5)
-                  t369 <- rdU scalars ((6 * (truncate t363)) + 2)
+                  chkI scalars (8 * (truncate t363)) 2 5
+                  t368 <- rdU scalars ((8 * (truncate t363)) + 5)
+                  t369 <- rdU scalars ((8 * (truncate t363)) + 2)
                   let !t370 = (t34 + t369)
                   let !t371 = (s340 + (negate t365))
                   let !t372 = (t31 + (negate t366))
@@ -1028,11 +1028,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s511 = ((t506 * t510) - (t507 * t509))
           let !s512 = ((t507 * t508) - (t505 * t510))
           let !s513 = ((t505 * t509) - (t506 * t508))
-          chkI scalars (6 * i29) 0 0
-          t514 <- rdU scalars (6 * i29)
-          t515 <- rdU scalars ((6 * i29) + 5)
-          t516 <- rdU scalars ((6 * i29) + 2)
-          t517 <- rdU scalars ((6 * i29) + 3)
+          chkI scalars (8 * i29) 0 0
+          t514 <- rdU scalars (8 * i29)
+          t515 <- rdU scalars ((8 * i29) + 5)
+          t516 <- rdU scalars ((8 * i29) + 2)
+          t517 <- rdU scalars ((8 * i29) + 3)
           chkI contacts (30 * (truncate t500)) 0 29
           wrU contacts (30 * (truncate t500)) d29
           wrU contacts ((30 * (truncate t500)) + 1) (-1.0)
@@ -1067,11 +1067,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             let !s527 = ((t522 * t526) - (t523 * t525))
             let !s528 = ((t523 * t524) - (t521 * t526))
             let !s529 = ((t521 * t525) - (t522 * t524))
-            chkI scalars 0 (-6) (-1)
-            t530 <- rdU scalars (-6)
-            t531 <- rdU scalars (-1)
-            t532 <- rdU scalars (-4)
-            t533 <- rdU scalars (-3)
+            chkI scalars 0 (-8) (-3)
+            t530 <- rdU scalars (-8)
+            t531 <- rdU scalars (-3)
+            t532 <- rdU scalars (-6)
+            t533 <- rdU scalars (-5)
             wrU contacts ((30 * (truncate t500)) + 8) (s497 + (negate ((((t521 * s497) + (t522 * s498)) + (t523 * s499)) * t521)))
             wrU contacts ((30 * (truncate t500)) + 9) (s498 + (negate ((((t521 * s497) + (t522 * s498)) + (t523 * s499)) * t522)))
             wrU contacts ((30 * (truncate t500)) + 10) (s499 + (negate ((((t521 * s497) + (t522 * s498)) + (t523 * s499)) * t523)))
@@ -1114,743 +1114,471 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 4
-  chkI params 0 0 9
-  t0 <- rdU params 0
-  t1 <- rdU params 2
-  t2 <- rdU params 3
-  t3 <- rdU params 4
-  t4 <- rdU params 5
-  t5 <- rdU params 6
-  t6 <- rdU params 7
-  t7 <- rdU params 8
-  t8 <- rdU params 9
-  chkI meta 0 0 2
-  t9 <- rdU meta 2
-  loopI 0.0 t9 $ \i10 -> do
-    let !d10 = fromIntegral i10 :: Double
-    chkI contacts (30 * i10) 0 26
-    t11 <- rdU contacts (30 * i10)
-    t12 <- rdU contacts ((30 * i10) + 1)
-    t13 <- rdU contacts ((30 * i10) + 2)
-    t14 <- rdU contacts ((30 * i10) + 3)
-    t15 <- rdU contacts ((30 * i10) + 4)
-    t16 <- rdU contacts ((30 * i10) + 5)
-    t17 <- rdU contacts ((30 * i10) + 6)
-    t18 <- rdU contacts ((30 * i10) + 7)
-    t19 <- rdU contacts ((30 * i10) + 8)
-    t20 <- rdU contacts ((30 * i10) + 9)
-    t21 <- rdU contacts ((30 * i10) + 10)
-    t22 <- rdU contacts ((30 * i10) + 11)
-    t23 <- rdU contacts ((30 * i10) + 12)
-    t24 <- rdU contacts ((30 * i10) + 13)
-    t25 <- rdU contacts ((30 * i10) + 14)
-    t26 <- rdU contacts ((30 * i10) + 15)
-    t27 <- rdU contacts ((30 * i10) + 16)
-    t28 <- rdU contacts ((30 * i10) + 17)
-    t29 <- rdU contacts ((30 * i10) + 18)
-    t30 <- rdU contacts ((30 * i10) + 19)
-    chkI scalars (6 * (truncate t11)) 1 3
-    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 0 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
-      pure ()
-    else do
-      pure ()
-    t35 <- rdU locals 0
-    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
-    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
-    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 1 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
-      pure ()
-    else do
-      pure ()
-    t42 <- rdU locals 1
-    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
-    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
-    wrU contacts ((30 * i10) + 21) s37
-    wrU contacts ((30 * i10) + 22) s44
-    t45 <- rdU contacts ((30 * i10) + 20)
-    t46 <- rdU contacts ((30 * i10) + 26)
-    chkI vel (3 * (truncate t11)) 0 2
-    t47 <- rdU vel (3 * (truncate t11))
-    t48 <- rdU vel ((3 * (truncate t11)) + 1)
-    t49 <- rdU vel ((3 * (truncate t11)) + 2)
-    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU locals 2 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI vel (3 * (truncate t12)) 0 2
-      t51 <- rdU vel (3 * (truncate t12))
-      t52 <- rdU vel ((3 * (truncate t12)) + 1)
-      t53 <- rdU vel ((3 * (truncate t12)) + 2)
-      chkI scalars (6 * (truncate t12)) 1 1
-      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
-      pure ()
-    else do
-      pure ()
-    t55 <- rdU locals 2
-    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
-    let !t57 = (t45 - t5)
-    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
-    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
-    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
-    wrU locals 3 0.0
-    wrU locals 4 0.0
-    chkI bodyPrev (2 * (truncate t13)) 0 1
-    t61 <- rdU bodyPrev (2 * (truncate t13))
-    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n63 = (t61 + t62)
-    loopI t61 n63 $ \i64 -> do
-      let !d64 = fromIntegral i64 :: Double
-      chkI prev (4 * i64) 1 1
-      t65 <- rdU prev ((4 * i64) + 1)
-      if (0.5 - (abs (t65 - t14))) > 0 then do
-        chkI prev (4 * i64) 2 3
-        t66 <- rdU prev ((4 * i64) + 2)
-        wrU locals 3 t66
-        t67 <- rdU prev ((4 * i64) + 3)
-        wrU locals 4 t67
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t68 <- rdU locals 3
-    t69 <- rdU locals 4
-    wrU contacts ((30 * i10) + 24) (t7 * t68)
-    wrU contacts ((30 * i10) + 25) (t7 * t69)
-    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t72 <- rdU vel (3 * (truncate t11))
-    t73 <- rdU vel ((3 * (truncate t11)) + 1)
-    t74 <- rdU vel ((3 * (truncate t11)) + 2)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t78 <- rdU vel (3 * (truncate t12))
-      t79 <- rdU vel ((3 * (truncate t12)) + 1)
-      t80 <- rdU vel ((3 * (truncate t12)) + 2)
-      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
-      pure ()
-    else do
-      pure ()
-    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t84 <- rdU vel (3 * (truncate t11))
-    t85 <- rdU vel ((3 * (truncate t11)) + 1)
-    t86 <- rdU vel ((3 * (truncate t11)) + 2)
-    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t90 <- rdU vel (3 * (truncate t12))
-      t91 <- rdU vel ((3 * (truncate t12)) + 1)
-      t92 <- rdU vel ((3 * (truncate t12)) + 2)
-      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
-      pure ()
-    else do
-      pure ()
-    pure ()
+  chkI params 0 2 2
+  t0 <- rdU params 2
+  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
-  t94 <- rdU mouse 0
-  if t94 > 0 then do
+  t1 <- rdU mouse 0
+  if t1 > 0 then do
     chkI mouse 0 1 1
-    t95 <- rdU mouse 1
-    chkI scalars (6 * (truncate t95)) 2 2
-    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
-    if t96 > 0 then do
-      chkI scalars (6 * (truncate t95)) 0 5
-      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t98 <- rdU params 0
-      chkI pos (3 * (truncate t95)) 0 2
-      t99 <- rdU pos (3 * (truncate t95))
-      t100 <- rdU pos ((3 * (truncate t95)) + 1)
-      t101 <- rdU pos ((3 * (truncate t95)) + 2)
-      chkI normal (3 * (truncate t95)) 0 2
-      t102 <- rdU normal (3 * (truncate t95))
-      t103 <- rdU normal ((3 * (truncate t95)) + 1)
-      t104 <- rdU normal ((3 * (truncate t95)) + 2)
-      chkI axis (3 * (truncate t95)) 0 2
-      t105 <- rdU axis (3 * (truncate t95))
-      t106 <- rdU axis ((3 * (truncate t95)) + 1)
-      t107 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s108 = ((t103 * t107) - (t104 * t106))
-      let !s109 = ((t104 * t105) - (t102 * t107))
-      let !s110 = ((t102 * t106) - (t103 * t105))
-      t111 <- rdU scalars (6 * (truncate t95))
-      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t115 <- rdU pos (3 * (truncate t95))
-      t116 <- rdU pos ((3 * (truncate t95)) + 1)
-      t117 <- rdU pos ((3 * (truncate t95)) + 2)
-      t118 <- rdU normal (3 * (truncate t95))
-      t119 <- rdU normal ((3 * (truncate t95)) + 1)
-      t120 <- rdU normal ((3 * (truncate t95)) + 2)
-      t121 <- rdU axis (3 * (truncate t95))
-      t122 <- rdU axis ((3 * (truncate t95)) + 1)
-      t123 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s124 = ((t119 * t123) - (t120 * t122))
-      let !s125 = ((t120 * t121) - (t118 * t123))
-      let !s126 = ((t118 * t122) - (t119 * t121))
-      t127 <- rdU scalars (6 * (truncate t95))
-      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
+    t2 <- rdU mouse 1
+    chkI scalars (8 * (truncate t2)) 2 2
+    t3 <- rdU scalars ((8 * (truncate t2)) + 2)
+    if t3 > 0 then do
+      chkI scalars (8 * (truncate t2)) 0 5
+      t4 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI params 0 0 0
+      t5 <- rdU params 0
+      chkI pos (3 * (truncate t2)) 0 2
+      t6 <- rdU pos (3 * (truncate t2))
+      t7 <- rdU pos ((3 * (truncate t2)) + 1)
+      t8 <- rdU pos ((3 * (truncate t2)) + 2)
+      chkI normal (3 * (truncate t2)) 0 2
+      t9 <- rdU normal (3 * (truncate t2))
+      t10 <- rdU normal ((3 * (truncate t2)) + 1)
+      t11 <- rdU normal ((3 * (truncate t2)) + 2)
+      chkI axis (3 * (truncate t2)) 0 2
+      t12 <- rdU axis (3 * (truncate t2))
+      t13 <- rdU axis ((3 * (truncate t2)) + 1)
+      t14 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s15 = ((t10 * t14) - (t11 * t13))
+      let !s16 = ((t11 * t12) - (t9 * t14))
+      let !s17 = ((t9 * t13) - (t10 * t12))
+      t18 <- rdU scalars (8 * (truncate t2))
+      t19 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t20 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t21 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t22 <- rdU pos (3 * (truncate t2))
+      t23 <- rdU pos ((3 * (truncate t2)) + 1)
+      t24 <- rdU pos ((3 * (truncate t2)) + 2)
+      t25 <- rdU normal (3 * (truncate t2))
+      t26 <- rdU normal ((3 * (truncate t2)) + 1)
+      t27 <- rdU normal ((3 * (truncate t2)) + 2)
+      t28 <- rdU axis (3 * (truncate t2))
+      t29 <- rdU axis ((3 * (truncate t2)) + 1)
+      t30 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s31 = ((t26 * t30) - (t27 * t29))
+      let !s32 = ((t27 * t28) - (t25 * t30))
+      let !s33 = ((t25 * t29) - (t26 * t28))
+      t34 <- rdU scalars (8 * (truncate t2))
+      t35 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t36 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t37 <- rdU scalars ((8 * (truncate t2)) + 3)
       chkI mouse 0 2 11
-      t131 <- rdU mouse 2
-      t132 <- rdU mouse 3
-      let !t133 = (t131 / 4.0)
-      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
-      let !t135 = (t127 + t132)
-      let !t136 = (cos t135)
-      let !t137 = (sin t135)
-      let !t138 = (1.0 - t134)
-      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
-      let !t140 = (if (if ((abs t139) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t139 + (negate t139)) else t139)
-      let !t141 = (if (if ((abs t140) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t140 + (negate t140)) else t140)
-      let !s142 = ((t134 * (t115 + (t133 * ((t136 * t121) + (t137 * s124))))) + (t138 * t115))
-      let !s143 = ((t134 * (if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141)) + (t138 * t116))
-      let !s144 = ((t134 * (t117 + (t133 * ((t136 * t123) + (t137 * s126))))) + (t138 * t117))
-      let !t145 = ((t136 * t121) + (t137 * s124))
-      let !t146 = ((t136 * t122) + (t137 * s125))
-      let !t147 = ((t136 * t123) + (t137 * s126))
-      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
-      let !t149 = (if (abs t133) > 0 then (recip t133) else 0.0)
-      let !t150 = (t149 * ((t115 + (t133 * t145)) + (negate t115)))
-      let !t151 = (t149 * ((if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141) + (negate t116)))
-      let !t152 = (t151 + (negate t151))
-      let !t153 = (t149 * ((t117 + (t133 * t147)) + (negate t117)))
-      let !t154 = (sqrt (((t150 * t150) + (t152 * t152)) + (t153 * t153)))
-      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
-      let !s156 = ((t134 * (t148 * (t155 * t150))) + (t138 * t145))
-      let !s157 = ((t134 * (t148 * (t155 * t152))) + (t138 * t146))
-      let !s158 = ((t134 * (t148 * (t155 * t153))) + (t138 * t147))
-      let !t159 = (s143 + (t133 * s157))
-      let !t160 = (if (if ((abs t159) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t159 + (negate t159)) else t159)
-      let !t161 = (if (if ((abs t160) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t160 + (negate t160)) else t160)
-      let !s162 = ((t134 * (s142 + (t133 * s156))) + (t138 * s142))
-      let !s163 = ((t134 * (if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161)) + (t138 * s143))
-      let !s164 = ((t134 * (s144 + (t133 * s158))) + (t138 * s144))
-      let !t165 = (sqrt (((s156 * s156) + (s157 * s157)) + (s158 * s158)))
-      let !t166 = (t149 * ((s142 + (t133 * s156)) + (negate s142)))
-      let !t167 = (t149 * ((if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161) + (negate s143)))
-      let !t168 = (t167 + (negate t167))
-      let !t169 = (t149 * ((s144 + (t133 * s158)) + (negate s144)))
-      let !t170 = (sqrt (((t166 * t166) + (t168 * t168)) + (t169 * t169)))
-      let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
-      let !s172 = ((t134 * (t165 * (t171 * t166))) + (t138 * s156))
-      let !s173 = ((t134 * (t165 * (t171 * t168))) + (t138 * s157))
-      let !s174 = ((t134 * (t165 * (t171 * t169))) + (t138 * s158))
-      let !t175 = (s163 + (t133 * s173))
-      let !t176 = (if (if ((abs t175) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t175 + (negate t175)) else t175)
-      let !t177 = (if (if ((abs t176) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t176 + (negate t176)) else t176)
-      let !s178 = ((t134 * (s162 + (t133 * s172))) + (t138 * s162))
-      let !s179 = ((t134 * (if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177)) + (t138 * s163))
-      let !s180 = ((t134 * (s164 + (t133 * s174))) + (t138 * s164))
-      let !t181 = (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))
-      let !t182 = (t149 * ((s162 + (t133 * s172)) + (negate s162)))
-      let !t183 = (t149 * ((if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177) + (negate s163)))
-      let !t184 = (t183 + (negate t183))
-      let !t185 = (t149 * ((s164 + (t133 * s174)) + (negate s164)))
-      let !t186 = (sqrt (((t182 * t182) + (t184 * t184)) + (t185 * t185)))
-      let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
-      let !s188 = ((t134 * (t181 * (t187 * t182))) + (t138 * s172))
-      let !s189 = ((t134 * (t181 * (t187 * t184))) + (t138 * s173))
-      let !s190 = ((t134 * (t181 * (t187 * t185))) + (t138 * s174))
-      let !t191 = (s179 + (t133 * s189))
-      let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
-      let !t193 = (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)
-      let !s194 = ((t134 * (s178 + (t133 * s188))) + (t138 * s178))
-      let !s195 = ((t134 * (if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193)) + (t138 * s179))
-      let !s196 = ((t134 * (s180 + (t133 * s190))) + (t138 * s180))
-      let !t197 = (sqrt (((s188 * s188) + (s189 * s189)) + (s190 * s190)))
-      let !t198 = (t149 * ((s178 + (t133 * s188)) + (negate s178)))
-      let !t199 = (t149 * ((if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193) + (negate s179)))
-      let !t200 = (t199 + (negate t199))
-      let !t201 = (t149 * ((s180 + (t133 * s190)) + (negate s180)))
-      let !t202 = (sqrt (((t198 * t198) + (t200 * t200)) + (t201 * t201)))
-      let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
-      let !s204 = ((t134 * (t197 * (t203 * t198))) + (t138 * s188))
-      let !s205 = ((t134 * (t197 * (t203 * t200))) + (t138 * s189))
-      let !s206 = ((t134 * (t197 * (t203 * t201))) + (t138 * s190))
-      t207 <- rdU mouse 4
-      t208 <- rdU mouse 5
-      t209 <- rdU mouse 6
-      let !t210 = (floorF ((t207 + 1.0) / 2.0))
-      let !t211 = (t207 - (t210 * 2.0))
-      let !t212 = (negate s194)
-      let !t213 = (t211 + t212)
-      let !t214 = (t208 + (negate s195))
-      let !t215 = (t214 * t214)
-      let !t216 = ((t213 * t213) + t215)
-      let !t217 = ((1.0 - (2.0 * (t210 - (2.0 * (floorF (0.5 * t210)))))) * (t209 - ((floorF ((t209 + 1.0) / 2.0)) * 2.0)))
-      let !t218 = (negate s196)
-      let !t219 = (t217 + t218)
-      let !t220 = (t216 + (t219 * t219))
-      let !t221 = (t211 + (-2.0))
-      let !t222 = (t221 + t212)
-      let !t223 = ((t222 * t222) + t215)
-      let !t224 = (negate t217)
-      let !t225 = (t224 + (-2.0))
-      let !t226 = (t225 + t218)
-      let !t227 = (t226 * t226)
-      let !t228 = (t223 + t227)
-      let !t229 = (t220 - t228)
-      let !t230 = (if t229 > 0 then t228 else t220)
-      let !t231 = (t224 + t218)
-      let !t232 = (t231 * t231)
-      let !t233 = (t223 + t232)
-      let !t234 = (t230 - t233)
-      let !t235 = (if t234 > 0 then t233 else t230)
-      let !t236 = (t224 + 2.0)
-      let !t237 = (t236 + t218)
-      let !t238 = (t237 * t237)
-      let !t239 = (t223 + t238)
-      let !t240 = (t235 - t239)
-      let !t241 = (if t240 > 0 then t239 else t235)
-      let !t242 = (t217 + (-2.0))
-      let !t243 = (t242 + t218)
-      let !t244 = (t216 + (t243 * t243))
-      let !t245 = (t241 - t244)
-      let !t246 = (if t245 > 0 then t244 else t241)
-      let !t247 = (t217 + 2.0)
-      let !t248 = (t247 + t218)
-      let !t249 = (t216 + (t248 * t248))
-      let !t250 = (t246 - t249)
-      let !t251 = (if t250 > 0 then t249 else t246)
-      let !t252 = (t211 + 2.0)
-      let !t253 = (t252 + t212)
-      let !t254 = ((t253 * t253) + t215)
-      let !t255 = (t254 + t227)
-      let !t256 = (t251 - t255)
-      let !t257 = (if t256 > 0 then t255 else t251)
-      let !t258 = (t254 + t232)
-      let !t259 = (t257 - t258)
-      let !t260 = ((if t259 > 0 then t258 else t257) - (t254 + t238))
-      let !s261 = (if t260 > 0 then t252 else (if t259 > 0 then t252 else (if t256 > 0 then t252 else (if t250 > 0 then t211 else (if t245 > 0 then t211 else (if t240 > 0 then t221 else (if t234 > 0 then t221 else (if t229 > 0 then t221 else t211))))))))
-      let !s262 = (if t260 > 0 then t236 else (if t259 > 0 then t224 else (if t256 > 0 then t225 else (if t250 > 0 then t247 else (if t245 > 0 then t242 else (if t240 > 0 then t236 else (if t234 > 0 then t224 else (if t229 > 0 then t225 else t217))))))))
-      t263 <- rdU mouse 7
-      t264 <- rdU mouse 8
-      t265 <- rdU mouse 9
-      let !t266 = (recip t96)
-      let !t267 = (6.283185307179586 * t263)
-      let !s268 = (recip (t98 * ((((2.0 * t266) * t264) * t267) + (t98 * ((t266 * t267) * t267)))))
-      let !s269 = ((t98 * ((t266 * t267) * t267)) * s268)
-      let !s270 = (s194 + (negate t99))
-      let !s271 = (s195 + (negate t100))
-      let !s272 = (s196 + (negate t101))
-      let !s273 = (s194 + (negate s261))
-      let !s274 = (s195 + (negate t208))
-      let !s275 = (s196 + (negate s262))
-      t276 <- rdU mouse 10
-      t277 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t278 <- rdU scalars ((6 * (truncate t95)) + 3)
-      chkI vel (3 * (truncate t95)) 0 2
-      t279 <- rdU vel (3 * (truncate t95))
-      t280 <- rdU vel ((3 * (truncate t95)) + 1)
-      t281 <- rdU vel ((3 * (truncate t95)) + 2)
-      t282 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t279 + ((t277 * t276) * t105))
-      wrU vel ((3 * (truncate t95)) + 1) (t280 + ((t277 * t276) * t106))
-      wrU vel ((3 * (truncate t95)) + 2) (t281 + ((t277 * t276) * t107))
-      wrU scalars ((6 * (truncate t95)) + 1) (t282 + ((t278 * t276) * (((((s271 * t107) - (s272 * t106)) * t102) + (((s272 * t105) - (s270 * t107)) * t103)) + (((s270 * t106) - (s271 * t105)) * t104))))
-      t283 <- rdU mouse 11
-      t284 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t285 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t286 <- rdU vel (3 * (truncate t95))
-      t287 <- rdU vel ((3 * (truncate t95)) + 1)
-      t288 <- rdU vel ((3 * (truncate t95)) + 2)
-      t289 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t286 + ((t284 * t283) * s108))
-      wrU vel ((3 * (truncate t95)) + 1) (t287 + ((t284 * t283) * s109))
-      wrU vel ((3 * (truncate t95)) + 2) (t288 + ((t284 * t283) * s110))
-      wrU scalars ((6 * (truncate t95)) + 1) (t289 + ((t285 * t283) * (((((s271 * s110) - (s272 * s109)) * t102) + (((s272 * s108) - (s270 * s110)) * t103)) + (((s270 * s109) - (s271 * s108)) * t104))))
+      t38 <- rdU mouse 2
+      t39 <- rdU mouse 3
+      let !t40 = (t38 / 4.0)
+      let !t41 = (if (abs t40) > 0 then 1.0 else 0.0)
+      let !t42 = (t34 + t39)
+      let !t43 = (cos t42)
+      let !t44 = (sin t42)
+      let !t45 = (1.0 - t41)
+      let !t46 = (t23 + (t40 * ((t43 * t29) + (t44 * s32))))
+      let !t47 = (if (if ((abs t46) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t46 + (negate t46)) else t46)
+      let !t48 = (if (if ((abs t47) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t47 + (negate t47)) else t47)
+      let !s49 = ((t41 * (t22 + (t40 * ((t43 * t28) + (t44 * s31))))) + (t45 * t22))
+      let !s50 = ((t41 * (if (if ((abs t48) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t48 + (negate t48)) else t48)) + (t45 * t23))
+      let !s51 = ((t41 * (t24 + (t40 * ((t43 * t30) + (t44 * s33))))) + (t45 * t24))
+      let !t52 = ((t43 * t28) + (t44 * s31))
+      let !t53 = ((t43 * t29) + (t44 * s32))
+      let !t54 = ((t43 * t30) + (t44 * s33))
+      let !t55 = (sqrt (((t52 * t52) + (t53 * t53)) + (t54 * t54)))
+      let !t56 = (if (abs t40) > 0 then (recip t40) else 0.0)
+      let !t57 = (t56 * ((t22 + (t40 * t52)) + (negate t22)))
+      let !t58 = (t56 * ((if (if ((abs t48) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t48 + (negate t48)) else t48) + (negate t23)))
+      let !t59 = (t58 + (negate t58))
+      let !t60 = (t56 * ((t24 + (t40 * t54)) + (negate t24)))
+      let !t61 = (sqrt (((t57 * t57) + (t59 * t59)) + (t60 * t60)))
+      let !t62 = (if t61 > 0 then (recip (if (t61 - 1.0e-300) > 0 then t61 else 1.0e-300)) else 0.0)
+      let !s63 = ((t41 * (t55 * (t62 * t57))) + (t45 * t52))
+      let !s64 = ((t41 * (t55 * (t62 * t59))) + (t45 * t53))
+      let !s65 = ((t41 * (t55 * (t62 * t60))) + (t45 * t54))
+      let !t66 = (s50 + (t40 * s64))
+      let !t67 = (if (if ((abs t66) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t66 + (negate t66)) else t66)
+      let !t68 = (if (if ((abs t67) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t67 + (negate t67)) else t67)
+      let !s69 = ((t41 * (s49 + (t40 * s63))) + (t45 * s49))
+      let !s70 = ((t41 * (if (if ((abs t68) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t68 + (negate t68)) else t68)) + (t45 * s50))
+      let !s71 = ((t41 * (s51 + (t40 * s65))) + (t45 * s51))
+      let !t72 = (sqrt (((s63 * s63) + (s64 * s64)) + (s65 * s65)))
+      let !t73 = (t56 * ((s49 + (t40 * s63)) + (negate s49)))
+      let !t74 = (t56 * ((if (if ((abs t68) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t68 + (negate t68)) else t68) + (negate s50)))
+      let !t75 = (t74 + (negate t74))
+      let !t76 = (t56 * ((s51 + (t40 * s65)) + (negate s51)))
+      let !t77 = (sqrt (((t73 * t73) + (t75 * t75)) + (t76 * t76)))
+      let !t78 = (if t77 > 0 then (recip (if (t77 - 1.0e-300) > 0 then t77 else 1.0e-300)) else 0.0)
+      let !s79 = ((t41 * (t72 * (t78 * t73))) + (t45 * s63))
+      let !s80 = ((t41 * (t72 * (t78 * t75))) + (t45 * s64))
+      let !s81 = ((t41 * (t72 * (t78 * t76))) + (t45 * s65))
+      let !t82 = (s70 + (t40 * s80))
+      let !t83 = (if (if ((abs t82) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t82 + (negate t82)) else t82)
+      let !t84 = (if (if ((abs t83) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t83 + (negate t83)) else t83)
+      let !s85 = ((t41 * (s69 + (t40 * s79))) + (t45 * s69))
+      let !s86 = ((t41 * (if (if ((abs t84) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t84 + (negate t84)) else t84)) + (t45 * s70))
+      let !s87 = ((t41 * (s71 + (t40 * s81))) + (t45 * s71))
+      let !t88 = (sqrt (((s79 * s79) + (s80 * s80)) + (s81 * s81)))
+      let !t89 = (t56 * ((s69 + (t40 * s79)) + (negate s69)))
+      let !t90 = (t56 * ((if (if ((abs t84) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t84 + (negate t84)) else t84) + (negate s70)))
+      let !t91 = (t90 + (negate t90))
+      let !t92 = (t56 * ((s71 + (t40 * s81)) + (negate s71)))
+      let !t93 = (sqrt (((t89 * t89) + (t91 * t91)) + (t92 * t92)))
+      let !t94 = (if t93 > 0 then (recip (if (t93 - 1.0e-300) > 0 then t93 else 1.0e-300)) else 0.0)
+      let !s95 = ((t41 * (t88 * (t94 * t89))) + (t45 * s79))
+      let !s96 = ((t41 * (t88 * (t94 * t91))) + (t45 * s80))
+      let !s97 = ((t41 * (t88 * (t94 * t92))) + (t45 * s81))
+      let !t98 = (s86 + (t40 * s96))
+      let !t99 = (if (if ((abs t98) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t98 + (negate t98)) else t98)
+      let !t100 = (if (if ((abs t99) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t99 + (negate t99)) else t99)
+      let !s101 = ((t41 * (s85 + (t40 * s95))) + (t45 * s85))
+      let !s102 = ((t41 * (if (if ((abs t100) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t100 + (negate t100)) else t100)) + (t45 * s86))
+      let !s103 = ((t41 * (s87 + (t40 * s97))) + (t45 * s87))
+      let !t104 = (sqrt (((s95 * s95) + (s96 * s96)) + (s97 * s97)))
+      let !t105 = (t56 * ((s85 + (t40 * s95)) + (negate s85)))
+      let !t106 = (t56 * ((if (if ((abs t100) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t100 + (negate t100)) else t100) + (negate s86)))
+      let !t107 = (t106 + (negate t106))
+      let !t108 = (t56 * ((s87 + (t40 * s97)) + (negate s87)))
+      let !t109 = (sqrt (((t105 * t105) + (t107 * t107)) + (t108 * t108)))
+      let !t110 = (if t109 > 0 then (recip (if (t109 - 1.0e-300) > 0 then t109 else 1.0e-300)) else 0.0)
+      let !s111 = ((t41 * (t104 * (t110 * t105))) + (t45 * s95))
+      let !s112 = ((t41 * (t104 * (t110 * t107))) + (t45 * s96))
+      let !s113 = ((t41 * (t104 * (t110 * t108))) + (t45 * s97))
+      t114 <- rdU mouse 4
+      t115 <- rdU mouse 5
+      t116 <- rdU mouse 6
+      let !t117 = (floorF ((t114 + 1.0) / 2.0))
+      let !t118 = (t114 - (t117 * 2.0))
+      let !t119 = (negate s101)
+      let !t120 = (t118 + t119)
+      let !t121 = (t115 + (negate s102))
+      let !t122 = (t121 * t121)
+      let !t123 = ((t120 * t120) + t122)
+      let !t124 = ((1.0 - (2.0 * (t117 - (2.0 * (floorF (0.5 * t117)))))) * (t116 - ((floorF ((t116 + 1.0) / 2.0)) * 2.0)))
+      let !t125 = (negate s103)
+      let !t126 = (t124 + t125)
+      let !t127 = (t123 + (t126 * t126))
+      let !t128 = (t118 + (-2.0))
+      let !t129 = (t128 + t119)
+      let !t130 = ((t129 * t129) + t122)
+      let !t131 = (negate t124)
+      let !t132 = (t131 + (-2.0))
+      let !t133 = (t132 + t125)
+      let !t134 = (t133 * t133)
+      let !t135 = (t130 + t134)
+      let !t136 = (t127 - t135)
+      let !t137 = (if t136 > 0 then t135 else t127)
+      let !t138 = (t131 + t125)
+      let !t139 = (t138 * t138)
+      let !t140 = (t130 + t139)
+      let !t141 = (t137 - t140)
+      let !t142 = (if t141 > 0 then t140 else t137)
+      let !t143 = (t131 + 2.0)
+      let !t144 = (t143 + t125)
+      let !t145 = (t144 * t144)
+      let !t146 = (t130 + t145)
+      let !t147 = (t142 - t146)
+      let !t148 = (if t147 > 0 then t146 else t142)
+      let !t149 = (t124 + (-2.0))
+      let !t150 = (t149 + t125)
+      let !t151 = (t123 + (t150 * t150))
+      let !t152 = (t148 - t151)
+      let !t153 = (if t152 > 0 then t151 else t148)
+      let !t154 = (t124 + 2.0)
+      let !t155 = (t154 + t125)
+      let !t156 = (t123 + (t155 * t155))
+      let !t157 = (t153 - t156)
+      let !t158 = (if t157 > 0 then t156 else t153)
+      let !t159 = (t118 + 2.0)
+      let !t160 = (t159 + t119)
+      let !t161 = ((t160 * t160) + t122)
+      let !t162 = (t161 + t134)
+      let !t163 = (t158 - t162)
+      let !t164 = (if t163 > 0 then t162 else t158)
+      let !t165 = (t161 + t139)
+      let !t166 = (t164 - t165)
+      let !t167 = ((if t166 > 0 then t165 else t164) - (t161 + t145))
+      let !s168 = (if t167 > 0 then t159 else (if t166 > 0 then t159 else (if t163 > 0 then t159 else (if t157 > 0 then t118 else (if t152 > 0 then t118 else (if t147 > 0 then t128 else (if t141 > 0 then t128 else (if t136 > 0 then t128 else t118))))))))
+      let !s169 = (if t167 > 0 then t143 else (if t166 > 0 then t131 else (if t163 > 0 then t132 else (if t157 > 0 then t154 else (if t152 > 0 then t149 else (if t147 > 0 then t143 else (if t141 > 0 then t131 else (if t136 > 0 then t132 else t124))))))))
+      t170 <- rdU mouse 7
+      t171 <- rdU mouse 8
+      t172 <- rdU mouse 9
+      let !t173 = (recip t3)
+      let !t174 = (6.283185307179586 * t170)
+      let !s175 = (recip (t5 * ((((2.0 * t173) * t171) * t174) + (t5 * ((t173 * t174) * t174)))))
+      let !s176 = ((t5 * ((t173 * t174) * t174)) * s175)
+      let !s177 = (s101 + (negate t6))
+      let !s178 = (s102 + (negate t7))
+      let !s179 = (s103 + (negate t8))
+      let !s180 = (s101 + (negate s168))
+      let !s181 = (s102 + (negate t115))
+      let !s182 = (s103 + (negate s169))
+      t183 <- rdU mouse 10
+      t184 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t185 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI vel (3 * (truncate t2)) 0 2
+      t186 <- rdU vel (3 * (truncate t2))
+      t187 <- rdU vel ((3 * (truncate t2)) + 1)
+      t188 <- rdU vel ((3 * (truncate t2)) + 2)
+      t189 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t186 + ((t184 * t183) * t12))
+      wrU vel ((3 * (truncate t2)) + 1) (t187 + ((t184 * t183) * t13))
+      wrU vel ((3 * (truncate t2)) + 2) (t188 + ((t184 * t183) * t14))
+      wrU scalars ((8 * (truncate t2)) + 1) (t189 + ((t185 * t183) * (((((s178 * t14) - (s179 * t13)) * t9) + (((s179 * t12) - (s177 * t14)) * t10)) + (((s177 * t13) - (s178 * t12)) * t11))))
+      t190 <- rdU mouse 11
+      t191 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t192 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t193 <- rdU vel (3 * (truncate t2))
+      t194 <- rdU vel ((3 * (truncate t2)) + 1)
+      t195 <- rdU vel ((3 * (truncate t2)) + 2)
+      t196 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t193 + ((t191 * t190) * s15))
+      wrU vel ((3 * (truncate t2)) + 1) (t194 + ((t191 * t190) * s16))
+      wrU vel ((3 * (truncate t2)) + 2) (t195 + ((t191 * t190) * s17))
+      wrU scalars ((8 * (truncate t2)) + 1) (t196 + ((t192 * t190) * (((((s178 * s17) - (s179 * s16)) * t9) + (((s179 * s15) - (s177 * s17)) * t10)) + (((s177 * s16) - (s178 * s15)) * t11))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i290 -> do
-    let !d290 = fromIntegral i290 :: Double
-    loopI 0.0 t9 $ \i291 -> do
-      let !d291 = fromIntegral i291 :: Double
-      chkI contacts (30 * i291) 0 26
-      t292 <- rdU contacts (30 * i291)
-      t293 <- rdU contacts ((30 * i291) + 1)
-      t294 <- rdU contacts ((30 * i291) + 12)
-      t295 <- rdU contacts ((30 * i291) + 13)
-      t296 <- rdU contacts ((30 * i291) + 14)
-      t297 <- rdU contacts ((30 * i291) + 15)
-      t298 <- rdU contacts ((30 * i291) + 16)
-      t299 <- rdU contacts ((30 * i291) + 17)
-      t300 <- rdU contacts ((30 * i291) + 18)
-      t301 <- rdU contacts ((30 * i291) + 19)
-      t302 <- rdU contacts ((30 * i291) + 4)
-      t303 <- rdU contacts ((30 * i291) + 5)
-      t304 <- rdU contacts ((30 * i291) + 6)
-      t305 <- rdU contacts ((30 * i291) + 7)
-      t306 <- rdU contacts ((30 * i291) + 8)
-      t307 <- rdU contacts ((30 * i291) + 9)
-      t308 <- rdU contacts ((30 * i291) + 10)
-      t309 <- rdU contacts ((30 * i291) + 11)
-      t310 <- rdU contacts ((30 * i291) + 26)
-      t311 <- rdU contacts ((30 * i291) + 24)
-      t312 <- rdU contacts ((30 * i291) + 25)
-      t313 <- rdU contacts ((30 * i291) + 22)
-      t314 <- rdU contacts ((30 * i291) + 21)
-      t315 <- rdU contacts ((30 * i291) + 23)
-      let !s316 = (if (negate t293) > 0 then 0.0 else t293)
-      let !s317 = (t293 + 0.5)
-      let !s318 = (if (0.5 - (abs (t292 - t293))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t292)) 1 3
-      t319 <- rdU scalars ((6 * (truncate t292)) + 2)
-      t320 <- rdU scalars ((6 * (truncate t292)) + 3)
-      chkI scalars (6 * (truncate s316)) 1 3
-      t321 <- rdU scalars ((6 * (truncate s316)) + 2)
-      t322 <- rdU scalars ((6 * (truncate s316)) + 3)
-      chkI vel (3 * (truncate t292)) 0 2
-      t323 <- rdU vel (3 * (truncate t292))
-      t324 <- rdU vel ((3 * (truncate t292)) + 1)
-      t325 <- rdU vel ((3 * (truncate t292)) + 2)
-      t326 <- rdU scalars ((6 * (truncate t292)) + 1)
-      chkI vel (3 * (truncate s316)) 0 2
-      t327 <- rdU vel (3 * (truncate s316))
-      t328 <- rdU vel ((3 * (truncate s316)) + 1)
-      t329 <- rdU vel ((3 * (truncate s316)) + 2)
-      t330 <- rdU scalars ((6 * (truncate s316)) + 1)
-      let !s331 = (((((t294 * t323) + (t295 * t324)) + (t296 * t325)) + (t297 * t326)) - (if s317 > 0 then ((((t298 * t327) + (t299 * t328)) + (t300 * t329)) + (t301 * t330)) else 0.0))
-      let !t332 = (t2 * t311)
-      let !t333 = (negate t332)
-      let !t334 = (t312 - ((t310 * s331) * t313))
-      let !t335 = (if (t334 - t332) > 0 then t332 else t334)
-      let !t336 = (if (t333 - t335) > 0 then t333 else t335)
-      let !s337 = (if (1.0 - (abs (t336 - t336))) > 0 then t336 else 0.0)
-      wrU contacts ((30 * i291) + 25) s337
-      let !t338 = (t319 * (s337 - t312))
-      let !s339 = (t338 * t294)
-      let !s340 = (t338 * t295)
-      let !s341 = (t338 * t296)
-      let !s342 = ((t320 * (s337 - t312)) * t297)
-      let !t343 = (t321 * (negate (s337 - t312)))
-      let !s344 = (t343 * t298)
-      let !s345 = (t343 * t299)
-      let !s346 = (t343 * t300)
-      let !s347 = ((t322 * (negate (s337 - t312))) * t301)
-      let !s348 = ((t323 + s339) + (s318 * s344))
-      let !s349 = ((t324 + s340) + (s318 * s345))
-      let !s350 = ((t325 + s341) + (s318 * s346))
-      let !s351 = ((t326 + s342) + (s318 * s347))
-      let !s352 = ((t327 + s344) + (s318 * s339))
-      let !s353 = ((t328 + s345) + (s318 * s340))
-      let !s354 = ((t329 + s346) + (s318 * s341))
-      let !s355 = ((t330 + s347) + (s318 * s342))
-      let !s356 = (((((t302 * s348) + (t303 * s349)) + (t304 * s350)) + (t305 * s351)) - (if s317 > 0 then ((((t306 * s352) + (t307 * s353)) + (t308 * s354)) + (t309 * s355)) else 0.0))
-      let !t357 = (t311 + ((t310 * (t315 - s356)) * t314))
-      let !t358 = (if (negate t357) > 0 then 0.0 else t357)
-      let !s359 = (if (1.0 - (abs (t358 - t358))) > 0 then t358 else 0.0)
-      wrU contacts ((30 * i291) + 24) s359
-      let !t360 = (t319 * (s359 - t311))
-      let !s361 = (t360 * t302)
-      let !s362 = (t360 * t303)
-      let !s363 = (t360 * t304)
-      let !s364 = ((t320 * (s359 - t311)) * t305)
-      let !t365 = (t321 * (negate (s359 - t311)))
-      let !s366 = (t365 * t306)
-      let !s367 = (t365 * t307)
-      let !s368 = (t365 * t308)
-      let !s369 = ((t322 * (negate (s359 - t311))) * t309)
-      let !s370 = ((s348 + s361) + (s318 * s366))
-      let !s371 = ((s349 + s362) + (s318 * s367))
-      let !s372 = ((s350 + s363) + (s318 * s368))
-      let !s373 = ((s351 + s364) + (s318 * s369))
-      let !s374 = ((s352 + s366) + (s318 * s361))
-      let !s375 = ((s353 + s367) + (s318 * s362))
-      let !s376 = ((s354 + s368) + (s318 * s363))
-      let !s377 = ((s355 + s369) + (s318 * s364))
-      wrU vel (3 * (truncate t292)) s370
-      wrU vel ((3 * (truncate t292)) + 1) s371
-      wrU vel ((3 * (truncate t292)) + 2) s372
-      wrU scalars ((6 * (truncate t292)) + 1) s373
-      if s317 > 0 then do
-        wrU vel (3 * (truncate s316)) s374
-        wrU vel ((3 * (truncate s316)) + 1) s375
-        wrU vel ((3 * (truncate s316)) + 2) s376
-        wrU scalars ((6 * (truncate s316)) + 1) s377
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t378 <- rdU mouse 0
-    if t378 > 0 then do
+  loopI 0.0 t0 $ \i197 -> do
+    let !d197 = fromIntegral i197 :: Double
+    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    t198 <- rdU mouse 0
+    if t198 > 0 then do
       chkI mouse 0 1 1
-      t379 <- rdU mouse 1
-      chkI scalars (6 * (truncate t379)) 2 2
-      t380 <- rdU scalars ((6 * (truncate t379)) + 2)
-      if t380 > 0 then do
-        chkI scalars (6 * (truncate t379)) 0 5
-        t381 <- rdU scalars ((6 * (truncate t379)) + 3)
-        t382 <- rdU params 0
-        chkI pos (3 * (truncate t379)) 0 2
-        t383 <- rdU pos (3 * (truncate t379))
-        t384 <- rdU pos ((3 * (truncate t379)) + 1)
-        t385 <- rdU pos ((3 * (truncate t379)) + 2)
-        chkI normal (3 * (truncate t379)) 0 2
-        t386 <- rdU normal (3 * (truncate t379))
-        t387 <- rdU normal ((3 * (truncate t379)) + 1)
-        t388 <- rdU normal ((3 * (truncate t379)) + 2)
-        chkI axis (3 * (truncate t379)) 0 2
-        t389 <- rdU axis (3 * (truncate t379))
-        t390 <- rdU axis ((3 * (truncate t379)) + 1)
-        t391 <- rdU axis ((3 * (truncate t379)) + 2)
-        let !s392 = ((t387 * t391) - (t388 * t390))
-        let !s393 = ((t388 * t389) - (t386 * t391))
-        let !s394 = ((t386 * t390) - (t387 * t389))
-        t395 <- rdU scalars (6 * (truncate t379))
-        t396 <- rdU scalars ((6 * (truncate t379)) + 5)
-        t397 <- rdU scalars ((6 * (truncate t379)) + 2)
-        t398 <- rdU scalars ((6 * (truncate t379)) + 3)
-        t399 <- rdU pos (3 * (truncate t379))
-        t400 <- rdU pos ((3 * (truncate t379)) + 1)
-        t401 <- rdU pos ((3 * (truncate t379)) + 2)
-        t402 <- rdU normal (3 * (truncate t379))
-        t403 <- rdU normal ((3 * (truncate t379)) + 1)
-        t404 <- rdU normal ((3 * (truncate t379)) + 2)
-        t405 <- rdU axis (3 * (truncate t379))
-        t406 <- rdU axis ((3 * (truncate t379)) + 1)
-        t407 <- rdU axis ((3 * (truncate t379)) + 2)
-        let !s408 = ((t403 * t407) - (t404 * t406))
-        let !s409 = ((t404 * t405) - (t402 * t407))
-        let !s410 = ((t402 * t406) - (t403 * t405))
-        t411 <- rdU scalars (6 * (truncate t379))
-        t412 <- rdU scalars ((6 * (truncate t379)) + 5)
-        t413 <- rdU scalars ((6 * (truncate t379)) + 2)
-        t414 <- rdU scalars ((6 * (truncate t379)) + 3)
+      t199 <- rdU mouse 1
+      chkI scalars (8 * (truncate t199)) 2 2
+      t200 <- rdU scalars ((8 * (truncate t199)) + 2)
+      if t200 > 0 then do
+        chkI scalars (8 * (truncate t199)) 0 5
+        t201 <- rdU scalars ((8 * (truncate t199)) + 3)
+        chkI params 0 0 0
+        t202 <- rdU params 0
+        chkI pos (3 * (truncate t199)) 0 2
+        t203 <- rdU pos (3 * (truncate t199))
+        t204 <- rdU pos ((3 * (truncate t199)) + 1)
+        t205 <- rdU pos ((3 * (truncate t199)) + 2)
+        chkI normal (3 * (truncate t199)) 0 2
+        t206 <- rdU normal (3 * (truncate t199))
+        t207 <- rdU normal ((3 * (truncate t199)) + 1)
+        t208 <- rdU normal ((3 * (truncate t199)) + 2)
+        chkI axis (3 * (truncate t199)) 0 2
+        t209 <- rdU axis (3 * (truncate t199))
+        t210 <- rdU axis ((3 * (truncate t199)) + 1)
+        t211 <- rdU axis ((3 * (truncate t199)) + 2)
+        let !s212 = ((t207 * t211) - (t208 * t210))
+        let !s213 = ((t208 * t209) - (t206 * t211))
+        let !s214 = ((t206 * t210) - (t207 * t209))
+        t215 <- rdU scalars (8 * (truncate t199))
+        t216 <- rdU scalars ((8 * (truncate t199)) + 5)
+        t217 <- rdU scalars ((8 * (truncate t199)) + 2)
+        t218 <- rdU scalars ((8 * (truncate t199)) + 3)
+        t219 <- rdU pos (3 * (truncate t199))
+        t220 <- rdU pos ((3 * (truncate t199)) + 1)
+        t221 <- rdU pos ((3 * (truncate t199)) + 2)
+        t222 <- rdU normal (3 * (truncate t199))
+        t223 <- rdU normal ((3 * (truncate t199)) + 1)
+        t224 <- rdU normal ((3 * (truncate t199)) + 2)
+        t225 <- rdU axis (3 * (truncate t199))
+        t226 <- rdU axis ((3 * (truncate t199)) + 1)
+        t227 <- rdU axis ((3 * (truncate t199)) + 2)
+        let !s228 = ((t223 * t227) - (t224 * t226))
+        let !s229 = ((t224 * t225) - (t222 * t227))
+        let !s230 = ((t222 * t226) - (t223 * t225))
+        t231 <- rdU scalars (8 * (truncate t199))
+        t232 <- rdU scalars ((8 * (truncate t199)) + 5)
+        t233 <- rdU scalars ((8 * (truncate t199)) + 2)
+        t234 <- rdU scalars ((8 * (truncate t199)) + 3)
         chkI mouse 0 2 11
-        t415 <- rdU mouse 2
-        t416 <- rdU mouse 3
-        let !t417 = (t415 / 4.0)
-        let !t418 = (if (abs t417) > 0 then 1.0 else 0.0)
-        let !t419 = (t411 + t416)
-        let !t420 = (cos t419)
-        let !t421 = (sin t419)
-        let !t422 = (1.0 - t418)
-        let !t423 = (t400 + (t417 * ((t420 * t406) + (t421 * s409))))
-        let !t424 = (if (if ((abs t423) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t423 + (negate t423)) else t423)
-        let !t425 = (if (if ((abs t424) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t424 + (negate t424)) else t424)
-        let !s426 = ((t418 * (t399 + (t417 * ((t420 * t405) + (t421 * s408))))) + (t422 * t399))
-        let !s427 = ((t418 * (if (if ((abs t425) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t425 + (negate t425)) else t425)) + (t422 * t400))
-        let !s428 = ((t418 * (t401 + (t417 * ((t420 * t407) + (t421 * s410))))) + (t422 * t401))
-        let !t429 = ((t420 * t405) + (t421 * s408))
-        let !t430 = ((t420 * t406) + (t421 * s409))
-        let !t431 = ((t420 * t407) + (t421 * s410))
-        let !t432 = (sqrt (((t429 * t429) + (t430 * t430)) + (t431 * t431)))
-        let !t433 = (if (abs t417) > 0 then (recip t417) else 0.0)
-        let !t434 = (t433 * ((t399 + (t417 * t429)) + (negate t399)))
-        let !t435 = (t433 * ((if (if ((abs t425) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t425 + (negate t425)) else t425) + (negate t400)))
-        let !t436 = (t435 + (negate t435))
-        let !t437 = (t433 * ((t401 + (t417 * t431)) + (negate t401)))
-        let !t438 = (sqrt (((t434 * t434) + (t436 * t436)) + (t437 * t437)))
-        let !t439 = (if t438 > 0 then (recip (if (t438 - 1.0e-300) > 0 then t438 else 1.0e-300)) else 0.0)
-        let !s440 = ((t418 * (t432 * (t439 * t434))) + (t422 * t429))
-        let !s441 = ((t418 * (t432 * (t439 * t436))) + (t422 * t430))
-        let !s442 = ((t418 * (t432 * (t439 * t437))) + (t422 * t431))
-        let !t443 = (s427 + (t417 * s441))
-        let !t444 = (if (if ((abs t443) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t443 + (negate t443)) else t443)
-        let !t445 = (if (if ((abs t444) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t444 + (negate t444)) else t444)
-        let !s446 = ((t418 * (s426 + (t417 * s440))) + (t422 * s426))
-        let !s447 = ((t418 * (if (if ((abs t445) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t445 + (negate t445)) else t445)) + (t422 * s427))
-        let !s448 = ((t418 * (s428 + (t417 * s442))) + (t422 * s428))
-        let !t449 = (sqrt (((s440 * s440) + (s441 * s441)) + (s442 * s442)))
-        let !t450 = (t433 * ((s426 + (t417 * s440)) + (negate s426)))
-        let !t451 = (t433 * ((if (if ((abs t445) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t445 + (negate t445)) else t445) + (negate s427)))
-        let !t452 = (t451 + (negate t451))
-        let !t453 = (t433 * ((s428 + (t417 * s442)) + (negate s428)))
-        let !t454 = (sqrt (((t450 * t450) + (t452 * t452)) + (t453 * t453)))
-        let !t455 = (if t454 > 0 then (recip (if (t454 - 1.0e-300) > 0 then t454 else 1.0e-300)) else 0.0)
-        let !s456 = ((t418 * (t449 * (t455 * t450))) + (t422 * s440))
-        let !s457 = ((t418 * (t449 * (t455 * t452))) + (t422 * s441))
-        let !s458 = ((t418 * (t449 * (t455 * t453))) + (t422 * s442))
-        let !t459 = (s447 + (t417 * s457))
-        let !t460 = (if (if ((abs t459) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t459 + (negate t459)) else t459)
-        let !t461 = (if (if ((abs t460) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t460 + (negate t460)) else t460)
-        let !s462 = ((t418 * (s446 + (t417 * s456))) + (t422 * s446))
-        let !s463 = ((t418 * (if (if ((abs t461) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t461 + (negate t461)) else t461)) + (t422 * s447))
-        let !s464 = ((t418 * (s448 + (t417 * s458))) + (t422 * s448))
-        let !t465 = (sqrt (((s456 * s456) + (s457 * s457)) + (s458 * s458)))
-        let !t466 = (t433 * ((s446 + (t417 * s456)) + (negate s446)))
-        let !t467 = (t433 * ((if (if ((abs t461) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t461 + (negate t461)) else t461) + (negate s447)))
-        let !t468 = (t467 + (negate t467))
-        let !t469 = (t433 * ((s448 + (t417 * s458)) + (negate s448)))
-        let !t470 = (sqrt (((t466 * t466) + (t468 * t468)) + (t469 * t469)))
-        let !t471 = (if t470 > 0 then (recip (if (t470 - 1.0e-300) > 0 then t470 else 1.0e-300)) else 0.0)
-        let !s472 = ((t418 * (t465 * (t471 * t466))) + (t422 * s456))
-        let !s473 = ((t418 * (t465 * (t471 * t468))) + (t422 * s457))
-        let !s474 = ((t418 * (t465 * (t471 * t469))) + (t422 * s458))
-        let !t475 = (s463 + (t417 * s473))
-        let !t476 = (if (if ((abs t475) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t475 + (negate t475)) else t475)
-        let !t477 = (if (if ((abs t476) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t476 + (negate t476)) else t476)
-        let !s478 = ((t418 * (s462 + (t417 * s472))) + (t422 * s462))
-        let !s479 = ((t418 * (if (if ((abs t477) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t477 + (negate t477)) else t477)) + (t422 * s463))
-        let !s480 = ((t418 * (s464 + (t417 * s474))) + (t422 * s464))
-        let !t481 = (sqrt (((s472 * s472) + (s473 * s473)) + (s474 * s474)))
-        let !t482 = (t433 * ((s462 + (t417 * s472)) + (negate s462)))
-        let !t483 = (t433 * ((if (if ((abs t477) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t477 + (negate t477)) else t477) + (negate s463)))
-        let !t484 = (t483 + (negate t483))
-        let !t485 = (t433 * ((s464 + (t417 * s474)) + (negate s464)))
-        let !t486 = (sqrt (((t482 * t482) + (t484 * t484)) + (t485 * t485)))
-        let !t487 = (if t486 > 0 then (recip (if (t486 - 1.0e-300) > 0 then t486 else 1.0e-300)) else 0.0)
-        let !s488 = ((t418 * (t481 * (t487 * t482))) + (t422 * s472))
-        let !s489 = ((t418 * (t481 * (t487 * t484))) + (t422 * s473))
-        let !s490 = ((t418 * (t481 * (t487 * t485))) + (t422 * s474))
-        t491 <- rdU mouse 4
-        t492 <- rdU mouse 5
-        t493 <- rdU mouse 6
-        let !t494 = (floorF ((t491 + 1.0) / 2.0))
-        let !t495 = (t491 - (t494 * 2.0))
-        let !t496 = (negate s478)
-        let !t497 = (t495 + t496)
-        let !t498 = (t492 + (negate s479))
-        let !t499 = (t498 * t498)
-        let !t500 = ((t497 * t497) + t499)
-        let !t501 = ((1.0 - (2.0 * (t494 - (2.0 * (floorF (0.5 * t494)))))) * (t493 - ((floorF ((t493 + 1.0) / 2.0)) * 2.0)))
-        let !t502 = (negate s480)
-        let !t503 = (t501 + t502)
-        let !t504 = (t500 + (t503 * t503))
-        let !t505 = (t495 + (-2.0))
-        let !t506 = (t505 + t496)
-        let !t507 = ((t506 * t506) + t499)
-        let !t508 = (negate t501)
-        let !t509 = (t508 + (-2.0))
-        let !t510 = (t509 + t502)
-        let !t511 = (t510 * t510)
-        let !t512 = (t507 + t511)
-        let !t513 = (t504 - t512)
-        let !t514 = (if t513 > 0 then t512 else t504)
-        let !t515 = (t508 + t502)
-        let !t516 = (t515 * t515)
-        let !t517 = (t507 + t516)
-        let !t518 = (t514 - t517)
-        let !t519 = (if t518 > 0 then t517 else t514)
-        let !t520 = (t508 + 2.0)
-        let !t521 = (t520 + t502)
-        let !t522 = (t521 * t521)
-        let !t523 = (t507 + t522)
-        let !t524 = (t519 - t523)
-        let !t525 = (if t524 > 0 then t523 else t519)
-        let !t526 = (t501 + (-2.0))
-        let !t527 = (t526 + t502)
-        let !t528 = (t500 + (t527 * t527))
-        let !t529 = (t525 - t528)
-        let !t530 = (if t529 > 0 then t528 else t525)
-        let !t531 = (t501 + 2.0)
-        let !t532 = (t531 + t502)
-        let !t533 = (t500 + (t532 * t532))
-        let !t534 = (t530 - t533)
-        let !t535 = (if t534 > 0 then t533 else t530)
-        let !t536 = (t495 + 2.0)
-        let !t537 = (t536 + t496)
-        let !t538 = ((t537 * t537) + t499)
-        let !t539 = (t538 + t511)
-        let !t540 = (t535 - t539)
-        let !t541 = (if t540 > 0 then t539 else t535)
-        let !t542 = (t538 + t516)
-        let !t543 = (t541 - t542)
-        let !t544 = ((if t543 > 0 then t542 else t541) - (t538 + t522))
-        let !s545 = (if t544 > 0 then t536 else (if t543 > 0 then t536 else (if t540 > 0 then t536 else (if t534 > 0 then t495 else (if t529 > 0 then t495 else (if t524 > 0 then t505 else (if t518 > 0 then t505 else (if t513 > 0 then t505 else t495))))))))
-        let !s546 = (if t544 > 0 then t520 else (if t543 > 0 then t508 else (if t540 > 0 then t509 else (if t534 > 0 then t531 else (if t529 > 0 then t526 else (if t524 > 0 then t520 else (if t518 > 0 then t508 else (if t513 > 0 then t509 else t501))))))))
-        t547 <- rdU mouse 7
-        t548 <- rdU mouse 8
-        t549 <- rdU mouse 9
-        let !t550 = (recip t380)
-        let !t551 = (6.283185307179586 * t547)
-        let !s552 = (recip (t382 * ((((2.0 * t550) * t548) * t551) + (t382 * ((t550 * t551) * t551)))))
-        let !s553 = ((t382 * ((t550 * t551) * t551)) * s552)
-        let !s554 = (s478 + (negate t383))
-        let !s555 = (s479 + (negate t384))
-        let !s556 = (s480 + (negate t385))
-        let !s557 = (s478 + (negate s545))
-        let !s558 = (s479 + (negate t492))
-        let !s559 = (s480 + (negate s546))
-        t560 <- rdU mouse 10
-        chkI vel (3 * (truncate t379)) 0 2
-        t561 <- rdU vel (3 * (truncate t379))
-        t562 <- rdU vel ((3 * (truncate t379)) + 1)
-        t563 <- rdU vel ((3 * (truncate t379)) + 2)
-        t564 <- rdU scalars ((6 * (truncate t379)) + 1)
-        let !t565 = (t549 * t382)
-        let !t566 = (negate t565)
-        let !t567 = (((((s555 * t391) - (s556 * t390)) * t386) + (((s556 * t389) - (s554 * t391)) * t387)) + (((s554 * t390) - (s555 * t389)) * t388))
-        let !t568 = (t560 + ((negate ((((((t389 * t561) + (t390 * t562)) + (t391 * t563)) + (t567 * t564)) + (s553 * (((s557 * t389) + (s558 * t390)) + (s559 * t391)))) + (s552 * t560))) / (((t380 * (((t389 * t389) + (t390 * t390)) + (t391 * t391))) + ((t381 * t567) * t567)) + s552)))
-        let !t569 = (if (t568 - t565) > 0 then t565 else t568)
-        let !t570 = (if (t566 - t569) > 0 then t566 else t569)
-        let !s571 = (if (1.0 - (abs (t570 - t570))) > 0 then t570 else 0.0)
-        wrU mouse 10 s571
-        t572 <- rdU scalars ((6 * (truncate t379)) + 2)
-        t573 <- rdU scalars ((6 * (truncate t379)) + 3)
-        t574 <- rdU vel (3 * (truncate t379))
-        t575 <- rdU vel ((3 * (truncate t379)) + 1)
-        t576 <- rdU vel ((3 * (truncate t379)) + 2)
-        t577 <- rdU scalars ((6 * (truncate t379)) + 1)
-        wrU vel (3 * (truncate t379)) (t574 + ((t572 * (s571 - t560)) * t389))
-        wrU vel ((3 * (truncate t379)) + 1) (t575 + ((t572 * (s571 - t560)) * t390))
-        wrU vel ((3 * (truncate t379)) + 2) (t576 + ((t572 * (s571 - t560)) * t391))
-        wrU scalars ((6 * (truncate t379)) + 1) (t577 + ((t573 * (s571 - t560)) * t567))
-        t578 <- rdU mouse 11
-        t579 <- rdU vel (3 * (truncate t379))
-        t580 <- rdU vel ((3 * (truncate t379)) + 1)
-        t581 <- rdU vel ((3 * (truncate t379)) + 2)
-        t582 <- rdU scalars ((6 * (truncate t379)) + 1)
-        let !t583 = (((((s555 * s394) - (s556 * s393)) * t386) + (((s556 * s392) - (s554 * s394)) * t387)) + (((s554 * s393) - (s555 * s392)) * t388))
-        let !t584 = (t578 + ((negate ((((((s392 * t579) + (s393 * t580)) + (s394 * t581)) + (t583 * t582)) + (s553 * (((s557 * s392) + (s558 * s393)) + (s559 * s394)))) + (s552 * t578))) / (((t380 * (((s392 * s392) + (s393 * s393)) + (s394 * s394))) + ((t381 * t583) * t583)) + s552)))
-        let !t585 = (if (t584 - t565) > 0 then t565 else t584)
-        let !t586 = (if (t566 - t585) > 0 then t566 else t585)
-        let !s587 = (if (1.0 - (abs (t586 - t586))) > 0 then t586 else 0.0)
-        wrU mouse 11 s587
-        t588 <- rdU scalars ((6 * (truncate t379)) + 2)
-        t589 <- rdU scalars ((6 * (truncate t379)) + 3)
-        t590 <- rdU vel (3 * (truncate t379))
-        t591 <- rdU vel ((3 * (truncate t379)) + 1)
-        t592 <- rdU vel ((3 * (truncate t379)) + 2)
-        t593 <- rdU scalars ((6 * (truncate t379)) + 1)
-        wrU vel (3 * (truncate t379)) (t590 + ((t588 * (s587 - t578)) * s392))
-        wrU vel ((3 * (truncate t379)) + 1) (t591 + ((t588 * (s587 - t578)) * s393))
-        wrU vel ((3 * (truncate t379)) + 2) (t592 + ((t588 * (s587 - t578)) * s394))
-        wrU scalars ((6 * (truncate t379)) + 1) (t593 + ((t589 * (s587 - t578)) * t583))
+        t235 <- rdU mouse 2
+        t236 <- rdU mouse 3
+        let !t237 = (t235 / 4.0)
+        let !t238 = (if (abs t237) > 0 then 1.0 else 0.0)
+        let !t239 = (t231 + t236)
+        let !t240 = (cos t239)
+        let !t241 = (sin t239)
+        let !t242 = (1.0 - t238)
+        let !t243 = (t220 + (t237 * ((t240 * t226) + (t241 * s229))))
+        let !t244 = (if (if ((abs t243) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t243 + (negate t243)) else t243)
+        let !t245 = (if (if ((abs t244) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t244 + (negate t244)) else t244)
+        let !s246 = ((t238 * (t219 + (t237 * ((t240 * t225) + (t241 * s228))))) + (t242 * t219))
+        let !s247 = ((t238 * (if (if ((abs t245) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t245 + (negate t245)) else t245)) + (t242 * t220))
+        let !s248 = ((t238 * (t221 + (t237 * ((t240 * t227) + (t241 * s230))))) + (t242 * t221))
+        let !t249 = ((t240 * t225) + (t241 * s228))
+        let !t250 = ((t240 * t226) + (t241 * s229))
+        let !t251 = ((t240 * t227) + (t241 * s230))
+        let !t252 = (sqrt (((t249 * t249) + (t250 * t250)) + (t251 * t251)))
+        let !t253 = (if (abs t237) > 0 then (recip t237) else 0.0)
+        let !t254 = (t253 * ((t219 + (t237 * t249)) + (negate t219)))
+        let !t255 = (t253 * ((if (if ((abs t245) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t245 + (negate t245)) else t245) + (negate t220)))
+        let !t256 = (t255 + (negate t255))
+        let !t257 = (t253 * ((t221 + (t237 * t251)) + (negate t221)))
+        let !t258 = (sqrt (((t254 * t254) + (t256 * t256)) + (t257 * t257)))
+        let !t259 = (if t258 > 0 then (recip (if (t258 - 1.0e-300) > 0 then t258 else 1.0e-300)) else 0.0)
+        let !s260 = ((t238 * (t252 * (t259 * t254))) + (t242 * t249))
+        let !s261 = ((t238 * (t252 * (t259 * t256))) + (t242 * t250))
+        let !s262 = ((t238 * (t252 * (t259 * t257))) + (t242 * t251))
+        let !t263 = (s247 + (t237 * s261))
+        let !t264 = (if (if ((abs t263) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t263 + (negate t263)) else t263)
+        let !t265 = (if (if ((abs t264) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t264 + (negate t264)) else t264)
+        let !s266 = ((t238 * (s246 + (t237 * s260))) + (t242 * s246))
+        let !s267 = ((t238 * (if (if ((abs t265) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t265 + (negate t265)) else t265)) + (t242 * s247))
+        let !s268 = ((t238 * (s248 + (t237 * s262))) + (t242 * s248))
+        let !t269 = (sqrt (((s260 * s260) + (s261 * s261)) + (s262 * s262)))
+        let !t270 = (t253 * ((s246 + (t237 * s260)) + (negate s246)))
+        let !t271 = (t253 * ((if (if ((abs t265) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t265 + (negate t265)) else t265) + (negate s247)))
+        let !t272 = (t271 + (negate t271))
+        let !t273 = (t253 * ((s248 + (t237 * s262)) + (negate s248)))
+        let !t274 = (sqrt (((t270 * t270) + (t272 * t272)) + (t273 * t273)))
+        let !t275 = (if t274 > 0 then (recip (if (t274 - 1.0e-300) > 0 then t274 else 1.0e-300)) else 0.0)
+        let !s276 = ((t238 * (t269 * (t275 * t270))) + (t242 * s260))
+        let !s277 = ((t238 * (t269 * (t275 * t272))) + (t242 * s261))
+        let !s278 = ((t238 * (t269 * (t275 * t273))) + (t242 * s262))
+        let !t279 = (s267 + (t237 * s277))
+        let !t280 = (if (if ((abs t279) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t279 + (negate t279)) else t279)
+        let !t281 = (if (if ((abs t280) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t280 + (negate t280)) else t280)
+        let !s282 = ((t238 * (s266 + (t237 * s276))) + (t242 * s266))
+        let !s283 = ((t238 * (if (if ((abs t281) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t281 + (negate t281)) else t281)) + (t242 * s267))
+        let !s284 = ((t238 * (s268 + (t237 * s278))) + (t242 * s268))
+        let !t285 = (sqrt (((s276 * s276) + (s277 * s277)) + (s278 * s278)))
+        let !t286 = (t253 * ((s266 + (t237 * s276)) + (negate s266)))
+        let !t287 = (t253 * ((if (if ((abs t281) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t281 + (negate t281)) else t281) + (negate s267)))
+        let !t288 = (t287 + (negate t287))
+        let !t289 = (t253 * ((s268 + (t237 * s278)) + (negate s268)))
+        let !t290 = (sqrt (((t286 * t286) + (t288 * t288)) + (t289 * t289)))
+        let !t291 = (if t290 > 0 then (recip (if (t290 - 1.0e-300) > 0 then t290 else 1.0e-300)) else 0.0)
+        let !s292 = ((t238 * (t285 * (t291 * t286))) + (t242 * s276))
+        let !s293 = ((t238 * (t285 * (t291 * t288))) + (t242 * s277))
+        let !s294 = ((t238 * (t285 * (t291 * t289))) + (t242 * s278))
+        let !t295 = (s283 + (t237 * s293))
+        let !t296 = (if (if ((abs t295) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t295 + (negate t295)) else t295)
+        let !t297 = (if (if ((abs t296) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t296 + (negate t296)) else t296)
+        let !s298 = ((t238 * (s282 + (t237 * s292))) + (t242 * s282))
+        let !s299 = ((t238 * (if (if ((abs t297) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t297 + (negate t297)) else t297)) + (t242 * s283))
+        let !s300 = ((t238 * (s284 + (t237 * s294))) + (t242 * s284))
+        let !t301 = (sqrt (((s292 * s292) + (s293 * s293)) + (s294 * s294)))
+        let !t302 = (t253 * ((s282 + (t237 * s292)) + (negate s282)))
+        let !t303 = (t253 * ((if (if ((abs t297) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t297 + (negate t297)) else t297) + (negate s283)))
+        let !t304 = (t303 + (negate t303))
+        let !t305 = (t253 * ((s284 + (t237 * s294)) + (negate s284)))
+        let !t306 = (sqrt (((t302 * t302) + (t304 * t304)) + (t305 * t305)))
+        let !t307 = (if t306 > 0 then (recip (if (t306 - 1.0e-300) > 0 then t306 else 1.0e-300)) else 0.0)
+        let !s308 = ((t238 * (t301 * (t307 * t302))) + (t242 * s292))
+        let !s309 = ((t238 * (t301 * (t307 * t304))) + (t242 * s293))
+        let !s310 = ((t238 * (t301 * (t307 * t305))) + (t242 * s294))
+        t311 <- rdU mouse 4
+        t312 <- rdU mouse 5
+        t313 <- rdU mouse 6
+        let !t314 = (floorF ((t311 + 1.0) / 2.0))
+        let !t315 = (t311 - (t314 * 2.0))
+        let !t316 = (negate s298)
+        let !t317 = (t315 + t316)
+        let !t318 = (t312 + (negate s299))
+        let !t319 = (t318 * t318)
+        let !t320 = ((t317 * t317) + t319)
+        let !t321 = ((1.0 - (2.0 * (t314 - (2.0 * (floorF (0.5 * t314)))))) * (t313 - ((floorF ((t313 + 1.0) / 2.0)) * 2.0)))
+        let !t322 = (negate s300)
+        let !t323 = (t321 + t322)
+        let !t324 = (t320 + (t323 * t323))
+        let !t325 = (t315 + (-2.0))
+        let !t326 = (t325 + t316)
+        let !t327 = ((t326 * t326) + t319)
+        let !t328 = (negate t321)
+        let !t329 = (t328 + (-2.0))
+        let !t330 = (t329 + t322)
+        let !t331 = (t330 * t330)
+        let !t332 = (t327 + t331)
+        let !t333 = (t324 - t332)
+        let !t334 = (if t333 > 0 then t332 else t324)
+        let !t335 = (t328 + t322)
+        let !t336 = (t335 * t335)
+        let !t337 = (t327 + t336)
+        let !t338 = (t334 - t337)
+        let !t339 = (if t338 > 0 then t337 else t334)
+        let !t340 = (t328 + 2.0)
+        let !t341 = (t340 + t322)
+        let !t342 = (t341 * t341)
+        let !t343 = (t327 + t342)
+        let !t344 = (t339 - t343)
+        let !t345 = (if t344 > 0 then t343 else t339)
+        let !t346 = (t321 + (-2.0))
+        let !t347 = (t346 + t322)
+        let !t348 = (t320 + (t347 * t347))
+        let !t349 = (t345 - t348)
+        let !t350 = (if t349 > 0 then t348 else t345)
+        let !t351 = (t321 + 2.0)
+        let !t352 = (t351 + t322)
+        let !t353 = (t320 + (t352 * t352))
+        let !t354 = (t350 - t353)
+        let !t355 = (if t354 > 0 then t353 else t350)
+        let !t356 = (t315 + 2.0)
+        let !t357 = (t356 + t316)
+        let !t358 = ((t357 * t357) + t319)
+        let !t359 = (t358 + t331)
+        let !t360 = (t355 - t359)
+        let !t361 = (if t360 > 0 then t359 else t355)
+        let !t362 = (t358 + t336)
+        let !t363 = (t361 - t362)
+        let !t364 = ((if t363 > 0 then t362 else t361) - (t358 + t342))
+        let !s365 = (if t364 > 0 then t356 else (if t363 > 0 then t356 else (if t360 > 0 then t356 else (if t354 > 0 then t315 else (if t349 > 0 then t315 else (if t344 > 0 then t325 else (if t338 > 0 then t325 else (if t333 > 0 then t325 else t315))))))))
+        let !s366 = (if t364 > 0 then t340 else (if t363 > 0 then t328 else (if t360 > 0 then t329 else (if t354 > 0 then t351 else (if t349 > 0 then t346 else (if t344 > 0 then t340 else (if t338 > 0 then t328 else (if t333 > 0 then t329 else t321))))))))
+        t367 <- rdU mouse 7
+        t368 <- rdU mouse 8
+        t369 <- rdU mouse 9
+        let !t370 = (recip t200)
+        let !t371 = (6.283185307179586 * t367)
+        let !s372 = (recip (t202 * ((((2.0 * t370) * t368) * t371) + (t202 * ((t370 * t371) * t371)))))
+        let !s373 = ((t202 * ((t370 * t371) * t371)) * s372)
+        let !s374 = (s298 + (negate t203))
+        let !s375 = (s299 + (negate t204))
+        let !s376 = (s300 + (negate t205))
+        let !s377 = (s298 + (negate s365))
+        let !s378 = (s299 + (negate t312))
+        let !s379 = (s300 + (negate s366))
+        t380 <- rdU mouse 10
+        chkI vel (3 * (truncate t199)) 0 2
+        t381 <- rdU vel (3 * (truncate t199))
+        t382 <- rdU vel ((3 * (truncate t199)) + 1)
+        t383 <- rdU vel ((3 * (truncate t199)) + 2)
+        t384 <- rdU scalars ((8 * (truncate t199)) + 1)
+        let !t385 = (t369 * t202)
+        let !t386 = (negate t385)
+        let !t387 = (((((s375 * t211) - (s376 * t210)) * t206) + (((s376 * t209) - (s374 * t211)) * t207)) + (((s374 * t210) - (s375 * t209)) * t208))
+        let !t388 = (t380 + ((negate ((((((t209 * t381) + (t210 * t382)) + (t211 * t383)) + (t387 * t384)) + (s373 * (((s377 * t209) + (s378 * t210)) + (s379 * t211)))) + (s372 * t380))) / (((t200 * (((t209 * t209) + (t210 * t210)) + (t211 * t211))) + ((t201 * t387) * t387)) + s372)))
+        let !t389 = (if (t388 - t385) > 0 then t385 else t388)
+        let !t390 = (if (t386 - t389) > 0 then t386 else t389)
+        let !s391 = (if (1.0 - (abs (t390 - t390))) > 0 then t390 else 0.0)
+        wrU mouse 10 s391
+        t392 <- rdU scalars ((8 * (truncate t199)) + 2)
+        t393 <- rdU scalars ((8 * (truncate t199)) + 3)
+        t394 <- rdU vel (3 * (truncate t199))
+        t395 <- rdU vel ((3 * (truncate t199)) + 1)
+        t396 <- rdU vel ((3 * (truncate t199)) + 2)
+        t397 <- rdU scalars ((8 * (truncate t199)) + 1)
+        wrU vel (3 * (truncate t199)) (t394 + ((t392 * (s391 - t380)) * t209))
+        wrU vel ((3 * (truncate t199)) + 1) (t395 + ((t392 * (s391 - t380)) * t210))
+        wrU vel ((3 * (truncate t199)) + 2) (t396 + ((t392 * (s391 - t380)) * t211))
+        wrU scalars ((8 * (truncate t199)) + 1) (t397 + ((t393 * (s391 - t380)) * t387))
+        t398 <- rdU mouse 11
+        t399 <- rdU vel (3 * (truncate t199))
+        t400 <- rdU vel ((3 * (truncate t199)) + 1)
+        t401 <- rdU vel ((3 * (truncate t199)) + 2)
+        t402 <- rdU scalars ((8 * (truncate t199)) + 1)
+        let !t403 = (((((s375 * s214) - (s376 * s213)) * t206) + (((s376 * s212) - (s374 * s214)) * t207)) + (((s374 * s213) - (s375 * s212)) * t208))
+        let !t404 = (t398 + ((negate ((((((s212 * t399) + (s213 * t400)) + (s214 * t401)) + (t403 * t402)) + (s373 * (((s377 * s212) + (s378 * s213)) + (s379 * s214)))) + (s372 * t398))) / (((t200 * (((s212 * s212) + (s213 * s213)) + (s214 * s214))) + ((t201 * t403) * t403)) + s372)))
+        let !t405 = (if (t404 - t385) > 0 then t385 else t404)
+        let !t406 = (if (t386 - t405) > 0 then t386 else t405)
+        let !s407 = (if (1.0 - (abs (t406 - t406))) > 0 then t406 else 0.0)
+        wrU mouse 11 s407
+        t408 <- rdU scalars ((8 * (truncate t199)) + 2)
+        t409 <- rdU scalars ((8 * (truncate t199)) + 3)
+        t410 <- rdU vel (3 * (truncate t199))
+        t411 <- rdU vel ((3 * (truncate t199)) + 1)
+        t412 <- rdU vel ((3 * (truncate t199)) + 2)
+        t413 <- rdU scalars ((8 * (truncate t199)) + 1)
+        wrU vel (3 * (truncate t199)) (t410 + ((t408 * (s407 - t398)) * s212))
+        wrU vel ((3 * (truncate t199)) + 1) (t411 + ((t408 * (s407 - t398)) * s213))
+        wrU vel ((3 * (truncate t199)) + 2) (t412 + ((t408 * (s407 - t398)) * s214))
+        wrU scalars ((8 * (truncate t199)) + 1) (t413 + ((t409 * (s407 - t398)) * t403))
         pure ()
       else do
         pure ()
@@ -1858,33 +1586,35 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t594 <- rdU meta 0
-  loopI 0.0 t594 $ \i595 -> do
-    let !d595 = fromIntegral i595 :: Double
-    chkI bodyPrev (2 * i595) 1 1
-    wrU bodyPrev ((2 * i595) + 1) 0.0
+  chkI meta 0 0 2
+  t414 <- rdU meta 2
+  t415 <- rdU meta 0
+  loopI 0.0 t415 $ \i416 -> do
+    let !d416 = fromIntegral i416 :: Double
+    chkI bodyPrev (2 * i416) 1 1
+    wrU bodyPrev ((2 * i416) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i596 -> do
-    let !d596 = fromIntegral i596 :: Double
-    chkI contacts (30 * i596) 2 25
-    t597 <- rdU contacts ((30 * i596) + 2)
-    chkI prev (4 * i596) 0 3
-    wrU prev (4 * i596) t597
-    t598 <- rdU contacts ((30 * i596) + 3)
-    wrU prev ((4 * i596) + 1) t598
-    t599 <- rdU contacts ((30 * i596) + 24)
-    wrU prev ((4 * i596) + 2) t599
-    t600 <- rdU contacts ((30 * i596) + 25)
-    wrU prev ((4 * i596) + 3) t600
-    chkI bodyPrev (2 * (truncate t597)) 1 1
-    t601 <- rdU bodyPrev ((2 * (truncate t597)) + 1)
-    if (0.5 - t601) > 0 then do
-      chkI bodyPrev (2 * (truncate t597)) 0 0
-      wrU bodyPrev (2 * (truncate t597)) d596
+  loopI 0.0 t414 $ \i417 -> do
+    let !d417 = fromIntegral i417 :: Double
+    chkI contacts (30 * i417) 2 25
+    t418 <- rdU contacts ((30 * i417) + 2)
+    chkI prev (4 * i417) 0 3
+    wrU prev (4 * i417) t418
+    t419 <- rdU contacts ((30 * i417) + 3)
+    wrU prev ((4 * i417) + 1) t419
+    t420 <- rdU contacts ((30 * i417) + 24)
+    wrU prev ((4 * i417) + 2) t420
+    t421 <- rdU contacts ((30 * i417) + 25)
+    wrU prev ((4 * i417) + 3) t421
+    chkI bodyPrev (2 * (truncate t418)) 1 1
+    t422 <- rdU bodyPrev ((2 * (truncate t418)) + 1)
+    if (0.5 - t422) > 0 then do
+      chkI bodyPrev (2 * (truncate t418)) 0 0
+      wrU bodyPrev (2 * (truncate t418)) d417
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t597)) + 1) (t601 + 1.0)
+    wrU bodyPrev ((2 * (truncate t418)) + 1) (t422 + 1.0)
     pure ()
   pure ()
 
@@ -1908,9 +1638,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     t9 <- rdU axis (3 * i2)
     t10 <- rdU axis ((3 * i2) + 1)
     t11 <- rdU axis ((3 * i2) + 2)
-    chkI scalars (6 * i2) 0 1
-    t12 <- rdU scalars (6 * i2)
-    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI scalars (8 * i2) 0 1
+    t12 <- rdU scalars (8 * i2)
+    t13 <- rdU scalars ((8 * i2) + 1)
     chkI normal (3 * i2) 0 2
     t14 <- rdU normal (3 * i2)
     t15 <- rdU normal ((3 * i2) + 1)
@@ -2000,8 +1730,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
       wrU normal (3 * i2) s51
       wrU normal ((3 * i2) + 1) s52
       wrU normal ((3 * i2) + 2) (s88 * s53)
-      wrU scalars (6 * i2) (s88 * t85)
-      wrU scalars ((6 * i2) + 1) (s88 * t13)
+      wrU scalars (8 * i2) (s88 * t85)
+      wrU scalars ((8 * i2) + 1) (s88 * t13)
       chkI mouse 0 0 1
       t89 <- rdU mouse 0
       t90 <- rdU mouse 1
@@ -2017,7 +1747,7 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
       wrU vel (3 * i2) 0.0
       wrU vel ((3 * i2) + 1) 0.0
       wrU vel ((3 * i2) + 2) 0.0
-      wrU scalars ((6 * i2) + 1) 0.0
+      wrU scalars ((8 * i2) + 1) 0.0
       chkI meta 0 1 1
       t92 <- rdU meta 1
       wrU meta 1 (t92 + 1.0)
@@ -2044,11 +1774,11 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     t8 <- rdU normal (3 * i1)
     t9 <- rdU normal ((3 * i1) + 1)
     t10 <- rdU normal ((3 * i1) + 2)
-    chkI scalars (6 * i1) 0 5
-    t11 <- rdU scalars (6 * i1)
+    chkI scalars (8 * i1) 0 7
+    t11 <- rdU scalars (8 * i1)
     chkI params 0 10 10
     t12 <- rdU params 10
-    t13 <- rdU scalars ((6 * i1) + 5)
+    t13 <- rdU scalars ((8 * i1) + 5)
     chkI verts (291 * i1) 0 2
     wrU verts (291 * i1) t2
     wrU verts ((291 * i1) + 1) t3
@@ -2057,286 +1787,290 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    wrU locals 0 (cos t11)
-    wrU locals 1 (sin t11)
+    let !s18 = (cos t11)
+    let !s19 = (sin t11)
+    wrU scalars ((8 * i1) + 6) s18
+    wrU scalars ((8 * i1) + 7) s19
+    wrU locals 0 s18
+    wrU locals 1 s19
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i18 -> do
-        let !d18 = fromIntegral i18 :: Double
-        t19 <- rdU locals 0
-        t20 <- rdU locals 1
-        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
-        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
-        let !s21 = ((t19 * t5) + (t20 * s14))
-        let !s22 = ((t19 * t6) + (t20 * s15))
-        let !s23 = ((t19 * t7) + (t20 * s16))
-        chkI walk (12 * i18) 3 5
-        wrU walk ((12 * i18) + 3) s21
-        wrU walk ((12 * i18) + 4) s22
-        wrU walk ((12 * i18) + 5) s23
+      loopI 0.0 24.0 $ \i20 -> do
+        let !d20 = fromIntegral i20 :: Double
+        t21 <- rdU locals 0
+        t22 <- rdU locals 1
+        wrU locals 0 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
+        wrU locals 1 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
+        let !s23 = ((t21 * t5) + (t22 * s14))
+        let !s24 = ((t21 * t6) + (t22 * s15))
+        let !s25 = ((t21 * t7) + (t22 * s16))
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
-      loopI 0.0 24.0 $ \i24 -> do
-        let !d24 = fromIntegral i24 :: Double
-        chkI radii ((24 * i1) + i24) 0 0
-        t25 <- rdU radii ((24 * i1) + i24)
-        let !s26 = (t25 / 4.0)
-        chkI walk (12 * i24) 0 8
-        t27 <- rdU walk ((12 * i24) + 3)
-        t28 <- rdU walk ((12 * i24) + 4)
-        t29 <- rdU walk ((12 * i24) + 5)
-        let !s30 = (t2 + (s26 * t27))
-        let !s31 = (t3 + (s26 * t28))
-        let !s32 = (t4 + (s26 * t29))
-        let !t33 = (if (abs s26) > 0 then 1.0 else 0.0)
-        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t35 = (if ((abs s31) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t36 = (if t35 > 0 then (s31 + (negate ((s31 / t9) * t9))) else s31)
-        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t40 = (if t35 > 0 then (s30 + (negate ((s31 / t9) * t8))) else s30)
-        let !t41 = (if t37 > 0 then (t40 + (negate ((t36 / t9) * t8))) else t40)
-        let !t42 = (1.0 - t33)
-        let !t43 = (if t35 > 0 then (s32 + (negate ((s31 / t9) * t10))) else s32)
-        let !t44 = (if t37 > 0 then (t43 + (negate ((t36 / t9) * t10))) else t43)
-        let !s45 = ((t33 * (if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41)) + (t42 * t2))
-        let !s46 = ((t33 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t42 * t3))
-        let !s47 = ((t33 * (if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44)) + (t42 * t4))
-        chkI verts ((291 * i1) + (12 * i24)) 3 5
-        wrU verts (((291 * i1) + (12 * i24)) + 3) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s45 else t2)
-        wrU verts (((291 * i1) + (12 * i24)) + 4) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s46 else t3)
-        wrU verts (((291 * i1) + (12 * i24)) + 5) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s47 else t4)
-        wrU walk (12 * i24) s45
-        wrU walk ((12 * i24) + 1) s46
-        wrU walk ((12 * i24) + 2) s47
-        let !t48 = (sqrt (((t27 * t27) + (t28 * t28)) + (t29 * t29)))
-        let !t49 = (if (abs s26) > 0 then (recip s26) else 0.0)
-        let !t50 = (t49 * ((if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41) + (negate t2)))
-        let !t51 = (t49 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
-        let !t52 = (t51 + (negate t51))
-        let !t53 = (t49 * ((if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44) + (negate t4)))
-        let !t54 = (sqrt (((t50 * t50) + (t52 * t52)) + (t53 * t53)))
-        let !t55 = (if t54 > 0 then (recip (if (t54 - 1.0e-300) > 0 then t54 else 1.0e-300)) else 0.0)
-        let !s56 = ((t33 * (t48 * (t55 * t50))) + (t42 * t27))
-        let !s57 = ((t33 * (t48 * (t55 * t52))) + (t42 * t28))
-        let !s58 = ((t33 * (t48 * (t55 * t53))) + (t42 * t29))
-        wrU walk ((12 * i24) + 3) s56
-        wrU walk ((12 * i24) + 4) s57
-        wrU walk ((12 * i24) + 5) s58
-        let !s59 = (t42 * t8)
-        let !s60 = (t33 + (t42 * t9))
-        let !s61 = (t42 * t10)
-        wrU walk ((12 * i24) + 6) s59
-        wrU walk ((12 * i24) + 7) s60
-        wrU walk ((12 * i24) + 8) s61
+      loopI 0.0 24.0 $ \i26 -> do
+        let !d26 = fromIntegral i26 :: Double
+        chkI radii ((24 * i1) + i26) 0 0
+        t27 <- rdU radii ((24 * i1) + i26)
+        let !s28 = (t27 / 4.0)
+        chkI walk (12 * i26) 0 8
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
+        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
+        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
+        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
+        let !t44 = (1.0 - t35)
+        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
+        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
+        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
+        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
+        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
+        chkI verts ((291 * i1) + (12 * i26)) 3 5
+        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
+        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
+        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
+        wrU walk (12 * i26) s47
+        wrU walk ((12 * i26) + 1) s48
+        wrU walk ((12 * i26) + 2) s49
+        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
+        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
+        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
+        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
+        let !t54 = (t53 + (negate t53))
+        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
+        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
+        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
+        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
+        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
+        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
+        wrU walk ((12 * i26) + 3) s58
+        wrU walk ((12 * i26) + 4) s59
+        wrU walk ((12 * i26) + 5) s60
+        let !s61 = (t44 * t8)
+        let !s62 = (t35 + (t44 * t9))
+        let !s63 = (t44 * t10)
+        wrU walk ((12 * i26) + 6) s61
+        wrU walk ((12 * i26) + 7) s62
+        wrU walk ((12 * i26) + 8) s63
         pure ()
-      loopI 0.0 24.0 $ \i62 -> do
-        let !d62 = fromIntegral i62 :: Double
-        chkI radii ((24 * i1) + i62) 0 0
-        t63 <- rdU radii ((24 * i1) + i62)
-        let !s64 = (t63 / 4.0)
-        chkI walk (12 * i62) 0 8
-        t65 <- rdU walk (12 * i62)
-        t66 <- rdU walk ((12 * i62) + 1)
-        t67 <- rdU walk ((12 * i62) + 2)
-        t68 <- rdU walk ((12 * i62) + 6)
-        t69 <- rdU walk ((12 * i62) + 7)
-        t70 <- rdU walk ((12 * i62) + 8)
-        t71 <- rdU walk ((12 * i62) + 3)
-        t72 <- rdU walk ((12 * i62) + 4)
-        t73 <- rdU walk ((12 * i62) + 5)
-        let !s74 = (t65 + (s64 * t71))
-        let !s75 = (t66 + (s64 * t72))
-        let !s76 = (t67 + (s64 * t73))
-        let !t77 = (if (abs s64) > 0 then 1.0 else 0.0)
-        let !t78 = (if (abs t69) > 0 then 1.0 else 0.0)
-        let !t79 = (if ((abs s75) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t80 = (if t79 > 0 then (s75 + (negate ((s75 / t69) * t69))) else s75)
-        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t69) * t69))) else t80)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t84 = (if t79 > 0 then (s74 + (negate ((s75 / t69) * t68))) else s74)
-        let !t85 = (if t81 > 0 then (t84 + (negate ((t80 / t69) * t68))) else t84)
-        let !t86 = (1.0 - t77)
-        let !t87 = (if t79 > 0 then (s76 + (negate ((s75 / t69) * t70))) else s76)
-        let !t88 = (if t81 > 0 then (t87 + (negate ((t80 / t69) * t70))) else t87)
-        let !s89 = ((t77 * (if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85)) + (t86 * t65))
-        let !s90 = ((t77 * (if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82)) + (t86 * t66))
-        let !s91 = ((t77 * (if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88)) + (t86 * t67))
-        chkI verts ((291 * i1) + (12 * i62)) 6 8
-        wrU verts (((291 * i1) + (12 * i62)) + 6) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s89 else t2)
-        wrU verts (((291 * i1) + (12 * i62)) + 7) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s90 else t3)
-        wrU verts (((291 * i1) + (12 * i62)) + 8) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s91 else t4)
-        wrU walk (12 * i62) s89
-        wrU walk ((12 * i62) + 1) s90
-        wrU walk ((12 * i62) + 2) s91
-        let !t92 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
-        let !t93 = (if (abs s64) > 0 then (recip s64) else 0.0)
-        let !t94 = (t93 * ((if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85) + (negate t65)))
-        let !t95 = (t93 * ((if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82) + (negate t66)))
-        let !t96 = (t95 + (negate t95))
-        let !t97 = (t93 * ((if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88) + (negate t67)))
-        let !t98 = (sqrt (((t94 * t94) + (t96 * t96)) + (t97 * t97)))
-        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
-        let !s100 = ((t77 * (t92 * (t99 * t94))) + (t86 * t71))
-        let !s101 = ((t77 * (t92 * (t99 * t96))) + (t86 * t72))
-        let !s102 = ((t77 * (t92 * (t99 * t97))) + (t86 * t73))
-        wrU walk ((12 * i62) + 3) s100
-        wrU walk ((12 * i62) + 4) s101
-        wrU walk ((12 * i62) + 5) s102
-        let !s103 = (t86 * t68)
-        let !s104 = (t77 + (t86 * t69))
-        let !s105 = (t86 * t70)
-        wrU walk ((12 * i62) + 6) s103
-        wrU walk ((12 * i62) + 7) s104
-        wrU walk ((12 * i62) + 8) s105
+      loopI 0.0 24.0 $ \i64 -> do
+        let !d64 = fromIntegral i64 :: Double
+        chkI radii ((24 * i1) + i64) 0 0
+        t65 <- rdU radii ((24 * i1) + i64)
+        let !s66 = (t65 / 4.0)
+        chkI walk (12 * i64) 0 8
+        t67 <- rdU walk (12 * i64)
+        t68 <- rdU walk ((12 * i64) + 1)
+        t69 <- rdU walk ((12 * i64) + 2)
+        t70 <- rdU walk ((12 * i64) + 6)
+        t71 <- rdU walk ((12 * i64) + 7)
+        t72 <- rdU walk ((12 * i64) + 8)
+        t73 <- rdU walk ((12 * i64) + 3)
+        t74 <- rdU walk ((12 * i64) + 4)
+        t75 <- rdU walk ((12 * i64) + 5)
+        let !s76 = (t67 + (s66 * t73))
+        let !s77 = (t68 + (s66 * t74))
+        let !s78 = (t69 + (s66 * t75))
+        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
+        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
+        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
+        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
+        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
+        let !t88 = (1.0 - t79)
+        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
+        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
+        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
+        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
+        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
+        chkI verts ((291 * i1) + (12 * i64)) 6 8
+        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
+        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
+        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
+        wrU walk (12 * i64) s91
+        wrU walk ((12 * i64) + 1) s92
+        wrU walk ((12 * i64) + 2) s93
+        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
+        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
+        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
+        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
+        let !t98 = (t97 + (negate t97))
+        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
+        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
+        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
+        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
+        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
+        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
+        wrU walk ((12 * i64) + 3) s102
+        wrU walk ((12 * i64) + 4) s103
+        wrU walk ((12 * i64) + 5) s104
+        let !s105 = (t88 * t70)
+        let !s106 = (t79 + (t88 * t71))
+        let !s107 = (t88 * t72)
+        wrU walk ((12 * i64) + 6) s105
+        wrU walk ((12 * i64) + 7) s106
+        wrU walk ((12 * i64) + 8) s107
         pure ()
-      loopI 0.0 24.0 $ \i106 -> do
-        let !d106 = fromIntegral i106 :: Double
-        chkI radii ((24 * i1) + i106) 0 0
-        t107 <- rdU radii ((24 * i1) + i106)
-        let !s108 = (t107 / 4.0)
-        chkI walk (12 * i106) 0 8
-        t109 <- rdU walk (12 * i106)
-        t110 <- rdU walk ((12 * i106) + 1)
-        t111 <- rdU walk ((12 * i106) + 2)
-        t112 <- rdU walk ((12 * i106) + 6)
-        t113 <- rdU walk ((12 * i106) + 7)
-        t114 <- rdU walk ((12 * i106) + 8)
-        t115 <- rdU walk ((12 * i106) + 3)
-        t116 <- rdU walk ((12 * i106) + 4)
-        t117 <- rdU walk ((12 * i106) + 5)
-        let !s118 = (t109 + (s108 * t115))
-        let !s119 = (t110 + (s108 * t116))
-        let !s120 = (t111 + (s108 * t117))
-        let !t121 = (if (abs s108) > 0 then 1.0 else 0.0)
-        let !t122 = (if (abs t113) > 0 then 1.0 else 0.0)
-        let !t123 = (if ((abs s119) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t124 = (if t123 > 0 then (s119 + (negate ((s119 / t113) * t113))) else s119)
-        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t113) * t113))) else t124)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t128 = (if t123 > 0 then (s118 + (negate ((s119 / t113) * t112))) else s118)
-        let !t129 = (if t125 > 0 then (t128 + (negate ((t124 / t113) * t112))) else t128)
-        let !t130 = (1.0 - t121)
-        let !t131 = (if t123 > 0 then (s120 + (negate ((s119 / t113) * t114))) else s120)
-        let !t132 = (if t125 > 0 then (t131 + (negate ((t124 / t113) * t114))) else t131)
-        let !s133 = ((t121 * (if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129)) + (t130 * t109))
-        let !s134 = ((t121 * (if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126)) + (t130 * t110))
-        let !s135 = ((t121 * (if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132)) + (t130 * t111))
-        chkI verts ((291 * i1) + (12 * i106)) 9 11
-        wrU verts (((291 * i1) + (12 * i106)) + 9) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s133 else t2)
-        wrU verts (((291 * i1) + (12 * i106)) + 10) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s134 else t3)
-        wrU verts (((291 * i1) + (12 * i106)) + 11) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s135 else t4)
-        wrU walk (12 * i106) s133
-        wrU walk ((12 * i106) + 1) s134
-        wrU walk ((12 * i106) + 2) s135
-        let !t136 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
-        let !t137 = (if (abs s108) > 0 then (recip s108) else 0.0)
-        let !t138 = (t137 * ((if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129) + (negate t109)))
-        let !t139 = (t137 * ((if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126) + (negate t110)))
-        let !t140 = (t139 + (negate t139))
-        let !t141 = (t137 * ((if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132) + (negate t111)))
-        let !t142 = (sqrt (((t138 * t138) + (t140 * t140)) + (t141 * t141)))
-        let !t143 = (if t142 > 0 then (recip (if (t142 - 1.0e-300) > 0 then t142 else 1.0e-300)) else 0.0)
-        let !s144 = ((t121 * (t136 * (t143 * t138))) + (t130 * t115))
-        let !s145 = ((t121 * (t136 * (t143 * t140))) + (t130 * t116))
-        let !s146 = ((t121 * (t136 * (t143 * t141))) + (t130 * t117))
-        wrU walk ((12 * i106) + 3) s144
-        wrU walk ((12 * i106) + 4) s145
-        wrU walk ((12 * i106) + 5) s146
-        let !s147 = (t130 * t112)
-        let !s148 = (t121 + (t130 * t113))
-        let !s149 = (t130 * t114)
-        wrU walk ((12 * i106) + 6) s147
-        wrU walk ((12 * i106) + 7) s148
-        wrU walk ((12 * i106) + 8) s149
+      loopI 0.0 24.0 $ \i108 -> do
+        let !d108 = fromIntegral i108 :: Double
+        chkI radii ((24 * i1) + i108) 0 0
+        t109 <- rdU radii ((24 * i1) + i108)
+        let !s110 = (t109 / 4.0)
+        chkI walk (12 * i108) 0 8
+        t111 <- rdU walk (12 * i108)
+        t112 <- rdU walk ((12 * i108) + 1)
+        t113 <- rdU walk ((12 * i108) + 2)
+        t114 <- rdU walk ((12 * i108) + 6)
+        t115 <- rdU walk ((12 * i108) + 7)
+        t116 <- rdU walk ((12 * i108) + 8)
+        t117 <- rdU walk ((12 * i108) + 3)
+        t118 <- rdU walk ((12 * i108) + 4)
+        t119 <- rdU walk ((12 * i108) + 5)
+        let !s120 = (t111 + (s110 * t117))
+        let !s121 = (t112 + (s110 * t118))
+        let !s122 = (t113 + (s110 * t119))
+        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
+        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
+        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
+        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
+        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
+        let !t132 = (1.0 - t123)
+        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
+        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
+        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
+        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
+        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
+        chkI verts ((291 * i1) + (12 * i108)) 9 11
+        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
+        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
+        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
+        wrU walk (12 * i108) s135
+        wrU walk ((12 * i108) + 1) s136
+        wrU walk ((12 * i108) + 2) s137
+        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
+        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
+        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
+        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
+        let !t142 = (t141 + (negate t141))
+        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
+        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
+        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
+        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
+        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
+        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
+        wrU walk ((12 * i108) + 3) s146
+        wrU walk ((12 * i108) + 4) s147
+        wrU walk ((12 * i108) + 5) s148
+        let !s149 = (t132 * t114)
+        let !s150 = (t123 + (t132 * t115))
+        let !s151 = (t132 * t116)
+        wrU walk ((12 * i108) + 6) s149
+        wrU walk ((12 * i108) + 7) s150
+        wrU walk ((12 * i108) + 8) s151
         pure ()
-      loopI 0.0 24.0 $ \i150 -> do
-        let !d150 = fromIntegral i150 :: Double
-        chkI radii ((24 * i1) + i150) 0 0
-        t151 <- rdU radii ((24 * i1) + i150)
-        let !s152 = (t151 / 4.0)
-        chkI walk (12 * i150) 0 8
-        t153 <- rdU walk (12 * i150)
-        t154 <- rdU walk ((12 * i150) + 1)
-        t155 <- rdU walk ((12 * i150) + 2)
-        t156 <- rdU walk ((12 * i150) + 6)
-        t157 <- rdU walk ((12 * i150) + 7)
-        t158 <- rdU walk ((12 * i150) + 8)
-        t159 <- rdU walk ((12 * i150) + 3)
-        t160 <- rdU walk ((12 * i150) + 4)
-        t161 <- rdU walk ((12 * i150) + 5)
-        let !s162 = (t153 + (s152 * t159))
-        let !s163 = (t154 + (s152 * t160))
-        let !s164 = (t155 + (s152 * t161))
-        let !t165 = (if (abs s152) > 0 then 1.0 else 0.0)
-        let !t166 = (if (abs t157) > 0 then 1.0 else 0.0)
-        let !t167 = (if ((abs s163) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t168 = (if t167 > 0 then (s163 + (negate ((s163 / t157) * t157))) else s163)
-        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t157) * t157))) else t168)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t172 = (if t167 > 0 then (s162 + (negate ((s163 / t157) * t156))) else s162)
-        let !t173 = (if t169 > 0 then (t172 + (negate ((t168 / t157) * t156))) else t172)
-        let !t174 = (1.0 - t165)
-        let !t175 = (if t167 > 0 then (s164 + (negate ((s163 / t157) * t158))) else s164)
-        let !t176 = (if t169 > 0 then (t175 + (negate ((t168 / t157) * t158))) else t175)
-        let !s177 = ((t165 * (if t171 > 0 then (t173 + (negate ((t170 / t157) * t156))) else t173)) + (t174 * t153))
-        let !s178 = ((t165 * (if t171 > 0 then (t170 + (negate ((t170 / t157) * t157))) else t170)) + (t174 * t154))
-        let !s179 = ((t165 * (if t171 > 0 then (t176 + (negate ((t170 / t157) * t158))) else t176)) + (t174 * t155))
-        chkI verts ((291 * i1) + (12 * i150)) 12 14
-        wrU verts (((291 * i1) + (12 * i150)) + 12) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s177 else t2)
-        wrU verts (((291 * i1) + (12 * i150)) + 13) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s178 else t3)
-        wrU verts (((291 * i1) + (12 * i150)) + 14) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s179 else t4)
+      loopI 0.0 24.0 $ \i152 -> do
+        let !d152 = fromIntegral i152 :: Double
+        chkI radii ((24 * i1) + i152) 0 0
+        t153 <- rdU radii ((24 * i1) + i152)
+        let !s154 = (t153 / 4.0)
+        chkI walk (12 * i152) 0 8
+        t155 <- rdU walk (12 * i152)
+        t156 <- rdU walk ((12 * i152) + 1)
+        t157 <- rdU walk ((12 * i152) + 2)
+        t158 <- rdU walk ((12 * i152) + 6)
+        t159 <- rdU walk ((12 * i152) + 7)
+        t160 <- rdU walk ((12 * i152) + 8)
+        t161 <- rdU walk ((12 * i152) + 3)
+        t162 <- rdU walk ((12 * i152) + 4)
+        t163 <- rdU walk ((12 * i152) + 5)
+        let !s164 = (t155 + (s154 * t161))
+        let !s165 = (t156 + (s154 * t162))
+        let !s166 = (t157 + (s154 * t163))
+        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
+        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
+        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
+        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
+        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
+        let !t176 = (1.0 - t167)
+        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
+        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
+        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
+        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
+        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
+        chkI verts ((291 * i1) + (12 * i152)) 12 14
+        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
+        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
+        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i180 -> do
-        let !d180 = fromIntegral i180 :: Double
-        chkI radii ((24 * i1) + i180) 0 0
-        t181 <- rdU radii ((24 * i1) + i180)
-        t182 <- rdU locals 0
-        t183 <- rdU locals 1
-        wrU locals 0 ((t182 * 0.9659258262890683) - (t183 * 0.25881904510252074))
-        wrU locals 1 ((t183 * 0.9659258262890683) + (t182 * 0.25881904510252074))
-        let !s184 = ((t182 * t5) + (t183 * s14))
-        let !s185 = ((t182 * t6) + (t183 * s15))
-        let !s186 = ((t182 * t7) + (t183 * s16))
-        let !s187 = (t2 + (t181 * s184))
-        let !s188 = (t3 + (t181 * s185))
-        let !s189 = (t4 + (t181 * s186))
-        let !t190 = (if (abs t181) > 0 then 1.0 else 0.0)
-        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t192 = (if ((abs s188) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t193 = (if t192 > 0 then (s188 + (negate ((s188 / t9) * t9))) else s188)
-        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t197 = (if t192 > 0 then (s187 + (negate ((s188 / t9) * t8))) else s187)
-        let !t198 = (if t194 > 0 then (t197 + (negate ((t193 / t9) * t8))) else t197)
-        let !t199 = (1.0 - t190)
-        let !t200 = (if t192 > 0 then (s189 + (negate ((s188 / t9) * t10))) else s189)
-        let !t201 = (if t194 > 0 then (t200 + (negate ((t193 / t9) * t10))) else t200)
-        let !s202 = ((t190 * (if t196 > 0 then (t198 + (negate ((t195 / t9) * t8))) else t198)) + (t199 * t2))
-        let !s203 = ((t190 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t199 * t3))
-        let !s204 = ((t190 * (if t196 > 0 then (t201 + (negate ((t195 / t9) * t10))) else t201)) + (t199 * t4))
-        let !t205 = (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204))))
-        let !s206 = (if t205 > 0 then s202 else t2)
-        let !s207 = (if t205 > 0 then s203 else t3)
-        let !s208 = (if t205 > 0 then s204 else t4)
-        chkI verts ((291 * i1) + (12 * i180)) 3 14
-        wrU verts (((291 * i1) + (12 * i180)) + 12) s206
-        wrU verts (((291 * i1) + (12 * i180)) + 13) s207
-        wrU verts (((291 * i1) + (12 * i180)) + 14) s208
-        wrU verts (((291 * i1) + (12 * i180)) + 3) (t2 + (0.25 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 4) (t3 + (0.25 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 5) (t4 + (0.25 * (s208 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i180)) + 6) (t2 + (0.5 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 7) (t3 + (0.5 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 8) (t4 + (0.5 * (s208 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i180)) + 9) (t2 + (0.75 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 10) (t3 + (0.75 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 11) (t4 + (0.75 * (s208 + (negate t4))))
+      loopI 0.0 24.0 $ \i182 -> do
+        let !d182 = fromIntegral i182 :: Double
+        chkI radii ((24 * i1) + i182) 0 0
+        t183 <- rdU radii ((24 * i1) + i182)
+        t184 <- rdU locals 0
+        t185 <- rdU locals 1
+        wrU locals 0 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
+        wrU locals 1 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
+        let !s186 = ((t184 * t5) + (t185 * s14))
+        let !s187 = ((t184 * t6) + (t185 * s15))
+        let !s188 = ((t184 * t7) + (t185 * s16))
+        let !s189 = (t2 + (t183 * s186))
+        let !s190 = (t3 + (t183 * s187))
+        let !s191 = (t4 + (t183 * s188))
+        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
+        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
+        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
+        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
+        let !t201 = (1.0 - t192)
+        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
+        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
+        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
+        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
+        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
+        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
+        let !s208 = (if t207 > 0 then s204 else t2)
+        let !s209 = (if t207 > 0 then s205 else t3)
+        let !s210 = (if t207 > 0 then s206 else t4)
+        chkI verts ((291 * i1) + (12 * i182)) 3 14
+        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
+        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
+        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
+        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
         pure ()
       pure ()
     pure ()

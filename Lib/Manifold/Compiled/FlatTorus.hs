@@ -36,8 +36,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    chkI scalars (6 * i3) 2 2
-    t4 <- rdU scalars ((6 * i3) + 2)
+    chkI scalars (8 * i3) 2 2
+    t4 <- rdU scalars ((8 * i3) + 2)
     if (t4 * t2) > 0 then do
       chkI pos (3 * i3) 0 2
       t5 <- rdU pos (3 * i3)
@@ -76,8 +76,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   wrU locals 0 0.0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    chkI scalars (6 * i1) 5 5
-    t2 <- rdU scalars ((6 * i1) + 5)
+    chkI scalars (8 * i1) 5 5
+    t2 <- rdU scalars ((8 * i1) + 5)
     t3 <- rdU locals 0
     wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
@@ -140,9 +140,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t30 <- rdU pos (3 * i29)
     t31 <- rdU pos ((3 * i29) + 1)
     t32 <- rdU pos ((3 * i29) + 2)
-    chkI scalars (6 * i29) 2 5
-    t33 <- rdU scalars ((6 * i29) + 5)
-    t34 <- rdU scalars ((6 * i29) + 2)
+    chkI scalars (8 * i29) 2 5
+    t33 <- rdU scalars ((8 * i29) + 5)
+    t34 <- rdU scalars ((8 * i29) + 2)
     t35 <- rdU meta 5
     wrU locals 2 0.0
     wrU locals 2 0.0
@@ -184,9 +184,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t59 <- rdU pos (3 * (truncate t57))
                   t60 <- rdU pos ((3 * (truncate t57)) + 1)
                   t61 <- rdU pos ((3 * (truncate t57)) + 2)
-                  chkI scalars (6 * (truncate t57)) 2 5
-                  t62 <- rdU scalars ((6 * (truncate t57)) + 5)
-                  t63 <- rdU scalars ((6 * (truncate t57)) + 2)
+                  chkI scalars (8 * (truncate t57)) 2 5
+                  t62 <- rdU scalars ((8 * (truncate t57)) + 5)
+                  t63 <- rdU scalars ((8 * (truncate t57)) + 2)
                   let !t64 = (t34 + t63)
                   let !t65 = (t30 + (negate t59))
                   let !t66 = (t31 + (negate t60))
@@ -261,9 +261,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t98 <- rdU pos (3 * (truncate t96))
                   t99 <- rdU pos ((3 * (truncate t96)) + 1)
                   t100 <- rdU pos ((3 * (truncate t96)) + 2)
-                  chkI scalars (6 * (truncate t96)) 2 5
-                  t101 <- rdU scalars ((6 * (truncate t96)) + 5)
-                  t102 <- rdU scalars ((6 * (truncate t96)) + 2)
+                  chkI scalars (8 * (truncate t96)) 2 5
+                  t101 <- rdU scalars ((8 * (truncate t96)) + 5)
+                  t102 <- rdU scalars ((8 * (truncate t96)) + 2)
                   let !t103 = (t34 + t102)
                   let !t104 = (s73 + (negate t98))
                   let !t105 = (t31 + (negate t99))
@@ -335,9 +335,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t134 <- rdU pos (3 * (truncate t132))
                   t135 <- rdU pos ((3 * (truncate t132)) + 1)
                   t136 <- rdU pos ((3 * (truncate t132)) + 2)
-                  chkI scalars (6 * (truncate t132)) 2 5
-                  t137 <- rdU scalars ((6 * (truncate t132)) + 5)
-                  t138 <- rdU scalars ((6 * (truncate t132)) + 2)
+                  chkI scalars (8 * (truncate t132)) 2 5
+                  t137 <- rdU scalars ((8 * (truncate t132)) + 5)
+                  t138 <- rdU scalars ((8 * (truncate t132)) + 2)
                   let !t139 = (t34 + t138)
                   let !t140 = (s112 + (negate t134))
                   let !t141 = (t31 + (negate t135))
@@ -412,9 +412,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t173 <- rdU pos (3 * (truncate t171))
                   t174 <- rdU pos ((3 * (truncate t171)) + 1)
                   t175 <- rdU pos ((3 * (truncate t171)) + 2)
-                  chkI scalars (6 * (truncate t171)) 2 5
-                  t176 <- rdU scalars ((6 * (truncate t171)) + 5)
-                  t177 <- rdU scalars ((6 * (truncate t171)) + 2)
+                  chkI scalars (8 * (truncate t171)) 2 5
+                  t176 <- rdU scalars ((8 * (truncate t171)) + 5)
+                  t177 <- rdU scalars ((8 * (truncate t171)) + 2)
                   let !t178 = (t34 + t177)
                   let !t179 = (s148 + (negate t173))
                   let !t180 = (t31 + (negate t174))
@@ -486,9 +486,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t209 <- rdU pos (3 * (truncate t207))
                   t210 <- rdU pos ((3 * (truncate t207)) + 1)
                   t211 <- rdU pos ((3 * (truncate t207)) + 2)
-                  chkI scalars (6 * (truncate t207)) 2 5
-                  t212 <- rdU scalars ((6 * (truncate t207)) + 5)
-                  t213 <- rdU scalars ((6 * (truncate t207)) + 2)
+                  chkI scalars (8 * (truncate t207)) 2 5
+                  t212 <- rdU scalars ((8 * (truncate t207)) + 5)
+                  t213 <- rdU scalars ((8 * (truncate t207)) + 2)
                   let !t214 = (t34 + t213)
                   let !t215 = (t30 + (negate t209))
                   let !t216 = (t31 + (negate t210))
@@ -560,9 +560,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t245 <- rdU pos (3 * (truncate t243))
                   t246 <- rdU pos ((3 * (truncate t243)) + 1)
                   t247 <- rdU pos ((3 * (truncate t243)) + 2)
-                  chkI scalars (6 * (truncate t243)) 2 5
-                  t248 <- rdU scalars ((6 * (truncate t243)) + 5)
-                  t249 <- rdU scalars ((6 * (truncate t243)) + 2)
+                  chkI scalars (8 * (truncate t243)) 2 5
+                  t248 <- rdU scalars ((8 * (truncate t243)) + 5)
+                  t249 <- rdU scalars ((8 * (truncate t243)) + 2)
                   let !t250 = (t34 + t249)
                   let !t251 = (t30 + (negate t245))
                   let !t252 = (t31 + (negate t246))
@@ -637,9 +637,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t284 <- rdU pos (3 * (truncate t282))
                   t285 <- rdU pos ((3 * (truncate t282)) + 1)
                   t286 <- rdU pos ((3 * (truncate t282)) + 2)
-                  chkI scalars (6 * (truncate t282)) 2 5
-                  t287 <- rdU scalars ((6 * (truncate t282)) + 5)
-                  t288 <- rdU scalars ((6 * (truncate t282)) + 2)
+                  chkI scalars (8 * (truncate t282)) 2 5
+                  t287 <- rdU scalars ((8 * (truncate t282)) + 5)
+                  t288 <- rdU scalars ((8 * (truncate t282)) + 2)
                   let !t289 = (t34 + t288)
                   let !t290 = (s259 + (negate t284))
                   let !t291 = (t31 + (negate t285))
@@ -711,9 +711,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t320 <- rdU pos (3 * (truncate t318))
                   t321 <- rdU pos ((3 * (truncate t318)) + 1)
                   t322 <- rdU pos ((3 * (truncate t318)) + 2)
-                  chkI scalars (6 * (truncate t318)) 2 5
-                  t323 <- rdU scalars ((6 * (truncate t318)) + 5)
-                  t324 <- rdU scalars ((6 * (truncate t318)) + 2)
+                  chkI scalars (8 * (truncate t318)) 2 5
+                  t323 <- rdU scalars ((8 * (truncate t318)) + 5)
+                  t324 <- rdU scalars ((8 * (truncate t318)) + 2)
                   let !t325 = (t34 + t324)
                   let !t326 = (s298 + (negate t320))
                   let !t327 = (t31 + (negate t321))
@@ -788,9 +788,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                   t359 <- rdU pos (3 * (truncate t357))
                   t360 <- rdU pos ((3 * (truncate t357)) + 1)
                   t361 <- rdU pos ((3 * (truncate t357)) + 2)
-                  chkI scalars (6 * (truncate t357)) 2 5
-                  t362 <- rdU scalars ((6 * (truncate t357)) + 5)
-                  t363 <- rdU scalars ((6 * (truncate t357)) + 2)
+                  chkI scalars (8 * (truncate t357)) 2 5
+                  t362 <- rdU scalars ((8 * (truncate t357)) + 5)
+                  t363 <- rdU scalars ((8 * (truncate t357)) + 2)
                   let !t364 = (t34 + t363)
                   let !t365 = (s334 + (negate t359))
                   let !t366 = (t31 + (negate t360))
@@ -1022,11 +1022,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s505 = ((t500 * t504) - (t501 * t503))
           let !s506 = ((t501 * t502) - (t499 * t504))
           let !s507 = ((t499 * t503) - (t500 * t502))
-          chkI scalars (6 * i29) 0 0
-          t508 <- rdU scalars (6 * i29)
-          t509 <- rdU scalars ((6 * i29) + 5)
-          t510 <- rdU scalars ((6 * i29) + 2)
-          t511 <- rdU scalars ((6 * i29) + 3)
+          chkI scalars (8 * i29) 0 0
+          t508 <- rdU scalars (8 * i29)
+          t509 <- rdU scalars ((8 * i29) + 5)
+          t510 <- rdU scalars ((8 * i29) + 2)
+          t511 <- rdU scalars ((8 * i29) + 3)
           chkI contacts (30 * (truncate t494)) 0 29
           wrU contacts (30 * (truncate t494)) d29
           wrU contacts ((30 * (truncate t494)) + 1) (-1.0)
@@ -1061,11 +1061,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             let !s521 = ((t516 * t520) - (t517 * t519))
             let !s522 = ((t517 * t518) - (t515 * t520))
             let !s523 = ((t515 * t519) - (t516 * t518))
-            chkI scalars 0 (-6) (-1)
-            t524 <- rdU scalars (-6)
-            t525 <- rdU scalars (-1)
-            t526 <- rdU scalars (-4)
-            t527 <- rdU scalars (-3)
+            chkI scalars 0 (-8) (-3)
+            t524 <- rdU scalars (-8)
+            t525 <- rdU scalars (-3)
+            t526 <- rdU scalars (-6)
+            t527 <- rdU scalars (-5)
             wrU contacts ((30 * (truncate t494)) + 8) (s491 + (negate ((((t515 * s491) + (t516 * s492)) + (t517 * s493)) * t515)))
             wrU contacts ((30 * (truncate t494)) + 9) (s492 + (negate ((((t515 * s491) + (t516 * s492)) + (t517 * s493)) * t516)))
             wrU contacts ((30 * (truncate t494)) + 10) (s493 + (negate ((((t515 * s491) + (t516 * s492)) + (t517 * s493)) * t517)))
@@ -1108,729 +1108,457 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 4
-  chkI params 0 0 9
-  t0 <- rdU params 0
-  t1 <- rdU params 2
-  t2 <- rdU params 3
-  t3 <- rdU params 4
-  t4 <- rdU params 5
-  t5 <- rdU params 6
-  t6 <- rdU params 7
-  t7 <- rdU params 8
-  t8 <- rdU params 9
-  chkI meta 0 0 2
-  t9 <- rdU meta 2
-  loopI 0.0 t9 $ \i10 -> do
-    let !d10 = fromIntegral i10 :: Double
-    chkI contacts (30 * i10) 0 26
-    t11 <- rdU contacts (30 * i10)
-    t12 <- rdU contacts ((30 * i10) + 1)
-    t13 <- rdU contacts ((30 * i10) + 2)
-    t14 <- rdU contacts ((30 * i10) + 3)
-    t15 <- rdU contacts ((30 * i10) + 4)
-    t16 <- rdU contacts ((30 * i10) + 5)
-    t17 <- rdU contacts ((30 * i10) + 6)
-    t18 <- rdU contacts ((30 * i10) + 7)
-    t19 <- rdU contacts ((30 * i10) + 8)
-    t20 <- rdU contacts ((30 * i10) + 9)
-    t21 <- rdU contacts ((30 * i10) + 10)
-    t22 <- rdU contacts ((30 * i10) + 11)
-    t23 <- rdU contacts ((30 * i10) + 12)
-    t24 <- rdU contacts ((30 * i10) + 13)
-    t25 <- rdU contacts ((30 * i10) + 14)
-    t26 <- rdU contacts ((30 * i10) + 15)
-    t27 <- rdU contacts ((30 * i10) + 16)
-    t28 <- rdU contacts ((30 * i10) + 17)
-    t29 <- rdU contacts ((30 * i10) + 18)
-    t30 <- rdU contacts ((30 * i10) + 19)
-    chkI scalars (6 * (truncate t11)) 1 3
-    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 0 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
-      pure ()
-    else do
-      pure ()
-    t35 <- rdU locals 0
-    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
-    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
-    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 1 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
-      pure ()
-    else do
-      pure ()
-    t42 <- rdU locals 1
-    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
-    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
-    wrU contacts ((30 * i10) + 21) s37
-    wrU contacts ((30 * i10) + 22) s44
-    t45 <- rdU contacts ((30 * i10) + 20)
-    t46 <- rdU contacts ((30 * i10) + 26)
-    chkI vel (3 * (truncate t11)) 0 2
-    t47 <- rdU vel (3 * (truncate t11))
-    t48 <- rdU vel ((3 * (truncate t11)) + 1)
-    t49 <- rdU vel ((3 * (truncate t11)) + 2)
-    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU locals 2 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI vel (3 * (truncate t12)) 0 2
-      t51 <- rdU vel (3 * (truncate t12))
-      t52 <- rdU vel ((3 * (truncate t12)) + 1)
-      t53 <- rdU vel ((3 * (truncate t12)) + 2)
-      chkI scalars (6 * (truncate t12)) 1 1
-      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
-      pure ()
-    else do
-      pure ()
-    t55 <- rdU locals 2
-    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
-    let !t57 = (t45 - t5)
-    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
-    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
-    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
-    wrU locals 3 0.0
-    wrU locals 4 0.0
-    chkI bodyPrev (2 * (truncate t13)) 0 1
-    t61 <- rdU bodyPrev (2 * (truncate t13))
-    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n63 = (t61 + t62)
-    loopI t61 n63 $ \i64 -> do
-      let !d64 = fromIntegral i64 :: Double
-      chkI prev (4 * i64) 1 1
-      t65 <- rdU prev ((4 * i64) + 1)
-      if (0.5 - (abs (t65 - t14))) > 0 then do
-        chkI prev (4 * i64) 2 3
-        t66 <- rdU prev ((4 * i64) + 2)
-        wrU locals 3 t66
-        t67 <- rdU prev ((4 * i64) + 3)
-        wrU locals 4 t67
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t68 <- rdU locals 3
-    t69 <- rdU locals 4
-    wrU contacts ((30 * i10) + 24) (t7 * t68)
-    wrU contacts ((30 * i10) + 25) (t7 * t69)
-    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t72 <- rdU vel (3 * (truncate t11))
-    t73 <- rdU vel ((3 * (truncate t11)) + 1)
-    t74 <- rdU vel ((3 * (truncate t11)) + 2)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t78 <- rdU vel (3 * (truncate t12))
-      t79 <- rdU vel ((3 * (truncate t12)) + 1)
-      t80 <- rdU vel ((3 * (truncate t12)) + 2)
-      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
-      pure ()
-    else do
-      pure ()
-    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t84 <- rdU vel (3 * (truncate t11))
-    t85 <- rdU vel ((3 * (truncate t11)) + 1)
-    t86 <- rdU vel ((3 * (truncate t11)) + 2)
-    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t90 <- rdU vel (3 * (truncate t12))
-      t91 <- rdU vel ((3 * (truncate t12)) + 1)
-      t92 <- rdU vel ((3 * (truncate t12)) + 2)
-      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
-      pure ()
-    else do
-      pure ()
-    pure ()
+  chkI params 0 2 2
+  t0 <- rdU params 2
+  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
-  t94 <- rdU mouse 0
-  if t94 > 0 then do
+  t1 <- rdU mouse 0
+  if t1 > 0 then do
     chkI mouse 0 1 1
-    t95 <- rdU mouse 1
-    chkI scalars (6 * (truncate t95)) 2 2
-    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
-    if t96 > 0 then do
-      chkI scalars (6 * (truncate t95)) 0 5
-      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t98 <- rdU params 0
-      chkI pos (3 * (truncate t95)) 0 2
-      t99 <- rdU pos (3 * (truncate t95))
-      t100 <- rdU pos ((3 * (truncate t95)) + 1)
-      t101 <- rdU pos ((3 * (truncate t95)) + 2)
-      chkI normal (3 * (truncate t95)) 0 2
-      t102 <- rdU normal (3 * (truncate t95))
-      t103 <- rdU normal ((3 * (truncate t95)) + 1)
-      t104 <- rdU normal ((3 * (truncate t95)) + 2)
-      chkI axis (3 * (truncate t95)) 0 2
-      t105 <- rdU axis (3 * (truncate t95))
-      t106 <- rdU axis ((3 * (truncate t95)) + 1)
-      t107 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s108 = ((t103 * t107) - (t104 * t106))
-      let !s109 = ((t104 * t105) - (t102 * t107))
-      let !s110 = ((t102 * t106) - (t103 * t105))
-      t111 <- rdU scalars (6 * (truncate t95))
-      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t115 <- rdU pos (3 * (truncate t95))
-      t116 <- rdU pos ((3 * (truncate t95)) + 1)
-      t117 <- rdU pos ((3 * (truncate t95)) + 2)
-      t118 <- rdU normal (3 * (truncate t95))
-      t119 <- rdU normal ((3 * (truncate t95)) + 1)
-      t120 <- rdU normal ((3 * (truncate t95)) + 2)
-      t121 <- rdU axis (3 * (truncate t95))
-      t122 <- rdU axis ((3 * (truncate t95)) + 1)
-      t123 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s124 = ((t119 * t123) - (t120 * t122))
-      let !s125 = ((t120 * t121) - (t118 * t123))
-      let !s126 = ((t118 * t122) - (t119 * t121))
-      t127 <- rdU scalars (6 * (truncate t95))
-      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
+    t2 <- rdU mouse 1
+    chkI scalars (8 * (truncate t2)) 2 2
+    t3 <- rdU scalars ((8 * (truncate t2)) + 2)
+    if t3 > 0 then do
+      chkI scalars (8 * (truncate t2)) 0 5
+      t4 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI params 0 0 0
+      t5 <- rdU params 0
+      chkI pos (3 * (truncate t2)) 0 2
+      t6 <- rdU pos (3 * (truncate t2))
+      t7 <- rdU pos ((3 * (truncate t2)) + 1)
+      t8 <- rdU pos ((3 * (truncate t2)) + 2)
+      chkI normal (3 * (truncate t2)) 0 2
+      t9 <- rdU normal (3 * (truncate t2))
+      t10 <- rdU normal ((3 * (truncate t2)) + 1)
+      t11 <- rdU normal ((3 * (truncate t2)) + 2)
+      chkI axis (3 * (truncate t2)) 0 2
+      t12 <- rdU axis (3 * (truncate t2))
+      t13 <- rdU axis ((3 * (truncate t2)) + 1)
+      t14 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s15 = ((t10 * t14) - (t11 * t13))
+      let !s16 = ((t11 * t12) - (t9 * t14))
+      let !s17 = ((t9 * t13) - (t10 * t12))
+      t18 <- rdU scalars (8 * (truncate t2))
+      t19 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t20 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t21 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t22 <- rdU pos (3 * (truncate t2))
+      t23 <- rdU pos ((3 * (truncate t2)) + 1)
+      t24 <- rdU pos ((3 * (truncate t2)) + 2)
+      t25 <- rdU normal (3 * (truncate t2))
+      t26 <- rdU normal ((3 * (truncate t2)) + 1)
+      t27 <- rdU normal ((3 * (truncate t2)) + 2)
+      t28 <- rdU axis (3 * (truncate t2))
+      t29 <- rdU axis ((3 * (truncate t2)) + 1)
+      t30 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s31 = ((t26 * t30) - (t27 * t29))
+      let !s32 = ((t27 * t28) - (t25 * t30))
+      let !s33 = ((t25 * t29) - (t26 * t28))
+      t34 <- rdU scalars (8 * (truncate t2))
+      t35 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t36 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t37 <- rdU scalars ((8 * (truncate t2)) + 3)
       chkI mouse 0 2 11
-      t131 <- rdU mouse 2
-      t132 <- rdU mouse 3
-      let !t133 = (t131 / 4.0)
-      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
-      let !t135 = (t127 + t132)
-      let !t136 = (cos t135)
-      let !t137 = (sin t135)
-      let !t138 = (1.0 - t134)
-      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
-      let !t140 = (if (if ((abs t139) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t139 + (negate t139)) else t139)
-      let !t141 = (if (if ((abs t140) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t140 + (negate t140)) else t140)
-      let !s142 = ((t134 * (t115 + (t133 * ((t136 * t121) + (t137 * s124))))) + (t138 * t115))
-      let !s143 = ((t134 * (if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141)) + (t138 * t116))
-      let !s144 = ((t134 * (t117 + (t133 * ((t136 * t123) + (t137 * s126))))) + (t138 * t117))
-      let !t145 = ((t136 * t121) + (t137 * s124))
-      let !t146 = ((t136 * t122) + (t137 * s125))
-      let !t147 = ((t136 * t123) + (t137 * s126))
-      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
-      let !t149 = (if (abs t133) > 0 then (recip t133) else 0.0)
-      let !t150 = (t149 * ((t115 + (t133 * t145)) + (negate t115)))
-      let !t151 = (t149 * ((if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141) + (negate t116)))
-      let !t152 = (t151 + (negate t151))
-      let !t153 = (t149 * ((t117 + (t133 * t147)) + (negate t117)))
-      let !t154 = (sqrt (((t150 * t150) + (t152 * t152)) + (t153 * t153)))
-      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
-      let !s156 = ((t134 * (t148 * (t155 * t150))) + (t138 * t145))
-      let !s157 = ((t134 * (t148 * (t155 * t152))) + (t138 * t146))
-      let !s158 = ((t134 * (t148 * (t155 * t153))) + (t138 * t147))
-      let !t159 = (s143 + (t133 * s157))
-      let !t160 = (if (if ((abs t159) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t159 + (negate t159)) else t159)
-      let !t161 = (if (if ((abs t160) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t160 + (negate t160)) else t160)
-      let !s162 = ((t134 * (s142 + (t133 * s156))) + (t138 * s142))
-      let !s163 = ((t134 * (if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161)) + (t138 * s143))
-      let !s164 = ((t134 * (s144 + (t133 * s158))) + (t138 * s144))
-      let !t165 = (sqrt (((s156 * s156) + (s157 * s157)) + (s158 * s158)))
-      let !t166 = (t149 * ((s142 + (t133 * s156)) + (negate s142)))
-      let !t167 = (t149 * ((if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161) + (negate s143)))
-      let !t168 = (t167 + (negate t167))
-      let !t169 = (t149 * ((s144 + (t133 * s158)) + (negate s144)))
-      let !t170 = (sqrt (((t166 * t166) + (t168 * t168)) + (t169 * t169)))
-      let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
-      let !s172 = ((t134 * (t165 * (t171 * t166))) + (t138 * s156))
-      let !s173 = ((t134 * (t165 * (t171 * t168))) + (t138 * s157))
-      let !s174 = ((t134 * (t165 * (t171 * t169))) + (t138 * s158))
-      let !t175 = (s163 + (t133 * s173))
-      let !t176 = (if (if ((abs t175) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t175 + (negate t175)) else t175)
-      let !t177 = (if (if ((abs t176) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t176 + (negate t176)) else t176)
-      let !s178 = ((t134 * (s162 + (t133 * s172))) + (t138 * s162))
-      let !s179 = ((t134 * (if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177)) + (t138 * s163))
-      let !s180 = ((t134 * (s164 + (t133 * s174))) + (t138 * s164))
-      let !t181 = (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))
-      let !t182 = (t149 * ((s162 + (t133 * s172)) + (negate s162)))
-      let !t183 = (t149 * ((if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177) + (negate s163)))
-      let !t184 = (t183 + (negate t183))
-      let !t185 = (t149 * ((s164 + (t133 * s174)) + (negate s164)))
-      let !t186 = (sqrt (((t182 * t182) + (t184 * t184)) + (t185 * t185)))
-      let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
-      let !s188 = ((t134 * (t181 * (t187 * t182))) + (t138 * s172))
-      let !s189 = ((t134 * (t181 * (t187 * t184))) + (t138 * s173))
-      let !s190 = ((t134 * (t181 * (t187 * t185))) + (t138 * s174))
-      let !t191 = (s179 + (t133 * s189))
-      let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
-      let !t193 = (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)
-      let !s194 = ((t134 * (s178 + (t133 * s188))) + (t138 * s178))
-      let !s195 = ((t134 * (if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193)) + (t138 * s179))
-      let !s196 = ((t134 * (s180 + (t133 * s190))) + (t138 * s180))
-      let !t197 = (sqrt (((s188 * s188) + (s189 * s189)) + (s190 * s190)))
-      let !t198 = (t149 * ((s178 + (t133 * s188)) + (negate s178)))
-      let !t199 = (t149 * ((if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193) + (negate s179)))
-      let !t200 = (t199 + (negate t199))
-      let !t201 = (t149 * ((s180 + (t133 * s190)) + (negate s180)))
-      let !t202 = (sqrt (((t198 * t198) + (t200 * t200)) + (t201 * t201)))
-      let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
-      let !s204 = ((t134 * (t197 * (t203 * t198))) + (t138 * s188))
-      let !s205 = ((t134 * (t197 * (t203 * t200))) + (t138 * s189))
-      let !s206 = ((t134 * (t197 * (t203 * t201))) + (t138 * s190))
-      t207 <- rdU mouse 4
-      t208 <- rdU mouse 5
-      t209 <- rdU mouse 6
-      let !t210 = (t207 - ((floorF ((t207 + 1.0) / 2.0)) * 2.0))
-      let !t211 = (negate s194)
-      let !t212 = (t210 + t211)
-      let !t213 = (t208 + (negate s195))
-      let !t214 = (t213 * t213)
-      let !t215 = ((t212 * t212) + t214)
-      let !t216 = (t209 - ((floorF ((t209 + 1.0) / 2.0)) * 2.0))
-      let !t217 = (negate s196)
-      let !t218 = (t216 + t217)
-      let !t219 = (t218 * t218)
-      let !t220 = (t215 + t219)
-      let !t221 = (t210 + (-2.0))
-      let !t222 = (t221 + t211)
-      let !t223 = ((t222 * t222) + t214)
-      let !t224 = (t216 + (-2.0))
-      let !t225 = (t224 + t217)
-      let !t226 = (t225 * t225)
-      let !t227 = (t223 + t226)
-      let !t228 = (t220 - t227)
-      let !t229 = (if t228 > 0 then t227 else t220)
-      let !t230 = (t223 + t219)
-      let !t231 = (t229 - t230)
-      let !t232 = (if t231 > 0 then t230 else t229)
-      let !t233 = (t216 + 2.0)
-      let !t234 = (t233 + t217)
-      let !t235 = (t234 * t234)
-      let !t236 = (t223 + t235)
-      let !t237 = (t232 - t236)
-      let !t238 = (if t237 > 0 then t236 else t232)
-      let !t239 = (t215 + t226)
-      let !t240 = (t238 - t239)
-      let !t241 = (if t240 > 0 then t239 else t238)
-      let !t242 = (t215 + t235)
-      let !t243 = (t241 - t242)
-      let !t244 = (if t243 > 0 then t242 else t241)
-      let !t245 = (t210 + 2.0)
-      let !t246 = (t245 + t211)
-      let !t247 = ((t246 * t246) + t214)
-      let !t248 = (t247 + t226)
-      let !t249 = (t244 - t248)
-      let !t250 = (if t249 > 0 then t248 else t244)
-      let !t251 = (t247 + t219)
-      let !t252 = (t250 - t251)
-      let !t253 = ((if t252 > 0 then t251 else t250) - (t247 + t235))
-      let !s254 = (if t253 > 0 then t245 else (if t252 > 0 then t245 else (if t249 > 0 then t245 else (if t243 > 0 then t210 else (if t240 > 0 then t210 else (if t237 > 0 then t221 else (if t231 > 0 then t221 else (if t228 > 0 then t221 else t210))))))))
-      let !s255 = (if t253 > 0 then t233 else (if t252 > 0 then t216 else (if t249 > 0 then t224 else (if t243 > 0 then t233 else (if t240 > 0 then t224 else (if t237 > 0 then t233 else (if t231 > 0 then t216 else (if t228 > 0 then t224 else t216))))))))
-      t256 <- rdU mouse 7
-      t257 <- rdU mouse 8
-      t258 <- rdU mouse 9
-      let !t259 = (recip t96)
-      let !t260 = (6.283185307179586 * t256)
-      let !s261 = (recip (t98 * ((((2.0 * t259) * t257) * t260) + (t98 * ((t259 * t260) * t260)))))
-      let !s262 = ((t98 * ((t259 * t260) * t260)) * s261)
-      let !s263 = (s194 + (negate t99))
-      let !s264 = (s195 + (negate t100))
-      let !s265 = (s196 + (negate t101))
-      let !s266 = (s194 + (negate s254))
-      let !s267 = (s195 + (negate t208))
-      let !s268 = (s196 + (negate s255))
-      t269 <- rdU mouse 10
-      t270 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t271 <- rdU scalars ((6 * (truncate t95)) + 3)
-      chkI vel (3 * (truncate t95)) 0 2
-      t272 <- rdU vel (3 * (truncate t95))
-      t273 <- rdU vel ((3 * (truncate t95)) + 1)
-      t274 <- rdU vel ((3 * (truncate t95)) + 2)
-      t275 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t272 + ((t270 * t269) * t105))
-      wrU vel ((3 * (truncate t95)) + 1) (t273 + ((t270 * t269) * t106))
-      wrU vel ((3 * (truncate t95)) + 2) (t274 + ((t270 * t269) * t107))
-      wrU scalars ((6 * (truncate t95)) + 1) (t275 + ((t271 * t269) * (((((s264 * t107) - (s265 * t106)) * t102) + (((s265 * t105) - (s263 * t107)) * t103)) + (((s263 * t106) - (s264 * t105)) * t104))))
-      t276 <- rdU mouse 11
-      t277 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t278 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t279 <- rdU vel (3 * (truncate t95))
-      t280 <- rdU vel ((3 * (truncate t95)) + 1)
-      t281 <- rdU vel ((3 * (truncate t95)) + 2)
-      t282 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t279 + ((t277 * t276) * s108))
-      wrU vel ((3 * (truncate t95)) + 1) (t280 + ((t277 * t276) * s109))
-      wrU vel ((3 * (truncate t95)) + 2) (t281 + ((t277 * t276) * s110))
-      wrU scalars ((6 * (truncate t95)) + 1) (t282 + ((t278 * t276) * (((((s264 * s110) - (s265 * s109)) * t102) + (((s265 * s108) - (s263 * s110)) * t103)) + (((s263 * s109) - (s264 * s108)) * t104))))
+      t38 <- rdU mouse 2
+      t39 <- rdU mouse 3
+      let !t40 = (t38 / 4.0)
+      let !t41 = (if (abs t40) > 0 then 1.0 else 0.0)
+      let !t42 = (t34 + t39)
+      let !t43 = (cos t42)
+      let !t44 = (sin t42)
+      let !t45 = (1.0 - t41)
+      let !t46 = (t23 + (t40 * ((t43 * t29) + (t44 * s32))))
+      let !t47 = (if (if ((abs t46) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t46 + (negate t46)) else t46)
+      let !t48 = (if (if ((abs t47) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t47 + (negate t47)) else t47)
+      let !s49 = ((t41 * (t22 + (t40 * ((t43 * t28) + (t44 * s31))))) + (t45 * t22))
+      let !s50 = ((t41 * (if (if ((abs t48) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t48 + (negate t48)) else t48)) + (t45 * t23))
+      let !s51 = ((t41 * (t24 + (t40 * ((t43 * t30) + (t44 * s33))))) + (t45 * t24))
+      let !t52 = ((t43 * t28) + (t44 * s31))
+      let !t53 = ((t43 * t29) + (t44 * s32))
+      let !t54 = ((t43 * t30) + (t44 * s33))
+      let !t55 = (sqrt (((t52 * t52) + (t53 * t53)) + (t54 * t54)))
+      let !t56 = (if (abs t40) > 0 then (recip t40) else 0.0)
+      let !t57 = (t56 * ((t22 + (t40 * t52)) + (negate t22)))
+      let !t58 = (t56 * ((if (if ((abs t48) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t48 + (negate t48)) else t48) + (negate t23)))
+      let !t59 = (t58 + (negate t58))
+      let !t60 = (t56 * ((t24 + (t40 * t54)) + (negate t24)))
+      let !t61 = (sqrt (((t57 * t57) + (t59 * t59)) + (t60 * t60)))
+      let !t62 = (if t61 > 0 then (recip (if (t61 - 1.0e-300) > 0 then t61 else 1.0e-300)) else 0.0)
+      let !s63 = ((t41 * (t55 * (t62 * t57))) + (t45 * t52))
+      let !s64 = ((t41 * (t55 * (t62 * t59))) + (t45 * t53))
+      let !s65 = ((t41 * (t55 * (t62 * t60))) + (t45 * t54))
+      let !t66 = (s50 + (t40 * s64))
+      let !t67 = (if (if ((abs t66) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t66 + (negate t66)) else t66)
+      let !t68 = (if (if ((abs t67) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t67 + (negate t67)) else t67)
+      let !s69 = ((t41 * (s49 + (t40 * s63))) + (t45 * s49))
+      let !s70 = ((t41 * (if (if ((abs t68) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t68 + (negate t68)) else t68)) + (t45 * s50))
+      let !s71 = ((t41 * (s51 + (t40 * s65))) + (t45 * s51))
+      let !t72 = (sqrt (((s63 * s63) + (s64 * s64)) + (s65 * s65)))
+      let !t73 = (t56 * ((s49 + (t40 * s63)) + (negate s49)))
+      let !t74 = (t56 * ((if (if ((abs t68) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t68 + (negate t68)) else t68) + (negate s50)))
+      let !t75 = (t74 + (negate t74))
+      let !t76 = (t56 * ((s51 + (t40 * s65)) + (negate s51)))
+      let !t77 = (sqrt (((t73 * t73) + (t75 * t75)) + (t76 * t76)))
+      let !t78 = (if t77 > 0 then (recip (if (t77 - 1.0e-300) > 0 then t77 else 1.0e-300)) else 0.0)
+      let !s79 = ((t41 * (t72 * (t78 * t73))) + (t45 * s63))
+      let !s80 = ((t41 * (t72 * (t78 * t75))) + (t45 * s64))
+      let !s81 = ((t41 * (t72 * (t78 * t76))) + (t45 * s65))
+      let !t82 = (s70 + (t40 * s80))
+      let !t83 = (if (if ((abs t82) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t82 + (negate t82)) else t82)
+      let !t84 = (if (if ((abs t83) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t83 + (negate t83)) else t83)
+      let !s85 = ((t41 * (s69 + (t40 * s79))) + (t45 * s69))
+      let !s86 = ((t41 * (if (if ((abs t84) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t84 + (negate t84)) else t84)) + (t45 * s70))
+      let !s87 = ((t41 * (s71 + (t40 * s81))) + (t45 * s71))
+      let !t88 = (sqrt (((s79 * s79) + (s80 * s80)) + (s81 * s81)))
+      let !t89 = (t56 * ((s69 + (t40 * s79)) + (negate s69)))
+      let !t90 = (t56 * ((if (if ((abs t84) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t84 + (negate t84)) else t84) + (negate s70)))
+      let !t91 = (t90 + (negate t90))
+      let !t92 = (t56 * ((s71 + (t40 * s81)) + (negate s71)))
+      let !t93 = (sqrt (((t89 * t89) + (t91 * t91)) + (t92 * t92)))
+      let !t94 = (if t93 > 0 then (recip (if (t93 - 1.0e-300) > 0 then t93 else 1.0e-300)) else 0.0)
+      let !s95 = ((t41 * (t88 * (t94 * t89))) + (t45 * s79))
+      let !s96 = ((t41 * (t88 * (t94 * t91))) + (t45 * s80))
+      let !s97 = ((t41 * (t88 * (t94 * t92))) + (t45 * s81))
+      let !t98 = (s86 + (t40 * s96))
+      let !t99 = (if (if ((abs t98) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t98 + (negate t98)) else t98)
+      let !t100 = (if (if ((abs t99) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t99 + (negate t99)) else t99)
+      let !s101 = ((t41 * (s85 + (t40 * s95))) + (t45 * s85))
+      let !s102 = ((t41 * (if (if ((abs t100) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t100 + (negate t100)) else t100)) + (t45 * s86))
+      let !s103 = ((t41 * (s87 + (t40 * s97))) + (t45 * s87))
+      let !t104 = (sqrt (((s95 * s95) + (s96 * s96)) + (s97 * s97)))
+      let !t105 = (t56 * ((s85 + (t40 * s95)) + (negate s85)))
+      let !t106 = (t56 * ((if (if ((abs t100) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t100 + (negate t100)) else t100) + (negate s86)))
+      let !t107 = (t106 + (negate t106))
+      let !t108 = (t56 * ((s87 + (t40 * s97)) + (negate s87)))
+      let !t109 = (sqrt (((t105 * t105) + (t107 * t107)) + (t108 * t108)))
+      let !t110 = (if t109 > 0 then (recip (if (t109 - 1.0e-300) > 0 then t109 else 1.0e-300)) else 0.0)
+      let !s111 = ((t41 * (t104 * (t110 * t105))) + (t45 * s95))
+      let !s112 = ((t41 * (t104 * (t110 * t107))) + (t45 * s96))
+      let !s113 = ((t41 * (t104 * (t110 * t108))) + (t45 * s97))
+      t114 <- rdU mouse 4
+      t115 <- rdU mouse 5
+      t116 <- rdU mouse 6
+      let !t117 = (t114 - ((floorF ((t114 + 1.0) / 2.0)) * 2.0))
+      let !t118 = (negate s101)
+      let !t119 = (t117 + t118)
+      let !t120 = (t115 + (negate s102))
+      let !t121 = (t120 * t120)
+      let !t122 = ((t119 * t119) + t121)
+      let !t123 = (t116 - ((floorF ((t116 + 1.0) / 2.0)) * 2.0))
+      let !t124 = (negate s103)
+      let !t125 = (t123 + t124)
+      let !t126 = (t125 * t125)
+      let !t127 = (t122 + t126)
+      let !t128 = (t117 + (-2.0))
+      let !t129 = (t128 + t118)
+      let !t130 = ((t129 * t129) + t121)
+      let !t131 = (t123 + (-2.0))
+      let !t132 = (t131 + t124)
+      let !t133 = (t132 * t132)
+      let !t134 = (t130 + t133)
+      let !t135 = (t127 - t134)
+      let !t136 = (if t135 > 0 then t134 else t127)
+      let !t137 = (t130 + t126)
+      let !t138 = (t136 - t137)
+      let !t139 = (if t138 > 0 then t137 else t136)
+      let !t140 = (t123 + 2.0)
+      let !t141 = (t140 + t124)
+      let !t142 = (t141 * t141)
+      let !t143 = (t130 + t142)
+      let !t144 = (t139 - t143)
+      let !t145 = (if t144 > 0 then t143 else t139)
+      let !t146 = (t122 + t133)
+      let !t147 = (t145 - t146)
+      let !t148 = (if t147 > 0 then t146 else t145)
+      let !t149 = (t122 + t142)
+      let !t150 = (t148 - t149)
+      let !t151 = (if t150 > 0 then t149 else t148)
+      let !t152 = (t117 + 2.0)
+      let !t153 = (t152 + t118)
+      let !t154 = ((t153 * t153) + t121)
+      let !t155 = (t154 + t133)
+      let !t156 = (t151 - t155)
+      let !t157 = (if t156 > 0 then t155 else t151)
+      let !t158 = (t154 + t126)
+      let !t159 = (t157 - t158)
+      let !t160 = ((if t159 > 0 then t158 else t157) - (t154 + t142))
+      let !s161 = (if t160 > 0 then t152 else (if t159 > 0 then t152 else (if t156 > 0 then t152 else (if t150 > 0 then t117 else (if t147 > 0 then t117 else (if t144 > 0 then t128 else (if t138 > 0 then t128 else (if t135 > 0 then t128 else t117))))))))
+      let !s162 = (if t160 > 0 then t140 else (if t159 > 0 then t123 else (if t156 > 0 then t131 else (if t150 > 0 then t140 else (if t147 > 0 then t131 else (if t144 > 0 then t140 else (if t138 > 0 then t123 else (if t135 > 0 then t131 else t123))))))))
+      t163 <- rdU mouse 7
+      t164 <- rdU mouse 8
+      t165 <- rdU mouse 9
+      let !t166 = (recip t3)
+      let !t167 = (6.283185307179586 * t163)
+      let !s168 = (recip (t5 * ((((2.0 * t166) * t164) * t167) + (t5 * ((t166 * t167) * t167)))))
+      let !s169 = ((t5 * ((t166 * t167) * t167)) * s168)
+      let !s170 = (s101 + (negate t6))
+      let !s171 = (s102 + (negate t7))
+      let !s172 = (s103 + (negate t8))
+      let !s173 = (s101 + (negate s161))
+      let !s174 = (s102 + (negate t115))
+      let !s175 = (s103 + (negate s162))
+      t176 <- rdU mouse 10
+      t177 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t178 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI vel (3 * (truncate t2)) 0 2
+      t179 <- rdU vel (3 * (truncate t2))
+      t180 <- rdU vel ((3 * (truncate t2)) + 1)
+      t181 <- rdU vel ((3 * (truncate t2)) + 2)
+      t182 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t179 + ((t177 * t176) * t12))
+      wrU vel ((3 * (truncate t2)) + 1) (t180 + ((t177 * t176) * t13))
+      wrU vel ((3 * (truncate t2)) + 2) (t181 + ((t177 * t176) * t14))
+      wrU scalars ((8 * (truncate t2)) + 1) (t182 + ((t178 * t176) * (((((s171 * t14) - (s172 * t13)) * t9) + (((s172 * t12) - (s170 * t14)) * t10)) + (((s170 * t13) - (s171 * t12)) * t11))))
+      t183 <- rdU mouse 11
+      t184 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t185 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t186 <- rdU vel (3 * (truncate t2))
+      t187 <- rdU vel ((3 * (truncate t2)) + 1)
+      t188 <- rdU vel ((3 * (truncate t2)) + 2)
+      t189 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t186 + ((t184 * t183) * s15))
+      wrU vel ((3 * (truncate t2)) + 1) (t187 + ((t184 * t183) * s16))
+      wrU vel ((3 * (truncate t2)) + 2) (t188 + ((t184 * t183) * s17))
+      wrU scalars ((8 * (truncate t2)) + 1) (t189 + ((t185 * t183) * (((((s171 * s17) - (s172 * s16)) * t9) + (((s172 * s15) - (s170 * s17)) * t10)) + (((s170 * s16) - (s171 * s15)) * t11))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i283 -> do
-    let !d283 = fromIntegral i283 :: Double
-    loopI 0.0 t9 $ \i284 -> do
-      let !d284 = fromIntegral i284 :: Double
-      chkI contacts (30 * i284) 0 26
-      t285 <- rdU contacts (30 * i284)
-      t286 <- rdU contacts ((30 * i284) + 1)
-      t287 <- rdU contacts ((30 * i284) + 12)
-      t288 <- rdU contacts ((30 * i284) + 13)
-      t289 <- rdU contacts ((30 * i284) + 14)
-      t290 <- rdU contacts ((30 * i284) + 15)
-      t291 <- rdU contacts ((30 * i284) + 16)
-      t292 <- rdU contacts ((30 * i284) + 17)
-      t293 <- rdU contacts ((30 * i284) + 18)
-      t294 <- rdU contacts ((30 * i284) + 19)
-      t295 <- rdU contacts ((30 * i284) + 4)
-      t296 <- rdU contacts ((30 * i284) + 5)
-      t297 <- rdU contacts ((30 * i284) + 6)
-      t298 <- rdU contacts ((30 * i284) + 7)
-      t299 <- rdU contacts ((30 * i284) + 8)
-      t300 <- rdU contacts ((30 * i284) + 9)
-      t301 <- rdU contacts ((30 * i284) + 10)
-      t302 <- rdU contacts ((30 * i284) + 11)
-      t303 <- rdU contacts ((30 * i284) + 26)
-      t304 <- rdU contacts ((30 * i284) + 24)
-      t305 <- rdU contacts ((30 * i284) + 25)
-      t306 <- rdU contacts ((30 * i284) + 22)
-      t307 <- rdU contacts ((30 * i284) + 21)
-      t308 <- rdU contacts ((30 * i284) + 23)
-      let !s309 = (if (negate t286) > 0 then 0.0 else t286)
-      let !s310 = (t286 + 0.5)
-      let !s311 = (if (0.5 - (abs (t285 - t286))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t285)) 1 3
-      t312 <- rdU scalars ((6 * (truncate t285)) + 2)
-      t313 <- rdU scalars ((6 * (truncate t285)) + 3)
-      chkI scalars (6 * (truncate s309)) 1 3
-      t314 <- rdU scalars ((6 * (truncate s309)) + 2)
-      t315 <- rdU scalars ((6 * (truncate s309)) + 3)
-      chkI vel (3 * (truncate t285)) 0 2
-      t316 <- rdU vel (3 * (truncate t285))
-      t317 <- rdU vel ((3 * (truncate t285)) + 1)
-      t318 <- rdU vel ((3 * (truncate t285)) + 2)
-      t319 <- rdU scalars ((6 * (truncate t285)) + 1)
-      chkI vel (3 * (truncate s309)) 0 2
-      t320 <- rdU vel (3 * (truncate s309))
-      t321 <- rdU vel ((3 * (truncate s309)) + 1)
-      t322 <- rdU vel ((3 * (truncate s309)) + 2)
-      t323 <- rdU scalars ((6 * (truncate s309)) + 1)
-      let !s324 = (((((t287 * t316) + (t288 * t317)) + (t289 * t318)) + (t290 * t319)) - (if s310 > 0 then ((((t291 * t320) + (t292 * t321)) + (t293 * t322)) + (t294 * t323)) else 0.0))
-      let !t325 = (t2 * t304)
-      let !t326 = (negate t325)
-      let !t327 = (t305 - ((t303 * s324) * t306))
-      let !t328 = (if (t327 - t325) > 0 then t325 else t327)
-      let !t329 = (if (t326 - t328) > 0 then t326 else t328)
-      let !s330 = (if (1.0 - (abs (t329 - t329))) > 0 then t329 else 0.0)
-      wrU contacts ((30 * i284) + 25) s330
-      let !t331 = (t312 * (s330 - t305))
-      let !s332 = (t331 * t287)
-      let !s333 = (t331 * t288)
-      let !s334 = (t331 * t289)
-      let !s335 = ((t313 * (s330 - t305)) * t290)
-      let !t336 = (t314 * (negate (s330 - t305)))
-      let !s337 = (t336 * t291)
-      let !s338 = (t336 * t292)
-      let !s339 = (t336 * t293)
-      let !s340 = ((t315 * (negate (s330 - t305))) * t294)
-      let !s341 = ((t316 + s332) + (s311 * s337))
-      let !s342 = ((t317 + s333) + (s311 * s338))
-      let !s343 = ((t318 + s334) + (s311 * s339))
-      let !s344 = ((t319 + s335) + (s311 * s340))
-      let !s345 = ((t320 + s337) + (s311 * s332))
-      let !s346 = ((t321 + s338) + (s311 * s333))
-      let !s347 = ((t322 + s339) + (s311 * s334))
-      let !s348 = ((t323 + s340) + (s311 * s335))
-      let !s349 = (((((t295 * s341) + (t296 * s342)) + (t297 * s343)) + (t298 * s344)) - (if s310 > 0 then ((((t299 * s345) + (t300 * s346)) + (t301 * s347)) + (t302 * s348)) else 0.0))
-      let !t350 = (t304 + ((t303 * (t308 - s349)) * t307))
-      let !t351 = (if (negate t350) > 0 then 0.0 else t350)
-      let !s352 = (if (1.0 - (abs (t351 - t351))) > 0 then t351 else 0.0)
-      wrU contacts ((30 * i284) + 24) s352
-      let !t353 = (t312 * (s352 - t304))
-      let !s354 = (t353 * t295)
-      let !s355 = (t353 * t296)
-      let !s356 = (t353 * t297)
-      let !s357 = ((t313 * (s352 - t304)) * t298)
-      let !t358 = (t314 * (negate (s352 - t304)))
-      let !s359 = (t358 * t299)
-      let !s360 = (t358 * t300)
-      let !s361 = (t358 * t301)
-      let !s362 = ((t315 * (negate (s352 - t304))) * t302)
-      let !s363 = ((s341 + s354) + (s311 * s359))
-      let !s364 = ((s342 + s355) + (s311 * s360))
-      let !s365 = ((s343 + s356) + (s311 * s361))
-      let !s366 = ((s344 + s357) + (s311 * s362))
-      let !s367 = ((s345 + s359) + (s311 * s354))
-      let !s368 = ((s346 + s360) + (s311 * s355))
-      let !s369 = ((s347 + s361) + (s311 * s356))
-      let !s370 = ((s348 + s362) + (s311 * s357))
-      wrU vel (3 * (truncate t285)) s363
-      wrU vel ((3 * (truncate t285)) + 1) s364
-      wrU vel ((3 * (truncate t285)) + 2) s365
-      wrU scalars ((6 * (truncate t285)) + 1) s366
-      if s310 > 0 then do
-        wrU vel (3 * (truncate s309)) s367
-        wrU vel ((3 * (truncate s309)) + 1) s368
-        wrU vel ((3 * (truncate s309)) + 2) s369
-        wrU scalars ((6 * (truncate s309)) + 1) s370
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t371 <- rdU mouse 0
-    if t371 > 0 then do
+  loopI 0.0 t0 $ \i190 -> do
+    let !d190 = fromIntegral i190 :: Double
+    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    t191 <- rdU mouse 0
+    if t191 > 0 then do
       chkI mouse 0 1 1
-      t372 <- rdU mouse 1
-      chkI scalars (6 * (truncate t372)) 2 2
-      t373 <- rdU scalars ((6 * (truncate t372)) + 2)
-      if t373 > 0 then do
-        chkI scalars (6 * (truncate t372)) 0 5
-        t374 <- rdU scalars ((6 * (truncate t372)) + 3)
-        t375 <- rdU params 0
-        chkI pos (3 * (truncate t372)) 0 2
-        t376 <- rdU pos (3 * (truncate t372))
-        t377 <- rdU pos ((3 * (truncate t372)) + 1)
-        t378 <- rdU pos ((3 * (truncate t372)) + 2)
-        chkI normal (3 * (truncate t372)) 0 2
-        t379 <- rdU normal (3 * (truncate t372))
-        t380 <- rdU normal ((3 * (truncate t372)) + 1)
-        t381 <- rdU normal ((3 * (truncate t372)) + 2)
-        chkI axis (3 * (truncate t372)) 0 2
-        t382 <- rdU axis (3 * (truncate t372))
-        t383 <- rdU axis ((3 * (truncate t372)) + 1)
-        t384 <- rdU axis ((3 * (truncate t372)) + 2)
-        let !s385 = ((t380 * t384) - (t381 * t383))
-        let !s386 = ((t381 * t382) - (t379 * t384))
-        let !s387 = ((t379 * t383) - (t380 * t382))
-        t388 <- rdU scalars (6 * (truncate t372))
-        t389 <- rdU scalars ((6 * (truncate t372)) + 5)
-        t390 <- rdU scalars ((6 * (truncate t372)) + 2)
-        t391 <- rdU scalars ((6 * (truncate t372)) + 3)
-        t392 <- rdU pos (3 * (truncate t372))
-        t393 <- rdU pos ((3 * (truncate t372)) + 1)
-        t394 <- rdU pos ((3 * (truncate t372)) + 2)
-        t395 <- rdU normal (3 * (truncate t372))
-        t396 <- rdU normal ((3 * (truncate t372)) + 1)
-        t397 <- rdU normal ((3 * (truncate t372)) + 2)
-        t398 <- rdU axis (3 * (truncate t372))
-        t399 <- rdU axis ((3 * (truncate t372)) + 1)
-        t400 <- rdU axis ((3 * (truncate t372)) + 2)
-        let !s401 = ((t396 * t400) - (t397 * t399))
-        let !s402 = ((t397 * t398) - (t395 * t400))
-        let !s403 = ((t395 * t399) - (t396 * t398))
-        t404 <- rdU scalars (6 * (truncate t372))
-        t405 <- rdU scalars ((6 * (truncate t372)) + 5)
-        t406 <- rdU scalars ((6 * (truncate t372)) + 2)
-        t407 <- rdU scalars ((6 * (truncate t372)) + 3)
+      t192 <- rdU mouse 1
+      chkI scalars (8 * (truncate t192)) 2 2
+      t193 <- rdU scalars ((8 * (truncate t192)) + 2)
+      if t193 > 0 then do
+        chkI scalars (8 * (truncate t192)) 0 5
+        t194 <- rdU scalars ((8 * (truncate t192)) + 3)
+        chkI params 0 0 0
+        t195 <- rdU params 0
+        chkI pos (3 * (truncate t192)) 0 2
+        t196 <- rdU pos (3 * (truncate t192))
+        t197 <- rdU pos ((3 * (truncate t192)) + 1)
+        t198 <- rdU pos ((3 * (truncate t192)) + 2)
+        chkI normal (3 * (truncate t192)) 0 2
+        t199 <- rdU normal (3 * (truncate t192))
+        t200 <- rdU normal ((3 * (truncate t192)) + 1)
+        t201 <- rdU normal ((3 * (truncate t192)) + 2)
+        chkI axis (3 * (truncate t192)) 0 2
+        t202 <- rdU axis (3 * (truncate t192))
+        t203 <- rdU axis ((3 * (truncate t192)) + 1)
+        t204 <- rdU axis ((3 * (truncate t192)) + 2)
+        let !s205 = ((t200 * t204) - (t201 * t203))
+        let !s206 = ((t201 * t202) - (t199 * t204))
+        let !s207 = ((t199 * t203) - (t200 * t202))
+        t208 <- rdU scalars (8 * (truncate t192))
+        t209 <- rdU scalars ((8 * (truncate t192)) + 5)
+        t210 <- rdU scalars ((8 * (truncate t192)) + 2)
+        t211 <- rdU scalars ((8 * (truncate t192)) + 3)
+        t212 <- rdU pos (3 * (truncate t192))
+        t213 <- rdU pos ((3 * (truncate t192)) + 1)
+        t214 <- rdU pos ((3 * (truncate t192)) + 2)
+        t215 <- rdU normal (3 * (truncate t192))
+        t216 <- rdU normal ((3 * (truncate t192)) + 1)
+        t217 <- rdU normal ((3 * (truncate t192)) + 2)
+        t218 <- rdU axis (3 * (truncate t192))
+        t219 <- rdU axis ((3 * (truncate t192)) + 1)
+        t220 <- rdU axis ((3 * (truncate t192)) + 2)
+        let !s221 = ((t216 * t220) - (t217 * t219))
+        let !s222 = ((t217 * t218) - (t215 * t220))
+        let !s223 = ((t215 * t219) - (t216 * t218))
+        t224 <- rdU scalars (8 * (truncate t192))
+        t225 <- rdU scalars ((8 * (truncate t192)) + 5)
+        t226 <- rdU scalars ((8 * (truncate t192)) + 2)
+        t227 <- rdU scalars ((8 * (truncate t192)) + 3)
         chkI mouse 0 2 11
-        t408 <- rdU mouse 2
-        t409 <- rdU mouse 3
-        let !t410 = (t408 / 4.0)
-        let !t411 = (if (abs t410) > 0 then 1.0 else 0.0)
-        let !t412 = (t404 + t409)
-        let !t413 = (cos t412)
-        let !t414 = (sin t412)
-        let !t415 = (1.0 - t411)
-        let !t416 = (t393 + (t410 * ((t413 * t399) + (t414 * s402))))
-        let !t417 = (if (if ((abs t416) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t416 + (negate t416)) else t416)
-        let !t418 = (if (if ((abs t417) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t417 + (negate t417)) else t417)
-        let !s419 = ((t411 * (t392 + (t410 * ((t413 * t398) + (t414 * s401))))) + (t415 * t392))
-        let !s420 = ((t411 * (if (if ((abs t418) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t418 + (negate t418)) else t418)) + (t415 * t393))
-        let !s421 = ((t411 * (t394 + (t410 * ((t413 * t400) + (t414 * s403))))) + (t415 * t394))
-        let !t422 = ((t413 * t398) + (t414 * s401))
-        let !t423 = ((t413 * t399) + (t414 * s402))
-        let !t424 = ((t413 * t400) + (t414 * s403))
-        let !t425 = (sqrt (((t422 * t422) + (t423 * t423)) + (t424 * t424)))
-        let !t426 = (if (abs t410) > 0 then (recip t410) else 0.0)
-        let !t427 = (t426 * ((t392 + (t410 * t422)) + (negate t392)))
-        let !t428 = (t426 * ((if (if ((abs t418) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t418 + (negate t418)) else t418) + (negate t393)))
-        let !t429 = (t428 + (negate t428))
-        let !t430 = (t426 * ((t394 + (t410 * t424)) + (negate t394)))
-        let !t431 = (sqrt (((t427 * t427) + (t429 * t429)) + (t430 * t430)))
-        let !t432 = (if t431 > 0 then (recip (if (t431 - 1.0e-300) > 0 then t431 else 1.0e-300)) else 0.0)
-        let !s433 = ((t411 * (t425 * (t432 * t427))) + (t415 * t422))
-        let !s434 = ((t411 * (t425 * (t432 * t429))) + (t415 * t423))
-        let !s435 = ((t411 * (t425 * (t432 * t430))) + (t415 * t424))
-        let !t436 = (s420 + (t410 * s434))
-        let !t437 = (if (if ((abs t436) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t436 + (negate t436)) else t436)
-        let !t438 = (if (if ((abs t437) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t437 + (negate t437)) else t437)
-        let !s439 = ((t411 * (s419 + (t410 * s433))) + (t415 * s419))
-        let !s440 = ((t411 * (if (if ((abs t438) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t438 + (negate t438)) else t438)) + (t415 * s420))
-        let !s441 = ((t411 * (s421 + (t410 * s435))) + (t415 * s421))
-        let !t442 = (sqrt (((s433 * s433) + (s434 * s434)) + (s435 * s435)))
-        let !t443 = (t426 * ((s419 + (t410 * s433)) + (negate s419)))
-        let !t444 = (t426 * ((if (if ((abs t438) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t438 + (negate t438)) else t438) + (negate s420)))
-        let !t445 = (t444 + (negate t444))
-        let !t446 = (t426 * ((s421 + (t410 * s435)) + (negate s421)))
-        let !t447 = (sqrt (((t443 * t443) + (t445 * t445)) + (t446 * t446)))
-        let !t448 = (if t447 > 0 then (recip (if (t447 - 1.0e-300) > 0 then t447 else 1.0e-300)) else 0.0)
-        let !s449 = ((t411 * (t442 * (t448 * t443))) + (t415 * s433))
-        let !s450 = ((t411 * (t442 * (t448 * t445))) + (t415 * s434))
-        let !s451 = ((t411 * (t442 * (t448 * t446))) + (t415 * s435))
-        let !t452 = (s440 + (t410 * s450))
-        let !t453 = (if (if ((abs t452) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t452 + (negate t452)) else t452)
-        let !t454 = (if (if ((abs t453) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t453 + (negate t453)) else t453)
-        let !s455 = ((t411 * (s439 + (t410 * s449))) + (t415 * s439))
-        let !s456 = ((t411 * (if (if ((abs t454) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t454 + (negate t454)) else t454)) + (t415 * s440))
-        let !s457 = ((t411 * (s441 + (t410 * s451))) + (t415 * s441))
-        let !t458 = (sqrt (((s449 * s449) + (s450 * s450)) + (s451 * s451)))
-        let !t459 = (t426 * ((s439 + (t410 * s449)) + (negate s439)))
-        let !t460 = (t426 * ((if (if ((abs t454) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t454 + (negate t454)) else t454) + (negate s440)))
-        let !t461 = (t460 + (negate t460))
-        let !t462 = (t426 * ((s441 + (t410 * s451)) + (negate s441)))
-        let !t463 = (sqrt (((t459 * t459) + (t461 * t461)) + (t462 * t462)))
-        let !t464 = (if t463 > 0 then (recip (if (t463 - 1.0e-300) > 0 then t463 else 1.0e-300)) else 0.0)
-        let !s465 = ((t411 * (t458 * (t464 * t459))) + (t415 * s449))
-        let !s466 = ((t411 * (t458 * (t464 * t461))) + (t415 * s450))
-        let !s467 = ((t411 * (t458 * (t464 * t462))) + (t415 * s451))
-        let !t468 = (s456 + (t410 * s466))
-        let !t469 = (if (if ((abs t468) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t468 + (negate t468)) else t468)
-        let !t470 = (if (if ((abs t469) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t469 + (negate t469)) else t469)
-        let !s471 = ((t411 * (s455 + (t410 * s465))) + (t415 * s455))
-        let !s472 = ((t411 * (if (if ((abs t470) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t470 + (negate t470)) else t470)) + (t415 * s456))
-        let !s473 = ((t411 * (s457 + (t410 * s467))) + (t415 * s457))
-        let !t474 = (sqrt (((s465 * s465) + (s466 * s466)) + (s467 * s467)))
-        let !t475 = (t426 * ((s455 + (t410 * s465)) + (negate s455)))
-        let !t476 = (t426 * ((if (if ((abs t470) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t470 + (negate t470)) else t470) + (negate s456)))
-        let !t477 = (t476 + (negate t476))
-        let !t478 = (t426 * ((s457 + (t410 * s467)) + (negate s457)))
-        let !t479 = (sqrt (((t475 * t475) + (t477 * t477)) + (t478 * t478)))
-        let !t480 = (if t479 > 0 then (recip (if (t479 - 1.0e-300) > 0 then t479 else 1.0e-300)) else 0.0)
-        let !s481 = ((t411 * (t474 * (t480 * t475))) + (t415 * s465))
-        let !s482 = ((t411 * (t474 * (t480 * t477))) + (t415 * s466))
-        let !s483 = ((t411 * (t474 * (t480 * t478))) + (t415 * s467))
-        t484 <- rdU mouse 4
-        t485 <- rdU mouse 5
-        t486 <- rdU mouse 6
-        let !t487 = (t484 - ((floorF ((t484 + 1.0) / 2.0)) * 2.0))
-        let !t488 = (negate s471)
-        let !t489 = (t487 + t488)
-        let !t490 = (t485 + (negate s472))
-        let !t491 = (t490 * t490)
-        let !t492 = ((t489 * t489) + t491)
-        let !t493 = (t486 - ((floorF ((t486 + 1.0) / 2.0)) * 2.0))
-        let !t494 = (negate s473)
-        let !t495 = (t493 + t494)
-        let !t496 = (t495 * t495)
-        let !t497 = (t492 + t496)
-        let !t498 = (t487 + (-2.0))
-        let !t499 = (t498 + t488)
-        let !t500 = ((t499 * t499) + t491)
-        let !t501 = (t493 + (-2.0))
-        let !t502 = (t501 + t494)
-        let !t503 = (t502 * t502)
-        let !t504 = (t500 + t503)
-        let !t505 = (t497 - t504)
-        let !t506 = (if t505 > 0 then t504 else t497)
-        let !t507 = (t500 + t496)
-        let !t508 = (t506 - t507)
-        let !t509 = (if t508 > 0 then t507 else t506)
-        let !t510 = (t493 + 2.0)
-        let !t511 = (t510 + t494)
-        let !t512 = (t511 * t511)
-        let !t513 = (t500 + t512)
-        let !t514 = (t509 - t513)
-        let !t515 = (if t514 > 0 then t513 else t509)
-        let !t516 = (t492 + t503)
-        let !t517 = (t515 - t516)
-        let !t518 = (if t517 > 0 then t516 else t515)
-        let !t519 = (t492 + t512)
-        let !t520 = (t518 - t519)
-        let !t521 = (if t520 > 0 then t519 else t518)
-        let !t522 = (t487 + 2.0)
-        let !t523 = (t522 + t488)
-        let !t524 = ((t523 * t523) + t491)
-        let !t525 = (t524 + t503)
-        let !t526 = (t521 - t525)
-        let !t527 = (if t526 > 0 then t525 else t521)
-        let !t528 = (t524 + t496)
-        let !t529 = (t527 - t528)
-        let !t530 = ((if t529 > 0 then t528 else t527) - (t524 + t512))
-        let !s531 = (if t530 > 0 then t522 else (if t529 > 0 then t522 else (if t526 > 0 then t522 else (if t520 > 0 then t487 else (if t517 > 0 then t487 else (if t514 > 0 then t498 else (if t508 > 0 then t498 else (if t505 > 0 then t498 else t487))))))))
-        let !s532 = (if t530 > 0 then t510 else (if t529 > 0 then t493 else (if t526 > 0 then t501 else (if t520 > 0 then t510 else (if t517 > 0 then t501 else (if t514 > 0 then t510 else (if t508 > 0 then t493 else (if t505 > 0 then t501 else t493))))))))
-        t533 <- rdU mouse 7
-        t534 <- rdU mouse 8
-        t535 <- rdU mouse 9
-        let !t536 = (recip t373)
-        let !t537 = (6.283185307179586 * t533)
-        let !s538 = (recip (t375 * ((((2.0 * t536) * t534) * t537) + (t375 * ((t536 * t537) * t537)))))
-        let !s539 = ((t375 * ((t536 * t537) * t537)) * s538)
-        let !s540 = (s471 + (negate t376))
-        let !s541 = (s472 + (negate t377))
-        let !s542 = (s473 + (negate t378))
-        let !s543 = (s471 + (negate s531))
-        let !s544 = (s472 + (negate t485))
-        let !s545 = (s473 + (negate s532))
-        t546 <- rdU mouse 10
-        chkI vel (3 * (truncate t372)) 0 2
-        t547 <- rdU vel (3 * (truncate t372))
-        t548 <- rdU vel ((3 * (truncate t372)) + 1)
-        t549 <- rdU vel ((3 * (truncate t372)) + 2)
-        t550 <- rdU scalars ((6 * (truncate t372)) + 1)
-        let !t551 = (t535 * t375)
-        let !t552 = (negate t551)
-        let !t553 = (((((s541 * t384) - (s542 * t383)) * t379) + (((s542 * t382) - (s540 * t384)) * t380)) + (((s540 * t383) - (s541 * t382)) * t381))
-        let !t554 = (t546 + ((negate ((((((t382 * t547) + (t383 * t548)) + (t384 * t549)) + (t553 * t550)) + (s539 * (((s543 * t382) + (s544 * t383)) + (s545 * t384)))) + (s538 * t546))) / (((t373 * (((t382 * t382) + (t383 * t383)) + (t384 * t384))) + ((t374 * t553) * t553)) + s538)))
-        let !t555 = (if (t554 - t551) > 0 then t551 else t554)
-        let !t556 = (if (t552 - t555) > 0 then t552 else t555)
-        let !s557 = (if (1.0 - (abs (t556 - t556))) > 0 then t556 else 0.0)
-        wrU mouse 10 s557
-        t558 <- rdU scalars ((6 * (truncate t372)) + 2)
-        t559 <- rdU scalars ((6 * (truncate t372)) + 3)
-        t560 <- rdU vel (3 * (truncate t372))
-        t561 <- rdU vel ((3 * (truncate t372)) + 1)
-        t562 <- rdU vel ((3 * (truncate t372)) + 2)
-        t563 <- rdU scalars ((6 * (truncate t372)) + 1)
-        wrU vel (3 * (truncate t372)) (t560 + ((t558 * (s557 - t546)) * t382))
-        wrU vel ((3 * (truncate t372)) + 1) (t561 + ((t558 * (s557 - t546)) * t383))
-        wrU vel ((3 * (truncate t372)) + 2) (t562 + ((t558 * (s557 - t546)) * t384))
-        wrU scalars ((6 * (truncate t372)) + 1) (t563 + ((t559 * (s557 - t546)) * t553))
-        t564 <- rdU mouse 11
-        t565 <- rdU vel (3 * (truncate t372))
-        t566 <- rdU vel ((3 * (truncate t372)) + 1)
-        t567 <- rdU vel ((3 * (truncate t372)) + 2)
-        t568 <- rdU scalars ((6 * (truncate t372)) + 1)
-        let !t569 = (((((s541 * s387) - (s542 * s386)) * t379) + (((s542 * s385) - (s540 * s387)) * t380)) + (((s540 * s386) - (s541 * s385)) * t381))
-        let !t570 = (t564 + ((negate ((((((s385 * t565) + (s386 * t566)) + (s387 * t567)) + (t569 * t568)) + (s539 * (((s543 * s385) + (s544 * s386)) + (s545 * s387)))) + (s538 * t564))) / (((t373 * (((s385 * s385) + (s386 * s386)) + (s387 * s387))) + ((t374 * t569) * t569)) + s538)))
-        let !t571 = (if (t570 - t551) > 0 then t551 else t570)
-        let !t572 = (if (t552 - t571) > 0 then t552 else t571)
-        let !s573 = (if (1.0 - (abs (t572 - t572))) > 0 then t572 else 0.0)
-        wrU mouse 11 s573
-        t574 <- rdU scalars ((6 * (truncate t372)) + 2)
-        t575 <- rdU scalars ((6 * (truncate t372)) + 3)
-        t576 <- rdU vel (3 * (truncate t372))
-        t577 <- rdU vel ((3 * (truncate t372)) + 1)
-        t578 <- rdU vel ((3 * (truncate t372)) + 2)
-        t579 <- rdU scalars ((6 * (truncate t372)) + 1)
-        wrU vel (3 * (truncate t372)) (t576 + ((t574 * (s573 - t564)) * s385))
-        wrU vel ((3 * (truncate t372)) + 1) (t577 + ((t574 * (s573 - t564)) * s386))
-        wrU vel ((3 * (truncate t372)) + 2) (t578 + ((t574 * (s573 - t564)) * s387))
-        wrU scalars ((6 * (truncate t372)) + 1) (t579 + ((t575 * (s573 - t564)) * t569))
+        t228 <- rdU mouse 2
+        t229 <- rdU mouse 3
+        let !t230 = (t228 / 4.0)
+        let !t231 = (if (abs t230) > 0 then 1.0 else 0.0)
+        let !t232 = (t224 + t229)
+        let !t233 = (cos t232)
+        let !t234 = (sin t232)
+        let !t235 = (1.0 - t231)
+        let !t236 = (t213 + (t230 * ((t233 * t219) + (t234 * s222))))
+        let !t237 = (if (if ((abs t236) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t236 + (negate t236)) else t236)
+        let !t238 = (if (if ((abs t237) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t237 + (negate t237)) else t237)
+        let !s239 = ((t231 * (t212 + (t230 * ((t233 * t218) + (t234 * s221))))) + (t235 * t212))
+        let !s240 = ((t231 * (if (if ((abs t238) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t238 + (negate t238)) else t238)) + (t235 * t213))
+        let !s241 = ((t231 * (t214 + (t230 * ((t233 * t220) + (t234 * s223))))) + (t235 * t214))
+        let !t242 = ((t233 * t218) + (t234 * s221))
+        let !t243 = ((t233 * t219) + (t234 * s222))
+        let !t244 = ((t233 * t220) + (t234 * s223))
+        let !t245 = (sqrt (((t242 * t242) + (t243 * t243)) + (t244 * t244)))
+        let !t246 = (if (abs t230) > 0 then (recip t230) else 0.0)
+        let !t247 = (t246 * ((t212 + (t230 * t242)) + (negate t212)))
+        let !t248 = (t246 * ((if (if ((abs t238) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t238 + (negate t238)) else t238) + (negate t213)))
+        let !t249 = (t248 + (negate t248))
+        let !t250 = (t246 * ((t214 + (t230 * t244)) + (negate t214)))
+        let !t251 = (sqrt (((t247 * t247) + (t249 * t249)) + (t250 * t250)))
+        let !t252 = (if t251 > 0 then (recip (if (t251 - 1.0e-300) > 0 then t251 else 1.0e-300)) else 0.0)
+        let !s253 = ((t231 * (t245 * (t252 * t247))) + (t235 * t242))
+        let !s254 = ((t231 * (t245 * (t252 * t249))) + (t235 * t243))
+        let !s255 = ((t231 * (t245 * (t252 * t250))) + (t235 * t244))
+        let !t256 = (s240 + (t230 * s254))
+        let !t257 = (if (if ((abs t256) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t256 + (negate t256)) else t256)
+        let !t258 = (if (if ((abs t257) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t257 + (negate t257)) else t257)
+        let !s259 = ((t231 * (s239 + (t230 * s253))) + (t235 * s239))
+        let !s260 = ((t231 * (if (if ((abs t258) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t258 + (negate t258)) else t258)) + (t235 * s240))
+        let !s261 = ((t231 * (s241 + (t230 * s255))) + (t235 * s241))
+        let !t262 = (sqrt (((s253 * s253) + (s254 * s254)) + (s255 * s255)))
+        let !t263 = (t246 * ((s239 + (t230 * s253)) + (negate s239)))
+        let !t264 = (t246 * ((if (if ((abs t258) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t258 + (negate t258)) else t258) + (negate s240)))
+        let !t265 = (t264 + (negate t264))
+        let !t266 = (t246 * ((s241 + (t230 * s255)) + (negate s241)))
+        let !t267 = (sqrt (((t263 * t263) + (t265 * t265)) + (t266 * t266)))
+        let !t268 = (if t267 > 0 then (recip (if (t267 - 1.0e-300) > 0 then t267 else 1.0e-300)) else 0.0)
+        let !s269 = ((t231 * (t262 * (t268 * t263))) + (t235 * s253))
+        let !s270 = ((t231 * (t262 * (t268 * t265))) + (t235 * s254))
+        let !s271 = ((t231 * (t262 * (t268 * t266))) + (t235 * s255))
+        let !t272 = (s260 + (t230 * s270))
+        let !t273 = (if (if ((abs t272) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t272 + (negate t272)) else t272)
+        let !t274 = (if (if ((abs t273) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t273 + (negate t273)) else t273)
+        let !s275 = ((t231 * (s259 + (t230 * s269))) + (t235 * s259))
+        let !s276 = ((t231 * (if (if ((abs t274) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t274 + (negate t274)) else t274)) + (t235 * s260))
+        let !s277 = ((t231 * (s261 + (t230 * s271))) + (t235 * s261))
+        let !t278 = (sqrt (((s269 * s269) + (s270 * s270)) + (s271 * s271)))
+        let !t279 = (t246 * ((s259 + (t230 * s269)) + (negate s259)))
+        let !t280 = (t246 * ((if (if ((abs t274) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t274 + (negate t274)) else t274) + (negate s260)))
+        let !t281 = (t280 + (negate t280))
+        let !t282 = (t246 * ((s261 + (t230 * s271)) + (negate s261)))
+        let !t283 = (sqrt (((t279 * t279) + (t281 * t281)) + (t282 * t282)))
+        let !t284 = (if t283 > 0 then (recip (if (t283 - 1.0e-300) > 0 then t283 else 1.0e-300)) else 0.0)
+        let !s285 = ((t231 * (t278 * (t284 * t279))) + (t235 * s269))
+        let !s286 = ((t231 * (t278 * (t284 * t281))) + (t235 * s270))
+        let !s287 = ((t231 * (t278 * (t284 * t282))) + (t235 * s271))
+        let !t288 = (s276 + (t230 * s286))
+        let !t289 = (if (if ((abs t288) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t288 + (negate t288)) else t288)
+        let !t290 = (if (if ((abs t289) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t289 + (negate t289)) else t289)
+        let !s291 = ((t231 * (s275 + (t230 * s285))) + (t235 * s275))
+        let !s292 = ((t231 * (if (if ((abs t290) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t290 + (negate t290)) else t290)) + (t235 * s276))
+        let !s293 = ((t231 * (s277 + (t230 * s287))) + (t235 * s277))
+        let !t294 = (sqrt (((s285 * s285) + (s286 * s286)) + (s287 * s287)))
+        let !t295 = (t246 * ((s275 + (t230 * s285)) + (negate s275)))
+        let !t296 = (t246 * ((if (if ((abs t290) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t290 + (negate t290)) else t290) + (negate s276)))
+        let !t297 = (t296 + (negate t296))
+        let !t298 = (t246 * ((s277 + (t230 * s287)) + (negate s277)))
+        let !t299 = (sqrt (((t295 * t295) + (t297 * t297)) + (t298 * t298)))
+        let !t300 = (if t299 > 0 then (recip (if (t299 - 1.0e-300) > 0 then t299 else 1.0e-300)) else 0.0)
+        let !s301 = ((t231 * (t294 * (t300 * t295))) + (t235 * s285))
+        let !s302 = ((t231 * (t294 * (t300 * t297))) + (t235 * s286))
+        let !s303 = ((t231 * (t294 * (t300 * t298))) + (t235 * s287))
+        t304 <- rdU mouse 4
+        t305 <- rdU mouse 5
+        t306 <- rdU mouse 6
+        let !t307 = (t304 - ((floorF ((t304 + 1.0) / 2.0)) * 2.0))
+        let !t308 = (negate s291)
+        let !t309 = (t307 + t308)
+        let !t310 = (t305 + (negate s292))
+        let !t311 = (t310 * t310)
+        let !t312 = ((t309 * t309) + t311)
+        let !t313 = (t306 - ((floorF ((t306 + 1.0) / 2.0)) * 2.0))
+        let !t314 = (negate s293)
+        let !t315 = (t313 + t314)
+        let !t316 = (t315 * t315)
+        let !t317 = (t312 + t316)
+        let !t318 = (t307 + (-2.0))
+        let !t319 = (t318 + t308)
+        let !t320 = ((t319 * t319) + t311)
+        let !t321 = (t313 + (-2.0))
+        let !t322 = (t321 + t314)
+        let !t323 = (t322 * t322)
+        let !t324 = (t320 + t323)
+        let !t325 = (t317 - t324)
+        let !t326 = (if t325 > 0 then t324 else t317)
+        let !t327 = (t320 + t316)
+        let !t328 = (t326 - t327)
+        let !t329 = (if t328 > 0 then t327 else t326)
+        let !t330 = (t313 + 2.0)
+        let !t331 = (t330 + t314)
+        let !t332 = (t331 * t331)
+        let !t333 = (t320 + t332)
+        let !t334 = (t329 - t333)
+        let !t335 = (if t334 > 0 then t333 else t329)
+        let !t336 = (t312 + t323)
+        let !t337 = (t335 - t336)
+        let !t338 = (if t337 > 0 then t336 else t335)
+        let !t339 = (t312 + t332)
+        let !t340 = (t338 - t339)
+        let !t341 = (if t340 > 0 then t339 else t338)
+        let !t342 = (t307 + 2.0)
+        let !t343 = (t342 + t308)
+        let !t344 = ((t343 * t343) + t311)
+        let !t345 = (t344 + t323)
+        let !t346 = (t341 - t345)
+        let !t347 = (if t346 > 0 then t345 else t341)
+        let !t348 = (t344 + t316)
+        let !t349 = (t347 - t348)
+        let !t350 = ((if t349 > 0 then t348 else t347) - (t344 + t332))
+        let !s351 = (if t350 > 0 then t342 else (if t349 > 0 then t342 else (if t346 > 0 then t342 else (if t340 > 0 then t307 else (if t337 > 0 then t307 else (if t334 > 0 then t318 else (if t328 > 0 then t318 else (if t325 > 0 then t318 else t307))))))))
+        let !s352 = (if t350 > 0 then t330 else (if t349 > 0 then t313 else (if t346 > 0 then t321 else (if t340 > 0 then t330 else (if t337 > 0 then t321 else (if t334 > 0 then t330 else (if t328 > 0 then t313 else (if t325 > 0 then t321 else t313))))))))
+        t353 <- rdU mouse 7
+        t354 <- rdU mouse 8
+        t355 <- rdU mouse 9
+        let !t356 = (recip t193)
+        let !t357 = (6.283185307179586 * t353)
+        let !s358 = (recip (t195 * ((((2.0 * t356) * t354) * t357) + (t195 * ((t356 * t357) * t357)))))
+        let !s359 = ((t195 * ((t356 * t357) * t357)) * s358)
+        let !s360 = (s291 + (negate t196))
+        let !s361 = (s292 + (negate t197))
+        let !s362 = (s293 + (negate t198))
+        let !s363 = (s291 + (negate s351))
+        let !s364 = (s292 + (negate t305))
+        let !s365 = (s293 + (negate s352))
+        t366 <- rdU mouse 10
+        chkI vel (3 * (truncate t192)) 0 2
+        t367 <- rdU vel (3 * (truncate t192))
+        t368 <- rdU vel ((3 * (truncate t192)) + 1)
+        t369 <- rdU vel ((3 * (truncate t192)) + 2)
+        t370 <- rdU scalars ((8 * (truncate t192)) + 1)
+        let !t371 = (t355 * t195)
+        let !t372 = (negate t371)
+        let !t373 = (((((s361 * t204) - (s362 * t203)) * t199) + (((s362 * t202) - (s360 * t204)) * t200)) + (((s360 * t203) - (s361 * t202)) * t201))
+        let !t374 = (t366 + ((negate ((((((t202 * t367) + (t203 * t368)) + (t204 * t369)) + (t373 * t370)) + (s359 * (((s363 * t202) + (s364 * t203)) + (s365 * t204)))) + (s358 * t366))) / (((t193 * (((t202 * t202) + (t203 * t203)) + (t204 * t204))) + ((t194 * t373) * t373)) + s358)))
+        let !t375 = (if (t374 - t371) > 0 then t371 else t374)
+        let !t376 = (if (t372 - t375) > 0 then t372 else t375)
+        let !s377 = (if (1.0 - (abs (t376 - t376))) > 0 then t376 else 0.0)
+        wrU mouse 10 s377
+        t378 <- rdU scalars ((8 * (truncate t192)) + 2)
+        t379 <- rdU scalars ((8 * (truncate t192)) + 3)
+        t380 <- rdU vel (3 * (truncate t192))
+        t381 <- rdU vel ((3 * (truncate t192)) + 1)
+        t382 <- rdU vel ((3 * (truncate t192)) + 2)
+        t383 <- rdU scalars ((8 * (truncate t192)) + 1)
+        wrU vel (3 * (truncate t192)) (t380 + ((t378 * (s377 - t366)) * t202))
+        wrU vel ((3 * (truncate t192)) + 1) (t381 + ((t378 * (s377 - t366)) * t203))
+        wrU vel ((3 * (truncate t192)) + 2) (t382 + ((t378 * (s377 - t366)) * t204))
+        wrU scalars ((8 * (truncate t192)) + 1) (t383 + ((t379 * (s377 - t366)) * t373))
+        t384 <- rdU mouse 11
+        t385 <- rdU vel (3 * (truncate t192))
+        t386 <- rdU vel ((3 * (truncate t192)) + 1)
+        t387 <- rdU vel ((3 * (truncate t192)) + 2)
+        t388 <- rdU scalars ((8 * (truncate t192)) + 1)
+        let !t389 = (((((s361 * s207) - (s362 * s206)) * t199) + (((s362 * s205) - (s360 * s207)) * t200)) + (((s360 * s206) - (s361 * s205)) * t201))
+        let !t390 = (t384 + ((negate ((((((s205 * t385) + (s206 * t386)) + (s207 * t387)) + (t389 * t388)) + (s359 * (((s363 * s205) + (s364 * s206)) + (s365 * s207)))) + (s358 * t384))) / (((t193 * (((s205 * s205) + (s206 * s206)) + (s207 * s207))) + ((t194 * t389) * t389)) + s358)))
+        let !t391 = (if (t390 - t371) > 0 then t371 else t390)
+        let !t392 = (if (t372 - t391) > 0 then t372 else t391)
+        let !s393 = (if (1.0 - (abs (t392 - t392))) > 0 then t392 else 0.0)
+        wrU mouse 11 s393
+        t394 <- rdU scalars ((8 * (truncate t192)) + 2)
+        t395 <- rdU scalars ((8 * (truncate t192)) + 3)
+        t396 <- rdU vel (3 * (truncate t192))
+        t397 <- rdU vel ((3 * (truncate t192)) + 1)
+        t398 <- rdU vel ((3 * (truncate t192)) + 2)
+        t399 <- rdU scalars ((8 * (truncate t192)) + 1)
+        wrU vel (3 * (truncate t192)) (t396 + ((t394 * (s393 - t384)) * s205))
+        wrU vel ((3 * (truncate t192)) + 1) (t397 + ((t394 * (s393 - t384)) * s206))
+        wrU vel ((3 * (truncate t192)) + 2) (t398 + ((t394 * (s393 - t384)) * s207))
+        wrU scalars ((8 * (truncate t192)) + 1) (t399 + ((t395 * (s393 - t384)) * t389))
         pure ()
       else do
         pure ()
@@ -1838,33 +1566,35 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t580 <- rdU meta 0
-  loopI 0.0 t580 $ \i581 -> do
-    let !d581 = fromIntegral i581 :: Double
-    chkI bodyPrev (2 * i581) 1 1
-    wrU bodyPrev ((2 * i581) + 1) 0.0
+  chkI meta 0 0 2
+  t400 <- rdU meta 2
+  t401 <- rdU meta 0
+  loopI 0.0 t401 $ \i402 -> do
+    let !d402 = fromIntegral i402 :: Double
+    chkI bodyPrev (2 * i402) 1 1
+    wrU bodyPrev ((2 * i402) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i582 -> do
-    let !d582 = fromIntegral i582 :: Double
-    chkI contacts (30 * i582) 2 25
-    t583 <- rdU contacts ((30 * i582) + 2)
-    chkI prev (4 * i582) 0 3
-    wrU prev (4 * i582) t583
-    t584 <- rdU contacts ((30 * i582) + 3)
-    wrU prev ((4 * i582) + 1) t584
-    t585 <- rdU contacts ((30 * i582) + 24)
-    wrU prev ((4 * i582) + 2) t585
-    t586 <- rdU contacts ((30 * i582) + 25)
-    wrU prev ((4 * i582) + 3) t586
-    chkI bodyPrev (2 * (truncate t583)) 1 1
-    t587 <- rdU bodyPrev ((2 * (truncate t583)) + 1)
-    if (0.5 - t587) > 0 then do
-      chkI bodyPrev (2 * (truncate t583)) 0 0
-      wrU bodyPrev (2 * (truncate t583)) d582
+  loopI 0.0 t400 $ \i403 -> do
+    let !d403 = fromIntegral i403 :: Double
+    chkI contacts (30 * i403) 2 25
+    t404 <- rdU contacts ((30 * i403) + 2)
+    chkI prev (4 * i403) 0 3
+    wrU prev (4 * i403) t404
+    t405 <- rdU contacts ((30 * i403) + 3)
+    wrU prev ((4 * i403) + 1) t405
+    t406 <- rdU contacts ((30 * i403) + 24)
+    wrU prev ((4 * i403) + 2) t406
+    t407 <- rdU contacts ((30 * i403) + 25)
+    wrU prev ((4 * i403) + 3) t407
+    chkI bodyPrev (2 * (truncate t404)) 1 1
+    t408 <- rdU bodyPrev ((2 * (truncate t404)) + 1)
+    if (0.5 - t408) > 0 then do
+      chkI bodyPrev (2 * (truncate t404)) 0 0
+      wrU bodyPrev (2 * (truncate t404)) d403
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t583)) + 1) (t587 + 1.0)
+    wrU bodyPrev ((2 * (truncate t404)) + 1) (t408 + 1.0)
     pure ()
   pure ()
 
@@ -1888,9 +1618,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     t9 <- rdU axis (3 * i2)
     t10 <- rdU axis ((3 * i2) + 1)
     t11 <- rdU axis ((3 * i2) + 2)
-    chkI scalars (6 * i2) 0 1
-    t12 <- rdU scalars (6 * i2)
-    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI scalars (8 * i2) 0 1
+    t12 <- rdU scalars (8 * i2)
+    t13 <- rdU scalars ((8 * i2) + 1)
     chkI normal (3 * i2) 0 2
     t14 <- rdU normal (3 * i2)
     t15 <- rdU normal ((3 * i2) + 1)
@@ -1978,8 +1708,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
       wrU normal (3 * i2) s51
       wrU normal ((3 * i2) + 1) s52
       wrU normal ((3 * i2) + 2) s53
-      wrU scalars (6 * i2) t85
-      wrU scalars ((6 * i2) + 1) t13
+      wrU scalars (8 * i2) t85
+      wrU scalars ((8 * i2) + 1) t13
       chkI mouse 0 0 1
       t87 <- rdU mouse 0
       t88 <- rdU mouse 1
@@ -1995,7 +1725,7 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
       wrU vel (3 * i2) 0.0
       wrU vel ((3 * i2) + 1) 0.0
       wrU vel ((3 * i2) + 2) 0.0
-      wrU scalars ((6 * i2) + 1) 0.0
+      wrU scalars ((8 * i2) + 1) 0.0
       chkI meta 0 1 1
       t90 <- rdU meta 1
       wrU meta 1 (t90 + 1.0)
@@ -2022,11 +1752,11 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     t8 <- rdU normal (3 * i1)
     t9 <- rdU normal ((3 * i1) + 1)
     t10 <- rdU normal ((3 * i1) + 2)
-    chkI scalars (6 * i1) 0 5
-    t11 <- rdU scalars (6 * i1)
+    chkI scalars (8 * i1) 0 7
+    t11 <- rdU scalars (8 * i1)
     chkI params 0 10 10
     t12 <- rdU params 10
-    t13 <- rdU scalars ((6 * i1) + 5)
+    t13 <- rdU scalars ((8 * i1) + 5)
     chkI verts (291 * i1) 0 2
     wrU verts (291 * i1) t2
     wrU verts ((291 * i1) + 1) t3
@@ -2035,286 +1765,290 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    wrU locals 0 (cos t11)
-    wrU locals 1 (sin t11)
+    let !s18 = (cos t11)
+    let !s19 = (sin t11)
+    wrU scalars ((8 * i1) + 6) s18
+    wrU scalars ((8 * i1) + 7) s19
+    wrU locals 0 s18
+    wrU locals 1 s19
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i18 -> do
-        let !d18 = fromIntegral i18 :: Double
-        t19 <- rdU locals 0
-        t20 <- rdU locals 1
-        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
-        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
-        let !s21 = ((t19 * t5) + (t20 * s14))
-        let !s22 = ((t19 * t6) + (t20 * s15))
-        let !s23 = ((t19 * t7) + (t20 * s16))
-        chkI walk (12 * i18) 3 5
-        wrU walk ((12 * i18) + 3) s21
-        wrU walk ((12 * i18) + 4) s22
-        wrU walk ((12 * i18) + 5) s23
+      loopI 0.0 24.0 $ \i20 -> do
+        let !d20 = fromIntegral i20 :: Double
+        t21 <- rdU locals 0
+        t22 <- rdU locals 1
+        wrU locals 0 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
+        wrU locals 1 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
+        let !s23 = ((t21 * t5) + (t22 * s14))
+        let !s24 = ((t21 * t6) + (t22 * s15))
+        let !s25 = ((t21 * t7) + (t22 * s16))
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
-      loopI 0.0 24.0 $ \i24 -> do
-        let !d24 = fromIntegral i24 :: Double
-        chkI radii ((24 * i1) + i24) 0 0
-        t25 <- rdU radii ((24 * i1) + i24)
-        let !s26 = (t25 / 4.0)
-        chkI walk (12 * i24) 0 8
-        t27 <- rdU walk ((12 * i24) + 3)
-        t28 <- rdU walk ((12 * i24) + 4)
-        t29 <- rdU walk ((12 * i24) + 5)
-        let !s30 = (t2 + (s26 * t27))
-        let !s31 = (t3 + (s26 * t28))
-        let !s32 = (t4 + (s26 * t29))
-        let !t33 = (if (abs s26) > 0 then 1.0 else 0.0)
-        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t35 = (if ((abs s31) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t36 = (if t35 > 0 then (s31 + (negate ((s31 / t9) * t9))) else s31)
-        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t40 = (if t35 > 0 then (s30 + (negate ((s31 / t9) * t8))) else s30)
-        let !t41 = (if t37 > 0 then (t40 + (negate ((t36 / t9) * t8))) else t40)
-        let !t42 = (1.0 - t33)
-        let !t43 = (if t35 > 0 then (s32 + (negate ((s31 / t9) * t10))) else s32)
-        let !t44 = (if t37 > 0 then (t43 + (negate ((t36 / t9) * t10))) else t43)
-        let !s45 = ((t33 * (if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41)) + (t42 * t2))
-        let !s46 = ((t33 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t42 * t3))
-        let !s47 = ((t33 * (if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44)) + (t42 * t4))
-        chkI verts ((291 * i1) + (12 * i24)) 3 5
-        wrU verts (((291 * i1) + (12 * i24)) + 3) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s45 else t2)
-        wrU verts (((291 * i1) + (12 * i24)) + 4) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s46 else t3)
-        wrU verts (((291 * i1) + (12 * i24)) + 5) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s47 else t4)
-        wrU walk (12 * i24) s45
-        wrU walk ((12 * i24) + 1) s46
-        wrU walk ((12 * i24) + 2) s47
-        let !t48 = (sqrt (((t27 * t27) + (t28 * t28)) + (t29 * t29)))
-        let !t49 = (if (abs s26) > 0 then (recip s26) else 0.0)
-        let !t50 = (t49 * ((if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41) + (negate t2)))
-        let !t51 = (t49 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
-        let !t52 = (t51 + (negate t51))
-        let !t53 = (t49 * ((if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44) + (negate t4)))
-        let !t54 = (sqrt (((t50 * t50) + (t52 * t52)) + (t53 * t53)))
-        let !t55 = (if t54 > 0 then (recip (if (t54 - 1.0e-300) > 0 then t54 else 1.0e-300)) else 0.0)
-        let !s56 = ((t33 * (t48 * (t55 * t50))) + (t42 * t27))
-        let !s57 = ((t33 * (t48 * (t55 * t52))) + (t42 * t28))
-        let !s58 = ((t33 * (t48 * (t55 * t53))) + (t42 * t29))
-        wrU walk ((12 * i24) + 3) s56
-        wrU walk ((12 * i24) + 4) s57
-        wrU walk ((12 * i24) + 5) s58
-        let !s59 = (t42 * t8)
-        let !s60 = (t33 + (t42 * t9))
-        let !s61 = (t42 * t10)
-        wrU walk ((12 * i24) + 6) s59
-        wrU walk ((12 * i24) + 7) s60
-        wrU walk ((12 * i24) + 8) s61
+      loopI 0.0 24.0 $ \i26 -> do
+        let !d26 = fromIntegral i26 :: Double
+        chkI radii ((24 * i1) + i26) 0 0
+        t27 <- rdU radii ((24 * i1) + i26)
+        let !s28 = (t27 / 4.0)
+        chkI walk (12 * i26) 0 8
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
+        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
+        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
+        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
+        let !t44 = (1.0 - t35)
+        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
+        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
+        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
+        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
+        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
+        chkI verts ((291 * i1) + (12 * i26)) 3 5
+        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
+        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
+        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
+        wrU walk (12 * i26) s47
+        wrU walk ((12 * i26) + 1) s48
+        wrU walk ((12 * i26) + 2) s49
+        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
+        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
+        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
+        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
+        let !t54 = (t53 + (negate t53))
+        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
+        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
+        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
+        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
+        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
+        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
+        wrU walk ((12 * i26) + 3) s58
+        wrU walk ((12 * i26) + 4) s59
+        wrU walk ((12 * i26) + 5) s60
+        let !s61 = (t44 * t8)
+        let !s62 = (t35 + (t44 * t9))
+        let !s63 = (t44 * t10)
+        wrU walk ((12 * i26) + 6) s61
+        wrU walk ((12 * i26) + 7) s62
+        wrU walk ((12 * i26) + 8) s63
         pure ()
-      loopI 0.0 24.0 $ \i62 -> do
-        let !d62 = fromIntegral i62 :: Double
-        chkI radii ((24 * i1) + i62) 0 0
-        t63 <- rdU radii ((24 * i1) + i62)
-        let !s64 = (t63 / 4.0)
-        chkI walk (12 * i62) 0 8
-        t65 <- rdU walk (12 * i62)
-        t66 <- rdU walk ((12 * i62) + 1)
-        t67 <- rdU walk ((12 * i62) + 2)
-        t68 <- rdU walk ((12 * i62) + 6)
-        t69 <- rdU walk ((12 * i62) + 7)
-        t70 <- rdU walk ((12 * i62) + 8)
-        t71 <- rdU walk ((12 * i62) + 3)
-        t72 <- rdU walk ((12 * i62) + 4)
-        t73 <- rdU walk ((12 * i62) + 5)
-        let !s74 = (t65 + (s64 * t71))
-        let !s75 = (t66 + (s64 * t72))
-        let !s76 = (t67 + (s64 * t73))
-        let !t77 = (if (abs s64) > 0 then 1.0 else 0.0)
-        let !t78 = (if (abs t69) > 0 then 1.0 else 0.0)
-        let !t79 = (if ((abs s75) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t80 = (if t79 > 0 then (s75 + (negate ((s75 / t69) * t69))) else s75)
-        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t69) * t69))) else t80)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t84 = (if t79 > 0 then (s74 + (negate ((s75 / t69) * t68))) else s74)
-        let !t85 = (if t81 > 0 then (t84 + (negate ((t80 / t69) * t68))) else t84)
-        let !t86 = (1.0 - t77)
-        let !t87 = (if t79 > 0 then (s76 + (negate ((s75 / t69) * t70))) else s76)
-        let !t88 = (if t81 > 0 then (t87 + (negate ((t80 / t69) * t70))) else t87)
-        let !s89 = ((t77 * (if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85)) + (t86 * t65))
-        let !s90 = ((t77 * (if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82)) + (t86 * t66))
-        let !s91 = ((t77 * (if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88)) + (t86 * t67))
-        chkI verts ((291 * i1) + (12 * i62)) 6 8
-        wrU verts (((291 * i1) + (12 * i62)) + 6) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s89 else t2)
-        wrU verts (((291 * i1) + (12 * i62)) + 7) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s90 else t3)
-        wrU verts (((291 * i1) + (12 * i62)) + 8) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s91 else t4)
-        wrU walk (12 * i62) s89
-        wrU walk ((12 * i62) + 1) s90
-        wrU walk ((12 * i62) + 2) s91
-        let !t92 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
-        let !t93 = (if (abs s64) > 0 then (recip s64) else 0.0)
-        let !t94 = (t93 * ((if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85) + (negate t65)))
-        let !t95 = (t93 * ((if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82) + (negate t66)))
-        let !t96 = (t95 + (negate t95))
-        let !t97 = (t93 * ((if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88) + (negate t67)))
-        let !t98 = (sqrt (((t94 * t94) + (t96 * t96)) + (t97 * t97)))
-        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
-        let !s100 = ((t77 * (t92 * (t99 * t94))) + (t86 * t71))
-        let !s101 = ((t77 * (t92 * (t99 * t96))) + (t86 * t72))
-        let !s102 = ((t77 * (t92 * (t99 * t97))) + (t86 * t73))
-        wrU walk ((12 * i62) + 3) s100
-        wrU walk ((12 * i62) + 4) s101
-        wrU walk ((12 * i62) + 5) s102
-        let !s103 = (t86 * t68)
-        let !s104 = (t77 + (t86 * t69))
-        let !s105 = (t86 * t70)
-        wrU walk ((12 * i62) + 6) s103
-        wrU walk ((12 * i62) + 7) s104
-        wrU walk ((12 * i62) + 8) s105
+      loopI 0.0 24.0 $ \i64 -> do
+        let !d64 = fromIntegral i64 :: Double
+        chkI radii ((24 * i1) + i64) 0 0
+        t65 <- rdU radii ((24 * i1) + i64)
+        let !s66 = (t65 / 4.0)
+        chkI walk (12 * i64) 0 8
+        t67 <- rdU walk (12 * i64)
+        t68 <- rdU walk ((12 * i64) + 1)
+        t69 <- rdU walk ((12 * i64) + 2)
+        t70 <- rdU walk ((12 * i64) + 6)
+        t71 <- rdU walk ((12 * i64) + 7)
+        t72 <- rdU walk ((12 * i64) + 8)
+        t73 <- rdU walk ((12 * i64) + 3)
+        t74 <- rdU walk ((12 * i64) + 4)
+        t75 <- rdU walk ((12 * i64) + 5)
+        let !s76 = (t67 + (s66 * t73))
+        let !s77 = (t68 + (s66 * t74))
+        let !s78 = (t69 + (s66 * t75))
+        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
+        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
+        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
+        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
+        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
+        let !t88 = (1.0 - t79)
+        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
+        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
+        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
+        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
+        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
+        chkI verts ((291 * i1) + (12 * i64)) 6 8
+        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
+        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
+        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
+        wrU walk (12 * i64) s91
+        wrU walk ((12 * i64) + 1) s92
+        wrU walk ((12 * i64) + 2) s93
+        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
+        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
+        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
+        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
+        let !t98 = (t97 + (negate t97))
+        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
+        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
+        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
+        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
+        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
+        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
+        wrU walk ((12 * i64) + 3) s102
+        wrU walk ((12 * i64) + 4) s103
+        wrU walk ((12 * i64) + 5) s104
+        let !s105 = (t88 * t70)
+        let !s106 = (t79 + (t88 * t71))
+        let !s107 = (t88 * t72)
+        wrU walk ((12 * i64) + 6) s105
+        wrU walk ((12 * i64) + 7) s106
+        wrU walk ((12 * i64) + 8) s107
         pure ()
-      loopI 0.0 24.0 $ \i106 -> do
-        let !d106 = fromIntegral i106 :: Double
-        chkI radii ((24 * i1) + i106) 0 0
-        t107 <- rdU radii ((24 * i1) + i106)
-        let !s108 = (t107 / 4.0)
-        chkI walk (12 * i106) 0 8
-        t109 <- rdU walk (12 * i106)
-        t110 <- rdU walk ((12 * i106) + 1)
-        t111 <- rdU walk ((12 * i106) + 2)
-        t112 <- rdU walk ((12 * i106) + 6)
-        t113 <- rdU walk ((12 * i106) + 7)
-        t114 <- rdU walk ((12 * i106) + 8)
-        t115 <- rdU walk ((12 * i106) + 3)
-        t116 <- rdU walk ((12 * i106) + 4)
-        t117 <- rdU walk ((12 * i106) + 5)
-        let !s118 = (t109 + (s108 * t115))
-        let !s119 = (t110 + (s108 * t116))
-        let !s120 = (t111 + (s108 * t117))
-        let !t121 = (if (abs s108) > 0 then 1.0 else 0.0)
-        let !t122 = (if (abs t113) > 0 then 1.0 else 0.0)
-        let !t123 = (if ((abs s119) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t124 = (if t123 > 0 then (s119 + (negate ((s119 / t113) * t113))) else s119)
-        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t113) * t113))) else t124)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t128 = (if t123 > 0 then (s118 + (negate ((s119 / t113) * t112))) else s118)
-        let !t129 = (if t125 > 0 then (t128 + (negate ((t124 / t113) * t112))) else t128)
-        let !t130 = (1.0 - t121)
-        let !t131 = (if t123 > 0 then (s120 + (negate ((s119 / t113) * t114))) else s120)
-        let !t132 = (if t125 > 0 then (t131 + (negate ((t124 / t113) * t114))) else t131)
-        let !s133 = ((t121 * (if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129)) + (t130 * t109))
-        let !s134 = ((t121 * (if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126)) + (t130 * t110))
-        let !s135 = ((t121 * (if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132)) + (t130 * t111))
-        chkI verts ((291 * i1) + (12 * i106)) 9 11
-        wrU verts (((291 * i1) + (12 * i106)) + 9) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s133 else t2)
-        wrU verts (((291 * i1) + (12 * i106)) + 10) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s134 else t3)
-        wrU verts (((291 * i1) + (12 * i106)) + 11) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s135 else t4)
-        wrU walk (12 * i106) s133
-        wrU walk ((12 * i106) + 1) s134
-        wrU walk ((12 * i106) + 2) s135
-        let !t136 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
-        let !t137 = (if (abs s108) > 0 then (recip s108) else 0.0)
-        let !t138 = (t137 * ((if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129) + (negate t109)))
-        let !t139 = (t137 * ((if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126) + (negate t110)))
-        let !t140 = (t139 + (negate t139))
-        let !t141 = (t137 * ((if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132) + (negate t111)))
-        let !t142 = (sqrt (((t138 * t138) + (t140 * t140)) + (t141 * t141)))
-        let !t143 = (if t142 > 0 then (recip (if (t142 - 1.0e-300) > 0 then t142 else 1.0e-300)) else 0.0)
-        let !s144 = ((t121 * (t136 * (t143 * t138))) + (t130 * t115))
-        let !s145 = ((t121 * (t136 * (t143 * t140))) + (t130 * t116))
-        let !s146 = ((t121 * (t136 * (t143 * t141))) + (t130 * t117))
-        wrU walk ((12 * i106) + 3) s144
-        wrU walk ((12 * i106) + 4) s145
-        wrU walk ((12 * i106) + 5) s146
-        let !s147 = (t130 * t112)
-        let !s148 = (t121 + (t130 * t113))
-        let !s149 = (t130 * t114)
-        wrU walk ((12 * i106) + 6) s147
-        wrU walk ((12 * i106) + 7) s148
-        wrU walk ((12 * i106) + 8) s149
+      loopI 0.0 24.0 $ \i108 -> do
+        let !d108 = fromIntegral i108 :: Double
+        chkI radii ((24 * i1) + i108) 0 0
+        t109 <- rdU radii ((24 * i1) + i108)
+        let !s110 = (t109 / 4.0)
+        chkI walk (12 * i108) 0 8
+        t111 <- rdU walk (12 * i108)
+        t112 <- rdU walk ((12 * i108) + 1)
+        t113 <- rdU walk ((12 * i108) + 2)
+        t114 <- rdU walk ((12 * i108) + 6)
+        t115 <- rdU walk ((12 * i108) + 7)
+        t116 <- rdU walk ((12 * i108) + 8)
+        t117 <- rdU walk ((12 * i108) + 3)
+        t118 <- rdU walk ((12 * i108) + 4)
+        t119 <- rdU walk ((12 * i108) + 5)
+        let !s120 = (t111 + (s110 * t117))
+        let !s121 = (t112 + (s110 * t118))
+        let !s122 = (t113 + (s110 * t119))
+        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
+        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
+        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
+        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
+        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
+        let !t132 = (1.0 - t123)
+        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
+        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
+        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
+        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
+        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
+        chkI verts ((291 * i1) + (12 * i108)) 9 11
+        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
+        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
+        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
+        wrU walk (12 * i108) s135
+        wrU walk ((12 * i108) + 1) s136
+        wrU walk ((12 * i108) + 2) s137
+        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
+        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
+        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
+        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
+        let !t142 = (t141 + (negate t141))
+        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
+        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
+        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
+        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
+        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
+        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
+        wrU walk ((12 * i108) + 3) s146
+        wrU walk ((12 * i108) + 4) s147
+        wrU walk ((12 * i108) + 5) s148
+        let !s149 = (t132 * t114)
+        let !s150 = (t123 + (t132 * t115))
+        let !s151 = (t132 * t116)
+        wrU walk ((12 * i108) + 6) s149
+        wrU walk ((12 * i108) + 7) s150
+        wrU walk ((12 * i108) + 8) s151
         pure ()
-      loopI 0.0 24.0 $ \i150 -> do
-        let !d150 = fromIntegral i150 :: Double
-        chkI radii ((24 * i1) + i150) 0 0
-        t151 <- rdU radii ((24 * i1) + i150)
-        let !s152 = (t151 / 4.0)
-        chkI walk (12 * i150) 0 8
-        t153 <- rdU walk (12 * i150)
-        t154 <- rdU walk ((12 * i150) + 1)
-        t155 <- rdU walk ((12 * i150) + 2)
-        t156 <- rdU walk ((12 * i150) + 6)
-        t157 <- rdU walk ((12 * i150) + 7)
-        t158 <- rdU walk ((12 * i150) + 8)
-        t159 <- rdU walk ((12 * i150) + 3)
-        t160 <- rdU walk ((12 * i150) + 4)
-        t161 <- rdU walk ((12 * i150) + 5)
-        let !s162 = (t153 + (s152 * t159))
-        let !s163 = (t154 + (s152 * t160))
-        let !s164 = (t155 + (s152 * t161))
-        let !t165 = (if (abs s152) > 0 then 1.0 else 0.0)
-        let !t166 = (if (abs t157) > 0 then 1.0 else 0.0)
-        let !t167 = (if ((abs s163) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t168 = (if t167 > 0 then (s163 + (negate ((s163 / t157) * t157))) else s163)
-        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t157) * t157))) else t168)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t172 = (if t167 > 0 then (s162 + (negate ((s163 / t157) * t156))) else s162)
-        let !t173 = (if t169 > 0 then (t172 + (negate ((t168 / t157) * t156))) else t172)
-        let !t174 = (1.0 - t165)
-        let !t175 = (if t167 > 0 then (s164 + (negate ((s163 / t157) * t158))) else s164)
-        let !t176 = (if t169 > 0 then (t175 + (negate ((t168 / t157) * t158))) else t175)
-        let !s177 = ((t165 * (if t171 > 0 then (t173 + (negate ((t170 / t157) * t156))) else t173)) + (t174 * t153))
-        let !s178 = ((t165 * (if t171 > 0 then (t170 + (negate ((t170 / t157) * t157))) else t170)) + (t174 * t154))
-        let !s179 = ((t165 * (if t171 > 0 then (t176 + (negate ((t170 / t157) * t158))) else t176)) + (t174 * t155))
-        chkI verts ((291 * i1) + (12 * i150)) 12 14
-        wrU verts (((291 * i1) + (12 * i150)) + 12) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s177 else t2)
-        wrU verts (((291 * i1) + (12 * i150)) + 13) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s178 else t3)
-        wrU verts (((291 * i1) + (12 * i150)) + 14) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s179 else t4)
+      loopI 0.0 24.0 $ \i152 -> do
+        let !d152 = fromIntegral i152 :: Double
+        chkI radii ((24 * i1) + i152) 0 0
+        t153 <- rdU radii ((24 * i1) + i152)
+        let !s154 = (t153 / 4.0)
+        chkI walk (12 * i152) 0 8
+        t155 <- rdU walk (12 * i152)
+        t156 <- rdU walk ((12 * i152) + 1)
+        t157 <- rdU walk ((12 * i152) + 2)
+        t158 <- rdU walk ((12 * i152) + 6)
+        t159 <- rdU walk ((12 * i152) + 7)
+        t160 <- rdU walk ((12 * i152) + 8)
+        t161 <- rdU walk ((12 * i152) + 3)
+        t162 <- rdU walk ((12 * i152) + 4)
+        t163 <- rdU walk ((12 * i152) + 5)
+        let !s164 = (t155 + (s154 * t161))
+        let !s165 = (t156 + (s154 * t162))
+        let !s166 = (t157 + (s154 * t163))
+        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
+        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
+        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
+        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
+        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
+        let !t176 = (1.0 - t167)
+        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
+        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
+        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
+        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
+        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
+        chkI verts ((291 * i1) + (12 * i152)) 12 14
+        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
+        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
+        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i180 -> do
-        let !d180 = fromIntegral i180 :: Double
-        chkI radii ((24 * i1) + i180) 0 0
-        t181 <- rdU radii ((24 * i1) + i180)
-        t182 <- rdU locals 0
-        t183 <- rdU locals 1
-        wrU locals 0 ((t182 * 0.9659258262890683) - (t183 * 0.25881904510252074))
-        wrU locals 1 ((t183 * 0.9659258262890683) + (t182 * 0.25881904510252074))
-        let !s184 = ((t182 * t5) + (t183 * s14))
-        let !s185 = ((t182 * t6) + (t183 * s15))
-        let !s186 = ((t182 * t7) + (t183 * s16))
-        let !s187 = (t2 + (t181 * s184))
-        let !s188 = (t3 + (t181 * s185))
-        let !s189 = (t4 + (t181 * s186))
-        let !t190 = (if (abs t181) > 0 then 1.0 else 0.0)
-        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t192 = (if ((abs s188) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t193 = (if t192 > 0 then (s188 + (negate ((s188 / t9) * t9))) else s188)
-        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t197 = (if t192 > 0 then (s187 + (negate ((s188 / t9) * t8))) else s187)
-        let !t198 = (if t194 > 0 then (t197 + (negate ((t193 / t9) * t8))) else t197)
-        let !t199 = (1.0 - t190)
-        let !t200 = (if t192 > 0 then (s189 + (negate ((s188 / t9) * t10))) else s189)
-        let !t201 = (if t194 > 0 then (t200 + (negate ((t193 / t9) * t10))) else t200)
-        let !s202 = ((t190 * (if t196 > 0 then (t198 + (negate ((t195 / t9) * t8))) else t198)) + (t199 * t2))
-        let !s203 = ((t190 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t199 * t3))
-        let !s204 = ((t190 * (if t196 > 0 then (t201 + (negate ((t195 / t9) * t10))) else t201)) + (t199 * t4))
-        let !t205 = (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204))))
-        let !s206 = (if t205 > 0 then s202 else t2)
-        let !s207 = (if t205 > 0 then s203 else t3)
-        let !s208 = (if t205 > 0 then s204 else t4)
-        chkI verts ((291 * i1) + (12 * i180)) 3 14
-        wrU verts (((291 * i1) + (12 * i180)) + 12) s206
-        wrU verts (((291 * i1) + (12 * i180)) + 13) s207
-        wrU verts (((291 * i1) + (12 * i180)) + 14) s208
-        wrU verts (((291 * i1) + (12 * i180)) + 3) (t2 + (0.25 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 4) (t3 + (0.25 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 5) (t4 + (0.25 * (s208 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i180)) + 6) (t2 + (0.5 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 7) (t3 + (0.5 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 8) (t4 + (0.5 * (s208 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i180)) + 9) (t2 + (0.75 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 10) (t3 + (0.75 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 11) (t4 + (0.75 * (s208 + (negate t4))))
+      loopI 0.0 24.0 $ \i182 -> do
+        let !d182 = fromIntegral i182 :: Double
+        chkI radii ((24 * i1) + i182) 0 0
+        t183 <- rdU radii ((24 * i1) + i182)
+        t184 <- rdU locals 0
+        t185 <- rdU locals 1
+        wrU locals 0 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
+        wrU locals 1 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
+        let !s186 = ((t184 * t5) + (t185 * s14))
+        let !s187 = ((t184 * t6) + (t185 * s15))
+        let !s188 = ((t184 * t7) + (t185 * s16))
+        let !s189 = (t2 + (t183 * s186))
+        let !s190 = (t3 + (t183 * s187))
+        let !s191 = (t4 + (t183 * s188))
+        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
+        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
+        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
+        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
+        let !t201 = (1.0 - t192)
+        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
+        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
+        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
+        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
+        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
+        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
+        let !s208 = (if t207 > 0 then s204 else t2)
+        let !s209 = (if t207 > 0 then s205 else t3)
+        let !s210 = (if t207 > 0 then s206 else t4)
+        chkI verts ((291 * i1) + (12 * i182)) 3 14
+        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
+        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
+        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
+        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
         pure ()
       pure ()
     pure ()

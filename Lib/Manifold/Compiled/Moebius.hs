@@ -36,8 +36,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    chkI scalars (6 * i3) 2 2
-    t4 <- rdU scalars ((6 * i3) + 2)
+    chkI scalars (8 * i3) 2 2
+    t4 <- rdU scalars ((8 * i3) + 2)
     if (t4 * t2) > 0 then do
       chkI pos (3 * i3) 0 2
       t5 <- rdU pos (3 * i3)
@@ -81,8 +81,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   wrU locals 0 0.0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    chkI scalars (6 * i1) 5 5
-    t2 <- rdU scalars ((6 * i1) + 5)
+    chkI scalars (8 * i1) 5 5
+    t2 <- rdU scalars ((8 * i1) + 5)
     t3 <- rdU locals 0
     wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
@@ -145,9 +145,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t30 <- rdU pos (3 * i29)
     t31 <- rdU pos ((3 * i29) + 1)
     t32 <- rdU pos ((3 * i29) + 2)
-    chkI scalars (6 * i29) 2 5
-    t33 <- rdU scalars ((6 * i29) + 5)
-    t34 <- rdU scalars ((6 * i29) + 2)
+    chkI scalars (8 * i29) 2 5
+    t33 <- rdU scalars ((8 * i29) + 5)
+    t34 <- rdU scalars ((8 * i29) + 2)
     t35 <- rdU meta 5
     wrU locals 2 0.0
     wrU locals 2 0.0
@@ -184,9 +184,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                 t55 <- rdU pos (3 * (truncate t53))
                 t56 <- rdU pos ((3 * (truncate t53)) + 1)
                 t57 <- rdU pos ((3 * (truncate t53)) + 2)
-                chkI scalars (6 * (truncate t53)) 2 5
-                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
-                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                chkI scalars (8 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((8 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((8 * (truncate t53)) + 2)
                 let !t60 = (t34 + t59)
                 let !t61 = (t30 + (negate t55))
                 let !t62 = (t31 + (negate t56))
@@ -254,9 +254,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                 t91 <- rdU pos (3 * (truncate t89))
                 t92 <- rdU pos ((3 * (truncate t89)) + 1)
                 t93 <- rdU pos ((3 * (truncate t89)) + 2)
-                chkI scalars (6 * (truncate t89)) 2 5
-                t94 <- rdU scalars ((6 * (truncate t89)) + 5)
-                t95 <- rdU scalars ((6 * (truncate t89)) + 2)
+                chkI scalars (8 * (truncate t89)) 2 5
+                t94 <- rdU scalars ((8 * (truncate t89)) + 5)
+                t95 <- rdU scalars ((8 * (truncate t89)) + 2)
                 let !t96 = (t34 + t95)
                 let !t97 = (s69 + (negate t91))
                 let !t98 = (s70 + (negate t92))
@@ -376,11 +376,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         let !s150 = ((t145 * t149) - (t146 * t148))
         let !s151 = ((t146 * t147) - (t144 * t149))
         let !s152 = ((t144 * t148) - (t145 * t147))
-        chkI scalars (6 * i29) 0 0
-        t153 <- rdU scalars (6 * i29)
-        t154 <- rdU scalars ((6 * i29) + 5)
-        t155 <- rdU scalars ((6 * i29) + 2)
-        t156 <- rdU scalars ((6 * i29) + 3)
+        chkI scalars (8 * i29) 0 0
+        t153 <- rdU scalars (8 * i29)
+        t154 <- rdU scalars ((8 * i29) + 5)
+        t155 <- rdU scalars ((8 * i29) + 2)
+        t156 <- rdU scalars ((8 * i29) + 3)
         chkI contacts (30 * (truncate t139)) 0 29
         wrU contacts (30 * (truncate t139)) d29
         wrU contacts ((30 * (truncate t139)) + 1) (-1.0)
@@ -419,11 +419,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s170 = ((t165 * t169) - (t166 * t168))
           let !s171 = ((t166 * t167) - (t164 * t169))
           let !s172 = ((t164 * t168) - (t165 * t167))
-          chkI scalars 0 (-6) (-1)
-          t173 <- rdU scalars (-6)
-          t174 <- rdU scalars (-1)
-          t175 <- rdU scalars (-4)
-          t176 <- rdU scalars (-3)
+          chkI scalars 0 (-8) (-3)
+          t173 <- rdU scalars (-8)
+          t174 <- rdU scalars (-3)
+          t175 <- rdU scalars (-6)
+          t176 <- rdU scalars (-5)
           wrU contacts ((30 * (truncate t139)) + 8) (negate ((t165 * t157) * t164))
           wrU contacts ((30 * (truncate t139)) + 9) (t157 + (negate ((t165 * t157) * t165)))
           wrU contacts ((30 * (truncate t139)) + 10) (negate ((t165 * t157) * t166))
@@ -475,11 +475,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s196 = ((t191 * t195) - (t192 * t194))
           let !s197 = ((t192 * t193) - (t190 * t195))
           let !s198 = ((t190 * t194) - (t191 * t193))
-          chkI scalars (6 * i29) 0 0
-          t199 <- rdU scalars (6 * i29)
-          t200 <- rdU scalars ((6 * i29) + 5)
-          t201 <- rdU scalars ((6 * i29) + 2)
-          t202 <- rdU scalars ((6 * i29) + 3)
+          chkI scalars (8 * i29) 0 0
+          t199 <- rdU scalars (8 * i29)
+          t200 <- rdU scalars ((8 * i29) + 5)
+          t201 <- rdU scalars ((8 * i29) + 2)
+          t202 <- rdU scalars ((8 * i29) + 3)
           chkI contacts (30 * (truncate t185)) 0 29
           wrU contacts (30 * (truncate t185)) d29
           wrU contacts ((30 * (truncate t185)) + 1) (-1.0)
@@ -518,11 +518,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             let !s216 = ((t211 * t215) - (t212 * t214))
             let !s217 = ((t212 * t213) - (t210 * t215))
             let !s218 = ((t210 * t214) - (t211 * t213))
-            chkI scalars 0 (-6) (-1)
-            t219 <- rdU scalars (-6)
-            t220 <- rdU scalars (-1)
-            t221 <- rdU scalars (-4)
-            t222 <- rdU scalars (-3)
+            chkI scalars 0 (-8) (-3)
+            t219 <- rdU scalars (-8)
+            t220 <- rdU scalars (-3)
+            t221 <- rdU scalars (-6)
+            t222 <- rdU scalars (-5)
             wrU contacts ((30 * (truncate t185)) + 8) (negate ((t211 * t203) * t210))
             wrU contacts ((30 * (truncate t185)) + 9) (t203 + (negate ((t211 * t203) * t211)))
             wrU contacts ((30 * (truncate t185)) + 10) (negate ((t211 * t203) * t212))
@@ -761,11 +761,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s366 = ((t361 * t365) - (t362 * t364))
           let !s367 = ((t362 * t363) - (t360 * t365))
           let !s368 = ((t360 * t364) - (t361 * t363))
-          chkI scalars (6 * i29) 0 0
-          t369 <- rdU scalars (6 * i29)
-          t370 <- rdU scalars ((6 * i29) + 5)
-          t371 <- rdU scalars ((6 * i29) + 2)
-          t372 <- rdU scalars ((6 * i29) + 3)
+          chkI scalars (8 * i29) 0 0
+          t369 <- rdU scalars (8 * i29)
+          t370 <- rdU scalars ((8 * i29) + 5)
+          t371 <- rdU scalars ((8 * i29) + 2)
+          t372 <- rdU scalars ((8 * i29) + 3)
           chkI contacts (30 * (truncate t355)) 0 29
           wrU contacts (30 * (truncate t355)) d29
           wrU contacts ((30 * (truncate t355)) + 1) (-1.0)
@@ -800,11 +800,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             let !s382 = ((t377 * t381) - (t378 * t380))
             let !s383 = ((t378 * t379) - (t376 * t381))
             let !s384 = ((t376 * t380) - (t377 * t379))
-            chkI scalars 0 (-6) (-1)
-            t385 <- rdU scalars (-6)
-            t386 <- rdU scalars (-1)
-            t387 <- rdU scalars (-4)
-            t388 <- rdU scalars (-3)
+            chkI scalars 0 (-8) (-3)
+            t385 <- rdU scalars (-8)
+            t386 <- rdU scalars (-3)
+            t387 <- rdU scalars (-6)
+            t388 <- rdU scalars (-5)
             wrU contacts ((30 * (truncate t355)) + 8) (s352 + (negate ((((t376 * s352) + (t377 * s353)) + (t378 * s354)) * t376)))
             wrU contacts ((30 * (truncate t355)) + 9) (s353 + (negate ((((t376 * s352) + (t377 * s353)) + (t378 * s354)) * t377)))
             wrU contacts ((30 * (truncate t355)) + 10) (s354 + (negate ((((t376 * s352) + (t377 * s353)) + (t378 * s354)) * t378)))
@@ -847,901 +847,629 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 4
-  chkI params 0 0 9
-  t0 <- rdU params 0
-  t1 <- rdU params 2
-  t2 <- rdU params 3
-  t3 <- rdU params 4
-  t4 <- rdU params 5
-  t5 <- rdU params 6
-  t6 <- rdU params 7
-  t7 <- rdU params 8
-  t8 <- rdU params 9
-  chkI meta 0 0 2
-  t9 <- rdU meta 2
-  loopI 0.0 t9 $ \i10 -> do
-    let !d10 = fromIntegral i10 :: Double
-    chkI contacts (30 * i10) 0 26
-    t11 <- rdU contacts (30 * i10)
-    t12 <- rdU contacts ((30 * i10) + 1)
-    t13 <- rdU contacts ((30 * i10) + 2)
-    t14 <- rdU contacts ((30 * i10) + 3)
-    t15 <- rdU contacts ((30 * i10) + 4)
-    t16 <- rdU contacts ((30 * i10) + 5)
-    t17 <- rdU contacts ((30 * i10) + 6)
-    t18 <- rdU contacts ((30 * i10) + 7)
-    t19 <- rdU contacts ((30 * i10) + 8)
-    t20 <- rdU contacts ((30 * i10) + 9)
-    t21 <- rdU contacts ((30 * i10) + 10)
-    t22 <- rdU contacts ((30 * i10) + 11)
-    t23 <- rdU contacts ((30 * i10) + 12)
-    t24 <- rdU contacts ((30 * i10) + 13)
-    t25 <- rdU contacts ((30 * i10) + 14)
-    t26 <- rdU contacts ((30 * i10) + 15)
-    t27 <- rdU contacts ((30 * i10) + 16)
-    t28 <- rdU contacts ((30 * i10) + 17)
-    t29 <- rdU contacts ((30 * i10) + 18)
-    t30 <- rdU contacts ((30 * i10) + 19)
-    chkI scalars (6 * (truncate t11)) 1 3
-    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 0 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
-      pure ()
-    else do
-      pure ()
-    t35 <- rdU locals 0
-    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
-    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
-    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 1 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
-      pure ()
-    else do
-      pure ()
-    t42 <- rdU locals 1
-    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
-    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
-    wrU contacts ((30 * i10) + 21) s37
-    wrU contacts ((30 * i10) + 22) s44
-    t45 <- rdU contacts ((30 * i10) + 20)
-    t46 <- rdU contacts ((30 * i10) + 26)
-    chkI vel (3 * (truncate t11)) 0 2
-    t47 <- rdU vel (3 * (truncate t11))
-    t48 <- rdU vel ((3 * (truncate t11)) + 1)
-    t49 <- rdU vel ((3 * (truncate t11)) + 2)
-    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU locals 2 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI vel (3 * (truncate t12)) 0 2
-      t51 <- rdU vel (3 * (truncate t12))
-      t52 <- rdU vel ((3 * (truncate t12)) + 1)
-      t53 <- rdU vel ((3 * (truncate t12)) + 2)
-      chkI scalars (6 * (truncate t12)) 1 1
-      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
-      pure ()
-    else do
-      pure ()
-    t55 <- rdU locals 2
-    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
-    let !t57 = (t45 - t5)
-    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
-    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
-    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
-    wrU locals 3 0.0
-    wrU locals 4 0.0
-    chkI bodyPrev (2 * (truncate t13)) 0 1
-    t61 <- rdU bodyPrev (2 * (truncate t13))
-    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n63 = (t61 + t62)
-    loopI t61 n63 $ \i64 -> do
-      let !d64 = fromIntegral i64 :: Double
-      chkI prev (4 * i64) 1 1
-      t65 <- rdU prev ((4 * i64) + 1)
-      if (0.5 - (abs (t65 - t14))) > 0 then do
-        chkI prev (4 * i64) 2 3
-        t66 <- rdU prev ((4 * i64) + 2)
-        wrU locals 3 t66
-        t67 <- rdU prev ((4 * i64) + 3)
-        wrU locals 4 t67
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t68 <- rdU locals 3
-    t69 <- rdU locals 4
-    wrU contacts ((30 * i10) + 24) (t7 * t68)
-    wrU contacts ((30 * i10) + 25) (t7 * t69)
-    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t72 <- rdU vel (3 * (truncate t11))
-    t73 <- rdU vel ((3 * (truncate t11)) + 1)
-    t74 <- rdU vel ((3 * (truncate t11)) + 2)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t78 <- rdU vel (3 * (truncate t12))
-      t79 <- rdU vel ((3 * (truncate t12)) + 1)
-      t80 <- rdU vel ((3 * (truncate t12)) + 2)
-      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
-      pure ()
-    else do
-      pure ()
-    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t84 <- rdU vel (3 * (truncate t11))
-    t85 <- rdU vel ((3 * (truncate t11)) + 1)
-    t86 <- rdU vel ((3 * (truncate t11)) + 2)
-    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t90 <- rdU vel (3 * (truncate t12))
-      t91 <- rdU vel ((3 * (truncate t12)) + 1)
-      t92 <- rdU vel ((3 * (truncate t12)) + 2)
-      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
-      pure ()
-    else do
-      pure ()
-    pure ()
+  chkI params 0 2 2
+  t0 <- rdU params 2
+  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
-  t94 <- rdU mouse 0
-  if t94 > 0 then do
+  t1 <- rdU mouse 0
+  if t1 > 0 then do
     chkI mouse 0 1 1
-    t95 <- rdU mouse 1
-    chkI scalars (6 * (truncate t95)) 2 2
-    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
-    if t96 > 0 then do
-      chkI scalars (6 * (truncate t95)) 0 5
-      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t98 <- rdU params 0
-      chkI pos (3 * (truncate t95)) 0 2
-      t99 <- rdU pos (3 * (truncate t95))
-      t100 <- rdU pos ((3 * (truncate t95)) + 1)
-      t101 <- rdU pos ((3 * (truncate t95)) + 2)
-      chkI normal (3 * (truncate t95)) 0 2
-      t102 <- rdU normal (3 * (truncate t95))
-      t103 <- rdU normal ((3 * (truncate t95)) + 1)
-      t104 <- rdU normal ((3 * (truncate t95)) + 2)
-      chkI axis (3 * (truncate t95)) 0 2
-      t105 <- rdU axis (3 * (truncate t95))
-      t106 <- rdU axis ((3 * (truncate t95)) + 1)
-      t107 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s108 = ((t103 * t107) - (t104 * t106))
-      let !s109 = ((t104 * t105) - (t102 * t107))
-      let !s110 = ((t102 * t106) - (t103 * t105))
-      t111 <- rdU scalars (6 * (truncate t95))
-      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t115 <- rdU pos (3 * (truncate t95))
-      t116 <- rdU pos ((3 * (truncate t95)) + 1)
-      t117 <- rdU pos ((3 * (truncate t95)) + 2)
-      t118 <- rdU normal (3 * (truncate t95))
-      t119 <- rdU normal ((3 * (truncate t95)) + 1)
-      t120 <- rdU normal ((3 * (truncate t95)) + 2)
-      t121 <- rdU axis (3 * (truncate t95))
-      t122 <- rdU axis ((3 * (truncate t95)) + 1)
-      t123 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s124 = ((t119 * t123) - (t120 * t122))
-      let !s125 = ((t120 * t121) - (t118 * t123))
-      let !s126 = ((t118 * t122) - (t119 * t121))
-      t127 <- rdU scalars (6 * (truncate t95))
-      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
+    t2 <- rdU mouse 1
+    chkI scalars (8 * (truncate t2)) 2 2
+    t3 <- rdU scalars ((8 * (truncate t2)) + 2)
+    if t3 > 0 then do
+      chkI scalars (8 * (truncate t2)) 0 5
+      t4 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI params 0 0 0
+      t5 <- rdU params 0
+      chkI pos (3 * (truncate t2)) 0 2
+      t6 <- rdU pos (3 * (truncate t2))
+      t7 <- rdU pos ((3 * (truncate t2)) + 1)
+      t8 <- rdU pos ((3 * (truncate t2)) + 2)
+      chkI normal (3 * (truncate t2)) 0 2
+      t9 <- rdU normal (3 * (truncate t2))
+      t10 <- rdU normal ((3 * (truncate t2)) + 1)
+      t11 <- rdU normal ((3 * (truncate t2)) + 2)
+      chkI axis (3 * (truncate t2)) 0 2
+      t12 <- rdU axis (3 * (truncate t2))
+      t13 <- rdU axis ((3 * (truncate t2)) + 1)
+      t14 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s15 = ((t10 * t14) - (t11 * t13))
+      let !s16 = ((t11 * t12) - (t9 * t14))
+      let !s17 = ((t9 * t13) - (t10 * t12))
+      t18 <- rdU scalars (8 * (truncate t2))
+      t19 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t20 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t21 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t22 <- rdU pos (3 * (truncate t2))
+      t23 <- rdU pos ((3 * (truncate t2)) + 1)
+      t24 <- rdU pos ((3 * (truncate t2)) + 2)
+      t25 <- rdU normal (3 * (truncate t2))
+      t26 <- rdU normal ((3 * (truncate t2)) + 1)
+      t27 <- rdU normal ((3 * (truncate t2)) + 2)
+      t28 <- rdU axis (3 * (truncate t2))
+      t29 <- rdU axis ((3 * (truncate t2)) + 1)
+      t30 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s31 = ((t26 * t30) - (t27 * t29))
+      let !s32 = ((t27 * t28) - (t25 * t30))
+      let !s33 = ((t25 * t29) - (t26 * t28))
+      t34 <- rdU scalars (8 * (truncate t2))
+      t35 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t36 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t37 <- rdU scalars ((8 * (truncate t2)) + 3)
       chkI mouse 0 2 11
-      t131 <- rdU mouse 2
-      t132 <- rdU mouse 3
-      let !t133 = (t131 / 4.0)
-      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
-      let !t135 = (t127 + t132)
-      let !t136 = (cos t135)
-      let !t137 = (sin t135)
-      let !t138 = (t115 + (t133 * ((t136 * t121) + (t137 * s124))))
-      let !t139 = (t117 + (t133 * ((t136 * t123) + (t137 * s126))))
-      let !t140 = (sqrt ((t138 * t138) + (t139 * t139)))
-      let !t141 = (t140 - 1.0)
-      let !t142 = (recip (2.0 * t140))
-      let !t143 = (recip (2.0 * (sqrt ((t115 * t115) + (t117 * t117)))))
-      let !t144 = (t143 * (t115 + t115))
-      let !t145 = (t143 * (t117 + t117))
-      let !t146 = (sqrt ((t144 * t144) + (t145 * t145)))
-      let !t147 = (if t146 > 0 then (recip (if (t146 - 1.0e-300) > 0 then t146 else 1.0e-300)) else 0.0)
-      let !t148 = (t147 * t144)
-      let !t149 = (t147 * t145)
-      let !t150 = (((t142 * (t138 + t138)) * t148) + ((t142 * (t139 + t139)) * t149))
-      let !t151 = (if ((abs t141) - 1.0e-10) > 0 then (if (abs t150) > 0 then 1.0 else 0.0) else 0.0)
-      let !t152 = (if t151 > 0 then (t138 + (negate ((t141 / t150) * t148))) else t138)
-      let !t153 = (if t151 > 0 then (t139 + (negate ((t141 / t150) * t149))) else t139)
-      let !t154 = (sqrt ((t152 * t152) + (t153 * t153)))
-      let !t155 = (t154 - 1.0)
-      let !t156 = (recip (2.0 * t154))
-      let !t157 = (((t156 * (t152 + t152)) * t148) + ((t156 * (t153 + t153)) * t149))
-      let !t158 = (if ((abs t155) - 1.0e-10) > 0 then (if (abs t157) > 0 then 1.0 else 0.0) else 0.0)
-      let !t159 = (if t158 > 0 then (t152 + (negate ((t155 / t157) * t148))) else t152)
-      let !t160 = (if t158 > 0 then (t153 + (negate ((t155 / t157) * t149))) else t153)
-      let !t161 = (sqrt ((t159 * t159) + (t160 * t160)))
-      let !t162 = (t161 - 1.0)
-      let !t163 = (recip (2.0 * t161))
-      let !t164 = (((t163 * (t159 + t159)) * t148) + ((t163 * (t160 + t160)) * t149))
-      let !t165 = (if ((abs t162) - 1.0e-10) > 0 then (if (abs t164) > 0 then 1.0 else 0.0) else 0.0)
-      let !t166 = (1.0 - t134)
-      let !s167 = ((t134 * (if t165 > 0 then (t159 + (negate ((t162 / t164) * t148))) else t159)) + (t166 * t115))
-      let !s168 = ((t134 * (t116 + (t133 * ((t136 * t122) + (t137 * s125))))) + (t166 * t116))
-      let !s169 = ((t134 * (if t165 > 0 then (t160 + (negate ((t162 / t164) * t149))) else t160)) + (t166 * t117))
-      let !t170 = ((t136 * t121) + (t137 * s124))
-      let !t171 = ((t136 * t122) + (t137 * s125))
-      let !t172 = ((t136 * t123) + (t137 * s126))
-      let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
-      let !t174 = (if (abs t133) > 0 then (recip t133) else 0.0)
-      let !t175 = (t174 * ((if t165 > 0 then (t159 + (negate ((t162 / t164) * t148))) else t159) + (negate t115)))
-      let !t176 = (t163 * (t159 + t159))
-      let !t177 = (t163 * (t160 + t160))
-      let !t178 = (sqrt ((t176 * t176) + (t177 * t177)))
-      let !t179 = (if t178 > 0 then (recip (if (t178 - 1.0e-300) > 0 then t178 else 1.0e-300)) else 0.0)
-      let !t180 = (t179 * t176)
-      let !t181 = (t179 * t177)
-      let !t182 = (t174 * ((if t165 > 0 then (t160 + (negate ((t162 / t164) * t149))) else t160) + (negate t117)))
-      let !t183 = ((t180 * t175) + (t181 * t182))
-      let !t184 = (t175 + (negate (t183 * t180)))
-      let !t185 = (t174 * ((t116 + (t133 * t171)) + (negate t116)))
-      let !t186 = (t182 + (negate (t183 * t181)))
-      let !t187 = (sqrt (((t184 * t184) + (t185 * t185)) + (t186 * t186)))
-      let !t188 = (if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0)
-      let !s189 = ((t134 * (t173 * (t188 * t184))) + (t166 * t170))
-      let !s190 = ((t134 * (t173 * (t188 * t185))) + (t166 * t171))
-      let !s191 = ((t134 * (t173 * (t188 * t186))) + (t166 * t172))
-      let !t192 = (s167 + (t133 * s189))
-      let !t193 = (s169 + (t133 * s191))
-      let !t194 = (sqrt ((t192 * t192) + (t193 * t193)))
-      let !t195 = (t194 - 1.0)
-      let !t196 = (recip (2.0 * t194))
-      let !t197 = (recip (2.0 * (sqrt ((s167 * s167) + (s169 * s169)))))
-      let !t198 = (t197 * (s167 + s167))
-      let !t199 = (t197 * (s169 + s169))
-      let !t200 = (sqrt ((t198 * t198) + (t199 * t199)))
-      let !t201 = (if t200 > 0 then (recip (if (t200 - 1.0e-300) > 0 then t200 else 1.0e-300)) else 0.0)
-      let !t202 = (t201 * t198)
-      let !t203 = (t201 * t199)
-      let !t204 = (((t196 * (t192 + t192)) * t202) + ((t196 * (t193 + t193)) * t203))
-      let !t205 = (if ((abs t195) - 1.0e-10) > 0 then (if (abs t204) > 0 then 1.0 else 0.0) else 0.0)
-      let !t206 = (if t205 > 0 then (t192 + (negate ((t195 / t204) * t202))) else t192)
-      let !t207 = (if t205 > 0 then (t193 + (negate ((t195 / t204) * t203))) else t193)
-      let !t208 = (sqrt ((t206 * t206) + (t207 * t207)))
-      let !t209 = (t208 - 1.0)
-      let !t210 = (recip (2.0 * t208))
-      let !t211 = (((t210 * (t206 + t206)) * t202) + ((t210 * (t207 + t207)) * t203))
-      let !t212 = (if ((abs t209) - 1.0e-10) > 0 then (if (abs t211) > 0 then 1.0 else 0.0) else 0.0)
-      let !t213 = (if t212 > 0 then (t206 + (negate ((t209 / t211) * t202))) else t206)
-      let !t214 = (if t212 > 0 then (t207 + (negate ((t209 / t211) * t203))) else t207)
-      let !t215 = (sqrt ((t213 * t213) + (t214 * t214)))
-      let !t216 = (t215 - 1.0)
-      let !t217 = (recip (2.0 * t215))
-      let !t218 = (((t217 * (t213 + t213)) * t202) + ((t217 * (t214 + t214)) * t203))
-      let !t219 = (if ((abs t216) - 1.0e-10) > 0 then (if (abs t218) > 0 then 1.0 else 0.0) else 0.0)
-      let !s220 = ((t134 * (if t219 > 0 then (t213 + (negate ((t216 / t218) * t202))) else t213)) + (t166 * s167))
-      let !s221 = ((t134 * (s168 + (t133 * s190))) + (t166 * s168))
-      let !s222 = ((t134 * (if t219 > 0 then (t214 + (negate ((t216 / t218) * t203))) else t214)) + (t166 * s169))
-      let !t223 = (sqrt (((s189 * s189) + (s190 * s190)) + (s191 * s191)))
-      let !t224 = (t174 * ((if t219 > 0 then (t213 + (negate ((t216 / t218) * t202))) else t213) + (negate s167)))
-      let !t225 = (t217 * (t213 + t213))
-      let !t226 = (t217 * (t214 + t214))
-      let !t227 = (sqrt ((t225 * t225) + (t226 * t226)))
-      let !t228 = (if t227 > 0 then (recip (if (t227 - 1.0e-300) > 0 then t227 else 1.0e-300)) else 0.0)
-      let !t229 = (t228 * t225)
-      let !t230 = (t228 * t226)
-      let !t231 = (t174 * ((if t219 > 0 then (t214 + (negate ((t216 / t218) * t203))) else t214) + (negate s169)))
-      let !t232 = ((t229 * t224) + (t230 * t231))
-      let !t233 = (t224 + (negate (t232 * t229)))
-      let !t234 = (t174 * ((s168 + (t133 * s190)) + (negate s168)))
-      let !t235 = (t231 + (negate (t232 * t230)))
-      let !t236 = (sqrt (((t233 * t233) + (t234 * t234)) + (t235 * t235)))
-      let !t237 = (if t236 > 0 then (recip (if (t236 - 1.0e-300) > 0 then t236 else 1.0e-300)) else 0.0)
-      let !s238 = ((t134 * (t223 * (t237 * t233))) + (t166 * s189))
-      let !s239 = ((t134 * (t223 * (t237 * t234))) + (t166 * s190))
-      let !s240 = ((t134 * (t223 * (t237 * t235))) + (t166 * s191))
-      let !t241 = (s220 + (t133 * s238))
-      let !t242 = (s222 + (t133 * s240))
-      let !t243 = (sqrt ((t241 * t241) + (t242 * t242)))
-      let !t244 = (t243 - 1.0)
-      let !t245 = (recip (2.0 * t243))
-      let !t246 = (recip (2.0 * (sqrt ((s220 * s220) + (s222 * s222)))))
-      let !t247 = (t246 * (s220 + s220))
-      let !t248 = (t246 * (s222 + s222))
-      let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
-      let !t250 = (if t249 > 0 then (recip (if (t249 - 1.0e-300) > 0 then t249 else 1.0e-300)) else 0.0)
-      let !t251 = (t250 * t247)
-      let !t252 = (t250 * t248)
-      let !t253 = (((t245 * (t241 + t241)) * t251) + ((t245 * (t242 + t242)) * t252))
-      let !t254 = (if ((abs t244) - 1.0e-10) > 0 then (if (abs t253) > 0 then 1.0 else 0.0) else 0.0)
-      let !t255 = (if t254 > 0 then (t241 + (negate ((t244 / t253) * t251))) else t241)
-      let !t256 = (if t254 > 0 then (t242 + (negate ((t244 / t253) * t252))) else t242)
-      let !t257 = (sqrt ((t255 * t255) + (t256 * t256)))
-      let !t258 = (t257 - 1.0)
-      let !t259 = (recip (2.0 * t257))
-      let !t260 = (((t259 * (t255 + t255)) * t251) + ((t259 * (t256 + t256)) * t252))
-      let !t261 = (if ((abs t258) - 1.0e-10) > 0 then (if (abs t260) > 0 then 1.0 else 0.0) else 0.0)
-      let !t262 = (if t261 > 0 then (t255 + (negate ((t258 / t260) * t251))) else t255)
-      let !t263 = (if t261 > 0 then (t256 + (negate ((t258 / t260) * t252))) else t256)
-      let !t264 = (sqrt ((t262 * t262) + (t263 * t263)))
-      let !t265 = (t264 - 1.0)
-      let !t266 = (recip (2.0 * t264))
-      let !t267 = (((t266 * (t262 + t262)) * t251) + ((t266 * (t263 + t263)) * t252))
-      let !t268 = (if ((abs t265) - 1.0e-10) > 0 then (if (abs t267) > 0 then 1.0 else 0.0) else 0.0)
-      let !s269 = ((t134 * (if t268 > 0 then (t262 + (negate ((t265 / t267) * t251))) else t262)) + (t166 * s220))
-      let !s270 = ((t134 * (s221 + (t133 * s239))) + (t166 * s221))
-      let !s271 = ((t134 * (if t268 > 0 then (t263 + (negate ((t265 / t267) * t252))) else t263)) + (t166 * s222))
-      let !t272 = (sqrt (((s238 * s238) + (s239 * s239)) + (s240 * s240)))
-      let !t273 = (t174 * ((if t268 > 0 then (t262 + (negate ((t265 / t267) * t251))) else t262) + (negate s220)))
-      let !t274 = (t266 * (t262 + t262))
-      let !t275 = (t266 * (t263 + t263))
-      let !t276 = (sqrt ((t274 * t274) + (t275 * t275)))
-      let !t277 = (if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0)
-      let !t278 = (t277 * t274)
-      let !t279 = (t277 * t275)
-      let !t280 = (t174 * ((if t268 > 0 then (t263 + (negate ((t265 / t267) * t252))) else t263) + (negate s222)))
-      let !t281 = ((t278 * t273) + (t279 * t280))
-      let !t282 = (t273 + (negate (t281 * t278)))
-      let !t283 = (t174 * ((s221 + (t133 * s239)) + (negate s221)))
-      let !t284 = (t280 + (negate (t281 * t279)))
-      let !t285 = (sqrt (((t282 * t282) + (t283 * t283)) + (t284 * t284)))
-      let !t286 = (if t285 > 0 then (recip (if (t285 - 1.0e-300) > 0 then t285 else 1.0e-300)) else 0.0)
-      let !s287 = ((t134 * (t272 * (t286 * t282))) + (t166 * s238))
-      let !s288 = ((t134 * (t272 * (t286 * t283))) + (t166 * s239))
-      let !s289 = ((t134 * (t272 * (t286 * t284))) + (t166 * s240))
-      let !t290 = (s269 + (t133 * s287))
-      let !t291 = (s271 + (t133 * s289))
-      let !t292 = (sqrt ((t290 * t290) + (t291 * t291)))
-      let !t293 = (t292 - 1.0)
-      let !t294 = (recip (2.0 * t292))
-      let !t295 = (recip (2.0 * (sqrt ((s269 * s269) + (s271 * s271)))))
-      let !t296 = (t295 * (s269 + s269))
-      let !t297 = (t295 * (s271 + s271))
-      let !t298 = (sqrt ((t296 * t296) + (t297 * t297)))
-      let !t299 = (if t298 > 0 then (recip (if (t298 - 1.0e-300) > 0 then t298 else 1.0e-300)) else 0.0)
-      let !t300 = (t299 * t296)
-      let !t301 = (t299 * t297)
-      let !t302 = (((t294 * (t290 + t290)) * t300) + ((t294 * (t291 + t291)) * t301))
-      let !t303 = (if ((abs t293) - 1.0e-10) > 0 then (if (abs t302) > 0 then 1.0 else 0.0) else 0.0)
-      let !t304 = (if t303 > 0 then (t290 + (negate ((t293 / t302) * t300))) else t290)
-      let !t305 = (if t303 > 0 then (t291 + (negate ((t293 / t302) * t301))) else t291)
-      let !t306 = (sqrt ((t304 * t304) + (t305 * t305)))
-      let !t307 = (t306 - 1.0)
-      let !t308 = (recip (2.0 * t306))
-      let !t309 = (((t308 * (t304 + t304)) * t300) + ((t308 * (t305 + t305)) * t301))
-      let !t310 = (if ((abs t307) - 1.0e-10) > 0 then (if (abs t309) > 0 then 1.0 else 0.0) else 0.0)
-      let !t311 = (if t310 > 0 then (t304 + (negate ((t307 / t309) * t300))) else t304)
-      let !t312 = (if t310 > 0 then (t305 + (negate ((t307 / t309) * t301))) else t305)
-      let !t313 = (sqrt ((t311 * t311) + (t312 * t312)))
-      let !t314 = (t313 - 1.0)
-      let !t315 = (recip (2.0 * t313))
-      let !t316 = (((t315 * (t311 + t311)) * t300) + ((t315 * (t312 + t312)) * t301))
-      let !t317 = (if ((abs t314) - 1.0e-10) > 0 then (if (abs t316) > 0 then 1.0 else 0.0) else 0.0)
-      let !s318 = ((t134 * (if t317 > 0 then (t311 + (negate ((t314 / t316) * t300))) else t311)) + (t166 * s269))
-      let !s319 = ((t134 * (s270 + (t133 * s288))) + (t166 * s270))
-      let !s320 = ((t134 * (if t317 > 0 then (t312 + (negate ((t314 / t316) * t301))) else t312)) + (t166 * s271))
-      let !t321 = (sqrt (((s287 * s287) + (s288 * s288)) + (s289 * s289)))
-      let !t322 = (t174 * ((if t317 > 0 then (t311 + (negate ((t314 / t316) * t300))) else t311) + (negate s269)))
-      let !t323 = (t315 * (t311 + t311))
-      let !t324 = (t315 * (t312 + t312))
-      let !t325 = (sqrt ((t323 * t323) + (t324 * t324)))
-      let !t326 = (if t325 > 0 then (recip (if (t325 - 1.0e-300) > 0 then t325 else 1.0e-300)) else 0.0)
-      let !t327 = (t326 * t323)
-      let !t328 = (t326 * t324)
-      let !t329 = (t174 * ((if t317 > 0 then (t312 + (negate ((t314 / t316) * t301))) else t312) + (negate s271)))
-      let !t330 = ((t327 * t322) + (t328 * t329))
-      let !t331 = (t322 + (negate (t330 * t327)))
-      let !t332 = (t174 * ((s270 + (t133 * s288)) + (negate s270)))
-      let !t333 = (t329 + (negate (t330 * t328)))
-      let !t334 = (sqrt (((t331 * t331) + (t332 * t332)) + (t333 * t333)))
-      let !t335 = (if t334 > 0 then (recip (if (t334 - 1.0e-300) > 0 then t334 else 1.0e-300)) else 0.0)
-      let !s336 = ((t134 * (t321 * (t335 * t331))) + (t166 * s287))
-      let !s337 = ((t134 * (t321 * (t335 * t332))) + (t166 * s288))
-      let !s338 = ((t134 * (t321 * (t335 * t333))) + (t166 * s289))
-      t339 <- rdU mouse 4
-      t340 <- rdU mouse 5
-      t341 <- rdU mouse 6
-      t342 <- rdU mouse 7
-      t343 <- rdU mouse 8
-      t344 <- rdU mouse 9
-      let !t345 = (recip t96)
-      let !t346 = (6.283185307179586 * t342)
-      let !s347 = (recip (t98 * ((((2.0 * t345) * t343) * t346) + (t98 * ((t345 * t346) * t346)))))
-      let !s348 = ((t98 * ((t345 * t346) * t346)) * s347)
-      let !s349 = (s318 + (negate t99))
-      let !s350 = (s319 + (negate t100))
-      let !s351 = (s320 + (negate t101))
-      let !s352 = (s318 + (negate t339))
-      let !s353 = (s319 + (negate t340))
-      let !s354 = (s320 + (negate t341))
-      t355 <- rdU mouse 10
-      t356 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t357 <- rdU scalars ((6 * (truncate t95)) + 3)
-      chkI vel (3 * (truncate t95)) 0 2
-      t358 <- rdU vel (3 * (truncate t95))
-      t359 <- rdU vel ((3 * (truncate t95)) + 1)
-      t360 <- rdU vel ((3 * (truncate t95)) + 2)
-      t361 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t358 + ((t356 * t355) * t105))
-      wrU vel ((3 * (truncate t95)) + 1) (t359 + ((t356 * t355) * t106))
-      wrU vel ((3 * (truncate t95)) + 2) (t360 + ((t356 * t355) * t107))
-      wrU scalars ((6 * (truncate t95)) + 1) (t361 + ((t357 * t355) * (((((s350 * t107) - (s351 * t106)) * t102) + (((s351 * t105) - (s349 * t107)) * t103)) + (((s349 * t106) - (s350 * t105)) * t104))))
-      t362 <- rdU mouse 11
-      t363 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t364 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t365 <- rdU vel (3 * (truncate t95))
-      t366 <- rdU vel ((3 * (truncate t95)) + 1)
-      t367 <- rdU vel ((3 * (truncate t95)) + 2)
-      t368 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t365 + ((t363 * t362) * s108))
-      wrU vel ((3 * (truncate t95)) + 1) (t366 + ((t363 * t362) * s109))
-      wrU vel ((3 * (truncate t95)) + 2) (t367 + ((t363 * t362) * s110))
-      wrU scalars ((6 * (truncate t95)) + 1) (t368 + ((t364 * t362) * (((((s350 * s110) - (s351 * s109)) * t102) + (((s351 * s108) - (s349 * s110)) * t103)) + (((s349 * s109) - (s350 * s108)) * t104))))
+      t38 <- rdU mouse 2
+      t39 <- rdU mouse 3
+      let !t40 = (t38 / 4.0)
+      let !t41 = (if (abs t40) > 0 then 1.0 else 0.0)
+      let !t42 = (t34 + t39)
+      let !t43 = (cos t42)
+      let !t44 = (sin t42)
+      let !t45 = (t22 + (t40 * ((t43 * t28) + (t44 * s31))))
+      let !t46 = (t24 + (t40 * ((t43 * t30) + (t44 * s33))))
+      let !t47 = (sqrt ((t45 * t45) + (t46 * t46)))
+      let !t48 = (t47 - 1.0)
+      let !t49 = (recip (2.0 * t47))
+      let !t50 = (recip (2.0 * (sqrt ((t22 * t22) + (t24 * t24)))))
+      let !t51 = (t50 * (t22 + t22))
+      let !t52 = (t50 * (t24 + t24))
+      let !t53 = (sqrt ((t51 * t51) + (t52 * t52)))
+      let !t54 = (if t53 > 0 then (recip (if (t53 - 1.0e-300) > 0 then t53 else 1.0e-300)) else 0.0)
+      let !t55 = (t54 * t51)
+      let !t56 = (t54 * t52)
+      let !t57 = (((t49 * (t45 + t45)) * t55) + ((t49 * (t46 + t46)) * t56))
+      let !t58 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t57) > 0 then 1.0 else 0.0) else 0.0)
+      let !t59 = (if t58 > 0 then (t45 + (negate ((t48 / t57) * t55))) else t45)
+      let !t60 = (if t58 > 0 then (t46 + (negate ((t48 / t57) * t56))) else t46)
+      let !t61 = (sqrt ((t59 * t59) + (t60 * t60)))
+      let !t62 = (t61 - 1.0)
+      let !t63 = (recip (2.0 * t61))
+      let !t64 = (((t63 * (t59 + t59)) * t55) + ((t63 * (t60 + t60)) * t56))
+      let !t65 = (if ((abs t62) - 1.0e-10) > 0 then (if (abs t64) > 0 then 1.0 else 0.0) else 0.0)
+      let !t66 = (if t65 > 0 then (t59 + (negate ((t62 / t64) * t55))) else t59)
+      let !t67 = (if t65 > 0 then (t60 + (negate ((t62 / t64) * t56))) else t60)
+      let !t68 = (sqrt ((t66 * t66) + (t67 * t67)))
+      let !t69 = (t68 - 1.0)
+      let !t70 = (recip (2.0 * t68))
+      let !t71 = (((t70 * (t66 + t66)) * t55) + ((t70 * (t67 + t67)) * t56))
+      let !t72 = (if ((abs t69) - 1.0e-10) > 0 then (if (abs t71) > 0 then 1.0 else 0.0) else 0.0)
+      let !t73 = (1.0 - t41)
+      let !s74 = ((t41 * (if t72 > 0 then (t66 + (negate ((t69 / t71) * t55))) else t66)) + (t73 * t22))
+      let !s75 = ((t41 * (t23 + (t40 * ((t43 * t29) + (t44 * s32))))) + (t73 * t23))
+      let !s76 = ((t41 * (if t72 > 0 then (t67 + (negate ((t69 / t71) * t56))) else t67)) + (t73 * t24))
+      let !t77 = ((t43 * t28) + (t44 * s31))
+      let !t78 = ((t43 * t29) + (t44 * s32))
+      let !t79 = ((t43 * t30) + (t44 * s33))
+      let !t80 = (sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79)))
+      let !t81 = (if (abs t40) > 0 then (recip t40) else 0.0)
+      let !t82 = (t81 * ((if t72 > 0 then (t66 + (negate ((t69 / t71) * t55))) else t66) + (negate t22)))
+      let !t83 = (t70 * (t66 + t66))
+      let !t84 = (t70 * (t67 + t67))
+      let !t85 = (sqrt ((t83 * t83) + (t84 * t84)))
+      let !t86 = (if t85 > 0 then (recip (if (t85 - 1.0e-300) > 0 then t85 else 1.0e-300)) else 0.0)
+      let !t87 = (t86 * t83)
+      let !t88 = (t86 * t84)
+      let !t89 = (t81 * ((if t72 > 0 then (t67 + (negate ((t69 / t71) * t56))) else t67) + (negate t24)))
+      let !t90 = ((t87 * t82) + (t88 * t89))
+      let !t91 = (t82 + (negate (t90 * t87)))
+      let !t92 = (t81 * ((t23 + (t40 * t78)) + (negate t23)))
+      let !t93 = (t89 + (negate (t90 * t88)))
+      let !t94 = (sqrt (((t91 * t91) + (t92 * t92)) + (t93 * t93)))
+      let !t95 = (if t94 > 0 then (recip (if (t94 - 1.0e-300) > 0 then t94 else 1.0e-300)) else 0.0)
+      let !s96 = ((t41 * (t80 * (t95 * t91))) + (t73 * t77))
+      let !s97 = ((t41 * (t80 * (t95 * t92))) + (t73 * t78))
+      let !s98 = ((t41 * (t80 * (t95 * t93))) + (t73 * t79))
+      let !t99 = (s74 + (t40 * s96))
+      let !t100 = (s76 + (t40 * s98))
+      let !t101 = (sqrt ((t99 * t99) + (t100 * t100)))
+      let !t102 = (t101 - 1.0)
+      let !t103 = (recip (2.0 * t101))
+      let !t104 = (recip (2.0 * (sqrt ((s74 * s74) + (s76 * s76)))))
+      let !t105 = (t104 * (s74 + s74))
+      let !t106 = (t104 * (s76 + s76))
+      let !t107 = (sqrt ((t105 * t105) + (t106 * t106)))
+      let !t108 = (if t107 > 0 then (recip (if (t107 - 1.0e-300) > 0 then t107 else 1.0e-300)) else 0.0)
+      let !t109 = (t108 * t105)
+      let !t110 = (t108 * t106)
+      let !t111 = (((t103 * (t99 + t99)) * t109) + ((t103 * (t100 + t100)) * t110))
+      let !t112 = (if ((abs t102) - 1.0e-10) > 0 then (if (abs t111) > 0 then 1.0 else 0.0) else 0.0)
+      let !t113 = (if t112 > 0 then (t99 + (negate ((t102 / t111) * t109))) else t99)
+      let !t114 = (if t112 > 0 then (t100 + (negate ((t102 / t111) * t110))) else t100)
+      let !t115 = (sqrt ((t113 * t113) + (t114 * t114)))
+      let !t116 = (t115 - 1.0)
+      let !t117 = (recip (2.0 * t115))
+      let !t118 = (((t117 * (t113 + t113)) * t109) + ((t117 * (t114 + t114)) * t110))
+      let !t119 = (if ((abs t116) - 1.0e-10) > 0 then (if (abs t118) > 0 then 1.0 else 0.0) else 0.0)
+      let !t120 = (if t119 > 0 then (t113 + (negate ((t116 / t118) * t109))) else t113)
+      let !t121 = (if t119 > 0 then (t114 + (negate ((t116 / t118) * t110))) else t114)
+      let !t122 = (sqrt ((t120 * t120) + (t121 * t121)))
+      let !t123 = (t122 - 1.0)
+      let !t124 = (recip (2.0 * t122))
+      let !t125 = (((t124 * (t120 + t120)) * t109) + ((t124 * (t121 + t121)) * t110))
+      let !t126 = (if ((abs t123) - 1.0e-10) > 0 then (if (abs t125) > 0 then 1.0 else 0.0) else 0.0)
+      let !s127 = ((t41 * (if t126 > 0 then (t120 + (negate ((t123 / t125) * t109))) else t120)) + (t73 * s74))
+      let !s128 = ((t41 * (s75 + (t40 * s97))) + (t73 * s75))
+      let !s129 = ((t41 * (if t126 > 0 then (t121 + (negate ((t123 / t125) * t110))) else t121)) + (t73 * s76))
+      let !t130 = (sqrt (((s96 * s96) + (s97 * s97)) + (s98 * s98)))
+      let !t131 = (t81 * ((if t126 > 0 then (t120 + (negate ((t123 / t125) * t109))) else t120) + (negate s74)))
+      let !t132 = (t124 * (t120 + t120))
+      let !t133 = (t124 * (t121 + t121))
+      let !t134 = (sqrt ((t132 * t132) + (t133 * t133)))
+      let !t135 = (if t134 > 0 then (recip (if (t134 - 1.0e-300) > 0 then t134 else 1.0e-300)) else 0.0)
+      let !t136 = (t135 * t132)
+      let !t137 = (t135 * t133)
+      let !t138 = (t81 * ((if t126 > 0 then (t121 + (negate ((t123 / t125) * t110))) else t121) + (negate s76)))
+      let !t139 = ((t136 * t131) + (t137 * t138))
+      let !t140 = (t131 + (negate (t139 * t136)))
+      let !t141 = (t81 * ((s75 + (t40 * s97)) + (negate s75)))
+      let !t142 = (t138 + (negate (t139 * t137)))
+      let !t143 = (sqrt (((t140 * t140) + (t141 * t141)) + (t142 * t142)))
+      let !t144 = (if t143 > 0 then (recip (if (t143 - 1.0e-300) > 0 then t143 else 1.0e-300)) else 0.0)
+      let !s145 = ((t41 * (t130 * (t144 * t140))) + (t73 * s96))
+      let !s146 = ((t41 * (t130 * (t144 * t141))) + (t73 * s97))
+      let !s147 = ((t41 * (t130 * (t144 * t142))) + (t73 * s98))
+      let !t148 = (s127 + (t40 * s145))
+      let !t149 = (s129 + (t40 * s147))
+      let !t150 = (sqrt ((t148 * t148) + (t149 * t149)))
+      let !t151 = (t150 - 1.0)
+      let !t152 = (recip (2.0 * t150))
+      let !t153 = (recip (2.0 * (sqrt ((s127 * s127) + (s129 * s129)))))
+      let !t154 = (t153 * (s127 + s127))
+      let !t155 = (t153 * (s129 + s129))
+      let !t156 = (sqrt ((t154 * t154) + (t155 * t155)))
+      let !t157 = (if t156 > 0 then (recip (if (t156 - 1.0e-300) > 0 then t156 else 1.0e-300)) else 0.0)
+      let !t158 = (t157 * t154)
+      let !t159 = (t157 * t155)
+      let !t160 = (((t152 * (t148 + t148)) * t158) + ((t152 * (t149 + t149)) * t159))
+      let !t161 = (if ((abs t151) - 1.0e-10) > 0 then (if (abs t160) > 0 then 1.0 else 0.0) else 0.0)
+      let !t162 = (if t161 > 0 then (t148 + (negate ((t151 / t160) * t158))) else t148)
+      let !t163 = (if t161 > 0 then (t149 + (negate ((t151 / t160) * t159))) else t149)
+      let !t164 = (sqrt ((t162 * t162) + (t163 * t163)))
+      let !t165 = (t164 - 1.0)
+      let !t166 = (recip (2.0 * t164))
+      let !t167 = (((t166 * (t162 + t162)) * t158) + ((t166 * (t163 + t163)) * t159))
+      let !t168 = (if ((abs t165) - 1.0e-10) > 0 then (if (abs t167) > 0 then 1.0 else 0.0) else 0.0)
+      let !t169 = (if t168 > 0 then (t162 + (negate ((t165 / t167) * t158))) else t162)
+      let !t170 = (if t168 > 0 then (t163 + (negate ((t165 / t167) * t159))) else t163)
+      let !t171 = (sqrt ((t169 * t169) + (t170 * t170)))
+      let !t172 = (t171 - 1.0)
+      let !t173 = (recip (2.0 * t171))
+      let !t174 = (((t173 * (t169 + t169)) * t158) + ((t173 * (t170 + t170)) * t159))
+      let !t175 = (if ((abs t172) - 1.0e-10) > 0 then (if (abs t174) > 0 then 1.0 else 0.0) else 0.0)
+      let !s176 = ((t41 * (if t175 > 0 then (t169 + (negate ((t172 / t174) * t158))) else t169)) + (t73 * s127))
+      let !s177 = ((t41 * (s128 + (t40 * s146))) + (t73 * s128))
+      let !s178 = ((t41 * (if t175 > 0 then (t170 + (negate ((t172 / t174) * t159))) else t170)) + (t73 * s129))
+      let !t179 = (sqrt (((s145 * s145) + (s146 * s146)) + (s147 * s147)))
+      let !t180 = (t81 * ((if t175 > 0 then (t169 + (negate ((t172 / t174) * t158))) else t169) + (negate s127)))
+      let !t181 = (t173 * (t169 + t169))
+      let !t182 = (t173 * (t170 + t170))
+      let !t183 = (sqrt ((t181 * t181) + (t182 * t182)))
+      let !t184 = (if t183 > 0 then (recip (if (t183 - 1.0e-300) > 0 then t183 else 1.0e-300)) else 0.0)
+      let !t185 = (t184 * t181)
+      let !t186 = (t184 * t182)
+      let !t187 = (t81 * ((if t175 > 0 then (t170 + (negate ((t172 / t174) * t159))) else t170) + (negate s129)))
+      let !t188 = ((t185 * t180) + (t186 * t187))
+      let !t189 = (t180 + (negate (t188 * t185)))
+      let !t190 = (t81 * ((s128 + (t40 * s146)) + (negate s128)))
+      let !t191 = (t187 + (negate (t188 * t186)))
+      let !t192 = (sqrt (((t189 * t189) + (t190 * t190)) + (t191 * t191)))
+      let !t193 = (if t192 > 0 then (recip (if (t192 - 1.0e-300) > 0 then t192 else 1.0e-300)) else 0.0)
+      let !s194 = ((t41 * (t179 * (t193 * t189))) + (t73 * s145))
+      let !s195 = ((t41 * (t179 * (t193 * t190))) + (t73 * s146))
+      let !s196 = ((t41 * (t179 * (t193 * t191))) + (t73 * s147))
+      let !t197 = (s176 + (t40 * s194))
+      let !t198 = (s178 + (t40 * s196))
+      let !t199 = (sqrt ((t197 * t197) + (t198 * t198)))
+      let !t200 = (t199 - 1.0)
+      let !t201 = (recip (2.0 * t199))
+      let !t202 = (recip (2.0 * (sqrt ((s176 * s176) + (s178 * s178)))))
+      let !t203 = (t202 * (s176 + s176))
+      let !t204 = (t202 * (s178 + s178))
+      let !t205 = (sqrt ((t203 * t203) + (t204 * t204)))
+      let !t206 = (if t205 > 0 then (recip (if (t205 - 1.0e-300) > 0 then t205 else 1.0e-300)) else 0.0)
+      let !t207 = (t206 * t203)
+      let !t208 = (t206 * t204)
+      let !t209 = (((t201 * (t197 + t197)) * t207) + ((t201 * (t198 + t198)) * t208))
+      let !t210 = (if ((abs t200) - 1.0e-10) > 0 then (if (abs t209) > 0 then 1.0 else 0.0) else 0.0)
+      let !t211 = (if t210 > 0 then (t197 + (negate ((t200 / t209) * t207))) else t197)
+      let !t212 = (if t210 > 0 then (t198 + (negate ((t200 / t209) * t208))) else t198)
+      let !t213 = (sqrt ((t211 * t211) + (t212 * t212)))
+      let !t214 = (t213 - 1.0)
+      let !t215 = (recip (2.0 * t213))
+      let !t216 = (((t215 * (t211 + t211)) * t207) + ((t215 * (t212 + t212)) * t208))
+      let !t217 = (if ((abs t214) - 1.0e-10) > 0 then (if (abs t216) > 0 then 1.0 else 0.0) else 0.0)
+      let !t218 = (if t217 > 0 then (t211 + (negate ((t214 / t216) * t207))) else t211)
+      let !t219 = (if t217 > 0 then (t212 + (negate ((t214 / t216) * t208))) else t212)
+      let !t220 = (sqrt ((t218 * t218) + (t219 * t219)))
+      let !t221 = (t220 - 1.0)
+      let !t222 = (recip (2.0 * t220))
+      let !t223 = (((t222 * (t218 + t218)) * t207) + ((t222 * (t219 + t219)) * t208))
+      let !t224 = (if ((abs t221) - 1.0e-10) > 0 then (if (abs t223) > 0 then 1.0 else 0.0) else 0.0)
+      let !s225 = ((t41 * (if t224 > 0 then (t218 + (negate ((t221 / t223) * t207))) else t218)) + (t73 * s176))
+      let !s226 = ((t41 * (s177 + (t40 * s195))) + (t73 * s177))
+      let !s227 = ((t41 * (if t224 > 0 then (t219 + (negate ((t221 / t223) * t208))) else t219)) + (t73 * s178))
+      let !t228 = (sqrt (((s194 * s194) + (s195 * s195)) + (s196 * s196)))
+      let !t229 = (t81 * ((if t224 > 0 then (t218 + (negate ((t221 / t223) * t207))) else t218) + (negate s176)))
+      let !t230 = (t222 * (t218 + t218))
+      let !t231 = (t222 * (t219 + t219))
+      let !t232 = (sqrt ((t230 * t230) + (t231 * t231)))
+      let !t233 = (if t232 > 0 then (recip (if (t232 - 1.0e-300) > 0 then t232 else 1.0e-300)) else 0.0)
+      let !t234 = (t233 * t230)
+      let !t235 = (t233 * t231)
+      let !t236 = (t81 * ((if t224 > 0 then (t219 + (negate ((t221 / t223) * t208))) else t219) + (negate s178)))
+      let !t237 = ((t234 * t229) + (t235 * t236))
+      let !t238 = (t229 + (negate (t237 * t234)))
+      let !t239 = (t81 * ((s177 + (t40 * s195)) + (negate s177)))
+      let !t240 = (t236 + (negate (t237 * t235)))
+      let !t241 = (sqrt (((t238 * t238) + (t239 * t239)) + (t240 * t240)))
+      let !t242 = (if t241 > 0 then (recip (if (t241 - 1.0e-300) > 0 then t241 else 1.0e-300)) else 0.0)
+      let !s243 = ((t41 * (t228 * (t242 * t238))) + (t73 * s194))
+      let !s244 = ((t41 * (t228 * (t242 * t239))) + (t73 * s195))
+      let !s245 = ((t41 * (t228 * (t242 * t240))) + (t73 * s196))
+      t246 <- rdU mouse 4
+      t247 <- rdU mouse 5
+      t248 <- rdU mouse 6
+      t249 <- rdU mouse 7
+      t250 <- rdU mouse 8
+      t251 <- rdU mouse 9
+      let !t252 = (recip t3)
+      let !t253 = (6.283185307179586 * t249)
+      let !s254 = (recip (t5 * ((((2.0 * t252) * t250) * t253) + (t5 * ((t252 * t253) * t253)))))
+      let !s255 = ((t5 * ((t252 * t253) * t253)) * s254)
+      let !s256 = (s225 + (negate t6))
+      let !s257 = (s226 + (negate t7))
+      let !s258 = (s227 + (negate t8))
+      let !s259 = (s225 + (negate t246))
+      let !s260 = (s226 + (negate t247))
+      let !s261 = (s227 + (negate t248))
+      t262 <- rdU mouse 10
+      t263 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t264 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI vel (3 * (truncate t2)) 0 2
+      t265 <- rdU vel (3 * (truncate t2))
+      t266 <- rdU vel ((3 * (truncate t2)) + 1)
+      t267 <- rdU vel ((3 * (truncate t2)) + 2)
+      t268 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t265 + ((t263 * t262) * t12))
+      wrU vel ((3 * (truncate t2)) + 1) (t266 + ((t263 * t262) * t13))
+      wrU vel ((3 * (truncate t2)) + 2) (t267 + ((t263 * t262) * t14))
+      wrU scalars ((8 * (truncate t2)) + 1) (t268 + ((t264 * t262) * (((((s257 * t14) - (s258 * t13)) * t9) + (((s258 * t12) - (s256 * t14)) * t10)) + (((s256 * t13) - (s257 * t12)) * t11))))
+      t269 <- rdU mouse 11
+      t270 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t271 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t272 <- rdU vel (3 * (truncate t2))
+      t273 <- rdU vel ((3 * (truncate t2)) + 1)
+      t274 <- rdU vel ((3 * (truncate t2)) + 2)
+      t275 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t272 + ((t270 * t269) * s15))
+      wrU vel ((3 * (truncate t2)) + 1) (t273 + ((t270 * t269) * s16))
+      wrU vel ((3 * (truncate t2)) + 2) (t274 + ((t270 * t269) * s17))
+      wrU scalars ((8 * (truncate t2)) + 1) (t275 + ((t271 * t269) * (((((s257 * s17) - (s258 * s16)) * t9) + (((s258 * s15) - (s256 * s17)) * t10)) + (((s256 * s16) - (s257 * s15)) * t11))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i369 -> do
-    let !d369 = fromIntegral i369 :: Double
-    loopI 0.0 t9 $ \i370 -> do
-      let !d370 = fromIntegral i370 :: Double
-      chkI contacts (30 * i370) 0 26
-      t371 <- rdU contacts (30 * i370)
-      t372 <- rdU contacts ((30 * i370) + 1)
-      t373 <- rdU contacts ((30 * i370) + 12)
-      t374 <- rdU contacts ((30 * i370) + 13)
-      t375 <- rdU contacts ((30 * i370) + 14)
-      t376 <- rdU contacts ((30 * i370) + 15)
-      t377 <- rdU contacts ((30 * i370) + 16)
-      t378 <- rdU contacts ((30 * i370) + 17)
-      t379 <- rdU contacts ((30 * i370) + 18)
-      t380 <- rdU contacts ((30 * i370) + 19)
-      t381 <- rdU contacts ((30 * i370) + 4)
-      t382 <- rdU contacts ((30 * i370) + 5)
-      t383 <- rdU contacts ((30 * i370) + 6)
-      t384 <- rdU contacts ((30 * i370) + 7)
-      t385 <- rdU contacts ((30 * i370) + 8)
-      t386 <- rdU contacts ((30 * i370) + 9)
-      t387 <- rdU contacts ((30 * i370) + 10)
-      t388 <- rdU contacts ((30 * i370) + 11)
-      t389 <- rdU contacts ((30 * i370) + 26)
-      t390 <- rdU contacts ((30 * i370) + 24)
-      t391 <- rdU contacts ((30 * i370) + 25)
-      t392 <- rdU contacts ((30 * i370) + 22)
-      t393 <- rdU contacts ((30 * i370) + 21)
-      t394 <- rdU contacts ((30 * i370) + 23)
-      let !s395 = (if (negate t372) > 0 then 0.0 else t372)
-      let !s396 = (t372 + 0.5)
-      let !s397 = (if (0.5 - (abs (t371 - t372))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t371)) 1 3
-      t398 <- rdU scalars ((6 * (truncate t371)) + 2)
-      t399 <- rdU scalars ((6 * (truncate t371)) + 3)
-      chkI scalars (6 * (truncate s395)) 1 3
-      t400 <- rdU scalars ((6 * (truncate s395)) + 2)
-      t401 <- rdU scalars ((6 * (truncate s395)) + 3)
-      chkI vel (3 * (truncate t371)) 0 2
-      t402 <- rdU vel (3 * (truncate t371))
-      t403 <- rdU vel ((3 * (truncate t371)) + 1)
-      t404 <- rdU vel ((3 * (truncate t371)) + 2)
-      t405 <- rdU scalars ((6 * (truncate t371)) + 1)
-      chkI vel (3 * (truncate s395)) 0 2
-      t406 <- rdU vel (3 * (truncate s395))
-      t407 <- rdU vel ((3 * (truncate s395)) + 1)
-      t408 <- rdU vel ((3 * (truncate s395)) + 2)
-      t409 <- rdU scalars ((6 * (truncate s395)) + 1)
-      let !s410 = (((((t373 * t402) + (t374 * t403)) + (t375 * t404)) + (t376 * t405)) - (if s396 > 0 then ((((t377 * t406) + (t378 * t407)) + (t379 * t408)) + (t380 * t409)) else 0.0))
-      let !t411 = (t2 * t390)
-      let !t412 = (negate t411)
-      let !t413 = (t391 - ((t389 * s410) * t392))
-      let !t414 = (if (t413 - t411) > 0 then t411 else t413)
-      let !t415 = (if (t412 - t414) > 0 then t412 else t414)
-      let !s416 = (if (1.0 - (abs (t415 - t415))) > 0 then t415 else 0.0)
-      wrU contacts ((30 * i370) + 25) s416
-      let !t417 = (t398 * (s416 - t391))
-      let !s418 = (t417 * t373)
-      let !s419 = (t417 * t374)
-      let !s420 = (t417 * t375)
-      let !s421 = ((t399 * (s416 - t391)) * t376)
-      let !t422 = (t400 * (negate (s416 - t391)))
-      let !s423 = (t422 * t377)
-      let !s424 = (t422 * t378)
-      let !s425 = (t422 * t379)
-      let !s426 = ((t401 * (negate (s416 - t391))) * t380)
-      let !s427 = ((t402 + s418) + (s397 * s423))
-      let !s428 = ((t403 + s419) + (s397 * s424))
-      let !s429 = ((t404 + s420) + (s397 * s425))
-      let !s430 = ((t405 + s421) + (s397 * s426))
-      let !s431 = ((t406 + s423) + (s397 * s418))
-      let !s432 = ((t407 + s424) + (s397 * s419))
-      let !s433 = ((t408 + s425) + (s397 * s420))
-      let !s434 = ((t409 + s426) + (s397 * s421))
-      let !s435 = (((((t381 * s427) + (t382 * s428)) + (t383 * s429)) + (t384 * s430)) - (if s396 > 0 then ((((t385 * s431) + (t386 * s432)) + (t387 * s433)) + (t388 * s434)) else 0.0))
-      let !t436 = (t390 + ((t389 * (t394 - s435)) * t393))
-      let !t437 = (if (negate t436) > 0 then 0.0 else t436)
-      let !s438 = (if (1.0 - (abs (t437 - t437))) > 0 then t437 else 0.0)
-      wrU contacts ((30 * i370) + 24) s438
-      let !t439 = (t398 * (s438 - t390))
-      let !s440 = (t439 * t381)
-      let !s441 = (t439 * t382)
-      let !s442 = (t439 * t383)
-      let !s443 = ((t399 * (s438 - t390)) * t384)
-      let !t444 = (t400 * (negate (s438 - t390)))
-      let !s445 = (t444 * t385)
-      let !s446 = (t444 * t386)
-      let !s447 = (t444 * t387)
-      let !s448 = ((t401 * (negate (s438 - t390))) * t388)
-      let !s449 = ((s427 + s440) + (s397 * s445))
-      let !s450 = ((s428 + s441) + (s397 * s446))
-      let !s451 = ((s429 + s442) + (s397 * s447))
-      let !s452 = ((s430 + s443) + (s397 * s448))
-      let !s453 = ((s431 + s445) + (s397 * s440))
-      let !s454 = ((s432 + s446) + (s397 * s441))
-      let !s455 = ((s433 + s447) + (s397 * s442))
-      let !s456 = ((s434 + s448) + (s397 * s443))
-      wrU vel (3 * (truncate t371)) s449
-      wrU vel ((3 * (truncate t371)) + 1) s450
-      wrU vel ((3 * (truncate t371)) + 2) s451
-      wrU scalars ((6 * (truncate t371)) + 1) s452
-      if s396 > 0 then do
-        wrU vel (3 * (truncate s395)) s453
-        wrU vel ((3 * (truncate s395)) + 1) s454
-        wrU vel ((3 * (truncate s395)) + 2) s455
-        wrU scalars ((6 * (truncate s395)) + 1) s456
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t457 <- rdU mouse 0
-    if t457 > 0 then do
+  loopI 0.0 t0 $ \i276 -> do
+    let !d276 = fromIntegral i276 :: Double
+    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    t277 <- rdU mouse 0
+    if t277 > 0 then do
       chkI mouse 0 1 1
-      t458 <- rdU mouse 1
-      chkI scalars (6 * (truncate t458)) 2 2
-      t459 <- rdU scalars ((6 * (truncate t458)) + 2)
-      if t459 > 0 then do
-        chkI scalars (6 * (truncate t458)) 0 5
-        t460 <- rdU scalars ((6 * (truncate t458)) + 3)
-        t461 <- rdU params 0
-        chkI pos (3 * (truncate t458)) 0 2
-        t462 <- rdU pos (3 * (truncate t458))
-        t463 <- rdU pos ((3 * (truncate t458)) + 1)
-        t464 <- rdU pos ((3 * (truncate t458)) + 2)
-        chkI normal (3 * (truncate t458)) 0 2
-        t465 <- rdU normal (3 * (truncate t458))
-        t466 <- rdU normal ((3 * (truncate t458)) + 1)
-        t467 <- rdU normal ((3 * (truncate t458)) + 2)
-        chkI axis (3 * (truncate t458)) 0 2
-        t468 <- rdU axis (3 * (truncate t458))
-        t469 <- rdU axis ((3 * (truncate t458)) + 1)
-        t470 <- rdU axis ((3 * (truncate t458)) + 2)
-        let !s471 = ((t466 * t470) - (t467 * t469))
-        let !s472 = ((t467 * t468) - (t465 * t470))
-        let !s473 = ((t465 * t469) - (t466 * t468))
-        t474 <- rdU scalars (6 * (truncate t458))
-        t475 <- rdU scalars ((6 * (truncate t458)) + 5)
-        t476 <- rdU scalars ((6 * (truncate t458)) + 2)
-        t477 <- rdU scalars ((6 * (truncate t458)) + 3)
-        t478 <- rdU pos (3 * (truncate t458))
-        t479 <- rdU pos ((3 * (truncate t458)) + 1)
-        t480 <- rdU pos ((3 * (truncate t458)) + 2)
-        t481 <- rdU normal (3 * (truncate t458))
-        t482 <- rdU normal ((3 * (truncate t458)) + 1)
-        t483 <- rdU normal ((3 * (truncate t458)) + 2)
-        t484 <- rdU axis (3 * (truncate t458))
-        t485 <- rdU axis ((3 * (truncate t458)) + 1)
-        t486 <- rdU axis ((3 * (truncate t458)) + 2)
-        let !s487 = ((t482 * t486) - (t483 * t485))
-        let !s488 = ((t483 * t484) - (t481 * t486))
-        let !s489 = ((t481 * t485) - (t482 * t484))
-        t490 <- rdU scalars (6 * (truncate t458))
-        t491 <- rdU scalars ((6 * (truncate t458)) + 5)
-        t492 <- rdU scalars ((6 * (truncate t458)) + 2)
-        t493 <- rdU scalars ((6 * (truncate t458)) + 3)
+      t278 <- rdU mouse 1
+      chkI scalars (8 * (truncate t278)) 2 2
+      t279 <- rdU scalars ((8 * (truncate t278)) + 2)
+      if t279 > 0 then do
+        chkI scalars (8 * (truncate t278)) 0 5
+        t280 <- rdU scalars ((8 * (truncate t278)) + 3)
+        chkI params 0 0 0
+        t281 <- rdU params 0
+        chkI pos (3 * (truncate t278)) 0 2
+        t282 <- rdU pos (3 * (truncate t278))
+        t283 <- rdU pos ((3 * (truncate t278)) + 1)
+        t284 <- rdU pos ((3 * (truncate t278)) + 2)
+        chkI normal (3 * (truncate t278)) 0 2
+        t285 <- rdU normal (3 * (truncate t278))
+        t286 <- rdU normal ((3 * (truncate t278)) + 1)
+        t287 <- rdU normal ((3 * (truncate t278)) + 2)
+        chkI axis (3 * (truncate t278)) 0 2
+        t288 <- rdU axis (3 * (truncate t278))
+        t289 <- rdU axis ((3 * (truncate t278)) + 1)
+        t290 <- rdU axis ((3 * (truncate t278)) + 2)
+        let !s291 = ((t286 * t290) - (t287 * t289))
+        let !s292 = ((t287 * t288) - (t285 * t290))
+        let !s293 = ((t285 * t289) - (t286 * t288))
+        t294 <- rdU scalars (8 * (truncate t278))
+        t295 <- rdU scalars ((8 * (truncate t278)) + 5)
+        t296 <- rdU scalars ((8 * (truncate t278)) + 2)
+        t297 <- rdU scalars ((8 * (truncate t278)) + 3)
+        t298 <- rdU pos (3 * (truncate t278))
+        t299 <- rdU pos ((3 * (truncate t278)) + 1)
+        t300 <- rdU pos ((3 * (truncate t278)) + 2)
+        t301 <- rdU normal (3 * (truncate t278))
+        t302 <- rdU normal ((3 * (truncate t278)) + 1)
+        t303 <- rdU normal ((3 * (truncate t278)) + 2)
+        t304 <- rdU axis (3 * (truncate t278))
+        t305 <- rdU axis ((3 * (truncate t278)) + 1)
+        t306 <- rdU axis ((3 * (truncate t278)) + 2)
+        let !s307 = ((t302 * t306) - (t303 * t305))
+        let !s308 = ((t303 * t304) - (t301 * t306))
+        let !s309 = ((t301 * t305) - (t302 * t304))
+        t310 <- rdU scalars (8 * (truncate t278))
+        t311 <- rdU scalars ((8 * (truncate t278)) + 5)
+        t312 <- rdU scalars ((8 * (truncate t278)) + 2)
+        t313 <- rdU scalars ((8 * (truncate t278)) + 3)
         chkI mouse 0 2 11
-        t494 <- rdU mouse 2
-        t495 <- rdU mouse 3
-        let !t496 = (t494 / 4.0)
-        let !t497 = (if (abs t496) > 0 then 1.0 else 0.0)
-        let !t498 = (t490 + t495)
-        let !t499 = (cos t498)
-        let !t500 = (sin t498)
-        let !t501 = (t478 + (t496 * ((t499 * t484) + (t500 * s487))))
-        let !t502 = (t480 + (t496 * ((t499 * t486) + (t500 * s489))))
-        let !t503 = (sqrt ((t501 * t501) + (t502 * t502)))
-        let !t504 = (t503 - 1.0)
-        let !t505 = (recip (2.0 * t503))
-        let !t506 = (recip (2.0 * (sqrt ((t478 * t478) + (t480 * t480)))))
-        let !t507 = (t506 * (t478 + t478))
-        let !t508 = (t506 * (t480 + t480))
-        let !t509 = (sqrt ((t507 * t507) + (t508 * t508)))
-        let !t510 = (if t509 > 0 then (recip (if (t509 - 1.0e-300) > 0 then t509 else 1.0e-300)) else 0.0)
-        let !t511 = (t510 * t507)
-        let !t512 = (t510 * t508)
-        let !t513 = (((t505 * (t501 + t501)) * t511) + ((t505 * (t502 + t502)) * t512))
-        let !t514 = (if ((abs t504) - 1.0e-10) > 0 then (if (abs t513) > 0 then 1.0 else 0.0) else 0.0)
-        let !t515 = (if t514 > 0 then (t501 + (negate ((t504 / t513) * t511))) else t501)
-        let !t516 = (if t514 > 0 then (t502 + (negate ((t504 / t513) * t512))) else t502)
-        let !t517 = (sqrt ((t515 * t515) + (t516 * t516)))
-        let !t518 = (t517 - 1.0)
-        let !t519 = (recip (2.0 * t517))
-        let !t520 = (((t519 * (t515 + t515)) * t511) + ((t519 * (t516 + t516)) * t512))
-        let !t521 = (if ((abs t518) - 1.0e-10) > 0 then (if (abs t520) > 0 then 1.0 else 0.0) else 0.0)
-        let !t522 = (if t521 > 0 then (t515 + (negate ((t518 / t520) * t511))) else t515)
-        let !t523 = (if t521 > 0 then (t516 + (negate ((t518 / t520) * t512))) else t516)
-        let !t524 = (sqrt ((t522 * t522) + (t523 * t523)))
-        let !t525 = (t524 - 1.0)
-        let !t526 = (recip (2.0 * t524))
-        let !t527 = (((t526 * (t522 + t522)) * t511) + ((t526 * (t523 + t523)) * t512))
-        let !t528 = (if ((abs t525) - 1.0e-10) > 0 then (if (abs t527) > 0 then 1.0 else 0.0) else 0.0)
-        let !t529 = (1.0 - t497)
-        let !s530 = ((t497 * (if t528 > 0 then (t522 + (negate ((t525 / t527) * t511))) else t522)) + (t529 * t478))
-        let !s531 = ((t497 * (t479 + (t496 * ((t499 * t485) + (t500 * s488))))) + (t529 * t479))
-        let !s532 = ((t497 * (if t528 > 0 then (t523 + (negate ((t525 / t527) * t512))) else t523)) + (t529 * t480))
-        let !t533 = ((t499 * t484) + (t500 * s487))
-        let !t534 = ((t499 * t485) + (t500 * s488))
-        let !t535 = ((t499 * t486) + (t500 * s489))
-        let !t536 = (sqrt (((t533 * t533) + (t534 * t534)) + (t535 * t535)))
-        let !t537 = (if (abs t496) > 0 then (recip t496) else 0.0)
-        let !t538 = (t537 * ((if t528 > 0 then (t522 + (negate ((t525 / t527) * t511))) else t522) + (negate t478)))
-        let !t539 = (t526 * (t522 + t522))
-        let !t540 = (t526 * (t523 + t523))
-        let !t541 = (sqrt ((t539 * t539) + (t540 * t540)))
-        let !t542 = (if t541 > 0 then (recip (if (t541 - 1.0e-300) > 0 then t541 else 1.0e-300)) else 0.0)
-        let !t543 = (t542 * t539)
-        let !t544 = (t542 * t540)
-        let !t545 = (t537 * ((if t528 > 0 then (t523 + (negate ((t525 / t527) * t512))) else t523) + (negate t480)))
-        let !t546 = ((t543 * t538) + (t544 * t545))
-        let !t547 = (t538 + (negate (t546 * t543)))
-        let !t548 = (t537 * ((t479 + (t496 * t534)) + (negate t479)))
-        let !t549 = (t545 + (negate (t546 * t544)))
-        let !t550 = (sqrt (((t547 * t547) + (t548 * t548)) + (t549 * t549)))
-        let !t551 = (if t550 > 0 then (recip (if (t550 - 1.0e-300) > 0 then t550 else 1.0e-300)) else 0.0)
-        let !s552 = ((t497 * (t536 * (t551 * t547))) + (t529 * t533))
-        let !s553 = ((t497 * (t536 * (t551 * t548))) + (t529 * t534))
-        let !s554 = ((t497 * (t536 * (t551 * t549))) + (t529 * t535))
-        let !t555 = (s530 + (t496 * s552))
-        let !t556 = (s532 + (t496 * s554))
-        let !t557 = (sqrt ((t555 * t555) + (t556 * t556)))
-        let !t558 = (t557 - 1.0)
-        let !t559 = (recip (2.0 * t557))
-        let !t560 = (recip (2.0 * (sqrt ((s530 * s530) + (s532 * s532)))))
-        let !t561 = (t560 * (s530 + s530))
-        let !t562 = (t560 * (s532 + s532))
-        let !t563 = (sqrt ((t561 * t561) + (t562 * t562)))
-        let !t564 = (if t563 > 0 then (recip (if (t563 - 1.0e-300) > 0 then t563 else 1.0e-300)) else 0.0)
-        let !t565 = (t564 * t561)
-        let !t566 = (t564 * t562)
-        let !t567 = (((t559 * (t555 + t555)) * t565) + ((t559 * (t556 + t556)) * t566))
-        let !t568 = (if ((abs t558) - 1.0e-10) > 0 then (if (abs t567) > 0 then 1.0 else 0.0) else 0.0)
-        let !t569 = (if t568 > 0 then (t555 + (negate ((t558 / t567) * t565))) else t555)
-        let !t570 = (if t568 > 0 then (t556 + (negate ((t558 / t567) * t566))) else t556)
-        let !t571 = (sqrt ((t569 * t569) + (t570 * t570)))
-        let !t572 = (t571 - 1.0)
-        let !t573 = (recip (2.0 * t571))
-        let !t574 = (((t573 * (t569 + t569)) * t565) + ((t573 * (t570 + t570)) * t566))
-        let !t575 = (if ((abs t572) - 1.0e-10) > 0 then (if (abs t574) > 0 then 1.0 else 0.0) else 0.0)
-        let !t576 = (if t575 > 0 then (t569 + (negate ((t572 / t574) * t565))) else t569)
-        let !t577 = (if t575 > 0 then (t570 + (negate ((t572 / t574) * t566))) else t570)
-        let !t578 = (sqrt ((t576 * t576) + (t577 * t577)))
-        let !t579 = (t578 - 1.0)
-        let !t580 = (recip (2.0 * t578))
-        let !t581 = (((t580 * (t576 + t576)) * t565) + ((t580 * (t577 + t577)) * t566))
-        let !t582 = (if ((abs t579) - 1.0e-10) > 0 then (if (abs t581) > 0 then 1.0 else 0.0) else 0.0)
-        let !s583 = ((t497 * (if t582 > 0 then (t576 + (negate ((t579 / t581) * t565))) else t576)) + (t529 * s530))
-        let !s584 = ((t497 * (s531 + (t496 * s553))) + (t529 * s531))
-        let !s585 = ((t497 * (if t582 > 0 then (t577 + (negate ((t579 / t581) * t566))) else t577)) + (t529 * s532))
-        let !t586 = (sqrt (((s552 * s552) + (s553 * s553)) + (s554 * s554)))
-        let !t587 = (t537 * ((if t582 > 0 then (t576 + (negate ((t579 / t581) * t565))) else t576) + (negate s530)))
-        let !t588 = (t580 * (t576 + t576))
-        let !t589 = (t580 * (t577 + t577))
-        let !t590 = (sqrt ((t588 * t588) + (t589 * t589)))
-        let !t591 = (if t590 > 0 then (recip (if (t590 - 1.0e-300) > 0 then t590 else 1.0e-300)) else 0.0)
-        let !t592 = (t591 * t588)
-        let !t593 = (t591 * t589)
-        let !t594 = (t537 * ((if t582 > 0 then (t577 + (negate ((t579 / t581) * t566))) else t577) + (negate s532)))
-        let !t595 = ((t592 * t587) + (t593 * t594))
-        let !t596 = (t587 + (negate (t595 * t592)))
-        let !t597 = (t537 * ((s531 + (t496 * s553)) + (negate s531)))
-        let !t598 = (t594 + (negate (t595 * t593)))
-        let !t599 = (sqrt (((t596 * t596) + (t597 * t597)) + (t598 * t598)))
-        let !t600 = (if t599 > 0 then (recip (if (t599 - 1.0e-300) > 0 then t599 else 1.0e-300)) else 0.0)
-        let !s601 = ((t497 * (t586 * (t600 * t596))) + (t529 * s552))
-        let !s602 = ((t497 * (t586 * (t600 * t597))) + (t529 * s553))
-        let !s603 = ((t497 * (t586 * (t600 * t598))) + (t529 * s554))
-        let !t604 = (s583 + (t496 * s601))
-        let !t605 = (s585 + (t496 * s603))
-        let !t606 = (sqrt ((t604 * t604) + (t605 * t605)))
-        let !t607 = (t606 - 1.0)
-        let !t608 = (recip (2.0 * t606))
-        let !t609 = (recip (2.0 * (sqrt ((s583 * s583) + (s585 * s585)))))
-        let !t610 = (t609 * (s583 + s583))
-        let !t611 = (t609 * (s585 + s585))
-        let !t612 = (sqrt ((t610 * t610) + (t611 * t611)))
-        let !t613 = (if t612 > 0 then (recip (if (t612 - 1.0e-300) > 0 then t612 else 1.0e-300)) else 0.0)
-        let !t614 = (t613 * t610)
-        let !t615 = (t613 * t611)
-        let !t616 = (((t608 * (t604 + t604)) * t614) + ((t608 * (t605 + t605)) * t615))
-        let !t617 = (if ((abs t607) - 1.0e-10) > 0 then (if (abs t616) > 0 then 1.0 else 0.0) else 0.0)
-        let !t618 = (if t617 > 0 then (t604 + (negate ((t607 / t616) * t614))) else t604)
-        let !t619 = (if t617 > 0 then (t605 + (negate ((t607 / t616) * t615))) else t605)
-        let !t620 = (sqrt ((t618 * t618) + (t619 * t619)))
-        let !t621 = (t620 - 1.0)
-        let !t622 = (recip (2.0 * t620))
-        let !t623 = (((t622 * (t618 + t618)) * t614) + ((t622 * (t619 + t619)) * t615))
-        let !t624 = (if ((abs t621) - 1.0e-10) > 0 then (if (abs t623) > 0 then 1.0 else 0.0) else 0.0)
-        let !t625 = (if t624 > 0 then (t618 + (negate ((t621 / t623) * t614))) else t618)
-        let !t626 = (if t624 > 0 then (t619 + (negate ((t621 / t623) * t615))) else t619)
-        let !t627 = (sqrt ((t625 * t625) + (t626 * t626)))
-        let !t628 = (t627 - 1.0)
-        let !t629 = (recip (2.0 * t627))
-        let !t630 = (((t629 * (t625 + t625)) * t614) + ((t629 * (t626 + t626)) * t615))
-        let !t631 = (if ((abs t628) - 1.0e-10) > 0 then (if (abs t630) > 0 then 1.0 else 0.0) else 0.0)
-        let !s632 = ((t497 * (if t631 > 0 then (t625 + (negate ((t628 / t630) * t614))) else t625)) + (t529 * s583))
-        let !s633 = ((t497 * (s584 + (t496 * s602))) + (t529 * s584))
-        let !s634 = ((t497 * (if t631 > 0 then (t626 + (negate ((t628 / t630) * t615))) else t626)) + (t529 * s585))
-        let !t635 = (sqrt (((s601 * s601) + (s602 * s602)) + (s603 * s603)))
-        let !t636 = (t537 * ((if t631 > 0 then (t625 + (negate ((t628 / t630) * t614))) else t625) + (negate s583)))
-        let !t637 = (t629 * (t625 + t625))
-        let !t638 = (t629 * (t626 + t626))
-        let !t639 = (sqrt ((t637 * t637) + (t638 * t638)))
-        let !t640 = (if t639 > 0 then (recip (if (t639 - 1.0e-300) > 0 then t639 else 1.0e-300)) else 0.0)
-        let !t641 = (t640 * t637)
-        let !t642 = (t640 * t638)
-        let !t643 = (t537 * ((if t631 > 0 then (t626 + (negate ((t628 / t630) * t615))) else t626) + (negate s585)))
-        let !t644 = ((t641 * t636) + (t642 * t643))
-        let !t645 = (t636 + (negate (t644 * t641)))
-        let !t646 = (t537 * ((s584 + (t496 * s602)) + (negate s584)))
-        let !t647 = (t643 + (negate (t644 * t642)))
-        let !t648 = (sqrt (((t645 * t645) + (t646 * t646)) + (t647 * t647)))
-        let !t649 = (if t648 > 0 then (recip (if (t648 - 1.0e-300) > 0 then t648 else 1.0e-300)) else 0.0)
-        let !s650 = ((t497 * (t635 * (t649 * t645))) + (t529 * s601))
-        let !s651 = ((t497 * (t635 * (t649 * t646))) + (t529 * s602))
-        let !s652 = ((t497 * (t635 * (t649 * t647))) + (t529 * s603))
-        let !t653 = (s632 + (t496 * s650))
-        let !t654 = (s634 + (t496 * s652))
-        let !t655 = (sqrt ((t653 * t653) + (t654 * t654)))
-        let !t656 = (t655 - 1.0)
-        let !t657 = (recip (2.0 * t655))
-        let !t658 = (recip (2.0 * (sqrt ((s632 * s632) + (s634 * s634)))))
-        let !t659 = (t658 * (s632 + s632))
-        let !t660 = (t658 * (s634 + s634))
-        let !t661 = (sqrt ((t659 * t659) + (t660 * t660)))
-        let !t662 = (if t661 > 0 then (recip (if (t661 - 1.0e-300) > 0 then t661 else 1.0e-300)) else 0.0)
-        let !t663 = (t662 * t659)
-        let !t664 = (t662 * t660)
-        let !t665 = (((t657 * (t653 + t653)) * t663) + ((t657 * (t654 + t654)) * t664))
-        let !t666 = (if ((abs t656) - 1.0e-10) > 0 then (if (abs t665) > 0 then 1.0 else 0.0) else 0.0)
-        let !t667 = (if t666 > 0 then (t653 + (negate ((t656 / t665) * t663))) else t653)
-        let !t668 = (if t666 > 0 then (t654 + (negate ((t656 / t665) * t664))) else t654)
-        let !t669 = (sqrt ((t667 * t667) + (t668 * t668)))
-        let !t670 = (t669 - 1.0)
-        let !t671 = (recip (2.0 * t669))
-        let !t672 = (((t671 * (t667 + t667)) * t663) + ((t671 * (t668 + t668)) * t664))
-        let !t673 = (if ((abs t670) - 1.0e-10) > 0 then (if (abs t672) > 0 then 1.0 else 0.0) else 0.0)
-        let !t674 = (if t673 > 0 then (t667 + (negate ((t670 / t672) * t663))) else t667)
-        let !t675 = (if t673 > 0 then (t668 + (negate ((t670 / t672) * t664))) else t668)
-        let !t676 = (sqrt ((t674 * t674) + (t675 * t675)))
-        let !t677 = (t676 - 1.0)
-        let !t678 = (recip (2.0 * t676))
-        let !t679 = (((t678 * (t674 + t674)) * t663) + ((t678 * (t675 + t675)) * t664))
-        let !t680 = (if ((abs t677) - 1.0e-10) > 0 then (if (abs t679) > 0 then 1.0 else 0.0) else 0.0)
-        let !s681 = ((t497 * (if t680 > 0 then (t674 + (negate ((t677 / t679) * t663))) else t674)) + (t529 * s632))
-        let !s682 = ((t497 * (s633 + (t496 * s651))) + (t529 * s633))
-        let !s683 = ((t497 * (if t680 > 0 then (t675 + (negate ((t677 / t679) * t664))) else t675)) + (t529 * s634))
-        let !t684 = (sqrt (((s650 * s650) + (s651 * s651)) + (s652 * s652)))
-        let !t685 = (t537 * ((if t680 > 0 then (t674 + (negate ((t677 / t679) * t663))) else t674) + (negate s632)))
-        let !t686 = (t678 * (t674 + t674))
-        let !t687 = (t678 * (t675 + t675))
-        let !t688 = (sqrt ((t686 * t686) + (t687 * t687)))
-        let !t689 = (if t688 > 0 then (recip (if (t688 - 1.0e-300) > 0 then t688 else 1.0e-300)) else 0.0)
-        let !t690 = (t689 * t686)
-        let !t691 = (t689 * t687)
-        let !t692 = (t537 * ((if t680 > 0 then (t675 + (negate ((t677 / t679) * t664))) else t675) + (negate s634)))
-        let !t693 = ((t690 * t685) + (t691 * t692))
-        let !t694 = (t685 + (negate (t693 * t690)))
-        let !t695 = (t537 * ((s633 + (t496 * s651)) + (negate s633)))
-        let !t696 = (t692 + (negate (t693 * t691)))
-        let !t697 = (sqrt (((t694 * t694) + (t695 * t695)) + (t696 * t696)))
-        let !t698 = (if t697 > 0 then (recip (if (t697 - 1.0e-300) > 0 then t697 else 1.0e-300)) else 0.0)
-        let !s699 = ((t497 * (t684 * (t698 * t694))) + (t529 * s650))
-        let !s700 = ((t497 * (t684 * (t698 * t695))) + (t529 * s651))
-        let !s701 = ((t497 * (t684 * (t698 * t696))) + (t529 * s652))
-        t702 <- rdU mouse 4
-        t703 <- rdU mouse 5
-        t704 <- rdU mouse 6
-        t705 <- rdU mouse 7
-        t706 <- rdU mouse 8
-        t707 <- rdU mouse 9
-        let !t708 = (recip t459)
-        let !t709 = (6.283185307179586 * t705)
-        let !s710 = (recip (t461 * ((((2.0 * t708) * t706) * t709) + (t461 * ((t708 * t709) * t709)))))
-        let !s711 = ((t461 * ((t708 * t709) * t709)) * s710)
-        let !s712 = (s681 + (negate t462))
-        let !s713 = (s682 + (negate t463))
-        let !s714 = (s683 + (negate t464))
-        let !s715 = (s681 + (negate t702))
-        let !s716 = (s682 + (negate t703))
-        let !s717 = (s683 + (negate t704))
-        t718 <- rdU mouse 10
-        chkI vel (3 * (truncate t458)) 0 2
-        t719 <- rdU vel (3 * (truncate t458))
-        t720 <- rdU vel ((3 * (truncate t458)) + 1)
-        t721 <- rdU vel ((3 * (truncate t458)) + 2)
-        t722 <- rdU scalars ((6 * (truncate t458)) + 1)
-        let !t723 = (t707 * t461)
-        let !t724 = (negate t723)
-        let !t725 = (((((s713 * t470) - (s714 * t469)) * t465) + (((s714 * t468) - (s712 * t470)) * t466)) + (((s712 * t469) - (s713 * t468)) * t467))
-        let !t726 = (t718 + ((negate ((((((t468 * t719) + (t469 * t720)) + (t470 * t721)) + (t725 * t722)) + (s711 * (((s715 * t468) + (s716 * t469)) + (s717 * t470)))) + (s710 * t718))) / (((t459 * (((t468 * t468) + (t469 * t469)) + (t470 * t470))) + ((t460 * t725) * t725)) + s710)))
-        let !t727 = (if (t726 - t723) > 0 then t723 else t726)
-        let !t728 = (if (t724 - t727) > 0 then t724 else t727)
-        let !s729 = (if (1.0 - (abs (t728 - t728))) > 0 then t728 else 0.0)
-        wrU mouse 10 s729
-        t730 <- rdU scalars ((6 * (truncate t458)) + 2)
-        t731 <- rdU scalars ((6 * (truncate t458)) + 3)
-        t732 <- rdU vel (3 * (truncate t458))
-        t733 <- rdU vel ((3 * (truncate t458)) + 1)
-        t734 <- rdU vel ((3 * (truncate t458)) + 2)
-        t735 <- rdU scalars ((6 * (truncate t458)) + 1)
-        wrU vel (3 * (truncate t458)) (t732 + ((t730 * (s729 - t718)) * t468))
-        wrU vel ((3 * (truncate t458)) + 1) (t733 + ((t730 * (s729 - t718)) * t469))
-        wrU vel ((3 * (truncate t458)) + 2) (t734 + ((t730 * (s729 - t718)) * t470))
-        wrU scalars ((6 * (truncate t458)) + 1) (t735 + ((t731 * (s729 - t718)) * t725))
-        t736 <- rdU mouse 11
-        t737 <- rdU vel (3 * (truncate t458))
-        t738 <- rdU vel ((3 * (truncate t458)) + 1)
-        t739 <- rdU vel ((3 * (truncate t458)) + 2)
-        t740 <- rdU scalars ((6 * (truncate t458)) + 1)
-        let !t741 = (((((s713 * s473) - (s714 * s472)) * t465) + (((s714 * s471) - (s712 * s473)) * t466)) + (((s712 * s472) - (s713 * s471)) * t467))
-        let !t742 = (t736 + ((negate ((((((s471 * t737) + (s472 * t738)) + (s473 * t739)) + (t741 * t740)) + (s711 * (((s715 * s471) + (s716 * s472)) + (s717 * s473)))) + (s710 * t736))) / (((t459 * (((s471 * s471) + (s472 * s472)) + (s473 * s473))) + ((t460 * t741) * t741)) + s710)))
-        let !t743 = (if (t742 - t723) > 0 then t723 else t742)
-        let !t744 = (if (t724 - t743) > 0 then t724 else t743)
-        let !s745 = (if (1.0 - (abs (t744 - t744))) > 0 then t744 else 0.0)
-        wrU mouse 11 s745
-        t746 <- rdU scalars ((6 * (truncate t458)) + 2)
-        t747 <- rdU scalars ((6 * (truncate t458)) + 3)
-        t748 <- rdU vel (3 * (truncate t458))
-        t749 <- rdU vel ((3 * (truncate t458)) + 1)
-        t750 <- rdU vel ((3 * (truncate t458)) + 2)
-        t751 <- rdU scalars ((6 * (truncate t458)) + 1)
-        wrU vel (3 * (truncate t458)) (t748 + ((t746 * (s745 - t736)) * s471))
-        wrU vel ((3 * (truncate t458)) + 1) (t749 + ((t746 * (s745 - t736)) * s472))
-        wrU vel ((3 * (truncate t458)) + 2) (t750 + ((t746 * (s745 - t736)) * s473))
-        wrU scalars ((6 * (truncate t458)) + 1) (t751 + ((t747 * (s745 - t736)) * t741))
+        t314 <- rdU mouse 2
+        t315 <- rdU mouse 3
+        let !t316 = (t314 / 4.0)
+        let !t317 = (if (abs t316) > 0 then 1.0 else 0.0)
+        let !t318 = (t310 + t315)
+        let !t319 = (cos t318)
+        let !t320 = (sin t318)
+        let !t321 = (t298 + (t316 * ((t319 * t304) + (t320 * s307))))
+        let !t322 = (t300 + (t316 * ((t319 * t306) + (t320 * s309))))
+        let !t323 = (sqrt ((t321 * t321) + (t322 * t322)))
+        let !t324 = (t323 - 1.0)
+        let !t325 = (recip (2.0 * t323))
+        let !t326 = (recip (2.0 * (sqrt ((t298 * t298) + (t300 * t300)))))
+        let !t327 = (t326 * (t298 + t298))
+        let !t328 = (t326 * (t300 + t300))
+        let !t329 = (sqrt ((t327 * t327) + (t328 * t328)))
+        let !t330 = (if t329 > 0 then (recip (if (t329 - 1.0e-300) > 0 then t329 else 1.0e-300)) else 0.0)
+        let !t331 = (t330 * t327)
+        let !t332 = (t330 * t328)
+        let !t333 = (((t325 * (t321 + t321)) * t331) + ((t325 * (t322 + t322)) * t332))
+        let !t334 = (if ((abs t324) - 1.0e-10) > 0 then (if (abs t333) > 0 then 1.0 else 0.0) else 0.0)
+        let !t335 = (if t334 > 0 then (t321 + (negate ((t324 / t333) * t331))) else t321)
+        let !t336 = (if t334 > 0 then (t322 + (negate ((t324 / t333) * t332))) else t322)
+        let !t337 = (sqrt ((t335 * t335) + (t336 * t336)))
+        let !t338 = (t337 - 1.0)
+        let !t339 = (recip (2.0 * t337))
+        let !t340 = (((t339 * (t335 + t335)) * t331) + ((t339 * (t336 + t336)) * t332))
+        let !t341 = (if ((abs t338) - 1.0e-10) > 0 then (if (abs t340) > 0 then 1.0 else 0.0) else 0.0)
+        let !t342 = (if t341 > 0 then (t335 + (negate ((t338 / t340) * t331))) else t335)
+        let !t343 = (if t341 > 0 then (t336 + (negate ((t338 / t340) * t332))) else t336)
+        let !t344 = (sqrt ((t342 * t342) + (t343 * t343)))
+        let !t345 = (t344 - 1.0)
+        let !t346 = (recip (2.0 * t344))
+        let !t347 = (((t346 * (t342 + t342)) * t331) + ((t346 * (t343 + t343)) * t332))
+        let !t348 = (if ((abs t345) - 1.0e-10) > 0 then (if (abs t347) > 0 then 1.0 else 0.0) else 0.0)
+        let !t349 = (1.0 - t317)
+        let !s350 = ((t317 * (if t348 > 0 then (t342 + (negate ((t345 / t347) * t331))) else t342)) + (t349 * t298))
+        let !s351 = ((t317 * (t299 + (t316 * ((t319 * t305) + (t320 * s308))))) + (t349 * t299))
+        let !s352 = ((t317 * (if t348 > 0 then (t343 + (negate ((t345 / t347) * t332))) else t343)) + (t349 * t300))
+        let !t353 = ((t319 * t304) + (t320 * s307))
+        let !t354 = ((t319 * t305) + (t320 * s308))
+        let !t355 = ((t319 * t306) + (t320 * s309))
+        let !t356 = (sqrt (((t353 * t353) + (t354 * t354)) + (t355 * t355)))
+        let !t357 = (if (abs t316) > 0 then (recip t316) else 0.0)
+        let !t358 = (t357 * ((if t348 > 0 then (t342 + (negate ((t345 / t347) * t331))) else t342) + (negate t298)))
+        let !t359 = (t346 * (t342 + t342))
+        let !t360 = (t346 * (t343 + t343))
+        let !t361 = (sqrt ((t359 * t359) + (t360 * t360)))
+        let !t362 = (if t361 > 0 then (recip (if (t361 - 1.0e-300) > 0 then t361 else 1.0e-300)) else 0.0)
+        let !t363 = (t362 * t359)
+        let !t364 = (t362 * t360)
+        let !t365 = (t357 * ((if t348 > 0 then (t343 + (negate ((t345 / t347) * t332))) else t343) + (negate t300)))
+        let !t366 = ((t363 * t358) + (t364 * t365))
+        let !t367 = (t358 + (negate (t366 * t363)))
+        let !t368 = (t357 * ((t299 + (t316 * t354)) + (negate t299)))
+        let !t369 = (t365 + (negate (t366 * t364)))
+        let !t370 = (sqrt (((t367 * t367) + (t368 * t368)) + (t369 * t369)))
+        let !t371 = (if t370 > 0 then (recip (if (t370 - 1.0e-300) > 0 then t370 else 1.0e-300)) else 0.0)
+        let !s372 = ((t317 * (t356 * (t371 * t367))) + (t349 * t353))
+        let !s373 = ((t317 * (t356 * (t371 * t368))) + (t349 * t354))
+        let !s374 = ((t317 * (t356 * (t371 * t369))) + (t349 * t355))
+        let !t375 = (s350 + (t316 * s372))
+        let !t376 = (s352 + (t316 * s374))
+        let !t377 = (sqrt ((t375 * t375) + (t376 * t376)))
+        let !t378 = (t377 - 1.0)
+        let !t379 = (recip (2.0 * t377))
+        let !t380 = (recip (2.0 * (sqrt ((s350 * s350) + (s352 * s352)))))
+        let !t381 = (t380 * (s350 + s350))
+        let !t382 = (t380 * (s352 + s352))
+        let !t383 = (sqrt ((t381 * t381) + (t382 * t382)))
+        let !t384 = (if t383 > 0 then (recip (if (t383 - 1.0e-300) > 0 then t383 else 1.0e-300)) else 0.0)
+        let !t385 = (t384 * t381)
+        let !t386 = (t384 * t382)
+        let !t387 = (((t379 * (t375 + t375)) * t385) + ((t379 * (t376 + t376)) * t386))
+        let !t388 = (if ((abs t378) - 1.0e-10) > 0 then (if (abs t387) > 0 then 1.0 else 0.0) else 0.0)
+        let !t389 = (if t388 > 0 then (t375 + (negate ((t378 / t387) * t385))) else t375)
+        let !t390 = (if t388 > 0 then (t376 + (negate ((t378 / t387) * t386))) else t376)
+        let !t391 = (sqrt ((t389 * t389) + (t390 * t390)))
+        let !t392 = (t391 - 1.0)
+        let !t393 = (recip (2.0 * t391))
+        let !t394 = (((t393 * (t389 + t389)) * t385) + ((t393 * (t390 + t390)) * t386))
+        let !t395 = (if ((abs t392) - 1.0e-10) > 0 then (if (abs t394) > 0 then 1.0 else 0.0) else 0.0)
+        let !t396 = (if t395 > 0 then (t389 + (negate ((t392 / t394) * t385))) else t389)
+        let !t397 = (if t395 > 0 then (t390 + (negate ((t392 / t394) * t386))) else t390)
+        let !t398 = (sqrt ((t396 * t396) + (t397 * t397)))
+        let !t399 = (t398 - 1.0)
+        let !t400 = (recip (2.0 * t398))
+        let !t401 = (((t400 * (t396 + t396)) * t385) + ((t400 * (t397 + t397)) * t386))
+        let !t402 = (if ((abs t399) - 1.0e-10) > 0 then (if (abs t401) > 0 then 1.0 else 0.0) else 0.0)
+        let !s403 = ((t317 * (if t402 > 0 then (t396 + (negate ((t399 / t401) * t385))) else t396)) + (t349 * s350))
+        let !s404 = ((t317 * (s351 + (t316 * s373))) + (t349 * s351))
+        let !s405 = ((t317 * (if t402 > 0 then (t397 + (negate ((t399 / t401) * t386))) else t397)) + (t349 * s352))
+        let !t406 = (sqrt (((s372 * s372) + (s373 * s373)) + (s374 * s374)))
+        let !t407 = (t357 * ((if t402 > 0 then (t396 + (negate ((t399 / t401) * t385))) else t396) + (negate s350)))
+        let !t408 = (t400 * (t396 + t396))
+        let !t409 = (t400 * (t397 + t397))
+        let !t410 = (sqrt ((t408 * t408) + (t409 * t409)))
+        let !t411 = (if t410 > 0 then (recip (if (t410 - 1.0e-300) > 0 then t410 else 1.0e-300)) else 0.0)
+        let !t412 = (t411 * t408)
+        let !t413 = (t411 * t409)
+        let !t414 = (t357 * ((if t402 > 0 then (t397 + (negate ((t399 / t401) * t386))) else t397) + (negate s352)))
+        let !t415 = ((t412 * t407) + (t413 * t414))
+        let !t416 = (t407 + (negate (t415 * t412)))
+        let !t417 = (t357 * ((s351 + (t316 * s373)) + (negate s351)))
+        let !t418 = (t414 + (negate (t415 * t413)))
+        let !t419 = (sqrt (((t416 * t416) + (t417 * t417)) + (t418 * t418)))
+        let !t420 = (if t419 > 0 then (recip (if (t419 - 1.0e-300) > 0 then t419 else 1.0e-300)) else 0.0)
+        let !s421 = ((t317 * (t406 * (t420 * t416))) + (t349 * s372))
+        let !s422 = ((t317 * (t406 * (t420 * t417))) + (t349 * s373))
+        let !s423 = ((t317 * (t406 * (t420 * t418))) + (t349 * s374))
+        let !t424 = (s403 + (t316 * s421))
+        let !t425 = (s405 + (t316 * s423))
+        let !t426 = (sqrt ((t424 * t424) + (t425 * t425)))
+        let !t427 = (t426 - 1.0)
+        let !t428 = (recip (2.0 * t426))
+        let !t429 = (recip (2.0 * (sqrt ((s403 * s403) + (s405 * s405)))))
+        let !t430 = (t429 * (s403 + s403))
+        let !t431 = (t429 * (s405 + s405))
+        let !t432 = (sqrt ((t430 * t430) + (t431 * t431)))
+        let !t433 = (if t432 > 0 then (recip (if (t432 - 1.0e-300) > 0 then t432 else 1.0e-300)) else 0.0)
+        let !t434 = (t433 * t430)
+        let !t435 = (t433 * t431)
+        let !t436 = (((t428 * (t424 + t424)) * t434) + ((t428 * (t425 + t425)) * t435))
+        let !t437 = (if ((abs t427) - 1.0e-10) > 0 then (if (abs t436) > 0 then 1.0 else 0.0) else 0.0)
+        let !t438 = (if t437 > 0 then (t424 + (negate ((t427 / t436) * t434))) else t424)
+        let !t439 = (if t437 > 0 then (t425 + (negate ((t427 / t436) * t435))) else t425)
+        let !t440 = (sqrt ((t438 * t438) + (t439 * t439)))
+        let !t441 = (t440 - 1.0)
+        let !t442 = (recip (2.0 * t440))
+        let !t443 = (((t442 * (t438 + t438)) * t434) + ((t442 * (t439 + t439)) * t435))
+        let !t444 = (if ((abs t441) - 1.0e-10) > 0 then (if (abs t443) > 0 then 1.0 else 0.0) else 0.0)
+        let !t445 = (if t444 > 0 then (t438 + (negate ((t441 / t443) * t434))) else t438)
+        let !t446 = (if t444 > 0 then (t439 + (negate ((t441 / t443) * t435))) else t439)
+        let !t447 = (sqrt ((t445 * t445) + (t446 * t446)))
+        let !t448 = (t447 - 1.0)
+        let !t449 = (recip (2.0 * t447))
+        let !t450 = (((t449 * (t445 + t445)) * t434) + ((t449 * (t446 + t446)) * t435))
+        let !t451 = (if ((abs t448) - 1.0e-10) > 0 then (if (abs t450) > 0 then 1.0 else 0.0) else 0.0)
+        let !s452 = ((t317 * (if t451 > 0 then (t445 + (negate ((t448 / t450) * t434))) else t445)) + (t349 * s403))
+        let !s453 = ((t317 * (s404 + (t316 * s422))) + (t349 * s404))
+        let !s454 = ((t317 * (if t451 > 0 then (t446 + (negate ((t448 / t450) * t435))) else t446)) + (t349 * s405))
+        let !t455 = (sqrt (((s421 * s421) + (s422 * s422)) + (s423 * s423)))
+        let !t456 = (t357 * ((if t451 > 0 then (t445 + (negate ((t448 / t450) * t434))) else t445) + (negate s403)))
+        let !t457 = (t449 * (t445 + t445))
+        let !t458 = (t449 * (t446 + t446))
+        let !t459 = (sqrt ((t457 * t457) + (t458 * t458)))
+        let !t460 = (if t459 > 0 then (recip (if (t459 - 1.0e-300) > 0 then t459 else 1.0e-300)) else 0.0)
+        let !t461 = (t460 * t457)
+        let !t462 = (t460 * t458)
+        let !t463 = (t357 * ((if t451 > 0 then (t446 + (negate ((t448 / t450) * t435))) else t446) + (negate s405)))
+        let !t464 = ((t461 * t456) + (t462 * t463))
+        let !t465 = (t456 + (negate (t464 * t461)))
+        let !t466 = (t357 * ((s404 + (t316 * s422)) + (negate s404)))
+        let !t467 = (t463 + (negate (t464 * t462)))
+        let !t468 = (sqrt (((t465 * t465) + (t466 * t466)) + (t467 * t467)))
+        let !t469 = (if t468 > 0 then (recip (if (t468 - 1.0e-300) > 0 then t468 else 1.0e-300)) else 0.0)
+        let !s470 = ((t317 * (t455 * (t469 * t465))) + (t349 * s421))
+        let !s471 = ((t317 * (t455 * (t469 * t466))) + (t349 * s422))
+        let !s472 = ((t317 * (t455 * (t469 * t467))) + (t349 * s423))
+        let !t473 = (s452 + (t316 * s470))
+        let !t474 = (s454 + (t316 * s472))
+        let !t475 = (sqrt ((t473 * t473) + (t474 * t474)))
+        let !t476 = (t475 - 1.0)
+        let !t477 = (recip (2.0 * t475))
+        let !t478 = (recip (2.0 * (sqrt ((s452 * s452) + (s454 * s454)))))
+        let !t479 = (t478 * (s452 + s452))
+        let !t480 = (t478 * (s454 + s454))
+        let !t481 = (sqrt ((t479 * t479) + (t480 * t480)))
+        let !t482 = (if t481 > 0 then (recip (if (t481 - 1.0e-300) > 0 then t481 else 1.0e-300)) else 0.0)
+        let !t483 = (t482 * t479)
+        let !t484 = (t482 * t480)
+        let !t485 = (((t477 * (t473 + t473)) * t483) + ((t477 * (t474 + t474)) * t484))
+        let !t486 = (if ((abs t476) - 1.0e-10) > 0 then (if (abs t485) > 0 then 1.0 else 0.0) else 0.0)
+        let !t487 = (if t486 > 0 then (t473 + (negate ((t476 / t485) * t483))) else t473)
+        let !t488 = (if t486 > 0 then (t474 + (negate ((t476 / t485) * t484))) else t474)
+        let !t489 = (sqrt ((t487 * t487) + (t488 * t488)))
+        let !t490 = (t489 - 1.0)
+        let !t491 = (recip (2.0 * t489))
+        let !t492 = (((t491 * (t487 + t487)) * t483) + ((t491 * (t488 + t488)) * t484))
+        let !t493 = (if ((abs t490) - 1.0e-10) > 0 then (if (abs t492) > 0 then 1.0 else 0.0) else 0.0)
+        let !t494 = (if t493 > 0 then (t487 + (negate ((t490 / t492) * t483))) else t487)
+        let !t495 = (if t493 > 0 then (t488 + (negate ((t490 / t492) * t484))) else t488)
+        let !t496 = (sqrt ((t494 * t494) + (t495 * t495)))
+        let !t497 = (t496 - 1.0)
+        let !t498 = (recip (2.0 * t496))
+        let !t499 = (((t498 * (t494 + t494)) * t483) + ((t498 * (t495 + t495)) * t484))
+        let !t500 = (if ((abs t497) - 1.0e-10) > 0 then (if (abs t499) > 0 then 1.0 else 0.0) else 0.0)
+        let !s501 = ((t317 * (if t500 > 0 then (t494 + (negate ((t497 / t499) * t483))) else t494)) + (t349 * s452))
+        let !s502 = ((t317 * (s453 + (t316 * s471))) + (t349 * s453))
+        let !s503 = ((t317 * (if t500 > 0 then (t495 + (negate ((t497 / t499) * t484))) else t495)) + (t349 * s454))
+        let !t504 = (sqrt (((s470 * s470) + (s471 * s471)) + (s472 * s472)))
+        let !t505 = (t357 * ((if t500 > 0 then (t494 + (negate ((t497 / t499) * t483))) else t494) + (negate s452)))
+        let !t506 = (t498 * (t494 + t494))
+        let !t507 = (t498 * (t495 + t495))
+        let !t508 = (sqrt ((t506 * t506) + (t507 * t507)))
+        let !t509 = (if t508 > 0 then (recip (if (t508 - 1.0e-300) > 0 then t508 else 1.0e-300)) else 0.0)
+        let !t510 = (t509 * t506)
+        let !t511 = (t509 * t507)
+        let !t512 = (t357 * ((if t500 > 0 then (t495 + (negate ((t497 / t499) * t484))) else t495) + (negate s454)))
+        let !t513 = ((t510 * t505) + (t511 * t512))
+        let !t514 = (t505 + (negate (t513 * t510)))
+        let !t515 = (t357 * ((s453 + (t316 * s471)) + (negate s453)))
+        let !t516 = (t512 + (negate (t513 * t511)))
+        let !t517 = (sqrt (((t514 * t514) + (t515 * t515)) + (t516 * t516)))
+        let !t518 = (if t517 > 0 then (recip (if (t517 - 1.0e-300) > 0 then t517 else 1.0e-300)) else 0.0)
+        let !s519 = ((t317 * (t504 * (t518 * t514))) + (t349 * s470))
+        let !s520 = ((t317 * (t504 * (t518 * t515))) + (t349 * s471))
+        let !s521 = ((t317 * (t504 * (t518 * t516))) + (t349 * s472))
+        t522 <- rdU mouse 4
+        t523 <- rdU mouse 5
+        t524 <- rdU mouse 6
+        t525 <- rdU mouse 7
+        t526 <- rdU mouse 8
+        t527 <- rdU mouse 9
+        let !t528 = (recip t279)
+        let !t529 = (6.283185307179586 * t525)
+        let !s530 = (recip (t281 * ((((2.0 * t528) * t526) * t529) + (t281 * ((t528 * t529) * t529)))))
+        let !s531 = ((t281 * ((t528 * t529) * t529)) * s530)
+        let !s532 = (s501 + (negate t282))
+        let !s533 = (s502 + (negate t283))
+        let !s534 = (s503 + (negate t284))
+        let !s535 = (s501 + (negate t522))
+        let !s536 = (s502 + (negate t523))
+        let !s537 = (s503 + (negate t524))
+        t538 <- rdU mouse 10
+        chkI vel (3 * (truncate t278)) 0 2
+        t539 <- rdU vel (3 * (truncate t278))
+        t540 <- rdU vel ((3 * (truncate t278)) + 1)
+        t541 <- rdU vel ((3 * (truncate t278)) + 2)
+        t542 <- rdU scalars ((8 * (truncate t278)) + 1)
+        let !t543 = (t527 * t281)
+        let !t544 = (negate t543)
+        let !t545 = (((((s533 * t290) - (s534 * t289)) * t285) + (((s534 * t288) - (s532 * t290)) * t286)) + (((s532 * t289) - (s533 * t288)) * t287))
+        let !t546 = (t538 + ((negate ((((((t288 * t539) + (t289 * t540)) + (t290 * t541)) + (t545 * t542)) + (s531 * (((s535 * t288) + (s536 * t289)) + (s537 * t290)))) + (s530 * t538))) / (((t279 * (((t288 * t288) + (t289 * t289)) + (t290 * t290))) + ((t280 * t545) * t545)) + s530)))
+        let !t547 = (if (t546 - t543) > 0 then t543 else t546)
+        let !t548 = (if (t544 - t547) > 0 then t544 else t547)
+        let !s549 = (if (1.0 - (abs (t548 - t548))) > 0 then t548 else 0.0)
+        wrU mouse 10 s549
+        t550 <- rdU scalars ((8 * (truncate t278)) + 2)
+        t551 <- rdU scalars ((8 * (truncate t278)) + 3)
+        t552 <- rdU vel (3 * (truncate t278))
+        t553 <- rdU vel ((3 * (truncate t278)) + 1)
+        t554 <- rdU vel ((3 * (truncate t278)) + 2)
+        t555 <- rdU scalars ((8 * (truncate t278)) + 1)
+        wrU vel (3 * (truncate t278)) (t552 + ((t550 * (s549 - t538)) * t288))
+        wrU vel ((3 * (truncate t278)) + 1) (t553 + ((t550 * (s549 - t538)) * t289))
+        wrU vel ((3 * (truncate t278)) + 2) (t554 + ((t550 * (s549 - t538)) * t290))
+        wrU scalars ((8 * (truncate t278)) + 1) (t555 + ((t551 * (s549 - t538)) * t545))
+        t556 <- rdU mouse 11
+        t557 <- rdU vel (3 * (truncate t278))
+        t558 <- rdU vel ((3 * (truncate t278)) + 1)
+        t559 <- rdU vel ((3 * (truncate t278)) + 2)
+        t560 <- rdU scalars ((8 * (truncate t278)) + 1)
+        let !t561 = (((((s533 * s293) - (s534 * s292)) * t285) + (((s534 * s291) - (s532 * s293)) * t286)) + (((s532 * s292) - (s533 * s291)) * t287))
+        let !t562 = (t556 + ((negate ((((((s291 * t557) + (s292 * t558)) + (s293 * t559)) + (t561 * t560)) + (s531 * (((s535 * s291) + (s536 * s292)) + (s537 * s293)))) + (s530 * t556))) / (((t279 * (((s291 * s291) + (s292 * s292)) + (s293 * s293))) + ((t280 * t561) * t561)) + s530)))
+        let !t563 = (if (t562 - t543) > 0 then t543 else t562)
+        let !t564 = (if (t544 - t563) > 0 then t544 else t563)
+        let !s565 = (if (1.0 - (abs (t564 - t564))) > 0 then t564 else 0.0)
+        wrU mouse 11 s565
+        t566 <- rdU scalars ((8 * (truncate t278)) + 2)
+        t567 <- rdU scalars ((8 * (truncate t278)) + 3)
+        t568 <- rdU vel (3 * (truncate t278))
+        t569 <- rdU vel ((3 * (truncate t278)) + 1)
+        t570 <- rdU vel ((3 * (truncate t278)) + 2)
+        t571 <- rdU scalars ((8 * (truncate t278)) + 1)
+        wrU vel (3 * (truncate t278)) (t568 + ((t566 * (s565 - t556)) * s291))
+        wrU vel ((3 * (truncate t278)) + 1) (t569 + ((t566 * (s565 - t556)) * s292))
+        wrU vel ((3 * (truncate t278)) + 2) (t570 + ((t566 * (s565 - t556)) * s293))
+        wrU scalars ((8 * (truncate t278)) + 1) (t571 + ((t567 * (s565 - t556)) * t561))
         pure ()
       else do
         pure ()
@@ -1749,33 +1477,35 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t752 <- rdU meta 0
-  loopI 0.0 t752 $ \i753 -> do
-    let !d753 = fromIntegral i753 :: Double
-    chkI bodyPrev (2 * i753) 1 1
-    wrU bodyPrev ((2 * i753) + 1) 0.0
+  chkI meta 0 0 2
+  t572 <- rdU meta 2
+  t573 <- rdU meta 0
+  loopI 0.0 t573 $ \i574 -> do
+    let !d574 = fromIntegral i574 :: Double
+    chkI bodyPrev (2 * i574) 1 1
+    wrU bodyPrev ((2 * i574) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i754 -> do
-    let !d754 = fromIntegral i754 :: Double
-    chkI contacts (30 * i754) 2 25
-    t755 <- rdU contacts ((30 * i754) + 2)
-    chkI prev (4 * i754) 0 3
-    wrU prev (4 * i754) t755
-    t756 <- rdU contacts ((30 * i754) + 3)
-    wrU prev ((4 * i754) + 1) t756
-    t757 <- rdU contacts ((30 * i754) + 24)
-    wrU prev ((4 * i754) + 2) t757
-    t758 <- rdU contacts ((30 * i754) + 25)
-    wrU prev ((4 * i754) + 3) t758
-    chkI bodyPrev (2 * (truncate t755)) 1 1
-    t759 <- rdU bodyPrev ((2 * (truncate t755)) + 1)
-    if (0.5 - t759) > 0 then do
-      chkI bodyPrev (2 * (truncate t755)) 0 0
-      wrU bodyPrev (2 * (truncate t755)) d754
+  loopI 0.0 t572 $ \i575 -> do
+    let !d575 = fromIntegral i575 :: Double
+    chkI contacts (30 * i575) 2 25
+    t576 <- rdU contacts ((30 * i575) + 2)
+    chkI prev (4 * i575) 0 3
+    wrU prev (4 * i575) t576
+    t577 <- rdU contacts ((30 * i575) + 3)
+    wrU prev ((4 * i575) + 1) t577
+    t578 <- rdU contacts ((30 * i575) + 24)
+    wrU prev ((4 * i575) + 2) t578
+    t579 <- rdU contacts ((30 * i575) + 25)
+    wrU prev ((4 * i575) + 3) t579
+    chkI bodyPrev (2 * (truncate t576)) 1 1
+    t580 <- rdU bodyPrev ((2 * (truncate t576)) + 1)
+    if (0.5 - t580) > 0 then do
+      chkI bodyPrev (2 * (truncate t576)) 0 0
+      wrU bodyPrev (2 * (truncate t576)) d575
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t755)) + 1) (t759 + 1.0)
+    wrU bodyPrev ((2 * (truncate t576)) + 1) (t580 + 1.0)
     pure ()
   pure ()
 
@@ -1799,9 +1529,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     t9 <- rdU axis (3 * i2)
     t10 <- rdU axis ((3 * i2) + 1)
     t11 <- rdU axis ((3 * i2) + 2)
-    chkI scalars (6 * i2) 0 1
-    t12 <- rdU scalars (6 * i2)
-    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI scalars (8 * i2) 0 1
+    t12 <- rdU scalars (8 * i2)
+    t13 <- rdU scalars ((8 * i2) + 1)
     chkI normal (3 * i2) 0 2
     t14 <- rdU normal (3 * i2)
     t15 <- rdU normal ((3 * i2) + 1)
@@ -1924,13 +1654,13 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
       wrU normal (3 * i2) s82
       wrU normal ((3 * i2) + 1) s83
       wrU normal ((3 * i2) + 2) s84
-      wrU scalars (6 * i2) t120
+      wrU scalars (8 * i2) t120
       pure ()
     else do
       wrU vel (3 * i2) 0.0
       wrU vel ((3 * i2) + 1) 0.0
       wrU vel ((3 * i2) + 2) 0.0
-      wrU scalars ((6 * i2) + 1) 0.0
+      wrU scalars ((8 * i2) + 1) 0.0
       chkI meta 0 1 1
       t122 <- rdU meta 1
       wrU meta 1 (t122 + 1.0)
@@ -1957,11 +1687,11 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     t8 <- rdU normal (3 * i1)
     t9 <- rdU normal ((3 * i1) + 1)
     t10 <- rdU normal ((3 * i1) + 2)
-    chkI scalars (6 * i1) 0 5
-    t11 <- rdU scalars (6 * i1)
+    chkI scalars (8 * i1) 0 7
+    t11 <- rdU scalars (8 * i1)
     chkI params 0 10 10
     t12 <- rdU params 10
-    t13 <- rdU scalars ((6 * i1) + 5)
+    t13 <- rdU scalars ((8 * i1) + 5)
     chkI verts (291 * i1) 0 2
     wrU verts (291 * i1) t2
     wrU verts ((291 * i1) + 1) t3
@@ -1970,532 +1700,536 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    wrU locals 0 (cos t11)
-    wrU locals 1 (sin t11)
+    let !s18 = (cos t11)
+    let !s19 = (sin t11)
+    wrU scalars ((8 * i1) + 6) s18
+    wrU scalars ((8 * i1) + 7) s19
+    wrU locals 0 s18
+    wrU locals 1 s19
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i18 -> do
-        let !d18 = fromIntegral i18 :: Double
-        t19 <- rdU locals 0
-        t20 <- rdU locals 1
-        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
-        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
-        let !s21 = ((t19 * t5) + (t20 * s14))
-        let !s22 = ((t19 * t6) + (t20 * s15))
-        let !s23 = ((t19 * t7) + (t20 * s16))
-        chkI walk (12 * i18) 3 5
-        wrU walk ((12 * i18) + 3) s21
-        wrU walk ((12 * i18) + 4) s22
-        wrU walk ((12 * i18) + 5) s23
+      loopI 0.0 24.0 $ \i20 -> do
+        let !d20 = fromIntegral i20 :: Double
+        t21 <- rdU locals 0
+        t22 <- rdU locals 1
+        wrU locals 0 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
+        wrU locals 1 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
+        let !s23 = ((t21 * t5) + (t22 * s14))
+        let !s24 = ((t21 * t6) + (t22 * s15))
+        let !s25 = ((t21 * t7) + (t22 * s16))
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
-      loopI 0.0 24.0 $ \i24 -> do
-        let !d24 = fromIntegral i24 :: Double
-        chkI radii ((24 * i1) + i24) 0 0
-        t25 <- rdU radii ((24 * i1) + i24)
-        let !s26 = (t25 / 4.0)
-        chkI walk (12 * i24) 3 11
-        t27 <- rdU walk ((12 * i24) + 3)
-        t28 <- rdU walk ((12 * i24) + 4)
-        t29 <- rdU walk ((12 * i24) + 5)
-        let !s30 = (t2 + (s26 * t27))
-        let !s31 = (t3 + (s26 * t28))
-        let !s32 = (t4 + (s26 * t29))
-        let !t33 = (sqrt ((s30 * s30) + (s32 * s32)))
-        let !t34 = (t33 - 1.0)
-        let !t35 = (recip (2.0 * t33))
-        let !t36 = (((t35 * (s30 + s30)) * t8) + ((t35 * (s32 + s32)) * t10))
-        let !t37 = (if ((abs t34) - 1.0e-10) > 0 then (if (abs t36) > 0 then 1.0 else 0.0) else 0.0)
-        let !s38 = (if t37 > 0 then (s30 + (negate ((t34 / t36) * t8))) else s30)
-        let !s39 = (if t37 > 0 then (s31 + (negate ((t34 / t36) * t9))) else s31)
-        let !s40 = (if t37 > 0 then (s32 + (negate ((t34 / t36) * t10))) else s32)
-        wrU walk ((12 * i24) + 9) s38
-        wrU walk ((12 * i24) + 10) s39
-        wrU walk ((12 * i24) + 11) s40
+      loopI 0.0 24.0 $ \i26 -> do
+        let !d26 = fromIntegral i26 :: Double
+        chkI radii ((24 * i1) + i26) 0 0
+        t27 <- rdU radii ((24 * i1) + i26)
+        let !s28 = (t27 / 4.0)
+        chkI walk (12 * i26) 3 11
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (sqrt ((s32 * s32) + (s34 * s34)))
+        let !t36 = (t35 - 1.0)
+        let !t37 = (recip (2.0 * t35))
+        let !t38 = (((t37 * (s32 + s32)) * t8) + ((t37 * (s34 + s34)) * t10))
+        let !t39 = (if ((abs t36) - 1.0e-10) > 0 then (if (abs t38) > 0 then 1.0 else 0.0) else 0.0)
+        let !s40 = (if t39 > 0 then (s32 + (negate ((t36 / t38) * t8))) else s32)
+        let !s41 = (if t39 > 0 then (s33 + (negate ((t36 / t38) * t9))) else s33)
+        let !s42 = (if t39 > 0 then (s34 + (negate ((t36 / t38) * t10))) else s34)
+        wrU walk ((12 * i26) + 9) s40
+        wrU walk ((12 * i26) + 10) s41
+        wrU walk ((12 * i26) + 11) s42
         pure ()
-      loopI 0.0 24.0 $ \i41 -> do
-        let !d41 = fromIntegral i41 :: Double
-        chkI walk (12 * i41) 9 11
-        t42 <- rdU walk ((12 * i41) + 9)
-        t43 <- rdU walk ((12 * i41) + 10)
-        t44 <- rdU walk ((12 * i41) + 11)
-        let !t45 = (sqrt ((t42 * t42) + (t44 * t44)))
-        let !t46 = (t45 - 1.0)
-        let !t47 = (recip (2.0 * t45))
-        let !t48 = (((t47 * (t42 + t42)) * t8) + ((t47 * (t44 + t44)) * t10))
-        let !t49 = (if ((abs t46) - 1.0e-10) > 0 then (if (abs t48) > 0 then 1.0 else 0.0) else 0.0)
-        let !s50 = (if t49 > 0 then (t42 + (negate ((t46 / t48) * t8))) else t42)
-        let !s51 = (if t49 > 0 then (t43 + (negate ((t46 / t48) * t9))) else t43)
-        let !s52 = (if t49 > 0 then (t44 + (negate ((t46 / t48) * t10))) else t44)
-        wrU walk ((12 * i41) + 9) s50
-        wrU walk ((12 * i41) + 10) s51
-        wrU walk ((12 * i41) + 11) s52
+      loopI 0.0 24.0 $ \i43 -> do
+        let !d43 = fromIntegral i43 :: Double
+        chkI walk (12 * i43) 9 11
+        t44 <- rdU walk ((12 * i43) + 9)
+        t45 <- rdU walk ((12 * i43) + 10)
+        t46 <- rdU walk ((12 * i43) + 11)
+        let !t47 = (sqrt ((t44 * t44) + (t46 * t46)))
+        let !t48 = (t47 - 1.0)
+        let !t49 = (recip (2.0 * t47))
+        let !t50 = (((t49 * (t44 + t44)) * t8) + ((t49 * (t46 + t46)) * t10))
+        let !t51 = (if ((abs t48) - 1.0e-10) > 0 then (if (abs t50) > 0 then 1.0 else 0.0) else 0.0)
+        let !s52 = (if t51 > 0 then (t44 + (negate ((t48 / t50) * t8))) else t44)
+        let !s53 = (if t51 > 0 then (t45 + (negate ((t48 / t50) * t9))) else t45)
+        let !s54 = (if t51 > 0 then (t46 + (negate ((t48 / t50) * t10))) else t46)
+        wrU walk ((12 * i43) + 9) s52
+        wrU walk ((12 * i43) + 10) s53
+        wrU walk ((12 * i43) + 11) s54
         pure ()
-      loopI 0.0 24.0 $ \i53 -> do
-        let !d53 = fromIntegral i53 :: Double
-        chkI walk (12 * i53) 0 11
-        t54 <- rdU walk ((12 * i53) + 9)
-        t55 <- rdU walk ((12 * i53) + 10)
-        t56 <- rdU walk ((12 * i53) + 11)
-        chkI radii ((24 * i1) + i53) 0 0
-        t57 <- rdU radii ((24 * i1) + i53)
-        let !s58 = (t57 / 4.0)
-        t59 <- rdU walk ((12 * i53) + 3)
-        t60 <- rdU walk ((12 * i53) + 4)
-        t61 <- rdU walk ((12 * i53) + 5)
-        let !t62 = (if (abs s58) > 0 then 1.0 else 0.0)
-        let !t63 = (sqrt ((t54 * t54) + (t56 * t56)))
-        let !t64 = (t63 - 1.0)
-        let !t65 = (recip (2.0 * t63))
-        let !t66 = (((t65 * (t54 + t54)) * t8) + ((t65 * (t56 + t56)) * t10))
-        let !t67 = (if ((abs t64) - 1.0e-10) > 0 then (if (abs t66) > 0 then 1.0 else 0.0) else 0.0)
-        let !t68 = (1.0 - t62)
-        let !s69 = ((t62 * (if t67 > 0 then (t54 + (negate ((t64 / t66) * t8))) else t54)) + (t68 * t2))
-        let !s70 = ((t62 * (if t67 > 0 then (t55 + (negate ((t64 / t66) * t9))) else t55)) + (t68 * t3))
-        let !s71 = ((t62 * (if t67 > 0 then (t56 + (negate ((t64 / t66) * t10))) else t56)) + (t68 * t4))
-        chkI verts ((291 * i1) + (12 * i53)) 3 5
-        wrU verts (((291 * i1) + (12 * i53)) + 3) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s69 else t2)
-        wrU verts (((291 * i1) + (12 * i53)) + 4) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s70 else t3)
-        wrU verts (((291 * i1) + (12 * i53)) + 5) (if (1.0 - (abs (((s69 - s69) + (s70 - s70)) + (s71 - s71)))) > 0 then s71 else t4)
-        wrU walk (12 * i53) s69
-        wrU walk ((12 * i53) + 1) s70
-        wrU walk ((12 * i53) + 2) s71
-        let !t72 = (sqrt (((t59 * t59) + (t60 * t60)) + (t61 * t61)))
-        let !t73 = (if (abs s58) > 0 then (recip s58) else 0.0)
-        let !t74 = (t73 * ((if t67 > 0 then (t54 + (negate ((t64 / t66) * t8))) else t54) + (negate t2)))
-        let !t75 = (t65 * (t54 + t54))
-        let !t76 = (t65 * (t56 + t56))
-        let !t77 = (sqrt ((t75 * t75) + (t76 * t76)))
-        let !t78 = (if t77 > 0 then (recip (if (t77 - 1.0e-300) > 0 then t77 else 1.0e-300)) else 0.0)
-        let !t79 = (t78 * t75)
-        let !t80 = (t78 * t76)
-        let !t81 = (t73 * ((if t67 > 0 then (t56 + (negate ((t64 / t66) * t10))) else t56) + (negate t4)))
-        let !t82 = ((t79 * t74) + (t80 * t81))
-        let !t83 = (t74 + (negate (t82 * t79)))
-        let !t84 = (t73 * ((if t67 > 0 then (t55 + (negate ((t64 / t66) * t9))) else t55) + (negate t3)))
-        let !t85 = (t81 + (negate (t82 * t80)))
-        let !t86 = (sqrt (((t83 * t83) + (t84 * t84)) + (t85 * t85)))
-        let !t87 = (if t86 > 0 then (recip (if (t86 - 1.0e-300) > 0 then t86 else 1.0e-300)) else 0.0)
-        let !s88 = ((t62 * (t72 * (t87 * t83))) + (t68 * t59))
-        let !s89 = ((t62 * (t72 * (t87 * t84))) + (t68 * t60))
-        let !s90 = ((t62 * (t72 * (t87 * t85))) + (t68 * t61))
-        wrU walk ((12 * i53) + 3) s88
-        wrU walk ((12 * i53) + 4) s89
-        wrU walk ((12 * i53) + 5) s90
-        let !s91 = ((t62 * t79) + (t68 * t8))
-        let !s92 = (t68 * t9)
-        let !s93 = ((t62 * t80) + (t68 * t10))
-        wrU walk ((12 * i53) + 6) s91
-        wrU walk ((12 * i53) + 7) s92
-        wrU walk ((12 * i53) + 8) s93
+      loopI 0.0 24.0 $ \i55 -> do
+        let !d55 = fromIntegral i55 :: Double
+        chkI walk (12 * i55) 0 11
+        t56 <- rdU walk ((12 * i55) + 9)
+        t57 <- rdU walk ((12 * i55) + 10)
+        t58 <- rdU walk ((12 * i55) + 11)
+        chkI radii ((24 * i1) + i55) 0 0
+        t59 <- rdU radii ((24 * i1) + i55)
+        let !s60 = (t59 / 4.0)
+        t61 <- rdU walk ((12 * i55) + 3)
+        t62 <- rdU walk ((12 * i55) + 4)
+        t63 <- rdU walk ((12 * i55) + 5)
+        let !t64 = (if (abs s60) > 0 then 1.0 else 0.0)
+        let !t65 = (sqrt ((t56 * t56) + (t58 * t58)))
+        let !t66 = (t65 - 1.0)
+        let !t67 = (recip (2.0 * t65))
+        let !t68 = (((t67 * (t56 + t56)) * t8) + ((t67 * (t58 + t58)) * t10))
+        let !t69 = (if ((abs t66) - 1.0e-10) > 0 then (if (abs t68) > 0 then 1.0 else 0.0) else 0.0)
+        let !t70 = (1.0 - t64)
+        let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
+        let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
+        let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
+        chkI verts ((291 * i1) + (12 * i55)) 3 5
+        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
+        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
+        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
+        wrU walk (12 * i55) s71
+        wrU walk ((12 * i55) + 1) s72
+        wrU walk ((12 * i55) + 2) s73
+        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
+        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
+        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
+        let !t77 = (t67 * (t56 + t56))
+        let !t78 = (t67 * (t58 + t58))
+        let !t79 = (sqrt ((t77 * t77) + (t78 * t78)))
+        let !t80 = (if t79 > 0 then (recip (if (t79 - 1.0e-300) > 0 then t79 else 1.0e-300)) else 0.0)
+        let !t81 = (t80 * t77)
+        let !t82 = (t80 * t78)
+        let !t83 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
+        let !t84 = ((t81 * t76) + (t82 * t83))
+        let !t85 = (t76 + (negate (t84 * t81)))
+        let !t86 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
+        let !t87 = (t83 + (negate (t84 * t82)))
+        let !t88 = (sqrt (((t85 * t85) + (t86 * t86)) + (t87 * t87)))
+        let !t89 = (if t88 > 0 then (recip (if (t88 - 1.0e-300) > 0 then t88 else 1.0e-300)) else 0.0)
+        let !s90 = ((t64 * (t74 * (t89 * t85))) + (t70 * t61))
+        let !s91 = ((t64 * (t74 * (t89 * t86))) + (t70 * t62))
+        let !s92 = ((t64 * (t74 * (t89 * t87))) + (t70 * t63))
+        wrU walk ((12 * i55) + 3) s90
+        wrU walk ((12 * i55) + 4) s91
+        wrU walk ((12 * i55) + 5) s92
+        let !s93 = ((t64 * t81) + (t70 * t8))
+        let !s94 = (t70 * t9)
+        let !s95 = ((t64 * t82) + (t70 * t10))
+        wrU walk ((12 * i55) + 6) s93
+        wrU walk ((12 * i55) + 7) s94
+        wrU walk ((12 * i55) + 8) s95
         pure ()
-      loopI 0.0 24.0 $ \i94 -> do
-        let !d94 = fromIntegral i94 :: Double
-        chkI walk (12 * i94) 0 11
-        t95 <- rdU walk ((12 * i94) + 6)
-        t96 <- rdU walk ((12 * i94) + 7)
-        t97 <- rdU walk ((12 * i94) + 8)
-        chkI radii ((24 * i1) + i94) 0 0
-        t98 <- rdU radii ((24 * i1) + i94)
-        let !s99 = (t98 / 4.0)
-        t100 <- rdU walk (12 * i94)
-        t101 <- rdU walk ((12 * i94) + 1)
-        t102 <- rdU walk ((12 * i94) + 2)
-        t103 <- rdU walk ((12 * i94) + 3)
-        t104 <- rdU walk ((12 * i94) + 4)
-        t105 <- rdU walk ((12 * i94) + 5)
-        let !s106 = (t100 + (s99 * t103))
-        let !s107 = (t101 + (s99 * t104))
-        let !s108 = (t102 + (s99 * t105))
-        let !t109 = (sqrt ((s106 * s106) + (s108 * s108)))
-        let !t110 = (t109 - 1.0)
-        let !t111 = (recip (2.0 * t109))
-        let !t112 = (((t111 * (s106 + s106)) * t95) + ((t111 * (s108 + s108)) * t97))
-        let !t113 = (if ((abs t110) - 1.0e-10) > 0 then (if (abs t112) > 0 then 1.0 else 0.0) else 0.0)
-        let !s114 = (if t113 > 0 then (s106 + (negate ((t110 / t112) * t95))) else s106)
-        let !s115 = (if t113 > 0 then (s107 + (negate ((t110 / t112) * t96))) else s107)
-        let !s116 = (if t113 > 0 then (s108 + (negate ((t110 / t112) * t97))) else s108)
-        wrU walk ((12 * i94) + 9) s114
-        wrU walk ((12 * i94) + 10) s115
-        wrU walk ((12 * i94) + 11) s116
+      loopI 0.0 24.0 $ \i96 -> do
+        let !d96 = fromIntegral i96 :: Double
+        chkI walk (12 * i96) 0 11
+        t97 <- rdU walk ((12 * i96) + 6)
+        t98 <- rdU walk ((12 * i96) + 7)
+        t99 <- rdU walk ((12 * i96) + 8)
+        chkI radii ((24 * i1) + i96) 0 0
+        t100 <- rdU radii ((24 * i1) + i96)
+        let !s101 = (t100 / 4.0)
+        t102 <- rdU walk (12 * i96)
+        t103 <- rdU walk ((12 * i96) + 1)
+        t104 <- rdU walk ((12 * i96) + 2)
+        t105 <- rdU walk ((12 * i96) + 3)
+        t106 <- rdU walk ((12 * i96) + 4)
+        t107 <- rdU walk ((12 * i96) + 5)
+        let !s108 = (t102 + (s101 * t105))
+        let !s109 = (t103 + (s101 * t106))
+        let !s110 = (t104 + (s101 * t107))
+        let !t111 = (sqrt ((s108 * s108) + (s110 * s110)))
+        let !t112 = (t111 - 1.0)
+        let !t113 = (recip (2.0 * t111))
+        let !t114 = (((t113 * (s108 + s108)) * t97) + ((t113 * (s110 + s110)) * t99))
+        let !t115 = (if ((abs t112) - 1.0e-10) > 0 then (if (abs t114) > 0 then 1.0 else 0.0) else 0.0)
+        let !s116 = (if t115 > 0 then (s108 + (negate ((t112 / t114) * t97))) else s108)
+        let !s117 = (if t115 > 0 then (s109 + (negate ((t112 / t114) * t98))) else s109)
+        let !s118 = (if t115 > 0 then (s110 + (negate ((t112 / t114) * t99))) else s110)
+        wrU walk ((12 * i96) + 9) s116
+        wrU walk ((12 * i96) + 10) s117
+        wrU walk ((12 * i96) + 11) s118
         pure ()
-      loopI 0.0 24.0 $ \i117 -> do
-        let !d117 = fromIntegral i117 :: Double
-        chkI walk (12 * i117) 6 11
-        t118 <- rdU walk ((12 * i117) + 6)
-        t119 <- rdU walk ((12 * i117) + 7)
-        t120 <- rdU walk ((12 * i117) + 8)
-        t121 <- rdU walk ((12 * i117) + 9)
-        t122 <- rdU walk ((12 * i117) + 10)
-        t123 <- rdU walk ((12 * i117) + 11)
-        let !t124 = (sqrt ((t121 * t121) + (t123 * t123)))
-        let !t125 = (t124 - 1.0)
-        let !t126 = (recip (2.0 * t124))
-        let !t127 = (((t126 * (t121 + t121)) * t118) + ((t126 * (t123 + t123)) * t120))
-        let !t128 = (if ((abs t125) - 1.0e-10) > 0 then (if (abs t127) > 0 then 1.0 else 0.0) else 0.0)
-        let !s129 = (if t128 > 0 then (t121 + (negate ((t125 / t127) * t118))) else t121)
-        let !s130 = (if t128 > 0 then (t122 + (negate ((t125 / t127) * t119))) else t122)
-        let !s131 = (if t128 > 0 then (t123 + (negate ((t125 / t127) * t120))) else t123)
-        wrU walk ((12 * i117) + 9) s129
-        wrU walk ((12 * i117) + 10) s130
-        wrU walk ((12 * i117) + 11) s131
+      loopI 0.0 24.0 $ \i119 -> do
+        let !d119 = fromIntegral i119 :: Double
+        chkI walk (12 * i119) 6 11
+        t120 <- rdU walk ((12 * i119) + 6)
+        t121 <- rdU walk ((12 * i119) + 7)
+        t122 <- rdU walk ((12 * i119) + 8)
+        t123 <- rdU walk ((12 * i119) + 9)
+        t124 <- rdU walk ((12 * i119) + 10)
+        t125 <- rdU walk ((12 * i119) + 11)
+        let !t126 = (sqrt ((t123 * t123) + (t125 * t125)))
+        let !t127 = (t126 - 1.0)
+        let !t128 = (recip (2.0 * t126))
+        let !t129 = (((t128 * (t123 + t123)) * t120) + ((t128 * (t125 + t125)) * t122))
+        let !t130 = (if ((abs t127) - 1.0e-10) > 0 then (if (abs t129) > 0 then 1.0 else 0.0) else 0.0)
+        let !s131 = (if t130 > 0 then (t123 + (negate ((t127 / t129) * t120))) else t123)
+        let !s132 = (if t130 > 0 then (t124 + (negate ((t127 / t129) * t121))) else t124)
+        let !s133 = (if t130 > 0 then (t125 + (negate ((t127 / t129) * t122))) else t125)
+        wrU walk ((12 * i119) + 9) s131
+        wrU walk ((12 * i119) + 10) s132
+        wrU walk ((12 * i119) + 11) s133
         pure ()
-      loopI 0.0 24.0 $ \i132 -> do
-        let !d132 = fromIntegral i132 :: Double
-        chkI walk (12 * i132) 0 11
-        t133 <- rdU walk ((12 * i132) + 6)
-        t134 <- rdU walk ((12 * i132) + 7)
-        t135 <- rdU walk ((12 * i132) + 8)
-        t136 <- rdU walk ((12 * i132) + 9)
-        t137 <- rdU walk ((12 * i132) + 10)
-        t138 <- rdU walk ((12 * i132) + 11)
-        chkI radii ((24 * i1) + i132) 0 0
-        t139 <- rdU radii ((24 * i1) + i132)
-        let !s140 = (t139 / 4.0)
-        t141 <- rdU walk (12 * i132)
-        t142 <- rdU walk ((12 * i132) + 1)
-        t143 <- rdU walk ((12 * i132) + 2)
-        t144 <- rdU walk ((12 * i132) + 3)
-        t145 <- rdU walk ((12 * i132) + 4)
-        t146 <- rdU walk ((12 * i132) + 5)
-        let !t147 = (if (abs s140) > 0 then 1.0 else 0.0)
-        let !t148 = (sqrt ((t136 * t136) + (t138 * t138)))
-        let !t149 = (t148 - 1.0)
-        let !t150 = (recip (2.0 * t148))
-        let !t151 = (((t150 * (t136 + t136)) * t133) + ((t150 * (t138 + t138)) * t135))
-        let !t152 = (if ((abs t149) - 1.0e-10) > 0 then (if (abs t151) > 0 then 1.0 else 0.0) else 0.0)
-        let !t153 = (1.0 - t147)
-        let !s154 = ((t147 * (if t152 > 0 then (t136 + (negate ((t149 / t151) * t133))) else t136)) + (t153 * t141))
-        let !s155 = ((t147 * (if t152 > 0 then (t137 + (negate ((t149 / t151) * t134))) else t137)) + (t153 * t142))
-        let !s156 = ((t147 * (if t152 > 0 then (t138 + (negate ((t149 / t151) * t135))) else t138)) + (t153 * t143))
-        chkI verts ((291 * i1) + (12 * i132)) 6 8
-        wrU verts (((291 * i1) + (12 * i132)) + 6) (if (1.0 - (abs (((s154 - s154) + (s155 - s155)) + (s156 - s156)))) > 0 then s154 else t2)
-        wrU verts (((291 * i1) + (12 * i132)) + 7) (if (1.0 - (abs (((s154 - s154) + (s155 - s155)) + (s156 - s156)))) > 0 then s155 else t3)
-        wrU verts (((291 * i1) + (12 * i132)) + 8) (if (1.0 - (abs (((s154 - s154) + (s155 - s155)) + (s156 - s156)))) > 0 then s156 else t4)
-        wrU walk (12 * i132) s154
-        wrU walk ((12 * i132) + 1) s155
-        wrU walk ((12 * i132) + 2) s156
-        let !t157 = (sqrt (((t144 * t144) + (t145 * t145)) + (t146 * t146)))
-        let !t158 = (if (abs s140) > 0 then (recip s140) else 0.0)
-        let !t159 = (t158 * ((if t152 > 0 then (t136 + (negate ((t149 / t151) * t133))) else t136) + (negate t141)))
-        let !t160 = (t150 * (t136 + t136))
-        let !t161 = (t150 * (t138 + t138))
-        let !t162 = (sqrt ((t160 * t160) + (t161 * t161)))
-        let !t163 = (if t162 > 0 then (recip (if (t162 - 1.0e-300) > 0 then t162 else 1.0e-300)) else 0.0)
-        let !t164 = (t163 * t160)
-        let !t165 = (t163 * t161)
-        let !t166 = (t158 * ((if t152 > 0 then (t138 + (negate ((t149 / t151) * t135))) else t138) + (negate t143)))
-        let !t167 = ((t164 * t159) + (t165 * t166))
-        let !t168 = (t159 + (negate (t167 * t164)))
-        let !t169 = (t158 * ((if t152 > 0 then (t137 + (negate ((t149 / t151) * t134))) else t137) + (negate t142)))
-        let !t170 = (t166 + (negate (t167 * t165)))
-        let !t171 = (sqrt (((t168 * t168) + (t169 * t169)) + (t170 * t170)))
-        let !t172 = (if t171 > 0 then (recip (if (t171 - 1.0e-300) > 0 then t171 else 1.0e-300)) else 0.0)
-        let !s173 = ((t147 * (t157 * (t172 * t168))) + (t153 * t144))
-        let !s174 = ((t147 * (t157 * (t172 * t169))) + (t153 * t145))
-        let !s175 = ((t147 * (t157 * (t172 * t170))) + (t153 * t146))
-        wrU walk ((12 * i132) + 3) s173
-        wrU walk ((12 * i132) + 4) s174
-        wrU walk ((12 * i132) + 5) s175
-        let !s176 = ((t147 * t164) + (t153 * t133))
-        let !s177 = (t153 * t134)
-        let !s178 = ((t147 * t165) + (t153 * t135))
-        wrU walk ((12 * i132) + 6) s176
-        wrU walk ((12 * i132) + 7) s177
-        wrU walk ((12 * i132) + 8) s178
+      loopI 0.0 24.0 $ \i134 -> do
+        let !d134 = fromIntegral i134 :: Double
+        chkI walk (12 * i134) 0 11
+        t135 <- rdU walk ((12 * i134) + 6)
+        t136 <- rdU walk ((12 * i134) + 7)
+        t137 <- rdU walk ((12 * i134) + 8)
+        t138 <- rdU walk ((12 * i134) + 9)
+        t139 <- rdU walk ((12 * i134) + 10)
+        t140 <- rdU walk ((12 * i134) + 11)
+        chkI radii ((24 * i1) + i134) 0 0
+        t141 <- rdU radii ((24 * i1) + i134)
+        let !s142 = (t141 / 4.0)
+        t143 <- rdU walk (12 * i134)
+        t144 <- rdU walk ((12 * i134) + 1)
+        t145 <- rdU walk ((12 * i134) + 2)
+        t146 <- rdU walk ((12 * i134) + 3)
+        t147 <- rdU walk ((12 * i134) + 4)
+        t148 <- rdU walk ((12 * i134) + 5)
+        let !t149 = (if (abs s142) > 0 then 1.0 else 0.0)
+        let !t150 = (sqrt ((t138 * t138) + (t140 * t140)))
+        let !t151 = (t150 - 1.0)
+        let !t152 = (recip (2.0 * t150))
+        let !t153 = (((t152 * (t138 + t138)) * t135) + ((t152 * (t140 + t140)) * t137))
+        let !t154 = (if ((abs t151) - 1.0e-10) > 0 then (if (abs t153) > 0 then 1.0 else 0.0) else 0.0)
+        let !t155 = (1.0 - t149)
+        let !s156 = ((t149 * (if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138)) + (t155 * t143))
+        let !s157 = ((t149 * (if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139)) + (t155 * t144))
+        let !s158 = ((t149 * (if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140)) + (t155 * t145))
+        chkI verts ((291 * i1) + (12 * i134)) 6 8
+        wrU verts (((291 * i1) + (12 * i134)) + 6) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s156 else t2)
+        wrU verts (((291 * i1) + (12 * i134)) + 7) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s157 else t3)
+        wrU verts (((291 * i1) + (12 * i134)) + 8) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s158 else t4)
+        wrU walk (12 * i134) s156
+        wrU walk ((12 * i134) + 1) s157
+        wrU walk ((12 * i134) + 2) s158
+        let !t159 = (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148)))
+        let !t160 = (if (abs s142) > 0 then (recip s142) else 0.0)
+        let !t161 = (t160 * ((if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138) + (negate t143)))
+        let !t162 = (t152 * (t138 + t138))
+        let !t163 = (t152 * (t140 + t140))
+        let !t164 = (sqrt ((t162 * t162) + (t163 * t163)))
+        let !t165 = (if t164 > 0 then (recip (if (t164 - 1.0e-300) > 0 then t164 else 1.0e-300)) else 0.0)
+        let !t166 = (t165 * t162)
+        let !t167 = (t165 * t163)
+        let !t168 = (t160 * ((if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140) + (negate t145)))
+        let !t169 = ((t166 * t161) + (t167 * t168))
+        let !t170 = (t161 + (negate (t169 * t166)))
+        let !t171 = (t160 * ((if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139) + (negate t144)))
+        let !t172 = (t168 + (negate (t169 * t167)))
+        let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
+        let !t174 = (if t173 > 0 then (recip (if (t173 - 1.0e-300) > 0 then t173 else 1.0e-300)) else 0.0)
+        let !s175 = ((t149 * (t159 * (t174 * t170))) + (t155 * t146))
+        let !s176 = ((t149 * (t159 * (t174 * t171))) + (t155 * t147))
+        let !s177 = ((t149 * (t159 * (t174 * t172))) + (t155 * t148))
+        wrU walk ((12 * i134) + 3) s175
+        wrU walk ((12 * i134) + 4) s176
+        wrU walk ((12 * i134) + 5) s177
+        let !s178 = ((t149 * t166) + (t155 * t135))
+        let !s179 = (t155 * t136)
+        let !s180 = ((t149 * t167) + (t155 * t137))
+        wrU walk ((12 * i134) + 6) s178
+        wrU walk ((12 * i134) + 7) s179
+        wrU walk ((12 * i134) + 8) s180
         pure ()
-      loopI 0.0 24.0 $ \i179 -> do
-        let !d179 = fromIntegral i179 :: Double
-        chkI walk (12 * i179) 0 11
-        t180 <- rdU walk ((12 * i179) + 6)
-        t181 <- rdU walk ((12 * i179) + 7)
-        t182 <- rdU walk ((12 * i179) + 8)
-        chkI radii ((24 * i1) + i179) 0 0
-        t183 <- rdU radii ((24 * i1) + i179)
-        let !s184 = (t183 / 4.0)
-        t185 <- rdU walk (12 * i179)
-        t186 <- rdU walk ((12 * i179) + 1)
-        t187 <- rdU walk ((12 * i179) + 2)
-        t188 <- rdU walk ((12 * i179) + 3)
-        t189 <- rdU walk ((12 * i179) + 4)
-        t190 <- rdU walk ((12 * i179) + 5)
-        let !s191 = (t185 + (s184 * t188))
-        let !s192 = (t186 + (s184 * t189))
-        let !s193 = (t187 + (s184 * t190))
-        let !t194 = (sqrt ((s191 * s191) + (s193 * s193)))
-        let !t195 = (t194 - 1.0)
-        let !t196 = (recip (2.0 * t194))
-        let !t197 = (((t196 * (s191 + s191)) * t180) + ((t196 * (s193 + s193)) * t182))
-        let !t198 = (if ((abs t195) - 1.0e-10) > 0 then (if (abs t197) > 0 then 1.0 else 0.0) else 0.0)
-        let !s199 = (if t198 > 0 then (s191 + (negate ((t195 / t197) * t180))) else s191)
-        let !s200 = (if t198 > 0 then (s192 + (negate ((t195 / t197) * t181))) else s192)
-        let !s201 = (if t198 > 0 then (s193 + (negate ((t195 / t197) * t182))) else s193)
-        wrU walk ((12 * i179) + 9) s199
-        wrU walk ((12 * i179) + 10) s200
-        wrU walk ((12 * i179) + 11) s201
+      loopI 0.0 24.0 $ \i181 -> do
+        let !d181 = fromIntegral i181 :: Double
+        chkI walk (12 * i181) 0 11
+        t182 <- rdU walk ((12 * i181) + 6)
+        t183 <- rdU walk ((12 * i181) + 7)
+        t184 <- rdU walk ((12 * i181) + 8)
+        chkI radii ((24 * i1) + i181) 0 0
+        t185 <- rdU radii ((24 * i1) + i181)
+        let !s186 = (t185 / 4.0)
+        t187 <- rdU walk (12 * i181)
+        t188 <- rdU walk ((12 * i181) + 1)
+        t189 <- rdU walk ((12 * i181) + 2)
+        t190 <- rdU walk ((12 * i181) + 3)
+        t191 <- rdU walk ((12 * i181) + 4)
+        t192 <- rdU walk ((12 * i181) + 5)
+        let !s193 = (t187 + (s186 * t190))
+        let !s194 = (t188 + (s186 * t191))
+        let !s195 = (t189 + (s186 * t192))
+        let !t196 = (sqrt ((s193 * s193) + (s195 * s195)))
+        let !t197 = (t196 - 1.0)
+        let !t198 = (recip (2.0 * t196))
+        let !t199 = (((t198 * (s193 + s193)) * t182) + ((t198 * (s195 + s195)) * t184))
+        let !t200 = (if ((abs t197) - 1.0e-10) > 0 then (if (abs t199) > 0 then 1.0 else 0.0) else 0.0)
+        let !s201 = (if t200 > 0 then (s193 + (negate ((t197 / t199) * t182))) else s193)
+        let !s202 = (if t200 > 0 then (s194 + (negate ((t197 / t199) * t183))) else s194)
+        let !s203 = (if t200 > 0 then (s195 + (negate ((t197 / t199) * t184))) else s195)
+        wrU walk ((12 * i181) + 9) s201
+        wrU walk ((12 * i181) + 10) s202
+        wrU walk ((12 * i181) + 11) s203
         pure ()
-      loopI 0.0 24.0 $ \i202 -> do
-        let !d202 = fromIntegral i202 :: Double
-        chkI walk (12 * i202) 6 11
-        t203 <- rdU walk ((12 * i202) + 6)
-        t204 <- rdU walk ((12 * i202) + 7)
-        t205 <- rdU walk ((12 * i202) + 8)
-        t206 <- rdU walk ((12 * i202) + 9)
-        t207 <- rdU walk ((12 * i202) + 10)
-        t208 <- rdU walk ((12 * i202) + 11)
-        let !t209 = (sqrt ((t206 * t206) + (t208 * t208)))
-        let !t210 = (t209 - 1.0)
-        let !t211 = (recip (2.0 * t209))
-        let !t212 = (((t211 * (t206 + t206)) * t203) + ((t211 * (t208 + t208)) * t205))
-        let !t213 = (if ((abs t210) - 1.0e-10) > 0 then (if (abs t212) > 0 then 1.0 else 0.0) else 0.0)
-        let !s214 = (if t213 > 0 then (t206 + (negate ((t210 / t212) * t203))) else t206)
-        let !s215 = (if t213 > 0 then (t207 + (negate ((t210 / t212) * t204))) else t207)
-        let !s216 = (if t213 > 0 then (t208 + (negate ((t210 / t212) * t205))) else t208)
-        wrU walk ((12 * i202) + 9) s214
-        wrU walk ((12 * i202) + 10) s215
-        wrU walk ((12 * i202) + 11) s216
+      loopI 0.0 24.0 $ \i204 -> do
+        let !d204 = fromIntegral i204 :: Double
+        chkI walk (12 * i204) 6 11
+        t205 <- rdU walk ((12 * i204) + 6)
+        t206 <- rdU walk ((12 * i204) + 7)
+        t207 <- rdU walk ((12 * i204) + 8)
+        t208 <- rdU walk ((12 * i204) + 9)
+        t209 <- rdU walk ((12 * i204) + 10)
+        t210 <- rdU walk ((12 * i204) + 11)
+        let !t211 = (sqrt ((t208 * t208) + (t210 * t210)))
+        let !t212 = (t211 - 1.0)
+        let !t213 = (recip (2.0 * t211))
+        let !t214 = (((t213 * (t208 + t208)) * t205) + ((t213 * (t210 + t210)) * t207))
+        let !t215 = (if ((abs t212) - 1.0e-10) > 0 then (if (abs t214) > 0 then 1.0 else 0.0) else 0.0)
+        let !s216 = (if t215 > 0 then (t208 + (negate ((t212 / t214) * t205))) else t208)
+        let !s217 = (if t215 > 0 then (t209 + (negate ((t212 / t214) * t206))) else t209)
+        let !s218 = (if t215 > 0 then (t210 + (negate ((t212 / t214) * t207))) else t210)
+        wrU walk ((12 * i204) + 9) s216
+        wrU walk ((12 * i204) + 10) s217
+        wrU walk ((12 * i204) + 11) s218
         pure ()
-      loopI 0.0 24.0 $ \i217 -> do
-        let !d217 = fromIntegral i217 :: Double
-        chkI walk (12 * i217) 0 11
-        t218 <- rdU walk ((12 * i217) + 6)
-        t219 <- rdU walk ((12 * i217) + 7)
-        t220 <- rdU walk ((12 * i217) + 8)
-        t221 <- rdU walk ((12 * i217) + 9)
-        t222 <- rdU walk ((12 * i217) + 10)
-        t223 <- rdU walk ((12 * i217) + 11)
-        chkI radii ((24 * i1) + i217) 0 0
-        t224 <- rdU radii ((24 * i1) + i217)
-        let !s225 = (t224 / 4.0)
-        t226 <- rdU walk (12 * i217)
-        t227 <- rdU walk ((12 * i217) + 1)
-        t228 <- rdU walk ((12 * i217) + 2)
-        t229 <- rdU walk ((12 * i217) + 3)
-        t230 <- rdU walk ((12 * i217) + 4)
-        t231 <- rdU walk ((12 * i217) + 5)
-        let !t232 = (if (abs s225) > 0 then 1.0 else 0.0)
-        let !t233 = (sqrt ((t221 * t221) + (t223 * t223)))
-        let !t234 = (t233 - 1.0)
-        let !t235 = (recip (2.0 * t233))
-        let !t236 = (((t235 * (t221 + t221)) * t218) + ((t235 * (t223 + t223)) * t220))
-        let !t237 = (if ((abs t234) - 1.0e-10) > 0 then (if (abs t236) > 0 then 1.0 else 0.0) else 0.0)
-        let !t238 = (1.0 - t232)
-        let !s239 = ((t232 * (if t237 > 0 then (t221 + (negate ((t234 / t236) * t218))) else t221)) + (t238 * t226))
-        let !s240 = ((t232 * (if t237 > 0 then (t222 + (negate ((t234 / t236) * t219))) else t222)) + (t238 * t227))
-        let !s241 = ((t232 * (if t237 > 0 then (t223 + (negate ((t234 / t236) * t220))) else t223)) + (t238 * t228))
-        chkI verts ((291 * i1) + (12 * i217)) 9 11
-        wrU verts (((291 * i1) + (12 * i217)) + 9) (if (1.0 - (abs (((s239 - s239) + (s240 - s240)) + (s241 - s241)))) > 0 then s239 else t2)
-        wrU verts (((291 * i1) + (12 * i217)) + 10) (if (1.0 - (abs (((s239 - s239) + (s240 - s240)) + (s241 - s241)))) > 0 then s240 else t3)
-        wrU verts (((291 * i1) + (12 * i217)) + 11) (if (1.0 - (abs (((s239 - s239) + (s240 - s240)) + (s241 - s241)))) > 0 then s241 else t4)
-        wrU walk (12 * i217) s239
-        wrU walk ((12 * i217) + 1) s240
-        wrU walk ((12 * i217) + 2) s241
-        let !t242 = (sqrt (((t229 * t229) + (t230 * t230)) + (t231 * t231)))
-        let !t243 = (if (abs s225) > 0 then (recip s225) else 0.0)
-        let !t244 = (t243 * ((if t237 > 0 then (t221 + (negate ((t234 / t236) * t218))) else t221) + (negate t226)))
-        let !t245 = (t235 * (t221 + t221))
-        let !t246 = (t235 * (t223 + t223))
-        let !t247 = (sqrt ((t245 * t245) + (t246 * t246)))
-        let !t248 = (if t247 > 0 then (recip (if (t247 - 1.0e-300) > 0 then t247 else 1.0e-300)) else 0.0)
-        let !t249 = (t248 * t245)
-        let !t250 = (t248 * t246)
-        let !t251 = (t243 * ((if t237 > 0 then (t223 + (negate ((t234 / t236) * t220))) else t223) + (negate t228)))
-        let !t252 = ((t249 * t244) + (t250 * t251))
-        let !t253 = (t244 + (negate (t252 * t249)))
-        let !t254 = (t243 * ((if t237 > 0 then (t222 + (negate ((t234 / t236) * t219))) else t222) + (negate t227)))
-        let !t255 = (t251 + (negate (t252 * t250)))
-        let !t256 = (sqrt (((t253 * t253) + (t254 * t254)) + (t255 * t255)))
-        let !t257 = (if t256 > 0 then (recip (if (t256 - 1.0e-300) > 0 then t256 else 1.0e-300)) else 0.0)
-        let !s258 = ((t232 * (t242 * (t257 * t253))) + (t238 * t229))
-        let !s259 = ((t232 * (t242 * (t257 * t254))) + (t238 * t230))
-        let !s260 = ((t232 * (t242 * (t257 * t255))) + (t238 * t231))
-        wrU walk ((12 * i217) + 3) s258
-        wrU walk ((12 * i217) + 4) s259
-        wrU walk ((12 * i217) + 5) s260
-        let !s261 = ((t232 * t249) + (t238 * t218))
-        let !s262 = (t238 * t219)
-        let !s263 = ((t232 * t250) + (t238 * t220))
-        wrU walk ((12 * i217) + 6) s261
-        wrU walk ((12 * i217) + 7) s262
-        wrU walk ((12 * i217) + 8) s263
+      loopI 0.0 24.0 $ \i219 -> do
+        let !d219 = fromIntegral i219 :: Double
+        chkI walk (12 * i219) 0 11
+        t220 <- rdU walk ((12 * i219) + 6)
+        t221 <- rdU walk ((12 * i219) + 7)
+        t222 <- rdU walk ((12 * i219) + 8)
+        t223 <- rdU walk ((12 * i219) + 9)
+        t224 <- rdU walk ((12 * i219) + 10)
+        t225 <- rdU walk ((12 * i219) + 11)
+        chkI radii ((24 * i1) + i219) 0 0
+        t226 <- rdU radii ((24 * i1) + i219)
+        let !s227 = (t226 / 4.0)
+        t228 <- rdU walk (12 * i219)
+        t229 <- rdU walk ((12 * i219) + 1)
+        t230 <- rdU walk ((12 * i219) + 2)
+        t231 <- rdU walk ((12 * i219) + 3)
+        t232 <- rdU walk ((12 * i219) + 4)
+        t233 <- rdU walk ((12 * i219) + 5)
+        let !t234 = (if (abs s227) > 0 then 1.0 else 0.0)
+        let !t235 = (sqrt ((t223 * t223) + (t225 * t225)))
+        let !t236 = (t235 - 1.0)
+        let !t237 = (recip (2.0 * t235))
+        let !t238 = (((t237 * (t223 + t223)) * t220) + ((t237 * (t225 + t225)) * t222))
+        let !t239 = (if ((abs t236) - 1.0e-10) > 0 then (if (abs t238) > 0 then 1.0 else 0.0) else 0.0)
+        let !t240 = (1.0 - t234)
+        let !s241 = ((t234 * (if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223)) + (t240 * t228))
+        let !s242 = ((t234 * (if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224)) + (t240 * t229))
+        let !s243 = ((t234 * (if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225)) + (t240 * t230))
+        chkI verts ((291 * i1) + (12 * i219)) 9 11
+        wrU verts (((291 * i1) + (12 * i219)) + 9) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s241 else t2)
+        wrU verts (((291 * i1) + (12 * i219)) + 10) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s242 else t3)
+        wrU verts (((291 * i1) + (12 * i219)) + 11) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s243 else t4)
+        wrU walk (12 * i219) s241
+        wrU walk ((12 * i219) + 1) s242
+        wrU walk ((12 * i219) + 2) s243
+        let !t244 = (sqrt (((t231 * t231) + (t232 * t232)) + (t233 * t233)))
+        let !t245 = (if (abs s227) > 0 then (recip s227) else 0.0)
+        let !t246 = (t245 * ((if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223) + (negate t228)))
+        let !t247 = (t237 * (t223 + t223))
+        let !t248 = (t237 * (t225 + t225))
+        let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
+        let !t250 = (if t249 > 0 then (recip (if (t249 - 1.0e-300) > 0 then t249 else 1.0e-300)) else 0.0)
+        let !t251 = (t250 * t247)
+        let !t252 = (t250 * t248)
+        let !t253 = (t245 * ((if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225) + (negate t230)))
+        let !t254 = ((t251 * t246) + (t252 * t253))
+        let !t255 = (t246 + (negate (t254 * t251)))
+        let !t256 = (t245 * ((if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224) + (negate t229)))
+        let !t257 = (t253 + (negate (t254 * t252)))
+        let !t258 = (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257)))
+        let !t259 = (if t258 > 0 then (recip (if (t258 - 1.0e-300) > 0 then t258 else 1.0e-300)) else 0.0)
+        let !s260 = ((t234 * (t244 * (t259 * t255))) + (t240 * t231))
+        let !s261 = ((t234 * (t244 * (t259 * t256))) + (t240 * t232))
+        let !s262 = ((t234 * (t244 * (t259 * t257))) + (t240 * t233))
+        wrU walk ((12 * i219) + 3) s260
+        wrU walk ((12 * i219) + 4) s261
+        wrU walk ((12 * i219) + 5) s262
+        let !s263 = ((t234 * t251) + (t240 * t220))
+        let !s264 = (t240 * t221)
+        let !s265 = ((t234 * t252) + (t240 * t222))
+        wrU walk ((12 * i219) + 6) s263
+        wrU walk ((12 * i219) + 7) s264
+        wrU walk ((12 * i219) + 8) s265
         pure ()
-      loopI 0.0 24.0 $ \i264 -> do
-        let !d264 = fromIntegral i264 :: Double
-        chkI walk (12 * i264) 0 11
-        t265 <- rdU walk ((12 * i264) + 6)
-        t266 <- rdU walk ((12 * i264) + 7)
-        t267 <- rdU walk ((12 * i264) + 8)
-        chkI radii ((24 * i1) + i264) 0 0
-        t268 <- rdU radii ((24 * i1) + i264)
-        let !s269 = (t268 / 4.0)
-        t270 <- rdU walk (12 * i264)
-        t271 <- rdU walk ((12 * i264) + 1)
-        t272 <- rdU walk ((12 * i264) + 2)
-        t273 <- rdU walk ((12 * i264) + 3)
-        t274 <- rdU walk ((12 * i264) + 4)
-        t275 <- rdU walk ((12 * i264) + 5)
-        let !s276 = (t270 + (s269 * t273))
-        let !s277 = (t271 + (s269 * t274))
-        let !s278 = (t272 + (s269 * t275))
-        let !t279 = (sqrt ((s276 * s276) + (s278 * s278)))
-        let !t280 = (t279 - 1.0)
-        let !t281 = (recip (2.0 * t279))
-        let !t282 = (((t281 * (s276 + s276)) * t265) + ((t281 * (s278 + s278)) * t267))
-        let !t283 = (if ((abs t280) - 1.0e-10) > 0 then (if (abs t282) > 0 then 1.0 else 0.0) else 0.0)
-        let !s284 = (if t283 > 0 then (s276 + (negate ((t280 / t282) * t265))) else s276)
-        let !s285 = (if t283 > 0 then (s277 + (negate ((t280 / t282) * t266))) else s277)
-        let !s286 = (if t283 > 0 then (s278 + (negate ((t280 / t282) * t267))) else s278)
-        wrU walk ((12 * i264) + 9) s284
-        wrU walk ((12 * i264) + 10) s285
-        wrU walk ((12 * i264) + 11) s286
+      loopI 0.0 24.0 $ \i266 -> do
+        let !d266 = fromIntegral i266 :: Double
+        chkI walk (12 * i266) 0 11
+        t267 <- rdU walk ((12 * i266) + 6)
+        t268 <- rdU walk ((12 * i266) + 7)
+        t269 <- rdU walk ((12 * i266) + 8)
+        chkI radii ((24 * i1) + i266) 0 0
+        t270 <- rdU radii ((24 * i1) + i266)
+        let !s271 = (t270 / 4.0)
+        t272 <- rdU walk (12 * i266)
+        t273 <- rdU walk ((12 * i266) + 1)
+        t274 <- rdU walk ((12 * i266) + 2)
+        t275 <- rdU walk ((12 * i266) + 3)
+        t276 <- rdU walk ((12 * i266) + 4)
+        t277 <- rdU walk ((12 * i266) + 5)
+        let !s278 = (t272 + (s271 * t275))
+        let !s279 = (t273 + (s271 * t276))
+        let !s280 = (t274 + (s271 * t277))
+        let !t281 = (sqrt ((s278 * s278) + (s280 * s280)))
+        let !t282 = (t281 - 1.0)
+        let !t283 = (recip (2.0 * t281))
+        let !t284 = (((t283 * (s278 + s278)) * t267) + ((t283 * (s280 + s280)) * t269))
+        let !t285 = (if ((abs t282) - 1.0e-10) > 0 then (if (abs t284) > 0 then 1.0 else 0.0) else 0.0)
+        let !s286 = (if t285 > 0 then (s278 + (negate ((t282 / t284) * t267))) else s278)
+        let !s287 = (if t285 > 0 then (s279 + (negate ((t282 / t284) * t268))) else s279)
+        let !s288 = (if t285 > 0 then (s280 + (negate ((t282 / t284) * t269))) else s280)
+        wrU walk ((12 * i266) + 9) s286
+        wrU walk ((12 * i266) + 10) s287
+        wrU walk ((12 * i266) + 11) s288
         pure ()
-      loopI 0.0 24.0 $ \i287 -> do
-        let !d287 = fromIntegral i287 :: Double
-        chkI walk (12 * i287) 6 11
-        t288 <- rdU walk ((12 * i287) + 6)
-        t289 <- rdU walk ((12 * i287) + 7)
-        t290 <- rdU walk ((12 * i287) + 8)
-        t291 <- rdU walk ((12 * i287) + 9)
-        t292 <- rdU walk ((12 * i287) + 10)
-        t293 <- rdU walk ((12 * i287) + 11)
-        let !t294 = (sqrt ((t291 * t291) + (t293 * t293)))
-        let !t295 = (t294 - 1.0)
-        let !t296 = (recip (2.0 * t294))
-        let !t297 = (((t296 * (t291 + t291)) * t288) + ((t296 * (t293 + t293)) * t290))
-        let !t298 = (if ((abs t295) - 1.0e-10) > 0 then (if (abs t297) > 0 then 1.0 else 0.0) else 0.0)
-        let !s299 = (if t298 > 0 then (t291 + (negate ((t295 / t297) * t288))) else t291)
-        let !s300 = (if t298 > 0 then (t292 + (negate ((t295 / t297) * t289))) else t292)
-        let !s301 = (if t298 > 0 then (t293 + (negate ((t295 / t297) * t290))) else t293)
-        wrU walk ((12 * i287) + 9) s299
-        wrU walk ((12 * i287) + 10) s300
-        wrU walk ((12 * i287) + 11) s301
+      loopI 0.0 24.0 $ \i289 -> do
+        let !d289 = fromIntegral i289 :: Double
+        chkI walk (12 * i289) 6 11
+        t290 <- rdU walk ((12 * i289) + 6)
+        t291 <- rdU walk ((12 * i289) + 7)
+        t292 <- rdU walk ((12 * i289) + 8)
+        t293 <- rdU walk ((12 * i289) + 9)
+        t294 <- rdU walk ((12 * i289) + 10)
+        t295 <- rdU walk ((12 * i289) + 11)
+        let !t296 = (sqrt ((t293 * t293) + (t295 * t295)))
+        let !t297 = (t296 - 1.0)
+        let !t298 = (recip (2.0 * t296))
+        let !t299 = (((t298 * (t293 + t293)) * t290) + ((t298 * (t295 + t295)) * t292))
+        let !t300 = (if ((abs t297) - 1.0e-10) > 0 then (if (abs t299) > 0 then 1.0 else 0.0) else 0.0)
+        let !s301 = (if t300 > 0 then (t293 + (negate ((t297 / t299) * t290))) else t293)
+        let !s302 = (if t300 > 0 then (t294 + (negate ((t297 / t299) * t291))) else t294)
+        let !s303 = (if t300 > 0 then (t295 + (negate ((t297 / t299) * t292))) else t295)
+        wrU walk ((12 * i289) + 9) s301
+        wrU walk ((12 * i289) + 10) s302
+        wrU walk ((12 * i289) + 11) s303
         pure ()
-      loopI 0.0 24.0 $ \i302 -> do
-        let !d302 = fromIntegral i302 :: Double
-        chkI walk (12 * i302) 0 11
-        t303 <- rdU walk ((12 * i302) + 6)
-        t304 <- rdU walk ((12 * i302) + 7)
-        t305 <- rdU walk ((12 * i302) + 8)
-        t306 <- rdU walk ((12 * i302) + 9)
-        t307 <- rdU walk ((12 * i302) + 10)
-        t308 <- rdU walk ((12 * i302) + 11)
-        chkI radii ((24 * i1) + i302) 0 0
-        t309 <- rdU radii ((24 * i1) + i302)
-        let !s310 = (t309 / 4.0)
-        t311 <- rdU walk (12 * i302)
-        t312 <- rdU walk ((12 * i302) + 1)
-        t313 <- rdU walk ((12 * i302) + 2)
-        t314 <- rdU walk ((12 * i302) + 3)
-        t315 <- rdU walk ((12 * i302) + 4)
-        t316 <- rdU walk ((12 * i302) + 5)
-        let !t317 = (if (abs s310) > 0 then 1.0 else 0.0)
-        let !t318 = (sqrt ((t306 * t306) + (t308 * t308)))
-        let !t319 = (t318 - 1.0)
-        let !t320 = (recip (2.0 * t318))
-        let !t321 = (((t320 * (t306 + t306)) * t303) + ((t320 * (t308 + t308)) * t305))
-        let !t322 = (if ((abs t319) - 1.0e-10) > 0 then (if (abs t321) > 0 then 1.0 else 0.0) else 0.0)
-        let !t323 = (1.0 - t317)
-        let !s324 = ((t317 * (if t322 > 0 then (t306 + (negate ((t319 / t321) * t303))) else t306)) + (t323 * t311))
-        let !s325 = ((t317 * (if t322 > 0 then (t307 + (negate ((t319 / t321) * t304))) else t307)) + (t323 * t312))
-        let !s326 = ((t317 * (if t322 > 0 then (t308 + (negate ((t319 / t321) * t305))) else t308)) + (t323 * t313))
-        chkI verts ((291 * i1) + (12 * i302)) 12 14
-        wrU verts (((291 * i1) + (12 * i302)) + 12) (if (1.0 - (abs (((s324 - s324) + (s325 - s325)) + (s326 - s326)))) > 0 then s324 else t2)
-        wrU verts (((291 * i1) + (12 * i302)) + 13) (if (1.0 - (abs (((s324 - s324) + (s325 - s325)) + (s326 - s326)))) > 0 then s325 else t3)
-        wrU verts (((291 * i1) + (12 * i302)) + 14) (if (1.0 - (abs (((s324 - s324) + (s325 - s325)) + (s326 - s326)))) > 0 then s326 else t4)
+      loopI 0.0 24.0 $ \i304 -> do
+        let !d304 = fromIntegral i304 :: Double
+        chkI walk (12 * i304) 0 11
+        t305 <- rdU walk ((12 * i304) + 6)
+        t306 <- rdU walk ((12 * i304) + 7)
+        t307 <- rdU walk ((12 * i304) + 8)
+        t308 <- rdU walk ((12 * i304) + 9)
+        t309 <- rdU walk ((12 * i304) + 10)
+        t310 <- rdU walk ((12 * i304) + 11)
+        chkI radii ((24 * i1) + i304) 0 0
+        t311 <- rdU radii ((24 * i1) + i304)
+        let !s312 = (t311 / 4.0)
+        t313 <- rdU walk (12 * i304)
+        t314 <- rdU walk ((12 * i304) + 1)
+        t315 <- rdU walk ((12 * i304) + 2)
+        t316 <- rdU walk ((12 * i304) + 3)
+        t317 <- rdU walk ((12 * i304) + 4)
+        t318 <- rdU walk ((12 * i304) + 5)
+        let !t319 = (if (abs s312) > 0 then 1.0 else 0.0)
+        let !t320 = (sqrt ((t308 * t308) + (t310 * t310)))
+        let !t321 = (t320 - 1.0)
+        let !t322 = (recip (2.0 * t320))
+        let !t323 = (((t322 * (t308 + t308)) * t305) + ((t322 * (t310 + t310)) * t307))
+        let !t324 = (if ((abs t321) - 1.0e-10) > 0 then (if (abs t323) > 0 then 1.0 else 0.0) else 0.0)
+        let !t325 = (1.0 - t319)
+        let !s326 = ((t319 * (if t324 > 0 then (t308 + (negate ((t321 / t323) * t305))) else t308)) + (t325 * t313))
+        let !s327 = ((t319 * (if t324 > 0 then (t309 + (negate ((t321 / t323) * t306))) else t309)) + (t325 * t314))
+        let !s328 = ((t319 * (if t324 > 0 then (t310 + (negate ((t321 / t323) * t307))) else t310)) + (t325 * t315))
+        chkI verts ((291 * i1) + (12 * i304)) 12 14
+        wrU verts (((291 * i1) + (12 * i304)) + 12) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s326 else t2)
+        wrU verts (((291 * i1) + (12 * i304)) + 13) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s327 else t3)
+        wrU verts (((291 * i1) + (12 * i304)) + 14) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s328 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i327 -> do
-        let !d327 = fromIntegral i327 :: Double
-        t328 <- rdU locals 0
-        t329 <- rdU locals 1
-        wrU locals 0 ((t328 * 0.9659258262890683) - (t329 * 0.25881904510252074))
-        wrU locals 1 ((t329 * 0.9659258262890683) + (t328 * 0.25881904510252074))
-        let !s330 = ((t328 * t5) + (t329 * s14))
-        let !s331 = ((t328 * t6) + (t329 * s15))
-        let !s332 = ((t328 * t7) + (t329 * s16))
-        chkI walk (12 * i327) 3 5
-        wrU walk ((12 * i327) + 3) s330
-        wrU walk ((12 * i327) + 4) s331
-        wrU walk ((12 * i327) + 5) s332
+      loopI 0.0 24.0 $ \i329 -> do
+        let !d329 = fromIntegral i329 :: Double
+        t330 <- rdU locals 0
+        t331 <- rdU locals 1
+        wrU locals 0 ((t330 * 0.9659258262890683) - (t331 * 0.25881904510252074))
+        wrU locals 1 ((t331 * 0.9659258262890683) + (t330 * 0.25881904510252074))
+        let !s332 = ((t330 * t5) + (t331 * s14))
+        let !s333 = ((t330 * t6) + (t331 * s15))
+        let !s334 = ((t330 * t7) + (t331 * s16))
+        chkI walk (12 * i329) 3 5
+        wrU walk ((12 * i329) + 3) s332
+        wrU walk ((12 * i329) + 4) s333
+        wrU walk ((12 * i329) + 5) s334
         pure ()
-      loopI 0.0 24.0 $ \i333 -> do
-        let !d333 = fromIntegral i333 :: Double
-        chkI radii ((24 * i1) + i333) 0 0
-        t334 <- rdU radii ((24 * i1) + i333)
-        chkI walk (12 * i333) 3 11
-        t335 <- rdU walk ((12 * i333) + 3)
-        t336 <- rdU walk ((12 * i333) + 4)
-        t337 <- rdU walk ((12 * i333) + 5)
-        let !s338 = (t2 + (t334 * t335))
-        let !s339 = (t3 + (t334 * t336))
-        let !s340 = (t4 + (t334 * t337))
-        let !t341 = (sqrt ((s338 * s338) + (s340 * s340)))
-        let !t342 = (t341 - 1.0)
-        let !t343 = (recip (2.0 * t341))
-        let !t344 = (((t343 * (s338 + s338)) * t8) + ((t343 * (s340 + s340)) * t10))
-        let !t345 = (if ((abs t342) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
-        let !s346 = (if t345 > 0 then (s338 + (negate ((t342 / t344) * t8))) else s338)
-        let !s347 = (if t345 > 0 then (s339 + (negate ((t342 / t344) * t9))) else s339)
-        let !s348 = (if t345 > 0 then (s340 + (negate ((t342 / t344) * t10))) else s340)
-        wrU walk ((12 * i333) + 9) s346
-        wrU walk ((12 * i333) + 10) s347
-        wrU walk ((12 * i333) + 11) s348
+      loopI 0.0 24.0 $ \i335 -> do
+        let !d335 = fromIntegral i335 :: Double
+        chkI radii ((24 * i1) + i335) 0 0
+        t336 <- rdU radii ((24 * i1) + i335)
+        chkI walk (12 * i335) 3 11
+        t337 <- rdU walk ((12 * i335) + 3)
+        t338 <- rdU walk ((12 * i335) + 4)
+        t339 <- rdU walk ((12 * i335) + 5)
+        let !s340 = (t2 + (t336 * t337))
+        let !s341 = (t3 + (t336 * t338))
+        let !s342 = (t4 + (t336 * t339))
+        let !t343 = (sqrt ((s340 * s340) + (s342 * s342)))
+        let !t344 = (t343 - 1.0)
+        let !t345 = (recip (2.0 * t343))
+        let !t346 = (((t345 * (s340 + s340)) * t8) + ((t345 * (s342 + s342)) * t10))
+        let !t347 = (if ((abs t344) - 1.0e-10) > 0 then (if (abs t346) > 0 then 1.0 else 0.0) else 0.0)
+        let !s348 = (if t347 > 0 then (s340 + (negate ((t344 / t346) * t8))) else s340)
+        let !s349 = (if t347 > 0 then (s341 + (negate ((t344 / t346) * t9))) else s341)
+        let !s350 = (if t347 > 0 then (s342 + (negate ((t344 / t346) * t10))) else s342)
+        wrU walk ((12 * i335) + 9) s348
+        wrU walk ((12 * i335) + 10) s349
+        wrU walk ((12 * i335) + 11) s350
         pure ()
-      loopI 0.0 24.0 $ \i349 -> do
-        let !d349 = fromIntegral i349 :: Double
-        chkI walk (12 * i349) 9 11
-        t350 <- rdU walk ((12 * i349) + 9)
-        t351 <- rdU walk ((12 * i349) + 10)
-        t352 <- rdU walk ((12 * i349) + 11)
-        let !t353 = (sqrt ((t350 * t350) + (t352 * t352)))
-        let !t354 = (t353 - 1.0)
-        let !t355 = (recip (2.0 * t353))
-        let !t356 = (((t355 * (t350 + t350)) * t8) + ((t355 * (t352 + t352)) * t10))
-        let !t357 = (if ((abs t354) - 1.0e-10) > 0 then (if (abs t356) > 0 then 1.0 else 0.0) else 0.0)
-        let !s358 = (if t357 > 0 then (t350 + (negate ((t354 / t356) * t8))) else t350)
-        let !s359 = (if t357 > 0 then (t351 + (negate ((t354 / t356) * t9))) else t351)
-        let !s360 = (if t357 > 0 then (t352 + (negate ((t354 / t356) * t10))) else t352)
-        wrU walk ((12 * i349) + 9) s358
-        wrU walk ((12 * i349) + 10) s359
-        wrU walk ((12 * i349) + 11) s360
+      loopI 0.0 24.0 $ \i351 -> do
+        let !d351 = fromIntegral i351 :: Double
+        chkI walk (12 * i351) 9 11
+        t352 <- rdU walk ((12 * i351) + 9)
+        t353 <- rdU walk ((12 * i351) + 10)
+        t354 <- rdU walk ((12 * i351) + 11)
+        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
+        let !t356 = (t355 - 1.0)
+        let !t357 = (recip (2.0 * t355))
+        let !t358 = (((t357 * (t352 + t352)) * t8) + ((t357 * (t354 + t354)) * t10))
+        let !t359 = (if ((abs t356) - 1.0e-10) > 0 then (if (abs t358) > 0 then 1.0 else 0.0) else 0.0)
+        let !s360 = (if t359 > 0 then (t352 + (negate ((t356 / t358) * t8))) else t352)
+        let !s361 = (if t359 > 0 then (t353 + (negate ((t356 / t358) * t9))) else t353)
+        let !s362 = (if t359 > 0 then (t354 + (negate ((t356 / t358) * t10))) else t354)
+        wrU walk ((12 * i351) + 9) s360
+        wrU walk ((12 * i351) + 10) s361
+        wrU walk ((12 * i351) + 11) s362
         pure ()
-      loopI 0.0 24.0 $ \i361 -> do
-        let !d361 = fromIntegral i361 :: Double
-        chkI walk (12 * i361) 3 11
-        t362 <- rdU walk ((12 * i361) + 9)
-        t363 <- rdU walk ((12 * i361) + 10)
-        t364 <- rdU walk ((12 * i361) + 11)
-        chkI radii ((24 * i1) + i361) 0 0
-        t365 <- rdU radii ((24 * i1) + i361)
-        t366 <- rdU walk ((12 * i361) + 3)
-        t367 <- rdU walk ((12 * i361) + 4)
-        t368 <- rdU walk ((12 * i361) + 5)
-        let !t369 = (if (abs t365) > 0 then 1.0 else 0.0)
-        let !t370 = (sqrt ((t362 * t362) + (t364 * t364)))
-        let !t371 = (t370 - 1.0)
-        let !t372 = (recip (2.0 * t370))
-        let !t373 = (((t372 * (t362 + t362)) * t8) + ((t372 * (t364 + t364)) * t10))
-        let !t374 = (if ((abs t371) - 1.0e-10) > 0 then (if (abs t373) > 0 then 1.0 else 0.0) else 0.0)
-        let !t375 = (1.0 - t369)
-        let !s376 = ((t369 * (if t374 > 0 then (t362 + (negate ((t371 / t373) * t8))) else t362)) + (t375 * t2))
-        let !s377 = ((t369 * (if t374 > 0 then (t363 + (negate ((t371 / t373) * t9))) else t363)) + (t375 * t3))
-        let !s378 = ((t369 * (if t374 > 0 then (t364 + (negate ((t371 / t373) * t10))) else t364)) + (t375 * t4))
-        let !t379 = (1.0 - (abs (((s376 - s376) + (s377 - s377)) + (s378 - s378))))
-        let !s380 = (if t379 > 0 then s376 else t2)
-        let !s381 = (if t379 > 0 then s377 else t3)
-        let !s382 = (if t379 > 0 then s378 else t4)
-        chkI verts ((291 * i1) + (12 * i361)) 3 14
-        wrU verts (((291 * i1) + (12 * i361)) + 12) s380
-        wrU verts (((291 * i1) + (12 * i361)) + 13) s381
-        wrU verts (((291 * i1) + (12 * i361)) + 14) s382
-        wrU verts (((291 * i1) + (12 * i361)) + 3) (t2 + (0.25 * (s380 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i361)) + 4) (t3 + (0.25 * (s381 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i361)) + 5) (t4 + (0.25 * (s382 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i361)) + 6) (t2 + (0.5 * (s380 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i361)) + 7) (t3 + (0.5 * (s381 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i361)) + 8) (t4 + (0.5 * (s382 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i361)) + 9) (t2 + (0.75 * (s380 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i361)) + 10) (t3 + (0.75 * (s381 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i361)) + 11) (t4 + (0.75 * (s382 + (negate t4))))
+      loopI 0.0 24.0 $ \i363 -> do
+        let !d363 = fromIntegral i363 :: Double
+        chkI walk (12 * i363) 3 11
+        t364 <- rdU walk ((12 * i363) + 9)
+        t365 <- rdU walk ((12 * i363) + 10)
+        t366 <- rdU walk ((12 * i363) + 11)
+        chkI radii ((24 * i1) + i363) 0 0
+        t367 <- rdU radii ((24 * i1) + i363)
+        t368 <- rdU walk ((12 * i363) + 3)
+        t369 <- rdU walk ((12 * i363) + 4)
+        t370 <- rdU walk ((12 * i363) + 5)
+        let !t371 = (if (abs t367) > 0 then 1.0 else 0.0)
+        let !t372 = (sqrt ((t364 * t364) + (t366 * t366)))
+        let !t373 = (t372 - 1.0)
+        let !t374 = (recip (2.0 * t372))
+        let !t375 = (((t374 * (t364 + t364)) * t8) + ((t374 * (t366 + t366)) * t10))
+        let !t376 = (if ((abs t373) - 1.0e-10) > 0 then (if (abs t375) > 0 then 1.0 else 0.0) else 0.0)
+        let !t377 = (1.0 - t371)
+        let !s378 = ((t371 * (if t376 > 0 then (t364 + (negate ((t373 / t375) * t8))) else t364)) + (t377 * t2))
+        let !s379 = ((t371 * (if t376 > 0 then (t365 + (negate ((t373 / t375) * t9))) else t365)) + (t377 * t3))
+        let !s380 = ((t371 * (if t376 > 0 then (t366 + (negate ((t373 / t375) * t10))) else t366)) + (t377 * t4))
+        let !t381 = (1.0 - (abs (((s378 - s378) + (s379 - s379)) + (s380 - s380))))
+        let !s382 = (if t381 > 0 then s378 else t2)
+        let !s383 = (if t381 > 0 then s379 else t3)
+        let !s384 = (if t381 > 0 then s380 else t4)
+        chkI verts ((291 * i1) + (12 * i363)) 3 14
+        wrU verts (((291 * i1) + (12 * i363)) + 12) s382
+        wrU verts (((291 * i1) + (12 * i363)) + 13) s383
+        wrU verts (((291 * i1) + (12 * i363)) + 14) s384
+        wrU verts (((291 * i1) + (12 * i363)) + 3) (t2 + (0.25 * (s382 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i363)) + 4) (t3 + (0.25 * (s383 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i363)) + 5) (t4 + (0.25 * (s384 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i363)) + 6) (t2 + (0.5 * (s382 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i363)) + 7) (t3 + (0.5 * (s383 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i363)) + 8) (t4 + (0.5 * (s384 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i363)) + 9) (t2 + (0.75 * (s382 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i363)) + 10) (t3 + (0.75 * (s383 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i363)) + 11) (t4 + (0.75 * (s384 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -36,8 +36,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   t2 <- rdU params 1
   loopI 0.0 t0 $ \i3 -> do
     let !d3 = fromIntegral i3 :: Double
-    chkI scalars (6 * i3) 2 2
-    t4 <- rdU scalars ((6 * i3) + 2)
+    chkI scalars (8 * i3) 2 2
+    t4 <- rdU scalars ((8 * i3) + 2)
     if (t4 * t2) > 0 then do
       chkI pos (3 * i3) 0 2
       t5 <- rdU pos (3 * i3)
@@ -80,8 +80,8 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
   wrU locals 0 0.0
   loopI 0.0 t0 $ \i1 -> do
     let !d1 = fromIntegral i1 :: Double
-    chkI scalars (6 * i1) 5 5
-    t2 <- rdU scalars ((6 * i1) + 5)
+    chkI scalars (8 * i1) 5 5
+    t2 <- rdU scalars ((8 * i1) + 5)
     t3 <- rdU locals 0
     wrU locals 0 (if (t2 - t3) > 0 then t2 else t3)
     pure ()
@@ -144,9 +144,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t30 <- rdU pos (3 * i29)
     t31 <- rdU pos ((3 * i29) + 1)
     t32 <- rdU pos ((3 * i29) + 2)
-    chkI scalars (6 * i29) 2 5
-    t33 <- rdU scalars ((6 * i29) + 5)
-    t34 <- rdU scalars ((6 * i29) + 2)
+    chkI scalars (8 * i29) 2 5
+    t33 <- rdU scalars ((8 * i29) + 5)
+    t34 <- rdU scalars ((8 * i29) + 2)
     t35 <- rdU meta 5
     wrU locals 2 0.0
     wrU locals 2 0.0
@@ -183,9 +183,9 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
                 t55 <- rdU pos (3 * (truncate t53))
                 t56 <- rdU pos ((3 * (truncate t53)) + 1)
                 t57 <- rdU pos ((3 * (truncate t53)) + 2)
-                chkI scalars (6 * (truncate t53)) 2 5
-                t58 <- rdU scalars ((6 * (truncate t53)) + 5)
-                t59 <- rdU scalars ((6 * (truncate t53)) + 2)
+                chkI scalars (8 * (truncate t53)) 2 5
+                t58 <- rdU scalars ((8 * (truncate t53)) + 5)
+                t59 <- rdU scalars ((8 * (truncate t53)) + 2)
                 let !t60 = (t34 + t59)
                 let !t61 = (t30 + (negate t55))
                 let !t62 = (t31 + (negate t56))
@@ -316,11 +316,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         let !s125 = ((t120 * t124) - (t121 * t123))
         let !s126 = ((t121 * t122) - (t119 * t124))
         let !s127 = ((t119 * t123) - (t120 * t122))
-        chkI scalars (6 * i29) 0 0
-        t128 <- rdU scalars (6 * i29)
-        t129 <- rdU scalars ((6 * i29) + 5)
-        t130 <- rdU scalars ((6 * i29) + 2)
-        t131 <- rdU scalars ((6 * i29) + 3)
+        chkI scalars (8 * i29) 0 0
+        t128 <- rdU scalars (8 * i29)
+        t129 <- rdU scalars ((8 * i29) + 5)
+        t130 <- rdU scalars ((8 * i29) + 2)
+        t131 <- rdU scalars ((8 * i29) + 3)
         chkI contacts (30 * (truncate t114)) 0 29
         wrU contacts (30 * (truncate t114)) d29
         wrU contacts ((30 * (truncate t114)) + 1) (-1.0)
@@ -364,11 +364,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s150 = ((t145 * t149) - (t146 * t148))
           let !s151 = ((t146 * t147) - (t144 * t149))
           let !s152 = ((t144 * t148) - (t145 * t147))
-          chkI scalars 0 (-6) (-1)
-          t153 <- rdU scalars (-6)
-          t154 <- rdU scalars (-1)
-          t155 <- rdU scalars (-4)
-          t156 <- rdU scalars (-3)
+          chkI scalars 0 (-8) (-3)
+          t153 <- rdU scalars (-8)
+          t154 <- rdU scalars (-3)
+          t155 <- rdU scalars (-6)
+          t156 <- rdU scalars (-5)
           wrU contacts ((30 * (truncate t114)) + 8) (t133 + (negate (((t144 * t133) + (t146 * t134)) * t144)))
           wrU contacts ((30 * (truncate t114)) + 9) (negate (((t144 * t133) + (t146 * t134)) * t145))
           wrU contacts ((30 * (truncate t114)) + 10) (t134 + (negate (((t144 * t133) + (t146 * t134)) * t146)))
@@ -424,11 +424,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s180 = ((t175 * t179) - (t176 * t178))
           let !s181 = ((t176 * t177) - (t174 * t179))
           let !s182 = ((t174 * t178) - (t175 * t177))
-          chkI scalars (6 * i29) 0 0
-          t183 <- rdU scalars (6 * i29)
-          t184 <- rdU scalars ((6 * i29) + 5)
-          t185 <- rdU scalars ((6 * i29) + 2)
-          t186 <- rdU scalars ((6 * i29) + 3)
+          chkI scalars (8 * i29) 0 0
+          t183 <- rdU scalars (8 * i29)
+          t184 <- rdU scalars ((8 * i29) + 5)
+          t185 <- rdU scalars ((8 * i29) + 2)
+          t186 <- rdU scalars ((8 * i29) + 3)
           chkI contacts (30 * (truncate t169)) 0 29
           wrU contacts (30 * (truncate t169)) d29
           wrU contacts ((30 * (truncate t169)) + 1) (-1.0)
@@ -472,11 +472,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             let !s205 = ((t200 * t204) - (t201 * t203))
             let !s206 = ((t201 * t202) - (t199 * t204))
             let !s207 = ((t199 * t203) - (t200 * t202))
-            chkI scalars 0 (-6) (-1)
-            t208 <- rdU scalars (-6)
-            t209 <- rdU scalars (-1)
-            t210 <- rdU scalars (-4)
-            t211 <- rdU scalars (-3)
+            chkI scalars 0 (-8) (-3)
+            t208 <- rdU scalars (-8)
+            t209 <- rdU scalars (-3)
+            t210 <- rdU scalars (-6)
+            t211 <- rdU scalars (-5)
             wrU contacts ((30 * (truncate t169)) + 8) (t188 + (negate (((t199 * t188) + (t201 * t189)) * t199)))
             wrU contacts ((30 * (truncate t169)) + 9) (negate (((t199 * t188) + (t201 * t189)) * t200))
             wrU contacts ((30 * (truncate t169)) + 10) (t189 + (negate (((t199 * t188) + (t201 * t189)) * t201)))
@@ -708,11 +708,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
           let !s348 = ((t343 * t347) - (t344 * t346))
           let !s349 = ((t344 * t345) - (t342 * t347))
           let !s350 = ((t342 * t346) - (t343 * t345))
-          chkI scalars (6 * i29) 0 0
-          t351 <- rdU scalars (6 * i29)
-          t352 <- rdU scalars ((6 * i29) + 5)
-          t353 <- rdU scalars ((6 * i29) + 2)
-          t354 <- rdU scalars ((6 * i29) + 3)
+          chkI scalars (8 * i29) 0 0
+          t351 <- rdU scalars (8 * i29)
+          t352 <- rdU scalars ((8 * i29) + 5)
+          t353 <- rdU scalars ((8 * i29) + 2)
+          t354 <- rdU scalars ((8 * i29) + 3)
           chkI contacts (30 * (truncate t337)) 0 29
           wrU contacts (30 * (truncate t337)) d29
           wrU contacts ((30 * (truncate t337)) + 1) (-1.0)
@@ -747,11 +747,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
             let !s364 = ((t359 * t363) - (t360 * t362))
             let !s365 = ((t360 * t361) - (t358 * t363))
             let !s366 = ((t358 * t362) - (t359 * t361))
-            chkI scalars 0 (-6) (-1)
-            t367 <- rdU scalars (-6)
-            t368 <- rdU scalars (-1)
-            t369 <- rdU scalars (-4)
-            t370 <- rdU scalars (-3)
+            chkI scalars 0 (-8) (-3)
+            t367 <- rdU scalars (-8)
+            t368 <- rdU scalars (-3)
+            t369 <- rdU scalars (-6)
+            t370 <- rdU scalars (-5)
             wrU contacts ((30 * (truncate t337)) + 8) (s334 + (negate ((((t358 * s334) + (t359 * s335)) + (t360 * s336)) * t358)))
             wrU contacts ((30 * (truncate t337)) + 9) (s335 + (negate ((((t358 * s334) + (t359 * s335)) + (t360 * s336)) * t359)))
             wrU contacts ((30 * (truncate t337)) + 10) (s336 + (negate ((((t358 * s334) + (t359 * s335)) + (t360 * s336)) * t360)))
@@ -794,637 +794,365 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
 
 stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
 stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
-  chkI locals 0 0 4
-  chkI params 0 0 9
-  t0 <- rdU params 0
-  t1 <- rdU params 2
-  t2 <- rdU params 3
-  t3 <- rdU params 4
-  t4 <- rdU params 5
-  t5 <- rdU params 6
-  t6 <- rdU params 7
-  t7 <- rdU params 8
-  t8 <- rdU params 9
-  chkI meta 0 0 2
-  t9 <- rdU meta 2
-  loopI 0.0 t9 $ \i10 -> do
-    let !d10 = fromIntegral i10 :: Double
-    chkI contacts (30 * i10) 0 26
-    t11 <- rdU contacts (30 * i10)
-    t12 <- rdU contacts ((30 * i10) + 1)
-    t13 <- rdU contacts ((30 * i10) + 2)
-    t14 <- rdU contacts ((30 * i10) + 3)
-    t15 <- rdU contacts ((30 * i10) + 4)
-    t16 <- rdU contacts ((30 * i10) + 5)
-    t17 <- rdU contacts ((30 * i10) + 6)
-    t18 <- rdU contacts ((30 * i10) + 7)
-    t19 <- rdU contacts ((30 * i10) + 8)
-    t20 <- rdU contacts ((30 * i10) + 9)
-    t21 <- rdU contacts ((30 * i10) + 10)
-    t22 <- rdU contacts ((30 * i10) + 11)
-    t23 <- rdU contacts ((30 * i10) + 12)
-    t24 <- rdU contacts ((30 * i10) + 13)
-    t25 <- rdU contacts ((30 * i10) + 14)
-    t26 <- rdU contacts ((30 * i10) + 15)
-    t27 <- rdU contacts ((30 * i10) + 16)
-    t28 <- rdU contacts ((30 * i10) + 17)
-    t29 <- rdU contacts ((30 * i10) + 18)
-    t30 <- rdU contacts ((30 * i10) + 19)
-    chkI scalars (6 * (truncate t11)) 1 3
-    t31 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t32 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 0 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t33 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t34 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 0 ((t33 * (((t19 * t19) + (t20 * t20)) + (t21 * t21))) + ((t34 * t22) * t22))
-      pure ()
-    else do
-      pure ()
-    t35 <- rdU locals 0
-    let !s36 = (((t31 * (((t15 * t15) + (t16 * t16)) + (t17 * t17))) + ((t32 * t18) * t18)) + t35)
-    let !s37 = (if s36 > 0 then (recip s36) else 0.0)
-    t38 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t39 <- rdU scalars ((6 * (truncate t11)) + 3)
-    wrU locals 1 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 2 3
-      t40 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t41 <- rdU scalars ((6 * (truncate t12)) + 3)
-      wrU locals 1 ((t40 * (((t27 * t27) + (t28 * t28)) + (t29 * t29))) + ((t41 * t30) * t30))
-      pure ()
-    else do
-      pure ()
-    t42 <- rdU locals 1
-    let !s43 = (((t38 * (((t23 * t23) + (t24 * t24)) + (t25 * t25))) + ((t39 * t26) * t26)) + t42)
-    let !s44 = (if s43 > 0 then (recip s43) else 0.0)
-    wrU contacts ((30 * i10) + 21) s37
-    wrU contacts ((30 * i10) + 22) s44
-    t45 <- rdU contacts ((30 * i10) + 20)
-    t46 <- rdU contacts ((30 * i10) + 26)
-    chkI vel (3 * (truncate t11)) 0 2
-    t47 <- rdU vel (3 * (truncate t11))
-    t48 <- rdU vel ((3 * (truncate t11)) + 1)
-    t49 <- rdU vel ((3 * (truncate t11)) + 2)
-    t50 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU locals 2 0.0
-    if (t12 + 0.5) > 0 then do
-      chkI vel (3 * (truncate t12)) 0 2
-      t51 <- rdU vel (3 * (truncate t12))
-      t52 <- rdU vel ((3 * (truncate t12)) + 1)
-      t53 <- rdU vel ((3 * (truncate t12)) + 2)
-      chkI scalars (6 * (truncate t12)) 1 1
-      t54 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU locals 2 ((((t19 * t51) + (t20 * t52)) + (t21 * t53)) + (t22 * t54))
-      pure ()
-    else do
-      pure ()
-    t55 <- rdU locals 2
-    let !s56 = (((((t15 * t47) + (t16 * t48)) + (t17 * t49)) + (t18 * t50)) - t55)
-    let !t57 = (t45 - t5)
-    let !t58 = (((t46 * t4) / t0) * (if (negate t57) > 0 then 0.0 else t57))
-    let !t59 = (if (t58 - t8) > 0 then t8 else t58)
-    let !t60 = (if ((negate s56) - t6) > 0 then ((negate t3) * s56) else 0.0)
-    wrU contacts ((30 * i10) + 23) (if (t59 - t60) > 0 then t59 else t60)
-    wrU locals 3 0.0
-    wrU locals 4 0.0
-    chkI bodyPrev (2 * (truncate t13)) 0 1
-    t61 <- rdU bodyPrev (2 * (truncate t13))
-    t62 <- rdU bodyPrev ((2 * (truncate t13)) + 1)
-    let !n63 = (t61 + t62)
-    loopI t61 n63 $ \i64 -> do
-      let !d64 = fromIntegral i64 :: Double
-      chkI prev (4 * i64) 1 1
-      t65 <- rdU prev ((4 * i64) + 1)
-      if (0.5 - (abs (t65 - t14))) > 0 then do
-        chkI prev (4 * i64) 2 3
-        t66 <- rdU prev ((4 * i64) + 2)
-        wrU locals 3 t66
-        t67 <- rdU prev ((4 * i64) + 3)
-        wrU locals 4 t67
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t68 <- rdU locals 3
-    t69 <- rdU locals 4
-    wrU contacts ((30 * i10) + 24) (t7 * t68)
-    wrU contacts ((30 * i10) + 25) (t7 * t69)
-    t70 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t71 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t72 <- rdU vel (3 * (truncate t11))
-    t73 <- rdU vel ((3 * (truncate t11)) + 1)
-    t74 <- rdU vel ((3 * (truncate t11)) + 2)
-    t75 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t72 + ((t70 * (t7 * t68)) * t15))
-    wrU vel ((3 * (truncate t11)) + 1) (t73 + ((t70 * (t7 * t68)) * t16))
-    wrU vel ((3 * (truncate t11)) + 2) (t74 + ((t70 * (t7 * t68)) * t17))
-    wrU scalars ((6 * (truncate t11)) + 1) (t75 + ((t71 * (t7 * t68)) * t18))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t76 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t77 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t78 <- rdU vel (3 * (truncate t12))
-      t79 <- rdU vel ((3 * (truncate t12)) + 1)
-      t80 <- rdU vel ((3 * (truncate t12)) + 2)
-      t81 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t78 + ((t76 * (negate (t7 * t68))) * t19))
-      wrU vel ((3 * (truncate t12)) + 1) (t79 + ((t76 * (negate (t7 * t68))) * t20))
-      wrU vel ((3 * (truncate t12)) + 2) (t80 + ((t76 * (negate (t7 * t68))) * t21))
-      wrU scalars ((6 * (truncate t12)) + 1) (t81 + ((t77 * (negate (t7 * t68))) * t22))
-      pure ()
-    else do
-      pure ()
-    t82 <- rdU scalars ((6 * (truncate t11)) + 2)
-    t83 <- rdU scalars ((6 * (truncate t11)) + 3)
-    t84 <- rdU vel (3 * (truncate t11))
-    t85 <- rdU vel ((3 * (truncate t11)) + 1)
-    t86 <- rdU vel ((3 * (truncate t11)) + 2)
-    t87 <- rdU scalars ((6 * (truncate t11)) + 1)
-    wrU vel (3 * (truncate t11)) (t84 + ((t82 * (t7 * t69)) * t23))
-    wrU vel ((3 * (truncate t11)) + 1) (t85 + ((t82 * (t7 * t69)) * t24))
-    wrU vel ((3 * (truncate t11)) + 2) (t86 + ((t82 * (t7 * t69)) * t25))
-    wrU scalars ((6 * (truncate t11)) + 1) (t87 + ((t83 * (t7 * t69)) * t26))
-    if (t12 + 0.5) > 0 then do
-      chkI scalars (6 * (truncate t12)) 1 3
-      t88 <- rdU scalars ((6 * (truncate t12)) + 2)
-      t89 <- rdU scalars ((6 * (truncate t12)) + 3)
-      chkI vel (3 * (truncate t12)) 0 2
-      t90 <- rdU vel (3 * (truncate t12))
-      t91 <- rdU vel ((3 * (truncate t12)) + 1)
-      t92 <- rdU vel ((3 * (truncate t12)) + 2)
-      t93 <- rdU scalars ((6 * (truncate t12)) + 1)
-      wrU vel (3 * (truncate t12)) (t90 + ((t88 * (negate (t7 * t69))) * t27))
-      wrU vel ((3 * (truncate t12)) + 1) (t91 + ((t88 * (negate (t7 * t69))) * t28))
-      wrU vel ((3 * (truncate t12)) + 2) (t92 + ((t88 * (negate (t7 * t69))) * t29))
-      wrU scalars ((6 * (truncate t12)) + 1) (t93 + ((t89 * (negate (t7 * t69))) * t30))
-      pure ()
-    else do
-      pure ()
-    pure ()
+  chkI params 0 2 2
+  t0 <- rdU params 2
+  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
-  t94 <- rdU mouse 0
-  if t94 > 0 then do
+  t1 <- rdU mouse 0
+  if t1 > 0 then do
     chkI mouse 0 1 1
-    t95 <- rdU mouse 1
-    chkI scalars (6 * (truncate t95)) 2 2
-    t96 <- rdU scalars ((6 * (truncate t95)) + 2)
-    if t96 > 0 then do
-      chkI scalars (6 * (truncate t95)) 0 5
-      t97 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t98 <- rdU params 0
-      chkI pos (3 * (truncate t95)) 0 2
-      t99 <- rdU pos (3 * (truncate t95))
-      t100 <- rdU pos ((3 * (truncate t95)) + 1)
-      t101 <- rdU pos ((3 * (truncate t95)) + 2)
-      chkI normal (3 * (truncate t95)) 0 2
-      t102 <- rdU normal (3 * (truncate t95))
-      t103 <- rdU normal ((3 * (truncate t95)) + 1)
-      t104 <- rdU normal ((3 * (truncate t95)) + 2)
-      chkI axis (3 * (truncate t95)) 0 2
-      t105 <- rdU axis (3 * (truncate t95))
-      t106 <- rdU axis ((3 * (truncate t95)) + 1)
-      t107 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s108 = ((t103 * t107) - (t104 * t106))
-      let !s109 = ((t104 * t105) - (t102 * t107))
-      let !s110 = ((t102 * t106) - (t103 * t105))
-      t111 <- rdU scalars (6 * (truncate t95))
-      t112 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t113 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t114 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t115 <- rdU pos (3 * (truncate t95))
-      t116 <- rdU pos ((3 * (truncate t95)) + 1)
-      t117 <- rdU pos ((3 * (truncate t95)) + 2)
-      t118 <- rdU normal (3 * (truncate t95))
-      t119 <- rdU normal ((3 * (truncate t95)) + 1)
-      t120 <- rdU normal ((3 * (truncate t95)) + 2)
-      t121 <- rdU axis (3 * (truncate t95))
-      t122 <- rdU axis ((3 * (truncate t95)) + 1)
-      t123 <- rdU axis ((3 * (truncate t95)) + 2)
-      let !s124 = ((t119 * t123) - (t120 * t122))
-      let !s125 = ((t120 * t121) - (t118 * t123))
-      let !s126 = ((t118 * t122) - (t119 * t121))
-      t127 <- rdU scalars (6 * (truncate t95))
-      t128 <- rdU scalars ((6 * (truncate t95)) + 5)
-      t129 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t130 <- rdU scalars ((6 * (truncate t95)) + 3)
+    t2 <- rdU mouse 1
+    chkI scalars (8 * (truncate t2)) 2 2
+    t3 <- rdU scalars ((8 * (truncate t2)) + 2)
+    if t3 > 0 then do
+      chkI scalars (8 * (truncate t2)) 0 5
+      t4 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI params 0 0 0
+      t5 <- rdU params 0
+      chkI pos (3 * (truncate t2)) 0 2
+      t6 <- rdU pos (3 * (truncate t2))
+      t7 <- rdU pos ((3 * (truncate t2)) + 1)
+      t8 <- rdU pos ((3 * (truncate t2)) + 2)
+      chkI normal (3 * (truncate t2)) 0 2
+      t9 <- rdU normal (3 * (truncate t2))
+      t10 <- rdU normal ((3 * (truncate t2)) + 1)
+      t11 <- rdU normal ((3 * (truncate t2)) + 2)
+      chkI axis (3 * (truncate t2)) 0 2
+      t12 <- rdU axis (3 * (truncate t2))
+      t13 <- rdU axis ((3 * (truncate t2)) + 1)
+      t14 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s15 = ((t10 * t14) - (t11 * t13))
+      let !s16 = ((t11 * t12) - (t9 * t14))
+      let !s17 = ((t9 * t13) - (t10 * t12))
+      t18 <- rdU scalars (8 * (truncate t2))
+      t19 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t20 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t21 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t22 <- rdU pos (3 * (truncate t2))
+      t23 <- rdU pos ((3 * (truncate t2)) + 1)
+      t24 <- rdU pos ((3 * (truncate t2)) + 2)
+      t25 <- rdU normal (3 * (truncate t2))
+      t26 <- rdU normal ((3 * (truncate t2)) + 1)
+      t27 <- rdU normal ((3 * (truncate t2)) + 2)
+      t28 <- rdU axis (3 * (truncate t2))
+      t29 <- rdU axis ((3 * (truncate t2)) + 1)
+      t30 <- rdU axis ((3 * (truncate t2)) + 2)
+      let !s31 = ((t26 * t30) - (t27 * t29))
+      let !s32 = ((t27 * t28) - (t25 * t30))
+      let !s33 = ((t25 * t29) - (t26 * t28))
+      t34 <- rdU scalars (8 * (truncate t2))
+      t35 <- rdU scalars ((8 * (truncate t2)) + 5)
+      t36 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t37 <- rdU scalars ((8 * (truncate t2)) + 3)
       chkI mouse 0 2 11
-      t131 <- rdU mouse 2
-      t132 <- rdU mouse 3
-      let !t133 = (t131 / 4.0)
-      let !t134 = (if (abs t133) > 0 then 1.0 else 0.0)
-      let !t135 = (t127 + t132)
-      let !t136 = (cos t135)
-      let !t137 = (sin t135)
-      let !t138 = (1.0 - t134)
-      let !t139 = (t116 + (t133 * ((t136 * t122) + (t137 * s125))))
-      let !t140 = (if (if ((abs t139) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t139 + (negate t139)) else t139)
-      let !t141 = (if (if ((abs t140) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t140 + (negate t140)) else t140)
-      let !s142 = ((t134 * (t115 + (t133 * ((t136 * t121) + (t137 * s124))))) + (t138 * t115))
-      let !s143 = ((t134 * (if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141)) + (t138 * t116))
-      let !s144 = ((t134 * (t117 + (t133 * ((t136 * t123) + (t137 * s126))))) + (t138 * t117))
-      let !t145 = ((t136 * t121) + (t137 * s124))
-      let !t146 = ((t136 * t122) + (t137 * s125))
-      let !t147 = ((t136 * t123) + (t137 * s126))
-      let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
-      let !t149 = (if (abs t133) > 0 then (recip t133) else 0.0)
-      let !t150 = (t149 * ((t115 + (t133 * t145)) + (negate t115)))
-      let !t151 = (t149 * ((if (if ((abs t141) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t141 + (negate t141)) else t141) + (negate t116)))
-      let !t152 = (t151 + (negate t151))
-      let !t153 = (t149 * ((t117 + (t133 * t147)) + (negate t117)))
-      let !t154 = (sqrt (((t150 * t150) + (t152 * t152)) + (t153 * t153)))
-      let !t155 = (if t154 > 0 then (recip (if (t154 - 1.0e-300) > 0 then t154 else 1.0e-300)) else 0.0)
-      let !s156 = ((t134 * (t148 * (t155 * t150))) + (t138 * t145))
-      let !s157 = ((t134 * (t148 * (t155 * t152))) + (t138 * t146))
-      let !s158 = ((t134 * (t148 * (t155 * t153))) + (t138 * t147))
-      let !t159 = (s143 + (t133 * s157))
-      let !t160 = (if (if ((abs t159) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t159 + (negate t159)) else t159)
-      let !t161 = (if (if ((abs t160) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t160 + (negate t160)) else t160)
-      let !s162 = ((t134 * (s142 + (t133 * s156))) + (t138 * s142))
-      let !s163 = ((t134 * (if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161)) + (t138 * s143))
-      let !s164 = ((t134 * (s144 + (t133 * s158))) + (t138 * s144))
-      let !t165 = (sqrt (((s156 * s156) + (s157 * s157)) + (s158 * s158)))
-      let !t166 = (t149 * ((s142 + (t133 * s156)) + (negate s142)))
-      let !t167 = (t149 * ((if (if ((abs t161) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t161 + (negate t161)) else t161) + (negate s143)))
-      let !t168 = (t167 + (negate t167))
-      let !t169 = (t149 * ((s144 + (t133 * s158)) + (negate s144)))
-      let !t170 = (sqrt (((t166 * t166) + (t168 * t168)) + (t169 * t169)))
-      let !t171 = (if t170 > 0 then (recip (if (t170 - 1.0e-300) > 0 then t170 else 1.0e-300)) else 0.0)
-      let !s172 = ((t134 * (t165 * (t171 * t166))) + (t138 * s156))
-      let !s173 = ((t134 * (t165 * (t171 * t168))) + (t138 * s157))
-      let !s174 = ((t134 * (t165 * (t171 * t169))) + (t138 * s158))
-      let !t175 = (s163 + (t133 * s173))
-      let !t176 = (if (if ((abs t175) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t175 + (negate t175)) else t175)
-      let !t177 = (if (if ((abs t176) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t176 + (negate t176)) else t176)
-      let !s178 = ((t134 * (s162 + (t133 * s172))) + (t138 * s162))
-      let !s179 = ((t134 * (if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177)) + (t138 * s163))
-      let !s180 = ((t134 * (s164 + (t133 * s174))) + (t138 * s164))
-      let !t181 = (sqrt (((s172 * s172) + (s173 * s173)) + (s174 * s174)))
-      let !t182 = (t149 * ((s162 + (t133 * s172)) + (negate s162)))
-      let !t183 = (t149 * ((if (if ((abs t177) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t177 + (negate t177)) else t177) + (negate s163)))
-      let !t184 = (t183 + (negate t183))
-      let !t185 = (t149 * ((s164 + (t133 * s174)) + (negate s164)))
-      let !t186 = (sqrt (((t182 * t182) + (t184 * t184)) + (t185 * t185)))
-      let !t187 = (if t186 > 0 then (recip (if (t186 - 1.0e-300) > 0 then t186 else 1.0e-300)) else 0.0)
-      let !s188 = ((t134 * (t181 * (t187 * t182))) + (t138 * s172))
-      let !s189 = ((t134 * (t181 * (t187 * t184))) + (t138 * s173))
-      let !s190 = ((t134 * (t181 * (t187 * t185))) + (t138 * s174))
-      let !t191 = (s179 + (t133 * s189))
-      let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
-      let !t193 = (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)
-      let !s194 = ((t134 * (s178 + (t133 * s188))) + (t138 * s178))
-      let !s195 = ((t134 * (if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193)) + (t138 * s179))
-      let !s196 = ((t134 * (s180 + (t133 * s190))) + (t138 * s180))
-      let !t197 = (sqrt (((s188 * s188) + (s189 * s189)) + (s190 * s190)))
-      let !t198 = (t149 * ((s178 + (t133 * s188)) + (negate s178)))
-      let !t199 = (t149 * ((if (if ((abs t193) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t193 + (negate t193)) else t193) + (negate s179)))
-      let !t200 = (t199 + (negate t199))
-      let !t201 = (t149 * ((s180 + (t133 * s190)) + (negate s180)))
-      let !t202 = (sqrt (((t198 * t198) + (t200 * t200)) + (t201 * t201)))
-      let !t203 = (if t202 > 0 then (recip (if (t202 - 1.0e-300) > 0 then t202 else 1.0e-300)) else 0.0)
-      let !s204 = ((t134 * (t197 * (t203 * t198))) + (t138 * s188))
-      let !s205 = ((t134 * (t197 * (t203 * t200))) + (t138 * s189))
-      let !s206 = ((t134 * (t197 * (t203 * t201))) + (t138 * s190))
-      t207 <- rdU mouse 4
-      t208 <- rdU mouse 5
-      t209 <- rdU mouse 6
-      t210 <- rdU mouse 7
-      t211 <- rdU mouse 8
-      t212 <- rdU mouse 9
-      let !t213 = (recip t96)
-      let !t214 = (6.283185307179586 * t210)
-      let !s215 = (recip (t98 * ((((2.0 * t213) * t211) * t214) + (t98 * ((t213 * t214) * t214)))))
-      let !s216 = ((t98 * ((t213 * t214) * t214)) * s215)
-      let !s217 = (s194 + (negate t99))
-      let !s218 = (s195 + (negate t100))
-      let !s219 = (s196 + (negate t101))
-      let !s220 = (s194 + (negate t207))
-      let !s221 = (s195 + (negate t208))
-      let !s222 = (s196 + (negate t209))
-      t223 <- rdU mouse 10
-      t224 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t225 <- rdU scalars ((6 * (truncate t95)) + 3)
-      chkI vel (3 * (truncate t95)) 0 2
-      t226 <- rdU vel (3 * (truncate t95))
-      t227 <- rdU vel ((3 * (truncate t95)) + 1)
-      t228 <- rdU vel ((3 * (truncate t95)) + 2)
-      t229 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t226 + ((t224 * t223) * t105))
-      wrU vel ((3 * (truncate t95)) + 1) (t227 + ((t224 * t223) * t106))
-      wrU vel ((3 * (truncate t95)) + 2) (t228 + ((t224 * t223) * t107))
-      wrU scalars ((6 * (truncate t95)) + 1) (t229 + ((t225 * t223) * (((((s218 * t107) - (s219 * t106)) * t102) + (((s219 * t105) - (s217 * t107)) * t103)) + (((s217 * t106) - (s218 * t105)) * t104))))
-      t230 <- rdU mouse 11
-      t231 <- rdU scalars ((6 * (truncate t95)) + 2)
-      t232 <- rdU scalars ((6 * (truncate t95)) + 3)
-      t233 <- rdU vel (3 * (truncate t95))
-      t234 <- rdU vel ((3 * (truncate t95)) + 1)
-      t235 <- rdU vel ((3 * (truncate t95)) + 2)
-      t236 <- rdU scalars ((6 * (truncate t95)) + 1)
-      wrU vel (3 * (truncate t95)) (t233 + ((t231 * t230) * s108))
-      wrU vel ((3 * (truncate t95)) + 1) (t234 + ((t231 * t230) * s109))
-      wrU vel ((3 * (truncate t95)) + 2) (t235 + ((t231 * t230) * s110))
-      wrU scalars ((6 * (truncate t95)) + 1) (t236 + ((t232 * t230) * (((((s218 * s110) - (s219 * s109)) * t102) + (((s219 * s108) - (s217 * s110)) * t103)) + (((s217 * s109) - (s218 * s108)) * t104))))
+      t38 <- rdU mouse 2
+      t39 <- rdU mouse 3
+      let !t40 = (t38 / 4.0)
+      let !t41 = (if (abs t40) > 0 then 1.0 else 0.0)
+      let !t42 = (t34 + t39)
+      let !t43 = (cos t42)
+      let !t44 = (sin t42)
+      let !t45 = (1.0 - t41)
+      let !t46 = (t23 + (t40 * ((t43 * t29) + (t44 * s32))))
+      let !t47 = (if (if ((abs t46) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t46 + (negate t46)) else t46)
+      let !t48 = (if (if ((abs t47) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t47 + (negate t47)) else t47)
+      let !s49 = ((t41 * (t22 + (t40 * ((t43 * t28) + (t44 * s31))))) + (t45 * t22))
+      let !s50 = ((t41 * (if (if ((abs t48) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t48 + (negate t48)) else t48)) + (t45 * t23))
+      let !s51 = ((t41 * (t24 + (t40 * ((t43 * t30) + (t44 * s33))))) + (t45 * t24))
+      let !t52 = ((t43 * t28) + (t44 * s31))
+      let !t53 = ((t43 * t29) + (t44 * s32))
+      let !t54 = ((t43 * t30) + (t44 * s33))
+      let !t55 = (sqrt (((t52 * t52) + (t53 * t53)) + (t54 * t54)))
+      let !t56 = (if (abs t40) > 0 then (recip t40) else 0.0)
+      let !t57 = (t56 * ((t22 + (t40 * t52)) + (negate t22)))
+      let !t58 = (t56 * ((if (if ((abs t48) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t48 + (negate t48)) else t48) + (negate t23)))
+      let !t59 = (t58 + (negate t58))
+      let !t60 = (t56 * ((t24 + (t40 * t54)) + (negate t24)))
+      let !t61 = (sqrt (((t57 * t57) + (t59 * t59)) + (t60 * t60)))
+      let !t62 = (if t61 > 0 then (recip (if (t61 - 1.0e-300) > 0 then t61 else 1.0e-300)) else 0.0)
+      let !s63 = ((t41 * (t55 * (t62 * t57))) + (t45 * t52))
+      let !s64 = ((t41 * (t55 * (t62 * t59))) + (t45 * t53))
+      let !s65 = ((t41 * (t55 * (t62 * t60))) + (t45 * t54))
+      let !t66 = (s50 + (t40 * s64))
+      let !t67 = (if (if ((abs t66) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t66 + (negate t66)) else t66)
+      let !t68 = (if (if ((abs t67) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t67 + (negate t67)) else t67)
+      let !s69 = ((t41 * (s49 + (t40 * s63))) + (t45 * s49))
+      let !s70 = ((t41 * (if (if ((abs t68) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t68 + (negate t68)) else t68)) + (t45 * s50))
+      let !s71 = ((t41 * (s51 + (t40 * s65))) + (t45 * s51))
+      let !t72 = (sqrt (((s63 * s63) + (s64 * s64)) + (s65 * s65)))
+      let !t73 = (t56 * ((s49 + (t40 * s63)) + (negate s49)))
+      let !t74 = (t56 * ((if (if ((abs t68) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t68 + (negate t68)) else t68) + (negate s50)))
+      let !t75 = (t74 + (negate t74))
+      let !t76 = (t56 * ((s51 + (t40 * s65)) + (negate s51)))
+      let !t77 = (sqrt (((t73 * t73) + (t75 * t75)) + (t76 * t76)))
+      let !t78 = (if t77 > 0 then (recip (if (t77 - 1.0e-300) > 0 then t77 else 1.0e-300)) else 0.0)
+      let !s79 = ((t41 * (t72 * (t78 * t73))) + (t45 * s63))
+      let !s80 = ((t41 * (t72 * (t78 * t75))) + (t45 * s64))
+      let !s81 = ((t41 * (t72 * (t78 * t76))) + (t45 * s65))
+      let !t82 = (s70 + (t40 * s80))
+      let !t83 = (if (if ((abs t82) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t82 + (negate t82)) else t82)
+      let !t84 = (if (if ((abs t83) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t83 + (negate t83)) else t83)
+      let !s85 = ((t41 * (s69 + (t40 * s79))) + (t45 * s69))
+      let !s86 = ((t41 * (if (if ((abs t84) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t84 + (negate t84)) else t84)) + (t45 * s70))
+      let !s87 = ((t41 * (s71 + (t40 * s81))) + (t45 * s71))
+      let !t88 = (sqrt (((s79 * s79) + (s80 * s80)) + (s81 * s81)))
+      let !t89 = (t56 * ((s69 + (t40 * s79)) + (negate s69)))
+      let !t90 = (t56 * ((if (if ((abs t84) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t84 + (negate t84)) else t84) + (negate s70)))
+      let !t91 = (t90 + (negate t90))
+      let !t92 = (t56 * ((s71 + (t40 * s81)) + (negate s71)))
+      let !t93 = (sqrt (((t89 * t89) + (t91 * t91)) + (t92 * t92)))
+      let !t94 = (if t93 > 0 then (recip (if (t93 - 1.0e-300) > 0 then t93 else 1.0e-300)) else 0.0)
+      let !s95 = ((t41 * (t88 * (t94 * t89))) + (t45 * s79))
+      let !s96 = ((t41 * (t88 * (t94 * t91))) + (t45 * s80))
+      let !s97 = ((t41 * (t88 * (t94 * t92))) + (t45 * s81))
+      let !t98 = (s86 + (t40 * s96))
+      let !t99 = (if (if ((abs t98) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t98 + (negate t98)) else t98)
+      let !t100 = (if (if ((abs t99) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t99 + (negate t99)) else t99)
+      let !s101 = ((t41 * (s85 + (t40 * s95))) + (t45 * s85))
+      let !s102 = ((t41 * (if (if ((abs t100) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t100 + (negate t100)) else t100)) + (t45 * s86))
+      let !s103 = ((t41 * (s87 + (t40 * s97))) + (t45 * s87))
+      let !t104 = (sqrt (((s95 * s95) + (s96 * s96)) + (s97 * s97)))
+      let !t105 = (t56 * ((s85 + (t40 * s95)) + (negate s85)))
+      let !t106 = (t56 * ((if (if ((abs t100) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t100 + (negate t100)) else t100) + (negate s86)))
+      let !t107 = (t106 + (negate t106))
+      let !t108 = (t56 * ((s87 + (t40 * s97)) + (negate s87)))
+      let !t109 = (sqrt (((t105 * t105) + (t107 * t107)) + (t108 * t108)))
+      let !t110 = (if t109 > 0 then (recip (if (t109 - 1.0e-300) > 0 then t109 else 1.0e-300)) else 0.0)
+      let !s111 = ((t41 * (t104 * (t110 * t105))) + (t45 * s95))
+      let !s112 = ((t41 * (t104 * (t110 * t107))) + (t45 * s96))
+      let !s113 = ((t41 * (t104 * (t110 * t108))) + (t45 * s97))
+      t114 <- rdU mouse 4
+      t115 <- rdU mouse 5
+      t116 <- rdU mouse 6
+      t117 <- rdU mouse 7
+      t118 <- rdU mouse 8
+      t119 <- rdU mouse 9
+      let !t120 = (recip t3)
+      let !t121 = (6.283185307179586 * t117)
+      let !s122 = (recip (t5 * ((((2.0 * t120) * t118) * t121) + (t5 * ((t120 * t121) * t121)))))
+      let !s123 = ((t5 * ((t120 * t121) * t121)) * s122)
+      let !s124 = (s101 + (negate t6))
+      let !s125 = (s102 + (negate t7))
+      let !s126 = (s103 + (negate t8))
+      let !s127 = (s101 + (negate t114))
+      let !s128 = (s102 + (negate t115))
+      let !s129 = (s103 + (negate t116))
+      t130 <- rdU mouse 10
+      t131 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t132 <- rdU scalars ((8 * (truncate t2)) + 3)
+      chkI vel (3 * (truncate t2)) 0 2
+      t133 <- rdU vel (3 * (truncate t2))
+      t134 <- rdU vel ((3 * (truncate t2)) + 1)
+      t135 <- rdU vel ((3 * (truncate t2)) + 2)
+      t136 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t133 + ((t131 * t130) * t12))
+      wrU vel ((3 * (truncate t2)) + 1) (t134 + ((t131 * t130) * t13))
+      wrU vel ((3 * (truncate t2)) + 2) (t135 + ((t131 * t130) * t14))
+      wrU scalars ((8 * (truncate t2)) + 1) (t136 + ((t132 * t130) * (((((s125 * t14) - (s126 * t13)) * t9) + (((s126 * t12) - (s124 * t14)) * t10)) + (((s124 * t13) - (s125 * t12)) * t11))))
+      t137 <- rdU mouse 11
+      t138 <- rdU scalars ((8 * (truncate t2)) + 2)
+      t139 <- rdU scalars ((8 * (truncate t2)) + 3)
+      t140 <- rdU vel (3 * (truncate t2))
+      t141 <- rdU vel ((3 * (truncate t2)) + 1)
+      t142 <- rdU vel ((3 * (truncate t2)) + 2)
+      t143 <- rdU scalars ((8 * (truncate t2)) + 1)
+      wrU vel (3 * (truncate t2)) (t140 + ((t138 * t137) * s15))
+      wrU vel ((3 * (truncate t2)) + 1) (t141 + ((t138 * t137) * s16))
+      wrU vel ((3 * (truncate t2)) + 2) (t142 + ((t138 * t137) * s17))
+      wrU scalars ((8 * (truncate t2)) + 1) (t143 + ((t139 * t137) * (((((s125 * s17) - (s126 * s16)) * t9) + (((s126 * s15) - (s124 * s17)) * t10)) + (((s124 * s16) - (s125 * s15)) * t11))))
       pure ()
     else do
       pure ()
     pure ()
   else do
     pure ()
-  loopI 0.0 t1 $ \i237 -> do
-    let !d237 = fromIntegral i237 :: Double
-    loopI 0.0 t9 $ \i238 -> do
-      let !d238 = fromIntegral i238 :: Double
-      chkI contacts (30 * i238) 0 26
-      t239 <- rdU contacts (30 * i238)
-      t240 <- rdU contacts ((30 * i238) + 1)
-      t241 <- rdU contacts ((30 * i238) + 12)
-      t242 <- rdU contacts ((30 * i238) + 13)
-      t243 <- rdU contacts ((30 * i238) + 14)
-      t244 <- rdU contacts ((30 * i238) + 15)
-      t245 <- rdU contacts ((30 * i238) + 16)
-      t246 <- rdU contacts ((30 * i238) + 17)
-      t247 <- rdU contacts ((30 * i238) + 18)
-      t248 <- rdU contacts ((30 * i238) + 19)
-      t249 <- rdU contacts ((30 * i238) + 4)
-      t250 <- rdU contacts ((30 * i238) + 5)
-      t251 <- rdU contacts ((30 * i238) + 6)
-      t252 <- rdU contacts ((30 * i238) + 7)
-      t253 <- rdU contacts ((30 * i238) + 8)
-      t254 <- rdU contacts ((30 * i238) + 9)
-      t255 <- rdU contacts ((30 * i238) + 10)
-      t256 <- rdU contacts ((30 * i238) + 11)
-      t257 <- rdU contacts ((30 * i238) + 26)
-      t258 <- rdU contacts ((30 * i238) + 24)
-      t259 <- rdU contacts ((30 * i238) + 25)
-      t260 <- rdU contacts ((30 * i238) + 22)
-      t261 <- rdU contacts ((30 * i238) + 21)
-      t262 <- rdU contacts ((30 * i238) + 23)
-      let !s263 = (if (negate t240) > 0 then 0.0 else t240)
-      let !s264 = (t240 + 0.5)
-      let !s265 = (if (0.5 - (abs (t239 - t240))) > 0 then 1.0 else 0.0)
-      chkI scalars (6 * (truncate t239)) 1 3
-      t266 <- rdU scalars ((6 * (truncate t239)) + 2)
-      t267 <- rdU scalars ((6 * (truncate t239)) + 3)
-      chkI scalars (6 * (truncate s263)) 1 3
-      t268 <- rdU scalars ((6 * (truncate s263)) + 2)
-      t269 <- rdU scalars ((6 * (truncate s263)) + 3)
-      chkI vel (3 * (truncate t239)) 0 2
-      t270 <- rdU vel (3 * (truncate t239))
-      t271 <- rdU vel ((3 * (truncate t239)) + 1)
-      t272 <- rdU vel ((3 * (truncate t239)) + 2)
-      t273 <- rdU scalars ((6 * (truncate t239)) + 1)
-      chkI vel (3 * (truncate s263)) 0 2
-      t274 <- rdU vel (3 * (truncate s263))
-      t275 <- rdU vel ((3 * (truncate s263)) + 1)
-      t276 <- rdU vel ((3 * (truncate s263)) + 2)
-      t277 <- rdU scalars ((6 * (truncate s263)) + 1)
-      let !s278 = (((((t241 * t270) + (t242 * t271)) + (t243 * t272)) + (t244 * t273)) - (if s264 > 0 then ((((t245 * t274) + (t246 * t275)) + (t247 * t276)) + (t248 * t277)) else 0.0))
-      let !t279 = (t2 * t258)
-      let !t280 = (negate t279)
-      let !t281 = (t259 - ((t257 * s278) * t260))
-      let !t282 = (if (t281 - t279) > 0 then t279 else t281)
-      let !t283 = (if (t280 - t282) > 0 then t280 else t282)
-      let !s284 = (if (1.0 - (abs (t283 - t283))) > 0 then t283 else 0.0)
-      wrU contacts ((30 * i238) + 25) s284
-      let !t285 = (t266 * (s284 - t259))
-      let !s286 = (t285 * t241)
-      let !s287 = (t285 * t242)
-      let !s288 = (t285 * t243)
-      let !s289 = ((t267 * (s284 - t259)) * t244)
-      let !t290 = (t268 * (negate (s284 - t259)))
-      let !s291 = (t290 * t245)
-      let !s292 = (t290 * t246)
-      let !s293 = (t290 * t247)
-      let !s294 = ((t269 * (negate (s284 - t259))) * t248)
-      let !s295 = ((t270 + s286) + (s265 * s291))
-      let !s296 = ((t271 + s287) + (s265 * s292))
-      let !s297 = ((t272 + s288) + (s265 * s293))
-      let !s298 = ((t273 + s289) + (s265 * s294))
-      let !s299 = ((t274 + s291) + (s265 * s286))
-      let !s300 = ((t275 + s292) + (s265 * s287))
-      let !s301 = ((t276 + s293) + (s265 * s288))
-      let !s302 = ((t277 + s294) + (s265 * s289))
-      let !s303 = (((((t249 * s295) + (t250 * s296)) + (t251 * s297)) + (t252 * s298)) - (if s264 > 0 then ((((t253 * s299) + (t254 * s300)) + (t255 * s301)) + (t256 * s302)) else 0.0))
-      let !t304 = (t258 + ((t257 * (t262 - s303)) * t261))
-      let !t305 = (if (negate t304) > 0 then 0.0 else t304)
-      let !s306 = (if (1.0 - (abs (t305 - t305))) > 0 then t305 else 0.0)
-      wrU contacts ((30 * i238) + 24) s306
-      let !t307 = (t266 * (s306 - t258))
-      let !s308 = (t307 * t249)
-      let !s309 = (t307 * t250)
-      let !s310 = (t307 * t251)
-      let !s311 = ((t267 * (s306 - t258)) * t252)
-      let !t312 = (t268 * (negate (s306 - t258)))
-      let !s313 = (t312 * t253)
-      let !s314 = (t312 * t254)
-      let !s315 = (t312 * t255)
-      let !s316 = ((t269 * (negate (s306 - t258))) * t256)
-      let !s317 = ((s295 + s308) + (s265 * s313))
-      let !s318 = ((s296 + s309) + (s265 * s314))
-      let !s319 = ((s297 + s310) + (s265 * s315))
-      let !s320 = ((s298 + s311) + (s265 * s316))
-      let !s321 = ((s299 + s313) + (s265 * s308))
-      let !s322 = ((s300 + s314) + (s265 * s309))
-      let !s323 = ((s301 + s315) + (s265 * s310))
-      let !s324 = ((s302 + s316) + (s265 * s311))
-      wrU vel (3 * (truncate t239)) s317
-      wrU vel ((3 * (truncate t239)) + 1) s318
-      wrU vel ((3 * (truncate t239)) + 2) s319
-      wrU scalars ((6 * (truncate t239)) + 1) s320
-      if s264 > 0 then do
-        wrU vel (3 * (truncate s263)) s321
-        wrU vel ((3 * (truncate s263)) + 1) s322
-        wrU vel ((3 * (truncate s263)) + 2) s323
-        wrU scalars ((6 * (truncate s263)) + 1) s324
-        pure ()
-      else do
-        pure ()
-      pure ()
-    t325 <- rdU mouse 0
-    if t325 > 0 then do
+  loopI 0.0 t0 $ \i144 -> do
+    let !d144 = fromIntegral i144 :: Double
+    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    t145 <- rdU mouse 0
+    if t145 > 0 then do
       chkI mouse 0 1 1
-      t326 <- rdU mouse 1
-      chkI scalars (6 * (truncate t326)) 2 2
-      t327 <- rdU scalars ((6 * (truncate t326)) + 2)
-      if t327 > 0 then do
-        chkI scalars (6 * (truncate t326)) 0 5
-        t328 <- rdU scalars ((6 * (truncate t326)) + 3)
-        t329 <- rdU params 0
-        chkI pos (3 * (truncate t326)) 0 2
-        t330 <- rdU pos (3 * (truncate t326))
-        t331 <- rdU pos ((3 * (truncate t326)) + 1)
-        t332 <- rdU pos ((3 * (truncate t326)) + 2)
-        chkI normal (3 * (truncate t326)) 0 2
-        t333 <- rdU normal (3 * (truncate t326))
-        t334 <- rdU normal ((3 * (truncate t326)) + 1)
-        t335 <- rdU normal ((3 * (truncate t326)) + 2)
-        chkI axis (3 * (truncate t326)) 0 2
-        t336 <- rdU axis (3 * (truncate t326))
-        t337 <- rdU axis ((3 * (truncate t326)) + 1)
-        t338 <- rdU axis ((3 * (truncate t326)) + 2)
-        let !s339 = ((t334 * t338) - (t335 * t337))
-        let !s340 = ((t335 * t336) - (t333 * t338))
-        let !s341 = ((t333 * t337) - (t334 * t336))
-        t342 <- rdU scalars (6 * (truncate t326))
-        t343 <- rdU scalars ((6 * (truncate t326)) + 5)
-        t344 <- rdU scalars ((6 * (truncate t326)) + 2)
-        t345 <- rdU scalars ((6 * (truncate t326)) + 3)
-        t346 <- rdU pos (3 * (truncate t326))
-        t347 <- rdU pos ((3 * (truncate t326)) + 1)
-        t348 <- rdU pos ((3 * (truncate t326)) + 2)
-        t349 <- rdU normal (3 * (truncate t326))
-        t350 <- rdU normal ((3 * (truncate t326)) + 1)
-        t351 <- rdU normal ((3 * (truncate t326)) + 2)
-        t352 <- rdU axis (3 * (truncate t326))
-        t353 <- rdU axis ((3 * (truncate t326)) + 1)
-        t354 <- rdU axis ((3 * (truncate t326)) + 2)
-        let !s355 = ((t350 * t354) - (t351 * t353))
-        let !s356 = ((t351 * t352) - (t349 * t354))
-        let !s357 = ((t349 * t353) - (t350 * t352))
-        t358 <- rdU scalars (6 * (truncate t326))
-        t359 <- rdU scalars ((6 * (truncate t326)) + 5)
-        t360 <- rdU scalars ((6 * (truncate t326)) + 2)
-        t361 <- rdU scalars ((6 * (truncate t326)) + 3)
+      t146 <- rdU mouse 1
+      chkI scalars (8 * (truncate t146)) 2 2
+      t147 <- rdU scalars ((8 * (truncate t146)) + 2)
+      if t147 > 0 then do
+        chkI scalars (8 * (truncate t146)) 0 5
+        t148 <- rdU scalars ((8 * (truncate t146)) + 3)
+        chkI params 0 0 0
+        t149 <- rdU params 0
+        chkI pos (3 * (truncate t146)) 0 2
+        t150 <- rdU pos (3 * (truncate t146))
+        t151 <- rdU pos ((3 * (truncate t146)) + 1)
+        t152 <- rdU pos ((3 * (truncate t146)) + 2)
+        chkI normal (3 * (truncate t146)) 0 2
+        t153 <- rdU normal (3 * (truncate t146))
+        t154 <- rdU normal ((3 * (truncate t146)) + 1)
+        t155 <- rdU normal ((3 * (truncate t146)) + 2)
+        chkI axis (3 * (truncate t146)) 0 2
+        t156 <- rdU axis (3 * (truncate t146))
+        t157 <- rdU axis ((3 * (truncate t146)) + 1)
+        t158 <- rdU axis ((3 * (truncate t146)) + 2)
+        let !s159 = ((t154 * t158) - (t155 * t157))
+        let !s160 = ((t155 * t156) - (t153 * t158))
+        let !s161 = ((t153 * t157) - (t154 * t156))
+        t162 <- rdU scalars (8 * (truncate t146))
+        t163 <- rdU scalars ((8 * (truncate t146)) + 5)
+        t164 <- rdU scalars ((8 * (truncate t146)) + 2)
+        t165 <- rdU scalars ((8 * (truncate t146)) + 3)
+        t166 <- rdU pos (3 * (truncate t146))
+        t167 <- rdU pos ((3 * (truncate t146)) + 1)
+        t168 <- rdU pos ((3 * (truncate t146)) + 2)
+        t169 <- rdU normal (3 * (truncate t146))
+        t170 <- rdU normal ((3 * (truncate t146)) + 1)
+        t171 <- rdU normal ((3 * (truncate t146)) + 2)
+        t172 <- rdU axis (3 * (truncate t146))
+        t173 <- rdU axis ((3 * (truncate t146)) + 1)
+        t174 <- rdU axis ((3 * (truncate t146)) + 2)
+        let !s175 = ((t170 * t174) - (t171 * t173))
+        let !s176 = ((t171 * t172) - (t169 * t174))
+        let !s177 = ((t169 * t173) - (t170 * t172))
+        t178 <- rdU scalars (8 * (truncate t146))
+        t179 <- rdU scalars ((8 * (truncate t146)) + 5)
+        t180 <- rdU scalars ((8 * (truncate t146)) + 2)
+        t181 <- rdU scalars ((8 * (truncate t146)) + 3)
         chkI mouse 0 2 11
-        t362 <- rdU mouse 2
-        t363 <- rdU mouse 3
-        let !t364 = (t362 / 4.0)
-        let !t365 = (if (abs t364) > 0 then 1.0 else 0.0)
-        let !t366 = (t358 + t363)
-        let !t367 = (cos t366)
-        let !t368 = (sin t366)
-        let !t369 = (1.0 - t365)
-        let !t370 = (t347 + (t364 * ((t367 * t353) + (t368 * s356))))
-        let !t371 = (if (if ((abs t370) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t370 + (negate t370)) else t370)
-        let !t372 = (if (if ((abs t371) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t371 + (negate t371)) else t371)
-        let !s373 = ((t365 * (t346 + (t364 * ((t367 * t352) + (t368 * s355))))) + (t369 * t346))
-        let !s374 = ((t365 * (if (if ((abs t372) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t372 + (negate t372)) else t372)) + (t369 * t347))
-        let !s375 = ((t365 * (t348 + (t364 * ((t367 * t354) + (t368 * s357))))) + (t369 * t348))
-        let !t376 = ((t367 * t352) + (t368 * s355))
-        let !t377 = ((t367 * t353) + (t368 * s356))
-        let !t378 = ((t367 * t354) + (t368 * s357))
-        let !t379 = (sqrt (((t376 * t376) + (t377 * t377)) + (t378 * t378)))
-        let !t380 = (if (abs t364) > 0 then (recip t364) else 0.0)
-        let !t381 = (t380 * ((t346 + (t364 * t376)) + (negate t346)))
-        let !t382 = (t380 * ((if (if ((abs t372) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t372 + (negate t372)) else t372) + (negate t347)))
-        let !t383 = (t382 + (negate t382))
-        let !t384 = (t380 * ((t348 + (t364 * t378)) + (negate t348)))
-        let !t385 = (sqrt (((t381 * t381) + (t383 * t383)) + (t384 * t384)))
-        let !t386 = (if t385 > 0 then (recip (if (t385 - 1.0e-300) > 0 then t385 else 1.0e-300)) else 0.0)
-        let !s387 = ((t365 * (t379 * (t386 * t381))) + (t369 * t376))
-        let !s388 = ((t365 * (t379 * (t386 * t383))) + (t369 * t377))
-        let !s389 = ((t365 * (t379 * (t386 * t384))) + (t369 * t378))
-        let !t390 = (s374 + (t364 * s388))
-        let !t391 = (if (if ((abs t390) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t390 + (negate t390)) else t390)
-        let !t392 = (if (if ((abs t391) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t391 + (negate t391)) else t391)
-        let !s393 = ((t365 * (s373 + (t364 * s387))) + (t369 * s373))
-        let !s394 = ((t365 * (if (if ((abs t392) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t392 + (negate t392)) else t392)) + (t369 * s374))
-        let !s395 = ((t365 * (s375 + (t364 * s389))) + (t369 * s375))
-        let !t396 = (sqrt (((s387 * s387) + (s388 * s388)) + (s389 * s389)))
-        let !t397 = (t380 * ((s373 + (t364 * s387)) + (negate s373)))
-        let !t398 = (t380 * ((if (if ((abs t392) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t392 + (negate t392)) else t392) + (negate s374)))
-        let !t399 = (t398 + (negate t398))
-        let !t400 = (t380 * ((s375 + (t364 * s389)) + (negate s375)))
-        let !t401 = (sqrt (((t397 * t397) + (t399 * t399)) + (t400 * t400)))
-        let !t402 = (if t401 > 0 then (recip (if (t401 - 1.0e-300) > 0 then t401 else 1.0e-300)) else 0.0)
-        let !s403 = ((t365 * (t396 * (t402 * t397))) + (t369 * s387))
-        let !s404 = ((t365 * (t396 * (t402 * t399))) + (t369 * s388))
-        let !s405 = ((t365 * (t396 * (t402 * t400))) + (t369 * s389))
-        let !t406 = (s394 + (t364 * s404))
-        let !t407 = (if (if ((abs t406) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t406 + (negate t406)) else t406)
-        let !t408 = (if (if ((abs t407) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t407 + (negate t407)) else t407)
-        let !s409 = ((t365 * (s393 + (t364 * s403))) + (t369 * s393))
-        let !s410 = ((t365 * (if (if ((abs t408) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t408 + (negate t408)) else t408)) + (t369 * s394))
-        let !s411 = ((t365 * (s395 + (t364 * s405))) + (t369 * s395))
-        let !t412 = (sqrt (((s403 * s403) + (s404 * s404)) + (s405 * s405)))
-        let !t413 = (t380 * ((s393 + (t364 * s403)) + (negate s393)))
-        let !t414 = (t380 * ((if (if ((abs t408) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t408 + (negate t408)) else t408) + (negate s394)))
-        let !t415 = (t414 + (negate t414))
-        let !t416 = (t380 * ((s395 + (t364 * s405)) + (negate s395)))
-        let !t417 = (sqrt (((t413 * t413) + (t415 * t415)) + (t416 * t416)))
-        let !t418 = (if t417 > 0 then (recip (if (t417 - 1.0e-300) > 0 then t417 else 1.0e-300)) else 0.0)
-        let !s419 = ((t365 * (t412 * (t418 * t413))) + (t369 * s403))
-        let !s420 = ((t365 * (t412 * (t418 * t415))) + (t369 * s404))
-        let !s421 = ((t365 * (t412 * (t418 * t416))) + (t369 * s405))
-        let !t422 = (s410 + (t364 * s420))
-        let !t423 = (if (if ((abs t422) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t422 + (negate t422)) else t422)
-        let !t424 = (if (if ((abs t423) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t423 + (negate t423)) else t423)
-        let !s425 = ((t365 * (s409 + (t364 * s419))) + (t369 * s409))
-        let !s426 = ((t365 * (if (if ((abs t424) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t424 + (negate t424)) else t424)) + (t369 * s410))
-        let !s427 = ((t365 * (s411 + (t364 * s421))) + (t369 * s411))
-        let !t428 = (sqrt (((s419 * s419) + (s420 * s420)) + (s421 * s421)))
-        let !t429 = (t380 * ((s409 + (t364 * s419)) + (negate s409)))
-        let !t430 = (t380 * ((if (if ((abs t424) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t424 + (negate t424)) else t424) + (negate s410)))
-        let !t431 = (t430 + (negate t430))
-        let !t432 = (t380 * ((s411 + (t364 * s421)) + (negate s411)))
-        let !t433 = (sqrt (((t429 * t429) + (t431 * t431)) + (t432 * t432)))
-        let !t434 = (if t433 > 0 then (recip (if (t433 - 1.0e-300) > 0 then t433 else 1.0e-300)) else 0.0)
-        let !s435 = ((t365 * (t428 * (t434 * t429))) + (t369 * s419))
-        let !s436 = ((t365 * (t428 * (t434 * t431))) + (t369 * s420))
-        let !s437 = ((t365 * (t428 * (t434 * t432))) + (t369 * s421))
-        t438 <- rdU mouse 4
-        t439 <- rdU mouse 5
-        t440 <- rdU mouse 6
-        t441 <- rdU mouse 7
-        t442 <- rdU mouse 8
-        t443 <- rdU mouse 9
-        let !t444 = (recip t327)
-        let !t445 = (6.283185307179586 * t441)
-        let !s446 = (recip (t329 * ((((2.0 * t444) * t442) * t445) + (t329 * ((t444 * t445) * t445)))))
-        let !s447 = ((t329 * ((t444 * t445) * t445)) * s446)
-        let !s448 = (s425 + (negate t330))
-        let !s449 = (s426 + (negate t331))
-        let !s450 = (s427 + (negate t332))
-        let !s451 = (s425 + (negate t438))
-        let !s452 = (s426 + (negate t439))
-        let !s453 = (s427 + (negate t440))
-        t454 <- rdU mouse 10
-        chkI vel (3 * (truncate t326)) 0 2
-        t455 <- rdU vel (3 * (truncate t326))
-        t456 <- rdU vel ((3 * (truncate t326)) + 1)
-        t457 <- rdU vel ((3 * (truncate t326)) + 2)
-        t458 <- rdU scalars ((6 * (truncate t326)) + 1)
-        let !t459 = (t443 * t329)
-        let !t460 = (negate t459)
-        let !t461 = (((((s449 * t338) - (s450 * t337)) * t333) + (((s450 * t336) - (s448 * t338)) * t334)) + (((s448 * t337) - (s449 * t336)) * t335))
-        let !t462 = (t454 + ((negate ((((((t336 * t455) + (t337 * t456)) + (t338 * t457)) + (t461 * t458)) + (s447 * (((s451 * t336) + (s452 * t337)) + (s453 * t338)))) + (s446 * t454))) / (((t327 * (((t336 * t336) + (t337 * t337)) + (t338 * t338))) + ((t328 * t461) * t461)) + s446)))
-        let !t463 = (if (t462 - t459) > 0 then t459 else t462)
-        let !t464 = (if (t460 - t463) > 0 then t460 else t463)
-        let !s465 = (if (1.0 - (abs (t464 - t464))) > 0 then t464 else 0.0)
-        wrU mouse 10 s465
-        t466 <- rdU scalars ((6 * (truncate t326)) + 2)
-        t467 <- rdU scalars ((6 * (truncate t326)) + 3)
-        t468 <- rdU vel (3 * (truncate t326))
-        t469 <- rdU vel ((3 * (truncate t326)) + 1)
-        t470 <- rdU vel ((3 * (truncate t326)) + 2)
-        t471 <- rdU scalars ((6 * (truncate t326)) + 1)
-        wrU vel (3 * (truncate t326)) (t468 + ((t466 * (s465 - t454)) * t336))
-        wrU vel ((3 * (truncate t326)) + 1) (t469 + ((t466 * (s465 - t454)) * t337))
-        wrU vel ((3 * (truncate t326)) + 2) (t470 + ((t466 * (s465 - t454)) * t338))
-        wrU scalars ((6 * (truncate t326)) + 1) (t471 + ((t467 * (s465 - t454)) * t461))
-        t472 <- rdU mouse 11
-        t473 <- rdU vel (3 * (truncate t326))
-        t474 <- rdU vel ((3 * (truncate t326)) + 1)
-        t475 <- rdU vel ((3 * (truncate t326)) + 2)
-        t476 <- rdU scalars ((6 * (truncate t326)) + 1)
-        let !t477 = (((((s449 * s341) - (s450 * s340)) * t333) + (((s450 * s339) - (s448 * s341)) * t334)) + (((s448 * s340) - (s449 * s339)) * t335))
-        let !t478 = (t472 + ((negate ((((((s339 * t473) + (s340 * t474)) + (s341 * t475)) + (t477 * t476)) + (s447 * (((s451 * s339) + (s452 * s340)) + (s453 * s341)))) + (s446 * t472))) / (((t327 * (((s339 * s339) + (s340 * s340)) + (s341 * s341))) + ((t328 * t477) * t477)) + s446)))
-        let !t479 = (if (t478 - t459) > 0 then t459 else t478)
-        let !t480 = (if (t460 - t479) > 0 then t460 else t479)
-        let !s481 = (if (1.0 - (abs (t480 - t480))) > 0 then t480 else 0.0)
-        wrU mouse 11 s481
-        t482 <- rdU scalars ((6 * (truncate t326)) + 2)
-        t483 <- rdU scalars ((6 * (truncate t326)) + 3)
-        t484 <- rdU vel (3 * (truncate t326))
-        t485 <- rdU vel ((3 * (truncate t326)) + 1)
-        t486 <- rdU vel ((3 * (truncate t326)) + 2)
-        t487 <- rdU scalars ((6 * (truncate t326)) + 1)
-        wrU vel (3 * (truncate t326)) (t484 + ((t482 * (s481 - t472)) * s339))
-        wrU vel ((3 * (truncate t326)) + 1) (t485 + ((t482 * (s481 - t472)) * s340))
-        wrU vel ((3 * (truncate t326)) + 2) (t486 + ((t482 * (s481 - t472)) * s341))
-        wrU scalars ((6 * (truncate t326)) + 1) (t487 + ((t483 * (s481 - t472)) * t477))
+        t182 <- rdU mouse 2
+        t183 <- rdU mouse 3
+        let !t184 = (t182 / 4.0)
+        let !t185 = (if (abs t184) > 0 then 1.0 else 0.0)
+        let !t186 = (t178 + t183)
+        let !t187 = (cos t186)
+        let !t188 = (sin t186)
+        let !t189 = (1.0 - t185)
+        let !t190 = (t167 + (t184 * ((t187 * t173) + (t188 * s176))))
+        let !t191 = (if (if ((abs t190) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t190 + (negate t190)) else t190)
+        let !t192 = (if (if ((abs t191) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t191 + (negate t191)) else t191)
+        let !s193 = ((t185 * (t166 + (t184 * ((t187 * t172) + (t188 * s175))))) + (t189 * t166))
+        let !s194 = ((t185 * (if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192)) + (t189 * t167))
+        let !s195 = ((t185 * (t168 + (t184 * ((t187 * t174) + (t188 * s177))))) + (t189 * t168))
+        let !t196 = ((t187 * t172) + (t188 * s175))
+        let !t197 = ((t187 * t173) + (t188 * s176))
+        let !t198 = ((t187 * t174) + (t188 * s177))
+        let !t199 = (sqrt (((t196 * t196) + (t197 * t197)) + (t198 * t198)))
+        let !t200 = (if (abs t184) > 0 then (recip t184) else 0.0)
+        let !t201 = (t200 * ((t166 + (t184 * t196)) + (negate t166)))
+        let !t202 = (t200 * ((if (if ((abs t192) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t192 + (negate t192)) else t192) + (negate t167)))
+        let !t203 = (t202 + (negate t202))
+        let !t204 = (t200 * ((t168 + (t184 * t198)) + (negate t168)))
+        let !t205 = (sqrt (((t201 * t201) + (t203 * t203)) + (t204 * t204)))
+        let !t206 = (if t205 > 0 then (recip (if (t205 - 1.0e-300) > 0 then t205 else 1.0e-300)) else 0.0)
+        let !s207 = ((t185 * (t199 * (t206 * t201))) + (t189 * t196))
+        let !s208 = ((t185 * (t199 * (t206 * t203))) + (t189 * t197))
+        let !s209 = ((t185 * (t199 * (t206 * t204))) + (t189 * t198))
+        let !t210 = (s194 + (t184 * s208))
+        let !t211 = (if (if ((abs t210) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t210 + (negate t210)) else t210)
+        let !t212 = (if (if ((abs t211) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t211 + (negate t211)) else t211)
+        let !s213 = ((t185 * (s193 + (t184 * s207))) + (t189 * s193))
+        let !s214 = ((t185 * (if (if ((abs t212) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t212 + (negate t212)) else t212)) + (t189 * s194))
+        let !s215 = ((t185 * (s195 + (t184 * s209))) + (t189 * s195))
+        let !t216 = (sqrt (((s207 * s207) + (s208 * s208)) + (s209 * s209)))
+        let !t217 = (t200 * ((s193 + (t184 * s207)) + (negate s193)))
+        let !t218 = (t200 * ((if (if ((abs t212) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t212 + (negate t212)) else t212) + (negate s194)))
+        let !t219 = (t218 + (negate t218))
+        let !t220 = (t200 * ((s195 + (t184 * s209)) + (negate s195)))
+        let !t221 = (sqrt (((t217 * t217) + (t219 * t219)) + (t220 * t220)))
+        let !t222 = (if t221 > 0 then (recip (if (t221 - 1.0e-300) > 0 then t221 else 1.0e-300)) else 0.0)
+        let !s223 = ((t185 * (t216 * (t222 * t217))) + (t189 * s207))
+        let !s224 = ((t185 * (t216 * (t222 * t219))) + (t189 * s208))
+        let !s225 = ((t185 * (t216 * (t222 * t220))) + (t189 * s209))
+        let !t226 = (s214 + (t184 * s224))
+        let !t227 = (if (if ((abs t226) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t226 + (negate t226)) else t226)
+        let !t228 = (if (if ((abs t227) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t227 + (negate t227)) else t227)
+        let !s229 = ((t185 * (s213 + (t184 * s223))) + (t189 * s213))
+        let !s230 = ((t185 * (if (if ((abs t228) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t228 + (negate t228)) else t228)) + (t189 * s214))
+        let !s231 = ((t185 * (s215 + (t184 * s225))) + (t189 * s215))
+        let !t232 = (sqrt (((s223 * s223) + (s224 * s224)) + (s225 * s225)))
+        let !t233 = (t200 * ((s213 + (t184 * s223)) + (negate s213)))
+        let !t234 = (t200 * ((if (if ((abs t228) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t228 + (negate t228)) else t228) + (negate s214)))
+        let !t235 = (t234 + (negate t234))
+        let !t236 = (t200 * ((s215 + (t184 * s225)) + (negate s215)))
+        let !t237 = (sqrt (((t233 * t233) + (t235 * t235)) + (t236 * t236)))
+        let !t238 = (if t237 > 0 then (recip (if (t237 - 1.0e-300) > 0 then t237 else 1.0e-300)) else 0.0)
+        let !s239 = ((t185 * (t232 * (t238 * t233))) + (t189 * s223))
+        let !s240 = ((t185 * (t232 * (t238 * t235))) + (t189 * s224))
+        let !s241 = ((t185 * (t232 * (t238 * t236))) + (t189 * s225))
+        let !t242 = (s230 + (t184 * s240))
+        let !t243 = (if (if ((abs t242) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t242 + (negate t242)) else t242)
+        let !t244 = (if (if ((abs t243) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t243 + (negate t243)) else t243)
+        let !s245 = ((t185 * (s229 + (t184 * s239))) + (t189 * s229))
+        let !s246 = ((t185 * (if (if ((abs t244) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t244 + (negate t244)) else t244)) + (t189 * s230))
+        let !s247 = ((t185 * (s231 + (t184 * s241))) + (t189 * s231))
+        let !t248 = (sqrt (((s239 * s239) + (s240 * s240)) + (s241 * s241)))
+        let !t249 = (t200 * ((s229 + (t184 * s239)) + (negate s229)))
+        let !t250 = (t200 * ((if (if ((abs t244) - 1.0e-10) > 0 then 1.0 else 0.0) > 0 then (t244 + (negate t244)) else t244) + (negate s230)))
+        let !t251 = (t250 + (negate t250))
+        let !t252 = (t200 * ((s231 + (t184 * s241)) + (negate s231)))
+        let !t253 = (sqrt (((t249 * t249) + (t251 * t251)) + (t252 * t252)))
+        let !t254 = (if t253 > 0 then (recip (if (t253 - 1.0e-300) > 0 then t253 else 1.0e-300)) else 0.0)
+        let !s255 = ((t185 * (t248 * (t254 * t249))) + (t189 * s239))
+        let !s256 = ((t185 * (t248 * (t254 * t251))) + (t189 * s240))
+        let !s257 = ((t185 * (t248 * (t254 * t252))) + (t189 * s241))
+        t258 <- rdU mouse 4
+        t259 <- rdU mouse 5
+        t260 <- rdU mouse 6
+        t261 <- rdU mouse 7
+        t262 <- rdU mouse 8
+        t263 <- rdU mouse 9
+        let !t264 = (recip t147)
+        let !t265 = (6.283185307179586 * t261)
+        let !s266 = (recip (t149 * ((((2.0 * t264) * t262) * t265) + (t149 * ((t264 * t265) * t265)))))
+        let !s267 = ((t149 * ((t264 * t265) * t265)) * s266)
+        let !s268 = (s245 + (negate t150))
+        let !s269 = (s246 + (negate t151))
+        let !s270 = (s247 + (negate t152))
+        let !s271 = (s245 + (negate t258))
+        let !s272 = (s246 + (negate t259))
+        let !s273 = (s247 + (negate t260))
+        t274 <- rdU mouse 10
+        chkI vel (3 * (truncate t146)) 0 2
+        t275 <- rdU vel (3 * (truncate t146))
+        t276 <- rdU vel ((3 * (truncate t146)) + 1)
+        t277 <- rdU vel ((3 * (truncate t146)) + 2)
+        t278 <- rdU scalars ((8 * (truncate t146)) + 1)
+        let !t279 = (t263 * t149)
+        let !t280 = (negate t279)
+        let !t281 = (((((s269 * t158) - (s270 * t157)) * t153) + (((s270 * t156) - (s268 * t158)) * t154)) + (((s268 * t157) - (s269 * t156)) * t155))
+        let !t282 = (t274 + ((negate ((((((t156 * t275) + (t157 * t276)) + (t158 * t277)) + (t281 * t278)) + (s267 * (((s271 * t156) + (s272 * t157)) + (s273 * t158)))) + (s266 * t274))) / (((t147 * (((t156 * t156) + (t157 * t157)) + (t158 * t158))) + ((t148 * t281) * t281)) + s266)))
+        let !t283 = (if (t282 - t279) > 0 then t279 else t282)
+        let !t284 = (if (t280 - t283) > 0 then t280 else t283)
+        let !s285 = (if (1.0 - (abs (t284 - t284))) > 0 then t284 else 0.0)
+        wrU mouse 10 s285
+        t286 <- rdU scalars ((8 * (truncate t146)) + 2)
+        t287 <- rdU scalars ((8 * (truncate t146)) + 3)
+        t288 <- rdU vel (3 * (truncate t146))
+        t289 <- rdU vel ((3 * (truncate t146)) + 1)
+        t290 <- rdU vel ((3 * (truncate t146)) + 2)
+        t291 <- rdU scalars ((8 * (truncate t146)) + 1)
+        wrU vel (3 * (truncate t146)) (t288 + ((t286 * (s285 - t274)) * t156))
+        wrU vel ((3 * (truncate t146)) + 1) (t289 + ((t286 * (s285 - t274)) * t157))
+        wrU vel ((3 * (truncate t146)) + 2) (t290 + ((t286 * (s285 - t274)) * t158))
+        wrU scalars ((8 * (truncate t146)) + 1) (t291 + ((t287 * (s285 - t274)) * t281))
+        t292 <- rdU mouse 11
+        t293 <- rdU vel (3 * (truncate t146))
+        t294 <- rdU vel ((3 * (truncate t146)) + 1)
+        t295 <- rdU vel ((3 * (truncate t146)) + 2)
+        t296 <- rdU scalars ((8 * (truncate t146)) + 1)
+        let !t297 = (((((s269 * s161) - (s270 * s160)) * t153) + (((s270 * s159) - (s268 * s161)) * t154)) + (((s268 * s160) - (s269 * s159)) * t155))
+        let !t298 = (t292 + ((negate ((((((s159 * t293) + (s160 * t294)) + (s161 * t295)) + (t297 * t296)) + (s267 * (((s271 * s159) + (s272 * s160)) + (s273 * s161)))) + (s266 * t292))) / (((t147 * (((s159 * s159) + (s160 * s160)) + (s161 * s161))) + ((t148 * t297) * t297)) + s266)))
+        let !t299 = (if (t298 - t279) > 0 then t279 else t298)
+        let !t300 = (if (t280 - t299) > 0 then t280 else t299)
+        let !s301 = (if (1.0 - (abs (t300 - t300))) > 0 then t300 else 0.0)
+        wrU mouse 11 s301
+        t302 <- rdU scalars ((8 * (truncate t146)) + 2)
+        t303 <- rdU scalars ((8 * (truncate t146)) + 3)
+        t304 <- rdU vel (3 * (truncate t146))
+        t305 <- rdU vel ((3 * (truncate t146)) + 1)
+        t306 <- rdU vel ((3 * (truncate t146)) + 2)
+        t307 <- rdU scalars ((8 * (truncate t146)) + 1)
+        wrU vel (3 * (truncate t146)) (t304 + ((t302 * (s301 - t292)) * s159))
+        wrU vel ((3 * (truncate t146)) + 1) (t305 + ((t302 * (s301 - t292)) * s160))
+        wrU vel ((3 * (truncate t146)) + 2) (t306 + ((t302 * (s301 - t292)) * s161))
+        wrU scalars ((8 * (truncate t146)) + 1) (t307 + ((t303 * (s301 - t292)) * t297))
         pure ()
       else do
         pure ()
@@ -1432,33 +1160,35 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     else do
       pure ()
     pure ()
-  t488 <- rdU meta 0
-  loopI 0.0 t488 $ \i489 -> do
-    let !d489 = fromIntegral i489 :: Double
-    chkI bodyPrev (2 * i489) 1 1
-    wrU bodyPrev ((2 * i489) + 1) 0.0
+  chkI meta 0 0 2
+  t308 <- rdU meta 2
+  t309 <- rdU meta 0
+  loopI 0.0 t309 $ \i310 -> do
+    let !d310 = fromIntegral i310 :: Double
+    chkI bodyPrev (2 * i310) 1 1
+    wrU bodyPrev ((2 * i310) + 1) 0.0
     pure ()
-  loopI 0.0 t9 $ \i490 -> do
-    let !d490 = fromIntegral i490 :: Double
-    chkI contacts (30 * i490) 2 25
-    t491 <- rdU contacts ((30 * i490) + 2)
-    chkI prev (4 * i490) 0 3
-    wrU prev (4 * i490) t491
-    t492 <- rdU contacts ((30 * i490) + 3)
-    wrU prev ((4 * i490) + 1) t492
-    t493 <- rdU contacts ((30 * i490) + 24)
-    wrU prev ((4 * i490) + 2) t493
-    t494 <- rdU contacts ((30 * i490) + 25)
-    wrU prev ((4 * i490) + 3) t494
-    chkI bodyPrev (2 * (truncate t491)) 1 1
-    t495 <- rdU bodyPrev ((2 * (truncate t491)) + 1)
-    if (0.5 - t495) > 0 then do
-      chkI bodyPrev (2 * (truncate t491)) 0 0
-      wrU bodyPrev (2 * (truncate t491)) d490
+  loopI 0.0 t308 $ \i311 -> do
+    let !d311 = fromIntegral i311 :: Double
+    chkI contacts (30 * i311) 2 25
+    t312 <- rdU contacts ((30 * i311) + 2)
+    chkI prev (4 * i311) 0 3
+    wrU prev (4 * i311) t312
+    t313 <- rdU contacts ((30 * i311) + 3)
+    wrU prev ((4 * i311) + 1) t313
+    t314 <- rdU contacts ((30 * i311) + 24)
+    wrU prev ((4 * i311) + 2) t314
+    t315 <- rdU contacts ((30 * i311) + 25)
+    wrU prev ((4 * i311) + 3) t315
+    chkI bodyPrev (2 * (truncate t312)) 1 1
+    t316 <- rdU bodyPrev ((2 * (truncate t312)) + 1)
+    if (0.5 - t316) > 0 then do
+      chkI bodyPrev (2 * (truncate t312)) 0 0
+      wrU bodyPrev (2 * (truncate t312)) d311
       pure ()
     else do
       pure ()
-    wrU bodyPrev ((2 * (truncate t491)) + 1) (t495 + 1.0)
+    wrU bodyPrev ((2 * (truncate t312)) + 1) (t316 + 1.0)
     pure ()
   pure ()
 
@@ -1482,9 +1212,9 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     t9 <- rdU axis (3 * i2)
     t10 <- rdU axis ((3 * i2) + 1)
     t11 <- rdU axis ((3 * i2) + 2)
-    chkI scalars (6 * i2) 0 1
-    t12 <- rdU scalars (6 * i2)
-    t13 <- rdU scalars ((6 * i2) + 1)
+    chkI scalars (8 * i2) 0 1
+    t12 <- rdU scalars (8 * i2)
+    t13 <- rdU scalars ((8 * i2) + 1)
     chkI normal (3 * i2) 0 2
     t14 <- rdU normal (3 * i2)
     t15 <- rdU normal ((3 * i2) + 1)
@@ -1572,13 +1302,13 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
       wrU normal (3 * i2) s51
       wrU normal ((3 * i2) + 1) s52
       wrU normal ((3 * i2) + 2) s53
-      wrU scalars (6 * i2) t85
+      wrU scalars (8 * i2) t85
       pure ()
     else do
       wrU vel (3 * i2) 0.0
       wrU vel ((3 * i2) + 1) 0.0
       wrU vel ((3 * i2) + 2) 0.0
-      wrU scalars ((6 * i2) + 1) 0.0
+      wrU scalars ((8 * i2) + 1) 0.0
       chkI meta 0 1 1
       t87 <- rdU meta 1
       wrU meta 1 (t87 + 1.0)
@@ -1605,11 +1335,11 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     t8 <- rdU normal (3 * i1)
     t9 <- rdU normal ((3 * i1) + 1)
     t10 <- rdU normal ((3 * i1) + 2)
-    chkI scalars (6 * i1) 0 5
-    t11 <- rdU scalars (6 * i1)
+    chkI scalars (8 * i1) 0 7
+    t11 <- rdU scalars (8 * i1)
     chkI params 0 10 10
     t12 <- rdU params 10
-    t13 <- rdU scalars ((6 * i1) + 5)
+    t13 <- rdU scalars ((8 * i1) + 5)
     chkI verts (291 * i1) 0 2
     wrU verts (291 * i1) t2
     wrU verts ((291 * i1) + 1) t3
@@ -1618,286 +1348,290 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
     let !s15 = ((t10 * t5) - (t8 * t7))
     let !s16 = ((t8 * t6) - (t9 * t5))
     let !s17 = (if t12 > 0 then (t13 - t12) else 1.0)
-    wrU locals 0 (cos t11)
-    wrU locals 1 (sin t11)
+    let !s18 = (cos t11)
+    let !s19 = (sin t11)
+    wrU scalars ((8 * i1) + 6) s18
+    wrU scalars ((8 * i1) + 7) s19
+    wrU locals 0 s18
+    wrU locals 1 s19
     if s17 > 0 then do
-      loopI 0.0 24.0 $ \i18 -> do
-        let !d18 = fromIntegral i18 :: Double
-        t19 <- rdU locals 0
-        t20 <- rdU locals 1
-        wrU locals 0 ((t19 * 0.9659258262890683) - (t20 * 0.25881904510252074))
-        wrU locals 1 ((t20 * 0.9659258262890683) + (t19 * 0.25881904510252074))
-        let !s21 = ((t19 * t5) + (t20 * s14))
-        let !s22 = ((t19 * t6) + (t20 * s15))
-        let !s23 = ((t19 * t7) + (t20 * s16))
-        chkI walk (12 * i18) 3 5
-        wrU walk ((12 * i18) + 3) s21
-        wrU walk ((12 * i18) + 4) s22
-        wrU walk ((12 * i18) + 5) s23
+      loopI 0.0 24.0 $ \i20 -> do
+        let !d20 = fromIntegral i20 :: Double
+        t21 <- rdU locals 0
+        t22 <- rdU locals 1
+        wrU locals 0 ((t21 * 0.9659258262890683) - (t22 * 0.25881904510252074))
+        wrU locals 1 ((t22 * 0.9659258262890683) + (t21 * 0.25881904510252074))
+        let !s23 = ((t21 * t5) + (t22 * s14))
+        let !s24 = ((t21 * t6) + (t22 * s15))
+        let !s25 = ((t21 * t7) + (t22 * s16))
+        chkI walk (12 * i20) 3 5
+        wrU walk ((12 * i20) + 3) s23
+        wrU walk ((12 * i20) + 4) s24
+        wrU walk ((12 * i20) + 5) s25
         pure ()
-      loopI 0.0 24.0 $ \i24 -> do
-        let !d24 = fromIntegral i24 :: Double
-        chkI radii ((24 * i1) + i24) 0 0
-        t25 <- rdU radii ((24 * i1) + i24)
-        let !s26 = (t25 / 4.0)
-        chkI walk (12 * i24) 0 8
-        t27 <- rdU walk ((12 * i24) + 3)
-        t28 <- rdU walk ((12 * i24) + 4)
-        t29 <- rdU walk ((12 * i24) + 5)
-        let !s30 = (t2 + (s26 * t27))
-        let !s31 = (t3 + (s26 * t28))
-        let !s32 = (t4 + (s26 * t29))
-        let !t33 = (if (abs s26) > 0 then 1.0 else 0.0)
-        let !t34 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t35 = (if ((abs s31) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t36 = (if t35 > 0 then (s31 + (negate ((s31 / t9) * t9))) else s31)
-        let !t37 = (if ((abs t36) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t38 = (if t37 > 0 then (t36 + (negate ((t36 / t9) * t9))) else t36)
-        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t34 else 0.0)
-        let !t40 = (if t35 > 0 then (s30 + (negate ((s31 / t9) * t8))) else s30)
-        let !t41 = (if t37 > 0 then (t40 + (negate ((t36 / t9) * t8))) else t40)
-        let !t42 = (1.0 - t33)
-        let !t43 = (if t35 > 0 then (s32 + (negate ((s31 / t9) * t10))) else s32)
-        let !t44 = (if t37 > 0 then (t43 + (negate ((t36 / t9) * t10))) else t43)
-        let !s45 = ((t33 * (if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41)) + (t42 * t2))
-        let !s46 = ((t33 * (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)) + (t42 * t3))
-        let !s47 = ((t33 * (if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44)) + (t42 * t4))
-        chkI verts ((291 * i1) + (12 * i24)) 3 5
-        wrU verts (((291 * i1) + (12 * i24)) + 3) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s45 else t2)
-        wrU verts (((291 * i1) + (12 * i24)) + 4) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s46 else t3)
-        wrU verts (((291 * i1) + (12 * i24)) + 5) (if (1.0 - (abs (((s45 - s45) + (s46 - s46)) + (s47 - s47)))) > 0 then s47 else t4)
-        wrU walk (12 * i24) s45
-        wrU walk ((12 * i24) + 1) s46
-        wrU walk ((12 * i24) + 2) s47
-        let !t48 = (sqrt (((t27 * t27) + (t28 * t28)) + (t29 * t29)))
-        let !t49 = (if (abs s26) > 0 then (recip s26) else 0.0)
-        let !t50 = (t49 * ((if t39 > 0 then (t41 + (negate ((t38 / t9) * t8))) else t41) + (negate t2)))
-        let !t51 = (t49 * ((if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38) + (negate t3)))
-        let !t52 = (t51 + (negate t51))
-        let !t53 = (t49 * ((if t39 > 0 then (t44 + (negate ((t38 / t9) * t10))) else t44) + (negate t4)))
-        let !t54 = (sqrt (((t50 * t50) + (t52 * t52)) + (t53 * t53)))
-        let !t55 = (if t54 > 0 then (recip (if (t54 - 1.0e-300) > 0 then t54 else 1.0e-300)) else 0.0)
-        let !s56 = ((t33 * (t48 * (t55 * t50))) + (t42 * t27))
-        let !s57 = ((t33 * (t48 * (t55 * t52))) + (t42 * t28))
-        let !s58 = ((t33 * (t48 * (t55 * t53))) + (t42 * t29))
-        wrU walk ((12 * i24) + 3) s56
-        wrU walk ((12 * i24) + 4) s57
-        wrU walk ((12 * i24) + 5) s58
-        let !s59 = (t42 * t8)
-        let !s60 = (t33 + (t42 * t9))
-        let !s61 = (t42 * t10)
-        wrU walk ((12 * i24) + 6) s59
-        wrU walk ((12 * i24) + 7) s60
-        wrU walk ((12 * i24) + 8) s61
+      loopI 0.0 24.0 $ \i26 -> do
+        let !d26 = fromIntegral i26 :: Double
+        chkI radii ((24 * i1) + i26) 0 0
+        t27 <- rdU radii ((24 * i1) + i26)
+        let !s28 = (t27 / 4.0)
+        chkI walk (12 * i26) 0 8
+        t29 <- rdU walk ((12 * i26) + 3)
+        t30 <- rdU walk ((12 * i26) + 4)
+        t31 <- rdU walk ((12 * i26) + 5)
+        let !s32 = (t2 + (s28 * t29))
+        let !s33 = (t3 + (s28 * t30))
+        let !s34 = (t4 + (s28 * t31))
+        let !t35 = (if (abs s28) > 0 then 1.0 else 0.0)
+        let !t36 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t37 = (if ((abs s33) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t38 = (if t37 > 0 then (s33 + (negate ((s33 / t9) * t9))) else s33)
+        let !t39 = (if ((abs t38) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t40 = (if t39 > 0 then (t38 + (negate ((t38 / t9) * t9))) else t38)
+        let !t41 = (if ((abs t40) - 1.0e-10) > 0 then t36 else 0.0)
+        let !t42 = (if t37 > 0 then (s32 + (negate ((s33 / t9) * t8))) else s32)
+        let !t43 = (if t39 > 0 then (t42 + (negate ((t38 / t9) * t8))) else t42)
+        let !t44 = (1.0 - t35)
+        let !t45 = (if t37 > 0 then (s34 + (negate ((s33 / t9) * t10))) else s34)
+        let !t46 = (if t39 > 0 then (t45 + (negate ((t38 / t9) * t10))) else t45)
+        let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
+        let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
+        let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
+        chkI verts ((291 * i1) + (12 * i26)) 3 5
+        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
+        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
+        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
+        wrU walk (12 * i26) s47
+        wrU walk ((12 * i26) + 1) s48
+        wrU walk ((12 * i26) + 2) s49
+        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
+        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
+        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
+        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
+        let !t54 = (t53 + (negate t53))
+        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
+        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
+        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
+        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
+        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
+        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
+        wrU walk ((12 * i26) + 3) s58
+        wrU walk ((12 * i26) + 4) s59
+        wrU walk ((12 * i26) + 5) s60
+        let !s61 = (t44 * t8)
+        let !s62 = (t35 + (t44 * t9))
+        let !s63 = (t44 * t10)
+        wrU walk ((12 * i26) + 6) s61
+        wrU walk ((12 * i26) + 7) s62
+        wrU walk ((12 * i26) + 8) s63
         pure ()
-      loopI 0.0 24.0 $ \i62 -> do
-        let !d62 = fromIntegral i62 :: Double
-        chkI radii ((24 * i1) + i62) 0 0
-        t63 <- rdU radii ((24 * i1) + i62)
-        let !s64 = (t63 / 4.0)
-        chkI walk (12 * i62) 0 8
-        t65 <- rdU walk (12 * i62)
-        t66 <- rdU walk ((12 * i62) + 1)
-        t67 <- rdU walk ((12 * i62) + 2)
-        t68 <- rdU walk ((12 * i62) + 6)
-        t69 <- rdU walk ((12 * i62) + 7)
-        t70 <- rdU walk ((12 * i62) + 8)
-        t71 <- rdU walk ((12 * i62) + 3)
-        t72 <- rdU walk ((12 * i62) + 4)
-        t73 <- rdU walk ((12 * i62) + 5)
-        let !s74 = (t65 + (s64 * t71))
-        let !s75 = (t66 + (s64 * t72))
-        let !s76 = (t67 + (s64 * t73))
-        let !t77 = (if (abs s64) > 0 then 1.0 else 0.0)
-        let !t78 = (if (abs t69) > 0 then 1.0 else 0.0)
-        let !t79 = (if ((abs s75) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t80 = (if t79 > 0 then (s75 + (negate ((s75 / t69) * t69))) else s75)
-        let !t81 = (if ((abs t80) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t82 = (if t81 > 0 then (t80 + (negate ((t80 / t69) * t69))) else t80)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t78 else 0.0)
-        let !t84 = (if t79 > 0 then (s74 + (negate ((s75 / t69) * t68))) else s74)
-        let !t85 = (if t81 > 0 then (t84 + (negate ((t80 / t69) * t68))) else t84)
-        let !t86 = (1.0 - t77)
-        let !t87 = (if t79 > 0 then (s76 + (negate ((s75 / t69) * t70))) else s76)
-        let !t88 = (if t81 > 0 then (t87 + (negate ((t80 / t69) * t70))) else t87)
-        let !s89 = ((t77 * (if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85)) + (t86 * t65))
-        let !s90 = ((t77 * (if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82)) + (t86 * t66))
-        let !s91 = ((t77 * (if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88)) + (t86 * t67))
-        chkI verts ((291 * i1) + (12 * i62)) 6 8
-        wrU verts (((291 * i1) + (12 * i62)) + 6) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s89 else t2)
-        wrU verts (((291 * i1) + (12 * i62)) + 7) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s90 else t3)
-        wrU verts (((291 * i1) + (12 * i62)) + 8) (if (1.0 - (abs (((s89 - s89) + (s90 - s90)) + (s91 - s91)))) > 0 then s91 else t4)
-        wrU walk (12 * i62) s89
-        wrU walk ((12 * i62) + 1) s90
-        wrU walk ((12 * i62) + 2) s91
-        let !t92 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
-        let !t93 = (if (abs s64) > 0 then (recip s64) else 0.0)
-        let !t94 = (t93 * ((if t83 > 0 then (t85 + (negate ((t82 / t69) * t68))) else t85) + (negate t65)))
-        let !t95 = (t93 * ((if t83 > 0 then (t82 + (negate ((t82 / t69) * t69))) else t82) + (negate t66)))
-        let !t96 = (t95 + (negate t95))
-        let !t97 = (t93 * ((if t83 > 0 then (t88 + (negate ((t82 / t69) * t70))) else t88) + (negate t67)))
-        let !t98 = (sqrt (((t94 * t94) + (t96 * t96)) + (t97 * t97)))
-        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
-        let !s100 = ((t77 * (t92 * (t99 * t94))) + (t86 * t71))
-        let !s101 = ((t77 * (t92 * (t99 * t96))) + (t86 * t72))
-        let !s102 = ((t77 * (t92 * (t99 * t97))) + (t86 * t73))
-        wrU walk ((12 * i62) + 3) s100
-        wrU walk ((12 * i62) + 4) s101
-        wrU walk ((12 * i62) + 5) s102
-        let !s103 = (t86 * t68)
-        let !s104 = (t77 + (t86 * t69))
-        let !s105 = (t86 * t70)
-        wrU walk ((12 * i62) + 6) s103
-        wrU walk ((12 * i62) + 7) s104
-        wrU walk ((12 * i62) + 8) s105
+      loopI 0.0 24.0 $ \i64 -> do
+        let !d64 = fromIntegral i64 :: Double
+        chkI radii ((24 * i1) + i64) 0 0
+        t65 <- rdU radii ((24 * i1) + i64)
+        let !s66 = (t65 / 4.0)
+        chkI walk (12 * i64) 0 8
+        t67 <- rdU walk (12 * i64)
+        t68 <- rdU walk ((12 * i64) + 1)
+        t69 <- rdU walk ((12 * i64) + 2)
+        t70 <- rdU walk ((12 * i64) + 6)
+        t71 <- rdU walk ((12 * i64) + 7)
+        t72 <- rdU walk ((12 * i64) + 8)
+        t73 <- rdU walk ((12 * i64) + 3)
+        t74 <- rdU walk ((12 * i64) + 4)
+        t75 <- rdU walk ((12 * i64) + 5)
+        let !s76 = (t67 + (s66 * t73))
+        let !s77 = (t68 + (s66 * t74))
+        let !s78 = (t69 + (s66 * t75))
+        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
+        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
+        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
+        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
+        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
+        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
+        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
+        let !t88 = (1.0 - t79)
+        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
+        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
+        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
+        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
+        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
+        chkI verts ((291 * i1) + (12 * i64)) 6 8
+        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
+        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
+        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
+        wrU walk (12 * i64) s91
+        wrU walk ((12 * i64) + 1) s92
+        wrU walk ((12 * i64) + 2) s93
+        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
+        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
+        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
+        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
+        let !t98 = (t97 + (negate t97))
+        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
+        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
+        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
+        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
+        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
+        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
+        wrU walk ((12 * i64) + 3) s102
+        wrU walk ((12 * i64) + 4) s103
+        wrU walk ((12 * i64) + 5) s104
+        let !s105 = (t88 * t70)
+        let !s106 = (t79 + (t88 * t71))
+        let !s107 = (t88 * t72)
+        wrU walk ((12 * i64) + 6) s105
+        wrU walk ((12 * i64) + 7) s106
+        wrU walk ((12 * i64) + 8) s107
         pure ()
-      loopI 0.0 24.0 $ \i106 -> do
-        let !d106 = fromIntegral i106 :: Double
-        chkI radii ((24 * i1) + i106) 0 0
-        t107 <- rdU radii ((24 * i1) + i106)
-        let !s108 = (t107 / 4.0)
-        chkI walk (12 * i106) 0 8
-        t109 <- rdU walk (12 * i106)
-        t110 <- rdU walk ((12 * i106) + 1)
-        t111 <- rdU walk ((12 * i106) + 2)
-        t112 <- rdU walk ((12 * i106) + 6)
-        t113 <- rdU walk ((12 * i106) + 7)
-        t114 <- rdU walk ((12 * i106) + 8)
-        t115 <- rdU walk ((12 * i106) + 3)
-        t116 <- rdU walk ((12 * i106) + 4)
-        t117 <- rdU walk ((12 * i106) + 5)
-        let !s118 = (t109 + (s108 * t115))
-        let !s119 = (t110 + (s108 * t116))
-        let !s120 = (t111 + (s108 * t117))
-        let !t121 = (if (abs s108) > 0 then 1.0 else 0.0)
-        let !t122 = (if (abs t113) > 0 then 1.0 else 0.0)
-        let !t123 = (if ((abs s119) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t124 = (if t123 > 0 then (s119 + (negate ((s119 / t113) * t113))) else s119)
-        let !t125 = (if ((abs t124) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t126 = (if t125 > 0 then (t124 + (negate ((t124 / t113) * t113))) else t124)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t122 else 0.0)
-        let !t128 = (if t123 > 0 then (s118 + (negate ((s119 / t113) * t112))) else s118)
-        let !t129 = (if t125 > 0 then (t128 + (negate ((t124 / t113) * t112))) else t128)
-        let !t130 = (1.0 - t121)
-        let !t131 = (if t123 > 0 then (s120 + (negate ((s119 / t113) * t114))) else s120)
-        let !t132 = (if t125 > 0 then (t131 + (negate ((t124 / t113) * t114))) else t131)
-        let !s133 = ((t121 * (if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129)) + (t130 * t109))
-        let !s134 = ((t121 * (if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126)) + (t130 * t110))
-        let !s135 = ((t121 * (if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132)) + (t130 * t111))
-        chkI verts ((291 * i1) + (12 * i106)) 9 11
-        wrU verts (((291 * i1) + (12 * i106)) + 9) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s133 else t2)
-        wrU verts (((291 * i1) + (12 * i106)) + 10) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s134 else t3)
-        wrU verts (((291 * i1) + (12 * i106)) + 11) (if (1.0 - (abs (((s133 - s133) + (s134 - s134)) + (s135 - s135)))) > 0 then s135 else t4)
-        wrU walk (12 * i106) s133
-        wrU walk ((12 * i106) + 1) s134
-        wrU walk ((12 * i106) + 2) s135
-        let !t136 = (sqrt (((t115 * t115) + (t116 * t116)) + (t117 * t117)))
-        let !t137 = (if (abs s108) > 0 then (recip s108) else 0.0)
-        let !t138 = (t137 * ((if t127 > 0 then (t129 + (negate ((t126 / t113) * t112))) else t129) + (negate t109)))
-        let !t139 = (t137 * ((if t127 > 0 then (t126 + (negate ((t126 / t113) * t113))) else t126) + (negate t110)))
-        let !t140 = (t139 + (negate t139))
-        let !t141 = (t137 * ((if t127 > 0 then (t132 + (negate ((t126 / t113) * t114))) else t132) + (negate t111)))
-        let !t142 = (sqrt (((t138 * t138) + (t140 * t140)) + (t141 * t141)))
-        let !t143 = (if t142 > 0 then (recip (if (t142 - 1.0e-300) > 0 then t142 else 1.0e-300)) else 0.0)
-        let !s144 = ((t121 * (t136 * (t143 * t138))) + (t130 * t115))
-        let !s145 = ((t121 * (t136 * (t143 * t140))) + (t130 * t116))
-        let !s146 = ((t121 * (t136 * (t143 * t141))) + (t130 * t117))
-        wrU walk ((12 * i106) + 3) s144
-        wrU walk ((12 * i106) + 4) s145
-        wrU walk ((12 * i106) + 5) s146
-        let !s147 = (t130 * t112)
-        let !s148 = (t121 + (t130 * t113))
-        let !s149 = (t130 * t114)
-        wrU walk ((12 * i106) + 6) s147
-        wrU walk ((12 * i106) + 7) s148
-        wrU walk ((12 * i106) + 8) s149
+      loopI 0.0 24.0 $ \i108 -> do
+        let !d108 = fromIntegral i108 :: Double
+        chkI radii ((24 * i1) + i108) 0 0
+        t109 <- rdU radii ((24 * i1) + i108)
+        let !s110 = (t109 / 4.0)
+        chkI walk (12 * i108) 0 8
+        t111 <- rdU walk (12 * i108)
+        t112 <- rdU walk ((12 * i108) + 1)
+        t113 <- rdU walk ((12 * i108) + 2)
+        t114 <- rdU walk ((12 * i108) + 6)
+        t115 <- rdU walk ((12 * i108) + 7)
+        t116 <- rdU walk ((12 * i108) + 8)
+        t117 <- rdU walk ((12 * i108) + 3)
+        t118 <- rdU walk ((12 * i108) + 4)
+        t119 <- rdU walk ((12 * i108) + 5)
+        let !s120 = (t111 + (s110 * t117))
+        let !s121 = (t112 + (s110 * t118))
+        let !s122 = (t113 + (s110 * t119))
+        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
+        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
+        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
+        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
+        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
+        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
+        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
+        let !t132 = (1.0 - t123)
+        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
+        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
+        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
+        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
+        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
+        chkI verts ((291 * i1) + (12 * i108)) 9 11
+        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
+        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
+        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
+        wrU walk (12 * i108) s135
+        wrU walk ((12 * i108) + 1) s136
+        wrU walk ((12 * i108) + 2) s137
+        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
+        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
+        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
+        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
+        let !t142 = (t141 + (negate t141))
+        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
+        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
+        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
+        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
+        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
+        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
+        wrU walk ((12 * i108) + 3) s146
+        wrU walk ((12 * i108) + 4) s147
+        wrU walk ((12 * i108) + 5) s148
+        let !s149 = (t132 * t114)
+        let !s150 = (t123 + (t132 * t115))
+        let !s151 = (t132 * t116)
+        wrU walk ((12 * i108) + 6) s149
+        wrU walk ((12 * i108) + 7) s150
+        wrU walk ((12 * i108) + 8) s151
         pure ()
-      loopI 0.0 24.0 $ \i150 -> do
-        let !d150 = fromIntegral i150 :: Double
-        chkI radii ((24 * i1) + i150) 0 0
-        t151 <- rdU radii ((24 * i1) + i150)
-        let !s152 = (t151 / 4.0)
-        chkI walk (12 * i150) 0 8
-        t153 <- rdU walk (12 * i150)
-        t154 <- rdU walk ((12 * i150) + 1)
-        t155 <- rdU walk ((12 * i150) + 2)
-        t156 <- rdU walk ((12 * i150) + 6)
-        t157 <- rdU walk ((12 * i150) + 7)
-        t158 <- rdU walk ((12 * i150) + 8)
-        t159 <- rdU walk ((12 * i150) + 3)
-        t160 <- rdU walk ((12 * i150) + 4)
-        t161 <- rdU walk ((12 * i150) + 5)
-        let !s162 = (t153 + (s152 * t159))
-        let !s163 = (t154 + (s152 * t160))
-        let !s164 = (t155 + (s152 * t161))
-        let !t165 = (if (abs s152) > 0 then 1.0 else 0.0)
-        let !t166 = (if (abs t157) > 0 then 1.0 else 0.0)
-        let !t167 = (if ((abs s163) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t168 = (if t167 > 0 then (s163 + (negate ((s163 / t157) * t157))) else s163)
-        let !t169 = (if ((abs t168) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t170 = (if t169 > 0 then (t168 + (negate ((t168 / t157) * t157))) else t168)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t166 else 0.0)
-        let !t172 = (if t167 > 0 then (s162 + (negate ((s163 / t157) * t156))) else s162)
-        let !t173 = (if t169 > 0 then (t172 + (negate ((t168 / t157) * t156))) else t172)
-        let !t174 = (1.0 - t165)
-        let !t175 = (if t167 > 0 then (s164 + (negate ((s163 / t157) * t158))) else s164)
-        let !t176 = (if t169 > 0 then (t175 + (negate ((t168 / t157) * t158))) else t175)
-        let !s177 = ((t165 * (if t171 > 0 then (t173 + (negate ((t170 / t157) * t156))) else t173)) + (t174 * t153))
-        let !s178 = ((t165 * (if t171 > 0 then (t170 + (negate ((t170 / t157) * t157))) else t170)) + (t174 * t154))
-        let !s179 = ((t165 * (if t171 > 0 then (t176 + (negate ((t170 / t157) * t158))) else t176)) + (t174 * t155))
-        chkI verts ((291 * i1) + (12 * i150)) 12 14
-        wrU verts (((291 * i1) + (12 * i150)) + 12) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s177 else t2)
-        wrU verts (((291 * i1) + (12 * i150)) + 13) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s178 else t3)
-        wrU verts (((291 * i1) + (12 * i150)) + 14) (if (1.0 - (abs (((s177 - s177) + (s178 - s178)) + (s179 - s179)))) > 0 then s179 else t4)
+      loopI 0.0 24.0 $ \i152 -> do
+        let !d152 = fromIntegral i152 :: Double
+        chkI radii ((24 * i1) + i152) 0 0
+        t153 <- rdU radii ((24 * i1) + i152)
+        let !s154 = (t153 / 4.0)
+        chkI walk (12 * i152) 0 8
+        t155 <- rdU walk (12 * i152)
+        t156 <- rdU walk ((12 * i152) + 1)
+        t157 <- rdU walk ((12 * i152) + 2)
+        t158 <- rdU walk ((12 * i152) + 6)
+        t159 <- rdU walk ((12 * i152) + 7)
+        t160 <- rdU walk ((12 * i152) + 8)
+        t161 <- rdU walk ((12 * i152) + 3)
+        t162 <- rdU walk ((12 * i152) + 4)
+        t163 <- rdU walk ((12 * i152) + 5)
+        let !s164 = (t155 + (s154 * t161))
+        let !s165 = (t156 + (s154 * t162))
+        let !s166 = (t157 + (s154 * t163))
+        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
+        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
+        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
+        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
+        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
+        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
+        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
+        let !t176 = (1.0 - t167)
+        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
+        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
+        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
+        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
+        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
+        chkI verts ((291 * i1) + (12 * i152)) 12 14
+        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
+        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
+        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i180 -> do
-        let !d180 = fromIntegral i180 :: Double
-        chkI radii ((24 * i1) + i180) 0 0
-        t181 <- rdU radii ((24 * i1) + i180)
-        t182 <- rdU locals 0
-        t183 <- rdU locals 1
-        wrU locals 0 ((t182 * 0.9659258262890683) - (t183 * 0.25881904510252074))
-        wrU locals 1 ((t183 * 0.9659258262890683) + (t182 * 0.25881904510252074))
-        let !s184 = ((t182 * t5) + (t183 * s14))
-        let !s185 = ((t182 * t6) + (t183 * s15))
-        let !s186 = ((t182 * t7) + (t183 * s16))
-        let !s187 = (t2 + (t181 * s184))
-        let !s188 = (t3 + (t181 * s185))
-        let !s189 = (t4 + (t181 * s186))
-        let !t190 = (if (abs t181) > 0 then 1.0 else 0.0)
-        let !t191 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t192 = (if ((abs s188) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t193 = (if t192 > 0 then (s188 + (negate ((s188 / t9) * t9))) else s188)
-        let !t194 = (if ((abs t193) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t195 = (if t194 > 0 then (t193 + (negate ((t193 / t9) * t9))) else t193)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t191 else 0.0)
-        let !t197 = (if t192 > 0 then (s187 + (negate ((s188 / t9) * t8))) else s187)
-        let !t198 = (if t194 > 0 then (t197 + (negate ((t193 / t9) * t8))) else t197)
-        let !t199 = (1.0 - t190)
-        let !t200 = (if t192 > 0 then (s189 + (negate ((s188 / t9) * t10))) else s189)
-        let !t201 = (if t194 > 0 then (t200 + (negate ((t193 / t9) * t10))) else t200)
-        let !s202 = ((t190 * (if t196 > 0 then (t198 + (negate ((t195 / t9) * t8))) else t198)) + (t199 * t2))
-        let !s203 = ((t190 * (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)) + (t199 * t3))
-        let !s204 = ((t190 * (if t196 > 0 then (t201 + (negate ((t195 / t9) * t10))) else t201)) + (t199 * t4))
-        let !t205 = (1.0 - (abs (((s202 - s202) + (s203 - s203)) + (s204 - s204))))
-        let !s206 = (if t205 > 0 then s202 else t2)
-        let !s207 = (if t205 > 0 then s203 else t3)
-        let !s208 = (if t205 > 0 then s204 else t4)
-        chkI verts ((291 * i1) + (12 * i180)) 3 14
-        wrU verts (((291 * i1) + (12 * i180)) + 12) s206
-        wrU verts (((291 * i1) + (12 * i180)) + 13) s207
-        wrU verts (((291 * i1) + (12 * i180)) + 14) s208
-        wrU verts (((291 * i1) + (12 * i180)) + 3) (t2 + (0.25 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 4) (t3 + (0.25 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 5) (t4 + (0.25 * (s208 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i180)) + 6) (t2 + (0.5 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 7) (t3 + (0.5 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 8) (t4 + (0.5 * (s208 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i180)) + 9) (t2 + (0.75 * (s206 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i180)) + 10) (t3 + (0.75 * (s207 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i180)) + 11) (t4 + (0.75 * (s208 + (negate t4))))
+      loopI 0.0 24.0 $ \i182 -> do
+        let !d182 = fromIntegral i182 :: Double
+        chkI radii ((24 * i1) + i182) 0 0
+        t183 <- rdU radii ((24 * i1) + i182)
+        t184 <- rdU locals 0
+        t185 <- rdU locals 1
+        wrU locals 0 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
+        wrU locals 1 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
+        let !s186 = ((t184 * t5) + (t185 * s14))
+        let !s187 = ((t184 * t6) + (t185 * s15))
+        let !s188 = ((t184 * t7) + (t185 * s16))
+        let !s189 = (t2 + (t183 * s186))
+        let !s190 = (t3 + (t183 * s187))
+        let !s191 = (t4 + (t183 * s188))
+        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
+        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
+        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
+        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
+        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
+        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
+        let !t201 = (1.0 - t192)
+        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
+        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
+        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
+        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
+        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
+        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
+        let !s208 = (if t207 > 0 then s204 else t2)
+        let !s209 = (if t207 > 0 then s205 else t3)
+        let !s210 = (if t207 > 0 then s206 else t4)
+        chkI verts ((291 * i1) + (12 * i182)) 3 14
+        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
+        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
+        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
+        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -26,7 +26,7 @@ import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
-import Manifold.Engine (engineObject, engineProcedures)
+import Manifold.Engine (engineObject, engineProcedures, engineSubroutines)
 import Manifold.Surface (fieldGradient, projectToSurfaceWith, traceDistance)
 import Manifold.World (Layout, layout)
 
@@ -89,7 +89,7 @@ spaceScript s = unlines
       Just _ -> printFunction JavaScript "boundary" xyz [evalBoundary s pointSyms]
   , printFunction JavaScript "gravity" xyz (v3 (evalGravity s pointSyms))
   , printFunction JavaScript "curvature" xyz [gaussianCurvature (spaceField s) pointSyms]
-  , unlines (engineProcedures s engineLayout)
+  , unlines procedures
   , "Manifold.spaces[" ++ jsString (spaceName s) ++ "] = {"
   , "  name: " ++ jsString (spaceName s) ++ ","
   , "  description: " ++ jsString (spaceDescription s) ++ ","
@@ -104,11 +104,12 @@ spaceScript s = unlines
   , "  bounds: " ++ num (spaceBounds s) ++ ","
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
-  , "  engine: " ++ engineObject engineLayout ++ ","
+  , "  engine: " ++ engineObject engineLayout (engineSubroutines s engineLayout procedures) ++ ","
   , "  glsl: " ++ jsString (spaceGlsl s)
   , "};"
   , "})(globalThis.Manifold = globalThis.Manifold || { spaces: {} });"
   ]
+  where procedures = engineProcedures s engineLayout
 
 -- | The index of spaces, in catalogue order, with the script of each.
 spaceIndexScript :: [Space] -> String
