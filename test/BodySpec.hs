@@ -196,13 +196,13 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
                 angle = let a = atan2 y x in if a < 0 then a + 2 * pi else a
                 nearBoundary = let f = angle / sigma in abs (f - fromIntegral (round f :: Int)) < 1e-9
                 expected = fromIntegral (min (nd - 1) (floor (angle / sigma)) :: Int) :: Double
-            in not nearBoundary ==> directionSector nd x y === expected
+            in not nearBoundary ==> directionSector (sectors nd) x y === expected
     it "puts the origin, NaN and directions along the x axis in whole sectors" $ do
-      directionSector 24 0 (0 :: Double) `shouldBe` 0
-      directionSector 24 1 (0 :: Double) `shouldBe` 0
-      directionSector 24 (-1) (0 :: Double) `shouldSatisfy` (`elem` [11, 12])
-      directionSector 5 (-1) (0 :: Double) `shouldSatisfy` (`elem` [2, 3])
-      directionSector 24 (0 / 0) (1 :: Double) `shouldSatisfy` (\k -> k >= 0 && k <= 23)
+      directionSector (sectors 24) 0 (0 :: Double) `shouldBe` 0
+      directionSector (sectors 24) 1 (0 :: Double) `shouldBe` 0
+      directionSector (sectors 24) (-1) (0 :: Double) `shouldSatisfy` (`elem` [11, 12])
+      directionSector (sectors 5) (-1) (0 :: Double) `shouldSatisfy` (`elem` [2, 3])
+      directionSector (sectors 24) (0 / 0) (1 :: Double) `shouldSatisfy` (\k -> k >= 0 && k <= 23)
   it "polyLocal gives each vertex's (r, θ)" $ do
     let pp = PolygonParams 8 2
         poly = polygonise (spaceField plane) pp circle 0.5 (V3 0 0 0) (V3 1 0 0) (0 :: Double)

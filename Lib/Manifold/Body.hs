@@ -30,9 +30,12 @@ module Manifold.Body
   , vertexCount
   , triangleCount
   , directionAngle
+  , Sectors
+  , sectors
   , directionSector
   ) where
 
+import qualified Data.Vector.Unboxed as U
 import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^+^))
@@ -171,6 +174,19 @@ triangleCount (PolygonParams d s) = d + 2 * d * (s - 1)
 directionAngle :: Field a => PolygonParams -> Int -> a
 directionAngle pp d = constant (2 * pi * fromIntegral d / fromIntegral (polyDirections pp))
 
+-- | The sector boundaries between @nd@ directions (their cosines and sines),
+-- worked out once for every 'directionSector' that uses them: the generic
+-- native step calls it for every outline vertex near another body, with the
+-- number of directions known only at run time.
+-- (The count, then the cosine and the sine of boundary j's angle, 2πj/nd.)
+data Sectors = Sectors !Int !(U.Vector Double) !(U.Vector Double)
+
+sectors :: Int -> Sectors
+sectors nd
+  | nd < 1 = error ("sectors: at least one direction, got " ++ show nd)
+  | otherwise = Sectors nd (U.generate nd (cos . angle)) (U.generate nd (sin . angle))
+  where angle j = 2 * pi / fromIntegral nd * fromIntegral j
+
 -- | Of the @nd@ equal sectors between the directions, the one (0 to nd − 1)
 -- that holds the body-local direction @(x, y)@, measured from direction 0:
 -- the floor of its angle over @2π/nd@ (0 at the origin; a direction exactly
@@ -182,24 +198,29 @@ directionAngle pp d = constant (2 * pi * fromIntegral d / fromIntegral (polyDire
 -- body, and this needs no arctangent, root, division or floor, the most
 -- expensive parts of that lookup. With an even @nd@ the lower half turn is
 -- first turned onto the upper, which halves the boundaries to count.
-directionSector :: Field a => Int -> a -> a -> a
-directionSector nd x y
+directionSector :: Field a => Sectors -> a -> a -> a
+{-# INLINE directionSector #-}
+directionSector (Sectors nd cosines sines) x y
   | even nd =
       let lower = negate y -- positive below the x axis
           x' = select lower (negate x) x
           y' = select lower (negate y) y
-      in select lower (fromIntegral (nd `div` 2)) 0 + passed x' y' [1 .. nd `div` 2 - 1]
+      in select lower (fromIntegral half) 0 + passed x' y' 1 (half - 1)
   | otherwise =
-      -- below the x axis every boundary of the upper half is passed, above
-      -- it none of the lower half is
+      -- below the x axis every boundary of the upper half (2j < nd) is
+      -- passed, above it none of the lower half (2j > nd) is
       let lower = negate y
-          upper = [j | j <- [1 .. nd - 1], 2 * j < nd]
-          lowerHalf = [j | j <- [1 .. nd - 1], 2 * j > nd]
-      in select lower (fromIntegral (length upper) + passed x y lowerHalf) (passed x y upper)
+      in select lower (fromIntegral half + passed x y (half + 1) (nd - 1)) (passed x y 1 half)
   where
-    sigma = 2 * pi / fromIntegral nd :: Double
-    passed u v js = sum [ select (constant (cos a) * v - constant (sin a) * u) 1 0
-                        | j <- js, let a = sigma * fromIntegral j ]
+    half = nd `div` 2
+    -- boundaries lo to hi, summed from the left as 'sum' would (the staged
+    -- expression is the same), in a loop that natively allocates nothing
+    passed u v lo hi = go lo 0
+      where
+        go !j !acc
+          | j > hi = acc
+          | otherwise =
+              go (j + 1) (acc + select (constant (cosines U.! j) * v - constant (sines U.! j) * u) 1 0)
 
 -- | Walk the outline: from the centre @p@ with unit tangent axis @axis@ and
 -- angle @angle@, along a geodesic in each direction, in equal steps of

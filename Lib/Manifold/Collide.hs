@@ -23,7 +23,7 @@ import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
-import Manifold.Body (PolygonParams (..), directionSector)
+import Manifold.Body (PolygonParams (..), Sectors, sectors, directionSector)
 import Manifold.Field
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -129,7 +129,7 @@ pointInBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame 
 {-# INLINE pointInBody #-}
 pointInBody l w j y q = do
   turn <- bodyTurn w j
-  e <- edgeFacing l w j y turn q
+  e <- edgeFacing l (sectors (polyDirections (polygon l))) w j y turn q
   pure (efDepth e, efNormal e)
 
 -- | The cosine and sine of body @j@'s angle as its outline was last walked,
@@ -148,10 +148,10 @@ data EdgeFacing s = EdgeFacing
   , efVertex :: V3 s -- ^ one end of the edge
   }
 
-edgeFacing :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> (Scalar m, Scalar m)
+edgeFacing :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> (Scalar m, Scalar m)
            -> V3 (Scalar m) -> m (EdgeFacing (Scalar m))
 {-# INLINE edgeFacing #-}
-edgeFacing l w j y (c0, s0) q = do
+edgeFacing l sec w j y (c0, s0) q = do
   let nd = polyDirections (polygon l)
       c = bfCentre y
       d = q ^-^ c
@@ -159,7 +159,7 @@ edgeFacing l w j y (c0, s0) q = do
   qy <- share (d `dot` bfW y)
   h <- share (d `dot` bfNormal y)
   -- the point turned back by the body's angle: in its own directions
-  k <- share (directionSector nd (qx * c0 + qy * s0) (qy * c0 - qx * s0))
+  k <- share (directionSector sec (qx * c0 + qy * s0) (qy * c0 - qx * s0))
   let k1 = select (k - fromIntegral nd + 1.5) 0 (k + 1)
   o0 <- outlineVertex l w j (toIndex k)
   o1 <- outlineVertex l w j (toIndex k1)
@@ -248,28 +248,31 @@ whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre 
 -- Printed as one JavaScript subroutine for every pair and image (the
 -- isometry is passed as numbers): inlined at each of its call sites, the
 -- collision phase outgrew what V8 optimises on the quotient spaces.
-pairContacts :: Imp m => Layout -> WorldArrays (Array m) -> Scalar m
+pairContacts :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
              -> Index m -> Index m -> Isometry -> m ()
-pairContacts l w keyBase x y g =
+-- (Inlined natively, where a subroutine is its body: called, the generic
+-- step built its arguments' list for every candidate pair.)
+{-# INLINE pairContacts #-}
+pairContacts l sec w keyBase x y g =
   subroutine "pairContacts"
     ([keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g))
     (\args -> case args of
         [keyBase', x', y', sx, sy, sz, tx, ty, tz] ->
-          pairContactsVia l w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
+          pairContactsVia l sec w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
         _ -> error "pairContacts: nine arguments")
   where coefficients (V3 a b c) = map constant [a, b, c]
 
 -- | 'pairContacts' with the isometry @p ↦ signs·p + shift@ as scalars (its
 -- inverse is @p ↦ signs·p − signs·shift@: the signs are ±1, so the linear
 -- part is its own inverse).
-pairContactsVia :: Imp m => Layout -> WorldArrays (Array m) -> Scalar m
+pairContactsVia :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
                 -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> m ()
 {-# INLINE pairContactsVia #-}
-pairContactsVia l w keyBase x y signs shift = do
+pairContactsVia l sec w keyBase x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
   backShift <- share3 (negated (signs * shift))
-  (deepXY, normalXY, edgeXY) <- deepestInside l w 0 x y signs shift
-  (deepYX, normalYX, edgeYX) <- deepestInside l w nd y x signs backShift
+  (deepXY, normalXY, edgeXY) <- deepestInside l sec w 0 x y signs shift
+  (deepYX, normalYX, edgeYX) <- deepestInside l sec w nd y x signs backShift
   yInX <- share (deepYX - 1.1 * deepXY)
   let pick a b = select yInX b a
       pick3 (V3 a b c) (V3 u v s) = V3 (pick a u) (pick b v) (pick c s)
@@ -312,10 +315,10 @@ pairContactsVia l w keyBase x y signs shift = do
 -- vertex's depth (−1 when it is not near y) is left in the probe array from
 -- @slot@ on, so that the pair's contact points are chosen without testing
 -- the vertices again.
-deepestInside :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m -> Index m
+deepestInside :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Index m -> Index m -> Index m
               -> V3 (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
 {-# INLINE deepestInside #-}
-deepestInside l w slot x y signs shift = do
+deepestInside l sec w slot x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
   fy <- bodyFrame w y
@@ -331,7 +334,7 @@ deepestInside l w slot x y signs shift = do
     q <- outlineVertex l w x d
     writeArray (wProbe w) (slot + d) (-1)
     whenNear fy (image q) $ do
-      e <- edgeFacing l w y fy turn (image q)
+      e <- edgeFacing l sec w y fy turn (image q)
       writeArray (wProbe w) (slot + d) (efDepth e)
       best <- readRef deepest
       whenPositive (efDepth e - best) $ do
@@ -443,6 +446,8 @@ selfContacts sp l w i = do
       ns = polySteps (polygon l)
       vpb = fromIntegral (verticesPerBody l)
       vertex d k = read3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + k) -- step k+1 along d
+      -- (inlined: as a function of its own, the generic step boxed every vertex it read)
+      {-# INLINE vertex #-}
       centreIx = vpb * i
   c <- read3 (wVerts w) centreIx
   turn <- newRef 1
@@ -520,6 +525,7 @@ collide sp l w = do
   buildGrid sp w
   count <- readMeta w BodyCount
   let images = quotientImages (spaceQuotient sp)
+      sec = sectors (polyDirections (polygon l))
       -- on a lattice, only images that come within reach of the square
       nearDomain = case spaceQuotient sp of
         Lattice period _ -> \q reach -> whenPositive (reach - distanceToDomain period q)
@@ -553,7 +559,7 @@ collide sp l w = do
           nearCount <- readRef found
           forEach (toIndex nearCount) $ \k -> do
             j <- toIndex <$> readArray (wNear w) k
-            pairContacts l w ((toScalar j + 1) * 64 + keyOffset) i j g
+            pairContacts l sec w ((toScalar j + 1) * 64 + keyOffset) i j g
     pairs identityIso 0 False
     mapM_ (\(k, g) -> pairs g (16 + 4 * fromIntegral k) (selfImage g)) (zip [0 :: Int ..] images)
     boundaryContacts sp l w i
