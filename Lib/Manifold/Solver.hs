@@ -1,4 +1,8 @@
+{-# OPTIONS_GHC -fllvm #-}
 {-# LANGUAGE FlexibleContexts #-}
+-- Built with LLVM (as the compiled steps are): the generic native step's
+-- solve is a tenth faster so (bench/README, session 15).
+
 -- | Sequential impulses (paper §2.5; Catto's Box2D solver): every contact is
 -- a normal row (relative normal velocity ≥ 0, Baumgarte bias @β·depth/dt@,
 -- restitution, non-negative clamp) and a Coulomb friction row (clamped by
