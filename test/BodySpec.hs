@@ -2,6 +2,7 @@
 -- geodesic polygons.
 module BodySpec (spec) where
 
+import Control.Exception (evaluate)
 import Control.Monad (forM_)
 import Data.List (nub)
 import Linear.Metric (dot, norm)
@@ -203,6 +204,8 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
       directionSector (sectors 24) (-1) (0 :: Double) `shouldSatisfy` (`elem` [11, 12])
       directionSector (sectors 5) (-1) (0 :: Double) `shouldSatisfy` (`elem` [2, 3])
       directionSector (sectors 24) (0 / 0) (1 :: Double) `shouldSatisfy` (\k -> k >= 0 && k <= 23)
+    it "refuses sectors of no direction in words" $
+      evaluate (directionSector (sectors 0) 1 (1 :: Double)) `shouldThrow` errorCall "sectors: at least one direction, got 0"
   it "polyLocal gives each vertex's (r, θ)" $ do
     let pp = PolygonParams 8 2
         poly = polygonise (spaceField plane) pp circle 0.5 (V3 0 0 0) (V3 1 0 0) (0 :: Double)
