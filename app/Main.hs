@@ -51,6 +51,8 @@ data BenchArgs = BenchArgs
   , bScenes :: Maybe FilePath -- ^ write the settled scenes here instead of timing
   , bFrom :: Maybe FilePath -- ^ time the scenes written here instead of settling
   , bGeneric :: Bool -- ^ the generic step even where a compiled one exists
+  , bIterations :: Maybe Int -- ^ solver iterations while timed, instead of the scenes'
+  , bSlopPerSize :: Maybe Double -- ^ the slop while timed, as a fraction of the body size
   }
 
 data GeodesicArgs = GeodesicArgs
@@ -81,7 +83,9 @@ commandParser = hsubparser
                                    <*> switch (long "json" <> help "Print JSON")
                                    <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the settled scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
                                    <*> optional (strOption (long "from" <> metavar "DIR" <> help "Time the scenes DIR/SPACE-N.json that --scenes wrote instead of settling them again"))
-                                   <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one"))
+                                   <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one")
+                                  <*> optional (option auto (long "iterations" <> metavar "K" <> help "Solver iterations from the warm-up on, instead of the scenes' (give the piles a long --warmup to settle)"))
+                                  <*> optional (option auto (long "slop-per-size" <> metavar "F" <> help "The contacts' slop from the warm-up on: F times the scene's body size (default: the engine's 0.002, whatever the size)")))
                        (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "compile" (info (Compile <$> strOption (long "out" <> metavar "DIR" <> value "Lib" <> help "The library's source directory (default: Lib)"))
         (progDesc "Print every catalogue space's step as Haskell (the compiled native step) into DIR/Manifold/Compiled"))
@@ -236,13 +240,17 @@ simulate path steps every save = do
 -- it happens to fall on.
 bench :: BenchArgs -> IO ()
 bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWarmup = warmup, bSteps = steps
-                , bRounds = rounds, bJson = json, bScenes = scenesDir, bFrom = fromDir, bGeneric = generic } = do
+                , bRounds = rounds, bJson = json, bScenes = scenesDir, bFrom = fromDir, bGeneric = generic
+                , bIterations = iterations, bSlopPerSize = slopPerSize } = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   when (settle < 0) (usageError "--settle: must not be negative")
   when (warmup < 0) (usageError "--warmup: must not be negative")
   when (steps < 1) (usageError "--steps: must be at least 1")
   when (rounds < 1) (usageError "--rounds: must be at least 1")
+  when (maybe False (< 1) iterations) (usageError "--iterations: must be at least 1")
+  when (maybe False (\f -> isNaN f || isInfinite f || f < 0) slopPerSize) (usageError "--slop-per-size: must be a finite number, not negative")
+  let overridden = isJust iterations || isJust slopPerSize
   let cases = [(sp, n) | sp <- spaces, n <- sizes]
       settled (sp, n) = do
         hPutStrLn stderr ("bench: " ++ spaceName sp ++ " " ++ show n ++ ": settling " ++ show settle ++ " steps")
@@ -255,6 +263,7 @@ bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWar
         either (usageError . ((file ++ ": ") ++)) pure (parseScene text)
   case (scenesDir, fromDir) of
     (Just _, Just _) -> usageError "--scenes and --from: write the scenes or time them, not both"
+    (Just _, _) | overridden -> usageError "--iterations and --slop-per-size: they apply to the timed steps; --scenes writes the scenes as they settle"
     (Just dir, _) -> do
       createDirectoryIfMissing True dir
       forM_ cases $ \(sp, n) -> do
@@ -264,16 +273,19 @@ bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWar
     (Nothing, Just dir) -> timeScenes =<< mapM (saved dir) cases
     (Nothing, Nothing) -> timeScenes =<< mapM settled cases
   where
+    settings = ContactSettings iterations slopPerSize
     timeScenes scenes = do
       perRound <- forM [1 .. rounds] $ \k -> do
         let progress msg = hPutStrLn stderr ("bench: round " ++ show k ++ " of " ++ show rounds ++ ": " ++ msg)
-        mapM (runBench progress generic warmup steps) scenes
+        mapM (runBench progress generic settings warmup steps) scenes
       let results = map (minimumBy (comparing brMedianMs)) (transpose perRound)
       if json
         then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
                                               , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
                                               , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
-                                              , "rounds" A..= rounds, "settle" A..= (if isJust fromDir then Nothing else Just settle) -- null: timed as read, "warmup" A..= warmup
+                                              , "iterations" A..= brIterations r, "slop" A..= brSlop r
+                                              -- settle null: timed as read from --from's files
+                                              , "rounds" A..= rounds, "settle" A..= (if isJust fromDir then Nothing else Just settle), "warmup" A..= warmup
                                               , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]
                                    | r <- results ])
         else do

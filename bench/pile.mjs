@@ -10,15 +10,19 @@
 // over the last M of the W steps; --slop-per-size F sets the engine's slop to
 // F times the scene's body size before the steps (what a slop that scales
 // with the bodies would do: 0.0717 is the default 0.002 at the rectangle's
-// 1000-body size).
-// Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F]   (JSON lines on stdout)
+// 1000-body size); --iterations K sets the solver's iterations (what firmer
+// contacts do to a pile: see README.md, Scaling).
+// Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 
-const { dir, option } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F]");
+const { dir, option } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]");
 const settle = option("--steps", 400), meanOver = option("--mean", 0), slopPerSize = option("--slop-per-size", 0);
+const iterations = option("--iterations", 0);
+if (!(Number.isInteger(iterations) && iterations >= 0)) { console.error("--iterations: must be a whole number (0: the scene's)"); process.exit(2); }
 
 for (const { scene, world } of worlds(dir)) {
   if (slopPerSize > 0) world.setParams({ slop: slopPerSize * scene.bodies[0].size });
+  if (iterations > 0) world.setParams({ iterations });
   let rowSum = 0;
   for (let s = 0; s < settle; s++) {
     world.step(1);
@@ -107,6 +111,7 @@ for (const { scene, world } of worlds(dir)) {
     rowsPerBody: now.length / n, rowsPerPair: histogram, pairsByKind: byKind,
     ...(meanOver > 0 ? { rowsPerBodyMean: rowSum / Math.min(meanOver, settle) / n } : {}),
     ...(slopPerSize > 0 ? { slop: world.param("slop") } : {}),
+    ...(iterations > 0 ? { iterations: world.param("iterations") } : {}),
     candidatePairsPerBody: candidates / n, edgeLookupsPerBody: lookups / n,
     circleOverlapMean: count ? sum / count : 0, circleOverlapMax: worst, touchingCirclePairs: count,
     warmStartHits: total ? hits / total : 1,

@@ -54,6 +54,15 @@ newtype BenchSettle = BenchSettle (Maybe Int) deriving (Show, Eq)
 instance A.FromJSON BenchSettle where
   parseJSON = A.withObject "bench result" $ \o -> BenchSettle <$> o .: "settle"
 
+-- | What a bench result says of the contact settings and warm-up it was timed with.
+data BenchContacts = BenchContacts
+  { bcIterations :: Int, bcSlop :: Double, bcSize :: Double, bcWarmup :: Int, bcRows :: Double }
+  deriving (Show, Eq)
+
+instance A.FromJSON BenchContacts where
+  parseJSON = A.withObject "bench result" $ \o ->
+    BenchContacts <$> o .: "iterations" <*> o .: "slop" <*> o .: "size" <*> o .: "warmup" <*> o .: "contacts"
+
 expectedNames :: [String]
 expectedNames =
   [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
@@ -253,6 +262,29 @@ spec = do
       A.eitherDecode out `shouldBe` Right [BenchRounds 2, BenchRounds 2]
       (code0, _, err0) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--rounds", "0"]
       (code0, "--rounds: must be at least 1" `isInfixOf` err0) `shouldBe` (ExitFailure 2, True)
+    it "bench --iterations K --slop-per-size F times the scenes with those contact settings, and says so" $ do
+      let timed extra = do
+            (code, out, err) <- run (["bench", "--spaces", "sphere", "--sizes", "100", "--settle", "150", "--warmup", "40", "--steps", "3", "--rounds", "1", "--json"] ++ extra)
+            (code, err) `shouldSatisfy` ((== ExitSuccess) . fst)
+            case A.eitherDecode out of
+              Right [r] -> pure (r :: BenchContacts)
+              other -> fail ("bench " ++ unwords extra ++ ": " ++ show other)
+      plain <- timed []
+      (bcIterations plain, bcSlop plain, bcWarmup plain) `shouldBe` (8, 0.002, 40)
+      firm <- timed ["--iterations", "3", "--slop-per-size", "0.25"]
+      (bcIterations firm, bcSize firm) `shouldBe` (3, bcSize plain)
+      bcSlop firm `shouldSatisfy` (\s -> abs (s - 0.25 * bcSize plain) < 1e-12)
+      -- the settings reach the timed world: the same settled pile, warmed up
+      -- under them, has other contacts
+      bcRows firm `shouldSatisfy` (/= bcRows plain)
+      forM_ [ (["--iterations", "0"], "--iterations: must be at least 1")
+            , (["--slop-per-size", "-0.5"], "--slop-per-size: must be a finite number, not negative")
+            , (["--slop-per-size", "Infinity"], "--slop-per-size: must be a finite number, not negative") ] $ \(extra, message) -> do
+        (code, _, err) <- run (["bench", "--spaces", "torus", "--sizes", "10"] ++ extra)
+        (code, message `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
+      withSystemTempDirectory "manifold-scenes" $ \dir -> do
+        (code, _, err) <- run ["bench", "--scenes", dir, "--sizes", "10", "--iterations", "4"]
+        (code, "they apply to the timed steps" `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
     it "bench --scenes DIR writes each scene after --settle K steps (as placed with --settle 0), and bench --from DIR times them" $
       withSystemTempDirectory "manifold-scenes" $ \dir -> do
         let write :: Int -> IO Scene

@@ -9,11 +9,13 @@ module Manifold.Bench
   , settleScene
   , defaultSettleSteps
   , runBench
+  , ContactSettings (..)
+  , sceneSettings
   ) where
 
 import Control.Monad (forM, replicateM_)
 import Data.List (sort, transpose)
-import Data.Maybe (listToMaybe)
+import Data.Maybe (fromMaybe, listToMaybe)
 import qualified Data.Map.Strict as M
 import GHC.Clock (getMonotonicTime)
 import Linear.Metric (distance, dot, norm, normalize)
@@ -38,7 +40,26 @@ data BenchResult = BenchResult
   , brP90Ms :: Double
   , brSteps :: Int
   , brPhases :: [(String, Double)] -- ^ median ms of each phase of the step
+  , brIterations :: Int -- ^ the solver's iterations while timed
+  , brSlop :: Double -- ^ the contacts' slop while timed
   } deriving Show
+
+-- | Contact settings a run may put in place of a scene's, from the warm-up
+-- on: to measure what firmer contacts cost and how piles then scale (a
+-- pile needs a few hundred steps to settle under new settings, so such a
+-- run wants a long warm-up).
+data ContactSettings = ContactSettings
+  { csIterations :: Maybe Int -- ^ solver iterations instead of the scene's
+  , csSlopPerSize :: Maybe Double -- ^ the slop as this fraction of the scene's body size, instead of the engine's absolute one
+  } deriving Show
+
+-- | The engine's parameters for a scene under these settings.
+sceneSettings :: ContactSettings -> Scene -> Params
+sceneSettings cs scene =
+  let p = sceneParams scene
+      size = maybe 0 bsSize (listToMaybe (sceneBodies scene))
+  in p { pIterations = fromMaybe (pIterations p) (csIterations cs)
+       , pSlop = maybe (pSlop p) (* size) (csSlopPerSize cs) }
 
 -- | Plane, sphere, torus, trumpet, projective plane and a boundary space.
 benchSpaces :: [Space]
@@ -151,11 +172,13 @@ benchError scene e =
 -- @steps@ steps one by one, each phase of each step on its own (the step's
 -- time is their sum). With @generic@, the world runs the generic step even
 -- where its space has a compiled one (to see what the compiled step gains).
-runBench :: (String -> IO ()) -> Bool -> Int -> Int -> Scene -> IO BenchResult
-runBench progress generic warmup steps scene = do
+runBench :: (String -> IO ()) -> Bool -> ContactSettings -> Int -> Int -> Scene -> IO BenchResult
+runBench progress generic settings warmup steps scene = do
   let sp = sceneSpace scene
       size = maybe 0 bsSize (listToMaybe (sceneBodies scene))
+      params = sceneSettings settings scene
   w <- (if generic then genericStep else id) <$> (loadScene 0 scene >>= either (benchError scene) pure)
+  setParams w params
   placed <- bodyCount w
   progress (spaceName sp ++ ": " ++ show placed ++ " bodies of size " ++ show (roundTo 4 size) ++ ", warming up")
   replicateM_ warmup (stepNative w)
@@ -176,5 +199,5 @@ runBench progress generic warmup steps scene = do
       quantile xs x = let sorted = sort xs in sorted !! min (length sorted - 1) (floor (x * fromIntegral (length sorted)))
       q = quantile times
       phaseMedians = zip (map fst phases) [quantile ts 0.5 | ts <- transpose phaseTimes]
-  pure (BenchResult (spaceName sp) placed size contacts (q 0.5) (q 0.1) (q 0.9) steps phaseMedians)
+  pure (BenchResult (spaceName sp) placed size contacts (q 0.5) (q 0.1) (q 0.9) steps phaseMedians (pIterations params) (pSlop params))
   where roundTo k x = fromIntegral (round (x * 10 ^ (k :: Int)) :: Integer) / 10 ^ k :: Double

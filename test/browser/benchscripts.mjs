@@ -1,8 +1,8 @@
 // The documented benchmark commands, end to end on small scenes, so that a
 // change to them or to the page they drive is caught here rather than in
 // the next full benchmark run: `manifold bench --scenes` and `--from`,
-// bench/browser.mjs, bench/report.mjs (into a copy of bench/README.md) and
-// bench/profile.mjs.
+// bench/browser.mjs, bench/report.mjs (into a copy of bench/README.md),
+// bench/pile.mjs and bench/profile.mjs.
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import os from "node:os";
@@ -28,6 +28,17 @@ export async function testBenchScripts(check) {
     check("manifold bench --scenes/--from and bench/browser.mjs time the same small piles (torus and rectangle, 30 bodies; contact rows equal)",
       rowsAgree && b.fps.length === 1 && b.fps[0].fps > 0,
       JSON.stringify({ native: n.map((r) => [r.space, r.bodies, r.contacts, r.medianMs]), browser: b.results.map((r) => [r.space, r.bodies, r.contacts, r.medianMs]) }));
+
+    // firmer contacts (README.md, Scaling): the native benchmark and the
+    // pile script put the same settings in place and find the same rows
+    const firm = ["--iterations", "3", "--slop-per-size", "0.05"];
+    const nf = JSON.parse(run(manifoldExe(), ["bench", "--from", scenes, "--spaces", "rectangle", "--sizes", "30", "--rounds", "1",
+      "--warmup", "20", "--steps", "1", "--json"].concat(firm)))[0];
+    const pf = run("node", ["bench/pile.mjs", scenes, "--steps", "21"].concat(firm)).trim().split("\n").map((l) => JSON.parse(l))
+      .find((r) => r.space === "rectangle");
+    check("manifold bench --iterations/--slop-per-size and bench/pile.mjs with the same settings: the same contact rows on the same pile",
+      nf.iterations === 3 && pf.iterations === 3 && Math.abs(nf.slop - pf.slop) < 1e-15 && nf.contacts > 0 && nf.contacts === pf.rowsPerBody * pf.bodies,
+      JSON.stringify({ native: [nf.iterations, nf.slop, nf.contacts], pile: [pf.iterations, pf.slop, pf.rowsPerBody * pf.bodies] }));
 
     const readme = path.join(dir, "README.md"), png = path.join(dir, "scaling.png");
     fs.copyFileSync(path.join(ROOT, "bench/README.md"), readme);
