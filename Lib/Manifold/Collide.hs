@@ -457,7 +457,7 @@ selfContacts sp l w i = do
   c <- read3 (wVerts w) centreIx
   turn <- newRef 1
   forEach (fromIntegral nd) $ \d -> do
-    o <- vertex d (fromIntegral ns - 1)
+    o <- outlineVertex l w i d
     r <- readArray (wRadii w) (fromIntegral nd * i + d)
     modifyRef turn (minF (select r (norm (o ^-^ c) / r) 1))
   straightness <- readRef turn

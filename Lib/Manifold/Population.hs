@@ -111,6 +111,7 @@ removeBody l w i = do
     move (wScalars w) scalarSlots
     move (wRadii w) (polyDirections (polygon l))
     move (wVerts w) (3 * verticesPerBody l)
+    move (wOutline w) (3 * polyDirections (polygon l))
     writeMeta w BodyCount (count - 1)
     forEach (toIndex count) $ \k -> writeArray (wBodyPrev w) (2 * k + 1) 0
     grabbed <- readMouse w MBody

@@ -22,13 +22,13 @@ compiled = CompiledStep "cube" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  const t0 = (Math.abs(x) - 0.6);\n  const t1 = ((-t0) > 0 ? 0.0 : t0);\n  const t2 = (Math.abs(y) - 0.6);\n  const t3 = ((-t2) > 0 ? 0.0 : t2);\n  const t4 = (Math.abs(z) - 0.6);\n  const t5 = ((-t4) > 0 ? 0.0 : t4);\n  const t6 = ((t2 - t4) > 0 ? t2 : t4);\n  const t7 = ((t0 - t6) > 0 ? t0 : t6);\n  return ((Math.sqrt((((t1 * t1) + (t3 * t3)) + (t5 * t5))) + (t7 > 0 ? 0.0 : t7)) - 0.3);\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, (-4.0), 0.0];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, outline, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Cube: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
@@ -214,7 +214,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d67 = fromIntegral i67 :: Double
       chkI near i67 0 0
       t68 <- rdU near i67
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     chkI verts (291 * i29) 0 2
     t69 <- rdU verts (291 * i29)
@@ -223,10 +223,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 3 1.0
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i29) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      chkI outline ((72 * i29) + (3 * i72)) 0 2
+      t73 <- rdU outline ((72 * i29) + (3 * i72))
+      t74 <- rdU outline (((72 * i29) + (3 * i72)) + 1)
+      t75 <- rdU outline (((72 * i29) + (3 * i72)) + 2)
       chkI radii ((24 * i29) + i72) 0 0
       t76 <- rdU radii ((24 * i29) + i72)
       t77 <- rdU locals 3
@@ -529,11 +529,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 2 2
   t0 <- rdU params 2
-  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+  solvePrepare meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
   t1 <- rdU mouse 0
   if t1 > 0 then do
@@ -1173,7 +1173,7 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   loopI 0.0 t0 $ \i612 -> do
     let !d612 = fromIntegral i612 :: Double
-    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    solveSweep meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
     t613 <- rdU mouse 0
     if t613 > 0 then do
       chkI mouse 0 1 1
@@ -1865,8 +1865,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -2150,8 +2150,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
@@ -2324,688 +2324,712 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s128 = ((t102 * (if t126 > 0 then (t94 + (negate ((t117 / t125) * t8))) else t94)) + (t127 * t2))
         let !s129 = ((t102 * (if t126 > 0 then (t95 + (negate ((t117 / t125) * t9))) else t95)) + (t127 * t3))
         let !s130 = ((t102 * (if t126 > 0 then (t96 + (negate ((t117 / t125) * t10))) else t96)) + (t127 * t4))
+        let !t131 = (1.0 - (abs (((s128 - s128) + (s129 - s129)) + (s130 - s130))))
+        let !s132 = (if t131 > 0 then s128 else t2)
+        let !s133 = (if t131 > 0 then s129 else t3)
+        let !s134 = (if t131 > 0 then s130 else t4)
         chkI verts ((291 * i1) + (12 * i93)) 3 5
-        wrU verts (((291 * i1) + (12 * i93)) + 3) (if (1.0 - (abs (((s128 - s128) + (s129 - s129)) + (s130 - s130)))) > 0 then s128 else t2)
-        wrU verts (((291 * i1) + (12 * i93)) + 4) (if (1.0 - (abs (((s128 - s128) + (s129 - s129)) + (s130 - s130)))) > 0 then s129 else t3)
-        wrU verts (((291 * i1) + (12 * i93)) + 5) (if (1.0 - (abs (((s128 - s128) + (s129 - s129)) + (s130 - s130)))) > 0 then s130 else t4)
+        wrU verts (((291 * i1) + (12 * i93)) + 3) s132
+        wrU verts (((291 * i1) + (12 * i93)) + 4) s133
+        wrU verts (((291 * i1) + (12 * i93)) + 5) s134
         wrU walk (12 * i93) s128
         wrU walk ((12 * i93) + 1) s129
         wrU walk ((12 * i93) + 2) s130
-        let !t131 = (sqrt (((t99 * t99) + (t100 * t100)) + (t101 * t101)))
-        let !t132 = (if (abs s98) > 0 then (recip s98) else 0.0)
-        let !t133 = (t132 * ((if t126 > 0 then (t94 + (negate ((t117 / t125) * t8))) else t94) + (negate t2)))
-        let !t134 = ((t118 * (t120 + t120)) + (if t116 > 0 then 0.0 else (if t115 > 0 then t119 else 0.0)))
-        let !t135 = ((t118 * (t122 + t122)) + (if t116 > 0 then 0.0 else (if t115 > 0 then 0.0 else (if t113 > 0 then t121 else 0.0))))
-        let !t136 = ((t118 * (t124 + t124)) + (if t116 > 0 then 0.0 else (if t115 > 0 then 0.0 else (if t113 > 0 then 0.0 else t123))))
-        let !t137 = (sqrt (((t134 * t134) + (t135 * t135)) + (t136 * t136)))
-        let !t138 = (if t137 > 0 then (recip (if (t137 - 1.0e-300) > 0 then t137 else 1.0e-300)) else 0.0)
-        let !t139 = (t138 * t134)
-        let !t140 = (t138 * t135)
-        let !t141 = (t132 * ((if t126 > 0 then (t95 + (negate ((t117 / t125) * t9))) else t95) + (negate t3)))
-        let !t142 = (t138 * t136)
-        let !t143 = (t132 * ((if t126 > 0 then (t96 + (negate ((t117 / t125) * t10))) else t96) + (negate t4)))
-        let !t144 = (((t139 * t133) + (t140 * t141)) + (t142 * t143))
-        let !t145 = (t133 + (negate (t144 * t139)))
-        let !t146 = (t141 + (negate (t144 * t140)))
-        let !t147 = (t143 + (negate (t144 * t142)))
-        let !t148 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
-        let !t149 = (if t148 > 0 then (recip (if (t148 - 1.0e-300) > 0 then t148 else 1.0e-300)) else 0.0)
-        let !s150 = ((t102 * (t131 * (t149 * t145))) + (t127 * t99))
-        let !s151 = ((t102 * (t131 * (t149 * t146))) + (t127 * t100))
-        let !s152 = ((t102 * (t131 * (t149 * t147))) + (t127 * t101))
-        wrU walk ((12 * i93) + 3) s150
-        wrU walk ((12 * i93) + 4) s151
-        wrU walk ((12 * i93) + 5) s152
-        let !s153 = ((t102 * t139) + (t127 * t8))
-        let !s154 = ((t102 * t140) + (t127 * t9))
-        let !s155 = ((t102 * t142) + (t127 * t10))
-        wrU walk ((12 * i93) + 6) s153
-        wrU walk ((12 * i93) + 7) s154
-        wrU walk ((12 * i93) + 8) s155
+        let !t135 = (sqrt (((t99 * t99) + (t100 * t100)) + (t101 * t101)))
+        let !t136 = (if (abs s98) > 0 then (recip s98) else 0.0)
+        let !t137 = (t136 * ((if t126 > 0 then (t94 + (negate ((t117 / t125) * t8))) else t94) + (negate t2)))
+        let !t138 = ((t118 * (t120 + t120)) + (if t116 > 0 then 0.0 else (if t115 > 0 then t119 else 0.0)))
+        let !t139 = ((t118 * (t122 + t122)) + (if t116 > 0 then 0.0 else (if t115 > 0 then 0.0 else (if t113 > 0 then t121 else 0.0))))
+        let !t140 = ((t118 * (t124 + t124)) + (if t116 > 0 then 0.0 else (if t115 > 0 then 0.0 else (if t113 > 0 then 0.0 else t123))))
+        let !t141 = (sqrt (((t138 * t138) + (t139 * t139)) + (t140 * t140)))
+        let !t142 = (if t141 > 0 then (recip (if (t141 - 1.0e-300) > 0 then t141 else 1.0e-300)) else 0.0)
+        let !t143 = (t142 * t138)
+        let !t144 = (t142 * t139)
+        let !t145 = (t136 * ((if t126 > 0 then (t95 + (negate ((t117 / t125) * t9))) else t95) + (negate t3)))
+        let !t146 = (t142 * t140)
+        let !t147 = (t136 * ((if t126 > 0 then (t96 + (negate ((t117 / t125) * t10))) else t96) + (negate t4)))
+        let !t148 = (((t143 * t137) + (t144 * t145)) + (t146 * t147))
+        let !t149 = (t137 + (negate (t148 * t143)))
+        let !t150 = (t145 + (negate (t148 * t144)))
+        let !t151 = (t147 + (negate (t148 * t146)))
+        let !t152 = (sqrt (((t149 * t149) + (t150 * t150)) + (t151 * t151)))
+        let !t153 = (if t152 > 0 then (recip (if (t152 - 1.0e-300) > 0 then t152 else 1.0e-300)) else 0.0)
+        let !s154 = ((t102 * (t135 * (t153 * t149))) + (t127 * t99))
+        let !s155 = ((t102 * (t135 * (t153 * t150))) + (t127 * t100))
+        let !s156 = ((t102 * (t135 * (t153 * t151))) + (t127 * t101))
+        wrU walk ((12 * i93) + 3) s154
+        wrU walk ((12 * i93) + 4) s155
+        wrU walk ((12 * i93) + 5) s156
+        let !s157 = ((t102 * t143) + (t127 * t8))
+        let !s158 = ((t102 * t144) + (t127 * t9))
+        let !s159 = ((t102 * t146) + (t127 * t10))
+        wrU walk ((12 * i93) + 6) s157
+        wrU walk ((12 * i93) + 7) s158
+        wrU walk ((12 * i93) + 8) s159
         pure ()
-      loopI 0.0 24.0 $ \i156 -> do
-        let !d156 = fromIntegral i156 :: Double
-        chkI walk (12 * i156) 0 11
-        t157 <- rdU walk ((12 * i156) + 6)
-        t158 <- rdU walk ((12 * i156) + 7)
-        t159 <- rdU walk ((12 * i156) + 8)
-        chkI radii ((24 * i1) + i156) 0 0
-        t160 <- rdU radii ((24 * i1) + i156)
-        let !s161 = (t160 / 4.0)
-        t162 <- rdU walk (12 * i156)
-        t163 <- rdU walk ((12 * i156) + 1)
-        t164 <- rdU walk ((12 * i156) + 2)
-        t165 <- rdU walk ((12 * i156) + 3)
-        t166 <- rdU walk ((12 * i156) + 4)
-        t167 <- rdU walk ((12 * i156) + 5)
-        let !s168 = (t162 + (s161 * t165))
-        let !s169 = (t163 + (s161 * t166))
-        let !s170 = (t164 + (s161 * t167))
-        let !t171 = ((abs s168) - 0.6)
-        let !t172 = (negate t171)
-        let !t173 = (if t172 > 0 then 0.0 else t171)
-        let !t174 = ((abs s169) - 0.6)
-        let !t175 = (negate t174)
-        let !t176 = (if t175 > 0 then 0.0 else t174)
-        let !t177 = ((abs s170) - 0.6)
-        let !t178 = (negate t177)
-        let !t179 = (if t178 > 0 then 0.0 else t177)
-        let !t180 = (sqrt (((t173 * t173) + (t176 * t176)) + (t179 * t179)))
-        let !t181 = (t174 - t177)
-        let !t182 = (if t181 > 0 then t174 else t177)
-        let !t183 = (t171 - t182)
-        let !t184 = (if t183 > 0 then t171 else t182)
-        let !t185 = ((t180 + (if t184 > 0 then 0.0 else t184)) - 0.3)
-        let !t186 = (recip (2.0 * t180))
-        let !t187 = (signum s168)
-        let !t188 = (t173 * (if t172 > 0 then 0.0 else t187))
-        let !t189 = (signum s169)
-        let !t190 = (t176 * (if t175 > 0 then 0.0 else t189))
-        let !t191 = (signum s170)
-        let !t192 = (t179 * (if t178 > 0 then 0.0 else t191))
-        let !t193 = (((((t186 * (t188 + t188)) + (if t184 > 0 then 0.0 else (if t183 > 0 then t187 else 0.0))) * t157) + (((t186 * (t190 + t190)) + (if t184 > 0 then 0.0 else (if t183 > 0 then 0.0 else (if t181 > 0 then t189 else 0.0)))) * t158)) + (((t186 * (t192 + t192)) + (if t184 > 0 then 0.0 else (if t183 > 0 then 0.0 else (if t181 > 0 then 0.0 else t191)))) * t159))
-        let !t194 = (if ((abs t185) - 1.0e-10) > 0 then (if (abs t193) > 0 then 1.0 else 0.0) else 0.0)
-        let !s195 = (if t194 > 0 then (s168 + (negate ((t185 / t193) * t157))) else s168)
-        let !s196 = (if t194 > 0 then (s169 + (negate ((t185 / t193) * t158))) else s169)
-        let !s197 = (if t194 > 0 then (s170 + (negate ((t185 / t193) * t159))) else s170)
-        wrU walk ((12 * i156) + 9) s195
-        wrU walk ((12 * i156) + 10) s196
-        wrU walk ((12 * i156) + 11) s197
+      loopI 0.0 24.0 $ \i160 -> do
+        let !d160 = fromIntegral i160 :: Double
+        chkI walk (12 * i160) 0 11
+        t161 <- rdU walk ((12 * i160) + 6)
+        t162 <- rdU walk ((12 * i160) + 7)
+        t163 <- rdU walk ((12 * i160) + 8)
+        chkI radii ((24 * i1) + i160) 0 0
+        t164 <- rdU radii ((24 * i1) + i160)
+        let !s165 = (t164 / 4.0)
+        t166 <- rdU walk (12 * i160)
+        t167 <- rdU walk ((12 * i160) + 1)
+        t168 <- rdU walk ((12 * i160) + 2)
+        t169 <- rdU walk ((12 * i160) + 3)
+        t170 <- rdU walk ((12 * i160) + 4)
+        t171 <- rdU walk ((12 * i160) + 5)
+        let !s172 = (t166 + (s165 * t169))
+        let !s173 = (t167 + (s165 * t170))
+        let !s174 = (t168 + (s165 * t171))
+        let !t175 = ((abs s172) - 0.6)
+        let !t176 = (negate t175)
+        let !t177 = (if t176 > 0 then 0.0 else t175)
+        let !t178 = ((abs s173) - 0.6)
+        let !t179 = (negate t178)
+        let !t180 = (if t179 > 0 then 0.0 else t178)
+        let !t181 = ((abs s174) - 0.6)
+        let !t182 = (negate t181)
+        let !t183 = (if t182 > 0 then 0.0 else t181)
+        let !t184 = (sqrt (((t177 * t177) + (t180 * t180)) + (t183 * t183)))
+        let !t185 = (t178 - t181)
+        let !t186 = (if t185 > 0 then t178 else t181)
+        let !t187 = (t175 - t186)
+        let !t188 = (if t187 > 0 then t175 else t186)
+        let !t189 = ((t184 + (if t188 > 0 then 0.0 else t188)) - 0.3)
+        let !t190 = (recip (2.0 * t184))
+        let !t191 = (signum s172)
+        let !t192 = (t177 * (if t176 > 0 then 0.0 else t191))
+        let !t193 = (signum s173)
+        let !t194 = (t180 * (if t179 > 0 then 0.0 else t193))
+        let !t195 = (signum s174)
+        let !t196 = (t183 * (if t182 > 0 then 0.0 else t195))
+        let !t197 = (((((t190 * (t192 + t192)) + (if t188 > 0 then 0.0 else (if t187 > 0 then t191 else 0.0))) * t161) + (((t190 * (t194 + t194)) + (if t188 > 0 then 0.0 else (if t187 > 0 then 0.0 else (if t185 > 0 then t193 else 0.0)))) * t162)) + (((t190 * (t196 + t196)) + (if t188 > 0 then 0.0 else (if t187 > 0 then 0.0 else (if t185 > 0 then 0.0 else t195)))) * t163))
+        let !t198 = (if ((abs t189) - 1.0e-10) > 0 then (if (abs t197) > 0 then 1.0 else 0.0) else 0.0)
+        let !s199 = (if t198 > 0 then (s172 + (negate ((t189 / t197) * t161))) else s172)
+        let !s200 = (if t198 > 0 then (s173 + (negate ((t189 / t197) * t162))) else s173)
+        let !s201 = (if t198 > 0 then (s174 + (negate ((t189 / t197) * t163))) else s174)
+        wrU walk ((12 * i160) + 9) s199
+        wrU walk ((12 * i160) + 10) s200
+        wrU walk ((12 * i160) + 11) s201
         pure ()
-      loopI 0.0 24.0 $ \i198 -> do
-        let !d198 = fromIntegral i198 :: Double
-        chkI walk (12 * i198) 6 11
-        t199 <- rdU walk ((12 * i198) + 6)
-        t200 <- rdU walk ((12 * i198) + 7)
-        t201 <- rdU walk ((12 * i198) + 8)
-        t202 <- rdU walk ((12 * i198) + 9)
-        t203 <- rdU walk ((12 * i198) + 10)
-        t204 <- rdU walk ((12 * i198) + 11)
-        let !t205 = ((abs t202) - 0.6)
-        let !t206 = (negate t205)
-        let !t207 = (if t206 > 0 then 0.0 else t205)
-        let !t208 = ((abs t203) - 0.6)
-        let !t209 = (negate t208)
-        let !t210 = (if t209 > 0 then 0.0 else t208)
-        let !t211 = ((abs t204) - 0.6)
-        let !t212 = (negate t211)
-        let !t213 = (if t212 > 0 then 0.0 else t211)
-        let !t214 = (sqrt (((t207 * t207) + (t210 * t210)) + (t213 * t213)))
-        let !t215 = (t208 - t211)
-        let !t216 = (if t215 > 0 then t208 else t211)
-        let !t217 = (t205 - t216)
-        let !t218 = (if t217 > 0 then t205 else t216)
-        let !t219 = ((t214 + (if t218 > 0 then 0.0 else t218)) - 0.3)
-        let !t220 = (recip (2.0 * t214))
-        let !t221 = (signum t202)
-        let !t222 = (t207 * (if t206 > 0 then 0.0 else t221))
-        let !t223 = (signum t203)
-        let !t224 = (t210 * (if t209 > 0 then 0.0 else t223))
-        let !t225 = (signum t204)
-        let !t226 = (t213 * (if t212 > 0 then 0.0 else t225))
-        let !t227 = (((((t220 * (t222 + t222)) + (if t218 > 0 then 0.0 else (if t217 > 0 then t221 else 0.0))) * t199) + (((t220 * (t224 + t224)) + (if t218 > 0 then 0.0 else (if t217 > 0 then 0.0 else (if t215 > 0 then t223 else 0.0)))) * t200)) + (((t220 * (t226 + t226)) + (if t218 > 0 then 0.0 else (if t217 > 0 then 0.0 else (if t215 > 0 then 0.0 else t225)))) * t201))
-        let !t228 = (if ((abs t219) - 1.0e-10) > 0 then (if (abs t227) > 0 then 1.0 else 0.0) else 0.0)
-        let !s229 = (if t228 > 0 then (t202 + (negate ((t219 / t227) * t199))) else t202)
-        let !s230 = (if t228 > 0 then (t203 + (negate ((t219 / t227) * t200))) else t203)
-        let !s231 = (if t228 > 0 then (t204 + (negate ((t219 / t227) * t201))) else t204)
-        wrU walk ((12 * i198) + 9) s229
-        wrU walk ((12 * i198) + 10) s230
-        wrU walk ((12 * i198) + 11) s231
+      loopI 0.0 24.0 $ \i202 -> do
+        let !d202 = fromIntegral i202 :: Double
+        chkI walk (12 * i202) 6 11
+        t203 <- rdU walk ((12 * i202) + 6)
+        t204 <- rdU walk ((12 * i202) + 7)
+        t205 <- rdU walk ((12 * i202) + 8)
+        t206 <- rdU walk ((12 * i202) + 9)
+        t207 <- rdU walk ((12 * i202) + 10)
+        t208 <- rdU walk ((12 * i202) + 11)
+        let !t209 = ((abs t206) - 0.6)
+        let !t210 = (negate t209)
+        let !t211 = (if t210 > 0 then 0.0 else t209)
+        let !t212 = ((abs t207) - 0.6)
+        let !t213 = (negate t212)
+        let !t214 = (if t213 > 0 then 0.0 else t212)
+        let !t215 = ((abs t208) - 0.6)
+        let !t216 = (negate t215)
+        let !t217 = (if t216 > 0 then 0.0 else t215)
+        let !t218 = (sqrt (((t211 * t211) + (t214 * t214)) + (t217 * t217)))
+        let !t219 = (t212 - t215)
+        let !t220 = (if t219 > 0 then t212 else t215)
+        let !t221 = (t209 - t220)
+        let !t222 = (if t221 > 0 then t209 else t220)
+        let !t223 = ((t218 + (if t222 > 0 then 0.0 else t222)) - 0.3)
+        let !t224 = (recip (2.0 * t218))
+        let !t225 = (signum t206)
+        let !t226 = (t211 * (if t210 > 0 then 0.0 else t225))
+        let !t227 = (signum t207)
+        let !t228 = (t214 * (if t213 > 0 then 0.0 else t227))
+        let !t229 = (signum t208)
+        let !t230 = (t217 * (if t216 > 0 then 0.0 else t229))
+        let !t231 = (((((t224 * (t226 + t226)) + (if t222 > 0 then 0.0 else (if t221 > 0 then t225 else 0.0))) * t203) + (((t224 * (t228 + t228)) + (if t222 > 0 then 0.0 else (if t221 > 0 then 0.0 else (if t219 > 0 then t227 else 0.0)))) * t204)) + (((t224 * (t230 + t230)) + (if t222 > 0 then 0.0 else (if t221 > 0 then 0.0 else (if t219 > 0 then 0.0 else t229)))) * t205))
+        let !t232 = (if ((abs t223) - 1.0e-10) > 0 then (if (abs t231) > 0 then 1.0 else 0.0) else 0.0)
+        let !s233 = (if t232 > 0 then (t206 + (negate ((t223 / t231) * t203))) else t206)
+        let !s234 = (if t232 > 0 then (t207 + (negate ((t223 / t231) * t204))) else t207)
+        let !s235 = (if t232 > 0 then (t208 + (negate ((t223 / t231) * t205))) else t208)
+        wrU walk ((12 * i202) + 9) s233
+        wrU walk ((12 * i202) + 10) s234
+        wrU walk ((12 * i202) + 11) s235
         pure ()
-      loopI 0.0 24.0 $ \i232 -> do
-        let !d232 = fromIntegral i232 :: Double
-        chkI walk (12 * i232) 0 11
-        t233 <- rdU walk ((12 * i232) + 6)
-        t234 <- rdU walk ((12 * i232) + 7)
-        t235 <- rdU walk ((12 * i232) + 8)
-        t236 <- rdU walk ((12 * i232) + 9)
-        t237 <- rdU walk ((12 * i232) + 10)
-        t238 <- rdU walk ((12 * i232) + 11)
-        chkI radii ((24 * i1) + i232) 0 0
-        t239 <- rdU radii ((24 * i1) + i232)
-        let !s240 = (t239 / 4.0)
-        t241 <- rdU walk (12 * i232)
-        t242 <- rdU walk ((12 * i232) + 1)
-        t243 <- rdU walk ((12 * i232) + 2)
-        t244 <- rdU walk ((12 * i232) + 3)
-        t245 <- rdU walk ((12 * i232) + 4)
-        t246 <- rdU walk ((12 * i232) + 5)
-        let !t247 = (if (abs s240) > 0 then 1.0 else 0.0)
-        let !t248 = ((abs t236) - 0.6)
-        let !t249 = (negate t248)
-        let !t250 = (if t249 > 0 then 0.0 else t248)
-        let !t251 = ((abs t237) - 0.6)
-        let !t252 = (negate t251)
-        let !t253 = (if t252 > 0 then 0.0 else t251)
-        let !t254 = ((abs t238) - 0.6)
-        let !t255 = (negate t254)
-        let !t256 = (if t255 > 0 then 0.0 else t254)
-        let !t257 = (sqrt (((t250 * t250) + (t253 * t253)) + (t256 * t256)))
-        let !t258 = (t251 - t254)
-        let !t259 = (if t258 > 0 then t251 else t254)
-        let !t260 = (t248 - t259)
-        let !t261 = (if t260 > 0 then t248 else t259)
-        let !t262 = ((t257 + (if t261 > 0 then 0.0 else t261)) - 0.3)
-        let !t263 = (recip (2.0 * t257))
-        let !t264 = (signum t236)
-        let !t265 = (t250 * (if t249 > 0 then 0.0 else t264))
-        let !t266 = (signum t237)
-        let !t267 = (t253 * (if t252 > 0 then 0.0 else t266))
-        let !t268 = (signum t238)
-        let !t269 = (t256 * (if t255 > 0 then 0.0 else t268))
-        let !t270 = (((((t263 * (t265 + t265)) + (if t261 > 0 then 0.0 else (if t260 > 0 then t264 else 0.0))) * t233) + (((t263 * (t267 + t267)) + (if t261 > 0 then 0.0 else (if t260 > 0 then 0.0 else (if t258 > 0 then t266 else 0.0)))) * t234)) + (((t263 * (t269 + t269)) + (if t261 > 0 then 0.0 else (if t260 > 0 then 0.0 else (if t258 > 0 then 0.0 else t268)))) * t235))
-        let !t271 = (if ((abs t262) - 1.0e-10) > 0 then (if (abs t270) > 0 then 1.0 else 0.0) else 0.0)
-        let !t272 = (1.0 - t247)
-        let !s273 = ((t247 * (if t271 > 0 then (t236 + (negate ((t262 / t270) * t233))) else t236)) + (t272 * t241))
-        let !s274 = ((t247 * (if t271 > 0 then (t237 + (negate ((t262 / t270) * t234))) else t237)) + (t272 * t242))
-        let !s275 = ((t247 * (if t271 > 0 then (t238 + (negate ((t262 / t270) * t235))) else t238)) + (t272 * t243))
-        chkI verts ((291 * i1) + (12 * i232)) 6 8
-        wrU verts (((291 * i1) + (12 * i232)) + 6) (if (1.0 - (abs (((s273 - s273) + (s274 - s274)) + (s275 - s275)))) > 0 then s273 else t2)
-        wrU verts (((291 * i1) + (12 * i232)) + 7) (if (1.0 - (abs (((s273 - s273) + (s274 - s274)) + (s275 - s275)))) > 0 then s274 else t3)
-        wrU verts (((291 * i1) + (12 * i232)) + 8) (if (1.0 - (abs (((s273 - s273) + (s274 - s274)) + (s275 - s275)))) > 0 then s275 else t4)
-        wrU walk (12 * i232) s273
-        wrU walk ((12 * i232) + 1) s274
-        wrU walk ((12 * i232) + 2) s275
-        let !t276 = (sqrt (((t244 * t244) + (t245 * t245)) + (t246 * t246)))
-        let !t277 = (if (abs s240) > 0 then (recip s240) else 0.0)
-        let !t278 = (t277 * ((if t271 > 0 then (t236 + (negate ((t262 / t270) * t233))) else t236) + (negate t241)))
-        let !t279 = ((t263 * (t265 + t265)) + (if t261 > 0 then 0.0 else (if t260 > 0 then t264 else 0.0)))
-        let !t280 = ((t263 * (t267 + t267)) + (if t261 > 0 then 0.0 else (if t260 > 0 then 0.0 else (if t258 > 0 then t266 else 0.0))))
-        let !t281 = ((t263 * (t269 + t269)) + (if t261 > 0 then 0.0 else (if t260 > 0 then 0.0 else (if t258 > 0 then 0.0 else t268))))
-        let !t282 = (sqrt (((t279 * t279) + (t280 * t280)) + (t281 * t281)))
-        let !t283 = (if t282 > 0 then (recip (if (t282 - 1.0e-300) > 0 then t282 else 1.0e-300)) else 0.0)
-        let !t284 = (t283 * t279)
-        let !t285 = (t283 * t280)
-        let !t286 = (t277 * ((if t271 > 0 then (t237 + (negate ((t262 / t270) * t234))) else t237) + (negate t242)))
-        let !t287 = (t283 * t281)
-        let !t288 = (t277 * ((if t271 > 0 then (t238 + (negate ((t262 / t270) * t235))) else t238) + (negate t243)))
-        let !t289 = (((t284 * t278) + (t285 * t286)) + (t287 * t288))
-        let !t290 = (t278 + (negate (t289 * t284)))
-        let !t291 = (t286 + (negate (t289 * t285)))
-        let !t292 = (t288 + (negate (t289 * t287)))
-        let !t293 = (sqrt (((t290 * t290) + (t291 * t291)) + (t292 * t292)))
-        let !t294 = (if t293 > 0 then (recip (if (t293 - 1.0e-300) > 0 then t293 else 1.0e-300)) else 0.0)
-        let !s295 = ((t247 * (t276 * (t294 * t290))) + (t272 * t244))
-        let !s296 = ((t247 * (t276 * (t294 * t291))) + (t272 * t245))
-        let !s297 = ((t247 * (t276 * (t294 * t292))) + (t272 * t246))
-        wrU walk ((12 * i232) + 3) s295
-        wrU walk ((12 * i232) + 4) s296
-        wrU walk ((12 * i232) + 5) s297
-        let !s298 = ((t247 * t284) + (t272 * t233))
-        let !s299 = ((t247 * t285) + (t272 * t234))
-        let !s300 = ((t247 * t287) + (t272 * t235))
-        wrU walk ((12 * i232) + 6) s298
-        wrU walk ((12 * i232) + 7) s299
-        wrU walk ((12 * i232) + 8) s300
+      loopI 0.0 24.0 $ \i236 -> do
+        let !d236 = fromIntegral i236 :: Double
+        chkI walk (12 * i236) 0 11
+        t237 <- rdU walk ((12 * i236) + 6)
+        t238 <- rdU walk ((12 * i236) + 7)
+        t239 <- rdU walk ((12 * i236) + 8)
+        t240 <- rdU walk ((12 * i236) + 9)
+        t241 <- rdU walk ((12 * i236) + 10)
+        t242 <- rdU walk ((12 * i236) + 11)
+        chkI radii ((24 * i1) + i236) 0 0
+        t243 <- rdU radii ((24 * i1) + i236)
+        let !s244 = (t243 / 4.0)
+        t245 <- rdU walk (12 * i236)
+        t246 <- rdU walk ((12 * i236) + 1)
+        t247 <- rdU walk ((12 * i236) + 2)
+        t248 <- rdU walk ((12 * i236) + 3)
+        t249 <- rdU walk ((12 * i236) + 4)
+        t250 <- rdU walk ((12 * i236) + 5)
+        let !t251 = (if (abs s244) > 0 then 1.0 else 0.0)
+        let !t252 = ((abs t240) - 0.6)
+        let !t253 = (negate t252)
+        let !t254 = (if t253 > 0 then 0.0 else t252)
+        let !t255 = ((abs t241) - 0.6)
+        let !t256 = (negate t255)
+        let !t257 = (if t256 > 0 then 0.0 else t255)
+        let !t258 = ((abs t242) - 0.6)
+        let !t259 = (negate t258)
+        let !t260 = (if t259 > 0 then 0.0 else t258)
+        let !t261 = (sqrt (((t254 * t254) + (t257 * t257)) + (t260 * t260)))
+        let !t262 = (t255 - t258)
+        let !t263 = (if t262 > 0 then t255 else t258)
+        let !t264 = (t252 - t263)
+        let !t265 = (if t264 > 0 then t252 else t263)
+        let !t266 = ((t261 + (if t265 > 0 then 0.0 else t265)) - 0.3)
+        let !t267 = (recip (2.0 * t261))
+        let !t268 = (signum t240)
+        let !t269 = (t254 * (if t253 > 0 then 0.0 else t268))
+        let !t270 = (signum t241)
+        let !t271 = (t257 * (if t256 > 0 then 0.0 else t270))
+        let !t272 = (signum t242)
+        let !t273 = (t260 * (if t259 > 0 then 0.0 else t272))
+        let !t274 = (((((t267 * (t269 + t269)) + (if t265 > 0 then 0.0 else (if t264 > 0 then t268 else 0.0))) * t237) + (((t267 * (t271 + t271)) + (if t265 > 0 then 0.0 else (if t264 > 0 then 0.0 else (if t262 > 0 then t270 else 0.0)))) * t238)) + (((t267 * (t273 + t273)) + (if t265 > 0 then 0.0 else (if t264 > 0 then 0.0 else (if t262 > 0 then 0.0 else t272)))) * t239))
+        let !t275 = (if ((abs t266) - 1.0e-10) > 0 then (if (abs t274) > 0 then 1.0 else 0.0) else 0.0)
+        let !t276 = (1.0 - t251)
+        let !s277 = ((t251 * (if t275 > 0 then (t240 + (negate ((t266 / t274) * t237))) else t240)) + (t276 * t245))
+        let !s278 = ((t251 * (if t275 > 0 then (t241 + (negate ((t266 / t274) * t238))) else t241)) + (t276 * t246))
+        let !s279 = ((t251 * (if t275 > 0 then (t242 + (negate ((t266 / t274) * t239))) else t242)) + (t276 * t247))
+        let !t280 = (1.0 - (abs (((s277 - s277) + (s278 - s278)) + (s279 - s279))))
+        let !s281 = (if t280 > 0 then s277 else t2)
+        let !s282 = (if t280 > 0 then s278 else t3)
+        let !s283 = (if t280 > 0 then s279 else t4)
+        chkI verts ((291 * i1) + (12 * i236)) 6 8
+        wrU verts (((291 * i1) + (12 * i236)) + 6) s281
+        wrU verts (((291 * i1) + (12 * i236)) + 7) s282
+        wrU verts (((291 * i1) + (12 * i236)) + 8) s283
+        wrU walk (12 * i236) s277
+        wrU walk ((12 * i236) + 1) s278
+        wrU walk ((12 * i236) + 2) s279
+        let !t284 = (sqrt (((t248 * t248) + (t249 * t249)) + (t250 * t250)))
+        let !t285 = (if (abs s244) > 0 then (recip s244) else 0.0)
+        let !t286 = (t285 * ((if t275 > 0 then (t240 + (negate ((t266 / t274) * t237))) else t240) + (negate t245)))
+        let !t287 = ((t267 * (t269 + t269)) + (if t265 > 0 then 0.0 else (if t264 > 0 then t268 else 0.0)))
+        let !t288 = ((t267 * (t271 + t271)) + (if t265 > 0 then 0.0 else (if t264 > 0 then 0.0 else (if t262 > 0 then t270 else 0.0))))
+        let !t289 = ((t267 * (t273 + t273)) + (if t265 > 0 then 0.0 else (if t264 > 0 then 0.0 else (if t262 > 0 then 0.0 else t272))))
+        let !t290 = (sqrt (((t287 * t287) + (t288 * t288)) + (t289 * t289)))
+        let !t291 = (if t290 > 0 then (recip (if (t290 - 1.0e-300) > 0 then t290 else 1.0e-300)) else 0.0)
+        let !t292 = (t291 * t287)
+        let !t293 = (t291 * t288)
+        let !t294 = (t285 * ((if t275 > 0 then (t241 + (negate ((t266 / t274) * t238))) else t241) + (negate t246)))
+        let !t295 = (t291 * t289)
+        let !t296 = (t285 * ((if t275 > 0 then (t242 + (negate ((t266 / t274) * t239))) else t242) + (negate t247)))
+        let !t297 = (((t292 * t286) + (t293 * t294)) + (t295 * t296))
+        let !t298 = (t286 + (negate (t297 * t292)))
+        let !t299 = (t294 + (negate (t297 * t293)))
+        let !t300 = (t296 + (negate (t297 * t295)))
+        let !t301 = (sqrt (((t298 * t298) + (t299 * t299)) + (t300 * t300)))
+        let !t302 = (if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0)
+        let !s303 = ((t251 * (t284 * (t302 * t298))) + (t276 * t248))
+        let !s304 = ((t251 * (t284 * (t302 * t299))) + (t276 * t249))
+        let !s305 = ((t251 * (t284 * (t302 * t300))) + (t276 * t250))
+        wrU walk ((12 * i236) + 3) s303
+        wrU walk ((12 * i236) + 4) s304
+        wrU walk ((12 * i236) + 5) s305
+        let !s306 = ((t251 * t292) + (t276 * t237))
+        let !s307 = ((t251 * t293) + (t276 * t238))
+        let !s308 = ((t251 * t295) + (t276 * t239))
+        wrU walk ((12 * i236) + 6) s306
+        wrU walk ((12 * i236) + 7) s307
+        wrU walk ((12 * i236) + 8) s308
         pure ()
-      loopI 0.0 24.0 $ \i301 -> do
-        let !d301 = fromIntegral i301 :: Double
-        chkI walk (12 * i301) 0 11
-        t302 <- rdU walk ((12 * i301) + 6)
-        t303 <- rdU walk ((12 * i301) + 7)
-        t304 <- rdU walk ((12 * i301) + 8)
-        chkI radii ((24 * i1) + i301) 0 0
-        t305 <- rdU radii ((24 * i1) + i301)
-        let !s306 = (t305 / 4.0)
-        t307 <- rdU walk (12 * i301)
-        t308 <- rdU walk ((12 * i301) + 1)
-        t309 <- rdU walk ((12 * i301) + 2)
-        t310 <- rdU walk ((12 * i301) + 3)
-        t311 <- rdU walk ((12 * i301) + 4)
-        t312 <- rdU walk ((12 * i301) + 5)
-        let !s313 = (t307 + (s306 * t310))
-        let !s314 = (t308 + (s306 * t311))
-        let !s315 = (t309 + (s306 * t312))
-        let !t316 = ((abs s313) - 0.6)
-        let !t317 = (negate t316)
-        let !t318 = (if t317 > 0 then 0.0 else t316)
-        let !t319 = ((abs s314) - 0.6)
-        let !t320 = (negate t319)
-        let !t321 = (if t320 > 0 then 0.0 else t319)
-        let !t322 = ((abs s315) - 0.6)
-        let !t323 = (negate t322)
-        let !t324 = (if t323 > 0 then 0.0 else t322)
-        let !t325 = (sqrt (((t318 * t318) + (t321 * t321)) + (t324 * t324)))
-        let !t326 = (t319 - t322)
-        let !t327 = (if t326 > 0 then t319 else t322)
-        let !t328 = (t316 - t327)
-        let !t329 = (if t328 > 0 then t316 else t327)
-        let !t330 = ((t325 + (if t329 > 0 then 0.0 else t329)) - 0.3)
-        let !t331 = (recip (2.0 * t325))
-        let !t332 = (signum s313)
-        let !t333 = (t318 * (if t317 > 0 then 0.0 else t332))
-        let !t334 = (signum s314)
-        let !t335 = (t321 * (if t320 > 0 then 0.0 else t334))
-        let !t336 = (signum s315)
-        let !t337 = (t324 * (if t323 > 0 then 0.0 else t336))
-        let !t338 = (((((t331 * (t333 + t333)) + (if t329 > 0 then 0.0 else (if t328 > 0 then t332 else 0.0))) * t302) + (((t331 * (t335 + t335)) + (if t329 > 0 then 0.0 else (if t328 > 0 then 0.0 else (if t326 > 0 then t334 else 0.0)))) * t303)) + (((t331 * (t337 + t337)) + (if t329 > 0 then 0.0 else (if t328 > 0 then 0.0 else (if t326 > 0 then 0.0 else t336)))) * t304))
-        let !t339 = (if ((abs t330) - 1.0e-10) > 0 then (if (abs t338) > 0 then 1.0 else 0.0) else 0.0)
-        let !s340 = (if t339 > 0 then (s313 + (negate ((t330 / t338) * t302))) else s313)
-        let !s341 = (if t339 > 0 then (s314 + (negate ((t330 / t338) * t303))) else s314)
-        let !s342 = (if t339 > 0 then (s315 + (negate ((t330 / t338) * t304))) else s315)
-        wrU walk ((12 * i301) + 9) s340
-        wrU walk ((12 * i301) + 10) s341
-        wrU walk ((12 * i301) + 11) s342
+      loopI 0.0 24.0 $ \i309 -> do
+        let !d309 = fromIntegral i309 :: Double
+        chkI walk (12 * i309) 0 11
+        t310 <- rdU walk ((12 * i309) + 6)
+        t311 <- rdU walk ((12 * i309) + 7)
+        t312 <- rdU walk ((12 * i309) + 8)
+        chkI radii ((24 * i1) + i309) 0 0
+        t313 <- rdU radii ((24 * i1) + i309)
+        let !s314 = (t313 / 4.0)
+        t315 <- rdU walk (12 * i309)
+        t316 <- rdU walk ((12 * i309) + 1)
+        t317 <- rdU walk ((12 * i309) + 2)
+        t318 <- rdU walk ((12 * i309) + 3)
+        t319 <- rdU walk ((12 * i309) + 4)
+        t320 <- rdU walk ((12 * i309) + 5)
+        let !s321 = (t315 + (s314 * t318))
+        let !s322 = (t316 + (s314 * t319))
+        let !s323 = (t317 + (s314 * t320))
+        let !t324 = ((abs s321) - 0.6)
+        let !t325 = (negate t324)
+        let !t326 = (if t325 > 0 then 0.0 else t324)
+        let !t327 = ((abs s322) - 0.6)
+        let !t328 = (negate t327)
+        let !t329 = (if t328 > 0 then 0.0 else t327)
+        let !t330 = ((abs s323) - 0.6)
+        let !t331 = (negate t330)
+        let !t332 = (if t331 > 0 then 0.0 else t330)
+        let !t333 = (sqrt (((t326 * t326) + (t329 * t329)) + (t332 * t332)))
+        let !t334 = (t327 - t330)
+        let !t335 = (if t334 > 0 then t327 else t330)
+        let !t336 = (t324 - t335)
+        let !t337 = (if t336 > 0 then t324 else t335)
+        let !t338 = ((t333 + (if t337 > 0 then 0.0 else t337)) - 0.3)
+        let !t339 = (recip (2.0 * t333))
+        let !t340 = (signum s321)
+        let !t341 = (t326 * (if t325 > 0 then 0.0 else t340))
+        let !t342 = (signum s322)
+        let !t343 = (t329 * (if t328 > 0 then 0.0 else t342))
+        let !t344 = (signum s323)
+        let !t345 = (t332 * (if t331 > 0 then 0.0 else t344))
+        let !t346 = (((((t339 * (t341 + t341)) + (if t337 > 0 then 0.0 else (if t336 > 0 then t340 else 0.0))) * t310) + (((t339 * (t343 + t343)) + (if t337 > 0 then 0.0 else (if t336 > 0 then 0.0 else (if t334 > 0 then t342 else 0.0)))) * t311)) + (((t339 * (t345 + t345)) + (if t337 > 0 then 0.0 else (if t336 > 0 then 0.0 else (if t334 > 0 then 0.0 else t344)))) * t312))
+        let !t347 = (if ((abs t338) - 1.0e-10) > 0 then (if (abs t346) > 0 then 1.0 else 0.0) else 0.0)
+        let !s348 = (if t347 > 0 then (s321 + (negate ((t338 / t346) * t310))) else s321)
+        let !s349 = (if t347 > 0 then (s322 + (negate ((t338 / t346) * t311))) else s322)
+        let !s350 = (if t347 > 0 then (s323 + (negate ((t338 / t346) * t312))) else s323)
+        wrU walk ((12 * i309) + 9) s348
+        wrU walk ((12 * i309) + 10) s349
+        wrU walk ((12 * i309) + 11) s350
         pure ()
-      loopI 0.0 24.0 $ \i343 -> do
-        let !d343 = fromIntegral i343 :: Double
-        chkI walk (12 * i343) 6 11
-        t344 <- rdU walk ((12 * i343) + 6)
-        t345 <- rdU walk ((12 * i343) + 7)
-        t346 <- rdU walk ((12 * i343) + 8)
-        t347 <- rdU walk ((12 * i343) + 9)
-        t348 <- rdU walk ((12 * i343) + 10)
-        t349 <- rdU walk ((12 * i343) + 11)
-        let !t350 = ((abs t347) - 0.6)
-        let !t351 = (negate t350)
-        let !t352 = (if t351 > 0 then 0.0 else t350)
-        let !t353 = ((abs t348) - 0.6)
-        let !t354 = (negate t353)
-        let !t355 = (if t354 > 0 then 0.0 else t353)
-        let !t356 = ((abs t349) - 0.6)
-        let !t357 = (negate t356)
-        let !t358 = (if t357 > 0 then 0.0 else t356)
-        let !t359 = (sqrt (((t352 * t352) + (t355 * t355)) + (t358 * t358)))
-        let !t360 = (t353 - t356)
-        let !t361 = (if t360 > 0 then t353 else t356)
-        let !t362 = (t350 - t361)
-        let !t363 = (if t362 > 0 then t350 else t361)
-        let !t364 = ((t359 + (if t363 > 0 then 0.0 else t363)) - 0.3)
-        let !t365 = (recip (2.0 * t359))
-        let !t366 = (signum t347)
-        let !t367 = (t352 * (if t351 > 0 then 0.0 else t366))
-        let !t368 = (signum t348)
-        let !t369 = (t355 * (if t354 > 0 then 0.0 else t368))
-        let !t370 = (signum t349)
-        let !t371 = (t358 * (if t357 > 0 then 0.0 else t370))
-        let !t372 = (((((t365 * (t367 + t367)) + (if t363 > 0 then 0.0 else (if t362 > 0 then t366 else 0.0))) * t344) + (((t365 * (t369 + t369)) + (if t363 > 0 then 0.0 else (if t362 > 0 then 0.0 else (if t360 > 0 then t368 else 0.0)))) * t345)) + (((t365 * (t371 + t371)) + (if t363 > 0 then 0.0 else (if t362 > 0 then 0.0 else (if t360 > 0 then 0.0 else t370)))) * t346))
-        let !t373 = (if ((abs t364) - 1.0e-10) > 0 then (if (abs t372) > 0 then 1.0 else 0.0) else 0.0)
-        let !s374 = (if t373 > 0 then (t347 + (negate ((t364 / t372) * t344))) else t347)
-        let !s375 = (if t373 > 0 then (t348 + (negate ((t364 / t372) * t345))) else t348)
-        let !s376 = (if t373 > 0 then (t349 + (negate ((t364 / t372) * t346))) else t349)
-        wrU walk ((12 * i343) + 9) s374
-        wrU walk ((12 * i343) + 10) s375
-        wrU walk ((12 * i343) + 11) s376
+      loopI 0.0 24.0 $ \i351 -> do
+        let !d351 = fromIntegral i351 :: Double
+        chkI walk (12 * i351) 6 11
+        t352 <- rdU walk ((12 * i351) + 6)
+        t353 <- rdU walk ((12 * i351) + 7)
+        t354 <- rdU walk ((12 * i351) + 8)
+        t355 <- rdU walk ((12 * i351) + 9)
+        t356 <- rdU walk ((12 * i351) + 10)
+        t357 <- rdU walk ((12 * i351) + 11)
+        let !t358 = ((abs t355) - 0.6)
+        let !t359 = (negate t358)
+        let !t360 = (if t359 > 0 then 0.0 else t358)
+        let !t361 = ((abs t356) - 0.6)
+        let !t362 = (negate t361)
+        let !t363 = (if t362 > 0 then 0.0 else t361)
+        let !t364 = ((abs t357) - 0.6)
+        let !t365 = (negate t364)
+        let !t366 = (if t365 > 0 then 0.0 else t364)
+        let !t367 = (sqrt (((t360 * t360) + (t363 * t363)) + (t366 * t366)))
+        let !t368 = (t361 - t364)
+        let !t369 = (if t368 > 0 then t361 else t364)
+        let !t370 = (t358 - t369)
+        let !t371 = (if t370 > 0 then t358 else t369)
+        let !t372 = ((t367 + (if t371 > 0 then 0.0 else t371)) - 0.3)
+        let !t373 = (recip (2.0 * t367))
+        let !t374 = (signum t355)
+        let !t375 = (t360 * (if t359 > 0 then 0.0 else t374))
+        let !t376 = (signum t356)
+        let !t377 = (t363 * (if t362 > 0 then 0.0 else t376))
+        let !t378 = (signum t357)
+        let !t379 = (t366 * (if t365 > 0 then 0.0 else t378))
+        let !t380 = (((((t373 * (t375 + t375)) + (if t371 > 0 then 0.0 else (if t370 > 0 then t374 else 0.0))) * t352) + (((t373 * (t377 + t377)) + (if t371 > 0 then 0.0 else (if t370 > 0 then 0.0 else (if t368 > 0 then t376 else 0.0)))) * t353)) + (((t373 * (t379 + t379)) + (if t371 > 0 then 0.0 else (if t370 > 0 then 0.0 else (if t368 > 0 then 0.0 else t378)))) * t354))
+        let !t381 = (if ((abs t372) - 1.0e-10) > 0 then (if (abs t380) > 0 then 1.0 else 0.0) else 0.0)
+        let !s382 = (if t381 > 0 then (t355 + (negate ((t372 / t380) * t352))) else t355)
+        let !s383 = (if t381 > 0 then (t356 + (negate ((t372 / t380) * t353))) else t356)
+        let !s384 = (if t381 > 0 then (t357 + (negate ((t372 / t380) * t354))) else t357)
+        wrU walk ((12 * i351) + 9) s382
+        wrU walk ((12 * i351) + 10) s383
+        wrU walk ((12 * i351) + 11) s384
         pure ()
-      loopI 0.0 24.0 $ \i377 -> do
-        let !d377 = fromIntegral i377 :: Double
-        chkI walk (12 * i377) 0 11
-        t378 <- rdU walk ((12 * i377) + 6)
-        t379 <- rdU walk ((12 * i377) + 7)
-        t380 <- rdU walk ((12 * i377) + 8)
-        t381 <- rdU walk ((12 * i377) + 9)
-        t382 <- rdU walk ((12 * i377) + 10)
-        t383 <- rdU walk ((12 * i377) + 11)
-        chkI radii ((24 * i1) + i377) 0 0
-        t384 <- rdU radii ((24 * i1) + i377)
-        let !s385 = (t384 / 4.0)
-        t386 <- rdU walk (12 * i377)
-        t387 <- rdU walk ((12 * i377) + 1)
-        t388 <- rdU walk ((12 * i377) + 2)
-        t389 <- rdU walk ((12 * i377) + 3)
-        t390 <- rdU walk ((12 * i377) + 4)
-        t391 <- rdU walk ((12 * i377) + 5)
-        let !t392 = (if (abs s385) > 0 then 1.0 else 0.0)
-        let !t393 = ((abs t381) - 0.6)
-        let !t394 = (negate t393)
-        let !t395 = (if t394 > 0 then 0.0 else t393)
-        let !t396 = ((abs t382) - 0.6)
-        let !t397 = (negate t396)
-        let !t398 = (if t397 > 0 then 0.0 else t396)
-        let !t399 = ((abs t383) - 0.6)
-        let !t400 = (negate t399)
-        let !t401 = (if t400 > 0 then 0.0 else t399)
-        let !t402 = (sqrt (((t395 * t395) + (t398 * t398)) + (t401 * t401)))
-        let !t403 = (t396 - t399)
-        let !t404 = (if t403 > 0 then t396 else t399)
-        let !t405 = (t393 - t404)
-        let !t406 = (if t405 > 0 then t393 else t404)
-        let !t407 = ((t402 + (if t406 > 0 then 0.0 else t406)) - 0.3)
-        let !t408 = (recip (2.0 * t402))
-        let !t409 = (signum t381)
-        let !t410 = (t395 * (if t394 > 0 then 0.0 else t409))
-        let !t411 = (signum t382)
-        let !t412 = (t398 * (if t397 > 0 then 0.0 else t411))
-        let !t413 = (signum t383)
-        let !t414 = (t401 * (if t400 > 0 then 0.0 else t413))
-        let !t415 = (((((t408 * (t410 + t410)) + (if t406 > 0 then 0.0 else (if t405 > 0 then t409 else 0.0))) * t378) + (((t408 * (t412 + t412)) + (if t406 > 0 then 0.0 else (if t405 > 0 then 0.0 else (if t403 > 0 then t411 else 0.0)))) * t379)) + (((t408 * (t414 + t414)) + (if t406 > 0 then 0.0 else (if t405 > 0 then 0.0 else (if t403 > 0 then 0.0 else t413)))) * t380))
-        let !t416 = (if ((abs t407) - 1.0e-10) > 0 then (if (abs t415) > 0 then 1.0 else 0.0) else 0.0)
-        let !t417 = (1.0 - t392)
-        let !s418 = ((t392 * (if t416 > 0 then (t381 + (negate ((t407 / t415) * t378))) else t381)) + (t417 * t386))
-        let !s419 = ((t392 * (if t416 > 0 then (t382 + (negate ((t407 / t415) * t379))) else t382)) + (t417 * t387))
-        let !s420 = ((t392 * (if t416 > 0 then (t383 + (negate ((t407 / t415) * t380))) else t383)) + (t417 * t388))
-        chkI verts ((291 * i1) + (12 * i377)) 9 11
-        wrU verts (((291 * i1) + (12 * i377)) + 9) (if (1.0 - (abs (((s418 - s418) + (s419 - s419)) + (s420 - s420)))) > 0 then s418 else t2)
-        wrU verts (((291 * i1) + (12 * i377)) + 10) (if (1.0 - (abs (((s418 - s418) + (s419 - s419)) + (s420 - s420)))) > 0 then s419 else t3)
-        wrU verts (((291 * i1) + (12 * i377)) + 11) (if (1.0 - (abs (((s418 - s418) + (s419 - s419)) + (s420 - s420)))) > 0 then s420 else t4)
-        wrU walk (12 * i377) s418
-        wrU walk ((12 * i377) + 1) s419
-        wrU walk ((12 * i377) + 2) s420
-        let !t421 = (sqrt (((t389 * t389) + (t390 * t390)) + (t391 * t391)))
-        let !t422 = (if (abs s385) > 0 then (recip s385) else 0.0)
-        let !t423 = (t422 * ((if t416 > 0 then (t381 + (negate ((t407 / t415) * t378))) else t381) + (negate t386)))
-        let !t424 = ((t408 * (t410 + t410)) + (if t406 > 0 then 0.0 else (if t405 > 0 then t409 else 0.0)))
-        let !t425 = ((t408 * (t412 + t412)) + (if t406 > 0 then 0.0 else (if t405 > 0 then 0.0 else (if t403 > 0 then t411 else 0.0))))
-        let !t426 = ((t408 * (t414 + t414)) + (if t406 > 0 then 0.0 else (if t405 > 0 then 0.0 else (if t403 > 0 then 0.0 else t413))))
-        let !t427 = (sqrt (((t424 * t424) + (t425 * t425)) + (t426 * t426)))
-        let !t428 = (if t427 > 0 then (recip (if (t427 - 1.0e-300) > 0 then t427 else 1.0e-300)) else 0.0)
-        let !t429 = (t428 * t424)
-        let !t430 = (t428 * t425)
-        let !t431 = (t422 * ((if t416 > 0 then (t382 + (negate ((t407 / t415) * t379))) else t382) + (negate t387)))
-        let !t432 = (t428 * t426)
-        let !t433 = (t422 * ((if t416 > 0 then (t383 + (negate ((t407 / t415) * t380))) else t383) + (negate t388)))
-        let !t434 = (((t429 * t423) + (t430 * t431)) + (t432 * t433))
-        let !t435 = (t423 + (negate (t434 * t429)))
-        let !t436 = (t431 + (negate (t434 * t430)))
-        let !t437 = (t433 + (negate (t434 * t432)))
-        let !t438 = (sqrt (((t435 * t435) + (t436 * t436)) + (t437 * t437)))
-        let !t439 = (if t438 > 0 then (recip (if (t438 - 1.0e-300) > 0 then t438 else 1.0e-300)) else 0.0)
-        let !s440 = ((t392 * (t421 * (t439 * t435))) + (t417 * t389))
-        let !s441 = ((t392 * (t421 * (t439 * t436))) + (t417 * t390))
-        let !s442 = ((t392 * (t421 * (t439 * t437))) + (t417 * t391))
-        wrU walk ((12 * i377) + 3) s440
-        wrU walk ((12 * i377) + 4) s441
-        wrU walk ((12 * i377) + 5) s442
-        let !s443 = ((t392 * t429) + (t417 * t378))
-        let !s444 = ((t392 * t430) + (t417 * t379))
-        let !s445 = ((t392 * t432) + (t417 * t380))
-        wrU walk ((12 * i377) + 6) s443
-        wrU walk ((12 * i377) + 7) s444
-        wrU walk ((12 * i377) + 8) s445
+      loopI 0.0 24.0 $ \i385 -> do
+        let !d385 = fromIntegral i385 :: Double
+        chkI walk (12 * i385) 0 11
+        t386 <- rdU walk ((12 * i385) + 6)
+        t387 <- rdU walk ((12 * i385) + 7)
+        t388 <- rdU walk ((12 * i385) + 8)
+        t389 <- rdU walk ((12 * i385) + 9)
+        t390 <- rdU walk ((12 * i385) + 10)
+        t391 <- rdU walk ((12 * i385) + 11)
+        chkI radii ((24 * i1) + i385) 0 0
+        t392 <- rdU radii ((24 * i1) + i385)
+        let !s393 = (t392 / 4.0)
+        t394 <- rdU walk (12 * i385)
+        t395 <- rdU walk ((12 * i385) + 1)
+        t396 <- rdU walk ((12 * i385) + 2)
+        t397 <- rdU walk ((12 * i385) + 3)
+        t398 <- rdU walk ((12 * i385) + 4)
+        t399 <- rdU walk ((12 * i385) + 5)
+        let !t400 = (if (abs s393) > 0 then 1.0 else 0.0)
+        let !t401 = ((abs t389) - 0.6)
+        let !t402 = (negate t401)
+        let !t403 = (if t402 > 0 then 0.0 else t401)
+        let !t404 = ((abs t390) - 0.6)
+        let !t405 = (negate t404)
+        let !t406 = (if t405 > 0 then 0.0 else t404)
+        let !t407 = ((abs t391) - 0.6)
+        let !t408 = (negate t407)
+        let !t409 = (if t408 > 0 then 0.0 else t407)
+        let !t410 = (sqrt (((t403 * t403) + (t406 * t406)) + (t409 * t409)))
+        let !t411 = (t404 - t407)
+        let !t412 = (if t411 > 0 then t404 else t407)
+        let !t413 = (t401 - t412)
+        let !t414 = (if t413 > 0 then t401 else t412)
+        let !t415 = ((t410 + (if t414 > 0 then 0.0 else t414)) - 0.3)
+        let !t416 = (recip (2.0 * t410))
+        let !t417 = (signum t389)
+        let !t418 = (t403 * (if t402 > 0 then 0.0 else t417))
+        let !t419 = (signum t390)
+        let !t420 = (t406 * (if t405 > 0 then 0.0 else t419))
+        let !t421 = (signum t391)
+        let !t422 = (t409 * (if t408 > 0 then 0.0 else t421))
+        let !t423 = (((((t416 * (t418 + t418)) + (if t414 > 0 then 0.0 else (if t413 > 0 then t417 else 0.0))) * t386) + (((t416 * (t420 + t420)) + (if t414 > 0 then 0.0 else (if t413 > 0 then 0.0 else (if t411 > 0 then t419 else 0.0)))) * t387)) + (((t416 * (t422 + t422)) + (if t414 > 0 then 0.0 else (if t413 > 0 then 0.0 else (if t411 > 0 then 0.0 else t421)))) * t388))
+        let !t424 = (if ((abs t415) - 1.0e-10) > 0 then (if (abs t423) > 0 then 1.0 else 0.0) else 0.0)
+        let !t425 = (1.0 - t400)
+        let !s426 = ((t400 * (if t424 > 0 then (t389 + (negate ((t415 / t423) * t386))) else t389)) + (t425 * t394))
+        let !s427 = ((t400 * (if t424 > 0 then (t390 + (negate ((t415 / t423) * t387))) else t390)) + (t425 * t395))
+        let !s428 = ((t400 * (if t424 > 0 then (t391 + (negate ((t415 / t423) * t388))) else t391)) + (t425 * t396))
+        let !t429 = (1.0 - (abs (((s426 - s426) + (s427 - s427)) + (s428 - s428))))
+        let !s430 = (if t429 > 0 then s426 else t2)
+        let !s431 = (if t429 > 0 then s427 else t3)
+        let !s432 = (if t429 > 0 then s428 else t4)
+        chkI verts ((291 * i1) + (12 * i385)) 9 11
+        wrU verts (((291 * i1) + (12 * i385)) + 9) s430
+        wrU verts (((291 * i1) + (12 * i385)) + 10) s431
+        wrU verts (((291 * i1) + (12 * i385)) + 11) s432
+        wrU walk (12 * i385) s426
+        wrU walk ((12 * i385) + 1) s427
+        wrU walk ((12 * i385) + 2) s428
+        let !t433 = (sqrt (((t397 * t397) + (t398 * t398)) + (t399 * t399)))
+        let !t434 = (if (abs s393) > 0 then (recip s393) else 0.0)
+        let !t435 = (t434 * ((if t424 > 0 then (t389 + (negate ((t415 / t423) * t386))) else t389) + (negate t394)))
+        let !t436 = ((t416 * (t418 + t418)) + (if t414 > 0 then 0.0 else (if t413 > 0 then t417 else 0.0)))
+        let !t437 = ((t416 * (t420 + t420)) + (if t414 > 0 then 0.0 else (if t413 > 0 then 0.0 else (if t411 > 0 then t419 else 0.0))))
+        let !t438 = ((t416 * (t422 + t422)) + (if t414 > 0 then 0.0 else (if t413 > 0 then 0.0 else (if t411 > 0 then 0.0 else t421))))
+        let !t439 = (sqrt (((t436 * t436) + (t437 * t437)) + (t438 * t438)))
+        let !t440 = (if t439 > 0 then (recip (if (t439 - 1.0e-300) > 0 then t439 else 1.0e-300)) else 0.0)
+        let !t441 = (t440 * t436)
+        let !t442 = (t440 * t437)
+        let !t443 = (t434 * ((if t424 > 0 then (t390 + (negate ((t415 / t423) * t387))) else t390) + (negate t395)))
+        let !t444 = (t440 * t438)
+        let !t445 = (t434 * ((if t424 > 0 then (t391 + (negate ((t415 / t423) * t388))) else t391) + (negate t396)))
+        let !t446 = (((t441 * t435) + (t442 * t443)) + (t444 * t445))
+        let !t447 = (t435 + (negate (t446 * t441)))
+        let !t448 = (t443 + (negate (t446 * t442)))
+        let !t449 = (t445 + (negate (t446 * t444)))
+        let !t450 = (sqrt (((t447 * t447) + (t448 * t448)) + (t449 * t449)))
+        let !t451 = (if t450 > 0 then (recip (if (t450 - 1.0e-300) > 0 then t450 else 1.0e-300)) else 0.0)
+        let !s452 = ((t400 * (t433 * (t451 * t447))) + (t425 * t397))
+        let !s453 = ((t400 * (t433 * (t451 * t448))) + (t425 * t398))
+        let !s454 = ((t400 * (t433 * (t451 * t449))) + (t425 * t399))
+        wrU walk ((12 * i385) + 3) s452
+        wrU walk ((12 * i385) + 4) s453
+        wrU walk ((12 * i385) + 5) s454
+        let !s455 = ((t400 * t441) + (t425 * t386))
+        let !s456 = ((t400 * t442) + (t425 * t387))
+        let !s457 = ((t400 * t444) + (t425 * t388))
+        wrU walk ((12 * i385) + 6) s455
+        wrU walk ((12 * i385) + 7) s456
+        wrU walk ((12 * i385) + 8) s457
         pure ()
-      loopI 0.0 24.0 $ \i446 -> do
-        let !d446 = fromIntegral i446 :: Double
-        chkI walk (12 * i446) 0 11
-        t447 <- rdU walk ((12 * i446) + 6)
-        t448 <- rdU walk ((12 * i446) + 7)
-        t449 <- rdU walk ((12 * i446) + 8)
-        chkI radii ((24 * i1) + i446) 0 0
-        t450 <- rdU radii ((24 * i1) + i446)
-        let !s451 = (t450 / 4.0)
-        t452 <- rdU walk (12 * i446)
-        t453 <- rdU walk ((12 * i446) + 1)
-        t454 <- rdU walk ((12 * i446) + 2)
-        t455 <- rdU walk ((12 * i446) + 3)
-        t456 <- rdU walk ((12 * i446) + 4)
-        t457 <- rdU walk ((12 * i446) + 5)
-        let !s458 = (t452 + (s451 * t455))
-        let !s459 = (t453 + (s451 * t456))
-        let !s460 = (t454 + (s451 * t457))
-        let !t461 = ((abs s458) - 0.6)
-        let !t462 = (negate t461)
-        let !t463 = (if t462 > 0 then 0.0 else t461)
-        let !t464 = ((abs s459) - 0.6)
-        let !t465 = (negate t464)
-        let !t466 = (if t465 > 0 then 0.0 else t464)
-        let !t467 = ((abs s460) - 0.6)
-        let !t468 = (negate t467)
-        let !t469 = (if t468 > 0 then 0.0 else t467)
-        let !t470 = (sqrt (((t463 * t463) + (t466 * t466)) + (t469 * t469)))
-        let !t471 = (t464 - t467)
-        let !t472 = (if t471 > 0 then t464 else t467)
-        let !t473 = (t461 - t472)
-        let !t474 = (if t473 > 0 then t461 else t472)
-        let !t475 = ((t470 + (if t474 > 0 then 0.0 else t474)) - 0.3)
-        let !t476 = (recip (2.0 * t470))
-        let !t477 = (signum s458)
-        let !t478 = (t463 * (if t462 > 0 then 0.0 else t477))
-        let !t479 = (signum s459)
-        let !t480 = (t466 * (if t465 > 0 then 0.0 else t479))
-        let !t481 = (signum s460)
-        let !t482 = (t469 * (if t468 > 0 then 0.0 else t481))
-        let !t483 = (((((t476 * (t478 + t478)) + (if t474 > 0 then 0.0 else (if t473 > 0 then t477 else 0.0))) * t447) + (((t476 * (t480 + t480)) + (if t474 > 0 then 0.0 else (if t473 > 0 then 0.0 else (if t471 > 0 then t479 else 0.0)))) * t448)) + (((t476 * (t482 + t482)) + (if t474 > 0 then 0.0 else (if t473 > 0 then 0.0 else (if t471 > 0 then 0.0 else t481)))) * t449))
-        let !t484 = (if ((abs t475) - 1.0e-10) > 0 then (if (abs t483) > 0 then 1.0 else 0.0) else 0.0)
-        let !s485 = (if t484 > 0 then (s458 + (negate ((t475 / t483) * t447))) else s458)
-        let !s486 = (if t484 > 0 then (s459 + (negate ((t475 / t483) * t448))) else s459)
-        let !s487 = (if t484 > 0 then (s460 + (negate ((t475 / t483) * t449))) else s460)
-        wrU walk ((12 * i446) + 9) s485
-        wrU walk ((12 * i446) + 10) s486
-        wrU walk ((12 * i446) + 11) s487
+      loopI 0.0 24.0 $ \i458 -> do
+        let !d458 = fromIntegral i458 :: Double
+        chkI walk (12 * i458) 0 11
+        t459 <- rdU walk ((12 * i458) + 6)
+        t460 <- rdU walk ((12 * i458) + 7)
+        t461 <- rdU walk ((12 * i458) + 8)
+        chkI radii ((24 * i1) + i458) 0 0
+        t462 <- rdU radii ((24 * i1) + i458)
+        let !s463 = (t462 / 4.0)
+        t464 <- rdU walk (12 * i458)
+        t465 <- rdU walk ((12 * i458) + 1)
+        t466 <- rdU walk ((12 * i458) + 2)
+        t467 <- rdU walk ((12 * i458) + 3)
+        t468 <- rdU walk ((12 * i458) + 4)
+        t469 <- rdU walk ((12 * i458) + 5)
+        let !s470 = (t464 + (s463 * t467))
+        let !s471 = (t465 + (s463 * t468))
+        let !s472 = (t466 + (s463 * t469))
+        let !t473 = ((abs s470) - 0.6)
+        let !t474 = (negate t473)
+        let !t475 = (if t474 > 0 then 0.0 else t473)
+        let !t476 = ((abs s471) - 0.6)
+        let !t477 = (negate t476)
+        let !t478 = (if t477 > 0 then 0.0 else t476)
+        let !t479 = ((abs s472) - 0.6)
+        let !t480 = (negate t479)
+        let !t481 = (if t480 > 0 then 0.0 else t479)
+        let !t482 = (sqrt (((t475 * t475) + (t478 * t478)) + (t481 * t481)))
+        let !t483 = (t476 - t479)
+        let !t484 = (if t483 > 0 then t476 else t479)
+        let !t485 = (t473 - t484)
+        let !t486 = (if t485 > 0 then t473 else t484)
+        let !t487 = ((t482 + (if t486 > 0 then 0.0 else t486)) - 0.3)
+        let !t488 = (recip (2.0 * t482))
+        let !t489 = (signum s470)
+        let !t490 = (t475 * (if t474 > 0 then 0.0 else t489))
+        let !t491 = (signum s471)
+        let !t492 = (t478 * (if t477 > 0 then 0.0 else t491))
+        let !t493 = (signum s472)
+        let !t494 = (t481 * (if t480 > 0 then 0.0 else t493))
+        let !t495 = (((((t488 * (t490 + t490)) + (if t486 > 0 then 0.0 else (if t485 > 0 then t489 else 0.0))) * t459) + (((t488 * (t492 + t492)) + (if t486 > 0 then 0.0 else (if t485 > 0 then 0.0 else (if t483 > 0 then t491 else 0.0)))) * t460)) + (((t488 * (t494 + t494)) + (if t486 > 0 then 0.0 else (if t485 > 0 then 0.0 else (if t483 > 0 then 0.0 else t493)))) * t461))
+        let !t496 = (if ((abs t487) - 1.0e-10) > 0 then (if (abs t495) > 0 then 1.0 else 0.0) else 0.0)
+        let !s497 = (if t496 > 0 then (s470 + (negate ((t487 / t495) * t459))) else s470)
+        let !s498 = (if t496 > 0 then (s471 + (negate ((t487 / t495) * t460))) else s471)
+        let !s499 = (if t496 > 0 then (s472 + (negate ((t487 / t495) * t461))) else s472)
+        wrU walk ((12 * i458) + 9) s497
+        wrU walk ((12 * i458) + 10) s498
+        wrU walk ((12 * i458) + 11) s499
         pure ()
-      loopI 0.0 24.0 $ \i488 -> do
-        let !d488 = fromIntegral i488 :: Double
-        chkI walk (12 * i488) 6 11
-        t489 <- rdU walk ((12 * i488) + 6)
-        t490 <- rdU walk ((12 * i488) + 7)
-        t491 <- rdU walk ((12 * i488) + 8)
-        t492 <- rdU walk ((12 * i488) + 9)
-        t493 <- rdU walk ((12 * i488) + 10)
-        t494 <- rdU walk ((12 * i488) + 11)
-        let !t495 = ((abs t492) - 0.6)
-        let !t496 = (negate t495)
-        let !t497 = (if t496 > 0 then 0.0 else t495)
-        let !t498 = ((abs t493) - 0.6)
-        let !t499 = (negate t498)
-        let !t500 = (if t499 > 0 then 0.0 else t498)
-        let !t501 = ((abs t494) - 0.6)
-        let !t502 = (negate t501)
-        let !t503 = (if t502 > 0 then 0.0 else t501)
-        let !t504 = (sqrt (((t497 * t497) + (t500 * t500)) + (t503 * t503)))
-        let !t505 = (t498 - t501)
-        let !t506 = (if t505 > 0 then t498 else t501)
-        let !t507 = (t495 - t506)
-        let !t508 = (if t507 > 0 then t495 else t506)
-        let !t509 = ((t504 + (if t508 > 0 then 0.0 else t508)) - 0.3)
-        let !t510 = (recip (2.0 * t504))
-        let !t511 = (signum t492)
-        let !t512 = (t497 * (if t496 > 0 then 0.0 else t511))
-        let !t513 = (signum t493)
-        let !t514 = (t500 * (if t499 > 0 then 0.0 else t513))
-        let !t515 = (signum t494)
-        let !t516 = (t503 * (if t502 > 0 then 0.0 else t515))
-        let !t517 = (((((t510 * (t512 + t512)) + (if t508 > 0 then 0.0 else (if t507 > 0 then t511 else 0.0))) * t489) + (((t510 * (t514 + t514)) + (if t508 > 0 then 0.0 else (if t507 > 0 then 0.0 else (if t505 > 0 then t513 else 0.0)))) * t490)) + (((t510 * (t516 + t516)) + (if t508 > 0 then 0.0 else (if t507 > 0 then 0.0 else (if t505 > 0 then 0.0 else t515)))) * t491))
-        let !t518 = (if ((abs t509) - 1.0e-10) > 0 then (if (abs t517) > 0 then 1.0 else 0.0) else 0.0)
-        let !s519 = (if t518 > 0 then (t492 + (negate ((t509 / t517) * t489))) else t492)
-        let !s520 = (if t518 > 0 then (t493 + (negate ((t509 / t517) * t490))) else t493)
-        let !s521 = (if t518 > 0 then (t494 + (negate ((t509 / t517) * t491))) else t494)
-        wrU walk ((12 * i488) + 9) s519
-        wrU walk ((12 * i488) + 10) s520
-        wrU walk ((12 * i488) + 11) s521
+      loopI 0.0 24.0 $ \i500 -> do
+        let !d500 = fromIntegral i500 :: Double
+        chkI walk (12 * i500) 6 11
+        t501 <- rdU walk ((12 * i500) + 6)
+        t502 <- rdU walk ((12 * i500) + 7)
+        t503 <- rdU walk ((12 * i500) + 8)
+        t504 <- rdU walk ((12 * i500) + 9)
+        t505 <- rdU walk ((12 * i500) + 10)
+        t506 <- rdU walk ((12 * i500) + 11)
+        let !t507 = ((abs t504) - 0.6)
+        let !t508 = (negate t507)
+        let !t509 = (if t508 > 0 then 0.0 else t507)
+        let !t510 = ((abs t505) - 0.6)
+        let !t511 = (negate t510)
+        let !t512 = (if t511 > 0 then 0.0 else t510)
+        let !t513 = ((abs t506) - 0.6)
+        let !t514 = (negate t513)
+        let !t515 = (if t514 > 0 then 0.0 else t513)
+        let !t516 = (sqrt (((t509 * t509) + (t512 * t512)) + (t515 * t515)))
+        let !t517 = (t510 - t513)
+        let !t518 = (if t517 > 0 then t510 else t513)
+        let !t519 = (t507 - t518)
+        let !t520 = (if t519 > 0 then t507 else t518)
+        let !t521 = ((t516 + (if t520 > 0 then 0.0 else t520)) - 0.3)
+        let !t522 = (recip (2.0 * t516))
+        let !t523 = (signum t504)
+        let !t524 = (t509 * (if t508 > 0 then 0.0 else t523))
+        let !t525 = (signum t505)
+        let !t526 = (t512 * (if t511 > 0 then 0.0 else t525))
+        let !t527 = (signum t506)
+        let !t528 = (t515 * (if t514 > 0 then 0.0 else t527))
+        let !t529 = (((((t522 * (t524 + t524)) + (if t520 > 0 then 0.0 else (if t519 > 0 then t523 else 0.0))) * t501) + (((t522 * (t526 + t526)) + (if t520 > 0 then 0.0 else (if t519 > 0 then 0.0 else (if t517 > 0 then t525 else 0.0)))) * t502)) + (((t522 * (t528 + t528)) + (if t520 > 0 then 0.0 else (if t519 > 0 then 0.0 else (if t517 > 0 then 0.0 else t527)))) * t503))
+        let !t530 = (if ((abs t521) - 1.0e-10) > 0 then (if (abs t529) > 0 then 1.0 else 0.0) else 0.0)
+        let !s531 = (if t530 > 0 then (t504 + (negate ((t521 / t529) * t501))) else t504)
+        let !s532 = (if t530 > 0 then (t505 + (negate ((t521 / t529) * t502))) else t505)
+        let !s533 = (if t530 > 0 then (t506 + (negate ((t521 / t529) * t503))) else t506)
+        wrU walk ((12 * i500) + 9) s531
+        wrU walk ((12 * i500) + 10) s532
+        wrU walk ((12 * i500) + 11) s533
         pure ()
-      loopI 0.0 24.0 $ \i522 -> do
-        let !d522 = fromIntegral i522 :: Double
-        chkI walk (12 * i522) 0 11
-        t523 <- rdU walk ((12 * i522) + 6)
-        t524 <- rdU walk ((12 * i522) + 7)
-        t525 <- rdU walk ((12 * i522) + 8)
-        t526 <- rdU walk ((12 * i522) + 9)
-        t527 <- rdU walk ((12 * i522) + 10)
-        t528 <- rdU walk ((12 * i522) + 11)
-        chkI radii ((24 * i1) + i522) 0 0
-        t529 <- rdU radii ((24 * i1) + i522)
-        let !s530 = (t529 / 4.0)
-        t531 <- rdU walk (12 * i522)
-        t532 <- rdU walk ((12 * i522) + 1)
-        t533 <- rdU walk ((12 * i522) + 2)
-        t534 <- rdU walk ((12 * i522) + 3)
-        t535 <- rdU walk ((12 * i522) + 4)
-        t536 <- rdU walk ((12 * i522) + 5)
-        let !t537 = (if (abs s530) > 0 then 1.0 else 0.0)
-        let !t538 = ((abs t526) - 0.6)
-        let !t539 = (negate t538)
-        let !t540 = (if t539 > 0 then 0.0 else t538)
-        let !t541 = ((abs t527) - 0.6)
-        let !t542 = (negate t541)
-        let !t543 = (if t542 > 0 then 0.0 else t541)
-        let !t544 = ((abs t528) - 0.6)
-        let !t545 = (negate t544)
-        let !t546 = (if t545 > 0 then 0.0 else t544)
-        let !t547 = (sqrt (((t540 * t540) + (t543 * t543)) + (t546 * t546)))
-        let !t548 = (t541 - t544)
-        let !t549 = (if t548 > 0 then t541 else t544)
-        let !t550 = (t538 - t549)
-        let !t551 = (if t550 > 0 then t538 else t549)
-        let !t552 = ((t547 + (if t551 > 0 then 0.0 else t551)) - 0.3)
-        let !t553 = (recip (2.0 * t547))
-        let !t554 = (signum t526)
-        let !t555 = (t540 * (if t539 > 0 then 0.0 else t554))
-        let !t556 = (signum t527)
-        let !t557 = (t543 * (if t542 > 0 then 0.0 else t556))
-        let !t558 = (signum t528)
-        let !t559 = (t546 * (if t545 > 0 then 0.0 else t558))
-        let !t560 = (((((t553 * (t555 + t555)) + (if t551 > 0 then 0.0 else (if t550 > 0 then t554 else 0.0))) * t523) + (((t553 * (t557 + t557)) + (if t551 > 0 then 0.0 else (if t550 > 0 then 0.0 else (if t548 > 0 then t556 else 0.0)))) * t524)) + (((t553 * (t559 + t559)) + (if t551 > 0 then 0.0 else (if t550 > 0 then 0.0 else (if t548 > 0 then 0.0 else t558)))) * t525))
-        let !t561 = (if ((abs t552) - 1.0e-10) > 0 then (if (abs t560) > 0 then 1.0 else 0.0) else 0.0)
-        let !t562 = (1.0 - t537)
-        let !s563 = ((t537 * (if t561 > 0 then (t526 + (negate ((t552 / t560) * t523))) else t526)) + (t562 * t531))
-        let !s564 = ((t537 * (if t561 > 0 then (t527 + (negate ((t552 / t560) * t524))) else t527)) + (t562 * t532))
-        let !s565 = ((t537 * (if t561 > 0 then (t528 + (negate ((t552 / t560) * t525))) else t528)) + (t562 * t533))
-        chkI verts ((291 * i1) + (12 * i522)) 12 14
-        wrU verts (((291 * i1) + (12 * i522)) + 12) (if (1.0 - (abs (((s563 - s563) + (s564 - s564)) + (s565 - s565)))) > 0 then s563 else t2)
-        wrU verts (((291 * i1) + (12 * i522)) + 13) (if (1.0 - (abs (((s563 - s563) + (s564 - s564)) + (s565 - s565)))) > 0 then s564 else t3)
-        wrU verts (((291 * i1) + (12 * i522)) + 14) (if (1.0 - (abs (((s563 - s563) + (s564 - s564)) + (s565 - s565)))) > 0 then s565 else t4)
+      loopI 0.0 24.0 $ \i534 -> do
+        let !d534 = fromIntegral i534 :: Double
+        chkI walk (12 * i534) 0 11
+        t535 <- rdU walk ((12 * i534) + 6)
+        t536 <- rdU walk ((12 * i534) + 7)
+        t537 <- rdU walk ((12 * i534) + 8)
+        t538 <- rdU walk ((12 * i534) + 9)
+        t539 <- rdU walk ((12 * i534) + 10)
+        t540 <- rdU walk ((12 * i534) + 11)
+        chkI radii ((24 * i1) + i534) 0 0
+        t541 <- rdU radii ((24 * i1) + i534)
+        let !s542 = (t541 / 4.0)
+        t543 <- rdU walk (12 * i534)
+        t544 <- rdU walk ((12 * i534) + 1)
+        t545 <- rdU walk ((12 * i534) + 2)
+        t546 <- rdU walk ((12 * i534) + 3)
+        t547 <- rdU walk ((12 * i534) + 4)
+        t548 <- rdU walk ((12 * i534) + 5)
+        let !t549 = (if (abs s542) > 0 then 1.0 else 0.0)
+        let !t550 = ((abs t538) - 0.6)
+        let !t551 = (negate t550)
+        let !t552 = (if t551 > 0 then 0.0 else t550)
+        let !t553 = ((abs t539) - 0.6)
+        let !t554 = (negate t553)
+        let !t555 = (if t554 > 0 then 0.0 else t553)
+        let !t556 = ((abs t540) - 0.6)
+        let !t557 = (negate t556)
+        let !t558 = (if t557 > 0 then 0.0 else t556)
+        let !t559 = (sqrt (((t552 * t552) + (t555 * t555)) + (t558 * t558)))
+        let !t560 = (t553 - t556)
+        let !t561 = (if t560 > 0 then t553 else t556)
+        let !t562 = (t550 - t561)
+        let !t563 = (if t562 > 0 then t550 else t561)
+        let !t564 = ((t559 + (if t563 > 0 then 0.0 else t563)) - 0.3)
+        let !t565 = (recip (2.0 * t559))
+        let !t566 = (signum t538)
+        let !t567 = (t552 * (if t551 > 0 then 0.0 else t566))
+        let !t568 = (signum t539)
+        let !t569 = (t555 * (if t554 > 0 then 0.0 else t568))
+        let !t570 = (signum t540)
+        let !t571 = (t558 * (if t557 > 0 then 0.0 else t570))
+        let !t572 = (((((t565 * (t567 + t567)) + (if t563 > 0 then 0.0 else (if t562 > 0 then t566 else 0.0))) * t535) + (((t565 * (t569 + t569)) + (if t563 > 0 then 0.0 else (if t562 > 0 then 0.0 else (if t560 > 0 then t568 else 0.0)))) * t536)) + (((t565 * (t571 + t571)) + (if t563 > 0 then 0.0 else (if t562 > 0 then 0.0 else (if t560 > 0 then 0.0 else t570)))) * t537))
+        let !t573 = (if ((abs t564) - 1.0e-10) > 0 then (if (abs t572) > 0 then 1.0 else 0.0) else 0.0)
+        let !t574 = (1.0 - t549)
+        let !s575 = ((t549 * (if t573 > 0 then (t538 + (negate ((t564 / t572) * t535))) else t538)) + (t574 * t543))
+        let !s576 = ((t549 * (if t573 > 0 then (t539 + (negate ((t564 / t572) * t536))) else t539)) + (t574 * t544))
+        let !s577 = ((t549 * (if t573 > 0 then (t540 + (negate ((t564 / t572) * t537))) else t540)) + (t574 * t545))
+        let !t578 = (1.0 - (abs (((s575 - s575) + (s576 - s576)) + (s577 - s577))))
+        let !s579 = (if t578 > 0 then s575 else t2)
+        let !s580 = (if t578 > 0 then s576 else t3)
+        let !s581 = (if t578 > 0 then s577 else t4)
+        chkI verts ((291 * i1) + (12 * i534)) 12 14
+        wrU verts (((291 * i1) + (12 * i534)) + 12) s579
+        wrU verts (((291 * i1) + (12 * i534)) + 13) s580
+        wrU verts (((291 * i1) + (12 * i534)) + 14) s581
+        chkI outline ((72 * i1) + (3 * i534)) 0 2
+        wrU outline ((72 * i1) + (3 * i534)) s579
+        wrU outline (((72 * i1) + (3 * i534)) + 1) s580
+        wrU outline (((72 * i1) + (3 * i534)) + 2) s581
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i566 -> do
-        let !d566 = fromIntegral i566 :: Double
-        t567 <- rdU locals 0
-        t568 <- rdU locals 1
-        wrU locals 0 ((t567 * 0.9659258262890683) - (t568 * 0.25881904510252074))
-        wrU locals 1 ((t568 * 0.9659258262890683) + (t567 * 0.25881904510252074))
-        let !s569 = ((t567 * t5) + (t568 * s14))
-        let !s570 = ((t567 * t6) + (t568 * s15))
-        let !s571 = ((t567 * t7) + (t568 * s16))
-        chkI walk (12 * i566) 3 5
-        wrU walk ((12 * i566) + 3) s569
-        wrU walk ((12 * i566) + 4) s570
-        wrU walk ((12 * i566) + 5) s571
+      loopI 0.0 24.0 $ \i582 -> do
+        let !d582 = fromIntegral i582 :: Double
+        t583 <- rdU locals 0
+        t584 <- rdU locals 1
+        wrU locals 0 ((t583 * 0.9659258262890683) - (t584 * 0.25881904510252074))
+        wrU locals 1 ((t584 * 0.9659258262890683) + (t583 * 0.25881904510252074))
+        let !s585 = ((t583 * t5) + (t584 * s14))
+        let !s586 = ((t583 * t6) + (t584 * s15))
+        let !s587 = ((t583 * t7) + (t584 * s16))
+        chkI walk (12 * i582) 3 5
+        wrU walk ((12 * i582) + 3) s585
+        wrU walk ((12 * i582) + 4) s586
+        wrU walk ((12 * i582) + 5) s587
         pure ()
-      loopI 0.0 24.0 $ \i572 -> do
-        let !d572 = fromIntegral i572 :: Double
-        chkI radii ((24 * i1) + i572) 0 0
-        t573 <- rdU radii ((24 * i1) + i572)
-        chkI walk (12 * i572) 3 11
-        t574 <- rdU walk ((12 * i572) + 3)
-        t575 <- rdU walk ((12 * i572) + 4)
-        t576 <- rdU walk ((12 * i572) + 5)
-        let !s577 = (t2 + (t573 * t574))
-        let !s578 = (t3 + (t573 * t575))
-        let !s579 = (t4 + (t573 * t576))
-        let !t580 = ((abs s577) - 0.6)
-        let !t581 = (negate t580)
-        let !t582 = (if t581 > 0 then 0.0 else t580)
-        let !t583 = ((abs s578) - 0.6)
-        let !t584 = (negate t583)
-        let !t585 = (if t584 > 0 then 0.0 else t583)
-        let !t586 = ((abs s579) - 0.6)
-        let !t587 = (negate t586)
-        let !t588 = (if t587 > 0 then 0.0 else t586)
-        let !t589 = (sqrt (((t582 * t582) + (t585 * t585)) + (t588 * t588)))
-        let !t590 = (t583 - t586)
-        let !t591 = (if t590 > 0 then t583 else t586)
-        let !t592 = (t580 - t591)
-        let !t593 = (if t592 > 0 then t580 else t591)
-        let !t594 = ((t589 + (if t593 > 0 then 0.0 else t593)) - 0.3)
-        let !t595 = (recip (2.0 * t589))
-        let !t596 = (signum s577)
-        let !t597 = (t582 * (if t581 > 0 then 0.0 else t596))
-        let !t598 = (signum s578)
-        let !t599 = (t585 * (if t584 > 0 then 0.0 else t598))
-        let !t600 = (signum s579)
-        let !t601 = (t588 * (if t587 > 0 then 0.0 else t600))
-        let !t602 = (((((t595 * (t597 + t597)) + (if t593 > 0 then 0.0 else (if t592 > 0 then t596 else 0.0))) * t8) + (((t595 * (t599 + t599)) + (if t593 > 0 then 0.0 else (if t592 > 0 then 0.0 else (if t590 > 0 then t598 else 0.0)))) * t9)) + (((t595 * (t601 + t601)) + (if t593 > 0 then 0.0 else (if t592 > 0 then 0.0 else (if t590 > 0 then 0.0 else t600)))) * t10))
-        let !t603 = (if ((abs t594) - 1.0e-10) > 0 then (if (abs t602) > 0 then 1.0 else 0.0) else 0.0)
-        let !s604 = (if t603 > 0 then (s577 + (negate ((t594 / t602) * t8))) else s577)
-        let !s605 = (if t603 > 0 then (s578 + (negate ((t594 / t602) * t9))) else s578)
-        let !s606 = (if t603 > 0 then (s579 + (negate ((t594 / t602) * t10))) else s579)
-        wrU walk ((12 * i572) + 9) s604
-        wrU walk ((12 * i572) + 10) s605
-        wrU walk ((12 * i572) + 11) s606
+      loopI 0.0 24.0 $ \i588 -> do
+        let !d588 = fromIntegral i588 :: Double
+        chkI radii ((24 * i1) + i588) 0 0
+        t589 <- rdU radii ((24 * i1) + i588)
+        chkI walk (12 * i588) 3 11
+        t590 <- rdU walk ((12 * i588) + 3)
+        t591 <- rdU walk ((12 * i588) + 4)
+        t592 <- rdU walk ((12 * i588) + 5)
+        let !s593 = (t2 + (t589 * t590))
+        let !s594 = (t3 + (t589 * t591))
+        let !s595 = (t4 + (t589 * t592))
+        let !t596 = ((abs s593) - 0.6)
+        let !t597 = (negate t596)
+        let !t598 = (if t597 > 0 then 0.0 else t596)
+        let !t599 = ((abs s594) - 0.6)
+        let !t600 = (negate t599)
+        let !t601 = (if t600 > 0 then 0.0 else t599)
+        let !t602 = ((abs s595) - 0.6)
+        let !t603 = (negate t602)
+        let !t604 = (if t603 > 0 then 0.0 else t602)
+        let !t605 = (sqrt (((t598 * t598) + (t601 * t601)) + (t604 * t604)))
+        let !t606 = (t599 - t602)
+        let !t607 = (if t606 > 0 then t599 else t602)
+        let !t608 = (t596 - t607)
+        let !t609 = (if t608 > 0 then t596 else t607)
+        let !t610 = ((t605 + (if t609 > 0 then 0.0 else t609)) - 0.3)
+        let !t611 = (recip (2.0 * t605))
+        let !t612 = (signum s593)
+        let !t613 = (t598 * (if t597 > 0 then 0.0 else t612))
+        let !t614 = (signum s594)
+        let !t615 = (t601 * (if t600 > 0 then 0.0 else t614))
+        let !t616 = (signum s595)
+        let !t617 = (t604 * (if t603 > 0 then 0.0 else t616))
+        let !t618 = (((((t611 * (t613 + t613)) + (if t609 > 0 then 0.0 else (if t608 > 0 then t612 else 0.0))) * t8) + (((t611 * (t615 + t615)) + (if t609 > 0 then 0.0 else (if t608 > 0 then 0.0 else (if t606 > 0 then t614 else 0.0)))) * t9)) + (((t611 * (t617 + t617)) + (if t609 > 0 then 0.0 else (if t608 > 0 then 0.0 else (if t606 > 0 then 0.0 else t616)))) * t10))
+        let !t619 = (if ((abs t610) - 1.0e-10) > 0 then (if (abs t618) > 0 then 1.0 else 0.0) else 0.0)
+        let !s620 = (if t619 > 0 then (s593 + (negate ((t610 / t618) * t8))) else s593)
+        let !s621 = (if t619 > 0 then (s594 + (negate ((t610 / t618) * t9))) else s594)
+        let !s622 = (if t619 > 0 then (s595 + (negate ((t610 / t618) * t10))) else s595)
+        wrU walk ((12 * i588) + 9) s620
+        wrU walk ((12 * i588) + 10) s621
+        wrU walk ((12 * i588) + 11) s622
         pure ()
-      loopI 0.0 24.0 $ \i607 -> do
-        let !d607 = fromIntegral i607 :: Double
-        chkI walk (12 * i607) 9 11
-        t608 <- rdU walk ((12 * i607) + 9)
-        t609 <- rdU walk ((12 * i607) + 10)
-        t610 <- rdU walk ((12 * i607) + 11)
-        let !t611 = ((abs t608) - 0.6)
-        let !t612 = (negate t611)
-        let !t613 = (if t612 > 0 then 0.0 else t611)
-        let !t614 = ((abs t609) - 0.6)
-        let !t615 = (negate t614)
-        let !t616 = (if t615 > 0 then 0.0 else t614)
-        let !t617 = ((abs t610) - 0.6)
-        let !t618 = (negate t617)
-        let !t619 = (if t618 > 0 then 0.0 else t617)
-        let !t620 = (sqrt (((t613 * t613) + (t616 * t616)) + (t619 * t619)))
-        let !t621 = (t614 - t617)
-        let !t622 = (if t621 > 0 then t614 else t617)
-        let !t623 = (t611 - t622)
-        let !t624 = (if t623 > 0 then t611 else t622)
-        let !t625 = ((t620 + (if t624 > 0 then 0.0 else t624)) - 0.3)
-        let !t626 = (recip (2.0 * t620))
-        let !t627 = (signum t608)
-        let !t628 = (t613 * (if t612 > 0 then 0.0 else t627))
-        let !t629 = (signum t609)
-        let !t630 = (t616 * (if t615 > 0 then 0.0 else t629))
-        let !t631 = (signum t610)
-        let !t632 = (t619 * (if t618 > 0 then 0.0 else t631))
-        let !t633 = (((((t626 * (t628 + t628)) + (if t624 > 0 then 0.0 else (if t623 > 0 then t627 else 0.0))) * t8) + (((t626 * (t630 + t630)) + (if t624 > 0 then 0.0 else (if t623 > 0 then 0.0 else (if t621 > 0 then t629 else 0.0)))) * t9)) + (((t626 * (t632 + t632)) + (if t624 > 0 then 0.0 else (if t623 > 0 then 0.0 else (if t621 > 0 then 0.0 else t631)))) * t10))
-        let !t634 = (if ((abs t625) - 1.0e-10) > 0 then (if (abs t633) > 0 then 1.0 else 0.0) else 0.0)
-        let !s635 = (if t634 > 0 then (t608 + (negate ((t625 / t633) * t8))) else t608)
-        let !s636 = (if t634 > 0 then (t609 + (negate ((t625 / t633) * t9))) else t609)
-        let !s637 = (if t634 > 0 then (t610 + (negate ((t625 / t633) * t10))) else t610)
-        wrU walk ((12 * i607) + 9) s635
-        wrU walk ((12 * i607) + 10) s636
-        wrU walk ((12 * i607) + 11) s637
+      loopI 0.0 24.0 $ \i623 -> do
+        let !d623 = fromIntegral i623 :: Double
+        chkI walk (12 * i623) 9 11
+        t624 <- rdU walk ((12 * i623) + 9)
+        t625 <- rdU walk ((12 * i623) + 10)
+        t626 <- rdU walk ((12 * i623) + 11)
+        let !t627 = ((abs t624) - 0.6)
+        let !t628 = (negate t627)
+        let !t629 = (if t628 > 0 then 0.0 else t627)
+        let !t630 = ((abs t625) - 0.6)
+        let !t631 = (negate t630)
+        let !t632 = (if t631 > 0 then 0.0 else t630)
+        let !t633 = ((abs t626) - 0.6)
+        let !t634 = (negate t633)
+        let !t635 = (if t634 > 0 then 0.0 else t633)
+        let !t636 = (sqrt (((t629 * t629) + (t632 * t632)) + (t635 * t635)))
+        let !t637 = (t630 - t633)
+        let !t638 = (if t637 > 0 then t630 else t633)
+        let !t639 = (t627 - t638)
+        let !t640 = (if t639 > 0 then t627 else t638)
+        let !t641 = ((t636 + (if t640 > 0 then 0.0 else t640)) - 0.3)
+        let !t642 = (recip (2.0 * t636))
+        let !t643 = (signum t624)
+        let !t644 = (t629 * (if t628 > 0 then 0.0 else t643))
+        let !t645 = (signum t625)
+        let !t646 = (t632 * (if t631 > 0 then 0.0 else t645))
+        let !t647 = (signum t626)
+        let !t648 = (t635 * (if t634 > 0 then 0.0 else t647))
+        let !t649 = (((((t642 * (t644 + t644)) + (if t640 > 0 then 0.0 else (if t639 > 0 then t643 else 0.0))) * t8) + (((t642 * (t646 + t646)) + (if t640 > 0 then 0.0 else (if t639 > 0 then 0.0 else (if t637 > 0 then t645 else 0.0)))) * t9)) + (((t642 * (t648 + t648)) + (if t640 > 0 then 0.0 else (if t639 > 0 then 0.0 else (if t637 > 0 then 0.0 else t647)))) * t10))
+        let !t650 = (if ((abs t641) - 1.0e-10) > 0 then (if (abs t649) > 0 then 1.0 else 0.0) else 0.0)
+        let !s651 = (if t650 > 0 then (t624 + (negate ((t641 / t649) * t8))) else t624)
+        let !s652 = (if t650 > 0 then (t625 + (negate ((t641 / t649) * t9))) else t625)
+        let !s653 = (if t650 > 0 then (t626 + (negate ((t641 / t649) * t10))) else t626)
+        wrU walk ((12 * i623) + 9) s651
+        wrU walk ((12 * i623) + 10) s652
+        wrU walk ((12 * i623) + 11) s653
         pure ()
-      loopI 0.0 24.0 $ \i638 -> do
-        let !d638 = fromIntegral i638 :: Double
-        chkI walk (12 * i638) 3 11
-        t639 <- rdU walk ((12 * i638) + 9)
-        t640 <- rdU walk ((12 * i638) + 10)
-        t641 <- rdU walk ((12 * i638) + 11)
-        chkI radii ((24 * i1) + i638) 0 0
-        t642 <- rdU radii ((24 * i1) + i638)
-        t643 <- rdU walk ((12 * i638) + 3)
-        t644 <- rdU walk ((12 * i638) + 4)
-        t645 <- rdU walk ((12 * i638) + 5)
-        let !t646 = (if (abs t642) > 0 then 1.0 else 0.0)
-        let !t647 = ((abs t639) - 0.6)
-        let !t648 = (negate t647)
-        let !t649 = (if t648 > 0 then 0.0 else t647)
-        let !t650 = ((abs t640) - 0.6)
-        let !t651 = (negate t650)
-        let !t652 = (if t651 > 0 then 0.0 else t650)
-        let !t653 = ((abs t641) - 0.6)
-        let !t654 = (negate t653)
-        let !t655 = (if t654 > 0 then 0.0 else t653)
-        let !t656 = (sqrt (((t649 * t649) + (t652 * t652)) + (t655 * t655)))
-        let !t657 = (t650 - t653)
-        let !t658 = (if t657 > 0 then t650 else t653)
-        let !t659 = (t647 - t658)
-        let !t660 = (if t659 > 0 then t647 else t658)
-        let !t661 = ((t656 + (if t660 > 0 then 0.0 else t660)) - 0.3)
-        let !t662 = (recip (2.0 * t656))
-        let !t663 = (signum t639)
-        let !t664 = (t649 * (if t648 > 0 then 0.0 else t663))
-        let !t665 = (signum t640)
-        let !t666 = (t652 * (if t651 > 0 then 0.0 else t665))
-        let !t667 = (signum t641)
-        let !t668 = (t655 * (if t654 > 0 then 0.0 else t667))
-        let !t669 = (((((t662 * (t664 + t664)) + (if t660 > 0 then 0.0 else (if t659 > 0 then t663 else 0.0))) * t8) + (((t662 * (t666 + t666)) + (if t660 > 0 then 0.0 else (if t659 > 0 then 0.0 else (if t657 > 0 then t665 else 0.0)))) * t9)) + (((t662 * (t668 + t668)) + (if t660 > 0 then 0.0 else (if t659 > 0 then 0.0 else (if t657 > 0 then 0.0 else t667)))) * t10))
-        let !t670 = (if ((abs t661) - 1.0e-10) > 0 then (if (abs t669) > 0 then 1.0 else 0.0) else 0.0)
-        let !t671 = (1.0 - t646)
-        let !s672 = ((t646 * (if t670 > 0 then (t639 + (negate ((t661 / t669) * t8))) else t639)) + (t671 * t2))
-        let !s673 = ((t646 * (if t670 > 0 then (t640 + (negate ((t661 / t669) * t9))) else t640)) + (t671 * t3))
-        let !s674 = ((t646 * (if t670 > 0 then (t641 + (negate ((t661 / t669) * t10))) else t641)) + (t671 * t4))
-        let !t675 = (1.0 - (abs (((s672 - s672) + (s673 - s673)) + (s674 - s674))))
-        let !s676 = (if t675 > 0 then s672 else t2)
-        let !s677 = (if t675 > 0 then s673 else t3)
-        let !s678 = (if t675 > 0 then s674 else t4)
-        chkI verts ((291 * i1) + (12 * i638)) 3 14
-        wrU verts (((291 * i1) + (12 * i638)) + 12) s676
-        wrU verts (((291 * i1) + (12 * i638)) + 13) s677
-        wrU verts (((291 * i1) + (12 * i638)) + 14) s678
-        wrU verts (((291 * i1) + (12 * i638)) + 3) (t2 + (0.25 * (s676 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i638)) + 4) (t3 + (0.25 * (s677 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i638)) + 5) (t4 + (0.25 * (s678 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i638)) + 6) (t2 + (0.5 * (s676 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i638)) + 7) (t3 + (0.5 * (s677 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i638)) + 8) (t4 + (0.5 * (s678 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i638)) + 9) (t2 + (0.75 * (s676 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i638)) + 10) (t3 + (0.75 * (s677 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i638)) + 11) (t4 + (0.75 * (s678 + (negate t4))))
+      loopI 0.0 24.0 $ \i654 -> do
+        let !d654 = fromIntegral i654 :: Double
+        chkI walk (12 * i654) 3 11
+        t655 <- rdU walk ((12 * i654) + 9)
+        t656 <- rdU walk ((12 * i654) + 10)
+        t657 <- rdU walk ((12 * i654) + 11)
+        chkI radii ((24 * i1) + i654) 0 0
+        t658 <- rdU radii ((24 * i1) + i654)
+        t659 <- rdU walk ((12 * i654) + 3)
+        t660 <- rdU walk ((12 * i654) + 4)
+        t661 <- rdU walk ((12 * i654) + 5)
+        let !t662 = (if (abs t658) > 0 then 1.0 else 0.0)
+        let !t663 = ((abs t655) - 0.6)
+        let !t664 = (negate t663)
+        let !t665 = (if t664 > 0 then 0.0 else t663)
+        let !t666 = ((abs t656) - 0.6)
+        let !t667 = (negate t666)
+        let !t668 = (if t667 > 0 then 0.0 else t666)
+        let !t669 = ((abs t657) - 0.6)
+        let !t670 = (negate t669)
+        let !t671 = (if t670 > 0 then 0.0 else t669)
+        let !t672 = (sqrt (((t665 * t665) + (t668 * t668)) + (t671 * t671)))
+        let !t673 = (t666 - t669)
+        let !t674 = (if t673 > 0 then t666 else t669)
+        let !t675 = (t663 - t674)
+        let !t676 = (if t675 > 0 then t663 else t674)
+        let !t677 = ((t672 + (if t676 > 0 then 0.0 else t676)) - 0.3)
+        let !t678 = (recip (2.0 * t672))
+        let !t679 = (signum t655)
+        let !t680 = (t665 * (if t664 > 0 then 0.0 else t679))
+        let !t681 = (signum t656)
+        let !t682 = (t668 * (if t667 > 0 then 0.0 else t681))
+        let !t683 = (signum t657)
+        let !t684 = (t671 * (if t670 > 0 then 0.0 else t683))
+        let !t685 = (((((t678 * (t680 + t680)) + (if t676 > 0 then 0.0 else (if t675 > 0 then t679 else 0.0))) * t8) + (((t678 * (t682 + t682)) + (if t676 > 0 then 0.0 else (if t675 > 0 then 0.0 else (if t673 > 0 then t681 else 0.0)))) * t9)) + (((t678 * (t684 + t684)) + (if t676 > 0 then 0.0 else (if t675 > 0 then 0.0 else (if t673 > 0 then 0.0 else t683)))) * t10))
+        let !t686 = (if ((abs t677) - 1.0e-10) > 0 then (if (abs t685) > 0 then 1.0 else 0.0) else 0.0)
+        let !t687 = (1.0 - t662)
+        let !s688 = ((t662 * (if t686 > 0 then (t655 + (negate ((t677 / t685) * t8))) else t655)) + (t687 * t2))
+        let !s689 = ((t662 * (if t686 > 0 then (t656 + (negate ((t677 / t685) * t9))) else t656)) + (t687 * t3))
+        let !s690 = ((t662 * (if t686 > 0 then (t657 + (negate ((t677 / t685) * t10))) else t657)) + (t687 * t4))
+        let !t691 = (1.0 - (abs (((s688 - s688) + (s689 - s689)) + (s690 - s690))))
+        let !s692 = (if t691 > 0 then s688 else t2)
+        let !s693 = (if t691 > 0 then s689 else t3)
+        let !s694 = (if t691 > 0 then s690 else t4)
+        chkI verts ((291 * i1) + (12 * i654)) 3 14
+        wrU verts (((291 * i1) + (12 * i654)) + 12) s692
+        wrU verts (((291 * i1) + (12 * i654)) + 13) s693
+        wrU verts (((291 * i1) + (12 * i654)) + 14) s694
+        chkI outline ((72 * i1) + (3 * i654)) 0 2
+        wrU outline ((72 * i1) + (3 * i654)) s692
+        wrU outline (((72 * i1) + (3 * i654)) + 1) s693
+        wrU outline (((72 * i1) + (3 * i654)) + 2) s694
+        wrU verts (((291 * i1) + (12 * i654)) + 3) (t2 + (0.25 * (s692 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i654)) + 4) (t3 + (0.25 * (s693 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i654)) + 5) (t4 + (0.25 * (s694 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i654)) + 6) (t2 + (0.5 * (s692 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i654)) + 7) (t3 + (0.5 * (s693 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i654)) + 8) (t4 + (0.5 * (s694 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i654)) + 9) (t2 + (0.75 * (s692 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i654)) + 10) (t3 + (0.75 * (s693 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i654)) + 11) (t4 + (0.75 * (s694 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -22,13 +22,13 @@ compiled = CompiledStep "moebius" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - 1.0);\n}\n\nboundary function f(x, y, z) {\n  return (0.4 - Math.abs(y));\n}\n\ngravity function f(x, y, z) {\n  return [0.0, (-(4.0 * y)), 0.0];\n}\n\nquotient Antipodal\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, outline, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Moebius: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -72,8 +72,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
@@ -215,7 +215,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d67 = fromIntegral i67 :: Double
       chkI near i67 0 0
       t68 <- rdU near i67
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     let !s69 = (negate t30)
     let !s70 = (negate t31)
@@ -285,7 +285,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d103 = fromIntegral i103 :: Double
       chkI near i103 0 0
       t104 <- rdU near i103
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t104 + 1.0) * 64.0) + 16.0) d29 t104 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t104 + 1.0) * 64.0) + 16.0) d29 t104 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
       pure ()
     chkI normal (3 * i29) 0 2
     t105 <- rdU normal (3 * i29)
@@ -295,10 +295,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 4 (-1.0)
     loopI 0.0 24.0 $ \i108 -> do
       let !d108 = fromIntegral i108 :: Double
-      chkI verts ((12 * i108) + (291 * i29)) 12 14
-      t109 <- rdU verts (((12 * i108) + (291 * i29)) + 12)
-      t110 <- rdU verts (((12 * i108) + (291 * i29)) + 13)
-      t111 <- rdU verts (((12 * i108) + (291 * i29)) + 14)
+      chkI outline ((3 * i108) + (72 * i29)) 0 2
+      t109 <- rdU outline ((3 * i108) + (72 * i29))
+      t110 <- rdU outline (((3 * i108) + (72 * i29)) + 1)
+      t111 <- rdU outline (((3 * i108) + (72 * i29)) + 2)
       let !s112 = (0.4 - (abs t110))
       t113 <- rdU locals 3
       if ((negate s112) - t113) > 0 then do
@@ -311,10 +311,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t114 <- rdU locals 3
     if t114 > 0 then do
       t115 <- rdU locals 4
-      chkI verts ((12 * (truncate t115)) + (291 * i29)) 12 14
-      t116 <- rdU verts (((12 * (truncate t115)) + (291 * i29)) + 12)
-      t117 <- rdU verts (((12 * (truncate t115)) + (291 * i29)) + 13)
-      t118 <- rdU verts (((12 * (truncate t115)) + (291 * i29)) + 14)
+      chkI outline ((3 * (truncate t115)) + (72 * i29)) 0 2
+      t116 <- rdU outline ((3 * (truncate t115)) + (72 * i29))
+      t117 <- rdU outline (((3 * (truncate t115)) + (72 * i29)) + 1)
+      t118 <- rdU outline (((3 * (truncate t115)) + (72 * i29)) + 2)
       let !t119 = (negate (signum t117))
       let !t120 = (sqrt (t119 * t119))
       let !s121 = ((if t120 > 0 then (recip (if (t120 - 1.0e-300) > 0 then t120 else 1.0e-300)) else 0.0) * t119)
@@ -326,10 +326,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 (-1.0)
       loopI 0.0 24.0 $ \i124 -> do
         let !d124 = fromIntegral i124 :: Double
-        chkI verts ((12 * i124) + (291 * i29)) 12 14
-        t125 <- rdU verts (((12 * i124) + (291 * i29)) + 12)
-        t126 <- rdU verts (((12 * i124) + (291 * i29)) + 13)
-        t127 <- rdU verts (((12 * i124) + (291 * i29)) + 14)
+        chkI outline ((3 * i124) + (72 * i29)) 0 2
+        t125 <- rdU outline ((3 * i124) + (72 * i29))
+        t126 <- rdU outline (((3 * i124) + (72 * i29)) + 1)
+        t127 <- rdU outline (((3 * i124) + (72 * i29)) + 2)
         if (negate (0.4 - (abs t126))) > 0 then do
           let !s128 = ((t125 * s122) + (t127 * s123))
           t129 <- rdU locals 5
@@ -352,10 +352,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         pure ()
       t131 <- rdU locals 7
       t132 <- rdU locals 8
-      chkI verts ((12 * (truncate t131)) + (291 * i29)) 12 14
-      t133 <- rdU verts (((12 * (truncate t131)) + (291 * i29)) + 12)
-      t134 <- rdU verts (((12 * (truncate t131)) + (291 * i29)) + 13)
-      t135 <- rdU verts (((12 * (truncate t131)) + (291 * i29)) + 14)
+      chkI outline ((3 * (truncate t131)) + (72 * i29)) 0 2
+      t133 <- rdU outline ((3 * (truncate t131)) + (72 * i29))
+      t134 <- rdU outline (((3 * (truncate t131)) + (72 * i29)) + 1)
+      t135 <- rdU outline (((3 * (truncate t131)) + (72 * i29)) + 2)
       let !s136 = (negate (signum t134))
       let !s137 = (sqrt (s136 * s136))
       let !s138 = (0.4 - (abs t134))
@@ -451,10 +451,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         wrU meta 6 (t178 + 1.0)
         pure ()
       if (abs (t132 - t131)) > 0 then do
-        chkI verts ((12 * (truncate t132)) + (291 * i29)) 12 14
-        t179 <- rdU verts (((12 * (truncate t132)) + (291 * i29)) + 12)
-        t180 <- rdU verts (((12 * (truncate t132)) + (291 * i29)) + 13)
-        t181 <- rdU verts (((12 * (truncate t132)) + (291 * i29)) + 14)
+        chkI outline ((3 * (truncate t132)) + (72 * i29)) 0 2
+        t179 <- rdU outline ((3 * (truncate t132)) + (72 * i29))
+        t180 <- rdU outline (((3 * (truncate t132)) + (72 * i29)) + 1)
+        t181 <- rdU outline (((3 * (truncate t132)) + (72 * i29)) + 2)
         let !s182 = (negate (signum t180))
         let !s183 = (sqrt (s182 * s182))
         let !s184 = (0.4 - (abs t180))
@@ -562,10 +562,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 9 1.0
     loopI 0.0 24.0 $ \i228 -> do
       let !d228 = fromIntegral i228 :: Double
-      chkI verts ((12 * i228) + (291 * i29)) 12 14
-      t229 <- rdU verts (((12 * i228) + (291 * i29)) + 12)
-      t230 <- rdU verts (((12 * i228) + (291 * i29)) + 13)
-      t231 <- rdU verts (((12 * i228) + (291 * i29)) + 14)
+      chkI outline ((3 * i228) + (72 * i29)) 0 2
+      t229 <- rdU outline ((3 * i228) + (72 * i29))
+      t230 <- rdU outline (((3 * i228) + (72 * i29)) + 1)
+      t231 <- rdU outline (((3 * i228) + (72 * i29)) + 2)
       chkI radii (i228 + (24 * i29)) 0 0
       t232 <- rdU radii (i228 + (24 * i29))
       t233 <- rdU locals 9
@@ -845,11 +845,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 2 2
   t0 <- rdU params 2
-  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+  solvePrepare meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
   t1 <- rdU mouse 0
   if t1 > 0 then do
@@ -1153,7 +1153,7 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   loopI 0.0 t0 $ \i276 -> do
     let !d276 = fromIntegral i276 :: Double
-    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    solveSweep meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
     t277 <- rdU mouse 0
     if t277 > 0 then do
       chkI mouse 0 1 1
@@ -1509,8 +1509,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1668,8 +1668,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
@@ -1785,451 +1785,475 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
         let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
         let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
+        let !t74 = (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73))))
+        let !s75 = (if t74 > 0 then s71 else t2)
+        let !s76 = (if t74 > 0 then s72 else t3)
+        let !s77 = (if t74 > 0 then s73 else t4)
         chkI verts ((291 * i1) + (12 * i55)) 3 5
-        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
-        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
-        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
+        wrU verts (((291 * i1) + (12 * i55)) + 3) s75
+        wrU verts (((291 * i1) + (12 * i55)) + 4) s76
+        wrU verts (((291 * i1) + (12 * i55)) + 5) s77
         wrU walk (12 * i55) s71
         wrU walk ((12 * i55) + 1) s72
         wrU walk ((12 * i55) + 2) s73
-        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
-        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
-        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
-        let !t77 = (t67 * (t56 + t56))
-        let !t78 = (t67 * (t58 + t58))
-        let !t79 = (sqrt ((t77 * t77) + (t78 * t78)))
-        let !t80 = (if t79 > 0 then (recip (if (t79 - 1.0e-300) > 0 then t79 else 1.0e-300)) else 0.0)
-        let !t81 = (t80 * t77)
-        let !t82 = (t80 * t78)
-        let !t83 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
-        let !t84 = ((t81 * t76) + (t82 * t83))
-        let !t85 = (t76 + (negate (t84 * t81)))
-        let !t86 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
-        let !t87 = (t83 + (negate (t84 * t82)))
-        let !t88 = (sqrt (((t85 * t85) + (t86 * t86)) + (t87 * t87)))
-        let !t89 = (if t88 > 0 then (recip (if (t88 - 1.0e-300) > 0 then t88 else 1.0e-300)) else 0.0)
-        let !s90 = ((t64 * (t74 * (t89 * t85))) + (t70 * t61))
-        let !s91 = ((t64 * (t74 * (t89 * t86))) + (t70 * t62))
-        let !s92 = ((t64 * (t74 * (t89 * t87))) + (t70 * t63))
-        wrU walk ((12 * i55) + 3) s90
-        wrU walk ((12 * i55) + 4) s91
-        wrU walk ((12 * i55) + 5) s92
-        let !s93 = ((t64 * t81) + (t70 * t8))
-        let !s94 = (t70 * t9)
-        let !s95 = ((t64 * t82) + (t70 * t10))
-        wrU walk ((12 * i55) + 6) s93
-        wrU walk ((12 * i55) + 7) s94
-        wrU walk ((12 * i55) + 8) s95
+        let !t78 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
+        let !t79 = (if (abs s60) > 0 then (recip s60) else 0.0)
+        let !t80 = (t79 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
+        let !t81 = (t67 * (t56 + t56))
+        let !t82 = (t67 * (t58 + t58))
+        let !t83 = (sqrt ((t81 * t81) + (t82 * t82)))
+        let !t84 = (if t83 > 0 then (recip (if (t83 - 1.0e-300) > 0 then t83 else 1.0e-300)) else 0.0)
+        let !t85 = (t84 * t81)
+        let !t86 = (t84 * t82)
+        let !t87 = (t79 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
+        let !t88 = ((t85 * t80) + (t86 * t87))
+        let !t89 = (t80 + (negate (t88 * t85)))
+        let !t90 = (t79 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
+        let !t91 = (t87 + (negate (t88 * t86)))
+        let !t92 = (sqrt (((t89 * t89) + (t90 * t90)) + (t91 * t91)))
+        let !t93 = (if t92 > 0 then (recip (if (t92 - 1.0e-300) > 0 then t92 else 1.0e-300)) else 0.0)
+        let !s94 = ((t64 * (t78 * (t93 * t89))) + (t70 * t61))
+        let !s95 = ((t64 * (t78 * (t93 * t90))) + (t70 * t62))
+        let !s96 = ((t64 * (t78 * (t93 * t91))) + (t70 * t63))
+        wrU walk ((12 * i55) + 3) s94
+        wrU walk ((12 * i55) + 4) s95
+        wrU walk ((12 * i55) + 5) s96
+        let !s97 = ((t64 * t85) + (t70 * t8))
+        let !s98 = (t70 * t9)
+        let !s99 = ((t64 * t86) + (t70 * t10))
+        wrU walk ((12 * i55) + 6) s97
+        wrU walk ((12 * i55) + 7) s98
+        wrU walk ((12 * i55) + 8) s99
         pure ()
-      loopI 0.0 24.0 $ \i96 -> do
-        let !d96 = fromIntegral i96 :: Double
-        chkI walk (12 * i96) 0 11
-        t97 <- rdU walk ((12 * i96) + 6)
-        t98 <- rdU walk ((12 * i96) + 7)
-        t99 <- rdU walk ((12 * i96) + 8)
-        chkI radii ((24 * i1) + i96) 0 0
-        t100 <- rdU radii ((24 * i1) + i96)
-        let !s101 = (t100 / 4.0)
-        t102 <- rdU walk (12 * i96)
-        t103 <- rdU walk ((12 * i96) + 1)
-        t104 <- rdU walk ((12 * i96) + 2)
-        t105 <- rdU walk ((12 * i96) + 3)
-        t106 <- rdU walk ((12 * i96) + 4)
-        t107 <- rdU walk ((12 * i96) + 5)
-        let !s108 = (t102 + (s101 * t105))
-        let !s109 = (t103 + (s101 * t106))
-        let !s110 = (t104 + (s101 * t107))
-        let !t111 = (sqrt ((s108 * s108) + (s110 * s110)))
-        let !t112 = (t111 - 1.0)
-        let !t113 = (recip (2.0 * t111))
-        let !t114 = (((t113 * (s108 + s108)) * t97) + ((t113 * (s110 + s110)) * t99))
-        let !t115 = (if ((abs t112) - 1.0e-10) > 0 then (if (abs t114) > 0 then 1.0 else 0.0) else 0.0)
-        let !s116 = (if t115 > 0 then (s108 + (negate ((t112 / t114) * t97))) else s108)
-        let !s117 = (if t115 > 0 then (s109 + (negate ((t112 / t114) * t98))) else s109)
-        let !s118 = (if t115 > 0 then (s110 + (negate ((t112 / t114) * t99))) else s110)
-        wrU walk ((12 * i96) + 9) s116
-        wrU walk ((12 * i96) + 10) s117
-        wrU walk ((12 * i96) + 11) s118
+      loopI 0.0 24.0 $ \i100 -> do
+        let !d100 = fromIntegral i100 :: Double
+        chkI walk (12 * i100) 0 11
+        t101 <- rdU walk ((12 * i100) + 6)
+        t102 <- rdU walk ((12 * i100) + 7)
+        t103 <- rdU walk ((12 * i100) + 8)
+        chkI radii ((24 * i1) + i100) 0 0
+        t104 <- rdU radii ((24 * i1) + i100)
+        let !s105 = (t104 / 4.0)
+        t106 <- rdU walk (12 * i100)
+        t107 <- rdU walk ((12 * i100) + 1)
+        t108 <- rdU walk ((12 * i100) + 2)
+        t109 <- rdU walk ((12 * i100) + 3)
+        t110 <- rdU walk ((12 * i100) + 4)
+        t111 <- rdU walk ((12 * i100) + 5)
+        let !s112 = (t106 + (s105 * t109))
+        let !s113 = (t107 + (s105 * t110))
+        let !s114 = (t108 + (s105 * t111))
+        let !t115 = (sqrt ((s112 * s112) + (s114 * s114)))
+        let !t116 = (t115 - 1.0)
+        let !t117 = (recip (2.0 * t115))
+        let !t118 = (((t117 * (s112 + s112)) * t101) + ((t117 * (s114 + s114)) * t103))
+        let !t119 = (if ((abs t116) - 1.0e-10) > 0 then (if (abs t118) > 0 then 1.0 else 0.0) else 0.0)
+        let !s120 = (if t119 > 0 then (s112 + (negate ((t116 / t118) * t101))) else s112)
+        let !s121 = (if t119 > 0 then (s113 + (negate ((t116 / t118) * t102))) else s113)
+        let !s122 = (if t119 > 0 then (s114 + (negate ((t116 / t118) * t103))) else s114)
+        wrU walk ((12 * i100) + 9) s120
+        wrU walk ((12 * i100) + 10) s121
+        wrU walk ((12 * i100) + 11) s122
         pure ()
-      loopI 0.0 24.0 $ \i119 -> do
-        let !d119 = fromIntegral i119 :: Double
-        chkI walk (12 * i119) 6 11
-        t120 <- rdU walk ((12 * i119) + 6)
-        t121 <- rdU walk ((12 * i119) + 7)
-        t122 <- rdU walk ((12 * i119) + 8)
-        t123 <- rdU walk ((12 * i119) + 9)
-        t124 <- rdU walk ((12 * i119) + 10)
-        t125 <- rdU walk ((12 * i119) + 11)
-        let !t126 = (sqrt ((t123 * t123) + (t125 * t125)))
-        let !t127 = (t126 - 1.0)
-        let !t128 = (recip (2.0 * t126))
-        let !t129 = (((t128 * (t123 + t123)) * t120) + ((t128 * (t125 + t125)) * t122))
-        let !t130 = (if ((abs t127) - 1.0e-10) > 0 then (if (abs t129) > 0 then 1.0 else 0.0) else 0.0)
-        let !s131 = (if t130 > 0 then (t123 + (negate ((t127 / t129) * t120))) else t123)
-        let !s132 = (if t130 > 0 then (t124 + (negate ((t127 / t129) * t121))) else t124)
-        let !s133 = (if t130 > 0 then (t125 + (negate ((t127 / t129) * t122))) else t125)
-        wrU walk ((12 * i119) + 9) s131
-        wrU walk ((12 * i119) + 10) s132
-        wrU walk ((12 * i119) + 11) s133
+      loopI 0.0 24.0 $ \i123 -> do
+        let !d123 = fromIntegral i123 :: Double
+        chkI walk (12 * i123) 6 11
+        t124 <- rdU walk ((12 * i123) + 6)
+        t125 <- rdU walk ((12 * i123) + 7)
+        t126 <- rdU walk ((12 * i123) + 8)
+        t127 <- rdU walk ((12 * i123) + 9)
+        t128 <- rdU walk ((12 * i123) + 10)
+        t129 <- rdU walk ((12 * i123) + 11)
+        let !t130 = (sqrt ((t127 * t127) + (t129 * t129)))
+        let !t131 = (t130 - 1.0)
+        let !t132 = (recip (2.0 * t130))
+        let !t133 = (((t132 * (t127 + t127)) * t124) + ((t132 * (t129 + t129)) * t126))
+        let !t134 = (if ((abs t131) - 1.0e-10) > 0 then (if (abs t133) > 0 then 1.0 else 0.0) else 0.0)
+        let !s135 = (if t134 > 0 then (t127 + (negate ((t131 / t133) * t124))) else t127)
+        let !s136 = (if t134 > 0 then (t128 + (negate ((t131 / t133) * t125))) else t128)
+        let !s137 = (if t134 > 0 then (t129 + (negate ((t131 / t133) * t126))) else t129)
+        wrU walk ((12 * i123) + 9) s135
+        wrU walk ((12 * i123) + 10) s136
+        wrU walk ((12 * i123) + 11) s137
         pure ()
-      loopI 0.0 24.0 $ \i134 -> do
-        let !d134 = fromIntegral i134 :: Double
-        chkI walk (12 * i134) 0 11
-        t135 <- rdU walk ((12 * i134) + 6)
-        t136 <- rdU walk ((12 * i134) + 7)
-        t137 <- rdU walk ((12 * i134) + 8)
-        t138 <- rdU walk ((12 * i134) + 9)
-        t139 <- rdU walk ((12 * i134) + 10)
-        t140 <- rdU walk ((12 * i134) + 11)
-        chkI radii ((24 * i1) + i134) 0 0
-        t141 <- rdU radii ((24 * i1) + i134)
-        let !s142 = (t141 / 4.0)
-        t143 <- rdU walk (12 * i134)
-        t144 <- rdU walk ((12 * i134) + 1)
-        t145 <- rdU walk ((12 * i134) + 2)
-        t146 <- rdU walk ((12 * i134) + 3)
-        t147 <- rdU walk ((12 * i134) + 4)
-        t148 <- rdU walk ((12 * i134) + 5)
-        let !t149 = (if (abs s142) > 0 then 1.0 else 0.0)
-        let !t150 = (sqrt ((t138 * t138) + (t140 * t140)))
-        let !t151 = (t150 - 1.0)
-        let !t152 = (recip (2.0 * t150))
-        let !t153 = (((t152 * (t138 + t138)) * t135) + ((t152 * (t140 + t140)) * t137))
-        let !t154 = (if ((abs t151) - 1.0e-10) > 0 then (if (abs t153) > 0 then 1.0 else 0.0) else 0.0)
-        let !t155 = (1.0 - t149)
-        let !s156 = ((t149 * (if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138)) + (t155 * t143))
-        let !s157 = ((t149 * (if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139)) + (t155 * t144))
-        let !s158 = ((t149 * (if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140)) + (t155 * t145))
-        chkI verts ((291 * i1) + (12 * i134)) 6 8
-        wrU verts (((291 * i1) + (12 * i134)) + 6) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s156 else t2)
-        wrU verts (((291 * i1) + (12 * i134)) + 7) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s157 else t3)
-        wrU verts (((291 * i1) + (12 * i134)) + 8) (if (1.0 - (abs (((s156 - s156) + (s157 - s157)) + (s158 - s158)))) > 0 then s158 else t4)
-        wrU walk (12 * i134) s156
-        wrU walk ((12 * i134) + 1) s157
-        wrU walk ((12 * i134) + 2) s158
-        let !t159 = (sqrt (((t146 * t146) + (t147 * t147)) + (t148 * t148)))
-        let !t160 = (if (abs s142) > 0 then (recip s142) else 0.0)
-        let !t161 = (t160 * ((if t154 > 0 then (t138 + (negate ((t151 / t153) * t135))) else t138) + (negate t143)))
-        let !t162 = (t152 * (t138 + t138))
-        let !t163 = (t152 * (t140 + t140))
-        let !t164 = (sqrt ((t162 * t162) + (t163 * t163)))
-        let !t165 = (if t164 > 0 then (recip (if (t164 - 1.0e-300) > 0 then t164 else 1.0e-300)) else 0.0)
-        let !t166 = (t165 * t162)
-        let !t167 = (t165 * t163)
-        let !t168 = (t160 * ((if t154 > 0 then (t140 + (negate ((t151 / t153) * t137))) else t140) + (negate t145)))
-        let !t169 = ((t166 * t161) + (t167 * t168))
-        let !t170 = (t161 + (negate (t169 * t166)))
-        let !t171 = (t160 * ((if t154 > 0 then (t139 + (negate ((t151 / t153) * t136))) else t139) + (negate t144)))
-        let !t172 = (t168 + (negate (t169 * t167)))
-        let !t173 = (sqrt (((t170 * t170) + (t171 * t171)) + (t172 * t172)))
-        let !t174 = (if t173 > 0 then (recip (if (t173 - 1.0e-300) > 0 then t173 else 1.0e-300)) else 0.0)
-        let !s175 = ((t149 * (t159 * (t174 * t170))) + (t155 * t146))
-        let !s176 = ((t149 * (t159 * (t174 * t171))) + (t155 * t147))
-        let !s177 = ((t149 * (t159 * (t174 * t172))) + (t155 * t148))
-        wrU walk ((12 * i134) + 3) s175
-        wrU walk ((12 * i134) + 4) s176
-        wrU walk ((12 * i134) + 5) s177
-        let !s178 = ((t149 * t166) + (t155 * t135))
-        let !s179 = (t155 * t136)
-        let !s180 = ((t149 * t167) + (t155 * t137))
-        wrU walk ((12 * i134) + 6) s178
-        wrU walk ((12 * i134) + 7) s179
-        wrU walk ((12 * i134) + 8) s180
+      loopI 0.0 24.0 $ \i138 -> do
+        let !d138 = fromIntegral i138 :: Double
+        chkI walk (12 * i138) 0 11
+        t139 <- rdU walk ((12 * i138) + 6)
+        t140 <- rdU walk ((12 * i138) + 7)
+        t141 <- rdU walk ((12 * i138) + 8)
+        t142 <- rdU walk ((12 * i138) + 9)
+        t143 <- rdU walk ((12 * i138) + 10)
+        t144 <- rdU walk ((12 * i138) + 11)
+        chkI radii ((24 * i1) + i138) 0 0
+        t145 <- rdU radii ((24 * i1) + i138)
+        let !s146 = (t145 / 4.0)
+        t147 <- rdU walk (12 * i138)
+        t148 <- rdU walk ((12 * i138) + 1)
+        t149 <- rdU walk ((12 * i138) + 2)
+        t150 <- rdU walk ((12 * i138) + 3)
+        t151 <- rdU walk ((12 * i138) + 4)
+        t152 <- rdU walk ((12 * i138) + 5)
+        let !t153 = (if (abs s146) > 0 then 1.0 else 0.0)
+        let !t154 = (sqrt ((t142 * t142) + (t144 * t144)))
+        let !t155 = (t154 - 1.0)
+        let !t156 = (recip (2.0 * t154))
+        let !t157 = (((t156 * (t142 + t142)) * t139) + ((t156 * (t144 + t144)) * t141))
+        let !t158 = (if ((abs t155) - 1.0e-10) > 0 then (if (abs t157) > 0 then 1.0 else 0.0) else 0.0)
+        let !t159 = (1.0 - t153)
+        let !s160 = ((t153 * (if t158 > 0 then (t142 + (negate ((t155 / t157) * t139))) else t142)) + (t159 * t147))
+        let !s161 = ((t153 * (if t158 > 0 then (t143 + (negate ((t155 / t157) * t140))) else t143)) + (t159 * t148))
+        let !s162 = ((t153 * (if t158 > 0 then (t144 + (negate ((t155 / t157) * t141))) else t144)) + (t159 * t149))
+        let !t163 = (1.0 - (abs (((s160 - s160) + (s161 - s161)) + (s162 - s162))))
+        let !s164 = (if t163 > 0 then s160 else t2)
+        let !s165 = (if t163 > 0 then s161 else t3)
+        let !s166 = (if t163 > 0 then s162 else t4)
+        chkI verts ((291 * i1) + (12 * i138)) 6 8
+        wrU verts (((291 * i1) + (12 * i138)) + 6) s164
+        wrU verts (((291 * i1) + (12 * i138)) + 7) s165
+        wrU verts (((291 * i1) + (12 * i138)) + 8) s166
+        wrU walk (12 * i138) s160
+        wrU walk ((12 * i138) + 1) s161
+        wrU walk ((12 * i138) + 2) s162
+        let !t167 = (sqrt (((t150 * t150) + (t151 * t151)) + (t152 * t152)))
+        let !t168 = (if (abs s146) > 0 then (recip s146) else 0.0)
+        let !t169 = (t168 * ((if t158 > 0 then (t142 + (negate ((t155 / t157) * t139))) else t142) + (negate t147)))
+        let !t170 = (t156 * (t142 + t142))
+        let !t171 = (t156 * (t144 + t144))
+        let !t172 = (sqrt ((t170 * t170) + (t171 * t171)))
+        let !t173 = (if t172 > 0 then (recip (if (t172 - 1.0e-300) > 0 then t172 else 1.0e-300)) else 0.0)
+        let !t174 = (t173 * t170)
+        let !t175 = (t173 * t171)
+        let !t176 = (t168 * ((if t158 > 0 then (t144 + (negate ((t155 / t157) * t141))) else t144) + (negate t149)))
+        let !t177 = ((t174 * t169) + (t175 * t176))
+        let !t178 = (t169 + (negate (t177 * t174)))
+        let !t179 = (t168 * ((if t158 > 0 then (t143 + (negate ((t155 / t157) * t140))) else t143) + (negate t148)))
+        let !t180 = (t176 + (negate (t177 * t175)))
+        let !t181 = (sqrt (((t178 * t178) + (t179 * t179)) + (t180 * t180)))
+        let !t182 = (if t181 > 0 then (recip (if (t181 - 1.0e-300) > 0 then t181 else 1.0e-300)) else 0.0)
+        let !s183 = ((t153 * (t167 * (t182 * t178))) + (t159 * t150))
+        let !s184 = ((t153 * (t167 * (t182 * t179))) + (t159 * t151))
+        let !s185 = ((t153 * (t167 * (t182 * t180))) + (t159 * t152))
+        wrU walk ((12 * i138) + 3) s183
+        wrU walk ((12 * i138) + 4) s184
+        wrU walk ((12 * i138) + 5) s185
+        let !s186 = ((t153 * t174) + (t159 * t139))
+        let !s187 = (t159 * t140)
+        let !s188 = ((t153 * t175) + (t159 * t141))
+        wrU walk ((12 * i138) + 6) s186
+        wrU walk ((12 * i138) + 7) s187
+        wrU walk ((12 * i138) + 8) s188
         pure ()
-      loopI 0.0 24.0 $ \i181 -> do
-        let !d181 = fromIntegral i181 :: Double
-        chkI walk (12 * i181) 0 11
-        t182 <- rdU walk ((12 * i181) + 6)
-        t183 <- rdU walk ((12 * i181) + 7)
-        t184 <- rdU walk ((12 * i181) + 8)
-        chkI radii ((24 * i1) + i181) 0 0
-        t185 <- rdU radii ((24 * i1) + i181)
-        let !s186 = (t185 / 4.0)
-        t187 <- rdU walk (12 * i181)
-        t188 <- rdU walk ((12 * i181) + 1)
-        t189 <- rdU walk ((12 * i181) + 2)
-        t190 <- rdU walk ((12 * i181) + 3)
-        t191 <- rdU walk ((12 * i181) + 4)
-        t192 <- rdU walk ((12 * i181) + 5)
-        let !s193 = (t187 + (s186 * t190))
-        let !s194 = (t188 + (s186 * t191))
-        let !s195 = (t189 + (s186 * t192))
-        let !t196 = (sqrt ((s193 * s193) + (s195 * s195)))
-        let !t197 = (t196 - 1.0)
-        let !t198 = (recip (2.0 * t196))
-        let !t199 = (((t198 * (s193 + s193)) * t182) + ((t198 * (s195 + s195)) * t184))
-        let !t200 = (if ((abs t197) - 1.0e-10) > 0 then (if (abs t199) > 0 then 1.0 else 0.0) else 0.0)
-        let !s201 = (if t200 > 0 then (s193 + (negate ((t197 / t199) * t182))) else s193)
-        let !s202 = (if t200 > 0 then (s194 + (negate ((t197 / t199) * t183))) else s194)
-        let !s203 = (if t200 > 0 then (s195 + (negate ((t197 / t199) * t184))) else s195)
-        wrU walk ((12 * i181) + 9) s201
-        wrU walk ((12 * i181) + 10) s202
-        wrU walk ((12 * i181) + 11) s203
+      loopI 0.0 24.0 $ \i189 -> do
+        let !d189 = fromIntegral i189 :: Double
+        chkI walk (12 * i189) 0 11
+        t190 <- rdU walk ((12 * i189) + 6)
+        t191 <- rdU walk ((12 * i189) + 7)
+        t192 <- rdU walk ((12 * i189) + 8)
+        chkI radii ((24 * i1) + i189) 0 0
+        t193 <- rdU radii ((24 * i1) + i189)
+        let !s194 = (t193 / 4.0)
+        t195 <- rdU walk (12 * i189)
+        t196 <- rdU walk ((12 * i189) + 1)
+        t197 <- rdU walk ((12 * i189) + 2)
+        t198 <- rdU walk ((12 * i189) + 3)
+        t199 <- rdU walk ((12 * i189) + 4)
+        t200 <- rdU walk ((12 * i189) + 5)
+        let !s201 = (t195 + (s194 * t198))
+        let !s202 = (t196 + (s194 * t199))
+        let !s203 = (t197 + (s194 * t200))
+        let !t204 = (sqrt ((s201 * s201) + (s203 * s203)))
+        let !t205 = (t204 - 1.0)
+        let !t206 = (recip (2.0 * t204))
+        let !t207 = (((t206 * (s201 + s201)) * t190) + ((t206 * (s203 + s203)) * t192))
+        let !t208 = (if ((abs t205) - 1.0e-10) > 0 then (if (abs t207) > 0 then 1.0 else 0.0) else 0.0)
+        let !s209 = (if t208 > 0 then (s201 + (negate ((t205 / t207) * t190))) else s201)
+        let !s210 = (if t208 > 0 then (s202 + (negate ((t205 / t207) * t191))) else s202)
+        let !s211 = (if t208 > 0 then (s203 + (negate ((t205 / t207) * t192))) else s203)
+        wrU walk ((12 * i189) + 9) s209
+        wrU walk ((12 * i189) + 10) s210
+        wrU walk ((12 * i189) + 11) s211
         pure ()
-      loopI 0.0 24.0 $ \i204 -> do
-        let !d204 = fromIntegral i204 :: Double
-        chkI walk (12 * i204) 6 11
-        t205 <- rdU walk ((12 * i204) + 6)
-        t206 <- rdU walk ((12 * i204) + 7)
-        t207 <- rdU walk ((12 * i204) + 8)
-        t208 <- rdU walk ((12 * i204) + 9)
-        t209 <- rdU walk ((12 * i204) + 10)
-        t210 <- rdU walk ((12 * i204) + 11)
-        let !t211 = (sqrt ((t208 * t208) + (t210 * t210)))
-        let !t212 = (t211 - 1.0)
-        let !t213 = (recip (2.0 * t211))
-        let !t214 = (((t213 * (t208 + t208)) * t205) + ((t213 * (t210 + t210)) * t207))
-        let !t215 = (if ((abs t212) - 1.0e-10) > 0 then (if (abs t214) > 0 then 1.0 else 0.0) else 0.0)
-        let !s216 = (if t215 > 0 then (t208 + (negate ((t212 / t214) * t205))) else t208)
-        let !s217 = (if t215 > 0 then (t209 + (negate ((t212 / t214) * t206))) else t209)
-        let !s218 = (if t215 > 0 then (t210 + (negate ((t212 / t214) * t207))) else t210)
-        wrU walk ((12 * i204) + 9) s216
-        wrU walk ((12 * i204) + 10) s217
-        wrU walk ((12 * i204) + 11) s218
+      loopI 0.0 24.0 $ \i212 -> do
+        let !d212 = fromIntegral i212 :: Double
+        chkI walk (12 * i212) 6 11
+        t213 <- rdU walk ((12 * i212) + 6)
+        t214 <- rdU walk ((12 * i212) + 7)
+        t215 <- rdU walk ((12 * i212) + 8)
+        t216 <- rdU walk ((12 * i212) + 9)
+        t217 <- rdU walk ((12 * i212) + 10)
+        t218 <- rdU walk ((12 * i212) + 11)
+        let !t219 = (sqrt ((t216 * t216) + (t218 * t218)))
+        let !t220 = (t219 - 1.0)
+        let !t221 = (recip (2.0 * t219))
+        let !t222 = (((t221 * (t216 + t216)) * t213) + ((t221 * (t218 + t218)) * t215))
+        let !t223 = (if ((abs t220) - 1.0e-10) > 0 then (if (abs t222) > 0 then 1.0 else 0.0) else 0.0)
+        let !s224 = (if t223 > 0 then (t216 + (negate ((t220 / t222) * t213))) else t216)
+        let !s225 = (if t223 > 0 then (t217 + (negate ((t220 / t222) * t214))) else t217)
+        let !s226 = (if t223 > 0 then (t218 + (negate ((t220 / t222) * t215))) else t218)
+        wrU walk ((12 * i212) + 9) s224
+        wrU walk ((12 * i212) + 10) s225
+        wrU walk ((12 * i212) + 11) s226
         pure ()
-      loopI 0.0 24.0 $ \i219 -> do
-        let !d219 = fromIntegral i219 :: Double
-        chkI walk (12 * i219) 0 11
-        t220 <- rdU walk ((12 * i219) + 6)
-        t221 <- rdU walk ((12 * i219) + 7)
-        t222 <- rdU walk ((12 * i219) + 8)
-        t223 <- rdU walk ((12 * i219) + 9)
-        t224 <- rdU walk ((12 * i219) + 10)
-        t225 <- rdU walk ((12 * i219) + 11)
-        chkI radii ((24 * i1) + i219) 0 0
-        t226 <- rdU radii ((24 * i1) + i219)
-        let !s227 = (t226 / 4.0)
-        t228 <- rdU walk (12 * i219)
-        t229 <- rdU walk ((12 * i219) + 1)
-        t230 <- rdU walk ((12 * i219) + 2)
-        t231 <- rdU walk ((12 * i219) + 3)
-        t232 <- rdU walk ((12 * i219) + 4)
-        t233 <- rdU walk ((12 * i219) + 5)
-        let !t234 = (if (abs s227) > 0 then 1.0 else 0.0)
-        let !t235 = (sqrt ((t223 * t223) + (t225 * t225)))
-        let !t236 = (t235 - 1.0)
-        let !t237 = (recip (2.0 * t235))
-        let !t238 = (((t237 * (t223 + t223)) * t220) + ((t237 * (t225 + t225)) * t222))
-        let !t239 = (if ((abs t236) - 1.0e-10) > 0 then (if (abs t238) > 0 then 1.0 else 0.0) else 0.0)
-        let !t240 = (1.0 - t234)
-        let !s241 = ((t234 * (if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223)) + (t240 * t228))
-        let !s242 = ((t234 * (if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224)) + (t240 * t229))
-        let !s243 = ((t234 * (if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225)) + (t240 * t230))
-        chkI verts ((291 * i1) + (12 * i219)) 9 11
-        wrU verts (((291 * i1) + (12 * i219)) + 9) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s241 else t2)
-        wrU verts (((291 * i1) + (12 * i219)) + 10) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s242 else t3)
-        wrU verts (((291 * i1) + (12 * i219)) + 11) (if (1.0 - (abs (((s241 - s241) + (s242 - s242)) + (s243 - s243)))) > 0 then s243 else t4)
-        wrU walk (12 * i219) s241
-        wrU walk ((12 * i219) + 1) s242
-        wrU walk ((12 * i219) + 2) s243
-        let !t244 = (sqrt (((t231 * t231) + (t232 * t232)) + (t233 * t233)))
-        let !t245 = (if (abs s227) > 0 then (recip s227) else 0.0)
-        let !t246 = (t245 * ((if t239 > 0 then (t223 + (negate ((t236 / t238) * t220))) else t223) + (negate t228)))
-        let !t247 = (t237 * (t223 + t223))
-        let !t248 = (t237 * (t225 + t225))
-        let !t249 = (sqrt ((t247 * t247) + (t248 * t248)))
-        let !t250 = (if t249 > 0 then (recip (if (t249 - 1.0e-300) > 0 then t249 else 1.0e-300)) else 0.0)
-        let !t251 = (t250 * t247)
-        let !t252 = (t250 * t248)
-        let !t253 = (t245 * ((if t239 > 0 then (t225 + (negate ((t236 / t238) * t222))) else t225) + (negate t230)))
-        let !t254 = ((t251 * t246) + (t252 * t253))
-        let !t255 = (t246 + (negate (t254 * t251)))
-        let !t256 = (t245 * ((if t239 > 0 then (t224 + (negate ((t236 / t238) * t221))) else t224) + (negate t229)))
-        let !t257 = (t253 + (negate (t254 * t252)))
-        let !t258 = (sqrt (((t255 * t255) + (t256 * t256)) + (t257 * t257)))
-        let !t259 = (if t258 > 0 then (recip (if (t258 - 1.0e-300) > 0 then t258 else 1.0e-300)) else 0.0)
-        let !s260 = ((t234 * (t244 * (t259 * t255))) + (t240 * t231))
-        let !s261 = ((t234 * (t244 * (t259 * t256))) + (t240 * t232))
-        let !s262 = ((t234 * (t244 * (t259 * t257))) + (t240 * t233))
-        wrU walk ((12 * i219) + 3) s260
-        wrU walk ((12 * i219) + 4) s261
-        wrU walk ((12 * i219) + 5) s262
-        let !s263 = ((t234 * t251) + (t240 * t220))
-        let !s264 = (t240 * t221)
-        let !s265 = ((t234 * t252) + (t240 * t222))
-        wrU walk ((12 * i219) + 6) s263
-        wrU walk ((12 * i219) + 7) s264
-        wrU walk ((12 * i219) + 8) s265
+      loopI 0.0 24.0 $ \i227 -> do
+        let !d227 = fromIntegral i227 :: Double
+        chkI walk (12 * i227) 0 11
+        t228 <- rdU walk ((12 * i227) + 6)
+        t229 <- rdU walk ((12 * i227) + 7)
+        t230 <- rdU walk ((12 * i227) + 8)
+        t231 <- rdU walk ((12 * i227) + 9)
+        t232 <- rdU walk ((12 * i227) + 10)
+        t233 <- rdU walk ((12 * i227) + 11)
+        chkI radii ((24 * i1) + i227) 0 0
+        t234 <- rdU radii ((24 * i1) + i227)
+        let !s235 = (t234 / 4.0)
+        t236 <- rdU walk (12 * i227)
+        t237 <- rdU walk ((12 * i227) + 1)
+        t238 <- rdU walk ((12 * i227) + 2)
+        t239 <- rdU walk ((12 * i227) + 3)
+        t240 <- rdU walk ((12 * i227) + 4)
+        t241 <- rdU walk ((12 * i227) + 5)
+        let !t242 = (if (abs s235) > 0 then 1.0 else 0.0)
+        let !t243 = (sqrt ((t231 * t231) + (t233 * t233)))
+        let !t244 = (t243 - 1.0)
+        let !t245 = (recip (2.0 * t243))
+        let !t246 = (((t245 * (t231 + t231)) * t228) + ((t245 * (t233 + t233)) * t230))
+        let !t247 = (if ((abs t244) - 1.0e-10) > 0 then (if (abs t246) > 0 then 1.0 else 0.0) else 0.0)
+        let !t248 = (1.0 - t242)
+        let !s249 = ((t242 * (if t247 > 0 then (t231 + (negate ((t244 / t246) * t228))) else t231)) + (t248 * t236))
+        let !s250 = ((t242 * (if t247 > 0 then (t232 + (negate ((t244 / t246) * t229))) else t232)) + (t248 * t237))
+        let !s251 = ((t242 * (if t247 > 0 then (t233 + (negate ((t244 / t246) * t230))) else t233)) + (t248 * t238))
+        let !t252 = (1.0 - (abs (((s249 - s249) + (s250 - s250)) + (s251 - s251))))
+        let !s253 = (if t252 > 0 then s249 else t2)
+        let !s254 = (if t252 > 0 then s250 else t3)
+        let !s255 = (if t252 > 0 then s251 else t4)
+        chkI verts ((291 * i1) + (12 * i227)) 9 11
+        wrU verts (((291 * i1) + (12 * i227)) + 9) s253
+        wrU verts (((291 * i1) + (12 * i227)) + 10) s254
+        wrU verts (((291 * i1) + (12 * i227)) + 11) s255
+        wrU walk (12 * i227) s249
+        wrU walk ((12 * i227) + 1) s250
+        wrU walk ((12 * i227) + 2) s251
+        let !t256 = (sqrt (((t239 * t239) + (t240 * t240)) + (t241 * t241)))
+        let !t257 = (if (abs s235) > 0 then (recip s235) else 0.0)
+        let !t258 = (t257 * ((if t247 > 0 then (t231 + (negate ((t244 / t246) * t228))) else t231) + (negate t236)))
+        let !t259 = (t245 * (t231 + t231))
+        let !t260 = (t245 * (t233 + t233))
+        let !t261 = (sqrt ((t259 * t259) + (t260 * t260)))
+        let !t262 = (if t261 > 0 then (recip (if (t261 - 1.0e-300) > 0 then t261 else 1.0e-300)) else 0.0)
+        let !t263 = (t262 * t259)
+        let !t264 = (t262 * t260)
+        let !t265 = (t257 * ((if t247 > 0 then (t233 + (negate ((t244 / t246) * t230))) else t233) + (negate t238)))
+        let !t266 = ((t263 * t258) + (t264 * t265))
+        let !t267 = (t258 + (negate (t266 * t263)))
+        let !t268 = (t257 * ((if t247 > 0 then (t232 + (negate ((t244 / t246) * t229))) else t232) + (negate t237)))
+        let !t269 = (t265 + (negate (t266 * t264)))
+        let !t270 = (sqrt (((t267 * t267) + (t268 * t268)) + (t269 * t269)))
+        let !t271 = (if t270 > 0 then (recip (if (t270 - 1.0e-300) > 0 then t270 else 1.0e-300)) else 0.0)
+        let !s272 = ((t242 * (t256 * (t271 * t267))) + (t248 * t239))
+        let !s273 = ((t242 * (t256 * (t271 * t268))) + (t248 * t240))
+        let !s274 = ((t242 * (t256 * (t271 * t269))) + (t248 * t241))
+        wrU walk ((12 * i227) + 3) s272
+        wrU walk ((12 * i227) + 4) s273
+        wrU walk ((12 * i227) + 5) s274
+        let !s275 = ((t242 * t263) + (t248 * t228))
+        let !s276 = (t248 * t229)
+        let !s277 = ((t242 * t264) + (t248 * t230))
+        wrU walk ((12 * i227) + 6) s275
+        wrU walk ((12 * i227) + 7) s276
+        wrU walk ((12 * i227) + 8) s277
         pure ()
-      loopI 0.0 24.0 $ \i266 -> do
-        let !d266 = fromIntegral i266 :: Double
-        chkI walk (12 * i266) 0 11
-        t267 <- rdU walk ((12 * i266) + 6)
-        t268 <- rdU walk ((12 * i266) + 7)
-        t269 <- rdU walk ((12 * i266) + 8)
-        chkI radii ((24 * i1) + i266) 0 0
-        t270 <- rdU radii ((24 * i1) + i266)
-        let !s271 = (t270 / 4.0)
-        t272 <- rdU walk (12 * i266)
-        t273 <- rdU walk ((12 * i266) + 1)
-        t274 <- rdU walk ((12 * i266) + 2)
-        t275 <- rdU walk ((12 * i266) + 3)
-        t276 <- rdU walk ((12 * i266) + 4)
-        t277 <- rdU walk ((12 * i266) + 5)
-        let !s278 = (t272 + (s271 * t275))
-        let !s279 = (t273 + (s271 * t276))
-        let !s280 = (t274 + (s271 * t277))
-        let !t281 = (sqrt ((s278 * s278) + (s280 * s280)))
-        let !t282 = (t281 - 1.0)
-        let !t283 = (recip (2.0 * t281))
-        let !t284 = (((t283 * (s278 + s278)) * t267) + ((t283 * (s280 + s280)) * t269))
-        let !t285 = (if ((abs t282) - 1.0e-10) > 0 then (if (abs t284) > 0 then 1.0 else 0.0) else 0.0)
-        let !s286 = (if t285 > 0 then (s278 + (negate ((t282 / t284) * t267))) else s278)
-        let !s287 = (if t285 > 0 then (s279 + (negate ((t282 / t284) * t268))) else s279)
-        let !s288 = (if t285 > 0 then (s280 + (negate ((t282 / t284) * t269))) else s280)
-        wrU walk ((12 * i266) + 9) s286
-        wrU walk ((12 * i266) + 10) s287
-        wrU walk ((12 * i266) + 11) s288
+      loopI 0.0 24.0 $ \i278 -> do
+        let !d278 = fromIntegral i278 :: Double
+        chkI walk (12 * i278) 0 11
+        t279 <- rdU walk ((12 * i278) + 6)
+        t280 <- rdU walk ((12 * i278) + 7)
+        t281 <- rdU walk ((12 * i278) + 8)
+        chkI radii ((24 * i1) + i278) 0 0
+        t282 <- rdU radii ((24 * i1) + i278)
+        let !s283 = (t282 / 4.0)
+        t284 <- rdU walk (12 * i278)
+        t285 <- rdU walk ((12 * i278) + 1)
+        t286 <- rdU walk ((12 * i278) + 2)
+        t287 <- rdU walk ((12 * i278) + 3)
+        t288 <- rdU walk ((12 * i278) + 4)
+        t289 <- rdU walk ((12 * i278) + 5)
+        let !s290 = (t284 + (s283 * t287))
+        let !s291 = (t285 + (s283 * t288))
+        let !s292 = (t286 + (s283 * t289))
+        let !t293 = (sqrt ((s290 * s290) + (s292 * s292)))
+        let !t294 = (t293 - 1.0)
+        let !t295 = (recip (2.0 * t293))
+        let !t296 = (((t295 * (s290 + s290)) * t279) + ((t295 * (s292 + s292)) * t281))
+        let !t297 = (if ((abs t294) - 1.0e-10) > 0 then (if (abs t296) > 0 then 1.0 else 0.0) else 0.0)
+        let !s298 = (if t297 > 0 then (s290 + (negate ((t294 / t296) * t279))) else s290)
+        let !s299 = (if t297 > 0 then (s291 + (negate ((t294 / t296) * t280))) else s291)
+        let !s300 = (if t297 > 0 then (s292 + (negate ((t294 / t296) * t281))) else s292)
+        wrU walk ((12 * i278) + 9) s298
+        wrU walk ((12 * i278) + 10) s299
+        wrU walk ((12 * i278) + 11) s300
         pure ()
-      loopI 0.0 24.0 $ \i289 -> do
-        let !d289 = fromIntegral i289 :: Double
-        chkI walk (12 * i289) 6 11
-        t290 <- rdU walk ((12 * i289) + 6)
-        t291 <- rdU walk ((12 * i289) + 7)
-        t292 <- rdU walk ((12 * i289) + 8)
-        t293 <- rdU walk ((12 * i289) + 9)
-        t294 <- rdU walk ((12 * i289) + 10)
-        t295 <- rdU walk ((12 * i289) + 11)
-        let !t296 = (sqrt ((t293 * t293) + (t295 * t295)))
-        let !t297 = (t296 - 1.0)
-        let !t298 = (recip (2.0 * t296))
-        let !t299 = (((t298 * (t293 + t293)) * t290) + ((t298 * (t295 + t295)) * t292))
-        let !t300 = (if ((abs t297) - 1.0e-10) > 0 then (if (abs t299) > 0 then 1.0 else 0.0) else 0.0)
-        let !s301 = (if t300 > 0 then (t293 + (negate ((t297 / t299) * t290))) else t293)
-        let !s302 = (if t300 > 0 then (t294 + (negate ((t297 / t299) * t291))) else t294)
-        let !s303 = (if t300 > 0 then (t295 + (negate ((t297 / t299) * t292))) else t295)
-        wrU walk ((12 * i289) + 9) s301
-        wrU walk ((12 * i289) + 10) s302
-        wrU walk ((12 * i289) + 11) s303
+      loopI 0.0 24.0 $ \i301 -> do
+        let !d301 = fromIntegral i301 :: Double
+        chkI walk (12 * i301) 6 11
+        t302 <- rdU walk ((12 * i301) + 6)
+        t303 <- rdU walk ((12 * i301) + 7)
+        t304 <- rdU walk ((12 * i301) + 8)
+        t305 <- rdU walk ((12 * i301) + 9)
+        t306 <- rdU walk ((12 * i301) + 10)
+        t307 <- rdU walk ((12 * i301) + 11)
+        let !t308 = (sqrt ((t305 * t305) + (t307 * t307)))
+        let !t309 = (t308 - 1.0)
+        let !t310 = (recip (2.0 * t308))
+        let !t311 = (((t310 * (t305 + t305)) * t302) + ((t310 * (t307 + t307)) * t304))
+        let !t312 = (if ((abs t309) - 1.0e-10) > 0 then (if (abs t311) > 0 then 1.0 else 0.0) else 0.0)
+        let !s313 = (if t312 > 0 then (t305 + (negate ((t309 / t311) * t302))) else t305)
+        let !s314 = (if t312 > 0 then (t306 + (negate ((t309 / t311) * t303))) else t306)
+        let !s315 = (if t312 > 0 then (t307 + (negate ((t309 / t311) * t304))) else t307)
+        wrU walk ((12 * i301) + 9) s313
+        wrU walk ((12 * i301) + 10) s314
+        wrU walk ((12 * i301) + 11) s315
         pure ()
-      loopI 0.0 24.0 $ \i304 -> do
-        let !d304 = fromIntegral i304 :: Double
-        chkI walk (12 * i304) 0 11
-        t305 <- rdU walk ((12 * i304) + 6)
-        t306 <- rdU walk ((12 * i304) + 7)
-        t307 <- rdU walk ((12 * i304) + 8)
-        t308 <- rdU walk ((12 * i304) + 9)
-        t309 <- rdU walk ((12 * i304) + 10)
-        t310 <- rdU walk ((12 * i304) + 11)
-        chkI radii ((24 * i1) + i304) 0 0
-        t311 <- rdU radii ((24 * i1) + i304)
-        let !s312 = (t311 / 4.0)
-        t313 <- rdU walk (12 * i304)
-        t314 <- rdU walk ((12 * i304) + 1)
-        t315 <- rdU walk ((12 * i304) + 2)
-        t316 <- rdU walk ((12 * i304) + 3)
-        t317 <- rdU walk ((12 * i304) + 4)
-        t318 <- rdU walk ((12 * i304) + 5)
-        let !t319 = (if (abs s312) > 0 then 1.0 else 0.0)
-        let !t320 = (sqrt ((t308 * t308) + (t310 * t310)))
-        let !t321 = (t320 - 1.0)
-        let !t322 = (recip (2.0 * t320))
-        let !t323 = (((t322 * (t308 + t308)) * t305) + ((t322 * (t310 + t310)) * t307))
-        let !t324 = (if ((abs t321) - 1.0e-10) > 0 then (if (abs t323) > 0 then 1.0 else 0.0) else 0.0)
-        let !t325 = (1.0 - t319)
-        let !s326 = ((t319 * (if t324 > 0 then (t308 + (negate ((t321 / t323) * t305))) else t308)) + (t325 * t313))
-        let !s327 = ((t319 * (if t324 > 0 then (t309 + (negate ((t321 / t323) * t306))) else t309)) + (t325 * t314))
-        let !s328 = ((t319 * (if t324 > 0 then (t310 + (negate ((t321 / t323) * t307))) else t310)) + (t325 * t315))
-        chkI verts ((291 * i1) + (12 * i304)) 12 14
-        wrU verts (((291 * i1) + (12 * i304)) + 12) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s326 else t2)
-        wrU verts (((291 * i1) + (12 * i304)) + 13) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s327 else t3)
-        wrU verts (((291 * i1) + (12 * i304)) + 14) (if (1.0 - (abs (((s326 - s326) + (s327 - s327)) + (s328 - s328)))) > 0 then s328 else t4)
+      loopI 0.0 24.0 $ \i316 -> do
+        let !d316 = fromIntegral i316 :: Double
+        chkI walk (12 * i316) 0 11
+        t317 <- rdU walk ((12 * i316) + 6)
+        t318 <- rdU walk ((12 * i316) + 7)
+        t319 <- rdU walk ((12 * i316) + 8)
+        t320 <- rdU walk ((12 * i316) + 9)
+        t321 <- rdU walk ((12 * i316) + 10)
+        t322 <- rdU walk ((12 * i316) + 11)
+        chkI radii ((24 * i1) + i316) 0 0
+        t323 <- rdU radii ((24 * i1) + i316)
+        let !s324 = (t323 / 4.0)
+        t325 <- rdU walk (12 * i316)
+        t326 <- rdU walk ((12 * i316) + 1)
+        t327 <- rdU walk ((12 * i316) + 2)
+        t328 <- rdU walk ((12 * i316) + 3)
+        t329 <- rdU walk ((12 * i316) + 4)
+        t330 <- rdU walk ((12 * i316) + 5)
+        let !t331 = (if (abs s324) > 0 then 1.0 else 0.0)
+        let !t332 = (sqrt ((t320 * t320) + (t322 * t322)))
+        let !t333 = (t332 - 1.0)
+        let !t334 = (recip (2.0 * t332))
+        let !t335 = (((t334 * (t320 + t320)) * t317) + ((t334 * (t322 + t322)) * t319))
+        let !t336 = (if ((abs t333) - 1.0e-10) > 0 then (if (abs t335) > 0 then 1.0 else 0.0) else 0.0)
+        let !t337 = (1.0 - t331)
+        let !s338 = ((t331 * (if t336 > 0 then (t320 + (negate ((t333 / t335) * t317))) else t320)) + (t337 * t325))
+        let !s339 = ((t331 * (if t336 > 0 then (t321 + (negate ((t333 / t335) * t318))) else t321)) + (t337 * t326))
+        let !s340 = ((t331 * (if t336 > 0 then (t322 + (negate ((t333 / t335) * t319))) else t322)) + (t337 * t327))
+        let !t341 = (1.0 - (abs (((s338 - s338) + (s339 - s339)) + (s340 - s340))))
+        let !s342 = (if t341 > 0 then s338 else t2)
+        let !s343 = (if t341 > 0 then s339 else t3)
+        let !s344 = (if t341 > 0 then s340 else t4)
+        chkI verts ((291 * i1) + (12 * i316)) 12 14
+        wrU verts (((291 * i1) + (12 * i316)) + 12) s342
+        wrU verts (((291 * i1) + (12 * i316)) + 13) s343
+        wrU verts (((291 * i1) + (12 * i316)) + 14) s344
+        chkI outline ((72 * i1) + (3 * i316)) 0 2
+        wrU outline ((72 * i1) + (3 * i316)) s342
+        wrU outline (((72 * i1) + (3 * i316)) + 1) s343
+        wrU outline (((72 * i1) + (3 * i316)) + 2) s344
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i329 -> do
-        let !d329 = fromIntegral i329 :: Double
-        t330 <- rdU locals 0
-        t331 <- rdU locals 1
-        wrU locals 0 ((t330 * 0.9659258262890683) - (t331 * 0.25881904510252074))
-        wrU locals 1 ((t331 * 0.9659258262890683) + (t330 * 0.25881904510252074))
-        let !s332 = ((t330 * t5) + (t331 * s14))
-        let !s333 = ((t330 * t6) + (t331 * s15))
-        let !s334 = ((t330 * t7) + (t331 * s16))
-        chkI walk (12 * i329) 3 5
-        wrU walk ((12 * i329) + 3) s332
-        wrU walk ((12 * i329) + 4) s333
-        wrU walk ((12 * i329) + 5) s334
-        pure ()
-      loopI 0.0 24.0 $ \i335 -> do
-        let !d335 = fromIntegral i335 :: Double
-        chkI radii ((24 * i1) + i335) 0 0
-        t336 <- rdU radii ((24 * i1) + i335)
-        chkI walk (12 * i335) 3 11
-        t337 <- rdU walk ((12 * i335) + 3)
-        t338 <- rdU walk ((12 * i335) + 4)
-        t339 <- rdU walk ((12 * i335) + 5)
-        let !s340 = (t2 + (t336 * t337))
-        let !s341 = (t3 + (t336 * t338))
-        let !s342 = (t4 + (t336 * t339))
-        let !t343 = (sqrt ((s340 * s340) + (s342 * s342)))
-        let !t344 = (t343 - 1.0)
-        let !t345 = (recip (2.0 * t343))
-        let !t346 = (((t345 * (s340 + s340)) * t8) + ((t345 * (s342 + s342)) * t10))
-        let !t347 = (if ((abs t344) - 1.0e-10) > 0 then (if (abs t346) > 0 then 1.0 else 0.0) else 0.0)
-        let !s348 = (if t347 > 0 then (s340 + (negate ((t344 / t346) * t8))) else s340)
-        let !s349 = (if t347 > 0 then (s341 + (negate ((t344 / t346) * t9))) else s341)
-        let !s350 = (if t347 > 0 then (s342 + (negate ((t344 / t346) * t10))) else s342)
-        wrU walk ((12 * i335) + 9) s348
-        wrU walk ((12 * i335) + 10) s349
-        wrU walk ((12 * i335) + 11) s350
+      loopI 0.0 24.0 $ \i345 -> do
+        let !d345 = fromIntegral i345 :: Double
+        t346 <- rdU locals 0
+        t347 <- rdU locals 1
+        wrU locals 0 ((t346 * 0.9659258262890683) - (t347 * 0.25881904510252074))
+        wrU locals 1 ((t347 * 0.9659258262890683) + (t346 * 0.25881904510252074))
+        let !s348 = ((t346 * t5) + (t347 * s14))
+        let !s349 = ((t346 * t6) + (t347 * s15))
+        let !s350 = ((t346 * t7) + (t347 * s16))
+        chkI walk (12 * i345) 3 5
+        wrU walk ((12 * i345) + 3) s348
+        wrU walk ((12 * i345) + 4) s349
+        wrU walk ((12 * i345) + 5) s350
         pure ()
       loopI 0.0 24.0 $ \i351 -> do
         let !d351 = fromIntegral i351 :: Double
-        chkI walk (12 * i351) 9 11
-        t352 <- rdU walk ((12 * i351) + 9)
-        t353 <- rdU walk ((12 * i351) + 10)
-        t354 <- rdU walk ((12 * i351) + 11)
-        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
-        let !t356 = (t355 - 1.0)
-        let !t357 = (recip (2.0 * t355))
-        let !t358 = (((t357 * (t352 + t352)) * t8) + ((t357 * (t354 + t354)) * t10))
-        let !t359 = (if ((abs t356) - 1.0e-10) > 0 then (if (abs t358) > 0 then 1.0 else 0.0) else 0.0)
-        let !s360 = (if t359 > 0 then (t352 + (negate ((t356 / t358) * t8))) else t352)
-        let !s361 = (if t359 > 0 then (t353 + (negate ((t356 / t358) * t9))) else t353)
-        let !s362 = (if t359 > 0 then (t354 + (negate ((t356 / t358) * t10))) else t354)
-        wrU walk ((12 * i351) + 9) s360
-        wrU walk ((12 * i351) + 10) s361
-        wrU walk ((12 * i351) + 11) s362
+        chkI radii ((24 * i1) + i351) 0 0
+        t352 <- rdU radii ((24 * i1) + i351)
+        chkI walk (12 * i351) 3 11
+        t353 <- rdU walk ((12 * i351) + 3)
+        t354 <- rdU walk ((12 * i351) + 4)
+        t355 <- rdU walk ((12 * i351) + 5)
+        let !s356 = (t2 + (t352 * t353))
+        let !s357 = (t3 + (t352 * t354))
+        let !s358 = (t4 + (t352 * t355))
+        let !t359 = (sqrt ((s356 * s356) + (s358 * s358)))
+        let !t360 = (t359 - 1.0)
+        let !t361 = (recip (2.0 * t359))
+        let !t362 = (((t361 * (s356 + s356)) * t8) + ((t361 * (s358 + s358)) * t10))
+        let !t363 = (if ((abs t360) - 1.0e-10) > 0 then (if (abs t362) > 0 then 1.0 else 0.0) else 0.0)
+        let !s364 = (if t363 > 0 then (s356 + (negate ((t360 / t362) * t8))) else s356)
+        let !s365 = (if t363 > 0 then (s357 + (negate ((t360 / t362) * t9))) else s357)
+        let !s366 = (if t363 > 0 then (s358 + (negate ((t360 / t362) * t10))) else s358)
+        wrU walk ((12 * i351) + 9) s364
+        wrU walk ((12 * i351) + 10) s365
+        wrU walk ((12 * i351) + 11) s366
         pure ()
-      loopI 0.0 24.0 $ \i363 -> do
-        let !d363 = fromIntegral i363 :: Double
-        chkI walk (12 * i363) 3 11
-        t364 <- rdU walk ((12 * i363) + 9)
-        t365 <- rdU walk ((12 * i363) + 10)
-        t366 <- rdU walk ((12 * i363) + 11)
-        chkI radii ((24 * i1) + i363) 0 0
-        t367 <- rdU radii ((24 * i1) + i363)
-        t368 <- rdU walk ((12 * i363) + 3)
-        t369 <- rdU walk ((12 * i363) + 4)
-        t370 <- rdU walk ((12 * i363) + 5)
-        let !t371 = (if (abs t367) > 0 then 1.0 else 0.0)
-        let !t372 = (sqrt ((t364 * t364) + (t366 * t366)))
-        let !t373 = (t372 - 1.0)
-        let !t374 = (recip (2.0 * t372))
-        let !t375 = (((t374 * (t364 + t364)) * t8) + ((t374 * (t366 + t366)) * t10))
-        let !t376 = (if ((abs t373) - 1.0e-10) > 0 then (if (abs t375) > 0 then 1.0 else 0.0) else 0.0)
-        let !t377 = (1.0 - t371)
-        let !s378 = ((t371 * (if t376 > 0 then (t364 + (negate ((t373 / t375) * t8))) else t364)) + (t377 * t2))
-        let !s379 = ((t371 * (if t376 > 0 then (t365 + (negate ((t373 / t375) * t9))) else t365)) + (t377 * t3))
-        let !s380 = ((t371 * (if t376 > 0 then (t366 + (negate ((t373 / t375) * t10))) else t366)) + (t377 * t4))
-        let !t381 = (1.0 - (abs (((s378 - s378) + (s379 - s379)) + (s380 - s380))))
-        let !s382 = (if t381 > 0 then s378 else t2)
-        let !s383 = (if t381 > 0 then s379 else t3)
-        let !s384 = (if t381 > 0 then s380 else t4)
-        chkI verts ((291 * i1) + (12 * i363)) 3 14
-        wrU verts (((291 * i1) + (12 * i363)) + 12) s382
-        wrU verts (((291 * i1) + (12 * i363)) + 13) s383
-        wrU verts (((291 * i1) + (12 * i363)) + 14) s384
-        wrU verts (((291 * i1) + (12 * i363)) + 3) (t2 + (0.25 * (s382 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i363)) + 4) (t3 + (0.25 * (s383 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i363)) + 5) (t4 + (0.25 * (s384 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i363)) + 6) (t2 + (0.5 * (s382 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i363)) + 7) (t3 + (0.5 * (s383 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i363)) + 8) (t4 + (0.5 * (s384 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i363)) + 9) (t2 + (0.75 * (s382 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i363)) + 10) (t3 + (0.75 * (s383 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i363)) + 11) (t4 + (0.75 * (s384 + (negate t4))))
+      loopI 0.0 24.0 $ \i367 -> do
+        let !d367 = fromIntegral i367 :: Double
+        chkI walk (12 * i367) 9 11
+        t368 <- rdU walk ((12 * i367) + 9)
+        t369 <- rdU walk ((12 * i367) + 10)
+        t370 <- rdU walk ((12 * i367) + 11)
+        let !t371 = (sqrt ((t368 * t368) + (t370 * t370)))
+        let !t372 = (t371 - 1.0)
+        let !t373 = (recip (2.0 * t371))
+        let !t374 = (((t373 * (t368 + t368)) * t8) + ((t373 * (t370 + t370)) * t10))
+        let !t375 = (if ((abs t372) - 1.0e-10) > 0 then (if (abs t374) > 0 then 1.0 else 0.0) else 0.0)
+        let !s376 = (if t375 > 0 then (t368 + (negate ((t372 / t374) * t8))) else t368)
+        let !s377 = (if t375 > 0 then (t369 + (negate ((t372 / t374) * t9))) else t369)
+        let !s378 = (if t375 > 0 then (t370 + (negate ((t372 / t374) * t10))) else t370)
+        wrU walk ((12 * i367) + 9) s376
+        wrU walk ((12 * i367) + 10) s377
+        wrU walk ((12 * i367) + 11) s378
+        pure ()
+      loopI 0.0 24.0 $ \i379 -> do
+        let !d379 = fromIntegral i379 :: Double
+        chkI walk (12 * i379) 3 11
+        t380 <- rdU walk ((12 * i379) + 9)
+        t381 <- rdU walk ((12 * i379) + 10)
+        t382 <- rdU walk ((12 * i379) + 11)
+        chkI radii ((24 * i1) + i379) 0 0
+        t383 <- rdU radii ((24 * i1) + i379)
+        t384 <- rdU walk ((12 * i379) + 3)
+        t385 <- rdU walk ((12 * i379) + 4)
+        t386 <- rdU walk ((12 * i379) + 5)
+        let !t387 = (if (abs t383) > 0 then 1.0 else 0.0)
+        let !t388 = (sqrt ((t380 * t380) + (t382 * t382)))
+        let !t389 = (t388 - 1.0)
+        let !t390 = (recip (2.0 * t388))
+        let !t391 = (((t390 * (t380 + t380)) * t8) + ((t390 * (t382 + t382)) * t10))
+        let !t392 = (if ((abs t389) - 1.0e-10) > 0 then (if (abs t391) > 0 then 1.0 else 0.0) else 0.0)
+        let !t393 = (1.0 - t387)
+        let !s394 = ((t387 * (if t392 > 0 then (t380 + (negate ((t389 / t391) * t8))) else t380)) + (t393 * t2))
+        let !s395 = ((t387 * (if t392 > 0 then (t381 + (negate ((t389 / t391) * t9))) else t381)) + (t393 * t3))
+        let !s396 = ((t387 * (if t392 > 0 then (t382 + (negate ((t389 / t391) * t10))) else t382)) + (t393 * t4))
+        let !t397 = (1.0 - (abs (((s394 - s394) + (s395 - s395)) + (s396 - s396))))
+        let !s398 = (if t397 > 0 then s394 else t2)
+        let !s399 = (if t397 > 0 then s395 else t3)
+        let !s400 = (if t397 > 0 then s396 else t4)
+        chkI verts ((291 * i1) + (12 * i379)) 3 14
+        wrU verts (((291 * i1) + (12 * i379)) + 12) s398
+        wrU verts (((291 * i1) + (12 * i379)) + 13) s399
+        wrU verts (((291 * i1) + (12 * i379)) + 14) s400
+        chkI outline ((72 * i1) + (3 * i379)) 0 2
+        wrU outline ((72 * i1) + (3 * i379)) s398
+        wrU outline (((72 * i1) + (3 * i379)) + 1) s399
+        wrU outline (((72 * i1) + (3 * i379)) + 2) s400
+        wrU verts (((291 * i1) + (12 * i379)) + 3) (t2 + (0.25 * (s398 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i379)) + 4) (t3 + (0.25 * (s399 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i379)) + 5) (t4 + (0.25 * (s400 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i379)) + 6) (t2 + (0.5 * (s398 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i379)) + 7) (t3 + (0.5 * (s399 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i379)) + 8) (t4 + (0.5 * (s400 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i379)) + 9) (t2 + (0.75 * (s398 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i379)) + 10) (t3 + (0.75 * (s399 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i379)) + 11) (t4 + (0.75 * (s400 + (negate t4))))
         pure ()
       pure ()
     pure ()

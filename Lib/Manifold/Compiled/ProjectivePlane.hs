@@ -22,13 +22,13 @@ compiled = CompiledStep "projective-plane" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt((((x * x) + (y * y)) + (z * z))) - 1.0);\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, (4.0 * y), 0.0];\n}\n\nquotient Antipodal\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, outline, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.ProjectivePlane: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -72,8 +72,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
@@ -215,7 +215,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d67 = fromIntegral i67 :: Double
       chkI near i67 0 0
       t68 <- rdU near i67
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     let !s69 = (negate t30)
     let !s70 = (negate t31)
@@ -285,7 +285,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d103 = fromIntegral i103 :: Double
       chkI near i103 0 0
       t104 <- rdU near i103
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t104 + 1.0) * 64.0) + 16.0) d29 t104 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals (((t104 + 1.0) * 64.0) + 16.0) d29 t104 (-1.0) (-1.0) (-1.0) 0.0 0.0 0.0
       pure ()
     chkI verts (291 * i29) 0 2
     t105 <- rdU verts (291 * i29)
@@ -294,10 +294,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 3 1.0
     loopI 0.0 24.0 $ \i108 -> do
       let !d108 = fromIntegral i108 :: Double
-      chkI verts ((12 * i108) + (291 * i29)) 12 14
-      t109 <- rdU verts (((12 * i108) + (291 * i29)) + 12)
-      t110 <- rdU verts (((12 * i108) + (291 * i29)) + 13)
-      t111 <- rdU verts (((12 * i108) + (291 * i29)) + 14)
+      chkI outline ((3 * i108) + (72 * i29)) 0 2
+      t109 <- rdU outline ((3 * i108) + (72 * i29))
+      t110 <- rdU outline (((3 * i108) + (72 * i29)) + 1)
+      t111 <- rdU outline (((3 * i108) + (72 * i29)) + 2)
       chkI radii (i108 + (24 * i29)) 0 0
       t112 <- rdU radii (i108 + (24 * i29))
       t113 <- rdU locals 3
@@ -581,11 +581,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 2 2
   t0 <- rdU params 2
-  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+  solvePrepare meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
   t1 <- rdU mouse 0
   if t1 > 0 then do
@@ -921,7 +921,7 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   loopI 0.0 t0 $ \i308 -> do
     let !d308 = fromIntegral i308 :: Double
-    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    solveSweep meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
     t309 <- rdU mouse 0
     if t309 > 0 then do
       chkI mouse 0 1 1
@@ -1309,8 +1309,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1472,8 +1472,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
@@ -1589,460 +1589,484 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s71 = ((t64 * (if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56)) + (t70 * t2))
         let !s72 = ((t64 * (if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57)) + (t70 * t3))
         let !s73 = ((t64 * (if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58)) + (t70 * t4))
+        let !t74 = (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73))))
+        let !s75 = (if t74 > 0 then s71 else t2)
+        let !s76 = (if t74 > 0 then s72 else t3)
+        let !s77 = (if t74 > 0 then s73 else t4)
         chkI verts ((291 * i1) + (12 * i55)) 3 5
-        wrU verts (((291 * i1) + (12 * i55)) + 3) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s71 else t2)
-        wrU verts (((291 * i1) + (12 * i55)) + 4) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s72 else t3)
-        wrU verts (((291 * i1) + (12 * i55)) + 5) (if (1.0 - (abs (((s71 - s71) + (s72 - s72)) + (s73 - s73)))) > 0 then s73 else t4)
+        wrU verts (((291 * i1) + (12 * i55)) + 3) s75
+        wrU verts (((291 * i1) + (12 * i55)) + 4) s76
+        wrU verts (((291 * i1) + (12 * i55)) + 5) s77
         wrU walk (12 * i55) s71
         wrU walk ((12 * i55) + 1) s72
         wrU walk ((12 * i55) + 2) s73
-        let !t74 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
-        let !t75 = (if (abs s60) > 0 then (recip s60) else 0.0)
-        let !t76 = (t75 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
-        let !t77 = (t67 * (t56 + t56))
-        let !t78 = (t67 * (t57 + t57))
-        let !t79 = (t67 * (t58 + t58))
-        let !t80 = (sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79)))
-        let !t81 = (if t80 > 0 then (recip (if (t80 - 1.0e-300) > 0 then t80 else 1.0e-300)) else 0.0)
-        let !t82 = (t81 * t77)
-        let !t83 = (t81 * t78)
-        let !t84 = (t75 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
-        let !t85 = (t81 * t79)
-        let !t86 = (t75 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
-        let !t87 = (((t82 * t76) + (t83 * t84)) + (t85 * t86))
-        let !t88 = (t76 + (negate (t87 * t82)))
-        let !t89 = (t84 + (negate (t87 * t83)))
-        let !t90 = (t86 + (negate (t87 * t85)))
-        let !t91 = (sqrt (((t88 * t88) + (t89 * t89)) + (t90 * t90)))
-        let !t92 = (if t91 > 0 then (recip (if (t91 - 1.0e-300) > 0 then t91 else 1.0e-300)) else 0.0)
-        let !s93 = ((t64 * (t74 * (t92 * t88))) + (t70 * t61))
-        let !s94 = ((t64 * (t74 * (t92 * t89))) + (t70 * t62))
-        let !s95 = ((t64 * (t74 * (t92 * t90))) + (t70 * t63))
-        wrU walk ((12 * i55) + 3) s93
-        wrU walk ((12 * i55) + 4) s94
-        wrU walk ((12 * i55) + 5) s95
-        let !s96 = ((t64 * t82) + (t70 * t8))
-        let !s97 = ((t64 * t83) + (t70 * t9))
-        let !s98 = ((t64 * t85) + (t70 * t10))
-        wrU walk ((12 * i55) + 6) s96
-        wrU walk ((12 * i55) + 7) s97
-        wrU walk ((12 * i55) + 8) s98
+        let !t78 = (sqrt (((t61 * t61) + (t62 * t62)) + (t63 * t63)))
+        let !t79 = (if (abs s60) > 0 then (recip s60) else 0.0)
+        let !t80 = (t79 * ((if t69 > 0 then (t56 + (negate ((t66 / t68) * t8))) else t56) + (negate t2)))
+        let !t81 = (t67 * (t56 + t56))
+        let !t82 = (t67 * (t57 + t57))
+        let !t83 = (t67 * (t58 + t58))
+        let !t84 = (sqrt (((t81 * t81) + (t82 * t82)) + (t83 * t83)))
+        let !t85 = (if t84 > 0 then (recip (if (t84 - 1.0e-300) > 0 then t84 else 1.0e-300)) else 0.0)
+        let !t86 = (t85 * t81)
+        let !t87 = (t85 * t82)
+        let !t88 = (t79 * ((if t69 > 0 then (t57 + (negate ((t66 / t68) * t9))) else t57) + (negate t3)))
+        let !t89 = (t85 * t83)
+        let !t90 = (t79 * ((if t69 > 0 then (t58 + (negate ((t66 / t68) * t10))) else t58) + (negate t4)))
+        let !t91 = (((t86 * t80) + (t87 * t88)) + (t89 * t90))
+        let !t92 = (t80 + (negate (t91 * t86)))
+        let !t93 = (t88 + (negate (t91 * t87)))
+        let !t94 = (t90 + (negate (t91 * t89)))
+        let !t95 = (sqrt (((t92 * t92) + (t93 * t93)) + (t94 * t94)))
+        let !t96 = (if t95 > 0 then (recip (if (t95 - 1.0e-300) > 0 then t95 else 1.0e-300)) else 0.0)
+        let !s97 = ((t64 * (t78 * (t96 * t92))) + (t70 * t61))
+        let !s98 = ((t64 * (t78 * (t96 * t93))) + (t70 * t62))
+        let !s99 = ((t64 * (t78 * (t96 * t94))) + (t70 * t63))
+        wrU walk ((12 * i55) + 3) s97
+        wrU walk ((12 * i55) + 4) s98
+        wrU walk ((12 * i55) + 5) s99
+        let !s100 = ((t64 * t86) + (t70 * t8))
+        let !s101 = ((t64 * t87) + (t70 * t9))
+        let !s102 = ((t64 * t89) + (t70 * t10))
+        wrU walk ((12 * i55) + 6) s100
+        wrU walk ((12 * i55) + 7) s101
+        wrU walk ((12 * i55) + 8) s102
         pure ()
-      loopI 0.0 24.0 $ \i99 -> do
-        let !d99 = fromIntegral i99 :: Double
-        chkI walk (12 * i99) 0 11
-        t100 <- rdU walk ((12 * i99) + 6)
-        t101 <- rdU walk ((12 * i99) + 7)
-        t102 <- rdU walk ((12 * i99) + 8)
-        chkI radii ((24 * i1) + i99) 0 0
-        t103 <- rdU radii ((24 * i1) + i99)
-        let !s104 = (t103 / 4.0)
-        t105 <- rdU walk (12 * i99)
-        t106 <- rdU walk ((12 * i99) + 1)
-        t107 <- rdU walk ((12 * i99) + 2)
-        t108 <- rdU walk ((12 * i99) + 3)
-        t109 <- rdU walk ((12 * i99) + 4)
-        t110 <- rdU walk ((12 * i99) + 5)
-        let !s111 = (t105 + (s104 * t108))
-        let !s112 = (t106 + (s104 * t109))
-        let !s113 = (t107 + (s104 * t110))
-        let !t114 = (sqrt (((s111 * s111) + (s112 * s112)) + (s113 * s113)))
-        let !t115 = (t114 - 1.0)
-        let !t116 = (recip (2.0 * t114))
-        let !t117 = ((((t116 * (s111 + s111)) * t100) + ((t116 * (s112 + s112)) * t101)) + ((t116 * (s113 + s113)) * t102))
-        let !t118 = (if ((abs t115) - 1.0e-10) > 0 then (if (abs t117) > 0 then 1.0 else 0.0) else 0.0)
-        let !s119 = (if t118 > 0 then (s111 + (negate ((t115 / t117) * t100))) else s111)
-        let !s120 = (if t118 > 0 then (s112 + (negate ((t115 / t117) * t101))) else s112)
-        let !s121 = (if t118 > 0 then (s113 + (negate ((t115 / t117) * t102))) else s113)
-        wrU walk ((12 * i99) + 9) s119
-        wrU walk ((12 * i99) + 10) s120
-        wrU walk ((12 * i99) + 11) s121
+      loopI 0.0 24.0 $ \i103 -> do
+        let !d103 = fromIntegral i103 :: Double
+        chkI walk (12 * i103) 0 11
+        t104 <- rdU walk ((12 * i103) + 6)
+        t105 <- rdU walk ((12 * i103) + 7)
+        t106 <- rdU walk ((12 * i103) + 8)
+        chkI radii ((24 * i1) + i103) 0 0
+        t107 <- rdU radii ((24 * i1) + i103)
+        let !s108 = (t107 / 4.0)
+        t109 <- rdU walk (12 * i103)
+        t110 <- rdU walk ((12 * i103) + 1)
+        t111 <- rdU walk ((12 * i103) + 2)
+        t112 <- rdU walk ((12 * i103) + 3)
+        t113 <- rdU walk ((12 * i103) + 4)
+        t114 <- rdU walk ((12 * i103) + 5)
+        let !s115 = (t109 + (s108 * t112))
+        let !s116 = (t110 + (s108 * t113))
+        let !s117 = (t111 + (s108 * t114))
+        let !t118 = (sqrt (((s115 * s115) + (s116 * s116)) + (s117 * s117)))
+        let !t119 = (t118 - 1.0)
+        let !t120 = (recip (2.0 * t118))
+        let !t121 = ((((t120 * (s115 + s115)) * t104) + ((t120 * (s116 + s116)) * t105)) + ((t120 * (s117 + s117)) * t106))
+        let !t122 = (if ((abs t119) - 1.0e-10) > 0 then (if (abs t121) > 0 then 1.0 else 0.0) else 0.0)
+        let !s123 = (if t122 > 0 then (s115 + (negate ((t119 / t121) * t104))) else s115)
+        let !s124 = (if t122 > 0 then (s116 + (negate ((t119 / t121) * t105))) else s116)
+        let !s125 = (if t122 > 0 then (s117 + (negate ((t119 / t121) * t106))) else s117)
+        wrU walk ((12 * i103) + 9) s123
+        wrU walk ((12 * i103) + 10) s124
+        wrU walk ((12 * i103) + 11) s125
         pure ()
-      loopI 0.0 24.0 $ \i122 -> do
-        let !d122 = fromIntegral i122 :: Double
-        chkI walk (12 * i122) 6 11
-        t123 <- rdU walk ((12 * i122) + 6)
-        t124 <- rdU walk ((12 * i122) + 7)
-        t125 <- rdU walk ((12 * i122) + 8)
-        t126 <- rdU walk ((12 * i122) + 9)
-        t127 <- rdU walk ((12 * i122) + 10)
-        t128 <- rdU walk ((12 * i122) + 11)
-        let !t129 = (sqrt (((t126 * t126) + (t127 * t127)) + (t128 * t128)))
-        let !t130 = (t129 - 1.0)
-        let !t131 = (recip (2.0 * t129))
-        let !t132 = ((((t131 * (t126 + t126)) * t123) + ((t131 * (t127 + t127)) * t124)) + ((t131 * (t128 + t128)) * t125))
-        let !t133 = (if ((abs t130) - 1.0e-10) > 0 then (if (abs t132) > 0 then 1.0 else 0.0) else 0.0)
-        let !s134 = (if t133 > 0 then (t126 + (negate ((t130 / t132) * t123))) else t126)
-        let !s135 = (if t133 > 0 then (t127 + (negate ((t130 / t132) * t124))) else t127)
-        let !s136 = (if t133 > 0 then (t128 + (negate ((t130 / t132) * t125))) else t128)
-        wrU walk ((12 * i122) + 9) s134
-        wrU walk ((12 * i122) + 10) s135
-        wrU walk ((12 * i122) + 11) s136
+      loopI 0.0 24.0 $ \i126 -> do
+        let !d126 = fromIntegral i126 :: Double
+        chkI walk (12 * i126) 6 11
+        t127 <- rdU walk ((12 * i126) + 6)
+        t128 <- rdU walk ((12 * i126) + 7)
+        t129 <- rdU walk ((12 * i126) + 8)
+        t130 <- rdU walk ((12 * i126) + 9)
+        t131 <- rdU walk ((12 * i126) + 10)
+        t132 <- rdU walk ((12 * i126) + 11)
+        let !t133 = (sqrt (((t130 * t130) + (t131 * t131)) + (t132 * t132)))
+        let !t134 = (t133 - 1.0)
+        let !t135 = (recip (2.0 * t133))
+        let !t136 = ((((t135 * (t130 + t130)) * t127) + ((t135 * (t131 + t131)) * t128)) + ((t135 * (t132 + t132)) * t129))
+        let !t137 = (if ((abs t134) - 1.0e-10) > 0 then (if (abs t136) > 0 then 1.0 else 0.0) else 0.0)
+        let !s138 = (if t137 > 0 then (t130 + (negate ((t134 / t136) * t127))) else t130)
+        let !s139 = (if t137 > 0 then (t131 + (negate ((t134 / t136) * t128))) else t131)
+        let !s140 = (if t137 > 0 then (t132 + (negate ((t134 / t136) * t129))) else t132)
+        wrU walk ((12 * i126) + 9) s138
+        wrU walk ((12 * i126) + 10) s139
+        wrU walk ((12 * i126) + 11) s140
         pure ()
-      loopI 0.0 24.0 $ \i137 -> do
-        let !d137 = fromIntegral i137 :: Double
-        chkI walk (12 * i137) 0 11
-        t138 <- rdU walk ((12 * i137) + 6)
-        t139 <- rdU walk ((12 * i137) + 7)
-        t140 <- rdU walk ((12 * i137) + 8)
-        t141 <- rdU walk ((12 * i137) + 9)
-        t142 <- rdU walk ((12 * i137) + 10)
-        t143 <- rdU walk ((12 * i137) + 11)
-        chkI radii ((24 * i1) + i137) 0 0
-        t144 <- rdU radii ((24 * i1) + i137)
-        let !s145 = (t144 / 4.0)
-        t146 <- rdU walk (12 * i137)
-        t147 <- rdU walk ((12 * i137) + 1)
-        t148 <- rdU walk ((12 * i137) + 2)
-        t149 <- rdU walk ((12 * i137) + 3)
-        t150 <- rdU walk ((12 * i137) + 4)
-        t151 <- rdU walk ((12 * i137) + 5)
-        let !t152 = (if (abs s145) > 0 then 1.0 else 0.0)
-        let !t153 = (sqrt (((t141 * t141) + (t142 * t142)) + (t143 * t143)))
-        let !t154 = (t153 - 1.0)
-        let !t155 = (recip (2.0 * t153))
-        let !t156 = ((((t155 * (t141 + t141)) * t138) + ((t155 * (t142 + t142)) * t139)) + ((t155 * (t143 + t143)) * t140))
-        let !t157 = (if ((abs t154) - 1.0e-10) > 0 then (if (abs t156) > 0 then 1.0 else 0.0) else 0.0)
-        let !t158 = (1.0 - t152)
-        let !s159 = ((t152 * (if t157 > 0 then (t141 + (negate ((t154 / t156) * t138))) else t141)) + (t158 * t146))
-        let !s160 = ((t152 * (if t157 > 0 then (t142 + (negate ((t154 / t156) * t139))) else t142)) + (t158 * t147))
-        let !s161 = ((t152 * (if t157 > 0 then (t143 + (negate ((t154 / t156) * t140))) else t143)) + (t158 * t148))
-        chkI verts ((291 * i1) + (12 * i137)) 6 8
-        wrU verts (((291 * i1) + (12 * i137)) + 6) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s159 else t2)
-        wrU verts (((291 * i1) + (12 * i137)) + 7) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s160 else t3)
-        wrU verts (((291 * i1) + (12 * i137)) + 8) (if (1.0 - (abs (((s159 - s159) + (s160 - s160)) + (s161 - s161)))) > 0 then s161 else t4)
-        wrU walk (12 * i137) s159
-        wrU walk ((12 * i137) + 1) s160
-        wrU walk ((12 * i137) + 2) s161
-        let !t162 = (sqrt (((t149 * t149) + (t150 * t150)) + (t151 * t151)))
-        let !t163 = (if (abs s145) > 0 then (recip s145) else 0.0)
-        let !t164 = (t163 * ((if t157 > 0 then (t141 + (negate ((t154 / t156) * t138))) else t141) + (negate t146)))
-        let !t165 = (t155 * (t141 + t141))
-        let !t166 = (t155 * (t142 + t142))
-        let !t167 = (t155 * (t143 + t143))
-        let !t168 = (sqrt (((t165 * t165) + (t166 * t166)) + (t167 * t167)))
-        let !t169 = (if t168 > 0 then (recip (if (t168 - 1.0e-300) > 0 then t168 else 1.0e-300)) else 0.0)
-        let !t170 = (t169 * t165)
-        let !t171 = (t169 * t166)
-        let !t172 = (t163 * ((if t157 > 0 then (t142 + (negate ((t154 / t156) * t139))) else t142) + (negate t147)))
-        let !t173 = (t169 * t167)
-        let !t174 = (t163 * ((if t157 > 0 then (t143 + (negate ((t154 / t156) * t140))) else t143) + (negate t148)))
-        let !t175 = (((t170 * t164) + (t171 * t172)) + (t173 * t174))
-        let !t176 = (t164 + (negate (t175 * t170)))
-        let !t177 = (t172 + (negate (t175 * t171)))
-        let !t178 = (t174 + (negate (t175 * t173)))
-        let !t179 = (sqrt (((t176 * t176) + (t177 * t177)) + (t178 * t178)))
-        let !t180 = (if t179 > 0 then (recip (if (t179 - 1.0e-300) > 0 then t179 else 1.0e-300)) else 0.0)
-        let !s181 = ((t152 * (t162 * (t180 * t176))) + (t158 * t149))
-        let !s182 = ((t152 * (t162 * (t180 * t177))) + (t158 * t150))
-        let !s183 = ((t152 * (t162 * (t180 * t178))) + (t158 * t151))
-        wrU walk ((12 * i137) + 3) s181
-        wrU walk ((12 * i137) + 4) s182
-        wrU walk ((12 * i137) + 5) s183
-        let !s184 = ((t152 * t170) + (t158 * t138))
-        let !s185 = ((t152 * t171) + (t158 * t139))
-        let !s186 = ((t152 * t173) + (t158 * t140))
-        wrU walk ((12 * i137) + 6) s184
-        wrU walk ((12 * i137) + 7) s185
-        wrU walk ((12 * i137) + 8) s186
+      loopI 0.0 24.0 $ \i141 -> do
+        let !d141 = fromIntegral i141 :: Double
+        chkI walk (12 * i141) 0 11
+        t142 <- rdU walk ((12 * i141) + 6)
+        t143 <- rdU walk ((12 * i141) + 7)
+        t144 <- rdU walk ((12 * i141) + 8)
+        t145 <- rdU walk ((12 * i141) + 9)
+        t146 <- rdU walk ((12 * i141) + 10)
+        t147 <- rdU walk ((12 * i141) + 11)
+        chkI radii ((24 * i1) + i141) 0 0
+        t148 <- rdU radii ((24 * i1) + i141)
+        let !s149 = (t148 / 4.0)
+        t150 <- rdU walk (12 * i141)
+        t151 <- rdU walk ((12 * i141) + 1)
+        t152 <- rdU walk ((12 * i141) + 2)
+        t153 <- rdU walk ((12 * i141) + 3)
+        t154 <- rdU walk ((12 * i141) + 4)
+        t155 <- rdU walk ((12 * i141) + 5)
+        let !t156 = (if (abs s149) > 0 then 1.0 else 0.0)
+        let !t157 = (sqrt (((t145 * t145) + (t146 * t146)) + (t147 * t147)))
+        let !t158 = (t157 - 1.0)
+        let !t159 = (recip (2.0 * t157))
+        let !t160 = ((((t159 * (t145 + t145)) * t142) + ((t159 * (t146 + t146)) * t143)) + ((t159 * (t147 + t147)) * t144))
+        let !t161 = (if ((abs t158) - 1.0e-10) > 0 then (if (abs t160) > 0 then 1.0 else 0.0) else 0.0)
+        let !t162 = (1.0 - t156)
+        let !s163 = ((t156 * (if t161 > 0 then (t145 + (negate ((t158 / t160) * t142))) else t145)) + (t162 * t150))
+        let !s164 = ((t156 * (if t161 > 0 then (t146 + (negate ((t158 / t160) * t143))) else t146)) + (t162 * t151))
+        let !s165 = ((t156 * (if t161 > 0 then (t147 + (negate ((t158 / t160) * t144))) else t147)) + (t162 * t152))
+        let !t166 = (1.0 - (abs (((s163 - s163) + (s164 - s164)) + (s165 - s165))))
+        let !s167 = (if t166 > 0 then s163 else t2)
+        let !s168 = (if t166 > 0 then s164 else t3)
+        let !s169 = (if t166 > 0 then s165 else t4)
+        chkI verts ((291 * i1) + (12 * i141)) 6 8
+        wrU verts (((291 * i1) + (12 * i141)) + 6) s167
+        wrU verts (((291 * i1) + (12 * i141)) + 7) s168
+        wrU verts (((291 * i1) + (12 * i141)) + 8) s169
+        wrU walk (12 * i141) s163
+        wrU walk ((12 * i141) + 1) s164
+        wrU walk ((12 * i141) + 2) s165
+        let !t170 = (sqrt (((t153 * t153) + (t154 * t154)) + (t155 * t155)))
+        let !t171 = (if (abs s149) > 0 then (recip s149) else 0.0)
+        let !t172 = (t171 * ((if t161 > 0 then (t145 + (negate ((t158 / t160) * t142))) else t145) + (negate t150)))
+        let !t173 = (t159 * (t145 + t145))
+        let !t174 = (t159 * (t146 + t146))
+        let !t175 = (t159 * (t147 + t147))
+        let !t176 = (sqrt (((t173 * t173) + (t174 * t174)) + (t175 * t175)))
+        let !t177 = (if t176 > 0 then (recip (if (t176 - 1.0e-300) > 0 then t176 else 1.0e-300)) else 0.0)
+        let !t178 = (t177 * t173)
+        let !t179 = (t177 * t174)
+        let !t180 = (t171 * ((if t161 > 0 then (t146 + (negate ((t158 / t160) * t143))) else t146) + (negate t151)))
+        let !t181 = (t177 * t175)
+        let !t182 = (t171 * ((if t161 > 0 then (t147 + (negate ((t158 / t160) * t144))) else t147) + (negate t152)))
+        let !t183 = (((t178 * t172) + (t179 * t180)) + (t181 * t182))
+        let !t184 = (t172 + (negate (t183 * t178)))
+        let !t185 = (t180 + (negate (t183 * t179)))
+        let !t186 = (t182 + (negate (t183 * t181)))
+        let !t187 = (sqrt (((t184 * t184) + (t185 * t185)) + (t186 * t186)))
+        let !t188 = (if t187 > 0 then (recip (if (t187 - 1.0e-300) > 0 then t187 else 1.0e-300)) else 0.0)
+        let !s189 = ((t156 * (t170 * (t188 * t184))) + (t162 * t153))
+        let !s190 = ((t156 * (t170 * (t188 * t185))) + (t162 * t154))
+        let !s191 = ((t156 * (t170 * (t188 * t186))) + (t162 * t155))
+        wrU walk ((12 * i141) + 3) s189
+        wrU walk ((12 * i141) + 4) s190
+        wrU walk ((12 * i141) + 5) s191
+        let !s192 = ((t156 * t178) + (t162 * t142))
+        let !s193 = ((t156 * t179) + (t162 * t143))
+        let !s194 = ((t156 * t181) + (t162 * t144))
+        wrU walk ((12 * i141) + 6) s192
+        wrU walk ((12 * i141) + 7) s193
+        wrU walk ((12 * i141) + 8) s194
         pure ()
-      loopI 0.0 24.0 $ \i187 -> do
-        let !d187 = fromIntegral i187 :: Double
-        chkI walk (12 * i187) 0 11
-        t188 <- rdU walk ((12 * i187) + 6)
-        t189 <- rdU walk ((12 * i187) + 7)
-        t190 <- rdU walk ((12 * i187) + 8)
-        chkI radii ((24 * i1) + i187) 0 0
-        t191 <- rdU radii ((24 * i1) + i187)
-        let !s192 = (t191 / 4.0)
-        t193 <- rdU walk (12 * i187)
-        t194 <- rdU walk ((12 * i187) + 1)
-        t195 <- rdU walk ((12 * i187) + 2)
-        t196 <- rdU walk ((12 * i187) + 3)
-        t197 <- rdU walk ((12 * i187) + 4)
-        t198 <- rdU walk ((12 * i187) + 5)
-        let !s199 = (t193 + (s192 * t196))
-        let !s200 = (t194 + (s192 * t197))
-        let !s201 = (t195 + (s192 * t198))
-        let !t202 = (sqrt (((s199 * s199) + (s200 * s200)) + (s201 * s201)))
-        let !t203 = (t202 - 1.0)
-        let !t204 = (recip (2.0 * t202))
-        let !t205 = ((((t204 * (s199 + s199)) * t188) + ((t204 * (s200 + s200)) * t189)) + ((t204 * (s201 + s201)) * t190))
-        let !t206 = (if ((abs t203) - 1.0e-10) > 0 then (if (abs t205) > 0 then 1.0 else 0.0) else 0.0)
-        let !s207 = (if t206 > 0 then (s199 + (negate ((t203 / t205) * t188))) else s199)
-        let !s208 = (if t206 > 0 then (s200 + (negate ((t203 / t205) * t189))) else s200)
-        let !s209 = (if t206 > 0 then (s201 + (negate ((t203 / t205) * t190))) else s201)
-        wrU walk ((12 * i187) + 9) s207
-        wrU walk ((12 * i187) + 10) s208
-        wrU walk ((12 * i187) + 11) s209
+      loopI 0.0 24.0 $ \i195 -> do
+        let !d195 = fromIntegral i195 :: Double
+        chkI walk (12 * i195) 0 11
+        t196 <- rdU walk ((12 * i195) + 6)
+        t197 <- rdU walk ((12 * i195) + 7)
+        t198 <- rdU walk ((12 * i195) + 8)
+        chkI radii ((24 * i1) + i195) 0 0
+        t199 <- rdU radii ((24 * i1) + i195)
+        let !s200 = (t199 / 4.0)
+        t201 <- rdU walk (12 * i195)
+        t202 <- rdU walk ((12 * i195) + 1)
+        t203 <- rdU walk ((12 * i195) + 2)
+        t204 <- rdU walk ((12 * i195) + 3)
+        t205 <- rdU walk ((12 * i195) + 4)
+        t206 <- rdU walk ((12 * i195) + 5)
+        let !s207 = (t201 + (s200 * t204))
+        let !s208 = (t202 + (s200 * t205))
+        let !s209 = (t203 + (s200 * t206))
+        let !t210 = (sqrt (((s207 * s207) + (s208 * s208)) + (s209 * s209)))
+        let !t211 = (t210 - 1.0)
+        let !t212 = (recip (2.0 * t210))
+        let !t213 = ((((t212 * (s207 + s207)) * t196) + ((t212 * (s208 + s208)) * t197)) + ((t212 * (s209 + s209)) * t198))
+        let !t214 = (if ((abs t211) - 1.0e-10) > 0 then (if (abs t213) > 0 then 1.0 else 0.0) else 0.0)
+        let !s215 = (if t214 > 0 then (s207 + (negate ((t211 / t213) * t196))) else s207)
+        let !s216 = (if t214 > 0 then (s208 + (negate ((t211 / t213) * t197))) else s208)
+        let !s217 = (if t214 > 0 then (s209 + (negate ((t211 / t213) * t198))) else s209)
+        wrU walk ((12 * i195) + 9) s215
+        wrU walk ((12 * i195) + 10) s216
+        wrU walk ((12 * i195) + 11) s217
         pure ()
-      loopI 0.0 24.0 $ \i210 -> do
-        let !d210 = fromIntegral i210 :: Double
-        chkI walk (12 * i210) 6 11
-        t211 <- rdU walk ((12 * i210) + 6)
-        t212 <- rdU walk ((12 * i210) + 7)
-        t213 <- rdU walk ((12 * i210) + 8)
-        t214 <- rdU walk ((12 * i210) + 9)
-        t215 <- rdU walk ((12 * i210) + 10)
-        t216 <- rdU walk ((12 * i210) + 11)
-        let !t217 = (sqrt (((t214 * t214) + (t215 * t215)) + (t216 * t216)))
-        let !t218 = (t217 - 1.0)
-        let !t219 = (recip (2.0 * t217))
-        let !t220 = ((((t219 * (t214 + t214)) * t211) + ((t219 * (t215 + t215)) * t212)) + ((t219 * (t216 + t216)) * t213))
-        let !t221 = (if ((abs t218) - 1.0e-10) > 0 then (if (abs t220) > 0 then 1.0 else 0.0) else 0.0)
-        let !s222 = (if t221 > 0 then (t214 + (negate ((t218 / t220) * t211))) else t214)
-        let !s223 = (if t221 > 0 then (t215 + (negate ((t218 / t220) * t212))) else t215)
-        let !s224 = (if t221 > 0 then (t216 + (negate ((t218 / t220) * t213))) else t216)
-        wrU walk ((12 * i210) + 9) s222
-        wrU walk ((12 * i210) + 10) s223
-        wrU walk ((12 * i210) + 11) s224
+      loopI 0.0 24.0 $ \i218 -> do
+        let !d218 = fromIntegral i218 :: Double
+        chkI walk (12 * i218) 6 11
+        t219 <- rdU walk ((12 * i218) + 6)
+        t220 <- rdU walk ((12 * i218) + 7)
+        t221 <- rdU walk ((12 * i218) + 8)
+        t222 <- rdU walk ((12 * i218) + 9)
+        t223 <- rdU walk ((12 * i218) + 10)
+        t224 <- rdU walk ((12 * i218) + 11)
+        let !t225 = (sqrt (((t222 * t222) + (t223 * t223)) + (t224 * t224)))
+        let !t226 = (t225 - 1.0)
+        let !t227 = (recip (2.0 * t225))
+        let !t228 = ((((t227 * (t222 + t222)) * t219) + ((t227 * (t223 + t223)) * t220)) + ((t227 * (t224 + t224)) * t221))
+        let !t229 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t228) > 0 then 1.0 else 0.0) else 0.0)
+        let !s230 = (if t229 > 0 then (t222 + (negate ((t226 / t228) * t219))) else t222)
+        let !s231 = (if t229 > 0 then (t223 + (negate ((t226 / t228) * t220))) else t223)
+        let !s232 = (if t229 > 0 then (t224 + (negate ((t226 / t228) * t221))) else t224)
+        wrU walk ((12 * i218) + 9) s230
+        wrU walk ((12 * i218) + 10) s231
+        wrU walk ((12 * i218) + 11) s232
         pure ()
-      loopI 0.0 24.0 $ \i225 -> do
-        let !d225 = fromIntegral i225 :: Double
-        chkI walk (12 * i225) 0 11
-        t226 <- rdU walk ((12 * i225) + 6)
-        t227 <- rdU walk ((12 * i225) + 7)
-        t228 <- rdU walk ((12 * i225) + 8)
-        t229 <- rdU walk ((12 * i225) + 9)
-        t230 <- rdU walk ((12 * i225) + 10)
-        t231 <- rdU walk ((12 * i225) + 11)
-        chkI radii ((24 * i1) + i225) 0 0
-        t232 <- rdU radii ((24 * i1) + i225)
-        let !s233 = (t232 / 4.0)
-        t234 <- rdU walk (12 * i225)
-        t235 <- rdU walk ((12 * i225) + 1)
-        t236 <- rdU walk ((12 * i225) + 2)
-        t237 <- rdU walk ((12 * i225) + 3)
-        t238 <- rdU walk ((12 * i225) + 4)
-        t239 <- rdU walk ((12 * i225) + 5)
-        let !t240 = (if (abs s233) > 0 then 1.0 else 0.0)
-        let !t241 = (sqrt (((t229 * t229) + (t230 * t230)) + (t231 * t231)))
-        let !t242 = (t241 - 1.0)
-        let !t243 = (recip (2.0 * t241))
-        let !t244 = ((((t243 * (t229 + t229)) * t226) + ((t243 * (t230 + t230)) * t227)) + ((t243 * (t231 + t231)) * t228))
-        let !t245 = (if ((abs t242) - 1.0e-10) > 0 then (if (abs t244) > 0 then 1.0 else 0.0) else 0.0)
-        let !t246 = (1.0 - t240)
-        let !s247 = ((t240 * (if t245 > 0 then (t229 + (negate ((t242 / t244) * t226))) else t229)) + (t246 * t234))
-        let !s248 = ((t240 * (if t245 > 0 then (t230 + (negate ((t242 / t244) * t227))) else t230)) + (t246 * t235))
-        let !s249 = ((t240 * (if t245 > 0 then (t231 + (negate ((t242 / t244) * t228))) else t231)) + (t246 * t236))
-        chkI verts ((291 * i1) + (12 * i225)) 9 11
-        wrU verts (((291 * i1) + (12 * i225)) + 9) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s247 else t2)
-        wrU verts (((291 * i1) + (12 * i225)) + 10) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s248 else t3)
-        wrU verts (((291 * i1) + (12 * i225)) + 11) (if (1.0 - (abs (((s247 - s247) + (s248 - s248)) + (s249 - s249)))) > 0 then s249 else t4)
-        wrU walk (12 * i225) s247
-        wrU walk ((12 * i225) + 1) s248
-        wrU walk ((12 * i225) + 2) s249
-        let !t250 = (sqrt (((t237 * t237) + (t238 * t238)) + (t239 * t239)))
-        let !t251 = (if (abs s233) > 0 then (recip s233) else 0.0)
-        let !t252 = (t251 * ((if t245 > 0 then (t229 + (negate ((t242 / t244) * t226))) else t229) + (negate t234)))
-        let !t253 = (t243 * (t229 + t229))
-        let !t254 = (t243 * (t230 + t230))
-        let !t255 = (t243 * (t231 + t231))
-        let !t256 = (sqrt (((t253 * t253) + (t254 * t254)) + (t255 * t255)))
-        let !t257 = (if t256 > 0 then (recip (if (t256 - 1.0e-300) > 0 then t256 else 1.0e-300)) else 0.0)
-        let !t258 = (t257 * t253)
-        let !t259 = (t257 * t254)
-        let !t260 = (t251 * ((if t245 > 0 then (t230 + (negate ((t242 / t244) * t227))) else t230) + (negate t235)))
-        let !t261 = (t257 * t255)
-        let !t262 = (t251 * ((if t245 > 0 then (t231 + (negate ((t242 / t244) * t228))) else t231) + (negate t236)))
-        let !t263 = (((t258 * t252) + (t259 * t260)) + (t261 * t262))
-        let !t264 = (t252 + (negate (t263 * t258)))
-        let !t265 = (t260 + (negate (t263 * t259)))
-        let !t266 = (t262 + (negate (t263 * t261)))
-        let !t267 = (sqrt (((t264 * t264) + (t265 * t265)) + (t266 * t266)))
-        let !t268 = (if t267 > 0 then (recip (if (t267 - 1.0e-300) > 0 then t267 else 1.0e-300)) else 0.0)
-        let !s269 = ((t240 * (t250 * (t268 * t264))) + (t246 * t237))
-        let !s270 = ((t240 * (t250 * (t268 * t265))) + (t246 * t238))
-        let !s271 = ((t240 * (t250 * (t268 * t266))) + (t246 * t239))
-        wrU walk ((12 * i225) + 3) s269
-        wrU walk ((12 * i225) + 4) s270
-        wrU walk ((12 * i225) + 5) s271
-        let !s272 = ((t240 * t258) + (t246 * t226))
-        let !s273 = ((t240 * t259) + (t246 * t227))
-        let !s274 = ((t240 * t261) + (t246 * t228))
-        wrU walk ((12 * i225) + 6) s272
-        wrU walk ((12 * i225) + 7) s273
-        wrU walk ((12 * i225) + 8) s274
+      loopI 0.0 24.0 $ \i233 -> do
+        let !d233 = fromIntegral i233 :: Double
+        chkI walk (12 * i233) 0 11
+        t234 <- rdU walk ((12 * i233) + 6)
+        t235 <- rdU walk ((12 * i233) + 7)
+        t236 <- rdU walk ((12 * i233) + 8)
+        t237 <- rdU walk ((12 * i233) + 9)
+        t238 <- rdU walk ((12 * i233) + 10)
+        t239 <- rdU walk ((12 * i233) + 11)
+        chkI radii ((24 * i1) + i233) 0 0
+        t240 <- rdU radii ((24 * i1) + i233)
+        let !s241 = (t240 / 4.0)
+        t242 <- rdU walk (12 * i233)
+        t243 <- rdU walk ((12 * i233) + 1)
+        t244 <- rdU walk ((12 * i233) + 2)
+        t245 <- rdU walk ((12 * i233) + 3)
+        t246 <- rdU walk ((12 * i233) + 4)
+        t247 <- rdU walk ((12 * i233) + 5)
+        let !t248 = (if (abs s241) > 0 then 1.0 else 0.0)
+        let !t249 = (sqrt (((t237 * t237) + (t238 * t238)) + (t239 * t239)))
+        let !t250 = (t249 - 1.0)
+        let !t251 = (recip (2.0 * t249))
+        let !t252 = ((((t251 * (t237 + t237)) * t234) + ((t251 * (t238 + t238)) * t235)) + ((t251 * (t239 + t239)) * t236))
+        let !t253 = (if ((abs t250) - 1.0e-10) > 0 then (if (abs t252) > 0 then 1.0 else 0.0) else 0.0)
+        let !t254 = (1.0 - t248)
+        let !s255 = ((t248 * (if t253 > 0 then (t237 + (negate ((t250 / t252) * t234))) else t237)) + (t254 * t242))
+        let !s256 = ((t248 * (if t253 > 0 then (t238 + (negate ((t250 / t252) * t235))) else t238)) + (t254 * t243))
+        let !s257 = ((t248 * (if t253 > 0 then (t239 + (negate ((t250 / t252) * t236))) else t239)) + (t254 * t244))
+        let !t258 = (1.0 - (abs (((s255 - s255) + (s256 - s256)) + (s257 - s257))))
+        let !s259 = (if t258 > 0 then s255 else t2)
+        let !s260 = (if t258 > 0 then s256 else t3)
+        let !s261 = (if t258 > 0 then s257 else t4)
+        chkI verts ((291 * i1) + (12 * i233)) 9 11
+        wrU verts (((291 * i1) + (12 * i233)) + 9) s259
+        wrU verts (((291 * i1) + (12 * i233)) + 10) s260
+        wrU verts (((291 * i1) + (12 * i233)) + 11) s261
+        wrU walk (12 * i233) s255
+        wrU walk ((12 * i233) + 1) s256
+        wrU walk ((12 * i233) + 2) s257
+        let !t262 = (sqrt (((t245 * t245) + (t246 * t246)) + (t247 * t247)))
+        let !t263 = (if (abs s241) > 0 then (recip s241) else 0.0)
+        let !t264 = (t263 * ((if t253 > 0 then (t237 + (negate ((t250 / t252) * t234))) else t237) + (negate t242)))
+        let !t265 = (t251 * (t237 + t237))
+        let !t266 = (t251 * (t238 + t238))
+        let !t267 = (t251 * (t239 + t239))
+        let !t268 = (sqrt (((t265 * t265) + (t266 * t266)) + (t267 * t267)))
+        let !t269 = (if t268 > 0 then (recip (if (t268 - 1.0e-300) > 0 then t268 else 1.0e-300)) else 0.0)
+        let !t270 = (t269 * t265)
+        let !t271 = (t269 * t266)
+        let !t272 = (t263 * ((if t253 > 0 then (t238 + (negate ((t250 / t252) * t235))) else t238) + (negate t243)))
+        let !t273 = (t269 * t267)
+        let !t274 = (t263 * ((if t253 > 0 then (t239 + (negate ((t250 / t252) * t236))) else t239) + (negate t244)))
+        let !t275 = (((t270 * t264) + (t271 * t272)) + (t273 * t274))
+        let !t276 = (t264 + (negate (t275 * t270)))
+        let !t277 = (t272 + (negate (t275 * t271)))
+        let !t278 = (t274 + (negate (t275 * t273)))
+        let !t279 = (sqrt (((t276 * t276) + (t277 * t277)) + (t278 * t278)))
+        let !t280 = (if t279 > 0 then (recip (if (t279 - 1.0e-300) > 0 then t279 else 1.0e-300)) else 0.0)
+        let !s281 = ((t248 * (t262 * (t280 * t276))) + (t254 * t245))
+        let !s282 = ((t248 * (t262 * (t280 * t277))) + (t254 * t246))
+        let !s283 = ((t248 * (t262 * (t280 * t278))) + (t254 * t247))
+        wrU walk ((12 * i233) + 3) s281
+        wrU walk ((12 * i233) + 4) s282
+        wrU walk ((12 * i233) + 5) s283
+        let !s284 = ((t248 * t270) + (t254 * t234))
+        let !s285 = ((t248 * t271) + (t254 * t235))
+        let !s286 = ((t248 * t273) + (t254 * t236))
+        wrU walk ((12 * i233) + 6) s284
+        wrU walk ((12 * i233) + 7) s285
+        wrU walk ((12 * i233) + 8) s286
         pure ()
-      loopI 0.0 24.0 $ \i275 -> do
-        let !d275 = fromIntegral i275 :: Double
-        chkI walk (12 * i275) 0 11
-        t276 <- rdU walk ((12 * i275) + 6)
-        t277 <- rdU walk ((12 * i275) + 7)
-        t278 <- rdU walk ((12 * i275) + 8)
-        chkI radii ((24 * i1) + i275) 0 0
-        t279 <- rdU radii ((24 * i1) + i275)
-        let !s280 = (t279 / 4.0)
-        t281 <- rdU walk (12 * i275)
-        t282 <- rdU walk ((12 * i275) + 1)
-        t283 <- rdU walk ((12 * i275) + 2)
-        t284 <- rdU walk ((12 * i275) + 3)
-        t285 <- rdU walk ((12 * i275) + 4)
-        t286 <- rdU walk ((12 * i275) + 5)
-        let !s287 = (t281 + (s280 * t284))
-        let !s288 = (t282 + (s280 * t285))
-        let !s289 = (t283 + (s280 * t286))
-        let !t290 = (sqrt (((s287 * s287) + (s288 * s288)) + (s289 * s289)))
-        let !t291 = (t290 - 1.0)
-        let !t292 = (recip (2.0 * t290))
-        let !t293 = ((((t292 * (s287 + s287)) * t276) + ((t292 * (s288 + s288)) * t277)) + ((t292 * (s289 + s289)) * t278))
-        let !t294 = (if ((abs t291) - 1.0e-10) > 0 then (if (abs t293) > 0 then 1.0 else 0.0) else 0.0)
-        let !s295 = (if t294 > 0 then (s287 + (negate ((t291 / t293) * t276))) else s287)
-        let !s296 = (if t294 > 0 then (s288 + (negate ((t291 / t293) * t277))) else s288)
-        let !s297 = (if t294 > 0 then (s289 + (negate ((t291 / t293) * t278))) else s289)
-        wrU walk ((12 * i275) + 9) s295
-        wrU walk ((12 * i275) + 10) s296
-        wrU walk ((12 * i275) + 11) s297
+      loopI 0.0 24.0 $ \i287 -> do
+        let !d287 = fromIntegral i287 :: Double
+        chkI walk (12 * i287) 0 11
+        t288 <- rdU walk ((12 * i287) + 6)
+        t289 <- rdU walk ((12 * i287) + 7)
+        t290 <- rdU walk ((12 * i287) + 8)
+        chkI radii ((24 * i1) + i287) 0 0
+        t291 <- rdU radii ((24 * i1) + i287)
+        let !s292 = (t291 / 4.0)
+        t293 <- rdU walk (12 * i287)
+        t294 <- rdU walk ((12 * i287) + 1)
+        t295 <- rdU walk ((12 * i287) + 2)
+        t296 <- rdU walk ((12 * i287) + 3)
+        t297 <- rdU walk ((12 * i287) + 4)
+        t298 <- rdU walk ((12 * i287) + 5)
+        let !s299 = (t293 + (s292 * t296))
+        let !s300 = (t294 + (s292 * t297))
+        let !s301 = (t295 + (s292 * t298))
+        let !t302 = (sqrt (((s299 * s299) + (s300 * s300)) + (s301 * s301)))
+        let !t303 = (t302 - 1.0)
+        let !t304 = (recip (2.0 * t302))
+        let !t305 = ((((t304 * (s299 + s299)) * t288) + ((t304 * (s300 + s300)) * t289)) + ((t304 * (s301 + s301)) * t290))
+        let !t306 = (if ((abs t303) - 1.0e-10) > 0 then (if (abs t305) > 0 then 1.0 else 0.0) else 0.0)
+        let !s307 = (if t306 > 0 then (s299 + (negate ((t303 / t305) * t288))) else s299)
+        let !s308 = (if t306 > 0 then (s300 + (negate ((t303 / t305) * t289))) else s300)
+        let !s309 = (if t306 > 0 then (s301 + (negate ((t303 / t305) * t290))) else s301)
+        wrU walk ((12 * i287) + 9) s307
+        wrU walk ((12 * i287) + 10) s308
+        wrU walk ((12 * i287) + 11) s309
         pure ()
-      loopI 0.0 24.0 $ \i298 -> do
-        let !d298 = fromIntegral i298 :: Double
-        chkI walk (12 * i298) 6 11
-        t299 <- rdU walk ((12 * i298) + 6)
-        t300 <- rdU walk ((12 * i298) + 7)
-        t301 <- rdU walk ((12 * i298) + 8)
-        t302 <- rdU walk ((12 * i298) + 9)
-        t303 <- rdU walk ((12 * i298) + 10)
-        t304 <- rdU walk ((12 * i298) + 11)
-        let !t305 = (sqrt (((t302 * t302) + (t303 * t303)) + (t304 * t304)))
-        let !t306 = (t305 - 1.0)
-        let !t307 = (recip (2.0 * t305))
-        let !t308 = ((((t307 * (t302 + t302)) * t299) + ((t307 * (t303 + t303)) * t300)) + ((t307 * (t304 + t304)) * t301))
-        let !t309 = (if ((abs t306) - 1.0e-10) > 0 then (if (abs t308) > 0 then 1.0 else 0.0) else 0.0)
-        let !s310 = (if t309 > 0 then (t302 + (negate ((t306 / t308) * t299))) else t302)
-        let !s311 = (if t309 > 0 then (t303 + (negate ((t306 / t308) * t300))) else t303)
-        let !s312 = (if t309 > 0 then (t304 + (negate ((t306 / t308) * t301))) else t304)
-        wrU walk ((12 * i298) + 9) s310
-        wrU walk ((12 * i298) + 10) s311
-        wrU walk ((12 * i298) + 11) s312
+      loopI 0.0 24.0 $ \i310 -> do
+        let !d310 = fromIntegral i310 :: Double
+        chkI walk (12 * i310) 6 11
+        t311 <- rdU walk ((12 * i310) + 6)
+        t312 <- rdU walk ((12 * i310) + 7)
+        t313 <- rdU walk ((12 * i310) + 8)
+        t314 <- rdU walk ((12 * i310) + 9)
+        t315 <- rdU walk ((12 * i310) + 10)
+        t316 <- rdU walk ((12 * i310) + 11)
+        let !t317 = (sqrt (((t314 * t314) + (t315 * t315)) + (t316 * t316)))
+        let !t318 = (t317 - 1.0)
+        let !t319 = (recip (2.0 * t317))
+        let !t320 = ((((t319 * (t314 + t314)) * t311) + ((t319 * (t315 + t315)) * t312)) + ((t319 * (t316 + t316)) * t313))
+        let !t321 = (if ((abs t318) - 1.0e-10) > 0 then (if (abs t320) > 0 then 1.0 else 0.0) else 0.0)
+        let !s322 = (if t321 > 0 then (t314 + (negate ((t318 / t320) * t311))) else t314)
+        let !s323 = (if t321 > 0 then (t315 + (negate ((t318 / t320) * t312))) else t315)
+        let !s324 = (if t321 > 0 then (t316 + (negate ((t318 / t320) * t313))) else t316)
+        wrU walk ((12 * i310) + 9) s322
+        wrU walk ((12 * i310) + 10) s323
+        wrU walk ((12 * i310) + 11) s324
         pure ()
-      loopI 0.0 24.0 $ \i313 -> do
-        let !d313 = fromIntegral i313 :: Double
-        chkI walk (12 * i313) 0 11
-        t314 <- rdU walk ((12 * i313) + 6)
-        t315 <- rdU walk ((12 * i313) + 7)
-        t316 <- rdU walk ((12 * i313) + 8)
-        t317 <- rdU walk ((12 * i313) + 9)
-        t318 <- rdU walk ((12 * i313) + 10)
-        t319 <- rdU walk ((12 * i313) + 11)
-        chkI radii ((24 * i1) + i313) 0 0
-        t320 <- rdU radii ((24 * i1) + i313)
-        let !s321 = (t320 / 4.0)
-        t322 <- rdU walk (12 * i313)
-        t323 <- rdU walk ((12 * i313) + 1)
-        t324 <- rdU walk ((12 * i313) + 2)
-        t325 <- rdU walk ((12 * i313) + 3)
-        t326 <- rdU walk ((12 * i313) + 4)
-        t327 <- rdU walk ((12 * i313) + 5)
-        let !t328 = (if (abs s321) > 0 then 1.0 else 0.0)
-        let !t329 = (sqrt (((t317 * t317) + (t318 * t318)) + (t319 * t319)))
-        let !t330 = (t329 - 1.0)
-        let !t331 = (recip (2.0 * t329))
-        let !t332 = ((((t331 * (t317 + t317)) * t314) + ((t331 * (t318 + t318)) * t315)) + ((t331 * (t319 + t319)) * t316))
-        let !t333 = (if ((abs t330) - 1.0e-10) > 0 then (if (abs t332) > 0 then 1.0 else 0.0) else 0.0)
-        let !t334 = (1.0 - t328)
-        let !s335 = ((t328 * (if t333 > 0 then (t317 + (negate ((t330 / t332) * t314))) else t317)) + (t334 * t322))
-        let !s336 = ((t328 * (if t333 > 0 then (t318 + (negate ((t330 / t332) * t315))) else t318)) + (t334 * t323))
-        let !s337 = ((t328 * (if t333 > 0 then (t319 + (negate ((t330 / t332) * t316))) else t319)) + (t334 * t324))
-        chkI verts ((291 * i1) + (12 * i313)) 12 14
-        wrU verts (((291 * i1) + (12 * i313)) + 12) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s335 else t2)
-        wrU verts (((291 * i1) + (12 * i313)) + 13) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s336 else t3)
-        wrU verts (((291 * i1) + (12 * i313)) + 14) (if (1.0 - (abs (((s335 - s335) + (s336 - s336)) + (s337 - s337)))) > 0 then s337 else t4)
+      loopI 0.0 24.0 $ \i325 -> do
+        let !d325 = fromIntegral i325 :: Double
+        chkI walk (12 * i325) 0 11
+        t326 <- rdU walk ((12 * i325) + 6)
+        t327 <- rdU walk ((12 * i325) + 7)
+        t328 <- rdU walk ((12 * i325) + 8)
+        t329 <- rdU walk ((12 * i325) + 9)
+        t330 <- rdU walk ((12 * i325) + 10)
+        t331 <- rdU walk ((12 * i325) + 11)
+        chkI radii ((24 * i1) + i325) 0 0
+        t332 <- rdU radii ((24 * i1) + i325)
+        let !s333 = (t332 / 4.0)
+        t334 <- rdU walk (12 * i325)
+        t335 <- rdU walk ((12 * i325) + 1)
+        t336 <- rdU walk ((12 * i325) + 2)
+        t337 <- rdU walk ((12 * i325) + 3)
+        t338 <- rdU walk ((12 * i325) + 4)
+        t339 <- rdU walk ((12 * i325) + 5)
+        let !t340 = (if (abs s333) > 0 then 1.0 else 0.0)
+        let !t341 = (sqrt (((t329 * t329) + (t330 * t330)) + (t331 * t331)))
+        let !t342 = (t341 - 1.0)
+        let !t343 = (recip (2.0 * t341))
+        let !t344 = ((((t343 * (t329 + t329)) * t326) + ((t343 * (t330 + t330)) * t327)) + ((t343 * (t331 + t331)) * t328))
+        let !t345 = (if ((abs t342) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
+        let !t346 = (1.0 - t340)
+        let !s347 = ((t340 * (if t345 > 0 then (t329 + (negate ((t342 / t344) * t326))) else t329)) + (t346 * t334))
+        let !s348 = ((t340 * (if t345 > 0 then (t330 + (negate ((t342 / t344) * t327))) else t330)) + (t346 * t335))
+        let !s349 = ((t340 * (if t345 > 0 then (t331 + (negate ((t342 / t344) * t328))) else t331)) + (t346 * t336))
+        let !t350 = (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349))))
+        let !s351 = (if t350 > 0 then s347 else t2)
+        let !s352 = (if t350 > 0 then s348 else t3)
+        let !s353 = (if t350 > 0 then s349 else t4)
+        chkI verts ((291 * i1) + (12 * i325)) 12 14
+        wrU verts (((291 * i1) + (12 * i325)) + 12) s351
+        wrU verts (((291 * i1) + (12 * i325)) + 13) s352
+        wrU verts (((291 * i1) + (12 * i325)) + 14) s353
+        chkI outline ((72 * i1) + (3 * i325)) 0 2
+        wrU outline ((72 * i1) + (3 * i325)) s351
+        wrU outline (((72 * i1) + (3 * i325)) + 1) s352
+        wrU outline (((72 * i1) + (3 * i325)) + 2) s353
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i338 -> do
-        let !d338 = fromIntegral i338 :: Double
-        t339 <- rdU locals 0
-        t340 <- rdU locals 1
-        wrU locals 0 ((t339 * 0.9659258262890683) - (t340 * 0.25881904510252074))
-        wrU locals 1 ((t340 * 0.9659258262890683) + (t339 * 0.25881904510252074))
-        let !s341 = ((t339 * t5) + (t340 * s14))
-        let !s342 = ((t339 * t6) + (t340 * s15))
-        let !s343 = ((t339 * t7) + (t340 * s16))
-        chkI walk (12 * i338) 3 5
-        wrU walk ((12 * i338) + 3) s341
-        wrU walk ((12 * i338) + 4) s342
-        wrU walk ((12 * i338) + 5) s343
-        pure ()
-      loopI 0.0 24.0 $ \i344 -> do
-        let !d344 = fromIntegral i344 :: Double
-        chkI radii ((24 * i1) + i344) 0 0
-        t345 <- rdU radii ((24 * i1) + i344)
-        chkI walk (12 * i344) 3 11
-        t346 <- rdU walk ((12 * i344) + 3)
-        t347 <- rdU walk ((12 * i344) + 4)
-        t348 <- rdU walk ((12 * i344) + 5)
-        let !s349 = (t2 + (t345 * t346))
-        let !s350 = (t3 + (t345 * t347))
-        let !s351 = (t4 + (t345 * t348))
-        let !t352 = (sqrt (((s349 * s349) + (s350 * s350)) + (s351 * s351)))
-        let !t353 = (t352 - 1.0)
-        let !t354 = (recip (2.0 * t352))
-        let !t355 = ((((t354 * (s349 + s349)) * t8) + ((t354 * (s350 + s350)) * t9)) + ((t354 * (s351 + s351)) * t10))
-        let !t356 = (if ((abs t353) - 1.0e-10) > 0 then (if (abs t355) > 0 then 1.0 else 0.0) else 0.0)
-        let !s357 = (if t356 > 0 then (s349 + (negate ((t353 / t355) * t8))) else s349)
-        let !s358 = (if t356 > 0 then (s350 + (negate ((t353 / t355) * t9))) else s350)
-        let !s359 = (if t356 > 0 then (s351 + (negate ((t353 / t355) * t10))) else s351)
-        wrU walk ((12 * i344) + 9) s357
-        wrU walk ((12 * i344) + 10) s358
-        wrU walk ((12 * i344) + 11) s359
+      loopI 0.0 24.0 $ \i354 -> do
+        let !d354 = fromIntegral i354 :: Double
+        t355 <- rdU locals 0
+        t356 <- rdU locals 1
+        wrU locals 0 ((t355 * 0.9659258262890683) - (t356 * 0.25881904510252074))
+        wrU locals 1 ((t356 * 0.9659258262890683) + (t355 * 0.25881904510252074))
+        let !s357 = ((t355 * t5) + (t356 * s14))
+        let !s358 = ((t355 * t6) + (t356 * s15))
+        let !s359 = ((t355 * t7) + (t356 * s16))
+        chkI walk (12 * i354) 3 5
+        wrU walk ((12 * i354) + 3) s357
+        wrU walk ((12 * i354) + 4) s358
+        wrU walk ((12 * i354) + 5) s359
         pure ()
       loopI 0.0 24.0 $ \i360 -> do
         let !d360 = fromIntegral i360 :: Double
-        chkI walk (12 * i360) 9 11
-        t361 <- rdU walk ((12 * i360) + 9)
-        t362 <- rdU walk ((12 * i360) + 10)
-        t363 <- rdU walk ((12 * i360) + 11)
-        let !t364 = (sqrt (((t361 * t361) + (t362 * t362)) + (t363 * t363)))
-        let !t365 = (t364 - 1.0)
-        let !t366 = (recip (2.0 * t364))
-        let !t367 = ((((t366 * (t361 + t361)) * t8) + ((t366 * (t362 + t362)) * t9)) + ((t366 * (t363 + t363)) * t10))
-        let !t368 = (if ((abs t365) - 1.0e-10) > 0 then (if (abs t367) > 0 then 1.0 else 0.0) else 0.0)
-        let !s369 = (if t368 > 0 then (t361 + (negate ((t365 / t367) * t8))) else t361)
-        let !s370 = (if t368 > 0 then (t362 + (negate ((t365 / t367) * t9))) else t362)
-        let !s371 = (if t368 > 0 then (t363 + (negate ((t365 / t367) * t10))) else t363)
-        wrU walk ((12 * i360) + 9) s369
-        wrU walk ((12 * i360) + 10) s370
-        wrU walk ((12 * i360) + 11) s371
+        chkI radii ((24 * i1) + i360) 0 0
+        t361 <- rdU radii ((24 * i1) + i360)
+        chkI walk (12 * i360) 3 11
+        t362 <- rdU walk ((12 * i360) + 3)
+        t363 <- rdU walk ((12 * i360) + 4)
+        t364 <- rdU walk ((12 * i360) + 5)
+        let !s365 = (t2 + (t361 * t362))
+        let !s366 = (t3 + (t361 * t363))
+        let !s367 = (t4 + (t361 * t364))
+        let !t368 = (sqrt (((s365 * s365) + (s366 * s366)) + (s367 * s367)))
+        let !t369 = (t368 - 1.0)
+        let !t370 = (recip (2.0 * t368))
+        let !t371 = ((((t370 * (s365 + s365)) * t8) + ((t370 * (s366 + s366)) * t9)) + ((t370 * (s367 + s367)) * t10))
+        let !t372 = (if ((abs t369) - 1.0e-10) > 0 then (if (abs t371) > 0 then 1.0 else 0.0) else 0.0)
+        let !s373 = (if t372 > 0 then (s365 + (negate ((t369 / t371) * t8))) else s365)
+        let !s374 = (if t372 > 0 then (s366 + (negate ((t369 / t371) * t9))) else s366)
+        let !s375 = (if t372 > 0 then (s367 + (negate ((t369 / t371) * t10))) else s367)
+        wrU walk ((12 * i360) + 9) s373
+        wrU walk ((12 * i360) + 10) s374
+        wrU walk ((12 * i360) + 11) s375
         pure ()
-      loopI 0.0 24.0 $ \i372 -> do
-        let !d372 = fromIntegral i372 :: Double
-        chkI walk (12 * i372) 3 11
-        t373 <- rdU walk ((12 * i372) + 9)
-        t374 <- rdU walk ((12 * i372) + 10)
-        t375 <- rdU walk ((12 * i372) + 11)
-        chkI radii ((24 * i1) + i372) 0 0
-        t376 <- rdU radii ((24 * i1) + i372)
-        t377 <- rdU walk ((12 * i372) + 3)
-        t378 <- rdU walk ((12 * i372) + 4)
-        t379 <- rdU walk ((12 * i372) + 5)
-        let !t380 = (if (abs t376) > 0 then 1.0 else 0.0)
-        let !t381 = (sqrt (((t373 * t373) + (t374 * t374)) + (t375 * t375)))
-        let !t382 = (t381 - 1.0)
-        let !t383 = (recip (2.0 * t381))
-        let !t384 = ((((t383 * (t373 + t373)) * t8) + ((t383 * (t374 + t374)) * t9)) + ((t383 * (t375 + t375)) * t10))
-        let !t385 = (if ((abs t382) - 1.0e-10) > 0 then (if (abs t384) > 0 then 1.0 else 0.0) else 0.0)
-        let !t386 = (1.0 - t380)
-        let !s387 = ((t380 * (if t385 > 0 then (t373 + (negate ((t382 / t384) * t8))) else t373)) + (t386 * t2))
-        let !s388 = ((t380 * (if t385 > 0 then (t374 + (negate ((t382 / t384) * t9))) else t374)) + (t386 * t3))
-        let !s389 = ((t380 * (if t385 > 0 then (t375 + (negate ((t382 / t384) * t10))) else t375)) + (t386 * t4))
-        let !t390 = (1.0 - (abs (((s387 - s387) + (s388 - s388)) + (s389 - s389))))
-        let !s391 = (if t390 > 0 then s387 else t2)
-        let !s392 = (if t390 > 0 then s388 else t3)
-        let !s393 = (if t390 > 0 then s389 else t4)
-        chkI verts ((291 * i1) + (12 * i372)) 3 14
-        wrU verts (((291 * i1) + (12 * i372)) + 12) s391
-        wrU verts (((291 * i1) + (12 * i372)) + 13) s392
-        wrU verts (((291 * i1) + (12 * i372)) + 14) s393
-        wrU verts (((291 * i1) + (12 * i372)) + 3) (t2 + (0.25 * (s391 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i372)) + 4) (t3 + (0.25 * (s392 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i372)) + 5) (t4 + (0.25 * (s393 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i372)) + 6) (t2 + (0.5 * (s391 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i372)) + 7) (t3 + (0.5 * (s392 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i372)) + 8) (t4 + (0.5 * (s393 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i372)) + 9) (t2 + (0.75 * (s391 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i372)) + 10) (t3 + (0.75 * (s392 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i372)) + 11) (t4 + (0.75 * (s393 + (negate t4))))
+      loopI 0.0 24.0 $ \i376 -> do
+        let !d376 = fromIntegral i376 :: Double
+        chkI walk (12 * i376) 9 11
+        t377 <- rdU walk ((12 * i376) + 9)
+        t378 <- rdU walk ((12 * i376) + 10)
+        t379 <- rdU walk ((12 * i376) + 11)
+        let !t380 = (sqrt (((t377 * t377) + (t378 * t378)) + (t379 * t379)))
+        let !t381 = (t380 - 1.0)
+        let !t382 = (recip (2.0 * t380))
+        let !t383 = ((((t382 * (t377 + t377)) * t8) + ((t382 * (t378 + t378)) * t9)) + ((t382 * (t379 + t379)) * t10))
+        let !t384 = (if ((abs t381) - 1.0e-10) > 0 then (if (abs t383) > 0 then 1.0 else 0.0) else 0.0)
+        let !s385 = (if t384 > 0 then (t377 + (negate ((t381 / t383) * t8))) else t377)
+        let !s386 = (if t384 > 0 then (t378 + (negate ((t381 / t383) * t9))) else t378)
+        let !s387 = (if t384 > 0 then (t379 + (negate ((t381 / t383) * t10))) else t379)
+        wrU walk ((12 * i376) + 9) s385
+        wrU walk ((12 * i376) + 10) s386
+        wrU walk ((12 * i376) + 11) s387
+        pure ()
+      loopI 0.0 24.0 $ \i388 -> do
+        let !d388 = fromIntegral i388 :: Double
+        chkI walk (12 * i388) 3 11
+        t389 <- rdU walk ((12 * i388) + 9)
+        t390 <- rdU walk ((12 * i388) + 10)
+        t391 <- rdU walk ((12 * i388) + 11)
+        chkI radii ((24 * i1) + i388) 0 0
+        t392 <- rdU radii ((24 * i1) + i388)
+        t393 <- rdU walk ((12 * i388) + 3)
+        t394 <- rdU walk ((12 * i388) + 4)
+        t395 <- rdU walk ((12 * i388) + 5)
+        let !t396 = (if (abs t392) > 0 then 1.0 else 0.0)
+        let !t397 = (sqrt (((t389 * t389) + (t390 * t390)) + (t391 * t391)))
+        let !t398 = (t397 - 1.0)
+        let !t399 = (recip (2.0 * t397))
+        let !t400 = ((((t399 * (t389 + t389)) * t8) + ((t399 * (t390 + t390)) * t9)) + ((t399 * (t391 + t391)) * t10))
+        let !t401 = (if ((abs t398) - 1.0e-10) > 0 then (if (abs t400) > 0 then 1.0 else 0.0) else 0.0)
+        let !t402 = (1.0 - t396)
+        let !s403 = ((t396 * (if t401 > 0 then (t389 + (negate ((t398 / t400) * t8))) else t389)) + (t402 * t2))
+        let !s404 = ((t396 * (if t401 > 0 then (t390 + (negate ((t398 / t400) * t9))) else t390)) + (t402 * t3))
+        let !s405 = ((t396 * (if t401 > 0 then (t391 + (negate ((t398 / t400) * t10))) else t391)) + (t402 * t4))
+        let !t406 = (1.0 - (abs (((s403 - s403) + (s404 - s404)) + (s405 - s405))))
+        let !s407 = (if t406 > 0 then s403 else t2)
+        let !s408 = (if t406 > 0 then s404 else t3)
+        let !s409 = (if t406 > 0 then s405 else t4)
+        chkI verts ((291 * i1) + (12 * i388)) 3 14
+        wrU verts (((291 * i1) + (12 * i388)) + 12) s407
+        wrU verts (((291 * i1) + (12 * i388)) + 13) s408
+        wrU verts (((291 * i1) + (12 * i388)) + 14) s409
+        chkI outline ((72 * i1) + (3 * i388)) 0 2
+        wrU outline ((72 * i1) + (3 * i388)) s407
+        wrU outline (((72 * i1) + (3 * i388)) + 1) s408
+        wrU outline (((72 * i1) + (3 * i388)) + 2) s409
+        wrU verts (((291 * i1) + (12 * i388)) + 3) (t2 + (0.25 * (s407 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i388)) + 4) (t3 + (0.25 * (s408 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i388)) + 5) (t4 + (0.25 * (s409 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i388)) + 6) (t2 + (0.5 * (s407 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i388)) + 7) (t3 + (0.5 * (s408 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i388)) + 8) (t4 + (0.5 * (s409 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i388)) + 9) (t2 + (0.75 * (s407 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i388)) + 10) (t3 + (0.75 * (s408 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i388)) + 11) (t4 + (0.75 * (s409 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -22,13 +22,13 @@ compiled = CompiledStep "rectangle" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return y;\n}\n\nboundary function f(x, y, z) {\n  const t0 = (1.0 - Math.abs(z));\n  const t1 = (1.5 - Math.abs(x));\n  return ((t0 - t1) > 0 ? t1 : t0);\n}\n\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, outline, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Rectangle: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 17
   chkI meta 0 0 5
   wrU meta 2 0.0
@@ -214,7 +214,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d67 = fromIntegral i67 :: Double
       chkI near i67 0 0
       t68 <- rdU near i67
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     chkI normal (3 * i29) 0 2
     t69 <- rdU normal (3 * i29)
@@ -224,10 +224,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 4 (-1.0)
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i29) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      chkI outline ((72 * i29) + (3 * i72)) 0 2
+      t73 <- rdU outline ((72 * i29) + (3 * i72))
+      t74 <- rdU outline (((72 * i29) + (3 * i72)) + 1)
+      t75 <- rdU outline (((72 * i29) + (3 * i72)) + 2)
       let !t76 = (1.0 - (abs t75))
       let !t77 = (1.5 - (abs t73))
       let !s78 = (if (t76 - t77) > 0 then t77 else t76)
@@ -242,10 +242,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     t80 <- rdU locals 3
     if t80 > 0 then do
       t81 <- rdU locals 4
-      chkI verts ((12 * (truncate t81)) + (291 * i29)) 12 14
-      t82 <- rdU verts (((12 * (truncate t81)) + (291 * i29)) + 12)
-      t83 <- rdU verts (((12 * (truncate t81)) + (291 * i29)) + 13)
-      t84 <- rdU verts (((12 * (truncate t81)) + (291 * i29)) + 14)
+      chkI outline ((3 * (truncate t81)) + (72 * i29)) 0 2
+      t82 <- rdU outline ((3 * (truncate t81)) + (72 * i29))
+      t83 <- rdU outline (((3 * (truncate t81)) + (72 * i29)) + 1)
+      t84 <- rdU outline (((3 * (truncate t81)) + (72 * i29)) + 2)
       let !t85 = ((1.0 - (abs t84)) - (1.5 - (abs t82)))
       let !t86 = (if t85 > 0 then (negate (signum t82)) else 0.0)
       let !t87 = (if t85 > 0 then 0.0 else (negate (signum t84)))
@@ -262,10 +262,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       wrU locals 8 (-1.0)
       loopI 0.0 24.0 $ \i95 -> do
         let !d95 = fromIntegral i95 :: Double
-        chkI verts ((291 * i29) + (12 * i95)) 12 14
-        t96 <- rdU verts (((291 * i29) + (12 * i95)) + 12)
-        t97 <- rdU verts (((291 * i29) + (12 * i95)) + 13)
-        t98 <- rdU verts (((291 * i29) + (12 * i95)) + 14)
+        chkI outline ((72 * i29) + (3 * i95)) 0 2
+        t96 <- rdU outline ((72 * i29) + (3 * i95))
+        t97 <- rdU outline (((72 * i29) + (3 * i95)) + 1)
+        t98 <- rdU outline (((72 * i29) + (3 * i95)) + 2)
         let !t99 = (1.0 - (abs t98))
         let !t100 = (1.5 - (abs t96))
         if (negate (if (t99 - t100) > 0 then t100 else t99)) > 0 then do
@@ -290,10 +290,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         pure ()
       t104 <- rdU locals 7
       t105 <- rdU locals 8
-      chkI verts ((12 * (truncate t104)) + (291 * i29)) 12 14
-      t106 <- rdU verts (((12 * (truncate t104)) + (291 * i29)) + 12)
-      t107 <- rdU verts (((12 * (truncate t104)) + (291 * i29)) + 13)
-      t108 <- rdU verts (((12 * (truncate t104)) + (291 * i29)) + 14)
+      chkI outline ((3 * (truncate t104)) + (72 * i29)) 0 2
+      t106 <- rdU outline ((3 * (truncate t104)) + (72 * i29))
+      t107 <- rdU outline (((3 * (truncate t104)) + (72 * i29)) + 1)
+      t108 <- rdU outline (((3 * (truncate t104)) + (72 * i29)) + 2)
       let !t109 = ((1.0 - (abs t108)) - (1.5 - (abs t106)))
       let !s110 = (if t109 > 0 then (negate (signum t106)) else 0.0)
       let !s111 = (if t109 > 0 then 0.0 else (negate (signum t108)))
@@ -398,10 +398,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
         wrU meta 6 (t160 + 1.0)
         pure ()
       if (abs (t105 - t104)) > 0 then do
-        chkI verts ((12 * (truncate t105)) + (291 * i29)) 12 14
-        t161 <- rdU verts (((12 * (truncate t105)) + (291 * i29)) + 12)
-        t162 <- rdU verts (((12 * (truncate t105)) + (291 * i29)) + 13)
-        t163 <- rdU verts (((12 * (truncate t105)) + (291 * i29)) + 14)
+        chkI outline ((3 * (truncate t105)) + (72 * i29)) 0 2
+        t161 <- rdU outline ((3 * (truncate t105)) + (72 * i29))
+        t162 <- rdU outline (((3 * (truncate t105)) + (72 * i29)) + 1)
+        t163 <- rdU outline (((3 * (truncate t105)) + (72 * i29)) + 2)
         let !t164 = ((1.0 - (abs t163)) - (1.5 - (abs t161)))
         let !s165 = (if t164 > 0 then (negate (signum t161)) else 0.0)
         let !s166 = (if t164 > 0 then 0.0 else (negate (signum t163)))
@@ -518,10 +518,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 9 1.0
     loopI 0.0 24.0 $ \i219 -> do
       let !d219 = fromIntegral i219 :: Double
-      chkI verts ((12 * i219) + (291 * i29)) 12 14
-      t220 <- rdU verts (((12 * i219) + (291 * i29)) + 12)
-      t221 <- rdU verts (((12 * i219) + (291 * i29)) + 13)
-      t222 <- rdU verts (((12 * i219) + (291 * i29)) + 14)
+      chkI outline ((3 * i219) + (72 * i29)) 0 2
+      t220 <- rdU outline ((3 * i219) + (72 * i29))
+      t221 <- rdU outline (((3 * i219) + (72 * i29)) + 1)
+      t222 <- rdU outline (((3 * i219) + (72 * i29)) + 2)
       chkI radii (i219 + (24 * i29)) 0 0
       t223 <- rdU radii (i219 + (24 * i29))
       t224 <- rdU locals 9
@@ -792,11 +792,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 2 2
   t0 <- rdU params 2
-  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+  solvePrepare meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
   t1 <- rdU mouse 0
   if t1 > 0 then do
@@ -968,7 +968,7 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   loopI 0.0 t0 $ \i144 -> do
     let !d144 = fromIntegral i144 :: Double
-    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    solveSweep meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
     t145 <- rdU mouse 0
     if t145 > 0 then do
       chkI mouse 0 1 1
@@ -1192,8 +1192,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1316,8 +1316,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
@@ -1396,242 +1396,266 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s47 = ((t35 * (if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43)) + (t44 * t2))
         let !s48 = ((t35 * (if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40)) + (t44 * t3))
         let !s49 = ((t35 * (if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46)) + (t44 * t4))
+        let !t50 = (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49))))
+        let !s51 = (if t50 > 0 then s47 else t2)
+        let !s52 = (if t50 > 0 then s48 else t3)
+        let !s53 = (if t50 > 0 then s49 else t4)
         chkI verts ((291 * i1) + (12 * i26)) 3 5
-        wrU verts (((291 * i1) + (12 * i26)) + 3) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s47 else t2)
-        wrU verts (((291 * i1) + (12 * i26)) + 4) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s48 else t3)
-        wrU verts (((291 * i1) + (12 * i26)) + 5) (if (1.0 - (abs (((s47 - s47) + (s48 - s48)) + (s49 - s49)))) > 0 then s49 else t4)
+        wrU verts (((291 * i1) + (12 * i26)) + 3) s51
+        wrU verts (((291 * i1) + (12 * i26)) + 4) s52
+        wrU verts (((291 * i1) + (12 * i26)) + 5) s53
         wrU walk (12 * i26) s47
         wrU walk ((12 * i26) + 1) s48
         wrU walk ((12 * i26) + 2) s49
-        let !t50 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
-        let !t51 = (if (abs s28) > 0 then (recip s28) else 0.0)
-        let !t52 = (t51 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
-        let !t53 = (t51 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
-        let !t54 = (t53 + (negate t53))
-        let !t55 = (t51 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
-        let !t56 = (sqrt (((t52 * t52) + (t54 * t54)) + (t55 * t55)))
-        let !t57 = (if t56 > 0 then (recip (if (t56 - 1.0e-300) > 0 then t56 else 1.0e-300)) else 0.0)
-        let !s58 = ((t35 * (t50 * (t57 * t52))) + (t44 * t29))
-        let !s59 = ((t35 * (t50 * (t57 * t54))) + (t44 * t30))
-        let !s60 = ((t35 * (t50 * (t57 * t55))) + (t44 * t31))
-        wrU walk ((12 * i26) + 3) s58
-        wrU walk ((12 * i26) + 4) s59
-        wrU walk ((12 * i26) + 5) s60
-        let !s61 = (t44 * t8)
-        let !s62 = (t35 + (t44 * t9))
-        let !s63 = (t44 * t10)
-        wrU walk ((12 * i26) + 6) s61
-        wrU walk ((12 * i26) + 7) s62
-        wrU walk ((12 * i26) + 8) s63
+        let !t54 = (sqrt (((t29 * t29) + (t30 * t30)) + (t31 * t31)))
+        let !t55 = (if (abs s28) > 0 then (recip s28) else 0.0)
+        let !t56 = (t55 * ((if t41 > 0 then (t43 + (negate ((t40 / t9) * t8))) else t43) + (negate t2)))
+        let !t57 = (t55 * ((if t41 > 0 then (t40 + (negate ((t40 / t9) * t9))) else t40) + (negate t3)))
+        let !t58 = (t57 + (negate t57))
+        let !t59 = (t55 * ((if t41 > 0 then (t46 + (negate ((t40 / t9) * t10))) else t46) + (negate t4)))
+        let !t60 = (sqrt (((t56 * t56) + (t58 * t58)) + (t59 * t59)))
+        let !t61 = (if t60 > 0 then (recip (if (t60 - 1.0e-300) > 0 then t60 else 1.0e-300)) else 0.0)
+        let !s62 = ((t35 * (t54 * (t61 * t56))) + (t44 * t29))
+        let !s63 = ((t35 * (t54 * (t61 * t58))) + (t44 * t30))
+        let !s64 = ((t35 * (t54 * (t61 * t59))) + (t44 * t31))
+        wrU walk ((12 * i26) + 3) s62
+        wrU walk ((12 * i26) + 4) s63
+        wrU walk ((12 * i26) + 5) s64
+        let !s65 = (t44 * t8)
+        let !s66 = (t35 + (t44 * t9))
+        let !s67 = (t44 * t10)
+        wrU walk ((12 * i26) + 6) s65
+        wrU walk ((12 * i26) + 7) s66
+        wrU walk ((12 * i26) + 8) s67
         pure ()
-      loopI 0.0 24.0 $ \i64 -> do
-        let !d64 = fromIntegral i64 :: Double
-        chkI radii ((24 * i1) + i64) 0 0
-        t65 <- rdU radii ((24 * i1) + i64)
-        let !s66 = (t65 / 4.0)
-        chkI walk (12 * i64) 0 8
-        t67 <- rdU walk (12 * i64)
-        t68 <- rdU walk ((12 * i64) + 1)
-        t69 <- rdU walk ((12 * i64) + 2)
-        t70 <- rdU walk ((12 * i64) + 6)
-        t71 <- rdU walk ((12 * i64) + 7)
-        t72 <- rdU walk ((12 * i64) + 8)
-        t73 <- rdU walk ((12 * i64) + 3)
-        t74 <- rdU walk ((12 * i64) + 4)
-        t75 <- rdU walk ((12 * i64) + 5)
-        let !s76 = (t67 + (s66 * t73))
-        let !s77 = (t68 + (s66 * t74))
-        let !s78 = (t69 + (s66 * t75))
-        let !t79 = (if (abs s66) > 0 then 1.0 else 0.0)
-        let !t80 = (if (abs t71) > 0 then 1.0 else 0.0)
-        let !t81 = (if ((abs s77) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t82 = (if t81 > 0 then (s77 + (negate ((s77 / t71) * t71))) else s77)
-        let !t83 = (if ((abs t82) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t84 = (if t83 > 0 then (t82 + (negate ((t82 / t71) * t71))) else t82)
-        let !t85 = (if ((abs t84) - 1.0e-10) > 0 then t80 else 0.0)
-        let !t86 = (if t81 > 0 then (s76 + (negate ((s77 / t71) * t70))) else s76)
-        let !t87 = (if t83 > 0 then (t86 + (negate ((t82 / t71) * t70))) else t86)
-        let !t88 = (1.0 - t79)
-        let !t89 = (if t81 > 0 then (s78 + (negate ((s77 / t71) * t72))) else s78)
-        let !t90 = (if t83 > 0 then (t89 + (negate ((t82 / t71) * t72))) else t89)
-        let !s91 = ((t79 * (if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87)) + (t88 * t67))
-        let !s92 = ((t79 * (if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84)) + (t88 * t68))
-        let !s93 = ((t79 * (if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90)) + (t88 * t69))
-        chkI verts ((291 * i1) + (12 * i64)) 6 8
-        wrU verts (((291 * i1) + (12 * i64)) + 6) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s91 else t2)
-        wrU verts (((291 * i1) + (12 * i64)) + 7) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s92 else t3)
-        wrU verts (((291 * i1) + (12 * i64)) + 8) (if (1.0 - (abs (((s91 - s91) + (s92 - s92)) + (s93 - s93)))) > 0 then s93 else t4)
-        wrU walk (12 * i64) s91
-        wrU walk ((12 * i64) + 1) s92
-        wrU walk ((12 * i64) + 2) s93
-        let !t94 = (sqrt (((t73 * t73) + (t74 * t74)) + (t75 * t75)))
-        let !t95 = (if (abs s66) > 0 then (recip s66) else 0.0)
-        let !t96 = (t95 * ((if t85 > 0 then (t87 + (negate ((t84 / t71) * t70))) else t87) + (negate t67)))
-        let !t97 = (t95 * ((if t85 > 0 then (t84 + (negate ((t84 / t71) * t71))) else t84) + (negate t68)))
-        let !t98 = (t97 + (negate t97))
-        let !t99 = (t95 * ((if t85 > 0 then (t90 + (negate ((t84 / t71) * t72))) else t90) + (negate t69)))
-        let !t100 = (sqrt (((t96 * t96) + (t98 * t98)) + (t99 * t99)))
-        let !t101 = (if t100 > 0 then (recip (if (t100 - 1.0e-300) > 0 then t100 else 1.0e-300)) else 0.0)
-        let !s102 = ((t79 * (t94 * (t101 * t96))) + (t88 * t73))
-        let !s103 = ((t79 * (t94 * (t101 * t98))) + (t88 * t74))
-        let !s104 = ((t79 * (t94 * (t101 * t99))) + (t88 * t75))
-        wrU walk ((12 * i64) + 3) s102
-        wrU walk ((12 * i64) + 4) s103
-        wrU walk ((12 * i64) + 5) s104
-        let !s105 = (t88 * t70)
-        let !s106 = (t79 + (t88 * t71))
-        let !s107 = (t88 * t72)
-        wrU walk ((12 * i64) + 6) s105
-        wrU walk ((12 * i64) + 7) s106
-        wrU walk ((12 * i64) + 8) s107
+      loopI 0.0 24.0 $ \i68 -> do
+        let !d68 = fromIntegral i68 :: Double
+        chkI radii ((24 * i1) + i68) 0 0
+        t69 <- rdU radii ((24 * i1) + i68)
+        let !s70 = (t69 / 4.0)
+        chkI walk (12 * i68) 0 8
+        t71 <- rdU walk (12 * i68)
+        t72 <- rdU walk ((12 * i68) + 1)
+        t73 <- rdU walk ((12 * i68) + 2)
+        t74 <- rdU walk ((12 * i68) + 6)
+        t75 <- rdU walk ((12 * i68) + 7)
+        t76 <- rdU walk ((12 * i68) + 8)
+        t77 <- rdU walk ((12 * i68) + 3)
+        t78 <- rdU walk ((12 * i68) + 4)
+        t79 <- rdU walk ((12 * i68) + 5)
+        let !s80 = (t71 + (s70 * t77))
+        let !s81 = (t72 + (s70 * t78))
+        let !s82 = (t73 + (s70 * t79))
+        let !t83 = (if (abs s70) > 0 then 1.0 else 0.0)
+        let !t84 = (if (abs t75) > 0 then 1.0 else 0.0)
+        let !t85 = (if ((abs s81) - 1.0e-10) > 0 then t84 else 0.0)
+        let !t86 = (if t85 > 0 then (s81 + (negate ((s81 / t75) * t75))) else s81)
+        let !t87 = (if ((abs t86) - 1.0e-10) > 0 then t84 else 0.0)
+        let !t88 = (if t87 > 0 then (t86 + (negate ((t86 / t75) * t75))) else t86)
+        let !t89 = (if ((abs t88) - 1.0e-10) > 0 then t84 else 0.0)
+        let !t90 = (if t85 > 0 then (s80 + (negate ((s81 / t75) * t74))) else s80)
+        let !t91 = (if t87 > 0 then (t90 + (negate ((t86 / t75) * t74))) else t90)
+        let !t92 = (1.0 - t83)
+        let !t93 = (if t85 > 0 then (s82 + (negate ((s81 / t75) * t76))) else s82)
+        let !t94 = (if t87 > 0 then (t93 + (negate ((t86 / t75) * t76))) else t93)
+        let !s95 = ((t83 * (if t89 > 0 then (t91 + (negate ((t88 / t75) * t74))) else t91)) + (t92 * t71))
+        let !s96 = ((t83 * (if t89 > 0 then (t88 + (negate ((t88 / t75) * t75))) else t88)) + (t92 * t72))
+        let !s97 = ((t83 * (if t89 > 0 then (t94 + (negate ((t88 / t75) * t76))) else t94)) + (t92 * t73))
+        let !t98 = (1.0 - (abs (((s95 - s95) + (s96 - s96)) + (s97 - s97))))
+        let !s99 = (if t98 > 0 then s95 else t2)
+        let !s100 = (if t98 > 0 then s96 else t3)
+        let !s101 = (if t98 > 0 then s97 else t4)
+        chkI verts ((291 * i1) + (12 * i68)) 6 8
+        wrU verts (((291 * i1) + (12 * i68)) + 6) s99
+        wrU verts (((291 * i1) + (12 * i68)) + 7) s100
+        wrU verts (((291 * i1) + (12 * i68)) + 8) s101
+        wrU walk (12 * i68) s95
+        wrU walk ((12 * i68) + 1) s96
+        wrU walk ((12 * i68) + 2) s97
+        let !t102 = (sqrt (((t77 * t77) + (t78 * t78)) + (t79 * t79)))
+        let !t103 = (if (abs s70) > 0 then (recip s70) else 0.0)
+        let !t104 = (t103 * ((if t89 > 0 then (t91 + (negate ((t88 / t75) * t74))) else t91) + (negate t71)))
+        let !t105 = (t103 * ((if t89 > 0 then (t88 + (negate ((t88 / t75) * t75))) else t88) + (negate t72)))
+        let !t106 = (t105 + (negate t105))
+        let !t107 = (t103 * ((if t89 > 0 then (t94 + (negate ((t88 / t75) * t76))) else t94) + (negate t73)))
+        let !t108 = (sqrt (((t104 * t104) + (t106 * t106)) + (t107 * t107)))
+        let !t109 = (if t108 > 0 then (recip (if (t108 - 1.0e-300) > 0 then t108 else 1.0e-300)) else 0.0)
+        let !s110 = ((t83 * (t102 * (t109 * t104))) + (t92 * t77))
+        let !s111 = ((t83 * (t102 * (t109 * t106))) + (t92 * t78))
+        let !s112 = ((t83 * (t102 * (t109 * t107))) + (t92 * t79))
+        wrU walk ((12 * i68) + 3) s110
+        wrU walk ((12 * i68) + 4) s111
+        wrU walk ((12 * i68) + 5) s112
+        let !s113 = (t92 * t74)
+        let !s114 = (t83 + (t92 * t75))
+        let !s115 = (t92 * t76)
+        wrU walk ((12 * i68) + 6) s113
+        wrU walk ((12 * i68) + 7) s114
+        wrU walk ((12 * i68) + 8) s115
         pure ()
-      loopI 0.0 24.0 $ \i108 -> do
-        let !d108 = fromIntegral i108 :: Double
-        chkI radii ((24 * i1) + i108) 0 0
-        t109 <- rdU radii ((24 * i1) + i108)
-        let !s110 = (t109 / 4.0)
-        chkI walk (12 * i108) 0 8
-        t111 <- rdU walk (12 * i108)
-        t112 <- rdU walk ((12 * i108) + 1)
-        t113 <- rdU walk ((12 * i108) + 2)
-        t114 <- rdU walk ((12 * i108) + 6)
-        t115 <- rdU walk ((12 * i108) + 7)
-        t116 <- rdU walk ((12 * i108) + 8)
-        t117 <- rdU walk ((12 * i108) + 3)
-        t118 <- rdU walk ((12 * i108) + 4)
-        t119 <- rdU walk ((12 * i108) + 5)
-        let !s120 = (t111 + (s110 * t117))
-        let !s121 = (t112 + (s110 * t118))
-        let !s122 = (t113 + (s110 * t119))
-        let !t123 = (if (abs s110) > 0 then 1.0 else 0.0)
-        let !t124 = (if (abs t115) > 0 then 1.0 else 0.0)
-        let !t125 = (if ((abs s121) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t126 = (if t125 > 0 then (s121 + (negate ((s121 / t115) * t115))) else s121)
-        let !t127 = (if ((abs t126) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t128 = (if t127 > 0 then (t126 + (negate ((t126 / t115) * t115))) else t126)
-        let !t129 = (if ((abs t128) - 1.0e-10) > 0 then t124 else 0.0)
-        let !t130 = (if t125 > 0 then (s120 + (negate ((s121 / t115) * t114))) else s120)
-        let !t131 = (if t127 > 0 then (t130 + (negate ((t126 / t115) * t114))) else t130)
-        let !t132 = (1.0 - t123)
-        let !t133 = (if t125 > 0 then (s122 + (negate ((s121 / t115) * t116))) else s122)
-        let !t134 = (if t127 > 0 then (t133 + (negate ((t126 / t115) * t116))) else t133)
-        let !s135 = ((t123 * (if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131)) + (t132 * t111))
-        let !s136 = ((t123 * (if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128)) + (t132 * t112))
-        let !s137 = ((t123 * (if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134)) + (t132 * t113))
-        chkI verts ((291 * i1) + (12 * i108)) 9 11
-        wrU verts (((291 * i1) + (12 * i108)) + 9) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s135 else t2)
-        wrU verts (((291 * i1) + (12 * i108)) + 10) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s136 else t3)
-        wrU verts (((291 * i1) + (12 * i108)) + 11) (if (1.0 - (abs (((s135 - s135) + (s136 - s136)) + (s137 - s137)))) > 0 then s137 else t4)
-        wrU walk (12 * i108) s135
-        wrU walk ((12 * i108) + 1) s136
-        wrU walk ((12 * i108) + 2) s137
-        let !t138 = (sqrt (((t117 * t117) + (t118 * t118)) + (t119 * t119)))
-        let !t139 = (if (abs s110) > 0 then (recip s110) else 0.0)
-        let !t140 = (t139 * ((if t129 > 0 then (t131 + (negate ((t128 / t115) * t114))) else t131) + (negate t111)))
-        let !t141 = (t139 * ((if t129 > 0 then (t128 + (negate ((t128 / t115) * t115))) else t128) + (negate t112)))
-        let !t142 = (t141 + (negate t141))
-        let !t143 = (t139 * ((if t129 > 0 then (t134 + (negate ((t128 / t115) * t116))) else t134) + (negate t113)))
-        let !t144 = (sqrt (((t140 * t140) + (t142 * t142)) + (t143 * t143)))
-        let !t145 = (if t144 > 0 then (recip (if (t144 - 1.0e-300) > 0 then t144 else 1.0e-300)) else 0.0)
-        let !s146 = ((t123 * (t138 * (t145 * t140))) + (t132 * t117))
-        let !s147 = ((t123 * (t138 * (t145 * t142))) + (t132 * t118))
-        let !s148 = ((t123 * (t138 * (t145 * t143))) + (t132 * t119))
-        wrU walk ((12 * i108) + 3) s146
-        wrU walk ((12 * i108) + 4) s147
-        wrU walk ((12 * i108) + 5) s148
-        let !s149 = (t132 * t114)
-        let !s150 = (t123 + (t132 * t115))
-        let !s151 = (t132 * t116)
-        wrU walk ((12 * i108) + 6) s149
-        wrU walk ((12 * i108) + 7) s150
-        wrU walk ((12 * i108) + 8) s151
+      loopI 0.0 24.0 $ \i116 -> do
+        let !d116 = fromIntegral i116 :: Double
+        chkI radii ((24 * i1) + i116) 0 0
+        t117 <- rdU radii ((24 * i1) + i116)
+        let !s118 = (t117 / 4.0)
+        chkI walk (12 * i116) 0 8
+        t119 <- rdU walk (12 * i116)
+        t120 <- rdU walk ((12 * i116) + 1)
+        t121 <- rdU walk ((12 * i116) + 2)
+        t122 <- rdU walk ((12 * i116) + 6)
+        t123 <- rdU walk ((12 * i116) + 7)
+        t124 <- rdU walk ((12 * i116) + 8)
+        t125 <- rdU walk ((12 * i116) + 3)
+        t126 <- rdU walk ((12 * i116) + 4)
+        t127 <- rdU walk ((12 * i116) + 5)
+        let !s128 = (t119 + (s118 * t125))
+        let !s129 = (t120 + (s118 * t126))
+        let !s130 = (t121 + (s118 * t127))
+        let !t131 = (if (abs s118) > 0 then 1.0 else 0.0)
+        let !t132 = (if (abs t123) > 0 then 1.0 else 0.0)
+        let !t133 = (if ((abs s129) - 1.0e-10) > 0 then t132 else 0.0)
+        let !t134 = (if t133 > 0 then (s129 + (negate ((s129 / t123) * t123))) else s129)
+        let !t135 = (if ((abs t134) - 1.0e-10) > 0 then t132 else 0.0)
+        let !t136 = (if t135 > 0 then (t134 + (negate ((t134 / t123) * t123))) else t134)
+        let !t137 = (if ((abs t136) - 1.0e-10) > 0 then t132 else 0.0)
+        let !t138 = (if t133 > 0 then (s128 + (negate ((s129 / t123) * t122))) else s128)
+        let !t139 = (if t135 > 0 then (t138 + (negate ((t134 / t123) * t122))) else t138)
+        let !t140 = (1.0 - t131)
+        let !t141 = (if t133 > 0 then (s130 + (negate ((s129 / t123) * t124))) else s130)
+        let !t142 = (if t135 > 0 then (t141 + (negate ((t134 / t123) * t124))) else t141)
+        let !s143 = ((t131 * (if t137 > 0 then (t139 + (negate ((t136 / t123) * t122))) else t139)) + (t140 * t119))
+        let !s144 = ((t131 * (if t137 > 0 then (t136 + (negate ((t136 / t123) * t123))) else t136)) + (t140 * t120))
+        let !s145 = ((t131 * (if t137 > 0 then (t142 + (negate ((t136 / t123) * t124))) else t142)) + (t140 * t121))
+        let !t146 = (1.0 - (abs (((s143 - s143) + (s144 - s144)) + (s145 - s145))))
+        let !s147 = (if t146 > 0 then s143 else t2)
+        let !s148 = (if t146 > 0 then s144 else t3)
+        let !s149 = (if t146 > 0 then s145 else t4)
+        chkI verts ((291 * i1) + (12 * i116)) 9 11
+        wrU verts (((291 * i1) + (12 * i116)) + 9) s147
+        wrU verts (((291 * i1) + (12 * i116)) + 10) s148
+        wrU verts (((291 * i1) + (12 * i116)) + 11) s149
+        wrU walk (12 * i116) s143
+        wrU walk ((12 * i116) + 1) s144
+        wrU walk ((12 * i116) + 2) s145
+        let !t150 = (sqrt (((t125 * t125) + (t126 * t126)) + (t127 * t127)))
+        let !t151 = (if (abs s118) > 0 then (recip s118) else 0.0)
+        let !t152 = (t151 * ((if t137 > 0 then (t139 + (negate ((t136 / t123) * t122))) else t139) + (negate t119)))
+        let !t153 = (t151 * ((if t137 > 0 then (t136 + (negate ((t136 / t123) * t123))) else t136) + (negate t120)))
+        let !t154 = (t153 + (negate t153))
+        let !t155 = (t151 * ((if t137 > 0 then (t142 + (negate ((t136 / t123) * t124))) else t142) + (negate t121)))
+        let !t156 = (sqrt (((t152 * t152) + (t154 * t154)) + (t155 * t155)))
+        let !t157 = (if t156 > 0 then (recip (if (t156 - 1.0e-300) > 0 then t156 else 1.0e-300)) else 0.0)
+        let !s158 = ((t131 * (t150 * (t157 * t152))) + (t140 * t125))
+        let !s159 = ((t131 * (t150 * (t157 * t154))) + (t140 * t126))
+        let !s160 = ((t131 * (t150 * (t157 * t155))) + (t140 * t127))
+        wrU walk ((12 * i116) + 3) s158
+        wrU walk ((12 * i116) + 4) s159
+        wrU walk ((12 * i116) + 5) s160
+        let !s161 = (t140 * t122)
+        let !s162 = (t131 + (t140 * t123))
+        let !s163 = (t140 * t124)
+        wrU walk ((12 * i116) + 6) s161
+        wrU walk ((12 * i116) + 7) s162
+        wrU walk ((12 * i116) + 8) s163
         pure ()
-      loopI 0.0 24.0 $ \i152 -> do
-        let !d152 = fromIntegral i152 :: Double
-        chkI radii ((24 * i1) + i152) 0 0
-        t153 <- rdU radii ((24 * i1) + i152)
-        let !s154 = (t153 / 4.0)
-        chkI walk (12 * i152) 0 8
-        t155 <- rdU walk (12 * i152)
-        t156 <- rdU walk ((12 * i152) + 1)
-        t157 <- rdU walk ((12 * i152) + 2)
-        t158 <- rdU walk ((12 * i152) + 6)
-        t159 <- rdU walk ((12 * i152) + 7)
-        t160 <- rdU walk ((12 * i152) + 8)
-        t161 <- rdU walk ((12 * i152) + 3)
-        t162 <- rdU walk ((12 * i152) + 4)
-        t163 <- rdU walk ((12 * i152) + 5)
-        let !s164 = (t155 + (s154 * t161))
-        let !s165 = (t156 + (s154 * t162))
-        let !s166 = (t157 + (s154 * t163))
-        let !t167 = (if (abs s154) > 0 then 1.0 else 0.0)
-        let !t168 = (if (abs t159) > 0 then 1.0 else 0.0)
-        let !t169 = (if ((abs s165) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t170 = (if t169 > 0 then (s165 + (negate ((s165 / t159) * t159))) else s165)
-        let !t171 = (if ((abs t170) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t172 = (if t171 > 0 then (t170 + (negate ((t170 / t159) * t159))) else t170)
-        let !t173 = (if ((abs t172) - 1.0e-10) > 0 then t168 else 0.0)
-        let !t174 = (if t169 > 0 then (s164 + (negate ((s165 / t159) * t158))) else s164)
-        let !t175 = (if t171 > 0 then (t174 + (negate ((t170 / t159) * t158))) else t174)
-        let !t176 = (1.0 - t167)
-        let !t177 = (if t169 > 0 then (s166 + (negate ((s165 / t159) * t160))) else s166)
-        let !t178 = (if t171 > 0 then (t177 + (negate ((t170 / t159) * t160))) else t177)
-        let !s179 = ((t167 * (if t173 > 0 then (t175 + (negate ((t172 / t159) * t158))) else t175)) + (t176 * t155))
-        let !s180 = ((t167 * (if t173 > 0 then (t172 + (negate ((t172 / t159) * t159))) else t172)) + (t176 * t156))
-        let !s181 = ((t167 * (if t173 > 0 then (t178 + (negate ((t172 / t159) * t160))) else t178)) + (t176 * t157))
-        chkI verts ((291 * i1) + (12 * i152)) 12 14
-        wrU verts (((291 * i1) + (12 * i152)) + 12) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s179 else t2)
-        wrU verts (((291 * i1) + (12 * i152)) + 13) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s180 else t3)
-        wrU verts (((291 * i1) + (12 * i152)) + 14) (if (1.0 - (abs (((s179 - s179) + (s180 - s180)) + (s181 - s181)))) > 0 then s181 else t4)
+      loopI 0.0 24.0 $ \i164 -> do
+        let !d164 = fromIntegral i164 :: Double
+        chkI radii ((24 * i1) + i164) 0 0
+        t165 <- rdU radii ((24 * i1) + i164)
+        let !s166 = (t165 / 4.0)
+        chkI walk (12 * i164) 0 8
+        t167 <- rdU walk (12 * i164)
+        t168 <- rdU walk ((12 * i164) + 1)
+        t169 <- rdU walk ((12 * i164) + 2)
+        t170 <- rdU walk ((12 * i164) + 6)
+        t171 <- rdU walk ((12 * i164) + 7)
+        t172 <- rdU walk ((12 * i164) + 8)
+        t173 <- rdU walk ((12 * i164) + 3)
+        t174 <- rdU walk ((12 * i164) + 4)
+        t175 <- rdU walk ((12 * i164) + 5)
+        let !s176 = (t167 + (s166 * t173))
+        let !s177 = (t168 + (s166 * t174))
+        let !s178 = (t169 + (s166 * t175))
+        let !t179 = (if (abs s166) > 0 then 1.0 else 0.0)
+        let !t180 = (if (abs t171) > 0 then 1.0 else 0.0)
+        let !t181 = (if ((abs s177) - 1.0e-10) > 0 then t180 else 0.0)
+        let !t182 = (if t181 > 0 then (s177 + (negate ((s177 / t171) * t171))) else s177)
+        let !t183 = (if ((abs t182) - 1.0e-10) > 0 then t180 else 0.0)
+        let !t184 = (if t183 > 0 then (t182 + (negate ((t182 / t171) * t171))) else t182)
+        let !t185 = (if ((abs t184) - 1.0e-10) > 0 then t180 else 0.0)
+        let !t186 = (if t181 > 0 then (s176 + (negate ((s177 / t171) * t170))) else s176)
+        let !t187 = (if t183 > 0 then (t186 + (negate ((t182 / t171) * t170))) else t186)
+        let !t188 = (1.0 - t179)
+        let !t189 = (if t181 > 0 then (s178 + (negate ((s177 / t171) * t172))) else s178)
+        let !t190 = (if t183 > 0 then (t189 + (negate ((t182 / t171) * t172))) else t189)
+        let !s191 = ((t179 * (if t185 > 0 then (t187 + (negate ((t184 / t171) * t170))) else t187)) + (t188 * t167))
+        let !s192 = ((t179 * (if t185 > 0 then (t184 + (negate ((t184 / t171) * t171))) else t184)) + (t188 * t168))
+        let !s193 = ((t179 * (if t185 > 0 then (t190 + (negate ((t184 / t171) * t172))) else t190)) + (t188 * t169))
+        let !t194 = (1.0 - (abs (((s191 - s191) + (s192 - s192)) + (s193 - s193))))
+        let !s195 = (if t194 > 0 then s191 else t2)
+        let !s196 = (if t194 > 0 then s192 else t3)
+        let !s197 = (if t194 > 0 then s193 else t4)
+        chkI verts ((291 * i1) + (12 * i164)) 12 14
+        wrU verts (((291 * i1) + (12 * i164)) + 12) s195
+        wrU verts (((291 * i1) + (12 * i164)) + 13) s196
+        wrU verts (((291 * i1) + (12 * i164)) + 14) s197
+        chkI outline ((72 * i1) + (3 * i164)) 0 2
+        wrU outline ((72 * i1) + (3 * i164)) s195
+        wrU outline (((72 * i1) + (3 * i164)) + 1) s196
+        wrU outline (((72 * i1) + (3 * i164)) + 2) s197
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i182 -> do
-        let !d182 = fromIntegral i182 :: Double
-        chkI radii ((24 * i1) + i182) 0 0
-        t183 <- rdU radii ((24 * i1) + i182)
-        t184 <- rdU locals 0
-        t185 <- rdU locals 1
-        wrU locals 0 ((t184 * 0.9659258262890683) - (t185 * 0.25881904510252074))
-        wrU locals 1 ((t185 * 0.9659258262890683) + (t184 * 0.25881904510252074))
-        let !s186 = ((t184 * t5) + (t185 * s14))
-        let !s187 = ((t184 * t6) + (t185 * s15))
-        let !s188 = ((t184 * t7) + (t185 * s16))
-        let !s189 = (t2 + (t183 * s186))
-        let !s190 = (t3 + (t183 * s187))
-        let !s191 = (t4 + (t183 * s188))
-        let !t192 = (if (abs t183) > 0 then 1.0 else 0.0)
-        let !t193 = (if (abs t9) > 0 then 1.0 else 0.0)
-        let !t194 = (if ((abs s190) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t195 = (if t194 > 0 then (s190 + (negate ((s190 / t9) * t9))) else s190)
-        let !t196 = (if ((abs t195) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t197 = (if t196 > 0 then (t195 + (negate ((t195 / t9) * t9))) else t195)
-        let !t198 = (if ((abs t197) - 1.0e-10) > 0 then t193 else 0.0)
-        let !t199 = (if t194 > 0 then (s189 + (negate ((s190 / t9) * t8))) else s189)
-        let !t200 = (if t196 > 0 then (t199 + (negate ((t195 / t9) * t8))) else t199)
-        let !t201 = (1.0 - t192)
-        let !t202 = (if t194 > 0 then (s191 + (negate ((s190 / t9) * t10))) else s191)
-        let !t203 = (if t196 > 0 then (t202 + (negate ((t195 / t9) * t10))) else t202)
-        let !s204 = ((t192 * (if t198 > 0 then (t200 + (negate ((t197 / t9) * t8))) else t200)) + (t201 * t2))
-        let !s205 = ((t192 * (if t198 > 0 then (t197 + (negate ((t197 / t9) * t9))) else t197)) + (t201 * t3))
-        let !s206 = ((t192 * (if t198 > 0 then (t203 + (negate ((t197 / t9) * t10))) else t203)) + (t201 * t4))
-        let !t207 = (1.0 - (abs (((s204 - s204) + (s205 - s205)) + (s206 - s206))))
-        let !s208 = (if t207 > 0 then s204 else t2)
-        let !s209 = (if t207 > 0 then s205 else t3)
-        let !s210 = (if t207 > 0 then s206 else t4)
-        chkI verts ((291 * i1) + (12 * i182)) 3 14
-        wrU verts (((291 * i1) + (12 * i182)) + 12) s208
-        wrU verts (((291 * i1) + (12 * i182)) + 13) s209
-        wrU verts (((291 * i1) + (12 * i182)) + 14) s210
-        wrU verts (((291 * i1) + (12 * i182)) + 3) (t2 + (0.25 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 4) (t3 + (0.25 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 5) (t4 + (0.25 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 6) (t2 + (0.5 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 7) (t3 + (0.5 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 8) (t4 + (0.5 * (s210 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i182)) + 9) (t2 + (0.75 * (s208 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i182)) + 10) (t3 + (0.75 * (s209 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i182)) + 11) (t4 + (0.75 * (s210 + (negate t4))))
+      loopI 0.0 24.0 $ \i198 -> do
+        let !d198 = fromIntegral i198 :: Double
+        chkI radii ((24 * i1) + i198) 0 0
+        t199 <- rdU radii ((24 * i1) + i198)
+        t200 <- rdU locals 0
+        t201 <- rdU locals 1
+        wrU locals 0 ((t200 * 0.9659258262890683) - (t201 * 0.25881904510252074))
+        wrU locals 1 ((t201 * 0.9659258262890683) + (t200 * 0.25881904510252074))
+        let !s202 = ((t200 * t5) + (t201 * s14))
+        let !s203 = ((t200 * t6) + (t201 * s15))
+        let !s204 = ((t200 * t7) + (t201 * s16))
+        let !s205 = (t2 + (t199 * s202))
+        let !s206 = (t3 + (t199 * s203))
+        let !s207 = (t4 + (t199 * s204))
+        let !t208 = (if (abs t199) > 0 then 1.0 else 0.0)
+        let !t209 = (if (abs t9) > 0 then 1.0 else 0.0)
+        let !t210 = (if ((abs s206) - 1.0e-10) > 0 then t209 else 0.0)
+        let !t211 = (if t210 > 0 then (s206 + (negate ((s206 / t9) * t9))) else s206)
+        let !t212 = (if ((abs t211) - 1.0e-10) > 0 then t209 else 0.0)
+        let !t213 = (if t212 > 0 then (t211 + (negate ((t211 / t9) * t9))) else t211)
+        let !t214 = (if ((abs t213) - 1.0e-10) > 0 then t209 else 0.0)
+        let !t215 = (if t210 > 0 then (s205 + (negate ((s206 / t9) * t8))) else s205)
+        let !t216 = (if t212 > 0 then (t215 + (negate ((t211 / t9) * t8))) else t215)
+        let !t217 = (1.0 - t208)
+        let !t218 = (if t210 > 0 then (s207 + (negate ((s206 / t9) * t10))) else s207)
+        let !t219 = (if t212 > 0 then (t218 + (negate ((t211 / t9) * t10))) else t218)
+        let !s220 = ((t208 * (if t214 > 0 then (t216 + (negate ((t213 / t9) * t8))) else t216)) + (t217 * t2))
+        let !s221 = ((t208 * (if t214 > 0 then (t213 + (negate ((t213 / t9) * t9))) else t213)) + (t217 * t3))
+        let !s222 = ((t208 * (if t214 > 0 then (t219 + (negate ((t213 / t9) * t10))) else t219)) + (t217 * t4))
+        let !t223 = (1.0 - (abs (((s220 - s220) + (s221 - s221)) + (s222 - s222))))
+        let !s224 = (if t223 > 0 then s220 else t2)
+        let !s225 = (if t223 > 0 then s221 else t3)
+        let !s226 = (if t223 > 0 then s222 else t4)
+        chkI verts ((291 * i1) + (12 * i198)) 3 14
+        wrU verts (((291 * i1) + (12 * i198)) + 12) s224
+        wrU verts (((291 * i1) + (12 * i198)) + 13) s225
+        wrU verts (((291 * i1) + (12 * i198)) + 14) s226
+        chkI outline ((72 * i1) + (3 * i198)) 0 2
+        wrU outline ((72 * i1) + (3 * i198)) s224
+        wrU outline (((72 * i1) + (3 * i198)) + 1) s225
+        wrU outline (((72 * i1) + (3 * i198)) + 2) s226
+        wrU verts (((291 * i1) + (12 * i198)) + 3) (t2 + (0.25 * (s224 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i198)) + 4) (t3 + (0.25 * (s225 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i198)) + 5) (t4 + (0.25 * (s226 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i198)) + 6) (t2 + (0.5 * (s224 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i198)) + 7) (t3 + (0.5 * (s225 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i198)) + 8) (t4 + (0.5 * (s226 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i198)) + 9) (t2 + (0.75 * (s224 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i198)) + 10) (t3 + (0.75 * (s225 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i198)) + 11) (t4 + (0.75 * (s226 + (negate t4))))
         pure ()
       pure ()
     pure ()

@@ -6,8 +6,8 @@ module Manifold.Compiled.Shared (pairContacts, solvePrepare, solveSweep) where
 
 import Manifold.Compiled.Runtime
 
-pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
-pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
+pairContacts :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> Double -> IO ()
+pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals !a0 !a1 !a2 !a3 !a4 !a5 !a6 !a7 !a8 = do
   chkI locals 0 32 49
   let !s0 = (negate (a3 * a6))
   let !s1 = (negate (a4 * a7))
@@ -43,10 +43,10 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
   wrU locals 38 0.0
   loopI 0.0 24.0 $ \i21 -> do
     let !d21 = fromIntegral i21 :: Double
-    chkI verts ((291 * (truncate a1)) + (12 * i21)) 12 14
-    t22 <- rdU verts (((291 * (truncate a1)) + (12 * i21)) + 12)
-    t23 <- rdU verts (((291 * (truncate a1)) + (12 * i21)) + 13)
-    t24 <- rdU verts (((291 * (truncate a1)) + (12 * i21)) + 14)
+    chkI outline ((72 * (truncate a1)) + (3 * i21)) 0 2
+    t22 <- rdU outline ((72 * (truncate a1)) + (3 * i21))
+    t23 <- rdU outline (((72 * (truncate a1)) + (3 * i21)) + 1)
+    t24 <- rdU outline (((72 * (truncate a1)) + (3 * i21)) + 2)
     chkI probe i21 0 0
     wrU probe i21 (-1.0)
     let !t25 = (((a3 * t22) + a6) + (negate t3))
@@ -62,16 +62,16 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       let !t34 = ((s28 * t19) + (s29 * t20))
       let !t35 = (if t32 > 0 then (negate t34) else t34)
       let !s36 = ((if t32 > 0 then 12.0 else 0.0) + (((((((((((if ((0.9659258262890683 * t33) - (0.25881904510252074 * t35)) > 0 then 1.0 else 0.0) + (if ((0.8660254037844387 * t33) - (0.49999999999999994 * t35)) > 0 then 1.0 else 0.0)) + (if ((0.7071067811865476 * t33) - (0.7071067811865475 * t35)) > 0 then 1.0 else 0.0)) + (if ((0.5000000000000001 * t33) - (0.8660254037844386 * t35)) > 0 then 1.0 else 0.0)) + (if ((0.25881904510252096 * t33) - (0.9659258262890682 * t35)) > 0 then 1.0 else 0.0)) + (if ((6.123233995736766e-17 * t33) - t35) > 0 then 1.0 else 0.0)) + (if (((-0.25881904510252063) * t33) - (0.9659258262890683 * t35)) > 0 then 1.0 else 0.0)) + (if (((-0.4999999999999998) * t33) - (0.8660254037844387 * t35)) > 0 then 1.0 else 0.0)) + (if (((-0.7071067811865475) * t33) - (0.7071067811865476 * t35)) > 0 then 1.0 else 0.0)) + (if (((-0.8660254037844385) * t33) - (0.5000000000000003 * t35)) > 0 then 1.0 else 0.0)) + (if (((-0.9659258262890682) * t33) - (0.258819045102521 * t35)) > 0 then 1.0 else 0.0)))
-      chkI verts ((291 * (truncate a2)) + (12 * (truncate s36))) 12 14
-      t37 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s36))) + 12)
-      t38 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s36))) + 13)
-      t39 <- rdU verts (((291 * (truncate a2)) + (12 * (truncate s36))) + 14)
-      chkI verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)) * 4.0)) + 3.0))) 0 0
-      t40 <- rdU verts (truncate (3.0 * ((((97.0 * a2) + 1.0) + ((if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)) * 4.0)) + 3.0)))
-      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
-      t41 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      chkI verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
-      t42 <- rdU verts (truncate ((3.0 * ((((97.0 * a2) + 1.0) + ((if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      chkI outline ((72 * (truncate a2)) + (3 * (truncate s36))) 0 2
+      t37 <- rdU outline ((72 * (truncate a2)) + (3 * (truncate s36)))
+      t38 <- rdU outline (((72 * (truncate a2)) + (3 * (truncate s36))) + 1)
+      t39 <- rdU outline (((72 * (truncate a2)) + (3 * (truncate s36))) + 2)
+      chkI outline (truncate (3.0 * ((24.0 * a2) + (if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0))))) 0 0
+      t40 <- rdU outline (truncate (3.0 * ((24.0 * a2) + (if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)))))
+      chkI outline (truncate ((3.0 * ((24.0 * a2) + (if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)))) + 1.0)) 0 0
+      t41 <- rdU outline (truncate ((3.0 * ((24.0 * a2) + (if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)))) + 1.0))
+      chkI outline (truncate ((3.0 * ((24.0 * a2) + (if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)))) + 2.0)) 0 0
+      t42 <- rdU outline (truncate ((3.0 * ((24.0 * a2) + (if ((s36 - 24.0) + 1.5) > 0 then 0.0 else (s36 + 1.0)))) + 2.0))
       let !t43 = (negate t3)
       let !t44 = (negate t4)
       let !t45 = (negate t5)
@@ -143,10 +143,10 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
   wrU locals 45 0.0
   loopI 0.0 24.0 $ \i85 -> do
     let !d85 = fromIntegral i85 :: Double
-    chkI verts ((291 * (truncate a2)) + (12 * i85)) 12 14
-    t86 <- rdU verts (((291 * (truncate a2)) + (12 * i85)) + 12)
-    t87 <- rdU verts (((291 * (truncate a2)) + (12 * i85)) + 13)
-    t88 <- rdU verts (((291 * (truncate a2)) + (12 * i85)) + 14)
+    chkI outline ((72 * (truncate a2)) + (3 * i85)) 0 2
+    t86 <- rdU outline ((72 * (truncate a2)) + (3 * i85))
+    t87 <- rdU outline (((72 * (truncate a2)) + (3 * i85)) + 1)
+    t88 <- rdU outline (((72 * (truncate a2)) + (3 * i85)) + 2)
     chkI probe i85 24 24
     wrU probe (i85 + 24) (-1.0)
     let !t89 = (((a3 * t86) + s0) + (negate t67))
@@ -162,16 +162,16 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       let !t98 = ((s92 * t83) + (s93 * t84))
       let !t99 = (if t96 > 0 then (negate t98) else t98)
       let !s100 = ((if t96 > 0 then 12.0 else 0.0) + (((((((((((if ((0.9659258262890683 * t97) - (0.25881904510252074 * t99)) > 0 then 1.0 else 0.0) + (if ((0.8660254037844387 * t97) - (0.49999999999999994 * t99)) > 0 then 1.0 else 0.0)) + (if ((0.7071067811865476 * t97) - (0.7071067811865475 * t99)) > 0 then 1.0 else 0.0)) + (if ((0.5000000000000001 * t97) - (0.8660254037844386 * t99)) > 0 then 1.0 else 0.0)) + (if ((0.25881904510252096 * t97) - (0.9659258262890682 * t99)) > 0 then 1.0 else 0.0)) + (if ((6.123233995736766e-17 * t97) - t99) > 0 then 1.0 else 0.0)) + (if (((-0.25881904510252063) * t97) - (0.9659258262890683 * t99)) > 0 then 1.0 else 0.0)) + (if (((-0.4999999999999998) * t97) - (0.8660254037844387 * t99)) > 0 then 1.0 else 0.0)) + (if (((-0.7071067811865475) * t97) - (0.7071067811865476 * t99)) > 0 then 1.0 else 0.0)) + (if (((-0.8660254037844385) * t97) - (0.5000000000000003 * t99)) > 0 then 1.0 else 0.0)) + (if (((-0.9659258262890682) * t97) - (0.258819045102521 * t99)) > 0 then 1.0 else 0.0)))
-      chkI verts ((291 * (truncate a1)) + (12 * (truncate s100))) 12 14
-      t101 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s100))) + 12)
-      t102 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s100))) + 13)
-      t103 <- rdU verts (((291 * (truncate a1)) + (12 * (truncate s100))) + 14)
-      chkI verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)) * 4.0)) + 3.0))) 0 0
-      t104 <- rdU verts (truncate (3.0 * ((((97.0 * a1) + 1.0) + ((if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)) * 4.0)) + 3.0)))
-      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)) * 4.0)) + 3.0)) + 1.0)) 0 0
-      t105 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)) * 4.0)) + 3.0)) + 1.0))
-      chkI verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)) * 4.0)) + 3.0)) + 2.0)) 0 0
-      t106 <- rdU verts (truncate ((3.0 * ((((97.0 * a1) + 1.0) + ((if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)) * 4.0)) + 3.0)) + 2.0))
+      chkI outline ((72 * (truncate a1)) + (3 * (truncate s100))) 0 2
+      t101 <- rdU outline ((72 * (truncate a1)) + (3 * (truncate s100)))
+      t102 <- rdU outline (((72 * (truncate a1)) + (3 * (truncate s100))) + 1)
+      t103 <- rdU outline (((72 * (truncate a1)) + (3 * (truncate s100))) + 2)
+      chkI outline (truncate (3.0 * ((24.0 * a1) + (if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0))))) 0 0
+      t104 <- rdU outline (truncate (3.0 * ((24.0 * a1) + (if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)))))
+      chkI outline (truncate ((3.0 * ((24.0 * a1) + (if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)))) + 1.0)) 0 0
+      t105 <- rdU outline (truncate ((3.0 * ((24.0 * a1) + (if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)))) + 1.0))
+      chkI outline (truncate ((3.0 * ((24.0 * a1) + (if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)))) + 2.0)) 0 0
+      t106 <- rdU outline (truncate ((3.0 * ((24.0 * a1) + (if ((s100 - 24.0) + 1.5) > 0 then 0.0 else (s100 + 1.0)))) + 2.0))
       let !t107 = (negate t67)
       let !t108 = (negate t68)
       let !t109 = (negate t69)
@@ -264,10 +264,10 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     wrU locals 49 (-1.0)
     loopI 0.0 24.0 $ \i171 -> do
       let !d171 = fromIntegral i171 :: Double
-      chkI verts ((291 * (truncate s133)) + (12 * i171)) 12 14
-      t172 <- rdU verts (((291 * (truncate s133)) + (12 * i171)) + 12)
-      t173 <- rdU verts (((291 * (truncate s133)) + (12 * i171)) + 13)
-      t174 <- rdU verts (((291 * (truncate s133)) + (12 * i171)) + 14)
+      chkI outline ((72 * (truncate s133)) + (3 * i171)) 0 2
+      t172 <- rdU outline ((72 * (truncate s133)) + (3 * i171))
+      t173 <- rdU outline (((72 * (truncate s133)) + (3 * i171)) + 1)
+      t174 <- rdU outline (((72 * (truncate s133)) + (3 * i171)) + 2)
       chkI probe ((truncate s138) + i171) 0 0
       t175 <- rdU probe ((truncate s138) + i171)
       if t175 > 0 then do
@@ -292,10 +292,10 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       pure ()
     t179 <- rdU locals 48
     t180 <- rdU locals 49
-    chkI verts ((291 * (truncate s133)) + (12 * (truncate t179))) 12 14
-    t181 <- rdU verts (((291 * (truncate s133)) + (12 * (truncate t179))) + 12)
-    t182 <- rdU verts (((291 * (truncate s133)) + (12 * (truncate t179))) + 13)
-    t183 <- rdU verts (((291 * (truncate s133)) + (12 * (truncate t179))) + 14)
+    chkI outline ((72 * (truncate s133)) + (3 * (truncate t179))) 0 2
+    t181 <- rdU outline ((72 * (truncate s133)) + (3 * (truncate t179)))
+    t182 <- rdU outline (((72 * (truncate s133)) + (3 * (truncate t179))) + 1)
+    t183 <- rdU outline (((72 * (truncate s133)) + (3 * (truncate t179))) + 2)
     let !s184 = ((a3 * t181) + s135)
     let !s185 = ((a4 * t182) + s136)
     let !s186 = ((a5 * t183) + s137)
@@ -399,10 +399,10 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
       wrU meta 6 (t236 + 1.0)
       pure ()
     if (abs (t180 - t179)) > 0 then do
-      chkI verts ((291 * (truncate s133)) + (12 * (truncate t180))) 12 14
-      t237 <- rdU verts (((291 * (truncate s133)) + (12 * (truncate t180))) + 12)
-      t238 <- rdU verts (((291 * (truncate s133)) + (12 * (truncate t180))) + 13)
-      t239 <- rdU verts (((291 * (truncate s133)) + (12 * (truncate t180))) + 14)
+      chkI outline ((72 * (truncate s133)) + (3 * (truncate t180))) 0 2
+      t237 <- rdU outline ((72 * (truncate s133)) + (3 * (truncate t180)))
+      t238 <- rdU outline (((72 * (truncate s133)) + (3 * (truncate t180))) + 1)
+      t239 <- rdU outline (((72 * (truncate s133)) + (3 * (truncate t180))) + 2)
       let !s240 = ((a3 * t237) + s135)
       let !s241 = ((a4 * t238) + s136)
       let !s242 = ((a5 * t239) + s137)
@@ -512,8 +512,8 @@ pairContacts !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     pure ()
   pure ()
 
-solvePrepare :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-solvePrepare !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+solvePrepare :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+solvePrepare !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 32 36
   chkI params 0 0 9
   t0 <- rdU params 0
@@ -684,8 +684,8 @@ solvePrepare !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid 
     pure ()
   pure ()
 
-solveSweep :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-solveSweep !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+solveSweep :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+solveSweep !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 3 3
   t0 <- rdU params 3
   chkI meta 0 2 2

@@ -22,13 +22,13 @@ compiled = CompiledStep "torus" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  const t0 = (Math.sqrt(((x * x) + (z * z))) - 0.8);\n  return (Math.sqrt(((t0 * t0) + (y * y))) - 0.5);\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, 0.0, (-4.0)];\n}\n\nquotient NoQuotient\nbounds 3.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, outline, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Torus: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
@@ -214,7 +214,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d67 = fromIntegral i67 :: Double
       chkI near i67 0 0
       t68 <- rdU near i67
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     chkI verts (291 * i29) 0 2
     t69 <- rdU verts (291 * i29)
@@ -223,10 +223,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 3 1.0
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i29) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      chkI outline ((72 * i29) + (3 * i72)) 0 2
+      t73 <- rdU outline ((72 * i29) + (3 * i72))
+      t74 <- rdU outline (((72 * i29) + (3 * i72)) + 1)
+      t75 <- rdU outline (((72 * i29) + (3 * i72)) + 2)
       chkI radii ((24 * i29) + i72) 0 0
       t76 <- rdU radii ((24 * i29) + i72)
       t77 <- rdU locals 3
@@ -515,11 +515,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 2 2
   t0 <- rdU params 2
-  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+  solvePrepare meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
   t1 <- rdU mouse 0
   if t1 > 0 then do
@@ -935,7 +935,7 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   loopI 0.0 t0 $ \i388 -> do
     let !d388 = fromIntegral i388 :: Double
-    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    solveSweep meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
     t389 <- rdU mouse 0
     if t389 > 0 then do
       chkI mouse 0 1 1
@@ -1403,8 +1403,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1597,8 +1597,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
@@ -1729,520 +1729,544 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s86 = ((t74 * (if t84 > 0 then (t66 + (negate ((t78 / t83) * t8))) else t66)) + (t85 * t2))
         let !s87 = ((t74 * (if t84 > 0 then (t67 + (negate ((t78 / t83) * t9))) else t67)) + (t85 * t3))
         let !s88 = ((t74 * (if t84 > 0 then (t68 + (negate ((t78 / t83) * t10))) else t68)) + (t85 * t4))
+        let !t89 = (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88))))
+        let !s90 = (if t89 > 0 then s86 else t2)
+        let !s91 = (if t89 > 0 then s87 else t3)
+        let !s92 = (if t89 > 0 then s88 else t4)
         chkI verts ((291 * i1) + (12 * i65)) 3 5
-        wrU verts (((291 * i1) + (12 * i65)) + 3) (if (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88)))) > 0 then s86 else t2)
-        wrU verts (((291 * i1) + (12 * i65)) + 4) (if (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88)))) > 0 then s87 else t3)
-        wrU verts (((291 * i1) + (12 * i65)) + 5) (if (1.0 - (abs (((s86 - s86) + (s87 - s87)) + (s88 - s88)))) > 0 then s88 else t4)
+        wrU verts (((291 * i1) + (12 * i65)) + 3) s90
+        wrU verts (((291 * i1) + (12 * i65)) + 4) s91
+        wrU verts (((291 * i1) + (12 * i65)) + 5) s92
         wrU walk (12 * i65) s86
         wrU walk ((12 * i65) + 1) s87
         wrU walk ((12 * i65) + 2) s88
-        let !t89 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
-        let !t90 = (if (abs s70) > 0 then (recip s70) else 0.0)
-        let !t91 = (t90 * ((if t84 > 0 then (t66 + (negate ((t78 / t83) * t8))) else t66) + (negate t2)))
-        let !t92 = (t79 * (t81 + t81))
-        let !t93 = (t79 * (t67 + t67))
-        let !t94 = (t79 * (t82 + t82))
-        let !t95 = (sqrt (((t92 * t92) + (t93 * t93)) + (t94 * t94)))
-        let !t96 = (if t95 > 0 then (recip (if (t95 - 1.0e-300) > 0 then t95 else 1.0e-300)) else 0.0)
-        let !t97 = (t96 * t92)
-        let !t98 = (t96 * t93)
-        let !t99 = (t90 * ((if t84 > 0 then (t67 + (negate ((t78 / t83) * t9))) else t67) + (negate t3)))
-        let !t100 = (t96 * t94)
-        let !t101 = (t90 * ((if t84 > 0 then (t68 + (negate ((t78 / t83) * t10))) else t68) + (negate t4)))
-        let !t102 = (((t97 * t91) + (t98 * t99)) + (t100 * t101))
-        let !t103 = (t91 + (negate (t102 * t97)))
-        let !t104 = (t99 + (negate (t102 * t98)))
-        let !t105 = (t101 + (negate (t102 * t100)))
-        let !t106 = (sqrt (((t103 * t103) + (t104 * t104)) + (t105 * t105)))
-        let !t107 = (if t106 > 0 then (recip (if (t106 - 1.0e-300) > 0 then t106 else 1.0e-300)) else 0.0)
-        let !s108 = ((t74 * (t89 * (t107 * t103))) + (t85 * t71))
-        let !s109 = ((t74 * (t89 * (t107 * t104))) + (t85 * t72))
-        let !s110 = ((t74 * (t89 * (t107 * t105))) + (t85 * t73))
-        wrU walk ((12 * i65) + 3) s108
-        wrU walk ((12 * i65) + 4) s109
-        wrU walk ((12 * i65) + 5) s110
-        let !s111 = ((t74 * t97) + (t85 * t8))
-        let !s112 = ((t74 * t98) + (t85 * t9))
-        let !s113 = ((t74 * t100) + (t85 * t10))
-        wrU walk ((12 * i65) + 6) s111
-        wrU walk ((12 * i65) + 7) s112
-        wrU walk ((12 * i65) + 8) s113
+        let !t93 = (sqrt (((t71 * t71) + (t72 * t72)) + (t73 * t73)))
+        let !t94 = (if (abs s70) > 0 then (recip s70) else 0.0)
+        let !t95 = (t94 * ((if t84 > 0 then (t66 + (negate ((t78 / t83) * t8))) else t66) + (negate t2)))
+        let !t96 = (t79 * (t81 + t81))
+        let !t97 = (t79 * (t67 + t67))
+        let !t98 = (t79 * (t82 + t82))
+        let !t99 = (sqrt (((t96 * t96) + (t97 * t97)) + (t98 * t98)))
+        let !t100 = (if t99 > 0 then (recip (if (t99 - 1.0e-300) > 0 then t99 else 1.0e-300)) else 0.0)
+        let !t101 = (t100 * t96)
+        let !t102 = (t100 * t97)
+        let !t103 = (t94 * ((if t84 > 0 then (t67 + (negate ((t78 / t83) * t9))) else t67) + (negate t3)))
+        let !t104 = (t100 * t98)
+        let !t105 = (t94 * ((if t84 > 0 then (t68 + (negate ((t78 / t83) * t10))) else t68) + (negate t4)))
+        let !t106 = (((t101 * t95) + (t102 * t103)) + (t104 * t105))
+        let !t107 = (t95 + (negate (t106 * t101)))
+        let !t108 = (t103 + (negate (t106 * t102)))
+        let !t109 = (t105 + (negate (t106 * t104)))
+        let !t110 = (sqrt (((t107 * t107) + (t108 * t108)) + (t109 * t109)))
+        let !t111 = (if t110 > 0 then (recip (if (t110 - 1.0e-300) > 0 then t110 else 1.0e-300)) else 0.0)
+        let !s112 = ((t74 * (t93 * (t111 * t107))) + (t85 * t71))
+        let !s113 = ((t74 * (t93 * (t111 * t108))) + (t85 * t72))
+        let !s114 = ((t74 * (t93 * (t111 * t109))) + (t85 * t73))
+        wrU walk ((12 * i65) + 3) s112
+        wrU walk ((12 * i65) + 4) s113
+        wrU walk ((12 * i65) + 5) s114
+        let !s115 = ((t74 * t101) + (t85 * t8))
+        let !s116 = ((t74 * t102) + (t85 * t9))
+        let !s117 = ((t74 * t104) + (t85 * t10))
+        wrU walk ((12 * i65) + 6) s115
+        wrU walk ((12 * i65) + 7) s116
+        wrU walk ((12 * i65) + 8) s117
         pure ()
-      loopI 0.0 24.0 $ \i114 -> do
-        let !d114 = fromIntegral i114 :: Double
-        chkI walk (12 * i114) 0 11
-        t115 <- rdU walk ((12 * i114) + 6)
-        t116 <- rdU walk ((12 * i114) + 7)
-        t117 <- rdU walk ((12 * i114) + 8)
-        chkI radii ((24 * i1) + i114) 0 0
-        t118 <- rdU radii ((24 * i1) + i114)
-        let !s119 = (t118 / 4.0)
-        t120 <- rdU walk (12 * i114)
-        t121 <- rdU walk ((12 * i114) + 1)
-        t122 <- rdU walk ((12 * i114) + 2)
-        t123 <- rdU walk ((12 * i114) + 3)
-        t124 <- rdU walk ((12 * i114) + 4)
-        t125 <- rdU walk ((12 * i114) + 5)
-        let !s126 = (t120 + (s119 * t123))
-        let !s127 = (t121 + (s119 * t124))
-        let !s128 = (t122 + (s119 * t125))
-        let !t129 = (sqrt ((s126 * s126) + (s128 * s128)))
-        let !t130 = (t129 - 0.8)
-        let !t131 = (sqrt ((t130 * t130) + (s127 * s127)))
-        let !t132 = (t131 - 0.5)
-        let !t133 = (recip (2.0 * t131))
-        let !t134 = (recip (2.0 * t129))
-        let !t135 = (t130 * (t134 * (s126 + s126)))
-        let !t136 = (t130 * (t134 * (s128 + s128)))
-        let !t137 = ((((t133 * (t135 + t135)) * t115) + ((t133 * (s127 + s127)) * t116)) + ((t133 * (t136 + t136)) * t117))
-        let !t138 = (if ((abs t132) - 1.0e-10) > 0 then (if (abs t137) > 0 then 1.0 else 0.0) else 0.0)
-        let !s139 = (if t138 > 0 then (s126 + (negate ((t132 / t137) * t115))) else s126)
-        let !s140 = (if t138 > 0 then (s127 + (negate ((t132 / t137) * t116))) else s127)
-        let !s141 = (if t138 > 0 then (s128 + (negate ((t132 / t137) * t117))) else s128)
-        wrU walk ((12 * i114) + 9) s139
-        wrU walk ((12 * i114) + 10) s140
-        wrU walk ((12 * i114) + 11) s141
+      loopI 0.0 24.0 $ \i118 -> do
+        let !d118 = fromIntegral i118 :: Double
+        chkI walk (12 * i118) 0 11
+        t119 <- rdU walk ((12 * i118) + 6)
+        t120 <- rdU walk ((12 * i118) + 7)
+        t121 <- rdU walk ((12 * i118) + 8)
+        chkI radii ((24 * i1) + i118) 0 0
+        t122 <- rdU radii ((24 * i1) + i118)
+        let !s123 = (t122 / 4.0)
+        t124 <- rdU walk (12 * i118)
+        t125 <- rdU walk ((12 * i118) + 1)
+        t126 <- rdU walk ((12 * i118) + 2)
+        t127 <- rdU walk ((12 * i118) + 3)
+        t128 <- rdU walk ((12 * i118) + 4)
+        t129 <- rdU walk ((12 * i118) + 5)
+        let !s130 = (t124 + (s123 * t127))
+        let !s131 = (t125 + (s123 * t128))
+        let !s132 = (t126 + (s123 * t129))
+        let !t133 = (sqrt ((s130 * s130) + (s132 * s132)))
+        let !t134 = (t133 - 0.8)
+        let !t135 = (sqrt ((t134 * t134) + (s131 * s131)))
+        let !t136 = (t135 - 0.5)
+        let !t137 = (recip (2.0 * t135))
+        let !t138 = (recip (2.0 * t133))
+        let !t139 = (t134 * (t138 * (s130 + s130)))
+        let !t140 = (t134 * (t138 * (s132 + s132)))
+        let !t141 = ((((t137 * (t139 + t139)) * t119) + ((t137 * (s131 + s131)) * t120)) + ((t137 * (t140 + t140)) * t121))
+        let !t142 = (if ((abs t136) - 1.0e-10) > 0 then (if (abs t141) > 0 then 1.0 else 0.0) else 0.0)
+        let !s143 = (if t142 > 0 then (s130 + (negate ((t136 / t141) * t119))) else s130)
+        let !s144 = (if t142 > 0 then (s131 + (negate ((t136 / t141) * t120))) else s131)
+        let !s145 = (if t142 > 0 then (s132 + (negate ((t136 / t141) * t121))) else s132)
+        wrU walk ((12 * i118) + 9) s143
+        wrU walk ((12 * i118) + 10) s144
+        wrU walk ((12 * i118) + 11) s145
         pure ()
-      loopI 0.0 24.0 $ \i142 -> do
-        let !d142 = fromIntegral i142 :: Double
-        chkI walk (12 * i142) 6 11
-        t143 <- rdU walk ((12 * i142) + 6)
-        t144 <- rdU walk ((12 * i142) + 7)
-        t145 <- rdU walk ((12 * i142) + 8)
-        t146 <- rdU walk ((12 * i142) + 9)
-        t147 <- rdU walk ((12 * i142) + 10)
-        t148 <- rdU walk ((12 * i142) + 11)
-        let !t149 = (sqrt ((t146 * t146) + (t148 * t148)))
-        let !t150 = (t149 - 0.8)
-        let !t151 = (sqrt ((t150 * t150) + (t147 * t147)))
-        let !t152 = (t151 - 0.5)
-        let !t153 = (recip (2.0 * t151))
-        let !t154 = (recip (2.0 * t149))
-        let !t155 = (t150 * (t154 * (t146 + t146)))
-        let !t156 = (t150 * (t154 * (t148 + t148)))
-        let !t157 = ((((t153 * (t155 + t155)) * t143) + ((t153 * (t147 + t147)) * t144)) + ((t153 * (t156 + t156)) * t145))
-        let !t158 = (if ((abs t152) - 1.0e-10) > 0 then (if (abs t157) > 0 then 1.0 else 0.0) else 0.0)
-        let !s159 = (if t158 > 0 then (t146 + (negate ((t152 / t157) * t143))) else t146)
-        let !s160 = (if t158 > 0 then (t147 + (negate ((t152 / t157) * t144))) else t147)
-        let !s161 = (if t158 > 0 then (t148 + (negate ((t152 / t157) * t145))) else t148)
-        wrU walk ((12 * i142) + 9) s159
-        wrU walk ((12 * i142) + 10) s160
-        wrU walk ((12 * i142) + 11) s161
+      loopI 0.0 24.0 $ \i146 -> do
+        let !d146 = fromIntegral i146 :: Double
+        chkI walk (12 * i146) 6 11
+        t147 <- rdU walk ((12 * i146) + 6)
+        t148 <- rdU walk ((12 * i146) + 7)
+        t149 <- rdU walk ((12 * i146) + 8)
+        t150 <- rdU walk ((12 * i146) + 9)
+        t151 <- rdU walk ((12 * i146) + 10)
+        t152 <- rdU walk ((12 * i146) + 11)
+        let !t153 = (sqrt ((t150 * t150) + (t152 * t152)))
+        let !t154 = (t153 - 0.8)
+        let !t155 = (sqrt ((t154 * t154) + (t151 * t151)))
+        let !t156 = (t155 - 0.5)
+        let !t157 = (recip (2.0 * t155))
+        let !t158 = (recip (2.0 * t153))
+        let !t159 = (t154 * (t158 * (t150 + t150)))
+        let !t160 = (t154 * (t158 * (t152 + t152)))
+        let !t161 = ((((t157 * (t159 + t159)) * t147) + ((t157 * (t151 + t151)) * t148)) + ((t157 * (t160 + t160)) * t149))
+        let !t162 = (if ((abs t156) - 1.0e-10) > 0 then (if (abs t161) > 0 then 1.0 else 0.0) else 0.0)
+        let !s163 = (if t162 > 0 then (t150 + (negate ((t156 / t161) * t147))) else t150)
+        let !s164 = (if t162 > 0 then (t151 + (negate ((t156 / t161) * t148))) else t151)
+        let !s165 = (if t162 > 0 then (t152 + (negate ((t156 / t161) * t149))) else t152)
+        wrU walk ((12 * i146) + 9) s163
+        wrU walk ((12 * i146) + 10) s164
+        wrU walk ((12 * i146) + 11) s165
         pure ()
-      loopI 0.0 24.0 $ \i162 -> do
-        let !d162 = fromIntegral i162 :: Double
-        chkI walk (12 * i162) 0 11
-        t163 <- rdU walk ((12 * i162) + 6)
-        t164 <- rdU walk ((12 * i162) + 7)
-        t165 <- rdU walk ((12 * i162) + 8)
-        t166 <- rdU walk ((12 * i162) + 9)
-        t167 <- rdU walk ((12 * i162) + 10)
-        t168 <- rdU walk ((12 * i162) + 11)
-        chkI radii ((24 * i1) + i162) 0 0
-        t169 <- rdU radii ((24 * i1) + i162)
-        let !s170 = (t169 / 4.0)
-        t171 <- rdU walk (12 * i162)
-        t172 <- rdU walk ((12 * i162) + 1)
-        t173 <- rdU walk ((12 * i162) + 2)
-        t174 <- rdU walk ((12 * i162) + 3)
-        t175 <- rdU walk ((12 * i162) + 4)
-        t176 <- rdU walk ((12 * i162) + 5)
-        let !t177 = (if (abs s170) > 0 then 1.0 else 0.0)
-        let !t178 = (sqrt ((t166 * t166) + (t168 * t168)))
-        let !t179 = (t178 - 0.8)
-        let !t180 = (sqrt ((t179 * t179) + (t167 * t167)))
-        let !t181 = (t180 - 0.5)
-        let !t182 = (recip (2.0 * t180))
-        let !t183 = (recip (2.0 * t178))
-        let !t184 = (t179 * (t183 * (t166 + t166)))
-        let !t185 = (t179 * (t183 * (t168 + t168)))
-        let !t186 = ((((t182 * (t184 + t184)) * t163) + ((t182 * (t167 + t167)) * t164)) + ((t182 * (t185 + t185)) * t165))
-        let !t187 = (if ((abs t181) - 1.0e-10) > 0 then (if (abs t186) > 0 then 1.0 else 0.0) else 0.0)
-        let !t188 = (1.0 - t177)
-        let !s189 = ((t177 * (if t187 > 0 then (t166 + (negate ((t181 / t186) * t163))) else t166)) + (t188 * t171))
-        let !s190 = ((t177 * (if t187 > 0 then (t167 + (negate ((t181 / t186) * t164))) else t167)) + (t188 * t172))
-        let !s191 = ((t177 * (if t187 > 0 then (t168 + (negate ((t181 / t186) * t165))) else t168)) + (t188 * t173))
-        chkI verts ((291 * i1) + (12 * i162)) 6 8
-        wrU verts (((291 * i1) + (12 * i162)) + 6) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s189 else t2)
-        wrU verts (((291 * i1) + (12 * i162)) + 7) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s190 else t3)
-        wrU verts (((291 * i1) + (12 * i162)) + 8) (if (1.0 - (abs (((s189 - s189) + (s190 - s190)) + (s191 - s191)))) > 0 then s191 else t4)
-        wrU walk (12 * i162) s189
-        wrU walk ((12 * i162) + 1) s190
-        wrU walk ((12 * i162) + 2) s191
-        let !t192 = (sqrt (((t174 * t174) + (t175 * t175)) + (t176 * t176)))
-        let !t193 = (if (abs s170) > 0 then (recip s170) else 0.0)
-        let !t194 = (t193 * ((if t187 > 0 then (t166 + (negate ((t181 / t186) * t163))) else t166) + (negate t171)))
-        let !t195 = (t182 * (t184 + t184))
-        let !t196 = (t182 * (t167 + t167))
-        let !t197 = (t182 * (t185 + t185))
-        let !t198 = (sqrt (((t195 * t195) + (t196 * t196)) + (t197 * t197)))
-        let !t199 = (if t198 > 0 then (recip (if (t198 - 1.0e-300) > 0 then t198 else 1.0e-300)) else 0.0)
-        let !t200 = (t199 * t195)
-        let !t201 = (t199 * t196)
-        let !t202 = (t193 * ((if t187 > 0 then (t167 + (negate ((t181 / t186) * t164))) else t167) + (negate t172)))
-        let !t203 = (t199 * t197)
-        let !t204 = (t193 * ((if t187 > 0 then (t168 + (negate ((t181 / t186) * t165))) else t168) + (negate t173)))
-        let !t205 = (((t200 * t194) + (t201 * t202)) + (t203 * t204))
-        let !t206 = (t194 + (negate (t205 * t200)))
-        let !t207 = (t202 + (negate (t205 * t201)))
-        let !t208 = (t204 + (negate (t205 * t203)))
-        let !t209 = (sqrt (((t206 * t206) + (t207 * t207)) + (t208 * t208)))
-        let !t210 = (if t209 > 0 then (recip (if (t209 - 1.0e-300) > 0 then t209 else 1.0e-300)) else 0.0)
-        let !s211 = ((t177 * (t192 * (t210 * t206))) + (t188 * t174))
-        let !s212 = ((t177 * (t192 * (t210 * t207))) + (t188 * t175))
-        let !s213 = ((t177 * (t192 * (t210 * t208))) + (t188 * t176))
-        wrU walk ((12 * i162) + 3) s211
-        wrU walk ((12 * i162) + 4) s212
-        wrU walk ((12 * i162) + 5) s213
-        let !s214 = ((t177 * t200) + (t188 * t163))
-        let !s215 = ((t177 * t201) + (t188 * t164))
-        let !s216 = ((t177 * t203) + (t188 * t165))
-        wrU walk ((12 * i162) + 6) s214
-        wrU walk ((12 * i162) + 7) s215
-        wrU walk ((12 * i162) + 8) s216
+      loopI 0.0 24.0 $ \i166 -> do
+        let !d166 = fromIntegral i166 :: Double
+        chkI walk (12 * i166) 0 11
+        t167 <- rdU walk ((12 * i166) + 6)
+        t168 <- rdU walk ((12 * i166) + 7)
+        t169 <- rdU walk ((12 * i166) + 8)
+        t170 <- rdU walk ((12 * i166) + 9)
+        t171 <- rdU walk ((12 * i166) + 10)
+        t172 <- rdU walk ((12 * i166) + 11)
+        chkI radii ((24 * i1) + i166) 0 0
+        t173 <- rdU radii ((24 * i1) + i166)
+        let !s174 = (t173 / 4.0)
+        t175 <- rdU walk (12 * i166)
+        t176 <- rdU walk ((12 * i166) + 1)
+        t177 <- rdU walk ((12 * i166) + 2)
+        t178 <- rdU walk ((12 * i166) + 3)
+        t179 <- rdU walk ((12 * i166) + 4)
+        t180 <- rdU walk ((12 * i166) + 5)
+        let !t181 = (if (abs s174) > 0 then 1.0 else 0.0)
+        let !t182 = (sqrt ((t170 * t170) + (t172 * t172)))
+        let !t183 = (t182 - 0.8)
+        let !t184 = (sqrt ((t183 * t183) + (t171 * t171)))
+        let !t185 = (t184 - 0.5)
+        let !t186 = (recip (2.0 * t184))
+        let !t187 = (recip (2.0 * t182))
+        let !t188 = (t183 * (t187 * (t170 + t170)))
+        let !t189 = (t183 * (t187 * (t172 + t172)))
+        let !t190 = ((((t186 * (t188 + t188)) * t167) + ((t186 * (t171 + t171)) * t168)) + ((t186 * (t189 + t189)) * t169))
+        let !t191 = (if ((abs t185) - 1.0e-10) > 0 then (if (abs t190) > 0 then 1.0 else 0.0) else 0.0)
+        let !t192 = (1.0 - t181)
+        let !s193 = ((t181 * (if t191 > 0 then (t170 + (negate ((t185 / t190) * t167))) else t170)) + (t192 * t175))
+        let !s194 = ((t181 * (if t191 > 0 then (t171 + (negate ((t185 / t190) * t168))) else t171)) + (t192 * t176))
+        let !s195 = ((t181 * (if t191 > 0 then (t172 + (negate ((t185 / t190) * t169))) else t172)) + (t192 * t177))
+        let !t196 = (1.0 - (abs (((s193 - s193) + (s194 - s194)) + (s195 - s195))))
+        let !s197 = (if t196 > 0 then s193 else t2)
+        let !s198 = (if t196 > 0 then s194 else t3)
+        let !s199 = (if t196 > 0 then s195 else t4)
+        chkI verts ((291 * i1) + (12 * i166)) 6 8
+        wrU verts (((291 * i1) + (12 * i166)) + 6) s197
+        wrU verts (((291 * i1) + (12 * i166)) + 7) s198
+        wrU verts (((291 * i1) + (12 * i166)) + 8) s199
+        wrU walk (12 * i166) s193
+        wrU walk ((12 * i166) + 1) s194
+        wrU walk ((12 * i166) + 2) s195
+        let !t200 = (sqrt (((t178 * t178) + (t179 * t179)) + (t180 * t180)))
+        let !t201 = (if (abs s174) > 0 then (recip s174) else 0.0)
+        let !t202 = (t201 * ((if t191 > 0 then (t170 + (negate ((t185 / t190) * t167))) else t170) + (negate t175)))
+        let !t203 = (t186 * (t188 + t188))
+        let !t204 = (t186 * (t171 + t171))
+        let !t205 = (t186 * (t189 + t189))
+        let !t206 = (sqrt (((t203 * t203) + (t204 * t204)) + (t205 * t205)))
+        let !t207 = (if t206 > 0 then (recip (if (t206 - 1.0e-300) > 0 then t206 else 1.0e-300)) else 0.0)
+        let !t208 = (t207 * t203)
+        let !t209 = (t207 * t204)
+        let !t210 = (t201 * ((if t191 > 0 then (t171 + (negate ((t185 / t190) * t168))) else t171) + (negate t176)))
+        let !t211 = (t207 * t205)
+        let !t212 = (t201 * ((if t191 > 0 then (t172 + (negate ((t185 / t190) * t169))) else t172) + (negate t177)))
+        let !t213 = (((t208 * t202) + (t209 * t210)) + (t211 * t212))
+        let !t214 = (t202 + (negate (t213 * t208)))
+        let !t215 = (t210 + (negate (t213 * t209)))
+        let !t216 = (t212 + (negate (t213 * t211)))
+        let !t217 = (sqrt (((t214 * t214) + (t215 * t215)) + (t216 * t216)))
+        let !t218 = (if t217 > 0 then (recip (if (t217 - 1.0e-300) > 0 then t217 else 1.0e-300)) else 0.0)
+        let !s219 = ((t181 * (t200 * (t218 * t214))) + (t192 * t178))
+        let !s220 = ((t181 * (t200 * (t218 * t215))) + (t192 * t179))
+        let !s221 = ((t181 * (t200 * (t218 * t216))) + (t192 * t180))
+        wrU walk ((12 * i166) + 3) s219
+        wrU walk ((12 * i166) + 4) s220
+        wrU walk ((12 * i166) + 5) s221
+        let !s222 = ((t181 * t208) + (t192 * t167))
+        let !s223 = ((t181 * t209) + (t192 * t168))
+        let !s224 = ((t181 * t211) + (t192 * t169))
+        wrU walk ((12 * i166) + 6) s222
+        wrU walk ((12 * i166) + 7) s223
+        wrU walk ((12 * i166) + 8) s224
         pure ()
-      loopI 0.0 24.0 $ \i217 -> do
-        let !d217 = fromIntegral i217 :: Double
-        chkI walk (12 * i217) 0 11
-        t218 <- rdU walk ((12 * i217) + 6)
-        t219 <- rdU walk ((12 * i217) + 7)
-        t220 <- rdU walk ((12 * i217) + 8)
-        chkI radii ((24 * i1) + i217) 0 0
-        t221 <- rdU radii ((24 * i1) + i217)
-        let !s222 = (t221 / 4.0)
-        t223 <- rdU walk (12 * i217)
-        t224 <- rdU walk ((12 * i217) + 1)
-        t225 <- rdU walk ((12 * i217) + 2)
-        t226 <- rdU walk ((12 * i217) + 3)
-        t227 <- rdU walk ((12 * i217) + 4)
-        t228 <- rdU walk ((12 * i217) + 5)
-        let !s229 = (t223 + (s222 * t226))
-        let !s230 = (t224 + (s222 * t227))
-        let !s231 = (t225 + (s222 * t228))
-        let !t232 = (sqrt ((s229 * s229) + (s231 * s231)))
-        let !t233 = (t232 - 0.8)
-        let !t234 = (sqrt ((t233 * t233) + (s230 * s230)))
-        let !t235 = (t234 - 0.5)
-        let !t236 = (recip (2.0 * t234))
-        let !t237 = (recip (2.0 * t232))
-        let !t238 = (t233 * (t237 * (s229 + s229)))
-        let !t239 = (t233 * (t237 * (s231 + s231)))
-        let !t240 = ((((t236 * (t238 + t238)) * t218) + ((t236 * (s230 + s230)) * t219)) + ((t236 * (t239 + t239)) * t220))
-        let !t241 = (if ((abs t235) - 1.0e-10) > 0 then (if (abs t240) > 0 then 1.0 else 0.0) else 0.0)
-        let !s242 = (if t241 > 0 then (s229 + (negate ((t235 / t240) * t218))) else s229)
-        let !s243 = (if t241 > 0 then (s230 + (negate ((t235 / t240) * t219))) else s230)
-        let !s244 = (if t241 > 0 then (s231 + (negate ((t235 / t240) * t220))) else s231)
-        wrU walk ((12 * i217) + 9) s242
-        wrU walk ((12 * i217) + 10) s243
-        wrU walk ((12 * i217) + 11) s244
+      loopI 0.0 24.0 $ \i225 -> do
+        let !d225 = fromIntegral i225 :: Double
+        chkI walk (12 * i225) 0 11
+        t226 <- rdU walk ((12 * i225) + 6)
+        t227 <- rdU walk ((12 * i225) + 7)
+        t228 <- rdU walk ((12 * i225) + 8)
+        chkI radii ((24 * i1) + i225) 0 0
+        t229 <- rdU radii ((24 * i1) + i225)
+        let !s230 = (t229 / 4.0)
+        t231 <- rdU walk (12 * i225)
+        t232 <- rdU walk ((12 * i225) + 1)
+        t233 <- rdU walk ((12 * i225) + 2)
+        t234 <- rdU walk ((12 * i225) + 3)
+        t235 <- rdU walk ((12 * i225) + 4)
+        t236 <- rdU walk ((12 * i225) + 5)
+        let !s237 = (t231 + (s230 * t234))
+        let !s238 = (t232 + (s230 * t235))
+        let !s239 = (t233 + (s230 * t236))
+        let !t240 = (sqrt ((s237 * s237) + (s239 * s239)))
+        let !t241 = (t240 - 0.8)
+        let !t242 = (sqrt ((t241 * t241) + (s238 * s238)))
+        let !t243 = (t242 - 0.5)
+        let !t244 = (recip (2.0 * t242))
+        let !t245 = (recip (2.0 * t240))
+        let !t246 = (t241 * (t245 * (s237 + s237)))
+        let !t247 = (t241 * (t245 * (s239 + s239)))
+        let !t248 = ((((t244 * (t246 + t246)) * t226) + ((t244 * (s238 + s238)) * t227)) + ((t244 * (t247 + t247)) * t228))
+        let !t249 = (if ((abs t243) - 1.0e-10) > 0 then (if (abs t248) > 0 then 1.0 else 0.0) else 0.0)
+        let !s250 = (if t249 > 0 then (s237 + (negate ((t243 / t248) * t226))) else s237)
+        let !s251 = (if t249 > 0 then (s238 + (negate ((t243 / t248) * t227))) else s238)
+        let !s252 = (if t249 > 0 then (s239 + (negate ((t243 / t248) * t228))) else s239)
+        wrU walk ((12 * i225) + 9) s250
+        wrU walk ((12 * i225) + 10) s251
+        wrU walk ((12 * i225) + 11) s252
         pure ()
-      loopI 0.0 24.0 $ \i245 -> do
-        let !d245 = fromIntegral i245 :: Double
-        chkI walk (12 * i245) 6 11
-        t246 <- rdU walk ((12 * i245) + 6)
-        t247 <- rdU walk ((12 * i245) + 7)
-        t248 <- rdU walk ((12 * i245) + 8)
-        t249 <- rdU walk ((12 * i245) + 9)
-        t250 <- rdU walk ((12 * i245) + 10)
-        t251 <- rdU walk ((12 * i245) + 11)
-        let !t252 = (sqrt ((t249 * t249) + (t251 * t251)))
-        let !t253 = (t252 - 0.8)
-        let !t254 = (sqrt ((t253 * t253) + (t250 * t250)))
-        let !t255 = (t254 - 0.5)
-        let !t256 = (recip (2.0 * t254))
-        let !t257 = (recip (2.0 * t252))
-        let !t258 = (t253 * (t257 * (t249 + t249)))
-        let !t259 = (t253 * (t257 * (t251 + t251)))
-        let !t260 = ((((t256 * (t258 + t258)) * t246) + ((t256 * (t250 + t250)) * t247)) + ((t256 * (t259 + t259)) * t248))
-        let !t261 = (if ((abs t255) - 1.0e-10) > 0 then (if (abs t260) > 0 then 1.0 else 0.0) else 0.0)
-        let !s262 = (if t261 > 0 then (t249 + (negate ((t255 / t260) * t246))) else t249)
-        let !s263 = (if t261 > 0 then (t250 + (negate ((t255 / t260) * t247))) else t250)
-        let !s264 = (if t261 > 0 then (t251 + (negate ((t255 / t260) * t248))) else t251)
-        wrU walk ((12 * i245) + 9) s262
-        wrU walk ((12 * i245) + 10) s263
-        wrU walk ((12 * i245) + 11) s264
+      loopI 0.0 24.0 $ \i253 -> do
+        let !d253 = fromIntegral i253 :: Double
+        chkI walk (12 * i253) 6 11
+        t254 <- rdU walk ((12 * i253) + 6)
+        t255 <- rdU walk ((12 * i253) + 7)
+        t256 <- rdU walk ((12 * i253) + 8)
+        t257 <- rdU walk ((12 * i253) + 9)
+        t258 <- rdU walk ((12 * i253) + 10)
+        t259 <- rdU walk ((12 * i253) + 11)
+        let !t260 = (sqrt ((t257 * t257) + (t259 * t259)))
+        let !t261 = (t260 - 0.8)
+        let !t262 = (sqrt ((t261 * t261) + (t258 * t258)))
+        let !t263 = (t262 - 0.5)
+        let !t264 = (recip (2.0 * t262))
+        let !t265 = (recip (2.0 * t260))
+        let !t266 = (t261 * (t265 * (t257 + t257)))
+        let !t267 = (t261 * (t265 * (t259 + t259)))
+        let !t268 = ((((t264 * (t266 + t266)) * t254) + ((t264 * (t258 + t258)) * t255)) + ((t264 * (t267 + t267)) * t256))
+        let !t269 = (if ((abs t263) - 1.0e-10) > 0 then (if (abs t268) > 0 then 1.0 else 0.0) else 0.0)
+        let !s270 = (if t269 > 0 then (t257 + (negate ((t263 / t268) * t254))) else t257)
+        let !s271 = (if t269 > 0 then (t258 + (negate ((t263 / t268) * t255))) else t258)
+        let !s272 = (if t269 > 0 then (t259 + (negate ((t263 / t268) * t256))) else t259)
+        wrU walk ((12 * i253) + 9) s270
+        wrU walk ((12 * i253) + 10) s271
+        wrU walk ((12 * i253) + 11) s272
         pure ()
-      loopI 0.0 24.0 $ \i265 -> do
-        let !d265 = fromIntegral i265 :: Double
-        chkI walk (12 * i265) 0 11
-        t266 <- rdU walk ((12 * i265) + 6)
-        t267 <- rdU walk ((12 * i265) + 7)
-        t268 <- rdU walk ((12 * i265) + 8)
-        t269 <- rdU walk ((12 * i265) + 9)
-        t270 <- rdU walk ((12 * i265) + 10)
-        t271 <- rdU walk ((12 * i265) + 11)
-        chkI radii ((24 * i1) + i265) 0 0
-        t272 <- rdU radii ((24 * i1) + i265)
-        let !s273 = (t272 / 4.0)
-        t274 <- rdU walk (12 * i265)
-        t275 <- rdU walk ((12 * i265) + 1)
-        t276 <- rdU walk ((12 * i265) + 2)
-        t277 <- rdU walk ((12 * i265) + 3)
-        t278 <- rdU walk ((12 * i265) + 4)
-        t279 <- rdU walk ((12 * i265) + 5)
-        let !t280 = (if (abs s273) > 0 then 1.0 else 0.0)
-        let !t281 = (sqrt ((t269 * t269) + (t271 * t271)))
-        let !t282 = (t281 - 0.8)
-        let !t283 = (sqrt ((t282 * t282) + (t270 * t270)))
-        let !t284 = (t283 - 0.5)
-        let !t285 = (recip (2.0 * t283))
-        let !t286 = (recip (2.0 * t281))
-        let !t287 = (t282 * (t286 * (t269 + t269)))
-        let !t288 = (t282 * (t286 * (t271 + t271)))
-        let !t289 = ((((t285 * (t287 + t287)) * t266) + ((t285 * (t270 + t270)) * t267)) + ((t285 * (t288 + t288)) * t268))
-        let !t290 = (if ((abs t284) - 1.0e-10) > 0 then (if (abs t289) > 0 then 1.0 else 0.0) else 0.0)
-        let !t291 = (1.0 - t280)
-        let !s292 = ((t280 * (if t290 > 0 then (t269 + (negate ((t284 / t289) * t266))) else t269)) + (t291 * t274))
-        let !s293 = ((t280 * (if t290 > 0 then (t270 + (negate ((t284 / t289) * t267))) else t270)) + (t291 * t275))
-        let !s294 = ((t280 * (if t290 > 0 then (t271 + (negate ((t284 / t289) * t268))) else t271)) + (t291 * t276))
-        chkI verts ((291 * i1) + (12 * i265)) 9 11
-        wrU verts (((291 * i1) + (12 * i265)) + 9) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s292 else t2)
-        wrU verts (((291 * i1) + (12 * i265)) + 10) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s293 else t3)
-        wrU verts (((291 * i1) + (12 * i265)) + 11) (if (1.0 - (abs (((s292 - s292) + (s293 - s293)) + (s294 - s294)))) > 0 then s294 else t4)
-        wrU walk (12 * i265) s292
-        wrU walk ((12 * i265) + 1) s293
-        wrU walk ((12 * i265) + 2) s294
-        let !t295 = (sqrt (((t277 * t277) + (t278 * t278)) + (t279 * t279)))
-        let !t296 = (if (abs s273) > 0 then (recip s273) else 0.0)
-        let !t297 = (t296 * ((if t290 > 0 then (t269 + (negate ((t284 / t289) * t266))) else t269) + (negate t274)))
-        let !t298 = (t285 * (t287 + t287))
-        let !t299 = (t285 * (t270 + t270))
-        let !t300 = (t285 * (t288 + t288))
-        let !t301 = (sqrt (((t298 * t298) + (t299 * t299)) + (t300 * t300)))
-        let !t302 = (if t301 > 0 then (recip (if (t301 - 1.0e-300) > 0 then t301 else 1.0e-300)) else 0.0)
-        let !t303 = (t302 * t298)
-        let !t304 = (t302 * t299)
-        let !t305 = (t296 * ((if t290 > 0 then (t270 + (negate ((t284 / t289) * t267))) else t270) + (negate t275)))
-        let !t306 = (t302 * t300)
-        let !t307 = (t296 * ((if t290 > 0 then (t271 + (negate ((t284 / t289) * t268))) else t271) + (negate t276)))
-        let !t308 = (((t303 * t297) + (t304 * t305)) + (t306 * t307))
-        let !t309 = (t297 + (negate (t308 * t303)))
-        let !t310 = (t305 + (negate (t308 * t304)))
-        let !t311 = (t307 + (negate (t308 * t306)))
-        let !t312 = (sqrt (((t309 * t309) + (t310 * t310)) + (t311 * t311)))
-        let !t313 = (if t312 > 0 then (recip (if (t312 - 1.0e-300) > 0 then t312 else 1.0e-300)) else 0.0)
-        let !s314 = ((t280 * (t295 * (t313 * t309))) + (t291 * t277))
-        let !s315 = ((t280 * (t295 * (t313 * t310))) + (t291 * t278))
-        let !s316 = ((t280 * (t295 * (t313 * t311))) + (t291 * t279))
-        wrU walk ((12 * i265) + 3) s314
-        wrU walk ((12 * i265) + 4) s315
-        wrU walk ((12 * i265) + 5) s316
-        let !s317 = ((t280 * t303) + (t291 * t266))
-        let !s318 = ((t280 * t304) + (t291 * t267))
-        let !s319 = ((t280 * t306) + (t291 * t268))
-        wrU walk ((12 * i265) + 6) s317
-        wrU walk ((12 * i265) + 7) s318
-        wrU walk ((12 * i265) + 8) s319
+      loopI 0.0 24.0 $ \i273 -> do
+        let !d273 = fromIntegral i273 :: Double
+        chkI walk (12 * i273) 0 11
+        t274 <- rdU walk ((12 * i273) + 6)
+        t275 <- rdU walk ((12 * i273) + 7)
+        t276 <- rdU walk ((12 * i273) + 8)
+        t277 <- rdU walk ((12 * i273) + 9)
+        t278 <- rdU walk ((12 * i273) + 10)
+        t279 <- rdU walk ((12 * i273) + 11)
+        chkI radii ((24 * i1) + i273) 0 0
+        t280 <- rdU radii ((24 * i1) + i273)
+        let !s281 = (t280 / 4.0)
+        t282 <- rdU walk (12 * i273)
+        t283 <- rdU walk ((12 * i273) + 1)
+        t284 <- rdU walk ((12 * i273) + 2)
+        t285 <- rdU walk ((12 * i273) + 3)
+        t286 <- rdU walk ((12 * i273) + 4)
+        t287 <- rdU walk ((12 * i273) + 5)
+        let !t288 = (if (abs s281) > 0 then 1.0 else 0.0)
+        let !t289 = (sqrt ((t277 * t277) + (t279 * t279)))
+        let !t290 = (t289 - 0.8)
+        let !t291 = (sqrt ((t290 * t290) + (t278 * t278)))
+        let !t292 = (t291 - 0.5)
+        let !t293 = (recip (2.0 * t291))
+        let !t294 = (recip (2.0 * t289))
+        let !t295 = (t290 * (t294 * (t277 + t277)))
+        let !t296 = (t290 * (t294 * (t279 + t279)))
+        let !t297 = ((((t293 * (t295 + t295)) * t274) + ((t293 * (t278 + t278)) * t275)) + ((t293 * (t296 + t296)) * t276))
+        let !t298 = (if ((abs t292) - 1.0e-10) > 0 then (if (abs t297) > 0 then 1.0 else 0.0) else 0.0)
+        let !t299 = (1.0 - t288)
+        let !s300 = ((t288 * (if t298 > 0 then (t277 + (negate ((t292 / t297) * t274))) else t277)) + (t299 * t282))
+        let !s301 = ((t288 * (if t298 > 0 then (t278 + (negate ((t292 / t297) * t275))) else t278)) + (t299 * t283))
+        let !s302 = ((t288 * (if t298 > 0 then (t279 + (negate ((t292 / t297) * t276))) else t279)) + (t299 * t284))
+        let !t303 = (1.0 - (abs (((s300 - s300) + (s301 - s301)) + (s302 - s302))))
+        let !s304 = (if t303 > 0 then s300 else t2)
+        let !s305 = (if t303 > 0 then s301 else t3)
+        let !s306 = (if t303 > 0 then s302 else t4)
+        chkI verts ((291 * i1) + (12 * i273)) 9 11
+        wrU verts (((291 * i1) + (12 * i273)) + 9) s304
+        wrU verts (((291 * i1) + (12 * i273)) + 10) s305
+        wrU verts (((291 * i1) + (12 * i273)) + 11) s306
+        wrU walk (12 * i273) s300
+        wrU walk ((12 * i273) + 1) s301
+        wrU walk ((12 * i273) + 2) s302
+        let !t307 = (sqrt (((t285 * t285) + (t286 * t286)) + (t287 * t287)))
+        let !t308 = (if (abs s281) > 0 then (recip s281) else 0.0)
+        let !t309 = (t308 * ((if t298 > 0 then (t277 + (negate ((t292 / t297) * t274))) else t277) + (negate t282)))
+        let !t310 = (t293 * (t295 + t295))
+        let !t311 = (t293 * (t278 + t278))
+        let !t312 = (t293 * (t296 + t296))
+        let !t313 = (sqrt (((t310 * t310) + (t311 * t311)) + (t312 * t312)))
+        let !t314 = (if t313 > 0 then (recip (if (t313 - 1.0e-300) > 0 then t313 else 1.0e-300)) else 0.0)
+        let !t315 = (t314 * t310)
+        let !t316 = (t314 * t311)
+        let !t317 = (t308 * ((if t298 > 0 then (t278 + (negate ((t292 / t297) * t275))) else t278) + (negate t283)))
+        let !t318 = (t314 * t312)
+        let !t319 = (t308 * ((if t298 > 0 then (t279 + (negate ((t292 / t297) * t276))) else t279) + (negate t284)))
+        let !t320 = (((t315 * t309) + (t316 * t317)) + (t318 * t319))
+        let !t321 = (t309 + (negate (t320 * t315)))
+        let !t322 = (t317 + (negate (t320 * t316)))
+        let !t323 = (t319 + (negate (t320 * t318)))
+        let !t324 = (sqrt (((t321 * t321) + (t322 * t322)) + (t323 * t323)))
+        let !t325 = (if t324 > 0 then (recip (if (t324 - 1.0e-300) > 0 then t324 else 1.0e-300)) else 0.0)
+        let !s326 = ((t288 * (t307 * (t325 * t321))) + (t299 * t285))
+        let !s327 = ((t288 * (t307 * (t325 * t322))) + (t299 * t286))
+        let !s328 = ((t288 * (t307 * (t325 * t323))) + (t299 * t287))
+        wrU walk ((12 * i273) + 3) s326
+        wrU walk ((12 * i273) + 4) s327
+        wrU walk ((12 * i273) + 5) s328
+        let !s329 = ((t288 * t315) + (t299 * t274))
+        let !s330 = ((t288 * t316) + (t299 * t275))
+        let !s331 = ((t288 * t318) + (t299 * t276))
+        wrU walk ((12 * i273) + 6) s329
+        wrU walk ((12 * i273) + 7) s330
+        wrU walk ((12 * i273) + 8) s331
         pure ()
-      loopI 0.0 24.0 $ \i320 -> do
-        let !d320 = fromIntegral i320 :: Double
-        chkI walk (12 * i320) 0 11
-        t321 <- rdU walk ((12 * i320) + 6)
-        t322 <- rdU walk ((12 * i320) + 7)
-        t323 <- rdU walk ((12 * i320) + 8)
-        chkI radii ((24 * i1) + i320) 0 0
-        t324 <- rdU radii ((24 * i1) + i320)
-        let !s325 = (t324 / 4.0)
-        t326 <- rdU walk (12 * i320)
-        t327 <- rdU walk ((12 * i320) + 1)
-        t328 <- rdU walk ((12 * i320) + 2)
-        t329 <- rdU walk ((12 * i320) + 3)
-        t330 <- rdU walk ((12 * i320) + 4)
-        t331 <- rdU walk ((12 * i320) + 5)
-        let !s332 = (t326 + (s325 * t329))
-        let !s333 = (t327 + (s325 * t330))
-        let !s334 = (t328 + (s325 * t331))
-        let !t335 = (sqrt ((s332 * s332) + (s334 * s334)))
-        let !t336 = (t335 - 0.8)
-        let !t337 = (sqrt ((t336 * t336) + (s333 * s333)))
-        let !t338 = (t337 - 0.5)
-        let !t339 = (recip (2.0 * t337))
-        let !t340 = (recip (2.0 * t335))
-        let !t341 = (t336 * (t340 * (s332 + s332)))
-        let !t342 = (t336 * (t340 * (s334 + s334)))
-        let !t343 = ((((t339 * (t341 + t341)) * t321) + ((t339 * (s333 + s333)) * t322)) + ((t339 * (t342 + t342)) * t323))
-        let !t344 = (if ((abs t338) - 1.0e-10) > 0 then (if (abs t343) > 0 then 1.0 else 0.0) else 0.0)
-        let !s345 = (if t344 > 0 then (s332 + (negate ((t338 / t343) * t321))) else s332)
-        let !s346 = (if t344 > 0 then (s333 + (negate ((t338 / t343) * t322))) else s333)
-        let !s347 = (if t344 > 0 then (s334 + (negate ((t338 / t343) * t323))) else s334)
-        wrU walk ((12 * i320) + 9) s345
-        wrU walk ((12 * i320) + 10) s346
-        wrU walk ((12 * i320) + 11) s347
+      loopI 0.0 24.0 $ \i332 -> do
+        let !d332 = fromIntegral i332 :: Double
+        chkI walk (12 * i332) 0 11
+        t333 <- rdU walk ((12 * i332) + 6)
+        t334 <- rdU walk ((12 * i332) + 7)
+        t335 <- rdU walk ((12 * i332) + 8)
+        chkI radii ((24 * i1) + i332) 0 0
+        t336 <- rdU radii ((24 * i1) + i332)
+        let !s337 = (t336 / 4.0)
+        t338 <- rdU walk (12 * i332)
+        t339 <- rdU walk ((12 * i332) + 1)
+        t340 <- rdU walk ((12 * i332) + 2)
+        t341 <- rdU walk ((12 * i332) + 3)
+        t342 <- rdU walk ((12 * i332) + 4)
+        t343 <- rdU walk ((12 * i332) + 5)
+        let !s344 = (t338 + (s337 * t341))
+        let !s345 = (t339 + (s337 * t342))
+        let !s346 = (t340 + (s337 * t343))
+        let !t347 = (sqrt ((s344 * s344) + (s346 * s346)))
+        let !t348 = (t347 - 0.8)
+        let !t349 = (sqrt ((t348 * t348) + (s345 * s345)))
+        let !t350 = (t349 - 0.5)
+        let !t351 = (recip (2.0 * t349))
+        let !t352 = (recip (2.0 * t347))
+        let !t353 = (t348 * (t352 * (s344 + s344)))
+        let !t354 = (t348 * (t352 * (s346 + s346)))
+        let !t355 = ((((t351 * (t353 + t353)) * t333) + ((t351 * (s345 + s345)) * t334)) + ((t351 * (t354 + t354)) * t335))
+        let !t356 = (if ((abs t350) - 1.0e-10) > 0 then (if (abs t355) > 0 then 1.0 else 0.0) else 0.0)
+        let !s357 = (if t356 > 0 then (s344 + (negate ((t350 / t355) * t333))) else s344)
+        let !s358 = (if t356 > 0 then (s345 + (negate ((t350 / t355) * t334))) else s345)
+        let !s359 = (if t356 > 0 then (s346 + (negate ((t350 / t355) * t335))) else s346)
+        wrU walk ((12 * i332) + 9) s357
+        wrU walk ((12 * i332) + 10) s358
+        wrU walk ((12 * i332) + 11) s359
         pure ()
-      loopI 0.0 24.0 $ \i348 -> do
-        let !d348 = fromIntegral i348 :: Double
-        chkI walk (12 * i348) 6 11
-        t349 <- rdU walk ((12 * i348) + 6)
-        t350 <- rdU walk ((12 * i348) + 7)
-        t351 <- rdU walk ((12 * i348) + 8)
-        t352 <- rdU walk ((12 * i348) + 9)
-        t353 <- rdU walk ((12 * i348) + 10)
-        t354 <- rdU walk ((12 * i348) + 11)
-        let !t355 = (sqrt ((t352 * t352) + (t354 * t354)))
-        let !t356 = (t355 - 0.8)
-        let !t357 = (sqrt ((t356 * t356) + (t353 * t353)))
-        let !t358 = (t357 - 0.5)
-        let !t359 = (recip (2.0 * t357))
-        let !t360 = (recip (2.0 * t355))
-        let !t361 = (t356 * (t360 * (t352 + t352)))
-        let !t362 = (t356 * (t360 * (t354 + t354)))
-        let !t363 = ((((t359 * (t361 + t361)) * t349) + ((t359 * (t353 + t353)) * t350)) + ((t359 * (t362 + t362)) * t351))
-        let !t364 = (if ((abs t358) - 1.0e-10) > 0 then (if (abs t363) > 0 then 1.0 else 0.0) else 0.0)
-        let !s365 = (if t364 > 0 then (t352 + (negate ((t358 / t363) * t349))) else t352)
-        let !s366 = (if t364 > 0 then (t353 + (negate ((t358 / t363) * t350))) else t353)
-        let !s367 = (if t364 > 0 then (t354 + (negate ((t358 / t363) * t351))) else t354)
-        wrU walk ((12 * i348) + 9) s365
-        wrU walk ((12 * i348) + 10) s366
-        wrU walk ((12 * i348) + 11) s367
+      loopI 0.0 24.0 $ \i360 -> do
+        let !d360 = fromIntegral i360 :: Double
+        chkI walk (12 * i360) 6 11
+        t361 <- rdU walk ((12 * i360) + 6)
+        t362 <- rdU walk ((12 * i360) + 7)
+        t363 <- rdU walk ((12 * i360) + 8)
+        t364 <- rdU walk ((12 * i360) + 9)
+        t365 <- rdU walk ((12 * i360) + 10)
+        t366 <- rdU walk ((12 * i360) + 11)
+        let !t367 = (sqrt ((t364 * t364) + (t366 * t366)))
+        let !t368 = (t367 - 0.8)
+        let !t369 = (sqrt ((t368 * t368) + (t365 * t365)))
+        let !t370 = (t369 - 0.5)
+        let !t371 = (recip (2.0 * t369))
+        let !t372 = (recip (2.0 * t367))
+        let !t373 = (t368 * (t372 * (t364 + t364)))
+        let !t374 = (t368 * (t372 * (t366 + t366)))
+        let !t375 = ((((t371 * (t373 + t373)) * t361) + ((t371 * (t365 + t365)) * t362)) + ((t371 * (t374 + t374)) * t363))
+        let !t376 = (if ((abs t370) - 1.0e-10) > 0 then (if (abs t375) > 0 then 1.0 else 0.0) else 0.0)
+        let !s377 = (if t376 > 0 then (t364 + (negate ((t370 / t375) * t361))) else t364)
+        let !s378 = (if t376 > 0 then (t365 + (negate ((t370 / t375) * t362))) else t365)
+        let !s379 = (if t376 > 0 then (t366 + (negate ((t370 / t375) * t363))) else t366)
+        wrU walk ((12 * i360) + 9) s377
+        wrU walk ((12 * i360) + 10) s378
+        wrU walk ((12 * i360) + 11) s379
         pure ()
-      loopI 0.0 24.0 $ \i368 -> do
-        let !d368 = fromIntegral i368 :: Double
-        chkI walk (12 * i368) 0 11
-        t369 <- rdU walk ((12 * i368) + 6)
-        t370 <- rdU walk ((12 * i368) + 7)
-        t371 <- rdU walk ((12 * i368) + 8)
-        t372 <- rdU walk ((12 * i368) + 9)
-        t373 <- rdU walk ((12 * i368) + 10)
-        t374 <- rdU walk ((12 * i368) + 11)
-        chkI radii ((24 * i1) + i368) 0 0
-        t375 <- rdU radii ((24 * i1) + i368)
-        let !s376 = (t375 / 4.0)
-        t377 <- rdU walk (12 * i368)
-        t378 <- rdU walk ((12 * i368) + 1)
-        t379 <- rdU walk ((12 * i368) + 2)
-        t380 <- rdU walk ((12 * i368) + 3)
-        t381 <- rdU walk ((12 * i368) + 4)
-        t382 <- rdU walk ((12 * i368) + 5)
-        let !t383 = (if (abs s376) > 0 then 1.0 else 0.0)
-        let !t384 = (sqrt ((t372 * t372) + (t374 * t374)))
-        let !t385 = (t384 - 0.8)
-        let !t386 = (sqrt ((t385 * t385) + (t373 * t373)))
-        let !t387 = (t386 - 0.5)
-        let !t388 = (recip (2.0 * t386))
-        let !t389 = (recip (2.0 * t384))
-        let !t390 = (t385 * (t389 * (t372 + t372)))
-        let !t391 = (t385 * (t389 * (t374 + t374)))
-        let !t392 = ((((t388 * (t390 + t390)) * t369) + ((t388 * (t373 + t373)) * t370)) + ((t388 * (t391 + t391)) * t371))
-        let !t393 = (if ((abs t387) - 1.0e-10) > 0 then (if (abs t392) > 0 then 1.0 else 0.0) else 0.0)
-        let !t394 = (1.0 - t383)
-        let !s395 = ((t383 * (if t393 > 0 then (t372 + (negate ((t387 / t392) * t369))) else t372)) + (t394 * t377))
-        let !s396 = ((t383 * (if t393 > 0 then (t373 + (negate ((t387 / t392) * t370))) else t373)) + (t394 * t378))
-        let !s397 = ((t383 * (if t393 > 0 then (t374 + (negate ((t387 / t392) * t371))) else t374)) + (t394 * t379))
-        chkI verts ((291 * i1) + (12 * i368)) 12 14
-        wrU verts (((291 * i1) + (12 * i368)) + 12) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s395 else t2)
-        wrU verts (((291 * i1) + (12 * i368)) + 13) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s396 else t3)
-        wrU verts (((291 * i1) + (12 * i368)) + 14) (if (1.0 - (abs (((s395 - s395) + (s396 - s396)) + (s397 - s397)))) > 0 then s397 else t4)
+      loopI 0.0 24.0 $ \i380 -> do
+        let !d380 = fromIntegral i380 :: Double
+        chkI walk (12 * i380) 0 11
+        t381 <- rdU walk ((12 * i380) + 6)
+        t382 <- rdU walk ((12 * i380) + 7)
+        t383 <- rdU walk ((12 * i380) + 8)
+        t384 <- rdU walk ((12 * i380) + 9)
+        t385 <- rdU walk ((12 * i380) + 10)
+        t386 <- rdU walk ((12 * i380) + 11)
+        chkI radii ((24 * i1) + i380) 0 0
+        t387 <- rdU radii ((24 * i1) + i380)
+        let !s388 = (t387 / 4.0)
+        t389 <- rdU walk (12 * i380)
+        t390 <- rdU walk ((12 * i380) + 1)
+        t391 <- rdU walk ((12 * i380) + 2)
+        t392 <- rdU walk ((12 * i380) + 3)
+        t393 <- rdU walk ((12 * i380) + 4)
+        t394 <- rdU walk ((12 * i380) + 5)
+        let !t395 = (if (abs s388) > 0 then 1.0 else 0.0)
+        let !t396 = (sqrt ((t384 * t384) + (t386 * t386)))
+        let !t397 = (t396 - 0.8)
+        let !t398 = (sqrt ((t397 * t397) + (t385 * t385)))
+        let !t399 = (t398 - 0.5)
+        let !t400 = (recip (2.0 * t398))
+        let !t401 = (recip (2.0 * t396))
+        let !t402 = (t397 * (t401 * (t384 + t384)))
+        let !t403 = (t397 * (t401 * (t386 + t386)))
+        let !t404 = ((((t400 * (t402 + t402)) * t381) + ((t400 * (t385 + t385)) * t382)) + ((t400 * (t403 + t403)) * t383))
+        let !t405 = (if ((abs t399) - 1.0e-10) > 0 then (if (abs t404) > 0 then 1.0 else 0.0) else 0.0)
+        let !t406 = (1.0 - t395)
+        let !s407 = ((t395 * (if t405 > 0 then (t384 + (negate ((t399 / t404) * t381))) else t384)) + (t406 * t389))
+        let !s408 = ((t395 * (if t405 > 0 then (t385 + (negate ((t399 / t404) * t382))) else t385)) + (t406 * t390))
+        let !s409 = ((t395 * (if t405 > 0 then (t386 + (negate ((t399 / t404) * t383))) else t386)) + (t406 * t391))
+        let !t410 = (1.0 - (abs (((s407 - s407) + (s408 - s408)) + (s409 - s409))))
+        let !s411 = (if t410 > 0 then s407 else t2)
+        let !s412 = (if t410 > 0 then s408 else t3)
+        let !s413 = (if t410 > 0 then s409 else t4)
+        chkI verts ((291 * i1) + (12 * i380)) 12 14
+        wrU verts (((291 * i1) + (12 * i380)) + 12) s411
+        wrU verts (((291 * i1) + (12 * i380)) + 13) s412
+        wrU verts (((291 * i1) + (12 * i380)) + 14) s413
+        chkI outline ((72 * i1) + (3 * i380)) 0 2
+        wrU outline ((72 * i1) + (3 * i380)) s411
+        wrU outline (((72 * i1) + (3 * i380)) + 1) s412
+        wrU outline (((72 * i1) + (3 * i380)) + 2) s413
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i398 -> do
-        let !d398 = fromIntegral i398 :: Double
-        t399 <- rdU locals 0
-        t400 <- rdU locals 1
-        wrU locals 0 ((t399 * 0.9659258262890683) - (t400 * 0.25881904510252074))
-        wrU locals 1 ((t400 * 0.9659258262890683) + (t399 * 0.25881904510252074))
-        let !s401 = ((t399 * t5) + (t400 * s14))
-        let !s402 = ((t399 * t6) + (t400 * s15))
-        let !s403 = ((t399 * t7) + (t400 * s16))
-        chkI walk (12 * i398) 3 5
-        wrU walk ((12 * i398) + 3) s401
-        wrU walk ((12 * i398) + 4) s402
-        wrU walk ((12 * i398) + 5) s403
+      loopI 0.0 24.0 $ \i414 -> do
+        let !d414 = fromIntegral i414 :: Double
+        t415 <- rdU locals 0
+        t416 <- rdU locals 1
+        wrU locals 0 ((t415 * 0.9659258262890683) - (t416 * 0.25881904510252074))
+        wrU locals 1 ((t416 * 0.9659258262890683) + (t415 * 0.25881904510252074))
+        let !s417 = ((t415 * t5) + (t416 * s14))
+        let !s418 = ((t415 * t6) + (t416 * s15))
+        let !s419 = ((t415 * t7) + (t416 * s16))
+        chkI walk (12 * i414) 3 5
+        wrU walk ((12 * i414) + 3) s417
+        wrU walk ((12 * i414) + 4) s418
+        wrU walk ((12 * i414) + 5) s419
         pure ()
-      loopI 0.0 24.0 $ \i404 -> do
-        let !d404 = fromIntegral i404 :: Double
-        chkI radii ((24 * i1) + i404) 0 0
-        t405 <- rdU radii ((24 * i1) + i404)
-        chkI walk (12 * i404) 3 11
-        t406 <- rdU walk ((12 * i404) + 3)
-        t407 <- rdU walk ((12 * i404) + 4)
-        t408 <- rdU walk ((12 * i404) + 5)
-        let !s409 = (t2 + (t405 * t406))
-        let !s410 = (t3 + (t405 * t407))
-        let !s411 = (t4 + (t405 * t408))
-        let !t412 = (sqrt ((s409 * s409) + (s411 * s411)))
-        let !t413 = (t412 - 0.8)
-        let !t414 = (sqrt ((t413 * t413) + (s410 * s410)))
-        let !t415 = (t414 - 0.5)
-        let !t416 = (recip (2.0 * t414))
-        let !t417 = (recip (2.0 * t412))
-        let !t418 = (t413 * (t417 * (s409 + s409)))
-        let !t419 = (t413 * (t417 * (s411 + s411)))
-        let !t420 = ((((t416 * (t418 + t418)) * t8) + ((t416 * (s410 + s410)) * t9)) + ((t416 * (t419 + t419)) * t10))
-        let !t421 = (if ((abs t415) - 1.0e-10) > 0 then (if (abs t420) > 0 then 1.0 else 0.0) else 0.0)
-        let !s422 = (if t421 > 0 then (s409 + (negate ((t415 / t420) * t8))) else s409)
-        let !s423 = (if t421 > 0 then (s410 + (negate ((t415 / t420) * t9))) else s410)
-        let !s424 = (if t421 > 0 then (s411 + (negate ((t415 / t420) * t10))) else s411)
-        wrU walk ((12 * i404) + 9) s422
-        wrU walk ((12 * i404) + 10) s423
-        wrU walk ((12 * i404) + 11) s424
+      loopI 0.0 24.0 $ \i420 -> do
+        let !d420 = fromIntegral i420 :: Double
+        chkI radii ((24 * i1) + i420) 0 0
+        t421 <- rdU radii ((24 * i1) + i420)
+        chkI walk (12 * i420) 3 11
+        t422 <- rdU walk ((12 * i420) + 3)
+        t423 <- rdU walk ((12 * i420) + 4)
+        t424 <- rdU walk ((12 * i420) + 5)
+        let !s425 = (t2 + (t421 * t422))
+        let !s426 = (t3 + (t421 * t423))
+        let !s427 = (t4 + (t421 * t424))
+        let !t428 = (sqrt ((s425 * s425) + (s427 * s427)))
+        let !t429 = (t428 - 0.8)
+        let !t430 = (sqrt ((t429 * t429) + (s426 * s426)))
+        let !t431 = (t430 - 0.5)
+        let !t432 = (recip (2.0 * t430))
+        let !t433 = (recip (2.0 * t428))
+        let !t434 = (t429 * (t433 * (s425 + s425)))
+        let !t435 = (t429 * (t433 * (s427 + s427)))
+        let !t436 = ((((t432 * (t434 + t434)) * t8) + ((t432 * (s426 + s426)) * t9)) + ((t432 * (t435 + t435)) * t10))
+        let !t437 = (if ((abs t431) - 1.0e-10) > 0 then (if (abs t436) > 0 then 1.0 else 0.0) else 0.0)
+        let !s438 = (if t437 > 0 then (s425 + (negate ((t431 / t436) * t8))) else s425)
+        let !s439 = (if t437 > 0 then (s426 + (negate ((t431 / t436) * t9))) else s426)
+        let !s440 = (if t437 > 0 then (s427 + (negate ((t431 / t436) * t10))) else s427)
+        wrU walk ((12 * i420) + 9) s438
+        wrU walk ((12 * i420) + 10) s439
+        wrU walk ((12 * i420) + 11) s440
         pure ()
-      loopI 0.0 24.0 $ \i425 -> do
-        let !d425 = fromIntegral i425 :: Double
-        chkI walk (12 * i425) 9 11
-        t426 <- rdU walk ((12 * i425) + 9)
-        t427 <- rdU walk ((12 * i425) + 10)
-        t428 <- rdU walk ((12 * i425) + 11)
-        let !t429 = (sqrt ((t426 * t426) + (t428 * t428)))
-        let !t430 = (t429 - 0.8)
-        let !t431 = (sqrt ((t430 * t430) + (t427 * t427)))
-        let !t432 = (t431 - 0.5)
-        let !t433 = (recip (2.0 * t431))
-        let !t434 = (recip (2.0 * t429))
-        let !t435 = (t430 * (t434 * (t426 + t426)))
-        let !t436 = (t430 * (t434 * (t428 + t428)))
-        let !t437 = ((((t433 * (t435 + t435)) * t8) + ((t433 * (t427 + t427)) * t9)) + ((t433 * (t436 + t436)) * t10))
-        let !t438 = (if ((abs t432) - 1.0e-10) > 0 then (if (abs t437) > 0 then 1.0 else 0.0) else 0.0)
-        let !s439 = (if t438 > 0 then (t426 + (negate ((t432 / t437) * t8))) else t426)
-        let !s440 = (if t438 > 0 then (t427 + (negate ((t432 / t437) * t9))) else t427)
-        let !s441 = (if t438 > 0 then (t428 + (negate ((t432 / t437) * t10))) else t428)
-        wrU walk ((12 * i425) + 9) s439
-        wrU walk ((12 * i425) + 10) s440
-        wrU walk ((12 * i425) + 11) s441
+      loopI 0.0 24.0 $ \i441 -> do
+        let !d441 = fromIntegral i441 :: Double
+        chkI walk (12 * i441) 9 11
+        t442 <- rdU walk ((12 * i441) + 9)
+        t443 <- rdU walk ((12 * i441) + 10)
+        t444 <- rdU walk ((12 * i441) + 11)
+        let !t445 = (sqrt ((t442 * t442) + (t444 * t444)))
+        let !t446 = (t445 - 0.8)
+        let !t447 = (sqrt ((t446 * t446) + (t443 * t443)))
+        let !t448 = (t447 - 0.5)
+        let !t449 = (recip (2.0 * t447))
+        let !t450 = (recip (2.0 * t445))
+        let !t451 = (t446 * (t450 * (t442 + t442)))
+        let !t452 = (t446 * (t450 * (t444 + t444)))
+        let !t453 = ((((t449 * (t451 + t451)) * t8) + ((t449 * (t443 + t443)) * t9)) + ((t449 * (t452 + t452)) * t10))
+        let !t454 = (if ((abs t448) - 1.0e-10) > 0 then (if (abs t453) > 0 then 1.0 else 0.0) else 0.0)
+        let !s455 = (if t454 > 0 then (t442 + (negate ((t448 / t453) * t8))) else t442)
+        let !s456 = (if t454 > 0 then (t443 + (negate ((t448 / t453) * t9))) else t443)
+        let !s457 = (if t454 > 0 then (t444 + (negate ((t448 / t453) * t10))) else t444)
+        wrU walk ((12 * i441) + 9) s455
+        wrU walk ((12 * i441) + 10) s456
+        wrU walk ((12 * i441) + 11) s457
         pure ()
-      loopI 0.0 24.0 $ \i442 -> do
-        let !d442 = fromIntegral i442 :: Double
-        chkI walk (12 * i442) 3 11
-        t443 <- rdU walk ((12 * i442) + 9)
-        t444 <- rdU walk ((12 * i442) + 10)
-        t445 <- rdU walk ((12 * i442) + 11)
-        chkI radii ((24 * i1) + i442) 0 0
-        t446 <- rdU radii ((24 * i1) + i442)
-        t447 <- rdU walk ((12 * i442) + 3)
-        t448 <- rdU walk ((12 * i442) + 4)
-        t449 <- rdU walk ((12 * i442) + 5)
-        let !t450 = (if (abs t446) > 0 then 1.0 else 0.0)
-        let !t451 = (sqrt ((t443 * t443) + (t445 * t445)))
-        let !t452 = (t451 - 0.8)
-        let !t453 = (sqrt ((t452 * t452) + (t444 * t444)))
-        let !t454 = (t453 - 0.5)
-        let !t455 = (recip (2.0 * t453))
-        let !t456 = (recip (2.0 * t451))
-        let !t457 = (t452 * (t456 * (t443 + t443)))
-        let !t458 = (t452 * (t456 * (t445 + t445)))
-        let !t459 = ((((t455 * (t457 + t457)) * t8) + ((t455 * (t444 + t444)) * t9)) + ((t455 * (t458 + t458)) * t10))
-        let !t460 = (if ((abs t454) - 1.0e-10) > 0 then (if (abs t459) > 0 then 1.0 else 0.0) else 0.0)
-        let !t461 = (1.0 - t450)
-        let !s462 = ((t450 * (if t460 > 0 then (t443 + (negate ((t454 / t459) * t8))) else t443)) + (t461 * t2))
-        let !s463 = ((t450 * (if t460 > 0 then (t444 + (negate ((t454 / t459) * t9))) else t444)) + (t461 * t3))
-        let !s464 = ((t450 * (if t460 > 0 then (t445 + (negate ((t454 / t459) * t10))) else t445)) + (t461 * t4))
-        let !t465 = (1.0 - (abs (((s462 - s462) + (s463 - s463)) + (s464 - s464))))
-        let !s466 = (if t465 > 0 then s462 else t2)
-        let !s467 = (if t465 > 0 then s463 else t3)
-        let !s468 = (if t465 > 0 then s464 else t4)
-        chkI verts ((291 * i1) + (12 * i442)) 3 14
-        wrU verts (((291 * i1) + (12 * i442)) + 12) s466
-        wrU verts (((291 * i1) + (12 * i442)) + 13) s467
-        wrU verts (((291 * i1) + (12 * i442)) + 14) s468
-        wrU verts (((291 * i1) + (12 * i442)) + 3) (t2 + (0.25 * (s466 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i442)) + 4) (t3 + (0.25 * (s467 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i442)) + 5) (t4 + (0.25 * (s468 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i442)) + 6) (t2 + (0.5 * (s466 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i442)) + 7) (t3 + (0.5 * (s467 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i442)) + 8) (t4 + (0.5 * (s468 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i442)) + 9) (t2 + (0.75 * (s466 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i442)) + 10) (t3 + (0.75 * (s467 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i442)) + 11) (t4 + (0.75 * (s468 + (negate t4))))
+      loopI 0.0 24.0 $ \i458 -> do
+        let !d458 = fromIntegral i458 :: Double
+        chkI walk (12 * i458) 3 11
+        t459 <- rdU walk ((12 * i458) + 9)
+        t460 <- rdU walk ((12 * i458) + 10)
+        t461 <- rdU walk ((12 * i458) + 11)
+        chkI radii ((24 * i1) + i458) 0 0
+        t462 <- rdU radii ((24 * i1) + i458)
+        t463 <- rdU walk ((12 * i458) + 3)
+        t464 <- rdU walk ((12 * i458) + 4)
+        t465 <- rdU walk ((12 * i458) + 5)
+        let !t466 = (if (abs t462) > 0 then 1.0 else 0.0)
+        let !t467 = (sqrt ((t459 * t459) + (t461 * t461)))
+        let !t468 = (t467 - 0.8)
+        let !t469 = (sqrt ((t468 * t468) + (t460 * t460)))
+        let !t470 = (t469 - 0.5)
+        let !t471 = (recip (2.0 * t469))
+        let !t472 = (recip (2.0 * t467))
+        let !t473 = (t468 * (t472 * (t459 + t459)))
+        let !t474 = (t468 * (t472 * (t461 + t461)))
+        let !t475 = ((((t471 * (t473 + t473)) * t8) + ((t471 * (t460 + t460)) * t9)) + ((t471 * (t474 + t474)) * t10))
+        let !t476 = (if ((abs t470) - 1.0e-10) > 0 then (if (abs t475) > 0 then 1.0 else 0.0) else 0.0)
+        let !t477 = (1.0 - t466)
+        let !s478 = ((t466 * (if t476 > 0 then (t459 + (negate ((t470 / t475) * t8))) else t459)) + (t477 * t2))
+        let !s479 = ((t466 * (if t476 > 0 then (t460 + (negate ((t470 / t475) * t9))) else t460)) + (t477 * t3))
+        let !s480 = ((t466 * (if t476 > 0 then (t461 + (negate ((t470 / t475) * t10))) else t461)) + (t477 * t4))
+        let !t481 = (1.0 - (abs (((s478 - s478) + (s479 - s479)) + (s480 - s480))))
+        let !s482 = (if t481 > 0 then s478 else t2)
+        let !s483 = (if t481 > 0 then s479 else t3)
+        let !s484 = (if t481 > 0 then s480 else t4)
+        chkI verts ((291 * i1) + (12 * i458)) 3 14
+        wrU verts (((291 * i1) + (12 * i458)) + 12) s482
+        wrU verts (((291 * i1) + (12 * i458)) + 13) s483
+        wrU verts (((291 * i1) + (12 * i458)) + 14) s484
+        chkI outline ((72 * i1) + (3 * i458)) 0 2
+        wrU outline ((72 * i1) + (3 * i458)) s482
+        wrU outline (((72 * i1) + (3 * i458)) + 1) s483
+        wrU outline (((72 * i1) + (3 * i458)) + 2) s484
+        wrU verts (((291 * i1) + (12 * i458)) + 3) (t2 + (0.25 * (s482 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i458)) + 4) (t3 + (0.25 * (s483 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i458)) + 5) (t4 + (0.25 * (s484 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i458)) + 6) (t2 + (0.5 * (s482 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i458)) + 7) (t3 + (0.5 * (s483 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i458)) + 8) (t4 + (0.5 * (s484 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i458)) + 9) (t2 + (0.75 * (s482 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i458)) + 10) (t3 + (0.75 * (s483 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i458)) + 11) (t4 + (0.75 * (s484 + (negate t4))))
         pure ()
       pure ()
     pure ()

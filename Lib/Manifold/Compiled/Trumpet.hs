@@ -22,13 +22,13 @@ compiled = CompiledStep "trumpet" fingerprint
 fingerprint :: String
 fingerprint = "field function f(x, y, z) {\n  return (Math.sqrt(((x * x) + (z * z))) - Math.exp(y));\n}\n\nboundary none\ngravity function f(x, y, z) {\n  return [0.0, (-0.6), 0.0];\n}\n\nquotient NoQuotient\nbounds 4.0\npolygon PolygonParams {polyDirections = 24, polySteps = 4}\n"
 
-applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
+applyTo :: (Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()) -> WorldArrays (IOVector Double) -> IO ()
 applyTo f w = case map primitiveArray (toList w) of
-  [meta, params, pos, vel, axis, normal, scalars, radii, verts, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk
+  [meta, params, pos, vel, axis, normal, scalars, radii, verts, outline, grid, cellOf, items, contacts, prev, bodyPrev, mouse, probe, near, walk] -> newLocals >>= f meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk
   _ -> error "Manifold.Compiled.Trumpet: the world's arrays are not the ones this step was printed for"
 
-stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepGravity :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 1
@@ -71,8 +71,8 @@ stepGravity !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepCollide :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 11
   chkI meta 0 0 5
   wrU meta 2 0.0
@@ -214,7 +214,7 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
       let !d67 = fromIntegral i67 :: Double
       chkI near i67 0 0
       t68 <- rdU near i67
-      pairContacts meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
+      pairContacts meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals ((t68 + 1.0) * 64.0) d29 t68 1.0 1.0 1.0 0.0 0.0 0.0
       pure ()
     chkI verts (291 * i29) 0 2
     t69 <- rdU verts (291 * i29)
@@ -223,10 +223,10 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     wrU locals 3 1.0
     loopI 0.0 24.0 $ \i72 -> do
       let !d72 = fromIntegral i72 :: Double
-      chkI verts ((291 * i29) + (12 * i72)) 12 14
-      t73 <- rdU verts (((291 * i29) + (12 * i72)) + 12)
-      t74 <- rdU verts (((291 * i29) + (12 * i72)) + 13)
-      t75 <- rdU verts (((291 * i29) + (12 * i72)) + 14)
+      chkI outline ((72 * i29) + (3 * i72)) 0 2
+      t73 <- rdU outline ((72 * i29) + (3 * i72))
+      t74 <- rdU outline (((72 * i29) + (3 * i72)) + 1)
+      t75 <- rdU outline (((72 * i29) + (3 * i72)) + 2)
       chkI radii ((24 * i29) + i72) 0 0
       t76 <- rdU radii ((24 * i29) + i72)
       t77 <- rdU locals 3
@@ -510,11 +510,11 @@ stepCollide !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !
     pure ()
   pure ()
 
-stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepSolve :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI params 0 2 2
   t0 <- rdU params 2
-  solvePrepare meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+  solvePrepare meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
   chkI mouse 0 0 0
   t1 <- rdU mouse 0
   if t1 > 0 then do
@@ -862,7 +862,7 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   loopI 0.0 t0 $ \i320 -> do
     let !d320 = fromIntegral i320 :: Double
-    solveSweep meta params pos vel axis normal scalars radii verts grid cellOf items contacts prev bodyPrev mouse probe near walk locals
+    solveSweep meta params pos vel axis normal scalars radii verts outline grid cellOf items contacts prev bodyPrev mouse probe near walk locals
     t321 <- rdU mouse 0
     if t321 > 0 then do
       chkI mouse 0 1 1
@@ -1262,8 +1262,8 @@ stepSolve !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !ce
     pure ()
   pure ()
 
-stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepIntegrate :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI meta 0 0 0
   t0 <- rdU meta 0
   chkI params 0 0 0
@@ -1431,8 +1431,8 @@ stepIntegrate !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid
     pure ()
   pure ()
 
-stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
-stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
+stepPolygonise :: Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> Arr -> IO ()
+stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !outline !grid !cellOf !items !contacts !prev !bodyPrev !mouse !probe !near !walk !locals = do
   chkI locals 0 0 1
   chkI meta 0 0 0
   t0 <- rdU meta 0
@@ -1551,472 +1551,496 @@ stepPolygonise !meta !params !pos !vel !axis !normal !scalars !radii !verts !gri
         let !s74 = ((t66 * (if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58)) + (t73 * t2))
         let !s75 = ((t66 * (if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59)) + (t73 * t3))
         let !s76 = ((t66 * (if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60)) + (t73 * t4))
+        let !t77 = (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76))))
+        let !s78 = (if t77 > 0 then s74 else t2)
+        let !s79 = (if t77 > 0 then s75 else t3)
+        let !s80 = (if t77 > 0 then s76 else t4)
         chkI verts ((291 * i1) + (12 * i57)) 3 5
-        wrU verts (((291 * i1) + (12 * i57)) + 3) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s74 else t2)
-        wrU verts (((291 * i1) + (12 * i57)) + 4) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s75 else t3)
-        wrU verts (((291 * i1) + (12 * i57)) + 5) (if (1.0 - (abs (((s74 - s74) + (s75 - s75)) + (s76 - s76)))) > 0 then s76 else t4)
+        wrU verts (((291 * i1) + (12 * i57)) + 3) s78
+        wrU verts (((291 * i1) + (12 * i57)) + 4) s79
+        wrU verts (((291 * i1) + (12 * i57)) + 5) s80
         wrU walk (12 * i57) s74
         wrU walk ((12 * i57) + 1) s75
         wrU walk ((12 * i57) + 2) s76
-        let !t77 = (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65)))
-        let !t78 = (if (abs s62) > 0 then (recip s62) else 0.0)
-        let !t79 = (t78 * ((if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58) + (negate t2)))
-        let !t80 = (t70 * (t58 + t58))
-        let !t81 = (negate t68)
-        let !t82 = (t70 * (t60 + t60))
-        let !t83 = (sqrt (((t80 * t80) + (t81 * t81)) + (t82 * t82)))
-        let !t84 = (if t83 > 0 then (recip (if (t83 - 1.0e-300) > 0 then t83 else 1.0e-300)) else 0.0)
-        let !t85 = (t84 * t80)
-        let !t86 = (t84 * t81)
-        let !t87 = (t78 * ((if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59) + (negate t3)))
-        let !t88 = (t84 * t82)
-        let !t89 = (t78 * ((if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60) + (negate t4)))
-        let !t90 = (((t85 * t79) + (t86 * t87)) + (t88 * t89))
-        let !t91 = (t79 + (negate (t90 * t85)))
-        let !t92 = (t87 + (negate (t90 * t86)))
-        let !t93 = (t89 + (negate (t90 * t88)))
-        let !t94 = (sqrt (((t91 * t91) + (t92 * t92)) + (t93 * t93)))
-        let !t95 = (if t94 > 0 then (recip (if (t94 - 1.0e-300) > 0 then t94 else 1.0e-300)) else 0.0)
-        let !s96 = ((t66 * (t77 * (t95 * t91))) + (t73 * t63))
-        let !s97 = ((t66 * (t77 * (t95 * t92))) + (t73 * t64))
-        let !s98 = ((t66 * (t77 * (t95 * t93))) + (t73 * t65))
-        wrU walk ((12 * i57) + 3) s96
-        wrU walk ((12 * i57) + 4) s97
-        wrU walk ((12 * i57) + 5) s98
-        let !s99 = ((t66 * t85) + (t73 * t8))
-        let !s100 = ((t66 * t86) + (t73 * t9))
-        let !s101 = ((t66 * t88) + (t73 * t10))
-        wrU walk ((12 * i57) + 6) s99
-        wrU walk ((12 * i57) + 7) s100
-        wrU walk ((12 * i57) + 8) s101
+        let !t81 = (sqrt (((t63 * t63) + (t64 * t64)) + (t65 * t65)))
+        let !t82 = (if (abs s62) > 0 then (recip s62) else 0.0)
+        let !t83 = (t82 * ((if t72 > 0 then (t58 + (negate ((t69 / t71) * t8))) else t58) + (negate t2)))
+        let !t84 = (t70 * (t58 + t58))
+        let !t85 = (negate t68)
+        let !t86 = (t70 * (t60 + t60))
+        let !t87 = (sqrt (((t84 * t84) + (t85 * t85)) + (t86 * t86)))
+        let !t88 = (if t87 > 0 then (recip (if (t87 - 1.0e-300) > 0 then t87 else 1.0e-300)) else 0.0)
+        let !t89 = (t88 * t84)
+        let !t90 = (t88 * t85)
+        let !t91 = (t82 * ((if t72 > 0 then (t59 + (negate ((t69 / t71) * t9))) else t59) + (negate t3)))
+        let !t92 = (t88 * t86)
+        let !t93 = (t82 * ((if t72 > 0 then (t60 + (negate ((t69 / t71) * t10))) else t60) + (negate t4)))
+        let !t94 = (((t89 * t83) + (t90 * t91)) + (t92 * t93))
+        let !t95 = (t83 + (negate (t94 * t89)))
+        let !t96 = (t91 + (negate (t94 * t90)))
+        let !t97 = (t93 + (negate (t94 * t92)))
+        let !t98 = (sqrt (((t95 * t95) + (t96 * t96)) + (t97 * t97)))
+        let !t99 = (if t98 > 0 then (recip (if (t98 - 1.0e-300) > 0 then t98 else 1.0e-300)) else 0.0)
+        let !s100 = ((t66 * (t81 * (t99 * t95))) + (t73 * t63))
+        let !s101 = ((t66 * (t81 * (t99 * t96))) + (t73 * t64))
+        let !s102 = ((t66 * (t81 * (t99 * t97))) + (t73 * t65))
+        wrU walk ((12 * i57) + 3) s100
+        wrU walk ((12 * i57) + 4) s101
+        wrU walk ((12 * i57) + 5) s102
+        let !s103 = ((t66 * t89) + (t73 * t8))
+        let !s104 = ((t66 * t90) + (t73 * t9))
+        let !s105 = ((t66 * t92) + (t73 * t10))
+        wrU walk ((12 * i57) + 6) s103
+        wrU walk ((12 * i57) + 7) s104
+        wrU walk ((12 * i57) + 8) s105
         pure ()
-      loopI 0.0 24.0 $ \i102 -> do
-        let !d102 = fromIntegral i102 :: Double
-        chkI walk (12 * i102) 0 11
-        t103 <- rdU walk ((12 * i102) + 6)
-        t104 <- rdU walk ((12 * i102) + 7)
-        t105 <- rdU walk ((12 * i102) + 8)
-        chkI radii ((24 * i1) + i102) 0 0
-        t106 <- rdU radii ((24 * i1) + i102)
-        let !s107 = (t106 / 4.0)
-        t108 <- rdU walk (12 * i102)
-        t109 <- rdU walk ((12 * i102) + 1)
-        t110 <- rdU walk ((12 * i102) + 2)
-        t111 <- rdU walk ((12 * i102) + 3)
-        t112 <- rdU walk ((12 * i102) + 4)
-        t113 <- rdU walk ((12 * i102) + 5)
-        let !s114 = (t108 + (s107 * t111))
-        let !s115 = (t109 + (s107 * t112))
-        let !s116 = (t110 + (s107 * t113))
-        let !t117 = (sqrt ((s114 * s114) + (s116 * s116)))
-        let !t118 = (exp s115)
-        let !t119 = (t117 - t118)
-        let !t120 = (recip (2.0 * t117))
-        let !t121 = ((((t120 * (s114 + s114)) * t103) + ((negate t118) * t104)) + ((t120 * (s116 + s116)) * t105))
-        let !t122 = (if ((abs t119) - 1.0e-10) > 0 then (if (abs t121) > 0 then 1.0 else 0.0) else 0.0)
-        let !s123 = (if t122 > 0 then (s114 + (negate ((t119 / t121) * t103))) else s114)
-        let !s124 = (if t122 > 0 then (s115 + (negate ((t119 / t121) * t104))) else s115)
-        let !s125 = (if t122 > 0 then (s116 + (negate ((t119 / t121) * t105))) else s116)
-        wrU walk ((12 * i102) + 9) s123
-        wrU walk ((12 * i102) + 10) s124
-        wrU walk ((12 * i102) + 11) s125
+      loopI 0.0 24.0 $ \i106 -> do
+        let !d106 = fromIntegral i106 :: Double
+        chkI walk (12 * i106) 0 11
+        t107 <- rdU walk ((12 * i106) + 6)
+        t108 <- rdU walk ((12 * i106) + 7)
+        t109 <- rdU walk ((12 * i106) + 8)
+        chkI radii ((24 * i1) + i106) 0 0
+        t110 <- rdU radii ((24 * i1) + i106)
+        let !s111 = (t110 / 4.0)
+        t112 <- rdU walk (12 * i106)
+        t113 <- rdU walk ((12 * i106) + 1)
+        t114 <- rdU walk ((12 * i106) + 2)
+        t115 <- rdU walk ((12 * i106) + 3)
+        t116 <- rdU walk ((12 * i106) + 4)
+        t117 <- rdU walk ((12 * i106) + 5)
+        let !s118 = (t112 + (s111 * t115))
+        let !s119 = (t113 + (s111 * t116))
+        let !s120 = (t114 + (s111 * t117))
+        let !t121 = (sqrt ((s118 * s118) + (s120 * s120)))
+        let !t122 = (exp s119)
+        let !t123 = (t121 - t122)
+        let !t124 = (recip (2.0 * t121))
+        let !t125 = ((((t124 * (s118 + s118)) * t107) + ((negate t122) * t108)) + ((t124 * (s120 + s120)) * t109))
+        let !t126 = (if ((abs t123) - 1.0e-10) > 0 then (if (abs t125) > 0 then 1.0 else 0.0) else 0.0)
+        let !s127 = (if t126 > 0 then (s118 + (negate ((t123 / t125) * t107))) else s118)
+        let !s128 = (if t126 > 0 then (s119 + (negate ((t123 / t125) * t108))) else s119)
+        let !s129 = (if t126 > 0 then (s120 + (negate ((t123 / t125) * t109))) else s120)
+        wrU walk ((12 * i106) + 9) s127
+        wrU walk ((12 * i106) + 10) s128
+        wrU walk ((12 * i106) + 11) s129
         pure ()
-      loopI 0.0 24.0 $ \i126 -> do
-        let !d126 = fromIntegral i126 :: Double
-        chkI walk (12 * i126) 6 11
-        t127 <- rdU walk ((12 * i126) + 6)
-        t128 <- rdU walk ((12 * i126) + 7)
-        t129 <- rdU walk ((12 * i126) + 8)
-        t130 <- rdU walk ((12 * i126) + 9)
-        t131 <- rdU walk ((12 * i126) + 10)
-        t132 <- rdU walk ((12 * i126) + 11)
-        let !t133 = (sqrt ((t130 * t130) + (t132 * t132)))
-        let !t134 = (exp t131)
-        let !t135 = (t133 - t134)
-        let !t136 = (recip (2.0 * t133))
-        let !t137 = ((((t136 * (t130 + t130)) * t127) + ((negate t134) * t128)) + ((t136 * (t132 + t132)) * t129))
-        let !t138 = (if ((abs t135) - 1.0e-10) > 0 then (if (abs t137) > 0 then 1.0 else 0.0) else 0.0)
-        let !s139 = (if t138 > 0 then (t130 + (negate ((t135 / t137) * t127))) else t130)
-        let !s140 = (if t138 > 0 then (t131 + (negate ((t135 / t137) * t128))) else t131)
-        let !s141 = (if t138 > 0 then (t132 + (negate ((t135 / t137) * t129))) else t132)
-        wrU walk ((12 * i126) + 9) s139
-        wrU walk ((12 * i126) + 10) s140
-        wrU walk ((12 * i126) + 11) s141
+      loopI 0.0 24.0 $ \i130 -> do
+        let !d130 = fromIntegral i130 :: Double
+        chkI walk (12 * i130) 6 11
+        t131 <- rdU walk ((12 * i130) + 6)
+        t132 <- rdU walk ((12 * i130) + 7)
+        t133 <- rdU walk ((12 * i130) + 8)
+        t134 <- rdU walk ((12 * i130) + 9)
+        t135 <- rdU walk ((12 * i130) + 10)
+        t136 <- rdU walk ((12 * i130) + 11)
+        let !t137 = (sqrt ((t134 * t134) + (t136 * t136)))
+        let !t138 = (exp t135)
+        let !t139 = (t137 - t138)
+        let !t140 = (recip (2.0 * t137))
+        let !t141 = ((((t140 * (t134 + t134)) * t131) + ((negate t138) * t132)) + ((t140 * (t136 + t136)) * t133))
+        let !t142 = (if ((abs t139) - 1.0e-10) > 0 then (if (abs t141) > 0 then 1.0 else 0.0) else 0.0)
+        let !s143 = (if t142 > 0 then (t134 + (negate ((t139 / t141) * t131))) else t134)
+        let !s144 = (if t142 > 0 then (t135 + (negate ((t139 / t141) * t132))) else t135)
+        let !s145 = (if t142 > 0 then (t136 + (negate ((t139 / t141) * t133))) else t136)
+        wrU walk ((12 * i130) + 9) s143
+        wrU walk ((12 * i130) + 10) s144
+        wrU walk ((12 * i130) + 11) s145
         pure ()
-      loopI 0.0 24.0 $ \i142 -> do
-        let !d142 = fromIntegral i142 :: Double
-        chkI walk (12 * i142) 0 11
-        t143 <- rdU walk ((12 * i142) + 6)
-        t144 <- rdU walk ((12 * i142) + 7)
-        t145 <- rdU walk ((12 * i142) + 8)
-        t146 <- rdU walk ((12 * i142) + 9)
-        t147 <- rdU walk ((12 * i142) + 10)
-        t148 <- rdU walk ((12 * i142) + 11)
-        chkI radii ((24 * i1) + i142) 0 0
-        t149 <- rdU radii ((24 * i1) + i142)
-        let !s150 = (t149 / 4.0)
-        t151 <- rdU walk (12 * i142)
-        t152 <- rdU walk ((12 * i142) + 1)
-        t153 <- rdU walk ((12 * i142) + 2)
-        t154 <- rdU walk ((12 * i142) + 3)
-        t155 <- rdU walk ((12 * i142) + 4)
-        t156 <- rdU walk ((12 * i142) + 5)
-        let !t157 = (if (abs s150) > 0 then 1.0 else 0.0)
-        let !t158 = (sqrt ((t146 * t146) + (t148 * t148)))
-        let !t159 = (exp t147)
-        let !t160 = (t158 - t159)
-        let !t161 = (recip (2.0 * t158))
-        let !t162 = ((((t161 * (t146 + t146)) * t143) + ((negate t159) * t144)) + ((t161 * (t148 + t148)) * t145))
-        let !t163 = (if ((abs t160) - 1.0e-10) > 0 then (if (abs t162) > 0 then 1.0 else 0.0) else 0.0)
-        let !t164 = (1.0 - t157)
-        let !s165 = ((t157 * (if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146)) + (t164 * t151))
-        let !s166 = ((t157 * (if t163 > 0 then (t147 + (negate ((t160 / t162) * t144))) else t147)) + (t164 * t152))
-        let !s167 = ((t157 * (if t163 > 0 then (t148 + (negate ((t160 / t162) * t145))) else t148)) + (t164 * t153))
-        chkI verts ((291 * i1) + (12 * i142)) 6 8
-        wrU verts (((291 * i1) + (12 * i142)) + 6) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s165 else t2)
-        wrU verts (((291 * i1) + (12 * i142)) + 7) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s166 else t3)
-        wrU verts (((291 * i1) + (12 * i142)) + 8) (if (1.0 - (abs (((s165 - s165) + (s166 - s166)) + (s167 - s167)))) > 0 then s167 else t4)
-        wrU walk (12 * i142) s165
-        wrU walk ((12 * i142) + 1) s166
-        wrU walk ((12 * i142) + 2) s167
-        let !t168 = (sqrt (((t154 * t154) + (t155 * t155)) + (t156 * t156)))
-        let !t169 = (if (abs s150) > 0 then (recip s150) else 0.0)
-        let !t170 = (t169 * ((if t163 > 0 then (t146 + (negate ((t160 / t162) * t143))) else t146) + (negate t151)))
-        let !t171 = (t161 * (t146 + t146))
-        let !t172 = (negate t159)
-        let !t173 = (t161 * (t148 + t148))
-        let !t174 = (sqrt (((t171 * t171) + (t172 * t172)) + (t173 * t173)))
-        let !t175 = (if t174 > 0 then (recip (if (t174 - 1.0e-300) > 0 then t174 else 1.0e-300)) else 0.0)
-        let !t176 = (t175 * t171)
-        let !t177 = (t175 * t172)
-        let !t178 = (t169 * ((if t163 > 0 then (t147 + (negate ((t160 / t162) * t144))) else t147) + (negate t152)))
-        let !t179 = (t175 * t173)
-        let !t180 = (t169 * ((if t163 > 0 then (t148 + (negate ((t160 / t162) * t145))) else t148) + (negate t153)))
-        let !t181 = (((t176 * t170) + (t177 * t178)) + (t179 * t180))
-        let !t182 = (t170 + (negate (t181 * t176)))
-        let !t183 = (t178 + (negate (t181 * t177)))
-        let !t184 = (t180 + (negate (t181 * t179)))
-        let !t185 = (sqrt (((t182 * t182) + (t183 * t183)) + (t184 * t184)))
-        let !t186 = (if t185 > 0 then (recip (if (t185 - 1.0e-300) > 0 then t185 else 1.0e-300)) else 0.0)
-        let !s187 = ((t157 * (t168 * (t186 * t182))) + (t164 * t154))
-        let !s188 = ((t157 * (t168 * (t186 * t183))) + (t164 * t155))
-        let !s189 = ((t157 * (t168 * (t186 * t184))) + (t164 * t156))
-        wrU walk ((12 * i142) + 3) s187
-        wrU walk ((12 * i142) + 4) s188
-        wrU walk ((12 * i142) + 5) s189
-        let !s190 = ((t157 * t176) + (t164 * t143))
-        let !s191 = ((t157 * t177) + (t164 * t144))
-        let !s192 = ((t157 * t179) + (t164 * t145))
-        wrU walk ((12 * i142) + 6) s190
-        wrU walk ((12 * i142) + 7) s191
-        wrU walk ((12 * i142) + 8) s192
+      loopI 0.0 24.0 $ \i146 -> do
+        let !d146 = fromIntegral i146 :: Double
+        chkI walk (12 * i146) 0 11
+        t147 <- rdU walk ((12 * i146) + 6)
+        t148 <- rdU walk ((12 * i146) + 7)
+        t149 <- rdU walk ((12 * i146) + 8)
+        t150 <- rdU walk ((12 * i146) + 9)
+        t151 <- rdU walk ((12 * i146) + 10)
+        t152 <- rdU walk ((12 * i146) + 11)
+        chkI radii ((24 * i1) + i146) 0 0
+        t153 <- rdU radii ((24 * i1) + i146)
+        let !s154 = (t153 / 4.0)
+        t155 <- rdU walk (12 * i146)
+        t156 <- rdU walk ((12 * i146) + 1)
+        t157 <- rdU walk ((12 * i146) + 2)
+        t158 <- rdU walk ((12 * i146) + 3)
+        t159 <- rdU walk ((12 * i146) + 4)
+        t160 <- rdU walk ((12 * i146) + 5)
+        let !t161 = (if (abs s154) > 0 then 1.0 else 0.0)
+        let !t162 = (sqrt ((t150 * t150) + (t152 * t152)))
+        let !t163 = (exp t151)
+        let !t164 = (t162 - t163)
+        let !t165 = (recip (2.0 * t162))
+        let !t166 = ((((t165 * (t150 + t150)) * t147) + ((negate t163) * t148)) + ((t165 * (t152 + t152)) * t149))
+        let !t167 = (if ((abs t164) - 1.0e-10) > 0 then (if (abs t166) > 0 then 1.0 else 0.0) else 0.0)
+        let !t168 = (1.0 - t161)
+        let !s169 = ((t161 * (if t167 > 0 then (t150 + (negate ((t164 / t166) * t147))) else t150)) + (t168 * t155))
+        let !s170 = ((t161 * (if t167 > 0 then (t151 + (negate ((t164 / t166) * t148))) else t151)) + (t168 * t156))
+        let !s171 = ((t161 * (if t167 > 0 then (t152 + (negate ((t164 / t166) * t149))) else t152)) + (t168 * t157))
+        let !t172 = (1.0 - (abs (((s169 - s169) + (s170 - s170)) + (s171 - s171))))
+        let !s173 = (if t172 > 0 then s169 else t2)
+        let !s174 = (if t172 > 0 then s170 else t3)
+        let !s175 = (if t172 > 0 then s171 else t4)
+        chkI verts ((291 * i1) + (12 * i146)) 6 8
+        wrU verts (((291 * i1) + (12 * i146)) + 6) s173
+        wrU verts (((291 * i1) + (12 * i146)) + 7) s174
+        wrU verts (((291 * i1) + (12 * i146)) + 8) s175
+        wrU walk (12 * i146) s169
+        wrU walk ((12 * i146) + 1) s170
+        wrU walk ((12 * i146) + 2) s171
+        let !t176 = (sqrt (((t158 * t158) + (t159 * t159)) + (t160 * t160)))
+        let !t177 = (if (abs s154) > 0 then (recip s154) else 0.0)
+        let !t178 = (t177 * ((if t167 > 0 then (t150 + (negate ((t164 / t166) * t147))) else t150) + (negate t155)))
+        let !t179 = (t165 * (t150 + t150))
+        let !t180 = (negate t163)
+        let !t181 = (t165 * (t152 + t152))
+        let !t182 = (sqrt (((t179 * t179) + (t180 * t180)) + (t181 * t181)))
+        let !t183 = (if t182 > 0 then (recip (if (t182 - 1.0e-300) > 0 then t182 else 1.0e-300)) else 0.0)
+        let !t184 = (t183 * t179)
+        let !t185 = (t183 * t180)
+        let !t186 = (t177 * ((if t167 > 0 then (t151 + (negate ((t164 / t166) * t148))) else t151) + (negate t156)))
+        let !t187 = (t183 * t181)
+        let !t188 = (t177 * ((if t167 > 0 then (t152 + (negate ((t164 / t166) * t149))) else t152) + (negate t157)))
+        let !t189 = (((t184 * t178) + (t185 * t186)) + (t187 * t188))
+        let !t190 = (t178 + (negate (t189 * t184)))
+        let !t191 = (t186 + (negate (t189 * t185)))
+        let !t192 = (t188 + (negate (t189 * t187)))
+        let !t193 = (sqrt (((t190 * t190) + (t191 * t191)) + (t192 * t192)))
+        let !t194 = (if t193 > 0 then (recip (if (t193 - 1.0e-300) > 0 then t193 else 1.0e-300)) else 0.0)
+        let !s195 = ((t161 * (t176 * (t194 * t190))) + (t168 * t158))
+        let !s196 = ((t161 * (t176 * (t194 * t191))) + (t168 * t159))
+        let !s197 = ((t161 * (t176 * (t194 * t192))) + (t168 * t160))
+        wrU walk ((12 * i146) + 3) s195
+        wrU walk ((12 * i146) + 4) s196
+        wrU walk ((12 * i146) + 5) s197
+        let !s198 = ((t161 * t184) + (t168 * t147))
+        let !s199 = ((t161 * t185) + (t168 * t148))
+        let !s200 = ((t161 * t187) + (t168 * t149))
+        wrU walk ((12 * i146) + 6) s198
+        wrU walk ((12 * i146) + 7) s199
+        wrU walk ((12 * i146) + 8) s200
         pure ()
-      loopI 0.0 24.0 $ \i193 -> do
-        let !d193 = fromIntegral i193 :: Double
-        chkI walk (12 * i193) 0 11
-        t194 <- rdU walk ((12 * i193) + 6)
-        t195 <- rdU walk ((12 * i193) + 7)
-        t196 <- rdU walk ((12 * i193) + 8)
-        chkI radii ((24 * i1) + i193) 0 0
-        t197 <- rdU radii ((24 * i1) + i193)
-        let !s198 = (t197 / 4.0)
-        t199 <- rdU walk (12 * i193)
-        t200 <- rdU walk ((12 * i193) + 1)
-        t201 <- rdU walk ((12 * i193) + 2)
-        t202 <- rdU walk ((12 * i193) + 3)
-        t203 <- rdU walk ((12 * i193) + 4)
-        t204 <- rdU walk ((12 * i193) + 5)
-        let !s205 = (t199 + (s198 * t202))
-        let !s206 = (t200 + (s198 * t203))
-        let !s207 = (t201 + (s198 * t204))
-        let !t208 = (sqrt ((s205 * s205) + (s207 * s207)))
-        let !t209 = (exp s206)
-        let !t210 = (t208 - t209)
-        let !t211 = (recip (2.0 * t208))
-        let !t212 = ((((t211 * (s205 + s205)) * t194) + ((negate t209) * t195)) + ((t211 * (s207 + s207)) * t196))
-        let !t213 = (if ((abs t210) - 1.0e-10) > 0 then (if (abs t212) > 0 then 1.0 else 0.0) else 0.0)
-        let !s214 = (if t213 > 0 then (s205 + (negate ((t210 / t212) * t194))) else s205)
-        let !s215 = (if t213 > 0 then (s206 + (negate ((t210 / t212) * t195))) else s206)
-        let !s216 = (if t213 > 0 then (s207 + (negate ((t210 / t212) * t196))) else s207)
-        wrU walk ((12 * i193) + 9) s214
-        wrU walk ((12 * i193) + 10) s215
-        wrU walk ((12 * i193) + 11) s216
+      loopI 0.0 24.0 $ \i201 -> do
+        let !d201 = fromIntegral i201 :: Double
+        chkI walk (12 * i201) 0 11
+        t202 <- rdU walk ((12 * i201) + 6)
+        t203 <- rdU walk ((12 * i201) + 7)
+        t204 <- rdU walk ((12 * i201) + 8)
+        chkI radii ((24 * i1) + i201) 0 0
+        t205 <- rdU radii ((24 * i1) + i201)
+        let !s206 = (t205 / 4.0)
+        t207 <- rdU walk (12 * i201)
+        t208 <- rdU walk ((12 * i201) + 1)
+        t209 <- rdU walk ((12 * i201) + 2)
+        t210 <- rdU walk ((12 * i201) + 3)
+        t211 <- rdU walk ((12 * i201) + 4)
+        t212 <- rdU walk ((12 * i201) + 5)
+        let !s213 = (t207 + (s206 * t210))
+        let !s214 = (t208 + (s206 * t211))
+        let !s215 = (t209 + (s206 * t212))
+        let !t216 = (sqrt ((s213 * s213) + (s215 * s215)))
+        let !t217 = (exp s214)
+        let !t218 = (t216 - t217)
+        let !t219 = (recip (2.0 * t216))
+        let !t220 = ((((t219 * (s213 + s213)) * t202) + ((negate t217) * t203)) + ((t219 * (s215 + s215)) * t204))
+        let !t221 = (if ((abs t218) - 1.0e-10) > 0 then (if (abs t220) > 0 then 1.0 else 0.0) else 0.0)
+        let !s222 = (if t221 > 0 then (s213 + (negate ((t218 / t220) * t202))) else s213)
+        let !s223 = (if t221 > 0 then (s214 + (negate ((t218 / t220) * t203))) else s214)
+        let !s224 = (if t221 > 0 then (s215 + (negate ((t218 / t220) * t204))) else s215)
+        wrU walk ((12 * i201) + 9) s222
+        wrU walk ((12 * i201) + 10) s223
+        wrU walk ((12 * i201) + 11) s224
         pure ()
-      loopI 0.0 24.0 $ \i217 -> do
-        let !d217 = fromIntegral i217 :: Double
-        chkI walk (12 * i217) 6 11
-        t218 <- rdU walk ((12 * i217) + 6)
-        t219 <- rdU walk ((12 * i217) + 7)
-        t220 <- rdU walk ((12 * i217) + 8)
-        t221 <- rdU walk ((12 * i217) + 9)
-        t222 <- rdU walk ((12 * i217) + 10)
-        t223 <- rdU walk ((12 * i217) + 11)
-        let !t224 = (sqrt ((t221 * t221) + (t223 * t223)))
-        let !t225 = (exp t222)
-        let !t226 = (t224 - t225)
-        let !t227 = (recip (2.0 * t224))
-        let !t228 = ((((t227 * (t221 + t221)) * t218) + ((negate t225) * t219)) + ((t227 * (t223 + t223)) * t220))
-        let !t229 = (if ((abs t226) - 1.0e-10) > 0 then (if (abs t228) > 0 then 1.0 else 0.0) else 0.0)
-        let !s230 = (if t229 > 0 then (t221 + (negate ((t226 / t228) * t218))) else t221)
-        let !s231 = (if t229 > 0 then (t222 + (negate ((t226 / t228) * t219))) else t222)
-        let !s232 = (if t229 > 0 then (t223 + (negate ((t226 / t228) * t220))) else t223)
-        wrU walk ((12 * i217) + 9) s230
-        wrU walk ((12 * i217) + 10) s231
-        wrU walk ((12 * i217) + 11) s232
+      loopI 0.0 24.0 $ \i225 -> do
+        let !d225 = fromIntegral i225 :: Double
+        chkI walk (12 * i225) 6 11
+        t226 <- rdU walk ((12 * i225) + 6)
+        t227 <- rdU walk ((12 * i225) + 7)
+        t228 <- rdU walk ((12 * i225) + 8)
+        t229 <- rdU walk ((12 * i225) + 9)
+        t230 <- rdU walk ((12 * i225) + 10)
+        t231 <- rdU walk ((12 * i225) + 11)
+        let !t232 = (sqrt ((t229 * t229) + (t231 * t231)))
+        let !t233 = (exp t230)
+        let !t234 = (t232 - t233)
+        let !t235 = (recip (2.0 * t232))
+        let !t236 = ((((t235 * (t229 + t229)) * t226) + ((negate t233) * t227)) + ((t235 * (t231 + t231)) * t228))
+        let !t237 = (if ((abs t234) - 1.0e-10) > 0 then (if (abs t236) > 0 then 1.0 else 0.0) else 0.0)
+        let !s238 = (if t237 > 0 then (t229 + (negate ((t234 / t236) * t226))) else t229)
+        let !s239 = (if t237 > 0 then (t230 + (negate ((t234 / t236) * t227))) else t230)
+        let !s240 = (if t237 > 0 then (t231 + (negate ((t234 / t236) * t228))) else t231)
+        wrU walk ((12 * i225) + 9) s238
+        wrU walk ((12 * i225) + 10) s239
+        wrU walk ((12 * i225) + 11) s240
         pure ()
-      loopI 0.0 24.0 $ \i233 -> do
-        let !d233 = fromIntegral i233 :: Double
-        chkI walk (12 * i233) 0 11
-        t234 <- rdU walk ((12 * i233) + 6)
-        t235 <- rdU walk ((12 * i233) + 7)
-        t236 <- rdU walk ((12 * i233) + 8)
-        t237 <- rdU walk ((12 * i233) + 9)
-        t238 <- rdU walk ((12 * i233) + 10)
-        t239 <- rdU walk ((12 * i233) + 11)
-        chkI radii ((24 * i1) + i233) 0 0
-        t240 <- rdU radii ((24 * i1) + i233)
-        let !s241 = (t240 / 4.0)
-        t242 <- rdU walk (12 * i233)
-        t243 <- rdU walk ((12 * i233) + 1)
-        t244 <- rdU walk ((12 * i233) + 2)
-        t245 <- rdU walk ((12 * i233) + 3)
-        t246 <- rdU walk ((12 * i233) + 4)
-        t247 <- rdU walk ((12 * i233) + 5)
-        let !t248 = (if (abs s241) > 0 then 1.0 else 0.0)
-        let !t249 = (sqrt ((t237 * t237) + (t239 * t239)))
-        let !t250 = (exp t238)
-        let !t251 = (t249 - t250)
-        let !t252 = (recip (2.0 * t249))
-        let !t253 = ((((t252 * (t237 + t237)) * t234) + ((negate t250) * t235)) + ((t252 * (t239 + t239)) * t236))
-        let !t254 = (if ((abs t251) - 1.0e-10) > 0 then (if (abs t253) > 0 then 1.0 else 0.0) else 0.0)
-        let !t255 = (1.0 - t248)
-        let !s256 = ((t248 * (if t254 > 0 then (t237 + (negate ((t251 / t253) * t234))) else t237)) + (t255 * t242))
-        let !s257 = ((t248 * (if t254 > 0 then (t238 + (negate ((t251 / t253) * t235))) else t238)) + (t255 * t243))
-        let !s258 = ((t248 * (if t254 > 0 then (t239 + (negate ((t251 / t253) * t236))) else t239)) + (t255 * t244))
-        chkI verts ((291 * i1) + (12 * i233)) 9 11
-        wrU verts (((291 * i1) + (12 * i233)) + 9) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s256 else t2)
-        wrU verts (((291 * i1) + (12 * i233)) + 10) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s257 else t3)
-        wrU verts (((291 * i1) + (12 * i233)) + 11) (if (1.0 - (abs (((s256 - s256) + (s257 - s257)) + (s258 - s258)))) > 0 then s258 else t4)
-        wrU walk (12 * i233) s256
-        wrU walk ((12 * i233) + 1) s257
-        wrU walk ((12 * i233) + 2) s258
-        let !t259 = (sqrt (((t245 * t245) + (t246 * t246)) + (t247 * t247)))
-        let !t260 = (if (abs s241) > 0 then (recip s241) else 0.0)
-        let !t261 = (t260 * ((if t254 > 0 then (t237 + (negate ((t251 / t253) * t234))) else t237) + (negate t242)))
-        let !t262 = (t252 * (t237 + t237))
-        let !t263 = (negate t250)
-        let !t264 = (t252 * (t239 + t239))
-        let !t265 = (sqrt (((t262 * t262) + (t263 * t263)) + (t264 * t264)))
-        let !t266 = (if t265 > 0 then (recip (if (t265 - 1.0e-300) > 0 then t265 else 1.0e-300)) else 0.0)
-        let !t267 = (t266 * t262)
-        let !t268 = (t266 * t263)
-        let !t269 = (t260 * ((if t254 > 0 then (t238 + (negate ((t251 / t253) * t235))) else t238) + (negate t243)))
-        let !t270 = (t266 * t264)
-        let !t271 = (t260 * ((if t254 > 0 then (t239 + (negate ((t251 / t253) * t236))) else t239) + (negate t244)))
-        let !t272 = (((t267 * t261) + (t268 * t269)) + (t270 * t271))
-        let !t273 = (t261 + (negate (t272 * t267)))
-        let !t274 = (t269 + (negate (t272 * t268)))
-        let !t275 = (t271 + (negate (t272 * t270)))
-        let !t276 = (sqrt (((t273 * t273) + (t274 * t274)) + (t275 * t275)))
-        let !t277 = (if t276 > 0 then (recip (if (t276 - 1.0e-300) > 0 then t276 else 1.0e-300)) else 0.0)
-        let !s278 = ((t248 * (t259 * (t277 * t273))) + (t255 * t245))
-        let !s279 = ((t248 * (t259 * (t277 * t274))) + (t255 * t246))
-        let !s280 = ((t248 * (t259 * (t277 * t275))) + (t255 * t247))
-        wrU walk ((12 * i233) + 3) s278
-        wrU walk ((12 * i233) + 4) s279
-        wrU walk ((12 * i233) + 5) s280
-        let !s281 = ((t248 * t267) + (t255 * t234))
-        let !s282 = ((t248 * t268) + (t255 * t235))
-        let !s283 = ((t248 * t270) + (t255 * t236))
-        wrU walk ((12 * i233) + 6) s281
-        wrU walk ((12 * i233) + 7) s282
-        wrU walk ((12 * i233) + 8) s283
+      loopI 0.0 24.0 $ \i241 -> do
+        let !d241 = fromIntegral i241 :: Double
+        chkI walk (12 * i241) 0 11
+        t242 <- rdU walk ((12 * i241) + 6)
+        t243 <- rdU walk ((12 * i241) + 7)
+        t244 <- rdU walk ((12 * i241) + 8)
+        t245 <- rdU walk ((12 * i241) + 9)
+        t246 <- rdU walk ((12 * i241) + 10)
+        t247 <- rdU walk ((12 * i241) + 11)
+        chkI radii ((24 * i1) + i241) 0 0
+        t248 <- rdU radii ((24 * i1) + i241)
+        let !s249 = (t248 / 4.0)
+        t250 <- rdU walk (12 * i241)
+        t251 <- rdU walk ((12 * i241) + 1)
+        t252 <- rdU walk ((12 * i241) + 2)
+        t253 <- rdU walk ((12 * i241) + 3)
+        t254 <- rdU walk ((12 * i241) + 4)
+        t255 <- rdU walk ((12 * i241) + 5)
+        let !t256 = (if (abs s249) > 0 then 1.0 else 0.0)
+        let !t257 = (sqrt ((t245 * t245) + (t247 * t247)))
+        let !t258 = (exp t246)
+        let !t259 = (t257 - t258)
+        let !t260 = (recip (2.0 * t257))
+        let !t261 = ((((t260 * (t245 + t245)) * t242) + ((negate t258) * t243)) + ((t260 * (t247 + t247)) * t244))
+        let !t262 = (if ((abs t259) - 1.0e-10) > 0 then (if (abs t261) > 0 then 1.0 else 0.0) else 0.0)
+        let !t263 = (1.0 - t256)
+        let !s264 = ((t256 * (if t262 > 0 then (t245 + (negate ((t259 / t261) * t242))) else t245)) + (t263 * t250))
+        let !s265 = ((t256 * (if t262 > 0 then (t246 + (negate ((t259 / t261) * t243))) else t246)) + (t263 * t251))
+        let !s266 = ((t256 * (if t262 > 0 then (t247 + (negate ((t259 / t261) * t244))) else t247)) + (t263 * t252))
+        let !t267 = (1.0 - (abs (((s264 - s264) + (s265 - s265)) + (s266 - s266))))
+        let !s268 = (if t267 > 0 then s264 else t2)
+        let !s269 = (if t267 > 0 then s265 else t3)
+        let !s270 = (if t267 > 0 then s266 else t4)
+        chkI verts ((291 * i1) + (12 * i241)) 9 11
+        wrU verts (((291 * i1) + (12 * i241)) + 9) s268
+        wrU verts (((291 * i1) + (12 * i241)) + 10) s269
+        wrU verts (((291 * i1) + (12 * i241)) + 11) s270
+        wrU walk (12 * i241) s264
+        wrU walk ((12 * i241) + 1) s265
+        wrU walk ((12 * i241) + 2) s266
+        let !t271 = (sqrt (((t253 * t253) + (t254 * t254)) + (t255 * t255)))
+        let !t272 = (if (abs s249) > 0 then (recip s249) else 0.0)
+        let !t273 = (t272 * ((if t262 > 0 then (t245 + (negate ((t259 / t261) * t242))) else t245) + (negate t250)))
+        let !t274 = (t260 * (t245 + t245))
+        let !t275 = (negate t258)
+        let !t276 = (t260 * (t247 + t247))
+        let !t277 = (sqrt (((t274 * t274) + (t275 * t275)) + (t276 * t276)))
+        let !t278 = (if t277 > 0 then (recip (if (t277 - 1.0e-300) > 0 then t277 else 1.0e-300)) else 0.0)
+        let !t279 = (t278 * t274)
+        let !t280 = (t278 * t275)
+        let !t281 = (t272 * ((if t262 > 0 then (t246 + (negate ((t259 / t261) * t243))) else t246) + (negate t251)))
+        let !t282 = (t278 * t276)
+        let !t283 = (t272 * ((if t262 > 0 then (t247 + (negate ((t259 / t261) * t244))) else t247) + (negate t252)))
+        let !t284 = (((t279 * t273) + (t280 * t281)) + (t282 * t283))
+        let !t285 = (t273 + (negate (t284 * t279)))
+        let !t286 = (t281 + (negate (t284 * t280)))
+        let !t287 = (t283 + (negate (t284 * t282)))
+        let !t288 = (sqrt (((t285 * t285) + (t286 * t286)) + (t287 * t287)))
+        let !t289 = (if t288 > 0 then (recip (if (t288 - 1.0e-300) > 0 then t288 else 1.0e-300)) else 0.0)
+        let !s290 = ((t256 * (t271 * (t289 * t285))) + (t263 * t253))
+        let !s291 = ((t256 * (t271 * (t289 * t286))) + (t263 * t254))
+        let !s292 = ((t256 * (t271 * (t289 * t287))) + (t263 * t255))
+        wrU walk ((12 * i241) + 3) s290
+        wrU walk ((12 * i241) + 4) s291
+        wrU walk ((12 * i241) + 5) s292
+        let !s293 = ((t256 * t279) + (t263 * t242))
+        let !s294 = ((t256 * t280) + (t263 * t243))
+        let !s295 = ((t256 * t282) + (t263 * t244))
+        wrU walk ((12 * i241) + 6) s293
+        wrU walk ((12 * i241) + 7) s294
+        wrU walk ((12 * i241) + 8) s295
         pure ()
-      loopI 0.0 24.0 $ \i284 -> do
-        let !d284 = fromIntegral i284 :: Double
-        chkI walk (12 * i284) 0 11
-        t285 <- rdU walk ((12 * i284) + 6)
-        t286 <- rdU walk ((12 * i284) + 7)
-        t287 <- rdU walk ((12 * i284) + 8)
-        chkI radii ((24 * i1) + i284) 0 0
-        t288 <- rdU radii ((24 * i1) + i284)
-        let !s289 = (t288 / 4.0)
-        t290 <- rdU walk (12 * i284)
-        t291 <- rdU walk ((12 * i284) + 1)
-        t292 <- rdU walk ((12 * i284) + 2)
-        t293 <- rdU walk ((12 * i284) + 3)
-        t294 <- rdU walk ((12 * i284) + 4)
-        t295 <- rdU walk ((12 * i284) + 5)
-        let !s296 = (t290 + (s289 * t293))
-        let !s297 = (t291 + (s289 * t294))
-        let !s298 = (t292 + (s289 * t295))
-        let !t299 = (sqrt ((s296 * s296) + (s298 * s298)))
-        let !t300 = (exp s297)
-        let !t301 = (t299 - t300)
-        let !t302 = (recip (2.0 * t299))
-        let !t303 = ((((t302 * (s296 + s296)) * t285) + ((negate t300) * t286)) + ((t302 * (s298 + s298)) * t287))
-        let !t304 = (if ((abs t301) - 1.0e-10) > 0 then (if (abs t303) > 0 then 1.0 else 0.0) else 0.0)
-        let !s305 = (if t304 > 0 then (s296 + (negate ((t301 / t303) * t285))) else s296)
-        let !s306 = (if t304 > 0 then (s297 + (negate ((t301 / t303) * t286))) else s297)
-        let !s307 = (if t304 > 0 then (s298 + (negate ((t301 / t303) * t287))) else s298)
-        wrU walk ((12 * i284) + 9) s305
-        wrU walk ((12 * i284) + 10) s306
-        wrU walk ((12 * i284) + 11) s307
+      loopI 0.0 24.0 $ \i296 -> do
+        let !d296 = fromIntegral i296 :: Double
+        chkI walk (12 * i296) 0 11
+        t297 <- rdU walk ((12 * i296) + 6)
+        t298 <- rdU walk ((12 * i296) + 7)
+        t299 <- rdU walk ((12 * i296) + 8)
+        chkI radii ((24 * i1) + i296) 0 0
+        t300 <- rdU radii ((24 * i1) + i296)
+        let !s301 = (t300 / 4.0)
+        t302 <- rdU walk (12 * i296)
+        t303 <- rdU walk ((12 * i296) + 1)
+        t304 <- rdU walk ((12 * i296) + 2)
+        t305 <- rdU walk ((12 * i296) + 3)
+        t306 <- rdU walk ((12 * i296) + 4)
+        t307 <- rdU walk ((12 * i296) + 5)
+        let !s308 = (t302 + (s301 * t305))
+        let !s309 = (t303 + (s301 * t306))
+        let !s310 = (t304 + (s301 * t307))
+        let !t311 = (sqrt ((s308 * s308) + (s310 * s310)))
+        let !t312 = (exp s309)
+        let !t313 = (t311 - t312)
+        let !t314 = (recip (2.0 * t311))
+        let !t315 = ((((t314 * (s308 + s308)) * t297) + ((negate t312) * t298)) + ((t314 * (s310 + s310)) * t299))
+        let !t316 = (if ((abs t313) - 1.0e-10) > 0 then (if (abs t315) > 0 then 1.0 else 0.0) else 0.0)
+        let !s317 = (if t316 > 0 then (s308 + (negate ((t313 / t315) * t297))) else s308)
+        let !s318 = (if t316 > 0 then (s309 + (negate ((t313 / t315) * t298))) else s309)
+        let !s319 = (if t316 > 0 then (s310 + (negate ((t313 / t315) * t299))) else s310)
+        wrU walk ((12 * i296) + 9) s317
+        wrU walk ((12 * i296) + 10) s318
+        wrU walk ((12 * i296) + 11) s319
         pure ()
-      loopI 0.0 24.0 $ \i308 -> do
-        let !d308 = fromIntegral i308 :: Double
-        chkI walk (12 * i308) 6 11
-        t309 <- rdU walk ((12 * i308) + 6)
-        t310 <- rdU walk ((12 * i308) + 7)
-        t311 <- rdU walk ((12 * i308) + 8)
-        t312 <- rdU walk ((12 * i308) + 9)
-        t313 <- rdU walk ((12 * i308) + 10)
-        t314 <- rdU walk ((12 * i308) + 11)
-        let !t315 = (sqrt ((t312 * t312) + (t314 * t314)))
-        let !t316 = (exp t313)
-        let !t317 = (t315 - t316)
-        let !t318 = (recip (2.0 * t315))
-        let !t319 = ((((t318 * (t312 + t312)) * t309) + ((negate t316) * t310)) + ((t318 * (t314 + t314)) * t311))
-        let !t320 = (if ((abs t317) - 1.0e-10) > 0 then (if (abs t319) > 0 then 1.0 else 0.0) else 0.0)
-        let !s321 = (if t320 > 0 then (t312 + (negate ((t317 / t319) * t309))) else t312)
-        let !s322 = (if t320 > 0 then (t313 + (negate ((t317 / t319) * t310))) else t313)
-        let !s323 = (if t320 > 0 then (t314 + (negate ((t317 / t319) * t311))) else t314)
-        wrU walk ((12 * i308) + 9) s321
-        wrU walk ((12 * i308) + 10) s322
-        wrU walk ((12 * i308) + 11) s323
+      loopI 0.0 24.0 $ \i320 -> do
+        let !d320 = fromIntegral i320 :: Double
+        chkI walk (12 * i320) 6 11
+        t321 <- rdU walk ((12 * i320) + 6)
+        t322 <- rdU walk ((12 * i320) + 7)
+        t323 <- rdU walk ((12 * i320) + 8)
+        t324 <- rdU walk ((12 * i320) + 9)
+        t325 <- rdU walk ((12 * i320) + 10)
+        t326 <- rdU walk ((12 * i320) + 11)
+        let !t327 = (sqrt ((t324 * t324) + (t326 * t326)))
+        let !t328 = (exp t325)
+        let !t329 = (t327 - t328)
+        let !t330 = (recip (2.0 * t327))
+        let !t331 = ((((t330 * (t324 + t324)) * t321) + ((negate t328) * t322)) + ((t330 * (t326 + t326)) * t323))
+        let !t332 = (if ((abs t329) - 1.0e-10) > 0 then (if (abs t331) > 0 then 1.0 else 0.0) else 0.0)
+        let !s333 = (if t332 > 0 then (t324 + (negate ((t329 / t331) * t321))) else t324)
+        let !s334 = (if t332 > 0 then (t325 + (negate ((t329 / t331) * t322))) else t325)
+        let !s335 = (if t332 > 0 then (t326 + (negate ((t329 / t331) * t323))) else t326)
+        wrU walk ((12 * i320) + 9) s333
+        wrU walk ((12 * i320) + 10) s334
+        wrU walk ((12 * i320) + 11) s335
         pure ()
-      loopI 0.0 24.0 $ \i324 -> do
-        let !d324 = fromIntegral i324 :: Double
-        chkI walk (12 * i324) 0 11
-        t325 <- rdU walk ((12 * i324) + 6)
-        t326 <- rdU walk ((12 * i324) + 7)
-        t327 <- rdU walk ((12 * i324) + 8)
-        t328 <- rdU walk ((12 * i324) + 9)
-        t329 <- rdU walk ((12 * i324) + 10)
-        t330 <- rdU walk ((12 * i324) + 11)
-        chkI radii ((24 * i1) + i324) 0 0
-        t331 <- rdU radii ((24 * i1) + i324)
-        let !s332 = (t331 / 4.0)
-        t333 <- rdU walk (12 * i324)
-        t334 <- rdU walk ((12 * i324) + 1)
-        t335 <- rdU walk ((12 * i324) + 2)
-        t336 <- rdU walk ((12 * i324) + 3)
-        t337 <- rdU walk ((12 * i324) + 4)
-        t338 <- rdU walk ((12 * i324) + 5)
-        let !t339 = (if (abs s332) > 0 then 1.0 else 0.0)
-        let !t340 = (sqrt ((t328 * t328) + (t330 * t330)))
-        let !t341 = (exp t329)
-        let !t342 = (t340 - t341)
-        let !t343 = (recip (2.0 * t340))
-        let !t344 = ((((t343 * (t328 + t328)) * t325) + ((negate t341) * t326)) + ((t343 * (t330 + t330)) * t327))
-        let !t345 = (if ((abs t342) - 1.0e-10) > 0 then (if (abs t344) > 0 then 1.0 else 0.0) else 0.0)
-        let !t346 = (1.0 - t339)
-        let !s347 = ((t339 * (if t345 > 0 then (t328 + (negate ((t342 / t344) * t325))) else t328)) + (t346 * t333))
-        let !s348 = ((t339 * (if t345 > 0 then (t329 + (negate ((t342 / t344) * t326))) else t329)) + (t346 * t334))
-        let !s349 = ((t339 * (if t345 > 0 then (t330 + (negate ((t342 / t344) * t327))) else t330)) + (t346 * t335))
-        chkI verts ((291 * i1) + (12 * i324)) 12 14
-        wrU verts (((291 * i1) + (12 * i324)) + 12) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s347 else t2)
-        wrU verts (((291 * i1) + (12 * i324)) + 13) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s348 else t3)
-        wrU verts (((291 * i1) + (12 * i324)) + 14) (if (1.0 - (abs (((s347 - s347) + (s348 - s348)) + (s349 - s349)))) > 0 then s349 else t4)
+      loopI 0.0 24.0 $ \i336 -> do
+        let !d336 = fromIntegral i336 :: Double
+        chkI walk (12 * i336) 0 11
+        t337 <- rdU walk ((12 * i336) + 6)
+        t338 <- rdU walk ((12 * i336) + 7)
+        t339 <- rdU walk ((12 * i336) + 8)
+        t340 <- rdU walk ((12 * i336) + 9)
+        t341 <- rdU walk ((12 * i336) + 10)
+        t342 <- rdU walk ((12 * i336) + 11)
+        chkI radii ((24 * i1) + i336) 0 0
+        t343 <- rdU radii ((24 * i1) + i336)
+        let !s344 = (t343 / 4.0)
+        t345 <- rdU walk (12 * i336)
+        t346 <- rdU walk ((12 * i336) + 1)
+        t347 <- rdU walk ((12 * i336) + 2)
+        t348 <- rdU walk ((12 * i336) + 3)
+        t349 <- rdU walk ((12 * i336) + 4)
+        t350 <- rdU walk ((12 * i336) + 5)
+        let !t351 = (if (abs s344) > 0 then 1.0 else 0.0)
+        let !t352 = (sqrt ((t340 * t340) + (t342 * t342)))
+        let !t353 = (exp t341)
+        let !t354 = (t352 - t353)
+        let !t355 = (recip (2.0 * t352))
+        let !t356 = ((((t355 * (t340 + t340)) * t337) + ((negate t353) * t338)) + ((t355 * (t342 + t342)) * t339))
+        let !t357 = (if ((abs t354) - 1.0e-10) > 0 then (if (abs t356) > 0 then 1.0 else 0.0) else 0.0)
+        let !t358 = (1.0 - t351)
+        let !s359 = ((t351 * (if t357 > 0 then (t340 + (negate ((t354 / t356) * t337))) else t340)) + (t358 * t345))
+        let !s360 = ((t351 * (if t357 > 0 then (t341 + (negate ((t354 / t356) * t338))) else t341)) + (t358 * t346))
+        let !s361 = ((t351 * (if t357 > 0 then (t342 + (negate ((t354 / t356) * t339))) else t342)) + (t358 * t347))
+        let !t362 = (1.0 - (abs (((s359 - s359) + (s360 - s360)) + (s361 - s361))))
+        let !s363 = (if t362 > 0 then s359 else t2)
+        let !s364 = (if t362 > 0 then s360 else t3)
+        let !s365 = (if t362 > 0 then s361 else t4)
+        chkI verts ((291 * i1) + (12 * i336)) 12 14
+        wrU verts (((291 * i1) + (12 * i336)) + 12) s363
+        wrU verts (((291 * i1) + (12 * i336)) + 13) s364
+        wrU verts (((291 * i1) + (12 * i336)) + 14) s365
+        chkI outline ((72 * i1) + (3 * i336)) 0 2
+        wrU outline ((72 * i1) + (3 * i336)) s363
+        wrU outline (((72 * i1) + (3 * i336)) + 1) s364
+        wrU outline (((72 * i1) + (3 * i336)) + 2) s365
         pure ()
       pure ()
     else do
-      loopI 0.0 24.0 $ \i350 -> do
-        let !d350 = fromIntegral i350 :: Double
-        t351 <- rdU locals 0
-        t352 <- rdU locals 1
-        wrU locals 0 ((t351 * 0.9659258262890683) - (t352 * 0.25881904510252074))
-        wrU locals 1 ((t352 * 0.9659258262890683) + (t351 * 0.25881904510252074))
-        let !s353 = ((t351 * t5) + (t352 * s14))
-        let !s354 = ((t351 * t6) + (t352 * s15))
-        let !s355 = ((t351 * t7) + (t352 * s16))
-        chkI walk (12 * i350) 3 5
-        wrU walk ((12 * i350) + 3) s353
-        wrU walk ((12 * i350) + 4) s354
-        wrU walk ((12 * i350) + 5) s355
+      loopI 0.0 24.0 $ \i366 -> do
+        let !d366 = fromIntegral i366 :: Double
+        t367 <- rdU locals 0
+        t368 <- rdU locals 1
+        wrU locals 0 ((t367 * 0.9659258262890683) - (t368 * 0.25881904510252074))
+        wrU locals 1 ((t368 * 0.9659258262890683) + (t367 * 0.25881904510252074))
+        let !s369 = ((t367 * t5) + (t368 * s14))
+        let !s370 = ((t367 * t6) + (t368 * s15))
+        let !s371 = ((t367 * t7) + (t368 * s16))
+        chkI walk (12 * i366) 3 5
+        wrU walk ((12 * i366) + 3) s369
+        wrU walk ((12 * i366) + 4) s370
+        wrU walk ((12 * i366) + 5) s371
         pure ()
-      loopI 0.0 24.0 $ \i356 -> do
-        let !d356 = fromIntegral i356 :: Double
-        chkI radii ((24 * i1) + i356) 0 0
-        t357 <- rdU radii ((24 * i1) + i356)
-        chkI walk (12 * i356) 3 11
-        t358 <- rdU walk ((12 * i356) + 3)
-        t359 <- rdU walk ((12 * i356) + 4)
-        t360 <- rdU walk ((12 * i356) + 5)
-        let !s361 = (t2 + (t357 * t358))
-        let !s362 = (t3 + (t357 * t359))
-        let !s363 = (t4 + (t357 * t360))
-        let !t364 = (sqrt ((s361 * s361) + (s363 * s363)))
-        let !t365 = (exp s362)
-        let !t366 = (t364 - t365)
-        let !t367 = (recip (2.0 * t364))
-        let !t368 = ((((t367 * (s361 + s361)) * t8) + ((negate t365) * t9)) + ((t367 * (s363 + s363)) * t10))
-        let !t369 = (if ((abs t366) - 1.0e-10) > 0 then (if (abs t368) > 0 then 1.0 else 0.0) else 0.0)
-        let !s370 = (if t369 > 0 then (s361 + (negate ((t366 / t368) * t8))) else s361)
-        let !s371 = (if t369 > 0 then (s362 + (negate ((t366 / t368) * t9))) else s362)
-        let !s372 = (if t369 > 0 then (s363 + (negate ((t366 / t368) * t10))) else s363)
-        wrU walk ((12 * i356) + 9) s370
-        wrU walk ((12 * i356) + 10) s371
-        wrU walk ((12 * i356) + 11) s372
+      loopI 0.0 24.0 $ \i372 -> do
+        let !d372 = fromIntegral i372 :: Double
+        chkI radii ((24 * i1) + i372) 0 0
+        t373 <- rdU radii ((24 * i1) + i372)
+        chkI walk (12 * i372) 3 11
+        t374 <- rdU walk ((12 * i372) + 3)
+        t375 <- rdU walk ((12 * i372) + 4)
+        t376 <- rdU walk ((12 * i372) + 5)
+        let !s377 = (t2 + (t373 * t374))
+        let !s378 = (t3 + (t373 * t375))
+        let !s379 = (t4 + (t373 * t376))
+        let !t380 = (sqrt ((s377 * s377) + (s379 * s379)))
+        let !t381 = (exp s378)
+        let !t382 = (t380 - t381)
+        let !t383 = (recip (2.0 * t380))
+        let !t384 = ((((t383 * (s377 + s377)) * t8) + ((negate t381) * t9)) + ((t383 * (s379 + s379)) * t10))
+        let !t385 = (if ((abs t382) - 1.0e-10) > 0 then (if (abs t384) > 0 then 1.0 else 0.0) else 0.0)
+        let !s386 = (if t385 > 0 then (s377 + (negate ((t382 / t384) * t8))) else s377)
+        let !s387 = (if t385 > 0 then (s378 + (negate ((t382 / t384) * t9))) else s378)
+        let !s388 = (if t385 > 0 then (s379 + (negate ((t382 / t384) * t10))) else s379)
+        wrU walk ((12 * i372) + 9) s386
+        wrU walk ((12 * i372) + 10) s387
+        wrU walk ((12 * i372) + 11) s388
         pure ()
-      loopI 0.0 24.0 $ \i373 -> do
-        let !d373 = fromIntegral i373 :: Double
-        chkI walk (12 * i373) 9 11
-        t374 <- rdU walk ((12 * i373) + 9)
-        t375 <- rdU walk ((12 * i373) + 10)
-        t376 <- rdU walk ((12 * i373) + 11)
-        let !t377 = (sqrt ((t374 * t374) + (t376 * t376)))
-        let !t378 = (exp t375)
-        let !t379 = (t377 - t378)
-        let !t380 = (recip (2.0 * t377))
-        let !t381 = ((((t380 * (t374 + t374)) * t8) + ((negate t378) * t9)) + ((t380 * (t376 + t376)) * t10))
-        let !t382 = (if ((abs t379) - 1.0e-10) > 0 then (if (abs t381) > 0 then 1.0 else 0.0) else 0.0)
-        let !s383 = (if t382 > 0 then (t374 + (negate ((t379 / t381) * t8))) else t374)
-        let !s384 = (if t382 > 0 then (t375 + (negate ((t379 / t381) * t9))) else t375)
-        let !s385 = (if t382 > 0 then (t376 + (negate ((t379 / t381) * t10))) else t376)
-        wrU walk ((12 * i373) + 9) s383
-        wrU walk ((12 * i373) + 10) s384
-        wrU walk ((12 * i373) + 11) s385
+      loopI 0.0 24.0 $ \i389 -> do
+        let !d389 = fromIntegral i389 :: Double
+        chkI walk (12 * i389) 9 11
+        t390 <- rdU walk ((12 * i389) + 9)
+        t391 <- rdU walk ((12 * i389) + 10)
+        t392 <- rdU walk ((12 * i389) + 11)
+        let !t393 = (sqrt ((t390 * t390) + (t392 * t392)))
+        let !t394 = (exp t391)
+        let !t395 = (t393 - t394)
+        let !t396 = (recip (2.0 * t393))
+        let !t397 = ((((t396 * (t390 + t390)) * t8) + ((negate t394) * t9)) + ((t396 * (t392 + t392)) * t10))
+        let !t398 = (if ((abs t395) - 1.0e-10) > 0 then (if (abs t397) > 0 then 1.0 else 0.0) else 0.0)
+        let !s399 = (if t398 > 0 then (t390 + (negate ((t395 / t397) * t8))) else t390)
+        let !s400 = (if t398 > 0 then (t391 + (negate ((t395 / t397) * t9))) else t391)
+        let !s401 = (if t398 > 0 then (t392 + (negate ((t395 / t397) * t10))) else t392)
+        wrU walk ((12 * i389) + 9) s399
+        wrU walk ((12 * i389) + 10) s400
+        wrU walk ((12 * i389) + 11) s401
         pure ()
-      loopI 0.0 24.0 $ \i386 -> do
-        let !d386 = fromIntegral i386 :: Double
-        chkI walk (12 * i386) 3 11
-        t387 <- rdU walk ((12 * i386) + 9)
-        t388 <- rdU walk ((12 * i386) + 10)
-        t389 <- rdU walk ((12 * i386) + 11)
-        chkI radii ((24 * i1) + i386) 0 0
-        t390 <- rdU radii ((24 * i1) + i386)
-        t391 <- rdU walk ((12 * i386) + 3)
-        t392 <- rdU walk ((12 * i386) + 4)
-        t393 <- rdU walk ((12 * i386) + 5)
-        let !t394 = (if (abs t390) > 0 then 1.0 else 0.0)
-        let !t395 = (sqrt ((t387 * t387) + (t389 * t389)))
-        let !t396 = (exp t388)
-        let !t397 = (t395 - t396)
-        let !t398 = (recip (2.0 * t395))
-        let !t399 = ((((t398 * (t387 + t387)) * t8) + ((negate t396) * t9)) + ((t398 * (t389 + t389)) * t10))
-        let !t400 = (if ((abs t397) - 1.0e-10) > 0 then (if (abs t399) > 0 then 1.0 else 0.0) else 0.0)
-        let !t401 = (1.0 - t394)
-        let !s402 = ((t394 * (if t400 > 0 then (t387 + (negate ((t397 / t399) * t8))) else t387)) + (t401 * t2))
-        let !s403 = ((t394 * (if t400 > 0 then (t388 + (negate ((t397 / t399) * t9))) else t388)) + (t401 * t3))
-        let !s404 = ((t394 * (if t400 > 0 then (t389 + (negate ((t397 / t399) * t10))) else t389)) + (t401 * t4))
-        let !t405 = (1.0 - (abs (((s402 - s402) + (s403 - s403)) + (s404 - s404))))
-        let !s406 = (if t405 > 0 then s402 else t2)
-        let !s407 = (if t405 > 0 then s403 else t3)
-        let !s408 = (if t405 > 0 then s404 else t4)
-        chkI verts ((291 * i1) + (12 * i386)) 3 14
-        wrU verts (((291 * i1) + (12 * i386)) + 12) s406
-        wrU verts (((291 * i1) + (12 * i386)) + 13) s407
-        wrU verts (((291 * i1) + (12 * i386)) + 14) s408
-        wrU verts (((291 * i1) + (12 * i386)) + 3) (t2 + (0.25 * (s406 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i386)) + 4) (t3 + (0.25 * (s407 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i386)) + 5) (t4 + (0.25 * (s408 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i386)) + 6) (t2 + (0.5 * (s406 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i386)) + 7) (t3 + (0.5 * (s407 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i386)) + 8) (t4 + (0.5 * (s408 + (negate t4))))
-        wrU verts (((291 * i1) + (12 * i386)) + 9) (t2 + (0.75 * (s406 + (negate t2))))
-        wrU verts (((291 * i1) + (12 * i386)) + 10) (t3 + (0.75 * (s407 + (negate t3))))
-        wrU verts (((291 * i1) + (12 * i386)) + 11) (t4 + (0.75 * (s408 + (negate t4))))
+      loopI 0.0 24.0 $ \i402 -> do
+        let !d402 = fromIntegral i402 :: Double
+        chkI walk (12 * i402) 3 11
+        t403 <- rdU walk ((12 * i402) + 9)
+        t404 <- rdU walk ((12 * i402) + 10)
+        t405 <- rdU walk ((12 * i402) + 11)
+        chkI radii ((24 * i1) + i402) 0 0
+        t406 <- rdU radii ((24 * i1) + i402)
+        t407 <- rdU walk ((12 * i402) + 3)
+        t408 <- rdU walk ((12 * i402) + 4)
+        t409 <- rdU walk ((12 * i402) + 5)
+        let !t410 = (if (abs t406) > 0 then 1.0 else 0.0)
+        let !t411 = (sqrt ((t403 * t403) + (t405 * t405)))
+        let !t412 = (exp t404)
+        let !t413 = (t411 - t412)
+        let !t414 = (recip (2.0 * t411))
+        let !t415 = ((((t414 * (t403 + t403)) * t8) + ((negate t412) * t9)) + ((t414 * (t405 + t405)) * t10))
+        let !t416 = (if ((abs t413) - 1.0e-10) > 0 then (if (abs t415) > 0 then 1.0 else 0.0) else 0.0)
+        let !t417 = (1.0 - t410)
+        let !s418 = ((t410 * (if t416 > 0 then (t403 + (negate ((t413 / t415) * t8))) else t403)) + (t417 * t2))
+        let !s419 = ((t410 * (if t416 > 0 then (t404 + (negate ((t413 / t415) * t9))) else t404)) + (t417 * t3))
+        let !s420 = ((t410 * (if t416 > 0 then (t405 + (negate ((t413 / t415) * t10))) else t405)) + (t417 * t4))
+        let !t421 = (1.0 - (abs (((s418 - s418) + (s419 - s419)) + (s420 - s420))))
+        let !s422 = (if t421 > 0 then s418 else t2)
+        let !s423 = (if t421 > 0 then s419 else t3)
+        let !s424 = (if t421 > 0 then s420 else t4)
+        chkI verts ((291 * i1) + (12 * i402)) 3 14
+        wrU verts (((291 * i1) + (12 * i402)) + 12) s422
+        wrU verts (((291 * i1) + (12 * i402)) + 13) s423
+        wrU verts (((291 * i1) + (12 * i402)) + 14) s424
+        chkI outline ((72 * i1) + (3 * i402)) 0 2
+        wrU outline ((72 * i1) + (3 * i402)) s422
+        wrU outline (((72 * i1) + (3 * i402)) + 1) s423
+        wrU outline (((72 * i1) + (3 * i402)) + 2) s424
+        wrU verts (((291 * i1) + (12 * i402)) + 3) (t2 + (0.25 * (s422 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i402)) + 4) (t3 + (0.25 * (s423 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i402)) + 5) (t4 + (0.25 * (s424 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i402)) + 6) (t2 + (0.5 * (s422 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i402)) + 7) (t3 + (0.5 * (s423 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i402)) + 8) (t4 + (0.5 * (s424 + (negate t4))))
+        wrU verts (((291 * i1) + (12 * i402)) + 9) (t2 + (0.75 * (s422 + (negate t2))))
+        wrU verts (((291 * i1) + (12 * i402)) + 10) (t3 + (0.75 * (s423 + (negate t3))))
+        wrU verts (((291 * i1) + (12 * i402)) + 11) (t4 + (0.75 * (s424 + (negate t4))))
         pure ()
       pure ()
     pure ()
