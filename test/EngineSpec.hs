@@ -261,6 +261,23 @@ freeMotionSpec = describe "Engine: free motion" $ do
         pure (maxDiff (take perBody (drop (perBody * i) verts)) expected)
       (spaceName sp, length diffs > 1, maximum diffs < 1e-8) `shouldBe` (spaceName sp, True, True)
 
+  -- the narrow phase reads the outline vertices from wOutline, a copy the
+  -- walk writes beside the polygon cache: both must hold the same points
+  it "keeps wOutline equal to the cached polygon's outline vertices, walked in one step or four, compiled or generic, and after a removal" $
+    forM_ [(sp, hmax, generic) | sp <- [plane, sphere, torus], hmax <- [0, 10], generic <- [False, True]] $ \(sp, hmax, generic) -> do
+      w0 <- sceneWorld sp
+      let w = if generic then genericStep w0 else w0
+      setParams w defaultParams { pPolygonStep = hmax }
+      replicateM_ 5 (stepNative w)
+      removeBodyAt w 0 -- the last body's polygon moves into its place
+      n <- bodyCount w
+      verts <- freeze (wVerts (nwArrays w))
+      outline <- freeze (wOutline (nwArrays w))
+      let l = layout 32
+          PolygonParams nd ns = polygon l
+          fromVerts = concat [ take 3 (drop (3 * (verticesPerBody l * i + 1 + d * ns + ns - 1)) verts) | i <- [0 .. n - 1], d <- [0 .. nd - 1] ]
+      (spaceName sp, hmax, generic, n > 1, take (3 * nd * n) outline == fromVerts) `shouldBe` (spaceName sp, hmax, generic, True, True)
+
   it "walks each direction of a body no larger than polygonStep in one geodesic step (1e-8), on plane, sphere, torus and trumpet" $
     forM_ [plane, sphere, torus, trumpet] $ \sp -> do
       w <- sceneWorld sp

@@ -297,8 +297,8 @@ writeMouse w k = writeArray (wMouse w) (ix k)
 -- | Outline vertex @d@ (the last step along direction @d@) of body @i@,
 -- from 'wOutline': the narrow phase reads a body's outline vertices
 -- together, and in 'wVerts' each sits on a cache line of its own among the
--- inner vertices (on the rectangle's settled pile of 3000 bodies the
--- collision phase took 8.5 ms rather than 9.1: bench/NOTES.md, session 17).
+-- inner vertices (read from here, the collision phase of the settled piles
+-- of 3000 bodies took 3 to 15 % less time: bench/NOTES.md, session 17).
 outlineVertex :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m -> m (V3 (Scalar m))
 {-# INLINE outlineVertex #-}
 outlineVertex l w i d = read3 (wOutline w) (fromIntegral (polyDirections (polygon l)) * i + d)
