@@ -41,6 +41,7 @@ import path from "node:path";
 import url from "node:url";
 import { launchBrowser, manifoldExe, chromiumPath } from "../test/browser/lib.mjs";
 import { serveWeb, loadPaused } from "./page.mjs";
+import { commandLine } from "./options.mjs";
 
 const ROOT = path.resolve(path.dirname(url.fileURLToPath(import.meta.url)), "..");
 const WEB = process.env.MANIFOLD_WEB ? path.resolve(process.env.MANIFOLD_WEB) : path.join(ROOT, "web");
@@ -49,33 +50,21 @@ const SIZES = [10, 100, 300, 1000, 3000];
 const VIEWPORT = { width: 800, height: 600 };
 
 // ---- arguments -------------------------------------------------------------------------
-const argv = process.argv.slice(2);
-const USAGE = "usage: node bench/browser.mjs [--scenes DIR] [--settle K] [--spaces A,B] [--sizes N,M] [--warmup W] [--steps S]\n" +
-  "                              [--rounds R] [--fps-spaces torus|all|none|A,B] [--fps-seconds T] [--out FILE.json]";
-const KNOWN = ["--scenes", "--settle", "--spaces", "--sizes", "--warmup", "--steps", "--rounds", "--fps-spaces", "--fps-seconds", "--out"];
-for (let i = 0; i < argv.length; i += 2) {
-  if (argv[i] === "--help" || argv[i] === "-h") { console.log(USAGE); process.exit(0); }
-  if (KNOWN.indexOf(argv[i]) < 0 || argv[i + 1] === undefined) { console.error(USAGE); process.exit(2); }
-}
-function arg(name, dflt) {
-  const i = argv.indexOf(name);
-  return i >= 0 ? argv[i + 1] : dflt;
-}
-function count(name, dflt, min) {
-  const x = Number(arg(name, String(dflt)));
-  if (!Number.isInteger(x) || x < min) { console.error(name + " must be a whole number ≥ " + min); process.exit(2); }
-  return x;
-}
+const { text: arg, count, positive } = commandLine({
+  usage: "node bench/browser.mjs [--scenes DIR] [--settle K] [--spaces A,B] [--sizes N,M] [--warmup W] [--steps S]\n" +
+    "                              [--rounds R] [--fps-spaces torus|all|none|A,B] [--fps-seconds T] [--out FILE.json]",
+  known: ["--scenes", "--settle", "--spaces", "--sizes", "--warmup", "--steps", "--rounds", "--fps-spaces", "--fps-seconds", "--out"],
+});
 const list = (s) => s.split(",").map((x) => x.trim()).filter((x) => x);
 const spaces = list(arg("--spaces", SPACES.join(",")));
 const sizes = list(arg("--sizes", SIZES.join(","))).map(Number);
 if (sizes.some((n) => !Number.isInteger(n) || n < 1)) { console.error("--sizes must be whole numbers"); process.exit(2); }
 const warmup = count("--warmup", 50, 0);
 // null: manifold bench's default (or, with --scenes, however DIR's scenes were written)
-const settle = arg("--settle", null) === null ? null : count("--settle", 0, 0);
+const settle = count("--settle", null, 0);
 const steps = count("--steps", 50, 1);
 const rounds = count("--rounds", 3, 1);
-const fpsSeconds = Number(arg("--fps-seconds", "3"));
+const fpsSeconds = positive("--fps-seconds", 3);
 const fpsArg = arg("--fps-spaces", "torus");
 const fpsSpaces = fpsArg === "none" ? [] : fpsArg === "all" ? spaces : list(fpsArg);
 const outFile = arg("--out", null);

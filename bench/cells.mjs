@@ -11,8 +11,8 @@
 // Usage: node bench/cells.mjs DIR [--steps W]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 
-const { dir, option } = commandLine("node bench/cells.mjs DIR [--steps W]");
-const steps = option("--steps", 1);
+const { dir, count } = commandLine("node bench/cells.mjs DIR [--steps W]", ["--steps"]);
+const steps = count("--steps", 1, 0);
 
 const hash = ([x, y, z]) => x * 73856093 + y * 19349663 + z * 83492791;
 const bucketOf = (buckets, c) => { const h = hash(c); return h - buckets * Math.floor(h / buckets); };

@@ -3,8 +3,8 @@
 // browser. Usage: node bench/node.mjs DIR [--warmup W] [--steps S]
 import { commandLine, worlds } from "./worlds.mjs";
 
-const { dir, option } = commandLine("node bench/node.mjs DIR [--warmup W] [--steps S]");
-const warmup = option("--warmup", 50), steps = option("--steps", 50);
+const { dir, count } = commandLine("node bench/node.mjs DIR [--warmup W] [--steps S]", ["--warmup", "--steps"]);
+const warmup = count("--warmup", 50, 0), steps = count("--steps", 50, 1);
 
 const results = [];
 for (const { scene, world } of worlds(dir)) {

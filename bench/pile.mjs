@@ -15,10 +15,10 @@
 // Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 
-const { dir, option } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]");
-const settle = option("--steps", 400), meanOver = option("--mean", 0), slopPerSize = option("--slop-per-size", 0);
-const iterations = option("--iterations", 0);
-if (!(Number.isInteger(iterations) && iterations >= 0)) { console.error("--iterations: must be a whole number (0: the scene's)"); process.exit(2); }
+const { dir, count, nonNegative } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]",
+  ["--steps", "--mean", "--slop-per-size", "--iterations"]);
+const settle = count("--steps", 400, 0), meanOver = count("--mean", 0, 0), slopPerSize = nonNegative("--slop-per-size", 0);
+const iterations = count("--iterations", 0, 0); // 0: the scene's
 
 for (const { scene, world } of worlds(dir)) {
   if (slopPerSize > 0) world.setParams({ slop: slopPerSize * scene.bodies[0].size });

@@ -17,31 +17,24 @@ import path from "node:path";
 import url from "node:url";
 import { launchBrowser } from "../test/browser/lib.mjs";
 import { serveWeb, loadPaused } from "./page.mjs";
+import { commandLine } from "./options.mjs";
 
 const ROOT = path.resolve(path.dirname(url.fileURLToPath(import.meta.url)), "..");
 const WEB = process.env.MANIFOLD_WEB ? path.resolve(process.env.MANIFOLD_WEB) : path.join(ROOT, "web");
-const USAGE = "usage: node bench/profile.mjs SCENE.json [--steps N] [--running T] [--interval US] [--top K] [--out FILE.cpuprofile]";
-
-const argv = process.argv.slice(2);
-const KNOWN = ["--steps", "--running", "--interval", "--top", "--out"];
-if (!argv[0] || argv[0].startsWith("--")) { console.error(USAGE); process.exit(2); }
-for (let i = 1; i < argv.length; i += 2) {
-  if (KNOWN.indexOf(argv[i]) < 0 || argv[i + 1] === undefined) { console.error(USAGE); process.exit(2); }
-}
-const arg = (name, dflt) => { const i = argv.indexOf(name); return i >= 0 ? argv[i + 1] : dflt; };
-function positive(name, dflt) {
-  const x = Number(arg(name, String(dflt)));
-  if (!(x > 0) || !isFinite(x)) { console.error(name + " must be a positive number"); process.exit(2); }
-  return x;
-}
-const sceneFile = argv[0];
+const line = commandLine({
+  usage: "node bench/profile.mjs SCENE.json [--steps N] [--running T] [--interval US] [--top K] [--out FILE.cpuprofile]",
+  positional: 1,
+  known: ["--steps", "--running", "--interval", "--top", "--out"],
+});
+const { positive } = line;
+const sceneFile = line.positional[0];
 if (!fs.existsSync(sceneFile)) { console.error(sceneFile + ": no such scene file"); process.exit(2); }
 const scene = JSON.parse(fs.readFileSync(sceneFile, "utf8"));
 const steps = Math.round(positive("--steps", 300));
-const running = arg("--running", null) === null ? null : positive("--running", 1);
+const running = positive("--running", null);
 const interval = Math.round(positive("--interval", 100));
 const top = Math.round(positive("--top", 25));
-const outFile = arg("--out", null);
+const outFile = line.text("--out", null);
 
 // Self time by function: the samples' time deltas summed over the nodes of
 // the same function (name, script, line), in ms.

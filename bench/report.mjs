@@ -14,14 +14,14 @@ import os from "node:os";
 import path from "node:path";
 import url from "node:url";
 import { launchBrowser } from "../test/browser/lib.mjs";
+import { commandLine } from "./options.mjs";
 
 const HERE = path.dirname(url.fileURLToPath(import.meta.url));
 const ROOT = path.resolve(HERE, "..");
-const argv = process.argv.slice(2);
-function arg(name, dflt) {
-  const i = argv.indexOf(name);
-  return i >= 0 ? argv[i + 1] : dflt;
-}
+const { text: arg } = commandLine({
+  usage: "node bench/report.mjs [--native FILE.json] [--browser FILE.json] [--node FILE.json] [--readme FILE.md] [--png FILE.png]",
+  known: ["--native", "--browser", "--node", "--readme", "--png"],
+});
 const files = {
   native: path.resolve(arg("--native", path.join(HERE, "results/native.json"))),
   browser: path.resolve(arg("--browser", path.join(HERE, "results/browser.json"))),

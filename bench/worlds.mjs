@@ -5,18 +5,17 @@ import fs from "node:fs";
 import path from "node:path";
 import vm from "node:vm";
 import { fileURLToPath } from "node:url";
+import { commandLine as parse } from "./options.mjs";
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "..");
 
 function load(file) { vm.runInThisContext(fs.readFileSync(file, "utf8"), { filename: file }); }
 
-// The script's arguments: the scene directory first (else the usage line and
-// exit 2), then `--name value` options read as numbers.
-export function commandLine(usage) {
-  const args = process.argv.slice(2);
-  if (!args[0]) { console.error("usage: " + usage); process.exit(2); }
-  const option = (name, dflt) => { const k = args.indexOf(name); return k >= 0 ? Number(args[k + 1]) : dflt; };
-  return { dir: args[0], option };
+// The script's arguments: the scene directory first, then the options of
+// the list `known` (see options.mjs): { dir, count, positive, nonNegative }.
+export function commandLine(usage, known) {
+  const line = parse({ usage, positional: 1, known });
+  return { dir: line.positional[0], count: line.count, positive: line.positive, nonNegative: line.nonNegative };
 }
 
 // Every scene DIR/*.json in name order, loaded into a fresh World of the

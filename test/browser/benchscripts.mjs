@@ -50,6 +50,30 @@ export async function testBenchScripts(check) {
         text.slice(0, text.indexOf("<!-- results:begin -->")) === fs.readFileSync(path.join(ROOT, "bench/README.md"), "utf8").slice(0, text.indexOf("<!-- results:begin -->")),
       fs.statSync(png).size + " bytes of PNG");
 
+    // a mistyped option stops the script (exit 2, the usage on standard
+    // error) instead of running with the default: report.mjs with a wrong
+    // name would rewrite bench/README.md from the checked-in results
+    const refused = (args) => {
+      try { run("node", args); return "ran"; } catch (e) { return e.status === 2 && /usage: node bench\//.test(e.stderr) ? "refused" : "exit " + e.status; }
+    };
+    const badLines = [
+      ["bench/report.mjs", "--readme", readme, "--nativ", native],
+      ["bench/report.mjs", "--readme"],
+      ["bench/browser.mjs", "--scenes", scenes, "--round", "1"],
+      ["bench/node.mjs", scenes, "--stpes", "5"],
+      ["bench/node.mjs"],
+      ["bench/pile.mjs", scenes, "--steps", "5", "--mean"],
+      ["bench/cells.mjs", "--steps", "1"],
+      ["bench/profile.mjs", path.join(scenes, "torus-30.json"), "--setps", "5"],
+    ];
+    const outcomes = badLines.map(refused);
+    const readmeAfter = fs.readFileSync(readme, "utf8");
+    const badNumber = (() => { try { run("node", ["bench/pile.mjs", scenes, "--steps", "ten"]); return "ran"; } catch (e) { return e.status + ": " + e.stderr.trim(); } })();
+    const help = run("node", ["bench/report.mjs", "--help"]);
+    check("the bench scripts refuse unknown options, missing values and arguments with their usage (exit 2), and a number that is none; --help prints the usage",
+      outcomes.every((o) => o === "refused") && readmeAfter === text && /^2: --steps must be a whole number/.test(badNumber) && /^usage: node bench\/report\.mjs/.test(help),
+      JSON.stringify({ outcomes, badNumber, help: help.trim() }));
+
     const profile = run("node", ["bench/profile.mjs", path.join(scenes, "torus-30.json"), "--steps", "100", "--top", "12"]);
     check("bench/profile.mjs profiles the page stepping a scene: the engine's phases by self time",
       /^torus, 30 bodies, 100 steps/.test(profile) && ["pairContacts", "solveSweep", "stepPolygonise"].every((f) => profile.indexOf(f) >= 0),
