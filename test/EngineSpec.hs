@@ -22,7 +22,7 @@ import Test.Hspec
 
 import Manifold
 import Manifold.Bench (benchScene, benchSpaces)
-import Manifold.Compile (compiledFiles)
+import Manifold.Compile (compiledFiles, listCompiledModules)
 import Manifold.Engine
 import Manifold.Scene
 import Manifold.Stage.Kernels (spaceScript)
@@ -128,6 +128,10 @@ compiledSpec = describe "Engine: the compiled native step" $ do
     forM_ compiledFiles $ \(rel, text) -> do
       onDisk <- readFile ("Lib" </> rel)
       (rel, onDisk == text) `shouldBe` (rel, True)
+
+  it "is listed in Manifold.cabal as `manifold compile` lists it" $ do
+    cabal <- readFile "Manifold.cabal"
+    listCompiledModules cabal `shouldBe` Right cabal
 
   it "serves every catalogue space, and not a space of one's own under a catalogue name" $ do
     forM_ catalogue $ \sp -> do
