@@ -21,13 +21,24 @@ const PIXEL_TOL = 1.5;      // project(pick(x, y)) vs the pixel's centre
 const BG_TOL = 4;           // per channel, background pixel vs the expected gradient
 
 // For working on one thing: --spaces a,b runs only those spaces' tests, --parts
-// p,q only those other parts (interaction, bodies, errors, file, hidpi, compare, benchmarks); either alone skips the rest.
+// p,q only those other parts; either alone skips the rest. A mistyped option
+// or part is refused (exit 2) rather than run everything or nothing, and a
+// space the page does not have fails a check.
+const PARTS = ["interaction", "bodies", "errors", "file", "hidpi", "compare", "benchmarks"];
+const USAGE = "usage: node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
+const argv = process.argv.slice(2);
+for (let i = 0; i < argv.length; i += 2) {
+  if (argv[i] === "--help" || argv[i] === "-h") { console.log(USAGE); process.exit(0); }
+  if (["--spaces", "--parts"].indexOf(argv[i]) < 0 || !argv[i + 1] || argv[i + 1].startsWith("--")) { console.error(USAGE); process.exit(2); }
+}
 function listArg(name) {
-  const i = process.argv.indexOf(name);
-  return i >= 0 ? (process.argv[i + 1] || "").split(",").filter(Boolean) : null;
+  const i = argv.indexOf(name);
+  return i >= 0 ? argv[i + 1].split(",").filter(Boolean) : null;
 }
 const onlySpaces = listArg("--spaces");
 const onlyParts = listArg("--parts");
+const unknownParts = (onlyParts || []).filter(function (p) { return PARTS.indexOf(p) < 0; });
+if (unknownParts.length) { console.error("no such part: " + unknownParts.join(", ") + "\n" + USAGE); process.exit(2); }
 const spaceWanted = function (n) { return onlySpaces ? onlySpaces.indexOf(n) >= 0 : !onlyParts; };
 const partWanted = function (n) { return onlyParts ? onlyParts.indexOf(n) >= 0 : !onlySpaces; };
 
@@ -567,6 +578,8 @@ async function main() {
       await page.close();
       return n;
     })();
+    const missing = (onlySpaces || []).filter(function (n) { return names.indexOf(n) < 0; });
+    if (missing.length) check("--spaces names spaces of the page", false, "no such space: " + missing.join(", "));
     for (const name of names) {
       if (!spaceWanted(name)) continue;
       const t = Date.now();
