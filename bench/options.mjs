@@ -10,8 +10,9 @@ function fail(message) {
 }
 
 // usage: the usage line; positional: how many arguments come before the
-// options; known: the option names. Returns { positional: [...], text(name,
-// dflt), count(name, dflt, min), positive(name, dflt), has(name) }.
+// options; known: the option names. Returns the positional arguments and
+// readers of an option's value (each given the default for when it is
+// absent): text, count (a whole number from min), positive, nonNegative.
 export function commandLine({ usage, positional = 0, known, argv = process.argv.slice(2) }) {
   const line = "usage: " + usage;
   if (argv.includes("--help") || argv.includes("-h")) { console.log(line); process.exit(0); }
@@ -33,7 +34,6 @@ export function commandLine({ usage, positional = 0, known, argv = process.argv.
   };
   return {
     positional: args,
-    has: (name) => values.has(name),
     text,
     // a whole number, at least min
     count: (name, dflt, min) => number(name, dflt, (x) => Number.isInteger(x) && x >= min, "a whole number ≥ " + min),
