@@ -1,9 +1,10 @@
-// The command lines of the bench scripts: positional arguments first, then
-// `--name value` options from the script's own list. `--help` (or `-h`) prints
-// the usage and exits; an unknown option, an option without its value or a
-// missing positional argument prints the usage to standard error and exits
-// with 2, so that a mistyped option is never silently ignored (the script
-// would run with its default, and report.mjs would rewrite bench/README.md).
+// The command lines of the bench scripts and of the browser test runner:
+// positional arguments first, then `--name value` options from the script's
+// own list. `--help` (or `-h`) prints the usage and exits; an unknown
+// option, an option without its value or a missing positional argument
+// prints the usage to standard error and exits with 2, so that a mistyped
+// option is never silently ignored (the script would run with its default,
+// and report.mjs would rewrite bench/README.md).
 function fail(message) {
   console.error(message);
   process.exit(2);

@@ -13,6 +13,7 @@ import {
 import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
+import { commandLine } from "../../bench/options.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
 const PICKS = 20;           // surface pixels picked per space
@@ -25,20 +26,16 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
 const PARTS = ["interaction", "bodies", "errors", "file", "hidpi", "compare", "benchmarks"];
-const USAGE = "usage: node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
-const argv = process.argv.slice(2);
-for (let i = 0; i < argv.length; i += 2) {
-  if (argv[i] === "--help" || argv[i] === "-h") { console.log(USAGE); process.exit(0); }
-  if (["--spaces", "--parts"].indexOf(argv[i]) < 0 || !argv[i + 1] || argv[i + 1].startsWith("--")) { console.error(USAGE); process.exit(2); }
-}
+const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
+const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
-  const i = argv.indexOf(name);
-  return i >= 0 ? argv[i + 1].split(",").filter(Boolean) : null;
+  const value = text(name, null);
+  return value === null ? null : value.split(",").filter(Boolean);
 }
 const onlySpaces = listArg("--spaces");
 const onlyParts = listArg("--parts");
 const unknownParts = (onlyParts || []).filter(function (p) { return PARTS.indexOf(p) < 0; });
-if (unknownParts.length) { console.error("no such part: " + unknownParts.join(", ") + "\n" + USAGE); process.exit(2); }
+if (unknownParts.length) { console.error("no such part: " + unknownParts.join(", ") + "\nusage: " + USAGE); process.exit(2); }
 const spaceWanted = function (n) { return onlySpaces ? onlySpaces.indexOf(n) >= 0 : !onlyParts; };
 const partWanted = function (n) { return onlyParts ? onlyParts.indexOf(n) >= 0 : !onlySpaces; };
 
