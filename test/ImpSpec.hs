@@ -185,7 +185,7 @@ runNativeOn prog inst = do
 
 -- | A staged procedure over named arrays.
 staged :: String -> [String] -> ([StagedArray] -> Staged ()) -> String
-staged name arrays prog = stageProcedure (JsProcedure name arrays []) (\as _ -> prog as)
+staged name arrays prog = stageProcedure (Procedure name arrays []) (\as _ -> prog as)
 
 -- | Rows of three: reads two of a row, then under a condition one of them
 -- again and one beyond the row, and writes the third.
@@ -244,7 +244,7 @@ spec = do
 
   it "checks a Haskell row's indices once per block: what the block reads anyway covers its conditions" $ do
     let printed = lines (concat (stageProceduresFor Haskell
-          [(JsProcedure "rows" ["meta", "a"] [], \as _ -> case as of
+          [(Procedure "rows" ["meta", "a"] [], \as _ -> case as of
               [m, a] -> rowsOfThree m a
               _ -> error "arity")]))
         checks = [ words ln | ln <- printed, "chkI" `elem` words ln ]
@@ -255,7 +255,7 @@ spec = do
 
   it "prints a Haskell procedure's locals as slots from 0 and its subroutine's from 32 of one array, checked once on entry" $ do
     let haskell = lines (concat (stageProceduresFor Haskell
-          [(JsProcedure "outer" ["a"] [], \as _ -> case as of
+          [(Procedure "outer" ["a"] [], \as _ -> case as of
               [a] -> do
                 r <- newRef 1
                 s <- newRef 2
@@ -264,7 +264,7 @@ spec = do
                   readRef q >>= writeArray a 1)
                 (+) <$> readRef r <*> readRef s >>= writeArray a 0
               _ -> error "arity")]))
-        js = concat (stageProceduresFor JavaScript [(JsProcedure "outer" ["a"] [], \as _ -> case as of
+        js = concat (stageProceduresFor JavaScript [(Procedure "outer" ["a"] [], \as _ -> case as of
               [a] -> newRef 1 >>= readRef >>= writeArray a 0
               _ -> error "arity")])
         trimmed = map (unwords . words) haskell
@@ -274,10 +274,10 @@ spec = do
     js `shouldSatisfy` (not . ("locals" `isInfixOf`))
 
   it "refuses a Haskell procedure with more locals than its slots, and a subroutine called from a subroutine" $ do
-    let tooMany = stageProceduresFor Haskell [(JsProcedure "many" ["a"] [], \as _ -> case as of
+    let tooMany = stageProceduresFor Haskell [(Procedure "many" ["a"] [], \as _ -> case as of
           [a] -> mapM_ (\k -> newRef (fromIntegral k) >>= readRef >>= writeArray a 0) [1 .. 33 :: Int]
           _ -> error "arity")]
-        nested = stageProceduresFor Haskell [(JsProcedure "nest" ["a"] [], \as _ -> case as of
+        nested = stageProceduresFor Haskell [(Procedure "nest" ["a"] [], \as _ -> case as of
           [a] -> subroutine "one" [] (\_ -> subroutine "two" [] (\_ -> writeArray a 0 1))
           _ -> error "arity")]
     evaluate (length (concat tooMany)) `shouldThrow` errorCall "the compiled step's locals: a procedure needs more than 32 (Manifold.Stage.Imp.localSlots)"

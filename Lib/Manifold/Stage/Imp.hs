@@ -9,12 +9,13 @@
 --
 -- * 'Native': GHC runs the program directly in 'IO' over unboxed mutable
 --   vectors of 'Double', so the native engine is ordinary compiled Haskell;
--- * 'Staged': the program prints itself as a JavaScript function over
---   @Float64Array@s; its scalars are staged expressions ('E'), so the geometry
---   the program calls (fields, AD gradients, projections) is printed inline,
---   with shared subexpressions bound once. The same program also prints as
---   Haskell ('stageProceduresFor'): the compiled native step of
---   "Manifold.Compiled.Runtime".
+-- * 'Staged': the program builds its code as a tree ("Manifold.Stage.Code");
+--   its scalars are staged expressions ('E'), so the geometry the program
+--   calls (fields, AD gradients, projections) is inlined, with shared
+--   subexpressions bound once. The tree is made for a 'Target': printed as
+--   the page's JavaScript functions over @Float64Array@s, or, for Haskell,
+--   spliced as the compiled native step ("Manifold.Stage.Splice") and
+--   printed for reading.
 module Manifold.Stage.Imp
   ( Imp (..)
   , whenPositive
@@ -28,21 +29,24 @@ module Manifold.Stage.Imp
   , Staged
   , StagedArray (..)
   , IxE
-  , JsProcedure (..)
+  , Procedure (..)
+  , stageFunctions
   , stageProcedure
   , stageProcedures
   , stageProceduresFor
   , localSlots
+  , localsArray
   ) where
 
 import Control.Monad.State.Strict
 import qualified Data.IntMap.Strict as IM
 import qualified Data.Map.Strict as M
-import Data.List (intercalate, sortOn)
+import Data.List (sortOn)
 import qualified Data.Vector.Unboxed.Mutable as MV
 import GHC.Float (castWord64ToDouble)
 
 import Manifold.Field
+import Manifold.Stage.Code
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
 
@@ -152,28 +156,29 @@ instance Num IxE where
   fromInteger = IxE . fromInteger
 
 newtype StagedArray = StagedArray String
-newtype StagedRef = StagedRef String
+
+-- | A mutable local: a slot of the locals array (Haskell) or a variable.
+data StagedRef = SlotRef Int | VarRef String
 
 data StageState = StageState
   { ssNext :: !Int -- ^ next fresh name
   , ssScope :: !Scope -- ^ nodes bound where the next statement goes
-  , ssLines :: [String] -- ^ the current block, reversed
-  , ssDepth :: !Int
+  , ssBlock :: [Stmt Int] -- ^ the current block, reversed
   , ssArrays :: [String] -- ^ the procedure's array parameters
-  , ssSubroutines :: M.Map String String -- ^ subroutines printed so far, by name
+  , ssSubroutines :: M.Map String (Function Check) -- ^ subroutines staged so far, by name
   , ssOrder :: [String] -- ^ their names, latest first
   , ssTarget :: !Target -- ^ JavaScript, or Haskell for the compiled native step
   , ssIntVars :: M.Map String String -- ^ Haskell: a loop's number and its 'Int' counter
-  , ssChecks :: M.Map (String, String) [(Int, Bool)]
+  , ssChecks :: M.Map (String, LinearIndex) [(Int, Bool)]
     -- ^ Haskell: the index checks in force, by array and base index, and
     -- whether the current block made them (see 'arrayAccess')
-  , ssCheckRanges :: IM.IntMap (Int, Int) -- ^ each check's offsets, lowest and highest
+  , ssCheckRanges :: IM.IntMap Check -- ^ each check's offsets, lowest and highest
   , ssNextCheck :: !Int
   , ssNextLocal :: !Int -- ^ Haskell: the next slot of the locals array (see 'localSlots')
   , ssInSubroutine :: !Bool
   }
 
--- | Haskell: the printed step's mutable locals (the JavaScript @let@s) are
+-- | Haskell: the compiled step's mutable locals (the JavaScript @let@s) are
 -- slots of a scratch array of this many numbers, which each phase call
 -- allocates once ("Manifold.Compiled.Runtime"'s @newLocals@) and passes to
 -- every function it calls, as the last array. A local of its own (a
@@ -189,25 +194,18 @@ localSlots = 64
 subroutineLocals :: Int
 subroutineLocals = 32
 
--- | The array of locals as the printed Haskell names it.
+-- | The array of locals as the compiled step names it.
 localsArray :: String
 localsArray = "locals"
 
--- | Haskell: the check that the locals array holds a function's slots, the
--- function's first statement (none for a function without locals).
-localsCheck :: Int -> StageState -> [String]
-localsCheck first s
-  | ssTarget s /= Haskell || ssNextLocal s == first = []
-  | otherwise = ["  chkI " ++ localsArray ++ " 0 " ++ show first ++ " " ++ show (ssNextLocal s - 1)]
-
--- | The arrays a printed function takes: the procedure's, and in Haskell
+-- | The arrays a staged function takes: the procedure's, and in Haskell
 -- the locals array last.
 printedArrays :: Target -> [String] -> [String]
 printedArrays Haskell arrays = arrays ++ [localsArray]
 printedArrays _ arrays = arrays
 
 -- | Haskell: a fresh slot for a local, or an error once a function's slots
--- run out (a staging error, printed by @manifold compile@).
+-- run out (a staging error, raised while the compiled step is spliced).
 freshLocal :: Staged Int
 freshLocal = do
   s <- Staged get
@@ -223,38 +221,29 @@ freshLocal = do
 newtype Staged a = Staged (State StageState a)
   deriving (Functor, Applicative, Monad)
 
-unStaged :: Staged a -> State StageState a
-unStaged (Staged m) = m
-
-emitLine :: String -> Staged ()
-emitLine l = Staged $ modify' $ \s -> s { ssLines = (replicate (2 * ssDepth s) ' ' ++ l) : ssLines s }
+emit :: Stmt Int -> Staged ()
+emit st = Staged $ modify' $ \s -> s { ssBlock = st : ssBlock s }
 
 isHaskell :: Staged Bool
 isHaskell = Staged (gets ((== Haskell) . ssTarget))
 
--- | A constant binding: @const n = e;@, or @let !n = e@ in a Haskell do block.
-bindLine :: String -> String -> Staged ()
-bindLine n rhs = do
-  hs <- isHaskell
-  emitLine (if hs then "let !" ++ n ++ " = " ++ rhs else "const " ++ n ++ " = " ++ rhs ++ ";")
-
--- | Print the bindings an expression needs and return it as an expression.
-expression :: E -> Staged String
+-- | Emit the bindings an expression needs and return it as a term.
+expression :: E -> Staged Term
 expression e = do
   s <- Staged get
   let Lowered bs [r] scope' next' = lower (ssTarget s) "t" (ssNext s) (ssScope s) [e]
   Staged (put s { ssNext = next', ssScope = scope' })
-  mapM_ (uncurry bindLine) bs
+  mapM_ (emit . uncurry Let) bs
   pure r
 
--- | Print the bindings several expressions need together (what they share is
+-- | Emit the bindings several expressions need together (what they share is
 -- bound once).
-expressions :: [E] -> Staged [String]
+expressions :: [E] -> Staged [Term]
 expressions es = do
   s <- Staged get
   let Lowered bs rs scope' next' = lower (ssTarget s) "t" (ssNext s) (ssScope s) es
   Staged (put s { ssNext = next', ssScope = scope' })
-  mapM_ (uncurry bindLine) bs
+  mapM_ (emit . uncurry Let) bs
   pure rs
 
 fresh :: String -> Staged String
@@ -269,21 +258,19 @@ bindAs prefix e = do
     Sym _ -> pure e
     _ -> do
       n <- fresh prefix
-      bindLine n rhs
+      emit (Let n rhs)
       Staged (modify' (\s -> s { ssScope = IM.insert (nodeId e) n (ssScope s) }))
       pure (sym n)
 
--- | A nested block: its bindings do not outlive it. (A Haskell block is a
--- do block: it ends with @pure ()@, so that it never ends with a @let@.)
-block :: Staged () -> Staged ()
+-- | A nested block: its bindings do not outlive it.
+block :: Staged () -> Staged [Stmt Int]
 block body = do
   outer <- Staged get
-  Staged (put outer { ssDepth = ssDepth outer + 1 })
-  Staged (modify' (\s -> s { ssChecks = M.map (map (\(c, _) -> (c, False))) (ssChecks s) }))
+  Staged (put outer { ssBlock = [], ssChecks = M.map (map (\(c, _) -> (c, False))) (ssChecks outer) })
   body
-  hs <- isHaskell
-  when hs (emitLine "pure ()")
-  Staged (modify' (\s -> s { ssScope = ssScope outer, ssDepth = ssDepth outer, ssChecks = ssChecks outer }))
+  inner <- Staged get
+  Staged (put inner { ssScope = ssScope outer, ssChecks = ssChecks outer, ssBlock = ssBlock outer })
+  pure (reverse (ssBlock inner))
 
 instance Imp Staged where
   type Scalar Staged = E
@@ -302,43 +289,25 @@ instance Imp Staged where
         -- number, as the staged program does
         let d = 'd' : drop 1 i
         Staged (modify' (\s -> s { ssIntVars = M.insert d i (ssIntVars s) }))
-        emitLine ("loopI " ++ lo' ++ " " ++ hi' ++ " $ \\" ++ i ++ " -> do")
-        block (emitLine ("let !" ++ d ++ " = fromIntegral " ++ i ++ " :: Double") >> body (IxE (sym d)))
+        b <- block (emit (Let d (TCounter i)) >> body (IxE (sym d)))
+        emit (For i lo' hi' b)
       else do
-        emitLine ("for (let " ++ i ++ " = " ++ lo' ++ "; " ++ i ++ " < " ++ hi' ++ "; " ++ i ++ "++) {")
-        block (body (IxE (sym i)))
-        emitLine "}"
+        b <- block (body (IxE (sym i)))
+        emit (For i lo' hi' b)
   ifPositive c t e = do
     c' <- expression c
-    hs <- isHaskell
-    if hs then ifHaskell c' else ifJavaScript c'
-    where
-     ifHaskell c' = do
-      emitLine ("if " ++ c' ++ " > 0 then do")
-      block t
-      emitLine "else do"
-      block e
-     ifJavaScript c' = do
-      emitLine ("if (" ++ c' ++ " > 0) {")
-      block t
-      (_, elseLines) <- captureLines (block e)
-      if null elseLines
-        then emitLine "}"
-        else do
-          emitLine "} else {"
-          Staged (modify' (\s -> s { ssLines = elseLines ++ ssLines s }))
-          emitLine "}"
+    t' <- block t
+    e' <- block e
+    emit (If c' t' e')
   readArray (StagedArray a) (IxE i) = do
-    hs <- isHaskell
-    i' <- if hs then arrayAccess a i else expression i
+    i' <- index a i
     t <- fresh "t"
-    emitLine (if hs then t ++ " <- rdU " ++ a ++ " " ++ i' else "const " ++ t ++ " = " ++ a ++ "[" ++ i' ++ "];")
+    emit (Load t a i')
     pure (sym t)
   writeArray (StagedArray a) (IxE i) x = do
-    hs <- isHaskell
-    i' <- if hs then arrayAccess a i else expression i
+    i' <- index a i
     x' <- expression x
-    emitLine (if hs then "wrU " ++ a ++ " " ++ i' ++ " " ++ x' else a ++ "[" ++ i' ++ "] = " ++ x' ++ ";")
+    emit (Store a i' x')
   share = bindAs "s"
   shareAll xs = do
     _ <- expressions (foldr (:) [] xs)
@@ -349,21 +318,23 @@ instance Imp Staged where
     if hs
       then do
         k <- freshLocal
-        emitLine ("wrU " ++ localsArray ++ " " ++ show k ++ " " ++ x')
-        pure (StagedRef (show k))
+        emit (Store localsArray (IntIndex [] k) x')
+        pure (SlotRef k)
       else do
         v <- fresh "v"
-        emitLine ("let " ++ v ++ " = " ++ x' ++ ";")
-        pure (StagedRef v)
-  readRef (StagedRef v) = do
+        emit (Declare v x')
+        pure (VarRef v)
+  readRef r = do
     t <- fresh "t"
-    hs <- isHaskell
-    emitLine (if hs then t ++ " <- rdU " ++ localsArray ++ " " ++ v else "const " ++ t ++ " = " ++ v ++ ";")
+    emit $ case r of
+      SlotRef k -> Load t localsArray (IntIndex [] k)
+      VarRef v -> Let t (TVar v)
     pure (sym t)
-  writeRef (StagedRef v) x = do
+  writeRef r x = do
     x' <- expression x
-    hs <- isHaskell
-    emitLine (if hs then "wrU " ++ localsArray ++ " " ++ v ++ " " ++ x' else v ++ " = " ++ x' ++ ";")
+    emit $ case r of
+      SlotRef k -> Store localsArray (IntIndex [] k) x'
+      VarRef v -> Assign v x'
   toScalar (IxE e) = e
   toIndex = IxE
   subroutine name args body = do
@@ -373,21 +344,35 @@ instance Imp Staged where
       error ("subroutine " ++ name ++ " called from a subroutine: their locals would share slots")
     let params = ["a" ++ show k | k <- [0 .. length args - 1]]
         Staged m = body (map sym params)
-        inner = execState (m >> unStaged closeFunction) st
-          { ssNext = 0, ssScope = emptyScope, ssLines = [], ssDepth = 1, ssChecks = M.empty
+        inner = execState m st
+          { ssNext = 0, ssScope = emptyScope, ssBlock = [], ssChecks = M.empty
           , ssNextLocal = subroutineLocals, ssInSubroutine = True }
-        text = unlines (functionHead (ssTarget st) name (ssArrays st) params
-                        : localsCheck subroutineLocals inner
-                        ++ map (fillChecks inner) (reverse (ssLines inner)) ++ functionEnd (ssTarget st))
+        fn = finishFunction inner name (ssArrays st) params subroutineLocals
     case M.lookup name (ssSubroutines inner) of
-      Just old | old /= text -> error ("subroutine " ++ name ++ ": two different bodies under one name")
+      Just old | old /= fn -> error ("subroutine " ++ name ++ ": two different bodies under one name")
       _ -> pure ()
     Staged $ put st
-      { ssSubroutines = M.insert name text (ssSubroutines inner)
+      { ssSubroutines = M.insert name fn (ssSubroutines inner)
       , ssOrder = if M.member name (ssSubroutines inner) then ssOrder inner else name : ssOrder inner }
-    emitLine $ case ssTarget st of
-      Haskell -> unwords (name : ssArrays st ++ args')
-      _ -> name ++ "(" ++ intercalate ", " (ssArrays st ++ args') ++ ");"
+    emit (Call name (ssArrays st) args')
+
+-- | The staged function: the statements of its state, their row checks
+-- completed, after (in Haskell) the check that the locals array holds the
+-- function's slots, numbered from @first@.
+finishFunction :: StageState -> String -> [String] -> [String] -> Int -> Function Check
+finishFunction s name arrays params first = Function name arrays params (localsCheck ++ body)
+  where
+    body = map (fmap (ssCheckRanges s IM.!)) (reverse (ssBlock s))
+    localsCheck
+      | ssTarget s /= Haskell || ssNextLocal s == first = []
+      | otherwise = [RowCheck localsArray [] (first, ssNextLocal s - 1)]
+
+-- | An array index: a number in JavaScript, checked 'Int' arithmetic in
+-- Haskell ('arrayAccess').
+index :: String -> E -> Staged ArrayIndex
+index a i = do
+  hs <- isHaskell
+  if hs then arrayAccess a i else NumberIndex <$> expression i
 
 -- | Sums and products of whole numbers, loop counters and stored whole
 -- numbers: an index computed exactly in 'Int' arithmetic.
@@ -400,10 +385,10 @@ wholeIndex i = case nodeById i of
   _ -> False
   where isWhole v = v == fromIntegral (truncate v :: Int) && abs v < 2 ^ (52 :: Int)
 
--- | Haskell: an array index, checked. The printed step reads a row of an
+-- | Haskell: an array index, checked. The compiled step reads a row of an
 -- array (a contact's thirty numbers, a body's three coordinates) at one
 -- base index plus constant offsets; the first access to a row in a block
--- prints one check (@chkI array base lowest highest@) that covers every
+-- makes one check (@chkI array base lowest highest@) that covers every
 -- offset the block later reads or writes at that base, and the accesses
 -- themselves go unchecked. A check per access (the vector library's)
 -- made the solver phase half as slow again. An access inside a nested
@@ -411,18 +396,18 @@ wholeIndex i = case nodeById i of
 -- check only within the offsets that block reads anyway; beyond them it gets
 -- its own check: one made before the condition must not fail for an access
 -- the condition would skip.
--- The base is printed from names that are bound once, so the same text is
--- the same number throughout the block. An index of sums and products of
+-- The base is made of names that are bound once, so the same base is the
+-- same number throughout the block. An index of sums and products of
 -- whole numbers, loop counters and stored whole numbers is 'Int' arithmetic
 -- (exact, and no conversion at every access); any other is computed as a
--- number and truncated. (JavaScript prints the index expression as it is.)
-arrayAccess :: String -> E -> Staged String
+-- number and truncated.
+arrayAccess :: String -> E -> Staged ArrayIndex
 arrayAccess arr e = do
   counters <- Staged (gets ssIntVars)
   (base, offset) <-
     if wholeIndex (nodeId e)
-      then let (terms, k) = linearIndex (nodeId e) in pure (printTerms counters terms, k)
-      else (\d -> ("(truncate " ++ d ++ ")", 0)) <$> expression e
+      then let (terms, k) = linearIndex (nodeId e) in pure (orderTerms counters terms, k)
+      else (\d -> ([(ITrunc d, 1)], 0)) <$> expression e
   let key = (arr, base)
   checks <- Staged (gets ssChecks)
   ranges <- Staged (gets ssCheckRanges)
@@ -438,10 +423,8 @@ arrayAccess arr e = do
         , st { ssNextCheck = ssNextCheck st + 1
              , ssChecks = M.insertWith (++) key [(ssNextCheck st, True)] (ssChecks st)
              , ssCheckRanges = IM.insert (ssNextCheck st) (offset, offset) (ssCheckRanges st) } )
-      emitLine ("chkI " ++ arr ++ " " ++ base ++ " " ++ checkPlaceholder c)
-  pure (if offset == 0 then base else if base == "0" then intLiteral offset else "(" ++ base ++ " + " ++ intLiteral offset ++ ")")
-  where
-    intLiteral k = if k < 0 then "(" ++ show k ++ ")" else show k
+      emit (RowCheck arr base c)
+  pure (IntIndex base offset)
 
 -- | A whole-number index as a sum of terms (a node that is not a sum,
 -- difference or multiple, with its whole coefficient) and a constant, so
@@ -462,61 +445,28 @@ linearIndex i = case nodeById i of
     plus (ta, ka) (tb, kb) = (M.filter (/= 0) (M.unionWith (+) ta tb), ka + kb)
     scale c (t, k) = (M.filter (/= 0) (M.map (c *) t), c * k)
 
--- | The terms of a 'linearIndex' as 'Int' arithmetic ("0" for none), in
--- the order of their printed text: node ids depend on what else the global
--- table holds, and the printed step must not.
-printTerms :: M.Map String String -> M.Map Int Int -> String
-printTerms counters terms = case sortOn fst [ (intExpression counters node, c) | (node, c) <- M.toList terms ] of
-  [] -> "0"
-  [t] -> term t
-  ts -> "(" ++ intercalate " + " (map term ts) ++ ")"
-  where
-    term (atom, 1) = atom
-    term (atom, c) = "(" ++ (if c < 0 then "(" ++ show c ++ ")" else show c) ++ " * " ++ atom ++ ")"
-
-checkPlaceholder :: Int -> String
-checkPlaceholder c = "@check" ++ show c ++ "@"
-
--- | Replace the check placeholders of a printed line by their offsets.
-fillChecks :: StageState -> String -> String
-fillChecks s = go
-  where
-    go ('@' : 'c' : 'h' : 'e' : 'c' : 'k' : rest)
-      | (digits, '@' : rest') <- span (`elem` ['0' .. '9']) rest
-      , Just (lo, hi) <- IM.lookup (read digits) (ssCheckRanges s)
-      = show' lo ++ " " ++ show' hi ++ go rest'
-    go (ch : rest) = ch : go rest
-    go [] = []
-    show' k = if k < 0 then "(" ++ show k ++ ")" else show k
+-- | The terms of a 'linearIndex' as 'Int' arithmetic, in the order of
+-- their printed text: node ids depend on what else the global table
+-- holds, and the compiled step must not.
+orderTerms :: M.Map String String -> M.Map Int Int -> LinearIndex
+orderTerms counters terms = sortOn (renderIntTerm . fst) [ (intTerm counters node, c) | (node, c) <- M.toList terms ]
 
 -- | A whole-number expression (a node) as 'Int' arithmetic: loop numbers by
 -- their counters, other names (stored whole numbers) truncated.
-intExpression :: M.Map String String -> Int -> String
-intExpression counters = go
+intTerm :: M.Map String String -> Int -> IntTerm
+intTerm counters = go
   where
     go i = case nodeById i of
-      Lit w -> let v = truncate (castWord64ToDouble w) :: Int in if v < 0 then "(" ++ show v ++ ")" else show v
-      Sym n -> maybe ("(truncate " ++ n ++ ")") id (M.lookup n counters)
-      Bin Add a b -> "(" ++ go a ++ " + " ++ go b ++ ")"
-      Bin Sub a b -> "(" ++ go a ++ " - " ++ go b ++ ")"
-      Bin Mul a b -> "(" ++ go a ++ " * " ++ go b ++ ")"
-      Un Neg a -> "(negate " ++ go a ++ ")"
-      n -> error ("intExpression: not whole-number arithmetic: " ++ show n)
+      Lit w -> ILit (truncate (castWord64ToDouble w))
+      Sym n -> maybe (ITrunc (TVar n)) ICounter (M.lookup n counters)
+      Bin Add a b -> IAdd (go a) (go b)
+      Bin Sub a b -> ISub (go a) (go b)
+      Bin Mul a b -> IMul (go a) (go b)
+      Un Neg a -> INeg (go a)
+      n -> error ("intTerm: not whole-number arithmetic: " ++ show n)
 
--- | Run a block on the side and return the lines it printed (in order of
--- emission, reversed as the state keeps them), leaving the state's lines as
--- they were.
-captureLines :: Staged a -> Staged (a, [String])
-captureLines m = do
-  saved <- Staged (gets ssLines)
-  Staged (modify' (\s -> s { ssLines = [] }))
-  a <- m
-  ls <- Staged (gets ssLines)
-  Staged (modify' (\s -> s { ssLines = saved }))
-  pure (a, ls)
-
--- | A procedure to print: its name, its array and scalar parameters.
-data JsProcedure = JsProcedure
+-- | A procedure to stage: its name, its array and scalar parameters.
+data Procedure = Procedure
   { procName :: String
   , procArrays :: [String]
   , procScalars :: [String]
@@ -524,59 +474,36 @@ data JsProcedure = JsProcedure
 
 -- | Print a procedure as a JavaScript function (returning nothing; results go
 -- into its arrays), followed by the subroutines it calls.
-stageProcedure :: JsProcedure -> ([StagedArray] -> [E] -> Staged ()) -> String
+stageProcedure :: Procedure -> ([StagedArray] -> [E] -> Staged ()) -> String
 stageProcedure p body = concat (stageProcedures [(p, body)])
 
 -- | Print procedures as JavaScript functions, each subroutine they call once
--- (after the first procedure that calls it); a name that two of them print
+-- (after the first procedure that calls it); a name that two of them stage
 -- differently is an error.
-stageProcedures :: [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
+stageProcedures :: [(Procedure, [StagedArray] -> [E] -> Staged ())] -> [String]
 stageProcedures = stageProceduresFor JavaScript
 
--- | 'stageProcedures' in a target language: JavaScript functions, or
--- Haskell functions in 'IO' over the arrays (the definitions
--- "Manifold.Compiled.Runtime" provides: @loopI@, @chkI@, @rdU@, @wrU@,
--- @floorF@, and the array type @Arr@; each function takes the locals array
--- last, see 'localSlots').
-stageProceduresFor :: Target -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())] -> [String]
-stageProceduresFor target = go M.empty
+-- | 'stageFunctions' printed.
+stageProceduresFor :: Target -> [(Procedure, [StagedArray] -> [E] -> Staged ())] -> [String]
+stageProceduresFor target = map (printProcedure target) . stageFunctions target
+
+-- | Stage procedures for a target: each procedure's function, followed by
+-- the subroutines it calls that no earlier procedure called (each once; a
+-- name that two procedures stage differently is an error). In Haskell
+-- each function takes the locals array last (see 'localSlots').
+stageFunctions :: Target -> [(Procedure, [StagedArray] -> [E] -> Staged ())] -> [Function Check]
+stageFunctions target = go M.empty
   where
     go _ [] = []
     go seen ((p, body) : rest) =
       let Staged m = body (map StagedArray (procArrays p)) (map sym (procScalars p))
           arrays = printedArrays target (procArrays p)
-          s0 = StageState 0 emptyScope [] 1 arrays M.empty [] target M.empty M.empty IM.empty 0 0 False
-          s1 = execState (m >> unStaged closeFunction) s0
-          main = unlines (functionHead target (procName p) arrays (procScalars p)
-                          : localsCheck 0 s1 ++ map (fillChecks s1) (reverse (ssLines s1)) ++ functionEnd target)
-          fresh = [ (n, t) | n <- reverse (ssOrder s1), let t = ssSubroutines s1 M.! n
-                           , case M.lookup n seen of
-                               Nothing -> True
-                               Just t' | t' == t -> False
-                                       | otherwise -> error ("subroutine " ++ n ++ ": two different bodies under one name") ]
-      in main : map snd fresh ++ go (M.union seen (M.fromList fresh)) rest
-
--- | The first line(s) of a printed function over arrays and scalars.
-functionHead :: Target -> String -> [String] -> [String] -> String
-functionHead target name arrays scalars = case target of
-  Haskell ->
-    name ++ " :: " ++ concatMap (const "Arr -> ") arrays ++ concatMap (const "Double -> ") scalars ++ "IO ()\n"
-    -- strict parameters: each array is evaluated once, here, rather than
-    -- wherever the body reads it, and the numbers arrive unboxed
-    ++ unwords (name : map ('!' :) (arrays ++ scalars)) ++ " = do"
-  -- each number parameter is first made a number: V8 types a parameter as
-  -- anything, and where a select merged one with a computed number (the
-  -- pair's image shift against its negation, −0 for the identity) it boxed
-  -- the result, a heap number for every touching pair
-  _ -> intercalate "\n" (("function " ++ name ++ "(" ++ intercalate ", " (arrays ++ scalars) ++ ") {")
-                         : ["  " ++ s ++ " = +" ++ s ++ ";" | s <- scalars])
-
-functionEnd :: Target -> [String]
-functionEnd Haskell = []
-functionEnd _ = ["}"]
-
--- | A Haskell function body is a do block: end it with @pure ()@.
-closeFunction :: Staged ()
-closeFunction = do
-  hs <- isHaskell
-  when hs (emitLine "pure ()")
+          s0 = StageState 0 emptyScope [] arrays M.empty [] target M.empty M.empty IM.empty 0 0 False
+          s1 = execState m s0
+          main = finishFunction s1 (procName p) arrays (procScalars p) 0
+          new = [ (n, f) | n <- reverse (ssOrder s1), let f = ssSubroutines s1 M.! n
+                         , case M.lookup n seen of
+                             Nothing -> True
+                             Just f' | f' == f -> False
+                                     | otherwise -> error ("subroutine " ++ n ++ ": two different bodies under one name") ]
+      in main : map snd new ++ go (M.union seen (M.fromList new)) rest

@@ -1,7 +1,7 @@
--- | Printing staged expressions as JavaScript, GLSL and Haskell.
+-- | Printing staged code as JavaScript, GLSL and Haskell text.
 --
--- A set of root expressions is lowered to a block of bindings followed by the
--- roots: every node used more than once (within the block) is printed once as
+-- A set of root expressions is lowered ('lower') to a block of bindings
+-- followed by the roots, as terms of "Manifold.Stage.Code": every node used more than once (within the block) is printed once as
 -- a local binding, nodes already bound in an enclosing scope are referred to
 -- by name, and every node used once is inlined where it is used (in Haskell,
 -- so is an expensive node used only inside conditionals' arms: see
@@ -14,33 +14,40 @@ module Manifold.Stage.Print
   , emptyScope
   , Lowered (..)
   , lower
+  , renderTerm
   , renderLiteral
   , FnType (..)
   , printFunction
+  , printProcedure
+  , renderIntTerm
   , indent
   ) where
 
 import qualified Data.IntMap.Strict as IM
 import qualified Data.IntSet as IS
 import Data.List (foldl', intercalate)
-import GHC.Float (castWord64ToDouble)
 
+import Manifold.Stage.Code
 import Manifold.Stage.Expr
 
--- | Haskell is the native engine's compiled step ("Manifold.Compiled"):
--- expressions over 'Double' that GHC compiles to unboxed arithmetic.
+-- | Haskell is the native engine's compiled step ("Manifold.Compiled"),
+-- printed for reading (@manifold dump-step@; what is compiled is the same
+-- tree spliced by "Manifold.Stage.Splice"): expressions over 'Double' that
+-- GHC compiles to unboxed arithmetic.
 data Target = JavaScript | GLSL | Haskell
   deriving (Show, Eq)
 
 -- | Nodes already bound to names where the code being printed sits.
 type Scope = IM.IntMap String
 
+-- | 'lower' with the target's choices: which nodes are bound, in which order.
+
 emptyScope :: Scope
 emptyScope = IM.empty
 
 data Lowered = Lowered
-  { loweredBindings :: [(String, String)] -- ^ name and right-hand side, in order
-  , loweredRoots :: [String] -- ^ each root as an expression over the bindings
+  { loweredBindings :: [(String, Term)] -- ^ name and right-hand side, in order
+  , loweredRoots :: [Term] -- ^ each root as a term over the bindings
   , loweredScope :: Scope -- ^ the scope extended by the new bindings
   , loweredNext :: Int -- ^ the next fresh name's number
   }
@@ -66,12 +73,12 @@ lower target prefix next scope roots =
       bind (bs, sc, k) i
         | IS.member i bound =
             let name = prefix ++ show k
-            in ((name, render target sc i) : bs, IM.insert i name sc, k + 1)
+            in ((name, term sc i) : bs, IM.insert i name sc, k + 1)
         | otherwise = (bs, sc, k)
       -- 'order' lists every node after its operands' visits: reversed, it is
       -- a post-order (operands first).
       (revBindings, scope', next') = foldl' bind ([], scope, next) (reverse order)
-  in Lowered (reverse revBindings) (map (render target scope') rootIds) scope' next'
+  in Lowered (reverse revBindings) (map (term scope') rootIds) scope' next'
 
 -- | The shared nodes of a Haskell block that are expensive (a division, a
 -- root, a transcendental) and used only inside the arms of conditionals:
@@ -124,20 +131,34 @@ compound = \case
   Sym _ -> False
   _ -> True
 
--- | A node as an expression, its unbound operands inlined.
-render :: Target -> Scope -> Int -> String
-render target scope i = case IM.lookup i scope of
-  Just name -> name
+-- | A node as a term, its unbound operands inlined.
+term :: Scope -> Int -> Term
+term scope i = case IM.lookup i scope of
+  Just name -> TVar name
   Nothing -> case nodeById i of
-    Lit w -> renderLiteral target (castWord64ToDouble w)
-    Sym s -> s
-    Un op a -> unary target op (go a)
-    Bin op a b -> binary target op (go a) (go b)
-    Sel c t e -> case target of
-      JavaScript -> "(" ++ go c ++ " > 0 ? " ++ go t ++ " : " ++ go e ++ ")"
-      GLSL -> "(" ++ go c ++ " > 0.0 ? " ++ go t ++ " : " ++ go e ++ ")"
-      Haskell -> "(if " ++ go c ++ " > 0 then " ++ go t ++ " else " ++ go e ++ ")"
-  where go = render target scope
+    Lit w -> TLit w
+    Sym s -> TVar s
+    Un op a -> TUn op (go a)
+    Bin op a b -> TBin op (go a) (go b)
+    Sel c t e -> TSel (go c) (go t) (go e)
+  where go = term scope
+
+-- | A term as an expression of the target language.
+renderTerm :: Target -> Term -> String
+renderTerm target = go
+  where
+    go = \case
+      TLit w -> renderLiteral target (termLiteral w)
+      TVar s -> s
+      TUn op a -> unary target op (go a)
+      TBin op a b -> binary target op (go a) (go b)
+      TSel c t e -> case target of
+        JavaScript -> "(" ++ go c ++ " > 0 ? " ++ go t ++ " : " ++ go e ++ ")"
+        GLSL -> "(" ++ go c ++ " > 0.0 ? " ++ go t ++ " : " ++ go e ++ ")"
+        Haskell -> "(if " ++ go c ++ " > 0 then " ++ go t ++ " else " ++ go e ++ ")"
+      TCounter i -> case target of
+        Haskell -> "(fromIntegral " ++ i ++ " :: Double)"
+        _ -> i
 
 unary :: Target -> Op1 -> String -> String
 unary target op a = case (op, target) of
@@ -210,7 +231,8 @@ data FnType = FnType
 -- vector (GLSL) of them.
 printFunction :: Target -> String -> FnType -> [E] -> String
 printFunction target name ty roots =
-  let Lowered bs rs _ _ = lower target "t" 0 emptyScope roots
+  let Lowered bs ts _ _ = lower target "t" 0 emptyScope roots
+      rs = map (renderTerm target) ts
       result = case rs of
         [r] -> r
         _ -> case target of
@@ -222,11 +244,11 @@ printFunction target name ty roots =
       (name ++ " :: " ++ concatMap (const "Double -> ") (fnParams ty)
          ++ (case rs of [_] -> "Double"; _ -> "(" ++ intercalate ", " (map (const "Double") rs) ++ ")"))
       : (name ++ concatMap (" " ++) (fnParams ty) ++ " =")
-      : map (\(n, e) -> indent ("let !" ++ n ++ " = " ++ e ++ " in")) bs
+      : map (\(n, e) -> indent ("let !" ++ n ++ " = " ++ renderTerm target e ++ " in")) bs
       ++ [indent result]
     JavaScript -> unlines $
       ("function " ++ name ++ "(" ++ intercalate ", " (fnParams ty) ++ ") {")
-      : map (\(n, e) -> indent ("const " ++ n ++ " = " ++ e ++ ";")) bs
+      : map (\(n, e) -> indent ("const " ++ n ++ " = " ++ renderTerm target e ++ ";")) bs
       ++ [indent ("return " ++ result ++ ";"), "}"]
     GLSL ->
       let rty = case rs of
@@ -238,5 +260,95 @@ printFunction target name ty roots =
       in unlines $
         (rty ++ " " ++ name ++ "(" ++ params ++ ") {")
         : prologue
-        ++ map (\(n, e) -> indent ("float " ++ n ++ " = " ++ e ++ ";")) bs
+        ++ map (\(n, e) -> indent ("float " ++ n ++ " = " ++ renderTerm target e ++ ";")) bs
         ++ [indent ("return " ++ result ++ ";"), "}"]
+
+-- | A staged procedure or subroutine as a function of the target language:
+-- JavaScript over @Float64Array@s, or Haskell in 'IO' over the arrays (the
+-- definitions "Manifold.Compiled.Runtime" provides: @loopI@, @chkI@,
+-- @rdU@, @wrU@, @floorF@ and the array type @Arr@), as
+-- @manifold dump-step@ shows the compiled step.
+printProcedure :: Target -> Function Check -> String
+printProcedure target (Function name arrays scalars body) = unlines $ case target of
+  Haskell ->
+    ( name ++ " :: " ++ concatMap (const "Arr -> ") arrays ++ concatMap (const "Double -> ") scalars ++ "IO ()" )
+    -- strict parameters: each array is evaluated once, here, rather than
+    -- wherever the body reads it, and the numbers arrive unboxed
+    : (unwords (name : map ('!' :) (arrays ++ scalars)) ++ " = do")
+    : haskellBlock 1 body
+  _ ->
+    -- each number parameter is first made a number: V8 types a parameter as
+    -- anything, and where a select merged one with a computed number (the
+    -- pair's image shift against its negation, −0 for the identity) it
+    -- boxed the result, a heap number for every touching pair
+    ("function " ++ name ++ "(" ++ intercalate ", " (arrays ++ scalars) ++ ") {")
+    : ["  " ++ s ++ " = +" ++ s ++ ";" | s <- scalars]
+    ++ concatMap (scriptStmt 1) body ++ ["}"]
+  where
+    at d l = replicate (2 * d) ' ' ++ l
+    js = renderTerm JavaScript
+    hs = renderTerm Haskell
+    scriptStmt :: Int -> Stmt Check -> [String]
+    scriptStmt d = \case
+      Let n t -> [at d ("const " ++ n ++ " = " ++ js t ++ ";")]
+      Load n a i -> [at d ("const " ++ n ++ " = " ++ a ++ "[" ++ scriptIndex i ++ "];")]
+      Store a i t -> [at d (a ++ "[" ++ scriptIndex i ++ "] = " ++ js t ++ ";")]
+      Declare v t -> [at d ("let " ++ v ++ " = " ++ js t ++ ";")]
+      Assign v t -> [at d (v ++ " = " ++ js t ++ ";")]
+      For i lo hi b ->
+        at d ("for (let " ++ i ++ " = " ++ js lo ++ "; " ++ i ++ " < " ++ js hi ++ "; " ++ i ++ "++) {")
+        : concatMap (scriptStmt (d + 1)) b ++ [at d "}"]
+      If c t e ->
+        at d ("if (" ++ js c ++ " > 0) {") : concatMap (scriptStmt (d + 1)) t
+        ++ (if null e then [at d "}"] else at d "} else {" : concatMap (scriptStmt (d + 1)) e ++ [at d "}"])
+      Call f as ts -> [at d (f ++ "(" ++ intercalate ", " (as ++ map js ts) ++ ");")]
+      RowCheck {} -> error "printProcedure: a row check in JavaScript"
+    scriptIndex = \case
+      NumberIndex t -> js t
+      IntIndex {} -> error "printProcedure: an Int index in JavaScript"
+    -- a Haskell block is a do block: it ends with @pure ()@, so that it
+    -- never ends with a @let@
+    haskellBlock :: Int -> [Stmt Check] -> [String]
+    haskellBlock d b = concatMap (haskellStmt d) b ++ [at d "pure ()"]
+    haskellStmt :: Int -> Stmt Check -> [String]
+    haskellStmt d = \case
+      Let n (TCounter i) -> [at d ("let !" ++ n ++ " = fromIntegral " ++ i ++ " :: Double")]
+      Let n t -> [at d ("let !" ++ n ++ " = " ++ hs t)]
+      Load n a i -> [at d (n ++ " <- rdU " ++ a ++ " " ++ haskellIndex i)]
+      Store a i t -> [at d ("wrU " ++ a ++ " " ++ haskellIndex i ++ " " ++ hs t)]
+      For i lo hi b -> at d ("loopI " ++ hs lo ++ " " ++ hs hi ++ " $ \\" ++ i ++ " -> do") : haskellBlock (d + 1) b
+      If c t e -> at d ("if " ++ hs c ++ " > 0 then do") : haskellBlock (d + 1) t ++ at d "else do" : haskellBlock (d + 1) e
+      RowCheck a base (lo, hi) -> [at d (unwords ["chkI", a, renderLinear base, intLiteral lo, intLiteral hi])]
+      Call f as ts -> [at d (unwords (f : as ++ map hs ts))]
+      Declare {} -> error "printProcedure: a mutable local in Haskell (they are slots of the locals array)"
+      Assign {} -> error "printProcedure: a mutable local in Haskell (they are slots of the locals array)"
+    haskellIndex = \case
+      IntIndex base offset
+        | offset == 0 -> renderLinear base
+        | null base -> intLiteral offset
+        | otherwise -> "(" ++ renderLinear base ++ " + " ++ intLiteral offset ++ ")"
+      NumberIndex t -> "(truncate " ++ hs t ++ ")"
+
+-- | The base of a native index as 'Int' arithmetic (@0@ for none).
+renderLinear :: LinearIndex -> String
+renderLinear = \case
+  [] -> "0"
+  [t] -> linearTerm t
+  ts -> "(" ++ intercalate " + " (map linearTerm ts) ++ ")"
+  where
+    linearTerm (atom, 1) = renderIntTerm atom
+    linearTerm (atom, c) = "(" ++ intLiteral c ++ " * " ++ renderIntTerm atom ++ ")"
+
+-- | 'Int' arithmetic as Haskell.
+renderIntTerm :: IntTerm -> String
+renderIntTerm = \case
+  ILit v -> intLiteral v
+  ICounter i -> i
+  ITrunc t -> "(truncate " ++ renderTerm Haskell t ++ ")"
+  IAdd a b -> "(" ++ renderIntTerm a ++ " + " ++ renderIntTerm b ++ ")"
+  ISub a b -> "(" ++ renderIntTerm a ++ " - " ++ renderIntTerm b ++ ")"
+  IMul a b -> "(" ++ renderIntTerm a ++ " * " ++ renderIntTerm b ++ ")"
+  INeg a -> "(negate " ++ renderIntTerm a ++ ")"
+
+intLiteral :: Int -> String
+intLiteral k = if k < 0 then "(" ++ show k ++ ")" else show k
