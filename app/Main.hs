@@ -6,14 +6,14 @@ import Control.Exception (IOException, try)
 import Data.List (isInfixOf)
 import qualified Network.Wai.Handler.Warp as Warp
 import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
-import System.Directory (createDirectoryIfMissing, doesDirectoryExist, doesFileExist, listDirectory, removeFile)
-import System.FilePath ((</>), dropTrailingPathSeparator, takeDirectory, takeExtension)
+import System.Directory (createDirectoryIfMissing, doesDirectoryExist, doesFileExist)
+import System.FilePath ((</>), takeDirectory)
 import System.IO.Error (isAlreadyInUseError)
 import Control.Monad (forM, forM_, when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
 import Data.List (intercalate, minimumBy, transpose)
-import Data.Maybe (fromMaybe, isJust)
+import Data.Maybe (isJust)
 import Data.Ord (comparing)
 import Data.String (fromString)
 import Linear.Metric (norm)
@@ -26,7 +26,7 @@ import Text.Read (readMaybe)
 import Manifold
 import Manifold.Bench
 import Manifold.Build
-import Manifold.Compile (compiledFiles, compiledModuleNames, isGeneratedModule, listCompiledModules)
+import Manifold.Compile (dumpStep)
 import Manifold.Engine
 import Manifold.Scene
 
@@ -34,7 +34,7 @@ data Command
   = Spaces Bool
   | Geodesic GeodesicArgs
   | Build FilePath
-  | Compile FilePath (Maybe FilePath)
+  | DumpStep String
   | Serve Int FilePath
   | Sim FilePath Int Int (Maybe FilePath)
   | Bench BenchArgs
@@ -87,9 +87,8 @@ commandParser = hsubparser
                                    <*> optional (option auto (long "iterations" <> metavar "K" <> help "Solver iterations from the warm-up on, instead of the scenes' (give the piles a long --warmup to settle)"))
                                    <*> optional (option auto (long "slop-per-size" <> metavar "F" <> help "The contacts' slop from the warm-up on: F times the scene's body size (default: the engine's 0.002, whatever the size)")))
                        (progDesc "Time the native engine's step on scenes of growing size"))
- <> command "compile" (info (Compile <$> strOption (long "out" <> metavar "DIR" <> value "Lib" <> help "The library's source directory (default: Lib)")
-                                     <*> optional (strOption (long "cabal" <> metavar "FILE" <> help "The package description that lists the compiled modules (default: Manifold.cabal beside DIR)")))
-        (progDesc "Print every catalogue space's step as Haskell (the compiled native step) into DIR/Manifold/Compiled, remove the modules it printed for spaces no longer in the catalogue, and list the modules in the package description"))
+ <> command "dump-step" (info (DumpStep <$> strArgument (metavar "SPACE" <> help ("One of: " ++ intercalate ", " spaceNames)))
+        (progDesc "Print a space's compiled native step as Haskell, for reading (the library splices the same code)"))
  <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
   )
   where
@@ -119,47 +118,10 @@ main = do
       case r of
         Left (BuildError msg) -> usageError msg
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
-    Compile dir cabal -> compile dir cabal
+    DumpStep name -> either usageError (putStr . dumpStep) (findSpace name)
     Serve p dir -> serve p dir
     Sim path steps every save -> simulate path steps every save
     Bench args -> bench args
-
--- | @manifold compile@: the compiled modules into DIR; those it wrote
--- before for spaces the catalogue no longer has removed (a module without
--- its note is someone's own and stays); and the package description's list
--- of them kept equal, since a module the library does not list is compiled
--- but left out of the link.
-compile :: FilePath -> Maybe FilePath -> IO ()
-compile dir cabalArg = do
-  let cabal = fromMaybe (takeDirectory (dropTrailingPathSeparator dir) </> "Manifold.cabal") cabalArg
-  exists <- doesFileExist cabal
-  description <- if exists then Just <$> readFileStrict cabal else pure Nothing
-  listed <- case (description, cabalArg) of
-    (Just text, _) -> either (usageError . ((cabal ++ ": ") ++)) (pure . Just . (,) text) (listCompiledModules text)
-    (Nothing, Just _) -> usageError (cabal ++ ": no such file")
-    (Nothing, Nothing) -> pure Nothing
-  forM_ compiledFiles $ \(rel, text) -> do
-    createDirectoryIfMissing True (takeDirectory (dir </> rel))
-    writeFile (dir </> rel) text
-  let compiledDir = dir </> "Manifold" </> "Compiled"
-      written = [ dir </> rel | (rel, _) <- compiledFiles ]
-  present <- filter ((== ".hs") . takeExtension) <$> listDirectory compiledDir
-  stale <- fmap concat . forM [ compiledDir </> f | f <- present, compiledDir </> f `notElem` written ] $ \f -> do
-    generated <- isGeneratedModule <$> readFileStrict f
-    pure [ f | generated ]
-  mapM_ removeFile stale
-  putStrLn ("wrote " ++ show (length compiledFiles) ++ " files to " ++ dir
-            ++ concatMap (\f -> "; removed " ++ f ++ " (its space is not in the catalogue)") stale)
-  case listed of
-    Just (old, new) -> do
-      when (new /= old) (writeFile cabal new)
-      putStrLn ((if new /= old then "listed them in " else "they are listed in ") ++ cabal ++ "; rebuild to use them")
-    Nothing -> putStrLn ("no " ++ cabal ++ ": list these modules in the library's exposed-modules, then rebuild: "
-                         ++ unwords compiledModuleNames)
-  where
-    readFileStrict f = do
-      text <- readFile f
-      length text `seq` pure text
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a

@@ -22,7 +22,6 @@ import Test.Hspec
 
 import Manifold
 import Manifold.Bench (benchScene, benchSpaces)
-import Manifold.Compile (compiledFiles, listCompiledModules)
 import Manifold.Engine
 import Manifold.Scene
 import Manifold.Stage.Kernels (spaceScript)
@@ -119,20 +118,11 @@ maxDiff xs ys = maximum (0 : zipWith (\x y -> abs (x - y)) xs ys)
 spec :: Spec
 spec = freeMotionSpec >> benchSpec >> compiledSpec
 
--- | The compiled native step (the staged step printed as Haskell) is the
--- generic step's twin: checked in as the engine prints it, used only for
--- the space it was printed for, and moving bodies as the generic step does.
+-- | The compiled native step (the staged step spliced as Haskell) is the
+-- generic step's twin: used only for the space it was made for, and
+-- moving bodies as the generic step does.
 compiledSpec :: Spec
 compiledSpec = describe "Engine: the compiled native step" $ do
-  it "is checked in as `manifold compile` prints it (Lib/Manifold/Compiled)" $
-    forM_ compiledFiles $ \(rel, text) -> do
-      onDisk <- readFile ("Lib" </> rel)
-      (rel, onDisk == text) `shouldBe` (rel, True)
-
-  it "is listed in Manifold.cabal as `manifold compile` lists it" $ do
-    cabal <- readFile "Manifold.cabal"
-    listCompiledModules cabal `shouldBe` Right cabal
-
   it "serves every catalogue space, and not a space of one's own under a catalogue name" $ do
     forM_ catalogue $ \sp -> do
       w <- newWorld sp (layout 4)

@@ -567,8 +567,8 @@ sharingSpec = do
     -- the pieces with bounded reads first, so that a regression fails
     -- instead of hanging.
     length bindings `shouldSatisfy` (<= 32)
-    map (length . take 1000 . snd) bindings `shouldSatisfy` all (< 1000)
-    map (length . take 1000) roots `shouldSatisfy` all (< 1000)
+    map (length . take 1000 . renderTerm JavaScript . snd) bindings `shouldSatisfy` all (< 1000)
+    map (length . take 1000 . renderTerm JavaScript) roots `shouldSatisfy` all (< 1000)
     printf "iterate 30: %d lines printed, unshared tree %d nodes\n" n (treeSizeMemo [nodeId e])
     n `shouldSatisfy` (<= 35)
     [Bits v] <- runNodeJSON (js ++ "__emit([iter30(" ++ jsDouble x0 ++ ")]);\n")

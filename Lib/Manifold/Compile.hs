@@ -1,160 +1,101 @@
--- | Printing the step of each catalogue space as a Haskell module: the
--- compiled native step ("Manifold.Compiled.Runtime" says why). The modules
--- are generated into @Lib/Manifold/Compiled/@ by @manifold compile@ and
--- checked in; a test fails when they are not what the current engine
--- prints, so they cannot go stale silently.
+{-# LANGUAGE TemplateHaskellQuotes #-}
+-- | The compiled native step: a space's staged step ("Manifold.Program"),
+-- made for the 'Haskell' target and spliced with Template Haskell while
+-- the library (or a user's module) compiles, so it can never differ from
+-- the engine it is built from. One line compiles a space's step:
+--
+-- > bowlStep :: CompiledStep
+-- > bowlStep = $(compiledStep bowl)
+--
+-- (with @TemplateHaskell@ on and the space defined in another module, as
+-- Template Haskell's stage restriction asks). "Manifold.Compiled.Runtime"
+-- says why the compiled step is faster than the generic one, and holds
+-- what the spliced code calls.
 module Manifold.Compile
-  ( compiledModuleName
-  , compiledModule
-  , compiledRegistry
-  , compiledFiles
-  , compiledModuleNames
-  , compiledListMarkers
-  , listCompiledModules
-  , isGeneratedModule
+  ( CompiledStep
+  , compiledStep
+  , sharedSubroutines
+  , compiledLayout
+  , dumpStep
   ) where
 
-import Data.Char (isSpace, toUpper)
-import Data.List (intercalate, isInfixOf)
-import System.FilePath (dropExtension)
+import Data.List (partition)
+import Data.Maybe (fromMaybe)
+import Data.Foldable (toList)
+import Language.Haskell.TH
+import Language.Haskell.TH.Syntax (mkNameG_v)
 
-import Manifold.Compiled.Runtime (spaceFingerprint)
-import Manifold.Engine (stepProcedures, stagedPhases, phaseFunction, worldParams)
+import Manifold.Compiled.Runtime (CompiledStep (..), newLocals, primitiveArray, spaceFingerprint)
+import Manifold.Program (phaseFunction, stagedPhases, stepProcedures, worldParams)
 import Manifold.Space
-import Manifold.Spaces (catalogue)
-import Manifold.Stage.Imp (stageProceduresFor)
-import Manifold.Stage.Print (Target (..))
+import Manifold.Spaces (plane)
+import Manifold.Stage.Code (Check, Function (..))
+import Manifold.Stage.Imp (localsArray, stageFunctions)
+import Manifold.Stage.Print (Target (..), printProcedure)
+import Manifold.Stage.Splice (functionDecs)
 import Manifold.World (Layout (..), WalkLoops (..), layout)
 
--- | @projective-plane@ → @ProjectivePlane@.
-compiledModuleName :: Space -> String
-compiledModuleName = concatMap capital . words . map (\c -> if c == '-' then ' ' else c) . spaceName
-  where capital (c : cs) = toUpper c : cs
-        capital [] = []
+-- | The polygon the compiled step is made for (the engine's), walked with
+-- each Newton iteration of a geodesic step as a loop of its own across the
+-- directions: compiled natively, the walk otherwise waits on each
+-- iteration's chain (see 'WalkLoops').
+compiledLayout :: Layout
+compiledLayout = (layout 0) { walkLoops = LoopPerNewtonIteration }
 
--- | The printed functions of one space's step: the phases, then the
--- subroutines they call, each with its name.
-stepFunctions :: Space -> Layout -> [(String, String)]
-stepFunctions sp l = [ (takeWhile (/= ' ') text, text) | text <- stageProceduresFor Haskell (stepProcedures sp l) ]
+-- | A space's step staged for Haskell: the phases, then the subroutines
+-- they call.
+stepFunctions :: Space -> [Function Check]
+stepFunctions sp = stageFunctions Haskell (stepProcedures sp compiledLayout)
 
--- | The functions printed the same for every space (the pair narrow phase
--- does not touch the field): printed once, in "Manifold.Compiled.Shared".
-sharedFunctions :: [[(String, String)]] -> [(String, String)]
-sharedFunctions perSpace = case perSpace of
-  [] -> []
-  first : rest -> [ f | f@(name, _) <- first, name `notElem` phaseNames, all (f `elem`) rest ]
-  where phaseNames = [ phaseFunction name | (name, _) <- stagedPhases ]
+-- | The subroutines of the plane's step. Most of the step's subroutines
+-- (the pair narrow phase, the solver's sweeps) do not touch the space, so
+-- they are spliced once, in "Manifold.Compiled.Shared", and every space
+-- whose subroutine is the same tree calls that one: 14 copies of them
+-- took a third more compile time.
+referenceSubroutines :: [Function Check]
+referenceSubroutines = [ f | f <- stepFunctions plane, fnName f `notElem` phases ]
+  where phases = [ phaseFunction name | (name, _) <- stagedPhases ]
 
--- | The first lines of every generated module: no warnings (the printed
--- code binds names it may not use), and LLVM's code generator.
-generatedPragmas :: [String] -> [String]
-generatedPragmas extensions =
-  [ "{-# LANGUAGE " ++ intercalate ", " extensions ++ " #-}"
-  , "{-# OPTIONS_GHC -w -O2 -fllvm #-}"
-  ]
+-- | The declarations of "Manifold.Compiled.Shared".
+sharedSubroutines :: Q [Dec]
+sharedSubroutines = pure (concatMap (functionDecs mkName) referenceSubroutines)
 
--- | The module of one space's compiled step, given its printed functions
--- (without the functions the catalogue shares, which it imports).
-compiledModule :: [(String, String)] -> Space -> Layout -> [(String, String)] -> String
-compiledModule shared sp l functions = unlines $ generatedPragmas ["BangPatterns", "LambdaCase"] ++
-  [ "-- | The step of the space " ++ show (spaceName sp) ++ " compiled: " ++ generatedNote
-  , "-- from the staged step (\"Manifold.Compile\"); do not edit."
-  , "module Manifold.Compiled." ++ compiledModuleName sp ++ " (compiled) where"
-  , ""
-  , "import Data.Foldable (toList)"
-  , "import Data.Vector.Unboxed.Mutable (IOVector)"
-  , "import Manifold.Compiled.Runtime"
-  , "import Manifold.Compiled.Shared"
-  , "import Manifold.World (WorldArrays)"
-  , ""
-  , "compiled :: CompiledStep"
-  , "compiled = CompiledStep " ++ show (spaceName sp) ++ " fingerprint"
-  , "  [ " ++ intercalate "\n  , " [ "(" ++ show name ++ ", applyTo " ++ phaseFunction name ++ ")" | (name, _) <- stagedPhases ]
-  , "  ]"
-  , ""
-  , "fingerprint :: String"
-  , "fingerprint = " ++ show (spaceFingerprint sp l)
-  , ""
-  , "applyTo :: (" ++ concatMap (const "Arr -> ") (worldParams ++ ["locals"]) ++ "IO ()) -> WorldArrays (IOVector Double) -> IO ()"
-  , "applyTo f w = case map primitiveArray (toList w) of"
-  , "  [" ++ intercalate ", " worldParams ++ "] -> newLocals >>= f " ++ unwords worldParams
-  , "  _ -> error \"Manifold.Compiled." ++ compiledModuleName sp ++ ": the world's arrays are not the ones this step was printed for\""
-  , ""
-  ] ++ [ text | f@(_, text) <- functions, f `notElem` shared ]
+-- | A subroutine of "Manifold.Compiled.Shared", by its global name (so a
+-- splice anywhere calls it without importing the module).
+sharedName :: String -> Name
+sharedName = mkNameG_v package "Manifold.Compiled.Shared"
+  where package = fromMaybe (error "compiledStep: no package for Manifold.Compiled.Runtime") (namePackage 'newLocals)
 
--- | Whether a module's text is one that @manifold compile@ wrote (its
--- first lines say so), and so may be replaced or removed by it.
-isGeneratedModule :: String -> Bool
-isGeneratedModule = any (generatedNote `isInfixOf`) . take 5 . lines
+-- | A space's compiled step, as an expression of type 'CompiledStep'.
+compiledStep :: Space -> Q Exp
+compiledStep sp = do
+  let (shared, own) = partition (`elem` referenceSubroutines) (stepFunctions sp)
+      callee n | n `elem` map fnName shared = sharedName n
+               | otherwise = mkName n
+  applyTo <- newName "applyTo"
+  f <- newName "f"
+  w <- newName "w"
+  let arrays = map mkName worldParams
+      -- the world's arrays as primitive vectors, and a locals array of
+      -- the call's own, passed to a phase
+      applyDec = FunD applyTo [Clause [VarP f, VarP w] (NormalB (CaseE
+        (AppE (AppE (VarE 'map) (VarE 'primitiveArray)) (AppE (VarE 'toList) (VarE w)))
+        [ Match (ListP (map VarP arrays))
+            (NormalB (InfixE (Just (VarE 'newLocals)) (VarE '(>>=)) (Just (foldl AppE (VarE f) (map VarE arrays))))) []
+        , Match WildP (NormalB (AppE (VarE 'error) (LitE (StringL
+            ("the compiled step of " ++ spaceName sp ++ ": the world's arrays are not the ones it was made for"))))) []
+        ])) []]
+      phases = ListE [ TupE [Just (LitE (StringL name)), Just (AppE (VarE applyTo) (VarE (mkName (phaseFunction name))))]
+                     | (name, _) <- stagedPhases ]
+  pure $ LetE (applyDec : concatMap (functionDecs callee) own) $
+    foldl AppE (ConE 'CompiledStep)
+      [LitE (StringL (spaceName sp)), LitE (StringL (spaceFingerprint sp compiledLayout)), phases]
 
-generatedNote :: String
-generatedNote = "generated by `manifold compile`"
-
--- | The module of the functions every space's step prints the same.
-sharedModule :: [(String, String)] -> String
-sharedModule shared = unlines $ generatedPragmas ["BangPatterns"] ++
-  [ "-- | The parts of the compiled step that every catalogue space prints the"
-  , "-- same: " ++ generatedNote ++ "; do not edit."
-  , "module Manifold.Compiled.Shared (" ++ intercalate ", " (map fst shared) ++ ") where"
-  , ""
-  , "import Manifold.Compiled.Runtime"
-  , ""
-  ] ++ map snd shared
-
--- | The module listing every compiled step.
-compiledRegistry :: [Space] -> String
-compiledRegistry spaces = unlines $
-  [ "-- | Every catalogue space's compiled step: " ++ generatedNote ++ "; do not edit."
-  , "module Manifold.Compiled (compiledSteps) where"
-  , ""
-  , "import Manifold.Compiled.Runtime (CompiledStep)"
-  ] ++ [ "import qualified Manifold.Compiled." ++ compiledModuleName sp | sp <- spaces ] ++
-  [ ""
-  , "compiledSteps :: [CompiledStep]"
-  , "compiledSteps ="
-  , "  [ " ++ intercalate "\n  , " [ "Manifold.Compiled." ++ compiledModuleName sp ++ ".compiled" | sp <- spaces ]
-  , "  ]"
-  ]
-
--- | The files @manifold compile@ writes, relative to the library's source
--- directory, for the catalogue at the engine's polygon.
-compiledFiles :: [(FilePath, String)]
-compiledFiles =
-  ("Manifold/Compiled.hs", compiledRegistry catalogue)
-  : ("Manifold/Compiled/Shared.hs", sharedModule shared)
-  : [ ("Manifold/Compiled/" ++ compiledModuleName sp ++ ".hs", compiledModule shared sp l fs) | (sp, fs) <- zip catalogue perSpace ]
-  where
-    -- the compiled step's polygon walk waits on its Newton iterations'
-    -- chains unless each iteration is a loop of its own (see 'WalkLoops')
-    l = (layout 0) { walkLoops = LoopPerNewtonIteration }
-    -- each space's step staged once, for the shared module and its own
-    perSpace = map (`stepFunctions` l) catalogue
-    shared = sharedFunctions perSpace
-
--- | The Haskell modules of 'compiledFiles', in the same order.
-compiledModuleNames :: [String]
-compiledModuleNames = [ map (\c -> if c == '/' then '.' else c) (dropExtension rel) | (rel, _) <- compiledFiles ]
-
--- | The comment lines between which the package description lists the
--- compiled modules, which @manifold compile@ keeps equal to
--- 'compiledModuleNames': a space added to the catalogue gets a module that
--- the library must list, or the build links without it and fails.
-compiledListMarkers :: (String, String)
-compiledListMarkers =
-  ( "-- the compiled steps: `manifold compile` writes this list"
-  , "-- end of the compiled steps" )
-
--- | The package description (a .cabal file's text) with the lines between
--- the markers replaced by 'compiledModuleNames', indented as the opening
--- marker is; an error when the markers are not there, each once, in order.
-listCompiledModules :: String -> Either String String
-listCompiledModules cabal = case (marked begin, marked end) of
-  ([b], [e]) | b < e ->
-    let indent = takeWhile isSpace (ls !! b)
-    in Right (unlines (take (b + 1) ls ++ map (indent ++) compiledModuleNames ++ drop e ls))
-  _ -> Left ("the package description must hold the lines \"" ++ begin ++ "\" and \"" ++ end
-             ++ "\", once each and in that order, around the library's list of compiled modules")
-  where
-    (begin, end) = compiledListMarkers
-    ls = lines cabal
-    marked m = [ k | (k, l) <- zip [0 :: Int ..] ls, dropWhile isSpace l == m ]
+-- | A space's compiled step as Haskell text, for reading
+-- (@manifold dump-step SPACE@): every function the splice defines or calls,
+-- over the definitions of "Manifold.Compiled.Runtime"; each function
+-- takes the world's arrays and, last, the array of its locals
+-- (@'localsArray'@).
+dumpStep :: Space -> String
+dumpStep sp = unlines (header : map (printProcedure Haskell) (stepFunctions sp))
+  where header = "-- the compiled step of " ++ show (spaceName sp) ++ " (arrays: " ++ unwords (worldParams ++ [localsArray]) ++ ")"

@@ -1,9 +1,12 @@
-{-# LANGUAGE FlexibleContexts #-}
--- | Running the world natively and printing it as the page's JavaScript.
+-- | Running the world natively: a world's arrays, stepped by its space's
+-- compiled step where there is one ("Manifold.Compile") and by the generic
+-- step otherwise, and the calls that add, pick, grab and read bodies.
 module Manifold.Engine
   ( NativeWorld (..)
   , BodyInit (..)
   , newWorld
+  , newWorldUsing
+  , CompiledStep
   , addBody
   , stepNative
   , stepPhasesNative
@@ -26,14 +29,6 @@ module Manifold.Engine
   , Impulse (..)
   , rememberedImpulses
   , restoreImpulses
-  , engineScript
-  , engineProcedures
-  , engineObject
-  , engineSubroutines
-  , stepProcedures
-  , stagedPhases
-  , phaseFunction
-  , worldParams
   ) where
 
 import qualified Data.Vector.Unboxed.Mutable as MV
@@ -42,17 +37,14 @@ import Linear.V3 (V3 (..))
 import Manifold.Body
 import Manifold.Compiled (compiledSteps)
 import Manifold.Compiled.Runtime (CompiledStep (..), spaceFingerprint)
+import Manifold.Params
 import Manifold.Space
-import Manifold.Stage.Expr (E)
 import Manifold.Stage.Imp
 import Manifold.Grab
 import Manifold.Population
 import Manifold.Step (step, stepPhases)
 import Manifold.World
-import Data.Char (toLower, toUpper)
-import Data.Foldable (toList)
-import Data.List (intercalate)
-import Data.Maybe (isJust)
+import Data.Maybe (isJust, listToMaybe)
 
 data NativeWorld = NativeWorld
   { nwSpace :: Space
@@ -61,53 +53,27 @@ data NativeWorld = NativeWorld
   , nwCompiled :: Maybe CompiledStep -- ^ the space's compiled step, if it has one
   }
 
+-- | An empty world of a space, run by the space's compiled step if it is
+-- a catalogue space ('compiledSteps').
 newWorld :: Space -> Layout -> IO NativeWorld
-newWorld sp l = do
+newWorld = newWorldUsing compiledSteps
+
+-- | An empty world run by the first of the given compiled steps made for
+-- its space and polygon (a space of one's own: @newWorldUsing [bowlStep]
+-- bowl@, see "Manifold.Compile"), or by the generic step if none is.
+newWorldUsing :: [CompiledStep] -> Space -> Layout -> IO NativeWorld
+newWorldUsing steps sp l = do
   let s = arraySizes l
       alloc n = MV.replicate n 0
   arrays <- traverse alloc s
-  let w = NativeWorld sp l arrays (compiledFor sp l)
+  let w = NativeWorld sp l arrays (compiledFor steps sp l)
   MV.write (wMeta arrays) (fromEnum Capacity) (fromIntegral (capacity l))
   setParams w defaultParams
   pure w
 
--- | The engine's parameters.
-data Params = Params
-  { pDt :: Double
-  , pGravity :: Bool
-  , pIterations :: Int
-  , pFriction :: Double
-  , pRestitution :: Double
-  , pBaumgarte :: Double -- ^ fraction of the depth removed per step (paper: 0.1)
-  , pSlop :: Double -- ^ depth allowed without correction
-  , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
-  , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
-  , pMaxCorrection :: Double -- ^ the fastest a contact pushes bodies out of an overlap
-  , pPolygonStep :: Double -- ^ bodies up to this size walk their outline in one geodesic step (0: never)
-  } deriving (Show, Eq)
-
-defaultParams :: Params
-defaultParams = Params
-  { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
-  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True
-  , pMaxCorrection = 0.5, pPolygonStep = 0.05 }
-
+-- | Set the world's parameters.
 setParams :: NativeWorld -> Params -> IO ()
-setParams w p = do
-  let a = wParams (nwArrays w)
-      set :: Param -> Double -> IO ()
-      set k = MV.write a (fromEnum k)
-  set Dt (pDt p)
-  set GravityOn (if pGravity p then 1 else 0)
-  set Iterations (fromIntegral (pIterations p))
-  set Friction (pFriction p)
-  set Restitution (pRestitution p)
-  set Baumgarte (pBaumgarte p)
-  set Slop (pSlop p)
-  set BounceThreshold (pBounceThreshold p)
-  set WarmStart (if pWarmStart p then 1 else 0)
-  set MaxCorrection (pMaxCorrection p)
-  set PolygonStep (pPolygonStep p)
+setParams w = writeParams (nwArrays w)
 
 -- | A body as a scene describes it.
 data BodyInit = BodyInit
@@ -166,12 +132,11 @@ releaseMouse w = runNative (release (nwArrays w))
 removeBodyAt :: NativeWorld -> Int -> IO ()
 removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
 
--- | The compiled step ("Manifold.Compiled.Runtime") of a catalogue space,
--- when the space and polygon are the ones it was printed for.
-compiledFor :: Space -> Layout -> Maybe CompiledStep
-compiledFor sp l = case [c | c <- compiledSteps, compiledSpace c == spaceName sp] of
-  c : _ | compiledFingerprint c == spaceFingerprint sp l -> Just c
-  _ -> Nothing
+-- | The compiled step ("Manifold.Compiled.Runtime") among @steps@ that
+-- was made for the space and polygon.
+compiledFor :: [CompiledStep] -> Space -> Layout -> Maybe CompiledStep
+compiledFor steps sp l = listToMaybe
+  [ c | c <- steps, compiledSpace c == spaceName sp, compiledFingerprint c == spaceFingerprint sp l ]
 
 -- | The world run by the generic (polymorphic) step even if its space has a
 -- compiled one: the reference the compiled step is tested against.
@@ -270,109 +235,3 @@ restoreImpulses w perBody = do
                      | (k, r) <- zip [s ..] rows ]
       | (i, s, rows) <- zip3 [0 ..] starts perBody ]
     pure (Right ())
-
-stagedArrays :: WorldArrays StagedArray
-stagedArrays = fmap StagedArray arrayNames
-
-worldParams :: [String]
-worldParams = toList arrayNames
-
--- | The engine's procedures for one space, as JavaScript functions over the
--- world's arrays.
-engineProcedures :: Space -> Layout -> [String]
-engineProcedures sp l =
-  unlines (("function step(" ++ intercalate ", " worldParams ++ ") {")
-           : ["  " ++ phaseFunction name ++ "(" ++ intercalate ", " worldParams ++ ");" | (name, _) <- stagedPhases]
-           ++ ["}"])
-  : stageProcedures (engineProcedureList sp l)
-
--- | The names of the subroutines among a space's printed functions (each
--- printed function begins @function NAME(@): all but @step@ and the
--- procedures.
-engineSubroutines :: Space -> Layout -> [String] -> [String]
-engineSubroutines sp l printed =
-  [ name | text <- printed, let name = takeWhile (/= '(') (drop (length "function ") text)
-         , name `notElem` ("step" : map (procName . fst) (engineProcedureList sp l)) ]
-
--- | The procedures the page calls: the phases, then the rest.
-engineProcedureList :: Space -> Layout -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())]
-engineProcedureList sp l = stepProcedures sp l ++
-  [ (JsProcedure "polygonise" worldParams [], \_ _ -> polygoniseAll sp l stagedArrays)
-  , (JsProcedure "addBody" worldParams
-      ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"],
-      \_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega] ->
-         addBodyWith sp l stagedArrays (codeOutline code)
-           (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega))
-  , (JsProcedure "removeBody" worldParams ["index"],
-      \_ [i] -> removeBody l stagedArrays (toIndex i))
-  , (JsProcedure "placementAngle" worldParams ["index"],
-      \_ [i] -> placementAngle sp stagedArrays (toIndex i))
-  , (JsProcedure "pickBody" worldParams ["qx", "qy", "qz"],
-      \_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
-  , (JsProcedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"],
-      \_ [i, sgn, x, y, z, hz, zeta, fmax] -> grab sp stagedArrays (toIndex i) sgn (V3 x y z) hz zeta fmax)
-  , (JsProcedure "drag" worldParams ["qx", "qy", "qz"],
-      \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
-  , (JsProcedure "release" worldParams [], \_ _ -> release stagedArrays)
-  ]
-
--- | The step's phases as procedures to print, one for each phase.
-stepProcedures :: Space -> Layout -> [(JsProcedure, [StagedArray] -> [E] -> Staged ())]
-stepProcedures sp l = [ (JsProcedure (phaseFunction name) worldParams [], \_ _ -> phase sp l stagedArrays) | (name, phase) <- stagedPhases ]
-
--- | The step's phases, staged (to print them).
-stagedPhases :: [(String, Space -> Layout -> WorldArrays StagedArray -> Staged ())]
-stagedPhases = stepPhases
-
--- | The JavaScript function of one phase of the step. The step is printed as
--- one function per phase (and the phases' large parts as subroutines, see
--- 'subroutine') because V8 does not optimise a function whose bytecode is
--- larger than 60 KB, and the whole step is larger: unoptimised, it ran 17
--- times slower (torus, 655 bodies, bench/node.mjs).
-phaseFunction :: String -> String
-phaseFunction (c : cs) = "step" ++ toUpper c : cs
-phaseFunction [] = "step"
-
-engineScript :: Space -> Layout -> String
-engineScript sp l = unlines (engineProcedures sp l)
-
--- | The engine's description for the page, as a JavaScript object literal:
--- how to allocate a world (sizes are linear in the capacity), what each
--- index of the meta, parameter, per-body, contact and mouse arrays means,
--- the default parameters, and the procedures.
-engineObject :: Layout -> [String] -> String
-engineObject l subroutines =
-  let at c = arraySizes l { capacity = c }
-      one = at 1
-      two = at 2
-      size name a b = name ++ ": [" ++ show (a - (b - a)) ++ ", " ++ show (b - a) ++ "]"
-      enumObj :: forall e. (Show e, Enum e, Bounded e) => e -> String
-      enumObj _ = "{ " ++ intercalate ", " [show' k ++ ": " ++ show (fromEnum k) | k <- [minBound .. maxBound :: e]] ++ " }"
-      show' k = let (c : cs) = show k in toLower c : cs
-      p = defaultParams
-      params = [ ("dt", pDt p), ("gravityOn", if pGravity p then 1 else 0), ("iterations", fromIntegral (pIterations p))
-               , ("friction", pFriction p), ("restitution", pRestitution p), ("baumgarte", pBaumgarte p)
-               , ("slop", pSlop p), ("bounceThreshold", pBounceThreshold p)
-               , ("warmStart", if pWarmStart p then 1 else 0), ("maxCorrection", pMaxCorrection p)
-               , ("polygonStep", pPolygonStep p) ]
-      phaseNames = stagedPhases
-  in unlines
-    [ "{"
-    , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"
-    , "  sizes: { " ++ intercalate ", " (zipWith3 size (toList arrayNames) (toList one) (toList two)) ++ " },"
-    , "  directions: " ++ show (polyDirections (polygon l)) ++ ", steps: " ++ show (polySteps (polygon l)) ++ ","
-    , "  verticesPerBody: " ++ show (verticesPerBody l) ++ ", contactStride: " ++ show contactStride ++ ", contactsPerBody: " ++ show contactsPerBody ++ ","
-    , "  meta: " ++ enumObj BodyCount ++ ","
-    , "  params: " ++ enumObj Dt ++ ","
-    , "  slots: " ++ enumObj Angle ++ ","
-    , "  contact: " ++ enumObj CA ++ ","
-    , "  prev: " ++ enumObj PrevOwner ++ ", prevStride: " ++ show prevStride ++ ","
-    , "  mouse: " ++ enumObj MActive ++ ","
-    , "  defaults: { " ++ intercalate ", " [k ++ ": " ++ show v | (k, v) <- params] ++ " },"
-    , "  phases: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ phaseFunction name ++ "]" | (name, _) <- phaseNames] ++ "],"
-    , "  // what the phases call, each printed once: for profiles, and for tests that optimise all of the step"
-    , "  subroutines: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ name ++ "]" | name <- subroutines] ++ "],"
-    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody, placementAngle: placementAngle,"
-    , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
-    , "}"
-    ]

@@ -1,13 +1,13 @@
--- | What the compiled native step is made of (the Haskell that
--- 'Manifold.Stage.Imp.stageProceduresFor' prints, in the generated modules
--- "Manifold.Compiled.*"), and how a world knows that a compiled step is
--- the one for its space.
+-- | What the compiled native step is made of (the code that
+-- "Manifold.Compile" splices, from the staged step, into the modules
+-- "Manifold.Compiled.*" and into a user's own), and how a world knows that
+-- a compiled step is the one for its space.
 --
 -- The native engine is the polymorphic step run at 'Double'; it calls the
 -- space's field through a record, so GHC cannot simplify the geometry
 -- around it. The page's JavaScript is the same step staged for one space,
 -- with the field's gradient worked out and simplified symbolically; the
--- compiled step is that same staged program printed as Haskell, so the
+-- compiled step is that same staged program spliced as Haskell, so the
 -- native engine gets the simplifications V8 gets.
 module Manifold.Compiled.Runtime
   ( Arr
@@ -34,20 +34,20 @@ import Manifold.Stage.Imp (localSlots)
 import Manifold.Stage.Print
 import Manifold.World (Layout (..), WorldArrays)
 
--- | The printed step's arrays are the world's, seen as primitive vectors
+-- | The compiled step's arrays are the world's, seen as primitive vectors
 -- (a plain data type). An unboxed vector of 'Double' is a data family
 -- instance, and GHC evaluates a data family value through its generic apply
--- code, spilling every live number around it, wherever the printed step
--- touches an array; a primitive vector is evaluated once, where the printed
+-- code, spilling every live number around it, wherever the compiled step
+-- touches an array; a primitive vector is evaluated once, where the
 -- function's strict parameter receives it.
 type Arr = PV.IOVector Double
 
--- | The world's array as the printed step takes it (the same memory).
+-- | The world's array as the compiled step takes it (the same memory).
 primitiveArray :: MV.IOVector Double -> Arr
 primitiveArray (MV_Double v) = v
 {-# INLINE primitiveArray #-}
 
--- | @loopI lo hi body@: the printed @for@ loop. The counter is an 'Int'
+-- | @loopI lo hi body@: the staged @for@ loop. The counter is an 'Int'
 -- from @lo@ (a whole number) while it is below @hi@ (compared as numbers,
 -- so a NaN bound runs nothing, as in JavaScript).
 loopI :: Double -> Double -> (Int -> IO ()) -> IO ()
@@ -56,7 +56,7 @@ loopI lo hi body = go (truncate lo)
               | otherwise = pure ()
 {-# INLINE loopI #-}
 
--- | @chkI a base lo hi@: the printed step's check that @a@ holds indices
+-- | @chkI a base lo hi@: the compiled step's check that @a@ holds indices
 -- @base + lo@ to @base + hi@, before it reads or writes them with 'rdU' and
 -- 'wrU' (see 'Manifold.Stage.Imp.arrayAccess': one check per row of an
 -- array instead of one per access).
@@ -80,14 +80,14 @@ wrU :: Arr -> Int -> Double -> IO ()
 wrU a i !x = PV.unsafeWrite a i x
 {-# INLINE wrU #-}
 
--- | The printed step's mutable locals, one array a phase call (see
+-- | The compiled step's mutable locals, one array a phase call (see
 -- 'Manifold.Stage.Imp.localSlots').
 newLocals :: IO Arr
 newLocals = PV.replicate localSlots 0
 
 -- | A space's step, compiled: the phases in the order of
 -- 'Manifold.Step.stepPhases', for the space and polygon the fingerprint
--- describes.
+-- describes (made by "Manifold.Compile"'s splice).
 data CompiledStep = CompiledStep
   { compiledSpace :: String
   , compiledFingerprint :: String

@@ -26,7 +26,7 @@ import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
-import Manifold.Engine (engineObject, engineProcedures, engineSubroutines)
+import Manifold.Stage.EngineScript (engineObject, engineProcedures)
 import Manifold.Surface (fieldGradient, projectToSurfaceWith, traceDistance)
 import Manifold.World (Layout, layout)
 
@@ -104,12 +104,12 @@ spaceScript s = unlines
   , "  bounds: " ++ num (spaceBounds s) ++ ","
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
-  , "  engine: " ++ engineObject engineLayout (engineSubroutines s engineLayout procedures) ++ ","
+  , "  engine: " ++ engineObject engineLayout subroutines ++ ","
   , "  glsl: " ++ jsString (spaceGlsl s)
   , "};"
   , "})(globalThis.Manifold = globalThis.Manifold || { spaces: {} });"
   ]
-  where procedures = engineProcedures s engineLayout
+  where (procedures, subroutines) = engineProcedures s engineLayout
 
 -- | The index of spaces, in catalogue order, with the script of each.
 spaceIndexScript :: [Space] -> String

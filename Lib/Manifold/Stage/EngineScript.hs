@@ -1,0 +1,76 @@
+-- | The page's engine for one space, as JavaScript: the staged program's
+-- procedures ("Manifold.Program") printed as functions, and the object the
+-- page reads the world's layout from (array sizes, what each index of the
+-- meta, parameter, per-body, contact and mouse arrays means, the default
+-- parameters, the phases and the procedures).
+module Manifold.Stage.EngineScript
+  ( engineProcedures
+  , engineObject
+  ) where
+
+import Data.Char (toLower)
+import Data.Foldable (toList)
+import Data.List (intercalate)
+
+import Manifold.Params
+import Manifold.Program
+import Manifold.Body (PolygonParams (..))
+import Manifold.Space
+import Manifold.Stage.Code (Function (..))
+import Manifold.Stage.Imp (Procedure (..), stageFunctions)
+import Manifold.Stage.Print (Target (..), printProcedure)
+import Manifold.World
+
+-- | The engine's functions for one space, as JavaScript (the step, which
+-- calls the phases, then each staged function), and the names of the
+-- subroutines among them.
+engineProcedures :: Space -> Layout -> ([String], [String])
+engineProcedures sp l =
+  ( unlines (("function step(" ++ intercalate ", " worldParams ++ ") {")
+             : ["  " ++ phaseFunction name ++ "(" ++ intercalate ", " worldParams ++ ");" | (name, _) <- stagedPhases]
+             ++ ["}"])
+    : map (printProcedure JavaScript) functions
+  , [ fnName f | f <- functions, fnName f `notElem` map (procName . fst) procedures ] )
+  where
+    procedures = pageProcedures sp l
+    functions = stageFunctions JavaScript procedures
+
+-- | The engine's description for the page, as a JavaScript object literal:
+-- how to allocate a world (sizes are linear in the capacity), what each
+-- index of the meta, parameter, per-body, contact and mouse arrays means,
+-- the default parameters, and the procedures (with the names of the
+-- subroutines they call).
+engineObject :: Layout -> [String] -> String
+engineObject l subroutines =
+  let at c = arraySizes l { capacity = c }
+      one = at 1
+      two = at 2
+      size name a b = name ++ ": [" ++ show (a - (b - a)) ++ ", " ++ show (b - a) ++ "]"
+      enumObj :: forall e. (Show e, Enum e, Bounded e) => e -> String
+      enumObj _ = "{ " ++ intercalate ", " [jsName k ++ ": " ++ show (fromEnum k) | k <- [minBound .. maxBound :: e]] ++ " }"
+  in unlines
+    [ "{"
+    , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"
+    , "  sizes: { " ++ intercalate ", " (zipWith3 size (toList arrayNames) (toList one) (toList two)) ++ " },"
+    , "  directions: " ++ show (polyDirections (polygon l)) ++ ", steps: " ++ show (polySteps (polygon l)) ++ ","
+    , "  verticesPerBody: " ++ show (verticesPerBody l) ++ ", contactStride: " ++ show contactStride ++ ", contactsPerBody: " ++ show contactsPerBody ++ ","
+    , "  meta: " ++ enumObj BodyCount ++ ","
+    , "  params: " ++ enumObj Dt ++ ","
+    , "  slots: " ++ enumObj Angle ++ ","
+    , "  contact: " ++ enumObj CA ++ ","
+    , "  prev: " ++ enumObj PrevOwner ++ ", prevStride: " ++ show prevStride ++ ","
+    , "  mouse: " ++ enumObj MActive ++ ","
+    , "  defaults: { " ++ intercalate ", " [jsName k ++ ": " ++ show (paramValue defaultParams k) | k <- [minBound .. maxBound :: Param]] ++ " },"
+    , "  phases: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ phaseFunction name ++ "]" | (name, _) <- stagedPhases] ++ "],"
+    , "  // what the phases call, each printed once: for profiles, and for tests that optimise all of the step"
+    , "  subroutines: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ name ++ "]" | name <- subroutines] ++ "],"
+    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody, placementAngle: placementAngle,"
+    , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
+    , "}"
+    ]
+
+-- | A constructor's name as the page's key: @GravityOn@ → @gravityOn@.
+jsName :: Show a => a -> String
+jsName k = case show k of
+  c : cs -> toLower c : cs
+  [] -> []
