@@ -222,7 +222,7 @@ simulate path steps every save = do
     written <- try (BL.writeFile out (A.encode (sceneJSON final))) :: IO (Either IOException ())
     either (\e -> usageError ("--save: " ++ show e)) pure written
   BL.putStrLn (A.encode (A.object
-    [ "space" A..= spaceName (sceneSpace scene), "dt" A..= sceneDt scene
+    [ "space" A..= spaceName (sceneSpace scene), "dt" A..= pDt (sceneParams scene)
     , "warnings" A..= warnings, "frames" A..= frames ]))
 
 -- | The native benchmark: progress on standard error, a table or JSON on

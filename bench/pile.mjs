@@ -39,10 +39,10 @@ for (const { scene, world } of worlds(dir)) {
     }
     return out;
   };
-  // a pair (through one image) has the keys 4k .. 4k + 3 under its owner
+  // a pair (through one image) has one group of keys under its owner (E.keys, generated)
   const now = rows(), perPair = new Map();
   for (const r of now) if (r.b >= 0) {
-    const p = r.owner + ":" + Math.floor(r.key / 4);
+    const p = r.owner + ":" + Math.floor(r.key / E.keys.perGroup);
     const kind = ["circleCircle", "circleSquare", "squareSquare"][(r.a % 2) + (r.b % 2)];
     const e = perPair.get(p) || { kind, rows: 0 };
     e.rows++;

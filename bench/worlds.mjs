@@ -22,6 +22,8 @@ export function commandLine(usage, known) {
 // page's engine: { file, scene, world }.
 export function* worlds(dir) {
   globalThis.performance = globalThis.performance || performance;
+  // the index first (it lists the scene keys the page's reader checks), then the world
+  if (!globalThis.Manifold || !globalThis.Manifold.sceneKeys) load(path.join(root, "web/gen/spaces.js"));
   if (!globalThis.ManifoldWeb) load(path.join(root, "web/js/world.js"));
   for (const file of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
     const scene = JSON.parse(fs.readFileSync(path.join(dir, file), "utf8"));

@@ -19,6 +19,8 @@ module Manifold.Body
     -- * Mass
   , MassProperties (..)
   , massProperties
+  , massIntegrals
+  , massSamples
   , areaOf
   , centroidOffset
   , paperMomentIntegral
@@ -28,6 +30,7 @@ module Manifold.Body
   , Polygon (..)
   , polygonise
   , vertexCount
+  , vertexIndex
   , triangleCount
   , directionAngle
   , Sectors
@@ -40,8 +43,11 @@ import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^+^))
 
+import System.IO.Unsafe (unsafePerformIO)
+
 import Manifold.Field
 import Manifold.Space (ShapeKind (..))
+import Manifold.Stage.Imp
 import Manifold.Surface
 
 -- | A polar outline for a body of size 1; the body's size scales it.
@@ -105,7 +111,8 @@ data MassProperties = MassProperties
   , inertia :: Double -- ^ about the centre, in the body's plane
   } deriving (Show, Eq)
 
--- | Midpoint-rule samples of the outline over one turn.
+-- | Midpoint-rule samples of the outline over one turn (for the centroid;
+-- the mass integrals take 'massSamples')
 samples :: Int
 samples = 4096
 
@@ -114,18 +121,45 @@ integrateTurn g =
   let h = 2 * pi / fromIntegral samples
   in h * sum [g ((fromIntegral k + 0.5) * h) | k <- [0 .. samples - 1]]
 
--- | @½ ∫ s(θ)² dθ@: the area of the flat shape.
+-- | @½ ∫ s(θ)² dθ@: the area of the flat shape (its mass at density 1).
 areaOf :: Shape -> Double -> Double
-areaOf s size = 0.5 * integrateTurn (\t -> outlineAt s size t ^ (2 :: Int))
+areaOf s size = mass (massProperties s size 1)
 
 -- | Mass @ρ · ½∫s²dθ@ and moment of inertia @ρ · ¼∫s⁴dθ@ (the polar
 -- integral of r² over the shape), measured in the flat tangent plane as in
--- the paper.
+-- the paper: 'massIntegrals', as the engine computes them for a body it
+-- adds.
 massProperties :: Shape -> Double -> Double -> MassProperties
-massProperties s size density = MassProperties
-  { mass = density * areaOf s size
-  , inertia = density * 0.25 * integrateTurn (\t -> outlineAt s size t ^ (4 :: Int))
-  }
+massProperties s size density = unsafePerformIO $ runNative $ do
+  let Outline outline = shapeOutline s
+  (m, i) <- massIntegrals outline size density
+  pure (MassProperties m i)
+{-# NOINLINE massProperties #-}
+
+-- | Midpoint-rule samples of the outline for the mass integrals.
+massSamples :: Int
+massSamples = 1024
+
+-- | The mass and moment of inertia of an outline (of size 1, scaled by
+-- @size@) at a density, by the midpoint rule over 'massSamples' directions:
+-- the one definition, run natively ('massProperties') and staged into the
+-- engine's body placement ("Manifold.Population").
+massIntegrals :: Imp m => (Scalar m -> Scalar m) -> Scalar m -> Scalar m -> m (Scalar m, Scalar m)
+{-# INLINE massIntegrals #-}
+massIntegrals outline size density = do
+  area <- newRef 0
+  quartic <- newRef 0
+  let h = constant (2 * pi / fromIntegral massSamples)
+  forEach (fromIntegral massSamples) $ \k -> do
+    s <- share (size * outline ((toScalar k + 0.5) * h))
+    s2 <- share (s * s)
+    modifyRef area (+ s2)
+    modifyRef quartic (+ s2 * s2)
+  a2 <- readRef area
+  a4 <- readRef quartic
+  m <- share (density * 0.5 * h * a2)
+  inertia <- share (density * 0.25 * h * a4)
+  pure (m, inertia)
 
 -- | The centroid of the flat shape relative to its centre,
 -- @(⅔ ∫ s³ e^{iθ} dθ) / ∫ s² dθ@. The centre acts as the centre of mass when
@@ -156,7 +190,7 @@ defaultPolygonParams :: PolygonParams
 defaultPolygonParams = PolygonParams 24 4
 
 -- | A body's geodesic polygon in world coordinates. Vertex 0 is the centre;
--- vertex @1 + d·steps + (j−1)@ is step @j@ along direction @d@.
+-- vertex @'vertexIndex' d j = d·steps + j@ is step @j@ along direction @d@.
 data Polygon a = Polygon
   { polyVertices :: [V3 a]
   , polyLocal :: [(a, a)] -- ^ each vertex's local polar coordinates (r, θ)
@@ -166,6 +200,16 @@ data Polygon a = Polygon
 
 vertexCount :: PolygonParams -> Int
 vertexCount (PolygonParams d s) = 1 + d * s
+
+-- | Where step @j@ (1 … steps) along direction @d@ (0 … directions − 1)
+-- sits among a body's polygon vertices (vertex 0 is the centre): the one
+-- definition of the layout, used by the polygon walk, the narrow phase and,
+-- generated, the page.
+--
+-- >>> vertexIndex defaultPolygonParams 2 (3 :: Int)
+-- 11
+vertexIndex :: Num a => PolygonParams -> a -> a -> a
+vertexIndex pp d j = d * fromIntegral (polySteps pp) + j
 
 triangleCount :: PolygonParams -> Int
 triangleCount (PolygonParams d s) = d + 2 * d * (s - 1)
@@ -241,11 +285,11 @@ polygonise f pp shape size p axis angle =
         in ( map fst ring
            , [(r * fromIntegral j / fromIntegral ns, theta) | j <- [1 .. ns]] )
       walks = map walk [0 .. nd - 1]
-      vertexIndex d j = 1 + (d `mod` nd) * ns + (j - 1)
-      fan = [(0, vertexIndex d 1, vertexIndex (d + 1) 1) | d <- [0 .. nd - 1]]
+      vertex d = vertexIndex pp (d `mod` nd)
+      fan = [(0, vertex d 1, vertex (d + 1) 1) | d <- [0 .. nd - 1]]
       quads = concat
-        [ [ (vertexIndex d j, vertexIndex d (j + 1), vertexIndex (d + 1) (j + 1))
-          , (vertexIndex d j, vertexIndex (d + 1) (j + 1), vertexIndex (d + 1) j) ]
+        [ [ (vertex d j, vertex d (j + 1), vertex (d + 1) (j + 1))
+          , (vertex d j, vertex (d + 1) (j + 1), vertex (d + 1) j) ]
         | d <- [0 .. nd - 1], j <- [1 .. ns - 1] ]
   in Polygon
       { polyVertices = p : concatMap fst walks

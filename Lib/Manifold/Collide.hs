@@ -22,13 +22,18 @@ module Manifold.Collide
   ( collide
   , buildGrid
   , pointInBody
+    -- * Contact keys
+  , KeyGroup (..)
+  , keysPerGroup
+  , keysPerBody
+  , imageKeyGroup
   ) where
 
 import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
-import Manifold.Body (PolygonParams (..), Sectors, sectors, directionSector)
+import Manifold.Body (PolygonParams (..), Sectors, sectors, directionSector, vertexIndex)
 import Manifold.Field
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -184,6 +189,29 @@ edgeFacing l sec w j y (c0, s0) q = do
   depthS <- share depth'
   m' <- share3 m
   pure (EdgeFacing depthS m' o0)
+
+-- | A contact row's key names the contact, so that the next step's row
+-- for the same contact starts from its impulses (warm starting): keys come
+-- in groups of 'keysPerGroup', one key for each point of a contact, and
+-- each body's rows have 'keysPerBody' keys of their own. A body's own
+-- groups are its boundary contacts and its self-contact; its contacts with
+-- body @j@ are @(j + 1) · keysPerBody@ plus the group of the image they meet
+-- through (group 0 for none, 'imageKeyGroup' for the quotient's images).
+data KeyGroup
+  = PairKey -- ^ a pair's contacts, not through an image
+  | Unused -- ^ (its keys name no contact)
+  | BoundaryKey
+  | SelfKey
+  | FirstImageKey -- ^ the first image's; the others follow it
+  deriving (Show, Eq, Enum, Bounded)
+
+keysPerGroup, keysPerBody :: Int
+keysPerGroup = 4
+keysPerBody = 64
+
+-- | The key group of a pair's contacts through the quotient's @k@-th image.
+imageKeyGroup :: Int -> Int
+imageKeyGroup k = fromEnum FirstImageKey + k
 
 -- | A contact row pair into the contact array: body @a@ at point @ra@ is
 -- pushed along @dirA@, body @b@ (if @b >= 0@) at @rb@ against @dirB@.
@@ -377,7 +405,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
   Just bf -> do
     let b = evalFn bf
     let nd = fromIntegral (polyDirections (polygon l))
-        key = 8
+        key = fromIntegral (fromEnum BoundaryKey) * fromIntegral keysPerGroup
     n <- read3 (wNormal w) i
     deepest <- newRef 0
     dDeep <- newRef (-1)
@@ -450,7 +478,7 @@ selfContacts sp l w i = do
   let nd = polyDirections (polygon l)
       ns = polySteps (polygon l)
       vpb = fromIntegral (verticesPerBody l)
-      vertex d k = read3 (wVerts w) (vpb * i + 1 + d * fromIntegral ns + k) -- step k+1 along d
+      vertex d k = read3 (wVerts w) (vpb * i + vertexIndex (polygon l) d k) -- step k along d
       -- (inlined: as a function of its own, the generic step boxed every vertex it read)
       {-# INLINE vertex #-}
       centreIx = vpb * i
@@ -476,8 +504,8 @@ selfContacts sp l w i = do
     -- points are solved for (an exact bound: the same rows)
     longest <- newRef 0
     forEach (fromIntegral nd) $ \d -> forLoop 1 (fromIntegral ns) $ \k -> do
-      a0 <- vertex d (k - 1)
-      a1 <- vertex d k
+      a0 <- vertex d k
+      a1 <- vertex d (k + 1)
       modifyRef longest (maxF (quadrance (a1 ^-^ a0)))
     segment <- share . sqrt =<< readRef longest
     forEach (fromIntegral nd) $ \d -> do
@@ -490,11 +518,11 @@ selfContacts sp l w i = do
         -- pair the closest-point test would take)
         reach <- share (let x = 0.3 * h + segment in x * x * 1.000001)
         forLoop 1 (fromIntegral ns) $ \k -> do
-          a0 <- vertex d (k - 1)
-          a1 <- vertex d k
+          a0 <- vertex d k
+          a1 <- vertex d (k + 1)
           forLoop 1 (fromIntegral ns) $ \k' -> do
-            b0 <- vertex d' (k' - 1)
-            b1 <- vertex d' k'
+            b0 <- vertex d' k'
+            b1 <- vertex d' (k' + 1)
             let midpoints = 0.5 *^ ((a0 ^+^ a1) ^-^ (b0 ^+^ b1))
             whenPositive (reach - quadrance midpoints) $ do
               let (s, t, gap) = segmentClosest a0 a1 b0 b1
@@ -504,8 +532,8 @@ selfContacts sp l w i = do
               best <- readRef deepest
               whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
                 writeRef deepest depth
-                first <- vertex d 0
-                first' <- vertex d' 0
+                first <- vertex d 1
+                first' <- vertex d' 1
                 let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
                     V3 u v q = negated (safeNormalize (first ^-^ c) ^+^ safeNormalize (first' ^-^ c))
                 writeRef px x >> writeRef py y >> writeRef pz z
@@ -519,7 +547,7 @@ selfContacts sp l w i = do
       emitContact w i selfKey i (-1) point dir point dir best 0.6 0 id
   where
     unitNormalAt = safeNormalize . gradFn (spaceField sp)
-    selfKey = 12
+    selfKey = fromIntegral (fromEnum SelfKey) * fromIntegral keysPerGroup
 
 -- | Every contact of this step, owned by the lower-numbered body of each
 -- pair, in body order (warm starting relies on the order).
@@ -531,10 +559,11 @@ collide sp l w = do
   count <- readMeta w BodyCount
   let images = quotientImages (spaceQuotient sp)
       sec = sectors (polyDirections (polygon l))
-      -- on a lattice, only images that come within reach of the square
-      nearDomain = case spaceQuotient sp of
-        Lattice period _ -> \q reach -> whenPositive (reach - distanceToDomain period q)
-        _ -> \_ _ act -> act
+      -- where the quotient has a fundamental domain, only images that
+      -- come within reach of it
+      nearDomain = case domainDistance (spaceQuotient sp) of
+        Just distance -> \q reach -> whenPositive (reach - distance q)
+        Nothing -> \_ _ act -> act
   forEach (toIndex count) $ \i -> do
     p <- read3 (wPos w) i
     ri <- readSlot w i BoundRadius
@@ -564,8 +593,8 @@ collide sp l w = do
           nearCount <- readRef found
           forEach (toIndex nearCount) $ \k -> do
             j <- toIndex <$> readArray (wNear w) k
-            pairContacts l sec w ((toScalar j + 1) * 64 + keyOffset) i j g
+            pairContacts l sec w ((toScalar j + 1) * fromIntegral keysPerBody + keyOffset) i j g
     pairs identityIso 0 False
-    mapM_ (\(k, g) -> pairs g (16 + 4 * fromIntegral k) (selfImage g)) (zip [0 :: Int ..] images)
+    mapM_ (\(k, g) -> pairs g (fromIntegral (keysPerGroup * imageKeyGroup k)) (selfImage g)) (zip [0 :: Int ..] images)
     boundaryContacts sp l w i
     selfContacts sp l w i

@@ -30,7 +30,7 @@ pickBody sp l w q = do
   writeMeta w PickedSign 1
   count <- readMeta w BodyCount
   best <- newRef 0
-  let signs = if spaceQuotient sp == Antipodal then [1, -1] else [1]
+  let signs = map constant (pickSigns (spaceQuotient sp))
   forEach (toIndex count) $ \i -> do
     f <- bodyFrame w i
     mapM_ (\sgn -> do

@@ -1,12 +1,22 @@
--- | The engine's parameters: the record a native world is set with, its
--- defaults, and where each parameter sits in the world's parameter array
--- (the page's engine object lists the same slots and defaults, generated
--- from here).
+-- | The engine's parameters, defined once: the record a native world is
+-- set with, its defaults, where each parameter sits in the world's
+-- parameter array, and the scene keys that set them with the values they
+-- take. The page's engine object carries the slots, the defaults and the
+-- scene keys with their ranges and messages, generated from here
+-- ("Manifold.Stage.EngineScript"); the page's scene reader checks a scene
+-- with them.
 module Manifold.Params
   ( Params (..)
   , defaultParams
   , paramValue
+  , setParam
   , writeParams
+    -- * Scene keys
+  , SceneKey (..)
+  , Range (..)
+  , sceneKeys
+  , outOfRange
+  , rangeDescription
   ) where
 
 import qualified Data.Vector.Unboxed.Mutable as MV
@@ -51,6 +61,85 @@ paramValue p = \case
   PolygonStep -> pPolygonStep p
   where switch b = if b then 1 else 0
 
+-- | A parameter set to a value as the parameter array would hold it (the
+-- inverse of 'paramValue'; a switch is on above 0, a count is rounded).
+setParam :: Param -> Double -> Params -> Params
+setParam k x p = case k of
+  Dt -> p { pDt = x }
+  GravityOn -> p { pGravity = x > 0 }
+  Iterations -> p { pIterations = round x }
+  Friction -> p { pFriction = x }
+  Restitution -> p { pRestitution = x }
+  Baumgarte -> p { pBaumgarte = x }
+  Slop -> p { pSlop = x }
+  BounceThreshold -> p { pBounceThreshold = x }
+  WarmStart -> p { pWarmStart = x > 0 }
+  MaxCorrection -> p { pMaxCorrection = x }
+  PolygonStep -> p { pPolygonStep = x }
+
 -- | Set a world's parameter array.
 writeParams :: WorldArrays (MV.IOVector Double) -> Params -> IO ()
 writeParams w p = mapM_ (\k -> MV.write (wParams w) (fromEnum k) (paramValue p k)) [minBound .. maxBound]
+
+-- Scene keys -----------------------------------------------------------------
+
+-- | A key of a scene file that sets a parameter.
+data SceneKey = SceneKey
+  { keyName :: String
+  , keyParam :: Param
+  , keyRange :: Range
+  } deriving (Show, Eq)
+
+-- | The values a scene key takes.
+data Range
+  = Switch -- ^ @true@ or @false@
+  | Positive -- ^ a number above 0
+  | NonNegative -- ^ a number, 0 or above
+  | Fraction -- ^ a number from 0 to 1
+  | Count Int -- ^ a whole number from 1 to this
+  deriving (Show, Eq)
+
+-- | The parameters a scene sets, in the order a scene is written; a key
+-- left out keeps its 'defaultParams' value.
+sceneKeys :: [SceneKey]
+sceneKeys =
+  [ SceneKey "dt" Dt Positive
+  , SceneKey "gravity" GravityOn Switch
+  , SceneKey "iterations" Iterations (Count 1000)
+  , SceneKey "friction" Friction NonNegative
+  , SceneKey "restitution" Restitution Fraction
+  ]
+
+-- | Why a (finite) number is not in a range, or 'Nothing' when it is; a
+-- switch is a JSON boolean, checked as such.
+--
+-- >>> outOfRange (Count 1000) 2.5
+-- Just "must be a whole number from 1 to 1000"
+-- >>> outOfRange Fraction 0.3
+-- Nothing
+outOfRange :: Range -> Double -> Maybe String
+outOfRange r x = case r of
+  Switch -> Nothing
+  Positive | x <= 0 -> Just "must be positive"
+  NonNegative | x < 0 -> Just "must not be negative"
+  Fraction
+    | x < 0 -> Just "must not be negative"
+    | x > 1 -> Just "must be between 0 and 1"
+  Count n
+    | x <= 0 -> Just "must be positive"
+    | x /= fromIntegral (round x :: Int) || x > fromIntegral n -> Just ("must be a whole number from 1 to " ++ show n)
+  _ -> Nothing
+
+-- | The range as the page's scene reader takes it: the bounds and the
+-- message for each way out of them, as @(field, value)@ pairs of a
+-- JavaScript object (numbers and strings already printed).
+rangeDescription :: Range -> [(String, String)]
+rangeDescription = \case
+  Switch -> [("kind", str "switch")]
+  Positive -> [("kind", str "number"), ("above", "0"), ("low", str "must be positive")]
+  NonNegative -> [("kind", str "number"), ("atLeast", "0"), ("low", str "must not be negative")]
+  Fraction -> [ ("kind", str "number"), ("atLeast", "0"), ("low", str "must not be negative")
+              , ("atMost", "1"), ("high", str "must be between 0 and 1") ]
+  Count n -> [ ("kind", str "number"), ("above", "0"), ("low", str "must be positive"), ("atMost", show n)
+             , ("whole", "true"), ("high", str ("must be a whole number from 1 to " ++ show n)) ]
+  where str v = show v

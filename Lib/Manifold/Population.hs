@@ -8,14 +8,13 @@ module Manifold.Population
   , addBodyWith
   , removeBody
   , placementAngle
-  , massSamples
   ) where
 
 import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^))
 
-import Manifold.Body (PolygonParams (..))
+import Manifold.Body (PolygonParams (..), massIntegrals)
 import Manifold.Field
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -32,10 +31,6 @@ data BodyArgs s = BodyArgs
   , baAngle :: s
   , baOmega :: s
   }
-
--- | Midpoint-rule samples of the outline for the mass integrals.
-massSamples :: Int
-massSamples = 1024
 
 -- | Add a body with the given outline (for size 1). Sets 'LastAdded' to its
 -- index, or to −1 when the world is full or the position does not project
@@ -59,19 +54,7 @@ addBodyWith sp l w outline b = do
         axis' <- share3 axis
         write3 (wAxis w) i axis'
         write3 (wNormal w) i n
-        -- mass ρ·½∫s²dθ and moment of inertia ρ·¼∫s⁴dθ
-        area <- newRef 0
-        quartic <- newRef 0
-        let h = constant (2 * pi / fromIntegral massSamples)
-        forEach (fromIntegral massSamples) $ \k -> do
-          s <- share (baSize b * outline ((toScalar k + 0.5) * h))
-          s2 <- share (s * s)
-          modifyRef area (+ s2)
-          modifyRef quartic (+ s2 * s2)
-        a2 <- readRef area
-        a4 <- readRef quartic
-        m <- share (baDensity b * 0.5 * h * a2)
-        inertia <- share (baDensity b * 0.25 * h * a4)
+        (m, inertia) <- massIntegrals outline (baSize b) (baDensity b)
         writeSlot w i Angle (baAngle b)
         writeSlot w i Omega (movable * baOmega b)
         writeSlot w i InvMass (select movable (select m (recip m) 0) 0)

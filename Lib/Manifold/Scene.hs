@@ -8,13 +8,12 @@ module Manifold.Scene
   , BodySpec (..)
   , parseScene
   , sceneJSON
-  , sceneParams
   , loadScene
   , bodyInit
   , sceneOfWorld
   ) where
 
-import Control.Monad (forM, unless, when)
+import Control.Monad (foldM, forM, unless, when)
 import qualified Data.Aeson as A
 import Data.Aeson.Internal (IResult (ISuccess), formatError)
 import qualified Data.Aeson.Key as K
@@ -30,6 +29,7 @@ import Linear.V3 (V3 (..))
 
 import Manifold.Body
 import Manifold.Engine
+import Manifold.Params
 import Manifold.Space
 import Manifold.Spaces
 import Manifold.World (contactsPerBody, layout)
@@ -48,11 +48,7 @@ data BodySpec = BodySpec
 
 data Scene = Scene
   { sceneSpace :: Space
-  , sceneDt :: Double
-  , sceneGravity :: Bool
-  , sceneIterations :: Int
-  , sceneFriction :: Double
-  , sceneRestitution :: Double
+  , sceneParams :: Params -- ^ what the scene's keys ('sceneKeys') set, the rest defaults
   , sceneBodies :: [BodySpec]
   }
 
@@ -150,22 +146,12 @@ parseScene :: BL.ByteString -> P Scene
 parseScene text = do
   v <- either (\(path, e) -> Left ("not JSON: " ++ formatError path e)) pure
          (AP.eitherDecodeWith (AP.jsonLast <* AC.skipSpace <* AC.endOfInput) ISuccess text)
-  o <- object "$" ["space", "dt", "gravity", "iterations", "friction", "restitution", "bodies"] v
+  o <- object "$" (["space"] ++ map keyName sceneKeys ++ ["bodies"]) v
   sp <- required "$" o "space" $ \path -> \case
     A.String s -> maybe (problem path ("unknown space " ++ show (T.unpack s) ++ "; the spaces are " ++ intercalate ", " spaceNames))
                         pure (lookupSpace (T.unpack s))
     _ -> problem path "must be a space name"
-  dt <- optional "$" o "dt" 0.01 positive
-  gravity <- optional "$" o "gravity" True boolean
-  iterations <- optional "$" o "iterations" 8 $ \path x -> do
-    n <- positive path x
-    when (n /= fromIntegral (round n :: Int) || n > 1000) (problem path "must be a whole number from 1 to 1000")
-    pure (round n)
-  friction <- optional "$" o "friction" 0.4 nonNegative
-  restitution <- optional "$" o "restitution" 0 $ \path x -> do
-    e <- nonNegative path x
-    when (e > 1) (problem path "must be between 0 and 1")
-    pure e
+  params <- foldM (sceneKey o) defaultParams sceneKeys
   bodies <- optional "$" o "bodies" [] $ \path -> \case
     A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
     _ -> problem path "must be an array of bodies"
@@ -174,15 +160,23 @@ parseScene text = do
   when (remembered > room) $
     problem "$.bodies" (show remembered ++ " remembered contact impulses, more than " ++ show (length bodies)
                          ++ " bodies remember (" ++ show contactsPerBody ++ " a body)")
-  pure (Scene sp dt gravity iterations friction restitution bodies)
+  pure (Scene sp params bodies)
+
+-- | A scene key's value, if the scene gives it, set in the parameters.
+sceneKey :: KM.KeyMap A.Value -> Params -> SceneKey -> P Params
+sceneKey o p k = optional "$" o (keyName k) p $ \path v -> do
+  x <- case keyRange k of
+    Switch -> (\b -> if b then 1 else 0) <$> boolean path v
+    r -> number path v >>= \x -> maybe (pure x) (problem path) (outOfRange r x)
+  pure (setParam (keyParam k) x p)
 
 -- | A scene as the JSON 'parseScene' reads (numbers are printed so that
 -- they read back exactly).
 sceneJSON :: Scene -> A.Value
 sceneJSON s = A.object
-  [ "space" A..= spaceName (sceneSpace s), "dt" A..= sceneDt s, "gravity" A..= sceneGravity s
-  , "iterations" A..= sceneIterations s, "friction" A..= sceneFriction s
-  , "restitution" A..= sceneRestitution s, "bodies" A..= map bodyJSON (sceneBodies s) ]
+  ( ["space" A..= spaceName (sceneSpace s)]
+    ++ [ K.fromString (keyName k) A..= keyJSON k | k <- sceneKeys ]
+    ++ ["bodies" A..= map bodyJSON (sceneBodies s)] )
   where
     bodyJSON b = A.object $
       [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b
@@ -194,11 +188,10 @@ sceneJSON s = A.object
       SquareShape -> A.String "square"
       PolygonShape n -> A.object ["polygon" A..= n]
     v3 (V3 x y z) = [x, y, z]
-
-sceneParams :: Scene -> Params
-sceneParams s = defaultParams
-  { pDt = sceneDt s, pGravity = sceneGravity s, pIterations = sceneIterations s
-  , pFriction = sceneFriction s, pRestitution = sceneRestitution s }
+    keyJSON k = let x = paramValue (sceneParams s) (keyParam k) in case keyRange k of
+      Switch -> A.Bool (x > 0)
+      Count _ -> A.toJSON (round x :: Int)
+      _ -> A.toJSON x
 
 bodyInit :: BodySpec -> BodyInit
 bodyInit b = BodyInit (shapeFromKind (bsShape b)) (bsSize b) (bsDensity b) (bsStatic b) (bsP b) (bsV b) (bsAngle0 b) (bsOmega0 b)

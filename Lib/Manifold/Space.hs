@@ -19,6 +19,9 @@ module Manifold.Space
   , wrapLattice
   , nearestImage
   , distanceToDomain
+  , quotientWrap
+  , domainDistance
+  , pickSigns
   , hasBoundary
   , field
   , evalField
@@ -114,6 +117,32 @@ distanceToDomain period (V3 x _ z) =
       dx = maxF 0 (abs x - h)
       dz = maxF 0 (abs z - h)
   in sqrt (dx * dx + dz * dz)
+
+-- The quotient as the engine meets it: the collision phase, the motion,
+-- picking and grabbing ask these (and 'quotientImages', 'nearestImage',
+-- 'selfImage'), never the quotient's constructors.
+
+-- | Where a point that left the fundamental domain comes back into it,
+-- and the orientation it comes back with (1, or −1 through a flipping
+-- edge); 'Nothing' for a quotient whose points never leave it.
+quotientWrap :: Field a => Quotient -> Maybe (V3 a -> (V3 a, a))
+quotientWrap = \case
+  Lattice period flipped -> Just (wrapLattice period flipped)
+  _ -> Nothing
+
+-- | How far a point is outside the fundamental domain, for a quotient that
+-- has one: a body's images farther than its reach meet nothing.
+domainDistance :: Field a => Quotient -> Maybe (V3 a -> a)
+domainDistance = \case
+  Lattice period _ -> Just (distanceToDomain period)
+  _ -> Nothing
+
+-- | The signs a pick tries a surface point with: a body of the antipodal
+-- quotient is also found through the image −q of the point picked.
+pickSigns :: Quotient -> [Double]
+pickSigns = \case
+  Antipodal -> [1, -1]
+  _ -> [1]
 
 -- | Of the images of point @q@ (itself included), the one nearest @ref@;
 -- with no quotient (or the antipodal one, whose images are far apart), @q@.

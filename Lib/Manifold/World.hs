@@ -70,7 +70,7 @@ import Data.Maybe (isJust)
 import Linear.Metric (norm, quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
 
-import Manifold.Body (PolygonParams (..))
+import Manifold.Body (PolygonParams (..), vertexIndex)
 import Manifold.Field
 import Manifold.Space
 import Manifold.Stage.Expr (literalValue, sym)
@@ -395,12 +395,12 @@ integrate sp w = do
         ok = minF (finiteness (concatMap toList3 [p', v', axis', n'] ++ [angle', residual]))
                   (constant onSurfaceTolerance - abs residual)
     ifPositive ok
-      (case spaceQuotient sp of
-        Lattice period flipped -> do
-          -- back into the fundamental square; through a flipping edge the
+      (case quotientWrap (spaceQuotient sp) of
+        Just wrap -> do
+          -- back into the fundamental domain; through a flipping edge the
           -- body comes out mirrored (z of every vector, and its angle and
           -- angular velocity, change sign: orientation reverses)
-          let (p'', s) = wrapLattice period flipped p'
+          let (p'', s) = wrap p'
               mirror (V3 x y z) = V3 x y (s * z)
           sS <- share s
           write3 (wPos w) i p''
@@ -414,7 +414,7 @@ integrate sp w = do
           held <- readMouse w MBody
           whenPositive (active * (0.5 - abs (held - toScalar i))) $
             readMouse w MLocalTheta >>= writeMouse w MLocalTheta . (sS *)
-        _ -> do
+        Nothing -> do
           write3 (wPos w) i p'
           write3 (wVel w) i v'
           write3 (wAxis w) i axis'
@@ -473,7 +473,7 @@ polygoniseBody sp l w i = do
       nd = polyDirections pp
       ns = polySteps pp
       vpb = fromIntegral (verticesPerBody l)
-      vertexIx d k = vpb * i + 1 + d * fromIntegral ns + fromIntegral (k - 1) -- step k (1..ns) along d
+      vertexIx d k = vpb * i + vertexIndex pp d (fromIntegral k) -- step k (1..ns) along d
       outlineIx d = fromIntegral nd * i + d
   p <- read3 (wPos w) i
   axis <- read3 (wAxis w) i

@@ -148,8 +148,8 @@ void main() {
     }
 
     // The per-body templates, and buffers for `capacity` bodies in any form.
-    // The engine's verts hold a body as vertex 0 the centre, vertex
-    // 1 + d·steps + (k − 1) step k along direction d. A body is drawn as its
+    // The engine's verts hold a body as vertex 0 the centre and step k
+    // along direction d at E.vertexIndex(d, k) (generated). A body is drawn as its
     // whole mesh (a fan round the centre, then quads between the rings of
     // geodesic steps) or, where that looks the same (chooseForms), as a
     // coarser mesh of the same kind: every s-th direction (s = 4, 3, 2, 1,
@@ -164,13 +164,14 @@ void main() {
     buildStatic(E, capacity) {
       const gl = this.gl;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
-      const mesh = function (d, k) { return k === 0 ? 0 : 1 + (d % nd) * ns + (k - 1); };
-      const markOf = function (t) { // the mark of the engine's vertex t of a body
-        if (t === 0) return [0, 0, 0];
-        const d = Math.floor((t - 1) / ns), k = (t - 1) % ns + 1;
+      const mesh = function (d, k) { return k === 0 ? 0 : E.vertexIndex(d % nd, k); };
+      // the mark of each of the engine's vertices of a body, by its index
+      const marks = [[0, 0, 0]];
+      for (let d = 0; d < nd; d++) {
         const c = Math.cos(2 * Math.PI * d / nd), sn = Math.sin(2 * Math.PI * d / nd);
-        return [k / ns, d === 0 ? k / ns : c * k / ns, d === 0 ? 0 : sn * k / ns];
-      };
+        for (let k = 1; k <= ns; k++) marks[E.vertexIndex(d, k)] = [k / ns, d === 0 ? k / ns : c * k / ns, d === 0 ? 0 : sn * k / ns];
+      }
+      const markOf = function (t) { return marks[t]; };
       // the mesh of every s-th direction and every r-th ring: its vertices as
       // offsets into the engine's body, its triangles over those
       const form = function (s, r) {
@@ -248,11 +249,11 @@ void main() {
           for (let a = 0; fits && a < nd; a += s) {
             const b = (a + s) % nd;
             for (let j = 0; fits && j < s; j++) {
-              const t = j / s, q0 = o + 3 * (a + j) * ns;
+              const t = j / s;
               // the form's points on the line j/s of the way from direction a to b, at its kept rings
               // (L[0] the centre), then direction a + j's vertices against them, the outline first
               for (let m = r, w = 3; m <= ns; m += r, w += 3) {
-                const pa = o + 3 * (a * ns + m), pb = o + 3 * (b * ns + m);
+                const pa = o + 3 * E.vertexIndex(a, m), pb = o + 3 * E.vertexIndex(b, m);
                 L[w] = (1 - t) * v[pa] + t * v[pb];
                 L[w + 1] = (1 - t) * v[pa + 1] + t * v[pb + 1];
                 L[w + 2] = (1 - t) * v[pa + 2] + t * v[pb + 2];
@@ -261,7 +262,7 @@ void main() {
               for (let k = ns; k >= 1; k--) {
                 const m0 = (k - k % r) / r, u = (k % r) / r;
                 if (u === 0 && j === 0) continue; // the form has this vertex where the mesh has it
-                const w0 = 3 * m0, w1 = u === 0 ? w0 : w0 + 3, q = q0 + 3 * k;
+                const w0 = 3 * m0, w1 = u === 0 ? w0 : w0 + 3, q = o + 3 * E.vertexIndex(a + j, k);
                 const ex = v[q] - ((1 - u) * L[w0] + u * L[w1]);
                 const ey = v[q + 1] - ((1 - u) * L[w0 + 1] + u * L[w1 + 1]);
                 const ez = v[q + 2] - ((1 - u) * L[w0 + 2] + u * L[w1 + 2]);

@@ -84,7 +84,7 @@
       };
       function wrap(d) { return d - L * Math.round(d / L); }
       const pts = [];
-      for (let d = 0; d < E.directions; d++) pts.push(unwrap(at(1 + d * E.steps + E.steps - 1)));
+      for (let d = 0; d < E.directions; d++) pts.push(unwrap(at(E.vertexIndex(d, E.steps))));
       return { centre: [c[0], c[2]], outline: pts };
     }
 
@@ -142,7 +142,7 @@
       const F = this.squareFrame(canvas);
       const ctx = canvas.getContext("2d");
       ctx.putImageData(this.squareBackground(pane, canvas, F, curvatureOf), 0, 0);
-      const half = this.def.half, L = 2 * half;
+      const half = this.def.half;
       const a = F.toPixel(-half, half), b = F.toPixel(half, -half);
       ctx.save();
       ctx.beginPath();
@@ -157,27 +157,27 @@
       }
       const n = world.count();
       const lw = Math.max(1, (W.devicePixelRatio || 1) * 1.2);
+      const shifts = [[0, 0]].concat(W.Manifold.spaces[this.def.flat].images.map(function (g) { return [g[3], g[5]]; }));
       for (let i = 0; i < n; i++) {
         const o = this.outlineInSquare(world, i, viaChart);
         const colour = world.info[i] ? world.info[i].colour : [0.8, 0.8, 0.8];
-        // the body and its images across the edges
-        for (const dx of [-L, 0, L]) {
-          for (const dz of [-L, 0, L]) {
-            ctx.beginPath();
-            o.outline.forEach(function (q, k) {
-              const p = F.toPixel(q[0] + dx, q[1] + dz);
-              if (k === 0) ctx.moveTo(p[0], p[1]); else ctx.lineTo(p[0], p[1]);
-            });
-            ctx.closePath();
-            ctx.fillStyle = css(colour);
-            ctx.fill();
-            ctx.strokeStyle = "rgba(10,10,10,0.9)";
-            ctx.lineWidth = lw;
-            ctx.stroke();
-            const c = F.toPixel(o.centre[0] + dx, o.centre[1] + dz), e = F.toPixel(o.outline[0][0] + dx, o.outline[0][1] + dz);
-            ctx.strokeStyle = "rgba(255,255,255,0.85)";
-            ctx.beginPath(); ctx.moveTo(c[0], c[1]); ctx.lineTo(e[0], e[1]); ctx.stroke();
-          }
+        // the body and its images across the edges (the flat torus's
+        // quotient images, generated: translations of the square's side)
+        for (const [dx, dz] of shifts) {
+          ctx.beginPath();
+          o.outline.forEach(function (q, k) {
+            const p = F.toPixel(q[0] + dx, q[1] + dz);
+            if (k === 0) ctx.moveTo(p[0], p[1]); else ctx.lineTo(p[0], p[1]);
+          });
+          ctx.closePath();
+          ctx.fillStyle = css(colour);
+          ctx.fill();
+          ctx.strokeStyle = "rgba(10,10,10,0.9)";
+          ctx.lineWidth = lw;
+          ctx.stroke();
+          const c = F.toPixel(o.centre[0] + dx, o.centre[1] + dz), e = F.toPixel(o.outline[0][0] + dx, o.outline[0][1] + dz);
+          ctx.strokeStyle = "rgba(255,255,255,0.85)";
+          ctx.beginPath(); ctx.moveTo(c[0], c[1]); ctx.lineTo(e[0], e[1]); ctx.stroke();
         }
       }
       ctx.restore();

@@ -18,7 +18,9 @@
   const STATIC_COLOUR = [0.42, 0.45, 0.50];
 
   // ---- scenes: validation naming the JSON path of the first problem (as Manifold.Scene does) ----
-  const SCENE_KEYS = ["space", "dt", "gravity", "iterations", "friction", "restitution", "bodies"];
+  // The keys that set engine parameters, with the values they take, are
+  // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
+  function sceneKeys() { return W.Manifold.sceneKeys; }
   const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "impulses"];
 
   class SceneError extends Error {
@@ -120,7 +122,8 @@
         throw new SceneError("not JSON: " + e.message);
       }
     }
-    const o = object("$", SCENE_KEYS, v);
+    const keys = sceneKeys();
+    const o = object("$", ["space"].concat(keys.map(function (k) { return k.key; }), ["bodies"]), v);
     const space = required("$", o, "space", function (path, s) {
       if (typeof s !== "string") problem(path, "must be a space name");
       if (spaceNames.indexOf(s) < 0) problem(path, "unknown space " + JSON.stringify(s) + "; the spaces are " + spaceNames.join(", "));
@@ -128,25 +131,32 @@
     });
     const scene = {
       space: space,
-      dt: optional("$", o, "dt", 0.01, positive),
-      gravity: optional("$", o, "gravity", true, boolean),
-      iterations: optional("$", o, "iterations", 8, function (path, x) {
-        positive(path, x);
-        if (x !== Math.round(x) || x > 1000) problem(path, "must be a whole number from 1 to 1000");
-        return x;
-      }),
-      friction: optional("$", o, "friction", 0.4, nonNegative),
-      restitution: optional("$", o, "restitution", 0, function (path, x) {
-        nonNegative(path, x);
-        if (x > 1) problem(path, "must be between 0 and 1");
-        return x;
-      }),
       bodies: optional("$", o, "bodies", [], function (path, a) {
         if (!Array.isArray(a)) problem(path, "must be an array of bodies");
         return a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
       }),
     };
+    // a key the scene leaves out takes the engine's default
+    keys.forEach(function (k) {
+      scene[k.key] = optional("$", o, k.key, k.default, function (path, x) { return keyValue(path, x, k); });
+    });
     return scene;
+  }
+
+  // A scene key's value, checked against its generated range.
+  function keyValue(path, x, k) {
+    if (k.kind === "switch") return boolean(path, x);
+    number(path, x);
+    if ((k.above !== undefined && !(x > k.above)) || (k.atLeast !== undefined && x < k.atLeast)) problem(path, k.low);
+    if ((k.atMost !== undefined && x > k.atMost) || (k.whole && x !== Math.round(x))) problem(path, k.high);
+    return x;
+  }
+
+  // A parsed scene's parameters as the engine's (by parameter name).
+  function sceneParams(scene) {
+    const p = {};
+    sceneKeys().forEach(function (k) { p[k.param] = k.kind === "switch" ? (scene[k.key] ? 1 : 0) : scene[k.key]; });
+    return p;
   }
 
   function shapeCode(s) {
@@ -171,7 +181,6 @@
       this.name = name;
       this.space = space;
       this.engine = space.engine;
-      this.antipodal = space.quotient === "antipodal";
       this.images = space.images || [];
       this.info = [];          // per body: { shape, density, static, colour }
       this.added = 0;          // bodies ever added (picks the next colour)
@@ -389,15 +398,12 @@
 
     // The world as a scene (JSON value).
     scene() {
-      return {
-        space: this.name,
-        dt: this.param("dt"),
-        gravity: this.param("gravityOn") > 0,
-        iterations: this.param("iterations"),
-        friction: this.param("friction"),
-        restitution: this.param("restitution"),
-        bodies: this.bodies(),
-      };
+      const scene = { space: this.name };
+      sceneKeys().forEach(function (k) {
+        scene[k.key] = k.kind === "switch" ? this.param(k.param) > 0 : this.param(k.param);
+      }, this);
+      scene.bodies = this.bodies();
+      return scene;
     }
 
     // Replaces the world's bodies and parameters by a parsed scene (see parseScene),
@@ -407,8 +413,7 @@
       const saved = { arrays: this.arrays.map(function (x) { return x; }), capacity: this.capacity,
         info: this.info, added: this.added };
       this.clear();
-      this.setParams({ dt: scene.dt, gravityOn: scene.gravity ? 1 : 0, iterations: scene.iterations,
-        friction: scene.friction, restitution: scene.restitution });
+      this.setParams(sceneParams(scene));
       try {
         scene.bodies.forEach(function (b, k) {
           try {
@@ -447,8 +452,9 @@
       });
       const want = n === undefined || n === null ? base.length : n;
       const bodies = base.slice(0, want);
-      this.load({ space: this.name, dt: E.defaults.dt, gravity: E.defaults.gravityOn > 0, iterations: E.defaults.iterations,
-        friction: E.defaults.friction, restitution: E.defaults.restitution, bodies: bodies });
+      const scene = { space: this.name, bodies: bodies };
+      sceneKeys().forEach(function (k) { scene[k.key] = k.kind === "switch" ? E.defaults[k.param] > 0 : E.defaults[k.param]; });
+      this.load(scene);
       if (bodies.length < want) this.fill(want, base);
     }
 
@@ -485,9 +491,9 @@
     // Whether body i's centre or an outline vertex lies in another body (by
     // the engine's pickBody).
     overlaps(i) {
-      const E = this.engine, vpb = E.verticesPerBody, steps = E.steps;
+      const E = this.engine, vpb = E.verticesPerBody;
       for (let d = -1; d < E.directions; d++) {
-        const o = 3 * (vpb * i + (d < 0 ? 0 : 1 + d * steps + steps - 1));
+        const o = 3 * (vpb * i + (d < 0 ? 0 : E.vertexIndex(d, E.steps)));
         const hit = this.pick([this.a.verts[o], this.a.verts[o + 1], this.a.verts[o + 2]]);
         if (hit && hit.index !== i) return true;
       }

@@ -6,19 +6,22 @@
 module Manifold.Stage.EngineScript
   ( engineProcedures
   , engineObject
+  , sceneKeysArray
   ) where
 
 import Data.Char (toLower)
 import Data.Foldable (toList)
-import Data.List (intercalate)
+import Data.List (dropWhileEnd, intercalate)
 
 import Manifold.Params
 import Manifold.Program
-import Manifold.Body (PolygonParams (..))
+import Manifold.Body (PolygonParams (..), vertexIndex)
+import Manifold.Collide (KeyGroup (..), keysPerBody, keysPerGroup)
 import Manifold.Space
 import Manifold.Stage.Code (Function (..))
 import Manifold.Stage.Imp (Procedure (..), stageFunctions)
-import Manifold.Stage.Print (Target (..), printProcedure)
+import Manifold.Stage.Expr (sym)
+import Manifold.Stage.Print (FnType (..), Target (..), printFunction, printProcedure)
 import Manifold.World
 
 -- | The engine's functions for one space, as JavaScript (the step, which
@@ -59,6 +62,10 @@ engineObject l subroutines =
     , "  slots: " ++ enumObj Angle ++ ","
     , "  contact: " ++ enumObj CA ++ ","
     , "  prev: " ++ enumObj PrevOwner ++ ", prevStride: " ++ show prevStride ++ ","
+    , "  // a contact's key: (other body + 1) * perBody + group * perGroup + point (Manifold.Collide)"
+    , "  keys: { perBody: " ++ show keysPerBody ++ ", perGroup: " ++ show keysPerGroup ++ ", groups: " ++ enumObj PairKey ++ " },"
+    , "  // where step k (1 .. steps) along direction d sits among a body's vertices (0 is the centre)"
+    , "  vertexIndex: " ++ dropWhileEnd (== '\n') (printFunction JavaScript "vertexIndex" (FnType ["d", "k"] False) [vertexIndex (polygon l) (sym "d") (sym "k")]) ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","
     , "  defaults: { " ++ intercalate ", " [jsName k ++ ": " ++ show (paramValue defaultParams k) | k <- [minBound .. maxBound :: Param]] ++ " },"
     , "  phases: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ phaseFunction name ++ "]" | (name, _) <- stagedPhases] ++ "],"
@@ -68,6 +75,21 @@ engineObject l subroutines =
     , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
     , "}"
     ]
+
+-- | The scene keys that set parameters ('sceneKeys'), as a JavaScript
+-- array of @{ key, param, default, kind, … }@: the key, the parameter it
+-- sets (its name in the engine object's @params@ and @defaults@), the
+-- value a scene without it gets, and its range ('rangeDescription'), which
+-- the page's scene reader checks.
+sceneKeysArray :: String
+sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
+  where
+    entry k = "  { " ++ intercalate ", " [ f ++ ": " ++ v | (f, v) <- fields k ++ rangeDescription (keyRange k) ] ++ " },\n"
+    fields k =
+      [ ("key", show (keyName k)), ("param", show (jsName (keyParam k)))
+      , ("default", let x = paramValue defaultParams (keyParam k) in case keyRange k of
+            Switch -> if x > 0 then "true" else "false"
+            _ -> show x) ]
 
 -- | A constructor's name as the page's key: @GravityOn@ → @gravityOn@.
 jsName :: Show a => a -> String

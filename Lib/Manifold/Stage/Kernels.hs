@@ -26,7 +26,7 @@ import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
-import Manifold.Stage.EngineScript (engineObject, engineProcedures)
+import Manifold.Stage.EngineScript (engineObject, engineProcedures, sceneKeysArray)
 import Manifold.Surface (fieldGradient, projectToSurfaceWith, traceDistance)
 import Manifold.World (Layout, layout)
 
@@ -116,6 +116,8 @@ spaceIndexScript :: [Space] -> String
 spaceIndexScript spaces = unlines $
   [ generatedMarker ++ " from Lib/Manifold/Spaces.hs (the catalogue). Do not edit."
   , "globalThis.Manifold = globalThis.Manifold || { spaces: {} };"
+  , "// the scene keys that set the engine's parameters, with the values they take (Lib/Manifold/Params.hs)"
+  , "globalThis.Manifold.sceneKeys = " ++ sceneKeysArray ++ ";"
   , "globalThis.Manifold.spaceIndex = ["
   ] ++
   [ "  { name: " ++ jsString (spaceName s) ++ ", description: " ++ jsString (spaceDescription s)
