@@ -405,10 +405,15 @@ spec = do
         (ok, d, k) <- runStack defaultParams { pRestitution = e }
         labelled ("stack: restitution " ++ show e ++ " (8 iterations, warm start) ->")
           ((if ok then "stands" else "falls") ++ ", max drift / size " ++ fmt (d / boxSize) ++ ", max height change / size " ++ fmt (k / boxSize))
-      -- warm starting is what lets few iterations hold a stack
+        -- a bouncing stack may lean, but it stays a stack: no box moves by its size
+        (e, d < boxSize, k < boxSize) `shouldBe` (e, True, True)
+      -- warm starting is what lets few iterations hold a stack (it stands
+      -- with the default 8), and friction is what keeps it from sliding
       let rank = maybe (maxBound :: Int) id
-      rank warmOn `shouldSatisfy` (<= rank warmOff)
-      warmOn `shouldSatisfy` (/= Nothing)
+      rank warmOn `shouldSatisfy` (<= 8)
+      rank warmOn `shouldSatisfy` (< rank warmOff)
+      rank warmOn `shouldSatisfy` (< rank frictionless)
+      rank frictionless `shouldSatisfy` (<= rank frictionlessCold)
 
   describe "gathering" $
     it "gathers bodies at the sphere's south pole under its gravity, packed, at rest, without overlapping > 2 %" $ do

@@ -180,7 +180,9 @@ readBody :: NativeWorld -> Int -> IO BodyState
 readBody w i = do
   let a = nwArrays w
       r3 arr = V3 <$> MV.read arr (3 * i) <*> MV.read arr (3 * i + 1) <*> MV.read arr (3 * i + 2)
-  BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> MV.read (wScalars a) (scalarSlots * i) <*> MV.read (wScalars a) (scalarSlots * i + 1) <*> r3 (wAxis a)
+      slot :: Slot -> IO Double
+      slot k = MV.read (wScalars a) (scalarSlots * i + fromEnum k)
+  BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> slot Angle <*> slot Omega <*> r3 (wAxis a)
 
 -- | The angle that places body @i@'s outline where it is now (see
 -- 'placementAngle'): a scene's @angle@.

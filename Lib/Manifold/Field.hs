@@ -12,7 +12,6 @@ module Manifold.Field
   ( Field (..)
   , clampF
   , atan2F
-  , smoothMinF
   , ScalarFn (..)
   , VectorFn (..)
   ) where
@@ -78,13 +77,6 @@ atan2F y x =
   let r = sqrt (x * x + y * y)
   in select x (2 * atan (y / (r + x)))
        (select (abs y) (2 * atan ((r - x) / y)) (select (negate x) pi 0))
-
--- | Polynomial smooth minimum with blend width @k@ (Quilez), used to round
--- shapes such as the cube.
-smoothMinF :: Field a => a -> a -> a -> a
-smoothMinF k a b =
-  let h = clampF 0 1 (0.5 + 0.5 * (b - a) / k)
-  in b * (1 - h) + a * h - k * h * (1 - h)
 
 -- | A scalar function of a point, polymorphic in the scalar: a distance field,
 -- a boundary @b(p) >= 0@. Built by 'Manifold.AD.scalarFn', which also keeps

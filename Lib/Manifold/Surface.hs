@@ -8,11 +8,9 @@
 module Manifold.Surface
   ( fieldGradient
   , unitNormal
-  , distanceEstimate
   , traceDistance
   , projectToSurface
   , projectToSurfaceWith
-  , projectAlong
   , projectAlongWithGradient
   , newtonAlong
   , stepProjectionIterations
@@ -54,10 +52,6 @@ safeNormalize v =
 unitNormal :: Field a => ScalarFn -> V3 a -> V3 a
 {-# INLINE unitNormal #-}
 unitNormal f = safeNormalize . fieldGradient f
-
--- | The first-order distance to the surface, @f/|∇f|@.
-distanceEstimate :: Field a => ScalarFn -> V3 a -> a
-distanceEstimate sf p = evalFn sf p / norm (fieldGradient sf p)
 
 -- | The sphere tracer's step: @|f|/|∇f|@, or @|f|@ where the gradient is
 -- zero, infinite or NaN (on an axis of symmetry, at a centre), so a ray
@@ -122,17 +116,14 @@ stepProjectionIterations :: Int
 stepProjectionIterations = 3
 
 -- | Pull a point back onto the surface along a fixed direction @n@ (Newton
--- on @λ ↦ f(q + λn)@). Moving along the normal of the point a step started
+-- on @λ ↦ f(q + λn)@), and return the gradient of the field at the last
+-- Newton iterate too. Moving along the normal of the point a step started
 -- from is what makes 'geodesicStep' the RATTLE scheme for a particle held on
 -- @f = 0@: second order, and it conserves the angular momentum that a
 -- symmetry of the surface gives (Clairaut's relation on a surface of
 -- revolution). Where @∇f · n@ vanishes the point is left where it is.
-projectAlong :: Field a => ScalarFn -> V3 a -> V3 a -> V3 a
-{-# INLINE projectAlong #-}
-projectAlong sf n q = fst (projectAlongWithGradient sf n q)
-
--- | 'projectAlong', and the gradient of the field at the last Newton iterate
--- (the point the final Newton step starts from): each iteration evaluates
+-- The gradient is the one at the point the final Newton step starts from:
+-- each iteration evaluates
 -- the value and the gradient together, and the last gradient serves as the
 -- new point's normal. The final step moves the point by @|f|/|∇f·n|@, at
 -- rounding error once converged, so the normal it leaves behind is the one
@@ -146,7 +137,7 @@ projectAlongWithGradient sf n = go stepProjectionIterations
       let (q', g) = newtonAlong sf n q
       in if k <= 1 then (q', g) else go (k - 1) q'
 
--- | One Newton iteration of 'projectAlong': the next iterate, and the
+-- | One Newton iteration of 'projectAlongWithGradient': the next iterate, and the
 -- field's gradient at this one. Converged (or where @∇f · n@ vanishes) the
 -- point stays.
 newtonAlong :: Field a => ScalarFn -> V3 a -> V3 a -> (V3 a, V3 a)

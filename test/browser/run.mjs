@@ -285,8 +285,11 @@ async function testInteraction(context, base) {
   await page.mouse.up();
   await page.waitForTimeout(500);
   const settled = await twoFrames();
-  check("moving view: previews on a slow GPU, then a sharp frame (frame " + Math.round(frameMs) + " ms)",
-    (frameMs > 40 ? sawPreview : true) && settled.preview === false,
+  // previews exactly when frames are slow (the page's threshold is 40 ms; a frame
+  // within 10 ms of it may go either way)
+  const slow = frameMs > 50, fast = frameMs < 30;
+  check("moving view: previews while it moves on a slow GPU and none on a fast one, then a sharp frame (frame " + Math.round(frameMs) + " ms)",
+    (slow ? sawPreview : fast ? !sawPreview : true) && settled.preview === false,
     "previews seen: " + sawPreview + ", after: preview " + settled.preview);
   pickReport("torus after previews", await pickSurface(page, "torus", 5, 31), 5);
 
