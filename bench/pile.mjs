@@ -11,7 +11,7 @@
 // F times the scene's body size before the steps (what a slop that scales
 // with the bodies would do: 0.0717 is the default 0.002 at the rectangle's
 // 1000-body size); --iterations K sets the solver's iterations (what firmer
-// contacts do to a pile: see README.md, Scaling).
+// contacts do to a pile: see bench/README.md, "How well piles hold").
 // Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 

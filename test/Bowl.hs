@@ -1,6 +1,6 @@
--- | The README's worked example of adding a space ("Adding a space"); the
--- lines between the markers stand in README.md as they are here
--- ("ReadmeExampleSpec").
+-- | The documentation's worked example of adding a space (docs/spaces.md,
+-- "Adding a space"); the lines between the markers stand there as they are
+-- here ("ReadmeExampleSpec").
 module Bowl (bowl) where
 
 import Linear.V3 (V3 (..))

@@ -1,7 +1,8 @@
 {-# LANGUAGE TemplateHaskell #-}
--- | The README's bowl given its compiled step with one splice, in a module
--- of its own (Template Haskell's stage restriction: the space is defined
--- in another module); the lines between the markers stand in README.md.
+-- | The worked example's bowl given its compiled step with one splice, in a
+-- module of its own (Template Haskell's stage restriction: the space is
+-- defined in another module); the lines between the markers stand in
+-- docs/spaces.md.
 module BowlStep (bowlStep) where
 
 -- README: from here

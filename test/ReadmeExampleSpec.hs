@@ -1,6 +1,7 @@
--- | The README's worked example ("Adding a space") compiles and works: the
--- bowl of "Bowl" and its compiled step of "BowlStep" stand in README.md as
--- they are in those modules, each as one block of consecutive lines.
+-- | The documentation's worked example (docs/spaces.md, "Adding a space")
+-- compiles and works: the bowl of "Bowl" and its compiled step of
+-- "BowlStep" stand in docs/spaces.md as they are in those modules, each as
+-- one block of consecutive lines.
 module ReadmeExampleSpec (spec) where
 
 import Control.Monad (forM_, replicateM_)
@@ -16,7 +17,7 @@ import Manifold
 import Manifold.Engine
 import Manifold.World
 
--- | The lines of a file between its README markers.
+-- | The lines of a file between its markers ("-- README: from here" …).
 readmeBlock :: FilePath -> IO [String]
 readmeBlock path = do
   source <- readFile path
@@ -26,9 +27,9 @@ trimEnd :: String -> String
 trimEnd = reverse . dropWhile isSpace . reverse
 
 spec :: Spec
-spec = describe "the README's worked example" $ do
+spec = describe "the worked example of adding a space (docs/spaces.md)" $ do
   it "is the code of test/Bowl.hs and test/BowlStep.hs, each block's lines one after another" $ do
-    readme <- map trimEnd . lines <$> readFile "README.md"
+    readme <- map trimEnd . lines <$> readFile "docs/spaces.md"
     forM_ ["test/Bowl.hs", "test/BowlStep.hs"] $ \path -> do
       block <- map trimEnd <$> readmeBlock path
       length block `shouldSatisfy` (> 3)
