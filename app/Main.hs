@@ -3,16 +3,15 @@
 module Main (main) where
 
 import Control.Exception (IOException, try)
-import Data.List (isInfixOf)
 import qualified Network.Wai.Handler.Warp as Warp
 import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
 import System.Directory (createDirectoryIfMissing, doesDirectoryExist, doesFileExist)
 import System.FilePath ((</>), takeDirectory)
 import System.IO.Error (isAlreadyInUseError)
-import Control.Monad (forM, forM_, when)
+import Control.Monad (forM, forM_, unless, when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
-import Data.List (intercalate, minimumBy, transpose)
+import Data.List (intercalate, isInfixOf, minimumBy, transpose)
 import Data.Maybe (isJust)
 import Data.Ord (comparing)
 import Data.String (fromString)
@@ -196,7 +195,7 @@ simulate path steps every save = do
   forM_ save $ \out -> do
     let dir = takeDirectory out
     there <- doesDirectoryExist dir
-    when (not there) (usageError ("--save: the directory " ++ dir ++ " does not exist"))
+    unless there (usageError ("--save: the directory " ++ dir ++ " does not exist"))
   text <- if path == "-" then BL.getContents else do
     exists <- doesFileExist path
     if exists then BL.readFile path else usageError (path ++ ": no such scene file")
@@ -306,9 +305,9 @@ serve :: Int -> FilePath -> IO ()
 serve p dir = do
   when (p < 1 || p > 65535) (usageError ("--port: " ++ show p ++ " is not a port number (1-65535)"))
   ok <- doesFileExist (dir </> "index.html")
-  when (not ok) (usageError (dir </> "index.html" ++ " does not exist; run manifold serve from the repository root"))
+  unless ok (usageError (dir </> "index.html" ++ " does not exist; run manifold serve from the repository root"))
   gen <- doesFileExist (dir </> "gen" </> "spaces.js")
-  when (not gen) (hPutStrLn stderr ("manifold: warning: " ++ dir </> "gen" ++ " is not built; run manifold build first"))
+  unless gen (hPutStrLn stderr ("manifold: warning: " ++ dir </> "gen" ++ " is not built; run manifold build first"))
   let settings = Warp.setHost "127.0.0.1" $ Warp.setPort p
                $ Warp.setBeforeMainLoop (putStrLn ("serving " ++ dir ++ " at http://127.0.0.1:" ++ show p ++ "/") >> hFlush stdout)
                Warp.defaultSettings

@@ -52,7 +52,7 @@ unaries =
   , Unary "abs (positive side)" abs (const 1) (const 0) (0.01, 3)
   , Unary "abs (negative side)" abs (const (-1)) (const 0) (-3, -0.01)
   , Unary "recip" recip (\u -> -1 / (u * u)) (\u -> 2 / (u * u * u)) (0.2, 4)
-  , Unary "x ** 3 (constant exponent)" (** 3) (\u -> 3 * u * u) (\u -> 6 * u) (0.1, 3)
+  , Unary "x ** 3 (constant exponent)" (** 3) (\u -> 3 * u * u) (6 *) (0.1, 3)
   , Unary "asinh" asinh (\u -> 1 / sqrt (u * u + 1)) (\u -> -u / (u * u + 1) ** 1.5) (-3, 3)
   , Unary "acosh" acosh (\u -> 1 / sqrt (u * u - 1)) (\u -> -u / (u * u - 1) ** 1.5) (1.1, 4)
   , Unary "atanh" atanh (\u -> 1 / (1 - u * u)) (\u -> 2 * u / (1 - u * u) ^ (2 :: Int)) (-0.9, 0.9)
@@ -309,7 +309,7 @@ curvatureSpec = describe "curvature from the Hessian" $ do
   it "adjugate satisfies A · adj A = det A · I" $
     property $ withMaxSuccess 200 $ forAll (V3 <$> genV3In 2 <*> genV3In 2 <*> genV3In 2) $ \m ->
       let V3 r0 r1 r2 = m
-          det = r0 `dot` (crossV r1 r2)
+          det = r0 `dot` crossV r1 r2
           prod = fmap (\row -> adjugate m `transposeMul` row) m
       in matDist prod (fmap (fmap (* det)) (V3 (V3 1 0 0) (V3 0 1 0) (V3 0 0 1))) <= 1e-10
   where

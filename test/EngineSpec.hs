@@ -4,6 +4,7 @@
 module EngineSpec (spec) where
 
 import Control.Monad (forM, forM_, replicateM_, when)
+import Data.Either (fromLeft)
 import Data.Foldable (toList)
 import Data.List (intercalate)
 import qualified Data.Aeson as A
@@ -215,7 +216,7 @@ freeMotionSpec = describe "Engine: free motion" $ do
       w <- sceneWorld sp
       replicateM_ 1000 (stepNative w)
       n <- bodyCount w
-      fs <- forM [0 .. n - 1] $ \i -> abs . evalField sp . bsPos <$> readBody w i
+      fs <- forM [0 .. n - 1] (fmap (abs . evalField sp . bsPos) . readBody w)
       (spaceName sp, maximum (0 : fs) < 1e-6) `shouldBe` (spaceName sp, True)
 
   it "leaves a body whose step would be non-finite where it was, and counts a warning" $ do
@@ -387,10 +388,10 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
 
   it "saves a world that has run as a scene that loads back with every body where it was, moving as it moved" $ do
     let scene = benchScene torus 60
-    w <- loadScene 0 scene >>= either (\e -> fail e) pure
+    w <- loadScene 0 scene >>= either fail pure
     replicateM_ 150 (stepNative w)
-    saved <- sceneOfWorld scene w >>= either (\e -> fail e) pure
-    w' <- loadScene 0 saved >>= either (\e -> fail e) pure
+    saved <- sceneOfWorld scene w >>= either fail pure
+    w' <- loadScene 0 saved >>= either fail pure
     let n = length (sceneBodies scene)
         normalAt p = unitNormal (spaceField torus) p
         -- the direction a body's angle points to: its outline's orientation
@@ -449,7 +450,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
 
   it "refuses malformed contact impulses in a scene, naming where" $ do
     let withImpulses v = BL.pack ("{\"space\": \"plane\", \"bodies\": [{\"shape\": \"circle\", \"size\": 0.1, \"p\": [0, 0, 0], \"impulses\": " ++ v ++ "}]}")
-        problemOf v = either id (const "accepted") (parseScene (withImpulses v))
+        problemOf v = fromLeft "accepted" (parseScene (withImpulses v))
     problemOf "3" `shouldBe` "$.bodies[0].impulses: must be an array of [key, normal, friction] impulses"
     problemOf "[[64, 0.1, 0], [65, 0.2]]" `shouldBe` "$.bodies[0].impulses[1]: must be an array of three numbers [key, normal, friction]"
     problemOf "[[64.5, 0.1, 0]]" `shouldBe` "$.bodies[0].impulses[0][0]: must be a contact key, a whole number from 0 to 2^53"

@@ -209,7 +209,7 @@ spec = do
           (fmt (dPos d) ++ ", " ++ fmt (dVel d) ++ ", " ++ fmt (dVerts d) ++ ", " ++ fmt (dScalars d) ++ "; " ++ show (dContacts d))
         dPos d `shouldSatisfy` (< 1e-9)
         dScalars d `shouldSatisfy` (< 1e-9)
-        fst (dContacts d) `shouldBe` snd (dContacts d)
+        uncurry shouldBe (dContacts d)
     it "flat-klein, a body dragged by the mouse across the flip edge" $ do
       w <- mkWorld flatKlein defaultParams [dyn square 0.2 (V3 0.7 0 0.3) 0 0 0]
       -- the target lies beyond the edge; the joint pulls towards its image

@@ -113,7 +113,7 @@ scaleRows :: Imp m => Array m -> Array m -> Array m -> m ()
 scaleRows meta mat out = do
   n <- readArray meta 0
   m <- readArray meta 1
-  let row r cols = subroutine "scaleRow" [r, cols] $ \args -> case args of
+  let row r cols = subroutine "scaleRow" [r, cols] $ \case
         [r', m'] -> do
           k <- readArray meta 2
           forEach (toIndex m') $ \c -> do
@@ -206,25 +206,25 @@ bitsEq a b = map (map castDoubleToWord64) a == map (map castDoubleToWord64) b
 
 spec :: Spec
 spec = do
-  let prefixJs = staged "prefixSum" ["meta", "inp", "out"] (\as -> case as of
+  let prefixJs = staged "prefixSum" ["meta", "inp", "out"] (\case
         [m, i, o] -> prefixSum m i o
         _ -> error "arity")
-      segJs = staged "segmented" ["meta", "off", "inp", "out"] (\as -> case as of
+      segJs = staged "segmented" ["meta", "off", "inp", "out"] (\case
         [m, f, i, o] -> segmented m f i o
         _ -> error "arity")
-      gsJs = staged "gaussSeidel" ["meta", "x", "b", "obs", "stats"] (\as -> case as of
+      gsJs = staged "gaussSeidel" ["meta", "x", "b", "obs", "stats"] (\case
         [m, x, b, o, s] -> gaussSeidel m x b o s
         _ -> error "arity")
-      signsJs = staged "signs" ["meta", "inp", "out", "out2"] (\as -> case as of
+      signsJs = staged "signs" ["meta", "inp", "out", "out2"] (\case
         [m, i, o, o2] -> signs m i o o2
         _ -> error "arity")
-      nativeSigns = \as -> case as of [m, i, o, o2] -> signs m i o o2; _ -> error "arity"
-      nativePrefix = \as -> case as of [m, i, o] -> prefixSum m i o; _ -> error "arity"
-      nativeSeg = \as -> case as of [m, f, i, o] -> segmented m f i o; _ -> error "arity"
-      nativeGs = \as -> case as of [m, x, b, o, s] -> gaussSeidel m x b o s; _ -> error "arity"
+      nativeSigns = \case [m, i, o, o2] -> signs m i o o2; _ -> error "arity"
+      nativePrefix = \case [m, i, o] -> prefixSum m i o; _ -> error "arity"
+      nativeSeg = \case [m, f, i, o] -> segmented m f i o; _ -> error "arity"
+      nativeGs = \case [m, x, b, o, s] -> gaussSeidel m x b o s; _ -> error "arity"
 
   it "prints a subroutine once, calls it from each place, and runs it as natively" $ do
-    let rowsJs = staged "scaleRows" ["meta", "mat", "out"] (\as -> case as of
+    let rowsJs = staged "scaleRows" ["meta", "mat", "out"] (\case
           [m, a, o] -> scaleRows m a o
           _ -> error "arity")
         insts = unGen (vectorOf 30 genRows) (mkQCGen 99) 30
@@ -233,7 +233,7 @@ spec = do
     length (filter ("function scaleRow(" `isInfixOf`) (lines rowsJs)) `shouldBe` 1
     length (filter (\ln -> "scaleRow(meta, mat, out, " `isInfixOf` ln && not ("function" `isInfixOf` ln)) (lines rowsJs)) `shouldBe` 2
     js <- runNodeJSON (rowsJs ++ "__emit(" ++ calls ++ ");\n") :: IO [[[Bits]]]
-    nat <- mapM (runNativeOn (\as -> case as of [m, a, o] -> scaleRows m a o; _ -> error "arity")) insts
+    nat <- mapM (runNativeOn (\case [m, a, o] -> scaleRows m a o; _ -> error "arity")) insts
     forM_ (zip3 insts nat js) $ \(inst, n, j) -> do
       unless (bitsEq n (map (map unBits) j)) $ expectationFailure ("scaleRows differs on " ++ show inst)
       let [[rows, cols, k], mat, _] = inst
@@ -293,7 +293,7 @@ spec = do
     either show (const "passed") below `shouldSatisfy` ("indices -1 to 1 outside an array of 4" `isInfixOf`)
 
   it "refuses two different bodies under one subroutine name" $ do
-    let clash = staged "clash" ["a"] (\as -> case as of
+    let clash = staged "clash" ["a"] (\case
           [a] -> do
             subroutine "body" [] (\_ -> writeArray a 0 1)
             subroutine "body" [] (\_ -> writeArray a 0 2)
@@ -339,7 +339,7 @@ spec = do
       res !! 2 `shouldBe` [ if v > 0 then 2 * v else if negate v > 0 then 3 else 7 | v <- inst !! 1 ]
     -- Both branches of the conditional were taken, in most instances both
     -- within the same run.
-    let counts = [ (s !! 0, s !! 1) | [_, _, _, _, s] <- natG ]
+    let counts = [ (c, f) | [_, _, _, _, c : f : _] <- natG ]
         both = length [ () | (c, f) <- counts, c > 0, f > 0 ]
     printf "gauss-seidel: %d instances, %d take both branches; contacts %.0f, free updates %.0f\n"
       (length counts) both (sum (map fst counts)) (sum (map snd counts))

@@ -12,6 +12,7 @@ import Control.Concurrent (forkIO, getNumCapabilities)
 import Control.Concurrent.MVar
 import Control.Exception (SomeException, throwIO, try)
 import Control.Monad (forM, forM_, replicateM, unless, when, zipWithM_)
+import Data.Maybe (fromMaybe)
 import Data.List (sortOn)
 import Data.Foldable (toList)
 import Data.IORef
@@ -409,7 +410,7 @@ spec = do
         (e, d < boxSize, k < boxSize) `shouldBe` (e, True, True)
       -- warm starting is what lets few iterations hold a stack (it stands
       -- with the default 8), and friction is what keeps it from sliding
-      let rank = maybe (maxBound :: Int) id
+      let rank = fromMaybe (maxBound :: Int)
       rank warmOn `shouldSatisfy` (<= 8)
       rank warmOn `shouldSatisfy` (< rank warmOff)
       rank warmOn `shouldSatisfy` (< rank frictionless)
@@ -634,7 +635,7 @@ spec = do
         labelled ("differential " ++ scName sc ++ ": max |pos|, |vel|, |verts| difference; contacts native/js")
           (fmt (dPos d) ++ ", " ++ fmt (dVel d) ++ ", " ++ fmt (dVerts d) ++ "; " ++ show (dContacts d))
         dPos d `shouldSatisfy` (< 1e-9)
-        fst (dContacts d) `shouldBe` snd (dContacts d)
+        uncurry shouldBe (dContacts d)
 
   describe "robustness" $
     it "random scenes on every space (2-6 bodies, sizes 0.05-0.3, speeds up to 2, gravity): finite, on the surface, no body lost" $ do

@@ -16,7 +16,7 @@ module StageSpec (spec) where
 
 import Control.Concurrent (forkIO, newEmptyMVar, putMVar, takeMVar)
 import Control.Exception (SomeException, evaluate, throwIO, try)
-import Control.Monad (forM, forM_, unless, when)
+import Control.Monad (forM, forM_, unless, when, (>=>))
 import qualified Data.Aeson as A
 import qualified Data.Aeson.Key as K
 import Data.Bits (popCount, xor)
@@ -307,7 +307,7 @@ illConditioned ex pt =
       ws = [ un (evalEx (map W pt) ex :: W 0), un (evalEx (map W pt) ex :: W 1)
            , un (evalEx (map W pt) ex :: W 2), un (evalEx (map W pt) ex :: W 3)
            , un (evalEx (map W pt) ex :: W 4) ]
-  in any (not . agree n0) ws
+  in not (all (agree n0) ws)
 
 -- | The JavaScript of a batch: one function per case and a driver that
 -- evaluates each at its points and emits the results.
@@ -656,7 +656,7 @@ withBuilds k = withSystemTempDirectory "manifold-build" $ \tmp -> do
   _ <- forkIO (try (buildInto a) >>= putMVar ra)
   _ <- forkIO (try (buildInto b) >>= putMVar rb)
   _ <- printedScripts
-  runs <- mapM (\v -> takeMVar v >>= either (\e -> throwIO (e :: SomeException)) pure) [ra, rb]
+  runs <- mapM (takeMVar >=> either (\e -> throwIO (e :: SomeException)) pure) [ra, rb]
   k (Builds a b runs tmp)
 
 buildSpec :: Spec

@@ -64,7 +64,7 @@ instance Field a => Num (D a) where
   {-# INLINE fromInteger #-}
 
 instance Field a => Fractional (D a) where
-  D x dx / D y dy = D (x / y) ((recip y) *^ dx ^-^ (x / (y * y)) *^ dy)
+  D x dx / D y dy = D (x / y) (recip y *^ dx ^-^ (x / (y * y)) *^ dy)
   recip = chain recip (\x -> negate (recip (x * x)))
   fromRational = lift . fromRational
   {-# INLINE (/) #-}
@@ -75,7 +75,7 @@ instance Field a => Floating (D a) where
   pi = lift pi
   exp = chain exp exp
   log = chain log recip
-  sqrt (D x dx) = let s = sqrt x in D s ((recip (2 * s)) *^ dx)
+  sqrt (D x dx) = let s = sqrt x in D s (recip (2 * s) *^ dx)
   sin = chain sin cos
   cos = chain cos (negate . sin)
   tan = chain tan (\x -> let c = cos x in recip (c * c))

@@ -19,9 +19,8 @@ import Data.Maybe (fromMaybe, listToMaybe)
 import qualified Data.Map.Strict as M
 import GHC.Clock (getMonotonicTime)
 import Linear.Metric (distance, dot, norm, normalize)
-import Linear.V3 (cross)
 import Linear.Vector ((*^), (^+^), (^-^))
-import Linear.V3 (V3 (..))
+import Linear.V3 (V3 (..), cross)
 import System.Random (mkStdGen, randomR)
 
 import Manifold.Engine

@@ -289,7 +289,7 @@ pairContacts :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
 pairContacts l sec w keyBase x y g =
   subroutine "pairContacts"
     ([keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g))
-    (\args -> case args of
+    (\case
         [keyBase', x', y', sx, sy, sz, tx, ty, tz] ->
           pairContactsVia l sec w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
         _ -> error "pairContacts: nine arguments")
@@ -334,7 +334,7 @@ pairContactsVia l sec w keyBase x y signs shift = do
     (dLo, dHi) <- extremesAlong nd $ \d -> do
       q <- outlineVertex l w mv d
       depth <- readArray (wProbe w) (toIndex moverProbe + d)
-      pure (depth, ((image q) ^-^ bfCentre fr) `dot` t)
+      pure (depth, (image q ^-^ bfCentre fr) `dot` t)
     let emitAt slot dv = do
           q <- outlineVertex l w mv (toIndex dv)
           query <- share3 (image q)

@@ -31,6 +31,7 @@ module Manifold.Space
   , noGravity
   ) where
 
+import Data.Maybe (isJust)
 import Linear.Metric (quadrance)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((^-^))
@@ -205,7 +206,7 @@ space name description f = Space
   }
 
 hasBoundary :: Space -> Bool
-hasBoundary = maybe False (const True) . spaceBoundary
+hasBoundary = isJust . spaceBoundary
 
 -- | The field of a space, at any scalar.
 field :: Field a => Space -> V3 a -> a

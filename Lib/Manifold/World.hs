@@ -65,7 +65,7 @@ module Manifold.World
   ) where
 
 import Linear.V3 (V3 (..), cross)
-import Control.Monad (forM_, when)
+import Control.Monad (forM_, unless, when, (<=<))
 import Data.Maybe (isJust)
 import Linear.Metric (norm, quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
@@ -527,7 +527,7 @@ polygoniseBody sp l w i = do
       -- quicker in both.
       stepLoopsWalk steps stepLength vertex = do
         let fused = steps == 1
-        when (not fused) $ directions $ \d -> nextDirection >>= writeAt3 scratch (at d directionAt)
+        unless fused $ directions $ \d -> nextDirection >>= writeAt3 scratch (at d directionAt)
         forM_ [1 .. steps] $ \k -> directions $ \d -> do
           let startAt field centre = if k == 1 then pure centre else readAt3 scratch (at d field)
           h <- stepLength d
@@ -586,7 +586,7 @@ polygoniseBody sp l w i = do
   -- when staging the compiled step, not for every body of a generic step)
   let walk = if walkLoops l == LoopPerStep || flat then stepLoopsWalk else newtonLoopsWalk
   ifPositive fine
-    (walk ns (\d -> share . (/ fromIntegral ns) =<< radius d)
+    (walk ns (share . (/ fromIntegral ns) <=< radius)
           (\k d q -> do
               o <- share3 (finite q)
               write3 (wVerts w) (vertexIx d k) o

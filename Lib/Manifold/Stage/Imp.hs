@@ -1,4 +1,4 @@
-{-# LANGUAGE TypeFamilies, TypeFamilyDependencies, FlexibleContexts, UndecidableSuperClasses #-}
+{-# LANGUAGE TypeFamilyDependencies, FlexibleContexts #-}
 {-# LANGUAGE GeneralizedNewtypeDeriving #-}
 -- | The imperative layer the engine is written in: bounded loops, a
 -- conditional, array reads and writes, explicit sharing and mutable locals —
