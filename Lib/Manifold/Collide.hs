@@ -2,7 +2,7 @@
 {-# LANGUAGE FlexibleContexts #-}
 -- Built with LLVM (as the compiled steps are): the generic native step's
 -- narrow phase, one large loop nest, took a third longer from GHC's own code
--- generator (bench/NOTES.md, session 15).
+-- generator (manifold bench --generic, settled piles).
 
 -- | Finding contacts (paper §2.5, §2.6, §3.4, §4.3): a uniform grid over R³
 -- for the broad phase, the geodesic polygons for the narrow phase, boundary

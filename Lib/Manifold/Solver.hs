@@ -1,7 +1,7 @@
 {-# OPTIONS_GHC -fllvm #-}
 {-# LANGUAGE FlexibleContexts #-}
 -- Built with LLVM (as the compiled steps are): the generic native step's
--- solve is a tenth faster so (bench/NOTES.md, session 15).
+-- solve is a tenth faster so (manifold bench --generic, settled piles).
 
 -- | Sequential impulses (paper §2.5; Catto's Box2D solver): every contact is
 -- a normal row (relative normal velocity ≥ 0, Baumgarte bias @β·depth/dt@,
@@ -172,7 +172,7 @@ solve sp _ w = do
   -- sometimes. In a page that had run a torus of 3000 bodies, Chromium's
   -- optimising compiler gave up on the rectangle's solver as "too big to be
   -- optimized" and never tried again, and the page's solve then took 100 ms
-  -- a step instead of 5 (bench/NOTES.md, session 14).
+  -- a step instead of 5 (node bench/browser.mjs, the rectangle after the torus).
   subroutine "solvePrepare" [] $ \_ -> prepareRows w
   mouseRows sp w True
   forEach (toIndex iterations) $ \_ -> do

@@ -298,7 +298,7 @@ writeMouse w k = writeArray (wMouse w) (ix k)
 -- from 'wOutline': the narrow phase reads a body's outline vertices
 -- together, and in 'wVerts' each sits on a cache line of its own among the
 -- inner vertices (read from here, the collision phase of the settled piles
--- of 3000 bodies took 3 to 15 % less time: bench/NOTES.md, session 17).
+-- of 3000 bodies took 3 to 15 % less time, manifold bench).
 outlineVertex :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Index m -> m (V3 (Scalar m))
 {-# INLINE outlineVertex #-}
 outlineVertex l w i d = read3 (wOutline w) (fromIntegral (polyDirections (polygon l)) * i + d)
