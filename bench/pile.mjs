@@ -11,7 +11,7 @@
 // F times the scene's body size before the steps (what a slop that scales
 // with the bodies would do: 0.0717 is the default 0.002 at the rectangle's
 // 1000-body size); --iterations K sets the solver's iterations (what firmer
-// contacts do to a pile: see bench/README.md, "How well piles hold").
+// contacts do to a pile: see bench/README.md, "Firmer contacts").
 // Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 
@@ -79,7 +79,7 @@ for (const { scene, world } of worlds(dir)) {
   // through an image), and the edge lookups they make (a vertex of either
   // body within the other's bounding radius)
   const ne = E.directions, ns = E.steps, per = E.verticesPerBody;
-  const vertex = (i, d) => { const v = 3 * (per * i + 1 + d * ns + ns - 1); return [a.verts[v], a.verts[v + 1], a.verts[v + 2]]; };
+  const vertex = (i, d) => { const v = 3 * (per * i + E.vertexIndex(d, ns)); return [a.verts[v], a.verts[v + 1], a.verts[v + 2]]; };
   const dist2 = (p, q) => (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 + (p[2] - q[2]) ** 2;
   const reach = 2 * Math.max(...Array.from({ length: n }, (_, i) => radius(i))), near = new Map();
   const cellOf = (p) => p.map((x) => Math.floor(x / reach));

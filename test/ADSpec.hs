@@ -3,6 +3,7 @@
 module ADSpec (spec) where
 
 import Linear.Matrix (M33, (!*))
+import Data.List (isInfixOf)
 import Control.Monad (forM_)
 import Linear.Metric (dot, norm, quadrance)
 import Linear.V3 (V3 (..))
@@ -281,7 +282,8 @@ curvatureSpec = describe "curvature from the Hessian" $ do
   it "torus: K is positive outside (φ = 0) and negative inside (φ = π)" $ do
     gaussianCurvature tf (torusPoint 0 0.3) `shouldSatisfy` (> 0)
     gaussianCurvature tf (torusPoint pi 0.3) `shouldSatisfy` (< 0)
-  it "the torus's field vanishes on the torus of radii R = torusMajor, r = torusMinor about the y axis (the parametrisation the formulas above use)" $
+  it "the torus's field vanishes on the torus of radii R = torusMajor, r = torusMinor about the y axis (the parametrisation the formulas above use), the radii its description gives" $ do
+    spaceDescription torus `shouldSatisfy` isInfixOf ("R = " ++ show torusMajor ++ ", r = " ++ show torusMinor)
     forM_ [(0, 0), (1, 2), (2.5, 4), (4, 1)] $ \(phi, psi) -> do
       abs (evalField torus (torusPoint phi psi)) `shouldSatisfy` (< 1e-12)
       -- and not on a torus of other radii

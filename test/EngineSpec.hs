@@ -479,6 +479,8 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withBody (body ", \"static\": 1"), withBody (body ", \"density\": 0"), withBody (body ", \"colour\": 1")
           , withBody (body ", \"impulses\": 3"), withBody (body ", \"impulses\": [[64, 0.1]]"), withBody (body ", \"impulses\": [[64.5, 0.1, 0]]")
           , withBody (body ", \"impulses\": [[-1, 0.1, 0]]"), withBody (body ", \"impulses\": [[64, -0.1, 0]]"), withBody (body ", \"impulses\": [[64, 0.1, null]]")
+          -- two problems: both name the parameter's, checked first
+          , "{\"space\": \"plane\", \"dt\": 0, \"bodies\": {}}"
           -- a key given twice: the last counts in both
           , "{\"space\": \"plane\", \"dt\": 0.02, \"dt\": 0}"
           , "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}", withBody (body ", \"size\": 0.3")

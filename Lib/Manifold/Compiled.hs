@@ -1,7 +1,8 @@
 -- | Every catalogue space's compiled step ("Manifold.Compile"): a module
 -- each, so that they compile in parallel. A space added to the catalogue
--- gets a module like these (two lines and a splice) and a line here; a test
--- fails for a catalogue space without one.
+-- gets a module like these (two imports and a splice), listed in
+-- Manifold.cabal's exposed-modules and here; a test fails for a catalogue
+-- space without one.
 module Manifold.Compiled (compiledSteps) where
 
 import Manifold.Compiled.Runtime (CompiledStep)

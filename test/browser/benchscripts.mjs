@@ -29,7 +29,7 @@ export async function testBenchScripts(check) {
       rowsAgree && b.fps.length === 1 && b.fps[0].fps > 0,
       JSON.stringify({ native: n.map((r) => [r.space, r.bodies, r.contacts, r.medianMs]), browser: b.results.map((r) => [r.space, r.bodies, r.contacts, r.medianMs]) }));
 
-    // firmer contacts (bench/README.md, "How well piles hold"): the native benchmark and the
+    // firmer contacts (bench/README.md, "Firmer contacts"): the native benchmark and the
     // pile script put the same settings in place and find the same rows
     const firm = ["--iterations", "3", "--slop-per-size", "0.05"];
     const nf = JSON.parse(run(manifoldExe(), ["bench", "--from", scenes, "--spaces", "rectangle", "--sizes", "30", "--rounds", "1",

@@ -129,16 +129,15 @@
       if (spaceNames.indexOf(s) < 0) problem(path, "unknown space " + JSON.stringify(s) + "; the spaces are " + spaceNames.join(", "));
       return s;
     });
-    const scene = {
-      space: space,
-      bodies: optional("$", o, "bodies", [], function (path, a) {
-        if (!Array.isArray(a)) problem(path, "must be an array of bodies");
-        return a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
-      }),
-    };
-    // a key the scene leaves out takes the engine's default
-    keys.forEach(function (k) {
+    // the parameters first, then the bodies: the order Manifold.Scene
+    // checks them in, so that a scene with two problems names the same one
+    const scene = { space: space };
+    keys.forEach(function (k) { // a key the scene leaves out takes the engine's default
       scene[k.key] = optional("$", o, k.key, k.default, function (path, x) { return keyValue(path, x, k); });
+    });
+    scene.bodies = optional("$", o, "bodies", [], function (path, a) {
+      if (!Array.isArray(a)) problem(path, "must be an array of bodies");
+      return a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
     });
     return scene;
   }

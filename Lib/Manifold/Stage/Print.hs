@@ -40,7 +40,6 @@ data Target = JavaScript | GLSL | Haskell
 -- | Nodes already bound to names where the code being printed sits.
 type Scope = IM.IntMap String
 
--- | 'lower' with the target's choices: which nodes are bound, in which order.
 
 emptyScope :: Scope
 emptyScope = IM.empty
