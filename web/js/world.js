@@ -158,6 +158,13 @@
     return p;
   }
 
+  // The scene keys' values for the engine's parameters (param: name → value),
+  // added to a scene: the inverse of sceneParams.
+  function withParams(scene, param) {
+    sceneKeys().forEach(function (k) { scene[k.key] = k.kind === "switch" ? param(k.param) > 0 : param(k.param); });
+    return scene;
+  }
+
   function shapeCode(s) {
     return s === "circle" ? 0 : s === "square" ? 4 : s.polygon;
   }
@@ -397,10 +404,7 @@
 
     // The world as a scene (JSON value).
     scene() {
-      const scene = { space: this.name };
-      sceneKeys().forEach(function (k) {
-        scene[k.key] = k.kind === "switch" ? this.param(k.param) > 0 : this.param(k.param);
-      }, this);
+      const scene = withParams({ space: this.name }, this.param.bind(this));
       scene.bodies = this.bodies();
       return scene;
     }
@@ -451,9 +455,7 @@
       });
       const want = n === undefined || n === null ? base.length : n;
       const bodies = base.slice(0, want);
-      const scene = { space: this.name, bodies: bodies };
-      sceneKeys().forEach(function (k) { scene[k.key] = k.kind === "switch" ? E.defaults[k.param] > 0 : E.defaults[k.param]; });
-      this.load(scene);
+      this.load(withParams({ space: this.name, bodies: bodies }, function (name) { return E.defaults[name]; }));
       if (bodies.length < want) this.fill(want, base);
     }
 
