@@ -221,8 +221,9 @@ try {
     }
   }
   // Each scene is reported by its fastest round, which would hide a round in which V8 ran the
-  // engine unoptimised (a solver it had given up on took 20 times as long, bench/NOTES.md): every
-  // round's median is kept, and rounds far apart are said.
+  // engine unoptimised (a solver it had given up on took 20 times as long,
+  // docs/decisions/page-step-split-for-v8.md): every round's median is kept, and rounds far
+  // apart are said.
   fastest.forEach((row, i) => { row.roundMediansMs = roundMedians[i]; });
   for (const row of fastest) {
     const slowest = Math.max(...row.roundMediansMs);
