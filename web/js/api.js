@@ -3,13 +3,19 @@
 // stats, the camera, display options, bodies, the simulation's settings,
 // grabbing, scenes, the comparison view. Each call checks its arguments and
 // goes to the part of the page that does it.
-(function (W) {
+/* exported ManifoldWebApi */
+var ManifoldWebApi = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
 
+  /** @type {Manifold.Pane[]} */
   const PANES = ["torus-embedded", "torus-flat", "square-embedded", "square-flat"];
 
+  /** @param {Manifold.Rgb} c @returns {Manifold.Rgb} */
+  function copy(c) { return [c[0], c[1], c[2]]; }
+
+  /** @returns {Manifold.Api} */
   function scriptingApi() {
     const frame = MW.frame, input = MW.input, scenes = MW.scenes, settings = MW.simulationSettings;
     return {
@@ -48,7 +54,7 @@
       error: function () { return state.error ? state.error.text() : null; },
       options: function () {
         return Object.assign({}, state.options, {
-          background: { top: P.BACKGROUND.top.slice(), bottom: P.BACKGROUND.bottom.slice() },
+          background: { top: copy(P.BACKGROUND.top), bottom: copy(P.BACKGROUND.bottom) },
           curvatureScale: P.CURVATURE_SCALE,
           gridSpacing: P.GRID_SPACING,
         });
@@ -131,5 +137,8 @@
     };
   }
 
-  MW.api = { scriptingApi: scriptingApi };
+  const exported = { scriptingApi: scriptingApi };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.api = exported;
+  return exported;
 })(globalThis);

@@ -13,12 +13,12 @@
   function start() {
     const hash = MW.hash, scenes = MW.scenes, guarded = P.guarded;
     state.ui = MW.ui.createUI(Object.assign({
-      onSpace: function (name) { MW.space.setSpace(name).catch(function () {}); },
-      onCurvature: function (on) { hash.setOptions({ curvature: on }); },
-      onGrid: function (on) { hash.setOptions({ grid: on }); },
-      onAntialias: function (mode) { hash.setOptions({ antialias: mode }); },
+      onSpace: function (/** @type {string} */ name) { MW.space.setSpace(name).catch(function () {}); },
+      onCurvature: function (/** @type {boolean} */ on) { hash.setOptions({ curvature: on }); },
+      onGrid: function (/** @type {boolean} */ on) { hash.setOptions({ grid: on }); },
+      onAntialias: function (/** @type {Manifold.Antialias} */ mode) { hash.setOptions({ antialias: mode }); },
       onResetView: function () { if (state.space) state.camera.set(state.space.camera); },
-      onAdd: guarded(function (shape) { scenes.addAtView(shape); }),
+      onAdd: guarded(function (/** @type {Manifold.Shape} */ shape) { scenes.addAtView(shape); }),
       onClear: guarded(scenes.clearBodies),
       onReset: guarded(function () { scenes.resetScene(); }),
       onSave: guarded(scenes.saveSceneFile),
@@ -36,7 +36,7 @@
       return;
     }
     state.index = index.slice();
-    state.ui.setSpaces(state.index.concat([{ name: P.COMPARE, label: "Torus: embedded vs flat", description: "the embedded and the flat torus side by side" }]));
+    state.ui.setSpaces(/** @type {{ name: string, label?: string, description: string }[]} */ (state.index).concat([{ name: P.COMPARE, label: "Torus: embedded vs flat", description: "the embedded and the flat torus side by side" }]));
 
     const params = MW.ui.parseHash(W.location.hash);
     state.debugBrokenShader = params.debugBrokenShader === "1";

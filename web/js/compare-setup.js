@@ -3,13 +3,15 @@
 // the page's own and the flat one beside it, the three extra panes shown, the
 // view (web/js/compare.js, which draws the panes and routes their input) made
 // with the page's camera and options, and the curvature note under the panes.
-(function (W) {
+/* exported ManifoldWebCompareSetup */
+var ManifoldWebCompareSetup = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
   const PageError = MW.gl.PageError;
   const Manifold = W.Manifold;
 
+  /** @param {boolean} show */
   function comparisonPanes(show) {
     ["view-flat", "square-embedded", "square-flat", "compare-captions"].forEach(function (id) {
       document.getElementById(id).hidden = !show;
@@ -25,15 +27,19 @@
   }
 
   // The line under the panes: the curvature of each, from the generated curvature functions.
+  /** @param {Manifold.ComparisonDef} def */
   function comparisonNote(def) {
     const K = Manifold.spaces[def.embedded].curvature, K0 = Manifold.spaces[def.flat].curvature;
+    /** @param {number} z */
     const at = function (z) { const p = def.fromSquare(0, 0, z); return K(p[0], p[1], p[2]); };
+    /** @param {number} x */
     const f = function (x) { return (x >= 0 ? "+" : "\u2212") + Math.abs(x).toFixed(2); };
     return "Curvature: the embedded torus has K = " + f(at(0)) + " on its outer equator and " + f(at(def.half)) +
       " on its inner one (Curvature colours it); the flat torus has K = " + f(K0(0, 0, 0)).replace("+", "") +
       " everywhere. One scene in the torus's angles on both: the difference in motion is the difference in metric.";
   }
 
+  /** @returns {Promise<string>} */
   async function applyComparison() {
     if (!state.tracer) throw new Error(state.error ? state.error.text() : "the page has no WebGL2 renderer");
     try {
@@ -59,15 +65,15 @@
     try {
       state.compare = new MW.compare.Comparison(def, state.world, flat, state.camera, {
         mainCanvas: state.ui.canvas,
-        flatCanvas: document.getElementById("view-flat"),
-        squareEmbedded: document.getElementById("square-embedded"),
-        squareFlat: document.getElementById("square-flat"),
+        flatCanvas: /** @type {HTMLCanvasElement} */ (document.getElementById("view-flat")),
+        squareEmbedded: /** @type {HTMLCanvasElement} */ (document.getElementById("square-embedded")),
+        squareFlat: /** @type {HTMLCanvasElement} */ (document.getElementById("square-flat")),
       }, {
         options: function () {
           return Object.assign({}, state.options, { curvatureScale: P.CURVATURE_SCALE, gridSpacing: P.GRID_SPACING, background: P.BACKGROUND });
         },
         bounds: function () { return state.space ? state.space.bounds : 1; },
-        curvatureOf: function (p) { return Manifold.spaces[def.embedded].curvature(p[0], p[1], p[2]); },
+        curvatureOf: function (/** @type {Manifold.Vec3} */ p) { return Manifold.spaces[def.embedded].curvature(p[0], p[1], p[2]); },
         grab: MW.input.GRAB,
         interacted: MW.frame.interacted,
       });
@@ -85,8 +91,11 @@
     return P.COMPARE;
   }
 
-  MW.compareSetup = {
+  const exported = {
     leaveComparison: leaveComparison,
     applyComparison: applyComparison,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.compareSetup = exported;
+  return exported;
 })(globalThis);

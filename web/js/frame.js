@@ -4,7 +4,8 @@
 // moved; half-resolution previews while the view moves on a slow GPU), times
 // the GPU with a fence, and shows the stats line. Also the canvas's size in
 // device pixels (HiDPI) and measureFrame.
-(function (W) {
+/* exported ManifoldWebFrame */
+var ManifoldWebFrame = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
@@ -17,17 +18,17 @@
   // What the frames drawn so far were, and their timing (this file's own).
   const drawn = {
     cameraVersion: -1,
-    frameTimes: [],         // performance.now() of recent frames
+    frameTimes: /** @type {number[]} */ ([]), // performance.now() of recent frames
     frameCount: 0,
-    gpuFrameMs: null,       // GPU time of the last timed full frame
-    fence: null,
+    gpuFrameMs: /** @type {number | null} */ (null), // GPU time of the last timed full frame
+    fence: /** @type {WebGLSync | null} */ (null),
     syncPixel: new Uint8Array(4), // measureFrame reads one pixel back into it
     fenceAt: 0,
     interactUntil: 0,       // the view counts as moving until then (performance.now())
     statsShownAt: 0,
     surfaceGen: 0,          // bumped whenever the traced picture must be redrawn (with the camera's version)
     worldVersion: -1,       // world.version of the last frame drawn
-    world: null,
+    world: /** @type {ManifoldWeb.World | null} */ (null),
   };
 
   // ---- bodies ------------------------------------------------------------------------
@@ -36,6 +37,7 @@
   // traced surface. drawBodies is the tracer's overlay hook, called after the
   // surface is shaded with the colour buffer bound (frame: gl, width, height,
   // scale, pixelAngle, positionTexture, normalTexture, viewProjection, eye).
+  /** @param {ManifoldWeb.OverlayFrame} frame */
   function drawBodies(frame) {
     frame.bodyDetail = state.options.bodyDetail;
     if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame);
@@ -49,6 +51,7 @@
   // Draws a frame now; preview = half resolution (while the view moves on a slow GPU).
   // The traced surface is reused when neither the camera nor the scenery changed
   // (moving bodies are drawn over it), unless retrace is true.
+  /** @param {boolean} [preview] @param {boolean} [retrace] */
   function renderNow(preview, retrace) {
     if (!canRender()) return false;
     const gl = state.gl;
@@ -67,7 +70,7 @@
       background: P.BACKGROUND,
     }, function (frame) {
       frame.viewProjection = camera.viewProjection(state.width / state.height, 0.01, 100);
-      frame.eye = camera.eye.slice();
+      frame.eye = /** @type {Manifold.Vec3} */ (camera.eye.slice());
       drawBodies(frame);
     }, key);
     const now = performance.now();
@@ -87,6 +90,7 @@
     return true;
   }
 
+  /** @param {number} now */
   function pollFence(now) {
     const gl = state.gl;
     if (!drawn.fence || !gl) return;
@@ -100,6 +104,7 @@
   // GPU time of a full frame measured by a one-pixel read-back (which waits for it).
   // retrace false: the frame reuses the traced surface when it can, as a frame
   // in which only bodies moved does (then it does not count as frameMs)
+  /** @param {boolean} [retrace] */
   function measureFrame(retrace) {
     if (!canRender() || state.error) return null;
     const gl = state.gl;
@@ -127,6 +132,7 @@
     return drawn.world !== state.world || (state.world !== null && state.world.version !== drawn.worldVersion);
   }
 
+  /** @param {number} now */
   function fps(now) {
     const times = drawn.frameTimes;
     while (times.length && now - times[0] > 1000) times.shift();
@@ -134,6 +140,7 @@
     return (times.length - 1) * 1000 / (times[times.length - 1] - times[0]);
   }
 
+  /** @returns {Manifold.Stats} */
   function statsObject() {
     const w = state.world;
     const counters = w ? w.counters() : { bodies: 0, contacts: 0, warnings: 0, droppedContacts: 0 };
@@ -162,6 +169,7 @@
     };
   }
 
+  /** @param {number} now */
   function showStats(now) {
     if (now - drawn.statsShownAt < 250) return;
     drawn.statsShownAt = now;
@@ -180,6 +188,7 @@
     drawn.interactUntil = performance.now() + INTERACTION_MS;
   }
 
+  /** @param {number} now */
   function frame(now) {
     W.requestAnimationFrame(frame);
     pollFence(now);
@@ -206,6 +215,7 @@
   }
 
   // ---- canvas size (HiDPI) ------------------------------------------------------------
+  /** @param {number} w @param {number} h */
   function setCanvasSize(w, h) {
     w = Math.max(1, Math.round(w));
     h = Math.max(1, Math.round(h));
@@ -220,6 +230,7 @@
     if (!state.error) renderNow();
   }
 
+  /** @param {HTMLCanvasElement} canvas */
   function watchSize(canvas) {
     const measure = function () {
       const r = canvas.getBoundingClientRect();
@@ -253,7 +264,7 @@
     W.addEventListener("resize", measure);
   }
 
-  MW.frame = {
+  const exported = {
     renderNow: renderNow,
     measureFrame: measureFrame,
     surfaceStale: surfaceStale,
@@ -262,4 +273,7 @@
     startLoop: startLoop,
     watchSize: watchSize,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.frame = exported;
+  return exported;
 })(globalThis);

@@ -2,7 +2,8 @@
 // and the URL hash: the hash kept in step with the page (space, bodies when
 // not the default scene's count, options), and a hash read back (at start and
 // when it is edited) into a space, a number of bodies and options.
-(function (W) {
+/* exported ManifoldWebHash */
+var ManifoldWebHash = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
@@ -13,6 +14,7 @@
 
   // The hash says how many bodies there are when that is not the default scene's count.
   function updateHash() {
+    /** @type {Record<string, string | number>} */
     const params = { space: P.currentName() };
     const w = state.world;
     if (w && !state.compare && w.count() !== defaultBodyCount()) params.bodies = w.count();
@@ -29,6 +31,7 @@
     }
   }
 
+  /** @param {Partial<Manifold.DisplayOptions>} o @returns {Manifold.DisplayOptions} */
   function setOptions(o) {
     if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail}");
     if (o.antialias !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(o.antialias) < 0) {
@@ -49,15 +52,18 @@
     return Object.assign({}, state.options);
   }
 
+  /** @param {Record<string, string>} params */
   function optionsFromHash(params) {
+    /** @type {Partial<Manifold.DisplayOptions>} */
     const o = {};
     if (params.curvature !== undefined) o.curvature = params.curvature === "1" || params.curvature === "true";
     if (params.grid !== undefined) o.grid = !(params.grid === "0" || params.grid === "false");
-    if (params.aa !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(params.aa) >= 0) o.antialias = params.aa;
+    if (params.aa !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(params.aa) >= 0) o.antialias = /** @type {Manifold.Antialias} */ (params.aa);
     return o;
   }
 
   // The space a hash asks for, or the first one (with a notice for an unknown name).
+  /** @param {Record<string, string>} params */
   function spaceFromHash(params) {
     if (params.space === P.COMPARE) return P.COMPARE;
     if (params.space && P.entryOf(params.space)) return params.space;
@@ -69,6 +75,7 @@
   }
 
   // bodies=N from the hash: a whole number from 0 to 1000, else null (the default scene)
+  /** @param {Record<string, string>} params */
   function bodiesFromHash(params) {
     if (params.bodies === undefined) return null;
     const n = Number(params.bodies);
@@ -99,7 +106,7 @@
     }
   }
 
-  MW.hash = {
+  const exported = {
     updateHash: updateHash,
     setOptions: setOptions,
     optionsFromHash: optionsFromHash,
@@ -107,4 +114,7 @@
     bodiesFromHash: bodiesFromHash,
     onHashChange: onHashChange,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.hash = exported;
+  return exported;
 })(globalThis);

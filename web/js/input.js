@@ -4,7 +4,8 @@
 // with two fingers, pinch-zooms the view; the wheel zooms. Pointer events:
 // mouse, pen and touch alike. Also the surface point under a pixel, and
 // grab/drag/release by pixel for window.manifold.
-(function (W) {
+/* exported ManifoldWebInput */
+var ManifoldWebInput = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const state = MW.page.state;
@@ -15,6 +16,7 @@
   const GRAB = { frequency: 5, damping: 0.7 };
 
   // The surface point under backing-store pixel (x, y) of the frame on screen, or null.
+  /** @param {number} x @param {number} y */
   function surfacePoint(x, y) {
     if (state.error || !state.tracer) return null;
     if (MW.frame.surfaceStale()) MW.frame.renderNow(false);
@@ -22,6 +24,7 @@
   }
 
   // Grabs the body under pixel (x, y), if any; returns whether one was grabbed.
+  /** @param {number} x @param {number} y */
   function grabAt(x, y) {
     const w = state.world;
     if (!w) return false;
@@ -35,6 +38,7 @@
 
   // Moves the grabbed body's target to the surface under pixel (x, y); false
   // (and the target stays) off the surface or when nothing is held.
+  /** @param {number} x @param {number} y */
   function dragTo(x, y) {
     const w = state.world;
     if (!w || w.grabbed < 0) return false;
@@ -49,10 +53,13 @@
   }
 
   // ---- input: grab bodies, orbit, zoom, pan (pointer events: mouse, pen and touch alike) ---
+  /** @param {HTMLCanvasElement} canvas */
   function watchInput(canvas) {
+    /** @type {Map<number, { x: number, y: number }>} */
     const pointers = new Map(); // pointerId → {x, y} (CSS pixels)
     let pinch = 0;              // distance between two touches
     let panning = false;
+    /** @type {number | null} */
     let grabPointer = null;     // the pointer holding a body, or null
 
     function cssHeight() { return Math.max(1, canvas.getBoundingClientRect().height); }
@@ -61,6 +68,7 @@
       return Math.hypot(p[0].x - p[1].x, p[0].y - p[1].y);
     }
 
+    /** @param {PointerEvent} e */
     function capture(e) {
       try {
         canvas.setPointerCapture(e.pointerId);
@@ -68,6 +76,7 @@
         // synthetic or already-released pointers cannot be captured; dragging still works inside the canvas
       }
     }
+    /** @param {PointerEvent} e */
     function pixelOf(e) { return MW.picking.clientToPixel(canvas, e.clientX, e.clientY); }
 
     canvas.addEventListener("pointerdown", function (e) {
@@ -112,6 +121,7 @@
       }
       MW.frame.interacted();
     });
+    /** @param {PointerEvent} e */
     function end(e) {
       if (e.pointerId === grabPointer) {
         grabPointer = null;
@@ -136,7 +146,7 @@
     canvas.addEventListener("contextmenu", function (e) { e.preventDefault(); });
   }
 
-  MW.input = {
+  const exported = {
     GRAB: GRAB,
     surfacePoint: surfacePoint,
     grabAt: grabAt,
@@ -144,4 +154,7 @@
     releaseGrab: releaseGrab,
     watchInput: watchInput,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.input = exported;
+  return exported;
 })(globalThis);

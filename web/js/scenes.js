@@ -4,7 +4,8 @@
 // free point of the view, every body cleared, the default scene again, a
 // scene loaded (all or nothing; one of another space switches to it), saved
 // and downloaded, or read from a file.
-(function (W) {
+/* exported ManifoldWebScenes */
+var ManifoldWebScenes = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
@@ -20,6 +21,7 @@
   // A new world for the current space holding `scene` (parsed), or the default
   // scene cut or filled to `bodies` bodies (null: as it is). A space script
   // without an engine (an old web/gen) gets no world and a notice.
+  /** @param {ManifoldWeb.ParsedScene | null} scene @param {number | null} [bodies] */
   function newWorld(scene, bodies) {
     MW.input.releaseGrab();
     state.world = null;
@@ -36,6 +38,7 @@
   }
 
   // Adds a body from a scene body (JSON value); returns its index or throws.
+  /** @param {Manifold.SceneBody} spec */
   function addBody(spec) {
     const i = P.requireWorld().add(spec);
     bodiesChangedCount();
@@ -45,6 +48,7 @@
   // A body of the given shape at a free visible surface point: the view's
   // centre if free, else random pixels of the view's middle; else a seeded
   // random point of the space.
+  /** @param {Manifold.Shape} shape */
   function addAtView(shape) {
     const w = P.requireWorld();
     const scene = state.space.scene || [];
@@ -70,6 +74,7 @@
   }
 
   // The space's default scene again, cut or filled to n bodies (default: as it is).
+  /** @param {number | null} [n] */
   function resetScene(n) {
     if (n !== undefined && n !== null && !(Number.isInteger(n) && n >= 0 && n <= 1000)) {
       throw new RangeError("resetScene(n) expects a whole number of bodies from 0 to 1000");
@@ -101,6 +106,7 @@
 
   // Loads a scene (JSON text or value); a scene of another space switches to it.
   // Resolves with the number of bodies; rejects (and shows why on the page) on bad input.
+  /** @param {string | Manifold.Scene} json @returns {Promise<number>} */
   function loadScene(json) {
     if (state.compare) {
       // a scene is one space's: show that space alone
@@ -162,6 +168,7 @@
     setTimeout(function () { URL.revokeObjectURL(a.href); }, 1000);
   }
 
+  /** @param {File} file */
   function loadSceneFile(file) {
     const reader = new FileReader();
     reader.onload = function () { loadScene(String(reader.result)).catch(function () {}); };
@@ -169,7 +176,7 @@
     reader.readAsText(file);
   }
 
-  MW.scenes = {
+  const exported = {
     newWorld: newWorld,
     addBody: addBody,
     addAtView: addAtView,
@@ -180,4 +187,7 @@
     saveSceneFile: saveSceneFile,
     loadSceneFile: loadSceneFile,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.scenes = exported;
+  return exported;
 })(globalThis);

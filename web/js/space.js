@@ -3,7 +3,8 @@
 // compiled from the space's GLSL (or a replacement set by setSpaceGlsl, or
 // one broken on purpose by #debugBrokenShader=1), the camera and the world
 // reset, one switch after another. And the WebGL context lost and given back.
-(function (W) {
+/* exported ManifoldWebSpace */
+var ManifoldWebSpace = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
@@ -13,15 +14,19 @@
   // What #debugBrokenShader=1 appends to the space's GLSL: an undeclared identifier.
   const BROKEN_GLSL = "\nfloat brokenOnPurpose = debugBrokenShader; // #debugBrokenShader=1 in the URL\n";
 
+  /** @type {Record<string, Promise<void>>} */
   const loading = {}; // script → Promise
 
   // Loads a generated space script with a <script> tag (works from file:// too);
   // rejects when it cannot be fetched or throws while it runs.
+  /** @param {string} src */
   function loadScript(src) {
     if (!loading[src]) {
-      loading[src] = new Promise(function (resolve, reject) {
+      loading[src] = /** @type {Promise<void>} */ (new Promise(function (resolve, reject) {
         const s = document.createElement("script");
+        /** @type {string | null} */
         let thrown = null;
+        /** @param {ErrorEvent} e */
         const onError = function (e) {
           if (e.filename && e.filename.slice(-src.length) === src) {
             thrown = (e.message || "an error") + " (line " + e.lineno + ")";
@@ -47,11 +52,12 @@
             "`manifold build` (it writes web/gen) and reload."));
         };
         document.head.appendChild(s);
-      });
+      }));
     }
     return loading[src];
   }
 
+  /** @param {string} name */
   function glslFor(name) {
     const text = Object.prototype.hasOwnProperty.call(state.glslOverrides, name)
       ? state.glslOverrides[name] : Manifold.spaces[name].glsl;
@@ -62,6 +68,13 @@
   // trace shader, loads the space's default scene (or `how.scene`, or the
   // default cut or filled to `how.bodies` bodies; `how.keep`: keeps the world
   // and the camera when the space is the current one) and draws a frame. Returns the space's name.
+  /**
+   * How a space switch goes: `scene`, a parsed scene to load; `bodies`, the
+   * default scene cut or filled to that many; `keep`, the world and camera
+   * kept when the space is the current one.
+   * @typedef {{ scene?: ManifoldWeb.ParsedScene | null, bodies?: number | null, keep?: boolean }} How
+   */
+  /** @param {string} name @param {How} [how] @returns {Promise<string>} */
   async function applySpace(name, how) {
     how = how || {};
     const entry = P.entryOf(name);
@@ -112,6 +125,7 @@
   }
 
   // Space switches run one after another; each call's promise settles with its own outcome.
+  /** @param {string} name @param {How} [how] @returns {Promise<string>} */
   function setSpace(name, how) {
     const job = state.queue.then(function () {
       MW.compareSetup.leaveComparison();
@@ -123,6 +137,7 @@
   }
 
   // ---- context loss ------------------------------------------------------------------------
+  /** @param {HTMLCanvasElement} canvas */
   function watchContext(canvas) {
     canvas.addEventListener("webglcontextlost", function (e) {
       e.preventDefault();
@@ -145,10 +160,13 @@
     });
   }
 
-  MW.space = {
+  const exported = {
     loadScript: loadScript,
     applySpace: applySpace,
     setSpace: setSpace,
     watchContext: watchContext,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.space = exported;
+  return exported;
 })(globalThis);
