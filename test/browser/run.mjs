@@ -10,7 +10,8 @@
 // hash, orbit, zoom, previews, camera, curvature colours, antialiasing, stats,
 // resize), performance (what the running page allocates a frame: performance.mjs),
 // bodies (bodies.mjs), errors (the error paths), file (file://), hidpi (HiDPI
-// and touch), compare (compare.mjs), benchmarks (the bench scripts end to end:
+// and touch), compare (compare.mjs), types (web/manifold.d.ts against the page
+// and web/gen: types.mjs), benchmarks (the bench scripts end to end:
 // benchscripts.mjs). The default run is all of them.
 import path from "node:path";
 import url from "node:url";
@@ -21,6 +22,7 @@ import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 import { testPerformance } from "./performance.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
+import { testTypes } from "./types.mjs";
 import { commandLine } from "../../bench/options.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
@@ -33,7 +35,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "performance", "bodies", "errors", "file", "hidpi", "compare", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -601,6 +603,7 @@ async function main() {
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);
     if (partWanted("compare")) await testCompare(check, browser, server.url);
+    if (partWanted("types")) await testTypes(check, context, server.url);
     if (partWanted("benchmarks")) await testBenchScripts(check);
     await context.close();
   } catch (e) {
