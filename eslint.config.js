@@ -37,7 +37,7 @@ const BUG_RULES = {
 };
 
 module.exports = [
-  { ignores: ["web/gen/**", "node_modules/**", "test-output/**", "dist-newstyle/**"] },
+  { ignores: ["web/gen/**", "node_modules/**", "test-output/**", "dist-newstyle/**", ".stack-work/**"] },
   js.configs.recommended,
   { rules: BUG_RULES },
   {
