@@ -177,7 +177,7 @@ const fmt = (x, d = 3) => (x === null || x === undefined ? "–" : x.toFixed(d))
 const server = await serveWeb(WEB);
 const browser = await launchBrowser();
 const results = [], fps = [];
-let environment = {};
+let environment; // the page's browser and timer, read in the try below
 try {
   const context = await browser.newContext({ viewport: VIEWPORT, deviceScaleFactor: 1 });
   const page = await context.newPage();

@@ -1,7 +1,8 @@
 // Browser tests of the bodies: drawn from the engine's polygons, hidden behind
 // the surface, grabbed and dragged with real mouse events, stepped
 // deterministically, saved and loaded as scenes. Run by run.mjs (part "bodies";
-// the per-space visibility check runs with each space).
+// the per-space visibility check runs with each space; what the running page
+// allocates with many bodies is in performance.mjs).
 import fs from "node:fs";
 import path from "node:path";
 import { OUT, canvasShot } from "./lib.mjs";
@@ -74,7 +75,7 @@ export async function checkVisibleBodies(check, page, name) {
     (shown.length ? " (" + shown.map(function (v) { return v.index + (v.image ? "'" : "") + ":" + v.fraction.toFixed(2); }).join(" ") + ")" : ""));
 }
 
-async function openSpace(context, base, hash, errors) {
+export async function openSpace(context, base, hash, errors) {
   const page = await context.newPage();
   page.on("console", function (m) { if (m.type() === "error") errors.push("console: " + m.text()); });
   page.on("pageerror", function (e) { errors.push("pageerror: " + e.message); });
@@ -399,43 +400,8 @@ async function testApi(check, context, base) {
   await page.close();
 }
 
-// What the running page allocates a frame (V8's sampling heap profiler, counting
-// what was collected too), with n bodies falling on the torus: steps, drawing, stats.
-async function garbagePerFrame(page, client, n) {
-  const bodies = torusBodies(n, 0.04);
-  await page.evaluate(function (b) {
-    const m = window.manifold;
-    return m.loadScene({ space: "torus", gravity: true, bodies: b }).then(function () { m.resume(); });
-  }, bodies);
-  await page.waitForTimeout(1500); // the first frames trace the surface; the engine warms up
-  const s0 = await page.evaluate(function () { return window.manifold.stats(); });
-  await client.send("HeapProfiler.startSampling", { samplingInterval: 256, includeObjectsCollectedByMinorGC: true, includeObjectsCollectedByMajorGC: true });
-  await page.waitForTimeout(2500);
-  const { profile } = await client.send("HeapProfiler.stopSampling");
-  const s1 = await page.evaluate(function () { return window.manifold.stats(); });
-  const total = (function sum(node) { return node.selfSize + node.children.reduce(function (t, c) { return t + sum(c); }, 0); })(profile.head);
-  const frames = s1.frames - s0.frames;
-  return { bytes: total / Math.max(1, frames), frames: frames, steps: s1.steps - s0.steps, bodies: s1.bodies };
-}
-
-// The running page's garbage does not grow with its bodies: the emitted step
-// allocates nothing, and the drawing checks the bodies' colours without
-// building a key (a string of every colour, about 30 KB a frame with 300
-// bodies). What is left is the frame's own (camera, stats), a few KB.
-async function testFrameGarbage(check, context, base) {
-  const errors = [];
-  const page = await openSpace(context, base, "#space=torus", errors);
-  const client = await context.newCDPSession(page);
-  await client.send("HeapProfiler.enable");
-  const r = await garbagePerFrame(page, client, 300);
-  check("the running page allocates at most 8 KB a frame with 300 bodies (torus, stepping and drawing)",
-    r.frames > 5 && r.steps > 0 && r.bodies === 300 && r.bytes <= 8192 && errors.length === 0,
-    JSON.stringify({ bytesPerFrame: Math.round(r.bytes), frames: r.frames, steps: r.steps, bodies: r.bodies, errors: errors }));
-  await page.close();
-}
-
 // n small bodies round the torus (R = 0.8, r = 0.5 about the y axis), on a grid of 20 turns
-function torusBodies(n, size) {
+export function torusBodies(n, size) {
   const bodies = [];
   for (let k = 0; k < n; k++) {
     const u = 2 * Math.PI * (k % 20) / 20, v = 2 * Math.PI * Math.floor(k / 20) / Math.ceil(n / 20), rho = 0.8 + 0.5 * Math.cos(v);
@@ -562,7 +528,6 @@ async function testBodyForms(check, context, base) {
 }
 
 export async function testBodies(check, context, base) {
-  await testFrameGarbage(check, context, base);
   await testBodyForms(check, context, base);
   await testHidden(check, context, base);
   await testDrag(check, context, base, "sphere", [0.5, 0.5], [-100, 0]);

@@ -5,14 +5,24 @@
 //
 // Env: MANIFOLD_EXE (else `cabal list-bin exe:manifold`), CHROMIUM (else /usr/bin/chromium).
 // Screenshots of every space go to test-output/browser/. Ends with "N passed, M failed".
+//
+// The parts (each space's own checks run with the space): interaction (selector,
+// hash, orbit, zoom, previews, camera, curvature colours, antialiasing, stats,
+// resize), performance (what the running page allocates a frame: performance.mjs),
+// bodies (bodies.mjs), errors (the error paths), file (file://), hidpi (HiDPI
+// and touch), compare (compare.mjs), types (web/manifold.d.ts against the page
+// and web/gen: types.mjs), benchmarks (the bench scripts end to end:
+// benchscripts.mjs). The default run is all of them.
 import path from "node:path";
 import url from "node:url";
 import {
   WEB, OUT, launchBrowser, serve, canvasShot, createChecks,
 } from "./lib.mjs";
 import { checkVisibleBodies, testBodies } from "./bodies.mjs";
+import { testPerformance } from "./performance.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
+import { testTypes } from "./types.mjs";
 import { commandLine } from "../../bench/options.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
@@ -25,7 +35,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "bodies", "errors", "file", "hidpi", "compare", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -587,11 +597,13 @@ async function main() {
       if (r) stats[name] = { maxField: r.maxField, maxErr: r.maxErr, ms: Date.now() - t };
     }
     if (partWanted("interaction")) await testInteraction(context, server.url);
+    if (partWanted("performance")) await testPerformance(check, context, server.url);
     if (partWanted("bodies")) await testBodies(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);
     if (partWanted("compare")) await testCompare(check, browser, server.url);
+    if (partWanted("types")) await testTypes(check, context, server.url);
     if (partWanted("benchmarks")) await testBenchScripts(check);
     await context.close();
   } catch (e) {

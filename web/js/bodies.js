@@ -13,7 +13,8 @@
 // space's images (space.images, generated: −p on antipodal quotients, the
 // neighbouring translates on the flat torus and Klein bottle, so bodies show
 // on both sides of a seam).
-(function (W) {
+/* exported ManifoldWebBodies */
+var ManifoldWebBodies = (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
   // how far beyond the flat spaces' square bodies are drawn (world units): 0, the
@@ -23,6 +24,7 @@
   const FORM_TOLERANCE = 0.5;
   // the strides of the directions a coarser form keeps
   const DIRECTION_STRIDES = [4, 3, 2, 1];
+  /** @type {Manifold.Image} */
   const IDENTITY = [1, 1, 1, 0, 0, 0];
   // "auto": each body in the coarsest form that looks the same as its mesh; "mesh": every body as its whole mesh
   const BODY_DETAILS = ["auto", "mesh"];
@@ -111,22 +113,39 @@ void main() {
 }
 `;
 
+  /**
+   * A form a body is drawn in: every `stride`-th direction and `ringStride`-th
+   * ring of its mesh; its vertices as offsets into the engine's body, its
+   * triangles over those, and their marks.
+   * @typedef {{ stride: number, ringStride: number, vertices: Int32Array, indices: Uint32Array, marks: Float32Array }} Form
+   */
+
   class BodyRenderer {
+    /** @param {WebGL2RenderingContext} gl */
     constructor(gl) {
       this.gl = gl;
       this.program = G.createProgram(gl, VERTEX, FRAGMENT, "body polygons");
       this.markProgram = G.createProgram(gl, MARK_VERTEX, MARK_FRAGMENT, "grab mark");
-      this.vao = gl.createVertexArray();
-      this.markVao = gl.createVertexArray();
-      this.positions = gl.createBuffer();
-      this.colours = gl.createBuffer();
-      this.marks = gl.createBuffer();
-      this.indices = gl.createBuffer();
+      this.vao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
+      this.markVao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
+      this.positions = /** @type {WebGLBuffer} */ (gl.createBuffer());
+      this.colours = /** @type {WebGLBuffer} */ (gl.createBuffer());
+      this.marks = /** @type {WebGLBuffer} */ (gl.createBuffer());
+      this.indices = /** @type {WebGLBuffer} */ (gl.createBuffer());
+      /** @type {{ directions: number, steps: number, verticesPerBody: number } | null} */
       this.layout = null;       // { directions, steps, verticesPerBody } the static buffers were built for
       this.capacity = 0;        // bodies the static buffers hold
+      /** @type {Form[] | null} */
       this.forms = null;        // the templates of the coarser forms, coarsest first, then of the whole mesh (buildStatic)
+      this.meshForm = 0;        // the whole mesh's index in forms
       this.heldCount = -1;      // bodies the index, mark and colour buffers hold (-1: none yet)
+      this.indexCount = 0;      // indices the index buffer holds
       this.scratch = new Float32Array(0);
+      this.indexScratch = new Uint32Array(0);
+      this.formPoints = new Float64Array(0);
+      this.formOf = new Uint8Array(0);
+      this.heldForms = new Uint8Array(0);
+      /** @type {Manifold.Rgb[]} */
       this.colourOf = [];       // per body, the colour its vertices in the colour buffer have
       const p = this.program.program;
       gl.bindVertexArray(this.vao);
@@ -161,9 +180,11 @@ void main() {
     // axis): a drawing parametrisation for the outline and the axis mark,
     // linear along a ray and 1 on the outline, so a coarser mesh interpolates
     // the marks the mesh has along its rays and its outline.
+    /** @param {Manifold.Engine} E @param {number} capacity */
     buildStatic(E, capacity) {
       const gl = this.gl;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
+      /** @param {number} d @param {number} k */
       const mesh = function (d, k) { return k === 0 ? 0 : E.vertexIndex(d % nd, k); };
       // the mark of each of the engine's vertices of a body, by its index
       const marks = [[0, 0, 0]];
@@ -171,11 +192,14 @@ void main() {
         const c = Math.cos(2 * Math.PI * d / nd), sn = Math.sin(2 * Math.PI * d / nd);
         for (let k = 1; k <= ns; k++) marks[E.vertexIndex(d, k)] = [k / ns, d === 0 ? k / ns : c * k / ns, d === 0 ? 0 : sn * k / ns];
       }
+      /** @param {number} t */
       const markOf = function (t) { return marks[t]; };
       // the mesh of every s-th direction and every r-th ring: its vertices as
       // offsets into the engine's body, its triangles over those
+      /** @param {number} s @param {number} r @returns {Form} */
       const form = function (s, r) {
-        const m = nd / s, rings = ns / r, vertices = [0], indices = [];
+        const m = nd / s, rings = ns / r, vertices = [0], indices = /** @type {number[]} */ ([]);
+        /** @param {number} j @param {number} t */
         const at = function (j, t) { return 1 + (j % m) * rings + t; }; // direction j·s, ring (t + 1)·r
         for (let j = 0; j < m; j++) {
           for (let t = 0; t < rings; t++) vertices.push(mesh(j * s, (t + 1) * r));
@@ -185,7 +209,7 @@ void main() {
           }
         }
         return { stride: s, ringStride: r, vertices: Int32Array.from(vertices), indices: Uint32Array.from(indices),
-          marks: Float32Array.from([].concat.apply([], vertices.map(markOf))) };
+          marks: Float32Array.from(vertices.map(markOf).flat()) };
       };
       this.forms = [];
       for (const s of DIRECTION_STRIDES) {
@@ -225,6 +249,10 @@ void main() {
     // direction a to direction a + s, which is where it interpolates that
     // vertex's mark. Returns whether any form differs from the one the
     // buffers hold.
+    /**
+     * @param {ManifoldWeb.DrawnWorld} world @param {number} n @param {ManifoldWeb.OverlayFrame} frame
+     * @param {Manifold.Image[]} images
+     */
     chooseForms(world, n, frame, images) {
       const E = world.engine, v = world.a.verts;
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
@@ -280,6 +308,7 @@ void main() {
 
     // Rebuilds the index and mark buffers for the forms chosen (only when
     // they change, so a still pile uploads nothing but its positions).
+    /** @param {number} n */
     layOut(n) {
       const gl = this.gl;
       let vertexCount = 0, indexCount = 0;
@@ -303,6 +332,7 @@ void main() {
 
     // Draws the world's bodies into the bound colour buffer of `frame` (see
     // the tracer's overlay hook).
+    /** @param {ManifoldWeb.DrawnWorld} world @param {ManifoldWeb.OverlayFrame} frame */
     draw(world, frame) {
       const gl = this.gl;
       const E = world.engine;
@@ -413,6 +443,7 @@ void main() {
 
     // Whether the first n bodies' colours differ from those the colour buffer
     // holds; if so, remembers them as held.
+    /** @param {ManifoldWeb.BodyInfo[]} info @param {number} n */
     coloursChanged(info, n) {
       const held = this.colourOf;
       let changed = held.length !== n;
@@ -434,6 +465,8 @@ void main() {
     }
   }
 
-  W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.bodies = { BodyRenderer: BodyRenderer, BODY_DETAILS: BODY_DETAILS };
+  const exported = { BodyRenderer: BodyRenderer, BODY_DETAILS: BODY_DETAILS };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.bodies = exported;
+  return exported;
 })(globalThis);

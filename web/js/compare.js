@@ -11,24 +11,53 @@
 // The chart (toSquare, fromSquare), the flat curvature pulled back onto the
 // torus (flatGlsl) and the two scenes come from web/gen/compare-torus.js
 // (Lib/Manifold/Chart.hs); this file only draws and routes input.
-(function (W) {
+/* exported ManifoldWebCompare */
+var ManifoldWebCompare = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
 
   // the square's colours (display RGB 0..1): K = 0, K > 0, K < 0, as the tracer's
-  const WHITE = [0.93, 0.93, 0.93], RED = [0.86, 0.12, 0.10], BLUE = [0.12, 0.30, 0.90];
-  const PLAIN = [0.86, 0.80, 0.70];
+  /** @type {Manifold.Rgb} */ const WHITE = [0.93, 0.93, 0.93];
+  /** @type {Manifold.Rgb} */ const RED = [0.86, 0.12, 0.10];
+  /** @type {Manifold.Rgb} */ const BLUE = [0.12, 0.30, 0.90];
+  /** @type {Manifold.Rgb} */ const PLAIN = [0.86, 0.80, 0.70];
 
-  function mix(a, b, t) { return [0, 1, 2].map(function (k) { return a[k] + (b[k] - a[k]) * t; }); }
+  /**
+   * The canvases of the panes: the page's own (top left) and the three this view draws.
+   * @typedef {{ mainCanvas: HTMLCanvasElement, flatCanvas: HTMLCanvasElement,
+   *   squareEmbedded: HTMLCanvasElement, squareFlat: HTMLCanvasElement }} Panes
+   */
+  /**
+   * What the view asks of the page.
+   * @typedef {object} Hooks
+   * @property {() => Manifold.OptionsShown} options the display options
+   * @property {() => number} bounds the traced space's bounds
+   * @property {(p: Manifold.Vec3) => number} curvatureOf the embedded torus's Gaussian curvature
+   * @property {{ frequency: number, damping: number }} grab the mouse joint's settings
+   * @property {() => void} interacted the view moved
+   */
+  /** A pane's square: its size in pixels, the scale, and the maps between the square and pixels.
+   * @typedef {{ w: number, h: number, s: number, toPixel: (x: number, z: number) => [number, number],
+   *   fromPixel: (px: number, py: number) => [number, number] }} SquareFrame
+   */
+
+  /** @param {Manifold.Rgb} a @param {Manifold.Rgb} b @param {number} t @returns {Manifold.Rgb} */
+  function mix(a, b, t) { return /** @type {Manifold.Rgb} */ ([0, 1, 2].map(function (k) { return a[k] + (b[k] - a[k]) * t; })); }
+  /** @param {number} K @param {number} scale */
   function curvatureColour(K, scale) {
     const c = Math.tanh(K * scale);
     return c >= 0 ? mix(WHITE, RED, c) : mix(WHITE, BLUE, -c);
   }
+  /** @param {Manifold.Rgb} c */
   function css(c) { return "rgb(" + c.map(function (x) { return Math.round(255 * Math.max(0, Math.min(1, x))); }).join(",") + ")"; }
 
   class Comparison {
     // def: Manifold.comparisons.torus; embedded, flat: World; camera: the shared camera;
     // els: {flatCanvas, squareEmbedded, squareFlat}; hooks: {options(), grab: {frequency, damping}, interacted(), curvatureOf(p)}
+    /**
+     * @param {Manifold.ComparisonDef} def @param {ManifoldWeb.World} embedded @param {ManifoldWeb.World} flat
+     * @param {ManifoldWeb.Camera} camera @param {Panes} els @param {Hooks} hooks
+     */
     constructor(def, embedded, flat, camera, els, hooks) {
       this.def = def;
       this.embedded = embedded;
@@ -40,17 +69,23 @@
       this.tracer = new MW.tracer.Tracer(this.gl);
       this.tracer.setSpaceGlsl(def.flatGlsl, "sphere tracer for the flat torus drawn on the torus");
       this.renderer = new MW.bodies.BodyRenderer(this.gl);
+      /** @type {Float64Array | null} */
       this.mapped = null;         // the flat world's polygons on the torus
+      /** @type {string | null} */
       this.drawnKey = null;       // what the panes show (camera, worlds, options)
+      /** @type {Record<string, [string, ImageData]>} */
       this.background = {};      // pane → [key, ImageData]
+      /** @type {{ pane: string, world: ManifoldWeb.World, pointerId: number } | null} */
       this.held = null;           // {pane, world, pointerId}
       this.frames = 0;
+      /** @type {[HTMLElement, string, EventListener][]} */
       this.listeners = [];
       this.watch();
     }
 
     // ---- geometry (all of it from the generated chart) ----
     // the flat world's polygons mapped onto the torus, as a world for the body renderer
+    /** @returns {ManifoldWeb.DrawnWorld} */
     flatOnTorus() {
       const f = this.flat, E = f.engine, n = f.count();
       const len = 3 * E.verticesPerBody * n;
@@ -71,24 +106,29 @@
     }
 
     // body i's outline in the square's coordinates, unwrapped round its centre
+    /** @param {ManifoldWeb.World} world @param {number} i @param {boolean} viaChart */
     outlineInSquare(world, i, viaChart) {
       const E = world.engine, v = world.a.verts, vpb = E.verticesPerBody, C = this.def;
       const L = 2 * C.half;
+      /** @param {number} k @returns {Manifold.Vec3} */
       const at = function (k) {
         const o = 3 * (vpb * i + k);
         return viaChart ? C.toSquare(v[o], v[o + 1], v[o + 2]) : [v[o], v[o + 1], v[o + 2]];
       };
       const c = at(0);
+      /** @param {Manifold.Vec3} q @returns {[number, number]} */
       const unwrap = function (q) {
         return [c[0] + wrap(q[0] - c[0]), c[2] + wrap(q[2] - c[2])];
       };
+      /** @param {number} d */
       function wrap(d) { return d - L * Math.round(d / L); }
       const pts = [];
       for (let d = 0; d < E.directions; d++) pts.push(unwrap(at(E.vertexIndex(d, E.steps))));
-      return { centre: [c[0], c[2]], outline: pts };
+      return { centre: /** @type {[number, number]} */ ([c[0], c[2]]), outline: pts };
     }
 
     // ---- the unrolled squares (2D canvas) ----
+    /** @param {HTMLCanvasElement} canvas @returns {SquareFrame} */
     squareFrame(canvas) {
       const w = canvas.width, h = canvas.height, half = this.def.half;
       const s = 0.92 * Math.min(w, h) / (2 * half);
@@ -99,6 +139,7 @@
       };
     }
 
+    /** @param {HTMLCanvasElement} canvas */
     sizeCanvas(canvas) {
       const r = canvas.getBoundingClientRect();
       const dpr = W.devicePixelRatio || 1;
@@ -113,6 +154,10 @@
 
     // the square's fill: the curvature of the surface the world lives on (the
     // embedded torus's through the chart; the flat torus's is 0), or plain
+    /**
+     * @param {string} pane @param {HTMLCanvasElement} canvas @param {SquareFrame} F
+     * @param {(x: number, z: number) => number} curvatureOf
+     */
     squareBackground(pane, canvas, F, curvatureOf) {
       const o = this.hooks.options();
       const key = [F.w, F.h, o.curvature, o.curvatureScale].join(":");
@@ -126,6 +171,7 @@
           const q = F.fromPixel(px + 0.5, py + 0.5);
           const inside = Math.abs(q[0]) <= half && Math.abs(q[1]) <= half;
           const k = 4 * (py * F.w + px);
+          /** @type {Manifold.Rgb} */
           let c;
           if (!inside) c = [0.06, 0.07, 0.09];
           else if (o.curvature) c = curvatureColour(curvatureOf(q[0], q[1]), o.curvatureScale);
@@ -137,6 +183,10 @@
       return img;
     }
 
+    /**
+     * @param {string} pane @param {HTMLCanvasElement} canvas @param {ManifoldWeb.World} world @param {boolean} viaChart
+     * @param {(x: number, z: number) => number} curvatureOf
+     */
     drawSquare(pane, canvas, world, viaChart, curvatureOf) {
       this.sizeCanvas(canvas);
       const F = this.squareFrame(canvas);
@@ -160,6 +210,7 @@
       const shifts = [[0, 0]].concat(W.Manifold.spaces[this.def.flat].images.map(function (g) { return [g[3], g[5]]; }));
       for (let i = 0; i < n; i++) {
         const o = this.outlineInSquare(world, i, viaChart);
+        /** @type {Manifold.Rgb} */
         const colour = world.info[i] ? world.info[i].colour : [0.8, 0.8, 0.8];
         // the body and its images across the edges (the flat torus's
         // quotient images, generated: translations of the square's side)
@@ -195,6 +246,7 @@
     }
 
     // ---- the flat world on the traced torus ----
+    /** @param {boolean} [force] */
     drawTorus(force) {
       const canvas = this.els.flatCanvas;
       const resized = this.sizeCanvas(canvas);
@@ -209,13 +261,14 @@
         grid: o.grid, gridSpacing: o.gridSpacing, background: o.background,
       }, function (frame) {
         frame.viewProjection = camera.viewProjection(w / h, 0.01, 100);
-        frame.eye = camera.eye.slice();
+        frame.eye = /** @type {Manifold.Vec3} */ (camera.eye.slice());
         frame.bodyDetail = o.bodyDetail;
         self.renderer.draw(self.flatOnTorus(), frame);
       }, force || resized ? null : key);
     }
 
     // Draws the three panes this view owns (the page draws the top-left one).
+    /** @param {boolean} [force] */
     render(force) {
       const o = this.hooks.options();
       const key = [this.camera.version, this.embedded.version, this.flat.version, o.curvature, o.grid, o.antialias,
@@ -225,13 +278,14 @@
       this.drawTorus(force);
       const K = this.hooks.curvatureOf, C = this.def;
       this.drawSquare("embedded", this.els.squareEmbedded, this.embedded, true,
-        function (x, z) { const p = C.fromSquare(x, 0, z); return K(p); });
+        /** @param {number} x @param {number} z */ function (x, z) { const p = C.fromSquare(x, 0, z); return K(p); });
       this.drawSquare("flat", this.els.squareFlat, this.flat, false, function () { return 0; });
       this.frames++;
     }
 
     // ---- input ----
     // the surface point of a pane's world under a client position, or null
+    /** @param {string} pane @param {number} clientX @param {number} clientY @returns {Manifold.Vec3 | null} */
     pointIn(pane, clientX, clientY) {
       if (pane === "torus-flat") {
         const px = MW.picking.clientToPixel(this.els.flatCanvas, clientX, clientY);
@@ -247,11 +301,14 @@
       return pane === "square-flat" ? [s[0], 0, s[1]] : this.def.fromSquare(s[0], 0, s[1]);
     }
 
+    /** @param {string} pane */
     worldOf(pane) { return pane === "square-embedded" ? this.embedded : this.flat; }
 
     // where body i's centre is drawn in a pane, in client (CSS) pixels (for tests)
+    /** @param {string} pane @param {number} i @returns {[number, number] | null} */
     clientPoint(pane, i) {
       const world = pane === "torus-embedded" || pane === "square-embedded" ? this.embedded : this.flat;
+      /** @type {Manifold.Vec3} */
       const p = [world.a.pos[3 * i], world.a.pos[3 * i + 1], world.a.pos[3 * i + 2]];
       let canvas, px;
       if (pane === "torus-embedded" || pane === "torus-flat") {
@@ -268,16 +325,23 @@
       return [r.left + px[0] * r.width / canvas.width, r.top + px[1] * r.height / canvas.height];
     }
 
+    /**
+     * @template {keyof HTMLElementEventMap} K
+     * @param {HTMLElement} el @param {K} type @param {(e: HTMLElementEventMap[K]) => void} f
+     * @param {AddEventListenerOptions} [opts]
+     */
     on(el, type, f, opts) {
       el.addEventListener(type, f, opts);
-      this.listeners.push([el, type, f]);
+      this.listeners.push([el, type, /** @type {EventListener} */ (f)]);
     }
 
     watch() {
       const self = this;
+      /** @type {[string, HTMLCanvasElement][]} */
       const panes = [["torus-flat", this.els.flatCanvas], ["square-embedded", this.els.squareEmbedded], ["square-flat", this.els.squareFlat]];
       panes.forEach(function (entry) {
         const pane = entry[0], el = entry[1];
+        /** @type {{ id: number, x: number, y: number } | null} */
         let orbit = null;
         self.on(el, "pointerdown", function (e) {
           if (self.held || e.button !== 0) return;
@@ -307,6 +371,7 @@
             self.hooks.interacted();
           }
         });
+        /** @param {PointerEvent} e */
         const end = function (e) {
           if (self.held && self.held.pointerId === e.pointerId && self.held.pane === pane) {
             self.held.world.release();
@@ -335,6 +400,8 @@
     }
   }
 
-  W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.compare = { Comparison: Comparison };
+  const exported = { Comparison: Comparison };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.compare = exported;
+  return exported;
 })(globalThis);

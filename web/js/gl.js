@@ -1,13 +1,20 @@
 // WebGL2 plumbing: the context, shader compilation with readable errors, and
 // render targets (the float framebuffer the tracer writes, colour buffers for
 // antialiasing). Nothing here knows about spaces or physics.
-(function (W) {
+/* exported ManifoldWebGl */
+var ManifoldWebGl = (function (W) {
   "use strict";
 
   // An error the page shows in words. `kind` says what failed ("webgl2",
   // "float-framebuffer", "shader", "load", "context-lost"); `log` holds a
   // compiler log or other detail, `source` the shader text it refers to.
   class PageError extends Error {
+    /**
+     * @param {string} kind
+     * @param {string} message
+     * @param {string} [log]
+     * @param {string} [source]
+     */
     constructor(kind, message, log, source) {
       super(message);
       this.name = "PageError";
@@ -21,6 +28,7 @@
     }
   }
 
+  /** @type {WebGLContextAttributes} */
   const CONTEXT_ATTRIBUTES = {
     alpha: false,
     antialias: false, // the tracer antialiases itself (FXAA or supersampling)
@@ -32,6 +40,7 @@
   };
 
   // A WebGL2 context with float colour buffers, or a PageError saying which is missing.
+  /** @param {HTMLCanvasElement} canvas @returns {WebGL2RenderingContext} */
   function createContext(canvas) {
     const gl = canvas.getContext("webgl2", CONTEXT_ATTRIBUTES);
     if (!gl) {
@@ -48,8 +57,14 @@
     return gl;
   }
 
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {number} type gl.VERTEX_SHADER or gl.FRAGMENT_SHADER
+   * @param {string} source
+   * @param {string} label
+   */
   function compileShader(gl, type, source, label) {
-    const shader = gl.createShader(type);
+    const shader = /** @type {WebGLShader} */ (gl.createShader(type));
     gl.shaderSource(shader, source);
     gl.compileShader(shader);
     if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
@@ -61,7 +76,19 @@
     return shader;
   }
 
+  /**
+   * A linked program and its uniforms' locations by name (looked up once).
+   * @typedef {{ program: WebGLProgram, uniform: (name: string) => WebGLUniformLocation | null }} Program
+   */
+
   // Compiles and links a program; returns { program, uniform(name) → location }.
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {string} vertexSource
+   * @param {string} fragmentSource
+   * @param {string} label
+   * @returns {Program}
+   */
   function createProgram(gl, vertexSource, fragmentSource, label) {
     const vs = compileShader(gl, gl.VERTEX_SHADER, vertexSource, label);
     let fs;
@@ -71,7 +98,7 @@
       gl.deleteShader(vs);
       throw e;
     }
-    const program = gl.createProgram();
+    const program = /** @type {WebGLProgram} */ (gl.createProgram());
     gl.attachShader(program, vs);
     gl.attachShader(program, fs);
     gl.linkProgram(program);
@@ -82,12 +109,13 @@
       gl.deleteProgram(program);
       throw new PageError("shader", "The shader program of the " + label + " failed to link.", log, fragmentSource);
     }
+    /** @type {Map<string, WebGLUniformLocation | null>} */
     const locations = new Map();
     return {
       program: program,
       uniform: function (name) {
         if (!locations.has(name)) locations.set(name, gl.getUniformLocation(program, name));
-        return locations.get(name);
+        return /** @type {WebGLUniformLocation | null} */ (locations.get(name));
       },
     };
   }
@@ -102,14 +130,24 @@
     "}",
   ].join("\n");
 
+  /** @param {WebGL2RenderingContext} gl @param {WebGLVertexArrayObject} vao */
   function drawFullscreen(gl, vao) {
     gl.bindVertexArray(vao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.bindVertexArray(null);
   }
 
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {number} width
+   * @param {number} height
+   * @param {number} internalFormat
+   * @param {number} format
+   * @param {number} type
+   * @param {number} filter
+   */
   function makeTexture(gl, width, height, internalFormat, format, type, filter) {
-    const tex = gl.createTexture();
+    const tex = /** @type {WebGLTexture} */ (gl.createTexture());
     gl.bindTexture(gl.TEXTURE_2D, tex);
     gl.texStorage2D(gl.TEXTURE_2D, 1, internalFormat, width, height);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
@@ -120,6 +158,7 @@
     return tex;
   }
 
+  /** @param {WebGL2RenderingContext} gl @param {string} what */
   function checkComplete(gl, what) {
     const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
     if (status !== gl.FRAMEBUFFER_COMPLETE) {
@@ -130,9 +169,21 @@
     }
   }
 
+  /**
+   * A framebuffer and its colour attachments.
+   * @typedef {{ fb: WebGLFramebuffer, textures: WebGLTexture[], buffers: number[], width: number, height: number }} Target
+   */
+
   // A framebuffer with `count` RGBA32F colour attachments (nearest filtering).
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {number} width
+   * @param {number} height
+   * @param {number} count
+   * @returns {Target}
+   */
   function createFloatTarget(gl, width, height, count) {
-    const fb = gl.createFramebuffer();
+    const fb = /** @type {WebGLFramebuffer} */ (gl.createFramebuffer());
     gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
     const textures = [];
     const buffers = [];
@@ -149,8 +200,14 @@
   }
 
   // A framebuffer with one RGBA8 colour attachment (linear filtering).
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {number} width
+   * @param {number} height
+   * @returns {Target}
+   */
   function createColorTarget(gl, width, height) {
-    const fb = gl.createFramebuffer();
+    const fb = /** @type {WebGLFramebuffer} */ (gl.createFramebuffer());
     gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
     const tex = makeTexture(gl, width, height, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, gl.LINEAR);
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
@@ -159,6 +216,7 @@
     return { fb: fb, textures: [tex], buffers: [gl.COLOR_ATTACHMENT0], width: width, height: height };
   }
 
+  /** @param {WebGL2RenderingContext} gl @param {Target | null | undefined} target */
   function deleteTarget(gl, target) {
     if (!target) return;
     gl.deleteFramebuffer(target.fb);
@@ -167,6 +225,13 @@
 
   // Reads one RGBA32F texel of attachment `index` of a float target;
   // (x, y) in GL convention (origin bottom-left).
+  /**
+   * @param {WebGL2RenderingContext} gl
+   * @param {Target} target
+   * @param {number} index
+   * @param {number} x
+   * @param {number} y
+   */
   function readFloatPixel(gl, target, index, x, y) {
     const out = new Float32Array(4);
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, target.fb);
@@ -176,8 +241,7 @@
     return out;
   }
 
-  W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.gl = {
+  const exported = {
     PageError: PageError,
     createContext: createContext,
     createProgram: createProgram,
@@ -188,4 +252,7 @@
     deleteTarget: deleteTarget,
     readFloatPixel: readFloatPixel,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.gl = exported;
+  return exported;
 })(globalThis);

@@ -1,10 +1,12 @@
 // Picking: the surface point under a canvas pixel, read back from the
 // tracer's float framebuffer (attachment 0 holds the traced world position).
-(function (W) {
+/* exported ManifoldWebPicking */
+var ManifoldWebPicking = (function (W) {
   "use strict";
 
   // [x, y, z] of the surface under backing-store pixel (x, y) (origin
   // top-left), or null on background or outside the canvas.
+  /** @param {ManifoldWeb.Tracer | null} tracer @param {number} x @param {number} y @returns {Manifold.Vec3 | null} */
   function pick(tracer, x, y) {
     if (typeof x !== "number" || typeof y !== "number" || !isFinite(x) || !isFinite(y)) {
       throw new TypeError("pick(x, y) expects canvas backing-store pixel coordinates");
@@ -18,12 +20,15 @@
   }
 
   // Client (CSS) coordinates of a pointer event → backing-store pixels.
+  /** @param {HTMLCanvasElement} canvas @param {number} clientX @param {number} clientY @returns {[number, number]} */
   function clientToPixel(canvas, clientX, clientY) {
     const r = canvas.getBoundingClientRect();
     return [(clientX - r.left) * (canvas.width / Math.max(1, r.width)),
             (clientY - r.top) * (canvas.height / Math.max(1, r.height))];
   }
 
-  W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.picking = { pick: pick, clientToPixel: clientToPixel };
+  const exported = { pick: pick, clientToPixel: clientToPixel };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.picking = exported;
+  return exported;
 })(globalThis);

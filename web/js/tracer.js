@@ -18,7 +18,8 @@
 // Passes 1 and 2 depend only on the camera, the space and the options: render()
 // skips them when the caller's surface key matches the one the buffers were
 // shaded with, so moving bodies cost only the copy, the overlay and the post pass.
-(function (W) {
+/* exported ManifoldWebTracer */
+var ManifoldWebTracer = (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
 
@@ -281,30 +282,45 @@ void main() {
   // The full fragment shader of the trace pass for a space's GLSL. `#line`
   // numbers the generated part as source 1 and the tracer as source 2, so a
   // compiler log line "ERROR: 1:12" points at line 12 of the space's glsl.
+  /** @param {string} spaceGlsl */
   function traceSource(spaceGlsl) {
     return "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
       "#line 1 1\n" + spaceGlsl + "\n#line 1 2\n" + TRACE_MAIN;
   }
 
+  /**
+   * The buffers of one trace size: the float target (positions, normals), the
+   * shaded surface, and the colour buffer the overlay draws into.
+   * @typedef {{ float: ManifoldWeb.Target, surface: ManifoldWeb.Target, color: ManifoldWeb.Target,
+   *   surfaceKey: string | null, traced: boolean }} Buffers
+   */
+
   class Tracer {
+    /** @param {WebGL2RenderingContext} gl */
     constructor(gl) {
       this.gl = gl;
-      this.vao = gl.createVertexArray();
+      this.vao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
+      /** @type {ManifoldWeb.Program | null} */
       this.traceProgram = null;
       this.shadeProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, SHADE_FRAGMENT, "shading pass");
       this.fxaaProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, FXAA_FRAGMENT, "FXAA pass");
       this.resampleProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, RESAMPLE_FRAGMENT, "resampling pass");
+      /** @type {Map<string, Buffers>} */
       this.buffers = new Map(); // "W×H" → { float (RGBA32F × 2), surface, color (RGBA8), surfaceKey }
+      /** @type {Buffers | null} */
       this.current = null;      // the buffers of the configured frame
       this.width = 0;           // canvas backing store
       this.height = 0;
       this.scale = 1;           // trace buffer pixels per canvas pixel (2: supersampling, 0.5: preview)
+      /** @type {Manifold.Antialias} */
       this.antialias = "fxaa";
       this.hasFrame = false;    // the current float buffer holds a traced frame
+      this.preview = false;     // the configured frame is a half-resolution preview
     }
 
     // Compiles the trace pass for a space's GLSL; throws a PageError with the
     // compiler log when it fails (the previous program is dropped either way).
+    /** @param {string} glsl @param {string} label */
     setSpaceGlsl(glsl, label) {
       this.dropSpace();
       this.traceProgram = G.createProgram(this.gl, G.FULLSCREEN_VERTEX, traceSource(glsl), label);
@@ -319,6 +335,7 @@ void main() {
 
     // Sizes the buffers for a width × height canvas and an antialiasing mode.
     // preview: trace at half resolution, no antialiasing (for slow GPUs while the view moves).
+    /** @param {number} width @param {number} height @param {Manifold.Antialias} antialias @param {boolean} [preview] */
     configure(width, height, antialias, preview) {
       const gl = this.gl;
       if (ANTIALIAS_MODES.indexOf(antialias) < 0) throw new TypeError("antialias must be one of " + ANTIALIAS_MODES.join(", "));
@@ -353,6 +370,11 @@ void main() {
     // surfaceKey: anything that changes whenever the traced picture would
     // (camera, space, options); when it equals the key of the buffers' last
     // shading, the trace and shading are reused. null: always trace.
+    /**
+     * @param {ManifoldWeb.TraceView} view
+     * @param {((frame: ManifoldWeb.OverlayFrame) => void) | null} overlay
+     * @param {string | null} [surfaceKey]
+     */
     render(view, overlay, surfaceKey) {
       const gl = this.gl;
       if (!this.current) throw new Error("Tracer.render before configure");
@@ -461,6 +483,7 @@ void main() {
 
     // The traced texel under canvas backing-store pixel (x, y), origin
     // top-left: Float32Array [x, y, z, distance] (distance -1 on background).
+    /** @param {number} x @param {number} y */
     readTexel(x, y) {
       const t = this.current.float;
       const bx = Math.min(t.width - 1, Math.floor(x * this.scale));
@@ -479,5 +502,8 @@ void main() {
     }
   }
 
-  W.ManifoldWeb.tracer = { Tracer: Tracer, traceSource: traceSource, ANTIALIAS_MODES: ANTIALIAS_MODES, MAX_STEPS: MAX_STEPS };
+  const exported = { Tracer: Tracer, traceSource: traceSource, ANTIALIAS_MODES: ANTIALIAS_MODES, MAX_STEPS: MAX_STEPS };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.tracer = exported;
+  return exported;
 })(globalThis);

@@ -1,16 +1,22 @@
 // The page's controls and messages: the space selector, the curvature and
 // antialiasing options, the stats line, the error panel, and the URL hash.
-(function (W) {
+/* exported ManifoldWebUi */
+var ManifoldWebUi = (function (W) {
   "use strict";
 
+  // The element of index.html with this id; its kind (HTMLInputElement, …) is
+  // the one the caller's declaration says, as index.html has it.
+  /** @template {HTMLElement} T @param {string} id @returns {T} */
   function $(id) {
     const el = document.getElementById(id);
     if (!el) throw new Error("index.html lacks #" + id);
-    return el;
+    return /** @type {T} */ (el);
   }
 
   // "#space=torus&curvature=1" → { space: "torus", curvature: "1" }
+  /** @param {string} hash @returns {Record<string, string>} */
   function parseHash(hash) {
+    /** @type {Record<string, string>} */
     const out = {};
     String(hash || "").replace(/^#/, "").split("&").forEach(function (kv) {
       if (!kv) return;
@@ -23,7 +29,9 @@
   }
 
   // The inverse, keys in the given order, skipping null/undefined values.
+  /** @param {Record<string, string | number | null | undefined>} params */
   function formatHash(params) {
+    /** @type {string[]} */
     const parts = [];
     Object.keys(params).forEach(function (k) {
       const val = params[k];
@@ -35,8 +43,10 @@
 
   // Numbers a shader's lines the way the compiler's log does: "S:L" with S
   // the source-string number set by `#line L S` directives.
+  /** @param {string} source */
   function numberSource(source) {
     let line = 1, string = 0;
+    /** @type {string[]} */
     const out = [];
     String(source).split("\n").forEach(function (text) {
       const m = /^\s*#line\s+(\d+)(?:\s+(\d+))?/.exec(text);
@@ -51,10 +61,40 @@
     return out.join("\n");
   }
 
+  /**
+   * What the controls call (web/js/app.js and simulation-settings.js give them).
+   * @typedef {object} Handlers
+   * @property {(name: string) => void} onSpace
+   * @property {(on: boolean) => void} onCurvature
+   * @property {(on: boolean) => void} onGrid
+   * @property {(mode: Manifold.Antialias) => void} onAntialias
+   * @property {() => void} onResetView
+   * @property {(shape: Manifold.Shape) => void} onAdd
+   * @property {() => void} onClear
+   * @property {() => void} onReset
+   * @property {() => void} onPause
+   * @property {() => void} onStep
+   * @property {(x: number) => void} onTimeScale
+   * @property {(on: boolean) => void} onGravity
+   * @property {(x: number) => void} onFriction
+   * @property {(x: number) => void} onRestitution
+   * @property {() => void} onSave
+   * @property {(file: File) => void} onLoad
+   */
+  /**
+   * What the error panel shows: a PageError (message, compiler log, shader source) or any Error.
+   * @typedef {{ message: string, log?: string, source?: string }} Shown
+   */
+
+  /** @param {Handlers} handlers */
   function createUI(handlers) {
+    /** @type {HTMLSelectElement} */
     const spaceSelect = $("space");
+    /** @type {HTMLInputElement} */
     const curvatureBox = $("curvature");
+    /** @type {HTMLInputElement} */
     const gridBox = $("grid");
+    /** @type {HTMLSelectElement} */
     const antialiasSelect = $("antialias");
     const resetButton = $("reset-view");
     const stats = $("stats");
@@ -68,22 +108,31 @@
     const messageSourceBox = $("message-source-box");
     const notice = $("notice");
     const noticeText = $("notice-text");
+    /** @type {HTMLCanvasElement} */
     const canvas = $("view");
 
     spaceSelect.addEventListener("change", function () { handlers.onSpace(spaceSelect.value); });
     curvatureBox.addEventListener("change", function () { handlers.onCurvature(curvatureBox.checked); });
     gridBox.addEventListener("change", function () { handlers.onGrid(gridBox.checked); });
-    antialiasSelect.addEventListener("change", function () { handlers.onAntialias(antialiasSelect.value); });
+    antialiasSelect.addEventListener("change", function () { handlers.onAntialias(/** @type {Manifold.Antialias} */ (antialiasSelect.value)); });
     resetButton.addEventListener("click", function () { handlers.onResetView(); });
     $("notice-close").addEventListener("click", function () { notice.hidden = true; });
 
     // bodies and simulation
+    /** @type {HTMLInputElement} */
     const sides = $("polygon-sides");
     const pause = $("pause");
+    /** @type {HTMLSelectElement} */
     const timeScale = $("time-scale");
+    /** @type {HTMLInputElement} */
     const gravity = $("gravity");
-    const friction = $("friction"), frictionValue = $("friction-value");
-    const restitution = $("restitution"), restitutionValue = $("restitution-value");
+    /** @type {HTMLInputElement} */
+    const friction = $("friction");
+    const frictionValue = $("friction-value");
+    /** @type {HTMLInputElement} */
+    const restitution = $("restitution");
+    const restitutionValue = $("restitution-value");
+    /** @type {HTMLInputElement} */
     const sceneFile = $("scene-file");
     $("add-circle").addEventListener("click", function () { handlers.onAdd("circle"); });
     $("add-square").addEventListener("click", function () { handlers.onAdd("square"); });
@@ -93,7 +142,7 @@
         showNotice("A polygon has 3 to 64 sides.");
         return;
       }
-      sides.value = n;
+      sides.value = String(n);
       handlers.onAdd({ polygon: n });
     });
     $("clear").addEventListener("click", function () { handlers.onClear(); });
@@ -118,10 +167,12 @@
       if (f) handlers.onLoad(f);
     });
 
+    /** @param {string} text */
     function showNotice(text) {
       noticeText.textContent = text;
       notice.hidden = false;
     }
+    /** @param {boolean} on */
     function setPaused(on) {
       if (pause.getAttribute("aria-pressed") === String(on)) return;
       pause.textContent = on ? "Resume" : "Pause";
@@ -130,6 +181,7 @@
 
     return {
       canvas: canvas,
+      /** @param {{ name: string, label?: string, description: string }[]} index */
       setSpaces: function (index) {
         spaceSelect.textContent = "";
         index.forEach(function (s) {
@@ -141,20 +193,26 @@
         });
         spaceSelect.disabled = index.length === 0;
       },
+      /** @param {{ name: string, description: string }} entry */
       setSpace: function (entry) {
         spaceSelect.value = entry.name;
         description.textContent = entry.description;
         description.title = entry.description;
         document.title = "Manifold: " + entry.name;
       },
+      /** @param {boolean} on */
       setCurvature: function (on) {
         curvatureBox.checked = on;
         legend.hidden = !on;
       },
+      /** @param {boolean} on */
       setGrid: function (on) { gridBox.checked = on; },
+      /** @param {Manifold.Antialias} mode */
       setAntialias: function (mode) { antialiasSelect.value = mode; },
+      /** @param {string} text */
       setStats: function (text) { stats.textContent = text; },
       // err: a PageError (or any Error); title: the panel's heading
+      /** @param {string} title @param {Shown} err */
       showError: function (title, err) {
         messageTitle.textContent = title;
         messageText.textContent = err.message || String(err);
@@ -175,6 +233,7 @@
       showNotice: showNotice,
       setPaused: setPaused,
       // {paused, timeScale, gravity, friction, restitution} → the controls
+      /** @param {Manifold.Simulation} o */
       setSimulation: function (o) {
         setPaused(!!o.paused);
         const ts = String(o.timeScale);
@@ -187,11 +246,11 @@
         timeScale.value = ts;
         gravity.checked = !!o.gravity;
         if (typeof o.friction === "number") {
-          friction.value = o.friction;
+          friction.value = String(o.friction);
           frictionValue.textContent = o.friction.toFixed(2);
         }
         if (typeof o.restitution === "number") {
-          restitution.value = o.restitution;
+          restitution.value = String(o.restitution);
           restitutionValue.textContent = o.restitution.toFixed(2);
         }
       },
@@ -199,6 +258,8 @@
     };
   }
 
-  W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.ui = { createUI: createUI, parseHash: parseHash, formatHash: formatHash, numberSource: numberSource };
+  const exported = { createUI: createUI, parseHash: parseHash, formatHash: formatHash, numberSource: numberSource };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.ui = exported;
+  return exported;
 })(globalThis);

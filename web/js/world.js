@@ -3,7 +3,8 @@
 // fixed dt. Every body is added, stepped, picked, grabbed, dragged and removed
 // through the generated procedures; this file only allocates, copies, counts,
 // validates and converts.
-(function (W) {
+/* exported ManifoldWebWorld */
+var ManifoldWebWorld = (function (W) {
   "use strict";
 
   const FIRST_CAPACITY = 64;
@@ -11,29 +12,36 @@
   // |field| at a new body's centre above this: the engine's projection failed
   const ON_SURFACE = 1e-6;
   // colours by the order bodies are added (display RGB 0..1): saturated, far from the surface's beige
+  /** @type {Manifold.Rgb[]} */
   const PALETTE = [
     [0.90, 0.22, 0.20], [0.16, 0.47, 0.90], [0.18, 0.70, 0.32], [0.95, 0.62, 0.08],
     [0.60, 0.28, 0.85], [0.05, 0.68, 0.72], [0.88, 0.25, 0.62], [0.50, 0.75, 0.10],
   ];
+  /** @type {Manifold.Rgb} */
   const STATIC_COLOUR = [0.42, 0.45, 0.50];
 
   // ---- scenes: validation naming the JSON path of the first problem (as Manifold.Scene does) ----
   // The keys that set engine parameters, with the values they take, are
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
   function sceneKeys() { return W.Manifold.sceneKeys; }
+  /** @typedef {Required<Manifold.SceneBody>} ParsedBody */
   const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "impulses"];
 
   class SceneError extends Error {
+    /** @param {string} message */
     constructor(message) {
       super(message);
       this.name = "SceneError";
     }
   }
 
+  /** @param {string} path @param {string} msg @returns {never} */
   function problem(path, msg) { throw new SceneError(path + ": " + msg); }
 
+  /** @param {unknown} v @returns {v is Record<string, unknown>} */
   function isObject(v) { return v !== null && typeof v === "object" && !Array.isArray(v); }
 
+  /** @param {string} path @param {string[]} allowed @param {unknown} v @returns {Record<string, unknown>} */
   function object(path, allowed, v) {
     if (!isObject(v)) problem(path, "must be an object");
     const unknown = Object.keys(v).filter(function (k) { return allowed.indexOf(k) < 0; });
@@ -41,27 +49,35 @@
     return v;
   }
 
+  /** @param {string} path @param {unknown} v @returns {number} */
   function number(path, v) {
     if (typeof v !== "number") problem(path, "must be a number");
     if (!isFinite(v)) problem(path, "must be a finite number");
     return v;
   }
+  /** @param {string} path @param {unknown} v @returns {number} */
   function positive(path, v) {
-    if (number(path, v) <= 0) problem(path, "must be positive");
-    return v;
+    const x = number(path, v);
+    if (x <= 0) problem(path, "must be positive");
+    return x;
   }
+  /** @param {string} path @param {unknown} v @returns {number} */
   function nonNegative(path, v) {
-    if (number(path, v) < 0) problem(path, "must not be negative");
-    return v;
+    const x = number(path, v);
+    if (x < 0) problem(path, "must not be negative");
+    return x;
   }
+  /** @param {string} path @param {unknown} v @returns {boolean} */
   function boolean(path, v) {
     if (typeof v !== "boolean") problem(path, "must be true or false");
     return v;
   }
+  /** @param {string} path @param {unknown} v @returns {Manifold.Vec3} */
   function vec3(path, v) {
     if (!Array.isArray(v) || v.length !== 3) problem(path, "must be an array of three numbers [x, y, z]");
-    return v.map(function (x, k) { return number(path + "[" + k + "]", x); });
+    return /** @type {Manifold.Vec3} */ (v.map(function (x, k) { return number(path + "[" + k + "]", x); }));
   }
+  /** @param {string} path @param {unknown} v @returns {Manifold.Shape} */
   function shape(path, v) {
     if (v === "circle" || v === "square") return v;
     if (typeof v === "string") {
@@ -77,9 +93,10 @@
     return problem(path, "must be \"circle\", \"square\" or {\"polygon\": N}");
   }
   // a body's remembered contact impulses: [[key, normal, friction], ...]
+  /** @param {string} path @param {unknown} v @returns {Manifold.Impulse[]} */
   function impulses(path, v) {
     if (!Array.isArray(v)) problem(path, "must be an array of [key, normal, friction] impulses");
-    return v.map(function (r, k) {
+    return v.map(/** @returns {Manifold.Impulse} */ function (r, k) {
       const at = path + "[" + k + "]";
       if (!Array.isArray(r) || r.length !== 3) problem(at, "must be an array of three numbers [key, normal, friction]");
       const key = number(at + "[0]", r[0]);
@@ -87,15 +104,28 @@
       return [key, nonNegative(at + "[1]", r[1]), number(at + "[2]", r[2])];
     });
   }
+  /**
+   * @template T
+   * @param {string} path @param {Record<string, unknown>} o @param {string} k
+   * @param {(path: string, v: unknown) => T} parse
+   * @returns {T}
+   */
   function required(path, o, k, parse) {
     if (!(k in o)) problem(path + "." + k, "is missing");
     return parse(path + "." + k, o[k]);
   }
+  /**
+   * @template T
+   * @param {string} path @param {Record<string, unknown>} o @param {string} k @param {T} dflt
+   * @param {(path: string, v: unknown) => T} parse
+   * @returns {T}
+   */
   function optional(path, o, k, dflt, parse) {
     return k in o ? parse(path + "." + k, o[k]) : dflt;
   }
 
   // A scene body (JSON value) → a complete body spec; throws a SceneError naming `path`.
+  /** @param {unknown} v @param {string} [path] @returns {ParsedBody} */
   function parseBody(v, path) {
     path = path || "body";
     const o = object(path, BODY_KEYS, v);
@@ -113,6 +143,7 @@
   }
 
   // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
+  /** @param {unknown} json @param {string[]} spaceNames @returns {ManifoldWeb.ParsedScene} */
   function parseScene(json, spaceNames) {
     let v = json;
     if (typeof json === "string") {
@@ -131,7 +162,7 @@
     });
     // the parameters first, then the bodies: the order Manifold.Scene
     // checks them in, so that a scene with two problems names the same one
-    const scene = { space: space };
+    const scene = /** @type {ManifoldWeb.ParsedScene} */ ({ space: space });
     keys.forEach(function (k) { // a key the scene leaves out takes the engine's default
       scene[k.key] = optional("$", o, k.key, k.default, function (path, x) { return keyValue(path, x, k); });
     });
@@ -143,34 +174,41 @@
   }
 
   // A scene key's value, checked against its generated range.
-  function keyValue(path, x, k) {
-    if (k.kind === "switch") return boolean(path, x);
-    number(path, x);
+  /** @param {string} path @param {unknown} v @param {Manifold.SceneKey} k @returns {number | boolean} */
+  function keyValue(path, v, k) {
+    if (k.kind === "switch") return boolean(path, v);
+    const x = number(path, v);
     if ((k.above !== undefined && !(x > k.above)) || (k.atLeast !== undefined && x < k.atLeast)) problem(path, k.low);
     if ((k.atMost !== undefined && x > k.atMost) || (k.whole && x !== Math.round(x))) problem(path, k.high);
     return x;
   }
 
   // A parsed scene's parameters as the engine's (by parameter name).
+  /** @param {ManifoldWeb.ParsedScene} scene */
   function sceneParams(scene) {
+    /** @type {ManifoldWeb.Params} */
     const p = {};
-    sceneKeys().forEach(function (k) { p[k.param] = k.kind === "switch" ? (scene[k.key] ? 1 : 0) : scene[k.key]; });
+    sceneKeys().forEach(function (k) { p[k.param] = k.kind === "switch" ? (scene[k.key] ? 1 : 0) : /** @type {number} */ (scene[k.key]); });
     return p;
   }
 
   // The scene keys' values for the engine's parameters (param: name → value),
   // added to a scene: the inverse of sceneParams.
+  /** @param {Record<string, unknown>} scene @param {(name: Manifold.ParamName) => number} param */
   function withParams(scene, param) {
     sceneKeys().forEach(function (k) { scene[k.key] = k.kind === "switch" ? param(k.param) > 0 : param(k.param); });
     return scene;
   }
 
+  /** @param {Manifold.Shape} s */
   function shapeCode(s) {
     return s === "circle" ? 0 : s === "square" ? 4 : s.polygon;
   }
+  /** @param {Manifold.Shape} s @returns {Manifold.Shape} */
   function copyShape(s) { return typeof s === "string" ? s : { polygon: s.polygon }; }
 
   // Deterministic pseudo-random numbers in [0, 1) (for scene filling).
+  /** @param {number} seed */
   function random(seed) {
     let s = seed >>> 0;
     return function () {
@@ -182,23 +220,33 @@
   // ---- the world ----------------------------------------------------------------
   class World {
     // space: Manifold.spaces[NAME] (with .engine)
+    /** @param {string} name @param {Manifold.Space} space */
     constructor(name, space) {
       if (!space || !space.engine) throw new Error("the space " + JSON.stringify(name) + " has no engine; rebuild web/gen with `manifold build`");
       this.name = name;
       this.space = space;
       this.engine = space.engine;
       this.images = space.images || [];
+      /** @type {ManifoldWeb.BodyInfo[]} */
       this.info = [];          // per body: { shape, density, static, colour }
       this.added = 0;          // bodies ever added (picks the next colour)
       this.version = 0;        // bumped whenever bodies move, appear or go
       this.grabbed = -1;       // the body held by the mouse joint, or -1
+      /** @type {Manifold.Vec3 | null} */
       this.target = null;      // the joint's target surface point (as picked)
       this.steps = 0;
+      /** @type {number | null} */
       this.stepMs = null;      // moving average of the physics time per step
+      this.capacity = 0;
+      /** @type {Float64Array[]} */
+      this.arrays = [];        // the engine's arrays, in the order its procedures take them …
+      /** @type {Record<Manifold.ArrayName, Float64Array>} */
+      this.a = null;           // … and by name
       this.allocate(FIRST_CAPACITY);
       this.setParams(this.engine.defaults);
     }
 
+    /** @param {number} capacity @param {boolean} [keep] */
     allocate(capacity, keep) {
       const E = this.engine;
       const old = this.a;
@@ -210,20 +258,27 @@
         if (keep && old) arr.set(old[n]);
         return arr;
       });
-      this.a = {};
+      this.a = /** @type {Record<Manifold.ArrayName, Float64Array>} */ ({});
       const self = this;
       E.arrays.forEach(function (n, i) { self.a[n] = self.arrays[i]; });
       this.a.meta[E.meta.capacity] = capacity;
     }
 
+    /** @param {Manifold.MetaName} k */
     meta(k) { return this.a.meta[this.engine.meta[k]]; }
     count() { return this.a.meta[this.engine.meta.bodyCount]; }
+    /** @param {Manifold.ParamName} k */
     param(k) { return this.a.params[this.engine.params[k]]; }
 
+    // The engine's arrays, then a procedure's own arguments (for proc.apply).
+    /** @param {number[]} own @returns {(Float64Array | number)[]} */
+    args(own) { return /** @type {(Float64Array | number)[]} */ (this.arrays).concat(own); }
+
     // Sets engine parameters by name ({dt, gravityOn, iterations, friction, restitution, ...}).
+    /** @param {ManifoldWeb.Params} p */
     setParams(p) {
       const E = this.engine;
-      Object.keys(p).forEach(function (k) {
+      /** @type {Manifold.ParamName[]} */ (Object.keys(p)).forEach(/** @this {World} */ function (k) {
         if (!(k in E.params)) throw new Error("unknown engine parameter " + JSON.stringify(k));
         const x = Number(p[k]);
         if (!isFinite(x)) throw new Error("engine parameter " + k + " must be a finite number");
@@ -232,6 +287,7 @@
     }
 
     // Adds a body from a scene body (JSON value); returns its index or throws.
+    /** @param {unknown} v */
     add(v) {
       const b = parseBody(v, "body");
       // a contact key names the other body by its index in a whole scene
@@ -240,13 +296,14 @@
     }
 
     // Adds a parsed body (its impulses aside); returns its index or throws.
+    /** @param {ParsedBody} b */
     place(b) {
       const E = this.engine;
       if (this.count() >= this.capacity) {
         if (this.capacity >= MAX_CAPACITY) throw new Error("the world is full (" + MAX_CAPACITY + " bodies)");
         this.allocate(Math.min(MAX_CAPACITY, this.capacity * 2), true);
       }
-      E.addBody.apply(null, this.arrays.concat([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
+      E.addBody.apply(null, this.args([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
         b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega]));
       const i = this.meta("lastAdded");
       const a = this.a;
@@ -255,7 +312,7 @@
       // normal is not finite, or whose centre is not on the surface, is taken back
       const onSurface = i >= 0 && [0, 1, 2].every(function (k) { return isFinite(a.normal[3 * i + k]); }) &&
         Math.abs(this.space.field(a.pos[3 * i], a.pos[3 * i + 1], a.pos[3 * i + 2])) <= ON_SURFACE;
-      if (i >= 0 && !onSurface) E.removeBody.apply(null, this.arrays.concat([i]));
+      if (i >= 0 && !onSurface) E.removeBody.apply(null, this.args([i]));
       if (!onSurface) {
         throw new Error("the body at p = " + JSON.stringify(b.p) + " does not project onto the surface of " + this.name +
           " (the field's gradient vanishes or is undefined there)");
@@ -268,10 +325,11 @@
     }
 
     // Removes body i (the last body takes its index, as the engine does).
+    /** @param {number} i */
     remove(i) {
       const n = this.count();
       if (!(Number.isInteger(i) && i >= 0 && i < n)) throw new RangeError("no body " + i + " (there are " + n + ")");
-      this.engine.removeBody.apply(null, this.arrays.concat([i]));
+      this.engine.removeBody.apply(null, this.args([i]));
       this.info[i] = this.info[n - 1];
       this.info.length = n - 1;
       if (this.grabbed === i) this.release();
@@ -292,6 +350,7 @@
     }
 
     // n physics steps; returns the time they took in ms.
+    /** @param {number} n */
     step(n) {
       if (n <= 0) return 0;
       const E = this.engine, args = this.arrays;
@@ -306,28 +365,34 @@
     }
 
     // The body whose polygon holds surface point q: { index, sign } or null.
+    /** @param {Manifold.Vec3} q @returns {{ index: number, sign: number } | null} */
     pick(q) {
-      this.engine.pickBody.apply(null, this.arrays.concat([q[0], q[1], q[2]]));
+      this.engine.pickBody.apply(null, this.args([q[0], q[1], q[2]]));
       const i = this.meta("picked");
       return i >= 0 ? { index: i, sign: this.meta("pickedSign") } : null;
     }
 
     // Holds body i at surface point q (picked through its image when sign = -1).
+    /**
+     * @param {number} i @param {number} sign @param {Manifold.Vec3} q
+     * @param {{ frequency?: number, damping?: number, maxForce?: number }} [options]
+     */
     grab(i, sign, q, options) {
       const o = options || {};
       const invMass = this.a.scalars[i * this.stride() + this.engine.slots.invMass];
       const maxForce = o.maxForce !== undefined ? o.maxForce : invMass > 0 ? 1000 / invMass : 1000;
-      this.engine.grab.apply(null, this.arrays.concat([i, sign, q[0], q[1], q[2],
+      this.engine.grab.apply(null, this.args([i, sign, q[0], q[1], q[2],
         o.frequency || 5, o.damping !== undefined ? o.damping : 0.7, maxForce]));
       this.grabbed = i;
-      this.target = q.slice();
+      this.target = /** @type {Manifold.Vec3} */ (q.slice());
       this.version++;
     }
 
+    /** @param {Manifold.Vec3} q */
     drag(q) {
       if (this.grabbed < 0) return;
-      this.engine.drag.apply(null, this.arrays.concat([q[0], q[1], q[2]]));
-      this.target = q.slice();
+      this.engine.drag.apply(null, this.args([q[0], q[1], q[2]]));
+      this.target = /** @type {Manifold.Vec3} */ (q.slice());
       this.version++;
     }
 
@@ -344,12 +409,15 @@
     // where it is (the engine's placementAngle: the angle is kept from the
     // axis a body carries, a body placed anew starts from the reference axis
     // there), and what each remembers of the last step's contacts.
+    /** @returns {Manifold.Body[]} */
     bodies() {
       const a = this.a, E = this.engine, S = E.slots, k = this.stride(), out = [];
+      /** @param {Float64Array} arr @param {number} i @returns {Manifold.Vec3} */
       const v3 = function (arr, i) { return [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]]; };
       for (let i = 0; i < this.count(); i++) {
         const info = this.info[i];
-        E.placementAngle.apply(null, this.arrays.concat([i]));
+        E.placementAngle.apply(null, this.args([i]));
+        /** @type {Manifold.Body} */
         const b = {
           shape: copyShape(info.shape),
           size: a.scalars[i * k + S.size],
@@ -369,8 +437,9 @@
 
     // What body i remembers of the last step's contact rows it owns, for
     // warm starting: [key, normal, friction] (rows with no impulse left out).
+    /** @param {number} i @returns {Manifold.Impulse[]} */
     impulses(i) {
-      const E = this.engine, P = E.prev, prev = this.a.prev, out = [];
+      const E = this.engine, P = E.prev, prev = this.a.prev, out = /** @type {Manifold.Impulse[]} */ ([]);
       const start = this.a.bodyPrev[2 * i], count = this.a.bodyPrev[2 * i + 1];
       for (let r = start; r < start + count; r++) {
         const o = E.prevStride * r;
@@ -383,6 +452,7 @@
 
     // Replaces what the bodies remember of the last step's contacts (one
     // list of impulses per body, in order; see impulses).
+    /** @param {Manifold.Impulse[][]} perBody */
     restoreImpulses(perBody) {
       const E = this.engine, P = E.prev, a = this.a;
       const total = perBody.reduce(function (t, rows) { return t + rows.length; }, 0);
@@ -403,22 +473,25 @@
     }
 
     // The world as a scene (JSON value).
+    /** @returns {Manifold.SavedScene} */
     scene() {
       const scene = withParams({ space: this.name }, this.param.bind(this));
       scene.bodies = this.bodies();
-      return scene;
+      // (the scene keys are the generated ones, Manifold.sceneKeys)
+      return /** @type {Manifold.SavedScene} */ (/** @type {unknown} */ (scene));
     }
 
     // Replaces the world's bodies and parameters by a parsed scene (see parseScene),
     // the bodies remembering the contact impulses the scene gives them.
     // All or nothing: a body that cannot be added leaves the world as it was and throws.
+    /** @param {ManifoldWeb.ParsedScene} scene */
     load(scene) {
       const saved = { arrays: this.arrays.map(function (x) { return x; }), capacity: this.capacity,
         info: this.info, added: this.added };
       this.clear();
       this.setParams(sceneParams(scene));
       try {
-        scene.bodies.forEach(function (b, k) {
+        scene.bodies.forEach(/** @this {World} */ function (b, k) {
           try {
             this.place(parseBody(b, "body"));
           } catch (e) {
@@ -436,8 +509,8 @@
       } catch (e) {
         this.arrays = saved.arrays;
         this.capacity = saved.capacity;
-        this.a = {};
-        this.engine.arrays.forEach(function (n, i) { this.a[n] = this.arrays[i]; }, this);
+        this.a = /** @type {Record<Manifold.ArrayName, Float64Array>} */ ({});
+        this.engine.arrays.forEach(/** @this {World} */ function (n, i) { this.a[n] = this.arrays[i]; }, this);
         this.info = saved.info;
         this.added = saved.added;
         this.version++;
@@ -448,14 +521,15 @@
     // The space's default scene (Manifold.spaces[NAME].scene) with the engine's
     // default parameters, cut or filled up to n bodies (seeded random points,
     // projected onto the surface by the engine, inside the boundary).
+    /** @param {number} [n] */
     loadDefault(n) {
       const E = this.engine;
       const base = (this.space.scene || []).map(function (b) {
-        return { shape: copyShape(b.shape), size: b.size, p: b.p.slice() };
+        return { shape: copyShape(b.shape), size: b.size, p: /** @type {Manifold.Vec3} */ (b.p.slice()) };
       });
       const want = n === undefined || n === null ? base.length : n;
       const bodies = base.slice(0, want);
-      this.load(withParams({ space: this.name, bodies: bodies }, function (name) { return E.defaults[name]; }));
+      this.load(/** @type {ManifoldWeb.ParsedScene} */ (withParams({ space: this.name, bodies: bodies }, function (name) { return E.defaults[name]; })));
       if (bodies.length < want) this.fill(want, base);
     }
 
@@ -463,6 +537,7 @@
     // (the default scene), positions are seeded random points of the bounding
     // ball, projected by the engine; a body outside the boundary or on
     // another body is taken back.
+    /** @param {number} n @param {{ shape: Manifold.Shape, size: number }[]} base */
     fill(n, base) {
       const rnd = random(20170 + this.count());
       const bounds = this.space.bounds || 1;
@@ -472,7 +547,7 @@
       while (this.count() < n && tries < 50 * n) {
         tries++;
         const tmpl = shapes[this.count() % shapes.length];
-        const p = [0, 1, 2].map(function () { return (2 * rnd() - 1) * bounds * 0.9; });
+        const p = /** @type {Manifold.Vec3} */ ([0, 1, 2].map(function () { return (2 * rnd() - 1) * bounds * 0.9; }));
         let i;
         try {
           i = this.add({ shape: tmpl.shape, size: tmpl.size, p: p, angle: 2 * Math.PI * rnd() });
@@ -480,6 +555,7 @@
           if (this.count() >= MAX_CAPACITY) break;
           continue;
         }
+        /** @type {Manifold.Vec3} */
         const q = [this.a.pos[3 * i], this.a.pos[3 * i + 1], this.a.pos[3 * i + 2]];
         const free = (!boundary || boundary(q[0], q[1], q[2]) > tmpl.size) && !this.overlaps(i);
         if (!free) {
@@ -491,6 +567,7 @@
 
     // Whether body i's centre or an outline vertex lies in another body (by
     // the engine's pickBody).
+    /** @param {number} i */
     overlaps(i) {
       const E = this.engine, vpb = E.verticesPerBody;
       for (let d = -1; d < E.directions; d++) {
@@ -502,6 +579,7 @@
     }
 
     // Adds a body unless it would overlap another one; returns its index or -1.
+    /** @param {Manifold.SceneBody} v */
     addFree(v) {
       const i = this.add(v);
       if (!this.overlaps(i)) return i;
@@ -529,11 +607,13 @@
       this.maxStepsPerFrame = 10;  // at most this many steps per frame …
       this.maxMsPerFrame = 30;     // … and about this much physics time; beyond, the simulation runs slower than real time
       this.accumulator = 0;
+      /** @type {number | null} */
       this.last = null;
     }
 
     // The steps due at time `now` (ms) for a world with step dt (s) whose
     // steps take about stepMs (ms; null: not known yet).
+    /** @param {number} now @param {number} dt @param {number | null} stepMs */
     due(now, dt, stepMs) {
       const last = this.last;
       this.last = now;
@@ -557,8 +637,7 @@
     }
   }
 
-  W.ManifoldWeb = W.ManifoldWeb || {};
-  W.ManifoldWeb.world = {
+  const exported = {
     World: World,
     Clock: Clock,
     SceneError: SceneError,
@@ -567,4 +646,7 @@
     PALETTE: PALETTE,
     STATIC_COLOUR: STATIC_COLOUR,
   };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.world = exported;
+  return exported;
 })(globalThis);

@@ -1,0 +1,120 @@
+// The display options (curvature colouring, grid, antialiasing, body detail)
+// and the URL hash: the hash kept in step with the page (space, bodies when
+// not the default scene's count, options), and a hash read back (at start and
+// when it is edited) into a space, a number of bodies and options.
+/* exported ManifoldWebHash */
+var ManifoldWebHash = (function (W) {
+  "use strict";
+  const MW = W.ManifoldWeb;
+  const P = MW.page, state = P.state;
+
+  function defaultBodyCount() {
+    return state.space && Array.isArray(state.space.scene) ? state.space.scene.length : 0;
+  }
+
+  // The hash says how many bodies there are when that is not the default scene's count.
+  function updateHash() {
+    /** @type {Record<string, string | number>} */
+    const params = { space: P.currentName() };
+    const w = state.world;
+    if (w && !state.compare && w.count() !== defaultBodyCount()) params.bodies = w.count();
+    if (state.options.curvature) params.curvature = 1;
+    if (!state.options.grid) params.grid = 0;
+    if (state.options.antialias !== P.DEFAULT_OPTIONS.antialias) params.aa = state.options.antialias;
+    if (state.debugBrokenShader) params.debugBrokenShader = 1;
+    const hash = MW.ui.formatHash(params);
+    if (W.location.hash === hash) return;
+    try {
+      W.history.replaceState(null, "", hash);
+    } catch (err) {
+      W.location.hash = hash;
+    }
+  }
+
+  /** @param {Partial<Manifold.DisplayOptions>} o @returns {Manifold.DisplayOptions} */
+  function setOptions(o) {
+    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail}");
+    if (o.antialias !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(o.antialias) < 0) {
+      throw new TypeError("antialias must be one of " + MW.tracer.ANTIALIAS_MODES.join(", "));
+    }
+    if (o.bodyDetail !== undefined && MW.bodies.BODY_DETAILS.indexOf(o.bodyDetail) < 0) {
+      throw new TypeError("bodyDetail must be one of " + MW.bodies.BODY_DETAILS.join(", "));
+    }
+    if (o.curvature !== undefined) state.options.curvature = !!o.curvature;
+    if (o.grid !== undefined) state.options.grid = !!o.grid;
+    if (o.antialias !== undefined) state.options.antialias = o.antialias;
+    if (o.bodyDetail !== undefined) state.options.bodyDetail = o.bodyDetail;
+    state.ui.setCurvature(state.options.curvature);
+    state.ui.setGrid(state.options.grid);
+    state.ui.setAntialias(state.options.antialias);
+    state.dirty = true;
+    if (state.spaceName) updateHash();
+    return Object.assign({}, state.options);
+  }
+
+  /** @param {Record<string, string>} params */
+  function optionsFromHash(params) {
+    /** @type {Partial<Manifold.DisplayOptions>} */
+    const o = {};
+    if (params.curvature !== undefined) o.curvature = params.curvature === "1" || params.curvature === "true";
+    if (params.grid !== undefined) o.grid = !(params.grid === "0" || params.grid === "false");
+    if (params.aa !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(params.aa) >= 0) o.antialias = /** @type {Manifold.Antialias} */ (params.aa);
+    return o;
+  }
+
+  // The space a hash asks for, or the first one (with a notice for an unknown name).
+  /** @param {Record<string, string>} params */
+  function spaceFromHash(params) {
+    if (params.space === P.COMPARE) return P.COMPARE;
+    if (params.space && P.entryOf(params.space)) return params.space;
+    if (params.space) {
+      state.ui.showNotice("There is no space " + JSON.stringify(params.space) + "; showing " +
+        state.index[0].name + " instead.");
+    }
+    return state.index[0].name;
+  }
+
+  // bodies=N from the hash: a whole number from 0 to 1000, else null (the default scene)
+  /** @param {Record<string, string>} params */
+  function bodiesFromHash(params) {
+    if (params.bodies === undefined) return null;
+    const n = Number(params.bodies);
+    if (params.bodies === "" || !Number.isInteger(n) || n < 0 || n > 1000) {
+      state.ui.showNotice("bodies=" + params.bodies + " in the link is not a whole number from 0 to 1000; showing the default scene.");
+      return null;
+    }
+    return n;
+  }
+
+  function onHashChange() {
+    const params = MW.ui.parseHash(W.location.hash);
+    const broken = params.debugBrokenShader === "1";
+    setOptions(optionsFromHash(params));
+    const name = spaceFromHash(params);
+    const bodies = bodiesFromHash(params);
+    if (name !== P.currentName() || broken !== state.debugBrokenShader) {
+      state.debugBrokenShader = broken;
+      MW.space.setSpace(name, { bodies: bodies }).catch(function () {});
+    } else if (state.world && !state.compare && (bodies === null ? defaultBodyCount() : bodies) !== state.world.count()) {
+      try {
+        MW.input.releaseGrab();
+        state.world.loadDefault(bodies === null ? undefined : bodies);
+      } catch (err) {
+        state.ui.showNotice("The scene could not be loaded: " + err.message);
+      }
+      updateHash();
+    }
+  }
+
+  const exported = {
+    updateHash: updateHash,
+    setOptions: setOptions,
+    optionsFromHash: optionsFromHash,
+    spaceFromHash: spaceFromHash,
+    bodiesFromHash: bodiesFromHash,
+    onHashChange: onHashChange,
+  };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.hash = exported;
+  return exported;
+})(globalThis);

@@ -1,0 +1,160 @@
+// Input on the page's canvas, and grabbing bodies: a press on a body grabs it
+// with the engine's mouse joint and drags it along the surface under the
+// pointer; anywhere else the pointer orbits, pans (shift or right button) or,
+// with two fingers, pinch-zooms the view; the wheel zooms. Pointer events:
+// mouse, pen and touch alike. Also the surface point under a pixel, and
+// grab/drag/release by pixel for window.manifold.
+/* exported ManifoldWebInput */
+var ManifoldWebInput = (function (W) {
+  "use strict";
+  const MW = W.ManifoldWeb;
+  const state = MW.page.state;
+
+  // ---- grabbing bodies ------------------------------------------------------------------
+  // Mouse joint settings: a 5 Hz spring, 0.7 of critical damping, and a force
+  // limit of 1000 × the body's mass (world.grab).
+  const GRAB = { frequency: 5, damping: 0.7 };
+
+  // The surface point under backing-store pixel (x, y) of the frame on screen, or null.
+  /** @param {number} x @param {number} y */
+  function surfacePoint(x, y) {
+    if (state.error || !state.tracer) return null;
+    if (MW.frame.surfaceStale()) MW.frame.renderNow(false);
+    return MW.picking.pick(state.tracer, x, y);
+  }
+
+  // Grabs the body under pixel (x, y), if any; returns whether one was grabbed.
+  /** @param {number} x @param {number} y */
+  function grabAt(x, y) {
+    const w = state.world;
+    if (!w) return false;
+    const q = surfacePoint(x, y);
+    if (!q) return false;
+    const hit = w.pick(q);
+    if (!hit) return false;
+    w.grab(hit.index, hit.sign, q, GRAB);
+    return true;
+  }
+
+  // Moves the grabbed body's target to the surface under pixel (x, y); false
+  // (and the target stays) off the surface or when nothing is held.
+  /** @param {number} x @param {number} y */
+  function dragTo(x, y) {
+    const w = state.world;
+    if (!w || w.grabbed < 0) return false;
+    const q = surfacePoint(x, y);
+    if (!q) return false;
+    w.drag(q);
+    return true;
+  }
+
+  function releaseGrab() {
+    if (state.world && state.world.grabbed >= 0) state.world.release();
+  }
+
+  // ---- input: grab bodies, orbit, zoom, pan (pointer events: mouse, pen and touch alike) ---
+  /** @param {HTMLCanvasElement} canvas */
+  function watchInput(canvas) {
+    /** @type {Map<number, { x: number, y: number }>} */
+    const pointers = new Map(); // pointerId → {x, y} (CSS pixels)
+    let pinch = 0;              // distance between two touches
+    let panning = false;
+    /** @type {number | null} */
+    let grabPointer = null;     // the pointer holding a body, or null
+
+    function cssHeight() { return Math.max(1, canvas.getBoundingClientRect().height); }
+    function spread() {
+      const p = Array.from(pointers.values());
+      return Math.hypot(p[0].x - p[1].x, p[0].y - p[1].y);
+    }
+
+    /** @param {PointerEvent} e */
+    function capture(e) {
+      try {
+        canvas.setPointerCapture(e.pointerId);
+      } catch (err) {
+        // synthetic or already-released pointers cannot be captured; dragging still works inside the canvas
+      }
+    }
+    /** @param {PointerEvent} e */
+    function pixelOf(e) { return MW.picking.clientToPixel(canvas, e.clientX, e.clientY); }
+
+    canvas.addEventListener("pointerdown", function (e) {
+      if (!state.space) return;
+      if (grabPointer !== null) { e.preventDefault(); return; } // one body at a time; other fingers wait
+      // a first primary press on a body grabs it; anywhere else the view orbits
+      if (pointers.size === 0 && e.button === 0 && !e.shiftKey) {
+        const px = pixelOf(e);
+        if (grabAt(px[0], px[1])) {
+          capture(e);
+          grabPointer = e.pointerId;
+          canvas.classList.add("holding");
+          e.preventDefault();
+          return;
+        }
+      }
+      capture(e);
+      pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+      panning = e.button === 1 || e.button === 2 || e.shiftKey;
+      if (pointers.size === 2) pinch = spread();
+      canvas.classList.add("dragging");
+      e.preventDefault();
+    });
+    canvas.addEventListener("pointermove", function (e) {
+      if (e.pointerId === grabPointer) {
+        const px = pixelOf(e);
+        dragTo(px[0], px[1]);
+        return;
+      }
+      const p = pointers.get(e.pointerId);
+      if (!p) return;
+      const dx = e.clientX - p.x, dy = e.clientY - p.y;
+      p.x = e.clientX;
+      p.y = e.clientY;
+      if (pointers.size === 1) {
+        if (panning) state.camera.pan(dx, dy, cssHeight());
+        else state.camera.orbit(dx, dy, cssHeight());
+      } else if (pointers.size === 2) {
+        const d = spread();
+        if (pinch > 0 && d > 0) state.camera.zoom(pinch / d);
+        pinch = d;
+      }
+      MW.frame.interacted();
+    });
+    /** @param {PointerEvent} e */
+    function end(e) {
+      if (e.pointerId === grabPointer) {
+        grabPointer = null;
+        canvas.classList.remove("holding");
+        releaseGrab();
+        return;
+      }
+      if (!pointers.delete(e.pointerId)) return;
+      if (pointers.size < 2) pinch = 0;
+      if (pointers.size === 0) canvas.classList.remove("dragging");
+    }
+    canvas.addEventListener("pointerup", end);
+    canvas.addEventListener("pointercancel", end);
+    canvas.addEventListener("lostpointercapture", end);
+    canvas.addEventListener("wheel", function (e) {
+      if (!state.space) return;
+      e.preventDefault();
+      const lines = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1;
+      state.camera.zoom(Math.exp(Math.max(-200, Math.min(200, e.deltaY * lines)) * 0.0015));
+      MW.frame.interacted();
+    }, { passive: false });
+    canvas.addEventListener("contextmenu", function (e) { e.preventDefault(); });
+  }
+
+  const exported = {
+    GRAB: GRAB,
+    surfacePoint: surfacePoint,
+    grabAt: grabAt,
+    dragTo: dragTo,
+    releaseGrab: releaseGrab,
+    watchInput: watchInput,
+  };
+  W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
+  W.ManifoldWeb.input = exported;
+  return exported;
+})(globalThis);

@@ -1,0 +1,111 @@
+// The page's own scripts as the type checker sees them (tsconfig.json): each
+// file of web/js is a classic script that registers one module on
+// window.ManifoldWeb and also returns it into a global var (ManifoldWebGl,
+// …), only so that its type can be named here. The page reaches the modules
+// through ManifoldWeb, at run time, so the files may call one another in any
+// order once all are loaded. Below, the classes' instance types by name, for
+// the JSDoc of the other files.
+
+interface ManifoldWebModules {
+  gl: typeof ManifoldWebGl;
+  camera: typeof ManifoldWebCamera;
+  tracer: typeof ManifoldWebTracer;
+  picking: typeof ManifoldWebPicking;
+  world: typeof ManifoldWebWorld;
+  bodies: typeof ManifoldWebBodies;
+  compare: typeof ManifoldWebCompare;
+  ui: typeof ManifoldWebUi;
+  page: typeof ManifoldWebPage;
+  frame: typeof ManifoldWebFrame;
+  input: typeof ManifoldWebInput;
+  space: typeof ManifoldWebSpace;
+  hash: typeof ManifoldWebHash;
+  compareSetup: typeof ManifoldWebCompareSetup;
+  simulationSettings: typeof ManifoldWebSimulationSettings;
+  scenes: typeof ManifoldWebScenes;
+  api: typeof ManifoldWebApi;
+}
+
+/** The page's modules (web/js), by file. */
+declare var ManifoldWeb: ManifoldWebModules;
+
+declare namespace ManifoldWeb {
+  type PageError = InstanceType<typeof ManifoldWebGl.PageError>;
+  type Camera = InstanceType<typeof ManifoldWebCamera.Camera>;
+  type Tracer = InstanceType<typeof ManifoldWebTracer.Tracer>;
+  type World = InstanceType<typeof ManifoldWebWorld.World>;
+  type Clock = InstanceType<typeof ManifoldWebWorld.Clock>;
+  type BodyRenderer = InstanceType<typeof ManifoldWebBodies.BodyRenderer>;
+  type Comparison = InstanceType<typeof ManifoldWebCompare.Comparison>;
+  type UI = ReturnType<typeof ManifoldWebUi.createUI>;
+
+  /** Engine parameters by name (World.setParams). */
+  type Params = Partial<Record<Manifold.ParamName, number>>;
+  /** What a World keeps of each body besides the engine's arrays. */
+  interface BodyInfo {
+    shape: Manifold.Shape;
+    density: number;
+    static: boolean;
+    /** one of world.js's palette's colours (shared arrays: compared by reference) */
+    colour: Manifold.Rgb;
+  }
+  /**
+   * What BodyRenderer.draw draws: a World, or the comparison's flat world
+   * mapped onto the torus (Comparison.flatOnTorus).
+   */
+  interface DrawnWorld {
+    engine: Manifold.Engine;
+    info: BodyInfo[];
+    capacity: number;
+    images: Manifold.Image[];
+    count(): number;
+    a: { verts: Float64Array };
+    target: Manifold.Vec3 | null;
+  }
+  /**
+   * A scene as world.js's parseScene gives it: the space, every scene key
+   * (Manifold.sceneKeys: given or the default), and the bodies, each with
+   * every key. World.load also takes scenes whose bodies are left to it to
+   * complete (the default scene's).
+   */
+  interface ParsedScene {
+    space: string;
+    bodies: Manifold.SceneBody[];
+    [sceneKey: string]: unknown;
+  }
+
+  /** A linked program and its uniforms (gl.js). */
+  type Program = ReturnType<typeof ManifoldWebGl.createProgram>;
+  /** A framebuffer and its colour attachments (gl.js). */
+  type Target = ReturnType<typeof ManifoldWebGl.createFloatTarget>;
+
+  /** What the tracer draws (Tracer.render). */
+  interface TraceView {
+    camera: Camera;
+    bounds: number;
+    curvature: boolean;
+    curvatureScale: number;
+    grid: boolean;
+    gridSpacing: number;
+    background: { top: Manifold.Rgb; bottom: Manifold.Rgb };
+  }
+  /**
+   * What the tracer's overlay hook gets, the colour buffer bound (Tracer.render);
+   * the page adds the view it draws the bodies in (BodyRenderer.draw).
+   */
+  interface OverlayFrame {
+    gl: WebGL2RenderingContext;
+    framebuffer: WebGLFramebuffer;
+    width: number;
+    height: number;
+    /** trace buffer pixels per canvas pixel */
+    scale: number;
+    /** the angle a pixel of this buffer spans at the eye */
+    pixelAngle: number;
+    positionTexture: WebGLTexture;
+    normalTexture: WebGLTexture;
+    viewProjection?: Float32Array;
+    eye?: Manifold.Vec3;
+    bodyDetail?: Manifold.BodyDetail;
+  }
+}

@@ -1,0 +1,397 @@
+// Types of what the page offers to scripts: the scripting API (window.manifold,
+// web/README.md lists its calls) and what the generated scripts define
+// (window.Manifold: web/gen/spaces.js, the catalogue and the scene keys; each
+// web/gen/space-NAME.js, a space with its GLSL and its physics engine;
+// web/gen/compare-torus.js, the comparison's chart and scenes), all written by
+// `manifold build` from the Haskell library. A script that drives the page
+// (a test, a notebook, the browser's console with a checker) can use it with
+// `/// <reference path="web/manifold.d.ts" />`. The page's own scripts
+// (web/js) are type-checked against it (tsconfig.json): what they read of
+// the generated objects and what window.manifold returns.
+
+declare namespace Manifold {
+  /** A point or vector of R³: [x, y, z]. */
+  type Vec3 = [number, number, number];
+  /** Display-space RGB, each 0..1. */
+  type Rgb = [number, number, number];
+
+  // ---- scenes (the JSON of `manifold sim`, docs/scenes.md) ----
+
+  /** A body's shape: a circle, a square, or a regular polygon of 3 to 64 sides. */
+  type Shape = "circle" | "square" | { polygon: number };
+  /** A contact impulse a body remembers for warm starting: [contact key, normal, friction]. */
+  type Impulse = [number, number, number];
+  /** A body as a scene gives it: shape, size and p are required, the rest has defaults. */
+  interface SceneBody {
+    shape: Shape;
+    /** > 0 */
+    size: number;
+    /** projected onto the surface by the engine */
+    p: Vec3;
+    density?: number;
+    static?: boolean;
+    v?: Vec3;
+    angle?: number;
+    omega?: number;
+    impulses?: Impulse[];
+  }
+  /** A body as the page gives it back (bodies(), scene()): every key. */
+  interface Body {
+    shape: Shape;
+    size: number;
+    density: number;
+    static: boolean;
+    p: Vec3;
+    v: Vec3;
+    angle: number;
+    omega: number;
+    /** present when the body remembers contact impulses */
+    impulses?: Impulse[];
+  }
+  /**
+   * A scene as loadScene reads it. The keys between space and bodies are the
+   * scene keys of the engine's parameters (Manifold.sceneKeys, from
+   * Lib/Manifold/Params.hs); left out, they take the engine's defaults.
+   */
+  interface Scene {
+    space: string;
+    dt?: number;
+    gravity?: boolean;
+    iterations?: number;
+    friction?: number;
+    restitution?: number;
+    bodies?: SceneBody[];
+  }
+  /** A scene as the page saves it (scene(), Save scene): every key. */
+  interface SavedScene {
+    space: string;
+    dt: number;
+    gravity: boolean;
+    iterations: number;
+    friction: number;
+    restitution: number;
+    bodies: Body[];
+  }
+
+  // ---- the generated catalogue (web/gen/spaces.js) ----
+
+  /** A scene key that sets an engine parameter, with the values it takes (Lib/Manifold/Params.hs). */
+  interface SceneKey {
+    /** the key in a scene */
+    key: string;
+    /** the engine parameter it sets (a name of Engine.params) */
+    param: ParamName;
+    default: number | boolean;
+    /** "switch": true or false (the parameter is 1 or 0) */
+    kind: "number" | "switch";
+    /** the value must be greater than this … */
+    above?: number;
+    /** … or at least this, else the message `low` */
+    atLeast?: number;
+    low?: string;
+    /** at most this, and whole if `whole`, else the message `high` */
+    atMost?: number;
+    whole?: boolean;
+    high?: string;
+  }
+  /** How a space is a quotient of its surface: its images are Space.images. */
+  type Quotient = "none" | "antipodal" | "translations" | "glide";
+  /** A space as the catalogue lists it (the page loads its script when it is chosen). */
+  interface SpaceEntry {
+    name: string;
+    description: string;
+    quotient: Quotient;
+    hasBoundary: boolean;
+    /** the space's script in web/gen */
+    script: string;
+  }
+  /** A camera: eye, target and up in world coordinates, fov the vertical field of view in degrees. */
+  interface CameraSpec {
+    eye: Vec3;
+    target: Vec3;
+    up: Vec3;
+    fov: number;
+  }
+
+  // ---- a space (web/gen/space-NAME.js) ----
+
+  /** A function of a point of R³ (the arguments are x, y, z). */
+  type ScalarField = (x: number, y: number, z: number) => number;
+  type VectorField = (x: number, y: number, z: number) => Vec3;
+  /** One of a quotient's images of a point: p ↦ s·p + t componentwise, as [sx, sy, sz, tx, ty, tz]. */
+  type Image = [number, number, number, number, number, number];
+  interface Space {
+    name: string;
+    description: string;
+    /** the surface is field = 0 */
+    field: ScalarField;
+    gradient: VectorField;
+    /** the part of the surface that is the space is boundary ≥ 0; null: all of it */
+    boundary: ScalarField | null;
+    gravity: VectorField;
+    /** Gaussian curvature at a surface point */
+    curvature: ScalarField;
+    quotient: Quotient;
+    /** the images a body is also drawn at (none for quotient "none") */
+    images: Image[];
+    /** the radius of the ball about the origin that holds the surface's view */
+    bounds: number;
+    camera: CameraSpec;
+    /** the default scene's bodies */
+    scene: { shape: Shape; size: number; p: Vec3 }[];
+    engine: Engine;
+    /** field, gradient, boundary, curvature (and helpers) as GLSL, for the sphere tracer */
+    glsl: string;
+  }
+
+  // ---- a space's physics engine (Lib/Manifold/Stage/EngineScript.hs) ----
+
+  /** The engine's arrays, in the order every procedure takes them. */
+  type ArrayName =
+    | "meta" | "params" | "pos" | "vel" | "axis" | "normal" | "scalars" | "radii" | "verts" | "outline"
+    | "grid" | "cellOf" | "items" | "contacts" | "prev" | "bodyPrev" | "mouse" | "probe" | "near" | "walk";
+  /** The world's counters and results, slots of the array meta. */
+  type MetaName =
+    | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
+    | "lastAdded" | "picked" | "pickedSign" | "placementAngle";
+  /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
+  type ParamName =
+    | "dt" | "gravityOn" | "iterations" | "friction" | "restitution" | "baumgarte" | "slop" | "bounceThreshold"
+    | "warmStart" | "maxCorrection" | "polygonStep";
+  /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
+  type SlotName = "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin";
+  type ContactField =
+    | "cA" | "cB" | "cOwner" | "cKey" | "jaX" | "jaY" | "jaZ" | "jaW" | "jbX" | "jbY" | "jbZ" | "jbW"
+    | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"
+    | "cBias" | "impulseN" | "impulseT" | "cSelfScale" | "pointX" | "pointY" | "pointZ";
+  type PrevField = "prevOwner" | "prevKey" | "prevNormal" | "prevFriction";
+  type MouseField =
+    | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
+    | "mFrequency" | "mDamping" | "mMaxForce" | "mImpulseU" | "mImpulseW" | "mSign";
+  type ContactGroup = "pairKey" | "unused" | "boundaryKey" | "selfKey" | "firstImageKey";
+  /**
+   * A generated procedure: it takes the engine's arrays (Engine.arrays, in
+   * that order), then its own numbers, and works in the arrays.
+   */
+  type Procedure = (...arraysThenArguments: (Float64Array | number)[]) => void;
+  interface Engine {
+    arrays: ArrayName[];
+    /** an array's length for a capacity of n bodies: fixed + perBody · n, as [fixed, perBody] */
+    sizes: Record<ArrayName, [number, number]>;
+    /** a body's polygon: the centre, then `steps` geodesic steps along each of `directions` directions */
+    directions: number;
+    steps: number;
+    verticesPerBody: number;
+    contactStride: number;
+    contactsPerBody: number;
+    meta: Record<MetaName, number>;
+    params: Record<ParamName, number>;
+    slots: Record<SlotName, number>;
+    contact: Record<ContactField, number>;
+    prev: Record<PrevField, number>;
+    prevStride: number;
+    /** a contact row's key: (other body + 1) · perBody + group · perGroup + point */
+    keys: { perBody: number; perGroup: number; groups: Record<ContactGroup, number> };
+    /** where step k (1 … steps) along direction d sits among a body's vertices (0 is the centre) */
+    vertexIndex: (d: number, k: number) => number;
+    mouse: Record<MouseField, number>;
+    defaults: Record<ParamName, number>;
+    /** the step's phases in order, for the benchmarks and profiles */
+    phases: [string, Procedure][];
+    /** what the phases call, each printed once */
+    subroutines: [string, Procedure][];
+    /** one step of the world */
+    step: Procedure;
+    /** the bodies' polygons again, from their positions and axes */
+    polygonise: Procedure;
+    /** (arrays, shape code (0 circle, 4 square, else the sides), size, density, static 0/1, px, py, pz, vx, vy, vz, angle, omega): meta lastAdded, -1 if refused */
+    addBody: Procedure;
+    /** (arrays, index): the last body takes the index */
+    removeBody: Procedure;
+    /** (arrays, index): meta placementAngle, the angle a scene saves */
+    placementAngle: Procedure;
+    /** (arrays, qx, qy, qz): meta picked (-1: none) and pickedSign */
+    pickBody: Procedure;
+    /** (arrays, index, sign, qx, qy, qz, frequency, damping, maxForce): the mouse joint holds the body at q */
+    grab: Procedure;
+    /** (arrays, qx, qy, qz): the mouse joint's target */
+    drag: Procedure;
+    release: Procedure;
+  }
+
+  // ---- the comparison (web/gen/compare-torus.js, Lib/Manifold/Chart.hs) ----
+
+  interface ComparisonDef {
+    /** the view's name in the space list and the URL */
+    name: string;
+    title: string;
+    /** the two spaces: the embedded torus and the flat one */
+    embedded: string;
+    flat: string;
+    /** a point of the embedded torus → (x, 0, z) of the flat torus's square */
+    toSquare: VectorField;
+    /** (x, _, z) of the square → the point of the embedded torus at those angles */
+    fromSquare: VectorField;
+    /** the square is [-half, half]² */
+    half: number;
+    /** the torus traced with the flat torus's curvature (0), through the chart */
+    flatGlsl: string;
+    scenes: { embedded: Scene; flat: Scene };
+  }
+
+  /** window.Manifold: what the generated scripts define. */
+  interface Generated {
+    /** the spaces whose scripts have loaded, by name */
+    spaces: Record<string, Space>;
+    /** web/gen/spaces.js: the scene keys that set the engine's parameters */
+    sceneKeys: SceneKey[];
+    /** web/gen/spaces.js: every space, in catalogue order */
+    spaceIndex: SpaceEntry[];
+    /** the comparisons whose scripts have loaded (web/gen/compare-torus.js: torus) */
+    comparisons?: Record<string, ComparisonDef>;
+  }
+
+  // ---- the scripting API (window.manifold) ----
+
+  type Antialias = "fxaa" | "ssaa" | "off";
+  /** "auto": each body in the coarsest form that looks the same as its mesh; "mesh": every body as its whole mesh */
+  type BodyDetail = "auto" | "mesh";
+  interface DisplayOptions {
+    curvature: boolean;
+    grid: boolean;
+    antialias: Antialias;
+    bodyDetail: BodyDetail;
+  }
+  interface OptionsShown extends DisplayOptions {
+    background: { top: Rgb; bottom: Rgb };
+    curvatureScale: number;
+    gridSpacing: number;
+  }
+  /** How the last frame drew the bodies: as fans, coarser meshes, whole meshes, and the triangles drawn. */
+  interface BodyForms {
+    fans: number;
+    coarser: number;
+    meshes: number;
+    triangles: number;
+  }
+  interface Stats {
+    fps: number;
+    /** the GPU time of the last full (traced) frame, ms */
+    frameMs: number | null;
+    frames: number;
+    preview: boolean;
+    bodies: number;
+    contacts: number;
+    warnings: number;
+    droppedContacts: number;
+    /** a moving average; null before the first step */
+    physicsMsPerStep: number | null;
+    steps: number;
+    paused: boolean;
+    timeScale: number;
+    width: number;
+    height: number;
+    space: string | null;
+    antialias: Antialias;
+    curvature: boolean;
+    grid: boolean;
+    bodyDetail: BodyDetail;
+    bodyForms: BodyForms;
+  }
+  /** The clock and the engine parameters the controls show (friction and restitution are null without a world). */
+  interface Simulation {
+    paused: boolean;
+    timeScale: number;
+    gravity: boolean;
+    friction: number | null;
+    restitution: number | null;
+  }
+  /** What setSimulation takes: any subset. */
+  interface SimulationChange {
+    paused?: boolean;
+    /** 0 … 10 */
+    timeScale?: number;
+    gravity?: boolean;
+    /** 0 … 10 */
+    friction?: number;
+    /** 0 … 1 */
+    restitution?: number;
+  }
+  type Pane = "torus-embedded" | "torus-flat" | "square-embedded" | "square-flat";
+  interface ComparisonState {
+    name: string;
+    panes: Pane[];
+    embedded: Body[];
+    flat: Body[];
+    /** the held body's index in each world, or -1 */
+    grabbed: { embedded: number; flat: number };
+    frames: number;
+    note: string;
+  }
+
+  /** window.manifold (web/README.md, "Scripting API"). Pixels are the canvas's backing-store pixels, origin top-left. */
+  interface Api {
+    /** names of every space, in catalogue order */
+    spaces(): string[];
+    /** the current space's name ("compare-torus" in the comparison view); null before the first switch */
+    space(): string | null;
+    /** resolves with the name when the shader is compiled, the default scene loaded and a frame drawn; rejects with the error text */
+    setSpace(name: string): Promise<string>;
+    /** the latest space switch (the first is the page's own) */
+    ready(): Promise<string>;
+    /** the surface point under pixel (x, y), or null on background */
+    pick(x: number, y: number): Vec3 | null;
+    /** continuous pixel coordinates of a world point (pixel (i, j) spans [i, i+1) × [j, j+1)), or null behind the eye */
+    project(p: Vec3): [number, number] | null;
+    /** draws one full-resolution frame now */
+    render(): void;
+    /** draws a frame now and waits for the GPU: its time in ms (false: reuse the traced surface if the view has not changed); null when nothing can be drawn */
+    measureFrame(retrace?: boolean): number | null;
+    stats(): Stats;
+    camera(): CameraSpec;
+    /** any subset; throws on bad input */
+    setCamera(c: Partial<CameraSpec>): CameraSpec;
+    options(): OptionsShown;
+    /** any subset; throws on an unknown antialias or bodyDetail */
+    setOptions(o: Partial<DisplayOptions>): DisplayOptions;
+    /** the error text on the page, or null */
+    error(): string | null;
+    /** replaces a space's GLSL (null restores the generated one) and rebuilds it if current */
+    setSpaceGlsl(name: string, text: string | null): Promise<string>;
+
+    /** adds a body given as in a scene; its index, or throws naming the problem */
+    addBody(spec: SceneBody): number;
+    /** removes every body */
+    clear(): void;
+    /** the space's default scene again, cut or filled to n bodies (0 … 1000); the count */
+    resetScene(n?: number | null): number;
+    /** n physics steps now (default 1); the body count */
+    step(n?: number): number;
+    bodies(): Body[];
+    pause(): void;
+    resume(): void;
+    simulation(): Simulation;
+    /** any subset; throws on bad values */
+    setSimulation(o: SimulationChange): Simulation;
+    /** grabs the body under pixel (x, y) with the mouse joint; whether one was grabbed */
+    grab(x: number, y: number): boolean;
+    /** moves the joint's target to the surface under (x, y); false off the surface or when nothing is held */
+    drag(x: number, y: number): boolean;
+    release(): void;
+    /** the held body's index, or -1 */
+    grabbed(): number;
+    /** loads a scene (JSON text or value; one of another space switches to it): the body count, or rejects naming the problem */
+    loadScene(json: string | Scene): Promise<number>;
+    /** the current scene (what Save scene downloads) */
+    scene(): SavedScene;
+    /** the comparison view's state, or null when it is not shown */
+    comparison(): ComparisonState | null;
+    /** where body i of a pane's world is drawn, in client (CSS) pixels, or null behind the eye */
+    comparisonPoint(pane: Pane, i: number): [number, number] | null;
+  }
+}
+
+/** What the generated scripts define (web/gen). */
+declare var Manifold: Manifold.Generated;
+/** The page's scripting API; set when the page starts. */
+declare var manifold: Manifold.Api;
