@@ -27,37 +27,45 @@ import Manifold.World (Param (..), WorldArrays (..))
 data Params = Params
   { pDt :: Double
   , pGravity :: Bool
-  , pIterations :: Int
+  , pSubsteps :: Int -- ^ sub-steps a step (each: gravity, warm start, solve, move, relax)
+  , pIterations :: Int -- ^ solves with the bias in each sub-step
   , pFriction :: Double
   , pRestitution :: Double
-  , pBaumgarte :: Double -- ^ fraction of the depth removed per step (paper: 0.1)
-  , pSlop :: Double -- ^ depth allowed without correction
+  , pContactHertz :: Double -- ^ a contact's stiffness, as a spring's frequency (twice this against static bodies and walls)
+  , pDampingRatio :: Double -- ^ a contact spring's damping ratio
+  , pPushout :: Double -- ^ the fastest a contact pushes overlapping bodies apart
+  , pSlop :: Double -- ^ the overlap left alone, as a fraction of the smaller body's size
+  , pSpeculative :: Double -- ^ how far apart outlines make contact rows, as a fraction of the smaller body's size
   , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
   , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
-  , pMaxCorrection :: Double -- ^ the fastest a contact pushes bodies out of an overlap
   , pPolygonStep :: Double -- ^ bodies up to this size walk their outline in one geodesic step (0: never)
   } deriving (Show, Eq)
 
--- | What a world starts with and a scene gets for a key it leaves out.
+-- | What a world starts with and a scene gets for a key it leaves out: four
+-- sub-steps of one solve each, and contacts as springs of 30 Hz with a
+-- damping ratio of 10 (Box2D v3's defaults).
 defaultParams :: Params
 defaultParams = Params
-  { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
-  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True
-  , pMaxCorrection = 0.5, pPolygonStep = 0.05 }
+  { pDt = 0.01, pGravity = True, pSubsteps = 4, pIterations = 1, pFriction = 0.4, pRestitution = 0
+  , pContactHertz = 30, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
+  , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05 }
 
 -- | A parameter as the world's parameter array holds it (a switch is 1 or 0).
 paramValue :: Params -> Param -> Double
 paramValue p = \case
   Dt -> pDt p
   GravityOn -> switch (pGravity p)
+  Substeps -> fromIntegral (pSubsteps p)
   Iterations -> fromIntegral (pIterations p)
   Friction -> pFriction p
   Restitution -> pRestitution p
-  Baumgarte -> pBaumgarte p
+  ContactHertz -> pContactHertz p
+  DampingRatio -> pDampingRatio p
+  Pushout -> pPushout p
   Slop -> pSlop p
+  Speculative -> pSpeculative p
   BounceThreshold -> pBounceThreshold p
   WarmStart -> switch (pWarmStart p)
-  MaxCorrection -> pMaxCorrection p
   PolygonStep -> pPolygonStep p
   where switch b = if b then 1 else 0
 
@@ -67,14 +75,17 @@ setParam :: Param -> Double -> Params -> Params
 setParam k x p = case k of
   Dt -> p { pDt = x }
   GravityOn -> p { pGravity = x > 0 }
+  Substeps -> p { pSubsteps = round x }
   Iterations -> p { pIterations = round x }
   Friction -> p { pFriction = x }
   Restitution -> p { pRestitution = x }
-  Baumgarte -> p { pBaumgarte = x }
+  ContactHertz -> p { pContactHertz = x }
+  DampingRatio -> p { pDampingRatio = x }
+  Pushout -> p { pPushout = x }
   Slop -> p { pSlop = x }
+  Speculative -> p { pSpeculative = x }
   BounceThreshold -> p { pBounceThreshold = x }
   WarmStart -> p { pWarmStart = x > 0 }
-  MaxCorrection -> p { pMaxCorrection = x }
   PolygonStep -> p { pPolygonStep = x }
 
 -- | Set a world's parameter array.
@@ -105,9 +116,13 @@ sceneKeys :: [SceneKey]
 sceneKeys =
   [ SceneKey "dt" Dt Positive
   , SceneKey "gravity" GravityOn Switch
+  , SceneKey "substeps" Substeps (Count 64)
   , SceneKey "iterations" Iterations (Count 1000)
   , SceneKey "friction" Friction NonNegative
   , SceneKey "restitution" Restitution Fraction
+  , SceneKey "contactHertz" ContactHertz Positive
+  , SceneKey "dampingRatio" DampingRatio NonNegative
+  , SceneKey "pushout" Pushout Positive
   ]
 
 -- | Why a (finite) number is not in a range, or 'Nothing' when it is; a
