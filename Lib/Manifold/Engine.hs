@@ -86,7 +86,7 @@ data BodyInit = BodyInit
   , biStatic :: Bool -- ^ a fixed body: it pushes and is never pushed
   , biPos :: V3 Double -- ^ projected onto the surface
   , biVel :: V3 Double -- ^ projected onto the tangent plane
-  , biAngle :: Double -- ^ from the axis the body starts with ('referenceAxis')
+  , biAngle :: Double -- ^ from the axis the body starts with ('Manifold.Surface.referenceAxis')
   , biOmega :: Double -- ^ angular velocity about the normal
   }
 
