@@ -1,7 +1,7 @@
 {-# LANGUAGE OverloadedStrings #-}
 -- | The engine's free motion: physical oracles natively, and the emitted
 -- JavaScript against the native run.
-module EngineSpec (spec) where
+module EngineSpec (spec, performanceSpec) where
 
 import Control.Monad (forM, forM_, replicateM_, when)
 import Data.Either (fromLeft)
@@ -119,6 +119,77 @@ maxDiff xs ys = maximum (0 : zipWith (\x y -> abs (x - y)) xs ys)
 spec :: Spec
 spec = freeMotionSpec >> benchSpec >> compiledSpec
 
+-- | The allocation guards: the heap a step allocates, natively and on
+-- node's heap. The suite runs them under "performance", so that
+-- @--test-options='-m performance'@ runs just them.
+performanceSpec :: Spec
+performanceSpec = do
+  describe "Engine: the compiled native step" $
+    it "allocates no heap per body or per contact row, but for the pair narrow phase's boxed arguments (settled pile, sphere, 300 bodies); nor does the generic step's solver, and its narrow phase nothing per vertex" $ do
+      -- the printed step's locals are slots of one array a phase call; as
+      -- one-number arrays of their own they cost about 480 bytes a contact
+      -- row (eighteen locals a pair in the narrow phase, five a row in the
+      -- solver's preparation)
+      w <- loadScene 0 (benchScene sphere 300) >>= either fail pure
+      usesCompiledStep w `shouldBe` True
+      replicateM_ 200 (stepNative w)
+      rows <- length <$> contacts w
+      rows `shouldSatisfy` (> 500)
+      let steps = 10
+      before <- getAllocationCounter
+      replicateM_ steps (stepNative w)
+      after <- getAllocationCounter
+      let perStep = fromIntegral (before - after) `div` steps
+      putStrLn ("    heap allocated a step: " ++ show perStep ++ " bytes, " ++ show rows ++ " contact rows")
+      -- each phase call's list of arrays and its locals (about 3.4 KB), and
+      -- two or three boxed numbers a candidate pair (GHC passes the call's 29
+      -- arguments boxed): about 42 KB here, 340 KB with a heap object a local
+      perStep `shouldSatisfy` (< 20000 + 64 * rows)
+      -- the generic step (a space of one's own) calls the field through a
+      -- record and boxes its numbers there; its solver, which calls no field,
+      -- boxed every row and velocity it passed to a helper GHC had not
+      -- inlined: 6.6 KB a contact row a step; about 120 bytes now (its
+      -- locals, each a heap object in the generic step)
+      let genericSolve = head [run | (name, run) <- stepPhasesNative (genericStep w), name == "solve"]
+      before' <- getAllocationCounter
+      replicateM_ steps genericSolve
+      after' <- getAllocationCounter
+      let solvePerStep = fromIntegral (before' - after') `div` steps
+      putStrLn ("    the generic step's solve phase: " ++ show solvePerStep ++ " bytes a step")
+      solvePerStep `shouldSatisfy` (< 20000 + 256 * rows)
+      -- its narrow phase keeps its locals on the heap too (a few hundred
+      -- bytes a candidate pair), but nothing per vertex: the sector count
+      -- once built a list of the sector boundaries, with their cosines and
+      -- sines worked out again, for every vertex it looked up (5.6 KB a
+      -- contact row on the settled sphere with 1000 bodies; 1.6 KB now)
+      let genericCollide = head [run | (name, run) <- stepPhasesNative (genericStep w), name == "collide"]
+      before'' <- getAllocationCounter
+      replicateM_ steps genericCollide
+      after'' <- getAllocationCounter
+      let collidePerStep = fromIntegral (before'' - after'') `div` steps
+      putStrLn ("    the generic step's collide phase: " ++ show collidePerStep ++ " bytes a step")
+      collidePerStep `shouldSatisfy` (< 20000 + 2500 * rows)
+
+  describe "Engine: phases and benchmark scenes" $
+    it "emits a step that, optimised by V8, allocates nothing on node's heap: every catalogue space, 150 bodies after 300 steps" $ do
+      results <- forM catalogue $ \sp -> do
+        w <- loadScene 0 (benchScene sp 150) >>= either fail pure
+        replicateM_ 300 (stepNative w)
+        initial <- arraysOf w
+        out <- nodeOverArrays ["--expose-gc", "--allow-natives-syntax", "--min-semi-space-size=16"] sp initial emittedHeapScript
+        case A.decode (BL.pack (last ("" : lines out))) of
+          Just (bytes, rows) -> do
+            putStrLn ("    " ++ spaceName sp ++ ": " ++ show (bytes :: Double) ++ " bytes a step on node's heap, " ++ show (rows :: Int) ++ " contact rows")
+            pure (spaceName sp, bytes, rows)
+          Nothing -> fail ("node printed no result for " ++ spaceName sp ++ ": " ++ take 500 out)
+      -- a number V8 cannot keep in a register becomes a heap object (16
+      -- bytes): three a touching pair (until 2026-11-22: the pair's image
+      -- shift merged with a parameter) were 0.7 to 6 KB a step here
+      [(name, bytes) | (name, bytes, _) <- results, bytes > 32] `shouldBe` []
+      -- the narrow phase ran: every space has a pile but the plane, whose
+      -- bodies fall side by side along it with nothing to land on
+      [name | (name, _, rows) <- results, rows < 20] `shouldBe` ["plane"]
+
 -- | The compiled native step (the staged step spliced as Haskell) is the
 -- generic step's twin: used only for the space it was made for, and
 -- moving bodies as the generic step does.
@@ -151,51 +222,6 @@ compiledSpec = describe "Engine: the compiled native step" $ do
       let moved = maximum (zipWith maxDiff a b')
       putStrLn ("    compiled vs generic (" ++ spaceName sp ++ "), 300 steps: max difference over all arrays " ++ show d ++ " (one step apart: " ++ show moved ++ ")")
       (spaceName sp, d < 1e-9, moved > 0) `shouldBe` (spaceName sp, True, True)
-
-  it "allocates no heap per body or per contact row, but for the pair narrow phase's boxed arguments (settled pile, sphere, 300 bodies); nor does the generic step's solver, and its narrow phase nothing per vertex" $ do
-    -- the printed step's locals are slots of one array a phase call; as
-    -- one-number arrays of their own they cost about 480 bytes a contact
-    -- row (eighteen locals a pair in the narrow phase, five a row in the
-    -- solver's preparation)
-    w <- loadScene 0 (benchScene sphere 300) >>= either fail pure
-    usesCompiledStep w `shouldBe` True
-    replicateM_ 200 (stepNative w)
-    rows <- length <$> contacts w
-    rows `shouldSatisfy` (> 500)
-    let steps = 10
-    before <- getAllocationCounter
-    replicateM_ steps (stepNative w)
-    after <- getAllocationCounter
-    let perStep = fromIntegral (before - after) `div` steps
-    putStrLn ("    heap allocated a step: " ++ show perStep ++ " bytes, " ++ show rows ++ " contact rows")
-    -- each phase call's list of arrays and its locals (about 3.4 KB), and
-    -- two or three boxed numbers a candidate pair (GHC passes the call's 29
-    -- arguments boxed): about 42 KB here, 340 KB with a heap object a local
-    perStep `shouldSatisfy` (< 20000 + 64 * rows)
-    -- the generic step (a space of one's own) calls the field through a
-    -- record and boxes its numbers there; its solver, which calls no field,
-    -- boxed every row and velocity it passed to a helper GHC had not
-    -- inlined: 6.6 KB a contact row a step; about 120 bytes now (its
-    -- locals, each a heap object in the generic step)
-    let genericSolve = head [run | (name, run) <- stepPhasesNative (genericStep w), name == "solve"]
-    before' <- getAllocationCounter
-    replicateM_ steps genericSolve
-    after' <- getAllocationCounter
-    let solvePerStep = fromIntegral (before' - after') `div` steps
-    putStrLn ("    the generic step's solve phase: " ++ show solvePerStep ++ " bytes a step")
-    solvePerStep `shouldSatisfy` (< 20000 + 256 * rows)
-    -- its narrow phase keeps its locals on the heap too (a few hundred
-    -- bytes a candidate pair), but nothing per vertex: the sector count
-    -- once built a list of the sector boundaries, with their cosines and
-    -- sines worked out again, for every vertex it looked up (5.6 KB a
-    -- contact row on the settled sphere with 1000 bodies; 1.6 KB now)
-    let genericCollide = head [run | (name, run) <- stepPhasesNative (genericStep w), name == "collide"]
-    before'' <- getAllocationCounter
-    replicateM_ steps genericCollide
-    after'' <- getAllocationCounter
-    let collidePerStep = fromIntegral (before'' - after'') `div` steps
-    putStrLn ("    the generic step's collide phase: " ++ show collidePerStep ++ " bytes a step")
-    collidePerStep `shouldSatisfy` (< 20000 + 2500 * rows)
 
 freeMotionSpec :: Spec
 freeMotionSpec = describe "Engine: free motion" $ do
@@ -366,25 +392,6 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       dropped `shouldBe` 0
       (spaceName sp, length deep >= 100) `shouldBe` (spaceName sp, True)
       (spaceName sp, missed) `shouldBe` (spaceName sp, [])
-
-  it "emits a step that, optimised by V8, allocates nothing on node's heap: every catalogue space, 150 bodies after 300 steps" $ do
-    results <- forM catalogue $ \sp -> do
-      w <- loadScene 0 (benchScene sp 150) >>= either fail pure
-      replicateM_ 300 (stepNative w)
-      initial <- arraysOf w
-      out <- nodeOverArrays ["--expose-gc", "--allow-natives-syntax", "--min-semi-space-size=16"] sp initial emittedHeapScript
-      case A.decode (BL.pack (last ("" : lines out))) of
-        Just (bytes, rows) -> do
-          putStrLn ("    " ++ spaceName sp ++ ": " ++ show (bytes :: Double) ++ " bytes a step on node's heap, " ++ show (rows :: Int) ++ " contact rows")
-          pure (spaceName sp, bytes, rows)
-        Nothing -> fail ("node printed no result for " ++ spaceName sp ++ ": " ++ take 500 out)
-    -- a number V8 cannot keep in a register becomes a heap object (16
-    -- bytes): three a touching pair (until 2026-11-22: the pair's image
-    -- shift merged with a parameter) were 0.7 to 6 KB a step here
-    [(name, bytes) | (name, bytes, _) <- results, bytes > 32] `shouldBe` []
-    -- the narrow phase ran: every space has a pile but the plane, whose
-    -- bodies fall side by side along it with nothing to land on
-    [name | (name, _, rows) <- results, rows < 20] `shouldBe` ["plane"]
 
   it "saves a world that has run as a scene that loads back with every body where it was, moving as it moved" $ do
     let scene = benchScene torus 60

@@ -316,7 +316,7 @@ genScene sp = do
   vectorOf n (genBody sp)
 
 -- | Scenes per space and steps per scene: MANIFOLD_ROBUSTNESS="NxK", or the
--- issue's 100 scenes of 2000 steps.
+-- full set: 100 scenes of 2000 steps.
 robustnessCounts :: IO (Int, Int)
 robustnessCounts = do
   e <- lookupEnv "MANIFOLD_ROBUSTNESS"

@@ -29,3 +29,5 @@ main = do
     describe "Physics" PhysicsSpec.spec
     FlatSpec.spec
     ReadmeExampleSpec.spec
+    -- the allocation guards (alone: cabal test --test-options='-m performance')
+    describe "performance" EngineSpec.performanceSpec

@@ -27,13 +27,28 @@ import Linear.Vector ((*^), (^+^), (^-^), zero)
 
 import Manifold.Field
 
+-- $setup
+-- GHCi runs this module as object code (it has unboxed tuples), so the
+-- examples see its exports and these imports only:
+--
+-- >>> import Manifold.AD
+-- >>> import Manifold.Field
+-- >>> import Linear.V3 (V3 (..))
+-- >>> import Linear.Matrix (M33)
+-- >>> import Linear.Metric (quadrance)
+
 -- | A value and its gradient.
+--
+-- >>> let V3 x y _ = variables (V3 2 3 5 :: V3 Double) in x * y + sin y
+-- D 6.141120008059867 (V3 3.0 1.0100075033995546 0.0)
 data D a = D !a !(V3 a)
   deriving (Show, Eq)
 
+-- | The value of a dual number.
 valueD :: D a -> a
 valueD (D x _) = x
 
+-- | The gradient of a dual number.
 gradientD :: D a -> V3 a
 gradientD (D _ g) = g
 
@@ -119,7 +134,11 @@ instance Field a => Field (D a) where
   {-# INLINE select #-}
   {-# INLINE floorF #-}
 
--- | The coordinates of a point as independent variables.
+-- | The coordinates of a point as independent variables: each carries the
+-- unit gradient of its own axis.
+--
+-- >>> variables (V3 1 2 3 :: V3 Double)
+-- V3 (D 1.0 (V3 1.0 0.0 0.0)) (D 2.0 (V3 0.0 1.0 0.0)) (D 3.0 (V3 0.0 0.0 1.0))
 variables :: Num a => V3 a -> V3 (D a)
 variables (V3 x y z) = V3 (D x (V3 1 0 0)) (D y (V3 0 1 0)) (D z (V3 0 0 1))
 {-# INLINE variables #-}
@@ -127,6 +146,12 @@ variables (V3 x y z) = V3 (D x (V3 1 0 0)) (D y (V3 0 1 0)) (D z (V3 0 0 1))
 -- | A scalar function of a point, with its gradient by AD, and both also
 -- compiled for 'Double' (see 'ScalarFn'). Inlined where it is used so that
 -- GHC specialises the function there.
+--
+-- >>> let f = scalarFn (\(V3 x y z) -> x * x + y * z)
+-- >>> evalFn f (V3 1 2 3 :: V3 Double)
+-- 7.0
+-- >>> gradFn f (V3 1 2 3 :: V3 Double)
+-- V3 2.0 3.0 2.0
 scalarFn :: (forall a. Field a => V3 a -> a) -> ScalarFn
 scalarFn f = ScalarFnOf f (grad f) evalD valueGradD
   where
@@ -138,17 +163,33 @@ scalarFn f = ScalarFnOf f (grad f) evalD valueGradD
 {-# INLINE scalarFn #-}
 
 -- | The gradient of a scalar function of a point.
+--
+-- >>> grad (\(V3 x y z) -> x * y * z) (V3 1 2 3 :: V3 Double)
+-- V3 6.0 3.0 2.0
+-- >>> grad (\(V3 x _ _) -> exp (2 * x)) (V3 0 0 0 :: V3 Double)
+-- V3 2.0 0.0 0.0
 grad :: Field a => (V3 (D a) -> D a) -> V3 a -> V3 a
 grad f = gradientD . f . variables
 
+-- | The value of a scalar function of a point and its gradient, from one
+-- evaluation.
+--
+-- >>> valueAndGrad (\(V3 x y _) -> x * x + 3 * y) (V3 2 1 0 :: V3 Double)
+-- (7.0,V3 4.0 3.0 0.0)
 valueAndGrad :: Field a => (V3 (D a) -> D a) -> V3 a -> (a, V3 a)
 valueAndGrad f p = let D v g = f (variables p) in (v, g)
 
 -- | Second derivatives by nesting: the Jacobian of the gradient.
+--
+-- >>> hessian (\(V3 x y z) -> x * x * y + z) (V3 1 2 3 :: V3 Double)
+-- V3 (V3 4.0 2.0 0.0) (V3 2.0 0.0 0.0) (V3 0.0 0.0 0.0)
 hessian :: Field a => (V3 (D (D a)) -> D (D a)) -> V3 a -> M33 a
 hessian f p = fmap gradientD (gradientD (f (variables (variables p))))
 
--- | Value, gradient and Hessian at once (one nested evaluation).
+-- | The gradient and the Hessian at once (one nested evaluation).
+--
+-- >>> secondOrder (scalarFn (\(V3 x y z) -> x * y + z * z)) (V3 1 2 3 :: V3 Double)
+-- (V3 2.0 1.0 6.0,V3 (V3 0.0 1.0 0.0) (V3 1.0 0.0 0.0) (V3 0.0 0.0 2.0))
 secondOrder :: Field a => ScalarFn -> V3 a -> (V3 a, M33 a)
 secondOrder sf p =
   let D (D _ g) rows = evalPoly sf (variables (variables p))
@@ -157,6 +198,17 @@ secondOrder sf p =
 -- | Gaussian curvature of the level set through @p@ of a scalar field:
 -- @K = ∇f · adj(H) ∇f / |∇f|⁴@ (Goldman, "Curvature formulas for implicit
 -- curves and surfaces", 2005).
+--
+-- The unit sphere has curvature 1 everywhere, the sphere of radius 2 a
+-- quarter, a cylinder 0:
+--
+-- >>> let sphereOf r = scalarFn (\p -> sqrt (quadrance p) - constant r)
+-- >>> gaussianCurvature (sphereOf 1) (V3 0 1 0 :: V3 Double)
+-- 1.0
+-- >>> gaussianCurvature (sphereOf 2) (V3 0 0 2 :: V3 Double)
+-- 0.25
+-- >>> gaussianCurvature (scalarFn (\(V3 x _ z) -> x * x + z * z - 1)) (V3 1 0.5 0 :: V3 Double)
+-- 0.0
 gaussianCurvature :: Field a => ScalarFn -> V3 a -> a
 gaussianCurvature f p =
   let (g, h) = secondOrder f p
@@ -165,6 +217,9 @@ gaussianCurvature f p =
 
 -- | Mean curvature, @(|∇f|² tr H − ∇f·H∇f) / (2|∇f|³)@: positive on a sphere
 -- whose field grows outwards.
+--
+-- >>> meanCurvature (scalarFn (\p -> sqrt (quadrance p) - 1)) (V3 0 1 0 :: V3 Double)
+-- 1.0
 meanCurvature :: Field a => ScalarFn -> V3 a -> a
 meanCurvature f p =
   let (g, h) = secondOrder f p
@@ -172,7 +227,11 @@ meanCurvature f p =
       V3 (V3 hxx _ _) (V3 _ hyy _) (V3 _ _ hzz) = h
   in (q * (hxx + hyy + hzz) - g `dot` (h !* g)) / (2 * q * sqrt q)
 
--- | The adjugate (transposed cofactor matrix) of a 3×3 matrix.
+-- | The adjugate (transposed cofactor matrix) of a 3×3 matrix: @A · adj A
+-- = det A · I@, defined where the inverse is not.
+--
+-- >>> adjugate (V3 (V3 2 0 0) (V3 0 3 0) (V3 0 0 4) :: M33 Int)
+-- V3 (V3 12 0 0) (V3 0 8 0) (V3 0 0 6)
 adjugate :: Num a => M33 a -> M33 a
 adjugate (V3 r0 r1 r2) =
   let V3 c0x c0y c0z = r1 `cross` r2

@@ -29,15 +29,16 @@ import Manifold.Spaces
 import Manifold.Surface
 import Manifold.Scene
 
+-- | What a timed run measured: steps' times in milliseconds.
 data BenchResult = BenchResult
   { brSpace :: String
   , brBodies :: Int -- ^ bodies placed (fewer than asked when the space is full)
-  , brSize :: Double
+  , brSize :: Double -- ^ the bodies' circumradius
   , brContacts :: Double -- ^ contact rows, the mean over the timed steps (a settled pile's count moves by a tenth from step to step)
-  , brMedianMs :: Double
-  , brP10Ms :: Double
-  , brP90Ms :: Double
-  , brSteps :: Int
+  , brMedianMs :: Double -- ^ a step's time, the median
+  , brP10Ms :: Double -- ^ the 10th percentile
+  , brP90Ms :: Double -- ^ the 90th percentile
+  , brSteps :: Int -- ^ steps timed
   , brPhases :: [(String, Double)] -- ^ median ms of each phase of the step
   , brSubsteps :: Int -- ^ the solver's sub-steps while timed
   , brIterations :: Int -- ^ the solver's iterations (a sub-step) while timed
@@ -66,6 +67,7 @@ sceneSettings cs scene =
 benchSpaces :: [Space]
 benchSpaces = [plane, sphere, torus, trumpet, projectivePlane, rectangle]
 
+-- | The body counts a full benchmark runs each space with.
 benchSizes :: [Int]
 benchSizes = [10, 100, 300, 1000, 3000]
 

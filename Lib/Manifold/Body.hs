@@ -53,27 +53,45 @@ import Manifold.Surface
 -- | A polar outline for a body of size 1; the body's size scales it.
 newtype Outline = Outline (forall a. Field a => a -> a)
 
+-- | A named outline, and which built-in shape it is.
 data Shape = Shape
-  { shapeName :: String
+  { shapeName :: String -- ^ for messages and the command line
   , shapeKind :: Maybe ShapeKind -- ^ 'Nothing' for user outlines
   , shapeOutline :: Outline
   }
 
+-- | @outlineAt s size θ@: the geodesic distance from the centre to the
+-- outline of a body of shape @s@ and this size, in direction θ.
+--
+-- >>> outlineAt square 2 (pi / 4 :: Double)
+-- 2.0
+-- >>> outlineAt square 2 0 :: Double
+-- 1.4142135623730951
 outlineAt :: Field a => Shape -> a -> a -> a
 outlineAt s size theta = let Outline f = shapeOutline s in size * f theta
 
+-- | The circle: the outline is at distance 1 in every direction.
 circle :: Shape
 circle = Shape "circle" (Just CircleShape) (Outline (const 1))
 
 -- | A regular polygon of circumradius 1 with a side (not a corner) facing the
 -- axis direction θ = 0.
+--
+-- >>> shapeName (regularPolygon 6)
+-- "6-gon"
 regularPolygon :: Int -> Shape
 regularPolygon n
   | n < 3 = error ("regularPolygon: a polygon needs at least 3 sides, got " ++ show n)
   | otherwise = Shape (show n ++ "-gon") (Just (PolygonShape n)) (Outline (polygonOutline (fromIntegral n)))
 
 -- | The outline of a regular polygon with @n@ sides (a scalar, so that the
--- page's engine can choose it at run time).
+-- page's engine can choose it at run time): 1 at the corners, @cos (π/n)@
+-- at the middle of a side.
+--
+-- >>> polygonOutline 3 (pi / 3 :: Double)
+-- 1.0
+-- >>> polygonOutline 3 0 :: Double
+-- 0.5000000000000001
 polygonOutline :: Field a => a -> a -> a
 polygonOutline n theta =
   let sector = 2 * pi / n
@@ -84,6 +102,9 @@ polygonOutline n theta =
 
 -- | The code of a built-in shape, as the engine's arrays and the page use
 -- it: 0 for a circle, @n >= 3@ for a regular @n@-gon (4, the square).
+--
+-- >>> map shapeCode [CircleShape, SquareShape, PolygonShape 5]
+-- [0,4,5]
 shapeCode :: ShapeKind -> Int
 shapeCode CircleShape = 0
 shapeCode SquareShape = 4
@@ -93,12 +114,16 @@ shapeCode (PolygonShape n) = n
 codeOutline :: Field a => a -> a -> a
 codeOutline code theta = select (code - 0.5) (polygonOutline code theta) 1
 
+-- | The square: the regular 4-gon, a side facing the axis.
 square :: Shape
 square = (regularPolygon 4) { shapeName = "square", shapeKind = Just SquareShape }
 
+-- | A shape of one's own, from its polar outline for size 1 (a function of
+-- the direction θ, at any scalar, so that it stages too).
 customShape :: String -> (forall a. Field a => a -> a) -> Shape
 customShape name f = Shape name Nothing (Outline f)
 
+-- | The shape a scene's 'ShapeKind' names.
 shapeFromKind :: ShapeKind -> Shape
 shapeFromKind CircleShape = circle
 shapeFromKind SquareShape = square
@@ -106,6 +131,7 @@ shapeFromKind (PolygonShape n) = regularPolygon n
 
 -- Mass -------------------------------------------------------------------
 
+-- | A body's mass and moment of inertia ('massProperties').
 data MassProperties = MassProperties
   { mass :: Double
   , inertia :: Double -- ^ about the centre, in the body's plane
@@ -121,7 +147,13 @@ integrateTurn g =
   let h = 2 * pi / fromIntegral samples
   in h * sum [g ((fromIntegral k + 0.5) * h) | k <- [0 .. samples - 1]]
 
--- | @½ ∫ s(θ)² dθ@: the area of the flat shape (its mass at density 1).
+-- | @½ ∫ s(θ)² dθ@: the area of the flat shape (its mass at density 1),
+-- by the midpoint rule.
+--
+-- >>> areaOf circle 1
+-- 3.141592653589793
+-- >>> areaOf square 1 -- 2, less what the samples miss of the corners
+-- 1.9999874504246353
 areaOf :: Shape -> Double -> Double
 areaOf s size = mass (massProperties s size 1)
 
@@ -129,6 +161,9 @@ areaOf s size = mass (massProperties s size 1)
 -- integral of r² over the shape), measured in the flat tangent plane as in
 -- the paper: 'massIntegrals', as the engine computes them for a body it
 -- adds.
+--
+-- >>> massProperties circle 1 1 -- π and π/2
+-- MassProperties {mass = 3.141592653589793, inertia = 1.5707963267948966}
 massProperties :: Shape -> Double -> Double -> MassProperties
 massProperties s size density = unsafePerformIO $ runNative $ do
   let Outline outline = shapeOutline s
@@ -181,11 +216,13 @@ paperMomentIntegral s size =
 
 -- Polygons ---------------------------------------------------------------
 
+-- | How finely a body's geodesic polygon is walked (paper §3.4).
 data PolygonParams = PolygonParams
   { polyDirections :: Int -- ^ geodesics walked from the centre (paper: 24)
   , polySteps :: Int -- ^ geodesic steps along each (paper: 4)
   } deriving (Show, Eq)
 
+-- | The paper's polygon: 24 directions of 4 steps.
 defaultPolygonParams :: PolygonParams
 defaultPolygonParams = PolygonParams 24 4
 
@@ -198,6 +235,11 @@ data Polygon a = Polygon
   , polyOutline :: [V3 a] -- ^ the outermost ring, in direction order
   }
 
+-- | The vertices of a body's polygon: the centre and every step of every
+-- direction.
+--
+-- >>> vertexCount defaultPolygonParams
+-- 97
 vertexCount :: PolygonParams -> Int
 vertexCount (PolygonParams d s) = 1 + d * s
 
@@ -211,6 +253,11 @@ vertexCount (PolygonParams d s) = 1 + d * s
 vertexIndex :: Num a => PolygonParams -> a -> a -> a
 vertexIndex pp d j = d * fromIntegral (polySteps pp) + j
 
+-- | The triangles of a body's polygon ('polyTriangles'): a fan round the
+-- centre, then two a quad.
+--
+-- >>> triangleCount defaultPolygonParams
+-- 168
 triangleCount :: PolygonParams -> Int
 triangleCount (PolygonParams d s) = d + 2 * d * (s - 1)
 
@@ -225,6 +272,7 @@ directionAngle pp d = constant (2 * pi * fromIntegral d / fromIntegral (polyDire
 -- (The count, then the cosine and the sine of boundary j's angle, 2πj/nd.)
 data Sectors = Sectors !Int !(U.Vector Double) !(U.Vector Double)
 
+-- | The 'Sectors' of @nd@ directions (at least one).
 sectors :: Int -> Sectors
 sectors nd
   | nd < 1 = error ("sectors: at least one direction, got " ++ show nd)
@@ -235,6 +283,9 @@ sectors nd
 -- that holds the body-local direction @(x, y)@, measured from direction 0:
 -- the floor of its angle over @2π/nd@ (0 at the origin; a direction exactly
 -- on a boundary may count on either side).
+--
+-- >>> map (\t -> directionSector (sectors 24) (cos t) (sin t :: Double)) [0.1, 1, pi + 0.1]
+-- [0.0,3.0,12.0]
 --
 -- Counted, not measured: the sector boundaries a direction has passed are
 -- those it lies counter-clockwise of, a cross product each with a constant.

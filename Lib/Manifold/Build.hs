@@ -17,11 +17,14 @@ import System.IO (IOMode (..), hGetLine, hIsEOF, hPutStr, hSetEncoding, utf8, wi
 import Manifold.Space (Space)
 import Manifold.Stage.Kernels
 
+-- | A file @manifold build@ writes.
 data GeneratedFile = GeneratedFile
   { genPath :: FilePath -- ^ relative to the output directory
-  , genContents :: String
+  , genContents :: String -- ^ starting with 'generatedMarker'
   }
 
+-- | Why nothing was written: a target that exists and is not a generated
+-- file.
 newtype BuildError = BuildError String
   deriving Show
 

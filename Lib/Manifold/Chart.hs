@@ -39,6 +39,12 @@ torusToSquare (V3 x y z) =
 
 -- | The square's point @(x, _, z)@ on the embedded torus:
 -- @((R + r cos φ) cos ψ, r sin φ, (R + r cos φ) sin ψ)@ with ψ, φ from x, z.
+-- The square's centre is on the outer equator:
+--
+-- >>> squareToTorus (V3 0 0 0 :: V3 Double)
+-- V3 1.3 0.0 0.0
+-- >>> torusToSquare (squareToTorus (V3 0.5 0 (-0.25))) :: V3 Double
+-- V3 0.5 0.0 (-0.25)
 squareToTorus :: Field a => V3 a -> V3 a
 squareToTorus (V3 x _ z) =
   let psi = constant anglePerUnit * x

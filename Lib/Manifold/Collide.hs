@@ -205,6 +205,8 @@ data KeyGroup
   | FirstImageKey -- ^ the first image's; the others follow it
   deriving (Show, Eq, Enum, Bounded)
 
+-- | The keys of a group (one for each point of a contact), and the keys of
+-- a body's own.
 keysPerGroup, keysPerBody :: Int
 keysPerGroup = 4
 keysPerBody = 64
@@ -295,7 +297,7 @@ pairContacts l sec w keyBase x y g =
         _ -> error "pairContacts: nine arguments")
   where coefficients (V3 a b c) = map constant [a, b, c]
 
--- | 'pairContacts' with the isometry @p ↦ signs·p + shift@ as scalars (its
+-- | @pairContacts@ with the isometry @p ↦ signs·p + shift@ as scalars (its
 -- inverse is @p ↦ signs·p − signs·shift@: the signs are ±1, so the linear
 -- part is its own inverse).
 pairContactsVia :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m

@@ -46,10 +46,13 @@ import Manifold.Step (step, stepPhases)
 import Manifold.World
 import Data.Maybe (isJust, listToMaybe)
 
+-- | A world run natively: its space, its arrays' layout and the arrays
+-- (the state, as "Manifold.World" lays it out; the page's engine holds the
+-- same arrays).
 data NativeWorld = NativeWorld
   { nwSpace :: Space
-  , nwLayout :: Layout
-  , nwArrays :: WorldArrays NativeArray
+  , nwLayout :: Layout -- ^ capacity and polygon
+  , nwArrays :: WorldArrays NativeArray -- ^ every body's state, the contacts, the parameters
   , nwCompiled :: Maybe CompiledStep -- ^ the space's compiled step, if it has one
   }
 
@@ -78,18 +81,21 @@ setParams w = writeParams (nwArrays w)
 -- | A body as a scene describes it.
 data BodyInit = BodyInit
   { biShape :: Shape
-  , biSize :: Double
+  , biSize :: Double -- ^ circumradius
   , biDensity :: Double
-  , biStatic :: Bool
-  , biPos :: V3 Double
-  , biVel :: V3 Double
-  , biAngle :: Double
-  , biOmega :: Double
+  , biStatic :: Bool -- ^ a fixed body: it pushes and is never pushed
+  , biPos :: V3 Double -- ^ projected onto the surface
+  , biVel :: V3 Double -- ^ projected onto the tangent plane
+  , biAngle :: Double -- ^ from the axis the body starts with ('Manifold.Surface.referenceAxis')
+  , biOmega :: Double -- ^ angular velocity about the normal
   }
 
 metaValue :: Meta -> NativeWorld -> IO Int
 metaValue k w = truncate <$> MV.read (wMeta (nwArrays w)) (fromEnum k)
 
+-- | The bodies the world holds; the steps that left a body as it was
+-- because they would have made a number infinite or NaN (see
+-- "Manifold.World"); the contact rows the last step found.
 bodyCount, warningCount, contactCount :: NativeWorld -> IO Int
 bodyCount = metaValue BodyCount
 warningCount = metaValue Warnings
@@ -123,12 +129,15 @@ pickAt w q = do
 grabAt :: NativeWorld -> Int -> Double -> V3 Double -> Double -> Double -> Double -> IO ()
 grabAt w i sgn q hz zeta fmax = runNative (grab (nwSpace w) (nwArrays w) i sgn q hz zeta fmax)
 
+-- | Move the mouse joint's target to a surface point.
 dragAt :: NativeWorld -> V3 Double -> IO ()
 dragAt w q = runNative (dragTo (nwArrays w) q)
 
+-- | Let go of the grabbed body.
 releaseMouse :: NativeWorld -> IO ()
 releaseMouse w = runNative (release (nwArrays w))
 
+-- | Remove body @i@; the last body takes its index ('removeBody').
 removeBodyAt :: NativeWorld -> Int -> IO ()
 removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
 
@@ -168,14 +177,16 @@ nativePhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native (
 nativePhases = stepPhases
 {-# NOINLINE nativePhases #-}
 
+-- | Where a body is and how it moves ('readBody').
 data BodyState = BodyState
-  { bsPos :: V3 Double
-  , bsVel :: V3 Double
-  , bsAngle :: Double
-  , bsOmega :: Double
-  , bsAxis :: V3 Double
+  { bsPos :: V3 Double -- ^ its centre, on the surface
+  , bsVel :: V3 Double -- ^ in the tangent plane
+  , bsAngle :: Double -- ^ from 'bsAxis'
+  , bsOmega :: Double -- ^ angular velocity about the normal
+  , bsAxis :: V3 Double -- ^ the tangent axis the body carries along
   } deriving Show
 
+-- | Body @i@'s state, as the world's arrays hold it now.
 readBody :: NativeWorld -> Int -> IO BodyState
 readBody w i = do
   let a = nwArrays w

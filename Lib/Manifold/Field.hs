@@ -19,6 +19,12 @@ module Manifold.Field
 import GHC.Exts (Double (..), Double#)
 import Linear.V3 (V3 (..))
 
+-- $setup
+-- GHCi runs this module as object code (it has unboxed tuples), so the
+-- examples see its exports through this import:
+--
+-- >>> import Manifold.Field
+
 -- | Scalars of the physics.
 --
 -- Laws (checked by the differential tests for every instance):
@@ -27,22 +33,37 @@ import Linear.V3 (V3 (..))
 --   (a NaN condition chooses @e@, as @c > 0 ? t : e@ does in JS and GLSL);
 -- * @minF a b = select (b - a) a b@, @maxF a b = select (a - b) a b@;
 -- * 'constant' embeds a 'Double' exactly (NaN and infinities included).
+--
+-- >>> select 1 10 20 :: Double
+-- 10.0
+-- >>> select (0 / 0) 10 20 :: Double
+-- 20.0
+-- >>> (minF 2 3, maxF 2 3) :: (Double, Double)
+-- (2.0,3.0)
 class Floating a => Field a where
+  -- | A 'Double' as a scalar: a number natively, a literal in staged code.
   constant :: Double -> a
+  -- | @select c t e@: @t@ where @c > 0@, else @e@ (see the laws above).
   select :: a -> a -> a -> a
 
+  -- | The smaller of two scalars, by 'select'.
   minF :: a -> a -> a
   minF a b = select (b - a) a b
 
+  -- | The larger of two scalars, by 'select'.
   maxF :: a -> a -> a
   maxF a b = select (a - b) a b
 
   -- | The largest integer not above the argument (derivative 0).
   floorF :: a -> a
 
-  -- | A scalar function's value, and its gradient, at this scalar.
+  -- | A scalar function's value at this scalar. 'Double' overrides it to
+  -- call the function's compiled 'evalRaw' instead of its polymorphic
+  -- body.
   evalFn :: ScalarFn -> V3 a -> a
   evalFn f = evalPoly f
+  -- | A scalar function's gradient at this scalar ('Double': the compiled
+  -- 'valueGradRaw').
   gradFn :: ScalarFn -> V3 a -> V3 a
   gradFn f = gradPoly f
   -- | Both at once (one evaluation natively; staged code shares them anyway).
@@ -66,12 +87,22 @@ instance Field Double where
 
 foreign import ccall unsafe "math.h floor" c_floor :: Double -> Double
 
--- | @clampF lo hi x@.
+-- | @clampF lo hi x@: @x@ limited to @[lo, hi]@, by 'minF' and 'maxF'.
+--
+-- >>> map (clampF 0 1) [-0.5, 0.25, 2] :: [Double]
+-- [0.0,0.25,1.0]
 clampF :: Field a => a -> a -> a -> a
 clampF lo hi = maxF lo . minF hi
 
 -- | The angle of the point @(x, y)@, in @(−π, π]@, by half-angle formulas
 -- (so that it needs no comparison outside 'select'); 0 at the origin.
+--
+-- >>> atan2F 1 0 == (pi / 2 :: Double)
+-- True
+-- >>> atan2F 0 (-1) :: Double
+-- 3.141592653589793
+-- >>> atan2F 0 0 :: Double
+-- 0.0
 atan2F :: Field a => a -> a -> a
 atan2F y x =
   let r = sqrt (x * x + y * y)
@@ -87,10 +118,11 @@ atan2F y x =
 -- call, and boxed arguments and results would allocate at every one of the
 -- engine's hundreds of thousands of field evaluations per step.
 data ScalarFn = ScalarFnOf
-  { evalPoly :: forall a. Field a => V3 a -> a
-  , gradPoly :: forall a. Field a => V3 a -> V3 a -- ^ by forward AD
-  , evalRaw :: Double# -> Double# -> Double# -> Double#
+  { evalPoly :: forall a. Field a => V3 a -> a -- ^ the function, at any scalar
+  , gradPoly :: forall a. Field a => V3 a -> V3 a -- ^ its gradient, by forward AD
+  , evalRaw :: Double# -> Double# -> Double# -> Double# -- ^ the function at @x y z@, compiled for 'Double'
   , valueGradRaw :: Double# -> Double# -> Double# -> (# Double#, Double#, Double#, Double# #)
+    -- ^ the value and the gradient's three components at @x y z@, compiled for 'Double'
   }
 
 -- | A vector field of R³, polymorphic in the scalar (e.g. gravity).

@@ -78,5 +78,6 @@ dragTo w q = do
   writeMouse w MTargetY y
   writeMouse w MTargetZ z
 
+-- | Let go: the mouse joint is off until the next 'grab'.
 release :: Imp m => WorldArrays (Array m) -> m ()
 release w = writeMouse w MActive 0

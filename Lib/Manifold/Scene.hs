@@ -11,6 +11,7 @@ module Manifold.Scene
   , loadScene
   , bodyInit
   , sceneOfWorld
+  , P
   ) where
 
 import Control.Monad (foldM, forM, unless, when)
@@ -34,26 +35,31 @@ import Manifold.Space
 import Manifold.Spaces
 import Manifold.World (contactsPerBody, layout)
 
+-- | A body as a scene file gives it (its keys, in order: @shape@, @size@,
+-- @density@, @static@, @p@, @v@, @angle@, @omega@, @impulses@).
 data BodySpec = BodySpec
   { bsShape :: ShapeKind
-  , bsSize :: Double
-  , bsDensity :: Double
-  , bsStatic :: Bool
-  , bsP :: V3 Double
-  , bsV :: V3 Double
-  , bsAngle0 :: Double
-  , bsOmega0 :: Double
+  , bsSize :: Double -- ^ circumradius, above 0
+  , bsDensity :: Double -- ^ above 0 (default 1)
+  , bsStatic :: Bool -- ^ a fixed body (default false)
+  , bsP :: V3 Double -- ^ its centre, projected onto the surface on load
+  , bsV :: V3 Double -- ^ velocity (default 0), projected onto the tangent plane
+  , bsAngle0 :: Double -- ^ from the axis a body placed at 'bsP' starts with (default 0)
+  , bsOmega0 :: Double -- ^ angular velocity (default 0)
   , bsImpulses :: [Impulse] -- ^ what the body remembers of the last step's contacts it owns (warm starting)
   } deriving (Show, Eq)
 
+-- | What a scene file holds.
 data Scene = Scene
-  { sceneSpace :: Space
+  { sceneSpace :: Space -- ^ a catalogue space, by name
   , sceneParams :: Params -- ^ what the scene's keys ('sceneKeys') set, the rest defaults
   , sceneBodies :: [BodySpec]
   }
 
 type Path = String
 
+-- | A value, or what is wrong with the scene: the JSON path of the first
+-- problem (@$.bodies[2].size@) and what is wrong there.
 type P a = Either String a
 
 problem :: Path -> String -> P a
@@ -193,6 +199,8 @@ sceneJSON s = A.object
       Count _ -> A.toJSON (round x :: Int)
       _ -> A.toJSON x
 
+-- | The body a scene's body spec adds to a world (its remembered impulses
+-- are given to the world apart: 'restoreImpulses').
 bodyInit :: BodySpec -> BodyInit
 bodyInit b = BodyInit (shapeFromKind (bsShape b)) (bsSize b) (bsDensity b) (bsStatic b) (bsP b) (bsV b) (bsAngle0 b) (bsOmega0 b)
 

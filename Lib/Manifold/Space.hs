@@ -38,13 +38,18 @@ import Linear.Vector ((^-^))
 
 import Manifold.Field
 
+-- $setup
+-- >>> import Linear.Metric (norm)
+-- >>> import Manifold.AD (scalarFn)
+-- >>> import Manifold.Spaces (sphere)
+
 -- | How points are identified.
 data Quotient
-  = NoQuotient
+  = NoQuotient -- ^ none: the surface itself.
   | Antipodal -- ^ @p ~ −p@: the space must be symmetric about the origin.
   | Lattice
-      { latticePeriod :: Double
-      , latticeFlip :: Bool
+      { latticePeriod :: Double -- ^ @L@, the side of the fundamental square
+      , latticeFlip :: Bool -- ^ whether a translation along x mirrors z
       }
     -- ^ The plane @y = 0@ modulo translations by the period along x and
     -- along z (the flat torus); with the flip, a translation along x also
@@ -52,6 +57,10 @@ data Quotient
     -- fundamental domain is the square @[−L/2, L/2]²@; bodies are kept in it.
   deriving (Show, Eq)
 
+-- | The quotient's name, as @manifold spaces@ lists it.
+--
+-- >>> map quotientName [NoQuotient, Antipodal, Lattice 2 False, Lattice 2 True]
+-- ["none","antipodal","translations","glide"]
 quotientName :: Quotient -> String
 quotientName NoQuotient = "none"
 quotientName Antipodal = "antipodal"
@@ -62,13 +71,18 @@ quotientName (Lattice _ True) = "glide"
 -- (componentwise). Enough for every quotient here: @p ↦ −p@, translations,
 -- and translations composed with a mirror.
 data Isometry = Isometry
-  { isoSigns :: V3 Double
-  , isoShift :: V3 Double
+  { isoSigns :: V3 Double -- ^ each axis kept (1) or mirrored (−1)
+  , isoShift :: V3 Double -- ^ the translation after the mirroring
   } deriving (Show, Eq)
 
+-- | The isometry that moves nothing.
 identityIso :: Isometry
 identityIso = Isometry (V3 1 1 1) (V3 0 0 0)
 
+-- | The image of a point.
+--
+-- >>> applyIso (Isometry (V3 1 1 (-1)) (V3 2 0 0)) (V3 0.5 0 0.25 :: V3 Double)
+-- V3 2.5 0.0 (-0.25)
 applyIso :: Field a => Isometry -> V3 a -> V3 a
 applyIso (Isometry s t) p = (fmap constant s * p) + fmap constant t
 
@@ -76,6 +90,11 @@ applyIso (Isometry s t) p = (fmap constant s * p) + fmap constant t
 applyLinear :: Field a => Isometry -> V3 a -> V3 a
 applyLinear (Isometry s _) v = fmap constant s * v
 
+-- | The isometry that undoes this one.
+--
+-- >>> let g = Isometry (V3 1 1 (-1)) (V3 2 0 1)
+-- >>> applyIso (inverseIso g) (applyIso g (V3 0.5 0 0.25 :: V3 Double))
+-- V3 0.5 0.0 0.25
 inverseIso :: Isometry -> Isometry
 inverseIso (Isometry s t) = Isometry s (negate (s * t))
 
@@ -83,6 +102,9 @@ inverseIso (Isometry s t) = Isometry s (negate (s * t))
 -- group that move the fundamental domain next to itself (for a lattice, the
 -- 8 neighbouring squares; bodies must be smaller than half the period).
 -- The list is closed under inverses.
+--
+-- >>> map length [quotientImages NoQuotient, quotientImages Antipodal, quotientImages (Lattice 2 True)]
+-- [0,1,8]
 quotientImages :: Quotient -> [Isometry]
 quotientImages NoQuotient = []
 quotientImages Antipodal = [Isometry (V3 (-1) (-1) (-1)) (V3 0 0 0)]
@@ -102,6 +124,9 @@ selfImage g = let g' = inverseIso g in g == g' || toList (isoShift g) > toList (
 -- | A point of the plane moved into the fundamental square @[−L/2, L/2)²@ by
 -- the lattice's group, and the sign its z axis (and so orientation) took:
 -- −1 when the flip was used an odd number of times.
+--
+-- >>> wrapLattice 2 True (V3 1.5 0 0.25 :: V3 Double)
+-- (V3 (-0.5) 0.0 (-0.25),-1.0)
 wrapLattice :: Field a => Double -> Bool -> V3 a -> (V3 a, a)
 wrapLattice period flipped (V3 x y z) =
   let l = constant period
@@ -112,6 +137,9 @@ wrapLattice period flipped (V3 x y z) =
   in (V3 (x - kx * l) y (s * (z - kz * l)), s)
 
 -- | How far a point of the plane is outside the fundamental square (0 inside).
+--
+-- >>> map (distanceToDomain 2) [V3 0.5 0 0.5, V3 4 0 (-5)] :: [Double]
+-- [0.0,5.0]
 distanceToDomain :: Field a => Double -> V3 a -> a
 distanceToDomain period (V3 x _ z) =
   let h = constant (0.5 * period)
@@ -160,38 +188,49 @@ nearestImage _ _ q = q
 
 -- | A pinhole camera looking at @cameraTarget@ from @cameraEye@.
 data Camera = Camera
-  { cameraEye :: V3 Double
-  , cameraTarget :: V3 Double
-  , cameraUp :: V3 Double
+  { cameraEye :: V3 Double -- ^ where the camera is
+  , cameraTarget :: V3 Double -- ^ the point at the centre of the view
+  , cameraUp :: V3 Double -- ^ the direction that is up on the screen
   , cameraFov :: Double -- ^ vertical field of view, degrees
   } deriving (Show, Eq)
 
-data ShapeKind = CircleShape | SquareShape | PolygonShape Int
+-- | The built-in shapes a scene names ("Manifold.Body" makes their
+-- outlines).
+data ShapeKind
+  = CircleShape
+  | SquareShape
+  | PolygonShape Int -- ^ a regular polygon with this many sides (3 or more)
   deriving (Show, Eq)
 
 -- | A body of the default scene: where it starts (projected onto the surface
 -- on load), its shape and its size (circumradius).
 data Placement = Placement
-  { placeAt :: V3 Double
+  { placeAt :: V3 Double -- ^ near the surface; projected onto it
   , placeShape :: ShapeKind
-  , placeSize :: Double
+  , placeSize :: Double -- ^ circumradius
   , placeStatic :: Bool -- ^ a fixed body (a floor, a wall)
   } deriving (Show, Eq)
 
+-- | A space: everything the engine, the page and the command line know of
+-- it. Define one by updating 'space'.
 data Space = Space
-  { spaceName :: String
-  , spaceDescription :: String
-  , spaceField :: ScalarFn
+  { spaceName :: String -- ^ how scenes, the page and the command line name it
+  , spaceDescription :: String -- ^ one line, for @manifold spaces@ and the page
+  , spaceField :: ScalarFn -- ^ the surface is @f(p) = 0@
   , spaceBoundary :: Maybe ScalarFn -- ^ the allowed region is @b(p) >= 0@
   , spaceGravity :: VectorFn -- ^ an R³ field; the engine projects it
-  , spaceQuotient :: Quotient
-  , spaceCamera :: Camera
-  , spaceScene :: [Placement]
+  , spaceQuotient :: Quotient -- ^ which points are one
+  , spaceCamera :: Camera -- ^ the page's first view
+  , spaceScene :: [Placement] -- ^ the bodies the page starts with
   , spaceBounds :: Double -- ^ radius of a ball around the origin holding the part of the surface worth drawing and simulating
   }
 
 -- | A space with no boundary, no quotient, no gravity, a camera on the z axis
 -- and an empty scene: the record to update when defining one.
+--
+-- >>> let ball = (space "ball" "the sphere of radius 2" (scalarFn (\p -> norm p - 2))) { spaceBounds = 4 }
+-- >>> evalField ball (V3 0 3 0)
+-- 1.0
 space :: String -> String -> ScalarFn -> Space
 space name description f = Space
   { spaceName = name
@@ -205,28 +244,45 @@ space name description f = Space
   , spaceBounds = 3
   }
 
+-- | Whether the space has a boundary (a wall the bodies meet).
 hasBoundary :: Space -> Bool
 hasBoundary = isJust . spaceBoundary
 
--- | The field of a space, at any scalar.
+-- | The field of a space, at any scalar: its value is 0 on the surface.
 field :: Field a => Space -> V3 a -> a
 field s = evalFn (spaceField s)
 
+-- | The field of a space at a point, natively.
+--
+-- >>> evalField sphere (V3 0 3 0)
+-- 2.0
+-- >>> evalField sphere (V3 0.6 0 0.8)
+-- 0.0
 evalField :: Space -> V3 Double -> Double
 evalField = field
 
 -- | The boundary function; a space without a boundary is everywhere inside
 -- (the constant 1).
+--
+-- >>> evalBoundary sphere (V3 0 (-1) 0) :: Double
+-- 1.0
 evalBoundary :: Field a => Space -> V3 a -> a
 evalBoundary s p = case spaceBoundary s of
   Nothing -> 1
   Just b -> evalFn b p
 
+-- | The space's gravity at a point (an R³ vector; the engine projects it
+-- onto the tangent plane).
+--
+-- >>> evalGravity sphere (V3 1 0 0 :: V3 Double)
+-- V3 0.0 (-4.0) 0.0
 evalGravity :: Field a => Space -> V3 a -> V3 a
 evalGravity s = let VectorFn g = spaceGravity s in g
 
+-- | The same gravity everywhere.
 uniformGravity :: V3 Double -> VectorFn
 uniformGravity g = VectorFn (const (fmap constant g))
 
+-- | No gravity: what 'space' gives a new space.
 noGravity :: VectorFn
 noGravity = uniformGravity (V3 0 0 0)

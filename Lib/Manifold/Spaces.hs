@@ -19,14 +19,29 @@ import Manifold.AD (scalarFn)
 import Manifold.Field
 import Manifold.Space
 
+-- | Every space the command line, the page and the tests know, in the
+-- page's order.
+--
+-- >>> length catalogue
+-- 14
 catalogue :: [Space]
 catalogue =
   [ plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
   , projectivePlane, kleinBottle, moebius, funnel, flatTorus, flatKlein ]
 
+-- | The catalogue's names, in order.
+--
+-- >>> take 4 spaceNames
+-- ["plane","sphere","torus","trumpet"]
 spaceNames :: [String]
 spaceNames = map spaceName catalogue
 
+-- | The catalogue space of this name.
+--
+-- >>> fmap spaceDescription (lookupSpace "hemisphere")
+-- Just "the lower half of the unit sphere (y <= 0), a bowl with a rim"
+-- >>> fmap spaceName (lookupSpace "cylinder")
+-- Nothing
 lookupSpace :: String -> Maybe Space
 lookupSpace n = find ((== n) . spaceName) catalogue
 
@@ -42,6 +57,8 @@ unitSphereField p = norm p - 1
 radial :: Field a => V3 a -> a
 radial (V3 x _ z) = sqrt (x * x + z * z)
 
+-- | The torus's radii: from the y axis to the tube's centre ('torusMajor'),
+-- and the tube's ('torusMinor').
 torusMajor, torusMinor :: Double
 torusMajor = 0.8
 torusMinor = 0.5
@@ -68,6 +85,8 @@ look eye = Camera eye (V3 0 0 0) (V3 0 1 0) 45
 
 -- The catalogue ------------------------------------------------------------
 
+-- | The plane @y = 0@, gravity along −z, a row of static squares as a
+-- floor.
 plane :: Space
 plane = (space "plane" "the flat plane y = 0; gravity along -z" (scalarFn planeField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
@@ -76,6 +95,12 @@ plane = (space "plane" "the flat plane y = 0; gravity along -z" (scalarFn planeF
       ++ [Placement (V3 x 0 (-1.2)) SquareShape 0.3 True | x <- [-1.2, -0.8 .. 1.2]]
   }
 
+-- | The unit sphere, @|p| − 1@; gravity pulls to the south pole.
+--
+-- >>> evalField sphere (V3 0 0 1)
+-- 0.0
+-- >>> evalGravity sphere (V3 0 0 1 :: V3 Double)
+-- V3 0.0 (-4.0) 0.0
 sphere :: Space
 sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (scalarFn unitSphereField))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
@@ -83,6 +108,11 @@ sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (sca
   , spaceScene = ring 6 0.6 (-0.8) SquareShape 0.2
   }
 
+-- | A torus about the y axis: curvature positive on the outside, negative
+-- on the inside.
+--
+-- >>> evalField torus (V3 (torusMajor + torusMinor) 0 0)
+-- 0.0
 torus :: Space
 torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 0 outside, < 0 inside)" (scalarFn torusField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
@@ -90,6 +120,8 @@ torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 
   , spaceScene = ring 6 1.3 0 SquareShape 0.18
   }
 
+-- | The horn @√(x² + z²) = e^y@, narrowing downwards: bodies falling into
+-- it jam in the neck.
 trumpet :: Space
 trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narrowing downwards; bodies jam in the neck" (scalarFn trumpetField))
   { spaceGravity = uniformGravity (V3 0 (-0.6) 0)
@@ -99,6 +131,7 @@ trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narr
   }
   where trumpetField p@(V3 _ y _) = radial p - exp y
 
+-- | A cube with rounded edges: flat faces, curved edges and corners.
 cube :: Space
 cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (scalarFn roundedCube))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
@@ -113,6 +146,7 @@ cube = (space "cube" "a cube with rounded edges (half-size 0.6, rounding 0.3)" (
           inside = minF 0 (maxF qx (maxF qy qz))
       in outside + inside - 0.3
 
+-- | The lower half of the unit sphere, with a boundary at the rim.
 hemisphere :: Space
 hemisphere = (space "hemisphere" "the lower half of the unit sphere (y <= 0), a bowl with a rim" (scalarFn unitSphereField))
   { spaceBoundary = Just (scalarFn (\(V3 _ y _) -> negate y))
@@ -121,6 +155,7 @@ hemisphere = (space "hemisphere" "the lower half of the unit sphere (y <= 0), a 
   , spaceScene = ring 5 0.5 (-0.8) SquareShape 0.18
   }
 
+-- | The unit disc of the plane, with a circular wall.
 disc :: Space
 disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (scalarFn planeField))
   { spaceBoundary = Just (scalarFn (\p -> 1 - radial p))
@@ -129,6 +164,7 @@ disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (s
   , spaceScene = grid [-0.4, 0, 0.4] [-0.2, 0.3] SquareShape 0.15
   }
 
+-- | A 3 × 2 rectangle of the plane, walled.
 rectangle :: Space
 rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane y = 0, a box with walls" (scalarFn planeField))
   { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (1.5 - abs x) (1 - abs z)))
@@ -137,8 +173,9 @@ rectangle = (space "rectangle" "the rectangle |x| <= 1.5, |z| <= 1 on the plane 
   , spaceScene = grid [-0.8, -0.3, 0.3, 0.8] [-0.3, 0.3] SquareShape 0.18
   }
 
--- | Gravity for quotient spaces must be odd (@g(−p) = −g(p)@) so that a
--- body and its image feel the same force.
+-- | The real projective plane: the unit sphere with @p ~ −p@, gravity
+-- pulling to the pole (one point). Gravity for quotient spaces must be odd
+-- (@g(−p) = −g(p)@) so that a body and its image feel the same force.
 projectivePlane :: Space
 projectivePlane = (space "projective-plane" "the real projective plane: the unit sphere with p ~ -p; gravity pulls to the pole (0,±1,0), one point" (scalarFn unitSphereField))
   { spaceQuotient = Antipodal
@@ -147,6 +184,7 @@ projectivePlane = (space "projective-plane" "the real projective plane: the unit
   , spaceScene = ring 3 0.8 0.5 SquareShape 0.2
   }
 
+-- | The torus centred on the origin with @p ~ −p@: a Klein bottle.
 kleinBottle :: Space
 kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Klein bottle (the paper's projective torus); gravity pulls to the axis" (scalarFn torusField))
   { spaceQuotient = Antipodal
@@ -155,6 +193,8 @@ kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Kle
   , spaceScene = ring 3 1.3 0 SquareShape 0.18
   }
 
+-- | A band of the unit cylinder with @p ~ −p@: a Möbius strip, its edges
+-- a boundary.
 moebius :: Space
 moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a Moebius strip; gravity pulls to the centre line" (scalarFn (\p -> radial p - 1)))
   { spaceQuotient = Antipodal
@@ -164,6 +204,8 @@ moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a
   , spaceScene = ring 3 1 0.1 SquareShape 0.15
   }
 
+-- | The paper's two-dimensional trumpet: a region of the plane narrowing
+-- exponentially, gravity pushing bodies into the neck.
 funnel :: Space
 funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x| <= exp(0.9z - 0.7), |z| <= 1; gravity pushes into the neck" (scalarFn planeField))
   { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
@@ -181,9 +223,13 @@ flatPeriod = 2
 overSquare :: Camera
 overSquare = Camera (V3 0 3.4 (-1.4)) (V3 0 0 0) (V3 0 1 0) 45
 
+-- | The flat torus: the plane modulo the square lattice of period
+-- 'flatPeriod' (curvature 0 everywhere, no gravity).
 flatTorus :: Space
 flatTorus = flatSpace "flat-torus" "the flat torus: the square [-1,1]^2 of the plane y = 0 with opposite edges glued (period 2 in x and z); curvature 0 everywhere, no gravity" False
 
+-- | The flat Klein bottle: as 'flatTorus', but its x edges glued with a
+-- mirror, @(x, z) ~ (x + 2, −z)@.
 flatKlein :: Space
 flatKlein = flatSpace "flat-klein" "the flat Klein bottle: the square [-1,1]^2 of the plane y = 0, z edges glued straight, x edges glued with a flip (x, z) ~ (x + 2, -z); no gravity" True
 

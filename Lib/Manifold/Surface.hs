@@ -34,12 +34,21 @@ import Linear.Vector ((*^), (^-^), (^+^))
 
 import Manifold.Field
 
+-- $setup
+-- >>> import Manifold.AD (scalarFn)
+-- >>> let unitSphere = scalarFn (\p -> norm p - 1)
+
 -- | The gradient of a field, by forward AD.
 fieldGradient :: Field a => ScalarFn -> V3 a -> V3 a
 {-# INLINE fieldGradient #-}
 fieldGradient = gradFn
 
 -- | @v/|v|@, or the zero vector where @|v| = 0@ (never NaN).
+--
+-- >>> safeNormalize (V3 0 0 2 :: V3 Double)
+-- V3 0.0 0.0 1.0
+-- >>> safeNormalize (V3 0 0 0 :: V3 Double)
+-- V3 0.0 0.0 0.0
 safeNormalize :: Field a => V3 a -> V3 a
 {-# INLINE safeNormalize #-}
 safeNormalize v =
@@ -49,6 +58,9 @@ safeNormalize v =
   where tiny = constant 1e-300
 
 -- | The unit normal @∇f/|∇f|@.
+--
+-- >>> unitNormal unitSphere (V3 0 2 0 :: V3 Double)
+-- V3 0.0 1.0 0.0
 unitNormal :: Field a => ScalarFn -> V3 a -> V3 a
 {-# INLINE unitNormal #-}
 unitNormal f = safeNormalize . fieldGradient f
@@ -63,6 +75,8 @@ traceDistance sf p =
       usable = select (g - constant 1e-12) (select (constant 1e20 - g) 1 0) 0
   in select usable (f / g) f
 
+-- | How near 0 the field must be for a point to count as on the surface:
+-- projections stop moving it there.
 projectionTolerance :: Double
 projectionTolerance = 1e-10
 
@@ -74,9 +88,16 @@ defaultProjectionIterations = 8
 -- | Pull a point back onto the surface along the normal (Newton's method on
 -- @f@ along @∇f@: @p ← p − f ∇f/|∇f|²@), until @|f| < 1e-10@ or the count
 -- runs out. A point where the gradient vanishes stays where it is.
+--
+-- >>> norm (projectToSurface unitSphere (V3 0 3 4) - V3 0 0.6 0.8 :: V3 Double) < 1e-15
+-- True
+-- >>> projectToSurface unitSphere (V3 0 0 0 :: V3 Double)
+-- V3 0.0 0.0 0.0
 projectToSurface :: Field a => ScalarFn -> V3 a -> V3 a
 projectToSurface = projectToSurfaceWith defaultProjectionIterations
 
+-- | 'projectToSurface' with at most this many Newton steps (the page's
+-- sphere tracer takes two).
 projectToSurfaceWith :: Field a => Int -> ScalarFn -> V3 a -> V3 a
 projectToSurfaceWith n sf = go n
   where
@@ -94,6 +115,9 @@ projectToSurfaceWith n sf = go n
 
 -- | The orthogonal projection of an ambient vector onto the tangent plane with
 -- unit normal @n@.
+--
+-- >>> tangentProjection (V3 0 1 0) (V3 1 2 3 :: V3 Double)
+-- V3 1.0 0.0 3.0
 tangentProjection :: Field a => V3 a -> V3 a -> V3 a
 {-# INLINE tangentProjection #-}
 tangentProjection n v = v ^-^ (n `dot` v) *^ n
@@ -180,11 +204,16 @@ geodesicStepEnd h n (p, v) (p', g') =
 
 -- | The exponential map: walk a geodesic of the given length from a point in
 -- a tangent direction (normalised here), in @n@ equal steps. Returns the end
--- point and the unit direction there.
+-- point and the unit direction there. On the unit sphere, a quarter of a
+-- great circle from the north pole reaches the equator:
+--
+-- >>> let (p, dir) = expMap unitSphere 64 (V3 0 1 0) (V3 1 0 0) (pi / 2 :: Double)
+-- >>> norm (p - V3 1 0 0) < 1e-3 && norm (dir - V3 0 (-1) 0) < 1e-3
+-- True
 expMap :: Field a => ScalarFn -> Int -> V3 a -> V3 a -> a -> (V3 a, V3 a)
 expMap sf n p dir len = last (geodesicPath sf n p dir len)
 
--- | The points of 'expMap''s walk, the start included.
+-- | The points of the walk 'expMap' makes, the start included.
 geodesicPath :: Field a => ScalarFn -> Int -> V3 a -> V3 a -> a -> [(V3 a, V3 a)]
 geodesicPath sf n p dir len =
   let h = len / fromIntegral (max 1 n)

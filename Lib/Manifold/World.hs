@@ -100,7 +100,7 @@ data WorldArrays a = WorldArrays
   , wMouse :: a -- ^ see 'MouseField'
   , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
   , wNear :: a -- ^ broad phase scratch: the bodies whose bounds overlap the current one's
-  , wWalk :: a -- ^ polygon walk scratch: 'walkStride' numbers per direction, the walk's state between its loops
+  , wWalk :: a -- ^ polygon walk scratch: @walkStride@ numbers per direction, the walk's state between its loops
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.

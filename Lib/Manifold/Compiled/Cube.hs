@@ -5,5 +5,6 @@ module Manifold.Compiled.Cube (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (cube)
+-- | The compiled step of 'cube'.
 compiled :: CompiledStep
 compiled = $(compiledStep cube)

@@ -5,5 +5,6 @@ module Manifold.Compiled.Disc (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (disc)
+-- | The compiled step of 'disc'.
 compiled :: CompiledStep
 compiled = $(compiledStep disc)

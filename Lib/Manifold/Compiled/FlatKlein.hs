@@ -5,5 +5,6 @@ module Manifold.Compiled.FlatKlein (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (flatKlein)
+-- | The compiled step of 'flatKlein'.
 compiled :: CompiledStep
 compiled = $(compiledStep flatKlein)

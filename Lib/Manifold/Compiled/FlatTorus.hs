@@ -5,5 +5,6 @@ module Manifold.Compiled.FlatTorus (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (flatTorus)
+-- | The compiled step of 'flatTorus'.
 compiled :: CompiledStep
 compiled = $(compiledStep flatTorus)

@@ -5,5 +5,6 @@ module Manifold.Compiled.Funnel (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (funnel)
+-- | The compiled step of 'funnel'.
 compiled :: CompiledStep
 compiled = $(compiledStep funnel)

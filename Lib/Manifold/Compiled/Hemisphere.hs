@@ -5,5 +5,6 @@ module Manifold.Compiled.Hemisphere (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (hemisphere)
+-- | The compiled step of 'hemisphere'.
 compiled :: CompiledStep
 compiled = $(compiledStep hemisphere)

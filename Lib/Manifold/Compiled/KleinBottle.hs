@@ -5,5 +5,6 @@ module Manifold.Compiled.KleinBottle (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (kleinBottle)
+-- | The compiled step of 'kleinBottle'.
 compiled :: CompiledStep
 compiled = $(compiledStep kleinBottle)

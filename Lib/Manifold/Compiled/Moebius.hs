@@ -5,5 +5,6 @@ module Manifold.Compiled.Moebius (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (moebius)
+-- | The compiled step of 'moebius'.
 compiled :: CompiledStep
 compiled = $(compiledStep moebius)

@@ -5,5 +5,6 @@ module Manifold.Compiled.Plane (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (plane)
+-- | The compiled step of 'plane'.
 compiled :: CompiledStep
 compiled = $(compiledStep plane)

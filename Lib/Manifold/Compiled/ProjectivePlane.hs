@@ -5,5 +5,6 @@ module Manifold.Compiled.ProjectivePlane (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (projectivePlane)
+-- | The compiled step of 'projectivePlane'.
 compiled :: CompiledStep
 compiled = $(compiledStep projectivePlane)

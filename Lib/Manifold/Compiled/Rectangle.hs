@@ -5,5 +5,6 @@ module Manifold.Compiled.Rectangle (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (rectangle)
+-- | The compiled step of 'rectangle'.
 compiled :: CompiledStep
 compiled = $(compiledStep rectangle)

@@ -58,7 +58,7 @@ loopI lo hi body = go (truncate lo)
 
 -- | @chkI a base lo hi@: the compiled step's check that @a@ holds indices
 -- @base + lo@ to @base + hi@, before it reads or writes them with 'rdU' and
--- 'wrU' (see 'Manifold.Stage.Imp.arrayAccess': one check per row of an
+-- 'wrU' (see @arrayAccess@ in "Manifold.Stage.Imp": one check per row of an
 -- array instead of one per access).
 chkI :: Arr -> Int -> Int -> Int -> IO ()
 chkI a base lo hi
@@ -72,10 +72,14 @@ outOfBounds a base lo hi = ioError $ userError $
   ++ " outside an array of " ++ show (PV.length a)
 {-# NOINLINE outOfBounds #-}
 
+-- | An element of an array, unchecked: a 'chkI' before it covered the
+-- index.
 rdU :: Arr -> Int -> IO Double
 rdU = PV.unsafeRead
 {-# INLINE rdU #-}
 
+-- | Set an element of an array, unchecked (see 'rdU'); the number is
+-- evaluated first.
 wrU :: Arr -> Int -> Double -> IO ()
 wrU a i !x = PV.unsafeWrite a i x
 {-# INLINE wrU #-}

@@ -5,5 +5,6 @@ module Manifold.Compiled.Sphere (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (sphere)
+-- | The compiled step of 'sphere'.
 compiled :: CompiledStep
 compiled = $(compiledStep sphere)

@@ -5,5 +5,6 @@ module Manifold.Compiled.Torus (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (torus)
+-- | The compiled step of 'torus'.
 compiled :: CompiledStep
 compiled = $(compiledStep torus)

@@ -5,5 +5,6 @@ module Manifold.Compiled.Trumpet (compiled) where
 import Manifold.Compile (CompiledStep, compiledStep)
 import Manifold.Compiled.Shared ()
 import Manifold.Spaces (trumpet)
+-- | The compiled step of 'trumpet'.
 compiled :: CompiledStep
 compiled = $(compiledStep trumpet)

@@ -7,7 +7,8 @@
 -- A staged expression graph ('Manifold.Stage.Expr.E') is lowered to a
 -- 'Term': nodes bound to names are 'TVar's, the rest are inlined. Statements
 -- are what the 'Manifold.Stage.Imp.Imp' class can do: bind, read, write,
--- loop, branch, call. A tree is made for one kind of output ('Flavour'):
+-- loop, branch, call. A tree is made for one kind of output (a
+-- 'Manifold.Stage.Print.Target'):
 -- the page's JavaScript keeps its mutable locals as variables and indexes
 -- arrays with numbers; the native code keeps locals as slots of an array,
 -- indexes with 'Int' arithmetic and checks each row of an array once.
@@ -38,9 +39,16 @@ data Term
   | TCounter String -- ^ a loop's 'Int' counter as a number (native code only)
   deriving (Show, Eq, Ord)
 
+-- | A literal term of a 'Double' (by its bits: 'TLit').
+--
+-- >>> literalTerm (0 / 0) == literalTerm (0 / 0)
+-- True
+-- >>> literalTerm 0 == literalTerm (-0)
+-- False
 literalTerm :: Double -> Term
 literalTerm = TLit . castDoubleToWord64
 
+-- | The 'Double' a 'TLit' holds.
 termLiteral :: Word64 -> Double
 termLiteral = castWord64ToDouble
 

@@ -39,27 +39,39 @@ import System.IO.Unsafe (unsafePerformIO)
 
 import Manifold.Field
 
+-- | The one-operand operations: the scalar class's, 'Floor' included.
 data Op1
   = Neg | Abs | Sign | Recip | Sqrt | Exp | Log | Sin | Cos | Tan
   | Asin | Acos | Atan | Sinh | Cosh | Tanh | Asinh | Acosh | Atanh | Floor
   deriving (Show, Eq, Ord, Enum, Bounded)
 
+-- | The two-operand operations.
 data Op2 = Add | Sub | Mul | Div | Pow
   deriving (Show, Eq, Ord, Enum, Bounded)
 
 -- | A node refers to its operands by node id. Literals are kept by bit
 -- pattern, so NaN is a key like any other and @-0@ differs from @0@.
 data Node
-  = Lit !Word64
+  = Lit !Word64 -- ^ a literal, by its bit pattern
   | Sym !String -- ^ a parameter or a variable bound by generated code
-  | Un !Op1 !Int
-  | Bin !Op2 !Int !Int
+  | Un !Op1 !Int -- ^ an operation on the node of this id
+  | Bin !Op2 !Int !Int -- ^ an operation on two nodes
   | Sel !Int !Int !Int -- ^ @c > 0 ? t : e@
   deriving (Show, Eq, Ord)
 
--- | A staged scalar: the id of a node in the global table.
+-- | A staged scalar: the id of a node in the global table. Equal
+-- expressions are one node, however they were built:
+--
+-- >>> nodeId (sym "x" * sym "y") == nodeId (sym "x" * sym "y")
+-- True
+-- >>> nodeOf (sym "x" * 1 + 0)
+-- Sym "x"
+-- >>> literalValue (sqrt (lit 2) * sqrt 2)
+-- Just 2.0000000000000004
 newtype E = E Int
 
+-- | The expression's node id (ids depend on what else the table holds: a
+-- printer names nodes in its own order, never by id).
 nodeId :: E -> Int
 nodeId (E i) = i
 
@@ -84,15 +96,18 @@ intern !n = unsafePerformIO $ atomicModifyIORef' table $ \t@(Table byNode byId) 
     Nothing -> let i = IM.size byId in (Table (M.insert n i byNode) (IM.insert i n byId), E i)
 {-# NOINLINE intern #-}
 
+-- | The node an expression is.
 nodeOf :: E -> Node
 nodeOf (E i) = nodeById i
 
+-- | The node of an id (an operand of another node).
 nodeById :: Int -> Node
 nodeById !i = unsafePerformIO $ do
   Table _ byId <- readIORef table
   pure (byId IM.! i)
 {-# NOINLINE nodeById #-}
 
+-- | A node's operands, by id.
 children :: Node -> [Int]
 children = \case
   Un _ a -> [a]
@@ -100,12 +115,23 @@ children = \case
   Sel c t e -> [c, t, e]
   _ -> []
 
+-- | A named value: a parameter of the printed function, or a variable the
+-- generated code binds.
 sym :: String -> E
 sym = intern . Sym
 
+-- | A literal ('constant').
 lit :: Double -> E
 lit = intern . Lit . castDoubleToWord64
 
+-- | The number an expression is, if it folded to a literal.
+--
+-- >>> literalValue (lit 2 + 3 * lit 4)
+-- Just 14.0
+-- >>> literalValue (sym "x" * 0)
+-- Just 0.0
+-- >>> literalValue (sym "x" + 1)
+-- Nothing
 literalValue :: E -> Maybe Double
 literalValue e = case nodeOf e of
   Lit w -> Just (castWord64ToDouble w)
@@ -120,6 +146,7 @@ evalOp1 = \case
   Asin -> asin; Acos -> acos; Atan -> atan; Sinh -> sinh; Cosh -> cosh
   Tanh -> tanh; Asinh -> asinh; Acosh -> acosh; Atanh -> atanh; Floor -> floorF
 
+-- | The native meaning of each two-operand operation (see 'evalOp1').
 evalOp2 :: Op2 -> Double -> Double -> Double
 evalOp2 = \case
   Add -> (+); Sub -> (-); Mul -> (*); Div -> (/); Pow -> (**)

@@ -50,25 +50,66 @@ import Manifold.Stage.Code
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
 
+-- $setup
+-- >>> import qualified Data.Vector.Unboxed as V
+-- >>> import qualified Data.Vector.Unboxed.Mutable as MV
+
+-- | A monad that runs (or builds) imperative programs over arrays of
+-- numbers. A program written once against it runs natively and prints as
+-- code; here, the sum of an array:
+--
+-- >>> :{
+-- let total xs out n = do
+--       s <- newRef 0
+--       forEach n (\i -> readArray xs i >>= \x -> modifyRef s (+ x))
+--       readRef s >>= writeArray out 0
+-- :}
+--
+-- >>> xs <- V.thaw (V.fromList [1, 2, 3, 4])
+-- >>> out <- MV.replicate 1 0
+-- >>> runNative (total xs out 4) >> MV.read out 0
+-- 10.0
+-- >>> putStr (stageProcedure (Procedure "total" ["xs", "out"] ["n"]) (\[xs, out] [n] -> total xs out (toIndex n)))
+-- function total(xs, out, n) {
+--   n = +n;
+--   let v0 = 0.0;
+--   for (let i1 = 0.0; i1 < n; i1++) {
+--     const t2 = xs[i1];
+--     const t3 = v0;
+--     v0 = (t3 + t2);
+--   }
+--   const t4 = v0;
+--   out[0.0] = t4;
+-- }
 class (Monad m, Field (Scalar m), Num (Index m)) => Imp m where
+  -- | The numbers a program computes with: 'Double', or staged expressions.
   type Scalar m = s | s -> m
+  -- | Array indices and loop counters.
   type Index m = i | i -> m
+  -- | An array of numbers, as the program receives it.
   type Array m
+  -- | A mutable local number.
   type Ref m
   -- | @forLoop lo hi body@ runs @body i@ for @lo <= i < hi@.
   forLoop :: Index m -> Index m -> (Index m -> m ()) -> m ()
   -- | @ifPositive c t e@ runs @t@ where @c > 0@, else @e@ (NaN runs @e@).
   ifPositive :: Scalar m -> m () -> m () -> m ()
+  -- | An element of an array.
   readArray :: Array m -> Index m -> m (Scalar m)
+  -- | Set an element of an array.
   writeArray :: Array m -> Index m -> Scalar m -> m ()
   -- | Compute a value once here and refer to it by name afterwards.
   share :: Scalar m -> m (Scalar m)
   -- | 'share' several values at once, so what they have in common is
   -- computed once too.
   shareAll :: Traversable t => t (Scalar m) -> m (t (Scalar m))
+  -- | A new mutable local holding a value.
   newRef :: Scalar m -> m (Ref m)
+  -- | A local's value now.
   readRef :: Ref m -> m (Scalar m)
+  -- | Set a local.
   writeRef :: Ref m -> Scalar m -> m ()
+  -- | An index as a number.
   toScalar :: Index m -> Scalar m
   -- | A scalar holding a whole number (a stored count or index) as an index.
   toIndex :: Scalar m -> Index m
@@ -81,29 +122,37 @@ class (Monad m, Field (Scalar m), Num (Index m)) => Imp m where
   -- one body: printing two different bodies under a name is an error.
   subroutine :: String -> [Scalar m] -> ([Scalar m] -> m ()) -> m ()
 
+-- | @whenPositive c t@ runs @t@ where @c > 0@ (not for NaN).
 whenPositive :: Imp m => Scalar m -> m () -> m ()
 {-# INLINE whenPositive #-}
 whenPositive c t = ifPositive c t (pure ())
 
+-- | @forEach n body@ runs @body i@ for @0 <= i < n@.
 forEach :: Imp m => Index m -> (Index m -> m ()) -> m ()
 {-# INLINE forEach #-}
 forEach = forLoop 0
 
+-- | Apply a function to a local's value.
 modifyRef :: Imp m => Ref m -> (Scalar m -> Scalar m) -> m ()
 {-# INLINE modifyRef #-}
 modifyRef r f = readRef r >>= writeRef r . f
 
 -- Native -------------------------------------------------------------------
 
+-- | The native interpretation: the program runs in 'IO' over unboxed
+-- mutable vectors, its scalars 'Double' and its indices 'Int'.
 newtype Native a = Native (IO a)
   deriving (Functor, Applicative, Monad, MonadIO)
 
+-- | Run a native program.
 runNative :: Native a -> IO a
 runNative (Native io) = io
 
+-- | The native interpretation's arrays: the world's arrays as
+-- "Manifold.Engine" holds them.
 type NativeArray = MV.IOVector Double
 
--- | A mutable unboxed number (an 'IORef' would box every write).
+-- | A mutable unboxed number (an 'Data.IORef.IORef' would box every write).
 newtype NativeRef = NativeRef (MV.IOVector Double)
 
 instance Imp Native where
@@ -155,6 +204,7 @@ instance Num IxE where
   signum (IxE a) = IxE (signum a)
   fromInteger = IxE . fromInteger
 
+-- | A staged array: the name of the array parameter it is.
 newtype StagedArray = StagedArray String
 
 -- | A mutable local: a slot of the locals array (Haskell) or a variable.
@@ -171,7 +221,7 @@ data StageState = StageState
   , ssIntVars :: M.Map String String -- ^ Haskell: a loop's number and its 'Int' counter
   , ssChecks :: M.Map (String, LinearIndex) [(Int, Bool)]
     -- ^ Haskell: the index checks in force, by array and base index, and
-    -- whether the current block made them (see 'arrayAccess')
+    -- whether the current block made them (see @arrayAccess@)
   , ssCheckRanges :: IM.IntMap Check -- ^ each check's offsets, lowest and highest
   , ssNextCheck :: !Int
   , ssNextLocal :: !Int -- ^ Haskell: the next slot of the locals array (see 'localSlots')
@@ -186,7 +236,7 @@ data StageState = StageState
 -- statement runs: the narrow phase's eighteen per pair and the solver's
 -- five per contact row were most of what the native step allocated.
 -- A procedure numbers its locals from 0 and a subroutine from
--- 'subroutineLocals', so the locals of a procedure and of the subroutine it
+-- @subroutineLocals@ (32), so the locals of a procedure and of the subroutine it
 -- calls are different slots; a subroutine calls no other.
 localSlots :: Int
 localSlots = 64
@@ -218,6 +268,9 @@ freshLocal = do
   Staged (put s { ssNextLocal = ssNextLocal s + 1 })
   pure (ssNextLocal s)
 
+-- | The staged interpretation: the program builds its code, for a
+-- 'Target', as the statements of "Manifold.Stage.Code" ('stageFunctions');
+-- its scalars are expressions ('E').
 newtype Staged a = Staged (State StageState a)
   deriving (Functor, Applicative, Monad)
 
@@ -368,7 +421,7 @@ finishFunction s name arrays params first = Function name arrays params (localsC
       | otherwise = [RowCheck localsArray [] (first, ssNextLocal s - 1)]
 
 -- | An array index: a number in JavaScript, checked 'Int' arithmetic in
--- Haskell ('arrayAccess').
+-- Haskell (@arrayAccess@).
 index :: String -> E -> Staged ArrayIndex
 index a i = do
   hs <- isHaskell
@@ -445,7 +498,7 @@ linearIndex i = case nodeById i of
     plus (ta, ka) (tb, kb) = (M.filter (/= 0) (M.unionWith (+) ta tb), ka + kb)
     scale c (t, k) = (M.filter (/= 0) (M.map (c *) t), c * k)
 
--- | The terms of a 'linearIndex' as 'Int' arithmetic, in the order of
+-- | The terms of a @linearIndex@ as 'Int' arithmetic, in the order of
 -- their printed text: node ids depend on what else the global table
 -- holds, and the compiled step must not.
 orderTerms :: M.Map String String -> M.Map Int Int -> LinearIndex
@@ -468,8 +521,8 @@ intTerm counters = go
 -- | A procedure to stage: its name, its array and scalar parameters.
 data Procedure = Procedure
   { procName :: String
-  , procArrays :: [String]
-  , procScalars :: [String]
+  , procArrays :: [String] -- ^ the arrays' names, as the program's 'StagedArray's
+  , procScalars :: [String] -- ^ the number parameters' names, as its 'sym's
   }
 
 -- | Print a procedure as a JavaScript function (returning nothing; results go

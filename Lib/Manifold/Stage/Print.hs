@@ -5,7 +5,7 @@
 -- a local binding, nodes already bound in an enclosing scope are referred to
 -- by name, and every node used once is inlined where it is used (in Haskell,
 -- so is an expensive node used only inside conditionals' arms: see
--- 'onlyUnderConditions'). Names are
+-- @onlyUnderConditions@ in the source). Names are
 -- given in the order bindings are printed, so the same input prints the same
 -- bytes whatever else the global node table holds.
 module Manifold.Stage.Print
@@ -30,6 +30,9 @@ import Data.List (foldl', intercalate)
 import Manifold.Stage.Code
 import Manifold.Stage.Expr
 
+-- $setup
+-- >>> let x = sym "x"; y = sym "y"
+
 -- | Haskell is the native engine's compiled step ("Manifold.Compiled"),
 -- printed for reading (@manifold dump-step@; what is compiled is the same
 -- tree spliced by "Manifold.Stage.Splice"): expressions over 'Double' that
@@ -40,10 +43,12 @@ data Target = JavaScript | GLSL | Haskell
 -- | Nodes already bound to names where the code being printed sits.
 type Scope = IM.IntMap String
 
-
+-- | The scope of a function's top: nothing bound yet.
 emptyScope :: Scope
 emptyScope = IM.empty
 
+-- | Roots lowered in a scope ('lower'): the block of bindings they need,
+-- then the roots themselves.
 data Lowered = Lowered
   { loweredBindings :: [(String, Term)] -- ^ name and right-hand side, in order
   , loweredRoots :: [Term] -- ^ each root as a term over the bindings
@@ -196,6 +201,11 @@ binary target op a b = case op of
 
 -- | A 'Double' literal that the target reads back as the same number (JS) or
 -- the nearest float (GLSL, which has no literals for NaN and infinities).
+--
+-- >>> map (renderLiteral JavaScript) [1 / 0, -0, 0 / 0, 0.1]
+-- ["Infinity","(-0)","NaN","0.1"]
+-- >>> map (renderLiteral GLSL) [1 / 0, -0, 0 / 0, 0.1]
+-- ["uintBitsToFloat(0x7f800000u)","0.0","uintBitsToFloat(0x7fc00000u)","0.1"]
 renderLiteral :: Target -> Double -> String
 renderLiteral JavaScript x
   | isNaN x = "NaN"
@@ -216,6 +226,7 @@ renderLiteral GLSL x
   | x < 0 = "(" ++ show x ++ ")"
   | otherwise = show x
 
+-- | A line of a block, indented one level (two spaces).
 indent :: String -> String
 indent = ("  " ++)
 
@@ -227,7 +238,19 @@ data FnType = FnType
   }
 
 -- | A whole function returning the roots: one number, or an array (JS) /
--- vector (GLSL) of them.
+-- vector (GLSL) of them. What the roots share is bound once:
+--
+-- >>> let r2 = x * x + y * y
+-- >>> putStr (printFunction JavaScript "f" (FnType ["x", "y"] False) [sqrt r2 * r2, x / 2])
+-- function f(x, y) {
+--   const t0 = ((x * x) + (y * y));
+--   return [(Math.sqrt(t0) * t0), (x / 2.0)];
+-- }
+-- >>> putStr (printFunction GLSL "f" (FnType ["x", "y"] False) [sqrt r2 * r2])
+-- float f(float x, float y) {
+--   float t0 = ((x * x) + (y * y));
+--   return (sqrt(t0) * t0);
+-- }
 printFunction :: Target -> String -> FnType -> [E] -> String
 printFunction target name ty roots =
   let Lowered bs ts _ _ = lower target "t" 0 emptyScope roots

@@ -1,5 +1,6 @@
 {-# LANGUAGE TemplateHaskellQuotes #-}
--- | Staged functions ("Manifold.Stage.Code", made for the 'Haskell' target)
+-- | Staged functions ("Manifold.Stage.Code", made for the
+-- 'Manifold.Stage.Print.Haskell' target)
 -- as Template Haskell declarations: what the compiled native step splices.
 -- The declarations say what 'Manifold.Stage.Print.printProcedure' prints
 -- for Haskell, over the definitions of "Manifold.Compiled.Runtime" (loops,
