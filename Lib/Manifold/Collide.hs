@@ -333,7 +333,15 @@ pairContactsVia l sec w keyBase x y signs shift = do
     -- turned round, and its depth is the deepest vertex's
     moverCentre <- read3 (wPos w) mv
     facing <- share ((image moverCentre ^-^ bfCentre fr) `dot` edgeNormal)
-    m0 <- share3 (fmap (\v -> select facing v (negate v)) edgeNormal)
+    -- The edge's normal lies in the reference body's tangent plane; the
+    -- push is along it as the tangent plane midway between the bodies
+    -- sees it, so that each body's row (the push projected to its own
+    -- plane) is the other's mirror: the pair's pushes then cancel on the
+    -- surface as they do on a plane (along the reference body's plane, on
+    -- a sphere they would drive the pair sideways, from nothing).
+    moverNormal <- read3 (wNormal w) mv
+    mid <- share3 (safeNormalize (linear moverNormal ^+^ bfNormal fr))
+    m0 <- share3 (safeNormalize (tangentProjection mid (fmap (\v -> select facing v (negate v)) edgeNormal)))
     t <- share3 (bfNormal fr `cross` m0)
     (dLo, dHi) <- extremesAlong margin nd $ \d -> do
       q <- outlineVertex l w mv d

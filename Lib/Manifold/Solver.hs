@@ -1,5 +1,6 @@
 {-# OPTIONS_GHC -fllvm #-}
 {-# LANGUAGE FlexibleContexts #-}
+{-# LANGUAGE LambdaCase #-}
 -- Built with LLVM (as the compiled steps are): the generic native step's
 -- solve is a tenth faster so (manifold bench --generic, settled piles).
 
@@ -164,7 +165,18 @@ grabPoint sp w g = do
 -- its impulses applied again (the warm start of a sub-step); otherwise one
 -- soft solve of each row.
 mouseRows :: Imp m => Space -> WorldArrays (Array m) -> Bool -> m ()
-mouseRows sp w warm = do
+-- A subroutine of its own: inlined at its three calls a sub-step, with the
+-- grabbed point's geodesic walk over the cube's field, it made the
+-- sub-steps a function V8 would not optimise (224 bytes a step on node's
+-- heap, the allocation guard).
+mouseRows sp w warm =
+  subroutine "mouseJoint" [if warm then 1 else 0] $ \case
+    [warmS] -> mouseJoint sp w warmS
+    _ -> error "mouseJoint: one argument"
+
+-- | 'mouseRows' with the warm start as a number (above 0: warm start).
+mouseJoint :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
+mouseJoint sp w warm = do
   active <- readMouse w MActive
   whenPositive active $ do
     gS <- readMouse w MBody
@@ -187,9 +199,7 @@ mouseRows sp w warm = do
       let row e field = do
             let jw = (rw `cross` e) `dot` bfNormal f
             acc <- readMouse w field
-            if warm
-              then push w g acc e jw
-              else do
+            ifPositive warm (push w g acc e jw) $ do
                 Vel v o <- readVel w g
                 let cdot = (e `dot` v) + jw * o
                     k = im * quadrance e + ii * jw * jw
@@ -365,7 +375,17 @@ sweepRows useBias w = do
         msC <- readContact w c CMassScale
         isC <- readContact w c CImpulseScale
         soft <- share (maxF (biasRateC * separation) (negate pushout))
-        pure (select separation (separation * invH) soft, select separation 1 msC, select separation 0 isC)
+        -- A gap is a hard row, an overlap beyond the slop a soft one; in
+        -- between, over the slop's width, the row turns soft gradually.
+        -- (Switched at 0, as Box2D does, a resting contact, which sits at
+        -- 0, was kicked between the two by its last bits: the native and
+        -- the emitted step parted by 1e-4 within 60 steps of a pile.)
+        depth <- readContact w c CDepth
+        slopC <- share (depth - penetration)
+        softer <- share (clampF 0 1 (select slopC (negate separation / slopC) 1))
+        pure ( select separation (separation * invH) soft
+             , 1 - softer * (1 - msC)
+             , softer * isC )
       else pure (select separation (separation * invH) 0, 1, 0)
     vn <- along normal va0 vb0
     ln' <- share (finiteOr0 (maxF 0 (ln + scale * (negate (kn * ms * (vn + bias)) - is * ln))))
@@ -387,14 +407,16 @@ sweepRows useBias w = do
 
 -- | The end of the step's solve: restitution (once, for the contacts that
 -- approached faster than 'BounceThreshold' before the step and pushed),
--- the impulses kept for the next step's warm start, and every body back
--- into the fundamental domain.
+-- the impulses kept for the next step's warm start, every velocity back in
+-- its tangent plane ('tangentVelocities') and every body back into the
+-- fundamental domain.
 finishStep :: Imp m => Space -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE finishStep :: Space -> WorldArrays NativeArray -> Native () #-}
 finishStep sp w = do
   restitution <- readParam w Restitution
   whenPositive restitution $ subroutine "restitution" [] $ \_ -> restitute w
   rememberImpulses w
+  tangentVelocities sp w
   wrapIntoDomain sp w
 
 -- | The restitution impulses: a contact that approached at @v < -threshold@

@@ -59,6 +59,7 @@ module Manifold.World
   , applyGravity
   , integrate
   , wrapIntoDomain
+  , tangentVelocities
   , polygoniseAll
   , polygoniseBody
   , hasConstantGradient
@@ -397,11 +398,15 @@ integrate sp w dt = do
   let f = spaceField sp
   forEach (toIndex count) $ \i -> do
     p <- read3 (wPos w) i
-    v <- read3 (wVel w) i
     axis <- read3 (wAxis w) i
     angle <- readSlot w i Angle
     omega <- readSlot w i Omega
     n <- read3 (wNormal w) i
+    -- the solver pushes along rows found at the step's start, in the
+    -- tangent planes the bodies had then: what of that leaves the tangent
+    -- plane here is the surface's to take (the walk below keeps the speed,
+    -- and would turn it into speed along the surface)
+    v <- read3 (wVel w) i >>= share3 . tangentProjection n
     let (p0, v0, n0) = geodesicStepFrom f dt n (p, v)
     p1 <- share3 p0
     -- a fast body over a tight bend (a rounded cube edge) can end its three
@@ -463,6 +468,20 @@ wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
       held <- readMouse w MBody
       whenPositive (active * (0.5 - abs (held - toScalar i))) $
         readMouse w MLocalTheta >>= writeMouse w MLocalTheta . (sS *)
+
+-- | Every body's velocity projected onto its tangent plane: the step's
+-- last relaxing solve pushes along rows of the tangent planes the bodies
+-- had when the step began, so that a velocity ends a little off the plane
+-- it now has (a plane's rows and velocities never leave it: nothing to do).
+tangentVelocities :: Imp m => Space -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE tangentVelocities :: Space -> WorldArrays NativeArray -> Native () #-}
+tangentVelocities sp w
+  | hasConstantGradient (spaceField sp) = pure ()
+  | otherwise = do
+      count <- readMeta w BodyCount
+      forEach (toIndex count) $ \i -> do
+        n <- read3 (wNormal w) i
+        read3 (wVel w) i >>= write3 (wVel w) i . tangentProjection n
 
 -- | How far off the surface (in field value) a step may end and still count
 -- as good.
