@@ -14,6 +14,7 @@ module Manifold.Params
     -- * Scene keys
   , SceneKey (..)
   , Range (..)
+  , Control (..)
   , sceneKeys
   , outOfRange
   , rangeDescription
@@ -42,12 +43,15 @@ data Params = Params
   } deriving (Show, Eq)
 
 -- | What a world starts with and a scene gets for a key it leaves out: four
--- sub-steps of one solve each, and contacts as springs of 30 Hz with a
--- damping ratio of 10 (Box2D v3's defaults).
+-- sub-steps of one solve each, and contacts as springs of 60 Hz with a
+-- damping ratio of 10: Box2D v3's 30 Hz and 10 made as stiff, for a body's
+-- size, as they are in Box2D's units (a spring's sag under weight, g/ω²,
+-- against 1 m boxes under 10 m/s² there, 0.03–0.2 here under 4; see
+-- docs/decisions/soft-step.md).
 defaultParams :: Params
 defaultParams = Params
   { pDt = 0.01, pGravity = True, pSubsteps = 4, pIterations = 1, pFriction = 0.4, pRestitution = 0
-  , pContactHertz = 30, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
+  , pContactHertz = 60, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
   , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05 }
 
 -- | A parameter as the world's parameter array holds it (a switch is 1 or 0).
@@ -99,6 +103,7 @@ data SceneKey = SceneKey
   { keyName :: String
   , keyParam :: Param
   , keyRange :: Range
+  , keyControl :: Maybe Control -- ^ the page's control for it, if the page offers one
   } deriving (Show, Eq)
 
 -- | The values a scene key takes.
@@ -110,20 +115,34 @@ data Range
   | Count Int -- ^ a whole number from 1 to this
   deriving (Show, Eq)
 
--- | The parameters a scene sets, in the order a scene is written; a key
--- left out keeps its 'defaultParams' value.
+-- | How the page offers a key: a checkbox for a switch, a slider for a
+-- number (its ends and step; the key's 'Range' still decides what
+-- @setSimulation@ and a scene may set).
+data Control = Control
+  { controlLabel :: String -- ^ what the control is called
+  , controlHelp :: String -- ^ what it does (the control's tooltip)
+  , controlSlider :: Maybe (Double, Double, Double) -- ^ a number's slider: from, to, step
+  } deriving (Show, Eq)
+
+-- | The parameters a scene sets, in the order a scene is written (and the
+-- page shows their controls); a key left out keeps its 'defaultParams'
+-- value.
 sceneKeys :: [SceneKey]
 sceneKeys =
-  [ SceneKey "dt" Dt Positive
-  , SceneKey "gravity" GravityOn Switch
+  [ SceneKey "dt" Dt Positive Nothing
+  , SceneKey "gravity" GravityOn Switch (Just (Control "Gravity" "the space's gravity, projected onto the surface" Nothing))
   , SceneKey "substeps" Substeps (Count 64)
-  , SceneKey "iterations" Iterations (Count 1000)
-  , SceneKey "friction" Friction NonNegative
-  , SceneKey "restitution" Restitution Fraction
+      (slider "Sub-steps" "sub-steps a step, each moving the bodies once: more hold taller stacks, at their cost" 1 16 1)
+  , SceneKey "iterations" Iterations (Count 1000) Nothing
+  , SceneKey "friction" Friction NonNegative (slider "Friction" "Coulomb friction coefficient of contacts" 0 1 0.05)
+  , SceneKey "restitution" Restitution Fraction (slider "Restitution" "bounciness of contacts (0: none, 1: elastic)" 0 1 0.05)
   , SceneKey "contactHertz" ContactHertz Positive
-  , SceneKey "dampingRatio" DampingRatio NonNegative
-  , SceneKey "pushout" Pushout Positive
+      (slider "Contact Hz" "how stiff a contact is, as a spring's frequency (twice this against static bodies and walls)" 1 120 1)
+  , SceneKey "dampingRatio" DampingRatio NonNegative (slider "Damping" "a contact spring's damping ratio" 0 20 0.5)
+  , SceneKey "pushout" Pushout Positive (slider "Push-out" "the fastest a contact pushes overlapping bodies apart" 0.05 5 0.05)
+  , SceneKey "slop" Slop Fraction Nothing
   ]
+  where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
 
 -- | Why a (finite) number is not in a range, or 'Nothing' when it is; a
 -- switch is a JSON boolean, checked as such.
