@@ -96,7 +96,7 @@ sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
     entry k = "  { " ++ intercalate ", " [ f ++ ": " ++ v | (f, v) <- fields k ++ rangeDescription (keyRange k) ++ control k ] ++ " },\n"
     control k = case keyControl k of
       Nothing -> []
-      Just c -> [("control", "{ " ++ intercalate ", " ([("label: " ++ show (controlLabel c)), ("help: " ++ show (controlHelp c))] ++ slider c) ++ " }")]
+      Just c -> [("control", "{ " ++ intercalate ", " (["label: " ++ show (controlLabel c), "help: " ++ show (controlHelp c)] ++ slider c) ++ " }")]
     slider c = case controlSlider c of
       Nothing -> []
       Just (lo, hi, step) -> ["lo: " ++ show lo, "hi: " ++ show hi, "step: " ++ show step]
