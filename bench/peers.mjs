@@ -11,9 +11,10 @@
 // half-side 0.008 and dt = 1/300, so that g·dt²/h is Box2D's 60 Hz pyramid
 // of 1 m boxes), run S simulated seconds (default 20); a pile of N circles
 // and boxes (default 1000; 0: none) dropped into the rectangle at Manifold's
-// default dt, run T simulated seconds (default 6). Each engine's steps are
-// timed one by one; the second half of them count (the first half is the
-// warm-up). Reported: the median ms per step (10 %–90 %), µs per body-step,
+// default dt, run T simulated seconds (default 10: the pile forms in the
+// first 2–3 s, and Rapier's steps in the page took 3–4 times as long until
+// then). Each engine's steps are timed one by one; the second half of them
+// count (the first half is the warm-up). Reported: the median ms per step (10 %–90 %), µs per body-step,
 // the step's time against Manifold's in the same environment, whether the
 // pyramid stands at the end, and how far the pile's touching circles overlap.
 //
@@ -60,7 +61,7 @@ const list = (s) => s.split(",").map((x) => x.trim()).filter((x) => x);
 const rows = list(arg("--rows", "20,40")).map(Number);
 if (rows.some((n) => !Number.isInteger(n) || n < 1)) fail("--rows must be whole numbers ≥ 1");
 const pileN = count("--pile", 1000, 0);
-const seconds = positive("--seconds", 20), pileSeconds = positive("--pile-seconds", 6);
+const seconds = positive("--seconds", 20), pileSeconds = positive("--pile-seconds", 10);
 const engines = list(arg("--engines", ENGINES.join(",")));
 if (!engines.length || engines.some((e) => ENGINES.indexOf(e) < 0)) fail("--engines: a list of " + ENGINES.join(", "));
 const units = list(arg("--units", "home"));
