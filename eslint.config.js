@@ -59,6 +59,11 @@ module.exports = [
     languageOptions: { ecmaVersion: 2022, sourceType: "module", globals: { ...globals.node, ...globals.browser } },
   },
   {
+    // the peer benchmark's classic script, run both under node (vm) and in the page
+    files: ["bench/**/*.js"],
+    languageOptions: { ecmaVersion: 2022, sourceType: "script", globals: { ...globals.node, ...globals.browser } },
+  },
+  {
     files: ["eslint.config.js"],
     languageOptions: { ecmaVersion: 2022, sourceType: "commonjs", globals: { ...globals.node } },
   },

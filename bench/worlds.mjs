@@ -1,6 +1,6 @@
 // The generated engine (web/gen, web/js/world.js) under node, on the scenes
-// `manifold bench --scenes DIR` writes: what bench/node.mjs, pile.mjs and
-// cells.mjs share.
+// `manifold bench --scenes DIR` writes: what bench/node.mjs, pile.mjs,
+// cells.mjs and peers.mjs share.
 import fs from "node:fs";
 import path from "node:path";
 import vm from "node:vm";
@@ -18,16 +18,22 @@ export function commandLine(usage, known) {
   return { dir: line.positional[0], count: line.count, positive: line.positive, nonNegative: line.nonNegative };
 }
 
-// Every scene DIR/*.json in name order, loaded into a fresh World of the
-// page's engine: { file, scene, world }.
-export function* worlds(dir) {
+// The page's engine for the space `name` as globals, as the page has them:
+// Manifold (the index and Manifold.spaces[name]) and ManifoldWeb.world.
+export function loadSpace(name) {
   globalThis.performance = globalThis.performance || performance;
   // the index first (it lists the scene keys the page's reader checks), then the world
   if (!globalThis.Manifold || !globalThis.Manifold.sceneKeys) load(path.join(root, "web/gen/spaces.js"));
   if (!globalThis.ManifoldWeb) load(path.join(root, "web/js/world.js"));
+  if (!globalThis.Manifold.spaces[name]) load(path.join(root, "web/gen", "space-" + name + ".js"));
+}
+
+// Every scene DIR/*.json in name order, loaded into a fresh World of the
+// page's engine: { file, scene, world }.
+export function* worlds(dir) {
   for (const file of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
     const scene = JSON.parse(fs.readFileSync(path.join(dir, file), "utf8"));
-    if (!globalThis.Manifold || !globalThis.Manifold.spaces[scene.space]) load(path.join(root, "web/gen", "space-" + scene.space + ".js"));
+    loadSpace(scene.space);
     const W = globalThis.ManifoldWeb.world;
     const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
     world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
