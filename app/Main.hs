@@ -50,8 +50,9 @@ data BenchArgs = BenchArgs
   , bScenes :: Maybe FilePath -- ^ write the settled scenes here instead of timing
   , bFrom :: Maybe FilePath -- ^ time the scenes written here instead of settling
   , bGeneric :: Bool -- ^ the generic step even where a compiled one exists
-  , bIterations :: Maybe Int -- ^ solver iterations while timed, instead of the scenes'
-  , bSlopPerSize :: Maybe Double -- ^ the slop while timed, as a fraction of the body size
+  , bSubsteps :: Maybe Int -- ^ solver sub-steps while timed, instead of the scenes'
+  , bIterations :: Maybe Int -- ^ solver iterations a sub-step while timed, instead of the scenes'
+  , bSlop :: Maybe Double -- ^ the slop while timed, as a fraction of the body size
   }
 
 data GeodesicArgs = GeodesicArgs
@@ -83,8 +84,9 @@ commandParser = hsubparser
                                    <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the settled scenes as JSON files DIR/SPACE-N.json (the format sim reads) instead of timing"))
                                    <*> optional (strOption (long "from" <> metavar "DIR" <> help "Time the scenes DIR/SPACE-N.json that --scenes wrote instead of settling them again"))
                                    <*> switch (long "generic" <> help "Time the generic step even where the space has a compiled one")
-                                   <*> optional (option auto (long "iterations" <> metavar "K" <> help "Solver iterations from the warm-up on, instead of the scenes' (give the piles a long --warmup to settle)"))
-                                   <*> optional (option auto (long "slop-per-size" <> metavar "F" <> help "The contacts' slop from the warm-up on: F times the scene's body size (default: the engine's 0.002, whatever the size)")))
+                                   <*> optional (option auto (long "substeps" <> metavar "N" <> help "Solver sub-steps from the warm-up on, instead of the scenes' (give the piles a long --warmup to settle)"))
+                                   <*> optional (option auto (long "iterations" <> metavar "K" <> help "Solver iterations a sub-step from the warm-up on, instead of the scenes'"))
+                                   <*> optional (option auto (long "slop" <> metavar "F" <> help "The contacts' slop from the warm-up on, as a fraction of the smaller body's size (default: the engine's)")))
                        (progDesc "Time the native engine's step on scenes of growing size"))
  <> command "dump-step" (info (DumpStep <$> strArgument (metavar "SPACE" <> help ("One of: " ++ intercalate ", " spaceNames)))
         (progDesc "Print a space's compiled native step as Haskell, for reading (the library splices the same code)"))
@@ -236,16 +238,17 @@ simulate path steps every save = do
 bench :: BenchArgs -> IO ()
 bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWarmup = warmup, bSteps = steps
                 , bRounds = rounds, bJson = json, bScenes = scenesDir, bFrom = fromDir, bGeneric = generic
-                , bIterations = iterations, bSlopPerSize = slopPerSize } = do
+                , bSubsteps = substepCount, bIterations = iterations, bSlop = slop } = do
   spaces <- either usageError pure (mapM findSpace (splitOn ',' spacesArg))
   sizes <- either usageError pure (parseSizes sizesArg)
   when (settle < 0) (usageError "--settle: must not be negative")
   when (warmup < 0) (usageError "--warmup: must not be negative")
   when (steps < 1) (usageError "--steps: must be at least 1")
   when (rounds < 1) (usageError "--rounds: must be at least 1")
+  when (maybe False (< 1) substepCount) (usageError "--substeps: must be at least 1")
   when (maybe False (< 1) iterations) (usageError "--iterations: must be at least 1")
-  when (maybe False (\f -> isNaN f || isInfinite f || f < 0) slopPerSize) (usageError "--slop-per-size: must be a finite number, not negative")
-  let overridden = isJust iterations || isJust slopPerSize
+  when (maybe False (\f -> isNaN f || isInfinite f || f < 0) slop) (usageError "--slop: must be a finite number, not negative")
+  let overridden = isJust substepCount || isJust iterations || isJust slop
   let cases = [(sp, n) | sp <- spaces, n <- sizes]
       settled (sp, n) = do
         hPutStrLn stderr ("bench: " ++ spaceName sp ++ " " ++ show n ++ ": settling " ++ show settle ++ " steps")
@@ -258,7 +261,7 @@ bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWar
         either (usageError . ((file ++ ": ") ++)) pure (parseScene text)
   case (scenesDir, fromDir) of
     (Just _, Just _) -> usageError "--scenes and --from: write the scenes or time them, not both"
-    (Just _, _) | overridden -> usageError "--iterations and --slop-per-size: they apply to the timed steps; --scenes writes the scenes as they settle"
+    (Just _, _) | overridden -> usageError "--substeps, --iterations and --slop: they apply to the timed steps; --scenes writes the scenes as they settle"
     (Just dir, _) -> do
       createDirectoryIfMissing True dir
       forM_ cases $ \(sp, n) -> do
@@ -268,7 +271,7 @@ bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWar
     (Nothing, Just dir) -> timeScenes =<< mapM (saved dir) cases
     (Nothing, Nothing) -> timeScenes =<< mapM settled cases
   where
-    settings = ContactSettings iterations slopPerSize
+    settings = ContactSettings substepCount iterations slop
     timeScenes scenes = do
       perRound <- forM [1 .. rounds] $ \k -> do
         let progress msg = hPutStrLn stderr ("bench: round " ++ show k ++ " of " ++ show rounds ++ ": " ++ msg)
@@ -278,7 +281,7 @@ bench BenchArgs { bSpaces = spacesArg, bSizes = sizesArg, bSettle = settle, bWar
         then BL.putStrLn (A.encode [ A.object [ "space" A..= brSpace r, "bodies" A..= brBodies r, "size" A..= brSize r
                                               , "contacts" A..= brContacts r, "medianMs" A..= brMedianMs r
                                               , "p10Ms" A..= brP10Ms r, "p90Ms" A..= brP90Ms r, "steps" A..= brSteps r
-                                              , "iterations" A..= brIterations r, "slop" A..= brSlop r
+                                              , "substeps" A..= brSubsteps r, "iterations" A..= brIterations r, "slop" A..= brSlop r
                                               -- settle null: timed as read from --from's files
                                               , "rounds" A..= rounds, "settle" A..= (if isJust fromDir then Nothing else Just settle), "warmup" A..= warmup
                                               , "phaseMedianMs" A..= A.object [fromString k A..= v | (k, v) <- brPhases r] ]

@@ -7,21 +7,21 @@
 // key for warm starting over the next 20 steps; by kind of pair (circles
 // are a bench scene's even-numbered bodies), the touching pairs per body and
 // the share of them with two rows. --mean M adds the rows per body averaged
-// over the last M of the W steps; --slop-per-size F sets the engine's slop to
-// F times the scene's body size before the steps (what a slop that scales
-// with the bodies would do: 0.0717 is the default 0.002 at the rectangle's
-// 1000-body size); --iterations K sets the solver's iterations (what firmer
-// contacts do to a pile: see bench/README.md, "Firmer contacts").
-// Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]   (JSON lines on stdout)
+// over the last M of the W steps; --slop F sets the engine's slop (a
+// fraction of the smaller body's size), --substeps N and --iterations K the
+// solver's sub-steps and its solves a sub-step, before the steps (what
+// firmer contacts do to the rows, as `manifold bench` with the same flags).
+// Usage: node bench/pile.mjs DIR [--steps W] [--mean M] [--slop F] [--substeps N] [--iterations K]   (JSON lines on stdout)
 import { commandLine, worlds } from "./worlds.mjs";
 
-const { dir, count, nonNegative } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop-per-size F] [--iterations K]",
-  ["--steps", "--mean", "--slop-per-size", "--iterations"]);
-const settle = count("--steps", 400, 0), meanOver = count("--mean", 0, 0), slopPerSize = nonNegative("--slop-per-size", 0);
-const iterations = count("--iterations", 0, 0); // 0: the scene's
+const { dir, count, nonNegative } = commandLine("node bench/pile.mjs DIR [--steps W] [--mean M] [--slop F] [--substeps N] [--iterations K]",
+  ["--steps", "--mean", "--slop", "--substeps", "--iterations"]);
+const settle = count("--steps", 400, 0), meanOver = count("--mean", 0, 0), slop = nonNegative("--slop", 0);
+const substeps = count("--substeps", 0, 0), iterations = count("--iterations", 0, 0); // 0: the scene's
 
 for (const { scene, world } of worlds(dir)) {
-  if (slopPerSize > 0) world.setParams({ slop: slopPerSize * scene.bodies[0].size });
+  if (slop > 0) world.setParams({ slop });
+  if (substeps > 0) world.setParams({ substeps });
   if (iterations > 0) world.setParams({ iterations });
   let rowSum = 0;
   for (let s = 0; s < settle; s++) {
@@ -110,7 +110,8 @@ for (const { scene, world } of worlds(dir)) {
     space: scene.space, bodies: n, steps: settle,
     rowsPerBody: now.length / n, rowsPerPair: histogram, pairsByKind: byKind,
     ...(meanOver > 0 ? { rowsPerBodyMean: rowSum / Math.min(meanOver, settle) / n } : {}),
-    ...(slopPerSize > 0 ? { slop: world.param("slop") } : {}),
+    ...(slop > 0 ? { slop: world.param("slop") } : {}),
+    ...(substeps > 0 ? { substeps: world.param("substeps") } : {}),
     ...(iterations > 0 ? { iterations: world.param("iterations") } : {}),
     candidatePairsPerBody: candidates / n, edgeLookupsPerBody: lookups / n,
     circleOverlapMean: count ? sum / count : 0, circleOverlapMax: worst, touchingCirclePairs: count,

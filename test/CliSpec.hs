@@ -56,12 +56,12 @@ instance A.FromJSON BenchSettle where
 
 -- | What a bench result says of the contact settings and warm-up it was timed with.
 data BenchContacts = BenchContacts
-  { bcIterations :: Int, bcSlop :: Double, bcSize :: Double, bcWarmup :: Int, bcRows :: Double }
+  { bcSubsteps :: Int, bcIterations :: Int, bcSlop :: Double, bcSize :: Double, bcWarmup :: Int, bcRows :: Double }
   deriving (Show, Eq)
 
 instance A.FromJSON BenchContacts where
   parseJSON = A.withObject "bench result" $ \o ->
-    BenchContacts <$> o .: "iterations" <*> o .: "slop" <*> o .: "size" <*> o .: "warmup" <*> o .: "contacts"
+    BenchContacts <$> o .: "substeps" <*> o .: "iterations" <*> o .: "slop" <*> o .: "size" <*> o .: "warmup" <*> o .: "contacts"
 
 expectedNames :: [String]
 expectedNames =
@@ -245,7 +245,7 @@ spec = do
       (code, err) `shouldBe` (ExitSuccess, "")
       let text = lines (BC.unpack (BL.toStrict out))
           defined = [ takeWhile (/= ' ') l | l <- text, " :: Arr -> " `isInfixOf` l ]
-      defined `shouldBe` ["stepGravity", "stepCollide", "pairContacts", "stepSolve", "solvePrepare", "solveSweep", "stepIntegrate", "stepPolygonise"]
+      defined `shouldBe` ["stepCollide", "pairContacts", "stepPrepare", "stepSubsteps", "substepGravity", "warmStart", "mouseJoint", "solveSweep", "substepMove", "relaxSweep", "stepFinish", "restitution", "stepPolygonise"]
       (code', out', err') <- run ["dump-step", "bowl"]
       (code', out', "unknown space \"bowl\"; valid spaces: plane" `isInfixOf` err') `shouldBe` (ExitFailure 2, "", True)
     it "bench --json times a scene with the compiled step and with --generic" $
@@ -262,7 +262,7 @@ spec = do
       A.eitherDecode out `shouldBe` Right [BenchRounds 2, BenchRounds 2]
       (code0, _, err0) <- run ["bench", "--spaces", "torus", "--sizes", "10", "--rounds", "0"]
       (code0, "--rounds: must be at least 1" `isInfixOf` err0) `shouldBe` (ExitFailure 2, True)
-    it "bench --iterations K --slop-per-size F times the scenes with those contact settings, and says so" $ do
+    it "bench --substeps N --iterations K --slop F times the scenes with those contact settings, and says so" $ do
       let timed extra = do
             (code, out, err) <- run (["bench", "--spaces", "sphere", "--sizes", "100", "--settle", "150", "--warmup", "40", "--steps", "3", "--rounds", "1", "--json"] ++ extra)
             (code, err) `shouldSatisfy` ((== ExitSuccess) . fst)
@@ -270,16 +270,17 @@ spec = do
               Right [r] -> pure (r :: BenchContacts)
               other -> fail ("bench " ++ unwords extra ++ ": " ++ show other)
       plain <- timed []
-      (bcIterations plain, bcSlop plain, bcWarmup plain) `shouldBe` (8, 0.002, 40)
-      firm <- timed ["--iterations", "3", "--slop-per-size", "0.25"]
-      (bcIterations firm, bcSize firm) `shouldBe` (3, bcSize plain)
-      bcSlop firm `shouldSatisfy` (\s -> abs (s - 0.25 * bcSize plain) < 1e-12)
+      (bcSubsteps plain, bcIterations plain, bcSlop plain, bcWarmup plain) `shouldBe` (4, 1, 0.001, 40)
+      firm <- timed ["--substeps", "2", "--iterations", "3", "--slop", "0.25"]
+      (bcSubsteps firm, bcIterations firm, bcSize firm) `shouldBe` (2, 3, bcSize plain)
+      bcSlop firm `shouldBe` 0.25
       -- the settings reach the timed world: the same settled pile, warmed up
       -- under them, has other contacts
       bcRows firm `shouldSatisfy` (/= bcRows plain)
       forM_ [ (["--iterations", "0"], "--iterations: must be at least 1")
-            , (["--slop-per-size", "-0.5"], "--slop-per-size: must be a finite number, not negative")
-            , (["--slop-per-size", "Infinity"], "--slop-per-size: must be a finite number, not negative") ] $ \(extra, message) -> do
+            , (["--substeps", "0"], "--substeps: must be at least 1")
+            , (["--slop", "-0.5"], "--slop: must be a finite number, not negative")
+            , (["--slop", "Infinity"], "--slop: must be a finite number, not negative") ] $ \(extra, message) -> do
         (code, _, err) <- run (["bench", "--spaces", "torus", "--sizes", "10"] ++ extra)
         (code, message `isInfixOf` err) `shouldBe` (ExitFailure 2, True)
       withSystemTempDirectory "manifold-scenes" $ \dir -> do

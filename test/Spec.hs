@@ -12,6 +12,7 @@ import qualified FlatSpec
 import qualified ImpSpec
 import qualified PhysicsSpec
 import qualified ReadmeExampleSpec
+import qualified SolverSpec
 import qualified StageSpec
 import qualified SurfaceSpec
 
@@ -27,6 +28,7 @@ main = do
     describe "Manifold.Stage" StageSpec.spec
     describe "Manifold.Stage.Imp" ImpSpec.spec
     describe "Physics" PhysicsSpec.spec
+    describe "Solver" SolverSpec.spec
     FlatSpec.spec
     ReadmeExampleSpec.spec
     -- the allocation guards (alone: cabal test --test-options='-m performance')

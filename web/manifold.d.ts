@@ -57,9 +57,14 @@ declare namespace Manifold {
     space: string;
     dt?: number;
     gravity?: boolean;
+    substeps?: number;
     iterations?: number;
     friction?: number;
     restitution?: number;
+    contactHertz?: number;
+    dampingRatio?: number;
+    pushout?: number;
+    slop?: number;
     bodies?: SceneBody[];
   }
   /** A scene as the page saves it (scene(), Save scene): every key. */
@@ -67,9 +72,14 @@ declare namespace Manifold {
     space: string;
     dt: number;
     gravity: boolean;
+    substeps: number;
     iterations: number;
     friction: number;
     restitution: number;
+    contactHertz: number;
+    dampingRatio: number;
+    pushout: number;
+    slop: number;
     bodies: Body[];
   }
 
@@ -93,6 +103,22 @@ declare namespace Manifold {
     atMost?: number;
     whole?: boolean;
     high?: string;
+    /** the page's control for the key, when it offers one (in sceneKeys' order) */
+    control?: SceneControl;
+  }
+  /**
+   * How the page offers a scene key (Lib/Manifold/Params.hs, Control): a
+   * checkbox for a switch, a slider from lo to hi by step for a number. The
+   * slider's extent is only the slider's: setSimulation and a scene take
+   * what the key's range takes.
+   */
+  interface SceneControl {
+    label: string;
+    /** the control's tooltip */
+    help: string;
+    lo?: number;
+    hi?: number;
+    step?: number;
   }
   /** How a space is a quotient of its surface: its images are Space.images. */
   type Quotient = "none" | "antipodal" | "translations" | "glide";
@@ -156,14 +182,17 @@ declare namespace Manifold {
     | "lastAdded" | "picked" | "pickedSign" | "placementAngle";
   /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
   type ParamName =
-    | "dt" | "gravityOn" | "iterations" | "friction" | "restitution" | "baumgarte" | "slop" | "bounceThreshold"
-    | "warmStart" | "maxCorrection" | "polygonStep";
+    | "dt" | "gravityOn" | "substeps" | "iterations" | "friction" | "restitution" | "contactHertz" | "dampingRatio"
+    | "pushout" | "slop" | "speculative" | "bounceThreshold" | "warmStart" | "polygonStep";
   /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
-  type SlotName = "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin";
+  type SlotName =
+    | "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin"
+    | "movedX" | "movedY" | "movedZ" | "turned";
   type ContactField =
     | "cA" | "cB" | "cOwner" | "cKey" | "jaX" | "jaY" | "jaZ" | "jaW" | "jbX" | "jbY" | "jbZ" | "jbW"
     | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"
-    | "cBias" | "impulseN" | "impulseT" | "cSelfScale" | "pointX" | "pointY" | "pointZ";
+    | "impulseN" | "impulseT" | "cSelfScale" | "pointX" | "pointY" | "pointZ"
+    | "cPenetration" | "cBiasRate" | "cMassScale" | "cImpulseScale" | "cApproach" | "cTotalImpulse";
   type PrevField = "prevOwner" | "prevKey" | "prevNormal" | "prevFriction";
   type MouseField =
     | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
@@ -181,6 +210,8 @@ declare namespace Manifold {
     /** a body's polygon: the centre, then `steps` geodesic steps along each of `directions` directions */
     directions: number;
     steps: number;
+    /** the most bodies a world holds (its arrays grow to this by doubling) */
+    maxBodies: number;
     verticesPerBody: number;
     contactStride: number;
     contactsPerBody: number;
@@ -298,24 +329,44 @@ declare namespace Manifold {
     bodyDetail: BodyDetail;
     bodyForms: BodyForms;
   }
-  /** The clock and the engine parameters the controls show (friction and restitution are null without a world). */
+  /**
+   * The clock and the engine parameters the page offers controls for: the
+   * scene keys with a control (Manifold.sceneKeys), in their order; the
+   * numbers are null without a world.
+   */
   interface Simulation {
     paused: boolean;
     timeScale: number;
     gravity: boolean;
+    substeps: number | null;
     friction: number | null;
     restitution: number | null;
+    contactHertz: number | null;
+    dampingRatio: number | null;
+    pushout: number | null;
   }
-  /** What setSimulation takes: any subset. */
+  /**
+   * What setSimulation takes: any subset. An engine parameter takes what its
+   * scene key's range takes (Manifold.sceneKeys; a bad one throws the key's
+   * message, "friction must not be negative"), not only its slider's extent.
+   */
   interface SimulationChange {
     paused?: boolean;
     /** 0 … 10 */
     timeScale?: number;
     gravity?: boolean;
-    /** 0 … 10 */
+    /** a whole number from 1 to 64 */
+    substeps?: number;
+    /** 0 or above */
     friction?: number;
     /** 0 … 1 */
     restitution?: number;
+    /** above 0 */
+    contactHertz?: number;
+    /** 0 or above */
+    dampingRatio?: number;
+    /** above 0 */
+    pushout?: number;
   }
   type Pane = "torus-embedded" | "torus-flat" | "square-embedded" | "square-flat";
   interface ComparisonState {
@@ -363,7 +414,7 @@ declare namespace Manifold {
     addBody(spec: SceneBody): number;
     /** removes every body */
     clear(): void;
-    /** the space's default scene again, cut or filled to n bodies (0 … 1000); the count */
+    /** the space's default scene again, cut or filled to n bodies (0 … the engine's maxBodies; a notice when fewer fit); the count */
     resetScene(n?: number | null): number;
     /** n physics steps now (default 1); the body count */
     step(n?: number): number;

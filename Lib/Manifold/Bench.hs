@@ -40,8 +40,9 @@ data BenchResult = BenchResult
   , brP90Ms :: Double -- ^ the 90th percentile
   , brSteps :: Int -- ^ steps timed
   , brPhases :: [(String, Double)] -- ^ median ms of each phase of the step
-  , brIterations :: Int -- ^ the solver's iterations while timed
-  , brSlop :: Double -- ^ the contacts' slop while timed
+  , brSubsteps :: Int -- ^ the solver's sub-steps while timed
+  , brIterations :: Int -- ^ the solver's iterations (a sub-step) while timed
+  , brSlop :: Double -- ^ the contacts' slop (a fraction of the body size) while timed
   } deriving Show
 
 -- | Contact settings a run may put in place of a scene's, from the warm-up
@@ -49,17 +50,18 @@ data BenchResult = BenchResult
 -- pile needs a few hundred steps to settle under new settings, so such a
 -- run wants a long warm-up).
 data ContactSettings = ContactSettings
-  { csIterations :: Maybe Int -- ^ solver iterations instead of the scene's
-  , csSlopPerSize :: Maybe Double -- ^ the slop as this fraction of the scene's body size, instead of the engine's absolute one
+  { csSubsteps :: Maybe Int -- ^ solver sub-steps instead of the scene's
+  , csIterations :: Maybe Int -- ^ solver iterations a sub-step instead of the scene's
+  , csSlop :: Maybe Double -- ^ the slop (a fraction of the body size) instead of the engine's
   } deriving Show
 
 -- | The engine's parameters for a scene under these settings.
 sceneSettings :: ContactSettings -> Scene -> Params
 sceneSettings cs scene =
   let p = sceneParams scene
-      size = maybe 0 bsSize (listToMaybe (sceneBodies scene))
-  in p { pIterations = fromMaybe (pIterations p) (csIterations cs)
-       , pSlop = maybe (pSlop p) (* size) (csSlopPerSize cs) }
+  in p { pSubsteps = fromMaybe (pSubsteps p) (csSubsteps cs)
+       , pIterations = fromMaybe (pIterations p) (csIterations cs)
+       , pSlop = fromMaybe (pSlop p) (csSlop cs) }
 
 -- | Plane, sphere, torus, trumpet, projective plane and a boundary space.
 benchSpaces :: [Space]
@@ -200,5 +202,5 @@ runBench progress generic settings warmup steps scene = do
       quantile xs x = let sorted = sort xs in sorted !! min (length sorted - 1) (floor (x * fromIntegral (length sorted)))
       q = quantile times
       phaseMedians = zip (map fst phases) [quantile ts 0.5 | ts <- transpose phaseTimes]
-  pure (BenchResult (spaceName sp) placed size contacts (q 0.5) (q 0.1) (q 0.9) steps phaseMedians (pIterations params) (pSlop params))
+  pure (BenchResult (spaceName sp) placed size contacts (q 0.5) (q 0.1) (q 0.9) steps phaseMedians (pSubsteps params) (pIterations params) (pSlop params))
   where roundTo k x = fromIntegral (round (x * 10 ^ (k :: Int)) :: Integer) / 10 ^ k :: Double

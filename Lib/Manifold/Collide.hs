@@ -306,13 +306,15 @@ pairContactsVia :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar
 pairContactsVia l sec w keyBase x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
   backShift <- share3 (negated (signs * shift))
-  (deepXY, normalXY, edgeXY) <- deepestInside l sec w 0 x y signs shift
-  (deepYX, normalYX, edgeYX) <- deepestInside l sec w nd y x signs backShift
-  yInX <- share (deepYX - 1.1 * deepXY)
+  margin <- speculativeMargin w x y
+  (deepXY, normalXY, edgeXY) <- deepestInside l sec w margin 0 x y signs shift
+  (deepYX, normalYX, edgeYX) <- deepestInside l sec w margin nd y x signs backShift
+  -- (depths counted from −margin, so that a way with no vertex near is 0)
+  yInX <- share ((deepYX + margin) - 1.1 * (deepXY + margin))
   let pick a b = select yInX b a
       pick3 (V3 a b c) (V3 u v s) = V3 (pick a u) (pick b v) (pick c s)
   best <- share (maxF deepXY deepYX)
-  whenPositive best $ do
+  whenPositive (best + margin) $ do
     -- the mover's vertices are inside the reference body
     mover <- share (pick (toScalar x) (toScalar y))
     reference <- share (pick (toScalar y) (toScalar x))
@@ -331,9 +333,17 @@ pairContactsVia l sec w keyBase x y signs shift = do
     -- turned round, and its depth is the deepest vertex's
     moverCentre <- read3 (wPos w) mv
     facing <- share ((image moverCentre ^-^ bfCentre fr) `dot` edgeNormal)
-    m0 <- share3 (fmap (\v -> select facing v (negate v)) edgeNormal)
+    -- The edge's normal lies in the reference body's tangent plane; the
+    -- push is along it as the tangent plane midway between the bodies
+    -- sees it, so that each body's row (the push projected to its own
+    -- plane) is the other's mirror: the pair's pushes then cancel on the
+    -- surface as they do on a plane (along the reference body's plane, on
+    -- a sphere they would drive the pair sideways, from nothing).
+    moverNormal <- read3 (wNormal w) mv
+    mid <- share3 (safeNormalize (linear moverNormal ^+^ bfNormal fr))
+    m0 <- share3 (safeNormalize (tangentProjection mid (fmap (\v -> select facing v (negate v)) edgeNormal)))
     t <- share3 (bfNormal fr `cross` m0)
-    (dLo, dHi) <- extremesAlong nd $ \d -> do
+    (dLo, dHi) <- extremesAlong margin nd $ \d -> do
       q <- outlineVertex l w mv d
       depth <- readArray (wProbe w) (toIndex moverProbe + d)
       pure (depth, (image q ^-^ bfCentre fr) `dot` t)
@@ -344,21 +354,35 @@ pairContactsVia l sec w keyBase x y signs shift = do
     emitAt 0 dLo
     whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
+-- | How far apart two bodies' outlines may be and still make contact rows
+-- (speculative ones, which keep the bodies from closing the gap faster than
+-- the sub-steps resolve): the 'Speculative' parameter times the smaller
+-- body's size. A box tilting on a box keeps its lifted corner as a contact
+-- point so, and the pair's rows exist before the bodies touch.
+speculativeMargin :: Imp m => WorldArrays (Array m) -> Index m -> Index m -> m (Scalar m)
+{-# INLINE speculativeMargin #-}
+speculativeMargin w x y = do
+  f <- readParam w Speculative
+  sx <- readSlot w x Size
+  sy <- readSlot w y Size
+  share (f * minF sx sy)
+
 -- | Of body @x@'s outline vertices, mapped by @p ↦ signs·p + shift@, the
--- one deepest inside body @y@: its depth (0 when none is inside), and the
+-- one deepest inside body @y@ or nearest to it within @margin@: its depth
+-- (negative outside; @−margin@ when none is so near), and the
 -- outward normal and a vertex of the edge of y it lies behind. Each
 -- vertex's depth (−1 when it is not near y) is left in the probe array from
 -- @slot@ on, so that the pair's contact points are chosen without testing
 -- the vertices again.
-deepestInside :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Index m -> Index m -> Index m
+deepestInside :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> Index m
               -> V3 (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
 {-# INLINE deepestInside #-}
-deepestInside l sec w slot x y signs shift = do
+deepestInside l sec w margin slot x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
   fy <- bodyFrame w y
   turn <- bodyTurn w y
-  deepest <- newRef 0
+  deepest <- newRef (negate margin)
   mx <- newRef 0
   my <- newRef 0
   mz <- newRef 0
@@ -380,19 +404,19 @@ deepestInside l sec w slot x y signs shift = do
        <*> (V3 <$> readRef mx <*> readRef my <*> readRef mz)
        <*> (V3 <$> readRef ox <*> readRef oy <*> readRef oz)
 
--- | Of the outline vertices @d@ whose probe gives a positive depth, the two
--- with the least and the greatest position along the contact line (−1 when
--- none): a contact manifold's two points.
-extremesAlong :: Imp m => Index m -> (Index m -> m (Scalar m, Scalar m)) -> m (Scalar m, Scalar m)
+-- | Of the outline vertices @d@ whose probe gives a depth above @−margin@,
+-- the two with the least and the greatest position along the contact line
+-- (−1 when none): a contact manifold's two points.
+extremesAlong :: Imp m => Scalar m -> Index m -> (Index m -> m (Scalar m, Scalar m)) -> m (Scalar m, Scalar m)
 {-# INLINE extremesAlong #-}
-extremesAlong nd probe = do
+extremesAlong margin nd probe = do
   lo <- newRef 1e300
   hi <- newRef (-1e300)
   loD <- newRef (-1)
   hiD <- newRef (-1)
   forEach nd $ \d -> do
     (depth, position) <- probe d
-    whenPositive depth $ do
+    whenPositive (depth + margin) $ do
       s <- share position
       l0 <- readRef lo
       whenPositive (l0 - s) (writeRef lo s >> writeRef loD (toScalar d))
@@ -409,20 +433,20 @@ boundaryContacts sp l w i = case spaceBoundary sp of
     let nd = fromIntegral (polyDirections (polygon l))
         key = fromIntegral (fromEnum BoundaryKey) * fromIntegral keysPerGroup
     n <- read3 (wNormal w) i
-    deepest <- newRef 0
+    margin <- speculativeMargin w i i
+    deepest <- newRef (negate margin)
     dDeep <- newRef (-1)
     forEach nd $ \d -> do
       q <- outlineVertex l w i d
       bv <- share (b q)
       best <- readRef deepest
       whenPositive (negate bv - best) (writeRef deepest (negate bv) >> writeRef dDeep (toScalar d))
-    best <- readRef deepest
-    whenPositive best $ do
-      dd <- readRef dDeep
+    dd <- readRef dDeep
+    whenPositive (dd + 0.5) $ do
       q0 <- outlineVertex l w i (toIndex dd)
       dir0 <- share3 (safeNormalize (gradFn bf q0))
       t <- share3 (n `cross` dir0)
-      (dLo, dHi) <- extremesAlong nd $ \d -> do
+      (dLo, dHi) <- extremesAlong margin nd $ \d -> do
         q <- outlineVertex l w i d
         pure (negate (b q), q `dot` t)
       let emitAt slot dv = do

@@ -14,6 +14,7 @@ module Manifold.Params
     -- * Scene keys
   , SceneKey (..)
   , Range (..)
+  , Control (..)
   , sceneKeys
   , outOfRange
   , rangeDescription
@@ -27,37 +28,48 @@ import Manifold.World (Param (..), WorldArrays (..))
 data Params = Params
   { pDt :: Double
   , pGravity :: Bool
-  , pIterations :: Int
+  , pSubsteps :: Int -- ^ sub-steps a step (each: gravity, warm start, solve, move, relax)
+  , pIterations :: Int -- ^ solves with the bias in each sub-step
   , pFriction :: Double
   , pRestitution :: Double
-  , pBaumgarte :: Double -- ^ fraction of the depth removed per step (paper: 0.1)
-  , pSlop :: Double -- ^ depth allowed without correction
+  , pContactHertz :: Double -- ^ a contact's stiffness, as a spring's frequency (twice this against static bodies and walls)
+  , pDampingRatio :: Double -- ^ a contact spring's damping ratio
+  , pPushout :: Double -- ^ the fastest a contact pushes overlapping bodies apart
+  , pSlop :: Double -- ^ the overlap left alone, as a fraction of the smaller body's size
+  , pSpeculative :: Double -- ^ how far apart outlines make contact rows, as a fraction of the smaller body's size
   , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
   , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
-  , pMaxCorrection :: Double -- ^ the fastest a contact pushes bodies out of an overlap
   , pPolygonStep :: Double -- ^ bodies up to this size walk their outline in one geodesic step (0: never)
   } deriving (Show, Eq)
 
--- | What a world starts with and a scene gets for a key it leaves out.
+-- | What a world starts with and a scene gets for a key it leaves out: four
+-- sub-steps of one solve each, and contacts as springs of 60 Hz with a
+-- damping ratio of 10: Box2D v3's 30 Hz and 10 made as stiff, for a body's
+-- size, as they are in Box2D's units (a spring's sag under weight, g/ω²,
+-- against 1 m boxes under 10 m/s² there, 0.03–0.2 here under 4; see
+-- docs/decisions/soft-step.md).
 defaultParams :: Params
 defaultParams = Params
-  { pDt = 0.01, pGravity = True, pIterations = 8, pFriction = 0.4, pRestitution = 0
-  , pBaumgarte = 0.1, pSlop = 0.002, pBounceThreshold = 0.5, pWarmStart = True
-  , pMaxCorrection = 0.5, pPolygonStep = 0.05 }
+  { pDt = 0.01, pGravity = True, pSubsteps = 4, pIterations = 1, pFriction = 0.4, pRestitution = 0
+  , pContactHertz = 60, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
+  , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05 }
 
 -- | A parameter as the world's parameter array holds it (a switch is 1 or 0).
 paramValue :: Params -> Param -> Double
 paramValue p = \case
   Dt -> pDt p
   GravityOn -> switch (pGravity p)
+  Substeps -> fromIntegral (pSubsteps p)
   Iterations -> fromIntegral (pIterations p)
   Friction -> pFriction p
   Restitution -> pRestitution p
-  Baumgarte -> pBaumgarte p
+  ContactHertz -> pContactHertz p
+  DampingRatio -> pDampingRatio p
+  Pushout -> pPushout p
   Slop -> pSlop p
+  Speculative -> pSpeculative p
   BounceThreshold -> pBounceThreshold p
   WarmStart -> switch (pWarmStart p)
-  MaxCorrection -> pMaxCorrection p
   PolygonStep -> pPolygonStep p
   where switch b = if b then 1 else 0
 
@@ -67,14 +79,17 @@ setParam :: Param -> Double -> Params -> Params
 setParam k x p = case k of
   Dt -> p { pDt = x }
   GravityOn -> p { pGravity = x > 0 }
+  Substeps -> p { pSubsteps = round x }
   Iterations -> p { pIterations = round x }
   Friction -> p { pFriction = x }
   Restitution -> p { pRestitution = x }
-  Baumgarte -> p { pBaumgarte = x }
+  ContactHertz -> p { pContactHertz = x }
+  DampingRatio -> p { pDampingRatio = x }
+  Pushout -> p { pPushout = x }
   Slop -> p { pSlop = x }
+  Speculative -> p { pSpeculative = x }
   BounceThreshold -> p { pBounceThreshold = x }
   WarmStart -> p { pWarmStart = x > 0 }
-  MaxCorrection -> p { pMaxCorrection = x }
   PolygonStep -> p { pPolygonStep = x }
 
 -- | Set a world's parameter array.
@@ -88,6 +103,7 @@ data SceneKey = SceneKey
   { keyName :: String
   , keyParam :: Param
   , keyRange :: Range
+  , keyControl :: Maybe Control -- ^ the page's control for it, if the page offers one
   } deriving (Show, Eq)
 
 -- | The values a scene key takes.
@@ -99,16 +115,34 @@ data Range
   | Count Int -- ^ a whole number from 1 to this
   deriving (Show, Eq)
 
--- | The parameters a scene sets, in the order a scene is written; a key
--- left out keeps its 'defaultParams' value.
+-- | How the page offers a key: a checkbox for a switch, a slider for a
+-- number (its ends and step; the key's 'Range' still decides what
+-- @setSimulation@ and a scene may set).
+data Control = Control
+  { controlLabel :: String -- ^ what the control is called
+  , controlHelp :: String -- ^ what it does (the control's tooltip)
+  , controlSlider :: Maybe (Double, Double, Double) -- ^ a number's slider: from, to, step
+  } deriving (Show, Eq)
+
+-- | The parameters a scene sets, in the order a scene is written (and the
+-- page shows their controls); a key left out keeps its 'defaultParams'
+-- value.
 sceneKeys :: [SceneKey]
 sceneKeys =
-  [ SceneKey "dt" Dt Positive
-  , SceneKey "gravity" GravityOn Switch
-  , SceneKey "iterations" Iterations (Count 1000)
-  , SceneKey "friction" Friction NonNegative
-  , SceneKey "restitution" Restitution Fraction
+  [ SceneKey "dt" Dt Positive Nothing
+  , SceneKey "gravity" GravityOn Switch (Just (Control "Gravity" "the space's gravity, projected onto the surface" Nothing))
+  , SceneKey "substeps" Substeps (Count 64)
+      (slider "Sub-steps" "sub-steps a step, each moving the bodies once: more hold taller stacks, at their cost" 1 16 1)
+  , SceneKey "iterations" Iterations (Count 1000) Nothing
+  , SceneKey "friction" Friction NonNegative (slider "Friction" "Coulomb friction coefficient of contacts" 0 1 0.05)
+  , SceneKey "restitution" Restitution Fraction (slider "Restitution" "bounciness of contacts (0: none, 1: elastic)" 0 1 0.05)
+  , SceneKey "contactHertz" ContactHertz Positive
+      (slider "Contact Hz" "how stiff a contact is, as a spring's frequency (twice this against static bodies and walls)" 1 120 1)
+  , SceneKey "dampingRatio" DampingRatio NonNegative (slider "Damping" "a contact spring's damping ratio" 0 20 0.5)
+  , SceneKey "pushout" Pushout Positive (slider "Push-out" "the fastest a contact pushes overlapping bodies apart" 0.05 5 0.05)
+  , SceneKey "slop" Slop Fraction Nothing
   ]
+  where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
 
 -- | Why a (finite) number is not in a range, or 'Nothing' when it is; a
 -- switch is a JSON boolean, checked as such.

@@ -1,20 +1,43 @@
 {-# OPTIONS_GHC -fllvm #-}
 {-# LANGUAGE FlexibleContexts #-}
+{-# LANGUAGE LambdaCase #-}
 -- Built with LLVM (as the compiled steps are): the generic native step's
 -- solve is a tenth faster so (manifold bench --generic, settled piles).
 
--- | Sequential impulses (paper §2.5; Catto's Box2D solver): every contact is
--- a normal row (relative normal velocity ≥ 0, Baumgarte bias @β·depth/dt@,
--- restitution, non-negative clamp) and a Coulomb friction row (clamped by
--- @μ·λn@), warm started from the last step's impulses of the same contact.
--- A body's velocity lives in its tangent plane and its angular velocity is
--- about the surface normal, so a row's Jacobian for a body is the contact
--- direction projected to the body's tangent plane and @(r × n)·normal@.
--- The mouse joint is a soft constraint (stiffness and damping as a spring's
--- frequency and damping ratio, a force limit) pulling a point of a body
--- towards a target.
+-- | The soft step (paper §2.5, done as Box2D v3 and Rapier do it): the
+-- contacts are found once a step; then each of the step's sub-steps applies
+-- gravity, warm starts every contact row with its impulses, solves the rows
+-- with a soft bias that pushes overlapping bodies apart, moves the bodies
+-- along the surface, and relaxes (solves the rows again without the bias,
+-- so that the push-out leaves no velocity behind). Restitution is applied
+-- once, after the sub-steps.
+--
+-- Every contact is a normal row (relative normal velocity ≥ 0, clamped
+-- non-negative) and a Coulomb friction row (clamped by @μ·λn@). A body's
+-- velocity lives in its tangent plane and its angular velocity is about the
+-- surface normal, so a row's Jacobian for a body is the contact direction
+-- projected to the body's tangent plane and @(r × n)·normal@. Across the
+-- sub-steps a contact's depth is updated from its bodies' moves (their
+-- velocities times time, 'MovedX' … 'Turned', along its Jacobian) without
+-- finding the contacts again.
+--
+-- Softness (Catto, "Solver2D"): a contact is a spring of frequency
+-- 'ContactHertz' and damping ratio 'DampingRatio' (twice the frequency
+-- against a static body or a wall), with @ω = 2πf@, @a₁ = 2ζ + hω@,
+-- @a₂ = hω·a₁@, @a₃ = 1/(1 + a₂)@: the bias is @ω/a₁@ times the depth
+-- beyond the slop (at most 'Pushout'), and an impulse is scaled by @a₂a₃@
+-- with @a₃@ of the accumulated impulse taken back. A depth short of the
+-- slop lets the bodies approach by what is left of it within the sub-step.
+-- The slop is 'Slop' times the smaller body's size, so that small bodies
+-- overlap as little, for their size, as large ones.
+--
+-- The mouse joint is a soft constraint too (its own frequency and damping
+-- ratio, a force limit), pulling a point of a body towards a target, solved
+-- with the contacts in every sub-step.
 module Manifold.Solver
-  ( solve
+  ( prepareContacts
+  , substeps
+  , finishStep
   , grabPoint
   ) where
 
@@ -34,6 +57,12 @@ data Vel s = Vel !(V3 s) !s
 readVel :: Imp m => WorldArrays (Array m) -> Index m -> m (Vel (Scalar m))
 {-# INLINE readVel #-}
 readVel w i = Vel <$> read3 (wVel w) i <*> readSlot w i Omega
+
+-- | How far a body has moved and turned in this step's sub-steps so far.
+readMoved :: Imp m => WorldArrays (Array m) -> Index m -> m (Vel (Scalar m))
+{-# INLINE readMoved #-}
+readMoved w i = Vel <$> (V3 <$> readSlot w i MovedX <*> readSlot w i MovedY <*> readSlot w i MovedZ)
+                    <*> readSlot w i Turned
 
 -- | Push body @i@ with impulse @lambda@ along a Jacobian (linear part,
 -- angular part).
@@ -59,7 +88,8 @@ readRow w c linA linB = do
   bw <- readContact w c (succ (succ (succ linB)))
   pure (Row a aw b bw)
 
--- | How fast body a's, and body b's, side of a row moves.
+-- | How fast body a's, and body b's, side of a row moves (or, given how far
+-- the body moved, how far it went along the row).
 sideA, sideB :: Num s => Row s -> Vel s -> s
 {-# INLINE sideA #-}
 {-# INLINE sideB #-}
@@ -97,6 +127,20 @@ effectiveMass w a b r = do
   k <- share (ima * quadrance (rowA r) + iia * rowAW r * rowAW r + kB)
   share (select k (recip k) 0)
 
+-- | A soft constraint's coefficients for a spring of frequency @hz@ and
+-- damping ratio @zeta@ over a sub-step of length @h@: the bias rate, the
+-- mass scale and the impulse scale (the module's first comment).
+data Softness s = Softness { biasRate :: !s, massScale :: !s, impulseScale :: !s }
+
+softness :: Imp m => Scalar m -> Scalar m -> Scalar m -> m (Softness (Scalar m))
+{-# INLINE softness #-}
+softness hz zeta h = do
+  omega <- share (2 * pi * hz)
+  a1 <- share (2 * zeta + h * omega)
+  a2 <- share (h * omega * a1)
+  a3 <- share (recip (1 + a2))
+  Softness <$> share (omega / a1) <*> share (a2 * a3) <*> pure a3
+
 -- | Where a grabbed body's grabbed point is now: the geodesic from its
 -- centre in the grabbed direction, as long as the grabbed distance.
 grabPoint :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m (V3 (Scalar m))
@@ -116,9 +160,23 @@ grabPoint sp w g = do
         go (k - 1 :: Int) (q', d')
   fst <$> go steps (bfCentre f, dir)
 
--- | The mouse joint's rows along the body's frame vectors.
+
+-- | The mouse joint's rows along the body's frame vectors: with @warm@,
+-- its impulses applied again (the warm start of a sub-step); otherwise one
+-- soft solve of each row.
 mouseRows :: Imp m => Space -> WorldArrays (Array m) -> Bool -> m ()
-mouseRows sp w warm = do
+-- A subroutine of its own: inlined at its three calls a sub-step, with the
+-- grabbed point's geodesic walk over the cube's field, it made the
+-- sub-steps a function V8 would not optimise (224 bytes a step on node's
+-- heap, the allocation guard).
+mouseRows sp w warm =
+  subroutine "mouseJoint" [if warm then 1 else 0] $ \case
+    [warmS] -> mouseJoint sp w warmS
+    _ -> error "mouseJoint: one argument"
+
+-- | 'mouseRows' with the warm start as a number (above 0: warm start).
+mouseJoint :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
+mouseJoint sp w warm = do
   active <- readMouse w MActive
   whenPositive active $ do
     gS <- readMouse w MBody
@@ -126,7 +184,7 @@ mouseRows sp w warm = do
     im <- readSlot w g InvMass
     whenPositive im $ do
       ii <- readSlot w g InvInertia
-      dt <- readParam w Dt
+      h <- substepLength w
       f <- bodyFrame w g
       grab <- grabPoint sp w g
       target0 <- V3 <$> readMouse w MTargetX <*> readMouse w MTargetY <*> readMouse w MTargetZ
@@ -135,25 +193,19 @@ mouseRows sp w warm = do
       hz <- readMouse w MFrequency
       zeta <- readMouse w MDamping
       maxForce <- readMouse w MMaxForce
-      let mass = recip im
-          omega0 = 2 * pi * hz
-          k = mass * omega0 * omega0
-          d = 2 * mass * zeta * omega0
-      gamma <- share (recip (dt * (d + dt * k)))
-      beta <- share (dt * k * gamma)
+      soft <- softness hz zeta h
       rw <- share3 (grab ^-^ bfCentre f)
       err <- share3 (grab ^-^ target)
       let row e field = do
             let jw = (rw `cross` e) `dot` bfNormal f
             acc <- readMouse w field
-            if warm
-              then push w g acc e jw
-              else do
+            ifPositive warm (push w g acc e jw) $ do
                 Vel v o <- readVel w g
                 let cdot = (e `dot` v) + jw * o
-                    kk = im * quadrance e + ii * jw * jw + gamma
-                    lambda = negate (cdot + beta * (err `dot` e) + gamma * acc) / kk
-                    limit = maxForce * dt
+                    k = im * quadrance e + ii * jw * jw
+                    lambda = negate (massScale soft * (cdot + biasRate soft * (err `dot` e)) / k)
+                             - impulseScale soft * acc
+                    limit = maxForce * h
                     acc' = finiteOr0 (clampF (negate limit) limit (acc + lambda))
                 accS <- share acc'
                 writeMouse w field accS
@@ -161,37 +213,25 @@ mouseRows sp w warm = do
       row (bfU f) MImpulseU
       row (bfW f) MImpulseW
 
--- | Solve this step's contacts and the mouse joint, and keep the impulses
--- for the next step.
-solve :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
-{-# SPECIALIZE solve :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
-solve sp _ w = do
-  iterations <- readParam w Iterations
-  -- The preparation and each sweep over the rows are printed as functions
-  -- of their own: V8 optimised the whole solver as one function only
-  -- sometimes. In a page that had run a torus of 3000 bodies, Chromium's
-  -- optimising compiler gave up on the rectangle's solver as "too big to be
-  -- optimized" and never tried again, and the page's solve then took 100 ms
-  -- a step instead of 5 (node bench/browser.mjs, the rectangle after the torus).
-  subroutine "solvePrepare" [] $ \_ -> prepareRows w
-  mouseRows sp w True
-  forEach (toIndex iterations) $ \_ -> do
-    subroutine "solveSweep" [] $ \_ -> sweepRows w
-    mouseRows sp w False
-  rememberImpulses w
-
--- | Each contact row's masses and bias, and its impulses warm started from
--- the last step's row of the same key, applied.
-prepareRows :: Imp m => WorldArrays (Array m) -> m ()
-{-# INLINE prepareRows #-}
-prepareRows w = do
-  dt <- readParam w Dt
-  restitution <- readParam w Restitution
-  beta <- readParam w Baumgarte
+-- | Each contact row's masses, softness, depth beyond the slop and normal
+-- velocity, and its impulses warm started from the last step's row of the
+-- same key (applied by each sub-step's 'warmStart'); every body's moves
+-- since the contacts were found set to none.
+prepareContacts :: Imp m => WorldArrays (Array m) -> m ()
+{-# SPECIALIZE prepareContacts :: WorldArrays NativeArray -> Native () #-}
+prepareContacts w = do
+  h <- substepLength w
+  hz <- readParam w ContactHertz
+  zeta <- readParam w DampingRatio
   slop <- readParam w Slop
-  bounceThreshold <- readParam w BounceThreshold
-  warmStart <- readParam w WarmStart
-  maxCorrection <- readParam w MaxCorrection
+  warm <- readParam w WarmStart
+  -- no stiffer than a quarter of the sub-step rate (Box2D's limit: stiffer
+  -- springs are not resolved by the sub-steps and ring)
+  hzC <- share (minF hz (0.25 / h))
+  moving <- softness hzC zeta h
+  static <- softness (2 * hzC) zeta h
+  bodies <- readMeta w BodyCount
+  forEach (toIndex bodies) $ \i -> mapM_ (\s -> writeSlot w i s 0) [MovedX, MovedY, MovedZ, Turned]
   nc <- readMeta w ContactCount
   forEach (toIndex nc) $ \c -> do
     a <- toIndex <$> readContact w c CA
@@ -204,14 +244,21 @@ prepareRows w = do
     kt <- effectiveMass w a b tangent
     writeContact w c NormalMass kn
     writeContact w c TangentMass kt
+    -- against a wall, a static body or itself (b = -1) the stiffer spring
+    bIx <- share (maxF 0 b)
+    ima <- readSlot w a InvMass
+    imb <- readSlot w (toIndex bIx) InvMass
+    sizeA <- readSlot w a Size
+    sizeB <- readSlot w (toIndex bIx) Size
+    dynamicPair <- share (select (b + 0.5) (ima * imb) 0)
+    let pick field f = writeContact w c field (select dynamicPair (f moving) (f static))
+    pick CBiasRate biasRate
+    pick CMassScale massScale
+    pick CImpulseScale impulseScale
     depth <- readContact w c CDepth
-    scale <- readContact w c CSelfScale
-    vn <- rowVelocity w a b normal
-    -- the push out of an overlap is capped, so that a deep overlap found
-    -- late does not throw bodies apart (Box2D caps its correction likewise)
-    let push' = minF maxCorrection (scale * beta / dt * maxF 0 (depth - slop))
-        bounce = select (negate vn - bounceThreshold) (negate restitution * vn) 0
-    writeContact w c CBias (maxF push' bounce)
+    writeContact w c CPenetration (depth - slop * select (b + 0.5) (minF sizeA sizeB) sizeA)
+    rowVelocity w a b normal >>= writeContact w c CApproach
+    writeContact w c CTotalImpulse 0
     ln <- newRef 0
     lt <- newRef 0
     start <- readArray (wBodyPrev w) (2 * toIndex owner)
@@ -221,19 +268,60 @@ prepareRows w = do
       whenPositive (0.5 - abs (pk - key)) $ do
         readPrev w k PrevNormal >>= writeRef ln
         readPrev w k PrevFriction >>= writeRef lt
-    lnv <- (warmStart *) <$> readRef ln
-    ltv <- (warmStart *) <$> readRef lt
-    writeContact w c ImpulseN lnv
-    writeContact w c ImpulseT ltv
-    applyRow w a b normal lnv
-    applyRow w a b tangent ltv
+    readRef ln >>= writeContact w c ImpulseN . (warm *)
+    readRef lt >>= writeContact w c ImpulseT . (warm *)
 
--- | One sequential-impulse sweep over the contact rows: friction, then the
--- normal impulse, each clamped.
-sweepRows :: Imp m => WorldArrays (Array m) -> m ()
+-- | The step's sub-steps (their number is the 'Substeps' parameter), each:
+-- gravity, the warm start, 'Iterations' solves with the bias, the move
+-- along the surface, one relaxing solve without it.
+substeps :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE substeps :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
+substeps sp _ w = do
+  n <- readParam w Substeps
+  iterations <- readParam w Iterations
+  -- Each stage is printed as a function of its own: V8 optimised the
+  -- whole solver as one function only sometimes. In a page that had run a
+  -- torus of 3000 bodies, Chromium's optimising compiler gave up on the
+  -- rectangle's solver as "too big to be optimized" and never tried again,
+  -- and the page's solve then took 100 ms a step instead of 5 (node
+  -- bench/browser.mjs, the rectangle after the torus).
+  forEach (toIndex n) $ \_ -> do
+    subroutine "substepGravity" [] $ \_ -> substepLength w >>= applyGravity sp w
+    subroutine "warmStart" [] $ \_ -> warmStart w
+    mouseRows sp w True
+    forEach (toIndex iterations) $ \_ -> do
+      subroutine "solveSweep" [] $ \_ -> sweepRows True w
+      mouseRows sp w False
+    subroutine "substepMove" [] $ \_ -> substepLength w >>= integrate sp w
+    subroutine "relaxSweep" [] $ \_ -> sweepRows False w
+    mouseRows sp w False
+
+-- | Every contact's impulses applied again, as the sub-step starts.
+warmStart :: Imp m => WorldArrays (Array m) -> m ()
+{-# INLINE warmStart #-}
+warmStart w = do
+  nc <- readMeta w ContactCount
+  forEach (toIndex nc) $ \c -> do
+    a <- toIndex <$> readContact w c CA
+    b <- readContact w c CB
+    normal <- readRow w c JaX JbX
+    tangent <- readRow w c TaX TbX
+    ln <- readContact w c ImpulseN
+    lt <- readContact w c ImpulseT
+    applyRow w a b normal ln
+    applyRow w a b tangent lt
+    readContact w c CTotalImpulse >>= writeContact w c CTotalImpulse . (+ ln)
+
+-- | One sequential-impulse sweep over the contact rows: the normal impulse,
+-- then friction (bounded by the normal impulse just found), each clamped; with the bias (the solve) or without it
+-- (the relaxing solve).
+sweepRows :: Imp m => Bool -> WorldArrays (Array m) -> m ()
 {-# INLINE sweepRows #-}
-sweepRows w = do
+sweepRows useBias w = do
   mu <- readParam w Friction
+  pushout <- readParam w Pushout
+  h <- substepLength w
+  invH <- share (recip h)
   nc <- readMeta w ContactCount
   forEach (toIndex nc) $ \c -> do
     a <- toIndex <$> readContact w c CA
@@ -245,7 +333,7 @@ sweepRows w = do
     lt <- readContact w c ImpulseT
     kt <- readContact w c TangentMass
     kn <- readContact w c NormalMass
-    bias <- readContact w c CBias
+    penetration <- readContact w c CPenetration
     -- both bodies' velocities are read once and written once (a row
     -- without body b has zero Jacobians on its side: body 0 stands in);
     -- when a body meets its own image (a = b) each side's change is
@@ -275,20 +363,84 @@ sweepRows w = do
           ob' <- share (ob + dob + same * doa)
           pure (Vel va' oa', Vel vb' ob')
         {-# INLINE apply #-}
-    vt <- along tangent va0 vb0
-    let limit = mu * ln
-    lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
-    writeContact w c ImpulseT lt'
-    (va1, vb1) <- apply tangent (lt' - lt) va0 vb0
-    vn <- along normal va1 vb1
-    ln' <- share (finiteOr0 (maxF 0 (ln + scale * (bias - vn) * kn)))
+    -- the depth now: as found, less how far the bodies have since moved
+    -- apart along the normal row
+    movedA <- readMoved w a
+    movedB <- readMoved w bi
+    apart <- along normal movedA movedB
+    separation <- share (apart - penetration)
+    (bias, ms, is) <- if useBias
+      then do
+        biasRateC <- readContact w c CBiasRate
+        msC <- readContact w c CMassScale
+        isC <- readContact w c CImpulseScale
+        soft <- share (maxF (biasRateC * separation) (negate pushout))
+        -- A gap is a hard row, an overlap beyond the slop a soft one; in
+        -- between, over the slop's width, the row turns soft gradually.
+        -- (Switched at 0, as Box2D does, a resting contact, which sits at
+        -- 0, was kicked between the two by its last bits: the native and
+        -- the emitted step parted by 1e-4 within 60 steps of a pile.)
+        depth <- readContact w c CDepth
+        slopC <- share (depth - penetration)
+        softer <- share (clampF 0 1 (select slopC (negate separation / slopC) 1))
+        pure ( select separation (separation * invH) soft
+             , 1 - softer * (1 - msC)
+             , softer * isC )
+      else pure (select separation (separation * invH) 0, 1, 0)
+    vn <- along normal va0 vb0
+    ln' <- share (finiteOr0 (maxF 0 (ln + scale * (negate (kn * ms * (vn + bias)) - is * ln))))
     writeContact w c ImpulseN ln'
-    (Vel va2 oa2, Vel vb2 ob2) <- apply normal (ln' - ln) va1 vb1
+    readContact w c CTotalImpulse >>= writeContact w c CTotalImpulse . (+ (ln' - ln))
+    (va1, vb1) <- apply normal (ln' - ln) va0 vb0
+    vt <- along tangent va1 vb1
+    -- friction in the relaxing solve only (as Box2D v3 does now): the
+    -- biased solve's normal impulse still holds the push-out
+    let limit = mu * ln'
+    lt' <- if useBias then pure lt else share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
+    writeContact w c ImpulseT lt'
+    (Vel va2 oa2, Vel vb2 ob2) <- apply tangent (lt' - lt) va1 vb1
     write3 (wVel w) a va2
     writeSlot w a Omega oa2
     whenPositive hasB $ do
       write3 (wVel w) bi vb2
       writeSlot w bi Omega ob2
+
+-- | The end of the step's solve: restitution (once, for the contacts that
+-- approached faster than 'BounceThreshold' before the step and pushed),
+-- the impulses kept for the next step's warm start, every velocity back in
+-- its tangent plane ('tangentVelocities') and every body back into the
+-- fundamental domain.
+finishStep :: Imp m => Space -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE finishStep :: Space -> WorldArrays NativeArray -> Native () #-}
+finishStep sp w = do
+  restitution <- readParam w Restitution
+  whenPositive restitution $ subroutine "restitution" [] $ \_ -> restitute w
+  rememberImpulses w
+  tangentVelocities sp w
+  wrapIntoDomain sp w
+
+-- | The restitution impulses: a contact that approached at @v < -threshold@
+-- leaves at @−e·v@.
+restitute :: Imp m => WorldArrays (Array m) -> m ()
+{-# INLINE restitute #-}
+restitute w = do
+  e <- readParam w Restitution
+  threshold <- readParam w BounceThreshold
+  nc <- readMeta w ContactCount
+  forEach (toIndex nc) $ \c -> do
+    approach <- readContact w c CApproach
+    total <- readContact w c CTotalImpulse
+    whenPositive (minF (negate approach - threshold) total) $ do
+      a <- toIndex <$> readContact w c CA
+      b <- readContact w c CB
+      normal <- readRow w c JaX JbX
+      kn <- readContact w c NormalMass
+      scale <- readContact w c CSelfScale
+      ln <- readContact w c ImpulseN
+      vn <- rowVelocity w a b normal
+      ln' <- share (finiteOr0 (maxF 0 (ln - scale * kn * (vn + e * approach))))
+      writeContact w c ImpulseN ln'
+      applyRow w a b normal (ln' - ln)
 
 -- | The impulses, grouped by owner, for the next step's warm start.
 rememberImpulses :: Imp m => WorldArrays (Array m) -> m ()

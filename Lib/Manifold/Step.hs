@@ -1,6 +1,7 @@
 {-# LANGUAGE FlexibleContexts #-}
--- | One step of the world (paper §2.4–2.6): gravity, contacts, impulses,
--- motion, polygons. Written once; run natively and printed as JavaScript.
+-- | One step of the world (paper §2.4–2.6): the contacts, then the solver's
+-- sub-steps (gravity, impulses, motion), then the polygons. Written once;
+-- run natively and printed as JavaScript.
 module Manifold.Step
   ( step
   , stepPhases
@@ -10,7 +11,7 @@ import Manifold.Collide
 import Manifold.Solver
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.World
+import Manifold.World (Layout, WorldArrays, polygoniseAll)
 
 step :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE step :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
@@ -20,9 +21,9 @@ step sp l w = mapM_ (\(_, phase) -> phase sp l w) stepPhases
 stepPhases :: Imp m => [(String, Space -> Layout -> WorldArrays (Array m) -> m ())]
 {-# SPECIALIZE stepPhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())] #-}
 stepPhases =
-  [ ("gravity", \sp _ w -> applyGravity sp w)
-  , ("collide", collide)
-  , ("solve", solve)
-  , ("integrate", \sp _ w -> integrate sp w)
+  [ ("collide", collide)
+  , ("prepare", \_ _ w -> prepareContacts w)
+  , ("substeps", substeps)
+  , ("finish", \sp _ w -> finishStep sp w)
   , ("polygonise", polygoniseAll)
   ]

@@ -55,8 +55,11 @@ module Manifold.World
   , countWarning
   , finiteOr0
     -- * Motion
+  , substepLength
   , applyGravity
   , integrate
+  , wrapIntoDomain
+  , tangentVelocities
   , polygoniseAll
   , polygoniseBody
   , hasConstantGradient
@@ -126,7 +129,13 @@ layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 -- was last walked ('polygoniseBody' writes them with the vertices), so that
 -- the narrow phase turns a point into the body's own directions without an
 -- arctangent.
+--
+-- 'MovedX', 'MovedY', 'MovedZ' and 'Turned' are how far the body has moved
+-- (velocity times time, summed over the sub-steps) and turned since the
+-- step's contacts were found: the solver updates each contact's depth from
+-- them without finding the contacts again.
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos | TurnSin
+  | MovedX | MovedY | MovedZ | Turned
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters.
@@ -135,18 +144,27 @@ data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellS
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
-data Param = Dt | GravityOn | Iterations | Friction | Restitution | Baumgarte | Slop | BounceThreshold | WarmStart | MaxCorrection
-  | PolygonStep
+data Param = Dt | GravityOn | Substeps | Iterations | Friction | Restitution | ContactHertz | DampingRatio | Pushout
+  | Slop | Speculative | BounceThreshold | WarmStart | PolygonStep
   deriving (Show, Eq, Enum, Bounded)
 
 -- | One contact row pair (normal and friction) of the solver. The first body
 -- (@a@) is pushed along the direction, the second (@b@, or none) against it.
+--
+-- The narrow phase writes the bodies, the key, the rows ('JaX' … 'TbW'),
+-- the depth, the self-contact scale and the point; the solver's
+-- preparation writes the rest: the rows' masses, the depth beyond the slop
+-- ('CPenetration'), the contact's softness ('CBiasRate', 'CMassScale',
+-- 'CImpulseScale', see "Manifold.Solver"), the normal velocity before the
+-- step ('CApproach', for restitution) and the normal impulse applied in
+-- all ('CTotalImpulse').
 data ContactField
   = CA | CB | COwner | CKey
   | JaX | JaY | JaZ | JaW | JbX | JbY | JbZ | JbW
   | TaX | TaY | TaZ | TaW | TbX | TbY | TbZ | TbW
-  | CDepth | NormalMass | TangentMass | CBias | ImpulseN | ImpulseT | CSelfScale
+  | CDepth | NormalMass | TangentMass | ImpulseN | ImpulseT | CSelfScale
   | PointX | PointY | PointZ
+  | CPenetration | CBiasRate | CMassScale | CImpulseScale | CApproach | CTotalImpulse
   deriving (Show, Eq, Enum, Bounded)
 
 -- | What the world remembers of one of the last step's contact rows, for
@@ -180,7 +198,7 @@ contactsPerBody = 8
 
 -- | The broad phase's hash table has at most this many buckets.
 maxBuckets :: Int
-maxBuckets = 65536
+maxBuckets = 262144
 
 verticesPerBody :: Layout -> Int
 verticesPerBody l = 1 + polyDirections (polygon l) * polySteps (polygon l)
@@ -340,12 +358,20 @@ countWarning :: Imp m => WorldArrays (Array m) -> m ()
 {-# INLINE countWarning #-}
 countWarning w = readMeta w Warnings >>= writeMeta w Warnings . (+ 1)
 
--- | Gravity, projected to the tangent plane, for every movable body.
-applyGravity :: Imp m => Space -> WorldArrays (Array m) -> m ()
-{-# SPECIALIZE applyGravity :: Space -> WorldArrays NativeArray -> Native () #-}
-applyGravity sp w = do
-  count <- readMeta w BodyCount
+-- | The length of one sub-step: the step's @dt@ over its sub-steps.
+substepLength :: Imp m => WorldArrays (Array m) -> m (Scalar m)
+{-# INLINE substepLength #-}
+substepLength w = do
   dt <- readParam w Dt
+  n <- readParam w Substeps
+  share (dt / n)
+
+-- | Gravity for a time @h@, projected to the tangent plane, for every
+-- movable body.
+applyGravity :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
+{-# SPECIALIZE applyGravity :: Space -> WorldArrays NativeArray -> Double -> Native () #-}
+applyGravity sp w h = do
+  count <- readMeta w BodyCount
   on <- readParam w GravityOn
   forEach (toIndex count) $ \i -> do
     invMass <- readSlot w i InvMass
@@ -354,27 +380,33 @@ applyGravity sp w = do
       v <- read3 (wVel w) i
       n <- read3 (wNormal w) i
       let g = tangentProjection n (evalGravity sp p)
-          v' = v ^+^ dt *^ g
+          v' = v ^+^ h *^ g
       ifPositive (finiteness (toList3 v')) (write3 (wVel w) i v') (countWarning w)
 
--- | Move every body along its velocity for one step (paper §2.4, §4.1:
+-- | Move every body along its velocity for a time @h@ (paper §2.4, §4.1:
 -- @coord += veloc * dt@ for position and angle together): a geodesic step
--- of the centre, the velocity and axis carried to the new tangent plane. A
--- step that would produce a non-finite value leaves the body as it was and
--- counts a warning.
-integrate :: Imp m => Space -> WorldArrays (Array m) -> m ()
-{-# SPECIALIZE integrate :: Space -> WorldArrays NativeArray -> Native () #-}
-integrate sp w = do
+-- of the centre, the velocity and axis carried to the new tangent plane;
+-- how far each body moved and turned is added up for the solver (see
+-- 'MovedX'). A step that would produce a non-finite value leaves the body
+-- as it was and counts a warning. Bodies may end outside a quotient's
+-- fundamental domain: 'wrapIntoDomain' brings them back once a step, after
+-- the sub-steps, so that within a step every body keeps one frame.
+integrate :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
+{-# SPECIALIZE integrate :: Space -> WorldArrays NativeArray -> Double -> Native () #-}
+integrate sp w dt = do
   count <- readMeta w BodyCount
-  dt <- readParam w Dt
   let f = spaceField sp
   forEach (toIndex count) $ \i -> do
     p <- read3 (wPos w) i
-    v <- read3 (wVel w) i
     axis <- read3 (wAxis w) i
     angle <- readSlot w i Angle
     omega <- readSlot w i Omega
     n <- read3 (wNormal w) i
+    -- the solver pushes along rows found at the step's start, in the
+    -- tangent planes the bodies had then: what of that leaves the tangent
+    -- plane here is the surface's to take (the walk below keeps the speed,
+    -- and would turn it into speed along the surface)
+    v <- read3 (wVel w) i >>= share3 . tangentProjection n
     let (p0, v0, n0) = geodesicStepFrom f dt n (p, v)
     p1 <- share3 p0
     -- a fast body over a tight bend (a rounded cube edge) can end its three
@@ -395,36 +427,61 @@ integrate sp w = do
         ok = minF (finiteness (concatMap toList3 [p', v', axis', n'] ++ [angle', residual]))
                   (constant onSurfaceTolerance - abs residual)
     ifPositive ok
-      (case quotientWrap (spaceQuotient sp) of
-        Just wrap -> do
-          -- back into the fundamental domain; through a flipping edge the
-          -- body comes out mirrored (z of every vector, and its angle and
-          -- angular velocity, change sign: orientation reverses)
-          let (p'', s) = wrap p'
-              mirror (V3 x y z) = V3 x y (s * z)
-          sS <- share s
-          write3 (wPos w) i p''
-          write3 (wVel w) i (mirror v')
-          write3 (wAxis w) i (mirror axis')
-          write3 (wNormal w) i (mirror n')
-          writeSlot w i Angle (sS * angle')
-          writeSlot w i Omega (sS * omega)
-          -- a held body keeps the grabbed point's polar angle, mirrored too
-          active <- readMouse w MActive
-          held <- readMouse w MBody
-          whenPositive (active * (0.5 - abs (held - toScalar i))) $
-            readMouse w MLocalTheta >>= writeMouse w MLocalTheta . (sS *)
-        Nothing -> do
-          write3 (wPos w) i p'
+      (do write3 (wPos w) i p'
           write3 (wVel w) i v'
           write3 (wAxis w) i axis'
           write3 (wNormal w) i n'
-          writeSlot w i Angle angle')
+          writeSlot w i Angle angle'
+          let V3 dx dy dz = dt *^ v
+              add slot d = readSlot w i slot >>= writeSlot w i slot . (+ d)
+          add MovedX dx
+          add MovedY dy
+          add MovedZ dz
+          add Turned (dt * omega))
       -- keep the last good position, axis and angle; the motion that led
       -- out of the surface's good region is dropped
       (do write3 (wVel w) i (V3 0 0 0)
           writeSlot w i Omega 0
           countWarning w)
+
+-- | Bring every body back into the quotient's fundamental domain (nothing
+-- on a space without one). Through a flipping edge a body comes out
+-- mirrored: z of every vector, and its angle and angular velocity, change
+-- sign (orientation reverses).
+wrapIntoDomain :: Imp m => Space -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE wrapIntoDomain :: Space -> WorldArrays NativeArray -> Native () #-}
+wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
+  Nothing -> pure ()
+  Just wrap -> do
+    count <- readMeta w BodyCount
+    forEach (toIndex count) $ \i -> do
+      p <- read3 (wPos w) i
+      let (p', s) = wrap p
+          mirror (V3 x y z) = V3 x y (s * z)
+      sS <- share s
+      write3 (wPos w) i p'
+      mapM_ (\arr -> read3 arr i >>= write3 arr i . mirror) [wVel w, wAxis w, wNormal w]
+      readSlot w i Angle >>= writeSlot w i Angle . (sS *)
+      readSlot w i Omega >>= writeSlot w i Omega . (sS *)
+      -- a held body keeps the grabbed point's polar angle, mirrored too
+      active <- readMouse w MActive
+      held <- readMouse w MBody
+      whenPositive (active * (0.5 - abs (held - toScalar i))) $
+        readMouse w MLocalTheta >>= writeMouse w MLocalTheta . (sS *)
+
+-- | Every body's velocity projected onto its tangent plane: the step's
+-- last relaxing solve pushes along rows of the tangent planes the bodies
+-- had when the step began, so that a velocity ends a little off the plane
+-- it now has (a plane's rows and velocities never leave it: nothing to do).
+tangentVelocities :: Imp m => Space -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE tangentVelocities :: Space -> WorldArrays NativeArray -> Native () #-}
+tangentVelocities sp w
+  | hasConstantGradient (spaceField sp) = pure ()
+  | otherwise = do
+      count <- readMeta w BodyCount
+      forEach (toIndex count) $ \i -> do
+        n <- read3 (wNormal w) i
+        read3 (wVel w) i >>= write3 (wVel w) i . tangentProjection n
 
 -- | How far off the surface (in field value) a step may end and still count
 -- as good.

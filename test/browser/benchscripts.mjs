@@ -31,13 +31,13 @@ export async function testBenchScripts(check) {
 
     // firmer contacts (bench/README.md, "Firmer contacts"): the native benchmark and the
     // pile script put the same settings in place and find the same rows
-    const firm = ["--iterations", "3", "--slop-per-size", "0.05"];
+    const firm = ["--substeps", "2", "--iterations", "3", "--slop", "0.05"];
     const nf = JSON.parse(run(manifoldExe(), ["bench", "--from", scenes, "--spaces", "rectangle", "--sizes", "30", "--rounds", "1",
       "--warmup", "20", "--steps", "1", "--json"].concat(firm)))[0];
     const pf = run("node", ["bench/pile.mjs", scenes, "--steps", "21"].concat(firm)).trim().split("\n").map((l) => JSON.parse(l))
       .find((r) => r.space === "rectangle");
-    check("manifold bench --iterations/--slop-per-size and bench/pile.mjs with the same settings: the same contact rows on the same pile",
-      nf.iterations === 3 && pf.iterations === 3 && Math.abs(nf.slop - pf.slop) < 1e-15 && nf.contacts > 0 && nf.contacts === pf.rowsPerBody * pf.bodies,
+    check("manifold bench --substeps/--iterations/--slop and bench/pile.mjs with the same settings: the same contact rows on the same pile",
+      nf.substeps === 2 && pf.substeps === 2 && nf.iterations === 3 && pf.iterations === 3 && Math.abs(nf.slop - pf.slop) < 1e-15 && nf.contacts > 0 && nf.contacts === pf.rowsPerBody * pf.bodies,
       JSON.stringify({ native: [nf.iterations, nf.slop, nf.contacts], pile: [pf.iterations, pf.slop, pf.rowsPerBody * pf.bodies] }));
 
     const readme = path.join(dir, "README.md"), png = path.join(dir, "scaling.png");

@@ -9,7 +9,9 @@
 // The parts (each space's own checks run with the space): interaction (selector,
 // hash, orbit, zoom, previews, camera, curvature colours, antialiasing, stats,
 // resize), performance (what the running page allocates a frame: performance.mjs),
-// bodies (bodies.mjs), errors (the error paths), file (file://), hidpi (HiDPI
+// bodies (bodies.mjs), controls (the engine parameters' controls, made
+// from the generated scene keys, and worlds of the engine's most bodies:
+// controls.mjs), errors (the error paths), file (file://), hidpi (HiDPI
 // and touch), compare (compare.mjs), types (web/manifold.d.ts against the page
 // and web/gen: types.mjs), benchmarks (the bench scripts end to end:
 // benchscripts.mjs). The default run is all of them.
@@ -20,6 +22,7 @@ import {
 } from "./lib.mjs";
 import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 import { testPerformance } from "./performance.mjs";
+import { testControls } from "./controls.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
 import { testTypes } from "./types.mjs";
@@ -35,7 +38,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "performance", "bodies", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "controls", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -599,6 +602,7 @@ async function main() {
     if (partWanted("interaction")) await testInteraction(context, server.url);
     if (partWanted("performance")) await testPerformance(check, context, server.url);
     if (partWanted("bodies")) await testBodies(check, context, server.url);
+    if (partWanted("controls")) await testControls(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);

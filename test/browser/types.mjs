@@ -1,7 +1,7 @@
 // Checks that web/manifold.d.ts names what the page and the generated
 // scripts really have (part "types" of run.mjs): the keys of every generated
 // space, its engine and the engine's layout objects, the catalogue's entries,
-// the scene keys and the comparison, read under node from web/gen; and the
+// the scene keys (and their controls) and the comparison, read under node from web/gen; and the
 // calls of window.manifold and the keys of what stats(), simulation(),
 // options() and camera() return, read in the page. The type checker sees the
 // page's own scripts against the declarations (tsconfig.json); the generated
@@ -78,6 +78,7 @@ function generatedProblems(d) {
   });
   M.sceneKeys.forEach((k) => {
     out = out.concat(keyProblems("sceneKey " + k.key, Object.keys(k), I.SceneKey));
+    if (k.control) out = out.concat(keyProblems("sceneKey " + k.key + ".control", Object.keys(k.control), I.SceneControl));
     if (U.ParamName.indexOf(k.param) < 0) out.push("sceneKey " + k.key + ": param " + k.param + " not in ParamName");
   });
   for (const [name, s] of Object.entries(M.spaces)) {
@@ -99,7 +100,7 @@ function generatedProblems(d) {
 export async function testTypes(check, context, base) {
   const file = path.join(ROOT, "web", "manifold.d.ts");
   const d = readDeclarations(fs.readFileSync(file, "utf8"));
-  const wanted = ["Generated", "SpaceEntry", "SceneKey", "Space", "Engine", "ComparisonDef", "Api", "Stats", "Simulation", "OptionsShown", "CameraSpec"]
+  const wanted = ["Generated", "SpaceEntry", "SceneKey", "SceneControl", "Space", "Engine", "ComparisonDef", "Api", "Stats", "Simulation", "OptionsShown", "CameraSpec"]
     .filter((n) => !d.interfaces[n]).concat(["Quotient", "ArrayName", "MetaName", "ParamName", "SlotName", "ContactField", "PrevField", "MouseField", "ContactGroup"]
       .filter((n) => !d.unions[n]));
   if (!check("web/manifold.d.ts declares the interfaces and unions these checks read", wanted.length === 0, "not found: " + wanted.join(", "))) return;

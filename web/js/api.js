@@ -66,7 +66,7 @@ var ManifoldWebApi = (function (W) {
       addBody: scenes.addBody,
       // remove every body
       clear: scenes.clearBodies,
-      // the space's default scene again (default parameters), cut or filled to n bodies; returns the count
+      // the space's default scene again (default parameters), cut or filled to n bodies (at most the engine's maxBodies); returns the count
       resetScene: scenes.resetScene,
       // n physics steps now, synchronously (the polygons are then current); returns the body count
       step: function (n) {
@@ -104,7 +104,8 @@ var ManifoldWebApi = (function (W) {
       },
       pause: function () { settings.setSimulation({ paused: true }); },
       resume: function () { settings.setSimulation({ paused: false }); },
-      // {paused, timeScale, gravity, friction, restitution}
+      // {paused, timeScale, gravity, substeps, friction, …}: the clock and every
+      // engine parameter with a control (the generated scene keys)
       simulation: settings.simulationSettings,
       setSimulation: settings.setSimulation,
       // grab the body under backing-store pixel (x, y) with the mouse joint; true if one was grabbed

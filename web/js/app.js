@@ -23,7 +23,7 @@
       onReset: guarded(function () { scenes.resetScene(); }),
       onSave: guarded(scenes.saveSceneFile),
       onLoad: guarded(scenes.loadSceneFile),
-    }, MW.simulationSettings.controlHandlers()));
+    }, MW.simulationSettings.controlHandlers()), MW.simulationSettings.engineSettings());
     W.manifold = MW.api.scriptingApi();
     const canvas = state.ui.canvas;
 

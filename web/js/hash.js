@@ -74,16 +74,28 @@ var ManifoldWebHash = (function (W) {
     return state.index[0].name;
   }
 
-  // bodies=N from the hash: a whole number from 0 to 1000, else null (the default scene)
+  // bodies=N from the hash: a whole number, else null (the default scene).
+  // That a world holds N bodies is checked when there is one (bodiesFor):
+  // the limit is the space's engine's.
   /** @param {Record<string, string>} params */
   function bodiesFromHash(params) {
     if (params.bodies === undefined) return null;
     const n = Number(params.bodies);
-    if (params.bodies === "" || !Number.isInteger(n) || n < 0 || n > 1000) {
-      state.ui.showNotice("bodies=" + params.bodies + " in the link is not a whole number from 0 to 1000; showing the default scene.");
+    if (params.bodies === "" || !Number.isInteger(n) || n < 0) {
+      state.ui.showNotice("bodies=" + params.bodies + " in the link is not a whole number of bodies; showing the default scene.");
       return null;
     }
     return n;
+  }
+
+  // The hash's bodies=N for a world of this engine: N when it holds that
+  // many (0 to the generated maxBodies), else null (the default scene) and a notice.
+  /** @param {number | null} n @param {Manifold.Engine} engine @returns {number | null} */
+  function bodiesFor(n, engine) {
+    if (n === null || n <= engine.maxBodies) return n;
+    state.ui.showNotice("bodies=" + n + " in the link is more than a world holds (a whole number from 0 to " +
+      engine.maxBodies + "); showing the default scene.");
+    return null;
   }
 
   function onHashChange() {
@@ -97,8 +109,7 @@ var ManifoldWebHash = (function (W) {
       MW.space.setSpace(name, { bodies: bodies }).catch(function () {});
     } else if (state.world && !state.compare && (bodies === null ? defaultBodyCount() : bodies) !== state.world.count()) {
       try {
-        MW.input.releaseGrab();
-        state.world.loadDefault(bodies === null ? undefined : bodies);
+        MW.scenes.resetScene(bodiesFor(bodies, state.world.engine));
       } catch (err) {
         state.ui.showNotice("The scene could not be loaded: " + err.message);
       }
@@ -112,6 +123,7 @@ var ManifoldWebHash = (function (W) {
     optionsFromHash: optionsFromHash,
     spaceFromHash: spaceFromHash,
     bodiesFromHash: bodiesFromHash,
+    bodiesFor: bodiesFor,
     onHashChange: onHashChange,
   };
   W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});

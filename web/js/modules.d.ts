@@ -39,6 +39,8 @@ declare namespace ManifoldWeb {
   type Comparison = InstanceType<typeof ManifoldWebCompare.Comparison>;
   type UI = ReturnType<typeof ManifoldWebUi.createUI>;
 
+  /** A scene key the page offers a control for (simulation-settings.js's engineSettings, ui.js's createUI). */
+  type ControlledKey = Manifold.SceneKey & { control: Manifold.SceneControl };
   /** Engine parameters by name (World.setParams). */
   type Params = Partial<Record<Manifold.ParamName, number>>;
   /** What a World keeps of each body besides the engine's arrays. */

@@ -18,9 +18,19 @@ var ManifoldWebScenes = (function (W) {
     state.ui.setSimulation(MW.simulationSettings.simulationSettings());
   }
 
+  // After the default scene was filled up to n bodies (null: not filled): a
+  // notice when fewer fit (World.fill gives up when it finds no more room).
+  /** @param {ManifoldWeb.World} w @param {number | null} n */
+  function reportFill(w, n) {
+    if (n !== null && w.count() < n) {
+      state.ui.showNotice("Placed " + w.count() + " of " + n + " bodies: no room for more of this size.");
+    }
+  }
+
   // A new world for the current space holding `scene` (parsed), or the default
-  // scene cut or filled to `bodies` bodies (null: as it is). A space script
-  // without an engine (an old web/gen) gets no world and a notice.
+  // scene cut or filled to `bodies` bodies (null: as it is; the hash's
+  // bodies=N, so more than a world holds is the default scene and a notice).
+  // A space script without an engine (an old web/gen) gets no world and a notice.
   /** @param {ManifoldWeb.ParsedScene | null} scene @param {number | null} [bodies] */
   function newWorld(scene, bodies) {
     MW.input.releaseGrab();
@@ -31,8 +41,13 @@ var ManifoldWebScenes = (function (W) {
       return;
     }
     const w = new MW.world.World(state.spaceName, state.space);
-    if (scene) w.load(scene);
-    else w.loadDefault(bodies === null || bodies === undefined ? undefined : bodies);
+    if (scene) {
+      w.load(scene);
+    } else {
+      const n = MW.hash.bodiesFor(bodies === undefined ? null : bodies, state.space.engine);
+      w.loadDefault(n === null ? undefined : n);
+      reportFill(w, n);
+    }
     state.world = w;
     showSettings();
   }
@@ -73,13 +88,14 @@ var ManifoldWebScenes = (function (W) {
     return before;
   }
 
-  // The space's default scene again, cut or filled to n bodies (default: as it is).
+  // The space's default scene again, cut or filled to n bodies (default: as
+  // it is; at most the engine's maxBodies), with a notice when fewer fit.
   /** @param {number | null} [n] */
   function resetScene(n) {
-    if (n !== undefined && n !== null && !(Number.isInteger(n) && n >= 0 && n <= 1000)) {
-      throw new RangeError("resetScene(n) expects a whole number of bodies from 0 to 1000");
-    }
     const w = P.requireWorld();
+    if (n !== undefined && n !== null && !(Number.isInteger(n) && n >= 0 && n <= w.maxBodies())) {
+      throw new RangeError("resetScene(n) expects a whole number of bodies from 0 to " + w.maxBodies());
+    }
     MW.input.releaseGrab();
     if (state.compare) {
       // the comparison's own scene on both
@@ -92,6 +108,7 @@ var ManifoldWebScenes = (function (W) {
       return w.count();
     }
     w.loadDefault(n === null ? undefined : n);
+    reportFill(w, n === undefined ? null : n);
     state.clock.reset();
     showSettings();
     bodiesChangedCount();

@@ -2,62 +2,69 @@
 // the engine parameters the controls and window.manifold show and set
 // (simulation(), setSimulation(), pause(), resume()), with the values
 // setSimulation accepts, and the handlers of the controls that change them
-// (Pause, Step, Speed, Gravity, Friction, Restitution). Another engine
-// parameter offered as a control is a row of ENGINE_SETTINGS and a handler
-// below, its element in index.html and its binding in ui.js (createUI's
-// handlers and setSimulation).
+// (Pause, Step, Speed, and one handler for every engine parameter's control).
+// Which engine parameters are offered, their controls' labels, help and
+// slider extents and the values they take are generated (Manifold.sceneKeys,
+// from Lib/Manifold/Params.hs: the keys with a `control`); nothing here or in
+// index.html names them.
 /* exported ManifoldWebSimulationSettings */
 var ManifoldWebSimulationSettings = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
 
-  // The engine parameters offered, in the order simulation() lists them: the
-  // name setSimulation and simulation() use, the engine's parameter it sets
-  // (Lib/Manifold/Params.hs), and either a switch (true/false as 1/0) or the
-  // range of numbers setSimulation accepts.
-  /** @type {{ key: "gravity" | "friction" | "restitution", param: Manifold.ParamName, kind: "switch" | "number", lo?: number, hi?: number }[]} */
-  const ENGINE_SETTINGS = [
-    { key: "gravity", param: "gravityOn", kind: "switch" },
-    { key: "friction", param: "friction", kind: "number", lo: 0, hi: 10 },
-    { key: "restitution", param: "restitution", kind: "number", lo: 0, hi: 1 },
-  ];
   // simulated time per real second that setSimulation accepts
   const TIME_SCALE = { lo: 0, hi: 10 };
 
-  // {paused, timeScale, gravity, friction, restitution}: the clock and the
-  // current world's parameters (without a world, gravity shows as on and the
-  // numbers as null).
+  // The engine parameters offered, in the generated order (the order
+  // simulation() lists them and the page shows their controls): the scene
+  // keys with a control. A number's slider extent (control.lo … control.hi)
+  // is only the slider's: setSimulation takes what the key's range takes.
+  /** @returns {ManifoldWeb.ControlledKey[]} */
+  function engineSettings() {
+    const keys = (W.Manifold && W.Manifold.sceneKeys) || [];
+    return /** @type {ManifoldWeb.ControlledKey[]} */ (keys.filter(function (k) { return !!k.control; }));
+  }
+
+  // {paused, timeScale, gravity, substeps, friction, …}: the clock and the
+  // current world's parameters (without a world, a switch shows its default
+  // and a number null).
   /** @returns {Manifold.Simulation} */
   function simulationSettings() {
     const w = state.world;
     /** @type {Record<string, boolean | number | null>} */
     const out = { paused: state.clock.paused, timeScale: state.clock.timeScale };
-    ENGINE_SETTINGS.forEach(function (s) {
-      if (s.kind === "switch") out[s.key] = w ? w.param(s.param) > 0 : true;
-      else out[s.key] = w ? w.param(s.param) : null;
+    engineSettings().forEach(function (k) {
+      if (k.kind === "switch") out[k.key] = w ? w.param(k.param) > 0 : !!k.default;
+      else out[k.key] = w ? w.param(k.param) : null;
     });
     return /** @type {Manifold.Simulation} */ (/** @type {unknown} */ (out));
   }
 
-  // {paused, timeScale, gravity, friction, restitution}: any subset; throws on bad values.
+  // {paused, timeScale, gravity, substeps, friction, …}: any subset; throws on
+  // bad values (an engine parameter's message is its scene key's, generated:
+  // "friction must not be negative") and then changes nothing.
   /** @param {Manifold.SimulationChange} o @returns {Manifold.Simulation} */
   function setSimulation(o) {
+    const settings = engineSettings();
     if (!o || typeof o !== "object") {
-      throw new TypeError("setSimulation expects {" + ["paused", "timeScale"].concat(ENGINE_SETTINGS.map(function (s) { return s.key; })).join(", ") + "}");
+      throw new TypeError("setSimulation expects {" + ["paused", "timeScale"].concat(settings.map(function (k) { return k.key; })).join(", ") + "}");
     }
-    /** @param {keyof Manifold.SimulationChange} k @param {number} lo @param {number} hi */
-    const num = function (k, lo, hi) {
-      const x = o[k];
-      if (typeof x !== "number" || !isFinite(x) || x < lo || x > hi) throw new RangeError(k + " must be a number from " + lo + " to " + hi);
-      return /** @type {number} */ (x);
-    };
-    if (o.timeScale !== undefined) num("timeScale", TIME_SCALE.lo, TIME_SCALE.hi);
+    const given = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (o));
+    if (o.timeScale !== undefined) {
+      const x = o.timeScale;
+      if (typeof x !== "number" || !isFinite(x) || x < TIME_SCALE.lo || x > TIME_SCALE.hi) {
+        throw new RangeError("timeScale must be a number from " + TIME_SCALE.lo + " to " + TIME_SCALE.hi);
+      }
+    }
     /** @type {ManifoldWeb.Params} */
     const p = {};
-    ENGINE_SETTINGS.forEach(function (s) {
-      if (o[s.key] === undefined) return;
-      p[s.param] = s.kind === "switch" ? (o[s.key] ? 1 : 0) : num(s.key, s.lo, s.hi);
+    settings.forEach(function (k) {
+      const v = given[k.key];
+      if (v === undefined) return;
+      const why = MW.world.keyProblem(k, v);
+      if (why !== null) throw new RangeError(k.key + " " + why);
+      p[k.param] = k.kind === "switch" ? (v ? 1 : 0) : /** @type {number} */ (v);
     });
     if (Object.keys(p).length) P.requireWorld().setParams(p);
     if (o.timeScale !== undefined) state.clock.timeScale = o.timeScale;
@@ -77,14 +84,18 @@ var ManifoldWebSimulationSettings = (function (W) {
       onPause: guarded(function () { setSimulation({ paused: !state.clock.paused }); }),
       onStep: guarded(function () { setSimulation({ paused: true }); P.requireWorld().step(1); }),
       onTimeScale: guarded(function (/** @type {number} */ x) { setSimulation({ timeScale: x }); }),
-      onGravity: guarded(function (/** @type {boolean} */ on) { setSimulation({ gravity: on }); }),
-      onFriction: guarded(function (/** @type {number} */ x) { setSimulation({ friction: x }); }),
-      onRestitution: guarded(function (/** @type {number} */ x) { setSimulation({ restitution: x }); }),
+      // an engine parameter's control: its scene key and the value it shows
+      onSetting: guarded(function (/** @type {string} */ key, /** @type {number | boolean} */ value) {
+        /** @type {Record<string, number | boolean>} */
+        const change = {};
+        change[key] = value;
+        setSimulation(/** @type {Manifold.SimulationChange} */ (change));
+      }),
     };
   }
 
   const exported = {
-    ENGINE_SETTINGS: ENGINE_SETTINGS,
+    engineSettings: engineSettings,
     simulationSettings: simulationSettings,
     setSimulation: setSimulation,
     controlHandlers: controlHandlers,

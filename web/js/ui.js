@@ -1,5 +1,7 @@
 // The page's controls and messages: the space selector, the curvature and
-// antialiasing options, the stats line, the error panel, and the URL hash.
+// antialiasing options, the engine parameters' controls (made from the
+// generated scene keys they set), the stats line, the error panel, and the
+// URL hash.
 /* exported ManifoldWebUi */
 var ManifoldWebUi = (function (W) {
   "use strict";
@@ -75,9 +77,7 @@ var ManifoldWebUi = (function (W) {
    * @property {() => void} onPause
    * @property {() => void} onStep
    * @property {(x: number) => void} onTimeScale
-   * @property {(on: boolean) => void} onGravity
-   * @property {(x: number) => void} onFriction
-   * @property {(x: number) => void} onRestitution
+   * @property {(key: string, value: number | boolean) => void} onSetting an engine parameter's control changed (its scene key)
    * @property {() => void} onSave
    * @property {(file: File) => void} onLoad
    */
@@ -86,8 +86,60 @@ var ManifoldWebUi = (function (W) {
    * @typedef {{ message: string, log?: string, source?: string }} Shown
    */
 
-  /** @param {Handlers} handlers */
-  function createUI(handlers) {
+  // The decimals a slider's value is shown with: as many as its step has.
+  /** @param {number} step */
+  function decimalsOf(step) {
+    let d = 0;
+    while (d < 6 && Math.abs(step * Math.pow(10, d) - Math.round(step * Math.pow(10, d))) > 1e-9) d++;
+    return d;
+  }
+
+  /**
+   * An engine parameter's control (for its scene key): a checkbox for a
+   * switch; for a number a slider over the control's lo … hi by its step,
+   * with an output showing the value. Ids: the key (the input) and, for a
+   * slider, the key + "-value" (the output).
+   * @typedef {{ key: ManifoldWeb.ControlledKey, input: HTMLInputElement, output: HTMLOutputElement | null, decimals: number }} Setting
+   */
+  /** @param {ManifoldWeb.ControlledKey} k @param {Handlers} handlers @returns {{ label: HTMLLabelElement, setting: Setting }} */
+  function makeSetting(k, handlers) {
+    const c = k.control;
+    const label = document.createElement("label");
+    label.title = c.help;
+    const input = document.createElement("input");
+    input.id = k.key;
+    if (k.kind === "switch") {
+      label.className = "toggle";
+      input.type = "checkbox";
+      input.checked = !!k.default;
+      label.append(input, " " + c.label);
+      input.addEventListener("change", function () { handlers.onSetting(k.key, input.checked); });
+      return { label: label, setting: { key: k, input: input, output: null, decimals: 0 } };
+    }
+    const decimals = decimalsOf(c.step);
+    input.type = "range";
+    input.min = String(c.lo);
+    input.max = String(c.hi);
+    input.step = String(c.step);
+    input.value = String(k.default);
+    const output = document.createElement("output");
+    output.id = k.key + "-value";
+    output.htmlFor.add(k.key);
+    output.textContent = Number(k.default).toFixed(decimals);
+    label.append(c.label + " ", input, " ", output);
+    input.addEventListener("input", function () {
+      // the slider's value to the step's decimals (no 0.30000000000000004)
+      const x = Number(Number(input.value).toFixed(decimals));
+      output.textContent = x.toFixed(decimals);
+      handlers.onSetting(k.key, x);
+    });
+    return { label: label, setting: { key: k, input: input, output: output, decimals: decimals } };
+  }
+
+  // handlers: what the controls call; settings: the scene keys whose
+  // controls the page shows, in order (simulation-settings.js's engineSettings)
+  /** @param {Handlers} handlers @param {ManifoldWeb.ControlledKey[]} settings */
+  function createUI(handlers, settings) {
     /** @type {HTMLSelectElement} */
     const spaceSelect = $("space");
     /** @type {HTMLInputElement} */
@@ -124,14 +176,14 @@ var ManifoldWebUi = (function (W) {
     const pause = $("pause");
     /** @type {HTMLSelectElement} */
     const timeScale = $("time-scale");
-    /** @type {HTMLInputElement} */
-    const gravity = $("gravity");
-    /** @type {HTMLInputElement} */
-    const friction = $("friction");
-    const frictionValue = $("friction-value");
-    /** @type {HTMLInputElement} */
-    const restitution = $("restitution");
-    const restitutionValue = $("restitution-value");
+    const engineControls = $("engine-controls");
+    engineControls.textContent = "";
+    /** @type {Setting[]} */
+    const engineSettings = settings.map(function (k) {
+      const made = makeSetting(k, handlers);
+      engineControls.appendChild(made.label);
+      return made.setting;
+    });
     /** @type {HTMLInputElement} */
     const sceneFile = $("scene-file");
     $("add-circle").addEventListener("click", function () { handlers.onAdd("circle"); });
@@ -150,15 +202,6 @@ var ManifoldWebUi = (function (W) {
     pause.addEventListener("click", function () { handlers.onPause(); });
     $("step").addEventListener("click", function () { handlers.onStep(); });
     timeScale.addEventListener("change", function () { handlers.onTimeScale(Number(timeScale.value)); });
-    gravity.addEventListener("change", function () { handlers.onGravity(gravity.checked); });
-    friction.addEventListener("input", function () {
-      frictionValue.textContent = Number(friction.value).toFixed(2);
-      handlers.onFriction(Number(friction.value));
-    });
-    restitution.addEventListener("input", function () {
-      restitutionValue.textContent = Number(restitution.value).toFixed(2);
-      handlers.onRestitution(Number(restitution.value));
-    });
     $("save-scene").addEventListener("click", function () { handlers.onSave(); });
     $("load-scene").addEventListener("click", function () { sceneFile.click(); });
     sceneFile.addEventListener("change", function () {
@@ -232,7 +275,9 @@ var ManifoldWebUi = (function (W) {
       },
       showNotice: showNotice,
       setPaused: setPaused,
-      // {paused, timeScale, gravity, friction, restitution} → the controls
+      // {paused, timeScale, gravity, substeps, friction, …} → the controls
+      // (a number outside its slider's extent: the slider at its end, the
+      // output the value)
       /** @param {Manifold.Simulation} o */
       setSimulation: function (o) {
         setPaused(!!o.paused);
@@ -244,15 +289,16 @@ var ManifoldWebUi = (function (W) {
           timeScale.appendChild(opt);
         }
         timeScale.value = ts;
-        gravity.checked = !!o.gravity;
-        if (typeof o.friction === "number") {
-          friction.value = String(o.friction);
-          frictionValue.textContent = o.friction.toFixed(2);
-        }
-        if (typeof o.restitution === "number") {
-          restitution.value = String(o.restitution);
-          restitutionValue.textContent = o.restitution.toFixed(2);
-        }
+        const values = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (o));
+        engineSettings.forEach(function (s) {
+          const v = values[s.key.key];
+          if (s.output === null) {
+            s.input.checked = !!v;
+          } else if (typeof v === "number") {
+            s.input.value = String(v);
+            s.output.textContent = v.toFixed(s.decimals);
+          }
+        });
       },
       hideNotice: function () { notice.hidden = true; },
     };

@@ -7,8 +7,14 @@
 var ManifoldWebWorld = (function (W) {
   "use strict";
 
+  // a new world's arrays hold this many bodies; they double as bodies are
+  // added, up to the engine's maxBodies (generated, Manifold.Stage.EngineScript)
   const FIRST_CAPACITY = 64;
-  const MAX_CAPACITY = 4096;
+  // World.fill gives up after this many placements in a row found no room
+  // (a body off the surface, outside the boundary or on another body):
+  // past that the space is about as full of bodies of that size as random
+  // placement gets it, and more tries only cost time
+  const FILL_GIVE_UP = 500;
   // |field| at a new body's centre above this: the engine's projection failed
   const ON_SURFACE = 1e-6;
   // colours by the order bodies are added (display RGB 0..1): saturated, far from the surface's beige
@@ -173,14 +179,24 @@ var ManifoldWebWorld = (function (W) {
     return scene;
   }
 
+  // Why v is not a value of scene key k (its generated range's message:
+  // "must not be negative", …), or null when it is one.
+  /** @param {Manifold.SceneKey} k @param {unknown} v @returns {string | null} */
+  function keyProblem(k, v) {
+    if (k.kind === "switch") return typeof v === "boolean" ? null : "must be true or false";
+    if (typeof v !== "number") return "must be a number";
+    if (!isFinite(v)) return "must be a finite number";
+    if ((k.above !== undefined && !(v > k.above)) || (k.atLeast !== undefined && v < k.atLeast)) return k.low;
+    if ((k.atMost !== undefined && v > k.atMost) || (k.whole && v !== Math.round(v))) return k.high;
+    return null;
+  }
+
   // A scene key's value, checked against its generated range.
   /** @param {string} path @param {unknown} v @param {Manifold.SceneKey} k @returns {number | boolean} */
   function keyValue(path, v, k) {
-    if (k.kind === "switch") return boolean(path, v);
-    const x = number(path, v);
-    if ((k.above !== undefined && !(x > k.above)) || (k.atLeast !== undefined && x < k.atLeast)) problem(path, k.low);
-    if ((k.atMost !== undefined && x > k.atMost) || (k.whole && x !== Math.round(x))) problem(path, k.high);
-    return x;
+    const why = keyProblem(k, v);
+    if (why !== null) problem(path, why);
+    return /** @type {number | boolean} */ (v);
   }
 
   // A parsed scene's parameters as the engine's (by parameter name).
@@ -223,6 +239,7 @@ var ManifoldWebWorld = (function (W) {
     /** @param {string} name @param {Manifold.Space} space */
     constructor(name, space) {
       if (!space || !space.engine) throw new Error("the space " + JSON.stringify(name) + " has no engine; rebuild web/gen with `manifold build`");
+      if (!(space.engine.maxBodies >= 1)) throw new Error("the engine of " + JSON.stringify(name) + " does not say how many bodies it holds (maxBodies); rebuild web/gen with `manifold build`");
       this.name = name;
       this.space = space;
       this.engine = space.engine;
@@ -264,6 +281,9 @@ var ManifoldWebWorld = (function (W) {
       this.a.meta[E.meta.capacity] = capacity;
     }
 
+    // the most bodies the world holds (the generated engine's maxBodies)
+    maxBodies() { return this.engine.maxBodies; }
+
     /** @param {Manifold.MetaName} k */
     meta(k) { return this.a.meta[this.engine.meta[k]]; }
     count() { return this.a.meta[this.engine.meta.bodyCount]; }
@@ -300,8 +320,9 @@ var ManifoldWebWorld = (function (W) {
     place(b) {
       const E = this.engine;
       if (this.count() >= this.capacity) {
-        if (this.capacity >= MAX_CAPACITY) throw new Error("the world is full (" + MAX_CAPACITY + " bodies)");
-        this.allocate(Math.min(MAX_CAPACITY, this.capacity * 2), true);
+        const most = this.maxBodies();
+        if (this.capacity >= most) throw new Error("the world is full (" + most + " bodies)");
+        this.allocate(Math.min(most, this.capacity * 2), true);
       }
       E.addBody.apply(null, this.args([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
         b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega]));
@@ -337,10 +358,12 @@ var ManifoldWebWorld = (function (W) {
       this.version++;
     }
 
-    // Removes every body (a fresh world with the same parameters).
-    clear() {
+    // Removes every body (a fresh world with the same parameters), with room
+    // for `capacity` bodies (default: as many as now).
+    /** @param {number} [capacity] */
+    clear(capacity) {
       const params = Float64Array.from(this.a.params);
-      this.allocate(this.capacity, false);
+      this.allocate(capacity || this.capacity, false);
       this.a.params.set(params);
       this.info = [];
       this.added = 0;
@@ -486,9 +509,14 @@ var ManifoldWebWorld = (function (W) {
     // All or nothing: a body that cannot be added leaves the world as it was and throws.
     /** @param {ManifoldWeb.ParsedScene} scene */
     load(scene) {
+      const n = scene.bodies.length, most = this.maxBodies();
+      if (n > most) problem("$.bodies", n + " bodies, more than a world of " + this.name + " holds (" + most + ")");
       const saved = { arrays: this.arrays.map(function (x) { return x; }), capacity: this.capacity,
         info: this.info, added: this.added };
-      this.clear();
+      // room for every body at once: no growing (and copying) on the way
+      let capacity = FIRST_CAPACITY;
+      while (capacity < n) capacity *= 2;
+      this.clear(Math.min(most, capacity));
       this.setParams(sceneParams(scene));
       try {
         scene.bodies.forEach(/** @this {World} */ function (b, k) {
@@ -536,33 +564,37 @@ var ManifoldWebWorld = (function (W) {
     // Adds bodies until there are n: shapes and sizes cycle through `base`
     // (the default scene), positions are seeded random points of the bounding
     // ball, projected by the engine; a body outside the boundary or on
-    // another body is taken back.
+    // another body is taken back. Gives up when FILL_GIVE_UP placements in a
+    // row found no room, or when the world is full. Returns the count.
     /** @param {number} n @param {{ shape: Manifold.Shape, size: number }[]} base */
     fill(n, base) {
       const rnd = random(20170 + this.count());
       const bounds = this.space.bounds || 1;
       const boundary = this.space.boundary;
       const shapes = base.length ? base : [{ shape: "circle", size: 0.15 }, { shape: "square", size: 0.15 }];
-      let tries = 0;
-      while (this.count() < n && tries < 50 * n) {
-        tries++;
+      const most = Math.min(n, this.maxBodies());
+      let failed = 0;
+      while (this.count() < most && failed < FILL_GIVE_UP) {
+        failed++;
         const tmpl = shapes[this.count() % shapes.length];
         const p = /** @type {Manifold.Vec3} */ ([0, 1, 2].map(function () { return (2 * rnd() - 1) * bounds * 0.9; }));
         let i;
         try {
           i = this.add({ shape: tmpl.shape, size: tmpl.size, p: p, angle: 2 * Math.PI * rnd() });
         } catch (e) {
-          if (this.count() >= MAX_CAPACITY) break;
           continue;
         }
         /** @type {Manifold.Vec3} */
         const q = [this.a.pos[3 * i], this.a.pos[3 * i + 1], this.a.pos[3 * i + 2]];
         const free = (!boundary || boundary(q[0], q[1], q[2]) > tmpl.size) && !this.overlaps(i);
-        if (!free) {
+        if (free) {
+          failed = 0;
+        } else {
           this.added--;
           this.remove(i);
         }
       }
+      return this.count();
     }
 
     // Whether body i's centre or an outline vertex lies in another body (by
@@ -643,6 +675,7 @@ var ManifoldWebWorld = (function (W) {
     SceneError: SceneError,
     parseScene: parseScene,
     parseBody: parseBody,
+    keyProblem: keyProblem,
     PALETTE: PALETTE,
     STATIC_COLOUR: STATIC_COLOUR,
   };

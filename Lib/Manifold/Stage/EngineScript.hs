@@ -39,10 +39,17 @@ engineProcedures sp l =
     functions = stageFunctions JavaScript procedures
 
 -- | The engine's description for the page, as a JavaScript object literal:
--- how to allocate a world (sizes are linear in the capacity), what each
+-- how to allocate a world (sizes are linear in the capacity, which is at
+-- most 'pageMaxBodies'), what each
 -- index of the meta, parameter, per-body, contact and mouse arrays means,
 -- the default parameters, and the procedures (with the names of the
 -- subroutines they call).
+-- | The most bodies a world of the page's engine holds (its arrays grow to
+-- this by doubling, as bodies are added): 32,768 bodies take about 200 MB
+-- of arrays, mostly their contact rows.
+pageMaxBodies :: Int
+pageMaxBodies = 32768
+
 engineObject :: Layout -> [String] -> String
 engineObject l subroutines =
   let at c = arraySizes l { capacity = c }
@@ -56,6 +63,7 @@ engineObject l subroutines =
     , "  arrays: [" ++ intercalate ", " (map show (toList arrayNames)) ++ "],"
     , "  sizes: { " ++ intercalate ", " (zipWith3 size (toList arrayNames) (toList one) (toList two)) ++ " },"
     , "  directions: " ++ show (polyDirections (polygon l)) ++ ", steps: " ++ show (polySteps (polygon l)) ++ ","
+    , "  maxBodies: " ++ show pageMaxBodies ++ ","
     , "  verticesPerBody: " ++ show (verticesPerBody l) ++ ", contactStride: " ++ show contactStride ++ ", contactsPerBody: " ++ show contactsPerBody ++ ","
     , "  meta: " ++ enumObj BodyCount ++ ","
     , "  params: " ++ enumObj Dt ++ ","
@@ -79,12 +87,19 @@ engineObject l subroutines =
 -- | The scene keys that set parameters ('sceneKeys'), as a JavaScript
 -- array of @{ key, param, default, kind, … }@: the key, the parameter it
 -- sets (its name in the engine object's @params@ and @defaults@), the
--- value a scene without it gets, and its range ('rangeDescription'), which
--- the page's scene reader checks.
+-- value a scene without it gets, its range ('rangeDescription'), which
+-- the page's scene reader and @setSimulation@ check, and the control the
+-- page makes for it (@control: { label, help, lo, hi, step }@, 'keyControl').
 sceneKeysArray :: String
 sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
   where
-    entry k = "  { " ++ intercalate ", " [ f ++ ": " ++ v | (f, v) <- fields k ++ rangeDescription (keyRange k) ] ++ " },\n"
+    entry k = "  { " ++ intercalate ", " [ f ++ ": " ++ v | (f, v) <- fields k ++ rangeDescription (keyRange k) ++ control k ] ++ " },\n"
+    control k = case keyControl k of
+      Nothing -> []
+      Just c -> [("control", "{ " ++ intercalate ", " (["label: " ++ show (controlLabel c), "help: " ++ show (controlHelp c)] ++ slider c) ++ " }")]
+    slider c = case controlSlider c of
+      Nothing -> []
+      Just (lo, hi, step) -> ["lo: " ++ show lo, "hi: " ++ show hi, "step: " ++ show step]
     fields k =
       [ ("key", show (keyName k)), ("param", show (jsName (keyParam k)))
       , ("default", let x = paramValue defaultParams (keyParam k) in case keyRange k of
