@@ -312,9 +312,10 @@ warmStart w = do
     applyRow w a b tangent lt
     readContact w c CTotalImpulse >>= writeContact w c CTotalImpulse . (+ ln)
 
--- | One sequential-impulse sweep over the contact rows: the normal impulse,
--- then friction (bounded by the normal impulse just found), each clamped; with the bias (the solve) or without it
--- (the relaxing solve).
+-- | One sequential-impulse sweep over the contact rows, each clamped: with
+-- the bias, the normal impulses (the solve); without it, the normal
+-- impulse and then friction, bounded by the normal impulse just found (the
+-- relaxing solve).
 sweepRows :: Imp m => Bool -> WorldArrays (Array m) -> m ()
 {-# INLINE sweepRows #-}
 sweepRows useBias w = do
