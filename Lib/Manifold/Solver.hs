@@ -27,7 +27,9 @@
 -- @a₂ = hω·a₁@, @a₃ = 1/(1 + a₂)@: the bias is @ω/a₁@ times the depth
 -- beyond the slop (at most 'Pushout'), and an impulse is scaled by @a₂a₃@
 -- with @a₃@ of the accumulated impulse taken back. A depth short of the
--- slop lets the bodies approach by what is left of it within the sub-step.
+-- slop is a hard row that lets the bodies approach by what is left of it
+-- within the sub-step; from the slop to twice the slop the row turns from
+-- hard to soft gradually, so that nothing it does jumps with the depth.
 -- The slop is 'Slop' times the smaller body's size, so that small bodies
 -- overlap as little, for their size, as large ones.
 --
