@@ -347,12 +347,79 @@ pairContactsVia l sec w keyBase x y signs shift = do
       q <- outlineVertex l w mv d
       depth <- readArray (wProbe w) (toIndex moverProbe + d)
       pure (depth, (image q ^-^ bfCentre fr) `dot` t)
-    let emitAt slot dv = do
+    -- Where the touching ends along the edge: at the reference body's
+    -- ends (its vertices on the reference edge's line), unless the
+    -- mover's outline ends first. A mover that overhangs the reference
+    -- body's corner has its own corner outside it; the touching then ends
+    -- at the reference's corner, between the mover's last vertex inside
+    -- and its next one, and that is where the contact point goes (as
+    -- Box2D clips the incident edge at the reference edge's side planes).
+    -- Left at the last vertex inside, the support narrowed by a whole
+    -- outline edge the moment the mover's corner cleared the margin, and
+    -- tall stacks rocked over.
+    let along q = (q ^-^ bfCentre fr) `dot` t
+    (refLo, refHi) <- referenceEnds l w rf margin o0 edgeNormal along
+    let behind q = (o0 ^-^ q) `dot` m0
+        ndS = fromIntegral (polyDirections (polygon l))
+        nextOf k = select (k - ndS + 1.5) 0 (k + 1)
+        prevOf k = select (0.5 - k) (ndS - 1) (k - 1)
+        clipAt dv end = do
           q <- outlineVertex l w mv (toIndex dv)
           query <- share3 (image q)
-          emitContact w x (keyBase + slot) mv reference q (linear m0) query m0 (select facing ((o0 ^-^ query) `dot` m0) best) 1 1 linear
-    emitAt 0 dLo
-    whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
+          pos <- share (along query)
+          depth <- share (behind query)
+          -- how far to go towards the end (none where the push is
+          -- turned round: the reference's far side is no end)
+          gap <- share (select facing (end - pos) 0)
+          -- of the vertex's two outline neighbours, the one towards the
+          -- end along a touching edge (within the margin), and the share
+          -- of the way to it that reaches the end
+          let reach k = do
+                n <- outlineVertex l w mv (toIndex k)
+                nq <- share3 (image n)
+                step <- share (along nq - pos)
+                dn <- share (behind nq)
+                s <- share (select (gap * step) (select (dn + margin) (clampF 0 1 (gap / step)) 0) 0)
+                pure (s, n, nq, dn)
+          (sUp, nUp, qUp, dUp) <- reach (nextOf dv)
+          (sDown, nDown, qDown, dDown) <- reach (prevOf dv)
+          up <- share (sUp - sDown)
+          s <- share (maxF sUp sDown)
+          let toward a b = select up a b
+              toward3 (V3 a b c) (V3 u v z) = V3 (toward a u) (toward b v) (toward c z)
+              lerp3 a b = a ^+^ s *^ (b ^-^ a)
+          ra <- share3 (lerp3 q (toward3 nUp nDown))
+          rb <- share3 (lerp3 query (toward3 qUp qDown))
+          d <- share (depth + s * (toward dUp dDown - depth))
+          pure (ra, rb, select facing d best, s)
+        emitAt slot (ra, rb, d, _) = emitContact w x (keyBase + slot) mv reference ra (linear m0) rb m0 d 1 1 linear
+    lo <- clipAt dLo refLo
+    hi <- clipAt dHi refHi
+    emitAt 0 lo
+    -- a second point where there are two vertices, or where one vertex's
+    -- edge runs on along the reference (then the vertex and the edge's
+    -- clipped end are the two)
+    let moved (_, _, _, s) = s
+    whenPositive (abs (dHi - dLo) + moved lo + moved hi) (emitAt 1 hi)
+
+-- | Where body @rf@'s outline ends along a line: the least and the greatest
+-- position ('along') of its outline vertices within @margin@ of the line
+-- through its vertex @o0@ with outward normal @normal@ (@o0@'s own when no
+-- other is).
+referenceEnds :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m) -> V3 (Scalar m)
+              -> (V3 (Scalar m) -> Scalar m) -> m (Scalar m, Scalar m)
+{-# INLINE referenceEnds #-}
+referenceEnds l w rf margin o0 normal along = do
+  start <- share (along o0)
+  lo <- newRef start
+  hi <- newRef start
+  forEach (fromIntegral (polyDirections (polygon l))) $ \d -> do
+    v <- outlineVertex l w rf d
+    whenPositive ((v ^-^ o0) `dot` normal + margin) $ do
+      s <- share (along v)
+      readRef lo >>= writeRef lo . minF s
+      readRef hi >>= writeRef hi . maxF s
+  (,) <$> readRef lo <*> readRef hi
 
 -- | How far apart two bodies' outlines may be and still make contact rows
 -- (speculative ones, which keep the bodies from closing the gap faster than
