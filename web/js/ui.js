@@ -1,7 +1,8 @@
 // The page's controls and messages: the space selector, the curvature and
 // antialiasing options, the engine parameters' controls (made from the
-// generated scene keys they set), the stats line, the error panel, and the
-// URL hash.
+// generated scene keys they set), the keys (Space, s, r, c, ?) and the help
+// overlay listing them and the gestures, the stats line, the error panel,
+// and the URL hash.
 /* exported ManifoldWebUi */
 var ManifoldWebUi = (function (W) {
   "use strict";
@@ -136,6 +137,22 @@ var ManifoldWebUi = (function (W) {
     return { label: label, setting: { key: k, input: input, output: output, decimals: decimals } };
   }
 
+  // Whether a key pressed in this element is the element's, not the page's:
+  // a text-like input (not a checkbox, radio, range, button or file input), a
+  // select, a textarea or an editable element.
+  const UNTYPED_INPUTS = ["checkbox", "radio", "range", "button", "submit", "reset", "image", "color", "file"];
+  /** @param {EventTarget | null} t */
+  function typingIn(t) {
+    if (t instanceof HTMLInputElement) return UNTYPED_INPUTS.indexOf(t.type) < 0;
+    return t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement || (t instanceof HTMLElement && t.isContentEditable);
+  }
+  // Whether Space is this element's own key: a checkbox's or radio button's
+  // (it ticks them; a button has Enter too, so there Space is the page's).
+  /** @param {EventTarget | null} t */
+  function ticksWithSpace(t) {
+    return t instanceof HTMLInputElement && (t.type === "checkbox" || t.type === "radio");
+  }
+
   // handlers: what the controls call; settings: the scene keys whose
   // controls the page shows, in order (simulation-settings.js's engineSettings)
   /** @param {Handlers} handlers @param {ManifoldWeb.ControlledKey[]} settings */
@@ -208,6 +225,43 @@ var ManifoldWebUi = (function (W) {
       const f = sceneFile.files && sceneFile.files[0];
       sceneFile.value = "";
       if (f) handlers.onLoad(f);
+    });
+
+    // keys: what each does (the help overlay, #keys-help in index.html, lists
+    // them with the gestures); Space, s and r and c act as Pause, Step, Reset
+    // and Clear; a held s steps on, the others act once
+    /** @type {HTMLDialogElement} */
+    const keysHelp = $("keys-help");
+    /** @type {Map<string, () => void>} */
+    const keys = new Map([
+      [" ", function () { handlers.onPause(); }],
+      ["s", function () { handlers.onStep(); }],
+      ["r", function () { handlers.onReset(); }],
+      ["c", function () { handlers.onClear(); }],
+      ["?", function () { keysHelp.showModal(); }],
+    ]);
+    $("keys-help-open").addEventListener("click", function () { if (!keysHelp.open) keysHelp.showModal(); });
+    $("keys-help-close").addEventListener("click", function () { keysHelp.close(); });
+    // a click on the backdrop (the dialog itself, around its body) closes it too
+    keysHelp.addEventListener("click", function (e) { if (e.target === keysHelp) keysHelp.close(); });
+    document.addEventListener("keydown", function (e) {
+      // Ctrl, Alt and Meta are the browser's (and the system's)
+      if (e.defaultPrevented || e.ctrlKey || e.altKey || e.metaKey || e.isComposing) return;
+      const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
+      if (keysHelp.open) {
+        // the overlay is modal: ? and Escape close it, the other keys are its close button's
+        if (key === "?" || key === "Escape") {
+          e.preventDefault();
+          if (!e.repeat) keysHelp.close();
+        }
+        return;
+      }
+      const act = keys.get(key);
+      if (!act || typingIn(e.target) || (key === " " && ticksWithSpace(e.target))) return;
+      // the page acts: Space neither scrolls nor presses the focused button too
+      e.preventDefault();
+      if (e.repeat && key !== "s") return;
+      act();
     });
 
     /** @param {string} text */
