@@ -11,7 +11,8 @@
 // resize), performance (what the running page allocates a frame: performance.mjs),
 // bodies (bodies.mjs), controls (the engine parameters' controls, made
 // from the generated scene keys, and worlds of the engine's most bodies:
-// controls.mjs), keys (the keys and the help overlay: keys.mjs), errors
+// controls.mjs), keys (the keys and the help overlay: keys.mjs), capture
+// (Save image and Record / Stop, their downloads: capture.mjs), errors
 // (the error paths), file (file://), hidpi (HiDPI and touch), compare
 // (compare.mjs), types (web/manifold.d.ts against the page and web/gen:
 // types.mjs), benchmarks (the bench scripts end to end: benchscripts.mjs).
@@ -25,6 +26,7 @@ import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 import { testPerformance } from "./performance.mjs";
 import { testControls } from "./controls.mjs";
 import { testKeys } from "./keys.mjs";
+import { testCapture } from "./capture.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
 import { testTypes } from "./types.mjs";
@@ -40,7 +42,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "capture", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -606,6 +608,7 @@ async function main() {
     if (partWanted("bodies")) await testBodies(check, context, server.url);
     if (partWanted("controls")) await testControls(check, context, server.url);
     if (partWanted("keys")) await testKeys(check, context, server.url);
+    if (partWanted("capture")) await testCapture(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) await testFileUrl(context);
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);

@@ -23,7 +23,11 @@
       onReset: guarded(function () { scenes.resetScene(); }),
       onSave: guarded(scenes.saveSceneFile),
       onLoad: guarded(scenes.loadSceneFile),
+      onSaveImage: guarded(MW.capture.saveImage),
+      onRecord: guarded(MW.capture.toggleRecording),
     }, MW.simulationSettings.controlHandlers()), MW.simulationSettings.engineSettings());
+    const noRecording = MW.capture.recordingUnavailable();
+    if (noRecording) state.ui.setRecordingUnavailable(noRecording);
     W.manifold = MW.api.scriptingApi();
     const canvas = state.ui.canvas;
 

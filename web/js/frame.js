@@ -3,7 +3,8 @@
 // scenery or the bodies changed (reusing the traced surface when only bodies
 // moved; half-resolution previews while the view moves on a slow GPU), times
 // the GPU with a fence, and shows the stats line. Also the canvas's size in
-// device pixels (HiDPI) and measureFrame.
+// device pixels (HiDPI), measureFrame, and afterDraw (the canvas read right
+// after a draw, for the capture buttons).
 /* exported ManifoldWebFrame */
 var ManifoldWebFrame = (function (W) {
   "use strict";
@@ -29,6 +30,8 @@ var ManifoldWebFrame = (function (W) {
     surfaceGen: 0,          // bumped whenever the traced picture must be redrawn (with the camera's version)
     worldVersion: -1,       // world.version of the last frame drawn
     world: /** @type {ManifoldWeb.World | null} */ (null),
+    // what afterDraw was asked for since the last frame
+    captures: /** @type {((canvas: HTMLCanvasElement | null) => void)[]} */ ([]),
   };
 
   // ---- bodies ------------------------------------------------------------------------
@@ -183,6 +186,25 @@ var ManifoldWebFrame = (function (W) {
     state.ui.setPaused(s.paused);
   }
 
+  // ---- reading the canvas -------------------------------------------------------------
+  // The context keeps no drawing buffer once a frame is shown (preserveDrawingBuffer
+  // is false: keeping it would cost a copy every frame), so the canvas can be read
+  // (toBlob, a stream's first frame) only in the task that drew it. afterDraw(f)
+  // calls f(canvas) in the next animation frame right after its draw, drawing a
+  // sharp frame for it when the loop would draw none or only a preview; f(null)
+  // when nothing can be drawn (an error shown, no renderer).
+  /** @param {(canvas: HTMLCanvasElement | null) => void} f */
+  function afterDraw(f) {
+    drawn.captures.push(f);
+  }
+
+  /** @param {number} before drawn.frameCount before this frame's draw */
+  function fulfilCaptures(before) {
+    const fresh = drawn.frameCount !== before && !state.preview;
+    const ok = !state.error && (fresh || renderNow(false));
+    drawn.captures.splice(0).forEach(function (f) { f(ok ? state.ui.canvas : null); });
+  }
+
   // Marks the view as moving (input changed the camera).
   function interacted() {
     drawn.interactUntil = performance.now() + INTERACTION_MS;
@@ -198,6 +220,7 @@ var ManifoldWebFrame = (function (W) {
       if (n > 0 && w.count() > 0) w.step(n);
       if (n > 0 && state.compare && state.compare.flat.count() > 0) state.compare.flat.step(n);
     }
+    const before = drawn.frameCount;
     if (!state.error) {
       const moving = now < drawn.interactUntil;
       const slow = drawn.gpuFrameMs !== null && drawn.gpuFrameMs > SLOW_FRAME_MS;
@@ -206,6 +229,7 @@ var ManifoldWebFrame = (function (W) {
       else if (bodiesChanged()) renderNow(state.preview);
       if (state.compare) state.compare.render(false);
     }
+    if (drawn.captures.length) fulfilCaptures(before);
     showStats(now);
   }
 
@@ -270,6 +294,7 @@ var ManifoldWebFrame = (function (W) {
     surfaceStale: surfaceStale,
     statsObject: statsObject,
     interacted: interacted,
+    afterDraw: afterDraw,
     startLoop: startLoop,
     watchSize: watchSize,
   };

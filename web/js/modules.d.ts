@@ -24,6 +24,7 @@ interface ManifoldWebModules {
   simulationSettings: typeof ManifoldWebSimulationSettings;
   scenes: typeof ManifoldWebScenes;
   api: typeof ManifoldWebApi;
+  capture: typeof ManifoldWebCapture;
 }
 
 /** The page's modules (web/js), by file. */

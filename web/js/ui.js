@@ -2,7 +2,7 @@
 // antialiasing options, the engine parameters' controls (made from the
 // generated scene keys they set), the keys (Space, s, r, c, ?) and the help
 // overlay listing them and the gestures, the stats line, the error panel,
-// and the URL hash.
+// the capture buttons (Save image, Record / Stop), and the URL hash.
 /* exported ManifoldWebUi */
 var ManifoldWebUi = (function (W) {
   "use strict";
@@ -81,6 +81,8 @@ var ManifoldWebUi = (function (W) {
    * @property {(key: string, value: number | boolean) => void} onSetting an engine parameter's control changed (its scene key)
    * @property {() => void} onSave
    * @property {(file: File) => void} onLoad
+   * @property {() => void} onSaveImage Save image: a PNG of the view
+   * @property {() => void} onRecord Record / Stop: starts the recording, or stops it and downloads it
    */
   /**
    * What the error panel shows: a PageError (message, compiler log, shader source) or any Error.
@@ -226,6 +228,14 @@ var ManifoldWebUi = (function (W) {
       sceneFile.value = "";
       if (f) handlers.onLoad(f);
     });
+    // capture: the Record button reads Stop (pressed, its red dot shown) while recording
+    /** @type {HTMLButtonElement} */
+    const record = $("record");
+    const recordLabel = $("record-label");
+    const recordDot = $("record-dot");
+    const recordTitle = record.title;
+    $("save-image").addEventListener("click", function () { handlers.onSaveImage(); });
+    record.addEventListener("click", function () { handlers.onRecord(); });
 
     // keys: what each does (the help overlay, #keys-help in index.html, lists
     // them with the gestures); Space, s and r and c act as Pause, Step, Reset
@@ -355,6 +365,19 @@ var ManifoldWebUi = (function (W) {
         });
       },
       hideNotice: function () { notice.hidden = true; },
+      /** @param {boolean} on */
+      setRecording: function (on) {
+        recordLabel.textContent = on ? "Stop" : "Record";
+        record.setAttribute("aria-pressed", String(on));
+        recordDot.hidden = !on;
+        record.title = on ? "stop recording and download the video" : recordTitle;
+      },
+      // the browser cannot record: the Record button disabled, its title saying why
+      /** @param {string} why */
+      setRecordingUnavailable: function (why) {
+        record.disabled = true;
+        record.title = "Recording is not available: " + why;
+      },
     };
   }
 
