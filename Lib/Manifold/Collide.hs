@@ -16,8 +16,8 @@
 -- edge's outward normal. Of a touching pair, the body whose vertex goes
 -- deepest into the other is the one pushed out: that vertex's edge is the
 -- reference edge, and the two extreme vertices inside, along the edge,
--- become the pair's two contact points, so that a box resting on a box has
--- two.
+-- clipped where the reference body ends, become the pair's two contact
+-- points, so that a box resting on a box has two.
 module Manifold.Collide
   ( collide
   , buildGrid
@@ -274,7 +274,9 @@ whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre 
 -- equal) gives the contact: the edge its deepest vertex crosses is the
 -- reference edge, whose outward normal pushes both contact points, and of
 -- the vertices inside, the two extremes along that edge are the points,
--- each as deep as it lies behind the edge's line. One normal for both
+-- each as deep as it lies behind the edge's line, and each moved along
+-- the mover's outline edge to where the reference body ends when that
+-- edge touches beyond it (a box overhanging the corner of the one below). One normal for both
 -- points keeps a box on a box level: a vertex near a corner, measured
 -- across the side edge it happens to face, would push the box sideways.
 -- Both ways' rows (four for a box on a box, which mostly say the same
