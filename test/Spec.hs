@@ -5,6 +5,7 @@ import System.IO (BufferMode (..), hSetBuffering, stdout)
 import Test.Hspec
 
 import qualified ADSpec
+import qualified ElementarySpec
 import qualified BodySpec
 import qualified CliSpec
 import qualified EngineSpec
@@ -21,6 +22,7 @@ main = do
   hSetBuffering stdout LineBuffering
   hspec $ do
     describe "Manifold.AD" ADSpec.spec
+    describe "Manifold.Elementary" ElementarySpec.spec
     describe "Manifold.Surface" SurfaceSpec.spec
     describe "Manifold.Body" BodySpec.spec
     describe "manifold (command line)" CliSpec.spec

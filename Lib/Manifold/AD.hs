@@ -130,6 +130,14 @@ instance Field a => Field (D a) where
   constant = lift . constant
   select (D c _) (D t dt) (D e de) = D (select c t e) (select c <$> dt <*> de)
   floorF (D x _) = lift (floorF x)
+  sinF = chain sinF cosF
+  cosF = chain cosF (negate . sinF)
+  atanF = chain atanF (\x -> recip (1 + x * x))
+  expF = chain expF expF
+  {-# INLINE sinF #-}
+  {-# INLINE cosF #-}
+  {-# INLINE atanF #-}
+  {-# INLINE expF #-}
   {-# INLINE constant #-}
   {-# INLINE select #-}
   {-# INLINE floorF #-}

@@ -98,7 +98,7 @@ polygonOutline n theta =
       half = pi / n
       shifted = theta + half
       within = shifted - sector * floorF (shifted / sector)
-  in cos half / cos (within - half)
+  in cosF half / cosF (within - half)
 
 -- | The code of a built-in shape, as the engine's arrays and the page use
 -- it: 0 for a circle, @n >= 3@ for a regular @n@-gon (4, the square).

@@ -19,6 +19,8 @@ module Manifold.Field
 import GHC.Exts (Double (..), Double#)
 import Linear.V3 (V3 (..))
 
+import Manifold.Elementary
+
 -- $setup
 -- GHCi runs this module as object code (it has unboxed tuples), so the
 -- examples see its exports through this import:
@@ -57,6 +59,22 @@ class Floating a => Field a where
   -- | The largest integer not above the argument (derivative 0).
   floorF :: a -> a
 
+  -- | The engine's sine ("Manifold.Elementary"): the same bits on every
+  -- backend, unlike the platform's 'sin' (libm natively, V8's in the
+  -- page). The physics uses these four; a space of one's own may use the
+  -- 'Floating' functions, which are the platform's.
+  sinF :: a -> a
+  sinF = sinWith (Exact floorF select constant)
+  -- | The engine's cosine (see 'sinF').
+  cosF :: a -> a
+  cosF = cosWith (Exact floorF select constant)
+  -- | The engine's arctangent (see 'sinF').
+  atanF :: a -> a
+  atanF = atanWith (Exact floorF select constant)
+  -- | The engine's exponential (see 'sinF').
+  expF :: a -> a
+  expF = expWith (Exact floorF select constant)
+
   -- | A scalar function's value at this scalar. 'Double' overrides it to
   -- call the function's compiled 'evalRaw' instead of its polymorphic
   -- body.
@@ -76,6 +94,10 @@ instance Field Double where
   {-# INLINE select #-}
   floorF = c_floor -- C's floor keeps −0, NaN and the infinities, as Math.floor does
   {-# INLINE floorF #-}
+  sinF = sinDouble
+  cosF = cosDouble
+  atanF = atanDouble
+  expF = expDouble
   evalFn f (V3 (D# x) (D# y) (D# z)) = D# (evalRaw f x y z)
   {-# INLINE evalFn #-}
   gradFn f (V3 (D# x) (D# y) (D# z)) = case valueGradRaw f x y z of
@@ -94,8 +116,22 @@ foreign import ccall unsafe "math.h floor" c_floor :: Double -> Double
 clampF :: Field a => a -> a -> a -> a
 clampF lo hi = maxF lo . minF hi
 
+-- | The kernels at 'Double', each compiled once with its constants as
+-- plain numbers.
+sinDouble, cosDouble, atanDouble, expDouble :: Double -> Double
+sinDouble = sinWith doubleExact
+cosDouble = cosWith doubleExact
+atanDouble = atanWith doubleExact
+expDouble = expWith doubleExact
+
+-- | 'Exact' at 'Double'.
+doubleExact :: Exact Double
+doubleExact = Exact c_floor (\c t e -> if c > 0 then t else e) id
+{-# INLINE doubleExact #-}
+
 -- | The angle of the point @(x, y)@, in @(−π, π]@, by half-angle formulas
--- (so that it needs no comparison outside 'select'); 0 at the origin.
+-- (so that it needs no comparison outside 'select') and the engine's
+-- arctangent 'atanF'; 0 at the origin.
 --
 -- >>> atan2F 1 0 == (pi / 2 :: Double)
 -- True
@@ -106,8 +142,8 @@ clampF lo hi = maxF lo . minF hi
 atan2F :: Field a => a -> a -> a
 atan2F y x =
   let r = sqrt (x * x + y * y)
-  in select x (2 * atan (y / (r + x)))
-       (select (abs y) (2 * atan ((r - x) / y)) (select (negate x) pi 0))
+  in select x (2 * atanF (y / (r + x)))
+       (select (abs y) (2 * atanF ((r - x) / y)) (select (negate x) pi 0))
 
 -- | A scalar function of a point, polymorphic in the scalar: a distance field,
 -- a boundary @b(p) >= 0@. Built by 'Manifold.AD.scalarFn', which also keeps

@@ -151,7 +151,7 @@ grabPoint sp w g = do
   r <- readMouse w MLocalR
   theta <- readMouse w MLocalTheta
   let phi = bfAngle f + theta
-      dir = cos phi *^ bfU f ^+^ sin phi *^ bfW f
+      dir = cosF phi *^ bfU f ^+^ sinF phi *^ bfW f
       steps = 4 :: Int
       h = r / fromIntegral steps
       go 0 s = pure s

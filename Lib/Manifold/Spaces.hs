@@ -129,7 +129,7 @@ trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narr
   , spaceScene = ring 4 (exp 0.3) 0.3 SquareShape 0.3
   , spaceBounds = 4
   }
-  where trumpetField p@(V3 _ y _) = radial p - exp y
+  where trumpetField p@(V3 _ y _) = radial p - expF y
 
 -- | A cube with rounded edges: flat faces, curved edges and corners.
 cube :: Space
@@ -208,7 +208,7 @@ moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a
 -- exponentially, gravity pushing bodies into the neck.
 funnel :: Space
 funnel = (space "funnel" "the paper's two-dimensional trumpet: the plane with |x| <= exp(0.9z - 0.7), |z| <= 1; gravity pushes into the neck" (scalarFn planeField))
-  { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (exp (0.9 * z - 0.7) - abs x) (1 - abs z)))
+  { spaceBoundary = Just (scalarFn (\(V3 x _ z) -> minF (expF (0.9 * z - 0.7) - abs x) (1 - abs z)))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.6 (-1.2))
   , spaceScene = [Placement (V3 x 0 z) SquareShape 0.15 False | (x, z) <- [(-0.3, 0.6), (0.3, 0.6), (0, 0.2)]]

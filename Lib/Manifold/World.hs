@@ -545,8 +545,8 @@ polygoniseBody sp l w i = do
   fine <- share (select hmax (rmax - hmax) 1)
   -- the direction's cosine and sine, turned by 2π/nd from one direction to
   -- the next (two transcendental calls a body instead of two a direction)
-  cos0 <- share (cos angle)
-  sin0 <- share (sin angle)
+  cos0 <- share (cosF angle)
+  sin0 <- share (sinF angle)
   writeSlot w i TurnCos cos0
   writeSlot w i TurnSin sin0
   cosRef <- newRef cos0

@@ -28,21 +28,27 @@ module Manifold.Stage.Expr
   , children
   , evalOp1
   , evalOp2
+  , expandElementary
   ) where
 
 import Data.IORef
+import Data.List (foldl')
 import qualified Data.IntMap.Strict as IM
 import qualified Data.Map.Strict as M
 import Data.Word (Word64)
 import GHC.Float (castDoubleToWord64, castWord64ToDouble)
 import System.IO.Unsafe (unsafePerformIO)
 
+import Manifold.Elementary (Exact (..), atanWith, cosWith, expWith, sinWith)
 import Manifold.Field
 
--- | The one-operand operations: the scalar class's, 'Floor' included.
+-- | The one-operand operations: the scalar class's, 'Floor' and the
+-- engine's own elementary functions ('SinF' … 'ExpF', "Manifold.Elementary")
+-- included.
 data Op1
   = Neg | Abs | Sign | Recip | Sqrt | Exp | Log | Sin | Cos | Tan
   | Asin | Acos | Atan | Sinh | Cosh | Tanh | Asinh | Acosh | Atanh | Floor
+  | SinF | CosF | AtanF | ExpF
   deriving (Show, Eq, Ord, Enum, Bounded)
 
 -- | The two-operand operations.
@@ -145,6 +151,7 @@ evalOp1 = \case
   Exp -> exp; Log -> log; Sin -> sin; Cos -> cos; Tan -> tan
   Asin -> asin; Acos -> acos; Atan -> atan; Sinh -> sinh; Cosh -> cosh
   Tanh -> tanh; Asinh -> asinh; Acosh -> acosh; Atanh -> atanh; Floor -> floorF
+  SinF -> sinF; CosF -> cosF; AtanF -> atanF; ExpF -> expF
 
 -- | The native meaning of each two-operand operation (see 'evalOp1').
 evalOp2 :: Op2 -> Double -> Double -> Double
@@ -224,3 +231,46 @@ instance Field E where
   constant = lit
   select = sel
   floorF = un Floor
+  sinF = un SinF
+  cosF = un CosF
+  atanF = un AtanF
+  expF = un ExpF
+
+-- | The expressions with the engine's own elementary functions ('SinF',
+-- 'CosF', 'AtanF', 'ExpF') written out as their kernels' operations
+-- ("Manifold.Elementary"), for the page's JavaScript: the same operations
+-- as a call of the kernel, in line. V8 inlines no function as large as the
+-- exponential, and a call it does not inline returns its number boxed on
+-- the heap: in line, the step allocates nothing. Equal subexpressions stay
+-- one node (a sine and a cosine of one angle share their reduction).
+expandElementary :: [E] -> [E]
+expandElementary roots = reverse (fst (foldl' root ([], IM.empty) roots))
+  where
+    root (acc, memo) r = let (e, memo') = go memo (nodeId r) in (e : acc, memo')
+    exact = Exact floorF select constant
+    go memo i = case IM.lookup i memo of
+      Just e -> (e, memo)
+      Nothing ->
+        let (e, memo') = case nodeById i of
+              Un op a ->
+                let (a', m1) = go memo a
+                in (expand op a', m1)
+              Bin op a b ->
+                let (a', m1) = go memo a
+                    (b', m2) = go m1 b
+                in (rebuild (Bin op (nodeId a') (nodeId b')), m2)
+              Sel c t f ->
+                let (c', m1) = go memo c
+                    (t', m2) = go m1 t
+                    (f', m3) = go m2 f
+                in (rebuild (Sel (nodeId c') (nodeId t') (nodeId f')), m3)
+              _ -> (E i, memo)
+        in (e, IM.insert i e memo')
+      where
+        rebuild n = if n == nodeById i then E i else intern n
+        expand op a = case op of
+          SinF -> sinWith exact a
+          CosF -> cosWith exact a
+          AtanF -> atanWith exact a
+          ExpF -> expWith exact a
+          _ -> rebuild (Un op (nodeId a))

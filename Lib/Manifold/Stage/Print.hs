@@ -58,8 +58,10 @@ data Lowered = Lowered
 
 -- | Lower roots in a scope, naming new bindings @prefix ++ show k@ from @next@.
 lower :: Target -> String -> Int -> Scope -> [E] -> Lowered
-lower target prefix next scope roots =
-  let rootIds = map nodeId roots
+lower target prefix next scope roots0 =
+  let -- the page's script computes the engine's own functions in line
+      roots = if target == JavaScript then expandElementary roots0 else roots0
+      rootIds = map nodeId roots
       (order, counts) = foldl' visit ([], IM.empty) rootIds
       visit (ord, cnt) i
         | IM.member i scope = (ord, cnt)
@@ -171,6 +173,14 @@ unary target op a = case (op, target) of
   (Recip, JavaScript) -> "(1 / " ++ a ++ ")"
   (Recip, GLSL) -> "(1.0 / " ++ a ++ ")"
   (Recip, Haskell) -> "(recip " ++ a ++ ")"
+  -- the engine's own functions: the native step calls them; the page's
+  -- script has them in line ('lower', 'Manifold.Stage.Expr.expandElementary');
+  -- GLSL, which only draws, takes the GPU's
+  (op', JavaScript) | op' `elem` [SinF, CosF, AtanF, ExpF] -> error ("Manifold.Stage.Print: " ++ show op' ++ " reached the JavaScript printer unexpanded")
+  (SinF, Haskell) -> "(sinF " ++ a ++ ")"
+  (CosF, Haskell) -> "(cosF " ++ a ++ ")"
+  (AtanF, Haskell) -> "(atanF " ++ a ++ ")"
+  (ExpF, Haskell) -> "(expF " ++ a ++ ")"
   (_, JavaScript) -> "Math." ++ fname ++ "(" ++ a ++ ")"
   (_, GLSL) -> fname ++ "(" ++ a ++ ")"
   -- the functions 'Manifold.Stage.Expr.evalOp1' folds constants with
@@ -183,6 +193,7 @@ unary target op a = case (op, target) of
       Sin -> "sin"; Cos -> "cos"; Tan -> "tan"; Asin -> "asin"; Acos -> "acos"
       Atan -> "atan"; Sinh -> "sinh"; Cosh -> "cosh"; Tanh -> "tanh"
       Asinh -> "asinh"; Acosh -> "acosh"; Atanh -> "atanh"; Floor -> "floor"
+      SinF -> "sin"; CosF -> "cos"; AtanF -> "atan"; ExpF -> "exp"
       Neg -> "-"; Recip -> "1/"
 
 binary :: Target -> Op2 -> String -> String -> String

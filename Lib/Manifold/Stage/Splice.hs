@@ -16,7 +16,7 @@ import Language.Haskell.TH hiding (Stmt)
 import qualified Language.Haskell.TH as TH
 
 import Manifold.Compiled.Runtime (Arr, chkI, loopI, rdU, wrU)
-import Manifold.Field (floorF)
+import Manifold.Field (Field (atanF, cosF, expF, floorF, sinF))
 import Manifold.Stage.Code
 import Manifold.Stage.Expr (Op1 (..), Op2 (..))
 
@@ -125,6 +125,7 @@ unaryName = \case
   Exp -> 'exp; Log -> 'log; Sin -> 'sin; Cos -> 'cos; Tan -> 'tan
   Asin -> 'asin; Acos -> 'acos; Atan -> 'atan; Sinh -> 'sinh; Cosh -> 'cosh
   Tanh -> 'tanh; Asinh -> 'asinh; Acosh -> 'acosh; Atanh -> 'atanh; Floor -> 'floorF
+  SinF -> 'sinF; CosF -> 'cosF; AtanF -> 'atanF; ExpF -> 'expF
 
 binaryName :: Op2 -> Name
 binaryName = \case
