@@ -18,10 +18,14 @@
 -- rationals, not typed in.
 module Manifold.Elementary
   ( Exact (..)
+  , exact
+  , Polynomial
+  , hornerVector
   , sinWith
   , cosWith
   , atanWith
   , expWith
+  , expParts
   , splitBits
   , halfPiParts
   , ln2Parts
@@ -29,6 +33,7 @@ module Manifold.Elementary
 
 import Data.List (foldl')
 import Data.Ratio ((%))
+import qualified Data.Vector.Unboxed as U
 
 -- $setup
 -- GHCi loads this module as object code (the scalar class, which imports
@@ -45,7 +50,30 @@ data Exact a = Exact
   { exactFloor :: a -> a
   , exactSelect :: a -> a -> a -> a
   , exactConstant :: Double -> a
+  , exactPolynomial :: Polynomial -> a -> a -- ^ 'horner', as the scalar does it fastest
   }
+
+-- | 'Exact' from a floor, a select and the constants, its polynomials by
+-- 'hornerWith'.
+exact :: Fractional a => (a -> a) -> (a -> a -> a -> a) -> (Double -> a) -> Exact a
+{-# INLINE exact #-}
+exact fl sel k = Exact fl sel k (hornerWith k . polyCoefficients)
+
+-- | A polynomial's coefficients from the constant term up, also as an
+-- unboxed vector (natively evaluated from that: 'hornerVector').
+data Polynomial = Polynomial
+  { polyCoefficients :: [Double]
+  , polyVector :: U.Vector Double
+  }
+
+-- | The polynomial of these coefficients.
+polynomial :: [Double] -> Polynomial
+polynomial cs = Polynomial cs (U.fromList cs)
+
+-- | 'horner' at 'Double' over the vector: the same operations in the same
+-- order as 'hornerWith', in a loop of unboxed numbers.
+hornerVector :: Polynomial -> Double -> Double
+hornerVector p z = U.foldr' (\c acc -> c + z * acc) 0 (polyVector p)
 
 -- | π to 70 digits.
 piRational :: Rational
@@ -93,17 +121,17 @@ factorial n = product [1 .. n]
 
 -- | The Taylor coefficients of sine after the first, @−1/3!, 1/5!, …, 1/17!@
 -- (the first left out is below 1e-19 of the value on [−π/4, π/4]).
-sinCoefficients :: [Double]
-sinCoefficients = [fromRational ((-1) ^ k % factorial (2 * k + 1)) | k <- [1 .. 8 :: Integer]]
+sinCoefficients :: Polynomial
+sinCoefficients = polynomial [fromRational ((-1) ^ k % factorial (2 * k + 1)) | k <- [1 .. 8 :: Integer]]
 
 -- | Cosine's from the third on, @1/4!, −1/6!, …, −1/18!@.
-cosCoefficients :: [Double]
-cosCoefficients = [fromRational ((-1) ^ k % factorial (2 * k)) | k <- [2 .. 9 :: Integer]]
+cosCoefficients :: Polynomial
+cosCoefficients = polynomial [fromRational ((-1) ^ k % factorial (2 * k)) | k <- [2 .. 9 :: Integer]]
 
 -- | @horner [c0, c1, …] z = c0 + z·(c1 + z·(…))@.
-horner :: Fractional a => Exact a -> [Double] -> a -> a
+horner :: Exact a -> Polynomial -> a -> a
 {-# INLINE horner #-}
-horner ops = hornerWith (exactConstant ops)
+horner = exactPolynomial
 
 -- | 'horner' by the constants' conversion: a recursion of its own that
 -- captures nothing, so that natively a call allocates no closure.
@@ -148,7 +176,7 @@ byQuadrant ops q a b c d =
 
 -- | The sine.
 --
--- >>> let ops = Exact (fromInteger . floor) (\c t e -> if c > 0 then t else e) id
+-- >>> let ops = exact (fromInteger . floor) (\c t e -> if c > 0 then t else e) id
 -- >>> map (sinWith ops) [0, pi / 6, 1e6] :: [Double]
 -- [0.0,0.49999999999999994,-0.34999350217129294]
 sinWith :: Fractional a => Exact a -> a -> a
@@ -168,8 +196,8 @@ cosWith ops x =
 
 -- | The arctangent's Taylor coefficients after the first, @−1/3, 1/5, …, −1/21@
 -- (enough on @[−1/8, 1/8]@).
-atanCoefficients :: [Double]
-atanCoefficients = [fromRational ((-1) ^ k % (2 * k + 1)) | k <- [1 .. 10 :: Integer]]
+atanCoefficients :: Polynomial
+atanCoefficients = polynomial [fromRational ((-1) ^ k % (2 * k + 1)) | k <- [1 .. 10 :: Integer]]
 
 -- | @atan (i/4)@ for @i = 0 … 4@, each as a double and what it leaves off,
 -- from the series of the exact rational (to far below a double's last bit).
@@ -198,7 +226,7 @@ halfPiHiLo = case atanQuarters of
 -- nearest quarter @c = i/4@ by @atan t = atan c + atan ((t − c)/(1 + t·c))@,
 -- whose second argument is at most 1/8.
 --
--- >>> let ops = Exact (fromInteger . floor) (\c t e -> if c > 0 then t else e) id
+-- >>> let ops = exact (fromInteger . floor) (\c t e -> if c > 0 then t else e) id
 -- >>> map (atanWith ops) [0, 1, -1e300] :: [Double]
 -- [0.0,0.7853981633974483,-1.5707963267948966]
 atanWith :: Fractional a => Exact a -> a -> a
@@ -221,8 +249,8 @@ atanWith ops t =
 
 -- | The exponential's Taylor coefficients, @1/0!, …, 1/14!@ (enough on
 -- @[−log 2 / 2, log 2 / 2]@).
-expCoefficients :: [Double]
-expCoefficients = [fromRational (1 % factorial k) | k <- [0 .. 14]]
+expCoefficients :: Polynomial
+expCoefficients = polynomial [fromRational (1 % factorial k) | k <- [0 .. 14]]
 
 -- | @1 / log 2@, the exponent's scale.
 inverseLn2 :: Double
@@ -232,13 +260,28 @@ inverseLn2 = fromRational (1 / ln2Rational)
 powersOfTwo :: [(Double, Double)]
 powersOfTwo = [(2 ^^ (2 ^ k :: Int), 2 ^^ negate (2 ^ k :: Int)) | k <- [0 .. 9 :: Int]]
 
+-- | The exponential's two parts: @e^r@ (its series) and the whole @n@, with
+-- @x = n·log 2 + r@ and @|r| <= log 2 / 2@ ('expWith' multiplies them by
+-- @2^n@). Where @e^r·2^n@ is a normal number every product of that is
+-- exact, so natively one multiplication by @2^n@ gives the same bits.
+expParts :: Fractional a => Exact a -> a -> (a, a)
+{-# INLINE expParts #-}
+expParts ops x0 =
+  let sel = exactSelect ops
+      k = exactConstant ops
+      clamped = sel (x0 - 710) 710 (sel (-746 - x0) (-746) x0)
+      (l1, l2) = ln2Parts
+      !n = exactFloor ops (clamped * k inverseLn2 + 0.5)
+      !r = (clamped - n * k l1) - n * k l2
+  in (horner ops expCoefficients r, n)
+
 -- | The exponential: @x = n·log 2 + r@ with @|r| <= log 2 / 2@, the series
 -- at @r@, then multiplied by @2^n@ bit by bit of @n@ (each factor a power
 -- of two, so the products are exact while they are normal numbers).
 -- Arguments beyond @[−746, 710]@, where the result is 0 or infinite, are
 -- clamped to it first.
 --
--- >>> let ops = Exact (fromInteger . floor) (\c t e -> if c > 0 then t else e) id
+-- >>> let ops = exact (fromInteger . floor) (\c t e -> if c > 0 then t else e) id
 -- >>> map (expWith ops) [0, 1, -1000, 1000] :: [Double]
 -- [1.0,2.7182818284590455,0.0,Infinity]
 expWith :: Fractional a => Exact a -> a -> a
@@ -247,11 +290,7 @@ expWith ops x0 =
   let sel = exactSelect ops
       fl = exactFloor ops
       k = exactConstant ops
-      clamped = sel (x0 - 710) 710 (sel (-746 - x0) (-746) x0)
-      (l1, l2) = ln2Parts
-      !n = fl (clamped * k inverseLn2 + 0.5)
-      !r = (clamped - n * k l1) - n * k l2
-      series = horner ops expCoefficients r
+      (!series, !n) = expParts ops x0
       -- the bits of |n| from the lowest, each times its factor: m is what
       -- is left of |n| above the bit
       scale y m ((up, down) : powers) =

@@ -16,7 +16,9 @@ module Manifold.Field
   , VectorFn (..)
   ) where
 
+import Data.Bits (shiftL)
 import GHC.Exts (Double (..), Double#)
+import GHC.Float (castWord64ToDouble)
 import Linear.V3 (V3 (..))
 
 import Manifold.Elementary
@@ -64,16 +66,16 @@ class Floating a => Field a where
   -- page). The physics uses these four; a space of one's own may use the
   -- 'Floating' functions, which are the platform's.
   sinF :: a -> a
-  sinF = sinWith (Exact floorF select constant)
+  sinF = sinWith (exact floorF select constant)
   -- | The engine's cosine (see 'sinF').
   cosF :: a -> a
-  cosF = cosWith (Exact floorF select constant)
+  cosF = cosWith (exact floorF select constant)
   -- | The engine's arctangent (see 'sinF').
   atanF :: a -> a
-  atanF = atanWith (Exact floorF select constant)
+  atanF = atanWith (exact floorF select constant)
   -- | The engine's exponential (see 'sinF').
   expF :: a -> a
-  expF = expWith (Exact floorF select constant)
+  expF = expWith (exact floorF select constant)
 
   -- | A scalar function's value at this scalar. 'Double' overrides it to
   -- call the function's compiled 'evalRaw' instead of its polymorphic
@@ -122,11 +124,17 @@ sinDouble, cosDouble, atanDouble, expDouble :: Double -> Double
 sinDouble = sinWith doubleExact
 cosDouble = cosWith doubleExact
 atanDouble = atanWith doubleExact
-expDouble = expWith doubleExact
+-- one multiplication by 2^n where the result is normal ('expParts'): the
+-- bits 'expWith' gives, without its walk over the bits of n
+expDouble x =
+  let (series, n) = expParts doubleExact x
+  in if n > -1000 && n < 1000
+       then series * castWord64ToDouble (fromIntegral (truncate n + 1023 :: Int) `shiftL` 52)
+       else expWith doubleExact x
 
 -- | 'Exact' at 'Double'.
 doubleExact :: Exact Double
-doubleExact = Exact c_floor (\c t e -> if c > 0 then t else e) id
+doubleExact = Exact c_floor (\c t e -> if c > 0 then t else e) id hornerVector
 {-# INLINE doubleExact #-}
 
 -- | The angle of the point @(x, y)@, in @(−π, π]@, by half-angle formulas

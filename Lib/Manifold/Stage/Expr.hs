@@ -39,7 +39,7 @@ import Data.Word (Word64)
 import GHC.Float (castDoubleToWord64, castWord64ToDouble)
 import System.IO.Unsafe (unsafePerformIO)
 
-import Manifold.Elementary (Exact (..), atanWith, cosWith, expWith, sinWith)
+import Manifold.Elementary (atanWith, cosWith, exact, expWith, sinWith)
 import Manifold.Field
 
 -- | The one-operand operations: the scalar class's, 'Floor' and the
@@ -247,7 +247,7 @@ expandElementary :: [E] -> [E]
 expandElementary roots = reverse (fst (foldl' root ([], IM.empty) roots))
   where
     root (acc, memo) r = let (e, memo') = go memo (nodeId r) in (e : acc, memo')
-    exact = Exact floorF select constant
+    ops = exact floorF select constant
     go memo i = case IM.lookup i memo of
       Just e -> (e, memo)
       Nothing ->
@@ -269,8 +269,8 @@ expandElementary roots = reverse (fst (foldl' root ([], IM.empty) roots))
       where
         rebuild n = if n == nodeById i then E i else intern n
         expand op a = case op of
-          SinF -> sinWith exact a
-          CosF -> cosWith exact a
-          AtanF -> atanWith exact a
-          ExpF -> expWith exact a
+          SinF -> sinWith ops a
+          CosF -> cosWith ops a
+          AtanF -> atanWith ops a
+          ExpF -> expWith ops a
           _ -> rebuild (Un op (nodeId a))
