@@ -27,7 +27,9 @@ import Manifold.Bench
 import Manifold.Build
 import Manifold.Compile (dumpStep)
 import Manifold.Engine
+import Manifold.Golden
 import Manifold.Scene
+import Manifold.StateHash (showHash)
 
 data Command
   = Spaces Bool
@@ -35,8 +37,9 @@ data Command
   | Build FilePath
   | DumpStep String
   | Serve Int FilePath
-  | Sim FilePath Int Int (Maybe FilePath)
+  | Sim FilePath Int Int (Maybe FilePath) Bool
   | Bench BenchArgs
+  | Hashes (Maybe Int) Bool (Maybe FilePath)
 
 -- | @manifold bench@'s options, as given (checked by 'bench').
 data BenchArgs = BenchArgs
@@ -72,7 +75,8 @@ commandParser = hsubparser
  <> command "sim" (info (Sim <$> strArgument (metavar "SCENE" <> help "Scene JSON file (- for standard input)")
                                  <*> option auto (long "steps" <> metavar "K" <> help "Steps to simulate")
                                  <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)")
-                                 <*> optional (strOption (long "save" <> metavar "FILE" <> help "Also write the scene as it is after the last step to FILE (the format sim reads, with the contacts' impulses), to go on from there later")))
+                                 <*> optional (strOption (long "save" <> metavar "FILE" <> help "Also write the scene as it is after the last step to FILE (the format sim reads, with the contacts' impulses), to go on from there later"))
+                                 <*> switch (long "hash" <> help "Print only the hash of the world's state after the last step (16 hex digits; the page's window.manifold.hash() gives the same for the same run)"))
                        (progDesc "Simulate a scene headless and print the bodies' states as JSON"))
  <> command "bench" (info (fmap Bench $ BenchArgs <$> strOption (long "spaces" <> metavar "A,B" <> value (intercalate "," (map spaceName benchSpaces)) <> help "Spaces (default: plane, sphere, torus, trumpet, projective-plane, rectangle)")
                                    <*> strOption (long "sizes" <> metavar "N,M" <> value (intercalate "," (map show benchSizes)) <> help "Body counts (default 10,100,300,1000,3000)")
@@ -88,6 +92,10 @@ commandParser = hsubparser
                                    <*> optional (option auto (long "iterations" <> metavar "K" <> help "Solver iterations a sub-step from the warm-up on, instead of the scenes'"))
                                    <*> optional (option auto (long "slop" <> metavar "F" <> help "The contacts' slop from the warm-up on, as a fraction of the smaller body's size (default: the engine's)")))
                        (progDesc "Time the native engine's step on scenes of growing size"))
+ <> command "hashes" (info (Hashes <$> optional (option auto (long "steps" <> metavar "K" <> help "Run every scene K steps instead of its own number"))
+                                    <*> switch (long "generic" <> help "Run the generic step even where the space has a compiled one")
+                                    <*> optional (strOption (long "scenes" <> metavar "DIR" <> help "Write the golden scenes as DIR/NAME.json (the format sim reads) instead of running them")))
+                       (progDesc "Run the golden scenes (every space's default scene, the benchmark piles) and print each one's name, steps and state hash: the lines of test/golden/hashes"))
  <> command "dump-step" (info (DumpStep <$> strArgument (metavar "SPACE" <> help ("One of: " ++ intercalate ", " spaceNames)))
         (progDesc "Print a space's compiled native step as Haskell, for reading (the library splices the same code)"))
  <> command "serve" (info (Serve <$> port <*> webDir) (progDesc "Serve the page (web/) on 127.0.0.1 and print its URL"))
@@ -121,8 +129,9 @@ main = do
         Right () -> putStrLn ("wrote " ++ show (length files) ++ " files to " ++ dir)
     DumpStep name -> either usageError (putStr . dumpStep) (findSpace name)
     Serve p dir -> serve p dir
-    Sim path steps every save -> simulate path steps every save
+    Sim path steps every save hash -> simulate path steps every save hash
     Bench args -> bench args
+    Hashes steps generic dir -> hashes steps generic dir
 
 -- | A one-line error and exit code 2.
 usageError :: String -> IO a
@@ -188,10 +197,11 @@ geodesic a = do
       putStrLn ("end: " ++ unwords (map show (v3List end)))
       putStrLn ("endDir: " ++ unwords (map show (v3List endDir)))
 
--- | Run a scene and print frames; on any problem, a message and exit code 2,
--- and nothing on standard output.
-simulate :: FilePath -> Int -> Int -> Maybe FilePath -> IO ()
-simulate path steps every save = do
+-- | Run a scene and print frames (or, with @hash@, only the state's hash at
+-- the end); on any problem, a message and exit code 2, and nothing on
+-- standard output.
+simulate :: FilePath -> Int -> Int -> Maybe FilePath -> Bool -> IO ()
+simulate path steps every save hash = do
   when (steps < 0) (usageError "--steps: must not be negative")
   when (every < 1) (usageError "--every: must be at least 1")
   forM_ save $ \out -> do
@@ -213,7 +223,7 @@ simulate path steps every save = do
       run k acc
         | k > steps = pure (reverse acc)
         | otherwise = do
-            f <- if k `mod` every == 0 || k == steps then (: []) <$> frame k else pure []
+            f <- if not hash && (k `mod` every == 0 || k == steps) then (: []) <$> frame k else pure []
             when (k < steps) (stepNative w)
             run (k + 1) (f ++ acc)
   frames <- run 0 []
@@ -222,9 +232,29 @@ simulate path steps every save = do
     final <- sceneOfWorld scene w >>= either usageError pure
     written <- try (BL.writeFile out (A.encode (sceneJSON final))) :: IO (Either IOException ())
     either (\e -> usageError ("--save: " ++ show e)) pure written
-  BL.putStrLn (A.encode (A.object
-    [ "space" A..= spaceName (sceneSpace scene), "dt" A..= pDt (sceneParams scene)
-    , "warnings" A..= warnings, "frames" A..= frames ]))
+  if hash
+    then stateHash w >>= putStrLn . showHash
+    else BL.putStrLn (A.encode (A.object
+      [ "space" A..= spaceName (sceneSpace scene), "dt" A..= pDt (sceneParams scene)
+      , "warnings" A..= warnings, "frames" A..= frames ]))
+
+-- | The golden runs' hashes, a line each as they finish (or, with a
+-- directory, their scenes written there).
+hashes :: Maybe Int -> Bool -> Maybe FilePath -> IO ()
+hashes steps generic dir = do
+  when (maybe False (< 0) steps) (usageError "--steps: must not be negative")
+  case dir of
+    Just d -> do
+      there <- doesDirectoryExist d
+      unless there (usageError ("--scenes: the directory " ++ d ++ " does not exist"))
+      forM_ goldenRuns $ \run -> do
+        let file = d </> (grName run ++ ".json")
+        BL.writeFile file (A.encode (sceneJSON (grScene run)))
+        putStrLn file
+    Nothing -> forM_ goldenRuns $ \run -> do
+      let run' = maybe run (\k -> run { grSteps = k }) steps
+      r <- runHash generic (grSteps run') (grScene run')
+      either (\e -> usageError (grName run ++ ": " ++ e)) (\h -> putStrLn (goldenLine run' h) >> hFlush stdout) r
 
 -- | The native benchmark: progress on standard error, a table or JSON on
 -- standard output.

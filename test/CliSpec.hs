@@ -224,11 +224,11 @@ spec = do
               , (["sim", file, "--steps", "5", "--save", dir </> "missing" </> "out.json"], "--save: the directory") ] $ \(args, message) -> do
           (c, o, e) <- run args
           (args, c, o, message `isInfixOf` e, length (lines e)) `shouldBe` (args, ExitFailure 2, "", True, 1)
-    it "--save writes the scene after the last step, and running it on is running on: 200 + 100 steps of a pile are 300 steps, bit for bit" $
-      withSystemTempDirectory "manifold-sim" $ \dir -> do
+    it "--save writes the scene after the last step, and running it on is running on: 200 + 100 steps of a pile are 300 steps, bit for bit, flat or curved" $
+      forM_ [rectangle, sphere] $ \sp -> withSystemTempDirectory "manifold-sim" $ \dir -> do
         let file = dir </> "scene.json"
             mid = dir </> "mid.json"
-        BL.writeFile file (A.encode (sceneJSON (benchScene rectangle 100)))
+        BL.writeFile file (A.encode (sceneJSON (benchScene sp 100)))
         (code1, _, _) <- run ["sim", file, "--steps", "200", "--every", "200", "--save", mid]
         (code2, split, _) <- run ["sim", mid, "--steps", "100", "--every", "100"]
         (code3, whole, _) <- run ["sim", file, "--steps", "300", "--every", "300"]
@@ -238,6 +238,26 @@ spec = do
         length (concatMap bsImpulses (sceneBodies saved)) `shouldSatisfy` (> 100)
         lastBodies split `shouldBe` lastBodies whole
         lastBodies whole `shouldSatisfy` either (const False) (const True)
+        (code4, hashSplit, _) <- run ["sim", mid, "--steps", "100", "--hash"]
+        (code5, hashWhole, _) <- run ["sim", file, "--steps", "300", "--hash"]
+        (code4, code5, hashSplit) `shouldBe` (ExitSuccess, ExitSuccess, hashWhole)
+    it "--hash prints only the state's hash: the golden file's for a golden scene, another one step later" $
+      withSystemTempDirectory "manifold-sim" $ \dir -> do
+        (code, _, _) <- run ["hashes", "--scenes", dir]
+        code `shouldBe` ExitSuccess
+        golden <- lines <$> readFile "test/golden/hashes"
+        let wanted = [ (name, steps, hash) | l <- golden, [name, steps, hash] <- [words l], name `elem` ["torus-default", "funnel-default"] ]
+        length wanted `shouldBe` 2
+        forM_ wanted $ \(name, steps, hash) -> do
+          (c, out, err) <- run ["sim", dir </> (name ++ ".json"), "--steps", steps, "--hash"]
+          (c, err, out) `shouldBe` (ExitSuccess, "", BL.fromStrict (BC.pack (hash ++ "\n")))
+          (_, later, _) <- run ["sim", dir </> (name ++ ".json"), "--steps", show (read steps + 1 :: Int), "--hash"]
+          later `shouldNotBe` out
+    it "hashes refuses bad input with exit code 2 and nothing on standard output" $
+      forM_ [ (["hashes", "--steps", "-1"], "--steps: must not be negative")
+            , (["hashes", "--scenes", "/nonexistent/dir"], "--scenes: the directory") ] $ \(args, message) -> do
+        (c, o, e) <- run args
+        (args, c, o, message `isInfixOf` e, length (lines e)) `shouldBe` (args, ExitFailure 2, "", True, 1)
 
   describe "manifold dump-step and manifold bench" $ do
     it "dump-step prints a space's compiled step as Haskell: every phase and subroutine, over the world's arrays" $ do

@@ -10,6 +10,7 @@ import qualified BodySpec
 import qualified CliSpec
 import qualified EngineSpec
 import qualified FlatSpec
+import qualified GoldenSpec
 import qualified ImpSpec
 import qualified PhysicsSpec
 import qualified ReadmeExampleSpec
@@ -32,6 +33,7 @@ main = do
     describe "Physics" PhysicsSpec.spec
     describe "Solver" SolverSpec.spec
     FlatSpec.spec
+    GoldenSpec.spec
     ReadmeExampleSpec.spec
     -- the allocation guards (alone: cabal test --test-options='-m performance')
     describe "performance" EngineSpec.performanceSpec

@@ -33,6 +33,9 @@ declare namespace Manifold {
     v?: Vec3;
     angle?: number;
     omega?: number;
+    /** a saved body's frame, both or neither: the body is restored exactly as saved (see docs/scenes.md) */
+    axis?: Vec3;
+    normal?: Vec3;
     impulses?: Impulse[];
   }
   /** A body as the page gives it back (bodies(), scene()): every key. */
@@ -43,8 +46,12 @@ declare namespace Manifold {
     static: boolean;
     p: Vec3;
     v: Vec3;
+    /** from the axis the body has carried along */
     angle: number;
     omega: number;
+    /** the axis the body has carried along (a unit tangent) and the surface's normal at p */
+    axis: Vec3;
+    normal: Vec3;
     /** present when the body remembers contact impulses */
     impulses?: Impulse[];
   }
@@ -179,7 +186,7 @@ declare namespace Manifold {
   /** The world's counters and results, slots of the array meta. */
   type MetaName =
     | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
-    | "lastAdded" | "picked" | "pickedSign" | "placementAngle";
+    | "lastAdded" | "picked" | "pickedSign";
   /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
   type ParamName =
     | "dt" | "gravityOn" | "substeps" | "iterations" | "friction" | "restitution" | "contactHertz" | "dampingRatio"
@@ -226,6 +233,10 @@ declare namespace Manifold {
     /** where step k (1 … steps) along direction d sits among a body's vertices (0 is the centre) */
     vertexIndex: (d: number, k: number) => number;
     mouse: Record<MouseField, number>;
+    /** the state's hash: FNV-1a over these arrays' first (meta counter × numbers a row) numbers, in order */
+    hashed: [ArrayName, MetaName, number][];
+    /** why a restored body was refused (addBody's -2) */
+    frameMisfit: string;
     defaults: Record<ParamName, number>;
     /** the step's phases in order, for the benchmarks and profiles */
     phases: [string, Procedure][];
@@ -235,12 +246,10 @@ declare namespace Manifold {
     step: Procedure;
     /** the bodies' polygons again, from their positions and axes */
     polygonise: Procedure;
-    /** (arrays, shape code (0 circle, 4 square, else the sides), size, density, static 0/1, px, py, pz, vx, vy, vz, angle, omega): meta lastAdded, -1 if refused */
+    /** (arrays, shape code (0 circle, 4 square, else the sides), size, density, static 0/1, px, py, pz, vx, vy, vz, angle, omega, restore 0/1, ax, ay, az, nx, ny, nz): meta lastAdded, -1 if refused, -2 if a restored body's axis and normal do not fit (frameMisfit says why) */
     addBody: Procedure;
     /** (arrays, index): the last body takes the index */
     removeBody: Procedure;
-    /** (arrays, index): meta placementAngle, the angle a scene saves */
-    placementAngle: Procedure;
     /** (arrays, qx, qy, qz): meta picked (-1: none) and pickedSign */
     pickBody: Procedure;
     /** (arrays, index, sign, qx, qy, qz, frequency, damping, maxForce): the mouse joint holds the body at q */
@@ -419,6 +428,8 @@ declare namespace Manifold {
     /** n physics steps now (default 1); the body count */
     step(n?: number): number;
     bodies(): Body[];
+    /** the hash of the world's state, 16 hex digits: what `manifold sim --hash` prints for the same run */
+    hash(): string;
     pause(): void;
     resume(): void;
     simulation(): Simulation;

@@ -8,6 +8,7 @@ module Manifold.Engine
   , newWorldUsing
   , CompiledStep
   , addBody
+  , restoreBody
   , stepNative
   , stepPhasesNative
   , genericStep
@@ -25,10 +26,10 @@ module Manifold.Engine
   , warningCount
   , readBody
   , BodyState (..)
-  , placementAngleOf
   , Impulse (..)
   , rememberedImpulses
   , restoreImpulses
+  , stateHash
   ) where
 
 import qualified Data.Vector.Unboxed.Mutable as MV
@@ -45,6 +46,8 @@ import Manifold.Population
 import Manifold.Step (step, stepPhases)
 import Manifold.World
 import Data.Maybe (isJust, listToMaybe)
+import Data.Word (Word64)
+import Manifold.StateHash (HashedPart (..), fnv1a64, hashedParts)
 
 -- | A world run natively: its space, its arrays' layout and the arrays
 -- (the state, as "Manifold.World" lays it out; the page's engine holds the
@@ -86,7 +89,7 @@ data BodyInit = BodyInit
   , biStatic :: Bool -- ^ a fixed body: it pushes and is never pushed
   , biPos :: V3 Double -- ^ projected onto the surface
   , biVel :: V3 Double -- ^ projected onto the tangent plane
-  , biAngle :: Double -- ^ from the axis the body starts with ('Manifold.Surface.referenceAxis')
+  , biAngle :: Double -- ^ from the axis the body starts with ('Manifold.Surface.referenceAxis'), or from the saved axis ('restoreBody')
   , biOmega :: Double -- ^ angular velocity about the normal
   }
 
@@ -105,14 +108,27 @@ contactCount = metaValue ContactCount
 -- the tangent plane; its axis is the tangent direction nearest to x (or z).
 -- Returns the body's index, or why it could not be added.
 addBody :: NativeWorld -> BodyInit -> IO (Either String Int)
-addBody w b = do
+addBody w b = addBodyFramed w b Nothing
+
+-- | Add a body as a saved scene holds it, with the axis it carried and its
+-- normal: restored bit for bit, its position and velocity as given
+-- ('Manifold.Population.addBodyWith'), so that a saved run goes on as it
+-- would have. Returns the body's index, or why it could not be added.
+restoreBody :: NativeWorld -> BodyInit -> (V3 Double, V3 Double) -> IO (Either String Int)
+restoreBody w b frame = addBodyFramed w b (Just frame)
+
+-- | 'addBody', or 'restoreBody' with a frame.
+addBodyFramed :: NativeWorld -> BodyInit -> Maybe (V3 Double, V3 Double) -> IO (Either String Int)
+addBodyFramed w b frame = do
   let Outline outline = shapeOutline (biShape b)
+      (restore, axis, normal) = maybe (0, V3 0 0 0, V3 0 0 0) (\(a, n) -> (1, a, n)) frame
       args = BodyArgs (biSize b) (biDensity b) (if biStatic b then 1 else 0)
-                      (biPos b) (biVel b) (biAngle b) (biOmega b)
+                      (biPos b) (biVel b) (biAngle b) (biOmega b) restore axis normal
   runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) outline args)
   i <- metaValue LastAdded w
   n <- bodyCount w
   pure $ if i >= 0 then Right i
+    else if i == -2 then Left frameMisfit
     else if n >= capacity (nwLayout w) then Left ("the world is full (capacity " ++ show (capacity (nwLayout w)) ++ ")")
     else Left "the position does not project onto the surface (the field's gradient vanishes there)"
 
@@ -184,7 +200,20 @@ data BodyState = BodyState
   , bsAngle :: Double -- ^ from 'bsAxis'
   , bsOmega :: Double -- ^ angular velocity about the normal
   , bsAxis :: V3 Double -- ^ the tangent axis the body carries along
+  , bsNormal :: V3 Double -- ^ the surface's unit normal at the centre, as the step keeps it
   } deriving Show
+
+-- | The hash of the world's state ("Manifold.StateHash"): what
+-- @manifold sim --hash@ prints and the page's @window.manifold.hash()@
+-- gives for the same run.
+stateHash :: NativeWorld -> IO Word64
+stateHash w = do
+  numbers <- mapM part hashedParts
+  pure (fnv1a64 (concat numbers))
+  where
+    part (HashedPart arrayOf rows stride) = do
+      n <- metaValue rows w
+      mapM (MV.read (arrayOf (nwArrays w))) [0 .. n * stride - 1]
 
 -- | Body @i@'s state, as the world's arrays hold it now.
 readBody :: NativeWorld -> Int -> IO BodyState
@@ -193,14 +222,7 @@ readBody w i = do
       r3 arr = V3 <$> MV.read arr (3 * i) <*> MV.read arr (3 * i + 1) <*> MV.read arr (3 * i + 2)
       slot :: Slot -> IO Double
       slot k = MV.read (wScalars a) (scalarSlots * i + fromEnum k)
-  BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> slot Angle <*> slot Omega <*> r3 (wAxis a)
-
--- | The angle that places body @i@'s outline where it is now (see
--- 'placementAngle'): a scene's @angle@.
-placementAngleOf :: NativeWorld -> Int -> IO Double
-placementAngleOf w i = do
-  runNative (placementAngle (nwSpace w) (nwArrays w) (fromIntegral i))
-  MV.read (wMeta (nwArrays w)) (fromEnum PlacementAngle)
+  BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> slot Angle <*> slot Omega <*> r3 (wAxis a) <*> r3 (wNormal a)
 
 -- | A contact row's impulses as the world remembers them after a step, to
 -- warm start the same contact (by its key) in the next.

@@ -7,12 +7,12 @@ module Manifold.Population
   ( BodyArgs (..)
   , addBodyWith
   , removeBody
-  , placementAngle
+  , frameMisfit
   ) where
 
 import Linear.Metric (dot, norm)
-import Linear.V3 (V3 (..), cross)
-import Linear.Vector ((*^))
+import Linear.V3 (V3 (..))
+import Linear.Vector ((*^), (^-^))
 
 import Manifold.Body (PolygonParams (..), massIntegrals)
 import Manifold.Field
@@ -28,50 +28,96 @@ data BodyArgs s = BodyArgs
   , baStatic :: s -- ^ 1 for a static body, 0 otherwise
   , baPos :: V3 s
   , baVel :: V3 s
-  , baAngle :: s
+  , baAngle :: s -- ^ from the axis: the reference axis at the position, or 'baAxis' when restoring
   , baOmega :: s
+  , baRestore :: s -- ^ 1: restore a saved body, its position, velocity, axis and normal exactly as given; 0: place it
+  , baAxis :: V3 s -- ^ the saved axis (restoring only)
+  , baNormal :: V3 s -- ^ the saved normal (restoring only)
   }
 
 -- | Add a body with the given outline (for size 1). Sets 'LastAdded' to its
 -- index, or to −1 when the world is full or the position does not project
--- onto the surface.
+-- onto the surface, or to −2 when a restored body's frame does not fit the
+-- surface ('frameFits').
+--
+-- A body placed anew is projected onto the surface, its velocity onto the
+-- tangent plane, and it starts from the reference axis there. A restored
+-- body (what a saved scene holds) takes its position, velocity, axis and
+-- normal as they were saved, bit for bit: projecting them again would move
+-- them in the last bits, and a pile would run on differently.
 addBodyWith :: Imp m => Space -> Layout -> WorldArrays (Array m) -> (Scalar m -> Scalar m) -> BodyArgs (Scalar m) -> m ()
 addBodyWith sp l w outline b = do
   count <- readMeta w BodyCount
   cap <- readMeta w Capacity
   let f = spaceField sp
-  p <- share3 (projectToSurface f (baPos b))
-  n <- share3 (unitNormal f p)
+      restoring = baRestore b
+  placed <- share3 (projectToSurface f (baPos b))
+  p <- share3 (select restoring <$> baPos b <*> placed)
+  surfaceNormal <- share3 (unitNormal f p)
+  n <- share3 (select restoring <$> baNormal b <*> surfaceNormal)
   -- every condition must hold; a NaN (a vanished gradient) fails it
   let usable = allPositive [cap - count - 0.5, norm n - 0.5, finiteness (toList3 p ++ toList3 n)]
+      fits = select restoring (frameFits f p surfaceNormal b) 1
   ifPositive usable
-    (do let i = toIndex count
-            movable = 1 - baStatic b
-            v = movable *^ tangentProjection n (baVel b)
-            axis = referenceAxis n
-        write3 (wPos w) i p
-        write3 (wVel w) i v
-        axis' <- share3 axis
-        write3 (wAxis w) i axis'
-        write3 (wNormal w) i n
-        (m, inertia) <- massIntegrals outline (baSize b) (baDensity b)
-        writeSlot w i Angle (baAngle b)
-        writeSlot w i Omega (movable * baOmega b)
-        writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
-        writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
-        writeSlot w i Size (baSize b)
-        outlineRadiiInto l outline w i (baSize b)
-        let nd = polyDirections (polygon l)
-        reach <- newRef 0
-        forEach (fromIntegral nd) $ \d -> do
-          r <- readArray (wRadii w) (fromIntegral nd * i + d)
-          modifyRef reach (maxF r)
-        readRef reach >>= writeSlot w i BoundRadius
-        writeArray (wBodyPrev w) (2 * i + 1) 0
-        writeMeta w BodyCount (count + 1)
-        writeMeta w LastAdded count
-        polygoniseBody sp l w i)
+    (ifPositive fits
+      (do let i = toIndex count
+              movable = 1 - baStatic b
+              v = movable *^ (select restoring <$> baVel b <*> tangentProjection n (baVel b))
+              axis = select restoring <$> baAxis b <*> referenceAxis n
+          write3 (wPos w) i p
+          write3 (wVel w) i v
+          axis' <- share3 axis
+          write3 (wAxis w) i axis'
+          write3 (wNormal w) i n
+          (m, inertia) <- massIntegrals outline (baSize b) (baDensity b)
+          writeSlot w i Angle (baAngle b)
+          writeSlot w i Omega (movable * baOmega b)
+          writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
+          writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
+          writeSlot w i Size (baSize b)
+          outlineRadiiInto l outline w i (baSize b)
+          let nd = polyDirections (polygon l)
+          reach <- newRef 0
+          forEach (fromIntegral nd) $ \d -> do
+            r <- readArray (wRadii w) (fromIntegral nd * i + d)
+            modifyRef reach (maxF r)
+          readRef reach >>= writeSlot w i BoundRadius
+          writeArray (wBodyPrev w) (2 * i + 1) 0
+          writeMeta w BodyCount (count + 1)
+          writeMeta w LastAdded count
+          polygoniseBody sp l w i)
+      (writeMeta w LastAdded (-2)))
     (writeMeta w LastAdded (-1))
+
+-- | 1 when a restored body's frame fits the surface at its position @p@
+-- (where the surface's unit normal is @surfaceNormal@), else 0: @p@ on the
+-- surface as a step leaves it ('onSurfaceTolerance'), and, within
+-- 'frameTolerance', the normal the surface's, the axis a unit tangent and
+-- the velocity tangent. A saved scene's bodies fit; one edited by hand
+-- (moved without its axis and normal) does not.
+frameFits :: Field a => ScalarFn -> V3 a -> V3 a -> BodyArgs a -> a
+frameFits f p surfaceNormal b =
+  let k = constant frameTolerance
+      n = baNormal b
+      axis = baAxis b
+      v = baVel b
+  in allPositive
+       [ constant onSurfaceTolerance - abs (evalFn f p)
+       , k - norm (n ^-^ surfaceNormal)
+       , k - abs (norm axis - 1)
+       , k - abs (axis `dot` n)
+       , k * (1 + norm v) - abs (v `dot` n) ]
+
+-- | Why a saved body cannot be restored (what both engines say when
+-- 'addBodyWith' sets 'LastAdded' to −2).
+frameMisfit :: String
+frameMisfit = "the saved axis and normal do not fit the surface at p (a saved body lies on the surface, its normal the surface's, its axis a unit tangent and its velocity tangent; to move a body, give p without axis and normal)"
+
+-- | How far a restored body's unit vectors may be from unit, tangent and
+-- normal: far above the rounding of a saved scene's numbers, far below any
+-- frame of another point.
+frameTolerance :: Double
+frameTolerance = 1e-6
 
 -- | 1 when every condition is positive, else 0 (NaN counts as not positive).
 allPositive :: Field a => [a] -> a
@@ -101,18 +147,3 @@ removeBody l w i = do
     active <- readMouse w MActive
     whenPositive (minF active (0.5 - abs (grabbed - toScalar i))) (writeMouse w MActive 0)
     whenPositive (minF active (0.5 - abs (grabbed - (count - 1)))) (writeMouse w MBody (toScalar i))
-
--- | The angle that, given to 'addBodyWith' with body @i@'s position, puts
--- its outline where it is now, into 'PlacementAngle': what a saved scene
--- holds. A body's angle is measured from the axis it has carried along
--- since it was placed, and a body placed anew starts from the reference
--- axis at its position; the two differ once it has moved on a curved
--- surface.
-placementAngle :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m ()
-placementAngle sp w i = do
-  p <- read3 (wPos w) i
-  n <- share3 (unitNormal (spaceField sp) p)
-  start <- share3 (referenceAxis n)
-  carried <- read3 (wAxis w) i
-  angle <- readSlot w i Angle
-  writeMeta w PlacementAngle (angle + atan2F ((n `cross` start) `dot` carried) (start `dot` carried))

@@ -44,14 +44,12 @@ pageProcedures :: Space -> Layout -> [(Procedure, [StagedArray] -> [E] -> Staged
 pageProcedures sp l = stepProcedures sp l ++
   [ (Procedure "polygonise" worldParams [], \_ _ -> polygoniseAll sp l stagedArrays)
   , (Procedure "addBody" worldParams
-      ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega"],
-      \_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega] ->
+      ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega", "restore", "ax", "ay", "az", "nx", "ny", "nz"],
+      \_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega, restore, ax, ay, az, nx, ny, nz] ->
          addBodyWith sp l stagedArrays (codeOutline code)
-           (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega))
+           (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega restore (V3 ax ay az) (V3 nx ny nz)))
   , (Procedure "removeBody" worldParams ["index"],
       \_ [i] -> removeBody l stagedArrays (toIndex i))
-  , (Procedure "placementAngle" worldParams ["index"],
-      \_ [i] -> placementAngle sp stagedArrays (toIndex i))
   , (Procedure "pickBody" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
   , (Procedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"],

@@ -23,6 +23,7 @@ import qualified Data.Aeson.Parser as AP
 import qualified Data.Attoparsec.ByteString.Char8 as AC
 import qualified Data.ByteString.Lazy as BL
 import Data.List (intercalate)
+import Data.Maybe (isJust)
 import Data.Scientific (toRealFloat)
 import qualified Data.Text as T
 import qualified Data.Vector as V
@@ -36,7 +37,10 @@ import Manifold.Spaces
 import Manifold.World (contactsPerBody, layout)
 
 -- | A body as a scene file gives it (its keys, in order: @shape@, @size@,
--- @density@, @static@, @p@, @v@, @angle@, @omega@, @impulses@).
+-- @density@, @static@, @p@, @v@, @angle@, @omega@, @axis@, @normal@,
+-- @impulses@). A body with @axis@ and @normal@ (what a saved scene holds)
+-- is restored exactly as it was saved; one without is placed: projected
+-- onto the surface, its axis the reference axis there.
 data BodySpec = BodySpec
   { bsShape :: ShapeKind
   , bsSize :: Double -- ^ circumradius, above 0
@@ -44,8 +48,9 @@ data BodySpec = BodySpec
   , bsStatic :: Bool -- ^ a fixed body (default false)
   , bsP :: V3 Double -- ^ its centre, projected onto the surface on load
   , bsV :: V3 Double -- ^ velocity (default 0), projected onto the tangent plane
-  , bsAngle0 :: Double -- ^ from the axis a body placed at 'bsP' starts with (default 0)
+  , bsAngle0 :: Double -- ^ from the axis a body placed at 'bsP' starts with, or from the saved axis (default 0)
   , bsOmega0 :: Double -- ^ angular velocity (default 0)
+  , bsFrame :: Maybe (V3 Double, V3 Double) -- ^ the saved axis and normal, both or neither
   , bsImpulses :: [Impulse] -- ^ what the body remembers of the last step's contacts it owns (warm starting)
   } deriving (Show, Eq)
 
@@ -119,7 +124,14 @@ shape path = \case
 
 body :: Path -> A.Value -> P BodySpec
 body path v = do
-  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega", "impulses"] v
+  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses"] v
+  axis <- optional path o "axis" Nothing (\at x -> Just <$> vec3 at x)
+  normal <- optional path o "normal" Nothing (\at x -> Just <$> vec3 at x)
+  frame <- case (axis, normal) of
+    (Just a, Just n) -> pure (Just (a, n))
+    (Nothing, Nothing) -> pure Nothing
+    (Just _, Nothing) -> problem (path ++ ".normal") "must be given with axis (a saved body's frame)"
+    (Nothing, Just _) -> problem (path ++ ".axis") "must be given with normal (a saved body's frame)"
   BodySpec
     <$> required path o "shape" shape
     <*> required path o "size" positive
@@ -129,6 +141,7 @@ body path v = do
     <*> optional path o "v" (V3 0 0 0) vec3
     <*> optional path o "angle" 0 number
     <*> optional path o "omega" 0 number
+    <*> pure frame
     <*> optional path o "impulses" [] impulses
 
 -- | A body's remembered contact impulses: @[[key, normal, friction], …]@.
@@ -188,6 +201,7 @@ sceneJSON s = A.object
       [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b
       , "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
       , "angle" A..= bsAngle0 b, "omega" A..= bsOmega0 b ]
+      ++ concat [ ["axis" A..= v3 a, "normal" A..= v3 n] | Just (a, n) <- [bsFrame b] ]
       ++ [ "impulses" A..= [[impulseKey r, impulseNormal r, impulseFriction r] | r <- bsImpulses b] | not (null (bsImpulses b)) ]
     shapeJSON = \case
       CircleShape -> A.String "circle"
@@ -213,7 +227,9 @@ loadScene extra s = do
   w <- newWorld (sceneSpace s) (layout (length (sceneBodies s) + extra))
   setParams w (sceneParams s)
   added <- forM (zip [0 :: Int ..] (sceneBodies s)) $ \(k, b) ->
-    either (Left . (("$.bodies[" ++ show k ++ "].p: ") ++)) Right <$> addBody w (bodyInit b)
+    let field = if isJust (bsFrame b) then ".axis: " else ".p: "
+    in either (Left . (("$.bodies[" ++ show k ++ "]" ++ field) ++)) Right
+         <$> maybe (addBody w (bodyInit b)) (restoreBody w (bodyInit b)) (bsFrame b)
   case sequence added of
     Left e -> pure (Left e)
     Right _ -> fmap (const w) . either (Left . ("$.bodies: " ++)) Right
@@ -221,11 +237,11 @@ loadScene extra s = do
 
 -- | The scene as the world now has it: the scene's bodies (which the world
 -- must hold in the scene's order: as 'loadScene' made it, none added or
--- removed since) where they are now, moving as they now move. A body's
--- angle is measured from the axis it has carried along since it was
--- placed; the saved angle is measured from the axis a body placed here
--- starts with, so that loading the scene puts every outline where it is.
--- Each body keeps what it remembers of the last step's contacts.
+-- removed since) where they are now, moving as they now move, each with
+-- the axis it has carried along and its normal (its angle measured from
+-- that axis), so that loading the scene restores every body bit for bit
+-- and the run goes on as it would have. Each body keeps what it remembers
+-- of the last step's contacts.
 sceneOfWorld :: Scene -> NativeWorld -> IO (P Scene)
 sceneOfWorld s w = do
   n <- bodyCount w
@@ -235,7 +251,7 @@ sceneOfWorld s w = do
     else do
       bodies <- forM (zip [0 ..] specs) $ \(i, spec) -> do
         st <- readBody w i
-        angle <- placementAngleOf w i
         remembered <- rememberedImpulses w i
-        pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = angle, bsOmega0 = bsOmega st, bsImpulses = remembered }
+        pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = bsAngle st, bsOmega0 = bsOmega st
+                  , bsFrame = Just (bsAxis st, bsNormal st), bsImpulses = remembered }
       pure (Right s { sceneBodies = bodies })

@@ -64,6 +64,7 @@ module Manifold.World
   , polygoniseBody
   , hasConstantGradient
   , toList3
+  , onSurfaceTolerance
   , outlineRadiiInto
   ) where
 
@@ -140,7 +141,6 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos 
 
 -- | The world's counters.
 data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
-  | PlacementAngle
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).

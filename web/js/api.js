@@ -79,6 +79,8 @@ var ManifoldWebApi = (function (W) {
       },
       // the bodies in the scene format
       bodies: function () { return state.world ? state.world.bodies() : []; },
+      // the hash of the world's state (16 hex digits): manifold sim --hash prints the same for the same run
+      hash: function () { return P.requireWorld().hash(); },
       // the comparison view (setSpace("compare-torus")), or null: both worlds' bodies,
       // the held pane, frames drawn, the curvature note
       comparison: function () {

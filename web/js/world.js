@@ -30,8 +30,8 @@ var ManifoldWebWorld = (function (W) {
   // The keys that set engine parameters, with the values they take, are
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
   function sceneKeys() { return W.Manifold.sceneKeys; }
-  /** @typedef {Required<Manifold.SceneBody>} ParsedBody */
-  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "impulses"];
+  /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal">> & Pick<Manifold.SceneBody, "axis" | "normal">} ParsedBody */
+  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses"];
 
   class SceneError extends Error {
     /** @param {string} message */
@@ -135,7 +135,12 @@ var ManifoldWebWorld = (function (W) {
   function parseBody(v, path) {
     path = path || "body";
     const o = object(path, BODY_KEYS, v);
-    return {
+    // a saved body's frame: both or neither (Manifold.Scene)
+    const axis = optional(path, o, "axis", null, vec3), normal = optional(path, o, "normal", null, vec3);
+    if (axis && !normal) problem(path + ".normal", "must be given with axis (a saved body's frame)");
+    if (normal && !axis) problem(path + ".axis", "must be given with normal (a saved body's frame)");
+    /** @type {ParsedBody} */
+    const b = {
       shape: required(path, o, "shape", shape),
       size: required(path, o, "size", positive),
       density: optional(path, o, "density", 1, positive),
@@ -146,6 +151,11 @@ var ManifoldWebWorld = (function (W) {
       omega: optional(path, o, "omega", 0, number),
       impulses: optional(path, o, "impulses", [], impulses),
     };
+    if (axis && normal) {
+      b.axis = axis;
+      b.normal = normal;
+    }
+    return b;
   }
 
   // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
@@ -324,9 +334,13 @@ var ManifoldWebWorld = (function (W) {
         if (this.capacity >= most) throw new Error("the world is full (" + most + " bodies)");
         this.allocate(Math.min(most, this.capacity * 2), true);
       }
+      // a saved body (axis and normal given) is restored as saved
+      const axis = b.axis || [0, 0, 0], normal = b.normal || [0, 0, 0];
       E.addBody.apply(null, this.args([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
-        b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega]));
+        b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega, b.axis ? 1 : 0,
+        axis[0], axis[1], axis[2], normal[0], normal[1], normal[2]]));
       const i = this.meta("lastAdded");
+      if (i === -2) throw new Error(E.frameMisfit);
       const a = this.a;
       // the engine refuses a point it cannot project; it lets through a few
       // where the gradient is NaN (on an axis, at a centre): a body whose
@@ -428,10 +442,10 @@ var ManifoldWebWorld = (function (W) {
 
     stride() { return Object.keys(this.engine.slots).length; }
 
-    // The bodies in the scene format: the angle that places each outline
-    // where it is (the engine's placementAngle: the angle is kept from the
-    // axis a body carries, a body placed anew starts from the reference axis
-    // there), and what each remembers of the last step's contacts.
+    // The bodies in the scene format: each with the axis it has carried along
+    // and its normal (its angle measured from that axis), which loading
+    // restores bit for bit (Manifold.Scene), and what each remembers of the
+    // last step's contacts.
     /** @returns {Manifold.Body[]} */
     bodies() {
       const a = this.a, E = this.engine, S = E.slots, k = this.stride(), out = [];
@@ -439,7 +453,6 @@ var ManifoldWebWorld = (function (W) {
       const v3 = function (arr, i) { return [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]]; };
       for (let i = 0; i < this.count(); i++) {
         const info = this.info[i];
-        E.placementAngle.apply(null, this.args([i]));
         /** @type {Manifold.Body} */
         const b = {
           shape: copyShape(info.shape),
@@ -448,8 +461,10 @@ var ManifoldWebWorld = (function (W) {
           static: info.static,
           p: v3(a.pos, i),
           v: v3(a.vel, i),
-          angle: this.meta("placementAngle"),
+          angle: a.scalars[i * k + S.angle],
           omega: a.scalars[i * k + S.omega],
+          axis: v3(a.axis, i),
+          normal: v3(a.normal, i),
         };
         const remembered = this.impulses(i);
         if (remembered.length) b.impulses = remembered;
@@ -523,7 +538,7 @@ var ManifoldWebWorld = (function (W) {
           try {
             this.place(parseBody(b, "body"));
           } catch (e) {
-            throw new SceneError("$.bodies[" + k + "].p: " + e.message);
+            throw new SceneError("$.bodies[" + k + "]" + ("axis" in b ? ".axis: " : ".p: ") + e.message);
           }
         }, this);
         const remembered = scene.bodies.map(function (b) { return b.impulses || []; });
@@ -618,6 +633,30 @@ var ManifoldWebWorld = (function (W) {
       this.added--;
       this.remove(i);
       return -1;
+    }
+
+    // The hash of the world's state, 16 hex digits: FNV-1a (64 bits) over the
+    // bit patterns, least significant byte first, of the rows the engine
+    // lists in `hashed` (Manifold.StateHash; `manifold sim --hash` computes
+    // the same; -0 counts as 0). The 64-bit product is taken in 32-bit
+    // halves: the prime is 2^40 + 435.
+    /** @returns {string} */
+    hash() {
+      const E = this.engine, bytes = new DataView(new ArrayBuffer(8)), TWO32 = 4294967296;
+      let hi = 0xcbf29ce4, lo = 0x84222325;
+      for (const [name, rows, stride] of E.hashed) {
+        const arr = this.a[name], n = this.meta(rows) * stride;
+        for (let i = 0; i < n; i++) {
+          bytes.setFloat64(0, arr[i] === 0 ? 0 : arr[i], true);
+          for (let b = 0; b < 8; b++) {
+            lo = (lo ^ bytes.getUint8(b)) >>> 0;
+            const low = lo * 435;
+            hi = (hi * 435 + Math.floor(low / TWO32) + ((lo << 8) >>> 0)) % TWO32;
+            lo = low % TWO32;
+          }
+        }
+      }
+      return (hi.toString(16).padStart(8, "0") + lo.toString(16).padStart(8, "0"));
     }
 
     // Contacts, warnings, dropped contacts: the engine's counters.

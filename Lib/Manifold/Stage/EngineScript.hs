@@ -22,6 +22,8 @@ import Manifold.Stage.Code (Function (..))
 import Manifold.Stage.Imp (Procedure (..), stageFunctions)
 import Manifold.Stage.Expr (sym)
 import Manifold.Stage.Print (FnType (..), Target (..), printFunction, printProcedure)
+import Manifold.Population (frameMisfit)
+import Manifold.StateHash (HashedPart (..), hashedParts)
 import Manifold.World
 
 -- | The engine's functions for one space, as JavaScript (the step, which
@@ -75,11 +77,14 @@ engineObject l subroutines =
     , "  // where step k (1 .. steps) along direction d sits among a body's vertices (0 is the centre)"
     , "  vertexIndex: " ++ dropWhileEnd (== '\n') (printFunction JavaScript "vertexIndex" (FnType ["d", "k"] False) [vertexIndex (polygon l) (sym "d") (sym "k")]) ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","
+    , "  // the state's hash (Manifold.StateHash): FNV-1a over [array, the meta counting its rows, numbers a row]"
+    , "  hashed: [" ++ intercalate ", " [ "[" ++ show (hashedArray part arrayNames) ++ ", " ++ show (jsName (hashedRows part)) ++ ", " ++ show (hashedStride part) ++ "]" | part <- hashedParts ] ++ "],"
+    , "  frameMisfit: " ++ show frameMisfit ++ ","
     , "  defaults: { " ++ intercalate ", " [jsName k ++ ": " ++ show (paramValue defaultParams k) | k <- [minBound .. maxBound :: Param]] ++ " },"
     , "  phases: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ phaseFunction name ++ "]" | (name, _) <- stagedPhases] ++ "],"
     , "  // what the phases call, each printed once: for profiles, and for tests that optimise all of the step"
     , "  subroutines: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ name ++ "]" | name <- subroutines] ++ "],"
-    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody, placementAngle: placementAngle,"
+    , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody,"
     , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
     , "}"
     ]

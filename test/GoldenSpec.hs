@@ -1,0 +1,125 @@
+-- | The golden runs ("Manifold.Golden"): each catalogue scene, run by the
+-- compiled native step, by the generic one and by the page's engine under
+-- node, ends on the state hash test/golden/hashes holds, bit for bit; and
+-- so does a run saved halfway (as a scene file) and loaded again, in both
+-- engines, on every space.
+module GoldenSpec (spec) where
+
+import Control.Monad (forM, forM_, replicateM_)
+import qualified Data.Aeson as A
+import qualified Data.ByteString.Lazy.Char8 as BL
+import System.FilePath ((</>))
+import System.IO.Temp (withSystemTempDirectory)
+import System.Process (readProcess)
+import Test.Hspec
+
+import Manifold.Build (generatedFiles, writeGenerated)
+import Manifold.Engine (stateHash, stepNative)
+import Manifold.Golden
+import Manifold.Scene (loadScene, parseScene, sceneJSON, sceneOfWorld)
+import Manifold.Spaces (catalogue)
+import Manifold.StateHash (showHash)
+
+-- | Where the golden hashes are kept, relative to the repository.
+goldenFile :: FilePath
+goldenFile = "test/golden/hashes"
+
+-- | The golden file's lines: name, steps, hash.
+readGolden :: IO [(String, (String, String))]
+readGolden = do
+  text <- readFile goldenFile
+  pure [ (name, (steps, hash)) | l <- lines text, [name, steps, hash] <- [words l] ]
+
+-- | What to do when a hash changed: it names the command.
+changed :: String -> String -> String -> String -> String
+changed engine name want got =
+  engine ++ ": " ++ name ++ " ended on " ++ got ++ ", the golden hash is " ++ want
+    ++ " (the physics changed; if that is meant, run scripts/regolden and commit test/golden/hashes)"
+
+-- | Compare one engine's lines with the golden file.
+compareWith :: String -> [(String, String, String)] -> IO ()
+compareWith engine got = do
+  golden <- readGolden
+  map (\(name, _, _) -> name) got `shouldBe` map fst golden
+  forM_ got $ \(name, steps, hash) -> case lookup name golden of
+    Just (steps', want)
+      | steps /= steps' -> expectationFailure (engine ++ ": " ++ name ++ " ran " ++ steps ++ " steps, the golden file says " ++ steps')
+      | hash /= want -> expectationFailure (changed engine name want hash)
+      | otherwise -> pure ()
+    Nothing -> expectationFailure (engine ++ ": " ++ name ++ " is not in " ++ goldenFile ++ " (run scripts/regolden)")
+
+-- | The native engine's lines.
+nativeLines :: Bool -> IO [(String, String, String)]
+nativeLines generic = forM goldenRuns $ \run -> do
+  r <- runHash generic (grSteps run) (grScene run)
+  case r of
+    Left e -> fail (grName run ++ ": " ++ e)
+    Right h -> pure (grName run, show (grSteps run), showHash h)
+
+-- | The runs saved and continued: every space's default scene and the
+-- 300-body piles (the 1000-body ones are the same code at more bodies).
+splitRuns :: [GoldenRun]
+splitRuns = filter ((/= "1000") . reverse . takeWhile (/= '-') . reverse . grName) goldenRuns
+
+-- | Where a run is saved: after about two fifths of its steps (an odd
+-- number, mid-pile).
+splitAt' :: GoldenRun -> Int
+splitAt' run = 2 * grSteps run `div` 5 + 1
+
+-- | The native lines of the runs saved after 'splitAt'' steps, as JSON
+-- text, loaded again and run on.
+nativeSplitLines :: IO [(String, String, String)]
+nativeSplitLines = forM splitRuns $ \run -> do
+  let orFail = either (fail . ((grName run ++ ": ") ++)) pure
+  w <- loadScene 0 (grScene run) >>= orFail
+  replicateM_ (splitAt' run) (stepNative w)
+  saved <- sceneOfWorld (grScene run) w >>= orFail
+  again <- orFail (parseScene (A.encode (sceneJSON saved)))
+  w' <- loadScene 0 again >>= orFail
+  replicateM_ (grSteps run - splitAt' run) (stepNative w')
+  h <- stateHash w'
+  pure (grName run, show (grSteps run), showHash h)
+
+-- | The page's engine's lines (node running test/hashes.mjs over the
+-- generated scripts and the golden scenes written to a temporary
+-- directory), whole or saved after 'splitAt'' steps.
+pageLines :: Bool -> [GoldenRun] -> IO [(String, String, String)]
+pageLines split runs =
+  withSystemTempDirectory "manifold-golden" $ \dir -> do
+    let gen = dir </> "gen"
+    writeGenerated gen (generatedFiles catalogue)
+    forM_ runs $ \run -> BL.writeFile (dir </> (grName run ++ ".json")) (A.encode (sceneJSON (grScene run)))
+    out <- readProcess "node" (["test/hashes.mjs", gen, dir] ++
+             [ grName run ++ ":" ++ show (grSteps run) ++ (if split then ":" ++ show (splitAt' run) else "") | run <- runs ]) ""
+    pure [ (name, steps, hash) | l <- lines out, [name, steps, hash] <- [words l] ]
+
+-- | Compare the lines of some of the runs with the golden file.
+compareSome :: String -> [(String, String, String)] -> IO ()
+compareSome engine got = do
+  golden <- readGolden
+  forM_ got $ \(name, steps, hash) -> case lookup name golden of
+    Just (steps', want)
+      | steps /= steps' -> expectationFailure (engine ++ ": " ++ name ++ " ran " ++ steps ++ " steps, the golden file says " ++ steps')
+      | hash /= want -> expectationFailure (engine ++ ": " ++ name ++ ", saved and continued, ended on " ++ hash ++ ", the uninterrupted run on " ++ want)
+      | otherwise -> pure ()
+    Nothing -> expectationFailure (engine ++ ": " ++ name ++ " is not in " ++ goldenFile)
+
+spec :: Spec
+spec = describe "golden state hashes (test/golden/hashes)" $ do
+  it "lists every golden run, each once" $ do
+    golden <- readGolden
+    map fst golden `shouldBe` map grName goldenRuns
+  it "the compiled native step ends every golden run on its hash" $
+    nativeLines False >>= compareWith "compiled native step"
+  it "the generic native step ends every golden run on its hash" $
+    nativeLines True >>= compareWith "generic native step"
+  it "the page's engine (under node) ends every golden run on its hash" $
+    pageLines False goldenRuns >>= compareWith "page's engine"
+  it "a run saved as a scene and loaded again ends where the uninterrupted run does, natively, on every space" $ do
+    got <- nativeSplitLines
+    length got `shouldBe` length splitRuns
+    compareSome "native step" got
+  it "a run saved by the page (scene(), JSON) and loaded again ends where the uninterrupted run does, on every space" $ do
+    got <- pageLines True splitRuns
+    length got `shouldBe` length splitRuns
+    compareSome "page's engine" got
