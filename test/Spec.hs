@@ -10,6 +10,7 @@ import qualified BodySpec
 import qualified CliSpec
 import qualified EngineSpec
 import qualified FlatSpec
+import qualified GeodesicPathSpec
 import qualified GoldenSpec
 import qualified ImpSpec
 import qualified PhysicsSpec
@@ -25,6 +26,7 @@ main = do
     describe "Manifold.AD" ADSpec.spec
     describe "Manifold.Elementary" ElementarySpec.spec
     describe "Manifold.Surface" SurfaceSpec.spec
+    describe "Manifold.GeodesicPath" GeodesicPathSpec.spec
     describe "Manifold.Body" BodySpec.spec
     describe "manifold (command line)" CliSpec.spec
     describe "Manifold.World" EngineSpec.spec

@@ -1,7 +1,8 @@
 {-# LANGUAGE FlexibleContexts #-}
 -- | The engine as a staged program: the step's phases and the page's
 -- procedures (adding, removing, picking and grabbing bodies) over the
--- world's arrays, as "Manifold.Stage.Imp" stages them. The page's script
+-- world's arrays, and the geodesic the page's tool draws, as
+-- "Manifold.Stage.Imp" stages them. The page's script
 -- ("Manifold.Stage.EngineScript") and the compiled native step
 -- ("Manifold.Compile") are both made from these lists.
 module Manifold.Program
@@ -18,6 +19,7 @@ import Data.Foldable (toList)
 import Linear.V3 (V3 (..))
 
 import Manifold.Body
+import Manifold.GeodesicPath (walkGeodesic)
 import Manifold.Grab
 import Manifold.Population
 import Manifold.Space
@@ -57,6 +59,9 @@ pageProcedures sp l = stepProcedures sp l ++
   , (Procedure "drag" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
   , (Procedure "release" worldParams [], \_ _ -> release stagedArrays)
+  , (Procedure "geodesic" ["path"] ["px", "py", "pz", "dx", "dy", "dz", "length", "steps"],
+      \[path] [px, py, pz, dx, dy, dz, len, steps] ->
+         walkGeodesic sp path (V3 px py pz) (V3 dx dy dz) len (toIndex steps))
   ]
 
 -- | The step's phases, staged.

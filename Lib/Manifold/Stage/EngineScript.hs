@@ -22,6 +22,7 @@ import Manifold.Stage.Code (Function (..))
 import Manifold.Stage.Imp (Procedure (..), stageFunctions)
 import Manifold.Stage.Expr (sym)
 import Manifold.Stage.Print (FnType (..), Target (..), printFunction, printProcedure)
+import Manifold.GeodesicPath (PathSlot (..), pathStride)
 import Manifold.Population (frameMisfit)
 import Manifold.StateHash (HashedPart (..), hashedParts)
 import Manifold.World
@@ -85,7 +86,9 @@ engineObject l subroutines =
     , "  // what the phases call, each printed once: for profiles, and for tests that optimise all of the step"
     , "  subroutines: [" ++ intercalate ", " ["[" ++ show name ++ ", " ++ name ++ "]" | name <- subroutines] ++ "],"
     , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody,"
-    , "  pickBody: pickBody, grab: grab, drag: drag, release: release"
+    , "  // a walked geodesic (Manifold.GeodesicPath): path[0] the points walked, then per point [" ++ intercalate ", " (map jsName [minBound .. maxBound :: PathSlot]) ++ "]"
+    , "  path: { stride: " ++ show pathStride ++ ", slots: " ++ enumObj PathX ++ " },"
+    , "  pickBody: pickBody, grab: grab, drag: drag, release: release, geodesic: geodesic"
     , "}"
     ]
 
