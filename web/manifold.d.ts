@@ -204,6 +204,8 @@ declare namespace Manifold {
   type MouseField =
     | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
     | "mFrequency" | "mDamping" | "mMaxForce" | "mImpulseU" | "mImpulseW" | "mSign";
+  /** A point of a walked geodesic, `path.stride` consecutive entries after the count in path[0]. */
+  type PathField = "pathX" | "pathY" | "pathZ" | "pathBreak";
   type ContactGroup = "pairKey" | "unused" | "boundaryKey" | "selfKey" | "firstImageKey";
   /**
    * A generated procedure: it takes the engine's arrays (Engine.arrays, in
@@ -257,6 +259,10 @@ declare namespace Manifold {
     /** (arrays, qx, qy, qz): the mouse joint's target */
     drag: Procedure;
     release: Procedure;
+    /** a walked geodesic's layout (Lib/Manifold/GeodesicPath.hs): path[0] the points walked, then each point's slots */
+    path: { stride: number; slots: Record<PathField, number> };
+    /** (path, px, py, pz, dx, dy, dz, length, steps): the geodesic from p in the tangent direction of d, walked into path (length 1 + stride · (steps + 1)); it takes the one array, not the engine's */
+    geodesic: (path: Float64Array, px: number, py: number, pz: number, dx: number, dy: number, dz: number, length: number, steps: number) => void;
   }
 
   // ---- the comparison (web/gen/compare-torus.js, Lib/Manifold/Chart.hs) ----
@@ -390,6 +396,27 @@ declare namespace Manifold {
   }
 
   /** window.manifold (web/README.md, "Scripting API"). Pixels are the canvas's backing-store pixels, origin top-left. */
+  /** What a press on empty surface does (web/js/tools.js). */
+  type Tool = "grab" | "geodesic";
+  interface NewBody {
+    shape: Shape;
+    size: number;
+    density: number;
+    static: boolean;
+  }
+  /** A curve on the surface: its points, and the indices of those it jumps to (through a quotient's edge, no segment before them). */
+  interface Curve {
+    points: Vec3[];
+    breaks: number[];
+  }
+  interface Curves {
+    /** the geodesic tool's curve */
+    geodesic: Curve | null;
+    /** while a throw is dragged: the new body's centre after every step of its first second (the body alone, these parameters) */
+    preview: Curve | null;
+    /** samples held (one every 0.05 s of simulated time, 3 s kept), segments drawn, and the opacity of their oldest and newest ends (null: none) */
+    trails: { on: boolean; samples: number; segments: number; oldest: number | null; newest: number | null };
+  }
   interface Api {
     /** names of every space, in catalogue order */
     spaces(): string[];
@@ -442,6 +469,24 @@ declare namespace Manifold {
     release(): void;
     /** the held body's index, or -1 */
     grabbed(): number;
+    /** what a press on empty surface does: grab a body there, else throw a new one; or draw a geodesic */
+    tool(): Tool;
+    /** throws naming a tool that is none */
+    setTool(tool: Tool): void;
+    /** the body the Add button, a click on empty surface and a throw make (size: the space's own unless set) */
+    newBody(): NewBody;
+    /** changes some of the new body ({size: null}: the space's own again); throws naming the field of a bad value, changing nothing */
+    setNewBody(o: Partial<Omit<NewBody, "size">> & { size?: number | null }): NewBody;
+    /** adds the new body at a free point of the view; its index, or throws when no free place is found */
+    addAtView(): number;
+    /** draws the geodesic from surface point p in the tangent direction d, `length` long (default: the tool's), and returns it */
+    geodesic(p: Vec3, d: Vec3, length?: number): Curve;
+    clearGeodesic(): void;
+    /** whether every body's path over the last seconds is drawn */
+    trails(): boolean;
+    setTrails(on: boolean): void;
+    /** what is drawn over the bodies */
+    curves(): Curves;
     /** loads a scene (JSON text or value; one of another space switches to it): the body count, or rejects naming the problem */
     loadScene(json: string | Scene): Promise<number>;
     /** the current scene (what Save scene downloads) */

@@ -391,12 +391,15 @@ async function testApi(check, context, base) {
 
   // the controls
   await page.evaluate(function () { window.manifold.clear(); window.manifold.resume(); });
-  await page.click("#add-circle");
-  await page.click("#add-square");
+  await page.selectOption("#body-shape", "circle");
+  await page.click("#add-body");
+  await page.selectOption("#body-shape", "square");
+  await page.click("#add-body");
   await page.fill("#polygon-sides", "6");
-  await page.click("#add-polygon");
+  await page.selectOption("#body-shape", "polygon");
+  await page.click("#add-body");
   const added = await page.evaluate(function () { return window.manifold.bodies().map(function (b) { return b.shape; }); });
-  check("the Add circle / square / polygon buttons add bodies of those shapes",
+  check("Add makes a body of the shape chosen: circle, square, polygon of the sides given",
     JSON.stringify(added) === '["circle","square",{"polygon":6}]', JSON.stringify(added));
   await page.click("#pause");
   const paused = await page.evaluate(function () { return { p: window.manifold.simulation().paused, label: document.getElementById("pause").textContent }; });

@@ -11,7 +11,8 @@
 // resize), performance (what the running page allocates a frame: performance.mjs),
 // bodies (bodies.mjs), controls (the engine parameters' controls, made
 // from the generated scene keys, and worlds of the engine's most bodies:
-// controls.mjs), keys (the keys and the help overlay: keys.mjs), capture
+// controls.mjs), keys (the keys and the help overlay: keys.mjs), tools (the
+// geodesic tool, throws, the new body's controls, trails: tools.mjs), capture
 // (Save image and Record / Stop, their downloads: capture.mjs), errors
 // (the error paths), file (file://), hidpi (HiDPI and touch), compare
 // (compare.mjs), types (web/manifold.d.ts against the page and web/gen:
@@ -26,6 +27,7 @@ import { checkVisibleBodies, testBodies } from "./bodies.mjs";
 import { testPerformance } from "./performance.mjs";
 import { testControls } from "./controls.mjs";
 import { testKeys } from "./keys.mjs";
+import { testTools } from "./tools.mjs";
 import { testCapture } from "./capture.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
@@ -42,7 +44,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "capture", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "tools", "capture", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -260,20 +262,30 @@ async function testInteraction(context, base) {
   check("hash change #space=disc switches space and selector", viaHash.space === "disc" && viaHash.select === "disc" && viaHash.error === null,
     JSON.stringify(viaHash));
 
-  // orbit with a mouse drag, zoom with the wheel (no bodies under the pointer: a press on one grabs it)
+  // orbit with a right-drag anywhere and a left-drag off the surface, zoom with the wheel
+  // (a left press on the surface throws a body, on a body grabs it)
   await page.evaluate(function () { return window.manifold.setSpace("torus").then(function () { window.manifold.clear(); }); });
   const box = await page.locator("#view").boundingBox();
-  const before = await page.evaluate(function () { return window.manifold.camera(); });
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  await page.mouse.down();
-  await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 + 30, { steps: 4 });
-  await page.mouse.up();
-  const afterDrag = await page.evaluate(function () { return window.manifold.camera(); });
   const dist = function (c) { return Math.hypot(c.eye[0] - c.target[0], c.eye[1] - c.target[1], c.eye[2] - c.target[2]); };
-  check("dragging orbits the camera about its target (distance kept)",
-    !close(before.eye, afterDrag.eye, 1e-3) && close(before.target, afterDrag.target, 1e-9) &&
-      Math.abs(dist(before) - dist(afterDrag)) < 1e-6,
-    "eye " + before.eye.map(function (x) { return x.toFixed(3); }) + " → " + afterDrag.eye.map(function (x) { return x.toFixed(3); }));
+  const orbitDrag = async function (x, y, button) {
+    const c0 = await page.evaluate(function () { return window.manifold.camera(); });
+    await page.mouse.move(x, y);
+    await page.mouse.down({ button: button });
+    await page.mouse.move(x + 80, y + 30, { steps: 4 });
+    await page.mouse.up({ button: button });
+    const c1 = await page.evaluate(function () { return window.manifold.camera(); });
+    const bodies = await page.evaluate(function () { return window.manifold.stats().bodies; });
+    return { ok: !close(c0.eye, c1.eye, 1e-3) && close(c0.target, c1.target, 1e-9) && Math.abs(dist(c0) - dist(c1)) < 1e-6 && bodies === 0,
+      c0: c0, c1: c1, bodies: bodies };
+  };
+  const onBackground = await page.evaluate(function () { return window.manifold.pick(4, 4) === null; });
+  const right = await orbitDrag(box.x + box.width / 2, box.y + box.height / 2, "right");
+  const left = await orbitDrag(box.x + 4, box.y + 4, "left");
+  const afterDrag = left.c1;
+  check("a right-drag on the surface and a left-drag off it orbit the camera about its target (distance kept, no body thrown)",
+    onBackground && right.ok && left.ok,
+    "corner off the surface " + onBackground + "; right: eye " + right.c0.eye.map(function (x) { return x.toFixed(3); }) + " → " +
+      right.c1.eye.map(function (x) { return x.toFixed(3); }) + ", bodies " + right.bodies + "; left: bodies " + left.bodies);
   await page.mouse.wheel(0, -300);
   await page.waitForFunction(function (d0) {
     const c = window.manifold.camera();
@@ -293,13 +305,13 @@ async function testInteraction(context, base) {
     });
   };
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  await page.mouse.down();
+  await page.mouse.down({ button: "right" });
   let sawPreview = false;
   for (let i = 1; i <= 5; i++) {
     await page.mouse.move(box.x + box.width / 2 + 10 * i, box.y + box.height / 2);
     if ((await twoFrames()).preview) sawPreview = true;
   }
-  await page.mouse.up();
+  await page.mouse.up({ button: "right" });
   await page.waitForTimeout(500);
   const settled = await twoFrames();
   // previews exactly when frames are slow (the page's threshold is 40 ms; a frame
@@ -404,7 +416,7 @@ async function testInteraction(context, base) {
 }
 
 // ---- HiDPI and touch (a phone-like context): the backing store is CSS size ×
-// devicePixelRatio, picking in its pixels; one finger orbits, two fingers pinch-zoom ----
+// devicePixelRatio, picking in its pixels; one finger throws on the surface and orbits off it, two fingers pinch-zoom ----
 async function testHiDPI(browser, base) {
   const context = await browser.newContext({ viewport: { width: 360, height: 300 }, deviceScaleFactor: 2, hasTouch: true });
   const { page, errors, failure } = await openPage(context, base + "#space=sphere");
@@ -448,18 +460,28 @@ async function testHiDPI(browser, base) {
   await page.evaluate(function () { window.manifold.clear(); }); // one finger on a body would grab it
   const cam = function () { return page.evaluate(function () { return window.manifold.camera(); }); };
   const dist = function (c) { return Math.hypot(c.eye[0] - c.target[0], c.eye[1] - c.target[1], c.eye[2] - c.target[2]); };
+  const bodyCount = function () { return page.evaluate(function () { return window.manifold.stats().bodies; }); };
   const c0 = await cam();
-  await touch("touchStart", [[cx, cy]]);
-  for (let i = 1; i <= 4; i++) await touch("touchMove", [[cx + 12 * i, cy]]);
+  const bx = box.x + 6, by = box.y + 6; // off the sphere
+  const offSurface = await page.evaluate(function () { return window.manifold.pick(12, 12) === null; });
+  await touch("touchStart", [[bx, by]]);
+  for (let i = 1; i <= 4; i++) await touch("touchMove", [[bx + 12 * i, by]]);
   await touch("touchEnd", []);
   const c1 = await cam();
-  check("touch: one finger orbits", Math.abs(c1.eye[0] - c0.eye[0]) > 1e-3 && Math.abs(dist(c1) - dist(c0)) < 1e-6,
-    "eye x " + c0.eye[0].toFixed(3) + " → " + c1.eye[0].toFixed(3));
+  check("touch: one finger off the surface orbits", offSurface && Math.abs(c1.eye[0] - c0.eye[0]) > 1e-3 && Math.abs(dist(c1) - dist(c0)) < 1e-6,
+    "corner off the surface " + offSurface + ", eye x " + c0.eye[0].toFixed(3) + " → " + c1.eye[0].toFixed(3));
   await touch("touchStart", [[cx - 20, cy], [cx + 20, cy]]);
   for (let i = 1; i <= 4; i++) await touch("touchMove", [[cx - 20 - 10 * i, cy], [cx + 20 + 10 * i, cy]]);
   await touch("touchEnd", []);
   const c2 = await cam();
-  check("touch: spreading two fingers zooms in", dist(c2) < dist(c1) - 1e-3, dist(c1).toFixed(3) + " → " + dist(c2).toFixed(3));
+  const afterPinch = await bodyCount();
+  check("touch: spreading two fingers zooms in (the first finger's throw dropped)", dist(c2) < dist(c1) - 1e-3 && afterPinch === 0,
+    dist(c1).toFixed(3) + " → " + dist(c2).toFixed(3) + ", bodies " + afterPinch);
+  await touch("touchStart", [[cx, cy]]);
+  for (let i = 1; i <= 4; i++) await touch("touchMove", [[cx + 8 * i, cy]]);
+  await touch("touchEnd", []);
+  const thrown = await page.evaluate(function () { const b = window.manifold.bodies(); return b.length ? Math.hypot(b[0].v[0], b[0].v[1], b[0].v[2]) : -1; });
+  check("touch: one finger on empty surface throws a body", thrown > 0, "speed of the thrown body " + thrown);
   check("HiDPI: no console errors", errors.length === 0, errors.join("; "));
   await context.close();
 }
@@ -608,6 +630,7 @@ async function main() {
     if (partWanted("bodies")) await testBodies(check, context, server.url);
     if (partWanted("controls")) await testControls(check, context, server.url);
     if (partWanted("keys")) await testKeys(check, context, server.url);
+    if (partWanted("tools")) await testTools(check, context, server.url);
     if (partWanted("capture")) await testCapture(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) await testFileUrl(context);

@@ -36,8 +36,11 @@ try {
       m.resetScene();
       m.setSimulation({ gravity: false });
     });
-    const buttons = ["#add-circle", "#add-square", "#add-polygon"];
-    for (let k = 0; k < extra; k++) await page.click(buttons[k % 3]);
+    const shapes = ["circle", "square", "polygon"];
+    for (let k = 0; k < extra; k++) {
+      await page.selectOption("#body-shape", shapes[k % 3]);
+      await page.click("#add-body");
+    }
   }
   await page.waitForTimeout(1500); // let the stats line settle
   fs.mkdirSync(path.dirname(out), { recursive: true });

@@ -124,6 +124,29 @@ var ManifoldWebApi = (function (W) {
       release: input.releaseGrab,
       // the index of the grabbed body, or -1
       grabbed: function () { return state.world ? state.world.grabbed : -1; },
+      // ---- tools and curves (web/js/tools.js) ----
+      // what a press on empty surface does: "grab" (grab a body, else throw a new one) or "geodesic"
+      tool: function () { return MW.tools.tools.tool; },
+      setTool: MW.tools.setTool,
+      // the body the Add button, a click and a throw make: {shape, size, density, static} (size: the space's own unless set)
+      newBody: MW.tools.newBody,
+      // change some of it ({size: null}: the space's own again); throws naming the field of a bad value; returns the template
+      setNewBody: MW.tools.setNewBody,
+      // add the new body at a free point of the view; returns its index or throws
+      addAtView: scenes.addAtView,
+      // draw the geodesic from surface point p in the tangent direction d, `length` long (default: the tool's);
+      // returns {points, breaks} (breaks: indices of points the curve jumps to, through a quotient's edge)
+      geodesic: function (p, d, length) {
+        if (!MW.camera.isVec3(p) || !MW.camera.isVec3(d)) throw new TypeError("geodesic(p, d, length) expects points [x, y, z]");
+        if (length !== undefined && !(typeof length === "number" && isFinite(length) && length > 0)) throw new RangeError("geodesic's length must be a positive number");
+        MW.tools.showGeodesic(p, d, length);
+        return MW.tools.curves().geodesic;
+      },
+      clearGeodesic: MW.tools.clearGeodesic,
+      trails: function () { return MW.tools.tools.trailsOn; },
+      setTrails: MW.tools.setTrails,
+      // what is drawn over the bodies: {geodesic, preview (a throw's, a point per step), trails: {on, samples, segments}}
+      curves: MW.tools.curves,
       // load a scene (JSON text or value); a Promise of the body count, rejected with the problem
       loadScene: scenes.loadScene,
       // the current scene as a JSON value (what saveScene downloads)

@@ -18,7 +18,11 @@
       onGrid: function (/** @type {boolean} */ on) { hash.setOptions({ grid: on }); },
       onAntialias: function (/** @type {Manifold.Antialias} */ mode) { hash.setOptions({ antialias: mode }); },
       onResetView: function () { if (state.space) state.camera.set(state.space.camera); },
-      onAdd: guarded(function (/** @type {Manifold.Shape} */ shape) { scenes.addAtView(shape); }),
+      onAdd: guarded(function () { scenes.addAtView(); }),
+      onNewBody: guarded(MW.tools.setNewBody),
+      onTool: guarded(MW.tools.setTool),
+      onGeodesicLength: guarded(MW.tools.setGeodesicLength),
+      onTrails: guarded(MW.tools.setTrails),
       onClear: guarded(scenes.clearBodies),
       onReset: guarded(function () { scenes.resetScene(); }),
       onSave: guarded(scenes.saveSceneFile),
@@ -26,6 +30,9 @@
       onSaveImage: guarded(MW.capture.saveImage),
       onRecord: guarded(MW.capture.toggleRecording),
     }, MW.simulationSettings.controlHandlers()), MW.simulationSettings.engineSettings());
+    state.ui.setTool(MW.tools.tools.tool);
+    state.ui.setGeodesicLength(MW.tools.tools.geodesicLength);
+    state.ui.setTrails(MW.tools.tools.trailsOn);
     const noRecording = MW.capture.recordingUnavailable();
     if (noRecording) state.ui.setRecordingUnavailable(noRecording);
     W.manifold = MW.api.scriptingApi();
@@ -52,6 +59,7 @@
       state.gl = MW.gl.createContext(canvas);
       state.tracer = new MW.tracer.Tracer(state.gl);
       state.bodyRenderer = new MW.bodies.BodyRenderer(state.gl);
+      state.curveRenderer = new MW.curves.CurveRenderer(state.gl);
     } catch (err) {
       state.tracer = null;
       state.current = Promise.reject(P.fail(err.kind === "shader" ? "The surface cannot be drawn" : "WebGL2 is not available", err));

@@ -29,6 +29,7 @@ var ManifoldWebFrame = (function (W) {
     statsShownAt: 0,
     surfaceGen: 0,          // bumped whenever the traced picture must be redrawn (with the camera's version)
     worldVersion: -1,       // world.version of the last frame drawn
+    toolsVersion: -1,       // tools.version of the last frame drawn (the curves)
     world: /** @type {ManifoldWeb.World | null} */ (null),
     // what afterDraw was asked for since the last frame
     captures: /** @type {((canvas: HTMLCanvasElement | null) => void)[]} */ ([]),
@@ -37,13 +38,15 @@ var ManifoldWebFrame = (function (W) {
   // ---- bodies ------------------------------------------------------------------------
   // The world (web/js/world.js) runs the engine generated into each space script
   // (Manifold.spaces[NAME].engine); web/js/bodies.js draws its polygons over the
-  // traced surface. drawBodies is the tracer's overlay hook, called after the
+  // traced surface, and web/js/tools.js the curves over them (geodesic, a
+  // throw's preview, trails). drawBodies is the tracer's overlay hook, called after the
   // surface is shaded with the colour buffer bound (frame: gl, width, height,
   // scale, pixelAngle, positionTexture, normalTexture, viewProjection, eye).
   /** @param {ManifoldWeb.OverlayFrame} frame */
   function drawBodies(frame) {
     frame.bodyDetail = state.options.bodyDetail;
     if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame);
+    MW.tools.draw(frame);
   }
 
   // ---- rendering ------------------------------------------------------------------
@@ -88,6 +91,7 @@ var ManifoldWebFrame = (function (W) {
     drawn.cameraVersion = camera.version;
     drawn.world = state.world;
     drawn.worldVersion = state.world ? state.world.version : -1;
+    drawn.toolsVersion = MW.tools.tools.version;
     drawn.frameCount++;
     drawn.frameTimes.push(now);
     return true;
@@ -130,9 +134,10 @@ var ManifoldWebFrame = (function (W) {
   function surfaceStale() {
     return state.dirty || drawn.cameraVersion !== state.camera.version;
   }
-  // the bodies moved, came or went since the last frame
+  // the bodies moved, came or went, or the curves changed, since the last frame
   function bodiesChanged() {
-    return drawn.world !== state.world || (state.world !== null && state.world.version !== drawn.worldVersion);
+    return drawn.world !== state.world || (state.world !== null && state.world.version !== drawn.worldVersion) ||
+      drawn.toolsVersion !== MW.tools.tools.version;
   }
 
   /** @param {number} now */
@@ -219,6 +224,7 @@ var ManifoldWebFrame = (function (W) {
       const n = state.clock.due(now, w.param("dt"), w.stepMs);
       if (n > 0 && w.count() > 0) w.step(n);
       if (n > 0 && state.compare && state.compare.flat.count() > 0) state.compare.flat.step(n);
+      MW.tools.sampleTrails();
     }
     const before = drawn.frameCount;
     if (!state.error) {

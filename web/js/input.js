@@ -1,9 +1,11 @@
-// Input on the page's canvas, and grabbing bodies: a press on a body grabs it
-// with the engine's mouse joint and drags it along the surface under the
-// pointer; anywhere else the pointer orbits, pans (shift or right button) or,
-// with two fingers, pinch-zooms the view; the wheel zooms. Pointer events:
-// mouse, pen and touch alike. Also the surface point under a pixel, and
-// grab/drag/release by pixel for window.manifold.
+// Input on the page's canvas: the left button (one finger, a pen) on a body
+// grabs it with the engine's mouse joint and drags it along the surface
+// under the pointer; on empty surface it does what the tool says (tools.js:
+// throw a body, draw a geodesic); on the background, off the surface, it
+// orbits. The right button orbits anywhere, the middle button or shift pans,
+// the wheel and a two-finger pinch zoom. Pointer events: mouse, pen and
+// touch alike. Also the surface point under a pixel, and grab/drag/release
+// by pixel for window.manifold.
 /* exported ManifoldWebInput */
 var ManifoldWebInput = (function (W) {
   "use strict";
@@ -52,7 +54,7 @@ var ManifoldWebInput = (function (W) {
     if (state.world && state.world.grabbed >= 0) state.world.release();
   }
 
-  // ---- input: grab bodies, orbit, zoom, pan (pointer events: mouse, pen and touch alike) ---
+  // ---- input: grab bodies, tools, orbit, zoom, pan (pointer events: mouse, pen and touch alike) ---
   /** @param {HTMLCanvasElement} canvas */
   function watchInput(canvas) {
     /** @type {Map<number, { x: number, y: number }>} */
@@ -61,6 +63,8 @@ var ManifoldWebInput = (function (W) {
     let panning = false;
     /** @type {number | null} */
     let grabPointer = null;     // the pointer holding a body, or null
+    /** @type {{ id: number, x: number, y: number } | null} */
+    let toolPointer = null;     // the pointer of a tool's gesture on the surface (CSS pixels), or null
 
     function cssHeight() { return Math.max(1, canvas.getBoundingClientRect().height); }
     function spread() {
@@ -82,7 +86,15 @@ var ManifoldWebInput = (function (W) {
     canvas.addEventListener("pointerdown", function (e) {
       if (!state.space) return;
       if (grabPointer !== null) { e.preventDefault(); return; } // one body at a time; other fingers wait
-      // a first primary press on a body grabs it; anywhere else the view orbits
+      if (toolPointer !== null) {
+        // a second finger: the gesture is dropped, and the two fingers orbit and pinch
+        MW.tools.cancel();
+        pointers.set(toolPointer.id, { x: toolPointer.x, y: toolPointer.y });
+        toolPointer = null;
+        panning = false;
+      }
+      // a first primary press on a body grabs it; on empty surface the tool acts
+      // (not in the comparison view, whose panes drag bodies only); off the surface the view orbits
       if (pointers.size === 0 && e.button === 0 && !e.shiftKey) {
         const px = pixelOf(e);
         if (grabAt(px[0], px[1])) {
@@ -92,10 +104,18 @@ var ManifoldWebInput = (function (W) {
           e.preventDefault();
           return;
         }
+        const q = state.compare || !state.world ? null : surfacePoint(px[0], px[1]);
+        if (q) {
+          capture(e);
+          toolPointer = { id: e.pointerId, x: e.clientX, y: e.clientY };
+          MW.tools.press(q, [e.clientX, e.clientY]);
+          e.preventDefault();
+          return;
+        }
       }
       capture(e);
       pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
-      panning = e.button === 1 || e.button === 2 || e.shiftKey;
+      panning = e.button === 1 || e.shiftKey;
       if (pointers.size === 2) pinch = spread();
       canvas.classList.add("dragging");
       e.preventDefault();
@@ -104,6 +124,13 @@ var ManifoldWebInput = (function (W) {
       if (e.pointerId === grabPointer) {
         const px = pixelOf(e);
         dragTo(px[0], px[1]);
+        return;
+      }
+      if (toolPointer && e.pointerId === toolPointer.id) {
+        const px = pixelOf(e);
+        toolPointer.x = e.clientX;
+        toolPointer.y = e.clientY;
+        MW.tools.move(surfacePoint(px[0], px[1]), [e.clientX, e.clientY]);
         return;
       }
       const p = pointers.get(e.pointerId);
@@ -127,6 +154,12 @@ var ManifoldWebInput = (function (W) {
         grabPointer = null;
         canvas.classList.remove("holding");
         releaseGrab();
+        return;
+      }
+      if (toolPointer && e.pointerId === toolPointer.id) {
+        toolPointer = null;
+        if (e.type !== "pointerup") MW.tools.cancel();
+        else MW.page.guarded(MW.tools.release)();
         return;
       }
       if (!pointers.delete(e.pointerId)) return;

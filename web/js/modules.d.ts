@@ -25,6 +25,8 @@ interface ManifoldWebModules {
   scenes: typeof ManifoldWebScenes;
   api: typeof ManifoldWebApi;
   capture: typeof ManifoldWebCapture;
+  curves: typeof ManifoldWebCurves;
+  tools: typeof ManifoldWebTools;
 }
 
 /** The page's modules (web/js), by file. */
@@ -37,6 +39,7 @@ declare namespace ManifoldWeb {
   type World = InstanceType<typeof ManifoldWebWorld.World>;
   type Clock = InstanceType<typeof ManifoldWebWorld.Clock>;
   type BodyRenderer = InstanceType<typeof ManifoldWebBodies.BodyRenderer>;
+  type CurveRenderer = InstanceType<typeof ManifoldWebCurves.CurveRenderer>;
   type Comparison = InstanceType<typeof ManifoldWebCompare.Comparison>;
   type UI = ReturnType<typeof ManifoldWebUi.createUI>;
 

@@ -6,7 +6,7 @@
 // the world or an error, a failure shown on the page, a control that reports
 // its errors as a notice. The parts, loaded after this file: frame.js,
 // input.js, space.js, hash.js, compare-setup.js, simulation-settings.js,
-// scenes.js, api.js, capture.js, and app.js, which starts them.
+// scenes.js, tools.js, api.js, capture.js, and app.js, which starts them.
 /* exported ManifoldWebPage */
 var ManifoldWebPage = (function (W) {
   "use strict";
@@ -37,6 +37,7 @@ var ManifoldWebPage = (function (W) {
    * @property {WebGL2RenderingContext | null} gl
    * @property {ManifoldWeb.Tracer | null} tracer
    * @property {ManifoldWeb.BodyRenderer | null} bodyRenderer
+   * @property {ManifoldWeb.CurveRenderer | null} curveRenderer
    * @property {ManifoldWeb.Camera} camera
    * @property {Manifold.SpaceEntry[]} index the catalogue (Manifold.spaceIndex)
    * @property {string | null} spaceName
@@ -62,6 +63,7 @@ var ManifoldWebPage = (function (W) {
     gl: null,
     tracer: null,
     bodyRenderer: null,
+    curveRenderer: null,    // geodesics, throw previews and trails (web/js/curves.js)
     camera: new MW.camera.Camera(),
     index: [],
     spaceName: null,

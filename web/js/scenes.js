@@ -60,14 +60,12 @@ var ManifoldWebScenes = (function (W) {
     return i;
   }
 
-  // A body of the given shape at a free visible surface point: the view's
-  // centre if free, else random pixels of the view's middle; else a seeded
-  // random point of the space.
-  /** @param {Manifold.Shape} shape */
-  function addAtView(shape) {
+  // The new body (tools.js's template: shape, size, density, static) at a
+  // free visible surface point: the view's centre if free, else random
+  // pixels of the view's middle; else a seeded random point of the space.
+  function addAtView() {
     const w = P.requireWorld();
-    const scene = state.space.scene || [];
-    const size = scene.length ? scene[0].size : 0.15;
+    const body = MW.tools.newBody(), size = body.size;
     const W0 = state.width, H0 = state.height;
     for (let k = 0; k < 60; k++) {
       const x = k === 0 ? W0 / 2 : W0 * (0.2 + 0.6 * Math.random());
@@ -76,13 +74,13 @@ var ManifoldWebScenes = (function (W) {
       if (!q || w.pick(q)) continue;
       const boundary = state.space.boundary;
       if (boundary && boundary(q[0], q[1], q[2]) < size) continue;
-      const i = w.addFree({ shape: shape, size: size, p: q, angle: 2 * Math.PI * Math.random() });
+      const i = w.addFree(Object.assign({}, body, { p: q, angle: 2 * Math.PI * Math.random() }));
       if (i < 0) continue;
       bodiesChangedCount();
       return i;
     }
     const before = w.count();
-    w.fill(before + 1, [{ shape: shape, size: size }]);
+    w.fill(before + 1, [body]);
     bodiesChangedCount();
     if (w.count() === before) throw new Error("no free place for another body was found");
     return before;

@@ -101,6 +101,7 @@ var ManifoldWebSpace = (function (W) {
     if (!keep) {
       state.camera.set(space.camera);
       state.camera.maxDistance = 8 * space.bounds;
+      MW.tools.spaceChanged();
       try {
         MW.scenes.newWorld(how.scene || null, how.bodies);
       } catch (err) {
@@ -151,6 +152,7 @@ var ManifoldWebSpace = (function (W) {
       try {
         state.tracer = new MW.tracer.Tracer(state.gl);
         state.bodyRenderer = new MW.bodies.BodyRenderer(state.gl);
+        state.curveRenderer = new MW.curves.CurveRenderer(state.gl);
       } catch (err) {
         state.tracer = null;
         P.fail("The surface cannot be drawn", err);

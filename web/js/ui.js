@@ -1,6 +1,7 @@
 // The page's controls and messages: the space selector, the curvature and
-// antialiasing options, the engine parameters' controls (made from the
-// generated scene keys they set), the keys (Space, s, r, c, ?) and the help
+// antialiasing options, the new body's controls, the tool and trails, the
+// engine parameters' controls (made from the generated scene keys they
+// set), the keys (Space, s, r, c, g, t, ?) and the help
 // overlay listing them and the gestures, the stats line, the error panel,
 // the capture buttons (Save image, Record / Stop), and the URL hash.
 /* exported ManifoldWebUi */
@@ -72,7 +73,11 @@ var ManifoldWebUi = (function (W) {
    * @property {(on: boolean) => void} onGrid
    * @property {(mode: Manifold.Antialias) => void} onAntialias
    * @property {() => void} onResetView
-   * @property {(shape: Manifold.Shape) => void} onAdd
+   * @property {() => void} onAdd add the new body at a free point of the view
+   * @property {(o: { shape?: Manifold.Shape, size?: number, density?: number, static?: boolean }) => void} onNewBody a control of the new body changed
+   * @property {(tool: string) => void} onTool
+   * @property {(length: number) => void} onGeodesicLength
+   * @property {(on: boolean) => void} onTrails
    * @property {() => void} onClear
    * @property {() => void} onReset
    * @property {() => void} onPause
@@ -205,17 +210,44 @@ var ManifoldWebUi = (function (W) {
     });
     /** @type {HTMLInputElement} */
     const sceneFile = $("scene-file");
-    $("add-circle").addEventListener("click", function () { handlers.onAdd("circle"); });
-    $("add-square").addEventListener("click", function () { handlers.onAdd("square"); });
-    $("add-polygon").addEventListener("click", function () {
+    // the new body: shape, size (a slider around the space's own, marked), density, static
+    /** @type {HTMLSelectElement} */
+    const shapeSelect = $("body-shape");
+    /** @type {HTMLInputElement} */
+    const sizeSlider = $("body-size");
+    const sizeValue = $("body-size-value");
+    /** @type {HTMLOptionElement} */
+    const sizeMark = $("body-size-mark");
+    /** @type {HTMLInputElement} */
+    const densityInput = $("body-density");
+    /** @type {HTMLInputElement} */
+    const staticBox = $("body-static");
+    const shapeChosen = function () {
+      if (shapeSelect.value !== "polygon") return handlers.onNewBody({ shape: /** @type {"circle" | "square"} */ (shapeSelect.value) });
       const n = Math.round(Number(sides.value));
       if (!(n >= 3 && n <= 64)) {
         showNotice("A polygon has 3 to 64 sides.");
-        return;
+        return undefined;
       }
       sides.value = String(n);
-      handlers.onAdd({ polygon: n });
-    });
+      return handlers.onNewBody({ shape: { polygon: n } });
+    };
+    shapeSelect.addEventListener("change", shapeChosen);
+    sides.addEventListener("change", function () { if (shapeSelect.value === "polygon") shapeChosen(); });
+    sizeSlider.addEventListener("input", function () { handlers.onNewBody({ size: Number(sizeSlider.value) }); });
+    densityInput.addEventListener("change", function () { handlers.onNewBody({ density: Number(densityInput.value) }); });
+    staticBox.addEventListener("change", function () { handlers.onNewBody({ static: staticBox.checked }); });
+    $("add-body").addEventListener("click", function () { handlers.onAdd(); });
+    // the tool, the geodesic's length, trails
+    /** @type {HTMLSelectElement} */
+    const toolSelect = $("tool");
+    /** @type {HTMLInputElement} */
+    const lengthInput = $("geodesic-length");
+    /** @type {HTMLInputElement} */
+    const trailsBox = $("trails");
+    toolSelect.addEventListener("change", function () { handlers.onTool(toolSelect.value); });
+    lengthInput.addEventListener("change", function () { handlers.onGeodesicLength(Number(lengthInput.value)); });
+    trailsBox.addEventListener("change", function () { handlers.onTrails(trailsBox.checked); });
     $("clear").addEventListener("click", function () { handlers.onClear(); });
     $("reset-scene").addEventListener("click", function () { handlers.onReset(); });
     pause.addEventListener("click", function () { handlers.onPause(); });
@@ -239,7 +271,8 @@ var ManifoldWebUi = (function (W) {
 
     // keys: what each does (the help overlay, #keys-help in index.html, lists
     // them with the gestures); Space, s and r and c act as Pause, Step, Reset
-    // and Clear; a held s steps on, the others act once
+    // and Clear, g switches the geodesic tool on and off, t the trails; a
+    // held s steps on, the others act once
     /** @type {HTMLDialogElement} */
     const keysHelp = $("keys-help");
     /** @type {Map<string, () => void>} */
@@ -248,6 +281,8 @@ var ManifoldWebUi = (function (W) {
       ["s", function () { handlers.onStep(); }],
       ["r", function () { handlers.onReset(); }],
       ["c", function () { handlers.onClear(); }],
+      ["g", function () { handlers.onTool(toolSelect.value === "geodesic" ? "grab" : "geodesic"); }],
+      ["t", function () { handlers.onTrails(!trailsBox.checked); }],
       ["?", function () { keysHelp.showModal(); }],
     ]);
     $("keys-help-open").addEventListener("click", function () { if (!keysHelp.open) keysHelp.showModal(); });
@@ -314,6 +349,31 @@ var ManifoldWebUi = (function (W) {
       },
       /** @param {boolean} on */
       setGrid: function (on) { gridBox.checked = on; },
+      // the new body's controls: its template, and the space's own size (the slider spans a quarter to three times it)
+      /** @param {{ shape: Manifold.Shape, size: number | null, density: number, static: boolean }} t @param {number} own */
+      setNewBody: function (t, own) {
+        if (typeof t.shape === "string") shapeSelect.value = t.shape;
+        else {
+          shapeSelect.value = "polygon";
+          sides.value = String(t.shape.polygon);
+        }
+        const step = Number((own / 50).toPrecision(1));
+        sizeSlider.min = String(Math.max(step, own / 4));
+        sizeSlider.max = String(3 * own);
+        sizeSlider.step = String(step);
+        sizeMark.value = String(own);
+        const size = t.size === null ? own : t.size;
+        sizeSlider.value = String(size);
+        sizeValue.textContent = Number(size.toPrecision(3)) + (t.size === null ? " (the space's)" : "");
+        densityInput.value = String(t.density);
+        staticBox.checked = t.static;
+      },
+      /** @param {string} tool */
+      setTool: function (tool) { toolSelect.value = tool; },
+      /** @param {number} len */
+      setGeodesicLength: function (len) { lengthInput.value = String(Number(len.toPrecision(4))); },
+      /** @param {boolean} on */
+      setTrails: function (on) { trailsBox.checked = on; },
       /** @param {Manifold.Antialias} mode */
       setAntialias: function (mode) { antialiasSelect.value = mode; },
       /** @param {string} text */

@@ -32,6 +32,8 @@ var ManifoldWebWorld = (function (W) {
   function sceneKeys() { return W.Manifold.sceneKeys; }
   /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal">> & Pick<Manifold.SceneBody, "axis" | "normal">} ParsedBody */
   const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses"];
+  // what a scene body without these keys has (Manifold.Scene's defaults)
+  const BODY_DEFAULTS = { density: 1, static: false };
 
   class SceneError extends Error {
     /** @param {string} message */
@@ -143,8 +145,8 @@ var ManifoldWebWorld = (function (W) {
     const b = {
       shape: required(path, o, "shape", shape),
       size: required(path, o, "size", positive),
-      density: optional(path, o, "density", 1, positive),
-      static: optional(path, o, "static", false, boolean),
+      density: optional(path, o, "density", BODY_DEFAULTS.density, positive),
+      static: optional(path, o, "static", BODY_DEFAULTS.static, boolean),
       p: required(path, o, "p", vec3),
       v: optional(path, o, "v", [0, 0, 0], vec3),
       angle: optional(path, o, "angle", 0, number),
@@ -709,6 +711,7 @@ var ManifoldWebWorld = (function (W) {
   }
 
   const exported = {
+    BODY_DEFAULTS: BODY_DEFAULTS,
     World: World,
     Clock: Clock,
     SceneError: SceneError,

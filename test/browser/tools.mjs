@@ -1,0 +1,279 @@
+// Browser tests of the tools and curves (part "tools" of run.mjs), with a
+// real mouse and keyboard: the geodesic on the sphere closes after 2π and is
+// drawn where it faces the camera (pixels of its colour at its projected
+// points, none where it runs behind the sphere); on the flat torus it winds
+// back to its start through the square's edge, on the projective plane it
+// comes back through the antipode; g switches the geodesic tool, with which
+// a press and drag draws the geodesic from the pressed point; a throw shows
+// its preview while dragged and the body thrown is 0.5 s later within 2 % of
+// the preview's point; a click on empty surface adds the new body there at
+// rest, with the size, shape, density and static chosen in the controls; a
+// grabbed body let go keeps its speed; t switches trails, which appear
+// (pixels differ from the same view without them) and fade (their oldest
+// end transparent, gone 4 s later).
+import path from "node:path";
+import { OUT, canvasShot } from "./lib.mjs";
+import { openSpace } from "./bodies.mjs";
+
+function sleep(ms) { return new Promise(function (resolve) { setTimeout(resolve, ms); }); }
+function dist(a, b) { return Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+// the client (CSS) pixel of the canvas's centre and the canvas's box
+async function viewBox(page) {
+  return page.locator("#view").boundingBox();
+}
+
+// pixels of the geodesic's colour (a warm yellow) within 2 px of (x, y)
+function yellowNear(shot, x, y) {
+  for (let dy = -2; dy <= 2; dy++) {
+    for (let dx = -2; dx <= 2; dx++) {
+      const X = x + dx, Y = y + dy;
+      if (X < 0 || Y < 0 || X >= shot.width || Y >= shot.height) continue;
+      const c = shot.at(X, Y);
+      if (c[0] > 180 && c[1] > 150 && c[2] < 120 && c[0] - c[2] > 100) return true;
+    }
+  }
+  return false;
+}
+
+// (1) the geodesic on the sphere: closed after 2π, drawn in front, hidden behind
+async function testSphereGeodesic(check, page) {
+  const r = await page.evaluate(function () {
+    const m = window.manifold, st = m.stats();
+    return m.loadScene({ space: "sphere", gravity: false, bodies: [] }).then(function () {
+      m.pause();
+      // above the centre, so that the circle's far half runs below it (an ellipse, not a line)
+      const p = m.pick(st.width / 2, st.height / 2 - 0.25 * st.height);
+      const cam = m.camera();
+      // a tangent direction: across the view (the camera's right, as the eye sees it)
+      const e = cam.eye, t = cam.target, f = [t[0] - e[0], t[1] - e[1], t[2] - e[2]];
+      const d = [f[2], 0, -f[0]];
+      const g = m.geodesic(p, d);
+      m.render();
+      const front = [], back = [];
+      g.points.forEach(function (q, k) {
+        const facing = (q[0] - e[0]) * q[0] + (q[1] - e[1]) * q[1] + (q[2] - e[2]) * q[2] < -0.2;
+        const behind = (q[0] - e[0]) * q[0] + (q[1] - e[1]) * q[1] + (q[2] - e[2]) * q[2] > 0.2;
+        const px = m.project(q);
+        if (k % 8 === 0 && px && facing) front.push(px);
+        if (k % 8 === 0 && px && behind) back.push(px);
+      });
+      return { p: p, n: g.points.length, first: g.points[0], last: g.points[g.points.length - 1], breaks: g.breaks.length,
+        radius: g.points.reduce(function (worst, q) { return Math.max(worst, Math.abs(Math.hypot(q[0], q[1], q[2]) - 1)); }, 0),
+        front: front, back: back, drawn: m.curves().geodesic !== null };
+    });
+  });
+  const shot = await canvasShot(page, path.join(OUT, "tools-geodesic-sphere.png"));
+  const frontHit = r.front.filter(function (px) { return yellowNear(shot, px[0], px[1]); }).length;
+  const backHit = r.back.filter(function (px) { return yellowNear(shot, px[0], px[1]); }).length;
+  check("geodesic(p, d) on the sphere: 513 points on the unit sphere, from p back to p after 2π (a closed great circle), no break",
+    r.n === 513 && dist(r.first, r.p) < 1e-9 && dist(r.last, r.p) < 2e-3 && r.radius < 1e-6 && r.breaks === 0 && r.drawn,
+    "end " + dist(r.last, r.p).toExponential(2) + " from the start, |p| - 1 up to " + r.radius.toExponential(2));
+  check("the geodesic is drawn where it faces the camera and hidden where it runs behind the sphere (its colour at its projected points)",
+    r.front.length > 10 && frontHit >= 0.9 * r.front.length && r.back.length > 10 && backHit <= 0.1 * r.back.length,
+    "in front " + frontHit + " of " + r.front.length + ", behind " + backHit + " of " + r.back.length);
+}
+
+// (2) quotients: the flat torus winds back through the edge, the projective plane through the antipode
+async function testQuotientGeodesics(check, page) {
+  const flat = await page.evaluate(function () {
+    const m = window.manifold;
+    return m.setSpace("flat-torus").then(function () {
+      const images = window.Manifold.spaces["flat-torus"].images;
+      const period = Math.min.apply(null, images.map(function (g) { return Math.hypot(g[3], g[4], g[5]); }).filter(function (t) { return t > 0; }));
+      const p = [0.1, 0, 0.2];
+      const g = m.geodesic(p, [1, 0, 0], period);
+      return { period: period, end: g.points[g.points.length - 1], p: p, breaks: g.breaks };
+    });
+  });
+  check("on the flat torus the geodesic of one period's length along x winds back to its start, breaking once at the square's edge",
+    dist(flat.end, flat.p) < 1e-6 && flat.breaks.length === 1,
+    "period " + flat.period + ", end " + dist(flat.end, flat.p).toExponential(2) + " from the start, breaks at " + JSON.stringify(flat.breaks));
+  const rp = await page.evaluate(function () {
+    const m = window.manifold;
+    return m.setSpace("projective-plane").then(function () {
+      const st = m.stats(), p = m.pick(st.width / 2, st.height / 2), R = Math.hypot(p[0], p[1], p[2]);
+      const d = [p[1] * 0.8 - p[2] * 0.5, p[2] * 0.3 - p[0] * 0.8, p[0] * 0.5 - p[1] * 0.3]; // p × (0.3, 0.5, 0.8): tangent
+      const half = m.geodesic(p, d, Math.PI * R), whole = m.geodesic(p, d, 2 * Math.PI * R);
+      const h = half.points[half.points.length - 1], w = whole.points[whole.points.length - 1];
+      return { p: p, toAntipode: Math.hypot(h[0] + p[0], h[1] + p[1], h[2] + p[2]), toP: Math.hypot(h[0] - p[0], h[1] - p[1], h[2] - p[2]),
+        wholeBack: Math.hypot(w[0] - p[0], w[1] - p[1], w[2] - p[2]) };
+    });
+  });
+  check("on the projective plane the geodesic of length π reaches the antipode, the point itself there, and 2π comes round again",
+    Math.min(rp.toAntipode, rp.toP) < 2e-3 && rp.wholeBack < 4e-3,
+    "after π: " + Math.min(rp.toAntipode, rp.toP).toExponential(2) + " from ±p; after 2π: " + rp.wholeBack.toExponential(2));
+}
+
+// (3) g switches the geodesic tool; a press and drag draws the geodesic from the pressed point
+async function testGeodesicTool(check, page) {
+  await page.evaluate(function () {
+    const m = window.manifold;
+    return m.setSpace("sphere").then(function () { return m.loadScene({ space: "sphere", gravity: false, bodies: [] }); }).then(function () { m.pause(); });
+  });
+  await page.mouse.click(5, 5); // the page has the focus, not a control
+  await page.keyboard.press("g");
+  const tool = await page.evaluate(function () { return { tool: window.manifold.tool(), select: document.getElementById("tool").value }; });
+  const box = await viewBox(page);
+  const x = box.x + box.width / 2, y = box.y + box.height / 2;
+  const pressed = await page.evaluate(function () { const st = window.manifold.stats(); return window.manifold.pick(st.width / 2, st.height / 2); });
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 40, y - 10, { steps: 5 });
+  await page.mouse.up();
+  const g = await page.evaluate(function () { return window.manifold.curves().geodesic; });
+  const bodies = await page.evaluate(function () { return window.manifold.stats().bodies; });
+  await page.keyboard.press("g");
+  const back = await page.evaluate(function () { return window.manifold.tool(); });
+  check("g switches to the geodesic tool (its select follows); a drag from a surface point draws the closed geodesic from there, adds no body; g again: grab",
+    tool.tool === "geodesic" && tool.select === "geodesic" && g !== null && g.points.length === 513 &&
+      dist(g.points[0], pressed) < 0.02 && dist(g.points[512], g.points[0]) < 2e-3 && bodies === 0 && back === "grab",
+    JSON.stringify({ tool: tool, points: g && g.points.length, start: g && dist(g.points[0], pressed), bodies: bodies, back: back }));
+}
+
+// (4) a throw: the preview while dragging, and the body on it 0.5 s later; a click adds a body at rest
+async function testThrow(check, page) {
+  await page.evaluate(function () {
+    const m = window.manifold;
+    return m.loadScene({ space: "sphere", gravity: true, bodies: [] }).then(function () { m.pause(); });
+  });
+  const box = await viewBox(page);
+  const x = box.x + box.width / 2, y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 60, y - 25, { steps: 6 });
+  await sleep(100);
+  const during = await page.evaluate(function () { return { preview: window.manifold.curves().preview, bodies: window.manifold.stats().bodies }; });
+  await page.mouse.up();
+  const after = await page.evaluate(function () {
+    const m = window.manifold, b0 = m.bodies();
+    const preview = m.curves().preview;
+    m.step(50);
+    return { count: b0.length, v: b0.length ? b0[0].v : null, p0: b0.length ? b0[0].p : null, p50: m.bodies()[0] ? m.bodies()[0].p : null, previewAfter: preview };
+  });
+  const pv = during.preview;
+  const ok = pv && after.p50 && pv.points.length === 101;
+  const err = ok ? dist(after.p50, pv.points[50]) : Infinity, travelled = ok ? dist(pv.points[50], pv.points[0]) : 0;
+  check("a drag on empty surface shows the throw's preview (101 points: 1 s of steps, the body alone) and adds nothing before the release",
+    ok && during.bodies === 0 && dist(pv.points[0], after.p0) < 1e-9 && travelled > 0.1,
+    JSON.stringify({ points: pv && pv.points.length, bodies: during.bodies, travelled: travelled }));
+  check("the release launches the body from the press point; 0.5 s later it is within 2 % of the preview's point (of the way it went); the preview is gone",
+    ok && after.count === 1 && Math.hypot.apply(null, after.v) > 0 && err <= 0.02 * travelled && after.previewAfter === null,
+    "off the preview by " + err.toExponential(2) + " after " + travelled.toFixed(3) + " travelled");
+
+  // the new body's controls, then a click: a body there at rest
+  await page.evaluate(function () { window.manifold.clear(); });
+  await page.selectOption("#body-shape", "square");
+  await page.evaluate(function () {
+    const s = document.getElementById("body-size");
+    s.value = String(Number(s.min) + 2 * Number(s.step));
+    s.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  await page.fill("#body-density", "2.5");
+  await page.dispatchEvent("#body-density", "change");
+  await page.check("#body-static");
+  const chosen = await page.evaluate(function () { return window.manifold.newBody(); });
+  const at = await page.evaluate(function () { const st = window.manifold.stats(); return window.manifold.pick(st.width / 2 - 30, st.height / 2); });
+  await page.mouse.click(x - 30, y);
+  const clicked = await page.evaluate(function () { return window.manifold.bodies(); });
+  const b = clicked[0];
+  check("a click on empty surface adds the new body there at rest, with the shape, size, density and static chosen in the controls",
+    clicked.length === 1 && dist(b.p, at) < 0.02 && Math.hypot.apply(null, b.v) === 0 && b.shape === "square" && b.static === true &&
+      b.density === 2.5 && Math.abs(b.size - chosen.size) < 1e-12 && chosen.size < 0.2,
+    JSON.stringify({ n: clicked.length, chosen: chosen, body: b && { p: b.p, v: b.v, shape: b.shape, size: b.size, density: b.density, static: b.static } }));
+  const refused = await page.evaluate(function () {
+    const m = window.manifold, out = [];
+    [{ size: -1 }, { shape: { polygon: 2 } }, { density: "heavy" }, { colour: 1 }].forEach(function (o) {
+      try { m.setNewBody(o); out.push("accepted"); } catch (e) { out.push(e.message); }
+    });
+    const kept = m.newBody();
+    m.setNewBody({ size: null, shape: "circle", static: false, density: 1 });
+    return { out: out, kept: kept, own: m.newBody().size };
+  });
+  check("setNewBody refuses a bad value naming its field and changes nothing; size null is the space's own again",
+    /newBody\.size/.test(refused.out[0]) && /newBody\.shape/.test(refused.out[1]) && /newBody\.density/.test(refused.out[2]) &&
+      /colour/.test(refused.out[3]) && refused.kept.density === 2.5 && refused.own === 0.2,
+    JSON.stringify(refused));
+}
+
+// (5) a grabbed body let go keeps its speed
+async function testLetGo(check, page) {
+  const start = await page.evaluate(function () {
+    const m = window.manifold, st = m.stats();
+    const p = m.pick(st.width / 2, st.height / 2);
+    return m.loadScene({ space: "sphere", gravity: false, bodies: [{ shape: "circle", size: 0.2, p: p }] }).then(function () {
+      m.resume();
+      return m.project(m.bodies()[0].p);
+    });
+  });
+  const box = await viewBox(page);
+  const x = box.x + start[0], y = box.y + start[1];
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) {
+    await page.mouse.move(x + 10 * i, y);
+    await sleep(40);
+  }
+  const held = await page.evaluate(function () { return window.manifold.grabbed(); });
+  await page.mouse.up();
+  const v = await page.evaluate(function () { const m = window.manifold; m.pause(); return { grabbed: m.grabbed(), v: m.bodies()[0].v }; });
+  check("a grabbed body dragged and let go keeps moving (the joint's velocity)",
+    held === 0 && v.grabbed === -1 && Math.hypot.apply(null, v.v) > 0.05,
+    "held " + held + ", speed after release " + Math.hypot.apply(null, v.v).toFixed(3));
+}
+
+// (6) trails: t switches them; they appear and fade
+async function testTrails(check, page) {
+  await page.evaluate(function () {
+    const m = window.manifold, st = m.stats();
+    const p = m.pick(st.width / 2, st.height / 2), cam = m.camera();
+    const f = [cam.target[0] - cam.eye[0], cam.target[1] - cam.eye[1], cam.target[2] - cam.eye[2]], s = Math.hypot(f[0], f[2]);
+    return m.loadScene({ space: "sphere", gravity: false, bodies: [{ shape: "circle", size: 0.1, p: p, v: [f[2] / s, 0, -f[0] / s] }] }).then(function () { m.resume(); });
+  });
+  await page.mouse.click(5, 5);
+  await page.keyboard.press("t");
+  await sleep(1500);
+  const on = await page.evaluate(function () { const m = window.manifold; m.pause(); m.render(); return { trails: m.trails(), box: document.getElementById("trails").checked, c: m.curves().trails }; });
+  const withTrails = await canvasShot(page, path.join(OUT, "tools-trails-sphere.png"));
+  await page.evaluate(function () { window.manifold.setTrails(false); window.manifold.render(); });
+  const without = await canvasShot(page);
+  let differ = 0;
+  for (let y = 0; y < without.height; y++) {
+    for (let x = 0; x < without.width; x++) {
+      const a = withTrails.at(x, y), b = without.at(x, y);
+      if (Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]) > 30) differ++;
+    }
+  }
+  check("t turns trails on (its checkbox follows): a moving body leaves one, drawn (pixels differ from the same view without it)",
+    on.trails && on.box && on.c.samples >= 10 && on.c.segments >= 9 && differ > 100,
+    JSON.stringify(on.c) + ", " + differ + " pixels differ");
+  // fading: after 4 s more only the last samples are drawn, the oldest end transparent
+  const faded = await page.evaluate(function () {
+    const m = window.manifold;
+    m.setTrails(true);
+    m.resume();
+    return new Promise(function (r) { setTimeout(r, 4000); }).then(function () {
+      m.pause();
+      const c = m.curves().trails;
+      m.step(400); // 4 s at once: every sample older than the trail's 3 s
+      return new Promise(function (r) { requestAnimationFrame(function () { requestAnimationFrame(function () { r([c, m.curves().trails]); }); }); });
+    });
+  });
+  check("trails fade: the oldest drawn end is nearly transparent, the newest opaque, and 4 s on nothing old is drawn",
+    faded[0].segments > 30 && faded[0].oldest < 0.1 && faded[0].newest > 0.9 && faded[1].segments === 0,
+    JSON.stringify(faded));
+  await page.evaluate(function () { window.manifold.setTrails(false); });
+}
+
+export async function testTools(check, context, base) {
+  const errors = [];
+  const page = await openSpace(context, base, "#space=sphere", errors);
+  await testSphereGeodesic(check, page);
+  await testQuotientGeodesics(check, page);
+  await testGeodesicTool(check, page);
+  await testThrow(check, page);
+  await testLetGo(check, page);
+  await testTrails(check, page);
+  check("tools page: no console errors", errors.length === 0, errors.join("; "));
+  await page.close();
+}
