@@ -18,6 +18,7 @@
 // (compare.mjs), types (web/manifold.d.ts against the page and web/gen:
 // types.mjs), benchmarks (the bench scripts end to end: benchscripts.mjs).
 // The default run is all of them.
+import fs from "node:fs";
 import path from "node:path";
 import url from "node:url";
 import {
@@ -502,6 +503,36 @@ async function testFileUrl(context) {
   await page.close();
 }
 
+// ---- web/embed.html: one space in a page of its own, through the public objects, served and from file:// ----
+async function testEmbed(context, base) {
+  const text = fs.readFileSync(path.join(WEB, "embed.html"), "utf8");
+  const lines = text.split("\n").filter(function (l, i, all) { return i < all.length - 1 || l !== ""; }).length;
+  check("web/embed.html is a page of under 60 lines", lines < 60, lines + " lines");
+  for (const address of [base + "embed.html", url.pathToFileURL(path.join(WEB, "embed.html")).href]) {
+    const page = await context.newPage();
+    const errors = [];
+    page.on("console", function (m) { if (m.type() === "error") errors.push("console: " + m.text()); });
+    page.on("pageerror", function (e) { errors.push("pageerror: " + e.message); });
+    await page.goto(address);
+    await page.waitForTimeout(1000);
+    const a = await canvasShot(page);
+    await page.waitForTimeout(1000);
+    const b = await canvasShot(page);
+    let moved = 0;
+    for (let y = 0; y < a.height; y += 2) {
+      for (let x = 0; x < a.width; x += 2) {
+        const p = a.at(x, y), q = b.at(x, y);
+        if (Math.abs(p[0] - q[0]) + Math.abs(p[1] - q[1]) + Math.abs(p[2] - q[2]) > 30) moved++;
+      }
+    }
+    const centre = a.at(a.width / 2, a.height / 2), corner = a.at(2, 2);
+    const lit = Math.abs(centre[0] - corner[0]) + Math.abs(centre[1] - corner[1]) + Math.abs(centre[2] - corner[2]) > 60;
+    check("web/embed.html (" + (address.startsWith("file:") ? "file://" : "served") + ") draws the sphere and its bodies falling, with no console errors",
+      lit && moved > 20 && errors.length === 0, "centre " + centre + " vs corner " + corner + ", " + moved + " sampled pixels changed in 1 s; " + errors.join("; "));
+    await page.close();
+  }
+}
+
 // ---- error paths: a visible message, never a blank canvas ----
 async function messageState(page) {
   return page.evaluate(function () {
@@ -633,7 +664,10 @@ async function main() {
     if (partWanted("tools")) await testTools(check, context, server.url);
     if (partWanted("capture")) await testCapture(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
-    if (partWanted("file")) await testFileUrl(context);
+    if (partWanted("file")) {
+      await testFileUrl(context);
+      await testEmbed(context, server.url);
+    }
     if (partWanted("hidpi")) await testHiDPI(browser, server.url);
     if (partWanted("compare")) await testCompare(check, browser, server.url);
     if (partWanted("types")) await testTypes(check, context, server.url);
