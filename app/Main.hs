@@ -28,13 +28,14 @@ import Manifold.Build
 import Manifold.Compile (dumpStep)
 import Manifold.Engine
 import Manifold.Golden
+import Manifold.Presets
 import Manifold.Scene
 import Manifold.StateHash (showHash)
 
 data Command
   = Spaces Bool
   | Geodesic GeodesicArgs
-  | Build FilePath
+  | Build FilePath FilePath
   | DumpStep String
   | Serve Int FilePath
   | Sim FilePath Int Int (Maybe FilePath) Bool
@@ -71,7 +72,7 @@ commandParser :: Parser Command
 commandParser = hsubparser
   ( command "spaces" (info (Spaces <$> jsonFlag) (progDesc "List the spaces of the catalogue"))
  <> command "geodesic" (info (Geodesic <$> geodesicArgs) (progDesc "Walk a geodesic and print its polyline"))
- <> command "build" (info (Build <$> outDir) (progDesc "Emit the page's generated scripts (spaces, GLSL) into web/gen"))
+ <> command "build" (info (Build <$> outDir <*> scenesDir) (progDesc "Emit the page's generated scripts (spaces, GLSL, the preset scenes) into web/gen"))
  <> command "sim" (info (Sim <$> strArgument (metavar "SCENE" <> help "Scene JSON file (- for standard input)")
                                  <*> option auto (long "steps" <> metavar "K" <> help "Steps to simulate")
                                  <*> option auto (long "every" <> metavar "M" <> value 1 <> help "Print every M-th step (default 1)")
@@ -102,6 +103,7 @@ commandParser = hsubparser
   )
   where
     outDir = strOption (long "out" <> metavar "DIR" <> value "web/gen" <> help "Output directory (default web/gen)")
+    scenesDir = strOption (long "scenes" <> metavar "DIR" <> value "scenes" <> help "The preset scenes, SPACE-WHAT.json (default scenes)")
     port = option auto (long "port" <> metavar "P" <> value 8000 <> help "Port (default 8000)")
     webDir = strOption (long "dir" <> metavar "DIR" <> value "web" <> help "Directory to serve (default web)")
     jsonFlag = switch (long "json" <> help "Print JSON")
@@ -121,8 +123,11 @@ main = do
   case cmd of
     Spaces json -> listSpaces json
     Geodesic a -> either usageError id (geodesic a)
-    Build dir -> do
-      let files = generatedFiles catalogue
+    Build dir scenes -> do
+      found <- doesDirectoryExist scenes
+      unless found $ usageError ("--scenes " ++ scenes ++ ": no such directory (the preset scenes; run from the repository's root or give --scenes DIR)")
+      presets <- readPresets scenes >>= either usageError pure
+      let files = generatedFiles catalogue ++ [GeneratedFile presetsScriptFile (presetsScript presets)]
       r <- try (writeGenerated dir files)
       case r of
         Left (BuildError msg) -> usageError msg

@@ -11,6 +11,7 @@ import qualified Data.ByteString.Lazy as BL
 import Data.List (isInfixOf, isPrefixOf, sort)
 import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..), cross)
+import System.Directory (createDirectoryIfMissing, doesDirectoryExist)
 import System.Exit (ExitCode (..))
 import System.FilePath ((</>))
 import System.IO.Temp (withSystemTempDirectory)
@@ -202,6 +203,23 @@ spec = do
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length=-1"] (const True)
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1", "--step", "0"] (const True)
 
+  describe "manifold build" $
+    it "writes the preset scenes with the rest, and refuses a bad preset or a missing --scenes with exit code 2, writing nothing" $
+      withSystemTempDirectory "manifold-build" $ \dir -> do
+        (code, _, err) <- run ["build", "--out", dir </> "gen"]
+        (code, err) `shouldBe` (ExitSuccess, "")
+        presets <- BL.readFile (dir </> "gen" </> "presets.js")
+        forM_ ["\"name\":\"trumpet-jam\"", "\"space\":\"trumpet\"", "\"title\":\"jam\""] $ \s ->
+          (s, BC.pack s `BC.isInfixOf` BL.toStrict presets) `shouldBe` (s, True)
+        let scenes = dir </> "scenes"
+            out = dir </> "fresh"
+        createDirectoryIfMissing True scenes
+        BL.writeFile (scenes </> "sphere-rain.json") "{\"space\": \"torus\"}"
+        forM_ [ (["build", "--out", out, "--scenes", scenes], "scenes/sphere-rain.json: a scene of torus, but the name says sphere")
+              , (["build", "--out", out, "--scenes", dir </> "none"], "no such directory") ] $ \(args, message) -> do
+          (c, o, e) <- run args
+          (args, c, o, message `isInfixOf` e, length (lines e)) `shouldBe` (args, ExitFailure 2, "", True, 1)
+          doesDirectoryExist out `shouldReturn` False
   describe "manifold sim" $ do
     let frameSteps :: BL.ByteString -> Either String [Int]
         frameSteps = A.eitherDecode >=> A.parseEither (A.withObject "sim" $ \o -> o .: "frames" >>= mapM (A.withObject "frame" (.: "step")))

@@ -14,6 +14,7 @@ import qualified GeodesicPathSpec
 import qualified GoldenSpec
 import qualified ImpSpec
 import qualified PhysicsSpec
+import qualified PresetSpec
 import qualified ReadmeExampleSpec
 import qualified SolverSpec
 import qualified StageSpec
@@ -27,6 +28,7 @@ main = do
     describe "Manifold.Elementary" ElementarySpec.spec
     describe "Manifold.Surface" SurfaceSpec.spec
     describe "Manifold.GeodesicPath" GeodesicPathSpec.spec
+    PresetSpec.spec
     describe "Manifold.Body" BodySpec.spec
     describe "manifold (command line)" CliSpec.spec
     describe "Manifold.World" EngineSpec.spec

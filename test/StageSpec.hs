@@ -47,6 +47,7 @@ import Test.QuickCheck.Random (mkQCGen)
 import Text.Printf (printf)
 
 import Manifold
+import Manifold.Presets (presetsScript, presetsScriptFile, readPresets)
 import Manifold.Stage.Expr (children, nodeById, nodeId, sym)
 import Manifold.Stage.Kernels
 import Manifold.Stage.Print
@@ -666,15 +667,17 @@ buildSpec = do
       forM_ (buildRuns bs) $ \(code, _, err) -> (code `shouldBe` ExitSuccess) >> (err `shouldBe` "")
       fa <- readDir (buildA bs)
       fb <- readDir (buildB bs)
-      M.keys fa `shouldBe` sort ("spaces.js" : comparisonScriptFile : map spaceScriptFile catalogue)
+      M.keys fa `shouldBe` sort ("spaces.js" : comparisonScriptFile : presetsScriptFile : map spaceScriptFile catalogue)
       M.keys fb `shouldBe` M.keys fa -- no temporary files left behind either
       forM_ (M.toList fa) $ \(f, bytes) ->
         unless (M.lookup f fb == Just bytes) $ expectationFailure (f ++ ": the two builds differ")
       -- In this process the node ids differ from the executable's, yet the
       -- bytes are the same.
       scripts <- printedScripts
+      presets <- readPresets "scenes" >>= either fail pure
       let expected = ("spaces.js", spaceIndexScript catalogue)
                      : (comparisonScriptFile, comparisonScript)
+                     : (presetsScriptFile, presetsScript presets)
                      : [ (spaceScriptFile s, str) | (s, str) <- zip catalogue scripts ]
       forM_ expected $ \(f, str) -> do
         all (< '\x80') str `shouldBe` True

@@ -295,6 +295,18 @@ declare namespace Manifold {
     spaceIndex: SpaceEntry[];
     /** the comparisons whose scripts have loaded (web/gen/compare-torus.js: torus) */
     comparisons?: Record<string, ComparisonDef>;
+    /** web/gen/presets.js: the preset scenes of scenes/ (Lib/Manifold/Presets.hs), by name */
+    presets?: Preset[];
+  }
+
+  /** A preset scene: scenes/SPACE-WHAT.json. */
+  interface Preset {
+    /** the file's name without .json: what #scene=NAME loads */
+    name: string;
+    space: string;
+    /** what it shows: the name's part after the space, in words */
+    title: string;
+    scene: Scene;
   }
 
   // ---- the scripting API (window.manifold) ----
@@ -489,6 +501,12 @@ declare namespace Manifold {
     curves(): Curves;
     /** loads a scene (JSON text or value; one of another space switches to it): the body count, or rejects naming the problem */
     loadScene(json: string | Scene): Promise<number>;
+    /** the preset scenes (scenes/, web/gen/presets.js): name, space and title of each */
+    presets(): { name: string; space: string; title: string }[];
+    /** loads a preset by name (switching to its space): the body count, or rejects naming an unknown one */
+    loadPreset(name: string): Promise<number>;
+    /** the preset the world was loaded from, while nothing else replaced it, or null */
+    preset(): string | null;
     /** the current scene (what Save scene downloads) */
     scene(): SavedScene;
     /** the comparison view's state, or null when it is not shown */

@@ -10,7 +10,9 @@
 // rest, with the size, shape, density and static chosen in the controls; a
 // grabbed body let go keeps its speed; t switches trails, which appear
 // (pixels differ from the same view without them) and fade (their oldest
-// end transparent, gone 4 s later).
+// end transparent, gone 4 s later). The preset scenes: loaded by URL and
+// by the select, each whole and stepping without warnings (a picture of
+// each), an unknown name refused.
 import path from "node:path";
 import { OUT, canvasShot } from "./lib.mjs";
 import { openSpace } from "./bodies.mjs";
@@ -265,6 +267,63 @@ async function testTrails(check, page) {
   await page.evaluate(function () { window.manifold.setTrails(false); });
 }
 
+// (7) presets: by URL (#scene=NAME), by the select, each loads (a picture of each), an unknown name refused
+async function testPresets(check, context, base) {
+  const errors = [];
+  const page = await openSpace(context, base, "#scene=trumpet-jam", errors);
+  await page.waitForFunction(function () { return window.manifold.preset() === "trumpet-jam"; }, null, { timeout: 10000 }).catch(function () {});
+  const byUrl = await page.evaluate(function () {
+    const m = window.manifold;
+    return { space: m.space(), bodies: m.bodies().length, preset: m.preset(), hash: location.hash, select: document.getElementById("preset").value,
+      want: m.presets().length };
+  });
+  check("#scene=trumpet-jam loads the preset: the trumpet with its 14 bodies, the select and the hash naming it",
+    byUrl.space === "trumpet" && byUrl.bodies === 14 && byUrl.preset === "trumpet-jam" && /scene=trumpet-jam/.test(byUrl.hash) &&
+      byUrl.select === "trumpet-jam", JSON.stringify(byUrl));
+  await page.selectOption("#preset", "rectangle-pyramid");
+  await page.waitForFunction(function () { return window.manifold.preset() === "rectangle-pyramid"; }, null, { timeout: 10000 }).catch(function () {});
+  const bySelect = await page.evaluate(function () { const m = window.manifold; return { space: m.space(), bodies: m.bodies().length, hash: location.hash }; });
+  await page.evaluate(function () { window.manifold.clear(); });
+  const afterClear = await page.evaluate(function () { return { preset: window.manifold.preset(), hash: location.hash, select: document.getElementById("preset").value }; });
+  check("choosing a preset in the select loads it (switching space); clearing the bodies leaves it (the hash, the select)",
+    bySelect.space === "rectangle" && bySelect.bodies === 36 && /scene=rectangle-pyramid/.test(bySelect.hash) &&
+      afterClear.preset === null && !/scene=/.test(afterClear.hash) && afterClear.select === "",
+    JSON.stringify({ bySelect: bySelect, afterClear: afterClear }));
+  const all = await page.evaluate(function () { return window.manifold.presets(); });
+  const loaded = [];
+  for (const p of all) {
+    const r = await page.evaluate(function (name) {
+      const m = window.manifold;
+      return m.loadPreset(name).then(function (n) {
+        m.pause();
+        m.step(100);
+        m.render();
+        return { name: name, n: n, want: window.Manifold.presets.find(function (q) { return q.name === name; }).scene.bodies.length,
+          space: m.space(), warnings: m.stats().warnings, error: m.error() };
+      });
+    }, p.name);
+    await canvasShot(page, path.join(OUT, "preset-" + p.name + ".png"));
+    loaded.push(r);
+  }
+  const names = all.map(function (p) { return p.name; });
+  const wanted = ["trumpet-jam", "projective-plane-image", "rectangle-pyramid", "sphere-rain", "cube-stack", "klein-bottle-orbit"];
+  check("every preset loads whole into its space and steps 1 s without warnings (pictures: test-output/browser/preset-NAME.png)",
+    wanted.every(function (n) { return names.indexOf(n) >= 0; }) &&
+      loaded.every(function (r) { return r.n === r.want && r.n > 0 && r.space === r.name.slice(0, r.space.length) && r.warnings === 0 && r.error === null; }),
+    loaded.map(function (r) { return r.name + " " + r.n + "/" + r.want + " w" + r.warnings; }).join(", "));
+  const unknown = await page.evaluate(function () {
+    const m = window.manifold, before = m.space();
+    return m.loadPreset("sphere-nothing").then(function () { return "loaded"; }, function (e) {
+      return { message: e.message, notice: document.getElementById("notice-text").textContent, kept: m.space() === before };
+    });
+  });
+  check("an unknown preset is refused with a notice listing the presets, the world kept",
+    unknown.kept && /no preset "sphere-nothing"; the presets are .*trumpet-jam/.test(unknown.message) && unknown.notice === unknown.message,
+    JSON.stringify(unknown));
+  check("presets page: no console errors", errors.length === 0, errors.join("; "));
+  await page.close();
+}
+
 export async function testTools(check, context, base) {
   const errors = [];
   const page = await openSpace(context, base, "#space=sphere", errors);
@@ -276,4 +335,5 @@ export async function testTools(check, context, base) {
   await testTrails(check, page);
   check("tools page: no console errors", errors.length === 0, errors.join("; "));
   await page.close();
+  await testPresets(check, context, base);
 }

@@ -149,6 +149,13 @@ var ManifoldWebApi = (function (W) {
       curves: MW.tools.curves,
       // load a scene (JSON text or value); a Promise of the body count, rejected with the problem
       loadScene: scenes.loadScene,
+      // the preset scenes (scenes/): [{name, space, title}]; loadPreset(name): a Promise of the body count; preset(): the one loaded, or null
+      presets: scenes.presets,
+      loadPreset: function (name) {
+        if (typeof name !== "string") return Promise.reject(new TypeError("loadPreset expects a preset's name"));
+        return scenes.loadPreset(name);
+      },
+      preset: function () { return state.preset; },
       // the current scene as a JSON value (what saveScene downloads)
       scene: scenes.currentScene,
       // Replace a space's GLSL (null restores the generated one); rebuilds the

@@ -24,6 +24,7 @@
       onGeodesicLength: guarded(MW.tools.setGeodesicLength),
       onTrails: guarded(MW.tools.setTrails),
       onClear: guarded(scenes.clearBodies),
+      onPreset: function (/** @type {string} */ name) { scenes.loadPreset(name).catch(function () {}); },
       onReset: guarded(function () { scenes.resetScene(); }),
       onSave: guarded(scenes.saveSceneFile),
       onLoad: guarded(scenes.loadSceneFile),
@@ -70,7 +71,11 @@
     MW.frame.watchSize(canvas);
     MW.input.watchInput(canvas);
     W.addEventListener("hashchange", hash.onHashChange);
-    MW.space.setSpace(first, { bodies: firstBodies }).catch(function () {});
+    state.ui.setPresets(scenes.presets(), state.index.map(function (e) { return e.name; }));
+    const preset = params.scene !== undefined && !state.debugBrokenShader ? scenes.presetNamed(params.scene) : null;
+    if (params.scene !== undefined && !preset) scenes.loadPreset(params.scene).catch(function () {}); // the notice: no such preset
+    if (preset) scenes.loadPreset(preset.name).catch(function () {});
+    else MW.space.setSpace(first, { bodies: firstBodies }).catch(function () {});
     MW.frame.startLoop();
   }
 

@@ -1,7 +1,8 @@
 // The display options (curvature colouring, grid, antialiasing, body detail)
-// and the URL hash: the hash kept in step with the page (space, bodies when
-// not the default scene's count, options), and a hash read back (at start and
-// when it is edited) into a space, a number of bodies and options.
+// and the URL hash: the hash kept in step with the page (space, the preset
+// scene loaded, else bodies when not the default scene's count, options),
+// and a hash read back (at start and when it is edited) into a space, a
+// preset or a number of bodies, and options.
 /* exported ManifoldWebHash */
 var ManifoldWebHash = (function (W) {
   "use strict";
@@ -17,7 +18,8 @@ var ManifoldWebHash = (function (W) {
     /** @type {Record<string, string | number>} */
     const params = { space: P.currentName() };
     const w = state.world;
-    if (w && !state.compare && w.count() !== defaultBodyCount()) params.bodies = w.count();
+    if (state.preset) params.scene = state.preset;
+    else if (w && !state.compare && w.count() !== defaultBodyCount()) params.bodies = w.count();
     if (state.options.curvature) params.curvature = 1;
     if (!state.options.grid) params.grid = 0;
     if (state.options.antialias !== P.DEFAULT_OPTIONS.antialias) params.aa = state.options.antialias;
@@ -102,6 +104,11 @@ var ManifoldWebHash = (function (W) {
     const params = MW.ui.parseHash(W.location.hash);
     const broken = params.debugBrokenShader === "1";
     setOptions(optionsFromHash(params));
+    if (params.scene !== undefined && !broken && !state.debugBrokenShader) {
+      // scene=NAME: a preset (loaded unless it is the world already)
+      if (params.scene !== state.preset) MW.scenes.loadPreset(params.scene).catch(function () {});
+      return;
+    }
     const name = spaceFromHash(params);
     const bodies = bodiesFromHash(params);
     if (name !== P.currentName() || broken !== state.debugBrokenShader) {

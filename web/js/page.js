@@ -54,6 +54,7 @@ var ManifoldWebPage = (function (W) {
    * @property {Promise<unknown>} queue
    * @property {Promise<string> | null} current
    * @property {ManifoldWeb.World | null} world
+   * @property {string | null} preset
    * @property {ManifoldWeb.Clock} clock
    * @property {ManifoldWeb.Comparison | null} compare
    */
@@ -80,6 +81,7 @@ var ManifoldWebPage = (function (W) {
     queue: Promise.resolve(),
     current: null,          // the promise of the latest space switch
     world: null,            // the bodies (web/js/world.js) of the current space
+    preset: null,           // the preset scene the world was loaded from (until something else replaces it), or null
     clock: new MW.world.Clock(),
     compare: null,          // the comparison view (web/js/compare.js) when it is shown, or null
   };

@@ -3,7 +3,7 @@
 // cut or filled, or a given scene), a body added from a scene body or at a
 // free point of the view, every body cleared, the default scene again, a
 // scene loaded (all or nothing; one of another space switches to it), saved
-// and downloaded, or read from a file.
+// and downloaded, or read from a file; the preset scenes, loaded by name.
 /* exported ManifoldWebScenes */
 var ManifoldWebScenes = (function (W) {
   "use strict";
@@ -34,6 +34,7 @@ var ManifoldWebScenes = (function (W) {
   /** @param {ManifoldWeb.ParsedScene | null} scene @param {number | null} [bodies] */
   function newWorld(scene, bodies) {
     MW.input.releaseGrab();
+    setPreset(null);
     state.world = null;
     state.clock.reset();
     if (!state.space.engine) {
@@ -95,6 +96,7 @@ var ManifoldWebScenes = (function (W) {
       throw new RangeError("resetScene(n) expects a whole number of bodies from 0 to " + w.maxBodies());
     }
     MW.input.releaseGrab();
+    setPreset(null);
     if (state.compare) {
       // the comparison's own scene on both
       const def = state.compare.def, names = state.index.map(function (e) { return e.name; });
@@ -115,6 +117,7 @@ var ManifoldWebScenes = (function (W) {
 
   function clearBodies() {
     P.requireWorld().clear();
+    setPreset(null);
     if (state.compare) state.compare.flat.clear();
     bodiesChangedCount();
   }
@@ -123,6 +126,7 @@ var ManifoldWebScenes = (function (W) {
   // Resolves with the number of bodies; rejects (and shows why on the page) on bad input.
   /** @param {string | Manifold.Scene} json @returns {Promise<number>} */
   function loadScene(json) {
+    setPreset(null);
     if (state.compare) {
       // a scene is one space's: show that space alone
       const parsed = (function () { try { return MW.world.parseScene(json, state.index.map(function (e) { return e.name; })); } catch (err) { return null; } })();
@@ -166,6 +170,42 @@ var ManifoldWebScenes = (function (W) {
     return Promise.resolve(done());
   }
 
+  // ---- presets: the scene files of scenes/, generated into web/gen/presets.js ----
+  /** @param {string | null} name */
+  function setPreset(name) {
+    state.preset = name;
+    if (state.ui) state.ui.setPreset(name);
+  }
+
+  function presetList() { return W.Manifold.presets || []; }
+
+  /** @param {string} name */
+  function presetNamed(name) {
+    return presetList().find(function (p) { return p.name === name; }) || null;
+  }
+
+  // Loads the preset `name` (switching to its space); a Promise of the body count.
+  /** @param {string} name @returns {Promise<number>} */
+  function loadPreset(name) {
+    const p = presetNamed(name);
+    if (!p) {
+      const e = new Error("There is no preset " + JSON.stringify(name) + "; the presets are " +
+        (presetList().map(function (q) { return q.name; }).join(", ") || "none (rebuild web/gen with `manifold build`)") + ".");
+      state.ui.showNotice(e.message);
+      state.ui.setPreset(state.preset);
+      return Promise.reject(e);
+    }
+    return loadScene(p.scene).then(function (n) {
+      setPreset(name);
+      MW.hash.updateHash();
+      return n;
+    });
+  }
+
+  function presets() {
+    return presetList().map(function (p) { return { name: p.name, space: p.space, title: p.title }; });
+  }
+
   function currentScene() {
     return P.requireWorld().scene();
   }
@@ -198,6 +238,9 @@ var ManifoldWebScenes = (function (W) {
     resetScene: resetScene,
     clearBodies: clearBodies,
     loadScene: loadScene,
+    loadPreset: loadPreset,
+    presetNamed: presetNamed,
+    presets: presets,
     currentScene: currentScene,
     saveSceneFile: saveSceneFile,
     loadSceneFile: loadSceneFile,

@@ -78,6 +78,7 @@ var ManifoldWebUi = (function (W) {
    * @property {(tool: string) => void} onTool
    * @property {(length: number) => void} onGeodesicLength
    * @property {(on: boolean) => void} onTrails
+   * @property {(name: string) => void} onPreset a preset scene was chosen
    * @property {() => void} onClear
    * @property {() => void} onReset
    * @property {() => void} onPause
@@ -248,6 +249,9 @@ var ManifoldWebUi = (function (W) {
     toolSelect.addEventListener("change", function () { handlers.onTool(toolSelect.value); });
     lengthInput.addEventListener("change", function () { handlers.onGeodesicLength(Number(lengthInput.value)); });
     trailsBox.addEventListener("change", function () { handlers.onTrails(trailsBox.checked); });
+    /** @type {HTMLSelectElement} */
+    const presetSelect = $("preset");
+    presetSelect.addEventListener("change", function () { if (presetSelect.value) handlers.onPreset(presetSelect.value); });
     $("clear").addEventListener("click", function () { handlers.onClear(); });
     $("reset-scene").addEventListener("click", function () { handlers.onReset(); });
     pause.addEventListener("click", function () { handlers.onPause(); });
@@ -432,6 +436,32 @@ var ManifoldWebUi = (function (W) {
         recordDot.hidden = !on;
         record.title = on ? "stop recording and download the video" : recordTitle;
       },
+      // the presets, grouped by space in the catalogue's order; "" heads the list (none)
+      /** @param {{ name: string, space: string, title: string }[]} presets @param {string[]} spaces */
+      setPresets: function (presets, spaces) {
+        presetSelect.textContent = "";
+        const none = document.createElement("option");
+        none.value = "";
+        none.textContent = presets.length ? "—" : "(none built)";
+        presetSelect.appendChild(none);
+        spaces.forEach(function (space) {
+          const mine = presets.filter(function (p) { return p.space === space; });
+          if (!mine.length) return;
+          const group = document.createElement("optgroup");
+          group.label = space;
+          mine.forEach(function (p) {
+            const opt = document.createElement("option");
+            opt.value = p.name;
+            opt.textContent = p.title;
+            opt.title = p.name;
+            group.appendChild(opt);
+          });
+          presetSelect.appendChild(group);
+        });
+        presetSelect.disabled = presets.length === 0;
+      },
+      /** @param {string | null} name */
+      setPreset: function (name) { presetSelect.value = name || ""; },
       // the browser cannot record: the Record button disabled, its title saying why
       /** @param {string} why */
       setRecordingUnavailable: function (why) {

@@ -1,0 +1,93 @@
+-- | The preset scenes of @scenes/@ ("Manifold.Presets"): every file is a
+-- preset of the space its name starts with, names and scenes that are
+-- wrong are refused naming the file, and each preset shows what its name
+-- says when the native engine runs it: the pyramid and the cube's stack
+-- stand, the trumpet's bodies jam in its neck and stay there, on the
+-- projective plane a body meets the antipodal image of another (never the
+-- body itself) and sets it moving, the Klein bottle's bodies go round at
+-- a constant speed (free motion: nothing touches them).
+module PresetSpec (spec) where
+
+import Control.Monad (forM, replicateM_)
+import qualified Data.ByteString.Lazy.Char8 as BLC
+import Data.Either (fromLeft)
+import Data.List (isInfixOf)
+import Linear.Metric (distance, norm)
+import Linear.V3 (V3 (..))
+import Linear.Vector ((^+^))
+import Test.Hspec
+
+import Manifold.Engine
+import Manifold.Presets
+import Manifold.Scene (loadScene, parseScene)
+
+-- | The preset's world after each of some runs of steps: the bodies'
+-- states, and the warnings so far.
+runPreset :: String -> [Int] -> IO [([BodyState], Int)]
+runPreset name runs = do
+  text <- BLC.readFile ("scenes/" ++ name ++ ".json")
+  scene <- either fail pure (parseScene text)
+  w <- loadScene 0 scene >>= either fail pure
+  n <- bodyCount w
+  let look = (,) <$> mapM (readBody w) [0 .. n - 1] <*> warningCount w
+  forM runs $ \k -> replicateM_ k (stepNative w) >> look
+
+-- | The largest distance a body moved between two states of the world.
+mostMoved :: [BodyState] -> [BodyState] -> Double
+mostMoved a b = maximum (zipWith (\x y -> distance (bsPos x) (bsPos y)) a b)
+
+spec :: Spec
+spec = describe "Manifold.Presets" $ do
+  it "every file of scenes/ is a preset of its space, the paper's figures among them" $ do
+    presets <- readPresets "scenes" >>= either fail pure
+    map presetName presets `shouldSatisfy` \names ->
+      all (`elem` names) ["trumpet-jam", "projective-plane-image", "rectangle-pyramid", "sphere-rain", "cube-stack", "klein-bottle-orbit"]
+    mapM_ (\p -> presetName p `shouldStartWith` (presetSpace p ++ "-")) presets
+
+  it "refuses a name of no space, an empty part after it, a scene of another space and a bad scene, naming the file" $ do
+    let refused file text = fromLeft "accepted" (presetOf file (BLC.pack text))
+    refused "moon-jam.json" "{\"space\": \"sphere\"}" `shouldSatisfy` ("scenes/moon-jam.json: the name must be SPACE-WHAT.json" `isInfixOf`)
+    refused "sphere-.json" "{\"space\": \"sphere\"}" `shouldSatisfy` ("lower-case words" `isInfixOf`)
+    refused "sphere-Rain.json" "{\"space\": \"sphere\"}" `shouldSatisfy` ("lower-case words" `isInfixOf`)
+    refused "torus-jam.json" "{\"space\": \"sphere\"}" `shouldBe` "scenes/torus-jam.json: a scene of sphere, but the name says torus"
+    refused "sphere-jam.json" "{\"space\": \"sphere\", \"bodies\": [{\"shape\": \"circle\"}]}"
+      `shouldBe` "scenes/sphere-jam.json: $.bodies[0].size: is missing"
+    -- the longest space name counts: flat-torus-… is the flat torus's, not the torus's
+    either id presetSpace (presetOf "flat-torus-wind.json" (BLC.pack "{\"space\": \"flat-torus\"}")) `shouldBe` "flat-torus"
+    -- the title: the rest of the name, in words
+    either id presetTitle (presetOf "sphere-big-rain.json" (BLC.pack "{\"space\": \"sphere\"}")) `shouldBe` "big rain"
+
+  it "every preset runs 3 s natively without a warning" $ do
+    presets <- readPresets "scenes" >>= either fail pure
+    warned <- forM presets $ \p -> (,) (presetName p) . snd . last <$> runPreset (presetName p) [300]
+    filter ((/= 0) . snd) warned `shouldBe` []
+
+  it "the rectangle's pyramid of 36 boxes stands: in 10 s no box moves a quarter of its half side (0.11)" $ do
+    [(a, _), (b, _)] <- runPreset "rectangle-pyramid" [0, 1000]
+    length a `shouldBe` 36
+    mostMoved a b `shouldSatisfy` (< 0.25 * 0.11)
+
+  it "the cube's tower stands on its static floor across the face: in 10 s no box moves a fifth of its half side (0.1)" $ do
+    [(a, _), (b, _)] <- runPreset "cube-stack" [0, 1000]
+    mostMoved a b `shouldSatisfy` (< 0.2 * 0.1)
+
+  it "the trumpet's bodies slide into its neck and jam there: from 10 s to 30 s every one stays between y = -2.7 and -0.3" $ do
+    states <- runPreset "trumpet-jam" (1000 : replicate 4 500)
+    let ys = [y | (bodies, _) <- states, b <- bodies, let V3 _ y _ = bsPos b]
+    minimum ys `shouldSatisfy` (> -2.7)
+    maximum ys `shouldSatisfy` (< -0.3)
+
+  it "on the projective plane the moving body meets the other's antipodal image, never the body, and sets it moving" $ do
+    states <- runPreset "projective-plane-image" (replicate 80 10)
+    let pairs = [(bsPos a, bsPos b) | ([a, b], _) <- states]
+        direct = minimum [distance pa pb | (pa, pb) <- pairs]
+        image = minimum [norm (pa ^+^ pb) | (pa, pb) <- pairs]
+        ([_, hit], _) = last states
+    direct `shouldSatisfy` (> 1)
+    image `shouldSatisfy` (< 0.4 + 0.01) -- within the sum of the radii: a contact through the image
+    norm (bsVel hit) `shouldSatisfy` (> 0.1)
+
+  it "the Klein bottle's bodies go round each at its speed (0.6: free motion on the surface, no contact)" $ do
+    states <- runPreset "klein-bottle-orbit" (replicate 10 100)
+    let speeds = [norm (bsVel b) | (bodies, _) <- states, b <- bodies]
+    maximum (map (abs . subtract 0.6) speeds) `shouldSatisfy` (< 1e-3)
