@@ -13,6 +13,7 @@ import qualified FlatSpec
 import qualified GeodesicPathSpec
 import qualified GoldenSpec
 import qualified ImpSpec
+import qualified MeasuresSpec
 import qualified PhysicsSpec
 import qualified PresetSpec
 import qualified ReadmeExampleSpec
@@ -29,6 +30,7 @@ main = do
     describe "Manifold.Surface" SurfaceSpec.spec
     describe "Manifold.GeodesicPath" GeodesicPathSpec.spec
     PresetSpec.spec
+    MeasuresSpec.spec
     describe "Manifold.Body" BodySpec.spec
     describe "manifold (command line)" CliSpec.spec
     describe "Manifold.World" EngineSpec.spec

@@ -169,6 +169,8 @@ declare namespace Manifold {
     images: Image[];
     /** the radius of the ball about the origin that holds the surface's view */
     bounds: number;
+    /** the axis the space is symmetric about (the measures' axial momentum is about it), or null */
+    axis: Vec3 | null;
     camera: CameraSpec;
     /** the default scene's bodies */
     scene: { shape: Shape; size: number; p: Vec3 }[];
@@ -204,6 +206,8 @@ declare namespace Manifold {
   type MouseField =
     | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
     | "mFrequency" | "mDamping" | "mMaxForce" | "mImpulseU" | "mImpulseW" | "mSign";
+  /** What the engine's measure (the world) and measureBody (one body) write, slots of their out array. */
+  type MeasureField = "kineticEnergy" | "axialMomentum" | "bodySpeed" | "bodyEnergy" | "bodyContacts";
   /** A point of a walked geodesic, `path.stride` consecutive entries after the count in path[0]. */
   type PathField = "pathX" | "pathY" | "pathZ" | "pathBreak";
   type ContactGroup = "pairKey" | "unused" | "boundaryKey" | "selfKey" | "firstImageKey";
@@ -259,6 +263,12 @@ declare namespace Manifold {
     /** (arrays, qx, qy, qz): the mouse joint's target */
     drag: Procedure;
     release: Procedure;
+    /** the measures' out array (Lib/Manifold/Measures.hs): its length and slots */
+    measures: { size: number; slots: Record<MeasureField, number> };
+    /** (arrays, out): the bodies' kinetic energy and their centres' angular momentum about the space's axis (0 without one) into out */
+    measure: Procedure;
+    /** (arrays, out, index): the body's speed, kinetic energy and contact rows into out */
+    measureBody: Procedure;
     /** a walked geodesic's layout (Lib/Manifold/GeodesicPath.hs): path[0] the points walked, then each point's slots */
     path: { stride: number; slots: Record<PathField, number> };
     /** (path, px, py, pz, dx, dy, dz, length, steps): the geodesic from p in the tangent direction of d, walked into path (length 1 + stride · (steps + 1)); it takes the one array, not the engine's */
@@ -421,6 +431,18 @@ declare namespace Manifold {
     points: Vec3[];
     breaks: number[];
   }
+  interface Inspected {
+    index: number;
+    shape: Shape;
+    size: number;
+    static: boolean;
+    speed: number;
+    omega: number;
+    /** kinetic energy, translation and spin */
+    energy: number;
+    /** the last step's contact rows the body is in */
+    contacts: number;
+  }
   interface Curves {
     /** the geodesic tool's curve */
     geodesic: Curve | null;
@@ -499,6 +521,11 @@ declare namespace Manifold {
     setTrails(on: boolean): void;
     /** what is drawn over the bodies */
     curves(): Curves;
+    /** the live plot's samples (one every `every` simulated seconds, `seconds` kept); axialMomentum null where the space has no axis */
+    plot(): { on: boolean; seconds: number; every: number; samples: Record<"time" | "kineticEnergy" | "axialMomentum" | "contacts" | "stepMs", number[] | null> };
+    setPlot(on: boolean): void;
+    /** what the inspector says of the body under backing-store pixel (x, y) (the engine's measureBody), or null */
+    inspect(x: number, y: number): Inspected | null;
     /** loads a scene (JSON text or value; one of another space switches to it): the body count, or rejects naming the problem */
     loadScene(json: string | Scene): Promise<number>;
     /** the preset scenes (scenes/, web/gen/presets.js): name, space and title of each */

@@ -1,7 +1,7 @@
 {-# LANGUAGE FlexibleContexts #-}
 -- | The engine as a staged program: the step's phases and the page's
--- procedures (adding, removing, picking and grabbing bodies) over the
--- world's arrays, and the geodesic the page's tool draws, as
+-- procedures (adding, removing, picking and grabbing bodies, the measures
+-- the page plots) over the world's arrays, and the geodesic the page's tool draws, as
 -- "Manifold.Stage.Imp" stages them. The page's script
 -- ("Manifold.Stage.EngineScript") and the compiled native step
 -- ("Manifold.Compile") are both made from these lists.
@@ -21,6 +21,7 @@ import Linear.V3 (V3 (..))
 import Manifold.Body
 import Manifold.GeodesicPath (walkGeodesic)
 import Manifold.Grab
+import Manifold.Measures (measureBody, measureWorld)
 import Manifold.Population
 import Manifold.Space
 import Manifold.Stage.Expr (E)
@@ -59,6 +60,10 @@ pageProcedures sp l = stepProcedures sp l ++
   , (Procedure "drag" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
   , (Procedure "release" worldParams [], \_ _ -> release stagedArrays)
+  , (Procedure "measure" (worldParams ++ ["out"]) [],
+      \arrays _ -> measureWorld sp stagedArrays (last arrays))
+  , (Procedure "measureBody" (worldParams ++ ["out"]) ["index"],
+      \arrays [i] -> measureBody sp stagedArrays (last arrays) (toIndex i))
   , (Procedure "geodesic" ["path"] ["px", "py", "pz", "dx", "dy", "dz", "length", "steps"],
       \[path] [px, py, pz, dx, dy, dz, len, steps] ->
          walkGeodesic sp path (V3 px py pz) (V3 dx dy dz) len (toIndex steps))

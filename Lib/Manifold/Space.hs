@@ -223,6 +223,7 @@ data Space = Space
   , spaceCamera :: Camera -- ^ the page's first view
   , spaceScene :: [Placement] -- ^ the bodies the page starts with
   , spaceBounds :: Double -- ^ radius of a ball around the origin holding the part of the surface worth drawing and simulating
+  , spaceAxis :: Maybe (V3 Double) -- ^ a unit axis through the origin the surface, its boundary and its quotient are symmetric about, if any: the bodies' angular momentum about it is conserved where gravity does not turn them about it ("Manifold.Measures")
   }
 
 -- | A space with no boundary, no quotient, no gravity, a camera on the z axis
@@ -242,6 +243,7 @@ space name description f = Space
   , spaceCamera = Camera (V3 0 1.5 3.5) (V3 0 0 0) (V3 0 1 0) 45
   , spaceScene = []
   , spaceBounds = 3
+  , spaceAxis = Nothing
   }
 
 -- | Whether the space has a boundary (a wall the bodies meet).

@@ -105,6 +105,7 @@ sphere :: Space
 sphere = (space "sphere" "the unit sphere; gravity pulls to the south pole" (scalarFn unitSphereField))
   { spaceGravity = uniformGravity (V3 0 (-4) 0)
   , spaceCamera = look (V3 0 (-1.8) 2.6)
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 6 0.6 (-0.8) SquareShape 0.2
   }
 
@@ -117,6 +118,7 @@ torus :: Space
 torus = (space "torus" "a torus about the y axis, R = 0.8, r = 0.5 (curvature > 0 outside, < 0 inside)" (scalarFn torusField))
   { spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.2 (-2.8))
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 6 1.3 0 SquareShape 0.18
   }
 
@@ -126,6 +128,7 @@ trumpet :: Space
 trumpet = (space "trumpet" "sqrt(x²+z²) = exp y, a pseudosphere-like horn narrowing downwards; bodies jam in the neck" (scalarFn trumpetField))
   { spaceGravity = uniformGravity (V3 0 (-0.6) 0)
   , spaceCamera = Camera (V3 0 1.5 4.5) (V3 0 (-0.5) 0) (V3 0 1 0) 45
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 4 (exp 0.3) 0.3 SquareShape 0.3
   , spaceBounds = 4
   }
@@ -152,6 +155,7 @@ hemisphere = (space "hemisphere" "the lower half of the unit sphere (y <= 0), a 
   { spaceBoundary = Just (scalarFn (\(V3 _ y _) -> negate y))
   , spaceGravity = uniformGravity (V3 0 (-4) 0)
   , spaceCamera = look (V3 0 2.2 2.2)
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 5 0.5 (-0.8) SquareShape 0.18
   }
 
@@ -161,6 +165,7 @@ disc = (space "disc" "the unit disc on the plane y = 0, with a circular wall" (s
   { spaceBoundary = Just (scalarFn (\p -> 1 - radial p))
   , spaceGravity = uniformGravity (V3 0 0 (-4))
   , spaceCamera = look (V3 0 2.2 (-1.6))
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = grid [-0.4, 0, 0.4] [-0.2, 0.3] SquareShape 0.15
   }
 
@@ -181,6 +186,7 @@ projectivePlane = (space "projective-plane" "the real projective plane: the unit
   { spaceQuotient = Antipodal
   , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (4 * y) 0)
   , spaceCamera = look (V3 0 1.2 3)
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 3 0.8 0.5 SquareShape 0.2
   }
 
@@ -190,6 +196,7 @@ kleinBottle = (space "klein-bottle" "the origin-centred torus with p ~ -p, a Kle
   { spaceQuotient = Antipodal
   , spaceGravity = VectorFn (\(V3 x _ z) -> V3 (-3 * x) 0 (-3 * z))
   , spaceCamera = look (V3 0 2.2 2.8)
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 3 1.3 0 SquareShape 0.18
   }
 
@@ -201,6 +208,7 @@ moebius = (space "moebius" "the cylinder of radius 1, |y| <= 0.4, with p ~ -p: a
   , spaceBoundary = Just (scalarFn (\(V3 _ y _) -> 0.4 - abs y))
   , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (-4 * y) 0)
   , spaceCamera = look (V3 0 2.2 2.8)
+  , spaceAxis = Just (V3 0 1 0)
   , spaceScene = ring 3 1 0.1 SquareShape 0.15
   }
 

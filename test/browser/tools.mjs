@@ -12,9 +12,12 @@
 // (pixels differ from the same view without them) and fade (their oldest
 // end transparent, gone 4 s later). The preset scenes: loaded by URL and
 // by the select, each whole and stepping without warnings (a picture of
-// each), an unknown name refused.
+// each), an unknown name refused. The plot (p): for a free body on the
+// torus its energy and axial momentum lines are flat; on the cube, which
+// has no axis, there is no axial momentum. The inspector: Alt and the
+// pointer on a body describe it.
 import path from "node:path";
-import { OUT, canvasShot } from "./lib.mjs";
+import { OUT, canvasShot, decodePNG } from "./lib.mjs";
 import { openSpace } from "./bodies.mjs";
 
 function sleep(ms) { return new Promise(function (resolve) { setTimeout(resolve, ms); }); }
@@ -216,12 +219,15 @@ async function testLetGo(check, page) {
     await page.mouse.move(x + 10 * i, y);
     await sleep(40);
   }
-  const held = await page.evaluate(function () { return window.manifold.grabbed(); });
+  // still moving the pointer: the joint pulls the body along at the pointer's pace
+  await page.mouse.move(x + 90, y);
+  const before = await page.evaluate(function () { const m = window.manifold; m.pause(); return { grabbed: m.grabbed(), v: m.bodies()[0].v }; });
   await page.mouse.up();
-  const v = await page.evaluate(function () { const m = window.manifold; m.pause(); return { grabbed: m.grabbed(), v: m.bodies()[0].v }; });
-  check("a grabbed body dragged and let go keeps moving (the joint's velocity)",
-    held === 0 && v.grabbed === -1 && Math.hypot.apply(null, v.v) > 0.05,
-    "held " + held + ", speed after release " + Math.hypot.apply(null, v.v).toFixed(3));
+  const v = await page.evaluate(function () { const m = window.manifold; m.step(1); return { grabbed: m.grabbed(), v: m.bodies()[0].v }; });
+  const s0 = Math.hypot.apply(null, before.v), s1 = Math.hypot.apply(null, v.v);
+  check("a grabbed body dragged and let go keeps the velocity the joint gave it (a step later)",
+    before.grabbed === 0 && v.grabbed === -1 && s0 > 0.01 && Math.abs(s1 / s0 - 1) < 0.05,
+    "held " + before.grabbed + ", speed held " + s0.toFixed(4) + ", a step after release " + s1.toFixed(4));
 }
 
 // (6) trails: t switches them; they appear and fade
@@ -265,6 +271,81 @@ async function testTrails(check, page) {
     faded[0].segments > 30 && faded[0].oldest < 0.1 && faded[0].newest > 0.9 && faded[1].segments === 0,
     JSON.stringify(faded));
   await page.evaluate(function () { window.manifold.setTrails(false); });
+}
+
+// (8) the plot: p shows it; for a free body on the torus the energy and the axial momentum are flat lines
+async function testPlot(check, page) {
+  await page.evaluate(function () {
+    const m = window.manifold;
+    return m.setSpace("torus").then(function () {
+      return m.loadScene({ space: "torus", gravity: false, bodies: [{ shape: "circle", size: 0.15, p: [1.3, 0, 0], v: [0, 0.4, 0.5], omega: 1 }] });
+    }).then(function () { m.resume(); });
+  });
+  await page.mouse.click(5, 5);
+  await page.keyboard.press("p");
+  await sleep(3500);
+  const r = await page.evaluate(function () {
+    const m = window.manifold;
+    m.pause();
+    const p = m.plot();
+    const spread = function (v) { return (Math.max.apply(null, v) - Math.min.apply(null, v)) / Math.abs(v[0]); };
+    return { on: p.on, box: document.getElementById("plot-toggle").checked, n: p.samples.time.length,
+      energy: spread(p.samples.kineticEnergy), axial: spread(p.samples.axialMomentum), first: p.samples.kineticEnergy[0] };
+  });
+  await sleep(200);
+  const shot = await page.locator("#plot").screenshot();
+  const img = decodePNG(shot);
+  // the energy line's pixels (its colour, below the legend): one row, give or take antialiasing
+  const rows = [];
+  for (let y = 36; y < img.height; y++) {
+    for (let x = 0; x < img.width; x++) {
+      const c = img.at(x, y);
+      if (c[0] > 200 && c[1] > 170 && c[1] < 235 && c[2] < 140) { rows.push(y); break; }
+    }
+  }
+  check("p shows the plot (its checkbox follows); for a free body on the torus its energy and axial momentum stay flat (Clairaut), and the energy line is drawn flat",
+    r.on && r.box && r.n >= 20 && r.energy < 1e-6 && r.axial < 1e-5 && rows.length > 0 && Math.max.apply(null, rows) - Math.min.apply(null, rows) <= 3,
+    JSON.stringify(r) + ", energy line on rows " + (rows.length ? Math.min.apply(null, rows) + "–" + Math.max.apply(null, rows) : "none"));
+  const cube = await page.evaluate(function () {
+    const m = window.manifold;
+    return m.setSpace("cube").then(function () { m.resume(); return new Promise(function (res) { setTimeout(res, 600); }); }).then(function () {
+      const p = m.plot();
+      return { axial: p.samples.axialMomentum, n: p.samples.time.length };
+    });
+  });
+  check("on the cube, which has no axis, the plot has no axial momentum, and starts again with the new world",
+    cube.axial === null && cube.n >= 1 && cube.n < 20, JSON.stringify(cube));
+  await page.evaluate(function () { window.manifold.setPlot(false); });
+}
+
+// (9) the inspector: Alt and the pointer on a body describe it; letting go of Alt hides it
+async function testInspector(check, page) {
+  const at = await page.evaluate(function () {
+    const m = window.manifold, st = m.stats();
+    const p = m.pick(st.width / 2, st.height / 2);
+    return m.loadScene({ space: m.space(), gravity: false, bodies: [{ shape: { polygon: 5 }, size: 0.2, p: p, v: [0.1, 0, 0], omega: 0.5 }] }).then(function () {
+      m.pause();
+      m.render();
+      return m.project(m.bodies()[0].p);
+    });
+  });
+  const box = await page.locator("#view").boundingBox();
+  await page.keyboard.down("Alt");
+  await page.mouse.move(box.x + at[0] + 2, box.y + at[1] + 1);
+  await sleep(200);
+  const shown = await page.evaluate(function (a) {
+    const el = document.getElementById("inspector");
+    const v = window.manifold.bodies()[0].v;
+    return { hidden: el.hidden, text: el.textContent, api: window.manifold.inspect(a[0], a[1]), speed: Math.hypot(v[0], v[1], v[2]) };
+  }, at);
+  await page.keyboard.up("Alt");
+  await sleep(100);
+  const after = await page.evaluate(function () { return document.getElementById("inspector").hidden; });
+  const d = shown.api;
+  check("Alt and the pointer on a body show the inspector (its shape, speed, spin, energy, contacts), as inspect(x, y) gives them; letting go of Alt hides it",
+    !shown.hidden && /body 0 · 5-gon 0\.200 · speed [0-9.]+ · ω 0\.500 · energy [0-9.e-]+ · contacts 0/.test(shown.text) && d && d.index === 0 &&
+      Math.abs(d.speed - shown.speed) < 1e-12 && d.speed > 0.05 && d.energy > 0 && d.contacts === 0 && after,
+    JSON.stringify({ text: shown.text, api: d, hiddenAfter: after }));
 }
 
 // (7) presets: by URL (#scene=NAME), by the select, each loads (a picture of each), an unknown name refused
@@ -333,6 +414,8 @@ export async function testTools(check, context, base) {
   await testThrow(check, page);
   await testLetGo(check, page);
   await testTrails(check, page);
+  await testPlot(check, page);
+  await testInspector(check, page);
   check("tools page: no console errors", errors.length === 0, errors.join("; "));
   await page.close();
   await testPresets(check, context, base);

@@ -145,6 +145,15 @@ var ManifoldWebApi = (function (W) {
       clearGeodesic: MW.tools.clearGeodesic,
       trails: function () { return MW.tools.tools.trailsOn; },
       setTrails: MW.tools.setTrails,
+      // the live plot: plot() its samples {on, seconds, every, samples: {time, kineticEnergy, axialMomentum (null without an axis), contacts, stepMs}}
+      plot: MW.plot.samples,
+      setPlot: MW.plot.setPlot,
+      // what the inspector says of the body under backing-store pixel (x, y), or null
+      inspect: function (x, y) {
+        if (typeof x !== "number" || typeof y !== "number") throw new TypeError("inspect(x, y) expects canvas backing-store pixels");
+        const q = input.surfacePoint(x, y), hit = q && state.world ? state.world.pick(q) : null;
+        return hit ? MW.inspector.describe(hit.index) : null;
+      },
       // what is drawn over the bodies: {geodesic, preview (a throw's, a point per step), trails: {on, samples, segments}}
       curves: MW.tools.curves,
       // load a scene (JSON text or value); a Promise of the body count, rejected with the problem

@@ -23,6 +23,7 @@
       onTool: guarded(MW.tools.setTool),
       onGeodesicLength: guarded(MW.tools.setGeodesicLength),
       onTrails: guarded(MW.tools.setTrails),
+      onPlot: guarded(MW.plot.setPlot),
       onClear: guarded(scenes.clearBodies),
       onPreset: function (/** @type {string} */ name) { scenes.loadPreset(name).catch(function () {}); },
       onReset: guarded(function () { scenes.resetScene(); }),

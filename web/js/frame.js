@@ -225,6 +225,7 @@ var ManifoldWebFrame = (function (W) {
       if (n > 0 && w.count() > 0) w.step(n);
       if (n > 0 && state.compare && state.compare.flat.count() > 0) state.compare.flat.step(n);
       MW.tools.sampleTrails();
+      MW.plot.sample();
     }
     const before = drawn.frameCount;
     if (!state.error) {
@@ -236,6 +237,8 @@ var ManifoldWebFrame = (function (W) {
       if (state.compare) state.compare.render(false);
     }
     if (drawn.captures.length) fulfilCaptures(before);
+    MW.plot.draw();
+    MW.inspector.refresh();
     showStats(now);
   }
 

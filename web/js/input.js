@@ -166,6 +166,14 @@ var ManifoldWebInput = (function (W) {
       if (pointers.size < 2) pinch = 0;
       if (pointers.size === 0) canvas.classList.remove("dragging");
     }
+    // the inspector: with Alt held, the body under a pointer that presses nothing
+    canvas.addEventListener("pointermove", function (e) {
+      if (pointers.size || grabPointer !== null || toolPointer) return;
+      if (e.altKey) MW.inspector.hover(e.clientX, e.clientY, pixelOf(e));
+      else MW.inspector.hide();
+    });
+    canvas.addEventListener("pointerleave", function () { MW.inspector.hide(); });
+    W.addEventListener("keyup", function (e) { if (e.key === "Alt") MW.inspector.hide(); });
     canvas.addEventListener("pointerup", end);
     canvas.addEventListener("pointercancel", end);
     canvas.addEventListener("lostpointercapture", end);

@@ -27,6 +27,8 @@ interface ManifoldWebModules {
   capture: typeof ManifoldWebCapture;
   curves: typeof ManifoldWebCurves;
   tools: typeof ManifoldWebTools;
+  plot: typeof ManifoldWebPlot;
+  inspector: typeof ManifoldWebInspector;
 }
 
 /** The page's modules (web/js), by file. */

@@ -6,7 +6,8 @@
 // the world or an error, a failure shown on the page, a control that reports
 // its errors as a notice. The parts, loaded after this file: frame.js,
 // input.js, space.js, hash.js, compare-setup.js, simulation-settings.js,
-// scenes.js, tools.js, api.js, capture.js, and app.js, which starts them.
+// scenes.js, tools.js, plot.js, inspector.js, api.js, capture.js, and
+// app.js, which starts them.
 /* exported ManifoldWebPage */
 var ManifoldWebPage = (function (W) {
   "use strict";

@@ -1,7 +1,7 @@
 // The page's controls and messages: the space selector, the curvature and
 // antialiasing options, the new body's controls, the tool and trails, the
 // engine parameters' controls (made from the generated scene keys they
-// set), the keys (Space, s, r, c, g, t, ?) and the help
+// set), the keys (Space, s, r, c, g, t, p, ?) and the help
 // overlay listing them and the gestures, the stats line, the error panel,
 // the capture buttons (Save image, Record / Stop), and the URL hash.
 /* exported ManifoldWebUi */
@@ -78,6 +78,7 @@ var ManifoldWebUi = (function (W) {
    * @property {(tool: string) => void} onTool
    * @property {(length: number) => void} onGeodesicLength
    * @property {(on: boolean) => void} onTrails
+   * @property {(on: boolean) => void} onPlot
    * @property {(name: string) => void} onPreset a preset scene was chosen
    * @property {() => void} onClear
    * @property {() => void} onReset
@@ -249,6 +250,9 @@ var ManifoldWebUi = (function (W) {
     toolSelect.addEventListener("change", function () { handlers.onTool(toolSelect.value); });
     lengthInput.addEventListener("change", function () { handlers.onGeodesicLength(Number(lengthInput.value)); });
     trailsBox.addEventListener("change", function () { handlers.onTrails(trailsBox.checked); });
+    /** @type {HTMLInputElement} */
+    const plotBox = $("plot-toggle");
+    plotBox.addEventListener("change", function () { handlers.onPlot(plotBox.checked); });
     /** @type {HTMLSelectElement} */
     const presetSelect = $("preset");
     presetSelect.addEventListener("change", function () { if (presetSelect.value) handlers.onPreset(presetSelect.value); });
@@ -275,7 +279,7 @@ var ManifoldWebUi = (function (W) {
 
     // keys: what each does (the help overlay, #keys-help in index.html, lists
     // them with the gestures); Space, s and r and c act as Pause, Step, Reset
-    // and Clear, g switches the geodesic tool on and off, t the trails; a
+    // and Clear, g switches the geodesic tool on and off, t the trails, p the plot; a
     // held s steps on, the others act once
     /** @type {HTMLDialogElement} */
     const keysHelp = $("keys-help");
@@ -287,6 +291,7 @@ var ManifoldWebUi = (function (W) {
       ["c", function () { handlers.onClear(); }],
       ["g", function () { handlers.onTool(toolSelect.value === "geodesic" ? "grab" : "geodesic"); }],
       ["t", function () { handlers.onTrails(!trailsBox.checked); }],
+      ["p", function () { handlers.onPlot(!plotBox.checked); }],
       ["?", function () { keysHelp.showModal(); }],
     ]);
     $("keys-help-open").addEventListener("click", function () { if (!keysHelp.open) keysHelp.showModal(); });
@@ -327,6 +332,9 @@ var ManifoldWebUi = (function (W) {
 
     return {
       canvas: canvas,
+      /** @type {HTMLCanvasElement} */
+      plotCanvas: $("plot"),
+      inspector: $("inspector"),
       /** @param {{ name: string, label?: string, description: string }[]} index */
       setSpaces: function (index) {
         spaceSelect.textContent = "";
@@ -378,6 +386,8 @@ var ManifoldWebUi = (function (W) {
       setGeodesicLength: function (len) { lengthInput.value = String(Number(len.toPrecision(4))); },
       /** @param {boolean} on */
       setTrails: function (on) { trailsBox.checked = on; },
+      /** @param {boolean} on */
+      setPlot: function (on) { plotBox.checked = on; },
       /** @param {Manifold.Antialias} mode */
       setAntialias: function (mode) { antialiasSelect.value = mode; },
       /** @param {string} text */

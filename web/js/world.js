@@ -266,6 +266,8 @@ var ManifoldWebWorld = (function (W) {
       this.steps = 0;
       /** @type {number | null} */
       this.stepMs = null;      // moving average of the physics time per step
+      /** @type {Float64Array | null} */
+      this.measured = null;    // the engine's measures write here (measureOut)
       this.capacity = 0;
       /** @type {Float64Array[]} */
       this.arrays = [];        // the engine's arrays, in the order its procedures take them …
@@ -659,6 +661,29 @@ var ManifoldWebWorld = (function (W) {
         }
       }
       return (hi.toString(16).padStart(8, "0") + lo.toString(16).padStart(8, "0"));
+    }
+
+    // The bodies' kinetic energy and their centres' angular momentum about
+    // the space's axis (0 without one), by the engine's measure.
+    /** @returns {{ kineticEnergy: number, axialMomentum: number }} */
+    measures() {
+      const E = this.engine, out = this.measureOut();
+      E.measure.apply(null, /** @type {Float64Array[]} */ (this.arrays).concat([out]));
+      return { kineticEnergy: out[E.measures.slots.kineticEnergy], axialMomentum: out[E.measures.slots.axialMomentum] };
+    }
+
+    // Body i's speed, kinetic energy and the last step's contact rows it is in, by the engine's measureBody.
+    /** @param {number} i @returns {{ speed: number, energy: number, contacts: number }} */
+    measureBody(i) {
+      const E = this.engine, out = this.measureOut(), S = E.measures.slots;
+      E.measureBody.apply(null, /** @type {(Float64Array | number)[]} */ (this.arrays).concat([out, i]));
+      return { speed: out[S.bodySpeed], energy: out[S.bodyEnergy], contacts: out[S.bodyContacts] };
+    }
+
+    // the measures' out array (made once)
+    measureOut() {
+      if (!this.measured) this.measured = new Float64Array(this.engine.measures.size);
+      return this.measured;
     }
 
     // Contacts, warnings, dropped contacts: the engine's counters.

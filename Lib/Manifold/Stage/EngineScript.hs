@@ -23,6 +23,7 @@ import Manifold.Stage.Imp (Procedure (..), stageFunctions)
 import Manifold.Stage.Expr (sym)
 import Manifold.Stage.Print (FnType (..), Target (..), printFunction, printProcedure)
 import Manifold.GeodesicPath (PathSlot (..), pathStride)
+import Manifold.Measures (MeasureSlot (..), measureSize)
 import Manifold.Population (frameMisfit)
 import Manifold.StateHash (HashedPart (..), hashedParts)
 import Manifold.World
@@ -88,6 +89,9 @@ engineObject l subroutines =
     , "  step: step, polygonise: polygonise, addBody: addBody, removeBody: removeBody,"
     , "  // a walked geodesic (Manifold.GeodesicPath): path[0] the points walked, then per point [" ++ intercalate ", " (map jsName [minBound .. maxBound :: PathSlot]) ++ "]"
     , "  path: { stride: " ++ show pathStride ++ ", slots: " ++ enumObj PathX ++ " },"
+    , "  // what measure and measureBody write into their out array (Manifold.Measures)"
+    , "  measures: { size: " ++ show measureSize ++ ", slots: " ++ enumObj KineticEnergy ++ " },"
+    , "  measure: measure, measureBody: measureBody,"
     , "  pickBody: pickBody, grab: grab, drag: drag, release: release, geodesic: geodesic"
     , "}"
     ]

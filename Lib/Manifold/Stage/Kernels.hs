@@ -112,6 +112,8 @@ spaceScript s = unlines
   , "  // the quotient's images: [sx, sy, sz, tx, ty, tz] for p -> s*p + t (componentwise)"
   , "  images: [" ++ intercalate ", " [vecJs' (isoSigns g) (isoShift g) | g <- quotientImages (spaceQuotient s)] ++ "],"
   , "  bounds: " ++ num (spaceBounds s) ++ ","
+  , "  // the axis the space is symmetric about (the measures' axial momentum), or null"
+  , "  axis: " ++ maybe "null" (\(V3 x y z) -> "[" ++ intercalate ", " (map num [x, y, z]) ++ "]") (spaceAxis s) ++ ","
   , "  camera: " ++ cameraJs (spaceCamera s) ++ ","
   , "  scene: [" ++ intercalate ", " (map placementJs (spaceScene s)) ++ "],"
   , "  engine: " ++ engineObject engineLayout subroutines ++ ","
