@@ -1,0 +1,109 @@
+// Big scenes in the page: how fast it answers input and how fast the
+// physics runs, at 1000, 5000 and 10,000 bodies (the sizes the sandbox
+// promises to stay usable at). For each size, the scene `manifold bench
+// --scenes` writes for it (Poisson-disc placed bodies, settled natively) is
+// loaded into the page and run (clock on, rendering on, 800×600); then the
+// view is orbited with a real mouse (a right-button drag, K moves) and each
+// move's latency is measured: from the pointer event's time stamp to the end
+// of the frame that draws its new view (an animation frame callback
+// requested in the event handler runs right after the page's own one of the
+// same frame: its physics steps and its draw calls; the software GPU's own
+// part comes after, and is not counted). Also fps, physics steps per second
+// and ms per step (manifold.stats()) while it runs.
+//
+//   node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--moves K] [--seconds T] [--out FILE.json]
+//
+// Without --scenes it runs `manifold bench --scenes TMPDIR --spaces S --sizes ...`
+// itself. Progress goes to stderr, a table to stdout, everything as JSON to --out.
+import { execFileSync } from "node:child_process";
+import fs from "node:fs";
+import os from "node:os";
+import path from "node:path";
+import url from "node:url";
+import { launchBrowser, manifoldExe } from "../test/browser/lib.mjs";
+import { serveWeb, loadPaused } from "./page.mjs";
+import { commandLine } from "./options.mjs";
+
+const ROOT = path.resolve(path.dirname(url.fileURLToPath(import.meta.url)), "..");
+const WEB = process.env.MANIFOLD_WEB ? path.resolve(process.env.MANIFOLD_WEB) : path.join(ROOT, "web");
+const VIEWPORT = { width: 800, height: 600 };
+
+const { text: arg, count, positive } = commandLine({
+  usage: "node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--moves K] [--seconds T] [--out FILE.json]",
+  known: ["--scenes", "--space", "--sizes", "--moves", "--seconds", "--out"],
+});
+const space = arg("--space", "sphere");
+const sizes = arg("--sizes", "1000,5000,10000").split(",").map(Number);
+if (sizes.some((n) => !Number.isInteger(n) || n < 1)) { console.error("--sizes must be whole numbers"); process.exit(2); }
+const moves = count("--moves", 20, 1);
+const seconds = positive("--seconds", 3);
+const outFile = arg("--out", null);
+const log = (s) => process.stderr.write(s + "\n");
+
+let scenesDir = arg("--scenes", null);
+if (!scenesDir) {
+  scenesDir = fs.mkdtempSync(path.join(os.tmpdir(), "manifold-latency-"));
+  log("writing the settled scenes: manifold bench --scenes " + scenesDir + " --spaces " + space + " --sizes " + sizes.join(","));
+  execFileSync(manifoldExe(), ["bench", "--scenes", scenesDir, "--spaces", space, "--sizes", sizes.join(",")],
+    { cwd: ROOT, stdio: ["ignore", "ignore", "inherit"] });
+}
+
+const quantile = (xs, q) => { const s = xs.slice().sort((a, b) => a - b); return s[Math.min(s.length - 1, Math.floor(q * s.length))]; };
+
+const server = await serveWeb(WEB);
+const browser = await launchBrowser();
+const results = [];
+try {
+  const page = await (await browser.newContext({ viewport: VIEWPORT })).newPage();
+  await page.goto(server.url + "#space=" + space);
+  await page.waitForFunction(() => !!window.manifold);
+  await page.evaluate(() => window.manifold.ready());
+  // each pointer move's latency: from its time stamp to the end of the next frame's work
+  await page.evaluate(function () {
+    window.__latency = [];
+    document.getElementById("view").addEventListener("pointermove", function (e) {
+      const t0 = e.timeStamp;
+      requestAnimationFrame(function () { window.__latency.push(performance.now() - t0); });
+    }, { capture: true });
+  });
+  for (const n of sizes) {
+    const file = path.join(scenesDir, space + "-" + n + ".json");
+    if (!fs.existsSync(file)) { log("no scene " + file + ": skipped"); continue; }
+    const scene = JSON.parse(fs.readFileSync(file, "utf8"));
+    await loadPaused(page, scene);
+    await page.evaluate(() => window.manifold.resume());
+    await page.waitForTimeout(1000 * seconds);
+    const stats = await page.evaluate(function () { return window.manifold.stats(); });
+    const steps0 = stats.steps, t0 = Date.now();
+    await page.waitForTimeout(1000);
+    const steps1 = await page.evaluate(() => window.manifold.stats().steps);
+    const stepsPerSecond = (steps1 - steps0) * 1000 / (Date.now() - t0);
+    const box = await page.locator("#view").boundingBox();
+    await page.evaluate(() => { window.__latency = []; });
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down({ button: "right" });
+    for (let k = 1; k <= moves; k++) {
+      await page.mouse.move(box.x + box.width / 2 + 6 * k, box.y + box.height / 2);
+      await page.waitForTimeout(60);
+    }
+    await page.mouse.up({ button: "right" });
+    await page.waitForTimeout(300);
+    const latency = await page.evaluate(() => window.__latency.slice());
+    const r = {
+      space, n, bodies: stats.bodies, fps: stats.fps, frameMs: stats.frameMs, physicsMsPerStep: stats.physicsMsPerStep,
+      stepsPerSecond: Math.round(stepsPerSecond * 10) / 10, moves: latency.length,
+      latencyMedianMs: Math.round(quantile(latency, 0.5)), latencyP90Ms: Math.round(quantile(latency, 0.9)),
+    };
+    log(JSON.stringify(r));
+    results.push(r);
+  }
+} finally {
+  await browser.close();
+  await server.stop();
+}
+console.log("| space | bodies | fps | physics ms/step | steps/s | move → frame ms (median, 90 %) |");
+console.log("|---|---:|---:|---:|---:|---:|");
+for (const r of results) {
+  console.log("| " + r.space + " | " + r.bodies + " | " + r.fps + " | " + r.physicsMsPerStep + " | " + r.stepsPerSecond + " | " + r.latencyMedianMs + ", " + r.latencyP90Ms + " |");
+}
+if (outFile) fs.writeFileSync(outFile, JSON.stringify({ viewport: VIEWPORT, results }, null, 2) + "\n");
