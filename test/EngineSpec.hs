@@ -453,6 +453,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
   it "refuses the same scenes in the same words in the page's parser (web/js/world.js) as in parseScene, and reads the others alike (a key given twice: the last)" $ do
     let body extra = "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0, 0]" ++ extra ++ "}"
         withBody b = "{\"space\": \"sphere\", \"bodies\": [" ++ b ++ "]}"
+        withJoint j = "{\"space\": \"sphere\", \"bodies\": [" ++ body "" ++ ", " ++ body "" ++ "], \"joints\": [" ++ j ++ "]}"
         texts =
           [ "[]", "{}", "{\"space\": \"nowhere\"}", "{\"space\": 3}", "{\"space\": \"plane\", \"colour\": 1}"
           , "{\"space\": \"plane\", \"dt\": 0}", "{\"space\": \"plane\", \"dt\": \"x\"}", "{\"space\": \"plane\", \"dt\": 1e400}"
@@ -469,6 +470,23 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withBody (body ", \"static\": 1"), withBody (body ", \"density\": 0"), withBody (body ", \"colour\": 1")
           , withBody (body ", \"impulses\": 3"), withBody (body ", \"impulses\": [[64, 0.1]]"), withBody (body ", \"impulses\": [[64.5, 0.1, 0]]")
           , withBody (body ", \"impulses\": [[-1, 0.1, 0]]"), withBody (body ", \"impulses\": [[64, -0.1, 0]]"), withBody (body ", \"impulses\": [[64, 0.1, null]]")
+          -- joints: every way a joint is refused
+          , withJoint "3", withJoint "{}", withJoint "{\"type\": \"hinge\", \"a\": 0, \"b\": 1}", withJoint "{\"type\": 1}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 2, \"anchor\": [1, 0, 0]}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0.5, \"b\": 1, \"anchor\": [1, 0, 0]}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 1, \"b\": 1, \"anchor\": [1, 0, 0]}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": \"sky\", \"anchor\": [1, 0, 0]}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 1}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"length\": 1}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"lowerAngle\": 1}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"lowerAngle\": 1, \"upperAngle\": 0}"
+          , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"maxMotorTorque\": 1}"
+          , withJoint "{\"type\": \"distance\", \"a\": 0, \"b\": 1, \"anchorA\": [1, 0, 0], \"anchorB\": [1, 0, 0], \"length\": -1}"
+          , withJoint "{\"type\": \"distance\", \"a\": 0, \"b\": 1, \"anchorA\": [1, 0, 0], \"anchorB\": [1, 0, 0], \"length\": 1, \"minLength\": 2}"
+          , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"hertz\": -2}"
+          , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"local\": [1, 2]}"
+          , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"collide\": 1}"
+          , "{\"space\": \"sphere\", \"joints\": {}}"
           -- two problems: both name the parameter's, checked first
           , "{\"space\": \"plane\", \"dt\": 0, \"bodies\": {}}"
           -- a key given twice: the last counts in both
@@ -494,6 +512,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       , "  try {"
       , "    const sc = ManifoldWeb.world.parseScene(t, names);"
       , "    sc.bodies.forEach((b) => { if (b.impulses.length === 0) delete b.impulses; });"
+      , "    if (sc.joints.length === 0) delete sc.joints;"
       , "    return { scene: sc };"
       , "  } catch (e) { return { problem: e.message }; }"
       , "});"

@@ -18,6 +18,7 @@ import qualified PhysicsSpec
 import qualified PresetSpec
 import qualified ReadmeExampleSpec
 import qualified SolverSpec
+import qualified JointSpec
 import qualified StageSpec
 import qualified SurfaceSpec
 
@@ -38,6 +39,7 @@ main = do
     describe "Manifold.Stage.Imp" ImpSpec.spec
     describe "Physics" PhysicsSpec.spec
     describe "Solver" SolverSpec.spec
+    describe "Joint" JointSpec.spec
     FlatSpec.spec
     GoldenSpec.spec
     ReadmeExampleSpec.spec

@@ -38,6 +38,37 @@ declare namespace Manifold {
     normal?: Vec3;
     impulses?: Impulse[];
   }
+  /** A joint's type (docs/scenes.md#joints). */
+  type JointType = "revolute" | "distance" | "weld";
+  /**
+   * A joint as a scene gives it: between bodies a and b (by index) or a body
+   * and "world"; a revolute or weld joint has one anchor, a distance joint
+   * two; the other keys are its type's (docs/scenes.md#joints).
+   */
+  interface SceneJoint {
+    type: JointType;
+    a: number;
+    b: number | "world";
+    anchor?: Vec3;
+    anchorA?: Vec3;
+    anchorB?: Vec3;
+    length?: number;
+    minLength?: number;
+    maxLength?: number;
+    hertz?: number;
+    dampingRatio?: number;
+    referenceAngle?: number;
+    lowerAngle?: number;
+    upperAngle?: number;
+    motorSpeed?: number;
+    maxMotorTorque?: number;
+    /** whether the joined bodies collide (default false) */
+    collide?: boolean;
+    /** a saved joint's anchors in its bodies' coordinates: [rA, thetaA, rB, thetaB, worldX, worldY, worldZ] */
+    local?: number[];
+    /** a saved joint's seven impulses */
+    impulses?: number[];
+  }
   /** A body as the page gives it back (bodies(), scene()): every key. */
   interface Body {
     shape: Shape;
@@ -72,7 +103,10 @@ declare namespace Manifold {
     dampingRatio?: number;
     pushout?: number;
     slop?: number;
+    jointHertz?: number;
+    jointDampingRatio?: number;
     bodies?: SceneBody[];
+    joints?: SceneJoint[];
   }
   /** A scene as the page saves it (scene(), Save scene): every key. */
   interface SavedScene {
@@ -87,7 +121,10 @@ declare namespace Manifold {
     dampingRatio: number;
     pushout: number;
     slop: number;
+    jointHertz: number;
+    jointDampingRatio: number;
     bodies: Body[];
+    joints?: SceneJoint[];
   }
 
   // ---- the generated catalogue (web/gen/spaces.js) ----
@@ -184,15 +221,16 @@ declare namespace Manifold {
   /** The engine's arrays, in the order every procedure takes them. */
   type ArrayName =
     | "meta" | "params" | "pos" | "vel" | "axis" | "normal" | "scalars" | "radii" | "verts" | "outline"
-    | "grid" | "cellOf" | "items" | "contacts" | "prev" | "bodyPrev" | "mouse" | "probe" | "near" | "walk";
+    | "grid" | "cellOf" | "items" | "contacts" | "prev" | "bodyPrev" | "mouse" | "probe" | "near" | "walk"
+    | "joints" | "flip" | "partners";
   /** The world's counters and results, slots of the array meta. */
   type MetaName =
     | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
-    | "lastAdded" | "picked" | "pickedSign";
+    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint";
   /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
   type ParamName =
     | "dt" | "gravityOn" | "substeps" | "iterations" | "friction" | "restitution" | "contactHertz" | "dampingRatio"
-    | "pushout" | "slop" | "speculative" | "bounceThreshold" | "warmStart" | "polygonStep";
+    | "pushout" | "slop" | "speculative" | "bounceThreshold" | "warmStart" | "polygonStep" | "jointHertz" | "jointDampingRatio";
   /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
   type SlotName =
     | "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin"
@@ -206,6 +244,15 @@ declare namespace Manifold {
   type MouseField =
     | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
     | "mFrequency" | "mDamping" | "mMaxForce" | "mImpulseU" | "mImpulseW" | "mSign";
+  /** A joint's fields, `jointStride` consecutive entries of the array joints (Lib/Manifold/World.hs, JointField). */
+  type JointField =
+    | "kind" | "a" | "b" | "radiusA" | "thetaA" | "radiusB" | "thetaB" | "worldX" | "worldY" | "worldZ"
+    | "length" | "minLength" | "maxLength" | "hertz" | "damping" | "reference" | "limitOn" | "lower" | "upper"
+    | "motorOn" | "motorSpeed" | "maxTorque" | "impulse1" | "impulse2" | "impulseAxial" | "impulseLower"
+    | "impulseUpper" | "impulseMotor" | "impulseAngle" | "anchorAX" | "anchorAY" | "anchorAZ" | "anchorBX"
+    | "anchorBY" | "anchorBZ" | "leverAX" | "leverAY" | "leverAZ" | "leverBX" | "leverBY" | "leverBZ"
+    | "signX" | "signY" | "signZ" | "e1X" | "e1Y" | "e1Z" | "e2X" | "e2Y" | "e2Z" | "chord" | "sigma"
+    | "angleError" | "angularMass" | "collide";
   /** What the engine's measure (the world) and measureBody (one body) write, slots of their out array. */
   type MeasureField = "kineticEnergy" | "axialMomentum" | "bodySpeed" | "bodyEnergy" | "bodyContacts";
   /** A point of a walked geodesic, `path.stride` consecutive entries after the count in path[0]. */
@@ -239,6 +286,19 @@ declare namespace Manifold {
     /** where step k (1 … steps) along direction d sits among a body's vertices (0 is the centre) */
     vertexIndex: (d: number, k: number) => number;
     mouse: Record<MouseField, number>;
+    /** a joint's fields and their number */
+    joint: Record<JointField, number>;
+    jointStride: number;
+    /** the joint types by their kind code (the field kind) */
+    jointKinds: JointType[];
+    /** why addJoint refused a joint, by meta lastJoint ("-1", "-2", "-3") */
+    jointProblems: Record<string, string>;
+    /** (arrays, kind, a, b (-1: the world), ax, ay, az, bx, by, bz): meta lastJoint, or -1, -2, -3 (jointProblems) */
+    addJoint: Procedure;
+    /** (arrays, index): the last joint takes the index */
+    removeJoint: Procedure;
+    /** (arrays, out): every joint's two anchors now, six numbers a joint */
+    jointAnchors: Procedure;
     /** the state's hash: FNV-1a over these arrays' first (meta counter × numbers a row) numbers, in order */
     hashed: [ArrayName, MetaName, number][];
     /** why a restored body was refused (addBody's -2) */
@@ -349,6 +409,7 @@ declare namespace Manifold {
     frames: number;
     preview: boolean;
     bodies: number;
+    joints: number;
     contacts: number;
     warnings: number;
     droppedContacts: number;
@@ -419,7 +480,7 @@ declare namespace Manifold {
 
   /** window.manifold (web/README.md, "Scripting API"). Pixels are the canvas's backing-store pixels, origin top-left. */
   /** What a press on empty surface does (web/js/tools.js). */
-  type Tool = "grab" | "geodesic";
+  type Tool = "grab" | "geodesic" | "joint";
   interface NewBody {
     shape: Shape;
     size: number;
@@ -482,6 +543,12 @@ declare namespace Manifold {
 
     /** adds a body given as in a scene; its index, or throws naming the problem */
     addBody(spec: SceneBody): number;
+    /** adds a joint given as in a scene (bodies by index); its index, or throws naming the problem */
+    addJoint(spec: SceneJoint): number;
+    /** every joint, as a saved scene holds it */
+    joints(): SceneJoint[];
+    /** removes joint i (the last joint takes its index) */
+    removeJoint(i: number): void;
     /** removes every body */
     clear(): void;
     /** the space's default scene again, cut or filled to n bodies (0 … the engine's maxBodies; a notice when fewer fit); the count */

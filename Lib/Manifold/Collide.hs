@@ -35,6 +35,7 @@ import Linear.Vector ((*^), (^-^), (^+^), negated)
 
 import Manifold.Body (PolygonParams (..), Sectors, sectors, directionSector, vertexIndex)
 import Manifold.Field
+import Manifold.Joint (listPartners, notJoined)
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface (tangentProjection, safeNormalize)
@@ -652,6 +653,8 @@ collide sp l w = do
   writeMeta w ContactCount 0
   buildGrid sp w
   count <- readMeta w BodyCount
+  joints <- readMeta w JointCount
+  whenPositive joints $ listPartners w
   let images = quotientImages (spaceQuotient sp)
       sec = sectors (polyDirections (polygon l))
       -- where the quotient has a fundamental domain, only images that
@@ -663,6 +666,8 @@ collide sp l w = do
     p <- read3 (wPos w) i
     ri <- readSlot w i BoundRadius
     invMi <- readSlot w i InvMass
+    -- the bodies joined to this one, which it does not collide with
+    partners <- mapM (\s -> readArray (wPartners w) (fromIntegral partnersPerBody * i + fromIntegral s)) [0 .. partnersPerBody - 1]
     cell <- readMeta w CellSize -- at least twice the largest bounding radius
     -- the bodies near this one are listed first and their pairs made after:
     -- compiled natively, a loop that calls out keeps its numbers on the
@@ -680,7 +685,7 @@ collide sp l w = do
               rj <- readSlot w j BoundRadius
               invMj <- readSlot w j InvMass
               let gap = ri + rj - norm (gp ^-^ pj)
-              whenPositive (minF gap (invMi + invMj)) $ do
+              whenPositive (minF gap (minF (invMi + invMj) (select joints (notJoined partners (toScalar j)) 1))) $ do
                 -- a body is in one cell, so listed at most once
                 k <- readRef found
                 writeArray (wNear w) (toIndex k) (toScalar j)

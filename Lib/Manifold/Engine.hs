@@ -14,6 +14,14 @@ module Manifold.Engine
   , genericStep
   , usesCompiledStep
   , removeBodyAt
+  , addJointAt
+  , removeJointAt
+  , jointCount
+  , jointField
+  , jointAnchorPoints
+  , setJointField
+  , JointKind (..)
+  , JointField (..)
   , pickAt
   , grabAt
   , dragAt
@@ -42,6 +50,7 @@ import Manifold.Params
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Grab
+import Manifold.Joint (addJoint, jointAnchors, jointProblem, removeJoint)
 import Manifold.Population
 import Manifold.Step (step, stepPhases)
 import Manifold.World
@@ -156,6 +165,46 @@ releaseMouse w = runNative (release (nwArrays w))
 -- | Remove body @i@; the last body takes its index ('removeBody').
 removeBodyAt :: NativeWorld -> Int -> IO ()
 removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
+
+-- | Add a joint of a kind between body @a@ and body @b@ (−1: the world),
+-- anchored at two surface points (for a pin, the same point twice): its
+-- length is the anchors' distance, its reference angle the bodies'
+-- relative angle now, its limits, motor and spring off ('setJointField'
+-- sets them). Returns the joint's index, or why it could not be added.
+addJointAt :: NativeWorld -> JointKind -> Int -> Int -> V3 Double -> V3 Double -> IO (Either String Int)
+addJointAt w kind a b qa qb = do
+  runNative (addJoint (nwSpace w) (nwArrays w) (fromIntegral (fromEnum kind)) (fromIntegral a) (fromIntegral b) qa qb)
+  j <- metaValue LastJoint w
+  pure (if j >= 0 then Right j else Left (jointProblem j))
+
+-- | Remove joint @j@; the last joint takes its index.
+removeJointAt :: NativeWorld -> Int -> IO ()
+removeJointAt w j = runNative (removeJoint (nwArrays w) j)
+
+-- | The joints the world holds.
+jointCount :: NativeWorld -> IO Int
+jointCount = metaValue JointCount
+
+-- | Where every joint's two anchors are now (body b's, on a quotient, at
+-- the image nearest body a's).
+jointAnchorPoints :: NativeWorld -> IO [(V3 Double, V3 Double)]
+jointAnchorPoints w = do
+  n <- jointCount w
+  out <- MV.replicate (6 * max 1 n) 0
+  runNative (jointAnchors (nwSpace w) (nwArrays w) out)
+  let at k = MV.read out k
+  mapM (\j -> (,) <$> (V3 <$> at (6 * j) <*> at (6 * j + 1) <*> at (6 * j + 2))
+                  <*> (V3 <$> at (6 * j + 3) <*> at (6 * j + 4) <*> at (6 * j + 5))) [0 .. n - 1]
+
+-- | A field of joint @j@ ('JointField').
+jointField :: NativeWorld -> Int -> JointField -> IO Double
+jointField w j k = MV.read (wJoints (nwArrays w)) (jointStride * j + fromEnum k)
+
+-- | Set a field of joint @j@: what a joint's description sets beyond
+-- 'addJointAt' (length, limits, motor, spring, a saved joint's anchors and
+-- impulses).
+setJointField :: NativeWorld -> Int -> JointField -> Double -> IO ()
+setJointField w j k = MV.write (wJoints (nwArrays w)) (jointStride * j + fromEnum k)
 
 -- | The compiled step ("Manifold.Compiled.Runtime") among @steps@ that
 -- was made for the space and polygon.

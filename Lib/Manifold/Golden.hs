@@ -21,7 +21,7 @@ import Manifold.Bench (benchScene, benchSpaces)
 import Manifold.Engine
 import Manifold.Scene
 import Manifold.Space
-import Manifold.Spaces (catalogue)
+import Manifold.Spaces (catalogue, flatKlein, sphere)
 import Manifold.StateHash (showHash)
 
 -- | A scene, its name (a file name: @SPACE-default@, @SPACE-N@) and how
@@ -35,19 +35,59 @@ data GoldenRun = GoldenRun
 -- | Every catalogue space's default scene (what the page starts with: its
 -- bodies at rest, falling), 1000 steps; the benchmark piles of 300 bodies
 -- on the benchmark spaces, 600 steps (as they fall and pile up, contacts
--- at every step), and of 1000 bodies, 200 steps.
+-- at every step), and of 1000 bodies, 200 steps; two jointed scenes (every
+-- kind of joint, a limit and a motor, across a quotient's flipped edge),
+-- 600 steps.
 goldenRuns :: [GoldenRun]
 goldenRuns =
   [GoldenRun (spaceName sp ++ "-default") (defaultScene sp) 1000 | sp <- catalogue]
     ++ [ GoldenRun (spaceName sp ++ "-" ++ show n) (benchScene sp n) steps
        | (n, steps) <- [(300, 600), (1000, 200)], sp <- benchSpaces ]
+    ++ [ GoldenRun "sphere-chain" sphereChain 600, GoldenRun "flat-klein-joints" flatKleinJoints 600 ]
+
+-- | A joint of a kind between bodies @a@ and @b@ (−1: the world) at
+-- anchors @p@ and @q@, its settings left to the defaults.
+jointAt :: JointKind -> Int -> Int -> V3 Double -> V3 Double -> JointSpec
+jointAt k a b p q = JointSpec k a (if b < 0 then Nothing else Just b) p q Nothing Nothing Nothing 0 0 Nothing Nothing Nothing Nothing [] False
+
+-- | A chain of 20 circles pinned where they touch, hung from a static one
+-- on the equator, swinging down the sphere; its last link welded softly
+-- to a square, and the square roped to the world.
+sphereChain :: Scene
+sphereChain =
+  let r = 0.03
+      at k = let a = 2 * r * fromIntegral (k :: Int) in V3 (cos a) 0 (sin a)
+      pin k = let a = 2 * r * (fromIntegral k + 0.5) in V3 (cos a) 0 (sin a)
+      bodies = BodySpec CircleShape r 1 True (at 0) (V3 0 0 0) 0 0 Nothing []
+               : [BodySpec CircleShape r 1 False (at k) (V3 0 0 0) 0 0 Nothing [] | k <- [1 .. 20]]
+               ++ [BodySpec SquareShape r 1 False (at 21) (V3 0 0 0) 0 0 Nothing []]
+      pins = [ (jointAt Revolute k (k + 1) (pin k) (pin k)) { jsLimit = if k == 3 then Just (-0.5, 0.5) else Nothing
+                                                            , jsMotor = if k == 7 then Just (1, 0.01) else Nothing }
+             | k <- [0 .. 19] ]
+      weld = (jointAt Weld 20 21 (pin 20) (pin 20)) { jsHertz = 5, jsDampingRatio = 0.5 }
+      rope = (jointAt Distance 21 (-1) (at 21) (V3 0.8 (-0.6) 0)) { jsLength = Just 1.2, jsMinLength = Just 0, jsMaxLength = Just 1.2 }
+  in Scene sphere defaultParams bodies (pins ++ [weld, rope])
+
+-- | Pairs of bodies joined across the flat Klein bottle's edges, thrown
+-- so that they cross them (one pair through the flipped edge): a pin, a
+-- distance spring, a weld.
+flatKleinJoints :: Scene
+flatKleinJoints =
+  let body p v om = BodySpec CircleShape 0.06 1 False p v 0 om Nothing []
+      bodies = [ body (V3 0.8 0 0.3) (V3 1 0 0.2) 2, body (V3 0.92 0 0.3) (V3 1 0 0.2) 2
+               , body (V3 0.2 0 0.85) (V3 0.1 0 0.8) (-1), body (V3 0.2 0 (-0.85)) (V3 0.1 0 0.8) 0
+               , body (V3 (-0.5) 0 0) (V3 (-0.9) 0 0.1) 3, body (V3 (-0.62) 0 0) (V3 (-0.9) 0 0.1) 0 ]
+      joints = [ jointAt Revolute 0 1 (V3 0.86 0 0.3) (V3 0.86 0 0.3)
+               , (jointAt Distance 2 3 (V3 0.2 0 0.85) (V3 0.2 0 (-0.85))) { jsHertz = 2, jsDampingRatio = 0.1 }
+               , jointAt Weld 4 5 (V3 (-0.56) 0 0) (V3 (-0.56) 0 0) ]
+  in Scene flatKlein defaultParams bodies joints
 
 -- | A space's default scene ('spaceScene') with the default parameters.
 defaultScene :: Space -> Scene
 defaultScene sp =
   Scene sp defaultParams
     [ BodySpec (placeShape pl) (placeSize pl) 1 (placeStatic pl) (placeAt pl) (V3 0 0 0) 0 0 Nothing []
-    | pl <- spaceScene sp ]
+    | pl <- spaceScene sp ] []
 
 -- | The hash after @steps@ steps of the scene natively: by the generic step
 -- when asked (else by the space's compiled one, where it has one).

@@ -40,6 +40,8 @@ data Params = Params
   , pBounceThreshold :: Double -- ^ approach speeds below this do not bounce
   , pWarmStart :: Bool -- ^ start each contact from its last step's impulses
   , pPolygonStep :: Double -- ^ bodies up to this size walk their outline in one geodesic step (0: never)
+  , pJointHertz :: Double -- ^ how stiff a rigid joint row is, as a spring's frequency (at most a quarter of the sub-step rate)
+  , pJointDampingRatio :: Double -- ^ a rigid joint row's damping ratio
   } deriving (Show, Eq)
 
 -- | What a world starts with and a scene gets for a key it leaves out: four
@@ -52,7 +54,8 @@ defaultParams :: Params
 defaultParams = Params
   { pDt = 0.01, pGravity = True, pSubsteps = 4, pIterations = 1, pFriction = 0.4, pRestitution = 0
   , pContactHertz = 60, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
-  , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05 }
+  , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05
+  , pJointHertz = 120, pJointDampingRatio = 2 }
 
 -- | A parameter as the world's parameter array holds it (a switch is 1 or 0).
 paramValue :: Params -> Param -> Double
@@ -71,6 +74,8 @@ paramValue p = \case
   BounceThreshold -> pBounceThreshold p
   WarmStart -> switch (pWarmStart p)
   PolygonStep -> pPolygonStep p
+  JointHertz -> pJointHertz p
+  JointDampingRatio -> pJointDampingRatio p
   where switch b = if b then 1 else 0
 
 -- | A parameter set to a value as the parameter array would hold it (the
@@ -91,6 +96,8 @@ setParam k x p = case k of
   BounceThreshold -> p { pBounceThreshold = x }
   WarmStart -> p { pWarmStart = x > 0 }
   PolygonStep -> p { pPolygonStep = x }
+  JointHertz -> p { pJointHertz = x }
+  JointDampingRatio -> p { pJointDampingRatio = x }
 
 -- | Set a world's parameter array.
 writeParams :: WorldArrays (MV.IOVector Double) -> Params -> IO ()
@@ -141,6 +148,9 @@ sceneKeys =
   , SceneKey "dampingRatio" DampingRatio NonNegative (slider "Damping" "a contact spring's damping ratio" 0 20 0.5)
   , SceneKey "pushout" Pushout Positive (slider "Push-out" "the fastest a contact pushes overlapping bodies apart" 0.05 5 0.05)
   , SceneKey "slop" Slop Fraction Nothing
+  , SceneKey "jointHertz" JointHertz Positive
+      (slider "Joint Hz" "how stiff a joint is, as a spring's frequency (at most a quarter of the sub-step rate)" 10 400 5)
+  , SceneKey "jointDampingRatio" JointDampingRatio NonNegative Nothing
   ]
   where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
 

@@ -16,6 +16,7 @@ import Linear.Vector ((*^), (^-^))
 
 import Manifold.Body (PolygonParams (..), massIntegrals)
 import Manifold.Field
+import Manifold.Joint (forgetBodyJoints)
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface
@@ -142,6 +143,7 @@ removeBody l w i = do
     move (wVerts w) (3 * verticesPerBody l)
     move (wOutline w) (3 * polyDirections (polygon l))
     writeMeta w BodyCount (count - 1)
+    forgetBodyJoints w i lastI
     forEach (toIndex count) $ \k -> writeArray (wBodyPrev w) (2 * k + 1) 0
     grabbed <- readMouse w MBody
     active <- readMouse w MActive

@@ -1,6 +1,7 @@
 {-# LANGUAGE FlexibleContexts #-}
 -- | The engine as a staged program: the step's phases and the page's
--- procedures (adding, removing, picking and grabbing bodies, the measures
+-- procedures (adding, removing, picking and grabbing bodies, adding and
+-- removing joints and drawing them, the measures
 -- the page plots) over the world's arrays, and the geodesic the page's tool draws, as
 -- "Manifold.Stage.Imp" stages them. The page's script
 -- ("Manifold.Stage.EngineScript") and the compiled native step
@@ -21,6 +22,7 @@ import Linear.V3 (V3 (..))
 import Manifold.Body
 import Manifold.GeodesicPath (walkGeodesic)
 import Manifold.Grab
+import Manifold.Joint (addJoint, jointAnchors, removeJoint)
 import Manifold.Measures (measureBody, measureWorld)
 import Manifold.Population
 import Manifold.Space
@@ -60,6 +62,12 @@ pageProcedures sp l = stepProcedures sp l ++
   , (Procedure "drag" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> dragTo stagedArrays (V3 x y z))
   , (Procedure "release" worldParams [], \_ _ -> release stagedArrays)
+  , (Procedure "addJoint" worldParams ["kind", "a", "b", "ax", "ay", "az", "bx", "by", "bz"],
+      \_ [kind, a, b, ax, ay, az, bx, by, bz] -> addJoint sp stagedArrays kind a b (V3 ax ay az) (V3 bx by bz))
+  , (Procedure "removeJoint" worldParams ["index"],
+      \_ [j] -> removeJoint stagedArrays (toIndex j))
+  , (Procedure "jointAnchors" (worldParams ++ ["out"]) [],
+      \arrays _ -> jointAnchors sp stagedArrays (last arrays))
   , (Procedure "measure" (worldParams ++ ["out"]) [],
       \arrays _ -> measureWorld sp stagedArrays (last arrays))
   , (Procedure "measureBody" (worldParams ++ ["out"]) ["index"],

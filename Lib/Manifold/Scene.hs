@@ -1,4 +1,4 @@
-{-# LANGUAGE OverloadedStrings #-}
+{-# LANGUAGE OverloadedStrings, LambdaCase #-}
 -- | Scenes: the JSON that @manifold sim@ and the page share — a space, the
 -- engine's parameters and the bodies. Parsing names the JSON path of the
 -- first problem it finds; unknown keys are problems too, so that a typo is
@@ -6,6 +6,7 @@
 module Manifold.Scene
   ( Scene (..)
   , BodySpec (..)
+  , JointSpec (..)
   , parseScene
   , sceneJSON
   , loadScene
@@ -14,7 +15,7 @@ module Manifold.Scene
   , P
   ) where
 
-import Control.Monad (foldM, forM, unless, when)
+import Control.Monad (foldM, forM, forM_, unless, when, zipWithM, zipWithM_)
 import qualified Data.Aeson as A
 import Data.Aeson.Internal (IResult (ISuccess), formatError)
 import qualified Data.Aeson.Key as K
@@ -23,7 +24,7 @@ import qualified Data.Aeson.Parser as AP
 import qualified Data.Attoparsec.ByteString.Char8 as AC
 import qualified Data.ByteString.Lazy as BL
 import Data.List (intercalate)
-import Data.Maybe (isJust)
+import Data.Maybe (fromMaybe, isJust)
 import Data.Scientific (toRealFloat)
 import qualified Data.Text as T
 import qualified Data.Vector as V
@@ -59,7 +60,31 @@ data Scene = Scene
   { sceneSpace :: Space -- ^ a catalogue space, by name
   , sceneParams :: Params -- ^ what the scene's keys ('sceneKeys') set, the rest defaults
   , sceneBodies :: [BodySpec]
+  , sceneJoints :: [JointSpec] -- ^ joints between the scene's bodies (by index) or a body and the world
   }
+
+-- | A joint as a scene file gives it (@"joints": [{"type": "revolute",
+-- "a": 0, "b": 1, "anchor": [x, y, z]}, …]@; docs/scenes.md#joints). A
+-- saved joint ('sceneOfWorld') carries its anchors in its bodies' own
+-- coordinates and its impulses, so that it is restored exactly.
+data JointSpec = JointSpec
+  { jsKind :: JointKind
+  , jsA :: Int -- ^ a body's index
+  , jsB :: Maybe Int -- ^ a body's index, or the world
+  , jsAnchorA :: V3 Double -- ^ on body a (a pin's one anchor)
+  , jsAnchorB :: V3 Double -- ^ on body b or of the world (a pin's: the same point)
+  , jsLength :: Maybe Double -- ^ a distance joint's length (default: the anchors' distance)
+  , jsMinLength :: Maybe Double -- ^ a distance joint's shortest (default: its length)
+  , jsMaxLength :: Maybe Double -- ^ and longest
+  , jsHertz :: Double -- ^ a distance joint's spring, or a weld's angular spring (0: rigid)
+  , jsDampingRatio :: Double -- ^ that spring's damping ratio
+  , jsReference :: Maybe Double -- ^ the relative angle held (default: the bodies' as the joint is made)
+  , jsLimit :: Maybe (Double, Double) -- ^ a revolute joint's lower and upper angle, from the reference
+  , jsMotor :: Maybe (Double, Double) -- ^ a revolute joint's motor: speed (rad/s) and most torque
+  , jsLocal :: Maybe [Double] -- ^ a saved joint's anchors: body a's (r, θ), body b's (r, θ), the world point
+  , jsImpulses :: [Double] -- ^ a saved joint's impulses (7)
+  , jsCollide :: Bool -- ^ whether the joined bodies collide (default false)
+  } deriving (Show, Eq)
 
 type Path = String
 
@@ -165,7 +190,7 @@ parseScene :: BL.ByteString -> P Scene
 parseScene text = do
   v <- either (\(path, e) -> Left ("not JSON: " ++ formatError path e)) pure
          (AP.eitherDecodeWith (AP.jsonLast <* AC.skipSpace <* AC.endOfInput) ISuccess text)
-  o <- object "$" (["space"] ++ map keyName sceneKeys ++ ["bodies"]) v
+  o <- object "$" (["space"] ++ map keyName sceneKeys ++ ["bodies", "joints"]) v
   sp <- required "$" o "space" $ \path -> \case
     A.String s -> maybe (problem path ("unknown space " ++ show (T.unpack s) ++ "; the spaces are " ++ intercalate ", " spaceNames))
                         pure (lookupSpace (T.unpack s))
@@ -179,7 +204,78 @@ parseScene text = do
   when (remembered > room) $
     problem "$.bodies" (show remembered ++ " remembered contact impulses, more than " ++ show (length bodies)
                          ++ " bodies remember (" ++ show contactsPerBody ++ " a body)")
-  pure (Scene sp params bodies)
+  joints <- optional "$" o "joints" [] $ \path -> \case
+    A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, j) -> joint (length bodies) (path ++ "[" ++ show k ++ "]") j
+    _ -> problem path "must be an array of joints"
+  when (length joints > 2 * max 1 (length bodies)) $
+    problem "$.joints" (show (length joints) ++ " joints, more than a world of " ++ show (length bodies) ++ " bodies holds (two a body)")
+  pure (Scene sp params bodies joints)
+
+-- | A scene's joint, for a scene of @n@ bodies.
+joint :: Int -> Path -> A.Value -> P JointSpec
+joint n path v = do
+  kind <- case v of
+    A.Object o0 -> case member o0 "type" of
+      Just (A.String "revolute") -> pure Revolute
+      Just (A.String "distance") -> pure Distance
+      Just (A.String "weld") -> pure Weld
+      Just (A.String t) -> problem (path ++ ".type") ("unknown joint type " ++ show (T.unpack t) ++ "; the types are " ++ jointTypes)
+      Just _ -> problem (path ++ ".type") ("must be one of " ++ jointTypes)
+      Nothing -> problem (path ++ ".type") "is missing"
+    _ -> problem path "must be an object"
+  let common = ["type", "a", "b", "collide", "local", "impulses"]
+      own = case kind of
+        Revolute -> ["anchor", "referenceAngle", "lowerAngle", "upperAngle", "motorSpeed", "maxMotorTorque"]
+        Distance -> ["anchorA", "anchorB", "length", "minLength", "maxLength", "hertz", "dampingRatio"]
+        Weld -> ["anchor", "referenceAngle", "hertz", "dampingRatio"]
+  o <- object path (common ++ own) v
+  let index at = \case
+        A.Number x | toRealFloat x == fromIntegral (round (toRealFloat x :: Double) :: Int)
+                   , let k = round (toRealFloat x :: Double), k >= 0, k < n -> pure k
+        _ -> problem at ("must be a body's index, from 0 to " ++ show (n - 1))
+  a <- required path o "a" index
+  b <- required path o "b" $ \at -> \case
+    A.String "world" -> pure Nothing
+    x -> either (const (problem at ("must be a body's index, from 0 to " ++ show (n - 1) ++ ", or \"world\""))) (pure . Just) (index at x)
+  when (b == Just a) $ problem (path ++ ".b") ("joins body " ++ show a ++ " to itself")
+  (anchorA, anchorB) <- case kind of
+    Distance -> (,) <$> required path o "anchorA" vec3 <*> required path o "anchorB" vec3
+    _ -> (\p -> (p, p)) <$> required path o "anchor" vec3
+  len <- optional path o "length" Nothing (\at x -> Just <$> nonNegative at x)
+  lo <- optional path o "minLength" Nothing (\at x -> Just <$> nonNegative at x)
+  hi <- optional path o "maxLength" Nothing (\at x -> Just <$> nonNegative at x)
+  case (lo, len, hi) of
+    (Just l, Just m, _) | l > m -> problem (path ++ ".minLength") "must not be more than length"
+    (_, Just m, Just h) | m > h -> problem (path ++ ".maxLength") "must not be less than length"
+    (Just l, _, Just h) | l > h -> problem (path ++ ".maxLength") "must not be less than minLength"
+    _ -> pure ()
+  hz <- optional path o "hertz" 0 nonNegative
+  zeta <- optional path o "dampingRatio" 0 nonNegative
+  ref <- optional path o "referenceAngle" Nothing (\at x -> Just <$> number at x)
+  lower <- optional path o "lowerAngle" Nothing (\at x -> Just <$> number at x)
+  upper <- optional path o "upperAngle" Nothing (\at x -> Just <$> number at x)
+  limit <- case (lower, upper) of
+    (Just l, Just u) | l > u -> problem (path ++ ".upperAngle") "must not be less than lowerAngle"
+                     | otherwise -> pure (Just (l, u))
+    (Nothing, Nothing) -> pure Nothing
+    (Just _, Nothing) -> problem (path ++ ".upperAngle") "must be given with lowerAngle"
+    (Nothing, Just _) -> problem (path ++ ".lowerAngle") "must be given with upperAngle"
+  speed <- optional path o "motorSpeed" Nothing (\at x -> Just <$> number at x)
+  torque <- optional path o "maxMotorTorque" Nothing (\at x -> Just <$> nonNegative at x)
+  motor <- case (speed, torque) of
+    (Just s', Just t) -> pure (Just (s', t))
+    (Nothing, Nothing) -> pure Nothing
+    (Just _, Nothing) -> problem (path ++ ".maxMotorTorque") "must be given with motorSpeed"
+    (Nothing, Just _) -> problem (path ++ ".motorSpeed") "must be given with maxMotorTorque"
+  local <- optional path o "local" Nothing (\at x -> Just <$> numbers 7 "[rA, thetaA, rB, thetaB, worldX, worldY, worldZ]" at x)
+  imps <- optional path o "impulses" [] (numbers 7 "the joint's seven impulses")
+  collide <- optional path o "collide" False boolean
+  pure (JointSpec kind a b anchorA anchorB len lo hi hz zeta ref limit motor local imps collide)
+  where
+    jointTypes = "\"revolute\", \"distance\" and \"weld\""
+    numbers k what at = \case
+      A.Array xs | V.length xs == k -> forM (zip [0 :: Int ..] (V.toList xs)) $ \(i, x) -> number (at ++ "[" ++ show i ++ "]") x
+      _ -> problem at ("must be an array of " ++ show k ++ " numbers, " ++ what)
 
 -- | A scene key's value, if the scene gives it, set in the parameters.
 sceneKey :: KM.KeyMap A.Value -> Params -> SceneKey -> P Params
@@ -195,8 +291,23 @@ sceneJSON :: Scene -> A.Value
 sceneJSON s = A.object
   ( ["space" A..= spaceName (sceneSpace s)]
     ++ [ K.fromString (keyName k) A..= keyJSON k | k <- sceneKeys ]
-    ++ ["bodies" A..= map bodyJSON (sceneBodies s)] )
+    ++ ["bodies" A..= map bodyJSON (sceneBodies s)]
+    ++ [ "joints" A..= map jointJSON (sceneJoints s) | not (null (sceneJoints s)) ] )
   where
+    jointJSON j = A.object $
+      [ "type" A..= (case jsKind j of Revolute -> "revolute"; Distance -> "distance"; Weld -> "weld" :: String)
+      , "a" A..= jsA j, "b" A..= maybe (A.String "world") A.toJSON (jsB j) ]
+      ++ (case jsKind j of
+            Distance -> [ "anchorA" A..= v3 (jsAnchorA j), "anchorB" A..= v3 (jsAnchorB j) ]
+                        ++ concat [ [K.fromString key A..= x] | (key, Just x) <- [("length", jsLength j), ("minLength", jsMinLength j), ("maxLength", jsMaxLength j)] ]
+            _ -> ("anchor" A..= v3 (jsAnchorA j)) : [ "referenceAngle" A..= r | Just r <- [jsReference j] ])
+      ++ [ "hertz" A..= jsHertz j | jsKind j /= Revolute, jsHertz j /= 0 ]
+      ++ [ "dampingRatio" A..= jsDampingRatio j | jsKind j /= Revolute, jsDampingRatio j /= 0 ]
+      ++ concat [ ["lowerAngle" A..= l, "upperAngle" A..= u] | Just (l, u) <- [jsLimit j] ]
+      ++ concat [ ["motorSpeed" A..= sp', "maxMotorTorque" A..= t] | Just (sp', t) <- [jsMotor j] ]
+      ++ [ "collide" A..= True | jsCollide j ]
+      ++ [ "local" A..= l | Just l <- [jsLocal j] ]
+      ++ [ "impulses" A..= jsImpulses j | not (null (jsImpulses j)) ]
     bodyJSON b = A.object $
       [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b
       , "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
@@ -232,8 +343,74 @@ loadScene extra s = do
          <$> maybe (addBody w (bodyInit b)) (restoreBody w (bodyInit b)) (bsFrame b)
   case sequence added of
     Left e -> pure (Left e)
-    Right _ -> fmap (const w) . either (Left . ("$.bodies: " ++)) Right
-                 <$> restoreImpulses w (map bsImpulses (sceneBodies s))
+    Right _ -> do
+      restored <- either (Left . ("$.bodies: " ++)) Right <$> restoreImpulses w (map bsImpulses (sceneBodies s))
+      joined <- zipWithM (loadJoint w) [0 ..] (sceneJoints s)
+      pure (restored >> sequence_ joined >> pure w)
+
+-- | Add a scene's joint @k@ to the world.
+loadJoint :: NativeWorld -> Int -> JointSpec -> IO (P ())
+loadJoint w k j = do
+  let path = "$.joints[" ++ show k ++ "]"
+      anchorKey = if jsKind j == Distance then ".anchorA" else ".anchor"
+  added <- addJointAt w (jsKind j) (jsA j) (fromMaybe (-1) (jsB j)) (jsAnchorA j) (jsAnchorB j)
+  case added of
+    Left e -> pure (Left (path ++ anchorKey ++ ": " ++ e))
+    Right i -> do
+      let set = setJointField w i
+      forM_ (jsLocal j) $ \l -> zipWithM_ set [JRadiusA, JThetaA, JRadiusB, JThetaB, JWorldX, JWorldY, JWorldZ] l
+      chord <- jointField w i JLength
+      let len = fromMaybe chord (jsLength j)
+          lo = fromMaybe len (jsMinLength j)
+          hi = fromMaybe len (jsMaxLength j)
+          tooShort = lo > len
+          tooLong = len > hi
+      if jsKind j == Distance && (tooShort || tooLong)
+        then pure (problem (path ++ (if tooShort then ".minLength" else ".maxLength"))
+                     (if tooShort then "must not be more than the length (the anchors' distance)" else "must not be less than the length (the anchors' distance)"))
+        else do
+          when (jsKind j == Distance) $ zipWithM_ set [JLength, JMinLength, JMaxLength] [len, lo, hi]
+          set JHertz (jsHertz j)
+          set JCollide (if jsCollide j then 1 else 0)
+          set JDamping (jsDampingRatio j)
+          forM_ (jsReference j) (set JReference)
+          forM_ (jsLimit j) $ \(l, u) -> zipWithM_ set [JLimitOn, JLower, JUpper] [1, l, u]
+          forM_ (jsMotor j) $ \(sp', t) -> zipWithM_ set [JMotorOn, JMotorSpeed, JMaxTorque] [1, sp', t]
+          zipWithM_ set jointImpulses (jsImpulses j)
+          pure (Right ())
+
+-- | A joint's impulses, in the order a saved joint lists them.
+jointImpulses :: [JointField]
+jointImpulses = [JImpulse1, JImpulse2, JImpulseAxial, JImpulseLower, JImpulseUpper, JImpulseMotor, JImpulseAngle]
+
+-- | Joint @i@ of the world as a scene holds it, with its anchors in its
+-- bodies' coordinates and its impulses (restored exactly by 'loadScene').
+jointOfWorld :: NativeWorld -> Int -> IO JointSpec
+jointOfWorld w i = do
+  let get = jointField w i
+      v3At k = V3 <$> get k <*> get (succ k) <*> get (succ (succ k))
+  kind <- toEnum . round <$> get JKind
+  a <- round <$> get JA
+  b <- get JB
+  anchorA <- v3At JAnchorAX
+  anchorB <- if b < 0 then v3At JWorldX else v3At JAnchorBX
+  [len, lo, hi, hz, zeta, ref, limitOn, lower, upper, motorOn, speed, torque] <-
+    mapM get [JLength, JMinLength, JMaxLength, JHertz, JDamping, JReference, JLimitOn, JLower, JUpper, JMotorOn, JMotorSpeed, JMaxTorque]
+  local <- mapM get [JRadiusA, JThetaA, JRadiusB, JThetaB, JWorldX, JWorldY, JWorldZ]
+  imps <- mapM get jointImpulses
+  collide <- get JCollide
+  let distance = kind == Distance
+  pure JointSpec
+    { jsKind = kind, jsA = a, jsB = if b < 0 then Nothing else Just (round b)
+    , jsAnchorA = anchorA, jsAnchorB = if kind == Distance then anchorB else anchorA
+    , jsLength = if distance then Just len else Nothing
+    , jsMinLength = if distance then Just lo else Nothing
+    , jsMaxLength = if distance then Just hi else Nothing
+    , jsHertz = hz, jsDampingRatio = zeta
+    , jsReference = if distance then Nothing else Just ref
+    , jsLimit = if limitOn > 0 then Just (lower, upper) else Nothing
+    , jsMotor = if motorOn > 0 then Just (speed, torque) else Nothing
+    , jsLocal = Just local, jsImpulses = imps, jsCollide = collide > 0 }
 
 -- | The scene as the world now has it: the scene's bodies (which the world
 -- must hold in the scene's order: as 'loadScene' made it, none added or
@@ -241,7 +418,8 @@ loadScene extra s = do
 -- the axis it has carried along and its normal (its angle measured from
 -- that axis), so that loading the scene restores every body bit for bit
 -- and the run goes on as it would have. Each body keeps what it remembers
--- of the last step's contacts.
+-- of the last step's contacts; the joints are the world's now, each with
+-- its anchors in its bodies' coordinates and its impulses.
 sceneOfWorld :: Scene -> NativeWorld -> IO (P Scene)
 sceneOfWorld s w = do
   n <- bodyCount w
@@ -254,4 +432,6 @@ sceneOfWorld s w = do
         remembered <- rememberedImpulses w i
         pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = bsAngle st, bsOmega0 = bsOmega st
                   , bsFrame = Just (bsAxis st, bsNormal st), bsImpulses = remembered }
-      pure (Right s { sceneBodies = bodies })
+      nj <- jointCount w
+      joints <- mapM (jointOfWorld w) [0 .. nj - 1]
+      pure (Right s { sceneBodies = bodies, sceneJoints = joints })

@@ -48,9 +48,10 @@ import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Field
+import Manifold.Joint
+import Manifold.Soft
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.Surface (geodesicStep)
 import Manifold.World
 
 -- | A body's velocity state.
@@ -129,20 +130,6 @@ effectiveMass w a b r = do
   k <- share (ima * quadrance (rowA r) + iia * rowAW r * rowAW r + kB)
   share (select k (recip k) 0)
 
--- | A soft constraint's coefficients for a spring of frequency @hz@ and
--- damping ratio @zeta@ over a sub-step of length @h@: the bias rate, the
--- mass scale and the impulse scale (the module's first comment).
-data Softness s = Softness { biasRate :: !s, massScale :: !s, impulseScale :: !s }
-
-softness :: Imp m => Scalar m -> Scalar m -> Scalar m -> m (Softness (Scalar m))
-{-# INLINE softness #-}
-softness hz zeta h = do
-  omega <- share (2 * pi * hz)
-  a1 <- share (2 * zeta + h * omega)
-  a2 <- share (h * omega * a1)
-  a3 <- share (recip (1 + a2))
-  Softness <$> share (omega / a1) <*> share (a2 * a3) <*> pure a3
-
 -- | Where a grabbed body's grabbed point is now: the geodesic from its
 -- centre in the grabbed direction, as long as the grabbed distance.
 grabPoint :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m (V3 (Scalar m))
@@ -150,18 +137,7 @@ grabPoint sp w g = do
   f <- bodyFrame w g
   r <- readMouse w MLocalR
   theta <- readMouse w MLocalTheta
-  let phi = bfAngle f + theta
-      dir = cosF phi *^ bfU f ^+^ sinF phi *^ bfW f
-      steps = 4 :: Int
-      h = r / fromIntegral steps
-      go 0 s = pure s
-      go k (q, d) = do
-        let (q1, d1) = geodesicStep (spaceField sp) h (q, d)
-        q' <- share3 q1
-        d' <- share3 d1
-        go (k - 1 :: Int) (q', d')
-  fst <$> go steps (bfCentre f, dir)
-
+  anchorPoint sp f r theta
 
 -- | The mouse joint's rows along the body's frame vectors: with @warm@,
 -- its impulses applied again (the warm start of a sub-step); otherwise one
@@ -287,14 +263,18 @@ substeps sp _ w = do
   -- rectangle's solver as "too big to be optimized" and never tried again,
   -- and the page's solve then took 100 ms a step instead of 5 (node
   -- bench/browser.mjs, the rectangle after the torus).
+  -- the joints before the contacts in each pass (as Box2D orders them)
   forEach (toIndex n) $ \_ -> do
     subroutine "substepGravity" [] $ \_ -> substepLength w >>= applyGravity sp w
+    subroutine "warmStartJoints" [] $ \_ -> warmStartJoints w
     subroutine "warmStart" [] $ \_ -> warmStart w
     mouseRows sp w True
     forEach (toIndex iterations) $ \_ -> do
+      subroutine "solveJoints" [] $ \_ -> solveJoints True w
       subroutine "solveSweep" [] $ \_ -> sweepRows True w
       mouseRows sp w False
     subroutine "substepMove" [] $ \_ -> substepLength w >>= integrate sp w
+    subroutine "relaxJoints" [] $ \_ -> solveJoints False w
     subroutine "relaxSweep" [] $ \_ -> sweepRows False w
     mouseRows sp w False
 
@@ -421,6 +401,7 @@ finishStep sp w = do
   rememberImpulses w
   tangentVelocities sp w
   wrapIntoDomain sp w
+  wrapJoints sp w
 
 -- | The restitution impulses: a contact that approached at @v < -threshold@
 -- leaves at @−e·v@.

@@ -45,6 +45,7 @@ hashedParts =
   , HashedPart wNormal BodyCount 3
   , HashedPart wScalars BodyCount scalarSlots
   , HashedPart wContacts ContactCount contactStride
+  , HashedPart wJoints JointCount jointStride
   ]
 
 -- | FNV-1a, 64 bits, over the bytes of the numbers' bit patterns (least

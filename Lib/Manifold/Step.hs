@@ -8,6 +8,7 @@ module Manifold.Step
   ) where
 
 import Manifold.Collide
+import Manifold.Joint (prepareJoints)
 import Manifold.Solver
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -22,7 +23,7 @@ stepPhases :: Imp m => [(String, Space -> Layout -> WorldArrays (Array m) -> m (
 {-# SPECIALIZE stepPhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())] #-}
 stepPhases =
   [ ("collide", collide)
-  , ("prepare", \_ _ w -> prepareContacts w)
+  , ("prepare", \sp _ w -> prepareContacts w >> prepareJoints sp w)
   , ("substeps", substeps)
   , ("finish", \sp _ w -> finishStep sp w)
   , ("polygonise", polygoniseAll)

@@ -24,6 +24,15 @@ module Manifold.World
   , ContactField (..)
   , PrevField (..)
   , MouseField (..)
+  , JointField (..)
+  , JointKind (..)
+  , jointStride
+  , maxJoints
+  , partnersPerBody
+  , readJoint
+  , writeJoint
+  , readJoint3
+  , writeJoint3
   , scalarSlots
   , contactStride
   , prevStride
@@ -103,6 +112,9 @@ data WorldArrays a = WorldArrays
   , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
   , wNear :: a -- ^ broad phase scratch: the bodies whose bounds overlap the current one's
   , wWalk :: a -- ^ polygon walk scratch: @walkStride@ numbers per direction, the walk's state between its loops
+  , wJoints :: a -- ^ 'jointStride' per joint, see 'JointField' ("Manifold.Joint")
+  , wFlip :: a -- ^ per body: 1, or −1 when the last wrap into the fundamental domain mirrored it (the joints' anchors follow)
+  , wPartners :: a -- ^ per body: 'partnersPerBody' bodies it is joined to and does not collide with (−1: none), found each step
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -141,11 +153,12 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos 
 
 -- | The world's counters.
 data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
+  | JointCount | LastJoint
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
 data Param = Dt | GravityOn | Substeps | Iterations | Friction | Restitution | ContactHertz | DampingRatio | Pushout
-  | Slop | Speculative | BounceThreshold | WarmStart | PolygonStep
+  | Slop | Speculative | BounceThreshold | WarmStart | PolygonStep | JointHertz | JointDampingRatio
   deriving (Show, Eq, Enum, Bounded)
 
 -- | One contact row pair (normal and friction) of the solver. The first body
@@ -180,11 +193,43 @@ data MouseField = MActive | MBody | MLocalR | MLocalTheta | MTargetX | MTargetY 
   | MFrequency | MDamping | MMaxForce | MImpulseU | MImpulseW | MSign
   deriving (Show, Eq, Enum, Bounded)
 
+-- | What a joint holds ("Manifold.Joint"). The first fields say what the
+-- joint is: its kind ('JointKind'), its bodies (@b@ −1 for the world), each
+-- anchor in its body's own polar coordinates (the geodesic distance from the
+-- centre and the angle from the body's direction, as the mouse joint keeps
+-- its grabbed point) or, against the world, as a surface point, and the
+-- settings of the kind. The impulses are kept from step to step (warm
+-- starting). The rest is what each step's preparation finds for the
+-- sub-steps: the anchors (body b's at the image nearest body a's), each
+-- anchor's lever from its body's centre (body b's in its own frame), the
+-- image's signs, the pin's two row directions (body a's frame), the
+-- anchors' distance, and for the angular rows the image's orientation
+-- ('JSigma'), the relative angle's error and the rows' mass.
+data JointField
+  = JKind | JA | JB
+  | JRadiusA | JThetaA | JRadiusB | JThetaB | JWorldX | JWorldY | JWorldZ
+  | JLength | JMinLength | JMaxLength | JHertz | JDamping
+  | JReference | JLimitOn | JLower | JUpper | JMotorOn | JMotorSpeed | JMaxTorque
+  | JImpulse1 | JImpulse2 | JImpulseAxial | JImpulseLower | JImpulseUpper | JImpulseMotor | JImpulseAngle
+  | JAnchorAX | JAnchorAY | JAnchorAZ | JAnchorBX | JAnchorBY | JAnchorBZ
+  | JLeverAX | JLeverAY | JLeverAZ | JLeverBX | JLeverBY | JLeverBZ
+  | JSignX | JSignY | JSignZ | JE1X | JE1Y | JE1Z | JE2X | JE2Y | JE2Z
+  | JChord | JSigma | JAngleError | JAngularMass | JCollide
+  deriving (Show, Eq, Enum, Bounded)
+
+-- | The kinds of joint.
+data JointKind
+  = Revolute -- ^ a pin: the anchors coincide; optionally a motor and angle limits
+  | Distance -- ^ the anchors a length apart: rigid, a spring, or a rope between two lengths
+  | Weld -- ^ the anchors coincide and the relative angle holds
+  deriving (Show, Eq, Enum, Bounded)
+
 count' :: forall e. (Enum e, Bounded e) => e -> Int
 count' _ = fromEnum (maxBound :: e) + 1
 
-scalarSlots, contactStride, prevStride :: Int
+scalarSlots, contactStride, prevStride, jointStride :: Int
 scalarSlots = count' Angle
+jointStride = count' JKind
 contactStride = count' CA
 prevStride = count' PrevOwner
 
@@ -206,6 +251,16 @@ verticesPerBody l = 1 + polyDirections (polygon l) * polySteps (polygon l)
 maxContacts :: Layout -> Int
 maxContacts l = contactsPerBody * max 1 (capacity l)
 
+-- | The bodies a body is joined to that it does not collide with: beyond
+-- these, joined bodies collide.
+partnersPerBody :: Int
+partnersPerBody = 4
+
+-- | The joints a world holds: two a body (a grid's bodies are joined to
+-- their right and lower neighbours).
+maxJoints :: Layout -> Int
+maxJoints l = 2 * max 1 (capacity l)
+
 arraySizes :: Layout -> WorldArrays Int
 arraySizes l = let c = max 1 (capacity l) in WorldArrays
   { wMeta = count' BodyCount
@@ -225,11 +280,14 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wProbe = 2 * polyDirections (polygon l)
   , wNear = c
   , wWalk = walkStride * polyDirections (polygon l)
+  , wJoints = jointStride * maxJoints l
+  , wFlip = c
+  , wPartners = partnersPerBody * c
   }
 
 arrayNames :: WorldArrays String
 arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
-  "outline" "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near" "walk"
+  "outline" "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near" "walk" "joints" "flip" "partners"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 {-# INLINE read3 #-}
@@ -305,6 +363,23 @@ readPrev w k f = readArray (wPrev w) (fieldAt prevStride k f)
 writePrev :: Imp m => WorldArrays (Array m) -> Index m -> PrevField -> Scalar m -> m ()
 {-# INLINE writePrev #-}
 writePrev w k f = writeArray (wPrev w) (fieldAt prevStride k f)
+
+readJoint :: Imp m => WorldArrays (Array m) -> Index m -> JointField -> m (Scalar m)
+{-# INLINE readJoint #-}
+readJoint w j k = readArray (wJoints w) (fieldAt jointStride j k)
+
+writeJoint :: Imp m => WorldArrays (Array m) -> Index m -> JointField -> Scalar m -> m ()
+{-# INLINE writeJoint #-}
+writeJoint w j k = writeArray (wJoints w) (fieldAt jointStride j k)
+
+-- | Three consecutive fields starting at the given one.
+readJoint3 :: Imp m => WorldArrays (Array m) -> Index m -> JointField -> m (V3 (Scalar m))
+{-# INLINE readJoint3 #-}
+readJoint3 w j k = readAt3 (wJoints w) (fieldAt jointStride j k)
+
+writeJoint3 :: Imp m => WorldArrays (Array m) -> Index m -> JointField -> V3 (Scalar m) -> m ()
+{-# INLINE writeJoint3 #-}
+writeJoint3 w j k = writeAt3 (wJoints w) (fieldAt jointStride j k)
 
 readMouse :: Imp m => WorldArrays (Array m) -> MouseField -> m (Scalar m)
 readMouse w k = readArray (wMouse w) (ix k)
@@ -447,7 +522,8 @@ integrate sp w dt = do
 -- | Bring every body back into the quotient's fundamental domain (nothing
 -- on a space without one). Through a flipping edge a body comes out
 -- mirrored: z of every vector, and its angle and angular velocity, change
--- sign (orientation reverses).
+-- sign (orientation reverses); 'wFlip' says which bodies did, for the
+-- joints ("Manifold.Joint").
 wrapIntoDomain :: Imp m => Space -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE wrapIntoDomain :: Space -> WorldArrays NativeArray -> Native () #-}
 wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
@@ -459,6 +535,7 @@ wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
       let (p', s) = wrap p
           mirror (V3 x y z) = V3 x y (s * z)
       sS <- share s
+      writeArray (wFlip w) i sS
       write3 (wPos w) i p'
       mapM_ (\arr -> read3 arr i >>= write3 arr i . mirror) [wVel w, wAxis w, wNormal w]
       readSlot w i Angle >>= writeSlot w i Angle . (sS *)

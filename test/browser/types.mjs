@@ -88,7 +88,7 @@ function generatedProblems(d) {
     [["arrays", E.arrays, "ArrayName"], ["sizes", Object.keys(E.sizes), "ArrayName"], ["meta", Object.keys(E.meta), "MetaName"],
       ["params", Object.keys(E.params), "ParamName"], ["defaults", Object.keys(E.defaults), "ParamName"],
       ["slots", Object.keys(E.slots), "SlotName"], ["contact", Object.keys(E.contact), "ContactField"],
-      ["prev", Object.keys(E.prev), "PrevField"], ["mouse", Object.keys(E.mouse), "MouseField"],
+      ["prev", Object.keys(E.prev), "PrevField"], ["mouse", Object.keys(E.mouse), "MouseField"], ["joint", Object.keys(E.joint), "JointField"],
       ["path.slots", Object.keys(E.path.slots), "PathField"], ["measures.slots", Object.keys(E.measures.slots), "MeasureField"], ["keys.groups", Object.keys(E.keys.groups), "ContactGroup"]].forEach(function (c) {
       out = out.concat(setProblems("engine." + c[0] + " of " + name, c[1], U[c[2]]));
     });
@@ -101,7 +101,7 @@ export async function testTypes(check, context, base) {
   const file = path.join(ROOT, "web", "manifold.d.ts");
   const d = readDeclarations(fs.readFileSync(file, "utf8"));
   const wanted = ["Generated", "SpaceEntry", "SceneKey", "SceneControl", "Space", "Engine", "ComparisonDef", "Api", "Stats", "Simulation", "OptionsShown", "CameraSpec"]
-    .filter((n) => !d.interfaces[n]).concat(["Quotient", "ArrayName", "MetaName", "ParamName", "SlotName", "ContactField", "PrevField", "MouseField", "PathField", "MeasureField", "ContactGroup"]
+    .filter((n) => !d.interfaces[n]).concat(["Quotient", "ArrayName", "MetaName", "ParamName", "SlotName", "ContactField", "PrevField", "MouseField", "JointField", "PathField", "MeasureField", "ContactGroup"]
       .filter((n) => !d.unions[n]));
   if (!check("web/manifold.d.ts declares the interfaces and unions these checks read", wanted.length === 0, "not found: " + wanted.join(", "))) return;
 

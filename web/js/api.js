@@ -79,6 +79,9 @@ var ManifoldWebApi = (function (W) {
       },
       // the bodies in the scene format
       bodies: function () { return state.world ? state.world.bodies() : []; },
+      addJoint: function (spec) { return P.requireWorld().addJoint(spec); },
+      joints: function () { return state.world ? state.world.jointsSaved() : []; },
+      removeJoint: function (i) { P.requireWorld().removeJoint(i); },
       // the hash of the world's state (16 hex digits): manifold sim --hash prints the same for the same run
       hash: function () { return P.requireWorld().hash(); },
       // the comparison view (setSpace("compare-torus")), or null: both worlds' bodies,

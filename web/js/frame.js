@@ -151,13 +151,14 @@ var ManifoldWebFrame = (function (W) {
   /** @returns {Manifold.Stats} */
   function statsObject() {
     const w = state.world;
-    const counters = w ? w.counters() : { bodies: 0, contacts: 0, warnings: 0, droppedContacts: 0 };
+    const counters = w ? w.counters() : { bodies: 0, joints: 0, contacts: 0, warnings: 0, droppedContacts: 0 };
     return {
       fps: Math.round(fps(performance.now()) * 10) / 10,
       frameMs: drawn.gpuFrameMs === null ? null : Math.round(drawn.gpuFrameMs * 10) / 10,
       frames: drawn.frameCount,
       preview: state.preview,
       bodies: counters.bodies,
+      joints: counters.joints,
       contacts: counters.contacts,
       warnings: counters.warnings,
       droppedContacts: counters.droppedContacts,

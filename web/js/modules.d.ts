@@ -79,7 +79,29 @@ declare namespace ManifoldWeb {
   interface ParsedScene {
     space: string;
     bodies: Manifold.SceneBody[];
+    joints?: ParsedJoint[];
     [sceneKey: string]: unknown;
+  }
+
+  /** A scene joint as world.js's parseJoint gives it: every key, null where the scene left one out. */
+  interface ParsedJoint {
+    type: Manifold.JointType;
+    a: number;
+    /** -1: the world */
+    b: number;
+    anchorA: Manifold.Vec3;
+    anchorB: Manifold.Vec3;
+    length: number | null;
+    minLength: number | null;
+    maxLength: number | null;
+    hertz: number;
+    dampingRatio: number;
+    referenceAngle: number | null;
+    limit: [number, number] | null;
+    motor: [number, number] | null;
+    local: number[] | null;
+    impulses: number[];
+    collide: boolean;
   }
 
   /** A linked program and its uniforms (gl.js). */

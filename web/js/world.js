@@ -160,6 +160,75 @@ var ManifoldWebWorld = (function (W) {
     return b;
   }
 
+  // The keys of a scene joint, by type (Manifold.Scene's, in its order).
+  const JOINT_KEYS = {
+    common: ["type", "a", "b", "collide", "local", "impulses"],
+    revolute: ["anchor", "referenceAngle", "lowerAngle", "upperAngle", "motorSpeed", "maxMotorTorque"],
+    distance: ["anchorA", "anchorB", "length", "minLength", "maxLength", "hertz", "dampingRatio"],
+    weld: ["anchor", "referenceAngle", "hertz", "dampingRatio"],
+  };
+  // a saved joint's anchors in its bodies' coordinates (Manifold.Scene's "local")
+  /** @type {Manifold.JointField[]} */
+  const JOINT_LOCAL = ["radiusA", "thetaA", "radiusB", "thetaB", "worldX", "worldY", "worldZ"];
+  /** @type {Manifold.JointField[]} */
+  const JOINT_IMPULSES = ["impulse1", "impulse2", "impulseAxial", "impulseLower", "impulseUpper", "impulseMotor", "impulseAngle"];
+
+  // A scene joint (JSON value) of a scene of n bodies → a complete joint
+  // spec; throws a SceneError naming `path`, as Manifold.Scene does.
+  /** @param {unknown} v @param {string} path @param {number} n @returns {ManifoldWeb.ParsedJoint} */
+  function parseJoint(v, path, n) {
+    const types = "\"revolute\", \"distance\" and \"weld\"";
+    if (!isObject(v)) problem(path, "must be an object");
+    const o0 = /** @type {Record<string, unknown>} */ (v);
+    if (!("type" in o0)) problem(path + ".type", "is missing");
+    const type = o0.type;
+    if (typeof type !== "string") problem(path + ".type", "must be one of " + types);
+    if (type === "common" || !(type in JOINT_KEYS)) problem(path + ".type", "unknown joint type " + JSON.stringify(type) + "; the types are " + types);
+    const kind = /** @type {Manifold.JointType} */ (type);
+    const o = object(path, JOINT_KEYS.common.concat(JOINT_KEYS[kind]), v);
+    /** @param {string} at @param {unknown} x @param {string} [or] */
+    const index = function (at, x, or) {
+      if (!(Number.isInteger(x) && /** @type {number} */ (x) >= 0 && /** @type {number} */ (x) < n)) problem(at, "must be a body's index, from 0 to " + (n - 1) + (or || ""));
+      return /** @type {number} */ (x);
+    };
+    const a = required(path, o, "a", index);
+    const b = required(path, o, "b", function (at, x) { return x === "world" ? -1 : index(at, x, ", or \"world\""); });
+    if (b === a) problem(path + ".b", "joins body " + a + " to itself");
+    const anchors = kind === "distance"
+      ? [required(path, o, "anchorA", vec3), required(path, o, "anchorB", vec3)]
+      : (function (p) { return [p, p]; })(required(path, o, "anchor", vec3));
+    /** @param {string} k @param {(path: string, v: unknown) => number} parse */
+    const maybe = function (k, parse) { return optional(path, o, k, null, parse); };
+    const len = maybe("length", nonNegative), lo = maybe("minLength", nonNegative), hi = maybe("maxLength", nonNegative);
+    if (lo !== null && len !== null && lo > len) problem(path + ".minLength", "must not be more than length");
+    if (len !== null && hi !== null && len > hi) problem(path + ".maxLength", "must not be less than length");
+    if (lo !== null && hi !== null && lo > hi) problem(path + ".maxLength", "must not be less than minLength");
+    const hertz = optional(path, o, "hertz", 0, nonNegative), damping = optional(path, o, "dampingRatio", 0, nonNegative);
+    const reference = maybe("referenceAngle", number);
+    const lower = maybe("lowerAngle", number), upper = maybe("upperAngle", number);
+    if (lower !== null && upper !== null && lower > upper) problem(path + ".upperAngle", "must not be less than lowerAngle");
+    if (lower !== null && upper === null) problem(path + ".upperAngle", "must be given with lowerAngle");
+    if (lower === null && upper !== null) problem(path + ".lowerAngle", "must be given with upperAngle");
+    const speed = maybe("motorSpeed", number), torque = maybe("maxMotorTorque", nonNegative);
+    if (speed !== null && torque === null) problem(path + ".maxMotorTorque", "must be given with motorSpeed");
+    if (speed === null && torque !== null) problem(path + ".motorSpeed", "must be given with maxMotorTorque");
+    /** @param {number} k @param {string} what */
+    const numbers = function (k, what) {
+      return function (/** @type {string} */ at, /** @type {unknown} */ x) {
+        if (!Array.isArray(x) || x.length !== k) problem(at, "must be an array of " + k + " numbers, " + what);
+        return /** @type {unknown[]} */ (x).map(function (y, i) { return number(at + "[" + i + "]", y); });
+      };
+    };
+    const local = optional(path, o, "local", null, numbers(7, "[rA, thetaA, rB, thetaB, worldX, worldY, worldZ]"));
+    const imps = optional(path, o, "impulses", [], numbers(7, "the joint's seven impulses"));
+    const collide = optional(path, o, "collide", false, boolean);
+    return { type: kind, a: a, b: b, anchorA: anchors[0], anchorB: anchors[1], length: len, minLength: lo, maxLength: hi,
+      hertz: hertz, dampingRatio: damping, referenceAngle: reference,
+      limit: lower === null ? null : [lower, /** @type {number} */ (upper)],
+      motor: speed === null ? null : [speed, /** @type {number} */ (torque)],
+      local: local, impulses: imps, collide: collide };
+  }
+
   // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
   /** @param {unknown} json @param {string[]} spaceNames @returns {ManifoldWeb.ParsedScene} */
   function parseScene(json, spaceNames) {
@@ -172,7 +241,7 @@ var ManifoldWebWorld = (function (W) {
       }
     }
     const keys = sceneKeys();
-    const o = object("$", ["space"].concat(keys.map(function (k) { return k.key; }), ["bodies"]), v);
+    const o = object("$", ["space"].concat(keys.map(function (k) { return k.key; }), ["bodies", "joints"]), v);
     const space = required("$", o, "space", function (path, s) {
       if (typeof s !== "string") problem(path, "must be a space name");
       if (spaceNames.indexOf(s) < 0) problem(path, "unknown space " + JSON.stringify(s) + "; the spaces are " + spaceNames.join(", "));
@@ -188,6 +257,15 @@ var ManifoldWebWorld = (function (W) {
       if (!Array.isArray(a)) problem(path, "must be an array of bodies");
       return a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
     });
+    // (the remembered impulses' bound is checked when the scene is loaded)
+    const n = scene.bodies.length;
+    scene.joints = optional("$", o, "joints", [], function (path, a) {
+      if (!Array.isArray(a)) problem(path, "must be an array of joints");
+      return a.map(function (j, k) { return parseJoint(j, path + "[" + k + "]", n); });
+    });
+    if (scene.joints.length > 2 * Math.max(1, n)) {
+      problem("$.joints", scene.joints.length + " joints, more than a world of " + n + " bodies holds (two a body)");
+    }
     return scene;
   }
 
@@ -268,6 +346,8 @@ var ManifoldWebWorld = (function (W) {
       this.stepMs = null;      // moving average of the physics time per step
       /** @type {Float64Array | null} */
       this.measured = null;    // the engine's measures write here (measureOut)
+      /** @type {Float64Array | null} */
+      this.anchorsOut = null;  // jointAnchors writes here
       this.capacity = 0;
       /** @type {Float64Array[]} */
       this.arrays = [];        // the engine's arrays, in the order its procedures take them …
@@ -514,11 +594,118 @@ var ManifoldWebWorld = (function (W) {
       }
     }
 
+    // Adds a parsed joint (see parseJoint); returns its index, or throws
+    // naming `path` (the joint is then not added).
+    /** @param {ManifoldWeb.ParsedJoint} j @param {string} [path] */
+    placeJoint(j, path) {
+      const E = this.engine, a = this.a;
+      path = path || "joint";
+      if (!E.addJoint) throw new Error("this engine has no joints: rebuild web/gen with `manifold build`");
+      if (this.jointCount() >= 2 * this.capacity) {
+        const most = this.maxBodies();
+        if (this.capacity >= most) throw new SceneError(path + ": " + E.jointProblems["-1"]);
+        this.allocate(Math.min(most, this.capacity * 2), true);
+      }
+      E.addJoint.apply(null, this.args([E.jointKinds.indexOf(j.type), j.a, j.b,
+        j.anchorA[0], j.anchorA[1], j.anchorA[2], j.anchorB[0], j.anchorB[1], j.anchorB[2]]));
+      const i = this.meta("lastJoint");
+      const anchorKey = j.type === "distance" ? ".anchorA" : ".anchor";
+      if (i < 0) throw new SceneError(path + anchorKey + ": " + E.jointProblems[String(i)]);
+      const J = E.joint, o = E.jointStride * i;
+      /** @param {Manifold.JointField} k @param {number} x */
+      const set = function (k, x) { a.joints[o + J[k]] = x; };
+      if (j.local) JOINT_LOCAL.forEach(function (k, m) { set(k, /** @type {number[]} */ (j.local)[m]); });
+      if (j.type === "distance") {
+        const len = j.length === null ? a.joints[o + J.length] : j.length;
+        const lo = j.minLength === null ? len : j.minLength, hi = j.maxLength === null ? len : j.maxLength;
+        if (lo > len || len > hi) {
+          E.removeJoint.apply(null, this.args([i]));
+          throw new SceneError(path + (lo > len ? ".minLength: must not be more than" : ".maxLength: must not be less than") + " the length (the anchors' distance)");
+        }
+        set("length", len);
+        set("minLength", lo);
+        set("maxLength", hi);
+      }
+      set("hertz", j.hertz);
+      set("collide", j.collide ? 1 : 0);
+      set("damping", j.dampingRatio);
+      if (j.referenceAngle !== null) set("reference", j.referenceAngle);
+      if (j.limit) { set("limitOn", 1); set("lower", j.limit[0]); set("upper", j.limit[1]); }
+      if (j.motor) { set("motorOn", 1); set("motorSpeed", j.motor[0]); set("maxTorque", j.motor[1]); }
+      j.impulses.forEach(function (x, m) { set(JOINT_IMPULSES[m], x); });
+      this.version++;
+      return i;
+    }
+
+    // Adds a joint from a scene joint (JSON value) between the world's
+    // bodies; returns its index or throws.
+    /** @param {unknown} v */
+    addJoint(v) { return this.placeJoint(parseJoint(v, "joint", this.count()), "joint"); }
+
+    // Removes joint i (the last joint takes its index).
+    /** @param {number} i */
+    removeJoint(i) {
+      const n = this.jointCount();
+      if (!(Number.isInteger(i) && i >= 0 && i < n)) throw new RangeError("no joint " + i + " (there are " + n + ")");
+      this.engine.removeJoint.apply(null, this.args([i]));
+      this.version++;
+    }
+
+    jointCount() { return this.engine.addJoint ? this.meta("jointCount") : 0; }
+
+    // Every joint as a scene holds it, its anchors in its bodies'
+    // coordinates and its impulses (restored exactly by load).
+    /** @returns {Manifold.SceneJoint[]} */
+    jointsSaved() {
+      const E = this.engine, a = this.a, J = E.joint, out = [];
+      for (let i = 0; i < this.jointCount(); i++) {
+        const o = E.jointStride * i;
+        /** @param {Manifold.JointField} k */
+        const get = function (k) { return a.joints[o + J[k]]; };
+        /** @param {Manifold.JointField} k @returns {Manifold.Vec3} */
+        const v3 = function (k) { return [a.joints[o + J[k]], a.joints[o + J[k] + 1], a.joints[o + J[k] + 2]]; };
+        const type = E.jointKinds[get("kind")], b = get("b");
+        /** @type {Record<string, unknown>} */
+        const j = { type: type, a: get("a"), b: b < 0 ? "world" : b };
+        if (type === "distance") {
+          j.anchorA = v3("anchorAX");
+          j.anchorB = b < 0 ? v3("worldX") : v3("anchorBX");
+          j.length = get("length");
+          j.minLength = get("minLength");
+          j.maxLength = get("maxLength");
+        } else {
+          j.anchor = v3("anchorAX");
+          j.referenceAngle = get("reference");
+        }
+        if (type !== "revolute" && get("hertz") !== 0) j.hertz = get("hertz");
+        if (type !== "revolute" && get("damping") !== 0) j.dampingRatio = get("damping");
+        if (get("limitOn") > 0) { j.lowerAngle = get("lower"); j.upperAngle = get("upper"); }
+        if (get("motorOn") > 0) { j.motorSpeed = get("motorSpeed"); j.maxMotorTorque = get("maxTorque"); }
+        if (get("collide") > 0) j.collide = true;
+        j.local = JOINT_LOCAL.map(get);
+        j.impulses = JOINT_IMPULSES.map(get);
+        out.push(/** @type {Manifold.SceneJoint} */ (/** @type {unknown} */ (j)));
+      }
+      return out;
+    }
+
+    // Where every joint's two anchors are now: [ax, ay, az, bx, by, bz] a
+    // joint (body b's at the image nearest body a's), for drawing.
+    /** @returns {Float64Array} */
+    jointAnchors() {
+      const n = this.jointCount();
+      if (!this.anchorsOut || this.anchorsOut.length < 6 * n) this.anchorsOut = new Float64Array(6 * Math.max(16, n));
+      if (n) this.engine.jointAnchors.apply(null, /** @type {(Float64Array | number)[]} */ (this.arrays).concat([this.anchorsOut]));
+      return this.anchorsOut;
+    }
+
     // The world as a scene (JSON value).
     /** @returns {Manifold.SavedScene} */
     scene() {
       const scene = withParams({ space: this.name }, this.param.bind(this));
       scene.bodies = this.bodies();
+      const joints = this.jointsSaved();
+      if (joints.length) scene.joints = joints;
       // (the scene keys are the generated ones, Manifold.sceneKeys)
       return /** @type {Manifold.SavedScene} */ (/** @type {unknown} */ (scene));
     }
@@ -553,6 +740,7 @@ var ManifoldWebWorld = (function (W) {
             " bodies remember (" + this.engine.contactsPerBody + " a body)");
         }
         this.restoreImpulses(remembered);
+        (scene.joints || []).forEach(/** @this {World} */ function (j, k) { this.placeJoint(j, "$.joints[" + k + "]"); }, this);
       } catch (e) {
         this.arrays = saved.arrays;
         this.capacity = saved.capacity;
@@ -690,6 +878,7 @@ var ManifoldWebWorld = (function (W) {
     counters() {
       return {
         bodies: this.count(),
+        joints: this.jointCount(),
         contacts: this.meta("contactCount"),
         warnings: this.meta("warnings"),
         droppedContacts: this.meta("droppedContacts"),
@@ -742,6 +931,7 @@ var ManifoldWebWorld = (function (W) {
     SceneError: SceneError,
     parseScene: parseScene,
     parseBody: parseBody,
+    parseJoint: parseJoint,
     keyProblem: keyProblem,
     PALETTE: PALETTE,
     STATIC_COLOUR: STATIC_COLOUR,

@@ -9,7 +9,7 @@ module Manifold.Stage.EngineScript
   , sceneKeysArray
   ) where
 
-import Data.Char (toLower)
+import Data.Char (isAsciiUpper, toLower)
 import Data.Foldable (toList)
 import Data.List (dropWhileEnd, intercalate)
 
@@ -23,6 +23,7 @@ import Manifold.Stage.Imp (Procedure (..), stageFunctions)
 import Manifold.Stage.Expr (sym)
 import Manifold.Stage.Print (FnType (..), Target (..), printFunction, printProcedure)
 import Manifold.GeodesicPath (PathSlot (..), pathStride)
+import Manifold.Joint (jointProblem)
 import Manifold.Measures (MeasureSlot (..), measureSize)
 import Manifold.Population (frameMisfit)
 import Manifold.StateHash (HashedPart (..), hashedParts)
@@ -79,6 +80,11 @@ engineObject l subroutines =
     , "  // where step k (1 .. steps) along direction d sits among a body's vertices (0 is the centre)"
     , "  vertexIndex: " ++ dropWhileEnd (== '\n') (printFunction JavaScript "vertexIndex" (FnType ["d", "k"] False) [vertexIndex (polygon l) (sym "d") (sym "k")]) ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","
+    , "  // a joint's fields (Manifold.Joint): kind (" ++ intercalate ", " [show (fromEnum k) ++ " " ++ jsName k | k <- [minBound .. maxBound :: JointKind]] ++ "), bodies (b -1: the world), anchors, settings, impulses"
+    , "  joint: { " ++ intercalate ", " [jointName k ++ ": " ++ show (fromEnum k) | k <- [minBound .. maxBound :: JointField]] ++ " }, jointStride: " ++ show jointStride ++ ", jointKinds: [" ++ intercalate ", " [show (jsName k) | k <- [minBound .. maxBound :: JointKind]] ++ "],"
+    , "  // why addJoint refused a joint, by meta.lastJoint (-1, -2, -3)"
+    , "  jointProblems: { " ++ intercalate ", " [show (show c) ++ ": " ++ show (jointProblem c) | c <- [-1, -2, -3]] ++ " },"
+    , "  addJoint: addJoint, removeJoint: removeJoint, jointAnchors: jointAnchors,"
     , "  // the state's hash (Manifold.StateHash): FNV-1a over [array, the meta counting its rows, numbers a row]"
     , "  hashed: [" ++ intercalate ", " [ "[" ++ show (hashedArray part arrayNames) ++ ", " ++ show (jsName (hashedRows part)) ++ ", " ++ show (hashedStride part) ++ "]" | part <- hashedParts ] ++ "],"
     , "  frameMisfit: " ++ show frameMisfit ++ ","
@@ -117,6 +123,13 @@ sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
       , ("default", let x = paramValue defaultParams (keyParam k) in case keyRange k of
             Switch -> if x > 0 then "true" else "false"
             _ -> show x) ]
+
+-- | A joint field's name as the page's key, without its @J@:
+-- @JRadiusA@ → @radiusA@, @JA@ → @a@, @R@-less fields as 'jsName'.
+jointName :: JointField -> String
+jointName k = case show k of
+  'J' : c : cs | isAsciiUpper c -> toLower c : cs
+  _ -> jsName k
 
 -- | A constructor's name as the page's key: @GravityOn@ → @gravityOn@.
 jsName :: Show a => a -> String
