@@ -5,7 +5,10 @@
 -- stand, the trumpet's bodies jam in its neck and stay there, on the
 -- projective plane a body meets the antipodal image of another (never the
 -- body itself) and sets it moving, the Klein bottle's bodies go round at
--- a constant speed (free motion: nothing touches them).
+-- a constant speed (free motion: nothing touches them); the joint presets
+-- keep their joints together as they move (every anchor gap within 1 %
+-- of the joined bodies' size after 10 s), and the sphere's chain swings
+-- down.
 module PresetSpec (spec) where
 
 import Control.Monad (forM, replicateM_)
@@ -20,6 +23,7 @@ import Test.Hspec
 import Manifold.Engine
 import Manifold.Presets
 import Manifold.Scene (loadScene, parseScene)
+import PhysicsUtil (bodySize)
 
 -- | The preset's world after each of some runs of steps: the bodies'
 -- states, and the warnings so far.
@@ -61,6 +65,22 @@ spec = describe "Manifold.Presets" $ do
     presets <- readPresets "scenes" >>= either fail pure
     warned <- forM presets $ \p -> (,) (presetName p) . snd . last <$> runPreset (presetName p) [300]
     filter ((/= 0) . snd) warned `shouldBe` []
+
+  it "the joint presets hold together: after 10 s every anchor gap within 1 % of a link (2 × the body size); the sphere's chain hangs down" $ do
+    let presets = ["sphere-chain", "torus-chain", "plane-pendulum-clock", "funnel-rope-bridge", "moebius-chain"]
+    gaps <- forM presets $ \name -> do
+      text <- BLC.readFile ("scenes/" ++ name ++ ".json")
+      scene <- either fail pure (parseScene text)
+      w <- loadScene 0 scene >>= either fail pure
+      replicateM_ 1000 (stepNative w)
+      anchors <- jointAnchorPoints w
+      kinds <- mapM (\j -> jointField w j JKind) [0 .. length anchors - 1]
+      sizes <- mapM (\j -> jointField w j JA >>= bodySize w . round) [0 .. length anchors - 1]
+      let pinGaps = [ distance a b / (2 * s) | ((a, b), k, s) <- zip3 anchors kinds sizes, k /= fromIntegral (fromEnum Distance) ]
+      endY <- if name == "sphere-chain" then (\b -> let V3 _ y _ = bsPos b in y) <$> readBody w 24 else pure (-1)
+      pure (name, maximum (0 : pinGaps), endY)
+    [ (name, g) | (name, g, _) <- gaps, g > 0.01 ] `shouldBe` []
+    [ y | ("sphere-chain", _, y) <- gaps ] `shouldSatisfy` all (< 0)
 
   it "the rectangle's pyramid of 36 boxes stands: in 10 s no box moves a quarter of its half side (0.11)" $ do
     [(a, _), (b, _)] <- runPreset "rectangle-pyramid" [0, 1000]

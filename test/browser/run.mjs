@@ -12,7 +12,8 @@
 // bodies (bodies.mjs), controls (the engine parameters' controls, made
 // from the generated scene keys, and worlds of the engine's most bodies:
 // controls.mjs), keys (the keys and the help overlay: keys.mjs), tools (the
-// geodesic tool, throws, the new body's controls, trails: tools.mjs), capture
+// geodesic tool, throws, the new body's controls, trails: tools.mjs), joints
+// (the joint presets, drawing, the joint tool: joints.mjs), capture
 // (Save image and Record / Stop, their downloads: capture.mjs), errors
 // (the error paths), file (file://), hidpi (HiDPI and touch), compare
 // (compare.mjs), types (web/manifold.d.ts against the page and web/gen:
@@ -29,6 +30,7 @@ import { testPerformance } from "./performance.mjs";
 import { testControls } from "./controls.mjs";
 import { testKeys } from "./keys.mjs";
 import { testTools } from "./tools.mjs";
+import { testJoints } from "./joints.mjs";
 import { testCapture } from "./capture.mjs";
 import { testCompare } from "./compare.mjs";
 import { testBenchScripts } from "./benchscripts.mjs";
@@ -45,7 +47,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "tools", "capture", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "tools", "joints", "capture", "errors", "file", "hidpi", "compare", "types", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -662,6 +664,7 @@ async function main() {
     if (partWanted("controls")) await testControls(check, context, server.url);
     if (partWanted("keys")) await testKeys(check, context, server.url);
     if (partWanted("tools")) await testTools(check, context, server.url);
+    if (partWanted("joints")) await testJoints(check, context, server.url);
     if (partWanted("capture")) await testCapture(check, context, server.url);
     if (partWanted("errors")) await testErrors(context, server.url);
     if (partWanted("file")) {

@@ -97,7 +97,8 @@ var ManifoldWebInput = (function (W) {
       // (not in the comparison view, whose panes drag bodies only); off the surface the view orbits
       if (pointers.size === 0 && e.button === 0 && !e.shiftKey) {
         const px = pixelOf(e);
-        if (grabAt(px[0], px[1])) {
+        // (the joint tool presses on bodies: it joins them)
+        if (MW.tools.tool() !== "joint" && grabAt(px[0], px[1])) {
           capture(e);
           grabPointer = e.pointerId;
           canvas.classList.add("holding");
@@ -159,7 +160,7 @@ var ManifoldWebInput = (function (W) {
       if (toolPointer && e.pointerId === toolPointer.id) {
         toolPointer = null;
         if (e.type !== "pointerup") MW.tools.cancel();
-        else MW.page.guarded(MW.tools.release)();
+        else MW.page.guarded(function () { return MW.tools.release(e.ctrlKey); })();
         return;
       }
       if (!pointers.delete(e.pointerId)) return;

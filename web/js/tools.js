@@ -8,16 +8,20 @@
 // point in the drag's direction for a chosen length (the engine's generated
 // walk, Manifold.GeodesicPath). Trails: every body's path over the last
 // seconds, fading. Also the new body's template (shape, size, density,
-// static) that the Add button and throws use.
+// static) that the Add button and throws use. The tool "joint" joins the
+// body pressed on to the body released on with a pin at the release point
+// (Ctrl held at the release: a distance joint from the press point to the
+// release point), or, released on empty surface, to the world there; a
+// line shows the joint being made.
 /* exported ManifoldWebTools */
 var ManifoldWebTools = (function (W) {
   "use strict";
   const MW = W.ManifoldWeb;
   const P = MW.page, state = P.state;
 
-  /** @typedef {"grab" | "geodesic"} Tool */
+  /** @typedef {"grab" | "geodesic" | "joint"} Tool */
   /** @type {Tool[]} */
-  const TOOLS = ["grab", "geodesic"];
+  const TOOLS = ["grab", "geodesic", "joint"];
   // the geodesic tool's curve: its steps, and the length it starts with (a great circle of the unit sphere)
   const GEODESIC_STEPS = 512;
   const GEODESIC_LENGTH = 2 * Math.PI;
@@ -31,9 +35,9 @@ var ManifoldWebTools = (function (W) {
   const TRAIL = { every: 0.05, seconds: 3, bodies: 2000, gap: 0.5 };
   const TRAIL_CAPACITY = Math.round(TRAIL.seconds / TRAIL.every) + 1;
   // curve widths in CSS pixels, and colours
-  const WIDTH = { geodesic: 3, preview: 3, trail: 2 };
+  const WIDTH = { geodesic: 3, preview: 3, trail: 2, joint: 2 };
   /** @type {Record<string, Manifold.Rgb>} */
-  const COLOUR = { geodesic: [1.0, 0.85, 0.25], preview: [0.55, 0.9, 1.0] };
+  const COLOUR = { geodesic: [1.0, 0.85, 0.25], preview: [0.55, 0.9, 1.0], joint: [0.95, 0.95, 0.9] };
 
   /**
    * The body the Add button and throws make: size null is the space's own
@@ -58,7 +62,7 @@ var ManifoldWebTools = (function (W) {
     preview: null,
     /**
      * the press being dragged on the surface
-     * @type {{ tool: Tool, from: Manifold.Vec3, at: [number, number], moved: boolean, to: Manifold.Vec3 | null } | null}
+     * @type {{ tool: Tool, from: Manifold.Vec3, at: [number, number], moved: boolean, to: Manifold.Vec3 | null, body: number } | null}
      */
     gesture: null,
     trailsOn: false,
@@ -244,7 +248,12 @@ var ManifoldWebTools = (function (W) {
   // A press on empty surface point q at CSS pixel `at`.
   /** @param {Manifold.Vec3} q @param {[number, number]} at */
   function press(q, at) {
-    tools.gesture = { tool: tools.tool, from: q, at: at, moved: false, to: null };
+    const picked = tools.tool === "joint" && state.world ? state.world.pick(q) : null;
+    if (tools.tool === "joint" && !picked) {
+      state.ui.showNotice("Press on a body to join it (to another body, or to the surface).");
+      return;
+    }
+    tools.gesture = { tool: tools.tool, from: q, at: at, moved: false, to: null, body: picked ? picked.index : -1 };
     if (tools.tool === "geodesic") clearGeodesic();
   }
 
@@ -258,23 +267,53 @@ var ManifoldWebTools = (function (W) {
     if (!q) return;
     g.to = q;
     if (g.tool === "geodesic") showGeodesic(g.from, minus(q, g.from));
-    else {
+    else if (g.tool === "joint") {
+      tools.preview = { points: Float64Array.from(g.from.concat(q)), breaks: new Uint8Array(2), count: 2 };
+      changed();
+    } else {
       tools.preview = throwPreview(g.from, throwVelocity(g.from, q));
       changed();
     }
   }
 
   // The press ends: a throw launches (a click adds the body at rest); the
-  // geodesic stays drawn. Returns the index of a body added, else -1.
-  function release() {
+  // geodesic stays drawn; a joint is made (a distance joint with `distance`).
+  // Returns the index of a body (or joint) added, else -1.
+  /** @param {boolean} [distance] */
+  function release(distance) {
     const g = tools.gesture;
     tools.gesture = null;
     if (!g) return -1;
     tools.preview = null;
     changed();
+    if (g.tool === "joint") return join(g.body, g.from, g.moved && g.to ? g.to : g.from, !!distance);
     if (g.tool !== "grab") return -1;
     const v = g.moved && g.to ? throwVelocity(g.from, g.to) : [0, 0, 0];
     return launch(g.from, /** @type {Manifold.Vec3} */ (v));
+  }
+
+  // Joins body a (pressed at p) to the body under q, or to the world at q: a
+  // pin at q, or a distance joint from p to q; returns the joint's index,
+  // or -1 (and a notice).
+  /** @param {number} a @param {Manifold.Vec3} p @param {Manifold.Vec3} q @param {boolean} distance */
+  function join(a, p, q, distance) {
+    const w = P.requireWorld();
+    const hit = w.pick(q);
+    const b = hit ? hit.index : -1;
+    if (b === a) {
+      state.ui.showNotice("Release on another body, or on the surface, to join this one to it.");
+      return -1;
+    }
+    /** @type {Manifold.SceneJoint} */
+    const spec = distance
+      ? { type: "distance", a: a, b: b < 0 ? "world" : b, anchorA: p, anchorB: q }
+      : { type: "revolute", a: a, b: b < 0 ? "world" : b, anchor: q };
+    try {
+      return w.addJoint(spec);
+    } catch (e) {
+      state.ui.showNotice("No joint: " + e.message);
+      return -1;
+    }
   }
 
   // The press is dropped (a second finger came): nothing is added.
@@ -375,6 +414,23 @@ var ManifoldWebTools = (function (W) {
     }
   }
 
+  // Every joint as segments: a pin from each body's centre to the pin (a
+  // chain shows as the line through its links), a distance joint from
+  // anchor to anchor (body b's at its image nearest body a's anchor).
+  /** @param {ManifoldWeb.CurveRenderer} r @param {ManifoldWeb.World} w */
+  function addJoints(r, w) {
+    const E = w.engine, J = E.joint, joints = w.a.joints, pos = w.a.pos, xyz = w.jointAnchors();
+    for (let j = 0; j < w.jointCount(); j++) {
+      const o = E.jointStride * j, a = joints[o + J.a], b = joints[o + J.b];
+      if (E.jointKinds[joints[o + J.kind]] === "distance") {
+        r.segment(xyz, 6 * j, xyz, 6 * j + 3, COLOUR.joint, 1, 1);
+      } else {
+        r.segment(pos, 3 * a, xyz, 6 * j, COLOUR.joint, 1, 1);
+        if (b >= 0) r.segment(xyz, 6 * j + 3, pos, 3 * b, COLOUR.joint, 1, 1);
+      }
+    }
+  }
+
   /** @param {ManifoldWeb.OverlayFrame} frame */
   function draw(frame) {
     const r = state.curveRenderer, w = state.world;
@@ -385,6 +441,11 @@ var ManifoldWebTools = (function (W) {
       const xyz = tools.trail.data;
       eachTrailSegment(function (i, a, b, fa, fb) { r.segment(xyz, a, xyz, b, w.info[i].colour, fa, fb); });
       r.draw(frame, images, WIDTH.trail);
+    }
+    if (w && w.jointCount()) {
+      r.begin();
+      addJoints(r, w);
+      r.draw(frame, images, WIDTH.joint);
     }
     r.begin();
     if (tools.geodesic) addCurve(r, tools.geodesic, COLOUR.geodesic);
@@ -438,6 +499,7 @@ var ManifoldWebTools = (function (W) {
     setNewBody: setNewBody,
     spaceChanged: spaceChanged,
     setTool: setTool,
+    tool: function () { return tools.tool; },
     setGeodesicLength: setGeodesicLength,
     showGeodesic: showGeodesic,
     clearGeodesic: clearGeodesic,

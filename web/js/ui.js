@@ -290,6 +290,7 @@ var ManifoldWebUi = (function (W) {
       ["r", function () { handlers.onReset(); }],
       ["c", function () { handlers.onClear(); }],
       ["g", function () { handlers.onTool(toolSelect.value === "geodesic" ? "grab" : "geodesic"); }],
+      ["j", function () { handlers.onTool(toolSelect.value === "joint" ? "grab" : "joint"); }],
       ["t", function () { handlers.onTrails(!trailsBox.checked); }],
       ["p", function () { handlers.onPlot(!plotBox.checked); }],
       ["?", function () { keysHelp.showModal(); }],
