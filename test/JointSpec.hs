@@ -143,6 +143,31 @@ spec = do
       swung `shouldSatisfy` (> 0.29) -- it reached the limit
       swung `shouldSatisfy` (< 0.3 + 0.5 * pi / 180)
 
+  describe "weld joint" $
+    it "carries a welded pair once round the sphere's equator without drift: the relative angle within 0.5°, the pin together, back where it began" $ do
+      -- no gravity: the pair moves as one body along the great circle (a
+      -- geodesic, whose holonomy keeps every direction's angle to it)
+      let at a = V3 (cos a) 0 (sin a)
+          along a = V3 (negate (sin a)) 0 (cos a)
+      w <- mkWorld sphere defaultParams { pGravity = False }
+             [dyn circle 0.05 (at 0) (along 0) 0 0, dyn square 0.05 (at 0.1) (along 0.1) 0 0]
+      j <- joined w Weld 0 1 (at 0.05) (at 0.05)
+      worst <- newIORef 0
+      worstGap' <- newIORef 0
+      half <- newIORef (V3 0 0 0)
+      forM_ [1 .. 628 :: Int] $ \k -> do
+        stepNative w
+        if k == 314 then readBody w 0 >>= writeIORef half . bsPos else pure ()
+        e <- jointField w j JAngleError
+        modifyIORef' worst (max (abs e))
+        worstGap w >>= modifyIORef' worstGap' . max
+      readIORef worst >>= (`shouldSatisfy` (< 0.5 * pi / 180))
+      readIORef worstGap' >>= (`shouldSatisfy` (< 1e-3))
+      a <- readBody w 0
+      -- half way round at the antipode, and back
+      readIORef half >>= (`shouldSatisfy` (< 0.05)) . distance (at pi)
+      distance (bsPos a) (at 0) `shouldSatisfy` (< 0.02)
+
   describe "distance joint" $ do
     it "as a spring oscillates at its frequency (within 2 %)" $ do
       let hz = 2

@@ -323,6 +323,57 @@ genScene sp = do
   n <- choose (2, 6)
   vectorOf n (genBody sp)
 
+-- | A random joint of a scene of @n@ bodies: its kind, bodies (b −1: the
+-- world), where its anchors sit between the two bodies' centres (0: at
+-- a's, 1: at b's), and settings: a limit, a motor, a spring, a rope.
+data RandomJoint = RandomJoint JointKind Int Int Double Double [(JointField, Double)]
+
+genJoints :: Int -> Gen [RandomJoint]
+genJoints n = do
+  k <- choose (0, 3)
+  vectorOf k $ do
+    kind <- elements [Revolute, Distance, Weld]
+    a <- choose (0, n - 1)
+    b <- elements (-1 : [j | j <- [0 .. n - 1], j /= a])
+    ta <- choose (0, 0.5)
+    tb <- choose (0.5, 1)
+    settings <- case kind of
+      Revolute -> do
+        lim <- choose (0, 1.5)
+        speed <- choose (-5, 5)
+        torque <- choose (0, 0.05)
+        elements [[], [(JLimitOn, 1), (JLower, negate lim), (JUpper, lim)], [(JMotorOn, 1), (JMotorSpeed, speed), (JMaxTorque, torque)]]
+      Distance -> do
+        hz <- choose (0.5, 10)
+        elements [[], [(JHertz, hz), (JDamping, 0.2)], [(JMinLength, 0)]]
+      Weld -> do
+        hz <- choose (0.5, 10)
+        elements [[], [(JHertz, hz), (JDamping, 1)]]
+    pure (RandomJoint kind a b ta tb settings)
+
+-- | Add the random joints that the world takes, between bodies within
+-- twice their sizes' sum (an anchor that does not project is refused, and
+-- left out); how many it took.
+addRandomJoints :: NativeWorld -> [RandomJoint] -> IO Int
+addRandomJoints w js = do
+  added <- forM js $ \(RandomJoint kind a b ta tb settings) -> do
+    pa <- bsPos <$> readBody w a
+    pb <- if b < 0 then pure (pa + V3 0.05 0.05 0.05) else bsPos <$> readBody w b
+    reach <- (\sa sb -> 2 * (sa + sb)) <$> bodySize w a <*> (if b < 0 then pure 0.05 else bodySize w b)
+    let between t = pa + fmap (* t) (pb - pa)
+        (qa, qb) = if kind == Distance then (between ta, between tb) else (between 0.5, between 0.5)
+    -- joints between bodies near each other, as one makes them (a pin
+    -- midway between bodies far apart on the trumpet makes a long rigid
+    -- lever: see docs/engine.md#joints)
+    if norm (pb - pa) > reach then pure 0 else do
+      r <- addJointAt w kind a b qa qb
+      case r of
+        Left _ -> pure 0
+        Right j -> do
+          mapM_ (uncurry (setJointField w j)) settings
+          pure (1 :: Int)
+  pure (sum added)
+
 -- | Scenes per space and steps per scene: MANIFOLD_ROBUSTNESS="NxK", or the
 -- full set: 100 scenes of 2000 steps.
 robustnessCounts :: IO (Int, Int)
@@ -669,7 +720,7 @@ spec = do
         uncurry shouldBe (dContacts d)
 
   describe "robustness" $
-    it "random scenes on every space (2-6 bodies, sizes 0.05-0.3, speeds up to 2, gravity): finite, on the surface, no body lost" $ do
+    it "random scenes on every space (2-6 bodies, sizes 0.05-0.3, speeds up to 2, gravity, 0-3 random joints): finite, on the surface, no body or joint lost" $ do
       (nScenes, nSteps) <- robustnessCounts
       labelled "robustness" (show nScenes ++ " scenes x " ++ show nSteps ++ " steps per space (MANIFOLD_ROBUSTNESS=NxK), the spaces shared among the cores")
       t0 <- getMonotonicTime
@@ -678,33 +729,36 @@ spec = do
             results <- forM [1 .. nScenes] $ \seed -> do
               let bodies = unGen (genScene sp) (mkQCGen (seed + 1000 * length (spaceName sp))) 30
               w <- mkWorld sp defaultParams bodies
+              _ <- addRandomJoints w (unGen (genJoints (length bodies)) (mkQCGen (seed + 7 + 1000 * length (spaceName sp))) 30)
               n0 <- bodyCount w
+              j0 <- jointCount w
               worstField <- newIORef (0 :: Double)
               okRef <- newIORef True
               let check = do
                     fin <- allFinite w
                     n <- bodyCount w
+                    nj <- jointCount w
                     bs <- bodyStates w
                     let f = maximum (0 : [abs (evalField sp (bsPos b)) | b <- bs])
                     modifyIORef' worstField (max f)
-                    unless (fin && n == n0) $ writeIORef okRef False
+                    unless (fin && n == n0 && nj == j0) $ writeIORef okRef False
               forM_ [1 .. nSteps] $ \k -> do
                 stepNative w
                 when (k `mod` 50 == 0 || k == nSteps) check
               ok <- readIORef okRef
               f <- readIORef worstField
               warnings <- warningCount w
-              pure (seed, ok, f, warnings)
+              pure ((seed, ok, f, warnings), j0)
             s1 <- getMonotonicTime
-            pure (sp, s1 - s0, results)
+            pure (sp, s1 - s0, map fst results, sum (map snd results))
       perSpace <- inParallel (map runSpace catalogue)
       t1 <- getMonotonicTime
-      summary <- forM perSpace $ \(sp, secs, results) -> do
+      summary <- forM perSpace $ \(sp, secs, results, joints) -> do
         let worst = maximum [f | (_, _, f, _) <- results]
             bad = [seed | (seed, ok, _, _) <- results, not ok]
             warned = [(seed, k) | (seed, _, _, k) <- results, k > 0]
-        putStrLn (printf "    robustness %-17s %6.1f s (%.2f ms/step), max |field| %.1e, warnings %d (scenes with warnings: %s)" (spaceName sp) secs
-                    (1000 * secs / fromIntegral (nScenes * nSteps)) worst (sum (map snd warned)) (show (map fst warned)))
+        putStrLn (printf "    robustness %-17s %6.1f s (%.2f ms/step), %d joints, max |field| %.1e, warnings %d (scenes with warnings: %s)" (spaceName sp) secs
+                    (1000 * secs / fromIntegral (nScenes * nSteps)) joints worst (sum (map snd warned)) (show (map fst warned)))
         pure (spaceName sp, bad, worst < 1e-6)
       labelled "robustness: total time" (printf "%.1f s" (t1 - t0))
       forM_ summary $ \(name, bad, onSurface) -> do

@@ -54,7 +54,7 @@ import Manifold.Field
 import Manifold.Soft
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.Surface (geodesicStep, projectToSurface, referenceAxis, safeNormalize, tangentProjection)
+import Manifold.Surface (geodesicStep, projectToSurface, referenceAxis, tangentProjection)
 import Manifold.World
 
 -- | Where a body's anchor at polar coordinates @(r, θ)@ is now: the

@@ -66,6 +66,7 @@ export async function testBenchScripts(check) {
       ["bench/cells.mjs", "--steps", "1"],
       ["bench/profile.mjs", path.join(scenes, "torus-30.json"), "--setps", "5"],
       ["bench/latency.mjs", "--scenes", scenes, "--move", "5"],
+      ["bench/joint-grid.mjs", "--sise", "5"],
     ];
     const outcomes = badLines.map(refused);
     const readmeAfter = fs.readFileSync(readme, "utf8");
