@@ -442,6 +442,7 @@ declare namespace Manifold {
     contactHertz: number | null;
     dampingRatio: number | null;
     pushout: number | null;
+    jointHertz: number | null;
   }
   /**
    * What setSimulation takes: any subset. An engine parameter takes what its
@@ -465,6 +466,8 @@ declare namespace Manifold {
     dampingRatio?: number;
     /** above 0 */
     pushout?: number;
+    /** above 0 */
+    jointHertz?: number;
   }
   type Pane = "torus-embedded" | "torus-flat" | "square-embedded" | "square-flat";
   interface ComparisonState {
