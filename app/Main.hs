@@ -12,7 +12,7 @@ import Control.Monad (forM, forM_, unless, when)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
 import Data.List (intercalate, isInfixOf, minimumBy, transpose)
-import Data.Maybe (isJust)
+import Data.Maybe (isJust, isNothing)
 import Data.Ord (comparing)
 import Data.String (fromString)
 import Linear.Metric (norm)
@@ -224,7 +224,7 @@ simulate path steps every save hash = do
         bodies <- mapM (readBody w) [0 .. n - 1]
         pure (A.object [ "step" A..= k, "bodies" A..= map bodyJson bodies ])
       bodyJson b = A.object [ "p" A..= v3List (bsPos b), "v" A..= v3List (bsVel b)
-                            , "angle" A..= bsAngle b, "omega" A..= bsOmega b ]
+                            , "angle" A..= bsAngle b, "omega" A..= bsOmega b, "awake" A..= isNothing (bsAsleep b) ]
       run k acc
         | k > steps = pure (reverse acc)
         | otherwise = do

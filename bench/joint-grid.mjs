@@ -1,7 +1,7 @@
 // Box2D's joint_grid in the page's engine under node: an N × N grid of
 // circles on the plane, each joined by revolute joints to its right and
 // lower neighbours (pins midway between them), the top row static, hanging
-// under gravity, every body awake; and, in the same run, the rectangle's
+// under gravity, every body awake (sleeping off); and, in the same run, the rectangle's
 // pyramid of R rows of boxes, so that the grid's time per body-step is
 // reported beside the pyramid's. The scale is Box2D's (circles of radius
 // 0.4 m one metre apart, boxes of half-side 0.5 m, 60 Hz, g = 10) made
@@ -46,7 +46,7 @@ function gridScene(n) {
       if (k + 1 < n) joints.push({ type: "revolute", a: index(i, k), b: index(i, k + 1), anchor: [p[0], 0, p[2] - HALF] });
     }
   }
-  return { space: "plane", dt: DT, bodies: bodies, joints: joints };
+  return { space: "plane", dt: DT, sleep: false, bodies: bodies, joints: joints };
 }
 
 function pyramidScene(rows) {
@@ -56,7 +56,7 @@ function pyramidScene(rows) {
       bodies.push({ shape: "square", size: h * Math.SQRT2, p: [(i - (rows - r - 1) / 2) * 2 * h, 0, -1 + h + 2 * h * r] });
     }
   }
-  return { space: "rectangle", dt: DT, friction: 0.6, bodies: bodies };
+  return { space: "rectangle", dt: DT, friction: 0.6, sleep: false, bodies: bodies };
 }
 
 function time(w) {

@@ -218,7 +218,7 @@ function report() {
 
   // phases
   const phaseNames = [...new Set(native.concat(browser).flatMap((r) => Object.keys(r.phaseMedianMs || {})))];
-  const canon = ["collide", "prepare", "substeps", "finish", "polygonise"];
+  const canon = ["wake", "collide", "prepare", "substeps", "finish", "polygonise", "sleep"];
   const rank = (p) => (canon.indexOf(p) < 0 ? 99 : canon.indexOf(p));
   phaseNames.sort((a, b) => rank(a) - rank(b));
   if (phaseNames.length) {

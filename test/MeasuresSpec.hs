@@ -103,6 +103,8 @@ spec = describe "Manifold.Measures" $ do
       [ BodyInit square 0.3 1 True (V3 0 0 (-0.5)) (V3 0 0 0) 0 0
       , BodyInit square 0.15 1 False (V3 0 0 (-0.5 + 0.3 / sqrt 2 + 0.15 / sqrt 2 + 0.005)) (V3 0 0 0) 0 0
       , circleAt 0.15 (V3 2 0 2) (V3 0 0 0) 0 ]
+    -- (awake: a sleeping box has no contact rows)
+    setParams w defaultParams { pSleep = False }
     replicateM_ 60 (stepNative w)
     rows <- contactCount w
     counts <- forM [0, 1, 2] (fmap (at BodyContacts) . bodyMeasures w)

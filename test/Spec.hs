@@ -19,6 +19,7 @@ import qualified PresetSpec
 import qualified ReadmeExampleSpec
 import qualified SolverSpec
 import qualified JointSpec
+import qualified SleepSpec
 import qualified StageSpec
 import qualified SurfaceSpec
 
@@ -40,6 +41,7 @@ main = do
     describe "Physics" PhysicsSpec.spec
     describe "Solver" SolverSpec.spec
     describe "Joint" JointSpec.spec
+    describe "Sleep" SleepSpec.spec
     FlatSpec.spec
     GoldenSpec.spec
     ReadmeExampleSpec.spec

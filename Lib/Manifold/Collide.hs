@@ -646,11 +646,23 @@ selfContacts sp l w i = do
     selfKey = fromIntegral (fromEnum SelfKey) * fromIntegral keysPerGroup
 
 -- | Every contact of this step, owned by the lower-numbered body of each
--- pair, in body order (warm starting relies on the order).
+-- pair of moving bodies, by the moving one of a pair with a still (static
+-- or sleeping) body, in body order (warm starting relies on the order).
+-- Where no body is awake there is nothing to find.
 collide :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE collide :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 collide sp l w = do
   writeMeta w ContactCount 0
+  awake <- readMeta w AwakeCount
+  whenPositive awake (collideAwake sp l w)
+
+-- | 'collide' where some body is awake: each awake movable body finds its
+-- contacts with the bodies after it that move and with every body that
+-- does not (static or sleeping), so that every pair with a moving body is
+-- found once and no pair of two still bodies is.
+collideAwake :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE collideAwake :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
+collideAwake sp l w = do
   buildGrid sp w
   count <- readMeta w BodyCount
   joints <- readMeta w JointCount
@@ -662,7 +674,7 @@ collide sp l w = do
       nearDomain = case domainDistance (spaceQuotient sp) of
         Just distance -> \q reach -> whenPositive (reach - distance q)
         Nothing -> \_ _ act -> act
-  forEach (toIndex count) $ \i -> do
+  forEach (toIndex count) $ \i -> moving w i >>= \movingI -> whenPositive movingI $ do
     p <- read3 (wPos w) i
     ri <- readSlot w i BoundRadius
     invMi <- readSlot w i InvMass
@@ -678,8 +690,9 @@ collide sp l w = do
           writeRef found 0
           nearDomain gp (ri + cell) $ neighbours w gp $ \j -> do
             -- each unordered pair once: j > i (j >= i for an image the body
-            -- may meet itself through: its own image)
-            let order = toScalar j - toScalar i + (if self then 0.5 else 0)
+            -- may meet itself through: its own image), or j still
+            movingJ <- moving w j
+            let order = select movingJ (toScalar j - toScalar i + (if self then 0.5 else 0)) 1
             whenPositive order $ do
               pj <- read3 (wPos w) j
               rj <- readSlot w j BoundRadius

@@ -30,6 +30,9 @@ module Manifold.Engine
   , defaultParams
   , setParams
   , contactCount
+  , awakeCount
+  , islandCount
+  , setSleepingAt
   , bodyCount
   , warningCount
   , readBody
@@ -52,6 +55,7 @@ import Manifold.Stage.Imp
 import Manifold.Grab
 import Manifold.Joint (addJoint, jointAnchors, jointProblem, removeJoint)
 import Manifold.Population
+import Manifold.Sleep (countIslands, setSleeping)
 import Manifold.Step (step, stepPhases)
 import Manifold.World
 import Data.Maybe (isJust, listToMaybe)
@@ -112,6 +116,19 @@ bodyCount, warningCount, contactCount :: NativeWorld -> IO Int
 bodyCount = metaValue BodyCount
 warningCount = metaValue Warnings
 contactCount = metaValue ContactCount
+
+-- | The movable bodies awake ("Manifold.Sleep").
+awakeCount :: NativeWorld -> IO Int
+awakeCount w = runNative (countIslands (nwArrays w)) >> metaValue AwakeCount w
+
+-- | The islands of movable bodies, awake and asleep, counted now.
+islandCount :: NativeWorld -> IO Int
+islandCount w = runNative (countIslands (nwArrays w)) >> metaValue IslandCount w
+
+-- | Body @i@'s sleep timer, and asleep in the island named by a body's
+-- index or awake (what a saved scene restores; a static body stays awake).
+setSleepingAt :: NativeWorld -> Int -> Maybe Int -> Double -> IO ()
+setSleepingAt w i label timer = runNative (setSleeping (nwArrays w) (fromIntegral i) (maybe (-1) fromIntegral label) timer)
 
 -- | Add a body: its centre is projected onto the surface, its velocity onto
 -- the tangent plane; its axis is the tangent direction nearest to x (or z).
@@ -250,6 +267,8 @@ data BodyState = BodyState
   , bsOmega :: Double -- ^ angular velocity about the normal
   , bsAxis :: V3 Double -- ^ the tangent axis the body carries along
   , bsNormal :: V3 Double -- ^ the surface's unit normal at the centre, as the step keeps it
+  , bsAsleep :: Maybe Int -- ^ the island it sleeps in (named by one of its bodies' index), or awake
+  , bsSleepTimer :: Double -- ^ how long it has moved slower than the sleep threshold (s)
   } deriving Show
 
 -- | The hash of the world's state ("Manifold.StateHash"): what
@@ -271,7 +290,10 @@ readBody w i = do
       r3 arr = V3 <$> MV.read arr (3 * i) <*> MV.read arr (3 * i + 1) <*> MV.read arr (3 * i + 2)
       slot :: Slot -> IO Double
       slot k = MV.read (wScalars a) (scalarSlots * i + fromEnum k)
+  asleep <- slot Asleep
+  label <- slot Island
   BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> slot Angle <*> slot Omega <*> r3 (wAxis a) <*> r3 (wNormal a)
+    <*> pure (if asleep > 0 then Just (round label) else Nothing) <*> slot SleepTimer
 
 -- | A contact row's impulses as the world remembers them after a step, to
 -- warm start the same contact (by its key) in the next.

@@ -21,7 +21,7 @@ import Manifold.Bench (benchScene, benchSpaces)
 import Manifold.Engine
 import Manifold.Scene
 import Manifold.Space
-import Manifold.Spaces (catalogue, flatKlein, sphere)
+import Manifold.Spaces (catalogue, flatKlein, plane, sphere)
 import Manifold.StateHash (showHash)
 
 -- | A scene, its name (a file name: @SPACE-default@, @SPACE-N@) and how
@@ -37,13 +37,15 @@ data GoldenRun = GoldenRun
 -- on the benchmark spaces, 600 steps (as they fall and pile up, contacts
 -- at every step), and of 1000 bodies, 200 steps; two jointed scenes (every
 -- kind of joint, a limit and a motor, across a quotient's flipped edge),
--- 600 steps.
+-- 600 steps; and two stacks that fall asleep, one woken by a falling ball
+-- and its joint to the world, 300 steps.
 goldenRuns :: [GoldenRun]
 goldenRuns =
   [GoldenRun (spaceName sp ++ "-default") (defaultScene sp) 1000 | sp <- catalogue]
     ++ [ GoldenRun (spaceName sp ++ "-" ++ show n) (benchScene sp n) steps
        | (n, steps) <- [(300, 600), (1000, 200)], sp <- benchSpaces ]
     ++ [ GoldenRun "sphere-chain" sphereChain 600, GoldenRun "flat-klein-joints" flatKleinJoints 600 ]
+    ++ [ GoldenRun "plane-sleep-wake" planeSleepWake 300 ]
 
 -- | A joint of a kind between bodies @a@ and @b@ (−1: the world) at
 -- anchors @p@ and @q@, its settings left to the defaults.
@@ -58,9 +60,9 @@ sphereChain =
   let r = 0.03
       at k = let a = 2 * r * fromIntegral (k :: Int) in V3 (cos a) 0 (sin a)
       pin k = let a = 2 * r * (fromIntegral k + 0.5) in V3 (cos a) 0 (sin a)
-      bodies = BodySpec CircleShape r 1 True (at 0) (V3 0 0 0) 0 0 Nothing []
-               : [BodySpec CircleShape r 1 False (at k) (V3 0 0 0) 0 0 Nothing [] | k <- [1 .. 20]]
-               ++ [BodySpec SquareShape r 1 False (at 21) (V3 0 0 0) 0 0 Nothing []]
+      bodies = BodySpec CircleShape r 1 True (at 0) (V3 0 0 0) 0 0 Nothing [] Nothing 0
+               : [BodySpec CircleShape r 1 False (at k) (V3 0 0 0) 0 0 Nothing [] Nothing 0 | k <- [1 .. 20]]
+               ++ [BodySpec SquareShape r 1 False (at 21) (V3 0 0 0) 0 0 Nothing [] Nothing 0]
       pins = [ (jointAt Revolute k (k + 1) (pin k) (pin k)) { jsLimit = if k == 3 then Just (-0.5, 0.5) else Nothing
                                                             , jsMotor = if k == 7 then Just (1, 0.01) else Nothing }
              | k <- [0 .. 19] ]
@@ -73,7 +75,7 @@ sphereChain =
 -- distance spring, a weld.
 flatKleinJoints :: Scene
 flatKleinJoints =
-  let body p v om = BodySpec CircleShape 0.06 1 False p v 0 om Nothing []
+  let body p v om = BodySpec CircleShape 0.06 1 False p v 0 om Nothing [] Nothing 0
       bodies = [ body (V3 0.8 0 0.3) (V3 1 0 0.2) 2, body (V3 0.92 0 0.3) (V3 1 0 0.2) 2
                , body (V3 0.2 0 0.85) (V3 0.1 0 0.8) (-1), body (V3 0.2 0 (-0.85)) (V3 0.1 0 0.8) 0
                , body (V3 (-0.5) 0 0) (V3 (-0.9) 0 0.1) 3, body (V3 (-0.62) 0 0) (V3 (-0.9) 0 0.1) 0 ]
@@ -82,11 +84,25 @@ flatKleinJoints =
                , jointAt Weld 4 5 (V3 (-0.56) 0 0) (V3 (-0.56) 0 0) ]
   in Scene flatKlein defaultParams bodies joints
 
+-- | Two stacks of three boxes on a static floor on the plane (gravity along
+-- −z), asleep within a second; a ball falls onto the left one and wakes it
+-- (about step 120), and a weld from its top box to the world holds it.
+planeSleepWake :: Scene
+planeSleepWake =
+  let h = 0.1
+      z k = -3 + 3 / sqrt 2 + h / sqrt 2 + fromIntegral (k :: Int) * h * sqrt 2
+      box x k = BodySpec SquareShape h 1 False (V3 x 0 (z k)) (V3 0 0 0) 0 0 Nothing [] Nothing 0
+      bodies = BodySpec SquareShape 3 1 True (V3 0 0 (-3)) (V3 0 0 0) 0 0 Nothing [] Nothing 0
+               : [box x k | x <- [-1, 1], k <- [0 .. 2]]
+               ++ [BodySpec CircleShape 0.08 1 False (V3 (-1.02) 0 2.5) (V3 0 0 0) 0 0 Nothing [] Nothing 0]
+      weld = (jointAt Weld 3 (-1) (V3 (-1) 0 (z 2)) (V3 (-1) 0 (z 2))) { jsHertz = 3, jsDampingRatio = 0.7 }
+  in Scene plane defaultParams bodies [weld]
+
 -- | A space's default scene ('spaceScene') with the default parameters.
 defaultScene :: Space -> Scene
 defaultScene sp =
   Scene sp defaultParams
-    [ BodySpec (placeShape pl) (placeSize pl) 1 (placeStatic pl) (placeAt pl) (V3 0 0 0) 0 0 Nothing []
+    [ BodySpec (placeShape pl) (placeSize pl) 1 (placeStatic pl) (placeAt pl) (V3 0 0 0) 0 0 Nothing [] Nothing 0
     | pl <- spaceScene sp ] []
 
 -- | The hash after @steps@ steps of the scene natively: by the generic step

@@ -51,6 +51,7 @@ import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Field
+import Manifold.Sleep (markIsland)
 import Manifold.Soft
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -157,6 +158,7 @@ addJoint sp w kind a b qa qb = do
               writeJoint w j JThetaB tb
             writeMeta w JointCount (count + 1)
             writeMeta w LastJoint count
+            wakeJoined w j
             -- the length and the reference angle from where the bodies are
             prepareJoint sp w j
             len <- readJoint w j JChord
@@ -171,11 +173,34 @@ addJoint sp w kind a b qa qb = do
   where
     allPositive' = foldr (\c rest -> select c rest 0) 1
 
--- | Remove joint @j@: the last joint takes its place.
+-- | Run @act@ for joint @j@ when one of its bodies moves: a sleeping
+-- island's joints (whose bodies are all asleep, or against the world or a
+-- static body) cost nothing.
+whenMoving :: Imp m => WorldArrays (Array m) -> Index m -> m () -> m ()
+{-# INLINE whenMoving #-}
+whenMoving w j act = do
+  a <- readJoint w j JA
+  b <- readJoint w j JB
+  ma <- moving w (toIndex a)
+  mb <- moving w (toIndex (maxF 0 b))
+  whenPositive (maxF ma (select (b + 0.5) mb 0)) act
+
+-- | Mark the islands of joint @j@'s bodies to wake: a joint made or
+-- removed changes what they hold.
+wakeJoined :: Imp m => WorldArrays (Array m) -> Index m -> m ()
+wakeJoined w j = do
+  a <- readJoint w j JA
+  b <- readJoint w j JB
+  markIsland w (toIndex a)
+  whenPositive (b + 0.5) (markIsland w (toIndex b))
+
+-- | Remove joint @j@: the last joint takes its place; its bodies' islands
+-- wake.
 removeJoint :: Imp m => WorldArrays (Array m) -> Index m -> m ()
 removeJoint w j = do
   count <- readMeta w JointCount
   whenPositive (minF (toScalar j + 0.5) (count - toScalar j - 0.5)) $ do
+    wakeJoined w j
     let lastJ = toIndex (count - 1)
     mapM_ (\k -> readJoint w lastJ k >>= writeJoint w j k) [minBound .. maxBound]
     writeMeta w JointCount (count - 1)
@@ -238,7 +263,7 @@ prepareJoints :: Imp m => Space -> WorldArrays (Array m) -> m ()
 prepareJoints sp w = do
   count <- readMeta w JointCount
   warm <- readParam w WarmStart
-  forEach (toIndex count) $ \j -> do
+  forEach (toIndex count) $ \j -> whenMoving w j $ do
     prepareJoint sp w j
     mapM_ (\k -> readJoint w j k >>= writeJoint w j k . (warm *)) impulseFields
 
@@ -408,7 +433,7 @@ applyImpulse w p (Row la wa lb wb) lambda = do
 warmStartJoints :: Imp m => WorldArrays (Array m) -> m ()
 warmStartJoints w = do
   count <- readMeta w JointCount
-  forEach (toIndex count) $ \j -> do
+  forEach (toIndex count) $ \j -> whenMoving w j $ do
     p <- pairOf w j
     g <- geometryNow w j p
     sigma <- readJoint w j JSigma
@@ -446,7 +471,7 @@ solveJoints useBias w = do
   -- 50-link chain hanging on the sphere at 200 Hz rang on at four
   -- sub-steps of 1/400 s and settled at eight
   rigid <- softness (minF hz (0.25 * invH)) zeta h
-  forEach (toIndex count) $ \j -> do
+  forEach (toIndex count) $ \j -> whenMoving w j $ do
     p <- pairOf w j
     kind <- readJoint w j JKind
     let is k = 0.5 - abs (kind - fromIntegral (fromEnum k))

@@ -42,6 +42,9 @@ data Params = Params
   , pPolygonStep :: Double -- ^ bodies up to this size walk their outline in one geodesic step (0: never)
   , pJointHertz :: Double -- ^ how stiff a rigid joint row is, as a spring's frequency (at most a quarter of the sub-step rate)
   , pJointDampingRatio :: Double -- ^ a rigid joint row's damping ratio
+  , pSleep :: Bool -- ^ islands at rest fall asleep ("Manifold.Sleep")
+  , pSleepSpeed :: Double -- ^ a body moving slower than this many of its sizes a second (and turning slower than this many radians) is calm
+  , pSleepTime :: Double -- ^ how long an island's bodies are calm before it sleeps (s)
   } deriving (Show, Eq)
 
 -- | What a world starts with and a scene gets for a key it leaves out: four
@@ -55,7 +58,8 @@ defaultParams = Params
   { pDt = 0.01, pGravity = True, pSubsteps = 4, pIterations = 1, pFriction = 0.4, pRestitution = 0
   , pContactHertz = 60, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
   , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05
-  , pJointHertz = 120, pJointDampingRatio = 2 }
+  , pJointHertz = 120, pJointDampingRatio = 2
+  , pSleep = True, pSleepSpeed = 0.05, pSleepTime = 0.5 }
 
 -- | A parameter as the world's parameter array holds it (a switch is 1 or 0).
 paramValue :: Params -> Param -> Double
@@ -76,6 +80,9 @@ paramValue p = \case
   PolygonStep -> pPolygonStep p
   JointHertz -> pJointHertz p
   JointDampingRatio -> pJointDampingRatio p
+  Sleep -> switch (pSleep p)
+  SleepSpeed -> pSleepSpeed p
+  SleepTime -> pSleepTime p
   where switch b = if b then 1 else 0
 
 -- | A parameter set to a value as the parameter array would hold it (the
@@ -98,6 +105,9 @@ setParam k x p = case k of
   PolygonStep -> p { pPolygonStep = x }
   JointHertz -> p { pJointHertz = x }
   JointDampingRatio -> p { pJointDampingRatio = x }
+  Sleep -> p { pSleep = x > 0 }
+  SleepSpeed -> p { pSleepSpeed = x }
+  SleepTime -> p { pSleepTime = x }
 
 -- | Set a world's parameter array.
 writeParams :: WorldArrays (MV.IOVector Double) -> Params -> IO ()
@@ -151,6 +161,9 @@ sceneKeys =
   , SceneKey "jointHertz" JointHertz Positive
       (slider "Joint Hz" "how stiff a joint is, as a spring's frequency (at most a quarter of the sub-step rate)" 10 400 5)
   , SceneKey "jointDampingRatio" JointDampingRatio NonNegative Nothing
+  , SceneKey "sleep" Sleep Switch (Just (Control "Sleep" "islands of bodies at rest fall asleep, costing nothing until touched" Nothing))
+  , SceneKey "sleepSpeed" SleepSpeed NonNegative Nothing
+  , SceneKey "sleepTime" SleepTime Positive Nothing
   ]
   where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
 

@@ -17,6 +17,7 @@ import Linear.Vector ((*^), (^-^))
 import Manifold.Body (PolygonParams (..), massIntegrals)
 import Manifold.Field
 import Manifold.Joint (forgetBodyJoints)
+import Manifold.Sleep (wakeMarked, wakeNear)
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface
@@ -76,6 +77,10 @@ addBodyWith sp l w outline b = do
           writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
           writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
           writeSlot w i Size (baSize b)
+          -- awake (a saved scene's sleeping body is put to sleep after: 'setSleeping')
+          writeSlot w i Asleep 0
+          writeSlot w i SleepTimer 0
+          writeSlot w i Island (-1)
           outlineRadiiInto l outline w i (baSize b)
           let nd = polyDirections (polygon l)
           reach <- newRef 0
@@ -126,7 +131,8 @@ allPositive = foldr (\c rest -> select c rest 0) 1
 
 -- | Remove body @i@: the last body takes its place (so indices above @i@
 -- are stable but the last one's becomes @i@). Warm starting is forgotten
--- for one step; a mouse joint on the removed body is released.
+-- for one step, and so are the last step's contacts; a mouse joint on the
+-- removed body is released; the bodies near it wake.
 removeBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> m ()
 removeBody l w i = do
   count <- readMeta w BodyCount
@@ -134,6 +140,14 @@ removeBody l w i = do
     let lastI = toIndex (count - 1)
         move arr (k :: Int) = forEach (fromIntegral k) $ \o ->
           readArray arr (fromIntegral k * lastI + o) >>= writeArray arr (fromIntegral k * i + o)
+    -- what rested on the body wakes, and so does the body's own island
+    -- (so that no sleeping body names the index that goes); the last
+    -- body's island, if asleep, is named by its new index
+    wakeNear w i
+    wakeMarked w
+    forEach (toIndex count) $ \k -> do
+      label <- readSlot w k Island
+      whenPositive (0.5 - abs (label - toScalar lastI)) (writeSlot w k Island (toScalar i))
     move (wPos w) 3
     move (wVel w) 3
     move (wAxis w) 3
@@ -145,6 +159,8 @@ removeBody l w i = do
     writeMeta w BodyCount (count - 1)
     forgetBodyJoints w i lastI
     forEach (toIndex count) $ \k -> writeArray (wBodyPrev w) (2 * k + 1) 0
+    -- the last step's contacts name bodies by the old indices: none now
+    writeMeta w ContactCount 0
     grabbed <- readMouse w MBody
     active <- readMouse w MActive
     whenPositive (minF active (0.5 - abs (grabbed - toScalar i))) (writeMouse w MActive 0)

@@ -25,6 +25,7 @@ import Manifold.Grab
 import Manifold.Joint (addJoint, jointAnchors, removeJoint)
 import Manifold.Measures (measureBody, measureWorld)
 import Manifold.Population
+import Manifold.Sleep (countIslands, setSleeping)
 import Manifold.Space
 import Manifold.Stage.Expr (E)
 import Manifold.Stage.Imp
@@ -47,7 +48,7 @@ stepProcedures sp l = [ (Procedure (phaseFunction name) worldParams [], \_ _ -> 
 -- | The procedures the page calls: the phases, then the rest.
 pageProcedures :: Space -> Layout -> [(Procedure, [StagedArray] -> [E] -> Staged ())]
 pageProcedures sp l = stepProcedures sp l ++
-  [ (Procedure "polygonise" worldParams [], \_ _ -> polygoniseAll sp l stagedArrays)
+  [ (Procedure "polygonise" worldParams [], \_ _ -> polygoniseEvery sp l stagedArrays)
   , (Procedure "addBody" worldParams
       ["shape", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega", "restore", "ax", "ay", "az", "nx", "ny", "nz"],
       \_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega, restore, ax, ay, az, nx, ny, nz] ->
@@ -66,6 +67,9 @@ pageProcedures sp l = stepProcedures sp l ++
       \_ [kind, a, b, ax, ay, az, bx, by, bz] -> addJoint sp stagedArrays kind a b (V3 ax ay az) (V3 bx by bz))
   , (Procedure "removeJoint" worldParams ["index"],
       \_ [j] -> removeJoint stagedArrays (toIndex j))
+  , (Procedure "countIslands" worldParams [], \_ _ -> countIslands stagedArrays)
+  , (Procedure "setSleeping" worldParams ["index", "island", "timer"],
+      \_ [i, label, timer] -> setSleeping stagedArrays (toIndex i) label timer)
   , (Procedure "jointAnchors" (worldParams ++ ["out"]) [],
       \arrays _ -> jointAnchors sp stagedArrays (last arrays))
   , (Procedure "measure" (worldParams ++ ["out"]) [],

@@ -39,9 +39,11 @@ import Manifold.World (contactsPerBody, layout)
 
 -- | A body as a scene file gives it (its keys, in order: @shape@, @size@,
 -- @density@, @static@, @p@, @v@, @angle@, @omega@, @axis@, @normal@,
--- @impulses@). A body with @axis@ and @normal@ (what a saved scene holds)
--- is restored exactly as it was saved; one without is placed: projected
--- onto the surface, its axis the reference axis there.
+-- @impulses@, @awake@, @island@, @sleepTime@). A body with @axis@ and
+-- @normal@ (what a saved scene holds) is restored exactly as it was saved;
+-- one without is placed: projected onto the surface, its axis the
+-- reference axis there. A body with @"awake": false@ sleeps, in the island
+-- named by the index of one of its bodies (@island@, default its own).
 data BodySpec = BodySpec
   { bsShape :: ShapeKind
   , bsSize :: Double -- ^ circumradius, above 0
@@ -53,6 +55,8 @@ data BodySpec = BodySpec
   , bsOmega0 :: Double -- ^ angular velocity (default 0)
   , bsFrame :: Maybe (V3 Double, V3 Double) -- ^ the saved axis and normal, both or neither
   , bsImpulses :: [Impulse] -- ^ what the body remembers of the last step's contacts it owns (warm starting)
+  , bsSleeping :: Maybe Int -- ^ asleep, in the island named by this body's index (default: awake)
+  , bsCalmFor :: Double -- ^ its sleep timer: how long it has been calm (s, default 0: "Manifold.Sleep")
   } deriving (Show, Eq)
 
 -- | What a scene file holds.
@@ -149,7 +153,7 @@ shape path = \case
 
 body :: Path -> A.Value -> P BodySpec
 body path v = do
-  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses"] v
+  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses", "awake", "island", "sleepTime"] v
   axis <- optional path o "axis" Nothing (\at x -> Just <$> vec3 at x)
   normal <- optional path o "normal" Nothing (\at x -> Just <$> vec3 at x)
   frame <- case (axis, normal) of
@@ -168,6 +172,29 @@ body path v = do
     <*> optional path o "omega" 0 number
     <*> pure frame
     <*> optional path o "impulses" [] impulses
+    <*> pure Nothing
+    <*> optional path o "sleepTime" 0 nonNegative
+
+-- | The bodies' @awake@ and @island@ keys: a sleeping body's island is
+-- named by the index of a sleeping body (its own by default); a static
+-- body does not sleep.
+sleeping :: [A.Value] -> [BodySpec] -> P [BodySpec]
+sleeping values specs = forM (zip3 [0 :: Int ..] values specs) $ \(k, v, spec) -> do
+  let path = "$.bodies[" ++ show k ++ "]"
+      keys = case v of A.Object o -> o; _ -> mempty
+  awake <- optional path keys "awake" True boolean
+  let asleepAt i = i >= 0 && i < length values && case values !! i of
+        A.Object o -> member o "awake" == Just (A.Bool False) && not (bsStatic (specs !! i))
+        _ -> False
+  label <- optional path keys "island" Nothing $ \at x -> case x of
+    A.Number n | toRealFloat n == fromIntegral (round (toRealFloat n :: Double) :: Int)
+               , asleepAt (round (toRealFloat n :: Double)) -> pure (Just (round (toRealFloat n :: Double)))
+    _ -> problem at "must be the index of a sleeping body (one with \"awake\": false)"
+  case (awake, label) of
+    (True, Just _) -> problem (path ++ ".island") "is for a sleeping body (\"awake\": false)"
+    (False, _) | bsStatic spec -> problem (path ++ ".awake") "a static body does not sleep"
+    (False, _) -> pure spec { bsSleeping = Just (fromMaybe k label) }
+    (True, Nothing) -> pure spec
 
 -- | A body's remembered contact impulses: @[[key, normal, friction], …]@.
 impulses :: Path -> A.Value -> P [Impulse]
@@ -197,7 +224,9 @@ parseScene text = do
     _ -> problem path "must be a space name"
   params <- foldM (sceneKey o) defaultParams sceneKeys
   bodies <- optional "$" o "bodies" [] $ \path -> \case
-    A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
+    A.Array a -> do
+      specs <- forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
+      sleeping (V.toList a) specs
     _ -> problem path "must be an array of bodies"
   let remembered = sum (map (length . bsImpulses) bodies)
       room = contactsPerBody * length bodies
@@ -314,6 +343,8 @@ sceneJSON s = A.object
       , "angle" A..= bsAngle0 b, "omega" A..= bsOmega0 b ]
       ++ concat [ ["axis" A..= v3 a, "normal" A..= v3 n] | Just (a, n) <- [bsFrame b] ]
       ++ [ "impulses" A..= [[impulseKey r, impulseNormal r, impulseFriction r] | r <- bsImpulses b] | not (null (bsImpulses b)) ]
+      ++ concat [ ["awake" A..= False, "island" A..= label] | Just label <- [bsSleeping b] ]
+      ++ [ "sleepTime" A..= bsCalmFor b | bsCalmFor b /= 0 ]
     shapeJSON = \case
       CircleShape -> A.String "circle"
       SquareShape -> A.String "square"
@@ -345,6 +376,7 @@ loadScene extra s = do
     Left e -> pure (Left e)
     Right _ -> do
       restored <- either (Left . ("$.bodies: " ++)) Right <$> restoreImpulses w (map bsImpulses (sceneBodies s))
+      forM_ (zip [0 ..] (sceneBodies s)) $ \(k, b) -> setSleepingAt w k (bsSleeping b) (bsCalmFor b)
       joined <- zipWithM (loadJoint w) [0 ..] (sceneJoints s)
       pure (restored >> sequence_ joined >> pure w)
 
@@ -431,7 +463,8 @@ sceneOfWorld s w = do
         st <- readBody w i
         remembered <- rememberedImpulses w i
         pure spec { bsP = bsPos st, bsV = bsVel st, bsAngle0 = bsAngle st, bsOmega0 = bsOmega st
-                  , bsFrame = Just (bsAxis st, bsNormal st), bsImpulses = remembered }
+                  , bsFrame = Just (bsAxis st, bsNormal st), bsImpulses = remembered
+                  , bsSleeping = bsAsleep st, bsCalmFor = bsSleepTimer st }
       nj <- jointCount w
       joints <- mapM (jointOfWorld w) [0 .. nj - 1]
       pure (Right s { sceneBodies = bodies, sceneJoints = joints })

@@ -26,6 +26,11 @@ module Manifold.World
   , MouseField (..)
   , JointField (..)
   , JointKind (..)
+  , IslandField (..)
+  , islandStride
+  , readIsland
+  , writeIsland
+  , moving
   , jointStride
   , maxJoints
   , partnersPerBody
@@ -70,6 +75,7 @@ module Manifold.World
   , wrapIntoDomain
   , tangentVelocities
   , polygoniseAll
+  , polygoniseEvery
   , polygoniseBody
   , hasConstantGradient
   , toList3
@@ -115,6 +121,8 @@ data WorldArrays a = WorldArrays
   , wJoints :: a -- ^ 'jointStride' per joint, see 'JointField' ("Manifold.Joint")
   , wFlip :: a -- ^ per body: 1, or −1 when the last wrap into the fundamental domain mirrored it (the joints' anchors follow)
   , wPartners :: a -- ^ per body: 'partnersPerBody' bodies it is joined to and does not collide with (−1: none), found each step
+  , wIslands :: a -- ^ per body: 'IslandField' (the islands' union–find, "Manifold.Sleep")
+  , wSeenParams :: a -- ^ the parameters as the last step saw them (a change wakes every body)
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -147,18 +155,28 @@ layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 -- (velocity times time, summed over the sub-steps) and turned since the
 -- step's contacts were found: the solver updates each contact's depth from
 -- them without finding the contacts again.
+--
+-- 'Asleep' is 1 for a body of a sleeping island ("Manifold.Sleep"), 0
+-- otherwise; 'SleepTimer' is how long the body has moved slower than the
+-- sleep threshold (s); 'Island' names a sleeping body's island (the index
+-- of one of its bodies; −1 for an awake body).
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos | TurnSin
   | MovedX | MovedY | MovedZ | Turned
+  | Asleep | SleepTimer | Island
   deriving (Show, Eq, Enum, Bounded)
 
--- | The world's counters.
+-- | The world's counters. 'AwakeCount' is the movable bodies awake after
+-- the last step's wake phase, 'IslandCount' the islands as 'countIslands'
+-- last counted them, 'WakeRequest' 1 when an island is marked to wake
+-- ("Manifold.Sleep").
 data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
-  | JointCount | LastJoint
+  | JointCount | LastJoint | AwakeCount | IslandCount | WakeRequest
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
 data Param = Dt | GravityOn | Substeps | Iterations | Friction | Restitution | ContactHertz | DampingRatio | Pushout
   | Slop | Speculative | BounceThreshold | WarmStart | PolygonStep | JointHertz | JointDampingRatio
+  | Sleep | SleepSpeed | SleepTime
   deriving (Show, Eq, Enum, Bounded)
 
 -- | One contact row pair (normal and friction) of the solver. The first body
@@ -224,11 +242,19 @@ data JointKind
   | Weld -- ^ the anchors coincide and the relative angle holds
   deriving (Show, Eq, Enum, Bounded)
 
+-- | What the islands' union–find ("Manifold.Sleep") keeps of a body: its
+-- parent (itself for an island's root), its rank, at a root the shortest
+-- sleep timer of the island, and whether the sleeping island the body names
+-- is to wake. Scratch, but for the mark: not part of the state's hash.
+data IslandField = IslandParent | IslandRank | IslandCalm | IslandWake
+  deriving (Show, Eq, Enum, Bounded)
+
 count' :: forall e. (Enum e, Bounded e) => e -> Int
 count' _ = fromEnum (maxBound :: e) + 1
 
-scalarSlots, contactStride, prevStride, jointStride :: Int
+scalarSlots, contactStride, prevStride, jointStride, islandStride :: Int
 scalarSlots = count' Angle
+islandStride = count' IslandParent
 jointStride = count' JKind
 contactStride = count' CA
 prevStride = count' PrevOwner
@@ -283,11 +309,14 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wJoints = jointStride * maxJoints l
   , wFlip = c
   , wPartners = partnersPerBody * c
+  , wIslands = islandStride * c
+  , wSeenParams = count' Dt
   }
 
 arrayNames :: WorldArrays String
 arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
   "outline" "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near" "walk" "joints" "flip" "partners"
+  "islands" "seenParams"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 {-# INLINE read3 #-}
@@ -381,6 +410,23 @@ writeJoint3 :: Imp m => WorldArrays (Array m) -> Index m -> JointField -> V3 (Sc
 {-# INLINE writeJoint3 #-}
 writeJoint3 w j k = writeAt3 (wJoints w) (fieldAt jointStride j k)
 
+readIsland :: Imp m => WorldArrays (Array m) -> Index m -> IslandField -> m (Scalar m)
+{-# INLINE readIsland #-}
+readIsland w i f = readArray (wIslands w) (fieldAt islandStride i f)
+
+writeIsland :: Imp m => WorldArrays (Array m) -> Index m -> IslandField -> Scalar m -> m ()
+{-# INLINE writeIsland #-}
+writeIsland w i f = writeArray (wIslands w) (fieldAt islandStride i f)
+
+-- | 1 for a body the step moves (movable and awake), 0 for a static or a
+-- sleeping one.
+moving :: Imp m => WorldArrays (Array m) -> Index m -> m (Scalar m)
+{-# INLINE moving #-}
+moving w i = do
+  invMass <- readSlot w i InvMass
+  asleep <- readSlot w i Asleep
+  share (select invMass (1 - asleep) 0)
+
 readMouse :: Imp m => WorldArrays (Array m) -> MouseField -> m (Scalar m)
 readMouse w k = readArray (wMouse w) (ix k)
 
@@ -449,8 +495,8 @@ applyGravity sp w h = do
   count <- readMeta w BodyCount
   on <- readParam w GravityOn
   forEach (toIndex count) $ \i -> do
-    invMass <- readSlot w i InvMass
-    whenPositive (invMass * on) $ do
+    m <- moving w i
+    whenPositive (m * on) $ do
       p <- read3 (wPos w) i
       v <- read3 (wVel w) i
       n <- read3 (wNormal w) i
@@ -463,7 +509,8 @@ applyGravity sp w h = do
 -- of the centre, the velocity and axis carried to the new tangent plane;
 -- how far each body moved and turned is added up for the solver (see
 -- 'MovedX'). A step that would produce a non-finite value leaves the body
--- as it was and counts a warning. Bodies may end outside a quotient's
+-- as it was and counts a warning. Sleeping bodies stay where they are.
+-- Bodies may end outside a quotient's
 -- fundamental domain: 'wrapIntoDomain' brings them back once a step, after
 -- the sub-steps, so that within a step every body keeps one frame.
 integrate :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
@@ -471,7 +518,7 @@ integrate :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
 integrate sp w dt = do
   count <- readMeta w BodyCount
   let f = spaceField sp
-  forEach (toIndex count) $ \i -> do
+  forEach (toIndex count) $ \i -> readSlot w i Asleep >>= \asleep -> whenPositive (0.5 - asleep) $ do
     p <- read3 (wPos w) i
     axis <- read3 (wAxis w) i
     angle <- readSlot w i Angle
@@ -530,7 +577,7 @@ wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
   Nothing -> pure ()
   Just wrap -> do
     count <- readMeta w BodyCount
-    forEach (toIndex count) $ \i -> do
+    forEach (toIndex count) $ \i -> readSlot w i Asleep >>= \asleep -> ifPositive asleep (writeArray (wFlip w) i 1) $ do
       p <- read3 (wPos w) i
       let (p', s) = wrap p
           mirror (V3 x y z) = V3 x y (s * z)
@@ -556,7 +603,7 @@ tangentVelocities sp w
   | hasConstantGradient (spaceField sp) = pure ()
   | otherwise = do
       count <- readMeta w BodyCount
-      forEach (toIndex count) $ \i -> do
+      forEach (toIndex count) $ \i -> readSlot w i Asleep >>= \asleep -> whenPositive (0.5 - asleep) $ do
         n <- read3 (wNormal w) i
         read3 (wVel w) i >>= write3 (wVel w) i . tangentProjection n
 
@@ -582,10 +629,20 @@ outlineRadiiInto l outline w i size = do
 hasConstantGradient :: ScalarFn -> Bool
 hasConstantGradient f = all (isJust . literalValue) (gradFn f (V3 (sym "x") (sym "y") (sym "z")))
 
--- | Walk every body's geodesic polygon into the vertex cache (paper §3.4).
+-- | Walk every awake body's geodesic polygon into the vertex cache (paper
+-- §3.4): a sleeping body has not moved since its last walk.
 polygoniseAll :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE polygoniseAll :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 polygoniseAll sp l w = do
+  count <- readMeta w BodyCount
+  forEach (toIndex count) $ \i -> do
+    asleep <- readSlot w i Asleep
+    whenPositive (0.5 - asleep) (polygoniseBody sp l w i)
+
+-- | Walk every body's polygon, sleeping or not (what the page asks for when
+-- the polygon parameters change).
+polygoniseEvery :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+polygoniseEvery sp l w = do
   count <- readMeta w BodyCount
   forEach (toIndex count) (polygoniseBody sp l w)
 

@@ -85,6 +85,8 @@ engineObject l subroutines =
     , "  // why addJoint refused a joint, by meta.lastJoint (-1, -2, -3)"
     , "  jointProblems: { " ++ intercalate ", " [show (show c) ++ ": " ++ show (jointProblem c) | c <- [-1, -2, -3]] ++ " },"
     , "  addJoint: addJoint, removeJoint: removeJoint, jointAnchors: jointAnchors,"
+    , "  // islands and sleeping (Manifold.Sleep): count them into meta.islandCount; put a body to sleep in an island"
+    , "  countIslands: countIslands, setSleeping: setSleeping,"
     , "  // the state's hash (Manifold.StateHash): FNV-1a over [array, the meta counting its rows, numbers a row]"
     , "  hashed: [" ++ intercalate ", " [ "[" ++ show (hashedArray part arrayNames) ++ ", " ++ show (jsName (hashedRows part)) ++ ", " ++ show (hashedStride part) ++ "]" | part <- hashedParts ] ++ "],"
     , "  frameMisfit: " ++ show frameMisfit ++ ","

@@ -1,0 +1,272 @@
+{-# LANGUAGE FlexibleContexts #-}
+-- | Islands and sleeping, as Box2D does them: the movable bodies linked by
+-- contacts and joints make islands (static bodies and walls do not link);
+-- a body's sleep timer runs while it moves slower than the sleep
+-- threshold, which is relative to its size (bodies here range from 0.01 to
+-- 0.5 units), and is reset when it moves faster; an island whose bodies have
+-- all been calm for 'SleepTime' falls asleep together, its velocities
+-- zeroed. A sleeping body costs the step next to nothing: it is not moved,
+-- walked, collided with other sleeping or static bodies, nor solved.
+--
+-- An island wakes whole: when an awake body touched one of its bodies in
+-- the last step (a contact row between them), when a joint joins one of its
+-- bodies to an awake one or is added or removed, when one of its bodies is
+-- grabbed, when a body near it is removed, and every island when a
+-- parameter changes. The wake phase runs first in the step, from the last
+-- step's contacts: a body falling onto a sleeping pile pushes a sleeping
+-- body (which the step does not move) for one step, then the pile is awake.
+--
+-- Islands are found by a union–find over the movable awake bodies, only in
+-- steps where some body's timer has run out (a busy scene pays nothing for
+-- it). Union by rank keeps every tree at most log₂ of the bodies deep, so
+-- that a find is a loop of that many steps (the staged language has no
+-- loop that stops on a condition).
+module Manifold.Sleep
+  ( wakePhase
+  , sleepIslands
+  , markIsland
+  , wakeMarked
+  , wakeNear
+  , countIslands
+  , setSleeping
+  , labelIslands
+  ) where
+
+import Control.Monad (forM_, (>=>))
+import Linear.Metric (norm)
+import Linear.Vector ((^-^))
+
+import Manifold.Field
+import Manifold.Stage.Imp
+import Manifold.World
+
+-- | Mark body @i@'s island to wake (nothing for an awake body): the wake
+-- phase of the next step, or 'wakeMarked', wakes it.
+markIsland :: Imp m => WorldArrays (Array m) -> Index m -> m ()
+markIsland w i = do
+  asleep <- readSlot w i Asleep
+  whenPositive asleep $ do
+    label <- readSlot w i Island
+    writeIsland w (toIndex label) IslandWake 1
+    writeMeta w WakeRequest 1
+
+-- | Wake every body of the islands marked to wake.
+wakeMarked :: Imp m => WorldArrays (Array m) -> m ()
+wakeMarked w = do
+  requested <- readMeta w WakeRequest
+  whenPositive requested $ do
+    count <- readMeta w BodyCount
+    forEach (toIndex count) $ \i -> do
+      asleep <- readSlot w i Asleep
+      whenPositive asleep $ do
+        label <- readSlot w i Island
+        marked <- readIsland w (toIndex label) IslandWake
+        whenPositive marked (wakeBody w i)
+    forEach (toIndex count) $ \i -> writeIsland w i IslandWake 0
+    writeMeta w WakeRequest 0
+
+-- | Body @i@ awake, its timer from 0.
+wakeBody :: Imp m => WorldArrays (Array m) -> Index m -> m ()
+{-# INLINE wakeBody #-}
+wakeBody w i = do
+  writeSlot w i Asleep 0
+  writeSlot w i SleepTimer 0
+  writeSlot w i Island (-1)
+
+-- | Mark the islands of the bodies whose bounds come within reach of body
+-- @i@'s (what removing body @i@ wakes: the bodies resting on it).
+wakeNear :: Imp m => WorldArrays (Array m) -> Index m -> m ()
+wakeNear w i = do
+  count <- readMeta w BodyCount
+  p <- read3 (wPos w) i
+  r <- readSlot w i BoundRadius
+  forEach (toIndex count) $ \k -> do
+    q <- read3 (wPos w) k
+    rk <- readSlot w k BoundRadius
+    -- a margin of half the larger bound: what lay on body i, not only what touched it
+    whenPositive (1.5 * (r + rk) - norm (p ^-^ q)) (markIsland w k)
+  markIsland w i
+
+-- | The step's first phase: a parameter changed since the last step, or
+-- sleeping is off, and every body wakes; otherwise the islands that the
+-- last step's contacts and the joints link to awake bodies, and a grabbed
+-- body's, are marked and woken. Then 'AwakeCount' counts the movable bodies
+-- awake.
+wakePhase :: Imp m => WorldArrays (Array m) -> m ()
+{-# SPECIALIZE wakePhase :: WorldArrays NativeArray -> Native () #-}
+wakePhase w = do
+  count <- readMeta w BodyCount
+  changed <- newRef 0
+  forM_ [minBound .. maxBound :: Param] $ \k -> do
+    x <- readParam w k
+    seen <- readArray (wSeenParams w) (fromIntegral (fromEnum k))
+    whenPositive (abs (x - seen)) (writeRef changed 1)
+    writeArray (wSeenParams w) (fromIntegral (fromEnum k)) x
+  on <- readParam w Sleep
+  whenPositive (1 - on) (writeRef changed 1)
+  everything <- readRef changed
+  ifPositive everything
+    (forEach (toIndex count) (wakeBody w)
+       >> forEach (toIndex count) (\i -> writeIsland w i IslandWake 0)
+       >> writeMeta w WakeRequest 0)
+    (do let touching a b = do
+              ma <- moving w a
+              mb <- moving w b
+              whenPositive ma (markIsland w b)
+              whenPositive mb (markIsland w a)
+        nc <- readMeta w ContactCount
+        forEach (toIndex nc) $ \c -> do
+          a <- readContact w c CA
+          b <- readContact w c CB
+          whenPositive (b + 0.5) (touching (toIndex a) (toIndex b))
+        nj <- readMeta w JointCount
+        forEach (toIndex nj) $ \j -> do
+          a <- readJoint w j JA
+          b <- readJoint w j JB
+          whenPositive (b + 0.5) (touching (toIndex a) (toIndex b))
+        active <- readMouse w MActive
+        whenPositive active $ readMouse w MBody >>= markIsland w . toIndex
+        wakeMarked w)
+  awake <- newRef 0
+  forEach (toIndex count) (moving w >=> \m -> modifyRef awake (+ m))
+  readRef awake >>= writeMeta w AwakeCount
+
+-- | The end of the step: every awake body's sleep timer; where some timer
+-- has run out, the islands, and those whose every body's timer has run
+-- out fall asleep.
+sleepIslands :: Imp m => WorldArrays (Array m) -> m ()
+{-# SPECIALIZE sleepIslands :: WorldArrays NativeArray -> Native () #-}
+sleepIslands w = do
+  on <- readParam w Sleep
+  whenPositive on $ do
+    dt <- readParam w Dt
+    threshold <- readParam w SleepSpeed
+    delay <- readParam w SleepTime
+    count <- readMeta w BodyCount
+    active <- readMouse w MActive
+    held <- readMouse w MBody
+    -- a timer counts whole steps: it has run out within half a step of the delay
+    let ranOut t = t - delay + 0.5 * dt
+    due <- newRef 0
+    forEach (toIndex count) $ \i -> do
+      m <- moving w i
+      whenPositive m $ do
+        v <- read3 (wVel w) i
+        omega <- readSlot w i Omega
+        size <- readSlot w i Size
+        reach <- readSlot w i BoundRadius
+        t <- readSlot w i SleepTimer
+        let calmSpeed = threshold * size
+            isHeld = active * select (0.5 - abs (held - toScalar i)) 1 0
+            calm = minF (minF (calmSpeed - norm v) (calmSpeed - abs omega * reach)) (0.5 - isHeld)
+        t' <- share (select calm (t + dt) 0)
+        writeSlot w i SleepTimer t'
+        whenPositive (ranOut t') (writeRef due 1)
+    anyDue <- readRef due
+    whenPositive anyDue $ do
+      labelIslands w
+      forEach (toIndex count) $ \i -> moving w i >>= \m -> whenPositive m (writeIsland w i IslandCalm 1e300)
+      forEach (toIndex count) $ \i -> moving w i >>= \m -> whenPositive m $ do
+        root <- toIndex <$> readIsland w i IslandParent
+        t <- readSlot w i SleepTimer
+        readIsland w root IslandCalm >>= writeIsland w root IslandCalm . minF t
+      forEach (toIndex count) $ \i -> moving w i >>= \m -> whenPositive m $ do
+        root <- readIsland w i IslandParent
+        calm <- readIsland w (toIndex root) IslandCalm
+        whenPositive (ranOut calm) $ do
+          writeSlot w i Asleep 1
+          writeSlot w i Island root
+          write3 (wVel w) i 0
+          writeSlot w i Omega 0
+          readMeta w AwakeCount >>= writeMeta w AwakeCount . subtract 1
+
+-- | The islands of the movable awake bodies, by union–find over the last
+-- step's contacts and the joints: each such body's 'IslandParent' is its
+-- island's root (a body of the island) after it.
+labelIslands :: Imp m => WorldArrays (Array m) -> m ()
+labelIslands w = do
+  count <- readMeta w BodyCount
+  forEach (toIndex count) $ \i -> do
+    writeIsland w i IslandParent (toScalar i)
+    writeIsland w i IslandRank 0
+  -- a tree of union by rank is at most log₂(bodies) deep: a find walks
+  -- that many parents (a root is its own)
+  depthRef <- newRef 1
+  reachRef <- newRef 2
+  forEach 40 $ \_ -> do
+    reach <- readRef reachRef
+    whenPositive (count + 0.5 - reach) $ do
+      modifyRef depthRef (+ 1)
+      writeRef reachRef (2 * reach)
+  depth <- readRef depthRef
+  let find x = do
+        r <- newRef (toScalar x)
+        forEach (toIndex depth) $ \_ -> readRef r >>= \c -> readIsland w (toIndex c) IslandParent >>= writeRef r
+        readRef r >>= share
+      link a b = do
+        ma <- moving w a
+        mb <- moving w b
+        whenPositive (minF ma mb) $ do
+          ra <- find a
+          rb <- find b
+          whenPositive (abs (ra - rb) - 0.5) $ do
+            ka <- readIsland w (toIndex ra) IslandRank
+            kb <- readIsland w (toIndex rb) IslandRank
+            ifPositive (kb - ka) (writeIsland w (toIndex ra) IslandParent rb) $ do
+              writeIsland w (toIndex rb) IslandParent ra
+              whenPositive (0.5 - abs (ka - kb)) (writeIsland w (toIndex ra) IslandRank (ka + 1))
+  nc <- readMeta w ContactCount
+  forEach (toIndex nc) $ \c -> do
+    a <- readContact w c CA
+    b <- readContact w c CB
+    whenPositive (b + 0.5) (link (toIndex a) (toIndex b))
+  nj <- readMeta w JointCount
+  forEach (toIndex nj) $ \j -> do
+    a <- readJoint w j JA
+    b <- readJoint w j JB
+    whenPositive (b + 0.5) (link (toIndex a) (toIndex b))
+  forEach (toIndex count) $ \i -> find i >>= writeIsland w i IslandParent
+
+-- | The islands ('IslandCount'): the awake ones ('labelIslands') and the
+-- sleeping ones (their names, each counted once), and the movable bodies
+-- awake ('AwakeCount'). A static body is no island.
+countIslands :: Imp m => WorldArrays (Array m) -> m ()
+countIslands w = do
+  labelIslands w
+  count <- readMeta w BodyCount
+  islands <- newRef 0
+  awake <- newRef 0
+  forEach (toIndex count) $ \i -> do
+    m <- moving w i
+    modifyRef awake (+ m)
+    root <- readIsland w i IslandParent
+    whenPositive (m * select (0.5 - abs (root - toScalar i)) 1 0) (modifyRef islands (+ 1))
+  readRef awake >>= writeMeta w AwakeCount
+  -- the sleeping islands' names, marked as counted in the rank (scratch)
+  forEach (toIndex count) $ \i -> writeIsland w i IslandRank 0
+  forEach (toIndex count) $ \i -> do
+    asleep <- readSlot w i Asleep
+    whenPositive asleep $ do
+      label <- toIndex <$> readSlot w i Island
+      seen <- readIsland w label IslandRank
+      whenPositive (0.5 - seen) $ do
+        writeIsland w label IslandRank 1
+        modifyRef islands (+ 1)
+  readRef islands >>= writeMeta w IslandCount
+
+-- | Body @i@'s sleep state as a saved scene restores it: its timer
+-- @timer@, and, for a @label@ of 0 or more (a body's index), asleep in the
+-- island so named, at rest (nothing for a static body).
+setSleeping :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Scalar m -> m ()
+setSleeping w i label timer = do
+  invMass <- readSlot w i InvMass
+  writeSlot w i SleepTimer timer
+  whenPositive (minF invMass (label + 0.5)) $ do
+    -- the parameters it sleeps under count as seen: a world just loaded
+    -- has not stepped, and its first wake phase would otherwise wake it
+    forM_ [minBound .. maxBound :: Param] $ \k ->
+      readParam w k >>= writeArray (wSeenParams w) (fromIntegral (fromEnum k))
+    writeSlot w i Asleep 1
+    writeSlot w i Island label
+    write3 (wVel w) i 0
+    writeSlot w i Omega 0
