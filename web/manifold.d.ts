@@ -37,6 +37,11 @@ declare namespace Manifold {
     axis?: Vec3;
     normal?: Vec3;
     impulses?: Impulse[];
+    /** false: the body sleeps (docs/scenes.md#sleeping), in the island named by a sleeping body's index (default its own) */
+    awake?: boolean;
+    island?: number;
+    /** how long the body has moved slower than the sleep threshold (s) */
+    sleepTime?: number;
   }
   /** A joint's type (docs/scenes.md#joints). */
   type JointType = "revolute" | "distance" | "weld";
@@ -85,6 +90,11 @@ declare namespace Manifold {
     normal: Vec3;
     /** present when the body remembers contact impulses */
     impulses?: Impulse[];
+    /** present (false) when the body sleeps, with its island (a sleeping body's index) */
+    awake?: boolean;
+    island?: number;
+    /** present when the body's sleep timer runs (s) */
+    sleepTime?: number;
   }
   /**
    * A scene as loadScene reads it. The keys between space and bodies are the
@@ -105,6 +115,9 @@ declare namespace Manifold {
     slop?: number;
     jointHertz?: number;
     jointDampingRatio?: number;
+    sleep?: boolean;
+    sleepSpeed?: number;
+    sleepTime?: number;
     bodies?: SceneBody[];
     joints?: SceneJoint[];
   }
@@ -123,6 +136,9 @@ declare namespace Manifold {
     slop: number;
     jointHertz: number;
     jointDampingRatio: number;
+    sleep: boolean;
+    sleepSpeed: number;
+    sleepTime: number;
     bodies: Body[];
     joints?: SceneJoint[];
   }
@@ -222,19 +238,20 @@ declare namespace Manifold {
   type ArrayName =
     | "meta" | "params" | "pos" | "vel" | "axis" | "normal" | "scalars" | "radii" | "verts" | "outline"
     | "grid" | "cellOf" | "items" | "contacts" | "prev" | "bodyPrev" | "mouse" | "probe" | "near" | "walk"
-    | "joints" | "flip" | "partners";
+    | "joints" | "flip" | "partners" | "islands" | "seenParams";
   /** The world's counters and results, slots of the array meta. */
   type MetaName =
     | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
-    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint";
+    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint" | "awakeCount" | "islandCount" | "wakeRequest";
   /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
   type ParamName =
     | "dt" | "gravityOn" | "substeps" | "iterations" | "friction" | "restitution" | "contactHertz" | "dampingRatio"
-    | "pushout" | "slop" | "speculative" | "bounceThreshold" | "warmStart" | "polygonStep" | "jointHertz" | "jointDampingRatio";
+    | "pushout" | "slop" | "speculative" | "bounceThreshold" | "warmStart" | "polygonStep" | "jointHertz" | "jointDampingRatio"
+    | "sleep" | "sleepSpeed" | "sleepTime";
   /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
   type SlotName =
     | "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin"
-    | "movedX" | "movedY" | "movedZ" | "turned";
+    | "movedX" | "movedY" | "movedZ" | "turned" | "asleep" | "sleepTimer" | "island";
   type ContactField =
     | "cA" | "cB" | "cOwner" | "cKey" | "jaX" | "jaY" | "jaZ" | "jaW" | "jbX" | "jbY" | "jbZ" | "jbW"
     | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"
@@ -299,6 +316,10 @@ declare namespace Manifold {
     removeJoint: Procedure;
     /** (arrays, out): every joint's two anchors now, six numbers a joint */
     jointAnchors: Procedure;
+    /** (arrays): meta awakeCount and islandCount, counted now */
+    countIslands: Procedure;
+    /** (arrays, index, island (-1: awake), timer): a body's sleep state as a scene restores it */
+    setSleeping: Procedure;
     /** the state's hash: FNV-1a over these arrays' first (meta counter × numbers a row) numbers, in order */
     hashed: [ArrayName, MetaName, number][];
     /** why a restored body was refused (addBody's -2) */
@@ -389,6 +410,8 @@ declare namespace Manifold {
     grid: boolean;
     antialias: Antialias;
     bodyDetail: BodyDetail;
+    /** sleeping bodies drawn dimmed */
+    dimSleeping: boolean;
   }
   interface OptionsShown extends DisplayOptions {
     background: { top: Rgb; bottom: Rgb };
@@ -409,6 +432,9 @@ declare namespace Manifold {
     frames: number;
     preview: boolean;
     bodies: number;
+    /** the movable bodies awake, and the islands (awake and asleep) */
+    awake: number;
+    islands: number;
     joints: number;
     contacts: number;
     warnings: number;
@@ -443,6 +469,8 @@ declare namespace Manifold {
     dampingRatio: number | null;
     pushout: number | null;
     jointHertz: number | null;
+    /** islands at rest fall asleep */
+    sleep: boolean;
   }
   /**
    * What setSimulation takes: any subset. An engine parameter takes what its
@@ -468,6 +496,7 @@ declare namespace Manifold {
     pushout?: number;
     /** above 0 */
     jointHertz?: number;
+    sleep?: boolean;
   }
   type Pane = "torus-embedded" | "torus-flat" | "square-embedded" | "square-flat";
   interface ComparisonState {
@@ -500,6 +529,8 @@ declare namespace Manifold {
     shape: Shape;
     size: number;
     static: boolean;
+    /** in a sleeping island */
+    asleep: boolean;
     speed: number;
     omega: number;
     /** kinetic energy, translation and spin */

@@ -5,7 +5,10 @@
 // joins the body pressed on to the body released on with a pin, and, with
 // Ctrl held at the release on empty surface, a body to the world with a
 // distance joint; a joint made by the API that joins a body to itself, and a
-// scene with a malformed joint, are refused naming the problem.
+// scene with a malformed joint, are refused naming the problem. Sleeping:
+// two stacks fall asleep (stats() counts no body awake and two islands),
+// drawn dimmed unless "Dim sleeping" is off, saved with "awake": false;
+// a real press on a box of one stack wakes that stack only.
 import path from "node:path";
 import { OUT, canvasShot } from "./lib.mjs";
 import { openSpace } from "./bodies.mjs";
@@ -120,6 +123,49 @@ async function testRefusals(check, page) {
     JSON.stringify(r));
 }
 
+// (5) sleeping: two stacks on a floor fall asleep, dimmed; a press wakes one
+async function testSleeping(check, page) {
+  const at = await page.evaluate(function () {
+    const m = window.manifold;
+    const h = 0.1, top = -2.5 + 3 / Math.SQRT2;
+    const bodies = [{ shape: "square", size: 3, static: true, p: [0, 0, -2.5] }];
+    [-0.5, 0.5].forEach(function (x) {
+      for (let k = 0; k < 3; k++) bodies.push({ shape: "square", size: h, p: [x, 0, top + h / Math.SQRT2 + k * h * Math.SQRT2] });
+    });
+    return m.loadScene({ space: "plane", bodies: bodies }).then(function () {
+      m.pause();
+      m.step(150);
+      m.render();
+      const box = document.getElementById("view").getBoundingClientRect(), st = m.stats();
+      const px = function (i) { return m.project(m.scene().bodies[i].p); };
+      const css = function (q) { return [box.left + q[0] * box.width / st.width, box.top + q[1] * box.height / st.height]; };
+      return { awake: st.awake, islands: st.islands, saved: m.scene().bodies.map(function (b) { return b.awake !== false; }),
+        centres: [1, 2, 3, 4, 5, 6].map(px), press: css(px(2)) };
+    });
+  });
+  check("two stacks on a floor fall asleep within 1.5 s: stats() counts no body awake and two islands; saved, each box has \"awake\": false",
+    at.awake === 0 && at.islands === 2 && at.saved.join() === [true, false, false, false, false, false, false].join(),
+    JSON.stringify({ awake: at.awake, islands: at.islands, awakeSaved: at.saved }));
+  const dim = await canvasShot(page, path.join(OUT, "sleeping-dimmed.png"));
+  await page.evaluate(function () { window.manifold.setOptions({ dimSleeping: false }); window.manifold.render(); });
+  const bright = await canvasShot(page, path.join(OUT, "sleeping-bright.png"));
+  await page.evaluate(function () { window.manifold.setOptions({ dimSleeping: true }); window.manifold.render(); });
+  const lum = function (img, q) { const c = img.at(Math.round(q[0]), Math.round(q[1])); return c[0] + c[1] + c[2]; };
+  const darker = at.centres.filter(function (q) { return q && lum(dim, q) < lum(bright, q) - 30; }).length;
+  check("sleeping bodies are drawn dimmed: darker at every box's centre than with \"Dim sleeping\" off",
+    darker === 6, darker + " of 6 darker");
+  await page.mouse.move(at.press[0], at.press[1]);
+  await page.mouse.down();
+  const woke = await page.evaluate(function () {
+    const m = window.manifold;
+    m.step(1);
+    return { awake: m.stats().awake, bodies: m.scene().bodies.map(function (b) { return b.awake !== false; }) };
+  });
+  await page.mouse.up();
+  check("a press on a box of the left stack wakes that stack only (3 awake, the right stack asleep)",
+    woke.awake === 3 && woke.bodies.join() === [true, true, true, true, false, false, false].join(), JSON.stringify(woke));
+}
+
 export async function testJoints(check, context, base) {
   const errors = [];
   const page = await openSpace(context, base, "#scene=sphere-chain", errors);
@@ -127,6 +173,7 @@ export async function testJoints(check, context, base) {
   await testDrawn(check, page);
   await testJointTool(check, page);
   await testRefusals(check, page);
+  await testSleeping(check, page);
   check("joints page: no console errors", errors.length === 0, errors.join("; "));
   await page.close();
 }

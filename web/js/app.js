@@ -16,6 +16,7 @@
       onSpace: function (/** @type {string} */ name) { MW.space.setSpace(name).catch(function () {}); },
       onCurvature: function (/** @type {boolean} */ on) { hash.setOptions({ curvature: on }); },
       onGrid: function (/** @type {boolean} */ on) { hash.setOptions({ grid: on }); },
+      onDimSleeping: function (/** @type {boolean} */ on) { hash.setOptions({ dimSleeping: on }); },
       onAntialias: function (/** @type {Manifold.Antialias} */ mode) { hash.setOptions({ antialias: mode }); },
       onResetView: function () { if (state.space) state.camera.set(state.space.camera); },
       onAdd: guarded(function () { scenes.addAtView(); }),

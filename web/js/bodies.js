@@ -332,8 +332,8 @@ void main() {
 
     // Draws the world's bodies into the bound colour buffer of `frame` (see
     // the tracer's overlay hook).
-    /** @param {ManifoldWeb.DrawnWorld} world @param {ManifoldWeb.OverlayFrame} frame */
-    draw(world, frame) {
+    /** @param {ManifoldWeb.DrawnWorld} world @param {ManifoldWeb.OverlayFrame} frame @param {boolean} [dimSleeping] */
+    draw(world, frame, dimSleeping) {
       const gl = this.gl;
       const E = world.engine;
       const n = world.count();
@@ -357,10 +357,10 @@ void main() {
         // so comparing them by reference finds a change without building
         // anything each frame (a key string of all the colours was about 30 KB
         // of garbage a frame with 300 bodies).
-        if (this.coloursChanged(world.info, n) || relaid) {
+        if (this.coloursChanged(world, n, !!dimSleeping) || relaid) {
           let at = 0;
           for (let i = 0; i < n; i++) {
-            const c = world.info[i].colour;
+            const c = this.colourOf[i];
             for (let t = this.forms[this.formOf[i]].vertices.length; t > 0; t--, at += 3) {
               this.scratch[at] = c[0];
               this.scratch[at + 1] = c[1];
@@ -443,14 +443,24 @@ void main() {
 
     // Whether the first n bodies' colours differ from those the colour buffer
     // holds; if so, remembers them as held.
-    /** @param {ManifoldWeb.BodyInfo[]} info @param {number} n */
-    coloursChanged(info, n) {
-      const held = this.colourOf;
+    /**
+     * Whether the first n bodies' colours (each its own, or, for a sleeping
+     * body with dimSleeping, its dimmed one) differ from those the colour
+     * buffer holds; if so, remembers them as held.
+     * @param {ManifoldWeb.DrawnWorld} world @param {number} n @param {boolean} dimSleeping
+     */
+    coloursChanged(world, n, dimSleeping) {
+      const held = this.colourOf, info = world.info;
+      const asleep = world.engine.slots.asleep, k = world.engine.sizes.scalars[1], scalars = world.a.scalars;
+      const wanted = function (/** @type {number} */ i) {
+        const c = info[i].colour;
+        return dimSleeping && scalars[k * i + asleep] > 0 ? dimmed(c) : c;
+      };
       let changed = held.length !== n;
-      for (let i = 0; !changed && i < n; i++) changed = held[i] !== info[i].colour;
+      for (let i = 0; !changed && i < n; i++) changed = held[i] !== wanted(i);
       if (changed) {
         held.length = n;
-        for (let i = 0; i < n; i++) held[i] = info[i].colour;
+        for (let i = 0; i < n; i++) held[i] = wanted(i);
       }
       return changed;
     }
@@ -463,6 +473,20 @@ void main() {
       gl.deleteVertexArray(this.vao);
       gl.deleteVertexArray(this.markVao);
     }
+  }
+
+  // A sleeping body's colour: its own, halfway to the dark grey of the
+  // background, so that what sleeps reads at a glance. One array per colour
+  // (compared by reference, as the colours are).
+  const DIMMED = new WeakMap();
+  /** @param {Manifold.Rgb} c @returns {Manifold.Rgb} */
+  function dimmed(c) {
+    let d = DIMMED.get(c);
+    if (!d) {
+      d = /** @type {Manifold.Rgb} */ (c.map(function (/** @type {number} */ x) { return 0.45 * x + 0.55 * 0.22; }));
+      DIMMED.set(c, d);
+    }
+    return d;
   }
 
   const exported = { BodyRenderer: BodyRenderer, BODY_DETAILS: BODY_DETAILS };

@@ -100,7 +100,7 @@ var ManifoldWebCompare = (function (W) {
       return {
         engine: E, info: f.info, capacity: f.capacity, images: [],
         count: function () { return n; },
-        a: { verts: m },
+        a: { verts: m, scalars: f.a.scalars },
         target: f.target ? C.fromSquare(f.target[0], f.target[1], f.target[2]) : null,
       };
     }

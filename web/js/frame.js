@@ -45,7 +45,7 @@ var ManifoldWebFrame = (function (W) {
   /** @param {ManifoldWeb.OverlayFrame} frame */
   function drawBodies(frame) {
     frame.bodyDetail = state.options.bodyDetail;
-    if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame);
+    if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame, state.options.dimSleeping);
     MW.tools.draw(frame);
   }
 
@@ -151,13 +151,15 @@ var ManifoldWebFrame = (function (W) {
   /** @returns {Manifold.Stats} */
   function statsObject() {
     const w = state.world;
-    const counters = w ? w.counters() : { bodies: 0, joints: 0, contacts: 0, warnings: 0, droppedContacts: 0 };
+    const counters = w ? w.counters() : { bodies: 0, awake: 0, islands: 0, joints: 0, contacts: 0, warnings: 0, droppedContacts: 0 };
     return {
       fps: Math.round(fps(performance.now()) * 10) / 10,
       frameMs: drawn.gpuFrameMs === null ? null : Math.round(drawn.gpuFrameMs * 10) / 10,
       frames: drawn.frameCount,
       preview: state.preview,
       bodies: counters.bodies,
+      awake: counters.awake,
+      islands: counters.islands,
       joints: counters.joints,
       contacts: counters.contacts,
       warnings: counters.warnings,

@@ -1,4 +1,5 @@
-// The display options (curvature colouring, grid, antialiasing, body detail)
+// The display options (curvature colouring, grid, antialiasing, body detail,
+// sleeping bodies dimmed)
 // and the URL hash: the hash kept in step with the page (space, the preset
 // scene loaded, else bodies when not the default scene's count, options),
 // and a hash read back (at start and when it is edited) into a space, a
@@ -22,6 +23,7 @@ var ManifoldWebHash = (function (W) {
     else if (w && !state.compare && w.count() !== defaultBodyCount()) params.bodies = w.count();
     if (state.options.curvature) params.curvature = 1;
     if (!state.options.grid) params.grid = 0;
+    if (!state.options.dimSleeping) params.dim = 0;
     if (state.options.antialias !== P.DEFAULT_OPTIONS.antialias) params.aa = state.options.antialias;
     if (state.debugBrokenShader) params.debugBrokenShader = 1;
     const hash = MW.ui.formatHash(params);
@@ -35,7 +37,7 @@ var ManifoldWebHash = (function (W) {
 
   /** @param {Partial<Manifold.DisplayOptions>} o @returns {Manifold.DisplayOptions} */
   function setOptions(o) {
-    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail}");
+    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail, dimSleeping}");
     if (o.antialias !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(o.antialias) < 0) {
       throw new TypeError("antialias must be one of " + MW.tracer.ANTIALIAS_MODES.join(", "));
     }
@@ -44,10 +46,12 @@ var ManifoldWebHash = (function (W) {
     }
     if (o.curvature !== undefined) state.options.curvature = !!o.curvature;
     if (o.grid !== undefined) state.options.grid = !!o.grid;
+    if (o.dimSleeping !== undefined) state.options.dimSleeping = !!o.dimSleeping;
     if (o.antialias !== undefined) state.options.antialias = o.antialias;
     if (o.bodyDetail !== undefined) state.options.bodyDetail = o.bodyDetail;
     state.ui.setCurvature(state.options.curvature);
     state.ui.setGrid(state.options.grid);
+    state.ui.setDimSleeping(state.options.dimSleeping);
     state.ui.setAntialias(state.options.antialias);
     state.dirty = true;
     if (state.spaceName) updateHash();
@@ -60,6 +64,7 @@ var ManifoldWebHash = (function (W) {
     const o = {};
     if (params.curvature !== undefined) o.curvature = params.curvature === "1" || params.curvature === "true";
     if (params.grid !== undefined) o.grid = !(params.grid === "0" || params.grid === "false");
+    if (params.dim !== undefined) o.dimSleeping = !(params.dim === "0" || params.dim === "false");
     if (params.aa !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(params.aa) >= 0) o.antialias = /** @type {Manifold.Antialias} */ (params.aa);
     return o;
   }

@@ -26,7 +26,8 @@ var ManifoldWebInspector = (function (W) {
     if (!w || i < 0 || i >= w.count()) return null;
     const m = w.measureBody(i), info = w.info[i], E = w.engine;
     const size = w.a.scalars[i * w.stride() + E.slots.size], omega = w.a.scalars[i * w.stride() + E.slots.omega];
-    return { index: i, shape: info.shape, size: size, static: info.static, speed: m.speed, omega: omega, energy: m.energy, contacts: m.contacts };
+    const asleep = w.a.scalars[i * w.stride() + E.slots.asleep] > 0;
+    return { index: i, shape: info.shape, size: size, static: info.static, asleep: asleep, speed: m.speed, omega: omega, energy: m.energy, contacts: m.contacts };
   }
 
   // three significant digits (a size 0.200, an energy 0.000655)
@@ -58,7 +59,7 @@ var ManifoldWebInspector = (function (W) {
     box.hidden = d === null;
     if (!d || (state.world && inspector.version === state.world.version)) return;
     inspector.version = state.world.version;
-    box.textContent = "body " + d.index + " · " + shapeName(d.shape) + " " + fixed(d.size) + (d.static ? " · static" : "") +
+    box.textContent = "body " + d.index + " · " + shapeName(d.shape) + " " + fixed(d.size) + (d.static ? " · static" : "") + (d.asleep ? " · asleep" : "") +
       " · speed " + fixed(d.speed) + " · ω " + fixed(d.omega) + " · energy " + fixed(d.energy) + " · contacts " + d.contacts;
     const stage = /** @type {HTMLElement} */ (box.parentElement).getBoundingClientRect();
     box.style.left = Math.round(inspector.at[0] - stage.left + 14) + "px";

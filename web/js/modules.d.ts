@@ -67,7 +67,7 @@ declare namespace ManifoldWeb {
     capacity: number;
     images: Manifold.Image[];
     count(): number;
-    a: { verts: Float64Array };
+    a: { verts: Float64Array; scalars: Float64Array };
     target: Manifold.Vec3 | null;
   }
   /**

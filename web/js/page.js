@@ -22,7 +22,7 @@ var ManifoldWebPage = (function (W) {
   // World units between the lines of the (optional) coordinate grid drawn on the surface.
   const GRID_SPACING = 0.25;
   /** @type {Manifold.DisplayOptions} */
-  const DEFAULT_OPTIONS = { curvature: false, grid: true, antialias: "fxaa", bodyDetail: "auto" };
+  const DEFAULT_OPTIONS = { curvature: false, grid: true, antialias: "fxaa", bodyDetail: "auto", dimSleeping: true };
   // The comparison view's name in the space list and the URL (#space=compare-torus).
   const COMPARE = "compare-torus";
 

@@ -71,6 +71,7 @@ var ManifoldWebUi = (function (W) {
    * @property {(name: string) => void} onSpace
    * @property {(on: boolean) => void} onCurvature
    * @property {(on: boolean) => void} onGrid
+   * @property {(on: boolean) => void} onDimSleeping
    * @property {(mode: Manifold.Antialias) => void} onAntialias
    * @property {() => void} onResetView
    * @property {() => void} onAdd add the new body at a free point of the view
@@ -172,6 +173,8 @@ var ManifoldWebUi = (function (W) {
     const curvatureBox = $("curvature");
     /** @type {HTMLInputElement} */
     const gridBox = $("grid");
+    /** @type {HTMLInputElement} */
+    const dimBox = $("dim-sleeping");
     /** @type {HTMLSelectElement} */
     const antialiasSelect = $("antialias");
     const resetButton = $("reset-view");
@@ -192,6 +195,7 @@ var ManifoldWebUi = (function (W) {
     spaceSelect.addEventListener("change", function () { handlers.onSpace(spaceSelect.value); });
     curvatureBox.addEventListener("change", function () { handlers.onCurvature(curvatureBox.checked); });
     gridBox.addEventListener("change", function () { handlers.onGrid(gridBox.checked); });
+    dimBox.addEventListener("change", function () { handlers.onDimSleeping(dimBox.checked); });
     antialiasSelect.addEventListener("change", function () { handlers.onAntialias(/** @type {Manifold.Antialias} */ (antialiasSelect.value)); });
     resetButton.addEventListener("click", function () { handlers.onResetView(); });
     $("notice-close").addEventListener("click", function () { notice.hidden = true; });
@@ -362,6 +366,8 @@ var ManifoldWebUi = (function (W) {
       },
       /** @param {boolean} on */
       setGrid: function (on) { gridBox.checked = on; },
+      /** @param {boolean} on */
+      setDimSleeping: function (on) { dimBox.checked = on; },
       // the new body's controls: its template, and the space's own size (the slider spans a quarter to three times it)
       /** @param {{ shape: Manifold.Shape, size: number | null, density: number, static: boolean }} t @param {number} own */
       setNewBody: function (t, own) {

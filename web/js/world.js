@@ -30,8 +30,9 @@ var ManifoldWebWorld = (function (W) {
   // The keys that set engine parameters, with the values they take, are
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
   function sceneKeys() { return W.Manifold.sceneKeys; }
-  /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal">> & Pick<Manifold.SceneBody, "axis" | "normal">} ParsedBody */
-  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses"];
+  /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal" | "awake" | "island">> & Pick<Manifold.SceneBody, "axis" | "normal" | "awake" | "island">} ParsedBody */
+  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses",
+    "awake", "island", "sleepTime"];
   // what a scene body without these keys has (Manifold.Scene's defaults)
   const BODY_DEFAULTS = { density: 1, static: false };
 
@@ -100,6 +101,33 @@ var ManifoldWebWorld = (function (W) {
     }
     return problem(path, "must be \"circle\", \"square\" or {\"polygon\": N}");
   }
+  // The bodies' awake and island keys (after every body, as Manifold.Scene
+  // checks them): a sleeping body's island is named by the index of a
+  // sleeping body (its own by default); a static body does not sleep.
+  /** @param {unknown[]} values @param {ParsedBody[]} bodies */
+  function sleeping(values, bodies) {
+    /** @param {number} i */
+    const asleepAt = function (i) {
+      const o = values[i];
+      return isObject(o) && o.awake === false && !bodies[i].static;
+    };
+    bodies.forEach(function (b, k) {
+      const path = "$.bodies[" + k + "]", o = /** @type {Record<string, unknown>} */ (values[k]);
+      const awake = optional(path, o, "awake", true, boolean);
+      const label = optional(path, o, "island", null, function (at, x) {
+        if (typeof x !== "number" || x !== Math.round(x) || x < 0 || x >= values.length || !asleepAt(x)) {
+          problem(at, "must be the index of a sleeping body (one with \"awake\": false)");
+        }
+        return /** @type {number} */ (x);
+      });
+      if (awake && label !== null) problem(path + ".island", "is for a sleeping body (\"awake\": false)");
+      if (!awake && b.static) problem(path + ".awake", "a static body does not sleep");
+      if (!awake) {
+        b.awake = false;
+        b.island = label === null ? k : label;
+      }
+    });
+  }
   // a body's remembered contact impulses: [[key, normal, friction], ...]
   /** @param {string} path @param {unknown} v @returns {Manifold.Impulse[]} */
   function impulses(path, v) {
@@ -152,7 +180,13 @@ var ManifoldWebWorld = (function (W) {
       angle: optional(path, o, "angle", 0, number),
       omega: optional(path, o, "omega", 0, number),
       impulses: optional(path, o, "impulses", [], impulses),
+      sleepTime: optional(path, o, "sleepTime", 0, nonNegative),
     };
+    // (awake and island: in the scene's order, by sleeping, or by World.add)
+    if (o.awake === false) {
+      b.awake = false;
+      if (typeof o.island === "number") b.island = o.island;
+    }
     if (axis && normal) {
       b.axis = axis;
       b.normal = normal;
@@ -255,7 +289,9 @@ var ManifoldWebWorld = (function (W) {
     });
     scene.bodies = optional("$", o, "bodies", [], function (path, a) {
       if (!Array.isArray(a)) problem(path, "must be an array of bodies");
-      return a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
+      const bodies = a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
+      sleeping(a, bodies);
+      return bodies;
     });
     // (the remembered impulses' bound is checked when the scene is loaded)
     const n = scene.bodies.length;
@@ -406,7 +442,13 @@ var ManifoldWebWorld = (function (W) {
       const b = parseBody(v, "body");
       // a contact key names the other body by its index in a whole scene
       if (b.impulses.length) problem("body.impulses", "only a scene's bodies carry contact impulses (load the scene)");
-      return this.place(b);
+      if (b.island !== undefined) problem("body.island", "only a scene's bodies name an island (load the scene)");
+      if (isObject(v) && "awake" in v) boolean("body.awake", v.awake);
+      if (b.awake === false && b.static) problem("body.awake", "a static body does not sleep");
+      const i = this.place(b);
+      // a lone sleeping body is an island of its own
+      if (b.awake === false || b.sleepTime) this.engine.setSleeping.apply(null, this.args([i, b.awake === false ? i : -1, b.sleepTime]));
+      return i;
     }
 
     // Adds a parsed body (its impulses aside); returns its index or throws.
@@ -552,6 +594,12 @@ var ManifoldWebWorld = (function (W) {
         };
         const remembered = this.impulses(i);
         if (remembered.length) b.impulses = remembered;
+        if (a.scalars[i * k + S.asleep] > 0) {
+          b.awake = false;
+          b.island = a.scalars[i * k + S.island];
+        }
+        const timer = a.scalars[i * k + S.sleepTimer];
+        if (timer !== 0) b.sleepTime = timer;
         out.push(b);
       }
       return out;
@@ -740,6 +788,11 @@ var ManifoldWebWorld = (function (W) {
             " bodies remember (" + this.engine.contactsPerBody + " a body)");
         }
         this.restoreImpulses(remembered);
+        const E = this.engine;
+        scene.bodies.forEach(/** @this {World} */ function (b, k) {
+          const label = b.awake === false ? /** @type {number} */ (b.island) : -1;
+          E.setSleeping.apply(null, this.args([k, label, b.sleepTime || 0]));
+        }, this);
         (scene.joints || []).forEach(/** @this {World} */ function (j, k) { this.placeJoint(j, "$.joints[" + k + "]"); }, this);
       } catch (e) {
         this.arrays = saved.arrays;
@@ -876,8 +929,11 @@ var ManifoldWebWorld = (function (W) {
 
     // Contacts, warnings, dropped contacts: the engine's counters.
     counters() {
+      this.engine.countIslands.apply(null, this.args([]));
       return {
         bodies: this.count(),
+        awake: this.meta("awakeCount"),
+        islands: this.meta("islandCount"),
         joints: this.jointCount(),
         contacts: this.meta("contactCount"),
         warnings: this.meta("warnings"),
