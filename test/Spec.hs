@@ -30,7 +30,9 @@ main = do
     describe "Manifold.AD" ADSpec.spec
     describe "Manifold.Elementary" ElementarySpec.spec
     describe "Manifold.Surface" SurfaceSpec.spec
-    describe "Manifold.GeodesicPath" GeodesicPathSpec.spec
+    -- (parallel: the longest independent runs, each its own node process
+    -- or world, overlap the rest on the second core)
+    describe "Manifold.GeodesicPath" (parallel GeodesicPathSpec.spec)
     PresetSpec.spec
     MeasuresSpec.spec
     describe "Manifold.Body" BodySpec.spec
@@ -43,7 +45,7 @@ main = do
     describe "Joint" JointSpec.spec
     describe "Sleep" SleepSpec.spec
     FlatSpec.spec
-    GoldenSpec.spec
+    parallel GoldenSpec.spec
     ReadmeExampleSpec.spec
     -- the allocation guards (alone: cabal test --test-options='-m performance')
     describe "performance" EngineSpec.performanceSpec

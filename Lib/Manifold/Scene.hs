@@ -376,8 +376,9 @@ loadScene extra s = do
     Left e -> pure (Left e)
     Right _ -> do
       restored <- either (Left . ("$.bodies: " ++)) Right <$> restoreImpulses w (map bsImpulses (sceneBodies s))
-      forM_ (zip [0 ..] (sceneBodies s)) $ \(k, b) -> setSleepingAt w k (bsSleeping b) (bsCalmFor b)
       joined <- zipWithM (loadJoint w) [0 ..] (sceneJoints s)
+      -- asleep after the joints are made: a joint made wakes its bodies
+      forM_ (zip [0 ..] (sceneBodies s)) $ \(k, b) -> setSleepingAt w k (bsSleeping b) (bsCalmFor b)
       pure (restored >> sequence_ joined >> pure w)
 
 -- | Add a scene's joint @k@ to the world.

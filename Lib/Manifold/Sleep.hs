@@ -8,13 +8,13 @@
 -- zeroed. A sleeping body costs the step next to nothing: it is not moved,
 -- walked, collided with other sleeping or static bodies, nor solved.
 --
--- An island wakes whole: when an awake body touched one of its bodies in
--- the last step (a contact row between them), when a joint joins one of its
--- bodies to an awake one or is added or removed, when one of its bodies is
--- grabbed, when a body near it is removed, and every island when a
--- parameter changes. The wake phase runs first in the step, from the last
--- step's contacts: a body falling onto a sleeping pile pushes a sleeping
--- body (which the step does not move) for one step, then the pile is awake.
+-- An island wakes whole: when an awake body touches one of its bodies (a
+-- contact row between them, at the end of the step that found it: in that
+-- step the awake body pushes a sleeping one, which does not move), when a
+-- joint joins one of its bodies to an awake one or is added or removed,
+-- when one of its bodies is grabbed, when a body near it is removed, and
+-- every island when a parameter changes (the wake phase, first in the
+-- step, for what happened between steps).
 --
 -- Islands are found by a union–find over the movable awake bodies, only in
 -- steps where some body's timer has run out (a busy scene pays nothing for
@@ -88,10 +88,9 @@ wakeNear w i = do
   markIsland w i
 
 -- | The step's first phase: a parameter changed since the last step, or
--- sleeping is off, and every body wakes; otherwise the islands that the
--- last step's contacts and the joints link to awake bodies, and a grabbed
--- body's, are marked and woken. Then 'AwakeCount' counts the movable bodies
--- awake.
+-- sleeping is off, and every body wakes; otherwise the islands marked to
+-- wake since the last step (joints made or removed) and a grabbed body's
+-- wake. Then 'AwakeCount' counts the movable bodies awake.
 wakePhase :: Imp m => WorldArrays (Array m) -> m ()
 {-# SPECIALIZE wakePhase :: WorldArrays NativeArray -> Native () #-}
 wakePhase w = do
@@ -109,36 +108,32 @@ wakePhase w = do
     (forEach (toIndex count) (wakeBody w)
        >> forEach (toIndex count) (\i -> writeIsland w i IslandWake 0)
        >> writeMeta w WakeRequest 0)
-    (do let touching a b = do
-              ma <- moving w a
-              mb <- moving w b
-              whenPositive ma (markIsland w b)
-              whenPositive mb (markIsland w a)
-        nc <- readMeta w ContactCount
-        forEach (toIndex nc) $ \c -> do
-          a <- readContact w c CA
-          b <- readContact w c CB
-          whenPositive (b + 0.5) (touching (toIndex a) (toIndex b))
-        nj <- readMeta w JointCount
-        forEach (toIndex nj) $ \j -> do
-          a <- readJoint w j JA
-          b <- readJoint w j JB
-          whenPositive (b + 0.5) (touching (toIndex a) (toIndex b))
-        active <- readMouse w MActive
+    (do active <- readMouse w MActive
         whenPositive active $ readMouse w MBody >>= markIsland w . toIndex
         wakeMarked w)
   awake <- newRef 0
   forEach (toIndex count) (moving w >=> \m -> modifyRef awake (+ m))
   readRef awake >>= writeMeta w AwakeCount
 
--- | The end of the step: every awake body's sleep timer; where some timer
--- has run out, the islands, and those whose every body's timer has run
--- out fall asleep.
+-- | The end of the step: the sleeping islands that this step's contact
+-- rows or a joint link to an awake body wake (with the velocity the step's
+-- rows gave them: in the step they were pushed but did not move); every
+-- awake body's sleep timer; where some timer has run out, the islands, and
+-- those whose every body's timer has run out fall asleep. (Waking here,
+-- not as the next step begins, leaves nothing of it to the contact rows,
+-- which a saved scene does not hold.)
 sleepIslands :: Imp m => WorldArrays (Array m) -> m ()
 {-# SPECIALIZE sleepIslands :: WorldArrays NativeArray -> Native () #-}
 sleepIslands w = do
   on <- readParam w Sleep
   whenPositive on $ do
+    let touching a b = do
+          ma <- moving w a
+          mb <- moving w b
+          whenPositive ma (markIsland w b)
+          whenPositive mb (markIsland w a)
+    linkedPairs w touching
+    wakeMarked w
     dt <- readParam w Dt
     threshold <- readParam w SleepSpeed
     delay <- readParam w SleepTime
@@ -180,6 +175,21 @@ sleepIslands w = do
           writeSlot w i Omega 0
           readMeta w AwakeCount >>= writeMeta w AwakeCount . subtract 1
 
+-- | Run @visit a b@ for the two bodies of every contact row of the last
+-- step and of every joint (not those against a wall or the world): what
+-- links bodies into islands.
+linkedPairs :: Imp m => WorldArrays (Array m) -> (Index m -> Index m -> m ()) -> m ()
+{-# INLINE linkedPairs #-}
+linkedPairs w visit = do
+  let pairs count fieldA fieldB = forEach (toIndex count) $ \k -> do
+        a <- fieldA k
+        b <- fieldB k
+        whenPositive (b + 0.5) (visit (toIndex a) (toIndex b))
+  nc <- readMeta w ContactCount
+  pairs nc (\c -> readContact w c CA) (\c -> readContact w c CB)
+  nj <- readMeta w JointCount
+  pairs nj (\j -> readJoint w j JA) (\j -> readJoint w j JB)
+
 -- | The islands of the movable awake bodies, by union–find over the last
 -- step's contacts and the joints: each such body's 'IslandParent' is its
 -- island's root (a body of the island) after it.
@@ -215,16 +225,7 @@ labelIslands w = do
             ifPositive (kb - ka) (writeIsland w (toIndex ra) IslandParent rb) $ do
               writeIsland w (toIndex rb) IslandParent ra
               whenPositive (0.5 - abs (ka - kb)) (writeIsland w (toIndex ra) IslandRank (ka + 1))
-  nc <- readMeta w ContactCount
-  forEach (toIndex nc) $ \c -> do
-    a <- readContact w c CA
-    b <- readContact w c CB
-    whenPositive (b + 0.5) (link (toIndex a) (toIndex b))
-  nj <- readMeta w JointCount
-  forEach (toIndex nj) $ \j -> do
-    a <- readJoint w j JA
-    b <- readJoint w j JB
-    whenPositive (b + 0.5) (link (toIndex a) (toIndex b))
+  linkedPairs w link
   forEach (toIndex count) $ \i -> find i >>= writeIsland w i IslandParent
 
 -- | The islands ('IslandCount'): the awake ones ('labelIslands') and the

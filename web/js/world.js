@@ -788,12 +788,13 @@ var ManifoldWebWorld = (function (W) {
             " bodies remember (" + this.engine.contactsPerBody + " a body)");
         }
         this.restoreImpulses(remembered);
+        (scene.joints || []).forEach(/** @this {World} */ function (j, k) { this.placeJoint(j, "$.joints[" + k + "]"); }, this);
+        // asleep after the joints are made: a joint made wakes its bodies
         const E = this.engine;
         scene.bodies.forEach(/** @this {World} */ function (b, k) {
           const label = b.awake === false ? /** @type {number} */ (b.island) : -1;
           E.setSleeping.apply(null, this.args([k, label, b.sleepTime || 0]));
         }, this);
-        (scene.joints || []).forEach(/** @this {World} */ function (j, k) { this.placeJoint(j, "$.joints[" + k + "]"); }, this);
       } catch (e) {
         this.arrays = saved.arrays;
         this.capacity = saved.capacity;
