@@ -15,6 +15,7 @@
 module Manifold
   ( module Manifold.Field
   , module Manifold.AD
+  , module Manifold.Metric
   , module Manifold.Space
   , module Manifold.Spaces
   , module Manifold.Surface
@@ -24,6 +25,7 @@ module Manifold
 import Manifold.AD
 import Manifold.Body
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Space
 import Manifold.Spaces
 import Manifold.Surface

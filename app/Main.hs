@@ -186,12 +186,13 @@ geodesic a = do
   when (degenerate from) (Left ("--from: the gradient of " ++ spaceName sp ++ " vanishes at the start point, so it has no surface normal there; choose another point"))
   let start = projectToSurface f from
   when (degenerate start || any isNaN start) (Left "--from: the start point does not project onto the surface (the gradient vanishes on the way); choose a point nearer the surface")
-  let n = unitNormal f start
-      tangentDir = tangentProjection n dir
+  let metric = spaceMetric sp
+      n = unitNormal metric f start
+      tangentDir = tangentProjection metric n dir
   when (norm dir < 1e-12) (Left "--dir: the direction is zero")
-  when (norm tangentDir < 1e-9 * norm dir) (Left "--dir: the direction is normal to the surface at the start point, so it has no tangent part")
+  when (normIn metric tangentDir < 1e-9 * norm dir) (Left "--dir: the direction is normal to the surface at the start point, so it has no tangent part")
   let steps = max 1 (ceiling (len / h)) :: Int
-      path = geodesicPath f steps start tangentDir len
+      path = geodesicPath metric f steps start tangentDir len
       points = map fst path
       (end, endDir) = last path
   pure $ if gJson a

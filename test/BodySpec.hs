@@ -115,7 +115,7 @@ paramCases = [PolygonParams 3 1, PolygonParams 4 2, defaultPolygonParams, Polygo
 axisAt :: V3 Double -> V3 Double
 axisAt n =
   let pick = if abs (n `dot` V3 1 0 0) < 0.9 then V3 1 0 0 else V3 0 0 1
-  in safeNormalize (tangentProjection n pick)
+  in safeNormalize (tangentProjection Euclidean n pick)
 
 polygonCountSpec :: Spec
 polygonCountSpec = describe "polygonise: counts" $
@@ -123,7 +123,7 @@ polygonCountSpec = describe "polygonise: counts" $
     it (printf "match the parameters for %d directions × %d steps" d st) $ do
       let f = spaceField sphere
           p = V3 0 1 0
-          poly = polygonise f pp square 0.3 p (V3 1 0 0) (0.2 :: Double)
+          poly = polygonise Euclidean f pp square 0.3 p (V3 1 0 0) (0.2 :: Double)
           nv = 1 + d * st
           nt = d * (2 * st - 1)
       vertexCount pp `shouldBe` nv
@@ -151,8 +151,8 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
         forM_ (take 2 (spaceScene s)) $ \pl -> do
           let f = spaceField s
               c = projectToSurface f (placeAt pl)
-              n = unitNormal f c
-              poly = polygonise f defaultPolygonParams (shapeFromKind (placeShape pl)) (placeSize pl) c (axisAt n) (0.4 :: Double)
+              n = unitNormal Euclidean f c
+              poly = polygonise Euclidean f defaultPolygonParams (shapeFromKind (placeShape pl)) (placeSize pl) c (axisAt n) (0.4 :: Double)
           maximum (map (abs . evalField s) (polyOutline poly)) `shouldSatisfy` (< 1e-9)
           maximum (map (abs . evalField s) (polyVertices poly)) `shouldSatisfy` (< 1e-9)
   it "on the plane, a circle's outline is at distance size from the centre (1e-9), vertex j of s at j·size/s" $
@@ -161,7 +161,7 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
       forAll (choose (0.05, 1)) $ \size ->
       forAll (choose (0, 2 * pi)) $ \t -> forAll (choose (-3, 3)) $ \angle ->
         let pp = defaultPolygonParams
-            poly = polygonise (spaceField plane) pp circle size c (V3 (cos t) 0 (sin t)) angle
+            poly = polygonise Euclidean (spaceField plane) pp circle size c (V3 (cos t) 0 (sin t)) angle
             st = polySteps pp
             ringDist j = [vecDist c (polyVertices poly !! (1 + k * st + j - 1)) | k <- [0 .. polyDirections pp - 1]]
         in conjoin [ counterexample ("step " ++ show j) (all (closeAbs 1e-9 (size * fromIntegral j / fromIntegral st)) (ringDist j))
@@ -175,7 +175,7 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
         let pp = PolygonParams 16 3
             u = V3 (cos t) 0 (sin t)
             w = V3 0 1 0 `cross` u
-            poly = polygonise (spaceField plane) pp square size c u angle
+            poly = polygonise Euclidean (spaceField plane) pp square size c u angle
             expected k =
               let theta = 2 * pi * fromIntegral k / 16
                   -- circumradius size, a side facing θ = 0: the square
@@ -208,7 +208,7 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
       evaluate (directionSector (sectors 0) 1 (1 :: Double)) `shouldThrow` errorCall "sectors: at least one direction, got 0"
   it "polyLocal gives each vertex's (r, θ)" $ do
     let pp = PolygonParams 8 2
-        poly = polygonise (spaceField plane) pp circle 0.5 (V3 0 0 0) (V3 1 0 0) (0 :: Double)
+        poly = polygonise Euclidean (spaceField plane) pp circle 0.5 (V3 0 0 0) (V3 1 0 0) (0 :: Double)
     polyLocal poly `shouldSatisfy` \ls ->
       and [ closeAbs 1e-12 r (0.5 * fromIntegral j / 2) && closeAbs 1e-12 th (2 * pi * fromIntegral k / 8)
           | (idx, (r, th)) <- zip [0 :: Int ..] ls, idx > 0
@@ -217,7 +217,7 @@ polygonGeometrySpec = describe "polygonise: geometry" $ do
     forM_ [(0.1, defaultPolygonParams), (0.2, defaultPolygonParams), (0.3, defaultPolygonParams), (1.0, PolygonParams 36 32), (2.0, PolygonParams 24 64)] $ \(rho, pp) ->
       it (printf "ρ = %.1f, %d directions × %d steps" rho (polyDirections pp) (polySteps pp)) $
         property $ withMaxSuccess 20 $ forAll genUnitV3 $ \c -> forAll (genTangentUnit c) $ \u -> forAll (choose (-3, 3)) $ \angle ->
-          let poly = polygonise (spaceField sphere) pp circle rho c u angle
+          let poly = polygonise Euclidean (spaceField sphere) pp circle rho c u angle
               dists = [acos (max (-1) (min 1 (o `dot` c))) | o <- polyOutline poly]
           in counterexample ("distances " ++ show dists) $
                all (closeAbs 1e-3 rho) dists .&&. all ((< 1e-9) . abs . subtract 1 . norm) (polyOutline poly)

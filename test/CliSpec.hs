@@ -150,7 +150,7 @@ spec = do
             (len, relErr cliLength len) `shouldSatisfy` ((< 0.01) . snd)
             -- The end direction is a unit tangent vector.
             norm endDir `shouldSatisfy` closeAbs 1e-9 1
-            abs (unitNormal f end `dot` endDir) `shouldSatisfy` (< 1e-9)
+            abs (unitNormal Euclidean f end `dot` endDir) `shouldSatisfy` (< 1e-9)
 
   it "geodesic on the sphere stays on the great circle of its start and direction" $ do
     (code, out, _) <- run [ "geodesic", "--space", "sphere", "--from", "0,0,2", "--dir", "1,1,0"

@@ -262,7 +262,7 @@ freeMotionSpec = describe "Engine: free motion" $ do
     b <- readBody w 0
     verts <- freeze (wVerts (nwArrays w))
     let l = layout 32
-        poly = polygonise (spaceField sphere) (polygon l) square 0.2 (bsPos b) (bsAxis b) (bsAngle b)
+        poly = polygonise Euclidean (spaceField sphere) (polygon l) square 0.2 (bsPos b) (bsAxis b) (bsAngle b)
         expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
     maxDiff (take (length expected) verts) expected `shouldSatisfy` (< 1e-8)
 
@@ -279,7 +279,7 @@ freeMotionSpec = describe "Engine: free motion" $ do
           perBody = 3 * verticesPerBody l
       diffs <- forM (zip [0 ..] (spaceScene sp)) $ \(i, pl) -> do
         b <- readBody w i
-        let poly = polygonise (spaceField sp) (polygon l) (shapeFromKind (placeShape pl)) (placeSize pl) (bsPos b) (bsAxis b) (bsAngle b)
+        let poly = polygonise Euclidean (spaceField sp) (polygon l) (shapeFromKind (placeShape pl)) (placeSize pl) (bsPos b) (bsAxis b) (bsAngle b)
             expected = concat [[x, y, z] | V3 x y z <- polyVertices poly]
         pure (maxDiff (take perBody (drop (perBody * i) verts)) expected)
       (spaceName sp, length diffs > 1, maximum diffs < 1e-8) `shouldBe` (spaceName sp, True, True)
@@ -321,7 +321,7 @@ freeMotionSpec = describe "Engine: free motion" $ do
             outline d = let o = 3 * (verticesPerBody l * i + 1 + d * ns + ns - 1) in V3 (verts !! o) (verts !! (o + 1)) (verts !! (o + 2))
             expected d =
               let theta = bsAngle b + 2 * pi * fromIntegral d / fromIntegral nd
-                  (q, _, _) = geodesicStepFrom f (radii !! (nd * i + d)) n (bsPos b, cos theta *^ u ^+^ sin theta *^ v)
+                  (q, _, _) = geodesicStepFrom Euclidean f (radii !! (nd * i + d)) n (bsPos b, cos theta *^ u ^+^ sin theta *^ v)
               in q
         pure (maximum [distance (outline d) (expected d) | d <- [0 .. nd - 1]])
       (spaceName sp, maximum diffs < 1e-8) `shouldBe` (spaceName sp, True)
@@ -404,7 +404,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     saved <- sceneOfWorld scene w >>= either fail pure
     w' <- loadScene 0 saved >>= either fail pure
     let n = length (sceneBodies scene)
-        normalAt p = unitNormal (spaceField torus) p
+        normalAt p = unitNormal Euclidean (spaceField torus) p
         -- the direction a body's angle points to: its outline's orientation
         facing st = let u = bsAxis st
                         v = normalAt (bsPos st) `cross` u
@@ -412,7 +412,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     pairs <- forM [0 .. n - 1] $ \i -> (,) <$> readBody w i <*> readBody w' i
     -- the axes have turned away from where a body placed there starts (else
     -- the angle's conversion would go untested)
-    maximum [distance (bsAxis a) (referenceAxis (normalAt (bsPos a))) | (a, _) <- pairs] `shouldSatisfy` (> 0.1)
+    maximum [distance (bsAxis a) (referenceAxis Euclidean (normalAt (bsPos a))) | (a, _) <- pairs] `shouldSatisfy` (> 0.1)
     maximum [distance (bsPos a) (bsPos b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-9)
     maximum [distance (bsVel a) (bsVel b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-9)
     maximum [abs (bsOmega a - bsOmega b) | (a, b) <- pairs] `shouldSatisfy` (< 1e-12)

@@ -43,7 +43,7 @@ start sp = projectToSurface (spaceField sp) (firstPlacement sp)
 
 -- | A direction at the start that is not along the normal.
 direction :: Space -> V3 Double
-direction sp = let n = unitNormal (spaceField sp) (start sp) in cross n (V3 0.3 0.5 0.8)
+direction sp = let n = unitNormal Euclidean (spaceField sp) (start sp) in cross n (V3 0.3 0.5 0.8)
 
 spec :: Spec
 spec = describe "the page's geodesic tool (walkGeodesic)" $ do
@@ -65,7 +65,7 @@ spec = describe "the page's geodesic tool (walkGeodesic)" $ do
     let spaces = [ sp | sp <- catalogue, spaceQuotient sp == NoQuotient, not (hasBoundary sp) ]
     errs <- forM spaces $ \sp -> do
       walked <- walk sp (start sp) (direction sp) 1.2 64
-      let reference = map fst (geodesicPath (spaceField sp) 64 (start sp) (direction sp) 1.2)
+      let reference = map fst (geodesicPath Euclidean (spaceField sp) 64 (start sp) (direction sp) 1.2)
       pure (spaceName sp, length walked, maximum (zipWith vecDist (map fst walked) reference))
     [ e | e@(_, count, err) <- errs, count /= 65 || err > 1e-9 ] `shouldBe` []
     length spaces `shouldSatisfy` (>= 4)

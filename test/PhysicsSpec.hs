@@ -170,8 +170,8 @@ mouseScenario = Scenario "mouse (sphere)" sphere defaultParams
   [Grab 0 1 mouseGrabPoint 5 0.7 mouseMaxForce, Drag mouseTarget, Steps 150, Release, Steps 50]
 
 mouseGrabPoint, mouseTarget :: V3 Double
-mouseGrabPoint = fst (expMap (spaceField sphere) 8 (V3 0 0 1) (V3 1 1 0) 0.1)
-mouseTarget = fst (expMap (spaceField sphere) 16 mouseGrabPoint (V3 1 0.5 0) mouseDistance)
+mouseGrabPoint = fst (expMap Euclidean (spaceField sphere) 8 (V3 0 0 1) (V3 1 1 0) 0.1)
+mouseTarget = fst (expMap Euclidean (spaceField sphere) 16 mouseGrabPoint (V3 1 0.5 0) mouseDistance)
 
 mouseDistance :: Double
 mouseDistance = 0.5
@@ -289,7 +289,7 @@ heldAt :: NativeWorld -> Int -> V3 Double -> IO Held
 heldAt w i q = do
   b <- readBody w i
   let c = bsPos b
-      n = unitNormal (spaceField (nwSpace w)) c
+      n = unitNormal Euclidean (spaceField (nwSpace w)) c
       u = bsAxis b
       v = n `cross` u
       d = q - c
@@ -302,11 +302,11 @@ heldPoint w i (Held r theta) = do
   b <- readBody w i
   let f = spaceField (nwSpace w)
       c = bsPos b
-      n = unitNormal f c
+      n = unitNormal Euclidean f c
       u = bsAxis b
       v = n `cross` u
       phi = bsAngle b + theta
-  pure (fst (expMap f 4 c (fmap (* cos phi) u + fmap (* sin phi) v) r))
+  pure (fst (expMap Euclidean f 4 c (fmap (* cos phi) u + fmap (* sin phi) v) r))
 
 -- Random scenes ---------------------------------------------------------------
 

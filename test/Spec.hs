@@ -14,6 +14,7 @@ import qualified GeodesicPathSpec
 import qualified GoldenSpec
 import qualified ImpSpec
 import qualified MeasuresSpec
+import qualified MetricSpec
 import qualified PhysicsSpec
 import qualified PresetSpec
 import qualified ReadmeExampleSpec
@@ -30,6 +31,7 @@ main = do
     describe "Manifold.AD" ADSpec.spec
     describe "Manifold.Elementary" ElementarySpec.spec
     describe "Manifold.Surface" SurfaceSpec.spec
+    MetricSpec.spec
     -- (parallel: the longest independent runs, each its own node process
     -- or world, overlap the rest on the second core)
     describe "Manifold.GeodesicPath" (parallel GeodesicPathSpec.spec)

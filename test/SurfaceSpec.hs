@@ -73,9 +73,9 @@ transportSpec = describe "transport" $
         forAll (genNearSurfacePoint 0.1 s) $ \p ->
         forAll (genV3In 3) $ \v ->
           let f = spaceField s
-              n = unitNormal f p
+              n = unitNormal Euclidean f p
               w = v ^-^ (n `dot` v) *^ n
-              t = transport f p v
+              t = transport Euclidean f p v
           in (norm (gradAt s p) > 0.1 && norm w > 1e-3 * norm v) ==>
                counterexample ("p = " ++ showV3 p ++ ", v = " ++ showV3 v ++ " -> " ++ showV3 t) $
                  (abs (norm t - norm v) <= 1e-12 * norm v)
@@ -100,7 +100,7 @@ greatCircleSteps = round (2 * pi / 0.01 :: Double) -- 628, step ≈ 0.01
 greatCircle :: (V3 Double, V3 Double) -> (Double, Double, Double, Double, Double)
 greatCircle (p0, d) =
   let sf = spaceField sphere
-      path = geodesicPath sf greatCircleSteps p0 d (2 * pi)
+      path = geodesicPath Euclidean sf greatCircleSteps p0 d (2 * pi)
       (end, _) = last path
       (half, _) = path !! (greatCircleSteps `div` 2)
       nrm = p0 `cross` d
@@ -120,7 +120,7 @@ genTorusStart :: Gen (V3 Double, V3 Double)
 genTorusStart = (do
   (phi, psi) <- genTorusAngles
   let p = torusPoint phi psi
-  d <- genTangentUnit (unitNormal (spaceField torus) p)
+  d <- genTangentUnit (unitNormal Euclidean (spaceField torus) p)
   pure (p, d)) `suchThat` (\(p, d) -> abs (angularMomentum p d) >= 0.2)
 
 -- | Walk a torus geodesic of length 20 with the given step; returns (maximum
@@ -129,7 +129,7 @@ clairaut :: Double -> (V3 Double, V3 Double) -> (Double, Double, Double)
 clairaut h (p0, d) =
   let tf = spaceField torus
       n = round (20 / h)
-      path = geodesicPath tf n p0 d 20
+      path = geodesicPath Euclidean tf n p0 d 20
       l0 = angularMomentum p0 d
       drift = maximum [abs (angularMomentum p v - l0) / abs l0 | (p, v) <- path]
       pts = map fst path
@@ -140,14 +140,14 @@ geodesicSpec :: Spec
 geodesicSpec = describe "geodesicPath / expMap" $ do
   it "returns n + 1 points, starting at the start with the normalised tangent direction" $
     property $ withMaxSuccess 100 $ forAll genSphereStart $ \(p, d) -> forAll (choose (1, 50)) $ \n ->
-      let path = geodesicPath (spaceField sphere) n p (3 *^ d ^+^ 2 *^ p) 1
+      let path = geodesicPath Euclidean (spaceField sphere) n p (3 *^ d ^+^ 2 *^ p) 1
       in length path == n + 1 .&&. vecDist (fst (head path)) p == 0 .&&. vecDist (snd (head path)) d <= 1e-12
   it "on the plane walks a straight line of the given length" $
     property $ withMaxSuccess 100 $
       forAll ((\x z -> V3 x 0 z) <$> choose (-1, 1) <*> choose (-1, 1)) $ \p ->
       forAll (choose (0, 2 * pi)) $ \t -> forAll (choose (0.1, 3)) $ \len ->
         let d = V3 (cos t) 0 (sin t)
-            (end, endDir) = expMap (spaceField plane) 37 p d len
+            (end, endDir) = expMap Euclidean (spaceField plane) 37 p d len
         in vecDist end (p ^+^ len *^ d) <= 1e-9 .&&. vecDist endDir d <= 1e-12
 
   -- Measured once, printed, then checked.
@@ -167,7 +167,7 @@ geodesicSpec = describe "geodesicPath / expMap" $ do
   it "expMap is the last point of geodesicPath" $
     property $ withMaxSuccess 50 $ forAll genSphereStart $ \(p, d) ->
       let sf = spaceField sphere
-      in expMap sf 100 p d 1.3 == last (geodesicPath sf 100 p d 1.3)
+      in expMap Euclidean sf 100 p d 1.3 == last (geodesicPath Euclidean sf 100 p d 1.3)
 
   let starts = unGen (vectorOf 8 genTorusStart) (mkQCGen 2027) 30
   let cl01 = map (clairaut 0.01) starts
@@ -205,7 +205,7 @@ geodesicCircumference rho =
       pole = V3 0 1 0
       k = 720 :: Int
       n = ceiling (rho / 0.01)
-      ends = [ fst (expMap sf n pole (V3 (cos t) 0 (sin t)) rho)
+      ends = [ fst (expMap Euclidean sf n pole (V3 (cos t) 0 (sin t)) rho)
              | i <- [0 .. k - 1], let t = 2 * pi * fromIntegral i / fromIntegral k ]
   in sum (zipWith vecDist ends (tail ends ++ take 1 ends))
 
@@ -223,6 +223,6 @@ expMapSpec = describe "expMap" $ do
       (c, e) `shouldSatisfy` ((< 0.01) . snd)
   it "reaches the point at great-circle distance ρ (walked from random points)" $
     property $ withMaxSuccess 50 $ forAll genSphereStart $ \(p, d) -> forAll (choose (0.1, 3)) $ \rho ->
-      let (end, _) = expMap (spaceField sphere) (ceiling (rho / 0.01)) p d rho
+      let (end, _) = expMap Euclidean (spaceField sphere) (ceiling (rho / 0.01)) p d rho
           expected = cos rho *^ p ^+^ sin rho *^ d
       in counterexample ("end " ++ showV3 end ++ " expected " ++ showV3 expected) (vecDist end expected <= 1e-3)

@@ -18,12 +18,13 @@ import Data.List (sort, transpose)
 import Data.Maybe (fromMaybe, listToMaybe)
 import qualified Data.Map.Strict as M
 import GHC.Clock (getMonotonicTime)
-import Linear.Metric (distance, dot, norm, normalize)
+import Linear.Metric (normalize)
 import Linear.Vector ((*^), (^+^), (^-^))
-import Linear.V3 (V3 (..), cross)
+import Linear.V3 (V3 (..))
 import System.Random (mkStdGen, randomR)
 
 import Manifold.Engine
+import Manifold.Metric
 import Manifold.Space
 import Manifold.Spaces
 import Manifold.Surface
@@ -102,13 +103,15 @@ benchScene sp n =
       size = sqrt (area / (3 * fromIntegral n * ((pi + 2) / 2)))
       b = spaceBounds sp
       f = spaceField sp
+      metric = spaceMetric sp
       spacing = 2 * size
       usable p = not (any isNaN p) && abs (evalField sp p) < 1e-9 && inside p
-                 && evalBoundary sp p > size && norm (unitNormal f p) > 0.5
-      key (V3 x y z) = (floor (x / spacing), floor (y / spacing), floor (z / spacing)) :: (Int, Int, Int)
+                 && evalBoundary sp p > size && normIn metric (unitNormal metric f p) > 0.5
+      -- (cells of the broad phase's coordinates: a chord is never shorter)
+      key p = let V3 x y z = gridPoint metric p in (floor (x / spacing), floor (y / spacing), floor (z / spacing)) :: (Int, Int, Int)
       -- on a quotient space a body is also at its images
       images p = p : [applyIso g p | g <- quotientImages (spaceQuotient sp)]
-      far grid p = and [ distance p' q >= spacing
+      far grid p = and [ normIn metric (p' ^-^ q) >= spacing
                        | p' <- images p, let (i, j, k) = key p', di <- [-1, 0, 1], dj <- [-1, 0, 1], dk <- [-1, 0, 1]
                        , q <- M.findWithDefault [] (i + di, j + dj, k + dk) grid ]
       insert p = M.insertWith (++) (key p) [p]
@@ -123,11 +126,13 @@ benchScene sp n =
             in if usable p && far grid p then Just (p, g3) else seed g3 (tries - 1) grid
       around g p grid = go g (30 :: Int)
         where
-          nrm = unitNormal f p
+          nrm = unitNormal metric f p
           V3 nx _ _ = nrm
           a = if abs nx < 0.9 then V3 1 0 0 else V3 0 1 0
-          u = normalize (a ^-^ (a `dot` nrm) *^ nrm)
-          v = nrm `cross` u
+          -- (in R³ "Linear"'s normalize, which the golden scenes were made with)
+          unit = if metric == Euclidean then normalize else normalizeIn metric
+          u = unit (tangentProjection metric nrm a)
+          v = perpendicular metric nrm u
           go g0 0 = (Nothing, g0)
           go g0 k =
             let (theta, g1) = randomR (0, 2 * pi) g0

@@ -46,6 +46,7 @@ import Linear.Vector ((*^), (^+^))
 import System.IO.Unsafe (unsafePerformIO)
 
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Space (ShapeKind (..))
 import Manifold.Stage.Imp
 import Manifold.Surface
@@ -320,10 +321,10 @@ directionSector (Sectors nd cosines sines) x y
 -- | Walk the outline: from the centre @p@ with unit tangent axis @axis@ and
 -- angle @angle@, along a geodesic in each direction, in equal steps of
 -- @s(θ)/steps@, re-projecting every step.
-polygonise :: Field a => ScalarFn -> PolygonParams -> Shape -> a -> V3 a -> V3 a -> a -> Polygon a
-polygonise f pp shape size p axis angle =
-  let n = unitNormal f p
-      (u, w) = tangentFrame n axis
+polygonise :: Field a => Metric -> ScalarFn -> PolygonParams -> Shape -> a -> V3 a -> V3 a -> a -> Polygon a
+polygonise m f pp shape size p axis angle =
+  let n = unitNormal m f p
+      (u, w) = tangentFrame m n axis
       nd = polyDirections pp
       ns = polySteps pp
       walk d =
@@ -332,7 +333,7 @@ polygonise f pp shape size p axis angle =
             dir = cos phi *^ u ^+^ sin phi *^ w
             r = outlineAt shape size theta
             h = r / fromIntegral ns
-            ring = take ns (tail (iterate (geodesicStep f h) (p, dir)))
+            ring = take ns (tail (iterate (geodesicStep m f h) (p, dir)))
         in ( map fst ring
            , [(r * fromIntegral j / fromIntegral ns, theta) | j <- [1 .. ns]] )
       walks = map walk [0 .. nd - 1]

@@ -29,7 +29,7 @@ module Manifold.Collide
   , imageKeyGroup
   ) where
 
-import Linear.Metric (dot, norm, quadrance)
+import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
@@ -38,7 +38,8 @@ import Manifold.Field
 import Manifold.Joint (listPartners, notJoined)
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.Surface (tangentProjection, safeNormalize)
+import Manifold.Metric
+import Manifold.Surface (normalOf, tangentProjection)
 import Manifold.World
 
 -- | Sort the bodies into the buckets of a spatial hash of grid cells (a
@@ -71,7 +72,7 @@ buildGrid sp w = do
   let starts b = toIndex buckets + b
   forEach (toIndex buckets) $ \b -> writeArray (wGrid w) b 0
   forEach n $ \i -> do
-    p <- read3 (wPos w) i
+    p <- gridPoint (spaceMetric sp) <$> read3 (wPos w) i
     let V3 cx cy cz = fmap (cellCoord cell) p
     writeArray (wCellOf w) i (cellKey cx cy cz)
     b <- share (bucketOf buckets cx cy cz)
@@ -85,7 +86,7 @@ buildGrid sp w = do
     writeArray (wGrid w) b s -- the fill cursor; it ends at the bucket's end
     writeRef running (s + k)
   forEach n $ \i -> do
-    p <- read3 (wPos w) i
+    p <- gridPoint (spaceMetric sp) <$> read3 (wPos w) i
     let V3 cx cy cz = fmap (cellCoord cell) p
     b <- share (bucketOf buckets cx cy cz)
     k <- readArray (wGrid w) (toIndex b)
@@ -112,13 +113,14 @@ bucketOf buckets cx cy cz =
   let h = cx * 73856093 + cy * 19349663 + cz * 83492791
   in h - buckets * floorF (h / buckets)
 
--- | Run @visit j@ for every body @j@ in the 27 cells around point @p@.
-neighbours :: Imp m => WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
+-- | Run @visit j@ for every body @j@ in the 27 cells around point @p@
+-- (the cells of its 'gridPoint').
+neighbours :: Imp m => Metric -> WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
 {-# INLINE neighbours #-}
-neighbours w p visit = do
+neighbours metric w p visit = do
   buckets <- readMeta w GridBuckets
   cell <- readMeta w CellSize
-  V3 cx cy cz <- share3 (fmap (cellCoord cell) p)
+  V3 cx cy cz <- share3 (fmap (cellCoord cell) (gridPoint metric p))
   forEach 3 $ \dx -> forEach 3 $ \dy -> forEach 3 $ \dz -> do
     nx <- share (cx + toScalar dx - 1)
     ny <- share (cy + toScalar dy - 1)
@@ -136,11 +138,11 @@ neighbours w p visit = do
 -- depth (positive inside) and the outward direction of the edge it is
 -- nearest along its direction from Y's centre. Points far off Y's tangent
 -- plane (on another sheet of the surface) are never inside.
-pointInBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m))
+pointInBody :: Imp m => Metric -> Layout -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m))
 {-# INLINE pointInBody #-}
-pointInBody l w j y q = do
+pointInBody metric l w j y q = do
   turn <- bodyTurn w j
-  e <- edgeFacing l (sectors (polyDirections (polygon l))) w j y turn q
+  e <- edgeFacing metric l (sectors (polyDirections (polygon l))) w j y turn q
   pure (efDepth e, efNormal e)
 
 -- | The cosine and sine of body @j@'s angle as its outline was last walked,
@@ -159,22 +161,22 @@ data EdgeFacing s = EdgeFacing
   , efVertex :: V3 s -- ^ one end of the edge
   }
 
-edgeFacing :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> (Scalar m, Scalar m)
+edgeFacing :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Index m -> BodyFrame (Scalar m) -> (Scalar m, Scalar m)
            -> V3 (Scalar m) -> m (EdgeFacing (Scalar m))
 {-# INLINE edgeFacing #-}
-edgeFacing l sec w j y (c0, s0) q = do
+edgeFacing metric l sec w j y (c0, s0) q = do
   let nd = polyDirections (polygon l)
       c = bfCentre y
       d = q ^-^ c
-  qx <- share (d `dot` bfU y)
-  qy <- share (d `dot` bfW y)
-  h <- share (d `dot` bfNormal y)
+  qx <- share (inner metric d (bfU y))
+  qy <- share (inner metric d (bfW y))
+  h <- share (inner metric d (bfNormal y))
   -- the point turned back by the body's angle: in its own directions
   k <- share (directionSector sec (qx * c0 + qy * s0) (qy * c0 - qx * s0))
   let k1 = select (k - fromIntegral nd + 1.5) 0 (k + 1)
   o0 <- outlineVertex l w j (toIndex k)
   o1 <- outlineVertex l w j (toIndex k1)
-  let local o = let e = o ^-^ c in (e `dot` bfU y, e `dot` bfW y)
+  let local o = let e = o ^-^ c in (inner metric e (bfU y), inner metric e (bfW y))
       (ax, ay) = local o0
       (bx, by) = local o1
   ex <- share (bx - ax)
@@ -222,36 +224,36 @@ imageKeyGroup k = fromEnum FirstImageKey + k
 -- @carry@ takes a direction at body a to body b's side (the linear part of
 -- the image's isometry when b meets a's image; the identity otherwise), so
 -- that both friction rows act along the same direction.
-emitContact :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
+emitContact :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> Scalar m -> Index m -> Scalar m
             -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> Scalar m -> Scalar m
             -> (V3 (Scalar m) -> V3 (Scalar m)) -> m ()
-emitContact w owner key a b ra dirA rb dirB depth selfScale coupling carry = do
+emitContact metric w owner key a b ra dirA rb dirB depth selfScale coupling carry = do
   count <- readMeta w ContactCount
   cap <- readMeta w Capacity -- the arrays' capacity is the caller's, not the layout's
   ifPositive (fromIntegral contactsPerBody * maxF 1 cap - count - 0.5)
     (do let c = toIndex count
         writeMeta w ContactCount (count + 1)
-        fa <- bodyFrame w a
-        let ta = bfNormal fa `cross` dirA
+        fa <- bodyFrame metric w a
+        let ta = perpendicular metric (bfNormal fa) dirA
             rA = ra ^-^ bfCentre fa
         writeContact w c CA (toScalar a)
         writeContact w c CB b
         writeContact w c COwner (toScalar owner)
         writeContact w c CKey key
-        writeContact3 w c JaX (tangentProjection (bfNormal fa) dirA)
+        writeContact3 w c JaX (tangentProjection metric (bfNormal fa) dirA)
         writeContact w c JaW (coupling * ((rA `cross` dirA) `dot` bfNormal fa))
-        writeContact3 w c TaX (coupling *^ tangentProjection (bfNormal fa) ta)
+        writeContact3 w c TaX (coupling *^ tangentProjection metric (bfNormal fa) ta)
         writeContact w c TaW (coupling * ((rA `cross` ta) `dot` bfNormal fa))
         writeContact w c CDepth depth
         writeContact w c CSelfScale selfScale
         writeContact3 w c PointX ra
         ifPositive (b + 0.5)
-          (do fb <- bodyFrame w (toIndex b)
+          (do fb <- bodyFrame metric w (toIndex b)
               let tb = carry ta
                   rB = rb ^-^ bfCentre fb
-              writeContact3 w c JbX (tangentProjection (bfNormal fb) dirB)
+              writeContact3 w c JbX (tangentProjection metric (bfNormal fb) dirB)
               writeContact w c JbW ((rB `cross` dirB) `dot` bfNormal fb)
-              writeContact3 w c TbX (tangentProjection (bfNormal fb) tb)
+              writeContact3 w c TbX (tangentProjection metric (bfNormal fb) tb)
               writeContact w c TbW ((rB `cross` tb) `dot` bfNormal fb))
           (do writeContact3 w c JbX (V3 0 0 0)
               writeContact w c JbW 0
@@ -261,9 +263,9 @@ emitContact w owner key a b ra dirA rb dirB depth selfScale coupling carry = do
 
 -- | Run the test only for a point within body @y@'s bounding radius of its
 -- centre (no point farther out can be inside it).
-whenNear :: Imp m => BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
+whenNear :: Imp m => Metric -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m () -> m ()
 {-# INLINE whenNear #-}
-whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre fy))
+whenNear metric fy q = whenPositive (bfSize fy * bfSize fy - quadranceIn metric (q ^-^ bfCentre fy))
 
 -- | The contacts of a touching pair: body @x@, mapped by the isometry @g@
 -- (the identity, or the image of @x@ that @y@ meets), and body @y@; up to
@@ -286,32 +288,32 @@ whenNear fy q = whenPositive (bfSize fy * bfSize fy - quadrance (q ^-^ bfCentre 
 -- Printed as one JavaScript subroutine for every pair and image (the
 -- isometry is passed as numbers): inlined at each of its call sites, the
 -- collision phase outgrew what V8 optimises on the quotient spaces.
-pairContacts :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
+pairContacts :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
              -> Index m -> Index m -> Isometry -> m ()
 -- (Inlined natively, where a subroutine is its body: called, the generic
 -- step built its arguments' list for every candidate pair.)
 {-# INLINE pairContacts #-}
-pairContacts l sec w keyBase x y g =
+pairContacts metric l sec w keyBase x y g =
   subroutine "pairContacts"
     ([keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g))
     (\case
         [keyBase', x', y', sx, sy, sz, tx, ty, tz] ->
-          pairContactsVia l sec w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
+          pairContactsVia metric l sec w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
         _ -> error "pairContacts: nine arguments")
   where coefficients (V3 a b c) = map constant [a, b, c]
 
 -- | @pairContacts@ with the isometry @p ↦ signs·p + shift@ as scalars (its
 -- inverse is @p ↦ signs·p − signs·shift@: the signs are ±1, so the linear
 -- part is its own inverse).
-pairContactsVia :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
+pairContactsVia :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
                 -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> m ()
 {-# INLINE pairContactsVia #-}
-pairContactsVia l sec w keyBase x y signs shift = do
+pairContactsVia metric l sec w keyBase x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
   backShift <- share3 (negated (signs * shift))
   margin <- speculativeMargin w x y
-  (deepXY, normalXY, edgeXY) <- deepestInside l sec w margin 0 x y signs shift
-  (deepYX, normalYX, edgeYX) <- deepestInside l sec w margin nd y x signs backShift
+  (deepXY, normalXY, edgeXY) <- deepestInside metric l sec w margin 0 x y signs shift
+  (deepYX, normalYX, edgeYX) <- deepestInside metric l sec w margin nd y x signs backShift
   -- (depths counted from −margin, so that a way with no vertex near is 0)
   yInX <- share ((deepYX + margin) - 1.1 * (deepXY + margin))
   let pick a b = select yInX b a
@@ -330,12 +332,12 @@ pairContactsVia l sec w keyBase x y signs shift = do
         linear v = signs * v
         mv = toIndex mover
         rf = toIndex reference
-    fr <- bodyFrame w rf
+    fr <- bodyFrame metric w rf
     -- a vertex pushed past the reference body's centre faces its far edge,
     -- whose normal would push the mover further in: then the push is
     -- turned round, and its depth is the deepest vertex's
     moverCentre <- read3 (wPos w) mv
-    facing <- share ((image moverCentre ^-^ bfCentre fr) `dot` edgeNormal)
+    facing <- share (inner metric (image moverCentre ^-^ bfCentre fr) edgeNormal)
     -- The edge's normal lies in the reference body's tangent plane; the
     -- push is along it as the tangent plane midway between the bodies
     -- sees it, so that each body's row (the push projected to its own
@@ -343,13 +345,13 @@ pairContactsVia l sec w keyBase x y signs shift = do
     -- surface as they do on a plane (along the reference body's plane, on
     -- a sphere they would drive the pair sideways, from nothing).
     moverNormal <- read3 (wNormal w) mv
-    mid <- share3 (safeNormalize (linear moverNormal ^+^ bfNormal fr))
-    m0 <- share3 (safeNormalize (tangentProjection mid (fmap (\v -> select facing v (negate v)) edgeNormal)))
-    t <- share3 (bfNormal fr `cross` m0)
+    mid <- share3 (normalizeIn metric (linear moverNormal ^+^ bfNormal fr))
+    m0 <- share3 (normalizeIn metric (tangentProjection metric mid (fmap (\v -> select facing v (negate v)) edgeNormal)))
+    t <- share3 (perpendicular metric (bfNormal fr) m0)
     (dLo, dHi) <- extremesAlong margin nd $ \d -> do
       q <- outlineVertex l w mv d
       depth <- readArray (wProbe w) (toIndex moverProbe + d)
-      pure (depth, (image q ^-^ bfCentre fr) `dot` t)
+      pure (depth, inner metric (image q ^-^ bfCentre fr) t)
     -- Where the touching ends along the edge: at the reference body's
     -- ends (its vertices on the reference edge's line), unless the
     -- mover's outline ends first. A mover that overhangs the reference
@@ -360,9 +362,9 @@ pairContactsVia l sec w keyBase x y signs shift = do
     -- Left at the last vertex inside, the support narrowed by a whole
     -- outline edge the moment the mover's corner cleared the margin, and
     -- tall stacks rocked over.
-    let along q = (q ^-^ bfCentre fr) `dot` t
-    (refLo, refHi) <- referenceEnds l w rf margin o0 edgeNormal along
-    let behind q = (o0 ^-^ q) `dot` m0
+    let along q = inner metric (q ^-^ bfCentre fr) t
+    (refLo, refHi) <- referenceEnds metric l w rf margin o0 edgeNormal along
+    let behind q = inner metric (o0 ^-^ q) m0
         ndS = fromIntegral (polyDirections (polygon l))
         nextOf k = select (k - ndS + 1.5) 0 (k + 1)
         prevOf k = select (0.5 - k) (ndS - 1) (k - 1)
@@ -395,7 +397,7 @@ pairContactsVia l sec w keyBase x y signs shift = do
           rb <- share3 (lerp3 query (toward3 qUp qDown))
           d <- share (depth + s * (toward dUp dDown - depth))
           pure (ra, rb, select facing d best, s)
-        emitAt slot (ra, rb, d, _) = emitContact w x (keyBase + slot) mv reference ra (linear m0) rb m0 d 1 1 linear
+        emitAt slot (ra, rb, d, _) = emitContact metric w x (keyBase + slot) mv reference ra (linear m0) rb m0 d 1 1 linear
     lo <- clipAt dLo refLo
     hi <- clipAt dHi refHi
     emitAt 0 lo
@@ -409,16 +411,16 @@ pairContactsVia l sec w keyBase x y signs shift = do
 -- position ('along') of its outline vertices within @margin@ of the line
 -- through its vertex @o0@ with outward normal @normal@ (@o0@'s own when no
 -- other is).
-referenceEnds :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m) -> V3 (Scalar m)
+referenceEnds :: Imp m => Metric -> Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m) -> V3 (Scalar m)
               -> (V3 (Scalar m) -> Scalar m) -> m (Scalar m, Scalar m)
 {-# INLINE referenceEnds #-}
-referenceEnds l w rf margin o0 normal along = do
+referenceEnds metric l w rf margin o0 normal along = do
   start <- share (along o0)
   lo <- newRef start
   hi <- newRef start
   forEach (fromIntegral (polyDirections (polygon l))) $ \d -> do
     v <- outlineVertex l w rf d
-    whenPositive ((v ^-^ o0) `dot` normal + margin) $ do
+    whenPositive (inner metric (v ^-^ o0) normal + margin) $ do
       s <- share (along v)
       readRef lo >>= writeRef lo . minF s
       readRef hi >>= writeRef hi . maxF s
@@ -444,13 +446,13 @@ speculativeMargin w x y = do
 -- vertex's depth (−1 when it is not near y) is left in the probe array from
 -- @slot@ on, so that the pair's contact points are chosen without testing
 -- the vertices again.
-deepestInside :: Imp m => Layout -> Sectors -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> Index m
+deepestInside :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> Index m
               -> V3 (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
 {-# INLINE deepestInside #-}
-deepestInside l sec w margin slot x y signs shift = do
+deepestInside metric l sec w margin slot x y signs shift = do
   let nd = fromIntegral (polyDirections (polygon l))
       image q = signs * q + shift
-  fy <- bodyFrame w y
+  fy <- bodyFrame metric w y
   turn <- bodyTurn w y
   deepest <- newRef (negate margin)
   mx <- newRef 0
@@ -462,8 +464,8 @@ deepestInside l sec w margin slot x y signs shift = do
   forEach nd $ \d -> do
     q <- outlineVertex l w x d
     writeArray (wProbe w) (slot + d) (-1)
-    whenNear fy (image q) $ do
-      e <- edgeFacing l sec w y fy turn (image q)
+    whenNear metric fy (image q) $ do
+      e <- edgeFacing metric l sec w y fy turn (image q)
       writeArray (wProbe w) (slot + d) (efDepth e)
       best <- readRef deepest
       whenPositive (efDepth e - best) $ do
@@ -500,6 +502,7 @@ boundaryContacts sp l w i = case spaceBoundary sp of
   Nothing -> pure ()
   Just bf -> do
     let b = evalFn bf
+        metric = spaceMetric sp
     let nd = fromIntegral (polyDirections (polygon l))
         key = fromIntegral (fromEnum BoundaryKey) * fromIntegral keysPerGroup
     n <- read3 (wNormal w) i
@@ -514,34 +517,36 @@ boundaryContacts sp l w i = case spaceBoundary sp of
     dd <- readRef dDeep
     whenPositive (dd + 0.5) $ do
       q0 <- outlineVertex l w i (toIndex dd)
-      dir0 <- share3 (safeNormalize (gradFn bf q0))
-      t <- share3 (n `cross` dir0)
+      dir0 <- share3 (normalOf metric (gradFn bf q0))
+      t <- share3 (perpendicular metric n dir0)
       (dLo, dHi) <- extremesAlong margin nd $ \d -> do
         q <- outlineVertex l w i d
-        pure (negate (b q), q `dot` t)
+        pure (negate (b q), inner metric q t)
       let emitAt slot dv = do
             q <- outlineVertex l w i (toIndex dv)
             g <- share3 (gradFn bf q)
-            gl <- share (norm g)
+            gl <- share (normIn metric (raise metric g))
             bv <- share (b q)
-            let dir = safeNormalize g
+            let dir = normalOf metric g
                 depth = select gl (negate bv / maxF gl 1e-300) 0
-            emitContact w i (key + slot) i (-1) q dir q dir depth 1 1 id
+            emitContact metric w i (key + slot) i (-1) q dir q dir depth 1 1 id
       emitAt 0 dLo
       whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
--- | The closest points of two segments in R³: their parameters along each
--- (in [0, 1]) and their distance (branches by 'select', so it stages).
-segmentClosest :: Field a => V3 a -> V3 a -> V3 a -> V3 a -> (a, a, a)
-segmentClosest p0 p1 q0 q1 =
+-- | The closest points of two segments (under the metric: the segments of
+-- a body's rays are space-like): their parameters along each (in [0, 1])
+-- and their distance (branches by 'select', so it stages).
+segmentClosest :: Field a => Metric -> V3 a -> V3 a -> V3 a -> V3 a -> (a, a, a)
+segmentClosest metric p0 p1 q0 q1 =
   let d1 = p1 ^-^ p0
       d2 = q1 ^-^ q0
       r = p0 ^-^ q0
-      a = d1 `dot` d1
-      e = d2 `dot` d2
-      f = d2 `dot` r
-      c = d1 `dot` r
-      b = d1 `dot` d2
+      dot' = inner metric
+      a = d1 `dot'` d1
+      e = d2 `dot'` d2
+      f = d2 `dot'` r
+      c = d1 `dot'` r
+      b = d1 `dot'` d2
       denom = a * e - b * b
       clamp01 = clampF 0 1
       safeDiv x y = select (abs y - 1e-300) (x / y) 0
@@ -549,7 +554,7 @@ segmentClosest p0 p1 q0 q1 =
       t0 = safeDiv (b * s0 + f) e
       s1 = select (negate t0) (clamp01 (safeDiv (negate c) a)) (select (t0 - 1) (clamp01 (safeDiv (b - c) a)) s0)
       t1 = clamp01 t0
-      gap = norm ((p0 ^+^ s1 *^ d1) ^-^ (q0 ^+^ t1 *^ d2))
+      gap = normIn metric ((p0 ^+^ s1 *^ d1) ^-^ (q0 ^+^ t1 *^ d2))
   in (s1, t1, gap)
 
 -- | The paper's self-contact (§4.2): a body as large as the space around it
@@ -571,7 +576,8 @@ segmentClosest p0 p1 q0 q1 =
 -- curved places never trigger.
 selfContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 selfContacts sp l w i = do
-  let nd = polyDirections (polygon l)
+  let metric = spaceMetric sp
+      nd = polyDirections (polygon l)
       ns = polySteps (polygon l)
       vpb = fromIntegral (verticesPerBody l)
       vertex d k = read3 (wVerts w) (vpb * i + vertexIndex (polygon l) d k) -- step k along d
@@ -583,7 +589,7 @@ selfContacts sp l w i = do
   forEach (fromIntegral nd) $ \d -> do
     o <- outlineVertex l w i d
     r <- readArray (wRadii w) (fromIntegral nd * i + d)
-    modifyRef turn (minF (select r (norm (o ^-^ c) / r) 1))
+    modifyRef turn (minF (select r (normIn metric (o ^-^ c) / r) 1))
   straightness <- readRef turn
   whenPositive (0.8 - straightness) $ do
     deepest <- newRef 0
@@ -602,7 +608,7 @@ selfContacts sp l w i = do
     forEach (fromIntegral nd) $ \d -> forLoop 1 (fromIntegral ns) $ \k -> do
       a0 <- vertex d k
       a1 <- vertex d (k + 1)
-      modifyRef longest (maxF (quadrance (a1 ^-^ a0)))
+      modifyRef longest (maxF (quadranceIn metric (a1 ^-^ a0)))
     segment <- share . sqrt =<< readRef longest
     forEach (fromIntegral nd) $ \d -> do
       rd <- readArray (wRadii w) (fromIntegral nd * i + d)
@@ -620,8 +626,8 @@ selfContacts sp l w i = do
             b0 <- vertex d' k'
             b1 <- vertex d' (k' + 1)
             let midpoints = 0.5 *^ ((a0 ^+^ a1) ^-^ (b0 ^+^ b1))
-            whenPositive (reach - quadrance midpoints) $ do
-              let (s, t, gap) = segmentClosest a0 a1 b0 b1
+            whenPositive (reach - quadranceIn metric midpoints) $ do
+              let (s, t, gap) = segmentClosest metric a0 a1 b0 b1
                   arc = rd * (toScalar k + s) / fromIntegral ns
                   arc' = rd' * (toScalar k' + t) / fromIntegral ns
                   depth = 0.5 * ((rd - arc) + (rd' - arc'))
@@ -631,7 +637,7 @@ selfContacts sp l w i = do
                 first <- vertex d 1
                 first' <- vertex d' 1
                 let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
-                    V3 u v q = negated (safeNormalize (first ^-^ c) ^+^ safeNormalize (first' ^-^ c))
+                    V3 u v q = negated (normalizeIn metric (first ^-^ c) ^+^ normalizeIn metric (first' ^-^ c))
                 writeRef px x >> writeRef py y >> writeRef pz z
                 writeRef mx u >> writeRef my v >> writeRef mz q
     best <- readRef deepest
@@ -639,10 +645,10 @@ selfContacts sp l w i = do
       point <- V3 <$> readRef px <*> readRef py <*> readRef pz
       m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
       n <- share3 (unitNormalAt point)
-      dir <- share3 (safeNormalize (tangentProjection n m0))
-      emitContact w i selfKey i (-1) point dir point dir best 0.6 0 id
+      dir <- share3 (normalizeIn metric (tangentProjection metric n m0))
+      emitContact metric w i selfKey i (-1) point dir point dir best 0.6 0 id
   where
-    unitNormalAt = safeNormalize . gradFn (spaceField sp)
+    unitNormalAt = normalOf (spaceMetric sp) . gradFn (spaceField sp)
     selfKey = fromIntegral (fromEnum SelfKey) * fromIntegral keysPerGroup
 
 -- | Every contact of this step, owned by the lower-numbered body of each
@@ -668,6 +674,7 @@ collideAwake sp l w = do
   joints <- readMeta w JointCount
   whenPositive joints $ listPartners w
   let images = quotientImages (spaceQuotient sp)
+      metric = spaceMetric sp
       sec = sectors (polyDirections (polygon l))
       -- where the quotient has a fundamental domain, only images that
       -- come within reach of it
@@ -688,7 +695,7 @@ collideAwake sp l w = do
     let pairs g keyOffset self = do
           gp <- share3 (applyIso g p)
           writeRef found 0
-          nearDomain gp (ri + cell) $ neighbours w gp $ \j -> do
+          nearDomain gp (ri + cell) $ neighbours metric w gp $ \j -> do
             -- each unordered pair once: j > i (j >= i for an image the body
             -- may meet itself through: its own image), or j still
             movingJ <- moving w j
@@ -697,7 +704,7 @@ collideAwake sp l w = do
               pj <- read3 (wPos w) j
               rj <- readSlot w j BoundRadius
               invMj <- readSlot w j InvMass
-              let gap = ri + rj - norm (gp ^-^ pj)
+              let gap = ri + rj - normIn metric (gp ^-^ pj)
               whenPositive (minF gap (minF (invMi + invMj) (select joints (notJoined partners (toScalar j)) 1))) $ do
                 -- a body is in one cell, so listed at most once
                 k <- readRef found
@@ -706,7 +713,7 @@ collideAwake sp l w = do
           nearCount <- readRef found
           forEach (toIndex nearCount) $ \k -> do
             j <- toIndex <$> readArray (wNear w) k
-            pairContacts l sec w ((toScalar j + 1) * fromIntegral keysPerBody + keyOffset) i j g
+            pairContacts metric l sec w ((toScalar j + 1) * fromIntegral keysPerBody + keyOffset) i j g
     pairs identityIso 0 False
     mapM_ (\(k, g) -> pairs g (fromIntegral (keysPerGroup * imageKeyGroup k)) (selfImage g)) (zip [0 :: Int ..] images)
     boundaryContacts sp l w i

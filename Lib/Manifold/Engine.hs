@@ -181,7 +181,7 @@ releaseMouse w = runNative (release (nwArrays w))
 
 -- | Remove body @i@; the last body takes its index ('removeBody').
 removeBodyAt :: NativeWorld -> Int -> IO ()
-removeBodyAt w i = runNative (removeBody (nwLayout w) (nwArrays w) i)
+removeBodyAt w i = runNative (removeBody (nwSpace w) (nwLayout w) (nwArrays w) i)
 
 -- | Add a joint of a kind between body @a@ and body @b@ (−1: the world),
 -- anchored at two surface points (for a pin, the same point twice): its

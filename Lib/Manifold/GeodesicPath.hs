@@ -19,6 +19,7 @@ import Linear.V3 (V3 (..))
 import Linear.Vector ((^-^))
 
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Surface
@@ -54,8 +55,9 @@ walkGeodesic :: Imp m => Space -> Array m -> V3 (Scalar m) -> V3 (Scalar m) -> S
 {-# SPECIALIZE walkGeodesic :: Space -> NativeArray -> V3 Double -> V3 Double -> Double -> Int -> Native () #-}
 walkGeodesic sp path p0 d0 len n = do
   let f = spaceField sp
-  n0 <- shareAll (unitNormal f p0)
-  v0 <- shareAll (safeNormalize (tangentProjection n0 d0))
+      metric = spaceMetric sp
+  n0 <- shareAll (unitNormal metric f p0)
+  v0 <- shareAll (normalizeIn metric (tangentProjection metric n0 d0))
   h <- share (len / maxF 1 (toScalar n))
   let refs3 (V3 x y z) = V3 <$> newRef x <*> newRef y <*> newRef z
       get3 (V3 a b c) = V3 <$> readRef a <*> readRef b <*> readRef c
@@ -74,7 +76,7 @@ walkGeodesic sp path p0 d0 len n = do
       p <- get3 pR
       v <- get3 vR
       nrm <- get3 nR
-      let (p1, v1, n1) = geodesicStepFrom f h nrm (p, v)
+      let (p1, v1, n1) = geodesicStepFrom metric f h nrm (p, v)
       p1s <- shareAll p1
       (p2, s) <- case quotientWrap (spaceQuotient sp) of
         Nothing -> pure (p1s, 1)

@@ -11,12 +11,12 @@ module Manifold.Grab
   , release
   ) where
 
-import Linear.Metric (dot, norm)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^))
 
 import Manifold.Collide (pointInBody)
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.World
@@ -32,12 +32,12 @@ pickBody sp l w q = do
   best <- newRef 0
   let signs = map constant (pickSigns (spaceQuotient sp))
   forEach (toIndex count) $ \i -> do
-    f <- bodyFrame w i
+    f <- bodyFrame (spaceMetric sp) w i
     mapM_ (\sgn -> do
       -- on a lattice, the image of the point nearest the body
       q' <- share3 (nearestImage (spaceQuotient sp) (bfCentre f) (sgn *^ q))
-      whenPositive (bfSize f - norm (q' ^-^ bfCentre f)) $ do
-        (depth, _) <- pointInBody l w i f q'
+      whenPositive (bfSize f - normIn (spaceMetric sp) (q' ^-^ bfCentre f)) $ do
+        (depth, _) <- pointInBody (spaceMetric sp) l w i f q'
         -- the centre itself counts as inside (its depth is its distance to
         -- the outline, which pointInBody measures too)
         b <- readRef best
@@ -53,10 +53,10 @@ pickBody sp l w q = do
 grab :: Imp m => Space -> WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Scalar m)
      -> Scalar m -> Scalar m -> Scalar m -> m ()
 grab sp w i sgn q frequency damping maxForce = do
-  f <- bodyFrame w i
+  f <- bodyFrame (spaceMetric sp) w i
   let d = nearestImage (spaceQuotient sp) (bfCentre f) (sgn *^ q) ^-^ bfCentre f
-      x = d `dot` bfU f
-      y = d `dot` bfW f
+      x = inner (spaceMetric sp) d (bfU f)
+      y = inner (spaceMetric sp) d (bfW f)
   writeMouse w MActive 1
   writeMouse w MBody (toScalar i)
   writeMouse w MSign sgn

@@ -46,11 +46,12 @@ module Manifold.Joint
   ) where
 
 import Control.Monad (zipWithM_)
-import Linear.Metric (dot, norm, quadrance)
+import Linear.Metric (dot, quadrance)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Sleep (markIsland)
 import Manifold.Soft
 import Manifold.Space
@@ -69,7 +70,7 @@ anchorPoint sp f r theta = do
       h = r / fromIntegral steps
       go 0 s = pure s
       go k (q, d) = do
-        let (q1, d1) = geodesicStep (spaceField sp) h (q, d)
+        let (q1, d1) = geodesicStep (spaceMetric sp) (spaceField sp) h (q, d)
         q' <- share3 q1
         d' <- share3 d1
         go (k - 1 :: Int) (q', d')
@@ -95,8 +96,8 @@ direction f = cosF (bfAngle f) *^ bfU f ^+^ sinF (bfAngle f) *^ bfW f
 polarOf :: Imp m => Space -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, Scalar m)
 polarOf sp f q = do
   d <- share3 (nearestImage (spaceQuotient sp) (bfCentre f) q ^-^ bfCentre f)
-  x <- share (d `dot` bfU f)
-  y <- share (d `dot` bfW f)
+  x <- share (inner (spaceMetric sp) d (bfU f))
+  y <- share (inner (spaceMetric sp) d (bfW f))
   (,) <$> share (sqrt (x * x + y * y)) <*> share (atan2F y x - bfAngle f)
 
 -- | An angle brought into @(−π, π]@.
@@ -146,13 +147,13 @@ addJoint sp w kind a b qa qb = do
             writeJoint w j JKind kind
             writeJoint w j JA a
             writeJoint w j JB b
-            fa <- bodyFrame w (toIndex a)
+            fa <- bodyFrame (spaceMetric sp) w (toIndex a)
             (ra, ta) <- polarOf sp fa pa
             writeJoint w j JRadiusA ra
             writeJoint w j JThetaA ta
             writeJoint3 w j JWorldX pb
             whenPositive (b + 0.5) $ do
-              fb <- bodyFrame w (toIndex b)
+              fb <- bodyFrame (spaceMetric sp) w (toIndex b)
               (rb, tb) <- polarOf sp fb pb
               writeJoint w j JRadiusB rb
               writeJoint w j JThetaB tb
@@ -278,8 +279,9 @@ prepareJoint sp w j = do
   b <- readJoint w j JB
   hasB <- share (select (b + 0.5) 1 0)
   let bi = toIndex (maxF 0 b)
-  fa <- bodyFrame w a
-  fb <- bodyFrame w bi
+      metric = spaceMetric sp
+  fa <- bodyFrame metric w a
+  fb <- bodyFrame metric w bi
   pA <- readJoint w j JRadiusA >>= \r -> readJoint w j JThetaA >>= anchorPoint sp fa r
   pBody <- readJoint w j JRadiusB >>= \r -> readJoint w j JThetaB >>= anchorPoint sp fb r
   world <- readJoint3 w j JWorldX
@@ -294,7 +296,7 @@ prepareJoint sp w j = do
   writeJoint3 w j JSignX sg
   writeJoint3 w j JE1X (bfU fa)
   writeJoint3 w j JE2X (bfW fa)
-  writeJoint w j JChord (norm (pB ^-^ pA))
+  writeJoint w j JChord (normIn metric (pB ^-^ pA))
   -- the relative angle: b's direction (through the image) on a's tangent
   -- plane, measured from a's direction about a's normal; against the
   -- world, the surface's reference axis at a stands for b's
@@ -302,8 +304,9 @@ prepareJoint sp w j = do
   sigma <- share (hasB * sx * sy * sz)
   writeJoint w j JSigma sigma
   dA <- share3 (direction fa)
-  t <- share3 (tangentProjection (bfNormal fa) (select hasB <$> (sg * direction fb) <*> referenceAxis (bfNormal fa)))
-  phi <- share (atan2F ((dA `cross` t) `dot` bfNormal fa) (dA `dot` t))
+  t <- share3 (tangentProjection metric (bfNormal fa) (select hasB <$> (sg * direction fb) <*> referenceAxis metric (bfNormal fa)))
+  -- (the triple product is the metric's 2-D cross product: 'perpendicular')
+  phi <- share (atan2F ((dA `cross` t) `dot` bfNormal fa) (inner metric dA t))
   ref <- readJoint w j JReference
   writeJoint w j JAngleError (wrapAngle (phi - ref))
   iia <- readSlot w a InvInertia
@@ -329,8 +332,8 @@ angularRow sigma = Row (V3 0 0 0) (-1) (V3 0 0 0) sigma
 
 -- | How fast a row's error grows (or, given the bodies' moves, how much it
 -- has grown).
-along :: Num s => Row s -> Motion s -> Motion s -> s
-along (Row la wa lb wb) (Motion va oa) (Motion vb ob) = (la `dot` va) + wa * oa + (lb `dot` vb) + wb * ob
+along :: Field s => Metric -> Row s -> Motion s -> Motion s -> s
+along metric (Row la wa lb wb) (Motion va oa) (Motion vb ob) = inner metric la va + wa * oa + inner metric lb vb + wb * ob
 
 -- | The joint's two bodies as the rows need them.
 data Pair m = Pair
@@ -338,10 +341,11 @@ data Pair m = Pair
   , pairB :: Index m -- ^ body 0 standing in for the world
   , pairHasB :: Scalar m -- ^ 1 for a body, 0 for the world
   , pairMasses :: (Scalar m, Scalar m, Scalar m, Scalar m) -- ^ inverse masses and inertias: a's, then b's (0 for the world)
+  , pairMetric :: Metric -- ^ the space's
   }
 
-pairOf :: Imp m => WorldArrays (Array m) -> Index m -> m (Pair m)
-pairOf w j = do
+pairOf :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> m (Pair m)
+pairOf metric w j = do
   a <- toIndex <$> readJoint w j JA
   b <- readJoint w j JB
   hasB <- share (select (b + 0.5) 1 0)
@@ -350,12 +354,12 @@ pairOf w j = do
   iia <- readSlot w a InvInertia
   imb <- share . (hasB *) =<< readSlot w bi InvMass
   iib <- share . (hasB *) =<< readSlot w bi InvInertia
-  pure (Pair a bi hasB (ima, iia, imb, iib))
+  pure (Pair a bi hasB (ima, iia, imb, iib) metric)
 
 -- | The mass a row moves: @1 / (J M⁻¹ Jᵀ)@ (0 for a row that moves nothing).
-rowMass :: Field s => (s, s, s, s) -> Row s -> s
-rowMass (ima, iia, imb, iib) (Row la wa lb wb) =
-  let k = ima * quadrance la + iia * wa * wa + imb * quadrance lb + iib * wb * wb
+rowMass :: Field s => Metric -> (s, s, s, s) -> Row s -> s
+rowMass metric (ima, iia, imb, iib) (Row la wa lb wb) =
+  let k = ima * quadranceIn metric la + iia * wa * wa + imb * quadranceIn metric lb + iib * wb * wb
   in select k (recip k) 0
 
 -- | Where a joint's anchors are in the sub-steps: as the step found them,
@@ -382,33 +386,37 @@ geometryNow w j p = do
   d <- share3 ((pB0 ^+^ pairHasB p *^ (sg * (mB ^+^ rB ^-^ rB0))) ^-^ (pA0 ^+^ mA ^+^ rA ^-^ rA0))
   pure (Geometry d rA rB nA nB sg)
   where
+    metric = pairMetric p
+    -- Rodrigues' rotation about the normal (under the metric: the part
+    -- along the normal is kept, the tangent part turned a quarter by
+    -- 'perpendicular')
     turn n theta r = do
       c <- share (cosF theta)
       s <- share (sinF theta)
-      share3 (c *^ r ^+^ s *^ (n `cross` r) ^+^ ((1 - c) * (n `dot` r)) *^ n)
+      share3 (c *^ r ^+^ s *^ perpendicular metric n r ^+^ ((1 - c) * constant (normalSign metric) * inner metric n r) *^ n)
 
 -- | The row that moves the anchors apart along direction @e@ (at body a;
 -- body b's side through the image).
-rowAlong :: Field s => s -> Geometry s -> V3 s -> Row s
-rowAlong hasB g e =
+rowAlong :: Field s => Metric -> s -> Geometry s -> V3 s -> Row s
+rowAlong metric hasB g e =
   let eb = imageSigns g * e
-  in Row (tangentProjection (normalA g) (negate <$> e)) (negate ((leverA g `cross` e) `dot` normalA g))
-         (hasB *^ tangentProjection (normalB g) eb) (hasB * ((leverB g `cross` eb) `dot` normalB g))
+  in Row (tangentProjection metric (normalA g) (negate <$> e)) (negate ((leverA g `cross` e) `dot` normalA g))
+         (hasB *^ tangentProjection metric (normalB g) eb) (hasB * ((leverB g `cross` eb) `dot` normalB g))
 
 -- | A distance joint's row (along the anchors' chord) and the chord's length.
 chordRow :: Imp m => WorldArrays (Array m) -> Index m -> Pair m -> Geometry (Scalar m) -> m (Row (Scalar m), Scalar m)
 chordRow w j p g = do
-  len <- share (norm (gapNow g))
+  len <- share (normIn (pairMetric p) (gapNow g))
   e1 <- readJoint3 w j JE1X
   e <- share3 (select len <$> fmap (/ len) (gapNow g) <*> e1)
-  pure (rowAlong (pairHasB p) g e, len)
+  pure (rowAlong (pairMetric p) (pairHasB p) g e, len)
 
 -- | A pin's two rows (along body a's frame) and their errors.
 pinRows :: Imp m => WorldArrays (Array m) -> Index m -> Pair m -> Geometry (Scalar m) -> m ((Row (Scalar m), Scalar m), (Row (Scalar m), Scalar m))
 pinRows w j p g = do
   e1 <- readJoint3 w j JE1X
   e2 <- readJoint3 w j JE2X
-  let row e = (rowAlong (pairHasB p) g e, e `dot` gapNow g)
+  let row e = (rowAlong (pairMetric p) (pairHasB p) g e, inner (pairMetric p) e (gapNow g))
   pure (row e1, row e2)
 
 -- | The rows' velocity now.
@@ -416,7 +424,7 @@ rate :: Imp m => WorldArrays (Array m) -> Pair m -> Row (Scalar m) -> m (Scalar 
 rate w p r = do
   va <- velocityOf w (pairA p)
   vb <- velocityOf w (pairB p)
-  share (along r va vb)
+  share (along (pairMetric p) r va vb)
 
 -- | Apply impulse @lambda@ along a row.
 applyImpulse :: Imp m => WorldArrays (Array m) -> Pair m -> Row (Scalar m) -> Scalar m -> m ()
@@ -430,11 +438,11 @@ applyImpulse w p (Row la wa lb wb) lambda = do
   whenPositive (pairHasB p) $ body (pairB p) imb iib lb wb
 
 -- | Every joint's impulses applied again, as a sub-step starts.
-warmStartJoints :: Imp m => WorldArrays (Array m) -> m ()
-warmStartJoints w = do
+warmStartJoints :: Imp m => Metric -> WorldArrays (Array m) -> m ()
+warmStartJoints metric w = do
   count <- readMeta w JointCount
   forEach (toIndex count) $ \j -> whenMoving w j $ do
-    p <- pairOf w j
+    p <- pairOf metric w j
     g <- geometryNow w j p
     sigma <- readJoint w j JSigma
     kind <- readJoint w j JKind
@@ -460,8 +468,8 @@ warmStartJoints w = do
 -- | One solve of every joint's rows: with the bias (@useBias@), rigid rows
 -- push their error out softly; without it (the relaxing solve), they only
 -- hold the velocities. Springs and limits act in both.
-solveJoints :: Imp m => Bool -> WorldArrays (Array m) -> m ()
-solveJoints useBias w = do
+solveJoints :: Imp m => Bool -> Metric -> WorldArrays (Array m) -> m ()
+solveJoints useBias metric w = do
   count <- readMeta w JointCount
   h <- substepLength w
   invH <- share (recip h)
@@ -472,7 +480,7 @@ solveJoints useBias w = do
   -- sub-steps of 1/400 s and settled at eight
   rigid <- softness (minF hz (0.25 * invH)) zeta h
   forEach (toIndex count) $ \j -> whenMoving w j $ do
-    p <- pairOf w j
+    p <- pairOf metric w j
     kind <- readJoint w j JKind
     let is k = 0.5 - abs (kind - fromIntegral (fromEnum k))
         -- the coefficients of a rigid row: soft in the biased solve, none in the relaxing one
@@ -538,7 +546,7 @@ solveJoints useBias w = do
       ((r1, c1), (r2, c2)) <- pinRows w j p g
       let (ima, iia, imb, iib) = pairMasses p
           kOf (Row la wa lb wb) (Row la' wa' lb' wb') =
-            ima * (la `dot` la') + iia * wa * wa' + imb * (lb `dot` lb') + iib * wb * wb'
+            ima * inner metric la la' + iia * wa * wa' + imb * inner metric lb lb' + iib * wb * wb'
       k11 <- share (kOf r1 r1)
       k12 <- share (kOf r1 r2)
       k22 <- share (kOf r2 r2)
@@ -560,7 +568,7 @@ solveJoints useBias w = do
     whenPositive (is Distance) $ do
       g <- geometryNow w j p
       (row, len) <- chordRow w j p g
-      mass <- share (rowMass (pairMasses p) row)
+      mass <- share (rowMass metric (pairMasses p) row)
       target <- readJoint w j JLength
       lo <- readJoint w j JMinLength
       hi <- readJoint w j JMaxLength
@@ -611,8 +619,8 @@ jointAnchors sp w out = do
     a <- toIndex <$> readJoint w j JA
     b <- readJoint w j JB
     hasB <- share (select (b + 0.5) 1 0)
-    fa <- bodyFrame w a
-    fb <- bodyFrame w (toIndex (maxF 0 b))
+    fa <- bodyFrame (spaceMetric sp) w a
+    fb <- bodyFrame (spaceMetric sp) w (toIndex (maxF 0 b))
     pa <- readJoint w j JRadiusA >>= \r -> readJoint w j JThetaA >>= anchorPoint sp fa r
     pBody <- readJoint w j JRadiusB >>= \r -> readJoint w j JThetaB >>= anchorPoint sp fb r
     world <- readJoint3 w j JWorldX

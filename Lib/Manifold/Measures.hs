@@ -14,10 +14,11 @@ module Manifold.Measures
   ) where
 
 import Data.Maybe (fromMaybe)
-import Linear.Metric (dot, quadrance)
+import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.World
@@ -36,10 +37,11 @@ measureSize :: Int
 measureSize = length [minBound .. maxBound :: MeasureSlot]
 
 -- | A body's kinetic energy, ½ m |v|² + ½ I ω², and the angular momentum
--- of its centre about the axis a, m (p × v) · a; a static body (inverse
--- mass 0) has neither.
-bodyMotion :: Imp m => WorldArrays (Array m) -> V3 (Scalar m) -> Index m -> m (Scalar m, Scalar m, Scalar m)
-bodyMotion w a i = do
+-- of its centre about the axis a, m ⟨a × p, v⟩ (m (p × v) · a in R³: the
+-- velocity's share along the rotation the axis generates, an isometry of
+-- either metric); a static body (inverse mass 0) has neither.
+bodyMotion :: Imp m => Metric -> WorldArrays (Array m) -> V3 (Scalar m) -> Index m -> m (Scalar m, Scalar m, Scalar m)
+bodyMotion metric w a i = do
   invMass <- readSlot w i InvMass
   invInertia <- readSlot w i InvInertia
   omega <- readSlot w i Omega
@@ -48,9 +50,15 @@ bodyMotion w a i = do
   moving <- share (select invMass 1 0)
   m <- share (moving / maxF invMass 1e-300)
   inertia <- share (moving / maxF invInertia 1e-300)
-  energy <- share (0.5 * m * quadrance v + 0.5 * inertia * omega * omega)
-  axial <- share (m * dot (cross p v) a)
-  pure (energy, axial, sqrt (quadrance v))
+  energy <- share (0.5 * m * quadranceIn metric v + 0.5 * inertia * omega * omega)
+  axial <- share (m * rotationShare metric a p v)
+  pure (energy, axial, normIn metric v)
+
+-- | @⟨a × p, v⟩@: how much of velocity @v@ at @p@ is along the rotation
+-- about axis @a@.
+rotationShare :: Field a => Metric -> V3 a -> V3 a -> V3 a -> a
+rotationShare Euclidean a p v = dot (cross p v) a
+rotationShare metric a p v = inner metric (cross a p) v
 
 -- | @measureWorld sp w out@: the bodies' total kinetic energy and their
 -- centres' angular momentum about the space's axis (0 without one) into
@@ -62,7 +70,7 @@ measureWorld sp w out = do
   energyR <- newRef 0
   axialR <- newRef 0
   forLoop 0 (toIndex n) $ \i -> do
-    (energy, axial, _) <- bodyMotion w (axisOf sp) i
+    (energy, axial, _) <- bodyMotion (spaceMetric sp) w (axisOf sp) i
     readRef energyR >>= writeRef energyR . (+ energy)
     readRef axialR >>= writeRef axialR . (+ axial)
   readRef energyR >>= writeArray out (slot KineticEnergy)
@@ -73,7 +81,7 @@ measureWorld sp w out = do
 measureBody :: Imp m => Space -> WorldArrays (Array m) -> Array m -> Index m -> m ()
 {-# SPECIALIZE measureBody :: Space -> WorldArrays NativeArray -> NativeArray -> Int -> Native () #-}
 measureBody sp w out i = do
-  (energy, _, speed) <- bodyMotion w (axisOf sp) i
+  (energy, _, speed) <- bodyMotion (spaceMetric sp) w (axisOf sp) i
   writeArray out (slot BodySpeed) speed
   writeArray out (slot BodyEnergy) energy
   rows <- readMeta w ContactCount

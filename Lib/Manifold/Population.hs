@@ -10,13 +10,14 @@ module Manifold.Population
   , frameMisfit
   ) where
 
-import Linear.Metric (dot, norm)
+import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^))
 
 import Manifold.Body (PolygonParams (..), massIntegrals)
 import Manifold.Field
 import Manifold.Joint (forgetBodyJoints)
+import Manifold.Metric
 import Manifold.Sleep (wakeMarked, wakeNear)
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -52,20 +53,21 @@ addBodyWith sp l w outline b = do
   count <- readMeta w BodyCount
   cap <- readMeta w Capacity
   let f = spaceField sp
+      metric = spaceMetric sp
       restoring = baRestore b
   placed <- share3 (projectToSurface f (baPos b))
   p <- share3 (select restoring <$> baPos b <*> placed)
-  surfaceNormal <- share3 (unitNormal f p)
+  surfaceNormal <- share3 (unitNormal metric f p)
   n <- share3 (select restoring <$> baNormal b <*> surfaceNormal)
   -- every condition must hold; a NaN (a vanished gradient) fails it
-  let usable = allPositive [cap - count - 0.5, norm n - 0.5, finiteness (toList3 p ++ toList3 n)]
-      fits = select restoring (frameFits f p surfaceNormal b) 1
+  let usable = allPositive [cap - count - 0.5, normIn metric n - 0.5, finiteness (toList3 p ++ toList3 n)]
+      fits = select restoring (frameFits metric f p surfaceNormal b) 1
   ifPositive usable
     (ifPositive fits
       (do let i = toIndex count
               movable = 1 - baStatic b
-              v = movable *^ (select restoring <$> baVel b <*> tangentProjection n (baVel b))
-              axis = select restoring <$> baAxis b <*> referenceAxis n
+              v = movable *^ (select restoring <$> baVel b <*> tangentProjection metric n (baVel b))
+              axis = select restoring <$> baAxis b <*> referenceAxis metric n
           write3 (wPos w) i p
           write3 (wVel w) i v
           axis' <- share3 axis
@@ -101,8 +103,8 @@ addBodyWith sp l w outline b = do
 -- 'frameTolerance', the normal the surface's, the axis a unit tangent and
 -- the velocity tangent. A saved scene's bodies fit; one edited by hand
 -- (moved without its axis and normal) does not.
-frameFits :: Field a => ScalarFn -> V3 a -> V3 a -> BodyArgs a -> a
-frameFits f p surfaceNormal b =
+frameFits :: Field a => Metric -> ScalarFn -> V3 a -> V3 a -> BodyArgs a -> a
+frameFits metric f p surfaceNormal b =
   let k = constant frameTolerance
       n = baNormal b
       axis = baAxis b
@@ -110,9 +112,9 @@ frameFits f p surfaceNormal b =
   in allPositive
        [ constant onSurfaceTolerance - abs (evalFn f p)
        , k - norm (n ^-^ surfaceNormal)
-       , k - abs (norm axis - 1)
-       , k - abs (axis `dot` n)
-       , k * (1 + norm v) - abs (v `dot` n) ]
+       , k - abs (normIn metric axis - 1)
+       , k - abs (inner metric axis n)
+       , k * (1 + normIn metric v) - abs (inner metric v n) ]
 
 -- | Why a saved body cannot be restored (what both engines say when
 -- 'addBodyWith' sets 'LastAdded' to −2).
@@ -133,8 +135,8 @@ allPositive = foldr (\c rest -> select c rest 0) 1
 -- are stable but the last one's becomes @i@). Warm starting is forgotten
 -- for one step, and so are the last step's contacts; a mouse joint on the
 -- removed body is released; the bodies near it wake.
-removeBody :: Imp m => Layout -> WorldArrays (Array m) -> Index m -> m ()
-removeBody l w i = do
+removeBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+removeBody sp l w i = do
   count <- readMeta w BodyCount
   whenPositive (minF (toScalar i + 0.5) (count - toScalar i - 0.5)) $ do
     let lastI = toIndex (count - 1)
@@ -143,7 +145,7 @@ removeBody l w i = do
     -- what rested on the body wakes, and so does the body's own island
     -- (so that no sleeping body names the index that goes); the last
     -- body's island, if asleep, is named by its new index
-    wakeNear w i
+    wakeNear (spaceMetric sp) w i
     wakeMarked w
     forEach (toIndex count) $ \k -> do
       label <- readSlot w k Island

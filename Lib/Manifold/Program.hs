@@ -55,7 +55,7 @@ pageProcedures sp l = stepProcedures sp l ++
          addBodyWith sp l stagedArrays (codeOutline code)
            (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega restore (V3 ax ay az) (V3 nx ny nz)))
   , (Procedure "removeBody" worldParams ["index"],
-      \_ [i] -> removeBody l stagedArrays (toIndex i))
+      \_ [i] -> removeBody sp l stagedArrays (toIndex i))
   , (Procedure "pickBody" worldParams ["qx", "qy", "qz"],
       \_ [x, y, z] -> pickBody sp l stagedArrays (V3 x y z))
   , (Procedure "grab" worldParams ["index", "sign", "qx", "qy", "qz", "frequency", "damping", "maxForce"],

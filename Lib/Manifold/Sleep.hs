@@ -33,10 +33,10 @@ module Manifold.Sleep
   ) where
 
 import Control.Monad (forM_, (>=>))
-import Linear.Metric (norm)
 import Linear.Vector ((^-^))
 
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Stage.Imp
 import Manifold.World
 
@@ -75,8 +75,8 @@ wakeBody w i = do
 
 -- | Mark the islands of the bodies whose bounds come within reach of body
 -- @i@'s (what removing body @i@ wakes: the bodies resting on it).
-wakeNear :: Imp m => WorldArrays (Array m) -> Index m -> m ()
-wakeNear w i = do
+wakeNear :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> m ()
+wakeNear metric w i = do
   count <- readMeta w BodyCount
   p <- read3 (wPos w) i
   r <- readSlot w i BoundRadius
@@ -84,7 +84,7 @@ wakeNear w i = do
     q <- read3 (wPos w) k
     rk <- readSlot w k BoundRadius
     -- a margin of half the larger bound: what lay on body i, not only what touched it
-    whenPositive (1.5 * (r + rk) - norm (p ^-^ q)) (markIsland w k)
+    whenPositive (1.5 * (r + rk) - normIn metric (p ^-^ q)) (markIsland w k)
   markIsland w i
 
 -- | The step's first phase: a parameter changed since the last step, or
@@ -122,9 +122,9 @@ wakePhase w = do
 -- those whose every body's timer has run out fall asleep. (Waking here,
 -- not as the next step begins, leaves nothing of it to the contact rows,
 -- which a saved scene does not hold.)
-sleepIslands :: Imp m => WorldArrays (Array m) -> m ()
-{-# SPECIALIZE sleepIslands :: WorldArrays NativeArray -> Native () #-}
-sleepIslands w = do
+sleepIslands :: Imp m => Metric -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE sleepIslands :: Metric -> WorldArrays NativeArray -> Native () #-}
+sleepIslands metric w = do
   on <- readParam w Sleep
   whenPositive on $ do
     let touching a b = do
@@ -153,7 +153,7 @@ sleepIslands w = do
         t <- readSlot w i SleepTimer
         let calmSpeed = threshold * size
             isHeld = active * select (0.5 - abs (held - toScalar i)) 1 0
-            calm = minF (minF (calmSpeed - norm v) (calmSpeed - abs omega * reach)) (0.5 - isHeld)
+            calm = minF (minF (calmSpeed - normIn metric v) (calmSpeed - abs omega * reach)) (0.5 - isHeld)
         t' <- share (select calm (t + dt) 0)
         writeSlot w i SleepTimer t'
         whenPositive (ranOut t') (writeRef due 1)

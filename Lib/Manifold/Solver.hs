@@ -43,12 +43,13 @@ module Manifold.Solver
   , grabPoint
   ) where
 
-import Linear.Metric (dot, quadrance)
+import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Field
 import Manifold.Joint
+import Manifold.Metric
 import Manifold.Soft
 import Manifold.Space
 import Manifold.Stage.Imp
@@ -93,21 +94,21 @@ readRow w c linA linB = do
 
 -- | How fast body a's, and body b's, side of a row moves (or, given how far
 -- the body moved, how far it went along the row).
-sideA, sideB :: Num s => Row s -> Vel s -> s
+sideA, sideB :: Field s => Metric -> Row s -> Vel s -> s
 {-# INLINE sideA #-}
 {-# INLINE sideB #-}
-sideA r (Vel v o) = (rowA r `dot` v) + rowAW r * o
-sideB r (Vel v o) = (rowB r `dot` v) + rowBW r * o
+sideA metric r (Vel v o) = inner metric (rowA r) v + rowAW r * o
+sideB metric r (Vel v o) = inner metric (rowB r) v + rowBW r * o
 
 -- | The relative velocity along a row: body a's minus body b's.
-rowVelocity :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
+rowVelocity :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
 {-# INLINE rowVelocity #-}
-rowVelocity w a b r = do
+rowVelocity metric w a b r = do
   va <- readVel w a
   vb <- newRef 0
-  whenPositive (b + 0.5) $ readVel w (toIndex b) >>= writeRef vb . sideB r
+  whenPositive (b + 0.5) $ readVel w (toIndex b) >>= writeRef vb . sideB metric r
   vB <- readRef vb
-  share (sideA r va - vB)
+  share (sideA metric r va - vB)
 
 applyRow :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> Scalar m -> m ()
 {-# INLINE applyRow #-}
@@ -116,25 +117,25 @@ applyRow w a b r lambda = do
   whenPositive (b + 0.5) $ push w (toIndex b) (negate lambda) (rowB r) (rowBW r)
 
 -- | The effective mass of a row: @1 / (J M⁻¹ Jᵀ)@.
-effectiveMass :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
+effectiveMass :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> Scalar m -> Row (Scalar m) -> m (Scalar m)
 {-# INLINE effectiveMass #-}
-effectiveMass w a b r = do
+effectiveMass metric w a b r = do
   ima <- readSlot w a InvMass
   iia <- readSlot w a InvInertia
   kb <- newRef 0
   whenPositive (b + 0.5) $ do
     imb <- readSlot w (toIndex b) InvMass
     iib <- readSlot w (toIndex b) InvInertia
-    writeRef kb (imb * quadrance (rowB r) + iib * rowBW r * rowBW r)
+    writeRef kb (imb * quadranceIn metric (rowB r) + iib * rowBW r * rowBW r)
   kB <- readRef kb
-  k <- share (ima * quadrance (rowA r) + iia * rowAW r * rowAW r + kB)
+  k <- share (ima * quadranceIn metric (rowA r) + iia * rowAW r * rowAW r + kB)
   share (select k (recip k) 0)
 
 -- | Where a grabbed body's grabbed point is now: the geodesic from its
 -- centre in the grabbed direction, as long as the grabbed distance.
 grabPoint :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m (V3 (Scalar m))
 grabPoint sp w g = do
-  f <- bodyFrame w g
+  f <- bodyFrame (spaceMetric sp) w g
   r <- readMouse w MLocalR
   theta <- readMouse w MLocalTheta
   anchorPoint sp f r theta
@@ -163,7 +164,8 @@ mouseJoint sp w warm = do
     whenPositive im $ do
       ii <- readSlot w g InvInertia
       h <- substepLength w
-      f <- bodyFrame w g
+      let metric = spaceMetric sp
+      f <- bodyFrame metric w g
       grab <- grabPoint sp w g
       target0 <- V3 <$> readMouse w MTargetX <*> readMouse w MTargetY <*> readMouse w MTargetZ
       -- on a lattice, towards the target's image nearest the grabbed point
@@ -179,9 +181,9 @@ mouseJoint sp w warm = do
             acc <- readMouse w field
             ifPositive warm (push w g acc e jw) $ do
                 Vel v o <- readVel w g
-                let cdot = (e `dot` v) + jw * o
-                    k = im * quadrance e + ii * jw * jw
-                    lambda = negate (massScale soft * (cdot + biasRate soft * (err `dot` e)) / k)
+                let cdot = inner metric e v + jw * o
+                    k = im * quadranceIn metric e + ii * jw * jw
+                    lambda = negate (massScale soft * (cdot + biasRate soft * inner metric err e) / k)
                              - impulseScale soft * acc
                     limit = maxForce * h
                     acc' = finiteOr0 (clampF (negate limit) limit (acc + lambda))
@@ -195,9 +197,9 @@ mouseJoint sp w warm = do
 -- velocity, and its impulses warm started from the last step's row of the
 -- same key (applied by each sub-step's 'warmStart'); every body's moves
 -- since the contacts were found set to none.
-prepareContacts :: Imp m => WorldArrays (Array m) -> m ()
-{-# SPECIALIZE prepareContacts :: WorldArrays NativeArray -> Native () #-}
-prepareContacts w = do
+prepareContacts :: Imp m => Metric -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE prepareContacts :: Metric -> WorldArrays NativeArray -> Native () #-}
+prepareContacts metric w = do
   h <- substepLength w
   hz <- readParam w ContactHertz
   zeta <- readParam w DampingRatio
@@ -218,8 +220,8 @@ prepareContacts w = do
     key <- readContact w c CKey
     normal <- readRow w c JaX JbX
     tangent <- readRow w c TaX TbX
-    kn <- effectiveMass w a b normal
-    kt <- effectiveMass w a b tangent
+    kn <- effectiveMass metric w a b normal
+    kt <- effectiveMass metric w a b tangent
     writeContact w c NormalMass kn
     writeContact w c TangentMass kt
     -- against a wall, a static body or itself (b = -1) the stiffer spring
@@ -235,7 +237,7 @@ prepareContacts w = do
     pick CImpulseScale impulseScale
     depth <- readContact w c CDepth
     writeContact w c CPenetration (depth - slop * select (b + 0.5) (minF sizeA sizeB) sizeA)
-    rowVelocity w a b normal >>= writeContact w c CApproach
+    rowVelocity metric w a b normal >>= writeContact w c CApproach
     writeContact w c CTotalImpulse 0
     ln <- newRef 0
     lt <- newRef 0
@@ -266,16 +268,16 @@ substeps sp _ w = do
   -- the joints before the contacts in each pass (as Box2D orders them)
   forEach (toIndex n) $ \_ -> do
     subroutine "substepGravity" [] $ \_ -> substepLength w >>= applyGravity sp w
-    subroutine "warmStartJoints" [] $ \_ -> warmStartJoints w
+    subroutine "warmStartJoints" [] $ \_ -> warmStartJoints (spaceMetric sp) w
     subroutine "warmStart" [] $ \_ -> warmStart w
     mouseRows sp w True
     forEach (toIndex iterations) $ \_ -> do
-      subroutine "solveJoints" [] $ \_ -> solveJoints True w
-      subroutine "solveSweep" [] $ \_ -> sweepRows True w
+      subroutine "solveJoints" [] $ \_ -> solveJoints True (spaceMetric sp) w
+      subroutine "solveSweep" [] $ \_ -> sweepRows True (spaceMetric sp) w
       mouseRows sp w False
     subroutine "substepMove" [] $ \_ -> substepLength w >>= integrate sp w
-    subroutine "relaxJoints" [] $ \_ -> solveJoints False w
-    subroutine "relaxSweep" [] $ \_ -> sweepRows False w
+    subroutine "relaxJoints" [] $ \_ -> solveJoints False (spaceMetric sp) w
+    subroutine "relaxSweep" [] $ \_ -> sweepRows False (spaceMetric sp) w
     mouseRows sp w False
 
 -- | Every contact's impulses applied again, as the sub-step starts.
@@ -298,9 +300,9 @@ warmStart w = do
 -- the bias, the normal impulses (the solve); without it, the normal
 -- impulse and then friction, bounded by the normal impulse just found (the
 -- relaxing solve).
-sweepRows :: Imp m => Bool -> WorldArrays (Array m) -> m ()
+sweepRows :: Imp m => Bool -> Metric -> WorldArrays (Array m) -> m ()
 {-# INLINE sweepRows #-}
-sweepRows useBias w = do
+sweepRows useBias metric w = do
   mu <- readParam w Friction
   pushout <- readParam w Pushout
   h <- substepLength w
@@ -333,7 +335,7 @@ sweepRows useBias w = do
     vb0 <- readVel w bi
     -- inlined: lifted out as functions of their own, the generic
     -- (native, uncompiled) step boxed every row and velocity it passed
-    let along r va vb = share (sideA r va - select hasB (sideB r vb) 0)
+    let along r va vb = share (sideA metric r va - select hasB (sideB metric r vb) 0)
         {-# INLINE along #-}
         apply r lambda (Vel va oa) (Vel vb ob) = do
           dva <- share3 ((ima * lambda) *^ rowA r)
@@ -397,7 +399,7 @@ finishStep :: Imp m => Space -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE finishStep :: Space -> WorldArrays NativeArray -> Native () #-}
 finishStep sp w = do
   restitution <- readParam w Restitution
-  whenPositive restitution $ subroutine "restitution" [] $ \_ -> restitute w
+  whenPositive restitution $ subroutine "restitution" [] $ \_ -> restitute (spaceMetric sp) w
   rememberImpulses w
   tangentVelocities sp w
   wrapIntoDomain sp w
@@ -405,9 +407,9 @@ finishStep sp w = do
 
 -- | The restitution impulses: a contact that approached at @v < -threshold@
 -- leaves at @−e·v@.
-restitute :: Imp m => WorldArrays (Array m) -> m ()
+restitute :: Imp m => Metric -> WorldArrays (Array m) -> m ()
 {-# INLINE restitute #-}
-restitute w = do
+restitute metric w = do
   e <- readParam w Restitution
   threshold <- readParam w BounceThreshold
   nc <- readMeta w ContactCount
@@ -421,7 +423,7 @@ restitute w = do
       kn <- readContact w c NormalMass
       scale <- readContact w c CSelfScale
       ln <- readContact w c ImpulseN
-      vn <- rowVelocity w a b normal
+      vn <- rowVelocity metric w a b normal
       ln' <- share (finiteOr0 (maxF 0 (ln - scale * kn * (vn + e * approach))))
       writeContact w c ImpulseN ln'
       applyRow w a b normal (ln' - ln)

@@ -37,6 +37,7 @@ import Linear.V3 (V3 (..))
 import Linear.Vector ((^-^))
 
 import Manifold.Field
+import Manifold.Metric
 
 -- $setup
 -- >>> import Linear.Metric (norm)
@@ -223,10 +224,11 @@ data Space = Space
   , spaceCamera :: Camera -- ^ the page's first view
   , spaceScene :: [Placement] -- ^ the bodies the page starts with
   , spaceBounds :: Double -- ^ radius of a ball around the origin holding the part of the surface worth drawing and simulating
+  , spaceMetric :: Metric -- ^ the ambient metric the surface sits in ("Manifold.Metric"): R³'s, or Minkowski space's for the hyperbolic spaces
   , spaceAxis :: Maybe (V3 Double) -- ^ a unit axis through the origin the surface, its boundary and its quotient are symmetric about, if any: the bodies' angular momentum about it is conserved where gravity does not turn them about it ("Manifold.Measures")
   }
 
--- | A space with no boundary, no quotient, no gravity, a camera on the z axis
+-- | A space in R³ with no boundary, no quotient, no gravity, a camera on the z axis
 -- and an empty scene: the record to update when defining one.
 --
 -- >>> let ball = (space "ball" "the sphere of radius 2" (scalarFn (\p -> norm p - 2))) { spaceBounds = 4 }
@@ -243,6 +245,7 @@ space name description f = Space
   , spaceCamera = Camera (V3 0 1.5 3.5) (V3 0 0 0) (V3 0 1 0) 45
   , spaceScene = []
   , spaceBounds = 3
+  , spaceMetric = Euclidean
   , spaceAxis = Nothing
   }
 

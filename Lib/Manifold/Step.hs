@@ -26,11 +26,11 @@ stepPhases :: Imp m => [(String, Space -> Layout -> WorldArrays (Array m) -> m (
 stepPhases =
   [ ("wake", \_ _ w -> wakePhase w)
   , ("collide", collide)
-  , ("prepare", \sp _ w -> prepareContacts w >> prepareJoints sp w)
+  , ("prepare", \sp _ w -> prepareContacts (spaceMetric sp) w >> prepareJoints sp w)
   , ("substeps", substeps)
   , ("finish", \sp _ w -> finishStep sp w)
   , ("polygonise", polygoniseAll)
     -- after the polygons: a body that falls asleep keeps the outline of
     -- where it came to rest
-  , ("sleep", \_ _ w -> sleepIslands w)
+  , ("sleep", \sp _ w -> sleepIslands (spaceMetric sp) w)
   ]

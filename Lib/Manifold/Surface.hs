@@ -1,4 +1,8 @@
--- | Geometry of a surface @f = 0@ embedded in R³ (paper §2.2, §2.4).
+-- | Geometry of a surface @f = 0@ embedded in R³ (paper §2.2, §2.4), under
+-- the space's ambient metric ("Manifold.Metric"): normals, tangent
+-- projections, lengths and the quarter turn in a tangent plane are the
+-- metric's; the sphere tracer's distance and the Newton pull back onto the
+-- surface are R³'s (they only find points of @f = 0@).
 --
 -- Everything here is polymorphic in the scalar class, so it runs natively,
 -- under AD, and staged as JavaScript. Branching uses 'select', and iterations
@@ -8,6 +12,7 @@
 module Manifold.Surface
   ( fieldGradient
   , unitNormal
+  , normalOf
   , traceDistance
   , projectToSurface
   , projectToSurfaceWith
@@ -29,10 +34,11 @@ module Manifold.Surface
   ) where
 
 import Linear.Metric (dot, norm, quadrance)
-import Linear.V3 (V3 (..), cross)
+import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^), (^+^))
 
 import Manifold.Field
+import Manifold.Metric
 
 -- $setup
 -- >>> import Manifold.AD (scalarFn)
@@ -43,7 +49,7 @@ fieldGradient :: Field a => ScalarFn -> V3 a -> V3 a
 {-# INLINE fieldGradient #-}
 fieldGradient = gradFn
 
--- | @v/|v|@, or the zero vector where @|v| = 0@ (never NaN).
+-- | @v/|v|@ in R³, or the zero vector where @|v| = 0@ (never NaN).
 --
 -- >>> safeNormalize (V3 0 0 2 :: V3 Double)
 -- V3 0.0 0.0 1.0
@@ -51,19 +57,22 @@ fieldGradient = gradFn
 -- V3 0.0 0.0 0.0
 safeNormalize :: Field a => V3 a -> V3 a
 {-# INLINE safeNormalize #-}
-safeNormalize v =
-  let l = norm v
-      inv = select l (recip (maxF l tiny)) 0
-  in inv *^ v
-  where tiny = constant 1e-300
+safeNormalize = normalizeIn Euclidean
 
--- | The unit normal @∇f/|∇f|@.
+-- | The unit normal: the gradient raised by the metric, @η∇f/|η∇f|@
+-- (@∇f/|∇f|@ in R³).
 --
--- >>> unitNormal unitSphere (V3 0 2 0 :: V3 Double)
+-- >>> unitNormal Euclidean unitSphere (V3 0 2 0 :: V3 Double)
 -- V3 0.0 1.0 0.0
-unitNormal :: Field a => ScalarFn -> V3 a -> V3 a
+unitNormal :: Field a => Metric -> ScalarFn -> V3 a -> V3 a
 {-# INLINE unitNormal #-}
-unitNormal f = safeNormalize . fieldGradient f
+unitNormal m f = normalOf m . fieldGradient f
+
+-- | The unit normal from the field's gradient there.
+normalOf :: Field a => Metric -> V3 a -> V3 a
+{-# INLINE normalOf #-}
+normalOf Euclidean = safeNormalize
+normalOf m = normalizeIn m . raise m
 
 -- | The sphere tracer's step: @|f|/|∇f|@, or @|f|@ where the gradient is
 -- zero, infinite or NaN (on an axis of symmetry, at a centre), so a ray
@@ -113,24 +122,27 @@ projectToSurfaceWith n sf = go n
           s = v / q
       in go (k - 1) (select moving <$> (p ^-^ s *^ g) <*> p)
 
--- | The orthogonal projection of an ambient vector onto the tangent plane with
--- unit normal @n@.
+-- | The orthogonal projection (under the metric) of an ambient vector onto
+-- the tangent plane with unit normal @n@: @v − ⟨n, v⟩ n / ⟨n, n⟩@.
 --
--- >>> tangentProjection (V3 0 1 0) (V3 1 2 3 :: V3 Double)
+-- >>> tangentProjection Euclidean (V3 0 1 0) (V3 1 2 3 :: V3 Double)
 -- V3 1.0 0.0 3.0
-tangentProjection :: Field a => V3 a -> V3 a -> V3 a
+-- >>> tangentProjection Minkowski (V3 0 1 0) (V3 1 2 3 :: V3 Double)
+-- V3 1.0 0.0 3.0
+tangentProjection :: Field a => Metric -> V3 a -> V3 a -> V3 a
 {-# INLINE tangentProjection #-}
-tangentProjection n v = v ^-^ (n `dot` v) *^ n
+tangentProjection Euclidean n v = v ^-^ (n `dot` v) *^ n
+tangentProjection m n v = v ^-^ (constant (normalSign m) * inner m n v) *^ n
 
 -- | Carry a tangent vector to the tangent plane at another (nearby) point:
 -- project (the Levi-Civita connection of an embedded surface is the projected
 -- ambient derivative), then restore the old length.
-transport :: Field a => ScalarFn -> V3 a -> V3 a -> V3 a
+transport :: Field a => Metric -> ScalarFn -> V3 a -> V3 a -> V3 a
 {-# INLINE transport #-}
-transport sf p' v =
-  let n = unitNormal sf p'
-      w = tangentProjection n v
-  in norm v *^ safeNormalize w
+transport m sf p' v =
+  let n = unitNormal m sf p'
+      w = tangentProjection m n v
+  in normIn m v *^ normalizeIn m w
 
 -- | Newton steps when pulling back after a geodesic step: the point starts
 -- @O(h²)@ off the surface and Newton converges quadratically, so three reach
@@ -176,28 +188,28 @@ newtonAlong sf n q =
 -- pull back onto the surface along the normal where the step began, take
 -- the step's mean velocity, project it onto the new tangent plane and give it
 -- back the speed it had. A step of length 0 changes nothing.
-geodesicStep :: Field a => ScalarFn -> a -> (V3 a, V3 a) -> (V3 a, V3 a)
-geodesicStep sf h (p, v) =
-  let (p', v', _) = geodesicStepFrom sf h (unitNormal sf p) (p, v)
+geodesicStep :: Field a => Metric -> ScalarFn -> a -> (V3 a, V3 a) -> (V3 a, V3 a)
+geodesicStep m sf h (p, v) =
+  let (p', v', _) = geodesicStepFrom m sf h (unitNormal m sf p) (p, v)
   in (p', v')
 
 -- | 'geodesicStep' from a point whose unit normal is known, returning the
 -- normal at the new point too: a walk of many steps evaluates the gradient
 -- once per step fewer.
-geodesicStepFrom :: Field a => ScalarFn -> a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
+geodesicStepFrom :: Field a => Metric -> ScalarFn -> a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
 {-# INLINE geodesicStepFrom #-}
-geodesicStepFrom sf h n (p, v) =
-  geodesicStepEnd h n (p, v) (projectAlongWithGradient sf n (p ^+^ h *^ v))
+geodesicStepFrom m sf h n (p, v) =
+  geodesicStepEnd m h n (p, v) (projectAlongWithGradient sf n (p ^+^ h *^ v))
 
 -- | The end of 'geodesicStepFrom', once the moved point @p + h·v@ has been
 -- pulled back onto the surface: from that point and the gradient left by
 -- 'projectAlongWithGradient', the new point, velocity and unit normal.
-geodesicStepEnd :: Field a => a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
+geodesicStepEnd :: Field a => Metric -> a -> V3 a -> (V3 a, V3 a) -> (V3 a, V3 a) -> (V3 a, V3 a, V3 a)
 {-# INLINE geodesicStepEnd #-}
-geodesicStepEnd h n (p, v) (p', g') =
+geodesicStepEnd m h n (p, v) (p', g') =
   let mean = select (abs h) (recip h) 0 *^ (p' ^-^ p)
-      n' = safeNormalize g'
-      v' = norm v *^ safeNormalize (tangentProjection n' mean)
+      n' = normalOf m g'
+      v' = normIn m v *^ normalizeIn m (tangentProjection m n' mean)
       moved = select (abs h) 1 0
       kept = 1 - moved
   in (moved *^ p' ^+^ kept *^ p, moved *^ v' ^+^ kept *^ v, moved *^ n' ^+^ kept *^ n)
@@ -207,32 +219,33 @@ geodesicStepEnd h n (p, v) (p', g') =
 -- point and the unit direction there. On the unit sphere, a quarter of a
 -- great circle from the north pole reaches the equator:
 --
--- >>> let (p, dir) = expMap unitSphere 64 (V3 0 1 0) (V3 1 0 0) (pi / 2 :: Double)
+-- >>> let (p, dir) = expMap Euclidean unitSphere 64 (V3 0 1 0) (V3 1 0 0) (pi / 2 :: Double)
 -- >>> norm (p - V3 1 0 0) < 1e-3 && norm (dir - V3 0 (-1) 0) < 1e-3
 -- True
-expMap :: Field a => ScalarFn -> Int -> V3 a -> V3 a -> a -> (V3 a, V3 a)
-expMap sf n p dir len = last (geodesicPath sf n p dir len)
+expMap :: Field a => Metric -> ScalarFn -> Int -> V3 a -> V3 a -> a -> (V3 a, V3 a)
+expMap m sf n p dir len = last (geodesicPath m sf n p dir len)
 
 -- | The points of the walk 'expMap' makes, the start included.
-geodesicPath :: Field a => ScalarFn -> Int -> V3 a -> V3 a -> a -> [(V3 a, V3 a)]
-geodesicPath sf n p dir len =
+geodesicPath :: Field a => Metric -> ScalarFn -> Int -> V3 a -> V3 a -> a -> [(V3 a, V3 a)]
+geodesicPath m sf n p dir len =
   let h = len / fromIntegral (max 1 n)
-      d0 = safeNormalize (tangentProjection (unitNormal sf p) dir)
-  in take (max 1 n + 1) (iterate (geodesicStep sf h) (p, d0))
+      d0 = normalizeIn m (tangentProjection m (unitNormal m sf p) dir)
+  in take (max 1 n + 1) (iterate (geodesicStep m sf h) (p, d0))
 
 -- | A tangent frame @(u, n × u)@ at a point with unit normal @n@, from a
--- tangent axis @u@.
-tangentFrame :: Field a => V3 a -> V3 a -> (V3 a, V3 a)
+-- tangent axis @u@ (the second vector is 'perpendicular''s).
+tangentFrame :: Field a => Metric -> V3 a -> V3 a -> (V3 a, V3 a)
 {-# INLINE tangentFrame #-}
-tangentFrame n u = (u, n `cross` u)
+tangentFrame m n u = (u, perpendicular m n u)
 
 -- | The axis a body placed where the unit normal is @n@ starts with: the
 -- x axis projected to the tangent plane, or the z axis where the x axis is
 -- nearly the normal. A body's angle is measured from its axis, which it
 -- then carries along.
-referenceAxis :: Field a => V3 a -> V3 a
+referenceAxis :: Field a => Metric -> V3 a -> V3 a
 {-# INLINE referenceAxis #-}
-referenceAxis n =
-  let ax1 = tangentProjection n (V3 1 0 0)
-      ax2 = tangentProjection n (V3 0 0 1)
-  in safeNormalize (select (norm ax1 - 0.5) 1 0 *^ ax1 ^+^ select (norm ax1 - 0.5) 0 1 *^ ax2)
+referenceAxis m n =
+  let ax1 = tangentProjection m n (V3 1 0 0)
+      ax2 = tangentProjection m n (V3 0 0 1)
+      l1 = normIn m ax1
+  in normalizeIn m (select (l1 - 0.5) 1 0 *^ ax1 ^+^ select (l1 - 0.5) 0 1 *^ ax2)

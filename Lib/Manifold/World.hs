@@ -83,14 +83,15 @@ module Manifold.World
   , outlineRadiiInto
   ) where
 
-import Linear.V3 (V3 (..), cross)
+import Linear.V3 (V3 (..))
 import Control.Monad (forM_, unless, when, (<=<))
 import Data.Maybe (isJust)
-import Linear.Metric (norm, quadrance)
+import Linear.Metric (quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Body (PolygonParams (..), vertexIndex)
 import Manifold.Field
+import Manifold.Metric
 import Manifold.Space
 import Manifold.Stage.Expr (literalValue, sym)
 import Manifold.Stage.Imp
@@ -447,20 +448,20 @@ data BodyFrame s = BodyFrame
   { bfCentre :: !(V3 s)
   , bfNormal :: !(V3 s)
   , bfU :: !(V3 s) -- ^ the axis
-  , bfW :: !(V3 s) -- ^ normal × axis
+  , bfW :: !(V3 s) -- ^ normal × axis ('perpendicular')
   , bfAngle :: !s
   , bfSize :: !s
   , bfInvMass :: !s
   , bfInvInertia :: !s
   }
 
-bodyFrame :: Imp m => WorldArrays (Array m) -> Index m -> m (BodyFrame (Scalar m))
+bodyFrame :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> m (BodyFrame (Scalar m))
 {-# INLINE bodyFrame #-}
-bodyFrame w i = do
+bodyFrame m w i = do
   c <- read3 (wPos w) i
   n <- read3 (wNormal w) i
   u <- read3 (wAxis w) i
-  wv <- share3 (n `cross` u)
+  wv <- share3 (perpendicular m n u)
   BodyFrame c n u wv <$> readSlot w i Angle <*> readSlot w i BoundRadius
     <*> readSlot w i InvMass <*> readSlot w i InvInertia
 
@@ -500,7 +501,7 @@ applyGravity sp w h = do
       p <- read3 (wPos w) i
       v <- read3 (wVel w) i
       n <- read3 (wNormal w) i
-      let g = tangentProjection n (evalGravity sp p)
+      let g = tangentProjection (spaceMetric sp) n (evalGravity sp p)
           v' = v ^+^ h *^ g
       ifPositive (finiteness (toList3 v')) (write3 (wVel w) i v') (countWarning w)
 
@@ -518,6 +519,7 @@ integrate :: Imp m => Space -> WorldArrays (Array m) -> Scalar m -> m ()
 integrate sp w dt = do
   count <- readMeta w BodyCount
   let f = spaceField sp
+      metric = spaceMetric sp
   forEach (toIndex count) $ \i -> readSlot w i Asleep >>= \asleep -> whenPositive (0.5 - asleep) $ do
     p <- read3 (wPos w) i
     axis <- read3 (wAxis w) i
@@ -528,8 +530,8 @@ integrate sp w dt = do
     -- tangent planes the bodies had then: what of that leaves the tangent
     -- plane here is the surface's to take (the walk below keeps the speed,
     -- and would turn it into speed along the surface)
-    v <- read3 (wVel w) i >>= share3 . tangentProjection n
-    let (p0, v0, n0) = geodesicStepFrom f dt n (p, v)
+    v <- read3 (wVel w) i >>= share3 . tangentProjection metric n
+    let (p0, v0, n0) = geodesicStepFrom metric f dt n (p, v)
     p1 <- share3 p0
     -- a fast body over a tight bend (a rounded cube edge) can end its three
     -- Newton steps short of the surface: three more, which leave a settled
@@ -538,9 +540,9 @@ integrate sp w dt = do
         moved = select (quadrance (p2 ^-^ p1)) 1 0
     movedS <- share moved
     p' <- share3 p2
-    n' <- share3 (select movedS <$> safeNormalize g2 <*> n0)
-    v' <- share3 (select movedS <$> (norm v0 *^ safeNormalize (tangentProjection n' v0)) <*> v0)
-    axis' <- share3 (safeNormalize (tangentProjection n' axis))
+    n' <- share3 (select movedS <$> normalOf metric g2 <*> n0)
+    v' <- share3 (select movedS <$> (normIn metric v0 *^ normalizeIn metric (tangentProjection metric n' v0)) <*> v0)
+    axis' <- share3 (normalizeIn metric (tangentProjection metric n' axis))
     -- a step is good when everything is finite and the point is on the
     -- surface: where a step is longer than the surface is wide (down the
     -- trumpet's neck) the pull-back can converge to nowhere near it
@@ -605,7 +607,7 @@ tangentVelocities sp w
       count <- readMeta w BodyCount
       forEach (toIndex count) $ \i -> readSlot w i Asleep >>= \asleep -> whenPositive (0.5 - asleep) $ do
         n <- read3 (wNormal w) i
-        read3 (wVel w) i >>= write3 (wVel w) i . tangentProjection n
+        read3 (wVel w) i >>= write3 (wVel w) i . tangentProjection (spaceMetric sp) n
 
 -- | How far off the surface (in field value) a step may end and still count
 -- as good.
@@ -659,6 +661,7 @@ polygoniseEvery sp l w = do
 polygoniseBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 polygoniseBody sp l w i = do
   let f = spaceField sp
+      metric = spaceMetric sp
       flat = hasConstantGradient f
       pp = polygon l
       nd = polyDirections pp
@@ -674,7 +677,7 @@ polygoniseBody sp l w i = do
   rmax <- readSlot w i BoundRadius
   write3 (wVerts w) (vpb * i) p
   u <- share3 axis
-  v <- share3 (n `cross` axis)
+  v <- share3 (perpendicular metric n axis)
   -- positive: walk in 'ns' steps; otherwise one (a step of 0 or less means always 'ns')
   fine <- share (select hmax (rmax - hmax) 1)
   -- the direction's cosine and sine, turned by 2π/nd from one direction to
@@ -753,7 +756,7 @@ polygoniseBody sp l w i = do
       -- the end of step k along direction d, once its moved point is back
       -- on the surface: the vertex, and the state the next step starts from
       endStep steps vertex k d h nq pd projected = do
-        let (q1, dir1, n1) = geodesicStepEnd h nq pd projected
+        let (q1, dir1, n1) = geodesicStepEnd metric h nq pd projected
         q <- share3 q1
         vertex k d q
         when (k < steps) $ do
