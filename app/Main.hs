@@ -145,7 +145,8 @@ usageError msg = hPutStrLn stderr ("manifold: " ++ msg) >> exitWith (ExitFailure
 listSpaces :: Bool -> IO ()
 listSpaces True = BL.putStrLn $ A.encode
   [ A.object [ "name" A..= spaceName s, "description" A..= spaceDescription s
-             , "quotient" A..= quotientName (spaceQuotient s), "hasBoundary" A..= hasBoundary s ]
+             , "quotient" A..= quotientName (spaceQuotient s), "metric" A..= metricName (spaceMetric s)
+             , "hasBoundary" A..= hasBoundary s ]
   | s <- catalogue ]
 listSpaces False = mapM_ (\s -> putStrLn (pad (spaceName s) ++ "  " ++ spaceDescription s)) catalogue
   where

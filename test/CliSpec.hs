@@ -26,12 +26,13 @@ data SpaceInfo = SpaceInfo
   { siName :: String
   , siDescription :: String
   , siQuotient :: String
+  , siMetric :: String
   , siHasBoundary :: Bool
   } deriving (Show, Eq)
 
 instance A.FromJSON SpaceInfo where
   parseJSON = A.withObject "space" $ \o ->
-    SpaceInfo <$> o .: "name" <*> o .: "description" <*> o .: "quotient" <*> o .: "hasBoundary"
+    SpaceInfo <$> o .: "name" <*> o .: "description" <*> o .: "quotient" <*> o .: "metric" <*> o .: "hasBoundary"
 
 data GeodesicOut = GeodesicOut
   { goPoints :: [[Double]]
@@ -67,7 +68,8 @@ instance A.FromJSON BenchContacts where
 expectedNames :: [String]
 expectedNames =
   [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
-  , "projective-plane", "klein-bottle", "moebius", "funnel", "flat-torus", "flat-klein" ]
+  , "projective-plane", "klein-bottle", "moebius", "funnel", "flat-torus", "flat-klein"
+  , "hyperbolic-plane" ]
 
 toV3 :: [Double] -> Maybe (V3 Double)
 toV3 [x, y, z] = Just (V3 x y z)
@@ -95,7 +97,7 @@ spec = do
         pure (code, out, BC.unpack err)
 
   describe "manifold spaces" $ do
-    it "--json lists exactly the spaces of the catalogue, with name, description, quotient and hasBoundary" $ do
+    it "--json lists exactly the spaces of the catalogue, with name, description, quotient, metric and hasBoundary" $ do
       (code, out, err) <- run ["spaces", "--json"]
       code `shouldBe` ExitSuccess
       err `shouldBe` ""
@@ -113,6 +115,8 @@ spec = do
             `shouldBe` [("flat-torus", "translations"), ("flat-klein", "glide")]
           sort [siName i | i <- infos, siHasBoundary i]
             `shouldBe` sort ["hemisphere", "disc", "rectangle", "moebius", "funnel"]
+          [siName i | i <- infos, siMetric i /= "euclidean"] `shouldBe` ["hyperbolic-plane"]
+          [siMetric i | i <- infos, siName i == "hyperbolic-plane"] `shouldBe` ["minkowski"]
     it "the library's catalogue has the same names" $
       spaceNames `shouldBe` expectedNames
     it "without --json prints one line per space, starting with its name" $ do
@@ -137,6 +141,7 @@ spec = do
                 Just end = toV3 (goEnd g)
                 Just endDir = toV3 (goEndDir g)
                 f = spaceField s
+                m = spaceMetric s
                 start = projectToSurface f from
             length pts `shouldSatisfy` (>= 2)
             -- End is the last point, exactly.
@@ -145,12 +150,12 @@ spec = do
             maximum (map (abs . evalField s) pts) `shouldSatisfy` (< 1e-9)
             -- It starts at the projected start point.
             vecDist (head pts) start `shouldSatisfy` (< 1e-9)
-            -- It is a polyline of the requested length (to 1 %).
-            let len = sum (zipWith vecDist pts (tail pts))
+            -- It is a polyline of the requested length under the space's metric (to 1 %).
+            let len = sum (zipWith (\a b -> normIn m (b - a)) pts (tail pts))
             (len, relErr cliLength len) `shouldSatisfy` ((< 0.01) . snd)
             -- The end direction is a unit tangent vector.
-            norm endDir `shouldSatisfy` closeAbs 1e-9 1
-            abs (unitNormal Euclidean f end `dot` endDir) `shouldSatisfy` (< 1e-9)
+            normIn m endDir `shouldSatisfy` closeAbs 1e-9 1
+            abs (inner m (unitNormal m f end) endDir) `shouldSatisfy` (< 1e-9)
 
   it "geodesic on the sphere stays on the great circle of its start and direction" $ do
     (code, out, _) <- run [ "geodesic", "--space", "sphere", "--from", "0,0,2", "--dir", "1,1,0"

@@ -65,7 +65,7 @@ spec = describe "the page's geodesic tool (walkGeodesic)" $ do
     let spaces = [ sp | sp <- catalogue, spaceQuotient sp == NoQuotient, not (hasBoundary sp) ]
     errs <- forM spaces $ \sp -> do
       walked <- walk sp (start sp) (direction sp) 1.2 64
-      let reference = map fst (geodesicPath Euclidean (spaceField sp) 64 (start sp) (direction sp) 1.2)
+      let reference = map fst (geodesicPath (spaceMetric sp) (spaceField sp) 64 (start sp) (direction sp) 1.2)
       pure (spaceName sp, length walked, maximum (zipWith vecDist (map fst walked) reference))
     [ e | e@(_, count, err) <- errs, count /= 65 || err > 1e-9 ] `shouldBe` []
     length spaces `shouldSatisfy` (>= 4)

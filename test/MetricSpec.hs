@@ -6,7 +6,7 @@
 -- existed is the golden runs' test.)
 module MetricSpec (spec) where
 
-import Control.Monad (forM_, replicateM_, when)
+import Control.Monad (forM_, replicateM_, when, (>=>))
 import Linear.Metric (dot)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^+^), (^-^))
@@ -94,3 +94,53 @@ spec = describe "Manifold.Metric: the hyperboloid in Minkowski space" $ do
     distanceTo (bsPos b) (polar (speed * t) a) `shouldSatisfy` (< 1e-3)
     -- it went far: a Euclidean walk would be nowhere near
     (bsPos b `dot` V3 0 1 0) `shouldSatisfy` (> 2)
+
+  describe "the catalogue's hyperbolic-plane (compiled step)" $ do
+    let sp = hyperbolicPlane
+        g = spaceField sp
+        worldWith gravityOn bodies = do
+          w <- newWorld sp (layout (length bodies))
+          setParams w defaultParams { pGravity = gravityOn }
+          forM_ bodies (addBody w >=> either fail (const (pure ())))
+          pure w
+        free p v = BodyInit circle 0.1 1 False p v 0 0
+
+    it "has the Minkowski metric, and curvature −1 (1e-9) on its surface" $ do
+      spaceMetric sp `shouldBe` Minkowski
+      forM_ [(0, 0), (0.7, 0.3), (1.9, 2.2), (3.0, -1.4)] $ \(r, a) ->
+        abs (gaussianCurvatureIn m g (polar r a) + 1) `shouldSatisfy` (< 1e-9)
+
+    -- (after one step of 1/100 s the velocity has been carried to where
+    -- the body moved: the closed form holds to O(dt²))
+    it "pulls a body at rest toward the vertex with G tanh r (1e-4 after one step)" $
+      forM_ [0.5, 1.0, 2.0] $ \r -> do
+        w <- worldWith True [free (polar r 0) (V3 0 0 0)]
+        stepNative w
+        b <- readBody w 0
+        let expected = hyperbolicGravity * tanh r * pDt defaultParams
+            -- the unit tangent at polar r 0 pointing away from the vertex
+            outward = V3 (cosh r) (sinh r) 0
+        abs (normIn m (bsVel b) / expected - 1) `shouldSatisfy` (< 1e-4)
+        (inner m (bsVel b) outward / expected) `shouldSatisfy` (\c -> abs (c + 1) < 1e-4)
+
+    it "keeps a free body's speed (1e-12) on the surface (1e-9), along the geodesic's closed form, for 1000 steps" $ do
+      -- (to r = 3 from the vertex: farther out the hyperboloid's coordinates
+      -- grow as cosh r and every rounding with them)
+      let speed = 0.3
+          a = 1.1
+      w <- worldWith False [free vertex (speed *^ V3 (cos a) 0 (sin a))]
+      replicateM_ 1000 (stepNative w)
+      b <- readBody w 0
+      abs (normIn m (bsVel b) / speed - 1) `shouldSatisfy` (< 1e-12)
+      abs (evalFn g (bsPos b)) `shouldSatisfy` (< 1e-9)
+      (distanceTo (bsPos b) (polar (speed * 10) a) / cosh (speed * 10)) `shouldSatisfy` (< 1e-3)
+
+    it "keeps a thrown body's angular momentum about the y axis under gravity (Clairaut, 1e-9 over 2000 steps)" $ do
+      let p0 = polar 0.8 0.4
+          v0 = 0.9 *^ V3 (negate (sin 0.4)) 0 (cos 0.4)
+          momentum b = let V3 x _ z = bsPos b; V3 vx _ vz = bsVel b in x * vz - z * vx
+      w <- worldWith True [free p0 v0]
+      l0 <- momentum <$> readBody w 0
+      replicateM_ 2000 (stepNative w)
+      l1 <- momentum <$> readBody w 0
+      abs (l1 / l0 - 1) `shouldSatisfy` (< 1e-9)

@@ -485,7 +485,7 @@ spaceDiffSpec =
             , (what, n, j) <-
                 [("field", field s p, unBits f)]
                 ++ zip3 ["gradient.x", "gradient.y", "gradient.z"] (v3l (fieldGradient (spaceField s) p)) (map unBits g)
-                ++ [("curvature", gaussianCurvature (spaceField s) p, unBits k)]
+                ++ [("curvature", gaussianCurvatureIn (spaceMetric s) (spaceField s) p, unBits k)]
                 ++ [("boundary", evalBoundary s p, unBits bb) | Just bb <- [b]]
                 ++ zip3 ["gravity.x", "gravity.y", "gravity.z"] (v3l (evalGravity s p)) (map unBits gr) ]
           bad = [ c | c@(_, _, n, j) <- checks, not (agree n j) ]

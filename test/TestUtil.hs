@@ -154,6 +154,9 @@ surfaceSampler s = case spaceName s of
                   l = norm d
               in pure (if l > 1e-3 then Just (c ^+^ (0.3 / l) *^ d) else Nothing))
              `suchThatMap` id)
+  "hyperbolic-plane" ->
+        SurfaceSampler "the hyperboloid y = cosh r, (x, z) = sinh r (cos t, sin t), r <= 2.5"
+          ((\r t -> V3 (sinh r * cos t) (cosh r) (sinh r * sin t)) <$> choose (0, 2.5) <*> choose (0, 2 * pi))
   other -> error ("TestUtil.surfaceSampler: no sampler for space " ++ show other)
 
 genSurfacePoint :: Space -> Gen (V3 Double)

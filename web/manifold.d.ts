@@ -182,11 +182,14 @@ declare namespace Manifold {
   }
   /** How a space is a quotient of its surface: its images are Space.images. */
   type Quotient = "none" | "antipodal" | "translations" | "glide";
+  /** The ambient metric a space's surface sits in: R³'s, or Minkowski space's x² − y² + z² (the hyperbolic plane's hyperboloid). */
+  type Metric = "euclidean" | "minkowski";
   /** A space as the catalogue lists it (the page loads its script when it is chosen). */
   interface SpaceEntry {
     name: string;
     description: string;
     quotient: Quotient;
+    metric: Metric;
     hasBoundary: boolean;
     /** the space's script in web/gen */
     script: string;
@@ -218,6 +221,7 @@ declare namespace Manifold {
     /** Gaussian curvature at a surface point */
     curvature: ScalarField;
     quotient: Quotient;
+    metric: Metric;
     /** the images a body is also drawn at (none for quotient "none") */
     images: Image[];
     /** the radius of the ball about the origin that holds the surface's view */

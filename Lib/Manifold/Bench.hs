@@ -81,6 +81,8 @@ region sp = case spaceName sp of
   "torus" -> (4 * pi * pi * torusMajor * torusMinor, const True)
   "trumpet" -> (trumpetArea, \(V3 _ y _) -> y >= -1 && y <= 1)
   "rectangle" -> (6, const True)
+  -- the hyperbolic disc of radius 1.5 about the vertex: area 2π (cosh 1.5 − 1)
+  "hyperbolic-plane" -> (2 * pi * (cosh 1.5 - 1), \(V3 _ y _) -> y <= cosh 1.5)
   _ -> (4 * pi, const True)
   where
     -- ∫ 2π e^y √(1 + e^{2y}) dy over [−1, 1]

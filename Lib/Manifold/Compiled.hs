@@ -11,6 +11,7 @@ import qualified Manifold.Compiled.Disc as Disc
 import qualified Manifold.Compiled.FlatKlein as FlatKlein
 import qualified Manifold.Compiled.FlatTorus as FlatTorus
 import qualified Manifold.Compiled.Funnel as Funnel
+import qualified Manifold.Compiled.HyperbolicPlane as HyperbolicPlane
 import qualified Manifold.Compiled.Hemisphere as Hemisphere
 import qualified Manifold.Compiled.KleinBottle as KleinBottle
 import qualified Manifold.Compiled.Moebius as Moebius
@@ -26,4 +27,5 @@ compiledSteps :: [CompiledStep]
 compiledSteps =
   [ Plane.compiled, Sphere.compiled, Torus.compiled, Trumpet.compiled, Cube.compiled
   , Hemisphere.compiled, Disc.compiled, Rectangle.compiled, ProjectivePlane.compiled
-  , KleinBottle.compiled, Moebius.compiled, Funnel.compiled, FlatTorus.compiled, FlatKlein.compiled ]
+  , KleinBottle.compiled, Moebius.compiled, Funnel.compiled, FlatTorus.compiled, FlatKlein.compiled
+  , HyperbolicPlane.compiled ]

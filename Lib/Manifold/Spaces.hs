@@ -7,6 +7,7 @@ module Manifold.Spaces
   , plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
   , projectivePlane, kleinBottle, moebius, funnel
   , flatTorus, flatKlein, flatPeriod
+  , hyperbolicPlane, hyperbolicGravity
   , torusMajor, torusMinor
   ) where
 
@@ -17,17 +18,19 @@ import Linear.V3 (V3 (..))
 
 import Manifold.AD (scalarFn)
 import Manifold.Field
+import Manifold.Metric (Metric (..))
 import Manifold.Space
 
 -- | Every space the command line, the page and the tests know, in the
 -- page's order.
 --
 -- >>> length catalogue
--- 14
+-- 15
 catalogue :: [Space]
 catalogue =
   [ plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
-  , projectivePlane, kleinBottle, moebius, funnel, flatTorus, flatKlein ]
+  , projectivePlane, kleinBottle, moebius, funnel, flatTorus, flatKlein
+  , hyperbolicPlane ]
 
 -- | The catalogue's names, in order.
 --
@@ -250,3 +253,34 @@ flatSpace name description flipped = (space name description (scalarFn planeFiel
   , spaceScene = grid [-0.5, 0.5] [-0.5, 0.5] SquareShape 0.18
   , spaceBounds = 2
   }
+
+-- | The hyperbolic plane (curvature −1 everywhere), which no surface of R³
+-- is: the upper sheet of the hyperboloid @y² − x² − z² = 1@ in Minkowski
+-- space ("Manifold.Metric"). Gravity pulls to the vertex @(0, 1, 0)@.
+--
+-- >>> evalField hyperbolicPlane (V3 (sinh 1) (cosh 1) 0) < 1e-15
+-- True
+hyperbolicPlane :: Space
+hyperbolicPlane = (space "hyperbolic-plane" "the hyperbolic plane (curvature -1): the hyperboloid y^2 - x^2 - z^2 = 1, y > 0, in Minkowski space; gravity pulls to the vertex (0,1,0)" (scalarFn hyperboloidField))
+  { spaceMetric = Minkowski
+  , spaceGravity = VectorFn (\(V3 _ y _) -> V3 0 (constant hyperbolicGravity / y) 0)
+  , spaceCamera = Camera (V3 0 5.4 (-5.0)) (V3 0 1.6 0) (V3 0 1 0) 45
+  , spaceAxis = Just (V3 0 1 0)
+  , spaceScene = hyperbolicRing 6 0.7 SquareShape 0.2 ++ hyperbolicRing 3 1.4 SquareShape 0.25
+  , spaceBounds = 4.5
+  }
+  where
+    -- not a distance (|∇f| runs from 1 to √2 in R³): the engine only needs
+    -- the surface and its normal, the tracer f/|∇f|
+    hyperboloidField (V3 x y z) = sqrt (1 + x * x + z * z) - y
+    hyperbolicRing n r shape size =
+      [ Placement (V3 (sinh r * cos t) (cosh r) (sinh r * sin t)) (if even k then shape else CircleShape) size False
+      | k <- [0 .. n - 1 :: Int], let t = 2 * pi * (fromIntegral k + 0.5 * r) / fromIntegral n ]
+
+-- | The pull of the hyperbolic plane's gravity: the ambient field
+-- @(0, G/y, 0)@, projected onto the hyperboloid under the metric, is
+-- @G tanh r@ toward the vertex at hyperbolic distance @r@ (the potential
+-- @G log cosh r@): like the sphere's, it grows from the vertex, and it
+-- stays bounded however far a body is thrown.
+hyperbolicGravity :: Double
+hyperbolicGravity = 4

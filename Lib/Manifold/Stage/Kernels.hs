@@ -22,6 +22,7 @@ import Numeric (showHex)
 
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
+import Manifold.Metric (gaussianCurvatureIn, metricName)
 import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
@@ -60,7 +61,12 @@ v3 (V3 a b c) = [a, b, c]
 -- | GLSL ES 3.00 defining @field@, @gradient@, @boundary@ and @curvature@,
 -- and for the tracer @distanceEstimate@ and @projectToSurface@.
 spaceGlsl :: Space -> String
-spaceGlsl s = spaceGlslWith s (gaussianCurvature (spaceField s) pointSyms)
+spaceGlsl s = spaceGlslWith s (spaceCurvature s)
+
+-- | The Gaussian curvature of a space's surface at 'pointSyms', under its
+-- metric.
+spaceCurvature :: Space -> E
+spaceCurvature s = gaussianCurvatureIn (spaceMetric s) (spaceField s) pointSyms
 
 -- | The space's GLSL with the given @curvature@ (a function of x, y, z).
 spaceGlslWith :: Space -> E -> String
@@ -98,7 +104,7 @@ spaceScript s = unlines
       Nothing -> "const boundary = null;\n"
       Just _ -> printFunction JavaScript "boundary" xyz [evalBoundary s pointSyms]
   , printFunction JavaScript "gravity" xyz (v3 (evalGravity s pointSyms))
-  , printFunction JavaScript "curvature" xyz [gaussianCurvature (spaceField s) pointSyms]
+  , printFunction JavaScript "curvature" xyz [spaceCurvature s]
   , unlines procedures
   , "Manifold.spaces[" ++ jsString (spaceName s) ++ "] = {"
   , "  name: " ++ jsString (spaceName s) ++ ","
@@ -109,6 +115,8 @@ spaceScript s = unlines
   , "  gravity: gravity,"
   , "  curvature: curvature,"
   , "  quotient: " ++ jsString (quotientName (spaceQuotient s)) ++ ","
+  , "  // the ambient metric the surface sits in: \"euclidean\" (R^3) or \"minkowski\" (x^2 - y^2 + z^2)"
+  , "  metric: " ++ jsString (metricName (spaceMetric s)) ++ ","
   , "  // the quotient's images: [sx, sy, sz, tx, ty, tz] for p -> s*p + t (componentwise)"
   , "  images: [" ++ intercalate ", " [vecJs' (isoSigns g) (isoShift g) | g <- quotientImages (spaceQuotient s)] ++ "],"
   , "  bounds: " ++ num (spaceBounds s) ++ ","
@@ -134,6 +142,7 @@ spaceIndexScript spaces = unlines $
   ] ++
   [ "  { name: " ++ jsString (spaceName s) ++ ", description: " ++ jsString (spaceDescription s)
     ++ ", quotient: " ++ jsString (quotientName (spaceQuotient s))
+    ++ ", metric: " ++ jsString (metricName (spaceMetric s))
     ++ ", hasBoundary: " ++ (if hasBoundary s then "true" else "false")
     ++ ", script: " ++ jsString (spaceScriptFile s) ++ " },"
   | s <- spaces ] ++
