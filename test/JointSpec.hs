@@ -11,8 +11,8 @@ import qualified Data.ByteString.Lazy.Char8 as BL
 import Data.Either (fromLeft, isLeft)
 import Data.IORef
 import Data.List (isPrefixOf)
-import Linear.Metric (distance, norm)
-import Linear.V3 (V3 (..))
+import Linear.Metric (distance, dot, norm)
+import Linear.V3 (V3 (..), cross)
 import Test.Hspec
 
 import Manifold
@@ -218,6 +218,32 @@ spec = do
         if bx < 0 then writeIORef flipped True else pure ()
       readIORef flipped `shouldReturn` True
       readIORef worst >>= (`shouldSatisfy` (< 0.001))
+
+  describe "drawing (jointPaths)" $
+    it "gives each anchor's geodesic from its body's centre and the chord laid on the sphere along the great circle between the anchors" $ do
+      let e a = V3 (sin a) 0 (cos a)
+      w <- mkWorld sphere defaultParams { pGravity = False }
+             [dyn circle 0.08 (e (-0.5)) (V3 0 0 0) 0.3 0, dyn square 0.08 (e 0.5) (V3 0 0 0) 1 0]
+      _ <- joined w Revolute 0 1 (e 0.1) (e 0.1)
+      _ <- joined w Distance 0 1 (e (-0.45)) (e 0.45)
+      steps w 3
+      curves <- jointCurves w
+      anchors <- jointAnchorPoints w
+      a <- readBody w 0
+      b <- readBody w 1
+      forM_ (zip curves anchors) $ \((walkA, walkB, chord), (pa, pb)) -> do
+        head walkA `shouldBe` bsPos a
+        head walkB `shouldBe` bsPos b
+        last walkA `shouldBe` pa
+        distance (last walkB) pb `shouldSatisfy` (< 1e-12)
+        distance (head chord) pa `shouldSatisfy` (< 1e-12)
+        distance (last chord) pb `shouldSatisfy` (< 1e-12)
+        forM_ (walkA ++ walkB ++ chord) $ \q -> abs (norm q - 1) `shouldSatisfy` (< 1e-9)
+        -- on the great circle through the anchors, between them
+        forM_ chord $ \q -> abs (q `dot` (pa `cross` pb)) `shouldSatisfy` (< 1e-9)
+        -- in eight pieces, none much longer than an eighth of the arc
+        let arc = 2 * asin (distance pa pb / 2)
+        forM_ (zip chord (drop 1 chord)) $ \(p, q) -> distance p q `shouldSatisfy` (<= 1.1 * arc / 8)
 
   describe "scenes" $ do
     let chainScene = unlines

@@ -320,6 +320,10 @@ declare namespace Manifold {
     removeJoint: Procedure;
     /** (arrays, out): every joint's two anchors now, six numbers a joint */
     jointAnchors: Procedure;
+    /** (arrays, out): every joint as curves on the surface, jointPath.points points of three numbers a joint: body a's walk to its anchor, body b's, the chord between the anchors */
+    jointPaths: Procedure;
+    /** how many points jointPaths gives each part of a joint, and all of it */
+    jointPath: { walk: number; chord: number; points: number };
     /** (arrays): meta awakeCount and islandCount, counted now */
     countIslands: Procedure;
     /** (arrays, index, island (-1: awake), timer): a body's sleep state as a scene restores it */

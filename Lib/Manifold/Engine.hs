@@ -19,6 +19,7 @@ module Manifold.Engine
   , jointCount
   , jointField
   , jointAnchorPoints
+  , jointCurves
   , setJointField
   , JointKind (..)
   , JointField (..)
@@ -53,7 +54,7 @@ import Manifold.Params
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Grab
-import Manifold.Joint (addJoint, jointAnchors, jointProblem, removeJoint)
+import Manifold.Joint (addJoint, anchorWalkSteps, chordSegments, jointAnchors, jointPathPoints, jointPaths, jointProblem, removeJoint)
 import Manifold.Population
 import Manifold.Sleep (countIslands, setSleeping)
 import Manifold.Step (step, stepPhases)
@@ -212,6 +213,20 @@ jointAnchorPoints w = do
   let at k = MV.read out k
   mapM (\j -> (,) <$> (V3 <$> at (6 * j) <*> at (6 * j + 1) <*> at (6 * j + 2))
                   <*> (V3 <$> at (6 * j + 3) <*> at (6 * j + 4) <*> at (6 * j + 5))) [0 .. n - 1]
+
+-- | Every joint as the page draws it ('jointPaths'): the walk from body a's
+-- centre to its anchor, body b's, and the chord between the anchors
+-- projected onto the surface.
+jointCurves :: NativeWorld -> IO [([V3 Double], [V3 Double], [V3 Double])]
+jointCurves w = do
+  n <- jointCount w
+  let per = 3 * jointPathPoints
+      walk = anchorWalkSteps + 1
+  out <- MV.replicate (per * max 1 n) 0
+  runNative (jointPaths (nwSpace w) (nwArrays w) out)
+  let point k = V3 <$> MV.read out k <*> MV.read out (k + 1) <*> MV.read out (k + 2)
+      points j from count = mapM (\k -> point (per * j + 3 * k)) [from .. from + count - 1]
+  mapM (\j -> (,,) <$> points j 0 walk <*> points j walk walk <*> points j (2 * walk) (chordSegments + 1)) [0 .. n - 1]
 
 -- | A field of joint @j@ ('JointField').
 jointField :: NativeWorld -> Int -> JointField -> IO Double

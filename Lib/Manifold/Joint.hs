@@ -39,6 +39,10 @@ module Manifold.Joint
   , solveJoints
   , wrapJoints
   , jointAnchors
+  , jointPaths
+  , jointPathPoints
+  , anchorWalkSteps
+  , chordSegments
   , listPartners
   , notJoined
   , anchorPoint
@@ -63,18 +67,27 @@ import Manifold.World
 -- geodesic from its centre, in the direction at angle @θ@ from the body's
 -- direction, as long as @r@.
 anchorPoint :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m (V3 (Scalar m))
-anchorPoint sp f r theta = do
+anchorPoint sp f r theta = last <$> anchorWalk sp f r theta
+
+-- | How many geodesic steps walk a body's centre out to an anchor.
+anchorWalkSteps :: Int
+anchorWalkSteps = 4
+
+-- | The points of the walk to an anchor at polar coordinates @(r, θ)@
+-- ('anchorPoint'): the centre first, the anchor last, 'anchorWalkSteps'
+-- geodesic steps between.
+anchorWalk :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m [V3 (Scalar m)]
+anchorWalk sp f r theta = do
   let phi = bfAngle f + theta
       dir = cosF phi *^ bfU f ^+^ sinF phi *^ bfW f
-      steps = 4 :: Int
-      h = r / fromIntegral steps
-      go 0 s = pure s
+      h = r / fromIntegral anchorWalkSteps
+      go 0 (q, _) = pure [q]
       go k (q, d) = do
         let (q1, d1) = geodesicStep (spaceMetric sp) (spaceField sp) h (q, d)
         q' <- share3 q1
         d' <- share3 d1
-        go (k - 1 :: Int) (q', d')
-  fst <$> go steps (bfCentre f, dir)
+        (q :) <$> go (k - 1 :: Int) (q', d')
+  go anchorWalkSteps (bfCentre f, dir)
 
 -- | Of the images of point @q@ (itself included) under the quotient's
 -- group, the one nearest @ref@, with the signs of the isometry that gives
@@ -616,17 +629,52 @@ jointAnchors :: Imp m => Space -> WorldArrays (Array m) -> Array m -> m ()
 jointAnchors sp w out = do
   count <- readMeta w JointCount
   forEach (toIndex count) $ \j -> do
-    a <- toIndex <$> readJoint w j JA
-    b <- readJoint w j JB
-    hasB <- share (select (b + 0.5) 1 0)
-    fa <- bodyFrame (spaceMetric sp) w a
-    fb <- bodyFrame (spaceMetric sp) w (toIndex (maxF 0 b))
-    pa <- readJoint w j JRadiusA >>= \r -> readJoint w j JThetaA >>= anchorPoint sp fa r
-    pBody <- readJoint w j JRadiusB >>= \r -> readJoint w j JThetaB >>= anchorPoint sp fb r
-    world <- readJoint3 w j JWorldX
-    own <- share3 (select hasB <$> pBody <*> world)
-    let (pb, _) = nearestImageWith (spaceQuotient sp) pa own
-        put k x = writeArray out (6 * j + k) x
-        V3 ax ay az = pa
-        V3 bx by bz = pb
-    zipWithM_ put (map fromIntegral [0 :: Int ..]) [ax, ay, az, bx, by, bz]
+    (_, _, pa, pb) <- walksOf sp w j
+    writePoints out (6 * j) [pa, pb]
+
+-- | How many segments draw a distance joint's chord ('jointPaths').
+chordSegments :: Int
+chordSegments = 8
+
+-- | The points 'jointPaths' gives a joint: each anchor's walk, then the chord.
+jointPathPoints :: Int
+jointPathPoints = 2 * (anchorWalkSteps + 1) + chordSegments + 1
+
+-- | Every joint as curves on the surface, for drawing, into @out@ (3 ×
+-- 'jointPathPoints' numbers a joint): the geodesic walk from body a's
+-- centre to its anchor, body b's (in its own place; against the world,
+-- the world point repeated), and the chord from a's anchor to b's (through
+-- the image nearest a's) projected onto the surface, which on the sphere
+-- is the great circle's arc between them. A pin is drawn by the walks, a
+-- distance joint by its chord.
+jointPaths :: Imp m => Space -> WorldArrays (Array m) -> Array m -> m ()
+jointPaths sp w out = do
+  count <- readMeta w JointCount
+  forEach (toIndex count) $ \j -> do
+    (walkA, walkB, pa, pb) <- walksOf sp w j
+    let chord = [ projectToSurface (spaceField sp) (pa ^+^ (fromIntegral k / fromIntegral chordSegments) *^ (pb ^-^ pa))
+                | k <- [0 .. chordSegments] ]
+    writePoints out (fromIntegral (3 * jointPathPoints) * j) (walkA ++ walkB ++ chord)
+
+-- | Joint @j@'s two anchor walks (body b's in its own place, or the world
+-- point) and its anchors, body b's through the image nearest body a's.
+walksOf :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m ([V3 (Scalar m)], [V3 (Scalar m)], V3 (Scalar m), V3 (Scalar m))
+walksOf sp w j = do
+  a <- toIndex <$> readJoint w j JA
+  b <- readJoint w j JB
+  hasB <- share (select (b + 0.5) 1 0)
+  fa <- bodyFrame (spaceMetric sp) w a
+  fb <- bodyFrame (spaceMetric sp) w (toIndex (maxF 0 b))
+  walkA <- readJoint w j JRadiusA >>= \r -> readJoint w j JThetaA >>= anchorWalk sp fa r
+  walkBody <- readJoint w j JRadiusB >>= \r -> readJoint w j JThetaB >>= anchorWalk sp fb r
+  world <- readJoint3 w j JWorldX
+  walkB <- mapM (\q -> share3 (select hasB <$> q <*> world)) walkBody
+  let pa = last walkA
+      (image, _) = nearestImageWith (spaceQuotient sp) pa (last walkB)
+  pb <- share3 image
+  pure (walkA, walkB, pa, pb)
+
+-- | Points into @out@ from index @at@ on, three numbers each.
+writePoints :: Imp m => Array m -> Index m -> [V3 (Scalar m)] -> m ()
+writePoints out at ps =
+  zipWithM_ (\k x -> writeArray out (at + fromIntegral k) x) [0 :: Int ..] (concatMap (\(V3 x y z) -> [x, y, z]) ps)

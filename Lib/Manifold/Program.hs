@@ -22,7 +22,7 @@ import Linear.V3 (V3 (..))
 import Manifold.Body
 import Manifold.GeodesicPath (walkGeodesic)
 import Manifold.Grab
-import Manifold.Joint (addJoint, jointAnchors, removeJoint)
+import Manifold.Joint (addJoint, jointAnchors, jointPaths, removeJoint)
 import Manifold.Measures (measureBody, measureWorld)
 import Manifold.Population
 import Manifold.Sleep (countIslands, setSleeping)
@@ -72,6 +72,8 @@ pageProcedures sp l = stepProcedures sp l ++
       \_ [i, label, timer] -> setSleeping stagedArrays (toIndex i) label timer)
   , (Procedure "jointAnchors" (worldParams ++ ["out"]) [],
       \arrays _ -> jointAnchors sp stagedArrays (last arrays))
+  , (Procedure "jointPaths" (worldParams ++ ["out"]) [],
+      \arrays _ -> jointPaths sp stagedArrays (last arrays))
   , (Procedure "measure" (worldParams ++ ["out"]) [],
       \arrays _ -> measureWorld sp stagedArrays (last arrays))
   , (Procedure "measureBody" (worldParams ++ ["out"]) ["index"],

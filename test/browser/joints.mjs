@@ -1,7 +1,8 @@
 // Browser tests of joints (part "joints" of run.mjs), with a real mouse
 // and keyboard: the sphere-chain preset loads by URL with its 24 joints and
 // swings without warnings; the joints are drawn (at the pins the picture
-// differs from the same view with the joints removed); the joint tool (j)
+// differs from the same view with the joints removed; a distance joint
+// shows along the great circle between its anchors); the joint tool (j)
 // joins the body pressed on to the body released on with a pin, and, with
 // Ctrl held at the release on empty surface, a body to the world with a
 // distance joint; a joint made by the API that joins a body to itself, and a
@@ -64,6 +65,41 @@ async function testDrawn(check, page) {
   const left = await page.evaluate(function () { return window.manifold.stats().joints; });
   check("the joints are drawn: at most of the pins in view the picture differs from the same view with the joints removed (removeJoint)",
     pins.length >= 10 && changed >= 0.8 * pins.length && left === 0, changed + " of " + pins.length + " pins, " + left + " joints left");
+}
+
+// (2b) a joint is drawn on the surface: a distance joint 1 rad long across
+// the sphere's side facing the camera shows along the great circle between
+// its anchors (its straight chord would run up to 0.12 under the surface, hidden)
+async function testDrawnOnSurface(check, page) {
+  const arc = await page.evaluate(async function () {
+    const m = window.manifold;
+    m.pause();
+    const e = m.camera().eye, r = Math.hypot(e[0], e[1], e[2]);
+    const c = [e[0] / r, e[1] / r, e[2] / r], h = Math.hypot(c[0], c[2]);
+    const t = [-c[2] / h, 0, c[0] / h];
+    /** @param {number} a */
+    const on = function (a) { return [0, 1, 2].map(function (k) { return Math.cos(a) * c[k] + Math.sin(a) * t[k]; }); };
+    await m.loadScene({ space: "sphere", bodies: [{ shape: "circle", size: 0.05, p: on(-0.5) }, { shape: "circle", size: 0.05, p: on(0.5) }],
+      joints: [{ type: "distance", a: 0, b: 1, anchorA: on(-0.5), anchorB: on(0.5) }] });
+    m.pause();
+    m.render();
+    return [-0.3, -0.15, 0, 0.15, 0.3].map(function (a) { return m.project(on(a)); });
+  });
+  const withJoint = await canvasShot(page, path.join(OUT, "joints-sphere-arc.png"));
+  await page.evaluate(function () { window.manifold.removeJoint(0); window.manifold.render(); });
+  const without = await canvasShot(page, path.join(OUT, "joints-sphere-arc-removed.png"));
+  const shown = arc.filter(function (px) {
+    if (!px) return false;
+    for (let dy = -2; dy <= 2; dy++) {
+      for (let dx = -2; dx <= 2; dx++) {
+        const a = withJoint.at(Math.round(px[0]) + dx, Math.round(px[1]) + dy), b = without.at(Math.round(px[0]) + dx, Math.round(px[1]) + dy);
+        if (Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]) > 60) return true;
+      }
+    }
+    return false;
+  }).length;
+  check("a distance joint on the sphere is drawn along the great circle between its anchors: the picture differs at 5 of 5 points of the arc (its middle 0.12 above the straight chord)",
+    shown === 5, shown + " of " + arc.length + " points: " + JSON.stringify(arc));
 }
 
 // (3) the joint tool with the mouse: a pin between two bodies, a distance joint to the world with Ctrl
@@ -171,6 +207,7 @@ export async function testJoints(check, context, base) {
   const page = await openSpace(context, base, "#scene=sphere-chain", errors);
   await testChainPreset(check, page);
   await testDrawn(check, page);
+  await testDrawnOnSurface(check, page);
   await testJointTool(check, page);
   await testRefusals(check, page);
   await testSleeping(check, page);

@@ -414,19 +414,25 @@ var ManifoldWebTools = (function (W) {
     }
   }
 
-  // Every joint as segments: a pin from each body's centre to the pin (a
-  // chain shows as the line through its links), a distance joint from
-  // anchor to anchor (body b's at its image nearest body a's anchor).
+  // Every joint as curves on the surface (the engine's jointPaths): a pin
+  // by the geodesics from each body's centre to the pin (a chain shows as
+  // the line through its links), a distance joint by its chord laid on the
+  // surface from anchor to anchor (body b's at its image nearest a's).
   /** @param {ManifoldWeb.CurveRenderer} r @param {ManifoldWeb.World} w */
   function addJoints(r, w) {
-    const E = w.engine, J = E.joint, joints = w.a.joints, pos = w.a.pos, xyz = w.jointAnchors();
+    const E = w.engine, J = E.joint, joints = w.a.joints, xyz = w.jointPaths();
+    const { walk, chord, points } = E.jointPath;
+    /** @param {number} from @param {number} count */
+    const polyline = function (from, count) {
+      for (let k = from + 1; k < from + count; k++) r.segment(xyz, 3 * (k - 1), xyz, 3 * k, COLOUR.joint, 1, 1);
+    };
     for (let j = 0; j < w.jointCount(); j++) {
-      const o = E.jointStride * j, a = joints[o + J.a], b = joints[o + J.b];
+      const o = E.jointStride * j, first = points * j;
       if (E.jointKinds[joints[o + J.kind]] === "distance") {
-        r.segment(xyz, 6 * j, xyz, 6 * j + 3, COLOUR.joint, 1, 1);
+        polyline(first + 2 * walk, chord);
       } else {
-        r.segment(pos, 3 * a, xyz, 6 * j, COLOUR.joint, 1, 1);
-        if (b >= 0) r.segment(xyz, 6 * j + 3, pos, 3 * b, COLOUR.joint, 1, 1);
+        polyline(first, walk);
+        if (joints[o + J.b] >= 0) polyline(first + walk, walk);
       }
     }
   }

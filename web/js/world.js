@@ -384,6 +384,8 @@ var ManifoldWebWorld = (function (W) {
       this.measured = null;    // the engine's measures write here (measureOut)
       /** @type {Float64Array | null} */
       this.anchorsOut = null;  // jointAnchors writes here
+      /** @type {Float64Array | null} */
+      this.pathsOut = null;    // jointPaths writes here
       this.capacity = 0;
       /** @type {Float64Array[]} */
       this.arrays = [];        // the engine's arrays, in the order its procedures take them …
@@ -745,6 +747,18 @@ var ManifoldWebWorld = (function (W) {
       if (!this.anchorsOut || this.anchorsOut.length < 6 * n) this.anchorsOut = new Float64Array(6 * Math.max(16, n));
       if (n) this.engine.jointAnchors.apply(null, /** @type {(Float64Array | number)[]} */ (this.arrays).concat([this.anchorsOut]));
       return this.anchorsOut;
+    }
+
+    // Every joint as curves on the surface, for drawing (the engine's
+    // jointPaths): per joint, engine.jointPath.points points of three
+    // numbers: body a's walk from its centre to its anchor, body b's, and
+    // the chord between the anchors laid on the surface.
+    /** @returns {Float64Array} */
+    jointPaths() {
+      const n = this.jointCount(), per = 3 * this.engine.jointPath.points;
+      if (!this.pathsOut || this.pathsOut.length < per * n) this.pathsOut = new Float64Array(per * Math.max(16, n));
+      if (n) this.engine.jointPaths.apply(null, /** @type {(Float64Array | number)[]} */ (this.arrays).concat([this.pathsOut]));
+      return this.pathsOut;
     }
 
     // The world as a scene (JSON value).

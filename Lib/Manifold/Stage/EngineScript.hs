@@ -23,7 +23,7 @@ import Manifold.Stage.Imp (Procedure (..), stageFunctions)
 import Manifold.Stage.Expr (sym)
 import Manifold.Stage.Print (FnType (..), Target (..), printFunction, printProcedure)
 import Manifold.GeodesicPath (PathSlot (..), pathStride)
-import Manifold.Joint (jointProblem)
+import Manifold.Joint (anchorWalkSteps, chordSegments, jointPathPoints, jointProblem)
 import Manifold.Measures (MeasureSlot (..), measureSize)
 import Manifold.Population (frameMisfit)
 import Manifold.StateHash (HashedPart (..), hashedParts)
@@ -85,6 +85,8 @@ engineObject l subroutines =
     , "  // why addJoint refused a joint, by meta.lastJoint (-1, -2, -3)"
     , "  jointProblems: { " ++ intercalate ", " [show (show c) ++ ": " ++ show (jointProblem c) | c <- [-1, -2, -3]] ++ " },"
     , "  addJoint: addJoint, removeJoint: removeJoint, jointAnchors: jointAnchors,"
+    , "  // every joint as curves (Manifold.Joint.jointPaths): body a's walk to its anchor, body b's, the chord, points of three numbers"
+    , "  jointPaths: jointPaths, jointPath: { walk: " ++ show (anchorWalkSteps + 1) ++ ", chord: " ++ show (chordSegments + 1) ++ ", points: " ++ show jointPathPoints ++ " },"
     , "  // islands and sleeping (Manifold.Sleep): count them into meta.islandCount; put a body to sleep in an island"
     , "  countIslands: countIslands, setSleeping: setSleeping,"
     , "  // the state's hash (Manifold.StateHash): FNV-1a over [array, the meta counting its rows, numbers a row]"
