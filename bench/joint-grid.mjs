@@ -24,7 +24,7 @@ import path from "node:path";
 import url from "node:url";
 import { loadSpace } from "./worlds.mjs";
 import { commandLine } from "./options.mjs";
-import { serveWeb, loadPaused } from "./page.mjs";
+import { openBenchPage, loadPaused } from "./page.mjs";
 
 const { count, flag } = commandLine({
   usage: "node bench/joint-grid.mjs [--size N] [--rows R] [--steps K] [--warmup W] [--browser|--node] [--json]",
@@ -130,25 +130,14 @@ async function runScenes(open) {
 
 // Both scenes in one Chromium page (the page of web/, served cross-origin isolated).
 async function runBrowser() {
-  // imported here, after the node run (as bench/peers.mjs does)
-  const { launchBrowser } = await import("../test/browser/lib.mjs");
-  const server = await serveWeb(WEB);
-  const browser = await launchBrowser();
+  const { browser, page, pageErrors, close } = await openBenchPage(WEB, "#space=plane");
   try {
-    const page = await (await browser.newContext({ viewport: { width: 800, height: 600 } })).newPage();
-    const pageErrors = [];
-    page.on("pageerror", (e) => pageErrors.push(e.message));
-    await page.goto(server.url + "#space=plane");
-    await page.waitForFunction(() => !!window.manifold);
-    await page.evaluate(() => window.manifold.ready());
-    await page.evaluate(() => window.manifold.pause());
     log("Chromium " + browser.version());
     const out = await runScenes((scene) => pageWorld(page, scene));
     if (pageErrors.length) log("errors in the page:\n  " + pageErrors.join("\n  "));
     return { environment: { chromium: browser.version() }, ...out };
   } finally {
-    await browser.close();
-    await server.stop();
+    await close();
   }
 }
 

@@ -33,6 +33,32 @@ export function serveWeb(web) {
   });
 }
 
+// Serves `web` and opens it at `hash` in a new headless Chromium page of
+// 800×600 (`before(page)` first, e.g. for routes), the page's world paused,
+// its uncaught errors collected: { browser, page, pageErrors, close }.
+// Playwright is imported only here, when a page is wanted: loaded, it
+// slowed planck.js under node 3–4 times (bench/peers.mjs's node runs).
+export async function openBenchPage(web, hash, before) {
+  const { launchBrowser } = await import("../test/browser/lib.mjs");
+  const server = await serveWeb(web);
+  const browser = await launchBrowser();
+  const close = async function () { await browser.close(); await server.stop(); };
+  try {
+    const page = await (await browser.newContext({ viewport: { width: 800, height: 600 } })).newPage();
+    const pageErrors = [];
+    page.on("pageerror", (e) => pageErrors.push(e.message));
+    if (before) await before(page);
+    await page.goto(server.url + hash);
+    await page.waitForFunction(() => !!window.manifold);
+    await page.evaluate(() => window.manifold.ready());
+    await page.evaluate(() => window.manifold.pause());
+    return { browser, page, pageErrors, close };
+  } catch (e) {
+    await close();
+    throw e;
+  }
+}
+
 // Loads the scene into the page's world (paused) and waits for the frame it draws.
 export async function loadPaused(page, scene) {
   await page.evaluate(async function (scene) {

@@ -32,7 +32,7 @@ import path from "node:path";
 import url from "node:url";
 import vm from "node:vm";
 import { createRequire } from "node:module";
-import { serveWeb } from "./page.mjs";
+import { openBenchPage } from "./page.mjs";
 import { commandLine } from "./options.mjs";
 import { loadSpace } from "./worlds.mjs";
 
@@ -121,28 +121,20 @@ async function runNode() {
 
 // ---- in the page -----------------------------------------------------------------------------
 async function runBrowser() {
-  // imported here, after the node runs: with playwright-core loaded, planck.js
-  // stepped 3–4 times slower under node (measured on the 20-row pyramid)
-  const { launchBrowser, chromiumPath } = await import("../test/browser/lib.mjs");
-  const server = await serveWeb(WEB);
-  const browser = await launchBrowser();
-  try {
-    const page = await (await browser.newContext({ viewport: { width: 800, height: 600 } })).newPage();
-    const pageErrors = [];
-    page.on("pageerror", (e) => pageErrors.push(e.message));
+  // imported after the node runs (see openBenchPage)
+  const { chromiumPath } = await import("../test/browser/lib.mjs");
+  const { browser, page, pageErrors, close } = await openBenchPage(WEB, "#space=rectangle", async function (page) {
     // the peers and the benchmark's script, served from this checkout at /peers/ (same origin)
-    const files = { "engines.js": ENGINES_JS };
-    for (const [k, p] of Object.entries(PACKAGES)) files[k + path.extname(p.file)] = path.join(ROOT, "node_modules", p.name, p.file);
-    await page.route("**/peers/*", (route) => {
-      const file = files[path.basename(new URL(route.request().url()).pathname)];
-      if (!file) return route.fulfill({ status: 404, body: "not found" });
-      return route.fulfill({ status: 200, contentType: "text/javascript; charset=utf-8", body: fs.readFileSync(file),
-        headers: { "Cross-Origin-Resource-Policy": "same-origin", "Cache-Control": "no-store" } });
-    });
-    await page.goto(server.url + "#space=rectangle");
-    await page.waitForFunction(() => !!window.manifold);
-    await page.evaluate(() => window.manifold.ready());
-    await page.evaluate(() => window.manifold.pause()); // the page's own world stands still meanwhile
+      const files = { "engines.js": ENGINES_JS };
+      for (const [k, p] of Object.entries(PACKAGES)) files[k + path.extname(p.file)] = path.join(ROOT, "node_modules", p.name, p.file);
+      await page.route("**/peers/*", (route) => {
+        const file = files[path.basename(new URL(route.request().url()).pathname)];
+        if (!file) return route.fulfill({ status: 404, body: "not found" });
+        return route.fulfill({ status: 200, contentType: "text/javascript; charset=utf-8", body: fs.readFileSync(file),
+          headers: { "Cross-Origin-Resource-Policy": "same-origin", "Cache-Control": "no-store" } });
+      });
+  });
+  try {
     await page.addScriptTag({ url: "/peers/planck.js" });
     await page.addScriptTag({ url: "/peers/matter.js" });
     await page.addScriptTag({ url: "/peers/engines.js" });
@@ -184,8 +176,7 @@ async function runBrowser() {
     if (pageErrors.length) log("errors in the page:\n  " + pageErrors.join("\n  "));
     return { environment, results: out };
   } finally {
-    await browser.close();
-    await server.stop();
+    await close();
   }
 }
 
