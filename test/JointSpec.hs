@@ -13,6 +13,7 @@ import Data.IORef
 import Data.List (isPrefixOf)
 import Linear.Metric (distance, dot, norm)
 import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((*^))
 import Test.Hspec
 
 import Manifold
@@ -143,7 +144,51 @@ spec = do
       swung `shouldSatisfy` (> 0.29) -- it reached the limit
       swung `shouldSatisfy` (< 0.3 + 0.5 * pi / 180)
 
-  describe "weld joint" $
+  describe "weld joint" $ do
+    it "turns a welded pair rigidly about the sphere's pole: once round, each body's carried axis shows the cap's holonomy 2π (1 − cos θ), its direction is back" $ do
+      -- two circles at colatitude θ either side of the pole, welded at the
+      -- pole, set turning as one body about y at Ω: each spins at Ω cos θ
+      -- against the axis it carries, so after a whole turn (its direction
+      -- back where it began) that axis has turned by the enclosed cap's
+      -- area, not by 0 (drift) nor by its spin
+      let th = 0.6
+          om = 1
+          at s = V3 (s * sin th) (cos th) 0
+          vel s = V3 0 0 (negate (s * om * sin th))
+          dirOf b = let n = bsNormal b; u = bsAxis b in cos (bsAngle b) *^ u + sin (bsAngle b) *^ (n `cross` u)
+          signedAngle n a b = atan2 (n `dot` (a `cross` b)) (a `dot` b)
+          azimuth b = let V3 x _ z = bsPos b in atan2 (negate z) x
+      w <- mkWorld sphere defaultParams { pGravity = False }
+             [dyn circle 0.1 (at 1) (vel 1) 0 (om * cos th), dyn circle 0.1 (at (-1)) (vel (-1)) 0 (om * cos th)]
+      j <- joined w Weld 0 1 (V3 0 1 0) (V3 0 1 0)
+      start <- readBody w 0
+      turned <- newIORef 0
+      worst <- newIORef (0 :: Double)
+      worstGap' <- newIORef 0
+      worstChord <- newIORef 0
+      let go prev = do
+            stepNative w
+            b <- readBody w 0
+            other <- readBody w 1
+            let a = azimuth b
+                da = a - prev - 2 * pi * fromIntegral (round ((a - prev) / (2 * pi)) :: Int)
+            modifyIORef' turned (+ da)
+            jointField w j JAngleError >>= modifyIORef' worst . max . abs
+            worstGap w >>= modifyIORef' worstGap' . max
+            modifyIORef' worstChord (max (abs (distance (bsPos b) (bsPos other) - 2 * sin th)))
+            t <- readIORef turned
+            if t < 2 * pi then go a else pure b
+      end <- go (azimuth start)
+      readIORef worst >>= (`shouldSatisfy` (< 0.5 * pi / 180))
+      readIORef worstGap' >>= (`shouldSatisfy` (< 1e-3))
+      readIORef worstChord >>= (`shouldSatisfy` (< 1e-3))
+      distance (bsPos end) (bsPos start) `shouldSatisfy` (< 0.02)
+      abs (signedAngle (bsNormal end) (dirOf start) (dirOf end)) `shouldSatisfy` (< pi / 180)
+      -- spun 2π cos θ against the carried axis, which turned the rest
+      let holonomy = 2 * pi * (1 - cos th)
+      abs (bsAngle end - bsAngle start - 2 * pi * cos th) `shouldSatisfy` (< 0.01 * 2 * pi * cos th)
+      abs (signedAngle (bsNormal end) (bsAxis start) (bsAxis end) - holonomy) `shouldSatisfy` (< 0.01 * holonomy)
+
     it "carries a welded pair once round the sphere's equator without drift: the relative angle within 0.5°, the pin together, back where it began" $ do
       -- no gravity: the pair moves as one body along the great circle (a
       -- geodesic, whose holonomy keeps every direction's angle to it)
@@ -218,6 +263,29 @@ spec = do
         if bx < 0 then writeIORef flipped True else pure ()
       readIORef flipped `shouldReturn` True
       readIORef worst >>= (`shouldSatisfy` (< 0.001))
+
+    it "a pin holds across the projective plane's antipode: a body pinned to the other's antipodal image swings under gravity, anchors together" $ do
+      -- body b sits at the antipode of a point beside body a; the pin
+      -- where a touches b's image is on b at the antipode of the pin
+      let e a = V3 (sin a) 0 (cos a)
+      w <- mkWorld projectivePlane defaultParams
+             [dyn circle 0.08 (e (-0.1)) (V3 0.3 0.2 0) 0 0, dyn circle 0.08 (negate (e 0.1)) (V3 0 0 0) 0 0]
+      j <- joined w Revolute 0 1 (e 0) (e 0)
+      jointField w j JRadiusB >>= (`shouldSatisfy` (\r -> abs (r - 0.1) < 1e-3))
+      -- the pin lets the bodies turn about it, each keeping its centre
+      -- 0.1 (a chord of 2 sin 0.05) from the anchor, body b through its image
+      let chord = 2 * sin 0.05
+      worst <- newIORef 0
+      worstReach <- newIORef 0
+      replicateM_ 300 $ do
+        stepNative w
+        worstGap w >>= modifyIORef' worst . max
+        [ca, cb] <- mapM (fmap bsPos . readBody w) [0, 1]
+        [(pa, pb)] <- jointAnchorPoints w
+        let reachB = min (distance pb cb) (distance pb (negate cb))
+        modifyIORef' worstReach (max (max (abs (distance pa ca - chord)) (abs (reachB - chord))))
+      readIORef worst >>= (`shouldSatisfy` (< 1e-3))
+      readIORef worstReach >>= (`shouldSatisfy` (< 2e-3))
 
   describe "drawing (jointPaths)" $
     it "gives each anchor's geodesic from its body's centre and the chord laid on the sphere along the great circle between the anchors" $ do
@@ -305,5 +373,6 @@ spec = do
       a <- jointField w 0 JA
       b <- jointField w 0 JB
       (a, b) `shouldBe` (2, 1)
+
 
 

@@ -5,6 +5,7 @@ import System.IO (BufferMode (..), hSetBuffering, stdout)
 import Test.Hspec
 
 import qualified ADSpec
+import qualified AnchorSpec
 import qualified ElementarySpec
 import qualified BodySpec
 import qualified CliSpec
@@ -44,6 +45,7 @@ main = do
     describe "Manifold.Stage.Imp" ImpSpec.spec
     describe "Physics" PhysicsSpec.spec
     describe "Solver" SolverSpec.spec
+    AnchorSpec.spec
     describe "Joint" JointSpec.spec
     describe "Sleep" SleepSpec.spec
     FlatSpec.spec

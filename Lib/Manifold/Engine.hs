@@ -54,7 +54,8 @@ import Manifold.Params
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Grab
-import Manifold.Joint (addJoint, anchorWalkSteps, chordSegments, jointAnchors, jointPathPoints, jointPaths, jointProblem, removeJoint)
+import Manifold.Anchor (anchorWalkSteps)
+import Manifold.Joint (addJoint, chordSegments, jointAnchors, jointPathPoints, jointPaths, jointProblem, removeJoint)
 import Manifold.Population
 import Manifold.Sleep (countIslands, setSleeping)
 import Manifold.Step (step, stepPhases)

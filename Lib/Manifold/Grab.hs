@@ -14,6 +14,7 @@ module Manifold.Grab
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^))
 
+import Manifold.Anchor (polarOf)
 import Manifold.Collide (pointInBody)
 import Manifold.Field
 import Manifold.Metric
@@ -54,14 +55,12 @@ grab :: Imp m => Space -> WorldArrays (Array m) -> Index m -> Scalar m -> V3 (Sc
      -> Scalar m -> Scalar m -> Scalar m -> m ()
 grab sp w i sgn q frequency damping maxForce = do
   f <- bodyFrame (spaceMetric sp) w i
-  let d = nearestImage (spaceQuotient sp) (bfCentre f) (sgn *^ q) ^-^ bfCentre f
-      x = inner (spaceMetric sp) d (bfU f)
-      y = inner (spaceMetric sp) d (bfW f)
+  (r, theta) <- polarOf sp f (sgn *^ q)
   writeMouse w MActive 1
   writeMouse w MBody (toScalar i)
   writeMouse w MSign sgn
-  writeMouse w MLocalR (sqrt (x * x + y * y))
-  writeMouse w MLocalTheta (atan2F y x - bfAngle f)
+  writeMouse w MLocalR r
+  writeMouse w MLocalTheta theta
   writeMouse w MFrequency frequency
   writeMouse w MDamping damping
   writeMouse w MMaxForce maxForce

@@ -12,6 +12,9 @@
 --   geodesic and the rows are set up in R³: a pin (revolute, weld) makes
 --   the two anchors coincide along body a's two frame directions, a
 --   distance joint holds the chord between them along its own direction;
+--   a row's Jacobian takes how each anchor moves as its body slides and
+--   turns, differenced from the walk ('anchorMotion': on a curved surface
+--   not the flat lever arm's, by a part in @r²@ of the curvature);
 --   across the sub-steps a row's error is updated from the bodies' moves
 --   along its Jacobian, as a contact's depth is;
 -- * angles: body b's direction is carried to body a's tangent plane by
@@ -41,77 +44,30 @@ module Manifold.Joint
   , jointAnchors
   , jointPaths
   , jointPathPoints
-  , anchorWalkSteps
   , chordSegments
   , listPartners
   , notJoined
-  , anchorPoint
   , jointProblem
   ) where
 
 import Control.Monad (zipWithM_)
-import Linear.Metric (dot, quadrance)
+import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
 
+import Manifold.Anchor
 import Manifold.Field
 import Manifold.Metric
 import Manifold.Sleep (markIsland)
 import Manifold.Soft
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.Surface (geodesicStep, projectToSurface, referenceAxis, tangentProjection)
+import Manifold.Surface (projectToSurface, referenceAxis, tangentProjection)
 import Manifold.World
-
--- | Where a body's anchor at polar coordinates @(r, θ)@ is now: the
--- geodesic from its centre, in the direction at angle @θ@ from the body's
--- direction, as long as @r@.
-anchorPoint :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m (V3 (Scalar m))
-anchorPoint sp f r theta = last <$> anchorWalk sp f r theta
-
--- | How many geodesic steps walk a body's centre out to an anchor.
-anchorWalkSteps :: Int
-anchorWalkSteps = 4
-
--- | The points of the walk to an anchor at polar coordinates @(r, θ)@
--- ('anchorPoint'): the centre first, the anchor last, 'anchorWalkSteps'
--- geodesic steps between.
-anchorWalk :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m [V3 (Scalar m)]
-anchorWalk sp f r theta = do
-  let phi = bfAngle f + theta
-      dir = cosF phi *^ bfU f ^+^ sinF phi *^ bfW f
-      h = r / fromIntegral anchorWalkSteps
-      go 0 (q, _) = pure [q]
-      go k (q, d) = do
-        let (q1, d1) = geodesicStep (spaceMetric sp) (spaceField sp) h (q, d)
-        q' <- share3 q1
-        d' <- share3 d1
-        (q :) <$> go (k - 1 :: Int) (q', d')
-  go anchorWalkSteps (bfCentre f, dir)
-
--- | Of the images of point @q@ (itself included) under the quotient's
--- group, the one nearest @ref@, with the signs of the isometry that gives
--- it (how it maps directions).
-nearestImageWith :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 a)
-nearestImageWith quo ref q = fst (foldl pick ((q, V3 1 1 1), quadrance (q ^-^ ref)) candidates)
-  where
-    candidates = [ (applyIso g q, fmap constant (isoSigns g)) | g <- quotientImages quo ]
-    pick ((best, bestSigns), bd) (c, cs) =
-      let d = quadrance (c ^-^ ref)
-          closer = bd - d
-      in ((select closer <$> c <*> best, select closer <$> cs <*> bestSigns), minF d bd)
 
 -- | A body's direction: its axis turned by its angle about the normal.
 direction :: Field s => BodyFrame s -> V3 s
 direction f = cosF (bfAngle f) *^ bfU f ^+^ sinF (bfAngle f) *^ bfW f
-
--- | The polar coordinates, in body @f@, of a surface point @q@ near it.
-polarOf :: Imp m => Space -> BodyFrame (Scalar m) -> V3 (Scalar m) -> m (Scalar m, Scalar m)
-polarOf sp f q = do
-  d <- share3 (nearestImage (spaceQuotient sp) (bfCentre f) q ^-^ bfCentre f)
-  x <- share (inner (spaceMetric sp) d (bfU f))
-  y <- share (inner (spaceMetric sp) d (bfW f))
-  (,) <$> share (sqrt (x * x + y * y)) <*> share (atan2F y x - bfAngle f)
 
 -- | An angle brought into @(−π, π]@.
 wrapAngle :: Field s => s -> s
@@ -295,17 +251,24 @@ prepareJoint sp w j = do
       metric = spaceMetric sp
   fa <- bodyFrame metric w a
   fb <- bodyFrame metric w bi
-  pA <- readJoint w j JRadiusA >>= \r -> readJoint w j JThetaA >>= anchorPoint sp fa r
-  pBody <- readJoint w j JRadiusB >>= \r -> readJoint w j JThetaB >>= anchorPoint sp fb r
+  ma <- readJoint w j JRadiusA >>= \r -> readJoint w j JThetaA >>= anchorMotion sp fa r
+  mb <- readJoint w j JRadiusB >>= \r -> readJoint w j JThetaB >>= anchorMotion sp fb r
+  let pA = amPoint ma
   world <- readJoint3 w j JWorldX
-  own <- share3 (select hasB <$> pBody <*> world)
+  own <- share3 (select hasB <$> amPoint mb <*> world)
   let (image, signs) = nearestImageWith (spaceQuotient sp) pA own
   pB <- share3 image
   sg <- share3 signs
   writeJoint3 w j JAnchorAX pA
   writeJoint3 w j JAnchorBX pB
-  writeJoint3 w j JLeverAX (pA ^-^ bfCentre fa)
-  writeJoint3 w j JLeverBX (hasB *^ (pBody ^-^ bfCentre fb))
+  writeJoint3 w j JSlideUAX (amSlideU ma)
+  writeJoint3 w j JSlideWAX (amSlideW ma)
+  writeJoint3 w j JTurnAX (amTurn ma)
+  writeJoint3 w j JSlideUBX (hasB *^ amSlideU mb)
+  writeJoint3 w j JSlideWBX (hasB *^ amSlideW mb)
+  writeJoint3 w j JTurnBX (hasB *^ amTurn mb)
+  writeJoint3 w j JUBX (bfU fb)
+  writeJoint3 w j JWBX (bfW fb)
   writeJoint3 w j JSignX sg
   writeJoint3 w j JE1X (bfU fa)
   writeJoint3 w j JE2X (bfW fa)
@@ -375,31 +338,50 @@ rowMass metric (ima, iia, imb, iib) (Row la wa lb wb) =
   let k = ima * quadranceIn metric la + iia * wa * wa + imb * quadranceIn metric lb + iib * wb * wb
   in select k (recip k) 0
 
+-- | How an anchor moves with its body, as the step's preparation found it
+-- ('anchorMotion'), with the body's frame then.
+data Mover s = Mover
+  { slideU :: !(V3 s), slideW :: !(V3 s), turnBy :: !(V3 s), frameU :: !(V3 s), frameW :: !(V3 s) }
+
 -- | Where a joint's anchors are in the sub-steps: as the step found them,
--- each moved with its body and its lever turned with it about the body's
--- normal (so that a fast turn does not leave the anchor behind its
--- linearised move); the vector from a's anchor to b's (b's through the
--- image), the levers and the normals.
+-- each moved with its body by its 'Mover' (the turn as a rotation about
+-- the body's normal of the lever that turns so, so that a fast turn does
+-- not leave the anchor behind its linearised move); the vector from a's
+-- anchor to b's (b's through the image), the movers with their turning
+-- moves turned so too (what the rows take), and the image's signs.
 data Geometry s = Geometry
-  { gapNow :: !(V3 s), leverA :: !(V3 s), leverB :: !(V3 s), normalA :: !(V3 s), normalB :: !(V3 s), imageSigns :: !(V3 s) }
+  { gapNow :: !(V3 s), moverA :: !(Mover s), moverB :: !(Mover s), imageSigns :: !(V3 s) }
 
 geometryNow :: Imp m => WorldArrays (Array m) -> Index m -> Pair m -> m (Geometry (Scalar m))
 geometryNow w j p = do
   pA0 <- readJoint3 w j JAnchorAX
   pB0 <- readJoint3 w j JAnchorBX
-  rA0 <- readJoint3 w j JLeverAX
-  rB0 <- readJoint3 w j JLeverBX
   sg <- readJoint3 w j JSignX
+  a <- Mover <$> readJoint3 w j JSlideUAX <*> readJoint3 w j JSlideWAX <*> readJoint3 w j JTurnAX
+             <*> readJoint3 w j JE1X <*> readJoint3 w j JE2X
+  b <- Mover <$> readJoint3 w j JSlideUBX <*> readJoint3 w j JSlideWBX <*> readJoint3 w j JTurnBX
+             <*> readJoint3 w j JUBX <*> readJoint3 w j JWBX
   nA <- read3 (wNormal w) (pairA p)
   nB <- read3 (wNormal w) (pairB p)
   Motion mA tA <- movedOf w (pairA p)
   Motion mB tB <- movedOf w (pairB p)
-  rA <- turn nA tA rA0
-  rB <- turn nB tB rB0
-  d <- share3 ((pB0 ^+^ pairHasB p *^ (sg * (mB ^+^ rB ^-^ rB0))) ^-^ (pA0 ^+^ mA ^+^ rA ^-^ rA0))
-  pure (Geometry d rA rB nA nB sg)
+  (dA, a') <- displacement a nA mA tA
+  (dB, b') <- displacement b nB mB tB
+  d <- share3 ((pB0 ^+^ pairHasB p *^ (sg * dB)) ^-^ (pA0 ^+^ dA))
+  pure (Geometry d a' b' sg)
   where
     metric = pairMetric p
+    -- the slide along the frame, and the turn: the tangent part of the
+    -- anchor's turning move is a lever turned a quarter, rotated here;
+    -- the rest (out of the tangent plane) taken linearly
+    displacement mv@(Mover su sw tu u wv) n m t = do
+      tangentTurn <- share3 (tangentProjection metric n tu)
+      lever <- share3 (negate <$> perpendicular metric n tangentTurn)
+      turned <- turn n t lever
+      outward <- share3 (tu ^-^ tangentTurn)
+      moved <- share3 (inner metric m u *^ su ^+^ inner metric m wv *^ sw ^+^ (turned ^-^ lever) ^+^ t *^ outward)
+      turnNow <- share3 (perpendicular metric n turned ^+^ outward)
+      pure (moved, mv { turnBy = turnNow })
     -- Rodrigues' rotation about the normal (under the metric: the part
     -- along the normal is kept, the tangent part turned a quarter by
     -- 'perpendicular')
@@ -409,12 +391,14 @@ geometryNow w j p = do
       share3 (c *^ r ^+^ s *^ perpendicular metric n r ^+^ ((1 - c) * constant (normalSign metric) * inner metric n r) *^ n)
 
 -- | The row that moves the anchors apart along direction @e@ (at body a;
--- body b's side through the image).
+-- body b's side through the image): each body's velocity and spin as they
+-- move its anchor ('Mover').
 rowAlong :: Field s => Metric -> s -> Geometry s -> V3 s -> Row s
 rowAlong metric hasB g e =
   let eb = imageSigns g * e
-  in Row (tangentProjection metric (normalA g) (negate <$> e)) (negate ((leverA g `cross` e) `dot` normalA g))
-         (hasB *^ tangentProjection metric (normalB g) eb) (hasB * ((leverB g `cross` eb) `dot` normalB g))
+      push m x = inner metric x (slideU m) *^ frameU m ^+^ inner metric x (slideW m) *^ frameW m
+  in Row (negate <$> push (moverA g) e) (negate (inner metric e (turnBy (moverA g))))
+         (hasB *^ push (moverB g) eb) (hasB * inner metric eb (turnBy (moverB g)))
 
 -- | A distance joint's row (along the anchors' chord) and the chord's length.
 chordRow :: Imp m => WorldArrays (Array m) -> Index m -> Pair m -> Geometry (Scalar m) -> m (Row (Scalar m), Scalar m)

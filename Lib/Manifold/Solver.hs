@@ -47,6 +47,7 @@ import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
 
+import Manifold.Anchor (anchorPoint)
 import Manifold.Field
 import Manifold.Joint
 import Manifold.Metric

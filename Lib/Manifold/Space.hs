@@ -18,6 +18,7 @@ module Manifold.Space
   , selfImage
   , wrapLattice
   , nearestImage
+  , nearestImageWith
   , distanceToDomain
   , quotientWrap
   , domainDistance
@@ -186,6 +187,18 @@ nearestImage (Lattice period flipped) ref q =
         in (select closer <$> c <*> best, minF d bd)
   in fst (foldl pick (q0, quadrance (q0 ^-^ ref)) (drop 1 candidates))
 nearestImage _ _ q = q
+
+-- | Of the images of point @q@ (itself included) under the quotient's
+-- group, the one nearest @ref@, with the signs of the isometry that gives
+-- it (how it maps directions).
+nearestImageWith :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 a)
+nearestImageWith quo ref q = fst (foldl pick ((q, V3 1 1 1), quadrance (q ^-^ ref)) candidates)
+  where
+    candidates = [ (applyIso g q, fmap constant (isoSigns g)) | g <- quotientImages quo ]
+    pick ((best, bestSigns), bd) (c, cs) =
+      let d = quadrance (c ^-^ ref)
+          closer = bd - d
+      in ((select closer <$> c <*> best, select closer <$> cs <*> bestSigns), minF d bd)
 
 -- | A pinhole camera looking at @cameraTarget@ from @cameraEye@.
 data Camera = Camera

@@ -219,8 +219,10 @@ data MouseField = MActive | MBody | MLocalR | MLocalTheta | MTargetX | MTargetY 
 -- its grabbed point) or, against the world, as a surface point, and the
 -- settings of the kind. The impulses are kept from step to step (warm
 -- starting). The rest is what each step's preparation finds for the
--- sub-steps: the anchors (body b's at the image nearest body a's), each
--- anchor's lever from its body's centre (body b's in its own frame), the
+-- sub-steps: the anchors (body b's at the image nearest body a's), how
+-- each anchor moves with its body ('Manifold.Anchor.anchorMotion': per
+-- unit of the body's slide along its frame's two directions, per radian
+-- of its turn; body b's in its own frame, which is kept too), the
 -- image's signs, the pin's two row directions (body a's frame), the
 -- anchors' distance, and for the angular rows the image's orientation
 -- ('JSigma'), the relative angle's error and the rows' mass.
@@ -231,7 +233,9 @@ data JointField
   | JReference | JLimitOn | JLower | JUpper | JMotorOn | JMotorSpeed | JMaxTorque
   | JImpulse1 | JImpulse2 | JImpulseAxial | JImpulseLower | JImpulseUpper | JImpulseMotor | JImpulseAngle
   | JAnchorAX | JAnchorAY | JAnchorAZ | JAnchorBX | JAnchorBY | JAnchorBZ
-  | JLeverAX | JLeverAY | JLeverAZ | JLeverBX | JLeverBY | JLeverBZ
+  | JSlideUAX | JSlideUAY | JSlideUAZ | JSlideWAX | JSlideWAY | JSlideWAZ | JTurnAX | JTurnAY | JTurnAZ
+  | JSlideUBX | JSlideUBY | JSlideUBZ | JSlideWBX | JSlideWBY | JSlideWBZ | JTurnBX | JTurnBY | JTurnBZ
+  | JUBX | JUBY | JUBZ | JWBX | JWBY | JWBZ
   | JSignX | JSignY | JSignZ | JE1X | JE1Y | JE1Z | JE2X | JE2Y | JE2Z
   | JChord | JSigma | JAngleError | JAngularMass | JCollide
   deriving (Show, Eq, Enum, Bounded)
