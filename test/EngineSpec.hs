@@ -37,7 +37,7 @@ sceneWorld sp = do
   w <- newWorld sp (layout 32)
   forM_ (zip [0 :: Int ..] (spaceScene sp)) $ \(k, pl) -> do
     let v = V3 (0.7 * sin (fromIntegral k)) 0.4 (0.7 * cos (fromIntegral k))
-    r <- addBody w (BodyInit (shapeFromKind (placeShape pl)) (placeSize pl) 1 False (placeAt pl) v 0.3 (0.5 - fromIntegral k * 0.2))
+    r <- addBody w (BodyInit (shapeFromKind (placeShape pl)) (placeSize pl) 1 False (placeAt pl) v 0.3 (0.5 - fromIntegral k * 0.2) sceneMaterial)
     either (expectationFailure . (("addBody in " ++ spaceName sp ++ ": ") ++)) (const (pure ())) r
   pure w
 
@@ -230,7 +230,7 @@ freeMotionSpec = describe "Engine: free motion" $ do
   it "keeps a free body's kinetic energy on the torus (no gravity) within 0.1 % over 10 000 steps" $ do
     w <- newWorld torus (layout 4)
     setParams w defaultParams { pGravity = False }
-    Right i <- addBody w (BodyInit square 0.2 1 False (V3 1.3 0 0) (V3 0 1 1) 0 0.5)
+    Right i <- addBody w (BodyInit square 0.2 1 False (V3 1.3 0 0) (V3 0 1 1) 0 0.5 sceneMaterial)
     b0 <- readBody w i
     replicateM_ 10000 (stepNative w)
     b1 <- readBody w i
@@ -250,7 +250,7 @@ freeMotionSpec = describe "Engine: free motion" $ do
   it "leaves a body whose step would be non-finite where it was, and counts a warning" $ do
     w <- newWorld sphere (layout 4)
     setParams w defaultParams { pGravity = False }
-    Right i <- addBody w (BodyInit circle 0.1 1 False (V3 0 0 1) (V3 1e300 1e300 0) 0 0)
+    Right i <- addBody w (BodyInit circle 0.1 1 False (V3 0 0 1) (V3 1e300 1e300 0) 0 0 sceneMaterial)
     before <- readBody w i
     stepNative w
     after <- readBody w i
@@ -472,6 +472,8 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withBody (body ", \"static\": 1"), withBody (body ", \"density\": 0"), withBody (body ", \"colour\": 1")
           , withBody (body ", \"impulses\": 3"), withBody (body ", \"impulses\": [[64, 0.1]]"), withBody (body ", \"impulses\": [[64.5, 0.1, 0]]")
           , withBody (body ", \"impulses\": [[-1, 0.1, 0]]"), withBody (body ", \"impulses\": [[64, -0.1, 0]]"), withBody (body ", \"impulses\": [[64, 0.1, null]]")
+          -- a body's own material: the scene keys' values
+          , withBody (body ", \"friction\": -0.1"), withBody (body ", \"restitution\": 1.5"), withBody (body ", \"friction\": true")
           -- joints: every way a joint is refused
           , withJoint "3", withJoint "{}", withJoint "{\"type\": \"hinge\", \"a\": 0, \"b\": 1}", withJoint "{\"type\": 1}"
           , withJoint "{\"type\": \"revolute\", \"a\": 0, \"b\": 2, \"anchor\": [1, 0, 0]}"
@@ -503,7 +505,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           -- read alike
           , "{\"space\": \"plane\"}", withBody (body "")
           , "{\"space\": \"torus\", \"dt\": 0.02, \"gravity\": false, \"iterations\": 12, \"friction\": 0.1, \"restitution\": 0.5, \"bodies\": ["
-              ++ body ", \"density\": 2, \"static\": true, \"v\": [0, 0.5, 0], \"angle\": 0.3, \"omega\": -1, \"impulses\": [[64, 0.25, -0.01], [129, 0, 0.5]]"
+              ++ body ", \"density\": 2, \"friction\": 0.8, \"restitution\": 0.25, \"static\": true, \"v\": [0, 0.5, 0], \"angle\": 0.3, \"omega\": -1, \"impulses\": [[64, 0.25, -0.01], [129, 0, 0.5]]"
               ++ ", {\"shape\": {\"polygon\": 7}, \"size\": 0.2, \"p\": [0, 0.4, 1]}]}"
           , "{\"space\": \"plane\", \"sleep\": false, \"sleepTime\": 2, \"bodies\": [" ++ body ", \"awake\": false, \"sleepTime\": 0.75"
               ++ ", " ++ body ", \"awake\": false, \"island\": 0" ++ ", " ++ body ", \"sleepTime\": 0.1" ++ "]}" ]

@@ -30,7 +30,7 @@ worldOf sp gravityOn bodies = do
   pure w
 
 circleAt :: Double -> V3 Double -> V3 Double -> Double -> BodyInit
-circleAt r p v omega = BodyInit circle r 1 False p v 0 omega
+circleAt r p v omega = BodyInit circle r 1 False p v 0 omega sceneMaterial
 
 -- | The world's measures, natively.
 measuresOf :: NativeWorld -> IO [Double]
@@ -100,8 +100,8 @@ spec = describe "Manifold.Measures" $ do
 
   it "counts a body's contact rows: a box resting on a static floor has some, a body alone none" $ do
     w <- worldOf plane True
-      [ BodyInit square 0.3 1 True (V3 0 0 (-0.5)) (V3 0 0 0) 0 0
-      , BodyInit square 0.15 1 False (V3 0 0 (-0.5 + 0.3 / sqrt 2 + 0.15 / sqrt 2 + 0.005)) (V3 0 0 0) 0 0
+      [ BodyInit square 0.3 1 True (V3 0 0 (-0.5)) (V3 0 0 0) 0 0 sceneMaterial
+      , BodyInit square 0.15 1 False (V3 0 0 (-0.5 + 0.3 / sqrt 2 + 0.15 / sqrt 2 + 0.005)) (V3 0 0 0) 0 0 sceneMaterial
       , circleAt 0.15 (V3 2 0 2) (V3 0 0 0) 0 ]
     -- (awake: a sleeping box has no contact rows)
     setParams w defaultParams { pSleep = False }

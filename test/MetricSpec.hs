@@ -83,7 +83,7 @@ spec = describe "Manifold.Metric: the hyperboloid in Minkowski space" $ do
     w <- genericStep <$> newWorldUsing [] hyperboloid (layout 16)
     let speed = 0.5
         a = 0.4
-    _ <- addBody w (BodyInit circle 0.1 1 False vertex (speed *^ V3 (cos a) 0 (sin a)) 0 0.3) >>= either fail pure
+    _ <- addBody w (BodyInit circle 0.1 1 False vertex (speed *^ V3 (cos a) 0 (sin a)) 0 0.3 sceneMaterial) >>= either fail pure
     let steps = 600 :: Int
     replicateM_ steps (stepNative w)
     b <- readBody w 0
@@ -103,7 +103,7 @@ spec = describe "Manifold.Metric: the hyperboloid in Minkowski space" $ do
           setParams w defaultParams { pGravity = gravityOn }
           forM_ bodies (addBody w >=> either fail (const (pure ())))
           pure w
-        free p v = BodyInit circle 0.1 1 False p v 0 0
+        free p v = BodyInit circle 0.1 1 False p v 0 0 sceneMaterial
 
     it "has the Minkowski metric, and curvature −1 (1e-9) on its surface" $ do
       spaceMetric sp `shouldBe` Minkowski

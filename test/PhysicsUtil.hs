@@ -60,11 +60,11 @@ import NodeJS (Bits (..), doubleBits, runNodeJSON)
 
 -- | A movable body of density 1.
 dyn :: Shape -> Double -> V3 Double -> V3 Double -> Double -> Double -> BodyInit
-dyn sh size p v a om = BodyInit sh size 1 False p v a om
+dyn sh size p v a om = BodyInit sh size 1 False p v a om sceneMaterial
 
 -- | A static body.
 still :: Shape -> Double -> V3 Double -> Double -> BodyInit
-still sh size p a = BodyInit sh size 1 True p (V3 0 0 0) a 0
+still sh size p a = BodyInit sh size 1 True p (V3 0 0 0) a 0 sceneMaterial
 
 -- | A world holding exactly these bodies (capacity: their number, at least
 -- two, so that the native contact limit is the same as a small page's).

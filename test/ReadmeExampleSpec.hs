@@ -46,7 +46,7 @@ spec = describe "the worked example of adding a space (docs/spaces.md)" $ do
     let world = do
           w <- newWorldUsing [bowlStep] bowl (layout 16)
           forM_ (zip [0 :: Int ..] [V3 0.3 0.1 0, V3 (-0.2) 0.05 0.1, V3 0 0.02 (-0.3)]) $ \(k, p) ->
-            addBody w (BodyInit (if even k then square else circle) 0.1 1 False p (V3 0.2 0 0.1) 0 1) >>= either fail (const (pure ()))
+            addBody w (BodyInit (if even k then square else circle) 0.1 1 False p (V3 0.2 0 0.1) 0 1 sceneMaterial) >>= either fail (const (pure ()))
           pure w
     compiled <- world
     generic <- genericStep <$> world

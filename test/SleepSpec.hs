@@ -171,4 +171,4 @@ spec = do
         h' <- stateHash w'
         h' `shouldBe` h
   where
-    bodySpecOf static b = BodySpec SquareShape (if static then 3 else 0.1) 1 static (bsPos b) (V3 0 0 0) 0 0 Nothing [] Nothing 0
+    bodySpecOf static b = BodySpec SquareShape (if static then 3 else 0.1) 1 static (bsPos b) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial

@@ -29,6 +29,9 @@ declare namespace Manifold {
     /** projected onto the surface by the engine */
     p: Vec3;
     density?: number;
+    /** the body's own friction coefficient and restitution (the scene key's values); without them, the scene's */
+    friction?: number;
+    restitution?: number;
     static?: boolean;
     v?: Vec3;
     angle?: number;
@@ -79,6 +82,9 @@ declare namespace Manifold {
     shape: Shape;
     size: number;
     density: number;
+    /** present when the body has its own friction or restitution */
+    friction?: number;
+    restitution?: number;
     static: boolean;
     p: Vec3;
     v: Vec3;
@@ -255,7 +261,7 @@ declare namespace Manifold {
   /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
   type SlotName =
     | "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin"
-    | "movedX" | "movedY" | "movedZ" | "turned" | "asleep" | "sleepTimer" | "island";
+    | "movedX" | "movedY" | "movedZ" | "turned" | "asleep" | "sleepTimer" | "island" | "bodyFriction" | "bodyRestitution";
   type ContactField =
     | "cA" | "cB" | "cOwner" | "cKey" | "jaX" | "jaY" | "jaZ" | "jaW" | "jbX" | "jbY" | "jbZ" | "jbW"
     | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"
@@ -341,7 +347,7 @@ declare namespace Manifold {
     step: Procedure;
     /** the bodies' polygons again, from their positions and axes */
     polygonise: Procedure;
-    /** (arrays, shape code (0 circle, 4 square, else the sides), size, density, static 0/1, px, py, pz, vx, vy, vz, angle, omega, restore 0/1, ax, ay, az, nx, ny, nz): meta lastAdded, -1 if refused, -2 if a restored body's axis and normal do not fit (frameMisfit says why) */
+    /** (arrays, shape code (0 circle, 4 square, else the sides), size, density, static 0/1, px, py, pz, vx, vy, vz, angle, omega, restore 0/1, ax, ay, az, nx, ny, nz, friction, restitution (each -1: the scene's)): meta lastAdded, -1 if refused, -2 if a restored body's axis and normal do not fit (frameMisfit says why) */
     addBody: Procedure;
     /** (arrays, index): the last body takes the index */
     removeBody: Procedure;
@@ -390,6 +396,10 @@ declare namespace Manifold {
     spaces: Record<string, Space>;
     /** web/gen/spaces.js: the scene keys that set the engine's parameters */
     sceneKeys: SceneKey[];
+    /** the keys of a scene's body, in order (Manifold.Params.bodyKeys) */
+    bodyKeys: string[];
+    /** the body keys that give a body its own material, each taking the scene key of its name's values */
+    materialKeys: string[];
     /** web/gen/spaces.js: every space, in catalogue order */
     spaceIndex: SpaceEntry[];
     /** the comparisons whose scripts have loaded (web/gen/compare-torus.js: torus) */
@@ -545,6 +555,9 @@ declare namespace Manifold {
     energy: number;
     /** the last step's contact rows the body is in */
     contacts: number;
+    /** the body's own friction and restitution, where it has them (else the scene's) */
+    friction?: number;
+    restitution?: number;
   }
   interface Curves {
     /** the geodesic tool's curve */

@@ -4,6 +4,8 @@
 module Manifold.Engine
   ( NativeWorld (..)
   , BodyInit (..)
+  , Material (..)
+  , sceneMaterial
   , newWorld
   , newWorldUsing
   , CompiledStep
@@ -60,7 +62,7 @@ import Manifold.Population
 import Manifold.Sleep (countIslands, setSleeping)
 import Manifold.Step (step, stepPhases)
 import Manifold.World
-import Data.Maybe (isJust, listToMaybe)
+import Data.Maybe (fromMaybe, isJust, listToMaybe)
 import Data.Word (Word64)
 import Manifold.StateHash (HashedPart (..), fnv1a64, hashedParts)
 
@@ -106,7 +108,21 @@ data BodyInit = BodyInit
   , biVel :: V3 Double -- ^ projected onto the tangent plane
   , biAngle :: Double -- ^ from the axis the body starts with ('Manifold.Surface.referenceAxis'), or from the saved axis ('restoreBody')
   , biOmega :: Double -- ^ angular velocity about the normal
+  , biMaterial :: Material -- ^ its friction and restitution ('sceneMaterial': the scene's)
   }
+
+-- | A body's material: its friction coefficient and restitution, each
+-- 'Nothing' where the body takes the scene's ('Manifold.Params'). A pair's
+-- are mixed as Box2D mixes them: friction @√(μa·μb)@, the larger
+-- restitution; a wall's are the scene's.
+data Material = Material
+  { matFriction :: Maybe Double
+  , matRestitution :: Maybe Double
+  } deriving (Show, Eq)
+
+-- | The material of a body that takes the scene's friction and restitution.
+sceneMaterial :: Material
+sceneMaterial = Material Nothing Nothing
 
 metaValue :: Meta -> NativeWorld -> IO Int
 metaValue k w = truncate <$> MV.read (wMeta (nwArrays w)) (fromEnum k)
@@ -150,8 +166,10 @@ addBodyFramed :: NativeWorld -> BodyInit -> Maybe (V3 Double, V3 Double) -> IO (
 addBodyFramed w b frame = do
   let Outline outline = shapeOutline (biShape b)
       (restore, axis, normal) = maybe (0, V3 0 0 0, V3 0 0 0) (\(a, n) -> (1, a, n)) frame
+      own = fromMaybe (-1)
       args = BodyArgs (biSize b) (biDensity b) (if biStatic b then 1 else 0)
                       (biPos b) (biVel b) (biAngle b) (biOmega b) restore axis normal
+                      (own (matFriction (biMaterial b))) (own (matRestitution (biMaterial b)))
   runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) outline args)
   i <- metaValue LastAdded w
   n <- bodyCount w
@@ -285,6 +303,7 @@ data BodyState = BodyState
   , bsNormal :: V3 Double -- ^ the surface's unit normal at the centre, as the step keeps it
   , bsAsleep :: Maybe Int -- ^ the island it sleeps in (named by one of its bodies' index), or awake
   , bsSleepTimer :: Double -- ^ how long it has moved slower than the sleep threshold (s)
+  , bsOwnMaterial :: Material -- ^ its own friction and restitution, where it has them
   } deriving Show
 
 -- | The hash of the world's state ("Manifold.StateHash"): what
@@ -310,6 +329,8 @@ readBody w i = do
   label <- slot Island
   BodyState <$> r3 (wPos a) <*> r3 (wVel a) <*> slot Angle <*> slot Omega <*> r3 (wAxis a) <*> r3 (wNormal a)
     <*> pure (if asleep > 0 then Just (round label) else Nothing) <*> slot SleepTimer
+    <*> (Material <$> (own <$> slot BodyFriction) <*> (own <$> slot BodyRestitution))
+  where own x = if x < 0 then Nothing else Just x
 
 -- | A contact row's impulses as the world remembers them after a step, to
 -- warm start the same contact (by its key) in the next.

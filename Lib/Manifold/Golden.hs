@@ -21,7 +21,7 @@ import Manifold.Bench (benchScene, benchSpaces)
 import Manifold.Engine
 import Manifold.Scene
 import Manifold.Space
-import Manifold.Spaces (catalogue, flatKlein, plane, sphere)
+import Manifold.Spaces (catalogue, flatKlein, plane, rectangle, sphere)
 import Manifold.StateHash (showHash)
 
 -- | A scene, its name (a file name: @SPACE-default@, @SPACE-N@) and how
@@ -37,8 +37,9 @@ data GoldenRun = GoldenRun
 -- on the benchmark spaces, 600 steps (as they fall and pile up, contacts
 -- at every step), and of 1000 bodies, 200 steps; two jointed scenes (every
 -- kind of joint, a limit and a motor, across a quotient's flipped edge),
--- 600 steps; and two stacks that fall asleep, one woken by a falling ball
--- and its joint to the world, 300 steps.
+-- 600 steps; two stacks that fall asleep, one woken by a falling ball
+-- and its joint to the world, 300 steps; and bodies of their own friction
+-- and restitution thrown about the rectangle, 400 steps.
 goldenRuns :: [GoldenRun]
 goldenRuns =
   [GoldenRun (spaceName sp ++ "-default") (defaultScene sp) 1000 | sp <- catalogue]
@@ -46,6 +47,7 @@ goldenRuns =
        | (n, steps) <- [(300, 600), (1000, 200)], sp <- benchSpaces ]
     ++ [ GoldenRun "sphere-chain" sphereChain 600, GoldenRun "flat-klein-joints" flatKleinJoints 600 ]
     ++ [ GoldenRun "plane-sleep-wake" planeSleepWake 300 ]
+    ++ [ GoldenRun "rectangle-materials" rectangleMaterials 400 ]
 
 -- | A joint of a kind between bodies @a@ and @b@ (−1: the world) at
 -- anchors @p@ and @q@, its settings left to the defaults.
@@ -60,9 +62,9 @@ sphereChain =
   let r = 0.03
       at k = let a = 2 * r * fromIntegral (k :: Int) in V3 (cos a) 0 (sin a)
       pin k = let a = 2 * r * (fromIntegral k + 0.5) in V3 (cos a) 0 (sin a)
-      bodies = BodySpec CircleShape r 1 True (at 0) (V3 0 0 0) 0 0 Nothing [] Nothing 0
-               : [BodySpec CircleShape r 1 False (at k) (V3 0 0 0) 0 0 Nothing [] Nothing 0 | k <- [1 .. 20]]
-               ++ [BodySpec SquareShape r 1 False (at 21) (V3 0 0 0) 0 0 Nothing [] Nothing 0]
+      bodies = BodySpec CircleShape r 1 True (at 0) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial
+               : [BodySpec CircleShape r 1 False (at k) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial | k <- [1 .. 20]]
+               ++ [BodySpec SquareShape r 1 False (at 21) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial]
       pins = [ (jointAt Revolute k (k + 1) (pin k) (pin k)) { jsLimit = if k == 3 then Just (-0.5, 0.5) else Nothing
                                                             , jsMotor = if k == 7 then Just (1, 0.01) else Nothing }
              | k <- [0 .. 19] ]
@@ -75,7 +77,7 @@ sphereChain =
 -- distance spring, a weld.
 flatKleinJoints :: Scene
 flatKleinJoints =
-  let body p v om = BodySpec CircleShape 0.06 1 False p v 0 om Nothing [] Nothing 0
+  let body p v om = BodySpec CircleShape 0.06 1 False p v 0 om Nothing [] Nothing 0 sceneMaterial
       bodies = [ body (V3 0.8 0 0.3) (V3 1 0 0.2) 2, body (V3 0.92 0 0.3) (V3 1 0 0.2) 2
                , body (V3 0.2 0 0.85) (V3 0.1 0 0.8) (-1), body (V3 0.2 0 (-0.85)) (V3 0.1 0 0.8) 0
                , body (V3 (-0.5) 0 0) (V3 (-0.9) 0 0.1) 3, body (V3 (-0.62) 0 0) (V3 (-0.9) 0 0.1) 0 ]
@@ -91,18 +93,30 @@ planeSleepWake :: Scene
 planeSleepWake =
   let h = 0.1
       z k = -3 + 3 / sqrt 2 + h / sqrt 2 + fromIntegral (k :: Int) * h * sqrt 2
-      box x k = BodySpec SquareShape h 1 False (V3 x 0 (z k)) (V3 0 0 0) 0 0 Nothing [] Nothing 0
-      bodies = BodySpec SquareShape 3 1 True (V3 0 0 (-3)) (V3 0 0 0) 0 0 Nothing [] Nothing 0
+      box x k = BodySpec SquareShape h 1 False (V3 x 0 (z k)) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial
+      bodies = BodySpec SquareShape 3 1 True (V3 0 0 (-3)) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial
                : [box x k | x <- [-1, 1], k <- [0 .. 2]]
-               ++ [BodySpec CircleShape 0.08 1 False (V3 (-1.02) 0 2.5) (V3 0 0 0) 0 0 Nothing [] Nothing 0]
+               ++ [BodySpec CircleShape 0.08 1 False (V3 (-1.02) 0 2.5) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial]
       weld = (jointAt Weld 3 (-1) (V3 (-1) 0 (z 2)) (V3 (-1) 0 (z 2))) { jsHertz = 3, jsDampingRatio = 0.7 }
   in Scene plane defaultParams bodies [weld]
+
+-- | Bodies of their own friction and restitution (and some of the
+-- scene's, which are 0.3 and 0.2 here), thrown about the rectangle: they
+-- bounce off its walls and each other, slide and roll.
+rectangleMaterials :: Scene
+rectangleMaterials =
+  let body shape k material = BodySpec shape 0.08 1 False (V3 (-0.7 + 0.2 * fromIntegral k) 0 (0.5 - 0.1 * fromIntegral (k `mod` 3)))
+                                (V3 (1.5 - 0.4 * fromIntegral k) 0 (-0.5)) 0 (fromIntegral k - 3) Nothing [] Nothing 0 material
+      materials = [ Material (Just 0.9) Nothing, Material Nothing (Just 0.8), Material (Just 0) (Just 0.5), sceneMaterial
+                  , Material (Just 0.05) (Just 0), Material (Just 1.5) (Just 1), Material Nothing Nothing, Material (Just 0.4) (Just 0.3) ]
+      bodies = [ body (if even k then SquareShape else CircleShape) k m | (k, m) <- zip [0 :: Int ..] materials ]
+  in Scene rectangle defaultParams { pFriction = 0.3, pRestitution = 0.2 } bodies []
 
 -- | A space's default scene ('spaceScene') with the default parameters.
 defaultScene :: Space -> Scene
 defaultScene sp =
   Scene sp defaultParams
-    [ BodySpec (placeShape pl) (placeSize pl) 1 (placeStatic pl) (placeAt pl) (V3 0 0 0) 0 0 Nothing [] Nothing 0
+    [ BodySpec (placeShape pl) (placeSize pl) 1 (placeStatic pl) (placeAt pl) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial
     | pl <- spaceScene sp ] []
 
 -- | The hash after @steps@ steps of the scene natively: by the generic step

@@ -16,6 +16,8 @@ module Manifold.Params
   , Range (..)
   , Control (..)
   , sceneKeys
+  , materialKeys
+  , bodyKeys
   , outOfRange
   , rangeDescription
   ) where
@@ -166,6 +168,18 @@ sceneKeys =
   , SceneKey "sleepTime" SleepTime Positive Nothing
   ]
   where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
+
+-- | The scene keys a body may give too, as its own material (its friction
+-- coefficient and restitution, which it then has instead of the scene's):
+-- a body's value takes the scene key's range.
+materialKeys :: [SceneKey]
+materialKeys = [ k | k <- sceneKeys, keyParam k `elem` [Friction, Restitution] ]
+
+-- | The keys of a scene's body ("Manifold.Scene"), in the order a saved
+-- body lists them: the page's scene reader takes the same.
+bodyKeys :: [String]
+bodyKeys = ["shape", "size", "density"] ++ map keyName materialKeys
+  ++ ["static", "p", "v", "angle", "omega", "axis", "normal", "impulses", "awake", "island", "sleepTime"]
 
 -- | Why a (finite) number is not in a range, or 'Nothing' when it is; a
 -- switch is a JSON boolean, checked as such.

@@ -36,6 +36,8 @@ data BodyArgs s = BodyArgs
   , baRestore :: s -- ^ 1: restore a saved body, its position, velocity, axis and normal exactly as given; 0: place it
   , baAxis :: V3 s -- ^ the saved axis (restoring only)
   , baNormal :: V3 s -- ^ the saved normal (restoring only)
+  , baFriction :: s -- ^ its friction coefficient, or −1: the scene's
+  , baRestitution :: s -- ^ its restitution, or −1: the scene's
   }
 
 -- | Add a body with the given outline (for size 1). Sets 'LastAdded' to its
@@ -83,6 +85,8 @@ addBodyWith sp l w outline b = do
           writeSlot w i Asleep 0
           writeSlot w i SleepTimer 0
           writeSlot w i Island (-1)
+          writeSlot w i BodyFriction (maxF (-1) (baFriction b))
+          writeSlot w i BodyRestitution (maxF (-1) (baRestitution b))
           outlineRadiiInto l outline w i (baSize b)
           let nd = polyDirections (polygon l)
           reach <- newRef 0

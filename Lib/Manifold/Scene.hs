@@ -35,15 +35,16 @@ import Manifold.Engine
 import Manifold.Params
 import Manifold.Space
 import Manifold.Spaces
-import Manifold.World (contactsPerBody, layout)
+import Manifold.World (Param (..), contactsPerBody, layout)
 
 -- | A body as a scene file gives it (its keys, in order: @shape@, @size@,
--- @density@, @static@, @p@, @v@, @angle@, @omega@, @axis@, @normal@,
+-- @density@, @friction@, @restitution@, @static@, @p@, @v@, @angle@, @omega@, @axis@, @normal@,
 -- @impulses@, @awake@, @island@, @sleepTime@). A body with @axis@ and
 -- @normal@ (what a saved scene holds) is restored exactly as it was saved;
 -- one without is placed: projected onto the surface, its axis the
 -- reference axis there. A body with @"awake": false@ sleeps, in the island
 -- named by the index of one of its bodies (@island@, default its own).
+-- A body without @friction@ or @restitution@ takes the scene's.
 data BodySpec = BodySpec
   { bsShape :: ShapeKind
   , bsSize :: Double -- ^ circumradius, above 0
@@ -57,6 +58,7 @@ data BodySpec = BodySpec
   , bsImpulses :: [Impulse] -- ^ what the body remembers of the last step's contacts it owns (warm starting)
   , bsSleeping :: Maybe Int -- ^ asleep, in the island named by this body's index (default: awake)
   , bsCalmFor :: Double -- ^ its sleep timer: how long it has been calm (s, default 0: "Manifold.Sleep")
+  , bsMaterial :: Material -- ^ its own friction and restitution (default: the scene's)
   } deriving (Show, Eq)
 
 -- | What a scene file holds.
@@ -153,7 +155,7 @@ shape path = \case
 
 body :: Path -> A.Value -> P BodySpec
 body path v = do
-  o <- object path ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses", "awake", "island", "sleepTime"] v
+  o <- object path bodyKeys v
   axis <- optional path o "axis" Nothing (\at x -> Just <$> vec3 at x)
   normal <- optional path o "normal" Nothing (\at x -> Just <$> vec3 at x)
   frame <- case (axis, normal) of
@@ -174,6 +176,13 @@ body path v = do
     <*> optional path o "impulses" [] impulses
     <*> pure Nothing
     <*> optional path o "sleepTime" 0 nonNegative
+    <*> (Material <$> materialKey o Friction <*> materialKey o Restitution)
+  where
+    -- a body's friction or restitution: the scene key's values
+    materialKey o param = case [k | k <- materialKeys, keyParam k == param] of
+      k : _ -> optional path o (keyName k) Nothing $ \at x ->
+        number at x >>= \y -> maybe (pure (Just y)) (problem at) (outOfRange (keyRange k) y)
+      [] -> error "materialKey: no scene key sets this parameter"
 
 -- | The bodies' @awake@ and @island@ keys: a sleeping body's island is
 -- named by the index of a sleeping body (its own by default); a static
@@ -338,8 +347,10 @@ sceneJSON s = A.object
       ++ [ "local" A..= l | Just l <- [jsLocal j] ]
       ++ [ "impulses" A..= jsImpulses j | not (null (jsImpulses j)) ]
     bodyJSON b = A.object $
-      [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b
-      , "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
+      [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b ]
+      ++ [ "friction" A..= x | Just x <- [matFriction (bsMaterial b)] ]
+      ++ [ "restitution" A..= x | Just x <- [matRestitution (bsMaterial b)] ]
+      ++ [ "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
       , "angle" A..= bsAngle0 b, "omega" A..= bsOmega0 b ]
       ++ concat [ ["axis" A..= v3 a, "normal" A..= v3 n] | Just (a, n) <- [bsFrame b] ]
       ++ [ "impulses" A..= [[impulseKey r, impulseNormal r, impulseFriction r] | r <- bsImpulses b] | not (null (bsImpulses b)) ]
@@ -358,7 +369,7 @@ sceneJSON s = A.object
 -- | The body a scene's body spec adds to a world (its remembered impulses
 -- are given to the world apart: 'restoreImpulses').
 bodyInit :: BodySpec -> BodyInit
-bodyInit b = BodyInit (shapeFromKind (bsShape b)) (bsSize b) (bsDensity b) (bsStatic b) (bsP b) (bsV b) (bsAngle0 b) (bsOmega0 b)
+bodyInit b = BodyInit (shapeFromKind (bsShape b)) (bsSize b) (bsDensity b) (bsStatic b) (bsP b) (bsV b) (bsAngle0 b) (bsOmega0 b) (bsMaterial b)
 
 -- | A world holding the scene (with room for @extra@ more bodies), its
 -- bodies remembering the contact impulses the scene gives them, so that a

@@ -211,6 +211,8 @@ prepareContacts metric w = do
   hzC <- share (minF hz (0.25 / h))
   moving <- softness hzC zeta h
   static <- softness (2 * hzC) zeta h
+  sceneMu <- readParam w Friction
+  sceneE <- readParam w Restitution
   bodies <- readMeta w BodyCount
   forEach (toIndex bodies) $ \i -> mapM_ (\s -> writeSlot w i s 0) [MovedX, MovedY, MovedZ, Turned]
   nc <- readMeta w ContactCount
@@ -236,6 +238,18 @@ prepareContacts metric w = do
     pick CBiasRate biasRate
     pick CMassScale massScale
     pick CImpulseScale impulseScale
+    -- the pair's material, mixed as Box2D mixes it (a wall, or a body
+    -- that does not say, has the scene's)
+    let material slot sceneValue body = do
+          x <- readSlot w body slot
+          share (select (x + 0.5) x sceneValue)
+    muA <- material BodyFriction sceneMu a
+    muB <- material BodyFriction sceneMu (toIndex bIx)
+    eA <- material BodyRestitution sceneE a
+    eB <- material BodyRestitution sceneE (toIndex bIx)
+    hasB <- share (b + 0.5)
+    writeContact w c CFriction (sqrt (muA * select hasB muB sceneMu))
+    writeContact w c CRestitution (maxF eA (select hasB eB sceneE))
     depth <- readContact w c CDepth
     writeContact w c CPenetration (depth - slop * select (b + 0.5) (minF sizeA sizeB) sizeA)
     rowVelocity metric w a b normal >>= writeContact w c CApproach
@@ -304,7 +318,6 @@ warmStart w = do
 sweepRows :: Imp m => Bool -> Metric -> WorldArrays (Array m) -> m ()
 {-# INLINE sweepRows #-}
 sweepRows useBias metric w = do
-  mu <- readParam w Friction
   pushout <- readParam w Pushout
   h <- substepLength w
   invH <- share (recip h)
@@ -381,6 +394,7 @@ sweepRows useBias metric w = do
     vt <- along tangent va1 vb1
     -- friction in the relaxing solve only (as Box2D v3 does now): the
     -- biased solve's normal impulse still holds the push-out
+    mu <- readContact w c CFriction
     let limit = mu * ln'
     lt' <- if useBias then pure lt else share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
     writeContact w c ImpulseT lt'
@@ -399,25 +413,24 @@ sweepRows useBias metric w = do
 finishStep :: Imp m => Space -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE finishStep :: Space -> WorldArrays NativeArray -> Native () #-}
 finishStep sp w = do
-  restitution <- readParam w Restitution
-  whenPositive restitution $ subroutine "restitution" [] $ \_ -> restitute (spaceMetric sp) w
+  subroutine "restitution" [] $ \_ -> restitute (spaceMetric sp) w
   rememberImpulses w
   tangentVelocities sp w
   wrapIntoDomain sp w
   wrapJoints sp w
 
 -- | The restitution impulses: a contact that approached at @v < -threshold@
--- leaves at @−e·v@.
+-- leaves at @−e·v@, @e@ the pair's restitution (none where it is 0).
 restitute :: Imp m => Metric -> WorldArrays (Array m) -> m ()
 {-# INLINE restitute #-}
 restitute metric w = do
-  e <- readParam w Restitution
   threshold <- readParam w BounceThreshold
   nc <- readMeta w ContactCount
   forEach (toIndex nc) $ \c -> do
     approach <- readContact w c CApproach
     total <- readContact w c CTotalImpulse
-    whenPositive (minF (negate approach - threshold) total) $ do
+    e <- readContact w c CRestitution
+    whenPositive (minF e (minF (negate approach - threshold) total)) $ do
       a <- toIndex <$> readContact w c CA
       b <- readContact w c CB
       normal <- readRow w c JaX JbX

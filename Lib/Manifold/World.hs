@@ -161,9 +161,15 @@ layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 -- otherwise; 'SleepTimer' is how long the body has moved slower than the
 -- sleep threshold (s); 'Island' names a sleeping body's island (the index
 -- of one of its bodies; −1 for an awake body).
+--
+-- 'BodyFriction' and 'BodyRestitution' are the body's material (its
+-- friction coefficient and restitution), or −1 where the body takes the
+-- scene's ('Friction' and 'Restitution', which the page's sliders set):
+-- "Manifold.Solver" mixes a pair's as Box2D does.
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos | TurnSin
   | MovedX | MovedY | MovedZ | Turned
   | Asleep | SleepTimer | Island
+  | BodyFriction | BodyRestitution
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters. 'AwakeCount' is the movable bodies awake after
@@ -188,8 +194,9 @@ data Param = Dt | GravityOn | Substeps | Iterations | Friction | Restitution | C
 -- preparation writes the rest: the rows' masses, the depth beyond the slop
 -- ('CPenetration'), the contact's softness ('CBiasRate', 'CMassScale',
 -- 'CImpulseScale', see "Manifold.Solver"), the normal velocity before the
--- step ('CApproach', for restitution) and the normal impulse applied in
--- all ('CTotalImpulse').
+-- step ('CApproach', for restitution), the normal impulse applied in
+-- all ('CTotalImpulse') and the pair's mixed friction and restitution
+-- ('CFriction', 'CRestitution').
 data ContactField
   = CA | CB | COwner | CKey
   | JaX | JaY | JaZ | JaW | JbX | JbY | JbZ | JbW
@@ -197,6 +204,7 @@ data ContactField
   | CDepth | NormalMass | TangentMass | ImpulseN | ImpulseT | CSelfScale
   | PointX | PointY | PointZ
   | CPenetration | CBiasRate | CMassScale | CImpulseScale | CApproach | CTotalImpulse
+  | CFriction | CRestitution
   deriving (Show, Eq, Enum, Bounded)
 
 -- | What the world remembers of one of the last step's contact rows, for

@@ -1,6 +1,7 @@
 // The inspector: with Alt (Option) held, the body under the pointer is
-// described next to it (its index, shape and size, static or not, speed,
-// spin, kinetic energy and the last step's contact rows it is in, by the
+// described next to it (its index, shape and size, static or not, its own
+// friction and restitution if it has them, speed, spin, kinetic energy and
+// the last step's contact rows it is in, by the
 // engine's generated measureBody), and kept up to date while it moves
 // until Alt is let go or the pointer leaves the view.
 /* exported ManifoldWebInspector */
@@ -27,7 +28,8 @@ var ManifoldWebInspector = (function (W) {
     const m = w.measureBody(i), info = w.info[i], E = w.engine;
     const size = w.a.scalars[i * w.stride() + E.slots.size], omega = w.a.scalars[i * w.stride() + E.slots.omega];
     const asleep = w.a.scalars[i * w.stride() + E.slots.asleep] > 0;
-    return { index: i, shape: info.shape, size: size, static: info.static, asleep: asleep, speed: m.speed, omega: omega, energy: m.energy, contacts: m.contacts };
+    return Object.assign({ index: i, shape: info.shape, size: size, static: info.static, asleep: asleep, speed: m.speed, omega: omega, energy: m.energy, contacts: m.contacts },
+      w.material(i));
   }
 
   // three significant digits (a size 0.200, an energy 0.000655)
@@ -60,6 +62,7 @@ var ManifoldWebInspector = (function (W) {
     if (!d || (state.world && inspector.version === state.world.version)) return;
     inspector.version = state.world.version;
     box.textContent = "body " + d.index + " · " + shapeName(d.shape) + " " + fixed(d.size) + (d.static ? " · static" : "") + (d.asleep ? " · asleep" : "") +
+      (d.friction !== undefined ? " · μ " + fixed(d.friction) : "") + (d.restitution !== undefined ? " · e " + fixed(d.restitution) : "") +
       " · speed " + fixed(d.speed) + " · ω " + fixed(d.omega) + " · energy " + fixed(d.energy) + " · contacts " + d.contacts;
     const stage = /** @type {HTMLElement} */ (box.parentElement).getBoundingClientRect();
     box.style.left = Math.round(inspector.at[0] - stage.left + 14) + "px";

@@ -41,8 +41,9 @@ var ManifoldWebTools = (function (W) {
 
   /**
    * The body the Add button and throws make: size null is the space's own
-   * (its default scene's first body's).
-   * @typedef {{ shape: Manifold.Shape, size: number | null, density: number, static: boolean }} NewBody
+   * (its default scene's first body's); friction and restitution null are
+   * the scene's (the body has none of its own).
+   * @typedef {{ shape: Manifold.Shape, size: number | null, density: number, static: boolean, friction: number | null, restitution: number | null }} NewBody
    */
   /**
    * A curve on the surface: its points (xyz triples) and where it breaks
@@ -54,7 +55,7 @@ var ManifoldWebTools = (function (W) {
     /** @type {Tool} */
     tool: "grab",
     /** @type {NewBody} */
-    template: { shape: "circle", size: null, density: MW.world.BODY_DEFAULTS.density, static: MW.world.BODY_DEFAULTS.static },
+    template: { shape: "circle", size: null, density: MW.world.BODY_DEFAULTS.density, static: MW.world.BODY_DEFAULTS.static, friction: null, restitution: null },
     geodesicLength: GEODESIC_LENGTH,
     /** @type {Curve | null} the geodesic tool's curve */
     geodesic: null,
@@ -90,11 +91,15 @@ var ManifoldWebTools = (function (W) {
     return scene && scene.length ? scene[0].size : 0.15;
   }
 
-  // The template with its size filled in.
-  /** @returns {{ shape: Manifold.Shape, size: number, density: number, static: boolean }} */
+  // The template as a scene body: its size filled in, its own friction and restitution where it has them.
+  /** @returns {{ shape: Manifold.Shape, size: number, density: number, static: boolean, friction?: number, restitution?: number }} */
   function newBody() {
     const t = tools.template;
-    return { shape: copyShape(t.shape), size: t.size === null ? spaceSize() : t.size, density: t.density, static: t.static };
+    /** @type {{ shape: Manifold.Shape, size: number, density: number, static: boolean, friction?: number, restitution?: number }} */
+    const b = { shape: copyShape(t.shape), size: t.size === null ? spaceSize() : t.size, density: t.density, static: t.static };
+    if (t.friction !== null) b.friction = t.friction;
+    if (t.restitution !== null) b.restitution = t.restitution;
+    return b;
   }
   /** @param {Manifold.Shape} s @returns {Manifold.Shape} */
   function copyShape(s) { return typeof s === "string" ? s : { polygon: s.polygon }; }
@@ -102,7 +107,7 @@ var ManifoldWebTools = (function (W) {
   // Changes the template; throws naming the field of a bad value (and changes nothing then).
   /** @param {Partial<NewBody>} o */
   function setNewBody(o) {
-    if (o === null || typeof o !== "object" || Array.isArray(o)) throw new TypeError("setNewBody expects an object {shape, size, density, static}");
+    if (o === null || typeof o !== "object" || Array.isArray(o)) throw new TypeError("setNewBody expects an object {shape, size, density, static, friction, restitution}");
     const next = Object.assign({}, tools.template);
     for (const k of Object.keys(o)) {
       const v = /** @type {Record<string, unknown>} */ (o)[k];
@@ -121,8 +126,14 @@ var ManifoldWebTools = (function (W) {
       } else if (k === "static") {
         if (typeof v !== "boolean") throw new TypeError("newBody.static must be true or false");
         next.static = v;
+      } else if (k === "friction" || k === "restitution") {
+        // null: the scene's; else the scene key's values (generated ranges)
+        const key = W.Manifold.sceneKeys.find(function (s) { return s.key === k; });
+        const why = v === null || !key ? null : MW.world.keyProblem(key, v);
+        if (why !== null) throw new RangeError("newBody." + k + " " + why + " (or null: the scene's)");
+        next[k] = /** @type {number | null} */ (v);
       } else {
-        throw new RangeError("newBody has no key " + JSON.stringify(k) + " (shape, size, density, static)");
+        throw new RangeError("newBody has no key " + JSON.stringify(k) + " (shape, size, density, static, friction, restitution)");
       }
     }
     tools.template = next;

@@ -30,9 +30,10 @@ var ManifoldWebWorld = (function (W) {
   // The keys that set engine parameters, with the values they take, are
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
   function sceneKeys() { return W.Manifold.sceneKeys; }
-  /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal" | "awake" | "island">> & Pick<Manifold.SceneBody, "axis" | "normal" | "awake" | "island">} ParsedBody */
-  const BODY_KEYS = ["shape", "size", "density", "static", "p", "v", "angle", "omega", "axis", "normal", "impulses",
-    "awake", "island", "sleepTime"];
+  /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal" | "awake" | "island" | "friction" | "restitution">> & Pick<Manifold.SceneBody, "axis" | "normal" | "awake" | "island" | "friction" | "restitution">} ParsedBody */
+  // a scene body's keys, and those that give it its own material (generated: Manifold.Params.bodyKeys)
+  function bodyKeys() { return W.Manifold.bodyKeys; }
+  function materialKeys() { return W.Manifold.materialKeys; }
   // what a scene body without these keys has (Manifold.Scene's defaults)
   const BODY_DEFAULTS = { density: 1, static: false };
 
@@ -164,7 +165,7 @@ var ManifoldWebWorld = (function (W) {
   /** @param {unknown} v @param {string} [path] @returns {ParsedBody} */
   function parseBody(v, path) {
     path = path || "body";
-    const o = object(path, BODY_KEYS, v);
+    const o = object(path, bodyKeys(), v);
     // a saved body's frame: both or neither (Manifold.Scene)
     const axis = optional(path, o, "axis", null, vec3), normal = optional(path, o, "normal", null, vec3);
     if (axis && !normal) problem(path + ".normal", "must be given with axis (a saved body's frame)");
@@ -182,6 +183,14 @@ var ManifoldWebWorld = (function (W) {
       impulses: optional(path, o, "impulses", [], impulses),
       sleepTime: optional(path, o, "sleepTime", 0, nonNegative),
     };
+    // the body's own friction and restitution: the scene key's values
+    materialKeys().forEach(function (name) {
+      if (name in o) {
+        const k = sceneKeys().find(function (s) { return s.key === name; });
+        if (!k) throw new Error("no scene key " + name);
+        /** @type {Record<string, unknown>} */ (b)[name] = keyValue(path + "." + name, o[name], k);
+      }
+    });
     // (awake and island: in the scene's order, by sleeping, or by World.add)
     if (o.awake === false) {
       b.awake = false;
@@ -466,7 +475,8 @@ var ManifoldWebWorld = (function (W) {
       const axis = b.axis || [0, 0, 0], normal = b.normal || [0, 0, 0];
       E.addBody.apply(null, this.args([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
         b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega, b.axis ? 1 : 0,
-        axis[0], axis[1], axis[2], normal[0], normal[1], normal[2]]));
+        axis[0], axis[1], axis[2], normal[0], normal[1], normal[2],
+        b.friction === undefined ? -1 : b.friction, b.restitution === undefined ? -1 : b.restitution]));
       const i = this.meta("lastAdded");
       if (i === -2) throw new Error(E.frameMisfit);
       const a = this.a;
@@ -581,11 +591,13 @@ var ManifoldWebWorld = (function (W) {
       const v3 = function (arr, i) { return [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]]; };
       for (let i = 0; i < this.count(); i++) {
         const info = this.info[i];
+        // (in the scene's key order: the body's own material, where it has one, after its density)
         /** @type {Manifold.Body} */
-        const b = {
+        const b = Object.assign({
           shape: copyShape(info.shape),
           size: a.scalars[i * k + S.size],
           density: info.density,
+        }, this.material(i), {
           static: info.static,
           p: v3(a.pos, i),
           v: v3(a.vel, i),
@@ -593,7 +605,7 @@ var ManifoldWebWorld = (function (W) {
           omega: a.scalars[i * k + S.omega],
           axis: v3(a.axis, i),
           normal: v3(a.normal, i),
-        };
+        });
         const remembered = this.impulses(i);
         if (remembered.length) b.impulses = remembered;
         if (a.scalars[i * k + S.asleep] > 0) {
@@ -605,6 +617,18 @@ var ManifoldWebWorld = (function (W) {
         out.push(b);
       }
       return out;
+    }
+
+    // Body i's own friction and restitution, those it has ({} when it takes the scene's).
+    /** @param {number} i @returns {{ friction?: number, restitution?: number }} */
+    material(i) {
+      const a = this.a, S = this.engine.slots, k = this.stride();
+      /** @type {{ friction?: number, restitution?: number }} */
+      const m = {};
+      const mu = a.scalars[i * k + S.bodyFriction], e = a.scalars[i * k + S.bodyRestitution];
+      if (mu >= 0) m.friction = mu;
+      if (e >= 0) m.restitution = e;
+      return m;
     }
 
     // What body i remembers of the last step's contact rows it owns, for

@@ -23,6 +23,7 @@ import Numeric (showHex)
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
 import Manifold.Metric (gaussianCurvatureIn, metricName)
+import Manifold.Params (bodyKeys, keyName, materialKeys)
 import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
@@ -138,6 +139,9 @@ spaceIndexScript spaces = unlines $
   , "globalThis.Manifold = globalThis.Manifold || { spaces: {} };"
   , "// the scene keys that set the engine's parameters, with the values they take (Lib/Manifold/Params.hs)"
   , "globalThis.Manifold.sceneKeys = " ++ sceneKeysArray ++ ";"
+  , "// the keys of a scene's body, in order, and those that give the body its own material (taking the scene key's values)"
+  , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
+  , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
   , "globalThis.Manifold.spaceIndex = ["
   ] ++
   [ "  { name: " ++ jsString (spaceName s) ++ ", description: " ++ jsString (spaceDescription s)
@@ -212,6 +216,13 @@ cameraJs c = "{ eye: " ++ vecJs (cameraEye c) ++ ", target: " ++ vecJs (cameraTa
 placementJs :: Placement -> String
 placementJs p = "{ shape: " ++ shapeJs (placeShape p) ++ ", size: " ++ num (placeSize p)
   ++ ", p: " ++ vecJs (placeAt p) ++ (if placeStatic p then ", static: true" else "") ++ " }"
+
+-- | A JavaScript array of strings.
+--
+-- >>> putStrLn (jsList ["a", "b"])
+-- ["a", "b"]
+jsList :: [String] -> String
+jsList xs = "[" ++ intercalate ", " (map jsString xs) ++ "]"
 
 -- | A JavaScript string literal, ASCII only (so the script's bytes do not
 -- depend on how the page declares its encoding).
