@@ -9,6 +9,7 @@ import qualified AnchorSpec
 import qualified ElementarySpec
 import qualified BodySpec
 import qualified CliSpec
+import qualified ContactManifoldSpec
 import qualified EngineSpec
 import qualified FlatSpec
 import qualified GeodesicPathSpec
@@ -43,6 +44,7 @@ main = do
     describe "Manifold.World" EngineSpec.spec
     describe "Manifold.Stage" StageSpec.spec
     describe "Manifold.Stage.Imp" ImpSpec.spec
+    ContactManifoldSpec.spec
     describe "Physics" PhysicsSpec.spec
     describe "Solver" SolverSpec.spec
     AnchorSpec.spec

@@ -34,6 +34,7 @@ import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
 import Manifold.Body (PolygonParams (..), Sectors, sectors, directionSector, vertexIndex)
+import Manifold.ContactManifold (segmentClosest)
 import Manifold.Field
 import Manifold.Joint (listPartners, notJoined)
 import Manifold.Space
@@ -533,30 +534,6 @@ boundaryContacts sp l w i = case spaceBoundary sp of
       emitAt 0 dLo
       whenPositive (abs (dHi - dLo)) (emitAt 1 dHi)
 
--- | The closest points of two segments (under the metric: the segments of
--- a body's rays are space-like): their parameters along each (in [0, 1])
--- and their distance (branches by 'select', so it stages).
-segmentClosest :: Field a => Metric -> V3 a -> V3 a -> V3 a -> V3 a -> (a, a, a)
-segmentClosest metric p0 p1 q0 q1 =
-  let d1 = p1 ^-^ p0
-      d2 = q1 ^-^ q0
-      r = p0 ^-^ q0
-      dot' = inner metric
-      a = d1 `dot'` d1
-      e = d2 `dot'` d2
-      f = d2 `dot'` r
-      c = d1 `dot'` r
-      b = d1 `dot'` d2
-      denom = a * e - b * b
-      clamp01 = clampF 0 1
-      safeDiv x y = select (abs y - 1e-300) (x / y) 0
-      s0 = select (denom - 1e-12 * a * e) (clamp01 (safeDiv (b * f - c * e) denom)) 0
-      t0 = safeDiv (b * s0 + f) e
-      s1 = select (negate t0) (clamp01 (safeDiv (negate c) a)) (select (t0 - 1) (clamp01 (safeDiv (b - c) a)) s0)
-      t1 = clamp01 t0
-      gap = normIn metric ((p0 ^+^ s1 *^ d1) ^-^ (q0 ^+^ t1 *^ d2))
-  in (s1, t1, gap)
-
 -- | The paper's self-contact (§4.2): a body as large as the space around it
 -- (wrapped round the neck of the trumpet) overlaps itself where two of its
 -- rays cross. The ordinary contact direction there is along the rays and
@@ -627,7 +604,7 @@ selfContacts sp l w i = do
             b1 <- vertex d' (k' + 1)
             let midpoints = 0.5 *^ ((a0 ^+^ a1) ^-^ (b0 ^+^ b1))
             whenPositive (reach - quadranceIn metric midpoints) $ do
-              let (s, t, gap) = segmentClosest metric a0 a1 b0 b1
+              let (s, t, gap) = segmentClosest (inner metric) a0 a1 b0 b1
                   arc = rd * (toScalar k + s) / fromIntegral ns
                   arc' = rd' * (toScalar k' + t) / fromIntegral ns
                   depth = 0.5 * ((rd - arc) + (rd' - arc'))
