@@ -84,10 +84,13 @@ nodeId (E i) = i
 instance Show E where
   show e = "E#" ++ show (nodeId e) ++ " " ++ show (nodeOf e)
 
-data Table = Table !(M.Map Node Int) !(IM.IntMap Node)
+-- | The nodes by content and by id, and how many there are (the next
+-- id: 'IM.size' counts an IntMap's entries one by one, and asked at every
+-- new node it made printing the catalogue quadratic in its nodes).
+data Table = Table !(M.Map Node Int) !(IM.IntMap Node) !Int
 
 table :: IORef Table
-table = unsafePerformIO (newIORef (Table M.empty IM.empty))
+table = unsafePerformIO (newIORef (Table M.empty IM.empty 0))
 {-# NOINLINE table #-}
 
 -- | The id of a node, inserting it if new. Nodes are immutable once in the
@@ -96,10 +99,10 @@ table = unsafePerformIO (newIORef (Table M.empty IM.empty))
 -- The node is forced first: its operands may be unevaluated nodes whose own
 -- interning must not run inside this table update.
 intern :: Node -> E
-intern !n = unsafePerformIO $ atomicModifyIORef' table $ \t@(Table byNode byId) ->
+intern !n = unsafePerformIO $ atomicModifyIORef' table $ \t@(Table byNode byId count) ->
   case M.lookup n byNode of
     Just i -> (t, E i)
-    Nothing -> let i = IM.size byId in (Table (M.insert n i byNode) (IM.insert i n byId), E i)
+    Nothing -> (Table (M.insert n count byNode) (IM.insert count n byId) (count + 1), E count)
 {-# NOINLINE intern #-}
 
 -- | The node an expression is.
@@ -109,7 +112,7 @@ nodeOf (E i) = nodeById i
 -- | The node of an id (an operand of another node).
 nodeById :: Int -> Node
 nodeById !i = unsafePerformIO $ do
-  Table _ byId <- readIORef table
+  Table _ byId _ <- readIORef table
   pure (byId IM.! i)
 {-# NOINLINE nodeById #-}
 
