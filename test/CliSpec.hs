@@ -209,13 +209,10 @@ spec = do
       failsWith ["geodesic", "--space", "sphere", "--from", "0,1,0", "--dir", "1,0,0", "--length", "1", "--step", "0"] (const True)
 
   describe "manifold build" $
-    it "writes the preset scenes with the rest, and refuses a bad preset or a missing --scenes with exit code 2, writing nothing" $
+    -- (what a build writes, the preset scenes with the rest, is checked in
+    -- "byte stability and manifold build", from the builds made there)
+    it "refuses a bad preset or a missing --scenes with exit code 2, writing nothing" $
       withSystemTempDirectory "manifold-build" $ \dir -> do
-        (code, _, err) <- run ["build", "--out", dir </> "gen"]
-        (code, err) `shouldBe` (ExitSuccess, "")
-        presets <- BL.readFile (dir </> "gen" </> "presets.js")
-        forM_ ["\"name\":\"trumpet-jam\"", "\"space\":\"trumpet\"", "\"title\":\"jam\""] $ \s ->
-          (s, BC.pack s `BC.isInfixOf` BL.toStrict presets) `shouldBe` (s, True)
         let scenes = dir </> "scenes"
             out = dir </> "fresh"
         createDirectoryIfMissing True scenes

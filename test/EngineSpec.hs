@@ -25,7 +25,8 @@ import Manifold
 import Manifold.Bench (benchScene, benchSpaces)
 import Manifold.Engine
 import Manifold.Scene
-import Manifold.Stage.Kernels (spaceIndexScript, spaceScript)
+import Manifold.Stage.Kernels (spaceIndexScript)
+import TestUtil (scriptOf)
 import Manifold.World
 import Manifold.Stage.Imp (NativeArray)
 import NodeJS (runNode)
@@ -69,7 +70,7 @@ nodeOverArrays flags sp initial body =
         numbers = dir </> "arrays.bin"
     BL.writeFile numbers (toLazyByteString (foldMap (foldMap doubleLE) initial))
     writeFile script $ unlines $
-      [ spaceScript sp
+      [ scriptOf sp
       , "const e = Manifold.spaces[" ++ show (spaceName sp) ++ "].engine;"
       , "const numbers = require('fs').readFileSync(" ++ show numbers ++ ");"
       , "const bytes = numbers.buffer.slice(numbers.byteOffset, numbers.byteOffset + numbers.length);"

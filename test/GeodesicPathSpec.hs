@@ -15,9 +15,8 @@ import Test.Hspec
 import Manifold
 import Manifold.GeodesicPath
 import Manifold.Stage.Imp (runNative)
-import Manifold.Stage.Kernels (spaceScript)
 import NodeJS
-import TestUtil (firstPlacement, vecDist)
+import TestUtil (firstPlacement, scriptOf, vecDist)
 
 -- | A walked path: its points and, for each, whether the curve breaks
 -- before it.
@@ -55,7 +54,7 @@ spec = describe "the page's geodesic tool (walkGeodesic)" $ do
           ++ " const path = new Float64Array(" ++ show (pathLength n) ++ ");"
           ++ " e.geodesic(path, " ++ concatMap ((++ ", ") . jsDouble) (v3list (start sp) ++ v3list (direction sp))
           ++ jsDouble len ++ ", " ++ show n ++ "); return path; })()"
-        script = concatMap spaceScript catalogue ++ "__emit([" ++ concatMap ((++ ",") . call) catalogue ++ "]);\n"
+        script = concatMap scriptOf catalogue ++ "__emit([" ++ concatMap ((++ ",") . call) catalogue ++ "]);\n"
     js <- runNodeJSON script :: IO [[Bits]]
     [ spaceName sp | (sp, a, b) <- zip3 catalogue native js, map doubleBits a /= map (doubleBits . unBits) b ] `shouldBe` []
     -- and the walks are not trivial: every space walked some of its length

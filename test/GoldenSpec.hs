@@ -13,12 +13,13 @@ import System.IO.Temp (withSystemTempDirectory)
 import System.Process (readProcess)
 import Test.Hspec
 
-import Manifold.Build (generatedFiles, writeGenerated)
+import Manifold.Build (generatedFilesWith, writeGenerated)
 import Manifold.Engine (stateHash, stepNative)
 import Manifold.Golden
 import Manifold.Scene (loadScene, parseScene, sceneJSON, sceneOfWorld)
 import Manifold.Spaces (catalogue)
 import Manifold.StateHash (showHash)
+import TestUtil (scriptOf)
 
 -- | Where the golden hashes are kept, relative to the repository.
 goldenFile :: FilePath
@@ -94,7 +95,7 @@ pageLines :: Bool -> [GoldenRun] -> IO [(String, String, String)]
 pageLines split runs =
   withSystemTempDirectory "manifold-golden" $ \dir -> do
     let gen = dir </> "gen"
-    writeGenerated gen (generatedFiles catalogue)
+    writeGenerated gen (generatedFilesWith scriptOf catalogue)
     forM_ runs $ \run -> BL.writeFile (dir </> (grName run ++ ".json")) (A.encode (sceneJSON (grScene run)))
     out <- readProcess "node" (["test/hashes.mjs", gen, dir] ++
              [ grName run ++ ":" ++ show (grSteps run) ++ (if split then ":" ++ show (splitAt' run) else "") | run <- runs ]) ""

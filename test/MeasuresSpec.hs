@@ -17,7 +17,8 @@ import Manifold
 import Manifold.Engine
 import Manifold.Measures
 import Manifold.Stage.Imp (runNative)
-import Manifold.Stage.Kernels (spaceScript)
+import Manifold.Stage.Kernels (spaceIndexScript)
+import TestUtil (scriptOf)
 import Manifold.World (layout)
 import NodeJS
 
@@ -129,6 +130,6 @@ spec = describe "Manifold.Measures" $ do
           ++ " const all = Array.from(out); for (let i = 0; i < 6; i++) { out.fill(0); E.measureBody.apply(null, w.arrays.concat([out, i])); all.push(...out); }"
           ++ " return m.kineticEnergy === all[E.measures.slots.kineticEnergy] ? all : null; })()"
         list3 (V3 x y z) = jsDouble x ++ ", " ++ jsDouble y ++ ", " ++ jsDouble z
-        script = concatMap spaceScript spaces ++ world ++ "\n__emit([" ++ concatMap ((++ ",") . call) spaces ++ "]);\n"
+        script = spaceIndexScript catalogue ++ concatMap scriptOf spaces ++ world ++ "\n__emit([" ++ concatMap ((++ ",") . call) spaces ++ "]);\n"
     js <- runNodeJSON script :: IO [[Bits]]
     map (map doubleBits) native `shouldBe` map (map (doubleBits . unBits)) js

@@ -52,7 +52,7 @@ import Text.Printf (printf)
 
 import Manifold
 import Manifold.Engine
-import Manifold.Stage.Kernels (spaceScript)
+import TestUtil (scriptOf)
 import Manifold.World
 import NodeJS (Bits (..), doubleBits, runNodeJSON)
 
@@ -242,7 +242,7 @@ runActionsInNode sp initial actions = do
         Drag q -> "e.drag(...a, " ++ init (init (jsV3 q)) ++ ");"
         Release -> "e.release(...a);"
       script = unlines $
-        [ spaceScript sp
+        [ scriptOf sp
         , "function __hexArray(h) {"
         , "  const a = new Float64Array(h.length / 16);"
         , "  for (let i = 0; i < a.length; i++) a[i] = __fromBits(h.slice(16 * i, 16 * i + 16));"

@@ -683,6 +683,9 @@ buildSpec = do
         all (< '\x80') str `shouldBe` True
         unless (M.lookup f fa == Just (BC.pack str)) $
           expectationFailure (f ++ ": the build differs from the in-process printing")
+      -- the preset scenes are written with the rest
+      forM_ ["\"name\":\"trumpet-jam\"", "\"space\":\"trumpet\"", "\"title\":\"jam\""] $ \p ->
+        (p, maybe False (BC.pack p `BS.isInfixOf`) (M.lookup presetsScriptFile fa)) `shouldBe` (p, True)
 
     it "manifold build refuses (exit 2) to overwrite a file it did not write, and writes nothing" $ \bs -> do
       let tmp = buildTmp bs

@@ -32,6 +32,8 @@ module TestUtil
   , findManifoldExe
   , runBytes
   , showV3
+    -- * Space scripts
+  , scriptOf
   ) where
 
 import Control.Concurrent (forkIO)
@@ -53,6 +55,9 @@ import Test.QuickCheck
 import Text.Printf (printf)
 
 import Manifold
+import Manifold.Compiled.Runtime (spaceFingerprint)
+import Manifold.Stage.Kernels (spaceScript)
+import Manifold.World (layout)
 
 -- Approximate comparison ---------------------------------------------------
 
@@ -243,3 +248,17 @@ runBytes exe args = do
   err <- takeMVar errVar
   code <- waitForProcess ph
   pure (code, BL.fromStrict out, err)
+
+-- | A space's script ('spaceScript'): for a space of the catalogue (the
+-- same name and fingerprint), printed once for the whole suite. Staging a
+-- space takes seconds, and many specs run the same catalogue space's
+-- engine under node; a space of a test's own is printed afresh.
+scriptOf :: Space -> String
+scriptOf sp = case lookup (spaceName sp) catalogueScripts of
+  Just (fingerprint, script) | fingerprint == spaceFingerprint sp (layout 0) -> script
+  _ -> spaceScript sp
+
+-- | Each catalogue space's fingerprint and script, printed when first asked.
+catalogueScripts :: [(String, (String, String))]
+catalogueScripts = [ (spaceName s, (spaceFingerprint s (layout 0), spaceScript s)) | s <- catalogue ]
+{-# NOINLINE catalogueScripts #-}

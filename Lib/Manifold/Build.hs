@@ -3,6 +3,7 @@
 module Manifold.Build
   ( GeneratedFile (..)
   , generatedFiles
+  , generatedFilesWith
   , writeGenerated
   , BuildError (..)
   ) where
@@ -32,10 +33,15 @@ instance Exception BuildError
 
 -- | Every file @manifold build@ writes for a catalogue.
 generatedFiles :: [Space] -> [GeneratedFile]
-generatedFiles spaces =
+generatedFiles = generatedFilesWith spaceScript
+
+-- | 'generatedFiles' with each space's script as given (one printed
+-- before, say).
+generatedFilesWith :: (Space -> String) -> [Space] -> [GeneratedFile]
+generatedFilesWith script spaces =
   GeneratedFile "spaces.js" (spaceIndexScript spaces)
     : GeneratedFile comparisonScriptFile comparisonScript
-    : [GeneratedFile (spaceScriptFile s) (spaceScript s) | s <- spaces]
+    : [GeneratedFile (spaceScriptFile s) (script s) | s <- spaces]
 
 -- | Write all files into a directory. Every target is checked before any is
 -- written, so a refusal leaves the directory as it was.
