@@ -261,7 +261,7 @@ declare namespace Manifold {
   /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
   type SlotName =
     | "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin"
-    | "movedX" | "movedY" | "movedZ" | "turned" | "asleep" | "sleepTimer" | "island" | "bodyFriction" | "bodyRestitution";
+    | "movedX" | "movedY" | "movedZ" | "turned" | "asleep" | "sleepTimer" | "island" | "bodyFriction" | "bodyRestitution" | "corners";
   type ContactField =
     | "cA" | "cB" | "cOwner" | "cKey" | "jaX" | "jaY" | "jaZ" | "jaW" | "jbX" | "jbY" | "jbZ" | "jbW"
     | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"

@@ -12,6 +12,7 @@ module Manifold.Body
   , regularPolygon
   , polygonOutline
   , shapeCode
+  , shapeCorners
   , codeOutline
   , customShape
   , shapeFromKind
@@ -110,6 +111,15 @@ shapeCode :: ShapeKind -> Int
 shapeCode CircleShape = 0
 shapeCode SquareShape = 4
 shapeCode (PolygonShape n) = n
+
+-- | How many corners the hull of the built-in shape with the given code
+-- has ('Manifold.World.Corners'): 1 for a circle (its centre, rounded by
+-- its radius), 0 for the others, which collide by their sampled outlines.
+--
+-- >>> map shapeCorners [0, 4, 5 :: Double]
+-- [1.0,0.0,0.0]
+shapeCorners :: Field a => a -> a
+shapeCorners code = select (code - 0.5) 0 1
 
 -- | The outline of the built-in shape with the given code.
 codeOutline :: Field a => a -> a -> a

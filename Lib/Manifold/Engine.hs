@@ -170,6 +170,7 @@ addBodyFramed w b frame = do
       args = BodyArgs (biSize b) (biDensity b) (if biStatic b then 1 else 0)
                       (biPos b) (biVel b) (biAngle b) (biOmega b) restore axis normal
                       (own (matFriction (biMaterial b))) (own (matRestitution (biMaterial b)))
+                      (maybe 0 (shapeCorners . fromIntegral . shapeCode) (shapeKind (biShape b)))
   runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) outline args)
   i <- metaValue LastAdded w
   n <- bodyCount w

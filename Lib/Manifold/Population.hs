@@ -38,6 +38,7 @@ data BodyArgs s = BodyArgs
   , baNormal :: V3 s -- ^ the saved normal (restoring only)
   , baFriction :: s -- ^ its friction coefficient, or −1: the scene's
   , baRestitution :: s -- ^ its restitution, or −1: the scene's
+  , baCorners :: s -- ^ 1 for a circle, 0 for a body that collides by its outline ('Corners')
   }
 
 -- | Add a body with the given outline (for size 1). Sets 'LastAdded' to its
@@ -87,6 +88,7 @@ addBodyWith sp l w outline b = do
           writeSlot w i Island (-1)
           writeSlot w i BodyFriction (maxF (-1) (baFriction b))
           writeSlot w i BodyRestitution (maxF (-1) (baRestitution b))
+          writeSlot w i Corners (baCorners b)
           outlineRadiiInto l outline w i (baSize b)
           let nd = polyDirections (polygon l)
           reach <- newRef 0

@@ -54,7 +54,8 @@ pageProcedures sp l = stepProcedures sp l ++
       , "friction", "restitution"],
       \_ [code, size, density, static, px, py, pz, vx, vy, vz, angle, omega, restore, ax, ay, az, nx, ny, nz, mu, e] ->
          addBodyWith sp l stagedArrays (codeOutline code)
-           (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega restore (V3 ax ay az) (V3 nx ny nz) mu e))
+           (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega restore (V3 ax ay az) (V3 nx ny nz) mu e
+              (shapeCorners code)))
   , (Procedure "removeBody" worldParams ["index"],
       \_ [i] -> removeBody sp l stagedArrays (toIndex i))
   , (Procedure "pickBody" worldParams ["qx", "qy", "qz"],

@@ -33,6 +33,7 @@ module Manifold.Sleep
   ) where
 
 import Control.Monad (forM_, (>=>))
+import Linear.V3 (V3 (..))
 import Linear.Vector ((^-^))
 
 import Manifold.Field
@@ -151,9 +152,16 @@ sleepIslands metric w = do
         size <- readSlot w i Size
         reach <- readSlot w i BoundRadius
         t <- readSlot w i SleepTimer
+        -- how far the step moved and turned it: a body pushed out of an
+        -- overlap moves with no velocity left (the relaxing solve takes the
+        -- push's back), and is not calm
+        moved <- V3 <$> readSlot w i MovedX <*> readSlot w i MovedY <*> readSlot w i MovedZ
+        turned <- readSlot w i Turned
         let calmSpeed = threshold * size
+            speed = maxF (normIn metric v) (normIn metric moved / dt)
+            spin = maxF (abs omega) (abs turned / dt)
             isHeld = active * select (0.5 - abs (held - toScalar i)) 1 0
-            calm = minF (minF (calmSpeed - normIn metric v) (calmSpeed - abs omega * reach)) (0.5 - isHeld)
+            calm = minF (minF (calmSpeed - speed) (calmSpeed - spin * reach)) (0.5 - isHeld)
         t' <- share (select calm (t + dt) 0)
         writeSlot w i SleepTimer t'
         whenPositive (ranOut t') (writeRef due 1)
@@ -258,15 +266,20 @@ countIslands w = do
 -- | Body @i@'s sleep state as a saved scene restores it: its timer
 -- @timer@, and, for a @label@ of 0 or more (a body's index), asleep in the
 -- island so named, at rest (nothing for a static body).
+--
+-- The parameters it sleeps or is calm under count as seen: a world just
+-- loaded has not stepped, and its first wake phase would otherwise wake
+-- every body and set every timer back to 0, so that a saved run's bodies
+-- fell asleep later than the run's own did.
 setSleeping :: Imp m => WorldArrays (Array m) -> Index m -> Scalar m -> Scalar m -> m ()
 setSleeping w i label timer = do
   invMass <- readSlot w i InvMass
   writeSlot w i SleepTimer timer
-  whenPositive (minF invMass (label + 0.5)) $ do
-    -- the parameters it sleeps under count as seen: a world just loaded
-    -- has not stepped, and its first wake phase would otherwise wake it
+  asleep <- share (minF invMass (label + 0.5))
+  whenPositive (maxF timer asleep) $
     forM_ [minBound .. maxBound :: Param] $ \k ->
       readParam w k >>= writeArray (wSeenParams w) (fromIntegral (fromEnum k))
+  whenPositive asleep $ do
     writeSlot w i Asleep 1
     writeSlot w i Island label
     write3 (wVel w) i 0

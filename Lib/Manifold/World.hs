@@ -166,10 +166,15 @@ layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 -- friction coefficient and restitution), or −1 where the body takes the
 -- scene's ('Friction' and 'Restitution', which the page's sliders set):
 -- "Manifold.Solver" mixes a pair's as Box2D does.
+--
+-- 'Corners' is how many corners the body's hull has
+-- ("Manifold.ContactManifold"): 1 for a circle, a geodesic disc of radius
+-- 'Size' whose contacts with another circle come from the distance between
+-- the centres; 0 for a body that collides by its sampled outline.
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos | TurnSin
   | MovedX | MovedY | MovedZ | Turned
   | Asleep | SleepTimer | Island
-  | BodyFriction | BodyRestitution
+  | BodyFriction | BodyRestitution | Corners
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The world's counters. 'AwakeCount' is the movable bodies awake after
