@@ -190,7 +190,8 @@ performanceSpec = do
       -- a number V8 cannot keep in a register becomes a heap object (16
       -- bytes): three a touching pair (until 2026-11-22: the pair's image
       -- shift merged with a parameter) were 0.7 to 6 KB a step here
-      [(name, bytes) | (name, bytes, _) <- results, bytes > 32] `shouldBe` []
+      -- (a collection in every measured run gives no number: not passed)
+      [(name, bytes) | (name, bytes, _) <- results, not (bytes <= 32)] `shouldBe` []
       -- the narrow phase ran: every space has a pile but the plane, whose
       -- bodies fall side by side along it with nothing to land on
       [name | (name, _, rows) <- results, rows < 20] `shouldBe` ["plane"]

@@ -234,7 +234,13 @@ prepareJoints sp w = do
   count <- readMeta w JointCount
   warm <- readParam w WarmStart
   forEach (toIndex count) $ \j -> whenMoving w j $ do
-    prepareJoint sp w j
+    -- a subroutine of its own: the anchors' eight walks over a curved
+    -- space's field, inlined into the preparation, made it a function V8
+    -- would not optimise, and the contacts' preparation ran unoptimised
+    -- with it (half a kilobyte to 200 KB a step on node's heap)
+    subroutine "prepareJoint" [toScalar j] $ \case
+      [j'] -> prepareJoint sp w (toIndex j')
+      _ -> error "prepareJoint: one argument"
     mapM_ (\k -> readJoint w j k >>= writeJoint w j k . (warm *)) impulseFields
 
 impulseFields :: [JointField]
