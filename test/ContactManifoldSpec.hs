@@ -5,7 +5,7 @@
 -- and the native run against the staged JavaScript under node, bit for bit.
 module ContactManifoldSpec (spec) where
 
-import Control.Monad (unless)
+import Control.Monad (unless, zipWithM_)
 import Data.List (sortOn)
 import qualified Data.Vector.Unboxed as V
 import GHC.Float (castDoubleToWord64)
@@ -158,7 +158,7 @@ spec = describe "Manifold.ContactManifold" $ do
 
   it "a pair and the pair swapped give the same separations, the normals opposite, but where the two hulls' edges find them equally far apart (300 seeded pairs of every kind)" $ do
     let cases = unGen (vectorOf 300 genPair) (mkQCGen 11) 30
-    compared <- fmap concat $ mapM (\(a, b) -> do
+    compared <- concat <$> mapM (\(a, b) -> do
       m <- manifoldOf 0.05 a b
       m' <- manifoldOf 0.05 b a
       let seps = sortOn id . map (\(_, s, _) -> s) . pointsOf
@@ -194,8 +194,8 @@ spec = describe "Manifold.ContactManifold" $ do
             m <- collideHulls 0.05 (constant tolerance) a b
             let V2 nx ny = cmNormal m
                 point p = let V2 x y = mpPoint p in [x, y, mpSeparation p, mpKey p]
-            sequence_ (zipWith (\o v -> writeArray out (toIndex (toScalar k * fromIntegral outStride) + fromIntegral o) v) [0 :: Int ..]
-                         ([cmCount m, nx, ny] ++ point (cmFirst m) ++ point (cmSecond m)))
+            zipWithM_ (\o v -> writeArray out (toIndex (toScalar k * fromIntegral outStride) + fromIntegral o) v) [0 :: Int ..]
+              ([cmCount m, nx, ny] ++ point (cmFirst m) ++ point (cmSecond m))
         js = stageProcedure (Procedure "manifolds" ["meta", "hulls", "out"] []) (\as _ -> case as of
                [m, h, o] -> program m h o
                _ -> error "arity")

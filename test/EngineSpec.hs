@@ -191,7 +191,7 @@ performanceSpec = do
       -- bytes): three a touching pair (until 2026-11-22: the pair's image
       -- shift merged with a parameter) were 0.7 to 6 KB a step here
       -- (a collection in every measured run gives no number: not passed)
-      [(name, bytes) | (name, bytes, _) <- results, not (bytes <= 32)] `shouldBe` []
+      [(name, bytes) | (name, bytes, _) <- results, isNaN bytes || bytes > 32] `shouldBe` []
       -- the narrow phase ran: every space has a pile but the plane, whose
       -- bodies fall side by side along it with nothing to land on
       [name | (name, _, rows) <- results, rows < 20] `shouldBe` ["plane"]

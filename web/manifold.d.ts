@@ -266,7 +266,8 @@ declare namespace Manifold {
     | "cA" | "cB" | "cOwner" | "cKey" | "jaX" | "jaY" | "jaZ" | "jaW" | "jbX" | "jbY" | "jbZ" | "jbW"
     | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"
     | "impulseN" | "impulseT" | "cSelfScale" | "pointX" | "pointY" | "pointZ"
-    | "cPenetration" | "cBiasRate" | "cMassScale" | "cImpulseScale" | "cApproach" | "cTotalImpulse";
+    | "cPenetration" | "cBiasRate" | "cMassScale" | "cImpulseScale" | "cApproach" | "cTotalImpulse"
+    | "cFriction" | "cRestitution";
   type PrevField = "prevOwner" | "prevKey" | "prevNormal" | "prevFriction";
   type MouseField =
     | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
@@ -277,7 +278,10 @@ declare namespace Manifold {
     | "length" | "minLength" | "maxLength" | "hertz" | "damping" | "reference" | "limitOn" | "lower" | "upper"
     | "motorOn" | "motorSpeed" | "maxTorque" | "impulse1" | "impulse2" | "impulseAxial" | "impulseLower"
     | "impulseUpper" | "impulseMotor" | "impulseAngle" | "anchorAX" | "anchorAY" | "anchorAZ" | "anchorBX"
-    | "anchorBY" | "anchorBZ" | "leverAX" | "leverAY" | "leverAZ" | "leverBX" | "leverBY" | "leverBZ"
+    | "anchorBY" | "anchorBZ"
+    | "slideUAX" | "slideUAY" | "slideUAZ" | "slideWAX" | "slideWAY" | "slideWAZ" | "turnAX" | "turnAY" | "turnAZ"
+    | "slideUBX" | "slideUBY" | "slideUBZ" | "slideWBX" | "slideWBY" | "slideWBZ" | "turnBX" | "turnBY" | "turnBZ"
+    | "uBX" | "uBY" | "uBZ" | "wBX" | "wBY" | "wBZ"
     | "signX" | "signY" | "signZ" | "e1X" | "e1Y" | "e1Z" | "e2X" | "e2Y" | "e2Z" | "chord" | "sigma"
     | "angleError" | "angularMass" | "collide";
   /** What the engine's measure (the world) and measureBody (one body) write, slots of their out array. */

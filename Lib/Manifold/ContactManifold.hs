@@ -75,7 +75,7 @@ data ContactManifold s = ContactManifold
 -- features, below 'keysPerManifold'.
 --
 -- >>> featureKey 3 (7 :: Double)
--- 55.0
+-- 31.0
 featureKey :: Field a => a -> a -> a
 featureKey a b = fromIntegral maxHullCorners * a + b
 
@@ -189,7 +189,7 @@ pointAgainst out margin side c rc h = do
       d <- share2 (c ^-^ v)
       dist <- share (sqrt (dot2 d d))
       sep <- share (dist - rc - hullRadius h)
-      whenPositive (margin - sep) $ emitPoint ((recip dist) *^ d) sep (featureKey k 0)
+      whenPositive (margin - sep) $ emitPoint (recip dist *^ d) sep (featureKey k 0)
     -- n points from the hull to the point; the contact point lies midway
     -- between the two surfaces
     emitPoint n sep key = do

@@ -269,19 +269,26 @@ async function testApi(check, context, base) {
     const m = window.manifold;
     m.clear();
     m.addBody({ shape: "square", size: 0.18, density: 2, p: [1.3, 0, 0], v: [0, 0.5, 0.2], angle: 0.4, omega: -1 });
-    m.addBody({ shape: "circle", size: 0.15, static: true, p: [-1.3, 0, 0] });
-    m.addBody({ shape: { polygon: 7 }, size: 0.12, p: [0, 0.4, 1.0] });
+    m.addBody({ shape: "circle", size: 0.15, static: true, friction: 0.9, p: [-1.3, 0, 0] });
+    m.addBody({ shape: { polygon: 7 }, size: 0.12, restitution: 0.8, p: [0, 0.4, 1.0] });
     m.setSimulation({ friction: 0.7, restitution: 0.3, gravity: false });
     m.step(20);
     const saved = JSON.stringify(m.scene());
     m.clear();
+    let badMaterial = null;
+    try { m.addBody({ shape: "circle", size: 0.1, friction: -0.2, p: [1.3, 0, 0] }); } catch (e) { badMaterial = e.message; }
     return m.loadScene(saved).then(function (n) {
-      return { n: n, saved: saved, again: JSON.stringify(m.scene()), sim: m.simulation() };
+      const bodies = m.scene().bodies;
+      return { n: n, saved: saved, again: JSON.stringify(m.scene()), sim: m.simulation(), badMaterial: badMaterial,
+        materials: bodies.map(function (b) { return [b.friction, b.restitution]; }) };
     });
   });
-  check("scene() → loadScene() round-trips the scene (bodies, shapes, static, friction, restitution, gravity)",
-    round.n === 3 && round.saved === round.again && round.sim.friction === 0.7 && round.sim.restitution === 0.3 && !round.sim.gravity,
-    round.saved === round.again ? round.n + " bodies" : round.saved.slice(0, 200) + " vs " + round.again.slice(0, 200));
+  check("scene() → loadScene() round-trips the scene (bodies, shapes, static, a body's own friction and restitution, the scene's, gravity)",
+    round.n === 3 && round.saved === round.again && round.sim.friction === 0.7 && round.sim.restitution === 0.3 && !round.sim.gravity &&
+      JSON.stringify(round.materials) === "[[null,null],[0.9,null],[null,0.8]]",
+    round.saved === round.again ? round.n + " bodies, materials " + JSON.stringify(round.materials) : round.saved.slice(0, 200) + " vs " + round.again.slice(0, 200));
+  check("addBody refuses a body's negative friction in the scene key's words", /body\.friction: must not be negative/.test(String(round.badMaterial)),
+    String(round.badMaterial));
 
   const downloadP = page.waitForEvent("download");
   await page.click("#save-scene");
