@@ -3,7 +3,7 @@
 -- JavaScript against the native run.
 module EngineSpec (spec, performanceSpec) where
 
-import Control.Monad (forM, forM_, replicateM_)
+import Control.Monad (forM, forM_, replicateM_, (>=>))
 import Data.Either (fromLeft)
 import Data.Foldable (toList)
 import Data.List (intercalate)
@@ -405,6 +405,23 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       putStrLn ("    " ++ spaceName sp ++ ": " ++ show (length deep) ++ " circle pairs overlapping by 0.3 % of a radius")
       (spaceName sp, length deep >= 100) `shouldBe` (spaceName sp, True)
       (spaceName sp, missed) `shouldBe` (spaceName sp, [])
+
+  it "keeps a static slab larger than every movable body out of the grid, its cells the movable bodies' size, and finds every body's contact with it" $ do
+    -- a row of 40 boxes of half-side 0.03 resting on a slab of half-side 5
+    let h = 0.03
+        slab = BodyInit square (5 * sqrt 2) 1 True (V3 0 0 (-6)) (V3 0 0 0) 0 0 sceneMaterial
+        box k = BodyInit square (h * sqrt 2) 1 False (V3 (fromIntegral k * 3 * h - 1.2) 0 (-1 + h)) (V3 0 0 0) 0 0 sceneMaterial
+    w <- newWorld plane (layout 41)
+    setParams w defaultParams { pSleep = False }
+    mapM_ (addBody w >=> either fail (const (pure ()))) (slab : map box [0 .. 39 :: Int])
+    replicateM_ 20 (stepNative w)
+    cs <- contacts w
+    large <- meta w LargeCount
+    cell <- meta w CellSize
+    large `shouldBe` 1
+    cell `shouldSatisfy` (\c -> abs (c - 2 * h * sqrt 2) < 1e-12)
+    -- every box rests on the slab (body 0), each with two rows
+    [ length [c | c <- cs, cB c == 0 || cA c == 0, cA c == k || cB c == k] | k <- [1 .. 40] ] `shouldSatisfy` all (== 2)
 
   it "saves a world that has run as a scene that loads back with every body where it was, moving as it moved" $ do
     let scene = benchScene torus 60

@@ -252,7 +252,7 @@ declare namespace Manifold {
   /** The world's counters and results, slots of the array meta. */
   type MetaName =
     | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
-    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint" | "awakeCount" | "islandCount" | "wakeRequest";
+    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint" | "awakeCount" | "islandCount" | "wakeRequest" | "largeCount";
   /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
   type ParamName =
     | "dt" | "gravityOn" | "substeps" | "iterations" | "friction" | "restitution" | "contactHertz" | "dampingRatio"

@@ -46,7 +46,12 @@ import Manifold.World
 
 -- | Sort the bodies into the buckets of a spatial hash of grid cells (a
 -- counting sort: no allocation). Cells are at least as wide as the largest
--- body, so a body's contacts are all in the 27 cells around its own; the
+-- movable body, so a body's contacts are all in the 27 cells around its
+-- own. A static body larger than that (a ground slab, a wall) is kept out
+-- of the grid, listed at the end of 'wItems' (the last of its 'Capacity'
+-- slots first, 'LargeCount' of them), which every body checks as well: cells
+-- as wide as the slab put a pile's every body in a handful of cells, and
+-- each body's neighbours became the pile. The
 -- cells are hashed into eight buckets per body, so clearing and scanning
 -- the table costs in proportion to the bodies, whatever the space's size.
 -- Each body remembers its exact cell, so bodies of a different cell that
@@ -64,16 +69,30 @@ buildGrid sp w = do
   maxR <- newRef 0
   forEach n $ \i -> do
     r <- readSlot w i BoundRadius
-    modifyRef maxR (maxF r)
+    movable <- readSlot w i InvMass
+    whenPositive movable (modifyRef maxR (maxF r))
   rmax <- readRef maxR
   -- at most 2^16 cells across the bounds, so that a cell's key is exact
   cell <- share (maxF (2 * rmax) (2 * bound / cellsAcross))
   buckets <- share (clampF 1 (fromIntegral maxBuckets) (8 * count))
   writeMeta w GridBuckets buckets
   writeMeta w CellSize cell
+  writeMeta w LargeCount 0
   let starts b = toIndex buckets + b
+      -- a static body wider than the cells: listed apart (its cell, −1,
+      -- names none)
+      inGrid i body = do
+        r <- readSlot w i BoundRadius
+        movable <- readSlot w i InvMass
+        ifPositive (minF (select movable 0 1) (r - rmax))
+          (do writeArray (wCellOf w) i (-1)
+              k <- readMeta w LargeCount
+              capacity <- readMeta w Capacity
+              writeArray (wItems w) (toIndex (capacity - 1 - k)) (toScalar i)
+              writeMeta w LargeCount (k + 1))
+          body
   forEach (toIndex buckets) $ \b -> writeArray (wGrid w) b 0
-  forEach n $ \i -> do
+  forEach n $ \i -> inGrid i $ do
     p <- gridPoint (spaceMetric sp) <$> read3 (wPos w) i
     let V3 cx cy cz = fmap (cellCoord cell) p
     writeArray (wCellOf w) i (cellKey cx cy cz)
@@ -88,12 +107,14 @@ buildGrid sp w = do
     writeArray (wGrid w) b s -- the fill cursor; it ends at the bucket's end
     writeRef running (s + k)
   forEach n $ \i -> do
-    p <- gridPoint (spaceMetric sp) <$> read3 (wPos w) i
-    let V3 cx cy cz = fmap (cellCoord cell) p
-    b <- share (bucketOf buckets cx cy cz)
-    k <- readArray (wGrid w) (toIndex b)
-    writeArray (wItems w) (toIndex k) (toScalar i)
-    writeArray (wGrid w) (toIndex b) (k + 1)
+    key <- readArray (wCellOf w) i
+    whenPositive (key + 0.5) $ do
+      p <- gridPoint (spaceMetric sp) <$> read3 (wPos w) i
+      let V3 cx cy cz = fmap (cellCoord cell) p
+      b <- share (bucketOf buckets cx cy cz)
+      k <- readArray (wGrid w) (toIndex b)
+      writeArray (wItems w) (toIndex k) (toScalar i)
+      writeArray (wGrid w) (toIndex b) (k + 1)
 
 cellsAcross :: Field a => a
 cellsAcross = 65536
@@ -724,21 +745,26 @@ collideAwake sp l w = do
     let pairs g keyOffset self = do
           gp <- share3 (applyIso g p)
           writeRef found 0
-          nearDomain gp (ri + cell) $ neighbours metric w gp $ \j -> do
-            -- each unordered pair once: j > i (j >= i for an image the body
-            -- may meet itself through: its own image), or j still
-            movingJ <- moving w j
-            let order = select movingJ (toScalar j - toScalar i + (if self then 0.5 else 0)) 1
-            whenPositive order $ do
-              pj <- read3 (wPos w) j
-              rj <- readSlot w j BoundRadius
-              invMj <- readSlot w j InvMass
-              let gap = ri + rj - normIn metric (gp ^-^ pj)
-              whenPositive (minF gap (minF (invMi + invMj) (select joints (notJoined partners (toScalar j)) 1))) $ do
-                -- a body is in one cell, so listed at most once
-                k <- readRef found
-                writeArray (wNear w) (toIndex k) (toScalar j)
-                writeRef found (k + 1)
+          -- each unordered pair once: j > i (j >= i for an image the body
+          -- may meet itself through: its own image), or j still
+          let consider j = do
+                movingJ <- moving w j
+                let order = select movingJ (toScalar j - toScalar i + (if self then 0.5 else 0)) 1
+                whenPositive order $ do
+                  pj <- read3 (wPos w) j
+                  rj <- readSlot w j BoundRadius
+                  invMj <- readSlot w j InvMass
+                  let gap = ri + rj - normIn metric (gp ^-^ pj)
+                  whenPositive (minF gap (minF (invMi + invMj) (select joints (notJoined partners (toScalar j)) 1))) $ do
+                    -- a body is in one cell or in the large list, so listed at most once
+                    k <- readRef found
+                    writeArray (wNear w) (toIndex k) (toScalar j)
+                    writeRef found (k + 1)
+          nearDomain gp (ri + cell) $ neighbours metric w gp consider
+          -- and the large static bodies, at the end of the items
+          large <- readMeta w LargeCount
+          capacity <- readMeta w Capacity
+          forEach (toIndex large) $ \k -> readArray (wItems w) (toIndex capacity - 1 - k) >>= consider . toIndex
           nearCount <- readRef found
           forEach (toIndex nearCount) $ \k -> do
             j <- toIndex <$> readArray (wNear w) k

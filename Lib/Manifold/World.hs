@@ -111,7 +111,7 @@ data WorldArrays a = WorldArrays
   , wOutline :: a -- ^ 3 × directions per body: the polygon's outline vertices again, side by side (what the narrow phase reads)
   , wGrid :: a -- ^ broad phase: per hash bucket a count, then per bucket a start
   , wCellOf :: a -- ^ broad phase: each body's cell (its key)
-  , wItems :: a -- ^ broad phase: bodies sorted by bucket
+  , wItems :: a -- ^ broad phase: bodies sorted by bucket; at its end, last slot first, the static bodies kept out of the grid ('LargeCount')
   , wContacts :: a -- ^ 'contactStride' per contact, see 'ContactField'
   , wPrev :: a -- ^ the last step's contacts for warm starting: owner, key, normal and friction impulse
   , wBodyPrev :: a -- ^ per body: where its contacts start in 'wPrev', and how many
@@ -182,7 +182,7 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos 
 -- last counted them, 'WakeRequest' 1 when an island is marked to wake
 -- ("Manifold.Sleep").
 data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
-  | JointCount | LastJoint | AwakeCount | IslandCount | WakeRequest
+  | JointCount | LastJoint | AwakeCount | IslandCount | WakeRequest | LargeCount
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
