@@ -132,25 +132,7 @@ spec = do
   describe "restitution" $
     it "a ball dropped from 0.5 with restitution e bounces back to e² of its height (within 15 %, e = 0.3, 0.6, 0.9)" $
       forM_ [0.3, 0.6, 0.9] $ \e -> do
-        let r = 0.05
-            drop' = 0.5
-            groundSize = 0.5
-            top = -0.5 + groundSize * cos (pi / 4)
-            start = top + r + drop'
-        w <- mkWorld plane defaultParams { pRestitution = e, pDt = 0.002 }
-               [ still square groundSize (V3 0 0 (-0.5)) 0, dyn circle r (V3 0 0 start) (V3 0 0 0) 0 0 ]
-        -- down, the bounce, and the top of the flight after it
-        let fly phase apex = do
-              stepNative w
-              b <- readBody w 1
-              let vz = let V3 _ _ z = bsVel b in z
-              case phase of
-                0 | vz > 0 -> fly (1 :: Int) (zOf b)
-                  | otherwise -> fly 0 apex
-                _ | vz > 0 -> fly 1 (max apex (zOf b))
-                  | otherwise -> pure (max apex (zOf b))
-        apex <- fly 0 (-1)
-        let rebound = (apex - (top + r)) / drop'
+        rebound <- bounce sceneMaterial sceneMaterial e
         labelled ("ball dropped with restitution " ++ show e ++ ": rebound height / drop height (e² = " ++ fmt (e * e) ++ ")") (fmt rebound)
         (e, abs (rebound / (e * e) - 1) < 0.15) `shouldBe` (e, True)
 
@@ -196,27 +178,11 @@ spec = do
       let mu = 0.5
           critical = atan mu
       results <- forM [critical - 0.1, critical + 0.1, critical + 0.3] $ \theta -> do
-        let slope = (plane { spaceName = "slope", spaceGravity = uniformGravity (V3 (gravity * sin theta) 0 (negate gravity * cos theta)) })
-            groundSize = 2
-            top = -0.5 + groundSize * cos (pi / 4)
-            h = 0.05
-            dt = 0.005
-        w <- mkWorld slope defaultParams { pFriction = mu, pDt = dt }
-               [ still square groundSize (V3 0 0 (-0.5)) 0, box h 0 (top + h) ]
-        let state = do
-              b <- readBody w 1
-              let V3 vx _ _ = bsVel b
-              pure (xOf b, vx)
-        -- half a second to settle onto the ground, then a second measured
-        steps w (round (0.5 / dt))
-        (x0, v0) <- state
-        steps w (round (1 / dt))
-        (x1, v1) <- state
+        (measured, moved) <- slide sceneMaterial mu theta
         let expected = max 0 (gravity * (sin theta - mu * cos theta))
-            measured = v1 - v0
         labelled ("box on a slope of " ++ fmt (theta * 180 / pi) ++ "° (μ = 0.5 holds to " ++ fmt (critical * 180 / pi) ++ "°): acceleration measured, expected; moved in the second / half-side")
-          (fmt measured ++ ", " ++ fmt expected ++ "; " ++ fmt ((x1 - x0) / h))
-        pure (theta, measured, expected, (x1 - x0) / h)
+          (fmt measured ++ ", " ++ fmt expected ++ "; " ++ fmt moved)
+        pure (theta, measured, expected, moved)
       forM_ results $ \(theta, measured, expected, moved) ->
         if expected == 0
           -- (it creeps: a fifth of a half-side a second at 20.8°, against
