@@ -156,14 +156,14 @@ async function testOverlay(check, page) {
   const shown = await dialog.isVisible();
   const text = shown ? await dialog.innerText() : "";
   const opened = await readState(page);
-  const listed = ["Space", "S", "R", "C", "G", "J", "T", "P", "?", "Esc", "body", "drag", "throw", "geodesic", "joint", "Ctrl", "orbit", "pan", "right", "wheel", "pinch", "zoom", "Alt", "inspect"]
+  const listed = ["Space", "S", "R", "C", "G", "J", "T", "P", "B", "?", "Esc", "body", "drag", "throw", "geodesic", "joint", "Ctrl", "orbit", "pan", "right", "wheel", "pinch", "zoom", "Alt", "inspect"]
     .filter(function (w) { return text.indexOf(w) < 0; });
   const kbd = await page.evaluate(function () {
     return Array.from(document.querySelectorAll("#keys-help kbd")).map(function (k) { return k.textContent; });
   });
   check("? opens the help overlay: a modal dialog named \"Keys and gestures\" (hidden before), visible, focus in it, listing the keys and the gestures",
     hiddenAtFirst && shown && opened.help && opened.focus === "keys-help-close" && listed.length === 0 &&
-      JSON.stringify(kbd) === JSON.stringify(["Space", "S", "R", "C", "G", "J", "T", "P", "?", "Esc"]),
+      JSON.stringify(kbd) === JSON.stringify(["Space", "S", "R", "C", "G", "J", "T", "P", "B", "?", "Esc"]),
     "missing " + JSON.stringify(listed) + ", keys " + kbd.join(" ") + ", focus " + opened.focus);
 
   // modal: the other keys are not the page's while it is open

@@ -128,6 +128,7 @@ var ManifoldWebUi = (function (W) {
       return { label: label, setting: { key: k, input: input, output: null, decimals: 0 } };
     }
     const decimals = decimalsOf(c.step);
+    label.className = "slider";
     input.type = "range";
     input.min = String(c.lo);
     input.max = String(c.hi);
@@ -281,10 +282,23 @@ var ManifoldWebUi = (function (W) {
     $("save-image").addEventListener("click", function () { handlers.onSaveImage(); });
     record.addEventListener("click", function () { handlers.onRecord(); });
 
+    // the controls' panel collapses (to a rail beside the view, to its head
+    // above it on narrow screens) and opens again; the view takes the room
+    const panel = $("panel"), panelToggle = $("panel-toggle");
+    const showPanel = function (/** @type {boolean} */ shown) {
+      panel.classList.toggle("collapsed", !shown);
+      panelToggle.setAttribute("aria-expanded", String(shown));
+      panelToggle.setAttribute("aria-label", shown ? "hide the controls" : "show the controls");
+      panelToggle.title = shown ? "hide the controls (the view takes their room)" : "show the controls";
+      /** @type {HTMLElement} */ (panelToggle.firstElementChild).textContent = shown ? "«" : "»";
+    };
+    panelToggle.addEventListener("click", function () { showPanel(panel.classList.contains("collapsed")); });
+
     // keys: what each does (the help overlay, #keys-help in index.html, lists
     // them with the gestures); Space, s and r and c act as Pause, Step, Reset
     // and Clear, g switches the geodesic tool on and off, t the trails, p the plot; a
-    // held s steps on, the others act once
+    // held s steps on, the others act once; b hides
+    // and shows the controls
     /** @type {HTMLDialogElement} */
     const keysHelp = $("keys-help");
     /** @type {Map<string, () => void>} */
@@ -297,6 +311,7 @@ var ManifoldWebUi = (function (W) {
       ["j", function () { handlers.onTool(toolSelect.value === "joint" ? "grab" : "joint"); }],
       ["t", function () { handlers.onTrails(!trailsBox.checked); }],
       ["p", function () { handlers.onPlot(!plotBox.checked); }],
+      ["b", function () { panelToggle.click(); }],
       ["?", function () { keysHelp.showModal(); }],
     ]);
     $("keys-help-open").addEventListener("click", function () { if (!keysHelp.open) keysHelp.showModal(); });
