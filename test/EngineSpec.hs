@@ -517,6 +517,13 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"local\": [1, 2]}"
           , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"collide\": 1}"
           , "{\"space\": \"sphere\", \"joints\": {}}"
+          -- the camera: every way it is refused
+          , "{\"space\": \"plane\", \"camera\": 1}", "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3]}}"
+          , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0], \"fov\": 45}}"
+          , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0, 0], \"fov\": 180}}"
+          , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 1, 3]}}"
+          , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0, 0], \"up\": [0, 2, 6]}}"
+          , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0, 0], \"zoom\": 2}}"
           -- sleeping: every way a sleeping body is refused
           , withBody (body ", \"awake\": 0"), withBody (body ", \"sleepTime\": -1"), withBody (body ", \"island\": 0")
           , withBody (body ", \"awake\": false, \"island\": 1"), withBody (body ", \"awake\": false, \"island\": 0.5")
@@ -534,7 +541,8 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
               ++ body ", \"density\": 2, \"friction\": 0.8, \"restitution\": 0.25, \"static\": true, \"v\": [0, 0.5, 0], \"angle\": 0.3, \"omega\": -1, \"impulses\": [[64, 0.25, -0.01], [129, 0, 0.5]]"
               ++ ", {\"shape\": {\"polygon\": 7}, \"size\": 0.2, \"p\": [0, 0.4, 1]}]}"
           , "{\"space\": \"plane\", \"sleep\": false, \"sleepTime\": 2, \"bodies\": [" ++ body ", \"awake\": false, \"sleepTime\": 0.75"
-              ++ ", " ++ body ", \"awake\": false, \"island\": 0" ++ ", " ++ body ", \"sleepTime\": 0.1" ++ "]}" ]
+              ++ ", " ++ body ", \"awake\": false, \"island\": 0" ++ ", " ++ body ", \"sleepTime\": 0.1" ++ "]}"
+          , "{\"space\": \"sphere\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0.5, 0], \"up\": [0, 0, -1], \"fov\": 30}}" ]
         -- what a parse gives: its problem, or the scene as JSON (a body without impulses has none)
         native t = case parseScene (BL.pack t) of
           Left e -> A.object ["problem" A..= e]
@@ -551,13 +559,14 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       , "    const sc = ManifoldWeb.world.parseScene(t, names);"
       , "    sc.bodies.forEach((b) => { if (b.impulses.length === 0) delete b.impulses; if (b.sleepTime === 0) delete b.sleepTime; });"
       , "    if (sc.joints.length === 0) delete sc.joints;"
+      , "    if (sc.camera === null) delete sc.camera;"
       , "    return { scene: sc };"
       , "  } catch (e) { return { problem: e.message }; }"
       , "});"
       , "process.stdout.write(JSON.stringify(results) + '\\n');" ]
     page <- maybe (fail ("node printed no results: " ++ take 300 out)) pure (A.decode (BL.pack (last ("" : lines out))))
     [(t, n, j) | (t, n, j) <- zip3 texts (map native texts) page, n /= j] `shouldBe` []
-    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 6
+    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 7
     fmap (pDt . sceneParams) (parseScene "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}") `shouldBe` Right 0.02
     fmap (map bsSize . sceneBodies) (parseScene (BL.pack (withBody (body ", \"size\": 0.3")))) `shouldBe` Right [0.3]
 

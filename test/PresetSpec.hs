@@ -8,21 +8,23 @@
 -- a constant speed (free motion: nothing touches them); the joint presets
 -- keep their joints together as they move (every anchor gap within 1 %
 -- of the joined bodies' size after 10 s), and the sphere's chain swings
--- down.
+-- down. Every preset opens with a view of its bodies ("Manifold.Framing").
 module PresetSpec (spec) where
 
 import Control.Monad (forM, replicateM_)
 import qualified Data.ByteString.Lazy.Char8 as BLC
 import Data.Either (fromLeft)
 import Data.List (isInfixOf)
-import Linear.Metric (distance, norm)
-import Linear.V3 (V3 (..))
-import Linear.Vector ((^+^))
+import Linear.Metric (distance, dot, norm, normalize)
+import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((^+^), (^-^))
 import Test.Hspec
 
 import Manifold.Engine
+import Manifold.Framing (framingAspect, seenFrom)
 import Manifold.Presets
-import Manifold.Scene (loadScene, parseScene)
+import Manifold.Scene (BodySpec (..), Scene (..), loadScene, parseScene)
+import Manifold.Space (Camera (..))
 import PhysicsUtil (bodySize)
 
 -- | The preset's world after each of some runs of steps: the bodies'
@@ -60,6 +62,32 @@ spec = describe "Manifold.Presets" $ do
     either id presetSpace (presetOf "flat-torus-wind.json" (BLC.pack "{\"space\": \"flat-torus\"}")) `shouldBe` "flat-torus"
     -- the title: the rest of the name, in words
     either id presetTitle (presetOf "sphere-big-rain.json" (BLC.pack "{\"space\": \"sphere\"}")) `shouldBe` "big rain"
+
+  it "opens every preset with a view that sees most of its bodies (in the picture, not behind the surface), their centres spanning a quarter of the picture or more" $ do
+    presets <- readPresets "scenes" >>= either fail pure
+    views <- forM presets $ \p -> do
+      scene <- either fail pure . parseScene =<< BLC.readFile ("scenes/" ++ presetName p ++ ".json")
+      let cam = presetCamera p
+          bodies = [(bsP b, bsSize b) | b <- sceneBodies scene]
+          seen = filter (seenFrom (sceneSpace scene) cam) bodies
+          -- the seen bodies' centres in the picture: x and y over the half-height
+          forward = normalize (cameraTarget cam ^-^ cameraEye cam)
+          right = normalize (cross forward (cameraUp cam))
+          up = cross right forward
+          halfHeight = tan (cameraFov cam * pi / 360)
+          at (q, _) = let rel = q ^-^ cameraEye cam; d = dot rel forward in (dot rel right / (d * halfHeight), dot rel up / (d * halfHeight))
+          xs = map (fst . at) seen
+          ys = map (snd . at) seen
+          -- the share of the picture's height (or width) the seen centres span
+          spans = if length seen < 2 then 0 else max ((maximum ys - minimum ys) / 2) ((maximum xs - minimum xs) / (2 * framingAspect))
+      pure (presetName p, fromIntegral (length seen) / fromIntegral (length bodies) :: Double, spans)
+    mapM_ (\(name, share, spans) -> putStrLn ("    " ++ name ++ ": bodies seen " ++ show (round (100 * share) :: Int) ++ " %, their centres span "
+                                              ++ show (round (100 * spans) :: Int) ++ " % of the picture")) views
+    -- most; but the torus's chain is looped round the tube, and no view
+    -- has more than about 150° of a loop facing it (13 of its 30 links)
+    let most name = if name == "torus-chain" then 0.4 else 0.5
+    [(name, share) | (name, share, _) <- views, share <= most name] `shouldBe` []
+    [(name, spans) | (name, _, spans) <- views, spans < 0.25] `shouldBe` []
 
   it "every preset runs 3 s natively without a warning" $ do
     presets <- readPresets "scenes" >>= either fail pure

@@ -144,7 +144,7 @@ spec = do
       forM_ [False, True] $ \generic -> do
         w0 <- twoStacks defaultParams
         let w = if generic then genericStep w0 else w0
-            scene = Scene plane defaultParams [] []
+            scene = Scene plane defaultParams [] [] Nothing
         _ <- untilAsleep w 1000
         n <- bodyCount w
         states <- mapM (readBody w) [0 .. n - 1]

@@ -126,6 +126,15 @@ declare namespace Manifold {
     sleepTime?: number;
     bodies?: SceneBody[];
     joints?: SceneJoint[];
+    /** the view the scene opens with (up and fov default to the space's camera's); the page's Save scene writes the view it shows */
+    camera?: SceneCamera;
+  }
+  /** A scene's camera: eye and target in world coordinates; up and fov (degrees) as the space's camera's where left out. */
+  interface SceneCamera {
+    eye: Vec3;
+    target: Vec3;
+    up?: Vec3;
+    fov?: number;
   }
   /** A scene as the page saves it (scene(), Save scene): every key. */
   interface SavedScene {

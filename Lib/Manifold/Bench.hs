@@ -154,7 +154,7 @@ benchScene sp n =
                  (Nothing, g2) -> place g2 grid (take k active ++ drop (k + 1) active) placed count
       points = place (mkStdGen (7 + n)) M.empty [] [] 0
       shapeOf i = if even i then CircleShape else SquareShape
-  in Scene sp defaultParams { pSleep = False } [BodySpec (shapeOf i) size 1 False p (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial | (i, p) <- zip [0 :: Int ..] points] []
+  in Scene sp defaultParams { pSleep = False } [BodySpec (shapeOf i) size 1 False p (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial | (i, p) <- zip [0 :: Int ..] points] [] Nothing
 
 -- | How long the benchmark scenes run before they are timed. The bodies
 -- start apart and fall; contacts per body rise for a few hundred steps

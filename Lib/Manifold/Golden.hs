@@ -70,7 +70,7 @@ sphereChain =
              | k <- [0 .. 19] ]
       weld = (jointAt Weld 20 21 (pin 20) (pin 20)) { jsHertz = 5, jsDampingRatio = 0.5 }
       rope = (jointAt Distance 21 (-1) (at 21) (V3 0.8 (-0.6) 0)) { jsLength = Just 1.2, jsMinLength = Just 0, jsMaxLength = Just 1.2 }
-  in Scene sphere defaultParams bodies (pins ++ [weld, rope])
+  in Scene sphere defaultParams bodies (pins ++ [weld, rope]) Nothing
 
 -- | Pairs of bodies joined across the flat Klein bottle's edges, thrown
 -- so that they cross them (one pair through the flipped edge): a pin, a
@@ -84,7 +84,7 @@ flatKleinJoints =
       joints = [ jointAt Revolute 0 1 (V3 0.86 0 0.3) (V3 0.86 0 0.3)
                , (jointAt Distance 2 3 (V3 0.2 0 0.85) (V3 0.2 0 (-0.85))) { jsHertz = 2, jsDampingRatio = 0.1 }
                , jointAt Weld 4 5 (V3 (-0.56) 0 0) (V3 (-0.56) 0 0) ]
-  in Scene flatKlein defaultParams bodies joints
+  in Scene flatKlein defaultParams bodies joints Nothing
 
 -- | Two stacks of three boxes on a static floor on the plane (gravity along
 -- −z), asleep within a second; a ball falls onto the left one and wakes it
@@ -98,7 +98,7 @@ planeSleepWake =
                : [box x k | x <- [-1, 1], k <- [0 .. 2]]
                ++ [BodySpec CircleShape 0.08 1 False (V3 (-1.02) 0 2.5) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial]
       weld = (jointAt Weld 3 (-1) (V3 (-1) 0 (z 2)) (V3 (-1) 0 (z 2))) { jsHertz = 3, jsDampingRatio = 0.7 }
-  in Scene plane defaultParams bodies [weld]
+  in Scene plane defaultParams bodies [weld] Nothing
 
 -- | Bodies of their own friction and restitution (and some of the
 -- scene's, which are 0.3 and 0.2 here), thrown about the rectangle: they
@@ -110,14 +110,14 @@ rectangleMaterials =
       materials = [ Material (Just 0.9) Nothing, Material Nothing (Just 0.8), Material (Just 0) (Just 0.5), sceneMaterial
                   , Material (Just 0.05) (Just 0), Material (Just 1.5) (Just 1), Material Nothing Nothing, Material (Just 0.4) (Just 0.3) ]
       bodies = [ body (if even k then SquareShape else CircleShape) k m | (k, m) <- zip [0 :: Int ..] materials ]
-  in Scene rectangle defaultParams { pFriction = 0.3, pRestitution = 0.2 } bodies []
+  in Scene rectangle defaultParams { pFriction = 0.3, pRestitution = 0.2 } bodies [] Nothing
 
 -- | A space's default scene ('spaceScene') with the default parameters.
 defaultScene :: Space -> Scene
 defaultScene sp =
   Scene sp defaultParams
     [ BodySpec (placeShape pl) (placeSize pl) 1 (placeStatic pl) (placeAt pl) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial
-    | pl <- spaceScene sp ] []
+    | pl <- spaceScene sp ] [] Nothing
 
 -- | The hash after @steps@ steps of the scene natively: by the generic step
 -- when asked (else by the space's compiled one, where it has one).

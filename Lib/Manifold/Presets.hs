@@ -3,7 +3,8 @@
 -- in its neck). @manifold build@ reads them, checks each as a scene of the
 -- space its name starts with, and writes them into the page's generated
 -- @presets.js@, so that the page offers them and loads one by its name
--- (@#scene=trumpet-jam@), served or opened from disk.
+-- (@#scene=trumpet-jam@), served or opened from disk. A preset that names
+-- no camera opens with the view "Manifold.Framing" chooses for its bodies.
 module Manifold.Presets
   ( Preset (..)
   , presetOf
@@ -15,27 +16,34 @@ module Manifold.Presets
 import Control.Monad (forM)
 import qualified Data.Aeson as A
 import qualified Data.Aeson.Key as K
+import qualified Data.Aeson.KeyMap as KM
 import qualified Data.ByteString.Lazy as BL
 import qualified Data.ByteString.Lazy.Char8 as BLC
 import Data.Char (isAsciiLower, isDigit)
 import Data.List (isPrefixOf, isSuffixOf, sort, sortOn)
+import Data.Maybe (fromMaybe)
 import Data.Ord (Down (..))
 import System.Directory (listDirectory)
 import System.FilePath (dropExtension, (</>))
 
-import Manifold.Scene (Scene (..), parseScene)
-import Manifold.Space (spaceName)
+import Linear.V3 (V3 (..))
+
+import Manifold.Framing (frameBodies)
+import Manifold.Scene (BodySpec (..), Scene (..), parseScene)
+import Manifold.Space (Camera (..), spaceName)
 import Manifold.Spaces (spaceNames)
 import Manifold.Stage.Kernels (generatedMarker)
 
 -- | A preset: its name (the file's, without @.json@), the space it is of,
--- what it shows (the rest of the name, in words), and the scene's JSON as
--- the file gives it.
+-- what it shows (the rest of the name, in words), the scene's JSON as the
+-- file gives it, and the view it opens with (the file's camera, or the one
+-- "Manifold.Framing" chooses for its bodies).
 data Preset = Preset
   { presetName :: String
   , presetSpace :: String
   , presetTitle :: String
   , presetScene :: A.Value
+  , presetCamera :: Camera
   } deriving (Show, Eq)
 
 -- | A preset from its file's name and text, or what is wrong with it (the
@@ -64,7 +72,8 @@ presetOf file text = do
             then here ("a scene of " ++ named ++ ", but the name says " ++ sp)
             else do
               value <- maybe (here "not JSON") pure (A.decode text)
-              pure (Preset name sp (map (\c -> if c == '-' then ' ' else c) what) value)
+              let framed = frameBodies (sceneSpace scene) [(bsP b, bsSize b) | b <- sceneBodies scene]
+              pure (Preset name sp (map (\c -> if c == '-' then ' ' else c) what) value (fromMaybe framed (sceneCamera scene)))
 
 -- | Every preset of a directory's @.json@ files, by name; the first problem
 -- found, if any, instead.
@@ -79,7 +88,7 @@ presetsScriptFile :: FilePath
 presetsScriptFile = "presets.js"
 
 -- | The page's script of the presets: @Manifold.presets@, each
--- @{name, space, title, scene}@.
+-- @{name, space, title, scene}@, the scene with its 'presetCamera'.
 presetsScript :: [Preset] -> String
 presetsScript presets = unlines $
   [ generatedMarker ++ " from scenes/ (the preset scenes). Do not edit."
@@ -87,6 +96,13 @@ presetsScript presets = unlines $
   , "globalThis.Manifold.presets = ["
   ] ++
   [ "  " ++ BLC.unpack (A.encode (A.object [ K.fromString "name" A..= presetName p, K.fromString "space" A..= presetSpace p
-                                          , K.fromString "title" A..= presetTitle p, K.fromString "scene" A..= presetScene p ])) ++ ","
+                                          , K.fromString "title" A..= presetTitle p, K.fromString "scene" A..= withCamera p ])) ++ ","
   | p <- presets ] ++
   [ "];" ]
+  where
+    withCamera p = case presetScene p of
+      A.Object o -> A.Object (KM.insert (K.fromString "camera") (cameraJSON (presetCamera p)) o)
+      other -> other
+    cameraJSON c = A.object [ K.fromString "eye" A..= xyz (cameraEye c), K.fromString "target" A..= xyz (cameraTarget c)
+                            , K.fromString "up" A..= xyz (cameraUp c), K.fromString "fov" A..= cameraFov c ]
+    xyz (V3 x y z) = [x, y, z]

@@ -67,6 +67,7 @@ data Scene = Scene
   , sceneParams :: Params -- ^ what the scene's keys ('sceneKeys') set, the rest defaults
   , sceneBodies :: [BodySpec]
   , sceneJoints :: [JointSpec] -- ^ joints between the scene's bodies (by index) or a body and the world
+  , sceneCamera :: Maybe Camera -- ^ the view the page opens the scene with (@"camera"@: eye, target, and up and fov as the space's camera's unless given); the engine does not read it
   }
 
 -- | A joint as a scene file gives it (@"joints": [{"type": "revolute",
@@ -226,7 +227,7 @@ parseScene :: BL.ByteString -> P Scene
 parseScene text = do
   v <- either (\(path, e) -> Left ("not JSON: " ++ formatError path e)) pure
          (AP.eitherDecodeWith (AP.jsonLast <* AC.skipSpace <* AC.endOfInput) ISuccess text)
-  o <- object "$" (["space"] ++ map keyName sceneKeys ++ ["bodies", "joints"]) v
+  o <- object "$" (["space"] ++ map keyName sceneKeys ++ ["bodies", "joints", "camera"]) v
   sp <- required "$" o "space" $ \path -> \case
     A.String s -> maybe (problem path ("unknown space " ++ show (T.unpack s) ++ "; the spaces are " ++ intercalate ", " spaceNames))
                         pure (lookupSpace (T.unpack s))
@@ -247,7 +248,27 @@ parseScene text = do
     _ -> problem path "must be an array of joints"
   when (length joints > 2 * max 1 (length bodies)) $
     problem "$.joints" (show (length joints) ++ " joints, more than a world of " ++ show (length bodies) ++ " bodies holds (two a body)")
-  pure (Scene sp params bodies joints)
+  camera <- optional "$" o "camera" Nothing (\path c -> Just <$> sceneCameraOf sp path c)
+  pure (Scene sp params bodies joints camera)
+
+-- | A scene's camera: eye and target (which must differ), up and fov (in
+-- degrees, between 0 and 180) the space's camera's unless given, up not
+-- along the view.
+sceneCameraOf :: Space -> Path -> A.Value -> P Camera
+sceneCameraOf sp path v = do
+  o <- object path ["eye", "target", "up", "fov"] v
+  let own = spaceCamera sp
+  eye <- required path o "eye" vec3
+  target <- required path o "target" vec3
+  up <- optional path o "up" (cameraUp own) vec3
+  fov <- optional path o "fov" (cameraFov own) $ \at x -> number at x >>= \d ->
+    if d > 0 && d < 180 then pure d else problem at "must be degrees between 0 and 180"
+  let V3 fx fy fz = target - eye
+      V3 ux uy uz = up
+  when (V3 fx fy fz == V3 0 0 0) $ problem (path ++ ".target") "must differ from the eye"
+  when (uy * fz - uz * fy == 0 && uz * fx - ux * fz == 0 && ux * fy - uy * fx == 0) $
+    problem (path ++ ".up") "must not be along the view (from the eye to the target)"
+  pure (Camera eye target up fov)
 
 -- | A scene's joint, for a scene of @n@ bodies.
 joint :: Int -> Path -> A.Value -> P JointSpec
@@ -330,7 +351,10 @@ sceneJSON s = A.object
   ( ["space" A..= spaceName (sceneSpace s)]
     ++ [ K.fromString (keyName k) A..= keyJSON k | k <- sceneKeys ]
     ++ ["bodies" A..= map bodyJSON (sceneBodies s)]
-    ++ [ "joints" A..= map jointJSON (sceneJoints s) | not (null (sceneJoints s)) ] )
+    ++ [ "joints" A..= map jointJSON (sceneJoints s) | not (null (sceneJoints s)) ]
+    ++ [ "camera" A..= A.object [ "eye" A..= v3 (cameraEye c), "target" A..= v3 (cameraTarget c)
+                                , "up" A..= v3 (cameraUp c), "fov" A..= cameraFov c ]
+       | Just c <- [sceneCamera s] ] )
   where
     jointJSON j = A.object $
       [ "type" A..= (case jsKind j of Revolute -> "revolute"; Distance -> "distance"; Weld -> "weld" :: String)

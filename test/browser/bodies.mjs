@@ -296,20 +296,29 @@ async function testApi(check, context, base) {
   const file = path.join(OUT, "saved-scene.json");
   await download.saveAs(file);
   const text = fs.readFileSync(file, "utf8");
-  check("the Save scene button downloads the scene JSON", JSON.stringify(JSON.parse(text)) === round.saved &&
-    download.suggestedFilename() === "manifold-torus.json", download.suggestedFilename() + ", " + text.length + " bytes");
+  const shownCamera = await page.evaluate(function () { return window.manifold.camera(); });
+  const savedFile = JSON.parse(text), savedCamera = savedFile.camera;
+  delete savedFile.camera;
+  check("the Save scene button downloads the scene JSON with the view it is shown in (camera)", JSON.stringify(savedFile) === round.saved &&
+    JSON.stringify(savedCamera) === JSON.stringify(shownCamera) && download.suggestedFilename() === "manifold-torus.json",
+    download.suggestedFilename() + ", " + text.length + " bytes, camera " + JSON.stringify(savedCamera));
 
   // loading a file through the page's control, into another space
   const other = JSON.parse(text);
   other.space = "sphere";
   // bodies moved to another space are placed anew: without their saved frame
   other.bodies.forEach(function (b) { b.v = [0, 0, 0]; delete b.axis; delete b.normal; });
+  // and a view of its own: up and fov left to the space's camera
+  other.camera = { eye: [0.4, 0.9, 2.5], target: [0, 0.1, 0] };
   await page.setInputFiles("#scene-file", { name: "scene.json", mimeType: "application/json", buffer: Buffer.from(JSON.stringify(other)) });
   const loaded = await page.waitForFunction(function () {
     const m = window.manifold;
-    return m.space() === "sphere" && m.bodies().length === 3 ? { hash: location.hash, sizes: m.bodies().map(function (b) { return b.size; }) } : null;
+    return m.space() === "sphere" && m.bodies().length === 3 ? { hash: location.hash, sizes: m.bodies().map(function (b) { return b.size; }), camera: m.camera(),
+      own: window.Manifold.spaces.sphere.camera } : null;
   }, null, { timeout: 10000 }).then(function (h) { return h.jsonValue(); }, function () { return null; });
-  check("Load scene… reads a file; a scene of another space switches to it", loaded !== null && loaded.hash === "#space=sphere&bodies=3",
+  check("Load scene… reads a file; a scene of another space switches to it, shown from the scene's camera (up and fov the space's)",
+    loaded !== null && loaded.hash === "#space=sphere&bodies=3" && JSON.stringify(loaded.camera.eye) === "[0.4,0.9,2.5]" &&
+      JSON.stringify(loaded.camera.target) === "[0,0.1,0]" && JSON.stringify(loaded.camera.up) === JSON.stringify(loaded.own.up) && loaded.camera.fov === loaded.own.fov,
     JSON.stringify(loaded));
 
   // a bad scene: a clear message on the page, the world unchanged

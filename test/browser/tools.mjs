@@ -386,7 +386,31 @@ async function testPresets(check, context, base) {
     JSON.stringify({ bySelect: bySelect, afterClear: afterClear }));
   const all = await page.evaluate(function () { return window.manifold.presets(); });
   const loaded = [];
+  const opened = [];
   for (const p of all) {
+    // as it opens: the bodies found under their own projected centres by
+    // the page's picking (the float framebuffer of the drawn view), the
+    // body itself or, on an antipodal quotient, its image
+    const seen = await page.evaluate(function (name) {
+      const m = window.manifold;
+      return m.loadPreset(name).then(function () {
+        m.pause();
+        m.render();
+        const st = m.stats(), space = window.Manifold.spaces[m.space()];
+        const images = space.quotient === "antipodal" ? [1, -1] : [1];
+        const found = m.bodies().filter(function (b, i) {
+          return images.some(function (s) {
+            const q = m.project(b.p.map(function (x) { return s * x; }));
+            if (!q || q[0] < 0 || q[1] < 0 || q[0] >= st.width || q[1] >= st.height) return false;
+            const hit = m.inspect(q[0], q[1]);
+            return hit !== null && hit.index === i;
+          });
+        });
+        return { n: m.bodies().length, seen: found.length };
+      });
+    }, p.name);
+    await canvasShot(page, path.join(OUT, "preset-" + p.name + "-opened.png"));
+    opened.push({ name: p.name, n: seen.n, seen: seen.seen });
     const r = await page.evaluate(function (name) {
       const m = window.manifold;
       return m.loadPreset(name).then(function (n) {
@@ -406,6 +430,11 @@ async function testPresets(check, context, base) {
     wanted.every(function (n) { return names.indexOf(n) >= 0; }) &&
       loaded.every(function (r) { return r.n === r.want && r.n > 0 && r.space === r.name.slice(0, r.space.length) && r.warnings === 0 && r.error === null; }),
     loaded.map(function (r) { return r.name + " " + r.n + "/" + r.want + " w" + r.warnings; }).join(", "));
+  // (most; the torus's chain loops round the tube: no view has much more
+  // than 150° of it facing the camera)
+  check("every preset opens with most of its bodies in the picture, the view's picking finding each under its centre (pictures: test-output/browser/preset-NAME-opened.png)",
+    opened.every(function (o) { return o.seen > (o.name === "torus-chain" ? 0.4 : 0.5) * o.n; }),
+    opened.map(function (o) { return o.name + " " + o.seen + "/" + o.n; }).join(", "));
   const unknown = await page.evaluate(function () {
     const m = window.manifold, before = m.space();
     return m.loadPreset("sphere-nothing").then(function () { return "loaded"; }, function (e) {

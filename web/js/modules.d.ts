@@ -80,7 +80,16 @@ declare namespace ManifoldWeb {
     space: string;
     bodies: Manifold.SceneBody[];
     joints?: ParsedJoint[];
+    camera?: SceneCamera | null;
     [sceneKey: string]: unknown;
+  }
+
+  /** A scene's camera as world.js's parseCamera gives it: up and fov null where the scene left them out. */
+  interface SceneCamera {
+    eye: Manifold.Vec3;
+    target: Manifold.Vec3;
+    up: Manifold.Vec3 | null;
+    fov: number | null;
   }
 
   /** A scene joint as world.js's parseJoint gives it: every key, null where the scene left one out. */

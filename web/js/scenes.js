@@ -141,6 +141,7 @@ var ManifoldWebScenes = (function (W) {
       return Promise.reject(e);
     }
     const done = function () {
+      if (scene.camera) showCamera(scene.camera);
       showSettings();
       MW.hash.updateHash();
       return state.world ? state.world.count() : 0;
@@ -210,9 +211,18 @@ var ManifoldWebScenes = (function (W) {
     return P.requireWorld().scene();
   }
 
-  // The current scene as a download (manifold-SPACE.json).
+  // A scene's camera shown: its up and fov, where it leaves them out, the
+  // space's camera's.
+  /** @param {ManifoldWeb.SceneCamera} c */
+  function showCamera(c) {
+    const own = state.space.camera;
+    state.camera.set({ eye: c.eye, target: c.target, up: c.up || own.up, fov: c.fov || own.fov });
+  }
+
+  // The current scene as a download (manifold-SPACE.json), with the view
+  // it is shown in.
   function saveSceneFile() {
-    const text = JSON.stringify(currentScene(), null, 2) + "\n";
+    const text = JSON.stringify(Object.assign(currentScene(), { camera: state.camera.get() }), null, 2) + "\n";
     const blob = new Blob([text], { type: "application/json" });
     const a = document.createElement("a");
     a.href = URL.createObjectURL(blob);

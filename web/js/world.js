@@ -272,6 +272,26 @@ var ManifoldWebWorld = (function (W) {
       local: local, impulses: imps, collide: collide };
   }
 
+  // A scene's camera, as Manifold.Scene checks it: eye and target, up and
+  // fov if given (the space's camera's otherwise: null here).
+  /** @param {string} path @param {unknown} v @returns {ManifoldWeb.SceneCamera} */
+  function parseCamera(path, v) {
+    const o = object(path, ["eye", "target", "up", "fov"], v);
+    const eye = required(path, o, "eye", vec3), target = required(path, o, "target", vec3);
+    const up = optional(path, o, "up", null, vec3);
+    const fov = optional(path, o, "fov", null, function (at, x) {
+      const d = number(at, x);
+      if (!(d > 0 && d < 180)) problem(at, "must be degrees between 0 and 180");
+      return d;
+    });
+    const f = [target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]];
+    if (f[0] === 0 && f[1] === 0 && f[2] === 0) problem(path + ".target", "must differ from the eye");
+    if (up && up[1] * f[2] - up[2] * f[1] === 0 && up[2] * f[0] - up[0] * f[2] === 0 && up[0] * f[1] - up[1] * f[0] === 0) {
+      problem(path + ".up", "must not be along the view (from the eye to the target)");
+    }
+    return { eye: eye, target: target, up: up, fov: fov };
+  }
+
   // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
   /** @param {unknown} json @param {string[]} spaceNames @returns {ManifoldWeb.ParsedScene} */
   function parseScene(json, spaceNames) {
@@ -284,7 +304,7 @@ var ManifoldWebWorld = (function (W) {
       }
     }
     const keys = sceneKeys();
-    const o = object("$", ["space"].concat(keys.map(function (k) { return k.key; }), ["bodies", "joints"]), v);
+    const o = object("$", ["space"].concat(keys.map(function (k) { return k.key; }), ["bodies", "joints", "camera"]), v);
     const space = required("$", o, "space", function (path, s) {
       if (typeof s !== "string") problem(path, "must be a space name");
       if (spaceNames.indexOf(s) < 0) problem(path, "unknown space " + JSON.stringify(s) + "; the spaces are " + spaceNames.join(", "));
@@ -311,6 +331,7 @@ var ManifoldWebWorld = (function (W) {
     if (scene.joints.length > 2 * Math.max(1, n)) {
       problem("$.joints", scene.joints.length + " joints, more than a world of " + n + " bodies holds (two a body)");
     }
+    scene.camera = optional("$", o, "camera", null, parseCamera);
     return scene;
   }
 
