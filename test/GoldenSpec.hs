@@ -1,6 +1,7 @@
 -- | The golden runs ("Manifold.Golden"): each catalogue scene, run by the
--- compiled native step, by the generic one and by the page's engine under
--- node, ends on the state hash test/golden/hashes holds, bit for bit; and
+-- compiled native step, by the generic one (all but the benchmark piles)
+-- and by the page's engine under node, ends on the state hash
+-- test/golden/hashes holds, bit for bit; and
 -- so does a run saved halfway (as a scene file) and loaded again, in both
 -- engines, on every space.
 module GoldenSpec (spec) where
@@ -8,6 +9,7 @@ module GoldenSpec (spec) where
 import Control.Monad (forM, forM_, replicateM_)
 import qualified Data.Aeson as A
 import qualified Data.ByteString.Lazy.Char8 as BL
+import Data.List (isSuffixOf)
 import System.FilePath ((</>))
 import System.IO.Temp (withSystemTempDirectory)
 import System.Process (readProcess)
@@ -58,11 +60,18 @@ compareSome mismatch engine got = do
 
 -- | The native engine's lines.
 nativeLines :: Bool -> IO [(String, String, String)]
-nativeLines generic = forM goldenRuns $ \run -> do
+nativeLines generic = forM (if generic then genericRuns else goldenRuns) $ \run -> do
   r <- runHash generic (grSteps run) (grScene run)
   case r of
     Left e -> fail (grName run ++ ": " ++ e)
     Right h -> pure (grName run, show (grSteps run), showHash h)
+
+-- | The runs the generic step checks: all but the benchmark piles (the
+-- compiled step's code at more bodies, 95 % of the generic step's time
+-- over every run: 111 s of the suite), and the rectangle's 300-body pile
+-- (contacts, islands and sleep at scale, walls).
+genericRuns :: [GoldenRun]
+genericRuns = filter (\run -> grName run == "rectangle-300" || not (any (`isSuffixOf` grName run) ["-300", "-1000"])) goldenRuns
 
 -- | The runs saved and continued: every space's default scene and the
 -- 300-body piles (the 1000-body ones are the same code at more bodies).
@@ -113,8 +122,10 @@ spec = describe "golden state hashes (test/golden/hashes)" $ do
     map fst golden `shouldBe` map grName goldenRuns
   it "the compiled native step ends every golden run on its hash" $
     nativeLines False >>= compareWith "compiled native step"
-  it "the generic native step ends every golden run on its hash" $
-    nativeLines True >>= compareWith "generic native step"
+  it "the generic native step ends every golden run but the benchmark piles (one of them kept) on its hash" $ do
+    got <- nativeLines True
+    length got `shouldBe` length genericRuns
+    compareSome (changed "generic native step") "generic native step" got
   it "the page's engine (under node) ends every golden run on its hash" $
     pageLines False goldenRuns >>= compareWith "page's engine"
   it "a run saved as a scene and loaded again ends where the uninterrupted run does, natively, on every space" $ do
