@@ -423,6 +423,29 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     -- every box rests on the slab (body 0), each with two rows
     [ length [c | c <- cs, cB c == 0 || cA c == 0, cA c == k || cB c == k] | k <- [1 .. 40] ] `shouldSatisfy` all (== 2)
 
+  it "keeps a movable body far larger than the mean out of the grid, and finds its contacts with every small body: moving ones and still ones" $ do
+    -- a ring of 60 circles of radius 0.02 around one of radius 1, each
+    -- overlapping it by a tenth of its radius; the ring moving, then still
+    let r = 0.02
+        big staticBig = BodyInit circle 1 1 staticBig (V3 0 0 0) (V3 0 0 0) 0 0 sceneMaterial
+        small staticSmall k = let t = 2 * pi * fromIntegral k / 60; d = 1 + 0.9 * r
+                              in BodyInit circle r 1 staticSmall (V3 (d * cos t) 0 (d * sin t)) (V3 0 0 0) 0 0 sceneMaterial
+        ring staticBig staticSmall = do
+          w <- newWorld plane (layout 61)
+          setParams w defaultParams { pSleep = False, pGravity = False }
+          mapM_ (addBody w >=> either fail (const (pure ()))) (big staticBig : map (small staticSmall) [0 .. 59 :: Int])
+          stepNative w
+          cs <- contacts w
+          large <- meta w LargeCount
+          cell <- meta w CellSize
+          pure (large, cell, [ length [c | c <- cs, (cA c, cB c) `elem` [(0, k), (k, 0)]] | k <- [1 .. 60] ])
+    (large, cell, rows) <- ring False False
+    (large, cell) `shouldBe` (1, 2 * r)
+    rows `shouldSatisfy` all (== 1)
+    (large', cell', rows') <- ring False True
+    (large', cell') `shouldBe` (1, 2 * r)
+    rows' `shouldSatisfy` all (== 1)
+
   it "saves a world that has run as a scene that loads back with every body where it was, moving as it moved" $ do
     let scene = benchScene torus 60
     w <- loadScene 0 scene >>= either fail pure

@@ -46,12 +46,17 @@ import Manifold.World
 
 -- | Sort the bodies into the buckets of a spatial hash of grid cells (a
 -- counting sort: no allocation). Cells are at least as wide as the largest
--- movable body, so a body's contacts are all in the 27 cells around its
--- own. A static body larger than that (a ground slab, a wall) is kept out
+-- body no larger than four times the bodies' mean bounding radius, so a
+-- body's contacts with those are all in the 27 cells around its own. A
+-- larger body (a ground slab, a wall, a boulder among pebbles) is kept out
 -- of the grid, listed at the end of 'wItems' (the last of its 'Capacity'
--- slots first, 'LargeCount' of them), which every body checks as well: cells
--- as wide as the slab put a pile's every body in a handful of cells, and
--- each body's neighbours became the pile. The
+-- slots first, 'LargeCount' of them): every moving body in the grid checks
+-- that list as well, and a moving body apart checks every still body of
+-- the grid and the others apart. Cells as wide as a slab put a pile's
+-- every body in a handful of cells, and each body's neighbours became the
+-- pile. With more than 'maxLargeMovable' movable bodies above the mean's
+-- four times, the cells are as wide as the largest movable body and only
+-- larger static bodies are kept apart. The
 -- cells are hashed into eight buckets per body, so clearing and scanning
 -- the table costs in proportion to the bodies, whatever the space's size.
 -- Each body remembers its exact cell, so bodies of a different cell that
@@ -66,12 +71,22 @@ buildGrid sp w = do
   count <- readMeta w BodyCount
   let n = toIndex count
       bound = constant (spaceBounds sp)
-  maxR <- newRef 0
+  -- the cells are sized by the bodies no larger than four times the
+  -- bodies' mean bounding radius, unless more than 'maxLargeMovable'
+  -- movable bodies are larger than that (then by every movable body)
+  sumR <- newRef 0
+  forEach n $ \i -> readSlot w i BoundRadius >>= \r -> modifyRef sumR (+ r)
+  limit <- share . (* 4) . (/ maxF 1 count) =<< readRef sumR
+  maxSmall <- newRef 0
+  maxAll <- newRef 0
+  over <- newRef 0
   forEach n $ \i -> do
     r <- readSlot w i BoundRadius
     movable <- readSlot w i InvMass
-    whenPositive movable (modifyRef maxR (maxF r))
-  rmax <- readRef maxR
+    whenPositive movable (modifyRef maxAll (maxF r))
+    ifPositive (r - limit) (whenPositive movable (modifyRef over (+ 1))) (modifyRef maxSmall (maxF r))
+  tooMany <- (\k -> k - fromIntegral maxLargeMovable - 0.5) <$> readRef over
+  rmax <- share =<< (select tooMany <$> readRef maxAll <*> readRef maxSmall)
   -- at most 2^16 cells across the bounds, so that a cell's key is exact
   cell <- share (maxF (2 * rmax) (2 * bound / cellsAcross))
   buckets <- share (clampF 1 (fromIntegral maxBuckets) (8 * count))
@@ -79,12 +94,11 @@ buildGrid sp w = do
   writeMeta w CellSize cell
   writeMeta w LargeCount 0
   let starts b = toIndex buckets + b
-      -- a static body wider than the cells: listed apart (its cell, −1,
-      -- names none)
+      -- a body wider than the cells: listed apart (its cell, −1, names
+      -- none)
       inGrid i body = do
         r <- readSlot w i BoundRadius
-        movable <- readSlot w i InvMass
-        ifPositive (minF (select movable 0 1) (r - rmax))
+        ifPositive (r - rmax)
           (do writeArray (wCellOf w) i (-1)
               k <- readMeta w LargeCount
               capacity <- readMeta w Capacity
@@ -118,6 +132,11 @@ buildGrid sp w = do
 
 cellsAcross :: Field a => a
 cellsAcross = 65536
+
+-- | The most movable bodies kept out of the grid for being larger than
+-- four times the mean: each of them checks every body that does not move.
+maxLargeMovable :: Int
+maxLargeMovable = 16
 
 cellCoord :: Field a => a -> a -> a
 {-# INLINE cellCoord #-}
@@ -737,7 +756,8 @@ collideAwake sp l w = do
     invMi <- readSlot w i InvMass
     -- the bodies joined to this one, which it does not collide with
     partners <- mapM (\s -> readArray (wPartners w) (fromIntegral partnersPerBody * i + fromIntegral s)) [0 .. partnersPerBody - 1]
-    cell <- readMeta w CellSize -- at least twice the largest bounding radius
+    cell <- readMeta w CellSize -- at least twice the bounding radius of every body in the grid
+    cellI <- readArray (wCellOf w) i -- −1: kept apart from the grid
     -- the bodies near this one are listed first and their pairs made after:
     -- compiled natively, a loop that calls out keeps its numbers on the
     -- stack, and the cell scan is the broad phase's whole cost
@@ -746,11 +766,13 @@ collideAwake sp l w = do
           gp <- share3 (applyIso g p)
           writeRef found 0
           -- each unordered pair once: j > i (j >= i for an image the body
-          -- may meet itself through: its own image), or j still
-          let consider j = do
+          -- may meet itself through: its own image), or j still; a pair of
+          -- a body in the grid and one apart is the grid body's while it
+          -- moves (the one apart takes it from a still grid body)
+          let ordered movingJ j = select movingJ (toScalar j - toScalar i + (if self then 0.5 else 0)) 1
+              consider orderOf j = do
                 movingJ <- moving w j
-                let order = select movingJ (toScalar j - toScalar i + (if self then 0.5 else 0)) 1
-                whenPositive order $ do
+                whenPositive (orderOf movingJ j) $ do
                   pj <- read3 (wPos w) j
                   rj <- readSlot w j BoundRadius
                   invMj <- readSlot w j InvMass
@@ -760,11 +782,18 @@ collideAwake sp l w = do
                     k <- readRef found
                     writeArray (wNear w) (toIndex k) (toScalar j)
                     writeRef found (k + 1)
-          nearDomain gp (ri + cell) $ neighbours metric w gp consider
-          -- and the large static bodies, at the end of the items
+          -- the bodies kept apart, at the end of the items
           large <- readMeta w LargeCount
           capacity <- readMeta w Capacity
-          forEach (toIndex large) $ \k -> readArray (wItems w) (toIndex capacity - 1 - k) >>= consider . toIndex
+          let apart orderOf = forEach (toIndex large) $ \k -> readArray (wItems w) (toIndex capacity - 1 - k) >>= consider orderOf . toIndex
+          ifPositive (cellI + 0.5)
+            (do nearDomain gp (ri + cell) $ neighbours metric w gp (consider ordered)
+                apart (\_ _ -> 1))
+            -- a body apart: every still body of the grid, then the others apart
+            (do nearDomain gp (ri + cell) $ forEach (toIndex count) $ \j -> do
+                  cellJ <- readArray (wCellOf w) j
+                  whenPositive (cellJ + 0.5) (consider (\movingJ _ -> 0.5 - movingJ) j)
+                apart ordered)
           nearCount <- readRef found
           forEach (toIndex nearCount) $ \k -> do
             j <- toIndex <$> readArray (wNear w) k
