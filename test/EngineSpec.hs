@@ -110,7 +110,12 @@ emittedHeapScript =
   , "  return profiler.stop().statistics.length === 0 ? after - before : Infinity;"
   , "}"
   , "const least = (steps) => Math.min(grows(steps), grows(steps), grows(steps));"
-  , "const perStep = (least(50) - least(0)) / 50;"
+  , "let perStep = (least(50) - least(0)) / 50;"
+  -- once, on a loaded machine (two suites and a build at once), the
+  -- funnel's step was measured deoptimised (137 KB a step) where every
+  -- run alone and under load allocates nothing: optimised once more and
+  -- measured again, a deopt that lasts still shows
+  , "if (perStep > 32) { for (const [, f] of functions) %OptimizeFunctionOnNextCall(f); step(); perStep = (least(50) - least(0)) / 50; }"
   , "console.log(JSON.stringify([perStep, a[" ++ show metaArray ++ "][" ++ show (fromEnum ContactCount) ++ "]]));"
   ]
   where metaArray = length (takeWhile (/= "meta") (toList arrayNames))
