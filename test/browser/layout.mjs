@@ -6,6 +6,8 @@
 // 720 px the controls wrap in a bar above the view, at 640 px they scroll in
 // one row: nothing overlaps there either.
 
+import { openSpace } from "./bodies.mjs";
+
 const GROUPS = ["Space and view", "Bodies and tools", "Simulation", "Scene and capture"];
 
 // In the page: every visible control (input, select, button, output) and
@@ -88,13 +90,8 @@ function measure() {
 
 async function openAt(browser, base, width) {
   const context = await browser.newContext({ viewport: { width: width, height: 900 }, deviceScaleFactor: 1 });
-  const page = await context.newPage();
   const errors = [];
-  page.on("console", function (m) { if (m.type() === "error") errors.push("console: " + m.text()); });
-  page.on("pageerror", function (e) { errors.push("pageerror: " + e.message); });
-  await page.goto(base + "#space=sphere");
-  await page.waitForFunction(function () { return !!window.manifold; });
-  await page.evaluate(function () { return window.manifold.ready(); });
+  const page = await openSpace(context, base, "#space=sphere", errors);
   return { context: context, page: page, errors: errors };
 }
 
