@@ -30,14 +30,16 @@ framingAspect :: Double
 framingAspect = 4 / 3
 
 -- | The camera for a scene's bodies (each its centre on the surface and its
--- size): among the directions of the bodies' normals (at most 32 of them),
--- their mean and the means of two (of at most 8), the one from which the
--- most bodies are
--- 'seenFrom', looking at the centre of those that face it (normals within
--- 60° of it) from the distance at which they fill 'framingFill' of the
--- picture's height, no nearer than a fifth of the space's camera's
--- distance, no farther than its bounds allow. The space's camera when
--- there are no bodies; its up direction and field of view always.
+-- size): among the directions of the bodies' normals (every body's, or
+-- every k-th of a scene of more than 32), their mean and the means of two
+-- (of about 8), the one from which the most bodies are 'seenFrom' (a tie:
+-- the one nearer the space's own camera), looking at the centre of those
+-- that face it (normals within 60° of it) from the distance at which they
+-- fill 'framingFill' of the picture's height, no nearer than a fifth of
+-- the space's camera's distance, and farther where that point is on the
+-- other side of the surface (up to eight times its bounds). The space's
+-- camera when there are no bodies; its up direction (unless the view looks
+-- along it) and field of view always.
 frameBodies :: Space -> [(V3 Double, Double)] -> Camera
 frameBodies sp bodies
   | null bodies = own
