@@ -393,7 +393,7 @@ async function testPresets(check, context, base) {
     // body itself or, on an antipodal quotient, its image
     const seen = await page.evaluate(function (name) {
       const m = window.manifold;
-      return m.loadPreset(name).then(function () {
+      return m.loadPreset(name).then(function (n) {
         m.pause();
         m.render();
         const st = m.stats(), space = window.Manifold.spaces[m.space()];
@@ -406,21 +406,19 @@ async function testPresets(check, context, base) {
             return hit !== null && hit.index === i;
           });
         });
-        return { n: m.bodies().length, seen: found.length };
+        return { loaded: n, n: m.bodies().length, seen: found.length };
       });
     }, p.name);
     await canvasShot(page, path.join(OUT, "preset-" + p.name + "-opened.png"));
     opened.push({ name: p.name, n: seen.n, seen: seen.seen });
-    const r = await page.evaluate(function (name) {
+    // then 1 s on
+    const r = await page.evaluate(function (a) {
       const m = window.manifold;
-      return m.loadPreset(name).then(function (n) {
-        m.pause();
-        m.step(100);
-        m.render();
-        return { name: name, n: n, want: window.Manifold.presets.find(function (q) { return q.name === name; }).scene.bodies.length,
-          space: m.space(), warnings: m.stats().warnings, error: m.error() };
-      });
-    }, p.name);
+      m.step(100);
+      m.render();
+      return { name: a.name, n: a.loaded, want: window.Manifold.presets.find(function (q) { return q.name === a.name; }).scene.bodies.length,
+        space: m.space(), warnings: m.stats().warnings, error: m.error() };
+    }, { name: p.name, loaded: seen.loaded });
     await canvasShot(page, path.join(OUT, "preset-" + p.name + ".png"));
     loaded.push(r);
   }
