@@ -28,7 +28,7 @@ import Data.Maybe (fromMaybe, isJust)
 import Data.Scientific (toRealFloat)
 import qualified Data.Text as T
 import qualified Data.Vector as V
-import Linear.V3 (V3 (..))
+import Linear.V3 (V3 (..), cross)
 
 import Manifold.Body
 import Manifold.Engine
@@ -263,10 +263,8 @@ sceneCameraOf sp path v = do
   up <- optional path o "up" (cameraUp own) vec3
   fov <- optional path o "fov" (cameraFov own) $ \at x -> number at x >>= \d ->
     if d > 0 && d < 180 then pure d else problem at "must be degrees between 0 and 180"
-  let V3 fx fy fz = target - eye
-      V3 ux uy uz = up
-  when (V3 fx fy fz == V3 0 0 0) $ problem (path ++ ".target") "must differ from the eye"
-  when (uy * fz - uz * fy == 0 && uz * fx - ux * fz == 0 && ux * fy - uy * fx == 0) $
+  when (target == eye) $ problem (path ++ ".target") "must differ from the eye"
+  when (cross up (target - eye) == V3 0 0 0) $
     problem (path ++ ".up") "must not be along the view (from the eye to the target)"
   pure (Camera eye target up fov)
 
