@@ -32,8 +32,8 @@ pyramidDt :: Double -> Double
 pyramidDt h = sqrt ((10 / 3600 / 0.5) * h / gravity)
 
 -- | A square box of half-side @h@ centred at @(x, z)@ on the rectangle.
-box :: Double -> Double -> Double -> BodyInit
-box h x z = dyn square (h * sqrt 2) (V3 x 0 z) (V3 0 0 0) 0 0
+squareBox :: Double -> Double -> Double -> BodyInit
+squareBox h x z = dyn square (h * sqrt 2) (V3 x 0 z) (V3 0 0 0) 0 0
 
 -- | Run a stack-like scene of boxes of half-side @h@ for @seconds@ and
 -- report the farthest any box moved sideways and how far the top box
@@ -64,7 +64,7 @@ standingWith change h bodies seconds = do
 
 -- | A vertical stack of @n@ boxes of half-side @h@ on the rectangle's floor.
 column :: Double -> Int -> [BodyInit]
-column h n = [box h 0 (-1 + h + fromIntegral k * 2 * h) | k <- [0 .. n - 1]]
+column h n = [squareBox h 0 (-1 + h + fromIntegral k * 2 * h) | k <- [0 .. n - 1]]
 
 xOf, zOf :: BodyState -> Double
 xOf b = let V3 x _ _ = bsPos b in x
@@ -77,7 +77,7 @@ spec = do
     it "a pyramid of 20 rows (210 boxes, friction 0.6) stands on the rectangle for 20 s: no box moves sideways by half its half-side, the top box neither rises nor falls by one" $ do
       let rows = 20 :: Int
           h = 0.9 / fromIntegral rows
-          bodies = [ box h ((fromIntegral k - fromIntegral (n - 1) / 2) * 2 * h) (-1 + h + fromIntegral r * 2 * h)
+          bodies = [ squareBox h ((fromIntegral k - fromIntegral (n - 1) / 2) * 2 * h) (-1 + h + fromIntegral r * 2 * h)
                    | r <- [0 .. rows - 1], let n = rows - r, k <- [0 .. n - 1] ]
       (sideways, top) <- standing h bodies 20
       labelled "pyramid of 20 rows after 20 s: max sideways / half-side, top box's height change / half-side" (fmt sideways ++ ", " ++ fmt top)
@@ -202,7 +202,7 @@ slide material mu theta = do
       h = 0.05
       dt = 0.005
   w <- mkWorld slope defaultParams { pFriction = mu, pDt = dt }
-         [ still square groundSize (V3 0 0 (-0.5)) 0, (box h 0 (top + h)) { biMaterial = material } ]
+         [ still square groundSize (V3 0 0 (-0.5)) 0, (squareBox h 0 (top + h)) { biMaterial = material } ]
   let state = do
         b <- readBody w 1
         let V3 vx _ _ = bsVel b

@@ -14,6 +14,7 @@ import qualified EngineSpec
 import qualified FlatSpec
 import qualified GeodesicPathSpec
 import qualified GoldenSpec
+import qualified HullSpec
 import qualified ImpSpec
 import qualified MeasuresSpec
 import qualified MetricSpec
@@ -45,6 +46,7 @@ main = do
     describe "Manifold.Stage" StageSpec.spec
     describe "Manifold.Stage.Imp" ImpSpec.spec
     ContactManifoldSpec.spec
+    HullSpec.spec
     describe "Physics" PhysicsSpec.spec
     describe "Solver" SolverSpec.spec
     AnchorSpec.spec

@@ -17,15 +17,15 @@ declare namespace Manifold {
 
   // ---- scenes (the JSON of `manifold sim`, docs/scenes.md) ----
 
-  /** A body's shape: a circle, a square, or a regular polygon of 3 to 64 sides. */
-  type Shape = "circle" | "square" | { polygon: number };
+  /** A body's shape: a circle, a square, a regular polygon of 3 to 64 sides, a box of two half-extents (along the body's direction, across it), or a capsule (half its segment's length, its radius). */
+  type Shape = "circle" | "square" | { polygon: number } | { box: [number, number] } | { capsule: [number, number] };
   /** A contact impulse a body remembers for warm starting: [contact key, normal, friction]. */
   type Impulse = [number, number, number];
   /** A body as a scene gives it: shape, size and p are required, the rest has defaults. */
   interface SceneBody {
     shape: Shape;
-    /** > 0 */
-    size: number;
+    /** > 0; not given with a box or a capsule (their numbers are their size) */
+    size?: number;
     /** projected onto the surface by the engine */
     p: Vec3;
     density?: number;
@@ -80,7 +80,8 @@ declare namespace Manifold {
   /** A body as the page gives it back (bodies(), scene()): every key. */
   interface Body {
     shape: Shape;
-    size: number;
+    /** absent for a box or a capsule (their numbers are their size) */
+    size?: number;
     density: number;
     /** present when the body has its own friction or restitution */
     friction?: number;
@@ -257,7 +258,7 @@ declare namespace Manifold {
   type ArrayName =
     | "meta" | "params" | "pos" | "vel" | "axis" | "normal" | "scalars" | "radii" | "verts" | "outline"
     | "grid" | "cellOf" | "items" | "contacts" | "prev" | "bodyPrev" | "mouse" | "probe" | "near" | "walk"
-    | "joints" | "flip" | "partners" | "islands" | "seenParams";
+    | "joints" | "flip" | "partners" | "islands" | "seenParams" | "hull";
   /** The world's counters and results, slots of the array meta. */
   type MetaName =
     | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
@@ -360,7 +361,7 @@ declare namespace Manifold {
     step: Procedure;
     /** the bodies' polygons again, from their positions and axes */
     polygonise: Procedure;
-    /** (arrays, shape code (0 circle, 4 square, else the sides), size, density, static 0/1, px, py, pz, vx, vy, vz, angle, omega, restore 0/1, ax, ay, az, nx, ny, nz, friction, restitution (each -1: the scene's)): meta lastAdded, -1 if refused, -2 if a restored body's axis and normal do not fit (frameMisfit says why) */
+    /** (arrays, shape code (shapeCodes, or a regular polygon's sides), the shape's two numbers (a box's half-extents, a capsule's half length and radius; 0 for the others), size (a box's and a capsule's come from their numbers), density, static 0/1, px, py, pz, vx, vy, vz, angle, omega, restore 0/1, ax, ay, az, nx, ny, nz, friction, restitution (each -1: the scene's)): meta lastAdded, -1 if refused, -2 if a restored body's axis and normal do not fit (frameMisfit says why) */
     addBody: Procedure;
     /** (arrays, index): the last body takes the index */
     removeBody: Procedure;
@@ -413,6 +414,8 @@ declare namespace Manifold {
     bodyKeys: string[];
     /** the body keys that give a body its own material, each taking the scene key of its name's values */
     materialKeys: string[];
+    /** addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Manifold.Hull) */
+    shapes: { codes: { circle: number; box: number; capsule: number }; size: (code: number, p: number, q: number, size: number) => number };
     /** web/gen/spaces.js: every space, in catalogue order */
     spaceIndex: SpaceEntry[];
     /** the comparisons whose scripts have loaded (web/gen/compare-torus.js: torus) */

@@ -11,8 +11,10 @@ module Manifold.Body
   , square
   , regularPolygon
   , polygonOutline
-  , shapeCode
-  , shapeCorners
+  , box
+  , capsule
+  , shapeArgs
+  , shapeSize
   , codeOutline
   , customShape
   , shapeFromKind
@@ -47,6 +49,7 @@ import Linear.Vector ((*^), (^+^))
 import System.IO.Unsafe (unsafePerformIO)
 
 import Manifold.Field
+import Manifold.Hull
 import Manifold.Metric
 import Manifold.Space (ShapeKind (..))
 import Manifold.Stage.Imp
@@ -102,28 +105,39 @@ polygonOutline n theta =
       within = shifted - sector * floorF (shifted / sector)
   in cosF half / cosF (within - half)
 
--- | The code of a built-in shape, as the engine's arrays and the page use
--- it: 0 for a circle, @n >= 3@ for a regular @n@-gon (4, the square).
+-- | A built-in shape as the engine's body placement and the page take it:
+-- its code (0 a circle, @n >= 3@ a regular @n@-gon, −1 a box, −2 a
+-- capsule: "Manifold.Hull") and its two numbers (a box's half-extents, a
+-- capsule's half length and radius; 0 for the others).
 --
--- >>> map shapeCode [CircleShape, SquareShape, PolygonShape 5]
--- [0,4,5]
-shapeCode :: ShapeKind -> Int
-shapeCode CircleShape = 0
-shapeCode SquareShape = 4
-shapeCode (PolygonShape n) = n
+-- >>> map shapeArgs [CircleShape, SquareShape, PolygonShape 5, BoxShape 2 1]
+-- [(0.0,0.0,0.0),(4.0,0.0,0.0),(5.0,0.0,0.0),(-1.0,2.0,1.0)]
+shapeArgs :: ShapeKind -> (Double, Double, Double)
+shapeArgs CircleShape = (circleCode, 0, 0)
+shapeArgs SquareShape = (4, 0, 0)
+shapeArgs (PolygonShape n) = (fromIntegral n, 0, 0)
+shapeArgs (BoxShape p q) = (boxCode, p, q)
+shapeArgs (CapsuleShape p q) = (capsuleCode, p, q)
 
--- | How many corners the hull of the built-in shape with the given code
--- has ('Manifold.World.Corners'): 1 for a circle (its centre, rounded by
--- its radius), 0 for the others, which collide by their sampled outlines.
+-- | The size a shape's own numbers give it (its circumradius), for the
+-- shapes that have them (boxes and capsules: 'hullSize').
 --
--- >>> map shapeCorners [0, 4, 5 :: Double]
--- [1.0,0.0,0.0]
-shapeCorners :: Field a => a -> a
-shapeCorners code = select (code - 0.5) 0 1
+-- >>> shapeSize (BoxShape 3 4)
+-- Just 5.0
+-- >>> shapeSize CircleShape
+-- Nothing
+shapeSize :: ShapeKind -> Maybe Double
+shapeSize k = case shapeArgs k of
+  (code, p, q) | hullCorners code >= 2 -> Just (hullSize code p q 0)
+  _ -> Nothing
 
--- | The outline of the built-in shape with the given code.
-codeOutline :: Field a => a -> a -> a
-codeOutline code theta = select (code - 0.5) (polygonOutline code theta) 1
+-- | The outline, for size 1, of the built-in shape with the given code and
+-- numbers ('shapeArgs'): a box's or a capsule's over its size.
+codeOutline :: Field a => a -> a -> a -> a -> a
+codeOutline code p q theta =
+  select (code + 0.5)
+    (select (code - 0.5) (polygonOutline code theta) 1)
+    (hullOutline code p q theta / hullSize code p q 1)
 
 -- | The square: the regular 4-gon, a side facing the axis.
 square :: Shape
@@ -139,6 +153,25 @@ shapeFromKind :: ShapeKind -> Shape
 shapeFromKind CircleShape = circle
 shapeFromKind SquareShape = square
 shapeFromKind (PolygonShape n) = regularPolygon n
+shapeFromKind (BoxShape p q) = box p q
+shapeFromKind (CapsuleShape p q) = capsule p q
+
+-- | A box of half-extents @p@ along the body's direction and @q@ across it
+-- (its size is its circumradius, @√(p² + q²)@).
+box :: Double -> Double -> Shape
+box p q = builtIn "box" (BoxShape p q)
+
+-- | A capsule: a segment along the body's direction, @p@ either side of
+-- the centre, rounded by radius @q@ (its size is @p + q@).
+capsule :: Double -> Double -> Shape
+capsule p q = builtIn "capsule" (CapsuleShape p q)
+
+-- | A built-in shape with numbers of its own: its outline is
+-- 'codeOutline''s, as the page's engine makes it.
+builtIn :: String -> ShapeKind -> Shape
+builtIn name k =
+  let (code, p, q) = shapeArgs k
+  in Shape name (Just k) (Outline (codeOutline (constant code) (constant p) (constant q)))
 
 -- Mass -------------------------------------------------------------------
 
@@ -171,15 +204,17 @@ areaOf s size = mass (massProperties s size 1)
 -- | Mass @ρ · ½∫s²dθ@ and moment of inertia @ρ · ¼∫s⁴dθ@ (the polar
 -- integral of r² over the shape), measured in the flat tangent plane as in
 -- the paper: 'massIntegrals', as the engine computes them for a body it
--- adds.
+-- adds; a box's and a capsule's in closed form ('hullMass').
 --
 -- >>> massProperties circle 1 1 -- π and π/2
 -- MassProperties {mass = 3.141592653589793, inertia = 1.5707963267948966}
 massProperties :: Shape -> Double -> Double -> MassProperties
-massProperties s size density = unsafePerformIO $ runNative $ do
-  let Outline outline = shapeOutline s
-  (m, i) <- massIntegrals outline size density
-  pure (MassProperties m i)
+massProperties s size density = case fmap shapeArgs (shapeKind s) of
+  Just (code, p, q) | hullCorners code >= 2 -> uncurry MassProperties (hullMass code p q density)
+  _ -> unsafePerformIO $ runNative $ do
+    let Outline outline = shapeOutline s
+    (m, i) <- massIntegrals outline size density
+    pure (MassProperties m i)
 {-# NOINLINE massProperties #-}
 
 -- | Midpoint-rule samples of the outline for the mass integrals.

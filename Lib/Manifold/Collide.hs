@@ -30,12 +30,14 @@ module Manifold.Collide
   , imageKeyGroup
   ) where
 
+import Control.Monad (forM_)
 import Linear.Metric (dot)
+import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^-^), (^+^), negated)
 
 import Manifold.Body (PolygonParams (..), Sectors, sectors, directionSector, vertexIndex)
-import Manifold.ContactManifold (segmentClosest)
+import Manifold.ContactManifold
 import Manifold.Field
 import Manifold.Joint (listPartners, notJoined)
 import Manifold.Space
@@ -354,10 +356,14 @@ pairContactsVia metric l sec w keyBase x y signs shift = do
   margin <- speculativeMargin w x y
   cornersX <- readSlot w x Corners
   cornersY <- readSlot w y Corners
-  -- two circles: from the distance between their centres
+  -- two circles: from the distance between their centres; two hulls
+  -- (a circle, a box, a capsule): by their manifold in the plane between
+  -- them; any other pair by the sampled outlines
   ifPositive (0.5 - maxF (abs (cornersX - 1)) (abs (cornersY - 1)))
     (circles metric w keyBase x y signs shift margin)
-    (outlines metric l sec w keyBase x y signs shift margin)
+    (ifPositive (minF cornersX cornersY - 0.5)
+      (hulls metric w keyBase x y signs shift margin)
+      (outlines metric l sec w keyBase x y signs shift margin))
 
 -- | The contact of two circles (body @x@ mapped by @p ↦ signs·p + shift@,
 -- and body @y@): one point, midway between their rims on the line between
@@ -397,7 +403,79 @@ circles metric w keyBase x y signs shift margin = do
     ra <- share3 (linear (rb ^-^ shift))
     emitContact metric w x keyBase x (toScalar y) ra (linear m0) rb m0 depth 1 1 linear
 
--- | The contacts of a pair that is not two circles, from their sampled
+-- | The contacts of two hulls (body @x@ mapped by @p ↦ signs·p + shift@,
+-- and body @y@), at most two points, by 'collideHulls' in the tangent
+-- plane midway between the bodies: its origin midway between their
+-- centres, its first axis along the line from x's to y's, its normal the
+-- mean of theirs. Each body's corners, walked onto the surface
+-- ('walkCorners'), are projected onto that plane; an image that mirrors x
+-- reverses its corners' order, which is read backwards so that they stay
+-- counter-clockwise. Each point pushes along the manifold's normal (in
+-- that plane, so that each body's row is the other's mirror, as
+-- 'outlines' pushes); its key is its place in the manifold (the points
+-- come in the order along the reference edge).
+hulls :: Imp m => Metric -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
+{-# INLINE hulls #-}
+hulls metric w keyBase x y signs shift margin = do
+  cx <- read3 (wPos w) x
+  nx <- read3 (wNormal w) x
+  fy <- bodyFrame metric w y
+  let image q = signs * q + shift
+      linear v = signs * v
+      V3 sx sy sz = signs
+  gx <- share3 (image cx)
+  gn <- share3 (linear nx)
+  mid <- share3 (normalizeIn metric (gn ^+^ bfNormal fy))
+  origin <- share3 (0.5 *^ (gx ^+^ bfCentre fy))
+  along <- share3 (tangentProjection metric mid (bfCentre fy ^-^ gx))
+  len <- share (normIn metric along)
+  -- (coincident centres: y's axis will do)
+  u <- share3 (select len <$> (recip (maxF len 1e-300) *^ along) <*> normalizeIn metric (tangentProjection metric mid (bfU fy)))
+  v <- share3 (perpendicular metric mid u)
+  mirrored <- share (sx * sy * sz)
+  let scratch = wProbe w
+      half = fromIntegral (2 * maxHullCorners)
+      -- a body's corners in the plane, then its edges' outward normals
+      project slot body mapPoint reversed = do
+        count <- readSlot w body Corners
+        let base = fromIntegral hullStride * body
+        forLoop 0 (toIndex count) $ \k -> do
+          from <- share (select reversed (count - 1 - toScalar k) (toScalar k))
+          q <- share3 . mapPoint =<< readAt3' (wHull w) (base + hullWorldAt (toIndex from))
+          let d = q ^-^ origin
+          writeArray scratch (slot + 2 * k) (inner metric d u)
+          writeArray scratch (slot + 2 * k + 1) (inner metric d v)
+        forLoop 0 (toIndex count) $ \k -> do
+          k1 <- share (select (toScalar k + 1.5 - count) 0 (toScalar k + 1))
+          ax <- readArray scratch (slot + 2 * k)
+          ay <- readArray scratch (slot + 2 * k + 1)
+          bx <- readArray scratch (slot + 2 * toIndex k1)
+          by <- readArray scratch (slot + 2 * toIndex k1 + 1)
+          ex <- share (bx - ax)
+          ey <- share (by - ay)
+          l <- share (sqrt (ex * ex + ey * ey))
+          writeArray scratch (slot + half + 2 * k) (select l (ey / l) 0)
+          writeArray scratch (slot + half + 2 * k + 1) (select l (negate ex / l) 0)
+        radius <- readArray (wHull w) base
+        pure (Hull count (point slot) (point (slot + half)) radius)
+      point at k = V2 <$> readArray scratch (at + 2 * k) <*> readArray scratch (at + 2 * k + 1)
+  hx <- project 0 x image (negate mirrored)
+  hy <- project (2 * half) y id 0
+  tolerance <- share (0.025 * margin)
+  manifold <- collideHulls margin tolerance hx hy
+  let V2 mx my = cmNormal manifold
+  -- x is pushed away from y
+  push <- share3 (normalizeIn metric (negated (mx *^ u ^+^ my *^ v)))
+  forM_ (zip [0 :: Int ..] [cmFirst manifold, cmSecond manifold]) $ \(k, pt) ->
+    whenPositive (cmCount manifold - fromIntegral k - 0.5) $ do
+      let V2 px py = mpPoint pt
+      rb <- share3 (origin ^+^ px *^ u ^+^ py *^ v)
+      ra <- share3 (linear (rb ^-^ shift))
+      emitContact metric w x (keyBase + fromIntegral k) x (toScalar y) ra (linear push) rb push (negate (mpSeparation pt)) 1 1 linear
+  where
+    readAt3' a o = V3 <$> readArray a o <*> readArray a (o + 1) <*> readArray a (o + 2)
+
+-- | The contacts of a pair that is not two hulls, from their sampled
 -- outlines ('pairContacts').
 outlines :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
          -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()

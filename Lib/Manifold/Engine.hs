@@ -50,6 +50,7 @@ import qualified Data.Vector.Unboxed.Mutable as MV
 import Linear.V3 (V3 (..))
 
 import Manifold.Body
+import Manifold.Hull (outlineCode)
 import Manifold.Compiled (compiledSteps)
 import Manifold.Compiled.Runtime (CompiledStep (..), spaceFingerprint)
 import Manifold.Params
@@ -170,7 +171,8 @@ addBodyFramed w b frame = do
       args = BodyArgs (biSize b) (biDensity b) (if biStatic b then 1 else 0)
                       (biPos b) (biVel b) (biAngle b) (biOmega b) restore axis normal
                       (own (matFriction (biMaterial b))) (own (matRestitution (biMaterial b)))
-                      (maybe 0 (shapeCorners . fromIntegral . shapeCode) (shapeKind (biShape b)))
+                      code p q
+      (code, p, q) = maybe (outlineCode, 0, 0) shapeArgs (shapeKind (biShape b))
   runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) outline args)
   i <- metaValue LastAdded w
   n <- bodyCount w

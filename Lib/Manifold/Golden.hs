@@ -14,6 +14,7 @@ module Manifold.Golden
   ) where
 
 import Control.Monad (replicateM_)
+import Data.Maybe (fromMaybe)
 import Data.Word (Word64)
 import Linear.V3 (V3 (..))
 
@@ -21,7 +22,8 @@ import Manifold.Bench (benchScene, benchSpaces)
 import Manifold.Engine
 import Manifold.Scene
 import Manifold.Space
-import Manifold.Spaces (catalogue, flatKlein, plane, rectangle, sphere)
+import Manifold.Body (shapeSize)
+import Manifold.Spaces (catalogue, flatKlein, plane, projectivePlane, rectangle, sphere)
 import Manifold.StateHash (showHash)
 
 -- | A scene, its name (a file name: @SPACE-default@, @SPACE-N@) and how
@@ -39,7 +41,9 @@ data GoldenRun = GoldenRun
 -- kind of joint, a limit and a motor, across a quotient's flipped edge),
 -- 600 steps; two stacks that fall asleep, one woken by a falling ball
 -- and its joint to the world, 300 steps; and bodies of their own friction
--- and restitution thrown about the rectangle, 400 steps.
+-- and restitution thrown about the rectangle, 400 steps; boxes, capsules
+-- and circles on the plane, the sphere and the projective plane, 500
+-- steps.
 goldenRuns :: [GoldenRun]
 goldenRuns =
   [GoldenRun (spaceName sp ++ "-default") (defaultScene sp) 1000 | sp <- catalogue]
@@ -48,6 +52,8 @@ goldenRuns =
     ++ [ GoldenRun "sphere-chain" sphereChain 600, GoldenRun "flat-klein-joints" flatKleinJoints 600 ]
     ++ [ GoldenRun "plane-sleep-wake" planeSleepWake 300 ]
     ++ [ GoldenRun "rectangle-materials" rectangleMaterials 400 ]
+    ++ [ GoldenRun "plane-shapes" planeShapes 500, GoldenRun "sphere-shapes" sphereShapes 500
+       , GoldenRun "projective-plane-shapes" projectivePlaneShapes 500 ]
 
 -- | A joint of a kind between bodies @a@ and @b@ (−1: the world) at
 -- anchors @p@ and @q@, its settings left to the defaults.
@@ -111,6 +117,60 @@ rectangleMaterials =
                   , Material (Just 0.05) (Just 0), Material (Just 1.5) (Just 1), Material Nothing Nothing, Material (Just 0.4) (Just 0.3) ]
       bodies = [ body (if even k then SquareShape else CircleShape) k m | (k, m) <- zip [0 :: Int ..] materials ]
   in Scene rectangle defaultParams { pFriction = 0.3, pRestitution = 0.2 } bodies [] Nothing
+
+-- | A body of a shape at a point, at rest, of the scene's material.
+placed :: ShapeKind -> Double -> Bool -> V3 Double -> Double -> BodySpec
+placed k size static p angle =
+  BodySpec k (fromMaybe size (shapeSize k)) 1 static p (V3 0 0 0) angle 0 Nothing [] Nothing 0 sceneMaterial
+
+-- | Boxes, capsules and circles dropped onto a static box on the plane
+-- (gravity along −z): a plank across two boxes, a tilted box onto a box,
+-- a capsule, a card and circles.
+planeShapes :: Scene
+planeShapes =
+  let bodies =
+        [ placed (BoxShape 1 0.05) 0 True (V3 0 0 (-0.05)) 0
+        , placed (BoxShape 0.05 0.05) 0 False (V3 (-0.2) 0 0.06) 0
+        , placed (BoxShape 0.05 0.05) 0 False (V3 0.2 0 0.06) 0
+        , placed (BoxShape 0.3 0.02) 0 False (V3 0.01 0 0.2) 0.05
+        , placed (BoxShape 0.04 0.03) 0 False (V3 0.05 0 0.35) 0.4
+        , placed (CapsuleShape 0.06 0.03) 0 False (V3 (-0.5) 0 0.15) 1
+        , placed (BoxShape 0.1 0.0005) 0 False (V3 0.5 0 0.1) (-0.1)
+        , placed CircleShape 0.04 False (V3 (-0.1) 0 0.5) 0
+        , placed SquareShape 0.05 False (V3 0.6 0 0.3) 0.2 ]
+  in Scene plane defaultParams bodies [] Nothing
+
+-- | Boxes and capsules sliding down the sphere onto a static box at its
+-- south pole, among circles: the corners walked along the sphere's
+-- geodesics.
+sphereShapes :: Scene
+sphereShapes =
+  let at a b = let r = sqrt (a * a + b * b) in if r == 0 then V3 0 (-1) 0 else V3 (sin r * a / r) (-(cos r)) (sin r * b / r)
+      bodies =
+        [ placed (BoxShape 0.25 0.08) 0 True (at 0 0) 0
+        , placed (BoxShape 0.06 0.04) 0 False (at 0.3 0.05) 0.3
+        , placed (BoxShape 0.05 0.05) 0 False (at (-0.3) 0.1) 0
+        , placed (CapsuleShape 0.08 0.03) 0 False (at 0 0.35) 0.7
+        , placed (CapsuleShape 0.05 0.04) 0 False (at 0.1 (-0.4)) 0
+        , placed (BoxShape 0.12 0.02) 0 False (at (-0.2) (-0.3)) 1
+        , placed CircleShape 0.05 False (at 0.45 (-0.1)) 0
+        , placed CircleShape 0.04 False (at (-0.45) 0.3) 0 ]
+  in Scene sphere defaultParams bodies [] Nothing
+
+-- | Boxes and capsules on the projective plane, near the equator, where
+-- they meet each other's images (mirrored: their corners in reverse
+-- order), falling to the pole.
+projectivePlaneShapes :: Scene
+projectivePlaneShapes =
+  let at a = V3 (cos a) 0.15 (sin a)
+      bodies =
+        [ placed (BoxShape 0.08 0.05) 0 False (at 0) 0
+        , placed (BoxShape 0.06 0.06) 0 False (at (pi - 0.1)) 0.5
+        , placed (CapsuleShape 0.07 0.04) 0 False (at 1.5) 0
+        , placed (CapsuleShape 0.05 0.05) 0 False (at (1.5 + pi - 0.12)) 1
+        , placed (BoxShape 0.1 0.03) 0 False (at 3.9) 0.2
+        , placed CircleShape 0.06 False (at 0.7) 0 ]
+  in Scene projectivePlane defaultParams bodies [] Nothing
 
 -- | A space's default scene ('spaceScene') with the default parameters.
 defaultScene :: Space -> Scene

@@ -14,8 +14,12 @@ import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^))
 
+import Control.Monad (forM_)
+
 import Manifold.Body (PolygonParams (..), massIntegrals)
+import Manifold.ContactManifold (maxHullCorners)
 import Manifold.Field
+import Manifold.Hull
 import Manifold.Joint (forgetBodyJoints)
 import Manifold.Metric
 import Manifold.Sleep (wakeMarked, wakeNear)
@@ -38,10 +42,15 @@ data BodyArgs s = BodyArgs
   , baNormal :: V3 s -- ^ the saved normal (restoring only)
   , baFriction :: s -- ^ its friction coefficient, or −1: the scene's
   , baRestitution :: s -- ^ its restitution, or −1: the scene's
-  , baCorners :: s -- ^ 1 for a circle, 0 for a body that collides by its outline ('Corners')
+  , baShape :: s -- ^ the shape's code ("Manifold.Hull": 0 a circle, −1 a box, −2 a capsule, 3 or more a regular polygon, 'outlineCode' one's own)
+  , baShapeP :: s -- ^ the shape's first number (a box's half-extent along its direction, a capsule's half length)
+  , baShapeQ :: s -- ^ its second (a box's half-extent across, a capsule's radius)
   }
 
--- | Add a body with the given outline (for size 1). Sets 'LastAdded' to its
+-- | Add a body with the given outline (for size 1). A box or a capsule
+-- takes its size from its numbers ('hullSize') and its mass in closed
+-- form ('hullMass'); every body with a hull gets its corners
+-- ('hullCorner'). Sets 'LastAdded' to its
 -- index, or to −1 when the world is full or the position does not project
 -- onto the surface, or to −2 when a restored body's frame does not fit the
 -- surface ('frameFits').
@@ -76,26 +85,39 @@ addBodyWith sp l w outline b = do
           axis' <- share3 axis
           write3 (wAxis w) i axis'
           write3 (wNormal w) i n
-          (m, inertia) <- massIntegrals outline (baSize b) (baDensity b)
+          let code = baShape b
+          size <- share (hullSize code (baShapeP b) (baShapeQ b) (baSize b))
+          corners <- share (hullCorners code)
+          (mOutline, iOutline) <- massIntegrals outline size (baDensity b)
+          let (mHull, iHull) = hullMass code (baShapeP b) (baShapeQ b) (baDensity b)
+          m <- share (select (corners - 1.5) mHull mOutline)
+          inertia <- share (select (corners - 1.5) iHull iOutline)
           writeSlot w i Angle (baAngle b)
           writeSlot w i Omega (movable * baOmega b)
           writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
           writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
-          writeSlot w i Size (baSize b)
+          writeSlot w i Size (hullThickness code (baShapeP b) (baShapeQ b) size)
           -- awake (a saved scene's sleeping body is put to sleep after: 'setSleeping')
           writeSlot w i Asleep 0
           writeSlot w i SleepTimer 0
           writeSlot w i Island (-1)
           writeSlot w i BodyFriction (maxF (-1) (baFriction b))
           writeSlot w i BodyRestitution (maxF (-1) (baRestitution b))
-          writeSlot w i Corners (baCorners b)
-          outlineRadiiInto l outline w i (baSize b)
+          writeSlot w i Corners corners
+          let hull = fromIntegral hullStride * i
+          writeArray (wHull w) hull (hullRounding code (baShapeQ b) size)
+          forM_ [0 .. maxHullCorners - 1] $ \k -> do
+            let (a, c) = hullCorner code (baShapeP b) (baShapeQ b) k
+            writeArray (wHull w) (hull + hullLocalAt (fromIntegral k)) a
+            writeArray (wHull w) (hull + hullLocalAt (fromIntegral k) + 1) c
+          outlineRadiiInto l outline w i size
           let nd = polyDirections (polygon l)
           reach <- newRef 0
           forEach (fromIntegral nd) $ \d -> do
             r <- readArray (wRadii w) (fromIntegral nd * i + d)
             modifyRef reach (maxF r)
-          readRef reach >>= writeSlot w i BoundRadius
+          -- (a box's corners between the outline's directions reach farther)
+          readRef reach >>= writeSlot w i BoundRadius . (\r -> select (corners - 1.5) (maxF r size) r)
           writeArray (wBodyPrev w) (2 * i + 1) 0
           writeMeta w BodyCount (count + 1)
           writeMeta w LastAdded count
@@ -164,6 +186,7 @@ removeBody sp l w i = do
     move (wRadii w) (polyDirections (polygon l))
     move (wVerts w) (3 * verticesPerBody l)
     move (wOutline w) (3 * polyDirections (polygon l))
+    move (wHull w) hullStride
     writeMeta w BodyCount (count - 1)
     forgetBodyJoints w i lastI
     forEach (toIndex count) $ \k -> writeArray (wBodyPrev w) (2 * k + 1) 0

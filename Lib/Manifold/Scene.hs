@@ -47,7 +47,7 @@ import Manifold.World (Param (..), contactsPerBody, layout)
 -- A body without @friction@ or @restitution@ takes the scene's.
 data BodySpec = BodySpec
   { bsShape :: ShapeKind
-  , bsSize :: Double -- ^ circumradius, above 0
+  , bsSize :: Double -- ^ circumradius, above 0 (a box's or a capsule's from its numbers: 'shapeSize')
   , bsDensity :: Double -- ^ above 0 (default 1)
   , bsStatic :: Bool -- ^ a fixed body (default false)
   , bsP :: V3 Double -- ^ its centre, projected onto the surface on load
@@ -145,14 +145,33 @@ shape :: Path -> A.Value -> P ShapeKind
 shape path = \case
   A.String "circle" -> pure CircleShape
   A.String "square" -> pure SquareShape
-  A.String s -> problem path ("unknown shape " ++ show (T.unpack s) ++ "; the shapes are \"circle\", \"square\" and {\"polygon\": N}")
+  A.String s -> problem path ("unknown shape " ++ show (T.unpack s) ++ "; the shapes are " ++ shapeList)
   v@(A.Object _) -> do
-    o <- object path ["polygon"] v
-    n <- required path o "polygon" number
-    when (n /= fromIntegral (round n :: Int) || n < 3 || n > 64) $
-      problem (path ++ ".polygon") "must be a whole number of sides from 3 to 64"
-    pure (PolygonShape (round n))
-  _ -> problem path "must be \"circle\", \"square\" or {\"polygon\": N}"
+    o <- object path ["polygon", "box", "capsule"] v
+    case [k | k <- ["polygon", "box", "capsule"], isJust (member o k)] of
+      ["polygon"] -> do
+        n <- required path o "polygon" number
+        when (n /= fromIntegral (round n :: Int) || n < 3 || n > 64) $
+          problem (path ++ ".polygon") "must be a whole number of sides from 3 to 64"
+        pure (PolygonShape (round n))
+      ["box"] -> uncurry BoxShape <$> required path o "box" (pair "two half-extents [hx, hy]")
+      ["capsule"] -> uncurry CapsuleShape <$> required path o "capsule" (pair "[halfLength, radius]")
+      _ -> problem path "must have one key: polygon, box or capsule"
+  _ -> problem path ("must be one of " ++ shapeList)
+  where
+    shapeList = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]} and {\"capsule\": [halfLength, radius]}"
+    pair what at = \case
+      A.Array a | V.length a == 2 -> (,) <$> positive (at ++ "[0]") (a V.! 0) <*> positive (at ++ "[1]") (a V.! 1)
+      _ -> problem at ("must be " ++ what)
+
+-- | A body's size: given, or, for a box or a capsule, its numbers' (given
+-- too, it is a problem).
+bodySize :: Path -> KM.KeyMap A.Value -> ShapeKind -> P Double
+bodySize path o k = case shapeSize k of
+  Nothing -> required path o "size" positive
+  Just s
+    | isJust (member o "size") -> problem (path ++ ".size") "is not given with a box or a capsule (its numbers are its size)"
+    | otherwise -> pure s
 
 body :: Path -> A.Value -> P BodySpec
 body path v = do
@@ -164,9 +183,9 @@ body path v = do
     (Nothing, Nothing) -> pure Nothing
     (Just _, Nothing) -> problem (path ++ ".normal") "must be given with axis (a saved body's frame)"
     (Nothing, Just _) -> problem (path ++ ".axis") "must be given with normal (a saved body's frame)"
-  BodySpec
-    <$> required path o "shape" shape
-    <*> required path o "size" positive
+  kind <- required path o "shape" shape
+  BodySpec kind
+    <$> bodySize path o kind
     <*> optional path o "density" 1 positive
     <*> optional path o "static" False boolean
     <*> required path o "p" vec3
@@ -369,7 +388,9 @@ sceneJSON s = A.object
       ++ [ "local" A..= l | Just l <- [jsLocal j] ]
       ++ [ "impulses" A..= jsImpulses j | not (null (jsImpulses j)) ]
     bodyJSON b = A.object $
-      [ "shape" A..= shapeJSON (bsShape b), "size" A..= bsSize b, "density" A..= bsDensity b ]
+      [ "shape" A..= shapeJSON (bsShape b) ]
+      ++ [ "size" A..= bsSize b | Nothing <- [shapeSize (bsShape b)] ]
+      ++ [ "density" A..= bsDensity b ]
       ++ [ "friction" A..= x | Just x <- [matFriction (bsMaterial b)] ]
       ++ [ "restitution" A..= x | Just x <- [matRestitution (bsMaterial b)] ]
       ++ [ "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
@@ -382,6 +403,8 @@ sceneJSON s = A.object
       CircleShape -> A.String "circle"
       SquareShape -> A.String "square"
       PolygonShape n -> A.object ["polygon" A..= n]
+      BoxShape p q -> A.object ["box" A..= [p, q]]
+      CapsuleShape p q -> A.object ["capsule" A..= [p, q]]
     v3 (V3 x y z) = [x, y, z]
     keyJSON k = let x = paramValue (sceneParams s) (keyParam k) in case keyRange k of
       Switch -> A.Bool (x > 0)

@@ -214,6 +214,8 @@ data ShapeKind
   = CircleShape
   | SquareShape
   | PolygonShape Int -- ^ a regular polygon with this many sides (3 or more)
+  | BoxShape Double Double -- ^ half-extents along the body's direction and across it
+  | CapsuleShape Double Double -- ^ a segment along the body's direction (half its length), rounded by a radius
   deriving (Show, Eq)
 
 -- | A body of the default scene: where it starts (projected onto the surface

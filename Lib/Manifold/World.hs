@@ -1,4 +1,4 @@
-{-# LANGUAGE FlexibleContexts, DeriveTraversable #-}
+{-# LANGUAGE FlexibleContexts, DeriveTraversable, LambdaCase #-}
 -- | The world and its step, written once against the imperative layer: GHC
 -- runs it natively over unboxed vectors, and the staging layer prints it as
 -- the page's JavaScript.
@@ -45,6 +45,10 @@ module Manifold.World
   , maxContacts
   , maxBuckets
   , verticesPerBody
+  , hullStride
+  , hullLocalAt
+  , hullWorldAt
+  , hullScratch
     -- * Access
   , read3
   , write3
@@ -77,6 +81,7 @@ module Manifold.World
   , polygoniseAll
   , polygoniseEvery
   , polygoniseBody
+  , walkCorners
   , hasConstantGradient
   , toList3
   , onSurfaceTolerance
@@ -84,12 +89,13 @@ module Manifold.World
   ) where
 
 import Linear.V3 (V3 (..))
-import Control.Monad (forM_, unless, when, (<=<))
+import Control.Monad (foldM, forM_, unless, when, (<=<))
 import Data.Maybe (isJust)
 import Linear.Metric (quadrance)
 import Linear.Vector ((*^), (^+^), (^-^))
 
 import Manifold.Body (PolygonParams (..), vertexIndex)
+import Manifold.ContactManifold (maxHullCorners)
 import Manifold.Field
 import Manifold.Metric
 import Manifold.Space
@@ -124,6 +130,7 @@ data WorldArrays a = WorldArrays
   , wPartners :: a -- ^ per body: 'partnersPerBody' bodies it is joined to and does not collide with (−1: none), found each step
   , wIslands :: a -- ^ per body: 'IslandField' (the islands' union–find, "Manifold.Sleep")
   , wSeenParams :: a -- ^ the parameters as the last step saw them (a change wakes every body)
+  , wHull :: a -- ^ 'hullStride' per body: its hull's rounding radius, corners in its own frame and corners walked onto the surface (see 'hullLocalAt')
   } deriving (Show, Functor, Foldable, Traversable)
 
 -- | Sizes that depend on the polygon parameters and the capacity.
@@ -167,10 +174,16 @@ layout cap = Layout cap (PolygonParams 24 4) LoopPerStep
 -- scene's ('Friction' and 'Restitution', which the page's sliders set):
 -- "Manifold.Solver" mixes a pair's as Box2D does.
 --
+-- 'Size' is what the body's slop and contact margins scale with: a
+-- circle's radius, a polygon's circumradius, a box's least half-extent, a
+-- capsule's radius ('Manifold.Hull.hullThickness'); 'BoundRadius' is how
+-- far it reaches from its centre.
+--
 -- 'Corners' is how many corners the body's hull has
--- ("Manifold.ContactManifold"): 1 for a circle, a geodesic disc of radius
--- 'Size' whose contacts with another circle come from the distance between
--- the centres; 0 for a body that collides by its sampled outline.
+-- ("Manifold.ContactManifold", 'wHull'): 1 for a circle, a geodesic disc
+-- of radius 'Size' whose contacts with another circle come from the
+-- distance between the centres, 2 for a capsule, 4 for a box; 0 for a
+-- body that collides by its sampled outline.
 data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos | TurnSin
   | MovedX | MovedY | MovedZ | Turned
   | Asleep | SleepTimer | Island
@@ -277,6 +290,25 @@ jointStride = count' JKind
 contactStride = count' CA
 prevStride = count' PrevOwner
 
+-- | A body's numbers in 'wHull': the radius that rounds its hull, then
+-- each corner in the body's own frame (@a@ along its direction, @b@
+-- along normal × direction: "Manifold.Hull"), then each corner where the
+-- last polygon walk put it on the surface ('walkCorners'), up to
+-- 'maxHullCorners' of each.
+hullStride :: Int
+hullStride = 1 + 5 * maxHullCorners
+
+-- | Where corner @k@'s frame coordinates @(a, b)@ and its walked point
+-- @(x, y, z)@ start among a body's 'hullStride' numbers.
+hullLocalAt, hullWorldAt :: Num a => a -> a
+hullLocalAt k = 1 + 2 * k
+hullWorldAt k = fromIntegral (1 + 2 * maxHullCorners) + 3 * k
+
+-- | The narrow phase's scratch for a pair of hulls in their tangent plane
+-- ('wProbe'): each body's corners and edge normals, two numbers each.
+hullScratch :: Int
+hullScratch = 4 * maxHullCorners
+
 -- | The polygon walk's scratch numbers per direction (see 'polygoniseBody').
 walkStride :: Int
 walkStride = 12
@@ -321,7 +353,7 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wPrev = prevStride * maxContacts l
   , wBodyPrev = 2 * c
   , wMouse = count' MActive
-  , wProbe = 2 * polyDirections (polygon l)
+  , wProbe = max (2 * polyDirections (polygon l)) (2 * hullScratch)
   , wNear = c
   , wWalk = walkStride * polyDirections (polygon l)
   , wJoints = jointStride * maxJoints l
@@ -329,12 +361,13 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wPartners = partnersPerBody * c
   , wIslands = islandStride * c
   , wSeenParams = count' Dt
+  , wHull = hullStride * c
   }
 
 arrayNames :: WorldArrays String
 arrayNames = WorldArrays "meta" "params" "pos" "vel" "axis" "normal" "scalars" "radii" "verts"
   "outline" "grid" "cellOf" "items" "contacts" "prev" "bodyPrev" "mouse" "probe" "near" "walk" "joints" "flip" "partners"
-  "islands" "seenParams"
+  "islands" "seenParams" "hull"
 
 read3 :: Imp m => Array m -> Index m -> m (V3 (Scalar m))
 {-# INLINE read3 #-}
@@ -656,7 +689,14 @@ polygoniseAll sp l w = do
   count <- readMeta w BodyCount
   forEach (toIndex count) $ \i -> do
     asleep <- readSlot w i Asleep
-    whenPositive (0.5 - asleep) (polygoniseBody sp l w i)
+    whenPositive (0.5 - asleep) (polygoniseOutline sp l w i)
+  -- then the hulls' corners, in a subroutine of their own (in the phase,
+  -- even a call a body made the trumpet's phase larger than V8 optimises)
+  subroutine "walkAllCorners" [] $ \_ -> do
+    bodies <- readMeta w BodyCount
+    forEach (toIndex bodies) $ \i -> do
+      asleep <- readSlot w i Asleep
+      whenPositive (0.5 - asleep) (cornersOf sp w i)
 
 -- | Walk every body's polygon, sleeping or not (what the page asks for when
 -- the polygon parameters change).
@@ -676,7 +716,11 @@ polygoniseEvery sp l w = do
 -- page draws, are then put on the chords from the centre (they sink below
 -- the surface by about @h²/(8R)@, inside the page's depth tolerance).
 polygoniseBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
-polygoniseBody sp l w i = do
+polygoniseBody sp l w i = polygoniseOutline sp l w i >> walkCorners sp w i
+
+-- | 'polygoniseBody''s outline, without the hull's corners.
+polygoniseOutline :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+polygoniseOutline sp l w i = do
   let f = spaceField sp
       metric = spaceMetric sp
       flat = hasConstantGradient f
@@ -803,3 +847,62 @@ polygoniseBody sp l w i = do
               write3 (wVerts w) (vertexIx d k) o
               when (k == ns) $ write3 (wOutline w) (outlineIx d) o))
     (walk 1 radius (\_ d q -> outlineVertex' d q))
+
+-- | Walk body @i@'s hull corners onto the surface ('hullWorldAt'): each
+-- along the geodesic from the centre in its direction in the body's
+-- frame, as far as its distance from the centre, as the outline is walked
+-- (in 'cornerWalkSteps' steps for a body larger than the 'PolygonStep'
+-- parameter, else in one). A circle's one corner is its centre; a body
+-- without a hull has none. Run after the outline's walk, whose turn of
+-- the body's angle ('TurnCos', 'TurnSin') it takes.
+--
+-- Printed as a JavaScript subroutine of the body's index alone (numbers
+-- passed to it would each be a heap object a call); the step's polygon
+-- phase walks every body's corners in one subroutine of its own.
+walkCorners :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m ()
+{-# INLINE walkCorners #-}
+walkCorners sp w i = subroutine "walkCorners" [toScalar i] $ \case
+  [i'] -> cornersOf sp w (toIndex i')
+  _ -> error "walkCorners: one argument"
+
+-- | 'walkCorners''s walk.
+cornersOf :: Imp m => Space -> WorldArrays (Array m) -> Index m -> m ()
+{-# INLINE cornersOf #-}
+cornersOf sp w i = do
+  corners <- readSlot w i Corners
+  ifPositive (corners - 1.5) (walkHullCorners sp w i corners)
+    (whenPositive (corners - 0.5) $ read3 (wPos w) i >>= writeAt3 (wHull w) (fromIntegral hullStride * i + hullWorldAt 0))
+
+-- | The walk of 'walkCorners' for a body with two corners or more.
+walkHullCorners :: Imp m => Space -> WorldArrays (Array m) -> Index m -> Scalar m -> m ()
+{-# INLINE walkHullCorners #-}
+walkHullCorners sp w i corners = do
+  let base = fromIntegral hullStride * i
+      metric = spaceMetric sp
+      f = spaceField sp
+      walk p r dir steps = foldM (\qd _ -> shareBoth (geodesicStep metric f (r / fromIntegral steps) qd)) (p, dir) [1 .. steps :: Int]
+      shareBoth (q, d) = (,) <$> share3 q <*> share3 d
+  p <- read3 (wPos w) i
+  u <- read3 (wAxis w) i
+  n <- read3 (wNormal w) i
+  v <- share3 (perpendicular metric n u)
+  c0 <- readSlot w i TurnCos
+  s0 <- readSlot w i TurnSin
+  hmax <- readParam w PolygonStep
+  rmax <- readSlot w i BoundRadius
+  fine <- share (select hmax (rmax - hmax) 1)
+  -- the body's direction, and normal × direction
+  d1 <- share3 (c0 *^ u ^+^ s0 *^ v)
+  d2 <- share3 (c0 *^ v ^-^ s0 *^ u)
+  forLoop 0 (toIndex corners) $ \k -> do
+    a <- readArray (wHull w) (base + hullLocalAt k)
+    b <- readArray (wHull w) (base + hullLocalAt k + 1)
+    r <- share (sqrt (a * a + b * b))
+    dir <- share3 ((a / r) *^ d1 ^+^ (b / r) *^ d2)
+    let put (q, _) = writeAt3 (wHull w) (base + hullWorldAt k) =<< share3 (select (finiteness (toList3 q)) <$> q <*> p)
+    ifPositive fine (walk p r dir cornerWalkSteps >>= put) (walk p r dir 1 >>= put)
+
+-- | How many geodesic steps walk a large body's corners (as many as its
+-- outline's and its anchors').
+cornerWalkSteps :: Int
+cornerWalkSteps = 4

@@ -17,8 +17,14 @@ var ManifoldWebInspector = (function (W) {
     version: -1,          // world.version when last shown
   };
 
-  /** @param {Manifold.Shape} s */
-  function shapeName(s) { return typeof s === "string" ? s : s.polygon + "-gon"; }
+  // a shape and its size (a box's and a capsule's: its numbers)
+  /** @param {Manifold.Shape} s @param {number} size */
+  function shapeName(s, size) {
+    if (typeof s === "string") return s + " " + fixed(size);
+    if ("polygon" in s) return s.polygon + "-gon " + fixed(size);
+    if ("box" in s) return "box " + s.box.map(fixed).join(" by ");
+    return "capsule " + s.capsule.map(fixed).join(" by ");
+  }
 
   // What the inspector says of body i, or null when there is none.
   /** @param {number} i */
@@ -26,7 +32,8 @@ var ManifoldWebInspector = (function (W) {
     const w = state.world;
     if (!w || i < 0 || i >= w.count()) return null;
     const m = w.measureBody(i), info = w.info[i], E = w.engine;
-    const size = w.a.scalars[i * w.stride() + E.slots.size], omega = w.a.scalars[i * w.stride() + E.slots.omega];
+    // (how far it reaches: a box's or a capsule's from its numbers)
+    const size = MW.world.reachOf(info.shape, w.a.scalars[i * w.stride() + E.slots.size]), omega = w.a.scalars[i * w.stride() + E.slots.omega];
     const asleep = w.a.scalars[i * w.stride() + E.slots.asleep] > 0;
     return Object.assign({ index: i, shape: info.shape, size: size, static: info.static, asleep: asleep, speed: m.speed, omega: omega, energy: m.energy, contacts: m.contacts },
       w.material(i));
@@ -61,7 +68,7 @@ var ManifoldWebInspector = (function (W) {
     box.hidden = d === null;
     if (!d || (state.world && inspector.version === state.world.version)) return;
     inspector.version = state.world.version;
-    box.textContent = "body " + d.index + " · " + shapeName(d.shape) + " " + fixed(d.size) + (d.static ? " · static" : "") + (d.asleep ? " · asleep" : "") +
+    box.textContent = "body " + d.index + " · " + shapeName(d.shape, d.size) + (d.static ? " · static" : "") + (d.asleep ? " · asleep" : "") +
       (d.friction !== undefined ? " · μ " + fixed(d.friction) : "") + (d.restitution !== undefined ? " · e " + fixed(d.restitution) : "") +
       " · speed " + fixed(d.speed) + " · ω " + fixed(d.omega) + " · energy " + fixed(d.energy) + " · contacts " + d.contacts;
     const stage = /** @type {HTMLElement} */ (box.parentElement).getBoundingClientRect();

@@ -66,7 +66,7 @@ var ManifoldWebScenes = (function (W) {
   // pixels of the view's middle; else a seeded random point of the space.
   function addAtView() {
     const w = P.requireWorld();
-    const body = MW.tools.newBody(), size = body.size;
+    const body = MW.tools.newBody(), size = body.size, placed = MW.tools.newSceneBody();
     const W0 = state.width, H0 = state.height;
     for (let k = 0; k < 60; k++) {
       const x = k === 0 ? W0 / 2 : W0 * (0.2 + 0.6 * Math.random());
@@ -75,7 +75,7 @@ var ManifoldWebScenes = (function (W) {
       if (!q || w.pick(q)) continue;
       const boundary = state.space.boundary;
       if (boundary && boundary(q[0], q[1], q[2]) < size) continue;
-      const i = w.addFree(Object.assign({}, body, { p: q, angle: 2 * Math.PI * Math.random() }));
+      const i = w.addFree(Object.assign({}, placed, { p: q, angle: 2 * Math.PI * Math.random() }));
       if (i < 0) continue;
       bodiesChangedCount();
       return i;

@@ -96,13 +96,21 @@ var ManifoldWebTools = (function (W) {
   function newBody() {
     const t = tools.template;
     /** @type {{ shape: Manifold.Shape, size: number, density: number, static: boolean, friction?: number, restitution?: number }} */
-    const b = { shape: copyShape(t.shape), size: t.size === null ? spaceSize() : t.size, density: t.density, static: t.static };
+    // (a box's and a capsule's size is how far its numbers reach)
+    const b = { shape: MW.world.copyShape(t.shape), size: MW.world.reachOf(t.shape, t.size === null ? spaceSize() : t.size), density: t.density, static: t.static };
     if (t.friction !== null) b.friction = t.friction;
     if (t.restitution !== null) b.restitution = t.restitution;
     return b;
   }
-  /** @param {Manifold.Shape} s @returns {Manifold.Shape} */
-  function copyShape(s) { return typeof s === "string" ? s : { polygon: s.polygon }; }
+  // The new body as a scene gives it: a box or a capsule without a size
+  // (its numbers are its size).
+  /** @returns {{ shape: Manifold.Shape, size?: number, density: number, static: boolean, friction?: number, restitution?: number }} */
+  function newSceneBody() {
+    /** @type {{ shape: Manifold.Shape, size?: number, density: number, static: boolean, friction?: number, restitution?: number }} */
+    const b = newBody();
+    if (MW.world.sizedByShape(b.shape)) delete b.size;
+    return b;
+  }
 
   // Changes the template; throws naming the field of a bad value (and changes nothing then).
   /** @param {Partial<NewBody>} o */
@@ -112,11 +120,12 @@ var ManifoldWebTools = (function (W) {
     for (const k of Object.keys(o)) {
       const v = /** @type {Record<string, unknown>} */ (o)[k];
       if (k === "shape") {
-        if (v === "circle" || v === "square") next.shape = v;
-        else if (v && typeof v === "object" && Number.isInteger(/** @type {{ polygon: number }} */ (v).polygon) &&
-          /** @type {{ polygon: number }} */ (v).polygon >= 3 && /** @type {{ polygon: number }} */ (v).polygon <= 64) {
-          next.shape = { polygon: /** @type {{ polygon: number }} */ (v).polygon };
-        } else throw new RangeError("newBody.shape must be \"circle\", \"square\" or {polygon: 3 … 64}");
+        // a scene's shapes, as a scene's reader takes them
+        try {
+          next.shape = MW.world.shape("newBody.shape", v);
+        } catch (e) {
+          throw new RangeError(/** @type {Error} */ (e).message, { cause: e });
+        }
       } else if (k === "size") {
         if (v !== null && !(typeof v === "number" && isFinite(v) && v > 0)) throw new RangeError("newBody.size must be a positive number (or null: the space's own)");
         next.size = /** @type {number | null} */ (v);
@@ -222,7 +231,7 @@ var ManifoldWebTools = (function (W) {
     const scratch = new MW.world.World(w.name, w.space);
     scratch.a.params.set(w.a.params);
     try {
-      scratch.add(Object.assign(newBody(), { static: false, p: p, v: v }));
+      scratch.add(Object.assign(newSceneBody(), { static: false, p: p, v: v }));
     } catch (err) {
       return null;
     }
@@ -340,7 +349,7 @@ var ManifoldWebTools = (function (W) {
   /** @param {Manifold.Vec3} p @param {Manifold.Vec3} v */
   function launch(p, v) {
     const w = P.requireWorld();
-    const i = w.addFree(Object.assign(newBody(), { p: p, v: v }));
+    const i = w.addFree(Object.assign(newSceneBody(), { p: p, v: v }));
     if (i < 0) state.ui.showNotice("No room there for a body of size " + newBody().size + ".");
     else MW.hash.updateHash();
     return i;
@@ -513,6 +522,7 @@ var ManifoldWebTools = (function (W) {
     tools: tools,
     spaceSize: spaceSize,
     newBody: newBody,
+    newSceneBody: newSceneBody,
     setNewBody: setNewBody,
     spaceChanged: spaceChanged,
     setTool: setTool,

@@ -34,6 +34,7 @@ var ManifoldWebWorld = (function (W) {
   // a scene body's keys, and those that give it its own material (generated: Manifold.Params.bodyKeys)
   function bodyKeys() { return W.Manifold.bodyKeys; }
   function materialKeys() { return W.Manifold.materialKeys; }
+  function shapes() { return W.Manifold.shapes; }
   // what a scene body without these keys has (Manifold.Scene's defaults)
   const BODY_DEFAULTS = { density: 1, static: false };
 
@@ -87,20 +88,36 @@ var ManifoldWebWorld = (function (W) {
     if (!Array.isArray(v) || v.length !== 3) problem(path, "must be an array of three numbers [x, y, z]");
     return /** @type {Manifold.Vec3} */ (v.map(function (x, k) { return number(path + "[" + k + "]", x); }));
   }
+  const SHAPE_LIST = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]} and {\"capsule\": [halfLength, radius]}";
   /** @param {string} path @param {unknown} v @returns {Manifold.Shape} */
   function shape(path, v) {
     if (v === "circle" || v === "square") return v;
-    if (typeof v === "string") {
-      problem(path, "unknown shape " + JSON.stringify(v) + "; the shapes are \"circle\", \"square\" and {\"polygon\": N}");
-    }
+    if (typeof v === "string") problem(path, "unknown shape " + JSON.stringify(v) + "; the shapes are " + SHAPE_LIST);
     if (isObject(v)) {
-      object(path, ["polygon"], v);
-      if (!("polygon" in v)) problem(path + ".polygon", "is missing");
-      const n = number(path + ".polygon", v.polygon);
-      if (n !== Math.round(n) || n < 3 || n > 64) problem(path + ".polygon", "must be a whole number of sides from 3 to 64");
-      return { polygon: n };
+      object(path, ["polygon", "box", "capsule"], v);
+      const kinds = ["polygon", "box", "capsule"].filter(function (k) { return k in v; });
+      if (kinds.length !== 1) problem(path, "must have one key: polygon, box or capsule");
+      if (kinds[0] === "polygon") {
+        const n = number(path + ".polygon", v.polygon);
+        if (n !== Math.round(n) || n < 3 || n > 64) problem(path + ".polygon", "must be a whole number of sides from 3 to 64");
+        return { polygon: n };
+      }
+      const at = path + "." + kinds[0], x = v[kinds[0]];
+      if (!Array.isArray(x) || x.length !== 2) problem(at, "must be " + (kinds[0] === "box" ? "two half-extents [hx, hy]" : "[halfLength, radius]"));
+      /** @type {[number, number]} */
+      const pq = [positive(at + "[0]", x[0]), positive(at + "[1]", x[1])];
+      return kinds[0] === "box" ? { box: pq } : { capsule: pq };
     }
-    return problem(path, "must be \"circle\", \"square\" or {\"polygon\": N}");
+    return problem(path, "must be one of " + SHAPE_LIST);
+  }
+  // A body's size: given, or a box's or a capsule's from its numbers (then
+  // it is not given), as Manifold.Scene takes it.
+  /** @param {string} path @param {Record<string, unknown>} o @param {Manifold.Shape} s */
+  function bodySize(path, o, s) {
+    const a = shapeArgs(s);
+    if (a[0] !== shapes().codes.box && a[0] !== shapes().codes.capsule) return required(path, o, "size", positive);
+    if ("size" in o) problem(path + ".size", "is not given with a box or a capsule (its numbers are its size)");
+    return shapes().size(a[0], a[1], a[2], 0);
   }
   // The bodies' awake and island keys (after every body, as Manifold.Scene
   // checks them): a sleeping body's island is named by the index of a
@@ -170,10 +187,11 @@ var ManifoldWebWorld = (function (W) {
     const axis = optional(path, o, "axis", null, vec3), normal = optional(path, o, "normal", null, vec3);
     if (axis && !normal) problem(path + ".normal", "must be given with axis (a saved body's frame)");
     if (normal && !axis) problem(path + ".axis", "must be given with normal (a saved body's frame)");
+    const kind = required(path, o, "shape", shape);
     /** @type {ParsedBody} */
     const b = {
-      shape: required(path, o, "shape", shape),
-      size: required(path, o, "size", positive),
+      shape: kind,
+      size: bodySize(path, o, kind),
       density: optional(path, o, "density", BODY_DEFAULTS.density, positive),
       static: optional(path, o, "static", BODY_DEFAULTS.static, boolean),
       p: required(path, o, "p", vec3),
@@ -372,12 +390,38 @@ var ManifoldWebWorld = (function (W) {
     return scene;
   }
 
-  /** @param {Manifold.Shape} s */
-  function shapeCode(s) {
-    return s === "circle" ? 0 : s === "square" ? 4 : s.polygon;
+  // A shape as addBody takes it: its code and its two numbers (generated:
+  // Manifold.shapes, from Lib/Manifold/Hull.hs).
+  /** @param {Manifold.Shape} s @returns {[number, number, number]} */
+  function shapeArgs(s) {
+    const c = shapes().codes;
+    if (s === "circle") return [c.circle, 0, 0];
+    if (s === "square") return [4, 0, 0];
+    if ("polygon" in s) return [s.polygon, 0, 0];
+    if ("box" in s) return [c.box, s.box[0], s.box[1]];
+    return [c.capsule, s.capsule[0], s.capsule[1]];
   }
   /** @param {Manifold.Shape} s @returns {Manifold.Shape} */
-  function copyShape(s) { return typeof s === "string" ? s : { polygon: s.polygon }; }
+  function copyShape(s) {
+    if (typeof s === "string") return s;
+    if ("polygon" in s) return { polygon: s.polygon };
+    if ("box" in s) return { box: [s.box[0], s.box[1]] };
+    return { capsule: [s.capsule[0], s.capsule[1]] };
+  }
+  // Whether a shape's numbers are its size (a box, a capsule: a scene gives no size with them).
+  /** @param {Manifold.Shape} s */
+  function sizedByShape(s) { return typeof s === "object" && s !== null && !("polygon" in s); }
+  // A scene body of a shape and size (a box's or a capsule's without the
+  // size: its numbers are its size).
+  /** @param {Manifold.Shape} shape @param {number} size @returns {{ shape: Manifold.Shape, size?: number }} */
+  function bodyOfShape(shape, size) { return sizedByShape(shape) ? { shape: copyShape(shape) } : { shape: copyShape(shape), size: size }; }
+  // How far a body of a shape reaches from its centre: its size, or a box's
+  // or a capsule's numbers'.
+  /** @param {Manifold.Shape} shape @param {number} size */
+  function reachOf(shape, size) {
+    const a = shapeArgs(shape);
+    return shapes().size(a[0], a[1], a[2], size);
+  }
 
   // Deterministic pseudo-random numbers in [0, 1) (for scene filling).
   /** @param {number} seed */
@@ -494,10 +538,10 @@ var ManifoldWebWorld = (function (W) {
       }
       // a saved body (axis and normal given) is restored as saved
       const axis = b.axis || [0, 0, 0], normal = b.normal || [0, 0, 0];
-      E.addBody.apply(null, this.args([shapeCode(b.shape), b.size, b.density, b.static ? 1 : 0,
+      E.addBody.apply(null, this.args(shapeArgs(b.shape).concat([b.size, b.density, b.static ? 1 : 0,
         b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega, b.axis ? 1 : 0,
         axis[0], axis[1], axis[2], normal[0], normal[1], normal[2],
-        b.friction === undefined ? -1 : b.friction, b.restitution === undefined ? -1 : b.restitution]));
+        b.friction === undefined ? -1 : b.friction, b.restitution === undefined ? -1 : b.restitution])));
       const i = this.meta("lastAdded");
       if (i === -2) throw new Error(E.frameMisfit);
       const a = this.a;
@@ -627,6 +671,8 @@ var ManifoldWebWorld = (function (W) {
           axis: v3(a.axis, i),
           normal: v3(a.normal, i),
         });
+        // (a box's or a capsule's size is its numbers': a scene does not give it)
+        if (sizedByShape(info.shape)) delete b.size;
         const remembered = this.impulses(i);
         if (remembered.length) b.impulses = remembered;
         if (a.scalars[i * k + S.asleep] > 0) {
@@ -834,7 +880,10 @@ var ManifoldWebWorld = (function (W) {
       try {
         scene.bodies.forEach(/** @this {World} */ function (b, k) {
           try {
-            this.place(parseBody(b, "body"));
+            // (a parsed box or capsule carries the size its numbers give it)
+            const given = sizedByShape(b.shape) ? Object.assign({}, b) : b;
+            if (given !== b) Reflect.deleteProperty(given, "size");
+            this.place(parseBody(given, "body"));
           } catch (e) {
             throw new SceneError("$.bodies[" + k + "]" + ("axis" in b ? ".axis: " : ".p: ") + e.message);
           }
@@ -891,7 +940,9 @@ var ManifoldWebWorld = (function (W) {
       const rnd = random(20170 + this.count());
       const bounds = this.space.bounds || 1;
       const boundary = this.space.boundary;
-      const shapes = base.length ? base : [{ shape: "circle", size: 0.15 }, { shape: "square", size: 0.15 }];
+      /** @type {{ shape: Manifold.Shape, size: number }[]} */
+      const defaults = [{ shape: "circle", size: 0.15 }, { shape: "square", size: 0.15 }];
+      const shapes = base.length ? base : defaults;
       const most = Math.min(n, this.maxBodies());
       let failed = 0;
       while (this.count() < most && failed < FILL_GIVE_UP) {
@@ -900,13 +951,13 @@ var ManifoldWebWorld = (function (W) {
         const p = /** @type {Manifold.Vec3} */ ([0, 1, 2].map(function () { return (2 * rnd() - 1) * bounds * 0.9; }));
         let i;
         try {
-          i = this.add({ shape: tmpl.shape, size: tmpl.size, p: p, angle: 2 * Math.PI * rnd() });
+          i = this.add(Object.assign(bodyOfShape(tmpl.shape, tmpl.size), { p: p, angle: 2 * Math.PI * rnd() }));
         } catch (e) {
           continue;
         }
         /** @type {Manifold.Vec3} */
         const q = [this.a.pos[3 * i], this.a.pos[3 * i + 1], this.a.pos[3 * i + 2]];
-        const free = (!boundary || boundary(q[0], q[1], q[2]) > tmpl.size) && !this.overlaps(i);
+        const free = (!boundary || boundary(q[0], q[1], q[2]) > reachOf(tmpl.shape, tmpl.size)) && !this.overlaps(i);
         if (free) {
           failed = 0;
         } else {
@@ -1049,6 +1100,11 @@ var ManifoldWebWorld = (function (W) {
     parseBody: parseBody,
     parseJoint: parseJoint,
     keyProblem: keyProblem,
+    shape: shape,
+    copyShape: copyShape,
+    sizedByShape: sizedByShape,
+    bodyOfShape: bodyOfShape,
+    reachOf: reachOf,
     PALETTE: PALETTE,
     STATIC_COLOUR: STATIC_COLOUR,
   };

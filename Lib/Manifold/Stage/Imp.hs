@@ -237,9 +237,10 @@ data StageState = StageState
 -- five per contact row were most of what the native step allocated.
 -- A procedure numbers its locals from 0 and a subroutine from
 -- @subroutineLocals@ (32), so the locals of a procedure and of the subroutine it
--- calls are different slots; a subroutine calls no other.
+-- calls are different slots; a subroutine calls no other. (The pair
+-- narrow phase, which holds every pair kind's, needs the most: 45.)
 localSlots :: Int
-localSlots = 64
+localSlots = 96
 
 subroutineLocals :: Int
 subroutineLocals = 32

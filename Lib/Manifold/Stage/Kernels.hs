@@ -16,12 +16,13 @@ module Manifold.Stage.Kernels
   ) where
 
 import Data.Char (ord)
-import Data.List (intercalate)
+import Data.List (dropWhileEnd, intercalate)
 import Linear.V3 (V3 (..))
 import Numeric (showHex)
 
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
+import Manifold.Hull (boxCode, capsuleCode, circleCode, hullSize)
 import Manifold.Metric (gaussianCurvatureIn, metricName)
 import Manifold.Params (bodyKeys, keyName, materialKeys)
 import Manifold.Space
@@ -142,6 +143,9 @@ spaceIndexScript spaces = unlines $
   , "// the keys of a scene's body, in order, and those that give the body its own material (taking the scene key's values)"
   , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
   , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
+  , "// addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Lib/Manifold/Hull.hs)"
+  , "globalThis.Manifold.shapes = { codes: { circle: " ++ code circleCode ++ ", box: " ++ code boxCode ++ ", capsule: " ++ code capsuleCode ++ " }, size: "
+      ++ dropWhileEnd (== '\n') (printFunction JavaScript "hullSize" (FnType ["code", "p", "q", "size"] False) [hullSize (sym "code") (sym "p") (sym "q") (sym "size")]) ++ " };"
   , "globalThis.Manifold.spaceIndex = ["
   ] ++
   [ "  { name: " ++ jsString (spaceName s) ++ ", description: " ++ jsString (spaceDescription s)
@@ -151,6 +155,7 @@ spaceIndexScript spaces = unlines $
     ++ ", script: " ++ jsString (spaceScriptFile s) ++ " },"
   | s <- spaces ] ++
   [ "];" ]
+  where code c = show (round (c :: Double) :: Int)
 
 num :: Double -> String
 num = renderLiteral JavaScript
@@ -205,6 +210,8 @@ shapeJs :: ShapeKind -> String
 shapeJs CircleShape = jsString "circle"
 shapeJs SquareShape = jsString "square"
 shapeJs (PolygonShape n) = "{ polygon: " ++ show n ++ " }"
+shapeJs (BoxShape p q) = "{ box: [" ++ num p ++ ", " ++ num q ++ "] }"
+shapeJs (CapsuleShape p q) = "{ capsule: [" ++ num p ++ ", " ++ num q ++ "] }"
 
 vecJs :: V3 Double -> String
 vecJs (V3 a b c) = "[" ++ intercalate ", " (map num [a, b, c]) ++ "]"

@@ -1,0 +1,180 @@
+{-# LANGUAGE OverloadedStrings #-}
+-- | Bodies with exact hulls ("Manifold.Hull"): a box's and a capsule's
+-- outline, mass and moment of inertia against closed forms and fine
+-- integrals; their corners walked onto the sphere at their geodesic
+-- distances and angles; and in the engine, a box resting on a box by two
+-- points at its corners, a thin card lying on a box, and boxes, capsules
+-- and circles coming to rest on a slab at their heights.
+module HullSpec (spec) where
+
+import Control.Monad (forM, forM_, replicateM_)
+import qualified Data.ByteString.Lazy.Char8 as BL
+import qualified Data.Vector.Unboxed.Mutable as MV
+import Linear.Metric (dot, norm)
+import Linear.V3 (V3 (..), cross)
+import Linear.Vector ((^-^))
+import Test.Hspec
+
+import Manifold
+import Manifold.Engine
+import Manifold.Hull
+import Manifold.Scene
+import Manifold.World
+
+spec :: Spec
+spec = describe "Manifold.Hull" $ do
+  closedForms
+  cornersOnTheSphere
+  resting
+
+-- | @∫₀^{2π} g@ by the midpoint rule in @n@ pieces.
+integral :: Int -> (Double -> Double) -> Double
+integral n g = let h = 2 * pi / fromIntegral n in h * sum [g ((fromIntegral k + 0.5) * h) | k <- [0 .. n - 1]]
+
+closeRel :: Double -> Double -> Double -> Bool
+closeRel tol expected x = abs (x - expected) <= tol * abs expected
+
+closedForms :: Spec
+closedForms = describe "shapes" $ do
+  it "a box's outline reaches its corners and the middles of its sides, and lies on its sides between" $ do
+    let (p, q) = (0.3, 0.1)
+    boxOutline p q (atan2 q p) `shouldSatisfy` closeRel 1e-12 (sqrt (p * p + q * q))
+    boxOutline p q 0 `shouldSatisfy` closeRel 1e-12 p
+    boxOutline p q (pi / 2) `shouldSatisfy` closeRel 1e-12 q
+    forM_ [0.05, 0.37 .. 6.2] $ \t -> do
+      let r = boxOutline p q t
+          (x, y) = (abs (r * cos t), abs (r * sin t))
+      -- on the boundary: inside both slabs, on one of them
+      max (x / p) (y / q) `shouldSatisfy` closeRel 1e-12 1
+  it "a capsule's outline lies at its radius from its segment, in every direction" $ do
+    let (l, r) = (0.2, 0.05)
+        fromSegment x y = let cx = max (-l) (min l x) in sqrt ((x - cx) ^ (2 :: Int) + y * y)
+    forM_ [0, 0.05 .. 6.3] $ \t -> do
+      let s = capsuleOutline l r t
+      fromSegment (s * cos t) (s * sin t) `shouldSatisfy` closeRel 1e-12 r
+  it "a box's and a capsule's mass and moment of inertia: closed forms (1e-9), and the polar integrals of their outlines (1e-6)" $ do
+    let density = 1.7
+        (p, q) = (0.3, 0.1)
+        (bm, bi) = hullMass boxCode p q density :: (Double, Double)
+    bm `shouldSatisfy` closeRel 1e-9 (density * 2 * p * 2 * q)
+    bi `shouldSatisfy` closeRel 1e-9 (density * 2 * p * 2 * q * ((2 * p) ^ (2 :: Int) + (2 * q) ^ (2 :: Int)) / 12)
+    -- a capsule: the rectangle, and the disc of its two caps, whose halves
+    -- sit at ±L (each half's moment about the centre: by the polar
+    -- integral of a half disc about its own centre, carried along)
+    let (l, r) = (0.2, 0.05)
+        (cm, ci) = hullMass capsuleCode l r density :: (Double, Double)
+        halfDiscAbout d = density * (pi * r ^ (4 :: Int) / 4 + pi * r * r / 2 * d * d + 2 * d * (2 * r ^ (3 :: Int) / 3))
+    cm `shouldSatisfy` closeRel 1e-9 (density * (4 * l * r + pi * r * r))
+    ci `shouldSatisfy` closeRel 1e-9 (density * 4 * l * r * (l * l + r * r) / 3 + 2 * halfDiscAbout l)
+    -- against the outlines: ρ·½∫s², ρ·¼∫s⁴
+    let polar outline = (density * 0.5 * integral 400000 (\t -> outline t ^ (2 :: Int)), density * 0.25 * integral 400000 (\t -> outline t ^ (4 :: Int)))
+        (bm', bi') = polar (boxOutline p q)
+        (cm', ci') = polar (capsuleOutline l r)
+    [bm', bi', cm', ci'] `shouldSatisfy` and . zipWith (closeRel 1e-6) [bm, bi, cm, ci]
+  it "names a box's and a capsule's numbers their size, and gives the mass of a body added as the closed form" $ do
+    shapeSize (BoxShape 0.3 0.4) `shouldBe` Just 0.5
+    shapeSize (CapsuleShape 0.2 0.05) `shouldBe` Just 0.25
+    massProperties (box 0.3 0.1) 0 2 `shouldBe` uncurry MassProperties (hullMass boxCode 0.3 0.1 2)
+    w <- newWorld plane (layout 2)
+    Right i <- addBody w (BodyInit (capsule 0.2 0.05) 0.25 2 False (V3 0 0 0) (V3 0 0 0) 0 0 sceneMaterial)
+    invMass <- MV.read (wScalars (nwArrays w)) (scalarSlots * i + fromEnum InvMass)
+    recip invMass `shouldSatisfy` closeRel 1e-12 (fst (hullMass capsuleCode 0.2 0.05 2))
+
+-- | Body @i@'s corner @k@ as the last polygon walk left it.
+corner :: NativeWorld -> Int -> Int -> IO (V3 Double)
+corner w i k = do
+  let at :: Int -> IO Double
+      at o = MV.read (wHull (nwArrays w)) (hullStride * i + hullWorldAt k + o)
+  V3 <$> at 0 <*> at 1 <*> at 2
+
+cornersOnTheSphere :: Spec
+cornersOnTheSphere = describe "corners" $
+  it "walks a box's corners onto the unit sphere at their geodesic distance from the centre and their angles, as closely as the outline's walk (its steps h: h^2/3)" $ do
+    let (p, q) = (0.4, 0.25)
+    forM_ [(0.05, 0), (0.3, 1.1)] $ \(size, angle) -> do
+      -- large enough that the corners are walked in four steps, and small
+      -- enough for one (the polygon step is 0.05)
+      let (p', q') = (p * size / 0.3, q * size / 0.3)
+      w <- newWorld sphere (layout 1)
+      Right _ <- addBody w (BodyInit (box p' q') 0 1 False (V3 0.3 0.8 0.5) (V3 0 0 0) angle 0 sceneMaterial)
+      st <- readBody w 0
+      let c = bsPos st
+          n = bsNormal st
+          e1 = cos angle `scale` bsAxis st + sin angle `scale` (n `cross` bsAxis st)
+      forM_ (zip [0 ..] [(-p', -q'), (p', -q'), (p', q'), (-p', q')]) $ \(k, (a, b)) -> do
+        v <- corner w 0 k
+        norm v `shouldSatisfy` closeRel 1e-9 1
+        -- the great circle's arc, and the direction it leaves the centre
+        -- in, to within what one step of the walk (RATTLE) misses by: a
+        -- relative h^2/3 (the step lands at atan h for h), one step for a body no larger than the polygon
+        -- step, four for a larger one
+        let r = sqrt (a * a + b * b)
+            h = if size > 0.05 then r / 4 else r
+            t = v ^-^ (c `dot` v) `scale` c
+            heading = atan2 (t `dot` (n `cross` e1)) (t `dot` e1)
+        acos (c `dot` v) `shouldSatisfy` closeRel (h * h / 3) r
+        abs (heading - atan2 b a) `shouldSatisfy` (< h * h / 3)
+  where scale s (V3 x y z) = V3 (s * x) (s * y) (s * z)
+
+-- | A scene from its JSON text, loaded.
+loaded :: BL.ByteString -> IO NativeWorld
+loaded text = either fail pure (parseScene text) >>= loadScene 0 >>= either fail pure
+
+-- | The contact rows of the last step between bodies @a@ and @b@: their
+-- points.
+contactPoints :: NativeWorld -> Int -> Int -> IO [V3 Double]
+contactPoints w a b = do
+  n <- contactCount w
+  rows <- forM [0 .. n - 1] $ \c -> do
+    let field :: ContactField -> IO Double
+        field f = MV.read (wContacts (nwArrays w)) (contactStride * c + fromEnum f)
+    ca <- field CA
+    cb <- field CB
+    point <- V3 <$> field PointX <*> field PointY <*> field PointZ
+    pure [point | (round ca, round cb) `elem` [(a, b), (b, a)]]
+  pure (concat rows)
+
+resting :: Spec
+resting = describe "in the engine" $ do
+  it "rests a box on a box by two points, at the upper box's lower corners (flat: 1e-3 of its size), level and still after 3 s" $ do
+    w <- loaded "{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [0.3, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
+                \ {\"shape\": {\"box\": [0.1, 0.04]}, \"p\": [0.05, 0, 0.045]}]}"
+    replicateM_ 300 (stepNative w)
+    st <- readBody w 1
+    bsAngle st `shouldSatisfy` (\a -> abs a < 1e-6)
+    let V3 x _ z = bsPos st
+    abs (x - 0.05) `shouldSatisfy` (< 1e-4)
+    abs (z - 0.04) `shouldSatisfy` (< 2e-4)
+    norm (bsVel st) `shouldSatisfy` (< 1e-3)
+    -- a step's contacts, found where the box lies
+    w' <- loaded "{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [0.3, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
+                 \ {\"shape\": {\"box\": [0.1, 0.04]}, \"p\": [0.05, 0, 0.04]}]}"
+    stepNative w'
+    points <- contactPoints w' 0 1
+    length points `shouldBe` 2
+    let xs = [px | V3 px _ _ <- points]
+    minimum xs `shouldSatisfy` (\v -> abs (v - (-0.05)) < 1e-3 * 0.1)
+    maximum xs `shouldSatisfy` (\v -> abs (v - 0.15) < 1e-3 * 0.1)
+  -- (of equal mass: a heavy body on a light one sinks into it by the soft
+  -- contact's give, g/omega^2 times the masses' ratio)
+  it "keeps a card 0.001 thick and 0.2 long lying on a box, and a box of its mass resting on the card (200 : 1), each within 1e-4 of its height" $ do
+    w <- loaded "{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [0.3, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
+                \ {\"shape\": {\"box\": [0.1, 0.0005]}, \"density\": 8, \"p\": [0, 0, 0.003], \"angle\": 0.02},\
+                \ {\"shape\": {\"box\": [0.02, 0.02]}, \"p\": [0.04, 0, 0.05]}]}"
+    replicateM_ 400 (stepNative w)
+    card <- readBody w 1
+    top <- readBody w 2
+    let height s = let V3 _ _ z = bsPos s in z
+    height card `shouldSatisfy` (\z -> abs (z - 0.0005) < 1e-4)
+    abs (bsAngle card) `shouldSatisfy` (< 1e-3)
+    height top `shouldSatisfy` (\z -> abs (z - 0.021) < 1e-4)
+    warningCount w `shouldReturn` 0
+  it "brings boxes, capsules and circles at rest on a slab to their heights: half a side, a radius (2e-4)" $ do
+    w <- loaded "{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [1, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
+                \ {\"shape\": {\"box\": [0.06, 0.03]}, \"p\": [-0.5, 0, 0.2], \"angle\": 0.3},\
+                \ {\"shape\": {\"capsule\": [0.06, 0.02]}, \"p\": [0, 0, 0.2], \"angle\": 0.2},\
+                \ {\"shape\": \"circle\", \"size\": 0.05, \"p\": [0.5, 0, 0.2]}]}"
+    replicateM_ 600 (stepNative w)
+    let height s = let V3 _ _ z = bsPos s in z
+    heights <- forM [1, 2, 3] (fmap height . readBody w)
+    zipWith (\h z -> abs (h - z) < 2e-4) [0.03, 0.02, 0.05] heights `shouldBe` [True, True, True]
