@@ -411,8 +411,10 @@ async function testApi(check, context, base) {
   await page.click("#add-body");
   await page.selectOption("#body-shape", "square");
   await page.click("#add-body");
-  await page.fill("#polygon-sides", "6");
+  // (the sides show with the polygon chosen)
   await page.selectOption("#body-shape", "polygon");
+  await page.fill("#polygon-sides", "6");
+  await page.dispatchEvent("#polygon-sides", "change");
   await page.click("#add-body");
   const added = await page.evaluate(function () { return window.manifold.bodies().map(function (b) { return b.shape; }); });
   check("Add makes a body of the shape chosen: circle, square, polygon of the sides given",

@@ -102,7 +102,7 @@ async function testStep(check, page) {
 // (3) keys typed into a number field, or with Alt held, are not the page's
 async function testIgnored(check, page) {
   const before = await readState(page);
-  await page.focus("#polygon-sides");
+  await page.focus("#body-density");
   await page.keyboard.press("c");
   await page.keyboard.press("s");
   await page.keyboard.press("r");
@@ -110,8 +110,8 @@ async function testIgnored(check, page) {
   await page.keyboard.press("?");
   await sleep(300);
   const typed = await readState(page);
-  check("c, s, r, Space and ? typed in the polygon sides field do nothing to the page (bodies, steps, clock kept, no overlay)",
-    before.bodies > 0 && typed.focus === "polygon-sides" && typed.bodies === before.bodies && typed.steps === before.steps &&
+  check("c, s, r, Space and ? typed in the density field do nothing to the page (bodies, steps, clock kept, no overlay)",
+    before.bodies > 0 && typed.focus === "body-density" && typed.bodies === before.bodies && typed.steps === before.steps &&
       typed.paused && typed.pressed === "true" && !typed.help,
     JSON.stringify({ bodies: [before.bodies, typed.bodies], steps: [before.steps, typed.steps], paused: typed.paused, help: typed.help }));
   await page.evaluate(function () { document.activeElement.blur(); });

@@ -362,6 +362,54 @@ async function testInspector(check, page) {
     JSON.stringify({ text: shown.text, api: d, hiddenAfter: after }));
 }
 
+// (6b) boxes and capsules: the Body control makes them from the size and the
+// length over width; a click adds one; a scene's box is drawn and collides
+async function testBoxBody(check, page) {
+  await page.evaluate(function () { window.manifold.clear(); window.manifold.pause(); });
+  await page.uncheck("#body-static");
+  await page.selectOption("#body-shape", "box");
+  const shown = await page.evaluate(function () {
+    return { aspect: !document.getElementById("body-aspect").hidden, sides: !document.getElementById("polygon-sides").hidden };
+  });
+  await page.fill("#body-aspect", "3");
+  await page.dispatchEvent("#body-aspect", "change");
+  const chosen = await page.evaluate(function () {
+    const s = /** @type {HTMLInputElement} */ (document.getElementById("body-size"));
+    return { body: window.manifold.newBody(), slider: Number(s.value) };
+  });
+  const box = await page.locator("#view").boundingBox();
+  await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+  const added = await page.evaluate(function () { return window.manifold.bodies(); });
+  const sh = chosen.body.shape, b = added[0];
+  check("the Body control makes a box from the size and its length over width (3), showing that number and not the sides; a click adds it, its size its numbers'",
+    shown.aspect && !shown.sides && sh && sh.box && Math.abs(sh.box[0] / sh.box[1] - 3) < 1e-9 &&
+      Math.abs(Math.hypot(sh.box[0], sh.box[1]) - chosen.slider) < 1e-9 && Math.abs(chosen.body.size - chosen.slider) < 1e-9 &&
+      added.length === 1 && b.shape.box && b.shape.box[0] === sh.box[0] && b.shape.box[1] === sh.box[1] && !("size" in b),
+    JSON.stringify({ shown: shown, chosen: chosen, added: added.map(function (x) { return { shape: x.shape, size: x.size }; }) }));
+  await page.selectOption("#body-shape", "capsule");
+  const capsule = await page.evaluate(function () { return window.manifold.newBody().shape; });
+  check("and a capsule: half its length and its radius from the size and the aspect",
+    capsule && capsule.capsule && Math.abs((capsule.capsule[0] + capsule.capsule[1]) / capsule.capsule[1] - 3) < 1e-9 &&
+      Math.abs(capsule.capsule[0] + capsule.capsule[1] - chosen.slider) < 1e-9, JSON.stringify(capsule));
+  // a plank on two boxes at the sphere's south pole: it stays up
+  const plank = await page.evaluate(function () {
+    const m = window.manifold;
+    const at = function (a, b) { const r = Math.hypot(a, b); return r === 0 ? [0, -1, 0] : [Math.sin(r) * a / r, -Math.cos(r), Math.sin(r) * b / r]; };
+    return m.loadScene({ space: "sphere", bodies: [
+      { shape: { box: [0.3, 0.05] }, static: true, p: at(0, 0) },
+      { shape: { capsule: [0.05, 0.03] }, p: at(0.2, 0.09) },
+      { shape: { box: [0.04, 0.04] }, p: at(-0.2, 0.1) } ] }).then(function () {
+      m.step(200);
+      return m.bodies().map(function (x) { return x.p; });
+    });
+  });
+  const lifted = plank.slice(1).map(function (p) { return Math.acos(-p[1]); });
+  check("a capsule and a box dropped onto a static box at the sphere's south pole come to rest against it, not through it",
+    lifted.every(function (d) { return d > 0.07 && d < 0.3; }), JSON.stringify(lifted));
+  await page.selectOption("#body-shape", "circle");
+  await page.evaluate(function () { window.manifold.resume(); });
+}
+
 // (7) presets: by URL (#scene=NAME), by the select, each loads (a picture of each), an unknown name refused
 async function testPresets(check, context, base) {
   const errors = [];
@@ -457,6 +505,7 @@ export async function testTools(check, context, base) {
   await testTrails(check, page);
   await testPlot(check, page);
   await testInspector(check, page);
+  await testBoxBody(check, page);
   check("tools page: no console errors", errors.length === 0, errors.join("; "));
   await page.close();
   await testPresets(check, context, base);

@@ -229,8 +229,30 @@ var ManifoldWebUi = (function (W) {
     const densityInput = $("body-density");
     /** @type {HTMLInputElement} */
     const staticBox = $("body-static");
+    /** @type {HTMLInputElement} */
+    const aspect = $("body-aspect");
+    // only the chosen kind's number shows: a polygon's sides, a box's or a capsule's length over width
+    const showShapeNumber = function () {
+      sides.hidden = shapeSelect.value !== "polygon";
+      aspect.hidden = shapeSelect.value !== "box" && shapeSelect.value !== "capsule";
+    };
     const shapeChosen = function () {
-      if (shapeSelect.value !== "polygon") return handlers.onNewBody({ shape: /** @type {"circle" | "square"} */ (shapeSelect.value) });
+      showShapeNumber();
+      const kind = shapeSelect.value;
+      if (kind === "box" || kind === "capsule") {
+        // its numbers from the size (how far it reaches from its centre) and the aspect
+        const size = Number(sizeSlider.value), k = Number(aspect.value);
+        if (!(k >= 1 && k <= 400) || (kind === "capsule" && k === 1)) {
+          showNotice(kind === "box" ? "A box's length over its width is 1 to 400." : "A capsule's length over its width is above 1, to 400.");
+          return undefined;
+        }
+        if (kind === "box") {
+          const q = size / Math.hypot(k, 1);
+          return handlers.onNewBody({ shape: { box: [k * q, q] } });
+        }
+        return handlers.onNewBody({ shape: { capsule: [size - size / k, size / k] } });
+      }
+      if (kind !== "polygon") return handlers.onNewBody({ shape: /** @type {"circle" | "square"} */ (kind) });
       const n = Math.round(Number(sides.value));
       if (!(n >= 3 && n <= 64)) {
         showNotice("A polygon has 3 to 64 sides.");
@@ -241,7 +263,12 @@ var ManifoldWebUi = (function (W) {
     };
     shapeSelect.addEventListener("change", shapeChosen);
     sides.addEventListener("change", function () { if (shapeSelect.value === "polygon") shapeChosen(); });
-    sizeSlider.addEventListener("input", function () { handlers.onNewBody({ size: Number(sizeSlider.value) }); });
+    aspect.addEventListener("change", shapeChosen);
+    sizeSlider.addEventListener("input", function () {
+      handlers.onNewBody({ size: Number(sizeSlider.value) });
+      // a box's or a capsule's size is its numbers'
+      if (!aspect.hidden) shapeChosen();
+    });
     densityInput.addEventListener("change", function () { handlers.onNewBody({ density: Number(densityInput.value) }); });
     staticBox.addEventListener("change", function () { handlers.onNewBody({ static: staticBox.checked }); });
     $("add-body").addEventListener("click", function () { handlers.onAdd(); });
@@ -386,19 +413,30 @@ var ManifoldWebUi = (function (W) {
       // the new body's controls: its template, and the space's own size (the slider spans a quarter to three times it)
       /** @param {{ shape: Manifold.Shape, size: number | null, density: number, static: boolean }} t @param {number} own */
       setNewBody: function (t, own) {
+        // a box's or a capsule's size and aspect, from its numbers
+        let shaped = null;
         if (typeof t.shape === "string") shapeSelect.value = t.shape;
-        else {
+        else if ("polygon" in t.shape) {
           shapeSelect.value = "polygon";
           sides.value = String(t.shape.polygon);
+        } else if ("box" in t.shape) {
+          shapeSelect.value = "box";
+          aspect.value = String(Number((t.shape.box[0] / t.shape.box[1]).toPrecision(4)));
+          shaped = Math.hypot(t.shape.box[0], t.shape.box[1]);
+        } else {
+          shapeSelect.value = "capsule";
+          aspect.value = String(Number(((t.shape.capsule[0] + t.shape.capsule[1]) / t.shape.capsule[1]).toPrecision(4)));
+          shaped = t.shape.capsule[0] + t.shape.capsule[1];
         }
+        showShapeNumber();
         const step = Number((own / 50).toPrecision(1));
         sizeSlider.min = String(Math.max(step, own / 4));
         sizeSlider.max = String(3 * own);
         sizeSlider.step = String(step);
         sizeMark.value = String(own);
-        const size = t.size === null ? own : t.size;
+        const size = shaped !== null ? shaped : t.size === null ? own : t.size;
         sizeSlider.value = String(size);
-        sizeValue.textContent = Number(size.toPrecision(3)) + (t.size === null ? " (the space's)" : "");
+        sizeValue.textContent = Number(size.toPrecision(3)) + (shaped === null && t.size === null ? " (the space's)" : "");
         densityInput.value = String(t.density);
         staticBox.checked = t.static;
       },
