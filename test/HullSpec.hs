@@ -169,6 +169,17 @@ resting = describe "in the engine" $ do
     abs (bsAngle card) `shouldSatisfy` (< 1e-3)
     height top `shouldSatisfy` (\z -> abs (z - 0.021) < 1e-4)
     warningCount w `shouldReturn` 0
+  it "brings a box and a capsule at rest on the rectangle's floor (the boundary, met by their corners) to their heights (2e-4), level" $ do
+    -- (a 10 : 3 box's corners lie between its outline's directions: by the
+    -- outline it sank at them)
+    w <- loaded "{\"space\": \"rectangle\", \"bodies\": [{\"shape\": {\"box\": [0.1, 0.03]}, \"p\": [-0.4, 0, -0.6], \"angle\": 0.5},\
+                \ {\"shape\": {\"capsule\": [0.08, 0.025]}, \"p\": [0.4, 0, -0.6], \"angle\": -0.4}]}"
+    replicateM_ 500 (stepNative w)
+    states <- forM [0, 1] (readBody w)
+    let heights = [z | s <- states, let V3 _ _ z = bsPos s]
+    zipWith (\h z -> abs (h - z) < 2e-4) [-0.97, -0.975] heights `shouldBe` [True, True]
+    -- level: a multiple of a half turn
+    [abs (sin (bsAngle s)) < 1e-3 | s <- states] `shouldBe` [True, True]
   it "brings boxes, capsules and circles at rest on a slab to their heights: half a side, a radius (2e-4)" $ do
     w <- loaded "{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [1, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
                 \ {\"shape\": {\"box\": [0.06, 0.03]}, \"p\": [-0.5, 0, 0.2], \"angle\": 0.3},\

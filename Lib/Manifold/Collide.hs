@@ -667,11 +667,64 @@ extremesAlong margin nd probe = do
       whenPositive (s - h0) (writeRef hi s >> writeRef hiD (toScalar d))
   (,) <$> readRef loD <*> readRef hiD
 
--- | Where the outline of body @i@ leaves the allowed region @b >= 0@.
+-- | Where the outline of body @i@ leaves the allowed region @b >= 0@; a
+-- box's or a capsule's hull by its corners ('hullBoundary').
 boundaryContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 boundaryContacts sp l w i = case spaceBoundary sp of
   Nothing -> pure ()
   Just bf -> do
+    corners <- readSlot w i Corners
+    ifPositive (corners - 1.5) (hullBoundary sp bf w i corners) (outlineBoundary sp l bf w i)
+
+-- | Where body @i@'s hull (two corners or more) leaves the allowed region
+-- @b >= 0@: each corner as deep as the region's edge lies inside its
+-- rounding, @r − b/|∇b|@; the deepest corner, and of those within the
+-- margin the two extremes along the edge (a box lying on it has two),
+-- each pushed where its rounding meets the edge.
+hullBoundary :: Imp m => Space -> ScalarFn -> WorldArrays (Array m) -> Index m -> Scalar m -> m ()
+{-# INLINE hullBoundary #-}
+hullBoundary sp bf w i corners = do
+  let metric = spaceMetric sp
+      key = fromIntegral (fromEnum BoundaryKey) * fromIntegral keysPerGroup
+      base = fromIntegral hullStride * i
+      corner k = readAt3' (base + hullWorldAt k)
+      readAt3' o = V3 <$> readArray (wHull w) o <*> readArray (wHull w) (o + 1) <*> readArray (wHull w) (o + 2)
+      -- how far a corner lies past the region's edge (negative: inside),
+      -- and the direction back into the region there
+      depthAt q = do
+        g <- share3 (gradFn bf q)
+        gl <- share (normIn metric (raise metric g))
+        bv <- share (evalFn bf q)
+        pure (negate (select gl (bv / maxF gl 1e-300) 0), normalOf metric g)
+  rounding <- readArray (wHull w) base
+  n <- read3 (wNormal w) i
+  margin <- speculativeMargin w i i
+  deepest <- newRef (negate margin)
+  kDeep <- newRef (-1)
+  forLoop 0 (toIndex corners) $ \k -> do
+    (d, _) <- depthAt =<< corner k
+    best <- readRef deepest
+    whenPositive (rounding + d - best) (writeRef deepest (rounding + d) >> writeRef kDeep (toScalar k))
+  kd <- readRef kDeep
+  whenPositive (kd + 0.5) $ do
+    (_, dir0) <- depthAt =<< corner (toIndex kd)
+    t <- share3 (perpendicular metric n dir0)
+    (kLo, kHi) <- extremesAlong margin (toIndex corners) $ \k -> do
+      q <- corner k
+      (d, _) <- depthAt q
+      pure (rounding + d, inner metric q t)
+    let emitAt slot k = do
+          q <- corner (toIndex k)
+          (d, dir) <- depthAt q
+          -- where the rounding meets the edge: the corner moved out along the edge's normal
+          p <- share3 (q ^-^ rounding *^ dir)
+          emitContact metric w i (key + slot) i (-1) p dir p dir (rounding + d) 1 1 id
+    emitAt 0 kLo
+    whenPositive (abs (kHi - kLo)) (emitAt 1 kHi)
+
+-- | Where the outline of body @i@ leaves the allowed region @b >= 0@.
+outlineBoundary :: Imp m => Space -> Layout -> ScalarFn -> WorldArrays (Array m) -> Index m -> m ()
+outlineBoundary sp l bf w i = do
     let b = evalFn bf
         metric = spaceMetric sp
     let nd = fromIntegral (polyDirections (polygon l))
