@@ -18,7 +18,9 @@
 -- reference edge, and the two extreme vertices inside, along the edge,
 -- clipped where the reference body ends, become the pair's two contact
 -- points, so that a box resting on a box has two. Two circles touch as
--- geodesic discs: from the distance between their centres ('circles').
+-- geodesic discs: from the distance between their centres ('circles');
+-- two bodies with hulls (circles, boxes, capsules: "Manifold.Hull") by
+-- their contact manifold in the tangent plane between them ('hulls').
 module Manifold.Collide
   ( collide
   , buildGrid
