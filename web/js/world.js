@@ -114,10 +114,9 @@ var ManifoldWebWorld = (function (W) {
   // it is not given), as Manifold.Scene takes it.
   /** @param {string} path @param {Record<string, unknown>} o @param {Manifold.Shape} s */
   function bodySize(path, o, s) {
-    const a = shapeArgs(s);
-    if (a[0] !== shapes().codes.box && a[0] !== shapes().codes.capsule) return required(path, o, "size", positive);
+    if (!sizedByShape(s)) return required(path, o, "size", positive);
     if ("size" in o) problem(path + ".size", "is not given with a box or a capsule (its numbers are its size)");
-    return shapes().size(a[0], a[1], a[2], 0);
+    return reachOf(s, 0);
   }
   // The bodies' awake and island keys (after every body, as Manifold.Scene
   // checks them): a sleeping body's island is named by the index of a
@@ -942,12 +941,12 @@ var ManifoldWebWorld = (function (W) {
       const boundary = this.space.boundary;
       /** @type {{ shape: Manifold.Shape, size: number }[]} */
       const defaults = [{ shape: "circle", size: 0.15 }, { shape: "square", size: 0.15 }];
-      const shapes = base.length ? base : defaults;
+      const templates = base.length ? base : defaults;
       const most = Math.min(n, this.maxBodies());
       let failed = 0;
       while (this.count() < most && failed < FILL_GIVE_UP) {
         failed++;
-        const tmpl = shapes[this.count() % shapes.length];
+        const tmpl = templates[this.count() % templates.length];
         const p = /** @type {Manifold.Vec3} */ ([0, 1, 2].map(function () { return (2 * rnd() - 1) * bounds * 0.9; }));
         let i;
         try {
