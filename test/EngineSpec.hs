@@ -526,6 +526,14 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withBody "{\"shape\": {\"box\": [0.1, \"a\"]}, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"capsule\": [0.1, 0]}, \"p\": [1, 0, 0]}"
           , withBody "{\"shape\": {\"capsule\": 3}, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"box\": [0.1, 0.05]}, \"size\": 0.1, \"p\": [1, 0, 0]}"
           , withBody "{\"shape\": {\"box\": [0.1, 0.1], \"capsule\": [0.1, 0.1]}, \"p\": [1, 0, 0]}", withBody "{\"shape\": \"box\", \"size\": 0.1, \"p\": [1, 0, 0]}"
+          -- convex polygons: 3 to 8 corners going round it, a radius not negative and with them only, no size
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0]]}, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1]]}, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0], [0]]}, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0], [0, \"a\"]]}, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 1], [1, 0], [0, 1]]}, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0], [2, 0], [1, 1]]}, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0], [0, 1]], \"radius\": -0.1}, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"box\": [0.1, 0.1], \"radius\": 0.1}, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [1, 0], [0, 1]]}, \"size\": 1, \"p\": [1, 0, 0]}", withBody "{\"shape\": {\"vertices\": 3}, \"p\": [1, 0, 0]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [0.1, 0], [0.1, 0.1], [0, 0.1], [0, 0.1]]}, \"p\": [1, 0, 0]}"
           , withBody "{\"shape\": \"square\", \"size\": -1, \"p\": [1, 0, 0]}", withBody "{\"shape\": \"square\", \"size\": 0.1}"
           , withBody "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0]}", withBody "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0, \"x\"]}"
           , withBody (body ", \"v\": 1"), withBody (body ", \"angle\": \"a\""), withBody (body ", \"omega\": null")
@@ -575,6 +583,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
               ++ body ", \"density\": 2, \"friction\": 0.8, \"restitution\": 0.25, \"static\": true, \"v\": [0, 0.5, 0], \"angle\": 0.3, \"omega\": -1, \"impulses\": [[64, 0.25, -0.01], [129, 0, 0.5]]"
               ++ ", {\"shape\": {\"polygon\": 7}, \"size\": 0.2, \"p\": [0, 0.4, 1]}]}"
           , withBody "{\"shape\": {\"box\": [0.1, 0.02]}, \"p\": [1, 0, 0]}, {\"shape\": {\"capsule\": [0.05, 0.01]}, \"density\": 2, \"p\": [0, 0, 1]}"
+          , withBody "{\"shape\": {\"vertices\": [[0, 0], [0.1, 0], [0, -0.05]], \"radius\": 0.01}, \"p\": [1, 0, 0]}, {\"shape\": {\"vertices\": [[0, 0], [0, 0.1], [0.1, 0.1], [0.1, 0]]}, \"p\": [0, 0, 1]}"
           , "{\"space\": \"plane\", \"sleep\": false, \"sleepTime\": 2, \"bodies\": [" ++ body ", \"awake\": false, \"sleepTime\": 0.75"
               ++ ", " ++ body ", \"awake\": false, \"island\": 0" ++ ", " ++ body ", \"sleepTime\": 0.1" ++ "]}"
           , "{\"space\": \"sphere\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0.5, 0], \"up\": [0, 0, -1], \"fov\": 30}}" ]
@@ -603,7 +612,7 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       , "process.stdout.write(JSON.stringify(results) + '\\n');" ]
     page <- maybe (fail ("node printed no results: " ++ take 300 out)) pure (A.decode (BL.pack (last ("" : lines out))))
     [(t, n, j) | (t, n, j) <- zip3 texts (map native texts) page, n /= j] `shouldBe` []
-    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 8
+    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 9
     fmap (pDt . sceneParams) (parseScene "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}") `shouldBe` Right 0.02
     fmap (map bsSize . sceneBodies) (parseScene (BL.pack (withBody (body ", \"size\": 0.3")))) `shouldBe` Right [0.3]
 

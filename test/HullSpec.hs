@@ -16,6 +16,7 @@ import Linear.Vector ((^-^))
 import Test.Hspec
 
 import Manifold
+import Manifold.ContactManifold (maxHullCorners)
 import Manifold.Engine
 import Manifold.Hull
 import Manifold.Scene
@@ -79,6 +80,74 @@ closedForms = describe "shapes" $ do
     Right i <- addBody w (BodyInit (capsule 0.2 0.05) 0.25 2 False (V3 0 0 0) (V3 0 0 0) 0 0 sceneMaterial)
     invMass <- MV.read (wScalars (nwArrays w)) (scalarSlots * i + fromEnum InvMass)
     recip invMass `shouldSatisfy` closeRel 1e-12 (fst (hullMass capsuleCode 0.2 0.05 2))
+
+  polygons
+
+-- | Convex polygons of their own corners: mass against closed forms and
+-- the polar integrals of their outlines, the outline at the radius from
+-- the polygon, the centre of mass at the origin, either orientation.
+polygons :: Spec
+polygons = describe "convex polygons" $ do
+  let padded cs = take maxHullCorners (cs ++ repeat (0, 0))
+      density = 1.3
+  it "a box's, a right triangle's (m(a² + b²)/18 about its centroid) and a rounded polygon's mass and moment of inertia: closed forms (1e-12)" $ do
+    let (p, q) = (0.3, 0.1)
+    polygonMass 4 0 (padded (polygonCorners [(-p, -q), (p, -q), (p, q), (-p, q)] 0)) density
+      `shouldSatisfy` (\(m, i) -> closeRel 1e-12 (fst (hullMass boxCode p q density)) m && closeRel 1e-12 (snd (hullMass boxCode p q density)) i)
+    let (a, b) = (0.3, 0.2)
+        (tm, ti) = polygonMass 3 0 (padded (polygonCorners [(0, 0), (a, 0), (0, b)] 0)) density
+    tm `shouldSatisfy` closeRel 1e-12 (density * a * b / 2)
+    ti `shouldSatisfy` closeRel 1e-12 (tm * (a * a + b * b) / 18)
+    -- rounded: the polygon, a rectangle on each side, a disc at the corners
+    let r = 0.04
+        (rm, _) = polygonMass 3 r (padded (polygonCorners [(0, 0), (a, 0), (0, b)] r)) density
+    rm `shouldSatisfy` closeRel 1e-12 (density * (a * b / 2 + (a + b + sqrt (a * a + b * b)) * r + pi * r * r))
+  it "a rounded polygon's outline lies at its radius from the polygon in every direction, and its polar integrals give its mass and moment of inertia about its centre of mass (1e-6)" $
+    forM_ [([(0, 0), (0.3, 0), (0, 0.2)], 0.04), ([(-0.1, -0.02), (0.2, -0.05), (0.25, 0.1), (0.05, 0.15), (-0.12, 0.08)], 0), ([(0.1, 0), (0, 0.1), (-0.1, 0), (0, -0.1)], 0.02)] $ \(given, r) -> do
+      let own = polygonCorners given r
+          n = fromIntegral (length own)
+          outline = verticesOutline n r (padded own)
+          segment (ax, ay) (bx, by) (x, y) =
+            let (ex, ey) = (bx - ax, by - ay)
+                t = max 0 (min 1 (((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey)))
+            in sqrt ((x - ax - t * ex) ^ (2 :: Int) + (y - ay - t * ey) ^ (2 :: Int))
+          fromPolygon pt = minimum (zipWith (\c d -> segment c d pt) own (tail own ++ [head own]))
+      forM_ [0, 0.013 .. 6.28] $ \t -> do
+        let s = outline t
+        abs (fromPolygon (s * cos t, s * sin t) - r) `shouldSatisfy` (< 1e-12)
+      -- the midpoint rule over the outline, sampled once
+      let pieces = 40000 :: Int
+          h = 2 * pi / fromIntegral pieces
+          sampled = [ (t, outline t) | k <- [0 .. pieces - 1], let t = (fromIntegral k + 0.5) * h ]
+          polar g = h * sum [ g t o | (t, o) <- sampled ]
+          (m, i) = polygonMass n r (padded own) density
+      (density * 0.5 * polar (\_ o -> o ^ (2 :: Int))) `shouldSatisfy` closeRel 1e-6 m
+      (density * 0.25 * polar (\_ o -> o ^ (4 :: Int))) `shouldSatisfy` closeRel 1e-6 i
+      -- the centre of mass: the first moments of the outline vanish
+      let first f = density * polar (\t o -> o ^ (3 :: Int) * f t / 3)
+      abs (first cos) `shouldSatisfy` (< 1e-9)
+      abs (first sin) `shouldSatisfy` (< 1e-9)
+  it "takes corners given clockwise as the same polygon, and names its size how far it reaches" $ do
+    let given = [(-0.04, 0.05), (0.06, 0.03), (0.05, -0.04), (-0.05, -0.03)]
+    polygonCorners (reverse given) 0.01 `shouldBe` polygonCorners given 0.01
+    let Just reach = shapeSize (VerticesShape given 0.01)
+    reach `shouldSatisfy` closeRel 1e-12 (0.01 + maximum [sqrt (a * a + b * b) | (a, b) <- polygonCorners given 0.01])
+  it "adds a polygon body with its closed-form mass, its corners about its centre of mass, and its size how far it reaches" $ do
+    w <- newWorld plane (layout 2)
+    let shape = VerticesShape [(0, 0), (0.3, 0), (0, 0.2)] 0.01
+    Right i <- addBody w (BodyInit (shapeFromKind shape) 0 2 False (V3 0 0 0) (V3 0 0 0) 0 0 sceneMaterial)
+    let slot :: Slot -> IO Double
+        slot f = MV.read (wScalars (nwArrays w)) (scalarSlots * i + fromEnum f)
+        own = polygonCorners [(0, 0), (0.3, 0), (0, 0.2)] 0.01
+    invMass <- slot InvMass
+    recip invMass `shouldSatisfy` closeRel 1e-12 (fst (polygonMass 3 0.01 (padded own) 2))
+    slot Corners `shouldReturn` 3
+    locals <- forM [0 .. 2] $ \k -> (,) <$> MV.read (wHull (nwArrays w)) (hullStride * i + hullLocalAt k) <*> MV.read (wHull (nwArrays w)) (hullStride * i + hullLocalAt k + 1)
+    and (zipWith close2 locals own) `shouldBe` True
+    bound <- slot BoundRadius
+    bound `shouldSatisfy` (>= polygonReach 3 0.01 (padded own) - 1e-12)
+  where
+    close2 (a, b) (c, d) = abs (a - c) < 1e-12 && abs (b - d) < 1e-12
 
 -- | Body @i@'s corner @k@ as the last polygon walk left it.
 corner :: NativeWorld -> Int -> Int -> IO (V3 Double)
@@ -189,3 +258,17 @@ resting = describe "in the engine" $ do
     let height s = let V3 _ _ z = bsPos s in z
     heights <- forM [1, 2, 3] (fmap height . readBody w)
     zipWith (\h z -> abs (h - z) < 2e-4) [0.03, 0.02, 0.05] heights `shouldBe` [True, True, True]
+  it "brings a right triangle, a rounded pentagon and a plank of eight corners at rest on a slab to their heights: a third of the leg up, the inradius and radius, half the plank's thickness (2e-4)" $ do
+    -- (b is along normal × direction: −z on the plane; the triangle's third
+    -- corner is above its first leg)
+    let pentagon = concat [ "[" ++ show (0.05 * cos t) ++ ", " ++ show (0.05 * sin t) ++ "]" ++ (if k < 4 then ", " else "")
+                          | k <- [0 .. 4 :: Int], let t = 2 * pi * fromIntegral k / 5 ]
+    w <- loaded (BL.pack ("{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [1, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
+                \ {\"shape\": {\"vertices\": [[0, 0], [0.1, 0], [0, -0.06]]}, \"p\": [-0.5, 0, 0.05], \"angle\": 0.1},\
+                \ {\"shape\": {\"vertices\": [" ++ pentagon ++ "], \"radius\": 0.01}, \"p\": [0, 0, 0.1], \"angle\": 0.2},\
+                \ {\"shape\": {\"vertices\": [[-0.12, -0.01], [-0.08, -0.015], [0.08, -0.015], [0.12, -0.01], [0.12, 0.01], [0.08, 0.015], [-0.08, 0.015], [-0.12, 0.01]]}, \"p\": [0.5, 0, 0.05], \"angle\": -0.1}]}"))
+    replicateM_ 600 (stepNative w)
+    let height s = let V3 _ _ z = bsPos s in z
+    heights <- forM [1, 2, 3] (fmap height . readBody w)
+    zipWith (\h z -> abs (h - z) < 2e-4) [0.02, 0.05 * cos (pi / 5) + 0.01, 0.015] heights `shouldBe` [True, True, True]
+    warningCount w `shouldReturn` 0

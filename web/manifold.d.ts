@@ -18,13 +18,15 @@ declare namespace Manifold {
   // ---- scenes (the JSON of `manifold sim`, docs/scenes.md) ----
 
   /** A body's shape: a circle, a square, a regular polygon of 3 to 64 sides, a box of two half-extents (along the body's direction, across it), or a capsule (half its segment's length, its radius). */
-  type Shape = "circle" | "square" | { polygon: number } | { box: [number, number] } | { capsule: [number, number] };
+  /** A convex polygon: 3 to 8 corners [a, b] in the body's frame going round it (either way; the body's centre is its centre of mass), rounded by radius (default 0). */
+  type Vertices = { vertices: [number, number][]; radius?: number };
+  type Shape = "circle" | "square" | { polygon: number } | { box: [number, number] } | { capsule: [number, number] } | Vertices;
   /** A contact impulse a body remembers for warm starting: [contact key, normal, friction]. */
   type Impulse = [number, number, number];
   /** A body as a scene gives it: shape, size and p are required, the rest has defaults. */
   interface SceneBody {
     shape: Shape;
-    /** > 0; not given with a box or a capsule (their numbers are their size) */
+    /** > 0; not given with a box, a capsule or vertices (their numbers are their size) */
     size?: number;
     /** projected onto the surface by the engine */
     p: Vec3;
@@ -415,7 +417,14 @@ declare namespace Manifold {
     /** the body keys that give a body its own material, each taking the scene key of its name's values */
     materialKeys: string[];
     /** addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Manifold.Hull) */
-    shapes: { codes: { circle: number; box: number; capsule: number }; size: (code: number, p: number, q: number, size: number) => number };
+    shapes: {
+      codes: { circle: number; box: number; capsule: number; vertices: number };
+      /** how many corners a convex polygon may have */
+      maxCorners: number;
+      size: (code: number, p: number, q: number, size: number) => number;
+      /** a convex polygon's size from its count, its radius and its corners a0, b0, ... (maxCorners of them) */
+      polygonSize: (n: number, r: number, ...corners: number[]) => number;
+    };
     /** web/gen/spaces.js: every space, in catalogue order */
     spaceIndex: SpaceEntry[];
     /** the comparisons whose scripts have loaded (web/gen/compare-torus.js: torus) */

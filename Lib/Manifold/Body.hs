@@ -16,6 +16,9 @@ module Manifold.Body
   , shapeArgs
   , shapeSize
   , codeOutline
+  , shapeCorners
+  , polygonCorners
+  , convexPolygon
   , customShape
   , shapeFromKind
   , outlineAt
@@ -48,6 +51,7 @@ import Linear.Vector ((*^), (^+^))
 
 import System.IO.Unsafe (unsafePerformIO)
 
+import Manifold.ContactManifold (maxHullCorners)
 import Manifold.Field
 import Manifold.Hull
 import Manifold.Metric
@@ -107,28 +111,58 @@ polygonOutline n theta =
 
 -- | A built-in shape as the engine's body placement and the page take it:
 -- its code (0 a circle, @n >= 3@ a regular @n@-gon, −1 a box, −2 a
--- capsule: "Manifold.Hull") and its two numbers (a box's half-extents, a
--- capsule's half length and radius; 0 for the others).
+-- capsule, −3 a convex polygon: "Manifold.Hull") and its two numbers (a
+-- box's half-extents, a capsule's half length and radius, a polygon's
+-- count of corners and radius; 0 for the others). A polygon's corners are
+-- 'shapeCorners'.
 --
--- >>> map shapeArgs [CircleShape, SquareShape, PolygonShape 5, BoxShape 2 1]
--- [(0.0,0.0,0.0),(4.0,0.0,0.0),(5.0,0.0,0.0),(-1.0,2.0,1.0)]
+-- >>> map shapeArgs [CircleShape, SquareShape, PolygonShape 5, BoxShape 2 1, VerticesShape [(0, 0), (1, 0), (0, 1)] 0.5]
+-- [(0.0,0.0,0.0),(4.0,0.0,0.0),(5.0,0.0,0.0),(-1.0,2.0,1.0),(-3.0,3.0,0.5)]
 shapeArgs :: ShapeKind -> (Double, Double, Double)
 shapeArgs CircleShape = (circleCode, 0, 0)
 shapeArgs SquareShape = (4, 0, 0)
 shapeArgs (PolygonShape n) = (fromIntegral n, 0, 0)
 shapeArgs (BoxShape p q) = (boxCode, p, q)
 shapeArgs (CapsuleShape p q) = (capsuleCode, p, q)
+shapeArgs (VerticesShape cs r) = (verticesCode, fromIntegral (length cs), r)
+
+-- | A convex polygon's corners as the engine's body placement takes them
+-- ('Manifold.ContactManifold.maxHullCorners' of them, the unused ones 0);
+-- every other shape's are all 0.
+--
+-- >>> take 4 (shapeCorners (VerticesShape [(0, 0), (1, 0), (0, 1)] 0))
+-- [(0.0,0.0),(1.0,0.0),(0.0,1.0),(0.0,0.0)]
+shapeCorners :: ShapeKind -> [(Double, Double)]
+shapeCorners k = take maxHullCorners (own ++ repeat (0, 0))
+  where
+    own = case k of
+      VerticesShape cs _ -> cs
+      _ -> []
+
+-- | A convex polygon's corners in the body's frame as the engine keeps
+-- them: counter-clockwise, its centre of mass at the origin (the first
+-- 'shapeArgs' count of 'shapeCorners').
+--
+-- >>> polygonCorners [(0, 0), (0, 3), (3, 0)] 0
+-- [(2.0,-1.0),(-1.0,2.0),(-1.0,-1.0)]
+polygonCorners :: [(Double, Double)] -> Double -> [(Double, Double)]
+polygonCorners cs r =
+  let n = fromIntegral (length cs)
+      padded = shapeCorners (VerticesShape cs r)
+  in take (length cs) (centredCorners n r (orientCorners n padded))
 
 -- | The size a shape's own numbers give it (its circumradius), for the
--- shapes that have them (boxes and capsules: 'hullSize').
+-- shapes that have them (boxes, capsules, convex polygons: 'hullSize',
+-- 'polygonReach').
 --
 -- >>> shapeSize (BoxShape 3 4)
 -- Just 5.0
 -- >>> shapeSize CircleShape
 -- Nothing
 shapeSize :: ShapeKind -> Maybe Double
-shapeSize k = case shapeArgs k of
-  (code, p, q) | hullCorners code >= 2 -> Just (hullSize code p q 0)
+shapeSize k = case (k, shapeArgs k) of
+  (VerticesShape cs r, (_, n, _)) -> Just (polygonReach n r (polygonCorners cs r))
+  (_, (code, p, q)) | hullCorners code p >= 2 -> Just (hullSize code p q 0)
   _ -> Nothing
 
 -- | The outline, for size 1, of the built-in shape with the given code and
@@ -155,6 +189,7 @@ shapeFromKind SquareShape = square
 shapeFromKind (PolygonShape n) = regularPolygon n
 shapeFromKind (BoxShape p q) = box p q
 shapeFromKind (CapsuleShape p q) = capsule p q
+shapeFromKind (VerticesShape cs r) = convexPolygon cs r
 
 -- | A box of half-extents @p@ along the body's direction and @q@ across it
 -- (its size is its circumradius, @√(p² + q²)@).
@@ -165,6 +200,20 @@ box p q = builtIn "box" (BoxShape p q)
 -- the centre, rounded by radius @q@ (its size is @p + q@).
 capsule :: Double -> Double -> Shape
 capsule p q = builtIn "capsule" (CapsuleShape p q)
+
+-- | A convex polygon of 3 to 8 corners @(a, b)@ in the body's frame,
+-- rounded by radius @r@ (0: sharp corners). Its centre is its centre of
+-- mass: the corners are moved so ('polygonCorners'); its size is how far
+-- it reaches ('polygonReach').
+convexPolygon :: [(Double, Double)] -> Double -> Shape
+convexPolygon cs r =
+  let own = polygonCorners cs r
+      n = fromIntegral (length cs)
+      reach = polygonReach n r own
+      padded = take maxHullCorners (own ++ repeat (0, 0))
+      outline :: Field a => a -> a
+      outline theta = verticesOutline (constant n) (constant r) [ (constant a, constant b) | (a, b) <- padded ] theta / constant reach
+  in Shape "vertices" (Just (VerticesShape cs r)) (Outline outline)
 
 -- | A built-in shape with numbers of its own: its outline is
 -- 'codeOutline''s, as the page's engine makes it.
@@ -210,7 +259,8 @@ areaOf s size = mass (massProperties s size 1)
 -- MassProperties {mass = 3.141592653589793, inertia = 1.5707963267948966}
 massProperties :: Shape -> Double -> Double -> MassProperties
 massProperties s size density = case fmap shapeArgs (shapeKind s) of
-  Just (code, p, q) | hullCorners code >= 2 -> uncurry MassProperties (hullMass code p q density)
+  Just (_, n, r) | Just (VerticesShape cs _) <- shapeKind s -> uncurry MassProperties (polygonMass n r (polygonCorners cs r) density)
+  Just (code, p, q) | hullCorners code p >= 2 -> uncurry MassProperties (hullMass code p q density)
   _ -> unsafePerformIO $ runNative $ do
     let Outline outline = shapeOutline s
     (m, i) <- massIntegrals outline size density

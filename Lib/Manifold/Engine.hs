@@ -46,6 +46,7 @@ module Manifold.Engine
   , stateHash
   ) where
 
+import qualified Data.Vector.Unboxed as U
 import qualified Data.Vector.Unboxed.Mutable as MV
 import Linear.V3 (V3 (..))
 
@@ -173,7 +174,8 @@ addBodyFramed w b frame = do
                       (own (matFriction (biMaterial b))) (own (matRestitution (biMaterial b)))
                       code p q
       (code, p, q) = maybe (outlineCode, 0, 0) shapeArgs (shapeKind (biShape b))
-  runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) outline args)
+  corners <- U.thaw (U.fromList (concat [[a, c] | (a, c) <- maybe (shapeCorners CircleShape) shapeCorners (shapeKind (biShape b))]))
+  runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) corners outline args)
   i <- metaValue LastAdded w
   n <- bodyCount w
   pure $ if i >= 0 then Right i

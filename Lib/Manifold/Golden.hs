@@ -53,7 +53,8 @@ goldenRuns =
     ++ [ GoldenRun "plane-sleep-wake" planeSleepWake 300 ]
     ++ [ GoldenRun "rectangle-materials" rectangleMaterials 400 ]
     ++ [ GoldenRun "plane-shapes" planeShapes 500, GoldenRun "sphere-shapes" sphereShapes 500
-       , GoldenRun "projective-plane-shapes" projectivePlaneShapes 500 ]
+       , GoldenRun "projective-plane-shapes" projectivePlaneShapes 500
+       , GoldenRun "sphere-polygons" spherePolygons 500 ]
 
 -- | A joint of a kind between bodies @a@ and @b@ (−1: the world) at
 -- anchors @p@ and @q@, its settings left to the defaults.
@@ -171,6 +172,24 @@ projectivePlaneShapes =
         , placed (BoxShape 0.1 0.03) 0 False (at 3.9) 0.2
         , placed CircleShape 0.06 False (at 0.7) 0 ]
   in Scene projectivePlane defaultParams bodies [] Nothing
+
+-- | Convex polygons of their own corners on the sphere, sliding to a
+-- static rounded hexagon at its south pole: a right triangle, a rounded
+-- pentagon, a quadrilateral given clockwise, a thin plank of eight
+-- corners, among a box and a circle.
+spherePolygons :: Scene
+spherePolygons =
+  let at a b = let r = sqrt (a * a + b * b) in if r == 0 then V3 0 (-1) 0 else V3 (sin r * a / r) (-(cos r)) (sin r * b / r)
+      regular n r0 = [ (r0 * cos t, r0 * sin t) | k <- [0 .. n - 1 :: Int], let t = 2 * pi * fromIntegral k / fromIntegral n ]
+      bodies =
+        [ placed (VerticesShape (regular 6 0.2) 0.02) 0 True (at 0 0) 0
+        , placed (VerticesShape [(0, 0), (0.1, 0), (0, 0.07)] 0) 0 False (at 0.3 0.05) 0.3
+        , placed (VerticesShape (regular 5 0.05) 0.01) 0 False (at (-0.3) 0.1) 0
+        , placed (VerticesShape [(-0.04, 0.05), (0.06, 0.03), (0.05, -0.04), (-0.05, -0.03)] 0) 0 False (at 0 0.35) 0.7
+        , placed (VerticesShape [(-0.12, -0.01), (-0.08, -0.015), (0.08, -0.015), (0.12, -0.01), (0.12, 0.01), (0.08, 0.015), (-0.08, 0.015), (-0.12, 0.01)] 0) 0 False (at 0.1 (-0.4)) 0
+        , placed (BoxShape 0.05 0.04) 0 False (at (-0.2) (-0.3)) 1
+        , placed CircleShape 0.05 False (at 0.45 (-0.1)) 0 ]
+  in Scene sphere defaultParams bodies [] Nothing
 
 -- | A space's default scene ('spaceScene') with the default parameters.
 defaultScene :: Space -> Scene

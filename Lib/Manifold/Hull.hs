@@ -1,10 +1,12 @@
 {-# LANGUAGE FlexibleContexts #-}
 -- | The built-in shapes that collide by their exact hulls
--- ("Manifold.ContactManifold"): circles, boxes and capsules, as the
--- engine's body placement takes them (a code and two numbers, so that the
--- page's engine chooses a shape at run time), their corners in the
--- body's own frame, their polar outlines (what is drawn, picked and kept
--- off boundaries) and their exact mass and moment of inertia.
+-- ("Manifold.ContactManifold"): circles, boxes, capsules and convex
+-- polygons of three to eight corners, rounded or not, as the engine's
+-- body placement takes them (a code, two numbers and, for a polygon, its
+-- corners, so that the page's engine chooses a shape at run time), their
+-- corners in the body's own frame, their polar outlines (what is drawn,
+-- picked and kept off boundaries) and their exact mass and moment of
+-- inertia.
 --
 -- A body's frame: @a@ along its direction (its axis turned by its angle),
 -- @b@ along normal × direction, the way a positive angle turns it.
@@ -13,7 +15,9 @@ module Manifold.Hull
     circleCode
   , boxCode
   , capsuleCode
+  , verticesCode
   , outlineCode
+  , isVertices
   , hullCorners
   , hullSize
   , hullThickness
@@ -24,16 +28,25 @@ module Manifold.Hull
   , boxOutline
   , capsuleOutline
   , hullMass
+    -- * Convex polygons
+  , orientCorners
+  , polygonMoments
+  , centredCorners
+  , polygonMass
+  , polygonReach
+  , polygonThickness
+  , verticesOutline
   ) where
 
 import Manifold.Field
 
 -- | The codes of the shapes with hulls (a regular polygon's code is its
 -- number of sides, 3 or more).
-circleCode, boxCode, capsuleCode :: Field a => a
+circleCode, boxCode, capsuleCode, verticesCode :: Field a => a
 circleCode = 0
 boxCode = -1
 capsuleCode = -2
+verticesCode = -3
 
 -- | The code of a shape of one's own, which collides by its sampled
 -- outline.
@@ -44,15 +57,20 @@ outlineCode = 1
 is :: Field a => a -> a -> a
 is code k = select (0.5 - abs (code - k)) 1 0
 
--- | How many corners the hull of the shape with this code has
--- ('Manifold.World.Corners'): 1 for a circle (its centre, rounded by its
--- radius), 2 for a capsule (its segment's ends), 4 for a box, 0 for the
--- shapes that collide by their sampled outlines.
+-- | 1 for a convex polygon's code ('verticesCode'), else 0.
+isVertices :: Field a => a -> a
+isVertices code = is code verticesCode
+
+-- | How many corners the hull of the shape with this code and first
+-- number has ('Manifold.World.Corners'): 1 for a circle (its centre,
+-- rounded by its radius), 2 for a capsule (its segment's ends), 4 for a
+-- box, a polygon's count (its first number), 0 for the shapes that
+-- collide by their sampled outlines.
 --
--- >>> map hullCorners [0, -1, -2, 4, 1 :: Double]
--- [1.0,4.0,2.0,0.0,0.0]
-hullCorners :: Field a => a -> a
-hullCorners code = is code circleCode + 4 * is code boxCode + 2 * is code capsuleCode
+-- >>> [hullCorners c 5 | c <- [0, -1, -2, -3, 4, 1 :: Double]]
+-- [1.0,4.0,2.0,5.0,0.0,0.0]
+hullCorners :: Field a => a -> a -> a
+hullCorners code p = is code circleCode + 4 * is code boxCode + 2 * is code capsuleCode + p * is code verticesCode
 
 -- | A body's size (its circumradius: how far its outline reaches from the
 -- centre) from its shape's code and numbers @(p, q)@: a box's half-extents
@@ -79,9 +97,9 @@ hullThickness code p q size =
     (select (0.5 - abs (code - capsuleCode)) q size)
 
 -- | The radius that rounds a hull: a circle's radius (its size), a
--- capsule's, none for a box.
+-- capsule's or a polygon's (its second number), none for a box.
 hullRounding :: Field a => a -> a -> a -> a
-hullRounding code q size = is code circleCode * size + is code capsuleCode * q
+hullRounding code q size = is code circleCode * size + (is code capsuleCode + is code verticesCode) * q
 
 -- | Corner @k@ of a hull in the body's frame @(a, b)@, counter-clockwise: a
 -- box's from @(−p, −q)@, a capsule's segment from @(−p, 0)@ to @(p, 0)@, a
@@ -154,3 +172,183 @@ hullMass code p q density =
       capI = rectI + discI
       pick b c = select (0.5 - abs (code - boxCode)) b c
   in (pick boxM capM, pick boxI capI)
+
+-- Convex polygons ---------------------------------------------------------
+--
+-- A polygon's corners come as a list of 'Manifold.ContactManifold.maxHullCorners'
+-- points of which the first @n@ count (@n@ a scalar, so that the page's
+-- engine takes any count at run time); its radius @r@ rounds it (the points
+-- within @r@ of it, as Box2D's rounded polygons).
+
+-- | 1 when corner @k@ is one of the first @n@, else 0.
+counted :: Field a => a -> Int -> a
+counted n k = select (n - fromIntegral k - 0.5) 1 0
+
+-- | Corner @j@ of the list, @j@ a scalar (0 when no corner has that index).
+cornerAt :: Field a => [(a, a)] -> a -> (a, a)
+cornerAt cs j =
+  let pick f = sum [is j (fromIntegral k) * f c | (k, c) <- zip [0 :: Int ..] cs]
+  in (pick fst, pick snd)
+
+-- | The corner after corner @k@ of the first @n@ (the first after the last).
+nextOf :: Field a => a -> [(a, a)] -> Int -> (a, a)
+nextOf n cs k =
+  let (a, b) = if k + 1 < length cs then cs !! (k + 1) else head cs
+      (a0, b0) = head cs
+      within = n - fromIntegral k - 1.5
+  in (select within a a0, select within b b0)
+
+-- | The corner before corner @k@ of the first @n@ (the last before the first).
+previousOf :: Field a => a -> [(a, a)] -> Int -> (a, a)
+previousOf n cs k
+  | k == 0 = cornerAt cs (n - 1)
+  | otherwise = cs !! (k - 1)
+
+cross2 :: Num a => (a, a) -> (a, a) -> a
+cross2 (a, b) (c, d) = a * d - b * c
+
+dot2 :: Num a => (a, a) -> (a, a) -> a
+dot2 (a, b) (c, d) = a * c + b * d
+
+minus2 :: Num a => (a, a) -> (a, a) -> (a, a)
+minus2 (a, b) (c, d) = (a - c, b - d)
+
+-- | A polygon's first @n@ corners counter-clockwise in the body's frame
+-- (turning from @a@ towards @b@): as given, or reversed when given
+-- clockwise.
+--
+-- >>> take 3 (orientCorners 3 [(0, 0), (0, 1), (1, 0), (0, 0 :: Double)])
+-- [(1.0,0.0),(0.0,1.0),(0.0,0.0)]
+orientCorners :: Field a => a -> [(a, a)] -> [(a, a)]
+orientCorners n cs =
+  let twiceArea = sum [counted n k * cross2 c (nextOf n cs k) | (k, c) <- zip [0 ..] cs]
+      reversed k = cornerAt cs (n - 1 - fromIntegral k)
+  in [ (select twiceArea a ra, select twiceArea b rb) | (k, (a, b)) <- zip [0 :: Int ..] cs, let (ra, rb) = reversed k ]
+
+-- | The area, first moment @(Sx, Sy)@ and polar second moment about the
+-- frame's origin of a counter-clockwise convex polygon rounded by @r@:
+-- the triangles from the origin to each edge (signed, so the origin may
+-- lie anywhere), the rectangle of width @r@ out of each edge, and the
+-- circular sector of radius @r@ at each corner, between its edges'
+-- normals.
+--
+-- >>> polygonMoments 4 0 [(-1, -1), (1, -1), (1, 1), (-1, 1 :: Double)]
+-- (4.0,0.0,0.0,2.6666666666666665)
+polygonMoments :: Field a => a -> a -> [(a, a)] -> (a, a, a, a)
+polygonMoments n r cs =
+  let pieces = [ scaled (counted n k) (corner k c) | (k, c) <- zip [0 ..] cs ]
+      scaled w (m, x, y, j) = (w * m, w * x, w * y, w * j)
+      add4 (a, b, c, d) (e, f, g, h) = (a + e, b + f, c + g, d + h)
+      corner k c@(ax, ay) =
+        let nextC@(bx, by) = nextOf n cs k
+            prevC = previousOf n cs k
+            -- the triangle from the origin to the edge from c
+            tri = cross2 c nextC / 2
+            triX = tri * (ax + bx) / 3
+            triY = tri * (ay + by) / 3
+            triJ = tri * (dot2 c c + dot2 c nextC + dot2 nextC nextC) / 6
+            -- the rectangle out of that edge
+            (ex, ey) = minus2 nextC c
+            len = sqrt (ex * ex + ey * ey)
+            (nx, ny) = outward (ex, ey) len
+            rect = len * r
+            mx = (ax + bx) / 2 + r / 2 * nx
+            my = (ay + by) / 2 + r / 2 * ny
+            rectJ = rect * (len * len + r * r) / 12 + rect * (mx * mx + my * my)
+            -- the sector at c, between the normals of the edges into and out of it
+            (px, py) = minus2 c prevC
+            (qx, qy) = outward (px, py) (sqrt (px * px + py * py))
+            (sx, sy) = (qx + nx, qy + ny)
+            (dx, dy) = (nx - qx, ny - qy)
+            sumLen = sqrt (sx * sx + sy * sy)
+            angle = 2 * atanF (sqrt (dx * dx + dy * dy) / maxF sumLen 1e-300)
+            sector = angle * r * r / 2
+            reach = select (angle - 1e-9) (4 * r * sinF (angle / 2) / (3 * angle)) (2 * r / 3)
+            (ux, uy) = (select sumLen (sx / sumLen) qx, select sumLen (sy / sumLen) qy)
+            (gx, gy) = (ax + reach * ux, ay + reach * uy)
+            sectorJ = angle * r * r * r * r / 4 - sector * reach * reach + sector * (gx * gx + gy * gy)
+        in ( tri + rect + sector
+           , triX + rect * mx + sector * gx
+           , triY + rect * my + sector * gy
+           , triJ + rectJ + sectorJ )
+  in foldr add4 (0, 0, 0, 0) pieces
+  where
+    outward (ex, ey) len = (select len (ey / len) 0, select len (negate ex / len) 0)
+
+-- | The corners moved so that the rounded polygon's centroid is the
+-- origin (the body's centre is its centre of mass), for a
+-- counter-clockwise polygon.
+--
+-- >>> take 3 (centredCorners 3 0 [(0, 0), (3, 0), (0, 3), (0, 0 :: Double)])
+-- [(-1.0,-1.0),(2.0,-1.0),(-1.0,2.0)]
+centredCorners :: Field a => a -> a -> [(a, a)] -> [(a, a)]
+centredCorners n r cs =
+  let (m, sx, sy, _) = polygonMoments n r cs
+      cx = sx / m
+      cy = sy / m
+  in [ (a - cx, b - cy) | (a, b) <- cs ]
+
+-- | The mass and moment of inertia about the origin of a rounded
+-- counter-clockwise polygon at a density (about its centre of mass once
+-- 'centredCorners' has moved it).
+--
+-- >>> polygonMass 3 0 [(-1, -1), (2, -1), (-1, 2), (0, 0 :: Double)] 2 -- a right triangle's 9 and 9·18/18
+-- (9.0,9.0)
+polygonMass :: Field a => a -> a -> [(a, a)] -> a -> (a, a)
+polygonMass n r cs density =
+  let (m, _, _, j) = polygonMoments n r cs
+  in (density * m, density * j)
+
+-- | How far a rounded polygon reaches from the origin: its farthest
+-- corner's distance and its radius.
+--
+-- >>> polygonReach 3 0.5 [(3, 4), (0, 1), (0, -1), (10, 10 :: Double)]
+-- 5.5
+polygonReach :: Field a => a -> a -> [(a, a)] -> a
+polygonReach n r cs = r + foldr maxF 0 [ counted n k * sqrt (dot2 c c) | (k, c) <- zip [0 ..] cs ]
+
+-- | What a rounded counter-clockwise polygon's slop and margins scale by
+-- (its 'Manifold.World.Size'): the distance from the origin to its nearest
+-- edge, and its radius (a thin plank's half thickness).
+--
+-- >>> polygonThickness 4 0 [(-2, -1), (2, -1), (2, 1), (-2, 1 :: Double)]
+-- 1.0
+polygonThickness :: Field a => a -> a -> [(a, a)] -> a
+polygonThickness n r cs =
+  r + foldr minF 1e300
+    [ select (n - fromIntegral k - 0.5) (edgeDistance c (nextOf n cs k)) 1e300 | (k, c) <- zip [0 :: Int ..] cs ]
+  where
+    edgeDistance c d = let (ex, ey) = minus2 d c in cross2 (ex, ey) c / maxF (sqrt (ex * ex + ey * ey)) 1e-300 * (-1)
+
+-- | Where the ray from the origin at angle θ (from the body's direction)
+-- leaves a rounded counter-clockwise polygon holding the origin: where it
+-- leaves the polygon with its edges pushed out by @r@, unless that point
+-- lies beyond a corner (past the end of the edge into it and before the
+-- start of the edge out of it): then where it leaves that corner's disc.
+--
+-- >>> verticesOutline 4 0 [(-2, -1), (2, -1), (2, 1), (-2, 1 :: Double)] 0
+-- 2.0
+-- >>> verticesOutline 4 1 [(-2, -1), (2, -1), (2, 1), (-2, 1 :: Double)] (pi / 2)
+-- 2.0
+verticesOutline :: Field a => a -> a -> [(a, a)] -> a -> a
+verticesOutline n r cs theta =
+  let u@(ux, uy) = (cosF theta, sinF theta)
+      numbered = zip [0 :: Int ..] cs
+      -- the pushed-out edges
+      exitAt k c =
+        let (ex, ey) = minus2 (nextOf n cs k) c
+            len = maxF (sqrt (ex * ex + ey * ey)) 1e-300
+            nrm = (ey / len, negate ex / len)
+            facing = dot2 u nrm
+        in select (minF facing (n - fromIntegral k - 0.5)) ((dot2 c nrm + r) / maxF facing 1e-300) 1e300
+      mitred = foldr minF 1e300 [ exitAt k c | (k, c) <- numbered ]
+      x = (mitred * ux, mitred * uy)
+      rounded k c acc =
+        let d = minus2 x c
+            into = minus2 c (previousOf n cs k)
+            outOf = minus2 (nextOf n cs k) c
+            along = dot2 u c
+            disc = along + sqrt (maxF (r * r - dot2 c c + along * along) 0)
+            beyond = minF (minF (dot2 d into) (negate (dot2 d outOf))) (n - fromIntegral k - 0.5)
+        in select beyond disc acc
+  in foldr (\(k, c) acc -> rounded k c acc) mitred numbered

@@ -14,7 +14,7 @@ import Linear.Metric (norm)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^-^))
 
-import Control.Monad (forM_)
+import Control.Monad (forM, forM_)
 
 import Manifold.Body (PolygonParams (..), massIntegrals)
 import Manifold.ContactManifold (maxHullCorners)
@@ -42,14 +42,18 @@ data BodyArgs s = BodyArgs
   , baNormal :: V3 s -- ^ the saved normal (restoring only)
   , baFriction :: s -- ^ its friction coefficient, or −1: the scene's
   , baRestitution :: s -- ^ its restitution, or −1: the scene's
-  , baShape :: s -- ^ the shape's code ("Manifold.Hull": 0 a circle, −1 a box, −2 a capsule, 3 or more a regular polygon, 'outlineCode' one's own)
-  , baShapeP :: s -- ^ the shape's first number (a box's half-extent along its direction, a capsule's half length)
-  , baShapeQ :: s -- ^ its second (a box's half-extent across, a capsule's radius)
+  , baShape :: s -- ^ the shape's code ("Manifold.Hull": 0 a circle, −1 a box, −2 a capsule, −3 a convex polygon, 3 or more a regular polygon, 'outlineCode' one's own)
+  , baShapeP :: s -- ^ the shape's first number (a box's half-extent along its direction, a capsule's half length, a convex polygon's count of corners)
+  , baShapeQ :: s -- ^ its second (a box's half-extent across, a capsule's or a polygon's radius)
   }
 
 -- | Add a body with the given outline (for size 1). A box or a capsule
 -- takes its size from its numbers ('hullSize') and its mass in closed
--- form ('hullMass'); every body with a hull gets its corners
+-- form ('hullMass'); a convex polygon its corners from @cornersIn@ (@a@
+-- and @b@ of each, 'maxHullCorners' of them, the first 'baShapeP'
+-- counting), counter-clockwise ('orientCorners') and moved so that its
+-- centre of mass is the body's centre ('centredCorners'), and its size,
+-- mass and outline from them; every body with a hull gets its corners
 -- ('hullCorner'). Sets 'LastAdded' to its
 -- index, or to −1 when the world is full or the position does not project
 -- onto the surface, or to −2 when a restored body's frame does not fit the
@@ -60,8 +64,8 @@ data BodyArgs s = BodyArgs
 -- body (what a saved scene holds) takes its position, velocity, axis and
 -- normal as they were saved, bit for bit: projecting them again would move
 -- them in the last bits, and a pile would run on differently.
-addBodyWith :: Imp m => Space -> Layout -> WorldArrays (Array m) -> (Scalar m -> Scalar m) -> BodyArgs (Scalar m) -> m ()
-addBodyWith sp l w outline b = do
+addBodyWith :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Array m -> (Scalar m -> Scalar m) -> BodyArgs (Scalar m) -> m ()
+addBodyWith sp l w cornersIn outlineGiven b = do
   count <- readMeta w BodyCount
   cap <- readMeta w Capacity
   let f = spaceField sp
@@ -86,17 +90,26 @@ addBodyWith sp l w outline b = do
           write3 (wAxis w) i axis'
           write3 (wNormal w) i n
           let code = baShape b
-          size <- share (hullSize code (baShapeP b) (baShapeQ b) (baSize b))
-          corners <- share (hullCorners code)
+              p = baShapeP b
+              q = baShapeQ b
+          convex <- share (isVertices code)
+          given <- forM [0 .. maxHullCorners - 1] $ \k ->
+            (,) <$> readArray cornersIn (fromIntegral (2 * k)) <*> readArray cornersIn (fromIntegral (2 * k + 1))
+          oriented <- mapM share2 (orientCorners p given)
+          own <- mapM share2 (centredCorners p q oriented)
+          size <- share (select convex (polygonReach p q own) (hullSize code p q (baSize b)))
+          corners <- share (hullCorners code p)
+          let outline theta = select convex (verticesOutline p q own theta / size) (outlineGiven theta)
           (mOutline, iOutline) <- massIntegrals outline size (baDensity b)
-          let (mHull, iHull) = hullMass code (baShapeP b) (baShapeQ b) (baDensity b)
-          m <- share (select (corners - 1.5) mHull mOutline)
-          inertia <- share (select (corners - 1.5) iHull iOutline)
+          let (mHull, iHull) = hullMass code p q (baDensity b)
+              (mPolygon, iPolygon) = polygonMass p q own (baDensity b)
+          m <- share (select convex mPolygon (select (corners - 1.5) mHull mOutline))
+          inertia <- share (select convex iPolygon (select (corners - 1.5) iHull iOutline))
           writeSlot w i Angle (baAngle b)
           writeSlot w i Omega (movable * baOmega b)
           writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
           writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
-          writeSlot w i Size (hullThickness code (baShapeP b) (baShapeQ b) size)
+          writeSlot w i Size (select convex (polygonThickness p q own) (hullThickness code p q size))
           -- awake (a saved scene's sleeping body is put to sleep after: 'setSleeping')
           writeSlot w i Asleep 0
           writeSlot w i SleepTimer 0
@@ -105,11 +118,11 @@ addBodyWith sp l w outline b = do
           writeSlot w i BodyRestitution (maxF (-1) (baRestitution b))
           writeSlot w i Corners corners
           let hull = fromIntegral hullStride * i
-          writeArray (wHull w) hull (hullRounding code (baShapeQ b) size)
-          forM_ [0 .. maxHullCorners - 1] $ \k -> do
-            let (a, c) = hullCorner code (baShapeP b) (baShapeQ b) k
-            writeArray (wHull w) (hull + hullLocalAt (fromIntegral k)) a
-            writeArray (wHull w) (hull + hullLocalAt (fromIntegral k) + 1) c
+          writeArray (wHull w) hull (hullRounding code q size)
+          forM_ (zip [0 .. maxHullCorners - 1] own) $ \(k, (ownA, ownB)) -> do
+            let (a, c) = hullCorner code p q k
+            writeArray (wHull w) (hull + hullLocalAt (fromIntegral k)) (select convex ownA a)
+            writeArray (wHull w) (hull + hullLocalAt (fromIntegral k) + 1) (select convex ownB c)
           outlineRadiiInto l outline w i size
           let nd = polyDirections (polygon l)
           reach <- newRef 0
@@ -121,7 +134,7 @@ addBodyWith sp l w outline b = do
           writeArray (wBodyPrev w) (2 * i + 1) 0
           writeMeta w BodyCount (count + 1)
           writeMeta w LastAdded count
-          polygoniseBody sp l w i)
+          polygoniseInline sp l w i)
       (writeMeta w LastAdded (-2)))
     (writeMeta w LastAdded (-1))
 
@@ -196,3 +209,7 @@ removeBody sp l w i = do
     active <- readMouse w MActive
     whenPositive (minF active (0.5 - abs (grabbed - toScalar i))) (writeMouse w MActive 0)
     whenPositive (minF active (0.5 - abs (grabbed - (count - 1)))) (writeMouse w MBody (toScalar i))
+
+-- | Share both numbers of a pair.
+share2 :: Imp m => (Scalar m, Scalar m) -> m (Scalar m, Scalar m)
+share2 (a, b) = (,) <$> share a <*> share b

@@ -49,11 +49,11 @@ stepProcedures sp l = [ (Procedure (phaseFunction name) worldParams [], \_ _ -> 
 pageProcedures :: Space -> Layout -> [(Procedure, [StagedArray] -> [E] -> Staged ())]
 pageProcedures sp l = stepProcedures sp l ++
   [ (Procedure "polygonise" worldParams [], \_ _ -> polygoniseEvery sp l stagedArrays)
-  , (Procedure "addBody" worldParams
+  , (Procedure "addBody" (worldParams ++ ["corners"])
       ["shape", "shapeP", "shapeQ", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega", "restore", "ax", "ay", "az", "nx", "ny", "nz"
       , "friction", "restitution"],
-      \_ [code, p, q, size, density, static, px, py, pz, vx, vy, vz, angle, omega, restore, ax, ay, az, nx, ny, nz, mu, e] ->
-         addBodyWith sp l stagedArrays (codeOutline code p q)
+      \arrays [code, p, q, size, density, static, px, py, pz, vx, vy, vz, angle, omega, restore, ax, ay, az, nx, ny, nz, mu, e] ->
+         addBodyWith sp l stagedArrays (last arrays) (codeOutline code p q)
            (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega restore (V3 ax ay az) (V3 nx ny nz) mu e
               code p q))
   , (Procedure "removeBody" worldParams ["index"],

@@ -147,8 +147,11 @@ shape path = \case
   A.String "square" -> pure SquareShape
   A.String s -> problem path ("unknown shape " ++ show (T.unpack s) ++ "; the shapes are " ++ shapeList)
   v@(A.Object _) -> do
-    o <- object path ["polygon", "box", "capsule"] v
-    case [k | k <- ["polygon", "box", "capsule"], isJust (member o k)] of
+    o <- object path ["polygon", "box", "capsule", "vertices", "radius"] v
+    let kinds = [k | k <- ["polygon", "box", "capsule", "vertices"], isJust (member o k)]
+    when (isJust (member o "radius") && kinds /= ["vertices"]) $
+      problem (path ++ ".radius") "is given with vertices only"
+    case kinds of
       ["polygon"] -> do
         n <- required path o "polygon" number
         when (n /= fromIntegral (round n :: Int) || n < 3 || n > 64) $
@@ -156,10 +159,21 @@ shape path = \case
         pure (PolygonShape (round n))
       ["box"] -> uncurry BoxShape <$> required path o "box" (pair "two half-extents [hx, hy]")
       ["capsule"] -> uncurry CapsuleShape <$> required path o "capsule" (pair "[halfLength, radius]")
-      _ -> problem path "must have one key: polygon, box or capsule"
+      ["vertices"] -> VerticesShape <$> required path o "vertices" corners <*> optional path o "radius" 0 nonNegative
+      _ -> problem path "must have one key: polygon, box, capsule or vertices"
   _ -> problem path ("must be one of " ++ shapeList)
   where
-    shapeList = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]} and {\"capsule\": [halfLength, radius]}"
+    shapeList = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]}, {\"capsule\": [halfLength, radius]} and {\"vertices\": [[a, b], ...]}"
+    corners at = \case
+      A.Array a | V.length a >= 3 && V.length a <= 8 -> do
+        cs <- sequence [ corner (at ++ "[" ++ show k ++ "]") c | (k, c) <- zip [0 :: Int ..] (V.toList a) ]
+        unless (convexRound cs) $
+          problem at "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)"
+        pure cs
+      _ -> problem at "must be an array of 3 to 8 corners [a, b]"
+    corner at = \case
+      A.Array a | V.length a == 2 -> (,) <$> number (at ++ "[0]") (a V.! 0) <*> number (at ++ "[1]") (a V.! 1)
+      _ -> problem at "must be two numbers [a, b]"
     pair what at = \case
       A.Array a | V.length a == 2 -> (,) <$> positive (at ++ "[0]") (a V.! 0) <*> positive (at ++ "[1]") (a V.! 1)
       _ -> problem at ("must be " ++ what)
@@ -170,7 +184,7 @@ bodySize :: Path -> KM.KeyMap A.Value -> ShapeKind -> P Double
 bodySize path o k = case shapeSize k of
   Nothing -> required path o "size" positive
   Just s
-    | isJust (member o "size") -> problem (path ++ ".size") "is not given with a box or a capsule (its numbers are its size)"
+    | isJust (member o "size") -> problem (path ++ ".size") "is not given with a box, a capsule or vertices (its numbers are its size)"
     | otherwise -> pure s
 
 body :: Path -> A.Value -> P BodySpec
@@ -405,6 +419,7 @@ sceneJSON s = A.object
       PolygonShape n -> A.object ["polygon" A..= n]
       BoxShape p q -> A.object ["box" A..= [p, q]]
       CapsuleShape p q -> A.object ["capsule" A..= [p, q]]
+      VerticesShape cs r -> A.object (("vertices" A..= [[a, b] | (a, b) <- cs]) : ["radius" A..= r | r /= 0])
     v3 (V3 x y z) = [x, y, z]
     keyJSON k = let x = paramValue (sceneParams s) (keyParam k) in case keyRange k of
       Switch -> A.Bool (x > 0)
@@ -525,3 +540,19 @@ sceneOfWorld s w = do
       nj <- jointCount w
       joints <- mapM (jointOfWorld w) [0 .. nj - 1]
       pure (Right s { sceneBodies = bodies, sceneJoints = joints })
+
+-- | Whether corners go round a convex polygon in order, either way: each
+-- edge's line has every other corner strictly on one side, the same side
+-- for every edge (so no three corners in a line, no corner repeated, no
+-- polygon winding twice).
+convexRound :: [(Double, Double)] -> Bool
+convexRound cs =
+  let n = length cs
+      at k = cs !! (k `mod` n)
+      side k j =
+        let (ax, ay) = at k
+            (bx, by) = at (k + 1)
+            (cx, cy) = at j
+        in signum ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+      sides = [ side k j | k <- [0 .. n - 1], j <- [0 .. n - 1], j /= k, j /= (k + 1) `mod` n ]
+  in all (== 1) sides || all (== -1) sides

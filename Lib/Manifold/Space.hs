@@ -216,6 +216,7 @@ data ShapeKind
   | PolygonShape Int -- ^ a regular polygon with this many sides (3 or more)
   | BoxShape Double Double -- ^ half-extents along the body's direction and across it
   | CapsuleShape Double Double -- ^ a segment along the body's direction (half its length), rounded by a radius
+  | VerticesShape [(Double, Double)] Double -- ^ a convex polygon of 3 to 8 corners @(a, b)@ in the body's frame (placed by its centre of mass), rounded by a radius (0: sharp)
   deriving (Show, Eq)
 
 -- | A body of the default scene: where it starts (projected onto the surface

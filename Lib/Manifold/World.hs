@@ -81,6 +81,7 @@ module Manifold.World
   , polygoniseAll
   , polygoniseEvery
   , polygoniseBody
+  , polygoniseInline
   , walkCorners
   , hasConstantGradient
   , toList3
@@ -717,6 +718,14 @@ polygoniseEvery sp l w = do
 -- the surface by about @h²/(8R)@, inside the page's depth tolerance).
 polygoniseBody :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
 polygoniseBody sp l w i = polygoniseOutline sp l w i >> walkCorners sp w i
+
+-- | 'polygoniseBody' with the corners walked in line: for a procedure
+-- that takes arrays besides the world's (the page's addBody, given a
+-- polygon's corners), which cannot call the step's subroutines (a
+-- subroutine takes its caller's arrays, so it would be staged twice,
+-- differently, under one name).
+polygoniseInline :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+polygoniseInline sp l w i = polygoniseOutline sp l w i >> cornersOf sp w i
 
 -- | 'polygoniseBody''s outline, without the hull's corners.
 polygoniseOutline :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()

@@ -88,15 +88,21 @@ var ManifoldWebWorld = (function (W) {
     if (!Array.isArray(v) || v.length !== 3) problem(path, "must be an array of three numbers [x, y, z]");
     return /** @type {Manifold.Vec3} */ (v.map(function (x, k) { return number(path + "[" + k + "]", x); }));
   }
-  const SHAPE_LIST = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]} and {\"capsule\": [halfLength, radius]}";
+  const SHAPE_LIST = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]}, {\"capsule\": [halfLength, radius]} and {\"vertices\": [[a, b], ...]}";
   /** @param {string} path @param {unknown} v @returns {Manifold.Shape} */
   function shape(path, v) {
     if (v === "circle" || v === "square") return v;
     if (typeof v === "string") problem(path, "unknown shape " + JSON.stringify(v) + "; the shapes are " + SHAPE_LIST);
     if (isObject(v)) {
-      object(path, ["polygon", "box", "capsule"], v);
-      const kinds = ["polygon", "box", "capsule"].filter(function (k) { return k in v; });
-      if (kinds.length !== 1) problem(path, "must have one key: polygon, box or capsule");
+      object(path, ["polygon", "box", "capsule", "vertices", "radius"], v);
+      const kinds = ["polygon", "box", "capsule", "vertices"].filter(function (k) { return k in v; });
+      if ("radius" in v && !(kinds.length === 1 && kinds[0] === "vertices")) problem(path + ".radius", "is given with vertices only");
+      if (kinds.length !== 1) problem(path, "must have one key: polygon, box, capsule or vertices");
+      if (kinds[0] === "vertices") {
+        const r = "radius" in v ? nonNegative(path + ".radius", v.radius) : 0;
+        const vs = corners(path + ".vertices", v.vertices);
+        return r ? { vertices: vs, radius: r } : { vertices: vs };
+      }
       if (kinds[0] === "polygon") {
         const n = number(path + ".polygon", v.polygon);
         if (n !== Math.round(n) || n < 3 || n > 64) problem(path + ".polygon", "must be a whole number of sides from 3 to 64");
@@ -110,12 +116,35 @@ var ManifoldWebWorld = (function (W) {
     }
     return problem(path, "must be one of " + SHAPE_LIST);
   }
+  // A convex polygon's corners, 3 to 8 pairs [a, b] going round it in
+  // order, either way (Manifold.Scene's convexRound).
+  /** @param {string} path @param {unknown} v @returns {[number, number][]} */
+  function corners(path, v) {
+    if (!Array.isArray(v) || v.length < 3 || v.length > 8) problem(path, "must be an array of 3 to 8 corners [a, b]");
+    /** @type {[number, number][]} */
+    const cs = v.map(function (c, k) {
+      const at = path + "[" + k + "]";
+      if (!Array.isArray(c) || c.length !== 2) problem(at, "must be two numbers [a, b]");
+      return [number(at + "[0]", c[0]), number(at + "[1]", c[1])];
+    });
+    const n = cs.length, sides = [];
+    for (let k = 0; k < n; k++) {
+      const a = cs[k], b = cs[(k + 1) % n];
+      for (let j = 0; j < n; j++) {
+        if (j === k || j === (k + 1) % n) continue;
+        sides.push(Math.sign((b[0] - a[0]) * (cs[j][1] - a[1]) - (b[1] - a[1]) * (cs[j][0] - a[0])));
+      }
+    }
+    const round = sides.every(function (x) { return x === 1; }) || sides.every(function (x) { return x === -1; });
+    if (!round) problem(path, "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)");
+    return cs;
+  }
   // A body's size: given, or a box's or a capsule's from its numbers (then
   // it is not given), as Manifold.Scene takes it.
   /** @param {string} path @param {Record<string, unknown>} o @param {Manifold.Shape} s */
   function bodySize(path, o, s) {
     if (!sizedByShape(s)) return required(path, o, "size", positive);
-    if ("size" in o) problem(path + ".size", "is not given with a box or a capsule (its numbers are its size)");
+    if ("size" in o) problem(path + ".size", "is not given with a box, a capsule or vertices (its numbers are its size)");
     return reachOf(s, 0);
   }
   // The bodies' awake and island keys (after every body, as Manifold.Scene
@@ -398,13 +427,27 @@ var ManifoldWebWorld = (function (W) {
     if (s === "square") return [4, 0, 0];
     if ("polygon" in s) return [s.polygon, 0, 0];
     if ("box" in s) return [c.box, s.box[0], s.box[1]];
+    if ("vertices" in s) return [c.vertices, s.vertices.length, s.radius || 0];
     return [c.capsule, s.capsule[0], s.capsule[1]];
+  }
+  // A shape's corners as addBody takes them: a convex polygon's a0, b0, ...
+  // (Manifold.shapes.maxCorners of them, the unused ones 0), else all 0.
+  /** @param {Manifold.Shape} s @param {Float64Array} out */
+  function cornersInto(s, out) {
+    out.fill(0);
+    if (typeof s === "object" && "vertices" in s) s.vertices.forEach(function (c, k) { out[2 * k] = c[0]; out[2 * k + 1] = c[1]; });
+    return out;
   }
   /** @param {Manifold.Shape} s @returns {Manifold.Shape} */
   function copyShape(s) {
     if (typeof s === "string") return s;
     if ("polygon" in s) return { polygon: s.polygon };
     if ("box" in s) return { box: [s.box[0], s.box[1]] };
+    if ("vertices" in s) {
+      /** @type {[number, number][]} */
+      const vs = s.vertices.map(function (c) { return /** @type {[number, number]} */ ([c[0], c[1]]); });
+      return s.radius ? { vertices: vs, radius: s.radius } : { vertices: vs };
+    }
     return { capsule: [s.capsule[0], s.capsule[1]] };
   }
   // Whether a shape's numbers are its size (a box, a capsule: a scene gives no size with them).
@@ -419,6 +462,10 @@ var ManifoldWebWorld = (function (W) {
   /** @param {Manifold.Shape} shape @param {number} size */
   function reachOf(shape, size) {
     const a = shapeArgs(shape);
+    if (typeof shape === "object" && "vertices" in shape) {
+      const args = /** @type {[number, number, ...number[]]} */ ([a[1], a[2]].concat(Array.from(cornersInto(shape, new Float64Array(2 * shapes().maxCorners)))));
+      return shapes().polygonSize.apply(null, args);
+    }
     return shapes().size(a[0], a[1], a[2], size);
   }
 
@@ -457,6 +504,7 @@ var ManifoldWebWorld = (function (W) {
       this.measured = null;    // the engine's measures write here (measureOut)
       /** @type {Float64Array | null} */
       this.anchorsOut = null;  // jointAnchors writes here
+      this.cornersIn = new Float64Array(2 * shapes().maxCorners);  // addBody reads a convex polygon's corners here
       /** @type {Float64Array | null} */
       this.pathsOut = null;    // jointPaths writes here
       this.capacity = 0;
@@ -537,10 +585,11 @@ var ManifoldWebWorld = (function (W) {
       }
       // a saved body (axis and normal given) is restored as saved
       const axis = b.axis || [0, 0, 0], normal = b.normal || [0, 0, 0];
-      E.addBody.apply(null, this.args(shapeArgs(b.shape).concat([b.size, b.density, b.static ? 1 : 0,
+      const corners = cornersInto(b.shape, this.cornersIn);
+      E.addBody.apply(null, /** @type {(Float64Array | number)[]} */ (this.arrays).concat([corners], shapeArgs(b.shape), [b.size, b.density, b.static ? 1 : 0,
         b.p[0], b.p[1], b.p[2], b.v[0], b.v[1], b.v[2], b.angle, b.omega, b.axis ? 1 : 0,
         axis[0], axis[1], axis[2], normal[0], normal[1], normal[2],
-        b.friction === undefined ? -1 : b.friction, b.restitution === undefined ? -1 : b.restitution])));
+        b.friction === undefined ? -1 : b.friction, b.restitution === undefined ? -1 : b.restitution]));
       const i = this.meta("lastAdded");
       if (i === -2) throw new Error(E.frameMisfit);
       const a = this.a;

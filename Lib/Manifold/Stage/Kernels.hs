@@ -22,7 +22,8 @@ import Numeric (showHex)
 
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
-import Manifold.Hull (boxCode, capsuleCode, circleCode, hullSize)
+import Manifold.ContactManifold (maxHullCorners)
+import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, hullSize, orientCorners, polygonReach, verticesCode)
 import Manifold.Metric (gaussianCurvatureIn, metricName)
 import Manifold.Params (bodyKeys, keyName, materialKeys)
 import Manifold.Space
@@ -143,9 +144,14 @@ spaceIndexScript spaces = unlines $
   , "// the keys of a scene's body, in order, and those that give the body its own material (taking the scene key's values)"
   , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
   , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
-  , "// addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Lib/Manifold/Hull.hs)"
-  , "globalThis.Manifold.shapes = { codes: { circle: " ++ code circleCode ++ ", box: " ++ code boxCode ++ ", capsule: " ++ code capsuleCode ++ " }, size: "
-      ++ dropWhileEnd (== '\n') (printFunction JavaScript "hullSize" (FnType ["code", "p", "q", "size"] False) [hullSize (sym "code") (sym "p") (sym "q") (sym "size")]) ++ " };"
+  , "// addBody's shape codes (a regular polygon's is its number of sides), a body's size from its shape's code, its two numbers and its given size,"
+  , "// and a convex polygon's from its count, its radius and its corners a0, b0, ... a7, b7 (Lib/Manifold/Hull.hs)"
+  , "globalThis.Manifold.shapes = { codes: { circle: " ++ code circleCode ++ ", box: " ++ code boxCode ++ ", capsule: " ++ code capsuleCode
+      ++ ", vertices: " ++ code verticesCode ++ " }, maxCorners: " ++ show maxHullCorners ++ ", size: "
+      ++ dropWhileEnd (== '\n') (printFunction JavaScript "hullSize" (FnType ["code", "p", "q", "size"] False) [hullSize (sym "code") (sym "p") (sym "q") (sym "size")])
+      ++ ", polygonSize: "
+      ++ dropWhileEnd (== '\n') (printFunction JavaScript "polygonSize" (FnType ("n" : "r" : cornerNames) False) [polygonSizeOf])
+      ++ " };"
   , "globalThis.Manifold.spaceIndex = ["
   ] ++
   [ "  { name: " ++ jsString (spaceName s) ++ ", description: " ++ jsString (spaceDescription s)
@@ -155,7 +161,14 @@ spaceIndexScript spaces = unlines $
     ++ ", script: " ++ jsString (spaceScriptFile s) ++ " },"
   | s <- spaces ] ++
   [ "];" ]
-  where code c = show (round (c :: Double) :: Int)
+  where
+    code c = show (round (c :: Double) :: Int)
+    cornerNames = concat [ [ "a" ++ show k, "b" ++ show k ] | k <- [0 .. maxHullCorners - 1] ]
+    polygonSizeOf =
+      let n = sym "n"
+          r = sym "r"
+          corners = [ (sym ("a" ++ show k), sym ("b" ++ show k)) | k <- [0 .. maxHullCorners - 1] ]
+      in polygonReach n r (centredCorners n r (orientCorners n corners))
 
 num :: Double -> String
 num = renderLiteral JavaScript
@@ -212,6 +225,8 @@ shapeJs SquareShape = jsString "square"
 shapeJs (PolygonShape n) = "{ polygon: " ++ show n ++ " }"
 shapeJs (BoxShape p q) = "{ box: [" ++ num p ++ ", " ++ num q ++ "] }"
 shapeJs (CapsuleShape p q) = "{ capsule: [" ++ num p ++ ", " ++ num q ++ "] }"
+shapeJs (VerticesShape cs r) = "{ vertices: [" ++ intercalate ", " [ "[" ++ num a ++ ", " ++ num b ++ "]" | (a, b) <- cs ] ++ "]"
+  ++ (if r /= 0 then ", radius: " ++ num r else "") ++ " }"
 
 vecJs :: V3 Double -> String
 vecJs (V3 a b c) = "[" ++ intercalate ", " (map num [a, b, c]) ++ "]"
