@@ -386,11 +386,49 @@ async function testBoxBody(check, page) {
       Math.abs(Math.hypot(sh.box[0], sh.box[1]) - chosen.slider) < 1e-9 && Math.abs(chosen.body.size - chosen.slider) < 1e-9 &&
       added.length === 1 && b.shape.box && b.shape.box[0] === sh.box[0] && b.shape.box[1] === sh.box[1] && !("size" in b),
     JSON.stringify({ shown: shown, chosen: chosen, added: added.map(function (x) { return { shape: x.shape, size: x.size }; }) }));
+  // the slider moved by the keyboard: the box made anew, its length over width kept
+  await page.focus("#body-size");
+  for (let i = 0; i < 5; i++) await page.keyboard.press("ArrowRight");
+  const grown = await page.evaluate(function () {
+    const s = /** @type {HTMLInputElement} */ (document.getElementById("body-size"));
+    return { body: window.manifold.newBody(), slider: Number(s.value), step: Number(s.step) };
+  });
+  const gb = grown.body.shape && grown.body.shape.box;
+  check("the size slider moved five steps by the keyboard makes the box anew at that size, its length over width kept",
+    gb && Math.abs(grown.slider - (chosen.slider + 5 * grown.step)) < 1e-9 && Math.abs(Math.hypot(gb[0], gb[1]) - grown.slider) < 1e-9 &&
+      Math.abs(gb[0] / gb[1] - 3) < 1e-9, JSON.stringify({ chosen: chosen.slider, grown: grown }));
   await page.selectOption("#body-shape", "capsule");
   const capsule = await page.evaluate(function () { return window.manifold.newBody().shape; });
   check("and a capsule: half its length and its radius from the size and the aspect",
     capsule && capsule.capsule && Math.abs((capsule.capsule[0] + capsule.capsule[1]) / capsule.capsule[1] - 3) < 1e-9 &&
-      Math.abs(capsule.capsule[0] + capsule.capsule[1] - chosen.slider) < 1e-9, JSON.stringify(capsule));
+      Math.abs(capsule.capsule[0] + capsule.capsule[1] - grown.slider) < 1e-9, JSON.stringify(capsule));
+  // a polygon of its own corners as the new body: the control offers it, its slider scales it
+  await page.evaluate(function () { window.manifold.setNewBody({ shape: { vertices: [[0, 0], [0.1, 0], [0.05, 0.08]], radius: 0.005 } }); });
+  const own = await page.evaluate(function () {
+    const s = /** @type {HTMLInputElement} */ (document.getElementById("body-size"));
+    const option = /** @type {HTMLOptionElement} */ (document.getElementById("body-shape-vertices"));
+    return { select: /** @type {HTMLSelectElement} */ (document.getElementById("body-shape")).value, offered: !option.hidden, slider: Number(s.value),
+      reach: window.ManifoldWeb.world.reachOf({ vertices: [[0, 0], [0.1, 0], [0.05, 0.08]], radius: 0.005 }, 0),
+      min: Number(s.min), max: Number(s.max), step: Number(s.step) };
+  });
+  // the slider moved by the keyboard, eight steps up
+  await page.focus("#body-size");
+  for (let i = 0; i < 8; i++) await page.keyboard.press("ArrowRight");
+  const scaled = await page.evaluate(function () {
+    const s = /** @type {HTMLInputElement} */ (document.getElementById("body-size"));
+    return { body: window.manifold.newBody(), slider: Number(s.value) };
+  });
+  const v = scaled.body.shape && scaled.body.shape.vertices;
+  const k = v ? v[1][0] / 0.1 : 0;
+  check("a convex polygon as the new body: the Body control offers it, its slider at how far it reaches, and scales it (corners and radius alike) to the slider",
+    own.select === "vertices" && own.offered && own.reach > 0.06 && own.reach < 0.065 &&
+      Math.abs(own.slider - Math.min(own.max, Math.max(own.min, own.reach))) <= own.step && v && v.length === 3 &&
+      Math.abs(k - scaled.slider / own.reach) < 1e-9 && Math.abs(v[2][1] - 0.08 * k) < 1e-9 && Math.abs(scaled.body.shape.radius - 0.005 * k) < 1e-9 &&
+      Math.abs(scaled.body.size - scaled.slider) < 1e-9 && Math.abs(scaled.slider - (own.slider + 8 * own.step)) < 1e-9,
+    JSON.stringify({ own: own, scaled: scaled }));
+  await page.selectOption("#body-shape", "circle");
+  const hiddenAgain = await page.evaluate(function () { return document.getElementById("body-shape-vertices").hidden; });
+  check("and a circle chosen, the polygon is no longer offered", hiddenAgain, String(hiddenAgain));
   // a plank on two boxes at the sphere's south pole: it stays up
   const plank = await page.evaluate(function () {
     const m = window.manifold;

@@ -17,12 +17,13 @@ var ManifoldWebInspector = (function (W) {
     version: -1,          // world.version when last shown
   };
 
-  // a shape and its size (a box's and a capsule's: its numbers)
+  // a shape and its size (a box's and a capsule's: its numbers; a polygon's: how far it reaches)
   /** @param {Manifold.Shape} s @param {number} size */
   function shapeName(s, size) {
     if (typeof s === "string") return s + " " + fixed(size);
     if ("polygon" in s) return s.polygon + "-gon " + fixed(size);
     if ("box" in s) return "box " + s.box.map(fixed).join(" by ");
+    if ("vertices" in s) return s.vertices.length + "-cornered polygon " + fixed(size) + (s.radius ? " rounded " + fixed(s.radius) : "");
     return "capsule " + s.capsule.map(fixed).join(" by ");
   }
 

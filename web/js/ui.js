@@ -231,14 +231,30 @@ var ManifoldWebUi = (function (W) {
     const staticBox = $("body-static");
     /** @type {HTMLInputElement} */
     const aspect = $("body-aspect");
+    /** @type {HTMLOptionElement} */
+    const vertexOption = $("body-shape-vertices");
     // only the chosen kind's number shows: a polygon's sides, a box's or a capsule's length over width
     const showShapeNumber = function () {
       sides.hidden = shapeSelect.value !== "polygon";
       aspect.hidden = shapeSelect.value !== "box" && shapeSelect.value !== "capsule";
     };
+    // the convex polygon the new body has (given by setNewBody: the control offers it while it is chosen)
+    /** @type {Manifold.Vertices | null} */
+    let ownPolygon = null;
     const shapeChosen = function () {
       showShapeNumber();
       const kind = shapeSelect.value;
+      if (kind !== "vertices") {
+        ownPolygon = null;
+        vertexOption.hidden = true;
+      } else if (ownPolygon !== null) {
+        // the same polygon, scaled to reach the size
+        const k = Number(sizeSlider.value) / W.ManifoldWeb.world.reachOf(ownPolygon, 0), own = ownPolygon;
+        /** @type {Manifold.Vertices} */
+        const scaled = { vertices: own.vertices.map(function (c) { return /** @type {[number, number]} */ ([k * c[0], k * c[1]]); }) };
+        if (own.radius) scaled.radius = k * own.radius;
+        return handlers.onNewBody({ shape: scaled });
+      }
       if (kind === "box" || kind === "capsule") {
         // its numbers from the size (how far it reaches from its centre) and the aspect
         const size = Number(sizeSlider.value), k = Number(aspect.value);
@@ -265,9 +281,9 @@ var ManifoldWebUi = (function (W) {
     sides.addEventListener("change", function () { if (shapeSelect.value === "polygon") shapeChosen(); });
     aspect.addEventListener("change", shapeChosen);
     sizeSlider.addEventListener("input", function () {
-      handlers.onNewBody({ size: Number(sizeSlider.value) });
-      // a box's or a capsule's size is its numbers'
-      if (!aspect.hidden) shapeChosen();
+      // a box's, a capsule's or a polygon's size is its numbers': they are made anew from the slider
+      if (!aspect.hidden || shapeSelect.value === "vertices") shapeChosen();
+      else handlers.onNewBody({ size: Number(sizeSlider.value) });
     });
     densityInput.addEventListener("change", function () { handlers.onNewBody({ density: Number(densityInput.value) }); });
     staticBox.addEventListener("change", function () { handlers.onNewBody({ static: staticBox.checked }); });
@@ -423,11 +439,16 @@ var ManifoldWebUi = (function (W) {
           shapeSelect.value = "box";
           aspect.value = String(Number((t.shape.box[0] / t.shape.box[1]).toPrecision(4)));
           shaped = Math.hypot(t.shape.box[0], t.shape.box[1]);
+        } else if ("vertices" in t.shape) {
+          shapeSelect.value = "vertices";
+          ownPolygon = t.shape;
+          shaped = W.ManifoldWeb.world.reachOf(t.shape, 0);
         } else {
           shapeSelect.value = "capsule";
           aspect.value = String(Number(((t.shape.capsule[0] + t.shape.capsule[1]) / t.shape.capsule[1]).toPrecision(4)));
           shaped = t.shape.capsule[0] + t.shape.capsule[1];
         }
+        vertexOption.hidden = ownPolygon === null;
         showShapeNumber();
         const step = Number((own / 50).toPrecision(1));
         sizeSlider.min = String(Math.max(step, own / 4));
