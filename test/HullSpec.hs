@@ -146,6 +146,25 @@ polygons = describe "convex polygons" $ do
     and (zipWith close2 locals own) `shouldBe` True
     bound <- slot BoundRadius
     bound `shouldSatisfy` (>= polygonReach 3 0.01 (padded own) - 1e-12)
+  it "makes a square and a regular polygon of up to eight sides the polygon of its corners (a side facing its direction), its mass exact; one of more sides keeps its outline" $ do
+    w <- newWorld plane (layout 3)
+    Right sq <- addBody w (BodyInit square 0.1 2 False (V3 0 0 0) (V3 0 0 0) 0 0 sceneMaterial)
+    Right oct <- addBody w (BodyInit (regularPolygon 8) 0.1 1 False (V3 1 0 0) (V3 0 0 0) 0 0 sceneMaterial)
+    Right dodeca <- addBody w (BodyInit (regularPolygon 12) 0.1 1 False (V3 2 0 0) (V3 0 0 0) 0 0 sceneMaterial)
+    let slot :: Int -> Slot -> IO Double
+        slot i f = MV.read (wScalars (nwArrays w)) (scalarSlots * i + fromEnum f)
+        local :: Int -> Int -> IO (Double, Double)
+        local i k = (,) <$> MV.read (wHull (nwArrays w)) (hullStride * i + hullLocalAt k) <*> MV.read (wHull (nwArrays w)) (hullStride * i + hullLocalAt k + 1)
+        h = 0.1 / sqrt 2
+    mapM (`slot` Corners) [sq, oct, dodeca] `shouldReturn` [4, 8, 0]
+    corners <- mapM (local sq) [0 .. 3]
+    and (zipWith close2 corners [(h, -h), (h, h), (-h, h), (-h, -h)]) `shouldBe` True
+    -- a square of side 2h: mass 4h²ρ, inertia m(2h)²/6; its Size its inradius
+    invMass <- slot sq InvMass
+    recip invMass `shouldSatisfy` closeRel 1e-12 (4 * h * h * 2)
+    invInertia <- slot sq InvInertia
+    recip invInertia `shouldSatisfy` closeRel 1e-12 (4 * h * h * 2 * (2 * h) ^ (2 :: Int) / 6)
+    slot sq Size >>= (`shouldSatisfy` closeRel 1e-12 h)
   where
     close2 (a, b) (c, d) = abs (a - c) < 1e-12 && abs (b - d) < 1e-12
 

@@ -245,21 +245,28 @@ integrateTurn g =
 --
 -- >>> areaOf circle 1
 -- 3.141592653589793
--- >>> areaOf square 1 -- 2, less what the samples miss of the corners
--- 1.9999874504246353
+-- >>> areaOf square 1 -- 2: a polygon of its corners
+-- 2.0
+-- >>> areaOf (regularPolygon 12) 1 -- 3, less what the samples miss of the corners
+-- 2.9999988790937273
 areaOf :: Shape -> Double -> Double
 areaOf s size = mass (massProperties s size 1)
 
 -- | Mass @ρ · ½∫s²dθ@ and moment of inertia @ρ · ¼∫s⁴dθ@ (the polar
 -- integral of r² over the shape), measured in the flat tangent plane as in
 -- the paper: 'massIntegrals', as the engine computes them for a body it
--- adds; a box's and a capsule's in closed form ('hullMass').
+-- adds; a box's and a capsule's in closed form ('hullMass'), and a convex
+-- polygon's, a square's and a regular polygon's of up to eight sides
+-- ('polygonMass').
 --
 -- >>> massProperties circle 1 1 -- π and π/2
 -- MassProperties {mass = 3.141592653589793, inertia = 1.5707963267948966}
 massProperties :: Shape -> Double -> Double -> MassProperties
 massProperties s size density = case fmap shapeArgs (shapeKind s) of
   Just (_, n, r) | Just (VerticesShape cs _) <- shapeKind s -> uncurry MassProperties (polygonMass n r (polygonCorners cs r) density)
+  Just (code, _, _) | isRegularHull code > 0 ->
+    let own = centredCorners code 0 (orientCorners code (regularCorners code size))
+    in uncurry MassProperties (polygonMass code 0 own density)
   Just (code, p, q) | hullCorners code p >= 2 -> uncurry MassProperties (hullMass code p q density)
   _ -> unsafePerformIO $ runNative $ do
     let Outline outline = shapeOutline s

@@ -18,6 +18,7 @@ module Manifold.Hull
   , verticesCode
   , outlineCode
   , isVertices
+  , isRegularHull
   , hullCorners
   , hullSize
   , hullThickness
@@ -29,6 +30,7 @@ module Manifold.Hull
   , capsuleOutline
   , hullMass
     -- * Convex polygons
+  , regularCorners
   , orientCorners
   , polygonMoments
   , centredCorners
@@ -60,6 +62,15 @@ is code k = select (0.5 - abs (code - k)) 1 0
 -- | 1 for a convex polygon's code ('verticesCode'), else 0.
 isVertices :: Field a => a -> a
 isVertices code = is code verticesCode
+
+-- | 1 for a square's or a regular polygon's code of 3 to
+-- 'Manifold.ContactManifold.maxHullCorners' sides (a polygon of its
+-- corners: 'regularCorners'), else 0.
+--
+-- >>> map isRegularHull [2, 3, 4, 8, 9, -1 :: Double]
+-- [0.0,1.0,1.0,1.0,0.0,0.0]
+isRegularHull :: Field a => a -> a
+isRegularHull code = select (code - 2.5) (select (8.5 - code) 1 0) 0
 
 -- | How many corners the hull of the shape with this code and first
 -- number has ('Manifold.World.Corners'): 1 for a circle (its centre,
@@ -179,6 +190,18 @@ hullMass code p q density =
 -- points of which the first @n@ count (@n@ a scalar, so that the page's
 -- engine takes any count at run time); its radius @r@ rounds it (the points
 -- within @r@ of it, as Box2D's rounded polygons).
+
+-- | A regular polygon's corners, @n@ of them (then 0 up to
+-- 'Manifold.ContactManifold.maxHullCorners'), at distance @r@ from its
+-- centre and at the angles @(2k − 1)π/n@: a side faces the body's
+-- direction, as 'Manifold.Body.polygonOutline''s.
+--
+-- >>> [(round a, round b) | (a, b) <- take 4 (regularCorners 4 (sqrt 2 :: Double))] :: [(Int, Int)]
+-- [(1,-1),(1,1),(-1,1),(-1,-1)]
+regularCorners :: Field a => a -> a -> [(a, a)]
+regularCorners n r =
+  [ (select (n - fromIntegral k - 0.5) (r * cosF t) 0, select (n - fromIntegral k - 0.5) (r * sinF t) 0)
+  | k <- [0 .. 7 :: Int], let t = (2 * fromIntegral k - 1) * pi / n ]
 
 -- | 1 when corner @k@ is one of the first @n@, else 0.
 counted :: Field a => a -> Int -> a

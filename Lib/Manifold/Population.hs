@@ -53,7 +53,9 @@ data BodyArgs s = BodyArgs
 -- and @b@ of each, 'maxHullCorners' of them, the first 'baShapeP'
 -- counting), counter-clockwise ('orientCorners') and moved so that its
 -- centre of mass is the body's centre ('centredCorners'), and its size,
--- mass and outline from them; every body with a hull gets its corners
+-- mass and outline from them; a square or a regular polygon of up to
+-- 'maxHullCorners' sides is the polygon of its corners ('regularCorners')
+-- with its mass from them; every body with a hull gets its corners
 -- ('hullCorner'). Sets 'LastAdded' to its
 -- index, or to −1 when the world is full or the position does not project
 -- onto the surface, or to −2 when a restored body's frame does not fit the
@@ -92,24 +94,32 @@ addBodyWith sp l w cornersIn outlineGiven b = do
           let code = baShape b
               p = baShapeP b
               q = baShapeQ b
-          convex <- share (isVertices code)
-          given <- forM [0 .. maxHullCorners - 1] $ \k ->
-            (,) <$> readArray cornersIn (fromIntegral (2 * k)) <*> readArray cornersIn (fromIntegral (2 * k + 1))
-          oriented <- mapM share2 (orientCorners p given)
-          own <- mapM share2 (centredCorners p q oriented)
-          size <- share (select convex (polygonReach p q own) (hullSize code p q (baSize b)))
-          corners <- share (hullCorners code p)
-          let outline theta = select convex (verticesOutline p q own theta / size) (outlineGiven theta)
+          -- a polygon of its corners: given ones, or a square's or a
+          -- small regular polygon's
+          vertices <- share (isVertices code)
+          regular <- share (isRegularHull code)
+          convex <- share (vertices + regular)
+          sides <- share (select regular code p)
+          radius <- share (select regular 0 q)
+          given <- forM (zip [0 .. maxHullCorners - 1] (regularCorners code (baSize b))) $ \(k, (ra, rb)) -> do
+            a <- readArray cornersIn (fromIntegral (2 * k))
+            c <- readArray cornersIn (fromIntegral (2 * k + 1))
+            pure (select regular ra a, select regular rb c)
+          oriented <- mapM share2 (orientCorners sides given)
+          own <- mapM share2 (centredCorners sides radius oriented)
+          size <- share (select vertices (polygonReach sides radius own) (hullSize code p q (baSize b)))
+          corners <- share (select convex sides (hullCorners code p))
+          let outline theta = select vertices (verticesOutline sides radius own theta / size) (outlineGiven theta)
           (mOutline, iOutline) <- massIntegrals outline size (baDensity b)
           let (mHull, iHull) = hullMass code p q (baDensity b)
-              (mPolygon, iPolygon) = polygonMass p q own (baDensity b)
+              (mPolygon, iPolygon) = polygonMass sides radius own (baDensity b)
           m <- share (select convex mPolygon (select (corners - 1.5) mHull mOutline))
           inertia <- share (select convex iPolygon (select (corners - 1.5) iHull iOutline))
           writeSlot w i Angle (baAngle b)
           writeSlot w i Omega (movable * baOmega b)
           writeSlot w i InvMass (select movable (select m (recip m) 0) 0)
           writeSlot w i InvInertia (select movable (select inertia (recip inertia) 0) 0)
-          writeSlot w i Size (select convex (polygonThickness p q own) (hullThickness code p q size))
+          writeSlot w i Size (select convex (polygonThickness sides radius own) (hullThickness code p q size))
           -- awake (a saved scene's sleeping body is put to sleep after: 'setSleeping')
           writeSlot w i Asleep 0
           writeSlot w i SleepTimer 0
@@ -118,7 +128,7 @@ addBodyWith sp l w cornersIn outlineGiven b = do
           writeSlot w i BodyRestitution (maxF (-1) (baRestitution b))
           writeSlot w i Corners corners
           let hull = fromIntegral hullStride * i
-          writeArray (wHull w) hull (hullRounding code q size)
+          writeArray (wHull w) hull (select convex radius (hullRounding code q size))
           forM_ (zip [0 .. maxHullCorners - 1] own) $ \(k, (ownA, ownB)) -> do
             let (a, c) = hullCorner code p q k
             writeArray (wHull w) (hull + hullLocalAt (fromIntegral k)) (select convex ownA a)

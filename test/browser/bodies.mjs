@@ -356,6 +356,8 @@ async function testApi(check, context, base) {
       await m.setSpace(name);
       m.pause();
       m.resetScene(60);
+      // (awake: the rectangle's pile would be asleep, and remember nothing, by step 300)
+      m.setSimulation({ sleep: false });
       m.step(300);
       const saved = m.scene();
       m.step(steps);
@@ -379,6 +381,7 @@ async function testApi(check, context, base) {
       r.moved = await m.loadScene(variant(saved, function (b, i) { if (i === 0) b.p = saved.bodies[1].p; }))
         .then(function () { return null; }, function (e) { return e.message; });
       out[name] = r;
+      m.setSimulation({ sleep: true });
     }
     out.badImpulse = await m.loadScene(JSON.stringify({ space: "torus", bodies: [{ shape: "circle", size: 0.1, p: [1.3, 0, 0], impulses: [[64, 0.1, 0], [65, -1, 0]] }] }))
       .then(function () { return null; }, function (e) { return e.message; });

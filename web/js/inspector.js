@@ -34,7 +34,7 @@ var ManifoldWebInspector = (function (W) {
     if (!w || i < 0 || i >= w.count()) return null;
     const m = w.measureBody(i), info = w.info[i], E = w.engine;
     // (how far it reaches: a box's or a capsule's from its numbers)
-    const size = MW.world.reachOf(info.shape, w.a.scalars[i * w.stride() + E.slots.size]), omega = w.a.scalars[i * w.stride() + E.slots.omega];
+    const size = MW.world.reachOf(info.shape, info.size), omega = w.a.scalars[i * w.stride() + E.slots.omega];
     const asleep = w.a.scalars[i * w.stride() + E.slots.asleep] > 0;
     return Object.assign({ index: i, shape: info.shape, size: size, static: info.static, asleep: asleep, speed: m.speed, omega: omega, energy: m.energy, contacts: m.contacts },
       w.material(i));

@@ -52,6 +52,8 @@ declare namespace ManifoldWeb {
   /** What a World keeps of each body besides the engine's arrays. */
   interface BodyInfo {
     shape: Manifold.Shape;
+    /** the size it was given (its circumradius; a box's, a capsule's or a polygon's from its numbers) */
+    size: number;
     density: number;
     static: boolean;
     /** one of world.js's palette's colours (shared arrays: compared by reference) */

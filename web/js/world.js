@@ -605,7 +605,7 @@ var ManifoldWebWorld = (function (W) {
       }
       const colour = b.static ? STATIC_COLOUR : PALETTE[this.added % PALETTE.length];
       this.added++;
-      this.info[i] = { shape: copyShape(b.shape), density: b.density, static: b.static, colour: colour };
+      this.info[i] = { shape: copyShape(b.shape), size: b.size, density: b.density, static: b.static, colour: colour };
       this.version++;
       return i;
     }
@@ -708,7 +708,7 @@ var ManifoldWebWorld = (function (W) {
         /** @type {Manifold.Body} */
         const b = Object.assign({
           shape: copyShape(info.shape),
-          size: a.scalars[i * k + S.size],
+          size: info.size,
           density: info.density,
         }, this.material(i), {
           static: info.static,
