@@ -73,10 +73,12 @@ nativeLines generic = forM (if generic then genericRuns else goldenRuns) $ \run 
 genericRuns :: [GoldenRun]
 genericRuns = filter (\run -> grName run == "rectangle-300" || not (any (`isSuffixOf` grName run) ["-300", "-1000"])) goldenRuns
 
--- | The runs saved and continued: every space's default scene and the
--- 300-body piles (the 1000-body ones are the same code at more bodies).
+-- | The runs saved and continued: every run but the benchmark piles, of
+-- which the flat and the curved 300-body ones (the others are the same
+-- code on other spaces, or at more bodies; every space's default scene is
+-- saved and continued).
 splitRuns :: [GoldenRun]
-splitRuns = filter ((/= "1000") . reverse . takeWhile (/= '-') . reverse . grName) goldenRuns
+splitRuns = filter (\run -> grName run `elem` ["rectangle-300", "sphere-300"] || not (any (`isSuffixOf` grName run) ["-300", "-1000"])) goldenRuns
 
 -- | Where a run is saved: after about two fifths of its steps (an odd
 -- number, mid-pile).
