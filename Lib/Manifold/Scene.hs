@@ -30,6 +30,7 @@ import qualified Data.Text as T
 import qualified Data.Vector as V
 import Linear.V3 (V3 (..), cross)
 
+import Manifold.ContactManifold (maxHullCorners)
 import Manifold.Body
 import Manifold.Engine
 import Manifold.Params
@@ -165,12 +166,12 @@ shape path = \case
   where
     shapeList = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]}, {\"capsule\": [halfLength, radius]} and {\"vertices\": [[a, b], ...]}"
     corners at = \case
-      A.Array a | V.length a >= 3 && V.length a <= 8 -> do
+      A.Array a | V.length a >= 3 && V.length a <= maxHullCorners -> do
         cs <- sequence [ corner (at ++ "[" ++ show k ++ "]") c | (k, c) <- zip [0 :: Int ..] (V.toList a) ]
         unless (convexRound cs) $
           problem at "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)"
         pure cs
-      _ -> problem at "must be an array of 3 to 8 corners [a, b]"
+      _ -> problem at ("must be an array of 3 to " ++ show maxHullCorners ++ " corners [a, b]")
     corner at = \case
       A.Array a | V.length a == 2 -> (,) <$> number (at ++ "[0]") (a V.! 0) <*> number (at ++ "[1]") (a V.! 1)
       _ -> problem at "must be two numbers [a, b]"

@@ -428,7 +428,16 @@ async function testBoxBody(check, page) {
     JSON.stringify({ own: own, scaled: scaled }));
   await page.selectOption("#body-shape", "circle");
   const hiddenAgain = await page.evaluate(function () { return document.getElementById("body-shape-vertices").hidden; });
-  check("and a circle chosen, the polygon is no longer offered", hiddenAgain, String(hiddenAgain));
+  const hiddenByApi = await page.evaluate(function () {
+    window.manifold.setNewBody({ shape: { vertices: [[0, 0], [0.1, 0], [0.05, 0.08]] } });
+    const offered = !document.getElementById("body-shape-vertices").hidden;
+    window.manifold.setNewBody({ shape: "square" });
+    return { offered: offered, hidden: document.getElementById("body-shape-vertices").hidden,
+      select: /** @type {HTMLSelectElement} */ (document.getElementById("body-shape")).value };
+  });
+  check("and a circle chosen, or a square given by setNewBody, the polygon is no longer offered",
+    hiddenAgain && hiddenByApi.offered && hiddenByApi.hidden && hiddenByApi.select === "square", JSON.stringify({ hiddenAgain: hiddenAgain, api: hiddenByApi }));
+  await page.selectOption("#body-shape", "circle");
   // a plank on two boxes at the sphere's south pole: it stays up
   const plank = await page.evaluate(function () {
     const m = window.manifold;

@@ -429,8 +429,10 @@ var ManifoldWebUi = (function (W) {
       // the new body's controls: its template, and the space's own size (the slider spans a quarter to three times it)
       /** @param {{ shape: Manifold.Shape, size: number | null, density: number, static: boolean }} t @param {number} own */
       setNewBody: function (t, own) {
-        // a box's or a capsule's size and aspect, from its numbers
-        let shaped = null;
+        // a box's, a capsule's or a polygon's size (its reach), and a box's or a capsule's aspect, from its numbers
+        const world = W.ManifoldWeb.world;
+        const shaped = world.sizedByShape(t.shape) ? world.reachOf(t.shape, 0) : null;
+        ownPolygon = null;
         if (typeof t.shape === "string") shapeSelect.value = t.shape;
         else if ("polygon" in t.shape) {
           shapeSelect.value = "polygon";
@@ -438,15 +440,12 @@ var ManifoldWebUi = (function (W) {
         } else if ("box" in t.shape) {
           shapeSelect.value = "box";
           aspect.value = String(Number((t.shape.box[0] / t.shape.box[1]).toPrecision(4)));
-          shaped = Math.hypot(t.shape.box[0], t.shape.box[1]);
         } else if ("vertices" in t.shape) {
           shapeSelect.value = "vertices";
           ownPolygon = t.shape;
-          shaped = W.ManifoldWeb.world.reachOf(t.shape, 0);
         } else {
           shapeSelect.value = "capsule";
           aspect.value = String(Number(((t.shape.capsule[0] + t.shape.capsule[1]) / t.shape.capsule[1]).toPrecision(4)));
-          shaped = t.shape.capsule[0] + t.shape.capsule[1];
         }
         vertexOption.hidden = ownPolygon === null;
         showShapeNumber();

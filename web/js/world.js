@@ -116,11 +116,12 @@ var ManifoldWebWorld = (function (W) {
     }
     return problem(path, "must be one of " + SHAPE_LIST);
   }
-  // A convex polygon's corners, 3 to 8 pairs [a, b] going round it in
-  // order, either way (Manifold.Scene's convexRound).
+  // A convex polygon's corners, 3 to Manifold.shapes.maxCorners pairs
+  // [a, b] going round it in order, either way (Manifold.Scene's convexRound).
   /** @param {string} path @param {unknown} v @returns {[number, number][]} */
   function corners(path, v) {
-    if (!Array.isArray(v) || v.length < 3 || v.length > 8) problem(path, "must be an array of 3 to 8 corners [a, b]");
+    const most = shapes().maxCorners;
+    if (!Array.isArray(v) || v.length < 3 || v.length > most) problem(path, "must be an array of 3 to " + most + " corners [a, b]");
     /** @type {[number, number][]} */
     const cs = v.map(function (c, k) {
       const at = path + "[" + k + "]";
@@ -450,7 +451,7 @@ var ManifoldWebWorld = (function (W) {
     }
     return { capsule: [s.capsule[0], s.capsule[1]] };
   }
-  // Whether a shape's numbers are its size (a box, a capsule: a scene gives no size with them).
+  // Whether a shape's numbers are its size (a box, a capsule, vertices: a scene gives no size with them).
   /** @param {Manifold.Shape} s */
   function sizedByShape(s) { return typeof s === "object" && s !== null && !("polygon" in s); }
   // A scene body of a shape and size (a box's or a capsule's without the
