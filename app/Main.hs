@@ -3,6 +3,7 @@
 module Main (main) where
 
 import Control.Exception (IOException, try)
+import Network.Wai (Middleware, mapResponseHeaders, modifyResponse)
 import qualified Network.Wai.Handler.Warp as Warp
 import Network.Wai.Application.Static (defaultFileServerSettings, staticApp)
 import System.Directory (createDirectoryIfMissing, doesDirectoryExist, doesFileExist)
@@ -351,13 +352,24 @@ serve p dir = do
   let settings = Warp.setHost "127.0.0.1" $ Warp.setPort p
                $ Warp.setBeforeMainLoop (putStrLn ("serving " ++ dir ++ " at http://127.0.0.1:" ++ show p ++ "/") >> hFlush stdout)
                Warp.defaultSettings
-  r <- try (Warp.runSettings settings (staticApp (defaultFileServerSettings dir)))
+  r <- try (Warp.runSettings settings (crossOriginIsolated (staticApp (defaultFileServerSettings dir))))
   case r of
     Left (e :: IOException)
       | isAlreadyInUseError e || "resource busy" `isInfixOf` show e || "in use" `isInfixOf` show e ->
           usageError ("port " ++ show p ++ " is already in use; choose another with --port")
       | otherwise -> usageError ("cannot serve on port " ++ show p ++ ": " ++ show e)
     Right () -> pure ()
+
+-- | Serves the page cross-origin isolated (COOP and COEP), so that it may
+-- share memory with its physics worker (SharedArrayBuffer) and read a
+-- fine clock; everything the page loads is its own (same origin).
+crossOriginIsolated :: Middleware
+crossOriginIsolated = modifyResponse (mapResponseHeaders (isolation ++))
+  where
+    isolation =
+      [ ("Cross-Origin-Opener-Policy", "same-origin")
+      , ("Cross-Origin-Embedder-Policy", "require-corp")
+      ]
 
 v3List :: V3 Double -> [Double]
 v3List (V3 x y z) = [x, y, z]

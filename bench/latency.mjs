@@ -9,9 +9,12 @@
 // requested in the event handler runs right after the page's own one of the
 // same frame: its physics steps and its draw calls; the software GPU's own
 // part comes after, and is not counted). Also fps, physics steps per second
-// and ms per step (manifold.stats()) while it runs.
+// and ms per step (manifold.stats()) while it runs. Each size runs with the
+// physics on each thread of --threads (setSimulation's thread: "main", the
+// page's own, or "worker", a Web Worker on shared memory), after a row with
+// no bodies at all (the page's own latency: the target is 1.5 × it + 20 ms).
 //
-//   node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--moves K] [--seconds T] [--out FILE.json]
+//   node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--threads main,worker] [--moves K] [--seconds T] [--out FILE.json]
 //
 // Without --scenes it runs `manifold bench --scenes TMPDIR --spaces S --sizes ...`
 // itself. Progress goes to stderr, a table to stdout, everything as JSON to --out.
@@ -29,12 +32,14 @@ const WEB = process.env.MANIFOLD_WEB ? path.resolve(process.env.MANIFOLD_WEB) : 
 const VIEWPORT = { width: 800, height: 600 };
 
 const { text: arg, count, positive } = commandLine({
-  usage: "node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--moves K] [--seconds T] [--out FILE.json]",
-  known: ["--scenes", "--space", "--sizes", "--moves", "--seconds", "--out"],
+  usage: "node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--threads main,worker] [--moves K] [--seconds T] [--out FILE.json]",
+  known: ["--scenes", "--space", "--sizes", "--threads", "--moves", "--seconds", "--out"],
 });
 const space = arg("--space", "sphere");
 const sizes = arg("--sizes", "1000,5000,10000").split(",").map(Number);
 if (sizes.some((n) => !Number.isInteger(n) || n < 1)) { console.error("--sizes must be whole numbers"); process.exit(2); }
+const threads = arg("--threads", "main,worker").split(",");
+if (threads.some((t) => t !== "main" && t !== "worker")) { console.error("--threads takes main and worker"); process.exit(2); }
 const moves = count("--moves", 20, 1);
 const seconds = positive("--seconds", 3);
 const outFile = arg("--out", null);
@@ -66,10 +71,13 @@ try {
       requestAnimationFrame(function () { window.__latency.push(performance.now() - t0); });
     }, { capture: true });
   });
-  for (const n of sizes) {
+  const runs = [{ n: 0, thread: "main" }];
+  for (const n of sizes) for (const thread of threads) runs.push({ n, thread });
+  for (const { n, thread } of runs) {
     const file = path.join(scenesDir, space + "-" + n + ".json");
-    if (!fs.existsSync(file)) { log("no scene " + file + ": skipped"); continue; }
-    const scene = JSON.parse(fs.readFileSync(file, "utf8"));
+    if (n > 0 && !fs.existsSync(file)) { log("no scene " + file + ": skipped"); continue; }
+    const scene = n > 0 ? JSON.parse(fs.readFileSync(file, "utf8")) : { space, bodies: [] };
+    await page.evaluate((t) => window.manifold.setSimulation({ thread: t }), thread);
     await loadPaused(page, scene);
     await page.evaluate(() => window.manifold.resume());
     await page.waitForTimeout(1000 * seconds);
@@ -90,7 +98,7 @@ try {
     await page.waitForTimeout(300);
     const latency = await page.evaluate(() => window.__latency.slice());
     const r = {
-      space, n, bodies: stats.bodies, fps: stats.fps, frameMs: stats.frameMs, physicsMsPerStep: stats.physicsMsPerStep,
+      space, n, thread: stats.thread, bodies: stats.bodies, fps: stats.fps, frameMs: stats.frameMs, physicsMsPerStep: stats.physicsMsPerStep,
       stepsPerSecond: Math.round(stepsPerSecond * 10) / 10, moves: latency.length,
       latencyMedianMs: Math.round(quantile(latency, 0.5)), latencyP90Ms: Math.round(quantile(latency, 0.9)),
     };
@@ -101,9 +109,16 @@ try {
   await browser.close();
   await server.stop();
 }
-console.log("| space | bodies | fps | physics ms/step | steps/s | move → frame ms (median, 90 %) |");
-console.log("|---|---:|---:|---:|---:|---:|");
+console.log("| space | bodies | physics thread | fps | physics ms/step | steps/s | move → frame ms (median, 90 %) |");
+console.log("|---|---:|---|---:|---:|---:|---:|");
 for (const r of results) {
-  console.log("| " + r.space + " | " + r.bodies + " | " + r.fps + " | " + r.physicsMsPerStep + " | " + r.stepsPerSecond + " | " + r.latencyMedianMs + ", " + r.latencyP90Ms + " |");
+  console.log("| " + r.space + " | " + r.bodies + " | " + r.thread + " | " + r.fps + " | " + r.physicsMsPerStep + " | " + r.stepsPerSecond + " | " + r.latencyMedianMs + ", " + r.latencyP90Ms + " |");
+}
+// the target: with the most bodies on the worker, within 1.5 × the empty page's median + 20 ms
+const empty = results.find((r) => r.n === 0), biggest = results.filter((r) => r.thread === "worker").pop();
+if (empty && biggest) {
+  const limit = 1.5 * empty.latencyMedianMs + 20;
+  console.log("\n" + biggest.bodies + " bodies on the worker: median " + biggest.latencyMedianMs + " ms against " +
+    Math.round(limit) + " (1.5 × " + empty.latencyMedianMs + " + 20): " + (biggest.latencyMedianMs <= limit ? "within" : "over"));
 }
 if (outFile) fs.writeFileSync(outFile, JSON.stringify({ viewport: VIEWPORT, results }, null, 2) + "\n");

@@ -485,6 +485,8 @@ declare namespace Manifold {
     /** a moving average; null before the first step */
     physicsMsPerStep: number | null;
     steps: number;
+    /** the thread stepping the physics now: the physics worker, or the main thread */
+    thread: "main" | "worker";
     paused: boolean;
     timeScale: number;
     width: number;
@@ -501,9 +503,17 @@ declare namespace Manifold {
    * scene keys with a control (Manifold.sceneKeys), in their order; the
    * numbers are null without a world.
    */
+  /** Who steps the physics (Simulation.thread). */
+  type ThreadSetting = "auto" | "main" | "worker";
   interface Simulation {
     paused: boolean;
     timeScale: number;
+    /**
+     * who steps the physics: "worker" (a Web Worker, when the page is
+     * cross-origin isolated, as `manifold serve` serves it), "main" (the
+     * page's own thread), or "auto" (the worker from 1000 bodies on)
+     */
+    thread: ThreadSetting;
     gravity: boolean;
     substeps: number | null;
     friction: number | null;
@@ -524,6 +534,7 @@ declare namespace Manifold {
     paused?: boolean;
     /** 0 … 10 */
     timeScale?: number;
+    thread?: ThreadSetting;
     gravity?: boolean;
     /** a whole number from 1 to 64 */
     substeps?: number;

@@ -48,7 +48,7 @@ async function testControlsMade(check, page) {
   });
   check("every scene key with a control has it (checkbox or slider with its output), in the generated order, with the generated label, title and slider extent, showing the world's value",
     r.keys.length > 0 && r.problems.length === 0 && JSON.stringify(r.order) === JSON.stringify(r.keys) &&
-      JSON.stringify(r.simulation) === JSON.stringify(["paused", "timeScale"].concat(r.keys)),
+      JSON.stringify(r.simulation) === JSON.stringify(["paused", "timeScale", "thread"].concat(r.keys)),
     r.problems.length ? r.problems.join("; ") : r.shown.join(", ") + "; simulation() " + r.simulation.join(" "));
 }
 

@@ -45,7 +45,7 @@ var ManifoldWebFrame = (function (W) {
   /** @param {ManifoldWeb.OverlayFrame} frame */
   function drawBodies(frame) {
     frame.bodyDetail = state.options.bodyDetail;
-    if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world, frame, state.options.dimSleeping);
+    if (state.world && state.bodyRenderer) state.bodyRenderer.draw(state.world.drawn(), frame, state.options.dimSleeping);
     MW.tools.draw(frame);
   }
 
@@ -166,6 +166,7 @@ var ManifoldWebFrame = (function (W) {
       droppedContacts: counters.droppedContacts,
       physicsMsPerStep: w && w.stepMs !== null ? Math.round(w.stepMs * 1000) / 1000 : null,
       steps: w ? w.steps : 0,
+      thread: MW.physicsThread.inUse(),
       paused: state.clock.paused,
       timeScale: state.clock.timeScale,
       width: state.width,
@@ -187,7 +188,8 @@ var ManifoldWebFrame = (function (W) {
     const s = statsObject();
     const rate = s.fps > 0 ? s.fps.toFixed(1) + " fps" : "idle";
     const cost = s.frameMs === null ? "" : " · frame " + Math.round(s.frameMs) + " ms";
-    const physics = s.physicsMsPerStep === null ? "" : " · physics " + s.physicsMsPerStep.toFixed(2) + " ms/step";
+    const thread = MW.physicsThread.describe();
+    const physics = s.physicsMsPerStep === null ? "" : " · physics " + s.physicsMsPerStep.toFixed(2) + " ms/step" + (thread === null ? "" : " (" + thread + ")");
     const trouble = " · warnings " + s.warnings + (s.droppedContacts ? " · dropped contacts " + s.droppedContacts : "");
     state.ui.setStats(rate + cost + (s.preview ? " (preview)" : "") + " · " + s.width + "×" + s.height +
       " px · bodies " + s.bodies + " · contacts " + s.contacts + physics + trouble + (s.paused ? " · paused" : ""));
@@ -224,7 +226,10 @@ var ManifoldWebFrame = (function (W) {
     pollFence(now);
     const w = state.world;
     if (w && !state.error) {
-      const n = state.clock.due(now, w.param("dt"), w.stepMs);
+      MW.physicsThread.update();
+      // (a world the worker steps is stepped by the worker's clock)
+      const n = w.shared ? 0 : state.clock.due(now, w.param("dt"), w.stepMs);
+      if (w.shared) state.clock.reset();
       if (n > 0 && w.count() > 0) w.step(n);
       if (n > 0 && state.compare && state.compare.flat.count() > 0) state.compare.flat.step(n);
       MW.tools.sampleTrails();

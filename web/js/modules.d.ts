@@ -29,7 +29,11 @@ interface ManifoldWebModules {
   tools: typeof ManifoldWebTools;
   plot: typeof ManifoldWebPlot;
   inspector: typeof ManifoldWebInspector;
+  physicsThread: typeof ManifoldWebPhysicsThread;
 }
+
+/** A physics worker's own global (web/js/physics-worker.js). */
+declare function importScripts(...urls: string[]): void;
 
 /** The page's modules (web/js), by file. */
 declare var ManifoldWeb: ManifoldWebModules;
@@ -49,6 +53,26 @@ declare namespace ManifoldWeb {
   type ControlledKey = Manifold.SceneKey & { control: Manifold.SceneControl };
   /** Engine parameters by name (World.setParams). */
   type Params = Partial<Record<Manifold.ParamName, number>>;
+  type ThreadSetting = Manifold.ThreadSetting;
+  /** The arrays a frame reads (world.js's VIEW): a world's own, or a snapshot of them. */
+  interface View {
+    meta: Float64Array;
+    pos: Float64Array;
+    vel: Float64Array;
+    scalars: Float64Array;
+    verts: Float64Array;
+  }
+  /** A world's memory shared with the physics worker (World.share). */
+  interface Sharing {
+    /** world.js's SHARED slots */
+    control: Int32Array;
+    /** three snapshot buffers: the worker's, the middle one, the one drawn */
+    snapshots: View[];
+    /** the one drawn */
+    front: number;
+    /** hears of every new set of shared arrays */
+    notify: (w: World) => void;
+  }
   /** What a World keeps of each body besides the engine's arrays. */
   interface BodyInfo {
     shape: Manifold.Shape;

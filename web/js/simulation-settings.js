@@ -34,6 +34,7 @@ var ManifoldWebSimulationSettings = (function (W) {
     const w = state.world;
     /** @type {Record<string, boolean | number | null>} */
     const out = { paused: state.clock.paused, timeScale: state.clock.timeScale };
+    /** @type {Record<string, boolean | number | string | null>} */ (out).thread = MW.physicsThread.thread.setting;
     engineSettings().forEach(function (k) {
       if (k.kind === "switch") out[k.key] = w ? w.param(k.param) > 0 : !!k.default;
       else out[k.key] = w ? w.param(k.param) : null;
@@ -48,7 +49,7 @@ var ManifoldWebSimulationSettings = (function (W) {
   function setSimulation(o) {
     const settings = engineSettings();
     if (!o || typeof o !== "object") {
-      throw new TypeError("setSimulation expects {" + ["paused", "timeScale"].concat(settings.map(function (k) { return k.key; })).join(", ") + "}");
+      throw new TypeError("setSimulation expects {" + ["paused", "timeScale", "thread"].concat(settings.map(function (k) { return k.key; })).join(", ") + "}");
     }
     const given = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (o));
     if (o.timeScale !== undefined) {
@@ -66,12 +67,16 @@ var ManifoldWebSimulationSettings = (function (W) {
       if (why !== null) throw new RangeError(k.key + " " + why);
       p[k.param] = k.kind === "switch" ? (v ? 1 : 0) : /** @type {number} */ (v);
     });
+    if (o.thread !== undefined && MW.physicsThread.SETTINGS.indexOf(o.thread) < 0) {
+      throw new RangeError("thread must be one of " + MW.physicsThread.SETTINGS.map(function (x) { return JSON.stringify(x); }).join(", "));
+    }
     if (Object.keys(p).length) P.requireWorld().setParams(p);
     if (o.timeScale !== undefined) state.clock.timeScale = o.timeScale;
     if (o.paused !== undefined) {
       state.clock.paused = !!o.paused;
       state.clock.reset();
     }
+    if (o.thread !== undefined) MW.physicsThread.setSetting(o.thread);
     const out = simulationSettings();
     state.ui.setSimulation(out);
     return out;

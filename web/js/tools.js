@@ -378,7 +378,7 @@ var ManifoldWebTools = (function (W) {
   function sampleTrails() {
     const w = state.world, t = tools.trail;
     if (!tools.trailsOn || !w) return;
-    const n = Math.min(w.count(), TRAIL.bodies);
+    const n = Math.min(w.viewCount(), TRAIL.bodies);
     if (t.world !== w || t.bodies !== n) {
       t.world = w;
       t.bodies = n;
@@ -390,7 +390,7 @@ var ManifoldWebTools = (function (W) {
     }
     if (w.steps - t.lastStep < t.stepsPerSample) return;
     t.lastStep = w.steps;
-    const pos = w.a.pos, vel = w.a.vel, o = 4 * n * t.head;
+    const view = w.view(), pos = view.pos, vel = view.vel, o = 4 * n * t.head;
     for (let i = 0; i < n; i++) {
       t.data[o + 4 * i] = pos[3 * i];
       t.data[o + 4 * i + 1] = pos[3 * i + 1];

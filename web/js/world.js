@@ -26,6 +26,50 @@ var ManifoldWebWorld = (function (W) {
   /** @type {Manifold.Rgb} */
   const STATIC_COLOUR = [0.42, 0.45, 0.50];
 
+  // ---- a world shared with the physics worker (web/js/physics-worker.js) ----
+  // When the page is cross-origin isolated, a world's arrays may live in
+  // SharedArrayBuffers stepped by a worker. Whoever touches them holds
+  // SHARED.LOCK: the worker for a batch of steps, the main thread for the
+  // rest of the task that touched them (World.hold). The main thread sets
+  // WANT before it waits, and the worker gives way at the next step. What the
+  // page draws is a snapshot of the VIEW arrays in one of three buffers
+  // (triple buffering: the worker writes its own, publishes it as the middle
+  // one by an atomic exchange, and the main thread takes the middle one when
+  // it is FRESH), so a frame never waits for a step nor draws half of one.
+  const SHARED = {
+    LOCK: 0, WANT: 1, GENERATION: 2, MIDDLE: 3, RUNNING: 4, SLOTS: 8,
+    MAIN: 1, WORKER: 2, FRESH: 4,
+  };
+  // the shared clock's numbers (a Float64Array): steps taken, ms a step (NaN: not known), the clock's speed
+  const CLOCK = { STEPS: 0, STEP_MS: 1, TIME_SCALE: 2, SLOTS: 4 };
+  // the arrays a frame reads (the bodies' outlines, poses, speeds and states, and the counters)
+  /** @type {(keyof ManifoldWeb.View & Manifold.ArrayName)[]} */
+  const VIEW = ["meta", "pos", "vel", "scalars", "verts"];
+
+  /** @param {number} length @param {boolean} shared */
+  function doubles(length, shared) {
+    return new Float64Array(shared ? new SharedArrayBuffer(8 * length) : new ArrayBuffer(8 * length));
+  }
+
+  // The VIEW arrays of an engine for `capacity` bodies, in shared memory.
+  /** @param {Manifold.Engine} E @param {number} capacity @returns {ManifoldWeb.View} */
+  function viewBuffers(E, capacity) {
+    /** @type {Record<string, Float64Array>} */
+    const out = {};
+    VIEW.forEach(function (n) { out[n] = doubles(E.sizes[n][0] + E.sizes[n][1] * capacity, true); });
+    return /** @type {ManifoldWeb.View} */ (/** @type {unknown} */ (out));
+  }
+
+  // Copies the VIEW arrays' rows of the world's bodies from `from` into `to`.
+  /** @param {Manifold.Engine} E @param {ManifoldWeb.View} from @param {ManifoldWeb.View} to */
+  function copyView(E, from, to) {
+    const count = from.meta[E.meta.bodyCount];
+    VIEW.forEach(function (n) {
+      const s = E.sizes[n];
+      to[n].set(from[n].subarray(0, s[0] + s[1] * count));
+    });
+  }
+
   // ---- scenes: validation naming the JSON path of the first problem (as Manifold.Scene does) ----
   // The keys that set engine parameters, with the values they take, are
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
@@ -498,9 +542,6 @@ var ManifoldWebWorld = (function (W) {
       this.grabbed = -1;       // the body held by the mouse joint, or -1
       /** @type {Manifold.Vec3 | null} */
       this.target = null;      // the joint's target surface point (as picked)
-      this.steps = 0;
-      /** @type {number | null} */
-      this.stepMs = null;      // moving average of the physics time per step
       /** @type {Float64Array | null} */
       this.measured = null;    // the engine's measures write here (measureOut)
       /** @type {Float64Array | null} */
@@ -510,29 +551,146 @@ var ManifoldWebWorld = (function (W) {
       this.pathsOut = null;    // jointPaths writes here
       this.capacity = 0;
       /** @type {Float64Array[]} */
-      this.arrays = [];        // the engine's arrays, in the order its procedures take them …
+      this.list = [];          // the engine's arrays, in the order its procedures take them …
       /** @type {Record<Manifold.ArrayName, Float64Array>} */
-      this.a = null;           // … and by name
+      this.live = null;        // … and by name (read them through `arrays` and `a`, which hold the lock)
+      /** @type {ManifoldWeb.Sharing | null} */
+      this.shared = null;      // the shared memory and snapshots when a worker steps this world
+      this.holding = false;    // the main thread holds the shared lock until its task ends
+      this.heldAt = 0;         // this.version when it took the lock
+      this.counts = doubles(CLOCK.SLOTS, false);  // steps taken and ms a step (shared with the worker)
+      this.counts[CLOCK.STEP_MS] = NaN;
       this.allocate(FIRST_CAPACITY);
       this.setParams(this.engine.defaults);
     }
 
+    // The engine's arrays in its procedures' order, and by name: reading them
+    // holds the lock of a world shared with the worker until the task ends.
+    get arrays() { this.hold(); return this.list; }
+    get a() { this.hold(); return this.live; }
+
+    get steps() { return this.counts[CLOCK.STEPS]; }
+    set steps(n) { this.counts[CLOCK.STEPS] = n; }
+    // moving average of the physics time per step (ms), or null
+    /** @returns {number | null} */
+    get stepMs() { const x = this.counts[CLOCK.STEP_MS]; return isNaN(x) ? null : x; }
+    set stepMs(ms) { this.counts[CLOCK.STEP_MS] = ms === null ? NaN : ms; }
+
+    // Takes the shared lock for the rest of this task (no-op unless a worker
+    // steps this world): the worker ends its step, and waits until then.
+    hold() {
+      const s = this.shared;
+      if (s === null || this.holding) return;
+      const c = s.control;
+      Atomics.store(c, SHARED.WANT, 1);
+      while (Atomics.compareExchange(c, SHARED.LOCK, 0, SHARED.MAIN) !== 0) { /* the worker ends its step */ }
+      this.holding = true;
+      this.heldAt = this.version;
+      queueMicrotask(this.letGo.bind(this, s));
+    }
+
+    // Gives the lock back; a change made under it is drawn from now on (the
+    // main thread's snapshot, not a worker's older one).
+    /** @param {ManifoldWeb.Sharing} s */
+    letGo(s) {
+      if (this.version !== this.heldAt && this.shared === s) {
+        copyView(this.engine, /** @type {ManifoldWeb.View} */ (/** @type {unknown} */ (this.live)), s.snapshots[s.front]);
+        Atomics.and(s.control, SHARED.MIDDLE, 3);
+      }
+      this.holding = false;
+      Atomics.store(s.control, SHARED.LOCK, 0);
+      Atomics.store(s.control, SHARED.WANT, 0);
+      Atomics.notify(s.control, SHARED.WANT);
+    }
+
+    // What a frame draws: the world's own arrays, or when a worker steps it,
+    // the newest snapshot taken (takeSnapshot). Never waits.
+    /** @returns {ManifoldWeb.View} */
+    view() {
+      const s = this.shared;
+      return s ? s.snapshots[s.front] : /** @type {ManifoldWeb.View} */ (/** @type {unknown} */ (this.live));
+    }
+    // the bodies a frame draws
+    viewCount() { return this.view().meta[this.engine.meta.bodyCount]; }
+
+    // The world as BodyRenderer.draws it: itself, or when a worker steps it,
+    // its snapshot (itself again within a task that holds the lock, whose
+    // changes the snapshot has not yet).
+    /** @returns {ManifoldWeb.DrawnWorld} */
+    drawn() {
+      if (!this.shared || this.holding) return this;
+      const v = this.view(), n = Math.min(this.viewCount(), this.info.length);
+      return {
+        engine: this.engine, info: this.info, capacity: this.capacity, images: this.images,
+        count: function () { return n; }, a: v, target: this.target,
+      };
+    }
+
+    // Takes the worker's newest snapshot if there is one; true if it did.
+    takeSnapshot() {
+      const s = this.shared;
+      if (!s || !(Atomics.load(s.control, SHARED.MIDDLE) & SHARED.FRESH)) return false;
+      s.front = Atomics.exchange(s.control, SHARED.MIDDLE, s.front) & 3;
+      this.version++;
+      return true;
+    }
+
+    // Moves the arrays into shared memory (a worker may then step them), or
+    // back (shared false). `notify` hears of every new set of shared arrays.
+    /** @param {boolean} shared @param {(w: World) => void} [notify] */
+    share(shared, notify) {
+      if (shared === (this.shared !== null)) return;
+      this.hold();
+      const old = this.shared;
+      if (shared) {
+        const control = new Int32Array(new SharedArrayBuffer(4 * SHARED.SLOTS));
+        const counts = doubles(CLOCK.SLOTS, true);
+        counts.set(this.counts);
+        counts[CLOCK.TIME_SCALE] = 1;
+        this.counts = counts;
+        this.shared = { control: control, snapshots: [], front: 1, notify: notify || function () { return undefined; } };
+      } else {
+        this.counts = Float64Array.from(this.counts);
+        this.shared = null;
+      }
+      this.allocate(this.capacity, true);
+      // the old lock is let go by the hold's microtask; a worker still holding the old arrays finds GENERATION changed
+      if (old) Atomics.add(old.control, SHARED.GENERATION, 1);
+      this.version++;
+    }
+
     /** @param {number} capacity @param {boolean} [keep] */
     allocate(capacity, keep) {
-      const E = this.engine;
+      const E = this.engine, shared = this.shared !== null;
       const old = this.a;
-      this.capacity = capacity;
-      this.arrays = E.arrays.map(function (n) {
+      this.adopt(E.arrays.map(function (n) {
         const s = E.sizes[n];
-        const arr = new Float64Array(s[0] + s[1] * capacity);
+        const arr = doubles(s[0] + s[1] * capacity, shared);
         // the arrays are indexed from 0 with per-body strides: the old contents keep their places
         if (keep && old) arr.set(old[n]);
         return arr;
-      });
-      this.a = /** @type {Record<Manifold.ArrayName, Float64Array>} */ ({});
-      const self = this;
-      E.arrays.forEach(function (n, i) { self.a[n] = self.arrays[i]; });
-      this.a.meta[E.meta.capacity] = capacity;
+      }), capacity);
+      this.live.meta[E.meta.capacity] = capacity;
+    }
+
+    // Makes `list` (the engine's arrays, in its order) the world's arrays;
+    // a worker stepping the world is given them (and new snapshots).
+    /** @param {Float64Array[]} list @param {number} capacity */
+    adopt(list, capacity) {
+      const E = this.engine, s = this.shared;
+      this.capacity = capacity;
+      this.list = list;
+      this.live = /** @type {Record<Manifold.ArrayName, Float64Array>} */ ({});
+      E.arrays.forEach(/** @this {World} */ function (n, i) { this.live[n] = list[i]; }, this);
+      if (s) {
+        s.snapshots = [viewBuffers(E, capacity), viewBuffers(E, capacity), viewBuffers(E, capacity)];
+        s.front = 1;
+        copyView(E, /** @type {ManifoldWeb.View} */ (/** @type {unknown} */ (this.live)), s.snapshots[s.front]);
+        Atomics.store(s.control, SHARED.MIDDLE, 2);
+        Atomics.add(s.control, SHARED.GENERATION, 1);
+        this.version++;
+        s.notify(this);
+      }
     }
 
     // the most bodies the world holds (the generated engine's maxBodies)
@@ -953,10 +1111,7 @@ var ManifoldWebWorld = (function (W) {
           E.setSleeping.apply(null, this.args([k, label, b.sleepTime || 0]));
         }, this);
       } catch (e) {
-        this.arrays = saved.arrays;
-        this.capacity = saved.capacity;
-        this.a = /** @type {Record<Manifold.ArrayName, Float64Array>} */ ({});
-        this.engine.arrays.forEach(/** @this {World} */ function (n, i) { this.a[n] = this.arrays[i]; }, this);
+        this.adopt(saved.arrays, saved.capacity);
         this.info = saved.info;
         this.added = saved.added;
         this.version++;
@@ -1087,17 +1242,24 @@ var ManifoldWebWorld = (function (W) {
       return this.measured;
     }
 
-    // Contacts, warnings, dropped contacts: the engine's counters.
+    // Contacts, warnings, dropped contacts: the engine's counters (of the
+    // snapshot drawn when a worker steps the world: they never wait for it).
     counters() {
-      this.engine.countIslands.apply(null, this.args([]));
+      const E = this.engine;
+      // (within a task that holds the lock, the world's own: the snapshot has not its changes yet)
+      const live = !this.shared || this.holding;
+      if (live) E.countIslands.apply(null, this.args([]));
+      const m = live ? this.live.meta : this.view().meta;
+      /** @param {Manifold.MetaName} k */
+      const meta = function (k) { return m[E.meta[k]]; };
       return {
-        bodies: this.count(),
-        awake: this.meta("awakeCount"),
-        islands: this.meta("islandCount"),
-        joints: this.jointCount(),
-        contacts: this.meta("contactCount"),
-        warnings: this.meta("warnings"),
-        droppedContacts: this.meta("droppedContacts"),
+        bodies: meta("bodyCount"),
+        awake: meta("awakeCount"),
+        islands: meta("islandCount"),
+        joints: E.addJoint ? meta("jointCount") : 0,
+        contacts: meta("contactCount"),
+        warnings: meta("warnings"),
+        droppedContacts: meta("droppedContacts"),
       };
     }
   }
@@ -1142,6 +1304,9 @@ var ManifoldWebWorld = (function (W) {
 
   const exported = {
     BODY_DEFAULTS: BODY_DEFAULTS,
+    SHARED: SHARED,
+    CLOCK: CLOCK,
+    copyView: copyView,
     World: World,
     Clock: Clock,
     SceneError: SceneError,
