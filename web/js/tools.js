@@ -468,7 +468,7 @@ var ManifoldWebTools = (function (W) {
       eachTrailSegment(function (i, a, b, fa, fb) { r.segment(xyz, a, xyz, b, w.info[i].colour, fa, fb); });
       r.draw(frame, images, WIDTH.trail);
     }
-    if (w && w.jointCount()) {
+    if (w && w.viewJointCount()) {
       r.begin();
       addJoints(r, w);
       r.draw(frame, images, WIDTH.joint);

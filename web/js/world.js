@@ -612,6 +612,8 @@ var ManifoldWebWorld = (function (W) {
     }
     // the bodies a frame draws
     viewCount() { return this.view().meta[this.engine.meta.bodyCount]; }
+    // the joints a frame draws (their paths are the world's own: drawing them takes the lock)
+    viewJointCount() { return this.engine.addJoint ? this.view().meta[this.engine.meta.jointCount] : 0; }
 
     // The world as BodyRenderer.draws it: itself, or when a worker steps it,
     // its snapshot (itself again within a task that holds the lock, whose
