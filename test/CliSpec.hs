@@ -9,7 +9,7 @@ import qualified Data.Aeson.Types as A
 import qualified Data.ByteString.Char8 as BC
 import qualified Data.ByteString.Lazy as BL
 import Data.List (isInfixOf, isPrefixOf, sort)
-import Linear.Metric (dot, norm)
+import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 import System.Directory (createDirectoryIfMissing, doesDirectoryExist)
 import System.Exit (ExitCode (..))

@@ -280,7 +280,7 @@ resting = describe "in the engine" $ do
   it "brings a right triangle, a rounded pentagon and a plank of eight corners at rest on a slab to their heights: a third of the leg up, the inradius and radius, half the plank's thickness (2e-4)" $ do
     -- (b is along normal × direction: −z on the plane; the triangle's third
     -- corner is above its first leg)
-    let pentagon = concat [ "[" ++ show (0.05 * cos t) ++ ", " ++ show (0.05 * sin t) ++ "]" ++ (if k < 4 then ", " else "")
+    let pentagon = concat [ "[" ++ show (0.05 * cos t :: Double) ++ ", " ++ show (0.05 * sin t :: Double) ++ "]" ++ (if k < 4 then ", " else "")
                           | k <- [0 .. 4 :: Int], let t = 2 * pi * fromIntegral k / 5 ]
     w <- loaded (BL.pack ("{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [1, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
                 \ {\"shape\": {\"vertices\": [[0, 0], [0.1, 0], [0, -0.06]]}, \"p\": [-0.5, 0, 0.05], \"angle\": 0.1},\

@@ -6,7 +6,7 @@
 -- joints are refused with the JSON path.
 module JointSpec (spec) where
 
-import Control.Monad (forM, forM_, replicateM_)
+import Control.Monad (forM_, replicateM_)
 import qualified Data.ByteString.Lazy.Char8 as BL
 import Data.Either (fromLeft, isLeft)
 import Data.IORef
@@ -19,7 +19,7 @@ import Test.Hspec
 import Manifold
 import Manifold.Engine
 import Manifold.World (Slot (..))
-import Manifold.Scene (Scene (..), loadScene, parseScene, sceneJSON, sceneOfWorld)
+import Manifold.Scene (loadScene, parseScene, sceneJSON, sceneOfWorld)
 import qualified Data.Aeson as A
 import PhysicsUtil
 

@@ -531,7 +531,7 @@ spec = do
                   is <- mapM (bodyInertia w) [0 .. k - 1]
                   pure (bs, ms, is)
             (b0, ms, is) <- state
-            contactSteps <- forM [1 .. 300 * scale] $ \_ -> stepNative w >> contactCount w
+            contactSteps <- forM [1 .. 300 * scale :: Int] $ \_ -> stepNative w >> contactCount w
             (b1, _, _) <- state
             let p0 = momentum (zip ms b0)
                 p1 = momentum (zip ms b1)

@@ -57,7 +57,7 @@ spec = do
       restRef <- newIORef Nothing
       sleptRef <- newIORef Nothing
       lastFastest <- newIORef 0
-      let go k = when (k <= 600) $ do
+      let go k = when (k <= (600 :: Int)) $ do
             stepNative w
             rest <- readIORef restRef
             v <- fastest

@@ -68,7 +68,7 @@ sphereChain :: Scene
 sphereChain =
   let r = 0.03
       at k = let a = 2 * r * fromIntegral (k :: Int) in V3 (cos a) 0 (sin a)
-      pin k = let a = 2 * r * (fromIntegral k + 0.5) in V3 (cos a) 0 (sin a)
+      pin k = let a = 2 * r * (fromIntegral (k :: Int) + 0.5) in V3 (cos a) 0 (sin a)
       bodies = BodySpec CircleShape r 1 True (at 0) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial
                : [BodySpec CircleShape r 1 False (at k) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial | k <- [1 .. 20]]
                ++ [BodySpec SquareShape r 1 False (at 21) (V3 0 0 0) 0 0 Nothing [] Nothing 0 sceneMaterial]

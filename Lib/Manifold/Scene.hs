@@ -231,7 +231,7 @@ sleeping values specs = forM (zip3 [0 :: Int ..] values specs) $ \(k, v, spec) -
         A.Object o -> member o "awake" == Just (A.Bool False) && not (bsStatic (specs !! i))
         _ -> False
   label <- optional path keys "island" Nothing $ \at x -> case x of
-    A.Number n | toRealFloat n == fromIntegral (round (toRealFloat n :: Double) :: Int)
+    A.Number n | toRealFloat n == (fromIntegral (round (toRealFloat n :: Double) :: Int) :: Double)
                , asleepAt (round (toRealFloat n :: Double)) -> pure (Just (round (toRealFloat n :: Double)))
     _ -> problem at "must be the index of a sleeping body (one with \"awake\": false)"
   case (awake, label) of
@@ -321,7 +321,7 @@ joint n path v = do
         Weld -> ["anchor", "referenceAngle", "hertz", "dampingRatio"]
   o <- object path (common ++ own) v
   let index at = \case
-        A.Number x | toRealFloat x == fromIntegral (round (toRealFloat x :: Double) :: Int)
+        A.Number x | toRealFloat x == (fromIntegral (round (toRealFloat x :: Double) :: Int) :: Double)
                    , let k = round (toRealFloat x :: Double), k >= 0, k < n -> pure k
         _ -> problem at ("must be a body's index, from 0 to " ++ show (n - 1))
   a <- required path o "a" index
