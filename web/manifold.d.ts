@@ -329,6 +329,12 @@ declare namespace Manifold {
     /** where step k (1 … steps) along direction d sits among a body's vertices (0 is the centre) */
     vertexIndex: (d: number, k: number) => number;
     mouse: Record<MouseField, number>;
+    /**
+     * a body's hull among its `stride` numbers of the hull array: the radius
+     * rounding it, corner k's (a, b) in the body's frame at local + 2k, and
+     * walked onto the surface, (x, y, z) at world + 3k (slots.corners counts them)
+     */
+    hull: { stride: number; radius: number; local: number; world: number };
     /** a joint's fields and their number */
     joint: Record<JointField, number>;
     jointStride: number;

@@ -579,7 +579,56 @@ async function testBodyForms(check, context, base) {
   await page.close();
 }
 
+// ---- a polygon is drawn with its corners: its outline's 24 directions
+// sample its edges and would cut each corner off (a 2:1 box's corners lie
+// between them); a few pixels inside each corner, from both its edges, the
+// picture is the body's colour, and a few pixels beyond it is not, as a
+// coarser form and as the whole mesh, flat and on the sphere ----
+const CORNER_PIXELS = 3.5;
+async function testCorners(check, context, base) {
+  const errors = [];
+  for (const [space, p, size] of [["plane", [0, 0, 0], 0.1], ["sphere", [0, 1, 0], 0.06]]) {
+    const page = await openSpace(context, base, "#space=" + space, errors);
+    const results = [];
+    for (const detail of ["auto", "mesh"]) {
+      // the body's centre and its corners as the engine walked them (the hull array), projected
+      const r = await page.evaluate(async function (a) {
+        const m = window.manifold;
+        m.pause();
+        m.setOptions({ bodyDetail: a.detail });
+        await m.loadScene({ space: a.space, gravity: false, bodies: [{ shape: { box: [2 * a.size, a.size] }, p: a.p, angle: 0.3 }] });
+        // from afar a coarser form, from close by (and bodyDetail "mesh") the whole mesh
+        const far = a.detail === "auto" ? 16 : 8;
+        m.setCamera({ eye: [a.p[0], a.p[1] + far * a.size, a.p[2] + 0.5 * a.size], target: a.p, up: [0, 0, -1], fov: 45 });
+        const w = window.ManifoldWeb.page.state.world, H = w.engine.hull, hull = w.view().hull;
+        const corner = function (k) { const o = H.world + 3 * ((k + 4) % 4); return m.project([hull[o], hull[o + 1], hull[o + 2]]); };
+        const c = m.project(m.bodies()[0].p), out = [];
+        for (let k = 0; k < 4; k++) {
+          const q = corner(k), prev = corner(k - 1), next = corner(k + 1);
+          const unit = function (v) { const l = Math.hypot(v[0], v[1]); return [v[0] / l, v[1] / l]; };
+          const u = unit([prev[0] - q[0], prev[1] - q[1]]), v = unit([next[0] - q[0], next[1] - q[1]]), o = unit([q[0] - c[0], q[1] - c[1]]);
+          // in from both edges, and out along the line from the centre
+          out.push({ inside: [q[0] + a.px * (u[0] + v[0]), q[1] + a.px * (u[1] + v[1])], outside: [q[0] + a.px * o[0], q[1] + a.px * o[1]] });
+        }
+        m.render();
+        return { points: out, forms: m.stats().bodyForms };
+      }, { space, p, size, detail, px: CORNER_PIXELS });
+      const shot = await canvasShot(page, path.join(OUT, space + "-box-corners-" + detail + ".png"));
+      const inside = r.points.map(function (q) { return bodyFraction(shot, q.inside[0], q.inside[1], 1); });
+      const outside = r.points.map(function (q) { return bodyFraction(shot, q.outside[0], q.outside[1], 1); });
+      results.push({ detail, forms: r.forms, inside, outside });
+    }
+    check(space + ": a 2:1 box is drawn with its corners (body-coloured " + CORNER_PIXELS + " px in from both edges at each, not " + CORNER_PIXELS + " px beyond it), as a coarser form and as its mesh",
+      results.every(function (x) { return x.inside.every(function (f) { return f === 1; }) && x.outside.every(function (f) { return f === 0; }); }) &&
+        results[0].forms.meshes === 0 && results[1].forms.meshes === 1,
+      JSON.stringify(results));
+    await page.close();
+  }
+  check("corner pages: no console errors", errors.length === 0, errors.join("; "));
+}
+
 export async function testBodies(check, context, base) {
+  await testCorners(check, context, base);
   await testBodyForms(check, context, base);
   await testHidden(check, context, base);
   await testDrag(check, context, base, "sphere", [0.5, 0.5], [-100, 0]);

@@ -6,7 +6,11 @@
 // where they are (buildStatic, chooseForms), filled
 // with the body's colour and lit with the traced surface normal, with a dark
 // outline and a light axis mark (centre → outline vertex of direction 0) drawn
-// in the fragment shader a fixed number of pixels wide. A fragment behind the
+// in the fragment shader a fixed number of pixels wide. A polygon of corners
+// (a box, a square, a polygon of up to eight sides, one's own vertices; not
+// rounded) is drawn with its corners: its outline's directions sample its
+// edges, so between two of them the form's outer triangle is replaced by a
+// fan through the corners the engine walked onto the surface (hullForm). A fragment behind the
 // traced surface (further from the eye than the traced distance at its pixel
 // plus a small tolerance, the paper's trick) is discarded, so bodies on the far
 // side are hidden. On quotient spaces every body is also drawn at each of the
@@ -119,6 +123,19 @@ void main() {
    * triangles over those, and their marks.
    * @typedef {{ stride: number, ringStride: number, vertices: Int32Array, indices: Uint32Array, marks: Float32Array }} Form
    */
+  /**
+   * A polygon's corners in its own frame (the hull array's local corners),
+   * and its forms by base form (-1: not made yet).
+   * @typedef {{ count: number, local: Float64Array, forms: Int32Array }} CornerSet
+   */
+
+  // Whether a corner set holds the `count` corners at hull[local ...] (no closure: it runs a frame per polygon).
+  /** @param {CornerSet} set @param {Float64Array} hull @param {number} local @param {number} count */
+  function sameCorners(set, hull, local, count) {
+    if (set.count !== count) return false;
+    for (let q = 0; q < 2 * count; q++) if (set.local[q] !== hull[local + q]) return false;
+    return true;
+  }
 
   class BodyRenderer {
     /** @param {WebGL2RenderingContext} gl */
@@ -143,8 +160,12 @@ void main() {
       this.scratch = new Float32Array(0);
       this.indexScratch = new Uint32Array(0);
       this.formPoints = new Float64Array(0);
-      this.formOf = new Uint8Array(0);
-      this.heldForms = new Uint8Array(0);
+      this.formOf = new Uint16Array(0);
+      this.heldForms = new Uint16Array(0);
+      this.baseForms = 0;       // forms[0 .. baseForms - 1] are buildStatic's; then the polygons' (hullForm)
+      /** @type {CornerSet[]} */
+      this.cornerSets = [];     // the polygons' corners seen, each with its forms (hullForm)
+      this.cornerSetOf = new Int32Array(0); // per body, its polygon's corner set (-1: none known)
       /** @type {Manifold.Rgb[]} */
       this.colourOf = [];       // per body, the colour its vertices in the colour buffer have
       const p = this.program.program;
@@ -220,21 +241,26 @@ void main() {
       const whole = form(1, 1); // its vertices are the engine's, in the engine's order
       this.forms.push(whole);
       this.meshForm = this.forms.length - 1;
+      this.baseForms = this.forms.length;
+      this.cornerSets = [];
+      this.cornerSetOf = new Int32Array(capacity).fill(-1);
+      // a polygon's form has up to maxCorners vertices more, and a triangle more for each
+      const corners = W.Manifold.shapes.maxCorners, vertices = vpb + corners, indices = whole.indices.length + 3 * corners;
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.indices);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, 4 * whole.indices.length * capacity, gl.DYNAMIC_DRAW);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, 4 * indices * capacity, gl.DYNAMIC_DRAW);
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, null);
       for (const b of [this.positions, this.colours, this.marks]) {
         gl.bindBuffer(gl.ARRAY_BUFFER, b);
-        gl.bufferData(gl.ARRAY_BUFFER, 4 * 3 * vpb * capacity, gl.DYNAMIC_DRAW);
+        gl.bufferData(gl.ARRAY_BUFFER, 4 * 3 * vertices * capacity, gl.DYNAMIC_DRAW);
       }
       gl.bindBuffer(gl.ARRAY_BUFFER, null);
       this.layout = { directions: nd, steps: ns, verticesPerBody: vpb };
       this.capacity = capacity;
-      this.scratch = new Float32Array(3 * vpb * capacity);
-      this.indexScratch = new Uint32Array(whole.indices.length * capacity);
+      this.scratch = new Float32Array(3 * vertices * capacity);
+      this.indexScratch = new Uint32Array(indices * capacity);
       this.formPoints = new Float64Array(3 * (ns + 1)); // chooseForms' scratch: a form's points along one line
-      this.formOf = new Uint8Array(capacity);    // per body, the form chosen this frame (an index into forms)
-      this.heldForms = new Uint8Array(capacity); // per body, the form the index, mark and colour buffers hold
+      this.formOf = new Uint16Array(capacity);    // per body, the form chosen this frame (an index into forms)
+      this.heldForms = new Uint16Array(capacity); // per body, the form the index, mark and colour buffers hold
       this.heldCount = -1;
       this.indexCount = 0;
       this.colourOf = [];
@@ -258,6 +284,8 @@ void main() {
       const nd = E.directions, ns = E.steps, vpb = E.verticesPerBody;
       const eye = frame.eye, pixel = frame.bodyDetail === "mesh" ? 0 : frame.pixelAngle;
       const forms = this.forms, meshForm = this.meshForm, L = this.formPoints;
+      // polygons of corners (the engine's hull array; a comparison's mapped world has none)
+      const hull = world.a.hull, scalars = world.a.scalars, S = E.slots, H = E.hull, k = E.sizes.scalars[1];
       let changed = n !== this.heldCount;
       for (let i = 0; i < n; i++) {
         const o = 3 * vpb * i;
@@ -300,10 +328,93 @@ void main() {
           }
           if (fits) chosen = f;
         }
+        const corners = hull ? scalars[i * k + S.corners] : 0;
+        if (corners >= 3 && hull[H.stride * i + H.radius] === 0) chosen = this.hullForm(E, chosen, hull, i, corners);
         this.formOf[i] = chosen;
         if (chosen !== this.heldForms[i]) changed = true;
       }
       return changed;
+    }
+
+    // The form of body i, a polygon of `count` corners, drawn in base form f:
+    // f's vertices and the corners, f's triangles but for each outer one
+    // (the outline between two kept directions) with corners between its
+    // directions, which is a fan through them instead. A corner on a kept
+    // direction is the outline's vertex there already. A corner's vertex is
+    // -1 - its index (drawn from the hull array's walked corners); its mark
+    // is 1 (on the outline) at its angle in the unit disc. Bodies with the
+    // same corners (in their own frames) share their forms, made once; a
+    // frame only compares a body's corners with those of its set.
+    /**
+     * @param {Manifold.Engine} E @param {number} f @param {Float64Array} hull @param {number} i
+     * @param {number} count @returns {number}
+     */
+    hullForm(E, f, hull, i, count) {
+      const H = E.hull, local = H.stride * i + H.local, sets = this.cornerSets;
+      let id = this.cornerSetOf[i];
+      if (id < 0 || !sameCorners(sets[id], hull, local, count)) {
+        id = -1;
+        for (let j = 0; j < sets.length && id < 0; j++) if (sameCorners(sets[j], hull, local, count)) id = j;
+        if (id < 0) {
+          this.cornerSets.push({ count: count, local: hull.slice(local, local + 2 * count), forms: new Int32Array(this.baseForms).fill(-1) });
+          id = this.cornerSets.length - 1;
+        }
+        this.cornerSetOf[i] = id;
+      }
+      const set = this.cornerSets[id];
+      if (set.forms[f] < 0) set.forms[f] = this.makeHullForm(E, this.forms[f], set);
+      return set.forms[f];
+    }
+
+    // hullForm's form of a corner set in base form `form`; returns its index in forms.
+    /** @param {Manifold.Engine} E @param {Form} form @param {CornerSet} set */
+    makeHullForm(E, form, set) {
+      const nd = E.directions, m = nd / form.stride, rings = E.steps / form.ringStride;
+      // each corner's angle in turns from the axis, in [0, 1)
+      const angles = /** @type {number[]} */ ([]);
+      for (let c = 0; c < set.count; c++) {
+        const a = Math.atan2(set.local[2 * c + 1], set.local[2 * c]) / (2 * Math.PI);
+        angles.push(a < 0 ? a + 1 : a);
+      }
+      // the corners in each sector between kept directions j and j + 1, by angle
+      /** @type {number[][]} */
+      const sectors = [];
+      const order = angles.map(function (_, c) { return c; }).sort(function (a, b) { return angles[a] - angles[b]; });
+      for (const c of order) {
+        const u = angles[c] * m, j = Math.floor(u) % m;
+        if (Math.abs(u - Math.round(u)) < 1e-9) continue; // on a kept direction
+        (sectors[j] = sectors[j] || []).push(c);
+      }
+      const vertices = Array.from(form.vertices), marks = Array.from(form.marks), indices = /** @type {number[]} */ ([]);
+      /** @param {number} j @param {number} t */
+      const at = function (j, t) { return 1 + (j % m) * rings + t; }; // as buildStatic's forms
+      /** @param {number[]} t */
+      const key = function (t) { return t.slice().sort(function (x, y) { return x - y; }).join(","); };
+      /** @type {Record<string, number[]>} */
+      const fans = {};
+      sectors.forEach(function (cs, j) {
+        // the outer triangle's inner vertex: the centre in a fan, else the ring inside at direction j
+        const inner = rings === 1 ? 0 : at(j, rings - 2), a = at(j, rings - 1), b = at(j + 1, rings - 1);
+        const chain = [a];
+        for (const c of cs) {
+          chain.push(vertices.length);
+          vertices.push(-1 - c);
+          const t = 2 * Math.PI * angles[c];
+          marks.push(1, Math.cos(t), Math.sin(t));
+        }
+        chain.push(b);
+        const fan = [];
+        for (let q = 0; q + 1 < chain.length; q++) fan.push(inner, chain[q], chain[q + 1]);
+        fans[key([inner, a, b])] = fan;
+      });
+      const triangles = form.indices;
+      for (let t = 0; t < triangles.length; t += 3) {
+        const triangle = [triangles[t], triangles[t + 1], triangles[t + 2]], fan = fans[key(triangle)];
+        indices.push.apply(indices, fan || triangle);
+      }
+      this.forms.push({ stride: form.stride, ringStride: form.ringStride, vertices: Int32Array.from(vertices),
+        indices: Uint32Array.from(indices), marks: Float32Array.from(marks) });
+      return this.forms.length - 1;
     }
 
     // Rebuilds the index and mark buffers for the forms chosen (only when
@@ -370,16 +481,18 @@ void main() {
           gl.bindBuffer(gl.ARRAY_BUFFER, this.colours);
           gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.scratch, 0, at);
         }
-        // positions: the vertices of each body's form, the engine's doubles as floats
-        const v = world.a.verts;
+        // positions: the vertices of each body's form, the engine's doubles as
+        // floats (a polygon's corners from the hull array, as walked)
+        const v = world.a.verts, hull = world.a.hull, H = E.hull;
         let at = 0;
         for (let i = 0; i < n; i++) {
           const vertices = this.forms[this.formOf[i]].vertices, o = vpb * i;
           for (let t = 0; t < vertices.length; t++, at += 3) {
-            const q = 3 * (o + vertices[t]);
-            this.scratch[at] = v[q];
-            this.scratch[at + 1] = v[q + 1];
-            this.scratch[at + 2] = v[q + 2];
+            const w = vertices[t];
+            const from = w >= 0 ? v : hull, q = w >= 0 ? 3 * (o + w) : H.stride * i + H.world + 3 * (-1 - w);
+            this.scratch[at] = from[q];
+            this.scratch[at + 1] = from[q + 1];
+            this.scratch[at + 2] = from[q + 2];
           }
         }
         gl.bindBuffer(gl.ARRAY_BUFFER, this.positions);
@@ -433,9 +546,10 @@ void main() {
     formCounts() {
       let fans = 0, meshes = 0;
       for (let i = 0; i < this.heldCount; i++) {
-        const f = this.heldForms[i];
-        if (f === this.meshForm) meshes++;
-        else if (this.forms[f].ringStride === this.layout.steps) fans++;
+        // (a polygon's form counts as the form it is made from)
+        const form = this.forms[this.heldForms[i]];
+        if (form.stride === 1 && form.ringStride === 1) meshes++;
+        else if (form.ringStride === this.layout.steps) fans++;
       }
       const held = Math.max(0, this.heldCount);
       return { fans: fans, coarser: held - fans - meshes, meshes: meshes, triangles: held > 0 ? this.indexCount / 3 : 0 };

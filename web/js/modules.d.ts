@@ -61,6 +61,7 @@ declare namespace ManifoldWeb {
     vel: Float64Array;
     scalars: Float64Array;
     verts: Float64Array;
+    hull: Float64Array;
   }
   /** A world's memory shared with the physics worker (World.share). */
   interface Sharing {
@@ -93,7 +94,7 @@ declare namespace ManifoldWeb {
     capacity: number;
     images: Manifold.Image[];
     count(): number;
-    a: { verts: Float64Array; scalars: Float64Array };
+    a: { verts: Float64Array; scalars: Float64Array; hull?: Float64Array };
     target: Manifold.Vec3 | null;
   }
   /**

@@ -42,9 +42,9 @@ var ManifoldWebWorld = (function (W) {
   };
   // the shared clock's numbers (a Float64Array): steps taken, ms a step (NaN: not known), the clock's speed
   const CLOCK = { STEPS: 0, STEP_MS: 1, TIME_SCALE: 2, SLOTS: 4 };
-  // the arrays a frame reads (the bodies' outlines, poses, speeds and states, and the counters)
+  // the arrays a frame reads (the bodies' outlines and corners, poses, speeds and states, and the counters)
   /** @type {(keyof ManifoldWeb.View & Manifold.ArrayName)[]} */
-  const VIEW = ["meta", "pos", "vel", "scalars", "verts"];
+  const VIEW = ["meta", "pos", "vel", "scalars", "verts", "hull"];
 
   /** @param {number} length @param {boolean} shared */
   function doubles(length, shared) {

@@ -81,6 +81,8 @@ engineObject l subroutines =
     , "  // where step k (1 .. steps) along direction d sits among a body's vertices (0 is the centre)"
     , "  vertexIndex: " ++ dropWhileEnd (== '\n') (printFunction JavaScript "vertexIndex" (FnType ["d", "k"] False) [vertexIndex (polygon l) (sym "d") (sym "k")]) ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","
+    , "  // a body's hull among its hullStride numbers (Manifold.World): the radius rounding it, corner k's (a, b) in the body's frame at local + 2k, and walked onto the surface, (x, y, z) at world + 3k; scalars' corners counts them"
+    , "  hull: { stride: " ++ show hullStride ++ ", radius: 0, local: " ++ show (hullLocalAt 0 :: Int) ++ ", world: " ++ show (hullWorldAt 0 :: Int) ++ " },"
     , "  // a joint's fields (Manifold.Joint): kind (" ++ intercalate ", " [show (fromEnum k) ++ " " ++ jsName k | k <- [minBound .. maxBound :: JointKind]] ++ "), bodies (b -1: the world), anchors, settings, impulses"
     , "  joint: { " ++ intercalate ", " [jointName k ++ ": " ++ show (fromEnum k) | k <- [minBound .. maxBound :: JointField]] ++ " }, jointStride: " ++ show jointStride ++ ", jointKinds: [" ++ intercalate ", " [show (jsName k) | k <- [minBound .. maxBound :: JointKind]] ++ "],"
     , "  // why addJoint refused a joint, by meta.lastJoint (-1, -2, -3)"
