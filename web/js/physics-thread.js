@@ -109,6 +109,15 @@ var ManifoldWebPhysicsThread = (function (W) {
     w.takeSnapshot();
   }
 
+  // A hidden page draws no frames, and on the main thread steps nothing;
+  // the worker stops too (the next frame tells it the clock again).
+  if (W.document) {
+    W.document.addEventListener("visibilitychange", function () {
+      const w = thread.world;
+      if (W.document.hidden && w && w.shared) Atomics.store(w.shared.control, SHARED.RUNNING, 0);
+    });
+  }
+
   // "auto", "main" or "worker" (see the top of this file).
   /** @param {unknown} s */
   function setSetting(s) {
