@@ -141,6 +141,34 @@ async function testDrag(check, context, base) {
   await page.close();
 }
 
+// A worker that holds the world and never lets go (here: the lock set as if
+// it held it, the clock paused so the real one is idle) is taken for dead
+// after World.hold's patience: the call goes on, and the world goes back to
+// the main thread with a notice.
+async function testUnanswered(check, context, base) {
+  const errors = [];
+  const page = await openSpace(context, base, "#space=sphere", errors);
+  await page.evaluate(function () { const m = window.manifold; m.setSimulation({ thread: "worker", paused: true }); m.resetScene(20); });
+  await page.waitForTimeout(300);
+  const r = await page.evaluate(function () {
+    const m = window.manifold, w = window.ManifoldWeb.page.state.world, SHARED = window.ManifoldWeb.world.SHARED;
+    const before = m.stats().thread;
+    Atomics.store(w.shared.control, SHARED.LOCK, SHARED.WORKER);
+    const t0 = performance.now(), hash = m.hash();
+    return { before: before, ms: performance.now() - t0, hash: hash };
+  });
+  await page.waitForTimeout(300);
+  const after = await page.evaluate(function () {
+    const m = window.manifold;
+    m.step(5);
+    return { thread: m.stats().thread, notice: document.getElementById("notice-text").textContent };
+  });
+  check("a worker that never lets go of the world is taken for dead after 5 s: the call returns, the main thread steps on",
+    r.before === "worker" && r.ms >= 5000 && r.ms < 8000 && /^[0-9a-f]{16}$/.test(r.hash) && after.thread === "main" && /stopped answering/.test(after.notice) && errors.length === 0,
+    JSON.stringify({ r, after, errors }));
+  await page.close();
+}
+
 // From disk nothing is isolated: the page steps on the main thread, and its stats line says why.
 async function testFromDisk(check, context) {
   const errors = [];
@@ -160,5 +188,6 @@ export async function testThread(check, context, base) {
   await testSameSteps(check, context, base);
   await testAuto(check, context, base);
   await testDrag(check, context, base);
+  await testUnanswered(check, context, base);
   await testFromDisk(check, context);
 }

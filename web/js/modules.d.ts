@@ -71,6 +71,8 @@ declare namespace ManifoldWeb {
     snapshots: View[];
     /** the one drawn */
     front: number;
+    /** the worker held the lock past World.hold's patience: taken for dead */
+    unanswered: boolean;
     /** hears of every new set of shared arrays */
     notify: (w: World) => void;
   }

@@ -100,6 +100,14 @@ var ManifoldWebPhysicsThread = (function (W) {
     const w = state.world;
     if (thread.world && thread.world !== w) stop();
     if (!w) return;
+    if (w.shared && w.shared.unanswered && thread.worker) {
+      // a worker that held the world past World.hold's patience: a new one for the next world, this one on the main thread
+      thread.worker.terminate();
+      thread.worker = null;
+      thread.failed = w;
+      stop();
+      state.ui.showNotice("The physics worker stopped answering; the main thread steps the physics.");
+    }
     const want = wanted(w);
     if (want && !w.shared) w.share(true, attach);
     else if (!want && w.shared) stop();

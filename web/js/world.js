@@ -42,6 +42,10 @@ var ManifoldWebWorld = (function (W) {
   };
   // the shared clock's numbers (a Float64Array): steps taken, ms a step (NaN: not known), the clock's speed
   const CLOCK = { STEPS: 0, STEP_MS: 1, TIME_SCALE: 2, SLOTS: 4 };
+  // how long the main thread waits for the worker to end a step (ms): a step
+  // of the most bodies takes a fraction of a second; beyond this the worker
+  // is taken for dead (Sharing.unanswered) and the main thread takes the world
+  const HOLD_PATIENCE_MS = 5000;
   // the arrays a frame reads (the bodies' outlines and corners, poses, speeds and states, and the counters)
   /** @type {(keyof ManifoldWeb.View & Manifold.ArrayName)[]} */
   const VIEW = ["meta", "pos", "vel", "scalars", "verts", "hull"];
@@ -581,9 +585,16 @@ var ManifoldWebWorld = (function (W) {
     hold() {
       const s = this.shared;
       if (s === null || this.holding) return;
-      const c = s.control;
+      const c = s.control, t0 = performance.now();
       Atomics.store(c, SHARED.WANT, 1);
-      while (Atomics.compareExchange(c, SHARED.LOCK, 0, SHARED.MAIN) !== 0) { /* the worker ends its step */ }
+      while (Atomics.compareExchange(c, SHARED.LOCK, 0, SHARED.MAIN) !== 0) {
+        // (the worker ends its step)
+        if (performance.now() - t0 > HOLD_PATIENCE_MS) {
+          Atomics.store(c, SHARED.LOCK, SHARED.MAIN);
+          s.unanswered = true;
+          break;
+        }
+      }
       this.holding = true;
       this.heldAt = this.version;
       queueMicrotask(this.letGo.bind(this, s));
@@ -650,7 +661,7 @@ var ManifoldWebWorld = (function (W) {
         counts.set(this.counts);
         counts[CLOCK.TIME_SCALE] = 1;
         this.counts = counts;
-        this.shared = { control: control, snapshots: [], front: 1, notify: notify || function () { return undefined; } };
+        this.shared = { control: control, snapshots: [], front: 1, unanswered: false, notify: notify || function () { return undefined; } };
       } else {
         this.counts = Float64Array.from(this.counts);
         this.shared = null;
