@@ -430,6 +430,8 @@ declare namespace Manifold {
       size: (code: number, p: number, q: number, size: number) => number;
       /** a convex polygon's size from its count, its radius and its corners a0, b0, ... (maxCorners of them) */
       polygonSize: (n: number, r: number, ...corners: number[]) => number;
+      /** 1 if the first n corners a0, b0, ... (maxCorners of them) go round a convex polygon in order, either way round, else 0 */
+      convexRound: (n: number, ...corners: number[]) => number;
     };
     /** web/gen/spaces.js: every space, in catalogue order */
     spaceIndex: SpaceEntry[];

@@ -31,6 +31,7 @@ module Manifold.Hull
   , hullMass
     -- * Convex polygons
   , regularCorners
+  , convexRound
   , orientCorners
   , polygonMoments
   , centredCorners
@@ -247,6 +248,37 @@ orientCorners n cs =
   let twiceArea = sum [counted n k * cross2 c (nextOf n cs k) | (k, c) <- zip [0 ..] cs]
       reversed k = cornerAt cs (n - 1 - fromIntegral k)
   in [ (select twiceArea a ra, select twiceArea b rb) | (k, (a, b)) <- zip [0 :: Int ..] cs, let (ra, rb) = reversed k ]
+
+-- | Whether the first @n@ corners go round a convex polygon in order,
+-- either way round: for each edge, every corner but its two ends strictly
+-- on one side of its line, the same side for every edge (so repeated,
+-- collinear, non-convex and doubly wound lists are not). 1 if they do,
+-- else 0: a number, so that the page's scene reader runs the same test
+-- from generated code (@Manifold.shapes.convexRound@) with the count at
+-- run time.
+--
+-- >>> convexRound 4 [(0, 0), (1, 0), (1, 1), (0, 1 :: Double)]
+-- 1.0
+-- >>> convexRound 4 [(0, 0), (1, 1), (1, 0), (0, 1 :: Double)]
+-- 0.0
+-- >>> convexRound 3 [(0, 0), (0, 1), (1, 0), (9, 9 :: Double)]
+-- 1.0
+convexRound :: Field a => a -> [(a, a)] -> a
+convexRound n cs =
+  let m = length cs
+      -- 1 where corner j is the one after corner k (the first after the last)
+      isNext k j
+        | j == k + 1 = counted n j
+        | j == 0 = counted n k - counted n (k + 1)
+        | otherwise = 0
+      sides =
+        [ (counted n k * counted n j * (1 - isNext k j), cross2 (minus2 (nextOf n cs k) a) (minus2 c a))
+        | (k, a) <- zip [0 .. m - 1] cs, (j, c) <- zip [0 .. m - 1] cs, j /= k ]
+      total = sum (map fst sides)
+      onLeft = sum [ w * select s 1 0 | (w, s) <- sides ]
+      onRight = sum [ w * select (negate s) 1 0 | (w, s) <- sides ]
+      every x = 0.5 - abs (total - x)
+  in select (every onLeft) 1 (select (every onRight) 1 0)
 
 -- | The area, first moment @(Sx, Sy)@ and polar second moment about the
 -- frame's origin of a counter-clockwise convex polygon rounded by @r@:

@@ -31,6 +31,7 @@ import qualified Data.Vector as V
 import Linear.V3 (V3 (..), cross)
 
 import Manifold.ContactManifold (maxHullCorners)
+import Manifold.Hull (convexRound)
 import Manifold.Body
 import Manifold.Engine
 import Manifold.Params
@@ -168,7 +169,7 @@ shape path = \case
     corners at = \case
       A.Array a | V.length a >= 3 && V.length a <= maxHullCorners -> do
         cs <- sequence [ corner (at ++ "[" ++ show k ++ "]") c | (k, c) <- zip [0 :: Int ..] (V.toList a) ]
-        unless (convexRound cs) $
+        unless (convexRound (fromIntegral (length cs)) cs > 0.5) $
           problem at "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)"
         pure cs
       _ -> problem at ("must be an array of 3 to " ++ show maxHullCorners ++ " corners [a, b]")
@@ -541,19 +542,3 @@ sceneOfWorld s w = do
       nj <- jointCount w
       joints <- mapM (jointOfWorld w) [0 .. nj - 1]
       pure (Right s { sceneBodies = bodies, sceneJoints = joints })
-
--- | Whether corners go round a convex polygon in order, either way: each
--- edge's line has every other corner strictly on one side, the same side
--- for every edge (so no three corners in a line, no corner repeated, no
--- polygon winding twice).
-convexRound :: [(Double, Double)] -> Bool
-convexRound cs =
-  let n = length cs
-      at k = cs !! (k `mod` n)
-      side k j =
-        let (ax, ay) = at k
-            (bx, by) = at (k + 1)
-            (cx, cy) = at j
-        in signum ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
-      sides = [ side k j | k <- [0 .. n - 1], j <- [0 .. n - 1], j /= k, j /= (k + 1) `mod` n ]
-  in all (== 1) sides || all (== -1) sides

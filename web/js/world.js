@@ -176,16 +176,10 @@ var ManifoldWebWorld = (function (W) {
       if (!Array.isArray(c) || c.length !== 2) problem(at, "must be two numbers [a, b]");
       return [number(at + "[0]", c[0]), number(at + "[1]", c[1])];
     });
-    const n = cs.length, sides = [];
-    for (let k = 0; k < n; k++) {
-      const a = cs[k], b = cs[(k + 1) % n];
-      for (let j = 0; j < n; j++) {
-        if (j === k || j === (k + 1) % n) continue;
-        sides.push(Math.sign((b[0] - a[0]) * (cs[j][1] - a[1]) - (b[1] - a[1]) * (cs[j][0] - a[0])));
-      }
-    }
-    const round = sides.every(function (x) { return x === 1; }) || sides.every(function (x) { return x === -1; });
-    if (!round) problem(path, "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)");
+    // (the test is Manifold.Hull.convexRound's, generated: the count, then the corners padded to maxCorners)
+    const flat = new Array(2 * most).fill(0);
+    cs.forEach(function (c, k) { flat[2 * k] = c[0]; flat[2 * k + 1] = c[1]; });
+    if (shapes().convexRound.apply(null, /** @type {[number, ...number[]]} */ ([cs.length].concat(flat))) !== 1) problem(path, "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)");
     return cs;
   }
   // A body's size: given, or a box's or a capsule's from its numbers (then

@@ -23,7 +23,7 @@ import Numeric (showHex)
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
 import Manifold.ContactManifold (maxHullCorners)
-import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, hullSize, orientCorners, polygonReach, verticesCode)
+import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, convexRound, hullSize, orientCorners, polygonReach, verticesCode)
 import Manifold.Metric (gaussianCurvatureIn, metricName)
 import Manifold.Params (bodyKeys, keyName, materialKeys)
 import Manifold.Space
@@ -145,12 +145,14 @@ spaceIndexScript spaces = unlines $
   , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
   , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
   , "// addBody's shape codes (a regular polygon's is its number of sides), a body's size from its shape's code, its two numbers and its given size,"
-  , "// and a convex polygon's from its count, its radius and its corners a0, b0, ... a7, b7 (Lib/Manifold/Hull.hs)"
+  , "// and a convex polygon's from its count, its radius and its corners a0, b0, ... a7, b7; whether a count's corners go round a convex polygon (1 or 0) (Lib/Manifold/Hull.hs)"
   , "globalThis.Manifold.shapes = { codes: { circle: " ++ code circleCode ++ ", box: " ++ code boxCode ++ ", capsule: " ++ code capsuleCode
       ++ ", vertices: " ++ code verticesCode ++ " }, maxCorners: " ++ show maxHullCorners ++ ", size: "
       ++ dropWhileEnd (== '\n') (printFunction JavaScript "hullSize" (FnType ["code", "p", "q", "size"] False) [hullSize (sym "code") (sym "p") (sym "q") (sym "size")])
       ++ ", polygonSize: "
       ++ dropWhileEnd (== '\n') (printFunction JavaScript "polygonSize" (FnType ("n" : "r" : cornerNames) False) [polygonSizeOf])
+      ++ ", convexRound: "
+      ++ dropWhileEnd (== '\n') (printFunction JavaScript "convexRound" (FnType ("n" : cornerNames) False) [convexRound (sym "n") cornerSyms])
       ++ " };"
   , "globalThis.Manifold.spaceIndex = ["
   ] ++
@@ -164,11 +166,11 @@ spaceIndexScript spaces = unlines $
   where
     code c = show (round (c :: Double) :: Int)
     cornerNames = concat [ [ "a" ++ show k, "b" ++ show k ] | k <- [0 .. maxHullCorners - 1] ]
+    cornerSyms = [ (sym ("a" ++ show k), sym ("b" ++ show k)) | k <- [0 .. maxHullCorners - 1] ]
     polygonSizeOf =
       let n = sym "n"
           r = sym "r"
-          corners = [ (sym ("a" ++ show k), sym ("b" ++ show k)) | k <- [0 .. maxHullCorners - 1] ]
-      in polygonReach n r (centredCorners n r (orientCorners n corners))
+      in polygonReach n r (centredCorners n r (orientCorners n cornerSyms))
 
 num :: Double -> String
 num = renderLiteral JavaScript
