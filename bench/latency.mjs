@@ -12,7 +12,9 @@
 // and ms per step (manifold.stats()) while it runs. Each size runs with the
 // physics on each thread of --threads (setSimulation's thread: "main", the
 // page's own, or "worker", a Web Worker on shared memory), after a row with
-// no bodies at all (the page's own latency: the target is 1.5 × it + 20 ms).
+// no bodies at all (the page's own latency: the target is 1.5 × it + 20 ms),
+// and last the largest size with the clock paused (the bodies drawn, none
+// moving: what drawing them costs a move, whatever thread steps them).
 //
 //   node bench/latency.mjs [--scenes DIR] [--space S] [--sizes N,M] [--threads main,worker] [--moves K] [--seconds T] [--out FILE.json]
 //
@@ -71,15 +73,16 @@ try {
       requestAnimationFrame(function () { window.__latency.push(performance.now() - t0); });
     }, { capture: true });
   });
-  const runs = [{ n: 0, thread: "main" }];
-  for (const n of sizes) for (const thread of threads) runs.push({ n, thread });
-  for (const { n, thread } of runs) {
+  const runs = [{ n: 0, thread: "main", paused: false }];
+  for (const n of sizes) for (const thread of threads) runs.push({ n, thread, paused: false });
+  runs.push({ n: Math.max(...sizes), thread: threads[0], paused: true });
+  for (const { n, thread, paused } of runs) {
     const file = path.join(scenesDir, space + "-" + n + ".json");
     if (n > 0 && !fs.existsSync(file)) { log("no scene " + file + ": skipped"); continue; }
     const scene = n > 0 ? JSON.parse(fs.readFileSync(file, "utf8")) : { space, bodies: [] };
     await page.evaluate((t) => window.manifold.setSimulation({ thread: t }), thread);
     await loadPaused(page, scene);
-    await page.evaluate(() => window.manifold.resume());
+    if (!paused) await page.evaluate(() => window.manifold.resume());
     await page.waitForTimeout(1000 * seconds);
     const stats = await page.evaluate(function () { return window.manifold.stats(); });
     const steps0 = stats.steps, t0 = Date.now();
@@ -98,7 +101,7 @@ try {
     await page.waitForTimeout(300);
     const latency = await page.evaluate(() => window.__latency.slice());
     const r = {
-      space, n, thread: stats.thread, bodies: stats.bodies, fps: stats.fps, frameMs: stats.frameMs, physicsMsPerStep: stats.physicsMsPerStep,
+      space, n, thread: paused ? "paused" : stats.thread, bodies: stats.bodies, fps: stats.fps, frameMs: stats.frameMs, physicsMsPerStep: stats.physicsMsPerStep,
       stepsPerSecond: Math.round(stepsPerSecond * 10) / 10, moves: latency.length,
       latencyMedianMs: Math.round(quantile(latency, 0.5)), latencyP90Ms: Math.round(quantile(latency, 0.9)),
     };
@@ -116,9 +119,11 @@ for (const r of results) {
 }
 // the target: with the most bodies on the worker, within 1.5 × the empty page's median + 20 ms
 const empty = results.find((r) => r.n === 0), biggest = results.filter((r) => r.thread === "worker").pop();
+const still = results.find((r) => r.thread === "paused");
 if (empty && biggest) {
   const limit = 1.5 * empty.latencyMedianMs + 20;
   console.log("\n" + biggest.bodies + " bodies on the worker: median " + biggest.latencyMedianMs + " ms against " +
-    Math.round(limit) + " (1.5 × " + empty.latencyMedianMs + " + 20): " + (biggest.latencyMedianMs <= limit ? "within" : "over"));
+    Math.round(limit) + " (1.5 × " + empty.latencyMedianMs + " + 20): " + (biggest.latencyMedianMs <= limit ? "within" : "over") +
+    (still ? "; drawn with the clock paused: " + still.latencyMedianMs : ""));
 }
 if (outFile) fs.writeFileSync(outFile, JSON.stringify({ viewport: VIEWPORT, results }, null, 2) + "\n");

@@ -99,6 +99,13 @@ async function testAuto(check, context, base) {
   }
   check("thread \"auto\": 200 bodies step on the main thread, 1000 on the worker",
     seen[200].thread === "main" && seen[1000].thread === "worker" && seen[1000].bodies === 1000, JSON.stringify(seen));
+  // the Simulation group's Physics control: chosen with the mouse, and showing what setSimulation set
+  await page.selectOption("#physics-thread", "main");
+  await page.waitForTimeout(300);
+  const chosen = await page.evaluate(function () { const m = window.manifold; return { setting: m.simulation().thread, thread: m.stats().thread }; });
+  const shown = await page.evaluate(function () { window.manifold.setSimulation({ thread: "worker" }); return document.getElementById("physics-thread").value; });
+  check("the Physics control chooses the thread (main: the 1000 bodies back on the main thread) and shows setSimulation's",
+    chosen.setting === "main" && chosen.thread === "main" && shown === "worker", JSON.stringify({ chosen, shown }));
   check("auto pages: no console errors", errors.length === 0, errors.join("; "));
   await page.close();
 }

@@ -89,6 +89,7 @@ var ManifoldWebSimulationSettings = (function (W) {
       onPause: guarded(function () { setSimulation({ paused: !state.clock.paused }); }),
       onStep: guarded(function () { setSimulation({ paused: true }); P.requireWorld().step(1); }),
       onTimeScale: guarded(function (/** @type {number} */ x) { setSimulation({ timeScale: x }); }),
+      onThread: guarded(function (/** @type {string} */ t) { setSimulation({ thread: /** @type {Manifold.ThreadSetting} */ (t) }); }),
       // an engine parameter's control: its scene key and the value it shows
       onSetting: guarded(function (/** @type {string} */ key, /** @type {number | boolean} */ value) {
         /** @type {Record<string, number | boolean>} */

@@ -86,6 +86,7 @@ var ManifoldWebUi = (function (W) {
    * @property {() => void} onPause
    * @property {() => void} onStep
    * @property {(x: number) => void} onTimeScale
+   * @property {(thread: string) => void} onThread
    * @property {(key: string, value: number | boolean) => void} onSetting an engine parameter's control changed (its scene key)
    * @property {() => void} onSave
    * @property {(file: File) => void} onLoad
@@ -207,6 +208,8 @@ var ManifoldWebUi = (function (W) {
     const pause = $("pause");
     /** @type {HTMLSelectElement} */
     const timeScale = $("time-scale");
+    /** @type {HTMLSelectElement} */
+    const physicsThread = $("physics-thread");
     const engineControls = $("engine-controls");
     engineControls.textContent = "";
     /** @type {Setting[]} */
@@ -309,6 +312,7 @@ var ManifoldWebUi = (function (W) {
     pause.addEventListener("click", function () { handlers.onPause(); });
     $("step").addEventListener("click", function () { handlers.onStep(); });
     timeScale.addEventListener("change", function () { handlers.onTimeScale(Number(timeScale.value)); });
+    physicsThread.addEventListener("change", function () { handlers.onThread(physicsThread.value); });
     $("save-scene").addEventListener("click", function () { handlers.onSave(); });
     $("load-scene").addEventListener("click", function () { sceneFile.click(); });
     sceneFile.addEventListener("change", function () {
@@ -507,6 +511,7 @@ var ManifoldWebUi = (function (W) {
           timeScale.appendChild(opt);
         }
         timeScale.value = ts;
+        physicsThread.value = o.thread;
         const values = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (o));
         engineSettings.forEach(function (s) {
           const v = values[s.key.key];
