@@ -225,8 +225,8 @@ var ManifoldWebFrame = (function (W) {
     W.requestAnimationFrame(frame);
     pollFence(now);
     const w = state.world;
+    MW.physicsThread.update();
     if (w && !state.error) {
-      MW.physicsThread.update();
       // (a world the worker steps is stepped by the worker's clock)
       const n = w.shared ? 0 : state.clock.due(now, w.param("dt"), w.stepMs);
       if (w.shared) state.clock.reset();

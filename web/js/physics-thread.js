@@ -95,7 +95,8 @@ var ManifoldWebPhysicsThread = (function (W) {
     else Atomics.add(w.shared.control, SHARED.GENERATION, 1);
   }
 
-  // Once a frame, before it steps or draws.
+  // Once a frame, before it steps or draws (the worker steps while the
+  // clock runs and no error is shown, as the frame would).
   function update() {
     const w = state.world;
     if (thread.world && thread.world !== w) stop();
@@ -112,7 +113,7 @@ var ManifoldWebPhysicsThread = (function (W) {
     if (want && !w.shared) w.share(true, attach);
     else if (!want && w.shared) stop();
     if (!w.shared) return;
-    Atomics.store(w.shared.control, SHARED.RUNNING, state.clock.paused ? 0 : 1);
+    Atomics.store(w.shared.control, SHARED.RUNNING, state.clock.paused || state.error ? 0 : 1);
     w.counts[CLOCK.TIME_SCALE] = state.clock.timeScale;
     w.takeSnapshot();
   }
@@ -126,12 +127,18 @@ var ManifoldWebPhysicsThread = (function (W) {
     });
   }
 
+  // Why `s` is no thread setting, or null.
+  /** @param {unknown} s @returns {string | null} */
+  function settingProblem(s) {
+    return SETTINGS.indexOf(/** @type {ManifoldWeb.ThreadSetting} */ (s)) >= 0 ? null
+      : "thread must be one of " + SETTINGS.map(function (x) { return JSON.stringify(x); }).join(", ");
+  }
+
   // "auto", "main" or "worker" (see the top of this file).
   /** @param {unknown} s */
   function setSetting(s) {
-    if (SETTINGS.indexOf(/** @type {ManifoldWeb.ThreadSetting} */ (s)) < 0) {
-      throw new RangeError("thread must be one of " + SETTINGS.map(function (x) { return JSON.stringify(x); }).join(", "));
-    }
+    const why = settingProblem(s);
+    if (why !== null) throw new RangeError(why);
     thread.setting = /** @type {ManifoldWeb.ThreadSetting} */ (s);
     thread.failed = null;
     update();
@@ -160,6 +167,7 @@ var ManifoldWebPhysicsThread = (function (W) {
     thread: thread,
     unavailable: unavailable,
     update: update,
+    settingProblem: settingProblem,
     setSetting: setSetting,
     inUse: inUse,
     describe: describe,

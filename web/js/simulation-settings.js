@@ -32,9 +32,8 @@ var ManifoldWebSimulationSettings = (function (W) {
   /** @returns {Manifold.Simulation} */
   function simulationSettings() {
     const w = state.world;
-    /** @type {Record<string, boolean | number | null>} */
-    const out = { paused: state.clock.paused, timeScale: state.clock.timeScale };
-    /** @type {Record<string, boolean | number | string | null>} */ (out).thread = MW.physicsThread.thread.setting;
+    /** @type {Record<string, boolean | number | string | null>} */
+    const out = { paused: state.clock.paused, timeScale: state.clock.timeScale, thread: MW.physicsThread.thread.setting };
     engineSettings().forEach(function (k) {
       if (k.kind === "switch") out[k.key] = w ? w.param(k.param) > 0 : !!k.default;
       else out[k.key] = w ? w.param(k.param) : null;
@@ -67,9 +66,8 @@ var ManifoldWebSimulationSettings = (function (W) {
       if (why !== null) throw new RangeError(k.key + " " + why);
       p[k.param] = k.kind === "switch" ? (v ? 1 : 0) : /** @type {number} */ (v);
     });
-    if (o.thread !== undefined && MW.physicsThread.SETTINGS.indexOf(o.thread) < 0) {
-      throw new RangeError("thread must be one of " + MW.physicsThread.SETTINGS.map(function (x) { return JSON.stringify(x); }).join(", "));
-    }
+    const threadProblem = o.thread === undefined ? null : MW.physicsThread.settingProblem(o.thread);
+    if (threadProblem !== null) throw new RangeError(threadProblem);
     if (Object.keys(p).length) P.requireWorld().setParams(p);
     if (o.timeScale !== undefined) state.clock.timeScale = o.timeScale;
     if (o.paused !== undefined) {
