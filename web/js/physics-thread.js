@@ -41,11 +41,18 @@ var ManifoldWebPhysicsThread = (function (W) {
   }
 
   /** @param {ManifoldWeb.World} w */
-  function wanted(w) {
-    if (state.compare || thread.failed === w || unavailable() !== null) return false;
+  // Whether the setting hands world w to the worker (whether or not one can be had here).
+  /** @param {ManifoldWeb.World} w */
+  function asked(w) {
     if (thread.setting === "main") return false;
     // "auto" keeps a world the worker steps there (no back and forth about the threshold)
     return thread.setting === "worker" || w.shared !== null || w.viewCount() >= AUTO_BODIES;
+  }
+
+  // Whether the worker steps world w: asked for, and to be had.
+  /** @param {ManifoldWeb.World} w */
+  function wanted(w) {
+    return !state.compare && thread.failed !== w && unavailable() === null && asked(w);
   }
 
   function theWorker() {
@@ -155,8 +162,7 @@ var ManifoldWebPhysicsThread = (function (W) {
   function describe() {
     if (inUse() === "worker") return "worker";
     const w = state.world;
-    const asked = thread.setting === "worker" || (thread.setting === "auto" && w !== null && w.viewCount() >= AUTO_BODIES);
-    if (!asked || state.compare) return null;
+    if (!w || state.compare || !asked(w)) return null;
     if (unavailable() !== null) return W.crossOriginIsolated ? "main thread, no workers" : "main thread, not isolated";
     return thread.failed !== null && thread.failed === w ? "main thread, the worker failed" : null;
   }
