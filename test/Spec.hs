@@ -10,6 +10,7 @@ import qualified ElementarySpec
 import qualified BodySpec
 import qualified CliSpec
 import qualified ContactManifoldSpec
+import qualified DiscSpec
 import qualified EngineSpec
 import qualified FlatSpec
 import qualified GeodesicPathSpec
@@ -35,6 +36,7 @@ main = do
     describe "Manifold.Elementary" ElementarySpec.spec
     describe "Manifold.Surface" SurfaceSpec.spec
     MetricSpec.spec
+    DiscSpec.spec
     -- (parallel: the longest independent runs, each its own node process
     -- or world, overlap the rest on the second core)
     describe "Manifold.GeodesicPath" (parallel GeodesicPathSpec.spec)

@@ -433,6 +433,26 @@ declare namespace Manifold {
       /** 1 if the first n corners a0, b0, ... (maxCorners of them) go round a convex polygon in order, either way round, else 0 */
       convexRound: (n: number, ...corners: number[]) => number;
     };
+    /** the hyperbolic plane's pictures (Manifold.Disc): the discs' maps, boosts (nine numbers row by row), the geodesic grid, and the same maps as GLSL */
+    hyperbolic: {
+      fromPoincare: (u: number, w: number) => Vec3;
+      toPoincare: (x: number, y: number, z: number) => [number, number];
+      fromKlein: (u: number, w: number) => Vec3;
+      toKlein: (x: number, y: number, z: number) => [number, number];
+      /** the boost carrying the vertex (0, 1, 0) to the point (x, y, z) of the sheet along their geodesic */
+      translationTo: (x: number, y: number, z: number) => number[];
+      /** a matrix (m0 … m8) times the point (x, y, z) */
+      apply: (...mAndPoint: number[]) => Vec3;
+      /** the product m n of m0 … m8 and n0 … n8 */
+      compose: (...mn: number[]) => number[];
+      /** a Lorentz matrix's inverse */
+      inverse: (...m: number[]) => number[];
+      /** the nearest Lorentz matrix (after round-off) */
+      renormalise: (...m: number[]) => number[];
+      /** the geodesic grid's coordinates of a point */
+      grid: (x: number, y: number, z: number) => [number, number];
+      glsl: string;
+    };
     /** web/gen/spaces.js: every space, in catalogue order */
     spaceIndex: SpaceEntry[];
     /** the comparisons whose scripts have loaded (web/gen/compare-torus.js: torus) */
@@ -454,6 +474,13 @@ declare namespace Manifold {
   // ---- the scripting API (window.manifold) ----
 
   type Antialias = "fxaa" | "ssaa" | "off";
+  /** How a hyperbolic space is drawn: the Poincaré disc, the Klein disc (flat views, web/js/disc.js), or the hyperboloid traced in 3-D. */
+  type Model = "poincare" | "klein" | "hyperboloid";
+  /** Where the flat views look: the boost (world → view, nine numbers row by row, a Lorentz matrix of x² − y² + z²), and the disc's radius as a fraction of half the canvas's smaller side. */
+  interface DiscViewSpec {
+    boost: number[];
+    zoom: number;
+  }
   /** "auto": each body in the coarsest form that looks the same as its mesh; "mesh": every body as its whole mesh */
   type BodyDetail = "auto" | "mesh";
   interface DisplayOptions {
@@ -463,6 +490,8 @@ declare namespace Manifold {
     bodyDetail: BodyDetail;
     /** sleeping bodies drawn dimmed */
     dimSleeping: boolean;
+    /** how a hyperbolic space is drawn (other spaces ignore it) */
+    model: Model;
   }
   interface OptionsShown extends DisplayOptions {
     background: { top: Rgb; bottom: Rgb };
@@ -620,10 +649,16 @@ declare namespace Manifold {
     setSpace(name: string): Promise<string>;
     /** the latest space switch (the first is the page's own) */
     ready(): Promise<string>;
-    /** the surface point under pixel (x, y), or null on background */
+    /** the surface point under pixel (x, y), or null on background (in a flat view: from the disc's map, in double precision) */
     pick(x: number, y: number): Vec3 | null;
-    /** continuous pixel coordinates of a world point (pixel (i, j) spans [i, i+1) × [j, j+1)), or null behind the eye */
+    /** continuous pixel coordinates of a world point (pixel (i, j) spans [i, i+1) × [j, j+1)), or null behind the eye (in a flat view: off the upper sheet) */
     project(p: Vec3): [number, number] | null;
+    /** where the flat views of a hyperbolic space look */
+    discView(): DiscViewSpec;
+    /** any subset; throws on a matrix that is not a Lorentz boost or a zoom out of range */
+    setDiscView(v: Partial<DiscViewSpec>): DiscViewSpec;
+    /** walks the flat view as a drag from the canvas's centre by (dx, dy) backing-store pixels does; throws when the space is not shown flat */
+    walk(dx: number, dy: number): DiscViewSpec;
     /** draws one full-resolution frame now */
     render(): void;
     /** draws a frame now and waits for the GPU: its time in ms (false: reuse the traced surface if the view has not changed); null when nothing can be drawn */

@@ -18,7 +18,8 @@
 // (the error paths), file (file://), hidpi (HiDPI and touch), compare
 // (compare.mjs), types (web/manifold.d.ts against the page and web/gen:
 // types.mjs), layout (the controls' panel at 640 to 1920 px: layout.mjs), thread (the
-// physics worker: thread.mjs), benchmarks (the bench scripts end to end: benchscripts.mjs).
+// physics worker: thread.mjs), disc (a hyperbolic space's flat views: disc.mjs), benchmarks
+// (the bench scripts end to end: benchscripts.mjs).
 // The default run is all of them.
 import fs from "node:fs";
 import path from "node:path";
@@ -38,6 +39,7 @@ import { testBenchScripts } from "./benchscripts.mjs";
 import { testTypes } from "./types.mjs";
 import { testLayout } from "./layout.mjs";
 import { testThread } from "./thread.mjs";
+import { testDisc } from "./disc.mjs";
 import { commandLine } from "../../bench/options.mjs";
 
 const VIEWPORT = { width: 640, height: 480 };
@@ -50,7 +52,7 @@ const BG_TOL = 4;           // per channel, background pixel vs the expected gra
 // p,q only those other parts; either alone skips the rest. A mistyped option
 // or part is refused (exit 2) rather than run everything or nothing, and a
 // space the page does not have fails a check.
-const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "tools", "joints", "capture", "errors", "file", "hidpi", "compare", "types", "layout", "thread", "benchmarks"];
+const PARTS = ["interaction", "performance", "bodies", "controls", "keys", "tools", "joints", "capture", "errors", "file", "hidpi", "compare", "types", "layout", "thread", "disc", "benchmarks"];
 const USAGE = "node test/browser/run.mjs [--spaces A,B] [--parts P,Q]   (parts: " + PARTS.join(", ") + ")";
 const { text } = commandLine({ usage: USAGE, known: ["--spaces", "--parts"] });
 function listArg(name) {
@@ -679,6 +681,7 @@ async function main() {
     if (partWanted("types")) await testTypes(check, context, server.url);
     if (partWanted("layout")) await testLayout(check, browser, server.url);
     if (partWanted("thread")) await testThread(check, context, server.url);
+    if (partWanted("disc")) await testDisc(check, context, server.url);
     if (partWanted("benchmarks")) await testBenchScripts(check);
     await context.close();
   } catch (e) {

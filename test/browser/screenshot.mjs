@@ -2,6 +2,8 @@
 //   node test/browser/screenshot.mjs [space] [out.png] [added bodies]   (default: torus docs/screenshot.png 14)
 // The comparison view's picture (docs/torus-comparison.png: curvature on, 12 s of motion):
 //   node test/browser/screenshot.mjs compare-torus docs/torus-comparison.png
+// The hyperbolic plane in the Poincaré disc, walked away from the vertex (docs/hyperbolic-disc.png):
+//   node test/browser/screenshot.mjs hyperbolic-plane docs/hyperbolic-disc.png 24
 import fs from "node:fs";
 import path from "node:path";
 import { ROOT, launchBrowser, serve } from "./lib.mjs";
@@ -41,6 +43,15 @@ try {
       await page.selectOption("#body-shape", shapes[k % 3]);
       await page.click("#add-body");
     }
+  }
+  if (space === "hyperbolic-plane") {
+    // a walk: the plane dragged from the disc's centre by (170, -60) px with the right button
+    const box = await page.locator("#view").boundingBox();
+    const c = [box.x + box.width / 2, box.y + box.height / 2];
+    await page.mouse.move(c[0], c[1]);
+    await page.mouse.down({ button: "right" });
+    await page.mouse.move(c[0] + 170, c[1] - 60, { steps: 10 });
+    await page.mouse.up({ button: "right" });
   }
   await page.waitForTimeout(1500); // let the stats line settle
   fs.mkdirSync(path.dirname(out), { recursive: true });

@@ -30,6 +30,8 @@ var ManifoldWebApi = (function (W) {
       ready: function () { return state.current || Promise.reject(new Error(state.error ? state.error.text() : "not started")); },
       // surface point [x, y, z] under backing-store pixel (x, y), origin top-left, or null
       pick: function (x, y) {
+        MW.picking.checkPixel(x, y);
+        if (P.flatModel() !== null) return input.surfacePoint(x, y);
         if ((frame.surfaceStale() || state.preview) && !state.error) frame.renderNow(false);
         return MW.picking.pick(state.error ? null : state.tracer, x, y);
       },
@@ -42,6 +44,8 @@ var ManifoldWebApi = (function (W) {
       // world point → [px, py] continuous backing-store pixels (pixel (i, j) spans [i, i+1) × [j, j+1)), or null behind the eye
       project: function (p) {
         if (!MW.camera.isVec3(p)) throw new TypeError("project expects [x, y, z]");
+        const model = P.flatModel();
+        if (model !== null) return state.disc.project(model, p, state.width, state.height);
         return state.camera.project(p, state.width, state.height);
       },
       stats: frame.statsObject,
@@ -49,6 +53,21 @@ var ManifoldWebApi = (function (W) {
       setCamera: function (c) {
         state.camera.set(c);
         return state.camera.get();
+      },
+      // where the flat views of a hyperbolic space look: {boost (nine numbers, world → view, row by row), zoom}
+      discView: function () { return state.disc.get(); },
+      setDiscView: function (v) {
+        state.disc.set(v);
+        return state.disc.get();
+      },
+      // walks the flat view as a drag from the canvas's centre by (dx, dy) backing-store pixels does
+      walk: function (dx, dy) {
+        if (typeof dx !== "number" || typeof dy !== "number" || !isFinite(dx) || !isFinite(dy)) throw new TypeError("walk(dx, dy) expects pixels");
+        const model = P.flatModel();
+        if (model === null) throw new Error("walk: the space is not shown in a flat view (a hyperbolic space with the model poincare or klein)");
+        const c = [0.5 * state.width, 0.5 * state.height];
+        state.disc.walk(model, [c[0], c[1]], [c[0] + dx, c[1] + dy], state.width, state.height);
+        return state.disc.get();
       },
       // the error text shown on the page, or null
       error: function () { return state.error ? state.error.text() : null; },

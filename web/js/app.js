@@ -18,7 +18,11 @@
       onGrid: function (/** @type {boolean} */ on) { hash.setOptions({ grid: on }); },
       onDimSleeping: function (/** @type {boolean} */ on) { hash.setOptions({ dimSleeping: on }); },
       onAntialias: function (/** @type {Manifold.Antialias} */ mode) { hash.setOptions({ antialias: mode }); },
-      onResetView: function () { if (state.space) state.camera.set(state.space.camera); },
+      onModel: function (/** @type {Manifold.Model} */ model) { hash.setOptions({ model: model }); },
+      onResetView: function () {
+        if (state.space) state.camera.set(state.space.camera);
+        state.disc.reset();
+      },
       onAdd: guarded(function () { scenes.addAtView(); }),
       onNewBody: guarded(MW.tools.setNewBody),
       onTool: guarded(MW.tools.setTool),

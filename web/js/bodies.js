@@ -49,7 +49,7 @@ void main() {
   vWorld = p;
   vColour = aColour;
   vMark = aMark;
-  gl_Position = uViewProjection * vec4(p, 1.0);
+  gl_Position = projectToClip(p);
 }
 `;
 
@@ -103,7 +103,7 @@ uniform mat4 uViewProjection;
 uniform vec3 uPoint;
 uniform float uSize;
 void main() {
-  gl_Position = uViewProjection * vec4(uPoint, 1.0);
+  gl_Position = projectToClip(uPoint);
   gl_PointSize = uSize;
 }
 `;
@@ -141,8 +141,8 @@ void main() {
     /** @param {WebGL2RenderingContext} gl */
     constructor(gl) {
       this.gl = gl;
-      this.program = G.createProgram(gl, VERTEX, FRAGMENT, "body polygons");
-      this.markProgram = G.createProgram(gl, MARK_VERTEX, MARK_FRAGMENT, "grab mark");
+      this.program = G.createProgram(gl, W.ManifoldWeb.disc.withProjection(VERTEX), FRAGMENT, "body polygons");
+      this.markProgram = G.createProgram(gl, W.ManifoldWeb.disc.withProjection(MARK_VERTEX), MARK_FRAGMENT, "grab mark");
       this.vao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
       this.markVao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
       this.positions = /** @type {WebGLBuffer} */ (gl.createBuffer());
@@ -507,7 +507,7 @@ void main() {
         gl.bindTexture(gl.TEXTURE_2D, frame.normalTexture);
         gl.uniform1i(p.uniform("uPosition"), 0);
         gl.uniform1i(p.uniform("uNormal"), 1);
-        gl.uniformMatrix4fv(p.uniform("uViewProjection"), false, frame.viewProjection);
+        W.ManifoldWeb.disc.DiscView.setUniforms(gl, p, frame);
         gl.uniform3fv(p.uniform("uEye"), frame.eye);
         gl.uniform1f(p.uniform("uTolerance"), 0.01);
         gl.uniform1f(p.uniform("uLineWidth"), 1.6 * Math.max(1, frame.scale));
@@ -531,7 +531,7 @@ void main() {
       if (world.target) {
         const m = this.markProgram;
         gl.useProgram(m.program);
-        gl.uniformMatrix4fv(m.uniform("uViewProjection"), false, frame.viewProjection);
+        W.ManifoldWeb.disc.DiscView.setUniforms(gl, m, frame);
         gl.uniform3fv(m.uniform("uPoint"), world.target);
         gl.uniform1f(m.uniform("uSize"), 9 * Math.max(1, frame.scale));
         gl.bindVertexArray(this.markVao);

@@ -30,8 +30,8 @@ out vec4 vColour;
 void main() {
   vec3 a = uImageScale * aFrom + uImageShift;
   vec3 b = uImageScale * aTo + uImageShift;
-  vec4 ca = uViewProjection * vec4(a, 1.0);
-  vec4 cb = uViewProjection * vec4(b, 1.0);
+  vec4 ca = projectToClip(a);
+  vec4 cb = projectToClip(b);
   vec2 sa = ca.xy / ca.w * uViewport, sb = cb.xy / cb.w * uViewport;
   vec2 along = sb - sa;
   vec2 across = length(along) > 1e-6 ? normalize(vec2(-along.y, along.x)) : vec2(0.0, 1.0);
@@ -67,7 +67,7 @@ void main() {
     /** @param {WebGL2RenderingContext} gl */
     constructor(gl) {
       this.gl = gl;
-      this.program = G.createProgram(gl, VERTEX, FRAGMENT, "curves");
+      this.program = G.createProgram(gl, W.ManifoldWeb.disc.withProjection(VERTEX), FRAGMENT, "curves");
       this.vao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
       this.corners = /** @type {WebGLBuffer} */ (gl.createBuffer());
       this.segments = /** @type {WebGLBuffer} */ (gl.createBuffer());
@@ -139,7 +139,7 @@ void main() {
       gl.activeTexture(gl.TEXTURE0);
       gl.bindTexture(gl.TEXTURE_2D, frame.positionTexture);
       gl.uniform1i(p.uniform("uPosition"), 0);
-      gl.uniformMatrix4fv(p.uniform("uViewProjection"), false, frame.viewProjection);
+      W.ManifoldWeb.disc.DiscView.setUniforms(gl, p, frame);
       gl.uniform3fv(p.uniform("uEye"), frame.eye);
       gl.uniform2f(p.uniform("uViewport"), frame.width / 2, frame.height / 2);
       gl.uniform1f(p.uniform("uWidth"), width * Math.max(1, frame.scale));

@@ -18,7 +18,10 @@ var ManifoldWebFrame = (function (W) {
 
   // What the frames drawn so far were, and their timing (this file's own).
   const drawn = {
-    cameraVersion: -1,
+    cameraVersion: "",      // viewVersion() of the last frame drawn
+    discVersion: -1,        // the flat view's boost (world → view) and its inverse, as floats, at this version
+    boost: new Float32Array(9),
+    toWorld: new Float32Array(9),
     frameTimes: /** @type {number[]} */ ([]), // performance.now() of recent frames
     frameCount: 0,
     gpuFrameMs: /** @type {number | null} */ (null), // GPU time of the last timed full frame
@@ -64,8 +67,16 @@ var ManifoldWebFrame = (function (W) {
     if (state.dirty) drawn.surfaceGen++;
     state.tracer.configure(state.width, state.height, state.options.antialias, !!preview);
     const camera = state.camera;
-    const key = retrace ? null : camera.version + ":" + drawn.surfaceGen;
+    const model = P.flatModel(), disc = state.disc;
+    state.ui.setFlatHelp(model !== null);
+    const key = retrace ? null : viewVersion() + ":" + drawn.surfaceGen;
     const traced = retrace || state.tracer.current.surfaceKey !== key;
+    const radius = disc.radius(state.width, state.height);
+    if (model !== null && drawn.discVersion !== disc.version) {
+      drawn.boost.set(disc.boost);
+      drawn.toWorld.set(W.Manifold.hyperbolic.inverse(...disc.boost));
+      drawn.discVersion = disc.version;
+    }
     state.tracer.render({
       camera: camera,
       bounds: state.space ? state.space.bounds : 1,
@@ -74,9 +85,14 @@ var ManifoldWebFrame = (function (W) {
       grid: state.options.grid,
       gridSpacing: P.GRID_SPACING,
       background: P.BACKGROUND,
+      flat: model === null ? null : { model: model, toWorld: drawn.toWorld, radius: radius },
     }, function (frame) {
       frame.viewProjection = camera.viewProjection(state.width / state.height, 0.01, 100);
       frame.eye = /** @type {Manifold.Vec3} */ (camera.eye.slice());
+      if (model !== null) {
+        frame.flat = { model: model, boost: drawn.boost, radius: radius * frame.scale };
+        frame.pixelAngle = 0; // (chooseForms: a flat view draws every body's whole mesh)
+      }
       drawBodies(frame);
     }, key);
     const now = performance.now();
@@ -88,7 +104,7 @@ var ManifoldWebFrame = (function (W) {
     }
     state.dirty = false;
     state.preview = !!preview;
-    drawn.cameraVersion = camera.version;
+    drawn.cameraVersion = viewVersion();
     drawn.world = state.world;
     drawn.worldVersion = state.world ? state.world.version : -1;
     drawn.toolsVersion = MW.tools.tools.version;
@@ -130,9 +146,14 @@ var ManifoldWebFrame = (function (W) {
     return drawn.gpuFrameMs;
   }
 
+  // what changes whenever the view does: the camera, the flat views' viewer and model
+  function viewVersion() {
+    return state.camera.version + "/" + state.disc.version + "/" + P.flatModel();
+  }
+
   // the traced surface is out of date
   function surfaceStale() {
-    return state.dirty || drawn.cameraVersion !== state.camera.version;
+    return state.dirty || drawn.cameraVersion !== viewVersion();
   }
   // the bodies moved, came or went, or the curves changed, since the last frame
   function bodiesChanged() {

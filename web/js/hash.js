@@ -1,5 +1,5 @@
 // The display options (curvature colouring, grid, antialiasing, body detail,
-// sleeping bodies dimmed)
+// sleeping bodies dimmed, a hyperbolic space's model)
 // and the URL hash: the hash kept in step with the page (space, the preset
 // scene loaded, else bodies when not the default scene's count, options),
 // and a hash read back (at start and when it is edited) into a space, a
@@ -25,6 +25,7 @@ var ManifoldWebHash = (function (W) {
     if (!state.options.grid) params.grid = 0;
     if (!state.options.dimSleeping) params.dim = 0;
     if (state.options.antialias !== P.DEFAULT_OPTIONS.antialias) params.aa = state.options.antialias;
+    if (state.options.model !== P.DEFAULT_OPTIONS.model) params.model = state.options.model;
     if (state.debugBrokenShader) params.debugBrokenShader = 1;
     const hash = MW.ui.formatHash(params);
     if (W.location.hash === hash) return;
@@ -37,7 +38,10 @@ var ManifoldWebHash = (function (W) {
 
   /** @param {Partial<Manifold.DisplayOptions>} o @returns {Manifold.DisplayOptions} */
   function setOptions(o) {
-    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail, dimSleeping}");
+    if (!o || typeof o !== "object") throw new TypeError("setOptions expects {curvature, grid, antialias, bodyDetail, dimSleeping, model}");
+    if (o.model !== undefined && MW.disc.MODELS.indexOf(o.model) < 0) {
+      throw new TypeError("model must be one of " + MW.disc.MODELS.join(", "));
+    }
     if (o.antialias !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(o.antialias) < 0) {
       throw new TypeError("antialias must be one of " + MW.tracer.ANTIALIAS_MODES.join(", "));
     }
@@ -49,10 +53,12 @@ var ManifoldWebHash = (function (W) {
     if (o.dimSleeping !== undefined) state.options.dimSleeping = !!o.dimSleeping;
     if (o.antialias !== undefined) state.options.antialias = o.antialias;
     if (o.bodyDetail !== undefined) state.options.bodyDetail = o.bodyDetail;
+    if (o.model !== undefined) state.options.model = o.model;
     state.ui.setCurvature(state.options.curvature);
     state.ui.setGrid(state.options.grid);
     state.ui.setDimSleeping(state.options.dimSleeping);
     state.ui.setAntialias(state.options.antialias);
+    state.ui.setModel(state.options.model);
     state.dirty = true;
     if (state.spaceName) updateHash();
     return Object.assign({}, state.options);
@@ -66,6 +72,7 @@ var ManifoldWebHash = (function (W) {
     if (params.grid !== undefined) o.grid = !(params.grid === "0" || params.grid === "false");
     if (params.dim !== undefined) o.dimSleeping = !(params.dim === "0" || params.dim === "false");
     if (params.aa !== undefined && MW.tracer.ANTIALIAS_MODES.indexOf(params.aa) >= 0) o.antialias = /** @type {Manifold.Antialias} */ (params.aa);
+    if (params.model !== undefined && MW.disc.MODELS.indexOf(/** @type {Manifold.Model} */ (params.model)) >= 0) o.model = /** @type {Manifold.Model} */ (params.model);
     return o;
   }
 

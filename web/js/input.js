@@ -3,7 +3,9 @@
 // under the pointer; on empty surface it does what the tool says (tools.js:
 // throw a body, draw a geodesic); on the background, off the surface, it
 // orbits. The right button orbits anywhere, the middle button or shift pans,
-// the wheel and a two-finger pinch zoom. Pointer events: mouse, pen and
+// the wheel and a two-finger pinch zoom. In a flat view of a hyperbolic
+// space (web/js/disc.js) every drag that orbits or pans walks instead, two
+// fingers walk by their middle, and the wheel and a pinch size the disc. Pointer events: mouse, pen and
 // touch alike. Also the surface point under a pixel, and grab/drag/release
 // by pixel for window.manifold.
 /* exported ManifoldWebInput */
@@ -21,6 +23,13 @@ var ManifoldWebInput = (function (W) {
   /** @param {number} x @param {number} y */
   function surfacePoint(x, y) {
     if (state.error || !state.tracer) return null;
+    const model = MW.page.flatModel();
+    if (model !== null) {
+      // a flat view: the point from the disc's map, in double precision
+      const q = state.disc.unproject(model, x, y, state.width, state.height);
+      const boundary = state.space.boundary;
+      return q && (!boundary || boundary(q[0], q[1], q[2]) >= 0) ? q : null;
+    }
     if (MW.frame.surfaceStale()) MW.frame.renderNow(false);
     return MW.picking.pick(state.tracer, x, y);
   }
@@ -67,6 +76,12 @@ var ManifoldWebInput = (function (W) {
     let toolPointer = null;     // the pointer of a tool's gesture on the surface (CSS pixels), or null
 
     function cssHeight() { return Math.max(1, canvas.getBoundingClientRect().height); }
+    // the pointers' middle, in backing-store pixels
+    function middle() {
+      let x = 0, y = 0;
+      pointers.forEach(function (q) { x += q.x / pointers.size; y += q.y / pointers.size; });
+      return MW.picking.clientToPixel(canvas, x, y);
+    }
     function spread() {
       const p = Array.from(pointers.values());
       return Math.hypot(p[0].x - p[1].x, p[0].y - p[1].y);
@@ -137,9 +152,19 @@ var ManifoldWebInput = (function (W) {
       const p = pointers.get(e.pointerId);
       if (!p) return;
       const dx = e.clientX - p.x, dy = e.clientY - p.y;
+      const from = middle();
       p.x = e.clientX;
       p.y = e.clientY;
-      if (pointers.size === 1) {
+      const model = MW.page.flatModel();
+      if (model !== null) {
+        // a flat view: a drag walks, keeping the point under the pointer (two fingers: under their middle)
+        if (pointers.size <= 2) state.disc.walk(model, from, middle(), state.width, state.height);
+        if (pointers.size === 2) {
+          const d = spread();
+          if (pinch > 0 && d > 0) state.disc.zoomBy(pinch / d);
+          pinch = d;
+        }
+      } else if (pointers.size === 1) {
         if (panning) state.camera.pan(dx, dy, cssHeight());
         else state.camera.orbit(dx, dy, cssHeight());
       } else if (pointers.size === 2) {
@@ -182,7 +207,9 @@ var ManifoldWebInput = (function (W) {
       if (!state.space) return;
       e.preventDefault();
       const lines = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1;
-      state.camera.zoom(Math.exp(Math.max(-200, Math.min(200, e.deltaY * lines)) * 0.0015));
+      const factor = Math.exp(Math.max(-200, Math.min(200, e.deltaY * lines)) * 0.0015);
+      if (MW.page.flatModel() !== null) state.disc.zoomBy(factor);
+      else state.camera.zoom(factor);
       MW.frame.interacted();
     }, { passive: false });
     canvas.addEventListener("contextmenu", function (e) { e.preventDefault(); });

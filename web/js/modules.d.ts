@@ -9,6 +9,7 @@
 interface ManifoldWebModules {
   gl: typeof ManifoldWebGl;
   camera: typeof ManifoldWebCamera;
+  disc: typeof ManifoldWebDisc;
   tracer: typeof ManifoldWebTracer;
   picking: typeof ManifoldWebPicking;
   world: typeof ManifoldWebWorld;
@@ -41,6 +42,7 @@ declare var ManifoldWeb: ManifoldWebModules;
 declare namespace ManifoldWeb {
   type PageError = InstanceType<typeof ManifoldWebGl.PageError>;
   type Camera = InstanceType<typeof ManifoldWebCamera.Camera>;
+  type DiscView = InstanceType<typeof ManifoldWebDisc.DiscView>;
   type Tracer = InstanceType<typeof ManifoldWebTracer.Tracer>;
   type World = InstanceType<typeof ManifoldWebWorld.World>;
   type Clock = InstanceType<typeof ManifoldWebWorld.Clock>;
@@ -156,6 +158,8 @@ declare namespace ManifoldWeb {
     grid: boolean;
     gridSpacing: number;
     background: { top: Manifold.Rgb; bottom: Manifold.Rgb };
+    /** a flat view (web/js/disc.js): its model, the view's inverse boost (row by row), the disc's radius in canvas pixels; null or absent: the traced surface */
+    flat?: { model: "poincare" | "klein"; toWorld: Float32Array; radius: number } | null;
   }
   /**
    * What the tracer's overlay hook gets, the colour buffer bound (Tracer.render);
@@ -175,5 +179,7 @@ declare namespace ManifoldWeb {
     viewProjection?: Float32Array;
     eye?: Manifold.Vec3;
     bodyDetail?: Manifold.BodyDetail;
+    /** a flat view: its model, its boost (world → view, row by row), the disc's radius in pixels of this buffer */
+    flat?: { model: "poincare" | "klein"; boost: Float32Array; radius: number } | null;
   }
 }

@@ -1,5 +1,5 @@
 // The page's shared state (the one object the page's scripts read and
-// change: the WebGL renderers, the camera, the current space and world, the
+// change: the WebGL renderers, the camera and the flat views' viewer, the current space and world, the
 // display options, the error shown), the display constants (background,
 // curvature colour scale, grid spacing, default options), and the helpers
 // every part of the page uses: the current space's name and catalogue entry,
@@ -22,7 +22,7 @@ var ManifoldWebPage = (function (W) {
   // World units between the lines of the (optional) coordinate grid drawn on the surface.
   const GRID_SPACING = 0.25;
   /** @type {Manifold.DisplayOptions} */
-  const DEFAULT_OPTIONS = { curvature: false, grid: true, antialias: "fxaa", bodyDetail: "auto", dimSleeping: true };
+  const DEFAULT_OPTIONS = { curvature: false, grid: true, antialias: "fxaa", bodyDetail: "auto", dimSleeping: true, model: "poincare" };
   // The comparison view's name in the space list and the URL (#space=compare-torus).
   const COMPARE = "compare-torus";
 
@@ -40,6 +40,7 @@ var ManifoldWebPage = (function (W) {
    * @property {ManifoldWeb.BodyRenderer | null} bodyRenderer
    * @property {ManifoldWeb.CurveRenderer | null} curveRenderer
    * @property {ManifoldWeb.Camera} camera
+   * @property {ManifoldWeb.DiscView} disc the viewer of the flat views (hyperbolic spaces)
    * @property {Manifold.SpaceEntry[]} index the catalogue (Manifold.spaceIndex)
    * @property {string | null} spaceName
    * @property {Manifold.Space | null} space
@@ -67,6 +68,7 @@ var ManifoldWebPage = (function (W) {
     bodyRenderer: null,
     curveRenderer: null,    // geodesics, throw previews and trails (web/js/curves.js)
     camera: new MW.camera.Camera(),
+    disc: new MW.disc.DiscView(),   // where the flat views of a hyperbolic space look (web/js/disc.js)
     index: [],
     spaceName: null,
     space: null,            // Manifold.spaces[spaceName]
@@ -104,6 +106,15 @@ var ManifoldWebPage = (function (W) {
     return state.index.find(function (s) { return s.name === name; }) || null;
   }
 
+  // The flat picture the current space is drawn as ("poincare" or "klein": a
+  // hyperbolic space not shown as its hyperboloid; web/js/disc.js), or null
+  // (the traced surface in 3-D).
+  /** @returns {"poincare" | "klein" | null} */
+  function flatModel() {
+    const s = state.space, m = state.options.model;
+    return s && s.metric === "minkowski" && !state.compare && m !== "hyperboloid" ? m : null;
+  }
+
   function requireWorld() {
     if (!state.world) {
       throw new Error(state.space ? "the space " + state.spaceName + " has no engine (rebuild web/gen with `manifold build`)"
@@ -135,6 +146,7 @@ var ManifoldWebPage = (function (W) {
     fail: fail,
     currentName: currentName,
     entryOf: entryOf,
+    flatModel: flatModel,
     requireWorld: requireWorld,
     guarded: guarded,
   };

@@ -101,6 +101,7 @@ var ManifoldWebSpace = (function (W) {
     if (!keep) {
       state.camera.set(space.camera);
       state.camera.maxDistance = 8 * space.bounds;
+      state.disc.reset();
       MW.tools.spaceChanged();
       try {
         MW.scenes.newWorld(how.scene || null, how.bodies);
@@ -111,7 +112,7 @@ var ManifoldWebSpace = (function (W) {
     }
     MW.hash.updateHash();
     try {
-      state.tracer.setSpaceGlsl(glslFor(name), "sphere tracer for space \"" + name + "\"");
+      state.tracer.setSpaceGlsl(glslFor(name), "sphere tracer for space \"" + name + "\"", space.metric === "minkowski");
     } catch (err) {
       if (state.debugBrokenShader && err instanceof PageError) {
         err.message += " The URL has debugBrokenShader=1, which breaks the shader on purpose; remove it to draw the space.";

@@ -160,6 +160,35 @@ void main() {
 }
 `;
 
+  // The trace pass of a flat view (the Poincaré or Klein disc of a hyperbolic
+  // space), appended to the space's GLSL and the generated maps: each pixel's
+  // point of the plane, from the disc's map and the view's inverse boost. Its
+  // distance is huge (nothing hides behind a flat picture); its normal is 0
+  // (the shading draws it unlit).
+  const FLAT_MAIN = `
+uniform vec2 uCentre;      // the disc's centre, pixels of this buffer
+uniform float uRadius;     // the disc's radius, pixels of this buffer
+uniform int uModel;        // 1: the Poincare disc; 2: the Klein disc
+uniform mat3 uToWorld;     // the view's inverse boost
+uniform bool uCurvature;
+
+layout(location = 0) out vec4 outPosition;
+layout(location = 1) out vec4 outNormal;
+
+void main() {
+  outPosition = vec4(0.0, 0.0, 0.0, -1.0);
+  outNormal = vec4(0.0);
+  vec2 d = (gl_FragCoord.xy - uCentre) / uRadius;
+  float u = d.x, w = -d.y; // the buffer's rows go up, the disc's w down the canvas
+  if (u * u + w * w >= 1.0) return;
+  vec3 p = uToWorld * (uModel == 2 ? fromKlein(u, w) : fromPoincare(u, w));
+  if (boundary(p) < 0.0) return;
+  float k = uCurvature ? curvature(p) : 0.0;
+  outPosition = vec4(p, 1.0e30);
+  outNormal = vec4(0.0, 0.0, 0.0, (abs(k) < 1e20) ? k : 0.0);
+}
+`;
+
   const SHADE_FRAGMENT = `#version 300 es
 precision highp float;
 precision highp int;
@@ -177,6 +206,7 @@ uniform float uCurvatureScale;
 uniform bool uGrid;
 uniform float uGridSpacing;
 uniform float uLineWidth; // grid line width in pixels of this buffer
+uniform bool uFlat;       // a flat view (a hyperbolic disc): unlit, its grid of geodesics
 out vec4 outColor;
 
 vec3 toLinear(vec3 c) { return pow(c, vec3(2.2)); }
@@ -188,6 +218,9 @@ void main() {
   // grid coordinates and their change per pixel (derivatives before any branch)
   vec3 q = P.xyz / uGridSpacing;
   vec3 qw = fwidth(q);
+  // a flat view's grid: the geodesics of the generated grid (the vertex where there is no point)
+  vec2 g2 = geodesicGrid(P.w > 0.0 ? P.xyz : vec3(0.0, 1.0, 0.0)) / uGridSpacing;
+  vec2 g2w = fwidth(g2);
   vec3 background = mix(uBackgroundBottom, uBackgroundTop, gl_FragCoord.y / uResolution.y);
   if (!(P.w > 0.0)) { outColor = vec4(background, 1.0); return; }
 
@@ -204,7 +237,7 @@ void main() {
     albedo = c >= 0.0 ? mix(vec3(0.93), vec3(0.86, 0.12, 0.10), c)
                       : mix(vec3(0.93), vec3(0.12, 0.30, 0.90), -c);
   }
-  if (uGrid) {
+  if (uGrid && !uFlat) {
     // contour lines of x, y and z on the surface, one pixel wide; each family fades
     // where the surface is nearly parallel to its planes or the lines get too dense
     vec3 lineDist = abs(fract(q - 0.5) - 0.5) / max(qw, vec3(1e-6));
@@ -213,6 +246,15 @@ void main() {
     vec3 sparse = 1.0 - smoothstep(vec3(0.12), vec3(0.35), qw * uLineWidth);
     vec3 g = line * smoothstep(vec3(0.15), vec3(0.5), across) * sparse;
     albedo *= 1.0 - 0.2 * max(g.x, max(g.y, g.z));
+  }
+  if (uFlat) {
+    if (uGrid) {
+      vec2 lineDist = abs(fract(g2 - 0.5) - 0.5) / max(g2w, vec2(1e-6));
+      vec2 line = (1.0 - clamp(lineDist - 0.5 * uLineWidth, 0.0, 1.0)) * (1.0 - smoothstep(vec2(0.12), vec2(0.35), g2w * uLineWidth));
+      albedo = (uCurvature ? albedo : vec3(0.86, 0.80, 0.70)) * (1.0 - 0.25 * max(line.x, line.y));
+    }
+    outColor = vec4(toDisplay(toLinear(albedo) * 0.92), 1.0);
+    return;
   }
   vec3 base = toLinear(albedo);
 
@@ -279,6 +321,18 @@ void main() {
 
   const ANTIALIAS_MODES = ["fxaa", "ssaa", "off"];
 
+  // The shading pass, with the generated geodesic grid of the flat views.
+  function shadeSource() {
+    return SHADE_FRAGMENT.replace("out vec4 outColor;\n", "out vec4 outColor;\n" + W.Manifold.hyperbolic.glsl);
+  }
+
+  // The flat views' trace pass for a space's GLSL (numbered as traceSource's).
+  /** @param {string} spaceGlsl */
+  function flatSource(spaceGlsl) {
+    return "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
+      "#line 1 1\n" + spaceGlsl + "\n#line 1 2\n" + W.Manifold.hyperbolic.glsl + FLAT_MAIN;
+  }
+
   // The full fragment shader of the trace pass for a space's GLSL. `#line`
   // numbers the generated part as source 1 and the tracer as source 2, so a
   // compiler log line "ERROR: 1:12" points at line 12 of the space's glsl.
@@ -302,7 +356,9 @@ void main() {
       this.vao = /** @type {WebGLVertexArrayObject} */ (gl.createVertexArray());
       /** @type {ManifoldWeb.Program | null} */
       this.traceProgram = null;
-      this.shadeProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, SHADE_FRAGMENT, "shading pass");
+      /** @type {ManifoldWeb.Program | null} the flat views' trace pass (hyperbolic spaces) */
+      this.flatProgram = null;
+      this.shadeProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, shadeSource(), "shading pass");
       this.fxaaProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, FXAA_FRAGMENT, "FXAA pass");
       this.resampleProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, RESAMPLE_FRAGMENT, "resampling pass");
       /** @type {Map<string, Buffers>} */
@@ -320,15 +376,19 @@ void main() {
 
     // Compiles the trace pass for a space's GLSL; throws a PageError with the
     // compiler log when it fails (the previous program is dropped either way).
-    /** @param {string} glsl @param {string} label */
-    setSpaceGlsl(glsl, label) {
+    // flat: the space is hyperbolic, so its flat views' pass is made too.
+    /** @param {string} glsl @param {string} label @param {boolean} [flat] */
+    setSpaceGlsl(glsl, label, flat) {
       this.dropSpace();
       this.traceProgram = G.createProgram(this.gl, G.FULLSCREEN_VERTEX, traceSource(glsl), label);
+      if (flat) this.flatProgram = G.createProgram(this.gl, G.FULLSCREEN_VERTEX, flatSource(glsl), label + " (flat view)");
     }
 
     dropSpace() {
       if (this.traceProgram) this.gl.deleteProgram(this.traceProgram.program);
+      if (this.flatProgram) this.gl.deleteProgram(this.flatProgram.program);
       this.traceProgram = null;
+      this.flatProgram = null;
       this.hasFrame = false;
       this.buffers.forEach(function (b) { b.traced = false; b.surfaceKey = null; });
     }
@@ -393,7 +453,18 @@ void main() {
         gl.viewport(0, 0, tw, th);
         gl.clearBufferfv(gl.COLOR, 0, [0, 0, 0, -1]);
         gl.clearBufferfv(gl.COLOR, 1, [0, 0, 0, 0]);
-        if (this.traceProgram) {
+        const flat = view.flat || null;
+        if (flat && this.flatProgram) {
+          const p = this.flatProgram;
+          gl.useProgram(p.program);
+          gl.uniform2f(p.uniform("uCentre"), 0.5 * tw, 0.5 * th);
+          gl.uniform1f(p.uniform("uRadius"), flat.radius * this.scale);
+          gl.uniform1i(p.uniform("uModel"), flat.model === "klein" ? 2 : 1);
+          gl.uniformMatrix3fv(p.uniform("uToWorld"), true, flat.toWorld);
+          gl.uniform1i(p.uniform("uCurvature"), view.curvature ? 1 : 0);
+          G.drawFullscreen(gl, this.vao);
+          this.hasFrame = true;
+        } else if (this.traceProgram) {
           const p = this.traceProgram;
           gl.useProgram(p.program);
           gl.uniform3fv(p.uniform("uEye"), view.camera.eye);
@@ -435,6 +506,7 @@ void main() {
         gl.uniform1i(s.uniform("uGrid"), view.grid ? 1 : 0);
         gl.uniform1f(s.uniform("uGridSpacing"), view.gridSpacing);
         gl.uniform1f(s.uniform("uLineWidth"), Math.max(1, this.scale));
+        gl.uniform1i(s.uniform("uFlat"), flat && this.flatProgram ? 1 : 0);
         G.drawFullscreen(gl, this.vao);
         gl.activeTexture(gl.TEXTURE1);
         gl.bindTexture(gl.TEXTURE_2D, null);

@@ -73,6 +73,7 @@ var ManifoldWebUi = (function (W) {
    * @property {(on: boolean) => void} onGrid
    * @property {(on: boolean) => void} onDimSleeping
    * @property {(mode: Manifold.Antialias) => void} onAntialias
+   * @property {(model: Manifold.Model) => void} onModel
    * @property {() => void} onResetView
    * @property {() => void} onAdd add the new body at a free point of the view
    * @property {(o: { shape?: Manifold.Shape, size?: number, density?: number, static?: boolean }) => void} onNewBody a control of the new body changed
@@ -97,6 +98,9 @@ var ManifoldWebUi = (function (W) {
    * What the error panel shows: a PageError (message, compiler log, shader source) or any Error.
    * @typedef {{ message: string, log?: string, source?: string }} Shown
    */
+
+  // The help line under the view while a hyperbolic space is drawn flat (web/js/disc.js).
+  const FLAT_HELP = "drag a body: move it · right-drag or drag off the disc: walk · wheel or pinch: size the disc · ?: keys";
 
   // The decimals a slider's value is shown with: as many as its step has.
   /** @param {number} step */
@@ -179,7 +183,12 @@ var ManifoldWebUi = (function (W) {
     const dimBox = $("dim-sleeping");
     /** @type {HTMLSelectElement} */
     const antialiasSelect = $("antialias");
+    /** @type {HTMLSelectElement} */
+    const modelSelect = $("model");
+    const modelControl = $("model-control");
     const resetButton = $("reset-view");
+    const help = $("help");
+    const tracedHelp = help.textContent;
     const stats = $("stats");
     const description = $("description");
     const legend = $("curvature-legend");
@@ -199,6 +208,7 @@ var ManifoldWebUi = (function (W) {
     gridBox.addEventListener("change", function () { handlers.onGrid(gridBox.checked); });
     dimBox.addEventListener("change", function () { handlers.onDimSleeping(dimBox.checked); });
     antialiasSelect.addEventListener("change", function () { handlers.onAntialias(/** @type {Manifold.Antialias} */ (antialiasSelect.value)); });
+    modelSelect.addEventListener("change", function () { handlers.onModel(/** @type {Manifold.Model} */ (modelSelect.value)); });
     resetButton.addEventListener("click", function () { handlers.onResetView(); });
     $("notice-close").addEventListener("click", function () { notice.hidden = true; });
 
@@ -414,12 +424,23 @@ var ManifoldWebUi = (function (W) {
         });
         spaceSelect.disabled = index.length === 0;
       },
-      /** @param {{ name: string, description: string }} entry */
+      /** @param {{ name: string, description: string, metric?: Manifold.Metric }} entry */
       setSpace: function (entry) {
         spaceSelect.value = entry.name;
         description.textContent = entry.description;
         description.title = entry.description;
         document.title = "Manifold: " + entry.name;
+        // (the model control is for hyperbolic spaces)
+        modelControl.hidden = entry.metric !== "minkowski";
+      },
+      /** @param {Manifold.Model} model */
+      setModel: function (model) { modelSelect.value = model; },
+      // the help line for a flat view (dragging walks) or the traced surface (dragging orbits)
+      /** @param {boolean} flat */
+      setFlatHelp: function (flat) {
+        if (help.classList.contains("flat") === flat) return;
+        help.classList.toggle("flat", flat);
+        help.textContent = flat ? FLAT_HELP : tracedHelp;
       },
       /** @param {boolean} on */
       setCurvature: function (on) {

@@ -23,6 +23,7 @@ import Numeric (showHex)
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
 import Manifold.ContactManifold (maxHullCorners)
+import Manifold.Disc
 import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, convexRound, hullSize, orientCorners, polygonReach, verticesCode)
 import Manifold.Metric (gaussianCurvatureIn, metricName)
 import Manifold.Params (bodyKeys, keyName, materialKeys)
@@ -154,6 +155,8 @@ spaceIndexScript spaces = unlines $
       ++ ", convexRound: "
       ++ dropWhileEnd (== '\n') (printFunction JavaScript "convexRound" (FnType ("n" : cornerNames) False) [convexRound (sym "n") cornerSyms])
       ++ " };"
+  , "// the hyperbolic plane's pictures (Lib/Manifold/Disc.hs): the Poincare and Klein discs' maps, boosts as nine numbers row by row, the geodesic grid"
+  , "globalThis.Manifold.hyperbolic = " ++ hyperbolicObject ++ ";"
   , "globalThis.Manifold.spaceIndex = ["
   ] ++
   [ "  { name: " ++ jsString (spaceName s) ++ ", description: " ++ jsString (spaceDescription s)
@@ -174,6 +177,37 @@ spaceIndexScript spaces = unlines $
 
 num :: Double -> String
 num = renderLiteral JavaScript
+
+-- | The page's object of "Manifold.Disc"'s maps and boosts, as JavaScript
+-- functions and, for the disc views' shaders, GLSL.
+hyperbolicObject :: String
+hyperbolicObject = "{ " ++ intercalate ", " (map field' functions) ++ ", glsl: " ++ jsString glsl ++ " }"
+  where
+    field' (name, params, roots) = name ++ ": " ++ dropWhileEnd (== '\n') (printFunction JavaScript name (FnType params False) roots)
+    ms = [ "m" ++ show k | k <- [0 .. 8 :: Int] ]
+    ns = [ "n" ++ show k | k <- [0 .. 8 :: Int] ]
+    m = map sym ms
+    pair (a, b) = [a, b]
+    functions =
+      [ ("fromPoincare", ["u", "w"], v3 (fromPoincare (sym "u") (sym "w")))
+      , ("toPoincare", ["x", "y", "z"], pair (toPoincare pointSyms))
+      , ("fromKlein", ["u", "w"], v3 (fromKlein (sym "u") (sym "w")))
+      , ("toKlein", ["x", "y", "z"], pair (toKlein pointSyms))
+      , ("translationTo", ["x", "y", "z"], translationTo pointSyms)
+      , ("apply", ms ++ ["x", "y", "z"], v3 (applyBoost m pointSyms))
+      , ("compose", ms ++ ns, composeBoosts m (map sym ns))
+      , ("inverse", ms, inverseBoost m)
+      , ("renormalise", ms, renormaliseBoost m)
+      , ("grid", ["x", "y", "z"], pair (geodesicGrid pointSyms))
+      ]
+    uw = FnType ["u", "w"] False
+    glsl = concat
+      [ printFunction GLSL "fromPoincare" uw (v3 (fromPoincare (sym "u") (sym "w")))
+      , printFunction GLSL "toPoincare" xyz (pair (toPoincare pointSyms))
+      , printFunction GLSL "fromKlein" uw (v3 (fromKlein (sym "u") (sym "w")))
+      , printFunction GLSL "toKlein" xyz (pair (toKlein pointSyms))
+      , printFunction GLSL "geodesicGrid" xyz (pair (geodesicGrid pointSyms))
+      ]
 
 vecJs' :: V3 Double -> V3 Double -> String
 vecJs' (V3 a b c) (V3 d e f) = "[" ++ intercalate ", " (map num [a, b, c, d, e, f]) ++ "]"
