@@ -11,6 +11,7 @@ import qualified BodySpec
 import qualified CliSpec
 import qualified ContactManifoldSpec
 import qualified DiscSpec
+import qualified BolzaSpec
 import qualified EngineSpec
 import qualified FlatSpec
 import qualified GeodesicPathSpec
@@ -37,6 +38,7 @@ main = do
     describe "Manifold.Surface" SurfaceSpec.spec
     MetricSpec.spec
     DiscSpec.spec
+    BolzaSpec.spec
     -- (parallel: the longest independent runs, each its own node process
     -- or world, overlap the rest on the second core)
     describe "Manifold.GeodesicPath" (parallel GeodesicPathSpec.spec)
