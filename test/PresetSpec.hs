@@ -135,6 +135,17 @@ spec = describe "Manifold.Presets" $ do
     image `shouldSatisfy` (< 0.4 + 0.01) -- within the sum of the radii: a contact through the image
     norm (bsVel hit) `shouldSatisfy` (> 0.1)
 
+  it "on the hyperbolic plane the cue ball breaks the rack: every ball set moving, the kinetic energy never growing (restitution 0.9, no friction)" $ do
+    states <- runPreset "hyperbolic-plane-break" (replicate 60 10)
+    let minkowskiSquare (V3 x y z) = x * x - y * y + z * z
+        energy bodies = sum [ minkowskiSquare (bsVel b) | b <- bodies ]
+        energies = [ energy bodies | (bodies, _) <- states ]
+        initial = head energies -- the cue ball's speed squared (as the scene's velocity, projected): the rack is at rest
+        (final, _) = last states
+    maximum energies `shouldSatisfy` (<= initial * (1 + 1e-9))
+    minimum energies `shouldSatisfy` (< 0.95 * initial) -- the collisions lose some
+    length [ b | b <- init final, sqrt (minkowskiSquare (bsVel b)) > 0.05 ] `shouldBe` 15
+
   it "the Klein bottle's bodies go round each at its speed (0.6: free motion on the surface, no contact)" $ do
     states <- runPreset "klein-bottle-orbit" (replicate 10 100)
     let speeds = [norm (bsVel b) | (bodies, _) <- states, b <- bodies]
