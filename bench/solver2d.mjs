@@ -8,9 +8,14 @@
 // scene and engine: pass or fail, and the numbers judged.
 //
 //   node bench/solver2d.mjs [--scenes a,b] [--manifold EXE] [--squares] [--json]
+//                           [--box2d-hertz H] [--params JSON]
 //
 // --squares builds the stacking scenes (vertical stack, large pyramid) of
 // squares, which collide by their sampled outlines, instead of boxes.
+// --box2d-hertz H sets the contacts' frequency as Box2D's H in Box2D's time
+// (H / TIME here: 20 is 56.6 Hz), to compare with bench/box2d/vertical-stack.c
+// at the same stiffness; --params adds scene keys to every scene
+// ('{"sleep": false}').
 // Needs web/gen (`manifold build --out web/gen`).
 import fs from "node:fs";
 import os from "node:os";
@@ -19,12 +24,24 @@ import { execFileSync } from "node:child_process";
 import { loadSpace } from "./worlds.mjs";
 import { commandLine } from "./options.mjs";
 
+const USAGE = "node bench/solver2d.mjs [--scenes a,b] [--manifold EXE] [--squares] [--json] [--box2d-hertz H] [--params JSON]";
 const line = commandLine({
-  usage: "node bench/solver2d.mjs [--scenes a,b] [--manifold EXE] [--squares] [--json]",
-  known: ["--scenes", "--manifold"], flags: ["--squares", "--json"],
+  usage: USAGE,
+  known: ["--scenes", "--manifold", "--box2d-hertz", "--params"], flags: ["--squares", "--json"],
 });
 const exe = line.text("--manifold", process.env.MANIFOLD_EXE || "manifold");
 const squares = line.flag("--squares"), json = line.flag("--json");
+const box2dHertz = line.positive("--box2d-hertz", null);
+let extraKeys = {};
+try {
+  extraKeys = JSON.parse(line.text("--params", "{}"));
+} catch (err) {
+  extraKeys = null;
+}
+if (extraKeys === null || typeof extraKeys !== "object" || Array.isArray(extraKeys)) {
+  console.error("--params must be a JSON object of scene keys, such as '{\"sleep\": false}'\nusage: " + USAGE);
+  process.exit(2);
+}
 
 // Box2D's units to the sandbox's: lengths, times, speeds, angles (Box2D's
 // turn x toward y, up; here up is +z and a positive angle turns x toward
@@ -154,7 +171,8 @@ const chosen = line.text("--scenes", Object.keys(SCENES).join(",")).split(",");
 for (const name of chosen) if (!SCENES[name]) { console.error("no scene " + JSON.stringify(name) + "; the scenes are " + Object.keys(SCENES).join(", ")); process.exit(2); }
 
 function sceneJSON(def) {
-  return Object.assign({ space: "plane", dt: DT, gravity: def.gravity !== false }, def.scene());
+  const hertz = box2dHertz === null ? {} : { contactHertz: box2dHertz / TIME };
+  return Object.assign({ space: "plane", dt: DT, gravity: def.gravity !== false }, hertz, extraKeys, def.scene());
 }
 
 // frames of { bodies: [{ p, v, angle, omega }] }: the first, then every `every` steps to `steps`
