@@ -16,6 +16,7 @@ import Test.Hspec
 import Manifold.Disc
 import Manifold.Spaces (catalogue)
 import Manifold.Stage.Kernels (spaceIndexScript)
+import LorentzUtil
 import NodeJS
 
 -- | Points of the open unit disc: rings out to radius 0.95, at angles no
@@ -23,27 +24,8 @@ import NodeJS
 discPoints :: [(Double, Double)]
 discPoints = [ (r * cos a, r * sin a) | k <- [1 .. 19 :: Int], let r = 0.05 * fromIntegral k, j <- [0 .. 6 :: Int], let a = 0.9 * fromIntegral j + 0.37 * fromIntegral k ]
 
-minkowski :: V3 Double -> V3 Double -> Double
-minkowski (V3 a b c) (V3 d e f) = a * d - b * e + c * f
-
 sheet :: V3 Double -> Double
 sheet p = minkowski p p + 1
-
--- | The Lorentz defect of a matrix: the largest entry of Mᵀ J M − J.
-lorentzDefect :: [Double] -> Double
-lorentzDefect m = maximum [ abs (minkowski (col i) (col j) - jay i j) | i <- [0 .. 2], j <- [0 .. 2] ]
-  where
-    col j = V3 (m !! j) (m !! (3 + j)) (m !! (6 + j))
-    jay i j
-      | i /= j = 0
-      | i == 1 = -1
-      | otherwise = 1
-
-identity :: [Double]
-identity = [1, 0, 0, 0, 1, 0, 0, 0, 1]
-
-maxDiff :: [Double] -> [Double] -> Double
-maxDiff a b = maximum (zipWith (\x y -> abs (x - y)) a b)
 
 v3 :: V3 a -> [a]
 v3 (V3 a b c) = [a, b, c]
