@@ -4,7 +4,8 @@
 -- integrals; their corners walked onto the sphere at their geodesic
 -- distances and angles; and in the engine, a box resting on a box by two
 -- points at its corners, a thin card lying on a box, and boxes, capsules
--- and circles coming to rest on a slab at their heights.
+-- and circles coming to rest on a slab at their heights; picked by their
+-- hulls.
 module HullSpec (spec) where
 
 import Control.Monad (forM, forM_, replicateM_)
@@ -26,6 +27,7 @@ spec :: Spec
 spec = describe "Manifold.Hull" $ do
   closedForms
   cornersOnTheSphere
+  picking
   resting
 
 -- | @∫₀^{2π} g@ by the midpoint rule in @n@ pieces.
@@ -203,6 +205,33 @@ cornersOnTheSphere = describe "corners" $
         acos (c `dot` v) `shouldSatisfy` closeRel (h * h / 3) r
         abs (heading - atan2 b a) `shouldSatisfy` (< h * h / 3)
   where scale s (V3 x y z) = V3 (s * x) (s * y) (s * z)
+
+picking :: Spec
+picking = describe "picking" $
+  it "picks a box in its corners and not just beyond them (plane and sphere), a capsule within its rounded ends, as they are drawn" $ do
+    forM_ [(plane, V3 0 0 0, False), (sphere, V3 0.3 0.8 0.5, True)] $ \(sp, at, curved) -> do
+      w <- newWorld sp (layout 1)
+      Right _ <- addBody w (BodyInit (box 0.2 0.1) 0 1 False at (V3 0 0 0) 0.3 0 sceneMaterial)
+      c <- bsPos <$> readBody w 0
+      forM_ [0 .. 3] $ \k -> do
+        v <- corner w 0 k
+        -- 5 % of the way from the corner to the centre, and beyond it; on
+        -- the sphere put back on it
+        let onSurface p = if curved then p `over` norm p else p
+            toward f = onSurface (c + f `times` (v ^-^ c))
+        pickAt w (toward 0.95) `shouldReturn` Just (0, 1)
+        pickAt w (toward 1.05) `shouldReturn` Nothing
+    w <- newWorld plane (layout 1)
+    Right _ <- addBody w (BodyInit (capsule 0.15 0.05) 0 1 False (V3 0 0 0) (V3 0 0 0) 0 0 sceneMaterial)
+    st <- readBody w 0
+    let e1 = bsAxis st
+        e2 = bsNormal st `cross` e1
+        point a b = a `times` e1 + b `times` e2
+    mapM (pickAt w) [point 0.195 0, point 0.18 0.035, point (-0.15) 0.045] `shouldReturn` replicate 3 (Just (0, 1))
+    mapM (pickAt w) [point 0.205 0, point 0.19 0.035, point 0 0.055] `shouldReturn` replicate 3 Nothing
+  where
+    times s (V3 x y z) = V3 (s * x) (s * y) (s * z)
+    over (V3 x y z) s = V3 (x / s) (y / s) (z / s)
 
 -- | A scene from its JSON text, loaded.
 loaded :: BL.ByteString -> IO NativeWorld

@@ -616,12 +616,20 @@ async function testCorners(check, context, base) {
       const shot = await canvasShot(page, path.join(OUT, space + "-box-corners-" + detail + ".png"));
       const inside = r.points.map(function (q) { return bodyFraction(shot, q.inside[0], q.inside[1], 1); });
       const outside = r.points.map(function (q) { return bodyFraction(shot, q.outside[0], q.outside[1], 1); });
-      results.push({ detail, forms: r.forms, inside, outside });
+      // a press where a corner is drawn grabs the box; beyond it, nothing
+      const grabs = await page.evaluate(function (points) {
+        const m = window.manifold, at = function (q) { const ok = m.grab(q[0], q[1]); m.release(); return ok; };
+        return { inside: points.map(function (q) { return at(q.inside); }), outside: points.map(function (q) { return at(q.outside); }) };
+      }, r.points);
+      results.push({ detail, forms: r.forms, inside, outside, grabs });
     }
     check(space + ": a 2:1 box is drawn with its corners (body-coloured " + CORNER_PIXELS + " px in from both edges at each, not " + CORNER_PIXELS + " px beyond it), as a coarser form and as its mesh",
       results.every(function (x) { return x.inside.every(function (f) { return f === 1; }) && x.outside.every(function (f) { return f === 0; }); }) &&
         results[0].forms.meshes === 0 && results[1].forms.meshes === 1,
       JSON.stringify(results));
+    check(space + ": pressing where a corner is drawn grabs the box, " + CORNER_PIXELS + " px beyond it nothing (picking by the hull)",
+      results.every(function (x) { return x.grabs.inside.every(Boolean) && !x.grabs.outside.some(Boolean); }),
+      JSON.stringify(results.map(function (x) { return x.grabs; })));
     await page.close();
   }
   check("corner pages: no console errors", errors.length === 0, errors.join("; "));
