@@ -507,7 +507,7 @@ void main() {
         gl.bindTexture(gl.TEXTURE_2D, frame.normalTexture);
         gl.uniform1i(p.uniform("uPosition"), 0);
         gl.uniform1i(p.uniform("uNormal"), 1);
-        W.ManifoldWeb.disc.DiscView.setUniforms(gl, p, frame);
+        W.ManifoldWeb.disc.setProjection(gl, p, frame);
         gl.uniform3fv(p.uniform("uEye"), frame.eye);
         gl.uniform1f(p.uniform("uTolerance"), 0.01);
         gl.uniform1f(p.uniform("uLineWidth"), 1.6 * Math.max(1, frame.scale));
@@ -531,7 +531,7 @@ void main() {
       if (world.target) {
         const m = this.markProgram;
         gl.useProgram(m.program);
-        W.ManifoldWeb.disc.DiscView.setUniforms(gl, m, frame);
+        W.ManifoldWeb.disc.setProjection(gl, m, frame);
         gl.uniform3fv(m.uniform("uPoint"), world.target);
         gl.uniform1f(m.uniform("uSize"), 9 * Math.max(1, frame.scale));
         gl.bindVertexArray(this.markVao);

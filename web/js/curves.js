@@ -139,7 +139,7 @@ void main() {
       gl.activeTexture(gl.TEXTURE0);
       gl.bindTexture(gl.TEXTURE_2D, frame.positionTexture);
       gl.uniform1i(p.uniform("uPosition"), 0);
-      W.ManifoldWeb.disc.DiscView.setUniforms(gl, p, frame);
+      W.ManifoldWeb.disc.setProjection(gl, p, frame);
       gl.uniform3fv(p.uniform("uEye"), frame.eye);
       gl.uniform2f(p.uniform("uViewport"), frame.width / 2, frame.height / 2);
       gl.uniform1f(p.uniform("uWidth"), width * Math.max(1, frame.scale));

@@ -156,23 +156,22 @@ vec4 projectToClip(vec3 p) {
       this.zoom = Math.max(MIN_ZOOM, Math.min(MAX_ZOOM, this.zoom / factor));
       this.version++;
     }
+  }
 
-    // The overlays' projection uniforms for a model (null: the camera's
-    // perspective) on a width × height buffer.
-    /** @param {WebGL2RenderingContext} gl @param {ManifoldWeb.Program} program @param {ManifoldWeb.OverlayFrame} frame */
-    static setUniforms(gl, program, frame) {
-      const flat = frame.flat || null;
-      gl.uniformMatrix4fv(program.uniform("uViewProjection"), false, frame.viewProjection || new Float32Array(16));
-      gl.uniform1i(program.uniform("uFlat"), flat === null ? 0 : flat.model === "klein" ? 2 : 1);
-      if (flat !== null) {
-        gl.uniformMatrix3fv(program.uniform("uBoost"), true, flat.boost);
-        const r = flat.radius;
-        gl.uniform2f(program.uniform("uDiscScale"), 2 * r / frame.width, 2 * r / frame.height);
-      }
+  // Sets an overlay program's projection uniforms for its frame: the
+  // camera's perspective, or a flat view's boost and disc (frame.flat).
+  /** @param {WebGL2RenderingContext} gl @param {ManifoldWeb.Program} program @param {ManifoldWeb.OverlayFrame} frame */
+  function setProjection(gl, program, frame) {
+    const flat = frame.flat || null;
+    gl.uniformMatrix4fv(program.uniform("uViewProjection"), false, frame.viewProjection || new Float32Array(16));
+    gl.uniform1i(program.uniform("uFlat"), flat === null ? 0 : flat.model === "klein" ? 2 : 1);
+    if (flat !== null) {
+      gl.uniformMatrix3fv(program.uniform("uBoost"), true, flat.boost);
+      gl.uniform2f(program.uniform("uDiscScale"), 2 * flat.radius / frame.width, 2 * flat.radius / frame.height);
     }
   }
 
-  const exported = { DiscView: DiscView, MODELS: MODELS, withProjection: withProjection, isBoost: isBoost };
+  const exported = { DiscView: DiscView, MODELS: MODELS, withProjection: withProjection, setProjection: setProjection };
   W.ManifoldWeb = W.ManifoldWeb || /** @type {ManifoldWebModules} */ ({});
   W.ManifoldWeb.disc = exported;
   return exported;

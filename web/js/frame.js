@@ -18,7 +18,9 @@ var ManifoldWebFrame = (function (W) {
 
   // What the frames drawn so far were, and their timing (this file's own).
   const drawn = {
-    cameraVersion: "",      // viewVersion() of the last frame drawn
+    cameraVersion: -1,      // the camera's, the flat view's viewer's and the flat model of the last frame drawn
+    viewerVersion: -1,
+    model: /** @type {string | null} */ (null),
     discVersion: -1,        // the flat view's boost (world → view) and its inverse, as floats, at this version
     boost: new Float32Array(9),
     toWorld: new Float32Array(9),
@@ -69,7 +71,7 @@ var ManifoldWebFrame = (function (W) {
     const camera = state.camera;
     const model = P.flatModel(), disc = state.disc;
     state.ui.setFlatHelp(model !== null);
-    const key = retrace ? null : viewVersion() + ":" + drawn.surfaceGen;
+    const key = retrace ? null : camera.version + "/" + disc.version + "/" + model + ":" + drawn.surfaceGen;
     const traced = retrace || state.tracer.current.surfaceKey !== key;
     const radius = disc.radius(state.width, state.height);
     if (model !== null && drawn.discVersion !== disc.version) {
@@ -104,7 +106,9 @@ var ManifoldWebFrame = (function (W) {
     }
     state.dirty = false;
     state.preview = !!preview;
-    drawn.cameraVersion = viewVersion();
+    drawn.cameraVersion = camera.version;
+    drawn.viewerVersion = disc.version;
+    drawn.model = model;
     drawn.world = state.world;
     drawn.worldVersion = state.world ? state.world.version : -1;
     drawn.toolsVersion = MW.tools.tools.version;
@@ -146,14 +150,10 @@ var ManifoldWebFrame = (function (W) {
     return drawn.gpuFrameMs;
   }
 
-  // what changes whenever the view does: the camera, the flat views' viewer and model
-  function viewVersion() {
-    return state.camera.version + "/" + state.disc.version + "/" + P.flatModel();
-  }
-
-  // the traced surface is out of date
+  // the traced surface is out of date (the camera, the flat views' viewer or the flat model changed)
   function surfaceStale() {
-    return state.dirty || drawn.cameraVersion !== viewVersion();
+    return state.dirty || drawn.cameraVersion !== state.camera.version || drawn.viewerVersion !== state.disc.version ||
+      drawn.model !== P.flatModel();
   }
   // the bodies moved, came or went, or the curves changed, since the last frame
   function bodiesChanged() {

@@ -5,8 +5,8 @@
 // orbits. The right button orbits anywhere, the middle button or shift pans,
 // the wheel and a two-finger pinch zoom. In a flat view of a hyperbolic
 // space (web/js/disc.js) every drag that orbits or pans walks instead, two
-// fingers walk by their middle, and the wheel and a pinch size the disc. Pointer events: mouse, pen and
-// touch alike. Also the surface point under a pixel, and grab/drag/release
+// fingers walk by their middle, and the wheel and a pinch size the disc.
+// Pointer events: mouse, pen and touch alike. Also the surface point under a pixel, and grab/drag/release
 // by pixel for window.manifold.
 /* exported ManifoldWebInput */
 var ManifoldWebInput = (function (W) {
