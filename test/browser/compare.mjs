@@ -1,6 +1,7 @@
 // Browser tests of the comparison view "Torus: embedded vs flat"
 // (#space=compare-torus): it loads without console errors, all four panes
-// draw the bodies (pixels at each body change when the bodies are cleared),
+// draw the bodies (pixels at each body change when the bodies are cleared;
+// the squares' panes draw polygons by their corners),
 // and a body can be dragged in each pane (it follows the pointer).
 import path from "node:path";
 import { OUT, decodePNG } from "./lib.mjs";
@@ -56,6 +57,16 @@ export async function testCompare(check, browser, base) {
   // K = cos φ / (r (R + r cos φ)) on the torus R = 0.8, r = 0.5: 1/(0.5·1.3) outside, −1/(0.5·0.3) inside
   check("compare: the curvature line says the embedded torus is curved both ways and the flat one is 0",
     info && /K = \+1\.54/.test(info.note) && /\u22126\.67 on its inner/.test(info.note) && /K = 0\.00 everywhere/.test(info.note), info && info.note);
+
+  // the squares' panes draw a polygon of corners by its corners (as walked), a circle by its outline
+  const drawnPoints = await page.evaluate(function () {
+    const c = window.ManifoldWeb.page.state.compare;
+    return [c.flat, c.embedded].map(function (w, k) {
+      return [0, 1, 2].map(function (i) { return c.outlineInSquare(w, i, k === 1).outline.length; });
+    });
+  });
+  check("compare: the square panes draw the square by its 4 corners and the pentagon by its 5 (the circle by its 24-point outline), flat and unrolled",
+    JSON.stringify(drawnPoints) === JSON.stringify([[4, 24, 5], [4, 24, 5]]), JSON.stringify(drawnPoints));
 
   // every pane draws the bodies: the pixels round each body change when the bodies go
   const points = await page.evaluate(function (panes) {

@@ -71,6 +71,8 @@ var ManifoldWebCompare = (function (W) {
       this.renderer = new MW.bodies.BodyRenderer(this.gl);
       /** @type {Float64Array | null} */
       this.mapped = null;         // the flat world's polygons on the torus
+      /** @type {Float64Array | null} */
+      this.mappedHull = null;     // and its hull array, the corners mapped
       /** @type {string | null} */
       this.drawnKey = null;       // what the panes show (camera, worlds, options)
       /** @type {Record<string, [string, ImageData]>} */
@@ -97,15 +99,27 @@ var ManifoldWebCompare = (function (W) {
         const q = C.fromSquare(v[o], v[o + 1], v[o + 2]);
         m[o] = q[0]; m[o + 1] = q[1]; m[o + 2] = q[2];
       }
+      // the polygons' corners, walked on the square, mapped too (drawn with their corners)
+      const H = E.hull, hull = f.a.hull, S = E.slots, k = E.sizes.scalars[1];
+      if (!this.mappedHull || this.mappedHull.length < hull.length) this.mappedHull = new Float64Array(hull.length);
+      const mh = this.mappedHull;
+      mh.set(hull.subarray(0, H.stride * n));
+      for (let i = 0; i < n; i++) {
+        for (let c = 0; c < f.a.scalars[i * k + S.corners]; c++) {
+          const o = H.stride * i + H.world + 3 * c, q = C.fromSquare(hull[o], hull[o + 1], hull[o + 2]);
+          mh[o] = q[0]; mh[o + 1] = q[1]; mh[o + 2] = q[2];
+        }
+      }
       return {
         engine: E, info: f.info, capacity: f.capacity, images: [],
         count: function () { return n; },
-        a: { verts: m, scalars: f.a.scalars },
+        a: { verts: m, scalars: f.a.scalars, hull: mh },
         target: f.target ? C.fromSquare(f.target[0], f.target[1], f.target[2]) : null,
       };
     }
 
     // body i's outline in the square's coordinates, unwrapped round its centre
+    // (a polygon's corners), and the end of its axis mark
     /** @param {ManifoldWeb.World} world @param {number} i @param {boolean} viaChart */
     outlineInSquare(world, i, viaChart) {
       const E = world.engine, v = world.a.verts, vpb = E.verticesPerBody, C = this.def;
@@ -123,8 +137,17 @@ var ManifoldWebCompare = (function (W) {
       /** @param {number} d */
       function wrap(d) { return d - L * Math.round(d / L); }
       const pts = [];
-      for (let d = 0; d < E.directions; d++) pts.push(unwrap(at(E.vertexIndex(d, E.steps))));
-      return { centre: /** @type {[number, number]} */ ([c[0], c[2]]), outline: pts };
+      // a polygon of corners (not rounded) by its corners, as walked, else the sampled outline
+      const H = E.hull, hull = world.a.hull, corners = world.a.scalars[i * E.sizes.scalars[1] + E.slots.corners];
+      if (corners >= 3 && hull[H.stride * i + H.radius] === 0) {
+        for (let k = 0; k < corners; k++) {
+          const o = H.stride * i + H.world + 3 * k;
+          pts.push(unwrap(viaChart ? C.toSquare(hull[o], hull[o + 1], hull[o + 2]) : [hull[o], hull[o + 1], hull[o + 2]]));
+        }
+      } else {
+        for (let d = 0; d < E.directions; d++) pts.push(unwrap(at(E.vertexIndex(d, E.steps))));
+      }
+      return { centre: /** @type {[number, number]} */ ([c[0], c[2]]), outline: pts, axis: unwrap(at(E.vertexIndex(0, E.steps))) };
     }
 
     // ---- the unrolled squares (2D canvas) ----
@@ -226,7 +249,7 @@ var ManifoldWebCompare = (function (W) {
           ctx.strokeStyle = "rgba(10,10,10,0.9)";
           ctx.lineWidth = lw;
           ctx.stroke();
-          const c = F.toPixel(o.centre[0] + dx, o.centre[1] + dz), e = F.toPixel(o.outline[0][0] + dx, o.outline[0][1] + dz);
+          const c = F.toPixel(o.centre[0] + dx, o.centre[1] + dz), e = F.toPixel(o.axis[0] + dx, o.axis[1] + dz);
           ctx.strokeStyle = "rgba(255,255,255,0.85)";
           ctx.beginPath(); ctx.moveTo(c[0], c[1]); ctx.lineTo(e[0], e[1]); ctx.stroke();
         }
