@@ -109,7 +109,9 @@ emittedHeapScript =
   , "  const after = young();"
   , "  return profiler.stop().statistics.length === 0 ? after - before : Infinity;"
   , "}"
-  , "const least = (steps) => Math.min(grows(steps), grows(steps), grows(steps));"
+  -- the least of three windows, or of up to eight while every one saw a
+  -- collection (once, on a CI machine, all three of the moebius's did: no number)
+  , "const least = (steps) => { let m = Infinity; for (let r = 0; r < 8 && (r < 3 || m === Infinity); r++) m = Math.min(m, grows(steps)); return m; };"
   , "let perStep = (least(50) - least(0)) / 50;"
   -- once, on a loaded machine (two suites and a build at once), the
   -- funnel's step was measured deoptimised (137 KB a step) where every
