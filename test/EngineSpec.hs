@@ -156,9 +156,11 @@ performanceSpec = do
       -- locals since the pair phase holds the hulls' manifolds), and two or
       -- three boxed numbers a candidate pair (GHC passes the call's 30
       -- arguments boxed): about 84 KB here (560 touching pairs, circles and
-      -- squares all meeting by their hulls), 340 KB with a heap object a
-      -- local (a bound by touching pairs: a pair makes one row or two)
-      perStep `shouldSatisfy` (< 24000 + 112 * pairs)
+      -- squares all meeting by their hulls), 88 KB with the kept contacts'
+      -- test a candidate pair, 93 KB since it is a subroutine of its own,
+      -- 340 KB with a heap object a local (a bound by touching pairs: a
+      -- pair makes one row or two)
+      perStep `shouldSatisfy` (< 30000 + 112 * pairs)
       -- the generic step (a space of one's own) calls the field through a
       -- record and boxes its numbers there; its solver, which calls no field,
       -- boxed every row and velocity it passed to a helper GHC had not
@@ -509,7 +511,11 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     let withImpulses v = BL.pack ("{\"space\": \"plane\", \"bodies\": [{\"shape\": \"circle\", \"size\": 0.1, \"p\": [0, 0, 0], \"impulses\": " ++ v ++ "}]}")
         problemOf v = fromLeft "accepted" (parseScene (withImpulses v))
     problemOf "3" `shouldBe` "$.bodies[0].impulses: must be an array of [key, normal, friction] impulses"
-    problemOf "[[64, 0.1, 0], [65, 0.2]]" `shouldBe` "$.bodies[0].impulses[1]: must be an array of three numbers [key, normal, friction]"
+    problemOf "[[64, 0.1, 0], [65, 0.2]]" `shouldBe` "$.bodies[0].impulses[1]: must be an array of three numbers [key, normal, friction], or of 30 for a contact kept"
+    -- a kept row's numbers follow its impulses, one for each kept field
+    length keptFields `shouldBe` 27
+    problemOf ("[[64, 0.1, 0" ++ concat (replicate 26 ", 1") ++ "]]") `shouldBe` "$.bodies[0].impulses[0]: must be an array of three numbers [key, normal, friction], or of 30 for a contact kept"
+    problemOf ("[[64, 0.1, 0" ++ concat (replicate 26 ", 1") ++ ", \"x\"]]") `shouldBe` "$.bodies[0].impulses[0][29]: must be a number"
     problemOf "[[64.5, 0.1, 0]]" `shouldBe` "$.bodies[0].impulses[0][0]: must be a contact key, a whole number from 0 to 2^53"
     problemOf "[[-64, 0.1, 0]]" `shouldBe` "$.bodies[0].impulses[0][0]: must be a contact key, a whole number from 0 to 2^53"
     problemOf "[[64, -0.1, 0]]" `shouldBe` "$.bodies[0].impulses[0][1]: must not be negative"

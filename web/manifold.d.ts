@@ -21,8 +21,8 @@ declare namespace Manifold {
   /** A convex polygon: 3 to 8 corners [a, b] in the body's frame going round it (either way; the body's centre is its centre of mass), rounded by radius (default 0). */
   type Vertices = { vertices: [number, number][]; radius?: number };
   type Shape = "circle" | "square" | { polygon: number } | { box: [number, number] } | { capsule: [number, number] } | Vertices;
-  /** A contact impulse a body remembers for warm starting: [contact key, normal, friction]. */
-  type Impulse = [number, number, number];
+  /** A contact row a body remembers: [contact key, normal, friction] for warm starting, followed for a row the next step may keep by its kept numbers (Manifold.keptFields). */
+  type Impulse = [number, number, number, ...number[]];
   /** A body as a scene gives it: shape, size and p are required, the rest has defaults. */
   interface SceneBody {
     shape: Shape;
@@ -127,6 +127,7 @@ declare namespace Manifold {
     sleep?: boolean;
     sleepSpeed?: number;
     sleepTime?: number;
+    keepContacts?: boolean;
     bodies?: SceneBody[];
     joints?: SceneJoint[];
     /** the view the scene opens with (up and fov default to the space's camera's); the page's Save scene writes the view it shows */
@@ -157,6 +158,7 @@ declare namespace Manifold {
     sleep: boolean;
     sleepSpeed: number;
     sleepTime: number;
+    keepContacts: boolean;
     bodies: Body[];
     joints?: SceneJoint[];
   }
@@ -264,12 +266,12 @@ declare namespace Manifold {
   /** The world's counters and results, slots of the array meta. */
   type MetaName =
     | "bodyCount" | "warnings" | "contactCount" | "capacity" | "gridBuckets" | "cellSize" | "droppedContacts"
-    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint" | "awakeCount" | "islandCount" | "wakeRequest" | "largeCount";
+    | "lastAdded" | "picked" | "pickedSign" | "jointCount" | "lastJoint" | "awakeCount" | "islandCount" | "wakeRequest" | "largeCount" | "keptRows";
   /** The engine's parameters, slots of the array params (Lib/Manifold/Params.hs). */
   type ParamName =
     | "dt" | "gravityOn" | "substeps" | "iterations" | "friction" | "restitution" | "contactHertz" | "dampingRatio"
     | "pushout" | "slop" | "speculative" | "bounceThreshold" | "warmStart" | "polygonStep" | "jointHertz" | "jointDampingRatio"
-    | "sleep" | "sleepSpeed" | "sleepTime";
+    | "sleep" | "sleepSpeed" | "sleepTime" | "keepContacts";
   /** A body's scalars, each body's `slots` consecutive entries of the array scalars. */
   type SlotName =
     | "angle" | "omega" | "invMass" | "invInertia" | "size" | "boundRadius" | "turnCos" | "turnSin"
@@ -279,8 +281,13 @@ declare namespace Manifold {
     | "taX" | "taY" | "taZ" | "taW" | "tbX" | "tbY" | "tbZ" | "tbW" | "cDepth" | "normalMass" | "tangentMass"
     | "impulseN" | "impulseT" | "cSelfScale" | "pointX" | "pointY" | "pointZ"
     | "cPenetration" | "cBiasRate" | "cMassScale" | "cImpulseScale" | "cApproach" | "cTotalImpulse"
-    | "cFriction" | "cRestitution";
-  type PrevField = "prevOwner" | "prevKey" | "prevNormal" | "prevFriction";
+    | "cFriction" | "cRestitution" | "cKept" | "cDriftX" | "cDriftY" | "cDriftZ" | "cTurnA" | "cTurnB";
+  type PrevField =
+    | "prevOwner" | "prevKey" | "prevNormal" | "prevFriction" | "prevKept" | "prevA" | "prevB" | "prevDepth"
+    | "prevDriftX" | "prevDriftY" | "prevDriftZ" | "prevTurnA" | "prevTurnB"
+    | "prevPointX" | "prevPointY" | "prevPointZ"
+    | "prevJaX" | "prevJaY" | "prevJaZ" | "prevJaW" | "prevJbX" | "prevJbY" | "prevJbZ" | "prevJbW"
+    | "prevTaX" | "prevTaY" | "prevTaZ" | "prevTaW" | "prevTbX" | "prevTbY" | "prevTbZ" | "prevTbW";
   type MouseField =
     | "mActive" | "mBody" | "mLocalR" | "mLocalTheta" | "mTargetX" | "mTargetY" | "mTargetZ"
     | "mFrequency" | "mDamping" | "mMaxForce" | "mImpulseU" | "mImpulseW" | "mSign";
@@ -422,6 +429,8 @@ declare namespace Manifold {
     bodyKeys: string[];
     /** the body keys that give a body its own material, each taking the scene key of its name's values */
     materialKeys: string[];
+    /** what a saved contact row to be kept lists after [key, normal, friction]: remembered rows' fields (Manifold.World.keptFields) */
+    keptFields: PrevField[];
     /** addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Manifold.Hull) */
     shapes: {
       codes: { circle: number; box: number; capsule: number; vertices: number };

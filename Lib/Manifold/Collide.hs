@@ -293,6 +293,7 @@ emitContact metric w owner key a b ra dirA rb dirB depth selfScale coupling carr
         writeContact w c CDepth depth
         writeContact w c CSelfScale selfScale
         writeContact3 w c PointX ra
+        mapM_ (\f -> writeContact w c f 0) [CKept .. CTurnB]
         ifPositive (b + 0.5)
           (do fb <- bodyFrame metric w (toIndex b)
               let tb = carry ta
@@ -305,6 +306,124 @@ emitContact metric w owner key a b ra dirA rb dirB depth selfScale coupling carr
               writeContact w c JbW 0
               writeContact3 w c TbX (V3 0 0 0)
               writeContact w c TbW 0))
+    (readMeta w DroppedContacts >>= writeMeta w DroppedContacts . (+ 1))
+
+-- | The contact rows of a pair (body @owner@ and body @other@, or −1 for
+-- the space's boundary) whose keys are the group from @keyBase@: the
+-- last step's, kept, when the pair has hardly moved since they were found
+-- and the 'KeepContacts' switch is on; otherwise found anew by @find@
+-- (and marked to be kept by the next step).
+--
+-- Kept, a row stays where it was found, in the bodies' frames as they
+-- were then: its points, normal and rows as the sub-steps use them, its
+-- depth updated from how far the bodies have since moved along its normal
+-- row (as each sub-step updates it). Found anew every step, the points
+-- move with every lean of a stack (clipped against its bodies as they
+-- lean), and a tall stack of soft contacts leans further each step until
+-- it falls; kept, it is a set of springs at fixed points and stands
+-- (docs/decisions/kept-contacts.md). Box2D v3's contact recycling does
+-- this with the same bounds.
+--
+-- A pair has hardly moved while its relative motion since its rows were
+-- found (body a's motion less body b's, summed over the steps), with its
+-- larger bounding radius times the largest of the bodies' turns and its
+-- relative turn, is under 'keptDrift' of its smaller bounding radius: as
+-- Box2D bounds it, but for each body's own turn, which Box2D bounds by
+-- 11.5° alone (its anchors turn with the bodies; the rows kept here do
+-- not), and for the turn of the surface under each body (on a curved
+-- surface a kept row leaves the tangent plane as its body moves on). Every row of the group must be keepable (a row remembered from a
+-- scene without its kept numbers is not) and still near its owner: a body
+-- wrapped into the fundamental domain has jumped away from its rows.
+keepOr :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> Scalar m -> Scalar m -> m () -> m ()
+{-# INLINE keepOr #-}
+keepOr metric w owner other keyBase find = do
+  before <- readMeta w KeptRows
+  -- A subroutine: inlined at both its call sites, the collision phase
+  -- outgrew what V8 optimises on the flat torus, with its eight images.
+  -- Its pair goes in the narrow phase's scratch, which it reads before
+  -- the pair's narrow phase uses it: as the subroutine's arguments, the
+  -- compiled native step boxed them (GHC passes a call of some thirty
+  -- arguments boxed), 100 KB a step on a settled pile of 300.
+  writeArray (wProbe w) 0 (toScalar owner)
+  writeArray (wProbe w) 1 other
+  writeArray (wProbe w) 2 keyBase
+  subroutine "keepContacts" [] $ \_ -> do
+    owner' <- readArray (wProbe w) 0
+    other' <- readArray (wProbe w) 1
+    keyBase' <- readArray (wProbe w) 2
+    keepRows metric w (toIndex owner') other' keyBase'
+  after <- readMeta w KeptRows
+  whenPositive (0.5 - (after - before)) $ do
+    first <- readMeta w ContactCount
+    find
+    end <- readMeta w ContactCount
+    forLoop (toIndex first) (toIndex end) $ \c -> writeContact w c CKept 1
+
+-- | 'keepOr''s test, and the rows kept when it passes ('KeptRows' counts
+-- them).
+keepRows :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> Scalar m -> Scalar m -> m ()
+{-# INLINE keepRows #-}
+keepRows metric w owner other keyBase = do
+  on <- readParam w KeepContacts
+  start <- readArray (wBodyPrev w) (2 * owner)
+  count <- readArray (wBodyPrev w) (2 * owner + 1)
+  centre <- read3 (wPos w) owner
+  reachA <- readSlot w owner BoundRadius
+  reachB <- readSlot w (toIndex (maxF 0 other)) BoundRadius
+  hasB <- share (other + 0.5)
+  tolerance <- share (keptDrift * select hasB (minF reachA reachB) reachA)
+  extent <- share (select hasB (maxF reachA reachB) reachA)
+  let inGroup k act = do
+        key <- readPrev w k PrevKey
+        whenPositive (minF (key - keyBase + 0.5) (keyBase + fromIntegral keysPerGroup - 0.5 - key)) act
+  rows <- newRef 0
+  fine <- newRef (on - 0.5)
+  forLoop (toIndex start) (toIndex (start + count)) $ \k -> inGroup k $ do
+    modifyRef rows (+ 1)
+    kept <- readPrev w k PrevKept
+    a <- readPrev w k PrevA
+    b <- readPrev w k PrevB
+    normalA <- read3 (wNormal w) (toIndex a)
+    normalB <- read3 (wNormal w) (toIndex (maxF 0 b))
+    drift <- V3 <$> readPrev w k PrevDriftX <*> readPrev w k PrevDriftY <*> readPrev w k PrevDriftZ
+    turnA <- readPrev w k PrevTurnA
+    turnB <- readPrev w k PrevTurnB
+    point <- V3 <$> readPrev w k PrevPointX <*> readPrev w k PrevPointY <*> readPrev w k PrevPointZ
+    rowA <- V3 <$> readPrev w k PrevJaX <*> readPrev w k PrevJaY <*> readPrev w k PrevJaZ
+    rowB <- V3 <$> readPrev w k PrevJbX <*> readPrev w k PrevJbY <*> readPrev w k PrevJbZ
+    -- (the rows lie in the tangent planes the bodies had: how far they
+    -- stick out of today's is how far the surface has turned under them)
+    let tilted = maxF (abs (inner metric rowA normalA)) (select (b + 0.5) (abs (inner metric rowB normalB)) 0)
+        turned = maxF (maxF (abs (turnA - turnB)) tilted) (maxF (abs turnA) (abs turnB))
+        moved = normIn metric drift + extent * turned
+        near = 4 * reachA * reachA - quadranceIn metric (point ^-^ centre)
+    modifyRef fine (minF (minF (kept - 0.5) (minF (tolerance - moved) near)))
+  n <- readRef rows
+  ok <- readRef fine
+  whenPositive (minF (n - 0.5) ok) $
+    forLoop (toIndex start) (toIndex (start + count)) $ \k -> inGroup k (emitKept w k owner)
+
+-- | How far a pair may drift while it keeps its contact rows, as a
+-- fraction of its smaller bounding radius: Box2D v3's bound (ten linear
+-- slops, 0.05 m, for its 1 m boxes, whose bounding radius is 0.71 m).
+keptDrift :: Field a => a
+keptDrift = 0.07
+
+-- | Remembered row @k@ kept as this step's contact row of its owner.
+emitKept :: Imp m => WorldArrays (Array m) -> Index m -> Index m -> m ()
+{-# INLINE emitKept #-}
+emitKept w k owner = do
+  count <- readMeta w ContactCount
+  cap <- readMeta w Capacity
+  ifPositive (fromIntegral contactsPerBody * maxF 1 cap - count - 0.5)
+    (do let c = toIndex count
+        writeMeta w ContactCount (count + 1)
+        readMeta w KeptRows >>= writeMeta w KeptRows . (+ 1)
+        writeContact w c COwner (toScalar owner)
+        readPrev w k PrevKey >>= writeContact w c CKey
+        writeContact w c CSelfScale 1
+        writeContact w c CKept 1
+        forM_ keptFields $ \(cf, pf) -> readPrev w k pf >>= writeContact w c cf)
     (readMeta w DroppedContacts >>= writeMeta w DroppedContacts . (+ 1))
 
 -- | Run the test only for a point within body @y@'s bounding radius of its
@@ -861,6 +980,7 @@ collide :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE collide :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
 collide sp l w = do
   writeMeta w ContactCount 0
+  writeMeta w KeptRows 0
   awake <- readMeta w AwakeCount
   whenPositive awake (collideAwake sp l w)
 
@@ -895,7 +1015,7 @@ collideAwake sp l w = do
     -- compiled natively, a loop that calls out keeps its numbers on the
     -- stack, and the cell scan is the broad phase's whole cost
     found <- newRef 0
-    let pairs g keyOffset self = do
+    let pairs g keyOffset self direct = do
           gp <- share3 (applyIso g p)
           writeRef found 0
           -- each unordered pair once: j > i (j >= i for an image the body
@@ -930,8 +1050,12 @@ collideAwake sp l w = do
           nearCount <- readRef found
           forEach (toIndex nearCount) $ \k -> do
             j <- toIndex <$> readArray (wNear w) k
-            pairContacts metric l sec w ((toScalar j + 1) * fromIntegral keysPerBody + keyOffset) i j g
-    pairs identityIso 0 False
-    mapM_ (\(k, g) -> pairs g (fromIntegral (keysPerGroup * imageKeyGroup k)) (selfImage g)) (zip [0 :: Int ..] images)
-    boundaryContacts sp l w i
+            let keyBase = (toScalar j + 1) * fromIntegral keysPerBody + keyOffset
+                contacts = pairContacts metric l sec w keyBase i j g
+            -- (a pair through an image is found anew each step: the
+            -- image's isometry moves the rows with the wraps)
+            if direct then keepOr metric w i (toScalar j) keyBase contacts else contacts
+    pairs identityIso 0 False True
+    mapM_ (\(k, g) -> pairs g (fromIntegral (keysPerGroup * imageKeyGroup k)) (selfImage g) False) (zip [0 :: Int ..] images)
+    keepOr metric w i (-1) (fromIntegral (fromEnum BoundaryKey * keysPerGroup)) (boundaryContacts sp l w i)
     selfContacts sp l w i

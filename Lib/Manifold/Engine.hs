@@ -46,6 +46,7 @@ module Manifold.Engine
   , stateHash
   ) where
 
+import Control.Monad (zipWithM_)
 import qualified Data.Vector.Unboxed as U
 import qualified Data.Vector.Unboxed.Mutable as MV
 import Linear.V3 (V3 (..))
@@ -337,29 +338,39 @@ readBody w i = do
     <*> (Material <$> (own <$> slot BodyFriction) <*> (own <$> slot BodyRestitution))
   where own x = if x < 0 then Nothing else Just x
 
--- | A contact row's impulses as the world remembers them after a step, to
--- warm start the same contact (by its key) in the next.
+-- | A contact row as the world remembers it after a step: its impulses,
+-- to warm start the same contact (by its key) in the next; and, for a row
+-- the next step may keep instead of finding its pair's contacts again, the
+-- numbers keeping it takes ('keptFields': depth, drift, point and rows, in
+-- that order), or none.
 data Impulse = Impulse
   { impulseKey :: Double -- ^ the contact's identity (a whole number)
   , impulseNormal :: Double
   , impulseFriction :: Double
+  , impulseKept :: [Double] -- ^ empty, or one number for each of 'keptFields'
   } deriving (Show, Eq)
 
 -- | What body @i@ remembers of the last step's contact rows it owns (rows
--- whose impulses were both 0 warm start nothing and are left out).
+-- whose impulses were both 0 warm start nothing and are left out, unless
+-- they are to be kept).
 rememberedImpulses :: NativeWorld -> Int -> IO [Impulse]
 rememberedImpulses w i = do
   let a = nwArrays w
       field :: Int -> PrevField -> IO Double
       field k f = MV.read (wPrev a) (prevStride * k + fromEnum f)
+      row k = do
+        kept <- field k PrevKept
+        Impulse <$> field k PrevKey <*> field k PrevNormal <*> field k PrevFriction
+                <*> (if kept > 0 then mapM (field k . snd) keptFields else pure [])
   start <- truncate <$> MV.read (wBodyPrev a) (2 * i)
   count <- truncate <$> MV.read (wBodyPrev a) (2 * i + 1)
-  rows <- mapM (\k -> Impulse <$> field k PrevKey <*> field k PrevNormal <*> field k PrevFriction) [start .. start + count - 1]
-  pure [r | r <- rows, impulseNormal r /= 0 || impulseFriction r /= 0]
+  rows <- mapM row [start .. start + count - 1]
+  pure [r | r <- rows, impulseNormal r /= 0 || impulseFriction r /= 0 || not (null (impulseKept r))]
 
 -- | Give the world's bodies, in order, what they remember of the last
 -- step's contacts (as 'rememberedImpulses' read it), replacing what they
--- remembered; the next step warm starts from it.
+-- remembered; the next step warm starts from it (and keeps the rows that
+-- carry their kept numbers, as it would have).
 restoreImpulses :: NativeWorld -> [[Impulse]] -> IO (Either String ())
 restoreImpulses w perBody = do
   n <- bodyCount w
@@ -380,6 +391,8 @@ restoreImpulses w perBody = do
                           put PrevKey (impulseKey r)
                           put PrevNormal (impulseNormal r)
                           put PrevFriction (impulseFriction r)
+                          put PrevKept (if null (impulseKept r) then 0 else 1)
+                          zipWithM_ put (map snd keptFields) (impulseKept r)
                      | (k, r) <- zip [s ..] rows ]
       | (i, s, rows) <- zip3 [0 ..] starts perBody ]
     pure (Right ())

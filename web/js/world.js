@@ -217,16 +217,25 @@ var ManifoldWebWorld = (function (W) {
       }
     });
   }
-  // a body's remembered contact impulses: [[key, normal, friction], ...]
+  // what a contact row to be kept lists after [key, normal, friction] (generated: Manifold.World.keptFields)
+  function keptFields() { return W.Manifold.keptFields; }
+  // a body's remembered contact impulses: [[key, normal, friction], ...],
+  // a row to be kept followed by its kept numbers
   /** @param {string} path @param {unknown} v @returns {Manifold.Impulse[]} */
   function impulses(path, v) {
     if (!Array.isArray(v)) problem(path, "must be an array of [key, normal, friction] impulses");
+    const kept = 3 + keptFields().length;
     return v.map(/** @returns {Manifold.Impulse} */ function (r, k) {
       const at = path + "[" + k + "]";
-      if (!Array.isArray(r) || r.length !== 3) problem(at, "must be an array of three numbers [key, normal, friction]");
+      if (!Array.isArray(r) || (r.length !== 3 && r.length !== kept)) {
+        problem(at, "must be an array of three numbers [key, normal, friction], or of " + kept + " for a contact kept");
+      }
       const key = number(at + "[0]", r[0]);
       if (key !== Math.round(key) || key < 0 || key >= Math.pow(2, 53)) problem(at + "[0]", "must be a contact key, a whole number from 0 to 2^53");
-      return [key, nonNegative(at + "[1]", r[1]), number(at + "[2]", r[2])];
+      /** @type {Manifold.Impulse} */
+      const row = [key, nonNegative(at + "[1]", r[1]), number(at + "[2]", r[2])];
+      r.slice(3).forEach(function (x, m) { row.push(number(at + "[" + (m + 3) + "]", x)); });
+      return row;
     });
   }
   /**
@@ -913,15 +922,20 @@ var ManifoldWebWorld = (function (W) {
     }
 
     // What body i remembers of the last step's contact rows it owns, for
-    // warm starting: [key, normal, friction] (rows with no impulse left out).
+    // warm starting: [key, normal, friction], and for a row the next step
+    // may keep its kept numbers after them (rows with no impulse that are
+    // not kept left out).
     /** @param {number} i @returns {Manifold.Impulse[]} */
     impulses(i) {
       const E = this.engine, P = E.prev, prev = this.a.prev, out = /** @type {Manifold.Impulse[]} */ ([]);
       const start = this.a.bodyPrev[2 * i], count = this.a.bodyPrev[2 * i + 1];
       for (let r = start; r < start + count; r++) {
-        const o = E.prevStride * r;
-        if (prev[o + P.prevNormal] !== 0 || prev[o + P.prevFriction] !== 0) {
-          out.push([prev[o + P.prevKey], prev[o + P.prevNormal], prev[o + P.prevFriction]]);
+        const o = E.prevStride * r, kept = prev[o + P.prevKept] > 0;
+        if (prev[o + P.prevNormal] !== 0 || prev[o + P.prevFriction] !== 0 || kept) {
+          /** @type {Manifold.Impulse} */
+          const row = [prev[o + P.prevKey], prev[o + P.prevNormal], prev[o + P.prevFriction]];
+          if (kept) keptFields().forEach(function (f) { row.push(prev[o + P[f]]); });
+          out.push(row);
         }
       }
       return out;
@@ -945,6 +959,8 @@ var ManifoldWebWorld = (function (W) {
           a.prev[o + P.prevKey] = r[0];
           a.prev[o + P.prevNormal] = r[1];
           a.prev[o + P.prevFriction] = r[2];
+          a.prev[o + P.prevKept] = r.length > 3 ? 1 : 0;
+          keptFields().forEach(function (f, m) { if (r.length > 3) a.prev[o + P[f]] = r[3 + m]; });
         });
       }
     }

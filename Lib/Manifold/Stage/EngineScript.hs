@@ -7,6 +7,7 @@ module Manifold.Stage.EngineScript
   ( engineProcedures
   , engineObject
   , sceneKeysArray
+  , keptFieldsArray
   ) where
 
 import Data.Char (isAsciiUpper, toLower)
@@ -137,6 +138,11 @@ jointName :: JointField -> String
 jointName k = case show k of
   'J' : c : cs | isAsciiUpper c -> toLower c : cs
   _ -> jsName k
+
+-- | The remembered row's fields that a kept contact row carries, in the
+-- order a saved scene lists them after its impulses ('keptFields').
+keptFieldsArray :: String
+keptFieldsArray = "[" ++ intercalate ", " [show (jsName f) | (_, f) <- keptFields] ++ "]"
 
 -- | A constructor's name as the page's key: @GravityOn@ → @gravityOn@.
 jsName :: Show a => a -> String

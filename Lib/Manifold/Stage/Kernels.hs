@@ -31,7 +31,7 @@ import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
 import Manifold.Stage.Print
-import Manifold.Stage.EngineScript (engineObject, engineProcedures, sceneKeysArray)
+import Manifold.Stage.EngineScript (engineObject, engineProcedures, keptFieldsArray, sceneKeysArray)
 import Manifold.Surface (fieldGradient, projectToSurfaceWith, traceDistance)
 import Manifold.World (Layout, layout)
 
@@ -145,6 +145,8 @@ spaceIndexScript spaces = unlines $
   , "// the keys of a scene's body, in order, and those that give the body its own material (taking the scene key's values)"
   , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
   , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
+  , "// what a saved contact row to be kept lists after its [key, normal, friction]: the remembered row's fields (Lib/Manifold/World.hs)"
+  , "globalThis.Manifold.keptFields = " ++ keptFieldsArray ++ ";"
   , "// addBody's shape codes (a regular polygon's is its number of sides), a body's size from its shape's code, its two numbers and its given size,"
   , "// and a convex polygon's from its count, its radius and its corners a0, b0, ... a7, b7; whether a count's corners go round a convex polygon (1 or 0) (Lib/Manifold/Hull.hs)"
   , "globalThis.Manifold.shapes = { codes: { circle: " ++ code circleCode ++ ", box: " ++ code boxCode ++ ", capsule: " ++ code capsuleCode
