@@ -321,8 +321,8 @@ emitContact metric w owner key a b ra dirA rb dirB depth selfScale coupling carr
 -- move with every lean of a stack (clipped against its bodies as they
 -- lean), and a tall stack of soft contacts leans further each step until
 -- it falls; kept, it is a set of springs at fixed points and stands
--- (docs/decisions/kept-contacts.md). Box2D v3's contact recycling does
--- this with the same bounds.
+-- (docs/decisions/kept-contacts.md). Box2D v3's contact recycling keeps a
+-- manifold the same way, within the bounds below.
 --
 -- A pair has hardly moved while its relative motion since its rows were
 -- found (body a's motion less body b's, summed over the steps), with its
@@ -331,8 +331,9 @@ emitContact metric w owner key a b ra dirA rb dirB depth selfScale coupling carr
 -- Box2D bounds it, but for each body's own turn, which Box2D bounds by
 -- 11.5° alone (its anchors turn with the bodies; the rows kept here do
 -- not), and for the turn of the surface under each body (on a curved
--- surface a kept row leaves the tangent plane as its body moves on). Every row of the group must be keepable (a row remembered from a
--- scene without its kept numbers is not) and still near its owner: a body
+-- surface a kept row leaves the tangent plane as its body moves on).
+-- Every row of the group must be keepable (a row remembered from a scene
+-- without its kept numbers is not) and still near its owner: a body
 -- wrapped into the fundamental domain has jumped away from its rows.
 keepOr :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> Scalar m -> Scalar m -> m () -> m ()
 {-# INLINE keepOr #-}
