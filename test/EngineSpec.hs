@@ -29,7 +29,7 @@ import Manifold.Stage.Kernels (spaceIndexScript)
 import TestUtil (scriptOf)
 import Manifold.World
 import Manifold.Stage.Imp (NativeArray)
-import NodeJS (runNode)
+import NodeJS (runNode, runNodeOverArrays)
 import qualified Data.Set as S
 import PhysicsUtil (Contact (..), contacts, meta, slot)
 
@@ -51,14 +51,13 @@ arraysOf w = mapM freeze (toList (nwArrays w))
 
 -- | Run the space's emitted engine in node from the given arrays.
 runInNode :: Space -> [[Double]] -> Int -> IO [[Double]]
-runInNode sp initial steps = do
-  out <- nodeOverArrays [] sp initial
-    [ "for (let k = 0; k < " ++ show steps ++ "; k++) {"
-    , "  e.step(...a);"
-    , "}"
-    , "process.stdout.write(JSON.stringify(a.map(x => Array.from(x))));"
-    ]
-  maybe (fail ("node printed no JSON: " ++ take 300 out)) pure (A.decode (BL.pack out))
+runInNode sp initial steps = runNodeOverArrays initial $ unlines
+  [ scriptOf sp
+  , "const e = Manifold.spaces[" ++ show (spaceName sp) ++ "].engine;"
+  , "const a = __arrays;"
+  , "for (let k = 0; k < " ++ show steps ++ "; k++) e.step(...a);"
+  , "__emitArrays(a);"
+  ]
 
 -- | A node script (run with the given flags) over the space's emitted engine
 -- @e@ and the world's arrays @a@ (handed over as little-endian doubles in a

@@ -1,6 +1,7 @@
 -- | The golden runs ("Manifold.Golden"): each catalogue scene, run by the
 -- compiled native step, by the generic one (all but the benchmark piles)
--- and by the page's engine under node, ends on the state hash
+-- and by the page's engine under node (all but four of the 1000-body
+-- piles), ends on the state hash
 -- test/golden/hashes holds, bit for bit; and
 -- so does a run saved halfway (as a scene file) and loaded again, in both
 -- engines, on every space.
@@ -73,6 +74,13 @@ nativeLines generic = forM (if generic then genericRuns else goldenRuns) $ \run 
 genericRuns :: [GoldenRun]
 genericRuns = filter (\run -> grName run == "rectangle-300" || not (any (`isSuffixOf` grName run) ["-300", "-1000"])) goldenRuns
 
+-- | The runs the page's engine checks: all but four of the 1000-body
+-- benchmark piles, of which the flat and the curved one are kept (the
+-- others are the 300-body piles' code on the same spaces, at more bodies,
+-- and took 16 s of node's time; the compiled native step runs them all).
+pageRuns :: [GoldenRun]
+pageRuns = filter (\run -> grName run `elem` ["plane-1000", "sphere-1000"] || not ("-1000" `isSuffixOf` grName run)) goldenRuns
+
 -- | The runs saved and continued: every run but the benchmark piles, of
 -- which the flat and the curved 300-body ones (the others are the same
 -- code on other spaces, or at more bodies; every space's default scene is
@@ -128,8 +136,10 @@ spec = describe "golden state hashes (test/golden/hashes)" $ do
     got <- nativeLines True
     length got `shouldBe` length genericRuns
     compareSome (changed "generic native step") "generic native step" got
-  it "the page's engine (under node) ends every golden run on its hash" $
-    pageLines False goldenRuns >>= compareWith "page's engine"
+  it "the page's engine (under node) ends every golden run but four of the 1000-body piles on its hash" $ do
+    got <- pageLines False pageRuns
+    length got `shouldBe` length pageRuns
+    compareSome (changed "page's engine") "page's engine" got
   it "a run saved as a scene and loaded again ends where the uninterrupted run does, natively, on every space" $ do
     got <- nativeSplitLines
     length got `shouldBe` length splitRuns

@@ -43,7 +43,7 @@ module PhysicsUtil
 
 import Control.Monad (forM, replicateM_)
 import Data.Foldable (toList)
-import qualified Data.Map.Strict as M
+import Data.Traversable (mapAccumL)
 import qualified Data.Vector.Unboxed as V
 import qualified Data.Vector.Unboxed.Mutable as MV
 import Linear.Metric (dot, norm)
@@ -54,7 +54,7 @@ import Manifold
 import Manifold.Engine
 import TestUtil (scriptOf)
 import Manifold.World
-import NodeJS (Bits (..), doubleBits, runNodeJSON)
+import NodeJS (doubleBits, runNodeOverArrays)
 
 -- Worlds ---------------------------------------------------------------------
 
@@ -221,9 +221,6 @@ type Snapshot = WorldArrays [Double]
 snapshot :: NativeWorld -> IO Snapshot
 snapshot w = traverse (fmap V.toList . V.freeze) (nwArrays w)
 
-hexDoubles :: [Double] -> String
-hexDoubles = concatMap doubleBits
-
 jsV3 :: V3 Double -> String
 jsV3 (V3 x y z) = concatMap (\c -> "__fromBits(\"" ++ doubleBits c ++ "\"), ") [x, y, z]
 
@@ -234,8 +231,7 @@ jsNum c = "__fromBits(\"" ++ doubleBits c ++ "\")"
 -- the actions; the arrays afterwards (bit-exact transfer both ways).
 runActionsInNode :: Space -> Snapshot -> [Action] -> IO Snapshot
 runActionsInNode sp initial actions = do
-  let names = toList arrayNames
-      jsAction = \case
+  let jsAction = \case
         Steps n -> "for (let k = 0; k < " ++ show n ++ "; k++) e.step(...a);"
         Grab i sgn q hz zeta fmax -> "e.grab(...a, " ++ show i ++ ", " ++ jsNum sgn ++ ", " ++ jsV3 q
                                       ++ jsNum hz ++ ", " ++ jsNum zeta ++ ", " ++ jsNum fmax ++ ");"
@@ -243,22 +239,16 @@ runActionsInNode sp initial actions = do
         Release -> "e.release(...a);"
       script = unlines $
         [ scriptOf sp
-        , "function __hexArray(h) {"
-        , "  const a = new Float64Array(h.length / 16);"
-        , "  for (let i = 0; i < a.length; i++) a[i] = __fromBits(h.slice(16 * i, 16 * i + 16));"
-        , "  return a;"
-        , "}"
         , "const e = Manifold.spaces[" ++ show (spaceName sp) ++ "].engine;"
-        , "const a = [" ++ concatMap (\xs -> "__hexArray(\"" ++ hexDoubles xs ++ "\"),\n") (toList initial) ++ "];"
-        ] ++ map jsAction actions ++
-        [ "const out = {};"
-        , "const names = " ++ show names ++ ";"
-        , "names.forEach((n, k) => { out[n] = a[k]; });"
-        , "__emit(out);"
-        ]
-  m <- runNodeJSON script :: IO (M.Map String [Bits])
-  let get n = maybe (fail ("node returned no array " ++ n)) (pure . map unBits) (M.lookup n m)
-  traverse get arrayNames
+        , "const a = __arrays;"
+        ] ++ map jsAction actions ++ ["__emitArrays(a);"]
+  after <- runNodeOverArrays (toList initial) script
+  if map length after /= map length (toList initial)
+    then fail "node handed back arrays of other lengths"
+    else pure (snd (mapAccumL refill after initial))
+  where
+    refill (x : rest) _ = (rest, x)
+    refill [] _ = error "runActionsInNode: fewer arrays than the world's"
 
 -- | The largest differences between the native and the emitted run.
 data Differential = Differential
