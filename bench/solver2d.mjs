@@ -9,13 +9,17 @@
 //
 //   node bench/solver2d.mjs [--scenes a,b] [--manifold EXE] [--squares] [--json]
 //                           [--box2d-hertz H] [--params JSON] [--scale K] [--boxes N]
+//                           [--trace FROM:TO]
 //
 // --scale K puts K units in a metre instead of 0.05 (the step still keeps
 // g·dt²/h: dt = (1/60)·√(10·K/4)), to see whether a scene behaves alike at
 // every scale. --boxes N stacks N boxes in the vertical stack instead of 15;
 // its height is then judged by Solver2D's 0.1 scaled by (N/15)², as a stack
 // of springs sags (Box2D v3's own stacks sag 0.07 with 15 boxes, 0.30 with
-// 30: bench/box2d/vertical-stack.c, BOXES=30).
+// 30: bench/box2d/vertical-stack.c, BOXES=30). --trace FROM:TO prints, for
+// each step from FROM to TO of the page's run, a line a movable body: step,
+// body, x, y, angle, vx, vy in Box2D's units (the format of
+// bench/box2d/high-mass-ratio.c's trace, to compare the two step by step).
 //
 // --squares builds the stacking scenes (vertical stack, large pyramid) of
 // squares, which collide by their sampled outlines, instead of boxes.
@@ -31,15 +35,21 @@ import { execFileSync } from "node:child_process";
 import { loadSpace } from "./worlds.mjs";
 import { commandLine } from "./options.mjs";
 
-const USAGE = "node bench/solver2d.mjs [--scenes a,b] [--manifold EXE] [--squares] [--json] [--box2d-hertz H] [--params JSON] [--scale K] [--boxes N]";
+const USAGE = "node bench/solver2d.mjs [--scenes a,b] [--manifold EXE] [--squares] [--json] [--box2d-hertz H] [--params JSON] [--scale K] [--boxes N] [--trace FROM:TO]";
 const line = commandLine({
   usage: USAGE,
-  known: ["--scenes", "--manifold", "--box2d-hertz", "--params", "--scale", "--boxes"], flags: ["--squares", "--json"],
+  known: ["--scenes", "--manifold", "--box2d-hertz", "--params", "--scale", "--boxes", "--trace"], flags: ["--squares", "--json"],
 });
 const exe = line.text("--manifold", process.env.MANIFOLD_EXE || "manifold");
 const squares = line.flag("--squares"), json = line.flag("--json");
 const box2dHertz = line.positive("--box2d-hertz", null);
 const SCALE = line.positive("--scale", 0.05), BOXES = line.count("--boxes", 15, 1);
+const traceText = line.text("--trace", "0:-1"), traceMatch = /^(\d+):(\d+)$/.exec(traceText);
+if (traceText !== "0:-1" && (!traceMatch || Number(traceMatch[1]) > Number(traceMatch[2]))) {
+  console.error("--trace must be FROM:TO, two step numbers, FROM at most TO (not " + JSON.stringify(traceText) + ")\nusage: " + USAGE);
+  process.exit(2);
+}
+const [traceFrom, traceTo] = traceMatch ? [Number(traceMatch[1]), Number(traceMatch[2])] : [1, 0];
 let extraKeys = {};
 try {
   extraKeys = JSON.parse(line.text("--params", "{}"));
@@ -194,7 +204,17 @@ function page(scene, def) {
   const world = new W.World("plane", globalThis.Manifold.spaces.plane);
   world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
   const frames = [{ bodies: world.bodies() }], every = def.every || def.steps;
-  for (let k = every; k <= def.steps; k += every) { world.step(every); frames.push({ bodies: world.bodies() }); }
+  for (let k = 1; k <= def.steps; k++) {
+    world.step(1);
+    if (k >= traceFrom && k <= traceTo) {
+      world.bodies().forEach((b, i) => {
+        if (scene.bodies[i].static) return;
+        const v = [b.v[0], b.v[2]].map((c) => c * TIME / SCALE);
+        console.log([k, i, xOf(b), yOf(b), angleOf(b), v[0], v[1]].map((x, j) => j < 2 ? x : x.toFixed(4)).join(" "));
+      });
+    }
+    if (k % every === 0) frames.push({ bodies: world.bodies() });
+  }
   return frames;
 }
 
