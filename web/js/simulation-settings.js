@@ -73,6 +73,10 @@ var ManifoldWebSimulationSettings = (function (W) {
     if (o.paused !== undefined) {
       state.clock.paused = !!o.paused;
       state.clock.reset();
+      // a worker stepping the world hears of it now, not at the next frame:
+      // paused, the world stays where pause() left it (its hash, its
+      // picture), not a few steps on
+      MW.physicsThread.update();
     }
     if (o.thread !== undefined) MW.physicsThread.setSetting(o.thread);
     const out = simulationSettings();
