@@ -5,8 +5,9 @@
 -- sleeping pile goes on bit for bit; with sleeping off nothing sleeps.
 module SleepSpec (spec) where
 
-import Control.Monad (forM_, when)
+import Control.Monad (forM, forM_, replicateM_, when)
 import qualified Data.Aeson as A
+import qualified Data.ByteString.Lazy.Char8 as BL
 import Data.IORef
 import Data.Maybe (fromMaybe, isJust, isNothing)
 import Linear.Metric (norm)
@@ -116,6 +117,31 @@ spec = do
       woke <- stepsWhile w 200 (asleep w 1)
       labelled "the struck stack woke after steps" (show woke)
       mapM (asleep w) [1 .. 6] `shouldReturn` replicate 3 False ++ replicate 3 True
+
+    it "a box struck while asleep moves as it would awake (its island wakes before the step's solve): under a heavy box dropped on it, it sinks into the floor as with sleeping off" $ do
+      -- a box of half-side 0.05 at rest on a static floor (asleep within
+      -- 0.5 s) and a box ten times its size and density dropped onto it
+      let scene on = BL.pack $ concat
+            [ "{\"space\": \"plane\", \"sleep\": ", on, ", \"bodies\": ["
+            , "{\"shape\": {\"box\": [2, 0.1]}, \"static\": true, \"p\": [0, 0, -0.1]},"
+            , "{\"shape\": {\"box\": [0.05, 0.05]}, \"p\": [0, 0, 0.05]},"
+            , "{\"shape\": {\"box\": [0.1, 0.1]}, \"density\": 10, \"p\": [0, 0, 1.5]}]}" ]
+          -- the box's height each step, and whether it slept before it was struck
+          run on = do
+            w <- either fail pure (parseScene (scene on)) >>= loadScene 0 >>= either fail pure
+            forM [1 .. 300 :: Int] $ \_ -> do
+              stepNative w
+              (\(V3 _ _ z) -> z) . bsPos <$> readBody w 1
+      slept <- do
+        w <- either fail pure (parseScene (scene "true")) >>= loadScene 0 >>= either fail pure
+        replicateM_ 70 (stepNative w)
+        asleep w 1
+      slept `shouldBe` True
+      withSleep <- run "true"
+      without <- run "false"
+      labelled "the struck box's lowest centre, with sleeping and without (resting at 0.05)" (fmt (minimum withSleep) ++ ", " ++ fmt (minimum without))
+      minimum without `shouldSatisfy` (< 0.045) -- it was struck hard enough to sink
+      abs (minimum withSleep - minimum without) `shouldSatisfy` (< 1e-3)
 
     it "removing the box under a sleeping stack wakes the boxes on it, which fall" $ do
       w <- twoStacks defaultParams

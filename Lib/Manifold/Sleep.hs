@@ -9,8 +9,9 @@
 -- walked, collided with other sleeping or static bodies, nor solved.
 --
 -- An island wakes whole: when an awake body touches one of its bodies (a
--- contact row between them, at the end of the step that found it: in that
--- step the awake body pushes a sleeping one, which does not move), when a
+-- contact row between them: as the step's contacts are found, before the
+-- solve, which then moves the island's bodies with the rest; see
+-- 'markTouched'), when a
 -- joint joins one of its bodies to an awake one or is added or removed,
 -- when one of its bodies is grabbed, when a body near it is removed, and
 -- every island when a parameter changes (the wake phase, first in the
@@ -26,6 +27,7 @@ module Manifold.Sleep
   , sleepIslands
   , markIsland
   , wakeMarked
+  , markTouched
   , wakeNear
   , countIslands
   , setSleeping
@@ -62,7 +64,9 @@ wakeMarked w = do
       whenPositive asleep $ do
         label <- readSlot w i Island
         marked <- readIsland w (toIndex label) IslandWake
-        whenPositive marked (wakeBody w i)
+        whenPositive marked $ do
+          wakeBody w i
+          readMeta w AwakeCount >>= writeMeta w AwakeCount . (+ 1)
     forEach (toIndex count) $ \i -> writeIsland w i IslandWake 0
     writeMeta w WakeRequest 0
 
@@ -116,24 +120,34 @@ wakePhase w = do
   forEach (toIndex count) (moving w >=> \m -> modifyRef awake (+ m))
   readRef awake >>= writeMeta w AwakeCount
 
+-- | Mark the sleeping islands that the step's contact rows (or a joint)
+-- link to an awake body to wake ('wakeMarked' wakes them). The step's
+-- collision phase does this as soon as it has found the contacts, and
+-- then wakes them and finds the contacts again, so that the woken bodies
+-- are solved in that step with their own contacts (as Box2D wakes an
+-- island when a contact with it begins): pushed while asleep, a body at
+-- rest on the ground took the whole impact's velocity with no ground row
+-- to stop it, and went into the ground the next step.
+markTouched :: Imp m => WorldArrays (Array m) -> m ()
+markTouched w = do
+  on <- readParam w Sleep
+  whenPositive on $ linkedPairs w $ \a b -> do
+    ma <- moving w a
+    mb <- moving w b
+    whenPositive ma (markIsland w b)
+    whenPositive mb (markIsland w a)
+
 -- | The end of the step: the sleeping islands that this step's contact
--- rows or a joint link to an awake body wake (with the velocity the step's
--- rows gave them: in the step they were pushed but did not move); every
--- awake body's sleep timer; where some timer has run out, the islands, and
--- those whose every body's timer has run out fall asleep. (Waking here,
--- not as the next step begins, leaves nothing of it to the contact rows,
--- which a saved scene does not hold.)
+-- rows or a joint link to an awake body wake (those the collision phase
+-- did not: found by its second pass, or joined); every awake body's sleep
+-- timer; where some timer has run out, the islands, and those whose every
+-- body's timer has run out fall asleep.
 sleepIslands :: Imp m => Metric -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE sleepIslands :: Metric -> WorldArrays NativeArray -> Native () #-}
 sleepIslands metric w = do
   on <- readParam w Sleep
   whenPositive on $ do
-    let touching a b = do
-          ma <- moving w a
-          mb <- moving w b
-          whenPositive ma (markIsland w b)
-          whenPositive mb (markIsland w a)
-    linkedPairs w touching
+    markTouched w
     wakeMarked w
     dt <- readParam w Dt
     threshold <- readParam w SleepSpeed

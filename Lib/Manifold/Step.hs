@@ -9,12 +9,13 @@ module Manifold.Step
   ) where
 
 import Manifold.Collide
+import Manifold.Field (Field (..))
 import Manifold.Joint (prepareJoints)
-import Manifold.Sleep (sleepIslands, wakePhase)
+import Manifold.Sleep (markTouched, sleepIslands, wakeMarked, wakePhase)
 import Manifold.Solver
 import Manifold.Space
 import Manifold.Stage.Imp
-import Manifold.World (Layout, WorldArrays, polygoniseAll)
+import Manifold.World (Layout, Meta (..), WorldArrays, polygoniseAll, readMeta, writeMeta)
 
 step :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE step :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
@@ -25,7 +26,7 @@ stepPhases :: Imp m => [(String, Space -> Layout -> WorldArrays (Array m) -> m (
 {-# SPECIALIZE stepPhases :: [(String, Space -> Layout -> WorldArrays NativeArray -> Native ())] #-}
 stepPhases =
   [ ("wake", \_ _ w -> wakePhase w)
-  , ("collide", collide)
+  , ("collide", collideWaking)
   , ("prepare", \sp _ w -> prepareContacts (spaceMetric sp) w >> prepareJoints sp w)
   , ("substeps", substeps)
   , ("finish", \sp _ w -> finishStep sp w)
@@ -34,3 +35,22 @@ stepPhases =
     -- where it came to rest
   , ("sleep", \sp _ w -> sleepIslands (spaceMetric sp) w)
   ]
+
+-- | The contacts ('collide'); where they touch a sleeping island, the
+-- island wakes and the contacts are found again, its bodies' own among
+-- them, so that the solve moves it with the body that struck it
+-- ('markTouched'). A loop of two passes, the second only in a step that
+-- woke something: the collision phase's code is printed once.
+collideWaking :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+{-# SPECIALIZE collideWaking :: Space -> Layout -> WorldArrays NativeArray -> Native () #-}
+collideWaking sp l w = do
+  -- the rows dropped for want of room are counted once, by the last pass
+  dropped <- readMeta w DroppedContacts >>= newRef
+  forEach (toIndex 2) $ \pass -> do
+    -- the wake phase left no request; the first pass's touches make one
+    requested <- readMeta w WakeRequest
+    whenPositive (maxF (0.5 - toScalar pass) requested) $ do
+      wakeMarked w
+      readRef dropped >>= writeMeta w DroppedContacts
+      collide sp l w
+      subroutine "markTouched" [] $ \_ -> markTouched w
