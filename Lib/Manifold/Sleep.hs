@@ -11,8 +11,8 @@
 -- An island wakes whole: when an awake body touches one of its bodies (a
 -- contact row between them: as the step's contacts are found, before the
 -- solve, which then moves the island's bodies with the rest; see
--- 'markTouched'), when a
--- joint joins one of its bodies to an awake one or is added or removed,
+-- 'markTouched'), when a joint joins one of its bodies to an awake one or
+-- is added or removed,
 -- when one of its bodies is grabbed, when a body near it is removed, and
 -- every island when a parameter changes (the wake phase, first in the
 -- step, for what happened between steps).
@@ -125,9 +125,9 @@ wakePhase w = do
 -- collision phase does this as soon as it has found the contacts, and
 -- then wakes them and finds the contacts again, so that the woken bodies
 -- are solved in that step with their own contacts (as Box2D wakes an
--- island when a contact with it begins): pushed while asleep, a body at
--- rest on the ground took the whole impact's velocity with no ground row
--- to stop it, and went into the ground the next step.
+-- island when a contact with it begins): a body pushed while asleep, not
+-- moving and with no row against the ground, would take the whole blow's
+-- velocity into the ground the next step.
 markTouched :: Imp m => WorldArrays (Array m) -> m ()
 markTouched w = do
   on <- readParam w Sleep
