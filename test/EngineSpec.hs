@@ -8,7 +8,6 @@ import Data.Either (fromLeft)
 import Data.Foldable (toList)
 import Data.List (intercalate)
 import qualified Data.Aeson as A
-import Data.ByteString.Builder (doubleLE, toLazyByteString)
 import qualified Data.ByteString.Lazy.Char8 as BL
 import qualified Data.Vector.Unboxed as V
 import GHC.Float (castDoubleToWord64)
@@ -29,7 +28,7 @@ import Manifold.Stage.Kernels (spaceIndexScript)
 import TestUtil (scriptOf)
 import Manifold.World
 import Manifold.Stage.Imp (NativeArray)
-import NodeJS (runNode, runNodeOverArrays)
+import NodeJS (arraysScript, runNode, runNodeOverArrays)
 import qualified Data.Set as S
 import PhysicsUtil (Contact (..), contacts, meta, slot)
 
@@ -67,15 +66,12 @@ nodeOverArrays :: [String] -> Space -> [[Double]] -> [String] -> IO String
 nodeOverArrays flags sp initial body =
   withSystemTempDirectory "manifold-engine" $ \dir -> do
     let script = dir </> "engine.js"
-        numbers = dir </> "arrays.bin"
-    BL.writeFile numbers (toLazyByteString (foldMap (foldMap doubleLE) initial))
+    input <- arraysScript (dir </> "arrays.bin") initial
     writeFile script $ unlines $
       [ scriptOf sp
       , "const e = Manifold.spaces[" ++ show (spaceName sp) ++ "].engine;"
-      , "const numbers = require('fs').readFileSync(" ++ show numbers ++ ");"
-      , "const bytes = numbers.buffer.slice(numbers.byteOffset, numbers.byteOffset + numbers.length);"
-      , "let offset = 0;"
-      , "const a = " ++ show (map length initial) ++ ".map(n => { const x = new Float64Array(bytes, 8 * offset, n).slice(); offset += n; return x; });"
+      , input
+      , "const a = __arrays;"
       ] ++ body
     readProcess "node" (flags ++ [script]) ""
 

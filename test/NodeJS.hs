@@ -22,6 +22,7 @@ module NodeJS
   , runNode
   , runNodeJSON
   , runNodeOverArrays
+  , arraysScript
   , Bits (..)
   , jsDouble
   , jsDoubles
@@ -138,25 +139,30 @@ runNodeJSON script = do
       Right v -> pure v
       Left e -> fail ("cannot decode node's output: " ++ e ++ "\n" ++ take 2000 l)
 
+-- | Write arrays of doubles to @file@ as little-endian doubles; the
+-- JavaScript that reads them back, bit for bit, as @__arrays@
+-- (Float64Arrays).
+arraysScript :: FilePath -> [[Double]] -> IO String
+arraysScript file arrays = do
+  BL.writeFile file (toLazyByteString (foldMap (foldMap doubleLE) arrays))
+  pure $ unlines
+    [ "const __input = require('fs').readFileSync(" ++ show file ++ ");"
+    , "const __bytes = __input.buffer.slice(__input.byteOffset, __input.byteOffset + __input.length);"
+    , "let __offset = 0;"
+    , "const __arrays = " ++ show (map length arrays) ++ ".map(n => { const x = new Float64Array(__bytes, 8 * __offset, n).slice(); __offset += n; return x; });"
+    ]
+
 -- | Run a script over arrays of doubles: the script (after the prelude)
--- finds them as @__arrays@ (Float64Arrays) and ends with
+-- finds them as @__arrays@ ('arraysScript') and ends with
 -- @__emitArrays(xs)@; the arrays @xs@ it hands back. Both ways the numbers
 -- go as little-endian doubles through a file, bit for bit.
 runNodeOverArrays :: [[Double]] -> String -> IO [[Double]]
 runNodeOverArrays initial script =
   withSystemTempDirectory "manifold-arrays" $ \dir -> do
-    let input = dir </> "in.bin"
-        output = dir </> "out.bin"
-    BL.writeFile input (toLazyByteString (foldMap (foldMap doubleLE) initial))
+    let output = dir </> "out.bin"
+    input <- arraysScript (dir </> "in.bin") initial
     out <- runNode $ unlines
-      [ "const __input = require('fs').readFileSync(" ++ show input ++ ");"
-      , "let __offset = 0;"
-      , "const __arrays = " ++ show (map length initial) ++ ".map(n => {"
-      , "  const x = new Float64Array(n);"
-      , "  for (let i = 0; i < n; i++) x[i] = __input.readDoubleLE(8 * (__offset + i));"
-      , "  __offset += n;"
-      , "  return x;"
-      , "});"
+      [ input
       , "function __emitArrays(xs) {"
       , "  const b = Buffer.alloc(8 * xs.reduce((s, x) => s + x.length, 0));"
       , "  let o = 0;"
