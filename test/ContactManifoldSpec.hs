@@ -43,6 +43,12 @@ circleAt c r = Shape2 [c] r
 boxAt :: V2 Double -> Double -> Double -> Shape2
 boxAt (V2 x y) hx hy = Shape2 [V2 (x - hx) (y - hy), V2 (x + hx) (y - hy), V2 (x + hx) (y + hy), V2 (x - hx) (y + hy)] 0
 
+-- | A box of half-extents @(hx, hy)@ centred at @c@, turned by @t@
+-- counter-clockwise (its corners from the lower left before turning).
+turnedBoxAt :: V2 Double -> Double -> Double -> Double -> Shape2
+turnedBoxAt (V2 x y) hx hy t =
+  Shape2 [V2 (x + u * cos t - v * sin t) (y + u * sin t + v * cos t) | (u, v) <- [(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)]] 0
+
 capsule :: V2 Double -> V2 Double -> Double -> Shape2
 capsule a b r = Shape2 [a, b] r
 
@@ -155,6 +161,20 @@ spec = describe "Manifold.ContactManifold" $ do
       a <- manifoldOf 0.1 (boxAt (V2 0 0) 1 1) (boxAt (V2 0.2 1.4) 0.5 0.5)
       b <- manifoldOf 0.1 (boxAt (V2 0 0) 1 1) (boxAt (V2 0.25 1.41) 0.5 0.5)
       map (\(_, _, k) -> k) (pointsOf a) `shouldBe` map (\(_, _, k) -> k) (pointsOf b)
+    it "keys name the corner a point is at, whichever hull gives the reference edge: a box level on a slab and tilted a little (the slab's face the reference) keeps its points' keys" $ do
+      let keys m = sortOn id [k | (_, _, k) <- pointsOf m]
+      level <- manifoldOf 0.1 (turnedBoxAt (V2 0.2 1.49) 0.5 0.5 0) (boxAt (V2 0 0) 1 1)
+      tilted <- manifoldOf 0.1 (turnedBoxAt (V2 0.2 1.5) 0.5 0.5 0.02) (boxAt (V2 0 0) 1 1)
+      keys level `shouldBe` [0, 1]
+      -- (the slab's face gives the normal: its reference edge)
+      cmNormal tilted `shouldSatisfy` near (V2 0 (-1))
+      keys tilted `shouldBe` [0, 1]
+      -- the slab first: the box's corners are the second shape's
+      swapped <- manifoldOf 0.1 (boxAt (V2 0 0) 1 1) (turnedBoxAt (V2 0.2 1.5) 0.5 0.5 0.02)
+      keys swapped `shouldBe` [fromIntegral maxHullCorners, fromIntegral maxHullCorners + 1]
+      -- a circle: its centre, the one corner
+      circle <- manifoldOf 0.1 (boxAt (V2 0 0) 1 1) (circleAt (V2 0.3 1.4) 0.5)
+      keys circle `shouldBe` [fromIntegral maxHullCorners]
 
   it "a pair and the pair swapped give the same separations, the normals opposite, but where the two hulls' edges find them equally far apart (300 seeded pairs of every kind)" $ do
     let cases = unGen (vectorOf 300 genPair) (mkQCGen 11) 30

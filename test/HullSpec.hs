@@ -240,7 +240,16 @@ loaded text = either fail pure (parseScene text) >>= loadScene 0 >>= either fail
 -- | The contact rows of the last step between bodies @a@ and @b@: their
 -- points.
 contactPoints :: NativeWorld -> Int -> Int -> IO [V3 Double]
-contactPoints w a b = do
+contactPoints w a b = map fst <$> contactRows w a b
+
+-- | The element with the least measure.
+minimumOn :: Ord b => (a -> b) -> [a] -> a
+minimumOn f = foldr1 (\x y -> if f x <= f y then x else y)
+
+-- | The contact rows of the last step between bodies @a@ and @b@: their
+-- points and keys.
+contactRows :: NativeWorld -> Int -> Int -> IO [(V3 Double, Double)]
+contactRows w a b = do
   n <- contactCount w
   rows <- forM [0 .. n - 1] $ \c -> do
     let field :: ContactField -> IO Double
@@ -248,7 +257,8 @@ contactPoints w a b = do
     ca <- field CA
     cb <- field CB
     point <- V3 <$> field PointX <*> field PointY <*> field PointZ
-    pure [point | (round ca, round cb) `elem` [(a, b), (b, a)]]
+    key <- field CKey
+    pure [(point, key) | (round ca, round cb) `elem` [(a, b), (b, a)]]
   pure (concat rows)
 
 resting :: Spec
@@ -272,6 +282,26 @@ resting = describe "in the engine" $ do
     let xs = [px | V3 px _ _ <- points]
     minimum xs `shouldSatisfy` (\v -> abs (v - (-0.05)) < 1e-3 * 0.1)
     maximum xs `shouldSatisfy` (\v -> abs (v - 0.15) < 1e-3 * 0.1)
+  it "keys a row by the corner it is at: a box tipped onto either lower corner keeps the key that corner's row had with the box level" $ do
+    -- (a 0.2 by 0.08 box, its lowest corner 1e-3 into the slab)
+    let rowsAt :: Double -> IO [(V3 Double, Double)]
+        rowsAt angle = do
+          let z = 0.1 * sin (abs angle) + 0.04 * cos angle - 1e-3
+          w <- loaded (BL.pack ("{\"space\": \"plane\", \"bodies\": [{\"shape\": {\"box\": [0.3, 0.05]}, \"static\": true, \"p\": [0, 0, -0.05]},\
+                                \ {\"shape\": {\"box\": [0.1, 0.04]}, \"p\": [0.05, 0, " ++ show z ++ "], \"angle\": " ++ show angle ++ "}]}"))
+          stepNative w
+          contactRows w 0 1
+    level <- rowsAt 0
+    map snd level `shouldSatisfy` (\case [k1, k2] -> k1 /= k2; _ -> False)
+    -- (a positive angle turns the box's +x end down)
+    forM_ [(0.3, 0.1337), (-0.3, -0.0337)] $ \(angle, cornerX) -> do
+      tipped <- rowsAt angle
+      case tipped of
+        [(V3 x _ _, key)] -> do
+          abs (x - cornerX) `shouldSatisfy` (< 1e-3)
+          let nearest = snd (minimumOn (\(V3 lx _ _, _) -> abs (lx - x)) level)
+          (angle, key) `shouldBe` (angle, nearest)
+        _ -> expectationFailure ("tipped by " ++ show angle ++ ": expected one row, got " ++ show tipped)
   -- (of equal mass: a heavy body on a light one sinks into it by the soft
   -- contact's give, g/omega^2 times the masses' ratio)
   it "keeps a card 0.001 thick and 0.2 long lying on a box, and a box of its mass resting on the card (200 : 1), each within 1e-4 of its height" $ do

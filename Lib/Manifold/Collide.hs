@@ -254,11 +254,12 @@ data KeyGroup
   | FirstImageKey -- ^ the first image's; the others follow it
   deriving (Show, Eq, Enum, Bounded)
 
--- | The keys of a group (one for each point of a contact), and the keys of
--- a body's own.
+-- | The keys of a group (one for each corner of either hull a point of a
+-- contact may be at, 'cornerKey'), and the keys of a body's own (sixteen
+-- groups).
 keysPerGroup, keysPerBody :: Int
-keysPerGroup = 4
-keysPerBody = 64
+keysPerGroup = keysPerManifold
+keysPerBody = 16 * keysPerGroup
 
 -- | The key group of a pair's contacts through the quotient's @k@-th image.
 imageKeyGroup :: Int -> Int
@@ -534,8 +535,8 @@ circles metric w keyBase x y signs shift margin = do
 -- reverses its corners' order, which is read backwards so that they stay
 -- counter-clockwise. Each point pushes along the manifold's normal (in
 -- that plane, so that each body's row is the other's mirror, as
--- 'outlines' pushes); its key is its place in the manifold (the points
--- come in the order along the reference edge).
+-- 'outlines' pushes); its key names the corner it is at ('cornerKey'; a
+-- mirroring image's corners by their places as read).
 hulls :: Imp m => Metric -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
 {-# INLINE hulls #-}
 hulls metric w keyBase x y signs shift margin = do
@@ -593,7 +594,7 @@ hulls metric w keyBase x y signs shift margin = do
       let V2 px py = mpPoint pt
       rb <- share3 (origin ^+^ px *^ u ^+^ py *^ v)
       ra <- share3 (linear (rb ^-^ shift))
-      emitContact metric w x (keyBase + fromIntegral k) x (toScalar y) ra (linear push) rb push (negate (mpSeparation pt)) 1 1 linear
+      emitContact metric w x (keyBase + mpKey pt) x (toScalar y) ra (linear push) rb push (negate (mpSeparation pt)) 1 1 linear
   where
     readAt3' a o = V3 <$> readArray a o <*> readArray a (o + 1) <*> readArray a (o + 2)
 
@@ -835,14 +836,15 @@ hullBoundary sp bf w i corners = do
       q <- corner k
       (d, _) <- depthAt q
       pure (rounding + d, inner metric q t)
-    let emitAt slot k = do
+    -- (each row keyed by its corner, as a pair's rows are)
+    let emitAt k = do
           q <- corner (toIndex k)
           (d, dir) <- depthAt q
           -- where the rounding meets the edge: the corner moved out along the edge's normal
           p <- share3 (q ^-^ rounding *^ dir)
-          emitContact metric w i (key + slot) i (-1) p dir p dir (rounding + d) 1 1 id
-    emitAt 0 kLo
-    whenPositive (abs (kHi - kLo)) (emitAt 1 kHi)
+          emitContact metric w i (key + k) i (-1) p dir p dir (rounding + d) 1 1 id
+    emitAt kLo
+    whenPositive (abs (kHi - kLo)) (emitAt kHi)
 
 -- | Where the outline of body @i@ leaves the allowed region @b >= 0@.
 outlineBoundary :: Imp m => Space -> Layout -> ScalarFn -> WorldArrays (Array m) -> Index m -> m ()

@@ -2,8 +2,8 @@
 -- | Contact manifolds: where two convex shapes touch, found in a plane (the
 -- tangent frame at a touching pair), as Box2D v3's manifold functions find
 -- them: at most two points, each with its separation and a key naming the
--- features (corners, edges) that make it, so that warm starting follows a
--- point from step to step.
+-- corner it is at, so that warm starting follows a point from step to
+-- step.
 --
 -- Every shape is a 'Hull': its corners, counter-clockwise, and a radius
 -- that rounds them. A circle is one corner (its centre) and its radius, a
@@ -23,7 +23,7 @@ module Manifold.ContactManifold
   , ManifoldPoint (..)
   , ContactManifold (..)
   , collideHulls
-  , featureKey
+  , cornerKey
   , keysPerManifold
   , segmentClosest
   ) where
@@ -52,8 +52,8 @@ maxHullCorners = 8
 
 -- | One point of a contact manifold: where it is (midway between the two
 -- shapes' surfaces along the normal), how far apart the shapes are there
--- along the normal (negative: overlapping by that much), and the key of
--- the features that make it ('featureKey').
+-- along the normal (negative: overlapping by that much), and its key: the
+-- corner it is at ('cornerKey').
 data ManifoldPoint s = ManifoldPoint
   { mpPoint :: V2 s
   , mpSeparation :: s
@@ -70,21 +70,29 @@ data ContactManifold s = ContactManifold
   , cmSecond :: ManifoldPoint s
   } deriving Show
 
--- | The key of a point made by feature @a@ of the first shape and feature
--- @b@ of the second (corner or edge indices): distinct for every pair of
--- features, below 'keysPerManifold'.
+-- | The key of a point at corner @k@ of the first shape (@second@ 0) or of
+-- the second (@second@ 1): below 'keysPerManifold'. A clipped point is at
+-- a corner of the incident edge, or where the reference edge's side line
+-- cuts it, beside a corner of the reference edge; a point against a circle
+-- or a capsule's end is at that corner; two corners' single point takes
+-- the first shape's. The key names that corner, whichever shape gives the
+-- reference edge: a box lying level on a slab is clipped against its own
+-- face, tilted a little against the slab's, and its two points keep their
+-- keys (Box2D's keys pair the reference edge's corner with the incident
+-- edge's, and change when the reference flips), so warm starting follows
+-- them as the reference edge changes and as one point drops out.
 --
--- >>> featureKey 3 (7 :: Double)
--- 31.0
-featureKey :: Field a => a -> a -> a
-featureKey a b = fromIntegral maxHullCorners * a + b
+-- >>> cornerKey 1 (3 :: Double)
+-- 11.0
+cornerKey :: Field a => a -> a -> a
+cornerKey second k = fromIntegral maxHullCorners * second + k
 
--- | How many keys a manifold's points may have ('featureKey').
+-- | How many keys a manifold's points may have ('cornerKey').
 --
 -- >>> keysPerManifold
--- 64
+-- 16
 keysPerManifold :: Int
-keysPerManifold = maxHullCorners * maxHullCorners
+keysPerManifold = 2 * maxHullCorners
 
 -- | The contact manifold of two hulls within @margin@ of each other (rows
 -- for points up to that far apart keep bodies from closing a gap faster
@@ -159,7 +167,7 @@ pointAgainst out margin side c rc h = do
         whenPositive (margin - sep) $ do
           -- (coincident centres: any direction will do)
           n <- share2 (select dist (recip dist) 0 *^ d ^+^ V2 (select dist 0 1) 0)
-          emitPoint n sep 0)
+          emitPoint n sep)
     (do best <- newRef (-1e300)
         bestEdge <- newRef 0
         forLoop 0 (toIndex (hullCount h)) $ \i -> do
@@ -180,19 +188,21 @@ pointAgainst out margin side c rc h = do
           after <- share (dot2 (c ^-^ v2) (v1 ^-^ v2))
           outside <- share s
           ifPositive (minF outside (negate before))
-            (corner v1 e)
+            (corner v1)
             (ifPositive (minF outside (negate after))
-              (corner v2 e2)
-              (emitPoint n (s - radius) (featureKey e 0))))
+              (corner v2)
+              (emitPoint n (s - radius))))
   where
-    corner v k = do
+    -- (the point is at the circle's centre, the point shape's one corner)
+    key = cornerKey (0.5 - 0.5 * side) 0
+    corner v = do
       d <- share2 (c ^-^ v)
       dist <- share (sqrt (dot2 d d))
       sep <- share (dist - rc - hullRadius h)
-      whenPositive (margin - sep) $ emitPoint (recip dist *^ d) sep (featureKey k 0)
+      whenPositive (margin - sep) $ emitPoint (recip dist *^ d) sep
     -- n points from the hull to the point; the contact point lies midway
     -- between the two surfaces
-    emitPoint n sep key = do
+    emitPoint n sep = do
       n' <- share2 n
       p <- share2 (c ^-^ (rc + 0.5 * sep) *^ n')
       emit out margin (negated (side *^ n')) [ManifoldPoint p sep key]
@@ -221,8 +231,10 @@ polygons out margin tolerance a b = do
       let r1 = hullRadius ref
           r2 = hullRadius inc
           radius = r1 + r2
-          -- keys name a's feature first, b's second
-          key refK incK = if flipped then featureKey incK refK else featureKey refK incK
+          -- the keys of the reference hull's corners and the incident's
+          -- (a is the first shape, b the second)
+          refKey = cornerKey (if flipped then 1 else 0)
+          incKey = cornerKey (if flipped then 0 else 1)
           orient n = if flipped then negated n else n
           -- the manifold of the clipped incident edge, points in the order
           -- along a's edge
@@ -242,9 +254,11 @@ polygons out margin tolerance a b = do
       sepLower <- share (dot2 (vLower ^-^ v11) nRef)
       sepUpper <- share (dot2 (vUpper ^-^ v11) nRef)
       let midway v s = v ^+^ (0.5 * (r1 - r2 - s)) *^ nRef
+          -- each point at the incident edge's corner, or clipped beside
+          -- the reference edge's
           points =
-            [ ManifoldPoint (midway vLower sepLower) (sepLower - radius) (key edge i22)
-            , ManifoldPoint (midway vUpper sepUpper) (sepUpper - radius) (key i12 incEdge) ]
+            [ ManifoldPoint (midway vLower sepLower) (sepLower - radius) (select (negate lower2) (refKey edge) (incKey i22))
+            , ManifoldPoint (midway vUpper sepUpper) (sepUpper - radius) (select (upper2 - upper1) (refKey i12) (incKey incEdge)) ]
       -- the edges' least separation as clipped (none: far)
       clippedMin <- share (select overlapping (minF sepLower sepUpper - radius) 1e300)
       -- Apart (the rounded hulls' cores apart by more than the tolerance),
@@ -266,9 +280,11 @@ polygons out margin tolerance a b = do
               n <- share2 (select gapS (recip gapS) 0 *^ (pInc ^-^ pRef))
               let refCorner = select sS i12 edge
                   incCorner = select tS i22 incEdge
+                  -- (keyed by the first shape's corner)
+                  firstCorner = if flipped then incKey incCorner else refKey refCorner
                   c1 = pRef ^+^ r1 *^ n
                   c2 = pInc ^-^ r2 *^ n
-              emit out margin (orient n) [ManifoldPoint (0.5 *^ (c1 ^+^ c2)) cornerSep (key refCorner incCorner)])
+              emit out margin (orient n) [ManifoldPoint (0.5 *^ (c1 ^+^ c2)) cornerSep firstCorner])
           (whenPositive overlapping (clipped points))
 
 -- | Of hull @h1@'s edges, the one along whose normal @h2@ lies farthest
