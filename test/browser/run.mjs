@@ -663,26 +663,32 @@ async function main() {
       const r = await testSpace(context, server.url, name);
       if (r) stats[name] = { maxField: r.maxField, maxErr: r.maxErr, ms: Date.now() - t };
     }
-    if (partWanted("interaction")) await testInteraction(context, server.url);
-    if (partWanted("performance")) await testPerformance(check, context, server.url);
-    if (partWanted("bodies")) await testBodies(check, context, server.url);
-    if (partWanted("controls")) await testControls(check, context, server.url);
-    if (partWanted("keys")) await testKeys(check, context, server.url);
-    if (partWanted("tools")) await testTools(check, context, server.url);
-    if (partWanted("joints")) await testJoints(check, context, server.url);
-    if (partWanted("capture")) await testCapture(check, context, server.url);
-    if (partWanted("errors")) await testErrors(context, server.url);
-    if (partWanted("file")) {
-      await testFileUrl(context);
-      await testEmbed(context, server.url);
+    // each part in turn, its time printed as it ends (the suite has a time budget)
+    const parts = {
+      interaction: function () { return testInteraction(context, server.url); },
+      performance: function () { return testPerformance(check, context, server.url); },
+      bodies: function () { return testBodies(check, context, server.url); },
+      controls: function () { return testControls(check, context, server.url); },
+      keys: function () { return testKeys(check, context, server.url); },
+      tools: function () { return testTools(check, context, server.url); },
+      joints: function () { return testJoints(check, context, server.url); },
+      capture: function () { return testCapture(check, context, server.url); },
+      errors: function () { return testErrors(context, server.url); },
+      file: async function () { await testFileUrl(context); await testEmbed(context, server.url); },
+      hidpi: function () { return testHiDPI(browser, server.url); },
+      compare: function () { return testCompare(check, browser, server.url); },
+      types: function () { return testTypes(check, context, server.url); },
+      layout: function () { return testLayout(check, browser, server.url); },
+      thread: function () { return testThread(check, context, server.url); },
+      disc: function () { return testDisc(check, context, server.url); },
+      benchmarks: function () { return testBenchScripts(check); },
+    };
+    for (const name of PARTS) {
+      if (!partWanted(name)) continue;
+      const t = Date.now();
+      await parts[name]();
+      console.log("part " + name + " took " + ((Date.now() - t) / 1000).toFixed(1) + " s");
     }
-    if (partWanted("hidpi")) await testHiDPI(browser, server.url);
-    if (partWanted("compare")) await testCompare(check, browser, server.url);
-    if (partWanted("types")) await testTypes(check, context, server.url);
-    if (partWanted("layout")) await testLayout(check, browser, server.url);
-    if (partWanted("thread")) await testThread(check, context, server.url);
-    if (partWanted("disc")) await testDisc(check, context, server.url);
-    if (partWanted("benchmarks")) await testBenchScripts(check);
     await context.close();
   } catch (e) {
     check("browser tests ran to the end", false, e && e.stack || String(e));
