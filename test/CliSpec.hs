@@ -285,7 +285,7 @@ spec = do
       (code, err) `shouldBe` (ExitSuccess, "")
       let text = lines (BC.unpack (BL.toStrict out))
           defined = [ takeWhile (/= ' ') l | l <- text, " :: Arr -> " `isInfixOf` l ]
-      defined `shouldBe` ["stepWake", "stepCollide", "keepContacts", "pairContacts", "markTouched", "stepPrepare", "prepareJoint", "stepSubsteps", "substepGravity", "warmStartJoints", "warmStart", "mouseJoint", "solveJoints", "solveSweep", "substepMove", "relaxJoints", "relaxSweep", "stepFinish", "restitution", "stepPolygonise", "walkAllCorners", "stepSleep"]
+      defined `shouldBe` ["stepWake", "stepCollide", "keepContacts", "pairContacts", "selfContacts", "markTouched", "stepPrepare", "prepareJoint", "stepSubsteps", "substepGravity", "warmStartJoints", "warmStart", "mouseJoint", "solveJoints", "solveSweep", "substepMove", "relaxJoints", "relaxSweep", "stepFinish", "restitution", "stepPolygonise", "walkAllCorners", "stepSleep"]
       (code', out', err') <- run ["dump-step", "bowl"]
       (code', out', "unknown space \"bowl\"; valid spaces: plane" `isInfixOf` err') `shouldBe` (ExitFailure 2, "", True)
     it "bench --json times a scene with the compiled step and with --generic" $

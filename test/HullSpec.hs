@@ -302,6 +302,23 @@ resting = describe "in the engine" $ do
           let nearest = snd (minimumOn (\(V3 lx _ _, _) -> abs (lx - x)) level)
           (angle, key) `shouldBe` (angle, nearest)
         _ -> expectationFailure ("tipped by " ++ show angle ++ ": expected one row, got " ++ show tipped)
+  -- (the paper's jam, §4.2, with a card: girth 2π·e^y is its length 1 at
+  -- y = −1.84)
+  it "jams a card (1 by 0.04) thrown across the trumpet's neck where the neck's girth is about its length (its corners' self-contact), and one thrown along the neck only where its width wraps" $ do
+    let thrown :: Double -> IO (Double, Double, Double)
+        thrown angle = do
+          w <- loaded (BL.pack ("{\"space\": \"trumpet\", \"sleep\": false, \"bodies\": [{\"shape\": {\"box\": [0.5, 0.02]},\
+                                \ \"p\": [1.6, 0.5, 0], \"v\": [0, -1, 0], \"angle\": " ++ show angle ++ "}]}"))
+          replicateM_ 1200 (stepNative w)
+          before <- readBody w 0
+          replicateM_ 300 (stepNative w)
+          after <- readBody w 0
+          let height s = let V3 _ y _ = bsPos s in y
+          pure (height after, abs (height after - height before), norm (bsVel after))
+    (across, drift, speed) <- thrown (pi / 2)
+    (along, _, _) <- thrown 0
+    (across, drift, speed) `shouldSatisfy` (\(y, d, v) -> y > -2 && y < -1.5 && d < 1e-3 && v < 1e-3)
+    along `shouldSatisfy` (< -4)
   -- (of equal mass: a heavy body on a light one sinks into it by the soft
   -- contact's give, g/omega^2 times the masses' ratio)
   it "keeps a card 0.001 thick and 0.2 long lying on a box, and a box of its mass resting on the card (200 : 1), each within 1e-4 of its height" $ do

@@ -32,7 +32,7 @@ module Manifold.Collide
   , imageKeyGroup
   ) where
 
-import Control.Monad (forM_)
+import Control.Monad (foldM_, forM_)
 import Linear.Metric (dot)
 import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..), cross)
@@ -45,7 +45,7 @@ import Manifold.Joint (listPartners, notJoined)
 import Manifold.Space
 import Manifold.Stage.Imp
 import Manifold.Metric
-import Manifold.Surface (normalOf, tangentProjection)
+import Manifold.Surface (geodesicStep, normalOf, tangentProjection)
 import Manifold.World
 
 -- | Sort the bodies into the buckets of a spatial hash of grid cells (a
@@ -898,8 +898,20 @@ outlineBoundary sp l bf w i = do
 -- Only a body whose rays turn (the chord from the centre to some outline
 -- vertex is under 0.8 of the ray's length) is tested, which flat and gently
 -- curved places never trigger.
+--
+-- A subroutine of its own in the staged step: in line, its loops made the
+-- collision phase of the spaces with self-contact too big for V8 to
+-- optimise.
 selfContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
-selfContacts sp l w i = do
+{-# INLINE selfContacts #-}
+selfContacts sp l w i = subroutine "selfContacts" [toScalar i] $ \case
+  [i'] -> selfContactsOf sp l w (toIndex i')
+  _ -> error "selfContacts: one argument"
+
+-- | 'selfContacts''s test.
+selfContactsOf :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
+{-# INLINE selfContactsOf #-}
+selfContactsOf sp l w i = do
   let metric = spaceMetric sp
       nd = polyDirections (polygon l)
       ns = polySteps (polygon l)
@@ -908,6 +920,8 @@ selfContacts sp l w i = do
       -- (inlined: as a function of its own, the generic step boxed every vertex it read)
       {-# INLINE vertex #-}
       centreIx = vpb * i
+      hullBase = fromIntegral hullStride * i
+      shareBoth (q, d) = (,) <$> share3 q <*> share3 d
   c <- read3 (wVerts w) centreIx
   turn <- newRef 1
   forEach (fromIntegral nd) $ \d -> do
@@ -964,6 +978,61 @@ selfContacts sp l w i = do
                     V3 u v q = negated (normalizeIn metric (first ^-^ c) ^+^ normalizeIn metric (first' ^-^ c))
                 writeRef px x >> writeRef py y >> writeRef pz z
                 writeRef mx u >> writeRef my v >> writeRef mz q
+    -- A hull's corners make rays of their own (a capsule's: its segment's
+    -- ends on either side, at its radius). A card or a capsule wrapped
+    -- round the neck has only two long outline rays, exactly opposite (no
+    -- mean: not paired), so its outline never finds the jam; its corners'
+    -- rays come in pairs on either side of it, each pair's mean across
+    -- it, and the pair heading into the narrowing crosses deeper, as the
+    -- outline's rays do.
+    corners <- readSlot w i Corners
+    whenPositive (corners - 1.5) $ do
+      (d1, d2) <- bodyAxes metric w i
+      rounding <- readArray (wHull w) hullBase
+      let steps = fromIntegral cornerWalkSteps
+          rays = select (corners - 2.5) corners 4
+          -- ray j's length and direction from the centre
+          rayOf j = do
+            k <- share (select (corners - 2.5) (toScalar j) (toScalar j - 2 * floorF (toScalar j / 2)))
+            a <- readArray (wHull w) (hullBase + hullLocalAt (toIndex k))
+            b0 <- readArray (wHull w) (hullBase + hullLocalAt (toIndex k) + 1)
+            b <- share (select (corners - 2.5) b0 (select (toScalar j - 1.5) (negate rounding) rounding))
+            len0 <- share (sqrt (a * a + b * b))
+            len <- share (len0 + select (corners - 2.5) rounding 0)
+            dir <- share3 ((a / len0) *^ d1 ^+^ (b / len0) *^ d2)
+            pure (len, dir)
+          -- step k (1 to the steps) along ray j, walked below
+          point j k = read3 (wProbe w) (fromIntegral cornerWalkSteps * j + k - 1)
+      forLoop 0 (toIndex rays) $ \j -> do
+        (len, dir) <- rayOf j
+        foldM_ (\qd k -> do
+                  (q, d) <- shareBoth (geodesicStep metric (spaceField sp) (len / steps) qd)
+                  write3 (wProbe w) (fromIntegral cornerWalkSteps * j + fromIntegral k - 1) q
+                  pure (q, d))
+               (c, dir) [1 .. cornerWalkSteps]
+      forLoop 0 (toIndex rays) $ \j -> forLoop 0 (toIndex rays) $ \j' -> do
+        (lenJ, dirJ) <- rayOf j
+        (lenJ', dirJ') <- rayOf j'
+        mean <- share3 (dirJ ^+^ dirJ')
+        -- each pair once, a right angle apart or more, not opposite
+        whenPositive (minF (toScalar j' - toScalar j - 0.5) (minF (negate (inner metric dirJ dirJ')) (normIn metric mean - 1e-6))) $ do
+          h <- share (minF lenJ lenJ' / steps)
+          forLoop 1 (fromIntegral cornerWalkSteps) $ \k -> forLoop 1 (fromIntegral cornerWalkSteps) $ \k' -> do
+            a0 <- point j k
+            a1 <- point j (k + 1)
+            b0 <- point j' k'
+            b1 <- point j' (k' + 1)
+            let (s, t, gap) = segmentClosest (inner metric) a0 a1 b0 b1
+                arc = lenJ * (toScalar k + s) / steps
+                arc' = lenJ' * (toScalar k' + t) / steps
+                depth = 0.5 * ((lenJ - arc) + (lenJ' - arc'))
+            best <- readRef deepest
+            whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
+              writeRef deepest depth
+              let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
+                  V3 u v q = negated mean
+              writeRef px x >> writeRef py y >> writeRef pz z
+              writeRef mx u >> writeRef my v >> writeRef mz q
     best <- readRef deepest
     whenPositive best $ do
       point <- V3 <$> readRef px <*> readRef py <*> readRef pz

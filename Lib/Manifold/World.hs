@@ -84,6 +84,8 @@ module Manifold.World
   , polygoniseBody
   , polygoniseInline
   , walkCorners
+  , bodyAxes
+  , cornerWalkSteps
   , hasConstantGradient
   , toList3
   , onSurfaceTolerance
@@ -124,7 +126,7 @@ data WorldArrays a = WorldArrays
   , wPrev :: a -- ^ the last step's contacts for warm starting: owner, key, normal and friction impulse
   , wBodyPrev :: a -- ^ per body: where its contacts start in 'wPrev', and how many
   , wMouse :: a -- ^ see 'MouseField'
-  , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other
+  , wProbe :: a -- ^ narrow phase scratch: how deep each outline vertex of a pair's two bodies lies in the other (and a hull's corners walked for its self-contact)
   , wNear :: a -- ^ broad phase scratch: the bodies whose bounds overlap the current one's
   , wWalk :: a -- ^ polygon walk scratch: @walkStride@ numbers per direction, the walk's state between its loops
   , wJoints :: a -- ^ 'jointStride' per joint, see 'JointField' ("Manifold.Joint")
@@ -382,7 +384,7 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wPrev = prevStride * maxContacts l
   , wBodyPrev = 2 * c
   , wMouse = count' MActive
-  , wProbe = max (2 * polyDirections (polygon l)) (2 * hullScratch)
+  , wProbe = maximum [2 * polyDirections (polygon l), 2 * hullScratch, 3 * cornerWalkSteps * maxHullCorners]
   , wNear = c
   , wWalk = walkStride * polyDirections (polygon l)
   , wJoints = jointStride * maxJoints l
@@ -920,17 +922,10 @@ walkHullCorners sp w i corners = do
       walk p r dir steps = foldM (\qd _ -> shareBoth (geodesicStep metric f (r / fromIntegral steps) qd)) (p, dir) [1 .. steps :: Int]
       shareBoth (q, d) = (,) <$> share3 q <*> share3 d
   p <- read3 (wPos w) i
-  u <- read3 (wAxis w) i
-  n <- read3 (wNormal w) i
-  v <- share3 (perpendicular metric n u)
-  c0 <- readSlot w i TurnCos
-  s0 <- readSlot w i TurnSin
   hmax <- readParam w PolygonStep
   rmax <- readSlot w i BoundRadius
   fine <- share (select hmax (rmax - hmax) 1)
-  -- the body's direction, and normal × direction
-  d1 <- share3 (c0 *^ u ^+^ s0 *^ v)
-  d2 <- share3 (c0 *^ v ^-^ s0 *^ u)
+  (d1, d2) <- bodyAxes metric w i
   forLoop 0 (toIndex corners) $ \k -> do
     a <- readArray (wHull w) (base + hullLocalAt k)
     b <- readArray (wHull w) (base + hullLocalAt k + 1)
@@ -938,6 +933,19 @@ walkHullCorners sp w i corners = do
     dir <- share3 ((a / r) *^ d1 ^+^ (b / r) *^ d2)
     let put (q, _) = writeAt3 (wHull w) (base + hullWorldAt k) =<< share3 (select (finiteness (toList3 q)) <$> q <*> p)
     ifPositive fine (walk p r dir cornerWalkSteps >>= put) (walk p r dir 1 >>= put)
+
+-- | Body @i@'s direction and normal × direction in its tangent plane: the
+-- axes of its frame coordinates @(a, b)@ (its reference axis turned by its
+-- angle).
+bodyAxes :: Imp m => Metric -> WorldArrays (Array m) -> Index m -> m (V3 (Scalar m), V3 (Scalar m))
+{-# INLINE bodyAxes #-}
+bodyAxes metric w i = do
+  u <- read3 (wAxis w) i
+  n <- read3 (wNormal w) i
+  v <- share3 (perpendicular metric n u)
+  c0 <- readSlot w i TurnCos
+  s0 <- readSlot w i TurnSin
+  (,) <$> share3 (c0 *^ u ^+^ s0 *^ v) <*> share3 (c0 *^ v ^-^ s0 *^ u)
 
 -- | How many geodesic steps walk a large body's corners (as many as its
 -- outline's and its anchors').
