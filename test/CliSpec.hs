@@ -69,7 +69,7 @@ expectedNames :: [String]
 expectedNames =
   [ "plane", "sphere", "torus", "trumpet", "cube", "hemisphere", "disc", "rectangle"
   , "projective-plane", "klein-bottle", "moebius", "funnel", "flat-torus", "flat-klein"
-  , "hyperbolic-plane" ]
+  , "hyperbolic-plane", "bolza" ]
 
 toV3 :: [Double] -> Maybe (V3 Double)
 toV3 [x, y, z] = Just (V3 x y z)
@@ -107,7 +107,7 @@ spec = do
           map siName infos `shouldBe` expectedNames
           forM_ infos $ \i -> do
             siDescription i `shouldSatisfy` (not . null)
-            siQuotient i `shouldSatisfy` (`elem` ["none", "antipodal", "translations", "glide"])
+            siQuotient i `shouldSatisfy` (`elem` ["none", "antipodal", "translations", "glide", "octagon"])
           -- Against what is known of the spaces (independently of the library).
           [siName i | i <- infos, siQuotient i == "antipodal"]
             `shouldBe` ["projective-plane", "klein-bottle", "moebius"]
@@ -115,8 +115,9 @@ spec = do
             `shouldBe` [("flat-torus", "translations"), ("flat-klein", "glide")]
           sort [siName i | i <- infos, siHasBoundary i]
             `shouldBe` sort ["hemisphere", "disc", "rectangle", "moebius", "funnel"]
-          [siName i | i <- infos, siMetric i /= "euclidean"] `shouldBe` ["hyperbolic-plane"]
-          [siMetric i | i <- infos, siName i == "hyperbolic-plane"] `shouldBe` ["minkowski"]
+          [siName i | i <- infos, siMetric i /= "euclidean"] `shouldBe` ["hyperbolic-plane", "bolza"]
+          [siMetric i | i <- infos, siName i `elem` ["hyperbolic-plane", "bolza"]] `shouldBe` ["minkowski", "minkowski"]
+          [siName i | i <- infos, siQuotient i == "octagon"] `shouldBe` ["bolza"]
     it "the library's catalogue has the same names" $
       spaceNames `shouldBe` expectedNames
     it "without --json prints one line per space, starting with its name" $ do
@@ -285,7 +286,7 @@ spec = do
       (code, err) `shouldBe` (ExitSuccess, "")
       let text = lines (BC.unpack (BL.toStrict out))
           defined = [ takeWhile (/= ' ') l | l <- text, " :: Arr -> " `isInfixOf` l ]
-      defined `shouldBe` ["stepWake", "stepCollide", "keepContacts", "pairContacts", "selfContacts", "markTouched", "stepPrepare", "prepareJoint", "stepSubsteps", "substepGravity", "warmStartJoints", "warmStart", "mouseJoint", "solveJoints", "solveSweep", "substepMove", "relaxJoints", "relaxSweep", "stepFinish", "restitution", "stepPolygonise", "walkAllCorners", "stepSleep"]
+      defined `shouldBe` ["stepWake", "stepCollide", "keepContacts", "pairCircles", "pairHulls", "pairOutlines", "selfContacts", "markTouched", "stepPrepare", "prepareJoint", "stepSubsteps", "substepGravity", "warmStartJoints", "warmStart", "mouseJoint", "solveJoints", "solveSweep", "substepMove", "relaxJoints", "relaxSweep", "stepFinish", "restitution", "stepPolygonise", "walkAllCorners", "stepSleep"]
       (code', out', err') <- run ["dump-step", "bowl"]
       (code', out', "unknown space \"bowl\"; valid spaces: plane" `isInfixOf` err') `shouldBe` (ExitFailure 2, "", True)
     it "bench --json times a scene with the compiled step and with --generic" $

@@ -20,7 +20,10 @@ import Linear.V3 (V3 (..), cross)
 import Linear.Vector ((^+^), (^-^))
 import Test.Hspec
 
+import qualified Data.Vector.Unboxed.Mutable as MV
 import Manifold.Engine
+import Manifold.Measures (MeasureSlot (..), measureSize, measureWorld)
+import Manifold.Stage.Imp (runNative)
 import Manifold.Framing (framingAspect, seenFrom)
 import Manifold.Presets
 import Manifold.Scene (BodySpec (..), Scene (..), loadScene, parseScene)
@@ -147,6 +150,26 @@ spec = describe "Manifold.Presets" $ do
     maximum energies `shouldSatisfy` (<= initial * (1 + 1e-9))
     minimum energies `shouldSatisfy` (< 0.95 * initial) -- the collisions lose some
     length [ b | b <- init final, sqrt (minkowskiSquare (bsVel b)) > 0.05 ] `shouldSatisfy` (>= 8)
+
+  it "on the Bolza surface the thrown bodies meet (through the octagon's sides too) and never gain energy, kept in the octagon" $ do
+    text <- BLC.readFile "scenes/bolza-billiards.json"
+    scene <- either fail pure (parseScene text)
+    w <- loadScene 0 scene >>= either fail pure
+    n <- bodyCount w
+    let kinetic = do
+          out <- MV.replicate measureSize 0
+          runNative (measureWorld (nwSpace w) (nwArrays w) out)
+          MV.read out (fromEnum KineticEnergy)
+        beyond (V3 x y z) = maximum [ (cos a * x + sin a * z) * (1 + sqrt 2) - y * sqrt ((1 + sqrt 2) ^ (2 :: Int) - 1)
+                                    | k <- [0 .. 7 :: Int], let a = fromIntegral k * pi / 4 ]
+    states <- forM [1 .. 60 :: Int] $ \_ -> do
+      replicateM_ 10 (stepNative w)
+      (,) <$> kinetic <*> mapM (readBody w) [0 .. n - 1]
+    let energies = map fst states
+    head energies `shouldSatisfy` (> 0)
+    maximum (zipWith (/) (drop 1 energies) energies) `shouldSatisfy` (<= 1 + 1e-9)
+    last energies `shouldSatisfy` (< 0.98 * head energies) -- the collisions lose some
+    maximum [ beyond (bsPos b) | (_, bodies) <- states, b <- bodies ] `shouldSatisfy` (<= 1e-9)
 
   it "the Klein bottle's bodies go round each at its speed (0.6: free motion on the surface, no contact)" $ do
     states <- runPreset "klein-bottle-orbit" (replicate 10 100)

@@ -162,6 +162,9 @@ surfaceSampler s = case spaceName s of
   "hyperbolic-plane" ->
         SurfaceSampler "the hyperboloid y = cosh r, (x, z) = sinh r (cos t, sin t), r <= 2.5"
           ((\r t -> V3 (sinh r * cos t) (cosh r) (sinh r * sin t)) <$> choose (0, 2.5) <*> choose (0, 2 * pi))
+  "bolza" ->
+        SurfaceSampler "the hyperboloid y = cosh r, (x, z) = sinh r (cos t, sin t), r <= 2.5 (the octagon's inradius is 1.53, its circumradius 2.45)"
+          ((\r t -> V3 (sinh r * cos t) (cosh r) (sinh r * sin t)) <$> choose (0, 2.5) <*> choose (0, 2 * pi))
   other -> error ("TestUtil.surfaceSampler: no sampler for space " ++ show other)
 
 genSurfacePoint :: Space -> Gen (V3 Double)

@@ -201,7 +201,7 @@ declare namespace Manifold {
     step?: number;
   }
   /** How a space is a quotient of its surface: its images are Space.images. */
-  type Quotient = "none" | "antipodal" | "translations" | "glide";
+  type Quotient = "none" | "antipodal" | "translations" | "glide" | "octagon";
   /** The ambient metric a space's surface sits in: R³'s, or Minkowski space's x² − y² + z² (the hyperbolic plane's hyperboloid). */
   type Metric = "euclidean" | "minkowski";
   /** A space as the catalogue lists it (the page loads its script when it is chosen). */
@@ -227,8 +227,8 @@ declare namespace Manifold {
   /** A function of a point of R³ (the arguments are x, y, z). */
   type ScalarField = (x: number, y: number, z: number) => number;
   type VectorField = (x: number, y: number, z: number) => Vec3;
-  /** One of a quotient's images of a point: p ↦ s·p + t componentwise, as [sx, sy, sz, tx, ty, tz]. */
-  type Image = [number, number, number, number, number, number];
+  /** One of a quotient's images of a point: p ↦ L p + t, as L row by row then t (twelve numbers). */
+  type Image = number[];
   interface Space {
     name: string;
     description: string;
@@ -244,6 +244,10 @@ declare namespace Manifold {
     metric: Metric;
     /** the images a body is also drawn at (none for quotient "none") */
     images: Image[];
+    /** a contact row's key: (other body + 1) · keysPerBody + group · perGroup + point */
+    keysPerBody: number;
+    /** consecutive points of a curve further apart than this were wrapped into the fundamental domain between them (null: nothing is wrapped) */
+    wrapJump: number | null;
     /** the radius of the ball about the origin that holds the surface's view */
     bounds: number;
     /** the axis the space is symmetric about (the measures' axial momentum is about it), or null */
@@ -331,8 +335,8 @@ declare namespace Manifold {
     contact: Record<ContactField, number>;
     prev: Record<PrevField, number>;
     prevStride: number;
-    /** a contact row's key: (other body + 1) · perBody + group · perGroup + point */
-    keys: { perBody: number; perGroup: number; groups: Record<ContactGroup, number> };
+    /** a contact row's key: (other body + 1) · the space's keysPerBody + group · perGroup + point */
+    keys: { perGroup: number; groups: Record<ContactGroup, number> };
     /** where step k (1 … steps) along direction d sits among a body's vertices (0 is the centre) */
     vertexIndex: (d: number, k: number) => number;
     mouse: Record<MouseField, number>;

@@ -23,6 +23,7 @@ import Linear.Vector ((*^), (^+^), (^-^))
 import Linear.V3 (V3 (..))
 import System.Random (mkStdGen, randomR)
 
+import Manifold.Bolza (sideExcess)
 import Manifold.Engine
 import Manifold.Metric
 import Manifold.Space
@@ -83,6 +84,8 @@ region sp = case spaceName sp of
   "rectangle" -> (6, const True)
   -- the hyperbolic disc of radius 1.5 about the vertex: area 2π (cosh 1.5 − 1)
   "hyperbolic-plane" -> (2 * pi * (cosh 1.5 - 1), \(V3 _ y _) -> y <= cosh 1.5)
+  -- the octagon (Gauss–Bonnet: 4π for genus 2), sides excluded
+  "bolza" -> (4 * pi, \p -> and [sideExcess k p < 0 | k <- [0 .. 7]])
   _ -> (4 * pi, const True)
   where
     -- ∫ 2π e^y √(1 + e^{2y}) dy over [−1, 1]

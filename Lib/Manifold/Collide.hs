@@ -32,7 +32,7 @@ module Manifold.Collide
   , imageKeyGroup
   ) where
 
-import Control.Monad (foldM_, forM_)
+import Control.Monad (foldM_, forM_, when)
 import Linear.Metric (dot)
 import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..), cross)
@@ -254,12 +254,17 @@ data KeyGroup
   | FirstImageKey -- ^ the first image's; the others follow it
   deriving (Show, Eq, Enum, Bounded)
 
--- | The keys of a group (one for each corner of either hull a point of a
--- contact may be at, 'cornerKey'), and the keys of a body's own (sixteen
--- groups).
-keysPerGroup, keysPerBody :: Int
+-- | The keys of a group: one for each corner of either hull a point of a
+-- contact may be at ('cornerKey').
+keysPerGroup :: Int
 keysPerGroup = keysPerManifold
-keysPerBody = 16 * keysPerGroup
+
+-- | The keys of a body's own on a space of this quotient: sixteen groups,
+-- or 64 where the images are more than twelve (the Bolza surface's 48).
+keysPerBody :: Quotient -> Int
+keysPerBody quo
+  | fromEnum FirstImageKey + length (quotientImages quo) <= 16 = 16 * keysPerGroup
+  | otherwise = 64 * keysPerGroup
 
 -- | The key group of a pair's contacts through the quotient's @k@-th image.
 imageKeyGroup :: Int -> Int
@@ -452,44 +457,53 @@ whenNear metric fy q = whenPositive (bfSize fy * bfSize fy - quadranceIn metric 
 -- Both ways' rows (four for a box on a box, which mostly say the same
 -- thing twice) made the solver's work grow faster than the bodies.
 --
--- Printed as one JavaScript subroutine for every pair and image (the
--- isometry is passed as numbers): inlined at each of its call sites, the
--- collision phase outgrew what V8 optimises on the quotient spaces.
+-- Printed as a JavaScript subroutine for each kind of pair (two circles,
+-- two hulls, the others), called for every pair and image (the image by
+-- its index in the probe array's table, 'imageTableAt', 0 for the
+-- identity): inlined at each of its call sites, the collision phase
+-- outgrew what V8 optimises on the quotient spaces, and one subroutine of
+-- all three kinds, taking any isometry, outgrew it too.
 pairContacts :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
-             -> Index m -> Index m -> Isometry -> m ()
+             -> Index m -> Index m -> Scalar m -> m ()
 -- (Inlined natively, where a subroutine is its body: called, the generic
 -- step built its arguments' list for every candidate pair.)
 {-# INLINE pairContacts #-}
-pairContacts metric l sec w keyBase x y g =
-  subroutine "pairContacts"
-    ([keyBase, toScalar x, toScalar y] ++ coefficients (isoSigns g) ++ coefficients (isoShift g))
-    (\case
-        [keyBase', x', y', sx, sy, sz, tx, ty, tz] ->
-          pairContactsVia metric l sec w keyBase' (toIndex x') (toIndex y') (V3 sx sy sz) (V3 tx ty tz)
-        _ -> error "pairContacts: nine arguments")
-  where coefficients (V3 a b c) = map constant [a, b, c]
-
--- | @pairContacts@ with the isometry @p ↦ signs·p + shift@ as scalars (its
--- inverse is @p ↦ signs·p − signs·shift@: the signs are ±1, so the linear
--- part is its own inverse).
-pairContactsVia :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
-                -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> m ()
-{-# INLINE pairContactsVia #-}
-pairContactsVia metric l sec w keyBase x y signs shift = do
-  margin <- speculativeMargin w x y
+pairContacts metric l sec w keyBase x y image = do
   cornersX <- readSlot w x Corners
   cornersY <- readSlot w y Corners
+  let kind name contacts = subroutine name [keyBase, toScalar x, toScalar y, image] $ \case
+        [keyBase', x', y', image'] -> do
+          g <- readImage l w image'
+          margin <- speculativeMargin w (toIndex x') (toIndex y')
+          contacts keyBase' (toIndex x') (toIndex y') g margin
+        _ -> error (name ++ ": four arguments")
   -- two circles: from the distance between their centres; two hulls
   -- (a circle, a box, a capsule): by their manifold in the plane between
   -- them; any other pair by the sampled outlines
   ifPositive (0.5 - maxF (abs (cornersX - 1)) (abs (cornersY - 1)))
-    (circles metric w keyBase x y signs shift margin)
+    (kind "pairCircles" (circles metric w))
     (ifPositive (minF cornersX cornersY - 0.5)
-      (hulls metric w keyBase x y signs shift margin)
-      (outlines metric l sec w keyBase x y signs shift margin))
+      (kind "pairHulls" (hulls metric w))
+      (kind "pairOutlines" (outlines metric l sec w)))
 
--- | The contact of two circles (body @x@ mapped by @p ↦ signs·p + shift@,
--- and body @y@): one point, midway between their rims on the line between
+-- | The image of this index in the probe array's table ('imageTableAt').
+readImage :: Imp m => Layout -> WorldArrays (Array m) -> Scalar m -> m (IsometryOf (Scalar m))
+{-# INLINE readImage #-}
+readImage l w image = do
+  let at = fromIntegral (imageTableAt l) + fromIntegral imageStride * toIndex image
+  isoFromCoefficients <$> mapM (\c -> readArray (wProbe w) (at + fromIntegral c)) [0 .. 11 :: Int]
+
+-- | The table of the quotient's isometries ('imageTableAt'): the identity,
+-- then each image with whether a body may meet itself through it.
+writeImageTable :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
+writeImageTable sp l w =
+  forM_ (zip [0 :: Int ..] ((identityIso, False) : [ (g, selfImage quo g) | g <- quotientImages quo ])) $ \(k, (g, self)) ->
+    forM_ (zip [0 :: Int ..] (isoCoefficients g ++ [if self then 1 else 0])) $ \(c, v) ->
+      writeArray (wProbe w) (fromIntegral (imageTableAt l + imageStride * k + c)) (constant v)
+  where quo = spaceQuotient sp
+
+-- | The contact of two circles (body @x@ mapped by the isometry @g@, and
+-- body @y@): one point, midway between their rims on the line between
 -- their centres, as deep as their radii overlap the geodesic distance
 -- between the centres. That distance is the chord's, lengthened by the
 -- surface's bend along it: a curve of normal curvature κ is longer than
@@ -499,16 +513,17 @@ pairContactsVia metric l sec w keyBase x y signs shift = do
 -- sphere this is @2 asin (c/2)@ to within @3c⁵/640@: 2.4e-4 of a radius
 -- for two circles of 0.2, 1.2e-7 for the sandbox's 0.03 (the chord alone
 -- falls short by @c³/24@: 1.3e-2 and 3e-4).
-circles :: Imp m => Metric -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
+circles :: Imp m => Metric -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> IsometryOf (Scalar m) -> Scalar m -> m ()
 {-# INLINE circles #-}
-circles metric w keyBase x y signs shift margin = do
+circles metric w keyBase x y g margin = do
   cx <- read3 (wPos w) x
   nx <- read3 (wNormal w) x
   fy <- bodyFrame metric w y
   rx <- readSlot w x Size
   ry <- readSlot w y Size
-  let image q = signs * q + shift
-      linear v = signs * v
+  let image = applyIso g
+      linear = applyLinear g
+      back = applyLinear (inverseIso metric g)
   gx <- share3 (image cx)
   gn <- share3 (linear nx)
   d <- share3 (bfCentre fy ^-^ gx)
@@ -523,11 +538,11 @@ circles metric w keyBase x y signs shift margin = do
     mid <- share3 (normalizeIn metric (gn ^+^ bfNormal fy))
     m0 <- share3 (normalizeIn metric (tangentProjection metric mid (negated u)))
     rb <- share3 (gx ^+^ (rx - 0.5 * depth) *^ u)
-    ra <- share3 (linear (rb ^-^ shift))
-    emitContact metric w x keyBase x (toScalar y) ra (linear m0) rb m0 depth 1 1 linear
+    ra <- share3 (back (rb ^-^ isoShift g))
+    emitContact metric w x keyBase x (toScalar y) ra (back m0) rb m0 depth 1 1 linear
 
--- | The contacts of two hulls (body @x@ mapped by @p ↦ signs·p + shift@,
--- and body @y@), at most two points, by 'collideHulls' in the tangent
+-- | The contacts of two hulls (body @x@ mapped by the isometry @g@, and
+-- body @y@), at most two points, by 'collideHulls' in the tangent
 -- plane midway between the bodies: its origin midway between their
 -- centres, its first axis along the line from x's to y's, its normal the
 -- mean of theirs. Each body's corners, walked onto the surface
@@ -537,15 +552,15 @@ circles metric w keyBase x y signs shift margin = do
 -- that plane, so that each body's row is the other's mirror, as
 -- 'outlines' pushes); its key names the corner it is at ('cornerKey'; a
 -- mirroring image's corners by their places as read).
-hulls :: Imp m => Metric -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
+hulls :: Imp m => Metric -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> IsometryOf (Scalar m) -> Scalar m -> m ()
 {-# INLINE hulls #-}
-hulls metric w keyBase x y signs shift margin = do
+hulls metric w keyBase x y g margin = do
   cx <- read3 (wPos w) x
   nx <- read3 (wNormal w) x
   fy <- bodyFrame metric w y
-  let image q = signs * q + shift
-      linear v = signs * v
-      V3 sx sy sz = signs
+  let image = applyIso g
+      linear = applyLinear g
+      back = applyLinear (inverseIso metric g)
   gx <- share3 (image cx)
   gn <- share3 (linear nx)
   mid <- share3 (normalizeIn metric (gn ^+^ bfNormal fy))
@@ -555,7 +570,7 @@ hulls metric w keyBase x y signs shift margin = do
   -- (coincident centres: y's axis will do)
   u <- share3 (select len <$> (recip (maxF len 1e-300) *^ along) <*> normalizeIn metric (tangentProjection metric mid (bfU fy)))
   v <- share3 (perpendicular metric mid u)
-  mirrored <- share (sx * sy * sz)
+  mirrored <- share (determinant (isoLinear g))
   let scratch = wProbe w
       half = fromIntegral (2 * maxHullCorners)
       -- a body's corners in the plane, then its edges' outward normals
@@ -593,21 +608,23 @@ hulls metric w keyBase x y signs shift margin = do
     whenPositive (cmCount manifold - fromIntegral k - 0.5) $ do
       let V2 px py = mpPoint pt
       rb <- share3 (origin ^+^ px *^ u ^+^ py *^ v)
-      ra <- share3 (linear (rb ^-^ shift))
-      emitContact metric w x (keyBase + mpKey pt) x (toScalar y) ra (linear push) rb push (negate (mpSeparation pt)) 1 1 linear
+      ra <- share3 (back (rb ^-^ isoShift g))
+      emitContact metric w x (keyBase + mpKey pt) x (toScalar y) ra (back push) rb push (negate (mpSeparation pt)) 1 1 linear
   where
     readAt3' a o = V3 <$> readArray a o <*> readArray a (o + 1) <*> readArray a (o + 2)
 
 -- | The contacts of a pair that is not two hulls, from their sampled
 -- outlines ('pairContacts').
 outlines :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m
-         -> Index m -> Index m -> V3 (Scalar m) -> V3 (Scalar m) -> Scalar m -> m ()
+         -> Index m -> Index m -> IsometryOf (Scalar m) -> Scalar m -> m ()
 {-# INLINE outlines #-}
-outlines metric l sec w keyBase x y signs shift margin = do
+outlines metric l sec w keyBase x y g margin = do
   let nd = fromIntegral (polyDirections (polygon l))
-  backShift <- share3 (negated (signs * shift))
-  (deepXY, normalXY, edgeXY) <- deepestInside metric l sec w margin 0 x y signs shift
-  (deepYX, normalYX, edgeYX) <- deepestInside metric l sec w margin nd y x signs backShift
+      gInv0 = inverseIso metric g
+  backShift <- share3 (isoShift gInv0)
+  let gInv = gInv0 { isoShift = backShift }
+  (deepXY, normalXY, edgeXY) <- deepestInside metric l sec w margin 0 x y g
+  (deepYX, normalYX, edgeYX) <- deepestInside metric l sec w margin nd y x gInv
   -- (depths counted from −margin, so that a way with no vertex near is 0)
   yInX <- share ((deepYX + margin) - 1.1 * (deepXY + margin))
   let pick a b = select yInX b a
@@ -617,13 +634,18 @@ outlines metric l sec w keyBase x y signs shift margin = do
     -- the mover's vertices are inside the reference body
     mover <- share (pick (toScalar x) (toScalar y))
     reference <- share (pick (toScalar y) (toScalar x))
-    moverShift <- share3 (pick3 shift backShift)
+    moverShift <- share3 (pick3 (isoShift g) backShift)
     -- where deepestInside left the mover's vertices' depths
     moverProbe <- share (pick 0 (fromIntegral (polyDirections (polygon l))))
     edgeNormal <- share3 (pick3 normalXY normalYX)
     o0 <- share3 (pick3 edgeXY edgeYX)
-    let image q = signs * q + moverShift
-        linear v = signs * v
+    -- the mover's isometry (x's, or the inverse for y's vertices in x)
+    -- and its inverse, which takes the push back to the mover
+    let moverLinear = pickLinear (isoLinear g) (isoLinear gInv)
+        pickLinear a b = pick3 <$> a <*> b
+        image q = linearMap moverLinear q + moverShift
+        linear = linearMap moverLinear
+        back = linearMap (pickLinear (isoLinear gInv) (isoLinear g))
         mv = toIndex mover
         rf = toIndex reference
     fr <- bodyFrame metric w rf
@@ -691,7 +713,7 @@ outlines metric l sec w keyBase x y signs shift margin = do
           rb <- share3 (lerp3 query (toward3 qUp qDown))
           d <- share (depth + s * (toward dUp dDown - depth))
           pure (ra, rb, select facing d best, s)
-        emitAt slot (ra, rb, d, _) = emitContact metric w x (keyBase + slot) mv reference ra (linear m0) rb m0 d 1 1 linear
+        emitAt slot (ra, rb, d, _) = emitContact metric w x (keyBase + slot) mv reference ra (back m0) rb m0 d 1 1 linear
     lo <- clipAt dLo refLo
     hi <- clipAt dHi refHi
     emitAt 0 lo
@@ -733,7 +755,7 @@ speculativeMargin w x y = do
   sy <- readSlot w y Size
   share (f * minF sx sy)
 
--- | Of body @x@'s outline vertices, mapped by @p ↦ signs·p + shift@, the
+-- | Of body @x@'s outline vertices, mapped by the isometry @g@, the
 -- one deepest inside body @y@ or nearest to it within @margin@: its depth
 -- (negative outside; @−margin@ when none is so near), and the
 -- outward normal and a vertex of the edge of y it lies behind. Each
@@ -741,11 +763,11 @@ speculativeMargin w x y = do
 -- @slot@ on, so that the pair's contact points are chosen without testing
 -- the vertices again.
 deepestInside :: Imp m => Metric -> Layout -> Sectors -> WorldArrays (Array m) -> Scalar m -> Index m -> Index m -> Index m
-              -> V3 (Scalar m) -> V3 (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
+              -> IsometryOf (Scalar m) -> m (Scalar m, V3 (Scalar m), V3 (Scalar m))
 {-# INLINE deepestInside #-}
-deepestInside metric l sec w margin slot x y signs shift = do
+deepestInside metric l sec w margin slot x y g = do
   let nd = fromIntegral (polyDirections (polygon l))
-      image q = signs * q + shift
+      image = applyIso g
   fy <- bodyFrame metric w y
   turn <- bodyTurn w y
   deepest <- newRef (negate margin)
@@ -1067,67 +1089,81 @@ collideAwake sp l w = do
   count <- readMeta w BodyCount
   joints <- readMeta w JointCount
   whenPositive joints $ listPartners w
-  let images = quotientImages (spaceQuotient sp)
+  writeImageTable sp l w
+  let images = length (quotientImages (spaceQuotient sp))
       metric = spaceMetric sp
+  forEach (toIndex count) $ \i -> moving w i >>= \movingI -> whenPositive movingI $ do
+    nearPairs sp l w i 0 True
+    -- through each image, a loop over the table: the Bolza surface's 48
+    -- images unrolled would be 48 copies of the search
+    when (images > 0) $ forEach (fromIntegral images) $ \k -> nearPairs sp l w i (toScalar k + 1) False
+    keepOr metric w i (-1) (fromIntegral (fromEnum BoundaryKey * keysPerGroup)) (boundaryContacts sp l w i)
+    selfContacts sp l w i
+
+-- | Body @i@'s contacts with the bodies near its image under the table's
+-- isometry @image@ (0, the identity, for its contacts in place, @direct@,
+-- which keeps a pair's rows while it hardly moves): the near bodies listed
+-- from the grid first and their pairs made after (compiled natively, a
+-- loop that calls out keeps its numbers on the stack, and the cell scan is
+-- the broad phase's whole cost). Each unordered pair once: @j > i@
+-- (@j >= i@ through an image through which the body may meet itself), or
+-- @j@ still; a pair of a body in the grid and one apart is the grid body's
+-- while it moves (the one apart takes it from a still grid body). Its keys
+-- are @j@'s group of the image ('imageKeyGroup').
+nearPairs :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> Bool -> m ()
+{-# INLINE nearPairs #-}
+nearPairs sp l w i image direct = do
+  g <- readImage l w image
+  self <- readArray (wProbe w) (fromIntegral (imageTableAt l + imageStride - 1) + fromIntegral imageStride * toIndex image)
+  let keyOffset = if direct then 0 else fromIntegral keysPerGroup * (image - 1 + fromIntegral (fromEnum FirstImageKey))
+  count <- readMeta w BodyCount
+  joints <- readMeta w JointCount
+  let metric = spaceMetric sp
       sec = sectors (polyDirections (polygon l))
       -- where the quotient has a fundamental domain, only images that
       -- come within reach of it
       nearDomain = case domainDistance (spaceQuotient sp) of
         Just distance -> \q reach -> whenPositive (reach - distance q)
         Nothing -> \_ _ act -> act
-  forEach (toIndex count) $ \i -> moving w i >>= \movingI -> whenPositive movingI $ do
-    p <- read3 (wPos w) i
-    ri <- readSlot w i BoundRadius
-    invMi <- readSlot w i InvMass
-    -- the bodies joined to this one, which it does not collide with
-    partners <- mapM (\s -> readArray (wPartners w) (fromIntegral partnersPerBody * i + fromIntegral s)) [0 .. partnersPerBody - 1]
-    cell <- readMeta w CellSize -- at least twice the bounding radius of every body in the grid
-    cellI <- readArray (wCellOf w) i -- −1: kept apart from the grid
-    -- the bodies near this one are listed first and their pairs made after:
-    -- compiled natively, a loop that calls out keeps its numbers on the
-    -- stack, and the cell scan is the broad phase's whole cost
-    found <- newRef 0
-    let pairs g keyOffset self direct = do
-          gp <- share3 (applyIso g p)
-          writeRef found 0
-          -- each unordered pair once: j > i (j >= i for an image the body
-          -- may meet itself through: its own image), or j still; a pair of
-          -- a body in the grid and one apart is the grid body's while it
-          -- moves (the one apart takes it from a still grid body)
-          let ordered movingJ j = select movingJ (toScalar j - toScalar i + (if self then 0.5 else 0)) 1
-              consider orderOf j = do
-                movingJ <- moving w j
-                whenPositive (orderOf movingJ j) $ do
-                  pj <- read3 (wPos w) j
-                  rj <- readSlot w j BoundRadius
-                  invMj <- readSlot w j InvMass
-                  let gap = ri + rj - normIn metric (gp ^-^ pj)
-                  whenPositive (minF gap (minF (invMi + invMj) (select joints (notJoined partners (toScalar j)) 1))) $ do
-                    -- a body is in one cell or in the large list, so listed at most once
-                    k <- readRef found
-                    writeArray (wNear w) (toIndex k) (toScalar j)
-                    writeRef found (k + 1)
-          -- the bodies kept apart, at the end of the items
-          large <- readMeta w LargeCount
-          capacity <- readMeta w Capacity
-          let apart orderOf = forEach (toIndex large) $ \k -> readArray (wItems w) (toIndex capacity - 1 - k) >>= consider orderOf . toIndex
-          ifPositive (cellI + 0.5)
-            (do nearDomain gp (ri + cell) $ neighbours metric w gp (consider ordered)
-                apart (\_ _ -> 1))
-            -- a body apart: every still body of the grid, then the others apart
-            (do nearDomain gp (ri + cell) $ forEach (toIndex count) $ \j -> do
-                  cellJ <- readArray (wCellOf w) j
-                  whenPositive (cellJ + 0.5) (consider (\movingJ _ -> 0.5 - movingJ) j)
-                apart ordered)
-          nearCount <- readRef found
-          forEach (toIndex nearCount) $ \k -> do
-            j <- toIndex <$> readArray (wNear w) k
-            let keyBase = (toScalar j + 1) * fromIntegral keysPerBody + keyOffset
-                contacts = pairContacts metric l sec w keyBase i j g
-            -- (a pair through an image is found anew each step: the
-            -- image's isometry moves the rows with the wraps)
-            if direct then keepOr metric w i (toScalar j) keyBase contacts else contacts
-    pairs identityIso 0 False True
-    mapM_ (\(k, g) -> pairs g (fromIntegral (keysPerGroup * imageKeyGroup k)) (selfImage g) False) (zip [0 :: Int ..] images)
-    keepOr metric w i (-1) (fromIntegral (fromEnum BoundaryKey * keysPerGroup)) (boundaryContacts sp l w i)
-    selfContacts sp l w i
+  p <- read3 (wPos w) i
+  ri <- readSlot w i BoundRadius
+  invMi <- readSlot w i InvMass
+  -- the bodies joined to this one, which it does not collide with
+  partners <- mapM (\s -> readArray (wPartners w) (fromIntegral partnersPerBody * i + fromIntegral s)) [0 .. partnersPerBody - 1]
+  cell <- readMeta w CellSize -- at least twice the bounding radius of every body in the grid
+  cellI <- readArray (wCellOf w) i -- −1: kept apart from the grid
+  found <- newRef 0
+  gp <- share3 (applyIso g p)
+  let ordered movingJ j = select movingJ (toScalar j - toScalar i + 0.5 * self) 1
+      consider orderOf j = do
+        movingJ <- moving w j
+        whenPositive (orderOf movingJ j) $ do
+          pj <- read3 (wPos w) j
+          rj <- readSlot w j BoundRadius
+          invMj <- readSlot w j InvMass
+          let gap = ri + rj - normIn metric (gp ^-^ pj)
+          whenPositive (minF gap (minF (invMi + invMj) (select joints (notJoined partners (toScalar j)) 1))) $ do
+            -- a body is in one cell or in the large list, so listed at most once
+            k <- readRef found
+            writeArray (wNear w) (toIndex k) (toScalar j)
+            writeRef found (k + 1)
+  -- the bodies kept apart, at the end of the items
+  large <- readMeta w LargeCount
+  capacity <- readMeta w Capacity
+  let apart orderOf = forEach (toIndex large) $ \k -> readArray (wItems w) (toIndex capacity - 1 - k) >>= consider orderOf . toIndex
+  ifPositive (cellI + 0.5)
+    (do nearDomain gp (ri + cell) $ neighbours metric w gp (consider ordered)
+        apart (\_ _ -> 1))
+    -- a body apart: every still body of the grid, then the others apart
+    (do nearDomain gp (ri + cell) $ forEach (toIndex count) $ \j -> do
+          cellJ <- readArray (wCellOf w) j
+          whenPositive (cellJ + 0.5) (consider (\movingJ _ -> 0.5 - movingJ) j)
+        apart ordered)
+  nearCount <- readRef found
+  forEach (toIndex nearCount) $ \k -> do
+    j <- toIndex <$> readArray (wNear w) k
+    let keyBase = (toScalar j + 1) * fromIntegral (keysPerBody (spaceQuotient sp)) + keyOffset
+    -- (a pair through an image is found anew each step: the image's
+    -- isometry moves the rows with the wraps)
+    let contacts = pairContacts metric l sec w keyBase i j image
+    if direct then keepOr metric w i (toScalar j) keyBase contacts else contacts

@@ -6,6 +6,7 @@
 module Manifold.Compiled (compiledSteps) where
 
 import Manifold.Compiled.Runtime (CompiledStep)
+import qualified Manifold.Compiled.Bolza as Bolza
 import qualified Manifold.Compiled.Cube as Cube
 import qualified Manifold.Compiled.Disc as Disc
 import qualified Manifold.Compiled.FlatKlein as FlatKlein
@@ -28,4 +29,4 @@ compiledSteps =
   [ Plane.compiled, Sphere.compiled, Torus.compiled, Trumpet.compiled, Cube.compiled
   , Hemisphere.compiled, Disc.compiled, Rectangle.compiled, ProjectivePlane.compiled
   , KleinBottle.compiled, Moebius.compiled, Funnel.compiled, FlatTorus.compiled, FlatKlein.compiled
-  , HyperbolicPlane.compiled ]
+  , HyperbolicPlane.compiled, Bolza.compiled ]

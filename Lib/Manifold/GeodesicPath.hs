@@ -78,12 +78,12 @@ walkGeodesic sp path p0 d0 len n = do
       nrm <- get3 nR
       let (p1, v1, n1) = geodesicStepFrom metric f h nrm (p, v)
       p1s <- shareAll p1
-      (p2, s) <- case quotientWrap (spaceQuotient sp) of
-        Nothing -> pure (p1s, 1)
-        Just wrap -> pure (wrap p1s)
+      let Wrapped p2 carry _ = case quotientWrap (spaceQuotient sp) of
+            Nothing -> Wrapped p1s (V3 (V3 1 0 0) (V3 0 1 0) (V3 0 0 1)) 1
+            Just wrap -> wrap p1s
       p2s <- shareAll p2
-      sS <- share s
-      let mirror (V3 x y z) = V3 x y (sS * z)
+      carryS <- mapM shareAll carry
+      let mirror = linearMap carryS
       broken <- share (select (quadrance (p2s ^-^ p1s)) 1 0)
       ifPositive (evalBoundary sp p2s)
         (do set3 pR p2s

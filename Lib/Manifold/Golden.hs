@@ -23,7 +23,7 @@ import Manifold.Engine
 import Manifold.Scene
 import Manifold.Space
 import Manifold.Body (shapeSize)
-import Manifold.Spaces (catalogue, flatKlein, plane, projectivePlane, rectangle, sphere)
+import Manifold.Spaces (bolza, catalogue, flatKlein, plane, projectivePlane, rectangle, sphere)
 import Manifold.StateHash (showHash)
 
 -- | A scene, its name (a file name: @SPACE-default@, @SPACE-N@) and how
@@ -43,7 +43,7 @@ data GoldenRun = GoldenRun
 -- and its joint to the world, 300 steps; and bodies of their own friction
 -- and restitution thrown about the rectangle, 400 steps; boxes, capsules
 -- and circles on the plane, the sphere and the projective plane, 500
--- steps.
+-- steps; bodies thrown about the Bolza surface, 600 steps (60 of them).
 goldenRuns :: [GoldenRun]
 goldenRuns =
   [GoldenRun (spaceName sp ++ "-default") (defaultScene sp) 1000 | sp <- catalogue]
@@ -55,6 +55,16 @@ goldenRuns =
     ++ [ GoldenRun "plane-shapes" planeShapes 500, GoldenRun "sphere-shapes" sphereShapes 500
        , GoldenRun "projective-plane-shapes" projectivePlaneShapes 500
        , GoldenRun "sphere-polygons" spherePolygons 500 ]
+    ++ [ GoldenRun "bolza-thrown" bolzaThrown 600 ]
+
+-- | The Bolza surface's benchmark scene of 60 bodies, each thrown at
+-- speed 1 in its own direction (no gravity there): they cross the
+-- octagon's sides and meet through them and its corners.
+bolzaThrown :: Scene
+bolzaThrown =
+  let s = benchScene bolza 60
+      throw k b = let a = 2.4 * fromIntegral (k :: Int) in b { bsV = V3 (cos a) 0 (sin a) }
+  in s { sceneBodies = zipWith throw [0 ..] (sceneBodies s) }
 
 -- | A joint of a kind between bodies @a@ and @b@ (−1: the world) at
 -- anchors @p@ and @q@, its settings left to the defaults.

@@ -262,9 +262,12 @@ prepareJoint sp w j = do
   let pA = amPoint ma
   world <- readJoint3 w j JWorldX
   own <- share3 (select hasB <$> amPoint mb <*> world)
-  let (image, signs) = nearestImageWith (spaceQuotient sp) pA own
+  -- (the joints take an image's signs: the quotients with joints map by
+  -- diagonal isometries, "Manifold.Scene" refuses joints on the others)
+  let (image, linear) = nearestImageWith (spaceQuotient sp) pA own
+      V3 (V3 sx _ _) (V3 _ sy _) (V3 _ _ sz) = linear
   pB <- share3 image
-  sg <- share3 signs
+  sg <- share3 (V3 sx sy sz)
   writeJoint3 w j JAnchorAX pA
   writeJoint3 w j JAnchorBX pB
   writeJoint3 w j JSlideUAX (amSlideU ma)
@@ -590,7 +593,7 @@ solveJoints useBias metric w = do
 -- change sign with it, and so does the impulse of the row along a's
 -- second frame direction (normal × axis, which the mirror reverses).
 wrapJoints :: Imp m => Space -> WorldArrays (Array m) -> m ()
-wrapJoints sp w = case quotientWrap (spaceQuotient sp) :: Maybe (V3 Double -> (V3 Double, Double)) of
+wrapJoints sp w = case quotientWrap (spaceQuotient sp) :: Maybe (V3 Double -> Wrapped Double) of
   Nothing -> pure ()
   Just _ -> do
     count <- readMeta w JointCount

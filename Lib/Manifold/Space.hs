@@ -1,3 +1,4 @@
+{-# LANGUAGE DeriveFunctor #-}
 -- | What a space is (paper §2.2, §2.6, §4.3): a surface @f = 0@ given by a
 -- polymorphic distance field, an optional boundary @b(p) >= 0@, a gravity
 -- field, a quotient, and how to look at it and what to put on it first.
@@ -9,17 +10,28 @@ module Manifold.Space
   , ShapeKind (..)
   , space
   , quotientName
-  , Isometry (..)
+  , IsometryOf (..)
+  , Isometry
+  , diagonalIso
   , identityIso
+  , linearMap
   , applyIso
   , applyLinear
   , inverseIso
+  , isoMirrors
+  , determinant
+  , isoCoefficients
+  , isoFromCoefficients
   , quotientImages
+  , quotientMetric
+  , mostImages
+  , quotientKeepsJoints
   , selfImage
   , wrapLattice
   , nearestImage
   , nearestImageWith
   , distanceToDomain
+  , Wrapped (..)
   , quotientWrap
   , domainDistance
   , pickSigns
@@ -33,10 +45,10 @@ module Manifold.Space
   ) where
 
 import Data.Maybe (isJust)
-import Linear.Metric (quadrance)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((^-^))
 
+import Manifold.Bolza (sideExcess, touchingImages, wrapIntoOctagon)
 import Manifold.Field
 import Manifold.Metric
 
@@ -57,71 +69,148 @@ data Quotient
     -- along z (the flat torus); with the flip, a translation along x also
     -- mirrors z, @(x, z) ~ (x + L, −z)@ (the flat Klein bottle). The
     -- fundamental domain is the square @[−L/2, L/2]²@; bodies are kept in it.
+  | OctagonPairings
+    -- ^ The hyperbolic plane (the hyperboloid in Minkowski space) modulo
+    -- the group that pairs opposite sides of the regular octagon with
+    -- angles π/4 centred at the vertex @(0, 1, 0)@: the Bolza surface, of
+    -- genus 2 ("Manifold.Bolza"). Bodies are kept in the octagon.
   deriving (Show, Eq)
 
 -- | The quotient's name, as @manifold spaces@ lists it.
 --
--- >>> map quotientName [NoQuotient, Antipodal, Lattice 2 False, Lattice 2 True]
--- ["none","antipodal","translations","glide"]
+-- >>> map quotientName [NoQuotient, Antipodal, Lattice 2 False, Lattice 2 True, OctagonPairings]
+-- ["none","antipodal","translations","glide","octagon"]
 quotientName :: Quotient -> String
 quotientName NoQuotient = "none"
 quotientName Antipodal = "antipodal"
 quotientName (Lattice _ False) = "translations"
 quotientName (Lattice _ True) = "glide"
+quotientName OctagonPairings = "octagon"
 
--- | An isometry of R³ that is diagonal in the axes: @p ↦ signs·p + shift@
--- (componentwise). Enough for every quotient here: @p ↦ −p@, translations,
--- and translations composed with a mirror.
-data Isometry = Isometry
-  { isoSigns :: V3 Double -- ^ each axis kept (1) or mirrored (−1)
-  , isoShift :: V3 Double -- ^ the translation after the mirroring
-  } deriving (Show, Eq)
+-- | An isometry of the ambient space: @p ↦ L p + t@, its linear part @L@
+-- by rows. R³'s quotients use diagonal ones (@p ↦ −p@, translations,
+-- translations composed with a mirror); the Bolza surface's are Lorentz
+-- matrices with no shift. The step passes one as twelve numbers
+-- ('isoCoefficients'), so its coefficients may be staged too.
+data IsometryOf a = Isometry
+  { isoLinear :: V3 (V3 a) -- ^ the linear part's rows
+  , isoShift :: V3 a -- ^ the translation after it
+  } deriving (Show, Eq, Functor)
+
+-- | An isometry with numbers for coefficients: what a quotient is made of.
+type Isometry = IsometryOf Double
+
+-- | The diagonal isometry @p ↦ signs·p + shift@ (componentwise).
+diagonalIso :: Num a => V3 a -> V3 a -> IsometryOf a
+diagonalIso (V3 a b c) = Isometry (V3 (V3 a 0 0) (V3 0 b 0) (V3 0 0 c))
 
 -- | The isometry that moves nothing.
-identityIso :: Isometry
-identityIso = Isometry (V3 1 1 1) (V3 0 0 0)
+identityIso :: Num a => IsometryOf a
+identityIso = diagonalIso (V3 1 1 1) (V3 0 0 0)
+
+-- | A linear map (by rows) applied to a vector.
+--
+-- >>> linearMap (V3 (V3 0 1 0) (V3 (-1) 0 0) (V3 0 0 2)) (V3 1 2 3 :: V3 Double)
+-- V3 2.0 (-1.0) 6.0
+linearMap :: Num a => V3 (V3 a) -> V3 a -> V3 a
+linearMap (V3 r0 r1 r2) v = V3 (row r0) (row r1) (row r2)
+  where row (V3 a b c) = let V3 x y z = v in a * x + b * y + c * z
 
 -- | The image of a point.
 --
--- >>> applyIso (Isometry (V3 1 1 (-1)) (V3 2 0 0)) (V3 0.5 0 0.25 :: V3 Double)
+-- >>> applyIso (diagonalIso (V3 1 1 (-1)) (V3 2 0 0)) (V3 0.5 0 0.25 :: V3 Double)
 -- V3 2.5 0.0 (-0.25)
-applyIso :: Field a => Isometry -> V3 a -> V3 a
-applyIso (Isometry s t) p = (fmap constant s * p) + fmap constant t
+applyIso :: Num a => IsometryOf a -> V3 a -> V3 a
+applyIso (Isometry l t) p = linearMap l p + t
 
 -- | The isometry's linear part (how it maps directions).
-applyLinear :: Field a => Isometry -> V3 a -> V3 a
-applyLinear (Isometry s _) v = fmap constant s * v
+applyLinear :: Num a => IsometryOf a -> V3 a -> V3 a
+applyLinear (Isometry l _) = linearMap l
 
--- | The isometry that undoes this one.
+-- | The isometry that undoes this one, in the space's metric: the linear
+-- part of an isometry of R³ is orthogonal (its inverse its transpose), a
+-- Lorentz matrix's inverse is @J Lᵀ J@ with @J = diag(1, −1, 1)@; either
+-- way no division, so a diagonal isometry's inverse is exact.
 --
--- >>> let g = Isometry (V3 1 1 (-1)) (V3 2 0 1)
--- >>> applyIso (inverseIso g) (applyIso g (V3 0.5 0 0.25 :: V3 Double))
+-- >>> let g = diagonalIso (V3 1 1 (-1)) (V3 2 0 1)
+-- >>> applyIso (inverseIso Euclidean g) (applyIso g (V3 0.5 0 0.25 :: V3 Double))
 -- V3 0.5 0.0 0.25
-inverseIso :: Isometry -> Isometry
-inverseIso (Isometry s t) = Isometry s (negate (s * t))
+inverseIso :: Num a => Metric -> IsometryOf a -> IsometryOf a
+inverseIso metric (Isometry l t) =
+  let V3 (V3 a b c) (V3 d e f) (V3 g h i) = l
+      back = case metric of
+        Euclidean -> V3 (V3 a d g) (V3 b e h) (V3 c f i)
+        Minkowski -> V3 (V3 a (negate d) g) (V3 (negate b) e (negate h)) (V3 c (negate f) i)
+  in Isometry back (negate (linearMap back t))
+
+-- | Whether an isometry reverses orientation (the sign of its linear
+-- part's determinant, exactly ±1 for the quotients' own).
+isoMirrors :: Isometry -> Bool
+isoMirrors (Isometry l _) = determinant l < 0
+
+-- | The determinant of a linear map (by rows).
+determinant :: Num a => V3 (V3 a) -> a
+determinant (V3 (V3 a b c) (V3 d e f) (V3 g h i)) = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+-- | The isometry as the twelve numbers the step passes: the linear part's
+-- rows, then the shift.
+isoCoefficients :: IsometryOf a -> [a]
+isoCoefficients (Isometry (V3 r0 r1 r2) t) = concatMap v3List [r0, r1, r2, t]
+  where v3List (V3 a b c) = [a, b, c]
+
+-- | The isometry of twelve numbers ('isoCoefficients').
+isoFromCoefficients :: [a] -> IsometryOf a
+isoFromCoefficients [a, b, c, d, e, f, g, h, i, x, y, z] = Isometry (V3 (V3 a b c) (V3 d e f) (V3 g h i)) (V3 x y z)
+isoFromCoefficients cs = error ("isoFromCoefficients: twelve numbers, not " ++ show (length cs))
 
 -- | The images a body meets: the non-trivial elements of the quotient's
 -- group that move the fundamental domain next to itself (for a lattice, the
 -- 8 neighbouring squares; bodies must be smaller than half the period).
 -- The list is closed under inverses.
 --
--- >>> map length [quotientImages NoQuotient, quotientImages Antipodal, quotientImages (Lattice 2 True)]
--- [0,1,8]
+-- >>> map length [quotientImages NoQuotient, quotientImages Antipodal, quotientImages (Lattice 2 True), quotientImages OctagonPairings]
+-- [0,1,8,48]
 quotientImages :: Quotient -> [Isometry]
 quotientImages NoQuotient = []
-quotientImages Antipodal = [Isometry (V3 (-1) (-1) (-1)) (V3 0 0 0)]
+quotientImages Antipodal = [diagonalIso (V3 (-1) (-1) (-1)) (V3 0 0 0)]
 quotientImages (Lattice period flipped) =
-  [ Isometry (V3 1 1 (mirror i)) (V3 (period * fromIntegral i) 0 (period * fromIntegral k))
+  [ diagonalIso (V3 1 1 (mirror i)) (V3 (period * fromIntegral i) 0 (period * fromIntegral k))
   | i <- [-1, 0, 1 :: Int], k <- [-1, 0, 1 :: Int], (i, k) /= (0, 0) ]
   where
     mirror i = if flipped && odd i then -1 else 1
+quotientImages OctagonPairings = [ Isometry (rows m) (V3 0 0 0) | m <- touchingImages ]
+
+-- | The most images any quotient has (the Bolza surface's 48).
+mostImages :: Int
+mostImages = maximum (map (length . quotientImages) [NoQuotient, Antipodal, Lattice 1 True, OctagonPairings])
+
+-- | A matrix of nine numbers row by row (as "Manifold.Disc" writes them)
+-- as rows.
+rows :: [a] -> V3 (V3 a)
+rows [a, b, c, d, e, f, g, h, i] = V3 (V3 a b c) (V3 d e f) (V3 g h i)
+rows m = error ("rows: a matrix is nine numbers, not " ++ show (length m))
+
+-- | Whether joints work on a space of this quotient: a joint takes the
+-- image its bodies meet through by the signs of a diagonal isometry
+-- ("Manifold.Joint"), which the Bolza surface's are not.
+quotientKeepsJoints :: Quotient -> Bool
+quotientKeepsJoints OctagonPairings = False
+quotientKeepsJoints _ = True
+
+-- | The metric a quotient's isometries keep: Minkowski space's for the
+-- hyperbolic quotients, R³'s for the others.
+quotientMetric :: Quotient -> Metric
+quotientMetric OctagonPairings = Minkowski
+quotientMetric _ = Euclidean
 
 -- | Whether a body meets its own image under this isometry in the contact
 -- search: of an isometry and its inverse (both in 'quotientImages'), one
 -- is chosen, so that the body's contact with its own image is found once.
-selfImage :: Isometry -> Bool
-selfImage g = let g' = inverseIso g in g == g' || toList (isoShift g) > toList (isoShift g')
-  where toList (V3 a b c) = [a, b, c]
+selfImage :: Quotient -> Isometry -> Bool
+selfImage quo g =
+  let g' = inverseIso (quotientMetric quo) g
+      key h = isoCoefficients h
+  in g == g' || key g > key g'
 
 -- | A point of the plane moved into the fundamental square @[−L/2, L/2)²@ by
 -- the lattice's group, and the sign its z axis (and so orientation) took:
@@ -153,19 +242,38 @@ distanceToDomain period (V3 x _ z) =
 -- picking and grabbing ask these (and 'quotientImages', 'nearestImage',
 -- 'selfImage'), never the quotient's constructors.
 
--- | Where a point that left the fundamental domain comes back into it,
--- and the orientation it comes back with (1, or −1 through a flipping
--- edge); 'Nothing' for a quotient whose points never leave it.
-quotientWrap :: Field a => Quotient -> Maybe (V3 a -> (V3 a, a))
+-- | A point brought back into the fundamental domain: where it comes back,
+-- the linear map that carries its vectors (velocity, frame) along, and
+-- the orientation it comes back with (1, or −1 through a flipping edge,
+-- which reverses angles).
+data Wrapped a = Wrapped
+  { wrappedPoint :: V3 a
+  , wrappedLinear :: V3 (V3 a)
+  , wrappedOrientation :: a
+  }
+
+-- | Where a point that left the fundamental domain comes back into it
+-- ('Wrapped'); 'Nothing' for a quotient whose points never leave it.
+quotientWrap :: Field a => Quotient -> Maybe (V3 a -> Wrapped a)
 quotientWrap = \case
-  Lattice period flipped -> Just (wrapLattice period flipped)
+  Lattice period flipped -> Just $ \p ->
+    let (p', s) = wrapLattice period flipped p
+    in Wrapped p' (V3 (V3 1 0 0) (V3 0 1 0) (V3 0 0 s)) s
+  OctagonPairings -> Just $ \p -> let (p', m) = wrapIntoOctagon p in Wrapped p' (rows m) 1
   _ -> Nothing
 
 -- | How far a point is outside the fundamental domain, for a quotient that
--- has one: a body's images farther than its reach meet nothing.
+-- has one: a body's images farther than its reach meet nothing. Never more
+-- than the chord ('Manifold.Metric.normIn') from the point to the domain,
+-- which is what a reach is measured in.
 domainDistance :: Field a => Quotient -> Maybe (V3 a -> a)
 domainDistance = \case
   Lattice period _ -> Just (distanceToDomain period)
+  -- the hyperbolic distance beyond the side it is farthest beyond (the
+  -- side excess is its sinh), which is less than the chord to the octagon
+  OctagonPairings -> Just $ \p ->
+    let e = maxF 0 (foldr1 maxF [sideExcess k p | k <- [0 .. 7]])
+    in log (e + sqrt (e * e + 1))
   _ -> Nothing
 
 -- | The signs a pick tries a surface point with: a body of the antipodal
@@ -178,27 +286,29 @@ pickSigns = \case
 -- | Of the images of point @q@ (itself included), the one nearest @ref@;
 -- with no quotient (or the antipodal one, whose images are far apart), @q@.
 nearestImage :: Field a => Quotient -> V3 a -> V3 a -> V3 a
-nearestImage (Lattice period flipped) ref q =
-  let (q0, _) = wrapLattice period flipped q
-      candidates = q0 : [applyIso g q0 | g <- quotientImages (Lattice period flipped)]
-      pick (best, bd) c =
-        let d = quadrance (c ^-^ ref)
-            closer = bd - d -- positive: c is nearer than the best so far
-        in (select closer <$> c <*> best, minF d bd)
-  in fst (foldl pick (q0, quadrance (q0 ^-^ ref)) (drop 1 candidates))
-nearestImage _ _ q = q
+nearestImage quo ref q = case quotientWrap quo of
+  Nothing -> q
+  Just wrap -> fst (nearestOf quo ref (wrappedPoint (wrap q)))
 
 -- | Of the images of point @q@ (itself included) under the quotient's
--- group, the one nearest @ref@, with the signs of the isometry that gives
--- it (how it maps directions).
-nearestImageWith :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 a)
-nearestImageWith quo ref q = fst (foldl pick ((q, V3 1 1 1), quadrance (q ^-^ ref)) candidates)
+-- group, the one nearest @ref@, with the linear part of the isometry that
+-- gives it (how it maps directions).
+nearestImageWith :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 (V3 a))
+nearestImageWith = nearestOf
+
+-- | 'nearestImageWith': the candidates compared by their quadrance in the
+-- quotient's metric, a choice by 'select' so that it stages.
+nearestOf :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 (V3 a))
+nearestOf quo ref q = fst (foldl pick ((q, linearPart identityIso), quadranceIn metric (q ^-^ ref)) candidates)
   where
-    candidates = [ (applyIso g q, fmap constant (isoSigns g)) | g <- quotientImages quo ]
-    pick ((best, bestSigns), bd) (c, cs) =
-      let d = quadrance (c ^-^ ref)
-          closer = bd - d
-      in ((select closer <$> c <*> best, select closer <$> cs <*> bestSigns), minF d bd)
+    metric = quotientMetric quo
+    candidates = [ (applyIso g' q, linearPart g') | g <- quotientImages quo, let g' = fmap constant g ]
+    linearPart = isoLinear
+    pick ((best, bestLinear), bd) (c, cl) =
+      let d = quadranceIn metric (c ^-^ ref)
+          closer = bd - d -- positive: c is nearer than the best so far
+          choose a b = select closer <$> a <*> b
+      in ((choose c best, choose <$> cl <*> bestLinear), minF d bd)
 
 -- | A pinhole camera looking at @cameraTarget@ from @cameraEye@.
 data Camera = Camera

@@ -7,7 +7,7 @@ module Manifold.Spaces
   , plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
   , projectivePlane, kleinBottle, moebius, funnel
   , flatTorus, flatKlein, flatPeriod
-  , hyperbolicPlane, hyperbolicGravity
+  , hyperbolicPlane, hyperbolicGravity, bolza
   , torusMajor, torusMinor
   ) where
 
@@ -25,12 +25,12 @@ import Manifold.Space
 -- page's order.
 --
 -- >>> length catalogue
--- 15
+-- 16
 catalogue :: [Space]
 catalogue =
   [ plane, sphere, torus, trumpet, cube, hemisphere, disc, rectangle
   , projectivePlane, kleinBottle, moebius, funnel, flatTorus, flatKlein
-  , hyperbolicPlane ]
+  , hyperbolicPlane, bolza ]
 
 -- | The catalogue's names, in order.
 --
@@ -270,12 +270,33 @@ hyperbolicPlane = (space "hyperbolic-plane" "the hyperbolic plane (curvature -1)
   , spaceBounds = 4.5
   }
   where
-    -- not a distance (|∇f| runs from 1 to √2 in R³): the engine only needs
-    -- the surface and its normal, the tracer f/|∇f|
-    hyperboloidField (V3 x y z) = sqrt (1 + x * x + z * z) - y
     hyperbolicRing n r shape size =
       [ Placement (V3 (sinh r * cos t) (cosh r) (sinh r * sin t)) (if even k then shape else CircleShape) size False
       | k <- [0 .. n - 1 :: Int], let t = 2 * pi * (fromIntegral k + 0.5 * r) / fromIntegral n ]
+
+-- | The upper sheet of the hyperboloid @y² − x² − z² = 1@: not a distance
+-- (|∇f| runs from 1 to √2 in R³): the engine only needs the surface and
+-- its normal, the tracer f/|∇f|.
+hyperboloidField :: Field a => V3 a -> a
+hyperboloidField (V3 x y z) = sqrt (1 + x * x + z * z) - y
+
+-- | The Bolza surface: the hyperbolic plane modulo the group that pairs
+-- opposite sides of the regular octagon with angles π/4 about the vertex
+-- ("Manifold.Bolza"), the most symmetric compact surface of genus 2, of
+-- area 4π. No gravity: no field on it both keeps to the group and pulls
+-- anywhere, so its scenes are thrown bodies. A body leaving the octagon
+-- through one side comes back through the opposite one.
+bolza :: Space
+bolza = (space "bolza" "the Bolza surface (genus 2, curvature -1): the hyperbolic plane modulo the side pairings of the regular octagon with angles pi/4; no gravity" (scalarFn hyperboloidField))
+  { spaceMetric = Minkowski
+  , spaceQuotient = OctagonPairings
+  , spaceCamera = Camera (V3 0 12 (-11)) (V3 0 3 0) (V3 0 1 0) 45
+  , spaceScene =
+      [ Placement (V3 (sinh r * cos t) (cosh r) (sinh r * sin t)) shape 0.25 False
+      | (k, (r, shape)) <- zip [0 :: Int ..] (replicate 8 (1.1, SquareShape) ++ replicate 8 (2.0, CircleShape))
+      , let t = 2 * pi * fromIntegral k / 8 + (if r > 1.5 then pi / 8 else 0) ]
+  , spaceBounds = 8.5
+  }
 
 -- | The pull of the hyperbolic plane's gravity: the ambient field
 -- @(0, G/y, 0)@, projected onto the hyperboloid under the metric, is

@@ -20,6 +20,8 @@ module Manifold.World
   , arrayNames
   , Slot (..)
   , Meta (..)
+  , imageTableAt
+  , imageStride
   , Param (..)
   , ContactField (..)
   , PrevField (..)
@@ -340,6 +342,21 @@ hullWorldAt k = fromIntegral (1 + 2 * maxHullCorners) + 3 * k
 hullScratch :: Int
 hullScratch = 4 * maxHullCorners
 
+-- | Where the probe array's table of the quotient's isometries starts
+-- (after the narrow phase's scratch): the identity, then each image, as
+-- 'imageStride' numbers ("Manifold.Collide" writes it every step). The
+-- contact search loops over it and the pair narrow phase reads an image
+-- from it by its index, the numbers unboxed (V8 boxes a number argument of
+-- a function it does not inline).
+imageTableAt :: Layout -> Int
+imageTableAt l = maximum [2 * polyDirections (polygon l), 2 * hullScratch, 3 * cornerWalkSteps * maxHullCorners]
+
+-- | An image's numbers in the table: its twelve coefficients
+-- ('isoCoefficients'), then 1 where a body may meet itself through it
+-- ('selfImage').
+imageStride :: Int
+imageStride = 13
+
 -- | The polygon walk's scratch numbers per direction (see 'polygoniseBody').
 walkStride :: Int
 walkStride = 12
@@ -384,7 +401,7 @@ arraySizes l = let c = max 1 (capacity l) in WorldArrays
   , wPrev = prevStride * maxContacts l
   , wBodyPrev = 2 * c
   , wMouse = count' MActive
-  , wProbe = maximum [2 * polyDirections (polygon l), 2 * hullScratch, 3 * cornerWalkSteps * maxHullCorners]
+  , wProbe = imageTableAt l + imageStride * (1 + mostImages)
   , wNear = c
   , wWalk = walkStride * polyDirections (polygon l)
   , wJoints = jointStride * maxJoints l
@@ -650,10 +667,11 @@ integrate sp w dt = do
           countWarning w)
 
 -- | Bring every body back into the quotient's fundamental domain (nothing
--- on a space without one). Through a flipping edge a body comes out
--- mirrored: z of every vector, and its angle and angular velocity, change
--- sign (orientation reverses); 'wFlip' says which bodies did, for the
--- joints ("Manifold.Joint").
+-- on a space without one), its vectors (velocity, axis, normal) carried by
+-- the wrap's linear map. Through a flipping edge a body comes out
+-- mirrored: its angle and angular velocity change sign (orientation
+-- reverses); 'wFlip' says which bodies did, for the joints
+-- ("Manifold.Joint").
 wrapIntoDomain :: Imp m => Space -> WorldArrays (Array m) -> m ()
 {-# SPECIALIZE wrapIntoDomain :: Space -> WorldArrays NativeArray -> Native () #-}
 wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
@@ -662,12 +680,12 @@ wrapIntoDomain sp w = case quotientWrap (spaceQuotient sp) of
     count <- readMeta w BodyCount
     forEach (toIndex count) $ \i -> readSlot w i Asleep >>= \asleep -> ifPositive asleep (writeArray (wFlip w) i 1) $ do
       p <- read3 (wPos w) i
-      let (p', s) = wrap p
-          mirror (V3 x y z) = V3 x y (s * z)
+      let Wrapped p' carry s = wrap p
       sS <- share s
+      carryS <- mapM shareAll carry
       writeArray (wFlip w) i sS
       write3 (wPos w) i p'
-      mapM_ (\arr -> read3 arr i >>= write3 arr i . mirror) [wVel w, wAxis w, wNormal w]
+      mapM_ (\arr -> read3 arr i >>= write3 arr i . linearMap carryS) [wVel w, wAxis w, wNormal w]
       readSlot w i Angle >>= writeSlot w i Angle . (sS *)
       readSlot w i Omega >>= writeSlot w i Omega . (sS *)
       -- a held body keeps the grabbed point's polar angle, mirrored too

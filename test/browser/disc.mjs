@@ -6,7 +6,9 @@
 // picture follows the pointer) and the drag back returns the view to where
 // it was; the wheel sizes the disc; the Klein disc and the hyperboloid in
 // 3-D are chosen by the Model control, setOptions and the URL, and the
-// control shows only for hyperbolic spaces.
+// control shows only for hyperbolic spaces. The Bolza surface is drawn as
+// its tiling: the octagon lighter than its images, their edges dark, and a
+// body drawn again where the side pairing puts it.
 import path from "node:path";
 import { OUT, canvasShot } from "./lib.mjs";
 import { openSpace } from "./bodies.mjs";
@@ -190,6 +192,52 @@ async function testModels(check, context, base, page, errors) {
   await fromUrl.close();
 }
 
+// ---- the Bolza surface's tiling: the octagon (inradius acosh(1 + √2)) lighter than
+// its images, the edge between them dark, and a body near side 0 drawn again
+// across side 4, where pairing 4 (the translation by twice the inradius along
+// −x) puts it ----
+async function testBolza(check, context, base, errors) {
+  const page = await openSpace(context, base, "#space=bolza", errors);
+  const r = Math.acosh(1 + Math.SQRT2);
+  const polar = function (d, a) { return [Math.sinh(d) * Math.cos(a), Math.cosh(d), Math.sinh(d) * Math.sin(a)]; };
+  // the translation by t along x (pairing 0 for t = 2r)
+  const along = function (t, p) { return [p[0] * Math.cosh(t) + p[1] * Math.sinh(t), p[0] * Math.sinh(t) + p[1] * Math.cosh(t), p[2]]; };
+  const at = { body: polar(1.2, 0), image: polar(2 * r - 1.2, Math.PI), // the body and its image across side 4
+    inside: polar(1.0, 2.0), outside: along(2 * r, polar(1.0, 2.0)), // a point of the octagon (off the grid lines), and its image by pairing 0
+    edge: polar(r, Math.PI / 2), nearEdge: polar(r - 0.25, Math.PI / 2) };
+  const px = await page.evaluate(function (a) {
+    const m = window.manifold;
+    return m.loadScene({ space: "bolza", gravity: false, bodies: [{ shape: "circle", size: 0.25, p: a.body }] }).then(function () {
+      m.pause();
+      m.render();
+      const out = { model: m.options().model, images: window.Manifold.spaces.bolza.images.length };
+      for (const k of Object.keys(a)) out[k] = m.project(a[k]);
+      return out;
+    });
+  }, at);
+  const shot = await canvasShot(page, path.join(OUT, "bolza-disc.png"));
+  // the mean colour of a 5-pixel square about a pixel
+  const mean = function (q) {
+    const c = [0, 0, 0];
+    for (let dy = -2; dy <= 2; dy++) for (let dx = -2; dx <= 2; dx++) shot.at(q[0] + dx, q[1] + dy).forEach(function (v, k) { c[k] += v / 25; });
+    return c;
+  };
+  const luma = function (c) { return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; };
+  const colourGap = function (a, b) { return Math.max(Math.abs(a[0] - b[0]), Math.abs(a[1] - b[1]), Math.abs(a[2] - b[2])); };
+  check("bolza opens in the Poincaré disc with its 48 images", px.model === "poincare" && px.images === 48, JSON.stringify({ model: px.model, images: px.images }));
+  const lIn = luma(mean(px.inside)), lOut = luma(mean(px.outside));
+  check("the octagon is lighter than its image across a side (luma " + lIn.toFixed(1) + " against " + lOut.toFixed(1) + ")", lIn > lOut + 10, "");
+  let lEdge = Infinity;
+  for (let dy = -1; dy <= 1; dy++) for (let dx = -1; dx <= 1; dx++) lEdge = Math.min(lEdge, luma(shot.at(px.edge[0] + dx, px.edge[1] + dy)));
+  const lNear = luma(mean(px.nearEdge));
+  check("the octagon's side is drawn darker (luma " + lEdge.toFixed(1) + " on it, " + lNear.toFixed(1) + " a quarter inside)", lEdge < 0.8 * lNear, "");
+  const body = mean(px.body), image = mean(px.image), ground = mean(px.outside);
+  check("a body near side 0 is drawn again where pairing 4 puts it, across side 4 (colours " + JSON.stringify(body.map(Math.round)) + ", " +
+    JSON.stringify(image.map(Math.round)) + "; the tile's ground " + JSON.stringify(ground.map(Math.round)) + ")",
+    colourGap(body, image) < 40 && colourGap(image, ground) > 40, "");
+  await page.close();
+}
+
 export async function testDisc(check, context, base) {
   const errors = [];
   const page = await openSpace(context, base, "#space=hyperbolic-plane", errors);
@@ -198,5 +246,6 @@ export async function testDisc(check, context, base) {
   await testDrag(check, page);
   await testModels(check, context, base, page, errors);
   await page.close();
+  await testBolza(check, context, base, errors);
   check("disc pages: no console errors", errors.length === 0, errors.join("; "));
 }

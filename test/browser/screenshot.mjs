@@ -4,6 +4,8 @@
 //   node test/browser/screenshot.mjs compare-torus docs/torus-comparison.png
 // The hyperbolic plane in the Poincaré disc, walked away from the vertex (docs/hyperbolic-disc.png):
 //   node test/browser/screenshot.mjs hyperbolic-plane docs/hyperbolic-disc.png 24
+// The Bolza surface's tiling of the disc, the thrown bodies of its preset 2 s on (docs/bolza-disc.png):
+//   node test/browser/screenshot.mjs bolza docs/bolza-disc.png
 import fs from "node:fs";
 import path from "node:path";
 import { ROOT, launchBrowser, serve } from "./lib.mjs";
@@ -31,6 +33,11 @@ try {
       m.setOptions({ curvature: true });
       m.step(1200);
       m.render();
+    });
+  } else if (space === "bolza") {
+    await page.evaluate(function () {
+      const m = window.manifold;
+      return m.loadPreset("bolza-billiards").then(function () { m.pause(); m.step(200); m.render(); });
     });
   } else {
     await page.evaluate(function () {

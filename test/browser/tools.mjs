@@ -85,7 +85,7 @@ async function testQuotientGeodesics(check, page) {
     const m = window.manifold;
     return m.setSpace("flat-torus").then(function () {
       const images = window.Manifold.spaces["flat-torus"].images;
-      const period = Math.min.apply(null, images.map(function (g) { return Math.hypot(g[3], g[4], g[5]); }).filter(function (t) { return t > 0; }));
+      const period = Math.min.apply(null, images.map(function (g) { return Math.hypot(g[9], g[10], g[11]); }).filter(function (t) { return t > 0; }));
       const p = [0.1, 0, 0.2];
       const g = m.geodesic(p, [1, 0, 0], period);
       return { period: period, end: g.points[g.points.length - 1], p: p, breaks: g.breaks };

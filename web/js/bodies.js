@@ -29,14 +29,15 @@ var ManifoldWebBodies = (function (W) {
   // the strides of the directions a coarser form keeps
   const DIRECTION_STRIDES = [4, 3, 2, 1];
   /** @type {Manifold.Image} */
-  const IDENTITY = [1, 1, 1, 0, 0, 0];
+  // the image p -> L p + t as [L row by row, t] (generated: space.images)
+  const IDENTITY = [1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0];
   // "auto": each body in the coarsest form that looks the same as its mesh; "mesh": every body as its whole mesh
   const BODY_DETAILS = ["auto", "mesh"];
 
   const VERTEX = `#version 300 es
 precision highp float;
 uniform mat4 uViewProjection;
-uniform vec3 uImageScale;  // the image p -> scale * p + shift (the identity: 1, 0)
+uniform mat3 uImageLinear; // the image p -> linear * p + shift (the identity: I, 0)
 uniform vec3 uImageShift;
 in vec3 aPosition;
 in vec3 aColour;
@@ -45,7 +46,7 @@ out vec3 vWorld;
 out vec3 vColour;
 out vec3 vMark;
 void main() {
-  vec3 p = uImageScale * aPosition + uImageShift;
+  vec3 p = uImageLinear * aPosition + uImageShift;
   vWorld = p;
   vColour = aColour;
   vMark = aMark;
@@ -293,7 +294,9 @@ void main() {
         let near = Infinity;
         for (let g = 0; g < images.length; g++) {
           const m = images[g];
-          const dx = m[0] * cx + m[3] - eye[0], dy = m[1] * cy + m[4] - eye[1], dz = m[2] * cz + m[5] - eye[2];
+          const dx = m[0] * cx + m[1] * cy + m[2] * cz + m[9] - eye[0];
+          const dy = m[3] * cx + m[4] * cy + m[5] * cz + m[10] - eye[1];
+          const dz = m[6] * cx + m[7] * cy + m[8] * cz + m[11] - eye[2];
           near = Math.min(near, Math.sqrt(dx * dx + dy * dy + dz * dz));
         }
         const allowed = FORM_TOLERANCE * pixel * near;
@@ -515,11 +518,11 @@ void main() {
         // translation images (the flat spaces): only the fundamental square is drawn,
         // so a body across an edge shows on both sides of it, and nothing is drawn twice
         let half = 0;
-        for (const g of images) half = Math.max(half, Math.abs(g[3]) / 2, Math.abs(g[5]) / 2);
+        for (const g of images) half = Math.max(half, Math.abs(g[9]) / 2, Math.abs(g[11]) / 2);
         gl.uniform1f(p.uniform("uClip"), half > 0 ? half + IMAGE_BAND : 0);
         for (const g of images) {
-          gl.uniform3f(p.uniform("uImageScale"), g[0], g[1], g[2]);
-          gl.uniform3f(p.uniform("uImageShift"), g[3], g[4], g[5]);
+          gl.uniformMatrix3fv(p.uniform("uImageLinear"), true, g.slice(0, 9));
+          gl.uniform3f(p.uniform("uImageShift"), g[9], g[10], g[11]);
           gl.drawElements(gl.TRIANGLES, this.indexCount, gl.UNSIGNED_INT, 0);
         }
         gl.bindVertexArray(null);

@@ -230,7 +230,7 @@ var ManifoldWebCompare = (function (W) {
       }
       const n = world.count();
       const lw = Math.max(1, (W.devicePixelRatio || 1) * 1.2);
-      const shifts = [[0, 0]].concat(W.Manifold.spaces[this.def.flat].images.map(function (g) { return [g[3], g[5]]; }));
+      const shifts = [[0, 0]].concat(W.Manifold.spaces[this.def.flat].images.map(function (g) { return [g[9], g[11]]; }));
       for (let i = 0; i < n; i++) {
         const o = this.outlineInSquare(world, i, viaChart);
         /** @type {Manifold.Rgb} */

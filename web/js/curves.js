@@ -9,14 +9,15 @@ var ManifoldWebCurves = (function (W) {
   "use strict";
   const G = W.ManifoldWeb.gl;
   /** @type {Manifold.Image} */
-  const IDENTITY = [1, 1, 1, 0, 0, 0];
+  // the image p -> L p + t as [L row by row, t] (generated: space.images)
+  const IDENTITY = [1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0];
   // numbers per segment: both points, the colour, the opacity at each end
   const SEGMENT = 3 + 3 + 3 + 2;
 
   const VERTEX = `#version 300 es
 precision highp float;
 uniform mat4 uViewProjection;
-uniform vec3 uImageScale;
+uniform mat3 uImageLinear;
 uniform vec3 uImageShift;
 uniform vec2 uViewport;
 uniform float uWidth;      // pixels
@@ -28,8 +29,8 @@ in vec2 aCorner;           // (end 0 or 1, side -1 or 1)
 out vec3 vWorld;
 out vec4 vColour;
 void main() {
-  vec3 a = uImageScale * aFrom + uImageShift;
-  vec3 b = uImageScale * aTo + uImageShift;
+  vec3 a = uImageLinear * aFrom + uImageShift;
+  vec3 b = uImageLinear * aTo + uImageShift;
   vec4 ca = projectToClip(a);
   vec4 cb = projectToClip(b);
   vec2 sa = ca.xy / ca.w * uViewport, sb = cb.xy / cb.w * uViewport;
@@ -145,12 +146,12 @@ void main() {
       gl.uniform1f(p.uniform("uWidth"), width * Math.max(1, frame.scale));
       const all = [IDENTITY].concat(images || []);
       let half = 0;
-      for (const g of all) half = Math.max(half, Math.abs(g[3]) / 2, Math.abs(g[5]) / 2);
+      for (const g of all) half = Math.max(half, Math.abs(g[9]) / 2, Math.abs(g[11]) / 2);
       gl.uniform1f(p.uniform("uClip"), half);
       gl.bindVertexArray(this.vao);
       for (const g of all) {
-        gl.uniform3f(p.uniform("uImageScale"), g[0], g[1], g[2]);
-        gl.uniform3f(p.uniform("uImageShift"), g[3], g[4], g[5]);
+        gl.uniformMatrix3fv(p.uniform("uImageLinear"), true, g.slice(0, 9));
+        gl.uniform3f(p.uniform("uImageShift"), g[9], g[10], g[11]);
         gl.drawArraysInstanced(gl.TRIANGLES, 0, 6, this.count);
       }
       gl.bindVertexArray(null);
@@ -168,18 +169,12 @@ void main() {
     }
   }
 
-  // The shortest jump of a quotient's translations (the flat spaces' period),
-  // or Infinity: consecutive points of a curve further apart than half of it
-  // were brought back into the fundamental domain between them, and the
-  // curve breaks there.
-  /** @param {Manifold.Image[]} images */
-  function wrapJump(images) {
-    let jump = Infinity;
-    for (const g of images || []) {
-      const t = Math.hypot(g[3], g[4], g[5]);
-      if (t > 0) jump = Math.min(jump, t);
-    }
-    return jump / 2;
+  // How far apart consecutive points of a curve may be before the curve
+  // breaks there (a wrap into the fundamental domain came between them):
+  // the space's generated wrapJump, or Infinity where nothing is wrapped.
+  /** @param {Manifold.Space} space */
+  function wrapJump(space) {
+    return space.wrapJump === null ? Infinity : space.wrapJump;
   }
 
   const exported = { CurveRenderer: CurveRenderer, wrapJump: wrapJump };

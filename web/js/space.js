@@ -112,7 +112,7 @@ var ManifoldWebSpace = (function (W) {
     }
     MW.hash.updateHash();
     try {
-      state.tracer.setSpaceGlsl(glslFor(name), "sphere tracer for space \"" + name + "\"", space.metric === "minkowski");
+      state.tracer.setSpaceGlsl(glslFor(name), "sphere tracer for space \"" + name + "\"", space.metric === "minkowski", space.wrapJump !== null);
     } catch (err) {
       if (state.debugBrokenShader && err instanceof PageError) {
         err.message += " The URL has debugBrokenShader=1, which breaks the shader on purpose; remove it to draw the space.";

@@ -237,7 +237,7 @@ var ManifoldWebTools = (function (W) {
     }
     const n = Math.max(1, Math.round(PREVIEW_SECONDS / w.param("dt")));
     const points = new Float64Array(3 * (n + 1)), breaks = new Uint8Array(n + 1);
-    const pos = scratch.a.pos, vel = scratch.a.vel, jump = MW.curves.wrapJump(w.images);
+    const pos = scratch.a.pos, vel = scratch.a.vel, jump = MW.curves.wrapJump(w.space);
     points.set(pos.subarray(0, 3), 0);
     let speed = Math.hypot(vel[0], vel[1], vel[2]);
     for (let k = 1; k <= n; k++) {
@@ -410,7 +410,7 @@ var ManifoldWebTools = (function (W) {
   function eachTrailSegment(segment) {
     const w = state.world, t = tools.trail;
     if (!tools.trailsOn || !w || t.world !== w || t.filled < 2) return;
-    const dt = w.param("dt"), now = w.steps, jump = MW.curves.wrapJump(w.images);
+    const dt = w.param("dt"), now = w.steps, jump = MW.curves.wrapJump(w.space);
     const alpha = function (/** @type {number} */ slot) { return Math.max(0, 1 - (now - t.at[slot]) * dt / TRAIL.seconds); };
     const xyz = t.data, n = t.bodies;
     for (let k = t.filled - 1; k >= 1; k--) {

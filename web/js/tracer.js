@@ -183,9 +183,16 @@ void main() {
   if (u * u + w * w >= 1.0) return;
   vec3 p = uToWorld * (uModel == 2 ? fromKlein(u, w) : fromPoincare(u, w));
   if (boundary(p) < 0.0) return;
-  float k = uCurvature ? curvature(p) : 0.0;
-  outPosition = vec4(p, 1.0e30);
-  outNormal = vec4(0.0, 0.0, 0.0, (abs(k) < 1e20) ? k : 0.0);
+  // the point folded into the quotient's fundamental domain (generated:
+  // the Bolza surface's octagon, four side pairings a call; elsewhere the
+  // point itself), so the grid and the colouring repeat in every tile; the
+  // normal's y says the point was folded (a quarter: the bodies' shading
+  // takes a normal shorter than a half for none)
+  vec3 f = foldIntoDomain(foldIntoDomain(foldIntoDomain(p)));
+  float folded = distance(f, p) > 1e-4 * p.y ? 0.25 : 0.0;
+  float k = uCurvature ? curvature(f) : 0.0;
+  outPosition = vec4(f, 1.0e30);
+  outNormal = vec4(0.0, folded, 0.0, (abs(k) < 1e20) ? k : 0.0);
 }
 `;
 
@@ -207,6 +214,7 @@ uniform bool uGrid;
 uniform float uGridSpacing;
 uniform float uLineWidth; // grid line width in pixels of this buffer
 uniform bool uFlat;       // a flat view (a hyperbolic disc): unlit, its grid of geodesics
+uniform bool uTiled;      // a flat view of a quotient: its fundamental domain's tiles marked
 out vec4 outColor;
 
 vec3 toLinear(vec3 c) { return pow(c, vec3(2.2)); }
@@ -221,6 +229,9 @@ void main() {
   // a flat view's grid: the geodesics of the generated grid (the vertex where there is no point)
   vec2 g2 = geodesicGrid(P.w > 0.0 ? P.xyz : vec3(0.0, 1.0, 0.0)) / uGridSpacing;
   vec2 g2w = fwidth(g2);
+  // a tiled flat view's tile edges: where neighbouring pixels were folded
+  // into the domain differently, their points jump
+  float jump = length(fwidth(P.xyz)) / max(abs(P.y), 1.0);
   vec3 background = mix(uBackgroundBottom, uBackgroundTop, gl_FragCoord.y / uResolution.y);
   if (!(P.w > 0.0)) { outColor = vec4(background, 1.0); return; }
 
@@ -252,6 +263,11 @@ void main() {
       vec2 lineDist = abs(fract(g2 - 0.5) - 0.5) / max(g2w, vec2(1e-6));
       vec2 line = (1.0 - clamp(lineDist - 0.5 * uLineWidth, 0.0, 1.0)) * (1.0 - smoothstep(vec2(0.12), vec2(0.35), g2w * uLineWidth));
       albedo = (uCurvature ? albedo : vec3(0.86, 0.80, 0.70)) * (1.0 - 0.25 * max(line.x, line.y));
+    }
+    if (uTiled) {
+      // the domain's images a shade darker than the domain, their edges dark
+      if (N.y > 0.1) albedo *= 0.78;
+      if (jump > 0.2) albedo *= 0.35;
     }
     outColor = vec4(toDisplay(toLinear(albedo) * 0.92), 1.0);
     return;
@@ -358,6 +374,7 @@ void main() {
       this.traceProgram = null;
       /** @type {ManifoldWeb.Program | null} the flat views' trace pass (hyperbolic spaces) */
       this.flatProgram = null;
+      this.tiled = false; // the flat views mark the fundamental domain's tiles
       this.shadeProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, shadeSource(), "shading pass");
       this.fxaaProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, FXAA_FRAGMENT, "FXAA pass");
       this.resampleProgram = G.createProgram(gl, G.FULLSCREEN_VERTEX, RESAMPLE_FRAGMENT, "resampling pass");
@@ -376,10 +393,13 @@ void main() {
 
     // Compiles the trace pass for a space's GLSL; throws a PageError with the
     // compiler log when it fails (the previous program is dropped either way).
-    // flat: the space is hyperbolic, so its flat views' pass is made too.
-    /** @param {string} glsl @param {string} label @param {boolean} [flat] */
-    setSpaceGlsl(glsl, label, flat) {
+    // flat: the space is hyperbolic, so its flat views' pass is made too;
+    // tiled: it is a quotient, whose flat views mark the fundamental
+    // domain's tiles.
+    /** @param {string} glsl @param {string} label @param {boolean} [flat] @param {boolean} [tiled] */
+    setSpaceGlsl(glsl, label, flat, tiled) {
       this.dropSpace();
+      this.tiled = !!tiled;
       this.traceProgram = G.createProgram(this.gl, G.FULLSCREEN_VERTEX, traceSource(glsl), label);
       if (flat) this.flatProgram = G.createProgram(this.gl, G.FULLSCREEN_VERTEX, flatSource(glsl), label + " (flat view)");
     }
@@ -507,6 +527,7 @@ void main() {
         gl.uniform1f(s.uniform("uGridSpacing"), view.gridSpacing);
         gl.uniform1f(s.uniform("uLineWidth"), Math.max(1, this.scale));
         gl.uniform1i(s.uniform("uFlat"), flat && this.flatProgram ? 1 : 0);
+        gl.uniform1i(s.uniform("uTiled"), flat && this.flatProgram && this.tiled ? 1 : 0);
         G.drawFullscreen(gl, this.vao);
         gl.activeTexture(gl.TEXTURE1);
         gl.bindTexture(gl.TEXTURE_2D, null);

@@ -17,7 +17,7 @@ import Data.List (dropWhileEnd, intercalate)
 import Manifold.Params
 import Manifold.Program
 import Manifold.Body (PolygonParams (..), vertexIndex)
-import Manifold.Collide (KeyGroup (..), keysPerBody, keysPerGroup)
+import Manifold.Collide (KeyGroup (..), keysPerGroup)
 import Manifold.Space
 import Manifold.Stage.Code (Function (..))
 import Manifold.Stage.Imp (Procedure (..), stageFunctions)
@@ -77,8 +77,8 @@ engineObject l subroutines =
     , "  slots: " ++ enumObj Angle ++ ","
     , "  contact: " ++ enumObj CA ++ ","
     , "  prev: " ++ enumObj PrevOwner ++ ", prevStride: " ++ show prevStride ++ ","
-    , "  // a contact's key: (other body + 1) * perBody + group * perGroup + point (Manifold.Collide)"
-    , "  keys: { perBody: " ++ show keysPerBody ++ ", perGroup: " ++ show keysPerGroup ++ ", groups: " ++ enumObj PairKey ++ " },"
+    , "  // a contact's key: (other body + 1) * the space's keysPerBody + group * perGroup + point (Manifold.Collide)"
+    , "  keys: { perGroup: " ++ show keysPerGroup ++ ", groups: " ++ enumObj PairKey ++ " },"
     , "  // where step k (1 .. steps) along direction d sits among a body's vertices (0 is the centre)"
     , "  vertexIndex: " ++ dropWhileEnd (== '\n') (printFunction JavaScript "vertexIndex" (FnType ["d", "k"] False) [vertexIndex (polygon l) (sym "d") (sym "k")]) ++ ","
     , "  mouse: " ++ enumObj MActive ++ ","

@@ -22,10 +22,12 @@ import Numeric (showHex)
 
 import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
+import Manifold.Collide (keysPerBody)
 import Manifold.ContactManifold (maxHullCorners)
+import Manifold.Bolza (inradius)
 import Manifold.Disc
 import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, convexRound, hullSize, orientCorners, polygonReach, verticesCode)
-import Manifold.Metric (gaussianCurvatureIn, metricName)
+import Manifold.Metric (Metric (..), gaussianCurvatureIn, metricName)
 import Manifold.Params (bodyKeys, keyName, materialKeys)
 import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
@@ -63,7 +65,10 @@ v3 :: V3 a -> [a]
 v3 (V3 a b c) = [a, b, c]
 
 -- | GLSL ES 3.00 defining @field@, @gradient@, @boundary@ and @curvature@,
--- and for the tracer @distanceEstimate@ and @projectToSurface@.
+-- for the tracer @distanceEstimate@ and @projectToSurface@, and for the
+-- hyperbolic spaces' flat views @foldIntoDomain@ (a point brought towards
+-- the quotient's fundamental domain: on the Bolza surface, by up to four
+-- side pairings; elsewhere the point itself).
 spaceGlsl :: Space -> String
 spaceGlsl s = spaceGlslWith s (spaceCurvature s)
 
@@ -82,7 +87,27 @@ spaceGlslWith s curvatureE = concat
   , printFunction GLSL "curvature" xyz [curvatureE]
   , printFunction GLSL "distanceEstimate" xyz [traceDistance (spaceField s) pointSyms]
   , printFunction GLSL "projectToSurface" xyz (v3 (projectToSurfaceWith tracerProjectionSteps (spaceField s) pointSyms))
+  , printFunction GLSL "foldIntoDomain" xyz (v3 (foldIntoDomain s pointSyms))
   ]
+
+-- | A point brought into the fundamental domain ('quotientWrap'), for a
+-- flat view to draw the domain's tiling; a quotient with none leaves it.
+foldIntoDomain :: Space -> V3 E -> V3 E
+foldIntoDomain s p = case quotientWrap (spaceQuotient s) of
+  Just wrap | spaceMetric s == Minkowski -> wrappedPoint (wrap p)
+  _ -> p
+
+-- | How far a wrap into the fundamental domain moves a point at least (in
+-- R³): consecutive points of a curve further apart than half of it were
+-- wrapped between them, and the page breaks the curve there. A lattice's
+-- period; on the Bolza surface the chord between the middles of two
+-- paired sides (@2 sinh r@, @r@ the inradius); 'Nothing' where points are
+-- never wrapped.
+wrapJump :: Quotient -> Maybe Double
+wrapJump = \case
+  Lattice period _ -> Just period
+  OctagonPairings -> Just (2 * sinh inradius)
+  _ -> Nothing
 
 -- | Newton steps the tracer takes to put a silhouette hit on the surface
 -- (it starts within a pixel of it; float precision is reached in two).
@@ -121,8 +146,12 @@ spaceScript s = unlines
   , "  quotient: " ++ jsString (quotientName (spaceQuotient s)) ++ ","
   , "  // the ambient metric the surface sits in: \"euclidean\" (R^3) or \"minkowski\" (x^2 - y^2 + z^2)"
   , "  metric: " ++ jsString (metricName (spaceMetric s)) ++ ","
-  , "  // the quotient's images: [sx, sy, sz, tx, ty, tz] for p -> s*p + t (componentwise)"
-  , "  images: [" ++ intercalate ", " [vecJs' (isoSigns g) (isoShift g) | g <- quotientImages (spaceQuotient s)] ++ "],"
+  , "  // the quotient's images: p -> L p + t as [L row by row (9), t (3)]"
+  , "  images: [" ++ intercalate ", " ["[" ++ intercalate ", " (map num (isoCoefficients g)) ++ "]" | g <- quotientImages (spaceQuotient s)] ++ "],"
+  , "  // consecutive points of a curve further apart than this were wrapped into the fundamental domain between them (null: never)"
+  , "  wrapJump: " ++ maybe "null" (num . (/ 2)) (wrapJump (spaceQuotient s)) ++ ","
+  , "  // a contact's key: (other body + 1) * keysPerBody + the group's and point's (Manifold.Collide)"
+  , "  keysPerBody: " ++ show (keysPerBody (spaceQuotient s)) ++ ","
   , "  bounds: " ++ num (spaceBounds s) ++ ","
   , "  // the axis the space is symmetric about (the measures' axial momentum), or null"
   , "  axis: " ++ maybe "null" (\(V3 x y z) -> "[" ++ intercalate ", " (map num [x, y, z]) ++ "]") (spaceAxis s) ++ ","
@@ -210,9 +239,6 @@ hyperbolicObject = "{ " ++ intercalate ", " (map field' functions) ++ ", glsl: "
       , printFunction GLSL "toKlein" xyz (pair (toKlein pointSyms))
       , printFunction GLSL "geodesicGrid" xyz (pair (geodesicGrid pointSyms))
       ]
-
-vecJs' :: V3 Double -> V3 Double -> String
-vecJs' (V3 a b c) (V3 d e f) = "[" ++ intercalate ", " (map num [a, b, c, d, e, f]) ++ "]"
 
 -- | The name of 'comparisonScript' among the generated files.
 comparisonScriptFile :: FilePath
