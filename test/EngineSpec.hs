@@ -111,8 +111,10 @@ emittedHeapScript =
   -- once, on a loaded machine (two suites and a build at once), the
   -- funnel's step was measured deoptimised (137 KB a step) where every
   -- run alone and under load allocates nothing: optimised once more and
-  -- measured again, a deopt that lasts still shows
-  , "if (perStep > 32) { for (const [, f] of functions) %OptimizeFunctionOnNextCall(f); step(); perStep = (least(50) - least(0)) / 50; }"
+  -- measured again, up to three times (a CI run measured the hemisphere's
+  -- 175 KB a step after one retry, where runs alone allocate nothing), a
+  -- deopt that lasts still shows
+  , "for (let r = 0; r < 3 && perStep > 32; r++) { for (const [, f] of functions) %OptimizeFunctionOnNextCall(f); step(); perStep = (least(50) - least(0)) / 50; }"
   , "console.log(JSON.stringify([perStep, a[" ++ show metaArray ++ "][" ++ show (fromEnum ContactCount) ++ "]]));"
   ]
   where metaArray = length (takeWhile (/= "meta") (toList arrayNames))
