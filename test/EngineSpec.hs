@@ -579,6 +579,8 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"local\": [1, 2]}"
           , withJoint "{\"type\": \"weld\", \"a\": 0, \"b\": 1, \"anchor\": [1, 0, 0], \"collide\": 1}"
           , "{\"space\": \"sphere\", \"joints\": {}}"
+          -- a space that takes no joints (bolza), with a joint that is right elsewhere
+          , "{\"space\": \"bolza\", \"bodies\": [" ++ body "" ++ ", " ++ body "" ++ "], \"joints\": [{\"type\": \"revolute\", \"a\": 0, \"b\": 1, \"anchor\": [0, 1, 0]}]}"
           -- the camera: every way it is refused
           , "{\"space\": \"plane\", \"camera\": 1}", "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3]}}"
           , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0], \"fov\": 45}}"

@@ -229,6 +229,8 @@ declare namespace Manifold {
   type VectorField = (x: number, y: number, z: number) => Vec3;
   /** One of a quotient's images of a point: p ↦ L p + t, as L row by row then t (twelve numbers). */
   type Image = number[];
+  /** A point brought into a quotient's fundamental domain: the map that does it (nine numbers, row by row), then the point. */
+  type Wrap = (x: number, y: number, z: number) => number[];
   interface Space {
     name: string;
     description: string;
@@ -248,6 +250,8 @@ declare namespace Manifold {
     keysPerBody: number;
     /** consecutive points of a curve further apart than this were wrapped into the fundamental domain between them (null: nothing is wrapped) */
     wrapJump: number | null;
+    /** a point brought into the fundamental domain (null: the quotient has no wrap) */
+    wrapIntoDomain: Wrap | null;
     /** the radius of the ball about the origin that holds the surface's view */
     bounds: number;
     /** the axis the space is symmetric about (the measures' axial momentum is about it), or null */
@@ -435,6 +439,8 @@ declare namespace Manifold {
     materialKeys: string[];
     /** what a saved contact row to be kept lists after [key, normal, friction]: remembered rows' fields (Manifold.World.keptFields) */
     keptFields: PrevField[];
+    /** why a space's scenes can have no joints, by space name (a space not named takes joints; Manifold.Space.jointsRefused) */
+    jointsRefused: { [space: string]: string };
     /** addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Manifold.Hull) */
     shapes: {
       codes: { circle: number; box: number; capsule: number; vertices: number };
@@ -489,7 +495,7 @@ declare namespace Manifold {
   type Antialias = "fxaa" | "ssaa" | "off";
   /** How a hyperbolic space is drawn: the Poincaré disc, the Klein disc (flat views, web/js/disc.js), or the hyperboloid traced in 3-D. */
   type Model = "poincare" | "klein" | "hyperboloid";
-  /** Where the flat views look: the boost (world → view, nine numbers row by row, a Lorentz matrix of x² − y² + z²), and the disc's radius as a fraction of half the canvas's smaller side. */
+  /** Where the flat views look: the boost (world → view, nine numbers row by row, a Lorentz matrix of x² − y² + z²), and the disc's radius as a fraction of half the canvas's smaller side. On a quotient (bolza) the boost is kept with the view's centre in the fundamental domain: a walk or a boost set that takes the centre out is composed with the group element that brings it back, which shows the same picture. */
   interface DiscViewSpec {
     boost: number[];
     zoom: number;

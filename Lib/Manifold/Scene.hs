@@ -284,8 +284,7 @@ parseScene text = do
   joints <- optional "$" o "joints" [] $ \path -> \case
     A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, j) -> joint (length bodies) (path ++ "[" ++ show k ++ "]") j
     _ -> problem path "must be an array of joints"
-  when (not (null joints) && not (quotientKeepsJoints (spaceQuotient sp))) $
-    problem "$.joints" ("joints are not supported on " ++ spaceName sp ++ ": a joint across its octagon's sides would need its side pairings")
+  forM_ (jointsRefused sp) $ \why -> unless (null joints) (problem "$.joints" why)
   when (length joints > 2 * max 1 (length bodies)) $
     problem "$.joints" (show (length joints) ++ " joints, more than a world of " ++ show (length bodies) ++ " bodies holds (two a body)")
   camera <- optional "$" o "camera" Nothing (\path c -> Just <$> sceneCameraOf sp path c)

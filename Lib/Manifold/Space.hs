@@ -18,14 +18,14 @@ module Manifold.Space
   , applyIso
   , applyLinear
   , inverseIso
-  , isoMirrors
   , determinant
   , isoCoefficients
   , isoFromCoefficients
   , quotientImages
   , quotientMetric
   , mostImages
-  , quotientKeepsJoints
+  , jointsRefused
+  , wrapJump
   , selfImage
   , wrapLattice
   , nearestImage
@@ -48,7 +48,7 @@ import Data.Maybe (isJust)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((^-^))
 
-import Manifold.Bolza (sideExcess, touchingImages, wrapIntoOctagon)
+import Manifold.Bolza (inradius, sideExcess, touchingImages, wrapIntoOctagon)
 import Manifold.Field
 import Manifold.Metric
 
@@ -143,11 +143,6 @@ inverseIso metric (Isometry l t) =
         Minkowski -> V3 (V3 a (negate d) g) (V3 (negate b) e (negate h)) (V3 c (negate f) i)
   in Isometry back (negate (linearMap back t))
 
--- | Whether an isometry reverses orientation (the sign of its linear
--- part's determinant, exactly ±1 for the quotients' own).
-isoMirrors :: Isometry -> Bool
-isoMirrors (Isometry l _) = determinant l < 0
-
 -- | The determinant of a linear map (by rows).
 determinant :: Num a => V3 (V3 a) -> a
 determinant (V3 (V3 a b c) (V3 d e f) (V3 g h i)) = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
@@ -190,12 +185,30 @@ rows :: [a] -> V3 (V3 a)
 rows [a, b, c, d, e, f, g, h, i] = V3 (V3 a b c) (V3 d e f) (V3 g h i)
 rows m = error ("rows: a matrix is nine numbers, not " ++ show (length m))
 
--- | Whether joints work on a space of this quotient: a joint takes the
--- image its bodies meet through by the signs of a diagonal isometry
--- ("Manifold.Joint"), which the Bolza surface's are not.
-quotientKeepsJoints :: Quotient -> Bool
-quotientKeepsJoints OctagonPairings = False
-quotientKeepsJoints _ = True
+-- | Why a space's scenes can have no joints ('Nothing': they can): a joint
+-- takes the image its bodies meet through by the signs of a diagonal
+-- isometry ("Manifold.Joint"), which the Bolza surface's are not. The
+-- scene readers (the command line's and the page's) and the page's joint
+-- tool refuse a joint with this message.
+jointsRefused :: Space -> Maybe String
+jointsRefused sp = case spaceQuotient sp of
+  OctagonPairings -> Just ("joints are not supported on " ++ spaceName sp ++ ": a joint across its octagon's sides would need its side pairings")
+  _ -> Nothing
+
+-- | How far a wrap into the fundamental domain moves a point at least (in
+-- R³): consecutive points of a curve further apart than half of it were
+-- wrapped between them, and the page breaks the curve there. A lattice's
+-- period; on the Bolza surface the chord between the middles of two
+-- paired sides (@2 sinh r@, @r@ the inradius); 'Nothing' where points are
+-- never wrapped.
+--
+-- >>> map wrapJump [NoQuotient, Lattice 2 False]
+-- [Nothing,Just 2.0]
+wrapJump :: Quotient -> Maybe Double
+wrapJump = \case
+  Lattice period _ -> Just period
+  OctagonPairings -> Just (2 * sinh inradius)
+  _ -> Nothing
 
 -- | The metric a quotient's isometries keep: Minkowski space's for the
 -- hyperbolic quotients, R³'s for the others.
@@ -288,18 +301,15 @@ pickSigns = \case
 nearestImage :: Field a => Quotient -> V3 a -> V3 a -> V3 a
 nearestImage quo ref q = case quotientWrap quo of
   Nothing -> q
-  Just wrap -> fst (nearestOf quo ref (wrappedPoint (wrap q)))
+  Just wrap -> fst (nearestImageWith quo ref (wrappedPoint (wrap q)))
 
 -- | Of the images of point @q@ (itself included) under the quotient's
 -- group, the one nearest @ref@, with the linear part of the isometry that
--- gives it (how it maps directions).
+-- gives it (how it maps directions). The candidates are compared by their
+-- quadrance in the quotient's metric, a choice by 'select' so that it
+-- stages.
 nearestImageWith :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 (V3 a))
-nearestImageWith = nearestOf
-
--- | 'nearestImageWith': the candidates compared by their quadrance in the
--- quotient's metric, a choice by 'select' so that it stages.
-nearestOf :: Field a => Quotient -> V3 a -> V3 a -> (V3 a, V3 (V3 a))
-nearestOf quo ref q = fst (foldl pick ((q, linearPart identityIso), quadranceIn metric (q ^-^ ref)) candidates)
+nearestImageWith quo ref q = fst (foldl pick ((q, linearPart identityIso), quadranceIn metric (q ^-^ ref)) candidates)
   where
     metric = quotientMetric quo
     candidates = [ (applyIso g' q, linearPart g') | g <- quotientImages quo, let g' = fmap constant g ]

@@ -235,7 +235,141 @@ async function testBolza(check, context, base, errors) {
   check("a body near side 0 is drawn again where pairing 4 puts it, across side 4 (colours " + JSON.stringify(body.map(Math.round)) + ", " +
     JSON.stringify(image.map(Math.round)) + "; the tile's ground " + JSON.stringify(ground.map(Math.round)) + ")",
     colourGap(body, image) < 40 && colourGap(image, ground) > 40, "");
+  await testBolzaWalk(check, page);
+  await testBolzaHyperboloid(check, page);
+  await testBolzaJoints(check, page);
   await page.close();
+}
+
+// Pixels of a shot whose colour is a body's (saturated: the tiles' ground
+// is a pale beige, the background a dark blue) within `reach` of pixel c.
+function bodyPixels(shot, c, reach) {
+  let n = 0;
+  for (let y = Math.ceil(c[1] - reach); y <= c[1] + reach; y++) {
+    for (let x = Math.ceil(c[0] - reach); x <= c[0] + reach; x++) {
+      if (Math.hypot(x - c[0], y - c[1]) > reach) continue;
+      const q = shot.at(x, y);
+      if (Math.max(q[0], q[1], q[2]) - Math.min(q[0], q[1], q[2]) > 90) n++;
+    }
+  }
+  return n;
+}
+
+// Walking on the Bolza surface: the view's centre stays in the octagon (the
+// boost is recentred by the group), so the bodies are drawn about the view
+// however far it goes, and walking back returns the boost to where it was.
+async function testBolzaWalk(check, page) {
+  const before = await page.evaluate(function () {
+    const m = window.manifold;
+    return m.loadScene({ space: "bolza", bodies: window.Manifold.spaces.bolza.scene.map(function (b) {
+      return { shape: b.shape, size: b.size, p: b.p };
+    }) }).then(function () {
+      m.pause();
+      m.render();
+      const canvas = document.getElementById("view");
+      return { width: canvas.width, height: canvas.height, r: 0.5 * m.discView().zoom * Math.min(canvas.width, canvas.height) };
+    });
+  });
+  const centre = [before.width / 2, before.height / 2], reach = 0.6 * before.r;
+  const shot0 = await canvasShot(page, null);
+  const walked = await page.evaluate(function (a) {
+    const m = window.manifold, S = window.Manifold.spaces.bolza;
+    const out = { outside: 0, centre: [], back: null, steps: 0 };
+    // the centre's point folded into the octagon: how far its wrap is from the identity
+    const offDomain = function () {
+      const c = m.pick(a.w / 2, a.h / 2);
+      const w = S.wrapIntoDomain(c[0], c[1], c[2]);
+      return Math.max(...[1, 0, 0, 0, 1, 0, 0, 0, 1].map(function (x, i) { return Math.abs(w[i] - x); }));
+    };
+    for (let k = 0; k < 10; k++) { m.walk(-a.step, 0.3 * a.step); out.outside = Math.max(out.outside, offDomain()); out.steps++; }
+    m.render();
+    out.far = m.discView().boost;
+    return out;
+  }, { w: before.width, h: before.height, step: 0.45 * before.r });
+  const shot1 = await canvasShot(page, path.join(OUT, "bolza-walked.png"));
+  const back = await page.evaluate(function (a) {
+    const m = window.manifold;
+    for (let k = 0; k < 10; k++) m.walk(a.step, -0.3 * a.step);
+    return m.discView().boost;
+  }, { step: 0.45 * before.r });
+  const n0 = bodyPixels(shot0, centre, reach), n1 = bodyPixels(shot1, centre, reach);
+  // the hyperbolic distance walked: ten steps of 2 atanh(0.45 √1.09) each, about 10
+  check("walking ten steps (several tiles) keeps the view's centre in the octagon (its wrap the identity to " + walked.outside.toExponential(1) + ")",
+    walked.outside < 1e-9, "");
+  check("after the walk the bodies are drawn about the view (" + n1 + " body pixels in the middle of the disc, " + n0 + " before the walk)",
+    n0 > 200 && n1 > 0.3 * n0, "");
+  const backGap = Math.max(...back.map(function (x, i) { return Math.abs(x - [1, 0, 0, 0, 1, 0, 0, 0, 1][i]); }));
+  // (the same walk on hyperbolic-plane, never recentred, comes back to 2e-8)
+  check("walking back returns the boost to the identity (" + backGap.toExponential(1) + ", the far boost's largest entry " +
+    Math.max(...walked.far.map(Math.abs)).toFixed(1) + ")", backGap < 1e-6, "");
+}
+
+// In the hyperboloid model (3-D) bodies' images are drawn only where the
+// sheet is traced: nothing drawn over the background.
+async function testBolzaHyperboloid(check, page) {
+  await page.evaluate(function () {
+    const m = window.manifold;
+    m.setOptions({ model: "hyperboloid" });
+    m.render();
+  });
+  const withBodies = await canvasShot(page, path.join(OUT, "bolza-hyperboloid.png"));
+  await page.evaluate(function () {
+    const m = window.manifold;
+    m.clear();
+    m.render();
+  });
+  const bare = await canvasShot(page, null);
+  let floating = 0, drawn = 0;
+  for (let y = 0; y < bare.height; y++) {
+    for (let x = 0; x < bare.width; x++) {
+      const a = withBodies.at(x, y), b = bare.at(x, y);
+      if (Math.max(Math.abs(a[0] - b[0]), Math.abs(a[1] - b[1]), Math.abs(a[2] - b[2])) < 40) continue;
+      drawn++;
+      // the background is dark blue; the sheet pale
+      if (0.299 * b[0] + 0.587 * b[1] + 0.114 * b[2] < 90) floating++;
+    }
+  }
+  check("in the hyperboloid model no body is drawn over the background beyond the traced sheet (" + floating + " of " + drawn + " body pixels)",
+    drawn > 500 && floating < 0.01 * drawn, "");
+  await page.evaluate(function () { window.manifold.setOptions({ model: "poincare" }); });
+}
+
+// Joints are refused on bolza, by the scene reader and by the joint tool.
+async function testBolzaJoints(check, page) {
+  const r = await page.evaluate(function () {
+    const m = window.manifold;
+    const body = function (x) { return { shape: "circle", size: 0.2, p: [x, Math.sqrt(1 + x * x), 0] }; };
+    return m.loadScene({ space: "bolza", bodies: [body(0), body(0.5)], joints: [{ type: "revolute", a: 0, b: 1, anchor: [0.25, Math.sqrt(1.0625), 0] }] })
+      .then(function () { return "loaded"; }, function (e) { return e.message; })
+      .then(function (scene) {
+        return m.loadScene({ space: "bolza", bodies: [body(0), body(0.5)] }).then(function () {
+          let added;
+          try { added = m.addJoint({ type: "revolute", a: 0, b: 1, anchor: [0.25, Math.sqrt(1.0625), 0] }); } catch (e) { added = e.message; }
+          return { scene: scene, added: added, joints: m.joints().length };
+        });
+      });
+  });
+  const named = function (t) { return typeof t === "string" && t.indexOf("joints are not supported on bolza") >= 0; };
+  check("bolza refuses a scene with a joint and a joint added (" + JSON.stringify(r) + ")", named(r.scene) && named(r.added) && r.joints === 0, "");
+  // the joint tool: a press on body 0 and a release on body 1 with the mouse
+  const ends = await page.evaluate(function () {
+    const m = window.manifold, b = m.bodies();
+    m.setTool("joint");
+    m.render();
+    const box = document.getElementById("view").getBoundingClientRect(), k = box.width / document.getElementById("view").width;
+    return [0, 1].map(function (i) { const q = m.project(b[i].p); return [box.left + k * q[0], box.top + k * q[1]]; });
+  });
+  await page.mouse.move(ends[0][0], ends[0][1]);
+  await page.mouse.down();
+  await page.mouse.move(ends[1][0], ends[1][1], { steps: 5 });
+  await page.mouse.up();
+  const tool = await page.evaluate(function () {
+    const m = window.manifold;
+    const out = { joints: m.joints().length, notice: document.getElementById("notice").hidden ? "" : document.getElementById("notice-text").textContent };
+    m.setTool("grab");
+    return out;
+  });
+  check("the joint tool on bolza makes no joint and says why (" + JSON.stringify(tool) + ")", tool.joints === 0 && named(tool.notice), "");
 }
 
 export async function testDisc(check, context, base) {

@@ -62,6 +62,7 @@ uniform vec3 uEye;
 uniform float uTolerance;   // relative depth tolerance
 uniform float uLineWidth;   // outline width in pixels of this buffer
 uniform float uClip;        // > 0: nothing beyond |x| or |z| = uClip (the flat spaces' square)
+uniform float uBall;       // > 0: nothing farther from the origin (the ball the surface is traced in: images beyond it float over nothing)
 in vec3 vWorld;
 in vec3 vColour;
 in vec3 vMark;
@@ -82,6 +83,7 @@ void main() {
   // hidden behind the traced surface (background pixels hide nothing)
   if (P.w > 0.0 && d > P.w * (1.0 + uTolerance) + 1e-3) discard;
   if (uClip > 0.0 && max(abs(vWorld.x), abs(vWorld.z)) > uClip) discard;
+  if (uBall > 0.0 && length(vWorld) > uBall) discard;
 
   vec3 view = normalize(uEye - vWorld);
   vec3 n = texelFetch(uNormal, ij, 0).xyz;
@@ -520,6 +522,7 @@ void main() {
         let half = 0;
         for (const g of images) half = Math.max(half, Math.abs(g[9]) / 2, Math.abs(g[11]) / 2);
         gl.uniform1f(p.uniform("uClip"), half > 0 ? half + IMAGE_BAND : 0);
+        gl.uniform1f(p.uniform("uBall"), frame.flat ? 0 : frame.bounds || 0);
         for (const g of images) {
           gl.uniformMatrix3fv(p.uniform("uImageLinear"), true, g.slice(0, 9));
           gl.uniform3f(p.uniform("uImageShift"), g[9], g[10], g[11]);

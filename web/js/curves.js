@@ -49,6 +49,7 @@ precision highp float;
 uniform highp sampler2D uPosition;
 uniform vec3 uEye;
 uniform float uClip;       // > 0: nothing beyond |x| or |z| = uClip (the flat spaces' square)
+uniform float uBall;       // > 0: nothing farther from the origin (the ball the surface is traced in: images beyond it float over nothing)
 in vec3 vWorld;
 in vec4 vColour;
 out vec4 outColor;
@@ -57,6 +58,7 @@ void main() {
   float d = length(vWorld - uEye);
   if (P.w > 0.0 && d > P.w * 1.01 + 2e-3) discard;
   if (uClip > 0.0 && max(abs(vWorld.x), abs(vWorld.z)) > uClip) discard;
+  if (uBall > 0.0 && length(vWorld) > uBall) discard;
   outColor = vec4(vColour.rgb * vColour.a, vColour.a);
 }
 `;
@@ -148,6 +150,7 @@ void main() {
       let half = 0;
       for (const g of all) half = Math.max(half, Math.abs(g[9]) / 2, Math.abs(g[11]) / 2);
       gl.uniform1f(p.uniform("uClip"), half);
+      gl.uniform1f(p.uniform("uBall"), frame.flat ? 0 : frame.bounds || 0);
       gl.bindVertexArray(this.vao);
       for (const g of all) {
         gl.uniformMatrix3fv(p.uniform("uImageLinear"), true, g.slice(0, 9));

@@ -22,6 +22,9 @@ var ManifoldWebDisc = (function (W) {
   const MIN_ZOOM = 0.1, MAX_ZOOM = 50;
   // how far out in the disc a walk takes hold (nearer the rim a pixel spans too much of the plane)
   const WALK_REACH = 0.98;
+  // wraps a recentring composes at most (each crosses up to four of the
+  // octagon's sides: a boost set from afar may need several)
+  const MAX_RECENTRES = 64;
   /** @type {number[]} */
   const IDENTITY = [1, 0, 0, 0, 1, 0, 0, 0, 1];
 
@@ -66,6 +69,36 @@ vec4 projectToClip(vec3 p) {
       this.boost = IDENTITY.slice();
       this.zoom = DEFAULT_ZOOM;
       this.version = 0; // bumped on every change, so the page knows to redraw
+      /** @type {Manifold.Wrap | null} the space's quotient's wrap (generated), or null */
+      this.wrap = null;
+    }
+
+    // The space whose quotient the view's centre is kept in (its generated
+    // wrapIntoDomain; null: none).
+    /** @param {Manifold.Wrap | null} wrap */
+    setWrap(wrap) {
+      this.wrap = wrap;
+      this.recentre();
+    }
+
+    // On a quotient (the Bolza surface) the view's centre is kept in the
+    // fundamental domain, as HyperRogue keeps its viewer in the current
+    // cell: where a walk takes it out, the boost is composed with the group
+    // element that brings it back. The picture is the same (the world
+    // repeats by the group), and the images drawn about the domain are then
+    // the tiles about the view however far it walks.
+    recentre() {
+      if (!this.wrap) return;
+      for (let k = 0; k < MAX_RECENTRES; k++) {
+        const c = H().apply(...H().inverse(...this.boost), 0, 1, 0);
+        const w = this.wrap(c[0], c[1], c[2]);
+        if (IDENTITY.every(function (x, i) { return Math.abs(w[i] - x) < 1e-12; })) return;
+        // B L⁻¹ puts the view's centre at L c, in the domain (not
+        // renormalised: a walk there and back comes back to 3e-8 as it is,
+        // to 1e-6 renormalised after each recentring, the drift carried
+        // through the pairings' large entries)
+        this.boost = H().compose(...this.boost, ...H().inverse(...w.slice(0, 9)));
+      }
     }
 
     reset() {
@@ -93,6 +126,7 @@ vec4 projectToClip(vec3 p) {
           throw new TypeError("discView.boost must be a Lorentz matrix keeping x^2 - y^2 + z^2 and the upper sheet");
         }
         this.boost = m.slice();
+        this.recentre();
       }
       if (s.zoom !== undefined) this.zoom = s.zoom;
       this.version++;
@@ -136,6 +170,7 @@ vec4 projectToClip(vec3 p) {
       const a = this.viewPoint(model, from, width, height), b = this.viewPoint(model, to, width, height);
       const step = H().compose(...H().translationTo(b[0], b[1], b[2]), ...H().inverse(...H().translationTo(a[0], a[1], a[2])));
       this.boost = H().renormalise(...H().compose(...step, ...this.boost));
+      this.recentre();
       this.version++;
     }
 

@@ -46,7 +46,7 @@ var ManifoldWebFrame = (function (W) {
   // traced surface, and web/js/tools.js the curves over them (geodesic, a
   // throw's preview, trails). drawBodies is the tracer's overlay hook, called after the
   // surface is shaded with the colour buffer bound (frame: gl, width, height,
-  // scale, pixelAngle, positionTexture, normalTexture, viewProjection, eye).
+  // scale, pixelAngle, positionTexture, normalTexture, viewProjection, eye, bounds).
   /** @param {ManifoldWeb.OverlayFrame} frame */
   function drawBodies(frame) {
     frame.bodyDetail = state.options.bodyDetail;
@@ -91,6 +91,7 @@ var ManifoldWebFrame = (function (W) {
     }, function (frame) {
       frame.viewProjection = camera.viewProjection(state.width / state.height, 0.01, 100);
       frame.eye = /** @type {Manifold.Vec3} */ (camera.eye.slice());
+      frame.bounds = state.space ? state.space.bounds : 0;
       if (model !== null) {
         frame.flat = { model: model, boost: drawn.boost, radius: radius * frame.scale };
         frame.pixelAngle = 0; // (chooseForms: a flat view draws every body's whole mesh)

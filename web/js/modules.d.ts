@@ -179,6 +179,8 @@ declare namespace ManifoldWeb {
     viewProjection?: Float32Array;
     eye?: Manifold.Vec3;
     bodyDetail?: Manifold.BodyDetail;
+    /** the radius of the ball the surface is traced in (bodies and curves beyond it are not drawn), or 0 */
+    bounds?: number;
     /** a flat view: its model, its boost (world → view, row by row), the disc's radius in pixels of this buffer */
     flat?: { model: "poincare" | "klein"; boost: Float32Array; radius: number } | null;
   }

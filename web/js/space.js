@@ -102,6 +102,7 @@ var ManifoldWebSpace = (function (W) {
       state.camera.set(space.camera);
       state.camera.maxDistance = 8 * space.bounds;
       state.disc.reset();
+      state.disc.setWrap(space.wrapIntoDomain);
       MW.tools.spaceChanged();
       try {
         MW.scenes.newWorld(how.scene || null, how.bodies);

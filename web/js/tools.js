@@ -268,6 +268,11 @@ var ManifoldWebTools = (function (W) {
   // A press on empty surface point q at CSS pixel `at`.
   /** @param {Manifold.Vec3} q @param {[number, number]} at */
   function press(q, at) {
+    const refused = tools.tool === "joint" && state.world ? W.Manifold.jointsRefused[state.world.name] : undefined;
+    if (refused !== undefined) {
+      state.ui.showNotice("No joint: " + refused + ".");
+      return;
+    }
     const picked = tools.tool === "joint" && state.world ? state.world.pick(q) : null;
     if (tools.tool === "joint" && !picked) {
       state.ui.showNotice("Press on a body to join it (to another body, or to the surface).");

@@ -426,6 +426,8 @@ var ManifoldWebWorld = (function (W) {
       if (!Array.isArray(a)) problem(path, "must be an array of joints");
       return a.map(function (j, k) { return parseJoint(j, path + "[" + k + "]", n); });
     });
+    const refused = W.Manifold.jointsRefused ? W.Manifold.jointsRefused[space] : undefined;
+    if (refused !== undefined && scene.joints.length > 0) problem("$.joints", refused);
     if (scene.joints.length > 2 * Math.max(1, n)) {
       problem("$.joints", scene.joints.length + " joints, more than a world of " + n + " bodies holds (two a body)");
     }
@@ -972,6 +974,8 @@ var ManifoldWebWorld = (function (W) {
       const E = this.engine, a = this.a;
       path = path || "joint";
       if (!E.addJoint) throw new Error("this engine has no joints: rebuild web/gen with `manifold build`");
+      const refused = W.Manifold.jointsRefused ? W.Manifold.jointsRefused[this.name] : undefined;
+      if (refused !== undefined) throw new SceneError(path + ": " + refused);
       if (this.jointCount() >= 2 * this.capacity) {
         const most = this.maxBodies();
         if (this.capacity >= most) throw new SceneError(path + ": " + E.jointProblems["-1"]);

@@ -24,7 +24,6 @@ import Manifold.AD (gaussianCurvature)
 import Manifold.Chart
 import Manifold.Collide (keysPerBody)
 import Manifold.ContactManifold (maxHullCorners)
-import Manifold.Bolza (inradius)
 import Manifold.Disc
 import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, convexRound, hullSize, orientCorners, polygonReach, verticesCode)
 import Manifold.Metric (Metric (..), gaussianCurvatureIn, metricName)
@@ -97,17 +96,13 @@ foldIntoDomain s p = case quotientWrap (spaceQuotient s) of
   Just wrap | spaceMetric s == Minkowski -> wrappedPoint (wrap p)
   _ -> p
 
--- | How far a wrap into the fundamental domain moves a point at least (in
--- R³): consecutive points of a curve further apart than half of it were
--- wrapped between them, and the page breaks the curve there. A lattice's
--- period; on the Bolza surface the chord between the middles of two
--- paired sides (@2 sinh r@, @r@ the inradius); 'Nothing' where points are
--- never wrapped.
-wrapJump :: Quotient -> Maybe Double
-wrapJump = \case
-  Lattice period _ -> Just period
-  OctagonPairings -> Just (2 * sinh inradius)
-  _ -> Nothing
+-- | A point brought into the quotient's fundamental domain, as the page
+-- recentres a walked view by it: the wrap's linear map (row by row), then
+-- the point ('quotientWrap'); 'Nothing' for a quotient with no wrap.
+wrapIntoDomain :: Space -> Maybe (V3 E -> [E])
+wrapIntoDomain s = case quotientWrap (spaceQuotient s) of
+  Just wrap -> Just $ \p -> let Wrapped q (V3 r0 r1 r2) _ = wrap p in concatMap v3 [r0, r1, r2, q]
+  Nothing -> Nothing
 
 -- | Newton steps the tracer takes to put a silhouette hit on the surface
 -- (it starts within a pixel of it; float precision is reached in two).
@@ -134,6 +129,9 @@ spaceScript s = unlines
       Just _ -> printFunction JavaScript "boundary" xyz [evalBoundary s pointSyms]
   , printFunction JavaScript "gravity" xyz (v3 (evalGravity s pointSyms))
   , printFunction JavaScript "curvature" xyz [spaceCurvature s]
+  , case wrapIntoDomain s of
+      Nothing -> "const wrapIntoDomain = null;\n"
+      Just wrap -> printFunction JavaScript "wrapIntoDomain" xyz (wrap pointSyms)
   , unlines procedures
   , "Manifold.spaces[" ++ jsString (spaceName s) ++ "] = {"
   , "  name: " ++ jsString (spaceName s) ++ ","
@@ -150,6 +148,8 @@ spaceScript s = unlines
   , "  images: [" ++ intercalate ", " ["[" ++ intercalate ", " (map num (isoCoefficients g)) ++ "]" | g <- quotientImages (spaceQuotient s)] ++ "],"
   , "  // consecutive points of a curve further apart than this were wrapped into the fundamental domain between them (null: never)"
   , "  wrapJump: " ++ maybe "null" (num . (/ 2)) (wrapJump (spaceQuotient s)) ++ ","
+  , "  // a point brought into the fundamental domain: [the map (9, row by row), the point (3)], or null (no quotient's wrap)"
+  , "  wrapIntoDomain: wrapIntoDomain,"
   , "  // a contact's key: (other body + 1) * keysPerBody + the group's and point's (Manifold.Collide)"
   , "  keysPerBody: " ++ show (keysPerBody (spaceQuotient s)) ++ ","
   , "  bounds: " ++ num (spaceBounds s) ++ ","
@@ -176,6 +176,8 @@ spaceIndexScript spaces = unlines $
   , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
   , "// what a saved contact row to be kept lists after its [key, normal, friction]: the remembered row's fields (Lib/Manifold/World.hs)"
   , "globalThis.Manifold.keptFields = " ++ keptFieldsArray ++ ";"
+  , "// why a space's scenes can have no joints, by space (the spaces not named take joints) (Lib/Manifold/Space.hs)"
+  , "globalThis.Manifold.jointsRefused = {" ++ intercalate ", " [jsString (spaceName s) ++ ": " ++ jsString why | s <- spaces, Just why <- [jointsRefused s]] ++ "};"
   , "// addBody's shape codes (a regular polygon's is its number of sides), a body's size from its shape's code, its two numbers and its given size,"
   , "// and a convex polygon's from its count, its radius and its corners a0, b0, ... a7, b7; whether a count's corners go round a convex polygon (1 or 0) (Lib/Manifold/Hull.hs)"
   , "globalThis.Manifold.shapes = { codes: { circle: " ++ code circleCode ++ ", box: " ++ code boxCode ++ ", capsule: " ++ code capsuleCode
