@@ -102,7 +102,8 @@ var ManifoldWebSpace = (function (W) {
       state.camera.set(space.camera);
       state.camera.maxDistance = 8 * space.bounds;
       state.disc.reset();
-      state.disc.setWrap(space.wrapIntoDomain);
+      // (the flat views are the hyperbolic spaces': a lattice's wrap is not a boost's)
+      state.disc.setWrap(space.metric === "minkowski" ? space.wrapIntoDomain : null);
       MW.tools.spaceChanged();
       try {
         MW.scenes.newWorld(how.scene || null, how.bodies);
