@@ -27,7 +27,7 @@ import url from "node:url";
 import {
   WEB, OUT, launchBrowser, serve, canvasShot, createChecks,
 } from "./lib.mjs";
-import { checkVisibleBodies, testBodies } from "./bodies.mjs";
+import { checkVisibleBodies, shotDifference, testBodies } from "./bodies.mjs";
 import { testPerformance } from "./performance.mjs";
 import { testControls } from "./controls.mjs";
 import { testKeys } from "./keys.mjs";
@@ -240,7 +240,25 @@ async function testSpace(context, base, name) {
   }
   check(name + ": no holes (isolated background pixels inside the surface)", holes.length === 0,
     holes.length + " found" + (holes.length ? ": " + JSON.stringify(holes.slice(0, 5)) : ""));
+
+  // the default scene (quotients drawn at their images, the trumpet's bent
+  // bodies, the flat spaces' clipped squares) drawn in the coarser forms
+  // where they fit is the picture every whole mesh gives
+  const forms = await page.evaluate(function () {
+    const m = window.manifold, auto = m.stats().bodyForms;
+    m.setOptions({ bodyDetail: "mesh" });
+    m.render();
+    return { auto: auto, mesh: m.stats().bodyForms };
+  });
+  const meshShot = await canvasShot(page, path.join(OUT, name + "-noaa-mesh.png"));
+  const d = shotDifference(raw, meshShot, 32);
+  check(name + ": the default scene looks the same drawn in coarser forms where they fit as with every whole mesh (" +
+    forms.auto.fans + " fans, " + forms.auto.coarser + " coarser, " + forms.auto.meshes + " meshes; " + d.differ +
+    " px differ, body px " + d.bodyA + "/" + d.bodyB + ")",
+    forms.mesh.meshes === forms.auto.fans + forms.auto.coarser + forms.auto.meshes &&
+      Math.abs(d.bodyA - d.bodyB) <= 0.05 * d.bodyB + 20 && d.differ <= 0.25 * d.bodyB + 20, "");
   await page.close();
+  report.fans = forms.auto.fans;
   return report;
 }
 
@@ -661,7 +679,12 @@ async function main() {
       if (!spaceWanted(name)) continue;
       const t = Date.now();
       const r = await testSpace(context, server.url, name);
-      if (r) stats[name] = { maxField: r.maxField, maxErr: r.maxErr, ms: Date.now() - t };
+      if (r) stats[name] = { maxField: r.maxField, maxErr: r.maxErr, ms: Date.now() - t, fans: r.fans };
+    }
+    // (the forms check above can fail only where some body is drawn coarser than its mesh)
+    if (Object.keys(stats).length > 1) {
+      check("some space's default scene has bodies drawn as fans", Object.keys(stats).some(function (k) { return stats[k].fans > 0; }),
+        JSON.stringify(Object.keys(stats).map(function (k) { return k + " " + stats[k].fans; })));
     }
     // each part in turn, its time printed as it ends (the suite has a time budget)
     const parts = {

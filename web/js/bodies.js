@@ -524,7 +524,7 @@ void main() {
         gl.uniform1f(p.uniform("uClip"), half > 0 ? half + IMAGE_BAND : 0);
         gl.uniform1f(p.uniform("uBall"), frame.flat ? 0 : frame.bounds || 0);
         for (const g of images) {
-          gl.uniformMatrix3fv(p.uniform("uImageLinear"), true, g.slice(0, 9));
+          gl.uniformMatrix3fv(p.uniform("uImageLinear"), true, g, 0, 9); // (the linear part: no copy a draw)
           gl.uniform3f(p.uniform("uImageShift"), g[9], g[10], g[11]);
           gl.drawElements(gl.TRIANGLES, this.indexCount, gl.UNSIGNED_INT, 0);
         }
