@@ -268,8 +268,8 @@ var ManifoldWebTools = (function (W) {
   // A press on empty surface point q at CSS pixel `at`.
   /** @param {Manifold.Vec3} q @param {[number, number]} at */
   function press(q, at) {
-    const refused = tools.tool === "joint" && state.world ? W.Manifold.jointsRefused[state.world.name] : undefined;
-    if (refused !== undefined) {
+    const refused = tools.tool === "joint" && state.world ? MW.world.jointsRefused(state.world.name) : null;
+    if (refused !== null) {
       state.ui.showNotice("No joint: " + refused + ".");
       return;
     }

@@ -390,6 +390,14 @@ var ManifoldWebWorld = (function (W) {
     return { eye: eye, target: target, up: up, fov: fov };
   }
 
+  // Why space `name`'s scenes can have no joints (generated:
+  // Manifold.jointsRefused), or null.
+  /** @param {string} name @returns {string | null} */
+  function jointsRefused(name) {
+    const why = W.Manifold.jointsRefused;
+    return why && Object.prototype.hasOwnProperty.call(why, name) ? why[name] : null;
+  }
+
   // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
   /** @param {unknown} json @param {string[]} spaceNames @returns {ManifoldWeb.ParsedScene} */
   function parseScene(json, spaceNames) {
@@ -426,8 +434,8 @@ var ManifoldWebWorld = (function (W) {
       if (!Array.isArray(a)) problem(path, "must be an array of joints");
       return a.map(function (j, k) { return parseJoint(j, path + "[" + k + "]", n); });
     });
-    const refused = W.Manifold.jointsRefused ? W.Manifold.jointsRefused[space] : undefined;
-    if (refused !== undefined && scene.joints.length > 0) problem("$.joints", refused);
+    const refused = jointsRefused(space);
+    if (refused !== null && scene.joints.length > 0) problem("$.joints", refused);
     if (scene.joints.length > 2 * Math.max(1, n)) {
       problem("$.joints", scene.joints.length + " joints, more than a world of " + n + " bodies holds (two a body)");
     }
@@ -974,8 +982,8 @@ var ManifoldWebWorld = (function (W) {
       const E = this.engine, a = this.a;
       path = path || "joint";
       if (!E.addJoint) throw new Error("this engine has no joints: rebuild web/gen with `manifold build`");
-      const refused = W.Manifold.jointsRefused ? W.Manifold.jointsRefused[this.name] : undefined;
-      if (refused !== undefined) throw new SceneError(path + ": " + refused);
+      const refused = jointsRefused(this.name);
+      if (refused !== null) throw new SceneError(path + ": " + refused);
       if (this.jointCount() >= 2 * this.capacity) {
         const most = this.maxBodies();
         if (this.capacity >= most) throw new SceneError(path + ": " + E.jointProblems["-1"]);
@@ -1338,6 +1346,7 @@ var ManifoldWebWorld = (function (W) {
     Clock: Clock,
     SceneError: SceneError,
     parseScene: parseScene,
+    jointsRefused: jointsRefused,
     parseBody: parseBody,
     parseJoint: parseJoint,
     keyProblem: keyProblem,
