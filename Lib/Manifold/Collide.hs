@@ -32,7 +32,7 @@ module Manifold.Collide
   , imageKeyGroup
   ) where
 
-import Control.Monad (foldM_, forM_, when)
+import Control.Monad (foldM_, forM_, unless, when)
 import Linear.Metric (dot)
 import Linear.V2 (V2 (..))
 import Linear.V3 (V3 (..), cross)
@@ -919,7 +919,7 @@ outlineBoundary sp l bf w i = do
 --
 -- Only a body whose rays turn (the chord from the centre to some outline
 -- vertex is under 0.8 of the ray's length) is tested, which flat and gently
--- curved places never trigger.
+-- curved places never trigger; a flat space's step leaves the test out.
 --
 -- A subroutine of its own in the staged step: in line, its loops made the
 -- collision phase of the spaces with self-contact too big for V8 to
@@ -1098,7 +1098,9 @@ collideAwake sp l w = do
     -- images unrolled would be 48 copies of the search
     when (images > 0) $ forEach (fromIntegral images) $ \k -> nearPairs sp l w i (toScalar k + 1) False
     keepOr metric w i (-1) (fromIntegral (fromEnum BoundaryKey * keysPerGroup)) (boundaryContacts sp l w i)
-    selfContacts sp l w i
+    -- (on a plane every ray is straight, so no body's rays ever turn and
+    -- the test below never passes: it is left out of a flat space's step)
+    unless (hasConstantGradient (spaceField sp)) (selfContacts sp l w i)
 
 -- | Body @i@'s contacts with the bodies near its image under the table's
 -- isometry @image@ (0, the identity, for its contacts in place, @direct@,

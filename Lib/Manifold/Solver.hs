@@ -326,12 +326,9 @@ sweepRows useBias metric w = do
   forEach (toIndex nc) $ \c -> do
     a <- toIndex <$> readContact w c CA
     b <- readContact w c CB
-    tangent <- readRow w c TaX TbX
     normal <- readRow w c JaX JbX
     scale <- readContact w c CSelfScale
     ln <- readContact w c ImpulseN
-    lt <- readContact w c ImpulseT
-    kt <- readContact w c TangentMass
     kn <- readContact w c NormalMass
     penetration <- readContact w c CPenetration
     -- both bodies' velocities are read once and written once (a row
@@ -392,14 +389,19 @@ sweepRows useBias metric w = do
     writeContact w c ImpulseN ln'
     readContact w c CTotalImpulse >>= writeContact w c CTotalImpulse . (+ (ln' - ln))
     (va1, vb1) <- apply normal (ln' - ln) va0 vb0
-    vt <- along tangent va1 vb1
     -- friction in the relaxing solve only (as Box2D v3 does now): the
-    -- biased solve's normal impulse still holds the push-out
-    mu <- readContact w c CFriction
-    let limit = mu * ln'
-    lt' <- if useBias then pure lt else share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
-    writeContact w c ImpulseT lt'
-    (Vel va2 oa2, Vel vb2 ob2) <- apply tangent (lt' - lt) va1 vb1
+    -- biased solve's normal impulse still holds the push-out (its friction
+    -- row is left as it is, not applied as a change of zero)
+    (Vel va2 oa2, Vel vb2 ob2) <- if useBias then pure (va1, vb1) else do
+      tangent <- readRow w c TaX TbX
+      lt <- readContact w c ImpulseT
+      kt <- readContact w c TangentMass
+      vt <- along tangent va1 vb1
+      mu <- readContact w c CFriction
+      let limit = mu * ln'
+      lt' <- share (finiteOr0 (clampF (negate limit) limit (lt - scale * vt * kt)))
+      writeContact w c ImpulseT lt'
+      apply tangent (lt' - lt) va1 vb1
     write3 (wVel w) a va2
     writeSlot w a Omega oa2
     whenPositive hasB $ do
