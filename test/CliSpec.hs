@@ -282,16 +282,15 @@ spec = do
 
   describe "manifold dump-step and manifold bench" $ do
     it "dump-step prints a space's compiled step as Haskell: every phase and subroutine, over the world's arrays (a flat space's without self-contact)" $ do
+      let definedIn out = [ takeWhile (/= ' ') l | l <- lines (BC.unpack (BL.toStrict out)), " :: Arr -> " `isInfixOf` l ]
       (code, out, err) <- run ["dump-step", "torus"]
       (code, err) `shouldBe` (ExitSuccess, "")
-      let text = lines (BC.unpack (BL.toStrict out))
-          defined = [ takeWhile (/= ' ') l | l <- text, " :: Arr -> " `isInfixOf` l ]
+      let defined = definedIn out
       defined `shouldBe` ["stepWake", "stepCollide", "keepContacts", "pairCircles", "pairHulls", "pairOutlines", "selfContacts", "markTouched", "stepPrepare", "prepareJoint", "stepSubsteps", "substepGravity", "warmStartJoints", "warmStart", "mouseJoint", "solveJoints", "solveSweep", "substepMove", "relaxJoints", "relaxSweep", "stepFinish", "restitution", "stepPolygonise", "walkAllCorners", "stepSleep"]
       -- a plane's rays never turn, so a flat space's step has no self-contact stage
       (codeFlat, outFlat, errFlat) <- run ["dump-step", "rectangle"]
       (codeFlat, errFlat) `shouldBe` (ExitSuccess, "")
-      let flatDefined = [ takeWhile (/= ' ') l | l <- lines (BC.unpack (BL.toStrict outFlat)), " :: Arr -> " `isInfixOf` l ]
-      flatDefined `shouldBe` filter (/= "selfContacts") defined
+      definedIn outFlat `shouldBe` filter (/= "selfContacts") defined
       (code', out', err') <- run ["dump-step", "bowl"]
       (code', out', "unknown space \"bowl\"; valid spaces: plane" `isInfixOf` err') `shouldBe` (ExitFailure 2, "", True)
     it "bench --json times a scene with the compiled step and with --generic" $
