@@ -594,15 +594,38 @@ spec = do
       yOf s `shouldSatisfy` (< yOf b - 1)
       abs (evalField trumpet (bsPos b)) `shouldSatisfy` (< 1e-6)
 
-    it "keeps a jammed circle jammed for 10 000 steps" $ do
-      w <- build jamScenario
-      speeds <- forM [1 .. 10 :: Int] $ \_ -> steps w 1000 >> speed <$> readBody w 0
-      b <- readBody w 0
-      labelled "jam: circle 0.5 speed at 1000, 2000, ..., 10000 steps" (unwords (map fmt speeds))
-      labelled "jam: circle 0.5 y after 10000 steps" (fmt (yOf b))
-      unless (maximum speeds < 1e-6 && abs (yOf b + 1.6991) < 0.01) $
-        pendingWith ("ENGINE DEFECT: the jam is unstable: a jammed body's speed grows about 35-fold per 1000 steps "
-          ++ "and it breaks loose (speeds " ++ unwords (map fmt speeds) ++ "; y " ++ fmt (yOf b) ++ ")")
+    -- (awake: asleep, a jammed body holds whatever its self-contact does.
+    -- With the push taken in the tangent plane at the crossing, on the far
+    -- side of the neck, the circle of 0.3 crept round the neck from
+    -- round-off, its speed e-fold every 72 steps: 5e-5 at 2000 steps, 0.07
+    -- at 3000, and it kept circling; 0.4 and 0.5 held)
+    it "keeps jammed circles of 0.3, 0.4 and 0.5 still for 6000 steps with sleeping off" $
+      forM_ [0.3, 0.4, 0.5] $ \size -> do
+        w <- build (awake (trumpetScenario "jam" circle size))
+        steps w 1000
+        jammed <- readBody w 0
+        speeds <- forM [2 .. 6 :: Int] $ \_ -> steps w 1000 >> speed <$> readBody w 0
+        b <- readBody w 0
+        labelled ("jam: circle " ++ fmt size ++ ": y at 1000 steps, speeds at 2000, ..., 6000")
+          (fmt (yOf jammed) ++ "; " ++ unwords (map fmt speeds))
+        (size, maximum speeds < 1e-6, abs (yOf b - yOf jammed) < 1e-6, yOf jammed < -1.5) `shouldBe` (size, True, True, True)
+
+    -- (the line between two bodies either side of a neck narrower than
+    -- they are wide runs through the neck, so each side of their row is
+    -- short, 0.11 here: at the push-out in the row's own units they rose
+    -- 0.55 in the first 50 steps, 1.1 a second)
+    it "pushes two circles wedged either side of the trumpet's neck apart no faster than the push-out" $ do
+      let y0 = -2.3
+          r0 = exp y0
+      w <- build (Scenario "wedge" trumpet defaultParams { pSleep = False }
+                    [dyn circle 0.25 (V3 r0 y0 0) 0 0 0, dyn circle 0.25 (V3 (negate r0) y0 0) 0 0 0] 0 [])
+      heights <- forM [1 .. 50 :: Int] $ \_ -> steps w 10 >> mapM (fmap yOf . readBody w) [0, 1]
+      let hs = [y0, y0] : heights
+          rises = zipWith (\a b -> maximum (zipWith (-) b a) / (10 * pDt defaultParams)) hs (tail hs)
+      labelled "wedge: the circles' heights every 10 steps (first), their fastest rise a second" (unwords (map (fmt . head) heights) ++ "; " ++ fmt (maximum rises))
+      maximum rises `shouldSatisfy` (<= pPushout defaultParams)
+      -- and they still rise to where two such circles jam (y = -1.535)
+      minimum (last heights) `shouldSatisfy` (> -1.6)
 
     it "does not give a square wedged in the trumpet's neck energy (self-contact)" $ do
       w <- build jamSquareScenario
@@ -611,10 +634,9 @@ spec = do
       es <- forM [1 .. 600 :: Int] $ \_ -> stepNative w >> bodyEnergy w g 0
       let gain = maximum es - e0
       labelled "trumpet square 0.5: initial energy, largest energy in 600 steps" (fmt e0 ++ ", " ++ fmt (maximum es))
-      unless (gain < 0.01 * abs e0 + 1e-3) $
-        pendingWith ("ENGINE DEFECT: self-contact adds energy: a square of size 0.5 thrown into the trumpet "
-          ++ "goes from energy " ++ fmt e0 ++ " to " ++ fmt (maximum es) ++ " (the self-contact is first found "
-          ++ "at depth ~0.12 and its Baumgarte bias 0.6·β·depth/dt throws the body back up the horn)")
+      -- (the first self-contact is found at depth ~0.12: a Baumgarte bias of
+      -- 0.6·β·depth/dt once threw the body back up the horn)
+      gain `shouldSatisfy` (< 0.01 * abs e0 + 1e-3)
 
   describe "boundaries" $ do
     it "keeps 24 bodies dropped into the hemisphere inside it for 2000 steps (every outline vertex b(p) >= -2 % of size)" $ do

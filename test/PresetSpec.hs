@@ -122,11 +122,16 @@ spec = describe "Manifold.Presets" $ do
     [(a, _), (b, _)] <- runPreset "cube-stack" [0, 1000]
     mostMoved a b `shouldSatisfy` (< 0.2 * 0.1)
 
-  it "the trumpet's bodies slide into its neck and jam there: from 10 s to 30 s every one stays between y = -2.7 and -0.3" $ do
+  -- (a jammed pile of fourteen is chaotic: started with each body turned
+  -- by up to 0.1 rad about the axis, 32 runs went as low as -2.80 and as
+  -- high as 0.06 at these samples, most between -2.6 and -0.4; a body
+  -- falling through the neck passes -3 within a second, and before the
+  -- push-out was a speed of the bodies the pile threw bodies up to 1.6)
+  it "the trumpet's bodies slide into its neck and jam there: from 10 s to 30 s every one stays between y = -3 and 0.3" $ do
     states <- runPreset "trumpet-jam" (1000 : replicate 4 500)
     let ys = [y | (bodies, _) <- states, b <- bodies, let V3 _ y _ = bsPos b]
-    minimum ys `shouldSatisfy` (> -2.7)
-    maximum ys `shouldSatisfy` (< -0.3)
+    minimum ys `shouldSatisfy` (> -3)
+    maximum ys `shouldSatisfy` (< 0.3)
 
   it "on the projective plane the moving body meets the other's antipodal image, never the body, and sets it moving" $ do
     states <- runPreset "projective-plane-image" (replicate 80 10)

@@ -917,6 +917,14 @@ outlineBoundary sp l bf w i = do
 -- friction, and turning it does not undo the wrap (with the angular part,
 -- the jam slowly spun itself loose).
 --
+-- The row's direction is every crossing's push, weighted by its depth, in
+-- the body's own tangent plane; its depth the deepest crossing's. (The
+-- deepest crossing's push alone, pressed deeper by a pile, sometimes came
+-- from two rays heading up and sideways and pushed the body further into
+-- the neck; taken in the tangent plane at the crossing, on the far side of
+-- the neck, it turned with the crossing, and a circle jammed at rest crept
+-- round the neck from round-off: docs/decisions/self-contact-push.md.)
+--
 -- Only a body whose rays turn (the chord from the centre to some outline
 -- vertex is under 0.8 of the ray's length) is tested, which flat and gently
 -- curved places never trigger; a flat space's step leaves the test out.
@@ -959,6 +967,17 @@ selfContactsOf sp l w i = do
     mx <- newRef 0
     my <- newRef 0
     mz <- newRef 0
+    -- a crossing found: its push (the negated mean of its rays' starting
+    -- directions) added in, weighted by its depth; the row's depth and
+    -- point are the deepest crossing's
+    let crossing depth (V3 x y z) (V3 u v q) = do
+          modifyRef mx (+ depth * u)
+          modifyRef my (+ depth * v)
+          modifyRef mz (+ depth * q)
+          best <- readRef deepest
+          whenPositive (depth - best) $ do
+            writeRef deepest depth
+            writeRef px x >> writeRef py y >> writeRef pz z
     -- the longest of the body's ray segments: two segments whose midpoints
     -- lie farther apart than that plus 0.3 h are more than 0.3 h apart
     -- everywhere, and most of the pairs below are (a wrapped body's rays
@@ -991,15 +1010,11 @@ selfContactsOf sp l w i = do
                   arc = rd * (toScalar k + s) / fromIntegral ns
                   arc' = rd' * (toScalar k' + t) / fromIntegral ns
                   depth = 0.5 * ((rd - arc) + (rd' - arc'))
-              best <- readRef deepest
-              whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
-                writeRef deepest depth
+              whenPositive (minF (0.3 * h - gap) depth) $ do
                 first <- vertex d 1
                 first' <- vertex d' 1
-                let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
-                    V3 u v q = negated (normalizeIn metric (first ^-^ c) ^+^ normalizeIn metric (first' ^-^ c))
-                writeRef px x >> writeRef py y >> writeRef pz z
-                writeRef mx u >> writeRef my v >> writeRef mz q
+                crossing depth (a0 ^+^ s *^ (a1 ^-^ a0))
+                  (negated (normalizeIn metric (first ^-^ c) ^+^ normalizeIn metric (first' ^-^ c)))
     -- A hull's corners make rays of their own (a capsule's: its segment's
     -- ends on either side, at its radius). A card or a capsule wrapped
     -- round the neck has only two long outline rays, exactly opposite (no
@@ -1048,22 +1063,16 @@ selfContactsOf sp l w i = do
                 arc = lenJ * (toScalar k + s) / steps
                 arc' = lenJ' * (toScalar k' + t) / steps
                 depth = 0.5 * ((lenJ - arc) + (lenJ' - arc'))
-            best <- readRef deepest
-            whenPositive (minF (0.3 * h - gap) (depth - best)) $ do
-              writeRef deepest depth
-              let V3 x y z = a0 ^+^ s *^ (a1 ^-^ a0)
-                  V3 u v q = negated mean
-              writeRef px x >> writeRef py y >> writeRef pz z
-              writeRef mx u >> writeRef my v >> writeRef mz q
+            whenPositive (minF (0.3 * h - gap) depth) $
+              crossing depth (a0 ^+^ s *^ (a1 ^-^ a0)) (negated mean)
     best <- readRef deepest
     whenPositive best $ do
       point <- V3 <$> readRef px <*> readRef py <*> readRef pz
-      m0 <- V3 <$> readRef mx <*> readRef my <*> readRef mz
-      n <- share3 (unitNormalAt point)
-      dir <- share3 (normalizeIn metric (tangentProjection metric n m0))
+      push <- V3 <$> readRef mx <*> readRef my <*> readRef mz
+      n <- read3 (wNormal w) i
+      dir <- share3 (normalizeIn metric (tangentProjection metric n push))
       emitContact metric w i selfKey i (-1) point dir point dir best 0.6 0 id
   where
-    unitNormalAt = normalOf (spaceMetric sp) . gradFn (spaceField sp)
     selfKey = fromIntegral (fromEnum SelfKey) * fromIntegral keysPerGroup
 
 -- | Every contact of this step, owned by the lower-numbered body of each

@@ -371,7 +371,15 @@ sweepRows useBias metric w = do
         biasRateC <- readContact w c CBiasRate
         msC <- readContact w c CMassScale
         isC <- readContact w c CImpulseScale
-        soft <- share (maxF (biasRateC * separation) (negate pushout))
+        -- push-out is a speed of the bodies, and a row shorter than a unit
+        -- moves them by more than its own speed: its push lies far from a
+        -- body's tangent plane (two bodies on either side of a neck narrower
+        -- than they are wide, whose line runs through the neck), and at
+        -- the push-out of its own units it threw both bodies up the neck
+        -- at 1.4 a second, pumping a jammed pile; rows within a percent of
+        -- a unit, every row on a flat space, are left as they were
+        reach <- share (maxF (quadranceIn metric (rowA normal)) (quadranceIn metric (rowB normal)))
+        soft <- share (maxF (biasRateC * separation) (negate pushout * select (reach - 0.99) 1 (sqrt reach)))
         -- A gap is a hard row, an overlap beyond the slop a soft one; in
         -- between, over the slop's width, the row turns soft gradually.
         -- (Switched at 0, as Box2D does, a resting contact, which sits at
