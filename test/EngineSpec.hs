@@ -619,6 +619,8 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}", withBody (body ", \"size\": 0.3")
           -- read alike
           , "{\"space\": \"plane\"}", withBody (body "")
+          -- a left-out contactHertz follows the step (0.6 cycles a step), a given one is the scene's
+          , "{\"space\": \"plane\", \"dt\": 0.0037}", "{\"space\": \"plane\", \"dt\": 0.0037, \"contactHertz\": 45}"
           , "{\"space\": \"torus\", \"dt\": 0.02, \"gravity\": false, \"iterations\": 12, \"friction\": 0.1, \"restitution\": 0.5, \"bodies\": ["
               ++ body ", \"density\": 2, \"friction\": 0.8, \"restitution\": 0.25, \"static\": true, \"v\": [0, 0.5, 0], \"angle\": 0.3, \"omega\": -1, \"impulses\": [[64, 0.25, -0.01], [129, 0, 0.5]]"
               ++ ", {\"shape\": {\"polygon\": 7}, \"size\": 0.2, \"p\": [0, 0.4, 1]}]}"
@@ -652,8 +654,11 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
       , "process.stdout.write(JSON.stringify(results) + '\\n');" ]
     page <- maybe (fail ("node printed no results: " ++ take 300 out)) pure (A.decode (BL.pack (last ("" : lines out))))
     [(t, n, j) | (t, n, j) <- zip3 texts (map native texts) page, n /= j] `shouldBe` []
-    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 9
+    length [() | Left _ <- map (parseScene . BL.pack) texts] `shouldBe` length texts - 11
     fmap (pDt . sceneParams) (parseScene "{\"space\": \"plane\", \"dt\": 0, \"dt\": 0.02}") `shouldBe` Right 0.02
+    let hertz t = fmap (pContactHertz . sceneParams) (parseScene t)
+    (hertz "{\"space\": \"plane\"}", hertz "{\"space\": \"plane\", \"dt\": 0.005}", hertz "{\"space\": \"plane\", \"dt\": 0.005, \"contactHertz\": 45}")
+      `shouldBe` (Right 60, Right 120, Right 45)
     fmap (map bsSize . sceneBodies) (parseScene (BL.pack (withBody (body ", \"size\": 0.3")))) `shouldBe` Right [0.3]
 
   it "reads a scene it printed back as the same scene (remembered impulses too)" $ do

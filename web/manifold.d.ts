@@ -172,6 +172,8 @@ declare namespace Manifold {
     /** the engine parameter it sets (a name of Engine.params) */
     param: ParamName;
     default: number | boolean;
+    /** a key whose default follows the scene's step: the default is this over the scene's dt */
+    perStep?: number;
     /** "switch": true or false (the parameter is 1 or 0) */
     kind: "number" | "switch";
     /** the value must be greater than this … */

@@ -16,6 +16,8 @@ module Manifold.Params
   , Range (..)
   , Control (..)
   , sceneKeys
+  , perStepDefault
+  , keyDefault
   , materialKeys
   , bodyKeys
   , outOfRange
@@ -50,12 +52,12 @@ data Params = Params
   , pKeepContacts :: Bool -- ^ a pair that has hardly moved keeps last step's contact points ("Manifold.Collide")
   } deriving (Show, Eq)
 
--- | What a world starts with and a scene gets for a key it leaves out: four
--- sub-steps of one solve each, and contacts as springs of 60 Hz with a
--- damping ratio of 10: Box2D v3's 30 Hz and 10 made as stiff, for a body's
--- size, as they are in Box2D's units (a spring's sag under weight, g/ω²,
--- against 1 m boxes under 10 m/s² there, 0.03–0.2 here under 4; see
--- docs/decisions/soft-step.md).
+-- | What a world starts with and a scene gets for a key it leaves out
+-- (but see 'perStepDefault'): four sub-steps of one solve each, and
+-- contacts as springs of 60 Hz with a damping ratio of 10: Box2D v3's 30 Hz
+-- and 10 made as stiff, for a body's size, as they are in Box2D's units (a
+-- spring's sag under weight, g/ω², against 1 m boxes under 10 m/s² there,
+-- 0.03–0.2 here under 4; see docs/decisions/soft-step.md).
 defaultParams :: Params
 defaultParams = Params
   { pDt = 0.01, pGravity = True, pSubsteps = 4, pIterations = 1, pFriction = 0.4, pRestitution = 0
@@ -172,6 +174,27 @@ sceneKeys =
   , SceneKey "keepContacts" KeepContacts Switch Nothing
   ]
   where slider label help lo hi step = Just (Control label help (Just (lo, hi, step)))
+
+-- | The default of a scene key that follows the scene's step, as so many
+-- of it a step: the contact stiffness, 0.6 cycles a step (60 Hz at the
+-- default step of 0.01). A scene scaled by @k@ with its step by @√k@ (the
+-- same @g·dt²@ against its bodies' size, as the Solver2D scenes are set at
+-- any scale) then has contacts as stiff for its bodies, and behaves alike;
+-- a fixed 60 Hz was half as stiff as Box2D's at the scale of 0.05, where
+-- Box2D's stacks stand and these sank (docs/decisions/contact-stiffness-per-step.md).
+--
+-- >>> maybe 0 (/ pDt defaultParams) (perStepDefault ContactHertz) == pContactHertz defaultParams
+-- True
+perStepDefault :: Param -> Maybe Double
+perStepDefault = \case
+  ContactHertz -> Just 0.6
+  _ -> Nothing
+
+-- | What a scene that leaves key @k@ out gets, given the parameters its
+-- keys before @k@ set: the 'perStepDefault' over the scene's step, or
+-- 'defaultParams'' value.
+keyDefault :: Params -> SceneKey -> Double
+keyDefault p k = maybe (paramValue defaultParams (keyParam k)) (/ pDt p) (perStepDefault (keyParam k))
 
 -- | The scene keys a body may give too, as its own material (its friction
 -- coefficient and restitution, which it then has instead of the scene's):

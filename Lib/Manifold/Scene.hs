@@ -373,9 +373,10 @@ joint n path v = do
       A.Array xs | V.length xs == k -> forM (zip [0 :: Int ..] (V.toList xs)) $ \(i, x) -> number (at ++ "[" ++ show i ++ "]") x
       _ -> problem at ("must be an array of " ++ show k ++ " numbers, " ++ what)
 
--- | A scene key's value, if the scene gives it, set in the parameters.
+-- | A scene key's value set in the parameters: the scene's, or its
+-- 'keyDefault' (the keys are read in order, the step first).
 sceneKey :: KM.KeyMap A.Value -> Params -> SceneKey -> P Params
-sceneKey o p k = optional "$" o (keyName k) p $ \path v -> do
+sceneKey o p k = optional "$" o (keyName k) (setParam (keyParam k) (keyDefault p k) p) $ \path v -> do
   x <- case keyRange k of
     Switch -> (\b -> if b then 1 else 0) <$> boolean path v
     r -> number path v >>= \x -> maybe (pure x) (problem path) (outOfRange r x)

@@ -419,8 +419,9 @@ var ManifoldWebWorld = (function (W) {
     // the parameters first, then the bodies: the order Manifold.Scene
     // checks them in, so that a scene with two problems names the same one
     const scene = /** @type {ManifoldWeb.ParsedScene} */ ({ space: space });
-    keys.forEach(function (k) { // a key the scene leaves out takes the engine's default
-      scene[k.key] = optional("$", o, k.key, k.default, function (path, x) { return keyValue(path, x, k); });
+    keys.forEach(function (k) { // a key the scene leaves out takes the engine's default (or so many a step: dt is read first)
+      const fallback = k.perStep === undefined ? k.default : k.perStep / /** @type {number} */ (scene.dt);
+      scene[k.key] = optional("$", o, k.key, fallback, function (path, x) { return keyValue(path, x, k); });
     });
     scene.bodies = optional("$", o, "bodies", [], function (path, a) {
       if (!Array.isArray(a)) problem(path, "must be an array of bodies");

@@ -114,7 +114,8 @@ engineObject l subroutines =
 -- array of @{ key, param, default, kind, … }@: the key, the parameter it
 -- sets (its name in the engine object's @params@ and @defaults@), the
 -- value a scene without it gets, its range ('rangeDescription'), which
--- the page's scene reader and @setSimulation@ check, and the control the
+-- the page's scene reader and @setSimulation@ check (and, for a key whose
+-- default follows the step, @perStep@: 'perStepDefault'), and the control the
 -- page makes for it (@control: { label, help, lo, hi, step }@, 'keyControl').
 sceneKeysArray :: String
 sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
@@ -131,6 +132,7 @@ sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
       , ("default", let x = paramValue defaultParams (keyParam k) in case keyRange k of
             Switch -> if x > 0 then "true" else "false"
             _ -> show x) ]
+      ++ [ ("perStep", show x) | Just x <- [perStepDefault (keyParam k)] ]
 
 -- | A joint field's name as the page's key, without its @J@:
 -- @JRadiusA@ → @radiusA@, @JA@ → @a@, @R@-less fields as 'jsName'.
