@@ -39,8 +39,25 @@ anchorWalkSteps = 4
 -- | Where a body's anchor at polar coordinates @(r, θ)@ is now: the
 -- geodesic from its centre, in the direction at angle @θ@ from the body's
 -- direction, as long as @r@.
+--
+-- The same walk as 'anchorWalk', staged as a loop: its geodesic step, with
+-- the field's gradient and projection in it, is printed once, not
+-- 'anchorWalkSteps' times (a joint's preparation walks eight anchors, and
+-- unrolled those walks were a third of a curved space's compiled step).
 anchorPoint :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m (V3 (Scalar m))
-anchorPoint sp f r theta = last <$> anchorWalk sp f r theta
+anchorPoint sp f r theta = do
+  let psi = bfAngle f + theta
+      h = r / fromIntegral anchorWalkSteps
+  q <- mapM newRef (bfCentre f)
+  d <- mapM newRef (cosF psi *^ bfU f ^+^ sinF psi *^ bfW f)
+  forEach (fromIntegral anchorWalkSteps) $ \_ -> do
+    here <- (,) <$> mapM readRef q <*> mapM readRef d
+    let (q1, d1) = geodesicStep (spaceMetric sp) (spaceField sp) h here
+    q' <- share3 q1
+    d' <- share3 d1
+    sequence_ (writeRef <$> q <*> q')
+    sequence_ (writeRef <$> d <*> d')
+  mapM readRef q
 
 -- | An anchor and how it moves with its body, to first order: per unit of
 -- the body's slide along its axis @u@ and along @w@ (the centre moved

@@ -14,7 +14,7 @@
 module Manifold.Compile
   ( CompiledStep
   , compiledStep
-  , sharedSubroutines
+  , sharedFunctions
   , compiledLayout
   , dumpStep
   ) where
@@ -29,7 +29,7 @@ import Manifold.Compiled.Runtime (CompiledStep (..), newLocals, primitiveArray, 
 import Manifold.Program (phaseFunction, stagedPhases, stepProcedures, worldParams)
 import Manifold.Space
 import Manifold.Spaces (plane)
-import Manifold.Stage.Code (Check, Function (..))
+import Manifold.Stage.Code (Check, Function (..), calledNames)
 import Manifold.Stage.Imp (localsArray, stageFunctions)
 import Manifold.Stage.Print (Target (..), printProcedure)
 import Manifold.Stage.Splice (functionDecs)
@@ -47,18 +47,18 @@ compiledLayout = (layout 0) { walkLoops = LoopPerNewtonIteration }
 stepFunctions :: Space -> [Function Check]
 stepFunctions sp = stageFunctions Haskell (stepProcedures sp compiledLayout)
 
--- | The subroutines of the plane's step. Most of the step's subroutines
--- (the pair narrow phase, the solver's sweeps) do not touch the space, so
--- they are spliced once, in "Manifold.Compiled.Shared", and every space
--- whose subroutine is the same tree calls that one: 14 copies of them
--- took a third more compile time.
-referenceSubroutines :: [Function Check]
-referenceSubroutines = [ f | f <- stepFunctions plane, fnName f `notElem` phases ]
-  where phases = [ phaseFunction name | (name, _) <- stagedPhases ]
+-- | The plane's step: its phases and subroutines. Most of a step's
+-- subroutines (the pair narrow phase, the solver's sweeps) and several of
+-- its phases (waking, sleeping, the contacts' preparation) do not touch the
+-- space, so they are spliced once, in "Manifold.Compiled.Shared", and every
+-- space whose function is the same tree calls that one: 14 copies of the
+-- subroutines took a third more compile time.
+referenceFunctions :: [Function Check]
+referenceFunctions = stepFunctions plane
 
 -- | The declarations of "Manifold.Compiled.Shared".
-sharedSubroutines :: Q [Dec]
-sharedSubroutines = pure (concatMap (functionDecs mkName) referenceSubroutines)
+sharedFunctions :: Q [Dec]
+sharedFunctions = pure (concatMap (functionDecs mkName) referenceFunctions)
 
 -- | A subroutine of "Manifold.Compiled.Shared", by its global name (so a
 -- splice anywhere calls it without importing the module).
@@ -66,10 +66,22 @@ sharedName :: String -> Name
 sharedName = mkNameG_v package "Manifold.Compiled.Shared"
   where package = fromMaybe (error "compiledStep: no package for Manifold.Compiled.Runtime") (namePackage 'newLocals)
 
+-- | Of a space's functions that are the same trees as the plane's, those
+-- that can be the plane's: a phase printed alike calls its subroutines by
+-- name, so where one of those is the space's own, the phase must be its
+-- own too (and so must whatever calls it).
+sharedWith :: [Function Check] -> [String]
+sharedWith same
+  | length kept == length same = map fnName same
+  | otherwise = sharedWith kept
+  where kept = [ f | f <- same, all (`elem` map fnName same) (calledNames f) ]
+
 -- | A space's compiled step, as an expression of type 'CompiledStep'.
 compiledStep :: Space -> Q Exp
 compiledStep sp = do
-  let (shared, own) = partition (`elem` referenceSubroutines) (stepFunctions sp)
+  let (shared, own) = partition ((`elem` sharedNames) . fnName) functions
+      functions = stepFunctions sp
+      sharedNames = sharedWith [ f | f <- functions, f `elem` referenceFunctions ]
       callee n | n `elem` map fnName shared = sharedName n
                | otherwise = mkName n
   applyTo <- newName "applyTo"
@@ -85,7 +97,7 @@ compiledStep sp = do
         , Match WildP (NormalB (AppE (VarE 'error) (LitE (StringL
             ("the compiled step of " ++ spaceName sp ++ ": the world's arrays are not the ones it was made for"))))) []
         ])) []]
-      phases = ListE [ TupE [Just (LitE (StringL name)), Just (AppE (VarE applyTo) (VarE (mkName (phaseFunction name))))]
+      phases = ListE [ TupE [Just (LitE (StringL name)), Just (AppE (VarE applyTo) (VarE (callee (phaseFunction name))))]
                      | (name, _) <- stagedPhases ]
   pure $ LetE (applyDec : concatMap (functionDecs callee) own) $
     foldl AppE (ConE 'CompiledStep)

@@ -20,6 +20,7 @@ module Manifold.Stage.Code
   , Stmt (..)
   , Function (..)
   , Check
+  , calledNames
   , literalTerm
   , termLiteral
   ) where
@@ -87,6 +88,15 @@ data Stmt c
   | RowCheck String LinearIndex c -- ^ native: the array holds the row's offsets
   | Call String [String] [Term] -- ^ a subroutine, with the arrays and arguments
   deriving (Show, Eq, Functor)
+
+-- | The subroutines a function calls, by name, in order (with repeats).
+calledNames :: Function c -> [String]
+calledNames = concatMap calls . fnBody
+  where
+    calls (Call n _ _) = [n]
+    calls (For _ _ _ body) = concatMap calls body
+    calls (If _ t e) = concatMap calls t ++ concatMap calls e
+    calls _ = []
 
 -- | A completed row check: the offsets it covers, lowest and highest.
 type Check = (Int, Int)
