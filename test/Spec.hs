@@ -33,31 +33,33 @@ main :: IO ()
 main = do
   hSetBuffering stdout LineBuffering
   hspec $ do
-    describe "Manifold.AD" ADSpec.spec
-    describe "Manifold.Elementary" ElementarySpec.spec
-    describe "Manifold.Surface" SurfaceSpec.spec
-    MetricSpec.spec
-    DiscSpec.spec
-    BolzaSpec.spec
-    -- (parallel: the longest independent runs, each its own node process
-    -- or world, overlap the rest on the second core)
-    describe "Manifold.GeodesicPath" (parallel GeodesicPathSpec.spec)
-    PresetSpec.spec
-    MeasuresSpec.spec
-    describe "Manifold.Body" BodySpec.spec
-    describe "manifold (command line)" CliSpec.spec
-    describe "Manifold.World" EngineSpec.spec
-    describe "Manifold.Stage" StageSpec.spec
-    describe "Manifold.Stage.Imp" ImpSpec.spec
-    ContactManifoldSpec.spec
-    HullSpec.spec
-    describe "Physics" PhysicsSpec.spec
-    describe "Solver" SolverSpec.spec
-    AnchorSpec.spec
-    describe "Joint" JointSpec.spec
-    describe "Sleep" SleepSpec.spec
-    FlatSpec.spec
-    parallel GoldenSpec.spec
-    ReadmeExampleSpec.spec
+    -- (parallel: the examples are independent, each its own world, node
+    -- process or temporary directory; most wait on one core, so two run
+    -- at once on the machine's two; hspec reports them in this order)
+    parallel $ do
+      describe "Manifold.AD" ADSpec.spec
+      describe "Manifold.Elementary" ElementarySpec.spec
+      describe "Manifold.Surface" SurfaceSpec.spec
+      MetricSpec.spec
+      DiscSpec.spec
+      BolzaSpec.spec
+      describe "Manifold.GeodesicPath" GeodesicPathSpec.spec
+      PresetSpec.spec
+      MeasuresSpec.spec
+      describe "Manifold.Body" BodySpec.spec
+      describe "manifold (command line)" CliSpec.spec
+      describe "Manifold.World" EngineSpec.spec
+      describe "Manifold.Stage" StageSpec.spec
+      describe "Manifold.Stage.Imp" ImpSpec.spec
+      ContactManifoldSpec.spec
+      HullSpec.spec
+      describe "Physics" PhysicsSpec.spec
+      describe "Solver" SolverSpec.spec
+      AnchorSpec.spec
+      describe "Joint" JointSpec.spec
+      describe "Sleep" SleepSpec.spec
+      FlatSpec.spec
+      GoldenSpec.spec
+      ReadmeExampleSpec.spec
     -- the allocation guards (alone: cabal test --test-options='-m performance')
     describe "performance" EngineSpec.performanceSpec

@@ -22,6 +22,7 @@ module Manifold.Anchor
   , polarRefinements
   ) where
 
+import Control.Monad (forM_)
 import Linear.V3 (V3 (..))
 import Linear.Vector ((*^), (^+^), (^-^))
 
@@ -45,11 +46,19 @@ anchorWalkSteps = 4
 -- 'anchorWalkSteps' times (a joint's preparation walks eight anchors, and
 -- unrolled those walks were a third of a curved space's compiled step).
 anchorPoint :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m (V3 (Scalar m))
-anchorPoint sp f r theta = do
-  let psi = bfAngle f + theta
-      h = r / fromIntegral anchorWalkSteps
-  q <- mapM newRef (bfCentre f)
-  d <- mapM newRef (cosF psi *^ bfU f ^+^ sinF psi *^ bfW f)
+anchorPoint sp f r theta = walkOut sp r (bfCentre f) (heading f (bfAngle f + theta))
+
+-- | The unit direction at angle @ψ@ from a body's axis.
+heading :: Field s => BodyFrame s -> s -> V3 s
+heading f psi = cosF psi *^ bfU f ^+^ sinF psi *^ bfW f
+
+-- | The end of the geodesic of length @r@ from @c@ in unit direction @d@,
+-- walked in 'anchorWalkSteps' steps of a staged loop.
+walkOut :: Imp m => Space -> Scalar m -> V3 (Scalar m) -> V3 (Scalar m) -> m (V3 (Scalar m))
+walkOut sp r c dir = do
+  let h = r / fromIntegral anchorWalkSteps
+  q <- mapM newRef c
+  d <- mapM newRef dir
   forEach (fromIntegral anchorWalkSteps) $ \_ -> do
     here <- (,) <$> mapM readRef q <*> mapM readRef d
     let (q1, d1) = geodesicStep (spaceMetric sp) (spaceField sp) h here
@@ -96,11 +105,38 @@ anchorMotion sp f r theta = do
         w' <- share3 (perpendicular metric n' u')
         pure f { bfCentre = c', bfNormal = n', bfU = u', bfW = w' }
       rate q p = (/ eps) <$> (q ^-^ p)
-  p <- anchorPoint sp f r theta
-  pu <- slid (bfU f) >>= \f' -> anchorPoint sp f' r theta
-  pw <- slid (bfW f) >>= \f' -> anchorPoint sp f' r theta
-  pt <- anchorPoint sp f r (theta + eps)
+  fu <- slid (bfU f)
+  fw <- slid (bfW f)
+  -- the four walks ('anchorPoint' from the body, from its two slid
+  -- frames, and turned by eps) are one staged loop over their starts, so
+  -- that the walk is printed once; the loop's counter picks each start
+  -- exactly
+  let starts = [(f, theta), (fu, theta), (fw, theta), (f, theta + eps)]
+  ends <- mapM (const (mapM newRef (bfCentre f))) starts
+  forEach (fromIntegral (length starts)) $ \k -> do
+    let pick = picked (toScalar k)
+        pickV xs = pick <$> sequenceA xs
+        frame = f { bfCentre = pickV [bfCentre fr | (fr, _) <- starts]
+                  , bfU = pickV [bfU fr | (fr, _) <- starts]
+                  , bfW = pickV [bfW fr | (fr, _) <- starts] }
+    end <- walkOut sp r (bfCentre frame) (heading frame (pick [bfAngle fr + a | (fr, a) <- starts]))
+    forM_ (zip [0 :: Int ..] ends) $ \(j, e) -> do
+      old <- mapM readRef e
+      sequence_ (writeRef <$> e <*> (select (0.5 - abs (toScalar k - fromIntegral j)) <$> end <*> old))
+  ps <- mapM (mapM readRef) ends
+  let (p, pu, pw, pt) = case ps of
+        [a, b, c, d] -> (a, b, c, d)
+        _ -> error "anchorMotion: four walks"
   AnchorMotion p <$> share3 (rate pu p) <*> share3 (rate pw p) <*> share3 (rate pt p)
+
+-- | The element of a list at a whole-number index @k@ (0, 1, ...), by
+-- exact selection; the last for any index beyond.
+picked :: Field s => s -> [s] -> s
+picked k = go 0
+  where
+    go _ [x] = x
+    go j (x : more) = select (0.5 - abs (k - fromIntegral (j :: Int))) x (go (j + 1) more)
+    go _ [] = error "picked: an empty list"
 
 -- | The points of the walk to an anchor at polar coordinates @(r, θ)@
 -- ('anchorPoint'): the centre first, the anchor last, 'anchorWalkSteps'
