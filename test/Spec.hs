@@ -32,11 +32,17 @@ import qualified SurfaceSpec
 main :: IO ()
 main = do
   hSetBuffering stdout LineBuffering
-  hspec $ do
+  hspec $
     -- (parallel: the examples are independent, each its own world, node
     -- process or temporary directory; most wait on one core, so two run
-    -- at once on the machine's two; hspec reports them in this order)
+    -- at once on the machine's two; hspec reports them in this order. The
+    -- longest (the golden runs, the page's allocation guard) come first, so
+    -- that the short ones fill the second core beside them rather than
+    -- leave it idle at the end.)
     parallel $ do
+      GoldenSpec.spec
+      -- the allocation guards (alone: cabal test --test-options='-m performance')
+      describe "performance" EngineSpec.performanceSpec
       describe "Manifold.AD" ADSpec.spec
       describe "Manifold.Elementary" ElementarySpec.spec
       describe "Manifold.Surface" SurfaceSpec.spec
@@ -59,7 +65,4 @@ main = do
       describe "Joint" JointSpec.spec
       describe "Sleep" SleepSpec.spec
       FlatSpec.spec
-      GoldenSpec.spec
       ReadmeExampleSpec.spec
-    -- the allocation guards (alone: cabal test --test-options='-m performance')
-    describe "performance" EngineSpec.performanceSpec

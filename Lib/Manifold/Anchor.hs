@@ -43,8 +43,8 @@ anchorWalkSteps = 4
 --
 -- The same walk as 'anchorWalk', staged as a loop: its geodesic step, with
 -- the field's gradient and projection in it, is printed once, not
--- 'anchorWalkSteps' times (a joint's preparation walks eight anchors, and
--- unrolled those walks were a third of a curved space's compiled step).
+-- 'anchorWalkSteps' times (a joint's preparation makes eight such walks,
+-- and unrolled they were a third of a curved space's compiled step).
 anchorPoint :: Imp m => Space -> BodyFrame (Scalar m) -> Scalar m -> Scalar m -> m (V3 (Scalar m))
 anchorPoint sp f r theta = walkOut sp r (bfCentre f) (heading f (bfAngle f + theta))
 
@@ -130,7 +130,13 @@ anchorMotion sp f r theta = do
   AnchorMotion p <$> share3 (rate pu p) <*> share3 (rate pw p) <*> share3 (rate pt p)
 
 -- | The element of a list at a whole-number index @k@ (0, 1, ...), by
--- exact selection; the last for any index beyond.
+-- exact selection; the last for any index beyond. Staged, a loop's counter
+-- picks an element without a branch.
+--
+-- >>> picked 2 [10, 20, 30, 40 :: Double]
+-- 30.0
+-- >>> picked 7 [10, 20 :: Double]
+-- 20.0
 picked :: Field s => s -> [s] -> s
 picked k = go 0
   where
