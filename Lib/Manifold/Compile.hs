@@ -49,10 +49,11 @@ stepFunctions sp = stageFunctions Haskell (stepProcedures sp compiledLayout)
 
 -- | The plane's step: its phases and subroutines. Most of a step's
 -- subroutines (the pair narrow phase, the solver's sweeps) and several of
--- its phases (waking, sleeping, the contacts' preparation) do not touch the
--- space, so they are spliced once, in "Manifold.Compiled.Shared", and every
--- space whose function is the same tree calls that one: 14 copies of the
--- subroutines took a third more compile time.
+-- its phases (waking, sleeping; on spaces without anchors to walk, the
+-- rows' preparation too) do not touch the space, so they are spliced once,
+-- in "Manifold.Compiled.Shared", and every space whose function is the same
+-- tree calls that one: 14 copies of the subroutines took a third more
+-- compile time.
 referenceFunctions :: [Function Check]
 referenceFunctions = stepFunctions plane
 
