@@ -606,6 +606,8 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
           , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 1, 3]}}"
           , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0, 0], \"up\": [0, 2, 6]}}"
           , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 1, 3], \"target\": [0, 0, 0], \"zoom\": 2}}"
+          -- (up left out: the space's camera's, here along the view)
+          , "{\"space\": \"plane\", \"camera\": {\"eye\": [0, 5, 0], \"target\": [0, 0, 0]}}"
           -- sleeping: every way a sleeping body is refused
           , withBody (body ", \"awake\": 0"), withBody (body ", \"sleepTime\": -1"), withBody (body ", \"island\": 0")
           , withBody (body ", \"awake\": false, \"island\": 1"), withBody (body ", \"awake\": false, \"island\": 0.5")
@@ -660,6 +662,21 @@ benchSpec = describe "Engine: phases and benchmark scenes" $ do
     (hertz "{\"space\": \"plane\"}", hertz "{\"space\": \"plane\", \"dt\": 0.005}", hertz "{\"space\": \"plane\", \"dt\": 0.005, \"contactHertz\": 45}")
       `shouldBe` (Right 60, Right 120, Right 45)
     fmap (map bsSize . sceneBodies) (parseScene (BL.pack (withBody (body ", \"size\": 0.3")))) `shouldBe` Right [0.3]
+
+  it "reads each kind of joint with its own keys, and a scene's joints printed back as the same joints" $ do
+    let body = "{\"shape\": \"circle\", \"size\": 0.1, \"p\": [1, 0, 0]}"
+        text js = BL.pack ("{\"space\": \"sphere\", \"bodies\": [" ++ body ++ ", " ++ body ++ "], \"joints\": [" ++ js ++ "]}")
+        joints =
+          [ "{\"type\": \"revolute\", \"a\": 0, \"b\": \"world\", \"anchor\": [1, 0, 0], \"lowerAngle\": -1, \"upperAngle\": 1, \"motorSpeed\": 2, \"maxMotorTorque\": 3}"
+          , "{\"type\": \"distance\", \"a\": 0, \"b\": 1, \"anchorA\": [1, 0, 0], \"anchorB\": [0, 1, 0], \"minLength\": 0.5, \"maxLength\": 2, \"hertz\": 4, \"dampingRatio\": 0.5, \"collide\": true}"
+          , "{\"type\": \"weld\", \"a\": 1, \"b\": 0, \"anchor\": [0, 0, 1], \"referenceAngle\": 0.25, \"hertz\": 6}" ]
+    scene <- either fail pure (parseScene (text (intercalate ", " joints)))
+    [ (jsKind j, jsA j, jsB j, jsAnchorA j, jsAnchorB j, jsMinLength j, jsMaxLength j, jsHertz j, jsDampingRatio j, jsReference j, jsLimit j, jsMotor j, jsCollide j)
+      | j <- sceneJoints scene ] `shouldBe`
+      [ (Revolute, 0, Nothing, V3 1 0 0, V3 1 0 0, Nothing, Nothing, 0, 0, Nothing, Just (-1, 1), Just (2, 3), False)
+      , (Distance, 0, Just 1, V3 1 0 0, V3 0 1 0, Just 0.5, Just 2, 4, 0.5, Nothing, Nothing, Nothing, True)
+      , (Weld, 1, Just 0, V3 0 0 1, V3 0 0 1, Nothing, Nothing, 6, 0, Just 0.25, Nothing, Nothing, False) ]
+    fmap sceneJoints (parseScene (A.encode (sceneJSON scene))) `shouldBe` Right (sceneJoints scene)
 
   it "reads a scene it printed back as the same scene (remembered impulses too)" $ do
     let scene = benchScene torus 30

@@ -213,9 +213,54 @@ declare namespace Manifold {
     quotient: Quotient;
     metric: Metric;
     hasBoundary: boolean;
+    /** the space's camera's up: a scene's camera that gives no up has it */
+    up: Vec3;
     /** the space's script in web/gen */
     script: string;
   }
+  /** A bound of a number in the scene format: the limit, whether the limit itself is out, the message past it. */
+  interface Bound {
+    at: number;
+    strict: boolean;
+    message: string;
+  }
+  /** What a number of the scene format must be besides finite (Manifold.SceneFormat.Bounds). */
+  interface Bounds {
+    lowest: Bound | null;
+    highest: Bound | null;
+    /** a whole number, or this message */
+    whole: string | null;
+  }
+  /** What a JSON value of a scene must be (Manifold.SceneFormat.Format): one key, the kind of value. */
+  type Format =
+    | { number: Bounds }
+    | { flag: null }
+    | { row: { items: Format[]; rest: Format; lengths: number[]; message: string } }
+    | { list: { item: Format; least: number; most: number | null; message: string } }
+    | { record: { keys: string[]; entries: FormatEntry[] } }
+    | { oneOf: { names: string[]; keyed: [string, Format][]; companions: [string, string, Format][]; notOne: string; unknown: string; oneKey: string; companion: string } }
+    | { tagged: { key: string; kinds: Record<string, Format>; notOne: string; unknown: string } }
+    | { name: { kind: string; notString: string; unknown: string } }
+    | { index: { list: string; message: string; or: string | null } }
+    | { convex: { corners: Format; message: string } };
+  /** How a record's key may be left out. */
+  type Presence = { required: true } | { optional: true } | { default: unknown } | { perStep: number; of: string };
+  /** A step of reading a record of the scene format. */
+  type FormatEntry =
+    | { field: string; presence: Presence; format: Format }
+    | { when: string; has: string[]; then: FormatEntry[]; else: FormatEntry[] }
+    | { rule: FormatRule };
+  /** What a record's keys must satisfy together (Manifold.SceneFormat.Rule). */
+  type FormatRule =
+    | { together: [string, string, string] }
+    | { ordered: [string, string]; atSecond: boolean }
+    | { differ: [string, string, string] }
+    | { notGiven: [string, string] }
+    | { islands: [string, string, string] }
+    | { remembered: string; perBody: number }
+    | { refusedBy: [string, string] }
+    | { atMostTwice: [string, string, string] }
+    | { view: [string, string, string, string, string] };
   /** A camera: eye, target and up in world coordinates, fov the vertical field of view in degrees. */
   interface CameraSpec {
     eye: Vec3;
@@ -441,6 +486,10 @@ declare namespace Manifold {
     materialKeys: string[];
     /** what a saved contact row to be kept lists after [key, normal, friction]: remembered rows' fields (Manifold.World.keptFields) */
     keptFields: PrevField[];
+    /** the scene file's format, a scene's body's and a joint's (Manifold.SceneFormat), read by world.js's interpreter of it */
+    sceneFormat: Format;
+    bodyFormat: Format;
+    jointFormat: Format;
     /** why a space's scenes can have no joints, by space name (a space not named takes joints; Manifold.Space.jointsRefused) */
     jointsRefused: { [space: string]: string };
     /** addBody's shape codes (a regular polygon's is its number of sides), and a body's size from its shape's code, its two numbers and its given size (Manifold.Hull) */

@@ -15,7 +15,7 @@ module Manifold.Scene
   , P
   ) where
 
-import Control.Monad (foldM, forM, forM_, unless, when, zipWithM, zipWithM_)
+import Control.Monad (forM, forM_, when, zipWithM, zipWithM_, (>=>))
 import qualified Data.Aeson as A
 import Data.Aeson.Internal (IResult (ISuccess), formatError)
 import qualified Data.Aeson.Key as K
@@ -23,21 +23,19 @@ import qualified Data.Aeson.KeyMap as KM
 import qualified Data.Aeson.Parser as AP
 import qualified Data.Attoparsec.ByteString.Char8 as AC
 import qualified Data.ByteString.Lazy as BL
-import Data.List (intercalate)
 import Data.Maybe (fromMaybe, isJust)
 import Data.Scientific (toRealFloat)
 import qualified Data.Text as T
 import qualified Data.Vector as V
-import Linear.V3 (V3 (..), cross)
+import Linear.V3 (V3 (..))
 
-import Manifold.ContactManifold (maxHullCorners)
-import Manifold.Hull (convexRound)
 import Manifold.Body
 import Manifold.Engine
 import Manifold.Params
+import Manifold.SceneFormat (Context (..), check, sceneFormat)
 import Manifold.Space
 import Manifold.Spaces
-import Manifold.World (Param (..), contactsPerBody, keptFields, layout)
+import Manifold.World (layout)
 
 -- | A body as a scene file gives it (its keys, in order: @shape@, @size@,
 -- @density@, @friction@, @restitution@, @static@, @p@, @v@, @angle@, @omega@, @axis@, @normal@,
@@ -95,292 +93,135 @@ data JointSpec = JointSpec
   , jsCollide :: Bool -- ^ whether the joined bodies collide (default false)
   } deriving (Show, Eq)
 
-type Path = String
-
 -- | A value, or what is wrong with the scene: the JSON path of the first
 -- problem (@$.bodies[2].size@) and what is wrong there.
 type P a = Either String a
 
-problem :: Path -> String -> P a
+problem :: String -> String -> P a
 problem path msg = Left (path ++ ": " ++ msg)
 
-object :: Path -> [String] -> A.Value -> P (KM.KeyMap A.Value)
-object path allowed v = case v of
-  A.Object o -> do
-    let unknown = [K.toString k | k <- KM.keys o, K.toString k `notElem` allowed]
-    unless (null unknown) $
-      problem (path ++ "." ++ head unknown) ("unknown key; the keys are " ++ intercalate ", " allowed)
-    pure o
-  _ -> problem path "must be an object"
-
-member :: KM.KeyMap A.Value -> String -> Maybe A.Value
-member o k = KM.lookup (K.fromString k) o
-
-required :: Path -> KM.KeyMap A.Value -> String -> (Path -> A.Value -> P a) -> P a
-required path o k parse = maybe (problem (path ++ "." ++ k) "is missing") (parse (path ++ "." ++ k)) (member o k)
-
-optional :: Path -> KM.KeyMap A.Value -> String -> a -> (Path -> A.Value -> P a) -> P a
-optional path o k def parse = maybe (pure def) (parse (path ++ "." ++ k)) (member o k)
-
-number :: Path -> A.Value -> P Double
-number path = \case
-  A.Number s -> let x = toRealFloat s in
-    if isNaN x || isInfinite x then problem path "must be a finite number" else pure x
-  _ -> problem path "must be a number"
-
-nonNegative, positive :: Path -> A.Value -> P Double
-nonNegative path v = number path v >>= \x -> if x < 0 then problem path "must not be negative" else pure x
-positive path v = number path v >>= \x -> if x <= 0 then problem path "must be positive" else pure x
-
-boolean :: Path -> A.Value -> P Bool
-boolean _ (A.Bool b) = pure b
-boolean path _ = problem path "must be true or false"
-
-vec3 :: Path -> A.Value -> P (V3 Double)
-vec3 path = \case
-  A.Array a | V.length a == 3 -> do
-    let component k = number (path ++ "[" ++ show k ++ "]") (a V.! k)
-    V3 <$> component 0 <*> component 1 <*> component 2
-  _ -> problem path "must be an array of three numbers [x, y, z]"
-
-shape :: Path -> A.Value -> P ShapeKind
-shape path = \case
-  A.String "circle" -> pure CircleShape
-  A.String "square" -> pure SquareShape
-  A.String s -> problem path ("unknown shape " ++ show (T.unpack s) ++ "; the shapes are " ++ shapeList)
-  v@(A.Object _) -> do
-    o <- object path ["polygon", "box", "capsule", "vertices", "radius"] v
-    let kinds = [k | k <- ["polygon", "box", "capsule", "vertices"], isJust (member o k)]
-    when (isJust (member o "radius") && kinds /= ["vertices"]) $
-      problem (path ++ ".radius") "is given with vertices only"
-    case kinds of
-      ["polygon"] -> do
-        n <- required path o "polygon" number
-        when (n /= fromIntegral (round n :: Int) || n < 3 || n > 64) $
-          problem (path ++ ".polygon") "must be a whole number of sides from 3 to 64"
-        pure (PolygonShape (round n))
-      ["box"] -> uncurry BoxShape <$> required path o "box" (pair "two half-extents [hx, hy]")
-      ["capsule"] -> uncurry CapsuleShape <$> required path o "capsule" (pair "[halfLength, radius]")
-      ["vertices"] -> VerticesShape <$> required path o "vertices" corners <*> optional path o "radius" 0 nonNegative
-      _ -> problem path "must have one key: polygon, box, capsule or vertices"
-  _ -> problem path ("must be one of " ++ shapeList)
-  where
-    shapeList = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]}, {\"capsule\": [halfLength, radius]} and {\"vertices\": [[a, b], ...]}"
-    corners at = \case
-      A.Array a | V.length a >= 3 && V.length a <= maxHullCorners -> do
-        cs <- sequence [ corner (at ++ "[" ++ show k ++ "]") c | (k, c) <- zip [0 :: Int ..] (V.toList a) ]
-        unless (convexRound (fromIntegral (length cs)) cs > 0.5) $
-          problem at "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)"
-        pure cs
-      _ -> problem at ("must be an array of 3 to " ++ show maxHullCorners ++ " corners [a, b]")
-    corner at = \case
-      A.Array a | V.length a == 2 -> (,) <$> number (at ++ "[0]") (a V.! 0) <*> number (at ++ "[1]") (a V.! 1)
-      _ -> problem at "must be two numbers [a, b]"
-    pair what at = \case
-      A.Array a | V.length a == 2 -> (,) <$> positive (at ++ "[0]") (a V.! 0) <*> positive (at ++ "[1]") (a V.! 1)
-      _ -> problem at ("must be " ++ what)
-
--- | A body's size: given, or, for a box or a capsule, its numbers' (given
--- too, it is a problem).
-bodySize :: Path -> KM.KeyMap A.Value -> ShapeKind -> P Double
-bodySize path o k = case shapeSize k of
-  Nothing -> required path o "size" positive
-  Just s
-    | isJust (member o "size") -> problem (path ++ ".size") "is not given with a box, a capsule or vertices (its numbers are its size)"
-    | otherwise -> pure s
-
-body :: Path -> A.Value -> P BodySpec
-body path v = do
-  o <- object path bodyKeys v
-  axis <- optional path o "axis" Nothing (\at x -> Just <$> vec3 at x)
-  normal <- optional path o "normal" Nothing (\at x -> Just <$> vec3 at x)
-  frame <- case (axis, normal) of
-    (Just a, Just n) -> pure (Just (a, n))
-    (Nothing, Nothing) -> pure Nothing
-    (Just _, Nothing) -> problem (path ++ ".normal") "must be given with axis (a saved body's frame)"
-    (Nothing, Just _) -> problem (path ++ ".axis") "must be given with normal (a saved body's frame)"
-  kind <- required path o "shape" shape
-  BodySpec kind
-    <$> bodySize path o kind
-    <*> optional path o "density" 1 positive
-    <*> optional path o "static" False boolean
-    <*> required path o "p" vec3
-    <*> optional path o "v" (V3 0 0 0) vec3
-    <*> optional path o "angle" 0 number
-    <*> optional path o "omega" 0 number
-    <*> pure frame
-    <*> optional path o "impulses" [] impulses
-    <*> pure Nothing
-    <*> optional path o "sleepTime" 0 nonNegative
-    <*> (Material <$> materialKey o Friction <*> materialKey o Restitution)
-  where
-    -- a body's friction or restitution: the scene key's values
-    materialKey o param = case [k | k <- materialKeys, keyParam k == param] of
-      k : _ -> optional path o (keyName k) Nothing $ \at x ->
-        number at x >>= \y -> maybe (pure (Just y)) (problem at) (outOfRange (keyRange k) y)
-      [] -> error "materialKey: no scene key sets this parameter"
-
--- | The bodies' @awake@ and @island@ keys: a sleeping body's island is
--- named by the index of a sleeping body (its own by default); a static
--- body does not sleep.
-sleeping :: [A.Value] -> [BodySpec] -> P [BodySpec]
-sleeping values specs = forM (zip3 [0 :: Int ..] values specs) $ \(k, v, spec) -> do
-  let path = "$.bodies[" ++ show k ++ "]"
-      keys = case v of A.Object o -> o; _ -> mempty
-  awake <- optional path keys "awake" True boolean
-  let asleepAt i = i >= 0 && i < length values && case values !! i of
-        A.Object o -> member o "awake" == Just (A.Bool False) && not (bsStatic (specs !! i))
-        _ -> False
-  label <- optional path keys "island" Nothing $ \at x -> case x of
-    A.Number n | toRealFloat n == (fromIntegral (round (toRealFloat n :: Double) :: Int) :: Double)
-               , asleepAt (round (toRealFloat n :: Double)) -> pure (Just (round (toRealFloat n :: Double)))
-    _ -> problem at "must be the index of a sleeping body (one with \"awake\": false)"
-  case (awake, label) of
-    (True, Just _) -> problem (path ++ ".island") "is for a sleeping body (\"awake\": false)"
-    (False, _) | bsStatic spec -> problem (path ++ ".awake") "a static body does not sleep"
-    (False, _) -> pure spec { bsSleeping = Just (fromMaybe k label) }
-    (True, Nothing) -> pure spec
-
--- | A body's remembered contact impulses: @[[key, normal, friction], …]@,
--- a row to be kept followed by its kept numbers ('keptFields').
-impulses :: Path -> A.Value -> P [Impulse]
-impulses path = \case
-  A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, x) -> do
-    let at = path ++ "[" ++ show k ++ "]"
-    case x of
-      A.Array r | V.length r `elem` [3, 3 + length keptFields] -> do
-        key <- number (at ++ "[0]") (r V.! 0)
-        when (key /= fromIntegral (round key :: Integer) || key < 0 || key >= 2 ^ (53 :: Int)) $
-          problem (at ++ "[0]") "must be a contact key, a whole number from 0 to 2^53"
-        Impulse key <$> nonNegative (at ++ "[1]") (r V.! 1) <*> number (at ++ "[2]") (r V.! 2)
-          <*> mapM (\m -> number (at ++ "[" ++ show m ++ "]") (r V.! m)) [3 .. V.length r - 1]
-      _ -> problem at ("must be an array of three numbers [key, normal, friction], or of "
-                       ++ show (3 + length keptFields) ++ " for a contact kept")
-  _ -> problem path "must be an array of [key, normal, friction] impulses"
-
--- | A scene from its JSON text. Of an object's keys given twice, the last
--- counts, as in the page's @JSON.parse@ (aeson's own decoder keeps the
--- first), so that a scene file reads alike in both.
+-- | A scene from its JSON text: checked against "Manifold.SceneFormat"'s
+-- description (the page reads it with the same), then read. Of an
+-- object's keys given twice, the last counts, as in the page's
+-- @JSON.parse@ (aeson's own decoder keeps the first), so that a scene file
+-- reads alike in both.
 parseScene :: BL.ByteString -> P Scene
 parseScene text = do
   v <- either (\(path, e) -> Left ("not JSON: " ++ formatError path e)) pure
          (AP.eitherDecodeWith (AP.jsonLast <* AC.skipSpace <* AC.endOfInput) ISuccess text)
-  o <- object "$" (["space"] ++ map keyName sceneKeys ++ ["bodies", "joints", "camera"]) v
-  sp <- required "$" o "space" $ \path -> \case
-    A.String s -> maybe (problem path ("unknown space " ++ show (T.unpack s) ++ "; the spaces are " ++ intercalate ", " spaceNames))
-                        pure (lookupSpace (T.unpack s))
-    _ -> problem path "must be a space name"
-  params <- foldM (sceneKey o) defaultParams sceneKeys
-  bodies <- optional "$" o "bodies" [] $ \path -> \case
-    A.Array a -> do
-      specs <- forM (zip [0 :: Int ..] (V.toList a)) $ \(k, b) -> body (path ++ "[" ++ show k ++ "]") b
-      sleeping (V.toList a) specs
-    _ -> problem path "must be an array of bodies"
-  let remembered = sum (map (length . bsImpulses) bodies)
-      room = contactsPerBody * length bodies
-  when (remembered > room) $
-    problem "$.bodies" (show remembered ++ " remembered contact impulses, more than " ++ show (length bodies)
-                         ++ " bodies remember (" ++ show contactsPerBody ++ " a body)")
-  joints <- optional "$" o "joints" [] $ \path -> \case
-    A.Array a -> forM (zip [0 :: Int ..] (V.toList a)) $ \(k, j) -> joint (length bodies) (path ++ "[" ++ show k ++ "]") j
-    _ -> problem path "must be an array of joints"
-  forM_ (jointsRefused sp) $ \why -> unless (null joints) (problem "$.joints" why)
-  when (length joints > 2 * max 1 (length bodies)) $
-    problem "$.joints" (show (length joints) ++ " joints, more than a world of " ++ show (length bodies) ++ " bodies holds (two a body)")
-  camera <- optional "$" o "camera" Nothing (\path c -> Just <$> sceneCameraOf sp path c)
-  pure (Scene sp params bodies joints camera)
+  checked <- check sceneContext sceneFormat "$" v
+  let o = keys checked
+  sp <- maybe (Left "$.space: unknown space") pure (lookupSpace (str (at o "space")))
+  pure Scene
+    { sceneSpace = sp
+    , sceneParams = foldl (\p k -> setParam (keyParam k) (paramNumber (at o (keyName k))) p) defaultParams sceneKeys
+    , sceneBodies = map bodySpec (items (at o "bodies"))
+    , sceneJoints = map jointSpec (items (at o "joints"))
+    , sceneCamera = cameraOf (spaceCamera sp) <$> given o "camera" }
 
--- | A scene's camera: eye and target (which must differ), up and fov (in
--- degrees, between 0 and 180) the space's camera's unless given, up not
--- along the view.
-sceneCameraOf :: Space -> Path -> A.Value -> P Camera
-sceneCameraOf sp path v = do
-  o <- object path ["eye", "target", "up", "fov"] v
-  let own = spaceCamera sp
-  eye <- required path o "eye" vec3
-  target <- required path o "target" vec3
-  up <- optional path o "up" (cameraUp own) vec3
-  fov <- optional path o "fov" (cameraFov own) $ \at x -> number at x >>= \d ->
-    if d > 0 && d < 180 then pure d else problem at "must be degrees between 0 and 180"
-  when (target == eye) $ problem (path ++ ".target") "must differ from the eye"
-  when (cross up (target - eye) == V3 0 0 0) $
-    problem (path ++ ".up") "must not be along the view (from the eye to the target)"
-  pure (Camera eye target up fov)
+-- | What a scene's check knows: the catalogue's spaces, which refuse
+-- joints, and their cameras' up.
+sceneContext :: Context
+sceneContext = Context
+  { ctxNames = const spaceNames
+  , ctxCounts = []
+  , ctxFacts = []
+  , ctxRefusal = lookupSpace >=> jointsRefused
+  , ctxUp = fmap ((\(V3 x y z) -> [x, y, z]) . cameraUp . spaceCamera) . lookupSpace }
 
--- | A scene's joint, for a scene of @n@ bodies.
-joint :: Int -> Path -> A.Value -> P JointSpec
-joint n path v = do
-  kind <- case v of
-    A.Object o0 -> case member o0 "type" of
-      Just (A.String "revolute") -> pure Revolute
-      Just (A.String "distance") -> pure Distance
-      Just (A.String "weld") -> pure Weld
-      Just (A.String t) -> problem (path ++ ".type") ("unknown joint type " ++ show (T.unpack t) ++ "; the types are " ++ jointTypes)
-      Just _ -> problem (path ++ ".type") ("must be one of " ++ jointTypes)
-      Nothing -> problem (path ++ ".type") "is missing"
-    _ -> problem path "must be an object"
-  let common = ["type", "a", "b", "collide", "local", "impulses"]
-      own = case kind of
-        Revolute -> ["anchor", "referenceAngle", "lowerAngle", "upperAngle", "motorSpeed", "maxMotorTorque"]
-        Distance -> ["anchorA", "anchorB", "length", "minLength", "maxLength", "hertz", "dampingRatio"]
-        Weld -> ["anchor", "referenceAngle", "hertz", "dampingRatio"]
-  o <- object path (common ++ own) v
-  let index at = \case
-        A.Number x | toRealFloat x == (fromIntegral (round (toRealFloat x :: Double) :: Int) :: Double)
-                   , let k = round (toRealFloat x :: Double), k >= 0, k < n -> pure k
-        _ -> problem at ("must be a body's index, from 0 to " ++ show (n - 1))
-  a <- required path o "a" index
-  b <- required path o "b" $ \at -> \case
-    A.String "world" -> pure Nothing
-    x -> either (const (problem at ("must be a body's index, from 0 to " ++ show (n - 1) ++ ", or \"world\""))) (pure . Just) (index at x)
-  when (b == Just a) $ problem (path ++ ".b") ("joins body " ++ show a ++ " to itself")
-  (anchorA, anchorB) <- case kind of
-    Distance -> (,) <$> required path o "anchorA" vec3 <*> required path o "anchorB" vec3
-    _ -> (\p -> (p, p)) <$> required path o "anchor" vec3
-  len <- optional path o "length" Nothing (\at x -> Just <$> nonNegative at x)
-  lo <- optional path o "minLength" Nothing (\at x -> Just <$> nonNegative at x)
-  hi <- optional path o "maxLength" Nothing (\at x -> Just <$> nonNegative at x)
-  case (lo, len, hi) of
-    (Just l, Just m, _) | l > m -> problem (path ++ ".minLength") "must not be more than length"
-    (_, Just m, Just h) | m > h -> problem (path ++ ".maxLength") "must not be less than length"
-    (Just l, _, Just h) | l > h -> problem (path ++ ".maxLength") "must not be less than minLength"
-    _ -> pure ()
-  hz <- optional path o "hertz" 0 nonNegative
-  zeta <- optional path o "dampingRatio" 0 nonNegative
-  ref <- optional path o "referenceAngle" Nothing (\at x -> Just <$> number at x)
-  lower <- optional path o "lowerAngle" Nothing (\at x -> Just <$> number at x)
-  upper <- optional path o "upperAngle" Nothing (\at x -> Just <$> number at x)
-  limit <- case (lower, upper) of
-    (Just l, Just u) | l > u -> problem (path ++ ".upperAngle") "must not be less than lowerAngle"
-                     | otherwise -> pure (Just (l, u))
-    (Nothing, Nothing) -> pure Nothing
-    (Just _, Nothing) -> problem (path ++ ".upperAngle") "must be given with lowerAngle"
-    (Nothing, Just _) -> problem (path ++ ".lowerAngle") "must be given with upperAngle"
-  speed <- optional path o "motorSpeed" Nothing (\at x -> Just <$> number at x)
-  torque <- optional path o "maxMotorTorque" Nothing (\at x -> Just <$> nonNegative at x)
-  motor <- case (speed, torque) of
-    (Just s', Just t) -> pure (Just (s', t))
-    (Nothing, Nothing) -> pure Nothing
-    (Just _, Nothing) -> problem (path ++ ".maxMotorTorque") "must be given with motorSpeed"
-    (Nothing, Just _) -> problem (path ++ ".motorSpeed") "must be given with maxMotorTorque"
-  local <- optional path o "local" Nothing (\at x -> Just <$> numbers 7 "[rA, thetaA, rB, thetaB, worldX, worldY, worldZ]" at x)
-  imps <- optional path o "impulses" [] (numbers 7 "the joint's seven impulses")
-  collide <- optional path o "collide" False boolean
-  pure (JointSpec kind a b anchorA anchorB len lo hi hz zeta ref limit motor local imps collide)
+-- Reading a checked value (its format has made sure of what it holds) ------
+
+keys :: A.Value -> KM.KeyMap A.Value
+keys = \case A.Object o -> o; _ -> mempty
+
+given :: KM.KeyMap A.Value -> String -> Maybe A.Value
+given o k = KM.lookup (K.fromString k) o
+
+at :: KM.KeyMap A.Value -> String -> A.Value
+at o k = fromMaybe A.Null (given o k)
+
+items :: A.Value -> [A.Value]
+items = \case A.Array a -> V.toList a; _ -> []
+
+num :: A.Value -> Double
+num = \case A.Number s -> toRealFloat s; _ -> 0 / 0
+
+str :: A.Value -> String
+str = \case A.String t -> T.unpack t; _ -> ""
+
+flag :: A.Value -> Bool
+flag = (== A.Bool True)
+
+-- | A scene key's value as its parameter holds it (a switch 1 or 0).
+paramNumber :: A.Value -> Double
+paramNumber = \case A.Bool b -> if b then 1 else 0; x -> num x
+
+v3 :: A.Value -> V3 Double
+v3 x = case map num (items x) of
+  [a, b, c] -> V3 a b c
+  _ -> V3 (0 / 0) (0 / 0) (0 / 0)
+
+shapeOf :: A.Value -> ShapeKind
+shapeOf = \case
+  A.String "square" -> SquareShape
+  A.String _ -> CircleShape
+  x -> let o = keys x
+           pair k = case map num (items (at o k)) of [p, q] -> (p, q); _ -> (0, 0)
+       in case () of
+            _ | Just n <- given o "polygon" -> PolygonShape (round (num n))
+              | Just _ <- given o "box" -> uncurry BoxShape (pair "box")
+              | Just _ <- given o "capsule" -> uncurry CapsuleShape (pair "capsule")
+              | otherwise -> VerticesShape [ (a, b) | [a, b] <- map (map num . items) (items (at o "vertices")) ]
+                                           (maybe 0 num (given o "radius"))
+
+bodySpec :: A.Value -> BodySpec
+bodySpec x = BodySpec
+  { bsShape = kind
+  , bsSize = fromMaybe (num (at o "size")) (shapeSize kind)
+  , bsDensity = num (at o "density")
+  , bsStatic = flag (at o "static")
+  , bsP = v3 (at o "p")
+  , bsV = v3 (at o "v")
+  , bsAngle0 = num (at o "angle")
+  , bsOmega0 = num (at o "omega")
+  , bsFrame = (,) <$> (v3 <$> given o "axis") <*> (v3 <$> given o "normal")
+  , bsImpulses = [ Impulse (num k) (num n) (num f) (map num kept) | k : n : f : kept <- map items (items (at o "impulses")) ]
+  , bsSleeping = if given o "awake" == Just (A.Bool False) then Just (round (num (at o "island"))) else Nothing
+  , bsCalmFor = num (at o "sleepTime")
+  , bsMaterial = Material (num <$> given o "friction") (num <$> given o "restitution") }
   where
-    jointTypes = "\"revolute\", \"distance\" and \"weld\""
-    numbers k what at = \case
-      A.Array xs | V.length xs == k -> forM (zip [0 :: Int ..] (V.toList xs)) $ \(i, x) -> number (at ++ "[" ++ show i ++ "]") x
-      _ -> problem at ("must be an array of " ++ show k ++ " numbers, " ++ what)
+    o = keys x
+    kind = shapeOf (at o "shape")
 
--- | A scene key's value set in the parameters: the scene's, or its
--- 'keyDefault' (the keys are read in order, the step first).
-sceneKey :: KM.KeyMap A.Value -> Params -> SceneKey -> P Params
-sceneKey o p k = optional "$" o (keyName k) (setParam (keyParam k) (keyDefault p k) p) $ \path v -> do
-  x <- case keyRange k of
-    Switch -> (\b -> if b then 1 else 0) <$> boolean path v
-    r -> number path v >>= \x -> maybe (pure x) (problem path) (outOfRange r x)
-  pure (setParam (keyParam k) x p)
+jointSpec :: A.Value -> JointSpec
+jointSpec x = JointSpec
+  { jsKind = kind
+  , jsA = round (num (at o "a"))
+  , jsB = case at o "b" of A.Number s -> Just (round (toRealFloat s :: Double)); _ -> Nothing
+  , jsAnchorA = v3 (at o (if kind == Distance then "anchorA" else "anchor"))
+  , jsAnchorB = v3 (at o (if kind == Distance then "anchorB" else "anchor"))
+  , jsLength = number "length"
+  , jsMinLength = number "minLength"
+  , jsMaxLength = number "maxLength"
+  , jsHertz = fromMaybe 0 (number "hertz")
+  , jsDampingRatio = fromMaybe 0 (number "dampingRatio")
+  , jsReference = number "referenceAngle"
+  , jsLimit = (,) <$> number "lowerAngle" <*> number "upperAngle"
+  , jsMotor = (,) <$> number "motorSpeed" <*> number "maxMotorTorque"
+  , jsLocal = map num . items <$> given o "local"
+  , jsImpulses = map num (items (at o "impulses"))
+  , jsCollide = flag (at o "collide") }
+  where
+    o = keys x
+    number k = num <$> given o k
+    kind = case str (at o "type") of
+      "distance" -> Distance
+      "weld" -> Weld
+      _ -> Revolute
+
+cameraOf :: Camera -> A.Value -> Camera
+cameraOf own x = Camera (v3 (at o "eye")) (v3 (at o "target")) (maybe (cameraUp own) v3 (given o "up")) (maybe (cameraFov own) num (given o "fov"))
+  where o = keys x
 
 -- | A scene as the JSON 'parseScene' reads (numbers are printed so that
 -- they read back exactly).

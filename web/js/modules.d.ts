@@ -115,15 +115,15 @@ declare namespace ManifoldWeb {
     [sceneKey: string]: unknown;
   }
 
-  /** A scene's camera as world.js's parseCamera gives it: up and fov null where the scene left them out. */
+  /** A scene's camera as world.js's parseScene gives it: up and fov left out where the scene left them out. */
   interface SceneCamera {
     eye: Manifold.Vec3;
     target: Manifold.Vec3;
-    up: Manifold.Vec3 | null;
-    fov: number | null;
+    up?: Manifold.Vec3;
+    fov?: number;
   }
 
-  /** A scene joint as world.js's parseJoint gives it: every key, null where the scene left one out. */
+  /** A scene joint as world.js's parseJoint gives it (from the checked joint): every key, null where the scene left one out. */
   interface ParsedJoint {
     type: Manifold.JointType;
     a: number;

@@ -79,12 +79,9 @@ var ManifoldWebWorld = (function (W) {
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
   function sceneKeys() { return W.Manifold.sceneKeys; }
   /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal" | "awake" | "island" | "friction" | "restitution">> & Pick<Manifold.SceneBody, "axis" | "normal" | "awake" | "island" | "friction" | "restitution">} ParsedBody */
-  // a scene body's keys, and those that give it its own material (generated: Manifold.Params.bodyKeys)
-  function bodyKeys() { return W.Manifold.bodyKeys; }
-  function materialKeys() { return W.Manifold.materialKeys; }
   function shapes() { return W.Manifold.shapes; }
-  // what a scene body without these keys has (Manifold.Scene's defaults)
-  const BODY_DEFAULTS = { density: 1, static: false };
+  // what a contact row to be kept lists after [key, normal, friction] (generated: Manifold.World.keptFields)
+  function keptFields() { return W.Manifold.keptFields; }
 
   class SceneError extends Error {
     /** @param {string} message */
@@ -100,295 +97,249 @@ var ManifoldWebWorld = (function (W) {
   /** @param {unknown} v @returns {v is Record<string, unknown>} */
   function isObject(v) { return v !== null && typeof v === "object" && !Array.isArray(v); }
 
-  /** @param {string} path @param {string[]} allowed @param {unknown} v @returns {Record<string, unknown>} */
-  function object(path, allowed, v) {
-    if (!isObject(v)) problem(path, "must be an object");
+  /** @param {unknown} o @param {string} k */
+  function hasOwn(o, k) { return isObject(o) && Object.prototype.hasOwnProperty.call(o, k); }
+
+  // ---- the scene file's format, read ----
+  // The format is data (generated: Manifold.sceneFormat, bodyFormat and
+  // jointFormat, from Lib/Manifold/SceneFormat.hs): every key, what its
+  // value must be, its default, the words of each problem and the order they
+  // are found in. `check` is its one reader here, step for step
+  // Manifold.SceneFormat.check: a value completed with its defaults, or a
+  // SceneError naming the first problem's JSON path in the same words.
+
+  /**
+   * What a check knows besides the value: the lengths of the lists and the
+   * names read so far, by key.
+   * @typedef {{ counts: Record<string, number>, facts: Record<string, string>, names: (kind: string) => string[] }} Context
+   */
+
+  // A message with its holes {0}, {1}, ... filled.
+  /** @param {string} msg @param {unknown[]} args */
+  function fill(msg, args) {
+    return msg.replace(/\{(\d)\}/g, function (m, d) { return Number(d) < args.length ? String(args[Number(d)]) : m; });
+  }
+
+  // Why a finite number is out of bounds, or null.
+  /** @param {Manifold.Bounds} b @param {number} x @returns {string | null} */
+  function boundsProblem(b, x) {
+    const lo = b.lowest, hi = b.highest;
+    if (lo && (x < lo.at || (lo.strict && x === lo.at))) return lo.message;
+    if (hi && (x > hi.at || (hi.strict && x === hi.at))) return hi.message;
+    if (b.whole !== null && x !== Math.round(x)) return b.whole;
+    return null;
+  }
+
+  /** @param {string} path @param {string[]} allowed @param {Record<string, unknown>} v */
+  function known(path, allowed, v) {
     const unknown = Object.keys(v).filter(function (k) { return allowed.indexOf(k) < 0; });
     if (unknown.length) problem(path + "." + unknown[0], "unknown key; the keys are " + allowed.join(", "));
-    return v;
   }
 
-  /** @param {string} path @param {unknown} v @returns {number} */
-  function number(path, v) {
-    if (typeof v !== "number") problem(path, "must be a number");
-    if (!isFinite(v)) problem(path, "must be a finite number");
-    return v;
-  }
-  /** @param {string} path @param {unknown} v @returns {number} */
-  function positive(path, v) {
-    const x = number(path, v);
-    if (x <= 0) problem(path, "must be positive");
-    return x;
-  }
-  /** @param {string} path @param {unknown} v @returns {number} */
-  function nonNegative(path, v) {
-    const x = number(path, v);
-    if (x < 0) problem(path, "must not be negative");
-    return x;
-  }
-  /** @param {string} path @param {unknown} v @returns {boolean} */
-  function boolean(path, v) {
-    if (typeof v !== "boolean") problem(path, "must be true or false");
-    return v;
-  }
-  /** @param {string} path @param {unknown} v @returns {Manifold.Vec3} */
-  function vec3(path, v) {
-    if (!Array.isArray(v) || v.length !== 3) problem(path, "must be an array of three numbers [x, y, z]");
-    return /** @type {Manifold.Vec3} */ (v.map(function (x, k) { return number(path + "[" + k + "]", x); }));
-  }
-  const SHAPE_LIST = "\"circle\", \"square\", {\"polygon\": N}, {\"box\": [hx, hy]}, {\"capsule\": [halfLength, radius]} and {\"vertices\": [[a, b], ...]}";
-  /** @param {string} path @param {unknown} v @returns {Manifold.Shape} */
-  function shape(path, v) {
-    if (v === "circle" || v === "square") return v;
-    if (typeof v === "string") problem(path, "unknown shape " + JSON.stringify(v) + "; the shapes are " + SHAPE_LIST);
-    if (isObject(v)) {
-      object(path, ["polygon", "box", "capsule", "vertices", "radius"], v);
-      const kinds = ["polygon", "box", "capsule", "vertices"].filter(function (k) { return k in v; });
-      if ("radius" in v && !(kinds.length === 1 && kinds[0] === "vertices")) problem(path + ".radius", "is given with vertices only");
-      if (kinds.length !== 1) problem(path, "must have one key: polygon, box, capsule or vertices");
-      if (kinds[0] === "vertices") {
-        const r = "radius" in v ? nonNegative(path + ".radius", v.radius) : 0;
-        const vs = corners(path + ".vertices", v.vertices);
-        return r ? { vertices: vs, radius: r } : { vertices: vs };
-      }
-      if (kinds[0] === "polygon") {
-        const n = number(path + ".polygon", v.polygon);
-        if (n !== Math.round(n) || n < 3 || n > 64) problem(path + ".polygon", "must be a whole number of sides from 3 to 64");
-        return { polygon: n };
-      }
-      const at = path + "." + kinds[0], x = v[kinds[0]];
-      if (!Array.isArray(x) || x.length !== 2) problem(at, "must be " + (kinds[0] === "box" ? "two half-extents [hx, hy]" : "[halfLength, radius]"));
-      /** @type {[number, number]} */
-      const pq = [positive(at + "[0]", x[0]), positive(at + "[1]", x[1])];
-      return kinds[0] === "box" ? { box: pq } : { capsule: pq };
+  // The value read against the format: completed, or a SceneError.
+  /** @param {Manifold.Format} f @param {string} path @param {unknown} v @param {Context} ctx @returns {any} */
+  function check(f, path, v, ctx) {
+    if ("number" in f) {
+      if (typeof v !== "number") problem(path, "must be a number");
+      if (!isFinite(v)) problem(path, "must be a finite number");
+      const why = boundsProblem(f.number, v);
+      return why === null ? v : problem(path, why);
     }
-    return problem(path, "must be one of " + SHAPE_LIST);
-  }
-  // A convex polygon's corners, 3 to Manifold.shapes.maxCorners pairs
-  // [a, b] going round it in order, either way (Manifold.Scene's convexRound).
-  /** @param {string} path @param {unknown} v @returns {[number, number][]} */
-  function corners(path, v) {
-    const most = shapes().maxCorners;
-    if (!Array.isArray(v) || v.length < 3 || v.length > most) problem(path, "must be an array of 3 to " + most + " corners [a, b]");
-    /** @type {[number, number][]} */
-    const cs = v.map(function (c, k) {
-      const at = path + "[" + k + "]";
-      if (!Array.isArray(c) || c.length !== 2) problem(at, "must be two numbers [a, b]");
-      return [number(at + "[0]", c[0]), number(at + "[1]", c[1])];
-    });
-    // (the test is Manifold.Hull.convexRound's, generated: the count, then the corners padded to maxCorners)
-    const flat = new Array(2 * most).fill(0);
-    cs.forEach(function (c, k) { flat[2 * k] = c[0]; flat[2 * k + 1] = c[1]; });
-    if (shapes().convexRound.apply(null, /** @type {[number, ...number[]]} */ ([cs.length].concat(flat))) !== 1) problem(path, "must go round a convex polygon in order (each edge's line with every other corner strictly on one side, the same side for every edge)");
-    return cs;
-  }
-  // A body's size: given, or a box's or a capsule's from its numbers (then
-  // it is not given), as Manifold.Scene takes it.
-  /** @param {string} path @param {Record<string, unknown>} o @param {Manifold.Shape} s */
-  function bodySize(path, o, s) {
-    if (!sizedByShape(s)) return required(path, o, "size", positive);
-    if ("size" in o) problem(path + ".size", "is not given with a box, a capsule or vertices (its numbers are its size)");
-    return reachOf(s, 0);
-  }
-  // The bodies' awake and island keys (after every body, as Manifold.Scene
-  // checks them): a sleeping body's island is named by the index of a
-  // sleeping body (its own by default); a static body does not sleep.
-  /** @param {unknown[]} values @param {ParsedBody[]} bodies */
-  function sleeping(values, bodies) {
-    /** @param {number} i */
-    const asleepAt = function (i) {
-      const o = values[i];
-      return isObject(o) && o.awake === false && !bodies[i].static;
-    };
-    bodies.forEach(function (b, k) {
-      const path = "$.bodies[" + k + "]", o = /** @type {Record<string, unknown>} */ (values[k]);
-      const awake = optional(path, o, "awake", true, boolean);
-      const label = optional(path, o, "island", null, function (at, x) {
-        if (typeof x !== "number" || x !== Math.round(x) || x < 0 || x >= values.length || !asleepAt(x)) {
-          problem(at, "must be the index of a sleeping body (one with \"awake\": false)");
-        }
-        return /** @type {number} */ (x);
+    if ("flag" in f) return typeof v === "boolean" ? v : problem(path, "must be true or false");
+    if ("row" in f) {
+      const r = f.row;
+      if (!Array.isArray(v) || r.lengths.indexOf(v.length) < 0) problem(path, r.message);
+      return v.map(function (x, k) { return check(k < r.items.length ? r.items[k] : r.rest, path + "[" + k + "]", x, ctx); });
+    }
+    if ("list" in f) {
+      const l = f.list;
+      if (!Array.isArray(v) || v.length < l.least || (l.most !== null && v.length > l.most)) problem(path, l.message);
+      return v.map(function (x, k) { return check(l.item, path + "[" + k + "]", x, ctx); });
+    }
+    if ("convex" in f) {
+      /** @type {[number, number][]} */
+      const cs = check(f.convex.corners, path, v, ctx), most = shapes().maxCorners;
+      // (Manifold.Hull.convexRound, generated: the count, then the corners padded to maxCorners)
+      const flat = new Array(2 * most).fill(0);
+      cs.forEach(function (c, k) { flat[2 * k] = c[0]; flat[2 * k + 1] = c[1]; });
+      if (!(shapes().convexRound.apply(null, /** @type {[number, ...number[]]} */ ([cs.length].concat(flat))) > 0.5)) problem(path, f.convex.message);
+      return cs;
+    }
+    if ("record" in f) return record(f.record, path, v, ctx).out;
+    if ("oneOf" in f) {
+      const c = f.oneOf;
+      if (typeof v === "string") return c.names.indexOf(v) >= 0 ? v : problem(path, fill(c.unknown, [JSON.stringify(v)]));
+      if (!isObject(v)) problem(path, c.notOne);
+      known(path, c.keyed.map(function (k) { return k[0]; }).concat(c.companions.map(function (k) { return k[0]; })), v);
+      const given = c.keyed.filter(function (k) { return hasOwn(v, k[0]); });
+      c.companions.forEach(function (m) {
+        if (hasOwn(v, m[0]) && !(given.length === 1 && given[0][0] === m[1])) problem(path + "." + m[0], fill(c.companion, [m[1]]));
       });
-      if (awake && label !== null) problem(path + ".island", "is for a sleeping body (\"awake\": false)");
-      if (!awake && b.static) problem(path + ".awake", "a static body does not sleep");
-      if (!awake) {
-        b.awake = false;
-        b.island = label === null ? k : label;
-      }
-    });
-  }
-  // what a contact row to be kept lists after [key, normal, friction] (generated: Manifold.World.keptFields)
-  function keptFields() { return W.Manifold.keptFields; }
-  // a body's remembered contact impulses: [[key, normal, friction], ...],
-  // a row to be kept followed by its kept numbers
-  /** @param {string} path @param {unknown} v @returns {Manifold.Impulse[]} */
-  function impulses(path, v) {
-    if (!Array.isArray(v)) problem(path, "must be an array of [key, normal, friction] impulses");
-    const kept = 3 + keptFields().length;
-    return v.map(/** @returns {Manifold.Impulse} */ function (r, k) {
-      const at = path + "[" + k + "]";
-      if (!Array.isArray(r) || (r.length !== 3 && r.length !== kept)) {
-        problem(at, "must be an array of three numbers [key, normal, friction], or of " + kept + " for a contact kept");
-      }
-      const key = number(at + "[0]", r[0]);
-      if (key !== Math.round(key) || key < 0 || key >= Math.pow(2, 53)) problem(at + "[0]", "must be a contact key, a whole number from 0 to 2^53");
-      /** @type {Manifold.Impulse} */
-      const row = [key, nonNegative(at + "[1]", r[1]), number(at + "[2]", r[2])];
-      r.slice(3).forEach(function (x, m) { row.push(number(at + "[" + (m + 3) + "]", x)); });
-      return row;
-    });
-  }
-  /**
-   * @template T
-   * @param {string} path @param {Record<string, unknown>} o @param {string} k
-   * @param {(path: string, v: unknown) => T} parse
-   * @returns {T}
-   */
-  function required(path, o, k, parse) {
-    if (!(k in o)) problem(path + "." + k, "is missing");
-    return parse(path + "." + k, o[k]);
-  }
-  /**
-   * @template T
-   * @param {string} path @param {Record<string, unknown>} o @param {string} k @param {T} dflt
-   * @param {(path: string, v: unknown) => T} parse
-   * @returns {T}
-   */
-  function optional(path, o, k, dflt, parse) {
-    return k in o ? parse(path + "." + k, o[k]) : dflt;
-  }
-
-  // A scene body (JSON value) → a complete body spec; throws a SceneError naming `path`.
-  /** @param {unknown} v @param {string} [path] @returns {ParsedBody} */
-  function parseBody(v, path) {
-    path = path || "body";
-    const o = object(path, bodyKeys(), v);
-    // a saved body's frame: both or neither (Manifold.Scene)
-    const axis = optional(path, o, "axis", null, vec3), normal = optional(path, o, "normal", null, vec3);
-    if (axis && !normal) problem(path + ".normal", "must be given with axis (a saved body's frame)");
-    if (normal && !axis) problem(path + ".axis", "must be given with normal (a saved body's frame)");
-    const kind = required(path, o, "shape", shape);
-    /** @type {ParsedBody} */
-    const b = {
-      shape: kind,
-      size: bodySize(path, o, kind),
-      density: optional(path, o, "density", BODY_DEFAULTS.density, positive),
-      static: optional(path, o, "static", BODY_DEFAULTS.static, boolean),
-      p: required(path, o, "p", vec3),
-      v: optional(path, o, "v", [0, 0, 0], vec3),
-      angle: optional(path, o, "angle", 0, number),
-      omega: optional(path, o, "omega", 0, number),
-      impulses: optional(path, o, "impulses", [], impulses),
-      sleepTime: optional(path, o, "sleepTime", 0, nonNegative),
-    };
-    // the body's own friction and restitution: the scene key's values
-    materialKeys().forEach(function (name) {
-      if (name in o) {
-        const k = sceneKeys().find(function (s) { return s.key === name; });
-        if (!k) throw new Error("no scene key " + name);
-        /** @type {Record<string, unknown>} */ (b)[name] = keyValue(path + "." + name, o[name], k);
-      }
-    });
-    // (awake and island: in the scene's order, by sleeping, or by World.add)
-    if (o.awake === false) {
-      b.awake = false;
-      if (typeof o.island === "number") b.island = o.island;
+      if (given.length !== 1) problem(path, c.oneKey);
+      const k = given[0][0];
+      /** @type {Record<string, unknown>} */
+      const out = {};
+      out[k] = check(given[0][1], path + "." + k, v[k], ctx);
+      c.companions.forEach(function (m) { if (m[1] === k && hasOwn(v, m[0])) out[m[0]] = check(m[2], path + "." + m[0], v[m[0]], ctx); });
+      return out;
     }
-    if (axis && normal) {
-      b.axis = axis;
-      b.normal = normal;
+    if ("tagged" in f) {
+      const t = f.tagged;
+      if (!isObject(v)) problem(path, "must be an object");
+      if (!hasOwn(v, t.key)) problem(path + "." + t.key, "is missing");
+      const kind = v[t.key];
+      if (typeof kind !== "string") problem(path + "." + t.key, t.notOne);
+      if (!hasOwn(t.kinds, kind)) problem(path + "." + t.key, fill(t.unknown, [JSON.stringify(kind)]));
+      const out = check(t.kinds[kind], path, v, ctx);
+      out[t.key] = kind;
+      return out;
     }
-    return b;
+    if ("name" in f) {
+      const n = f.name, names = ctx.names(n.kind);
+      if (typeof v !== "string") problem(path, n.notString);
+      return names.indexOf(v) >= 0 ? v : problem(path, fill(n.unknown, [JSON.stringify(v), names.join(", ")]));
+    }
+    const ix = f.index, count = ctx.counts[ix.list] || 0;
+    if (v === ix.or && ix.or !== null) return v;
+    if (typeof v === "number" && Number.isInteger(v) && v >= 0 && v < count) return v;
+    return problem(path, fill(ix.message, [count - 1]));
   }
 
-  // The keys of a scene joint, by type (Manifold.Scene's, in its order).
-  const JOINT_KEYS = {
-    common: ["type", "a", "b", "collide", "local", "impulses"],
-    revolute: ["anchor", "referenceAngle", "lowerAngle", "upperAngle", "motorSpeed", "maxMotorTorque"],
-    distance: ["anchorA", "anchorB", "length", "minLength", "maxLength", "hertz", "dampingRatio"],
-    weld: ["anchor", "referenceAngle", "hertz", "dampingRatio"],
-  };
-  // a saved joint's anchors in its bodies' coordinates (Manifold.Scene's "local")
-  /** @type {Manifold.JointField[]} */
-  const JOINT_LOCAL = ["radiusA", "thetaA", "radiusB", "thetaB", "worldX", "worldY", "worldZ"];
-  /** @type {Manifold.JointField[]} */
-  const JOINT_IMPULSES = ["impulse1", "impulse2", "impulseAxial", "impulseLower", "impulseUpper", "impulseMotor", "impulseAngle"];
-
-  // A scene joint (JSON value) of a scene of n bodies → a complete joint
-  // spec; throws a SceneError naming `path`, as Manifold.Scene does.
-  /** @param {unknown} v @param {string} path @param {number} n @returns {ManifoldWeb.ParsedJoint} */
-  function parseJoint(v, path, n) {
-    const types = "\"revolute\", \"distance\" and \"weld\"";
+  // A record read entry by entry: the completed object, and the context with
+  // the lengths of its lists and its names.
+  /**
+   * @param {{ keys: string[], entries: Manifold.FormatEntry[] }} r @param {string} path @param {unknown} v @param {Context} ctx
+   * @returns {{ out: Record<string, any>, ctx: Context }}
+   */
+  function record(r, path, v, ctx) {
     if (!isObject(v)) problem(path, "must be an object");
-    const o0 = /** @type {Record<string, unknown>} */ (v);
-    if (!("type" in o0)) problem(path + ".type", "is missing");
-    const type = o0.type;
-    if (typeof type !== "string") problem(path + ".type", "must be one of " + types);
-    if (type === "common" || !(type in JOINT_KEYS)) problem(path + ".type", "unknown joint type " + JSON.stringify(type) + "; the types are " + types);
-    const kind = /** @type {Manifold.JointType} */ (type);
-    const o = object(path, JOINT_KEYS.common.concat(JOINT_KEYS[kind]), v);
-    /** @param {string} at @param {unknown} x @param {string} [or] */
-    const index = function (at, x, or) {
-      if (!(Number.isInteger(x) && /** @type {number} */ (x) >= 0 && /** @type {number} */ (x) < n)) problem(at, "must be a body's index, from 0 to " + (n - 1) + (or || ""));
-      return /** @type {number} */ (x);
+    known(path, r.keys, v);
+    /** @type {Record<string, any>} */
+    const out = {};
+    let c = ctx;
+    /** @param {string} k @param {Manifold.Format} f @param {unknown} y */
+    const learn = function (k, f, y) {
+      if ("list" in f && Array.isArray(y)) c = { counts: Object.assign({}, c.counts, { [k]: y.length }), facts: c.facts, names: c.names };
+      if ("name" in f && typeof y === "string") c = { counts: c.counts, facts: Object.assign({}, c.facts, { [k]: y }), names: c.names };
     };
-    const a = required(path, o, "a", index);
-    const b = required(path, o, "b", function (at, x) { return x === "world" ? -1 : index(at, x, ", or \"world\""); });
-    if (b === a) problem(path + ".b", "joins body " + a + " to itself");
-    const anchors = kind === "distance"
-      ? [required(path, o, "anchorA", vec3), required(path, o, "anchorB", vec3)]
-      : (function (p) { return [p, p]; })(required(path, o, "anchor", vec3));
-    /** @param {string} k @param {(path: string, v: unknown) => number} parse */
-    const maybe = function (k, parse) { return optional(path, o, k, null, parse); };
-    const len = maybe("length", nonNegative), lo = maybe("minLength", nonNegative), hi = maybe("maxLength", nonNegative);
-    if (lo !== null && len !== null && lo > len) problem(path + ".minLength", "must not be more than length");
-    if (len !== null && hi !== null && len > hi) problem(path + ".maxLength", "must not be less than length");
-    if (lo !== null && hi !== null && lo > hi) problem(path + ".maxLength", "must not be less than minLength");
-    const hertz = optional(path, o, "hertz", 0, nonNegative), damping = optional(path, o, "dampingRatio", 0, nonNegative);
-    const reference = maybe("referenceAngle", number);
-    const lower = maybe("lowerAngle", number), upper = maybe("upperAngle", number);
-    if (lower !== null && upper !== null && lower > upper) problem(path + ".upperAngle", "must not be less than lowerAngle");
-    if (lower !== null && upper === null) problem(path + ".upperAngle", "must be given with lowerAngle");
-    if (lower === null && upper !== null) problem(path + ".lowerAngle", "must be given with upperAngle");
-    const speed = maybe("motorSpeed", number), torque = maybe("maxMotorTorque", nonNegative);
-    if (speed !== null && torque === null) problem(path + ".maxMotorTorque", "must be given with motorSpeed");
-    if (speed === null && torque !== null) problem(path + ".motorSpeed", "must be given with maxMotorTorque");
-    /** @param {number} k @param {string} what */
-    const numbers = function (k, what) {
-      return function (/** @type {string} */ at, /** @type {unknown} */ x) {
-        if (!Array.isArray(x) || x.length !== k) problem(at, "must be an array of " + k + " numbers, " + what);
-        return /** @type {unknown[]} */ (x).map(function (y, i) { return number(at + "[" + i + "]", y); });
-      };
+    /** @param {Manifold.FormatEntry[]} entries */
+    const run = function (entries) {
+      entries.forEach(function (e) {
+        if ("field" in e) {
+          const k = e.field, p = e.presence;
+          if (hasOwn(v, k)) {
+            out[k] = check(e.format, path + "." + k, v[k], c);
+            learn(k, e.format, out[k]);
+          } else if ("required" in p) {
+            problem(path + "." + k, "is missing");
+          } else if ("default" in p) {
+            out[k] = JSON.parse(JSON.stringify(p.default));
+            learn(k, e.format, out[k]);
+          } else if ("perStep" in p) {
+            out[k] = p.perStep / out[p.of];
+          }
+        } else if ("when" in e) {
+          const s = out[e.when];
+          run(isObject(s) && e.has.some(function (h) { return hasOwn(s, h); }) ? e.then : e.else);
+        } else {
+          rule(e.rule, path, v, out, c);
+        }
+      });
     };
-    const local = optional(path, o, "local", null, numbers(7, "[rA, thetaA, rB, thetaB, worldX, worldY, worldZ]"));
-    const imps = optional(path, o, "impulses", [], numbers(7, "the joint's seven impulses"));
-    const collide = optional(path, o, "collide", false, boolean);
-    return { type: kind, a: a, b: b, anchorA: anchors[0], anchorB: anchors[1], length: len, minLength: lo, maxLength: hi,
-      hertz: hertz, dampingRatio: damping, referenceAngle: reference,
-      limit: lower === null ? null : [lower, /** @type {number} */ (upper)],
-      motor: speed === null ? null : [speed, /** @type {number} */ (torque)],
-      local: local, impulses: imps, collide: collide };
+    run(r.entries);
+    return { out: out, ctx: c };
   }
 
-  // A scene's camera, as Manifold.Scene checks it: eye and target, up and
-  // fov if given (the space's camera's otherwise: null here).
-  /** @param {string} path @param {unknown} v @returns {ManifoldWeb.SceneCamera} */
-  function parseCamera(path, v) {
-    const o = object(path, ["eye", "target", "up", "fov"], v);
-    const eye = required(path, o, "eye", vec3), target = required(path, o, "target", vec3);
-    const up = optional(path, o, "up", null, vec3);
-    const fov = optional(path, o, "fov", null, function (at, x) {
-      const d = number(at, x);
-      if (!(d > 0 && d < 180)) problem(at, "must be degrees between 0 and 180");
-      return d;
-    });
-    const f = [target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]];
-    if (f[0] === 0 && f[1] === 0 && f[2] === 0) problem(path + ".target", "must differ from the eye");
-    if (up && up[1] * f[2] - up[2] * f[1] === 0 && up[2] * f[0] - up[0] * f[2] === 0 && up[0] * f[1] - up[1] * f[0] === 0) {
-      problem(path + ".up", "must not be along the view (from the eye to the target)");
+  // A rule of a record whose entries so far gave `out` (from the object
+  // `given`): completes `out` (a sleeping body's island), or throws.
+  /** @param {Manifold.FormatRule} r @param {string} path @param {Record<string, unknown>} given @param {Record<string, any>} out @param {Context} ctx */
+  function rule(r, path, given, out, ctx) {
+    /** @param {string} k */
+    const has = function (k) { return hasOwn(out, k); };
+    if ("together" in r) {
+      const a = r.together[0], b = r.together[1], note = r.together[2];
+      if (has(a) && !has(b)) problem(path + "." + b, "must be given with " + a + note);
+      if (!has(a) && has(b)) problem(path + "." + a, "must be given with " + b + note);
+    } else if ("ordered" in r) {
+      const a = r.ordered[0], b = r.ordered[1];
+      if (has(a) && has(b) && out[a] > out[b]) {
+        if (r.atSecond) problem(path + "." + b, "must not be less than " + a);
+        problem(path + "." + a, "must not be more than " + b);
+      }
+    } else if ("differ" in r) {
+      const a = r.differ[0], b = r.differ[1];
+      if (typeof out[a] === "number" && out[a] === out[b]) problem(path + "." + b, fill(r.differ[2], [out[a]]));
+    } else if ("notGiven" in r) {
+      if (hasOwn(given, r.notGiven[0])) problem(path + "." + r.notGiven[0], r.notGiven[1]);
+    } else if ("islands" in r) {
+      const raw = /** @type {unknown[]} */ (hasOwn(given, "bodies") ? given.bodies : []), bodies = /** @type {Record<string, unknown>[]} */ (out.bodies);
+      /** @param {number} i */
+      const asleepAt = function (i) { return i >= 0 && i < raw.length && hasOwn(raw[i], "awake") && /** @type {Record<string, unknown>} */ (raw[i]).awake === false && bodies[i].static !== true; };
+      bodies.forEach(function (b, k) {
+        const at = path + ".bodies[" + k + "]", g = /** @type {Record<string, unknown>} */ (raw[k]);
+        const awake = hasOwn(g, "awake") ? check({ flag: null }, at + ".awake", g.awake, ctx) : true;
+        let label = null;
+        if (hasOwn(g, "island")) {
+          const x = g.island;
+          if (!(typeof x === "number" && Number.isInteger(x) && asleepAt(x))) problem(at + ".island", r.islands[0]);
+          label = x;
+        }
+        if (awake && label !== null) problem(at + ".island", r.islands[1]);
+        if (!awake && b.static === true) problem(at + ".awake", r.islands[2]);
+        if (!awake) {
+          b.awake = false;
+          b.island = label === null ? k : label;
+        }
+      });
+    } else if ("remembered" in r) {
+      const bodies = /** @type {{ impulses: unknown[] }[]} */ (out.bodies);
+      const total = bodies.reduce(function (t, b) { return t + b.impulses.length; }, 0);
+      if (total > r.perBody * bodies.length) problem(path + ".bodies", fill(r.remembered, [total, bodies.length, r.perBody]));
+    } else if ("refusedBy" in r) {
+      const space = ctx.facts[r.refusedBy[1]], why = space === undefined ? null : jointsRefused(space);
+      if (why !== null && out[r.refusedBy[0]].length > 0) problem(path + "." + r.refusedBy[0], why);
+    } else if ("atMostTwice" in r) {
+      const n = out[r.atMostTwice[0]].length, m = out[r.atMostTwice[1]].length;
+      if (n > 2 * Math.max(1, m)) problem(path + "." + r.atMostTwice[0], fill(r.atMostTwice[2], [n, m]));
+    } else {
+      const names = r.view, eye = out[names[0]], target = out[names[1]];
+      const f = [target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]];
+      const own = W.Manifold.spaceIndex.find(function (e) { return e.name === ctx.facts.space; });
+      const up = has(names[2]) ? out[names[2]] : own ? own.up : null;
+      if (f[0] === 0 && f[1] === 0 && f[2] === 0) problem(path + "." + names[1], names[3]);
+      if (up && up[1] * f[2] - up[2] * f[1] === 0 && up[2] * f[0] - up[0] * f[2] === 0 && up[0] * f[1] - up[1] * f[0] === 0) {
+        problem(path + "." + names[2], names[4]);
+      }
     }
-    return { eye: eye, target: target, up: up, fov: fov };
   }
+
+  // The generated formats' parts the page reads on its own: a body's shape,
+  // and the defaults of a body's keys.
+  /** @param {string} key */
+  function bodyEntry(key) {
+    const entries = /** @type {{ record: { entries: Manifold.FormatEntry[] } }} */ (W.Manifold.bodyFormat).record.entries;
+    const e = entries.find(function (x) { return "field" in x && x.field === key; });
+    if (!e || !("field" in e)) throw new Error("the body format has no key " + key);
+    return e;
+  }
+  // (none where the generated index is missing: the page then says to build it)
+  /** @param {string} key */
+  function bodyDefault(key) {
+    return W.Manifold && W.Manifold.bodyFormat ? /** @type {{ default: unknown }} */ (bodyEntry(key).presence).default : undefined;
+  }
+  // what a scene body without these keys has (Manifold.SceneFormat's
+  // defaults; read when asked, as the generated index may load after this script)
+  const BODY_DEFAULTS = {
+    get density() { return /** @type {number} */ (bodyDefault("density")); },
+    get static() { return /** @type {boolean} */ (bodyDefault("static")); },
+  };
+
+  /** @returns {Context} */
+  function noContext() { return { counts: {}, facts: {}, names: function () { return []; } }; }
+
+  // A shape (JSON value) → the shape; throws a SceneError naming `path`.
+  /** @param {string} path @param {unknown} v @returns {Manifold.Shape} */
+  function shape(path, v) { return check(bodyEntry("shape").format, path, v, noContext()); }
 
   // Why space `name`'s scenes can have no joints (generated:
   // Manifold.jointsRefused), or null.
@@ -396,6 +347,50 @@ var ManifoldWebWorld = (function (W) {
   function jointsRefused(name) {
     const why = W.Manifold.jointsRefused;
     return why && Object.prototype.hasOwnProperty.call(why, name) ? why[name] : null;
+  }
+
+  // A checked body completed for the engine: a box's, a capsule's or
+  // vertices' size is their numbers' reach.
+  /** @param {Record<string, any>} b @returns {ParsedBody} */
+  function completeBody(b) {
+    if (!hasOwn(b, "size")) b.size = reachOf(b.shape, 0);
+    return /** @type {ParsedBody} */ (b);
+  }
+
+  // A scene body (JSON value) → a complete body spec (its awake and island
+  // keys are the scene's to read); throws a SceneError naming `path`.
+  /** @param {unknown} v @param {string} [path] @returns {ParsedBody} */
+  function parseBody(v, path) { return completeBody(check(W.Manifold.bodyFormat, path || "body", v, noContext())); }
+
+  // A checked joint in the engine's terms (b -1: the world; null where the
+  // scene left a key out).
+  /** @param {Record<string, any>} j @returns {ManifoldWeb.ParsedJoint} */
+  function jointOf(j) {
+    const distance = j.type === "distance";
+    /** @param {string} k */
+    const opt = function (k) { return hasOwn(j, k) ? j[k] : null; };
+    return { type: j.type, a: j.a, b: j.b === "world" ? -1 : j.b,
+      anchorA: distance ? j.anchorA : j.anchor, anchorB: distance ? j.anchorB : j.anchor,
+      length: opt("length"), minLength: opt("minLength"), maxLength: opt("maxLength"),
+      hertz: opt("hertz") || 0, dampingRatio: opt("dampingRatio") || 0, referenceAngle: opt("referenceAngle"),
+      limit: hasOwn(j, "lowerAngle") ? [j.lowerAngle, j.upperAngle] : null,
+      motor: hasOwn(j, "motorSpeed") ? [j.motorSpeed, j.maxMotorTorque] : null,
+      local: opt("local"), impulses: j.impulses, collide: j.collide };
+  }
+
+  // a saved joint's anchors in its bodies' coordinates (Manifold.Scene's "local"), and its impulses
+  /** @type {Manifold.JointField[]} */
+  const JOINT_LOCAL = ["radiusA", "thetaA", "radiusB", "thetaB", "worldX", "worldY", "worldZ"];
+  /** @type {Manifold.JointField[]} */
+  const JOINT_IMPULSES = ["impulse1", "impulse2", "impulseAxial", "impulseLower", "impulseUpper", "impulseMotor", "impulseAngle"];
+
+  // A scene joint (JSON value) of a world of n bodies → a complete joint
+  // spec; throws a SceneError naming `path`.
+  /** @param {unknown} v @param {string} path @param {number} n @returns {ManifoldWeb.ParsedJoint} */
+  function parseJoint(v, path, n) {
+    const ctx = noContext();
+    ctx.counts.bodies = n;
+    return jointOf(check(W.Manifold.jointFormat, path, v, ctx));
   }
 
   // A scene (JSON text or value) → a complete scene; spaceNames: the known spaces.
@@ -409,41 +404,12 @@ var ManifoldWebWorld = (function (W) {
         throw new SceneError("not JSON: " + e.message);
       }
     }
-    const keys = sceneKeys();
-    const o = object("$", ["space"].concat(keys.map(function (k) { return k.key; }), ["bodies", "joints", "camera"]), v);
-    const space = required("$", o, "space", function (path, s) {
-      if (typeof s !== "string") problem(path, "must be a space name");
-      if (spaceNames.indexOf(s) < 0) problem(path, "unknown space " + JSON.stringify(s) + "; the spaces are " + spaceNames.join(", "));
-      return s;
-    });
-    // the parameters first, then the bodies: the order Manifold.Scene
-    // checks them in, so that a scene with two problems names the same one
-    const scene = /** @type {ManifoldWeb.ParsedScene} */ ({ space: space });
-    keys.forEach(function (k) { // a key the scene leaves out takes the engine's default (or so many a step: dt is read first)
-      const fallback = k.perStep === undefined ? k.default : k.perStep / /** @type {number} */ (scene.dt);
-      scene[k.key] = optional("$", o, k.key, fallback, function (path, x) { return keyValue(path, x, k); });
-    });
-    scene.bodies = optional("$", o, "bodies", [], function (path, a) {
-      if (!Array.isArray(a)) problem(path, "must be an array of bodies");
-      const bodies = a.map(function (b, k) { return parseBody(b, path + "[" + k + "]"); });
-      sleeping(a, bodies);
-      return bodies;
-    });
-    // (the remembered impulses' bound is checked when the scene is loaded)
-    const n = scene.bodies.length;
-    scene.joints = optional("$", o, "joints", [], function (path, a) {
-      if (!Array.isArray(a)) problem(path, "must be an array of joints");
-      return a.map(function (j, k) { return parseJoint(j, path + "[" + k + "]", n); });
-    });
-    const refused = jointsRefused(space);
-    if (refused !== null && scene.joints.length > 0) problem("$.joints", refused);
-    if (scene.joints.length > 2 * Math.max(1, n)) {
-      problem("$.joints", scene.joints.length + " joints, more than a world of " + n + " bodies holds (two a body)");
-    }
-    scene.camera = optional("$", o, "camera", null, parseCamera);
-    return scene;
+    const scene = check(W.Manifold.sceneFormat, "$", v, { counts: {}, facts: {}, names: function () { return spaceNames; } });
+    scene.bodies.forEach(completeBody);
+    scene.joints = scene.joints.map(jointOf);
+    if (!hasOwn(scene, "camera")) scene.camera = null;
+    return /** @type {ManifoldWeb.ParsedScene} */ (scene);
   }
-
   // Why v is not a value of scene key k (its generated range's message:
   // "must not be negative", …), or null when it is one.
   /** @param {Manifold.SceneKey} k @param {unknown} v @returns {string | null} */
@@ -454,14 +420,6 @@ var ManifoldWebWorld = (function (W) {
     if ((k.above !== undefined && !(v > k.above)) || (k.atLeast !== undefined && v < k.atLeast)) return k.low;
     if ((k.atMost !== undefined && v > k.atMost) || (k.whole && v !== Math.round(v))) return k.high;
     return null;
-  }
-
-  // A scene key's value, checked against its generated range.
-  /** @param {string} path @param {unknown} v @param {Manifold.SceneKey} k @returns {number | boolean} */
-  function keyValue(path, v, k) {
-    const why = keyProblem(k, v);
-    if (why !== null) problem(path, why);
-    return /** @type {number | boolean} */ (v);
   }
 
   // A parsed scene's parameters as the engine's (by parameter name).
@@ -751,8 +709,8 @@ var ManifoldWebWorld = (function (W) {
       const b = parseBody(v, "body");
       // a contact key names the other body by its index in a whole scene
       if (b.impulses.length) problem("body.impulses", "only a scene's bodies carry contact impulses (load the scene)");
-      if (b.island !== undefined) problem("body.island", "only a scene's bodies name an island (load the scene)");
-      if (isObject(v) && "awake" in v) boolean("body.awake", v.awake);
+      if (hasOwn(v, "island")) problem("body.island", "only a scene's bodies name an island (load the scene)");
+      if (hasOwn(v, "awake") && check({ flag: null }, "body.awake", /** @type {Record<string, unknown>} */ (v).awake, noContext()) === false) b.awake = false;
       if (b.awake === false && b.static) problem("body.awake", "a static body does not sleep");
       const i = this.place(b);
       // a lone sleeping body is an island of its own

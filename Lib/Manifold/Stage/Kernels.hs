@@ -15,9 +15,12 @@ module Manifold.Stage.Kernels
   , stagedGradient
   ) where
 
+import qualified Data.Aeson as A
 import Data.Char (ord)
 import Data.List (dropWhileEnd, intercalate)
 import Linear.V3 (V3 (..))
+import qualified Data.Text.Lazy as TL
+import qualified Data.Text.Lazy.Encoding as TLE
 import Numeric (showHex)
 
 import Manifold.AD (gaussianCurvature)
@@ -28,6 +31,7 @@ import Manifold.Disc
 import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, convexRound, hullSize, orientCorners, polygonReach, verticesCode)
 import Manifold.Metric (Metric (..), gaussianCurvatureIn, metricName)
 import Manifold.Params (bodyKeys, keyName, materialKeys)
+import Manifold.SceneFormat (bodyFormat, formatJSON, jointFormat, sceneFormat)
 import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
 import Manifold.Stage.Expr
@@ -174,6 +178,10 @@ spaceIndexScript spaces = unlines $
   , "// the keys of a scene's body, in order, and those that give the body its own material (taking the scene key's values)"
   , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
   , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
+  , "// the scene file's format: every key, its values, defaults and messages, read by world.js's one interpreter of it (Lib/Manifold/SceneFormat.hs)"
+  , "globalThis.Manifold.sceneFormat = " ++ TL.unpack (TLE.decodeUtf8 (A.encode (formatJSON sceneFormat))) ++ ";"
+  , "globalThis.Manifold.bodyFormat = " ++ TL.unpack (TLE.decodeUtf8 (A.encode (formatJSON bodyFormat))) ++ ";"
+  , "globalThis.Manifold.jointFormat = " ++ TL.unpack (TLE.decodeUtf8 (A.encode (formatJSON jointFormat))) ++ ";"
   , "// what a saved contact row to be kept lists after its [key, normal, friction]: the remembered row's fields (Lib/Manifold/World.hs)"
   , "globalThis.Manifold.keptFields = " ++ keptFieldsArray ++ ";"
   , "// why a space's scenes can have no joints, by space (the spaces not named take joints) (Lib/Manifold/Space.hs)"
@@ -196,6 +204,7 @@ spaceIndexScript spaces = unlines $
     ++ ", quotient: " ++ jsString (quotientName (spaceQuotient s))
     ++ ", metric: " ++ jsString (metricName (spaceMetric s))
     ++ ", hasBoundary: " ++ (if hasBoundary s then "true" else "false")
+    ++ ", up: " ++ vecJs (cameraUp (spaceCamera s))
     ++ ", script: " ++ jsString (spaceScriptFile s) ++ " },"
   | s <- spaces ] ++
   [ "];" ]
