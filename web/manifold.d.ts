@@ -174,17 +174,8 @@ declare namespace Manifold {
     default: number | boolean;
     /** a key whose default follows the scene's step: the default is this over the scene's dt */
     perStep?: number;
-    /** "switch": true or false (the parameter is 1 or 0) */
+    /** "switch": true or false (the parameter is 1 or 0); the values a number takes are the scene format's (sceneFormat) */
     kind: "number" | "switch";
-    /** the value must be greater than this … */
-    above?: number;
-    /** … or at least this, else the message `low` */
-    atLeast?: number;
-    low?: string;
-    /** at most this, and whole if `whole`, else the message `high` */
-    atMost?: number;
-    whole?: boolean;
-    high?: string;
     /** the page's control for the key, when it offers one (in sceneKeys' order) */
     control?: SceneControl;
   }

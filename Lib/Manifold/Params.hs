@@ -20,8 +20,6 @@ module Manifold.Params
   , keyDefault
   , materialKeys
   , bodyKeys
-  , outOfRange
-  , rangeDescription
   ) where
 
 import qualified Data.Vector.Unboxed.Mutable as MV
@@ -207,37 +205,3 @@ materialKeys = [ k | k <- sceneKeys, keyParam k `elem` [Friction, Restitution] ]
 bodyKeys :: [String]
 bodyKeys = ["shape", "size", "density"] ++ map keyName materialKeys
   ++ ["static", "p", "v", "angle", "omega", "axis", "normal", "impulses", "awake", "island", "sleepTime"]
-
--- | Why a (finite) number is not in a range, or 'Nothing' when it is; a
--- switch is a JSON boolean, checked as such.
---
--- >>> outOfRange (Count 1000) 2.5
--- Just "must be a whole number from 1 to 1000"
--- >>> outOfRange Fraction 0.3
--- Nothing
-outOfRange :: Range -> Double -> Maybe String
-outOfRange r x = case r of
-  Switch -> Nothing
-  Positive | x <= 0 -> Just "must be positive"
-  NonNegative | x < 0 -> Just "must not be negative"
-  Fraction
-    | x < 0 -> Just "must not be negative"
-    | x > 1 -> Just "must be between 0 and 1"
-  Count n
-    | x <= 0 -> Just "must be positive"
-    | x /= fromIntegral (round x :: Int) || x > fromIntegral n -> Just ("must be a whole number from 1 to " ++ show n)
-  _ -> Nothing
-
--- | The range as the page's scene reader takes it: the bounds and the
--- message for each way out of them, as @(field, value)@ pairs of a
--- JavaScript object (numbers and strings already printed).
-rangeDescription :: Range -> [(String, String)]
-rangeDescription = \case
-  Switch -> [("kind", str "switch")]
-  Positive -> [("kind", str "number"), ("above", "0"), ("low", str "must be positive")]
-  NonNegative -> [("kind", str "number"), ("atLeast", "0"), ("low", str "must not be negative")]
-  Fraction -> [ ("kind", str "number"), ("atLeast", "0"), ("low", str "must not be negative")
-              , ("atMost", "1"), ("high", str "must be between 0 and 1") ]
-  Count n -> [ ("kind", str "number"), ("above", "0"), ("low", str "must be positive"), ("atMost", show n)
-             , ("whole", "true"), ("high", str ("must be a whole number from 1 to " ++ show n)) ]
-  where str v = show v

@@ -88,8 +88,9 @@ async function testKeyboard(check, page) {
 // the sliders' extents) and refuses with the keys' messages, changing nothing
 async function testRanges(check, page) {
   const r = await page.evaluate(function () {
-    const m = window.manifold, keys = window.Manifold.sceneKeys;
-    const key = function (name) { return keys.find(function (k) { return k.key === name; }); };
+    const m = window.manifold;
+    // a key's bounds as the generated scene format gives them
+    const bounds = function (name) { return window.Manifold.sceneFormat.record.entries.find(function (e) { return e.field === name; }).format.number; };
     const err = function (o) { try { m.setSimulation(o); return null; } catch (e) { return e.message; } };
     const out = { before: m.simulation() };
     out.friction = err({ friction: -1 });
@@ -97,8 +98,8 @@ async function testRanges(check, page) {
     out.together = err({ restitution: 0.5, substeps: 0 });
     out.gravity = err({ gravity: "yes" });
     out.unchanged = m.simulation();
-    out.frictionMessage = "friction " + key("friction").low;
-    out.substepsMessage = "substeps " + key("substeps").high;
+    out.frictionMessage = "friction " + bounds("friction").lowest.message;
+    out.substepsMessage = "substeps " + bounds("substeps").highest.message;
     // beyond the slider's end, within the key's range: taken, shown, the slider at its end
     out.beyond = err({ friction: 3 });
     out.beyondShown = document.getElementById("friction-value").textContent;

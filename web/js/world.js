@@ -315,13 +315,15 @@ var ManifoldWebWorld = (function (W) {
 
   // The generated formats' parts the page reads on its own: a body's shape,
   // and the defaults of a body's keys.
-  /** @param {string} key */
-  function bodyEntry(key) {
-    const entries = /** @type {{ record: { entries: Manifold.FormatEntry[] } }} */ (W.Manifold.bodyFormat).record.entries;
+  /** @param {Manifold.Format} format a record's @param {string} key */
+  function formatField(format, key) {
+    const entries = "record" in format ? format.record.entries : [];
     const e = entries.find(function (x) { return "field" in x && x.field === key; });
-    if (!e || !("field" in e)) throw new Error("the body format has no key " + key);
+    if (!e || !("field" in e)) throw new Error("the format has no key " + key);
     return e;
   }
+  /** @param {string} key */
+  function bodyEntry(key) { return formatField(W.Manifold.bodyFormat, key); }
   // (none where the generated index is missing: the page then says to build it)
   /** @param {string} key */
   function bodyDefault(key) {
@@ -410,16 +412,17 @@ var ManifoldWebWorld = (function (W) {
     if (!hasOwn(scene, "camera")) scene.camera = null;
     return /** @type {ManifoldWeb.ParsedScene} */ (scene);
   }
-  // Why v is not a value of scene key k (its generated range's message:
-  // "must not be negative", …), or null when it is one.
+  // Why v is not a value of scene key k: the problem the scene format's
+  // reader finds in it (its words, without a path), or null.
   /** @param {Manifold.SceneKey} k @param {unknown} v @returns {string | null} */
   function keyProblem(k, v) {
-    if (k.kind === "switch") return typeof v === "boolean" ? null : "must be true or false";
-    if (typeof v !== "number") return "must be a number";
-    if (!isFinite(v)) return "must be a finite number";
-    if ((k.above !== undefined && !(v > k.above)) || (k.atLeast !== undefined && v < k.atLeast)) return k.low;
-    if ((k.atMost !== undefined && v > k.atMost) || (k.whole && v !== Math.round(v))) return k.high;
-    return null;
+    try {
+      check(formatField(W.Manifold.sceneFormat, k.key).format, "", v, noContext());
+      return null;
+    } catch (e) {
+      if (e instanceof SceneError) return e.message.slice(2);
+      throw e;
+    }
   }
 
   // A parsed scene's parameters as the engine's (by parameter name).

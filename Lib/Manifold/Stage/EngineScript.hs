@@ -113,14 +113,15 @@ engineObject l subroutines =
 -- | The scene keys that set parameters ('sceneKeys'), as a JavaScript
 -- array of @{ key, param, default, kind, … }@: the key, the parameter it
 -- sets (its name in the engine object's @params@ and @defaults@), the
--- value a scene without it gets, its range ('rangeDescription'), which
--- the page's scene reader and @setSimulation@ check (and, for a key whose
--- default follows the step, @perStep@: 'perStepDefault'), and the control the
--- page makes for it (@control: { label, help, lo, hi, step }@, 'keyControl').
+-- value a scene without it gets, its kind (@"switch"@ or @"number"@; the
+-- values it takes are the scene format's, "Manifold.SceneFormat", which the
+-- page's scene reader and @setSimulation@ check), for a key whose default
+-- follows the step @perStep@ ('perStepDefault'), and the control the page
+-- makes for it (@control: { label, help, lo, hi, step }@, 'keyControl').
 sceneKeysArray :: String
 sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
   where
-    entry k = "  { " ++ intercalate ", " [ f ++ ": " ++ v | (f, v) <- fields k ++ rangeDescription (keyRange k) ++ control k ] ++ " },\n"
+    entry k = "  { " ++ intercalate ", " [ f ++ ": " ++ v | (f, v) <- fields k ++ control k ] ++ " },\n"
     control k = case keyControl k of
       Nothing -> []
       Just c -> [("control", "{ " ++ intercalate ", " (["label: " ++ show (controlLabel c), "help: " ++ show (controlHelp c)] ++ slider c) ++ " }")]
@@ -133,6 +134,7 @@ sceneKeysArray = "[\n" ++ concatMap entry sceneKeys ++ "]"
             Switch -> if x > 0 then "true" else "false"
             _ -> show x) ]
       ++ [ ("perStep", show x) | Just x <- [perStepDefault (keyParam k)] ]
+      ++ [ ("kind", show (if keyRange k == Switch then "switch" else "number" :: String)) ]
 
 -- | A joint field's name as the page's key, without its @J@:
 -- @JRadiusA@ → @radiusA@, @JA@ → @a@, @R@-less fields as 'jsName'.
