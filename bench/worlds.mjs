@@ -29,14 +29,16 @@ export function loadSpace(name) {
 }
 
 // Every scene DIR/*.json in name order, loaded into a fresh World of the
-// page's engine: { file, scene, world }.
+// page's engine: { file, scene, world, loadMs } (loadMs: how long checking
+// and loading the scene took).
 export function* worlds(dir) {
   for (const file of fs.readdirSync(dir).filter((f) => f.endsWith(".json")).sort()) {
     const scene = JSON.parse(fs.readFileSync(path.join(dir, file), "utf8"));
     loadSpace(scene.space);
     const W = globalThis.ManifoldWeb.world;
     const world = new W.World(scene.space, globalThis.Manifold.spaces[scene.space]);
+    const t0 = performance.now();
     world.load(W.parseScene(scene, Object.keys(globalThis.Manifold.spaces)));
-    yield { file, scene, world };
+    yield { file, scene, world, loadMs: performance.now() - t0 };
   }
 }

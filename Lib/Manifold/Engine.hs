@@ -176,7 +176,7 @@ addBodyFramed w b frame = do
                       code p q
       (code, p, q) = maybe (outlineCode, 0, 0) shapeArgs (shapeKind (biShape b))
   corners <- U.thaw (U.fromList (concat [[a, c] | (a, c) <- maybe (shapeCorners CircleShape) shapeCorners (shapeKind (biShape b))]))
-  runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) corners outline args)
+  runNative (addBodyWith (nwSpace w) (nwLayout w) (nwArrays w) corners (\_ _ _ -> outline) args)
   i <- metaValue LastAdded w
   n <- bodyCount w
   pure $ if i >= 0 then Right i

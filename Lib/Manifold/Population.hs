@@ -1,3 +1,4 @@
+{-# LANGUAGE LambdaCase #-}
 {-# LANGUAGE FlexibleContexts #-}
 -- | Adding and removing bodies at run time, written once: the native engine
 -- and the page's JavaScript add a body the same way (projected onto the
@@ -66,7 +67,7 @@ data BodyArgs s = BodyArgs
 -- body (what a saved scene holds) takes its position, velocity, axis and
 -- normal as they were saved, bit for bit: projecting them again would move
 -- them in the last bits, and a pile would run on differently.
-addBodyWith :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Array m -> (Scalar m -> Scalar m) -> BodyArgs (Scalar m) -> m ()
+addBodyWith :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Array m -> (Scalar m -> Scalar m -> Scalar m -> Scalar m -> Scalar m) -> BodyArgs (Scalar m) -> m ()
 addBodyWith sp l w cornersIn outlineGiven b = do
   count <- readMeta w BodyCount
   cap <- readMeta w Capacity
@@ -109,19 +110,25 @@ addBodyWith sp l w cornersIn outlineGiven b = do
           own <- mapM share2 (centredCorners sides radius oriented)
           size <- share (select vertices (polygonReach sides radius own) (hullSize code p q (baSize b)))
           corners <- share (select convex sides (hullCorners code p))
-          let outline theta = select vertices (verticesOutline sides radius own theta / size) (outlineGiven theta)
+          let outline theta = select vertices (verticesOutline sides radius own theta / size) (outlineGiven code p q theta)
           -- the outline's mass integrals (a thousand samples) only for a
           -- body without corners, whose mass they give (run for every body
           -- and then not chosen, they made loading a scene of 820 boxes
-          -- take 1.7 s in the page)
-          outlineMass <- newRef 0
-          outlineInertia <- newRef 0
-          whenPositive (minF (0.5 - convex) (1.5 - corners)) $ do
-            (mo, io) <- massIntegrals outline size (baDensity b)
-            writeRef outlineMass mo
-            writeRef outlineInertia io
-          mOutline <- readRef outlineMass
-          iOutline <- readRef outlineInertia
+          -- take 1.7 s in the page), and in a function of their own: the
+          -- page's addBody is too big for V8 to optimise, and the loop ran
+          -- in its interpreter (3000 circles took 6 s to load). They leave
+          -- the mass and inertia in the body's slots, read back below.
+          writeSlot w i InvMass 0
+          writeSlot w i InvInertia 0
+          whenPositive (minF (0.5 - convex) (1.5 - corners)) $
+            subroutine "outlineMass" [code, p, q, size, baDensity b, count] $ \case
+              [code', p', q', size', density, at] -> do
+                (mo, io) <- massIntegrals (outlineGiven code' p' q') size' density
+                writeSlot w (toIndex at) InvMass mo
+                writeSlot w (toIndex at) InvInertia io
+              _ -> error "outlineMass: six arguments"
+          mOutline <- readSlot w i InvMass
+          iOutline <- readSlot w i InvInertia
           let (mHull, iHull) = hullMass code p q (baDensity b)
               (mPolygon, iPolygon) = polygonMass sides radius own (baDensity b)
           m <- share (select convex mPolygon (select (corners - 1.5) mHull mOutline))

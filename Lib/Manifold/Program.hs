@@ -53,7 +53,7 @@ pageProcedures sp l = stepProcedures sp l ++
       ["shape", "shapeP", "shapeQ", "size", "density", "isStatic", "px", "py", "pz", "vx", "vy", "vz", "angle", "omega", "restore", "ax", "ay", "az", "nx", "ny", "nz"
       , "friction", "restitution"],
       \arrays [code, p, q, size, density, static, px, py, pz, vx, vy, vz, angle, omega, restore, ax, ay, az, nx, ny, nz, mu, e] ->
-         addBodyWith sp l stagedArrays (last arrays) (codeOutline code p q)
+         addBodyWith sp l stagedArrays (last arrays) codeOutline
            (BodyArgs size density static (V3 px py pz) (V3 vx vy vz) angle omega restore (V3 ax ay az) (V3 nx ny nz) mu e
               code p q))
   , (Procedure "removeBody" worldParams ["index"],
