@@ -471,10 +471,6 @@ declare namespace Manifold {
     spaces: Record<string, Space>;
     /** web/gen/spaces.js: the scene keys that set the engine's parameters */
     sceneKeys: SceneKey[];
-    /** the keys of a scene's body, in order (Manifold.Params.bodyKeys) */
-    bodyKeys: string[];
-    /** the body keys that give a body its own material, each taking the scene key of its name's values */
-    materialKeys: string[];
     /** what a saved contact row to be kept lists after [key, normal, friction]: remembered rows' fields (Manifold.World.keptFields) */
     keptFields: PrevField[];
     /** the scene file's format, a scene's body's and a joint's (Manifold.SceneFormat), read by world.js's interpreter of it */

@@ -17,7 +17,6 @@ module Manifold.Params
   , Control (..)
   , sceneKeys
   , perStepDefault
-  , keyDefault
   , materialKeys
   , bodyKeys
   ) where
@@ -188,20 +187,14 @@ perStepDefault = \case
   ContactHertz -> Just 0.6
   _ -> Nothing
 
--- | What a scene that leaves key @k@ out gets, given the parameters its
--- keys before @k@ set: the 'perStepDefault' over the scene's step, or
--- 'defaultParams'' value.
-keyDefault :: Params -> SceneKey -> Double
-keyDefault p k = maybe (paramValue defaultParams (keyParam k)) (/ pDt p) (perStepDefault (keyParam k))
-
 -- | The scene keys a body may give too, as its own material (its friction
 -- coefficient and restitution, which it then has instead of the scene's):
 -- a body's value takes the scene key's range.
 materialKeys :: [SceneKey]
 materialKeys = [ k | k <- sceneKeys, keyParam k `elem` [Friction, Restitution] ]
 
--- | The keys of a scene's body ("Manifold.Scene"), in the order a saved
--- body lists them: the page's scene reader takes the same.
+-- | The keys of a scene's body, in the order a saved body lists them (the
+-- scene format's, "Manifold.SceneFormat").
 bodyKeys :: [String]
 bodyKeys = ["shape", "size", "density"] ++ map keyName materialKeys
   ++ ["static", "p", "v", "angle", "omega", "axis", "normal", "impulses", "awake", "island", "sleepTime"]

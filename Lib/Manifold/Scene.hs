@@ -97,6 +97,7 @@ data JointSpec = JointSpec
 -- problem (@$.bodies[2].size@) and what is wrong there.
 type P a = Either String a
 
+-- | The problem at a JSON path.
 problem :: String -> String -> P a
 problem path msg = Left (path ++ ": " ++ msg)
 
@@ -131,24 +132,31 @@ sceneContext = Context
 
 -- Reading a checked value (its format has made sure of what it holds) ------
 
+-- | An object's keys and values.
 keys :: A.Value -> KM.KeyMap A.Value
 keys = \case A.Object o -> o; _ -> mempty
 
+-- | The value at a key, if the object has it.
 given :: KM.KeyMap A.Value -> String -> Maybe A.Value
 given o k = KM.lookup (K.fromString k) o
 
+-- | The value at a key the format completes.
 at :: KM.KeyMap A.Value -> String -> A.Value
 at o k = fromMaybe A.Null (given o k)
 
+-- | An array's items.
 items :: A.Value -> [A.Value]
 items = \case A.Array a -> V.toList a; _ -> []
 
+-- | A number.
 num :: A.Value -> Double
 num = \case A.Number s -> toRealFloat s; _ -> 0 / 0
 
+-- | A string.
 str :: A.Value -> String
 str = \case A.String t -> T.unpack t; _ -> ""
 
+-- | A flag.
 flag :: A.Value -> Bool
 flag = (== A.Bool True)
 
@@ -156,11 +164,13 @@ flag = (== A.Bool True)
 paramNumber :: A.Value -> Double
 paramNumber = \case A.Bool b -> if b then 1 else 0; x -> num x
 
+-- | Three numbers as a vector.
 v3 :: A.Value -> V3 Double
 v3 x = case map num (items x) of
   [a, b, c] -> V3 a b c
   _ -> V3 (0 / 0) (0 / 0) (0 / 0)
 
+-- | A checked shape.
 shapeOf :: A.Value -> ShapeKind
 shapeOf = \case
   A.String "square" -> SquareShape
@@ -174,6 +184,7 @@ shapeOf = \case
               | otherwise -> VerticesShape [ (a, b) | [a, b] <- map (map num . items) (items (at o "vertices")) ]
                                            (maybe 0 num (given o "radius"))
 
+-- | A checked body (a box's, a capsule's or vertices' size from their numbers).
 bodySpec :: A.Value -> BodySpec
 bodySpec x = BodySpec
   { bsShape = kind
@@ -193,6 +204,7 @@ bodySpec x = BodySpec
     o = keys x
     kind = shapeOf (at o "shape")
 
+-- | A checked joint.
 jointSpec :: A.Value -> JointSpec
 jointSpec x = JointSpec
   { jsKind = kind
@@ -219,6 +231,7 @@ jointSpec x = JointSpec
       "weld" -> Weld
       _ -> Revolute
 
+-- | A checked camera, up and fov the space's camera's where left out.
 cameraOf :: Camera -> A.Value -> Camera
 cameraOf own x = Camera (v3 (at o "eye")) (v3 (at o "target")) (maybe (cameraUp own) v3 (given o "up")) (maybe (cameraFov own) num (given o "fov"))
   where o = keys x

@@ -141,9 +141,11 @@ rangeBounds = \case
   Count n -> let m = "must be a whole number from 1 to " ++ show n
              in Bounds (Just positiveEnd) (Just (Bound (fromIntegral n) False m)) (Just m)
 
+-- | A number with no bounds but finiteness.
 noBounds :: Bounds
 noBounds = Bounds Nothing Nothing Nothing
 
+-- | Above 0; 0 or above.
 positiveEnd, nonNegativeEnd :: Bound
 positiveEnd = Bound 0 True "must be positive"
 nonNegativeEnd = Bound 0 False "must not be negative"
@@ -161,14 +163,17 @@ boundsProblem b x = case (lowest b, highest b, wholeOr b) of
   (_, _, Just m) | x /= fromIntegral (round x :: Integer) -> Just m
   _ -> Nothing
 
+-- | Any finite number; one above 0; one of 0 or above.
 anyNumber, positive, nonNegative :: Format
 anyNumber = Number noBounds
 positive = Number noBounds {lowest = Just positiveEnd}
 nonNegative = Number noBounds {lowest = Just nonNegativeEnd}
 
+-- | A point or vector: three numbers.
 vec3 :: Format
 vec3 = Row [] anyNumber [3] "must be an array of three numbers [x, y, z]"
 
+-- | So many numbers, what they are said in the message.
 numbers :: Int -> String -> Format
 numbers k what = Row [] anyNumber [k] ("must be an array of " ++ show k ++ " numbers, " ++ what)
 
@@ -308,6 +313,7 @@ cameraFormat = Record ["eye", "target", "up", "fov"]
 -- and what is wrong there.
 type P a = Either String a
 
+-- | The problem at a path.
 problem :: Path -> String -> P a
 problem path msg = Left (path ++ ": " ++ msg)
 
@@ -390,9 +396,11 @@ check ctx format path v = case format of
   where
     at k = path ++ "[" ++ show (k :: Int) ++ "]"
 
+-- | An array's items (none of anything else).
 arrayItems :: A.Value -> [A.Value]
 arrayItems = \case A.Array a -> V.toList a; _ -> []
 
+-- | An object's value at a key.
 member :: KM.KeyMap A.Value -> String -> Maybe A.Value
 member o k = KM.lookup (K.fromString k) o
 
@@ -432,6 +440,7 @@ record ctx0 keys entries path v = case v of
       (Name {}, A.String s) -> ctx {ctxFacts = (k, T.unpack s) : ctxFacts ctx}
       _ -> ctx
 
+-- | The number at a key of a completed record (NaN if none).
 numberAt :: KM.KeyMap A.Value -> String -> Double
 numberAt o k = case member o k of
   Just (A.Number s) -> toRealFloat s

@@ -74,8 +74,8 @@ var ManifoldWebWorld = (function (W) {
     });
   }
 
-  // ---- scenes: validation naming the JSON path of the first problem (as Manifold.Scene does) ----
-  // The keys that set engine parameters, with the values they take, are
+  // ---- scenes: read by the generated scene format (Manifold.SceneFormat), naming the JSON path of the first problem ----
+  // The keys that set engine parameters, their parameters and kinds, are
   // generated (Manifold.sceneKeys, from Lib/Manifold/Params.hs).
   function sceneKeys() { return W.Manifold.sceneKeys; }
   /** @typedef {Required<Omit<Manifold.SceneBody, "axis" | "normal" | "awake" | "island" | "friction" | "restitution">> & Pick<Manifold.SceneBody, "axis" | "normal" | "awake" | "island" | "friction" | "restitution">} ParsedBody */
@@ -474,9 +474,15 @@ var ManifoldWebWorld = (function (W) {
     }
     return { capsule: [s.capsule[0], s.capsule[1]] };
   }
-  // Whether a shape's numbers are its size (a box, a capsule, vertices: a scene gives no size with them).
+  // Whether a shape's numbers are its size (a box, a capsule, vertices: a
+  // scene gives no size with them), as the body format says.
   /** @param {Manifold.Shape} s */
-  function sizedByShape(s) { return typeof s === "object" && s !== null && !("polygon" in s); }
+  function sizedByShape(s) {
+    const entries = /** @type {{ record: { entries: Manifold.FormatEntry[] } }} */ (W.Manifold.bodyFormat).record.entries;
+    const e = entries.find(function (x) { return "when" in x && x.when === "shape"; });
+    if (!e || !("when" in e)) throw new Error("the body format says nothing of sized shapes");
+    return typeof s === "object" && s !== null && e.has.some(function (k) { return k in s; });
+  }
   // A scene body of a shape and size (a box's or a capsule's without the
   // size: its numbers are its size).
   /** @param {Manifold.Shape} shape @param {number} size @returns {{ shape: Manifold.Shape, size?: number }} */

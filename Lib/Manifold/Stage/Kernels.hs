@@ -30,7 +30,6 @@ import Manifold.ContactManifold (maxHullCorners)
 import Manifold.Disc
 import Manifold.Hull (boxCode, capsuleCode, centredCorners, circleCode, convexRound, hullSize, orientCorners, polygonReach, verticesCode)
 import Manifold.Metric (Metric (..), gaussianCurvatureIn, metricName)
-import Manifold.Params (bodyKeys, keyName, materialKeys)
 import Manifold.SceneFormat (bodyFormat, formatJSON, jointFormat, sceneFormat)
 import Manifold.Space
 import Manifold.Spaces (torus, flatTorus)
@@ -173,11 +172,8 @@ spaceIndexScript :: [Space] -> String
 spaceIndexScript spaces = unlines $
   [ generatedMarker ++ " from Lib/Manifold/Spaces.hs (the catalogue). Do not edit."
   , "globalThis.Manifold = globalThis.Manifold || { spaces: {} };"
-  , "// the scene keys that set the engine's parameters, with the values they take (Lib/Manifold/Params.hs)"
+  , "// the scene keys that set the engine's parameters: their parameters, kinds, defaults and controls (Lib/Manifold/Params.hs)"
   , "globalThis.Manifold.sceneKeys = " ++ sceneKeysArray ++ ";"
-  , "// the keys of a scene's body, in order, and those that give the body its own material (taking the scene key's values)"
-  , "globalThis.Manifold.bodyKeys = " ++ jsList bodyKeys ++ ";"
-  , "globalThis.Manifold.materialKeys = " ++ jsList (map keyName materialKeys) ++ ";"
   , "// the scene file's format: every key, its values, defaults and messages, read by world.js's one interpreter of it (Lib/Manifold/SceneFormat.hs)"
   , "globalThis.Manifold.sceneFormat = " ++ TL.unpack (TLE.decodeUtf8 (A.encode (formatJSON sceneFormat))) ++ ";"
   , "globalThis.Manifold.bodyFormat = " ++ TL.unpack (TLE.decodeUtf8 (A.encode (formatJSON bodyFormat))) ++ ";"
@@ -313,13 +309,6 @@ cameraJs c = "{ eye: " ++ vecJs (cameraEye c) ++ ", target: " ++ vecJs (cameraTa
 placementJs :: Placement -> String
 placementJs p = "{ shape: " ++ shapeJs (placeShape p) ++ ", size: " ++ num (placeSize p)
   ++ ", p: " ++ vecJs (placeAt p) ++ (if placeStatic p then ", static: true" else "") ++ " }"
-
--- | A JavaScript array of strings.
---
--- >>> putStrLn (jsList ["a", "b"])
--- ["a", "b"]
-jsList :: [String] -> String
-jsList xs = "[" ++ intercalate ", " (map jsString xs) ++ "]"
 
 -- | A JavaScript string literal, ASCII only (so the script's bytes do not
 -- depend on how the page declares its encoding).
