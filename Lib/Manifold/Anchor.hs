@@ -122,7 +122,7 @@ anchorMotion sp f r theta = do
     end <- walkOut sp r (bfCentre frame) (heading frame (pick [bfAngle fr + a | (fr, a) <- starts]))
     forM_ (zip [0 :: Int ..] ends) $ \(j, e) -> do
       old <- mapM readRef e
-      sequence_ (writeRef <$> e <*> (select (0.5 - abs (toScalar k - fromIntegral j)) <$> end <*> old))
+      sequence_ (writeRef <$> e <*> (select (isIndex (toScalar k) j) <$> end <*> old))
   ps <- mapM (mapM readRef) ends
   let (p, pu, pw, pt) = case ps of
         [a, b, c, d] -> (a, b, c, d)
@@ -141,8 +141,16 @@ picked :: Field s => s -> [s] -> s
 picked k = go 0
   where
     go _ [x] = x
-    go j (x : more) = select (0.5 - abs (k - fromIntegral (j :: Int))) x (go (j + 1) more)
+    go j (x : more) = select (isIndex k j) x (go (j + 1) more)
     go _ [] = error "picked: an empty list"
+
+-- | Positive where a whole-number index @k@ is @j@, negative elsewhere: the
+-- test 'picked' selects by.
+--
+-- >>> map (isIndex (2 :: Double)) [1, 2, 3]
+-- [-0.5,0.5,-0.5]
+isIndex :: Field s => s -> Int -> s
+isIndex k j = 0.5 - abs (k - fromIntegral j)
 
 -- | The points of the walk to an anchor at polar coordinates @(r, θ)@
 -- ('anchorPoint'): the centre first, the anchor last, 'anchorWalkSteps'
