@@ -70,7 +70,7 @@ type LinearIndex = [(IntTerm, Int)]
 
 -- | An array index.
 data ArrayIndex
-  = NumberIndex Term -- ^ JavaScript: the index as a number
+  = NumberIndex Term -- ^ JavaScript: the index as a number (printed in 32-bit integers)
   | IntIndex LinearIndex Int -- ^ native: a base and a constant offset
   deriving (Show, Eq, Ord)
 

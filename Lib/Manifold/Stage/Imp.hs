@@ -74,7 +74,7 @@ import Manifold.Stage.Print
 --   n = +n;
 --   let v0 = 0.0;
 --   for (let i1 = 0.0; i1 < n; i1++) {
---     const t2 = xs[i1];
+--     const t2 = xs[(i1 | 0)];
 --     const t3 = v0;
 --     v0 = (t3 + t2);
 --   }

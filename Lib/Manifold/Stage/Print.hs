@@ -337,8 +337,17 @@ printProcedure target (Function name arrays scalars body) = unlines $ case targe
       Call f as ts -> [at d (f ++ "(" ++ intercalate ", " (as ++ map js ts) ++ ");")]
       RowCheck {} -> error "printProcedure: a row check in JavaScript"
     scriptIndex = \case
-      NumberIndex t -> js t
+      NumberIndex t -> scriptWhole t
       IntIndex {} -> error "printProcedure: an Int index in JavaScript"
+    -- An index in 32-bit integers, each stored number in it truncated as
+    -- the native index truncates it (@ITrunc@): a body's index read from a
+    -- contact is a double, and V8 made every index computed from it a
+    -- double checked at each access (a sixth of the relaxing sweep's time
+    -- on the peer benchmark's pyramid).
+    scriptWhole = \case
+      TLit w -> renderLiteral JavaScript (termLiteral w)
+      TBin op a b | op `elem` [Add, Sub, Mul] -> binary JavaScript op (scriptWhole a) (scriptWhole b)
+      t -> "(" ++ js t ++ " | 0)"
     -- a Haskell block is a do block: it ends with @pure ()@, so that it
     -- never ends with a @let@
     haskellBlock :: Int -> [Stmt Check] -> [String]
