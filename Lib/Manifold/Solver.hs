@@ -285,21 +285,25 @@ substeps sp _ w = do
   forEach (toIndex n) $ \_ -> do
     subroutine "substepGravity" [] $ \_ -> substepLength w >>= applyGravity sp w
     subroutine "warmStartJoints" [] $ \_ -> warmStartJoints (spaceMetric sp) w
-    subroutine "warmStart" [] $ \_ -> warmStart w
+    subroutine "warmStart" [] $ \_ -> warmStart (rowShape sp) w
     mouseRows sp w True
     forEach (toIndex iterations) $ \_ -> do
       subroutine "solveJoints" [] $ \_ -> solveJoints True (spaceMetric sp) w
-      subroutine "solveSweep" [] $ \_ -> sweepRows True (spaceMetric sp) w
+      subroutine "solveSweep" [] $ \_ -> sweepRows True (rowShape sp) w
       mouseRows sp w False
     subroutine "substepMove" [] $ \_ -> substepLength w >>= integrate sp w
     subroutine "relaxJoints" [] $ \_ -> solveJoints False (spaceMetric sp) w
-    subroutine "relaxSweep" [] $ \_ -> sweepRows False (spaceMetric sp) w
+    subroutine "relaxSweep" [] $ \_ -> sweepRows False (rowShape sp) w
     mouseRows sp w False
 
 -- | Every contact's impulses applied again, as the sub-step starts.
-warmStart :: Imp m => WorldArrays (Array m) -> m ()
+--
+-- Where a row's two sides cannot be one body ('rsSelfImages'), each body's
+-- velocity is read once and written once for both rows (the same sums in
+-- the same order as row by row through memory).
+warmStart :: Imp m => RowShape -> WorldArrays (Array m) -> m ()
 {-# INLINE warmStart #-}
-warmStart w = do
+warmStart shape w = do
   nc <- readMeta w ContactCount
   forEach (toIndex nc) $ \c -> do
     a <- toIndex <$> readContact w c CA
@@ -308,17 +312,49 @@ warmStart w = do
     tangent <- readRow w c TaX TbX
     ln <- readContact w c ImpulseN
     lt <- readContact w c ImpulseT
-    applyRow w a b normal ln
-    applyRow w a b tangent lt
+    if rsSelfImages shape
+      then do
+        applyRow w a b normal ln
+        applyRow w a b tangent lt
+      else do
+        -- one body's side of both rows: its velocity read, pushed along
+        -- the normal row by @n@ and then along the friction row by @t@
+        let both i n t side sideW = do
+              im <- readSlot w i InvMass
+              ii <- readSlot w i InvInertia
+              vel0 <- readVel w i
+              let pushed (Vel v om) row l = Vel (v ^+^ (im * l) *^ side row) (om + ii * l * sideW row)
+                  {-# INLINE pushed #-}
+              case pushed (pushed vel0 normal n) tangent t of
+                Vel v2 om2 -> write3 (wVel w) i v2 >> writeSlot w i Omega om2
+            {-# INLINE both #-}
+        both a ln lt rowA rowAW
+        whenPositive (b + 0.5) $ both (toIndex b) (negate ln) (negate lt) rowB rowBW
     readContact w c CTotalImpulse >>= writeContact w c CTotalImpulse . (+ ln)
+
+-- | What a space's rows can be, known before the step is staged: its
+-- metric; whether a body can meet its own image (only in a quotient), so
+-- that a row's two sides are one body; whether every row is a unit long
+-- (a space whose field has a constant gradient, a flat one: a row is a
+-- direction in the plane).
+data RowShape = RowShape { rsMetric :: Metric, rsSelfImages :: Bool, rsUnitRows :: Bool }
+
+-- | The rows' shape on a space.
+rowShape :: Space -> RowShape
+rowShape sp = RowShape
+  { rsMetric = spaceMetric sp
+  , rsSelfImages = not (null (quotientImages (spaceQuotient sp)))
+  , rsUnitRows = hasConstantGradient (spaceField sp) }
 
 -- | One sequential-impulse sweep over the contact rows, each clamped: with
 -- the bias, the normal impulses (the solve); without it, the normal
 -- impulse and then friction, bounded by the normal impulse just found (the
--- relaxing solve).
-sweepRows :: Imp m => Bool -> Metric -> WorldArrays (Array m) -> m ()
+-- relaxing solve). What can never happen on the space is left out of the
+-- staged sweep ('RowShape'): the page's relaxing sweep on the rectangle is
+-- an eighth quicker without the self-image sums.
+sweepRows :: Imp m => Bool -> RowShape -> WorldArrays (Array m) -> m ()
 {-# INLINE sweepRows #-}
-sweepRows useBias metric w = do
+sweepRows useBias (RowShape metric selfImages unitRows) w = do
   pushout <- readParam w Pushout
   h <- substepLength w
   invH <- share (recip h)
@@ -338,7 +374,7 @@ sweepRows useBias metric w = do
     bIx <- share (maxF 0 b)
     let bi = toIndex bIx
     hasB <- share (b + 0.5)
-    same <- share (select (0.5 - abs (toScalar a - b)) 1 0)
+    same <- if selfImages then share (select (0.5 - abs (toScalar a - b)) 1 0) else pure 0
     ima <- readSlot w a InvMass
     iia <- readSlot w a InvInertia
     imb <- readSlot w bi InvMass
@@ -354,10 +390,12 @@ sweepRows useBias metric w = do
           doa <- share (iia * lambda * rowAW r)
           dvb <- share3 ((imb * negate lambda) *^ rowB r)
           dob <- share (iib * negate lambda * rowBW r)
-          va' <- share3 (va ^+^ dva ^+^ same *^ dvb)
-          oa' <- share (oa + doa + same * dob)
-          vb' <- share3 (vb ^+^ dvb ^+^ same *^ dva)
-          ob' <- share (ob + dob + same * doa)
+          let mixed x own other = if selfImages then x + own + same * other else x + own
+              {-# INLINE mixed #-}
+          va' <- share3 (mixed <$> va <*> dva <*> dvb)
+          oa' <- share (mixed oa doa dob)
+          vb' <- share3 (mixed <$> vb <*> dvb <*> dva)
+          ob' <- share (mixed ob dob doa)
           pure (Vel va' oa', Vel vb' ob')
         {-# INLINE apply #-}
     -- the depth now: as found, less how far the bodies have since moved
@@ -378,8 +416,10 @@ sweepRows useBias metric w = do
         -- the push-out of its own units it threw both bodies up the neck
         -- at 1.4 a second, pumping a jammed pile; rows within a percent of
         -- a unit, every row on a flat space, are left as they were
-        reach <- share (maxF (quadranceIn metric (rowA normal)) (quadranceIn metric (rowB normal)))
-        soft <- share (maxF (biasRateC * separation) (negate pushout * select (reach - 0.99) 1 (sqrt reach)))
+        reachScale <- if unitRows then pure 1 else do
+          reach <- share (maxF (quadranceIn metric (rowA normal)) (quadranceIn metric (rowB normal)))
+          pure (select (reach - 0.99) 1 (sqrt reach))
+        soft <- share (maxF (biasRateC * separation) (negate pushout * reachScale))
         -- A gap is a hard row, an overlap beyond the slop a soft one; in
         -- between, over the slop's width, the row turns soft gradually.
         -- (Switched at 0, as Box2D does, a resting contact, which sits at
