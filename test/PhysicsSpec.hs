@@ -610,6 +610,25 @@ spec = do
           (fmt (yOf jammed) ++ "; " ++ unwords (map fmt speeds))
         (size, maximum speeds < 1e-6, abs (yOf b - yOf jammed) < 1e-6, yOf jammed < -1.5) `shouldBe` (size, True, True, True)
 
+    -- (a square's self-contact was tested only once its rays had turned
+    -- far enough, by when they already overran each other by a fiftieth of
+    -- its size: the row that appeared pushed it out of the test's reach and
+    -- it fell back, every seven steps, and the relaxing sweep, scaled as
+    -- the self-contact's push is, left it 0.4 of the push-out speed: it
+    -- moved at up to 0.07 a second)
+    it "keeps squares of 0.3, 0.4 and 0.5 jammed alone still with sleeping off (under 1 % of their size a second)" $
+      forM_ [0.3, 0.4, 0.5] $ \size -> do
+        w <- build (awake (trumpetScenario "jam" square size))
+        steps w 1000
+        later <- forM [1 .. 1000 :: Int] $ \_ -> steps w 1 >> readBody w 0
+        let places = map bsPos later
+            secondMoves = zipWith (\p q -> norm (q - p)) places (drop 100 places)
+            fastest = maximum (map speed later)
+            y0 = yOf (head later)
+        labelled ("jam: square " ++ fmt size ++ ": y at 1000 steps, fastest speed and largest move in 100 steps over the next 1000")
+          (fmt y0 ++ "; " ++ fmt fastest ++ ", " ++ fmt (maximum secondMoves))
+        (size, fastest < 0.01 * size, maximum secondMoves < 0.01 * size, y0 < -1.5) `shouldBe` (size, True, True, True)
+
     -- (the line between two bodies either side of a neck narrower than
     -- they are wide runs through the neck, so each side of their row is
     -- short, 0.11 here: at the push-out in the row's own units they rose

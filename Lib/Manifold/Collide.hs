@@ -926,8 +926,9 @@ outlineBoundary sp l bf w i = do
 -- round the neck from round-off: docs/decisions/self-contact-push.md.)
 --
 -- Only a body whose rays turn (the chord from the centre to some outline
--- vertex is under 0.8 of the ray's length) is tested, which flat and gently
--- curved places never trigger; a flat space's step leaves the test out.
+-- vertex is under 'selfContactChord' of the ray's length) is tested, which
+-- flat and gently curved places never trigger; a flat space's step leaves
+-- the test out.
 --
 -- A subroutine of its own in the staged step: in line, its loops made the
 -- collision phase of the spaces with self-contact too big for V8 to
@@ -937,6 +938,17 @@ selfContacts :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> 
 selfContacts sp l w i = subroutine "selfContacts" [toScalar i] $ \case
   [i'] -> selfContactsOf sp l w (toIndex i')
   _ -> error "selfContacts: one argument"
+
+-- | How far a body's rays must turn (the shortest chord from its centre to
+-- its outline over its ray's length) before it is tested for self-contact.
+-- At 0.8 a square sinking into the trumpet's neck crossed itself before
+-- the test began, its rays overrunning each other by a fiftieth of its
+-- size when they were first seen: the row that appeared pushed it out of
+-- the test's reach and it fell back, every seven steps for ever. At 0.95
+-- the crossing is seen from its start and the square rests (it sits at a
+-- chord of 0.81).
+selfContactChord :: Field a => a
+selfContactChord = 0.95
 
 -- | 'selfContacts''s test.
 selfContactsOf :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> m ()
@@ -959,7 +971,7 @@ selfContactsOf sp l w i = do
     r <- readArray (wRadii w) (fromIntegral nd * i + d)
     modifyRef turn (minF (select r (normIn metric (o ^-^ c) / r) 1))
   straightness <- readRef turn
-  whenPositive (0.8 - straightness) $ do
+  whenPositive (selfContactChord - straightness) $ do
     deepest <- newRef 0
     px <- newRef 0
     py <- newRef 0
@@ -1013,7 +1025,7 @@ selfContactsOf sp l w i = do
               whenPositive (minF (0.3 * h - gap) depth) $ do
                 first <- vertex d 1
                 first' <- vertex d' 1
-                crossing depth (a0 ^+^ s *^ (a1 ^-^ a0))
+                crossing (nearing h gap depth) (a0 ^+^ s *^ (a1 ^-^ a0))
                   (negated (normalizeIn metric (first ^-^ c) ^+^ normalizeIn metric (first' ^-^ c)))
     -- A hull's corners make rays of their own (a capsule's: its segment's
     -- ends on either side, at its radius). A card or a capsule wrapped
@@ -1051,8 +1063,12 @@ selfContactsOf sp l w i = do
         (lenJ, dirJ) <- rayOf j
         (lenJ', dirJ') <- rayOf j'
         mean <- share3 (dirJ ^+^ dirJ')
-        -- each pair once, a right angle apart or more, not opposite
-        whenPositive (minF (toScalar j' - toScalar j - 0.5) (minF (negate (inner metric dirJ dirJ')) (normIn metric mean - 1e-6))) $ do
+        -- each pair once, a right angle apart or more, not opposite (a
+        -- square's neighbouring corners are a right angle apart exactly,
+        -- so the test takes a little more: by the sign of the product's
+        -- rounding alone, their pair came and went as a square sank into
+        -- its jam, and its row with it)
+        whenPositive (minF (toScalar j' - toScalar j - 0.5) (minF (1e-9 - inner metric dirJ dirJ') (normIn metric mean - 1e-6))) $ do
           h <- share (minF lenJ lenJ' / steps)
           forLoop 1 (fromIntegral cornerWalkSteps) $ \k -> forLoop 1 (fromIntegral cornerWalkSteps) $ \k' -> do
             a0 <- point j k
@@ -1064,7 +1080,7 @@ selfContactsOf sp l w i = do
                 arc' = lenJ' * (toScalar k' + t) / steps
                 depth = 0.5 * ((lenJ - arc) + (lenJ' - arc'))
             whenPositive (minF (0.3 * h - gap) depth) $
-              crossing depth (a0 ^+^ s *^ (a1 ^-^ a0)) (negated mean)
+              crossing (nearing h gap depth) (a0 ^+^ s *^ (a1 ^-^ a0)) (negated mean)
     best <- readRef deepest
     whenPositive best $ do
       point <- V3 <$> readRef px <*> readRef py <*> readRef pz
@@ -1074,6 +1090,12 @@ selfContactsOf sp l w i = do
       emitContact metric w i selfKey i (-1) point dir point dir best 0.6 0 id
   where
     selfKey = fromIntegral (fromEnum SelfKey) * fromIntegral keysPerGroup
+    -- A crossing's depth, from 0 where two rays come within the 0.3 h that
+    -- makes them a crossing: the overrun alone jumped from nothing to about
+    -- a fiftieth of the body's size as a square sank into its jam, and the
+    -- row that appeared at that depth pushed the body out of reach again,
+    -- a cycle every few steps that never settled.
+    nearing h gap depth = minF depth (0.3 * h - gap)
 
 -- | Every contact of this step, owned by the lower-numbered body of each
 -- pair of moving bodies, by the moving one of a pair with a still (static

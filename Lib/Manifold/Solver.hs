@@ -433,7 +433,11 @@ sweepRows useBias (RowShape metric selfImages unitRows) w = do
              , softer * isC )
       else pure (select separation (separation * invH) 0, 1, 0)
     vn <- along normal va0 vb0
-    ln' <- share (finiteOr0 (maxF 0 (ln + scale * (negate (kn * ms * (vn + bias)) - is * ln))))
+    -- a self-contact's row is scaled (0.6, the paper's) when it pushes, not
+    -- when it relaxes: a relaxing sweep scaled so kept 0.4 of the push-out
+    -- speed, and a square jammed alone bounced off its own jam
+    let scaleN = if useBias then scale else 1
+    ln' <- share (finiteOr0 (maxF 0 (ln + scaleN * (negate (kn * ms * (vn + bias)) - is * ln))))
     writeContact w c ImpulseN ln'
     readContact w c CTotalImpulse >>= writeContact w c CTotalImpulse . (+ (ln' - ln))
     (va1, vb1) <- apply normal (ln' - ln) va0 vb0
