@@ -89,6 +89,7 @@ module Manifold.World
   , bodyAxes
   , cornerWalkSteps
   , hasConstantGradient
+  , constantGradient
   , toList3
   , onSurfaceTolerance
   , outlineRadiiInto
@@ -728,7 +729,11 @@ outlineRadiiInto l outline w i size = do
 -- | Whether a field's gradient is the same everywhere (a plane): its
 -- symbolic gradient at a symbolic point is made of numbers.
 hasConstantGradient :: ScalarFn -> Bool
-hasConstantGradient f = all (isJust . literalValue) (gradFn f (V3 (sym "x") (sym "y") (sym "z")))
+hasConstantGradient = isJust . constantGradient
+
+-- | A field's gradient where it is the same everywhere (a plane).
+constantGradient :: ScalarFn -> Maybe (V3 Double)
+constantGradient f = traverse literalValue (gradFn f (V3 (sym "x") (sym "y") (sym "z")))
 
 -- | Walk every awake body's geodesic polygon into the vertex cache (paper
 -- §3.4): a sleeping body has not moved since its last walk.
