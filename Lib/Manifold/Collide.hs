@@ -72,6 +72,10 @@ import Manifold.World
 -- hash), 0.2 to 8 with eight.
 buildGrid :: Imp m => Space -> WorldArrays (Array m) -> m ()
 buildGrid sp w = do
+  -- decided once, not at every body (and applied in line: as a function
+  -- value the generic step boxed every point it passed)
+  let onPlane = planeAlongY sp
+      metric = spaceMetric sp
   count <- readMeta w BodyCount
   let n = toIndex count
       bound = constant (spaceBounds sp)
@@ -111,7 +115,7 @@ buildGrid sp w = do
           body
   forEach (toIndex buckets) $ \b -> writeArray (wGrid w) b 0
   forEach n $ \i -> inGrid i $ do
-    p <- spaceGridPoint sp <$> read3 (wPos w) i
+    p <- spaceGridPoint onPlane metric <$> read3 (wPos w) i
     let V3 cx cy cz = fmap (cellCoord cell) p
     writeArray (wCellOf w) i (cellKey cx cy cz)
     b <- share (bucketOf buckets cx cy cz)
@@ -127,7 +131,7 @@ buildGrid sp w = do
   forEach n $ \i -> do
     key <- readArray (wCellOf w) i
     whenPositive (key + 0.5) $ do
-      p <- spaceGridPoint sp <$> read3 (wPos w) i
+      p <- spaceGridPoint onPlane metric <$> read3 (wPos w) i
       let V3 cx cy cz = fmap (cellCoord cell) p
       b <- share (bucketOf buckets cx cy cz)
       k <- readArray (wGrid w) (toIndex b)
@@ -160,13 +164,14 @@ bucketOf buckets cx cy cz =
   in h - buckets * floorF (h / buckets)
 
 -- | A point's place in the broad phase's grid: 'gridPoint', and on a
--- plane @y = c@ the point with @y@ set to 0, so that every body's cell is in
--- one layer whatever the rounding of its @y@.
-spaceGridPoint :: Field a => Space -> V3 a -> V3 a
+-- plane @y = c@ (given: 'planeAlongY', decided once, not at every point)
+-- the point with @y@ set to 0, so that every body's cell is in one layer
+-- whatever the rounding of its @y@.
+spaceGridPoint :: Field a => Bool -> Metric -> V3 a -> V3 a
 {-# INLINE spaceGridPoint #-}
-spaceGridPoint sp p@(V3 x _ z)
-  | planeAlongY sp = V3 x 0 z
-  | otherwise = gridPoint (spaceMetric sp) p
+spaceGridPoint onPlane metric p@(V3 x _ z)
+  | onPlane = V3 x 0 z
+  | otherwise = gridPoint metric p
 
 -- | Whether the space is a plane @y = c@ (its field's gradient a constant
 -- along @y@: the plane, the rectangle, the flat torus and Klein bottle).
@@ -175,37 +180,40 @@ planeAlongY sp = case constantGradient (spaceField sp) of
   Just (V3 0 gy 0) -> gy /= 0
   _ -> False
 
--- | Whether every grid point has @y@ 0, the grid one layer of cells: on a
--- plane @y = c@ ('spaceGridPoint') and in Minkowski space ('gridPoint', the
--- Poincaré disc's points).
-gridInOneLayer :: Space -> Bool
-gridInOneLayer sp = planeAlongY sp || spaceMetric sp == Minkowski
-
 -- | Run @visit j@ for every body @j@ in the 27 cells around point @p@
--- (the cells of its 'spaceGridPoint'); where the grid is one layer
--- ('gridInOneLayer'), in the 9 cells of that layer, in the same order (the
--- other 18 are empty: their scan, two reads of the table and a bucket of
--- other cells' bodies each, was half of the broad phase's time on the
+-- (the cells of its 'spaceGridPoint'); where every grid point has @y@ 0
+-- (on a plane @y = c@, and in Minkowski space, whose grid points are the
+-- Poincaré disc's), in the 9 cells of that one layer, in the same order
+-- (the other 18 are empty: their scan, two reads of the table and a bucket
+-- of other cells' bodies each, was half of the broad phase's time on the
 -- rectangle's piles).
-neighbours :: Imp m => Space -> WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
+neighbours :: Imp m => Bool -> Metric -> WorldArrays (Array m) -> V3 (Scalar m) -> (Index m -> m ()) -> m ()
 {-# INLINE neighbours #-}
-neighbours sp w p visit = do
+neighbours onPlane metric w p visit = do
   buckets <- readMeta w GridBuckets
   cell <- readMeta w CellSize
-  V3 cx cy cz <- share3 (fmap (cellCoord cell) (spaceGridPoint sp p))
-  let layers body = if gridInOneLayer sp then body 1 else forEach 3 body
-  forEach 3 $ \dx -> layers $ \dy -> forEach 3 $ \dz -> do
-    nx <- share (cx + toScalar dx - 1)
-    ny <- share (cy + toScalar dy - 1)
-    nz <- share (cz + toScalar dz - 1)
-    key <- share (cellKey nx ny nz)
-    b <- share (bucketOf buckets nx ny nz)
-    end <- readArray (wGrid w) (toIndex b)
-    start <- readArray (wGrid w) (toIndex buckets + toIndex b)
-    forLoop (toIndex start) (toIndex end) $ \s -> do
-      j <- readArray (wItems w) s
-      cj <- readArray (wCellOf w) (toIndex j)
-      whenPositive (0.5 - abs (cj - key)) (visit (toIndex j))
+  V3 cx cy cz <- share3 (fmap (cellCoord cell) (spaceGridPoint onPlane metric p))
+  -- the cells of layer dy (0 to 2) in column dx; the branch on the layers
+  -- outside the loops (a function choosing between them made the generic
+  -- step allocate a closure a column)
+  let column dx dy = forEach 3 $ \dz -> cellAt dx dy dz
+      {-# INLINE column #-}
+      cellAt dx dy dz = do
+        nx <- share (cx + toScalar dx - 1)
+        ny <- share (cy + toScalar dy - 1)
+        nz <- share (cz + toScalar dz - 1)
+        key <- share (cellKey nx ny nz)
+        b <- share (bucketOf buckets nx ny nz)
+        end <- readArray (wGrid w) (toIndex b)
+        start <- readArray (wGrid w) (toIndex buckets + toIndex b)
+        forLoop (toIndex start) (toIndex end) $ \s -> do
+          j <- readArray (wItems w) s
+          cj <- readArray (wCellOf w) (toIndex j)
+          whenPositive (0.5 - abs (cj - key)) (visit (toIndex j))
+      {-# INLINE cellAt #-}
+  if onPlane || metric == Minkowski
+    then forEach 3 $ \dx -> column dx 1
+    else forEach 3 $ \dx -> forEach 3 $ \dy -> column dx dy
 
 -- | Whether a point (near the surface) is inside body @Y@'s polygon: the
 -- depth (positive inside) and the outward direction of the edge it is
@@ -1118,10 +1126,10 @@ selfContactsOf sp l w i = do
   where
     selfKey = fromIntegral (fromEnum SelfKey) * fromIntegral keysPerGroup
     -- A crossing's depth, from 0 where two rays come within the 0.3 h that
-    -- makes them a crossing: the overrun alone jumped from nothing to about
-    -- a fiftieth of the body's size as a square sank into its jam, and the
-    -- row that appeared at that depth pushed the body out of reach again,
-    -- a cycle every few steps that never settled.
+    -- makes them a crossing, up to their overrun: the overrun alone starts
+    -- at whatever the rays overrun each other by when they first come that
+    -- close, so a row would appear at a depth instead of growing from
+    -- nothing (docs/decisions/self-contact-seen-from-its-start.md).
     nearing h gap depth = minF depth (0.3 * h - gap)
 
 -- | Every contact of this step, owned by the lower-numbered body of each
@@ -1148,17 +1156,20 @@ collideAwake sp l w = do
   joints <- readMeta w JointCount
   whenPositive joints $ listPartners w
   writeImageTable sp l w
+  -- what the field's symbolic gradient says, decided once, not at every body
   let images = length (quotientImages (spaceQuotient sp))
       metric = spaceMetric sp
+      onPlane = planeAlongY sp
+      flat = hasConstantGradient (spaceField sp)
   forEach (toIndex count) $ \i -> moving w i >>= \movingI -> whenPositive movingI $ do
-    nearPairs sp l w i 0 True
+    nearPairs sp l w onPlane i 0 True
     -- through each image, a loop over the table: the Bolza surface's 48
     -- images unrolled would be 48 copies of the search
-    when (images > 0) $ forEach (fromIntegral images) $ \k -> nearPairs sp l w i (toScalar k + 1) False
+    when (images > 0) $ forEach (fromIntegral images) $ \k -> nearPairs sp l w onPlane i (toScalar k + 1) False
     keepOr metric w i (-1) (fromIntegral (fromEnum BoundaryKey * keysPerGroup)) (boundaryContacts sp l w i)
     -- (on a plane every ray is straight, so no body's rays ever turn and
     -- the test below never passes: it is left out of a flat space's step)
-    unless (hasConstantGradient (spaceField sp)) (selfContacts sp l w i)
+    unless flat (selfContacts sp l w i)
 
 -- | Body @i@'s contacts with the bodies near its image under the table's
 -- isometry @image@ (0, the identity, for its contacts in place, @direct@,
@@ -1169,10 +1180,11 @@ collideAwake sp l w = do
 -- (@j >= i@ through an image through which the body may meet itself), or
 -- @j@ still; a pair of a body in the grid and one apart is the grid body's
 -- while it moves (the one apart takes it from a still grid body). Its keys
--- are @j@'s group of the image ('imageKeyGroup').
-nearPairs :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Index m -> Scalar m -> Bool -> m ()
+-- are @j@'s group of the image ('imageKeyGroup'). @onPlane@: the space is a
+-- plane @y = c@ ('planeAlongY').
+nearPairs :: Imp m => Space -> Layout -> WorldArrays (Array m) -> Bool -> Index m -> Scalar m -> Bool -> m ()
 {-# INLINE nearPairs #-}
-nearPairs sp l w i image direct = do
+nearPairs sp l w onPlane i image direct = do
   g <- readImage l w image
   self <- readArray (wProbe w) (fromIntegral (imageTableAt l + imageStride - 1) + fromIntegral imageStride * toIndex image)
   let keyOffset = if direct then 0 else fromIntegral keysPerGroup * (image - 1 + fromIntegral (fromEnum FirstImageKey))
@@ -1212,7 +1224,7 @@ nearPairs sp l w i image direct = do
   capacity <- readMeta w Capacity
   let apart orderOf = forEach (toIndex large) $ \k -> readArray (wItems w) (toIndex capacity - 1 - k) >>= consider orderOf . toIndex
   ifPositive (cellI + 0.5)
-    (do nearDomain gp (ri + cell) $ neighbours sp w gp (consider ordered)
+    (do nearDomain gp (ri + cell) $ neighbours onPlane metric w gp (consider ordered)
         apart (\_ _ -> 1))
     -- a body apart: every still body of the grid, then the others apart
     (do nearDomain gp (ri + cell) $ forEach (toIndex count) $ \j -> do

@@ -275,6 +275,9 @@ substeps :: Imp m => Space -> Layout -> WorldArrays (Array m) -> m ()
 substeps sp _ w = do
   n <- readParam w Substeps
   iterations <- readParam w Iterations
+  -- decided once a step (it differentiates the field symbolically), not
+  -- in every sweep of the generic step
+  let shape = rowShape sp
   -- Each stage is printed as a function of its own: V8 optimised the
   -- whole solver as one function only sometimes. In a page that had run a
   -- torus of 3000 bodies, Chromium's optimising compiler gave up on the
@@ -285,15 +288,15 @@ substeps sp _ w = do
   forEach (toIndex n) $ \_ -> do
     subroutine "substepGravity" [] $ \_ -> substepLength w >>= applyGravity sp w
     subroutine "warmStartJoints" [] $ \_ -> warmStartJoints (spaceMetric sp) w
-    subroutine "warmStart" [] $ \_ -> warmStart (rowShape sp) w
+    subroutine "warmStart" [] $ \_ -> warmStart shape w
     mouseRows sp w True
     forEach (toIndex iterations) $ \_ -> do
       subroutine "solveJoints" [] $ \_ -> solveJoints True (spaceMetric sp) w
-      subroutine "solveSweep" [] $ \_ -> sweepRows True (rowShape sp) w
+      subroutine "solveSweep" [] $ \_ -> sweepRows True shape w
       mouseRows sp w False
     subroutine "substepMove" [] $ \_ -> substepLength w >>= integrate sp w
     subroutine "relaxJoints" [] $ \_ -> solveJoints False (spaceMetric sp) w
-    subroutine "relaxSweep" [] $ \_ -> sweepRows False (rowShape sp) w
+    subroutine "relaxSweep" [] $ \_ -> sweepRows False shape w
     mouseRows sp w False
 
 -- | Every contact's impulses applied again, as the sub-step starts.
